@@ -1,0 +1,5 @@
+import sys
+
+from rdisc.cli.main import main
+
+sys.exit(main())

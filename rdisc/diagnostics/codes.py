@@ -1,0 +1,185 @@
+"""The registry of diagnostic codes: a stable id, a kebab-case name, an explanation.
+
+Codes never change meaning once published; `rdisc explain CODE` prints the text.
+E-codes are errors, W-codes warnings.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+
+@dataclass(frozen=True, slots=True)
+class Code:
+    id: str
+    name: str
+    explanation: str
+
+
+_TABLE = (
+    # -- reading and parsing ------------------------------------------------
+    ("E001", "syntax-error", """
+The text does not follow the RDIS grammar at this point. The message says what
+the parser expected instead. Clauses and declarations are recognised by their
+keywords (`primitive`, `interface`, `on`, `pack`, `delay`, ...); a missing `}` or
+`)` is reported where the parser first notices it, often at the next declaration.
+Parsing resumes at the next top-level declaration, so later errors are reported too."""),
+    ("E002", "invalid-token", """
+A character that begins no token of the language, or a string literal that is
+not closed on the same line. Strings are written in double quotes; a string
+cannot span lines (write `\\n` for a newline)."""),
+    ("E003", "invalid-escape", """
+A backslash escape that RDIS strings do not know. Known escapes are `\\n`, `\\r`,
+`\\t`, `\\0`, `\\\\`, `\\"`, `\\xHH` and `\\uHHHH`. Regular expressions are easier to
+write as raw strings, where backslashes are kept as written: r"(\\d+),(\\d+)"."""),
+    ("E004", "invalid-literal", """
+A number that cannot be read (a decimal integer with leading zeros, a misplaced
+`_`), or one too large to be useful: integers are limited to 64 digits and floats
+must be finite."""),
+    ("E005", "too-complex", """
+An expression nested deeper than the limit, or a file larger than the limit.
+Descriptions may come from devices and networks, so rdisc bounds the work any
+input can cause before it reads it."""),
+    ("E006", "unreadable-file", """
+The file could not be read: it does not exist, is not readable, or is not UTF-8
+text."""),
+    ("E007", "import-not-found", """
+An `import` names a file that does not exist. Paths are relative to the file
+that imports them. `stdlib/adapters.rdis` is always available without import."""),
+    ("E008", "invalid-json", """
+A JSON description (`rdisc import`, or `rdisc build` of a .json file) is not
+valid JSON, or does not have the shape of an RDIS description: the message says
+which member is missing or has the wrong kind of value."""),
+    # -- names ---------------------------------------------------------------
+    ("E101", "duplicate-name", """
+Two elements of the same kind have the same name. Names are unique per kind: a
+primitive and an interface may share a name (the place of a reference decides
+its kind), two primitives may not. Both places are shown."""),
+    ("E102", "unknown-element", """
+A reference to an element that is not declared: a primitive called by an
+interface, an interface called by a hook or an input, an output triggered by an
+interface, a connection, or an adapter. When a declared name is close, the help
+line suggests it."""),
+    ("E103", "unknown-variable", """
+A name used in an expression is not in scope there. Scopes follow the thesis:
+state variables are readable everywhere except in initial values; primitives also
+see their parameters, post-actions also see the reply `out`; interfaces see their
+parameters; inputs see their adapter's fields; hook arguments and outputs see
+state variables only."""),
+    ("E104", "reserved-name", """
+The name is a keyword of the language or the name of a built-in function, and
+cannot name an element, parameter, field or state variable."""),
+    ("E105", "unknown-type", """
+Types are `int`, `float`, `bool` and `string`."""),
+    ("E106", "unknown-function", """
+Only the built-in functions can be called in expressions: abs, min, max, round,
+int, float, bool, str, clamp, sqrt, sin, cos, atan2, hypot. There is no way to
+reach Python's own functions, attributes or modules."""),
+    ("E107", "robot-declaration", """
+A description has exactly one `robot` declaration, in its main file. Imported
+files hold reusable declarations (adapters, primitives, ...) but no robot."""),
+    # -- structure -----------------------------------------------------------
+    ("E201", "arity-mismatch", """
+A call passes a different number of arguments than its target takes: an
+interface calling a primitive, a hook calling an interface, an input calling an
+interface, or a built-in function."""),
+    ("E202", "missing-clause", """
+A required clause is missing: a primitive needs `on CONNECTION` and exactly one
+of `pack` or `format`."""),
+    ("E203", "conflicting-clause", """
+Clauses that exclude each other, or a clause given twice: a primitive has exactly
+one of `pack`/`format` and at most one of `unpack`/`regex`; an interface is either
+`periodic` or `adhoc`; each attribute of a robot or connection is given once."""),
+    ("E204", "invalid-value", """
+A setting outside its range: baud and frequency must be positive, a keepalive
+interval positive, a delay zero or more. Settings must be constants."""),
+    ("E205", "periodic-with-parameters", """
+A periodic interface runs on every tick of its connection's thread, where nobody
+supplies arguments, so it cannot take parameters."""),
+    ("E206", "output-fields", """
+An output defines each field of its adapter exactly once: a missing field, a
+field defined twice, or a field the adapter does not have is an error."""),
+    ("E207", "state-write", """
+Only post-actions write state, and they write state variables only: the target
+of an assignment in a primitive's `{ ... }` block must be a state variable."""),
+    ("E208", "periodic-connection", """
+A periodic interface runs on the thread of a connection: the one its primitives
+use. It must call primitives of exactly one connection (or the description must
+have a single connection)."""),
+    ("E209", "unsupported-kind", """
+The connection kind or threading model is not supported. Connections are
+`serial`; threading is `single`."""),
+    # -- message formats -------------------------------------------------------
+    ("E301", "invalid-pack-format", """
+`pack` and `unpack` take Python struct format strings: an optional byte order
+(`<`, `>`, `!`, `=`, `@`) then codes such as `B` (unsigned byte), `h` (signed
+16-bit), `f` (float), with optional repeat counts. Pointer codes (`P`) are not
+allowed."""),
+    ("E302", "format-argument-count", """
+The number of format arguments differs from the number of values the `pack` or
+`format` string takes. `pack ">Bhh"` takes three values; `format "D,{},{}"` two."""),
+    ("E303", "invalid-format-string", """
+`format` takes a PEP 3101 format string whose fields are positional: `{}` or
+`{0}`, with an optional format spec (`{:04d}`). Named fields, attribute or index
+access (`{0.x}`, `{0[1]}`), conversions (`!r`) and nested fields are refused:
+they would reach into Python objects."""),
+    ("E304", "invalid-regex", """
+The `regex` does not compile as a Python regular expression."""),
+    ("E305", "reply-index", """
+`out[i]` reads value i of the reply: it must be a constant within the number of
+values the `unpack` format produces or the number of groups the `regex` has, and
+the primitive must read a reply at all."""),
+    # -- types ---------------------------------------------------------------
+    ("E401", "type-mismatch", """
+A value of one type is used where another is required, for example a string
+passed to an integer parameter or assigned to a float state variable. An `int`
+is accepted where a `float` is expected."""),
+    ("E402", "float-to-int", """
+A float flows into an integer: an `int` parameter, an integer pack code or an
+`int` state variable. Say how to convert it, usually with `round(...)` (nearest)
+or `int(...)` (towards zero)."""),
+    ("E403", "value-out-of-range", """
+A constant cannot be represented by its pack code: 300 does not fit `B`
+(0..255), -1 does not fit `H` (0..65535)."""),
+    ("E404", "invalid-operation", """
+The operator or function does not apply to these types: arithmetic needs
+numbers, bitwise operators and shifts need integers, `and`/`or`/`not` and the
+condition of `x if c else y` need booleans."""),
+    ("E405", "evaluation-error", """
+A constant expression cannot be evaluated: a division by zero, or a power or
+shift whose result would be enormous."""),
+    # -- warnings --------------------------------------------------------------
+    ("W101", "unused-primitive", """
+The primitive is never called by any interface."""),
+    ("W102", "untriggered-output", """
+No interface triggers this output, so it is never delivered."""),
+    ("W103", "unread-state", """
+The state variable is never read by any expression."""),
+    ("W104", "unused-interface", """
+The interface is not periodic and is called by no input and no hook."""),
+    ("W201", "nonstandard-baud", """
+The baud rate is not one of the standard rates (300 ... 4000000). Some serial
+adapters round a non-standard rate or refuse it."""),
+    ("W301", "native-byte-order", """
+The struct format has no byte-order prefix, so it uses the host's native byte
+order and alignment (padding between fields). Devices have a fixed order: write
+`<` (little-endian) or `>` (big-endian)."""),
+    ("W401", "link-budget", """
+The traffic this connection schedules (periodic interfaces every tick, keepalive
+every interval; 10 bits a byte at 8N1) needs more bytes per second than the baud
+rate carries. `rdisc check --verbose` prints each connection's budget."""),
+    ("W402", "period-too-short", """
+A schedule's period is shorter than the exchange it runs: the bytes on the wire
+plus the declared delays of the periodic interfaces (per tick) or of the
+keepalive interface (per interval). The schedule will slip."""),
+)
+
+CODES: dict[str, Code] = {row[0]: Code(row[0], row[1], row[2].strip()) for row in _TABLE}
+
+
+def lookup(text: str) -> Code | None:
+    """A code by id (`E102`, `e102`) or by name (`unknown-element`)."""
+    key = text.strip()
+    if key.upper() in CODES:
+        return CODES[key.upper()]
+    return next((c for c in CODES.values() if c.name == key.lower()), None)

@@ -1,0 +1,71 @@
+"""Source files and spans.
+
+A span stores byte-free character offsets only; lines and columns are computed
+when a diagnostic is rendered, so building spans costs nothing on the hot path.
+"""
+
+from __future__ import annotations
+
+import bisect
+from dataclasses import dataclass, field
+
+
+@dataclass(frozen=True, slots=True)
+class Span:
+    """A half-open range of character offsets in one source file."""
+
+    path: str
+    start: int
+    end: int
+
+    def to(self, other: Span) -> Span:
+        """The span covering this one and `other` (same file)."""
+        return Span(self.path, min(self.start, other.start), max(self.end, other.end))
+
+
+@dataclass(frozen=True, slots=True)
+class Position:
+    line: int  # 0-based
+    column: int  # 0-based, in code points
+    utf16_column: int  # 0-based, in UTF-16 code units (what LSP counts)
+
+
+@dataclass(slots=True)
+class SourceFile:
+    path: str
+    text: str
+    _line_starts: list[int] = field(default_factory=list, repr=False)
+
+    def line_starts(self) -> list[int]:
+        if not self._line_starts:
+            starts = [0]
+            find = self.text.find
+            i = find("\n")
+            while i != -1:
+                starts.append(i + 1)
+                i = find("\n", i + 1)
+            self._line_starts = starts
+        return self._line_starts
+
+    def position(self, offset: int) -> Position:
+        offset = max(0, min(offset, len(self.text)))
+        starts = self.line_starts()
+        line = bisect.bisect_right(starts, offset) - 1
+        prefix = self.text[starts[line] : offset]
+        utf16 = len(prefix) + sum(1 for ch in prefix if ord(ch) > 0xFFFF)
+        return Position(line, len(prefix), utf16)
+
+    def line_text(self, line: int) -> str:
+        starts = self.line_starts()
+        start = starts[line]
+        end = starts[line + 1] - 1 if line + 1 < len(starts) else len(self.text)
+        return self.text[start:end].rstrip("\r")
+
+
+class Sources(dict[str, SourceFile]):
+    """Every file read during one run, by path, for rendering diagnostics."""
+
+    def add(self, path: str, text: str) -> SourceFile:
+        source = SourceFile(path, text)
+        self[path] = source
+        return source

@@ -1,0 +1,338 @@
+"""Syntax tree of an RDIS description: what was written, not yet what it means.
+
+Every node carries the span it came from. Spans are excluded from equality so
+that round-trip tests (print, parse again) compare structure only. Clauses are
+kept as written, repeats included: the checker reports what is missing or doubled.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Union
+
+from rdisc.source import Span
+
+_span = field(compare=False, repr=False)
+
+
+@dataclass(frozen=True, slots=True)
+class Ident:
+    """A name as written, with its place."""
+
+    text: str
+    span: Span = _span
+
+
+# ---- expressions -----------------------------------------------------------
+
+
+@dataclass(frozen=True, slots=True)
+class IntLit:
+    value: int
+    span: Span = _span
+
+
+@dataclass(frozen=True, slots=True)
+class FloatLit:
+    value: float
+    span: Span = _span
+
+
+@dataclass(frozen=True, slots=True)
+class StrLit:
+    value: str
+    span: Span = _span
+
+
+@dataclass(frozen=True, slots=True)
+class BoolLit:
+    value: bool
+    span: Span = _span
+
+
+@dataclass(frozen=True, slots=True)
+class Ref:
+    """A name read in an expression: a parameter, field, state variable or `out`."""
+
+    name: str
+    span: Span = _span
+
+
+@dataclass(frozen=True, slots=True)
+class Index:
+    """`base[index]`; the checker allows it only as `out[constant]`."""
+
+    base: Ref
+    index: Expr
+    span: Span = _span
+
+
+@dataclass(frozen=True, slots=True)
+class Unary:
+    op: str  # "-", "+", "~", "not"
+    operand: Expr
+    span: Span = _span
+
+
+@dataclass(frozen=True, slots=True)
+class BinOp:
+    op: str  # arithmetic, bitwise, comparison, "and", "or"
+    left: Expr
+    right: Expr
+    span: Span = _span
+
+
+@dataclass(frozen=True, slots=True)
+class Conditional:
+    """`then if cond else orelse`."""
+
+    then: Expr
+    cond: Expr
+    orelse: Expr
+    span: Span = _span
+
+
+@dataclass(frozen=True, slots=True)
+class CallExpr:
+    """A call of a built-in function inside an expression."""
+
+    func: Ident
+    args: tuple[Expr, ...]
+    span: Span = _span
+
+
+Expr = Union[IntLit, FloatLit, StrLit, BoolLit, Ref, Index, Unary, BinOp, Conditional, CallExpr]
+
+
+# ---- pieces shared by declarations ------------------------------------------
+
+
+@dataclass(frozen=True, slots=True)
+class Param:
+    name: Ident
+    type: Ident
+    span: Span = _span
+
+
+@dataclass(frozen=True, slots=True)
+class Call:
+    """A call of a declared element: `name(args)` in a hook, interface body or input."""
+
+    target: Ident
+    args: tuple[Expr, ...]
+    span: Span = _span
+
+
+@dataclass(frozen=True, slots=True)
+class Duration:
+    """`value ms` or `value s`."""
+
+    value: Expr
+    unit: str  # "ms" | "s"
+    span: Span = _span
+
+
+@dataclass(frozen=True, slots=True)
+class Assign:
+    target: Ident
+    value: Expr
+    span: Span = _span
+
+
+# ---- declarations -------------------------------------------------------------
+
+
+@dataclass(frozen=True, slots=True)
+class ImportDecl:
+    path: str
+    span: Span = _span
+    doc: str | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class RobotAttr:
+    key: str  # "author" | "description" | "version"
+    value: str
+    span: Span = _span
+
+
+@dataclass(frozen=True, slots=True)
+class RobotDecl:
+    name: Ident
+    attrs: tuple[RobotAttr, ...]
+    span: Span = _span
+    doc: str | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class StateDecl:
+    name: Ident
+    type: Ident
+    init: Expr | None
+    span: Span = _span
+    doc: str | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class Baud:
+    value: Expr
+    span: Span = _span
+
+
+@dataclass(frozen=True, slots=True)
+class Threading:
+    model: Ident  # "single"
+    frequency: Expr  # Hz
+    span: Span = _span
+
+
+@dataclass(frozen=True, slots=True)
+class Hook:
+    event: str  # "startup" | "terminate" | "keepalive"
+    call: Call
+    every: Duration | None  # keepalive only
+    span: Span = _span
+
+
+ConnectionAttr = Union[Baud, Threading, Hook]
+
+
+@dataclass(frozen=True, slots=True)
+class ConnectionDecl:
+    name: Ident
+    kind: Ident  # "serial"
+    attrs: tuple[ConnectionAttr, ...]
+    span: Span = _span
+    doc: str | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class On:
+    connection: Ident
+    span: Span = _span
+
+
+@dataclass(frozen=True, slots=True)
+class Encoding:
+    kind: str  # "pack" | "format"
+    template: StrLit
+    args: tuple[Expr, ...]
+    span: Span = _span
+
+
+@dataclass(frozen=True, slots=True)
+class Decoding:
+    kind: str  # "unpack" | "regex"
+    template: StrLit
+    span: Span = _span
+
+
+@dataclass(frozen=True, slots=True)
+class Actions:
+    assigns: tuple[Assign, ...]
+    span: Span = _span
+
+
+PrimitiveClause = Union[On, Encoding, Decoding, Actions]
+
+
+@dataclass(frozen=True, slots=True)
+class PrimitiveDecl:
+    name: Ident
+    params: tuple[Param, ...]
+    clauses: tuple[PrimitiveClause, ...]
+    span: Span = _span
+    doc: str | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class Kind:
+    word: str  # "periodic" | "adhoc"
+    span: Span = _span
+
+
+@dataclass(frozen=True, slots=True)
+class Triggers:
+    output: Ident
+    span: Span = _span
+
+
+InterfaceClause = Union[Kind, Triggers]
+
+
+@dataclass(frozen=True, slots=True)
+class CallStmt:
+    """One primitive call in an interface body, with its options as written."""
+
+    call: Call
+    delays: tuple[Duration, ...]
+    priorities: tuple[Expr, ...]
+    span: Span = _span
+
+
+@dataclass(frozen=True, slots=True)
+class InterfaceDecl:
+    name: Ident
+    params: tuple[Param, ...]
+    clauses: tuple[InterfaceClause, ...]
+    body: tuple[CallStmt, ...]
+    span: Span = _span
+    doc: str | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class FieldDecl:
+    name: Ident
+    type: Ident
+    unit: str | None
+    ros: str | None
+    span: Span = _span
+    doc: str | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class AdapterDecl:
+    name: Ident
+    ros: str | None
+    fields: tuple[FieldDecl, ...]
+    span: Span = _span
+    doc: str | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class InputDecl:
+    name: Ident
+    adapter: Ident
+    call: Call
+    span: Span = _span
+    doc: str | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class OutputDecl:
+    name: Ident
+    adapter: Ident
+    fields: tuple[Assign, ...]
+    span: Span = _span
+    doc: str | None = None
+
+
+Decl = Union[
+    ImportDecl,
+    RobotDecl,
+    StateDecl,
+    ConnectionDecl,
+    PrimitiveDecl,
+    InterfaceDecl,
+    AdapterDecl,
+    InputDecl,
+    OutputDecl,
+]
+
+
+@dataclass(frozen=True, slots=True)
+class Module:
+    """One parsed file."""
+
+    path: str
+    decls: tuple[Decl, ...]

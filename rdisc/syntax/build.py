@@ -1,0 +1,283 @@
+"""Lark parse tree → AST nodes. Construction only: no checking beyond literals."""
+
+from __future__ import annotations
+
+import math
+import re
+from functools import lru_cache
+
+from rdisc.diagnostics import Diagnostics
+from rdisc.source import Span
+from rdisc.syntax import ast
+
+MAX_INT_DIGITS = 64
+_ESCAPE = re.compile(r"\\(x[0-9a-fA-F]{2}|u[0-9a-fA-F]{4}|.)", re.DOTALL)
+_SIMPLE_ESCAPES = {"n": "\n", "r": "\r", "t": "\t", "0": "\0", "\\": "\\", '"': '"', "'": "'"}
+
+
+def decode_string(raw: str, report=None) -> str:
+    """The value of a string token (quotes included). `report(offset, length, text)`
+    is called for each unknown escape, with offsets into `raw`."""
+    if raw.startswith("r"):
+        return raw[2:-1]
+    body = raw[1:-1]
+    if "\\" not in body:
+        return body
+
+    def replace(m: re.Match[str]) -> str:
+        esc = m.group(1)
+        if esc in _SIMPLE_ESCAPES:
+            return _SIMPLE_ESCAPES[esc]
+        if esc[0] in "xu" and len(esc) > 1:
+            return chr(int(esc[1:], 16))
+        if report is not None:
+            report(1 + m.start(), len(m.group()), m.group())
+        return m.group()
+
+    return _ESCAPE.sub(replace, body)
+
+
+def _int_value(text: str) -> int | None:
+    digits = text.replace("_", "")
+    if len(digits) > MAX_INT_DIGITS:
+        return None
+    try:
+        return int(text, 0)
+    except ValueError:
+        return None
+
+
+class Builder:
+    """Turns the tree of one declaration chunk into AST nodes."""
+
+    def __init__(self, path: str, docs: dict[int, str], diagnostics: Diagnostics) -> None:
+        self.path = path
+        self.docs = docs
+        self.diagnostics = diagnostics
+        self.base = 0
+
+    def build(self, tree, base: int) -> list[ast.Decl]:
+        self.base = base
+        return _transformer_class()(self).transform(tree)
+
+    # -- helpers used by the transformer --
+
+    def span(self, meta) -> Span:
+        if getattr(meta, "empty", False):
+            return Span(self.path, self.base, self.base)
+        return Span(self.path, self.base + meta.start_pos, self.base + meta.end_pos)
+
+    def token_span(self, token) -> Span:
+        return Span(self.path, self.base + token.start_pos, self.base + token.end_pos)
+
+    def ident(self, token) -> ast.Ident:
+        return ast.Ident(str(token), self.token_span(token))
+
+    def doc(self, meta) -> str | None:
+        return self.docs.get(self.base + meta.start_pos)
+
+    def string(self, token) -> ast.StrLit:
+        span = self.token_span(token)
+
+        def report(offset: int, length: int, text: str) -> None:
+            at = span.start + offset
+            self.diagnostics.report(
+                "E003",
+                Span(self.path, at, at + length),
+                f"unknown escape `{text}` in a string",
+                help='write `\\\\` for a backslash, or use a raw string r"..." for a regex',
+            )
+
+        return ast.StrLit(decode_string(str(token), report), span)
+
+
+@lru_cache(maxsize=1)
+def _transformer_class():
+    import lark
+    from lark import v_args
+
+    @v_args(meta=True)
+    class Transformer(lark.Transformer):
+        def __init__(self, builder: Builder) -> None:
+            super().__init__(visit_tokens=False)
+            self.b = builder
+
+        # -- top level --
+
+        def start(self, meta, children):
+            return [c for c in children if c is not None]
+
+        def import_decl(self, meta, c):
+            return ast.ImportDecl(self.b.string(c[0]).value, self.b.span(meta), self.b.doc(meta))
+
+        def robot_decl(self, meta, c):
+            return ast.RobotDecl(self.b.ident(c[0]), tuple(c[1:]), self.b.span(meta), self.b.doc(meta))
+
+        def robot_attr(self, meta, c):
+            return ast.RobotAttr(c[0], self.b.string(c[1]).value, self.b.span(meta))
+
+        def state_decl(self, meta, c):
+            name, type_, init = c
+            return ast.StateDecl(self.b.ident(name), self.b.ident(type_), init, self.b.span(meta), self.b.doc(meta))
+
+        def connection_decl(self, meta, c):
+            return ast.ConnectionDecl(
+                self.b.ident(c[0]), self.b.ident(c[1]), tuple(c[2:]), self.b.span(meta), self.b.doc(meta)
+            )
+
+        def baud(self, meta, c):
+            return ast.Baud(c[0], self.b.span(meta))
+
+        def threading(self, meta, c):
+            return ast.Threading(self.b.ident(c[0]), c[1], self.b.span(meta))
+
+        def hook(self, meta, c):
+            return ast.Hook(c[0], c[1], None, self.b.span(meta))
+
+        def keepalive(self, meta, c):
+            return ast.Hook("keepalive", c[0], c[1], self.b.span(meta))
+
+        def hook_call(self, meta, c):
+            return ast.Call(self.b.ident(c[0]), c[1] or (), self.b.span(meta))
+
+        def primitive_decl(self, meta, c):
+            return ast.PrimitiveDecl(
+                self.b.ident(c[0]), c[1] or (), tuple(c[2:]), self.b.span(meta), self.b.doc(meta)
+            )
+
+        def on(self, meta, c):
+            return ast.On(self.b.ident(c[0]), self.b.span(meta))
+
+        def encoding(self, meta, c):
+            return ast.Encoding(c[0], self.b.string(c[1]), c[2] or (), self.b.span(meta))
+
+        def decoding(self, meta, c):
+            return ast.Decoding(c[0], self.b.string(c[1]), self.b.span(meta))
+
+        def actions(self, meta, c):
+            return ast.Actions(tuple(c), self.b.span(meta))
+
+        def assign(self, meta, c):
+            return ast.Assign(self.b.ident(c[0]), c[1], self.b.span(meta))
+
+        def interface_decl(self, meta, c):
+            name, params, *rest = c
+            clauses = tuple(x for x in rest if isinstance(x, (ast.Kind, ast.Triggers)))
+            body = tuple(x for x in rest if isinstance(x, ast.CallStmt))
+            return ast.InterfaceDecl(
+                self.b.ident(name), params or (), clauses, body, self.b.span(meta), self.b.doc(meta)
+            )
+
+        def kind(self, meta, c):
+            return ast.Kind(c[0], self.b.span(meta))
+
+        def triggers(self, meta, c):
+            return ast.Triggers(self.b.ident(c[0]), self.b.span(meta))
+
+        def call_stmt(self, meta, c):
+            call = ast.Call(self.b.ident(c[0]), c[1] or (), self.b.span(meta))
+            delays = tuple(x[1] for x in c[2:] if x[0] == "delay")
+            priorities = tuple(x[1] for x in c[2:] if x[0] == "priority")
+            return ast.CallStmt(call, delays, priorities, self.b.span(meta))
+
+        def delay(self, meta, c):
+            return ("delay", c[0])
+
+        def priority(self, meta, c):
+            return ("priority", c[0])
+
+        def adapter_decl(self, meta, c):
+            ros = self.b.string(c[1]).value if c[1] is not None else None
+            return ast.AdapterDecl(self.b.ident(c[0]), ros, tuple(c[2:]), self.b.span(meta), self.b.doc(meta))
+
+        def field_decl(self, meta, c):
+            unit = self.b.string(c[2]).value if c[2] is not None else None
+            ros = self.b.string(c[3]).value if c[3] is not None else None
+            return ast.FieldDecl(
+                self.b.ident(c[0]), self.b.ident(c[1]), unit, ros, self.b.span(meta), self.b.doc(meta)
+            )
+
+        def input_decl(self, meta, c):
+            call_span = self.b.token_span(c[2])
+            if c[3]:
+                call_span = call_span.to(c[3][-1].span)
+            call = ast.Call(self.b.ident(c[2]), c[3] or (), call_span)
+            return ast.InputDecl(self.b.ident(c[0]), self.b.ident(c[1]), call, self.b.span(meta), self.b.doc(meta))
+
+        def output_decl(self, meta, c):
+            return ast.OutputDecl(
+                self.b.ident(c[0]), self.b.ident(c[1]), tuple(c[2:]), self.b.span(meta), self.b.doc(meta)
+            )
+
+        def params(self, meta, c):
+            return tuple(x for x in c if x is not None)
+
+        def param(self, meta, c):
+            return ast.Param(self.b.ident(c[0]), self.b.ident(c[1]), self.b.span(meta))
+
+        def args(self, meta, c):
+            return tuple(x for x in c if x is not None)
+
+        def duration(self, meta, c):
+            return ast.Duration(c[0], c[1], self.b.span(meta))
+
+        # -- keyword groups: the word itself --
+
+        def _word(self, meta, c):
+            return str(c[0])
+
+        robot_key = hook_event = encoding_kind = decoding_kind = kind_word = time_unit = _word
+
+        # -- expressions --
+
+        def conditional(self, meta, c):
+            return ast.Conditional(c[0], c[1], c[2], self.b.span(meta))
+
+        def boolop(self, meta, c):
+            return ast.BinOp(str(c[1]), c[0], c[2], self.b.span(meta))
+
+        binary = boolop
+
+        def unary(self, meta, c):
+            return ast.Unary(str(c[0]), c[1], self.b.span(meta))
+
+        def call(self, meta, c):
+            return ast.CallExpr(self.b.ident(c[0]), c[1] or (), self.b.span(meta))
+
+        def index(self, meta, c):
+            return ast.Index(ast.Ref(str(c[0]), self.b.token_span(c[0])), c[1], self.b.span(meta))
+
+        def int_lit(self, meta, c):
+            value = _int_value(str(c[0]))
+            span = self.b.span(meta)
+            if value is None:
+                self.b.diagnostics.report("E004", span, f"invalid integer literal `{_short(str(c[0]))}`")
+                value = 0
+            return ast.IntLit(value, span)
+
+        def float_lit(self, meta, c):
+            span = self.b.span(meta)
+            try:
+                value = float(str(c[0]))
+            except ValueError:
+                value = math.nan
+            if not math.isfinite(value):
+                self.b.diagnostics.report("E004", span, f"invalid float literal `{_short(str(c[0]))}`")
+                value = 0.0
+            return ast.FloatLit(value, span)
+
+        def str_lit(self, meta, c):
+            return self.b.string(c[0])
+
+        def bool_lit(self, meta, c):
+            return ast.BoolLit(str(c[0]) == "True", self.b.span(meta))
+
+        def name(self, meta, c):
+            return ast.Ref(str(c[0]), self.b.span(meta))
+
+    return Transformer
+
+
+def _short(text: str) -> str:
+    return text if len(text) <= 24 else text[:21] + "..."
+

@@ -1,0 +1,106 @@
+"""Syntax errors in words: what was expected and what was found, never grammar names."""
+
+from __future__ import annotations
+
+import re
+
+# Named terminals of grammar/rdis.lark, in words.
+_WORDS = {
+    "NAME": "a name",
+    "INT": "an integer",
+    "FLOAT": "a number",
+    "STRING": "a string",
+    "RAW_STRING": "a string",
+    "TRUE": "`True`",
+    "FALSE": "`False`",
+    "NOT": "`not`",
+    "UNARY_OP": "an expression",
+    "LPAR": "an opening `(`",
+    "RPAR": "a closing `)`",
+    "LBRACE": "an opening `{`",
+    "RBRACE": "a closing `}`",
+    "LSQB": "an opening `[`",
+    "RSQB": "a closing `]`",
+    "COMMA": "`,`",
+    "COLON": "`:`",
+    "EQUAL": "`=`",
+    "$END": "the end of the file",
+}
+# Terminals that can only continue an expression: listed as one phrase.
+_OPERATORS = {"POW", "SHIFT_OP", "COMP_OP", "MUL_OP", "ADD_OP", "BAR", "CARET", "AMP", "OR", "AND", "IF"}
+_EXPRESSION_START = {"INT", "FLOAT", "STRING", "RAW_STRING", "TRUE", "FALSE", "NOT", "UNARY_OP"}
+
+
+def _phrase(terminal: str) -> str | None:
+    if terminal in _WORDS:
+        return _WORDS[terminal]
+    if re.fullmatch(r"[A-Z]+", terminal):  # an anonymous keyword terminal, e.g. DELAY
+        return f"`{terminal.lower()}`"
+    if terminal == "__ANON_0" or terminal.startswith("__ANON"):
+        return None
+    return f"`{terminal.lower()}`"
+
+
+def expected_words(expected: set[str]) -> str:
+    """'a name, `,` or a closing `)`' for a set of terminal names."""
+    phrases: list[str] = []
+    names = set(expected)
+    if names & _OPERATORS:
+        phrases.append("an operator")
+        names -= _OPERATORS
+    if "NAME" in names and names & _EXPRESSION_START:
+        phrases.append("an expression")
+        names -= _EXPRESSION_START | {"NAME", "LPAR", "ADD_OP"}
+    for name in sorted(names):
+        word = _phrase(name)
+        if word and word not in phrases:
+            phrases.append(word)
+    if not phrases:
+        return "something else"
+    if len(phrases) == 1:
+        return phrases[0]
+    return ", ".join(phrases[:-1]) + " or " + phrases[-1]
+
+
+def _found(token) -> str:
+    if token.type == "$END":
+        return "the end of the file"
+    text = str(token)
+    if token.type in ("STRING", "RAW_STRING"):
+        return f"the string {text}" if len(text) <= 30 else "a string"
+    if len(text) > 30:
+        text = text[:27] + "..."
+    return f"`{text}`"
+
+
+def describe_unexpected(err, chunk: str, last: bool) -> tuple[str, int, int, str, str | None]:
+    """(code, offset in chunk, length, message, label) for a Lark error."""
+    import lark
+
+    if isinstance(err, lark.exceptions.UnexpectedCharacters):
+        offset = err.pos_in_stream
+        char = chunk[offset] if offset < len(chunk) else ""
+        if char == '"' or chunk[offset : offset + 2] == 'r"':
+            line_end = chunk.find("\n", offset)
+            line_end = len(chunk) if line_end == -1 else line_end
+            return ("E002", offset, line_end - offset, "unterminated string", "this string is not closed on its line")
+        if char == "_":
+            return ("E002", offset, 1, "names cannot start with `_`", "a name starts with a letter")
+        shown = repr(char)[1:-1] if not char.isprintable() or char.isspace() else char
+        return ("E002", offset, 1, f"unexpected character `{shown}`", "no token starts with this character")
+
+    token = err.token
+    expected = expected_words(set(err.expected))
+    if token.type == "$END":
+        if last:
+            return ("E001", len(chunk), 0, f"expected {expected}, found the end of the file", None)
+        return (
+            "E001",
+            len(chunk),
+            0,
+            f"expected {expected} before the next declaration",
+            "the declaration before this one is not finished",
+        )
+    start = token.start_pos or 0
+    length = max(1, (token.end_pos or start + 1) - start)
+    return ("E001", start, length, f"expected {expected}, found {_found(token)}", None)

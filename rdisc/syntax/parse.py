@@ -1,0 +1,136 @@
+"""Text → AST: the one entry point of the syntax stage is `parse`.
+
+The file is cut into top-level declarations at lines that begin with a
+declaration keyword in column 0, and each piece is parsed on its own. A syntax
+error therefore costs only the declaration it is in: the rest of the file is
+still parsed and checked. Lark builds a tree (iteratively); its depth is bounded
+before the recursive transformation into AST nodes.
+"""
+
+from __future__ import annotations
+
+import re
+from functools import lru_cache
+
+from rdisc.diagnostics import Diagnostics
+from rdisc.source import Span
+from rdisc.syntax import ast
+from rdisc.syntax.build import Builder
+from rdisc.syntax.errors import describe_unexpected
+
+MAX_FILE_CHARS = 8 * 1024 * 1024
+MAX_TREE_DEPTH = 120
+MAX_SYNTAX_ERRORS = 100
+
+DECL_KEYWORDS = (
+    "import",
+    "robot",
+    "state",
+    "connection",
+    "primitive",
+    "interface",
+    "adapter",
+    "input",
+    "output",
+)
+_DECL_START = re.compile(r"^(?:%s)\b" % "|".join(DECL_KEYWORDS), re.MULTILINE)
+_DOC_RUN = re.compile(r"(?:^[ \t]*///[^\n]*\n?)+", re.MULTILINE)
+_DOC_LINE = re.compile(r"^[ \t]*/// ?([^\n]*)$", re.MULTILINE)
+_BLANK_OR_COMMENT = re.compile(r"(?:\s+|#[^\n]*)*")
+
+
+@lru_cache(maxsize=1)
+def parser():  # -> lark.Lark, imported lazily: start-up time matters for `rdisc check`
+    import lark
+
+    from rdisc.resources import grammar_path
+
+    return lark.Lark.open(
+        str(grammar_path()),
+        parser="lalr",
+        lexer="contextual",
+        propagate_positions=True,
+        maybe_placeholders=True,
+        cache=True,
+    )
+
+
+def parse(path: str, text: str, diagnostics: Diagnostics) -> ast.Module:
+    """Parse one file; every problem found goes to `diagnostics`."""
+    if len(text) > MAX_FILE_CHARS:
+        diagnostics.report(
+            "E005",
+            Span(path, 0, 0),
+            f"file is too large ({len(text)} characters; the limit is {MAX_FILE_CHARS})",
+        )
+        return ast.Module(path, ())
+    import lark
+
+    builder = Builder(path, _doc_comments(text), diagnostics)
+    decls: list[ast.Decl] = []
+    errors = 0
+    bounds = _chunks(text)
+    for i, (start, end) in enumerate(bounds):
+        chunk = text[start:end]
+        try:
+            tree = parser().parse(chunk)
+        except lark.exceptions.UnexpectedInput as err:
+            errors += 1
+            if errors <= MAX_SYNTAX_ERRORS:
+                last = i == len(bounds) - 1
+                _report_syntax_error(err, path, text, start, end, last, diagnostics)
+            continue
+        depth, deepest = _depth(tree)
+        if depth > MAX_TREE_DEPTH:
+            meta = deepest.meta
+            diagnostics.report(
+                "E005",
+                Span(path, start + meta.start_pos, start + meta.end_pos),
+                f"expression is nested too deeply (the limit is {MAX_TREE_DEPTH} levels)",
+            )
+            continue
+        decls.extend(builder.build(tree, start))
+    return ast.Module(path, tuple(decls))
+
+
+def _chunks(text: str) -> list[tuple[int, int]]:
+    starts = [m.start() for m in _DECL_START.finditer(text)]
+    if not starts or starts[0] != 0:
+        starts.insert(0, 0)
+    ends = starts[1:] + [len(text)]
+    return list(zip(starts, ends))
+
+
+def _doc_comments(text: str) -> dict[int, str]:
+    """Doc comment text keyed by the offset of the code that follows it."""
+    docs: dict[int, str] = {}
+    if "///" not in text:
+        return docs
+    for run in _DOC_RUN.finditer(text):
+        lines = _DOC_LINE.findall(run.group())
+        after = _BLANK_OR_COMMENT.match(text, run.end())
+        target = after.end() if after else run.end()
+        docs[target] = "\n".join(line.rstrip() for line in lines).strip()
+    return docs
+
+
+def _depth(tree) -> tuple[int, object]:
+    """Maximum depth of a Lark tree, computed without recursion."""
+    import lark
+
+    best, deepest = 0, tree
+    stack = [(tree, 1)]
+    while stack:
+        node, depth = stack.pop()
+        if depth > best:
+            best, deepest = depth, node
+        for child in node.children:
+            if isinstance(child, lark.Tree):
+                stack.append((child, depth + 1))
+    return best, deepest
+
+
+def _report_syntax_error(err, path, text, start, end, last, diagnostics) -> None:
+    code, offset, length, message, label = describe_unexpected(err, text[start:end], last)
+    at = start + offset
+    diagnostics.report(code, Span(path, at, min(at + length, len(text))), message, label=label)
