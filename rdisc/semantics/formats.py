@@ -1,0 +1,205 @@
+"""Static analysis of the message templates a primitive uses: struct formats
+(`pack`/`unpack`), PEP 3101 formats (`format`) and regular expressions (`regex`).
+
+Each analysis returns a value or raises `TemplateError` with a message and an
+offset into the template, so the checker can point at the offending character.
+"""
+
+from __future__ import annotations
+
+import re
+import string
+import struct
+from dataclasses import dataclass
+
+from rdisc.semantics.model import Type
+
+MAX_REPEAT = 4096
+
+
+class TemplateError(ValueError):
+    def __init__(self, message: str, offset: int = 0, length: int = 1) -> None:
+        super().__init__(message)
+        self.message = message
+        self.offset = offset
+        self.length = length
+
+
+@dataclass(frozen=True, slots=True)
+class Slot:
+    """One value a template takes or yields."""
+
+    code: str  # the struct code or the PEP 3101 spec ("" for `{}`)
+    type: Type
+    low: int | None = None  # integer range, when the code has one
+    high: int | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class StructLayout:
+    slots: tuple[Slot, ...]
+    size: int  # bytes on the wire
+    native: bool  # no byte-order prefix: host order and alignment
+
+
+_INT_CODES = "bBhHiIlLqQnN"
+_STANDARD_SIZES = {"b": 1, "B": 1, "h": 2, "H": 2, "i": 4, "I": 4, "l": 4, "L": 4, "q": 8, "Q": 8}
+_STRUCT_ITEM = re.compile(r"\s*(\d*)\s*([a-zA-Z?])")
+
+
+def struct_layout(fmt: str) -> StructLayout:
+    """The values a struct format packs or unpacks, one slot per value."""
+    order = fmt[:1] if fmt[:1] in "@=<>!" else ""
+    body = fmt[len(order) :]
+    slots: list[Slot] = []
+    pos = 0
+    while pos < len(body):
+        if body[pos].isspace():
+            pos += 1
+            continue
+        m = _STRUCT_ITEM.match(body, pos)
+        offset = len(order) + pos
+        if not m:
+            raise TemplateError(f"`{body[pos]}` is not a struct format code", offset)
+        count_text, code = m.groups()
+        count = int(count_text) if count_text else 1
+        if count > MAX_REPEAT:
+            raise TemplateError(f"repeat count {count} is larger than {MAX_REPEAT}", offset, len(m.group().strip()))
+        code_at = len(order) + m.end() - 1
+        if code == "P":
+            raise TemplateError("pointer code `P` has no meaning on a wire", code_at)
+        if code in "nN" and order not in ("", "@"):
+            raise TemplateError(f"`{code}` exists only in native mode (no byte-order prefix)", code_at)
+        if code in _INT_CODES:
+            bits = 8 * (_STANDARD_SIZES.get(code) or struct.calcsize(code))
+            signed = code.islower()
+            low, high = (-(1 << (bits - 1)), (1 << (bits - 1)) - 1) if signed else (0, (1 << bits) - 1)
+            slots.extend([Slot(code, Type.INT, low, high)] * count)
+        elif code in "efd":
+            slots.extend([Slot(code, Type.FLOAT)] * count)
+        elif code == "?":
+            slots.extend([Slot(code, Type.BOOL)] * count)
+        elif code in "sp":
+            slots.append(Slot(f"{count}{code}", Type.STRING))
+        elif code == "c":
+            slots.extend([Slot(code, Type.STRING)] * count)
+        elif code == "x":
+            pass
+        else:
+            raise TemplateError(f"`{code}` is not a struct format code", code_at)
+        pos = m.end()
+    try:
+        size = struct.calcsize(fmt)
+    except struct.error as err:
+        raise TemplateError(f"invalid struct format: {err}", 0, len(fmt)) from None
+    native = order in ("", "@") and any(c in "hHiIlLqQnNefd" for c in body)
+    return StructLayout(tuple(slots), size, native)
+
+
+@dataclass(frozen=True, slots=True)
+class FormatField:
+    spec: str
+    offset: int  # of the `{` in the template
+
+
+def format_fields(template: str) -> tuple[FormatField, ...]:
+    """The positional fields of a PEP 3101 template, in argument order.
+
+    Only `{}`/`{N}` with a plain spec are allowed: field names with attributes or
+    indexes would let a description reach into Python objects.
+    """
+    fields: list[tuple[int, FormatField]] = []
+    auto = 0
+    manual = False
+    try:
+        parsed = list(string.Formatter().parse(template))
+    except ValueError as err:
+        raise TemplateError(f"invalid format string: {err}", 0, len(template)) from None
+    for _literal, name, spec, conversion in parsed:
+        if name is None:
+            continue
+        offset = _field_offset(template, len(fields))
+        if conversion:
+            raise TemplateError(f"conversion `!{conversion}` is not allowed in a format field", offset)
+        if spec and ("{" in spec or "}" in spec):
+            raise TemplateError("nested fields are not allowed in a format spec", offset)
+        if name == "":
+            if manual:
+                raise TemplateError("cannot mix `{}` and `{N}` fields", offset)
+            index = auto
+            auto += 1
+        elif name.isdigit():
+            if auto:
+                raise TemplateError("cannot mix `{}` and `{N}` fields", offset)
+            manual = True
+            index = int(name)
+            if index > MAX_REPEAT:
+                raise TemplateError(f"field index {index} is too large", offset)
+        else:
+            raise TemplateError(
+                f"field `{{{name}}}` is not positional: write `{{}}` or `{{0}}`", offset, len(name) + 2
+            )
+        fields.append((index, FormatField(spec or "", offset)))
+    by_index: dict[int, FormatField] = {}
+    for index, field in fields:
+        by_index.setdefault(index, field)
+    count = max(by_index, default=-1) + 1
+    missing = [i for i in range(count) if i not in by_index]
+    if missing:
+        raise TemplateError(f"format field {{{missing[0]}}} is never used", 0, len(template))
+    return tuple(by_index[i] for i in range(count))
+
+
+def _field_offset(template: str, n: int) -> int:
+    """Offset of the n-th replacement field's `{` (escaped `{{` skipped)."""
+    seen = -1
+    i = 0
+    while i < len(template):
+        if template.startswith("{{", i) or template.startswith("}}", i):
+            i += 2
+            continue
+        if template[i] == "{":
+            seen += 1
+            if seen == n:
+                return i
+        i += 1
+    return 0
+
+
+_SPEC_WIDTH = re.compile(r"(?:.?[<>=^])?[+\- ]?z?#?0?(\d+)?")
+_SAMPLES = {Type.INT: 0, Type.FLOAT: 0.0, Type.BOOL: False, Type.STRING: ""}
+
+
+def spec_accepts(spec: str, type_: Type) -> bool:
+    """Whether a format spec can format a value of this type."""
+    try:
+        format(_SAMPLES[type_], spec)
+    except (ValueError, TypeError):
+        return False
+    return True
+
+
+def format_width(spec: str) -> int:
+    """The minimum width a spec asks for (0 if none): a lower bound on bytes."""
+    m = _SPEC_WIDTH.match(spec)
+    return int(m.group(1)) if m and m.group(1) else 0
+
+
+def regex_groups(pattern: str) -> int:
+    """Number of groups of a regex; raises TemplateError where it does not compile."""
+    try:
+        return re.compile(pattern).groups
+    except re.error as err:
+        raise TemplateError(f"invalid regular expression: {err.msg}", err.pos or 0) from None
+    except (OverflowError, RecursionError, MemoryError):
+        raise TemplateError("regular expression is too complex", 0, len(pattern)) from None
+
+
+def regex_min_length(pattern: str) -> int:
+    """The fewest characters the regex can match (a lower bound on a reply)."""
+    try:
+        from re import _parser  # type: ignore[attr-defined]
+
+        return min(_parser.parse(pattern).getwidth()[0], 1 << 16)
+    except Exception:  # noqa: BLE001 - a lower bound of 0 is always safe
+        return 0

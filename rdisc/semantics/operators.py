@@ -1,0 +1,167 @@
+"""What the operators and built-in functions of the expression language compute.
+
+One definition, used by constant folding in the checker and by the runtime's
+interpreter. Every operation that could be made to eat memory or time (powers,
+shifts, string building) is bounded here and raises `EvalError` instead.
+"""
+
+from __future__ import annotations
+
+import math
+import operator
+from collections.abc import Callable
+from typing import Any
+
+MAX_SHIFT = 1024
+MAX_RESULT_BITS = 4096
+MAX_STRING = 1 << 20
+
+
+class EvalError(ArithmeticError):
+    """An expression that cannot be evaluated: the message says why."""
+
+
+def _pow(a: Any, b: Any) -> Any:
+    if isinstance(a, int) and isinstance(b, int):
+        if b < 0:
+            raise EvalError(f"negative integer exponent {b}: write a float base, e.g. {a}.0 ** {b}")
+        if abs(a) > 1 and b * max(1, abs(a).bit_length()) > MAX_RESULT_BITS:
+            raise EvalError(f"{a} ** {b} is too large (results are limited to {MAX_RESULT_BITS} bits)")
+        return a**b
+    try:
+        result = float(a) ** float(b)
+    except (OverflowError, ZeroDivisionError) as err:
+        raise EvalError(f"{a} ** {b}: {err}") from None
+    if isinstance(result, complex):
+        raise EvalError(f"{a} ** {b} has no real value")
+    return result
+
+
+def _lshift(a: int, b: int) -> int:
+    if b < 0:
+        raise EvalError(f"negative shift count {b}")
+    if b > MAX_SHIFT or a.bit_length() + b > MAX_RESULT_BITS:
+        raise EvalError(f"{a} << {b} is too large (results are limited to {MAX_RESULT_BITS} bits)")
+    return a << b
+
+
+def _rshift(a: int, b: int) -> int:
+    if b < 0:
+        raise EvalError(f"negative shift count {b}")
+    return a >> min(b, MAX_RESULT_BITS + 1)
+
+
+def _div(a: Any, b: Any) -> float:
+    if b == 0:
+        raise EvalError("division by zero")
+    return a / b
+
+
+def _floordiv(a: Any, b: Any) -> Any:
+    if b == 0:
+        raise EvalError("division by zero")
+    return a // b
+
+
+def _mod(a: Any, b: Any) -> Any:
+    if b == 0:
+        raise EvalError("modulo by zero")
+    return a % b
+
+
+def _add(a: Any, b: Any) -> Any:
+    if isinstance(a, str) and len(a) + len(b) > MAX_STRING:
+        raise EvalError(f"string longer than {MAX_STRING} characters")
+    return a + b
+
+
+def _checked_float(f: Callable[..., Any]) -> Callable[..., Any]:
+    def wrapper(a: Any, b: Any) -> Any:
+        result = f(a, b)
+        if isinstance(result, float) and math.isinf(result) and not (math.isinf(a) or math.isinf(b)):
+            raise EvalError("float overflow")
+        return result
+
+    return wrapper
+
+
+BINARY: dict[str, Callable[[Any, Any], Any]] = {
+    "+": _checked_float(_add),
+    "-": _checked_float(operator.sub),
+    "*": _checked_float(operator.mul),
+    "/": _div,
+    "//": _floordiv,
+    "%": _mod,
+    "**": _pow,
+    "<<": _lshift,
+    ">>": _rshift,
+    "&": operator.and_,
+    "|": operator.or_,
+    "^": operator.xor,
+    "==": operator.eq,
+    "!=": operator.ne,
+    "<": operator.lt,
+    "<=": operator.le,
+    ">": operator.gt,
+    ">=": operator.ge,
+}
+
+UNARY: dict[str, Callable[[Any], Any]] = {
+    "-": operator.neg,
+    "+": operator.pos,
+    "~": operator.invert,
+    "not": operator.not_,
+}
+
+
+def _round(x: Any, ndigits: int | None = None) -> Any:
+    try:
+        return round(x) if ndigits is None else round(float(x), ndigits)
+    except (ValueError, OverflowError) as err:
+        raise EvalError(f"round({x}): {err}") from None
+
+
+def _int(x: Any) -> int:
+    try:
+        return int(x.strip(), 0) if isinstance(x, str) and x.strip()[:2].lower() in ("0x", "0b", "0o") else int(x)
+    except (ValueError, OverflowError) as err:
+        raise EvalError(f"int({x!r}): {err}") from None
+
+
+def _float(x: Any) -> float:
+    try:
+        return float(x)
+    except (ValueError, OverflowError) as err:
+        raise EvalError(f"float({x!r}): {err}") from None
+
+
+def _clamp(x: Any, lo: Any, hi: Any) -> Any:
+    return lo if x < lo else hi if x > hi else x
+
+
+def _math(f: Callable[..., float]) -> Callable[..., float]:
+    def wrapper(*args: Any) -> float:
+        try:
+            return f(*args)
+        except (ValueError, OverflowError) as err:
+            raise EvalError(f"{f.__name__}{args}: {err}") from None
+
+    return wrapper
+
+
+FUNCTIONS: dict[str, Callable[..., Any]] = {
+    "abs": abs,
+    "min": min,
+    "max": max,
+    "round": _round,
+    "int": _int,
+    "float": _float,
+    "bool": bool,
+    "str": str,
+    "clamp": _clamp,
+    "sqrt": _math(math.sqrt),
+    "sin": _math(math.sin),
+    "cos": _math(math.cos),
+    "atan2": _math(math.atan2),
+    "hypot": _math(math.hypot),
+}
