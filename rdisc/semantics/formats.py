@@ -123,6 +123,8 @@ def format_fields(template: str) -> tuple[FormatField, ...]:
             raise TemplateError(f"conversion `!{conversion}` is not allowed in a format field", offset)
         if spec and ("{" in spec or "}" in spec):
             raise TemplateError("nested fields are not allowed in a format spec", offset)
+        if any(int(n) > MAX_REPEAT for n in re.findall(r"\d+", spec or "")):
+            raise TemplateError(f"a width or precision above {MAX_REPEAT} in `{{:{spec}}}`", offset)
         if name == "":
             if manual:
                 raise TemplateError("cannot mix `{}` and `{N}` fields", offset)

@@ -1,0 +1,42 @@
+"""Showing a compilation's diagnostics and writing results: shared by the verbs."""
+
+from __future__ import annotations
+
+import sys
+
+from rdisc.compile import Compilation
+
+EXIT_OK, EXIT_ERRORS, EXIT_USAGE = 0, 1, 2
+
+
+def show(compilations: list[Compilation]) -> None:
+    """Diagnostics for people, on stderr; rich is imported only when there are some."""
+    items = [d for c in compilations for d in c.diagnostics.sorted()]
+    if not items:
+        return
+    from rich.console import Console
+
+    from rdisc.diagnostics.text import render
+
+    sources = {path: src for c in compilations for path, src in c.sources.items()}
+    Console(stderr=True, highlight=False).print(render(items, sources), soft_wrap=True)  # type: ignore[arg-type]
+
+
+def exit_code(compilations: list[Compilation]) -> int:
+    if any(d.code == "E006" and d.span is None for c in compilations for d in c.diagnostics.items):
+        return EXIT_USAGE
+    return EXIT_ERRORS if any(c.diagnostics.has_errors() for c in compilations) else EXIT_OK
+
+
+def write(text: str, path: str | None) -> int:
+    """Write a result to a file, or to stdout when no path is given."""
+    if path is None or path == "-":
+        sys.stdout.write(text)
+        return EXIT_OK
+    try:
+        with open(path, "w", encoding="utf-8", newline="\n") as f:
+            f.write(text)
+    except OSError as err:
+        print(f"rdisc: cannot write {path}: {err.strerror or err}", file=sys.stderr)
+        return EXIT_USAGE
+    return EXIT_OK

@@ -1,0 +1,131 @@
+"""The pipeline, stage by stage: read → parse → resolve → check (→ Model) → budget.
+
+This is the one place that knows the order of the stages; the CLI, the tests and
+later the runtime call `compile_path`. A .json file enters through the JSON
+importer instead of the parser and goes through the same checker.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from rdisc.diagnostics import Diagnostics
+from rdisc.semantics.budget import ConnectionBudget, budget
+from rdisc.semantics.check import check
+from rdisc.semantics.model import Model
+from rdisc.semantics.resolve import Unit, resolve
+from rdisc.source import Sources, Span
+from rdisc.syntax import ast
+from rdisc.syntax.parse import MAX_FILE_CHARS, parse
+
+MAX_IMPORTS = 256
+
+
+@dataclass
+class Compilation:
+    model: Model | None
+    diagnostics: Diagnostics
+    sources: Sources
+    budgets: list[ConnectionBudget] = field(default_factory=list)
+    main: ast.Module | None = None  # the main file's syntax tree (for `rdisc import`)
+
+
+def read_text(path: str, diagnostics: Diagnostics, at: Span | None = None) -> str | None:
+    """The text of a file, or None with an E006 diagnostic."""
+    try:
+        with open(path, "rb") as f:
+            data = f.read(MAX_FILE_CHARS * 4 + 1)
+    except OSError as err:
+        diagnostics.report("E006", at, f"cannot read {path}: {err.strerror or err}")
+        return None
+    try:
+        return data.decode("utf-8")
+    except UnicodeDecodeError as err:
+        line = data.count(b"\n", 0, err.start) + 1
+        diagnostics.report("E006", at, f"{path} is not UTF-8 text (byte {err.start}, line {line})")
+        return None
+
+
+def compile_path(path: str) -> Compilation:
+    """Check one description (.rdis or .json) and build its Model."""
+    diagnostics = Diagnostics()
+    sources = Sources()
+    units: list[Unit] = []
+    main = _load(path, diagnostics, sources, units)
+    if main is None:
+        return Compilation(None, diagnostics, sources)
+    return _analyse(units, diagnostics, sources, main)
+
+
+def compile_module(main: ast.Module, diagnostics: Diagnostics, sources: Sources) -> Compilation:
+    """Check an already-built syntax tree (from the JSON importer) with its imports."""
+    units: list[Unit] = []
+    _add_unit(main, True, diagnostics, sources, units)
+    return _analyse(units, diagnostics, sources, main)
+
+
+def _analyse(units: list[Unit], diagnostics: Diagnostics, sources: Sources, main: ast.Module) -> Compilation:
+    symbols = resolve(units, diagnostics)
+    model = check(units, symbols, diagnostics)
+    budgets = budget(model, diagnostics) if model is not None else []
+    return Compilation(model, diagnostics, sources, budgets, main)
+
+
+def _load(path: str, diagnostics: Diagnostics, sources: Sources, units: list[Unit]) -> ast.Module | None:
+    text = read_text(path, diagnostics)
+    if text is None:
+        return None
+    sources.add(path, text)
+    if path.endswith(".json"):
+        from rdisc.emit.json_import import read
+
+        module = read(path, text, diagnostics)
+    else:
+        module = parse(path, text, diagnostics)
+    if module is None:
+        return None
+    _add_unit(module, True, diagnostics, sources, units)
+    return module
+
+
+def _add_unit(main: ast.Module, is_main: bool, diagnostics: Diagnostics, sources: Sources, units: list[Unit]) -> None:
+    """Add the stdlib, the main module and every file it imports (transitively, once each).
+
+    The stdlib comes first, so a user's adapter that repeats a standard name is the
+    one reported as the duplicate.
+    """
+    from rdisc.resources import stdlib_path
+
+    stdlib = str(stdlib_path())
+    text = read_text(stdlib, diagnostics)
+    if text is not None:
+        sources.add(stdlib, text)
+        units.append(Unit(parse(stdlib, text, diagnostics), standard=True))
+    seen = {str(Path(main.path).resolve()), str(Path(stdlib).resolve())}
+    units.append(Unit(main, main=is_main))
+    queue = [main]
+    while queue:
+        module = queue.pop(0)
+        for decl in module.decls:
+            if not isinstance(decl, ast.ImportDecl):
+                continue
+            target = Path(module.path).parent / decl.path
+            key = str(target.resolve())
+            if key in seen:
+                continue
+            seen.add(key)
+            if len(seen) > MAX_IMPORTS:
+                diagnostics.report("E005", decl.span, f"more than {MAX_IMPORTS} imported files")
+                return
+            if not target.is_file():
+                diagnostics.report("E007", decl.span, f"imported file `{decl.path}` does not exist",
+                                   label=f"looked for {target}")
+                continue
+            text = read_text(str(target), diagnostics, decl.span)
+            if text is None:
+                continue
+            sources.add(str(target), text)
+            imported = parse(str(target), text, diagnostics)
+            units.append(Unit(imported))
+            queue.append(imported)

@@ -1,0 +1,165 @@
+"""The link budget: can each connection carry what the description schedules on it?
+
+From the baud rate (10 bits a byte at 8N1), each primitive's bytes on the wire
+(request and reply), the periodic interfaces run every tick, the keepalive run
+every interval and the declared delays, warn when the scheduled traffic exceeds
+the link (W401) or a schedule's period is shorter than its exchange (W402).
+ASCII messages are counted at their shortest, so a warning is never a false alarm.
+"""
+
+from __future__ import annotations
+
+import struct
+from dataclasses import dataclass
+
+from rdisc.diagnostics import Diagnostics
+from rdisc.semantics import formats
+from rdisc.semantics import model as m
+
+BITS_PER_BYTE = 10  # 8N1: start bit, 8 data bits, stop bit
+_SAMPLE = {m.Type.INT: 0, m.Type.FLOAT: 0.0, m.Type.BOOL: False, m.Type.STRING: ""}
+
+
+@dataclass(frozen=True, slots=True)
+class Exchange:
+    """What running one interface costs on the wire."""
+
+    interface: str
+    bytes: int  # on this connection
+    wire_ms: float
+    delay_ms: float
+
+    @property
+    def total_ms(self) -> float:
+        return self.wire_ms + self.delay_ms
+
+
+@dataclass(frozen=True, slots=True)
+class ConnectionBudget:
+    connection: str
+    baud: int
+    frequency_hz: float
+    periodic: tuple[Exchange, ...]
+    keepalive: Exchange | None
+    keepalive_interval_ms: float | None
+
+    @property
+    def capacity(self) -> float:
+        """Bytes per second the link carries."""
+        return self.baud / BITS_PER_BYTE
+
+    @property
+    def tick_ms(self) -> float:
+        return 1000.0 / self.frequency_hz
+
+    @property
+    def tick_ms_needed(self) -> float:
+        return sum(e.total_ms for e in self.periodic)
+
+    @property
+    def load(self) -> float:
+        """Bytes per second scheduled on the link."""
+        per_tick = sum(e.bytes for e in self.periodic) * self.frequency_hz
+        if self.keepalive and self.keepalive_interval_ms:
+            per_tick += self.keepalive.bytes * 1000.0 / self.keepalive_interval_ms
+        return per_tick
+
+    def lines(self) -> list[str]:
+        """The budget in words, for `rdisc check --verbose`."""
+        out = [f"connection `{self.connection}`: {self.baud} baud, {self.capacity:g} bytes/s"]
+        if self.periodic:
+            out.append(f"  every tick ({self.frequency_hz:g} Hz, {self.tick_ms:.1f} ms):")
+            out += [f"    {_exchange(e)}" for e in self.periodic]
+            out.append(f"    {self.tick_ms_needed:.2f} ms of {self.tick_ms:.1f} ms per tick")
+        if self.keepalive and self.keepalive_interval_ms:
+            out.append(f"  keepalive every {self.keepalive_interval_ms:g} ms:")
+            out.append(f"    {_exchange(self.keepalive)}")
+        share = 100.0 * self.load / self.capacity if self.capacity else 0.0
+        out.append(f"  scheduled: {self.load:.1f} bytes/s, {share:.1f}% of the link")
+        return out
+
+
+def _exchange(e: Exchange) -> str:
+    return (f"{e.interface}: {e.bytes} bytes, {e.wire_ms:.2f} ms on the wire + {e.delay_ms:g} ms of delays"
+            f" = {e.total_ms:.2f} ms")
+
+
+def budget(model: m.Model, diagnostics: Diagnostics) -> list[ConnectionBudget]:
+    """Each connection's budget; warnings for the schedules that cannot hold."""
+    budgets = []
+    for conn in model.connections.values():
+        periodic = tuple(
+            exchange(model, iface, conn.name)
+            for iface in model.interfaces.values()
+            if iface.periodic and _owner(model, iface) == conn.name
+        )
+        keepalive = exchange(model, model.interfaces[conn.keepalive.call.interface], conn.name) if conn.keepalive else None
+        b = ConnectionBudget(conn.name, conn.baud, conn.frequency_hz, periodic, keepalive,
+                             conn.keepalive.interval_ms if conn.keepalive else None)
+        _warn(model, conn, b, diagnostics)
+        budgets.append(b)
+    return budgets
+
+
+def _warn(model: m.Model, conn: m.Connection, b: ConnectionBudget, diagnostics: Diagnostics) -> None:
+    if b.periodic and b.tick_ms_needed > b.tick_ms:
+        first = model.interfaces[b.periodic[0].interface]
+        diagnostics.report(
+            "W402", first.span,
+            f"the periodic work of `{conn.name}` takes {b.tick_ms_needed:.2f} ms per tick, longer than its "
+            f"{b.tick_ms:.1f} ms period ({conn.frequency_hz:g} Hz)",
+            help="lower the frequency, shorten the delays, or read less per tick",
+        )
+    if b.keepalive and b.keepalive_interval_ms and b.keepalive.total_ms > b.keepalive_interval_ms:
+        diagnostics.report(
+            "W402", conn.keepalive.call.span if conn.keepalive else conn.span,
+            f"the keepalive `{b.keepalive.interface}` takes {b.keepalive.total_ms:.2f} ms, longer than its "
+            f"{b.keepalive_interval_ms:g} ms interval",
+        )
+    if b.load > b.capacity:
+        diagnostics.report(
+            "W401", conn.span,
+            f"`{conn.name}` schedules {b.load:.0f} bytes/s, more than {conn.baud} baud carries "
+            f"({b.capacity:g} bytes/s)",
+            help="raise the baud rate, lower the frequency, or lengthen the keepalive interval",
+        )
+
+
+def _owner(model: m.Model, iface: m.Interface) -> str | None:
+    """The connection whose thread runs a periodic interface (the checker made it unique)."""
+    for call in iface.calls:
+        return model.primitives[call.primitive].connection
+    return next(iter(model.connections), None)
+
+
+def exchange(model: m.Model, iface: m.Interface, connection: str) -> Exchange:
+    count = 0
+    wire = 0.0
+    delays = 0.0
+    for call in iface.calls:
+        prim = model.primitives[call.primitive]
+        size = message_bytes(prim)
+        baud = model.connections[prim.connection].baud
+        wire += size * BITS_PER_BYTE * 1000.0 / baud
+        if prim.connection == connection:
+            count += size
+        delays += call.delay_ms
+    return Exchange(iface.name, count, wire, delays)
+
+
+def message_bytes(prim: m.Primitive) -> int:
+    """Bytes of the request and the reply (ASCII counted at its shortest)."""
+    match prim.encoding:
+        case m.Pack(format=fmt):
+            request = struct.calcsize(fmt)
+        case m.Format(template=template):
+            values = [a.value if isinstance(a, m.Const) else _SAMPLE[a.type] for a in prim.args]
+            request = len(template.format(*values).encode("utf-8"))
+    match prim.decoding:
+        case m.Unpack(format=fmt):
+            reply = struct.calcsize(fmt)
+        case m.Regex(pattern=pattern):
+            reply = formats.regex_min_length(pattern) + 1  # and its line terminator
+        case None:
+            reply = 0
+    return request + reply

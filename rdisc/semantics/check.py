@@ -1,0 +1,550 @@
+"""Types and rules of every declaration, and the Model built from them.
+
+`check` walks the declarations once, typing every expression (rdisc.semantics.types)
+and checking the rules of the thesis model: clauses, arity, message templates,
+value ranges, scopes and writes, adapters' fields, unused elements. The Model is
+returned only when no error was found.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from rdisc.diagnostics import Diagnostics, Label
+from rdisc.semantics import formats
+from rdisc.semantics import model as m
+from rdisc.semantics.model import Scope, Type
+from rdisc.semantics.resolve import Symbols, Unit, check_name, suggest
+from rdisc.semantics.types import Env, Typer, describe
+from rdisc.source import Span
+from rdisc.syntax import ast
+
+STANDARD_BAUDS = frozenset(
+    (50, 75, 110, 134, 150, 200, 300, 600, 1200, 1800, 2400, 4800, 9600, 14400, 19200, 28800, 38400, 57600,
+     76800, 115200, 230400, 250000, 460800, 500000, 576000, 921600, 1000000, 1152000, 1500000, 2000000,
+     2500000, 3000000, 3500000, 4000000)
+)
+DEFAULT_BAUD = 9600
+DEFAULT_FREQUENCY_HZ = 10.0
+_TYPES = {t.value: t for t in Type}
+_NOTHING = Env({}, "in a setting", "")
+
+
+@dataclass(frozen=True, slots=True)
+class Checked:
+    """What the checker hands on: the Model (None if there were errors)."""
+
+    model: m.Model | None
+
+
+def check(units: list[Unit], symbols: Symbols, diagnostics: Diagnostics) -> m.Model | None:
+    return _Checker(units, symbols, diagnostics).run()
+
+
+class _Checker:
+    def __init__(self, units: list[Unit], symbols: Symbols, diagnostics: Diagnostics) -> None:
+        self.units = units
+        self.s = symbols
+        self.d = diagnostics
+        self.typer = Typer(diagnostics)
+        self.main_decls = {id(decl) for unit in units if unit.main for decl in unit.module.decls}
+        self.state_env: dict[str, tuple[Scope, Type]] = {}
+
+    # -- the whole description ----------------------------------------------------------
+
+    def run(self) -> m.Model | None:
+        adapters = {name: self.adapter(decl) for name, decl in self.s.adapters.items()}
+        states = {name: self.state(decl) for name, decl in self.s.states.items()}
+        self.state_env = {n: (Scope.STATE, s.type) for n, s in states.items() if s.type is not None}
+        interface_params = {name: self.params(decl.params, "interface") for name, decl in self.s.interfaces.items()}
+        primitives = {name: self.primitive(decl) for name, decl in self.s.primitives.items()}
+        connections = {name: self.connection(decl, interface_params) for name, decl in self.s.connections.items()}
+        interfaces = {
+            name: self.interface(decl, interface_params[name], primitives) for name, decl in self.s.interfaces.items()
+        }
+        inputs = {name: self.input(decl, adapters, interface_params) for name, decl in self.s.inputs.items()}
+        outputs = {name: self.output(decl, adapters) for name, decl in self.s.outputs.items()}
+        robot = self.robot()
+        self.unused(interfaces, connections, inputs)
+        if self.d.has_errors() or robot is None:
+            return None
+        return m.Model(
+            robot=robot,
+            states=states,
+            connections=connections,  # type: ignore[arg-type]
+            primitives=primitives,  # type: ignore[arg-type]
+            interfaces=interfaces,
+            adapters=adapters,
+            inputs=inputs,  # type: ignore[arg-type]
+            outputs=outputs,  # type: ignore[arg-type]
+        )
+
+    # -- shared pieces ---------------------------------------------------------------------
+
+    def type_name(self, ident: ast.Ident) -> Type | None:
+        found = _TYPES.get(ident.text)
+        if found is None:
+            self.d.report(
+                "E105", ident.span, f"unknown type `{ident.text}`", help=suggest(ident.text, _TYPES) or
+                "types are int, float, bool and string"
+            )
+        return found
+
+    def params(self, params: tuple[ast.Param, ...], owner: str) -> tuple[m.Parameter, ...]:
+        seen: dict[str, ast.Param] = {}
+        out: list[m.Parameter] = []
+        for p in params:
+            check_name(p.name, "parameter", self.d)
+            if p.name.text in seen:
+                self.d.report(
+                    "E101", p.name.span, f"parameter `{p.name.text}` is declared twice",
+                    labels=(Label(seen[p.name.text].name.span, "first declared here"),),
+                )
+            seen[p.name.text] = p
+            out.append(m.Parameter(p.name.text, self.type_name(p.type)))  # type: ignore[arg-type]
+        return tuple(out)
+
+    def env_with(self, extra: dict[str, tuple[Scope, Type]], where: str, sees: str, **kw) -> Env:
+        names = dict(self.state_env)
+        names.update(extra)
+        return Env(names, where, sees, **kw)
+
+    def flow(self, value: m.Expr, target: Type | None, span: Span, into: str) -> None:
+        """A value of value.type goes into something of type `target` (int widens to float)."""
+        source = value.type
+        if source is None or target is None or source == target or (source, target) == (Type.INT, Type.FLOAT):
+            return
+        if (source, target) == (Type.FLOAT, Type.INT):
+            self.d.report(
+                "E402", span, f"{into} takes an int, but this is a float",
+                label="a float", help="convert it: `round(...)` to the nearest integer, `int(...)` towards zero",
+            )
+        else:
+            self.d.report("E401", span, f"{into} takes {describe(target)}, but this is {describe(source)}")
+
+    def setting(self, expr: ast.Expr, what: str) -> float | None:
+        """A numeric setting (baud, Hz, ms, priority): a constant expression."""
+        node = self.typer.expr(expr, _NOTHING)
+        value = self.typer.constant(node)
+        if node.type is None:
+            return None
+        if node.type not in (Type.INT, Type.FLOAT) or value is None:
+            self.d.report("E204", expr.span, f"{what} must be a constant number")
+            return None
+        return value  # type: ignore[return-value]
+
+    def once(self, items: list, what: str, where: ast.Ident) -> object | None:
+        """The single clause of a kind; a repeat is reported at the repeat."""
+        for extra in items[1:]:
+            self.d.report(
+                "E203", extra.span, f"{what} is given twice in `{where.text}`",
+                labels=(Label(items[0].span, "first given here"),),
+            )
+        return items[0] if items else None
+
+    def call(self, call: ast.Call, params: tuple[m.Parameter, ...] | None, env: Env, kind: str,
+             target: ast.Ident | None = None) -> tuple[m.Expr, ...]:
+        """Arguments of a call of a declared element, typed and checked against its parameters."""
+        args = tuple(self.typer.expr(a, env) for a in call.args)
+        if params is None:
+            return args
+        name = call.target.text
+        if len(args) != len(params):
+            labels = (Label(target.span, f"{kind} `{name}` declared here"),) if target else ()
+            self.d.report(
+                "E201", call.span,
+                f"{kind} `{name}` takes {_count(len(params), 'argument')}, but {len(args)} given",
+                labels=labels,
+            )
+            return args
+        for arg, expr, param in zip(args, call.args, params):
+            self.flow(arg, param.type, expr.span, f"parameter `{param.name}` of {kind} `{name}`")
+        return args
+
+    # -- elements ----------------------------------------------------------------------
+
+    def robot(self) -> m.Robot | None:
+        decl = self.s.robot
+        if decl is None:
+            return None
+        attrs: dict[str, str] = {}
+        for key in ("author", "description", "version"):
+            found = self.once([a for a in decl.attrs if a.key == key], f"`{key}`", decl.name)
+            if found is not None:
+                attrs[key] = found.value  # type: ignore[attr-defined]
+        return m.Robot(decl.name.text, doc=decl.doc, span=decl.span, **attrs)
+
+    def adapter(self, decl: ast.AdapterDecl) -> m.Adapter:
+        fields: list[m.AdapterField] = []
+        seen: dict[str, ast.FieldDecl] = {}
+        for f in decl.fields:
+            check_name(f.name, "field", self.d)
+            if f.name.text in seen:
+                self.d.report(
+                    "E101", f.name.span, f"field `{f.name.text}` is declared twice in adapter `{decl.name.text}`",
+                    labels=(Label(seen[f.name.text].name.span, "first declared here"),),
+                )
+                continue
+            seen[f.name.text] = f
+            fields.append(m.AdapterField(f.name.text, self.type_name(f.type), f.unit, f.ros, f.doc))  # type: ignore[arg-type]
+        return m.Adapter(
+            decl.name.text, tuple(fields), decl.ros, id(decl) in self.s.standard, decl.doc, decl.span
+        )
+
+    def state(self, decl: ast.StateDecl) -> m.StateVariable:
+        type_ = self.type_name(decl.type)
+        initial: object = type_.default() if type_ else None
+        if decl.init is not None:
+            env = Env({}, "in an initial value", "", reply_note=None)
+            node = self.typer.expr(decl.init, env)
+            value = self.typer.constant(node)
+            if node.type is not None and value is None:
+                self.d.report("E204", decl.init.span, "an initial value must be a constant")
+            elif type_ is not None:
+                self.flow(node, type_, decl.init.span, f"state variable `{decl.name.text}`")
+                if node.type is not None and value is not None:
+                    initial = float(value) if type_ is Type.FLOAT else value  # type: ignore[arg-type]
+        return m.StateVariable(decl.name.text, type_, initial, decl.doc, decl.span)  # type: ignore[arg-type]
+
+    def connection(self, decl: ast.ConnectionDecl, interface_params) -> m.Connection:
+        name = decl.name
+        if decl.kind.text != "serial":
+            self.d.report("E209", decl.kind.span, f"unknown connection kind `{decl.kind.text}`",
+                          help="connections are `serial`")
+        baud_clause = self.once([a for a in decl.attrs if isinstance(a, ast.Baud)], "`baud`", name)
+        baud: float | None = DEFAULT_BAUD
+        if isinstance(baud_clause, ast.Baud):
+            baud = self.setting(baud_clause.value, "the baud rate")
+            if baud is not None:
+                if baud != int(baud) or baud <= 0:
+                    self.d.report("E204", baud_clause.value.span, f"the baud rate must be a positive integer, not {baud:g}")
+                elif int(baud) not in STANDARD_BAUDS:
+                    self.d.report("W201", baud_clause.value.span, f"{int(baud)} is not a standard baud rate",
+                                  help="standard rates include 9600, 19200, 38400, 57600, 115200")
+        threading = self.once([a for a in decl.attrs if isinstance(a, ast.Threading)], "`threading`", name)
+        frequency: float | None = DEFAULT_FREQUENCY_HZ
+        if isinstance(threading, ast.Threading):
+            if threading.model.text != "single":
+                self.d.report("E209", threading.model.span, f"unknown threading model `{threading.model.text}`",
+                              help="threading is `single`: one thread per connection")
+            frequency = self.setting(threading.frequency, "the frequency")
+            if frequency is not None and frequency <= 0:
+                self.d.report("E204", threading.frequency.span, f"the frequency must be positive, not {frequency:g} Hz")
+        hooks: dict[str, m.HookCall | None] = {}
+        interval: float | None = None
+        env = Env(dict(self.state_env), "in a hook argument", "state variables")
+        for event in ("startup", "terminate", "keepalive"):
+            hook = self.once([a for a in decl.attrs if isinstance(a, ast.Hook) and a.event == event], f"`{event}`", name)
+            hooks[event] = None
+            if not isinstance(hook, ast.Hook):
+                continue
+            target = self.s.interfaces.get(hook.call.target.text)
+            params = interface_params.get(hook.call.target.text)
+            args = self.call(hook.call, params, env, "interface", target.name if target else None)
+            hooks[event] = m.HookCall(m.InterfaceRef(hook.call.target.text), args, hook.span)
+            if hook.every is not None:
+                interval = self.duration(hook.every, "the keepalive interval")
+                if interval is not None and interval <= 0:
+                    self.d.report("E204", hook.every.span, "the keepalive interval must be positive")
+        keepalive = m.Keepalive(hooks["keepalive"], interval) if hooks["keepalive"] and interval else None
+        return m.Connection(
+            name.text, decl.kind.text, int(baud or 0), float(frequency or 0), hooks["startup"], hooks["terminate"],
+            keepalive, decl.doc, decl.span,
+        )
+
+    def duration(self, d: ast.Duration, what: str) -> float | None:
+        value = self.setting(d.value, what)
+        if value is None:
+            return None
+        return value * 1000 if d.unit == "s" else value
+
+    def primitive(self, decl: ast.PrimitiveDecl) -> m.Primitive:
+        name = decl.name
+        params = self.params(decl.params, "primitive")
+        on = self.once([c for c in decl.clauses if isinstance(c, ast.On)], "`on`", name)
+        if on is None:
+            self.d.report("E202", name.span, f"primitive `{name.text}` has no connection",
+                          help=f"add `on CONNECTION` after `{name.text}(...)`")
+        encodings = [c for c in decl.clauses if isinstance(c, ast.Encoding)]
+        decodings = [c for c in decl.clauses if isinstance(c, ast.Decoding)]
+        action_blocks = [c for c in decl.clauses if isinstance(c, ast.Actions)]
+        if not encodings:
+            self.d.report("E202", name.span, f"primitive `{name.text}` has neither `pack` nor `format`",
+                          help='say how the request is written: `pack ">Bhh" (...)` or `format "D,{},{}\\n" (...)`')
+        for extra in encodings[1:]:
+            self.d.report("E203", extra.span, f"primitive `{name.text}` has more than one of `pack`/`format`",
+                          labels=(Label(encodings[0].span, "first given here"),))
+        for extra in decodings[1:]:
+            self.d.report("E203", extra.span, f"primitive `{name.text}` has more than one of `unpack`/`regex`",
+                          labels=(Label(decodings[0].span, "first given here"),))
+        for extra in action_blocks[1:]:
+            self.d.report("E203", extra.span, f"primitive `{name.text}` has more than one post-action block",
+                          labels=(Label(action_blocks[0].span, "first given here"),))
+        scope = {p.name: (Scope.PARAM, p.type) for p in params if p.type is not None}
+        env = self.env_with(scope, "in a primitive", "its parameters and state variables",
+                            reply_note="`out`, the reply, is in scope only in post-actions")
+        encoding: m.Pack | m.Format | None = None
+        args: tuple[m.Expr, ...] = ()
+        if encodings:
+            encoding, args = self.encoding(encodings[0], env)
+        decoding: m.Unpack | m.Regex | None = None
+        reply: tuple[Type, ...] = ()
+        if decodings:
+            decoding, reply = self.decoding(decodings[0])
+        actions: tuple[m.PostAction, ...] = ()
+        if action_blocks:
+            note = None if decodings else f"primitive `{name.text}` reads no reply: add `unpack` or `regex`"
+            action_env = self.env_with(
+                scope, "in a post-action", "`out`, parameters and state variables",
+                reply=reply if decodings else None, reply_note=note,
+            )
+            actions = self.actions(action_blocks[0], action_env, {p.name for p in params})
+        connection = m.ConnectionRef(on.connection.text) if isinstance(on, ast.On) else m.ConnectionRef("")
+        return m.Primitive(name.text, params, connection, encoding, args, decoding, actions, decl.doc, decl.span)  # type: ignore[arg-type]
+
+    def template_span(self, lit: ast.StrLit, offset: int, length: int) -> Span:
+        """The span of characters inside a template, exact when the literal has no escapes."""
+        s = lit.span
+        prefix = s.end - s.start - len(lit.value) - 1  # 1 for `"`, 2 for `r"`
+        if prefix in (1, 2):
+            start = s.start + prefix + offset
+            return Span(s.path, start, min(start + max(length, 1), s.end - 1))
+        return s
+
+    def encoding(self, enc: ast.Encoding, env: Env) -> tuple[m.Pack | m.Format | None, tuple[m.Expr, ...]]:
+        args = tuple(self.typer.expr(a, env) for a in enc.args)
+        template = enc.template.value
+        try:
+            if enc.kind == "pack":
+                layout = formats.struct_layout(template)
+                slots: tuple = layout.slots
+                if layout.native:
+                    self.native_warning(enc.template)
+            else:
+                slots = formats.format_fields(template)
+        except formats.TemplateError as err:
+            code = "E301" if enc.kind == "pack" else "E303"
+            self.d.report(code, self.template_span(enc.template, err.offset, err.length), err.message)
+            return None, args
+        if len(slots) != len(args):
+            self.d.report(
+                "E302", enc.span,
+                f"`{enc.kind} \"{_short(template)}\"` takes {_count(len(slots), 'value')}, "
+                f"but {_count(len(args), 'argument')} given",
+            )
+            return None, args
+        for arg, expr, slot in zip(args, enc.args, slots):
+            if enc.kind == "pack":
+                self.pack_value(arg, expr, slot)
+            else:
+                self.format_value(arg, expr, slot)
+        return (m.Pack(template) if enc.kind == "pack" else m.Format(template)), args
+
+    def native_warning(self, lit: ast.StrLit) -> None:
+        self.d.report(
+            "W301", lit.span, f"struct format \"{_short(lit.value)}\" has no byte order",
+            label="host byte order and alignment", help=f"write \">{lit.value.lstrip('@')}\" (big-endian) or "
+            f"\"<{lit.value.lstrip('@')}\" (little-endian), as the device expects",
+        )
+
+    def pack_value(self, arg: m.Expr, expr: ast.Expr, slot: formats.Slot) -> None:
+        self.flow(arg, slot.type, expr.span, f"pack code `{slot.code}`")
+        value = self.typer.constant(arg)
+        if slot.low is not None and isinstance(value, int) and not isinstance(value, bool) and arg.type is Type.INT:
+            if not slot.low <= value <= slot.high:  # type: ignore[operator]
+                self.d.report(
+                    "E403", expr.span, f"{value} does not fit pack code `{slot.code}`",
+                    label=f"`{slot.code}` holds {slot.low} to {slot.high}",
+                )
+        if slot.code == "c" and isinstance(value, str) and len(value) != 1:
+            self.d.report("E403", expr.span, "pack code `c` takes a string of exactly one character")
+
+    def format_value(self, arg: m.Expr, expr: ast.Expr, field: formats.FormatField) -> None:
+        if arg.type is None or formats.spec_accepts(field.spec, arg.type):
+            return
+        if arg.type is Type.FLOAT and formats.spec_accepts(field.spec, Type.INT):
+            self.d.report(
+                "E402", expr.span, f"format field `{{:{field.spec}}}` takes an int, but this is a float",
+                help="convert it: `round(...)` to the nearest integer, `int(...)` towards zero",
+            )
+        else:
+            self.d.report("E401", expr.span, f"format field `{{:{field.spec}}}` cannot format {describe(arg.type)}")
+
+    def decoding(self, dec: ast.Decoding) -> tuple[m.Unpack | m.Regex | None, tuple[Type, ...]]:
+        template = dec.template.value
+        try:
+            if dec.kind == "unpack":
+                layout = formats.struct_layout(template)
+                if layout.native:
+                    self.native_warning(dec.template)
+                return m.Unpack(template), tuple(s.type for s in layout.slots)
+            groups = formats.regex_groups(template)
+            return m.Regex(template), (Type.STRING,) * groups
+        except formats.TemplateError as err:
+            code = "E301" if dec.kind == "unpack" else "E304"
+            self.d.report(code, self.template_span(dec.template, err.offset, err.length), err.message)
+            return None, ()
+
+    def actions(self, block: ast.Actions, env: Env, params: set[str]) -> tuple[m.PostAction, ...]:
+        out: list[m.PostAction] = []
+        written: dict[str, ast.Assign] = {}
+        for assign in block.assigns:
+            value = self.typer.expr(assign.value, env)
+            target = assign.target.text
+            state = self.s.states.get(target)
+            if state is None:
+                what = "a parameter" if target in params else "not a state variable"
+                self.d.report(
+                    "E207", assign.target.span, f"cannot assign `{target}`: {what}",
+                    help=suggest(target, self.s.states) or "post-actions write state variables only",
+                )
+                continue
+            if target in written:
+                self.d.report("E203", assign.target.span, f"state variable `{target}` is assigned twice",
+                              labels=(Label(written[target].target.span, "first assigned here"),))
+            written[target] = assign
+            self.flow(value, self.state_env.get(target, (None, None))[1], assign.value.span, f"state variable `{target}`")
+            out.append(m.PostAction(m.StateRef(target), value, assign.span))
+        return tuple(out)
+
+    def interface(self, decl: ast.InterfaceDecl, params: tuple[m.Parameter, ...], primitives) -> m.Interface:
+        name = decl.name
+        kind = self.once([c for c in decl.clauses if isinstance(c, ast.Kind)], "the kind (`periodic`/`adhoc`)", name)
+        periodic = isinstance(kind, ast.Kind) and kind.word == "periodic"
+        triggers = self.once([c for c in decl.clauses if isinstance(c, ast.Triggers)], "`triggers`", name)
+        if periodic and decl.params:
+            self.d.report(
+                "E205", decl.params[0].span.to(decl.params[-1].span),
+                f"periodic interface `{name.text}` cannot take parameters",
+                help="nobody passes arguments on a tick: read state variables instead, or make it `adhoc`",
+            )
+        scope = {p.name: (Scope.PARAM, p.type) for p in params if p.type is not None}
+        env = self.env_with(scope, "in an interface", "its parameters and state variables")
+        calls: list[m.PrimitiveCall] = []
+        for stmt in decl.body:
+            target = self.s.primitives.get(stmt.call.target.text)
+            prim = primitives.get(stmt.call.target.text)
+            args = self.call(stmt.call, prim.params if prim else None, env, "primitive",
+                             target.name if target else None)
+            delay_clause = self.once(list(stmt.delays), "`delay`", stmt.call.target)
+            delay = self.duration(delay_clause, "a delay") if isinstance(delay_clause, ast.Duration) else 0
+            if delay is not None and delay < 0:
+                self.d.report("E204", delay_clause.span, f"a delay must be zero or more, not {delay:g} ms")  # type: ignore[union-attr]
+            priority_expr = self.once(list(stmt.priorities), "`priority`", stmt.call.target)
+            priority = self.setting(priority_expr, "a priority") if priority_expr is not None else 0
+            if priority is not None and priority != int(priority):
+                self.d.report("E204", priority_expr.span, "a priority must be an integer")  # type: ignore[union-attr]
+            calls.append(m.PrimitiveCall(
+                m.PrimitiveRef(stmt.call.target.text), args, delay or 0, int(priority or 0), stmt.span
+            ))
+        if periodic:
+            self.periodic_connection(decl)
+        out_ref = m.OutputRef(triggers.output.text) if isinstance(triggers, ast.Triggers) else None
+        return m.Interface(name.text, params, periodic, tuple(calls), out_ref, decl.doc, decl.span)
+
+    def periodic_connection(self, decl: ast.InterfaceDecl) -> None:
+        used: dict[str, ast.Ident] = {}
+        for stmt in decl.body:
+            prim = self.s.primitives.get(stmt.call.target.text)
+            on = next((c for c in prim.clauses if isinstance(c, ast.On)), None) if prim else None
+            if on is not None:
+                used.setdefault(on.connection.text, stmt.call.target)
+        if len(used) > 1:
+            first, second = list(used.items())[:2]
+            self.d.report(
+                "E208", decl.name.span, f"periodic interface `{decl.name.text}` uses two connections",
+                labels=(Label(first[1].span, f"on `{first[0]}`"), Label(second[1].span, f"on `{second[0]}`")),
+                help="split it into one periodic interface per connection",
+            )
+        elif not used and len(self.s.connections) > 1 and not decl.body:
+            self.d.report("E208", decl.name.span,
+                          f"periodic interface `{decl.name.text}` calls no primitive, so its connection is unknown")
+
+    def input(self, decl: ast.InputDecl, adapters: dict[str, m.Adapter], interface_params) -> m.DomainInput:
+        adapter = adapters.get(decl.adapter.text)
+        scope = {f.name: (Scope.FIELD, f.type) for f in adapter.fields if f.type} if adapter else {}
+        sees = f"the fields of `{decl.adapter.text}` and state variables"
+        env = self.env_with(scope, "in an input", sees) if adapter else Env(
+            {n: (Scope.FIELD, Type.FLOAT) for n in ()}, "in an input", sees)
+        target = self.s.interfaces.get(decl.call.target.text)
+        if adapter is None:  # unknown adapter, already reported: do not report its fields as unknown
+            return m.DomainInput(decl.name.text, m.AdapterRef(decl.adapter.text), m.InterfaceRef(decl.call.target.text),
+                                 (), decl.doc, decl.span)
+        args = self.call(decl.call, interface_params.get(decl.call.target.text), env, "interface",
+                         target.name if target else None)
+        return m.DomainInput(decl.name.text, m.AdapterRef(adapter.name), m.InterfaceRef(decl.call.target.text),
+                             args, decl.doc, decl.span)
+
+    def output(self, decl: ast.OutputDecl, adapters: dict[str, m.Adapter]) -> m.DomainOutput:
+        adapter = adapters.get(decl.adapter.text)
+        env = Env(dict(self.state_env), "in an output", "state variables")
+        values: dict[str, m.Expr] = {}
+        first: dict[str, ast.Assign] = {}
+        for assign in decl.fields:
+            value = self.typer.expr(assign.value, env)
+            if adapter is None:
+                continue
+            field = adapter.field(assign.target.text)
+            if field is None:
+                self.d.report(
+                    "E206", assign.target.span,
+                    f"adapter `{adapter.name}` has no field `{assign.target.text}`",
+                    help=suggest(assign.target.text, [f.name for f in adapter.fields]) or
+                    "its fields are " + ", ".join(f"`{f.name}`" for f in adapter.fields),
+                )
+                continue
+            if field.name in first:
+                self.d.report("E206", assign.target.span, f"field `{field.name}` is defined twice",
+                              labels=(Label(first[field.name].target.span, "first defined here"),))
+                continue
+            first[field.name] = assign
+            self.flow(value, field.type, assign.value.span, f"field `{field.name}` of `{adapter.name}`")
+            values[field.name] = value
+        if adapter is None:
+            return m.DomainOutput(decl.name.text, m.AdapterRef(decl.adapter.text), (), decl.doc, decl.span)
+        missing = [f.name for f in adapter.fields if f.name not in values and f.name not in first]
+        if missing:
+            self.d.report(
+                "E206", decl.name.span,
+                f"output `{decl.name.text}` does not define {', '.join(f'`{n}`' for n in missing)} "
+                f"of adapter `{adapter.name}`",
+                help="an output defines every field of its adapter",
+            )
+        fields = tuple((f.name, values[f.name]) for f in adapter.fields if f.name in values)
+        return m.DomainOutput(decl.name.text, m.AdapterRef(adapter.name), fields, decl.doc, decl.span)
+
+    # -- what is declared and never used ----------------------------------------------------
+
+    def unused(self, interfaces: dict[str, m.Interface], connections: dict[str, m.Connection], inputs) -> None:
+        called = {c.primitive for i in interfaces.values() for c in i.calls}
+        triggered = {i.triggers for i in interfaces.values() if i.triggers}
+        used = {i.interface for i in inputs.values()}
+        for c in connections.values():
+            for hook in (c.startup, c.terminate, c.keepalive.call if c.keepalive else None):
+                if hook is not None:
+                    used.add(hook.interface)
+        for name, decl in self.s.primitives.items():
+            if name not in called and id(decl) in self.main_decls:
+                self.d.report("W101", decl.name.span, f"primitive `{name}` is never called",
+                              help="call it from an interface, or remove it")
+        for name, decl in self.s.outputs.items():
+            if name not in triggered and id(decl) in self.main_decls:
+                self.d.report("W102", decl.name.span, f"output `{name}` is never triggered",
+                              help=f"add `triggers {name}` to the interface that reads its state")
+        for name, decl in self.s.states.items():
+            if name not in self.typer.reads and id(decl) in self.main_decls:
+                self.d.report("W103", decl.name.span, f"state variable `{name}` is never read")
+        for name, decl in self.s.interfaces.items():
+            periodic = any(isinstance(c, ast.Kind) and c.word == "periodic" for c in decl.clauses)
+            if name not in used and not periodic and id(decl) in self.main_decls:
+                self.d.report("W104", decl.name.span, f"interface `{name}` is never called",
+                              help="call it from an input or a connection hook, or make it `periodic`")
+
+
+def _count(n: int, noun: str) -> str:
+    return f"{n} {noun}" if n == 1 else f"{n} {noun}s"
+
+
+def _short(text: str) -> str:
+    shown = text.encode("unicode_escape").decode("ascii")
+    return shown if len(shown) <= 24 else shown[:21] + "..."

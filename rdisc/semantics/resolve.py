@@ -1,0 +1,160 @@
+"""Names: pass 1 declares every element of every file, pass 2 binds every reference.
+
+Cycles between elements are fine because every element is declared before any
+reference is bound. The result is a symbol table per kind; a reference that does
+not resolve is reported here once, and later passes skip it silently.
+"""
+
+from __future__ import annotations
+
+import difflib
+from dataclasses import dataclass, field
+
+from rdisc.diagnostics import Diagnostics, Label
+from rdisc.semantics.operators import FUNCTIONS
+from rdisc.syntax import ast
+
+# Words that would be read as keywords where a name can stand. Other keywords of
+# the language only occur in places no name can, so they stay usable as names
+# (the thesis's Create has interfaces named `startup` and `drive`).
+KEYWORDS = frozenset("if else and or not True False out delay priority".split())
+
+
+@dataclass(frozen=True, slots=True)
+class Unit:
+    """One parsed file and its role in the description."""
+
+    module: ast.Module
+    main: bool = False
+    standard: bool = False  # stdlib/adapters.rdis
+
+
+@dataclass(slots=True)
+class Symbols:
+    """Every declared element by kind and name (the first declaration wins)."""
+
+    robot: ast.RobotDecl | None = None
+    states: dict[str, ast.StateDecl] = field(default_factory=dict)
+    connections: dict[str, ast.ConnectionDecl] = field(default_factory=dict)
+    primitives: dict[str, ast.PrimitiveDecl] = field(default_factory=dict)
+    interfaces: dict[str, ast.InterfaceDecl] = field(default_factory=dict)
+    adapters: dict[str, ast.AdapterDecl] = field(default_factory=dict)
+    inputs: dict[str, ast.InputDecl] = field(default_factory=dict)
+    outputs: dict[str, ast.OutputDecl] = field(default_factory=dict)
+    standard: set[int] = field(default_factory=set)  # id() of declarations from the stdlib
+
+
+_KINDS = {
+    ast.StateDecl: ("states", "state variable"),
+    ast.ConnectionDecl: ("connections", "connection"),
+    ast.PrimitiveDecl: ("primitives", "primitive"),
+    ast.InterfaceDecl: ("interfaces", "interface"),
+    ast.AdapterDecl: ("adapters", "adapter"),
+    ast.InputDecl: ("inputs", "input"),
+    ast.OutputDecl: ("outputs", "output"),
+}
+
+
+def resolve(units: list[Unit], diagnostics: Diagnostics) -> Symbols:
+    symbols = Symbols()
+    for unit in units:
+        _declare(unit, symbols, diagnostics)
+    main = next((u for u in units if u.main), None)
+    if symbols.robot is None and main is not None:
+        diagnostics.report(
+            "E107",
+            None if not main.module.decls else main.module.decls[0].span,
+            f"{main.module.path} has no `robot` declaration",
+            help="start the description with `robot NAME { author \"...\" }`",
+        )
+    for unit in units:
+        for decl in unit.module.decls:
+            _bind(decl, symbols, diagnostics)
+    return symbols
+
+
+def check_name(name: ast.Ident, what: str, diagnostics: Diagnostics) -> None:
+    """Report a keyword or built-in function used as a name."""
+    if name.text in KEYWORDS:
+        diagnostics.report("E104", name.span, f"`{name.text}` is a keyword and cannot name a {what}")
+    elif name.text in FUNCTIONS:
+        diagnostics.report("E104", name.span, f"`{name.text}` is a built-in function and cannot name a {what}")
+
+
+def suggest(name: str, candidates) -> str | None:
+    """A 'did you mean' help line when a declared name is close."""
+    close = difflib.get_close_matches(name, list(candidates), n=1, cutoff=0.6)
+    return f"did you mean `{close[0]}`?" if close else None
+
+
+def _declare(unit: Unit, symbols: Symbols, diagnostics: Diagnostics) -> None:
+    for decl in unit.module.decls:
+        if isinstance(decl, ast.ImportDecl):
+            continue
+        if isinstance(decl, ast.RobotDecl):
+            if not unit.main:
+                diagnostics.report(
+                    "E107", decl.name.span, "a `robot` declaration belongs in the main description, not an imported file"
+                )
+            elif symbols.robot is not None:
+                diagnostics.report(
+                    "E107",
+                    decl.name.span,
+                    "a description has one `robot` declaration",
+                    labels=(Label(symbols.robot.name.span, "the first one is here"),),
+                )
+            else:
+                check_name(decl.name, "robot", diagnostics)
+                symbols.robot = decl
+            continue
+        table_name, what = _KINDS[type(decl)]
+        table = getattr(symbols, table_name)
+        check_name(decl.name, what, diagnostics)
+        first = table.get(decl.name.text)
+        if first is not None:
+            diagnostics.report(
+                "E101",
+                decl.name.span,
+                f"{what} `{decl.name.text}` is declared twice",
+                label=f"second {what} named `{decl.name.text}`",
+                labels=(Label(first.name.span, "first declared here"),),
+            )
+            continue
+        table[decl.name.text] = decl
+        if unit.standard:
+            symbols.standard.add(id(decl))
+
+
+def _bind(decl: ast.Decl, symbols: Symbols, diagnostics: Diagnostics) -> None:
+    def need(ident: ast.Ident, table: dict, what: str) -> None:
+        if ident.text not in table:
+            diagnostics.report(
+                "E102",
+                ident.span,
+                f"unknown {what} `{ident.text}`",
+                label=f"no {what} of this name",
+                help=suggest(ident.text, table),
+            )
+
+    match decl:
+        case ast.ConnectionDecl():
+            for attr in decl.attrs:
+                if isinstance(attr, ast.Hook):
+                    need(attr.call.target, symbols.interfaces, "interface")
+        case ast.PrimitiveDecl():
+            for clause in decl.clauses:
+                if isinstance(clause, ast.On):
+                    need(clause.connection, symbols.connections, "connection")
+        case ast.InterfaceDecl():
+            for clause in decl.clauses:
+                if isinstance(clause, ast.Triggers):
+                    need(clause.output, symbols.outputs, "output")
+            for stmt in decl.body:
+                need(stmt.call.target, symbols.primitives, "primitive")
+        case ast.InputDecl():
+            need(decl.adapter, symbols.adapters, "adapter")
+            need(decl.call.target, symbols.interfaces, "interface")
+        case ast.OutputDecl():
+            need(decl.adapter, symbols.adapters, "adapter")
+        case _:
+            pass

@@ -1,0 +1,325 @@
+"""Typing of expressions: AST expression + scope → typed IR (rdisc.semantics.model).
+
+A node whose type cannot be known (its error is already reported) gets the type
+None, and every rule accepts None silently: one fault, one diagnostic.
+Constant subexpressions are evaluated as they are typed, so a resource bomb
+(`2 ** 10 ** 9`) is rejected when the description is loaded, not when it runs.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Optional
+
+from rdisc.diagnostics import Diagnostics
+from rdisc.semantics import model as m
+from rdisc.semantics.model import Scope, Type
+from rdisc.semantics.operators import BINARY, FUNCTIONS, UNARY, EvalError
+from rdisc.semantics.resolve import suggest
+from rdisc.syntax import ast
+
+T = Optional[Type]  # None: unknown, already reported
+NUMERIC = (Type.INT, Type.FLOAT)
+_NOT_CONSTANT = object()
+
+_ARITHMETIC = {"+", "-", "*", "/", "//", "%", "**"}
+_BITWISE = {"&", "|", "^", "<<", ">>"}
+_ORDER = {"<", "<=", ">", ">="}
+_EQUALITY = {"==", "!="}
+_LOGIC = {"and", "or"}
+
+# Built-in functions: (min args, max args).
+ARITY = {
+    "abs": (1, 1),
+    "min": (2, 8),
+    "max": (2, 8),
+    "round": (1, 2),
+    "int": (1, 1),
+    "float": (1, 1),
+    "bool": (1, 1),
+    "str": (1, 1),
+    "clamp": (3, 3),
+    "sqrt": (1, 1),
+    "sin": (1, 1),
+    "cos": (1, 1),
+    "atan2": (2, 2),
+    "hypot": (2, 2),
+}
+
+
+@dataclass(frozen=True, slots=True)
+class Env:
+    """What an expression may read, and how to explain what it may not."""
+
+    names: dict[str, tuple[Scope, Type]]
+    where: str  # "in a hook argument", ...
+    sees: str  # "state variables", ...
+    reply: tuple[Type, ...] | None = None  # types of out[i], in post-actions
+    reply_note: str | None = None  # why `out` is not available, when it is not
+
+
+def unify(a: T, b: T) -> T:
+    """The type of a value that is either a or b; int widens to float."""
+    if a is None or b is None:
+        return None
+    if a == b:
+        return a
+    if {a, b} == {Type.INT, Type.FLOAT}:
+        return Type.FLOAT
+    return None
+
+
+def describe(t: Type) -> str:
+    return {Type.INT: "an int", Type.FLOAT: "a float", Type.BOOL: "a bool", Type.STRING: "a string"}[t]
+
+
+class Typer:
+    """Types expressions and folds their constant parts."""
+
+    def __init__(self, diagnostics: Diagnostics) -> None:
+        self.diagnostics = diagnostics
+        self._constants: dict[int, object] = {}
+        self.reads: set[str] = set()  # state variables read by any expression
+
+    def constant(self, expr: m.Expr) -> object:
+        """The value of a constant expression, or None when it is not constant."""
+        value = self._constants.get(id(expr), _NOT_CONSTANT)
+        return None if value is _NOT_CONSTANT else value
+
+    def is_constant(self, expr: m.Expr) -> bool:
+        return self._constants.get(id(expr), _NOT_CONSTANT) is not _NOT_CONSTANT
+
+    # -- the rules ------------------------------------------------------------
+
+    def expr(self, e: ast.Expr, env: Env) -> m.Expr:
+        """The typed IR of `e`; problems are reported, never raised."""
+        match e:
+            case ast.BoolLit():
+                return self._const(m.Const(e.value, Type.BOOL, e.span))
+            case ast.IntLit():
+                return self._const(m.Const(e.value, Type.INT, e.span))
+            case ast.FloatLit():
+                return self._const(m.Const(e.value, Type.FLOAT, e.span))
+            case ast.StrLit():
+                return self._const(m.Const(e.value, Type.STRING, e.span))
+            case ast.Ref():
+                return self._ref(e, env)
+            case ast.Index():
+                return self._index(e, env)
+            case ast.Unary():
+                return self._unary(e, env)
+            case ast.BinOp():
+                return self._binary(e, env)
+            case ast.Conditional():
+                return self._conditional(e, env)
+            case ast.CallExpr():
+                return self._call(e, env)
+        raise AssertionError(f"unknown expression node {e!r}")
+
+    def _const(self, node: m.Const) -> m.Expr:
+        self._constants[id(node)] = node.value
+        return node
+
+    def _ref(self, e: ast.Ref, env: Env) -> m.Expr:
+        if e.name == "out":
+            if env.reply is None:
+                self.diagnostics.report(
+                    "E103", e.span, f"`out` is not in scope {env.where}", help=env.reply_note or
+                    "`out`, the reply, is in scope only in a primitive's post-actions"
+                )
+            else:
+                self.diagnostics.report("E305", e.span, "the reply `out` must be indexed: `out[0]`")
+            return m.Var(e.name, Scope.STATE, None, e.span)  # type: ignore[arg-type]
+        found = env.names.get(e.name)
+        if found is None:
+            self.diagnostics.report(
+                "E103",
+                e.span,
+                f"unknown name `{e.name}` {env.where}",
+                label=f"{env.where} only {env.sees} are in scope" if env.sees else "nothing is in scope here",
+                help=suggest(e.name, env.names),
+            )
+            return m.Var(e.name, Scope.STATE, None, e.span)  # type: ignore[arg-type]
+        scope, type_ = found
+        if scope is Scope.STATE:
+            self.reads.add(e.name)
+        return m.Var(e.name, scope, type_, e.span)
+
+    def _index(self, e: ast.Index, env: Env) -> m.Expr:
+        if e.base.name != "out":
+            self.diagnostics.report("E404", e.span, f"`{e.base.name}` cannot be indexed", help="only the reply `out` can be indexed")
+            return m.ReplyValue(0, None, e.span)  # type: ignore[arg-type]
+        index = self.expr(e.index, env)
+        if env.reply is None:
+            self.diagnostics.report(
+                "E103", e.base.span, f"`out` is not in scope {env.where}",
+                help=env.reply_note or "`out`, the reply, is in scope only in a primitive's post-actions",
+            )
+            return m.ReplyValue(0, None, e.span)  # type: ignore[arg-type]
+        value = self.constant(index)
+        if index.type is not None and (index.type is not Type.INT or value is None):
+            self.diagnostics.report("E305", e.index.span, "the index of `out` must be a constant integer")
+            return m.ReplyValue(0, None, e.span)  # type: ignore[arg-type]
+        if value is None:
+            return m.ReplyValue(0, None, e.span)  # type: ignore[arg-type]
+        assert isinstance(value, int)
+        if not 0 <= value < len(env.reply):
+            count = len(env.reply)
+            self.diagnostics.report(
+                "E305",
+                e.span,
+                f"`out[{value}]` is outside the reply, which has {count} value{'s' if count != 1 else ''}",
+                help=f"valid indexes are 0 to {count - 1}" if count else "this reply has no values",
+            )
+            return m.ReplyValue(value, None, e.span)  # type: ignore[arg-type]
+        return m.ReplyValue(value, env.reply[value], e.span)
+
+    def _unary(self, e: ast.Unary, env: Env) -> m.Expr:
+        operand = self.expr(e.operand, env)
+        t = operand.type
+        result: T
+        if t is None:
+            result = None
+        elif e.op == "not":
+            result = Type.BOOL if t is Type.BOOL else self._bad_operand(e, t, "`not` needs a bool")
+        elif e.op == "~":
+            result = Type.INT if t is Type.INT else self._bad_operand(e, t, "`~` needs an int")
+        else:
+            result = t if t in NUMERIC else self._bad_operand(e, t, f"unary `{e.op}` needs a number")
+        node = m.UnaryOp(e.op, operand, result, e.span)  # type: ignore[arg-type]
+        return self._fold(node, (operand,), lambda a: UNARY[e.op](a))
+
+    def _bad_operand(self, e: ast.Expr, t: Type, need: str) -> None:
+        self.diagnostics.report("E404", e.span, f"{need}, not {describe(t)}")
+        return None
+
+    def _binary(self, e: ast.BinOp, env: Env) -> m.Expr:
+        left = self.expr(e.left, env)
+        right = self.expr(e.right, env)
+        a, b = left.type, right.type
+        result: T = None
+        op = e.op
+        if a is not None and b is not None:
+            if op in _LOGIC:
+                ok = a is Type.BOOL and b is Type.BOOL
+                result = Type.BOOL if ok else None
+                need = f"`{op}` needs two bools"
+            elif op in _EQUALITY:
+                ok = unify(a, b) is not None
+                result = Type.BOOL if ok else None
+                need = f"`{op}` compares values of the same type"
+            elif op in _ORDER:
+                ok = (a in NUMERIC and b in NUMERIC) or a == b == Type.STRING
+                result = Type.BOOL if ok else None
+                need = f"`{op}` compares two numbers or two strings"
+            elif op in _BITWISE:
+                ok = a is Type.INT and b is Type.INT
+                result = Type.INT if ok else None
+                need = f"`{op}` needs two ints"
+            elif op == "+" and a == b == Type.STRING:
+                ok, result, need = True, Type.STRING, ""
+            else:  # arithmetic
+                ok = a in NUMERIC and b in NUMERIC
+                result = (Type.FLOAT if op == "/" else unify(a, b)) if ok else None
+                need = f"`{op}` needs two numbers"
+            if not ok:
+                self.diagnostics.report(
+                    "E404", e.span, f"{need}, not {describe(a)} and {describe(b)}", label="these operands"
+                )
+        node = m.BinaryOp(op, left, right, result, e.span)  # type: ignore[arg-type]
+        if op in _LOGIC:
+            return self._fold(node, (left, right), lambda x, y: (x and y) if op == "and" else (x or y))
+        return self._fold(node, (left, right), BINARY[op])
+
+    def _conditional(self, e: ast.Conditional, env: Env) -> m.Expr:
+        cond = self.expr(e.cond, env)
+        then = self.expr(e.then, env)
+        orelse = self.expr(e.orelse, env)
+        if cond.type is not None and cond.type is not Type.BOOL:
+            self.diagnostics.report("E404", e.cond.span, f"the condition must be a bool, not {describe(cond.type)}")
+        result = unify(then.type, orelse.type)
+        if result is None and then.type is not None and orelse.type is not None:
+            self.diagnostics.report(
+                "E401",
+                e.span,
+                f"the two branches have different types: {describe(then.type)} and {describe(orelse.type)}",
+            )
+        node = m.IfElse(cond, then, orelse, result, e.span)  # type: ignore[arg-type]
+        if self.is_constant(cond):
+            chosen = then if self.constant(cond) else orelse
+            if self.is_constant(chosen):
+                self._constants[id(node)] = self.constant(chosen)
+        return node
+
+    def _call(self, e: ast.CallExpr, env: Env) -> m.Expr:
+        args = tuple(self.expr(a, env) for a in e.args)
+        name = e.func.text
+        if name not in FUNCTIONS:
+            self.diagnostics.report(
+                "E106",
+                e.func.span,
+                f"unknown function `{name}`",
+                label="not a built-in function",
+                help=suggest(name, FUNCTIONS) or "functions: " + ", ".join(sorted(FUNCTIONS)),
+            )
+            return m.FuncCall(name, args, None, e.span)  # type: ignore[arg-type]
+        low, high = ARITY[name]
+        if not low <= len(args) <= high:
+            count = str(low) if low == high else f"{low} to {high}"
+            self.diagnostics.report(
+                "E201", e.span, f"`{name}` takes {count} argument{'s' if high != 1 else ''}, but {len(args)} given"
+            )
+            return m.FuncCall(name, args, None, e.span)  # type: ignore[arg-type]
+        result = self._function_type(name, e, args)
+        node = m.FuncCall(name, args, result, e.span)  # type: ignore[arg-type]
+        return self._fold(node, args, FUNCTIONS[name])
+
+    def _function_type(self, name: str, e: ast.CallExpr, args: tuple[m.Expr, ...]) -> T:
+        types = [a.type for a in args]
+        if any(t is None for t in types):
+            return None
+
+        def need(what: str, accepted) -> bool:
+            for arg, t in zip(e.args, types):
+                if t not in accepted:
+                    self.diagnostics.report("E404", arg.span, f"`{name}` needs {what}, not {describe(t)}")  # type: ignore[arg-type]
+                    return False
+            return True
+
+        match name:
+            case "abs":
+                return types[0] if need("a number", NUMERIC) else None
+            case "min" | "max" | "clamp":
+                if not need("numbers", NUMERIC):
+                    return None
+                return Type.FLOAT if Type.FLOAT in types else Type.INT
+            case "round":
+                if not need("numbers", NUMERIC):
+                    return None
+                if len(types) == 2 and types[1] is not Type.INT:
+                    self.diagnostics.report("E404", e.args[1].span, "the digits of `round` must be an int")
+                    return None
+                return Type.INT if len(types) == 1 else Type.FLOAT
+            case "int" | "float":
+                return Type.INT if name == "int" else Type.FLOAT
+            case "bool":
+                return Type.BOOL if need("a number or bool", (Type.INT, Type.FLOAT, Type.BOOL)) else None
+            case "str":
+                return Type.STRING
+            case _:  # sqrt sin cos atan2 hypot
+                return Type.FLOAT if need("numbers", NUMERIC) else None
+
+    def _fold(self, node: m.Expr, operands: tuple[m.Expr, ...], compute) -> m.Expr:
+        """Evaluate a node whose operands are all constant; report what cannot be."""
+        if node.type is None or not all(self.is_constant(o) for o in operands):
+            return node
+        try:
+            value = compute(*(self.constant(o) for o in operands))
+        except EvalError as err:
+            self.diagnostics.report("E405", node.span, str(err))
+            return node
+        except (ArithmeticError, ValueError, TypeError) as err:
+            self.diagnostics.report("E405", node.span, f"cannot evaluate: {err}")
+            return node
+        self._constants[id(node)] = value
+        return node
