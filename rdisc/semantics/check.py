@@ -49,6 +49,7 @@ class _Checker:
         self.typer = Typer(diagnostics)
         self.main_decls = {id(decl) for unit in units if unit.main for decl in unit.module.decls}
         self.state_env: dict[str, tuple[Scope, Type]] = {}
+        self.hooked: set[str] = set()  # interfaces called by a hook, valid or not
 
     # -- the whole description ----------------------------------------------------------
 
@@ -65,7 +66,7 @@ class _Checker:
         inputs = {name: self.input(decl, adapters, interface_params) for name, decl in self.s.inputs.items()}
         outputs = {name: self.output(decl, adapters) for name, decl in self.s.outputs.items()}
         robot = self.robot()
-        self.unused(interfaces, connections, inputs)
+        self.unused(interfaces, inputs)
         if self.d.has_errors() or robot is None:
             return None
         return m.Model(
@@ -238,6 +239,7 @@ class _Checker:
             hooks[event] = None
             if not isinstance(hook, ast.Hook):
                 continue
+            self.hooked.add(hook.call.target.text)
             target = self.s.interfaces.get(hook.call.target.text)
             params = interface_params.get(hook.call.target.text)
             args = self.call(hook.call, params, env, "interface", target.name if target else None)
@@ -515,14 +517,10 @@ class _Checker:
 
     # -- what is declared and never used ----------------------------------------------------
 
-    def unused(self, interfaces: dict[str, m.Interface], connections: dict[str, m.Connection], inputs) -> None:
+    def unused(self, interfaces: dict[str, m.Interface], inputs: dict[str, m.DomainInput]) -> None:
         called = {c.primitive for i in interfaces.values() for c in i.calls}
         triggered = {i.triggers for i in interfaces.values() if i.triggers}
-        used = {i.interface for i in inputs.values()}
-        for c in connections.values():
-            for hook in (c.startup, c.terminate, c.keepalive.call if c.keepalive else None):
-                if hook is not None:
-                    used.add(hook.interface)
+        used = {i.interface for i in inputs.values()} | self.hooked
         for name, decl in self.s.primitives.items():
             if name not in called and id(decl) in self.main_decls:
                 self.d.report("W101", decl.name.span, f"primitive `{name}` is never called",

@@ -49,6 +49,7 @@ def parser():  # -> lark.Lark, imported lazily: start-up time matters for `rdisc
         str(grammar_path()),
         parser="lalr",
         lexer="contextual",
+        start=["start", "expr_start"],
         propagate_positions=True,
         maybe_placeholders=True,
         cache=True,
@@ -73,7 +74,7 @@ def parse(path: str, text: str, diagnostics: Diagnostics) -> ast.Module:
     for i, (start, end) in enumerate(bounds):
         chunk = text[start:end]
         try:
-            tree = parser().parse(chunk)
+            tree = parser().parse(chunk, start="start")
         except lark.exceptions.UnexpectedInput as err:
             errors += 1
             if errors <= MAX_SYNTAX_ERRORS:
@@ -91,6 +92,33 @@ def parse(path: str, text: str, diagnostics: Diagnostics) -> ast.Module:
             continue
         decls.extend(builder.build(tree, start))
     return ast.Module(path, tuple(decls))
+
+
+def parse_expression(path: str, text: str, base_offset: int, diagnostics: Diagnostics) -> ast.Expr | None:
+    """Parse one expression embedded in another format (a JSON string); spans are
+    offsets into `path` counted from `base_offset`. None after a reported error."""
+    import lark
+
+    try:
+        tree = parser().parse(text, start="expr_start")
+    except lark.exceptions.UnexpectedInput as err:
+        if isinstance(err, lark.exceptions.UnexpectedToken) and err.interactive_parser is not None:
+            err.expected = err.interactive_parser.accepts()  # exact: LALR lookaheads are merged
+        code, offset, length, message, label = describe_unexpected(err, text, True)
+        at = base_offset + offset
+        message = message.replace("the end of the file", "the end of the expression")
+        diagnostics.report(code, Span(path, at, at + length), message, label=label)
+        return None
+    depth, deepest = _depth(tree)
+    if depth > MAX_TREE_DEPTH:
+        meta = deepest.meta
+        diagnostics.report(
+            "E005",
+            Span(path, base_offset + meta.start_pos, base_offset + meta.end_pos),
+            f"expression is nested too deeply (the limit is {MAX_TREE_DEPTH} levels)",
+        )
+        return None
+    return Builder(path, {}, diagnostics).build(tree, base_offset)
 
 
 def _chunks(text: str) -> list[tuple[int, int]]:
