@@ -98,7 +98,8 @@ def _add_unit(main: ast.Module, is_main: bool, diagnostics: Diagnostics, sources
     from rdisc.resources import stdlib_path
 
     stdlib = str(stdlib_path())
-    text = read_text(stdlib, diagnostics)
+    is_stdlib = Path(main.path).resolve() == Path(stdlib).resolve()
+    text = None if is_stdlib else read_text(stdlib, diagnostics)
     if text is not None:
         sources.add(stdlib, text)
         units.append(Unit(parse(stdlib, text, diagnostics), standard=True))
