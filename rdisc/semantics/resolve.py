@@ -12,6 +12,7 @@ from dataclasses import dataclass, field
 
 from rdisc.diagnostics import Diagnostics, Label
 from rdisc.semantics.operators import FUNCTIONS
+from rdisc.source import Span
 from rdisc.syntax import ast
 
 # Words that would be read as keywords where a name can stand. Other keywords of
@@ -61,9 +62,10 @@ def resolve(units: list[Unit], diagnostics: Diagnostics) -> Symbols:
         _declare(unit, symbols, diagnostics)
     main = next((u for u in units if u.main), None)
     if symbols.robot is None and main is not None:
+        first = main.module.decls[0].span.start if main.module.decls else 0
         diagnostics.report(
             "E107",
-            None if not main.module.decls else main.module.decls[0].span,
+            Span(main.module.path, first, first),
             f"{main.module.path} has no `robot` declaration",
             help="start the description with `robot NAME { author \"...\" }`",
         )
