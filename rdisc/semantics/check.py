@@ -56,7 +56,10 @@ class _Checker:
     def run(self) -> m.Model | None:
         adapters = {name: self.adapter(decl) for name, decl in self.s.adapters.items()}
         states = {name: self.state(decl) for name, decl in self.s.states.items()}
-        self.state_env = {n: (Scope.STATE, s.type) for n, s in states.items() if s.type is not None}
+        self.state_env = {n: (Scope.STATE, s.type) for n, s in states.items()}
+        for keyword, name in self.s.damaged:  # lost to a syntax error: readable, of unknown type
+            if keyword == "state":
+                self.state_env.setdefault(name, (Scope.STATE, None))  # type: ignore[arg-type]
         interface_params = {name: self.params(decl.params, "interface") for name, decl in self.s.interfaces.items()}
         primitives = {name: self.primitive(decl) for name, decl in self.s.primitives.items()}
         connections = {name: self.connection(decl, interface_params) for name, decl in self.s.connections.items()}

@@ -43,6 +43,10 @@ class Symbols:
     inputs: dict[str, ast.InputDecl] = field(default_factory=dict)
     outputs: dict[str, ast.OutputDecl] = field(default_factory=dict)
     standard: set[int] = field(default_factory=set)  # id() of declarations from the stdlib
+    damaged: set[tuple[str, str]] = field(default_factory=set)  # (keyword, name) lost to syntax errors
+
+    def is_damaged(self, keyword: str, name: str) -> bool:
+        return (keyword, name) in self.damaged
 
 
 _KINDS = {
@@ -90,6 +94,7 @@ def suggest(name: str, candidates) -> str | None:
 
 
 def _declare(unit: Unit, symbols: Symbols, diagnostics: Diagnostics) -> None:
+    symbols.damaged |= {(d.keyword, d.name.text) for d in unit.module.damaged}
     for decl in unit.module.decls:
         if isinstance(decl, ast.ImportDecl):
             continue
@@ -129,7 +134,7 @@ def _declare(unit: Unit, symbols: Symbols, diagnostics: Diagnostics) -> None:
 
 def _bind(decl: ast.Decl, symbols: Symbols, diagnostics: Diagnostics) -> None:
     def need(ident: ast.Ident, table: dict, what: str) -> None:
-        if ident.text not in table:
+        if ident.text not in table and not symbols.is_damaged(what, ident.text):
             diagnostics.report(
                 "E102",
                 ident.span,

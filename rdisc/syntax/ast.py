@@ -12,7 +12,7 @@ from typing import Union
 
 from rdisc.source import Span
 
-_span = field(compare=False, repr=False)
+_span: Span = field(compare=False, repr=False, default=None)  # type: ignore[assignment]
 
 
 @dataclass(frozen=True, slots=True)
@@ -331,8 +331,18 @@ Decl = Union[
 
 
 @dataclass(frozen=True, slots=True)
+class Damaged:
+    """A declaration lost to a syntax error: its keyword and name, when they could
+    be read, so that references to it are not reported again as unknown."""
+
+    keyword: str
+    name: Ident
+
+
+@dataclass(frozen=True, slots=True)
 class Module:
     """One parsed file."""
 
     path: str
     decls: tuple[Decl, ...]
+    damaged: tuple[Damaged, ...] = ()

@@ -45,12 +45,12 @@ def expected_words(expected: set[str]) -> str:
     """'a name, `,` or a closing `)`' for a set of terminal names."""
     phrases: list[str] = []
     names = set(expected)
-    if names & _OPERATORS:
-        phrases.append("an operator")
-        names -= _OPERATORS
     if "NAME" in names and names & _EXPRESSION_START:
         phrases.append("an expression")
         names -= _EXPRESSION_START | {"NAME", "LPAR", "ADD_OP"}
+    if names & _OPERATORS:
+        phrases.append("an operator")
+        names -= _OPERATORS
     for name in sorted(names):
         word = _phrase(name)
         if word and word not in phrases:

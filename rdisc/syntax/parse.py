@@ -37,6 +37,7 @@ _DECL_START = re.compile(r"^(?:%s)\b" % "|".join(DECL_KEYWORDS), re.MULTILINE)
 _DOC_RUN = re.compile(r"(?:^[ \t]*///[^\n]*\n?)+", re.MULTILINE)
 _DOC_LINE = re.compile(r"^[ \t]*/// ?([^\n]*)$", re.MULTILINE)
 _BLANK_OR_COMMENT = re.compile(r"(?:\s+|#[^\n]*)*")
+_DECL_NAME = re.compile(r"(%s)\s+([A-Za-z][A-Za-z0-9_]*)" % "|".join(DECL_KEYWORDS))
 
 
 @lru_cache(maxsize=1)
@@ -69,6 +70,7 @@ def parse(path: str, text: str, diagnostics: Diagnostics) -> ast.Module:
 
     builder = Builder(path, _doc_comments(text), diagnostics)
     decls: list[ast.Decl] = []
+    damaged: list[ast.Damaged] = []
     errors = 0
     bounds = _chunks(text)
     for i, (start, end) in enumerate(bounds):
@@ -76,6 +78,7 @@ def parse(path: str, text: str, diagnostics: Diagnostics) -> ast.Module:
         try:
             tree = parser().parse(chunk, start="start")
         except lark.exceptions.UnexpectedInput as err:
+            damaged.extend(_damaged(path, chunk, start))
             errors += 1
             if errors <= MAX_SYNTAX_ERRORS:
                 last = i == len(bounds) - 1
@@ -89,9 +92,17 @@ def parse(path: str, text: str, diagnostics: Diagnostics) -> ast.Module:
                 Span(path, start + meta.start_pos, start + meta.end_pos),
                 f"expression is nested too deeply (the limit is {MAX_TREE_DEPTH} levels)",
             )
+            damaged.extend(_damaged(path, chunk, start))
             continue
         decls.extend(builder.build(tree, start))
-    return ast.Module(path, tuple(decls))
+    return ast.Module(path, tuple(decls), tuple(damaged))
+
+
+def _damaged(path: str, chunk: str, start: int) -> list[ast.Damaged]:
+    m = _DECL_NAME.match(chunk)
+    if not m:
+        return []
+    return [ast.Damaged(m.group(1), ast.Ident(m.group(2), Span(path, start + m.start(2), start + m.end(2))))]
 
 
 def parse_expression(path: str, text: str, base_offset: int, diagnostics: Diagnostics) -> ast.Expr | None:

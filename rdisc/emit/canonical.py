@@ -1,0 +1,227 @@
+"""Model → canonical JSON, in the shape of thesis Appendix B.
+
+The thesis keys (`stateVariables`, `connections: {"spp": [...]}`, `primitives`,
+`interfaces`, `domainInterfaces`, `domainOutputs`, ...) carry the thesis meaning,
+so the original interpreter's loader reads the elements it knows; what the
+language adds (types, adapters, docs) is in extra keys. Expressions are written
+`"<expr>"` as in the thesis, printed from the typed IR with the parser's
+precedence table, and post-actions `"state = expr"` with the reply as `__out__`.
+
+Deterministic: keys in a fixed logical order, elements in model order, 2-space
+indentation, no timestamp: the same Model always gives byte-identical text.
+"""
+
+from __future__ import annotations
+
+import json
+from typing import Any, NoReturn
+
+from rdisc.semantics import model as m
+from rdisc.semantics.model import Type
+from rdisc.syntax import precedence as p
+
+_CONNECTION_GROUPS = {"serial": "spp"}  # the thesis lists serial connections under "spp"
+
+JsonObject = dict[str, Any]
+
+
+def to_json(model: m.Model) -> str:
+    return json.dumps(_document(model), indent=2, ensure_ascii=False, allow_nan=False) + "\n"
+
+
+def _document(model: m.Model) -> JsonObject:
+    robot = model.robot
+    connections: dict[str, list[JsonObject]] = {}
+    for c in model.connections.values():
+        connections.setdefault(_CONNECTION_GROUPS[c.kind], []).append(_connection(c))
+    adapters = [_adapter(a) for a in model.adapters.values() if not a.standard]
+    return _object(
+        ("name", robot.name),
+        ("author", robot.author),
+        ("description", robot.description),
+        ("version", robot.version),
+        ("doc", robot.doc),
+        ("stateVariables", [_state(s) for s in model.states.values()]),
+        ("connections", connections),
+        ("primitives", [_primitive(x) for x in model.primitives.values()]),
+        ("interfaces", [_interface(i) for i in model.interfaces.values()]),
+        ("domainAdapters", adapters or None),
+        ("domainInterfaces", [_input(i, model.adapters[i.adapter]) for i in model.inputs.values()]),
+        ("domainOutputs", [_output(o) for o in model.outputs.values()]),
+    )
+
+
+def _object(*members: tuple[str, Any]) -> JsonObject:
+    """An object of the members that are not None, in the order given."""
+    return {key: value for key, value in members if value is not None}
+
+
+def _number(value: float) -> float | int:
+    """100.0 is written 100: delays, intervals and rates read as the thesis wrote them."""
+    return int(value) if isinstance(value, float) and value.is_integer() else value
+
+
+def _state(s: m.StateVariable) -> JsonObject:
+    return _object(
+        ("name", s.name),
+        ("type", s.type.value),
+        ("value", _embedded(m.Const(s.initial, s.type))),
+        ("doc", s.doc),
+    )
+
+
+def _hook(h: m.HookCall | None) -> JsonObject | None:
+    if h is None:
+        return None
+    return {"name": h.interface, "arguments": [_embedded(a) for a in h.args]}
+
+
+def _connection(c: m.Connection) -> JsonObject:
+    keepalive = None
+    if c.keepalive is not None:
+        k = c.keepalive.call
+        keepalive = {
+            "name": k.interface,
+            "interval": _number(c.keepalive.interval_ms),
+            "arguments": [_embedded(a) for a in k.args],
+        }
+    return _object(
+        ("name", c.name),
+        ("baud", c.baud),
+        ("singleThreading", {"freqHz": _number(c.frequency_hz)}),
+        ("startup", _hook(c.startup)),
+        ("terminate", _hook(c.terminate)),
+        ("keepalive", keepalive),
+        ("doc", c.doc),
+    )
+
+
+def _primitive(x: m.Primitive) -> JsonObject:
+    match x.encoding:
+        case m.Pack(format):
+            encoding = ("pack", format)
+        case m.Format(template):
+            encoding = ("format", template)
+        case _:
+            _unreachable(x.encoding)
+    match x.decoding:
+        case m.Unpack(format):
+            decoding = ("unpack", format)
+        case m.Regex(pattern):
+            decoding = ("regex", pattern)
+        case None:
+            decoding = ("unpack", None)  # no reply: the member is left out
+        case _:
+            _unreachable(x.decoding)
+    actions = [f"{a.target} = {_text(a.value)}" for a in x.actions]
+    return _object(
+        ("name", x.name),
+        ("parameters", [param.name for param in x.params]),
+        ("parameterTypes", [param.type.value for param in x.params]),
+        ("connection", x.connection),
+        encoding,
+        ("formatArgs", [_embedded(a) for a in x.args]),
+        decoding,
+        ("postActions", actions or None),
+        ("doc", x.doc),
+    )
+
+
+def _interface(i: m.Interface) -> JsonObject:
+    calls = [
+        {
+            "name": c.primitive,
+            "arguments": [_embedded(a) for a in c.args],
+            "delay": _number(c.delay_ms),
+            "priority": c.priority,
+        }
+        for c in i.calls
+    ]
+    return _object(
+        ("name", i.name),
+        ("type", "periodic" if i.periodic else "adhoc"),
+        ("parameters", [param.name for param in i.params] or None),
+        ("parameterTypes", [param.type.value for param in i.params] or None),
+        ("primitiveCalls", calls),
+        ("triggers", i.triggers),
+        ("doc", i.doc),
+    )
+
+
+def _adapter(a: m.Adapter) -> JsonObject:
+    fields = [
+        _object(("name", f.name), ("type", f.type.value), ("unit", f.unit), ("ros", f.ros), ("doc", f.doc))
+        for f in a.fields
+    ]
+    return _object(("name", a.name), ("ros", a.ros), ("fields", fields), ("doc", a.doc))
+
+
+def _input(i: m.DomainInput, adapter: m.Adapter) -> JsonObject:
+    return _object(
+        ("name", i.name),
+        ("adapter", i.adapter),
+        ("parameters", [f.name for f in adapter.fields]),
+        ("calls", {"name": i.interface, "arguments": [_embedded(a) for a in i.args]}),
+        ("doc", i.doc),
+    )
+
+
+def _output(o: m.DomainOutput) -> JsonObject:
+    return _object(
+        ("name", o.name),
+        ("adapter", o.adapter),
+        ("returns", {name: _embedded(value) for name, value in o.fields}),
+        ("doc", o.doc),
+    )
+
+
+# ---- expressions -----------------------------------------------------------------------
+
+
+def _embedded(e: m.Expr) -> str:
+    """The thesis convention: an expression inside a JSON string is written `<...>`."""
+    return f"<{_text(e)}>"
+
+
+def _text(e: m.Expr) -> str:
+    return _expr(e).text
+
+
+def _expr(e: m.Expr) -> p.Printed:
+    match e:
+        case m.Const(value, type_):
+            return _const(value, type_)
+        case m.Var(name):
+            return p.Printed(name, p.ATOM)
+        case m.ReplyValue(index):
+            return p.Printed(f"__out__[{index}]", p.ATOM)  # the thesis's name for the reply
+        case m.UnaryOp(op, operand):
+            return p.unary(op, _expr(operand))
+        case m.BinaryOp(op, left, right):
+            return p.binary(op, _expr(left), _expr(right))
+        case m.IfElse(cond, then, orelse):
+            return p.conditional(_expr(then), _expr(cond), _expr(orelse))
+        case m.FuncCall(func, args):
+            return p.call(func, [_expr(a) for a in args])
+        case _:
+            _unreachable(e)
+
+
+def _const(value: m.Value, type_: Type) -> p.Printed:
+    """A constant spelled by its type, so that 1.0 stays a float and True a bool."""
+    match type_:
+        case Type.INT:
+            return p.literal(int(value))
+        case Type.FLOAT:
+            return p.literal(float(value))
+        case Type.BOOL:
+            return p.literal(bool(value))
+        case Type.STRING:
+            return p.literal(str(value))
+        case _:
+            _unreachable(type_)
+
+
+def _unreachable(node: NoReturn) -> NoReturn:
+    """`typing.assert_never`, which Python 3.10 lacks: a missed case is a type error."""
+    raise AssertionError(f"unhandled case {node!r}")

@@ -1,0 +1,220 @@
+"""AST → canonical RDIS text, for `rdisc import` and for formatting.
+
+Deterministic and readable: 4-space indents, a blank line between declarations,
+doc comments as `///` lines above what they document, short primitives on one
+line. Everything the parser keeps is printed as written (clause order, repeated
+clauses, every delay and priority), so parsing the output gives the same tree
+back: `parse(print_module(m)) == m` for every module the parser produces.
+"""
+
+from __future__ import annotations
+
+import re
+from typing import NoReturn
+
+from rdisc.syntax import ast
+from rdisc.syntax import precedence as p
+
+WIDTH = 100  # a primitive or a call longer than this is spread over several lines
+INDENT = "    "
+
+# Values a raw string r"..." can spell: no quote or newline, no trailing backslash.
+_RAW_SPELLABLE = re.compile(r'(?:[^"\\\n]|\\[^\n])*')
+
+
+def print_module(module: ast.Module) -> str:
+    return "".join("\n".join(_decl(d)) + "\n" + ("\n" if i < len(module.decls) - 1 else "")
+                   for i, d in enumerate(module.decls))
+
+
+def print_expr(expr: ast.Expr) -> str:
+    """An expression with the fewest parentheses that keep its tree."""
+    return _expr(expr).text
+
+
+def _expr(e: ast.Expr) -> p.Printed:
+    match e:
+        case ast.IntLit(value) | ast.BoolLit(value) | ast.StrLit(value):
+            return p.literal(value)
+        case ast.FloatLit(value):
+            return p.literal(float(value))
+        case ast.Ref(name):
+            return p.Printed(name, p.ATOM)
+        case ast.Index(base, index):
+            return p.index(base.name, _expr(index))
+        case ast.Unary(op, operand):
+            return p.unary(op, _expr(operand))
+        case ast.BinOp(op, left, right):
+            return p.binary(op, _expr(left), _expr(right))
+        case ast.Conditional(then, cond, orelse):
+            return p.conditional(_expr(then), _expr(cond), _expr(orelse))
+        case ast.CallExpr(func, args):
+            return p.call(func.text, [_expr(a) for a in args])
+        case _:
+            _unreachable(e)
+
+
+def _unreachable(node: NoReturn) -> NoReturn:
+    """`typing.assert_never`, which Python 3.10 lacks: a missed case is a type error."""
+    raise AssertionError(f"unhandled node {node!r}")
+
+
+# ---- declarations ------------------------------------------------------------------
+
+
+def _decl(d: ast.Decl) -> list[str]:
+    return _doc(d.doc) + _code(d)
+
+
+def _code(d: ast.Decl) -> list[str]:
+    match d:
+        case ast.ImportDecl(path):
+            return [f"import {p.quote(path)}"]
+        case ast.RobotDecl(name, attrs):
+            return _block(f"robot {name.text}", [f"{a.key} {p.quote(a.value)}" for a in attrs])
+        case ast.StateDecl(name, type_, init):
+            value = "" if init is None else f" = {print_expr(init)}"
+            return [f"state {name.text}: {type_.text}{value}"]
+        case ast.ConnectionDecl(name, kind, attrs):
+            return _block(f"connection {name.text}: {kind.text}", [_connection_attr(a) for a in attrs])
+        case ast.PrimitiveDecl():
+            return _primitive(d)
+        case ast.InterfaceDecl(name, params, clauses, body):
+            head = f"interface {name.text}({_params(params)})" + "".join(" " + _interface_clause(c) for c in clauses)
+            return _block(head, [line for stmt in body for line in _call_stmt(stmt)])
+        case ast.AdapterDecl(name, ros, fields):
+            head = f"adapter {name.text}" + ("" if ros is None else f" ros {p.quote(ros)}")
+            return _block(head, [line for f in fields for line in _doc(f.doc) + [_field(f)]])
+        case ast.InputDecl(name, adapter, call):
+            return _call_lines(f"input {name.text}: {adapter.text} -> ", call, "", 0)
+        case ast.OutputDecl(name, adapter, fields):
+            return _block(f"output {name.text}: {adapter.text}", [_assign(a) for a in fields])
+        case _:
+            _unreachable(d)
+
+
+def _doc(doc: str | None) -> list[str]:
+    if doc is None:
+        return []
+    return ["///" + (f" {line}" if line else "") for line in doc.split("\n")]
+
+
+def _block(head: str, lines: list[str]) -> list[str]:
+    if not lines:
+        return [f"{head} {{}}"]
+    return [f"{head} {{", *(INDENT + line for line in lines), "}"]
+
+
+def _params(params: tuple[ast.Param, ...]) -> str:
+    return ", ".join(f"{param.name.text}: {param.type.text}" for param in params)
+
+
+def _args(args: tuple[ast.Expr, ...]) -> str:
+    return ", ".join(print_expr(a) for a in args)
+
+
+def _call(call: ast.Call) -> str:
+    return f"{call.target.text}({_args(call.args)})"
+
+
+def _call_lines(prefix: str, call: ast.Call, suffix: str, column: int) -> list[str]:
+    """A call on one line, or with one argument a line when it is too long."""
+    line = f"{prefix}{_call(call)}{suffix}"
+    if column + len(line) <= WIDTH or not call.args:
+        return [line]
+    return [f"{prefix}{call.target.text}(", *(f"{INDENT}{print_expr(a)}," for a in call.args), f"){suffix}"]
+
+
+def _duration(d: ast.Duration) -> str:
+    return f"{print_expr(d.value)} {d.unit}"
+
+
+def _assign(a: ast.Assign) -> str:
+    return f"{a.target.text} = {print_expr(a.value)}"
+
+
+def _connection_attr(a: ast.ConnectionAttr) -> str:
+    match a:
+        case ast.Baud(value):
+            return f"baud {print_expr(value)}"
+        case ast.Threading(model, frequency):
+            return f"threading {model.text} at {print_expr(frequency)} Hz"
+        case ast.Hook(event, call, every):
+            return f"{event} {_call(call)}" + ("" if every is None else f" every {_duration(every)}")
+        case _:
+            _unreachable(a)
+
+
+def _interface_clause(c: ast.InterfaceClause) -> str:
+    match c:
+        case ast.Kind(word):
+            return word
+        case ast.Triggers(output):
+            return f"triggers {output.text}"
+        case _:
+            _unreachable(c)
+
+
+def _call_stmt(stmt: ast.CallStmt) -> list[str]:
+    suffix = "".join(f" delay {_duration(d)}" for d in stmt.delays)
+    suffix += "".join(f" priority {print_expr(e)}" for e in stmt.priorities)
+    return _call_lines("", stmt.call, suffix, len(INDENT))
+
+
+def _field(f: ast.FieldDecl) -> str:
+    unit = "" if f.unit is None else f" unit {p.quote(f.unit)}"
+    ros = "" if f.ros is None else f" ros {p.quote(f.ros)}"
+    return f"{f.name.text}: {f.type.text}{unit}{ros}"
+
+
+# ---- primitives ----------------------------------------------------------------------
+
+
+def _primitive(d: ast.PrimitiveDecl) -> list[str]:
+    """On one line when it fits, else one clause a line; post-actions always follow
+    the clause before them, inline when there is one, as a block when there are more."""
+    head = f"primitive {d.name.text}({_params(d.params)})"
+    pieces = [_primitive_clause(c) for c in d.clauses]
+    lines = _lay_out(head, pieces, wrapped=False)
+    if max(len(line) for line in lines) <= WIDTH:
+        return lines
+    return _lay_out(head, pieces, wrapped=True)
+
+
+def _primitive_clause(c: ast.PrimitiveClause) -> tuple[list[str], bool]:
+    """The clause's lines, and whether it continues the line before it."""
+    match c:
+        case ast.On(connection):
+            return [f"on {connection.text}"], False
+        case ast.Encoding(kind, template, args):
+            return [f"{kind} {_template(template)} ({_args(args)})"], False
+        case ast.Decoding(kind, template):
+            return [f"{kind} {_template(template)}"], False
+        case ast.Actions(()):
+            return ["{}"], True
+        case ast.Actions((assign,)):
+            return [f"{{ {_assign(assign)} }}"], True
+        case ast.Actions(assigns):
+            return ["{", *(INDENT + _assign(a) for a in assigns), "}"], True
+        case _:
+            _unreachable(c)
+
+
+def _lay_out(head: str, pieces: list[tuple[list[str], bool]], wrapped: bool) -> list[str]:
+    indent = INDENT if wrapped else ""
+    lines = [head]
+    for piece, attached in pieces:
+        if attached or not wrapped:
+            lines[-1] += " " + piece[0]
+        else:
+            lines.append(indent + piece[0])
+        lines.extend(indent + line for line in piece[1:])
+    return lines
+
+
+def _template(template: ast.StrLit) -> str:
+    """Templates with backslashes (regexes above all) as raw strings, so `\\d` stays `\\d`."""
+    value = template.value
+    if "\\" in value and value.isprintable() and _RAW_SPELLABLE.fullmatch(value):
+        return f'r"{value}"'
+    return p.quote(value)

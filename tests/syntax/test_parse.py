@@ -1,0 +1,134 @@
+"""The syntax stage: AST construction, literals, doc comments, errors in words, recovery."""
+
+from __future__ import annotations
+
+import pytest
+
+from rdisc.diagnostics import Diagnostics
+from rdisc.diagnostics.text import render_plain
+from rdisc.source import Sources
+from rdisc.syntax import ast
+from rdisc.syntax.parse import MAX_TREE_DEPTH, parse
+
+
+def parsed(text: str) -> tuple[ast.Module, Diagnostics]:
+    diagnostics = Diagnostics()
+    return parse("t.rdis", text, diagnostics), diagnostics
+
+
+def rendered(text: str) -> str:
+    module, diagnostics = parsed(text)
+    sources = Sources()
+    sources.add("t.rdis", text)
+    return render_plain(diagnostics.sorted(), sources)
+
+
+def only_expr(text: str) -> ast.Expr:
+    module, diagnostics = parsed(f"state x: int = {text}\n")
+    assert not diagnostics.items, diagnostics.items
+    decl = module.decls[0]
+    assert isinstance(decl, ast.StateDecl) and decl.init is not None
+    return decl.init
+
+
+@pytest.mark.parametrize(
+    ("text", "value"),
+    [("0x1F", 31), ("0b1010", 10), ("0o17", 15), ("1_000", 1000), ("2.5", 2.5), ("1e3", 1000.0), (".5", 0.5),
+     ('"a\\n\\x41\\u00e9"', "a\nAé"), ('r"\\d+"', "\\d+"), ("True", True), ("False", False)],
+)
+def test_literals(text: str, value: object) -> None:
+    lit = only_expr(text)
+    assert isinstance(lit, (ast.IntLit, ast.FloatLit, ast.StrLit, ast.BoolLit))
+    assert lit.value == value and type(lit.value) is type(value)
+
+
+def test_precedence_follows_python() -> None:
+    assert only_expr("-2 ** 2") == ast.Unary("-", ast.BinOp("**", ast.IntLit(2), ast.IntLit(2)))
+    assert only_expr("1 + 2 * 3 << 1") == ast.BinOp(
+        "<<", ast.BinOp("+", ast.IntLit(1), ast.BinOp("*", ast.IntLit(2), ast.IntLit(3))), ast.IntLit(1)
+    )
+    assert only_expr("a if not b or c else d") == ast.Conditional(
+        ast.Ref("a"), ast.BinOp("or", ast.Unary("not", ast.Ref("b")), ast.Ref("c")), ast.Ref("d")
+    )
+
+
+def test_doc_comments_travel_to_their_declaration() -> None:
+    module, diagnostics = parsed(
+        "/// The bumpers.\n/// Bit 0 right.\n# not a doc\nstate b: int = 0\n"
+        "adapter A {\n  /// metres\n  d: float unit \"m\"\n}\n"
+    )
+    assert not diagnostics.items
+    state, adapter = module.decls
+    assert isinstance(state, ast.StateDecl) and state.doc == "The bumpers.\nBit 0 right."
+    assert isinstance(adapter, ast.AdapterDecl) and adapter.fields[0].doc == "metres"
+
+
+def test_spans_are_absolute_offsets() -> None:
+    text = "state a: int = 0\nstate bee: int = 1\n"
+    module, _ = parsed(text)
+    name = module.decls[1].name  # type: ignore[union-attr]
+    assert text[name.span.start : name.span.end] == "bee"
+
+
+def test_a_syntax_error_costs_only_its_declaration() -> None:
+    module, diagnostics = parsed(
+        'state a: int = = 0\nprimitive p() on c pack "B" (1\nstate ok: int = 1\nstate b: int = )\n'
+    )
+    assert [d.code for d in diagnostics.sorted()] == ["E001", "E001", "E001"]
+    assert [d.name.text for d in module.decls] == ["ok"]  # type: ignore[union-attr]
+    assert [(d.keyword, d.name.text) for d in module.damaged] == [("state", "a"), ("primitive", "p"), ("state", "b")]
+
+
+def test_errors_say_what_was_expected_in_words() -> None:
+    assert rendered("connection c: serial { baud 9600 speed 3 }\n") == """\
+error[E001]: expected `baud`, `keepalive`, a closing `}`, `startup`, `terminate` or `threading`, found `speed`
+ --> t.rdis:1:34
+  |
+1 | connection c: serial { baud 9600 speed 3 }
+  |                                  ^^^^^
+
+1 error emitted"""
+
+
+def test_an_unfinished_declaration_is_reported_where_the_next_begins() -> None:
+    assert rendered('primitive p(x: int) on c pack ">h" (x\ninterface i() { p(1) }\n') == """\
+error[E001]: expected `,` or a closing `)` before the next declaration
+ --> t.rdis:2:1
+  |
+2 | interface i() { p(1) }
+  | ^ the declaration before this one is not finished
+
+1 error emitted"""
+
+
+def test_end_of_file_errors_are_placed_at_the_end() -> None:
+    text = "output o: Range { distance = 1.0\n"
+    _, diagnostics = parsed(text)
+    (d,) = diagnostics.items
+    assert d.message == "expected a name or a closing `}`, found the end of the file"
+    assert d.span is not None and d.span.start == len(text)
+
+
+@pytest.mark.parametrize(
+    ("text", "code", "message"),
+    [
+        ('state s: string = "abc\n', "E002", "unterminated string"),
+        ("state s: int = __import__\n", "E002", "names cannot start with `_`"),
+        ("state s: int = a.b\n", "E002", "unexpected character `.`"),
+        ('state s: string = "a\\q"\n', "E003", "unknown escape `\\q` in a string"),
+        ("state s: int = 0099\n", "E004", "invalid integer literal `0099`"),
+        ("state s: int = " + "9" * 80 + "\n", "E004", "invalid integer literal `999999999999999999999...`"),
+        ("state s: float = 1e999\n", "E004", "invalid float literal `1e999`"),
+        ("state s: int = 1 +\n", "E001", "expected an expression, found the end of the file"),
+    ],
+)
+def test_lexical_errors(text: str, code: str, message: str) -> None:
+    _, diagnostics = parsed(text)
+    assert [(d.code, d.message) for d in diagnostics.items] == [(code, message)]
+
+
+def test_deep_nesting_is_refused_before_it_is_walked() -> None:
+    depth = MAX_TREE_DEPTH + 10
+    _, diagnostics = parsed("state s: int = " + "-" * depth + "1\nstate t: int = " + "(" * 10_000 + "1" + ")" * 10_000)
+    assert [d.code for d in diagnostics.items] == ["E005"]
+    assert diagnostics.items[0].message == f"expression is nested too deeply (the limit is {MAX_TREE_DEPTH} levels)"
