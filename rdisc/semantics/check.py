@@ -8,8 +8,6 @@ returned only when no error was found.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 from rdisc.diagnostics import Diagnostics, Label
 from rdisc.semantics import formats
 from rdisc.semantics import model as m
@@ -28,13 +26,6 @@ DEFAULT_BAUD = 9600
 DEFAULT_FREQUENCY_HZ = 10.0
 _TYPES = {t.value: t for t in Type}
 _NOTHING = Env({}, "in a setting", "")
-
-
-@dataclass(frozen=True, slots=True)
-class Checked:
-    """What the checker hands on: the Model (None if there were errors)."""
-
-    model: m.Model | None
 
 
 def check(units: list[Unit], symbols: Symbols, diagnostics: Diagnostics) -> m.Model | None:
@@ -467,14 +458,12 @@ class _Checker:
 
     def input(self, decl: ast.InputDecl, adapters: dict[str, m.Adapter], interface_params) -> m.DomainInput:
         adapter = adapters.get(decl.adapter.text)
-        scope = {f.name: (Scope.FIELD, f.type) for f in adapter.fields if f.type} if adapter else {}
-        sees = f"the fields of `{decl.adapter.text}` and state variables"
-        env = self.env_with(scope, "in an input", sees) if adapter else Env(
-            {n: (Scope.FIELD, Type.FLOAT) for n in ()}, "in an input", sees)
-        target = self.s.interfaces.get(decl.call.target.text)
         if adapter is None:  # unknown adapter, already reported: do not report its fields as unknown
             return m.DomainInput(decl.name.text, m.AdapterRef(decl.adapter.text), m.InterfaceRef(decl.call.target.text),
                                  (), decl.doc, decl.span)
+        scope = {f.name: (Scope.FIELD, f.type) for f in adapter.fields}
+        env = self.env_with(scope, "in an input", f"the fields of `{adapter.name}` and state variables")
+        target = self.s.interfaces.get(decl.call.target.text)
         args = self.call(decl.call, interface_params.get(decl.call.target.text), env, "interface",
                          target.name if target else None)
         return m.DomainInput(decl.name.text, m.AdapterRef(adapter.name), m.InterfaceRef(decl.call.target.text),
