@@ -9,8 +9,18 @@ from functools import lru_cache
 from rdisc.diagnostics import Diagnostics
 from rdisc.source import Span
 from rdisc.syntax import ast
+from rdisc.syntax.precedence import BINARY, COMPARISON, OR, UNARY_OPERATORS
 
 MAX_INT_DIGITS = 64
+MAX_EXPR_DEPTH = 100
+
+
+class TooDeep(Exception):
+    """An expression nests deeper than MAX_EXPR_DEPTH: the declaration is refused."""
+
+    def __init__(self, span: Span) -> None:
+        super().__init__("expression is nested too deeply")
+        self.span = span
 _ESCAPE = re.compile(r"\\(x[0-9a-fA-F]{2}|u[0-9a-fA-F]{4}|.)", re.DOTALL)
 _SIMPLE_ESCAPES = {"n": "\n", "r": "\r", "t": "\t", "0": "\0", "\\": "\\", '"': '"', "'": "'"}
 
@@ -55,10 +65,28 @@ class Builder:
         self.docs = docs
         self.diagnostics = diagnostics
         self.base = 0
+        # Per chunk, by id(node), holding the node so that its id stays its own:
+        self.prefixed: dict[int, tuple[ast.Expr, list]] = {}  # a prefixed operand → its items
+        self.depth: dict[int, tuple[ast.Expr, int]] = {}  # an expression → its depth
 
     def build(self, tree, base: int) -> list[ast.Decl]:
+        """The declarations of one chunk; raises TooDeep for an expression past the limit."""
         self.base = base
-        return _transformer_class()(self).transform(tree)
+        self.prefixed.clear()
+        self.depth.clear()
+        try:
+            return _transformer_class()(self).transform(tree)
+        finally:
+            self.prefixed.clear()
+            self.depth.clear()
+
+    def nested(self, node: ast.Expr, *children: ast.Expr) -> ast.Expr:
+        """Record the depth of a new expression node; refuse one nested too deeply."""
+        depth = 1 + max((self.depth.get(id(c), (c, 1))[1] for c in children), default=0)
+        if depth > MAX_EXPR_DEPTH:
+            raise TooDeep(node.span)
+        self.depth[id(node)] = (node, depth)
+        return node
 
     # -- helpers used by the transformer --
 
@@ -75,6 +103,52 @@ class Builder:
 
     def doc(self, meta) -> str | None:
         return self.docs.get(self.base + meta.start_pos)
+
+    def resolve(self, items: list) -> ast.Expr:
+        """Operators and operands of a flat chain → a tree, by precedence climbing.
+
+        `items` alternates operands (AST nodes) and operator tokens; a token where
+        an operand is due is a prefix operator. Levels and associativity come from
+        rdisc.syntax.precedence, the table the printers use.
+        """
+        import lark
+
+        pos = 0
+
+        def climb(minimum: int, level: int) -> ast.Expr:
+            nonlocal pos
+            item = items[pos]
+            pos += 1
+            if level > MAX_EXPR_DEPTH:
+                raise TooDeep(self.token_span(item) if isinstance(item, lark.Token) else item.span)
+            if isinstance(item, lark.Token):
+                op = UNARY_OPERATORS[str(item)]
+                if op.level < minimum:
+                    self.misplaced(item, f"`{item}` cannot stand here without parentheses")
+                operand = climb(op.operands[0], level + 1)
+                left: ast.Expr = self.nested(
+                    ast.Unary(str(item), operand, self.token_span(item).to(operand.span)), operand
+                )
+            else:
+                left = item
+            compared = False
+            while pos < len(items):
+                token = items[pos]
+                op = BINARY[str(token)]
+                if op.level < minimum:
+                    break
+                if op.level == COMPARISON and compared:
+                    self.misplaced(token, "comparisons cannot be chained: write `a < b and b < c`")
+                pos += 1
+                right = climb(op.operands[1], level + 1)
+                left = self.nested(ast.BinOp(str(token), left, right, left.span.to(right.span)), left, right)
+                compared = op.level == COMPARISON
+            return left
+
+        return climb(OR, 0)
+
+    def misplaced(self, token, message: str) -> None:
+        self.diagnostics.report("E001", self.token_span(token), message)
 
     def string(self, token) -> ast.StrLit:
         span = self.token_span(token)
@@ -231,21 +305,29 @@ def _transformer_class():
         # -- expressions --
 
         def conditional(self, meta, c):
-            return ast.Conditional(c[0], c[1], c[2], self.b.span(meta))
+            return self.b.nested(ast.Conditional(c[0], c[1], c[2], self.b.span(meta)), *c)
 
-        def boolop(self, meta, c):
-            return ast.BinOp(str(c[1]), c[0], c[2], self.b.span(meta))
+        def chain(self, meta, c):
+            items: list = []
+            for child in c:
+                items.extend(self.b.prefixed.get(id(child), (child, [child]))[1])
+            return self.b.resolve(items)
 
-        binary = boolop
+        def prefixed(self, meta, c):
+            node = self.b.resolve(c)
+            self.b.prefixed[id(node)] = (node, c)
+            return node
 
-        def unary(self, meta, c):
-            return ast.Unary(str(c[0]), c[1], self.b.span(meta))
+        def group(self, meta, c):
+            """`( expr )`: a finished operand, never re-opened by the chain around it."""
+            self.b.prefixed.pop(id(c[0]), None)
+            return c[0]
 
         def call(self, meta, c):
-            return ast.CallExpr(self.b.ident(c[0]), c[1] or (), self.b.span(meta))
+            return self.b.nested(ast.CallExpr(self.b.ident(c[0]), c[1] or (), self.b.span(meta)), *(c[1] or ()))
 
         def index(self, meta, c):
-            return ast.Index(ast.Ref(str(c[0]), self.b.token_span(c[0])), c[1], self.b.span(meta))
+            return self.b.nested(ast.Index(ast.Ref(str(c[0]), self.b.token_span(c[0])), c[1], self.b.span(meta)), c[1])
 
         def int_lit(self, meta, c):
             value = _int_value(str(c[0]))

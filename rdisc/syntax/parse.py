@@ -15,11 +15,11 @@ from functools import lru_cache
 from rdisc.diagnostics import Diagnostics
 from rdisc.source import Span
 from rdisc.syntax import ast
-from rdisc.syntax.build import Builder
+from rdisc.syntax.build import MAX_EXPR_DEPTH, Builder, TooDeep
 from rdisc.syntax.errors import describe_unexpected
 
 MAX_FILE_CHARS = 8 * 1024 * 1024
-MAX_TREE_DEPTH = 120
+MAX_TREE_DEPTH = 120  # of Lark's tree; expressions are bounded by MAX_EXPR_DEPTH
 MAX_SYNTAX_ERRORS = 100
 
 DECL_KEYWORDS = (
@@ -85,16 +85,22 @@ def parse(path: str, text: str, diagnostics: Diagnostics) -> ast.Module:
                 _report_syntax_error(err, path, text, start, end, last, diagnostics)
             continue
         depth, deepest = _depth(tree)
+        too_deep = None
         if depth > MAX_TREE_DEPTH:
             meta = deepest.meta
+            too_deep = Span(path, start + meta.start_pos, start + meta.end_pos)
+        else:
+            try:
+                decls.extend(builder.build(tree, start))
+            except lark.exceptions.VisitError as err:
+                if not isinstance(err.orig_exc, TooDeep):
+                    raise
+                too_deep = err.orig_exc.span
+        if too_deep is not None:
             diagnostics.report(
-                "E005",
-                Span(path, start + meta.start_pos, start + meta.end_pos),
-                f"expression is nested too deeply (the limit is {MAX_TREE_DEPTH} levels)",
+                "E005", too_deep, f"expression is nested too deeply (the limit is {MAX_EXPR_DEPTH} levels)"
             )
             damaged.extend(_damaged(path, chunk, start))
-            continue
-        decls.extend(builder.build(tree, start))
     return ast.Module(path, tuple(decls), tuple(damaged))
 
 

@@ -8,7 +8,8 @@ from rdisc.diagnostics import Diagnostics
 from rdisc.diagnostics.text import render_plain
 from rdisc.source import Sources
 from rdisc.syntax import ast
-from rdisc.syntax.parse import MAX_TREE_DEPTH, parse
+from rdisc.syntax.build import MAX_EXPR_DEPTH
+from rdisc.syntax.parse import parse
 
 
 def parsed(text: str) -> tuple[ast.Module, Diagnostics]:
@@ -128,7 +129,7 @@ def test_lexical_errors(text: str, code: str, message: str) -> None:
 
 
 def test_deep_nesting_is_refused_before_it_is_walked() -> None:
-    depth = MAX_TREE_DEPTH + 10
+    depth = MAX_EXPR_DEPTH + 10
     _, diagnostics = parsed("state s: int = " + "-" * depth + "1\nstate t: int = " + "(" * 10_000 + "1" + ")" * 10_000)
-    assert [d.code for d in diagnostics.items] == ["E005"]
-    assert diagnostics.items[0].message == f"expression is nested too deeply (the limit is {MAX_TREE_DEPTH} levels)"
+    assert [d.code for d in diagnostics.items] == ["E005", "E005"]
+    assert diagnostics.items[0].message == f"expression is nested too deeply (the limit is {MAX_EXPR_DEPTH} levels)"
