@@ -104,6 +104,7 @@ def _primitive(x: m.Primitive) -> JsonObject:
             encoding = ("format", template)
         case _:
             _unreachable(x.encoding)
+    decoding: tuple[str, str | None]
     match x.decoding:
         case m.Unpack(format):
             decoding = ("unpack", format)

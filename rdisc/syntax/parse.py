@@ -129,13 +129,16 @@ def parse_expression(path: str, text: str, base_offset: int, diagnostics: Diagno
     depth, deepest = _depth(tree)
     if depth > MAX_TREE_DEPTH:
         meta = deepest.meta
-        diagnostics.report(
-            "E005",
-            Span(path, base_offset + meta.start_pos, base_offset + meta.end_pos),
-            f"expression is nested too deeply (the limit is {MAX_TREE_DEPTH} levels)",
-        )
-        return None
-    return Builder(path, {}, diagnostics).build(tree, base_offset)
+        too_deep = Span(path, base_offset + meta.start_pos, base_offset + meta.end_pos)
+    else:
+        try:
+            return Builder(path, {}, diagnostics).build(tree, base_offset)
+        except lark.exceptions.VisitError as err:
+            if not isinstance(err.orig_exc, TooDeep):
+                raise
+            too_deep = err.orig_exc.span
+    diagnostics.report("E005", too_deep, f"expression is nested too deeply (the limit is {MAX_EXPR_DEPTH} levels)")
+    return None
 
 
 def _chunks(text: str) -> list[tuple[int, int]]:

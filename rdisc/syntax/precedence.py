@@ -103,7 +103,7 @@ def index(base: str, at: Printed) -> Printed:
     return Printed(f"{base}[{at.at(CONDITIONAL)}]", ATOM)
 
 
-def literal(value: bool | int | float | str) -> Printed:
+def literal(value: float | str) -> Printed:  # bool and int included
     """A constant as the grammar reads it back: floats always with `.` or an
     exponent, negative numbers as a unary minus, non-finite floats through `float`."""
     if isinstance(value, bool):

@@ -1,0 +1,787 @@
+"""JSON description → AST: the canonical JSON of `rdisc build`, and hand-written
+thesis-style JSON such as thesis Appendix B.
+
+Every JSON value keeps its place in the file (Lark, grammar/json.lark), so the
+checker's diagnostics about an imported description point at the JSON line, and
+an expression written `"<...>"` is parsed by the RDIS grammar with spans on the
+characters inside the string. Nothing is evaluated: the thesis ran `eval` on these
+strings, rdisc reads them as data.
+
+Thesis conventions: `"<expr>"` is an expression; `""` is the default of the type
+expected there (0, 0.0, False, ""); any other string is a string literal; a
+post-action is `"state = expr"` with the reply called `__out__`. Missing members
+default as in thesis Appendix A. Thesis JSON has no types, so parameter types
+are inferred: a primitive parameter passed bare as format argument i has the
+type of value i of the template (else int); an interface parameter passed bare
+to a primitive parameter has that parameter's type (else float). An input or
+output without an adapter gets the standard adapter with exactly its fields, or
+an adapter of float fields made for it.
+
+A member of the wrong kind, a missing name or an unknown member is an E008 error
+at the offending value, and the element it belongs to is left out (as the parser
+leaves out a declaration with a syntax error).
+"""
+
+from __future__ import annotations
+
+import difflib
+import json
+import math
+import re
+from collections.abc import Callable
+from dataclasses import dataclass, fields, is_dataclass, replace
+from functools import lru_cache, partial
+from typing import Any
+
+from rdisc.diagnostics import Diagnostics, Label
+from rdisc.semantics import formats
+from rdisc.source import Span
+from rdisc.syntax import ast
+from rdisc.syntax.build import MAX_INT_DIGITS
+from rdisc.syntax.parse import MAX_FILE_CHARS, parse, parse_expression
+
+MAX_DEPTH = 100  # nesting of JSON arrays and objects
+
+# ---- JSON values with their places -------------------------------------------------------
+
+
+@dataclass(frozen=True, slots=True)
+class JString:
+    value: str
+    raw: str  # the token as written, quotes and escapes included
+    span: Span
+
+
+@dataclass(frozen=True, slots=True)
+class JNumber:
+    value: float  # or int
+    span: Span
+
+
+@dataclass(frozen=True, slots=True)
+class JBool:
+    value: bool
+    span: Span
+
+
+@dataclass(frozen=True, slots=True)
+class JNull:
+    span: Span
+
+
+@dataclass(frozen=True, slots=True)
+class JArray:
+    items: tuple[JValue, ...]
+    span: Span
+
+
+@dataclass(frozen=True, slots=True)
+class JObject:
+    members: tuple[tuple[JString, JValue], ...]  # duplicates already reported and dropped
+    span: Span
+
+
+JValue = JString | JNumber | JBool | JNull | JArray | JObject
+
+
+def read(path: str, text: str, diagnostics: Diagnostics) -> ast.Module | None:
+    """The declarations of a JSON description; None if it is not a JSON object."""
+    root = read_json(path, text, diagnostics)
+    if root is None:
+        return None
+    if not isinstance(root, JObject):
+        diagnostics.report("E008", root.span, f"a description is a JSON object, found {_kind(root)}")
+        return None
+    return _Importer(path, diagnostics).module(root)
+
+
+def read_json(path: str, text: str, diagnostics: Diagnostics) -> JValue | None:
+    """Any JSON text, with places; None after an E005/E008 diagnostic."""
+    if len(text) > MAX_FILE_CHARS:
+        diagnostics.report(
+            "E005", Span(path, 0, 0), f"file is too large ({len(text)} characters; the limit is {MAX_FILE_CHARS})"
+        )
+        return None
+    if not _nesting_ok(path, text, diagnostics):
+        return None
+    import lark
+
+    try:
+        tree = _json_parser().parse(text)
+    except lark.exceptions.UnexpectedInput as err:
+        _report_json_error(err, path, text, diagnostics)
+        return None
+    return _Values(path, diagnostics).value(tree)
+
+
+@lru_cache(maxsize=1)
+def _json_parser():  # -> lark.Lark, imported lazily like the RDIS parser
+    import lark
+
+    from rdisc.resources import grammar_path
+
+    return lark.Lark.open(
+        str(grammar_path().with_name("json.lark")),
+        parser="lalr",
+        lexer="contextual",
+        propagate_positions=True,
+        cache=True,
+    )
+
+
+# A string (closed or not: each is scanned once) or a bracket.
+_BRACKET_OR_STRING = re.compile(r'"(?:[^"\\\n]|\\.)*"?|[\[\]{}]')
+
+
+def _nesting_ok(path: str, text: str, diagnostics: Diagnostics) -> bool:
+    """Bound the nesting before parsing, so that building values cannot recurse deeply."""
+    depth = 0
+    for m in _BRACKET_OR_STRING.finditer(text):
+        c = m.group()
+        if c in "[{":
+            depth += 1
+            if depth > MAX_DEPTH:
+                diagnostics.report(
+                    "E005",
+                    Span(path, m.start(), m.end()),
+                    f"JSON is nested too deeply (the limit is {MAX_DEPTH} levels)",
+                )
+                return False
+        elif c in "]}":
+            depth -= 1
+    return True
+
+
+_TOKEN_WORDS = {
+    "STRING": "a string",
+    "NUMBER": "a number",
+    "TRUE": "`true`",
+    "FALSE": "`false`",
+    "NULL": "`null`",
+    "LBRACE": "`{`",
+    "RBRACE": "`}`",
+    "LSQB": "`[`",
+    "RSQB": "`]`",
+    "COMMA": "`,`",
+    "COLON": "`:`",
+    "$END": "the end of the file",
+}
+_VALUE_START = {"STRING", "NUMBER", "TRUE", "FALSE", "NULL", "LBRACE", "LSQB"}
+_STRING_PREFIX = re.compile(r'"(?:[^"\\\x00-\x1f]|\\["\\/bfnrt]|\\u[0-9a-fA-F]{4})*')
+
+
+def _report_json_error(err, path: str, text: str, diagnostics: Diagnostics) -> None:
+    import lark
+
+    if isinstance(err, lark.exceptions.UnexpectedCharacters):
+        begin, end, message = _character_error(text, err.pos_in_stream or 0)
+        diagnostics.report("E008", Span(path, begin, end), message)
+        return
+    token = err.token
+    expected = set(err.interactive_parser.accepts()) if err.interactive_parser else set(err.expected)
+    words = ["a value"] if _VALUE_START <= expected else []
+    words += sorted(_TOKEN_WORDS[t] for t in expected - (_VALUE_START if words else set()) if t in _TOKEN_WORDS)
+    wanted = words[0] if len(words) == 1 else ", ".join(words[:-1]) + " or " + words[-1]
+    if token.type == "$END":
+        found, span = "the end of the file", Span(path, len(text), len(text))
+    else:
+        shown = str(token) if len(token) <= 30 else str(token)[:27] + "..."
+        found, span = f"`{shown}`", Span(path, token.start_pos or 0, token.end_pos or 0)
+    trailing = token.type in ("RBRACE", "RSQB") and text[: span.start].rstrip().endswith(",")
+    help = "JSON allows no comma after the last member or item" if trailing else None
+    diagnostics.report("E008", span, f"invalid JSON: expected {wanted}, found {found}", help=help)
+
+
+def _character_error(text: str, at: int) -> tuple[int, int, str]:
+    """Where and why no token starts at `at`: in a string, the character that ends it."""
+    if text[at] != '"':
+        shown = text[at] if text[at].isprintable() else repr(text[at])[1:-1]
+        return at, at + 1, f"invalid JSON: unexpected character `{shown}`"
+    prefix = _STRING_PREFIX.match(text, at)
+    bad = prefix.end() if prefix else at
+    char = text[bad] if bad < len(text) else ""
+    if char == "\\":
+        return bad, bad + 2, f"invalid JSON: unknown escape `{text[bad:bad + 2]}` in a string"
+    if char in ("", "\n", "\r"):
+        return at, bad, "invalid JSON: unterminated string"
+    return bad, bad + 1, f"invalid JSON: control character U+{ord(char):04X} in a string (write it as an escape)"
+
+
+class _Values:
+    """Lark tree → JSON values (recursion bounded by `_nesting_ok`)."""
+
+    def __init__(self, path: str, diagnostics: Diagnostics) -> None:
+        self.path = path
+        self.d = diagnostics
+
+    def value(self, node) -> JValue:
+        import lark
+
+        if isinstance(node, lark.Token):
+            span = Span(self.path, node.start_pos or 0, node.end_pos or 0)
+            if node.type == "STRING":
+                return JString(json.loads(node), str(node), span)
+            if node.type == "NUMBER":
+                return JNumber(self.number(str(node), span), span)
+            if node.type == "NULL":
+                return JNull(span)
+            return JBool(node.type == "TRUE", span)
+        span = Span(self.path, node.meta.start_pos, node.meta.end_pos)
+        if node.data == "array":
+            return JArray(tuple(self.value(c) for c in node.children), span)
+        members: dict[str, tuple[JString, JValue]] = {}
+        for member in node.children:
+            key, value = self.value(member.children[0]), self.value(member.children[1])
+            assert isinstance(key, JString)
+            if key.value in members:
+                first = members[key.value][0].span
+                self.d.report(
+                    "E008",
+                    key.span,
+                    f"duplicate member `{key.value}`",
+                    labels=(Label(first, "first given here"),),
+                )
+                continue
+            members[key.value] = (key, value)
+        return JObject(tuple(members.values()), span)
+
+    def number(self, token: str, span: Span) -> float:
+        integral = not any(c in token for c in ".eE")
+        if integral and len(token.lstrip("-")) > MAX_INT_DIGITS:
+            self.d.report("E004", span, f"integer with more than {MAX_INT_DIGITS} digits")
+            return 0
+        value = json.loads(token)
+        if not integral and math.isinf(value):
+            self.d.report("E004", span, "number too large for a float")
+            return 0.0
+        return value
+
+
+_KINDS = {JString: "a string", JNumber: "a number", JBool: "true/false", JNull: "null", JArray: "an array",
+          JObject: "an object"}  # fmt: skip
+
+
+def _kind(v: JValue) -> str:
+    return _KINDS[type(v)]
+
+
+# ---- the description ----------------------------------------------------------------------
+
+_TOP = (
+    "name", "author", "description", "version", "doc", "stateVariables", "connections", "primitives",
+    "interfaces", "domainAdapters", "domainInterfaces", "domainOutputs",
+)  # fmt: skip
+_SECTIONS = {  # list member: (its elements in words, the RDIS keyword declaring one)
+    "stateVariables": ("a state variable", "state"),
+    "spp": ("a connection", "connection"),
+    "primitives": ("a primitive", "primitive"),
+    "interfaces": ("an interface", "interface"),
+    "domainAdapters": ("an adapter", "adapter"),
+    "domainInterfaces": ("a domain interface", "input"),
+    "domainOutputs": ("a domain output", "output"),
+}
+_STATE = ("name", "type", "value", "doc")
+_CONNECTION = ("name", "baud", "singleThreading", "startup", "terminate", "keepalive", "doc")
+_PRIMITIVE = (
+    "name", "parameters", "parameterTypes", "connection", "pack", "format", "formatArgs", "unpack", "regex",
+    "postActions", "doc",
+)  # fmt: skip
+_INTERFACE = ("name", "type", "parameters", "parameterTypes", "primitiveCalls", "triggers", "doc")
+_CALL = ("name", "arguments", "delay", "priority")
+_ADAPTER = ("name", "ros", "fields", "doc")
+_FIELD = ("name", "type", "unit", "ros", "doc")
+_INPUT = ("name", "adapter", "parameters", "calls", "doc")
+_OUTPUT = ("name", "adapter", "returns", "doc")
+
+DEFAULT_BAUD = 9600  # thesis Appendix A; written out, so the .rdis says what the robot gets
+DEFAULT_FREQUENCY_HZ = 10
+_DEFAULTS: dict[str, Any] = {"int": 0, "float": 0.0, "bool": False, "string": ""}
+_NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
+_FLOAT_SPECS = frozenset("eEfFgG%")
+
+Members = dict[str, JValue]
+
+
+@lru_cache(maxsize=1)
+def _standard_adapters() -> dict[str, dict[str, str]]:
+    """Field names and types of the standard adapters (stdlib/adapters.rdis)."""
+    from rdisc.resources import stdlib_path
+
+    path = stdlib_path()
+    module = parse(str(path), path.read_text(encoding="utf-8"), Diagnostics())
+    return {
+        d.name.text: {f.name.text: f.type.text for f in d.fields}
+        for d in module.decls
+        if isinstance(d, ast.AdapterDecl)
+    }
+
+
+class _Importer:
+    def __init__(self, path: str, diagnostics: Diagnostics) -> None:
+        self.path = path
+        self.d = diagnostics
+        self.standard = _standard_adapters()
+        self.adapter_fields: dict[str, dict[str, str]] = dict(self.standard)
+        self.primitive_types: dict[str, tuple[str, ...]] = {}
+        self.interface_types: dict[str, tuple[str, ...]] = {}
+        self.made_adapters: list[ast.AdapterDecl] = []
+        self.damaged: list[ast.Damaged] = []
+
+    # -- the whole document, in an order where every type a default needs is known --
+
+    def module(self, root: JObject) -> ast.Module:
+        top = self.members(root, "the description", _TOP)
+        robot = self.robot(root, top)
+        states = self.each(top, "stateVariables", self.state)
+        primitives = self.each(top, "primitives", self.primitive)
+        interfaces = self.each(top, "interfaces", self.interface)
+        connections = self.connections(top.get("connections"))
+        adapters = self.each(top, "domainAdapters", self.adapter)
+        inputs = self.each(top, "domainInterfaces", self.input)
+        outputs = self.each(top, "domainOutputs", self.output)
+        decls: list[ast.Decl] = [] if robot is None else [robot]
+        decls += [*states, *connections, *primitives, *interfaces, *adapters, *self.made_adapters, *inputs, *outputs]
+        return ast.Module(self.path, tuple(decls), tuple(self.damaged))
+
+    def each(self, top: Members, key: str, build: Callable[[JObject], Any]) -> list[Any]:
+        """The elements of a list member. An element with an error is left out, and
+        its name kept as damaged, so that references to it are not reported again."""
+        what, keyword = _SECTIONS[key]
+        built = []
+        for item in self.array(top.get(key), f"`{key}`"):
+            obj = self.object(item, what)
+            if obj is None:
+                continue
+            errors = self.d.error_count
+            element = build(obj)
+            if element is not None and self.d.error_count == errors:
+                built.append(element)
+                continue
+            name = next((v for k, v in obj.members if k.value == "name"), None)
+            if isinstance(name, JString) and _NAME.fullmatch(name.value):
+                self.damaged.append(ast.Damaged(keyword, ast.Ident(name.value, self.inner(name))))
+        return built
+
+    # -- elements --
+
+    def robot(self, root: JObject, top: Members) -> ast.RobotDecl | None:
+        name = self.name(root, top, "the description")
+        attrs = []
+        for key in ("author", "description", "version"):
+            s = self.string(top.get(key), f"`{key}`")
+            if s is not None:
+                attrs.append(ast.RobotAttr(key, s.value, s.span))
+        doc = self.doc(top)
+        return None if name is None else ast.RobotDecl(name, tuple(attrs), root.span, doc)
+
+    def state(self, obj: JObject) -> ast.StateDecl | None:
+        m = self.members(obj, "a state variable", _STATE)
+        name = self.name(obj, m, "a state variable")
+        type_ = self.required(obj, m, "type", "a state variable", self.ident)
+        init = None if "value" not in m else self.expr(m["value"], type_.text if type_ else None)
+        if name is None or type_ is None:
+            return None
+        return ast.StateDecl(name, type_, init, obj.span, self.doc(m))
+
+    def connections(self, value: JValue | None) -> list[ast.ConnectionDecl]:
+        groups = self.object(value, "`connections`") if value is not None else None
+        built = []
+        for key, group in groups.members if groups else ():
+            if key.value != "spp":
+                self.error(key.span, f"unknown connection kind `{key.value}`",
+                           help="serial connections are listed under `spp`")
+                continue
+            kind = ast.Ident("serial", key.span)
+            built += self.each({"spp": group}, "spp", partial(self.connection, kind=kind))
+        return built
+
+    def connection(self, obj: JObject, kind: ast.Ident) -> ast.ConnectionDecl | None:
+        m = self.members(obj, "a connection", _CONNECTION)
+        name = self.name(obj, m, "a connection")
+        brace = self.opening(obj)
+        baud = ast.IntLit(DEFAULT_BAUD, brace) if "baud" not in m else self.expr(m["baud"], "int")
+        attrs: list[ast.ConnectionAttr | None] = [None if baud is None else ast.Baud(baud, baud.span)]
+        threading = self.object(m.get("singleThreading"), "`singleThreading`")
+        if threading is None:
+            attrs.append(ast.Threading(ast.Ident("single", brace), ast.IntLit(DEFAULT_FREQUENCY_HZ, brace), brace))
+        else:
+            t = self.members(threading, "`singleThreading`", ("freqHz",))
+            hz = self.required(threading, t, "freqHz", "`singleThreading`", lambda v, _: self.expr(v, "float"))
+            attrs.append(None if hz is None else ast.Threading(ast.Ident("single", threading.span), hz, threading.span))
+        for event in ("startup", "terminate", "keepalive"):
+            hook = self.object(m.get(event), f"`{event}`")
+            attrs.append(None if hook is None else self.hook(hook, event))
+        if name is None:
+            return None
+        return ast.ConnectionDecl(name, kind, _present(attrs), obj.span, self.doc(m))
+
+    def hook(self, obj: JObject, event: str) -> ast.Hook | None:
+        keepalive = event == "keepalive"
+        what = f"the `{event}` hook"
+        m = self.members(obj, what, ("name", "interval", "arguments") if keepalive else ("name", "arguments"))
+        target = self.name(obj, m, what)
+        every = None
+        if keepalive:
+            interval = self.required(obj, m, "interval", what, lambda v, _: self.expr(v, "float"))
+            every = None if interval is None else ast.Duration(interval, "ms", interval.span)
+        if target is None:
+            return None
+        args = self.args(m.get("arguments"), self.interface_types.get(target.text, ()))
+        return ast.Hook(event, ast.Call(target, args, obj.span), every, obj.span)
+
+    def primitive(self, obj: JObject) -> ast.PrimitiveDecl | None:
+        m = self.members(obj, "a primitive", _PRIMITIVE)
+        name = self.name(obj, m, "a primitive")
+        clauses: list[ast.PrimitiveClause] = []
+        connection = self.ident(m["connection"], "`connection`") if "connection" in m else None
+        if connection is not None:
+            clauses.append(ast.On(connection, connection.span))
+        encodings = [(kind, s) for kind in ("pack", "format") if (s := self.string(m.get(kind), f"`{kind}`"))]
+        slots = _slot_types(*encodings[0]) if encodings else {}
+        written = self.array(m.get("formatArgs"), "`formatArgs`")
+        args = _present([self.expr(a, slots.get(i)) for i, a in enumerate(written)])
+        if written and not encodings:
+            self.error(m["formatArgs"].span, "`formatArgs` without a `pack` or `format` to send them with")
+        for kind, s in encodings:
+            clauses.append(ast.Encoding(kind, ast.StrLit(s.value, s.span), args, s.span))
+        for kind in ("unpack", "regex"):
+            s = self.string(m.get(kind), f"`{kind}`")
+            if s is not None:
+                clauses.append(ast.Decoding(kind, ast.StrLit(s.value, s.span), s.span))
+        actions = self.array(m.get("postActions"), "`postActions`")
+        if actions:  # none is the default, left unsaid
+            assigns = _present([self.post_action(a) for a in actions])
+            clauses.append(ast.Actions(assigns, m["postActions"].span))
+
+        def infer(param: ast.Ident) -> str:
+            bare = (i for i, a in enumerate(args) if isinstance(a, ast.Ref) and a.name == param.text and i in slots)
+            return next((slots[i] for i in bare), "int")
+
+        params = self.params(m, infer)
+        if name is None:
+            return None
+        self.primitive_types[name.text] = tuple(p.type.text for p in params)
+        return ast.PrimitiveDecl(name, params, tuple(clauses), obj.span, self.doc(m))
+
+    def interface(self, obj: JObject) -> ast.InterfaceDecl | None:
+        m = self.members(obj, "an interface", _INTERFACE)
+        name = self.name(obj, m, "an interface")
+        clauses: list[ast.InterfaceClause] = []
+        kind = self.string(m.get("type"), "`type`")
+        if kind is not None and kind.value not in ("adhoc", "periodic"):
+            self.error(kind.span, f"an interface's `type` is `adhoc` or `periodic`, not {kind.raw}")
+        elif kind is not None and kind.value == "periodic":  # adhoc is the default, left unsaid
+            clauses.append(ast.Kind("periodic", kind.span))
+        triggers = self.ident(m["triggers"], "`triggers`") if "triggers" in m else None
+        if triggers is not None:
+            clauses.append(ast.Triggers(triggers, triggers.span))
+        calls = [self.object(item, "a primitive call") for item in self.array(m.get("primitiveCalls"), "`primitiveCalls`")]
+        body = _present([None if c is None else self.call_stmt(c) for c in calls])
+
+        def infer(param: ast.Ident) -> str:
+            for stmt in body:
+                for arg, type_ in zip(stmt.call.args, self.primitive_types.get(stmt.call.target.text, ())):
+                    if isinstance(arg, ast.Ref) and arg.name == param.text:
+                        return type_
+            return "float"
+
+        params = self.params(m, infer)
+        if name is None:
+            return None
+        self.interface_types[name.text] = tuple(p.type.text for p in params)
+        return ast.InterfaceDecl(name, params, tuple(clauses), tuple(body), obj.span, self.doc(m))
+
+    def call_stmt(self, obj: JObject) -> ast.CallStmt | None:
+        m = self.members(obj, "a primitive call", _CALL)
+        target = self.name(obj, m, "a primitive call")
+        if target is None:
+            return None
+        args = self.args(m.get("arguments"), self.primitive_types.get(target.text, ()))
+        delay = priority = None
+        if "delay" in m and not _is_zero(m["delay"]):  # 0 is the default, left unsaid
+            delay = self.expr(m["delay"], "float")
+        if "priority" in m and not _is_zero(m["priority"]):
+            priority = self.expr(m["priority"], "int")
+        delays = _present([None if delay is None else ast.Duration(delay, "ms", delay.span)])
+        return ast.CallStmt(ast.Call(target, args, obj.span), delays, _present([priority]), obj.span)
+
+    def adapter(self, obj: JObject) -> ast.AdapterDecl | None:
+        m = self.members(obj, "an adapter", _ADAPTER)
+        name = self.name(obj, m, "an adapter")
+        ros = self.string(m.get("ros"), "`ros`")
+        objects = [self.object(item, "an adapter field") for item in self.array(m.get("fields"), "`fields`")]
+        built = _present([None if f is None else self.field(f) for f in objects])
+        if name is None:
+            return None
+        self.adapter_fields[name.text] = {f.name.text: f.type.text for f in built}
+        return ast.AdapterDecl(name, _text(ros), built, obj.span, self.doc(m))
+
+    def field(self, obj: JObject) -> ast.FieldDecl | None:
+        m = self.members(obj, "an adapter field", _FIELD)
+        name = self.name(obj, m, "an adapter field")
+        type_ = self.required(obj, m, "type", "an adapter field", self.ident)
+        unit, ros = self.string(m.get("unit"), "`unit`"), self.string(m.get("ros"), "`ros`")
+        if name is None or type_ is None:
+            return None
+        return ast.FieldDecl(name, type_, _text(unit), _text(ros), obj.span, self.doc(m))
+
+    def input(self, obj: JObject) -> ast.InputDecl | None:
+        m = self.members(obj, "a domain interface", _INPUT)
+        name = self.name(obj, m, "a domain interface")
+        params = [i for v in self.array(m.get("parameters"), "`parameters`") if (i := self.ident(v, "a parameter"))]
+        calls = self.required(obj, m, "calls", "a domain interface", self.object)
+        if name is None or calls is None:
+            return None
+        c = self.members(calls, "`calls`", ("name", "arguments"))
+        target = self.name(calls, c, "`calls`")
+        if target is None:
+            return None
+        args = self.args(c.get("arguments"), self.interface_types.get(target.text, ()))
+        adapter = self.adapter_of(obj, m, name, params)
+        call = ast.Call(target, args, calls.span)
+        return ast.InputDecl(name, adapter, call, obj.span, self.doc(m))
+
+    def output(self, obj: JObject) -> ast.OutputDecl | None:
+        m = self.members(obj, "a domain output", _OUTPUT)
+        name = self.name(obj, m, "a domain output")
+        returns = self.required(obj, m, "returns", "a domain output", self.object)
+        if name is None or returns is None:
+            return None
+        written = [(field_, value) for key, value in returns.members if (field_ := self.ident(key, "a field"))]
+        adapter = self.adapter_of(obj, m, name, [field_ for field_, _ in written])
+        types = self.adapter_fields.get(adapter.text, {})
+        assigns = []
+        for field_, value in written:
+            expr = self.expr(value, types.get(field_.text))
+            assigns.append(None if expr is None else ast.Assign(field_, expr, value.span))
+        return ast.OutputDecl(name, adapter, _present(assigns), obj.span, self.doc(m))
+
+    def adapter_of(self, obj: JObject, m: Members, element: ast.Ident, names: list[ast.Ident]) -> ast.Ident:
+        """The adapter named, else the standard one with exactly these fields, else a new one."""
+        if "adapter" in m:
+            return self.ident(m["adapter"], "`adapter`") or ast.Ident("", m["adapter"].span)
+        wanted = {n.text for n in names}
+        for adapter, fields_ in self.standard.items():
+            if set(fields_) == wanted:
+                return ast.Ident(adapter, self.opening(obj))
+        base = "".join(part[:1].upper() + part[1:] for part in element.text.split("_")) + "Message"
+        made, n = base, 2
+        while made in self.adapter_fields:
+            made, n = f"{base}{n}", n + 1
+        decl_fields = tuple(ast.FieldDecl(f, ast.Ident("float", f.span), None, None, f.span) for f in names)
+        self.made_adapters.append(ast.AdapterDecl(ast.Ident(made, element.span), None, decl_fields, obj.span))
+        self.adapter_fields[made] = {f.text: "float" for f in names}
+        return ast.Ident(made, element.span)
+
+    # -- parameters, arguments and expressions --
+
+    def params(self, m: Members, infer: Callable[[ast.Ident], str]) -> tuple[ast.Param, ...]:
+        names = [i for v in self.array(m.get("parameters"), "`parameters`") if (i := self.ident(v, "a parameter"))]
+        if "parameterTypes" not in m:
+            return tuple(ast.Param(n, ast.Ident(infer(n), n.span), n.span) for n in names)
+        types = [i for v in self.array(m["parameterTypes"], "`parameterTypes`") if (i := self.ident(v, "a type"))]
+        if len(types) != len(names):
+            self.error(m["parameterTypes"].span, f"`parameterTypes` has {len(types)} entries for {len(names)} parameters")
+            return ()
+        return tuple(ast.Param(n, t, n.span) for n, t in zip(names, types))
+
+    def args(self, value: JValue | None, types: tuple[str, ...]) -> tuple[ast.Expr, ...]:
+        items = self.array(value, "`arguments`")
+        return _present([self.expr(a, types[i] if i < len(types) else None) for i, a in enumerate(items)])
+
+    def expr(self, v: JValue, type_: str | None) -> ast.Expr | None:
+        """An expression: a JSON literal, `""` (the default of `type_`), `"<expr>"`, or a string."""
+        match v:
+            case JBool(value, span):
+                return ast.BoolLit(value, span)
+            case JNumber(value, span):
+                return _number(value, span)
+            case JString("", _, span):
+                return _literal(_DEFAULTS.get(type_ or "", ""), span)
+            case JString(value, _, span) if not _embedded(value):
+                return ast.StrLit(value, span)
+            case JString():
+                offsets = self.offsets(v)
+                return self.parse(v.value[1:-1], offsets[1 : len(v.value)])
+        self.error(v.span, f"expected an expression (a number, true/false or a string), found {_kind(v)}")
+        return None
+
+    def post_action(self, v: JValue) -> ast.Assign | None:
+        """`"state = expr"` (or `"<state = expr>"`), with the reply as `__out__`."""
+        s = self.string(v, "a post-action")
+        if s is None:
+            return None
+        text, offsets = s.value, self.offsets(s)
+        if _embedded(text):
+            text, offsets = text[1:-1], offsets[1 : len(text)]
+        m = _ASSIGNMENT.match(text)
+        if m is None or not _NAME.fullmatch(m.group(1)):
+            self.error(s.span, "a post-action is written `state = expression`", help='e.g. "bumperStates = __out__[0]"')
+            return None
+        target = ast.Ident(m.group(1), Span(self.path, offsets[m.start(1)], offsets[m.end(1)]))
+        text, offsets = _reply_as_out(text[m.end() :], offsets[m.end() :])
+        value = self.parse(text, offsets)
+        return None if value is None else ast.Assign(target, value, s.span)
+
+    def offsets(self, s: JString) -> list[int]:
+        """The file offset of each character of a decoded string, then of its closing quote."""
+        if "\\" not in s.raw:
+            return list(range(s.span.start + 1, s.span.end))
+        return [s.span.start + m.start() for m in _JSON_CHAR.finditer(s.raw, 1, len(s.raw) - 1)] + [s.span.end - 1]
+
+    def parse(self, text: str, offsets: list[int]) -> ast.Expr | None:
+        """Parse `text`, whose character i is at file offset offsets[i]."""
+        if offsets[-1] - offsets[0] == len(text):  # written as is: spans are a plain shift
+            return parse_expression(self.path, text, offsets[0], self.d)
+        local = Diagnostics()
+        expr = parse_expression(self.path, text, 0, local)
+
+        def place(span: Span) -> Span:
+            return Span(self.path, offsets[span.start], offsets[span.end])
+
+        for d in local.items:
+            labels = tuple(Label(place(label.span), label.message) for label in d.labels)
+            span = None if d.span is None else place(d.span)
+            self.d.report(d.code, span, d.message, label=d.label, labels=labels, help=d.help)
+        return None if expr is None else _respan(expr, place)
+
+    # -- members of the expected kinds --
+
+    def error(self, span: Span, message: str, help: str | None = None) -> None:
+        self.d.report("E008", span, message, help=help)
+
+    def opening(self, obj: JObject) -> Span:
+        """The `{` of an object: where a member it lacks is reported."""
+        return Span(self.path, obj.span.start, obj.span.start + 1)
+
+    def members(self, obj: JObject, what: str, known: tuple[str, ...]) -> Members:
+        found: Members = {}
+        for key, value in obj.members:
+            if key.value in known:
+                found[key.value] = value
+                continue
+            close = difflib.get_close_matches(key.value, known, n=1)
+            hint = f"did you mean `{close[0]}`?" if close else "known members: " + ", ".join(f"`{k}`" for k in known)
+            self.error(key.span, f"unknown member `{key.value}` in {what}", help=hint)
+        return found
+
+    def required(self, obj: JObject, m: Members, key: str, what: str, get: Callable[[JValue, str], Any]) -> Any:
+        if key not in m:
+            self.error(self.opening(obj), f"{what} has no `{key}`")
+            return None
+        return get(m[key], f"`{key}`")
+
+    def name(self, obj: JObject, m: Members, what: str) -> ast.Ident | None:
+        return self.required(obj, m, "name", what, self.ident)
+
+    def ident(self, v: JValue, what: str) -> ast.Ident | None:
+        s = self.string(v, what)
+        if s is None:
+            return None
+        if not _NAME.fullmatch(s.value):
+            self.error(s.span, f"{what} must be a name (a letter, then letters, digits or `_`), found {s.raw}")
+            return None
+        return ast.Ident(s.value, self.inner(s))
+
+    def inner(self, s: JString) -> Span:
+        """The characters between the quotes, when they are written as is."""
+        return s.span if "\\" in s.raw else Span(self.path, s.span.start + 1, s.span.end - 1)
+
+    def string(self, v: JValue | None, what: str) -> JString | None:
+        return self.expect(v, JString, what, "a string")
+
+    def object(self, v: JValue | None, what: str) -> JObject | None:
+        return self.expect(v, JObject, what, "an object")
+
+    def array(self, v: JValue | None, what: str) -> tuple[JValue, ...]:
+        found = self.expect(v, JArray, what, "an array")
+        return () if found is None else found.items
+
+    def expect(self, v: JValue | None, kind: type, what: str, words: str) -> Any:
+        if v is None or isinstance(v, kind):
+            return v
+        self.error(v.span, f"{what} must be {words}, found {_kind(v)}")
+        return None
+
+    def doc(self, m: Members) -> str | None:
+        """A doc text as the parser would read it back from `///` lines."""
+        s = self.string(m.get("doc"), "`doc`")
+        return None if s is None else "\n".join(line.rstrip() for line in s.value.split("\n")).strip()
+
+
+# ---- helpers -------------------------------------------------------------------------------
+
+# One character of a JSON string body: a surrogate pair escape decodes to one character.
+_JSON_CHAR = re.compile(r"\\u[dD][89abAB][0-9a-fA-F]{2}\\u[dD][c-fC-F][0-9a-fA-F]{2}|\\u[0-9a-fA-F]{4}|\\.|.", re.DOTALL)
+_ASSIGNMENT = re.compile(r"\s*([A-Za-z_]\w*)\s*=(?!=)")
+# `__out__` as an identifier; string literals are matched (and skipped) so that their text is left alone.
+_OUT = re.compile(r'r?"(?:[^"\\\n]|\\.)*"|(?<![A-Za-z0-9_])(__out__)(?![A-Za-z0-9_])')
+
+
+def _present(items: list[Any]) -> tuple[Any, ...]:
+    """The items built; a missing one was reported, and `each` leaves its element out."""
+    return tuple(x for x in items if x is not None)
+
+
+def _text(s: JString | None) -> str | None:
+    return None if s is None else s.value
+
+
+def _embedded(value: str) -> bool:
+    return len(value) >= 3 and value[0] == "<" and value[-1] == ">"
+
+
+def _is_zero(v: JValue) -> bool:
+    return isinstance(v, JNumber) and v.value == 0
+
+
+def _number(value: float, span: Span) -> ast.Expr:
+    """A JSON number as the parser would read it: a negative one is a unary minus."""
+    if value < 0 or str(value).startswith("-"):
+        return ast.Unary("-", _literal(-value, Span(span.path, span.start + 1, span.end)), span)
+    return _literal(value, span)
+
+
+def _literal(value: Any, span: Span) -> ast.Expr:
+    if isinstance(value, bool):
+        return ast.BoolLit(value, span)
+    if isinstance(value, int):
+        return ast.IntLit(value, span)
+    if isinstance(value, float):
+        return ast.FloatLit(value, span)
+    return ast.StrLit(value, span)
+
+
+def _slot_types(kind: str, template: JString) -> dict[int, str]:
+    """The type each format argument takes, by position: struct codes for `pack`;
+    for `format`, the spec's type (e/f/g/% float, anything else int)."""
+    try:
+        if kind == "pack":
+            return {i: slot.type.value for i, slot in enumerate(formats.struct_layout(template.value).slots)}
+        specs = formats.format_fields(template.value)
+    except formats.TemplateError:  # the checker reports it; nothing to infer from
+        return {}
+    return {i: "float" if f.spec[-1:] and f.spec[-1] in _FLOAT_SPECS else "int" for i, f in enumerate(specs)}
+
+
+def _reply_as_out(text: str, offsets: list[int]) -> tuple[str, list[int]]:
+    """Replace the identifier `__out__` by `out`, keeping each character's file offset."""
+    pieces, places, last = [], [], 0
+    for m in _OUT.finditer(text):
+        if m.group(1) is None:
+            continue
+        pieces.append(text[last : m.start()] + "out")
+        places += offsets[last : m.start() + 3]
+        last = m.end()
+    return "".join(pieces) + text[last:], places + offsets[last:]
+
+
+def _respan(node: Any, place: Callable[[Span], Span]) -> Any:
+    """A copy of an AST node with every span moved by `place`."""
+    if isinstance(node, Span):
+        return place(node)
+    if isinstance(node, tuple):
+        return tuple(_respan(x, place) for x in node)
+    if is_dataclass(node) and not isinstance(node, type):
+        return replace(node, **{f.name: _respan(getattr(node, f.name), place) for f in fields(node)})
+    return node
