@@ -19,7 +19,8 @@ an adapter of float fields made for it.
 
 A member of the wrong kind, a missing name or an unknown member is an E008 error
 at the offending value, and the element it belongs to is left out (as the parser
-leaves out a declaration with a syntax error).
+leaves out a declaration with a syntax error). Size, nesting and the number of
+values are bounded (E005) before Lark sees the text.
 """
 
 from __future__ import annotations
@@ -41,6 +42,7 @@ from rdisc.syntax.build import MAX_INT_DIGITS
 from rdisc.syntax.parse import MAX_FILE_CHARS, parse, parse_expression
 
 MAX_DEPTH = 100  # nesting of JSON arrays and objects
+MAX_VALUES = 200_000  # a description has thousands; parsing costs about 15 µs a value
 
 # ---- JSON values with their places -------------------------------------------------------
 
@@ -99,10 +101,12 @@ def read_json(path: str, text: str, diagnostics: Diagnostics) -> JValue | None:
     """Any JSON text, with places; None after an E005/E008 diagnostic."""
     if len(text) > MAX_FILE_CHARS:
         diagnostics.report(
-            "E005", Span(path, 0, 0), f"file is too large ({len(text)} characters; the limit is {MAX_FILE_CHARS})"
+            "E005",
+            Span(path, 0, 0),
+            f"file is too large ({len(text)} characters; the limit is {MAX_FILE_CHARS})",
         )
         return None
-    if not _nesting_ok(path, text, diagnostics):
+    if not _bounded(path, text, diagnostics):
         return None
     import lark
 
@@ -129,23 +133,27 @@ def _json_parser():  # -> lark.Lark, imported lazily like the RDIS parser
     )
 
 
-# A string (closed or not: each is scanned once) or a bracket.
-_BRACKET_OR_STRING = re.compile(r'"(?:[^"\\\n]|\\.)*"?|[\[\]{}]')
+# A string (closed or not: each is scanned once), a bracket or a comma.
+_STRUCTURE = re.compile(r'"(?:[^"\\\n]|\\.)*"?|[\[\]{},]')
 
 
-def _nesting_ok(path: str, text: str, diagnostics: Diagnostics) -> bool:
-    """Bound the nesting before parsing, so that building values cannot recurse deeply."""
-    depth = 0
-    for m in _BRACKET_OR_STRING.finditer(text):
+def _bounded(path: str, text: str, diagnostics: Diagnostics) -> bool:
+    """Bound the nesting and the number of values before parsing, so that neither
+    building values (recursive) nor parsing (time) can be made to explode."""
+    depth = values = 0
+    for m in _STRUCTURE.finditer(text):
         c = m.group()
+        if c in "[{,":
+            values += 1
+            if values > MAX_VALUES:
+                message = f"JSON has too many values (the limit is {MAX_VALUES})"
+                diagnostics.report("E005", Span(path, m.start(), m.end()), message)
+                return False
         if c in "[{":
             depth += 1
             if depth > MAX_DEPTH:
-                diagnostics.report(
-                    "E005",
-                    Span(path, m.start(), m.end()),
-                    f"JSON is nested too deeply (the limit is {MAX_DEPTH} levels)",
-                )
+                message = f"JSON is nested too deeply (the limit is {MAX_DEPTH} levels)"
+                diagnostics.report("E005", Span(path, m.start(), m.end()), message)
                 return False
         elif c in "]}":
             depth -= 1
@@ -180,7 +188,9 @@ def _report_json_error(err, path: str, text: str, diagnostics: Diagnostics) -> N
     token = err.token
     expected = set(err.interactive_parser.accepts()) if err.interactive_parser else set(err.expected)
     words = ["a value"] if _VALUE_START <= expected else []
-    words += sorted(_TOKEN_WORDS[t] for t in expected - (_VALUE_START if words else set()) if t in _TOKEN_WORDS)
+    words += sorted(
+        _TOKEN_WORDS[t] for t in expected - (_VALUE_START if words else set()) if t in _TOKEN_WORDS
+    )
     wanted = words[0] if len(words) == 1 else ", ".join(words[:-1]) + " or " + words[-1]
     if token.type == "$END":
         found, span = "the end of the file", Span(path, len(text), len(text))
@@ -201,14 +211,18 @@ def _character_error(text: str, at: int) -> tuple[int, int, str]:
     bad = prefix.end() if prefix else at
     char = text[bad] if bad < len(text) else ""
     if char == "\\":
-        return bad, bad + 2, f"invalid JSON: unknown escape `{text[bad:bad + 2]}` in a string"
+        return bad, bad + 2, f"invalid JSON: unknown escape `{text[bad : bad + 2]}` in a string"
     if char in ("", "\n", "\r"):
         return at, bad, "invalid JSON: unterminated string"
-    return bad, bad + 1, f"invalid JSON: control character U+{ord(char):04X} in a string (write it as an escape)"
+    return (
+        bad,
+        bad + 1,
+        f"invalid JSON: control character U+{ord(char):04X} in a string (write it as an escape)",
+    )
 
 
 class _Values:
-    """Lark tree → JSON values (recursion bounded by `_nesting_ok`)."""
+    """Lark tree → JSON values (recursion bounded by `_bounded`)."""
 
     def __init__(self, path: str, diagnostics: Diagnostics) -> None:
         self.path = path
@@ -340,7 +354,16 @@ class _Importer:
         inputs = self.each(top, "domainInterfaces", self.input)
         outputs = self.each(top, "domainOutputs", self.output)
         decls: list[ast.Decl] = [] if robot is None else [robot]
-        decls += [*states, *connections, *primitives, *interfaces, *adapters, *self.made_adapters, *inputs, *outputs]
+        decls += [
+            *states,
+            *connections,
+            *primitives,
+            *interfaces,
+            *adapters,
+            *self.made_adapters,
+            *inputs,
+            *outputs,
+        ]
         return ast.Module(self.path, tuple(decls), tuple(self.damaged))
 
     def each(self, top: Members, key: str, build: Callable[[JObject], Any]) -> list[Any]:
@@ -388,8 +411,11 @@ class _Importer:
         built = []
         for key, group in groups.members if groups else ():
             if key.value != "spp":
-                self.error(key.span, f"unknown connection kind `{key.value}`",
-                           help="serial connections are listed under `spp`")
+                self.error(
+                    key.span,
+                    f"unknown connection kind `{key.value}`",
+                    help="serial connections are listed under `spp`",
+                )
                 continue
             kind = ast.Ident("serial", key.span)
             built += self.each({"spp": group}, "spp", partial(self.connection, kind=kind))
@@ -403,11 +429,17 @@ class _Importer:
         attrs: list[ast.ConnectionAttr | None] = [None if baud is None else ast.Baud(baud, baud.span)]
         threading = self.object(m.get("singleThreading"), "`singleThreading`")
         if threading is None:
-            attrs.append(ast.Threading(ast.Ident("single", brace), ast.IntLit(DEFAULT_FREQUENCY_HZ, brace), brace))
+            attrs.append(
+                ast.Threading(ast.Ident("single", brace), ast.IntLit(DEFAULT_FREQUENCY_HZ, brace), brace)
+            )
         else:
             t = self.members(threading, "`singleThreading`", ("freqHz",))
-            hz = self.required(threading, t, "freqHz", "`singleThreading`", lambda v, _: self.expr(v, "float"))
-            attrs.append(None if hz is None else ast.Threading(ast.Ident("single", threading.span), hz, threading.span))
+            hz = self.required(
+                threading, t, "freqHz", "`singleThreading`", lambda v, _: self.expr(v, "float")
+            )
+            attrs.append(
+                None if hz is None else ast.Threading(ast.Ident("single", threading.span), hz, threading.span)
+            )
         for event in ("startup", "terminate", "keepalive"):
             hook = self.object(m.get(event), f"`{event}`")
             attrs.append(None if hook is None else self.hook(hook, event))
@@ -454,7 +486,11 @@ class _Importer:
             clauses.append(ast.Actions(assigns, m["postActions"].span))
 
         def infer(param: ast.Ident) -> str:
-            bare = (i for i, a in enumerate(args) if isinstance(a, ast.Ref) and a.name == param.text and i in slots)
+            bare = (
+                i
+                for i, a in enumerate(args)
+                if isinstance(a, ast.Ref) and a.name == param.text and i in slots
+            )
             return next((slots[i] for i in bare), "int")
 
         params = self.params(m, infer)
@@ -475,7 +511,10 @@ class _Importer:
         triggers = self.ident(m["triggers"], "`triggers`") if "triggers" in m else None
         if triggers is not None:
             clauses.append(ast.Triggers(triggers, triggers.span))
-        calls = [self.object(item, "a primitive call") for item in self.array(m.get("primitiveCalls"), "`primitiveCalls`")]
+        calls = [
+            self.object(item, "a primitive call")
+            for item in self.array(m.get("primitiveCalls"), "`primitiveCalls`")
+        ]
         body = _present([None if c is None else self.call_stmt(c) for c in calls])
 
         def infer(param: ast.Ident) -> str:
@@ -528,7 +567,9 @@ class _Importer:
     def input(self, obj: JObject) -> ast.InputDecl | None:
         m = self.members(obj, "a domain interface", _INPUT)
         name = self.name(obj, m, "a domain interface")
-        params = [i for v in self.array(m.get("parameters"), "`parameters`") if (i := self.ident(v, "a parameter"))]
+        params = [
+            i for v in self.array(m.get("parameters"), "`parameters`") if (i := self.ident(v, "a parameter"))
+        ]
         calls = self.required(obj, m, "calls", "a domain interface", self.object)
         if name is None or calls is None:
             return None
@@ -547,7 +588,9 @@ class _Importer:
         returns = self.required(obj, m, "returns", "a domain output", self.object)
         if name is None or returns is None:
             return None
-        written = [(field_, value) for key, value in returns.members if (field_ := self.ident(key, "a field"))]
+        written = [
+            (field_, value) for key, value in returns.members if (field_ := self.ident(key, "a field"))
+        ]
         adapter = self.adapter_of(obj, m, name, [field_ for field_, _ in written])
         types = self.adapter_fields.get(adapter.text, {})
         assigns = []
@@ -576,12 +619,19 @@ class _Importer:
     # -- parameters, arguments and expressions --
 
     def params(self, m: Members, infer: Callable[[ast.Ident], str]) -> tuple[ast.Param, ...]:
-        names = [i for v in self.array(m.get("parameters"), "`parameters`") if (i := self.ident(v, "a parameter"))]
+        names = [
+            i for v in self.array(m.get("parameters"), "`parameters`") if (i := self.ident(v, "a parameter"))
+        ]
         if "parameterTypes" not in m:
             return tuple(ast.Param(n, ast.Ident(infer(n), n.span), n.span) for n in names)
-        types = [i for v in self.array(m["parameterTypes"], "`parameterTypes`") if (i := self.ident(v, "a type"))]
+        types = [
+            i for v in self.array(m["parameterTypes"], "`parameterTypes`") if (i := self.ident(v, "a type"))
+        ]
         if len(types) != len(names):
-            self.error(m["parameterTypes"].span, f"`parameterTypes` has {len(types)} entries for {len(names)} parameters")
+            self.error(
+                m["parameterTypes"].span,
+                f"`parameterTypes` has {len(types)} entries for {len(names)} parameters",
+            )
             return ()
         return tuple(ast.Param(n, t, n.span) for n, t in zip(names, types))
 
@@ -616,7 +666,11 @@ class _Importer:
             text, offsets = text[1:-1], offsets[1 : len(text)]
         m = _ASSIGNMENT.match(text)
         if m is None or not _NAME.fullmatch(m.group(1)):
-            self.error(s.span, "a post-action is written `state = expression`", help='e.g. "bumperStates = __out__[0]"')
+            self.error(
+                s.span,
+                "a post-action is written `state = expression`",
+                help='e.g. "bumperStates = __out__[0]"',
+            )
             return None
         target = ast.Ident(m.group(1), Span(self.path, offsets[m.start(1)], offsets[m.end(1)]))
         text, offsets = _reply_as_out(text[m.end() :], offsets[m.end() :])
@@ -627,7 +681,9 @@ class _Importer:
         """The file offset of each character of a decoded string, then of its closing quote."""
         if "\\" not in s.raw:
             return list(range(s.span.start + 1, s.span.end))
-        return [s.span.start + m.start() for m in _JSON_CHAR.finditer(s.raw, 1, len(s.raw) - 1)] + [s.span.end - 1]
+        return [s.span.start + m.start() for m in _JSON_CHAR.finditer(s.raw, 1, len(s.raw) - 1)] + [
+            s.span.end - 1
+        ]
 
     def parse(self, text: str, offsets: list[int]) -> ast.Expr | None:
         """Parse `text`, whose character i is at file offset offsets[i]."""
@@ -661,11 +717,17 @@ class _Importer:
                 found[key.value] = value
                 continue
             close = difflib.get_close_matches(key.value, known, n=1)
-            hint = f"did you mean `{close[0]}`?" if close else "known members: " + ", ".join(f"`{k}`" for k in known)
+            hint = (
+                f"did you mean `{close[0]}`?"
+                if close
+                else "known members: " + ", ".join(f"`{k}`" for k in known)
+            )
             self.error(key.span, f"unknown member `{key.value}` in {what}", help=hint)
         return found
 
-    def required(self, obj: JObject, m: Members, key: str, what: str, get: Callable[[JValue, str], Any]) -> Any:
+    def required(
+        self, obj: JObject, m: Members, key: str, what: str, get: Callable[[JValue, str], Any]
+    ) -> Any:
         if key not in m:
             self.error(self.opening(obj), f"{what} has no `{key}`")
             return None
@@ -679,7 +741,9 @@ class _Importer:
         if s is None:
             return None
         if not _NAME.fullmatch(s.value):
-            self.error(s.span, f"{what} must be a name (a letter, then letters, digits or `_`), found {s.raw}")
+            self.error(
+                s.span, f"{what} must be a name (a letter, then letters, digits or `_`), found {s.raw}"
+            )
             return None
         return ast.Ident(s.value, self.inner(s))
 
@@ -712,7 +776,9 @@ class _Importer:
 # ---- helpers -------------------------------------------------------------------------------
 
 # One character of a JSON string body: a surrogate pair escape decodes to one character.
-_JSON_CHAR = re.compile(r"\\u[dD][89abAB][0-9a-fA-F]{2}\\u[dD][c-fC-F][0-9a-fA-F]{2}|\\u[0-9a-fA-F]{4}|\\.|.", re.DOTALL)
+_JSON_CHAR = re.compile(
+    r"\\u[dD][89abAB][0-9a-fA-F]{2}\\u[dD][c-fC-F][0-9a-fA-F]{2}|\\u[0-9a-fA-F]{4}|\\.|.", re.DOTALL
+)
 _ASSIGNMENT = re.compile(r"\s*([A-Za-z_]\w*)\s*=(?!=)")
 # `__out__` as an identifier; string literals are matched (and skipped) so that their text is left alone.
 _OUT = re.compile(r'r?"(?:[^"\\\n]|\\.)*"|(?<![A-Za-z0-9_])(__out__)(?![A-Za-z0-9_])')

@@ -23,8 +23,7 @@ _RAW_SPELLABLE = re.compile(r'(?:[^"\\\n]|\\[^\n])*')
 
 
 def print_module(module: ast.Module) -> str:
-    return "".join("\n".join(_decl(d)) + "\n" + ("\n" if i < len(module.decls) - 1 else "")
-                   for i, d in enumerate(module.decls))
+    return "\n".join("\n".join(_decl(d)) + "\n" for d in module.decls)
 
 
 def print_expr(expr: ast.Expr) -> str:
@@ -80,7 +79,8 @@ def _code(d: ast.Decl) -> list[str]:
         case ast.PrimitiveDecl():
             return _primitive(d)
         case ast.InterfaceDecl(name, params, clauses, body):
-            head = f"interface {name.text}({_params(params)})" + "".join(" " + _interface_clause(c) for c in clauses)
+            words = "".join(" " + _interface_clause(c) for c in clauses)
+            head = f"interface {name.text}({_params(params)}){words}"
             return _block(head, [line for stmt in body for line in _call_stmt(stmt)])
         case ast.AdapterDecl(name, ros, fields):
             head = f"adapter {name.text}" + ("" if ros is None else f" ros {p.quote(ros)}")

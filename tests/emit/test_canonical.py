@@ -40,7 +40,10 @@ def model() -> m.Model:
         },
         connections={
             "link": m.Connection(
-                "link", "serial", 57600, 40.0,
+                "link",
+                "serial",
+                57600,
+                40.0,
                 startup=m.HookCall(m.InterfaceRef("go"), (const(0.5, Type.FLOAT),)),
                 keepalive=m.Keepalive(ping, 2.5),
                 doc="The radio.",
@@ -68,8 +71,13 @@ def model() -> m.Model:
                     ),
                     m.PostAction(
                         m.StateRef("armed"),
-                        m.UnaryOp("not", m.BinaryOp("==", var("hits", Type.INT, Scope.STATE),
-                                                    const(0, Type.INT), Type.BOOL), Type.BOOL),
+                        m.UnaryOp(
+                            "not",
+                            m.BinaryOp(
+                                "==", var("hits", Type.INT, Scope.STATE), const(0, Type.INT), Type.BOOL
+                            ),
+                            Type.BOOL,
+                        ),
                     ),
                 ),
                 doc="Read the sensor.",
@@ -83,8 +91,13 @@ def model() -> m.Model:
                 (
                     m.PrimitiveCall(
                         m.PrimitiveRef("move"),
-                        (m.FuncCall("round", (m.BinaryOp("*", speed, const(-1000.0, Type.FLOAT), Type.FLOAT),),
-                                    Type.INT),),
+                        (
+                            m.FuncCall(
+                                "round",
+                                (m.BinaryOp("*", speed, const(-1000.0, Type.FLOAT), Type.FLOAT),),
+                                Type.INT,
+                            ),
+                        ),
                         delay_ms=100.0,
                     ),
                     m.PrimitiveCall(
@@ -96,7 +109,11 @@ def model() -> m.Model:
                 ),
             ),
             "poll": m.Interface(
-                "poll", (), True, (m.PrimitiveCall(m.PrimitiveRef("sense"), ()),), triggers=m.OutputRef("bump")
+                "poll",
+                (),
+                True,
+                (m.PrimitiveCall(m.PrimitiveRef("sense"), ()),),
+                triggers=m.OutputRef("bump"),
             ),
         },
         adapters={
@@ -113,17 +130,36 @@ def model() -> m.Model:
         },
         inputs={
             "wheels": m.DomainInput(
-                "wheels", m.AdapterRef("Wheels"), m.InterfaceRef("go"),
-                (m.IfElse(m.BinaryOp(">", var("left", scope=Scope.FIELD), var("right", scope=Scope.FIELD), Type.BOOL),
-                          var("left", scope=Scope.FIELD), const(math.inf, Type.FLOAT), Type.FLOAT),),
+                "wheels",
+                m.AdapterRef("Wheels"),
+                m.InterfaceRef("go"),
+                (
+                    m.IfElse(
+                        m.BinaryOp(
+                            ">", var("left", scope=Scope.FIELD), var("right", scope=Scope.FIELD), Type.BOOL
+                        ),
+                        var("left", scope=Scope.FIELD),
+                        const(math.inf, Type.FLOAT),
+                        Type.FLOAT,
+                    ),
+                ),
             ),
         },
         outputs={
             "bump": m.DomainOutput(
                 "bump",
                 m.AdapterRef("Range"),
-                (("distance", m.IfElse(var("armed", Type.BOOL, Scope.STATE), const(0, Type.FLOAT),
-                                       const(1e-05, Type.FLOAT), Type.FLOAT)),),
+                (
+                    (
+                        "distance",
+                        m.IfElse(
+                            var("armed", Type.BOOL, Scope.STATE),
+                            const(0, Type.FLOAT),
+                            const(1e-05, Type.FLOAT),
+                            Type.FLOAT,
+                        ),
+                    ),
+                ),
                 doc="Obstacle ahead.",
             ),
         },

@@ -11,7 +11,7 @@ from hypothesis import strategies as st
 
 from rdisc.compile import compile_path
 from rdisc.diagnostics import Diagnostics
-from rdisc.emit.json_import import MAX_DEPTH, read
+from rdisc.emit.json_import import MAX_DEPTH, MAX_VALUES, read
 from rdisc.source import SourceFile
 from rdisc.syntax import ast
 from rdisc.syntax.printer import print_module
@@ -51,7 +51,9 @@ def test_spans_point_into_the_json() -> None:
     assert text[product.span.start : product.span.end] == "velocity * 1000"
     assert text[product.left.span.start : product.left.span.end] == "velocity"
     assert SourceFile("t.json", text).position(product.span.start).line + 1 == 31
-    (assign,) = next(c for c in decl(module, ast.PrimitiveDecl, "bumpers").clauses if isinstance(c, ast.Actions)).assigns
+    (assign,) = next(
+        c for c in decl(module, ast.PrimitiveDecl, "bumpers").clauses if isinstance(c, ast.Actions)
+    ).assigns
     assert isinstance(assign.value, ast.Index)
     assert text[assign.value.base.span.start : assign.value.base.span.end] == "__out__"
     assert text[assign.value.span.start : assign.value.span.end] == "__out__[0]"
@@ -61,12 +63,14 @@ def test_spans_point_into_the_json() -> None:
 
 
 def test_spans_through_escapes() -> None:
-    text = r'{"name": "r", "stateVariables": [{"name": "s", "type": "string", "value": "<\"a\u0009b\" + x>"}]}'
+    text = (
+        r'{"name": "r", "stateVariables": [{"name": "s", "type": "string", "value": "<\"a\u0009b\" + x>"}]}'
+    )
     module, diagnostics = imported(text)
     assert not diagnostics.items
     init = decl(module, ast.StateDecl, "s").init
     assert isinstance(init, ast.BinOp) and init.left == ast.StrLit("a\tb")
-    assert text[init.left.span.start : init.left.span.end] == r'\"a\u0009b\"'
+    assert text[init.left.span.start : init.left.span.end] == r"\"a\u0009b\""
     assert text[init.right.span.start : init.right.span.end] == "x"
 
 
@@ -92,7 +96,10 @@ PRIMITIVE_TYPES = [
 
 @pytest.mark.parametrize(("template", "args", "kind", "params", "types"), PRIMITIVE_TYPES)
 def test_primitive_parameter_types_are_inferred(template, args, kind, params, types) -> None:
-    document = {"name": "r", "primitives": [{"name": "p", "parameters": params, "formatArgs": args, kind: template}]}
+    document = {
+        "name": "r",
+        "primitives": [{"name": "p", "parameters": params, "formatArgs": args, kind: template}],
+    }
     module, diagnostics = imported(json.dumps(document))
     assert not diagnostics.items
     assert " ".join(p.type.text for p in decl(module, ast.PrimitiveDecl, "p").params) == types
@@ -103,7 +110,11 @@ def test_interface_parameter_types_are_inferred() -> None:
         "name": "r",
         "primitives": [{"name": "p", "parameters": ["n", "x"], "formatArgs": ["<n>", "<x>"], "pack": "<Bf"}],
         "interfaces": [
-            {"name": "i", "parameters": ["a", "b", "c"], "primitiveCalls": [{"name": "p", "arguments": ["<b>", "<a>"]}]},
+            {
+                "name": "i",
+                "parameters": ["a", "b", "c"],
+                "primitiveCalls": [{"name": "p", "arguments": ["<b>", "<a>"]}],
+            },
             {"name": "j", "parameters": ["a"], "parameterTypes": ["string"], "primitiveCalls": []},
         ],
     }
@@ -134,7 +145,9 @@ def test_literals_defaults_and_missing_members() -> None:
              "primitiveCalls": [{"name": "p", "delay": 0, "priority": 0}, {"name": "p", "delay": 2.5, "priority": -1}]},
         ],
     }  # fmt: skip
-    assert printed(document) == """\
+    assert (
+        printed(document)
+        == """\
 robot r {}
 
 state a: int = 0
@@ -167,6 +180,7 @@ interface i() periodic {
     p() delay 2.5 ms priority -1
 }
 """
+    )
 
 
 def test_adapters_standard_declared_and_made() -> None:
@@ -186,7 +200,9 @@ def test_adapters_standard_declared_and_made() -> None:
             {"name": "set_mode", "returns": {"mode": ""}},
         ],
     }  # fmt: skip
-    assert printed(document) == """\
+    assert (
+        printed(document)
+        == """\
 robot r {}
 
 /// Two values.
@@ -224,6 +240,7 @@ output set_mode: SetModeMessage2 {
     mode = 0.0
 }
 """
+    )
 
 
 CANONICAL = {
@@ -259,7 +276,9 @@ CANONICAL = {
 
 
 def test_canonical_form() -> None:
-    assert printed(CANONICAL) == r'''/// A rover.
+    assert (
+        printed(CANONICAL)
+        == r"""/// A rover.
 /// Second line.
 robot rover {
     author "A. Uthor"
@@ -301,7 +320,8 @@ input wheels: DifferentialSpeed -> go(linear)
 output bump: Range {
     distance = 0.0 if hits > 0 else 1.0
 }
-'''
+"""
+    )
 
 
 ERRORS = [
@@ -344,6 +364,8 @@ ERRORS = [
     ('{"name": "x",\n "domainOutputs": [{"name": "o"}]}', "E008", 2, 20, "a domain output has no `returns`"),
     ("[" * (MAX_DEPTH + 1) + "]" * (MAX_DEPTH + 1), "E005", 1, MAX_DEPTH + 1,
      f"JSON is nested too deeply (the limit is {MAX_DEPTH} levels)"),
+    ("[" + "1," * MAX_VALUES + "1]", "E005", 1, 2 * MAX_VALUES + 1,
+     f"JSON has too many values (the limit is {MAX_VALUES})"),
 ]  # fmt: skip
 
 
@@ -365,8 +387,10 @@ def test_broken_element_is_left_out_without_follow_on_errors(tmp_path: Path) -> 
     interface calling it is not reported again for an unknown primitive."""
     document = json.loads((DATA / "thesis_create.json").read_text(encoding="utf-8"))
     document["primitives"][3]["postActions"] = ["bumperStates = __out__[0"]
-    document["interfaces"][1]["primitiveCalls"][0]["arguments"] = ["<round(velocity * 1000)>",
-                                                                   "<round(radius * 1000)>"]
+    document["interfaces"][1]["primitiveCalls"][0]["arguments"] = [
+        "<round(velocity * 1000)>",
+        "<round(radius * 1000)>",
+    ]
     path = tmp_path / "create.json"
     path.write_text(json.dumps(document, indent=2), encoding="utf-8")
     compilation = compile_path(str(path))
@@ -400,7 +424,9 @@ def test_any_text_is_a_module_or_diagnostics(text: str) -> None:
 
 
 def test_deep_expression_is_refused() -> None:
-    text = '{"name": "x",\n "stateVariables": [{"name": "s", "type": "int", "value": "<' + "-" * 300 + '1>"}]}'
+    text = (
+        '{"name": "x",\n "stateVariables": [{"name": "s", "type": "int", "value": "<' + "-" * 300 + '1>"}]}'
+    )
     module, diagnostics = imported(text)
     (d,) = diagnostics.items
     assert d.code == "E005" and d.message.startswith("expression is nested too deeply")

@@ -32,7 +32,7 @@ def expr(text: str) -> ast.Expr:
     return result
 
 
-SOURCE = r'''
+SOURCE = r"""
 import   "more.rdis"
 robot   koala { author "K-Team"   version "1.0\n\"beta\"" }
 /// Metres per pulse.
@@ -62,9 +62,9 @@ adapter Empty { }
 input set_velocity: DifferentialSpeed -> drive(clamp(linear, -0.5, 0.5), 0.0 if linear == 0 and angular == 0 else linear / angular)
 output odometry: Odometry { x = mpp * count  y = 0.0 }
 output none: Empty {}
-'''
+"""
 
-EXPECTED = r'''import "more.rdis"
+EXPECTED = r"""import "more.rdis"
 
 robot koala {
     author "K-Team"
@@ -132,7 +132,7 @@ output odometry: Odometry {
 }
 
 output none: Empty {}
-'''
+"""
 
 
 def test_canonical_text() -> None:
@@ -146,7 +146,9 @@ def test_empty_module() -> None:
 
 
 @pytest.mark.parametrize(
-    "path", [ROOT / "stdlib" / "adapters.rdis", *sorted((ROOT / "examples").glob("*.rdis"))], ids=lambda p: p.name
+    "path",
+    [ROOT / "stdlib" / "adapters.rdis", *sorted((ROOT / "examples").glob("*.rdis"))],
+    ids=lambda p: p.name,
 )
 def test_shipped_sources_round_trip(path: Path) -> None:
     module = parsed(path.read_text(encoding="utf-8"), str(path))
@@ -209,7 +211,10 @@ def test_fewest_parentheses(source: str, printed: str) -> None:
         (ast.FloatLit(-0.0), "-0.0"),
         (ast.FloatLit(math.inf), 'float("inf")'),
         (ast.FloatLit(math.nan), 'float("nan")'),
-        (ast.StrLit('a"\\\n\r\t\0\x07\x85\u2028\U000e0001é'), '"a\\"\\\\\\n\\r\\t\\0\\x07\\x85\\u2028\U000e0001é"'),
+        (
+            ast.StrLit('a"\\\n\r\t\0\x07\x85\u2028\U000e0001é'),
+            '"a\\"\\\\\\n\\r\\t\\0\\x07\\x85\\u2028\U000e0001é"',
+        ),
     ],
 )
 def test_literals_outside_what_the_parser_makes(node: ast.Expr, printed: str) -> None:
@@ -258,9 +263,11 @@ def test_print_then_parse_gives_the_same_expression(e: ast.Expr) -> None:
     assert parse_expression("t.rdis", print_expr(e), 0, diagnostics) == e, diagnostics.items
 
 
-docs = st.none() | st.lists(st.text(st.characters(blacklist_characters="\n\r", blacklist_categories=["Cs"]),
-                                    max_size=20), min_size=1, max_size=3).map(
-    lambda lines: "\n".join(line.rstrip() for line in lines).strip())
+docs = st.none() | st.lists(
+    st.text(st.characters(blacklist_characters="\n\r", blacklist_categories=["Cs"]), max_size=20),
+    min_size=1,
+    max_size=3,
+).map(lambda lines: "\n".join(line.rstrip() for line in lines).strip())
 ids = names.map(ast.Ident)
 params = st.lists(st.builds(ast.Param, ids, ids), max_size=3).map(tuple)
 args = st.lists(expressions, max_size=3).map(tuple)
