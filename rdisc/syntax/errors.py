@@ -25,7 +25,9 @@ _WORDS = {
     "COLON": "`:`",
     "EQUAL": "`=`",
     "$END": "the end of the file",
+    "DECLARATION": "a new declaration",
 }
+_DECLARATIONS = {"IMPORT", "ROBOT", "STATE", "CONNECTION", "PRIMITIVE", "INTERFACE", "ADAPTER", "INPUT", "OUTPUT"}
 # Terminals that can only continue an expression: listed as one phrase.
 _OPERATORS = {"POW", "SHIFT_OP", "COMP_OP", "MUL_OP", "ADD_OP", "BAR", "CARET", "AMP", "OR", "AND", "IF"}
 _EXPRESSION_START = {"INT", "FLOAT", "STRING", "RAW_STRING", "TRUE", "FALSE", "NOT", "UNARY_OP"}
@@ -90,7 +92,12 @@ def describe_unexpected(err, chunk: str, last: bool) -> tuple[str, int, int, str
         return ("E002", offset, 1, f"unexpected character `{shown}`", "no token starts with this character")
 
     token = err.token
-    expected = expected_words(set(err.expected))
+    accepted = set(err.expected)
+    if err.interactive_parser is not None:  # exact: LALR merges lookaheads of similar states
+        accepted = set(err.interactive_parser.accepts())
+    if len(accepted & _DECLARATIONS) > 2:
+        accepted = (accepted - _DECLARATIONS - {"$END"}) | {"DECLARATION"}
+    expected = expected_words(accepted)
     if token.type == "$END":
         if last:
             return ("E001", len(chunk), 0, f"expected {expected}, found the end of the file", None)

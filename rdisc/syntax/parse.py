@@ -119,8 +119,6 @@ def parse_expression(path: str, text: str, base_offset: int, diagnostics: Diagno
     try:
         tree = parser().parse(text, start="expr_start")
     except lark.exceptions.UnexpectedInput as err:
-        if isinstance(err, lark.exceptions.UnexpectedToken) and err.interactive_parser is not None:
-            err.expected = err.interactive_parser.accepts()  # exact: LALR lookaheads are merged
         code, offset, length, message, label = describe_unexpected(err, text, True)
         at = base_offset + offset
         message = message.replace("the end of the file", "the end of the expression")

@@ -82,7 +82,12 @@ class Printed:
 
 def binary(op: str, left: Printed, right: Printed) -> Printed:
     o = BINARY[op]
-    return Printed(left.at(o.operands[0]) + o.spelling + right.at(o.operands[1]), o.level)
+    low, high = o.operands
+    if o.level == COMPARISON:
+        # Not needed by the grammar, but kept for readers used to C, where
+        # `flags & 3 == 0` means `flags & (3 == 0)`.
+        low = high = ARITH
+    return Printed(left.at(low) + o.spelling + right.at(high), o.level)
 
 
 def unary(op: str, operand: Printed) -> Printed:

@@ -179,7 +179,7 @@ def test_shipped_sources_round_trip(path: Path) -> None:
         ("not (a and b)", "not (a and b)"),
         ("(a or b) and c", "(a or b) and c"),
         ("a or (b and c)", "a or b and c"),
-        ("(a & 3) == 0", "a & 3 == 0"),
+        ("(a & 3) == 0", "(a & 3) == 0"),
         ("a | (b ^ c)", "a | b ^ c"),
         ("(a | b) ^ c", "(a | b) ^ c"),
         ("(a << 2) + 1", "(a << 2) + 1"),
