@@ -1,7 +1,9 @@
 """`rdisc import FILE.json -o OUT.rdis`: thesis-style JSON back to readable source.
 
 The JSON is checked with the same checker as source (its expressions are parsed,
-never evaluated); the source is written only when it is free of errors.
+never evaluated). The source is written whenever the JSON could be read, errors
+or not, since fixing a legacy description is easier in .rdis; the exit status
+still says whether it checks.
 """
 
 from __future__ import annotations
@@ -37,6 +39,6 @@ def run(args: argparse.Namespace) -> int:
     else:
         compilation = compile_module(module, diagnostics, sources)
     show([compilation])
-    if compilation.model is None or module is None:
+    if module is None:
         return exit_code([compilation]) or EXIT_ERRORS
-    return write(print_module(module), args.output)
+    return write(print_module(module), args.output) or exit_code([compilation])
