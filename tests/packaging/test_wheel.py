@@ -18,6 +18,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import pytest
+from conftest import cli_env
 
 ROOT = Path(__file__).resolve().parents[2]
 CREATE = ROOT / "examples" / "create.rdis"
@@ -63,11 +64,8 @@ def _step(what: str, cmd: list[str], **kwargs) -> None:
 
 
 def _clean_env(**extra: str) -> dict[str, str]:
-    """No PYTHONPATH or active venv leaking the checkout in; plain, uncoloured output."""
-    env = {k: v for k, v in os.environ.items()
-           if k not in ("PYTHONPATH", "PYTHONHOME", "VIRTUAL_ENV", "FORCE_COLOR", "PYTHONHASHSEED")}
-    env.update({"NO_COLOR": "1", "TERM": "dumb", "PYTHONIOENCODING": "utf-8", "COLUMNS": "200"}, **extra)
-    return env
+    """The tests' `rdisc` environment, minus anything that could leak the checkout in."""
+    return {k: v for k, v in cli_env(**extra).items() if k not in ("PYTHONPATH", "PYTHONHOME", "VIRTUAL_ENV")}
 
 
 @pytest.fixture(scope="module")
