@@ -514,11 +514,11 @@ class _Checker:
         triggered = {i.triggers for i in interfaces.values() if i.triggers}
         used = {i.interface for i in inputs.values()} | self.hooked
         for name, decl in self.s.primitives.items():
-            if name not in called and id(decl) in self.main_decls:
+            if name not in called and id(decl) in self.main_decls and ("primitive", name) not in self.s.suggested:
                 self.d.report("W101", decl.name.span, f"primitive `{name}` is never called",
                               help="call it from an interface, or remove it")
         for name, decl in self.s.outputs.items():
-            if name not in triggered and id(decl) in self.main_decls:
+            if name not in triggered and id(decl) in self.main_decls and ("output", name) not in self.s.suggested:
                 self.d.report("W102", decl.name.span, f"output `{name}` is never triggered",
                               help=f"add `triggers {name}` to the interface that reads its state")
         for name, decl in self.s.states.items():
@@ -526,7 +526,8 @@ class _Checker:
                 self.d.report("W103", decl.name.span, f"state variable `{name}` is never read")
         for name, decl in self.s.interfaces.items():
             periodic = any(isinstance(c, ast.Kind) and c.word == "periodic" for c in decl.clauses)
-            if name not in used and not periodic and id(decl) in self.main_decls:
+            if (name not in used and not periodic and id(decl) in self.main_decls
+                    and ("interface", name) not in self.s.suggested):
                 self.d.report("W104", decl.name.span, f"interface `{name}` is never called",
                               help="call it from an input or a connection hook, or make it `periodic`")
 

@@ -44,6 +44,9 @@ class Symbols:
     outputs: dict[str, ast.OutputDecl] = field(default_factory=dict)
     standard: set[int] = field(default_factory=set)  # id() of declarations from the stdlib
     damaged: set[tuple[str, str]] = field(default_factory=set)  # (keyword, name) lost to syntax errors
+    # (kind, name) offered as "did you mean" for an unknown reference: probably used,
+    # so not reported as unused as well.
+    suggested: set[tuple[str, str]] = field(default_factory=set)
 
     def is_damaged(self, keyword: str, name: str) -> bool:
         return (keyword, name) in self.damaged
@@ -87,10 +90,16 @@ def check_name(name: ast.Ident, what: str, diagnostics: Diagnostics) -> None:
         diagnostics.report("E104", name.span, f"`{name.text}` is a built-in function and cannot name a {what}")
 
 
+def closest(name: str, candidates) -> str | None:
+    """The declared name closest to a misspelt one, if any is close."""
+    close = difflib.get_close_matches(name, list(candidates), n=1, cutoff=0.6)
+    return close[0] if close else None
+
+
 def suggest(name: str, candidates) -> str | None:
     """A 'did you mean' help line when a declared name is close."""
-    close = difflib.get_close_matches(name, list(candidates), n=1, cutoff=0.6)
-    return f"did you mean `{close[0]}`?" if close else None
+    close = closest(name, candidates)
+    return f"did you mean `{close}`?" if close else None
 
 
 def _declare(unit: Unit, symbols: Symbols, diagnostics: Diagnostics) -> None:
@@ -135,12 +144,15 @@ def _declare(unit: Unit, symbols: Symbols, diagnostics: Diagnostics) -> None:
 def _bind(decl: ast.Decl, symbols: Symbols, diagnostics: Diagnostics) -> None:
     def need(ident: ast.Ident, table: dict, what: str) -> None:
         if ident.text not in table and not symbols.is_damaged(what, ident.text):
+            close = closest(ident.text, table)
+            if close:
+                symbols.suggested.add((what, close))
             diagnostics.report(
                 "E102",
                 ident.span,
                 f"unknown {what} `{ident.text}`",
                 label=f"no {what} of this name",
-                help=suggest(ident.text, table),
+                help=f"did you mean `{close}`?" if close else None,
             )
 
     match decl:

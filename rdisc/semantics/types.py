@@ -137,7 +137,7 @@ class Typer:
                 e.span,
                 f"unknown name `{e.name}` {env.where}",
                 label=f"{env.where} only {env.sees} are in scope" if env.sees else "nothing is in scope here",
-                help=suggest(e.name, env.names),
+                help=suggest(e.name, [*env.names, "True", "False"]),
             )
             return m.Var(e.name, Scope.STATE, None, e.span)  # type: ignore[arg-type]
         scope, type_ = found
