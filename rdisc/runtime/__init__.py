@@ -42,4 +42,59 @@ passed (first one interval after start). Errors in that work go to the error
 callbacks and the schedule goes on; waiting never spins. `close` (also on leaving
 the context, on exceptions, SIGINT and SIGTERM in `rdisc run`) stops the threads,
 runs the terminate hooks (errors reported, not raised) and closes the ports.
+
+Details both implementations follow (where the above is silent):
+
+- MAX_LINE is 4096 bytes. The pyserial write timeout equals the reply timeout; a
+  write that cannot complete in it is RdisTimeout.
+- Values given to an input or an interface: an `int` parameter or field takes an
+  Integral that is not a bool, a `float` one any Real that is not a bool (made a
+  float), `bool` a bool, `string` a str; anything else is a TypeError, raised
+  before anything is written. A value assigned to state, a parameter or an output
+  field is converted to its declared type the same way (int -> float only).
+- Names: input arguments see state and the adapter's fields; a call's arguments
+  see state and the interface's parameters; format arguments and post-actions see
+  state and the primitive's parameters (plus `out`); hooks and output fields see
+  state only. A parameter or field shadows a state variable of the same name.
+  Every expression reads state as it is when evaluated: a call's arguments just
+  before that call, an output's fields after the interface's last call.
+- An error stops the interface where it happened: later calls are not made,
+  nothing is delayed further, the output is not triggered; state already
+  assigned stays.
+- Error messages begin with the name of the element at fault and a colon: the
+  primitive for I/O and encoding, the connection for RdisConnectionError, the
+  input, interface or output whose expression failed for RdisValueError. The
+  texts: "P: no reply within T s" (T formatted with :g), "P: expected N bytes,
+  got K", "P: reply line not terminated: LINE", "P: reply LINE does not match
+  PATTERN" (LINE, PATTERN with repr), "C: ..." with the I/O error's text.
+  Comparisons across implementations use the type and that first name.
+- Callbacks: on_output(cb) gets cb(output_dict), on_error(cb) gets cb(exception),
+  on_io(cb) gets cb("write" | "read", connection, data) after each write and each
+  read that returned data (a short read included). Callbacks run on the thread
+  that did the work (the caller's for inputs, a connection's for periodic work
+  and keepalives) and never concurrently with each other (one reentrant lock).
+  An exception from an output or I/O callback becomes RdisCallbackError (cause
+  set) reported to the error callbacks; one from an error callback is ignored.
+  An error with no error callback registered is logged (logger "rdisc").
+- Schedule: tick k of a connection is due at start + k / frequency; a tick that
+  is already past when the previous one ends is skipped, never run in a burst.
+  The keepalive is due at start + interval, then every interval after the due
+  time it ran for (if that is past too, one interval after now). A connection
+  with neither periodic interfaces nor a keepalive has a thread that only waits.
+  A periodic interface belongs to the connection of its first call's primitive.
+- `tick()` runs, on the caller's thread, one iteration of every connection's
+  work in declaration order (periodic interfaces, then the keepalive if due),
+  errors reported like the threads'. `connect(..., threads=False)` starts no
+  threads, for a framework that calls `tick()` itself.
+- Ports: one string is used for every connection (opened once and shared, with
+  one lock per open port); a dict maps each connection name to its port; a
+  value may also be an already-open pyserial-like object (write, read,
+  read_until, reset_input_buffer), which is used as it is and not closed.
+  A missing or unknown connection name in the dict is a ValueError.
+- `connect` that fails (opening, or a startup hook) closes what it opened (as
+  `close` does, terminate hooks included) and raises the error. `close` is
+  idempotent; a call after it is RdisConnectionError. Stopping lets a thread
+  finish the interface it is running, delays included.
 """
+
+MAX_LINE = 4096
