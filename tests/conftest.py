@@ -1,0 +1,112 @@
+"""Shared test machinery: golden files and running the `rdisc` command.
+
+Goldens are files under tests/golden/ holding an exact expected output. A test
+compares what it produced with its golden; `pytest --update-goldens` rewrites
+the goldens instead (and still fails nothing), so a changed rendering is
+reviewed in the diff rather than accepted silently. Nothing else writes them.
+"""
+
+from __future__ import annotations
+
+import difflib
+import os
+import subprocess
+import sys
+from dataclasses import dataclass
+from pathlib import Path
+
+import pytest
+
+REPO = Path(__file__).resolve().parent.parent
+
+
+def pytest_addoption(parser: pytest.Parser) -> None:
+    parser.addoption(
+        "--update-goldens",
+        action="store_true",
+        default=False,
+        help="rewrite the golden files under tests/golden/ with the current output (review the diff)",
+    )
+
+
+@dataclass(frozen=True)
+class Golden:
+    """Compares output with a golden file, or rewrites the file under --update-goldens."""
+
+    update: bool
+
+    def check(self, path: Path, actual: str) -> None:
+        path = Path(path)
+        if self.update:
+            if not path.is_file() or path.read_bytes() != actual.encode("utf-8"):
+                path.parent.mkdir(parents=True, exist_ok=True)
+                path.write_bytes(actual.encode("utf-8"))
+            return
+        shown = _shown(path)
+        if not path.is_file():
+            pytest.fail(
+                f"golden {shown} does not exist: run `pytest --update-goldens` and review the new file",
+                pytrace=False,
+            )
+        expected = path.read_bytes().decode("utf-8")
+        if expected != actual:
+            diff = "".join(
+                difflib.unified_diff(
+                    expected.splitlines(keepends=True),
+                    actual.splitlines(keepends=True),
+                    fromfile=f"{shown} (golden)",
+                    tofile=f"{shown} (actual)",
+                )
+            )
+            pytest.fail(
+                f"output differs from golden {shown}; if the change is intended, rerun with "
+                f"--update-goldens and review the diff\n{diff}",
+                pytrace=False,
+            )
+
+
+def _shown(path: Path) -> str:
+    try:
+        return str(path.resolve().relative_to(REPO))
+    except ValueError:
+        return str(path)
+
+
+@pytest.fixture(scope="session")
+def golden(request: pytest.FixtureRequest) -> Golden:
+    return Golden(bool(request.config.getoption("--update-goldens")))
+
+
+def cli_env(**extra: str) -> dict[str, str]:
+    """The environment of an `rdisc` subprocess: no colour, UTF-8, nothing forced."""
+    env = {k: v for k, v in os.environ.items()
+           if k not in ("FORCE_COLOR", "CLICOLOR_FORCE", "TTY_COMPATIBLE", "TTY_INTERACTIVE", "PYTHONHASHSEED")}
+    env.update({"NO_COLOR": "1", "TERM": "dumb", "PYTHONIOENCODING": "utf-8", "COLUMNS": "200"})
+    env.update(extra)
+    return env
+
+
+def run_rdisc(
+    *args: str | os.PathLike[str],
+    cwd: Path = REPO,
+    env: dict[str, str] | None = None,
+    timeout: float = 60,
+) -> subprocess.CompletedProcess[str]:
+    """`python -m rdisc ARGS...` in a real subprocess, text captured; `env` adds variables."""
+    return subprocess.run(
+        [sys.executable, "-m", "rdisc", *map(str, args)],
+        cwd=cwd,
+        env=cli_env(**(env or {})),
+        capture_output=True,
+        check=False,  # the exit code is what the tests look at
+        text=True,
+        encoding="utf-8",
+        errors="replace",
+        timeout=timeout,
+    )
+
+
+@pytest.fixture(scope="session")
+def rdisc():
+    """Run the rdisc command: `rdisc("check", path)` -> CompletedProcess."""
+    return run_rdisc

@@ -1,0 +1,30 @@
+"""Canonical JSON of the examples: goldens, and byte-identical builds whatever the hash seed."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+REPO = Path(__file__).resolve().parents[2]
+JSON = Path(__file__).resolve().parent / "json"
+EXAMPLES = ["create", "koala"]
+
+
+@pytest.mark.parametrize("name", EXAMPLES)
+def test_canonical_json_golden(name: str, rdisc, golden) -> None:
+    result = rdisc("build", f"examples/{name}.rdis")
+    assert (result.returncode, result.stderr) == (0, "")
+    golden.check(JSON / f"{name}.json", result.stdout)
+
+
+@pytest.mark.parametrize("name", EXAMPLES)
+def test_build_is_byte_identical_under_different_hash_seeds(name: str, rdisc, tmp_path: Path) -> None:
+    outputs = []
+    for seed in ("1", "2"):
+        out = tmp_path / f"{name}-{seed}.json"
+        result = rdisc("build", f"examples/{name}.rdis", "-o", out, env={"PYTHONHASHSEED": seed})
+        assert (result.returncode, result.stderr) == (0, "")
+        outputs.append(out.read_bytes())
+    assert outputs[0] == outputs[1]
+    assert outputs[0].endswith(b"\n") and b"\r" not in outputs[0]
