@@ -33,17 +33,18 @@ class Compilation:
 
 def read_text(path: str, diagnostics: Diagnostics, at: Span | None = None) -> str | None:
     """The text of a file, or None with an E006 diagnostic."""
+    where = at or Span(path, 0, 0)
     try:
         with open(path, "rb") as f:
             data = f.read(MAX_FILE_CHARS * 4 + 1)
     except OSError as err:
-        diagnostics.report("E006", at, f"cannot read {path}: {err.strerror or err}")
+        diagnostics.report("E006", where, f"cannot read {path}: {err.strerror or err}")
         return None
     try:
         return data.decode("utf-8")
     except UnicodeDecodeError as err:
         line = data.count(b"\n", 0, err.start) + 1
-        diagnostics.report("E006", at, f"{path} is not UTF-8 text (byte {err.start}, line {line})")
+        diagnostics.report("E006", where, f"{path} is not UTF-8 text (byte {err.start}, line {line})")
         return None
 
 
@@ -103,6 +104,7 @@ def _add_unit(main: ast.Module, is_main: bool, diagnostics: Diagnostics, sources
     if text is not None:
         sources.add(stdlib, text)
         units.append(Unit(parse(stdlib, text, diagnostics), standard=True))
+    root = Path(main.path).resolve().parent
     seen = {str(Path(main.path).resolve()), str(Path(stdlib).resolve())}
     units.append(Unit(main, main=is_main))
     queue = [main]
@@ -112,6 +114,11 @@ def _add_unit(main: ast.Module, is_main: bool, diagnostics: Diagnostics, sources
             if not isinstance(decl, ast.ImportDecl):
                 continue
             target = Path(module.path).parent / decl.path
+            if Path(decl.path).is_absolute() or not decl.path.endswith(".rdis") or not target.resolve().is_relative_to(root):
+                # A description may come from a device or a network: it reads no other files.
+                diagnostics.report("E007", decl.span, f"cannot import `{decl.path}`",
+                                   label="not a relative path to an .rdis file in the description's folder")
+                continue
             key = str(target.resolve())
             if key in seen:
                 continue

@@ -23,7 +23,7 @@ def show(compilations: list[Compilation]) -> None:
 
 
 def exit_code(compilations: list[Compilation]) -> int:
-    if any(d.code == "E006" and d.span is None for c in compilations for d in c.diagnostics.items):
+    if any(d.code == "E006" for c in compilations for d in c.diagnostics.items):
         return EXIT_USAGE
     return EXIT_ERRORS if any(c.diagnostics.has_errors() for c in compilations) else EXIT_OK
 

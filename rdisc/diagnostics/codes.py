@@ -44,8 +44,10 @@ input can cause before it reads it."""),
 The file could not be read: it does not exist, is not readable, or is not UTF-8
 text."""),
     ("E007", "import-not-found", """
-An `import` names a file that does not exist. Paths are relative to the file
-that imports them. `stdlib/adapters.rdis` is always available without import."""),
+An `import` names a file that does not exist, or one it may not read. Imports
+are relative paths to `.rdis` files in the main description's folder or below
+(a description may come from a device or a network, so it reads no other
+files). `stdlib/adapters.rdis` is always available without import."""),
     ("E008", "invalid-json", """
 A JSON description (`rdisc import`, or `rdisc build` of a .json file) is not
 valid JSON, or does not have the shape of an RDIS description: the message says

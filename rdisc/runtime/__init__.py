@@ -97,4 +97,28 @@ Details both implementations follow (where the above is silent):
   finish the interface it is running, delays included.
 """
 
-MAX_LINE = 4096
+from rdisc.runtime.codec import MAX_LINE
+from rdisc.runtime.device import Description, Robot, load
+from rdisc.runtime.errors import (
+    RdisCallbackError,
+    RdisConnectionError,
+    RdisError,
+    RdisLoadError,
+    RdisProtocolError,
+    RdisTimeout,
+    RdisValueError,
+)
+
+__all__ = [
+    "MAX_LINE",
+    "Description",
+    "RdisCallbackError",
+    "RdisConnectionError",
+    "RdisError",
+    "RdisLoadError",
+    "RdisProtocolError",
+    "RdisTimeout",
+    "RdisValueError",
+    "Robot",
+    "load",
+]

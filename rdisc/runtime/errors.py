@@ -29,3 +29,24 @@ class RdisValueError(RdisError, ValueError):
 
 class RdisCallbackError(RdisError):
     """A user callback raised; the exception is the cause."""
+
+
+class RdisLoadError(RdisError):
+    """A description that cannot run: it has errors (`diagnostics`), rendered in the message.
+
+    Raised by `rdisc.runtime.load`; a generated driver never raises it (it was
+    generated from a description without errors).
+    """
+
+    def __init__(self, message: str, diagnostics: tuple = (), sources: object = None) -> None:
+        super().__init__(message)
+        self.diagnostics = diagnostics
+        self.sources = sources
+
+    @classmethod
+    def from_compilation(cls, path: str, compilation) -> RdisLoadError:  # compilation: rdisc.compile.Compilation
+        from rdisc.diagnostics.text import render_plain
+
+        items = compilation.diagnostics.sorted()
+        text = render_plain(items, compilation.sources) if items else f"{path}: cannot be loaded"
+        return cls(text, tuple(items), compilation.sources)

@@ -12,6 +12,7 @@ from rdisc.diagnostics import Diagnostics, Label
 from rdisc.semantics import formats
 from rdisc.semantics import model as m
 from rdisc.semantics.model import Scope, Type
+from rdisc.semantics.operators import shown
 from rdisc.semantics.resolve import Symbols, Unit, check_name, suggest
 from rdisc.semantics.types import Env, Typer, describe
 from rdisc.source import Span
@@ -119,9 +120,10 @@ class _Checker:
 
     def setting(self, expr: ast.Expr, what: str) -> float | None:
         """A numeric setting (baud, Hz, ms, priority): a constant expression."""
+        errors = self.d.error_count
         node = self.typer.expr(expr, _NOTHING)
         value = self.typer.constant(node)
-        if node.type is None:
+        if node.type is None or self.d.error_count > errors:
             return None
         if node.type not in (Type.INT, Type.FLOAT) or value is None:
             self.d.report("E204", expr.span, f"{what} must be a constant number")
@@ -190,14 +192,16 @@ class _Checker:
         type_ = self.type_name(decl.type)
         initial: object = type_.default() if type_ else None
         if decl.init is not None:
-            env = Env({}, "in an initial value", "", reply_note=None)
-            node = self.typer.expr(decl.init, env)
+            errors = self.d.error_count
+            node = self.typer.expr(decl.init, Env({}, "in an initial value", ""))
             value = self.typer.constant(node)
-            if node.type is not None and value is None:
-                self.d.report("E204", decl.init.span, "an initial value must be a constant")
-            elif type_ is not None:
+            if value is None:
+                if self.d.error_count == errors:  # not already explained
+                    self.d.report("E204", decl.init.span, "an initial value must be a constant")
+            elif type_ is not None and node.type is not None:
+                before = self.d.error_count
                 self.flow(node, type_, decl.init.span, f"state variable `{decl.name.text}`")
-                if node.type is not None and value is not None:
+                if self.d.error_count == before:
                     initial = float(value) if type_ is Type.FLOAT else value  # type: ignore[arg-type]
         return m.StateVariable(decl.name.text, type_, initial, decl.doc, decl.span)  # type: ignore[arg-type]
 
@@ -284,7 +288,7 @@ class _Checker:
         if encodings:
             encoding, args = self.encoding(encodings[0], env)
         decoding: m.Unpack | m.Regex | None = None
-        reply: tuple[Type, ...] = ()
+        reply: tuple[Type, ...] | None = ()
         if decodings:
             decoding, reply = self.decoding(decodings[0])
         actions: tuple[m.PostAction, ...] = ()
@@ -292,7 +296,7 @@ class _Checker:
             note = None if decodings else f"primitive `{name.text}` reads no reply: add `unpack` or `regex`"
             action_env = self.env_with(
                 scope, "in a post-action", "`out`, parameters and state variables",
-                reply=reply if decodings else None, reply_note=note,
+                reply=reply if decodings else None, reply_note=note, reply_known=reply is not None,
             )
             actions = self.actions(action_blocks[0], action_env, {p.name for p in params})
         connection = m.ConnectionRef(on.connection.text) if isinstance(on, ast.On) else m.ConnectionRef("")
@@ -349,7 +353,7 @@ class _Checker:
         if slot.low is not None and isinstance(value, int) and not isinstance(value, bool) and arg.type is Type.INT:
             if not slot.low <= value <= slot.high:  # type: ignore[operator]
                 self.d.report(
-                    "E403", expr.span, f"{value} does not fit pack code `{slot.code}`",
+                    "E403", expr.span, f"{shown(value)} does not fit pack code `{slot.code}`",
                     label=f"`{slot.code}` holds {slot.low} to {slot.high}",
                 )
         if slot.code == "c" and isinstance(value, str) and len(value) != 1:
@@ -366,7 +370,8 @@ class _Checker:
         else:
             self.d.report("E401", expr.span, f"format field `{{:{field.spec}}}` cannot format {describe(arg.type)}")
 
-    def decoding(self, dec: ast.Decoding) -> tuple[m.Unpack | m.Regex | None, tuple[Type, ...]]:
+    def decoding(self, dec: ast.Decoding) -> tuple[m.Unpack | m.Regex | None, tuple[Type, ...] | None]:
+        """The decoding and the types of its values; None for a template already reported."""
         template = dec.template.value
         try:
             if dec.kind == "unpack":
@@ -379,7 +384,7 @@ class _Checker:
         except formats.TemplateError as err:
             code = "E301" if dec.kind == "unpack" else "E304"
             self.d.report(code, self.template_span(dec.template, err.offset, err.length), err.message)
-            return None, ()
+            return None, None
 
     def actions(self, block: ast.Actions, env: Env, params: set[str]) -> tuple[m.PostAction, ...]:
         out: list[m.PostAction] = []
@@ -422,6 +427,8 @@ class _Checker:
             prim = primitives.get(stmt.call.target.text)
             args = self.call(stmt.call, prim.params if prim else None, env, "primitive",
                              target.name if target else None)
+            if prim is not None:
+                self.constants_into_pack(prim, args, stmt.call.args)
             delay_clause = self.once(list(stmt.delays), "`delay`", stmt.call.target)
             delay = self.duration(delay_clause, "a delay") if isinstance(delay_clause, ast.Duration) else 0
             if delay is not None and delay < 0:
@@ -437,6 +444,23 @@ class _Checker:
             self.periodic_connection(decl)
         out_ref = m.OutputRef(triggers.output.text) if isinstance(triggers, ast.Triggers) else None
         return m.Interface(name.text, params, periodic, tuple(calls), out_ref, decl.doc, decl.span)
+
+    def constants_into_pack(self, prim: m.Primitive, args: tuple[m.Expr, ...], exprs: tuple[ast.Expr, ...]) -> None:
+        """A constant argument whose parameter goes straight into a pack code must fit it."""
+        if not isinstance(prim.encoding, m.Pack) or len(args) != len(prim.params):
+            return
+        slots = formats.struct_layout(prim.encoding.format).slots
+        for slot, packed in zip(slots, prim.args):
+            if not isinstance(packed, m.Var) or packed.scope is not Scope.PARAM or slot.low is None:
+                continue
+            i = next(i for i, p in enumerate(prim.params) if p.name == packed.name)
+            value = self.typer.constant(args[i])
+            if isinstance(value, int) and not isinstance(value, bool) and not slot.low <= value <= slot.high:  # type: ignore[operator]
+                self.d.report(
+                    "E403", exprs[i].span,
+                    f"{shown(value)} does not fit pack code `{slot.code}` of primitive `{prim.name}`",
+                    label=f"parameter `{packed.name}` is packed as `{slot.code}`, {slot.low} to {slot.high}",
+                )
 
     def periodic_connection(self, decl: ast.InterfaceDecl) -> None:
         used: dict[str, ast.Ident] = {}
@@ -497,7 +521,7 @@ class _Checker:
         if adapter is None:
             return m.DomainOutput(decl.name.text, m.AdapterRef(decl.adapter.text), (), decl.doc, decl.span)
         missing = [f.name for f in adapter.fields if f.name not in values and f.name not in first]
-        if missing:
+        if missing and len(first) == len(decl.fields):  # a misspelt field already explains the gap
             self.d.report(
                 "E206", decl.name.span,
                 f"output `{decl.name.text}` does not define {', '.join(f'`{n}`' for n in missing)} "
@@ -510,6 +534,8 @@ class _Checker:
     # -- what is declared and never used ----------------------------------------------------
 
     def unused(self, interfaces: dict[str, m.Interface], inputs: dict[str, m.DomainInput]) -> None:
+        if self.s.damaged:  # what the lost declarations used is unknown
+            return
         called = {c.primitive for i in interfaces.values() for c in i.calls}
         triggered = {i.triggers for i in interfaces.values() if i.triggers}
         used = {i.interface for i in inputs.values()} | self.hooked

@@ -15,6 +15,7 @@ from dataclasses import dataclass
 from rdisc.semantics.model import Type
 
 MAX_REPEAT = 4096
+MAX_MESSAGE = 65536  # bytes of one request or reply
 
 
 class TemplateError(ValueError):
@@ -92,6 +93,8 @@ def struct_layout(fmt: str) -> StructLayout:
         size = struct.calcsize(fmt)
     except struct.error as err:
         raise TemplateError(f"invalid struct format: {err}", 0, len(fmt)) from None
+    if size > MAX_MESSAGE:
+        raise TemplateError(f"the message is {size} bytes; the limit is {MAX_MESSAGE}", 0, len(fmt))
     native = order in ("", "@") and any(c in "hHiIlLqQnNefd" for c in body)
     return StructLayout(tuple(slots), size, native)
 
@@ -137,9 +140,16 @@ def format_fields(template: str) -> tuple[FormatField, ...]:
             index = int(name)
             if index > MAX_REPEAT:
                 raise TemplateError(f"field index {index} is too large", offset)
+        elif "." in name or "[" in name:
+            reach = "an attribute" if name.find(".") != -1 and (name.find("[") == -1 or name.find(".") < name.find("[")) else "an index"
+            raise TemplateError(
+                f"field `{{{name}}}` reaches into {reach} of its argument: fields are `{{}}` or `{{0}}` "
+                "with an optional format spec", offset, len(name) + 2
+            )
         else:
             raise TemplateError(
-                f"field `{{{name}}}` is not positional: write `{{}}` or `{{0}}`", offset, len(name) + 2
+                f"field `{{{name}}}` is named: format arguments are positional, write `{{}}` or `{{0}}`",
+                offset, len(name) + 2
             )
         fields.append((index, FormatField(spec or "", offset)))
     by_index: dict[int, FormatField] = {}

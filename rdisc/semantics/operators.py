@@ -21,19 +21,29 @@ class EvalError(ArithmeticError):
     """An expression that cannot be evaluated: the message says why."""
 
 
+def shown(value: Any) -> str:
+    """A value as a message shows it: huge numbers abbreviated, strings quoted."""
+    text = repr(value)
+    if isinstance(value, int) and len(text) > 24:
+        return f"a {value.bit_length()}-bit integer"
+    return text if len(text) <= 40 else text[:37] + "..."
+
+
 def _pow(a: Any, b: Any) -> Any:
     if isinstance(a, int) and isinstance(b, int):
         if b < 0:
-            raise EvalError(f"negative integer exponent {b}: write a float base, e.g. {a}.0 ** {b}")
+            raise EvalError(f"negative integer exponent {shown(b)}: write a float base, e.g. {shown(a)}.0 ** {shown(b)}")
         if abs(a) > 1 and b * max(1, abs(a).bit_length()) > MAX_RESULT_BITS:
-            raise EvalError(f"{a} ** {b} is too large (results are limited to {MAX_RESULT_BITS} bits)")
+            raise EvalError(f"{shown(a)} ** {shown(b)} is too large (results are limited to {MAX_RESULT_BITS} bits)")
         return a**b
     try:
         result = float(a) ** float(b)
-    except (OverflowError, ZeroDivisionError) as err:
-        raise EvalError(f"{a} ** {b}: {err}") from None
+    except OverflowError:
+        raise EvalError(f"{shown(a)} ** {shown(b)} is too large for a float") from None
+    except ZeroDivisionError:
+        raise EvalError(f"{shown(a)} ** {shown(b)}: zero to a negative power") from None
     if isinstance(result, complex):
-        raise EvalError(f"{a} ** {b} has no real value")
+        raise EvalError(f"{shown(a)} ** {shown(b)} has no real value")
     return result
 
 
@@ -41,13 +51,13 @@ def _lshift(a: int, b: int) -> int:
     if b < 0:
         raise EvalError(f"negative shift count {b}")
     if b > MAX_SHIFT or a.bit_length() + b > MAX_RESULT_BITS:
-        raise EvalError(f"{a} << {b} is too large (results are limited to {MAX_RESULT_BITS} bits)")
+        raise EvalError(f"{shown(a)} << {shown(b)} is too large (results are limited to {MAX_RESULT_BITS} bits)")
     return a << b
 
 
 def _rshift(a: int, b: int) -> int:
     if b < 0:
-        raise EvalError(f"negative shift count {b}")
+        raise EvalError(f"negative shift count {shown(b)}")
     return a >> min(b, MAX_RESULT_BITS + 1)
 
 
@@ -79,7 +89,7 @@ def _checked_float(f: Callable[..., Any]) -> Callable[..., Any]:
     def wrapper(a: Any, b: Any) -> Any:
         result = f(a, b)
         if isinstance(result, float) and math.isinf(result) and not (math.isinf(a) or math.isinf(b)):
-            raise EvalError("float overflow")
+            raise EvalError("the result is too large for a float")
         return result
 
     return wrapper
@@ -89,7 +99,7 @@ BINARY: dict[str, Callable[[Any, Any], Any]] = {
     "+": _checked_float(_add),
     "-": _checked_float(operator.sub),
     "*": _checked_float(operator.mul),
-    "/": _div,
+    "/": _checked_float(_div),
     "//": _floordiv,
     "%": _mod,
     "**": _pow,
@@ -118,25 +128,35 @@ def _round(x: Any, ndigits: int | None = None) -> Any:
     try:
         return round(x) if ndigits is None else round(float(x), ndigits)
     except (ValueError, OverflowError) as err:
-        raise EvalError(f"round({x}): {err}") from None
+        raise EvalError(f"round({shown(x)}): {err}") from None
 
 
 def _int(x: Any) -> int:
     try:
         return int(x.strip(), 0) if isinstance(x, str) and x.strip()[:2].lower() in ("0x", "0b", "0o") else int(x)
     except (ValueError, OverflowError) as err:
-        raise EvalError(f"int({x!r}): {err}") from None
+        raise EvalError(f"int({shown(x)}): {_reason(err)}") from None
 
 
 def _float(x: Any) -> float:
     try:
         return float(x)
     except (ValueError, OverflowError) as err:
-        raise EvalError(f"float({x!r}): {err}") from None
+        raise EvalError(f"float({shown(x)}): {_reason(err)}") from None
 
 
 def _clamp(x: Any, lo: Any, hi: Any) -> Any:
     return lo if x < lo else hi if x > hi else x
+
+
+def _reason(err: Exception) -> str:
+    """Python's reason, without the value it may quote at length."""
+    if isinstance(err, OverflowError):
+        return "too large"
+    text = str(err)
+    if text == "math domain error":
+        return "outside the function's domain"
+    return text if len(text) <= 60 else text.split(":")[0]
 
 
 def _math(f: Callable[..., float]) -> Callable[..., float]:
@@ -144,7 +164,7 @@ def _math(f: Callable[..., float]) -> Callable[..., float]:
         try:
             return f(*args)
         except (ValueError, OverflowError) as err:
-            raise EvalError(f"{f.__name__}{args}: {err}") from None
+            raise EvalError(f"{f.__name__}({', '.join(shown(a) for a in args)}): {_reason(err)}") from None
 
     return wrapper
 

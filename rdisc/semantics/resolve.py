@@ -68,7 +68,8 @@ def resolve(units: list[Unit], diagnostics: Diagnostics) -> Symbols:
     for unit in units:
         _declare(unit, symbols, diagnostics)
     main = next((u for u in units if u.main), None)
-    if symbols.robot is None and main is not None:
+    robot_lost = any(keyword == "robot" for keyword, _ in symbols.damaged)
+    if symbols.robot is None and main is not None and not robot_lost:
         first = main.module.decls[0].span.start if main.module.decls else 0
         diagnostics.report(
             "E107",

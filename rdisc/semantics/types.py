@@ -20,7 +20,6 @@ from rdisc.syntax import ast
 
 T = Optional[Type]  # None: unknown, already reported
 NUMERIC = (Type.INT, Type.FLOAT)
-_NOT_CONSTANT = object()
 
 _ARITHMETIC = {"+", "-", "*", "/", "//", "%", "**"}
 _BITWISE = {"&", "|", "^", "<<", ">>"}
@@ -56,6 +55,7 @@ class Env:
     sees: str  # "state variables", ...
     reply: tuple[Type, ...] | None = None  # types of out[i], in post-actions
     reply_note: str | None = None  # why `out` is not available, when it is not
+    reply_known: bool = True  # False when the reply's template was already reported
 
 
 def unify(a: T, b: T) -> T:
@@ -78,16 +78,17 @@ class Typer:
 
     def __init__(self, diagnostics: Diagnostics) -> None:
         self.diagnostics = diagnostics
-        self._constants: dict[int, object] = {}
+        # id(node) → (node, value); holding the node keeps its id from being reused.
+        self._constants: dict[int, tuple[m.Expr, object]] = {}
         self.reads: set[str] = set()  # state variables read by any expression
 
     def constant(self, expr: m.Expr) -> object:
         """The value of a constant expression, or None when it is not constant."""
-        value = self._constants.get(id(expr), _NOT_CONSTANT)
-        return None if value is _NOT_CONSTANT else value
+        found = self._constants.get(id(expr))
+        return None if found is None else found[1]
 
     def is_constant(self, expr: m.Expr) -> bool:
-        return self._constants.get(id(expr), _NOT_CONSTANT) is not _NOT_CONSTANT
+        return id(expr) in self._constants
 
     # -- the rules ------------------------------------------------------------
 
@@ -117,7 +118,7 @@ class Typer:
         raise AssertionError(f"unknown expression node {e!r}")
 
     def _const(self, node: m.Const) -> m.Expr:
-        self._constants[id(node)] = node.value
+        self._constants[id(node)] = (node, node.value)
         return node
 
     def _ref(self, e: ast.Ref, env: Env) -> m.Expr:
@@ -150,6 +151,8 @@ class Typer:
             self.diagnostics.report("E404", e.span, f"`{e.base.name}` cannot be indexed", help="only the reply `out` can be indexed")
             return m.ReplyValue(0, None, e.span)  # type: ignore[arg-type]
         index = self.expr(e.index, env)
+        if not env.reply_known:
+            return m.ReplyValue(0, None, e.span)  # type: ignore[arg-type]
         if env.reply is None:
             self.diagnostics.report(
                 "E103", e.base.span, f"`out` is not in scope {env.where}",
@@ -157,12 +160,11 @@ class Typer:
             )
             return m.ReplyValue(0, None, e.span)  # type: ignore[arg-type]
         value = self.constant(index)
-        if index.type is not None and (index.type is not Type.INT or value is None):
+        if index.type is None:
+            return m.ReplyValue(0, None, e.span)  # type: ignore[arg-type]
+        if index.type is not Type.INT or not isinstance(value, int) or isinstance(value, bool):
             self.diagnostics.report("E305", e.index.span, "the index of `out` must be a constant integer")
             return m.ReplyValue(0, None, e.span)  # type: ignore[arg-type]
-        if value is None:
-            return m.ReplyValue(0, None, e.span)  # type: ignore[arg-type]
-        assert isinstance(value, int)
         if not 0 <= value < len(env.reply):
             count = len(env.reply)
             self.diagnostics.report(
@@ -245,10 +247,10 @@ class Typer:
                 f"the two branches have different types: {describe(then.type)} and {describe(orelse.type)}",
             )
         node = m.IfElse(cond, then, orelse, result, e.span)  # type: ignore[arg-type]
-        if self.is_constant(cond):
+        if result is not None and self.is_constant(cond):
             chosen = then if self.constant(cond) else orelse
             if self.is_constant(chosen):
-                self._constants[id(node)] = self.constant(chosen)
+                self._constants[id(node)] = (node, self.constant(chosen))
         return node
 
     def _call(self, e: ast.CallExpr, env: Env) -> m.Expr:
@@ -321,5 +323,5 @@ class Typer:
         except (ArithmeticError, ValueError, TypeError) as err:
             self.diagnostics.report("E405", node.span, f"cannot evaluate: {err}")
             return node
-        self._constants[id(node)] = value
+        self._constants[id(node)] = (node, value)
         return node

@@ -28,8 +28,6 @@ def codes(tmp_path: Path, text: str) -> list[str]:
 # -- one diagnostic per fault ------------------------------------------------------------
 
 
-@pytest.mark.xfail(strict=True, reason="W101 cascade: the primitive is called by the interface whose syntax error "
-                   "dropped it, yet it is reported as never called")
 def test_syntax_error_in_an_interface_does_not_make_its_primitives_unused(tmp_path: Path) -> None:
     assert codes(tmp_path, """
 connection link: serial { baud 9600 }
@@ -39,8 +37,6 @@ input start: Contact -> go()
 """) == ["E001"]
 
 
-@pytest.mark.xfail(strict=True, reason="E305 cascade: after E304 the regex counts as having 0 groups, so every "
-                   "`out[i]` is also reported as outside the reply")
 def test_invalid_regex_does_not_make_out_indexes_wrong(tmp_path: Path) -> None:
     assert codes(tmp_path, """
 state level: int = 0
@@ -51,8 +47,6 @@ output report: Range { distance = float(level) }
 """) == ["E304"]
 
 
-@pytest.mark.xfail(strict=True, reason="E206 twice for one typo: `distanse` is 'not a field' and `distance` is "
-                   "'not defined'; the help already says did you mean `distance`")
 def test_misspelt_output_field_is_one_error(tmp_path: Path) -> None:
     assert codes(tmp_path, """
 connection link: serial { baud 9600 threading single at 10 Hz }
@@ -62,8 +56,6 @@ output report: Range { distanse = 1.0 }
 """) == ["E206"]
 
 
-@pytest.mark.xfail(strict=True, reason="E204 cascade: a constant initial value whose evaluation fails (E405) is "
-                   "also reported as 'not a constant'")
 @pytest.mark.parametrize("value", ["1e308 + 1e308", "sqrt(-1.0)", "1 // 0"])
 def test_failed_constant_initial_value_is_one_error(tmp_path: Path, value: str) -> None:
     assert codes(tmp_path, f"""
@@ -97,8 +89,6 @@ input i: Contact -> go()
 """)
 
 
-@pytest.mark.xfail(strict=True, reason="a division that overflows to infinity is accepted (and built as "
-                   "`float(\"inf\")`), while `1e308 * 10.0` is E405")
 def test_float_overflow_by_division_is_e405(tmp_path: Path) -> None:
     assert "E405" in codes(tmp_path, """
 connection link: serial { baud 9600 }
@@ -125,29 +115,22 @@ input i: Contact -> go()
 """
 
 
-@pytest.mark.xfail(strict=True, reason="E405 shows Python's exception text: "
-                   "\"10.0 ** 400: (34, 'Numerical result out of range')\"")
 def test_float_power_overflow_is_said_in_words(tmp_path: Path) -> None:
     message = message_of(tmp_path, "E405", ARGUMENT.format(type="float", pack=">d", expr="10.0 ** 400"))
     assert "(34," not in message and "Numerical result" not in message
     assert "too large" in message or "overflow" in message
 
 
-@pytest.mark.xfail(strict=True, reason="E405 shows Python's exception text and argument tuple: "
-                   "'sqrt(-1.0,): math domain error'")
 def test_math_domain_error_is_said_in_words(tmp_path: Path) -> None:
     message = message_of(tmp_path, "E405", ARGUMENT.format(type="float", pack=">d", expr="sqrt(-1.0)"))
     assert ",)" not in message and "math domain error" not in message
 
 
-@pytest.mark.xfail(strict=True, reason="E405 prints a 401-digit number and Python's 'int too large to convert "
-                   "to float'")
 def test_huge_int_to_float_is_said_briefly(tmp_path: Path) -> None:
     message = message_of(tmp_path, "E405", ARGUMENT.format(type="float", pack=">d", expr="float(10 ** 400)"))
     assert len(message) < 160, message
 
 
-@pytest.mark.xfail(strict=True, reason="E403 prints the whole 310-digit value in its message")
 def test_huge_value_out_of_range_is_said_briefly(tmp_path: Path) -> None:
     message = message_of(tmp_path, "E403", """
 connection link: serial { baud 9600 }
@@ -158,8 +141,6 @@ input i: Contact -> go()
     assert len(message) < 160, message
 
 
-@pytest.mark.xfail(strict=True, reason="E303 says `{0.__class__}` / `{0[0]}` are 'not positional', but they are "
-                   "positional: what is refused is the attribute or index access")
 @pytest.mark.parametrize("field, word", [("{0.__class__}", "attribute"), ("{0[0]}", "index")])
 def test_format_field_access_is_named_for_what_it_is(tmp_path: Path, field: str, word: str) -> None:
     message = message_of(tmp_path, "E303", f"""
@@ -181,8 +162,6 @@ input i: Contact -> go()
     assert "`}`" not in message and "`]`" not in message and "a name" not in message, message
 
 
-@pytest.mark.xfail(strict=True, reason="a constant call argument is not range-checked against the pack code its "
-                   "parameter feeds: `p(300)` into `pack \">B\" (x)` passes the check and fails at run time")
 def test_constant_argument_that_does_not_fit_the_pack_code_is_e403(tmp_path: Path) -> None:
     assert "E403" in codes(tmp_path, """
 connection link: serial { baud 9600 }
@@ -192,8 +171,6 @@ input i: Contact -> go()
 """)
 
 
-@pytest.mark.xfail(strict=True, reason="E107 cascade: a `robot` declaration lost to a syntax error is reported "
-                   "as missing (damaged declarations silence E102, not E107)")
 def test_syntax_error_in_the_robot_does_not_say_there_is_no_robot(tmp_path: Path) -> None:
     path = tmp_path / "robot.rdis"
     path.write_text('robot r { author }\nconnection link: serial { baud 9600 }\n', encoding="utf-8")

@@ -39,3 +39,17 @@ def test_a_robot_belongs_in_the_main_file(tmp_path: Path) -> None:
     assert [(d.code, d.message) for d in c.diagnostics.items] == [
         ("E107", "a `robot` declaration belongs in the main description, not an imported file")
     ]
+
+
+def test_imports_stay_inside_the_description_folder(tmp_path: Path) -> None:
+    """A description may come from a device or a network: it reads no other files."""
+    (tmp_path / "inner").mkdir()
+    (tmp_path / "secret.rdis").write_text("state s: int = 0\n")
+    main = tmp_path / "inner" / "main.rdis"
+    main.write_text('import "/etc/passwd"\nimport "../secret.rdis"\nimport "notes.txt"\nrobot r { author "x" }\n')
+    c = compile_path(str(main))
+    assert [(d.code, d.message, d.label) for d in c.diagnostics.items] == [
+        ("E007", f"cannot import `{path}`", "not a relative path to an .rdis file in the description's folder")
+        for path in ("/etc/passwd", "../secret.rdis", "notes.txt")
+    ]
+    assert sorted(c.sources) == sorted([str(main), *(p for p in c.sources if p.endswith("adapters.rdis"))])

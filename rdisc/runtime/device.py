@@ -1,0 +1,609 @@
+"""A description running against devices: `load` → `Description` → `connect` → `Robot`.
+
+The Model is turned once into plans (codecs, run orders, delays in seconds, and
+each expression of the checked IR prepared by `rdisc.runtime.evaluate.prepare`),
+so a call walks prepared objects and parses nothing. The semantics are the contract in `rdisc.runtime`.
+
+State lives in a dict that is never changed in place: post-actions build a new
+one under the state lock and publish it with one assignment, so any reader sees
+a consistent snapshot without locking.
+"""
+
+from __future__ import annotations
+
+import logging
+import numbers
+import os
+import struct
+import threading
+import time
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass
+from types import MappingProxyType
+from typing import Any
+
+from rdisc.runtime.codec import MAX_LINE, Codec
+from rdisc.runtime.errors import (
+    RdisCallbackError,
+    RdisConnectionError,
+    RdisError,
+    RdisLoadError,
+    RdisTimeout,
+    RdisValueError,
+)
+from rdisc.runtime.evaluate import EvalError, Prepared, coerce, prepare
+from rdisc.runtime.scheduler import Worker
+from rdisc.semantics import model as m
+
+__all__ = ["Description", "Robot", "load"]
+
+log = logging.getLogger("rdisc")
+
+OutputCallback = Callable[[dict[str, Any]], Any]
+ErrorCallback = Callable[[RdisError], Any]
+IoCallback = Callable[[str, str, bytes], Any]
+
+# Everything evaluating an expression can raise besides EvalError: a bad operand
+# type or a huge number cannot come from a checked model, but a value read from a
+# device can still make a function refuse it.
+_EVAL_ERRORS = (EvalError, ArithmeticError, ValueError, TypeError, OverflowError, IndexError)
+
+
+def load(source: str | os.PathLike[str] | m.Model) -> Description:
+    """A description ready to connect: a checked Model, or a .rdis / thesis-style .json file.
+
+    A file with errors raises RdisLoadError carrying its diagnostics; nothing of it
+    is evaluated.
+    """
+    if isinstance(source, m.Model):
+        return Description(source)
+    from rdisc.compile import compile_path
+
+    path = os.fspath(source)
+    compilation = compile_path(path)
+    if compilation.model is None or compilation.diagnostics.has_errors():
+        raise RdisLoadError.from_compilation(path, compilation)
+    return Description(compilation.model)
+
+
+# ---- plans: the Model prepared for running ----------------------------------------------
+
+
+@dataclass(frozen=True, slots=True)
+class _PrimitivePlan:
+    name: str
+    connection: str
+    params: tuple[tuple[str, m.Type], ...]
+    args: tuple[Prepared, ...]
+    codec: Codec
+    actions: tuple[tuple[str, Prepared, m.Type], ...]
+
+
+@dataclass(frozen=True, slots=True)
+class _CallPlan:
+    primitive: _PrimitivePlan
+    args: tuple[Prepared, ...]  # the call's arguments; if `direct`, the primitive's format values
+    delay: float  # seconds
+    direct: bool = False
+
+
+@dataclass(frozen=True, slots=True)
+class _OutputPlan:
+    name: str
+    fields: tuple[tuple[str, Prepared, m.Type], ...]
+
+
+@dataclass(frozen=True, slots=True)
+class _InterfacePlan:
+    name: str
+    params: tuple[tuple[str, m.Type], ...]
+    calls: tuple[_CallPlan, ...]  # in run order
+    output: _OutputPlan | None
+    connection: str | None  # the owner, for a periodic interface
+
+
+@dataclass(frozen=True, slots=True)
+class _InputPlan:
+    name: str
+    adapter: str
+    fields: tuple[tuple[str, m.Type, type], ...]  # name, declared type, its Python type
+    args: tuple[Prepared, ...]
+    interface: _InterfacePlan
+
+
+@dataclass(frozen=True, slots=True)
+class _HookPlan:
+    interface: _InterfacePlan
+    args: tuple[Prepared, ...]
+
+
+class Description:
+    """A checked description, prepared once; `connect` runs it against ports."""
+
+    def __init__(self, model: m.Model) -> None:
+        self.model = model
+        self.name = model.robot.name
+        self.primitives = {p.name: self._primitive(p) for p in model.primitives.values()}
+        self.outputs = {o.name: self._output(o) for o in model.outputs.values()}
+        self.interfaces = {i.name: self._interface(i) for i in model.interfaces.values()}
+        self.inputs = {i.name: self._input(i) for i in model.inputs.values()}
+        self.initial_state: dict[str, m.Value] = {s.name: s.initial for s in model.states.values()}
+        self.periodic: dict[str, list[_InterfacePlan]] = {}  # connection -> its periodic interfaces
+        for iface in model.interfaces.values():
+            plan = self.interfaces[iface.name]
+            if iface.periodic and plan.connection is not None:
+                self.periodic.setdefault(plan.connection, []).append(plan)
+
+    def _primitive(self, p: m.Primitive) -> _PrimitivePlan:
+        actions = tuple((a.target, prepare(a.value), self.model.states[a.target].type) for a in p.actions)
+        return _PrimitivePlan(p.name, p.connection, _params(p.params), tuple(map(prepare, p.args)), Codec(p), actions)
+
+    def _output(self, o: m.DomainOutput) -> _OutputPlan:
+        adapter = self.model.adapters[o.adapter]
+        return _OutputPlan(o.name, tuple((name, prepare(e), _field_type(adapter, name, e)) for name, e in o.fields))
+
+    def _interface(self, iface: m.Interface) -> _InterfacePlan:
+        calls = tuple(self._call(c) for c in iface.run_order())
+        owner = calls[0].primitive.connection if calls else next(iter(self.model.connections), None)
+        output = self.outputs[iface.triggers] if iface.triggers else None
+        return _InterfacePlan(iface.name, _params(iface.params), calls, output, owner)
+
+    def _call(self, call: m.PrimitiveCall) -> _CallPlan:
+        """A call, with the primitive's format arguments substituted where that changes nothing.
+
+        When the primitive has no post-actions and its format arguments are
+        constants and its parameters, each once and in order, its format values
+        are computed straight from the call's arguments (no binding in between):
+        the same expressions are evaluated, in the same order.
+        """
+        primitive = self.model.primitives[call.primitive]
+        plan = self.primitives[call.primitive]
+        delay = call.delay_ms / 1000.0
+        params = [p.name for p in primitive.params]
+        used = [a.name for a in primitive.args if isinstance(a, m.Var) and a.scope is m.Scope.PARAM]
+        simple = all(isinstance(a, m.Const) or (isinstance(a, m.Var) and a.scope is m.Scope.PARAM)
+                     for a in primitive.args)
+        if primitive.actions or not simple or used != params:
+            return _CallPlan(plan, tuple(map(prepare, call.args)), delay)
+        by_param = dict(zip(params, zip(primitive.params, call.args)))
+        direct: list[Prepared] = []
+        for arg in primitive.args:
+            if isinstance(arg, m.Var):
+                param, expr = by_param[arg.name]
+                direct.append(_widened(prepare(expr)) if param.type is m.Type.FLOAT and expr.type is m.Type.INT
+                              else prepare(expr))
+            else:
+                direct.append(prepare(arg))
+        return _CallPlan(plan, tuple(direct), delay, direct=True)
+
+    def _input(self, i: m.DomainInput) -> _InputPlan:
+        fields = tuple((f.name, f.type, _PYTHON_TYPES[f.type]) for f in self.model.adapters[i.adapter].fields)
+        return _InputPlan(i.name, i.adapter, fields, tuple(map(prepare, i.args)), self.interfaces[i.interface])
+
+    def hook(self, hook: m.HookCall) -> _HookPlan:
+        return _HookPlan(self.interfaces[hook.interface], tuple(map(prepare, hook.args)))
+
+    def connect(
+        self,
+        port: str | Any | Mapping[str, str | Any],
+        timeout: float = 1.0,
+        threads: bool = True,
+    ) -> Robot:
+        """Open the ports, run the startup hooks, start the connections' threads.
+
+        `port` is one port (a pyserial port name or URL, or an open pyserial-like
+        object) for every connection, or a dict from connection name to port.
+        """
+        return Robot(self, port, timeout, threads)
+
+
+def _widened(f: Prepared) -> Prepared:
+    def widened(s: Mapping[str, m.Value], loc: Mapping[str, m.Value], r: Any) -> m.Value:
+        value = f(s, loc, r)
+        return float(value) if type(value) is int else value
+
+    return widened
+
+
+def _params(params: tuple[m.Parameter, ...]) -> tuple[tuple[str, m.Type], ...]:
+    return tuple((p.name, p.type) for p in params)
+
+
+def _field_type(adapter: m.Adapter, name: str, expr: m.Expr) -> m.Type:
+    field = adapter.field(name)
+    return field.type if field is not None else expr.type
+
+
+# ---- ports --------------------------------------------------------------------------------
+
+
+class _Port:
+    """One open port, shared by the connections given the same one, with its exchange lock."""
+
+    __slots__ = ("io", "label", "lock", "owned")
+
+    def __init__(self, io: Any, owned: bool, label: str) -> None:
+        self.io = io
+        self.owned = owned
+        self.label = label
+        self.lock = threading.Lock()
+
+
+def _open(connection: m.Connection, port: str, timeout: float) -> Any:
+    import serial
+
+    try:
+        return serial.serial_for_url(
+            port, baudrate=connection.baud, bytesize=8, parity="N", stopbits=1,
+            timeout=timeout, write_timeout=timeout,
+        )
+    except (serial.SerialException, OSError, ValueError) as err:
+        raise RdisConnectionError(f"{connection.name}: cannot open {port}: {err}") from err
+
+
+def _write_timeout_types() -> tuple[type[BaseException], ...]:
+    try:
+        from serial import SerialTimeoutException
+    except ImportError:  # pragma: no cover - pyserial is a dependency
+        return ()
+    return (SerialTimeoutException,)
+
+
+_WRITE_TIMEOUTS = _write_timeout_types()
+
+
+# ---- the running robot ---------------------------------------------------------------------
+
+
+class Robot:
+    """A description connected to its devices. Use it as a context manager, or call close()."""
+
+    def __init__(
+        self,
+        description: Description,
+        port: str | Any | Mapping[str, str | Any],
+        timeout: float = 1.0,
+        threads: bool = True,
+    ) -> None:
+        self.description = description
+        self.model = description.model
+        self.name = description.name
+        self.timeout = timeout
+        self._state: dict[str, m.Value] = dict(description.initial_state)
+        self._state_lock = threading.Lock()
+        self._callback_lock = threading.RLock()
+        self._output_callbacks: list[OutputCallback] = []
+        self._error_callbacks: list[ErrorCallback] = []
+        self._io_callbacks: list[IoCallback] = []
+        self._ports: dict[str, _Port] = {}
+        self._workers: list[Worker] = []
+        self._closed = False
+        self._close_lock = threading.Lock()
+        try:
+            self._open_ports(port)
+            for connection in self.model.connections.values():
+                if connection.startup is not None:
+                    self._run_hook(description.hook(connection.startup))
+            self._workers = [self._worker(c) for c in self.model.connections.values()]
+            if threads:
+                for worker in self._workers:
+                    worker.start()
+            else:
+                for worker in self._workers:
+                    worker.restart_clock()
+        except BaseException:
+            self.close()
+            raise
+
+    # ---- callbacks --------------------------------------------------------------------------
+
+    def on_output(self, callback: OutputCallback) -> OutputCallback:
+        """Call `callback({"name": ..., "contents": {...}})` for every output triggered."""
+        with self._callback_lock:
+            self._output_callbacks.append(callback)
+        return callback
+
+    def on_error(self, callback: ErrorCallback) -> ErrorCallback:
+        """Call `callback(error)` for every error of periodic work, keepalives, hooks and callbacks."""
+        with self._callback_lock:
+            self._error_callbacks.append(callback)
+        return callback
+
+    def on_io(self, callback: IoCallback) -> IoCallback:
+        """Call `callback("write" | "read", connection, data)` for every write and every read with data."""
+        with self._callback_lock:
+            self._io_callbacks.append(callback)
+        return callback
+
+    # ---- calls ------------------------------------------------------------------------------
+
+    @property
+    def state(self) -> Mapping[str, m.Value]:
+        """A read-only snapshot of the state variables."""
+        return MappingProxyType(self._state)
+
+    @property
+    def closed(self) -> bool:
+        return self._closed
+
+    def call_input(self, name: str, /, **fields: Any) -> None:
+        """Run a domain input with its adapter's fields, on this thread; errors are raised."""
+        plan = self.description.inputs.get(name)
+        if plan is None:
+            raise KeyError(f"{self.name} has no input named {name!r}")
+        self._check_open()
+        local = _accept_fields(plan, fields)
+        state = self._state
+        try:
+            args = [f(state, local, ()) for f in plan.args]
+        except _EVAL_ERRORS as err:
+            raise RdisValueError(f"{name}: {err}") from None
+        self._run_interface(plan.interface, args)
+
+    def call_interface(self, name: str, /, *args: Any) -> None:
+        """Run an interface with positional arguments, on this thread; errors are raised."""
+        plan = self.description.interfaces.get(name)
+        if plan is None:
+            raise KeyError(f"{self.name} has no interface named {name!r}")
+        self._check_open()
+        if len(args) != len(plan.params):
+            raise TypeError(f"interface {name} takes {len(plan.params)} arguments, {len(args)} given")
+        values = [_accept(v, t, f"interface {name}: parameter {p}") for v, (p, t) in zip(args, plan.params)]
+        self._run_interface(plan, values)
+
+    def tick(self) -> None:
+        """One iteration of every connection's periodic work and due keepalive, on this thread."""
+        self._check_open()
+        for worker in self._workers:
+            worker.tick()
+
+    # ---- lifecycle -----------------------------------------------------------------------------
+
+    def close(self) -> None:
+        """Stop the threads, run the terminate hooks (errors reported), close the ports. Idempotent."""
+        with self._close_lock:
+            if self._closed:
+                return
+            self._closed = True
+        for worker in self._workers:
+            worker.stop()
+        for connection in self.model.connections.values():
+            if connection.terminate is not None and connection.name in self._ports:
+                try:
+                    self._run_hook(self.description.hook(connection.terminate))
+                except RdisError as err:
+                    self._report(err)
+        for port in {id(p): p for p in self._ports.values()}.values():
+            if port.owned:
+                try:
+                    port.io.close()
+                except Exception:  # noqa: BLE001, S110 - a port that fails to close is closed enough
+                    pass
+
+    def __enter__(self) -> Robot:
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.close()
+
+    def _check_open(self) -> None:
+        if self._closed:
+            raise RdisConnectionError(f"{self.name}: closed")
+
+    # ---- running the description ------------------------------------------------------------------
+
+    def _open_ports(self, port: str | Any | Mapping[str, str | Any]) -> None:
+        connections = self.model.connections
+        if isinstance(port, Mapping):
+            unknown = [name for name in port if name not in connections]
+            if unknown:
+                raise ValueError(f"{self.name} has no connection named {unknown[0]!r} "
+                                 f"(its connections: {', '.join(connections) or 'none'})")
+            missing = [name for name in connections if name not in port]
+            if missing:
+                raise ValueError(f"no port given for connection {missing[0]!r}")
+            given = dict(port)
+        else:
+            given = dict.fromkeys(connections, port)
+        opened: dict[object, _Port] = {}
+        for name, where in given.items():
+            key: object = where if isinstance(where, (str, os.PathLike)) else id(where)
+            if key not in opened:
+                if isinstance(where, (str, os.PathLike)):
+                    opened[key] = _Port(_open(connections[name], os.fspath(where), self.timeout), True, name)
+                else:
+                    opened[key] = _Port(where, False, name)
+            self._ports[name] = opened[key]
+
+    def _run_hook(self, hook: _HookPlan) -> None:
+        state = self._state
+        try:
+            args = [f(state, _EMPTY, ()) for f in hook.args]
+        except _EVAL_ERRORS as err:
+            raise RdisValueError(f"{hook.interface.name}: {err}") from None
+        self._run_interface(hook.interface, args)
+
+    def _worker(self, connection: m.Connection) -> Worker:
+        periodic = [
+            (lambda plan=plan: self._run_interface(plan, ()))
+            for plan in self.description.periodic.get(connection.name, ())
+        ]
+        keepalive = None
+        if connection.keepalive is not None:
+            hook = self.description.hook(connection.keepalive.call)
+            keepalive = lambda: self._run_hook(hook)
+        return Worker(
+            connection.name, connection.frequency_hz, periodic, keepalive,
+            connection.keepalive.interval_ms if connection.keepalive else None,
+            self._report, (Exception,),
+        )
+
+    def _run_interface(self, plan: _InterfacePlan, args: list[m.Value] | tuple[m.Value, ...]) -> None:
+        local = _bind(plan.params, args)
+        for call in plan.calls:
+            primitive = call.primitive
+            state = self._state
+            try:
+                values = [f(state, local, ()) for f in call.args]
+            except _EVAL_ERRORS as err:
+                raise RdisValueError(f"{plan.name}: {err}") from None
+            if call.direct:  # the call's values are the primitive's format values
+                self._exchange(primitive, values, _EMPTY)
+            else:
+                self._run_primitive(primitive, values)
+            if call.delay:
+                time.sleep(call.delay)
+        if plan.output is not None:
+            self._deliver(plan.output)
+
+    def _run_primitive(self, plan: _PrimitivePlan, args: list[m.Value]) -> None:
+        local = _bind(plan.params, args)
+        state = self._state
+        try:
+            values = [f(state, local, ()) for f in plan.args]
+        except _EVAL_ERRORS as err:
+            raise RdisValueError(f"{plan.name}: {err}") from None
+        self._exchange(plan, values, local)
+
+    def _exchange(self, plan: _PrimitivePlan, values: list[m.Value], local: Mapping[str, m.Value]) -> None:
+        """Encode, write, read the reply (under the port's lock), then run the post-actions."""
+        codec = plan.codec
+        try:
+            request = codec.encode(*values)
+        except struct.error as err:
+            raise codec.refused(err) from None
+        port = self._ports.get(plan.connection)
+        if port is None:
+            raise RdisConnectionError(f"{plan.connection}: not open")
+        io = port.io
+        with port.lock:
+            try:
+                if codec.expects_reply:
+                    io.reset_input_buffer()
+                io.write(request)
+            except _WRITE_TIMEOUTS:
+                raise RdisTimeout(f"{plan.name}: write not completed within {self.timeout:g} s") from None
+            except Exception as err:
+                raise RdisConnectionError(f"{plan.connection}: {err}") from err
+            if self._io_callbacks:
+                self._notify_io("write", plan.connection, request)
+            if not codec.expects_reply:
+                reply: tuple[m.Value, ...] = ()
+            else:
+                reply = self._read_reply(io, plan)
+        if plan.actions:
+            self._assign(plan, local, reply)
+
+    def _read_reply(self, io: Any, plan: _PrimitivePlan) -> tuple[m.Value, ...]:
+        codec = plan.codec
+        try:
+            data = io.read_until(b"\n", MAX_LINE) if codec.reads_line else io.read(codec.reply_size)
+        except Exception as err:
+            raise RdisConnectionError(f"{plan.connection}: {err}") from err
+        if not data:
+            raise RdisTimeout(f"{plan.name}: no reply within {self.timeout:g} s")
+        data = bytes(data)
+        if self._io_callbacks:
+            self._notify_io("read", plan.connection, data)
+        return codec.match(data) if codec.reads_line else codec.decode(data)
+
+    def _assign(self, plan: _PrimitivePlan, local: dict[str, m.Value], reply: tuple[m.Value, ...]) -> None:
+        """The post-actions: all values computed from one snapshot, then published together."""
+        with self._state_lock:
+            state = self._state
+            try:
+                values = [(target, coerce(f(state, local, reply), type_)) for target, f, type_ in plan.actions]
+            except _EVAL_ERRORS as err:
+                raise RdisValueError(f"{plan.name}: {err}") from None
+            new = dict(state)
+            new.update(values)
+            self._state = new
+
+    # ---- callbacks ------------------------------------------------------------------------------------
+
+    def _deliver(self, plan: _OutputPlan) -> None:
+        state = self._state
+        try:
+            contents = {name: coerce(f(state, _EMPTY, ()), type_) for name, f, type_ in plan.fields}
+        except _EVAL_ERRORS as err:
+            raise RdisValueError(f"{plan.name}: {err}") from None
+        message = {"name": plan.name, "contents": contents}
+        with self._callback_lock:
+            for callback in list(self._output_callbacks):
+                try:
+                    callback(message)
+                except Exception as err:  # noqa: BLE001 - a user's callback must not stop delivery
+                    error = RdisCallbackError(f"{plan.name}: output callback raised {type(err).__name__}: {err}")
+                    error.__cause__ = err
+                    self._report(error)
+
+    def _notify_io(self, direction: str, connection: str, data: bytes) -> None:
+        with self._callback_lock:
+            for callback in list(self._io_callbacks):
+                try:
+                    callback(direction, connection, data)
+                except Exception as err:  # noqa: BLE001 - a user's callback must not stop the I/O
+                    error = RdisCallbackError(f"{connection}: I/O callback raised {type(err).__name__}: {err}")
+                    error.__cause__ = err
+                    self._report(error)
+
+    def _report(self, error: BaseException) -> None:
+        with self._callback_lock:
+            callbacks = list(self._error_callbacks)
+            if not callbacks:
+                log.warning("%s: %s: %s", self.name, type(error).__name__, error)
+            for callback in callbacks:
+                try:
+                    callback(error)
+                except Exception:  # noqa: BLE001, S110 - the contract: an error callback's exception is ignored
+                    pass
+
+
+_EMPTY: Mapping[str, m.Value] = MappingProxyType({})
+_PYTHON_TYPES = {m.Type.INT: int, m.Type.FLOAT: float, m.Type.BOOL: bool, m.Type.STRING: str}
+
+
+def _bind(params: tuple[tuple[str, m.Type], ...], values: list[m.Value] | tuple[m.Value, ...]) -> dict[str, m.Value]:
+    """Parameters bound to computed values (of their types already, but for int -> float)."""
+    return {
+        name: float(value) if type_ is m.Type.FLOAT and type(value) is int else value
+        for (name, type_), value in zip(params, values)
+    }
+
+
+def _accept_fields(plan: _InputPlan, fields: Mapping[str, Any]) -> dict[str, m.Value]:
+    """An input's fields, checked and made their types; TypeError unless exactly the adapter's."""
+    local: dict[str, m.Value] = {}
+    if len(fields) == len(plan.fields):
+        for name, type_, python_type in plan.fields:
+            if name not in fields:
+                break
+            value = fields[name]
+            local[name] = value if type(value) is python_type else _accept(
+                value, type_, f"input {plan.name}: field {name}")
+        else:
+            return local
+    expected = ", ".join(name for name, _, _ in plan.fields)
+    raise TypeError(f"input {plan.name} takes the fields {expected} ({plan.adapter}); "
+                    f"given: {', '.join(fields) or 'none'}")
+
+
+def _accept(value: Any, type_: m.Type, what: str) -> m.Value:
+    """A value given for a parameter or field of this type, made that type; else TypeError."""
+    kind = type(value)
+    if type_ is m.Type.FLOAT:
+        if kind is float:
+            return value
+        if isinstance(value, numbers.Real) and kind is not bool:
+            return float(value)
+    elif type_ is m.Type.INT:
+        if kind is int:
+            return value
+        if isinstance(value, numbers.Integral) and kind is not bool:
+            return int(value)
+    elif type_ is m.Type.BOOL:
+        if kind is bool:
+            return value
+    elif isinstance(value, str):
+        return value
+    raise TypeError(f"{what} must be {type_.value}, not {kind.__name__} {value!r}")
