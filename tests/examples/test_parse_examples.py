@@ -14,7 +14,6 @@ from pathlib import Path
 import pytest
 
 from rdisc.diagnostics import Diagnostics
-from rdisc.semantics.operators import BINARY, FUNCTIONS, UNARY
 from rdisc.syntax import ast
 from rdisc.syntax.parse import parse
 
@@ -141,72 +140,3 @@ def test_standard_adapters_are_documented() -> None:
     odometry = _decl(module, ast.AdapterDecl, "Odometry")
     assert ":yaw" in odometry.doc
     assert "Celsius" in _decl(module, ast.AdapterDecl, "Temperature").doc
-
-
-# ---- the Create's velocity mapping (thesis Table 4.3) ----------------------------------
-
-
-def _evaluate(expr: ast.Expr, env: dict[str, object]) -> object:
-    """A reference evaluator for the expressions of these tests, over the AST."""
-    match expr:
-        case ast.IntLit() | ast.FloatLit() | ast.StrLit() | ast.BoolLit():
-            return expr.value
-        case ast.Ref():
-            return env[expr.name]
-        case ast.Unary():
-            return UNARY[expr.op](_evaluate(expr.operand, env))
-        case ast.BinOp(op="and"):
-            return _evaluate(expr.left, env) and _evaluate(expr.right, env)
-        case ast.BinOp(op="or"):
-            return _evaluate(expr.left, env) or _evaluate(expr.right, env)
-        case ast.BinOp():
-            return BINARY[expr.op](_evaluate(expr.left, env), _evaluate(expr.right, env))
-        case ast.Conditional():
-            return _evaluate(expr.then if _evaluate(expr.cond, env) else expr.orelse, env)
-        case ast.CallExpr():
-            return FUNCTIONS[expr.func.text](*(_evaluate(a, env) for a in expr.args))
-    raise AssertionError(f"not expected in this test: {expr!r}")
-
-
-def _apply(exprs: tuple[ast.Expr, ...], params: tuple[ast.Param, ...], args: list[object]) -> list[object]:
-    """The values of `exprs` inside a declaration called with `args`."""
-    env = {p.name.text: a for p, a in zip(params, args, strict=True)}
-    return [_evaluate(e, env) for e in exprs]
-
-
-TABLE_4_3 = [
-    # (linear m/s, angular rad/s) -> (opcode, velocity mm/s, radius mm), "Expected" column
-    ((-0.2, -0.4), (137, -200, 500)),
-    ((0.0, 0.0), (137, 0, 0)),
-    ((0.0, 0.2), (137, 0, -1)),
-    ((0.0, -0.2), (137, 0, 1)),
-    ((0.2, 0.0), (137, 200, 32767)),
-    ((-0.2, 0.0), (137, -200, 32767)),
-]
-
-
-@pytest.mark.parametrize(("twist", "expected"), TABLE_4_3, ids=[str(t) for t, _ in TABLE_4_3])
-def test_create_set_velocity_matches_table_4_3(twist, expected) -> None:
-    module = _parse(EXAMPLES / "create.rdis")
-    adapter = _decl(_parse(STDLIB), ast.AdapterDecl, "DifferentialSpeed")
-    set_velocity = _decl(module, ast.InputDecl, "set_velocity")
-    drive_iface = _decl(module, ast.InterfaceDecl, "drive")
-    drive_prim = _decl(module, ast.PrimitiveDecl, "drive")
-
-    fields = dict(zip((f.name.text for f in adapter.fields), twist, strict=True))
-    iface_args = [_evaluate(a, fields) for a in set_velocity.call.args]
-    (stmt,) = drive_iface.body
-    prim_args = _apply(stmt.call.args, drive_iface.params, iface_args)
-    assert all(isinstance(a, int) for a in prim_args)
-    (encoding,) = [c for c in drive_prim.clauses if isinstance(c, ast.Encoding)]
-    packed = _apply(encoding.args, drive_prim.params, prim_args)
-    assert tuple(packed) == expected
-
-
-@pytest.mark.parametrize(("linear", "angular"), [(0.9, 0.0), (-3.0, 0.5), (1.0, 0.1), (0.1, -0.01)])
-def test_create_set_velocity_respects_open_interface_limits(linear, angular) -> None:
-    module = _parse(EXAMPLES / "create.rdis")
-    args = _decl(module, ast.InputDecl, "set_velocity").call.args
-    velocity, radius = (_evaluate(a, {"linear": linear, "angular": angular}) for a in args)
-    assert -0.5 <= velocity <= 0.5
-    assert radius == 32.767 or -2.0 <= radius <= 2.0

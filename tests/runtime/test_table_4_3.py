@@ -61,3 +61,13 @@ def test_set_velocity_sends_the_expected_column(model, given, expected) -> None:
     assert bytes_of_input(model, "set_velocity", {"linear": linear, "angular": angular}) == [
         struct.pack(">Bhh", *expected)
     ]
+
+
+@pytest.mark.parametrize(("linear", "angular"), [(0.9, 0.0), (-3.0, 0.5), (1.0, 0.1), (0.1, -0.01)])
+def test_set_velocity_keeps_to_the_open_interface_limits(model, linear, angular) -> None:
+    """Speed within ±500 mm/s; radius within ±2000 mm or the special 32767 (straight)."""
+    ((opcode, velocity, radius),) = (
+        struct.unpack(">Bhh", b) for b in bytes_of_input(model, "set_velocity", {"linear": linear, "angular": angular})
+    )
+    assert opcode == 137 and -500 <= velocity <= 500
+    assert radius == 32767 or -2000 <= radius <= 2000
