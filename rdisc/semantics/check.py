@@ -350,12 +350,8 @@ class _Checker:
     def pack_value(self, arg: m.Expr, expr: ast.Expr, slot: formats.Slot) -> None:
         self.flow(arg, slot.type, expr.span, f"pack code `{slot.code}`")
         value = self.typer.constant(arg)
-        if slot.low is not None and isinstance(value, int) and not isinstance(value, bool) and arg.type is Type.INT:
-            if not slot.low <= value <= slot.high:  # type: ignore[operator]
-                self.d.report(
-                    "E403", expr.span, f"{shown(value)} does not fit pack code `{slot.code}`",
-                    label=f"`{slot.code}` holds {slot.low} to {slot.high}",
-                )
+        if arg.type is Type.INT:
+            self.fits(value, slot, expr.span, "", f"`{slot.code}` holds {slot.low} to {slot.high}")
         if slot.code == "c" and isinstance(value, str) and len(value) != 1:
             self.d.report("E403", expr.span, "pack code `c` takes a string of exactly one character")
 
@@ -454,13 +450,17 @@ class _Checker:
             if not isinstance(packed, m.Var) or packed.scope is not Scope.PARAM or slot.low is None:
                 continue
             i = next(i for i, p in enumerate(prim.params) if p.name == packed.name)
-            value = self.typer.constant(args[i])
-            if isinstance(value, int) and not isinstance(value, bool) and not slot.low <= value <= slot.high:  # type: ignore[operator]
-                self.d.report(
-                    "E403", exprs[i].span,
-                    f"{shown(value)} does not fit pack code `{slot.code}` of primitive `{prim.name}`",
-                    label=f"parameter `{packed.name}` is packed as `{slot.code}`, {slot.low} to {slot.high}",
-                )
+            self.fits(
+                self.typer.constant(args[i]), slot, exprs[i].span, f" of primitive `{prim.name}`",
+                f"parameter `{packed.name}` is packed as `{slot.code}`, {slot.low} to {slot.high}",
+            )
+
+    def fits(self, value: object, slot: formats.Slot, span: Span, where: str, label: str) -> None:
+        """A constant integer must fit the range of the pack code it is written with."""
+        if slot.low is None or not isinstance(value, int) or isinstance(value, bool):
+            return
+        if not slot.low <= value <= slot.high:  # type: ignore[operator]
+            self.d.report("E403", span, f"{shown(value)} does not fit pack code `{slot.code}`{where}", label=label)
 
     def periodic_connection(self, decl: ast.InterfaceDecl) -> None:
         used: dict[str, ast.Ident] = {}

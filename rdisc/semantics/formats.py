@@ -225,7 +225,7 @@ def _nested_repeat(items, inside: bool) -> bool:
 
     for op, arg in items:
         if op in (c.MAX_REPEAT, c.MIN_REPEAT):
-            low, high, body = arg
+            _low, high, body = arg
             unbounded = high == c.MAXREPEAT or high > 64
             if inside and high > 1:
                 return True

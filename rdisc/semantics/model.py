@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import enum
 from dataclasses import dataclass, field
-from typing import NewType, Union
+from typing import NewType
 
 from rdisc.source import Span
 
@@ -32,7 +32,7 @@ class Type(enum.Enum):
         return {Type.INT: 0, Type.FLOAT: 0.0, Type.BOOL: False, Type.STRING: ""}[self]
 
 
-Value = Union[int, float, bool, str]
+Value = int | float | bool | str
 
 
 # ---- typed expressions ----------------------------------------------------------
@@ -104,7 +104,7 @@ class FuncCall:
     span: Span | None = _span
 
 
-Expr = Union[Const, Var, ReplyValue, UnaryOp, BinaryOp, IfElse, FuncCall]
+Expr = Const | Var | ReplyValue | UnaryOp | BinaryOp | IfElse | FuncCall
 
 
 # ---- elements --------------------------------------------------------------------

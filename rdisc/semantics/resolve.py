@@ -18,7 +18,7 @@ from rdisc.syntax import ast
 # Words that would be read as keywords where a name can stand. Other keywords of
 # the language only occur in places no name can, so they stay usable as names
 # (the thesis's Create has interfaces named `startup` and `drive`).
-KEYWORDS = frozenset("if else and or not True False out delay priority".split())
+KEYWORDS = frozenset(["if", "else", "and", "or", "not", "True", "False", "out", "delay", "priority"])
 
 
 @dataclass(frozen=True, slots=True)

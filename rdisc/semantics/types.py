@@ -9,7 +9,6 @@ Constant subexpressions are evaluated as they are typed, so a resource bomb
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Optional
 
 from rdisc.diagnostics import Diagnostics
 from rdisc.semantics import model as m
@@ -18,7 +17,7 @@ from rdisc.semantics.operators import BINARY, FUNCTIONS, UNARY, EvalError
 from rdisc.semantics.resolve import suggest
 from rdisc.syntax import ast
 
-T = Optional[Type]  # None: unknown, already reported
+T = Type | None  # None: unknown, already reported
 NUMERIC = (Type.INT, Type.FLOAT)
 
 _ARITHMETIC = {"+", "-", "*", "/", "//", "%", "**"}
@@ -193,7 +192,6 @@ class Typer:
 
     def _bad_operand(self, e: ast.Expr, t: Type, need: str) -> None:
         self.diagnostics.report("E404", e.span, f"{need}, not {describe(t)}")
-        return None
 
     def _binary(self, e: ast.BinOp, env: Env) -> m.Expr:
         left = self.expr(e.left, env)

@@ -8,7 +8,6 @@ kept as written, repeats included: the checker reports what is missing or double
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Union
 
 from rdisc.source import Span
 
@@ -101,7 +100,7 @@ class CallExpr:
     span: Span = _span
 
 
-Expr = Union[IntLit, FloatLit, StrLit, BoolLit, Ref, Index, Unary, BinOp, Conditional, CallExpr]
+Expr = IntLit | FloatLit | StrLit | BoolLit | Ref | Index | Unary | BinOp | Conditional | CallExpr
 
 
 # ---- pieces shared by declarations ------------------------------------------
@@ -194,7 +193,7 @@ class Hook:
     span: Span = _span
 
 
-ConnectionAttr = Union[Baud, Threading, Hook]
+ConnectionAttr = Baud | Threading | Hook
 
 
 @dataclass(frozen=True, slots=True)
@@ -233,7 +232,7 @@ class Actions:
     span: Span = _span
 
 
-PrimitiveClause = Union[On, Encoding, Decoding, Actions]
+PrimitiveClause = On | Encoding | Decoding | Actions
 
 
 @dataclass(frozen=True, slots=True)
@@ -257,7 +256,7 @@ class Triggers:
     span: Span = _span
 
 
-InterfaceClause = Union[Kind, Triggers]
+InterfaceClause = Kind | Triggers
 
 
 @dataclass(frozen=True, slots=True)
@@ -317,17 +316,10 @@ class OutputDecl:
     doc: str | None = None
 
 
-Decl = Union[
-    ImportDecl,
-    RobotDecl,
-    StateDecl,
-    ConnectionDecl,
-    PrimitiveDecl,
-    InterfaceDecl,
-    AdapterDecl,
-    InputDecl,
-    OutputDecl,
-]
+Decl = (
+    ImportDecl | RobotDecl | StateDecl | ConnectionDecl | PrimitiveDecl | InterfaceDecl | AdapterDecl | InputDecl
+    | OutputDecl
+)
 
 
 @dataclass(frozen=True, slots=True)

@@ -33,11 +33,11 @@ DECL_KEYWORDS = (
     "input",
     "output",
 )
-_DECL_START = re.compile(r"^(?:%s)\b" % "|".join(DECL_KEYWORDS), re.MULTILINE)
+_DECL_START = re.compile(r"^(?:{})\b".format("|".join(DECL_KEYWORDS)), re.MULTILINE)
 _DOC_RUN = re.compile(r"(?:^[ \t]*///[^\n]*\n?)+", re.MULTILINE)
 _DOC_LINE = re.compile(r"^[ \t]*/// ?([^\n]*)$", re.MULTILINE)
 _BLANK_OR_COMMENT = re.compile(r"(?:\s+|#[^\n]*)*")
-_DECL_NAME = re.compile(r"(%s)\s+([A-Za-z][A-Za-z0-9_]*)" % "|".join(DECL_KEYWORDS))
+_DECL_NAME = re.compile(r"({})\s+([A-Za-z][A-Za-z0-9_]*)".format("|".join(DECL_KEYWORDS)))
 
 
 @lru_cache(maxsize=1)
