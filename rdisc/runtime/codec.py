@@ -78,7 +78,7 @@ class Codec:
         return RdisValueError(f"{self.name}: {err}")
 
     def _pack_strings(self, *values: m.Value) -> bytes:
-        packed = list(values)
+        packed: list[object] = list(values)
         for i in self._strings:
             packed[i] = _latin1(self.name, packed[i])
         assert self._pack is not None

@@ -20,7 +20,7 @@ import time
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from types import MappingProxyType
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from rdisc.runtime.codec import MAX_LINE, Codec
 from rdisc.runtime.errors import (
@@ -35,12 +35,15 @@ from rdisc.runtime.evaluate import EvalError, Prepared, coerce, prepare
 from rdisc.runtime.scheduler import Worker
 from rdisc.semantics import model as m
 
+if TYPE_CHECKING:
+    from typing_extensions import Self
+
 __all__ = ["Description", "Robot", "load"]
 
 log = logging.getLogger("rdisc")
 
 OutputCallback = Callable[[dict[str, Any]], Any]
-ErrorCallback = Callable[[RdisError], Any]
+ErrorCallback = Callable[[BaseException], Any]
 IoCallback = Callable[[str, str, bytes], Any]
 
 # Everything evaluating an expression can raise besides EvalError: a bad operand
@@ -106,7 +109,7 @@ class _InterfacePlan:
 class _InputPlan:
     name: str
     adapter: str
-    fields: tuple[tuple[str, m.Type, type], ...]  # name, declared type, its Python type
+    fields: tuple[tuple[str, m.Type, type[Any]], ...]  # name, declared type, its Python type
     args: tuple[Prepared, ...]
     interface: _InterfacePlan
 
@@ -188,13 +191,19 @@ class Description:
         port: str | Any | Mapping[str, str | Any],
         timeout: float = 1.0,
         threads: bool = True,
+        *,
+        on_output: OutputCallback | None = None,
+        on_error: ErrorCallback | None = None,
+        on_io: IoCallback | None = None,
     ) -> Robot:
         """Open the ports, run the startup hooks, start the connections' threads.
 
         `port` is one port (a pyserial port name or URL, or an open pyserial-like
         object) for every connection, or a dict from connection name to port.
+        Callbacks given here are registered before anything is opened, so they
+        also see what the startup hooks do.
         """
-        return Robot(self, port, timeout, threads)
+        return Robot(self, port, timeout, threads, on_output=on_output, on_error=on_error, on_io=on_io)
 
 
 def _widened(f: Prepared) -> Prepared:
@@ -230,7 +239,7 @@ class _Port:
 
 
 def _open(connection: m.Connection, port: str, timeout: float) -> Any:
-    import serial
+    import serial  # type: ignore[import-untyped]
 
     try:
         return serial.serial_for_url(
@@ -243,7 +252,7 @@ def _open(connection: m.Connection, port: str, timeout: float) -> Any:
 
 def _write_timeout_types() -> tuple[type[BaseException], ...]:
     try:
-        from serial import SerialTimeoutException
+        from serial import SerialTimeoutException  # type: ignore[import-untyped]
     except ImportError:  # pragma: no cover - pyserial is a dependency
         return ()
     return (SerialTimeoutException,)
@@ -264,6 +273,10 @@ class Robot:
         port: str | Any | Mapping[str, str | Any],
         timeout: float = 1.0,
         threads: bool = True,
+        *,
+        on_output: OutputCallback | None = None,
+        on_error: ErrorCallback | None = None,
+        on_io: IoCallback | None = None,
     ) -> None:
         self.description = description
         self.model = description.model
@@ -279,6 +292,12 @@ class Robot:
         self._workers: list[Worker] = []
         self._closed = False
         self._close_lock = threading.Lock()
+        if on_output is not None:
+            self.on_output(on_output)
+        if on_error is not None:
+            self.on_error(on_error)
+        if on_io is not None:
+            self.on_io(on_io)
         try:
             self._open_ports(port)
             for connection in self.model.connections.values():
@@ -380,7 +399,7 @@ class Robot:
                 except Exception:  # noqa: BLE001, S110 - a port that fails to close is closed enough
                     pass
 
-    def __enter__(self) -> Robot:
+    def __enter__(self) -> Self:
         return self
 
     def __exit__(self, *exc: object) -> None:
@@ -507,7 +526,7 @@ class Robot:
             self._notify_io("read", plan.connection, data)
         return codec.match(data) if codec.reads_line else codec.decode(data)
 
-    def _assign(self, plan: _PrimitivePlan, local: dict[str, m.Value], reply: tuple[m.Value, ...]) -> None:
+    def _assign(self, plan: _PrimitivePlan, local: Mapping[str, m.Value], reply: tuple[m.Value, ...]) -> None:
         """The post-actions: all values computed from one snapshot, then published together."""
         with self._state_lock:
             state = self._state
@@ -560,7 +579,7 @@ class Robot:
 
 
 _EMPTY: Mapping[str, m.Value] = MappingProxyType({})
-_PYTHON_TYPES = {m.Type.INT: int, m.Type.FLOAT: float, m.Type.BOOL: bool, m.Type.STRING: str}
+_PYTHON_TYPES: dict[m.Type, type[Any]] = {m.Type.INT: int, m.Type.FLOAT: float, m.Type.BOOL: bool, m.Type.STRING: str}
 
 
 def _bind(params: tuple[tuple[str, m.Type], ...], values: list[m.Value] | tuple[m.Value, ...]) -> dict[str, m.Value]:
@@ -578,7 +597,7 @@ def _accept_fields(plan: _InputPlan, fields: Mapping[str, Any]) -> dict[str, m.V
         for name, type_, python_type in plan.fields:
             if name not in fields:
                 break
-            value = fields[name]
+            value: Any = fields[name]
             local[name] = value if type(value) is python_type else _accept(
                 value, type_, f"input {plan.name}: field {name}")
         else:

@@ -25,7 +25,10 @@ import time
 import tty
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
-from typing import Self
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from typing_extensions import Self
 
 __all__ = ["CreateEmulator", "KoalaEmulator", "PtyDevice", "pty_device"]
 
