@@ -462,24 +462,6 @@ def test_two_megabyte_unterminated_string_is_a_diagnostic(workdir: Path) -> None
     assert [d.message for d in c.diagnostics.items if d.code == "E002"] == ["unterminated string"]
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="an unterminated string costs several times a closed one of the same length (3 MB: ~2.7 s against "
-    "~0.6 s; 5 MB: 7 to 10 s), all of it in the lexer's regex matching: the string pattern fails only at "
-    "the end of the line and is tried again",
-)
-def test_an_unterminated_string_costs_no_more_than_a_closed_one(workdir: Path) -> None:
-    def seconds(tail: str) -> float:
-        path = workdir / "timed-string.rdis"
-        path.write_text(HEAD + 'primitive p() on link format "' + "A" * 3_000_000 + tail, encoding="utf-8")
-        start = time.perf_counter()
-        compile_path(str(path))
-        return time.perf_counter() - start
-
-    closed, unterminated = seconds('" ()\n'), seconds("\n")
-    assert unterminated < 2 * closed + 0.3, (closed, unterminated)
-
-
 def test_deeply_nested_json(workdir: Path) -> None:
     giant(workdir, "nested.json", "[" * 100_000 + "]" * 100_000, "E005")
     giant(workdir, "nested-objects.json", '{"a":' * 50_000 + "1" + "}" * 50_000, "E005")
