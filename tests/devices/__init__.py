@@ -112,10 +112,10 @@ class PtyDevice:
 
     def _close_fd(self) -> None:
         with self._cond:
-            master, self._master = self._master, None
+            if self._master is not None:
+                os.close(self._master)
+                self._master = None
             self._cond.notify_all()
-        if master is not None:
-            os.close(master)
 
     def _cleared(self) -> None:
         """Subclasses reset their own records here (called under the lock)."""
