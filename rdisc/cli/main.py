@@ -6,9 +6,9 @@ import argparse
 import sys
 
 from rdisc import __version__
-from rdisc.cli import build, check, explain, import_, run
+from rdisc.cli import build, check, emit_python, explain, import_, run
 
-VERBS = (check, build, import_, explain, run)
+VERBS = (check, build, import_, explain, run, emit_python)
 EXIT_INTERNAL = 3
 
 

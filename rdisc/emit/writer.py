@@ -63,6 +63,10 @@ class Writer:
         with self.indented():
             yield
 
+    def width(self, limit: int = 100) -> int:
+        """Columns left on a line at the current depth, in a file of `limit` columns."""
+        return limit - len(INDENT) * self._depth
+
     def text(self) -> str:
         """Everything written, with one newline at the end."""
         return "\n".join(self._lines).rstrip("\n") + "\n"

@@ -1,0 +1,318 @@
+"""Typed expression IR → Python expression source, for the generated driver.
+
+Precedence and parentheses come from the parser's table (rdisc.syntax.precedence),
+which orders the operators as Python does. The text computes what
+rdisc.semantics.operators computes: where a Python operator alone would not
+(a float overflowing to inf, an unbounded power or shift, a long string, the
+`0x` forms of `int`), it goes through a helper the driver defines (`_mul`,
+`_pow`, ...). A float overflow needs no check where the infinity cannot get lost
+before a consumer that refuses it (`round(velocity * 1000)`: `round(inf)` raises
+as the checked multiplication would, so the error is the same RdisValueError).
+
+A `Py` keeps the shape of its text, so a long expression can be laid out over
+several lines at its calls and operator chains (`lines`), the way a person would
+break it; the generated code always has an expression inside brackets, where a
+line break is free.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass
+from typing import NoReturn
+
+from rdisc.semantics import model as m
+from rdisc.semantics.model import Scope, Type
+from rdisc.syntax import precedence as p
+
+INDENT = "    "
+
+
+@dataclass(frozen=True, slots=True)
+class Call:
+    head: str  # the function, `(` excluded
+    args: tuple[Py, ...]
+
+
+@dataclass(frozen=True, slots=True)
+class Chain:
+    """`first sep1 operand1 sep2 operand2 ...`: breaks before each separator."""
+
+    first: Py
+    rest: tuple[tuple[str, Py], ...]  # (separator with its trailing space, operand)
+
+
+@dataclass(frozen=True, slots=True)
+class Paren:
+    inner: Py
+
+
+Shape = Call | Chain | Paren | None
+
+
+@dataclass(frozen=True, slots=True)
+class Py:
+    """Python expression text, the precedence level of its outermost operator, and its shape."""
+
+    text: str
+    level: int
+    shape: Shape = None
+
+    def at(self, minimum: int) -> Py:
+        """This expression where an operand of level `minimum` is expected: parenthesised if lower."""
+        if self.level >= minimum:
+            return self
+        return Py(f"({self.text})", p.ATOM, Paren(self))
+
+
+def lines(e: Py, width: int) -> list[str]:
+    """`e` over lines no longer than `width` where its shape allows (indentation relative)."""
+    if len(e.text) <= width or e.shape is None:
+        return [e.text]
+    match e.shape:
+        case Paren(inner):
+            return ["(", *(INDENT + line for line in lines(inner, width - 4)), ")"]
+        case Call(head, args):
+            together = ", ".join(a.text for a in args)
+            if len(head) + 1 <= width and len(together) <= width - 4:  # the arguments on one line of their own
+                return [head + "(", INDENT + together, ")"]
+            out = [head + "("]
+            for arg in args:  # else one argument a line
+                sub = lines(arg, width - 5)
+                sub[-1] += ","
+                out += [INDENT + line for line in sub]
+            return [*out, ")"]
+        case Chain(first, rest):
+            out = lines(first, width)
+            for sep, operand in rest:
+                sub = lines(operand, width - len(sep))
+                out += [sep + sub[0], *sub[1:]]
+            return out
+    raise AssertionError(f"unknown shape {e.shape!r}")
+
+
+# ---- building text ----------------------------------------------------------------------------------
+
+
+def call(head: str, args: list[Py]) -> Py:
+    args = [a.at(p.CONDITIONAL) for a in args]
+    return Py(f"{head}({', '.join(a.text for a in args)})", p.ATOM, Call(head, tuple(args)))
+
+
+def binary(op: str, left: Py, right: Py, spelling: str | None = None) -> Py:
+    """`left op right` as the precedence table has it (`spelling` replaces the operator's text)."""
+    o = p.BINARY[op]
+    low, high = o.operands
+    if o.level == p.COMPARISON:  # as rdisc.syntax.precedence.binary: readers used to C
+        low = high = p.ARITH
+    a, b = left.at(low), right.at(high)
+    word = spelling if spelling is not None else o.spelling.strip()
+    rest = ((word + " ", b),)
+    # `a + b - c` is one chain (the left operand is not parenthesised, so it has this level).
+    if isinstance(a.shape, Chain) and a.level == o.level and a is left:
+        first, rest = a.shape.first, a.shape.rest + rest
+    else:
+        first = a
+    return Py(f"{a.text} {word} {b.text}", o.level, Chain(first, rest))
+
+
+def unary(op: str, operand: Py) -> Py:
+    o = p.UNARY_OPERATORS[op]
+    inner = operand.at(o.operands[0])
+    return Py(o.spelling + inner.text, o.level)
+
+
+def conditional(then: Py, cond: Py, orelse: Py) -> Py:
+    """`then if cond else orelse`, a chain of `else` branches when it is broken."""
+    t, c, e = (x.at(level) for x, level in zip((then, cond, orelse), p.CONDITIONAL_OPERANDS))
+    head = Py(f"{t.text} if {c.text}", p.CONDITIONAL)
+    rest: tuple[tuple[str, Py], ...]
+    if isinstance(e.shape, Chain) and e.level == p.CONDITIONAL and e is orelse:
+        rest = (("else ", e.shape.first), *e.shape.rest)  # x if a else y if b else z: one chain
+    else:
+        rest = (("else ", e),)
+    return Py(f"{t.text} if {c.text} else {e.text}", p.CONDITIONAL, Chain(head, rest))
+
+
+def float_literal(value: float) -> Py:
+    if math.isnan(value):
+        return Py("math.nan", p.ATOM)
+    text = "math.inf" if math.isinf(value) else repr(abs(value))
+    if math.copysign(1.0, value) < 0:
+        return Py("-" + text, p.UNARY)
+    return Py(text, p.ATOM)
+
+
+def literal(value: m.Value, type_: Type) -> Py:
+    """A constant as Python source, spelled by its declared type, through repr."""
+    match type_:
+        case Type.BOOL:
+            return Py(repr(bool(value)), p.ATOM)
+        case Type.INT:
+            number = int(value)
+            return Py(repr(number), p.UNARY if number < 0 else p.ATOM)
+        case Type.FLOAT:
+            return float_literal(float(value))
+        case Type.STRING:
+            return Py(quoted(str(value)), p.ATOM)
+    _unreachable(type_)
+
+
+def quoted(value: str | bytes) -> str:
+    """repr(value), with double quotes where that needs no other change."""
+    text = repr(value)
+    prefix = "b" if isinstance(value, bytes) else ""
+    body = text[len(prefix) + 1 : -1]
+    if text[len(prefix)] == "'" and '"' not in body and "\\'" not in body:
+        return f'{prefix}"{body}"'
+    return text
+
+
+# ---- the compiler -----------------------------------------------------------------------------------
+
+CHECKED_FLOAT = {"+": "_add", "-": "_sub", "*": "_mul", "/": "_div"}
+_PROPAGATE_NONFINITE = {"+", "-", "*"}  # an inf operand gives inf or nan
+
+
+def state_key(name: str) -> str:
+    """The key of a state variable in a names mapping (cannot be a parameter's name)."""
+    return "\0state:" + name
+
+
+class Compiler:
+    """Compiles expressions; records what their text uses (helpers, `state`, `math`)."""
+
+    def __init__(self) -> None:
+        self.helpers: set[str] = set()
+        self.reads_state = False
+
+    def expr(self, e: m.Expr, names: Mapping[str, str], finite: bool = False) -> Py:
+        """`e` as Python. `names`: local names of parameters and fields, and of state attributes
+        under `state_key`. `finite`: a non-finite value of `e` would be refused where it goes."""
+        match e:
+            case m.Const(value=value, type=type_):
+                return literal(value, type_)
+            case m.Var(name=name, scope=scope):
+                if scope is Scope.STATE:
+                    self.reads_state = True
+                    return Py(f"state.{names[state_key(name)]}", p.ATOM)
+                return Py(names[name], p.ATOM)
+            case m.ReplyValue(index=index):
+                return Py(f"reply[{index!r}]", p.ATOM)
+            case m.UnaryOp(op=op, operand=operand):
+                return unary(op, self.expr(operand, names, finite and op in ("-", "+")))
+            case m.BinaryOp(op=op, left=left, right=right, type=type_):
+                return self.binary(op, left, right, type_, names, finite)
+            case m.IfElse(cond=cond, then=then, orelse=orelse):
+                return conditional(self.expr(then, names, finite), self.expr(cond, names),
+                                   self.expr(orelse, names, finite))
+            case m.FuncCall(func=func, args=args):
+                return self.call(func, args, names, finite)
+        _unreachable(e)
+
+    def bound(self, e: m.Expr, declared: Type, names: Mapping[str, str]) -> Py:
+        """`e` as the value of a parameter, field or state variable of type `declared`: as the
+        contract binds values, an int becomes a float where a float is declared."""
+        py = self.expr(e, names)
+        if declared is Type.FLOAT and not surely_float(e):
+            return call("float", [py])
+        return py
+
+    def helper(self, name: str, args: list[Py]) -> Py:
+        self.helpers.add(name)
+        return call(name, args)
+
+    def binary(self, op: str, left: m.Expr, right: m.Expr, type_: Type, names: Mapping[str, str],
+               finite: bool) -> Py:
+        if op in CHECKED_FLOAT and type_ is Type.FLOAT:
+            if _cannot_overflow(op, left, right):  # an infinite operand may still get here
+                divisor_finite = finite and op != "/"
+                return binary(op, self.expr(left, names, finite), self.expr(right, names, divisor_finite))
+            if finite and op in _PROPAGATE_NONFINITE:
+                return binary(op, self.expr(left, names, True), self.expr(right, names, True))
+            if finite and op == "/":  # inf / x is inf or nan; x / inf is 0, so the divisor is checked
+                return binary(op, self.expr(left, names, True), self.expr(right, names))
+            return self.helper(CHECKED_FLOAT[op], [self.expr(left, names), self.expr(right, names)])
+        a, b = self.expr(left, names), self.expr(right, names)
+        if type_ is Type.STRING and op == "+":
+            return self.helper("_concat", [a, b])
+        if op == "**":
+            return self.helper("_pow", [a, b])
+        if op == "<<":
+            return self.helper("_lshift", [a, b])
+        if op in ("==", "!=") and (_bool_constant(left) or _bool_constant(right)):
+            # A bool against True or False: `is`, as linters want it (both sides are bools).
+            return binary(op, a, b, "is" if op == "==" else "is not")
+        return binary(op, a, b)
+
+    def call(self, func: str, args: tuple[m.Expr, ...], names: Mapping[str, str], finite: bool) -> Py:
+        match func:
+            case "round" if len(args) == 1:
+                return call("round", [self.expr(args[0], names, True)])  # round(inf) raises
+            case "round":
+                x = self.expr(args[0], names)
+                return call("round", [x if surely_float(args[0]) else call("float", [x]), self.expr(args[1], names)])
+            case "int" if args[0].type is Type.STRING:
+                return self.helper("_int", [self.expr(args[0], names)])
+            case "int":
+                return call("int", [self.expr(args[0], names, True)])  # int(inf) raises
+            case "abs":
+                return call("abs", [self.expr(args[0], names, finite)])
+            case "min" | "max" | "bool" | "str" | "float":
+                return call(func, [self.expr(a, names) for a in args])
+            case "clamp":
+                return self.helper("_clamp", [self.expr(a, names) for a in args])
+            case "sqrt" | "sin" | "cos" | "atan2" | "hypot":
+                return call(f"math.{func}", [self.expr(a, names) for a in args])
+        raise ValueError(f"unknown function {func!r}")
+
+
+def _cannot_overflow(op: str, left: m.Expr, right: m.Expr) -> bool:
+    """Whether a finite result is certain from the operands: `x * 0.5`, `x / 2` (and no
+    division by zero), `x + 0`."""
+    def constant(e: m.Expr) -> float | None:
+        if isinstance(e, m.Const) and e.type in (Type.INT, Type.FLOAT) and math.isfinite(e.value):
+            return abs(float(e.value))
+        return None
+
+    match op:
+        case "*":
+            return any(c is not None and c <= 1.0 for c in (constant(left), constant(right)))
+        case "/":
+            c = constant(right)
+            return c is not None and c >= 1.0
+        case "+" | "-":
+            return constant(left) == 0.0 or constant(right) == 0.0
+    return False
+
+
+def _bool_constant(e: m.Expr) -> bool:
+    return isinstance(e, m.Const) and e.type is Type.BOOL
+
+
+def surely_float(e: m.Expr) -> bool:
+    """Whether `e` is a float whenever it has a value. A float-typed expression may be an int
+    at run time (`min(1, 2.0)` is 1), and binding makes it a float."""
+    match e:
+        case m.Const(type=type_) | m.Var(type=type_) | m.ReplyValue(type=type_):
+            return type_ is Type.FLOAT
+        case m.UnaryOp(op="-" | "+", operand=operand):
+            return surely_float(operand)
+        case m.BinaryOp(op="/"):
+            return True
+        case m.BinaryOp(op="+" | "-" | "*" | "%" | "//" | "**", left=left, right=right, type=Type.FLOAT):
+            return surely_float(left) or surely_float(right)
+        case m.IfElse(then=then, orelse=orelse):
+            return surely_float(then) and surely_float(orelse)
+        case m.FuncCall(func="float" | "sqrt" | "sin" | "cos" | "atan2" | "hypot"):
+            return True
+        case m.FuncCall(func="round", args=args):
+            return len(args) == 2
+        case m.FuncCall(func="abs" | "min" | "max" | "clamp", args=args):
+            return all(surely_float(a) for a in args)
+    return False
+
+
+def _unreachable(node: NoReturn) -> NoReturn:
+    raise AssertionError(f"unhandled case {node!r}")

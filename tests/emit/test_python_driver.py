@@ -1,0 +1,508 @@
+"""`rdisc emit-python`: the generated drivers as text (goldens, lint, types, determinism)
+and as running code, imported from a temporary folder and driven over real
+pseudo-terminals against the emulated iRobot Create and K-Team Koala.
+"""
+
+from __future__ import annotations
+
+import ast
+import importlib.util
+import itertools
+import json
+import re
+import signal
+import struct
+import subprocess
+import sys
+import time
+from pathlib import Path
+from types import ModuleType
+
+import pytest
+from conftest import cli_env
+from devices import CreateEmulator, KoalaEmulator, pty_device
+from devices.create import DRIVE, FULL, SENSORS, START, STOP
+
+from rdisc.compile import compile_path
+from rdisc.emit.python import to_python
+
+REPO = Path(__file__).resolve().parents[2]
+EXAMPLES = REPO / "examples"
+GOLDEN = REPO / "tests" / "golden" / "drivers"
+
+TABLE_4_3 = [  # (linear m/s, angular rad/s) -> (opcode, linear mm/s, radius mm): the "Expected" column
+    ((-0.2, -0.4), (137, -200, 500)),
+    ((0.0, 0.0), (137, 0, 0)),
+    ((0.0, 0.2), (137, 0, -1)),
+    ((0.0, -0.2), (137, 0, 1)),
+    ((0.2, 0.0), (137, 200, 32767)),
+    ((-0.2, 0.0), (137, -200, 32767)),
+]
+
+
+def generate(source: Path, folder: Path, module: str) -> Path:
+    compilation = compile_path(str(source))
+    assert compilation.model is not None, compilation.diagnostics.items
+    path = folder / f"{module}.py"
+    path.write_text(to_python(compilation.model, source.name, sources=compilation.sources), encoding="utf-8")
+    return path
+
+
+def load(path: Path) -> ModuleType:
+    """Import a generated driver from its file, as `python -c "import NAME"` would."""
+    name = f"{path.stem}_{abs(hash(str(path)))}"
+    spec = importlib.util.spec_from_file_location(name, path)
+    assert spec is not None and spec.loader is not None
+    module = importlib.util.module_from_spec(spec)
+    sys.modules[name] = module
+    spec.loader.exec_module(module)
+    return module
+
+
+def without_delays(source: Path, folder: Path) -> Path:
+    """A copy of a description with every delay made 0 ms (fast tests)."""
+    copy = folder / source.name
+    copy.write_text(re.sub(r"delay \d+ ms", "delay 0 ms", source.read_text(encoding="utf-8")), encoding="utf-8")
+    return copy
+
+
+class Recorder:
+    """A callback keeping what it gets; `wait` until enough arrived."""
+
+    def __init__(self) -> None:
+        self.items: list[object] = []
+
+    def __call__(self, *args: object) -> None:
+        self.items.append(args[0] if len(args) == 1 else args)
+
+    def wait(self, predicate, timeout: float = 3.0) -> list[object]:
+        deadline = time.monotonic() + timeout
+        while not predicate(list(self.items)):
+            if time.monotonic() > deadline:
+                raise AssertionError(f"waited {timeout:g} s; got {self.items!r}")
+            time.sleep(0.005)
+        return list(self.items)
+
+
+@pytest.fixture(scope="module")
+def drivers(tmp_path_factory) -> dict[str, Path]:
+    folder = tmp_path_factory.mktemp("drivers")
+    fast = tmp_path_factory.mktemp("fast")
+    return {
+        "create": generate(EXAMPLES / "create.rdis", folder, "irobot_create"),
+        "koala": generate(EXAMPLES / "koala.rdis", folder, "koala"),
+        "fast_create": generate(without_delays(EXAMPLES / "create.rdis", fast), fast, "fast_create"),
+    }
+
+
+# ---- the text ----------------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("example", ["create", "koala"])
+def test_generated_source_matches_the_golden(drivers, golden, example) -> None:
+    golden.check(GOLDEN / f"{example}.py", drivers[example].read_text(encoding="utf-8"))
+
+
+@pytest.mark.parametrize("example", ["create", "koala"])
+def test_ruff_finds_nothing(drivers, example) -> None:
+    done = subprocess.run([sys.executable, "-m", "ruff", "check", "--isolated", "--no-cache", str(drivers[example])],
+                          capture_output=True, text=True, check=False)
+    assert done.returncode == 0, done.stdout + done.stderr
+
+
+def test_mypy_strict_finds_nothing(drivers, tmp_path) -> None:
+    paths = [str(drivers["create"]), str(drivers["koala"])]
+    done = subprocess.run(
+        [sys.executable, "-m", "mypy", "--strict", "--no-error-summary", "--cache-dir", str(tmp_path / "cache"),
+         *paths],
+        capture_output=True, text=True, check=False, cwd=tmp_path,
+    )
+    assert done.returncode == 0, done.stdout + done.stderr
+
+
+@pytest.mark.parametrize("example", ["create", "koala"])
+def test_no_eval_exec_compile_and_only_stdlib_and_pyserial(drivers, example) -> None:
+    tree = ast.parse(drivers[example].read_text(encoding="utf-8"))
+    calls = {node.func.id for node in ast.walk(tree) if isinstance(node, ast.Call) and isinstance(node.func, ast.Name)}
+    assert not calls & {"eval", "exec", "compile", "__import__"}
+    imported = {alias.name.split(".")[0] for node in ast.walk(tree) if isinstance(node, ast.Import)
+                for alias in node.names}
+    imported |= {node.module.split(".")[0] for node in ast.walk(tree)
+                 if isinstance(node, ast.ImportFrom) and node.module}
+    assert imported <= set(sys.stdlib_module_names) | {"__future__"}
+    dynamic = [node.args[0].value for node in ast.walk(tree) if isinstance(node, ast.Call)
+               and ast.unparse(node.func) == "importlib.import_module"]
+    assert set(dynamic) == {"serial"}  # pyserial, only when a port is named
+
+
+def test_file_line_comments_point_at_the_description(drivers) -> None:
+    text = drivers["create"].read_text(encoding="utf-8")
+    source = (EXAMPLES / "create.rdis").read_text(encoding="utf-8").split("\n")
+    assert "# create.rdis:37  primitive drive" in text
+    assert source[37 - 1].startswith("primitive drive(")
+    assert "# create.rdis:98  output detect_bump: Range" in text
+    assert source[98 - 1].startswith("output detect_bump")
+
+
+def test_a_build_is_byte_identical_under_any_hash_seed(tmp_path) -> None:
+    outputs = []
+    for seed in ("1", "4242"):
+        out = tmp_path / f"driver_{seed}.py"
+        done = subprocess.run(
+            [sys.executable, "-m", "rdisc", "emit-python", str(EXAMPLES / "koala.rdis"), "-o", str(out)],
+            env=cli_env(PYTHONHASHSEED=seed), capture_output=True, text=True, check=False, cwd=REPO,
+        )
+        assert done.returncode == 0, done.stderr
+        outputs.append(out.read_bytes())
+    assert outputs[0] == outputs[1]
+
+
+def test_emit_python_refuses_a_description_with_errors(rdisc, tmp_path) -> None:
+    bad = tmp_path / "bad.rdis"
+    bad.write_text("robot r {}\nprimitive p() on nowhere pack \"B\" (1)\n", encoding="utf-8")
+    out = tmp_path / "bad.py"
+    result = rdisc("emit-python", bad, "-o", out)
+    assert result.returncode == 1
+    assert "nowhere" in result.stderr
+    assert not out.exists()
+
+
+# ---- the Create, over a pty --------------------------------------------------------------------------
+
+
+@pytest.fixture(scope="module")
+def create(drivers):
+    """(device, robot, outputs, errors) with the generated Create driver connected (startup: 2 s)."""
+    driver = load(drivers["create"])
+    with CreateEmulator() as dev:
+        outputs, errors = Recorder(), Recorder()
+        robot = driver.connect(dev.port, on_output=outputs, on_error=errors)
+        try:
+            yield dev, robot, outputs, errors
+        finally:
+            robot.close()
+
+
+def test_startup_sends_start_then_full(create) -> None:
+    dev = create[0]
+    commands = dev.wait_for_commands(2)
+    assert [c for _, c in commands[:2]] == [bytes([START]), bytes([FULL])]
+    assert commands[1][0] - commands[0][0] >= 0.9  # `start() delay 1000 ms`
+
+
+@pytest.mark.parametrize(("given", "expected"), TABLE_4_3, ids=[str(row[0]) for row in TABLE_4_3])
+def test_set_velocity_writes_the_expected_column(create, given, expected) -> None:
+    dev, robot, _, errors = create
+    before = len(dev.drives())
+    linear, angular = given
+    robot.set_velocity(linear=linear, angular=angular)
+    commands = dev.wait_for_commands(before + 1, opcode=DRIVE)
+    assert commands[-1][1] == struct.pack(">Bhh", *expected)
+    assert errors.items == []
+
+
+def test_call_input_by_name_and_its_type_errors(create) -> None:
+    dev, robot, _, _ = create
+    before = len(dev.drives())
+    robot.call_input("set_velocity", linear=0.1, angular=0)  # an int where a float is declared is widened
+    assert dev.wait_for_commands(before + 1, opcode=DRIVE)[-1][1] == struct.pack(">Bhh", 137, 100, 32767)
+    with pytest.raises(TypeError, match="takes the fields linear, angular"):
+        robot.call_input("set_velocity", linear=0.1)
+    with pytest.raises(TypeError, match="field linear must be float, not str"):
+        robot.set_velocity(linear="fast", angular=0.0)
+    with pytest.raises(KeyError):
+        robot.call_input("fly", height=1.0)
+
+
+def test_bumper_pressed_gives_a_zero_distance(create) -> None:
+    dev, robot, outputs, _ = create
+    dev.bumpers = 1
+    outputs.wait(lambda items: items and items[-1] == {"name": "detect_bump", "contents": {"distance": 0.0}})
+    assert robot.state["bumperStates"] == 1 and robot.state.bumperStates == 1
+    dev.bumpers = 4  # a wheel drop is not an obstacle
+    outputs.wait(lambda items: items[-1] == {"name": "detect_bump", "contents": {"distance": 1.0}})
+    dev.bumpers = 0
+
+
+def test_close_writes_the_stop_command(drivers) -> None:
+    driver = load(drivers["fast_create"])
+    with CreateEmulator() as dev:
+        with driver.connect(dev.port, threads=False) as robot:
+            robot.set_velocity(linear=0.2, angular=0.0)
+        assert robot.closed
+        assert dev.wait_for_commands(4)[-1][1] == STOP
+        with pytest.raises(driver.RdisConnectionError, match="closed"):
+            robot.set_velocity(linear=0.2, angular=0.0)
+
+
+def test_ticks_without_threads_report_errors_instead_of_raising(drivers) -> None:
+    driver = load(drivers["fast_create"])
+    with CreateEmulator(mode="silent", bumpers=1) as dev:
+        errors, outputs = Recorder(), Recorder()
+        robot = driver.connect(dev.port, threads=False, timeout=0.2, on_error=errors, on_output=outputs)
+        try:
+            robot.tick()
+            assert len(errors.items) == 1 and isinstance(errors.items[0], driver.RdisTimeout)
+            assert str(errors.items[0]).startswith("bumpers: no reply within 0.2 s")
+            dev.mode = "normal"
+            robot.tick()
+            assert outputs.items == [{"name": "detect_bump", "contents": {"distance": 0.0}}]
+            assert len(errors.items) == 1
+        finally:
+            robot.close()
+
+
+SHORT = """
+robot shortie {}
+state value: int = 0
+connection link: serial { baud 9600 threading single at 10 Hz }
+primitive read() on link pack "B" (1) unpack ">H" { value = out[0] }
+interface poll() periodic { read() }
+"""
+
+
+def test_a_short_reply_is_a_protocol_error(tmp_path) -> None:
+    source = tmp_path / "shortie.rdis"
+    source.write_text(SHORT, encoding="utf-8")
+    driver = load(generate(source, tmp_path, "shortie"))
+    answers = iter([b"\x01", b"\x01\x02"])
+    with pty_device(lambda data: next(answers)) as dev:
+        errors = Recorder()
+        with driver.connect(dev.port, threads=False, timeout=0.2, on_error=errors) as robot:
+            robot.tick()
+            (error,) = errors.items
+            assert isinstance(error, driver.RdisProtocolError)
+            assert str(error) == "read: expected 2 bytes, got 1"
+            robot.tick()
+            assert robot.state["value"] == 0x0102
+
+
+def test_a_failing_output_callback_is_reported_and_delivery_goes_on(drivers) -> None:
+    driver = load(drivers["fast_create"])
+
+    def broken(output: object) -> None:
+        raise RuntimeError("oops")
+
+    with CreateEmulator(bumpers=2) as dev:
+        errors, outputs = Recorder(), Recorder()
+        robot = driver.connect(dev.port, threads=False, on_error=errors)
+        robot.on_output(broken)
+        robot.on_output(outputs)
+        try:
+            robot.tick()
+        finally:
+            robot.close()
+    assert outputs.items == [{"name": "detect_bump", "contents": {"distance": 0.0}}]
+    (error,) = errors.items
+    assert isinstance(error, driver.RdisCallbackError) and isinstance(error.__cause__, RuntimeError)
+    assert str(error).startswith("detect_bump: ")
+
+
+def test_the_threads_poll_and_the_device_disappearing_is_a_connection_error(drivers) -> None:
+    driver = load(drivers["fast_create"])
+    with CreateEmulator() as dev:
+        errors, outputs = Recorder(), Recorder()
+        robot = driver.connect(dev.port, on_error=errors, on_output=outputs)
+        try:
+            outputs.wait(lambda items: len(items) >= 5)  # the 40 Hz thread
+            dev.close_master()
+            errors.wait(lambda items: any(isinstance(e, driver.RdisConnectionError) for e in items))
+            with pytest.raises(driver.RdisConnectionError, match="^btserial: "):
+                robot.set_velocity(linear=0.1, angular=0.0)
+        finally:
+            robot.close()  # the terminate hook fails too: reported, not raised
+
+
+def test_io_callbacks_see_every_write_and_read(drivers) -> None:
+    driver = load(drivers["fast_create"])
+    with CreateEmulator(bumpers=3) as dev:
+        io = Recorder()
+        robot = driver.connect(dev.port, threads=False, on_io=io)
+        try:
+            robot.tick()
+        finally:
+            robot.close()
+    assert io.items == [
+        ("write", "btserial", bytes([START])), ("write", "btserial", bytes([FULL])),
+        ("write", "btserial", bytes([SENSORS, 7])), ("read", "btserial", bytes([3])),
+        ("write", "btserial", STOP),
+    ]
+
+
+# ---- the Koala ---------------------------------------------------------------------------------------
+
+
+def test_koala_drives_reads_odometry_and_reports(drivers) -> None:
+    driver = load(drivers["koala"])
+    with KoalaEmulator() as dev:
+        outputs = Recorder()
+        robot = driver.connect({"rs232": dev.port}, threads=False, on_output=outputs)
+        try:
+            assert dev.lines[:2] == ["D,0,0", "G,0,0"]  # the startup hook
+            robot.set_velocity(linear=0.2, angular=0.0)
+            assert dev.lines[-1] == "D,44,44"  # 0.2 / 0.0045 = 44.4 speed units
+            dev.counters = (2000, 2000)
+            dev.proximity = [0] * 15 + [700]
+            robot.tick()
+            odometry, obstacle = outputs.items
+            assert odometry["name"] == "odometry"
+            assert odometry["contents"]["x"] == pytest.approx(0.09)  # 2000 pulses of 0.045 mm
+            assert odometry["contents"]["linear"] == pytest.approx(44 * 0.0045)
+            assert obstacle == {"name": "obstacle", "contents": {"distance": 0.0}}
+            assert robot.state["leftCount"] == 2000 and robot.state["proximity"] == 700
+        finally:
+            robot.close()
+    assert dev.lines[-1] == "D,0,0"  # the terminate hook
+
+
+@pytest.mark.parametrize(("mode", "error", "message"), [
+    ("silent", "RdisTimeout", "set_speed: no reply within 0.2 s"),
+    ("garbage", "RdisProtocolError", "set_speed: reply '#?garbage!' does not match '^d\\\\s*$'"),
+    ("unterminated", "RdisProtocolError", "set_speed: reply line not terminated: 'd'"),
+])
+def test_koala_faults_are_raised_to_the_caller_of_an_input(drivers, mode, error, message) -> None:
+    driver = load(drivers["koala"])
+    with KoalaEmulator() as dev:
+        robot = driver.connect(dev.port, threads=False, timeout=0.2)
+        try:
+            dev.mode = mode
+            with pytest.raises(getattr(driver, error)) as caught:
+                robot.set_velocity(linear=0.1, angular=0.0)
+            assert str(caught.value) == message
+            dev.mode = "normal"
+            robot.set_velocity(linear=0.0, angular=0.0)  # and the driver goes on
+        finally:
+            robot.close()
+
+
+# ---- the command line ---------------------------------------------------------------------------------
+
+
+def test_command_line_call_writes_the_bytes_and_stops_at_exit(drivers) -> None:
+    with CreateEmulator() as dev:
+        done = subprocess.run(
+            [sys.executable, str(drivers["create"]), "--port", dev.port, "--trace",
+             "--call", "set_velocity", "linear=0.2", "angular=0", "--duration", "0.5"],
+            capture_output=True, text=True, check=False, timeout=30, env=cli_env(),
+        )
+        assert done.returncode == 0, done.stderr
+        dev.wait_for_commands(4)
+        assert dev.opcodes()[:2] == [START, FULL]
+        assert dev.drives() == [(200, 32767), (0, 0)]
+        assert dev.commands[-1][1] == STOP
+    trace = done.stderr.splitlines()
+    assert trace[:2] == ["btserial > 80", "btserial > 84"]
+    assert "btserial > 89 00 c8 7f ff" in trace
+    assert trace[-1] == "btserial > 89 00 00 00 00"
+
+
+@pytest.mark.parametrize(("signum", "status"), [(signal.SIGINT, 130), (signal.SIGTERM, 143)])
+def test_command_line_stops_the_robot_on_a_signal(drivers, signum, status) -> None:
+    with CreateEmulator(bumpers=1) as dev:
+        process = subprocess.Popen(
+            [sys.executable, str(drivers["fast_create"]), "--port", dev.port, "--watch"],
+            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=cli_env(),
+        )
+        try:
+            first = process.stdout.readline()  # the first output: the robot runs
+            assert json.loads(first) == {"name": "detect_bump", "contents": {"distance": 0.0}}
+            process.send_signal(signum)
+            assert process.wait(timeout=10) == status
+        finally:
+            if process.poll() is None:
+                process.kill()
+            process.stdout.close()
+            process.stderr.close()
+        dev.wait_until(lambda: dev.commands and dev.commands[-1][1] == STOP, 2.0, "the stop command")
+
+
+def test_command_line_usage_errors(drivers) -> None:
+    for args, expected in [
+        (["--call", "fly"], "has no input or interface `fly`"),
+        (["--call", "set_velocity", "linear=1"], "takes linear=... angular=..."),
+        ([], "give the device's port"),
+    ]:
+        port = ["--port", "loop://"] if args else []
+        done = subprocess.run([sys.executable, str(drivers["create"]), *port, *args],
+                              capture_output=True, text=True, check=False, timeout=30, env=cli_env())
+        assert done.returncode == 2, done.stderr
+        assert expected in done.stderr
+
+
+# ---- names and literals the description chooses ------------------------------------------------------
+
+ODD = r'''
+/// A robot whose names are Python's: """quotes""" and a back\slash in its docs.
+robot odd { description "names that are Python keywords and builtins" }
+
+state lambda: int = 0
+state label: string = "it's \"quoted\"\n"
+state keys: float = 1.5
+
+connection loop: serial { baud 9600 threading single at 10 Hz }
+
+/// Echo: written, then read back (a pyserial loop:// port).
+primitive echo(class: int, print: string) on loop pack ">h3s" (class, print) unpack ">h3s" {
+    lambda = out[0] + 1
+    label = out[1] + label
+    keys = float(class) / 2
+}
+
+interface send(type: int, self: string) { echo(type, self) }
+
+adapter Odd { class: int unit "1"  print: string }
+
+input open: Odd -> send(class, print)
+'''
+
+
+def test_keywords_builtins_and_quotes_in_names_and_literals(tmp_path) -> None:
+    source = tmp_path / "odd.rdis"
+    source.write_text(ODD, encoding="utf-8")
+    path = generate(source, tmp_path, "odd")
+    text = path.read_text(encoding="utf-8")
+    assert "def open_(self, class_: int, print_: str)" in text
+    driver = load(path)
+    with driver.connect("loop://", threads=False) as robot:
+        robot.open_(class_=41, print_="abc")
+        assert robot.state["lambda"] == 42 and robot.state.lambda_ == 42
+        assert robot.state["label"] == "abcit's \"quoted\"\n"
+        assert robot.state["keys"] == 20.5
+        robot.call_input("open", **{"class": 1, "print": "xy"})
+        assert robot.state["lambda"] == 2
+        with pytest.raises(driver.RdisValueError, match="^echo: "):
+            robot.open_(class_=40000, print_="abc")  # out of range for `h`
+        with pytest.raises(driver.RdisValueError, match="^echo: "):
+            robot.open_(class_=1, print_="\u20ac")  # not latin-1
+    assert '"""quotes""" and a back\\slash' in driver.Odd.__doc__
+    assert dict(robot.state) == {"lambda": 2, "label": robot.state["label"], "keys": 0.5}
+    done = subprocess.run([sys.executable, "-m", "ruff", "check", "--isolated", "--no-cache", str(path)],
+                          capture_output=True, text=True, check=False)
+    assert done.returncode == 0, done.stdout
+
+
+def test_values_and_errors_agree_with_the_runtime(drivers, tmp_path) -> None:
+    """Edge values through set_velocity: the generated driver and the rdisc runtime write the same
+    bytes or raise the same error (type and element), over pyserial loop:// ports."""
+    serial = pytest.importorskip("serial")
+    runtime = pytest.importorskip("rdisc.runtime")
+    driver = load(drivers["fast_create"])
+    description = runtime.load(without_delays(EXAMPLES / "create.rdis", tmp_path))
+    values = [0.0, -0.0, 0.2, -0.4, 1e-308, -1e-308, 1e308, -1e308, 0.5000001, 3, float("inf"), float("nan")]
+    ours, theirs = serial.serial_for_url("loop://"), serial.serial_for_url("loop://")
+    generated = driver.connect(ours, threads=False)
+    interpreted = description.connect(theirs, threads=False)
+    try:
+        for linear, angular in itertools.product(values, repeat=2):
+            outcomes = []
+            for robot, port in ((generated, ours), (interpreted, theirs)):
+                port.reset_input_buffer()
+                try:
+                    robot.call_input("set_velocity", linear=linear, angular=angular)
+                    outcomes.append(port.read(port.in_waiting))
+                except Exception as err:  # noqa: BLE001 - compared by type and element
+                    outcomes.append((type(err).__name__, str(err).split(":")[0]))
+            assert outcomes[0] == outcomes[1], (linear, angular)
+    finally:
+        generated.close()
+        interpreted.close()
