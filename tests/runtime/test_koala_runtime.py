@@ -46,9 +46,11 @@ def test_periodic_reads_update_state_and_report_odometry(koala) -> None:
     dev, robot, outputs, _ = koala
     dev.speeds = (10, 20)
     dev.counters = (1000, 1000)  # 4.5 cm straight ahead
-    odometry = outputs.wait(lambda items: any(
-        o["name"] == "odometry" and o["contents"]["x"] > 0 for o in items))
-    last = next(o for o in odometry if o["name"] == "odometry" and o["contents"]["x"] > 0)["contents"]
+    def moved(o: dict) -> bool:  # a tick whose two reads both came after the change
+        return o["name"] == "odometry" and o["contents"]["x"] > 0 and o["contents"]["linear"] > 0
+
+    odometry = outputs.wait(lambda items: any(moved(o) for o in items))
+    last = next(o for o in odometry if moved(o))["contents"]
     assert last["x"] == pytest.approx(0.045)
     assert last["y"] == pytest.approx(0.0, abs=1e-12)
     assert last["theta"] == pytest.approx(0.0, abs=1e-12)
