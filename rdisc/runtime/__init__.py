@@ -66,8 +66,13 @@ Details both implementations follow (where the above is silent):
   input, interface or output whose expression failed for RdisValueError. The
   texts: "P: no reply within T s" (T formatted with :g), "P: expected N bytes,
   got K", "P: reply line not terminated: LINE", "P: reply LINE does not match
-  PATTERN" (LINE, PATTERN with repr), "C: ..." with the I/O error's text.
+  PATTERN" (LINE, PATTERN with repr), "P: write not completed within T s",
+  "C: cannot open PORT: ...", "C: ..." with the I/O error's text, "O: output
+  callback raised TYPE: ..." and "C: I/O callback raised TYPE: ..." for
+  RdisCallbackError, "ROBOT: closed" for a call after `close`.
   Comparisons across implementations use the type and that first name.
+- An unknown input or interface name is a KeyError; the wrong number of
+  arguments to an interface, or not exactly an input's fields, a TypeError.
 - Callbacks: on_output(cb) gets cb(output_dict), on_error(cb) gets cb(exception),
   on_io(cb) gets cb("write" | "read", connection, data) after each write and each
   read that returned data (a short read included). Callbacks run on the thread
@@ -91,10 +96,22 @@ Details both implementations follow (where the above is silent):
   value may also be an already-open pyserial-like object (write, read,
   read_until, reset_input_buffer), which is used as it is and not closed.
   A missing or unknown connection name in the dict is a ValueError.
+- `connect(port, timeout=1.0, threads=True, *, on_output=None, on_error=None,
+  on_io=None)`: callbacks given there are registered before anything is opened,
+  so they see the startup hooks' I/O and errors too.
 - `connect` that fails (opening, or a startup hook) closes what it opened (as
   `close` does, terminate hooks included) and raises the error. `close` is
   idempotent; a call after it is RdisConnectionError. Stopping lets a thread
   finish the interface it is running, delays included.
+- The command line (`rdisc run` and a generated driver's `__main__`): `--call
+  NAME K=V ...` calls an input with its fields, else an interface with its
+  parameters by name; values are int, else float, else True/False, else the
+  string. `--watch` prints each output as `json.dumps(output_dict)` on stdout,
+  one a line; `--trace` prints "CONN > 89 00 c8 7f ff" (written) and "CONN < 00"
+  (read) on stderr; errors reported while running are printed on stderr as
+  "rdisc run: TYPE: MESSAGE". Exit status: 0 done, 1 a description or device
+  error, 2 a usage error, 130 after SIGINT, 143 after SIGTERM; the terminate
+  hooks run in every case.
 """
 
 from rdisc.runtime.codec import MAX_LINE
