@@ -220,7 +220,7 @@ class _Driver:
         helpers = [name for name in support.HELPERS if name in self.exprs.helpers]  # a fixed order
         if helpers:
             w.blank(2)
-            w.line("# ---- expression helpers: operations as rdisc.semantics.operators defines them --------")
+            _section(w, "expression helpers: operations as rdisc.semantics.operators defines them")
             w.blank(1)
             if "_clamp" in helpers:
                 w.line(support.NUMBER_TYPE)
@@ -229,12 +229,16 @@ class _Driver:
                 w.raw(support.HELPERS[name])
                 w.blank(2)
         w.blank(2)
-        w.line("# ---- ports, schedules and values ------------------------------------------------------")
+        _section(w, "ports, schedules and values")
         w.blank(1)
         w.raw(support.PORTS)
         w.blank(2)
+        _section(w, "state: the robot's variables")
+        w.blank(1)
         self.state_class(w)
         w.blank(2)
+        _section(w, f"the robot: {self.cls}, connect()")
+        w.blank(1)
         w.raw(robot.text().rstrip("\n"))
         w.blank(2)
         w.line('if __name__ == "__main__":')
@@ -289,7 +293,7 @@ class _Driver:
         w.line("MAX_LINE = 4096")
         w.line('"""Bytes of one reply line, terminator included."""')
         w.blank(2)
-        w.line("# ---- errors: the classes of rdisc.runtime.errors ---------------------------------------")
+        _section(w, "errors: the classes of rdisc.runtime.errors")
         w.blank(1)
         w.raw(support.ERRORS)
         w.blank(2)
@@ -298,7 +302,7 @@ class _Driver:
     # -- codecs --------------------------------------------------------------------------------
 
     def codecs_section(self, w: Writer) -> None:
-        w.line("# ---- messages: each primitive's request and reply, prepared once -----------------------")
+        _section(w, "messages: each primitive's request and reply, prepared once")
         for prim in self.model.primitives.values():
             w.blank(1)
             self.comment(w, prim.span, f"primitive {prim.name}")
@@ -379,6 +383,8 @@ class _Driver:
             w.blank(1)
             self.init(w)
             w.blank(1)
+            _section(w, "callbacks")
+            w.blank(1)
             w.raw(_indent(support.ROBOT_CALLBACKS))
             w.blank(1)
             self.inputs_section(w)
@@ -391,7 +397,13 @@ class _Driver:
             w.blank(1)
             self.primitives_section(w)
             w.blank(1)
+            _section(w, "port I/O: one exchange at a time on each port")
+            w.blank(1)
             w.raw(_indent(support.ROBOT_IO))
+            w.blank(1)
+            _section(w, "delivering to callbacks: one at a time, a failing one reported")
+            w.blank(1)
+            w.raw(_indent(support.ROBOT_DELIVERY))
         w.blank(2)
         self.tables(w)
 
@@ -426,7 +438,7 @@ class _Driver:
     # -- inputs ------------------------------------------------------------------------------------
 
     def inputs_section(self, w: Writer) -> None:
-        w.line("# ---- domain inputs: what the framework asks of the robot ----------------------------")
+        _section(w, "domain inputs: what the framework asks of the robot")
         for i in self.model.inputs.values():
             w.blank(1)
             self.input_method(w, i)
@@ -516,7 +528,7 @@ class _Driver:
     # -- lifecycle -------------------------------------------------------------------------------------
 
     def lifecycle(self, w: Writer) -> None:
-        w.line("# ---- connections: opening, hooks, ticks, closing ------------------------------------")
+        _section(w, "connections: opening, hooks, ticks, closing")
         w.blank(1)
         with w.block("def open(self, port: PortSpec, *, threads: bool = True) -> None:"):
             w.line(_docstring(
@@ -601,9 +613,14 @@ class _Driver:
 
     def tick_method(self, w: Writer, c: m.Connection) -> None:
         with w.block(f"def _tick_{c.name}(self) -> None:"):
+            work = [what for what, present in (
+                ("its periodic interfaces", self.periodic[c.name]),
+                ("then its keepalive when due" if self.periodic[c.name] else "its keepalive when due",
+                 c.keepalive is not None and c.keepalive.interval_ms > 0),
+            ) if present]
             w.line(_docstring(
-                f"One tick of `{c.name}` (every {1000.0 / c.frequency_hz:g} ms): its periodic interfaces,\n"
-                "then its keepalive when due. Errors go to the error callbacks; the schedule goes on."
+                f"One tick of `{c.name}` (every {1000.0 / c.frequency_hz:g} ms): {', '.join(work)}.\n"
+                "Errors go to the error callbacks, and the schedule goes on."
             ))
             for iface in self.periodic[c.name]:
                 self.comment(w, iface.span, f"periodic interface {iface.name}")
@@ -624,7 +641,7 @@ class _Driver:
     # -- outputs -----------------------------------------------------------------------------------------
 
     def outputs_section(self, w: Writer) -> None:
-        w.line("# ---- domain outputs: what the robot reports ---------------------------------------")
+        _section(w, "domain outputs: what the robot reports")
         for o in self.model.outputs.values():
             w.blank(1)
             adapter = self.model.adapters[o.adapter]
@@ -654,7 +671,7 @@ class _Driver:
     # -- interfaces ------------------------------------------------------------------------------------
 
     def interfaces_section(self, w: Writer) -> None:
-        w.line("# ---- interfaces: primitive calls in priority order, with their delays -------------")
+        _section(w, "interfaces: primitive calls in priority order, with their delays")
         for iface in self.model.interfaces.values():
             w.blank(1)
             local = _params([(prm.name, prm.type) for prm in iface.params])
@@ -681,7 +698,7 @@ class _Driver:
     # -- primitives ------------------------------------------------------------------------------------
 
     def primitives_section(self, w: Writer) -> None:
-        w.line("# ---- primitives: one device command each -------------------------------------------")
+        _section(w, "primitives: one device command each")
         for prim in self.model.primitives.values():
             w.blank(1)
             self.primitive_method(w, prim)
@@ -806,7 +823,7 @@ class _Driver:
         with w.block(f") -> {self.cls}:"):
             names = ", ".join(self.model.connections)
             w.line(_docstring(
-                f"A {self.cls}, connected: its ports open, its startup hooks run, its threads started.\n\n"
+                f"The robot, running: its ports open, its startup hooks run, its threads started.\n\n"
                 '`port`: a pyserial port name or URL ("/dev/ttyUSB0", "COM3", "socket://host:4000")\n'
                 "or an open port object, for every connection; or a dict {connection: port}\n"
                 f"(connections: {names}). `timeout`: seconds to wait for a reply. With\n"
@@ -825,7 +842,7 @@ class _Driver:
 
     def command_line(self, w: Writer) -> None:
         w.blank(2)
-        w.line("# ---- the command line: the options of `rdisc run` -----------------------------------")
+        _section(w, "the command line: the options of `rdisc run`")
         w.blank(1)
         w.raw(support.COMMAND_LINE)
         w.blank(2)
@@ -969,6 +986,11 @@ def _value_error(w: Writer, element: str) -> None:
     """The `except` clause making an evaluation error an RdisValueError naming `element`."""
     w.line("except _EVAL_ERRORS as err:")
     w.line(f'    raise RdisValueError(f"{_identifier(element)}: {{err}}") from err')
+
+
+def _section(w: Writer, title: str) -> None:
+    """`# ---- title ----...` to column 100: the parts of the module, as a reader scans them."""
+    w.line(f"# ---- {title} ".ljust(w.width(), "-"))
 
 
 def _tuple(items: list[str]) -> str:

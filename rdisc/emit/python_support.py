@@ -309,8 +309,6 @@ class _Schedule:
                 return'''
 
 ROBOT_CALLBACKS = '''\
-# ---- callbacks ------------------------------------------------------------------
-
 def on_output(self, callback: OutputCallback) -> OutputCallback:
     """Call `callback({"name": ..., "contents": {...}})` for every output triggered."""
     with self._callback_lock:
@@ -354,7 +352,7 @@ def close(self) -> None:
         if thread is not threading.current_thread():
             thread.join()
     self.terminate()
-    for link in {id(link): link for link in self._links.values()}.values():
+    for link in {id(link.port): link for link in self._links.values()}.values():  # each port once
         if link.owned:
             try:
                 link.port.close()
@@ -365,8 +363,6 @@ def _not_running(self) -> RdisConnectionError:
     return RdisConnectionError(f"{ROBOT}: {'closed' if self._closed else 'not open'}")'''
 
 ROBOT_IO = '''\
-# ---- port I/O: one exchange at a time on each port ------------------------------
-
 def _send(self, link: _Link, primitive: str, request: bytes) -> None:
     """Write a request that expects no reply."""
     lock = link.lock
@@ -421,10 +417,9 @@ def _start_exchange(self, link: _Link, primitive: str, request: bytes) -> None:
     except Exception as err:
         raise _port_error(link, primitive, err, self.timeout) from err
     if self._io_callbacks:
-        self._notify_io("write", link.name, request)
+        self._notify_io("write", link.name, request)'''
 
-# ---- delivering to callbacks: one at a time, a failing one reported -----------------
-
+ROBOT_DELIVERY = '''\
 def _deliver(self, output: str, contents: dict[str, Value]) -> None:
     message: dict[str, Any] = {"name": output, "contents": contents}
     with self._callback_lock:

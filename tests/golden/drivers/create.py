@@ -39,7 +39,7 @@ MAX_LINE = 4096
 """Bytes of one reply line, terminator included."""
 
 
-# ---- errors: the classes of rdisc.runtime.errors ---------------------------------------
+# ---- errors: the classes of rdisc.runtime.errors -------------------------------------------------
 
 class RdisError(Exception):
     """Any failure while the robot runs."""
@@ -78,7 +78,7 @@ _EVAL_ERRORS = (ArithmeticError, ValueError, TypeError, IndexError)
 _log = logging.getLogger("rdisc")
 
 
-# ---- messages: each primitive's request and reply, prepared once -----------------------
+# ---- messages: each primitive's request and reply, prepared once ---------------------------------
 
 # create.rdis:29  primitive start
 _START_REQUEST = b"\x80"  # pack "B" (128)
@@ -94,7 +94,7 @@ _BUMPERS_REQUEST = b"\x8e\x07"  # pack "BB" (142, 7)
 _BUMPERS_REPLY = struct.Struct("B")
 
 
-# ---- expression helpers: operations as rdisc.semantics.operators defines them --------
+# ---- expression helpers: operations as rdisc.semantics.operators defines them --------------------
 
 _Number = TypeVar("_Number", int, float)
 
@@ -116,7 +116,7 @@ def _clamp(x: _Number, low: _Number, high: _Number) -> _Number:
     return x
 
 
-# ---- ports, schedules and values ------------------------------------------------------
+# ---- ports, schedules and values -----------------------------------------------------------------
 
 class Port(Protocol):
     """What the driver needs of an open port; pyserial's `Serial` has all of it."""
@@ -274,6 +274,8 @@ class _Schedule:
                 return
 
 
+# ---- state: the robot's variables ----------------------------------------------------------------
+
 @dataclasses.dataclass(frozen=True, eq=False)
 class State(Mapping[str, Value]):
     """The state variables of irobot_create: what was last read from the robot, and
@@ -301,6 +303,8 @@ class State(Mapping[str, Value]):
 _STATE_ATTRIBUTES: dict[str, str] = {"bumperStates": "bumperStates"}
 """The attribute of State that holds each state variable, by name."""
 
+
+# ---- the robot: IrobotCreate, connect() ----------------------------------------------------------
 
 class IrobotCreate:
     """iRobot Create over the Open Interface (thesis Appendix B).
@@ -330,7 +334,7 @@ class IrobotCreate:
         self._link_btserial: _Link  # set by open()
         self._schedule_btserial = _Schedule(40.0, periodic=True, keepalive_s=1.0)
 
-    # ---- callbacks ------------------------------------------------------------------
+    # ---- callbacks -------------------------------------------------------------------------------
 
     def on_output(self, callback: OutputCallback) -> OutputCallback:
         """Call `callback({"name": ..., "contents": {...}})` for every output triggered."""
@@ -360,7 +364,7 @@ class IrobotCreate:
     def closed(self) -> bool:
         return self._closed
 
-    # ---- domain inputs: what the framework asks of the robot ----------------------------
+    # ---- domain inputs: what the framework asks of the robot -------------------------------------
 
     def set_velocity(self, linear: float, angular: float) -> None:
         """A Twist from the framework: `linear` m/s along the heading, `angular` rad/s
@@ -437,7 +441,7 @@ class IrobotCreate:
         ]
         method(self, *values)
 
-    # ---- connections: opening, hooks, ticks, closing ------------------------------------
+    # ---- connections: opening, hooks, ticks, closing ---------------------------------------------
 
     def open(self, port: PortSpec, *, threads: bool = True) -> None:
         """Open the ports, run the startup hooks, then start the connections' threads.
@@ -492,8 +496,8 @@ class IrobotCreate:
         self._tick_btserial()
 
     def _tick_btserial(self) -> None:
-        """One tick of `btserial` (every 25 ms): its periodic interfaces,
-        then its keepalive when due. Errors go to the error callbacks; the schedule goes on.
+        """One tick of `btserial` (every 25 ms): its periodic interfaces, then its keepalive when due.
+        Errors go to the error callbacks, and the schedule goes on.
         """
         # create.rdis:68  periodic interface get_bumpers
         if self._stop.is_set():
@@ -523,7 +527,7 @@ class IrobotCreate:
             if thread is not threading.current_thread():
                 thread.join()
         self.terminate()
-        for link in {id(link): link for link in self._links.values()}.values():
+        for link in {id(link.port): link for link in self._links.values()}.values():  # each port once
             if link.owned:
                 try:
                     link.port.close()
@@ -539,7 +543,7 @@ class IrobotCreate:
     def __exit__(self, *exc: object) -> None:
         self.close()
 
-    # ---- domain outputs: what the robot reports ---------------------------------------
+    # ---- domain outputs: what the robot reports --------------------------------------------------
 
     def _output_detect_bump(self) -> None:
         """The bumpers as a Range, following thesis Figure 4.1: 0 m while either bumper
@@ -558,7 +562,7 @@ class IrobotCreate:
             raise RdisValueError(f"detect_bump: {err}") from err
         self._deliver("detect_bump", contents)
 
-    # ---- interfaces: primitive calls in priority order, with their delays -------------
+    # ---- interfaces: primitive calls in priority order, with their delays ------------------------
 
     def _interface_startup(self) -> None:
         """Open the OI, then take full control. Each mode change is given a second to
@@ -614,7 +618,7 @@ class IrobotCreate:
         time.sleep(0.015)
         self._output_detect_bump()
 
-    # ---- primitives: one device command each -------------------------------------------
+    # ---- primitives: one device command each -----------------------------------------------------
 
     def _primitive_start(self) -> None:
         """Start (opcode 128): opens the OI; the robot enters passive mode."""
@@ -654,7 +658,7 @@ class IrobotCreate:
             except _EVAL_ERRORS as err:
                 raise RdisValueError(f"bumpers: {err}") from err
 
-    # ---- port I/O: one exchange at a time on each port ------------------------------
+    # ---- port I/O: one exchange at a time on each port -------------------------------------------
 
     def _send(self, link: _Link, primitive: str, request: bytes) -> None:
         """Write a request that expects no reply."""
@@ -712,7 +716,7 @@ class IrobotCreate:
         if self._io_callbacks:
             self._notify_io("write", link.name, request)
 
-    # ---- delivering to callbacks: one at a time, a failing one reported -----------------
+    # ---- delivering to callbacks: one at a time, a failing one reported --------------------------
 
     def _deliver(self, output: str, contents: dict[str, Value]) -> None:
         message: dict[str, Any] = {"name": output, "contents": contents}
@@ -773,7 +777,7 @@ def connect(
     on_error: ErrorCallback | None = None,
     on_io: IoCallback | None = None,
 ) -> IrobotCreate:
-    """A IrobotCreate, connected: its ports open, its startup hooks run, its threads started.
+    """The robot, running: its ports open, its startup hooks run, its threads started.
 
     `port`: a pyserial port name or URL ("/dev/ttyUSB0", "COM3", "socket://host:4000")
     or an open port object, for every connection; or a dict {connection: port}
@@ -792,7 +796,7 @@ def connect(
     return robot
 
 
-# ---- the command line: the options of `rdisc run` -----------------------------------
+# ---- the command line: the options of `rdisc run` ------------------------------------------------
 
 class _Terminated(BaseException):
     """SIGTERM, turned into an exception so that the terminate hooks run on the way out."""

@@ -39,7 +39,7 @@ MAX_LINE = 4096
 """Bytes of one reply line, terminator included."""
 
 
-# ---- errors: the classes of rdisc.runtime.errors ---------------------------------------
+# ---- errors: the classes of rdisc.runtime.errors -------------------------------------------------
 
 class RdisError(Exception):
     """Any failure while the robot runs."""
@@ -78,7 +78,7 @@ _EVAL_ERRORS = (ArithmeticError, ValueError, TypeError, IndexError)
 _log = logging.getLogger("rdisc")
 
 
-# ---- messages: each primitive's request and reply, prepared once -----------------------
+# ---- messages: each primitive's request and reply, prepared once ---------------------------------
 
 # koala.rdis:85  primitive set_speed
 _SET_SPEED_REQUEST = "D,{},{}\n"
@@ -101,7 +101,7 @@ _READ_PROXIMITY_REQUEST = b"N\n"  # format "N\n" ()
 _READ_PROXIMITY_REPLY = re.compile("^n,(\\d+),(\\d+),(\\d+),(\\d+),(\\d+),(\\d+),(\\d+),(\\d+),(\\d+),(\\d+),(\\d+),(\\d+),(\\d+),(\\d+),(\\d+),(\\d+)\\s*$")
 
 
-# ---- expression helpers: operations as rdisc.semantics.operators defines them --------
+# ---- expression helpers: operations as rdisc.semantics.operators defines them --------------------
 
 _Number = TypeVar("_Number", int, float)
 
@@ -161,7 +161,7 @@ def _match(primitive: str, regex: re.Pattern[str], line: str) -> tuple[str, ...]
     return found.groups("")
 
 
-# ---- ports, schedules and values ------------------------------------------------------
+# ---- ports, schedules and values -----------------------------------------------------------------
 
 class Port(Protocol):
     """What the driver needs of an open port; pyserial's `Serial` has all of it."""
@@ -319,6 +319,8 @@ class _Schedule:
                 return
 
 
+# ---- state: the robot's variables ----------------------------------------------------------------
+
 @dataclasses.dataclass(frozen=True, eq=False)
 class State(Mapping[str, Value]):
     """The state variables of koala: what was last read from the robot, and
@@ -402,6 +404,8 @@ _STATE_ATTRIBUTES: dict[str, str] = {"speedUnit": "speedUnit", "metersPerPulse":
 """The attribute of State that holds each state variable, by name."""
 
 
+# ---- the robot: Koala, connect() -----------------------------------------------------------------
+
 class Koala:
     """K-Team Koala mobile robot, ASCII serial protocol.
 
@@ -430,7 +434,7 @@ class Koala:
         self._link_rs232: _Link  # set by open()
         self._schedule_rs232 = _Schedule(10.0, periodic=True, keepalive_s=0.0)
 
-    # ---- callbacks ------------------------------------------------------------------
+    # ---- callbacks -------------------------------------------------------------------------------
 
     def on_output(self, callback: OutputCallback) -> OutputCallback:
         """Call `callback({"name": ..., "contents": {...}})` for every output triggered."""
@@ -460,7 +464,7 @@ class Koala:
     def closed(self) -> bool:
         return self._closed
 
-    # ---- domain inputs: what the framework asks of the robot ----------------------------
+    # ---- domain inputs: what the framework asks of the robot -------------------------------------
 
     def set_velocity(self, linear: float, angular: float) -> None:
         """A Twist from the framework, as wheel speeds: for a wheel base b, the left
@@ -523,7 +527,7 @@ class Koala:
         ]
         method(self, *values)
 
-    # ---- connections: opening, hooks, ticks, closing ------------------------------------
+    # ---- connections: opening, hooks, ticks, closing ---------------------------------------------
 
     def open(self, port: PortSpec, *, threads: bool = True) -> None:
         """Open the ports, run the startup hooks, then start the connections' threads.
@@ -578,8 +582,8 @@ class Koala:
         self._tick_rs232()
 
     def _tick_rs232(self) -> None:
-        """One tick of `rs232` (every 100 ms): its periodic interfaces,
-        then its keepalive when due. Errors go to the error callbacks; the schedule goes on.
+        """One tick of `rs232` (every 100 ms): its periodic interfaces.
+        Errors go to the error callbacks, and the schedule goes on.
         """
         # koala.rdis:158  periodic interface update_odometry
         if self._stop.is_set():
@@ -610,7 +614,7 @@ class Koala:
             if thread is not threading.current_thread():
                 thread.join()
         self.terminate()
-        for link in {id(link): link for link in self._links.values()}.values():
+        for link in {id(link.port): link for link in self._links.values()}.values():  # each port once
             if link.owned:
                 try:
                     link.port.close()
@@ -626,7 +630,7 @@ class Koala:
     def __exit__(self, *exc: object) -> None:
         self.close()
 
-    # ---- domain outputs: what the robot reports ---------------------------------------
+    # ---- domain outputs: what the robot reports --------------------------------------------------
 
     def _output_odometry(self) -> None:
         """Dead-reckoned pose, and the velocities measured by the wheel encoders.
@@ -667,7 +671,7 @@ class Koala:
             raise RdisValueError(f"obstacle: {err}") from err
         self._deliver("obstacle", contents)
 
-    # ---- interfaces: primitive calls in priority order, with their delays -------------
+    # ---- interfaces: primitive calls in priority order, with their delays ------------------------
 
     def _interface_startup(self) -> None:
         """Stop the wheels and zero the position counters (and the odometry reference
@@ -740,7 +744,7 @@ class Koala:
         self._primitive_read_proximity()
         self._output_obstacle()
 
-    # ---- primitives: one device command each -------------------------------------------
+    # ---- primitives: one device command each -----------------------------------------------------
 
     def _primitive_set_speed(self, left: int, right: int) -> None:
         """D: set the wheel speeds, in speed units (pulses per 10 ms)."""
@@ -943,7 +947,7 @@ class Koala:
             except _EVAL_ERRORS as err:
                 raise RdisValueError(f"read_proximity: {err}") from err
 
-    # ---- port I/O: one exchange at a time on each port ------------------------------
+    # ---- port I/O: one exchange at a time on each port -------------------------------------------
 
     def _send(self, link: _Link, primitive: str, request: bytes) -> None:
         """Write a request that expects no reply."""
@@ -1001,7 +1005,7 @@ class Koala:
         if self._io_callbacks:
             self._notify_io("write", link.name, request)
 
-    # ---- delivering to callbacks: one at a time, a failing one reported -----------------
+    # ---- delivering to callbacks: one at a time, a failing one reported --------------------------
 
     def _deliver(self, output: str, contents: dict[str, Value]) -> None:
         message: dict[str, Any] = {"name": output, "contents": contents}
@@ -1063,7 +1067,7 @@ def connect(
     on_error: ErrorCallback | None = None,
     on_io: IoCallback | None = None,
 ) -> Koala:
-    """A Koala, connected: its ports open, its startup hooks run, its threads started.
+    """The robot, running: its ports open, its startup hooks run, its threads started.
 
     `port`: a pyserial port name or URL ("/dev/ttyUSB0", "COM3", "socket://host:4000")
     or an open port object, for every connection; or a dict {connection: port}
@@ -1082,7 +1086,7 @@ def connect(
     return robot
 
 
-# ---- the command line: the options of `rdisc run` -----------------------------------
+# ---- the command line: the options of `rdisc run` ------------------------------------------------
 
 class _Terminated(BaseException):
     """SIGTERM, turned into an exception so that the terminate hooks run on the way out."""
