@@ -282,6 +282,7 @@ class Robot:
         self.model = description.model
         self.name = description.name
         self.timeout = timeout
+        self._inputs = description.inputs
         self._state: dict[str, m.Value] = dict(description.initial_state)
         self._state_lock = threading.Lock()
         self._callback_lock = threading.RLock()
@@ -347,10 +348,11 @@ class Robot:
 
     def call_input(self, name: str, /, **fields: Any) -> None:
         """Run a domain input with its adapter's fields, on this thread; errors are raised."""
-        plan = self.description.inputs.get(name)
+        plan = self._inputs.get(name)
         if plan is None:
             raise KeyError(f"{self.name} has no input named {name!r}")
-        self._check_open()
+        if self._closed:
+            self._check_open()
         local = _accept_fields(plan, fields)
         state = self._state
         try:
