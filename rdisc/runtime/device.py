@@ -2,7 +2,8 @@
 
 The Model is turned once into plans (codecs, run orders, delays in seconds, and
 each expression of the checked IR prepared by `rdisc.runtime.evaluate.prepare`),
-so a call walks prepared objects and parses nothing. The semantics are the contract in `rdisc.runtime`.
+so a call walks prepared objects and parses nothing. The semantics are the
+contract in the docstring of `rdisc.runtime`.
 
 State lives in a dict that is never changed in place: post-actions build a new
 one under the state lock and publish it with one assignment, so any reader sees
