@@ -87,7 +87,7 @@ def _concat(a: str, b: str) -> str:
     return a + b''',
     "_pow": '''\
 def _pow(a: Any, b: Any) -> Any:
-    """a ** b, bounded: ints stay below 4096 bits, floats must be real and finite."""
+    """a ** b, bounded: an int result stays within 4096 bits, a float one must be real and finite."""
     if isinstance(a, int) and isinstance(b, int):
         if b < 0:
             raise ArithmeticError(f"negative integer exponent {b}: write a float base")
@@ -100,9 +100,9 @@ def _pow(a: Any, b: Any) -> Any:
         raise ArithmeticError(f"{a} ** {b} is too large for a float") from None
     except ZeroDivisionError:
         raise ArithmeticError(f"{a} ** {b}: zero to a negative power") from None
-    if isinstance(result, complex):
-        raise ArithmeticError(f"{a} ** {b} has no real value")
-    return result''',
+    if isinstance(result, float):
+        return result
+    raise ArithmeticError(f"{a} ** {b} has no real value")  # a complex result''',
     "_lshift": '''\
 def _lshift(a: int, b: int) -> int:
     """a << b, bounded: results stay below 4096 bits."""
@@ -138,16 +138,6 @@ def _match(primitive: str, regex: re.Pattern[str], line: str) -> tuple[str, ...]
     if found is None:
         raise RdisProtocolError(f"{primitive}: reply {line!r} does not match {regex.pattern!r}")
     return found.groups("")''',
-}
-
-# Where a helper needs another name of the module.
-HELPER_NEEDS = {
-    "_add": ("math",),
-    "_sub": ("math",),
-    "_mul": ("math",),
-    "_div": ("math",),
-    "_clamp": ("_Number",),
-    "_match": ("re",),
 }
 
 NUMBER_TYPE = '_Number = TypeVar("_Number", int, float)'
@@ -531,7 +521,7 @@ def _print_output(message: dict[str, Any]) -> None:
 
 
 def _print_error(error: BaseException) -> None:
-    print(f"{ROBOT}: {type(error).__name__}: {error}", file=sys.stderr, flush=True)
+    print(f"rdisc run: {type(error).__name__}: {error}", file=sys.stderr, flush=True)  # as `rdisc run` prints it
 
 
 def _print_io(direction: str, connection: str, data: bytes) -> None:

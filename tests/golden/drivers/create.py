@@ -770,9 +770,9 @@ _INTERFACES: dict[str, tuple[Callable[..., None], tuple[tuple[str, type], ...]]]
 
 def connect(
     port: PortSpec,
-    *,
     timeout: float = 1.0,
     threads: bool = True,
+    *,
     on_output: OutputCallback | None = None,
     on_error: ErrorCallback | None = None,
     on_io: IoCallback | None = None,
@@ -876,7 +876,7 @@ def _print_output(message: dict[str, Any]) -> None:
 
 
 def _print_error(error: BaseException) -> None:
-    print(f"{ROBOT}: {type(error).__name__}: {error}", file=sys.stderr, flush=True)
+    print(f"rdisc run: {type(error).__name__}: {error}", file=sys.stderr, flush=True)  # as `rdisc run` prints it
 
 
 def _print_io(direction: str, connection: str, data: bytes) -> None:
