@@ -607,7 +607,7 @@ def _run_both(sink, steps):
         connect = make()
         io, outputs, seen = Recorder(), Recorder(), []
         ports = {"wire": serial.serial_for_url("loop://"), "other": serial.serial_for_url("loop://")}
-        robot = connect(ports, threads=False, on_io=io, on_output=outputs, on_error=lambda e: seen.append(e))
+        robot = connect(ports, threads=False, on_io=io, on_output=outputs, on_error=seen.append)
         try:
             for step in steps:
                 try:
