@@ -124,15 +124,12 @@ def _constant_name(name: str, taken: set[str]) -> str:
 # ---- text ----------------------------------------------------------------------------------------
 
 
-def _docstring(text: str) -> str:
-    """A triple-quoted docstring reading back as `text` (stripped lines, escapes where needed)."""
-    lines = [line.rstrip() for line in text.strip("\n").split("\n")]
-    body = "\n".join(lines)
+def _printable(text: str, keep: str = "") -> str:
+    """`text` with every character that is not printable (a line break above all) escaped as
+    Python escapes it, so that it cannot end a comment or a string early; `keep` is kept as is."""
     out = []
-    for ch in body:
-        if ch == "\\":
-            out.append("\\\\")
-        elif ch == "\n" or ch.isprintable() and ch not in "\r":
+    for ch in text:
+        if ch.isprintable() or ch in keep:
             out.append(ch)
         elif ord(ch) <= 0xFF:
             out.append(f"\\x{ord(ch):02x}")
@@ -140,7 +137,13 @@ def _docstring(text: str) -> str:
             out.append(f"\\u{ord(ch):04x}")
         else:
             out.append(f"\\U{ord(ch):08x}")
-    escaped = "".join(out).replace('"""', '\\"\\"\\"')
+    return "".join(out)
+
+
+def _docstring(text: str) -> str:
+    """A triple-quoted docstring that reads back as `text` (its lines right-stripped)."""
+    body = "\n".join(line.rstrip() for line in text.strip("\n").split("\n"))
+    escaped = _printable(body.replace("\\", "\\\\"), keep="\n").replace('"""', '\\"\\"\\"')
     if escaped.endswith('"'):
         escaped = escaped[:-1] + '\\"'
     if "\n" in escaped:
@@ -153,6 +156,16 @@ def _docstring(text: str) -> str:
 
 class _Driver:
     def __init__(self, model: m.Model, source_name: str, sources: Mapping[str, SourceFile]) -> None:
+        for names in (model.states, model.connections, model.primitives, model.interfaces, model.adapters,
+                      model.inputs, model.outputs):
+            for name in names:
+                _identifier(name)  # names enter the text as identifiers: only checked names can
+        for element in (*model.primitives.values(), *model.interfaces.values()):
+            for param in element.params:
+                _identifier(param.name)
+        for adapter in model.adapters.values():
+            for field in adapter.fields:
+                _identifier(field.name)
         self.model = model
         self.source_name = source_name
         self.sources = sources
@@ -199,7 +212,7 @@ class _Driver:
         """`# file:line  what` before a block that came from the description."""
         where = self.where(span)
         if where is not None:
-            w.line(f"# {where}" + (f"  {what}" if what else ""))
+            w.line(_printable(f"# {where}" + (f"  {what}" if what else "")))
 
     def names(self, params: Mapping[str, str]) -> dict[str, str]:
         return {**self.state_names, **params}

@@ -657,3 +657,16 @@ def test_the_driver_and_the_runtime_agree_on_any_values(sink, calls) -> None:
     ] + [lambda r: (time.sleep(0.003), r.tick())]  # the keepalive (every 1 ms) is due
     ours, theirs = _run_both(sink, steps)
     assert ours == theirs
+
+
+@hypothesis.settings(max_examples=300, deadline=None)
+@hypothesis.given(st.text())
+def test_any_doc_text_becomes_a_docstring_that_reads_back(text) -> None:
+    from rdisc.emit.python import _docstring, _printable
+
+    expected = "\n".join(line.rstrip() for line in text.strip("\n").split("\n"))
+    expected += "\n" if "\n" in expected else ""  # a docstring of several lines ends on a line of its own
+    assert ast.literal_eval(_docstring(text)) == expected
+    comment = "# " + _printable(text)
+    assert "\n" not in comment and "\r" not in comment
+    assert ast.parse(f"x = 1  {comment}\n").body[0].lineno == 1
