@@ -500,7 +500,7 @@ class _Driver:
         signature = "".join(f", {local[n]}: {_PY_TYPES[t]}" for n, t in fields)
         with w.block(f"def {self.input_methods[i.name]}(self{signature}) -> None:"):
             doc = [i.doc or f"The domain input `{i.name}`."]
-            doc += ["", f"Takes a {adapter.name} and runs the interface `{i.interface}`; errors are raised."]
+            doc += ["", f"Takes {_a(adapter.name)} and runs the interface `{i.interface}`; errors are raised."]
             if adapter.fields:
                 doc += ["", "Fields:"]
                 for f in adapter.fields:
@@ -529,8 +529,8 @@ class _Driver:
         values = [exprs.bound(a, param.type, self.names(local)) for a, param in zip(args, params)]
         if exprs.reads_state:
             w.line("state = self._state")
-        if not values:
-            w.line(f"{method}()")
+        if all(exprs.safe(a, param.type) for a, param in zip(args, params)):  # nothing to evaluate
+            _emit(w, "", call(method, values))
             return
         with w.block("try:"):
             _emit(w, "", call(method, values))
@@ -660,7 +660,7 @@ class _Driver:
             adapter = self.model.adapters[o.adapter]
             with w.block(f"def _output_{o.name}(self) -> None:"):
                 fields = ", ".join(f"{f.name} [{f.unit}]" if f.unit else f.name for f in adapter.fields)
-                doc = [o.doc or f"The domain output `{o.name}`.", "", f"Delivers a {adapter.name}: {fields}."]
+                doc = [o.doc or f"The domain output `{o.name}`.", "", f"Delivers {_a(adapter.name)}: {fields}."]
                 w.line(_docstring("\n".join(doc)))
                 self.comment(w, o.span, f"output {o.name}: {o.adapter}")
                 exprs = self.exprs
@@ -1004,6 +1004,10 @@ def _value_error(w: Writer, element: str) -> None:
 def _section(w: Writer, title: str) -> None:
     """`# ---- title ----...` to column 100: the parts of the module, as a reader scans them."""
     w.line(f"# ---- {title} ".ljust(w.width(), "-"))
+
+
+def _a(noun: str) -> str:
+    return f"{'an' if noun[:1].lower() in 'aeiou' else 'a'} {noun}"
 
 
 def _tuple(items: list[str]) -> str:

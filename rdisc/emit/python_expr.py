@@ -214,10 +214,21 @@ class Compiler:
     def bound(self, e: m.Expr, declared: Type, names: Mapping[str, str]) -> Py:
         """`e` as the value of a parameter, field or state variable of type `declared`: as the
         contract binds values, an int becomes a float where a float is declared."""
+        if declared is Type.FLOAT and isinstance(e, m.Const) and e.type is Type.INT:
+            try:
+                return literal(float(e.value), Type.FLOAT)  # 0 bound to a float is 0.0, known now
+            except OverflowError:
+                pass  # too large for a float: refused when it runs, as the runtime refuses it
         py = self.expr(e, names)
         if declared is Type.FLOAT and not surely_float(e):
             return call("float", [py])
         return py
+
+    def safe(self, e: m.Expr, declared: Type) -> bool:
+        """Whether binding `e` to a value of type `declared` cannot raise: a constant or a name."""
+        if isinstance(e, m.Const):
+            return not (declared is Type.FLOAT and e.type is Type.INT and abs(e.value) > 2**1023)
+        return isinstance(e, m.Var) and (declared is not Type.FLOAT or surely_float(e))
 
     def helper(self, name: str, args: list[Py]) -> Py:
         self.helpers.add(name)

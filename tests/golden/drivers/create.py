@@ -580,12 +580,7 @@ class IrobotCreate:
         """Stop the wheels before the link closes."""
         # create.rdis:52  interface shutdown
         # create.rdis:53  call drive, delay 100 ms
-        try:
-            self._primitive_drive(0, 0)
-        except RdisError:
-            raise
-        except _EVAL_ERRORS as err:
-            raise RdisValueError(f"shutdown: {err}") from err
+        self._primitive_drive(0, 0)
         time.sleep(0.1)
 
     def _interface_drive(self, velocity: float, radius: float) -> None:

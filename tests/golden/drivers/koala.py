@@ -635,7 +635,7 @@ class Koala:
     def _output_odometry(self) -> None:
         """Dead-reckoned pose, and the velocities measured by the wheel encoders.
 
-        Delivers a Odometry: x [m], y [m], theta [rad], linear [m/s], angular [rad/s].
+        Delivers an Odometry: x [m], y [m], theta [rad], linear [m/s], angular [rad/s].
         """
         # koala.rdis:179  output odometry: Odometry
         state = self._state
@@ -679,30 +679,15 @@ class Koala:
         """
         # koala.rdis:139  interface startup
         # koala.rdis:140  call set_speed
-        try:
-            self._primitive_set_speed(0, 0)
-        except RdisError:
-            raise
-        except _EVAL_ERRORS as err:
-            raise RdisValueError(f"startup: {err}") from err
+        self._primitive_set_speed(0, 0)
         # koala.rdis:141  call set_position
-        try:
-            self._primitive_set_position(0, 0)
-        except RdisError:
-            raise
-        except _EVAL_ERRORS as err:
-            raise RdisValueError(f"startup: {err}") from err
+        self._primitive_set_position(0, 0)
 
     def _interface_shutdown(self) -> None:
         """Stop the wheels before the link closes."""
         # koala.rdis:145  interface shutdown
         # koala.rdis:146  call set_speed
-        try:
-            self._primitive_set_speed(0, 0)
-        except RdisError:
-            raise
-        except _EVAL_ERRORS as err:
-            raise RdisValueError(f"shutdown: {err}") from err
+        self._primitive_set_speed(0, 0)
 
     def _interface_drive(self, left: float, right: float) -> None:
         """Drive each wheel at a speed in m/s, converted to speed units and limited
