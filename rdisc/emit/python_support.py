@@ -358,25 +358,17 @@ def _send(self, link: _Link, primitive: str, request: bytes) -> None:
     lock = link.lock
     lock.acquire()  # not `with`: this is every command's path, and acquire/release is faster
     try:
-        try:
-            link.port.write(request)
-        except Exception as err:  # whatever the port raises, it failed
-            raise _port_error(link, primitive, err, self.timeout) from err
-        if self._io_callbacks:
-            self._notify_io("write", link.name, request)
+        link.port.write(request)
+    except Exception as err:  # whatever the port raises, it failed
+        raise _port_error(link, primitive, err, self.timeout) from err
     finally:
         lock.release()
+    if self._io_callbacks:
+        self._notify_io("write", link.name, request)
 
 def _exchange(self, link: _Link, primitive: str, request: bytes, size: int) -> bytes:
-    """Discard unread input, write a request, read a reply of exactly `size` bytes."""
-    with link.lock:
-        self._start_exchange(link, primitive, request)
-        try:
-            reply = link.port.read(size)
-        except Exception as err:
-            raise _port_error(link, primitive, err, self.timeout) from err
-        if reply and self._io_callbacks:
-            self._notify_io("read", link.name, bytes(reply))
+    """Write a request and read a reply of exactly `size` bytes."""
+    reply = self._transfer(link, primitive, request, size)
     if not reply:
         raise RdisTimeout(f"{primitive}: no reply within {self.timeout:g} s")
     if len(reply) != size:
@@ -384,30 +376,36 @@ def _exchange(self, link: _Link, primitive: str, request: bytes, size: int) -> b
     return reply
 
 def _exchange_line(self, link: _Link, primitive: str, request: bytes) -> str:
-    """Discard unread input, write a request, read one reply line: the line without its
-    terminator (CR LF or LF), as latin-1 text."""
-    with link.lock:
-        self._start_exchange(link, primitive, request)
-        try:
-            line = link.port.read_until(b"\\n", MAX_LINE)
-        except Exception as err:
-            raise _port_error(link, primitive, err, self.timeout) from err
-        if line and self._io_callbacks:
-            self._notify_io("read", link.name, bytes(line))
+    """Write a request and read one reply line: the line without its terminator (CR LF
+    or LF), as latin-1 text."""
+    line = self._transfer(link, primitive, request, 0)
     if not line:
         raise RdisTimeout(f"{primitive}: no reply within {self.timeout:g} s")
     if not line.endswith(b"\\n"):
         raise RdisProtocolError(f"{primitive}: reply line not terminated: {line.decode('latin-1')!r}")
     return (line[:-2] if line.endswith(b"\\r\\n") else line[:-1]).decode("latin-1")
 
-def _start_exchange(self, link: _Link, primitive: str, request: bytes) -> None:
+def _transfer(self, link: _Link, primitive: str, request: bytes, size: int) -> bytes:
+    """Under the port's lock: discard unread input, write the request, read `size` bytes
+    (0: one line). The I/O callbacks see the write and what was read once the lock is
+    released, so that a callback may call the robot."""
+    written, data = False, b""
     try:
-        link.port.reset_input_buffer()
-        link.port.write(request)
-    except Exception as err:
-        raise _port_error(link, primitive, err, self.timeout) from err
-    if self._io_callbacks:
-        self._notify_io("write", link.name, request)'''
+        with link.lock:
+            try:
+                link.port.reset_input_buffer()
+                link.port.write(request)
+                written = True
+                data = link.port.read(size) if size else link.port.read_until(b"\\n", MAX_LINE)
+            except Exception as err:
+                raise _port_error(link, primitive, err, self.timeout) from err
+    finally:
+        if self._io_callbacks:
+            if written:
+                self._notify_io("write", link.name, request)
+            if data:
+                self._notify_io("read", link.name, bytes(data))
+    return bytes(data)'''
 
 ROBOT_DELIVERY = '''\
 def _deliver(self, output: str, contents: dict[str, Value]) -> None:
