@@ -441,12 +441,11 @@ class _Driver:
             for c in self.model.connections.values():
                 self.comment(w, c.span, f"connection {c.name}: {c.kind}, {c.baud} baud, {c.frequency_hz:g} Hz")
                 w.line(f"self._link_{c.name}: _Link  # set by open()")
-                if self.has_work(c):
-                    keepalive = c.keepalive.interval_ms / 1000.0 if c.keepalive else 0.0
-                    w.line(
-                        f"self._schedule_{c.name} = _Schedule({float(c.frequency_hz)!r}, "
-                        f"periodic={bool(self.periodic[c.name])!r}, keepalive_s={keepalive!r})"
-                    )
+                keepalive = c.keepalive.interval_ms / 1000.0 if c.keepalive else 0.0
+                w.line(
+                    f"self._schedule_{c.name} = _Schedule({float(c.frequency_hz)!r}, "
+                    f"periodic={bool(self.periodic[c.name])!r}, keepalive_s={keepalive!r})"
+                )
 
     # -- inputs ------------------------------------------------------------------------------------
 
@@ -560,14 +559,15 @@ class _Driver:
                     w.line(f"self._link_{c.name} = self._links[{quoted(c.name)}]")
                 w.line("self._running = True")
                 w.line("self.startup()")
-                for c in self.worked:
+                for c in self.model.connections.values():
                     w.line(f"self._schedule_{c.name}.restart()")
-                if self.worked:
-                    with w.block("if threads:"):
+                if self.model.connections:
+                    with w.block("if threads:  # one a connection; one with nothing periodic only waits"):
                         w.line("self._threads = [")
-                        for c in self.worked:
+                        for c in self.model.connections.values():
+                            tick = f"self._tick_{c.name}" if self.has_work(c) else "None"
                             w.line(f"    threading.Thread(target=self._schedule_{c.name}.run, "
-                                   f"args=(self._tick_{c.name}, self._stop),")
+                                   f"args=({tick}, self._stop),")
                             w.line(f'                     name=f"{{ROBOT}} {c.name}", daemon=True),')
                         w.line("]")
                         w.line("for thread in self._threads:")

@@ -281,9 +281,10 @@ class _Schedule:
             self.keepalive_at = due if due > now else now + self.keepalive_s
             return True
 
-    def run(self, tick: Callable[[], None], stop: threading.Event) -> None:
-        """Call `tick` whenever it is due until `stop` is set, waiting on `stop` (never spinning)."""
-        if not self.periodic and not self.keepalive_s:
+    def run(self, tick: Callable[[], None] | None, stop: threading.Event) -> None:
+        """Call `tick` whenever it is due until `stop` is set, waiting on `stop` (never spinning).
+        With nothing periodic to do (`tick` None), only wait."""
+        if tick is None or not self.periodic and not self.keepalive_s:
             stop.wait()
             return
         k = 0

@@ -693,3 +693,16 @@ def test_any_doc_text_becomes_a_docstring_that_reads_back(text) -> None:
     comment = "# " + _printable(text)
     assert "\n" not in comment and "\r" not in comment
     assert ast.parse(f"x = 1  {comment}\n").body[0].lineno == 1
+
+
+def test_one_thread_a_connection_and_each_stops_on_close(sink) -> None:
+    driver = load(sink[1])
+    io = Recorder()
+    robot = driver.connect({"wire": "loop://", "other": "loop://"}, on_io=io)  # pyserial's loop:// URL
+    try:
+        assert sorted(t.name for t in robot._threads) == ["sink other", "sink wire"]
+        io.wait(lambda items: ("write", "other", b"\x00") in items)  # the keepalive, every 1 ms
+    finally:
+        robot.close()
+    assert not any(t.is_alive() for t in robot._threads)
+    assert io.items[-1] == ("write", "wire", b"\x00\x00")  # the terminate hook

@@ -256,9 +256,10 @@ class _Schedule:
             self.keepalive_at = due if due > now else now + self.keepalive_s
             return True
 
-    def run(self, tick: Callable[[], None], stop: threading.Event) -> None:
-        """Call `tick` whenever it is due until `stop` is set, waiting on `stop` (never spinning)."""
-        if not self.periodic and not self.keepalive_s:
+    def run(self, tick: Callable[[], None] | None, stop: threading.Event) -> None:
+        """Call `tick` whenever it is due until `stop` is set, waiting on `stop` (never spinning).
+        With nothing periodic to do (`tick` None), only wait."""
+        if tick is None or not self.periodic and not self.keepalive_s:
             stop.wait()
             return
         k = 0
@@ -460,7 +461,7 @@ class IrobotCreate:
             self._running = True
             self.startup()
             self._schedule_btserial.restart()
-            if threads:
+            if threads:  # one a connection; one with nothing periodic only waits
                 self._threads = [
                     threading.Thread(target=self._schedule_btserial.run, args=(self._tick_btserial, self._stop),
                                      name=f"{ROBOT} btserial", daemon=True),

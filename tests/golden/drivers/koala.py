@@ -301,9 +301,10 @@ class _Schedule:
             self.keepalive_at = due if due > now else now + self.keepalive_s
             return True
 
-    def run(self, tick: Callable[[], None], stop: threading.Event) -> None:
-        """Call `tick` whenever it is due until `stop` is set, waiting on `stop` (never spinning)."""
-        if not self.periodic and not self.keepalive_s:
+    def run(self, tick: Callable[[], None] | None, stop: threading.Event) -> None:
+        """Call `tick` whenever it is due until `stop` is set, waiting on `stop` (never spinning).
+        With nothing periodic to do (`tick` None), only wait."""
+        if tick is None or not self.periodic and not self.keepalive_s:
             stop.wait()
             return
         k = 0
@@ -546,7 +547,7 @@ class Koala:
             self._running = True
             self.startup()
             self._schedule_rs232.restart()
-            if threads:
+            if threads:  # one a connection; one with nothing periodic only waits
                 self._threads = [
                     threading.Thread(target=self._schedule_rs232.run, args=(self._tick_rs232, self._stop),
                                      name=f"{ROBOT} rs232", daemon=True),
