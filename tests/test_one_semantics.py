@@ -150,7 +150,7 @@ def _drive(make, model, script: bytes, operations) -> tuple[bytes, list[Any], li
     return bytes(port.written), trace, outputs, errors
 
 
-@settings(max_examples=150, deadline=None, derandomize=True, suppress_health_check=[HealthCheck.function_scoped_fixture])
+@settings(max_examples=500, deadline=None, derandomize=True, suppress_health_check=[HealthCheck.function_scoped_fixture])
 @given(data=st.data())
 def test_runtime_and_generated_driver_agree(pair, data) -> None:
     description, driver, model = pair
