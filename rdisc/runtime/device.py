@@ -461,7 +461,7 @@ class Robot:
         )
 
     def _run_interface(self, plan: _InterfacePlan, args: list[m.Value] | tuple[m.Value, ...]) -> None:
-        local = _bind(plan.params, args)
+        local = _bind(plan.name, plan.params, args)
         for call in plan.calls:
             primitive = call.primitive
             state = self._state
@@ -479,7 +479,7 @@ class Robot:
             self._deliver(plan.output)
 
     def _run_primitive(self, plan: _PrimitivePlan, args: list[m.Value]) -> None:
-        local = _bind(plan.params, args)
+        local = _bind(plan.name, plan.params, args)
         state = self._state
         try:
             values = [f(state, local, ()) for f in plan.args]
@@ -498,6 +498,7 @@ class Robot:
         if port is None:
             raise RdisConnectionError(f"{plan.connection}: not open")
         io = port.io
+        data = b""
         with port.lock:
             try:
                 if codec.expects_reply:
@@ -507,27 +508,25 @@ class Robot:
                 raise RdisTimeout(f"{plan.name}: write not completed within {self.timeout:g} s") from None
             except Exception as err:
                 raise RdisConnectionError(f"{plan.connection}: {err}") from err
-            if self._io_callbacks:
-                self._notify_io("write", plan.connection, request)
-            if not codec.expects_reply:
-                reply: tuple[m.Value, ...] = ()
-            else:
-                reply = self._read_reply(io, plan)
+            if codec.expects_reply:
+                try:
+                    data = bytes(io.read_until(b"\n", MAX_LINE) if codec.reads_line else io.read(codec.reply_size))
+                except Exception as err:
+                    raise RdisConnectionError(f"{plan.connection}: {err}") from err
+        # I/O callbacks run once the port is free again: one that calls the robot
+        # (or waits for a thread that does) cannot deadlock against this exchange.
+        if self._io_callbacks:
+            self._notify_io("write", plan.connection, request)
+            if data:
+                self._notify_io("read", plan.connection, data)
+        if not codec.expects_reply:
+            reply: tuple[m.Value, ...] = ()
+        elif not data:
+            raise RdisTimeout(f"{plan.name}: no reply within {self.timeout:g} s")
+        else:
+            reply = codec.match(data) if codec.reads_line else codec.decode(data)
         if plan.actions:
             self._assign(plan, local, reply)
-
-    def _read_reply(self, io: Any, plan: _PrimitivePlan) -> tuple[m.Value, ...]:
-        codec = plan.codec
-        try:
-            data = io.read_until(b"\n", MAX_LINE) if codec.reads_line else io.read(codec.reply_size)
-        except Exception as err:
-            raise RdisConnectionError(f"{plan.connection}: {err}") from err
-        if not data:
-            raise RdisTimeout(f"{plan.name}: no reply within {self.timeout:g} s")
-        data = bytes(data)
-        if self._io_callbacks:
-            self._notify_io("read", plan.connection, data)
-        return codec.match(data) if codec.reads_line else codec.decode(data)
 
     def _assign(self, plan: _PrimitivePlan, local: Mapping[str, m.Value], reply: tuple[m.Value, ...]) -> None:
         """The post-actions: all values computed from one snapshot, then published together."""
@@ -585,12 +584,17 @@ _EMPTY: Mapping[str, m.Value] = MappingProxyType({})
 _PYTHON_TYPES: dict[m.Type, type[Any]] = {m.Type.INT: int, m.Type.FLOAT: float, m.Type.BOOL: bool, m.Type.STRING: str}
 
 
-def _bind(params: tuple[tuple[str, m.Type], ...], values: list[m.Value] | tuple[m.Value, ...]) -> dict[str, m.Value]:
+def _bind(
+    owner: str, params: tuple[tuple[str, m.Type], ...], values: list[m.Value] | tuple[m.Value, ...]
+) -> dict[str, m.Value]:
     """Parameters bound to computed values (of their types already, but for int -> float)."""
-    return {
-        name: float(value) if type_ is m.Type.FLOAT and type(value) is int else value
-        for (name, type_), value in zip(params, values)
-    }
+    try:
+        return {
+            name: float(value) if type_ is m.Type.FLOAT and type(value) is int else value
+            for (name, type_), value in zip(params, values)
+        }
+    except OverflowError as err:  # an int too large for a float
+        raise RdisValueError(f"{owner}: {err}") from None
 
 
 def _accept_fields(plan: _InputPlan, fields: Mapping[str, Any]) -> dict[str, m.Value]:

@@ -224,3 +224,26 @@ def test_unknown_or_missing_connections_in_a_port_dict() -> None:
         description.connect({})
     with pytest.raises(RdisConnectionError, match="^btserial: cannot open /nonexistent/tty"):
         description.connect("/nonexistent/tty")
+
+
+def test_an_output_callback_that_calls_an_input_does_not_deadlock_with_io_callbacks() -> None:
+    """An output callback calls an input while I/O callbacks are registered and another
+    thread calls inputs: the port's lock and the callbacks' lock must not cross."""
+    import threading
+
+    with CreateEmulator(bumpers=1) as dev:
+        io, errors = Recorder(), Recorder()
+        robot = load(FAST_CREATE).connect(dev.port, on_io=io, on_error=errors)
+        robot.on_output(lambda output: robot.call_input("set_velocity", linear=0.0, angular=0.0))
+        try:
+            caller = threading.Thread(
+                target=lambda: [robot.call_input("set_velocity", linear=0.1, angular=0.0) for _ in range(300)],
+                daemon=True,
+            )
+            caller.start()
+            caller.join(timeout=20)
+            assert not caller.is_alive(), "deadlocked"
+            assert errors.snapshot() == []
+        finally:
+            robot.close()
+    assert (0, 0) in dev.drives() and (100, 32767) in dev.drives()
