@@ -390,10 +390,10 @@ class _Checker:
             target = assign.target.text
             state = self.s.states.get(target)
             if state is None:
-                what = "a parameter" if target in params else "not a state variable"
+                what = "it is a parameter" if target in params else "it is not a state variable"
                 self.d.report(
                     "E207", assign.target.span, f"cannot assign `{target}`: {what}",
-                    help=suggest(target, self.s.states) or "post-actions write state variables only",
+                    help=suggest(target, self.s.states) or "post-actions write state variables, and only they do",
                 )
                 continue
             if target in written:

@@ -86,9 +86,11 @@ def resolve(units: list[Unit], diagnostics: Diagnostics) -> Symbols:
 def check_name(name: ast.Ident, what: str, diagnostics: Diagnostics) -> None:
     """Report a keyword or built-in function used as a name."""
     if name.text in KEYWORDS:
-        diagnostics.report("E104", name.span, f"`{name.text}` is a keyword and cannot name a {what}")
+        diagnostics.report("E104", name.span, f"`{name.text}` is a keyword and cannot name a {what}",
+                           help=f"choose another name, e.g. `{name.text}_`")
     elif name.text in FUNCTIONS:
-        diagnostics.report("E104", name.span, f"`{name.text}` is a built-in function and cannot name a {what}")
+        diagnostics.report("E104", name.span, f"`{name.text}` is a built-in function and cannot name a {what}",
+                           help=f"choose another name, e.g. `{name.text}_value`")
 
 
 def closest(name: str, candidates) -> str | None:
@@ -117,7 +119,7 @@ def _declare(unit: Unit, symbols: Symbols, diagnostics: Diagnostics) -> None:
                 diagnostics.report(
                     "E107",
                     decl.name.span,
-                    "a description has one `robot` declaration",
+                    "a description has exactly one `robot` declaration",
                     labels=(Label(symbols.robot.name.span, "the first one is here"),),
                 )
             else:

@@ -86,6 +86,8 @@ def describe_unexpected(err, chunk: str, last: bool) -> tuple[str, int, int, str
             line_end = chunk.find("\n", offset)
             line_end = len(chunk) if line_end == -1 else line_end
             return ("E002", offset, line_end - offset, "unterminated string", "this string is not closed on its line")
+        if char == "'":
+            return ("E002", offset, 1, "unexpected character `'`", "strings are written in double quotes")
         if char == "_":
             return ("E002", offset, 1, "names cannot start with `_`", "a name starts with a letter")
         shown = repr(char)[1:-1] if not char.isprintable() or char.isspace() else char
