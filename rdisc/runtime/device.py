@@ -32,7 +32,7 @@ from rdisc.runtime.errors import (
     RdisTimeout,
     RdisValueError,
 )
-from rdisc.runtime.evaluate import EvalError, Prepared, coerce, prepare
+from rdisc.runtime.evaluate import EvalError, Prepared, always_float, coerce, prepare
 from rdisc.runtime.scheduler import Worker
 from rdisc.semantics import model as m
 
@@ -73,12 +73,19 @@ def load(source: str | os.PathLike[str] | m.Model) -> Description:
 # ---- plans: the Model prepared for running ----------------------------------------------
 
 
+# Parameters are bound by position: a primitive's or an interface's values are a
+# list, widened in place (`float_slots`), and its expressions read them by index.
+Values = Callable[[Mapping[str, m.Value], Any], list[m.Value]]
+"""Prepared expressions evaluated in turn: `values(state, local)` is the list of their values."""
+
+
 @dataclass(frozen=True, slots=True)
 class _PrimitivePlan:
     name: str
     connection: str
     params: tuple[tuple[str, m.Type], ...]
-    args: tuple[Prepared, ...]
+    float_slots: tuple[int, ...]  # positions of the float parameters, where an int is widened
+    args: Values
     codec: Codec
     actions: tuple[tuple[str, Prepared, m.Type], ...]
 
@@ -86,7 +93,7 @@ class _PrimitivePlan:
 @dataclass(frozen=True, slots=True)
 class _CallPlan:
     primitive: _PrimitivePlan
-    args: tuple[Prepared, ...]  # the call's arguments; if `direct`, the primitive's format values
+    args: Values  # the call's arguments; if `direct`, the primitive's format values
     delay: float  # seconds
     direct: bool = False
 
@@ -101,6 +108,7 @@ class _OutputPlan:
 class _InterfacePlan:
     name: str
     params: tuple[tuple[str, m.Type], ...]
+    float_slots: tuple[int, ...]
     calls: tuple[_CallPlan, ...]  # in run order
     output: _OutputPlan | None
     connection: str | None  # the owner, for a periodic interface
@@ -111,14 +119,16 @@ class _InputPlan:
     name: str
     adapter: str
     fields: tuple[tuple[str, m.Type, type[Any]], ...]  # name, declared type, its Python type
-    args: tuple[Prepared, ...]
+    args: Values  # over the fields, by name
     interface: _InterfacePlan
+    widen: tuple[int, ...]  # the interface's float parameters whose argument may be an int
+    call: _CallPlan | None  # the interface's one call, when it is direct and has no delay
 
 
 @dataclass(frozen=True, slots=True)
 class _HookPlan:
     interface: _InterfacePlan
-    args: tuple[Prepared, ...]
+    args: Values  # over state only
 
 
 class Description:
@@ -139,20 +149,23 @@ class Description:
                 self.periodic.setdefault(plan.connection, []).append(plan)
 
     def _primitive(self, p: m.Primitive) -> _PrimitivePlan:
-        actions = tuple((a.target, prepare(a.value), self.model.states[a.target].type) for a in p.actions)
-        return _PrimitivePlan(p.name, p.connection, _params(p.params), tuple(map(prepare, p.args)), Codec(p), actions)
+        slots = _slots(p.params)
+        actions = tuple((a.target, prepare(a.value, slots), self.model.states[a.target].type) for a in p.actions)
+        return _PrimitivePlan(p.name, p.connection, _params(p.params), _float_slots(p.params),
+                              _values([prepare(a, slots) for a in p.args]), Codec(p), actions)
 
     def _output(self, o: m.DomainOutput) -> _OutputPlan:
         adapter = self.model.adapters[o.adapter]
         return _OutputPlan(o.name, tuple((name, prepare(e), _field_type(adapter, name, e)) for name, e in o.fields))
 
     def _interface(self, iface: m.Interface) -> _InterfacePlan:
-        calls = tuple(self._call(c) for c in iface.run_order())
+        slots = _slots(iface.params)
+        calls = tuple(self._call(c, slots) for c in iface.run_order())
         owner = calls[0].primitive.connection if calls else next(iter(self.model.connections), None)
         output = self.outputs[iface.triggers] if iface.triggers else None
-        return _InterfacePlan(iface.name, _params(iface.params), calls, output, owner)
+        return _InterfacePlan(iface.name, _params(iface.params), _float_slots(iface.params), calls, output, owner)
 
-    def _call(self, call: m.PrimitiveCall) -> _CallPlan:
+    def _call(self, call: m.PrimitiveCall, slots: dict[str, int]) -> _CallPlan:
         """A call, with the primitive's format arguments substituted where that changes nothing.
 
         When the primitive has no post-actions and its format arguments are
@@ -168,24 +181,29 @@ class Description:
         simple = all(isinstance(a, m.Const) or (isinstance(a, m.Var) and a.scope is m.Scope.PARAM)
                      for a in primitive.args)
         if primitive.actions or not simple or used != params:
-            return _CallPlan(plan, tuple(map(prepare, call.args)), delay)
+            return _CallPlan(plan, _values([prepare(a, slots) for a in call.args]), delay)
         by_param = dict(zip(params, zip(primitive.params, call.args)))
-        direct: list[Prepared] = []
+        direct: list[Prepared | m.Const] = []
         for arg in primitive.args:
             if isinstance(arg, m.Var):
                 param, expr = by_param[arg.name]
-                direct.append(_widened(prepare(expr)) if param.type is m.Type.FLOAT and expr.type is m.Type.INT
-                              else prepare(expr))
+                direct.append(_widened(prepare(expr, slots)) if param.type is m.Type.FLOAT
+                              and expr.type is m.Type.INT else prepare(expr, slots))
             else:
-                direct.append(prepare(arg))
-        return _CallPlan(plan, tuple(direct), delay, direct=True)
+                assert isinstance(arg, m.Const)  # `simple`
+                direct.append(arg)  # a constant, such as an opcode
+        return _CallPlan(plan, _values(direct), delay, direct=True)
 
     def _input(self, i: m.DomainInput) -> _InputPlan:
         fields = tuple((f.name, f.type, _PYTHON_TYPES[f.type]) for f in self.model.adapters[i.adapter].fields)
-        return _InputPlan(i.name, i.adapter, fields, tuple(map(prepare, i.args)), self.interfaces[i.interface])
+        interface = self.interfaces[i.interface]
+        widen = tuple(slot for slot in interface.float_slots if not always_float(i.args[slot]))
+        calls = interface.calls
+        call = calls[0] if len(calls) == 1 and calls[0].direct and not calls[0].delay else None
+        return _InputPlan(i.name, i.adapter, fields, _values([prepare(a) for a in i.args]), interface, widen, call)
 
     def hook(self, hook: m.HookCall) -> _HookPlan:
-        return _HookPlan(self.interfaces[hook.interface], tuple(map(prepare, hook.args)))
+        return _HookPlan(self.interfaces[hook.interface], _values([prepare(a) for a in hook.args]))
 
     def connect(
         self,
@@ -217,6 +235,40 @@ def _widened(f: Prepared) -> Prepared:
 
 def _params(params: tuple[m.Parameter, ...]) -> tuple[tuple[str, m.Type], ...]:
     return tuple((p.name, p.type) for p in params)
+
+
+def _slots(params: tuple[m.Parameter, ...]) -> dict[str, int]:
+    return {p.name: i for i, p in enumerate(params)}
+
+
+def _float_slots(params: tuple[m.Parameter, ...]) -> tuple[int, ...]:
+    return tuple(i for i, p in enumerate(params) if p.type is m.Type.FLOAT)
+
+
+def _values(fs: list[Prepared | m.Const]) -> Values:
+    """The prepared expressions (or constants) `fs` evaluated in turn, as a list.
+
+    For speed, up to three are unrolled (a list comprehension costs more than
+    the calls themselves), and a leading constant (an opcode) is put in as it is.
+    """
+    prepared: list[Prepared] = [prepare(f) if isinstance(f, m.Const) else f for f in fs]
+    if fs and isinstance(fs[0], m.Const):
+        c = fs[0].value
+        match prepared:
+            case [_, f]:
+                return lambda s, loc: [c, f(s, loc, ())]
+            case [_, f, g]:
+                return lambda s, loc: [c, f(s, loc, ()), g(s, loc, ())]
+    match prepared:
+        case []:
+            return lambda s, loc: []
+        case [f]:
+            return lambda s, loc: [f(s, loc, ())]
+        case [f, g]:
+            return lambda s, loc: [f(s, loc, ()), g(s, loc, ())]
+        case [f, g, h]:
+            return lambda s, loc: [f(s, loc, ()), g(s, loc, ()), h(s, loc, ())]
+    return lambda s, loc: [f(s, loc, ()) for f in prepared]
 
 
 def _field_type(adapter: m.Adapter, name: str, expr: m.Expr) -> m.Type:
@@ -355,12 +407,26 @@ class Robot:
         if self._closed:
             self._check_open()
         local = _accept_fields(plan, fields)
-        state = self._state
         try:
-            args = [f(state, local, ()) for f in plan.args]
+            args = plan.args(self._state, local)
         except _EVAL_ERRORS as err:
             raise RdisValueError(f"{name}: {err}") from None
-        self._run_interface(plan.interface, args)
+        interface = plan.interface
+        call = plan.call
+        if call is None:
+            self._run_interface(interface, args)
+            return
+        # For speed, an interface of one direct call without delay is run here, as
+        # `_run_interface` runs it, and only the arguments that may be ints are widened.
+        if plan.widen:
+            _widen(interface.name, plan.widen, args)
+        try:
+            values = call.args(self._state, args)
+        except _EVAL_ERRORS as err:
+            raise RdisValueError(f"{interface.name}: {err}") from None
+        self._exchange(call.primitive, values, values)
+        if interface.output is not None:
+            self._deliver(interface.output)
 
     def call_interface(self, name: str, /, *args: Any) -> None:
         """Run an interface with positional arguments, on this thread; errors are raised."""
@@ -438,16 +504,15 @@ class Robot:
             self._ports[name] = opened[key]
 
     def _run_hook(self, hook: _HookPlan) -> None:
-        state = self._state
         try:
-            args = [f(state, _EMPTY, ()) for f in hook.args]
+            args = hook.args(self._state, _EMPTY)
         except _EVAL_ERRORS as err:
             raise RdisValueError(f"{hook.interface.name}: {err}") from None
         self._run_interface(hook.interface, args)
 
     def _worker(self, connection: m.Connection) -> Worker:
         periodic = [
-            (lambda plan=plan: self._run_interface(plan, ()))
+            (lambda plan=plan: self._run_interface(plan, []))
             for plan in self.description.periodic.get(connection.name, ())
         ]
         keepalive = None
@@ -460,35 +525,39 @@ class Robot:
             self._report, (Exception,),
         )
 
-    def _run_interface(self, plan: _InterfacePlan, args: list[m.Value] | tuple[m.Value, ...]) -> None:
-        local = _bind(plan.name, plan.params, args)
+    def _run_interface(self, plan: _InterfacePlan, args: list[m.Value]) -> None:
+        """Run an interface with its parameters' values (the list is bound in place)."""
+        if plan.float_slots:
+            _widen(plan.name, plan.float_slots, args)
         for call in plan.calls:
-            primitive = call.primitive
-            state = self._state
             try:
-                values = [f(state, local, ()) for f in call.args]
+                values = call.args(self._state, args)
             except _EVAL_ERRORS as err:
                 raise RdisValueError(f"{plan.name}: {err}") from None
             if call.direct:  # the call's values are the primitive's format values
-                self._exchange(primitive, values, _EMPTY)
+                self._exchange(call.primitive, values, values)
             else:
-                self._run_primitive(primitive, values)
+                self._run_primitive(call.primitive, values)
             if call.delay:
                 time.sleep(call.delay)
         if plan.output is not None:
             self._deliver(plan.output)
 
     def _run_primitive(self, plan: _PrimitivePlan, args: list[m.Value]) -> None:
-        local = _bind(plan.name, plan.params, args)
-        state = self._state
+        if plan.float_slots:
+            _widen(plan.name, plan.float_slots, args)
         try:
-            values = [f(state, local, ()) for f in plan.args]
+            values = plan.args(self._state, args)
         except _EVAL_ERRORS as err:
             raise RdisValueError(f"{plan.name}: {err}") from None
-        self._exchange(plan, values, local)
+        self._exchange(plan, values, args)
 
-    def _exchange(self, plan: _PrimitivePlan, values: list[m.Value], local: Mapping[str, m.Value]) -> None:
-        """Encode, write, read the reply (under the port's lock), then run the post-actions."""
+    def _exchange(self, plan: _PrimitivePlan, values: list[m.Value], local: list[m.Value]) -> None:
+        """Encode, write, read the reply (under the port's lock), then run the post-actions.
+
+        `local` is the primitive's parameters, for its post-actions (a direct
+        call, which has none, passes anything).
+        """
         codec = plan.codec
         try:
             request = codec.encode(*values)
@@ -498,28 +567,33 @@ class Robot:
         if port is None:
             raise RdisConnectionError(f"{plan.connection}: not open")
         io = port.io
+        expects_reply = codec.expects_reply
         data = b""
-        with port.lock:
+        lock = port.lock
+        lock.acquire()  # acquire/release rather than `with`: cheaper, and this runs on every call
+        try:
             try:
-                if codec.expects_reply:
+                if expects_reply:
                     io.reset_input_buffer()
                 io.write(request)
             except _WRITE_TIMEOUTS:
                 raise RdisTimeout(f"{plan.name}: write not completed within {self.timeout:g} s") from None
             except Exception as err:
                 raise RdisConnectionError(f"{plan.connection}: {err}") from err
-            if codec.expects_reply:
+            if expects_reply:
                 try:
                     data = bytes(io.read_until(b"\n", MAX_LINE) if codec.reads_line else io.read(codec.reply_size))
                 except Exception as err:
                     raise RdisConnectionError(f"{plan.connection}: {err}") from err
+        finally:
+            lock.release()
         # I/O callbacks run once the port is free again: one that calls the robot
         # (or waits for a thread that does) cannot deadlock against this exchange.
         if self._io_callbacks:
             self._notify_io("write", plan.connection, request)
             if data:
                 self._notify_io("read", plan.connection, data)
-        if not codec.expects_reply:
+        if not expects_reply:
             reply: tuple[m.Value, ...] = ()
         elif not data:
             raise RdisTimeout(f"{plan.name}: no reply within {self.timeout:g} s")
@@ -528,7 +602,7 @@ class Robot:
         if plan.actions:
             self._assign(plan, local, reply)
 
-    def _assign(self, plan: _PrimitivePlan, local: Mapping[str, m.Value], reply: tuple[m.Value, ...]) -> None:
+    def _assign(self, plan: _PrimitivePlan, local: list[m.Value], reply: tuple[m.Value, ...]) -> None:
         """The post-actions: all values computed from one snapshot, then published together."""
         with self._state_lock:
             state = self._state
@@ -584,31 +658,31 @@ _EMPTY: Mapping[str, m.Value] = MappingProxyType({})
 _PYTHON_TYPES: dict[m.Type, type[Any]] = {m.Type.INT: int, m.Type.FLOAT: float, m.Type.BOOL: bool, m.Type.STRING: str}
 
 
-def _bind(
-    owner: str, params: tuple[tuple[str, m.Type], ...], values: list[m.Value] | tuple[m.Value, ...]
-) -> dict[str, m.Value]:
-    """Parameters bound to computed values (of their types already, but for int -> float)."""
-    try:
-        return {
-            name: float(value) if type_ is m.Type.FLOAT and type(value) is int else value
-            for (name, type_), value in zip(params, values)
-        }
-    except OverflowError as err:  # an int too large for a float
-        raise RdisValueError(f"{owner}: {err}") from None
+def _widen(owner: str, float_slots: tuple[int, ...], values: list[m.Value]) -> None:
+    """Parameters bound to computed values (of their types already, but for int -> float), in place."""
+    for i in float_slots:
+        if type(values[i]) is int:
+            try:
+                values[i] = float(values[i])
+            except OverflowError as err:  # an int too large for a float
+                raise RdisValueError(f"{owner}: {err}") from None
 
 
-def _accept_fields(plan: _InputPlan, fields: Mapping[str, Any]) -> dict[str, m.Value]:
-    """An input's fields, checked and made their types; TypeError unless exactly the adapter's."""
-    local: dict[str, m.Value] = {}
+def _accept_fields(plan: _InputPlan, fields: dict[str, Any]) -> dict[str, m.Value]:
+    """An input's fields, checked and made their types; TypeError unless exactly the adapter's.
+
+    `fields` is the call's own keyword dict: it is made the adapter's types in
+    place and returned (no copy, for speed).
+    """
     if len(fields) == len(plan.fields):
         for name, type_, python_type in plan.fields:
             if name not in fields:
                 break
             value: Any = fields[name]
-            local[name] = value if type(value) is python_type else _accept(
-                value, type_, f"input {plan.name}: field {name}")
+            if type(value) is not python_type:
+                fields[name] = _accept(value, type_, f"input {plan.name}: field {name}")
         else:
-            return local
+            return fields
     expected = ", ".join(name for name, _, _ in plan.fields)
     raise TypeError(f"input {plan.name} takes the fields {expected} ({plan.adapter}); "
                     f"given: {', '.join(fields) or 'none'}")
