@@ -232,17 +232,25 @@ def test_an_output_callback_that_calls_an_input_does_not_deadlock_with_io_callba
     import threading
 
     with CreateEmulator(bumpers=1) as dev:
-        io, errors = Recorder(), Recorder()
+        io, errors, reflexes = Recorder(), Recorder(), Recorder()
+
+        def reflex(output: object) -> None:
+            robot.call_input("set_velocity", linear=0.0, angular=0.0)
+            reflexes(output)
+
+        def keep_driving() -> None:  # until several reflexes crossed these calls (or 10 s)
+            deadline = time.monotonic() + 10
+            while len(reflexes) < 5 and time.monotonic() < deadline:
+                robot.call_input("set_velocity", linear=0.1, angular=0.0)
+
         robot = load(FAST_CREATE).connect(dev.port, on_io=io, on_error=errors)
-        robot.on_output(lambda output: robot.call_input("set_velocity", linear=0.0, angular=0.0))
+        robot.on_output(reflex)
         try:
-            caller = threading.Thread(
-                target=lambda: [robot.call_input("set_velocity", linear=0.1, angular=0.0) for _ in range(300)],
-                daemon=True,
-            )
+            caller = threading.Thread(target=keep_driving, daemon=True)
             caller.start()
             caller.join(timeout=20)
             assert not caller.is_alive(), "deadlocked"
+            assert len(reflexes) >= 5
             assert errors.snapshot() == []
         finally:
             robot.close()
