@@ -26,7 +26,12 @@ from rdisc.emit.python import to_python
 from rdisc.runtime import load
 
 ROOT = Path(__file__).resolve().parents[1]
-EXAMPLES = ["examples/create.rdis", "examples/koala.rdis", "tests/runtime/data/fast_create.rdis"]
+EXAMPLES = [
+    "examples/create.rdis",
+    "examples/koala.rdis",
+    "tests/runtime/data/fast_create.rdis",
+    "tests/runtime/data/cr_device.rdis",  # reply lines end in "\r"
+]
 
 
 class ScriptedPort:
@@ -87,7 +92,10 @@ def pair(request, tmp_path_factory):
 
 
 # Replies: bytes a device might send, valid and corrupt, for binary and ASCII protocols.
-_LINES = st.sampled_from([b"d\r\n", b"g\r\n", b"e,12,-5\r\n", b"h,1000,-2000\r\n", b"e,x,1\r\n", b"h,1\n", b"\r\n"])
+_LINES = st.sampled_from([
+    b"d\r\n", b"g\r\n", b"e,12,-5\r\n", b"h,1000,-2000\r\n", b"e,x,1\r\n", b"h,1\n", b"\r\n",
+    b"L,42,mm\r", b"L,-7,cm\r", b"ok\r", b"L,x\r", b"\r",
+])
 _PROXIMITY = st.lists(st.integers(0, 1023), min_size=16, max_size=16).map(
     lambda v: b"n," + b",".join(str(x).encode() for x in v) + b"\r\n"
 )

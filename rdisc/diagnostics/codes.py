@@ -94,7 +94,8 @@ one of `pack`/`format` and at most one of `unpack`/`regex`; an interface is eith
 `periodic` or `adhoc`; each attribute of a robot or connection is given once."""),
     ("E204", "invalid-value", """
 A setting outside its range: baud and frequency must be positive, a keepalive
-interval positive, a delay zero or more. Settings must be constants."""),
+interval positive, a delay zero or more, a reply-line `terminator` 1 to 8 bytes.
+Settings must be constants."""),
     ("E205", "periodic-with-parameters", """
 A periodic interface runs on every tick of its connection's thread, where nobody
 supplies arguments, so it cannot take parameters."""),

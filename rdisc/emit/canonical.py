@@ -92,6 +92,7 @@ def _connection(c: m.Connection) -> JsonObject:
         ("startup", _hook(c.startup)),
         ("terminate", _hook(c.terminate)),
         ("keepalive", keepalive),
+        ("terminator", None if c.terminator == "\n" else c.terminator),
         ("doc", c.doc),
     )
 

@@ -295,7 +295,7 @@ _SECTIONS = {  # list member: (its elements in words, the RDIS keyword declaring
     "domainOutputs": ("a domain output", "output"),
 }
 _STATE = ("name", "type", "value", "doc")
-_CONNECTION = ("name", "baud", "singleThreading", "startup", "terminate", "keepalive", "doc")
+_CONNECTION = ("name", "baud", "singleThreading", "startup", "terminate", "keepalive", "terminator", "doc")
 _PRIMITIVE = (
     "name", "parameters", "parameterTypes", "connection", "pack", "format", "formatArgs", "unpack", "regex",
     "postActions", "doc",
@@ -443,6 +443,9 @@ class _Importer:
         for event in ("startup", "terminate", "keepalive"):
             hook = self.object(m.get(event), f"`{event}`")
             attrs.append(None if hook is None else self.hook(hook, event))
+        terminator = self.string(m.get("terminator"), "`terminator`")
+        if terminator is not None:
+            attrs.append(ast.Terminator(ast.StrLit(terminator.value, terminator.span), terminator.span))
         if name is None:
             return None
         return ast.ConnectionDecl(name, kind, _present(attrs), obj.span, self.doc(m))

@@ -748,7 +748,9 @@ class _Driver:
                             w.line(f"reply = {const}_REPLY.unpack(data)")
                 case m.Regex():
                     self.exprs.helpers.add("_match")
-                    w.line(f"line = self._exchange_line({link}, {request})")
+                    end = self.model.connections[prim.connection].terminator_bytes()
+                    until = "" if end == b"\n" else f", {end!r}"  # the default needs no argument
+                    w.line(f"line = self._exchange_line({link}, {request}{until})")
                     w.line(f"{'reply = ' if uses_reply else ''}_match({quoted(prim.name)}, {const}_REPLY, line)")
                 case _:
                     _unreachable(prim.decoding)

@@ -14,8 +14,9 @@ latin-1. A value the encoding refuses (out of range for its code, a character
 above U+00FF) is an RdisValueError. (3) Under the connection's lock: if a reply is
 expected, discard unread input; write; read the reply. `unpack`: exactly
 calcsize bytes; none within the timeout is RdisTimeout, fewer is
-RdisProtocolError; strings decoded latin-1. `regex`: one line up to b"\\n" (at
-most MAX_LINE bytes), "\\r\\n" or "\\n" stripped, matched with re.match from its
+RdisProtocolError; strings decoded latin-1. `regex`: one line up to the
+connection's `terminator` (default b"\\n"; at most MAX_LINE bytes), the terminator
+stripped (the default also strips a "\\r" before it), matched with re.match from its
 start; no line is RdisTimeout, a line without terminator or not matching is
 RdisProtocolError; the groups are the values (an unmatched group is "").
 (4) Post-actions: every value is computed from the same snapshot of state, then

@@ -41,10 +41,12 @@ class Codec:
         "pattern",
         "reads_line",
         "reply_size",
+        "terminator",
     )
 
-    def __init__(self, primitive: m.Primitive) -> None:
+    def __init__(self, primitive: m.Primitive, terminator: bytes = b"\n") -> None:
         self.name = primitive.name
+        self.terminator = terminator  # ends a reply line (its connection's)
         self._pack: struct.Struct | None = None
         self._strings: tuple[int, ...] = ()  # indexes of values packed as bytes
         self._template: str | None = None
@@ -111,9 +113,12 @@ class Codec:
     def match(self, line: bytes) -> tuple[m.Value, ...]:
         """The groups of a reply line (terminator included); unterminated or unmatched is RdisProtocolError."""
         assert self._regex is not None
-        if not line.endswith(b"\n"):
+        end = self.terminator
+        if not line.endswith(end):
             raise RdisProtocolError(f"{self.name}: reply line not terminated: {line.decode('latin-1')!r}")
-        text = line[:-2] if line.endswith(b"\r\n") else line[:-1]
+        text = line[: -len(end)]
+        if end == b"\n" and text.endswith(b"\r"):  # the default takes CR LF as well as LF
+            text = text[:-1]
         decoded = text.decode("latin-1")
         found = self._regex.match(decoded)
         if found is None:

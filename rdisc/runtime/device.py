@@ -152,7 +152,8 @@ class Description:
         slots = _slots(p.params)
         actions = tuple((a.target, prepare(a.value, slots), self.model.states[a.target].type) for a in p.actions)
         return _PrimitivePlan(p.name, p.connection, _params(p.params), _float_slots(p.params),
-                              _values([prepare(a, slots) for a in p.args]), Codec(p), actions)
+                              _values([prepare(a, slots) for a in p.args]),
+                              Codec(p, self.model.connections[p.connection].terminator_bytes()), actions)
 
     def _output(self, o: m.DomainOutput) -> _OutputPlan:
         adapter = self.model.adapters[o.adapter]
@@ -582,7 +583,7 @@ class Robot:
                 raise RdisConnectionError(f"{plan.connection}: {err}") from err
             if expects_reply:
                 try:
-                    data = bytes(io.read_until(b"\n", MAX_LINE) if codec.reads_line else io.read(codec.reply_size))
+                    data = bytes(io.read_until(codec.terminator, MAX_LINE) if codec.reads_line else io.read(codec.reply_size))
                 except Exception as err:
                     raise RdisConnectionError(f"{plan.connection}: {err}") from err
         finally:

@@ -25,6 +25,7 @@ STANDARD_BAUDS = frozenset(
 )
 DEFAULT_BAUD = 9600
 DEFAULT_FREQUENCY_HZ = 10.0
+MAX_TERMINATOR = 8
 _TYPES = {t.value: t for t in Type}
 _NOTHING = Env({}, "in a setting", "")
 
@@ -247,9 +248,18 @@ class _Checker:
                 if interval is not None and interval <= 0:
                     self.d.report("E204", hook.every.span, "the keepalive interval must be positive")
         keepalive = m.Keepalive(hooks["keepalive"], interval) if hooks["keepalive"] and interval else None
+        terminator = "\n"
+        clause = self.once([a for a in decl.attrs if isinstance(a, ast.Terminator)], "`terminator`", name)
+        if isinstance(clause, ast.Terminator):
+            text = clause.value.value
+            if not 1 <= len(text) <= MAX_TERMINATOR or any(ord(ch) > 0xFF for ch in text):
+                self.d.report("E204", clause.value.span,
+                              f"a terminator is 1 to {MAX_TERMINATOR} bytes (characters up to \\xff)")
+            else:
+                terminator = text
         return m.Connection(
             name.text, decl.kind.text, int(baud or 0), float(frequency or 0), hooks["startup"], hooks["terminate"],
-            keepalive, decl.doc, decl.span,
+            keepalive, decl.doc, decl.span, terminator,
         )
 
     def duration(self, d: ast.Duration, what: str) -> float | None:

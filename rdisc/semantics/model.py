@@ -161,6 +161,10 @@ class Connection:
     keepalive: Keepalive | None = None
     doc: str | None = None
     span: Span | None = _span
+    terminator: str = "\n"  # ends a reply line; "\n" also takes a "\r" before it
+
+    def terminator_bytes(self) -> bytes:
+        return self.terminator.encode("latin-1")
 
 
 @dataclass(frozen=True, slots=True)

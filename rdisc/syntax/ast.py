@@ -193,7 +193,15 @@ class Hook:
     span: Span = _span
 
 
-ConnectionAttr = Baud | Threading | Hook
+@dataclass(frozen=True, slots=True)
+class Terminator:
+    """The end of a reply line, for `regex` replies."""
+
+    value: StrLit
+    span: Span = _span
+
+
+ConnectionAttr = Baud | Threading | Hook | Terminator
 
 
 @dataclass(frozen=True, slots=True)

@@ -211,6 +211,9 @@ def _transformer_class():
         def keepalive(self, meta, c):
             return ast.Hook("keepalive", c[0], c[1], self.b.span(meta))
 
+        def terminator(self, meta, c):
+            return ast.Terminator(self.b.string(c[0]), self.b.span(meta))
+
         def hook_call(self, meta, c):
             return ast.Call(self.b.ident(c[0]), c[1] or (), self.b.span(meta))
 

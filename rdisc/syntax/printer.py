@@ -141,6 +141,8 @@ def _connection_attr(a: ast.ConnectionAttr) -> str:
             return f"threading {model.text} at {print_expr(frequency)} Hz"
         case ast.Hook(event, call, every):
             return f"{event} {_call(call)}" + ("" if every is None else f" every {_duration(every)}")
+        case ast.Terminator(value):
+            return f"terminator {p.quote(value.value)}"
         case _:
             _unreachable(a)
 

@@ -957,20 +957,23 @@ class Koala:
             raise RdisProtocolError(f"{primitive}: expected {size} bytes, got {len(reply)}")
         return reply
 
-    def _exchange_line(self, link: _Link, primitive: str, request: bytes) -> str:
-        """Write a request and read one reply line: the line without its terminator (CR LF
-        or LF), as latin-1 text."""
-        line = self._transfer(link, primitive, request, 0)
+    def _exchange_line(self, link: _Link, primitive: str, request: bytes, end: bytes = b"\n") -> str:
+        """Write a request and read one reply line: the line without its terminator `end`
+        (the default LF also takes a CR before it), as latin-1 text."""
+        line = self._transfer(link, primitive, request, 0, end)
         if not line:
             raise RdisTimeout(f"{primitive}: no reply within {self.timeout:g} s")
-        if not line.endswith(b"\n"):
+        if not line.endswith(end):
             raise RdisProtocolError(f"{primitive}: reply line not terminated: {line.decode('latin-1')!r}")
-        return (line[:-2] if line.endswith(b"\r\n") else line[:-1]).decode("latin-1")
+        text = line[: -len(end)]
+        if end == b"\n" and text.endswith(b"\r"):
+            text = text[:-1]
+        return text.decode("latin-1")
 
-    def _transfer(self, link: _Link, primitive: str, request: bytes, size: int) -> bytes:
+    def _transfer(self, link: _Link, primitive: str, request: bytes, size: int, end: bytes = b"\n") -> bytes:
         """Under the port's lock: discard unread input, write the request, read `size` bytes
-        (0: one line). The I/O callbacks see the write and what was read once the lock is
-        released, so that a callback may call the robot."""
+        (0: one line, up to `end`). The I/O callbacks see the write and what was read once
+        the lock is released, so that a callback may call the robot."""
         written, data = False, b""
         try:
             with link.lock:
@@ -978,7 +981,7 @@ class Koala:
                     link.port.reset_input_buffer()
                     link.port.write(request)
                     written = True
-                    data = link.port.read(size) if size else link.port.read_until(b"\n", MAX_LINE)
+                    data = link.port.read(size) if size else link.port.read_until(end, MAX_LINE)
                 except Exception as err:
                     raise _port_error(link, primitive, err, self.timeout) from err
         finally:
