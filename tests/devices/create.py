@@ -26,6 +26,16 @@ PACKETS = {7: "B", 19: ">h", 20: ">h", 21: "B", 22: ">H", 25: ">H", 26: ">H"}
 START, FULL, DRIVE, SENSORS = 128, 132, 137, 142
 STOP = bytes([DRIVE, 0, 0, 0, 0])
 
+# Thesis Table 4.3, the "Expected" column: what `set_velocity` must send.
+TABLE_4_3 = [  # (linear m/s, angular rad/s) -> (opcode, linear mm/s, radius mm), "Expected"
+    ((-0.2, -0.4), (137, -200, 500)),
+    ((0.0, 0.0), (137, 0, 0)),
+    ((0.0, 0.2), (137, 0, -1)),
+    ((0.0, -0.2), (137, 0, 1)),
+    ((0.2, 0.0), (137, 200, 32767)),
+    ((-0.2, 0.0), (137, -200, 32767)),
+]
+
 
 class CreateEmulator(PtyDevice):
     def __init__(self, mode: str = "normal", bumpers: int = 0, reply_delay: float = 0.0) -> None:

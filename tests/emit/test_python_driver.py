@@ -21,7 +21,7 @@ from types import ModuleType
 import pytest
 from conftest import cli_env
 from devices import CreateEmulator, KoalaEmulator, pty_device
-from devices.create import DRIVE, FULL, SENSORS, START, STOP
+from devices.create import DRIVE, FULL, SENSORS, START, STOP, TABLE_4_3
 
 from rdisc.compile import compile_path
 from rdisc.emit.python import to_python
@@ -29,15 +29,6 @@ from rdisc.emit.python import to_python
 REPO = Path(__file__).resolve().parents[2]
 EXAMPLES = REPO / "examples"
 GOLDEN = REPO / "tests" / "golden" / "drivers"
-
-TABLE_4_3 = [  # (linear m/s, angular rad/s) -> (opcode, linear mm/s, radius mm): the "Expected" column
-    ((-0.2, -0.4), (137, -200, 500)),
-    ((0.0, 0.0), (137, 0, 0)),
-    ((0.0, 0.2), (137, 0, -1)),
-    ((0.0, -0.2), (137, 0, 1)),
-    ((0.2, 0.0), (137, 200, 32767)),
-    ((-0.2, 0.0), (137, -200, 32767)),
-]
 
 
 def generate(source: Path, folder: Path, module: str) -> Path:

@@ -11,9 +11,8 @@ import time
 
 import pytest
 from devices import CreateEmulator
-from devices.create import DRIVE, FULL, SENSORS, START, STOP
+from devices.create import DRIVE, FULL, SENSORS, START, STOP, TABLE_4_3
 from runtime_support import CREATE, Recorder
-from test_table_4_3 import TABLE_4_3
 
 from rdisc.runtime import load
 

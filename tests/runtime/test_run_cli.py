@@ -12,9 +12,8 @@ import time
 import pytest
 from conftest import cli_env
 from devices import CreateEmulator, KoalaEmulator
-from devices.create import DRIVE, SENSORS, STOP
+from devices.create import DRIVE, SENSORS, STOP, TABLE_4_3
 from runtime_support import CREATE, DATA, KOALA, REPO
-from test_table_4_3 import TABLE_4_3
 
 
 def test_table_4_3_through_rdisc_run(rdisc) -> None:

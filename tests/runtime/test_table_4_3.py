@@ -11,22 +11,13 @@ import struct
 from pathlib import Path
 
 import pytest
+from devices.create import TABLE_4_3
 
 from rdisc.compile import compile_path
 from rdisc.runtime.evaluate import coerce, evaluate
 from rdisc.semantics import model as m
 
 CREATE = Path(__file__).parents[2] / "examples" / "create.rdis"
-
-TABLE_4_3 = [  # (linear m/s, angular rad/s) -> (opcode, linear mm/s, radius mm), "Expected"
-    ((-0.2, -0.4), (137, -200, 500)),
-    ((0.0, 0.0), (137, 0, 0)),
-    ((0.0, 0.2), (137, 0, -1)),
-    ((0.0, -0.2), (137, 0, 1)),
-    ((0.2, 0.0), (137, 200, 32767)),
-    ((-0.2, 0.0), (137, -200, 32767)),
-]
-
 
 @pytest.fixture(scope="module")
 def model() -> m.Model:
