@@ -1,5 +1,5 @@
 """Diagnostics are data: made by every stage, rendered by `text` and `lsp`."""
 
-from rdisc.diagnostics.core import Diagnostic, Diagnostics, Label, Severity
+from rdisc.diagnostics.core import Diagnostic, Diagnostics, Label, Severity, abbreviate
 
-__all__ = ["Diagnostic", "Diagnostics", "Label", "Severity"]
+__all__ = ["Diagnostic", "Diagnostics", "Label", "Severity", "abbreviate"]

@@ -9,6 +9,12 @@ from rdisc.diagnostics.codes import CODES
 from rdisc.source import Span
 
 
+def abbreviate(text: str, limit: int = 24) -> str:
+    """Text quoted in a message: escaped to ASCII, long text cut."""
+    shown = text.encode("unicode_escape").decode("ascii")
+    return shown if len(shown) <= limit else shown[: limit - 3] + "..."
+
+
 class Severity(enum.IntEnum):
     """Ordered as LSP numbers them: lower is more severe."""
 

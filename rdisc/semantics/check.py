@@ -8,7 +8,7 @@ returned only when no error was found.
 
 from __future__ import annotations
 
-from rdisc.diagnostics import Diagnostics, Label
+from rdisc.diagnostics import Diagnostics, Label, abbreviate
 from rdisc.semantics import formats
 from rdisc.semantics import model as m
 from rdisc.semantics.model import Scope, Type
@@ -339,7 +339,7 @@ class _Checker:
         if len(slots) != len(args):
             self.d.report(
                 "E302", enc.span,
-                f"`{enc.kind} \"{_short(template)}\"` takes {_count(len(slots), 'value')}, "
+                f"`{enc.kind} \"{abbreviate(template)}\"` takes {_count(len(slots), 'value')}, "
                 f"but {_count(len(args), 'argument')} given",
             )
             return None, args
@@ -352,7 +352,7 @@ class _Checker:
 
     def native_warning(self, lit: ast.StrLit) -> None:
         self.d.report(
-            "W301", lit.span, f"struct format \"{_short(lit.value)}\" has no byte order",
+            "W301", lit.span, f"struct format \"{abbreviate(lit.value)}\" has no byte order",
             label="host byte order and alignment", help=f"write \">{lit.value.lstrip('@')}\" (big-endian) or "
             f"\"<{lit.value.lstrip('@')}\" (little-endian), as the device expects",
         )
@@ -570,8 +570,3 @@ class _Checker:
 
 def _count(n: int, noun: str) -> str:
     return f"{n} {noun}" if n == 1 else f"{n} {noun}s"
-
-
-def _short(text: str) -> str:
-    shown = text.encode("unicode_escape").decode("ascii")
-    return shown if len(shown) <= 24 else shown[:21] + "..."

@@ -6,7 +6,7 @@ import math
 import re
 from functools import lru_cache
 
-from rdisc.diagnostics import Diagnostics
+from rdisc.diagnostics import Diagnostics, abbreviate
 from rdisc.source import Span
 from rdisc.syntax import ast
 from rdisc.syntax.precedence import BINARY, COMPARISON, OR, UNARY_OPERATORS
@@ -336,7 +336,7 @@ def _transformer_class():
             value = _int_value(str(c[0]))
             span = self.b.span(meta)
             if value is None:
-                self.b.diagnostics.report("E004", span, f"invalid integer literal `{_short(str(c[0]))}`")
+                self.b.diagnostics.report("E004", span, f"invalid integer literal `{abbreviate(str(c[0]))}`")
                 value = 0
             return ast.IntLit(value, span)
 
@@ -347,7 +347,7 @@ def _transformer_class():
             except ValueError:
                 value = math.nan
             if not math.isfinite(value):
-                self.b.diagnostics.report("E004", span, f"invalid float literal `{_short(str(c[0]))}`")
+                self.b.diagnostics.report("E004", span, f"invalid float literal `{abbreviate(str(c[0]))}`")
                 value = 0.0
             return ast.FloatLit(value, span)
 
@@ -361,8 +361,3 @@ def _transformer_class():
             return ast.Ref(str(c[0]), self.b.span(meta))
 
     return Transformer
-
-
-def _short(text: str) -> str:
-    return text if len(text) <= 24 else text[:21] + "..."
-
