@@ -151,9 +151,32 @@ condition of `x if c else y` need booleans."""),
     ("E405", "evaluation-error", """
 A constant expression cannot be evaluated: a division by zero, or a power or
 shift whose result would be enormous."""),
+    # -- frames ----------------------------------------------------------------
+    ("E501", "frame-structure", """
+A frame is a sequence of parts: `header`, `literal` and `terminator` bytes,
+`field`s, one `length`, one `payload` and `checksum`s, either one sequence for
+both directions or a `request { }` and a `reply { }`. A request frame has exactly
+one payload, a header comes first and a terminator last, and constant bytes are
+1 to 64 bytes (characters up to \\xff)."""),
+    ("E502", "checksum", """
+A checksum names its algorithm: "sum", "xor", "crc" with its `poly` (and `init`,
+`xorout`, `reflect`), or a catalogue CRC such as "crc8", "crc8-maxim",
+"crc16-xmodem", "crc16-ccitt-false", "crc16-kermit", "crc16-modbus", "crc16-arc",
+"crc16-x25", "crc32", "crc32c". Its width (8, 16 or 32 bits for a CRC) must fit
+its struct format, which holds one unsigned integer, or be written as `hex`
+digits. `over A .. B` names the parts it covers (`request` first covers the
+request as sent, in a reply); they come before the checksum."""),
+    ("E503", "length-field", """
+A length field holds the payload's size plus a constant, in a struct format of
+one unsigned integer. It must be able to hold the largest payload of every
+primitive that uses the frame, and the frame's reply must let the reader find
+the end of the payload: a length field, a size fixed by the decoding, or
+constant bytes right after the payload."""),
+    ("E504", "frame-use", """
+A primitive's `frame NAME(args)` passes one argument per frame parameter. A
+primitive that decodes a reply needs a frame whose reply has a payload; a frame
+field's value must fit its format."""),
     # -- warnings --------------------------------------------------------------
-    ("W101", "unused-primitive", """
-The primitive is never called by any interface."""),
     ("W102", "untriggered-output", """
 No interface triggers this output, so it is never delivered."""),
     ("W103", "unread-state", """

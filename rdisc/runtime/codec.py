@@ -11,13 +11,48 @@ import re
 import struct
 from collections.abc import Callable
 
+from rdisc.runtime import framing
 from rdisc.runtime.errors import RdisProtocolError, RdisValueError
 from rdisc.semantics import formats
 from rdisc.semantics import model as m
 
 MAX_LINE = 4096  # bytes of one reply line, terminator included (the runtime contract)
 
-__all__ = ["MAX_LINE", "Codec"]
+__all__ = ["MAX_LINE", "Codec", "frame_fields", "wire_frame"]
+
+
+def wire_frame(frame: m.Frame) -> framing.Frame:
+    """The Model's frame as the framing module reads and writes it."""
+    fields = {name: i for i, name in enumerate(frame_fields(frame))}
+    return framing.Frame(frame.name, [_part(p, fields) for p in frame.request], [_part(p, fields) for p in frame.reply])
+
+
+def frame_fields(frame: m.Frame) -> dict[str, m.Expr]:
+    """The frame's fields by name, in the order their values are passed (first appearance)."""
+    fields: dict[str, m.Expr] = {}
+    for part in frame.request + frame.reply:
+        if isinstance(part, m.FrameField):
+            fields.setdefault(part.name, part.value)
+    return fields
+
+
+def checksum(a: m.ChecksumAlgorithm) -> framing.Checksum:
+    return framing.Checksum(a.kind, a.width, a.poly, a.init, a.reflect_in, a.reflect_out, a.xorout, a.inverted, a.mask)
+
+
+def _part(part: m.FramePart, fields: dict[str, int]) -> framing.Part:
+    match part:
+        case m.FrameBytes(role=role, data=data):
+            return framing.Bytes(role, data.encode("latin-1"))
+        case m.FrameField(name=name, format=fmt):
+            return framing.Field(name, fmt, fields[name])
+        case m.FrameLength(format=fmt, adjust=adjust):
+            return framing.Length(fmt, adjust)
+        case m.FramePayload():
+            return framing.Payload()
+        case m.FrameChecksum():
+            return framing.Check(checksum(part.algorithm), part.format, part.first, part.last, part.with_request)
+    raise AssertionError(part)
 
 
 class Codec:
@@ -109,6 +144,15 @@ class Codec:
                 decoded[i] = decoded[i].decode("latin-1")
             return tuple(decoded)
         return values
+
+    def match_payload(self, payload: bytes) -> tuple[m.Value, ...]:
+        """The groups of a framed text payload (no terminator); unmatched is RdisProtocolError."""
+        assert self._regex is not None
+        decoded = payload.decode("latin-1")
+        found = self._regex.match(decoded)
+        if found is None:
+            raise RdisProtocolError(f"{self.name}: reply {decoded!r} does not match {self.pattern!r}")
+        return found.groups("")
 
     def match(self, line: bytes) -> tuple[m.Value, ...]:
         """The groups of a reply line (terminator included); unterminated or unmatched is RdisProtocolError."""

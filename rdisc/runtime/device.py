@@ -23,7 +23,8 @@ from dataclasses import dataclass
 from types import MappingProxyType
 from typing import TYPE_CHECKING, Any
 
-from rdisc.runtime.codec import MAX_LINE, Codec
+from rdisc.runtime import framing
+from rdisc.runtime.codec import MAX_LINE, Codec, frame_fields, wire_frame
 from rdisc.runtime.errors import (
     RdisCallbackError,
     RdisConnectionError,
@@ -88,6 +89,20 @@ class _PrimitivePlan:
     args: Values
     codec: Codec
     actions: tuple[tuple[str, Prepared, m.Type], ...]
+    frame: _FramePlan | None = None
+    timeout: float | None = None  # seconds, the reply's own
+    expects_reply: bool = False
+
+
+@dataclass(frozen=True, slots=True)
+class _FramePlan:
+    """A primitive's frame: the frame's arguments (over the primitive's parameters),
+    its field values (over the frame's arguments) and the wire frame."""
+
+    args: Values
+    fields: Values
+    wire: framing.Frame
+    reads: bool  # the reply is framed (else it is read as the primitive's decoding says)
 
 
 @dataclass(frozen=True, slots=True)
@@ -151,9 +166,17 @@ class Description:
     def _primitive(self, p: m.Primitive) -> _PrimitivePlan:
         slots = _slots(p.params)
         actions = tuple((a.target, prepare(a.value, slots), self.model.states[a.target].type) for a in p.actions)
+        frame = None
+        if p.frame is not None:
+            model_frame = self.model.frames[p.frame.frame]
+            fields = [prepare(e, _slots(model_frame.params)) for e in frame_fields(model_frame).values()]
+            frame = _FramePlan(_values([prepare(a, slots) for a in p.frame.args]), _values(fields),
+                               wire_frame(model_frame), bool(model_frame.reply))
+        timeout = p.timeout_ms / 1000.0 if p.timeout_ms is not None else None
         return _PrimitivePlan(p.name, p.connection, _params(p.params), _float_slots(p.params),
                               _values([prepare(a, slots) for a in p.args]),
-                              Codec(p, self.model.connections[p.connection].terminator_bytes()), actions)
+                              Codec(p, self.model.connections[p.connection].terminator_bytes()), actions,
+                              frame, timeout, p.expects_reply(self.model.frames))
 
     def _output(self, o: m.DomainOutput) -> _OutputPlan:
         adapter = self.model.adapters[o.adapter]
@@ -181,7 +204,7 @@ class Description:
         used = [a.name for a in primitive.args if isinstance(a, m.Var) and a.scope is m.Scope.PARAM]
         simple = all(isinstance(a, m.Const) or (isinstance(a, m.Var) and a.scope is m.Scope.PARAM)
                      for a in primitive.args)
-        if primitive.actions or not simple or used != params:
+        if primitive.actions or primitive.frame or not simple or used != params:
             return _CallPlan(plan, _values([prepare(a, slots) for a in call.args]), delay)
         by_param = dict(zip(params, zip(primitive.params, call.args)))
         direct: list[Prepared | m.Const] = []
@@ -440,6 +463,18 @@ class Robot:
         values = [_accept(v, t, f"interface {name}: parameter {p}") for v, (p, t) in zip(args, plan.params)]
         self._run_interface(plan, values)
 
+    def call_primitive(self, name: str, /, *args: Any) -> None:
+        """Send one device command (a primitive) with positional arguments, read its
+        reply and run its post-actions, on this thread; errors are raised."""
+        plan = self.description.primitives.get(name)
+        if plan is None:
+            raise KeyError(f"{self.name} has no primitive named {name!r}")
+        self._check_open()
+        if len(args) != len(plan.params):
+            raise TypeError(f"primitive {name} takes {len(plan.params)} arguments, {len(args)} given")
+        values = [_accept(v, t, f"primitive {name}: parameter {p}") for v, (p, t) in zip(args, plan.params)]
+        self._run_primitive(plan, values)
+
     def tick(self) -> None:
         """One iteration of every connection's periodic work and due keepalive, on this thread."""
         self._check_open()
@@ -564,12 +599,24 @@ class Robot:
             request = codec.encode(*values)
         except struct.error as err:
             raise codec.refused(err) from None
+        frame = plan.frame
+        fields: list[m.Value] = []
+        if frame is not None:
+            try:
+                fields = frame.fields(self._state, frame.args(self._state, local))
+                request = frame.wire.wrap(request, fields)  # type: ignore[arg-type]
+            except _EVAL_ERRORS as err:
+                raise RdisValueError(f"{plan.name}: {err}") from None
+            except struct.error as err:
+                raise codec.refused(err) from None
         port = self._ports.get(plan.connection)
         if port is None:
             raise RdisConnectionError(f"{plan.connection}: not open")
         io = port.io
-        expects_reply = codec.expects_reply
+        expects_reply = plan.expects_reply
         data = b""
+        payload = b""
+        failed: framing.FrameError | None = None
         lock = port.lock
         lock.acquire()  # acquire/release rather than `with`: cheaper, and this runs on every call
         try:
@@ -582,10 +629,22 @@ class Robot:
             except Exception as err:
                 raise RdisConnectionError(f"{plan.connection}: {err}") from err
             if expects_reply:
+                if plan.timeout is not None:
+                    io.timeout = plan.timeout
                 try:
-                    data = bytes(io.read_until(codec.terminator, MAX_LINE) if codec.reads_line else io.read(codec.reply_size))
+                    if frame is not None and frame.reads:
+                        size = codec.reply_size if codec.reply_size or not codec.expects_reply else -1
+                        data, payload = frame.wire.read(io, fields, request, size)  # type: ignore[arg-type]
+                    else:
+                        data = bytes(io.read_until(codec.terminator, MAX_LINE) if codec.reads_line
+                                     else io.read(codec.reply_size))
+                except framing.FrameError as err:
+                    failed = err
                 except Exception as err:
                     raise RdisConnectionError(f"{plan.connection}: {err}") from err
+                finally:
+                    if plan.timeout is not None:
+                        io.timeout = self.timeout
         finally:
             lock.release()
         # I/O callbacks run once the port is free again: one that calls the robot
@@ -594,10 +653,16 @@ class Robot:
             self._notify_io("write", plan.connection, request)
             if data:
                 self._notify_io("read", plan.connection, data)
-        if not expects_reply:
+        if failed is not None:
+            if failed.timeout:
+                raise RdisTimeout(f"{plan.name}: no reply within {plan.timeout or self.timeout:g} s")
+            raise RdisProtocolError(f"{plan.name}: {failed}")
+        if not expects_reply or not codec.expects_reply:
             reply: tuple[m.Value, ...] = ()
+        elif frame is not None and frame.reads:
+            reply = codec.match_payload(payload) if codec.reads_line else codec.decode(payload)
         elif not data:
-            raise RdisTimeout(f"{plan.name}: no reply within {self.timeout:g} s")
+            raise RdisTimeout(f"{plan.name}: no reply within {plan.timeout or self.timeout:g} s")
         else:
             reply = codec.match(data) if codec.reads_line else codec.decode(data)
         if plan.actions:

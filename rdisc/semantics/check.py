@@ -10,6 +10,7 @@ from __future__ import annotations
 
 from rdisc.diagnostics import Diagnostics, Label, abbreviate
 from rdisc.semantics import formats
+from rdisc.semantics.frames import FrameRules, length_range, payload_end_known
 from rdisc.semantics import model as m
 from rdisc.semantics.model import Scope, Type
 from rdisc.semantics.operators import shown
@@ -43,6 +44,7 @@ class _Checker:
         self.main_decls = {id(decl) for unit in units if unit.main for decl in unit.module.decls}
         self.state_env: dict[str, tuple[Scope, Type]] = {}
         self.hooked: set[str] = set()  # interfaces called by a hook, valid or not
+        self.frames: dict[str, m.Frame] = {}
 
     # -- the whole description ----------------------------------------------------------
 
@@ -53,6 +55,11 @@ class _Checker:
         for keyword, name in self.s.damaged:  # lost to a syntax error: readable, of unknown type
             if keyword == "state":
                 self.state_env.setdefault(name, (Scope.STATE, None))  # type: ignore[arg-type]
+        constants = {name: self.constant(decl) for name, decl in self.s.constants.items()}
+        enums = {name: self.enum(decl) for name, decl in self.s.enums.items()}
+        rules = FrameRules(self.d, self.typer, self.setting)
+        self.frames = {name: rules.frame(decl, self.params(decl.params, "frame"))
+                       for name, decl in self.s.frames.items()}
         interface_params = {name: self.params(decl.params, "interface") for name, decl in self.s.interfaces.items()}
         primitives = {name: self.primitive(decl) for name, decl in self.s.primitives.items()}
         connections = {name: self.connection(decl, interface_params) for name, decl in self.s.connections.items()}
@@ -74,6 +81,9 @@ class _Checker:
             adapters=adapters,
             inputs=inputs,  # type: ignore[arg-type]
             outputs=outputs,  # type: ignore[arg-type]
+            frames=self.frames,
+            constants={n: v for n, v in constants.items() if v is not None},
+            enums=enums,
         )
 
     # -- shared pieces ---------------------------------------------------------------------
@@ -172,6 +182,37 @@ class _Checker:
                 attrs[key] = found.value  # type: ignore[attr-defined]
         return m.Robot(decl.name.text, doc=decl.doc, span=decl.span, **attrs)
 
+    def constant(self, decl: ast.ConstDecl) -> m.Value | None:
+        """A named constant, visible to every expression declared after it."""
+        errors = self.d.error_count
+        node = self.typer.expr(decl.value, Env({}, "in a constant", "constants declared before it"))
+        value = self.typer.constant(node)
+        if value is None or node.type is None:
+            if self.d.error_count == errors:
+                self.d.report("E204", decl.value.span, "a constant's value must be a constant expression")
+            return None
+        self.typer.named[decl.name.text] = (node.type, value)
+        return value  # type: ignore[return-value]
+
+    def enum(self, decl: ast.EnumDecl) -> dict[str, int]:
+        members: dict[str, int] = {}
+        self.typer.enums[decl.name.text] = members
+        first: dict[str, ast.EnumMember] = {}
+        for member in decl.members:
+            if member.name.text in first:
+                self.d.report("E101", member.name.span, f"member `{member.name.text}` is declared twice",
+                              labels=(Label(first[member.name.text].name.span, "first declared here"),))
+                continue
+            first[member.name.text] = member
+            node = self.typer.expr(member.value, Env({}, "in an enum", "constants"))
+            value = self.typer.constant(node)
+            if node.type is not Type.INT or not isinstance(value, int) or isinstance(value, bool):
+                if node.type is not None:
+                    self.d.report("E204", member.value.span, "an enum member's value is a constant integer")
+                continue
+            members[member.name.text] = value
+        return members
+
     def adapter(self, decl: ast.AdapterDecl) -> m.Adapter:
         fields: list[m.AdapterField] = []
         seen: dict[str, ast.FieldDecl] = {}
@@ -208,9 +249,9 @@ class _Checker:
 
     def connection(self, decl: ast.ConnectionDecl, interface_params) -> m.Connection:
         name = decl.name
-        if decl.kind.text != "serial":
+        if decl.kind.text not in ("serial", "tcp"):
             self.d.report("E209", decl.kind.span, f"unknown connection kind `{decl.kind.text}`",
-                          help="connections are `serial`")
+                          help="connections are `serial` or `tcp` (a `socket://host:port` port)")
         baud_clause = self.once([a for a in decl.attrs if isinstance(a, ast.Baud)], "`baud`", name)
         baud: float | None = DEFAULT_BAUD
         if isinstance(baud_clause, ast.Baud):
@@ -257,9 +298,13 @@ class _Checker:
                               f"a terminator is 1 to {MAX_TERMINATOR} bytes (characters up to \\xff)")
             else:
                 terminator = text
+        address_clause = self.once([a for a in decl.attrs if isinstance(a, ast.Address)], "`address`", name)
+        address = address_clause.value.value if isinstance(address_clause, ast.Address) else None
+        if decl.kind.text == "tcp" and address is not None and not address.startswith("socket://"):
+            self.d.report("E204", address_clause.value.span, "a tcp connection's address is `socket://HOST:PORT`")  # type: ignore[union-attr]
         return m.Connection(
             name.text, decl.kind.text, int(baud or 0), float(frequency or 0), hooks["startup"], hooks["terminate"],
-            keepalive, decl.doc, decl.span, terminator,
+            keepalive, decl.doc, decl.span, terminator, address,
         )
 
     def duration(self, d: ast.Duration, what: str) -> float | None:
@@ -310,7 +355,46 @@ class _Checker:
             )
             actions = self.actions(action_blocks[0], action_env, {p.name for p in params})
         connection = m.ConnectionRef(on.connection.text) if isinstance(on, ast.On) else m.ConnectionRef("")
-        return m.Primitive(name.text, params, connection, encoding, args, decoding, actions, decl.doc, decl.span)  # type: ignore[arg-type]
+        framed = self.once([c for c in decl.clauses if isinstance(c, ast.Framed)], "`frame`", name)
+        frame = self.frame_use(framed, env, decl, encoding, decoding) if isinstance(framed, ast.Framed) else None
+        timeout_clause = self.once([c for c in decl.clauses if isinstance(c, ast.ReplyTimeout)], "`timeout`", name)
+        timeout = None
+        if isinstance(timeout_clause, ast.ReplyTimeout):
+            timeout = self.duration(timeout_clause.duration, "a timeout")
+            if timeout is not None and timeout <= 0:
+                self.d.report("E204", timeout_clause.span, "a timeout must be positive")
+        return m.Primitive(name.text, params, connection, encoding, args, decoding, actions, decl.doc, decl.span,  # type: ignore[arg-type]
+                           frame, timeout)
+
+    def frame_use(self, clause: ast.Framed, env: Env, decl: ast.PrimitiveDecl, encoding, decoding) -> m.FrameUse | None:
+        """`frame NAME(args)`: its arguments, and whether the frame can carry this primitive."""
+        frame = self.frames.get(clause.frame.text)
+        target = self.s.frames.get(clause.frame.text)
+        args = self.call(ast.Call(clause.frame, clause.args, clause.span), frame.params if frame else None, env,
+                         "frame", target.name if target else None)
+        if frame is None:
+            return None
+        has_payload = any(isinstance(p, m.FramePayload) for p in frame.reply)
+        if decoding is not None and frame.reply and not has_payload:
+            self.d.report("E504", clause.span, f"primitive `{decl.name.text}` decodes a reply, but the reply of "
+                          f"frame `{frame.name}` has no `payload`")
+        size = formats.struct_layout(decoding.format).size if isinstance(decoding, m.Unpack) else None
+        if decoding is not None and not payload_end_known(frame, size is not None):
+            self.d.report("E503", clause.span, f"the reply of frame `{frame.name}` gives no way to find where the "
+                          f"payload of `{decl.name.text}` ends",
+                          help="add a `length` field, constant bytes after the payload, or decode with `unpack`")
+        sizes = [(frame.request, formats.struct_layout(encoding.format).size if isinstance(encoding, m.Pack) else None),
+                 (frame.reply, size)]
+        for parts, payload in sizes:
+            length = next((p for p in parts if isinstance(p, m.FrameLength)), None)
+            if length is None or payload is None:
+                continue
+            low, high = length_range(length)
+            if not low <= payload <= high:
+                self.d.report("E503", clause.span, f"the length field \"{length.format}\" of frame `{frame.name}` "
+                              f"cannot state the {payload}-byte payload of `{decl.name.text}`",
+                              help=f"it states payloads of {low} to {high} bytes")
+        return m.FrameUse(m.FrameRef(frame.name), args)
 
     def template_span(self, lit: ast.StrLit, offset: int, length: int) -> Span:
         """The span of characters inside a template, exact when the literal has no escapes."""
@@ -546,13 +630,8 @@ class _Checker:
     def unused(self, interfaces: dict[str, m.Interface], inputs: dict[str, m.DomainInput]) -> None:
         if self.s.damaged:  # what the lost declarations used is unknown
             return
-        called = {c.primitive for i in interfaces.values() for c in i.calls}
         triggered = {i.triggers for i in interfaces.values() if i.triggers}
         used = {i.interface for i in inputs.values()} | self.hooked
-        for name, decl in self.s.primitives.items():
-            if name not in called and id(decl) in self.main_decls and ("primitive", name) not in self.s.suggested:
-                self.d.report("W101", decl.name.span, f"primitive `{name}` is never called",
-                              help="call it from an interface, or remove it")
         for name, decl in self.s.outputs.items():
             if name not in triggered and id(decl) in self.main_decls and ("output", name) not in self.s.suggested:
                 self.d.report("W102", decl.name.span, f"output `{name}` is never triggered",

@@ -19,6 +19,7 @@ InterfaceRef = NewType("InterfaceRef", str)
 OutputRef = NewType("OutputRef", str)
 AdapterRef = NewType("AdapterRef", str)
 StateRef = NewType("StateRef", str)
+FrameRef = NewType("FrameRef", str)
 
 
 class Type(enum.Enum):
@@ -162,6 +163,7 @@ class Connection:
     doc: str | None = None
     span: Span | None = _span
     terminator: str = "\n"  # ends a reply line; "\n" also takes a "\r" before it
+    address: str | None = None  # the port opened when none is given (path or URL)
 
     def terminator_bytes(self) -> bytes:
         return self.terminator.encode("latin-1")
@@ -202,6 +204,88 @@ class PostAction:
     span: Span | None = _span
 
 
+# ---- frames: the bytes around a payload ---------------------------------------------
+
+
+@dataclass(frozen=True, slots=True)
+class ChecksumAlgorithm:
+    """An additive sum, an XOR or a CRC (Rocksoft parameters), then optionally
+    inverted (`~value`) and masked, all within `width` bits."""
+
+    kind: str  # "sum" | "xor" | "crc"
+    width: int  # bits
+    poly: int = 0
+    init: int = 0
+    reflect_in: bool = False
+    reflect_out: bool = False
+    xorout: int = 0
+    inverted: bool = False
+    mask: int | None = None
+    name: str = ""  # as written: "sum", "crc16-xmodem", ...
+
+
+@dataclass(frozen=True, slots=True)
+class FrameBytes:
+    """Constant bytes (latin-1 text): the header, a literal between parts, or the terminator."""
+
+    role: str  # "header" | "literal" | "terminator"
+    data: str
+
+
+@dataclass(frozen=True, slots=True)
+class FrameField:
+    """A value computed from the frame's parameters, in a one-integer struct format.
+    In a reply it is read and must equal the value the request was framed with."""
+
+    name: str
+    format: str
+    value: Expr
+
+
+@dataclass(frozen=True, slots=True)
+class FrameLength:
+    """The payload's size plus `adjust`, in a one-integer struct format."""
+
+    format: str
+    adjust: int
+
+
+@dataclass(frozen=True, slots=True)
+class FramePayload:
+    """Where the primitive's own bytes go."""
+
+
+@dataclass(frozen=True, slots=True)
+class FrameChecksum:
+    """A checksum over the parts `first` to `last` of its side (indexes); in a reply,
+    `with_request` puts the request's bytes, as sent, before them."""
+
+    algorithm: ChecksumAlgorithm
+    format: str | None  # a one-integer struct format; None: ASCII hex digits
+    first: int
+    last: int
+    with_request: bool = False
+
+
+FramePart = FrameBytes | FrameField | FrameLength | FramePayload | FrameChecksum
+
+
+@dataclass(frozen=True, slots=True)
+class Frame:
+    name: str
+    params: tuple[Parameter, ...]
+    request: tuple[FramePart, ...]
+    reply: tuple[FramePart, ...]  # () when the device answers nothing framed
+    doc: str | None = None
+    span: Span | None = _span
+
+
+@dataclass(frozen=True, slots=True)
+class FrameUse:
+    frame: FrameRef
+    args: tuple[Expr, ...]  # over the primitive's parameters
+
+
 @dataclass(frozen=True, slots=True)
 class Primitive:
     name: str
@@ -213,6 +297,18 @@ class Primitive:
     actions: tuple[PostAction, ...] = ()
     doc: str | None = None
     span: Span | None = _span
+    frame: FrameUse | None = None
+    timeout_ms: float | None = None  # the reply's, instead of the connection's
+
+    def expects_reply(self, frames: dict[str, Frame]) -> bool:
+        """A reply is read when there is one to decode, or when the frame's reply
+        is an acknowledgement (constant parts only, no payload)."""
+        if self.decoding is not None:
+            return True
+        if self.frame is None:
+            return False
+        reply = frames[self.frame.frame].reply
+        return bool(reply) and not any(isinstance(p, FramePayload) for p in reply)
 
 
 @dataclass(frozen=True, slots=True)
@@ -290,3 +386,6 @@ class Model:
     adapters: dict[str, Adapter]
     inputs: dict[str, DomainInput]
     outputs: dict[str, DomainOutput]
+    frames: dict[str, Frame] = field(default_factory=dict)
+    constants: dict[str, Value] = field(default_factory=dict)
+    enums: dict[str, dict[str, int]] = field(default_factory=dict)

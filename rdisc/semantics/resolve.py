@@ -42,6 +42,9 @@ class Symbols:
     adapters: dict[str, ast.AdapterDecl] = field(default_factory=dict)
     inputs: dict[str, ast.InputDecl] = field(default_factory=dict)
     outputs: dict[str, ast.OutputDecl] = field(default_factory=dict)
+    constants: dict[str, ast.ConstDecl] = field(default_factory=dict)
+    enums: dict[str, ast.EnumDecl] = field(default_factory=dict)
+    frames: dict[str, ast.FrameDecl] = field(default_factory=dict)
     standard: set[int] = field(default_factory=set)  # id() of declarations from the stdlib
     damaged: set[tuple[str, str]] = field(default_factory=set)  # (keyword, name) lost to syntax errors
     # (kind, name) offered as "did you mean" for an unknown reference: probably used,
@@ -60,6 +63,9 @@ _KINDS = {
     ast.AdapterDecl: ("adapters", "adapter"),
     ast.InputDecl: ("inputs", "input"),
     ast.OutputDecl: ("outputs", "output"),
+    ast.ConstDecl: ("constants", "constant"),
+    ast.EnumDecl: ("enums", "enum"),
+    ast.FrameDecl: ("frames", "frame"),
 }
 
 
@@ -167,6 +173,8 @@ def _bind(decl: ast.Decl, symbols: Symbols, diagnostics: Diagnostics) -> None:
             for clause in decl.clauses:
                 if isinstance(clause, ast.On):
                     need(clause.connection, symbols.connections, "connection")
+                elif isinstance(clause, ast.Framed):
+                    need(clause.frame, symbols.frames, "frame")
         case ast.InterfaceDecl():
             for clause in decl.clauses:
                 if isinstance(clause, ast.Triggers):

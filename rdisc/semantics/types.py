@@ -80,6 +80,8 @@ class Typer:
         # id(node) → (node, value); holding the node keeps its id from being reused.
         self._constants: dict[int, tuple[m.Expr, object]] = {}
         self.reads: set[str] = set()  # state variables read by any expression
+        self.named: dict[str, tuple[Type, object]] = {}  # `const` declarations: (type, value)
+        self.enums: dict[str, dict[str, int]] = {}  # enumerations: member → value
 
     def constant(self, expr: m.Expr) -> object:
         """The value of a constant expression, or None when it is not constant."""
@@ -114,6 +116,8 @@ class Typer:
                 return self._conditional(e, env)
             case ast.CallExpr():
                 return self._call(e, env)
+            case ast.Member():
+                return self._member(e)
         raise AssertionError(f"unknown expression node {e!r}")
 
     def _const(self, node: m.Const) -> m.Expr:
@@ -131,6 +135,9 @@ class Typer:
                 self.diagnostics.report("E305", e.span, "the reply `out` must be indexed: `out[0]`")
             return m.Var(e.name, Scope.STATE, None, e.span)  # type: ignore[arg-type]
         found = env.names.get(e.name)
+        if found is None and e.name in self.named:  # a constant, unless a local name hides it
+            type_, value = self.named[e.name]
+            return self._const(m.Const(value, type_, e.span))  # type: ignore[arg-type]
         if found is None:
             self.diagnostics.report(
                 "E103",
@@ -144,6 +151,21 @@ class Typer:
         if scope is Scope.STATE:
             self.reads.add(e.name)
         return m.Var(e.name, scope, type_, e.span)
+
+    def _member(self, e: ast.Member) -> m.Expr:
+        members = self.enums.get(e.enum.text)
+        if members is None:
+            self.diagnostics.report("E102", e.enum.span, f"unknown enum `{e.enum.text}`",
+                                    label="no enum of this name", help=suggest(e.enum.text, self.enums))
+            return m.Const(0, None, e.span)  # type: ignore[arg-type]
+        value = members.get(e.member.text)
+        if value is None:
+            self.diagnostics.report(
+                "E102", e.member.span, f"enum `{e.enum.text}` has no member `{e.member.text}`",
+                help=suggest(e.member.text, members) or "its members are " + ", ".join(f"`{n}`" for n in members),
+            )
+            return m.Const(0, None, e.span)  # type: ignore[arg-type]
+        return self._const(m.Const(value, Type.INT, e.span))
 
     def _index(self, e: ast.Index, env: Env) -> m.Expr:
         if e.base.name != "out":

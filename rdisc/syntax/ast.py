@@ -100,7 +100,16 @@ class CallExpr:
     span: Span = _span
 
 
-Expr = IntLit | FloatLit | StrLit | BoolLit | Ref | Index | Unary | BinOp | Conditional | CallExpr
+@dataclass(frozen=True, slots=True)
+class Member:
+    """`Enum.member`: a member of an enumeration."""
+
+    enum: Ident
+    member: Ident
+    span: Span = _span
+
+
+Expr = IntLit | FloatLit | StrLit | BoolLit | Ref | Index | Unary | BinOp | Conditional | CallExpr | Member
 
 
 # ---- pieces shared by declarations ------------------------------------------
@@ -201,7 +210,15 @@ class Terminator:
     span: Span = _span
 
 
-ConnectionAttr = Baud | Threading | Hook | Terminator
+@dataclass(frozen=True, slots=True)
+class Address:
+    """The port a connection opens when none is given: a device path or a URL."""
+
+    value: StrLit
+    span: Span = _span
+
+
+ConnectionAttr = Baud | Threading | Hook | Terminator | Address
 
 
 @dataclass(frozen=True, slots=True)
@@ -240,7 +257,24 @@ class Actions:
     span: Span = _span
 
 
-PrimitiveClause = On | Encoding | Decoding | Actions
+@dataclass(frozen=True, slots=True)
+class Framed:
+    """`frame NAME(args)`: the frame around the primitive's request and reply."""
+
+    frame: Ident
+    args: tuple[Expr, ...]
+    span: Span = _span
+
+
+@dataclass(frozen=True, slots=True)
+class ReplyTimeout:
+    """`timeout D`: how long the reply may take, instead of the connection's."""
+
+    duration: Duration
+    span: Span = _span
+
+
+PrimitiveClause = On | Encoding | Decoding | Actions | Framed | ReplyTimeout
 
 
 @dataclass(frozen=True, slots=True)
@@ -324,9 +358,107 @@ class OutputDecl:
     doc: str | None = None
 
 
+@dataclass(frozen=True, slots=True)
+class ConstDecl:
+    name: Ident
+    value: Expr
+    span: Span = _span
+    doc: str | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class EnumMember:
+    name: Ident
+    value: Expr
+    span: Span = _span
+
+
+@dataclass(frozen=True, slots=True)
+class EnumDecl:
+    name: Ident
+    members: tuple[EnumMember, ...]
+    span: Span = _span
+    doc: str | None = None
+
+
+# ---- frames: the bytes around a payload ----
+
+
+@dataclass(frozen=True, slots=True)
+class FrameBytes:
+    """Constant bytes: `header`, `literal` or `terminator`."""
+
+    role: str  # "header" | "literal" | "terminator"
+    value: StrLit
+    span: Span = _span
+
+
+@dataclass(frozen=True, slots=True)
+class FrameField:
+    """`field NAME "fmt" = expr`: a value of the frame's parameters."""
+
+    name: Ident
+    format: StrLit
+    value: Expr
+    span: Span = _span
+
+
+@dataclass(frozen=True, slots=True)
+class FrameLength:
+    """`length "fmt" = payload + N`."""
+
+    format: StrLit
+    adjust: int
+    span: Span = _span
+
+
+@dataclass(frozen=True, slots=True)
+class FramePayload:
+    span: Span = _span
+
+
+@dataclass(frozen=True, slots=True)
+class ChecksumOption:
+    """`inverted`, `reflect`, `mask/poly/init/xorout/width EXPR` or `over A .. B`."""
+
+    word: str
+    value: Expr | None = None
+    over: tuple[Ident, ...] = ()
+    span: Span = _span
+
+
+@dataclass(frozen=True, slots=True)
+class FrameChecksum:
+    algorithm: StrLit
+    format: StrLit | None  # None: ASCII hex digits
+    options: tuple[ChecksumOption, ...]
+    span: Span = _span
+
+
+FramePart = FrameBytes | FrameField | FrameLength | FramePayload | FrameChecksum
+
+
+@dataclass(frozen=True, slots=True)
+class FrameSide:
+    """`request { ... }` or `reply { ... }`."""
+
+    side: str  # "request" | "reply"
+    parts: tuple[FramePart, ...]
+    span: Span = _span
+
+
+@dataclass(frozen=True, slots=True)
+class FrameDecl:
+    name: Ident
+    params: tuple[Param, ...]
+    items: tuple[FramePart | FrameSide, ...]
+    span: Span = _span
+    doc: str | None = None
+
+
 Decl = (
     ImportDecl | RobotDecl | StateDecl | ConnectionDecl | PrimitiveDecl | InterfaceDecl | AdapterDecl | InputDecl
-    | OutputDecl
+    | OutputDecl | ConstDecl | EnumDecl | FrameDecl
 )
 
 

@@ -274,6 +274,76 @@ def _transformer_class():
                 self.b.ident(c[0]), self.b.ident(c[1]), unit, ros, self.b.span(meta), self.b.doc(meta)
             )
 
+        def address(self, meta, c):
+            return ast.Address(self.b.string(c[0]), self.b.span(meta))
+
+        def framed(self, meta, c):
+            return ast.Framed(self.b.ident(c[0]), c[1] or (), self.b.span(meta))
+
+        def reply_timeout(self, meta, c):
+            return ast.ReplyTimeout(c[0], self.b.span(meta))
+
+        def const_decl(self, meta, c):
+            return ast.ConstDecl(self.b.ident(c[0]), c[1], self.b.span(meta), self.b.doc(meta))
+
+        def enum_decl(self, meta, c):
+            members = tuple(x for x in c[1:] if x is not None)
+            return ast.EnumDecl(self.b.ident(c[0]), members, self.b.span(meta), self.b.doc(meta))
+
+        def enum_member(self, meta, c):
+            return ast.EnumMember(self.b.ident(c[0]), c[1], self.b.span(meta))
+
+        def frame_decl(self, meta, c):
+            return ast.FrameDecl(self.b.ident(c[0]), c[1] or (), tuple(c[2:]), self.b.span(meta), self.b.doc(meta))
+
+        def request_side(self, meta, c):
+            return ast.FrameSide("request", tuple(c), self.b.span(meta))
+
+        def reply_side(self, meta, c):
+            return ast.FrameSide("reply", tuple(c), self.b.span(meta))
+
+        def _bytes(role):  # noqa: N805 - a factory of transformer methods
+            def part(self, meta, c):
+                return ast.FrameBytes(role, self.b.string(c[0]), self.b.span(meta))
+            return part
+
+        f_header, f_literal, f_terminator = _bytes("header"), _bytes("literal"), _bytes("terminator")
+
+        def f_field(self, meta, c):
+            return ast.FrameField(self.b.ident(c[0]), self.b.string(c[1]), c[2], self.b.span(meta))
+
+        def f_length(self, meta, c):
+            fmt, sign, amount = c
+            adjust = 0
+            if amount is not None:
+                adjust = _int_value(str(amount)) or 0
+                adjust = -adjust if str(sign) == "-" else adjust
+            return ast.FrameLength(self.b.string(fmt), adjust, self.b.span(meta))
+
+        def f_payload(self, meta, c):
+            return ast.FramePayload(self.b.span(meta))
+
+        def f_checksum(self, meta, c):
+            algorithm, encoding, *options = c
+            fmt = None if str(encoding) == "hex" and encoding.type == "HEX" else self.b.string(encoding)
+            return ast.FrameChecksum(self.b.string(algorithm), fmt, tuple(options), self.b.span(meta))
+
+        def c_inverted(self, meta, c):
+            return ast.ChecksumOption("inverted", span=self.b.span(meta))
+
+        def c_reflect(self, meta, c):
+            return ast.ChecksumOption("reflect", span=self.b.span(meta))
+
+        def c_setting(self, meta, c):
+            return ast.ChecksumOption(str(c[0]), c[1], span=self.b.span(meta))
+
+        def c_over(self, meta, c):
+            names = tuple(self.b.ident(t) for t in c if t is not None)
+            return ast.ChecksumOption("over", over=names, span=self.b.span(meta))
+
+        def member(self, meta, c):
+            return ast.Member(self.b.ident(c[0]), self.b.ident(c[1]), self.b.span(meta))
+
         def input_decl(self, meta, c):
             call_span = self.b.token_span(c[2])
             if c[3]:

@@ -32,6 +32,9 @@ DECL_KEYWORDS = (
     "adapter",
     "input",
     "output",
+    "const",
+    "enum",
+    "frame",
 )
 _DECL_START = re.compile(r"^(?:{})\b".format("|".join(DECL_KEYWORDS)), re.MULTILINE)
 _DOC_RUN = re.compile(r"(?:^[ \t]*///[^\n]*\n?)+", re.MULTILINE)

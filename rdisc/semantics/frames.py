@@ -1,0 +1,273 @@
+"""Frames: the rules of a `frame` declaration, lowered to the Model's parts, and
+the catalogue of named CRCs.
+
+A frame's parts all have fixed sizes but the payload; these rules make sure a
+reader can always find the payload's end and that every checksum covers parts
+that come before it.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+from rdisc.diagnostics import Diagnostics, Label, abbreviate
+from rdisc.semantics import formats
+from rdisc.semantics import model as m
+from rdisc.semantics.model import Scope, Type
+from rdisc.semantics.resolve import suggest
+from rdisc.semantics.types import Env, Typer
+from rdisc.syntax import ast
+
+MAX_BYTES = 64  # of one constant part
+
+# Catalogue CRCs (parameters as in the CRC RevEng catalogue): width, poly, init,
+# reflect in and out, xorout.
+CATALOGUE: dict[str, tuple[int, int, int, bool, int]] = {
+    "crc8": (8, 0x07, 0x00, False, 0x00),
+    "crc8-maxim": (8, 0x31, 0x00, True, 0x00),
+    "crc8-dvb-s2": (8, 0xD5, 0x00, False, 0x00),
+    "crc16-xmodem": (16, 0x1021, 0x0000, False, 0x0000),
+    "crc16-ccitt-false": (16, 0x1021, 0xFFFF, False, 0x0000),
+    "crc16-kermit": (16, 0x1021, 0x0000, True, 0x0000),
+    "crc16-modbus": (16, 0x8005, 0xFFFF, True, 0x0000),
+    "crc16-arc": (16, 0x8005, 0x0000, True, 0x0000),
+    "crc16-x25": (16, 0x1021, 0xFFFF, True, 0xFFFF),
+    "crc32": (32, 0x04C11DB7, 0xFFFFFFFF, True, 0xFFFFFFFF),
+    "crc32c": (32, 0x1EDC6F41, 0xFFFFFFFF, True, 0xFFFFFFFF),
+}
+_ALIASES = {
+    "crc8-smbus": "crc8", "crc8-maxim-dow": "crc8-maxim", "crc16-ibm-3740": "crc16-ccitt-false",
+    "crc16-autosar": "crc16-ccitt-false", "crc16-ccitt": "crc16-kermit", "crc16-ibm-sdlc": "crc16-x25",
+    "crc16": "crc16-arc", "crc32-iso-hdlc": "crc32", "crc32-iscsi": "crc32c",
+}
+ALGORITHMS = ("sum", "xor", "crc", *CATALOGUE)
+_PART_WORDS = frozenset(["header", "literal", "terminator", "length", "payload", "request"])
+
+
+def algorithm_key(name: str) -> str:
+    """`CRC-16/XMODEM`, `crc16_xmodem` and `crc16-xmodem` are one name."""
+    key = name.strip().lower().replace("/", "-").replace("_", "-")
+    if key.startswith("crc-"):
+        key = "crc" + key[4:]
+    return _ALIASES.get(key, key)
+
+
+class FrameRules:
+    """Checks `frame` declarations for a checker that owns the diagnostics and the typer."""
+
+    def __init__(self, diagnostics: Diagnostics, typer: Typer,
+                 setting: Callable[[ast.Expr, str], float | None]) -> None:
+        self.d = diagnostics
+        self.typer = typer
+        self.setting = setting
+
+    def frame(self, decl: ast.FrameDecl, params: tuple[m.Parameter, ...]) -> m.Frame:
+        scope = {p.name: (Scope.PARAM, p.type) for p in params if p.type is not None}
+        env = Env(scope, "in a frame", "its parameters")
+        direct = tuple(i for i in decl.items if not isinstance(i, ast.FrameSide))
+        sides: dict[str, ast.FrameSide] = {}
+        for item in decl.items:
+            if isinstance(item, ast.FrameSide):
+                if item.side in sides:
+                    self.d.report("E501", item.span, f"frame `{decl.name.text}` has two `{item.side}` sides",
+                                  labels=(Label(sides[item.side].span, "first given here"),))
+                sides.setdefault(item.side, item)
+        if direct and sides:
+            self.d.report("E501", next(iter(sides.values())).span,
+                          f"frame `{decl.name.text}` mixes parts with `request {{ }}`/`reply {{ }}` sides",
+                          help="write the parts once for both directions, or give each side its own")
+        fields: dict[str, int] = {}
+        if sides:
+            request = self.side(sides["request"].parts if "request" in sides else (), "request", decl, env, fields)
+            reply = self.side(sides["reply"].parts, "reply", decl, env, fields) if "reply" in sides else ()
+        else:
+            request = self.side(direct, "request", decl, env, fields)
+            reply = self.side(direct, "reply", decl, env, fields, quiet=True)
+        return m.Frame(decl.name.text, params, request, reply, decl.doc, decl.span)
+
+    def side(self, parts: tuple[ast.FramePart, ...], side: str, decl: ast.FrameDecl, env: Env,
+             fields: dict[str, int], quiet: bool = False) -> tuple[m.FramePart, ...]:
+        """One direction's parts; `quiet` when the same parts were checked as the request."""
+        d = self.d if not quiet else Diagnostics()
+        payloads = [p for p in parts if isinstance(p, ast.FramePayload)]
+        if side == "request" and len(payloads) != 1:
+            d.report("E501", payloads[1].span if payloads else decl.name.span,
+                     f"the request of frame `{decl.name.text}` needs exactly one `payload`",
+                     help="`payload` marks where the primitive's own bytes go")
+        elif side == "reply" and len(payloads) > 1:
+            d.report("E501", payloads[1].span, f"the reply of frame `{decl.name.text}` has two payloads")
+        lengths = [p for p in parts if isinstance(p, ast.FrameLength)]
+        for extra in lengths[1:]:
+            d.report("E501", extra.span, f"frame `{decl.name.text}` has two length fields")
+        names: dict[str, int] = {}
+        out: list[m.FramePart] = []
+        for i, part in enumerate(parts):
+            match part:
+                case ast.FrameBytes():
+                    out.append(self.constant_bytes(part, i, len(parts), d))
+                case ast.FrameField():
+                    out.append(self.field(part, env, d, fields))
+                    names[part.name.text] = i
+                case ast.FrameLength():
+                    self.integer_format(part.format, "a length field", d, "E503")
+                    out.append(m.FrameLength(part.format.value, part.adjust))
+                case ast.FramePayload():
+                    out.append(m.FramePayload())
+                case ast.FrameChecksum():
+                    out.append(self.checksum(part, i, parts, names, side, d))
+            if isinstance(part, (ast.FrameBytes, ast.FrameLength, ast.FramePayload)):
+                names.setdefault(part.role if isinstance(part, ast.FrameBytes) else
+                                 "length" if isinstance(part, ast.FrameLength) else "payload", i)
+        return tuple(out)
+
+    def constant_bytes(self, part: ast.FrameBytes, i: int, count: int, d: Diagnostics) -> m.FrameBytes:
+        text = part.value.value
+        if not 1 <= len(text) <= MAX_BYTES or any(ord(ch) > 0xFF for ch in text):
+            d.report("E501", part.value.span, f"constant bytes are 1 to {MAX_BYTES} bytes (characters up to \\xff)")
+        if part.role == "header" and i != 0:
+            d.report("E501", part.span, "a `header` comes first in its frame",
+                     help="use `literal` for constant bytes between other parts")
+        if part.role == "terminator" and i != count - 1:
+            d.report("E501", part.span, "a `terminator` comes last in its frame",
+                     help="use `literal` for constant bytes between other parts")
+        return m.FrameBytes(part.role, text)
+
+    def field(self, part: ast.FrameField, env: Env, d: Diagnostics, fields: dict[str, int]) -> m.FrameField:
+        if part.name.text in _PART_WORDS:
+            d.report("E104", part.name.span, f"`{part.name.text}` names a part of every frame and cannot name a field")
+        slot = self.integer_format(part.format, f"field `{part.name.text}`", d, "E501")
+        value = self.typer.expr(part.value, env)
+        if value.type is not None and value.type is not Type.INT:
+            d.report("E401", part.value.span, f"field `{part.name.text}` takes an int")
+        constant = self.typer.constant(value)
+        if slot is not None and isinstance(constant, int) and slot.low is not None:
+            if not slot.low <= constant <= slot.high:  # type: ignore[operator]
+                d.report("E403", part.value.span, f"{constant} does not fit `{part.format.value}`")
+        fields.setdefault(part.name.text, len(fields))
+        return m.FrameField(part.name.text, part.format.value, value)
+
+    def integer_format(self, lit: ast.StrLit, what: str, d: Diagnostics, code: str) -> formats.Slot | None:
+        """The one integer slot of a part's struct format; anything else is reported."""
+        try:
+            layout = formats.struct_layout(lit.value)
+        except formats.TemplateError as err:
+            d.report("E301", lit.span, err.message)
+            return None
+        if len(layout.slots) != 1 or layout.slots[0].type is not Type.INT:
+            d.report(code, lit.span, f"{what} is one integer: a struct format such as \"B\", \">H\" or \"<I\", "
+                     f"not \"{abbreviate(lit.value)}\"")
+            return None
+        return layout.slots[0]
+
+    def checksum(self, part: ast.FrameChecksum, i: int, parts: tuple[ast.FramePart, ...], names: dict[str, int],
+                 side: str, d: Diagnostics) -> m.FrameChecksum:
+        name = part.algorithm.value
+        key = algorithm_key(name)
+        options: dict[str, ast.ChecksumOption] = {}
+        for option in part.options:
+            if option.word in options:
+                d.report("E502", option.span, f"`{option.word}` is given twice",
+                         labels=(Label(options[option.word].span, "first given here"),))
+            options.setdefault(option.word, option)
+        values: dict[str, int] = {}
+        for word in ("mask", "poly", "init", "xorout", "width"):
+            option = options.get(word)
+            if option is None or option.value is None:
+                continue
+            value = self.setting(option.value, f"`{word}`")
+            if value is not None and (value != int(value) or value < 0):
+                d.report("E502", option.value.span, f"`{word}` is a non-negative integer")
+            elif value is not None:
+                values[word] = int(value)
+        size_bits = None
+        if part.format is not None:
+            slot = self.integer_format(part.format, "a checksum", d, "E502")
+            if slot is not None:
+                size_bits = formats.struct_layout(part.format.value).size * 8
+        crc_only = [w for w in ("poly", "init", "xorout", "reflect") if w in options]
+        if key in CATALOGUE:
+            width, poly, init, reflect, xorout = CATALOGUE[key]
+            for word in crc_only + (["width"] if "width" in options else []):
+                d.report("E502", options[word].span, f"`{name}` fixes its own `{word}`",
+                         help='use "crc" with `poly`, `init`, `xorout` and `reflect` for another CRC')
+            algorithm = m.ChecksumAlgorithm("crc", width, poly, init, reflect, reflect, xorout,
+                                            "inverted" in options, values.get("mask"), name)
+        elif key == "crc":
+            width = values.get("width", size_bits or 8)
+            if "poly" not in values:
+                d.report("E502", part.algorithm.span, 'a "crc" needs its `poly`',
+                         help='or name a catalogue CRC, such as "crc16-xmodem"')
+            if width not in (8, 16, 32):
+                d.report("E502", (options["width"].value or part).span if "width" in options else part.span,
+                         f"a CRC is 8, 16 or 32 bits wide, not {width}")
+            reflect = "reflect" in options
+            algorithm = m.ChecksumAlgorithm("crc", width, values.get("poly", 0), values.get("init", 0), reflect,
+                                            reflect, values.get("xorout", 0), "inverted" in options,
+                                            values.get("mask"), name)
+        elif key in ("sum", "xor"):
+            for word in crc_only:
+                d.report("E502", options[word].span, f"`{word}` belongs to a CRC, not to a {key}")
+            width = values.get("width", size_bits or 8)
+            if not 1 <= width <= 32:
+                d.report("E502", part.span, f"a {key} is 1 to 32 bits wide, not {width}")
+            algorithm = m.ChecksumAlgorithm(key, width, inverted="inverted" in options, mask=values.get("mask"),
+                                            name=name)
+        else:
+            d.report("E502", part.algorithm.span, f"unknown checksum algorithm \"{abbreviate(name)}\"",
+                     help=suggest(key, ALGORITHMS) or 'algorithms: "sum", "xor", "crc" and catalogue CRCs')
+            algorithm = m.ChecksumAlgorithm("sum", 8, name=name)
+        if size_bits is not None and algorithm.width > size_bits:
+            d.report("E502", part.format.span,  # type: ignore[union-attr]
+                     f"a {algorithm.width}-bit checksum does not fit \"{part.format.value}\" ({size_bits} bits)")  # type: ignore[union-attr]
+        first, last, with_request = self.span_of(part, options.get("over"), i, parts, names, side, d)
+        return m.FrameChecksum(algorithm, part.format.value if part.format else None, first, last, with_request)
+
+    def span_of(self, part: ast.FrameChecksum, over: ast.ChecksumOption | None, i: int,
+                parts: tuple[ast.FramePart, ...], names: dict[str, int], side: str,
+                d: Diagnostics) -> tuple[int, int, bool]:
+        """The parts a checksum covers: (first, last, with the request)."""
+        if over is None:
+            first = 1 if parts and isinstance(parts[0], ast.FrameBytes) and parts[0].role == "header" else 0
+            if first > i - 1:
+                d.report("E502", part.span, "this checksum has nothing before it to cover")
+            return first, i - 1, False
+        idents = over.over
+        with_request = idents[0].text == "request"
+        if with_request and side != "reply":
+            d.report("E502", idents[0].span, "only a reply's checksum can cover the `request`")
+        if with_request and len(idents) == 1:
+            d.report("E502", idents[0].span, "name the last reply part it covers: `over request .. payload`")
+            return 0, max(i - 1, 0), True
+        found: list[int] = []
+        for ident in (idents[1:] if with_request else idents):
+            at = names.get(ident.text)
+            if at is None:
+                later = ident.text in _PART_WORDS or any(isinstance(p, ast.FrameField) and p.name.text == ident.text
+                                                        for p in parts)
+                d.report("E502", ident.span,
+                         f"a checksum covers parts before it; `{ident.text}` is "
+                         + ("not before it" if later else "no part of this frame"),
+                         help=None if later else suggest(ident.text, names))
+                return 0, max(i - 1, 0), with_request
+            found.append(at)
+        first = 0 if with_request else found[0]
+        last = found[-1]
+        if first > last:
+            d.report("E502", over.span, "the parts of `over` are in the wrong order")
+        return first, last, with_request
+
+
+def payload_end_known(frame: m.Frame, size_known: bool) -> bool:
+    """Whether a reader can find where the reply's payload ends."""
+    reply = frame.reply
+    at = next((i for i, p in enumerate(reply) if isinstance(p, m.FramePayload)), None)
+    if at is None or size_known or any(isinstance(p, m.FrameLength) for p in reply):
+        return True
+    return at + 1 < len(reply) and isinstance(reply[at + 1], m.FrameBytes)
+
+
+def length_range(part: m.FrameLength) -> tuple[int, int]:
+    """The payload sizes a length field can state."""
+    slot = formats.struct_layout(part.format).slots[0]
+    return max(0, (slot.low or 0) - part.adjust), (slot.high or 0) - part.adjust
+
