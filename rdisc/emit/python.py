@@ -17,6 +17,7 @@ Model and source name give byte-identical text.
 
 from __future__ import annotations
 
+import dataclasses
 import keyword
 import os
 import posixpath
@@ -27,6 +28,7 @@ from typing import NoReturn
 from rdisc.emit import python_support as support
 from rdisc.emit.python_expr import Compiler, Py, call, lines, literal, quoted, state_key
 from rdisc.emit.writer import Writer
+from rdisc.runtime.codec import frame_fields
 from rdisc.semantics import formats
 from rdisc.semantics import model as m
 from rdisc.semantics.model import Type
@@ -57,7 +59,7 @@ _BODY_NAMES = frozenset((
 # The robot class's own members: an input of one of these names gets a trailing underscore.
 _ROBOT_MEMBERS = frozenset((
     "open", "close", "startup", "terminate", "tick", "state", "closed", "timeout", "on_output", "on_error",
-    "on_io", "call_input", "call_interface",
+    "on_io", "call_input", "call_interface", "call_primitive",
 ))
 # Members of State besides the state variables (it is a Mapping).
 _STATE_MEMBERS = frozenset(("keys", "items", "values", "get"))
@@ -186,6 +188,8 @@ class _Driver:
         }
         self.worked = [c for c in model.connections.values() if self.has_work(c)]
         self.uses_struct = False
+        used = {p.frame.frame for p in model.primitives.values() if p.frame is not None}
+        self.framed = {name: f"_FRAME_{_identifier(name).upper()}" for name in model.frames if name in used}
 
     def has_work(self, c: m.Connection) -> bool:
         """Whether a connection's thread has anything to do: periodic interfaces or a keepalive."""
@@ -230,6 +234,16 @@ class _Driver:
         self.header(w)
         w.blank(2)
         w.raw(codecs.text().rstrip("\n"))
+        if self.framed:
+            w.blank(2)
+            _section(w, "frames: the framing of rdisc.runtime.framing, and each frame of the description")
+            w.blank(1)
+            w.raw(support.framing())
+            for frame in self.model.frames.values():
+                if frame.name in self.framed:
+                    w.blank(2)
+                    self.comment(w, frame.span, f"frame {frame.name}")
+                    w.line(f"{self.framed[frame.name]} = {_frame(frame)}")
         helpers = [name for name in support.HELPERS if name in self.exprs.helpers]  # a fixed order
         if helpers:
             w.blank(2)
@@ -293,12 +307,12 @@ class _Driver:
         w.blank(1)
         modules = ["argparse", "dataclasses", "importlib", "json", "logging", "math", "numbers", "os", "signal",
                    "sys", "threading", "time"]
-        if self.uses_struct:
+        if self.uses_struct or self.framed:
             modules.append("struct")
         if any(isinstance(x.decoding, m.Regex) for x in self.model.primitives.values()):
             modules.append("re")
         w.lines([f"import {name}" for name in sorted(modules)])
-        w.line("from collections.abc import Callable, Iterator, Mapping")
+        w.line(f"from collections.abc import Callable, Iterator, Mapping{', Sequence' if self.framed else ''}")
         typing = ["Any", "Protocol", "cast"] + (["TypeVar"] if "_clamp" in self.exprs.helpers else [])
         w.line(f"from typing import {', '.join(sorted(typing))}")
         w.blank(1)
@@ -413,6 +427,9 @@ class _Driver:
             _section(w, "port I/O: one exchange at a time on each port")
             w.blank(1)
             w.raw(_indent(support.ROBOT_IO))
+            if self.framed:
+                w.blank(1)
+                w.raw(_indent(support.ROBOT_FRAMED))
             w.blank(1)
             _section(w, "delivering to callbacks: one at a time, a failing one reported")
             w.blank(1)
@@ -474,23 +491,29 @@ class _Driver:
                 "method(self, *(fields[field] for field, _ in expected))",
             ])
         w.blank(1)
-        with w.block("def call_interface(self, name: str, /, *args: Any) -> None:"):
-            w.line('"""Run the interface `name` with positional arguments; errors are raised."""')
-            w.lines([
-                "entry = _INTERFACES.get(name)",
-                "if entry is None:",
-                '    raise KeyError(f"{ROBOT} has no interface named {name!r}")',
-                "if not self._running:",
-                "    raise self._not_running()",
-                "method, params = entry",
-                "if len(args) != len(params):",
-                '    raise TypeError(f"interface {name} takes {len(params)} arguments, {len(args)} given")',
-                "values = [",
-                '    _accept(value, kind, f"interface {name}: parameter {param}")',
-                "    for value, (param, kind) in zip(args, params)",
-                "]",
-                "method(self, *values)",
-            ])
+        for kind, table, doc in (
+            ("interface", "_INTERFACES", "Run the interface `name` with positional arguments; errors are raised."),
+            ("primitive", "_PRIMITIVES", "Send the device command (primitive) `name` with positional arguments, "
+             "read its reply\nand run its post-actions; errors are raised."),
+        ):
+            w.blank(1)
+            with w.block(f"def call_{kind}(self, name: str, /, *args: Any) -> None:"):
+                w.line(_docstring(doc))
+                w.lines([
+                    f"entry = {table}.get(name)",
+                    "if entry is None:",
+                    f'    raise KeyError(f"{{ROBOT}} has no {kind} named {{name!r}}")',
+                    "if not self._running:",
+                    "    raise self._not_running()",
+                    "method, params = entry",
+                    "if len(args) != len(params):",
+                    f'    raise TypeError(f"{kind} {{name}} takes {{len(params)}} arguments, {{len(args)}} given")',
+                    "values = [",
+                    f'    _accept(value, kind, f"{kind} {{name}}: parameter {{param}}")',
+                    "    for value, (param, kind) in zip(args, params)",
+                    "]",
+                    "method(self, *values)",
+                ])
 
     def input_method(self, w: Writer, i: m.DomainInput) -> None:
         adapter = self.model.adapters[i.adapter]
@@ -730,22 +753,21 @@ class _Driver:
                 request = "request"
             link = f"self._link_{prim.connection}, {quoted(prim.name)}"
             uses_reply = any(_reads_reply(a.value) for a in prim.actions)
+            if prim.frame is not None:
+                self.framed_exchange(w, prim, names, request, link, uses_reply)
+                if prim.actions:
+                    self.post_actions(w, prim, names)
+                return
             match prim.decoding:
                 case None:
                     w.line(f"self._send({link}, {request})")
-                case m.Unpack(format=fmt):
+                case m.Unpack():
                     exchange = f"self._exchange({link}, {request}, {const}_REPLY.size)"
                     if not uses_reply:
                         w.line(exchange)
                     else:
                         w.line(f"data = {exchange}")
-                        strings = tuple(i for i, slot in enumerate(formats.struct_layout(fmt).slots)
-                                        if slot.type is Type.STRING)
-                        if strings:
-                            self.exprs.helpers.add("_decoded")
-                            w.line(f"reply = _decoded({const}_REPLY.unpack(data), {strings!r})")
-                        else:
-                            w.line(f"reply = {const}_REPLY.unpack(data)")
+                        self.unpacked(w, prim, "data")
                 case m.Regex():
                     self.exprs.helpers.add("_match")
                     end = self.model.connections[prim.connection].terminator_bytes()
@@ -756,6 +778,65 @@ class _Driver:
                     _unreachable(prim.decoding)
             if prim.actions:
                 self.post_actions(w, prim, names)
+
+    def framed_exchange(self, w: Writer, prim: m.Primitive, names: Mapping[str, str], request: str, link: str,
+                        uses_reply: bool) -> None:
+        """The request framed, and the reply read through the frame (or as the decoding says)."""
+        assert prim.frame is not None
+        frame = self.model.frames[prim.frame.frame]
+        const, wire = self.codecs[prim.name], self.framed[frame.name]
+        bound = dict(zip((prm.name for prm in frame.params), prim.frame.args))
+        exprs = self.exprs
+        exprs.reads_state = False
+        values = [exprs.expr(_substituted(e, bound), names) for e in frame_fields(frame).values()]
+        if exprs.reads_state:
+            w.line("state = self._state")
+        with w.block("try:"):
+            w.line(f"fields = [{', '.join(lines(v, 1 << 20)[0] for v in values)}]")
+            w.line(f"request = {wire}.wrap({request}, fields)")
+        w.line("except (struct.error, *_EVAL_ERRORS) as err:")
+        w.line(f'    raise RdisValueError(f"{_identifier(prim.name)}: {{err}}") from err')
+        if not prim.expects_reply(self.model.frames):
+            w.line(f"self._send({link}, request)")
+            return
+        if not frame.reply:  # an unframed reply
+            match prim.decoding:
+                case m.Unpack():
+                    w.line(f"{'data = ' if uses_reply else ''}self._exchange({link}, request, {const}_REPLY.size)")
+                    if uses_reply:
+                        self.unpacked(w, prim, "data")
+                case m.Regex():
+                    self.exprs.helpers.add("_match")
+                    end = self.model.connections[prim.connection].terminator_bytes()
+                    until = "" if end == b"\n" else f", {end!r}"
+                    w.line(f"line = self._exchange_line({link}, request{until})")
+                    w.line(f"{'reply = ' if uses_reply else ''}_match({quoted(prim.name)}, {const}_REPLY, line)")
+            return
+        match prim.decoding:
+            case None:
+                w.line(f"self._exchange_frame({link}, request, {wire}, fields, 0)")
+            case m.Unpack():
+                w.line(f"{'data = ' if uses_reply else ''}self._exchange_frame("
+                       f"{link}, request, {wire}, fields, {const}_REPLY.size)")
+                if uses_reply:
+                    self.unpacked(w, prim, "data")
+            case m.Regex():
+                self.exprs.helpers.add("_match")
+                w.line(f"payload = self._exchange_frame({link}, request, {wire}, fields, -1)")
+                w.line(f"{'reply = ' if uses_reply else ''}_match({quoted(prim.name)}, {const}_REPLY, "
+                       f'payload.decode("latin-1"))')
+
+    def unpacked(self, w: Writer, prim: m.Primitive, data: str) -> None:
+        """`reply = ...`: the values of an `unpack` reply."""
+        assert isinstance(prim.decoding, m.Unpack)
+        const = self.codecs[prim.name]
+        strings = tuple(i for i, slot in enumerate(formats.struct_layout(prim.decoding.format).slots)
+                        if slot.type is Type.STRING)
+        if strings:
+            self.exprs.helpers.add("_decoded")
+            w.line(f"reply = _decoded({const}_REPLY.unpack({data}), {strings!r})")
+        else:
+            w.line(f"reply = {const}_REPLY.unpack({data})")
 
     def encode(self, w: Writer, prim: m.Primitive, names: Mapping[str, str]) -> None:
         """`request = ...`: the format arguments evaluated and encoded."""
@@ -824,6 +905,13 @@ class _Driver:
             w.line(f"    {quoted(iface.name)}: ({self.cls}._interface_{iface.name}, {params}),")
         w.line("}")
         w.line('"""Each interface: its method, and its parameters with their types."""')
+        w.blank(1)
+        w.line("_PRIMITIVES: dict[str, tuple[Callable[..., None], tuple[tuple[str, type], ...]]] = {")
+        for prim in self.model.primitives.values():
+            params = _tuple([f"({quoted(prm.name)}, {_PY_TYPES[prm.type]})" for prm in prim.params])
+            w.line(f"    {quoted(prim.name)}: ({self.cls}._primitive_{prim.name}, {params}),")
+        w.line("}")
+        w.line('"""Each primitive: its method, and its parameters with their types."""')
 
     def connect_function(self, w: Writer) -> None:
         w.blank(2)
@@ -983,6 +1071,50 @@ def _constant_request(prim: m.Primitive) -> bytes | None:
     except (struct.error, ValueError, TypeError):
         return None  # refused when it runs, every time, as the runtime refuses it
     return None
+
+
+def _substituted(e: m.Expr, bound: Mapping[str, m.Expr]) -> m.Expr:
+    """A frame's expression over its parameters, rewritten over the arguments they are bound to."""
+    match e:
+        case m.Var(scope=m.Scope.PARAM, name=name):
+            return bound[name]
+        case m.UnaryOp():
+            return dataclasses.replace(e, operand=_substituted(e.operand, bound))
+        case m.BinaryOp():
+            return dataclasses.replace(e, left=_substituted(e.left, bound), right=_substituted(e.right, bound))
+        case m.IfElse():
+            return dataclasses.replace(e, cond=_substituted(e.cond, bound), then=_substituted(e.then, bound),
+                                       orelse=_substituted(e.orelse, bound))
+        case m.FuncCall():
+            return dataclasses.replace(e, args=tuple(_substituted(a, bound) for a in e.args))
+    return e
+
+
+def _frame(frame: m.Frame) -> str:
+    """The constructor of a frame, as the framing module takes it."""
+    fields = {name: i for i, name in enumerate(frame_fields(frame))}
+    request = ", ".join(_frame_part(p, fields) for p in frame.request)
+    reply = ", ".join(_frame_part(p, fields) for p in frame.reply)
+    return f"Frame({quoted(frame.name)}, [{request}], [{reply}])"
+
+
+def _frame_part(part: m.FramePart, fields: Mapping[str, int]) -> str:
+    match part:
+        case m.FrameBytes(role=role, data=data):
+            return f"Bytes({quoted(role)}, {data.encode('latin-1')!r})"
+        case m.FrameField(name=name, format=fmt):
+            return f"Field({quoted(name)}, {quoted(fmt)}, {fields[name]})"
+        case m.FrameLength(format=fmt, adjust=adjust):
+            return f"Length({quoted(fmt)}, {adjust})"
+        case m.FramePayload():
+            return "Payload()"
+        case m.FrameChecksum(algorithm=a):
+            options = [f"{a.poly:#x}", f"{a.init:#x}", repr(a.reflect_in), repr(a.reflect_out), f"{a.xorout:#x}",
+                       repr(a.inverted), repr(a.mask)]
+            args = ", ".join([quoted(a.kind), str(a.width), *options])
+            fmt = quoted(part.format) if part.format is not None else "None"
+            return f"Check(Checksum({args}), {fmt}, {part.first}, {part.last}, {part.with_request!r})"
+    _unreachable(part)
 
 
 def _shown_args(prim: m.Primitive) -> str:

@@ -411,6 +411,38 @@ def _transfer(self, link: _Link, primitive: str, request: bytes, size: int, end:
                 self._notify_io("read", link.name, bytes(data))
     return bytes(data)'''
 
+ROBOT_FRAMED = '''\
+def _exchange_frame(self, link: _Link, primitive: str, request: bytes, frame: Frame, fields: list[int],
+                    size: int) -> bytes:
+    """Write a framed request and read its framed reply, as rdisc.runtime.framing does:
+    the payload (b"" for an acknowledgement). `size`: the payload's, or -1 if the frame says."""
+    written, data, payload = False, b"", b""
+    failed: FrameError | None = None
+    try:
+        with link.lock:
+            try:
+                link.port.reset_input_buffer()
+                link.port.write(request)
+                written = True
+                data, payload = frame.read(link.port, fields, request, size)
+            except FrameError as err:
+                failed = err
+            except Exception as err:  # whatever the port raises, it failed
+                raise _port_error(link, primitive, err, self.timeout) from err
+    finally:
+        if self._io_callbacks:
+            if written:
+                self._notify_io("write", link.name, request)
+            if data:
+                self._notify_io("read", link.name, data)
+    if failed is not None:
+        if failed.timeout:
+            raise RdisTimeout(f"{primitive}: no reply within {self.timeout:g} s")
+        raise RdisProtocolError(f"{primitive}: {failed}")
+    if size >= 0 and len(payload) != size and frame.reply.payload >= 0:
+        raise RdisProtocolError(f"{primitive}: expected {size} bytes, got {len(payload)}")
+    return payload'''
+
 ROBOT_DELIVERY = '''\
 def _deliver(self, output: str, contents: dict[str, Value]) -> None:
     message: dict[str, Any] = {"name": output, "contents": contents}
@@ -548,3 +580,13 @@ def _sleep(seconds: float | None) -> None:
             time.sleep(3600)
     elif seconds > 0:
         time.sleep(seconds)'''
+
+
+def framing() -> str:
+    """The text of rdisc.runtime.framing from its first definition on: the driver's copy."""
+    from pathlib import Path
+
+    from rdisc.runtime import framing as module
+
+    text = Path(module.__file__).read_text(encoding="utf-8")
+    return text[text.index("\nMAX_FRAME") + 1 :].rstrip("\n")

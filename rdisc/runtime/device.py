@@ -90,7 +90,6 @@ class _PrimitivePlan:
     codec: Codec
     actions: tuple[tuple[str, Prepared, m.Type], ...]
     frame: _FramePlan | None = None
-    timeout: float | None = None  # seconds, the reply's own
     expects_reply: bool = False
 
 
@@ -172,11 +171,10 @@ class Description:
             fields = [prepare(e, _slots(model_frame.params)) for e in frame_fields(model_frame).values()]
             frame = _FramePlan(_values([prepare(a, slots) for a in p.frame.args]), _values(fields),
                                wire_frame(model_frame), bool(model_frame.reply))
-        timeout = p.timeout_ms / 1000.0 if p.timeout_ms is not None else None
         return _PrimitivePlan(p.name, p.connection, _params(p.params), _float_slots(p.params),
                               _values([prepare(a, slots) for a in p.args]),
                               Codec(p, self.model.connections[p.connection].terminator_bytes()), actions,
-                              frame, timeout, p.expects_reply(self.model.frames))
+                              frame, p.expects_reply(self.model.frames))
 
     def _output(self, o: m.DomainOutput) -> _OutputPlan:
         adapter = self.model.adapters[o.adapter]
@@ -629,8 +627,6 @@ class Robot:
             except Exception as err:
                 raise RdisConnectionError(f"{plan.connection}: {err}") from err
             if expects_reply:
-                if plan.timeout is not None:
-                    io.timeout = plan.timeout
                 try:
                     if frame is not None and frame.reads:
                         size = codec.reply_size if codec.reply_size or not codec.expects_reply else -1
@@ -642,9 +638,6 @@ class Robot:
                     failed = err
                 except Exception as err:
                     raise RdisConnectionError(f"{plan.connection}: {err}") from err
-                finally:
-                    if plan.timeout is not None:
-                        io.timeout = self.timeout
         finally:
             lock.release()
         # I/O callbacks run once the port is free again: one that calls the robot
@@ -655,14 +648,14 @@ class Robot:
                 self._notify_io("read", plan.connection, data)
         if failed is not None:
             if failed.timeout:
-                raise RdisTimeout(f"{plan.name}: no reply within {plan.timeout or self.timeout:g} s")
+                raise RdisTimeout(f"{plan.name}: no reply within {self.timeout:g} s")
             raise RdisProtocolError(f"{plan.name}: {failed}")
         if not expects_reply or not codec.expects_reply:
             reply: tuple[m.Value, ...] = ()
         elif frame is not None and frame.reads:
             reply = codec.match_payload(payload) if codec.reads_line else codec.decode(payload)
         elif not data:
-            raise RdisTimeout(f"{plan.name}: no reply within {plan.timeout or self.timeout:g} s")
+            raise RdisTimeout(f"{plan.name}: no reply within {self.timeout:g} s")
         else:
             reply = codec.match(data) if codec.reads_line else codec.decode(data)
         if plan.actions:

@@ -357,14 +357,8 @@ class _Checker:
         connection = m.ConnectionRef(on.connection.text) if isinstance(on, ast.On) else m.ConnectionRef("")
         framed = self.once([c for c in decl.clauses if isinstance(c, ast.Framed)], "`frame`", name)
         frame = self.frame_use(framed, env, decl, encoding, decoding) if isinstance(framed, ast.Framed) else None
-        timeout_clause = self.once([c for c in decl.clauses if isinstance(c, ast.ReplyTimeout)], "`timeout`", name)
-        timeout = None
-        if isinstance(timeout_clause, ast.ReplyTimeout):
-            timeout = self.duration(timeout_clause.duration, "a timeout")
-            if timeout is not None and timeout <= 0:
-                self.d.report("E204", timeout_clause.span, "a timeout must be positive")
         return m.Primitive(name.text, params, connection, encoding, args, decoding, actions, decl.doc, decl.span,  # type: ignore[arg-type]
-                           frame, timeout)
+                           frame)
 
     def frame_use(self, clause: ast.Framed, env: Env, decl: ast.PrimitiveDecl, encoding, decoding) -> m.FrameUse | None:
         """`frame NAME(args)`: its arguments, and whether the frame can carry this primitive."""
@@ -374,6 +368,13 @@ class _Checker:
                          "frame", target.name if target else None)
         if frame is None:
             return None
+        bound = dict(zip((p.name for p in frame.params), zip(args, clause.args)))
+        for part in frame.request + frame.reply:
+            if isinstance(part, m.FrameField) and isinstance(part.value, m.Var) and part.value.name in bound:
+                arg, expr = bound[part.value.name]
+                slot = formats.struct_layout(part.format).slots[0]
+                self.fits(self.typer.constant(arg), slot, expr.span, f" of frame `{frame.name}`",
+                          f"field `{part.name}` is packed as `{slot.code}`, {slot.low} to {slot.high}")
         has_payload = any(isinstance(p, m.FramePayload) for p in frame.reply)
         if decoding is not None and frame.reply and not has_payload:
             self.d.report("E504", clause.span, f"primitive `{decl.name.text}` decodes a reply, but the reply of "

@@ -298,7 +298,6 @@ class Primitive:
     doc: str | None = None
     span: Span | None = _span
     frame: FrameUse | None = None
-    timeout_ms: float | None = None  # the reply's, instead of the connection's
 
     def expects_reply(self, frames: dict[str, Frame]) -> bool:
         """A reply is read when there is one to decode, or when the frame's reply

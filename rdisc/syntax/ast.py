@@ -266,15 +266,7 @@ class Framed:
     span: Span = _span
 
 
-@dataclass(frozen=True, slots=True)
-class ReplyTimeout:
-    """`timeout D`: how long the reply may take, instead of the connection's."""
-
-    duration: Duration
-    span: Span = _span
-
-
-PrimitiveClause = On | Encoding | Decoding | Actions | Framed | ReplyTimeout
+PrimitiveClause = On | Encoding | Decoding | Actions | Framed
 
 
 @dataclass(frozen=True, slots=True)

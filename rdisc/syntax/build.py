@@ -280,9 +280,6 @@ def _transformer_class():
         def framed(self, meta, c):
             return ast.Framed(self.b.ident(c[0]), c[1] or (), self.b.span(meta))
 
-        def reply_timeout(self, meta, c):
-            return ast.ReplyTimeout(c[0], self.b.span(meta))
-
         def const_decl(self, meta, c):
             return ast.ConstDecl(self.b.ident(c[0]), c[1], self.b.span(meta), self.b.doc(meta))
 
@@ -325,7 +322,7 @@ def _transformer_class():
 
         def f_checksum(self, meta, c):
             algorithm, encoding, *options = c
-            fmt = None if str(encoding) == "hex" and encoding.type == "HEX" else self.b.string(encoding)
+            fmt = None if encoding == "hex" else self.b.string(encoding)
             return ast.FrameChecksum(self.b.string(algorithm), fmt, tuple(options), self.b.span(meta))
 
         def c_inverted(self, meta, c):
@@ -374,6 +371,7 @@ def _transformer_class():
             return str(c[0])
 
         robot_key = hook_event = encoding_kind = decoding_kind = kind_word = time_unit = _word
+        check_word = hex_word = _word
 
         # -- expressions --
 

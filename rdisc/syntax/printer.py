@@ -49,6 +49,8 @@ def _expr(e: ast.Expr) -> p.Printed:
             return p.conditional(_expr(then), _expr(cond), _expr(orelse))
         case ast.CallExpr(func, args):
             return p.call(func.text, [_expr(a) for a in args])
+        case ast.Member(enum, member):
+            return p.Printed(f"{enum.text}.{member.text}", p.ATOM)
         case _:
             _unreachable(e)
 
@@ -89,8 +91,44 @@ def _code(d: ast.Decl) -> list[str]:
             return _call_lines(f"input {name.text}: {adapter.text} -> ", call, "", 0)
         case ast.OutputDecl(name, adapter, fields):
             return _block(f"output {name.text}: {adapter.text}", [_assign(a) for a in fields])
+        case ast.ConstDecl(name, value):
+            return [f"const {name.text} = {print_expr(value)}"]
+        case ast.EnumDecl(name, members):
+            return _block(f"enum {name.text}", [f"{m.name.text} = {print_expr(m.value)}," for m in members])
+        case ast.FrameDecl(name, params, items):
+            head = f"frame {name.text}" + (f"({_params(params)})" if params else "")
+            lines: list[str] = []
+            for item in items:
+                if isinstance(item, ast.FrameSide):
+                    lines += _block(item.side, [_frame_part(part) for part in item.parts])
+                else:
+                    lines.append(_frame_part(item))
+            return _block(head, lines)
         case _:
             _unreachable(d)
+
+
+def _frame_part(part: ast.FramePart) -> str:
+    match part:
+        case ast.FrameBytes(role, value):
+            return f"{role} {p.quote(value.value)}"
+        case ast.FrameField(name, fmt, value):
+            return f"field {name.text} {p.quote(fmt.value)} = {print_expr(value)}"
+        case ast.FrameLength(fmt, adjust):
+            return f"length {p.quote(fmt.value)} = payload" + (f" {'-' if adjust < 0 else '+'} {abs(adjust)}"
+                                                             if adjust else "")
+        case ast.FramePayload():
+            return "payload"
+        case ast.FrameChecksum(algorithm, fmt, options):
+            words = [f"checksum {p.quote(algorithm.value)} {'hex' if fmt is None else p.quote(fmt.value)}"]
+            for o in options:
+                if o.word == "over":
+                    words.append("over " + " .. ".join(i.text for i in o.over))
+                else:
+                    words.append(o.word if o.value is None else f"{o.word} {print_expr(o.value)}")
+            return " ".join(words)
+        case _:
+            _unreachable(part)
 
 
 def _doc(doc: str | None) -> list[str]:
@@ -143,6 +181,8 @@ def _connection_attr(a: ast.ConnectionAttr) -> str:
             return f"{event} {_call(call)}" + ("" if every is None else f" every {_duration(every)}")
         case ast.Terminator(value):
             return f"terminator {p.quote(value.value)}"
+        case ast.Address(value):
+            return f"address {p.quote(value.value)}"
         case _:
             _unreachable(a)
 
@@ -192,6 +232,8 @@ def _primitive_clause(c: ast.PrimitiveClause) -> tuple[list[str], bool]:
             return [f"{kind} {_template(template)} ({_args(args)})"], False
         case ast.Decoding(kind, template):
             return [f"{kind} {_template(template)}"], False
+        case ast.Framed(frame, args):
+            return [f"frame {frame.text}({_args(args)})"], False
         case ast.Actions(()):
             return ["{}"], True
         case ast.Actions((assign,)):

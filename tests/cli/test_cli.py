@@ -53,10 +53,10 @@ def test_clean_description_exits_0_silently(rdisc, example: str) -> None:
 
 
 def test_only_warnings_exit_0(rdisc, tmp_path: Path) -> None:
-    path = write(tmp_path, "warn.rdis", CLEAN + 'primitive beep() on link pack "B" (7)\n')
+    path = write(tmp_path, "warn.rdis", CLEAN + 'state spare: int = 0\n')
     result = rdisc("check", path)
     assert result.returncode == 0
-    assert "warning[W101]: primitive `beep` is never called" in result.stderr
+    assert "warning[W103]: state variable `spare` is never read" in result.stderr
     assert result.stderr.rstrip().endswith("1 warning emitted")
 
 
@@ -165,7 +165,7 @@ def test_long_verbose_flag_is_the_same(rdisc) -> None:
 
 
 def test_json_of_several_files_is_one_array(rdisc) -> None:
-    files = [CREATE, "tests/golden/diagnostics/E101.rdis", "tests/golden/diagnostics/W101.rdis", KOALA]
+    files = [CREATE, "tests/golden/diagnostics/E101.rdis", "tests/golden/diagnostics/W103.rdis", KOALA]
     result = rdisc("check", "--format", "json", *files)
     assert result.returncode == 1
     assert result.stderr == ""
@@ -173,7 +173,7 @@ def test_json_of_several_files_is_one_array(rdisc) -> None:
     assert isinstance(items, list)
     assert [(i["file"], i["code"]) for i in items] == [
         ("tests/golden/diagnostics/E101.rdis", "E101"),
-        ("tests/golden/diagnostics/W101.rdis", "W101"),
+        ("tests/golden/diagnostics/W103.rdis", "W103"),
     ]
 
 

@@ -51,7 +51,7 @@ CASES = [
     Case("dunder-import-dq", "expr", '__import__("os")', "E002"),
     Case("builtins", "expr", "__builtins__", "E002"),
     Case("leading-underscore", "expr", "_x + 1", "E002"),
-    Case("attribute", "expr", "x.real", "E002"),
+    Case("attribute", "expr", "x.real", "E102"),  # read as an enum member: no enum `x`
     Case("attribute-chain", "expr", "x.__class__.__mro__", "E002"),
     Case("conditional-escape", "expr", "x if True else __import__('os')", "E002"),
     # -- functions that are not built-ins of RDIS --------------------------------------------

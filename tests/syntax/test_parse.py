@@ -82,7 +82,7 @@ def test_a_syntax_error_costs_only_its_declaration() -> None:
 
 def test_errors_say_what_was_expected_in_words() -> None:
     assert rendered("connection c: serial { baud 9600 speed 3 }\n") == """\
-error[E001]: expected `baud`, `keepalive`, a closing `}`, `startup`, `terminate`, `terminator` or `threading`, found `speed`
+error[E001]: expected `address`, `baud`, `keepalive`, a closing `}`, `startup`, `terminate`, `terminator` or `threading`, found `speed`
  --> t.rdis:1:34
   |
 1 | connection c: serial { baud 9600 speed 3 }
@@ -115,7 +115,7 @@ def test_end_of_file_errors_are_placed_at_the_end() -> None:
     [
         ('state s: string = "abc\n', "E002", "unterminated string"),
         ("state s: int = __import__\n", "E002", "names cannot start with `_`"),
-        ("state s: int = a.b\n", "E002", "unexpected character `.`"),
+        ("state s: int = a@b\n", "E002", "unexpected character `@`"),
         ('state s: string = "a\\q"\n', "E003", "unknown escape `\\q` in a string"),
         ("state s: int = 0099\n", "E004", "invalid integer literal `0099`"),
         ("state s: int = " + "9" * 80 + "\n", "E004", "invalid integer literal `999999999999999999999...`"),

@@ -442,6 +442,24 @@ class IrobotCreate:
         ]
         method(self, *values)
 
+    def call_primitive(self, name: str, /, *args: Any) -> None:
+        """Send the device command (primitive) `name` with positional arguments, read its reply
+        and run its post-actions; errors are raised.
+        """
+        entry = _PRIMITIVES.get(name)
+        if entry is None:
+            raise KeyError(f"{ROBOT} has no primitive named {name!r}")
+        if not self._running:
+            raise self._not_running()
+        method, params = entry
+        if len(args) != len(params):
+            raise TypeError(f"primitive {name} takes {len(params)} arguments, {len(args)} given")
+        values = [
+            _accept(value, kind, f"primitive {name}: parameter {param}")
+            for value, (param, kind) in zip(args, params)
+        ]
+        method(self, *values)
+
     # ---- connections: opening, hooks, ticks, closing ---------------------------------------------
 
     def open(self, port: PortSpec, *, threads: bool = True) -> None:
@@ -763,6 +781,14 @@ _INTERFACES: dict[str, tuple[Callable[..., None], tuple[tuple[str, type], ...]]]
     "get_bumpers": (IrobotCreate._interface_get_bumpers, ()),
 }
 """Each interface: its method, and its parameters with their types."""
+
+_PRIMITIVES: dict[str, tuple[Callable[..., None], tuple[tuple[str, type], ...]]] = {
+    "start": (IrobotCreate._primitive_start, ()),
+    "full": (IrobotCreate._primitive_full, ()),
+    "drive": (IrobotCreate._primitive_drive, (("velocity", int), ("radius", int))),
+    "bumpers": (IrobotCreate._primitive_bumpers, ()),
+}
+"""Each primitive: its method, and its parameters with their types."""
 
 
 def connect(

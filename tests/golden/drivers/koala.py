@@ -528,6 +528,24 @@ class Koala:
         ]
         method(self, *values)
 
+    def call_primitive(self, name: str, /, *args: Any) -> None:
+        """Send the device command (primitive) `name` with positional arguments, read its reply
+        and run its post-actions; errors are raised.
+        """
+        entry = _PRIMITIVES.get(name)
+        if entry is None:
+            raise KeyError(f"{ROBOT} has no primitive named {name!r}")
+        if not self._running:
+            raise self._not_running()
+        method, params = entry
+        if len(args) != len(params):
+            raise TypeError(f"primitive {name} takes {len(params)} arguments, {len(args)} given")
+        values = [
+            _accept(value, kind, f"primitive {name}: parameter {param}")
+            for value, (param, kind) in zip(args, params)
+        ]
+        method(self, *values)
+
     # ---- connections: opening, hooks, ticks, closing ---------------------------------------------
 
     def open(self, port: PortSpec, *, threads: bool = True) -> None:
@@ -1043,6 +1061,15 @@ _INTERFACES: dict[str, tuple[Callable[..., None], tuple[tuple[str, type], ...]]]
     "update_proximity": (Koala._interface_update_proximity, ()),
 }
 """Each interface: its method, and its parameters with their types."""
+
+_PRIMITIVES: dict[str, tuple[Callable[..., None], tuple[tuple[str, type], ...]]] = {
+    "set_speed": (Koala._primitive_set_speed, (("left", int), ("right", int))),
+    "read_speed": (Koala._primitive_read_speed, ()),
+    "set_position": (Koala._primitive_set_position, (("left", int), ("right", int))),
+    "read_position": (Koala._primitive_read_position, ()),
+    "read_proximity": (Koala._primitive_read_proximity, ()),
+}
+"""Each primitive: its method, and its parameters with their types."""
 
 
 def connect(
