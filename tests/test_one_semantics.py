@@ -31,6 +31,7 @@ EXAMPLES = [
     "examples/koala.rdis",
     "tests/runtime/data/fast_create.rdis",
     "tests/runtime/data/cr_device.rdis",  # reply lines end in "\r"
+    "tests/runtime/data/framed_servo.rdis",  # frames: length, sums, CRCs, acknowledgements, resync
 ]
 
 
@@ -99,7 +100,33 @@ _LINES = st.sampled_from([
 _PROXIMITY = st.lists(st.integers(0, 1023), min_size=16, max_size=16).map(
     lambda v: b"n," + b",".join(str(x).encode() for x in v) + b"\r\n"
 )
-_CHUNK = st.one_of(st.binary(min_size=0, max_size=4), _LINES, _PROXIMITY, st.just(b"\x00"), st.just(b"\x03"))
+
+
+def _status(fields: tuple[int, bytes, bool]) -> bytes:
+    """A Dynamixel status frame from servo `ident`, its checksum right or spoilt."""
+    ident, payload, spoilt = fields
+    body = bytes([ident, len(payload) + 1]) + payload
+    return b"\xff\xff" + body + bytes([(~sum(body) & 0xFF) ^ spoilt])
+
+
+def _crc_reply(fields: tuple[bytes, bool]) -> bytes:
+    """A reply to `80 10` with its CRC-16/XMODEM over the request and the data, right or spoilt."""
+    data, spoilt = fields
+    crc = 0
+    for byte in b"\x80\x10" + data:
+        crc ^= byte << 8
+        for _ in range(8):
+            crc = ((crc << 1) ^ 0x1021 if crc & 0x8000 else crc << 1) & 0xFFFF
+    return data + (crc ^ spoilt).to_bytes(2, "big")
+
+
+_FRAMES = st.one_of(
+    st.tuples(st.sampled_from([1, 1, 1, 2]), st.binary(min_size=0, max_size=4), st.booleans()).map(_status),
+    st.tuples(st.binary(min_size=4, max_size=4), st.booleans()).map(_crc_reply),
+    st.just(b"\xff"),
+)
+_CHUNK = st.one_of(st.binary(min_size=0, max_size=4), _LINES, _PROXIMITY, st.just(b"\x00"), st.just(b"\x03"),
+                   _FRAMES)
 _SCRIPT = st.lists(_CHUNK, max_size=40).map(b"".join)
 _NUMBER = st.one_of(
     st.floats(-3.0, 3.0, allow_nan=False),

@@ -20,7 +20,7 @@ from rdisc.semantics import model as m
 from rdisc.semantics.model import Type
 from rdisc.syntax import precedence as p
 
-_CONNECTION_GROUPS = {"serial": "spp"}  # the thesis lists serial connections under "spp"
+_CONNECTION_GROUPS = {"serial": "spp", "tcp": "tcp"}  # the thesis lists serial connections under "spp"
 
 JsonObject = dict[str, Any]
 
@@ -41,8 +41,11 @@ def _document(model: m.Model) -> JsonObject:
         ("description", robot.description),
         ("version", robot.version),
         ("doc", robot.doc),
+        ("constants", dict(model.constants) or None),
+        ("enums", dict(model.enums) or None),
         ("stateVariables", [_state(s) for s in model.states.values()]),
         ("connections", connections),
+        ("frames", [_frame(f) for f in model.frames.values()] or None),
         ("primitives", [_primitive(x) for x in model.primitives.values()]),
         ("interfaces", [_interface(i) for i in model.interfaces.values()]),
         ("domainAdapters", adapters or None),
@@ -93,6 +96,7 @@ def _connection(c: m.Connection) -> JsonObject:
         ("terminate", _hook(c.terminate)),
         ("keepalive", keepalive),
         ("terminator", None if c.terminator == "\n" else c.terminator),
+        ("address", c.address),
         ("doc", c.doc),
     )
 
@@ -124,9 +128,46 @@ def _primitive(x: m.Primitive) -> JsonObject:
         encoding,
         ("formatArgs", [_embedded(a) for a in x.args]),
         decoding,
+        ("frame", None if x.frame is None else {"name": x.frame.frame,
+                                                 "arguments": [_embedded(a) for a in x.frame.args]}),
         ("postActions", actions or None),
         ("doc", x.doc),
     )
+
+
+def _frame(f: m.Frame) -> JsonObject:
+    return _object(
+        ("name", f.name),
+        ("parameters", [param.name for param in f.params]),
+        ("parameterTypes", [param.type.value for param in f.params]),
+        ("request", [_frame_part(part) for part in f.request]),
+        ("reply", [_frame_part(part) for part in f.reply]),
+        ("doc", f.doc),
+    )
+
+
+def _frame_part(part: m.FramePart) -> JsonObject:
+    match part:
+        case m.FrameBytes(role, data):
+            return {role: data}
+        case m.FrameField(name, fmt, value):
+            return {"field": name, "format": fmt, "value": _embedded(value)}
+        case m.FrameLength(fmt, adjust):
+            return {"length": fmt, "adjust": adjust}
+        case m.FramePayload():
+            return {"payload": True}
+        case m.FrameChecksum(a, fmt, first, last, with_request):
+            return _object(
+                ("checksum", a.name), ("kind", a.kind), ("width", a.width),
+                ("poly", a.poly if a.kind == "crc" else None), ("init", a.init if a.kind == "crc" else None),
+                ("reflectIn", a.reflect_in if a.kind == "crc" else None),
+                ("reflectOut", a.reflect_out if a.kind == "crc" else None),
+                ("xorOut", a.xorout if a.kind == "crc" else None), ("inverted", a.inverted or None),
+                ("mask", a.mask), ("format", fmt if fmt is not None else "hex"), ("covers", [first, last]),
+                ("withRequest", with_request or None),
+            )
+        case _:
+            _unreachable(part)
 
 
 def _interface(i: m.Interface) -> JsonObject:
@@ -185,8 +226,12 @@ def _embedded(e: m.Expr) -> str:
     return f"<{_text(e)}>"
 
 
-def _text(e: m.Expr) -> str:
+def expression_text(e: m.Expr) -> str:
+    """An expression of the Model as RDIS source text."""
     return _expr(e).text
+
+
+_text = expression_text
 
 
 def _expr(e: m.Expr) -> p.Printed:

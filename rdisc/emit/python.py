@@ -493,8 +493,8 @@ class _Driver:
         w.blank(1)
         for kind, table, doc in (
             ("interface", "_INTERFACES", "Run the interface `name` with positional arguments; errors are raised."),
-            ("primitive", "_PRIMITIVES", "Send the device command (primitive) `name` with positional arguments, "
-             "read its reply\nand run its post-actions; errors are raised."),
+            ("primitive", "_PRIMITIVES", ("Send the device command (primitive) `name` with positional arguments, "
+                                          "read its reply\nand run its post-actions; errors are raised.")),
         ):
             w.blank(1)
             with w.block(f"def call_{kind}(self, name: str, /, *args: Any) -> None:"):

@@ -30,6 +30,7 @@ from rdisc.runtime.errors import (
     RdisConnectionError,
     RdisError,
     RdisLoadError,
+    RdisProtocolError,
     RdisTimeout,
     RdisValueError,
 )

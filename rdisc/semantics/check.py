@@ -10,8 +10,8 @@ from __future__ import annotations
 
 from rdisc.diagnostics import Diagnostics, Label, abbreviate
 from rdisc.semantics import formats
-from rdisc.semantics.frames import FrameRules, length_range, payload_end_known
 from rdisc.semantics import model as m
+from rdisc.semantics.frames import FrameRules, length_range, payload_end_known
 from rdisc.semantics.model import Scope, Type
 from rdisc.semantics.operators import shown
 from rdisc.semantics.resolve import Symbols, Unit, check_name, suggest

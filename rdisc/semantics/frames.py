@@ -140,9 +140,9 @@ class FrameRules:
         if value.type is not None and value.type is not Type.INT:
             d.report("E401", part.value.span, f"field `{part.name.text}` takes an int")
         constant = self.typer.constant(value)
-        if slot is not None and isinstance(constant, int) and slot.low is not None:
-            if not slot.low <= constant <= slot.high:  # type: ignore[operator]
-                d.report("E403", part.value.span, f"{constant} does not fit `{part.format.value}`")
+        if (slot is not None and isinstance(constant, int) and slot.low is not None
+                and not slot.low <= constant <= slot.high):  # type: ignore[operator]
+            d.report("E403", part.value.span, f"{constant} does not fit `{part.format.value}`")
         fields.setdefault(part.name.text, len(fields))
         return m.FrameField(part.name.text, part.format.value, value)
 

@@ -299,7 +299,7 @@ def _transformer_class():
         def reply_side(self, meta, c):
             return ast.FrameSide("reply", tuple(c), self.b.span(meta))
 
-        def _bytes(role):  # noqa: N805 - a factory of transformer methods
+        def _bytes(role):
             def part(self, meta, c):
                 return ast.FrameBytes(role, self.b.string(c[0]), self.b.span(meta))
             return part

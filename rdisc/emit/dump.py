@@ -1,0 +1,128 @@
+"""`rdisc dump`: each primitive's wire layout as a byte table, to hold against the
+device's manual: offset, size and meaning of every part of the request and the
+reply, frames included. Sizes that depend on the values (text) show as `n`.
+"""
+
+from __future__ import annotations
+
+from rdisc.emit.canonical import expression_text
+from rdisc.semantics import formats
+from rdisc.semantics import model as m
+
+
+def dump(model: m.Model) -> str:
+    blocks = [_primitive(model, p) for p in model.primitives.values()]
+    return "\n".join(blocks)
+
+
+def _primitive(model: m.Model, p: m.Primitive) -> str:
+    params = ", ".join(f"{x.name}: {x.type.value}" for x in p.params)
+    head = f"primitive {p.name}({params}) on {p.connection}"
+    frame = model.frames[p.frame.frame] if p.frame is not None else None
+    if p.frame is not None:
+        head += f", frame {p.frame.frame}({', '.join(expression_text(a) for a in p.frame.args)})"
+    lines = [head]
+    request = _payload_rows(p.encoding, p.args)
+    lines += _side("request", frame.request if frame else None, request)
+    if p.expects_reply(model.frames):
+        reply = _reply_rows(p.decoding)
+        framed = frame.reply if frame and frame.reply else None
+        lines += _side("reply", framed, reply)
+    else:
+        lines.append("  reply: none")
+    return "\n".join(lines) + "\n"
+
+
+Row = tuple[int | None, str, str]  # size (None: varies), what, detail
+
+
+_KINDS = {"b": "s8", "B": "u8", "h": "s16", "H": "u16", "i": "s32", "I": "u32", "l": "s32", "L": "u32",
+          "q": "s64", "Q": "u64", "e": "f16", "f": "f32", "d": "f64", "?": "bool", "c": "char"}
+
+
+def _kind(fmt: str, code: str) -> str:
+    """`s16 BE`, `u8`, `text`: what a struct code holds, with its byte order when it has one."""
+    size = formats.struct_layout(_code_format(fmt, code)).size
+    kind = _KINDS.get(code[-1], "text")
+    if size == 1 or kind == "text":
+        return kind
+    return kind + {">": " BE", "!": " BE", "<": " LE"}.get(fmt[:1], " native")
+
+
+def _payload_rows(encoding: m.Pack | m.Format, args: tuple[m.Expr, ...]) -> list[Row]:
+    match encoding:
+        case m.Pack(format=fmt):
+            slots = formats.struct_layout(fmt).slots
+            return [(formats.struct_layout(_code_format(fmt, s.code)).size, _kind(fmt, s.code),
+                     expression_text(a)) for s, a in zip(slots, args)]
+        case m.Format(template=template):
+            shown = ", ".join(expression_text(a) for a in args)
+            return [(None, "text", f'"{template}"' + (f" ({shown})" if shown else ""))]
+    raise AssertionError(encoding)
+
+
+def _code_format(fmt: str, code: str) -> str:
+    prefix = fmt[:1] if fmt[:1] in "@=<>!" else "<"
+    return prefix + code
+
+
+def _reply_rows(decoding: m.Unpack | m.Regex | None) -> list[Row]:
+    match decoding:
+        case m.Unpack(format=fmt):
+            slots = formats.struct_layout(fmt).slots
+            return [(formats.struct_layout(_code_format(fmt, s.code)).size, _kind(fmt, s.code), f"out[{i}]")
+                    for i, s in enumerate(slots)]
+        case m.Regex(pattern=pattern):
+            return [(None, "text", f"regex {pattern!r}")]
+        case None:
+            return []
+    raise AssertionError(decoding)
+
+
+def _side(name: str, parts: tuple[m.FramePart, ...] | None, payload: list[Row]) -> list[str]:
+    rows: list[Row] = []
+    if parts is None:
+        rows = payload
+    else:
+        for part in parts:
+            match part:
+                case m.FrameBytes(role=role, data=data):
+                    rows.append((len(data), role, " ".join(f"{ord(c):02X}" for c in data)))
+                case m.FrameField(name=field, format=fmt, value=value):
+                    rows.append((formats.struct_layout(fmt).size, f"field {field}",
+                                 f'"{fmt}" = {expression_text(value)}'))
+                case m.FrameLength(format=fmt, adjust=adjust):
+                    sign = f" {'+' if adjust >= 0 else '-'} {abs(adjust)}" if adjust else ""
+                    rows.append((formats.struct_layout(fmt).size, "length", f'"{fmt}" = payload{sign}'))
+                case m.FramePayload():
+                    rows += [(size, f"payload {what}", detail) for size, what, detail in payload] or [
+                        (0, "payload", "(empty)")]
+                case m.FrameChecksum(algorithm=a, format=fmt, first=first, last=last, with_request=req):
+                    size = formats.struct_layout(fmt).size if fmt else (a.width + 3) // 4
+                    covers = " .. ".join(dict.fromkeys([_name(parts[first]), _name(parts[last])]))
+                    covers = ("the request .. " if req else "") + covers
+                    extras = " inverted" if a.inverted else ""
+                    extras += f" mask {a.mask:#x}" if a.mask is not None else ""
+                    rows.append((size, "checksum", f"{a.name}{extras} as {fmt or 'hex'}, over {covers}"))
+    total = sum(size for size, _, _ in rows if size is not None)
+    varies = any(size is None for size, _, _ in rows)
+    out = [f"  {name}: {total}{'+n' if varies else ''} byte{'' if total == 1 and not varies else 's'}"]
+    offset: int | None = 0
+    for size, what, detail in rows:
+        at = f"{offset:>4}" if offset is not None else "   ?"
+        out.append(f"  {at}  {size if size is not None else 'n':>3}  {what:<20} {detail}")
+        offset = offset + size if offset is not None and size is not None else None
+    return out
+
+
+def _name(part: m.FramePart) -> str:
+    match part:
+        case m.FrameBytes(role=role):
+            return role
+        case m.FrameField(name=name):
+            return name
+        case m.FrameLength():
+            return "length"
+        case m.FramePayload():
+            return "payload"
+    return "checksum"

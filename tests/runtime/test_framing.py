@@ -1,0 +1,101 @@
+"""The framing module on its own: the checksum catalogue against its published
+check values, and frames written and read back, garbage and faults included."""
+
+from __future__ import annotations
+
+import io
+
+import pytest
+
+from rdisc.runtime.codec import checksum
+from rdisc.runtime.framing import Bytes, Check, Checksum, Field, Frame, FrameError, Length, Payload
+from rdisc.semantics import model as m
+from rdisc.semantics.frames import CATALOGUE
+
+# The check value of each catalogue CRC: its result over b"123456789" (CRC RevEng catalogue).
+CHECK_VALUES = {
+    "crc8": 0xF4, "crc8-maxim": 0xA1, "crc8-dvb-s2": 0xBC, "crc16-xmodem": 0x31C3, "crc16-ccitt-false": 0x29B1,
+    "crc16-kermit": 0x2189, "crc16-modbus": 0x4B37, "crc16-arc": 0xBB3D, "crc16-x25": 0x906E,
+    "crc32": 0xCBF43926, "crc32c": 0xE3069283,
+}
+
+
+@pytest.mark.parametrize("name", sorted(CATALOGUE))
+def test_catalogue_crcs_give_their_check_values(name: str) -> None:
+    width, poly, init, reflect, xorout = CATALOGUE[name]
+    crc = checksum(m.ChecksumAlgorithm("crc", width, poly, init, reflect, reflect, xorout))
+    assert crc(b"123456789") == CHECK_VALUES[name]
+
+
+def test_sums_and_xor() -> None:
+    assert Checksum("sum", 8, inverted=True)(bytes([1, 4, 2, 0x1E, 0, 2])) == 0xD8  # a Dynamixel write
+    assert Checksum("sum", 8, mask=0x7F)(bytes([0x80, 0x00, 0x7F])) == 0x7F
+    assert Checksum("xor", 8)(b"GPGLL,4916.45,N,12311.12,W,225444,A,") == 0x1D  # NMEA's textbook sentence
+
+
+DXL = Frame("dxl", [Bytes("header", b"\xff\xff"), Field("id", "B", 0), Length("B", 1), Payload(),
+                    Check(Checksum("sum", 8, inverted=True), "B", 1, 3)],
+            [Bytes("header", b"\xff\xff"), Field("id", "B", 0), Length("B", 1), Payload(),
+             Check(Checksum("sum", 8, inverted=True), "B", 1, 3)])
+
+
+class Port(io.BytesIO):
+    def read_until(self, expected: bytes = b"\n", size: int | None = None) -> bytes:
+        out = bytearray()
+        while not out.endswith(expected) and (size is None or len(out) < size):
+            byte = self.read(1)
+            if not byte:
+                break
+            out += byte
+        return bytes(out)
+
+
+def test_dynamixel_request_is_the_manuals() -> None:
+    # Write goal position 512 to servo 1: FF FF 01 05 03 1E 00 02 D6 (AX-12 manual's example form).
+    assert DXL.wrap(bytes([3, 0x1E, 0x00, 0x02]), [1]) == bytes.fromhex("ffff0105031e0002d6")
+
+
+def test_reply_after_garbage_is_found() -> None:
+    body = bytes([1, 3, 0, 0x20])
+    reply = bytes.fromhex("00ff12") + b"\xff\xff" + body + bytes([~sum(body) & 0xFF])
+    raw, payload = DXL.read(Port(reply), [1], b"", -1)
+    assert payload == bytes([0, 0x20])
+    assert raw == reply[3:]
+
+
+@pytest.mark.parametrize(("reply", "message"), [
+    (b"\xff\xff\x01\x02\x00\x00", "checksum"),
+    (b"\xff\xff\x02\x02\x00\xfb", "reply id is 2, expected 1"),
+    (b"\xff\xff\x01\x05\x00", "short reply"),
+    (b"\x00" * 20, "no header"),
+])
+def test_faults_are_frame_errors(reply: bytes, message: str) -> None:
+    with pytest.raises(FrameError, match=message) as caught:
+        DXL.read(Port(reply), [1], b"", -1)
+    assert not caught.value.timeout
+
+
+def test_nothing_at_all_is_a_timeout() -> None:
+    with pytest.raises(FrameError) as caught:
+        DXL.read(Port(b""), [1], b"", -1)
+    assert caught.value.timeout
+
+
+def test_reply_checksum_over_the_request_and_a_delimited_payload() -> None:
+    crc = Checksum("crc", 16, 0x1021)
+    frame = Frame("version", [Field("address", "B", 0), Payload()],
+                  [Payload(), Bytes("literal", b"\n\x00"), Check(crc, ">H", 0, 1, with_request=True)])
+    request = frame.wrap(b"\x15", [0x80])
+    text = b"USB Roboclaw 2x7a v4.1.34"
+    reply = text + b"\n\x00" + crc(request + text + b"\n\x00").to_bytes(2, "big")
+    assert frame.read(Port(reply), [0x80], request, -1)[1] == text
+    spoilt = reply[:-1] + bytes([reply[-1] ^ 1])
+    with pytest.raises(FrameError, match="checksum"):
+        frame.read(Port(spoilt), [0x80], request, -1)
+
+
+def test_hex_checksum_and_terminator() -> None:
+    frame = Frame("nmea", [Bytes("header", b"$"), Payload(), Bytes("literal", b"*"),
+                           Check(Checksum("xor", 8), None, 1, 1), Bytes("terminator", b"\r\n")], [])
+    sentence = b"GPGLL,4916.45,N,12311.12,W,225444,A,"
+    assert frame.wrap(sentence, []) == b"$" + sentence + b"*1D\r\n"
