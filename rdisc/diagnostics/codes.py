@@ -180,7 +180,9 @@ field's value must fit its format."""),
     ("W102", "untriggered-output", """
 No interface triggers this output, so it is never delivered."""),
     ("W103", "unread-state", """
-The state variable is never read by any expression."""),
+The state variable is never read by any expression and never written by a
+post-action: nothing uses it. (State that post-actions write is the host's to
+read, through `robot.state`, even when no expression reads it.)"""),
     ("W104", "unused-interface", """
 The interface is not periodic and is called by no input and no hook."""),
     ("W201", "nonstandard-baud", """

@@ -282,12 +282,14 @@ def _kind(v: JValue) -> str:
 # ---- the description ----------------------------------------------------------------------
 
 _TOP = (
-    "name", "author", "description", "version", "doc", "stateVariables", "connections", "primitives",
-    "interfaces", "domainAdapters", "domainInterfaces", "domainOutputs",
+    "name", "author", "description", "version", "doc", "constants", "enums", "stateVariables", "connections",
+    "frames", "primitives", "interfaces", "domainAdapters", "domainInterfaces", "domainOutputs",
 )  # fmt: skip
 _SECTIONS = {  # list member: (its elements in words, the RDIS keyword declaring one)
     "stateVariables": ("a state variable", "state"),
     "spp": ("a connection", "connection"),
+    "tcp": ("a connection", "connection"),
+    "frames": ("a frame", "frame"),
     "primitives": ("a primitive", "primitive"),
     "interfaces": ("an interface", "interface"),
     "domainAdapters": ("an adapter", "adapter"),
@@ -295,11 +297,19 @@ _SECTIONS = {  # list member: (its elements in words, the RDIS keyword declaring
     "domainOutputs": ("a domain output", "output"),
 }
 _STATE = ("name", "type", "value", "doc")
-_CONNECTION = ("name", "baud", "singleThreading", "startup", "terminate", "keepalive", "terminator", "doc")
+_CONNECTION = (
+    "name", "baud", "singleThreading", "startup", "terminate", "keepalive", "terminator", "address", "doc",
+)  # fmt: skip
 _PRIMITIVE = (
     "name", "parameters", "parameterTypes", "connection", "pack", "format", "formatArgs", "unpack", "regex",
-    "postActions", "doc",
+    "frame", "postActions", "doc",
 )  # fmt: skip
+_FRAME = ("name", "parameters", "parameterTypes", "request", "reply", "doc")
+_CHECKSUM = (
+    "checksum", "kind", "width", "poly", "init", "reflectIn", "reflectOut", "xorOut", "inverted", "mask", "format",
+    "covers", "withRequest",
+)  # fmt: skip
+_BYTES_ROLES = ("header", "literal", "terminator")
 _INTERFACE = ("name", "type", "parameters", "parameterTypes", "primitiveCalls", "triggers", "doc")
 _CALL = ("name", "arguments", "delay", "priority")
 _ADAPTER = ("name", "ros", "fields", "doc")
@@ -339,6 +349,7 @@ class _Importer:
         self.primitive_types: dict[str, tuple[str, ...]] = {}
         self.interface_types: dict[str, tuple[str, ...]] = {}
         self.made_adapters: list[ast.AdapterDecl] = []
+        self.frame_types: dict[str, tuple[str, ...]] = {}
         self.damaged: list[ast.Damaged] = []
 
     # -- the whole document, in an order where every type a default needs is known --
@@ -346,6 +357,9 @@ class _Importer:
     def module(self, root: JObject) -> ast.Module:
         top = self.members(root, "the description", _TOP)
         robot = self.robot(root, top)
+        constants = self.constants(top.get("constants"))
+        enums = self.enums(top.get("enums"))
+        frames = self.each(top, "frames", self.frame)
         states = self.each(top, "stateVariables", self.state)
         primitives = self.each(top, "primitives", self.primitive)
         interfaces = self.each(top, "interfaces", self.interface)
@@ -355,8 +369,11 @@ class _Importer:
         outputs = self.each(top, "domainOutputs", self.output)
         decls: list[ast.Decl] = [] if robot is None else [robot]
         decls += [
+            *constants,
+            *enums,
             *states,
             *connections,
+            *frames,
             *primitives,
             *interfaces,
             *adapters,
@@ -397,6 +414,107 @@ class _Importer:
         doc = self.doc(top)
         return None if name is None else ast.RobotDecl(name, tuple(attrs), root.span, doc)
 
+    def constants(self, value: JValue | None) -> list[ast.ConstDecl]:
+        obj = self.object(value, "`constants`") if value is not None else None
+        built = []
+        for key, item in obj.members if obj else ():
+            name, expr = self.ident(key, "a constant"), self.expr(item, None)
+            if name is not None and expr is not None:
+                built.append(ast.ConstDecl(name, expr, key.span))
+        return built
+
+    def enums(self, value: JValue | None) -> list[ast.EnumDecl]:
+        obj = self.object(value, "`enums`") if value is not None else None
+        built = []
+        for key, item in obj.members if obj else ():
+            name, members = self.ident(key, "an enum"), self.object(item, "an enum")
+            if name is None or members is None:
+                continue
+            made = []
+            for member, number in members.members:
+                ident, expr = self.ident(member, "an enum member"), self.expr(number, "int")
+                if ident is not None and expr is not None:
+                    made.append(ast.EnumMember(ident, expr, member.span))
+            built.append(ast.EnumDecl(name, tuple(made), key.span))
+        return built
+
+    def frame(self, obj: JObject) -> ast.FrameDecl | None:
+        m = self.members(obj, "a frame", _FRAME)
+        name = self.name(obj, m, "a frame")
+        params = self.params(m, lambda _: "int")
+        sides = {}
+        for side in ("request", "reply"):
+            parts = [self.object(p, "a frame part") for p in self.array(m.get(side), f"`{side}`")]
+            sides[side] = _present([None if p is None else self.frame_part(p, parts) for p in parts])
+        if name is None:
+            return None
+        self.frame_types[name.text] = tuple(p.type.text for p in params)
+        written = {side: m[side] for side in ("request", "reply") if side in m}
+        if sides["request"] == sides["reply"]:  # one sequence for both directions
+            items: tuple = sides["request"]
+        else:
+            items = tuple(ast.FrameSide(side, parts, written[side].span if side in written else obj.span)
+                          for side, parts in sides.items() if parts or side == "request")
+        return ast.FrameDecl(name, params, items, obj.span, self.doc(m))
+
+    def frame_part(self, obj: JObject, side: list[JObject | None]) -> ast.FramePart | None:
+        keys = [k.value for k, _ in obj.members]
+        role = next((r for r in _BYTES_ROLES if r in keys), None)
+        if role is not None:
+            m = self.members(obj, f"a `{role}` part", (role,))
+            s = self.string(m.get(role), f"`{role}`")
+            return None if s is None else ast.FrameBytes(role, ast.StrLit(s.value, s.span), obj.span)
+        if "field" in keys:
+            m = self.members(obj, "a frame field", ("field", "format", "value"))
+            name, fmt = self.ident(m["field"], "`field`"), self.string(m.get("format"), "`format`")
+            value = self.required(obj, m, "value", "a frame field", lambda v, _: self.expr(v, "int"))
+            if name is None or fmt is None or value is None:
+                return None
+            return ast.FrameField(name, ast.StrLit(fmt.value, fmt.span), value, obj.span)
+        if "length" in keys:
+            m = self.members(obj, "a length part", ("length", "adjust"))
+            fmt, adjust = self.string(m.get("length"), "`length`"), m.get("adjust")
+            if fmt is None:
+                return None
+            amount = int(adjust.value) if isinstance(adjust, JNumber) else 0
+            return ast.FrameLength(ast.StrLit(fmt.value, fmt.span), amount, obj.span)
+        if "payload" in keys:
+            self.members(obj, "a payload part", ("payload",))
+            return ast.FramePayload(obj.span)
+        if "checksum" in keys:
+            return self.checksum(obj, side)
+        self.error(obj.span, "a frame part is one of header, literal, terminator, field, length, payload, checksum")
+        return None
+
+    def checksum(self, obj: JObject, side: list[JObject | None]) -> ast.FrameChecksum | None:
+        m = self.members(obj, "a checksum", _CHECKSUM)
+        name, fmt = self.string(m.get("checksum"), "`checksum`"), self.string(m.get("format"), "`format`")
+        if name is None or fmt is None:
+            return None
+        options: list[ast.ChecksumOption] = []
+        for flag, word in (("inverted", "inverted"), ("reflectIn", "reflect")):
+            if isinstance(m.get(flag), JBool) and m[flag].value and name.value.lower() in ("crc", "sum", "xor") or (
+                    flag == "inverted" and isinstance(m.get(flag), JBool) and m[flag].value):
+                options.append(ast.ChecksumOption(word, span=m[flag].span))
+        settings = ("mask", "width", "poly", "init", "xorOut") if name.value.lower() == "crc" else ("mask",)
+        for key in settings:
+            if isinstance(m.get(key), JNumber):
+                options.append(ast.ChecksumOption(key.lower(), self.expr(m[key], "int"), span=m[key].span))
+        covers = self.array(m.get("covers"), "`covers`")
+        here = side.index(obj)
+        if len(covers) == 2 and all(isinstance(c, JNumber) for c in covers):
+            first, last = (int(c.value) for c in covers)  # type: ignore[union-attr]
+            request = isinstance(m.get("withRequest"), JBool) and m["withRequest"].value
+            header = side and side[0] is not None and any(k.value == "header" for k, _ in side[0].members)
+            if request or (first, last) != (1 if header else 0, here - 1):
+                names = [_part_name(p) for p in side]
+                over = ([ast.Ident("request", m["covers"].span)] if request else
+                        [ast.Ident(names[first], m["covers"].span)])
+                over.append(ast.Ident(names[last], m["covers"].span))
+                options.append(ast.ChecksumOption("over", over=tuple(over), span=m["covers"].span))
+        encoding = None if fmt.value == "hex" else ast.StrLit(fmt.value, fmt.span)
+        return ast.FrameChecksum(ast.StrLit(name.value, name.span), encoding, tuple(options), obj.span)
+
     def state(self, obj: JObject) -> ast.StateDecl | None:
         m = self.members(obj, "a state variable", _STATE)
         name = self.name(obj, m, "a state variable")
@@ -410,15 +528,15 @@ class _Importer:
         groups = self.object(value, "`connections`") if value is not None else None
         built = []
         for key, group in groups.members if groups else ():
-            if key.value != "spp":
+            if key.value not in ("spp", "tcp"):
                 self.error(
                     key.span,
                     f"unknown connection kind `{key.value}`",
-                    help="serial connections are listed under `spp`",
+                    help="serial connections are listed under `spp`, TCP ones under `tcp`",
                 )
                 continue
-            kind = ast.Ident("serial", key.span)
-            built += self.each({"spp": group}, "spp", partial(self.connection, kind=kind))
+            kind = ast.Ident("serial" if key.value == "spp" else "tcp", key.span)
+            built += self.each({key.value: group}, key.value, partial(self.connection, kind=kind))
         return built
 
     def connection(self, obj: JObject, kind: ast.Ident) -> ast.ConnectionDecl | None:
@@ -446,6 +564,9 @@ class _Importer:
         terminator = self.string(m.get("terminator"), "`terminator`")
         if terminator is not None:
             attrs.append(ast.Terminator(ast.StrLit(terminator.value, terminator.span), terminator.span))
+        address = self.string(m.get("address"), "`address`")
+        if address is not None:
+            attrs.append(ast.Address(ast.StrLit(address.value, address.span), address.span))
         if name is None:
             return None
         return ast.ConnectionDecl(name, kind, _present(attrs), obj.span, self.doc(m))
@@ -483,6 +604,13 @@ class _Importer:
             s = self.string(m.get(kind), f"`{kind}`")
             if s is not None:
                 clauses.append(ast.Decoding(kind, ast.StrLit(s.value, s.span), s.span))
+        framed = self.object(m.get("frame"), "`frame`")
+        if framed is not None:
+            f = self.members(framed, "`frame`", ("name", "arguments"))
+            frame = self.name(framed, f, "`frame`")
+            if frame is not None:
+                types = self.frame_types.get(frame.text, ())
+                clauses.append(ast.Framed(frame, self.args(f.get("arguments"), types), framed.span))
         actions = self.array(m.get("postActions"), "`postActions`")
         if actions:  # none is the default, left unsaid
             assigns = _present([self.post_action(a) for a in actions])
@@ -854,3 +982,13 @@ def _respan(node: Any, place: Callable[[Span], Span]) -> Any:
     if is_dataclass(node) and not isinstance(node, type):
         return replace(node, **{f.name: _respan(getattr(node, f.name), place) for f in fields(node)})
     return node
+
+
+def _part_name(part: JObject | None) -> str:
+    """The name a checksum's `over` gives a frame part."""
+    for key, value in part.members if part else ():
+        if key.value in _BYTES_ROLES or key.value in ("length", "payload"):
+            return key.value
+        if key.value == "field" and isinstance(value, JString):
+            return value.value
+    return "checksum"

@@ -314,7 +314,7 @@ class Frame:
             elif isinstance(part, Check):
                 covered = raw[starts[part.first] : starts[part.last + 1]]
                 expected = part.encode(part.checksum(request + covered if part.with_request else covered))
-                if chunk.upper() != expected:
+                if (chunk if part.struct is not None else chunk.upper()) != expected:
                     raise FrameError(f"{self.name}: checksum {chunk!r} does not match the reply, "
                                      f"which sums to {expected!r}")
         if side.payload < 0:

@@ -45,6 +45,7 @@ class _Checker:
         self.state_env: dict[str, tuple[Scope, Type]] = {}
         self.hooked: set[str] = set()  # interfaces called by a hook, valid or not
         self.frames: dict[str, m.Frame] = {}
+        self.primitives: dict[str, m.Primitive] = {}
 
     # -- the whole description ----------------------------------------------------------
 
@@ -61,7 +62,7 @@ class _Checker:
         self.frames = {name: rules.frame(decl, self.params(decl.params, "frame"))
                        for name, decl in self.s.frames.items()}
         interface_params = {name: self.params(decl.params, "interface") for name, decl in self.s.interfaces.items()}
-        primitives = {name: self.primitive(decl) for name, decl in self.s.primitives.items()}
+        primitives = self.primitives = {name: self.primitive(decl) for name, decl in self.s.primitives.items()}
         connections = {name: self.connection(decl, interface_params) for name, decl in self.s.connections.items()}
         interfaces = {
             name: self.interface(decl, interface_params[name], primitives) for name, decl in self.s.interfaces.items()
@@ -637,9 +638,11 @@ class _Checker:
             if name not in triggered and id(decl) in self.main_decls and ("output", name) not in self.s.suggested:
                 self.d.report("W102", decl.name.span, f"output `{name}` is never triggered",
                               help=f"add `triggers {name}` to the interface that reads its state")
+        written = {a.target for p in self.primitives.values() for a in p.actions}
         for name, decl in self.s.states.items():
-            if name not in self.typer.reads and id(decl) in self.main_decls:
-                self.d.report("W103", decl.name.span, f"state variable `{name}` is never read")
+            if name not in self.typer.reads and name not in written and id(decl) in self.main_decls:
+                self.d.report("W103", decl.name.span, f"state variable `{name}` is never used",
+                              help="read it in an expression, write it in a post-action, or remove it")
         for name, decl in self.s.interfaces.items():
             periodic = any(isinstance(c, ast.Kind) and c.word == "periodic" for c in decl.clauses)
             if (name not in used and not periodic and id(decl) in self.main_decls

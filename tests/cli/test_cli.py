@@ -56,7 +56,7 @@ def test_only_warnings_exit_0(rdisc, tmp_path: Path) -> None:
     path = write(tmp_path, "warn.rdis", CLEAN + 'state spare: int = 0\n')
     result = rdisc("check", path)
     assert result.returncode == 0
-    assert "warning[W103]: state variable `spare` is never read" in result.stderr
+    assert "warning[W103]: state variable `spare` is never used" in result.stderr
     assert result.stderr.rstrip().endswith("1 warning emitted")
 
 

@@ -99,3 +99,11 @@ def test_hex_checksum_and_terminator() -> None:
                            Check(Checksum("xor", 8), None, 1, 1), Bytes("terminator", b"\r\n")], [])
     sentence = b"GPGLL,4916.45,N,12311.12,W,225444,A,"
     assert frame.wrap(sentence, []) == b"$" + sentence + b"*1D\r\n"
+
+
+def test_binary_checksum_bytes_are_compared_exactly() -> None:
+    """A struct checksum byte that happens to be a lower-case letter is not upper-cased (0x61 is not 0x41)."""
+    frame = Frame("f", [Payload()], [Bytes("header", b"\xaa"), Payload(), Check(Checksum("sum", 8), "B", 1, 1)])
+    assert frame.read(Port(b"\xaa\x61\x61"), [], b"", 1)[1] == b"\x61"
+    with pytest.raises(FrameError, match="checksum"):
+        frame.read(Port(b"\xaa\x61\x41"), [], b"", 1)
