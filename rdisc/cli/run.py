@@ -35,7 +35,8 @@ def add_parser(verbs) -> None:
                    help="a pyserial port or URL (/dev/ttyUSB0, COM3, socket://host:port); "
                         "CONN=PORT for one connection of several (repeat the option)")
     p.add_argument("--call", action="append", nargs="+", default=[], metavar="NAME [K=V ...]",
-                   help="call an input (or an interface) with named values; repeat for several calls, in order")
+                   help="call an input (or an interface, or a primitive) with named values; repeat for several "
+                        "calls, in order")
     p.add_argument("--watch", action="store_true", help="print each output as a JSON line as it arrives")
     p.add_argument("--trace", action="store_true", help="print every byte written and read, in hex, on stderr")
     p.add_argument("--duration", type=float, metavar="S",
@@ -78,8 +79,10 @@ def run(args: argparse.Namespace) -> int:
         for name, kind, values in calls:
             if kind == "input":
                 robot.call_input(name, **values)
-            else:
+            elif kind == "interface":
                 robot.call_interface(name, *values)
+            else:
+                robot.call_primitive(name, *values)
         if args.duration is not None:
             _sleep(args.duration - (time.monotonic() - start))
         elif args.watch:
@@ -107,8 +110,12 @@ def run(args: argparse.Namespace) -> int:
 # ---- arguments ----------------------------------------------------------------------------------------
 
 
-def parse_ports(given: list[str], model: m.Model) -> str | dict[str, str]:
-    """`--port P` for every connection, `--port CONN=P` for one; a plain port is the default for the rest."""
+def parse_ports(given: list[str], model: m.Model) -> str | dict[str, str] | None:
+    """`--port P` for every connection, `--port CONN=P` for one; a plain port is the default for the rest,
+    and a connection given none opens its `address`."""
+    addresses = {name: c.address for name, c in model.connections.items() if c.address is not None}
+    if not given and len(addresses) == len(model.connections):
+        return None
     if not given:
         raise ValueError("give the device's port: --port /dev/ttyUSB0 (or CONN=PORT for each connection)")
     default: str | None = None
@@ -129,10 +136,10 @@ def parse_ports(given: list[str], model: m.Model) -> str | dict[str, str]:
     if not named:
         assert default is not None
         return default
-    missing = [c for c in model.connections if c not in named]
+    missing = [c for c in model.connections if c not in named and c not in addresses]
     if missing and default is None:
         raise ValueError(f"no port for connection `{missing[0]}`: add --port {missing[0]}=PORT")
-    return {c: named.get(c, default) for c in model.connections}  # type: ignore[misc]
+    return {c: named.get(c, default if default is not None else addresses.get(c)) for c in model.connections}  # type: ignore[misc]
 
 
 def parse_value(text: str) -> int | float | bool | str:
@@ -148,7 +155,8 @@ def parse_value(text: str) -> int | float | bool | str:
 
 
 def parse_call(words: list[str], model: m.Model) -> tuple[str, str, Any]:
-    """(name, "input" | "interface", values) for `NAME k=v ...`; an input is preferred to an interface."""
+    """(name, "input" | "interface" | "primitive", values) for `NAME k=v ...`; an input is preferred
+    to an interface, an interface to a primitive."""
     name, *pairs = words
     values: dict[str, Any] = {}
     for pair in pairs:
@@ -166,8 +174,13 @@ def parse_call(words: list[str], model: m.Model) -> tuple[str, str, Any]:
         params = [p.name for p in model.interfaces[name].params]
         _check_names(name, list(values), params, "parameters")
         return name, "interface", [values[p] for p in params]
-    known = ", ".join(list(model.inputs) + [i for i in model.interfaces if i not in model.inputs])
-    raise ValueError(f"{model.robot.name} has no input or interface `{name}` (there are: {known or 'none'})")
+    if name in model.primitives:
+        params = [p.name for p in model.primitives[name].params]
+        _check_names(name, list(values), params, "parameters")
+        return name, "primitive", [values[p] for p in params]
+    known = ", ".join(dict.fromkeys([*model.inputs, *model.interfaces, *model.primitives]))
+    raise ValueError(f"{model.robot.name} has no input, interface or primitive `{name}` "
+                     f"(there are: {known or 'none'})")
 
 
 def _check_names(name: str, given: list[str], expected: list[str], what: str) -> None:

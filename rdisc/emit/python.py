@@ -146,7 +146,7 @@ def _docstring(text: str) -> str:
     """A triple-quoted docstring that reads back as `text` (its lines right-stripped)."""
     body = "\n".join(line.rstrip() for line in text.strip("\n").split("\n"))
     escaped = _printable(body.replace("\\", "\\\\"), keep="\n").replace('"""', '\\"\\"\\"')
-    if escaped.endswith('"'):
+    if escaped.endswith('"') and (len(escaped) - 1 - len(escaped[:-1].rstrip("\\"))) % 2 == 0:
         escaped = escaped[:-1] + '\\"'
     if "\n" in escaped:
         return f'"""{escaped}\n"""'
@@ -565,11 +565,12 @@ class _Driver:
     def lifecycle(self, w: Writer) -> None:
         _section(w, "connections: opening, hooks, ticks, closing")
         w.blank(1)
-        with w.block("def open(self, port: PortSpec, *, threads: bool = True) -> None:"):
+        with w.block("def open(self, port: PortSpec | None = None, *, threads: bool = True) -> None:"):
             w.line(_docstring(
                 "Open the ports, run the startup hooks, then start the connections' threads.\n\n"
                 '`port`: a pyserial port name or URL ("/dev/ttyUSB0", "COM3", "socket://host:4000")\n'
-                "or an open port object, for every connection; or a dict {connection: port}. With\n"
+                "or an open port object, for every connection; or a dict {connection: port}; a\n"
+                "connection given none opens its address from the description. With\n"
                 "`threads=False` no thread is started: call `tick()` from your own loop. If any of\n"
                 "it fails, what was opened is closed again (terminate hooks included) and the\n"
                 "error is raised."
@@ -577,7 +578,7 @@ class _Driver:
             w.line("if self._running or self._closed:")
             w.line('    raise RdisConnectionError(f"{ROBOT}: already opened")')
             with w.block("try:"):
-                w.line("_open_links(port, _CONNECTIONS, self.timeout, self._links)")
+                w.line("_open_links(port, _CONNECTIONS, _ADDRESSES, self.timeout, self._links)")
                 for c in self.model.connections.values():
                     w.line(f"self._link_{c.name} = self._links[{quoted(c.name)}]")
                 w.line("self._running = True")
@@ -890,6 +891,11 @@ class _Driver:
         w.line(f"_CONNECTIONS: dict[str, int] = {{{bauds}}}")
         w.line('"""Each connection\'s baud rate, by name."""')
         w.blank(1)
+        addresses = ", ".join(f"{quoted(c.name)}: {quoted(c.address)}" for c in self.model.connections.values()
+                              if c.address is not None)
+        w.line(f"_ADDRESSES: dict[str, str] = {{{addresses}}}")
+        w.line('"""The port each connection opens when given none (its `address`)."""')
+        w.blank(1)
         w.line("_INPUTS: dict[str, tuple[Callable[..., None], str, tuple[tuple[str, type], ...]]] = {")
         for i in self.model.inputs.values():
             adapter = self.model.adapters[i.adapter]
@@ -916,7 +922,7 @@ class _Driver:
     def connect_function(self, w: Writer) -> None:
         w.blank(2)
         w.line("def connect(")
-        w.line("    port: PortSpec,")
+        w.line("    port: PortSpec | None = None,")
         w.line("    timeout: float = 1.0,")
         w.line("    threads: bool = True,")
         w.line("    *,")
@@ -928,7 +934,8 @@ class _Driver:
             w.line(_docstring(
                 f"The robot, running: its ports open, its startup hooks run, its threads started.\n\n"
                 '`port`: a pyserial port name or URL ("/dev/ttyUSB0", "COM3", "socket://host:4000")\n'
-                "or an open port object, for every connection; or a dict {connection: port}\n"
+                "or an open port object, for every connection; or a dict {connection: port}; by\n"
+                "default, each connection's address from the description\n"
                 f"(connections: {names}). `timeout`: seconds to wait for a reply. With\n"
                 "`threads=False`, call `tick()` yourself. Callbacks given here are registered\n"
                 "before anything is opened, so they also see what the startup hooks do."
@@ -1000,11 +1007,13 @@ class _Driver:
                 "try:",
                 "    start = time.monotonic()",
                 "    robot.open(port)",
-                "    for name, is_input, values in calls:",
-                "        if is_input:",
+                "    for name, kind, values in calls:",
+                "        if kind == \"input\":",
                 "            robot.call_input(name, **values)",
-                "        else:",
+                "        elif kind == \"interface\":",
                 "            robot.call_interface(name, *(values[param] for param, _ in _INTERFACES[name][1]))",
+                "        else:",
+                "            robot.call_primitive(name, *(values[param] for param, _ in _PRIMITIVES[name][1]))",
                 "    if args.duration is not None:",
                 "        _sleep(args.duration - (time.monotonic() - start))",
                 "    elif args.watch:",

@@ -230,7 +230,7 @@ class Description:
 
     def connect(
         self,
-        port: str | Any | Mapping[str, str | Any],
+        port: str | Any | Mapping[str, str | Any] | None = None,
         timeout: float = 1.0,
         threads: bool = True,
         *,
@@ -241,7 +241,8 @@ class Description:
         """Open the ports, run the startup hooks, start the connections' threads.
 
         `port` is one port (a pyserial port name or URL, or an open pyserial-like
-        object) for every connection, or a dict from connection name to port.
+        object) for every connection, or a dict from connection name to port; a
+        connection given none opens its `address`.
         Callbacks given here are registered before anything is opened, so they
         also see what the startup hooks do.
         """
@@ -346,7 +347,7 @@ class Robot:
     def __init__(
         self,
         description: Description,
-        port: str | Any | Mapping[str, str | Any],
+        port: str | Any | Mapping[str, str | Any] | None = None,
         timeout: float = 1.0,
         threads: bool = True,
         *,
@@ -515,19 +516,21 @@ class Robot:
 
     # ---- running the description ------------------------------------------------------------------
 
-    def _open_ports(self, port: str | Any | Mapping[str, str | Any]) -> None:
+    def _open_ports(self, port: str | Any | Mapping[str, str | Any] | None) -> None:
         connections = self.model.connections
         if isinstance(port, Mapping):
             unknown = [name for name in port if name not in connections]
             if unknown:
                 raise ValueError(f"{self.name} has no connection named {unknown[0]!r} "
                                  f"(its connections: {', '.join(connections) or 'none'})")
-            missing = [name for name in connections if name not in port]
-            if missing:
-                raise ValueError(f"no port given for connection {missing[0]!r}")
             given = dict(port)
         else:
-            given = dict.fromkeys(connections, port)
+            given = dict.fromkeys(connections, port) if port is not None else {}
+        for name, connection in connections.items():
+            if name not in given:
+                if connection.address is None:
+                    raise ValueError(f"no port given for connection {name!r}, which has no `address`")
+                given[name] = connection.address
         opened: dict[object, _Port] = {}
         for name, where in given.items():
             key: object = where if isinstance(where, (str, os.PathLike)) else id(where)

@@ -432,7 +432,7 @@ def test_command_line_stops_the_robot_on_a_signal(drivers, signum, status) -> No
 
 def test_command_line_usage_errors(drivers) -> None:
     for args, expected in [
-        (["--call", "fly"], "has no input or interface `fly`"),
+        (["--call", "fly"], "has no input, interface or primitive `fly`"),
         (["--call", "set_velocity", "linear=1"], "takes linear=... angular=..."),
         ([], "give the device's port"),
     ]:

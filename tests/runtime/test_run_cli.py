@@ -89,7 +89,7 @@ def test_a_description_with_errors_shows_its_diagnostics(rdisc) -> None:
 
 @pytest.mark.parametrize(("args", "message"), [
     ((), "give the device's port"),
-    (("--port", "loop://", "--call", "fly"), "has no input or interface `fly`"),
+    (("--port", "loop://", "--call", "fly"), "has no input, interface or primitive `fly`"),
     (("--port", "loop://", "--call", "set_velocity", "linear=1"), "takes linear=... angular=..."),
     (("--port", "loop://", "--call", "set_velocity", "linear"), "is not KEY=VALUE"),
     (("--port", "btserail=loop://"), "`btserail` is not a connection"),

@@ -195,9 +195,11 @@ class _Link:
         self.owned = owned  # opened by the driver, so closed by it too
 
 
-def _open_links(port: PortSpec, bauds: Mapping[str, int], timeout: float, links: dict[str, _Link]) -> None:
+def _open_links(port: PortSpec | None, bauds: Mapping[str, int], addresses: Mapping[str, str], timeout: float,
+                links: dict[str, _Link]) -> None:
     """Open a port for each connection into `links`: one name or URL is opened once and
-    shared; an open port object is used as it is (and never closed by the driver)."""
+    shared; an open port object is used as it is (and never closed by the driver). A
+    connection given no port opens its address."""
     given: dict[str, str | os.PathLike[str] | Port]
     if isinstance(port, Mapping):
         unknown = [name for name in port if name not in bauds]
@@ -205,12 +207,14 @@ def _open_links(port: PortSpec, bauds: Mapping[str, int], timeout: float, links:
             raise ValueError(
                 f"{ROBOT} has no connection named {unknown[0]!r} (its connections: {', '.join(bauds)})"
             )
-        missing = [name for name in bauds if name not in port]
-        if missing:
-            raise ValueError(f"no port given for connection {missing[0]!r}")
         given = dict(port)
     else:
-        given = dict.fromkeys(bauds, port)
+        given = dict.fromkeys(bauds, port) if port is not None else {}
+    for name in bauds:
+        if name not in given:
+            if name not in addresses:
+                raise ValueError(f"no port given for connection {name!r}, which has no `address`")
+            given[name] = addresses[name]
     opened: dict[object, _Link] = {}
     for name, where in given.items():
         if isinstance(where, (str, os.PathLike)):
@@ -548,11 +552,12 @@ class Koala:
 
     # ---- connections: opening, hooks, ticks, closing ---------------------------------------------
 
-    def open(self, port: PortSpec, *, threads: bool = True) -> None:
+    def open(self, port: PortSpec | None = None, *, threads: bool = True) -> None:
         """Open the ports, run the startup hooks, then start the connections' threads.
 
         `port`: a pyserial port name or URL ("/dev/ttyUSB0", "COM3", "socket://host:4000")
-        or an open port object, for every connection; or a dict {connection: port}. With
+        or an open port object, for every connection; or a dict {connection: port}; a
+        connection given none opens its address from the description. With
         `threads=False` no thread is started: call `tick()` from your own loop. If any of
         it fails, what was opened is closed again (terminate hooks included) and the
         error is raised.
@@ -560,7 +565,7 @@ class Koala:
         if self._running or self._closed:
             raise RdisConnectionError(f"{ROBOT}: already opened")
         try:
-            _open_links(port, _CONNECTIONS, self.timeout, self._links)
+            _open_links(port, _CONNECTIONS, _ADDRESSES, self.timeout, self._links)
             self._link_rs232 = self._links["rs232"]
             self._running = True
             self.startup()
@@ -1048,6 +1053,9 @@ class Koala:
 _CONNECTIONS: dict[str, int] = {"rs232": 38400}
 """Each connection's baud rate, by name."""
 
+_ADDRESSES: dict[str, str] = {}
+"""The port each connection opens when given none (its `address`)."""
+
 _INPUTS: dict[str, tuple[Callable[..., None], str, tuple[tuple[str, type], ...]]] = {
     "set_velocity": (Koala.set_velocity, "DifferentialSpeed", (("linear", float), ("angular", float))),
 }
@@ -1073,7 +1081,7 @@ _PRIMITIVES: dict[str, tuple[Callable[..., None], tuple[tuple[str, type], ...]]]
 
 
 def connect(
-    port: PortSpec,
+    port: PortSpec | None = None,
     timeout: float = 1.0,
     threads: bool = True,
     *,
@@ -1084,7 +1092,8 @@ def connect(
     """The robot, running: its ports open, its startup hooks run, its threads started.
 
     `port`: a pyserial port name or URL ("/dev/ttyUSB0", "COM3", "socket://host:4000")
-    or an open port object, for every connection; or a dict {connection: port}
+    or an open port object, for every connection; or a dict {connection: port}; by
+    default, each connection's address from the description
     (connections: rs232). `timeout`: seconds to wait for a reply. With
     `threads=False`, call `tick()` yourself. Callbacks given here are registered
     before anything is opened, so they also see what the startup hooks do.
@@ -1106,10 +1115,12 @@ class _Terminated(BaseException):
     """SIGTERM, turned into an exception so that the terminate hooks run on the way out."""
 
 
-def _port_argument(given: list[str]) -> str | dict[str, str]:
+def _port_argument(given: list[str]) -> str | dict[str, str] | None:
     """--port PORT for every connection, --port CONNECTION=PORT for one (a plain port is the
-    default for the others), as `rdisc run` reads them."""
+    default for the others; without one, a connection opens its address), as `rdisc run` reads them."""
     if not given:
+        if all(name in _ADDRESSES for name in _CONNECTIONS):
+            return None
         raise ValueError("give the device's port: --port /dev/ttyUSB0 (or CONNECTION=PORT for each connection)")
     default: str | None = None
     named: dict[str, str] = {}
@@ -1130,9 +1141,9 @@ def _port_argument(given: list[str]) -> str | dict[str, str]:
         return default
     for name in _CONNECTIONS:
         if name not in named:
-            if default is None:
+            if default is None and name not in _ADDRESSES:
                 raise ValueError(f"no port for connection `{name}`: add --port {name}=PORT")
-            named[name] = default
+            named[name] = default if default is not None else _ADDRESSES[name]
     return named
 
 
@@ -1149,9 +1160,9 @@ def _value_argument(text: str) -> Value:
     return text
 
 
-def _call_argument(words: list[str]) -> tuple[str, bool, dict[str, Value]]:
-    """--call NAME K=V ...: (name, whether it is an input, values by name); an input is
-    preferred to an interface of the same name."""
+def _call_argument(words: list[str]) -> tuple[str, str, dict[str, Value]]:
+    """--call NAME K=V ...: (name, "input" | "interface" | "primitive", values by name); an
+    input is preferred to an interface of the same name, an interface to a primitive."""
     name, *pairs = words
     values: dict[str, Value] = {}
     for pair in pairs:
@@ -1165,13 +1176,16 @@ def _call_argument(words: list[str]) -> tuple[str, bool, dict[str, Value]]:
         expected = [field for field, _ in _INPUTS[name][2]]
     elif name in _INTERFACES:
         expected = [param for param, _ in _INTERFACES[name][1]]
+    elif name in _PRIMITIVES:
+        expected = [param for param, _ in _PRIMITIVES[name][1]]
     else:
-        known = ", ".join([*_INPUTS, *(i for i in _INTERFACES if i not in _INPUTS)]) or "none"
-        raise ValueError(f"{ROBOT} has no input or interface `{name}` (there are: {known})")
+        known = ", ".join(dict.fromkeys([*_INPUTS, *_INTERFACES, *_PRIMITIVES])) or "none"
+        raise ValueError(f"{ROBOT} has no input, interface or primitive `{name}` (there are: {known})")
     if sorted(values) != sorted(expected):
         wanted = " ".join(f"{e}=..." for e in expected) or "no values"
         raise ValueError(f"--call {name} takes {wanted}")
-    return name, name in _INPUTS, values
+    kind = "input" if name in _INPUTS else "interface" if name in _INTERFACES else "primitive"
+    return name, kind, values
 
 
 def _print_output(message: dict[str, Any]) -> None:
@@ -1253,11 +1267,13 @@ def main(argv: list[str] | None = None) -> int:
     try:
         start = time.monotonic()
         robot.open(port)
-        for name, is_input, values in calls:
-            if is_input:
+        for name, kind, values in calls:
+            if kind == "input":
                 robot.call_input(name, **values)
-            else:
+            elif kind == "interface":
                 robot.call_interface(name, *(values[param] for param, _ in _INTERFACES[name][1]))
+            else:
+                robot.call_primitive(name, *(values[param] for param, _ in _PRIMITIVES[name][1]))
         if args.duration is not None:
             _sleep(args.duration - (time.monotonic() - start))
         elif args.watch:
