@@ -183,8 +183,6 @@ No interface triggers this output, so it is never delivered."""),
 The state variable is never read by any expression and never written by a
 post-action: nothing uses it. (State that post-actions write is the host's to
 read, through `robot.state`, even when no expression reads it.)"""),
-    ("W104", "unused-interface", """
-The interface is not periodic and is called by no input and no hook."""),
     ("W201", "nonstandard-baud", """
 The baud rate is not one of the standard rates (300 ... 4000000). Some serial
 adapters round a non-standard rate or refuse it."""),

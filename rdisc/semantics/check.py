@@ -43,7 +43,6 @@ class _Checker:
         self.typer = Typer(diagnostics)
         self.main_decls = {id(decl) for unit in units if unit.main for decl in unit.module.decls}
         self.state_env: dict[str, tuple[Scope, Type]] = {}
-        self.hooked: set[str] = set()  # interfaces called by a hook, valid or not
         self.frames: dict[str, m.Frame] = {}
         self.primitives: dict[str, m.Primitive] = {}
 
@@ -70,7 +69,7 @@ class _Checker:
         inputs = {name: self.input(decl, adapters, interface_params) for name, decl in self.s.inputs.items()}
         outputs = {name: self.output(decl, adapters) for name, decl in self.s.outputs.items()}
         robot = self.robot()
-        self.unused(interfaces, inputs)
+        self.unused(interfaces)
         if self.d.has_errors() or robot is None:
             return None
         return m.Model(
@@ -280,7 +279,6 @@ class _Checker:
             hooks[event] = None
             if not isinstance(hook, ast.Hook):
                 continue
-            self.hooked.add(hook.call.target.text)
             target = self.s.interfaces.get(hook.call.target.text)
             params = interface_params.get(hook.call.target.text)
             args = self.call(hook.call, params, env, "interface", target.name if target else None)
@@ -629,11 +627,12 @@ class _Checker:
 
     # -- what is declared and never used ----------------------------------------------------
 
-    def unused(self, interfaces: dict[str, m.Interface], inputs: dict[str, m.DomainInput]) -> None:
+    def unused(self, interfaces: dict[str, m.Interface]) -> None:
+        """Outputs never delivered and state nothing uses. (Primitives and interfaces are the
+        host's to call, through `call_primitive` and `call_interface`, so none is unused.)"""
         if self.s.damaged:  # what the lost declarations used is unknown
             return
         triggered = {i.triggers for i in interfaces.values() if i.triggers}
-        used = {i.interface for i in inputs.values()} | self.hooked
         for name, decl in self.s.outputs.items():
             if name not in triggered and id(decl) in self.main_decls and ("output", name) not in self.s.suggested:
                 self.d.report("W102", decl.name.span, f"output `{name}` is never triggered",
@@ -643,12 +642,6 @@ class _Checker:
             if name not in self.typer.reads and name not in written and id(decl) in self.main_decls:
                 self.d.report("W103", decl.name.span, f"state variable `{name}` is never used",
                               help="read it in an expression, write it in a post-action, or remove it")
-        for name, decl in self.s.interfaces.items():
-            periodic = any(isinstance(c, ast.Kind) and c.word == "periodic" for c in decl.clauses)
-            if (name not in used and not periodic and id(decl) in self.main_decls
-                    and ("interface", name) not in self.s.suggested):
-                self.d.report("W104", decl.name.span, f"interface `{name}` is never called",
-                              help="call it from an input or a connection hook, or make it `periodic`")
 
 
 def _count(n: int, noun: str) -> str:

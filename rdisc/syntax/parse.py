@@ -79,7 +79,7 @@ def parse(path: str, text: str, diagnostics: Diagnostics) -> ast.Module:
     for i, (start, end) in enumerate(bounds):
         chunk = text[start:end]
         try:
-            tree = parser().parse(chunk, start="start")
+            tree = parser().parse(chunk, start="start", on_error=_keyword_as_name)
         except lark.exceptions.UnexpectedInput as err:
             damaged.extend(_damaged(path, chunk, start))
             errors += 1
@@ -107,6 +107,23 @@ def parse(path: str, text: str, diagnostics: Diagnostics) -> ast.Module:
     return ast.Module(path, tuple(decls), tuple(damaged))
 
 
+_NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
+
+
+def _keyword_as_name(err) -> bool:
+    """Keywords are contextual: a clause keyword (`baud`, `length`, `mask`, ...) where the
+    parser wants a name is that name. LALR merges the states after an expression, so the
+    lexer offers every keyword that may follow an expression anywhere; this undoes that."""
+    import lark
+
+    token = getattr(err, "token", None)
+    if (not isinstance(err, lark.exceptions.UnexpectedToken) or token is None or token.type == "NAME"
+            or "NAME" not in err.accepts or not _NAME.fullmatch(str(token))):
+        return False
+    err.interactive_parser.feed_token(lark.Token.new_borrow_pos("NAME", str(token), token))
+    return True
+
+
 def _damaged(path: str, chunk: str, start: int) -> list[ast.Damaged]:
     m = _DECL_NAME.match(chunk)
     if not m:
@@ -120,7 +137,7 @@ def parse_expression(path: str, text: str, base_offset: int, diagnostics: Diagno
     import lark
 
     try:
-        tree = parser().parse(text, start="expr_start")
+        tree = parser().parse(text, start="expr_start", on_error=_keyword_as_name)
     except lark.exceptions.UnexpectedInput as err:
         code, offset, length, message, label = describe_unexpected(err, text, True)
         at = base_offset + offset

@@ -268,13 +268,13 @@ def test_styled_text_matches_plain_and_colours_the_severity() -> None:
     at = span(sources, "examples/create.rdis", "drve")
     diagnostics = [
         error("E102", "unknown primitive `drve`", at, label="no primitive"),
-        Diagnostic("W104", Severity.WARNING, "unused", at),
+        Diagnostic("W103", Severity.WARNING, "unused", at),
     ]
     text = render(diagnostics, sources)
     assert text.plain == render_plain(diagnostics, sources)
     styled = {text.plain[s.start : s.end]: str(s.style) for s in text.spans}
     assert styled["error[E102]"] == "bold red"
-    assert styled["warning[W104]"] == "bold yellow"
+    assert styled["warning[W103]"] == "bold yellow"
     assert styled["^^^^ no primitive"] == "bold red"
 
 

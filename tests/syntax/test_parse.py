@@ -133,3 +133,14 @@ def test_deep_nesting_is_refused_before_it_is_walked() -> None:
     _, diagnostics = parsed("state s: int = " + "-" * depth + "1\nstate t: int = " + "(" * 10_000 + "1" + ")" * 10_000)
     assert [d.code for d in diagnostics.items] == ["E005", "E005"]
     assert diagnostics.items[0].message == f"expression is nested too deeply (the limit is {MAX_EXPR_DEPTH} levels)"
+
+
+def test_clause_keywords_are_names_where_a_name_is_expected() -> None:
+    """`baud`, `length`, `mask` ... after an expression are names, not the start of a clause."""
+    module, diagnostics = parsed(
+        'primitive get() on bus pack "B" (1) unpack "BBB" { a = out[0]  baud = out[1]  length = out[2] + mask }\n'
+    )
+    assert list(diagnostics.items) == []
+    actions = module.decls[0].clauses[-1]
+    assert [a.target.text for a in actions.assigns] == ["a", "baud", "length"]
+    assert actions.assigns[2].value == ast.BinOp("+", ast.Index(ast.Ref("out"), ast.IntLit(2)), ast.Ref("mask"))
