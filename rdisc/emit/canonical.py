@@ -124,6 +124,7 @@ def _primitive(x: m.Primitive) -> JsonObject:
         ("name", x.name),
         ("parameters", [param.name for param in x.params]),
         ("parameterTypes", [param.type.value for param in x.params]),
+        ("parameterRanges", _ranges(x.params)),
         ("connection", x.connection),
         encoding,
         ("formatArgs", [_embedded(a) for a in x.args]),
@@ -133,6 +134,13 @@ def _primitive(x: m.Primitive) -> JsonObject:
         ("postActions", actions or None),
         ("doc", x.doc),
     )
+
+
+def _ranges(params: tuple[m.Parameter, ...]) -> list[list[int | float] | None] | None:
+    """Each parameter's `[low, high]` (null without a range); left out when none has one."""
+    if all(p.low is None for p in params):
+        return None
+    return [None if p.low is None else [p.low, p.high] for p in params]  # type: ignore[list-item]
 
 
 def _frame(f: m.Frame) -> JsonObject:
@@ -185,6 +193,7 @@ def _interface(i: m.Interface) -> JsonObject:
         ("type", "periodic" if i.periodic else "adhoc"),
         ("parameters", [param.name for param in i.params] or None),
         ("parameterTypes", [param.type.value for param in i.params] or None),
+        ("parameterRanges", _ranges(i.params)),
         ("primitiveCalls", calls),
         ("triggers", i.triggers),
         ("doc", i.doc),

@@ -16,7 +16,8 @@ def dump(model: m.Model) -> str:
 
 
 def _primitive(model: m.Model, p: m.Primitive) -> str:
-    params = ", ".join(f"{x.name}: {x.type.value}" for x in p.params)
+    params = ", ".join(f"{x.name}: {x.type.value}" + (f" in {x.range_text()}" if x.low is not None else "")
+                       for x in p.params)
     head = f"primitive {p.name}({params}) on {p.connection}"
     frame = model.frames[p.frame.frame] if p.frame is not None else None
     if p.frame is not None:

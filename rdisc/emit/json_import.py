@@ -301,8 +301,8 @@ _CONNECTION = (
     "name", "baud", "singleThreading", "startup", "terminate", "keepalive", "terminator", "address", "doc",
 )  # fmt: skip
 _PRIMITIVE = (
-    "name", "parameters", "parameterTypes", "connection", "pack", "format", "formatArgs", "unpack", "regex",
-    "frame", "postActions", "doc",
+    "name", "parameters", "parameterTypes", "parameterRanges", "connection", "pack", "format", "formatArgs",
+    "unpack", "regex", "frame", "postActions", "doc",
 )  # fmt: skip
 _FRAME = ("name", "parameters", "parameterTypes", "request", "reply", "doc")
 _CHECKSUM = (
@@ -310,7 +310,9 @@ _CHECKSUM = (
     "covers", "withRequest",
 )  # fmt: skip
 _BYTES_ROLES = ("header", "literal", "terminator")
-_INTERFACE = ("name", "type", "parameters", "parameterTypes", "primitiveCalls", "triggers", "doc")
+_INTERFACE = (
+    "name", "type", "parameters", "parameterTypes", "parameterRanges", "primitiveCalls", "triggers", "doc",
+)  # fmt: skip
 _CALL = ("name", "arguments", "delay", "priority")
 _ADAPTER = ("name", "ros", "fields", "doc")
 _FIELD = ("name", "type", "unit", "ros", "doc")
@@ -753,8 +755,9 @@ class _Importer:
         names = [
             i for v in self.array(m.get("parameters"), "`parameters`") if (i := self.ident(v, "a parameter"))
         ]
+        ranges = self.ranges(m, len(names))
         if "parameterTypes" not in m:
-            return tuple(ast.Param(n, ast.Ident(infer(n), n.span), n.span) for n in names)
+            return tuple(ast.Param(n, ast.Ident(infer(n), n.span), n.span, *r) for n, r in zip(names, ranges))
         types = [
             i for v in self.array(m["parameterTypes"], "`parameterTypes`") if (i := self.ident(v, "a type"))
         ]
@@ -764,7 +767,27 @@ class _Importer:
                 f"`parameterTypes` has {len(types)} entries for {len(names)} parameters",
             )
             return ()
-        return tuple(ast.Param(n, t, n.span) for n, t in zip(names, types))
+        return tuple(ast.Param(n, t, n.span, *r) for n, t, r in zip(names, types, ranges))
+
+    def ranges(self, m: Members, count: int) -> list[tuple[ast.Expr | None, ast.Expr | None]]:
+        """`parameterRanges`: `[low, high]` or null for each parameter."""
+        none: tuple[ast.Expr | None, ast.Expr | None] = (None, None)
+        if "parameterRanges" not in m:
+            return [none] * count
+        items = self.array(m["parameterRanges"], "`parameterRanges`")
+        if len(items) != count:
+            self.error(m["parameterRanges"].span, f"`parameterRanges` has {len(items)} entries for {count} parameters")
+            return [none] * count
+        built = []
+        for item in items:
+            bounds = () if isinstance(item, JNull) else self.array(item, "a parameter's range")
+            if len(bounds) == 2:
+                built.append((self.expr(bounds[0], None), self.expr(bounds[1], None)))
+            else:
+                if not isinstance(item, JNull):
+                    self.error(item.span, "a parameter's range is `[low, high]` or null")
+                built.append(none)
+        return built
 
     def args(self, value: JValue | None, types: tuple[str, ...]) -> tuple[ast.Expr, ...]:
         items = self.array(value, "`arguments`")

@@ -719,6 +719,7 @@ class _Driver:
                     doc += ["", f"Periodic: runs on every tick of `{self.owner[iface.name]}`."]
                 w.line(_docstring("\n".join(doc)))
                 self.comment(w, iface.span, f"interface {iface.name}" + (" (periodic)" if iface.periodic else ""))
+                _in_ranges(w, iface.name, iface.params, local)
                 for c in iface.run_order():
                     prim = self.model.primitives[c.primitive]
                     options = [f"priority {c.priority}"] if c.priority else []
@@ -748,6 +749,7 @@ class _Driver:
         with w.block(f"def _primitive_{prim.name}(self{signature}) -> None:"):
             w.line(_docstring(prim.doc or f"The primitive `{prim.name}`."))
             self.comment(w, prim.span, f"primitive {prim.name} on {prim.connection}")
+            _in_ranges(w, prim.name, prim.params, local)
             request = f"{const}_REQUEST"
             if _constant_request(prim) is None:
                 self.encode(w, prim, names)
@@ -1080,6 +1082,16 @@ def _constant_request(prim: m.Primitive) -> bytes | None:
     except (struct.error, ValueError, TypeError):
         return None  # refused when it runs, every time, as the runtime refuses it
     return None
+
+
+def _in_ranges(w: Writer, owner: str, params: tuple[m.Parameter, ...], local: Mapping[str, str]) -> None:
+    """A value outside its parameter's declared range is refused, as the runtime refuses it."""
+    for prm in params:
+        if prm.low is not None:
+            name = local[prm.name]
+            with w.block(f"if not {prm.low!r} <= {name} <= {prm.high!r}:"):
+                w.line(f'raise RdisValueError(f"{_identifier(owner)}: parameter {prm.name} is {{{name}!r}}, '
+                       f'outside {prm.range_text()}")')
 
 
 def _substituted(e: m.Expr, bound: Mapping[str, m.Expr]) -> m.Expr:

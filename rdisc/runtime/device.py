@@ -81,6 +81,10 @@ Values = Callable[[Mapping[str, m.Value], Any], list[m.Value]]
 """Prepared expressions evaluated in turn: `values(state, local)` is the list of their values."""
 
 
+Ranges = tuple[tuple[int, str, float, float], ...]
+"""The declared ranges of parameters: (position, name, low, high)."""
+
+
 @dataclass(frozen=True, slots=True)
 class _PrimitivePlan:
     name: str
@@ -92,6 +96,7 @@ class _PrimitivePlan:
     actions: tuple[tuple[str, Prepared, m.Type], ...]
     frame: _FramePlan | None = None
     expects_reply: bool = False
+    ranges: Ranges = ()
 
 
 @dataclass(frozen=True, slots=True)
@@ -127,6 +132,7 @@ class _InterfacePlan:
     calls: tuple[_CallPlan, ...]  # in run order
     output: _OutputPlan | None
     connection: str | None  # the owner, for a periodic interface
+    ranges: Ranges = ()
 
 
 @dataclass(frozen=True, slots=True)
@@ -175,7 +181,7 @@ class Description:
         return _PrimitivePlan(p.name, p.connection, _params(p.params), _float_slots(p.params),
                               _values([prepare(a, slots) for a in p.args]),
                               Codec(p, self.model.connections[p.connection].terminator_bytes()), actions,
-                              frame, p.expects_reply(self.model.frames))
+                              frame, p.expects_reply(self.model.frames), _ranges(p.params))
 
     def _output(self, o: m.DomainOutput) -> _OutputPlan:
         adapter = self.model.adapters[o.adapter]
@@ -186,7 +192,8 @@ class Description:
         calls = tuple(self._call(c, slots) for c in iface.run_order())
         owner = calls[0].primitive.connection if calls else next(iter(self.model.connections), None)
         output = self.outputs[iface.triggers] if iface.triggers else None
-        return _InterfacePlan(iface.name, _params(iface.params), _float_slots(iface.params), calls, output, owner)
+        return _InterfacePlan(iface.name, _params(iface.params), _float_slots(iface.params), calls, output, owner,
+                              _ranges(iface.params))
 
     def _call(self, call: m.PrimitiveCall, slots: dict[str, int]) -> _CallPlan:
         """A call, with the primitive's format arguments substituted where that changes nothing.
@@ -203,7 +210,7 @@ class Description:
         used = [a.name for a in primitive.args if isinstance(a, m.Var) and a.scope is m.Scope.PARAM]
         simple = all(isinstance(a, m.Const) or (isinstance(a, m.Var) and a.scope is m.Scope.PARAM)
                      for a in primitive.args)
-        if primitive.actions or primitive.frame or not simple or used != params:
+        if primitive.actions or primitive.frame or _ranges(primitive.params) or not simple or used != params:
             return _CallPlan(plan, _values([prepare(a, slots) for a in call.args]), delay)
         by_param = dict(zip(params, zip(primitive.params, call.args)))
         direct: list[Prepared | m.Const] = []
@@ -222,7 +229,8 @@ class Description:
         interface = self.interfaces[i.interface]
         widen = tuple(slot for slot in interface.float_slots if not always_float(i.args[slot]))
         calls = interface.calls
-        call = calls[0] if len(calls) == 1 and calls[0].direct and not calls[0].delay else None
+        direct = len(calls) == 1 and calls[0].direct and not calls[0].delay and not interface.ranges
+        call = calls[0] if direct else None
         return _InputPlan(i.name, i.adapter, fields, _values([prepare(a) for a in i.args]), interface, widen, call)
 
     def hook(self, hook: m.HookCall) -> _HookPlan:
@@ -255,6 +263,17 @@ def _widened(f: Prepared) -> Prepared:
         return float(value) if type(value) is int else value
 
     return widened
+
+
+def _ranges(params: tuple[m.Parameter, ...]) -> Ranges:
+    return tuple((i, p.name, p.low, p.high) for i, p in enumerate(params) if p.low is not None)  # type: ignore[misc]
+
+
+def _in_ranges(owner: str, ranges: Ranges, values: list[m.Value]) -> None:
+    """A value outside its parameter's declared range is refused before anything is sent."""
+    for i, name, low, high in ranges:
+        if not low <= values[i] <= high:  # type: ignore[operator]
+            raise RdisValueError(f"{owner}: parameter {name} is {values[i]!r}, outside {low!r}..{high!r}")
 
 
 def _params(params: tuple[m.Parameter, ...]) -> tuple[tuple[str, m.Type], ...]:
@@ -567,6 +586,8 @@ class Robot:
         """Run an interface with its parameters' values (the list is bound in place)."""
         if plan.float_slots:
             _widen(plan.name, plan.float_slots, args)
+        if plan.ranges:
+            _in_ranges(plan.name, plan.ranges, args)
         for call in plan.calls:
             try:
                 values = call.args(self._state, args)
@@ -584,6 +605,8 @@ class Robot:
     def _run_primitive(self, plan: _PrimitivePlan, args: list[m.Value]) -> None:
         if plan.float_slots:
             _widen(plan.name, plan.float_slots, args)
+        if plan.ranges:
+            _in_ranges(plan.name, plan.ranges, args)
         try:
             values = plan.args(self._state, args)
         except _EVAL_ERRORS as err:

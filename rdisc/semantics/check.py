@@ -108,8 +108,28 @@ class _Checker:
                     labels=(Label(seen[p.name.text].name.span, "first declared here"),),
                 )
             seen[p.name.text] = p
-            out.append(m.Parameter(p.name.text, self.type_name(p.type)))  # type: ignore[arg-type]
+            type_ = self.type_name(p.type)
+            low, high = self.param_range(p, type_)
+            out.append(m.Parameter(p.name.text, type_, low, high))  # type: ignore[arg-type]
         return tuple(out)
+
+    def param_range(self, p: ast.Param, type_: Type | None) -> tuple[float | None, float | None]:
+        """`in low..high`: constant numbers of the parameter's type, low <= high."""
+        if p.low is None or p.high is None:
+            return None, None
+        if type_ not in (Type.INT, Type.FLOAT):
+            self.d.report("E204", p.low.span.to(p.high.span), f"only a number has a range, not `{p.type.text}`")
+            return None, None
+        low, high = self.setting(p.low, "a range's bound"), self.setting(p.high, "a range's bound")
+        if low is None or high is None:
+            return None, None
+        if type_ is Type.INT and (low != int(low) or high != int(high)):
+            self.d.report("E204", p.low.span.to(p.high.span), "an int parameter's range has int bounds")
+            return None, None
+        if low > high:
+            self.d.report("E204", p.low.span.to(p.high.span), f"the range {low:g}..{high:g} is empty")
+            return None, None
+        return (int(low), int(high)) if type_ is Type.INT else (float(low), float(high))
 
     def env_with(self, extra: dict[str, tuple[Scope, Type]], where: str, sees: str, **kw) -> Env:
         names = dict(self.state_env)
@@ -167,6 +187,11 @@ class _Checker:
             return args
         for arg, expr, param in zip(args, call.args, params):
             self.flow(arg, param.type, expr.span, f"parameter `{param.name}` of {kind} `{name}`")
+            value = self.typer.constant(arg)
+            if (param.low is not None and isinstance(value, (int, float)) and not isinstance(value, bool)
+                    and not param.low <= value <= param.high):  # type: ignore[operator]
+                self.d.report("E403", expr.span, f"{shown(value)} is outside the range of parameter "
+                              f"`{param.name}` of {kind} `{name}`", label=f"in {param.range_text()}")
         return args
 
     # -- elements ----------------------------------------------------------------------

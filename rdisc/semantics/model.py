@@ -115,6 +115,11 @@ Expr = Const | Var | ReplyValue | UnaryOp | BinaryOp | IfElse | FuncCall
 class Parameter:
     name: str
     type: Type
+    low: int | float | None = None  # the range a value must be in, when declared
+    high: int | float | None = None
+
+    def range_text(self) -> str:
+        return f"{self.low!r}..{self.high!r}"
 
 
 @dataclass(frozen=True, slots=True)

@@ -120,6 +120,8 @@ class Param:
     name: Ident
     type: Ident
     span: Span = _span
+    low: Expr | None = None  # `in low..high`
+    high: Expr | None = None
 
 
 @dataclass(frozen=True, slots=True)

@@ -144,7 +144,13 @@ def _block(head: str, lines: list[str]) -> list[str]:
 
 
 def _params(params: tuple[ast.Param, ...]) -> str:
-    return ", ".join(f"{param.name.text}: {param.type.text}" for param in params)
+    return ", ".join(f"{param.name.text}: {param.type.text}" + _range(param) for param in params)
+
+
+def _range(param: ast.Param) -> str:
+    if param.low is None or param.high is None:
+        return ""
+    return f" in {print_expr(param.low)}..{print_expr(param.high)}"
 
 
 def _args(args: tuple[ast.Expr, ...]) -> str:
