@@ -386,6 +386,16 @@ class _Driver:
             w.blank(1)
             with w.block("def __len__(self) -> int:"):
                 w.line("return len(_STATE_ATTRIBUTES)")
+            w.blank(1)
+            with w.block("def _replaced(self, changes: dict[str, Value]) -> State:"):
+                w.line(_docstring(
+                    "A copy with `changes` (attribute: value), as `dataclasses.replace` makes it but\n"
+                    "without running `__init__` again, which would cost more than decoding a reply."
+                ))
+                w.line("new = object.__new__(State)")
+                w.line("new.__dict__.update(self.__dict__)")
+                w.line("new.__dict__.update(changes)")
+                w.line("return new")
         w.blank(2)
         attributes = ", ".join(f"{quoted(name)}: {quoted(attr)}" for name, attr in self.state_attrs.items())
         w.line(f"_STATE_ATTRIBUTES: dict[str, str] = {{{attributes}}}")
@@ -876,14 +886,13 @@ class _Driver:
         with w.block("with self._state_lock:  # every value from the same state, then all assigned"):
             w.line("state = self._state")
             with w.block("try:"):
-                w.line("self._state = dataclasses.replace(")
+                w.line("self._state = state._replaced({")
                 with w.indented():
-                    w.line("state,")
                     for action in prim.actions:
                         value = self.exprs.bound(action.value, self.model.states[action.target].type, names)
                         self.comment(w, action.span)
-                        _emit(w, f"{self.state_attrs[action.target]}=", value, ",")
-                w.line(")")
+                        _emit(w, f"{quoted(self.state_attrs[action.target])}: ", value, ",")
+                w.line("})")
             _value_error(w, prim.name)
 
     # -- module-level tables, connect() and the command line ------------------------------------------

@@ -304,6 +304,15 @@ class State(Mapping[str, Value]):
     def __len__(self) -> int:
         return len(_STATE_ATTRIBUTES)
 
+    def _replaced(self, changes: dict[str, Value]) -> State:
+        """A copy with `changes` (attribute: value), as `dataclasses.replace` makes it but
+        without running `__init__` again, which would cost more than decoding a reply.
+        """
+        new = object.__new__(State)
+        new.__dict__.update(self.__dict__)
+        new.__dict__.update(changes)
+        return new
+
 
 _STATE_ATTRIBUTES: dict[str, str] = {"bumperStates": "bumperStates"}
 """The attribute of State that holds each state variable, by name."""
@@ -669,11 +678,10 @@ class IrobotCreate:
         with self._state_lock:  # every value from the same state, then all assigned
             state = self._state
             try:
-                self._state = dataclasses.replace(
-                    state,
+                self._state = state._replaced({
                     # create.rdis:41
-                    bumperStates=reply[0],
-                )
+                    "bumperStates": reply[0],
+                })
             except _EVAL_ERRORS as err:
                 raise RdisValueError(f"bumpers: {err}") from err
 

@@ -404,6 +404,15 @@ class State(Mapping[str, Value]):
     def __len__(self) -> int:
         return len(_STATE_ATTRIBUTES)
 
+    def _replaced(self, changes: dict[str, Value]) -> State:
+        """A copy with `changes` (attribute: value), as `dataclasses.replace` makes it but
+        without running `__init__` again, which would cost more than decoding a reply.
+        """
+        new = object.__new__(State)
+        new.__dict__.update(self.__dict__)
+        new.__dict__.update(changes)
+        return new
+
 
 _STATE_ATTRIBUTES: dict[str, str] = {"speedUnit": "speedUnit", "metersPerPulse": "metersPerPulse", "wheelBase": "wheelBase", "maxSpeed": "maxSpeed", "obstacleThreshold": "obstacleThreshold", "leftSpeed": "leftSpeed", "rightSpeed": "rightSpeed", "leftCount": "leftCount", "rightCount": "rightCount", "odomX": "odomX", "odomY": "odomY", "odomTheta": "odomTheta", "proximity": "proximity"}
 """The attribute of State that holds each state variable, by name."""
@@ -773,13 +782,12 @@ class Koala:
         with self._state_lock:  # every value from the same state, then all assigned
             state = self._state
             try:
-                self._state = dataclasses.replace(
-                    state,
+                self._state = state._replaced({
                     # koala.rdis:89
-                    leftSpeed=_int(reply[0]),
+                    "leftSpeed": _int(reply[0]),
                     # koala.rdis:90
-                    rightSpeed=_int(reply[1]),
-                )
+                    "rightSpeed": _int(reply[1]),
+                })
             except _EVAL_ERRORS as err:
                 raise RdisValueError(f"read_speed: {err}") from err
 
@@ -797,13 +805,12 @@ class Koala:
         with self._state_lock:  # every value from the same state, then all assigned
             state = self._state
             try:
-                self._state = dataclasses.replace(
-                    state,
+                self._state = state._replaced({
                     # koala.rdis:96
-                    leftCount=left,
+                    "leftCount": left,
                     # koala.rdis:97
-                    rightCount=right,
-                )
+                    "rightCount": right,
+                })
             except _EVAL_ERRORS as err:
                 raise RdisValueError(f"set_position: {err}") from err
 
@@ -824,10 +831,9 @@ class Koala:
         with self._state_lock:  # every value from the same state, then all assigned
             state = self._state
             try:
-                self._state = dataclasses.replace(
-                    state,
+                self._state = state._replaced({
                     # koala.rdis:110
-                    odomX=_add(
+                    "odomX": _add(
                         state.odomX,
                         _mul(
                             _mul(
@@ -854,7 +860,7 @@ class Koala:
                         ),
                     ),
                     # koala.rdis:113
-                    odomY=_add(
+                    "odomY": _add(
                         state.odomY,
                         _mul(
                             _mul(
@@ -881,7 +887,7 @@ class Koala:
                         ),
                     ),
                     # koala.rdis:116
-                    odomTheta=math.atan2(
+                    "odomTheta": math.atan2(
                         math.sin(
                             _add(
                                 state.odomTheta,
@@ -912,10 +918,10 @@ class Koala:
                         ),
                     ),
                     # koala.rdis:120
-                    leftCount=_int(reply[0]),
+                    "leftCount": _int(reply[0]),
                     # koala.rdis:121
-                    rightCount=_int(reply[1]),
-                )
+                    "rightCount": _int(reply[1]),
+                })
             except _EVAL_ERRORS as err:
                 raise RdisValueError(f"read_position: {err}") from err
 
@@ -927,10 +933,9 @@ class Koala:
         with self._state_lock:  # every value from the same state, then all assigned
             state = self._state
             try:
-                self._state = dataclasses.replace(
-                    state,
+                self._state = state._replaced({
                     # koala.rdis:127
-                    proximity=max(
+                    "proximity": max(
                         max(
                             _int(reply[0]),
                             _int(reply[1]),
@@ -952,7 +957,7 @@ class Koala:
                             _int(reply[15]),
                         ),
                     ),
-                )
+                })
             except _EVAL_ERRORS as err:
                 raise RdisValueError(f"read_proximity: {err}") from err
 
