@@ -41,8 +41,15 @@ _KINDS = {"b": "s8", "B": "u8", "h": "s16", "H": "u16", "i": "s32", "I": "u32", 
           "q": "s64", "Q": "u64", "e": "f16", "f": "f32", "d": "f64", "?": "bool", "c": "char"}
 
 
+def _size(fmt: str, code: str) -> int | None:
+    """Bytes of one struct code of a format; None for `*`, the rest of the message."""
+    return None if code == "*" else formats.struct_layout(_code_format(fmt, code)).size
+
+
 def _kind(fmt: str, code: str) -> str:
-    """`s16 BE`, `u8`, `text`: what a struct code holds, with its byte order when it has one."""
+    """`s16 BE`, `u8`, `text`, `bytes`: what a struct code holds, with its byte order when it has one."""
+    if code == "*":
+        return "bytes (the rest)"
     size = formats.struct_layout(_code_format(fmt, code)).size
     kind = _KINDS.get(code[-1], "text")
     if size == 1 or kind == "text":
@@ -54,8 +61,7 @@ def _payload_rows(encoding: m.Pack | m.Format, args: tuple[m.Expr, ...]) -> list
     match encoding:
         case m.Pack(format=fmt):
             slots = formats.struct_layout(fmt).slots
-            return [(formats.struct_layout(_code_format(fmt, s.code)).size, _kind(fmt, s.code),
-                     expression_text(a)) for s, a in zip(slots, args)]
+            return [(_size(fmt, s.code), _kind(fmt, s.code), expression_text(a)) for s, a in zip(slots, args)]
         case m.Format(template=template):
             shown = ", ".join(expression_text(a) for a in args)
             return [(None, "text", f'"{template}"' + (f" ({shown})" if shown else ""))]
@@ -71,8 +77,7 @@ def _reply_rows(decoding: m.Unpack | m.Regex | None) -> list[Row]:
     match decoding:
         case m.Unpack(format=fmt):
             slots = formats.struct_layout(fmt).slots
-            return [(formats.struct_layout(_code_format(fmt, s.code)).size, _kind(fmt, s.code), f"out[{i}]")
-                    for i, s in enumerate(slots)]
+            return [(_size(fmt, s.code), _kind(fmt, s.code), f"out[{i}]") for i, s in enumerate(slots)]
         case m.Regex(pattern=pattern):
             return [(None, "text", f"regex {pattern!r}")]
         case None:

@@ -26,7 +26,7 @@ from collections.abc import Iterable, Mapping
 from typing import NoReturn
 
 from rdisc.emit import python_support as support
-from rdisc.emit.python_expr import Compiler, Py, call, lines, literal, quoted, state_key
+from rdisc.emit.python_expr import Compiler, Py, binary, call, lines, literal, quoted, state_key
 from rdisc.emit.writer import Writer
 from rdisc.runtime.codec import frame_fields
 from rdisc.semantics import formats
@@ -37,7 +37,7 @@ from rdisc.syntax import precedence as p
 
 __all__ = ["to_python"]
 
-_PY_TYPES = {Type.INT: "int", Type.FLOAT: "float", Type.BOOL: "bool", Type.STRING: "str"}
+_PY_TYPES = {Type.INT: "int", Type.FLOAT: "float", Type.BOOL: "bool", Type.STRING: "str", Type.BYTES: "bytes"}
 
 # Names a method body of the driver may use: a parameter or field of the same
 # name would hide them, so such a parameter gets a trailing underscore.
@@ -341,7 +341,9 @@ class _Driver:
                         w.line(f"{const}_REQUEST = {quoted(fixed)}  # pack {quoted(fmt)} {_shown_args(prim)}")
                     else:
                         self.uses_struct = True
-                        w.line(f"{const}_REQUEST = struct.Struct({quoted(fmt)})")
+                        layout = formats.struct_layout(fmt)
+                        w.line(f"{const}_REQUEST = struct.Struct({quoted(layout.fixed)})"
+                               + ("  # then the rest: bytes" if layout.rest else ""))
                 case m.Format(template=template):
                     if fixed is not None:
                         w.line(f"{const}_REQUEST = {quoted(fixed)}  # format {quoted(template)} {_shown_args(prim)}")
@@ -352,7 +354,9 @@ class _Driver:
             match prim.decoding:
                 case m.Unpack(format=fmt):
                     self.uses_struct = True
-                    w.line(f"{const}_REPLY = struct.Struct({quoted(fmt)})")
+                    layout = formats.struct_layout(fmt)
+                    w.line(f"{const}_REPLY = struct.Struct({quoted(layout.fixed)})"
+                           + ("  # then the rest: bytes" if layout.rest else ""))
                 case m.Regex(pattern=pattern):
                     w.line(f"{const}_REPLY = re.compile({quoted(pattern)})")
                 case None:
@@ -805,7 +809,7 @@ class _Driver:
         if exprs.reads_state:
             w.line("state = self._state")
         with w.block("try:"):
-            w.line(f"fields = [{', '.join(lines(v, 1 << 20)[0] for v in values)}]")
+            w.line(f"fields: list[int] = [{', '.join(lines(v, 1 << 20)[0] for v in values)}]")
             w.line(f"request = {wire}.wrap({request}, fields)")
         w.line("except (struct.error, *_EVAL_ERRORS) as err:")
         w.line(f'    raise RdisValueError(f"{_identifier(prim.name)}: {{err}}") from err')
@@ -828,9 +832,10 @@ class _Driver:
         match prim.decoding:
             case None:
                 w.line(f"self._exchange_frame({link}, request, {wire}, fields, 0)")
-            case m.Unpack():
+            case m.Unpack(format=fmt):
+                size = "-1" if formats.struct_layout(fmt).rest else f"{const}_REPLY.size"
                 w.line(f"{'data = ' if uses_reply else ''}self._exchange_frame("
-                       f"{link}, request, {wire}, fields, {const}_REPLY.size)")
+                       f"{link}, request, {wire}, fields, {size})")
                 if uses_reply:
                     self.unpacked(w, prim, "data")
             case m.Regex():
@@ -843,9 +848,12 @@ class _Driver:
         """`reply = ...`: the values of an `unpack` reply."""
         assert isinstance(prim.decoding, m.Unpack)
         const = self.codecs[prim.name]
-        strings = tuple(i for i, slot in enumerate(formats.struct_layout(prim.decoding.format).slots)
-                        if slot.type is Type.STRING)
-        if strings:
+        layout = formats.struct_layout(prim.decoding.format)
+        strings = tuple(i for i, slot in enumerate(layout.slots) if slot.type is Type.STRING)
+        if layout.rest:
+            self.exprs.helpers.add("_unpacked_rest")
+            w.line(f"reply = _unpacked_rest({quoted(prim.name)}, {const}_REPLY, {data}, {strings!r})")
+        elif strings:
             self.exprs.helpers.add("_decoded")
             w.line(f"reply = _decoded({const}_REPLY.unpack({data}), {strings!r})")
         else:
@@ -859,13 +867,15 @@ class _Driver:
         const = self.codecs[prim.name]
         match prim.encoding:
             case m.Pack(format=fmt):
-                slots = formats.struct_layout(fmt).slots
+                layout = formats.struct_layout(fmt)
                 values = [
                     call(f"{v.at(p.ATOM).text}.encode", [literal("latin-1", Type.STRING)])
                     if slot.type is Type.STRING else v
-                    for v, slot in zip(values, slots)
+                    for v, slot in zip(values, layout.slots)
                 ]
                 encoded, suffix = call(f"{const}_REQUEST.pack", values), ""
+                if layout.rest:  # the fixed part, then the bytes as they are
+                    encoded = binary("+", call(f"{const}_REQUEST.pack", values[:-1]), values[-1])
                 errors = "(struct.error, *_EVAL_ERRORS)"
             case m.Format():
                 encoded, suffix = call(f"{const}_REQUEST.format", values), '.encode("latin-1")'

@@ -274,6 +274,10 @@ class Compiler:
                 return call(func, [self.expr(a, names) for a in args])
             case "clamp":
                 return self.helper("_clamp", [self.expr(a, names) for a in args])
+            case "len":
+                return call("len", [self.expr(args[0], names)])
+            case "byte":
+                return self.helper("_byte", [self.expr(a, names) for a in args])
             case "sqrt" | "sin" | "cos" | "atan2" | "hypot":
                 return call(f"math.{func}", [self.expr(a, names) for a in args])
         raise ValueError(f"unknown function {func!r}")

@@ -131,6 +131,21 @@ def _decoded(values: tuple[Any, ...], strings: tuple[int, ...]) -> tuple[Any, ..
     for i in strings:
         decoded[i] = decoded[i].decode("latin-1")
     return tuple(decoded)''',
+    "_unpacked_rest": '''\
+def _unpacked_rest(primitive: str, fixed: struct.Struct, data: bytes, strings: tuple[int, ...]) -> tuple[Any, ...]:
+    """The values of a reply ending in `*`: the fixed part, then the rest as bytes."""
+    if len(data) < fixed.size:
+        raise RdisProtocolError(f"{primitive}: expected {fixed.size} bytes or more, got {len(data)}")
+    values = list(fixed.unpack_from(data))
+    for i in strings:
+        values[i] = values[i].decode("latin-1")
+    return (*values, data[fixed.size :])''',
+    "_byte": '''\
+def _byte(data: bytes, index: int) -> int:
+    """`byte(b, i)`: byte i of bytes b, 0 first."""
+    if not 0 <= index < len(data):
+        raise IndexError(f"byte {index} of {len(data)} bytes: no such byte")
+    return data[index]''',
     "_match": '''\
 def _match(primitive: str, regex: re.Pattern[str], line: str) -> tuple[str, ...]:
     """The groups of a reply line (an unmatched group is ""); a line that does not match is an error."""
@@ -247,7 +262,15 @@ def _accept(value: Any, kind: type, what: str) -> Any:
         return int(value)
     if kind is str and isinstance(value, str):
         return value
-    names = {float: "float", int: "int", bool: "bool", str: "string"}
+    if kind is bytes:  # bytes, a bytearray, a list of ints 0..255, or hex text ("3c20")
+        try:
+            if isinstance(value, str):
+                return bytes.fromhex(value)
+            if isinstance(value, (bytes, bytearray, memoryview, list, tuple)):
+                return bytes(value)
+        except (ValueError, TypeError) as err:
+            raise TypeError(f"{what} must be bytes: {err}") from None
+    names = {float: "float", int: "int", bool: "bool", str: "string", bytes: "bytes"}
     raise TypeError(f"{what} must be {names[kind]}, not {type(value).__name__} {value!r}")
 
 

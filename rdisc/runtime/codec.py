@@ -66,6 +66,7 @@ class Codec:
     __slots__ = (
         "_pack",
         "_regex",
+        "_rest",
         "_strings",
         "_template",
         "_unpack",
@@ -84,26 +85,30 @@ class Codec:
         self.terminator = terminator  # ends a reply line (its connection's)
         self._pack: struct.Struct | None = None
         self._strings: tuple[int, ...] = ()  # indexes of values packed as bytes
+        self._rest = False  # the request ends in `*`: its last value is bytes, appended as it is
         self._template: str | None = None
         self.encode: Callable[..., bytes]
         match primitive.encoding:
             case m.Pack(format=fmt):
-                self._pack = struct.Struct(fmt)
+                layout = formats.struct_layout(fmt)
+                self._pack = struct.Struct(layout.fixed)
                 self._strings = _string_slots(fmt)
-                self.encode = self._pack.pack if not self._strings else self._pack_strings
+                self.encode = self._pack.pack if not self._strings and not layout.rest else self._pack_strings
+                self._rest = layout.rest
             case m.Format(template=template):
                 self._template = template
                 self.encode = self._format
-        self.reply_size = 0  # bytes of an `unpack` reply; 0 when there is none
+        self.reply_size = 0  # bytes of an `unpack` reply (-1: it ends in `*`); 0 when there is none
         self._unpack: struct.Struct | None = None
         self._unpack_strings: tuple[int, ...] = ()
         self.pattern: str | None = None
         self._regex: re.Pattern[str] | None = None
         match primitive.decoding:
             case m.Unpack(format=fmt):
-                self._unpack = struct.Struct(fmt)
+                layout = formats.struct_layout(fmt)
+                self._unpack = struct.Struct(layout.fixed)
                 self._unpack_strings = _string_slots(fmt)
-                self.reply_size = self._unpack.size
+                self.reply_size = -1 if layout.rest else self._unpack.size
             case m.Regex(pattern=pattern):
                 self.pattern = pattern
                 self._regex = re.compile(pattern)
@@ -115,14 +120,15 @@ class Codec:
         return RdisValueError(f"{self.name}: {err}")
 
     def _pack_strings(self, *values: m.Value) -> bytes:
-        packed: list[object] = list(values)
+        packed: list[object] = list(values[:-1] if self._rest else values)
         for i in self._strings:
             packed[i] = _latin1(self.name, packed[i])
         assert self._pack is not None
         try:
-            return self._pack.pack(*packed)
+            fixed = self._pack.pack(*packed)
         except struct.error as err:
             raise self.refused(err) from None
+        return fixed + values[-1] if self._rest else fixed  # type: ignore[operator]
 
     def _format(self, *values: m.Value) -> bytes:
         assert self._template is not None
@@ -135,9 +141,14 @@ class Codec:
     def decode(self, data: bytes) -> tuple[m.Value, ...]:
         """The values of an `unpack` reply; fewer bytes than its size is RdisProtocolError."""
         assert self._unpack is not None
-        if len(data) != self.reply_size:
+        if self.reply_size < 0:  # a fixed part, then the rest as bytes
+            if len(data) < self._unpack.size:
+                raise RdisProtocolError(f"{self.name}: expected {self._unpack.size} bytes or more, got {len(data)}")
+            values = (*self._unpack.unpack_from(data), data[self._unpack.size :])
+        elif len(data) != self.reply_size:
             raise RdisProtocolError(f"{self.name}: expected {self.reply_size} bytes, got {len(data)}")
-        values = self._unpack.unpack(data)
+        else:
+            values = self._unpack.unpack(data)
         if self._unpack_strings:
             decoded = list(values)
             for i in self._unpack_strings:

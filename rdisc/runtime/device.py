@@ -656,7 +656,7 @@ class Robot:
             if expects_reply:
                 try:
                     if frame is not None and frame.reads:
-                        size = codec.reply_size if codec.reply_size or not codec.expects_reply else -1
+                        size = codec.reply_size if codec.reply_size > 0 or not codec.expects_reply else -1
                         data, payload = frame.wire.read(io, fields, request, size)  # type: ignore[arg-type]
                     else:
                         data = bytes(io.read_until(codec.terminator, MAX_LINE) if codec.reads_line
@@ -774,6 +774,18 @@ def _accept_fields(plan: _InputPlan, fields: dict[str, Any]) -> dict[str, m.Valu
                     f"given: {', '.join(fields) or 'none'}")
 
 
+def _bytes(value: Any, what: str) -> bytes:
+    """Bytes given as bytes, a bytearray, a list of ints 0..255 or hex text ("3c20")."""
+    try:
+        if isinstance(value, str):
+            return bytes.fromhex(value)
+        if isinstance(value, (bytes, bytearray, memoryview, list, tuple)):
+            return bytes(value)
+    except (ValueError, TypeError) as err:
+        raise TypeError(f"{what} must be bytes: {err}") from None
+    raise TypeError(f"{what} must be bytes, not {type(value).__name__} {value!r}")
+
+
 def _accept(value: Any, type_: m.Type, what: str) -> m.Value:
     """A value given for a parameter or field of this type, made that type; else TypeError."""
     kind = type(value)
@@ -790,6 +802,8 @@ def _accept(value: Any, type_: m.Type, what: str) -> m.Value:
     elif type_ is m.Type.BOOL:
         if kind is bool:
             return value
+    elif type_ is m.Type.BYTES:
+        return _bytes(value, what)
     elif isinstance(value, str):
         return value
     raise TypeError(f"{what} must be {type_.value}, not {kind.__name__} {value!r}")

@@ -9,7 +9,6 @@ ASCII messages are counted at their shortest, so a warning is never a false alar
 
 from __future__ import annotations
 
-import struct
 from dataclasses import dataclass
 
 from rdisc.diagnostics import Diagnostics
@@ -138,7 +137,7 @@ def exchange(model: m.Model, iface: m.Interface, connection: str) -> Exchange:
     delays = 0.0
     for call in iface.calls:
         prim = model.primitives[call.primitive]
-        size = message_bytes(prim)
+        size = message_bytes(prim, model.frames)
         baud = model.connections[prim.connection].baud
         wire += size * BITS_PER_BYTE * 1000.0 / baud
         if prim.connection == connection:
@@ -147,19 +146,38 @@ def exchange(model: m.Model, iface: m.Interface, connection: str) -> Exchange:
     return Exchange(iface.name, count, wire, delays)
 
 
-def message_bytes(prim: m.Primitive) -> int:
-    """Bytes of the request and the reply (ASCII counted at its shortest)."""
+def message_bytes(prim: m.Primitive, frames: dict[str, m.Frame] | None = None) -> int:
+    """Bytes of the request and the reply, frames included (ASCII, and data of any
+    length, counted at their shortest)."""
+    frame = (frames or {}).get(prim.frame.frame) if prim.frame is not None else None
+    framing = 0
+    if frame is not None:
+        framing = frame_bytes(frame.request) + (frame_bytes(frame.reply) if prim.expects_reply(frames or {}) else 0)
     match prim.encoding:
         case m.Pack(format=fmt):
-            request = struct.calcsize(fmt)
+            request = formats.struct_layout(fmt).size
         case m.Format(template=template):
             values = [a.value if isinstance(a, m.Const) else _SAMPLE[a.type] for a in prim.args]
             request = len(template.format(*values).encode("utf-8"))
     match prim.decoding:
         case m.Unpack(format=fmt):
-            reply = struct.calcsize(fmt)
+            reply = formats.struct_layout(fmt).size
         case m.Regex(pattern=pattern):
             reply = formats.regex_min_length(pattern) + 1  # and its line terminator
         case None:
             reply = 0
-    return request + reply
+    return request + reply + framing
+
+
+def frame_bytes(parts: tuple[m.FramePart, ...]) -> int:
+    """Bytes of a frame side's parts other than the payload."""
+    size = 0
+    for part in parts:
+        match part:
+            case m.FrameBytes(data=data):
+                size += len(data)
+            case m.FrameField(format=fmt) | m.FrameLength(format=fmt):
+                size += formats.struct_layout(fmt).size
+            case m.FrameChecksum(algorithm=a, format=fmt):
+                size += formats.struct_layout(fmt).size if fmt is not None else (a.width + 3) // 4
+    return size

@@ -88,13 +88,19 @@ class _Checker:
 
     # -- shared pieces ---------------------------------------------------------------------
 
-    def type_name(self, ident: ast.Ident) -> Type | None:
+    def type_name(self, ident: ast.Ident, what: str = "") -> Type | None:
+        """A type by name; `what` names a place that holds values over time, where bytes
+        (a parameter's or a reply's variable-length data) cannot go."""
         found = _TYPES.get(ident.text)
         if found is None:
             self.d.report(
                 "E105", ident.span, f"unknown type `{ident.text}`", help=suggest(ident.text, _TYPES) or
-                "types are int, float, bool and string"
+                "types are int, float, bool, string and bytes"
             )
+        elif found is Type.BYTES and what:
+            self.d.report("E105", ident.span, f"{what} cannot be bytes",
+                          help="bytes are for parameters and replies: store `len(out[1])` or `byte(out[1], 0)`")
+            return None
         return found
 
     def params(self, params: tuple[ast.Param, ...], owner: str) -> tuple[m.Parameter, ...]:
@@ -250,13 +256,14 @@ class _Checker:
                 )
                 continue
             seen[f.name.text] = f
-            fields.append(m.AdapterField(f.name.text, self.type_name(f.type), f.unit, f.ros, f.doc))  # type: ignore[arg-type]
+            fields.append(m.AdapterField(f.name.text, self.type_name(f.type, "an adapter field"), f.unit, f.ros,
+                                         f.doc))  # type: ignore[arg-type]
         return m.Adapter(
             decl.name.text, tuple(fields), decl.ros, id(decl) in self.s.standard, decl.doc, decl.span
         )
 
     def state(self, decl: ast.StateDecl) -> m.StateVariable:
-        type_ = self.type_name(decl.type)
+        type_ = self.type_name(decl.type, "a state variable")
         initial: object = type_.default() if type_ else None
         if decl.init is not None:
             errors = self.d.error_count
@@ -381,6 +388,11 @@ class _Checker:
         connection = m.ConnectionRef(on.connection.text) if isinstance(on, ast.On) else m.ConnectionRef("")
         framed = self.once([c for c in decl.clauses if isinstance(c, ast.Framed)], "`frame`", name)
         frame = self.frame_use(framed, env, decl, encoding, decoding) if isinstance(framed, ast.Framed) else None
+        if (isinstance(decoding, m.Unpack) and formats.struct_layout(decoding.format).rest
+                and (frame is None or not self.frames[frame.frame].reply)):
+            self.d.report("E503", decodings[0].span, f"the reply of `{name.text}` ends in `*` (the rest of the "
+                          "message), but no frame says where the reply ends",
+                          help="read it through a frame with a `length` field or constant bytes after its payload")
         return m.Primitive(name.text, params, connection, encoding, args, decoding, actions, decl.doc, decl.span,  # type: ignore[arg-type]
                            frame)
 
@@ -403,12 +415,14 @@ class _Checker:
         if decoding is not None and frame.reply and not has_payload:
             self.d.report("E504", clause.span, f"primitive `{decl.name.text}` decodes a reply, but the reply of "
                           f"frame `{frame.name}` has no `payload`")
-        size = formats.struct_layout(decoding.format).size if isinstance(decoding, m.Unpack) else None
+        reply_layout = formats.struct_layout(decoding.format) if isinstance(decoding, m.Unpack) else None
+        size = reply_layout.size if reply_layout is not None and not reply_layout.rest else None
         if decoding is not None and not payload_end_known(frame, size is not None):
             self.d.report("E503", clause.span, f"the reply of frame `{frame.name}` gives no way to find where the "
                           f"payload of `{decl.name.text}` ends",
                           help="add a `length` field, constant bytes after the payload, or decode with `unpack`")
-        sizes = [(frame.request, formats.struct_layout(encoding.format).size if isinstance(encoding, m.Pack) else None),
+        request_layout = formats.struct_layout(encoding.format) if isinstance(encoding, m.Pack) else None
+        sizes = [(frame.request, request_layout.size if request_layout and not request_layout.rest else None),
                  (frame.reply, size)]
         for parts, payload in sizes:
             length = next((p for p in parts if isinstance(p, m.FrameLength)), None)
@@ -664,7 +678,8 @@ class _Checker:
                               help=f"add `triggers {name}` to the interface that reads its state")
         written = {a.target for p in self.primitives.values() for a in p.actions}
         for name, decl in self.s.states.items():
-            if name not in self.typer.reads and name not in written and id(decl) in self.main_decls:
+            known = self.state_env.get(name, (None, None))[1] is not None  # else its type is reported
+            if name not in self.typer.reads and name not in written and known and id(decl) in self.main_decls:
                 self.d.report("W103", decl.name.span, f"state variable `{name}` is never used",
                               help="read it in an expression, write it in a post-action, or remove it")
 

@@ -39,8 +39,16 @@ class Slot:
 @dataclass(frozen=True, slots=True)
 class StructLayout:
     slots: tuple[Slot, ...]
-    size: int  # bytes on the wire
+    size: int  # bytes on the wire (before the rest, when it ends in `*`)
     native: bool  # no byte-order prefix: host order and alignment
+    rest: bool = False  # ends in `*`: the rest of the message, as bytes
+    fixed: str = ""  # the format without its `*`, for the struct module
+
+
+def split_rest(fmt: str) -> tuple[str, bool]:
+    """A struct format and whether it ended in `*` (the rest of the message, as bytes)."""
+    stripped = fmt.rstrip()
+    return (stripped[:-1], True) if stripped.endswith("*") else (fmt, False)
 
 
 _INT_CODES = "bBhHiIlLqQnN"
@@ -49,7 +57,11 @@ _STRUCT_ITEM = re.compile(r"\s*(\d*)\s*([a-zA-Z?])")
 
 
 def struct_layout(fmt: str) -> StructLayout:
-    """The values a struct format packs or unpacks, one slot per value."""
+    """The values a struct format packs or unpacks, one slot per value. A final `*`
+    stands for the rest of the message: one value of bytes, of any length."""
+    fmt, rest = split_rest(fmt)
+    if "*" in fmt:
+        raise TemplateError("`*` (the rest of the message) comes last", fmt.index("*"))
     order = fmt[:1] if fmt[:1] in "@=<>!" else ""
     body = fmt[len(order) :]
     slots: list[Slot] = []
@@ -96,7 +108,9 @@ def struct_layout(fmt: str) -> StructLayout:
     if size > MAX_MESSAGE:
         raise TemplateError(f"the message is {size} bytes; the limit is {MAX_MESSAGE}", 0, len(fmt))
     native = order in ("", "@") and any(c in "hHiIlLqQnNefd" for c in body)
-    return StructLayout(tuple(slots), size, native)
+    if rest:
+        slots.append(Slot("*", Type.BYTES))
+    return StructLayout(tuple(slots), size, native, rest, fmt)
 
 
 @dataclass(frozen=True, slots=True)

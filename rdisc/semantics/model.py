@@ -27,13 +27,14 @@ class Type(enum.Enum):
     FLOAT = "float"
     BOOL = "bool"
     STRING = "string"
+    BYTES = "bytes"  # parameters and replies only: variable-length binary data
 
     def default(self) -> Value:
         """The value `""` stands for in thesis JSON (section 4.3.3)."""
-        return {Type.INT: 0, Type.FLOAT: 0.0, Type.BOOL: False, Type.STRING: ""}[self]
+        return {Type.INT: 0, Type.FLOAT: 0.0, Type.BOOL: False, Type.STRING: "", Type.BYTES: b""}[self]
 
 
-Value = int | float | bool | str
+Value = int | float | bool | str | bytes
 
 
 # ---- typed expressions ----------------------------------------------------------

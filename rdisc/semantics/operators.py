@@ -169,6 +169,13 @@ def _math(f: Callable[..., float]) -> Callable[..., float]:
     return wrapper
 
 
+def _byte(data: Any, index: Any) -> int:
+    """`byte(b, i)`: byte i of bytes b, 0 first, as an int."""
+    if not 0 <= index < len(data):
+        raise EvalError(f"byte {index} of {len(data)} bytes: no such byte")
+    return int(data[index])
+
+
 FUNCTIONS: dict[str, Callable[..., Any]] = {
     "abs": abs,
     "min": min,
@@ -184,4 +191,6 @@ FUNCTIONS: dict[str, Callable[..., Any]] = {
     "cos": _math(math.cos),
     "atan2": _math(math.atan2),
     "hypot": _math(math.hypot),
+    "len": len,
+    "byte": _byte,
 }

@@ -42,6 +42,8 @@ ARITY = {
     "cos": (1, 1),
     "atan2": (2, 2),
     "hypot": (2, 2),
+    "len": (1, 1),
+    "byte": (2, 2),
 }
 
 
@@ -69,7 +71,8 @@ def unify(a: T, b: T) -> T:
 
 
 def describe(t: Type) -> str:
-    return {Type.INT: "an int", Type.FLOAT: "a float", Type.BOOL: "a bool", Type.STRING: "a string"}[t]
+    return {Type.INT: "an int", Type.FLOAT: "a float", Type.BOOL: "a bool", Type.STRING: "a string",
+            Type.BYTES: "bytes"}[t]
 
 
 class Typer:
@@ -323,11 +326,20 @@ class Typer:
                     return None
                 return Type.INT if len(types) == 1 else Type.FLOAT
             case "int" | "float":
+                if not need("a number, bool or string", (*NUMERIC, Type.BOOL, Type.STRING)):
+                    return None
                 return Type.INT if name == "int" else Type.FLOAT
             case "bool":
                 return Type.BOOL if need("a number or bool", (Type.INT, Type.FLOAT, Type.BOOL)) else None
             case "str":
-                return Type.STRING
+                return Type.STRING if need("a number, bool or string", (*NUMERIC, Type.BOOL, Type.STRING)) else None
+            case "len":
+                return Type.INT if need("bytes or a string", (Type.BYTES, Type.STRING)) else None
+            case "byte":
+                if types[0] is not Type.BYTES or types[1] is not Type.INT:
+                    self.diagnostics.report("E404", e.span, "`byte` takes bytes and an int index: `byte(out[1], 0)`")
+                    return None
+                return Type.INT
             case _:  # sqrt sin cos atan2 hypot
                 return Type.FLOAT if need("numbers", NUMERIC) else None
 

@@ -267,7 +267,15 @@ def _accept(value: Any, kind: type, what: str) -> Any:
         return int(value)
     if kind is str and isinstance(value, str):
         return value
-    names = {float: "float", int: "int", bool: "bool", str: "string"}
+    if kind is bytes:  # bytes, a bytearray, a list of ints 0..255, or hex text ("3c20")
+        try:
+            if isinstance(value, str):
+                return bytes.fromhex(value)
+            if isinstance(value, (bytes, bytearray, memoryview, list, tuple)):
+                return bytes(value)
+        except (ValueError, TypeError) as err:
+            raise TypeError(f"{what} must be bytes: {err}") from None
+    names = {float: "float", int: "int", bool: "bool", str: "string", bytes: "bytes"}
     raise TypeError(f"{what} must be {names[kind]}, not {type(value).__name__} {value!r}")
 
 
