@@ -26,7 +26,7 @@ from collections.abc import Iterable, Mapping
 from typing import NoReturn
 
 from rdisc.emit import python_support as support
-from rdisc.emit.python_expr import Compiler, Py, binary, call, lines, literal, quoted, state_key
+from rdisc.emit.python_expr import Chain, Compiler, Paren, Py, binary, call, lines, literal, quoted, state_key
 from rdisc.emit.writer import Writer
 from rdisc.runtime.codec import frame_fields
 from rdisc.semantics import formats
@@ -1106,8 +1106,14 @@ def _constant_request(prim: m.Primitive) -> bytes | None:
 def _in_ranges(w: Writer, owner: str, params: tuple[m.Parameter, ...], local: Mapping[str, str]) -> None:
     """A value outside its parameter's declared range is refused, as the runtime refuses it."""
     for prm in params:
-        if prm.low is not None:
-            name = local[prm.name]
+        if prm.low is None:
+            continue
+        name = local[prm.name]
+        if prm.type is Type.BYTES:
+            with w.block(f"if not {prm.low!r} <= len({name}) <= {prm.high!r}:"):
+                w.line(f'raise RdisValueError(f"{_identifier(owner)}: parameter {prm.name} has {{len({name})}} '
+                       f'bytes, outside {prm.range_text()}")')
+        else:
             with w.block(f"if not {prm.low!r} <= {name} <= {prm.high!r}:"):
                 w.line(f'raise RdisValueError(f"{_identifier(owner)}: parameter {prm.name} is {{{name}!r}}, '
                        f'outside {prm.range_text()}")')
@@ -1162,8 +1168,12 @@ def _shown_args(prim: m.Primitive) -> str:
 
 
 def _emit(w: Writer, prefix: str, value: Py, suffix: str = "") -> None:
-    """`prefix value suffix` at the writer's depth, the value broken over lines if it is long."""
-    out = lines(value, w.width() - len(prefix) - len(suffix))
+    """`prefix value suffix` at the writer's depth, the value broken over lines if it is long
+    (an operator chain inside parentheses, so that the break is inside them)."""
+    width = w.width() - len(prefix) - len(suffix)
+    if isinstance(value.shape, Chain) and len(value.text) > width:
+        value = Py(f"({value.text})", p.ATOM, Paren(value))
+    out = lines(value, width)
     out[0] = prefix + out[0]
     out[-1] += suffix
     w.lines(out)

@@ -272,8 +272,12 @@ def _ranges(params: tuple[m.Parameter, ...]) -> Ranges:
 def _in_ranges(owner: str, ranges: Ranges, values: list[m.Value]) -> None:
     """A value outside its parameter's declared range is refused before anything is sent."""
     for i, name, low, high in ranges:
-        if not low <= values[i] <= high:  # type: ignore[operator]
-            raise RdisValueError(f"{owner}: parameter {name} is {values[i]!r}, outside {low!r}..{high!r}")
+        value = values[i]
+        if isinstance(value, bytes):
+            if not low <= len(value) <= high:
+                raise RdisValueError(f"{owner}: parameter {name} has {len(value)} bytes, outside {low!r}..{high!r}")
+        elif not low <= value <= high:  # type: ignore[operator]
+            raise RdisValueError(f"{owner}: parameter {name} is {value!r}, outside {low!r}..{high!r}")
 
 
 def _params(params: tuple[m.Parameter, ...]) -> tuple[tuple[str, m.Type], ...]:

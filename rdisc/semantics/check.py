@@ -120,11 +120,13 @@ class _Checker:
         return tuple(out)
 
     def param_range(self, p: ast.Param, type_: Type | None) -> tuple[float | None, float | None]:
-        """`in low..high`: constant numbers of the parameter's type, low <= high."""
+        """`in low..high`: constant numbers of the parameter's type, low <= high; for bytes, the
+        number of bytes."""
         if p.low is None or p.high is None:
             return None, None
-        if type_ not in (Type.INT, Type.FLOAT):
-            self.d.report("E204", p.low.span.to(p.high.span), f"only a number has a range, not `{p.type.text}`")
+        if type_ not in (Type.INT, Type.FLOAT, Type.BYTES):
+            self.d.report("E204", p.low.span.to(p.high.span),
+                          f"only a number (or bytes, by length) has a range, not `{p.type.text}`")
             return None, None
         low, high = self.setting(p.low, "a range's bound"), self.setting(p.high, "a range's bound")
         if low is None or high is None:
@@ -132,10 +134,13 @@ class _Checker:
         if type_ is Type.INT and (low != int(low) or high != int(high)):
             self.d.report("E204", p.low.span.to(p.high.span), "an int parameter's range has int bounds")
             return None, None
+        if type_ is Type.BYTES and (low != int(low) or high != int(high) or low < 0):
+            self.d.report("E204", p.low.span.to(p.high.span), "a length's range has int bounds, 0 or more")
+            return None, None
         if low > high:
             self.d.report("E204", p.low.span.to(p.high.span), f"the range {low:g}..{high:g} is empty")
             return None, None
-        return (int(low), int(high)) if type_ is Type.INT else (float(low), float(high))
+        return (int(low), int(high)) if type_ is not Type.FLOAT else (float(low), float(high))
 
     def env_with(self, extra: dict[str, tuple[Scope, Type]], where: str, sees: str, **kw) -> Env:
         names = dict(self.state_env)
