@@ -175,7 +175,8 @@ constant bytes right after the payload."""),
     ("E504", "frame-use", """
 A primitive's `frame NAME(args)` passes one argument per frame parameter. A
 primitive that decodes a reply needs a frame whose reply has a payload; a frame
-field's value must fit its format."""),
+field's value must fit its format. `skip unmatched` (read past frames that do not
+decode: other traffic on a shared line) needs a framed reply to decode."""),
     # -- warnings --------------------------------------------------------------
     ("W102", "untriggered-output", """
 No interface triggers this output, so it is never delivered."""),

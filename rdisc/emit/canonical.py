@@ -131,6 +131,7 @@ def _primitive(x: m.Primitive) -> JsonObject:
         decoding,
         ("frame", None if x.frame is None else {"name": x.frame.frame,
                                                  "arguments": [_embedded(a) for a in x.frame.args]}),
+        ("skipUnmatched", x.skip_unmatched or None),
         ("postActions", actions or None),
         ("doc", x.doc),
     )

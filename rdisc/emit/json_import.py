@@ -302,7 +302,7 @@ _CONNECTION = (
 )  # fmt: skip
 _PRIMITIVE = (
     "name", "parameters", "parameterTypes", "parameterRanges", "connection", "pack", "format", "formatArgs",
-    "unpack", "regex", "frame", "postActions", "doc",
+    "unpack", "regex", "frame", "skipUnmatched", "postActions", "doc",
 )  # fmt: skip
 _FRAME = ("name", "parameters", "parameterTypes", "request", "reply", "doc")
 _CHECKSUM = (
@@ -613,6 +613,9 @@ class _Importer:
             if frame is not None:
                 types = self.frame_types.get(frame.text, ())
                 clauses.append(ast.Framed(frame, self.args(f.get("arguments"), types), framed.span))
+        skip = m.get("skipUnmatched")
+        if isinstance(skip, JBool) and skip.value:
+            clauses.append(ast.SkipUnmatched(skip.span))
         actions = self.array(m.get("postActions"), "`postActions`")
         if actions:  # none is the default, left unsaid
             assigns = _present([self.post_action(a) for a in actions])

@@ -833,16 +833,22 @@ class _Driver:
             case None:
                 w.line(f"self._exchange_frame({link}, request, {wire}, fields, 0)")
             case m.Unpack(format=fmt):
-                size = "-1" if formats.struct_layout(fmt).rest else f"{const}_REPLY.size"
+                rest = formats.struct_layout(fmt).rest
+                size = "-1" if rest else f"{const}_REPLY.size"
+                accept = ""  # a fixed size is checked by the exchange itself
+                if prim.skip_unmatched and rest:
+                    self.exprs.helpers.add("_unpacked_rest")
+                    accept = f", lambda data: _unpacked_rest({quoted(prim.name)}, {const}_REPLY, data, ())"
                 w.line(f"{'data = ' if uses_reply else ''}self._exchange_frame("
-                       f"{link}, request, {wire}, fields, {size})")
+                       f"{link}, request, {wire}, fields, {size}{accept})")
                 if uses_reply:
                     self.unpacked(w, prim, "data")
             case m.Regex():
                 self.exprs.helpers.add("_match")
-                w.line(f"payload = self._exchange_frame({link}, request, {wire}, fields, -1)")
-                w.line(f"{'reply = ' if uses_reply else ''}_match({quoted(prim.name)}, {const}_REPLY, "
-                       f'payload.decode("latin-1"))')
+                match = f'_match({quoted(prim.name)}, {const}_REPLY, payload.decode("latin-1"))'
+                accept = f", lambda payload: {match}" if prim.skip_unmatched else ""
+                w.line(f"payload = self._exchange_frame({link}, request, {wire}, fields, -1{accept})")
+                w.line(f"{'reply = ' if uses_reply else ''}{match}")
 
     def unpacked(self, w: Writer, prim: m.Primitive, data: str) -> None:
         """`reply = ...`: the values of an `unpack` reply."""

@@ -383,6 +383,8 @@ def _not_running(self) -> RdisConnectionError:
 ROBOT_IO = '''\
 def _send(self, link: _Link, primitive: str, request: bytes) -> None:
     """Write a request that expects no reply."""
+    if not request:  # nothing to send
+        return
     lock = link.lock
     lock.acquire()  # not `with`: this is every command's path, and acquire/release is faster
     try:
@@ -424,9 +426,10 @@ def _transfer(self, link: _Link, primitive: str, request: bytes, size: int, end:
     try:
         with link.lock:
             try:
-                link.port.reset_input_buffer()
-                link.port.write(request)
-                written = True
+                if request:  # a listener (no request) keeps what has arrived
+                    link.port.reset_input_buffer()
+                    link.port.write(request)
+                    written = True
                 data = link.port.read(size) if size else link.port.read_until(end, MAX_LINE)
             except Exception as err:
                 raise _port_error(link, primitive, err, self.timeout) from err
@@ -440,20 +443,34 @@ def _transfer(self, link: _Link, primitive: str, request: bytes, size: int, end:
 
 ROBOT_FRAMED = '''\
 def _exchange_frame(self, link: _Link, primitive: str, request: bytes, frame: Frame, fields: list[int],
-                    size: int) -> bytes:
+                    size: int, accept: Callable[[bytes], object] | None = None) -> bytes:
     """Write a framed request and read its framed reply, as rdisc.runtime.framing does:
-    the payload (b"" for an acknowledgement). `size`: the payload's, or -1 if the frame says."""
+    the payload (b"" for an acknowledgement). `size`: the payload's, or -1 if the frame says.
+    An empty request (a listener) is not written and keeps unread input. With `accept`
+    (`skip unmatched`), frames it refuses are read past until the timeout."""
     written, data, payload = False, b"", b""
-    failed: FrameError | None = None
+    failed: FrameError | RdisProtocolError | None = None
     try:
         with link.lock:
             try:
-                link.port.reset_input_buffer()
-                link.port.write(request)
-                written = True
-                data, payload = frame.read(link.port, fields, request, size)
-            except FrameError as err:
-                failed = err
+                if request:
+                    link.port.reset_input_buffer()
+                    link.port.write(request)
+                    written = True
+                deadline = time.monotonic() + self.timeout
+                while True:
+                    try:
+                        chunk, payload = frame.read(link.port, fields, request, size)
+                        data += chunk
+                        if size >= 0 and len(payload) != size and frame.reply.payload >= 0:
+                            raise RdisProtocolError(f"{primitive}: expected {size} bytes, got {len(payload)}")
+                        if accept is not None:
+                            accept(payload)
+                        break
+                    except (FrameError, RdisProtocolError) as err:
+                        if accept is None or getattr(err, "timeout", False) or time.monotonic() >= deadline:
+                            failed = err
+                            break
             except Exception as err:  # whatever the port raises, it failed
                 raise _port_error(link, primitive, err, self.timeout) from err
     finally:
@@ -463,11 +480,12 @@ def _exchange_frame(self, link: _Link, primitive: str, request: bytes, frame: Fr
             if data:
                 self._notify_io("read", link.name, data)
     if failed is not None:
-        if failed.timeout:
-            raise RdisTimeout(f"{primitive}: no reply within {self.timeout:g} s")
+        if getattr(failed, "timeout", False) or accept is not None:
+            what = "matching reply" if accept is not None else "reply"
+            raise RdisTimeout(f"{primitive}: no {what} within {self.timeout:g} s")
+        if isinstance(failed, RdisProtocolError):
+            raise failed
         raise RdisProtocolError(f"{primitive}: {failed}")
-    if size >= 0 and len(payload) != size and frame.reply.payload >= 0:
-        raise RdisProtocolError(f"{primitive}: expected {size} bytes, got {len(payload)}")
     return payload'''
 
 ROBOT_DELIVERY = '''\

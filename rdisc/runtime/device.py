@@ -97,6 +97,7 @@ class _PrimitivePlan:
     frame: _FramePlan | None = None
     expects_reply: bool = False
     ranges: Ranges = ()
+    skip: bool = False  # frames that do not decode are skipped (within the timeout)
 
 
 @dataclass(frozen=True, slots=True)
@@ -181,7 +182,7 @@ class Description:
         return _PrimitivePlan(p.name, p.connection, _params(p.params), _float_slots(p.params),
                               _values([prepare(a, slots) for a in p.args]),
                               Codec(p, self.model.connections[p.connection].terminator_bytes()), actions,
-                              frame, p.expects_reply(self.model.frames), _ranges(p.params))
+                              frame, p.expects_reply(self.model.frames), _ranges(p.params), p.skip_unmatched)
 
     def _output(self, o: m.DomainOutput) -> _OutputPlan:
         adapter = self.model.adapters[o.adapter]
@@ -645,14 +646,16 @@ class Robot:
         expects_reply = plan.expects_reply
         data = b""
         payload = b""
-        failed: framing.FrameError | None = None
+        reply: tuple[m.Value, ...] = ()
+        failed: framing.FrameError | RdisProtocolError | None = None
         lock = port.lock
         lock.acquire()  # acquire/release rather than `with`: cheaper, and this runs on every call
         try:
             try:
-                if expects_reply:
-                    io.reset_input_buffer()
-                io.write(request)
+                if request:  # a listener (no request) keeps what has arrived: its reply is the next frame
+                    if expects_reply:
+                        io.reset_input_buffer()
+                    io.write(request)
             except _WRITE_TIMEOUTS:
                 raise RdisTimeout(f"{plan.name}: write not completed within {self.timeout:g} s") from None
             except Exception as err:
@@ -661,12 +664,22 @@ class Robot:
                 try:
                     if frame is not None and frame.reads:
                         size = codec.reply_size if codec.reply_size > 0 or not codec.expects_reply else -1
-                        data, payload = frame.wire.read(io, fields, request, size)  # type: ignore[arg-type]
+                        deadline = time.monotonic() + self.timeout
+                        while True:  # once, or until a frame decodes when the primitive skips others
+                            try:
+                                chunk, payload = frame.wire.read(io, fields, request, size)  # type: ignore[arg-type]
+                                data += chunk
+                                if plan.skip:
+                                    reply = codec.match_payload(payload) if codec.reads_line else codec.decode(payload)
+                                break
+                            except (framing.FrameError, RdisProtocolError) as err:
+                                if (not plan.skip or getattr(err, "timeout", False)
+                                        or time.monotonic() >= deadline):
+                                    failed = err
+                                    break
                     else:
                         data = bytes(io.read_until(codec.terminator, MAX_LINE) if codec.reads_line
                                      else io.read(codec.reply_size))
-                except framing.FrameError as err:
-                    failed = err
                 except Exception as err:
                     raise RdisConnectionError(f"{plan.connection}: {err}") from err
         finally:
@@ -674,15 +687,19 @@ class Robot:
         # I/O callbacks run once the port is free again: one that calls the robot
         # (or waits for a thread that does) cannot deadlock against this exchange.
         if self._io_callbacks:
-            self._notify_io("write", plan.connection, request)
+            if request:
+                self._notify_io("write", plan.connection, request)
             if data:
                 self._notify_io("read", plan.connection, data)
         if failed is not None:
-            if failed.timeout:
-                raise RdisTimeout(f"{plan.name}: no reply within {self.timeout:g} s")
+            if getattr(failed, "timeout", False) or plan.skip:
+                what = "matching reply" if plan.skip else "reply"
+                raise RdisTimeout(f"{plan.name}: no {what} within {self.timeout:g} s")
+            if isinstance(failed, RdisProtocolError):
+                raise failed
             raise RdisProtocolError(f"{plan.name}: {failed}")
-        if not expects_reply or not codec.expects_reply:
-            reply: tuple[m.Value, ...] = ()
+        if not expects_reply or not codec.expects_reply or plan.skip:
+            pass
         elif frame is not None and frame.reads:
             reply = codec.match_payload(payload) if codec.reads_line else codec.decode(payload)
         elif not data:

@@ -398,8 +398,13 @@ class _Checker:
             self.d.report("E503", decodings[0].span, f"the reply of `{name.text}` ends in `*` (the rest of the "
                           "message), but no frame says where the reply ends",
                           help="read it through a frame with a `length` field or constant bytes after its payload")
+        skip = self.once([c for c in decl.clauses if isinstance(c, ast.SkipUnmatched)], "`skip unmatched`", name)
+        if skip is not None and (decoding is None or frame is None or not self.frames[frame.frame].reply):
+            self.d.report("E504", skip.span, f"`skip unmatched` reads past frames that do not decode, but "  # type: ignore[union-attr]
+                          f"`{name.text}` does not decode a framed reply",
+                          help="give it a frame with a reply, and `unpack` or `regex`")
         return m.Primitive(name.text, params, connection, encoding, args, decoding, actions, decl.doc, decl.span,  # type: ignore[arg-type]
-                           frame)
+                           frame, skip is not None)
 
     def frame_use(self, clause: ast.Framed, env: Env, decl: ast.PrimitiveDecl, encoding, decoding) -> m.FrameUse | None:
         """`frame NAME(args)`: its arguments, and whether the frame can carry this primitive."""

@@ -304,6 +304,7 @@ class Primitive:
     doc: str | None = None
     span: Span | None = _span
     frame: FrameUse | None = None
+    skip_unmatched: bool = False  # reads frames until one decodes, within the timeout
 
     def expects_reply(self, frames: dict[str, Frame]) -> bool:
         """A reply is read when there is one to decode, or when the frame's reply

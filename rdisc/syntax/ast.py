@@ -268,7 +268,14 @@ class Framed:
     span: Span = _span
 
 
-PrimitiveClause = On | Encoding | Decoding | Actions | Framed
+@dataclass(frozen=True, slots=True)
+class SkipUnmatched:
+    """`skip unmatched`: frames that do not decode are other traffic, read past."""
+
+    span: Span = _span
+
+
+PrimitiveClause = On | Encoding | Decoding | Actions | Framed | SkipUnmatched
 
 
 @dataclass(frozen=True, slots=True)

@@ -277,6 +277,9 @@ def _transformer_class():
         def address(self, meta, c):
             return ast.Address(self.b.string(c[0]), self.b.span(meta))
 
+        def skip_unmatched(self, meta, c):
+            return ast.SkipUnmatched(self.b.span(meta))
+
         def framed(self, meta, c):
             return ast.Framed(self.b.ident(c[0]), c[1] or (), self.b.span(meta))
 

@@ -240,6 +240,8 @@ def _primitive_clause(c: ast.PrimitiveClause) -> tuple[list[str], bool]:
             return [f"{kind} {_template(template)}"], False
         case ast.Framed(frame, args):
             return [f"frame {frame.text}({_args(args)})"], False
+        case ast.SkipUnmatched():
+            return ["skip unmatched"], False
         case ast.Actions(()):
             return ["{}"], True
         case ast.Actions((assign,)):

@@ -697,6 +697,8 @@ class IrobotCreate:
 
     def _send(self, link: _Link, primitive: str, request: bytes) -> None:
         """Write a request that expects no reply."""
+        if not request:  # nothing to send
+            return
         lock = link.lock
         lock.acquire()  # not `with`: this is every command's path, and acquire/release is faster
         try:
@@ -738,9 +740,10 @@ class IrobotCreate:
         try:
             with link.lock:
                 try:
-                    link.port.reset_input_buffer()
-                    link.port.write(request)
-                    written = True
+                    if request:  # a listener (no request) keeps what has arrived
+                        link.port.reset_input_buffer()
+                        link.port.write(request)
+                        written = True
                     data = link.port.read(size) if size else link.port.read_until(end, MAX_LINE)
                 except Exception as err:
                     raise _port_error(link, primitive, err, self.timeout) from err

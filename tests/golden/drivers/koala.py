@@ -973,6 +973,8 @@ class Koala:
 
     def _send(self, link: _Link, primitive: str, request: bytes) -> None:
         """Write a request that expects no reply."""
+        if not request:  # nothing to send
+            return
         lock = link.lock
         lock.acquire()  # not `with`: this is every command's path, and acquire/release is faster
         try:
@@ -1014,9 +1016,10 @@ class Koala:
         try:
             with link.lock:
                 try:
-                    link.port.reset_input_buffer()
-                    link.port.write(request)
-                    written = True
+                    if request:  # a listener (no request) keeps what has arrived
+                        link.port.reset_input_buffer()
+                        link.port.write(request)
+                        written = True
                     data = link.port.read(size) if size else link.port.read_until(end, MAX_LINE)
                 except Exception as err:
                     raise _port_error(link, primitive, err, self.timeout) from err
