@@ -151,6 +151,7 @@ def _frame(f: m.Frame) -> JsonObject:
         ("parameterTypes", [param.type.value for param in f.params]),
         ("request", [_frame_part(part) for part in f.request]),
         ("reply", [_frame_part(part) for part in f.reply]),
+        ("stuffing", None if f.stuffing is None else {"after": f.stuffing[0], "insert": f.stuffing[1]}),
         ("doc", f.doc),
     )
 

@@ -23,6 +23,9 @@ def _primitive(model: m.Model, p: m.Primitive) -> str:
     if p.frame is not None:
         head += f", frame {p.frame.frame}({', '.join(expression_text(a) for a in p.frame.args)})"
     lines = [head]
+    if frame is not None and frame.stuffing is not None:
+        reserved, escape = (" ".join(f"{ord(c):02X}" for c in text) for text in frame.stuffing)
+        lines.append(f"  payloads stuffed: {escape} inserted after every {reserved}")
     request = _payload_rows(p.encoding, p.args)
     lines += _side("request", frame.request if frame else None, request)
     if p.expects_reply(model.frames):

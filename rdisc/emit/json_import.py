@@ -304,7 +304,7 @@ _PRIMITIVE = (
     "name", "parameters", "parameterTypes", "parameterRanges", "connection", "pack", "format", "formatArgs",
     "unpack", "regex", "frame", "skipUnmatched", "postActions", "doc",
 )  # fmt: skip
-_FRAME = ("name", "parameters", "parameterTypes", "request", "reply", "doc")
+_FRAME = ("name", "parameters", "parameterTypes", "request", "reply", "stuffing", "doc")
 _CHECKSUM = (
     "checksum", "kind", "width", "poly", "init", "reflectIn", "reflectOut", "xorOut", "inverted", "mask", "format",
     "covers", "withRequest",
@@ -457,6 +457,13 @@ class _Importer:
         else:
             items = tuple(ast.FrameSide(side, parts, written[side].span if side in written else obj.span)
                           for side, parts in sides.items() if parts or side == "request")
+        stuffing = self.object(m.get("stuffing"), "`stuffing`")
+        if stuffing is not None:
+            s = self.members(stuffing, "`stuffing`", ("after", "insert"))
+            after, insert = self.string(s.get("after"), "`after`"), self.string(s.get("insert"), "`insert`")
+            if after is not None and insert is not None:
+                items += (ast.FrameStuff(ast.StrLit(insert.value, insert.span), ast.StrLit(after.value, after.span),
+                                         stuffing.span),)
         return ast.FrameDecl(name, params, items, obj.span, self.doc(m))
 
     def frame_part(self, obj: JObject, side: list[JObject | None]) -> ast.FramePart | None:

@@ -1147,7 +1147,11 @@ def _frame(frame: m.Frame) -> str:
     fields = {name: i for i, name in enumerate(frame_fields(frame))}
     request = ", ".join(_frame_part(p, fields) for p in frame.request)
     reply = ", ".join(_frame_part(p, fields) for p in frame.reply)
-    return f"Frame({quoted(frame.name)}, [{request}], [{reply}])"
+    stuffing = ""
+    if frame.stuffing is not None:
+        reserved, escape = (text.encode("latin-1") for text in frame.stuffing)
+        stuffing = f", Stuffing({reserved!r}, {escape!r})"
+    return f"Frame({quoted(frame.name)}, [{request}], [{reply}]{stuffing})"
 
 
 def _frame_part(part: m.FramePart, fields: Mapping[str, int]) -> str:

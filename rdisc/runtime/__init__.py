@@ -23,6 +23,31 @@ RdisProtocolError; the groups are the values (an unmatched group is "").
 all are assigned together. An expression that cannot be evaluated (division by
 zero, ...) is an RdisValueError.
 
+Ranges. A parameter declared `in LOW..HIGH` refuses a value outside it (for
+bytes, a length outside it) with RdisValueError "OWNER: parameter P is V, outside
+LOW..HIGH" ("has N bytes" for bytes), checked after binding and before the
+arguments of its calls or its format arguments are evaluated.
+
+Bytes. A pack format ending in `*` appends its last value, bytes, as it is; an
+unpack format ending in `*` gives the rest of the reply as bytes (after its fixed
+part: fewer bytes than that is RdisProtocolError "P: expected N bytes or more,
+got K"). `len(b)` and `byte(b, i)` read them.
+
+Frames (rdisc.runtime.framing, which the generated driver carries as text). The
+request is the payload framed: constants, fields (the frame's field expressions
+over its arguments, which are the primitive's frame arguments), the length
+(payload size + adjust), checksums over the parts they cover. A reply is read
+through the frame's reply side: bytes before its header are skipped (up to 4096);
+the payload's size comes from the length field, else the decoding's fixed size,
+else the constant after it; every constant, field and checksum is checked
+(binary checksums exactly, hex digits in either case). Nothing at all is
+RdisTimeout; anything else wrong is RdisProtocolError "P: FRAME: what is wrong".
+A frame whose reply has no payload is an acknowledgement, read after every
+request. A request of no bytes (a listener) is not written and does not discard
+unread input: its reply is the next frame. With `skip unmatched`, a reply frame
+that does not decode is read past, until one does within the timeout, else
+RdisTimeout "P: no matching reply within T s".
+
 Interface. Its calls in priority order (then as written); after each, sleep its
 delay. Then, if it triggers an output, evaluate the output's fields over state
 (in the adapter's field order) and deliver {"name": output, "contents": {...}}
@@ -72,8 +97,11 @@ Details both implementations follow (where the above is silent):
   callback raised TYPE: ..." and "C: I/O callback raised TYPE: ..." for
   RdisCallbackError, "ROBOT: closed" for a call after `close`.
   Comparisons across implementations use the type and that first name.
-- An unknown input or interface name is a KeyError; the wrong number of
-  arguments to an interface, or not exactly an input's fields, a TypeError.
+- An unknown input, interface or primitive name is a KeyError; the wrong number
+  of arguments to an interface or a primitive, or not exactly an input's fields,
+  a TypeError. `call_primitive(name, *args)` sends one device command directly.
+- Bytes given for a parameter: bytes, a bytearray, a list of ints 0..255, or hex
+  text ("3c20"); anything else is a TypeError.
 - Callbacks: on_output(cb) gets cb(output_dict), on_error(cb) gets cb(exception),
   on_io(cb) gets cb("write" | "read", connection, data) after each write and each
   read that returned data (a short read included). Callbacks run on the thread
@@ -96,8 +124,9 @@ Details both implementations follow (where the above is silent):
   one lock per open port); a dict maps each connection name to its port; a
   value may also be an already-open pyserial-like object (write, read,
   read_until, reset_input_buffer), which is used as it is and not closed.
-  A missing or unknown connection name in the dict is a ValueError.
-- `connect(port, timeout=1.0, threads=True, *, on_output=None, on_error=None,
+  A connection given no port (no port at all, or missing from the dict) opens
+  its `address`; one without an address is a ValueError, as is an unknown name.
+- `connect(port=None, timeout=1.0, threads=True, *, on_output=None, on_error=None,
   on_io=None)`: callbacks given there are registered before anything is opened,
   so they see the startup hooks' I/O and errors too.
 - `connect` that fails (opening, or a startup hook) closes what it opened (as
@@ -105,9 +134,10 @@ Details both implementations follow (where the above is silent):
   idempotent; a call after it is RdisConnectionError. Stopping lets a thread
   finish the interface it is running, delays included.
 - The command line (`rdisc run` and a generated driver's `__main__`): `--call
-  NAME K=V ...` calls an input with its fields, else an interface with its
-  parameters by name; values are int, else float, else True/False, else the
-  string. `--watch` prints each output as `json.dumps(output_dict)` on stdout,
+  NAME K=V ...` calls an input with its fields, else an interface, else a
+  primitive, with its parameters by name; values are int, else float, else
+  True/False, else the string. Without `--port`, every connection opens its
+  address. `--watch` prints each output as `json.dumps(output_dict)` on stdout,
   one a line; `--trace` prints "CONN > 89 00 c8 7f ff" (written) and "CONN < 00"
   (read) on stderr; errors reported while running are printed on stderr as
   "rdisc run: TYPE: MESSAGE". Exit status: 0 done, 1 a description or device

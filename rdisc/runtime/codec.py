@@ -24,7 +24,12 @@ __all__ = ["MAX_LINE", "Codec", "frame_fields", "wire_frame"]
 def wire_frame(frame: m.Frame) -> framing.Frame:
     """The Model's frame as the framing module reads and writes it."""
     fields = {name: i for i, name in enumerate(frame_fields(frame))}
-    return framing.Frame(frame.name, [_part(p, fields) for p in frame.request], [_part(p, fields) for p in frame.reply])
+    stuffing = None
+    if frame.stuffing is not None:
+        reserved, escape = frame.stuffing
+        stuffing = framing.Stuffing(reserved.encode("latin-1"), escape.encode("latin-1"))
+    return framing.Frame(frame.name, [_part(p, fields) for p in frame.request], [_part(p, fields) for p in frame.reply],
+                         stuffing)
 
 
 def frame_fields(frame: m.Frame) -> dict[str, m.Expr]:

@@ -209,18 +209,49 @@ class Side:
         self.delimiter = after.data if isinstance(after, Bytes) else b""
 
 
+class Stuffing:
+    """Byte stuffing of a payload: `escape` inserted after every `reserved` sequence
+    (so that the payload never shows the sequence a header starts with)."""
+
+    __slots__ = ("escape", "reserved")
+
+    def __init__(self, reserved: bytes, escape: bytes) -> None:
+        self.reserved = reserved
+        self.escape = escape
+
+    def stuff(self, data: bytes) -> bytes:
+        return data.replace(self.reserved, self.reserved + self.escape)
+
+    def unstuff(self, data: bytes, name: str) -> bytes:
+        out = bytearray()
+        start = 0
+        while (found := data.find(self.reserved, start)) >= 0:
+            after = found + len(self.reserved)
+            if data[after : after + len(self.escape)] != self.escape:
+                raise FrameError(f"{name}: {self.reserved!r} in the payload is not followed by {self.escape!r}")
+            out += data[start:after]
+            start = after + len(self.escape)
+        out += data[start:]
+        return bytes(out)
+
+
 class Frame:
     """A request side and a reply side (empty when the device answers nothing framed)."""
 
-    __slots__ = ("name", "reply", "request")
+    __slots__ = ("name", "reply", "request", "stuffing")
 
-    def __init__(self, name: str, request: Sequence[Part], reply: Sequence[Part]) -> None:
+    def __init__(self, name: str, request: Sequence[Part], reply: Sequence[Part],
+                 stuffing: Stuffing | None = None) -> None:
         self.name = name
         self.request = Side(request)
         self.reply = Side(reply)
+        self.stuffing = stuffing
 
     def wrap(self, payload: bytes, fields: Sequence[int]) -> bytes:
-        """The request: `payload` framed, with the frame's field values."""
+        """The request: `payload` framed (stuffed first, when the frame stuffs), with the
+        frame's field values."""
+        if self.stuffing is not None:
+            payload = self.stuffing.stuff(payload)
         side = self.request
         chunks: list[bytes] = []
         for part in side.parts:
@@ -319,4 +350,5 @@ class Frame:
                                      f"which sums to {expected!r}")
         if side.payload < 0:
             return b""
-        return raw[starts[side.payload] : starts[side.payload + 1]]
+        payload = raw[starts[side.payload] : starts[side.payload + 1]]
+        return self.stuffing.unstuff(payload, self.name) if self.stuffing is not None else payload

@@ -64,7 +64,18 @@ class FrameRules:
     def frame(self, decl: ast.FrameDecl, params: tuple[m.Parameter, ...]) -> m.Frame:
         scope = {p.name: (Scope.PARAM, p.type) for p in params if p.type is not None}
         env = Env(scope, "in a frame", "its parameters")
-        direct = tuple(i for i in decl.items if not isinstance(i, ast.FrameSide))
+        direct = tuple(i for i in decl.items if not isinstance(i, (ast.FrameSide, ast.FrameStuff)))
+        stuffs = [i for i in decl.items if isinstance(i, ast.FrameStuff)]
+        for extra in stuffs[1:]:
+            self.d.report("E501", extra.span, f"frame `{decl.name.text}` has two `stuff` rules",
+                          labels=(Label(stuffs[0].span, "first given here"),))
+        stuffing = None
+        if stuffs:
+            escape, reserved = stuffs[0].escape, stuffs[0].reserved
+            for lit in (escape, reserved):
+                if not 1 <= len(lit.value) <= MAX_BYTES or any(ord(ch) > 0xFF for ch in lit.value):
+                    self.d.report("E501", lit.span, f"stuffing bytes are 1 to {MAX_BYTES} bytes (characters up to \\xff)")
+            stuffing = (reserved.value, escape.value)
         sides: dict[str, ast.FrameSide] = {}
         for item in decl.items:
             if isinstance(item, ast.FrameSide):
@@ -83,7 +94,7 @@ class FrameRules:
         else:
             request = self.side(direct, "request", decl, env, fields)
             reply = self.side(direct, "reply", decl, env, fields, quiet=True)
-        return m.Frame(decl.name.text, params, request, reply, decl.doc, decl.span)
+        return m.Frame(decl.name.text, params, request, reply, decl.doc, decl.span, stuffing)
 
     def side(self, parts: tuple[ast.FramePart, ...], side: str, decl: ast.FrameDecl, env: Env,
              fields: dict[str, int], quiet: bool = False) -> tuple[m.FramePart, ...]:
@@ -261,6 +272,7 @@ def payload_end_known(frame: m.Frame, size_known: bool) -> bool:
     """Whether a reader can find where the reply's payload ends."""
     reply = frame.reply
     at = next((i for i, p in enumerate(reply) if isinstance(p, m.FramePayload)), None)
+    size_known = size_known and frame.stuffing is None  # stuffing makes a payload longer on the wire
     if at is None or size_known or any(isinstance(p, m.FrameLength) for p in reply):
         return True
     return at + 1 < len(reply) and isinstance(reply[at + 1], m.FrameBytes)

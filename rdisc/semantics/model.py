@@ -284,6 +284,7 @@ class Frame:
     reply: tuple[FramePart, ...]  # () when the device answers nothing framed
     doc: str | None = None
     span: Span | None = _span
+    stuffing: tuple[str, str] | None = None  # (reserved, escape): escape inserted after reserved
 
 
 @dataclass(frozen=True, slots=True)

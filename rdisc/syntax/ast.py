@@ -449,10 +449,19 @@ class FrameSide:
 
 
 @dataclass(frozen=True, slots=True)
+class FrameStuff:
+    """`stuff ESCAPE after RESERVED`: byte stuffing of the payloads, both ways."""
+
+    escape: StrLit
+    reserved: StrLit
+    span: Span = _span
+
+
+@dataclass(frozen=True, slots=True)
 class FrameDecl:
     name: Ident
     params: tuple[Param, ...]
-    items: tuple[FramePart | FrameSide, ...]
+    items: tuple[FramePart | FrameSide | FrameStuff, ...]
     span: Span = _span
     doc: str | None = None
 

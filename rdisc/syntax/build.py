@@ -296,6 +296,9 @@ def _transformer_class():
         def frame_decl(self, meta, c):
             return ast.FrameDecl(self.b.ident(c[0]), c[1] or (), tuple(c[2:]), self.b.span(meta), self.b.doc(meta))
 
+        def f_stuff(self, meta, c):
+            return ast.FrameStuff(self.b.string(c[0]), self.b.string(c[1]), self.b.span(meta))
+
         def request_side(self, meta, c):
             return ast.FrameSide("request", tuple(c), self.b.span(meta))
 

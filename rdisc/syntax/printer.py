@@ -101,6 +101,8 @@ def _code(d: ast.Decl) -> list[str]:
             for item in items:
                 if isinstance(item, ast.FrameSide):
                     lines += _block(item.side, [_frame_part(part) for part in item.parts])
+                elif isinstance(item, ast.FrameStuff):
+                    lines.append(f"stuff {p.quote(item.escape.value)} after {p.quote(item.reserved.value)}")
                 else:
                     lines.append(_frame_part(item))
             return _block(head, lines)

@@ -8,7 +8,7 @@ import io
 import pytest
 
 from rdisc.runtime.codec import checksum
-from rdisc.runtime.framing import Bytes, Check, Checksum, Field, Frame, FrameError, Length, Payload
+from rdisc.runtime.framing import Bytes, Check, Checksum, Field, Frame, FrameError, Length, Payload, Stuffing
 from rdisc.semantics import model as m
 from rdisc.semantics.frames import CATALOGUE
 
@@ -107,3 +107,31 @@ def test_binary_checksum_bytes_are_compared_exactly() -> None:
     assert frame.read(Port(b"\xaa\x61\x61"), [], b"", 1)[1] == b"\x61"
     with pytest.raises(FrameError, match="checksum"):
         frame.read(Port(b"\xaa\x61\x41"), [], b"", 1)
+
+
+DXL2 = Frame("dxl2", [Bytes("header", b"\xff\xff\xfd\x00"), Field("id", "B", 0), Length("<H", 2), Payload(),
+                      Check(Checksum("crc", 16, 0x8005), "<H", 0, 3)],
+             [Bytes("header", b"\xff\xff\xfd\x00"), Field("id", "B", 0), Length("<H", 2), Payload(),
+              Check(Checksum("crc", 16, 0x8005), "<H", 0, 3)],
+             Stuffing(b"\xff\xff\xfd", b"\xfd"))
+
+
+def test_dynamixel_2_ping_is_the_manuals() -> None:
+    """ROBOTIS's Protocol 2.0 example: ping ID 1 is FF FF FD 00 01 03 00 01 19 4E (CRC-16/BUYPASS)."""
+    assert DXL2.wrap(b"\x01", [1]) == bytes.fromhex("fffffd00010300 01194e".replace(" ", ""))
+
+
+def test_stuffing_is_inserted_counted_and_removed() -> None:
+    payload = bytes.fromhex("0374 00 fffffd 01".replace(" ", ""))
+    request = DXL2.wrap(payload, [1])
+    assert request[5:7] == (len(payload) + 1 + 2).to_bytes(2, "little")  # the length counts the escape
+    assert request[7:-2] == bytes.fromhex("037400fffffdfd01")
+    raw, unstuffed = DXL2.read(Port(request), [1], b"", -1)
+    assert (raw, unstuffed) == (request, payload)
+
+
+def test_a_reserved_sequence_without_its_escape_is_a_frame_error() -> None:
+    body = bytes.fromhex("01 0700 55 fffffd 00".replace(" ", ""))  # FF FF FD not followed by FD
+    crc = Checksum("crc", 16, 0x8005)(b"\xff\xff\xfd\x00" + body)
+    with pytest.raises(FrameError, match="not followed by"):
+        DXL2.read(Port(b"\xff\xff\xfd\x00" + body + crc.to_bytes(2, "little")), [1], b"", -1)
