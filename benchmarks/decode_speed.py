@@ -125,6 +125,7 @@ def main() -> int:
         assert state == runtime.state, "the driver and the runtime decode the packet differently"
         generated.close()
         runtime.close()
+        bot.SCI.ser.is_open = False  # pycreate2's destructor would print that it closes the port
     baseline = best["pycreate2, bot.get_sensors()"]
     print(f"Create 2 sensor packet 100 (80 bytes), best of {args.repeat} x {args.calls} calls")
     for name, seconds in best.items():
