@@ -21,7 +21,6 @@ pycreate2's decoder alone (no port) is printed too. Each figure is the best of
 from __future__ import annotations
 
 import argparse
-import importlib.util
 import sys
 import tempfile
 import timeit
@@ -31,8 +30,7 @@ from typing import Any
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))  # this checkout's rdisc, when it is not installed
 
-from rdisc.compile import compile_path
-from rdisc.emit.python import to_python
+from rdisc.emit.python import import_driver
 from rdisc.runtime import load
 
 CREATE2 = ROOT / "examples" / "create2.rdis"
@@ -70,16 +68,7 @@ class AnsweringPort:
 
 
 def generated_driver(folder: Path) -> Any:
-    compilation = compile_path(str(CREATE2))
-    assert compilation.model is not None, [d.message for d in compilation.diagnostics.items]
-    path = folder / "create2_driver.py"
-    path.write_text(to_python(compilation.model, CREATE2.name, sources=compilation.sources))
-    spec = importlib.util.spec_from_file_location(path.stem, path)
-    assert spec is not None and spec.loader is not None
-    module = importlib.util.module_from_spec(spec)
-    sys.modules[path.stem] = module
-    spec.loader.exec_module(module)
-    return module
+    return import_driver(CREATE2, folder)
 
 
 def pycreate2_robot() -> Any:

@@ -25,7 +25,6 @@ is a bug).
 from __future__ import annotations
 
 import argparse
-import importlib.util
 import re
 import struct
 import sys
@@ -39,8 +38,7 @@ from typing import Any
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))  # this checkout's rdisc, when it is not installed
 
-from rdisc.compile import compile_path
-from rdisc.emit.python import to_python
+from rdisc.emit.python import import_driver
 
 CREATE = ROOT / "examples" / "create.rdis"
 TABLE_4_3 = [(-0.2, -0.4), (0.0, 0.0), (0.0, 0.2), (0.0, -0.2), (0.2, 0.0), (-0.2, 0.0)]
@@ -99,17 +97,7 @@ def zero_delay_copy(folder: Path) -> Path:
 
 
 def generated_driver(source: Path, folder: Path) -> ModuleType:
-    compilation = compile_path(str(source))
-    if compilation.model is None:
-        sys.exit(f"{source} does not check: {compilation.diagnostics.items}")
-    path = folder / "create_driver.py"
-    path.write_text(to_python(compilation.model, source.name, sources=compilation.sources), encoding="utf-8")
-    spec = importlib.util.spec_from_file_location("create_driver", path)
-    assert spec is not None and spec.loader is not None
-    module = importlib.util.module_from_spec(spec)
-    sys.modules["create_driver"] = module
-    spec.loader.exec_module(module)
-    return module
+    return import_driver(source, folder, "create_driver")
 
 
 def per_call_ns(call: Callable[[float, float], Any], calls: int, repeat: int) -> list[float]:

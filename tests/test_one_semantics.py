@@ -11,9 +11,7 @@ of reply bytes that hypothesis draws, valid and corrupt alike. Delays are set to
 
 from __future__ import annotations
 
-import importlib.util
 import re
-import sys
 from pathlib import Path
 from typing import Any
 
@@ -22,7 +20,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from rdisc.compile import compile_path
-from rdisc.emit.python import to_python
+from rdisc.emit.python import import_driver
 from rdisc.runtime import load
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -82,13 +80,7 @@ def pair(request, tmp_path_factory):
     path = _without_delays(request.param, folder)
     compilation = compile_path(str(path))
     assert compilation.model is not None, compilation.diagnostics.items
-    module_path = folder / f"driver_{Path(request.param).stem}.py"
-    module_path.write_text(to_python(compilation.model, path.name, sources=compilation.sources))
-    spec = importlib.util.spec_from_file_location(module_path.stem, module_path)
-    assert spec is not None and spec.loader is not None
-    driver = importlib.util.module_from_spec(spec)
-    sys.modules[module_path.stem] = driver
-    spec.loader.exec_module(driver)
+    driver = import_driver(path, folder, f"driver_{Path(request.param).stem}")
     return load(compilation.model), driver, compilation.model
 
 

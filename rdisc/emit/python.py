@@ -23,6 +23,7 @@ import os
 import posixpath
 import struct
 from collections.abc import Iterable, Mapping
+from types import ModuleType
 from typing import NoReturn
 
 from rdisc.emit import python_support as support
@@ -77,6 +78,34 @@ def to_python(model: m.Model, source_name: str, *, sources: Mapping[str, SourceF
     comments; without them the comments are left out.
     """
     return _Driver(model, source_name, sources or {}).module()
+
+
+def import_driver(description: str | os.PathLike[str], folder: str | os.PathLike[str],
+                  module_name: str | None = None) -> ModuleType:
+    """The driver of the description file `description`, written into `folder` and
+    imported (as `module_name`, by default ROBOT_driver): the compiled driver in this
+    process, without a separate `rdisc emit-python`. A description with errors raises
+    rdisc.runtime.RdisLoadError."""
+    import importlib.util
+    import sys
+
+    from rdisc.compile import compile_path
+    from rdisc.runtime.errors import RdisLoadError
+
+    path = os.fspath(description)
+    compilation = compile_path(path)
+    if compilation.model is None or compilation.diagnostics.has_errors():
+        raise RdisLoadError.from_compilation(path, compilation)
+    name = module_name or f"{_identifier(compilation.model.robot.name)}_driver"
+    target = os.path.join(os.fspath(folder), f"{name}.py")
+    with open(target, "w", encoding="utf-8") as out:
+        out.write(to_python(compilation.model, os.path.basename(path), sources=compilation.sources))
+    spec = importlib.util.spec_from_file_location(name, target)
+    assert spec is not None and spec.loader is not None
+    module = importlib.util.module_from_spec(spec)
+    sys.modules[name] = module  # dataclasses look their module up by name
+    spec.loader.exec_module(module)
+    return module
 
 
 # ---- names ----------------------------------------------------------------------------------

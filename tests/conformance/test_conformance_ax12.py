@@ -19,9 +19,7 @@ Deliberate differences from pyax12 (the manual's reading, not the driver's):
 
 from __future__ import annotations
 
-import importlib.util
 import math
-import subprocess
 import sys
 from collections.abc import Iterator
 from pathlib import Path
@@ -35,6 +33,7 @@ from published import ax12
 from published.ax12 import BROADCAST, Rejected
 from pyax12 import status_packet as sp
 
+from rdisc.emit.python import import_driver
 from rdisc.runtime import errors, load
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -196,14 +195,7 @@ class Side:
 
 @pytest.fixture(scope="module")
 def sides(tmp_path_factory: pytest.TempPathFactory) -> Iterator[list[Side]]:
-    out = tmp_path_factory.mktemp("ax12") / "ax12_driver.py"
-    subprocess.run([sys.executable, "-m", "rdisc", "emit-python", str(DESCRIPTION), "-o", str(out)],
-                   check=True, cwd=ROOT, capture_output=True)
-    spec = importlib.util.spec_from_file_location("ax12_driver", out)
-    assert spec is not None and spec.loader is not None
-    drv = importlib.util.module_from_spec(spec)
-    sys.modules["ax12_driver"] = drv
-    spec.loader.exec_module(drv)
+    drv = import_driver(DESCRIPTION, tmp_path_factory.mktemp("ax12"))
     with _Bus() as dev_rt, _Bus() as dev_drv:
         runtime = load(DESCRIPTION).connect(dev_rt.port, timeout=TIMEOUT)
         driver = drv.connect(dev_drv.port, timeout=TIMEOUT)

@@ -9,9 +9,6 @@ generates are checked, each over a real pty.
 
 from __future__ import annotations
 
-import importlib.util
-import subprocess
-import sys
 from collections.abc import Iterator
 from pathlib import Path
 from types import ModuleType
@@ -34,6 +31,7 @@ from published.create2 import (
     published_request,
 )
 
+from rdisc.emit.python import import_driver
 from rdisc.runtime import errors, load
 
 DESCRIPTION = Path(__file__).resolve().parents[2] / "examples" / "create2.rdis"
@@ -122,15 +120,7 @@ class Robot:
 
 
 def _driver_module(tmp: Path) -> ModuleType:
-    out = tmp / "create2_driver.py"
-    subprocess.run([sys.executable, "-m", "rdisc", "emit-python", str(DESCRIPTION), "-o", str(out)],
-                   check=True, capture_output=True)
-    spec = importlib.util.spec_from_file_location("create2_driver", out)
-    assert spec is not None and spec.loader is not None
-    module = importlib.util.module_from_spec(spec)
-    sys.modules[spec.name] = module  # dataclasses look their module up while the class is made
-    spec.loader.exec_module(module)
-    return module
+    return import_driver(DESCRIPTION, tmp)
 
 
 @pytest.fixture(scope="module")

@@ -16,9 +16,7 @@ Angles: pylx16a takes degrees and sends round(deg * 25 / 6) steps. The SI interf
 
 from __future__ import annotations
 
-import importlib.util
 import math
-import subprocess
 import sys
 from collections.abc import Iterator
 from pathlib import Path
@@ -32,6 +30,7 @@ from published import lx16a
 from published.lx16a import BROADCAST, Rejected
 from pylx16a.lx16a import ServoArgumentError
 
+from rdisc.emit.python import import_driver
 from rdisc.runtime import errors, load
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -168,14 +167,7 @@ class Side:
 
 @pytest.fixture(scope="module")
 def sides(tmp_path_factory: pytest.TempPathFactory) -> Iterator[list[Side]]:
-    out = tmp_path_factory.mktemp("lx16a") / "lx16a_driver.py"
-    subprocess.run([sys.executable, "-m", "rdisc", "emit-python", str(DESCRIPTION), "-o", str(out)],
-                   check=True, cwd=ROOT, capture_output=True)
-    spec = importlib.util.spec_from_file_location("lx16a_driver", out)
-    assert spec is not None and spec.loader is not None
-    drv = importlib.util.module_from_spec(spec)
-    sys.modules["lx16a_driver"] = drv
-    spec.loader.exec_module(drv)
+    drv = import_driver(DESCRIPTION, tmp_path_factory.mktemp("lx16a"))
     with _Bus() as dev_rt, _Bus() as dev_drv:
         runtime = load(DESCRIPTION).connect(dev_rt.port, timeout=TIMEOUT)
         driver = drv.connect(dev_drv.port, timeout=TIMEOUT)

@@ -4,16 +4,19 @@ Why: the description is only worth having if the sentences it writes are those p
 the values it decodes are those pynmea2 parses (`published/nmea.py`), except where pynmea2 is wrong
 and NMEA 0183 wins (`spec_values`; `Rejected`: rdisc must refuse). Both the rdisc runtime and the
 driver `rdisc emit-python` generates are checked, each over a real pty. Reading a sentence writes
-nothing: the device side sends the sentence a moment after the read began, as a receiver talks on
-its own.
+nothing and keeps what has arrived: the device side sends the sentence a moment after the read
+began, as a receiver talks on its own, and sentences that came together are read one after the
+other. gga() and rmc() `skip unmatched`: a sentence of the other type, noise, a bad checksum or
+malformed fields are read past, and RdisTimeout comes when nothing that decodes follows. Since
+reads keep unread input, each test starts by discarding whatever an earlier one left in the pty.
 """
 
 from __future__ import annotations
 
-import importlib.util
+import functools
 import math
-import subprocess
-import sys
+import os
+import termios
 import threading
 from collections.abc import Iterator
 from pathlib import Path
@@ -27,11 +30,12 @@ pytest.importorskip("pynmea2")
 from devices import PtyDevice, pty_device
 from published.nmea import CALLS, REPLIES, Call, Rejected, Reply, published_decode, published_request
 
+from rdisc.emit.python import import_driver
 from rdisc.runtime import errors, load
 
 DESCRIPTION = Path(__file__).resolve().parents[2] / "examples" / "nmea.rdis"
 TIMEOUT = 0.3  # rdisc's reply timeout here (seconds)
-SEND_AFTER = 0.05  # the device sends a reply this long after the read began (the read flushes first)
+SEND_AFTER = 0.05  # the device sends a reply this long after the read began (as a receiver talks on its own)
 
 # Written after every call: its arrival ends the call's bytes.
 MARKER_ARGS = ("ZZ", *[""] * 14)
@@ -59,32 +63,45 @@ def rdisc_call(call: Call) -> tuple[str, tuple[Any, ...]] | None:
 COVERED = [c for c in CALLS if rdisc_call(c) is not None]
 
 # Replies where rdisc deliberately differs from the value the harness expects: the error it raises, and why.
+# (A sentence that does not decode is read past: with nothing after it, the read times out.)
 DEVIATIONS: dict[str, tuple[str, str]] = {
-    "gga_without_crlf": ("RdisProtocolError", ("on a serial line a sentence ends at CR LF: one without it "
+    "gga_without_crlf": ("RdisTimeout", ("on a serial line a sentence ends at CR LF: one without it "
                          "never ends (pynmea2 parses a str, where the end of the string ends it)")),
-    "gga_no_checksum": ("RdisProtocolError", ("the checksum is optional in GGA, but a frame's parts are all "
-                        "mandatory: RDIS cannot describe an optional `*hh`")),
+    "gga_no_checksum": ("RdisTimeout", ("the checksum is optional in GGA, but a frame's parts are all "
+                        "mandatory: RDIS cannot describe an optional `*hh`, so the sentence is read past")),
 }
-# Replies NMEA 0183 refuses (or pynmea2 fails on): the error rdisc raises instead.
+# Replies NMEA 0183 refuses (or pynmea2 fails on): gga()/rmc() read past them (`skip unmatched`) and,
+# as nothing that decodes follows, raise RdisTimeout ("no matching reply") instead.
 ERRORS: dict[str, str] = {
-    "gga_bad_checksum": "RdisProtocolError", "rmc_bad_checksum": "RdisProtocolError",
-    "rmc_no_checksum": "RdisProtocolError", "rmc_no_checksum_strict": "RdisProtocolError",
-    "rmc_truncated": "RdisProtocolError", "gga_truncated_checksum": "RdisProtocolError",
-    "no_dollar": "RdisProtocolError",  # no `$` in the bytes that came: all skipped as noise
-    "unknown_sentence": "RdisProtocolError",  # read as a GGA: the regex does not match
-    "silent": "RdisTimeout", "gga_bad_number": "RdisProtocolError",
+    "gga_bad_checksum": "RdisTimeout", "rmc_bad_checksum": "RdisTimeout",
+    "rmc_no_checksum": "RdisTimeout", "rmc_no_checksum_strict": "RdisTimeout",
+    "rmc_truncated": "RdisTimeout", "gga_truncated_checksum": "RdisTimeout",
+    "no_dollar": "RdisTimeout",  # no `$` in the bytes that came: all skipped as noise
+    "unknown_sentence": "RdisTimeout",  # read as a GGA: the regex does not match
+    "silent": "RdisTimeout", "gga_bad_number": "RdisTimeout",  # "54A.4": the regex does not match
 }
-# The harness decodes these with pynmea2's stream reader; what rdisc reads is the first sentence only.
-FIRST_SENTENCE_ONLY = {
-    "stream_two_sentences": "a read flushes unread input first: the RMC that came with the GGA is lost",
+# The harness fails on these for a reason that is no protocol matter: compared with `parse` instead.
+PARSED_INSTEAD = {
     "stream_raw_serial": "pynmea2 fails (TypeError: a usage bug, not a protocol matter): compared with `parse`",
+}
+# Read past, then followed by a valid sentence that rdisc loses with it: reading the sentence (which lacks
+# the `*hh` CR LF where a frame has them) takes bytes of the next one, its `$` among them, and a read
+# resumes after the bytes it took, not at the next `$` in them.
+LOSES_NEXT = {
+    "gga_without_crlf": "its checksum is followed by the next sentence's `$G`, read as the CR LF",
+    "gga_no_checksum": "no `*`: the payload runs on to the next sentence's `*`",
+    "rmc_no_checksum": "no `*`: the payload runs on to the next sentence's `*`",
+    "rmc_no_checksum_strict": "no `*`: the payload runs on to the next sentence's `*`",
+    "rmc_truncated": "no `*`: the payload runs on to the next sentence's `*`",
+    "gga_truncated_checksum": "one hex digit: its CR LF and the next `$` are read as checksum and CR LF",
 }
 
 
 def test_every_entry_is_covered_or_listed() -> None:
     assert sorted([c.label for c in COVERED] + list(UNCOVERED)) == sorted(c.label for c in CALLS)
     assert not set(UNCOVERED) & {c.label for c in COVERED}
-    assert set(DEVIATIONS) | set(ERRORS) | set(FIRST_SENTENCE_ONLY) <= {r.label for r in REPLIES}
+    assert set(DEVIATIONS) | set(ERRORS) | set(PARSED_INSTEAD) <= {r.label for r in REPLIES}
+    assert set(LOSES_NEXT) <= set(DEVIATIONS) | set(ERRORS)
 
 
 def _seconds(value: Any) -> float:
@@ -134,8 +151,20 @@ class Gps:
         received = self.dev.wait_until(lambda: self.dev.received.endswith(MARKER), 2.0, "the marker")
         return received[: -len(MARKER)]
 
+    def drain(self) -> None:
+        """Discard the bytes the host has not read yet (what an earlier test left): reads keep them."""
+        fd = os.open(self.dev.port, os.O_RDWR | os.O_NOCTTY | os.O_NONBLOCK)
+        try:
+            termios.tcflush(fd, termios.TCIFLUSH)  # the pty's input queue, whichever descriptor reads it
+        finally:
+            os.close(fd)
+
     def read(self, name: str, sentence: bytes) -> None:
-        """Call the reading primitive `name` while the device sends `sentence` (once)."""
+        """Call the reading primitive `name` on an empty input while the device sends `sentence` (once).
+
+        What the read leaves unread stays there for the next read of the same test.
+        """
+        self.drain()
         timer = threading.Timer(SEND_AFTER, self.dev.send, (sentence,))
         timer.start()
         try:
@@ -145,15 +174,7 @@ class Gps:
 
 
 def _driver_module(tmp: Path) -> ModuleType:
-    out = tmp / "nmea_driver.py"
-    subprocess.run([sys.executable, "-m", "rdisc", "emit-python", str(DESCRIPTION), "-o", str(out)],
-                   check=True, capture_output=True)
-    spec = importlib.util.spec_from_file_location("nmea_driver", out)
-    assert spec is not None and spec.loader is not None
-    module = importlib.util.module_from_spec(spec)
-    sys.modules[spec.name] = module  # dataclasses look their module up while the class is made
-    spec.loader.exec_module(module)
-    return module
+    return import_driver(DESCRIPTION, tmp)
 
 
 @pytest.fixture(scope="module")
@@ -182,28 +203,81 @@ def test_sentence_bytes(gps: Gps, call: Call) -> None:
 
 
 def _primitive(reply: Reply) -> str:
+    """The primitive that reads `reply` when it does not decode (by its label)."""
     return "rmc" if reply.label.startswith("rmc") else "gga"
 
 
-@pytest.mark.parametrize("reply", REPLIES, ids=[r.label for r in REPLIES])
-def test_reply_values(gps: Gps, reply: Reply) -> None:
-    if reply.label in DEVIATIONS or reply.label in ERRORS:
-        error = DEVIATIONS[reply.label][0] if reply.label in DEVIATIONS else ERRORS[reply.label]
-        if reply.label in ERRORS:  # NMEA 0183 refuses it, or pynmea2 fails too
-            decoded = published_decode(reply.method, reply.args, reply.reply)
-            assert reply.spec_values is Rejected or isinstance(decoded, type)
-        with pytest.raises(getattr(gps.errors, error)):
-            gps.read(_primitive(reply), reply.reply)
-        return
-    if reply.label == "stream_raw_serial":
+def _error(reply: Reply) -> str | None:
+    """The error rdisc raises reading `reply` alone, if it does not decode."""
+    return DEVIATIONS[reply.label][0] if reply.label in DEVIATIONS else ERRORS.get(reply.label)
+
+
+@functools.cache  # pynmea2's stream reads take a pty and its 0.2 s timeout: once per reply
+def _sentences(reply: Reply) -> list[tuple[str, tuple[Any, ...]]]:
+    """The sentences pynmea2 (or NMEA 0183) decodes from a valid `reply`: (primitive, values) each."""
+    if reply.label in PARSED_INSTEAD:
         values = published_decode("parse", (), reply.reply)
     elif isinstance(reply.spec_values, tuple):
         values = reply.spec_values
     else:
         values = published_decode(reply.method, reply.args, reply.reply)
     assert isinstance(values, tuple), values
-    gps.read(_primitive(reply), reply.reply)
-    wanted = expected_state(values[:18] if values[1] == "GGA" else values[:17])
+    sentences = []
+    while values:  # a GGA is 18 values, an RMC 17 (with latitude and longitude)
+        size = 18 if values[1] == "GGA" else 17
+        sentences.append((values[1].lower(), values[:size]))
+        values = values[size:]
+    return sentences
+
+
+def _check_state(gps: Gps, values: tuple[Any, ...]) -> None:
+    wanted = expected_state(values)
     state = gps.robot.state
     got = {name: state[name] for name in wanted}
     assert got == {k: pytest.approx(v) if isinstance(v, float) else v for k, v in wanted.items()}
+
+
+@pytest.mark.parametrize("reply", REPLIES, ids=[r.label for r in REPLIES])
+def test_reply_values(gps: Gps, reply: Reply) -> None:
+    error = _error(reply)
+    if error is not None:
+        if reply.label in ERRORS:  # NMEA 0183 refuses it, or pynmea2 fails too
+            decoded = published_decode(reply.method, reply.args, reply.reply)
+            assert reply.spec_values is Rejected or isinstance(decoded, type)
+        with pytest.raises(getattr(gps.errors, error)):
+            gps.read(_primitive(reply), reply.reply)
+        return
+    # Several sentences (stream_two_sentences: a GGA, then an RMC) are read one after the other:
+    # the first read keeps what it did not take, and the next one reads it with nothing more sent.
+    (first, values), *rest = _sentences(reply)
+    gps.read(first, reply.reply)
+    _check_state(gps, values)
+    for name, values in rest:
+        gps.robot.call_primitive(name)
+        _check_state(gps, values)
+
+
+_BY_LABEL = {r.label: r for r in REPLIES}
+# Valid sentences sent after a reply (the second only after one in LOSES_NEXT, which loses the first).
+FOLLOWERS = {"gga": _BY_LABEL["gga_typical"], "rmc": _BY_LABEL["rmc_typical"]}
+SECOND_FOLLOWERS = {"gga": _BY_LABEL["gga_south_fraction"], "rmc": _BY_LABEL["rmc_nav_status"]}
+# Each single-sentence reply, then a valid sentence its reader does not take: a sentence of the other
+# type (read by the other primitive), or of the primitive's own type after one that does not decode.
+READ_PAST = [r for r in REPLIES if r.label != "stream_two_sentences"]
+
+
+@pytest.mark.parametrize("reply", READ_PAST, ids=[r.label for r in READ_PAST])
+def test_read_past(gps: Gps, reply: Reply) -> None:
+    """`skip unmatched`: what gga()/rmc() do not decode is read past, up to the sentence they want."""
+    if _error(reply) is not None:
+        name = _primitive(reply)
+    else:
+        [(kind, _values)] = _sentences(reply)
+        name = "rmc" if kind == "gga" else "gga"
+    follower, sent = FOLLOWERS[name], reply.reply + FOLLOWERS[name].reply
+    if reply.label in LOSES_NEXT:  # the follower goes with it: the sentence after it is the one read
+        follower = SECOND_FOLLOWERS[name]
+        sent += follower.reply
+    gps.read(name, sent)
+    [(_kind, values)] = _sentences(follower)
+    _check_state(gps, values)

@@ -15,9 +15,7 @@ volt and 10 mA units scaled by the test.
 
 from __future__ import annotations
 
-import importlib.util
 import os
-import subprocess
 import sys
 from collections.abc import Iterator
 from pathlib import Path
@@ -42,6 +40,7 @@ from published.roboclaw import (
     reply_frame,
 )
 
+from rdisc.emit.python import import_driver
 from rdisc.runtime import errors, load
 
 REPO = Path(__file__).resolve().parents[2]
@@ -137,16 +136,9 @@ class Claw(PtyDevice):
 
 @pytest.fixture(scope="module")
 def driver_module(tmp_path_factory: pytest.TempPathFactory) -> Iterator[Any]:
-    out = tmp_path_factory.mktemp("roboclaw") / "roboclaw_driver.py"
-    subprocess.run([sys.executable, "-m", "rdisc", "emit-python", str(DESCRIPTION), "-o", str(out)],
-                   check=True, capture_output=True, cwd=REPO)
-    spec = importlib.util.spec_from_file_location("roboclaw_driver", out)
-    assert spec is not None and spec.loader is not None
-    module = importlib.util.module_from_spec(spec)
-    sys.modules[spec.name] = module  # its dataclasses look their module up
-    spec.loader.exec_module(module)
+    module = import_driver(DESCRIPTION, tmp_path_factory.mktemp("roboclaw"))
     yield module
-    sys.modules.pop(spec.name, None)
+    sys.modules.pop(module.__name__, None)
 
 
 @pytest.fixture(scope="module", params=["runtime", "driver"])

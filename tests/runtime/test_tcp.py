@@ -4,17 +4,14 @@ runtime and by the generated driver alike."""
 
 from __future__ import annotations
 
-import importlib.util
 import socket
-import sys
 import threading
 from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
 
-from rdisc.compile import compile_path
-from rdisc.emit.python import to_python
+from rdisc.emit.python import import_driver
 from rdisc.runtime import load
 
 DESCRIPTION = """\
@@ -78,15 +75,7 @@ def test_runtime_opens_the_address(server: Server, description: Path) -> None:
 
 
 def test_generated_driver_opens_the_address(server: Server, description: Path, tmp_path: Path) -> None:
-    compilation = compile_path(str(description))
-    assert compilation.model is not None
-    module_path = tmp_path / "tcp_box_driver.py"
-    module_path.write_text(to_python(compilation.model, description.name, sources=compilation.sources))
-    spec = importlib.util.spec_from_file_location(module_path.stem, module_path)
-    assert spec is not None and spec.loader is not None
-    driver = importlib.util.module_from_spec(spec)
-    sys.modules[module_path.stem] = driver
-    spec.loader.exec_module(driver)
+    driver = import_driver(description, tmp_path)
     with driver.connect(timeout=1.0) as robot:
         robot.call_primitive("read", 7)
         assert robot.state["reading"] == -700
