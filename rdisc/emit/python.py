@@ -498,6 +498,8 @@ class _Driver:
                 "self._running = False",
                 "self._closed = False",
             ])
+            if self.framed:
+                w.line("self._inputs: dict[int, Input] = {}  # each port's input, with bytes a bad frame gave back")
             for c in self.model.connections.values():
                 self.comment(w, c.span, f"connection {c.name}: {c.kind}, {c.baud} baud, {c.frequency_hz:g} Hz")
                 w.line(f"self._link_{c.name}: _Link  # set by open()")

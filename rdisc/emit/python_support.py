@@ -453,14 +453,18 @@ def _exchange_frame(self, link: _Link, primitive: str, request: bytes, frame: Fr
     try:
         with link.lock:
             try:
+                received = self._inputs.get(id(link.port))
+                if received is None:
+                    received = self._inputs[id(link.port)] = Input(link.port)
                 if request:
                     link.port.reset_input_buffer()
+                    received.clear()
                     link.port.write(request)
                     written = True
                 deadline = time.monotonic() + self.timeout
                 while True:
                     try:
-                        chunk, payload = frame.read(link.port, fields, request, size)
+                        chunk, payload = frame.read(received, fields, request, size)
                         data += chunk
                         if size >= 0 and len(payload) != size and frame.reply.payload >= 0:
                             raise RdisProtocolError(f"{primitive}: expected {size} bytes, got {len(payload)}")

@@ -330,10 +330,11 @@ def _field_type(adapter: m.Adapter, name: str, expr: m.Expr) -> m.Type:
 class _Port:
     """One open port, shared by the connections given the same one, with its exchange lock."""
 
-    __slots__ = ("io", "label", "lock", "owned")
+    __slots__ = ("input", "io", "label", "lock", "owned")
 
     def __init__(self, io: Any, owned: bool, label: str) -> None:
         self.io = io
+        self.input = framing.Input(io)  # for frames: the port's input, with bytes a bad frame gave back
         self.owned = owned
         self.label = label
         self.lock = threading.Lock()
@@ -655,6 +656,7 @@ class Robot:
                 if request:  # a listener (no request) keeps what has arrived: its reply is the next frame
                     if expects_reply:
                         io.reset_input_buffer()
+                        port.input.clear()
                     io.write(request)
             except _WRITE_TIMEOUTS:
                 raise RdisTimeout(f"{plan.name}: write not completed within {self.timeout:g} s") from None
@@ -667,7 +669,7 @@ class Robot:
                         deadline = time.monotonic() + self.timeout
                         while True:  # once, or until a frame decodes when the primitive skips others
                             try:
-                                chunk, payload = frame.wire.read(io, fields, request, size)  # type: ignore[arg-type]
+                                chunk, payload = frame.wire.read(port.input, fields, request, size)  # type: ignore[arg-type]
                                 data += chunk
                                 if plan.skip:
                                     reply = codec.match_payload(payload) if codec.reads_line else codec.decode(payload)

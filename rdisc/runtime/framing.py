@@ -117,6 +117,46 @@ def _crc_table(width: int, poly: int, reflected: bool) -> tuple[int, ...]:
     return tuple(table)
 
 
+class Input:
+    """A port's input, with bytes put back: a reply frame found wrong gives back all
+    but its first byte, so that the next header is looked for in them (a frame whose
+    checksum failed may have swallowed the start of the next one)."""
+
+    __slots__ = ("pending", "port")
+
+    def __init__(self, port: Reader) -> None:
+        self.port = port
+        self.pending = bytearray()
+
+    def put_back(self, data: bytes) -> None:
+        self.pending[:0] = data
+
+    def clear(self) -> None:
+        self.pending.clear()
+
+    def read(self, size: int = 1, /) -> bytes:
+        if not self.pending:
+            return self.port.read(size)
+        taken = bytes(self.pending[:size])
+        del self.pending[:size]
+        return taken + self.port.read(size - len(taken)) if len(taken) < size else taken
+
+    def read_until(self, expected: bytes = b"\n", size: int | None = None, /) -> bytes:
+        limit = MAX_FRAME if size is None else size
+        if not self.pending:
+            return self.port.read_until(expected, limit)
+        found = self.pending.find(expected)
+        end = min(found + len(expected) if found >= 0 else len(self.pending), limit)
+        taken = bytearray(self.pending[:end])
+        del self.pending[:end]
+        while not taken.endswith(expected) and len(taken) < limit:  # the rest from the port, byte by byte
+            byte = self.port.read(1)
+            if not byte:
+                break
+            taken += byte
+        return bytes(taken)
+
+
 # ---- parts ------------------------------------------------------------------------------------
 
 
@@ -274,8 +314,18 @@ class Frame:
         before the header are skipped; every constant, field and checksum is
         checked. FrameError says what is wrong.
         """
+        data = bytearray()
+        try:
+            return self._read(port, data, fields, request, size)
+        except FrameError:
+            if len(data) > 1 and isinstance(port, Input):  # look for the next header in what was taken
+                port.put_back(bytes(data[1:]))
+            raise
+
+    def _read(self, port: Reader, data: bytearray, fields: Sequence[int], request: bytes,
+              size: int) -> tuple[bytes, bytes]:
         side = self.reply
-        data = bytearray(self._sync(port, side.header) if side.header else b"")
+        data += self._sync(port, side.header) if side.header else b""
         self._take(port, data, side.prefix, bool(data))
         if side.payload < 0:
             return self._check(side, bytes(data), 0, fields, request), b""
@@ -290,10 +340,11 @@ class Frame:
             self._take(port, data, size + side.suffix, bool(data))
         else:
             found = port.read_until(side.delimiter, MAX_FRAME)
-            if not found.endswith(side.delimiter):
-                raise FrameError(f"{self.name}: reply not delimited by {side.delimiter!r}: "
-                                 f"{bytes(data + found)!r}", timeout=not data and not found)
+            started = bool(data or found)
             data += found
+            if not found.endswith(side.delimiter):
+                raise FrameError(f"{self.name}: reply not delimited by {side.delimiter!r}: {bytes(data)!r}",
+                                 timeout=not started)
             size = len(found) - len(side.delimiter)
             self._take(port, data, side.suffix - len(side.delimiter), True)
         raw = bytes(data)

@@ -8,7 +8,7 @@ import io
 import pytest
 
 from rdisc.runtime.codec import checksum
-from rdisc.runtime.framing import Bytes, Check, Checksum, Field, Frame, FrameError, Length, Payload, Stuffing
+from rdisc.runtime.framing import Bytes, Check, Checksum, Field, Frame, FrameError, Input, Length, Payload, Stuffing
 from rdisc.semantics import model as m
 from rdisc.semantics.frames import CATALOGUE
 
@@ -135,3 +135,14 @@ def test_a_reserved_sequence_without_its_escape_is_a_frame_error() -> None:
     crc = Checksum("crc", 16, 0x8005)(b"\xff\xff\xfd\x00" + body)
     with pytest.raises(FrameError, match="not followed by"):
         DXL2.read(Port(b"\xff\xff\xfd\x00" + body + crc.to_bytes(2, "little")), [1], b"", -1)
+
+
+def test_a_bad_frame_gives_back_what_it_took() -> None:
+    """A frame cut short swallows the next one's header; through an Input the reader finds it again."""
+    body = bytes([1, 3, 0, 0x20])
+    good = b"\xff\xff" + body + bytes([~sum(body) & 0xFF])
+    cut = good[:-3]  # no checksum: the good frame's first bytes complete it, wrongly
+    port = Input(Port(cut + good))
+    with pytest.raises(FrameError, match="checksum"):
+        DXL.read(port, [1], b"", -1)
+    assert DXL.read(port, [1], b"", -1) == (good, bytes([0, 0x20]))
