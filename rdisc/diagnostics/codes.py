@@ -177,6 +177,11 @@ A primitive's `frame NAME(args)` passes one argument per frame parameter. A
 primitive that decodes a reply needs a frame whose reply has a payload; a frame
 field's value must fit its format. `skip unmatched` (read past frames that do not
 decode: other traffic on a shared line) needs a framed reply to decode."""),
+    ("E505", "reply-table", """
+A reply table (`reply KEY { VALUE: unpack ... }`) chooses a primitive's reply by
+the value of one of its int parameters, so that parameter needs a range
+(`KEY: int in LOW..HIGH`) and every value in it needs its entry: a value without
+one would send a request whose reply rdisc cannot read."""),
     # -- warnings --------------------------------------------------------------
     ("W102", "untriggered-output", """
 No interface triggers this output, so it is never delivered."""),

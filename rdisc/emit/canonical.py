@@ -132,9 +132,16 @@ def _primitive(x: m.Primitive) -> JsonObject:
         ("frame", None if x.frame is None else {"name": x.frame.frame,
                                                  "arguments": [_embedded(a) for a in x.frame.args]}),
         ("skipUnmatched", x.skip_unmatched or None),
+        ("replyTable", None if x.table is None else {"key": x.table.key, "cases": [_case(c) for c in x.table.cases]}),
         ("postActions", actions or None),
         ("doc", x.doc),
     )
+
+
+def _case(c: m.ReplyCase) -> JsonObject:
+    kind, template = ("unpack", c.decoding.format) if isinstance(c.decoding, m.Unpack) else ("regex", c.decoding.pattern)
+    actions = [f"{a.target} = {_text(a.value)}" for a in c.actions]
+    return _object(("value", c.value), (kind, template), ("postActions", actions or None))
 
 
 def _ranges(params: tuple[m.Parameter, ...]) -> list[list[int | float] | None] | None:

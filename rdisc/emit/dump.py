@@ -28,10 +28,12 @@ def _primitive(model: m.Model, p: m.Primitive) -> str:
         lines.append(f"  payloads stuffed: {escape} inserted after every {reserved}")
     request = _payload_rows(p.encoding, p.args)
     lines += _side("request", frame.request if frame else None, request)
-    if p.expects_reply(model.frames):
-        reply = _reply_rows(p.decoding)
-        framed = frame.reply if frame and frame.reply else None
-        lines += _side("reply", framed, reply)
+    framed = frame.reply if frame and frame.reply else None
+    if p.table is not None:
+        for case in p.table.cases:
+            lines += _side(f"reply when {p.table.key} = {case.value}", framed, _reply_rows(case.decoding))
+    elif p.expects_reply(model.frames):
+        lines += _side("reply", framed, _reply_rows(p.decoding))
     else:
         lines.append("  reply: none")
     return "\n".join(lines) + "\n"

@@ -302,7 +302,7 @@ _CONNECTION = (
 )  # fmt: skip
 _PRIMITIVE = (
     "name", "parameters", "parameterTypes", "parameterRanges", "connection", "pack", "format", "formatArgs",
-    "unpack", "regex", "frame", "skipUnmatched", "postActions", "doc",
+    "unpack", "regex", "frame", "skipUnmatched", "replyTable", "postActions", "doc",
 )  # fmt: skip
 _FRAME = ("name", "parameters", "parameterTypes", "request", "reply", "stuffing", "doc")
 _CHECKSUM = (
@@ -439,6 +439,28 @@ class _Importer:
                     made.append(ast.EnumMember(ident, expr, member.span))
             built.append(ast.EnumDecl(name, tuple(made), key.span))
         return built
+
+    def reply_table(self, obj: JObject) -> ast.ReplyTable:
+        t = self.members(obj, "`replyTable`", ("key", "cases"))
+        key = self.required(obj, t, "key", "`replyTable`", self.ident) or ast.Ident("", obj.span)
+        entries = []
+        for item in self.array(t.get("cases"), "`cases`"):
+            case = self.object(item, "a reply table entry")
+            if case is None:
+                continue
+            c = self.members(case, "a reply table entry", ("value", "unpack", "regex", "postActions"))
+            value = self.required(case, c, "value", "a reply table entry", lambda v, _: self.expr(v, "int"))
+            kind = next((k for k in ("unpack", "regex") if k in c), None)
+            template = self.string(c.get(kind), f"`{kind}`") if kind else None
+            if value is None or kind is None or template is None:
+                if kind is None:
+                    self.error(case.span, "a reply table entry has `unpack` or `regex`")
+                continue
+            assigns = _present([self.post_action(a) for a in self.array(c.get("postActions"), "`postActions`")])
+            decoding = ast.Decoding(kind, ast.StrLit(template.value, template.span), template.span)
+            actions = ast.Actions(assigns, c["postActions"].span) if assigns else None
+            entries.append(ast.ReplyEntry(value, decoding, actions, case.span))
+        return ast.ReplyTable(key, tuple(entries), obj.span)
 
     def frame(self, obj: JObject) -> ast.FrameDecl | None:
         m = self.members(obj, "a frame", _FRAME)
@@ -623,6 +645,9 @@ class _Importer:
         skip = m.get("skipUnmatched")
         if isinstance(skip, JBool) and skip.value:
             clauses.append(ast.SkipUnmatched(skip.span))
+        table = self.object(m.get("replyTable"), "`replyTable`")
+        if table is not None:
+            clauses.append(self.reply_table(table))
         actions = self.array(m.get("postActions"), "`postActions`")
         if actions:  # none is the default, left unsaid
             assigns = _present([self.post_action(a) for a in actions])

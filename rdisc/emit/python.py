@@ -380,18 +380,24 @@ class _Driver:
                         w.line(f"{const}_REQUEST = {quoted(template)}")
                 case _:
                     _unreachable(prim.encoding)
-            match prim.decoding:
-                case m.Unpack(format=fmt):
-                    self.uses_struct = True
-                    layout = formats.struct_layout(fmt)
-                    w.line(f"{const}_REPLY = struct.Struct({quoted(layout.fixed)})"
-                           + ("  # then the rest: bytes" if layout.rest else ""))
-                case m.Regex(pattern=pattern):
-                    w.line(f"{const}_REPLY = re.compile({quoted(pattern)})")
-                case None:
-                    pass
-                case _:
-                    _unreachable(prim.decoding)
+            self.reply_codec(w, const, prim.decoding)
+            for case in prim.table.cases if prim.table else ():
+                w.line(f"{const}_{_case(case)}_REQUEST = {const}_REQUEST")
+                self.reply_codec(w, f"{const}_{_case(case)}", case.decoding)
+
+    def reply_codec(self, w: Writer, const: str, decoding: m.Unpack | m.Regex | None) -> None:
+        match decoding:
+            case m.Unpack(format=fmt):
+                self.uses_struct = True
+                layout = formats.struct_layout(fmt)
+                w.line(f"{const}_REPLY = struct.Struct({quoted(layout.fixed)})"
+                       + ("  # then the rest: bytes" if layout.rest else ""))
+            case m.Regex(pattern=pattern):
+                w.line(f"{const}_REPLY = re.compile({quoted(pattern)})")
+            case None:
+                pass
+            case _:
+                _unreachable(decoding)
 
     # -- state -----------------------------------------------------------------------------------
 
@@ -786,23 +792,34 @@ class _Driver:
             w.blank(1)
             self.primitive_method(w, prim)
 
-    def primitive_method(self, w: Writer, prim: m.Primitive) -> None:
+    def primitive_method(self, w: Writer, prim: m.Primitive, case: m.ReplyCase | None = None) -> None:
+        """`_primitive_NAME`; with `case`, the method for one entry of its reply table."""
         local = _params([(prm.name, prm.type) for prm in prim.params])
         names = self.names(local)
         signature = "".join(f", {local[prm.name]}: {_PY_TYPES[prm.type]}" for prm in prim.params)
-        const = self.codecs[prim.name]
-        with w.block(f"def _primitive_{prim.name}(self{signature}) -> None:"):
-            w.line(_docstring(prim.doc or f"The primitive `{prim.name}`."))
-            self.comment(w, prim.span, f"primitive {prim.name} on {prim.connection}")
-            _in_ranges(w, prim.name, prim.params, local)
+        const = self.codecs[prim.name] + (f"_{_case(case)}" if case else "")
+        method = f"_primitive_{prim.name}" + (f"_when_{_case(case)}" if case else "")
+        if prim.table is not None:
+            self.table_dispatch(w, prim, method, signature, local)
+            for each in prim.table.cases:
+                w.blank(1)
+                self.primitive_method(w, prim.case(each), each)
+            return
+        with w.block(f"def {method}(self{signature}) -> None:"):
+            if case is None:
+                w.line(_docstring(prim.doc or f"The primitive `{prim.name}`."))
+                self.comment(w, prim.span, f"primitive {prim.name} on {prim.connection}")
+                _in_ranges(w, prim.name, prim.params, local)
+            else:
+                w.line(_docstring(f"`{prim.name}` when its reply table's key is {case.value}."))
             request = f"{const}_REQUEST"
             if _constant_request(prim) is None:
-                self.encode(w, prim, names)
+                self.encode(w, prim, names, const)
                 request = "request"
             link = f"self._link_{prim.connection}, {quoted(prim.name)}"
             uses_reply = any(_reads_reply(a.value) for a in prim.actions)
             if prim.frame is not None:
-                self.framed_exchange(w, prim, names, request, link, uses_reply)
+                self.framed_exchange(w, prim, names, request, link, uses_reply, const)
                 if prim.actions:
                     self.post_actions(w, prim, names)
                 return
@@ -815,7 +832,7 @@ class _Driver:
                         w.line(exchange)
                     else:
                         w.line(f"data = {exchange}")
-                        self.unpacked(w, prim, "data")
+                        self.unpacked(w, prim, "data", const)
                 case m.Regex():
                     self.exprs.helpers.add("_match")
                     end = self.model.connections[prim.connection].terminator_bytes()
@@ -828,11 +845,11 @@ class _Driver:
                 self.post_actions(w, prim, names)
 
     def framed_exchange(self, w: Writer, prim: m.Primitive, names: Mapping[str, str], request: str, link: str,
-                        uses_reply: bool) -> None:
+                        uses_reply: bool, const: str) -> None:
         """The request framed, and the reply read through the frame (or as the decoding says)."""
         assert prim.frame is not None
         frame = self.model.frames[prim.frame.frame]
-        const, wire = self.codecs[prim.name], self.framed[frame.name]
+        wire = self.framed[frame.name]
         bound = dict(zip((prm.name for prm in frame.params), prim.frame.args))
         exprs = self.exprs
         exprs.reads_state = False
@@ -852,7 +869,7 @@ class _Driver:
                 case m.Unpack():
                     w.line(f"{'data = ' if uses_reply else ''}self._exchange({link}, request, {const}_REPLY.size)")
                     if uses_reply:
-                        self.unpacked(w, prim, "data")
+                        self.unpacked(w, prim, "data", const)
                 case m.Regex():
                     self.exprs.helpers.add("_match")
                     end = self.model.connections[prim.connection].terminator_bytes()
@@ -873,7 +890,7 @@ class _Driver:
                 w.line(f"{'data = ' if uses_reply else ''}self._exchange_frame("
                        f"{link}, request, {wire}, fields, {size}{accept})")
                 if uses_reply:
-                    self.unpacked(w, prim, "data")
+                    self.unpacked(w, prim, "data", const)
             case m.Regex():
                 self.exprs.helpers.add("_match")
                 match = f'_match({quoted(prim.name)}, {const}_REPLY, payload.decode("latin-1"))'
@@ -881,10 +898,9 @@ class _Driver:
                 w.line(f"payload = self._exchange_frame({link}, request, {wire}, fields, -1{accept})")
                 w.line(f"{'reply = ' if uses_reply else ''}{match}")
 
-    def unpacked(self, w: Writer, prim: m.Primitive, data: str) -> None:
+    def unpacked(self, w: Writer, prim: m.Primitive, data: str, const: str) -> None:
         """`reply = ...`: the values of an `unpack` reply."""
         assert isinstance(prim.decoding, m.Unpack)
-        const = self.codecs[prim.name]
         layout = formats.struct_layout(prim.decoding.format)
         strings = tuple(i for i, slot in enumerate(layout.slots) if slot.type is Type.STRING)
         if layout.rest:
@@ -896,12 +912,11 @@ class _Driver:
         else:
             w.line(f"reply = {const}_REPLY.unpack({data})")
 
-    def encode(self, w: Writer, prim: m.Primitive, names: Mapping[str, str]) -> None:
+    def encode(self, w: Writer, prim: m.Primitive, names: Mapping[str, str], const: str) -> None:
         """`request = ...`: the format arguments evaluated and encoded."""
         exprs = self.exprs
         exprs.reads_state = False
         values = [exprs.expr(a, names) for a in prim.args]
-        const = self.codecs[prim.name]
         match prim.encoding:
             case m.Pack(format=fmt):
                 layout = formats.struct_layout(fmt)
@@ -925,6 +940,23 @@ class _Driver:
             _emit(w, "request = ", encoded, suffix)
         w.line(f"except {errors} as err:")
         w.line(f'    raise RdisValueError(f"{_identifier(prim.name)}: {{err}}") from err')
+
+    def table_dispatch(self, w: Writer, prim: m.Primitive, method: str, signature: str,
+                       local: Mapping[str, str]) -> None:
+        """A primitive with a reply table: its key's value chooses the method that reads its reply."""
+        assert prim.table is not None
+        with w.block(f"def {method}(self{signature}) -> None:"):
+            w.line(_docstring(prim.doc or f"The primitive `{prim.name}`."))
+            self.comment(w, prim.span, f"primitive {prim.name} on {prim.connection}, its reply by {prim.table.key}")
+            _in_ranges(w, prim.name, prim.params, local)
+            args = ", ".join(local[prm.name] for prm in prim.params)
+            key = local[prim.table.key]
+            for i, case in enumerate(prim.table.cases):
+                keyword = "if" if i == 0 else "elif"
+                with w.block(f"{keyword} {key} == {case.value!r}:"):
+                    w.line(f"self._primitive_{prim.name}_when_{_case(case)}({args})")
+            if not prim.table.cases:
+                w.line("return")
 
     def post_actions(self, w: Writer, prim: m.Primitive, names: Mapping[str, str]) -> None:
         targets = [a.target for a in prim.actions]
@@ -1154,6 +1186,11 @@ def _in_ranges(w: Writer, owner: str, params: tuple[m.Parameter, ...], local: Ma
             with w.block(f"if not {prm.low!r} <= {name} <= {prm.high!r}:"):
                 w.line(f'raise RdisValueError(f"{_identifier(owner)}: parameter {prm.name} is {{{name}!r}}, '
                        f'outside {prm.range_text()}")')
+
+
+def _case(case: m.ReplyCase) -> str:
+    """A reply table entry's value in names: 7, or m7 for -7."""
+    return f"m{-case.value}" if case.value < 0 else str(case.value)
 
 
 def _substituted(e: m.Expr, bound: Mapping[str, m.Expr]) -> m.Expr:

@@ -19,6 +19,7 @@ import struct
 import threading
 import time
 from collections.abc import Callable, Mapping
+import dataclasses
 from dataclasses import dataclass
 from types import MappingProxyType
 from typing import TYPE_CHECKING, Any
@@ -98,6 +99,8 @@ class _PrimitivePlan:
     expects_reply: bool = False
     ranges: Ranges = ()
     skip: bool = False  # frames that do not decode are skipped (within the timeout)
+    cases: dict[int, _PrimitivePlan] | None = None  # a reply table: the plan for each value of the key
+    key: int = 0  # the key parameter's position
 
 
 @dataclass(frozen=True, slots=True)
@@ -171,6 +174,11 @@ class Description:
                 self.periodic.setdefault(plan.connection, []).append(plan)
 
     def _primitive(self, p: m.Primitive) -> _PrimitivePlan:
+        if p.table is not None:  # one plan for each value of the key, chosen when it is called
+            plain = self._primitive(dataclasses.replace(p, table=None))
+            cases = {c.value: self._primitive(p.case(c)) for c in p.table.cases}
+            key = next(i for i, param in enumerate(p.params) if param.name == p.table.key)
+            return dataclasses.replace(plain, cases=cases, key=key)
         slots = _slots(p.params)
         actions = tuple((a.target, prepare(a.value, slots), self.model.states[a.target].type) for a in p.actions)
         frame = None
@@ -211,7 +219,8 @@ class Description:
         used = [a.name for a in primitive.args if isinstance(a, m.Var) and a.scope is m.Scope.PARAM]
         simple = all(isinstance(a, m.Const) or (isinstance(a, m.Var) and a.scope is m.Scope.PARAM)
                      for a in primitive.args)
-        if primitive.actions or primitive.frame or _ranges(primitive.params) or not simple or used != params:
+        if (primitive.actions or primitive.frame or primitive.table or _ranges(primitive.params) or not simple
+                or used != params):
             return _CallPlan(plan, _values([prepare(a, slots) for a in call.args]), delay)
         by_param = dict(zip(params, zip(primitive.params, call.args)))
         direct: list[Prepared | m.Const] = []
@@ -613,6 +622,8 @@ class Robot:
             _widen(plan.name, plan.float_slots, args)
         if plan.ranges:
             _in_ranges(plan.name, plan.ranges, args)
+        if plan.cases is not None:  # its range holds every key of its table (checked at load)
+            plan = plan.cases[args[plan.key]]  # type: ignore[index]
         try:
             values = plan.args(self._state, args)
         except _EVAL_ERRORS as err:

@@ -165,7 +165,8 @@ def message_bytes(prim: m.Primitive, frames: dict[str, m.Frame] | None = None) -
         case m.Regex(pattern=pattern):
             reply = formats.regex_min_length(pattern) + 1  # and its line terminator
         case None:
-            reply = 0
+            reply = max((message_bytes(prim.case(c), frames) - request - framing for c in prim.table.cases),
+                        default=0) if prim.table else 0
     return request + reply + framing
 
 

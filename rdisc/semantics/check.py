@@ -391,22 +391,80 @@ class _Checker:
             )
             actions = self.actions(action_blocks[0], action_env, {p.name for p in params})
         connection = m.ConnectionRef(on.connection.text) if isinstance(on, ast.On) else m.ConnectionRef("")
+        table_clause = self.once([c for c in decl.clauses if isinstance(c, ast.ReplyTable)], "a reply table", name)
+        table = None
+        if isinstance(table_clause, ast.ReplyTable):
+            if decodings or action_blocks:
+                self.d.report("E203", table_clause.span, f"primitive `{name.text}` has a reply table and also "
+                              "`unpack`/`regex` or post-actions", help="give each of its replies in the table")
+            table = self.reply_table(table_clause, params, scope, name)
+        replies = [decoding] if decoding is not None else [c.decoding for c in table.cases] if table else []
         framed = self.once([c for c in decl.clauses if isinstance(c, ast.Framed)], "`frame`", name)
-        frame = self.frame_use(framed, env, decl, encoding, decoding) if isinstance(framed, ast.Framed) else None
-        if (isinstance(decoding, m.Unpack) and formats.struct_layout(decoding.format).rest
+        frame = self.frame_use(framed, env, decl, encoding, replies) if isinstance(framed, ast.Framed) else None
+        if (any(isinstance(r, m.Unpack) and formats.struct_layout(r.format).rest for r in replies)
                 and (frame is None or not self.frames[frame.frame].reply)):
-            self.d.report("E503", decodings[0].span, f"the reply of `{name.text}` ends in `*` (the rest of the "
-                          "message), but no frame says where the reply ends",
+            self.d.report("E503", decodings[0].span if decodings else name.span,
+                          f"the reply of `{name.text}` ends in `*` (the rest of the message), but no frame says "
+                          "where the reply ends",
                           help="read it through a frame with a `length` field or constant bytes after its payload")
         skip = self.once([c for c in decl.clauses if isinstance(c, ast.SkipUnmatched)], "`skip unmatched`", name)
-        if skip is not None and (decoding is None or frame is None or not self.frames[frame.frame].reply):
+        if skip is not None and (not replies or frame is None or not self.frames[frame.frame].reply):
             self.d.report("E504", skip.span, f"`skip unmatched` reads past frames that do not decode, but "  # type: ignore[union-attr]
                           f"`{name.text}` does not decode a framed reply",
                           help="give it a frame with a reply, and `unpack` or `regex`")
         return m.Primitive(name.text, params, connection, encoding, args, decoding, actions, decl.doc, decl.span,  # type: ignore[arg-type]
-                           frame, skip is not None)
+                           frame, skip is not None, table)
 
-    def frame_use(self, clause: ast.Framed, env: Env, decl: ast.PrimitiveDecl, encoding, decoding) -> m.FrameUse | None:
+    def reply_table(self, clause: ast.ReplyTable, params: tuple[m.Parameter, ...], scope: dict,
+                    name: ast.Ident) -> m.ReplyTable | None:
+        """`reply KEY { VALUE: unpack ... }`: one reply per value of an int parameter with a range,
+        every value of the range with its entry."""
+        key = clause.key.text
+        param = next((p for p in params if p.name == key), None)
+        if param is None:
+            self.d.report("E103", clause.key.span, f"`{key}` is not a parameter of `{name.text}`",
+                          help=suggest(key, [p.name for p in params]) or "a reply table's key is a parameter")
+            return None
+        if param.type is not Type.INT:
+            self.d.report("E401", clause.key.span, f"a reply table's key is an int parameter; `{key}` is not")
+            return None
+        cases: list[m.ReplyCase] = []
+        seen: dict[int, ast.ReplyEntry] = {}
+        for entry in clause.entries:
+            value = self.setting(entry.value, "a reply table's value")
+            if value is None:
+                continue
+            if value != int(value):
+                self.d.report("E204", entry.value.span, "a reply table's value is an int")
+                continue
+            if int(value) in seen:
+                self.d.report("E203", entry.value.span, f"{int(value)} has two entries in the reply table",
+                              labels=(Label(seen[int(value)].value.span, "first given here"),))
+                continue
+            seen[int(value)] = entry
+            decoding, reply = self.decoding(entry.decoding)
+            actions: tuple[m.PostAction, ...] = ()
+            if entry.actions is not None:
+                action_env = self.env_with(scope, "in a post-action", "`out`, parameters and state variables",
+                                           reply=reply, reply_known=reply is not None)
+                actions = self.actions(entry.actions, action_env, {p.name for p in params})
+            if decoding is not None:
+                cases.append(m.ReplyCase(int(value), decoding, actions))
+        if param.low is None:
+            self.d.report("E505", clause.key.span, f"`{key}` has no range, so the reply table of `{name.text}` "
+                          "cannot have an entry for each of its values",
+                          help=f"declare its range: `{key}: int in LOW..HIGH`")
+        else:
+            missing = [v for v in range(int(param.low), int(param.high) + 1) if v not in seen]  # type: ignore[arg-type]
+            if missing:
+                shown_ = ", ".join(map(str, missing[:6])) + (f" and {len(missing) - 6} more" if len(missing) > 6 else "")
+                self.d.report("E505", clause.key.span, f"the reply table of `{name.text}` has no entry for "
+                              f"{key} = {shown_}", label=f"in {param.range_text()}",
+                              help="give every value of the range its reply, or narrow the range")
+        return m.ReplyTable(key, tuple(cases))
+
+    def frame_use(self, clause: ast.Framed, env: Env, decl: ast.PrimitiveDecl, encoding,
+                  replies: list) -> m.FrameUse | None:
         """`frame NAME(args)`: its arguments, and whether the frame can carry this primitive."""
         frame = self.frames.get(clause.frame.text)
         target = self.s.frames.get(clause.frame.text)
@@ -422,18 +480,20 @@ class _Checker:
                 self.fits(self.typer.constant(arg), slot, expr.span, f" of frame `{frame.name}`",
                           f"field `{part.name}` is packed as `{slot.code}`, {slot.low} to {slot.high}")
         has_payload = any(isinstance(p, m.FramePayload) for p in frame.reply)
-        if decoding is not None and frame.reply and not has_payload:
+        if replies and frame.reply and not has_payload:
             self.d.report("E504", clause.span, f"primitive `{decl.name.text}` decodes a reply, but the reply of "
                           f"frame `{frame.name}` has no `payload`")
-        reply_layout = formats.struct_layout(decoding.format) if isinstance(decoding, m.Unpack) else None
-        size = reply_layout.size if reply_layout is not None and not reply_layout.rest else None
-        if decoding is not None and not payload_end_known(frame, size is not None):
+        reply_sizes = []
+        for decoding in replies:
+            layout = formats.struct_layout(decoding.format) if isinstance(decoding, m.Unpack) else None
+            reply_sizes.append(layout.size if layout is not None and not layout.rest else None)
+        if any(not payload_end_known(frame, size is not None) for size in reply_sizes):
             self.d.report("E503", clause.span, f"the reply of frame `{frame.name}` gives no way to find where the "
                           f"payload of `{decl.name.text}` ends",
                           help="add a `length` field, constant bytes after the payload, or decode with `unpack`")
         request_layout = formats.struct_layout(encoding.format) if isinstance(encoding, m.Pack) else None
         sizes = [(frame.request, request_layout.size if request_layout and not request_layout.rest else None),
-                 (frame.reply, size)]
+                 *((frame.reply, size) for size in reply_sizes)]
         for parts, payload in sizes:
             length = next((p for p in parts if isinstance(p, m.FrameLength)), None)
             if length is None or payload is None:
@@ -686,7 +746,8 @@ class _Checker:
             if name not in triggered and id(decl) in self.main_decls and ("output", name) not in self.s.suggested:
                 self.d.report("W102", decl.name.span, f"output `{name}` is never triggered",
                               help=f"add `triggers {name}` to the interface that reads its state")
-        written = {a.target for p in self.primitives.values() for a in p.actions}
+        written = {a.target for p in self.primitives.values()
+                   for a in (*p.actions, *(a for c in (p.table.cases if p.table else ()) for a in c.actions))}
         for name, decl in self.s.states.items():
             known = self.state_env.get(name, (None, None))[1] is not None  # else its type is reported
             if name not in self.typer.reads and name not in written and known and id(decl) in self.main_decls:

@@ -5,6 +5,7 @@ names an element that exists (references are typed keys into per-kind maps).
 
 from __future__ import annotations
 
+import dataclasses
 import enum
 from dataclasses import dataclass, field
 from typing import NewType
@@ -294,6 +295,21 @@ class FrameUse:
 
 
 @dataclass(frozen=True, slots=True)
+class ReplyCase:
+    """The reply of a primitive when its table's key parameter has `value`."""
+
+    value: int
+    decoding: Unpack | Regex
+    actions: tuple[PostAction, ...] = ()
+
+
+@dataclass(frozen=True, slots=True)
+class ReplyTable:
+    key: str  # the parameter whose value chooses the reply
+    cases: tuple[ReplyCase, ...]
+
+
+@dataclass(frozen=True, slots=True)
 class Primitive:
     name: str
     params: tuple[Parameter, ...]
@@ -306,11 +322,16 @@ class Primitive:
     span: Span | None = _span
     frame: FrameUse | None = None
     skip_unmatched: bool = False  # reads frames until one decodes, within the timeout
+    table: ReplyTable | None = None  # the reply chosen by a parameter (then no `decoding`)
+
+    def case(self, c: ReplyCase) -> Primitive:
+        """This primitive as it is when its table's key has c.value: one decoding."""
+        return dataclasses.replace(self, decoding=c.decoding, actions=c.actions, table=None)
 
     def expects_reply(self, frames: dict[str, Frame]) -> bool:
         """A reply is read when there is one to decode, or when the frame's reply
         is an acknowledgement (constant parts only, no payload)."""
-        if self.decoding is not None:
+        if self.decoding is not None or self.table is not None:
             return True
         if self.frame is None:
             return False

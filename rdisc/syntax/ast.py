@@ -275,7 +275,26 @@ class SkipUnmatched:
     span: Span = _span
 
 
-PrimitiveClause = On | Encoding | Decoding | Actions | Framed | SkipUnmatched
+@dataclass(frozen=True, slots=True)
+class ReplyEntry:
+    """`VALUE: unpack "fmt" { post-actions }`: the reply when the key is VALUE."""
+
+    value: Expr
+    decoding: Decoding
+    actions: Actions | None
+    span: Span = _span
+
+
+@dataclass(frozen=True, slots=True)
+class ReplyTable:
+    """`reply KEY { ... }`: the reply's decoding chosen by a parameter's value."""
+
+    key: Ident
+    entries: tuple[ReplyEntry, ...]
+    span: Span = _span
+
+
+PrimitiveClause = On | Encoding | Decoding | Actions | Framed | SkipUnmatched | ReplyTable
 
 
 @dataclass(frozen=True, slots=True)

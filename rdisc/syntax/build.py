@@ -277,6 +277,15 @@ def _transformer_class():
         def address(self, meta, c):
             return ast.Address(self.b.string(c[0]), self.b.span(meta))
 
+        def reply_table(self, meta, c):
+            return ast.ReplyTable(self.b.ident(c[0]), tuple(c[1:]), self.b.span(meta))
+
+        def reply_entry(self, meta, c):
+            value, kind, template, *assigns = c
+            decoding = ast.Decoding(kind, self.b.string(template), self.b.span(meta))
+            actions = None if assigns == [None] else ast.Actions(tuple(assigns), self.b.span(meta))
+            return ast.ReplyEntry(value, decoding, actions, self.b.span(meta))
+
         def skip_unmatched(self, meta, c):
             return ast.SkipUnmatched(self.b.span(meta))
 

@@ -244,6 +244,14 @@ def _primitive_clause(c: ast.PrimitiveClause) -> tuple[list[str], bool]:
             return [f"frame {frame.text}({_args(args)})"], False
         case ast.SkipUnmatched():
             return ["skip unmatched"], False
+        case ast.ReplyTable(key, entries):
+            lines = [f"reply {key.text} {{"]
+            for entry in entries:
+                head = f"{print_expr(entry.value)}: {entry.decoding.kind} {_template(entry.decoding.template)}"
+                actions = _primitive_clause(entry.actions)[0] if entry.actions is not None else []
+                lines.append(INDENT + head + (" " + actions[0] if actions else ""))
+                lines.extend(INDENT + line for line in actions[1:])
+            return [*lines, "}"], False
         case ast.Actions(()):
             return ["{}"], True
         case ast.Actions((assign,)):
