@@ -96,6 +96,7 @@ class Robot:
     def __init__(self, robot: Any, dev: PtyDevice, errs: Any) -> None:
         self.robot, self.dev, self.errors = robot, dev, errs
         self.sensor_reply = packet100()
+        self.packet_replies: dict[int, bytes] = {}  # Sensors for one packet: its reply
 
     def answer(self, seen: bytearray, data: bytes) -> bytes | None:
         seen += data
@@ -105,6 +106,10 @@ class Robot:
         if seen.endswith(b"\x8e\x23"):  # Sensors, packet 35: the OI mode
             seen.clear()
             return b"\x03"
+        if len(seen) >= 2 and seen[-2] == 0x8E and seen[-1] in self.packet_replies:
+            packet = seen[-1]
+            seen.clear()
+            return self.packet_replies[packet]
         return None
 
     def written_by(self, name: str, args: tuple[Any, ...]) -> bytes:
@@ -216,3 +221,25 @@ def test_set_velocity_and_battery(robot: Robot) -> None:
     assert contents["voltage"] == 16.0 and contents["current"] == -1.0
     assert contents["charge"] == 2.6 and contents["capacity"] == 2.9
     assert contents["percentage"] == pytest.approx(2600 / 2900)
+
+
+# Sensors for one packet (no pycreate2 method reads one): the OI spec's sizes and signs, chosen by the
+# packet number through the description's reply table. (packet, reply, state variable, value)
+SINGLE_PACKETS = [
+    (19, b"\xff\x38", "distance", -200), (20, b"\x00\x5a", "angle", 90), (21, b"\x02", "charging_state", 2),
+    (22, b"\x3e\x80", "voltage", 16000), (23, b"\xfe\x0c", "current", -500), (24, b"\xe2", "temperature", -30),
+    (25, b"\x0a\x8c", "battery_charge", 2700), (26, b"\x0b\xb8", "battery_capacity", 3000),
+]
+
+
+@pytest.mark.parametrize(("packet", "reply", "name", "value"), SINGLE_PACKETS, ids=[n for _, _, n, _ in SINGLE_PACKETS])
+def test_single_packet_replies_follow_the_spec(robot: Robot, packet: int, reply: bytes, name: str, value: int) -> None:
+    robot.packet_replies[packet] = reply
+    assert robot.written_by("sensor", (packet,)) == bytes([142, packet])
+    assert robot.robot.state[name] == value
+
+
+def test_a_packet_outside_the_table_is_refused(robot: Robot) -> None:
+    with pytest.raises(robot.errors.RdisValueError):
+        robot.written_by("sensor", (27,))
+    assert robot.dev.received == MARKER[2]
