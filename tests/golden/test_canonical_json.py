@@ -1,4 +1,5 @@
-"""Canonical JSON of the examples: goldens, and byte-identical builds whatever the hash seed."""
+"""Canonical JSON of the examples and `rdisc dump` of the framed ones: goldens, and
+byte-identical builds whatever the hash seed."""
 
 from __future__ import annotations
 
@@ -8,7 +9,8 @@ import pytest
 
 REPO = Path(__file__).resolve().parents[2]
 JSON = Path(__file__).resolve().parent / "json"
-EXAMPLES = ["create", "koala"]
+EXAMPLES = ["create", "koala", "ax12", "roboclaw"]
+DUMPS = Path(__file__).resolve().parent / "dumps"
 
 
 @pytest.mark.parametrize("name", EXAMPLES)
@@ -28,3 +30,11 @@ def test_build_is_byte_identical_under_different_hash_seeds(name: str, rdisc, tm
         outputs.append(out.read_bytes())
     assert outputs[0] == outputs[1]
     assert outputs[0].endswith(b"\n") and b"\r" not in outputs[0]
+
+
+@pytest.mark.parametrize("name", ["ax12", "create2", "roboclaw", "nmea"])
+def test_dump_golden(name: str, rdisc, golden) -> None:
+    """Each primitive's bytes, as a user holds them against the device's manual."""
+    result = rdisc("dump", f"examples/{name}.rdis")
+    assert (result.returncode, result.stderr) == (0, "")
+    golden.check(DUMPS / f"{name}.txt", result.stdout)
