@@ -302,7 +302,7 @@ _CONNECTION = (
 )  # fmt: skip
 _PRIMITIVE = (
     "name", "parameters", "parameterTypes", "parameterRanges", "connection", "pack", "format", "formatArgs",
-    "unpack", "regex", "frame", "skipUnmatched", "replyTable", "postActions", "doc",
+    "unpack", "regex", "frame", "skipUnmatched", "replyTable", "timeout", "postActions", "doc",
 )  # fmt: skip
 _FRAME = ("name", "parameters", "parameterTypes", "request", "reply", "stuffing", "doc")
 _CHECKSUM = (
@@ -645,6 +645,10 @@ class _Importer:
         skip = m.get("skipUnmatched")
         if isinstance(skip, JBool) and skip.value:
             clauses.append(ast.SkipUnmatched(skip.span))
+        if "timeout" in m:
+            wait = self.expr(m["timeout"], "float")
+            if wait is not None:
+                clauses.append(ast.ReplyTimeout(ast.Duration(wait, "ms", wait.span), wait.span))
         table = self.object(m.get("replyTable"), "`replyTable`")
         if table is not None:
             clauses.append(self.reply_table(table))

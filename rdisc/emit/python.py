@@ -827,7 +827,7 @@ class _Driver:
                 case None:
                     w.line(f"self._send({link}, {request})")
                 case m.Unpack():
-                    exchange = f"self._exchange({link}, {request}, {const}_REPLY.size)"
+                    exchange = f"self._exchange({link}, {request}, {const}_REPLY.size{_timeout(prim)})"
                     if not uses_reply:
                         w.line(exchange)
                     else:
@@ -837,7 +837,7 @@ class _Driver:
                     self.exprs.helpers.add("_match")
                     end = self.model.connections[prim.connection].terminator_bytes()
                     until = "" if end == b"\n" else f", {end!r}"  # the default needs no argument
-                    w.line(f"line = self._exchange_line({link}, {request}{until})")
+                    w.line(f"line = self._exchange_line({link}, {request}{until}{_timeout(prim)})")
                     w.line(f"{'reply = ' if uses_reply else ''}_match({quoted(prim.name)}, {const}_REPLY, line)")
                 case _:
                     _unreachable(prim.decoding)
@@ -867,19 +867,20 @@ class _Driver:
         if not frame.reply:  # an unframed reply
             match prim.decoding:
                 case m.Unpack():
-                    w.line(f"{'data = ' if uses_reply else ''}self._exchange({link}, request, {const}_REPLY.size)")
+                    w.line(f"{'data = ' if uses_reply else ''}self._exchange({link}, request, {const}_REPLY.size"
+                           f"{_timeout(prim)})")
                     if uses_reply:
                         self.unpacked(w, prim, "data", const)
                 case m.Regex():
                     self.exprs.helpers.add("_match")
                     end = self.model.connections[prim.connection].terminator_bytes()
                     until = "" if end == b"\n" else f", {end!r}"
-                    w.line(f"line = self._exchange_line({link}, request{until})")
+                    w.line(f"line = self._exchange_line({link}, request{until}{_timeout(prim)})")
                     w.line(f"{'reply = ' if uses_reply else ''}_match({quoted(prim.name)}, {const}_REPLY, line)")
             return
         match prim.decoding:
             case None:
-                w.line(f"self._exchange_frame({link}, request, {wire}, fields, 0)")
+                w.line(f"self._exchange_frame({link}, request, {wire}, fields, 0{_timeout(prim)})")
             case m.Unpack(format=fmt):
                 rest = formats.struct_layout(fmt).rest
                 size = "-1" if rest else f"{const}_REPLY.size"
@@ -888,14 +889,14 @@ class _Driver:
                     self.exprs.helpers.add("_unpacked_rest")
                     accept = f", lambda data: _unpacked_rest({quoted(prim.name)}, {const}_REPLY, data, ())"
                 w.line(f"{'data = ' if uses_reply else ''}self._exchange_frame("
-                       f"{link}, request, {wire}, fields, {size}{accept})")
+                       f"{link}, request, {wire}, fields, {size}{accept}{_timeout(prim)})")
                 if uses_reply:
                     self.unpacked(w, prim, "data", const)
             case m.Regex():
                 self.exprs.helpers.add("_match")
                 match = f'_match({quoted(prim.name)}, {const}_REPLY, payload.decode("latin-1"))'
                 accept = f", lambda payload: {match}" if prim.skip_unmatched else ""
-                w.line(f"payload = self._exchange_frame({link}, request, {wire}, fields, -1{accept})")
+                w.line(f"payload = self._exchange_frame({link}, request, {wire}, fields, -1{accept}{_timeout(prim)})")
                 w.line(f"{'reply = ' if uses_reply else ''}{match}")
 
     def unpacked(self, w: Writer, prim: m.Primitive, data: str, const: str) -> None:
@@ -1186,6 +1187,11 @@ def _in_ranges(w: Writer, owner: str, params: tuple[m.Parameter, ...], local: Ma
             with w.block(f"if not {prm.low!r} <= {name} <= {prm.high!r}:"):
                 w.line(f'raise RdisValueError(f"{_identifier(owner)}: parameter {prm.name} is {{{name}!r}}, '
                        f'outside {prm.range_text()}")')
+
+
+def _timeout(prim: m.Primitive) -> str:
+    """`, timeout=S` for a primitive with its own reply timeout."""
+    return "" if prim.timeout_ms is None else f", timeout={prim.timeout_ms / 1000.0!r}"
 
 
 def _case(case: m.ReplyCase) -> str:

@@ -171,6 +171,8 @@ class Port(Protocol):
 
     def close(self) -> None: ...
 
+    timeout: float | None
+
 
 PortSpec = str | os.PathLike[str] | Port | Mapping[str, str | os.PathLike[str] | Port]
 """A port for every connection (a pyserial port name or URL, or an open port), or a
@@ -396,21 +398,23 @@ def _send(self, link: _Link, primitive: str, request: bytes) -> None:
     if self._io_callbacks:
         self._notify_io("write", link.name, request)
 
-def _exchange(self, link: _Link, primitive: str, request: bytes, size: int) -> bytes:
-    """Write a request and read a reply of exactly `size` bytes."""
-    reply = self._transfer(link, primitive, request, size)
+def _exchange(self, link: _Link, primitive: str, request: bytes, size: int, timeout: float | None = None) -> bytes:
+    """Write a request and read a reply of exactly `size` bytes (within `timeout`, the
+    primitive's own, else the robot's)."""
+    reply = self._transfer(link, primitive, request, size, timeout=timeout)
     if not reply:
-        raise RdisTimeout(f"{primitive}: no reply within {self.timeout:g} s")
+        raise RdisTimeout(f"{primitive}: no reply within {timeout or self.timeout:g} s")
     if len(reply) != size:
         raise RdisProtocolError(f"{primitive}: expected {size} bytes, got {len(reply)}")
     return reply
 
-def _exchange_line(self, link: _Link, primitive: str, request: bytes, end: bytes = b"\\n") -> str:
+def _exchange_line(self, link: _Link, primitive: str, request: bytes, end: bytes = b"\\n",
+                   timeout: float | None = None) -> str:
     """Write a request and read one reply line: the line without its terminator `end`
     (the default LF also takes a CR before it), as latin-1 text."""
-    line = self._transfer(link, primitive, request, 0, end)
+    line = self._transfer(link, primitive, request, 0, end, timeout)
     if not line:
-        raise RdisTimeout(f"{primitive}: no reply within {self.timeout:g} s")
+        raise RdisTimeout(f"{primitive}: no reply within {timeout or self.timeout:g} s")
     if not line.endswith(end):
         raise RdisProtocolError(f"{primitive}: reply line not terminated: {line.decode('latin-1')!r}")
     text = line[: -len(end)]
@@ -418,10 +422,11 @@ def _exchange_line(self, link: _Link, primitive: str, request: bytes, end: bytes
         text = text[:-1]
     return text.decode("latin-1")
 
-def _transfer(self, link: _Link, primitive: str, request: bytes, size: int, end: bytes = b"\\n") -> bytes:
+def _transfer(self, link: _Link, primitive: str, request: bytes, size: int, end: bytes = b"\\n",
+              timeout: float | None = None) -> bytes:
     """Under the port's lock: discard unread input, write the request, read `size` bytes
-    (0: one line, up to `end`). The I/O callbacks see the write and what was read once
-    the lock is released, so that a callback may call the robot."""
+    (0: one line, up to `end`) within `timeout` if given. The I/O callbacks see the write and
+    what was read once the lock is released, so that a callback may call the robot."""
     written, data = False, b""
     try:
         with link.lock:
@@ -430,7 +435,13 @@ def _transfer(self, link: _Link, primitive: str, request: bytes, size: int, end:
                     link.port.reset_input_buffer()
                     link.port.write(request)
                     written = True
-                data = link.port.read(size) if size else link.port.read_until(end, MAX_LINE)
+                if timeout is not None:
+                    link.port.timeout = timeout
+                try:
+                    data = link.port.read(size) if size else link.port.read_until(end, MAX_LINE)
+                finally:
+                    if timeout is not None:
+                        link.port.timeout = self.timeout
             except Exception as err:
                 raise _port_error(link, primitive, err, self.timeout) from err
     finally:
@@ -443,11 +454,14 @@ def _transfer(self, link: _Link, primitive: str, request: bytes, size: int, end:
 
 ROBOT_FRAMED = '''\
 def _exchange_frame(self, link: _Link, primitive: str, request: bytes, frame: Frame, fields: list[int],
-                    size: int, accept: Callable[[bytes], object] | None = None) -> bytes:
+                    size: int, accept: Callable[[bytes], object] | None = None,
+                    timeout: float | None = None) -> bytes:
     """Write a framed request and read its framed reply, as rdisc.runtime.framing does:
     the payload (b"" for an acknowledgement). `size`: the payload's, or -1 if the frame says.
     An empty request (a listener) is not written and keeps unread input. With `accept`
-    (`skip unmatched`), frames it refuses are read past until the timeout."""
+    (`skip unmatched`), frames it refuses are read past until the timeout (`timeout`, the
+    primitive's own, else the robot's)."""
+    wait = timeout or self.timeout
     written, data, payload = False, b"", b""
     failed: FrameError | RdisProtocolError | None = None
     try:
@@ -461,7 +475,9 @@ def _exchange_frame(self, link: _Link, primitive: str, request: bytes, frame: Fr
                     received.clear()
                     link.port.write(request)
                     written = True
-                deadline = time.monotonic() + self.timeout
+                if timeout is not None:
+                    link.port.timeout = timeout
+                deadline = time.monotonic() + wait
                 while True:
                     try:
                         chunk, payload = frame.read(received, fields, request, size)
@@ -475,6 +491,8 @@ def _exchange_frame(self, link: _Link, primitive: str, request: bytes, frame: Fr
                         if accept is None or getattr(err, "timeout", False) or time.monotonic() >= deadline:
                             failed = err
                             break
+                if timeout is not None:
+                    link.port.timeout = self.timeout
             except Exception as err:  # whatever the port raises, it failed
                 raise _port_error(link, primitive, err, self.timeout) from err
     finally:
@@ -486,7 +504,7 @@ def _exchange_frame(self, link: _Link, primitive: str, request: bytes, frame: Fr
     if failed is not None:
         if getattr(failed, "timeout", False) or accept is not None:
             what = "matching reply" if accept is not None else "reply"
-            raise RdisTimeout(f"{primitive}: no {what} within {self.timeout:g} s")
+            raise RdisTimeout(f"{primitive}: no {what} within {wait:g} s")
         if isinstance(failed, RdisProtocolError):
             raise failed
         raise RdisProtocolError(f"{primitive}: {failed}")

@@ -46,7 +46,12 @@ A frame whose reply has no payload is an acknowledgement, read after every
 request. A request of no bytes (a listener) is not written and does not discard
 unread input: its reply is the next frame. With `skip unmatched`, a reply frame
 that does not decode is read past, until one does within the timeout, else
-RdisTimeout "P: no matching reply within T s".
+RdisTimeout "P: no matching reply within T s". A primitive's `timeout D` is its
+reply's, instead of the robot's (T in the messages is then D).
+
+Reply tables. `reply KEY { VALUE: unpack ... }`: the entry for the key
+parameter's value decodes the reply and runs its post-actions (the range check
+guarantees there is one).
 
 Interface. Its calls in priority order (then as written); after each, sleep its
 delay. Then, if it triggers an output, evaluate the output's fields over state

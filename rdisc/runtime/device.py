@@ -101,6 +101,7 @@ class _PrimitivePlan:
     skip: bool = False  # frames that do not decode are skipped (within the timeout)
     cases: dict[int, _PrimitivePlan] | None = None  # a reply table: the plan for each value of the key
     key: int = 0  # the key parameter's position
+    timeout: float | None = None  # seconds its reply may take, instead of the robot's
 
 
 @dataclass(frozen=True, slots=True)
@@ -190,7 +191,8 @@ class Description:
         return _PrimitivePlan(p.name, p.connection, _params(p.params), _float_slots(p.params),
                               _values([prepare(a, slots) for a in p.args]),
                               Codec(p, self.model.connections[p.connection].terminator_bytes()), actions,
-                              frame, p.expects_reply(self.model.frames), _ranges(p.params), p.skip_unmatched)
+                              frame, p.expects_reply(self.model.frames), _ranges(p.params), p.skip_unmatched,
+                              timeout=None if p.timeout_ms is None else p.timeout_ms / 1000.0)
 
     def _output(self, o: m.DomainOutput) -> _OutputPlan:
         adapter = self.model.adapters[o.adapter]
@@ -656,6 +658,7 @@ class Robot:
             raise RdisConnectionError(f"{plan.connection}: not open")
         io = port.io
         expects_reply = plan.expects_reply
+        wait = plan.timeout or self.timeout
         data = b""
         payload = b""
         reply: tuple[m.Value, ...] = ()
@@ -674,10 +677,12 @@ class Robot:
             except Exception as err:
                 raise RdisConnectionError(f"{plan.connection}: {err}") from err
             if expects_reply:
+                if plan.timeout is not None:
+                    io.timeout = plan.timeout
                 try:
                     if frame is not None and frame.reads:
                         size = codec.reply_size if codec.reply_size > 0 or not codec.expects_reply else -1
-                        deadline = time.monotonic() + self.timeout
+                        deadline = time.monotonic() + wait
                         while True:  # once, or until a frame decodes when the primitive skips others
                             try:
                                 chunk, payload = frame.wire.read(port.input, fields, request, size)  # type: ignore[arg-type]
@@ -695,6 +700,9 @@ class Robot:
                                      else io.read(codec.reply_size))
                 except Exception as err:
                     raise RdisConnectionError(f"{plan.connection}: {err}") from err
+                finally:
+                    if plan.timeout is not None:
+                        io.timeout = self.timeout
         finally:
             lock.release()
         # I/O callbacks run once the port is free again: one that calls the robot
@@ -707,7 +715,7 @@ class Robot:
         if failed is not None:
             if getattr(failed, "timeout", False) or plan.skip:
                 what = "matching reply" if plan.skip else "reply"
-                raise RdisTimeout(f"{plan.name}: no {what} within {self.timeout:g} s")
+                raise RdisTimeout(f"{plan.name}: no {what} within {wait:g} s")
             if isinstance(failed, RdisProtocolError):
                 raise failed
             raise RdisProtocolError(f"{plan.name}: {failed}")
@@ -716,7 +724,7 @@ class Robot:
         elif frame is not None and frame.reads:
             reply = codec.match_payload(payload) if codec.reads_line else codec.decode(payload)
         elif not data:
-            raise RdisTimeout(f"{plan.name}: no reply within {self.timeout:g} s")
+            raise RdisTimeout(f"{plan.name}: no reply within {wait:g} s")
         else:
             reply = codec.match(data) if codec.reads_line else codec.decode(data)
         if plan.actions:

@@ -412,8 +412,17 @@ class _Checker:
             self.d.report("E504", skip.span, f"`skip unmatched` reads past frames that do not decode, but "  # type: ignore[union-attr]
                           f"`{name.text}` does not decode a framed reply",
                           help="give it a frame with a reply, and `unpack` or `regex`")
+        timeout_clause = self.once([c for c in decl.clauses if isinstance(c, ast.ReplyTimeout)], "`timeout`", name)
+        timeout = None
+        if isinstance(timeout_clause, ast.ReplyTimeout):
+            timeout = self.duration(timeout_clause.duration, "a timeout")
+            if timeout is not None and timeout <= 0:
+                self.d.report("E204", timeout_clause.span, "a timeout must be positive")
+                timeout = None
+            elif not replies and not (frame and self.frames[frame.frame].reply):
+                self.d.report("E204", timeout_clause.span, f"`{name.text}` reads no reply, so it has no timeout")
         return m.Primitive(name.text, params, connection, encoding, args, decoding, actions, decl.doc, decl.span,  # type: ignore[arg-type]
-                           frame, skip is not None, table)
+                           frame, skip is not None, table, timeout)
 
     def reply_table(self, clause: ast.ReplyTable, params: tuple[m.Parameter, ...], scope: dict,
                     name: ast.Ident) -> m.ReplyTable | None:

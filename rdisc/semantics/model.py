@@ -323,6 +323,7 @@ class Primitive:
     frame: FrameUse | None = None
     skip_unmatched: bool = False  # reads frames until one decodes, within the timeout
     table: ReplyTable | None = None  # the reply chosen by a parameter (then no `decoding`)
+    timeout_ms: float | None = None  # how long its reply may take, instead of the robot's timeout
 
     def case(self, c: ReplyCase) -> Primitive:
         """This primitive as it is when its table's key has c.value: one decoding."""

@@ -294,7 +294,15 @@ class ReplyTable:
     span: Span = _span
 
 
-PrimitiveClause = On | Encoding | Decoding | Actions | Framed | SkipUnmatched | ReplyTable
+@dataclass(frozen=True, slots=True)
+class ReplyTimeout:
+    """`timeout D`: how long this primitive's reply may take, instead of the connection's."""
+
+    duration: Duration
+    span: Span = _span
+
+
+PrimitiveClause = On | Encoding | Decoding | Actions | Framed | SkipUnmatched | ReplyTable | ReplyTimeout
 
 
 @dataclass(frozen=True, slots=True)

@@ -286,6 +286,9 @@ def _transformer_class():
             actions = None if assigns == [None] else ast.Actions(tuple(assigns), self.b.span(meta))
             return ast.ReplyEntry(value, decoding, actions, self.b.span(meta))
 
+        def reply_timeout(self, meta, c):
+            return ast.ReplyTimeout(c[0], self.b.span(meta))
+
         def skip_unmatched(self, meta, c):
             return ast.SkipUnmatched(self.b.span(meta))
 

@@ -244,6 +244,8 @@ def _primitive_clause(c: ast.PrimitiveClause) -> tuple[list[str], bool]:
             return [f"frame {frame.text}({_args(args)})"], False
         case ast.SkipUnmatched():
             return ["skip unmatched"], False
+        case ast.ReplyTimeout(duration):
+            return [f"timeout {_duration(duration)}"], False
         case ast.ReplyTable(key, entries):
             lines = [f"reply {key.text} {{"]
             for entry in entries:

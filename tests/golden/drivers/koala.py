@@ -176,6 +176,8 @@ class Port(Protocol):
 
     def close(self) -> None: ...
 
+    timeout: float | None
+
 
 PortSpec = str | os.PathLike[str] | Port | Mapping[str, str | os.PathLike[str] | Port]
 """A port for every connection (a pyserial port name or URL, or an open port), or a
@@ -986,21 +988,23 @@ class Koala:
         if self._io_callbacks:
             self._notify_io("write", link.name, request)
 
-    def _exchange(self, link: _Link, primitive: str, request: bytes, size: int) -> bytes:
-        """Write a request and read a reply of exactly `size` bytes."""
-        reply = self._transfer(link, primitive, request, size)
+    def _exchange(self, link: _Link, primitive: str, request: bytes, size: int, timeout: float | None = None) -> bytes:
+        """Write a request and read a reply of exactly `size` bytes (within `timeout`, the
+        primitive's own, else the robot's)."""
+        reply = self._transfer(link, primitive, request, size, timeout=timeout)
         if not reply:
-            raise RdisTimeout(f"{primitive}: no reply within {self.timeout:g} s")
+            raise RdisTimeout(f"{primitive}: no reply within {timeout or self.timeout:g} s")
         if len(reply) != size:
             raise RdisProtocolError(f"{primitive}: expected {size} bytes, got {len(reply)}")
         return reply
 
-    def _exchange_line(self, link: _Link, primitive: str, request: bytes, end: bytes = b"\n") -> str:
+    def _exchange_line(self, link: _Link, primitive: str, request: bytes, end: bytes = b"\n",
+                       timeout: float | None = None) -> str:
         """Write a request and read one reply line: the line without its terminator `end`
         (the default LF also takes a CR before it), as latin-1 text."""
-        line = self._transfer(link, primitive, request, 0, end)
+        line = self._transfer(link, primitive, request, 0, end, timeout)
         if not line:
-            raise RdisTimeout(f"{primitive}: no reply within {self.timeout:g} s")
+            raise RdisTimeout(f"{primitive}: no reply within {timeout or self.timeout:g} s")
         if not line.endswith(end):
             raise RdisProtocolError(f"{primitive}: reply line not terminated: {line.decode('latin-1')!r}")
         text = line[: -len(end)]
@@ -1008,10 +1012,11 @@ class Koala:
             text = text[:-1]
         return text.decode("latin-1")
 
-    def _transfer(self, link: _Link, primitive: str, request: bytes, size: int, end: bytes = b"\n") -> bytes:
+    def _transfer(self, link: _Link, primitive: str, request: bytes, size: int, end: bytes = b"\n",
+                  timeout: float | None = None) -> bytes:
         """Under the port's lock: discard unread input, write the request, read `size` bytes
-        (0: one line, up to `end`). The I/O callbacks see the write and what was read once
-        the lock is released, so that a callback may call the robot."""
+        (0: one line, up to `end`) within `timeout` if given. The I/O callbacks see the write and
+        what was read once the lock is released, so that a callback may call the robot."""
         written, data = False, b""
         try:
             with link.lock:
@@ -1020,7 +1025,13 @@ class Koala:
                         link.port.reset_input_buffer()
                         link.port.write(request)
                         written = True
-                    data = link.port.read(size) if size else link.port.read_until(end, MAX_LINE)
+                    if timeout is not None:
+                        link.port.timeout = timeout
+                    try:
+                        data = link.port.read(size) if size else link.port.read_until(end, MAX_LINE)
+                    finally:
+                        if timeout is not None:
+                            link.port.timeout = self.timeout
                 except Exception as err:
                     raise _port_error(link, primitive, err, self.timeout) from err
         finally:
