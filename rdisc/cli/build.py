@@ -4,8 +4,7 @@ from __future__ import annotations
 
 import argparse
 
-from rdisc.cli.output import EXIT_ERRORS, exit_code, show, write
-from rdisc.compile import compile_path
+from rdisc.cli.output import compile_and_write
 
 
 def add_parser(verbs) -> None:
@@ -16,10 +15,6 @@ def add_parser(verbs) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    compilation = compile_path(args.file)
-    show([compilation])
-    if compilation.model is None:
-        return exit_code([compilation]) or EXIT_ERRORS
     from rdisc.emit.canonical import to_json
 
-    return write(to_json(compilation.model), args.output)
+    return compile_and_write(args.file, args.output, lambda c: to_json(c.model))  # type: ignore[arg-type]

@@ -5,8 +5,7 @@ from __future__ import annotations
 
 import argparse
 
-from rdisc.cli.output import EXIT_ERRORS, exit_code, show, write
-from rdisc.compile import compile_path
+from rdisc.cli.output import compile_and_write
 
 
 def add_parser(verbs) -> None:
@@ -18,10 +17,6 @@ def add_parser(verbs) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    compilation = compile_path(args.file)
-    show([compilation])
-    if compilation.model is None or compilation.diagnostics.has_errors():
-        return exit_code([compilation]) or EXIT_ERRORS
     from rdisc.emit.dump import dump
 
-    return write(dump(compilation.model), args.output)
+    return compile_and_write(args.file, args.output, lambda c: dump(c.model))  # type: ignore[arg-type]

@@ -12,8 +12,7 @@ from __future__ import annotations
 import argparse
 import os
 
-from rdisc.cli.output import EXIT_ERRORS, exit_code, show, write
-from rdisc.compile import compile_path
+from rdisc.cli.output import compile_and_write
 
 
 def add_parser(verbs) -> None:
@@ -27,11 +26,8 @@ def add_parser(verbs) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    compilation = compile_path(args.file)
-    show([compilation])
-    if compilation.model is None or compilation.diagnostics.has_errors():
-        return exit_code([compilation]) or EXIT_ERRORS
     from rdisc.emit.python import to_python
 
-    text = to_python(compilation.model, os.path.basename(args.file), sources=compilation.sources)
-    return write(text, args.output)
+    name = os.path.basename(args.file)
+    return compile_and_write(args.file, args.output,
+                             lambda c: to_python(c.model, name, sources=c.sources))  # type: ignore[arg-type]

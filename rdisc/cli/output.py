@@ -3,8 +3,9 @@
 from __future__ import annotations
 
 import sys
+from collections.abc import Callable
 
-from rdisc.compile import Compilation
+from rdisc.compile import Compilation, compile_path
 
 EXIT_OK, EXIT_ERRORS, EXIT_USAGE = 0, 1, 2
 
@@ -40,3 +41,13 @@ def write(text: str, path: str | None) -> int:
         print(f"rdisc: cannot write {path}: {err.strerror or err}", file=sys.stderr)
         return EXIT_USAGE
     return EXIT_OK
+
+
+def compile_and_write(path: str, output: str | None, render: Callable[[Compilation], str]) -> int:
+    """Check a description, show its diagnostics, and write what `render` makes of it when
+    it has no errors: the shape of every verb that turns a description into a file."""
+    compilation = compile_path(path)
+    show([compilation])
+    if compilation.model is None or compilation.diagnostics.has_errors():
+        return exit_code([compilation]) or EXIT_ERRORS
+    return write(render(compilation), output)

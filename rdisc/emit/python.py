@@ -996,19 +996,17 @@ class _Driver:
         w.line("}")
         w.line('"""Each domain input: its method, its adapter, and the adapter\'s fields with their types."""')
         w.blank(1)
-        w.line("_INTERFACES: dict[str, tuple[Callable[..., None], tuple[tuple[str, type], ...]]] = {")
-        for iface in self.model.interfaces.values():
-            params = _tuple([f"({quoted(prm.name)}, {_PY_TYPES[prm.type]})" for prm in iface.params])
-            w.line(f"    {quoted(iface.name)}: ({self.cls}._interface_{iface.name}, {params}),")
-        w.line("}")
-        w.line('"""Each interface: its method, and its parameters with their types."""')
-        w.blank(1)
-        w.line("_PRIMITIVES: dict[str, tuple[Callable[..., None], tuple[tuple[str, type], ...]]] = {")
-        for prim in self.model.primitives.values():
-            params = _tuple([f"({quoted(prm.name)}, {_PY_TYPES[prm.type]})" for prm in prim.params])
-            w.line(f"    {quoted(prim.name)}: ({self.cls}._primitive_{prim.name}, {params}),")
-        w.line("}")
-        w.line('"""Each primitive: its method, and its parameters with their types."""')
+        elements: tuple[tuple[str, Iterable[m.Interface | m.Primitive]], ...] = (
+            ("interface", self.model.interfaces.values()), ("primitive", self.model.primitives.values()))
+        for kind, items in elements:
+            w.line(f"_{kind.upper()}S: dict[str, tuple[Callable[..., None], tuple[tuple[str, type], ...]]] = {{")
+            for item in items:
+                params = _tuple([f"({quoted(prm.name)}, {_PY_TYPES[prm.type]})" for prm in item.params])
+                w.line(f"    {quoted(item.name)}: ({self.cls}._{kind}_{item.name}, {params}),")
+            w.line("}")
+            w.line(f'"""Each {kind}: its method, and its parameters with their types."""')
+            if kind == "interface":
+                w.blank(1)
 
     def connect_function(self, w: Writer) -> None:
         w.blank(2)

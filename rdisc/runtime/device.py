@@ -12,6 +12,7 @@ a consistent snapshot without locking.
 
 from __future__ import annotations
 
+import dataclasses
 import logging
 import numbers
 import os
@@ -19,7 +20,6 @@ import struct
 import threading
 import time
 from collections.abc import Callable, Mapping
-import dataclasses
 from dataclasses import dataclass
 from types import MappingProxyType
 from typing import TYPE_CHECKING, Any
@@ -491,25 +491,23 @@ class Robot:
     def call_interface(self, name: str, /, *args: Any) -> None:
         """Run an interface with positional arguments, on this thread; errors are raised."""
         plan = self.description.interfaces.get(name)
-        if plan is None:
-            raise KeyError(f"{self.name} has no interface named {name!r}")
-        self._check_open()
-        if len(args) != len(plan.params):
-            raise TypeError(f"interface {name} takes {len(plan.params)} arguments, {len(args)} given")
-        values = [_accept(v, t, f"interface {name}: parameter {p}") for v, (p, t) in zip(args, plan.params)]
-        self._run_interface(plan, values)
+        self._run_interface(plan, self._arguments("interface", name, plan, args))  # type: ignore[arg-type]
 
     def call_primitive(self, name: str, /, *args: Any) -> None:
         """Send one device command (a primitive) with positional arguments, read its
         reply and run its post-actions, on this thread; errors are raised."""
         plan = self.description.primitives.get(name)
+        self._run_primitive(plan, self._arguments("primitive", name, plan, args))  # type: ignore[arg-type]
+
+    def _arguments(self, kind: str, name: str, plan: _PrimitivePlan | _InterfacePlan | None,
+                   args: tuple[Any, ...]) -> list[m.Value]:
+        """Positional arguments of a call, made their parameters' types; KeyError, TypeError."""
         if plan is None:
-            raise KeyError(f"{self.name} has no primitive named {name!r}")
+            raise KeyError(f"{self.name} has no {kind} named {name!r}")
         self._check_open()
         if len(args) != len(plan.params):
-            raise TypeError(f"primitive {name} takes {len(plan.params)} arguments, {len(args)} given")
-        values = [_accept(v, t, f"primitive {name}: parameter {p}") for v, (p, t) in zip(args, plan.params)]
-        self._run_primitive(plan, values)
+            raise TypeError(f"{kind} {name} takes {len(plan.params)} arguments, {len(args)} given")
+        return [_accept(v, t, f"{kind} {name}: parameter {p}") for v, (p, t) in zip(args, plan.params)]
 
     def tick(self) -> None:
         """One iteration of every connection's periodic work and due keepalive, on this thread."""

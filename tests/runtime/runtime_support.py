@@ -1,7 +1,8 @@
-"""Shared by the runtime tests: paths, and callbacks that record what they get."""
+"""Shared by the runtime tests: paths, callbacks that record what they get, and a port in memory."""
 
 from __future__ import annotations
 
+import io
 import threading
 import time
 from collections.abc import Callable
@@ -48,3 +49,16 @@ class Recorder:
 
     def wait_count(self, n: int, timeout: float = 3.0) -> list[Any]:
         return self.wait(lambda items: len(items) >= n, timeout)
+
+
+class MemoryPort(io.BytesIO):
+    """A port whose device has already said everything it will say (a read past it is a timeout)."""
+
+    def read_until(self, expected: bytes = b"\n", size: int | None = None) -> bytes:
+        out = bytearray()
+        while not out.endswith(expected) and (size is None or len(out) < size):
+            byte = self.read(1)
+            if not byte:
+                break
+            out += byte
+        return bytes(out)
