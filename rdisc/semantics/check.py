@@ -27,6 +27,7 @@ STANDARD_BAUDS = frozenset(
 DEFAULT_BAUD = 9600
 DEFAULT_FREQUENCY_HZ = 10.0
 MAX_TERMINATOR = 8
+MAX_TABLE = 4096  # entries of a reply table
 _TYPES = {t.value: t for t in Type}
 _NOTHING = Env({}, "in a setting", "")
 
@@ -463,6 +464,9 @@ class _Checker:
             self.d.report("E505", clause.key.span, f"`{key}` has no range, so the reply table of `{name.text}` "
                           "cannot have an entry for each of its values",
                           help=f"declare its range: `{key}: int in LOW..HIGH`")
+        elif param.high - param.low >= MAX_TABLE:  # type: ignore[operator]
+            self.d.report("E505", clause.key.span, f"the range of `{key}` has {param.high - param.low + 1} values, "  # type: ignore[operator]
+                          f"more than a reply table holds ({MAX_TABLE})", label=f"in {param.range_text()}")
         else:
             missing = [v for v in range(int(param.low), int(param.high) + 1) if v not in seen]  # type: ignore[arg-type]
             if missing:
