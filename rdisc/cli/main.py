@@ -6,9 +6,9 @@ import argparse
 import sys
 
 from rdisc import __version__
-from rdisc.cli import build, check, dump, emit_python, explain, import_, run
+from rdisc.cli import build, check, dump, emit_python, emit_ros, explain, import_, run
 
-VERBS = (check, build, import_, explain, run, emit_python, dump)
+VERBS = (check, build, import_, explain, run, emit_python, emit_ros, dump)
 EXIT_INTERNAL = 3
 
 

@@ -1,0 +1,31 @@
+"""`rdisc emit-ros FILE -o node.py`: a ROS 1 node (rospy) for a description.
+
+The node is the generated Python driver with a ROS bridge as its program: a
+subscriber per domain input, a publisher per domain output, parameters `~port`
+(`~port_CONNECTION` for each of several connections), `~trace` and `~timeout`,
+device errors logged and published on `~errors`, and the terminate hooks run on
+shutdown.
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+
+from rdisc.cli.output import compile_and_write
+
+
+def add_parser(verbs) -> None:
+    p = verbs.add_parser("emit-ros", help="write a ROS 1 node (rospy) for a description",
+                         description="Compile a description into a ROS 1 node: its Python driver and a ROS bridge.")
+    p.add_argument("file", metavar="FILE", help="an .rdis (or thesis-style .json) description")
+    p.add_argument("-o", "--output", metavar="NODE.py", help="where to write the node (default: stdout)")
+    p.set_defaults(run=run)
+
+
+def run(args: argparse.Namespace) -> int:
+    from rdisc.emit.ros import to_ros
+
+    name = os.path.basename(args.file)
+    return compile_and_write(args.file, args.output,
+                             lambda c: to_ros(c.model, name, sources=c.sources))  # type: ignore[arg-type]
