@@ -109,7 +109,7 @@ def test_twists_bumpers_and_shutdown(ros_env: dict[str, str], node_file: Path) -
             for (linear, angular), _expected in TABLE_4_3:
                 twists.stdin.write(f"{linear} {angular}\n")
                 twists.stdin.flush()
-                assert twists.stdout.readline().strip() == "sent"
+                assert twists.stdout.readline().startswith("sent ")
             drives = device.wait_for_commands(len(TABLE_4_3), timeout=15, opcode=137)
             assert [cmd for _, cmd in drives] == [
                 bytes([137]) + v.to_bytes(2, "big", signed=True) + r.to_bytes(2, "big", signed=True)

@@ -1,7 +1,10 @@
 """Publish Twists on `set_velocity`, one a line of stdin ("linear angular"), waiting for
-the node's subscription first. Run by the system python3, where rospy lives."""
+a subscriber first; print "sent T" after each (T: time.monotonic() just before publishing, the same clock
+in every process). Run by the system python3, where rospy lives; the ROS latency
+benchmark uses it too."""
 
 import sys
+import time
 
 import rospy
 from geometry_msgs.msg import Twist
@@ -15,5 +18,6 @@ for line in sys.stdin:
     linear, angular = map(float, line.split())
     message = Twist()
     message.linear.x, message.angular.z = linear, angular
+    start = time.monotonic()
     publisher.publish(message)
-    print("sent", flush=True)
+    print("sent", start, flush=True)
