@@ -130,3 +130,54 @@ def test_twists_bumpers_and_shutdown(ros_env: dict[str, str], node_file: Path) -
         stop = bytes([137, 0, 0, 0, 0])  # the terminate hook: drive(0, 0)
         device.wait_until(lambda: device.received.endswith(stop), 10, "the stop command")
         assert node.returncode == 0, output
+
+
+# Appendix C's mapping: the bumpers published as a std_msgs/Bool "hit", by an adapter of the description's own.
+HIT = """\
+robot hit_create { author "tests" }
+state bumps: int = 0
+adapter Hit ros "std_msgs/Bool" { hit: bool ros "data" }
+connection link: serial { baud 57600  threading single at 20 Hz }
+primitive bumpers() on link pack "BB" (142, 7) unpack "B" { bumps = out[0] }
+interface poll() periodic triggers hit { bumpers() }
+output hit: Hit { hit = (bumps & 3) != 0 }
+"""
+
+
+def _echo(env: dict[str, str], topic: str, wanted: str) -> list[str]:
+    """What `rostopic echo -n 1 TOPIC` printed, up to ten times until it is `wanted`."""
+    seen: list[str] = []
+    for _ in range(10):
+        done = subprocess.run(["rostopic", "echo", "-n", "1", topic], env=env, capture_output=True, text=True,
+                              timeout=30, check=False)
+        words = done.stdout.split()
+        seen.append(" ".join(words[:-1]) if words else done.stderr)
+        if seen[-1] == wanted:
+            break
+    return seen
+
+
+def test_a_description_maps_an_output_to_another_message(ros_env: dict[str, str], tmp_path: Path) -> None:
+    source = tmp_path / "hit.rdis"
+    source.write_text(HIT)
+    node_file = tmp_path / "hit_node.py"
+    done = subprocess.run(["python", "-m", "rdisc", "emit-ros", str(source), "-o", str(node_file)], cwd=REPO,
+                          capture_output=True, text=True, check=False)
+    assert done.returncode == 0, done.stderr
+    with CreateEmulator(bumpers=0b10) as device:  # the left bumper
+        node = _start_node(node_file, ros_env, device)
+        try:
+            assert _echo(ros_env, "/hit/data", "True")[-1] == "True"
+        finally:
+            _stop(node)
+
+
+def test_device_errors_are_published_and_the_node_keeps_serving(ros_env: dict[str, str], node_file: Path) -> None:
+    with CreateEmulator(mode="silent") as device:  # never answers: every bumper poll times out
+        node = _start_node(node_file, ros_env, device)
+        try:
+            errors = _echo(ros_env, "/irobot_create/errors", "")
+            assert errors[0].startswith('data: "RdisTimeout: bumpers: no reply within'), errors
+            assert node.poll() is None  # still serving
+        finally:
+            _stop(node)
