@@ -31,7 +31,12 @@ def _primitive(model: m.Model, p: m.Primitive) -> str:
     framed = frame.reply if frame and frame.reply else None
     if p.table is not None:
         for case in p.table.cases:
-            lines += _side(f"reply when {p.table.key} = {case.value}", framed, _reply_rows(case.decoding))
+            if p.table.tag is None:
+                lines += _side(f"reply when {p.table.key} = {case.value}", framed, _reply_rows(case.decoding))
+            else:
+                tag = (formats.struct_layout(p.table.tag).size, f"tag {_kind(p.table.tag, p.table.tag[-1])}",
+                       f"= {case.value}")
+                lines += _side(f"reply tagged {case.value}", framed, [tag, *_reply_rows(case.decoding)])
     elif p.expects_reply(model.frames):
         lines += _side("reply", framed, _reply_rows(p.decoding))
     else:

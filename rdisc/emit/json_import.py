@@ -441,8 +441,12 @@ class _Importer:
         return built
 
     def reply_table(self, obj: JObject) -> ast.ReplyTable:
-        t = self.members(obj, "`replyTable`", ("key", "cases"))
-        key = self.required(obj, t, "key", "`replyTable`", self.ident) or ast.Ident("", obj.span)
+        t = self.members(obj, "`replyTable`", ("key", "tag", "cases"))
+        tag = self.string(t.get("tag"), "`tag`")
+        if tag is not None:
+            key = ast.Ident("tag", tag.span)
+        else:
+            key = self.required(obj, t, "key", "`replyTable`", self.ident) or ast.Ident("", obj.span)
         entries = []
         for item in self.array(t.get("cases"), "`cases`"):
             case = self.object(item, "a reply table entry")
@@ -460,7 +464,8 @@ class _Importer:
             decoding = ast.Decoding(kind, ast.StrLit(template.value, template.span), template.span)
             actions = ast.Actions(assigns, c["postActions"].span) if assigns else None
             entries.append(ast.ReplyEntry(value, decoding, actions, case.span))
-        return ast.ReplyTable(key, tuple(entries), obj.span)
+        return ast.ReplyTable(key, tuple(entries), obj.span,
+                              None if tag is None else ast.StrLit(tag.value, tag.span))
 
     def frame(self, obj: JObject) -> ast.FrameDecl | None:
         m = self.members(obj, "a frame", _FRAME)

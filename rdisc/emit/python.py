@@ -381,8 +381,12 @@ class _Driver:
                 case _:
                     _unreachable(prim.encoding)
             self.reply_codec(w, const, prim.decoding)
+            if prim.table is not None and prim.table.tag is not None:
+                self.uses_struct = True
+                w.line(f"{const}_TAG = struct.Struct({quoted(prim.table.tag)})")
             for case in prim.table.cases if prim.table else ():
-                w.line(f"{const}_{_case(case)}_REQUEST = {const}_REQUEST")
+                if prim.table.tag is None:  # type: ignore[union-attr]
+                    w.line(f"{const}_{_case(case)}_REQUEST = {const}_REQUEST")
                 self.reply_codec(w, f"{const}_{_case(case)}", case.decoding)
 
     def reply_codec(self, w: Writer, const: str, decoding: m.Unpack | m.Regex | None) -> None:
@@ -799,7 +803,7 @@ class _Driver:
         signature = "".join(f", {local[prm.name]}: {_PY_TYPES[prm.type]}" for prm in prim.params)
         const = self.codecs[prim.name] + (f"_{_case(case)}" if case else "")
         method = f"_primitive_{prim.name}" + (f"_when_{_case(case)}" if case else "")
-        if prim.table is not None:
+        if prim.table is not None and prim.table.tag is None:
             self.table_dispatch(w, prim, method, signature, local)
             for each in prim.table.cases:
                 w.blank(1)
@@ -863,6 +867,9 @@ class _Driver:
         w.line(f'    raise RdisValueError(f"{_identifier(prim.name)}: {{err}}") from err')
         if not prim.expects_reply(self.model.frames):
             w.line(f"self._send({link}, request)")
+            return
+        if prim.table is not None and prim.table.tag is not None:
+            self.tagged_reply(w, prim, names, link, wire, const)
             return
         if not frame.reply:  # an unframed reply
             match prim.decoding:
@@ -941,6 +948,38 @@ class _Driver:
             _emit(w, "request = ", encoded, suffix)
         w.line(f"except {errors} as err:")
         w.line(f'    raise RdisValueError(f"{_identifier(prim.name)}: {{err}}") from err')
+
+    def tagged_reply(self, w: Writer, prim: m.Primitive, names: Mapping[str, str], link: str, wire: str,
+                     const: str) -> None:
+        """A reply chosen by its tag: each entry decodes the rest of the payload, then its post-actions run."""
+        assert prim.table is not None
+        name = quoted(prim.name)
+        self.exprs.helpers.add("_tag_split")
+        w.blank(1)
+        with w.block("def decode(payload: bytes) -> tuple[int, tuple[Any, ...]]:"):
+            w.line(f"tag, rest = _tag_split({name}, {const}_TAG, payload)")
+            for case in prim.table.cases:
+                reply_const = f"{const}_{_case(case)}_REPLY"
+                match case.decoding:
+                    case m.Unpack(format=fmt):
+                        layout = formats.struct_layout(fmt)
+                        strings = tuple(i for i, slot in enumerate(layout.slots) if slot.type is Type.STRING)
+                        helper = "_unpacked_rest" if layout.rest else "_unpacked"
+                        self.exprs.helpers.add(helper)
+                        value = f"{helper}({name}, {reply_const}, rest, {strings!r})"
+                    case m.Regex():
+                        self.exprs.helpers.add("_match")
+                        value = f'_match({name}, {reply_const}, rest.decode("latin-1"))'
+                w.line(f"if tag == {case.value!r}:")
+                w.line(f"    return tag, {value}")
+            w.line(f'raise RdisProtocolError(f"{_identifier(prim.name)}: no reply entry for tag {{tag}}")')
+        w.blank(1)
+        accept = ", decode" if prim.skip_unmatched else ""
+        w.line(f"tag, reply = decode(self._exchange_frame({link}, request, {wire}, fields, -1{accept}{_timeout(prim)}))")
+        acting = [case for case in prim.table.cases if case.actions]
+        for i, case in enumerate(acting):
+            with w.block(f"{'if' if i == 0 else 'elif'} tag == {case.value!r}:"):
+                self.post_actions(w, prim.case(case), names)
 
     def table_dispatch(self, w: Writer, prim: m.Primitive, method: str, signature: str,
                        local: Mapping[str, str]) -> None:

@@ -140,6 +140,22 @@ def _unpacked_rest(primitive: str, fixed: struct.Struct, data: bytes, strings: t
     for i in strings:
         values[i] = values[i].decode("latin-1")
     return (*values, data[fixed.size :])''',
+    "_unpacked": '''\
+def _unpacked(primitive: str, layout: struct.Struct, data: bytes, strings: tuple[int, ...]) -> tuple[Any, ...]:
+    """The values of a reply of exactly `layout.size` bytes, the bytes at `strings` as latin-1 text."""
+    if len(data) != layout.size:
+        raise RdisProtocolError(f"{primitive}: expected {layout.size} bytes, got {len(data)}")
+    values = list(layout.unpack(data))
+    for i in strings:
+        values[i] = values[i].decode("latin-1")
+    return tuple(values)''',
+    "_tag_split": '''\
+def _tag_split(primitive: str, tag: struct.Struct, payload: bytes) -> tuple[int, bytes]:
+    """A reply's tag, and the rest of its payload."""
+    if len(payload) < tag.size:
+        raise RdisProtocolError(f"{primitive}: expected {tag.size} bytes or more, got {len(payload)}")
+    value: int = tag.unpack_from(payload)[0]
+    return value, payload[tag.size :]''',
     "_byte": '''\
 def _byte(data: bytes, index: int) -> int:
     """`byte(b, i)`: byte i of bytes b, 0 first."""

@@ -51,7 +51,9 @@ reply's, instead of the robot's (T in the messages is then D).
 
 Reply tables. `reply KEY { VALUE: unpack ... }`: the entry for the key
 parameter's value decodes the reply and runs its post-actions (the range check
-guarantees there is one).
+guarantees there is one). `reply tag "fmt" { VALUE: ... }`: the framed payload
+starts with a tag; its entry decodes the rest; an unknown tag is
+RdisProtocolError "P: no reply entry for tag V".
 
 Interface. Its calls in priority order (then as written); after each, sleep its
 delay. Then, if it triggers an output, evaluate the output's fields over state

@@ -102,6 +102,7 @@ class _PrimitivePlan:
     cases: dict[int, _PrimitivePlan] | None = None  # a reply table: the plan for each value of the key
     key: int = 0  # the key parameter's position
     timeout: float | None = None  # seconds its reply may take, instead of the robot's
+    tag: struct.Struct | None = None  # a reply chosen by its tag: the tag's format (`cases` by tag)
 
 
 @dataclass(frozen=True, slots=True)
@@ -178,6 +179,8 @@ class Description:
         if p.table is not None:  # one plan for each value of the key, chosen when it is called
             plain = self._primitive(dataclasses.replace(p, table=None))
             cases = {c.value: self._primitive(p.case(c)) for c in p.table.cases}
+            if p.table.tag is not None:
+                return dataclasses.replace(plain, cases=cases, tag=struct.Struct(p.table.tag), expects_reply=True)
             key = next(i for i, param in enumerate(p.params) if param.name == p.table.key)
             return dataclasses.replace(plain, cases=cases, key=key)
         slots = _slots(p.params)
@@ -275,6 +278,19 @@ def _widened(f: Prepared) -> Prepared:
         return float(value) if type(value) is int else value
 
     return widened
+
+
+def _tagged(plan: _PrimitivePlan, payload: bytes) -> tuple[_PrimitivePlan, tuple[m.Value, ...]]:
+    """The entry a reply's tag chooses, and the rest of the payload decoded by it."""
+    assert plan.tag is not None and plan.cases is not None
+    if len(payload) < plan.tag.size:
+        raise RdisProtocolError(f"{plan.name}: expected {plan.tag.size} bytes or more, got {len(payload)}")
+    tag = plan.tag.unpack_from(payload)[0]
+    case = plan.cases.get(tag)
+    if case is None:
+        raise RdisProtocolError(f"{plan.name}: no reply entry for tag {tag}")
+    rest = payload[plan.tag.size :]
+    return case, case.codec.match_payload(rest) if case.codec.reads_line else case.codec.decode(rest)
 
 
 def _ranges(params: tuple[m.Parameter, ...]) -> Ranges:
@@ -622,7 +638,7 @@ class Robot:
             _widen(plan.name, plan.float_slots, args)
         if plan.ranges:
             _in_ranges(plan.name, plan.ranges, args)
-        if plan.cases is not None:  # its range holds every key of its table (checked at load)
+        if plan.cases is not None and plan.tag is None:  # its range holds every key of its table (load checked)
             plan = plan.cases[args[plan.key]]  # type: ignore[index]
         try:
             values = plan.args(self._state, args)
@@ -660,6 +676,7 @@ class Robot:
         data = b""
         payload = b""
         reply: tuple[m.Value, ...] = ()
+        decoded = False  # the reply was decoded while it was read (a tag's entry, or `skip unmatched`)
         failed: framing.FrameError | RdisProtocolError | None = None
         lock = port.lock
         lock.acquire()  # acquire/release rather than `with`: cheaper, and this runs on every call
@@ -685,8 +702,12 @@ class Robot:
                             try:
                                 chunk, payload = frame.wire.read(port.input, fields, request, size)  # type: ignore[arg-type]
                                 data += chunk
-                                if plan.skip:
+                                if plan.tag is not None:  # the tag chooses the entry: its decoding, its actions
+                                    plan, reply = _tagged(plan, payload)
+                                    decoded = True
+                                elif plan.skip:
                                     reply = codec.match_payload(payload) if codec.reads_line else codec.decode(payload)
+                                    decoded = True
                                 break
                             except (framing.FrameError, RdisProtocolError) as err:
                                 if (not plan.skip or getattr(err, "timeout", False)
@@ -717,7 +738,7 @@ class Robot:
             if isinstance(failed, RdisProtocolError):
                 raise failed
             raise RdisProtocolError(f"{plan.name}: {failed}")
-        if not expects_reply or not codec.expects_reply or plan.skip:
+        if decoded or not expects_reply or not codec.expects_reply:
             pass
         elif frame is not None and frame.reads:
             reply = codec.match_payload(payload) if codec.reads_line else codec.decode(payload)

@@ -167,6 +167,8 @@ def message_bytes(prim: m.Primitive, frames: dict[str, m.Frame] | None = None) -
         case None:
             reply = max((message_bytes(prim.case(c), frames) - request - framing for c in prim.table.cases),
                         default=0) if prim.table else 0
+            if prim.table is not None and prim.table.tag is not None:
+                reply += formats.struct_layout(prim.table.tag).size
     return request + reply + framing
 
 

@@ -408,6 +408,12 @@ class _Checker:
                           f"the reply of `{name.text}` ends in `*` (the rest of the message), but no frame says "
                           "where the reply ends",
                           help="read it through a frame with a `length` field or constant bytes after its payload")
+        if (table is not None and table.tag is not None
+                and (frame is None or not self.frames[frame.frame].reply
+                     or not payload_end_known(self.frames[frame.frame], False))):
+            self.d.report("E505", table_clause.span, f"the reply of `{name.text}` is chosen by its tag, so it needs "  # type: ignore[union-attr]
+                          "a frame that says where the reply ends",
+                          help="read it through a frame with a `length` field or constant bytes after its payload")
         skip = self.once([c for c in decl.clauses if isinstance(c, ast.SkipUnmatched)], "`skip unmatched`", name)
         if skip is not None and (not replies or frame is None or not self.frames[frame.frame].reply):
             self.d.report("E504", skip.span, f"`skip unmatched` reads past frames that do not decode, but "  # type: ignore[union-attr]
@@ -428,9 +434,23 @@ class _Checker:
     def reply_table(self, clause: ast.ReplyTable, params: tuple[m.Parameter, ...], scope: dict,
                     name: ast.Ident) -> m.ReplyTable | None:
         """`reply KEY { VALUE: unpack ... }`: one reply per value of an int parameter with a range,
-        every value of the range with its entry."""
+        every value of the range with its entry. `reply tag "fmt" { ... }`: one per tag value."""
         key = clause.key.text
-        param = next((p for p in params if p.name == key), None)
+        tag_slot = None
+        if clause.tag is not None:
+            try:
+                layout = formats.struct_layout(clause.tag.value)
+            except formats.TemplateError as err:
+                self.d.report("E301", clause.tag.span, err.message)
+                return None
+            if len(layout.slots) != 1 or layout.slots[0].type is not Type.INT:
+                self.d.report("E505", clause.tag.span, "a reply tag is one integer: a struct format such as "
+                              f"\"B\" or \">H\", not \"{abbreviate(clause.tag.value)}\"")
+                return None
+            tag_slot = layout.slots[0]
+            param = m.Parameter(key, Type.INT, tag_slot.low, tag_slot.high)
+        else:
+            param = next((p for p in params if p.name == key), None)  # type: ignore[assignment]
         if param is None:
             self.d.report("E103", clause.key.span, f"`{key}` is not a parameter of `{name.text}`",
                           help=suggest(key, [p.name for p in params]) or "a reply table's key is a parameter")
@@ -447,6 +467,9 @@ class _Checker:
             if value != int(value):
                 self.d.report("E204", entry.value.span, "a reply table's value is an int")
                 continue
+            if tag_slot is not None and not tag_slot.low <= value <= tag_slot.high:  # type: ignore[operator]
+                self.d.report("E403", entry.value.span, f"{int(value)} does not fit the tag's `{tag_slot.code}`")
+                continue
             if int(value) in seen:
                 self.d.report("E203", entry.value.span, f"{int(value)} has two entries in the reply table",
                               labels=(Label(seen[int(value)].value.span, "first given here"),))
@@ -460,6 +483,8 @@ class _Checker:
                 actions = self.actions(entry.actions, action_env, {p.name for p in params})
             if decoding is not None:
                 cases.append(m.ReplyCase(int(value), decoding, actions))
+        if clause.tag is not None:  # an unknown tag is a protocol error when it comes: no coverage to check
+            return m.ReplyTable("", tuple(cases), clause.tag.value)
         if param.low is None:
             self.d.report("E505", clause.key.span, f"`{key}` has no range, so the reply table of `{name.text}` "
                           "cannot have an entry for each of its values",

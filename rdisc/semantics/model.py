@@ -305,8 +305,9 @@ class ReplyCase:
 
 @dataclass(frozen=True, slots=True)
 class ReplyTable:
-    key: str  # the parameter whose value chooses the reply
+    key: str  # the parameter whose value chooses the reply ("" when a tag does)
     cases: tuple[ReplyCase, ...]
+    tag: str | None = None  # a one-integer struct format: the tag starting the payload chooses
 
 
 @dataclass(frozen=True, slots=True)
@@ -326,7 +327,7 @@ class Primitive:
     timeout_ms: float | None = None  # how long its reply may take, instead of the robot's timeout
 
     def case(self, c: ReplyCase) -> Primitive:
-        """This primitive as it is when its table's key has c.value: one decoding."""
+        """This primitive as it is when its table's key (or its reply's tag) has c.value: one decoding."""
         return dataclasses.replace(self, decoding=c.decoding, actions=c.actions, table=None)
 
     def expects_reply(self, frames: dict[str, Frame]) -> bool:

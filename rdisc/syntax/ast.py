@@ -287,11 +287,13 @@ class ReplyEntry:
 
 @dataclass(frozen=True, slots=True)
 class ReplyTable:
-    """`reply KEY { ... }`: the reply's decoding chosen by a parameter's value."""
+    """`reply KEY { ... }`: the reply's decoding chosen by a parameter's value; or
+    `reply tag "fmt" { ... }`: by the tag at the start of the reply's payload."""
 
     key: Ident
     entries: tuple[ReplyEntry, ...]
     span: Span = _span
+    tag: StrLit | None = None
 
 
 @dataclass(frozen=True, slots=True)

@@ -280,6 +280,10 @@ def _transformer_class():
         def reply_table(self, meta, c):
             return ast.ReplyTable(self.b.ident(c[0]), tuple(c[1:]), self.b.span(meta))
 
+        def reply_tag_table(self, meta, c):
+            tag = self.b.string(c[0])
+            return ast.ReplyTable(ast.Ident("tag", tag.span), tuple(c[1:]), self.b.span(meta), tag)
+
         def reply_entry(self, meta, c):
             value, kind, template, *assigns = c
             decoding = ast.Decoding(kind, self.b.string(template), self.b.span(meta))

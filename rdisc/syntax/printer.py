@@ -246,8 +246,8 @@ def _primitive_clause(c: ast.PrimitiveClause) -> tuple[list[str], bool]:
             return ["skip unmatched"], False
         case ast.ReplyTimeout(duration):
             return [f"timeout {_duration(duration)}"], False
-        case ast.ReplyTable(key, entries):
-            lines = [f"reply {key.text} {{"]
+        case ast.ReplyTable(key, entries, _, tag):
+            lines = [f"reply {key.text} {{" if tag is None else f"reply tag {p.quote(tag.value)} {{"]
             for entry in entries:
                 head = f"{print_expr(entry.value)}: {entry.decoding.kind} {_template(entry.decoding.template)}"
                 actions = _primitive_clause(entry.actions)[0] if entry.actions is not None else []
