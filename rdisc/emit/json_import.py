@@ -528,9 +528,12 @@ class _Importer:
         if name is None or fmt is None:
             return None
         options: list[ast.ChecksumOption] = []
-        for flag, word in (("inverted", "inverted"), ("reflectIn", "reflect")):
-            if isinstance(m.get(flag), JBool) and m[flag].value and name.value.lower() in ("crc", "sum", "xor") or (
-                    flag == "inverted" and isinstance(m.get(flag), JBool) and m[flag].value):
+        # `reflect` is written only for a CRC given by its parameters: a catalogue CRC fixes its own
+        flags = [("inverted", "inverted")]
+        if name.value.lower() in ("crc", "sum", "xor"):
+            flags.append(("reflectIn", "reflect"))
+        for flag, word in flags:
+            if isinstance(m.get(flag), JBool) and m[flag].value:
                 options.append(ast.ChecksumOption(word, span=m[flag].span))
         settings = ("mask", "width", "poly", "init", "xorOut") if name.value.lower() == "crc" else ("mask",)
         for key in settings:
