@@ -79,7 +79,7 @@ def _load(path: str, diagnostics: Diagnostics, sources: Sources, units: list[Uni
         return None
     sources.add(path, text)
     if path.endswith(".json"):
-        from rdisc.emit.json_import import read
+        from rdisc.syntax.json_import import read
 
         module = read(path, text, diagnostics)
     else:

@@ -24,7 +24,7 @@ def add_parser(verbs) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from rdisc.emit.json_import import read
+    from rdisc.syntax.json_import import read
     from rdisc.syntax.printer import print_module
 
     diagnostics = Diagnostics()

@@ -56,7 +56,7 @@ def test_a_hostile_expression_is_refused_and_never_evaluated(tmp_path, monkeypat
 
 def test_a_description_with_errors_is_a_load_error() -> None:
     with pytest.raises(RdisLoadError) as caught:
-        load(REPO / "tests" / "emit" / "data" / "thesis_create.json")
+        load(REPO / "tests" / "syntax" / "data" / "thesis_create.json")
     assert str(caught.value).count("error[E402]") == 2
     assert str(caught.value).endswith("2 errors emitted")
 

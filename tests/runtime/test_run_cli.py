@@ -81,7 +81,7 @@ def test_a_port_that_cannot_be_opened(rdisc, tmp_path) -> None:
 
 
 def test_a_description_with_errors_shows_its_diagnostics(rdisc) -> None:
-    result = rdisc("run", REPO / "tests" / "emit" / "data" / "thesis_create.json", "--port", "loop://")
+    result = rdisc("run", REPO / "tests" / "syntax" / "data" / "thesis_create.json", "--port", "loop://")
     assert result.returncode == 1
     assert "error[E402]" in result.stderr
     assert "2 errors emitted" in result.stderr
