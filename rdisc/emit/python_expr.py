@@ -175,11 +175,6 @@ CHECKED_FLOAT = {"+": "_add", "-": "_sub", "*": "_mul", "/": "_div"}
 _PROPAGATE_NONFINITE = {"+", "-", "*"}  # an inf operand gives inf or nan
 
 
-def state_key(name: str) -> str:
-    """The key of a state variable in a names mapping (cannot be a parameter's name)."""
-    return "\0state:" + name
-
-
 class Compiler:
     """Compiles expressions; records what their text uses (helpers, `state`, `math`)."""
 
@@ -188,15 +183,15 @@ class Compiler:
         self.reads_state = False
 
     def expr(self, e: m.Expr, names: Mapping[str, str], finite: bool = False) -> Py:
-        """`e` as Python. `names`: local names of parameters and fields, and of state attributes
-        under `state_key`. `finite`: a non-finite value of `e` would be refused where it goes."""
+        """`e` as Python. `names`: local names of parameters and fields (state is read from
+        the mapping `state`). `finite`: a non-finite value of `e` would be refused where it goes."""
         match e:
             case m.Const(value=value, type=type_):
                 return literal(value, type_)
             case m.Var(name=name, scope=scope):
                 if scope is Scope.STATE:
                     self.reads_state = True
-                    return Py(f"state.{names[state_key(name)]}", p.ATOM)
+                    return Py(f"state[{quoted(name)}]", p.ATOM)
                 return Py(names[name], p.ATOM)
             case m.ReplyValue(index=index):
                 return Py(f"reply[{index!r}]", p.ATOM)

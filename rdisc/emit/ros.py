@@ -25,6 +25,8 @@ BRIDGE = '''\
 
 def _ros_type(name: str) -> Any:
     """The message class a ROS type name ("geometry_msgs/Twist") stands for."""
+    import importlib
+
     package, _, message = name.partition("/")
     return getattr(importlib.import_module(f"{package}.msg"), message)
 
@@ -72,14 +74,17 @@ def _ros_set(message: Any, path: str, value: Any) -> None:
 
 def ros_main() -> int:
     """Run the robot as a ROS node until ROS shuts it down; the terminate hooks run then."""
+    import importlib
+
     rospy: Any = importlib.import_module("rospy")  # Debian's python3-rospy: no types to check against
     String = _ros_type("std_msgs/String")
     rospy.init_node(ROBOT)
     ports: dict[str, str] = {}
-    for connection in _CONNECTIONS:
-        default = _ADDRESSES.get(connection, "/dev/ttyUSB0")
-        name = "~port" if len(_CONNECTIONS) == 1 else f"~port_{connection}"
-        ports[connection] = str(rospy.get_param(name, rospy.get_param("~port", default)))
+    connections = _DEVICE.connections
+    for connection in connections.values():
+        default = connection.address or "/dev/ttyUSB0"
+        name = "~port" if len(connections) == 1 else f"~port_{connection.name}"
+        ports[connection.name] = str(rospy.get_param(name, rospy.get_param("~port", default)))
     errors = rospy.Publisher("~errors", String, queue_size=10)
     publishers = {output: rospy.Publisher(output, _ros_type(ros), queue_size=10)
                   for output, (ros, _fields) in _ROS_OUTPUTS.items()}
@@ -87,8 +92,8 @@ def ros_main() -> int:
     def on_output(message: dict[str, Any]) -> None:
         ros, fields = _ROS_OUTPUTS[message["name"]]
         msg = _ros_type(ros)()
-        for field, path in fields:
-            _ros_set(msg, path, message["contents"][field])
+        for name, path in fields:
+            _ros_set(msg, path, message["contents"][name])
         publishers[message["name"]].publish(msg)
 
     def on_error(error: BaseException) -> None:
@@ -105,7 +110,7 @@ def ros_main() -> int:
     def subscriber(name: str, fields: tuple[tuple[str, str], ...]) -> Callable[[Any], None]:
         def received(msg: Any) -> None:
             try:
-                robot.call_input(name, **{field: _ros_get(msg, path) for field, path in fields})
+                robot.call_input(name, **{key: _ros_get(msg, path) for key, path in fields})
             except Exception as err:  # noqa: BLE001 - reported, and the node keeps serving
                 on_error(err)
         return received

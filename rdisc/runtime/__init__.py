@@ -1,9 +1,11 @@
 """rdisc's runtime: interprets a checked Model against real devices.
 
-The semantics below are defined once and implemented twice, here (interpreting
-the Model) and in the drivers `rdisc emit-python` generates (compiled Python);
-tests drive both with the same inputs and device replies and compare bytes,
-outputs and errors.
+The semantics below are implemented once, in `rdisc.runtime.engine`, which the
+runtime imports and every driver `rdisc emit-python` generates carries verbatim.
+What differs is only how a description becomes the engine's plans: here the
+expressions are interpreted (`rdisc.runtime.evaluate`), in a driver they are
+compiled to Python; tests drive both over generated descriptions with the same
+inputs and device replies and compare bytes, state, outputs, errors and I/O.
 
 Values. State starts at its initial values. Arguments are bound to parameters,
 fields and state with ints widened to floats where a float is declared.
@@ -33,10 +35,12 @@ unpack format ending in `*` gives the rest of the reply as bytes (after its fixe
 part: fewer bytes than that is RdisProtocolError "P: expected N bytes or more,
 got K"). `len(b)` and `byte(b, i)` read them.
 
-Frames (rdisc.runtime.framing, which the generated driver carries as text). The
+Frames. The
 request is the payload framed: constants, fields (the frame's field expressions
 over its arguments, which are the primitive's frame arguments), the length
-(payload size + adjust), checksums over the parts they cover. A reply is read
+(payload size + adjust), checksums over the parts they cover. A field of the reply
+is checked against its own expression (a reply field may share a request
+field's name and differ in value). A reply is read
 through the frame's reply side: bytes before its header are skipped (up to 4096);
 the payload's size comes from the length field, else the decoding's fixed size,
 else the constant after it; every constant, field and checksum is checked
@@ -47,12 +51,14 @@ request. A request of no bytes (a listener) is not written and does not discard
 unread input: its reply is the next frame. With `skip unmatched`, a reply frame
 that does not decode is read past, until one does within the timeout, else
 RdisTimeout "P: no matching reply within T s". A primitive's `timeout D` is its
-reply's, instead of the robot's (T in the messages is then D).
+reply's, instead of the robot's (T in the messages is then D). The timeout is a
+deadline for the whole reply, resynchronisation and skipped frames included.
 
 Reply tables. `reply KEY { VALUE: unpack ... }`: the entry for the key
 parameter's value decodes the reply and runs its post-actions (the range check
 guarantees there is one). `reply tag "fmt" { VALUE: ... }`: the framed payload
-starts with a tag; its entry decodes the rest; an unknown tag is
+starts with a tag (the payload's end found as the frame says: its length field or
+the constant after it); its entry decodes the rest; an unknown tag is
 RdisProtocolError "P: no reply entry for tag V".
 
 Interface. Its calls in priority order (then as written); after each, sleep its
@@ -110,8 +116,9 @@ Details both implementations follow (where the above is silent):
 - Bytes given for a parameter: bytes, a bytearray, a list of ints 0..255, or hex
   text ("3c20"); anything else is a TypeError.
 - Callbacks: on_output(cb) gets cb(output_dict), on_error(cb) gets cb(exception),
-  on_io(cb) gets cb("write" | "read", connection, data) after each write and each
-  read that returned data (a short read included). Callbacks run on the thread
+  on_io(cb) gets cb("write" | "read", connection, data) after each write and after
+  each exchange that read bytes: every byte the port gave, whatever became of it
+  (a short read, a frame refused, garbage skipped). Callbacks run on the thread
   that did the work (the caller's for inputs, a connection's for periodic work
   and keepalives) and never concurrently with each other (one reentrant lock).
   An exception from an output or I/O callback becomes RdisCallbackError (cause
@@ -152,8 +159,8 @@ Details both implementations follow (where the above is silent):
   hooks run in every case.
 """
 
-from rdisc.runtime.codec import MAX_LINE
-from rdisc.runtime.device import Description, Robot, load
+from rdisc.runtime.device import Description, load
+from rdisc.runtime.engine import MAX_LINE, Robot
 from rdisc.runtime.errors import (
     RdisCallbackError,
     RdisConnectionError,

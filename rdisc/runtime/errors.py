@@ -1,34 +1,22 @@
-"""Typed run-time errors: what went wrong talking to a device, by kind.
+"""Typed run-time errors: the engine's, and the one only loading a description raises.
 
-A generated driver defines classes of the same names (it imports nothing from
-rdisc), so code written against one works with the other.
+The engine (`rdisc.runtime.engine`) defines the error types; a generated driver
+carries the engine, so code written against one works with the other.
 """
 
 from __future__ import annotations
 
+from rdisc.runtime.engine import (
+    RdisCallbackError,
+    RdisConnectionError,
+    RdisError,
+    RdisProtocolError,
+    RdisTimeout,
+    RdisValueError,
+)
 
-class RdisError(Exception):
-    """Any failure while a description runs."""
-
-
-class RdisTimeout(RdisError, TimeoutError):
-    """The device sent no reply within the timeout."""
-
-
-class RdisProtocolError(RdisError):
-    """The device replied, but not as described: short, unterminated or unmatched."""
-
-
-class RdisConnectionError(RdisError, ConnectionError):
-    """A port could not be opened, failed, or disappeared."""
-
-
-class RdisValueError(RdisError, ValueError):
-    """A value could not be computed or encoded (division by zero, out of range for its code)."""
-
-
-class RdisCallbackError(RdisError):
-    """A user callback raised; the exception is the cause."""
+__all__ = ["RdisCallbackError", "RdisConnectionError", "RdisError", "RdisLoadError", "RdisProtocolError",
+           "RdisTimeout", "RdisValueError"]
 
 
 class RdisLoadError(RdisError):

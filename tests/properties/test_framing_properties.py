@@ -14,7 +14,7 @@ from hypothesis import strategies as st
 
 from rdisc.compile import compile_path
 from rdisc.runtime.codec import frame_fields, wire_frame
-from rdisc.runtime.framing import Frame, FrameError, Input
+from rdisc.runtime.engine import Frame, FrameError, Incoming
 from tests.runtime.runtime_support import MemoryPort
 
 REPO = Path(__file__).resolve().parents[2]
@@ -56,7 +56,7 @@ _BYTE_SOUP = st.lists(st.one_of(st.binary(max_size=6), st.sampled_from(
 def test_reading_any_bytes_gives_a_frame_or_a_frame_error(name: str, chunks: list[bytes], size: int,
                                                          fields: list[int]) -> None:
     frame, _ = FRAMES[name]
-    port = Input(MemoryPort(b"".join(chunks)))
+    port = Incoming(MemoryPort(b"".join(chunks)))
     for _ in range(3):  # and again, from what a bad frame gave back
         try:
             raw, payload = frame.read(port, fields, b"\x80\x10", size)
@@ -81,7 +81,7 @@ def test_a_frame_written_is_read_back(name: str, payload: bytes, noise: bytes, i
         wire = frame.wrap(payload, fields)
     except Exception:  # noqa: BLE001 - a payload too long for its length field: not this property's
         return
-    port = Input(MemoryPort(noise.replace(frame.reply.header[:1], b"") + wire if frame.reply.header else wire))
+    port = Incoming(MemoryPort(noise.replace(frame.reply.header[:1], b"") + wire if frame.reply.header else wire))
     size = -1 if frame.reply.length >= 0 or frame.reply.delimiter else len(payload)
     raw, read = frame.read(port, fields, b"", size)
     assert read == payload

@@ -6,14 +6,14 @@ from __future__ import annotations
 import pytest
 
 from rdisc.runtime.codec import checksum
-from rdisc.runtime.framing import (
+from rdisc.runtime.engine import (
     Bytes,
     Check,
     Checksum,
     Field,
     Frame,
     FrameError,
-    Input,
+    Incoming,
     Length,
     Payload,
     Stuffing,
@@ -139,11 +139,11 @@ def test_a_reserved_sequence_without_its_escape_is_a_frame_error() -> None:
 
 
 def test_a_bad_frame_gives_back_what_it_took() -> None:
-    """A frame cut short swallows the next one's header; through an Input the reader finds it again."""
+    """A frame cut short swallows the next one's header; through an Incoming the reader finds it again."""
     body = bytes([1, 3, 0, 0x20])
     good = b"\xff\xff" + body + bytes([~sum(body) & 0xFF])
     cut = good[:-3]  # no checksum: the good frame's first bytes complete it, wrongly
-    port = Input(MemoryPort(cut + good))
+    port = Incoming(MemoryPort(cut + good))
     with pytest.raises(FrameError, match="checksum"):
         DXL.read(port, [1], b"", -1)
     assert DXL.read(port, [1], b"", -1) == (good, bytes([0, 0x20]))

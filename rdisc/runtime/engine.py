@@ -1,0 +1,1739 @@
+"""The rdisc engine: the run-time semantics of RDIS, written once.
+
+Everything that happens between a host and its devices lives in this module:
+ports and their locks, frames, writing requests and reading every kind of reply,
+deadlines, I/O callbacks, the connections' threads and schedules, hooks, the
+lifecycle, signals, the error types and the command line. What a description
+specialises is data and small functions, the *plans* below (per primitive its
+values, encoder, decoder, frame, post-actions; per interface its calls, delays
+and output; per input its arguments). The runtime (`rdisc.runtime.device`)
+builds plans from a checked Model with its expression interpreter; `rdisc
+emit-python` writes them as Python source into a driver that carries this
+module's text verbatim, from its `from __future__` line to its end. So the
+runtime and every driver run the same code. It needs only the standard library,
+and pyserial to open a port by name. The semantics are the contract in the
+docstring of `rdisc.runtime`.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import logging
+import math
+import numbers
+import os
+import re
+import signal
+import struct
+import sys
+import threading
+import time
+from collections.abc import Callable, Iterator, Mapping, Sequence
+from dataclasses import dataclass, field
+from typing import Any, Protocol
+
+Value = int | float | bool | str | bytes
+"""The value of a state variable, a parameter, a field or an output field."""
+
+StateValues = Mapping[str, Any]
+"""The state variables by name: a snapshot, never changed in place. (Each value is of
+its variable's declared type, which the checker knows and Python's types cannot say.)"""
+
+Args = list[Any]
+"""The values of a call's parameters (or an input's fields), by position."""
+
+OutputCallback = Callable[[dict[str, Any]], object]
+ErrorCallback = Callable[[BaseException], object]
+IoCallback = Callable[[str, str, bytes], object]
+
+MAX_LINE = 4096
+"""Bytes of one reply line, terminator included."""
+
+EVAL_ERRORS = (ArithmeticError, ValueError, TypeError, IndexError, OverflowError)
+"""What evaluating an expression can raise; each becomes an RdisValueError of the element at fault."""
+
+_log = logging.getLogger("rdisc")
+
+
+# ---- errors ------------------------------------------------------------------------------------
+
+
+class RdisError(Exception):
+    """Any failure while a description runs."""
+
+
+class RdisTimeout(RdisError, TimeoutError):
+    """The device sent no reply within the timeout."""
+
+
+class RdisProtocolError(RdisError):
+    """The device replied, but not as described: short, unterminated or unmatched."""
+
+
+class RdisConnectionError(RdisError, ConnectionError):
+    """A port could not be opened, failed, or disappeared."""
+
+
+class RdisValueError(RdisError, ValueError):
+    """A value could not be computed or encoded (division by zero, out of range for its code)."""
+
+
+class RdisCallbackError(RdisError):
+    """A user callback raised; the exception is the cause."""
+
+
+# ---- frames on the wire ----------------------------------------------------------------------------
+#
+# A frame is a sequence of parts: constant bytes (a header, a literal, a
+# terminator), fields computed from the frame's arguments, a length field, the
+# payload and checksums. Every part has a fixed size but the payload, so a reply
+# is read in at most four reads: the header (sliding over garbage until it
+# matches), the parts before the payload, the payload (its size from the length
+# field, from the decoding, or up to the constant that follows it) and the parts
+# after it.
+
+MAX_FRAME = 65536  # bytes of one frame; more is garbage, not a reply
+MAX_SKIP = 4096  # bytes discarded while looking for a header
+
+
+class FrameError(Exception):
+    """A reply that is not the frame described; `timeout` when nothing at all came."""
+
+    def __init__(self, message: str, timeout: bool = False) -> None:
+        super().__init__(message)
+        self.timeout = timeout
+
+
+class Reader(Protocol):
+    timeout: float | None
+
+    def read(self, size: int = 1, /) -> bytes: ...
+
+    def read_until(self, expected: bytes = b"\n", size: int | None = None, /) -> bytes: ...
+
+
+def _reflect(value: int, width: int) -> int:
+    result = 0
+    for _ in range(width):
+        result = (result << 1) | (value & 1)
+        value >>= 1
+    return result
+
+
+class Checksum:
+    """A sum, an XOR or a table-driven CRC over bytes, in `width` bits, then
+    optionally inverted and masked."""
+
+    __slots__ = ("_init", "_reflect_in", "_reflect_out", "_table", "_xorout", "inverted", "kind", "mask", "width")
+
+    def __init__(self, kind: str, width: int, poly: int = 0, init: int = 0, reflect_in: bool = False,
+                 reflect_out: bool = False, xorout: int = 0, inverted: bool = False, mask: int | None = None) -> None:
+        self.kind = kind
+        self.width = width
+        self.inverted = inverted
+        self.mask = mask
+        self._reflect_in = reflect_in
+        self._reflect_out = reflect_out
+        self._xorout = xorout
+        self._init = _reflect(init, width) if reflect_in else init
+        self._table: tuple[int, ...] = _crc_table(width, poly, reflect_in) if kind == "crc" else ()
+
+    def __call__(self, data: bytes) -> int:
+        full = (1 << self.width) - 1
+        if self.kind == "sum":
+            value = sum(data) & full
+        elif self.kind == "xor":
+            value = 0
+            for byte in data:
+                value ^= byte
+        else:
+            value = self._crc(data)
+        if self.inverted:
+            value = ~value & full
+        if self.mask is not None:
+            value &= self.mask
+        return value
+
+    def _crc(self, data: bytes) -> int:
+        table, width, reg = self._table, self.width, self._init
+        full = (1 << width) - 1
+        if self._reflect_in:
+            for byte in data:
+                reg = table[(reg ^ byte) & 0xFF] ^ (reg >> 8)
+            if not self._reflect_out:
+                reg = _reflect(reg, width)
+        else:
+            shift = width - 8
+            for byte in data:
+                reg = table[((reg >> shift) ^ byte) & 0xFF] ^ ((reg << 8) & full)
+            if self._reflect_out:
+                reg = _reflect(reg, width)
+        return reg ^ self._xorout
+
+
+def _crc_table(width: int, poly: int, reflected: bool) -> tuple[int, ...]:
+    full = (1 << width) - 1
+    table = []
+    if reflected:
+        rpoly = _reflect(poly, width)
+        for byte in range(256):
+            reg = byte
+            for _ in range(8):
+                reg = (reg >> 1) ^ rpoly if reg & 1 else reg >> 1
+            table.append(reg)
+    else:
+        top = 1 << (width - 1)
+        for byte in range(256):
+            reg = byte << (width - 8)
+            for _ in range(8):
+                reg = ((reg << 1) ^ poly) & full if reg & top else (reg << 1) & full
+            table.append(reg)
+    return tuple(table)
+
+
+class Incoming:
+    """A port's input as an exchange reads it: bytes put back, every byte taken from
+    the port kept for the I/O callbacks, and one deadline for the whole reply.
+
+    A reply frame found wrong gives back all but its first byte, so that the next
+    header is looked for in them (a frame whose checksum failed may have swallowed
+    the start of the next one). The first read of an exchange waits the port's own
+    timeout, which is the whole deadline; a later one waits only what is left of it.
+    """
+
+    __slots__ = ("deadline", "pending", "port", "reads", "shortened", "taken", "timeout")
+
+    def __init__(self, port: Reader) -> None:
+        self.port = port
+        self.pending = bytearray()
+        self.taken = bytearray()  # what the port gave during this exchange
+        self.deadline: float | None = None  # None: reads wait as the port does
+        self.shortened = False  # a read shortened the port's timeout: `timeout` is restored
+        self.timeout: float | None = None
+        self.reads = 0
+
+    def begin(self, wait: float) -> None:
+        """Start an exchange that may wait `wait` seconds for its whole reply."""
+        self.taken.clear()
+        self.reads = 0
+        self.deadline = time.monotonic() + wait
+
+    def end(self) -> bytes:
+        """Finish an exchange: the port's timeout as it was; the bytes it gave."""
+        self.deadline = None
+        if self.shortened:
+            self.port.timeout = self.timeout
+            self.shortened = False
+        return bytes(self.taken)
+
+    def put_back(self, data: bytes) -> None:
+        self.pending[:0] = data
+
+    def clear(self) -> None:
+        self.pending.clear()
+
+    def _wait(self) -> bool:
+        """Before a read from the port: whether time is left, the port told how much."""
+        self.reads += 1
+        if self.reads == 1 or self.deadline is None:
+            return True
+        left = self.deadline - time.monotonic()
+        if left <= 0:
+            return False
+        if not self.shortened:
+            self.timeout = getattr(self.port, "timeout", None)
+            self.shortened = True
+        self.port.timeout = left
+        return True
+
+    def _port_read(self, size: int) -> bytes:
+        if size <= 0 or not self._wait():
+            return b""
+        got = self.port.read(size)
+        self.taken += got
+        return got
+
+    def read(self, size: int = 1, /) -> bytes:
+        if not self.pending:
+            return self._port_read(size)
+        taken = bytes(self.pending[:size])
+        del self.pending[:size]
+        return taken + self._port_read(size - len(taken)) if len(taken) < size else taken
+
+    def read_until(self, expected: bytes = b"\n", size: int | None = None, /) -> bytes:
+        limit = MAX_FRAME if size is None else size
+        if not self.pending:
+            if not self._wait():
+                return b""
+            got = self.port.read_until(expected, limit)
+            self.taken += got
+            return got
+        found = self.pending.find(expected)
+        end = min(found + len(expected) if found >= 0 else len(self.pending), limit)
+        taken = bytearray(self.pending[:end])
+        del self.pending[:end]
+        while not taken.endswith(expected) and len(taken) < limit:  # the rest from the port, byte by byte
+            byte = self._port_read(1)
+            if not byte:
+                break
+            taken += byte
+        return bytes(taken)
+
+
+# ---- parts ------------------------------------------------------------------------------------
+
+
+class Bytes:
+    """Constant bytes: a header (the reader synchronises on it), a literal or a terminator."""
+
+    __slots__ = ("data", "role")
+
+    def __init__(self, role: str, data: bytes) -> None:
+        self.role = role
+        self.data = data
+
+
+class Field:
+    """The frame's `index`-th field value, packed with a one-integer struct format."""
+
+    __slots__ = ("index", "name", "struct")
+
+    def __init__(self, name: str, fmt: str, index: int) -> None:
+        self.name = name
+        self.struct = struct.Struct(fmt)
+        self.index = index
+
+
+class Length:
+    """The payload's size plus `adjust`."""
+
+    __slots__ = ("adjust", "struct")
+
+    def __init__(self, fmt: str, adjust: int) -> None:
+        self.struct = struct.Struct(fmt)
+        self.adjust = adjust
+
+
+class Payload:
+    __slots__ = ()
+
+
+class Check:
+    """A checksum of the parts `first` to `last` (indexes into its side), packed
+    with a struct format or written as upper-case hex digits (`fmt` None)."""
+
+    __slots__ = ("checksum", "digits", "first", "last", "struct", "with_request")
+
+    def __init__(self, checksum: Checksum, fmt: str | None, first: int, last: int,
+                 with_request: bool = False) -> None:
+        self.checksum = checksum
+        self.struct = struct.Struct(fmt) if fmt is not None else None
+        self.digits = (checksum.width + 3) // 4
+        self.first = first
+        self.last = last
+        self.with_request = with_request
+
+    def encode(self, value: int) -> bytes:
+        if self.struct is not None:
+            return self.struct.pack(value)
+        return b"%0*X" % (self.digits, value)
+
+
+Part = Bytes | Field | Length | Payload | Check
+
+
+def _size(part: Part) -> int:
+    """Bytes of a part other than the payload."""
+    if isinstance(part, Bytes):
+        return len(part.data)
+    if isinstance(part, Check):
+        return part.struct.size if part.struct is not None else part.digits
+    if isinstance(part, (Field, Length)):
+        return part.struct.size
+    return 0
+
+
+class Side:
+    """The parts of one direction, with their sizes worked out once."""
+
+    __slots__ = ("delimiter", "header", "length", "parts", "payload", "prefix", "sizes", "suffix")
+
+    def __init__(self, parts: Sequence[Part]) -> None:
+        self.parts = tuple(parts)
+        self.sizes = tuple(_size(p) for p in self.parts)
+        self.payload = next((i for i, p in enumerate(self.parts) if isinstance(p, Payload)), -1)
+        first = self.parts[0] if self.parts else None
+        self.header = first.data if isinstance(first, Bytes) and first.role == "header" else b""
+        at = self.payload if self.payload >= 0 else len(self.parts)
+        self.prefix = sum(self.sizes[:at]) - len(self.header)  # after the header, before the payload
+        self.suffix = sum(self.sizes[at + 1 :]) if self.payload >= 0 else 0
+        self.length = next((i for i, p in enumerate(self.parts) if isinstance(p, Length)), -1)
+        after = self.parts[self.payload + 1] if 0 <= self.payload < len(self.parts) - 1 else None
+        self.delimiter = after.data if isinstance(after, Bytes) else b""
+
+
+class Stuffing:
+    """Byte stuffing of a payload: `escape` inserted after every `reserved` sequence
+    (so that the payload never shows the sequence a header starts with)."""
+
+    __slots__ = ("escape", "reserved")
+
+    def __init__(self, reserved: bytes, escape: bytes) -> None:
+        self.reserved = reserved
+        self.escape = escape
+
+    def stuff(self, data: bytes) -> bytes:
+        return data.replace(self.reserved, self.reserved + self.escape)
+
+    def unstuff(self, data: bytes, name: str) -> bytes:
+        out = bytearray()
+        start = 0
+        while (found := data.find(self.reserved, start)) >= 0:
+            after = found + len(self.reserved)
+            if data[after : after + len(self.escape)] != self.escape:
+                raise FrameError(f"{name}: {self.reserved!r} in the payload is not followed by {self.escape!r}")
+            out += data[start:after]
+            start = after + len(self.escape)
+        out += data[start:]
+        return bytes(out)
+
+
+class Frame:
+    """A request side and a reply side (empty when the device answers nothing framed)."""
+
+    __slots__ = ("name", "reply", "request", "stuffing")
+
+    def __init__(self, name: str, request: Sequence[Part], reply: Sequence[Part],
+                 stuffing: Stuffing | None = None) -> None:
+        self.name = name
+        self.request = Side(request)
+        self.reply = Side(reply)
+        self.stuffing = stuffing
+
+    def wrap(self, payload: bytes, fields: Sequence[int]) -> bytes:
+        """The request: `payload` framed (stuffed first, when the frame stuffs), with the
+        frame's field values."""
+        if self.stuffing is not None:
+            payload = self.stuffing.stuff(payload)
+        side = self.request
+        chunks: list[bytes] = []
+        for part in side.parts:
+            if isinstance(part, Bytes):
+                chunks.append(part.data)
+            elif isinstance(part, Field):
+                chunks.append(part.struct.pack(fields[part.index]))
+            elif isinstance(part, Length):
+                chunks.append(part.struct.pack(len(payload) + part.adjust))
+            elif isinstance(part, Payload):
+                chunks.append(payload)
+            else:
+                chunks.append(part.encode(part.checksum(b"".join(chunks[part.first : part.last + 1]))))
+        return b"".join(chunks)
+
+    def read(self, port: Reader, fields: Sequence[int], request: bytes, size: int) -> tuple[bytes, bytes]:
+        """Read one reply frame from `port`; (the bytes read, the payload).
+
+        `size` is the payload's size when the decoding fixes it, else -1. Bytes
+        before the header are skipped; every constant, field and checksum is
+        checked. FrameError says what is wrong.
+        """
+        data = bytearray()
+        try:
+            return self._read(port, data, fields, request, size)
+        except FrameError:
+            if len(data) > 1 and isinstance(port, Incoming):  # look for the next header in what was taken
+                port.put_back(bytes(data[1:]))
+            raise
+
+    def _read(self, port: Reader, data: bytearray, fields: Sequence[int], request: bytes,
+              size: int) -> tuple[bytes, bytes]:
+        side = self.reply
+        data += self._sync(port, side.header) if side.header else b""
+        self._take(port, data, side.prefix, bool(data))
+        if side.payload < 0:
+            return self._check(side, bytes(data), 0, fields, request), b""
+        if side.length >= 0:
+            at = sum(side.sizes[: side.length])
+            length = side.parts[side.length]
+            assert isinstance(length, Length)
+            size = length.struct.unpack_from(data, at)[0] - length.adjust
+            if not 0 <= size <= MAX_FRAME:
+                raise FrameError(f"{self.name}: length field says {size + length.adjust}, which no payload fits")
+        if size >= 0:
+            self._take(port, data, size + side.suffix, bool(data))
+        else:
+            found = port.read_until(side.delimiter, MAX_FRAME)
+            started = bool(data or found)
+            data += found
+            if not found.endswith(side.delimiter):
+                raise FrameError(f"{self.name}: reply not delimited by {side.delimiter!r}: {bytes(data)!r}",
+                                 timeout=not started)
+            size = len(found) - len(side.delimiter)
+            self._take(port, data, side.suffix - len(side.delimiter), True)
+        raw = bytes(data)
+        return raw, self._check(side, raw, size, fields, request)
+
+    def _sync(self, port: Reader, header: bytes) -> bytes:
+        window = bytearray(port.read(len(header)))
+        if not window:
+            raise FrameError(f"{self.name}: no reply", timeout=True)
+        skipped = 0
+        while window != header:
+            byte = port.read(1) if len(window) == len(header) else b""
+            if not byte:
+                raise FrameError(f"{self.name}: no header {header!r} in the reply (after {skipped} bytes)")
+            del window[0]
+            window += byte
+            skipped += 1
+            if skipped > MAX_SKIP:
+                raise FrameError(f"{self.name}: no header {header!r} in {MAX_SKIP} bytes")
+        return bytes(window)
+
+    def _take(self, port: Reader, data: bytearray, size: int, started: bool) -> None:
+        if size <= 0:
+            return
+        got = port.read(size)
+        data += got
+        if len(got) < size:
+            if not started and not got:
+                raise FrameError(f"{self.name}: no reply", timeout=True)
+            raise FrameError(f"{self.name}: short reply, {len(data)} bytes: {bytes(data)!r}")
+
+    def _check(self, side: Side, raw: bytes, size: int, fields: Sequence[int], request: bytes) -> bytes:
+        """Every constant, field and checksum of a complete reply; its payload."""
+        starts: list[int] = []
+        at = 0
+        for i, part_size in enumerate(side.sizes):
+            starts.append(at)
+            at += size if i == side.payload else part_size
+        starts.append(at)
+        for i, part in enumerate(side.parts):
+            chunk = raw[starts[i] : starts[i + 1]]
+            if isinstance(part, Bytes):
+                if chunk != part.data:
+                    raise FrameError(f"{self.name}: expected {part.data!r} as the {part.role}, got {chunk!r}")
+            elif isinstance(part, Field):
+                value = part.struct.unpack(chunk)[0]
+                if value != fields[part.index]:
+                    raise FrameError(f"{self.name}: reply {part.name} is {value}, expected {fields[part.index]}")
+            elif isinstance(part, Check):
+                covered = raw[starts[part.first] : starts[part.last + 1]]
+                expected = part.encode(part.checksum(request + covered if part.with_request else covered))
+                if (chunk if part.struct is not None else chunk.upper()) != expected:
+                    raise FrameError(f"{self.name}: checksum {chunk!r} does not match the reply, "
+                                     f"which sums to {expected!r}")
+        if side.payload < 0:
+            return b""
+        payload = raw[starts[side.payload] : starts[side.payload + 1]]
+        return self.stuffing.unstuff(payload, self.name) if self.stuffing is not None else payload
+
+
+# ---- requests and replies ----------------------------------------------------------------------
+
+
+def _latin1(owner: str, value: object) -> bytes:
+    if isinstance(value, bytes):
+        return value
+    try:
+        return str(value).encode("latin-1")
+    except UnicodeEncodeError as err:
+        raise RdisValueError(f"{owner}: {err.object[err.start:err.end]!r} is not a latin-1 character") from None
+
+
+class Pack:
+    """A request packed with a struct format: the values at `strings` as latin-1 bytes
+    and, with `rest` (a format ending in `*`), the last value, bytes, appended as it is."""
+
+    __slots__ = ("rest", "strings", "struct")
+
+    def __init__(self, fixed: str, strings: tuple[int, ...] = (), rest: bool = False) -> None:
+        self.struct = struct.Struct(fixed)
+        self.strings = strings
+        self.rest = rest
+
+    def encode(self, owner: str, values: Sequence[Value]) -> bytes:
+        try:
+            if not self.strings and not self.rest:
+                return self.struct.pack(*values)
+            packed = list(values[:-1] if self.rest else values)
+            for i in self.strings:
+                packed[i] = _latin1(owner, packed[i])
+            fixed = self.struct.pack(*packed)
+        except struct.error as err:
+            raise RdisValueError(f"{owner}: {err}") from None
+        if self.rest:
+            tail = values[-1]
+            assert isinstance(tail, bytes)
+            return fixed + tail
+        return fixed
+
+
+class Format:
+    """A request written with a PEP 3101 format string, as latin-1 text."""
+
+    __slots__ = ("template",)
+
+    def __init__(self, template: str) -> None:
+        self.template = template
+
+    def encode(self, owner: str, values: Sequence[Value]) -> bytes:
+        try:
+            text = self.template.format(*values)
+        except (ValueError, TypeError, IndexError, KeyError) as err:
+            raise RdisValueError(f"{owner}: {err}") from None
+        return _latin1(owner, text)
+
+
+class Unpack:
+    """A reply decoded with a struct format: exactly its size or, with `rest`, its fixed
+    part and then the rest as bytes; the values at `strings` as latin-1 text."""
+
+    __slots__ = ("rest", "size", "strings", "struct")
+
+    def __init__(self, fixed: str, strings: tuple[int, ...] = (), rest: bool = False) -> None:
+        self.struct = struct.Struct(fixed)
+        self.strings = strings
+        self.rest = rest
+        self.size = -1 if rest else self.struct.size  # -1: the frame says where the reply ends
+
+    def decode(self, owner: str, data: bytes) -> tuple[Value, ...]:
+        layout = self.struct
+        values: tuple[Any, ...]
+        if self.rest:
+            if len(data) < layout.size:
+                raise RdisProtocolError(f"{owner}: expected {layout.size} bytes or more, got {len(data)}")
+            values = (*layout.unpack_from(data), data[layout.size :])
+        elif len(data) != layout.size:
+            raise RdisProtocolError(f"{owner}: expected {layout.size} bytes, got {len(data)}")
+        else:
+            values = layout.unpack(data)
+        if self.strings:
+            decoded = list(values)
+            for i in self.strings:
+                decoded[i] = decoded[i].decode("latin-1")
+            return tuple(decoded)
+        return values
+
+
+class Match:
+    """A reply matched from its start by a regular expression: its groups, "" for a group
+    that took no part."""
+
+    __slots__ = ("pattern", "regex", "size")
+
+    def __init__(self, pattern: str) -> None:
+        self.pattern = pattern
+        self.regex = re.compile(pattern)
+        self.size = -1
+
+    def decode(self, owner: str, data: bytes) -> tuple[Value, ...]:
+        text = data.decode("latin-1")
+        found = self.regex.match(text)
+        if found is None:
+            raise RdisProtocolError(f"{owner}: reply {text!r} does not match {self.pattern!r}")
+        groups: tuple[str, ...] = found.groups("")
+        return groups
+
+
+# ---- plans: what a description specialises ---------------------------------------------------------
+
+
+@dataclass(frozen=True, slots=True)
+class Param:
+    """A parameter of an interface or a primitive, or a field of an input's adapter."""
+
+    name: str
+    kind: type  # int, float, bool, str or bytes
+    low: float | None = None  # the declared range (for bytes, of the length)
+    high: float | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class FrameUse:
+    """A primitive's frame, and its field values computed over the primitive's parameters."""
+
+    frame: Frame
+    fields: Callable[[StateValues, Args], list[Any]]
+
+
+@dataclass(frozen=True, slots=True)
+class Primitive:
+    """One device command: its format values (over state and its parameters), how they are
+    encoded and framed, how its reply is read and decoded, and its post-actions (the new
+    values of state variables, over state, its parameters and the reply)."""
+
+    name: str
+    connection: str
+    params: tuple[Param, ...]
+    values: Callable[[StateValues, Args], Args]
+    encoder: Pack | Format
+    decoder: Unpack | Match | None = None
+    actions: Callable[[StateValues, Args, Sequence[Any]], dict[str, Value]] | None = None
+    frame: FrameUse | None = None
+    skip: bool = False  # `skip unmatched`: read past replies that do not decode
+    timeout: float | None = None  # seconds its reply may take, instead of the robot's
+    table: Mapping[int, Primitive] | None = None  # a reply table: the plan for each key or tag
+    key: int = -1  # the position of the parameter that chooses from `table` (-1: the reply's tag does)
+    tag: str | None = None  # the struct format of the tag that starts the reply
+    expects_reply: bool = field(init=False)
+    framed_reply: bool = field(init=False)
+    floats: tuple[int, ...] = field(init=False)
+    ranged: tuple[int, ...] = field(init=False)
+    tag_struct: struct.Struct | None = field(init=False)
+
+    def __post_init__(self) -> None:
+        reply = self.frame.frame.reply if self.frame is not None else None
+        framed = reply is not None and bool(reply.parts)
+        acknowledged = framed and reply is not None and reply.payload < 0  # constant parts only
+        object.__setattr__(self, "framed_reply", framed)
+        object.__setattr__(self, "expects_reply", self.decoder is not None or self.table is not None or acknowledged)
+        object.__setattr__(self, "floats", _floats(self.params))
+        object.__setattr__(self, "ranged", _ranged(self.params))
+        object.__setattr__(self, "tag_struct", None if self.tag is None else struct.Struct(self.tag))
+
+
+@dataclass(frozen=True, slots=True)
+class Output:
+    """A domain output: its fields over state, in its adapter's order."""
+
+    name: str
+    fields: Callable[[StateValues], dict[str, Value]]
+
+
+@dataclass(frozen=True, slots=True)
+class Call:
+    """A primitive call of an interface: its arguments over state and the interface's
+    parameters, and the delay after it. `direct`: the arguments are the primitive's format
+    values (it has no frame, table, ranges or post-actions)."""
+
+    primitive: Primitive
+    args: Callable[[StateValues, Args], Args]
+    delay: float = 0.0  # seconds
+    direct: bool = False
+
+
+@dataclass(frozen=True, slots=True)
+class Interface:
+    """A host-side operation: its calls in run order, then the output it triggers."""
+
+    name: str
+    params: tuple[Param, ...]
+    calls: tuple[Call, ...]
+    output: Output | None = None
+    floats: tuple[int, ...] = field(init=False)
+    ranged: tuple[int, ...] = field(init=False)
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "floats", _floats(self.params))
+        object.__setattr__(self, "ranged", _ranged(self.params))
+
+
+@dataclass(frozen=True, slots=True)
+class Input:
+    """A domain input: its adapter's fields, and the interface's arguments over them."""
+
+    name: str
+    adapter: str
+    fields: tuple[Param, ...]
+    interface: Interface
+    args: Callable[[StateValues, Args], Args]
+
+
+@dataclass(frozen=True, slots=True)
+class Hook:
+    """A connection's startup, terminate or keepalive call: an interface, arguments over state."""
+
+    interface: Interface
+    args: Callable[[StateValues], Args]
+
+
+@dataclass(frozen=True, slots=True)
+class Connection:
+    """A transport and what runs on it: hooks, periodic interfaces, its thread's frequency."""
+
+    name: str
+    baud: int
+    address: str | None = None  # opened when no port is given
+    terminator: bytes = b"\n"  # ends a reply line
+    frequency: float = 0.0  # ticks a second
+    periodic: tuple[Interface, ...] = ()
+    startup: Hook | None = None
+    terminate: Hook | None = None
+    keepalive: Hook | None = None
+    interval: float = 0.0  # seconds between keepalives
+
+
+@dataclass(frozen=True, slots=True)
+class Device:
+    """A whole description, planned: what a Robot runs."""
+
+    name: str
+    state: Mapping[str, Value]  # the initial values
+    connections: Mapping[str, Connection]
+    primitives: Mapping[str, Primitive]
+    interfaces: Mapping[str, Interface]
+    inputs: Mapping[str, Input]
+
+
+def _floats(params: tuple[Param, ...]) -> tuple[int, ...]:
+    return tuple(i for i, p in enumerate(params) if p.kind is float)
+
+
+def _ranged(params: tuple[Param, ...]) -> tuple[int, ...]:
+    return tuple(i for i, p in enumerate(params) if p.low is not None)
+
+
+# ---- values given by the host --------------------------------------------------------------------------
+
+_KIND_NAMES: dict[type, str] = {int: "int", float: "float", bool: "bool", str: "string", bytes: "bytes"}
+
+
+def _accept(value: Any, kind: type, what: str) -> Any:
+    """A value given for a parameter or field of type `kind`, made that type; else TypeError.
+
+    An int is taken for a float; bytes are bytes, a bytearray, a list of ints 0..255 or
+    hex text ("3c20")."""
+    if type(value) is kind:
+        return value
+    if kind is float and isinstance(value, numbers.Real) and not isinstance(value, bool):
+        return float(value)
+    if kind is int and isinstance(value, numbers.Integral) and not isinstance(value, bool):
+        return int(value)
+    if kind is str and isinstance(value, str):
+        return value
+    if kind is bytes:
+        try:
+            if isinstance(value, str):
+                return bytes.fromhex(value)
+            if isinstance(value, (bytes, bytearray, memoryview, list, tuple)):
+                return bytes(value)
+        except (ValueError, TypeError) as err:
+            raise TypeError(f"{what} must be bytes: {err}") from None
+    raise TypeError(f"{what} must be {_KIND_NAMES[kind]}, not {type(value).__name__} {value!r}")
+
+
+def _bind(what: str, params: tuple[Param, ...], args: tuple[Any, ...], kwargs: dict[str, Any]) -> Args:
+    """Arguments by position and by name, as Python binds them."""
+    if len(args) > len(params):
+        raise TypeError(f"{what} takes {len(params)} arguments, {len(args)} given")
+    values = list(args)
+    for param in params[len(args) :]:
+        if param.name not in kwargs:
+            raise TypeError(f"{what}: missing argument {param.name!r}")
+        values.append(kwargs.pop(param.name))
+    if kwargs:
+        raise TypeError(f"{what}: unexpected argument {next(iter(kwargs))!r}")
+    return values
+
+
+def _accepted(what: str, params: tuple[Param, ...], values: Args) -> Args:
+    """Values given by position, each made its parameter's type (TypeError if it cannot be)."""
+    if len(values) != len(params):
+        raise TypeError(f"{what} takes {len(params)} arguments, {len(values)} given")
+    for i, param in enumerate(params):
+        if type(values[i]) is not param.kind:
+            values[i] = _accept(values[i], param.kind, f"{what}: parameter {param.name}")
+    return values
+
+
+def _widen(owner: str, floats: tuple[int, ...], values: Args) -> None:
+    """Computed values bound to float parameters: an int made a float, in place."""
+    for i in floats:
+        if type(values[i]) is int:
+            try:
+                values[i] = float(values[i])
+            except OverflowError as err:  # an int too large for a float
+                raise RdisValueError(f"{owner}: {err}") from None
+
+
+def _in_ranges(owner: str, params: tuple[Param, ...], ranged: tuple[int, ...], values: Args) -> None:
+    """A value outside its parameter's declared range is refused before anything is sent."""
+    for i in ranged:
+        p, value = params[i], values[i]
+        low, high = p.low, p.high
+        assert low is not None and high is not None  # `ranged` holds the parameters with a range
+        if isinstance(value, bytes):
+            if not low <= len(value) <= high:
+                raise RdisValueError(f"{owner}: parameter {p.name} has {len(value)} bytes, outside {low!r}..{high!r}")
+        elif not low <= value <= high:
+            raise RdisValueError(f"{owner}: parameter {p.name} is {value!r}, outside {low!r}..{high!r}")
+
+
+class State(Mapping[str, Value]):
+    """The state variables at one moment: `state["name"]` or `state.name`. Immutable: the
+    robot publishes a new snapshot after each primitive's post-actions."""
+
+    __slots__ = ("_values",)
+
+    def __init__(self, values: StateValues) -> None:
+        self._values = values
+
+    def __getitem__(self, name: str) -> Value:
+        value: Value = self._values[name]
+        return value
+
+    def __getattr__(self, name: str) -> Value:
+        try:
+            value: Value = self._values[name]
+            return value
+        except KeyError:
+            raise AttributeError(f"no state variable {name!r}") from None
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self._values)
+
+    def __len__(self) -> int:
+        return len(self._values)
+
+    def __repr__(self) -> str:
+        return f"State({dict(self._values)!r})"
+
+
+class Calls:
+    """`robot.inputs`, `robot.interfaces` or `robot.primitives`: each element of that kind
+    as a method of its name (an input takes its fields by name, the others their
+    parameters by position or name)."""
+
+    __slots__ = ("_kind", "_robot")
+
+    def __init__(self, robot: Robot, kind: str) -> None:
+        self._robot = robot
+        self._kind = kind
+
+    def _plans(self) -> Mapping[str, Input | Interface | Primitive]:
+        device = self._robot.device
+        if self._kind == "input":
+            return device.inputs
+        return device.interfaces if self._kind == "interface" else device.primitives
+
+    def __getattr__(self, name: str) -> Callable[..., None]:
+        plan = self._plans().get(name)
+        if plan is None:
+            raise AttributeError(f"{self._robot.name} has no {self._kind} named {name!r}")
+        robot = self._robot
+        if isinstance(plan, Input):
+            return lambda **fields: robot.call_input(name, **fields)
+        if isinstance(plan, Interface):
+            interface = plan
+            return lambda *args, **kwargs: robot._call_interface(
+                interface, _bind(f"interface {name}", interface.params, args, kwargs))
+        primitive = plan
+        return lambda *args, **kwargs: robot._call_primitive(
+            primitive, _bind(f"primitive {name}", primitive.params, args, kwargs))
+
+    def __dir__(self) -> list[str]:
+        return sorted(self._plans())
+
+
+# ---- ports --------------------------------------------------------------------------------------------
+
+
+class Port(Protocol):
+    """What the robot needs of an open port; pyserial's `Serial` has all of it."""
+
+    timeout: float | None
+
+    def write(self, data: bytes, /) -> int | None: ...
+
+    def read(self, size: int = 1, /) -> bytes: ...
+
+    def read_until(self, expected: bytes = b"\n", size: int | None = None, /) -> bytes: ...
+
+    def reset_input_buffer(self) -> None: ...
+
+    def close(self) -> None: ...
+
+
+PortSpec = str | os.PathLike[str] | Port | Mapping[str, "str | os.PathLike[str] | Port"]
+"""A port for every connection (a pyserial port name or URL, or an open port), or a dict
+from connection name to port."""
+
+
+class _Port:
+    """One open port, shared by the connections given the same one, with its exchange lock."""
+
+    __slots__ = ("input", "io", "lock", "owned")
+
+    def __init__(self, io: Port, owned: bool) -> None:
+        self.io = io
+        self.input = Incoming(io)  # what replies are read from: bytes put back, bytes taken, the deadline
+        self.owned = owned  # opened by the robot, so closed by it too
+        self.lock = threading.Lock()
+
+
+class _Link:
+    """A connection and its port."""
+
+    __slots__ = ("connection", "port")
+
+    def __init__(self, connection: Connection, port: _Port) -> None:
+        self.connection = connection
+        self.port = port
+
+
+def _open_port(connection: Connection, url: str, timeout: float) -> Port:
+    """A port opened with pyserial (any port name or URL it knows) at the connection's baud, 8N1."""
+    try:
+        import serial  # type: ignore[import-untyped, import-not-found, unused-ignore]
+    except ImportError as err:
+        raise RdisConnectionError(f"{connection.name}: opening {url} needs pyserial (pip install pyserial)") from err
+    try:
+        port: Port = serial.serial_for_url(url, baudrate=connection.baud, bytesize=8, parity="N", stopbits=1,
+                                           timeout=timeout, write_timeout=timeout)
+    except (serial.SerialException, OSError, ValueError) as err:
+        raise RdisConnectionError(f"{connection.name}: cannot open {url}: {err}") from err
+    return port
+
+
+def _write_timed_out(err: BaseException) -> bool:
+    """Whether a port's exception is pyserial's for a write that could not complete in time."""
+    serial = sys.modules.get("serial")  # a port that raises it has imported it
+    timeout_type = getattr(serial, "SerialTimeoutException", None) if serial is not None else None
+    return timeout_type is not None and isinstance(err, timeout_type)
+
+
+# ---- the schedule of a connection ----------------------------------------------------------------
+
+
+class _Worker:
+    """One connection's own work (its periodic interfaces, its keepalive) and when it is due.
+
+    Tick k is due at start + k / frequency; a tick already past when the previous one
+    ends is skipped, not run in a burst. The keepalive is due one interval after start,
+    then every interval after the time it was due (or one interval after now, if that is
+    past too). The thread waits on an Event between ticks, so it never spins, and wakes
+    at once when stopped.
+    """
+
+    def __init__(self, robot: Robot, connection: Connection) -> None:
+        self.robot = robot
+        self.connection = connection
+        self.period = 1.0 / connection.frequency if connection.frequency > 0 else math.inf
+        self.interval = connection.interval if connection.keepalive is not None else 0.0
+        self._lock = threading.Lock()
+        self._stop = threading.Event()
+        self._thread: threading.Thread | None = None
+        self.restart_clock()
+
+    def restart_clock(self) -> None:
+        """Make now the start of the schedule."""
+        with self._lock:
+            self._start = time.monotonic()
+            self._keepalive_due = self._start + self.interval
+
+    def tick(self) -> None:
+        """One iteration: each periodic interface, then the keepalive if it is due. Errors go
+        to the error callbacks, and the schedule goes on."""
+        robot = self.robot
+        for interface in self.connection.periodic:
+            if self._stop.is_set():
+                return
+            try:
+                robot._interface(interface, [])
+            except Exception as err:  # noqa: BLE001 - reported; the schedule goes on
+                robot._report(err)
+        keepalive = self.connection.keepalive
+        if keepalive is None or not self.interval:
+            return
+        with self._lock:
+            now = time.monotonic()
+            if now < self._keepalive_due:
+                return
+            due = self._keepalive_due + self.interval
+            self._keepalive_due = due if due > now else now + self.interval
+        try:
+            robot._hook(keepalive)
+        except Exception as err:  # noqa: BLE001 - reported; the schedule goes on
+            robot._report(err)
+
+    def start(self) -> None:
+        self.restart_clock()
+        thread = threading.Thread(target=self._loop, name=f"{self.robot.name} {self.connection.name}", daemon=True)
+        thread.start()
+        self._thread = thread
+
+    def stop(self) -> None:
+        """Stop the thread; it finishes the interface it is running first."""
+        self._stop.set()
+        thread = self._thread
+        if thread is not None and thread is not threading.current_thread():
+            thread.join()
+
+    def _loop(self) -> None:
+        periodic = bool(self.connection.periodic)
+        if not periodic and not self.interval:
+            self._stop.wait()
+            return
+        k = 0
+        while not self._stop.is_set():
+            self.tick()
+            if periodic:
+                k = max(k + 1, math.ceil((time.monotonic() - self._start) / self.period))
+                wake = self._start + k * self.period
+            else:  # only a keepalive: wake when it is due
+                wake = self._keepalive_due
+            delay = wake - time.monotonic()
+            if delay > 0 and self._stop.wait(delay):
+                return
+
+
+# ---- the robot ------------------------------------------------------------------------------------------
+
+
+class Robot:
+    """A description's devices, driven: `open()` opens the ports, runs the startup hooks
+    and starts one thread per connection; `close()` (or leaving a `with` block) stops
+    them, runs the terminate hooks and closes the ports.
+
+    State lives in a dict that is never changed in place: post-actions build a new one
+    under the state lock and publish it with one assignment, so any reader sees a
+    consistent snapshot without locking.
+    """
+
+    def __init__(self, device: Device, *, timeout: float = 1.0) -> None:
+        """A robot not connected yet; `timeout`: seconds a reply may take."""
+        self.device = device
+        self.name = device.name
+        self.timeout = timeout
+        self._state: dict[str, Value] = dict(device.state)
+        self._state_lock = threading.Lock()
+        self._callback_lock = threading.RLock()  # callbacks run one at a time
+        self._output_callbacks: list[OutputCallback] = []
+        self._error_callbacks: list[ErrorCallback] = []
+        self._io_callbacks: list[IoCallback] = []
+        self._links: dict[str, _Link] = {}
+        self._workers: list[_Worker] = []
+        self._close_lock = threading.Lock()
+        self._running = False
+        self._closed = False
+
+    # ---- callbacks --------------------------------------------------------------------------------
+
+    def on_output(self, callback: OutputCallback) -> OutputCallback:
+        """Call `callback({"name": ..., "contents": {...}})` for every output triggered."""
+        with self._callback_lock:
+            self._output_callbacks.append(callback)
+        return callback
+
+    def on_error(self, callback: ErrorCallback) -> ErrorCallback:
+        """Call `callback(error)` for every error of periodic work, keepalives, terminate hooks
+        and callbacks (with none registered, errors are logged to the "rdisc" logger)."""
+        with self._callback_lock:
+            self._error_callbacks.append(callback)
+        return callback
+
+    def on_io(self, callback: IoCallback) -> IoCallback:
+        """Call `callback("write" | "read", connection, data)` for every write, and for every
+        byte read, whatever became of it."""
+        with self._callback_lock:
+            self._io_callbacks.append(callback)
+        return callback
+
+    # ---- what the host can see and call -------------------------------------------------------------
+
+    @property
+    def state(self) -> State:
+        """The state variables now: an immutable snapshot, `robot.state["name"]` or `.name`."""
+        return State(self._state)
+
+    @property
+    def closed(self) -> bool:
+        return self._closed
+
+    @property
+    def inputs(self) -> Any:  # a Calls; a generated driver gives a class of typed methods
+        """The domain inputs, by name: `robot.inputs.NAME(field=value, ...)`."""
+        return Calls(self, "input")
+
+    @property
+    def interfaces(self) -> Any:  # a Calls, or a driver's typed methods
+        """The interfaces, by name: `robot.interfaces.NAME(param, ...)`."""
+        return Calls(self, "interface")
+
+    @property
+    def primitives(self) -> Any:  # a Calls, or a driver's typed methods
+        """The primitives (device commands), by name: `robot.primitives.NAME(param, ...)`."""
+        return Calls(self, "primitive")
+
+    def call_input(self, name: str, /, **fields: Any) -> None:
+        """Run a domain input with its adapter's fields by name, on this thread; errors are raised."""
+        plan = self.device.inputs.get(name)
+        if plan is None:
+            raise KeyError(f"{self.name} has no input named {name!r}")
+        if len(fields) != len(plan.fields) or any(f.name not in fields for f in plan.fields):
+            expected = ", ".join(f.name for f in plan.fields)
+            raise TypeError(f"input {name} takes the fields {expected} ({plan.adapter}); "
+                            f"given: {', '.join(fields) or 'none'}")
+        self._input(plan, [fields[f.name] for f in plan.fields])
+
+    def call_interface(self, name: str, /, *args: Any) -> None:
+        """Run an interface with positional arguments, on this thread; errors are raised."""
+        plan = self.device.interfaces.get(name)
+        if plan is None:
+            raise KeyError(f"{self.name} has no interface named {name!r}")
+        self._call_interface(plan, list(args))
+
+    def call_primitive(self, name: str, /, *args: Any) -> None:
+        """Send one device command (a primitive) with positional arguments, read its reply and
+        run its post-actions, on this thread; errors are raised."""
+        plan = self.device.primitives.get(name)
+        if plan is None:
+            raise KeyError(f"{self.name} has no primitive named {name!r}")
+        self._call_primitive(plan, list(args))
+
+    # ---- lifecycle ----------------------------------------------------------------------------------
+
+    def open(self, port: PortSpec | None = None, *, threads: bool = True) -> None:
+        """Open the ports, run the startup hooks, then start the connections' threads.
+
+        `port`: a pyserial port name or URL ("/dev/ttyUSB0", "COM3", "socket://host:4000")
+        or an open port object, for every connection; or a dict {connection: port}; a
+        connection given none opens its address from the description. With
+        `threads=False` no thread is started: call `tick()` from your own loop. If any of
+        it fails, what was opened is closed again (terminate hooks included) and the
+        error is raised.
+        """
+        if self._running or self._closed:
+            raise RdisConnectionError(f"{self.name}: already opened")
+        try:
+            self._open_links(port)
+            self._running = True
+            self.startup()
+            self._workers = [_Worker(self, c) for c in self.device.connections.values()]
+            for worker in self._workers:
+                if threads:
+                    worker.start()
+        except BaseException:
+            self.close()
+            raise
+
+    def startup(self) -> None:
+        """Run the startup hooks, in declaration order (`open()` does); errors are raised."""
+        for connection in self.device.connections.values():
+            if connection.startup is not None:
+                self._hook(connection.startup)
+
+    def terminate(self) -> None:
+        """Run the terminate hooks of the connections that are open, in declaration order
+        (`close()` does): they leave the robot stopped. Errors are reported, not raised."""
+        for connection in self.device.connections.values():
+            if connection.terminate is not None and connection.name in self._links:
+                try:
+                    self._hook(connection.terminate)
+                except Exception as err:  # noqa: BLE001 - reported, and the others run
+                    self._report(err)
+
+    def tick(self) -> None:
+        """One iteration of every connection's work on this thread, in declaration order: its
+        periodic interfaces, then its keepalive if due. Errors are reported, as the threads' are."""
+        if not self._running:
+            raise self._not_running()
+        for worker in self._workers:
+            worker.tick()
+
+    def close(self) -> None:
+        """Stop the threads (each finishes the interface it is running, delays included), run
+        the terminate hooks (errors reported, not raised) and close the ports `open` opened.
+        Idempotent; the robot does nothing more afterwards."""
+        with self._close_lock:
+            if self._closed:
+                return
+            self._closed = True
+            self._running = False
+        for worker in self._workers:
+            worker.stop()
+        self.terminate()
+        for port in {id(link.port): link.port for link in self._links.values()}.values():
+            if port.owned:
+                try:
+                    port.io.close()
+                except Exception:  # noqa: BLE001, S110 - a port that fails to close is closed enough
+                    pass
+
+    def __enter__(self) -> Robot:  # noqa: PYI034 - typing.Self needs Python 3.11
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.close()
+
+    def _not_running(self) -> RdisConnectionError:
+        return RdisConnectionError(f"{self.name}: {'closed' if self._closed else 'not open'}")
+
+    def _open_links(self, port: PortSpec | None) -> None:
+        """A port for each connection: one name or URL is opened once and shared, with one
+        lock; an open port object is used as it is and never closed here; a connection
+        given no port opens its address."""
+        connections = self.device.connections
+        given: dict[str, Any]
+        if isinstance(port, Mapping):
+            unknown = [name for name in port if name not in connections]
+            if unknown:
+                raise ValueError(f"{self.name} has no connection named {unknown[0]!r} "
+                                 f"(its connections: {', '.join(connections) or 'none'})")
+            given = dict(port)
+        else:
+            given = dict.fromkeys(connections, port) if port is not None else {}
+        for name, connection in connections.items():
+            if name not in given:
+                if connection.address is None:
+                    raise ValueError(f"no port given for connection {name!r}, which has no `address`")
+                given[name] = connection.address
+        opened: dict[object, _Port] = {}
+        for name, where in given.items():
+            by_name = isinstance(where, (str, os.PathLike))
+            key: object = os.fspath(where) if by_name else id(where)
+            if key not in opened:
+                io = _open_port(connections[name], os.fspath(where), self.timeout) if by_name else where
+                opened[key] = _Port(io, owned=by_name)
+            self._links[name] = _Link(connections[name], opened[key])
+
+    # ---- running the plans --------------------------------------------------------------------------
+
+    def _input(self, plan: Input, values: Args) -> None:
+        """Run an input with its fields' values by position (each made its type here)."""
+        if not self._running:
+            raise self._not_running()
+        for i, param in enumerate(plan.fields):
+            if type(values[i]) is not param.kind:
+                values[i] = _accept(values[i], param.kind, f"input {plan.name}: field {param.name}")
+        try:
+            args = plan.args(self._state, values)
+        except EVAL_ERRORS as err:
+            raise RdisValueError(f"{plan.name}: {err}") from None
+        self._interface(plan.interface, args)
+
+    def _call_interface(self, plan: Interface, values: Args) -> None:
+        """Run an interface the host called, with its parameters' values by position."""
+        if not self._running:
+            raise self._not_running()
+        self._interface(plan, _accepted(f"interface {plan.name}", plan.params, values))
+
+    def _call_primitive(self, plan: Primitive, values: Args) -> None:
+        """Run a primitive the host called, with its parameters' values by position."""
+        if not self._running:
+            raise self._not_running()
+        self._primitive(plan, _accepted(f"primitive {plan.name}", plan.params, values))
+
+    def _hook(self, hook: Hook) -> None:
+        try:
+            args = hook.args(self._state)
+        except EVAL_ERRORS as err:
+            raise RdisValueError(f"{hook.interface.name}: {err}") from None
+        self._interface(hook.interface, args)
+
+    def _interface(self, plan: Interface, args: Args) -> None:
+        """Run an interface with its parameters' values: its calls in order, each followed by
+        its delay, then its output. An error stops it where it happened."""
+        if plan.floats:
+            _widen(plan.name, plan.floats, args)
+        if plan.ranged:
+            _in_ranges(plan.name, plan.params, plan.ranged, args)
+        for call in plan.calls:
+            try:
+                values = call.args(self._state, args)
+            except EVAL_ERRORS as err:
+                raise RdisValueError(f"{plan.name}: {err}") from None
+            if call.direct:  # the call's values are the primitive's format values
+                self._exchange(call.primitive, values, values)
+            else:
+                self._primitive(call.primitive, values)
+            if call.delay:
+                time.sleep(call.delay)
+        if plan.output is not None:
+            self._deliver(plan.output)
+
+    def _primitive(self, plan: Primitive, args: Args) -> None:
+        """Run a primitive with its parameters' values: its reply table's entry, if it has
+        one, then the exchange."""
+        if plan.floats:
+            _widen(plan.name, plan.floats, args)
+        if plan.ranged:
+            _in_ranges(plan.name, plan.params, plan.ranged, args)
+        if plan.key >= 0:
+            assert plan.table is not None  # and the key's range holds every key of it
+            plan = plan.table[args[plan.key]]
+        try:
+            values = plan.values(self._state, args)
+        except EVAL_ERRORS as err:
+            raise RdisValueError(f"{plan.name}: {err}") from None
+        self._exchange(plan, values, args)
+
+    def _exchange(self, plan: Primitive, values: Args, local: Args) -> None:
+        """Encode and frame the request; under the port's lock write it and read the reply;
+        then show the I/O callbacks every byte written and read, and run the post-actions.
+
+        `local` is the primitive's parameters' values (a direct call passes its values)."""
+        request = plan.encoder.encode(plan.name, values)
+        use = plan.frame
+        fields: list[Any] = []
+        if use is not None:
+            try:
+                fields = use.fields(self._state, local)
+                request = use.frame.wrap(request, fields)
+            except (struct.error, *EVAL_ERRORS) as err:
+                raise RdisValueError(f"{plan.name}: {err}") from None
+        link = self._links.get(plan.connection)
+        if link is None:
+            raise RdisConnectionError(f"{plan.connection}: not open")
+        port = link.port
+        io = port.io
+        lock = port.lock
+        if not plan.expects_reply:
+            lock.acquire()  # acquire/release rather than `with`: cheaper, and this is every command's path
+            try:
+                io.write(request)
+            except Exception as err:  # whatever the port raises, it failed
+                raise self._port_error(plan, err) from err
+            finally:
+                lock.release()
+            if self._io_callbacks:
+                self._notify_io("write", plan.connection, request)
+            if plan.actions is not None:
+                self._assign(plan, local, ())
+            return
+        reader = port.input
+        wait = plan.timeout or self.timeout
+        reply: Sequence[Any] = ()
+        failed: BaseException | None = None
+        written = False
+        lock.acquire()
+        try:
+            if request:  # a listener (no request) keeps what has arrived: its reply is the next one
+                io.reset_input_buffer()
+                reader.clear()
+                io.write(request)
+                written = True
+            if plan.timeout is not None:
+                io.timeout = plan.timeout
+            reader.begin(wait)
+            plan, reply = self._read_reply(plan, link, reader, fields, request, wait)
+        except RdisError as err:
+            failed = err
+        except Exception as err:  # noqa: BLE001 - whatever the port raises, it failed
+            failed = self._port_error(plan, err)
+            failed.__cause__ = err
+        finally:
+            data = reader.end()
+            if plan.timeout is not None:
+                io.timeout = self.timeout
+            lock.release()
+        # I/O callbacks run once the port is free again: one that calls the robot (or
+        # waits for a thread that does) cannot deadlock against this exchange.
+        if self._io_callbacks:
+            if written:
+                self._notify_io("write", plan.connection, request)
+            if data:
+                self._notify_io("read", plan.connection, data)
+        if failed is not None:
+            raise failed
+        if plan.actions is not None:
+            self._assign(plan, local, reply)
+
+    def _read_reply(self, plan: Primitive, link: _Link, reader: Incoming, fields: list[Any], request: bytes,
+                    wait: float) -> tuple[Primitive, Sequence[Any]]:
+        """The reply, decoded, and the plan whose post-actions take it (a tag's entry)."""
+        decoder = plan.decoder
+        use = plan.frame
+        if use is None or not plan.framed_reply:
+            if isinstance(decoder, Match):  # one line
+                end = link.connection.terminator
+                line = reader.read_until(end, MAX_LINE)
+                if not line:
+                    raise RdisTimeout(f"{plan.name}: no reply within {wait:g} s")
+                if not line.endswith(end):
+                    raise RdisProtocolError(f"{plan.name}: reply line not terminated: {line.decode('latin-1')!r}")
+                text = line[: -len(end)]
+                if end == b"\n" and text.endswith(b"\r"):  # the default takes CR LF as well as LF
+                    text = text[:-1]
+                return plan, decoder.decode(plan.name, text)
+            assert decoder is not None
+            data = reader.read(decoder.size)
+            if not data:
+                raise RdisTimeout(f"{plan.name}: no reply within {wait:g} s")
+            return plan, decoder.decode(plan.name, data)
+        size = decoder.size if decoder is not None and plan.tag is None else -1
+        while True:  # once, or until a reply decodes when the primitive skips the others
+            try:
+                payload = use.frame.read(reader, fields, request, size)[1]
+                if plan.tag_struct is not None:
+                    return self._tagged(plan, payload)
+                return plan, decoder.decode(plan.name, payload) if decoder is not None else ()
+            except (FrameError, RdisProtocolError) as err:
+                nothing = isinstance(err, FrameError) and err.timeout
+                if plan.skip and not nothing and reader.deadline is not None and time.monotonic() < reader.deadline:
+                    continue
+                if nothing or plan.skip:
+                    raise RdisTimeout(f"{plan.name}: no {'matching reply' if plan.skip else 'reply'} "
+                                      f"within {wait:g} s") from None
+                if isinstance(err, RdisProtocolError):
+                    raise
+                raise RdisProtocolError(f"{plan.name}: {err}") from None
+
+    @staticmethod
+    def _tagged(plan: Primitive, payload: bytes) -> tuple[Primitive, Sequence[Any]]:
+        """The entry a reply's tag chooses, and the rest of the payload decoded by it."""
+        tag = plan.tag_struct
+        assert tag is not None and plan.table is not None
+        if len(payload) < tag.size:
+            raise RdisProtocolError(f"{plan.name}: expected {tag.size} bytes or more, got {len(payload)}")
+        value = tag.unpack_from(payload)[0]
+        case = plan.table.get(value)
+        if case is None:
+            raise RdisProtocolError(f"{plan.name}: no reply entry for tag {value}")
+        rest = payload[tag.size :]
+        return case, case.decoder.decode(plan.name, rest) if case.decoder is not None else ()
+
+    def _port_error(self, plan: Primitive, err: BaseException) -> RdisError:
+        """The typed error for what a port raised: a write that timed out, or a failed port."""
+        if _write_timed_out(err):
+            return RdisTimeout(f"{plan.name}: write not completed within {self.timeout:g} s")
+        return RdisConnectionError(f"{plan.connection}: {err}")
+
+    def _assign(self, plan: Primitive, local: Args, reply: Sequence[Any]) -> None:
+        """The post-actions: all values computed from one snapshot, then published together."""
+        assert plan.actions is not None
+        with self._state_lock:
+            state = self._state
+            try:
+                changes = plan.actions(state, local, reply)
+            except EVAL_ERRORS as err:
+                raise RdisValueError(f"{plan.name}: {err}") from None
+            new = dict(state)
+            new.update(changes)
+            self._state = new
+
+    # ---- delivering to callbacks: one at a time, a failing one reported -----------------------------
+
+    def _deliver(self, plan: Output) -> None:
+        try:
+            contents = plan.fields(self._state)
+        except EVAL_ERRORS as err:
+            raise RdisValueError(f"{plan.name}: {err}") from None
+        message: dict[str, Any] = {"name": plan.name, "contents": contents}
+        with self._callback_lock:
+            for callback in list(self._output_callbacks):
+                try:
+                    callback(message)
+                except Exception as err:  # noqa: BLE001 - a user's callback must not stop delivery
+                    error = RdisCallbackError(f"{plan.name}: output callback raised {type(err).__name__}: {err}")
+                    error.__cause__ = err
+                    self._report(error)
+
+    def _notify_io(self, direction: str, connection: str, data: bytes) -> None:
+        with self._callback_lock:
+            for callback in list(self._io_callbacks):
+                try:
+                    callback(direction, connection, data)
+                except Exception as err:  # noqa: BLE001 - a user's callback must not stop the I/O
+                    error = RdisCallbackError(f"{connection}: I/O callback raised {type(err).__name__}: {err}")
+                    error.__cause__ = err
+                    self._report(error)
+
+    def _report(self, error: BaseException) -> None:
+        with self._callback_lock:
+            callbacks = list(self._error_callbacks)
+            if not callbacks:
+                _log.warning("%s: %s: %s", self.name, type(error).__name__, error)
+            for callback in callbacks:
+                try:
+                    callback(error)
+                except Exception:  # noqa: BLE001, S110 - the contract: an error callback's failure is ignored
+                    pass
+
+
+# ---- the command line: `rdisc run` and every driver's ------------------------------------------------
+
+EXIT_OK, EXIT_ERROR, EXIT_USAGE, EXIT_SIGINT, EXIT_SIGTERM = 0, 1, 2, 130, 143
+
+
+class _Terminated(BaseException):
+    """SIGTERM, turned into an exception so that the terminate hooks run on the way out."""
+
+
+def add_arguments(parser: argparse.ArgumentParser, device: Device | None = None) -> None:
+    """The options of `rdisc run` (and of a driver's command line), on `parser`."""
+    connections = f" (connections: {', '.join(device.connections)})" if device is not None else ""
+    inputs = f" (inputs: {', '.join(device.inputs)})" if device is not None and device.inputs else ""
+    parser.add_argument("--port", action="append", default=[], metavar="[CONN=]PORT",
+                        help="a pyserial port or URL (/dev/ttyUSB0, COM3, socket://host:port); "
+                             f"CONN=PORT for one connection of several{connections}")
+    parser.add_argument("--call", action="append", nargs="+", default=[], metavar="NAME [K=V ...]",
+                        help="call an input (or an interface, or a primitive) with named values; repeat for "
+                             f"several calls, in order{inputs}")
+    parser.add_argument("--watch", action="store_true", help="print each output as a JSON line as it arrives")
+    parser.add_argument("--trace", action="store_true", help="print every byte written and read, in hex, on stderr")
+    parser.add_argument("--duration", type=float, metavar="S",
+                        help="run for S seconds (default: until the calls are done; with --watch, until Ctrl-C)")
+    parser.add_argument("--timeout", type=float, default=1.0, metavar="S",
+                        help="reply timeout in seconds (default 1)")
+
+
+def run_command(args: argparse.Namespace, robot: Robot, prog: str) -> int:
+    """What `rdisc run` does with its options: connect, make the --call calls in order, then
+    run for --duration seconds (or, with --watch, until Ctrl-C; else end when the calls are
+    done). It always ends by closing the robot, which runs the terminate hooks. Exit status:
+    0 done; 1 the device failed; 2 a usage error; 130 after SIGINT; 143 after SIGTERM."""
+    try:
+        port = parse_ports(args.port, robot.device)
+        calls = [parse_call(words, robot.device) for words in args.call]
+    except ValueError as err:
+        print(f"{prog}: {err}", file=sys.stderr)
+        return EXIT_USAGE
+    robot.on_error(_print_error)
+    if args.watch:
+        robot.on_output(_print_output)
+    if args.trace:
+        robot.on_io(_print_io)
+    previous = _install_signal_handlers()
+    status = EXIT_OK
+    try:
+        start = time.monotonic()
+        robot.open(port)
+        for name, kind, values in calls:
+            if kind == "input":
+                robot.call_input(name, **values)
+            elif kind == "interface":
+                robot.call_interface(name, *values.values())
+            else:
+                robot.call_primitive(name, *values.values())
+        if args.duration is not None:
+            _sleep(args.duration - (time.monotonic() - start))
+        elif args.watch:
+            _sleep(None)
+    except RdisError as err:
+        _print_error(err)
+        status = EXIT_ERROR
+    except (TypeError, ValueError) as err:  # values of the wrong type for a call, or a bad port
+        print(f"{prog}: {err}", file=sys.stderr)
+        status = EXIT_USAGE
+    except KeyboardInterrupt:
+        status = EXIT_SIGINT
+    except _Terminated:
+        status = EXIT_SIGTERM
+    finally:
+        _shutting_down[0] = True  # a second signal must not cut the terminate hooks short
+        try:
+            robot.close()
+        finally:
+            for signum, handler in previous.items():
+                signal.signal(signum, handler)
+    return status
+
+
+def parse_ports(given: list[str], device: Device) -> str | dict[str, str] | None:
+    """`--port P` for every connection, `--port CONN=P` for one; a plain port is the default for
+    the others, and a connection given none opens its `address`."""
+    connections = device.connections
+    addresses = {name: c.address for name, c in connections.items() if c.address is not None}
+    if not given:
+        if len(addresses) == len(connections):
+            return None
+        raise ValueError("give the device's port: --port /dev/ttyUSB0 (or CONN=PORT for each connection)")
+    default: str | None = None
+    named: dict[str, str] = {}
+    for value in given:
+        name, sep, port = value.partition("=")
+        if sep and name in connections:
+            if name in named:
+                raise ValueError(f"two ports for connection `{name}`")
+            named[name] = port
+        elif sep and name.isidentifier():
+            raise ValueError(f"`{name}` is not a connection of {device.name} "
+                             f"(its connections: {', '.join(connections) or 'none'})")
+        elif default is not None:
+            raise ValueError(f"two ports without a connection name: `{default}` and `{value}`")
+        else:
+            default = value
+    if not named:
+        assert default is not None
+        return default
+    for name in connections:
+        if name not in named:
+            fallback = default if default is not None else addresses.get(name)
+            if fallback is None:
+                raise ValueError(f"no port for connection `{name}`: add --port {name}=PORT")
+            named[name] = fallback
+    return named
+
+
+def parse_value(text: str) -> Value:
+    """A command-line value: an int, a float, True or False, else the text itself."""
+    for convert in (int, float):
+        try:
+            number: Value = convert(text)
+        except ValueError:
+            continue
+        return number
+    if text in ("True", "False"):
+        return text == "True"
+    return text
+
+
+def parse_call(words: list[str], device: Device) -> tuple[str, str, dict[str, Value]]:
+    """--call NAME K=V ...: (name, "input" | "interface" | "primitive", values in declaration
+    order); an input is preferred to an interface of the same name, an interface to a primitive."""
+    name, *pairs = words
+    values: dict[str, Value] = {}
+    for pair in pairs:
+        key, sep, text = pair.partition("=")
+        if not sep or not key:
+            raise ValueError(f"--call {name}: `{pair}` is not KEY=VALUE")
+        if key in values:
+            raise ValueError(f"--call {name}: `{key}` given twice")
+        values[key] = parse_value(text)
+    plan: Input | Interface | Primitive | None
+    for kind, plan in (("input", device.inputs.get(name)), ("interface", device.interfaces.get(name)),
+                       ("primitive", device.primitives.get(name))):
+        if plan is not None:
+            expected = [p.name for p in (plan.fields if isinstance(plan, Input) else plan.params)]
+            if sorted(values) != sorted(expected):
+                wanted = " ".join(f"{e}=..." for e in expected) or "no values"
+                raise ValueError(f"--call {name} takes {wanted}")
+            return name, kind, {e: values[e] for e in expected}
+    known = ", ".join(dict.fromkeys([*device.inputs, *device.interfaces, *device.primitives])) or "none"
+    raise ValueError(f"{device.name} has no input, interface or primitive `{name}` (there are: {known})")
+
+
+def _print_output(message: dict[str, Any]) -> None:
+    sys.stdout.write(json.dumps(message) + "\n")
+    sys.stdout.flush()
+
+
+def _print_error(error: BaseException) -> None:
+    print(f"rdisc run: {type(error).__name__}: {error}", file=sys.stderr, flush=True)
+
+
+def _print_io(direction: str, connection: str, data: bytes) -> None:
+    arrow = ">" if direction == "write" else "<"
+    print(f"{connection} {arrow} {data.hex(' ')}", file=sys.stderr, flush=True)
+
+
+_shutting_down = [False]
+
+
+def _on_signal(signum: int, frame: object) -> None:
+    if _shutting_down[0]:
+        return  # the first signal already started the shutdown: the terminate hooks run in peace
+    _shutting_down[0] = True
+    raise KeyboardInterrupt if signum == signal.SIGINT else _Terminated()
+
+
+def _install_signal_handlers() -> dict[int, Any]:
+    _shutting_down[0] = False
+    previous: dict[int, Any] = {}
+    for signum in (signal.SIGINT, signal.SIGTERM):
+        try:
+            previous[signum] = signal.signal(signum, _on_signal)
+        except ValueError:  # not the main thread: leave the handlers alone
+            pass
+    return previous
+
+
+def _sleep(seconds: float | None) -> None:
+    """Sleep (forever if None); a signal ends it through its handler."""
+    if seconds is None:
+        while True:
+            time.sleep(3600)
+    elif seconds > 0:
+        time.sleep(seconds)
