@@ -429,10 +429,12 @@ class _Driver:
             options = [f"priority {c.priority}"] if c.priority else []
             options += [f"delay {c.delay_ms:g} ms"] if c.delay_ms else []
             self.comment(w, c.span, ", ".join([f"call {prim.name}", *options]))
+            direct = _direct(prim, c)
             self.function(w, function, "state: StateValues, args: Args", iface.params,
-                          [("", a, None) for a in c.args], "Args")
-            delay = f", {c.delay_ms / 1000.0!r}" if c.delay_ms else ""
-            calls.append(f"Call({self.plan['primitive', prim.name]}, {function}{delay})")
+                          direct if direct is not None else [("", a, None) for a in c.args], "Args")
+            delay = f", {c.delay_ms / 1000.0!r}" if c.delay_ms or direct is not None else ""
+            calls.append(f"Call({self.plan['primitive', prim.name]}, {function}{delay}"
+                         + (", direct=True)" if direct is not None else ")"))
         if calls:
             w.blank(2)
         output = {"output": self.plan["output", iface.triggers]} if iface.triggers else {}
@@ -622,6 +624,28 @@ def _owner(model: m.Model, iface: m.Interface) -> str | None:
     for c in iface.run_order():
         return model.primitives[c.primitive].connection
     return next(iter(model.connections), None)
+
+
+def _direct(prim: m.Primitive, call: m.PrimitiveCall) -> list[tuple[str, m.Expr, Type | None]] | None:
+    """A call's values as the primitive's format values, computed straight from the call's
+    arguments, when that changes nothing: the primitive has no post-actions, frame, table or
+    ranges, and its format arguments are constants and its parameters, each once and in order
+    (as the runtime's planner decides it)."""
+    params = [prm.name for prm in prim.params]
+    used = [a.name for a in prim.args if isinstance(a, m.Var) and a.scope is m.Scope.PARAM]
+    simple = all(isinstance(a, m.Const) or (isinstance(a, m.Var) and a.scope is m.Scope.PARAM) for a in prim.args)
+    if (prim.actions or prim.frame or prim.table or any(prm.low is not None for prm in prim.params) or not simple
+            or used != params):
+        return None
+    by_param = {prm.name: (prm, arg) for prm, arg in zip(prim.params, call.args)}
+    values: list[tuple[str, m.Expr, Type | None]] = []
+    for arg in prim.args:
+        if isinstance(arg, m.Var):
+            prm, expr = by_param[arg.name]
+            values.append(("", expr, prm.type))
+        else:
+            values.append(("", arg, None))
+    return values
 
 
 def _names(e: m.Expr) -> set[str]:

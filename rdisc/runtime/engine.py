@@ -1161,11 +1161,15 @@ class Robot:
         plan = self.device.inputs.get(name)
         if plan is None:
             raise KeyError(f"{self.name} has no input named {name!r}")
-        if len(fields) != len(plan.fields) or any(f.name not in fields for f in plan.fields):
+        try:
+            if len(fields) != len(plan.fields):
+                raise KeyError(name)
+            values = [fields[f.name] for f in plan.fields]
+        except KeyError:
             expected = ", ".join(f.name for f in plan.fields)
             raise TypeError(f"input {name} takes the fields {expected} ({plan.adapter}); "
-                            f"given: {', '.join(fields) or 'none'}")
-        self._input(plan, [fields[f.name] for f in plan.fields])
+                            f"given: {', '.join(fields) or 'none'}") from None
+        self._input(plan, values)
 
     def call_interface(self, name: str, /, *args: Any) -> None:
         """Run an interface with positional arguments, on this thread; errors are raised."""
@@ -1325,8 +1329,10 @@ class Robot:
     def _interface(self, plan: Interface, args: Args) -> None:
         """Run an interface with its parameters' values: its calls in order, each followed by
         its delay, then its output. An error stops it where it happened."""
-        if plan.floats:
-            _widen(plan.name, plan.floats, args)
+        for i in plan.floats:  # (inline: this is every command's path)
+            if type(args[i]) is int:
+                _widen(plan.name, plan.floats, args)
+                break
         if plan.ranged:
             _in_ranges(plan.name, plan.params, plan.ranged, args)
         for call in plan.calls:
@@ -1346,8 +1352,10 @@ class Robot:
     def _primitive(self, plan: Primitive, args: Args) -> None:
         """Run a primitive with its parameters' values: its reply table's entry, if it has
         one, then the exchange."""
-        if plan.floats:
-            _widen(plan.name, plan.floats, args)
+        for i in plan.floats:
+            if type(args[i]) is int:
+                _widen(plan.name, plan.floats, args)
+                break
         if plan.ranged:
             _in_ranges(plan.name, plan.params, plan.ranged, args)
         if plan.key >= 0:
