@@ -741,6 +741,12 @@ class Input:
     fields: tuple[Param, ...]
     interface: Interface
     args: Callable[[StateValues, Args], Args]
+    direct: Call | None = field(init=False)  # the interface's one call, run without the interface's walk
+
+    def __post_init__(self) -> None:
+        calls = self.interface.calls
+        one = calls[0] if len(calls) == 1 and calls[0].direct and not calls[0].delay else None
+        object.__setattr__(self, "direct", one if not self.interface.ranged else None)
 
 
 @dataclass(frozen=True, slots=True)
@@ -1308,7 +1314,22 @@ class Robot:
             args = plan.args(self._state, values)
         except EVAL_ERRORS as err:
             raise RdisValueError(f"{plan.name}: {err}") from None
-        self._interface(plan.interface, args)
+        call = plan.direct
+        if call is None:
+            self._interface(plan.interface, args)
+            return
+        interface = plan.interface  # run as `_interface` runs it, one call without a delay
+        for i in interface.floats:
+            if type(args[i]) is int:
+                _widen(interface.name, interface.floats, args)
+                break
+        try:
+            values = call.args(self._state, args)
+        except EVAL_ERRORS as err:
+            raise RdisValueError(f"{interface.name}: {err}") from None
+        self._exchange(call.primitive, values, values)
+        if interface.output is not None:
+            self._deliver(interface.output)
 
     def _call_interface(self, plan: Interface, values: Args) -> None:
         """Run an interface the host called, with its parameters' values by position."""
