@@ -742,8 +742,10 @@ class Input:
     interface: Interface
     args: Callable[[StateValues, Args], Args]
     direct: Call | None = field(init=False)  # the interface's one call, run without the interface's walk
+    kinds: tuple[type, ...] = field(init=False)
 
     def __post_init__(self) -> None:
+        object.__setattr__(self, "kinds", tuple(f.kind for f in self.fields))
         calls = self.interface.calls
         one = calls[0] if len(calls) == 1 and calls[0].direct and not calls[0].delay else None
         object.__setattr__(self, "direct", one if not self.interface.ranged else None)
@@ -1307,9 +1309,11 @@ class Robot:
         """Run an input with its fields' values by position (each made its type here)."""
         if not self._running:
             raise self._not_running()
-        for i, param in enumerate(plan.fields):
-            if type(values[i]) is not param.kind:
-                values[i] = _accept(values[i], param.kind, f"input {plan.name}: field {param.name}")
+        for value, kind in zip(values, plan.kinds):
+            if type(value) is not kind:
+                for i, param in enumerate(plan.fields):
+                    values[i] = _accept(values[i], param.kind, f"input {plan.name}: field {param.name}")
+                break
         try:
             args = plan.args(self._state, values)
         except EVAL_ERRORS as err:
