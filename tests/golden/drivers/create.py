@@ -296,6 +296,10 @@ class Bytes:
         self.role = role
         self.data = data
 
+    def put(self, payload: bytes, fields: Sequence[int], chunks: list[bytes]) -> bytes:
+        """This part's bytes in a request, after `chunks` (the parts before it)."""
+        return self.data
+
 
 class Field:
     """The frame's `index`-th field value, packed with a one-integer struct format."""
@@ -307,6 +311,9 @@ class Field:
         self.struct = struct.Struct(fmt)
         self.index = index
 
+    def put(self, payload: bytes, fields: Sequence[int], chunks: list[bytes]) -> bytes:
+        return self.struct.pack(fields[self.index])
+
 
 class Length:
     """The payload's size plus `adjust`."""
@@ -317,9 +324,15 @@ class Length:
         self.struct = struct.Struct(fmt)
         self.adjust = adjust
 
+    def put(self, payload: bytes, fields: Sequence[int], chunks: list[bytes]) -> bytes:
+        return self.struct.pack(len(payload) + self.adjust)
+
 
 class Payload:
     __slots__ = ()
+
+    def put(self, payload: bytes, fields: Sequence[int], chunks: list[bytes]) -> bytes:
+        return payload
 
 
 class Check:
@@ -336,6 +349,9 @@ class Check:
         self.first = first
         self.last = last
         self.with_request = with_request
+
+    def put(self, payload: bytes, fields: Sequence[int], chunks: list[bytes]) -> bytes:
+        return self.encode(self.checksum(b"".join(chunks[self.first : self.last + 1])))
 
     def encode(self, value: int) -> bytes:
         if self.struct is not None:
@@ -419,19 +435,9 @@ class Frame:
         frame's field values."""
         if self.stuffing is not None:
             payload = self.stuffing.stuff(payload)
-        side = self.request
         chunks: list[bytes] = []
-        for part in side.parts:
-            if isinstance(part, Bytes):
-                chunks.append(part.data)
-            elif isinstance(part, Field):
-                chunks.append(part.struct.pack(fields[part.index]))
-            elif isinstance(part, Length):
-                chunks.append(part.struct.pack(len(payload) + part.adjust))
-            elif isinstance(part, Payload):
-                chunks.append(payload)
-            else:
-                chunks.append(part.encode(part.checksum(b"".join(chunks[part.first : part.last + 1]))))
+        for part in self.request.parts:
+            chunks.append(part.put(payload, fields, chunks))
         return b"".join(chunks)
 
     def read(self, port: Reader, fields: Sequence[int], request: bytes, size: int) -> tuple[bytes, bytes]:
