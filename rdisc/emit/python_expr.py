@@ -176,11 +176,10 @@ _PROPAGATE_NONFINITE = {"+", "-", "*"}  # an inf operand gives inf or nan
 
 
 class Compiler:
-    """Compiles expressions; records what their text uses (helpers, `state`, `math`)."""
+    """Compiles expressions; records the helpers their text uses."""
 
     def __init__(self) -> None:
         self.helpers: set[str] = set()
-        self.reads_state = False
 
     def expr(self, e: m.Expr, names: Mapping[str, str], finite: bool = False) -> Py:
         """`e` as Python. `names`: local names of parameters and fields (state is read from
@@ -190,7 +189,6 @@ class Compiler:
                 return literal(value, type_)
             case m.Var(name=name, scope=scope):
                 if scope is Scope.STATE:
-                    self.reads_state = True
                     return Py(f"state[{quoted(name)}]", p.ATOM)
                 return Py(names[name], p.ATOM)
             case m.ReplyValue(index=index):
@@ -218,12 +216,6 @@ class Compiler:
         if declared is Type.FLOAT and not surely_float(e):
             return call("float", [py])
         return py
-
-    def safe(self, e: m.Expr, declared: Type) -> bool:
-        """Whether binding `e` to a value of type `declared` cannot raise: a constant or a name."""
-        if isinstance(e, m.Const):
-            return not (declared is Type.FLOAT and e.type is Type.INT and abs(e.value) > 2**1023)
-        return isinstance(e, m.Var) and (declared is not Type.FLOAT or surely_float(e))
 
     def helper(self, name: str, args: list[Py]) -> Py:
         self.helpers.add(name)
