@@ -77,6 +77,16 @@ def golden(request: pytest.FixtureRequest) -> Golden:
     return Golden(bool(request.config.getoption("--update-goldens")))
 
 
+#: RDISC_FUZZ_SCALE=N: the property tests try N times their default number of examples (a deeper
+#: search, after a change to what they test); the defaults keep the suite within minutes on 2 cores
+FUZZ_SCALE = float(os.environ.get("RDISC_FUZZ_SCALE", "1"))
+
+
+def fuzz_examples(n: int) -> int:
+    """A property test's number of examples: `n`, times RDISC_FUZZ_SCALE."""
+    return max(1, round(n * FUZZ_SCALE))
+
+
 def cli_env(**extra: str) -> dict[str, str]:
     """The environment of an `rdisc` subprocess: no colour, UTF-8, nothing forced."""
     env = {k: v for k, v in os.environ.items()

@@ -326,16 +326,27 @@ def test_a_callback_may_call_the_robot_while_another_thread_does(drivers) -> Non
 
     driver = load(drivers["fast_create"])
     with CreateEmulator(bumpers=1) as dev:
-        io, errors = Recorder(), Recorder()
+        io, errors, reflexes = Recorder(), Recorder(), Recorder()
+
+        def reflex(output: object) -> None:
+            robot.set_velocity(linear=0.0, angular=0.0)
+            reflexes(output)
+
+        def keep_driving() -> None:  # until several reflexes crossed these calls (or 10 s, on a busy machine)
+            deadline = time.monotonic() + 10
+            while len(reflexes.items) < 5 and time.monotonic() < deadline:
+                robot.set_velocity(linear=0.1, angular=0.0)
+
         robot = driver.connect(dev.port, on_io=io, on_error=errors)
-        robot.on_output(lambda output: robot.set_velocity(linear=0.0, angular=0.0))
+        robot.on_output(reflex)
         try:
-            caller = threading.Thread(target=lambda: [robot.set_velocity(linear=0.1, angular=0.0)
-                                                      for _ in range(300)], daemon=True)
+            caller = threading.Thread(target=keep_driving, daemon=True)
             caller.start()
             caller.join(timeout=20)
             assert not caller.is_alive(), "deadlocked"
+            assert len(reflexes.items) >= 5
             assert errors.items == []
+            dev.wait_until(lambda: STOP in [c for _, c in dev.commands], 5.0, "a reflex's drive(0, 0)")
         finally:
             robot.close()
     assert (0, 0) in dev.drives() and (100, 32767) in dev.drives()
@@ -608,15 +619,22 @@ def test_every_expression_form_passes_ruff_and_mypy(sink, tmp_path) -> None:
     assert done.returncode == 0, done.stdout
 
 
-def _run_both(sink, steps):
+@pytest.fixture(scope="module")
+def sink_pair(sink):
+    """The sink's generated driver, imported, and its runtime description, loaded: once for the
+    module (each run below connects afresh)."""
+    runtime = pytest.importorskip("rdisc.runtime")
+    source, path = sink
+    return load(path), runtime.load(source)
+
+
+def _run_both(sink_pair, steps):
     """Drive the runtime and the generated driver through `steps` over loop:// ports; what each
     saw: I/O, outputs, errors (type and element) and the state after each step."""
     serial = pytest.importorskip("serial")
-    runtime = pytest.importorskip("rdisc.runtime")
-    source, path = sink
     records = []
-    for make in (lambda: load(path).connect, lambda: runtime.load(source).connect):
-        connect = make()
+    for implementation in sink_pair:
+        connect = implementation.connect
         io, outputs, seen = Recorder(), Recorder(), []
         ports = {"wire": serial.serial_for_url("loop://"), "other": serial.serial_for_url("loop://")}
         robot = connect(ports, threads=False, on_io=io, on_output=outputs, on_error=seen.append)
@@ -634,7 +652,7 @@ def _run_both(sink, steps):
     return records
 
 
-def test_the_driver_and_the_runtime_agree_on_chosen_values(sink) -> None:
+def test_the_driver_and_the_runtime_agree_on_chosen_values(sink_pair) -> None:
     steps = [
         lambda r: r.call_input("go", x=1.5, y=-2.0, k=3, s="ab", f=False),
         lambda r: r.call_input("go", x=0.0, y=0.0, k=0, s="0x1f", f=True),
@@ -646,7 +664,7 @@ def test_the_driver_and_the_runtime_agree_on_chosen_values(sink) -> None:
         lambda r: r.call_interface("ping", 300),
         lambda r: r.call_interface("work", 1, 2, 3, "s", True),
     ]
-    ours, theirs = _run_both(sink, steps)
+    ours, theirs = _run_both(sink_pair, steps)
     assert ours == theirs
 
 
@@ -662,12 +680,12 @@ st = hypothesis.strategies
     st.floats(allow_nan=False), st.floats(allow_nan=False), st.integers(-(2**20), 2**20) | st.integers(),
     st.text(max_size=4) | st.sampled_from(["0x10", "0xzz", "7", " 8"]), st.booleans(),
 ), min_size=1, max_size=4))
-def test_the_driver_and_the_runtime_agree_on_any_values(sink, calls) -> None:
+def test_the_driver_and_the_runtime_agree_on_any_values(sink_pair, calls) -> None:
     steps = [
         (lambda r, c=call: r.call_input("go", x=c[0], y=c[1], k=c[2], s=c[3], f=c[4]))
         for call in calls
     ] + [lambda r: (time.sleep(0.003), r.tick())]  # the keepalive (every 1 ms) is due
-    ours, theirs = _run_both(sink, steps)
+    ours, theirs = _run_both(sink_pair, steps)
     assert ours == theirs
 
 

@@ -15,6 +15,7 @@ import sys
 import urllib.request
 import zipfile
 from dataclasses import dataclass
+from importlib.metadata import PackageNotFoundError, version
 from pathlib import Path
 
 import pytest
@@ -63,6 +64,15 @@ def _step(what: str, cmd: list[str], **kwargs) -> None:
     pytest.fail(f"could not {what} (exit {done.returncode}):\n{output}", pytrace=False)
 
 
+def _pip_installs_elsewhere() -> bool:
+    """Whether this environment's pip installs into another Python's (`pip --python`, pip 22.3)."""
+    try:
+        release = tuple(int(part) for part in version("pip").split(".")[:2])
+    except (PackageNotFoundError, ValueError):
+        return False
+    return release >= (22, 3)
+
+
 def _clean_env(**extra: str) -> dict[str, str]:
     """The tests' `rdisc` environment, minus anything that could leak the checkout in."""
     return {k: v for k, v in cli_env(**extra).items() if k not in ("PYTHONPATH", "PYTHONHOME", "VIRTUAL_ENV")}
@@ -77,12 +87,16 @@ def installed(tmp_path_factory: pytest.TempPathFactory) -> Installed:
     _step("build the wheel", [sys.executable, "-m", "build", "--wheel", "--outdir", str(dist), str(ROOT)],
           cwd=ROOT, env=env)
     (wheel,) = dist.glob("rdisc-*.whl")
-    _step("create a virtual environment", [sys.executable, "-m", "venv", str(venv)], env=env)
     bin_dir = venv / ("Scripts" if os.name == "nt" else "bin")
     python = bin_dir / ("python.exe" if os.name == "nt" else "python")
+    if _pip_installs_elsewhere():  # the venv without a pip of its own (seconds saved): ours installs into it
+        _step("create a virtual environment", [sys.executable, "-m", "venv", "--without-pip", str(venv)], env=env)
+        install = [sys.executable, "-m", "pip", "--python", str(python)]
+    else:
+        _step("create a virtual environment", [sys.executable, "-m", "venv", str(venv)], env=env)
+        install = [str(python), "-m", "pip"]
     _step("install the wheel and its dependencies",
-          [str(python), "-m", "pip", "install", "--disable-pip-version-check", "-q", str(wheel)],
-          cwd=outside, env=env)
+          [*install, "install", "--disable-pip-version-check", "-q", str(wheel)], cwd=outside, env=env)
     env = _clean_env(PATH=f"{bin_dir}{os.pathsep}{env.get('PATH', '')}")
     return Installed(wheel, bin_dir, outside, env)
 

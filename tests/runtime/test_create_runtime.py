@@ -46,8 +46,8 @@ def test_startup_sends_start_then_full_a_second_apart(create) -> None:
     commands = dev.wait_for_commands(3)
     (t_start, start), (t_full, full) = commands[0], commands[1]
     assert (start, full) == (bytes([START]), bytes([FULL]))
-    assert t_start - started < 0.5
-    assert 0.9 <= t_full - t_start < 1.6  # `start() delay 1000 ms`
+    assert t_start - started < 1.0  # at once, not after a delay (loose: the machine may be busy)
+    assert 0.9 <= t_full - t_start < 2.0  # `start() delay 1000 ms` (loose: less than two delays)
     first_poll = next(t for t, c in commands if c[0] == SENSORS)
     assert first_poll - t_full >= 0.9  # `full() delay 1000 ms`, then the thread starts
 

@@ -105,9 +105,9 @@ def test_usage_errors(rdisc, args, message) -> None:
 @pytest.mark.parametrize(("signum", "status"), [(signal.SIGINT, 130), (signal.SIGTERM, 143)],
                          ids=["SIGINT", "SIGTERM"])
 def test_a_signal_still_stops_the_robot(signum, status) -> None:
-    with CreateEmulator() as dev:
+    with CreateEmulator() as dev:  # fast_create.rdis: the Create's startup without its two seconds of delays
         process = subprocess.Popen(
-            [sys.executable, "-m", "rdisc", "run", str(CREATE), "--port", dev.port, "--watch",
+            [sys.executable, "-m", "rdisc", "run", str(DATA / "fast_create.rdis"), "--port", dev.port, "--watch",
              "--call", "set_velocity", "linear=0.2", "angular=0"],
             cwd=REPO, env=cli_env(), stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
         )

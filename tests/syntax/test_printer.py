@@ -6,6 +6,7 @@ import math
 from pathlib import Path
 
 import pytest
+from conftest import fuzz_examples
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -256,7 +257,7 @@ def _compound(children: st.SearchStrategy[ast.Expr]) -> st.SearchStrategy[ast.Ex
 expressions = st.recursive(leaves, _compound, max_leaves=25)
 
 
-@settings(max_examples=400, deadline=None)
+@settings(max_examples=fuzz_examples(200), deadline=None)
 @given(expressions)
 def test_print_then_parse_gives_the_same_expression(e: ast.Expr) -> None:
     diagnostics = Diagnostics()
@@ -324,7 +325,7 @@ declarations = st.one_of(
 )  # fmt: skip
 
 
-@settings(max_examples=200, deadline=None)
+@settings(max_examples=fuzz_examples(100), deadline=None)
 @given(st.lists(declarations, max_size=6).map(lambda decls: ast.Module("t.rdis", tuple(decls))))
 def test_print_then_parse_gives_the_same_module(module: ast.Module) -> None:
     diagnostics = Diagnostics()

@@ -1,0 +1,29 @@
+"""`.ci/run` runs the README's test command verbatim, and that command installs what the
+tests need: the test extra, then the published drivers without their dependencies."""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[2]
+
+
+def readme_test_command() -> str:
+    """The one line of the README's code block that runs pytest."""
+    blocks = re.findall(r"```sh\n(.*?)```", (ROOT / "README.md").read_text(encoding="utf-8"), re.DOTALL)
+    lines = [line for block in blocks for line in block.splitlines() if "pytest" in line]
+    assert len(lines) == 1, lines
+    return lines[0]
+
+
+def test_the_readme_test_command_installs_the_drivers_without_their_dependencies() -> None:
+    command = readme_test_command()
+    assert command.startswith("pip install '.[test]' && ")
+    assert "pip install --no-deps -r tests/published-drivers.txt" in command
+    assert (ROOT / "tests" / "published-drivers.txt").is_file()
+
+
+def test_ci_runs_the_readme_test_command_verbatim() -> None:
+    ci = (ROOT / ".ci" / "run").read_text(encoding="utf-8")
+    assert f"\n{readme_test_command()} || status=$?\n" in ci
