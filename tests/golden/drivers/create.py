@@ -150,6 +150,7 @@ class Checksum:
             value = 0
             for byte in data:
                 value ^= byte
+            value &= full
         else:
             value = self._crc(data)
         if self.inverted:
@@ -218,7 +219,6 @@ class Incoming:
 
     def begin(self, wait: float) -> None:
         """Start an exchange that may wait `wait` seconds for its whole reply."""
-        self.taken.clear()
         self.reads = 0
         self.deadline = time.monotonic() + wait
 
@@ -228,7 +228,9 @@ class Incoming:
         if self.shortened:
             self.port.timeout = self.timeout
             self.shortened = False
-        return bytes(self.taken)
+        taken = bytes(self.taken)
+        self.taken.clear()  # an exchange that fails before it reads shows nothing of an earlier one
+        return taken
 
     def put_back(self, data: bytes) -> None:
         self.pending[:0] = data
@@ -569,7 +571,7 @@ class Pack:
             for i in self.strings:
                 packed[i] = _latin1(owner, packed[i])
             fixed = self.struct.pack(*packed)
-        except struct.error as err:
+        except (struct.error, OverflowError) as err:  # OverflowError: a float too large for `e` or `f`
             raise RdisValueError(f"{owner}: {err}") from None
         if self.rest:
             tail = values[-1]
@@ -1494,7 +1496,10 @@ class Robot:
             if not data:
                 raise RdisTimeout(f"{plan.name}: no reply within {wait:g} s")
             return plan, decoder.decode(plan.name, data)
-        size = decoder.size if decoder is not None and plan.tag is None else -1
+        # The decoding's size is the payload's, unless a tag comes first or stuffing may have lengthened
+        # it on the wire (then the constant after the payload ends it).
+        stuffed = use.frame.stuffing is not None and bool(use.frame.reply.delimiter)
+        size = decoder.size if decoder is not None and plan.tag is None and not stuffed else -1
         while True:  # once, or until a reply decodes when the primitive skips the others
             try:
                 payload = use.frame.read(reader, fields, request, size)[1]
