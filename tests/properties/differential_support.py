@@ -1,0 +1,570 @@
+"""Running one description in both implementations and comparing what each does.
+
+Both the runtime (`rdisc.runtime.load(...).connect`) and the generated driver
+(`rdisc.emit.python.import_driver(...).connect`) are driven through their public
+API only, with the same `Script` against a `DevicePort`: an in-memory,
+pyserial-like port that answers each exchange when its request is written (a
+listener's when it reads with nothing pending) with the reply its `ReplyPlan`
+says, computed from the request, the robot's state at that moment and the
+primitive's parameters. Everything observable goes into one ordered log: every
+write and input reset the device sees, every on_io, on_output and on_error
+callback, each call's outcome (the error's type and the element its message
+names first) and the state after it. The two logs must be equal.
+
+The log is also checked against the contract on its own: every byte the port
+gave must have been shown to the on_io callbacks (a property both could break
+alike, which a comparison alone would miss).
+"""
+
+from __future__ import annotations
+
+import difflib
+import hashlib
+import os
+import pprint
+import re
+import sys
+import time
+from collections import deque
+from collections.abc import Callable, Iterable, Iterator
+from contextlib import contextmanager
+from dataclasses import dataclass, field
+from types import ModuleType
+from typing import Any
+
+from descriptions import (
+    Description,
+    Interface,
+    Operation,
+    Part,
+    Primitive,
+    ReplyPlan,
+    Script,
+    Unknown,
+    reply_for,
+)
+
+from rdisc.emit.python import import_driver
+from rdisc.runtime import load
+
+Log = list[tuple[Any, ...]]
+
+
+# ---- the device --------------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class Exchange:
+    """An exchange the device expects: which primitive, its parameters' values (computed from the
+    state when the request arrives), and how to answer."""
+
+    primitive: Primitive
+    values: Callable[[dict[str, Any]], dict[str, Any]]
+    plan: ReplyPlan
+
+
+class Clock:
+    """Time as the wire sees it: it passes only while a read waits for bytes that never come (the
+    port's timeout, which the robot sets to what is left of a reply's deadline). So deadlines fall
+    where they would against a real device, and never because the machine running the test is slow."""
+
+    def __init__(self) -> None:
+        self.now = 1000.0
+
+    def monotonic(self) -> float:
+        return self.now
+
+
+@contextmanager
+def wire_time(clock: Clock) -> Iterator[Clock]:
+    """`time.monotonic` is the clock's while both implementations run (they read it as `time.monotonic()`)."""
+    real = time.monotonic
+    time.monotonic = clock.monotonic
+    try:
+        yield clock
+    finally:
+        time.monotonic = real
+
+
+class DevicePort:
+    """An open port, in memory, with a device behind it that answers as planned."""
+
+    def __init__(self, description: Description, log: Log, clock: Clock) -> None:
+        self.description = description
+        self.log = log
+        self.clock = clock
+        self.timeout: float | None = 1.0
+        self.buffer = bytearray()
+        self.queue: deque[Exchange] = deque()
+        self.given = bytearray()  # every byte a read returned
+        self.answers: list[bool] = []  # per exchange answered: whether its reply was valid
+        self.failures = 0  # times the port raised
+        self.state: Callable[[], dict[str, Any]] = lambda: {n: v for n, _, v in description.states}
+
+    def expect(self, exchanges: Iterable[Exchange]) -> None:
+        """The exchanges of the next operation, in the order they are expected."""
+        self.queue = deque(exchanges)
+
+    def _answer(self, request: bytes) -> None:
+        if self.queue:
+            exchange = self.queue.popleft()
+            if exchange.plan.kind == "broken":
+                self.failures += 1
+                raise OSError(5, "the device is gone")
+            state = self.state()
+            try:
+                values = exchange.values(state)
+            except Unknown:
+                values = dict(state)
+            wire = reply_for(self.description, exchange.primitive, values, request, exchange.plan)
+            self.buffer += wire.data
+            self.answers.append(wire.valid)
+
+    def write(self, data: bytes, /) -> int:
+        self.log.append(("write", bytes(data)))
+        self._answer(bytes(data))
+        return len(data)
+
+    def flush(self) -> None:
+        pass
+
+    def _listen(self) -> None:
+        if not self.buffer and self.queue and self.queue[0].primitive.listens:
+            self._answer(b"")
+            if self.answers:  # bytes put back by the robot after an earlier reply may come first
+                self.answers[-1] = False
+
+    def _take(self, count: int, complete: bool) -> bytes:
+        taken = bytes(self.buffer[:count])
+        del self.buffer[:count]
+        self.given += taken
+        if not complete:  # the read waited its whole timeout for more
+            self.clock.now += self.timeout or 0.0
+        return taken
+
+    def read(self, size: int = 1, /) -> bytes:
+        self._listen()
+        return self._take(size, len(self.buffer) >= size)
+
+    def read_until(self, expected: bytes = b"\n", size: int | None = None, /) -> bytes:
+        self._listen()
+        end = self.buffer.find(expected)
+        stop = len(self.buffer) if end < 0 else end + len(expected)
+        if size is not None and size <= stop:
+            return self._take(size, True)
+        return self._take(stop, end >= 0)
+
+    def reset_input_buffer(self) -> None:
+        self.log.append(("reset input", bytes(self.buffer)))
+        self.buffer.clear()
+
+    def close(self) -> None:
+        pass
+
+
+# ---- what each operation is expected to exchange -------------------------------------------------------
+
+
+def _evaluate(args: tuple[Any, ...], names: Iterable[str], env: dict[str, Any]) -> dict[str, Any]:
+    values = dict(env)
+    for name, arg in zip(names, args):
+        try:
+            values[name] = arg.value(env)
+        except (Unknown, ArithmeticError, ValueError, TypeError, KeyError):
+            values.pop(name, None)
+    return values
+
+
+def _calls(iface: Interface, arguments: Callable[[dict[str, Any]], dict[str, Any]],
+           plans: Iterable[ReplyPlan]) -> list[Exchange]:
+    """The exchanges of an interface's calls, in the order it makes them."""
+    out = []
+    for call, plan in zip(iface.run_order(), plans):
+        def values(state: dict[str, Any], call: Any = call) -> dict[str, Any]:
+            env = {**state, **arguments(state)}
+            return _evaluate(call.args, [p.name for p in call.primitive.params], env)
+        out.append(Exchange(call.primitive, values, plan))
+    return out
+
+
+def exchanges(description: Description, op: Operation, state: dict[str, Any]) -> list[Exchange]:
+    """The exchanges an operation is expected to make (fewer happen when one fails)."""
+    plans = iter(op.plans)
+    if op.kind == "primitive":
+        prim = description.primitive(op.name)
+        given = dict(zip((p.name for p in prim.params), op.args))
+        return [Exchange(prim, lambda live: {**live, **given}, plan) for plan in plans]
+    if op.kind == "interface":
+        iface = description.interface(op.name)
+        given = {p.name: (float(v) if p.type == "float" and isinstance(v, int) else v)
+                 for p, v in zip(iface.params, op.args)}
+        return _calls(iface, lambda live: given, plans)
+    if op.kind == "input":
+        spec = description.input(op.name)
+        fixed = _evaluate(spec.args, [p.name for p in spec.interface.params], {**state, **dict(op.args)})
+        given = {p.name: fixed[p.name] for p in spec.interface.params if p.name in fixed}
+        return _calls(spec.interface, lambda live: given, plans)
+    out: list[Exchange] = []
+    for iface in description.periodic():
+        out += _calls(iface, lambda live: {}, plans)
+    return out
+
+
+def hook_exchanges(description: Description, hook: str, plans: Iterable[ReplyPlan],
+                   state: dict[str, Any]) -> list[Exchange]:
+    """The exchanges of every connection's startup or terminate hook, in declaration order."""
+    plans = iter(plans)
+    out: list[Exchange] = []
+    for connection in description.connections:
+        h = getattr(connection, hook)
+        if h is not None:
+            given = _evaluate(h.args, [p.name for p in h.interface.params], state)
+            out += _calls(h.interface, lambda live, given=given: given, plans)
+    return out
+
+
+# ---- running ------------------------------------------------------------------------------------------
+
+
+def normal(value: Any) -> Any:
+    """A value made comparable: floats by repr (nan equals nan, -0.0 is not 0.0), containers inside out."""
+    if isinstance(value, float):
+        return ("float", repr(value))
+    if isinstance(value, dict):
+        return tuple((k, normal(v)) for k, v in value.items())
+    if isinstance(value, (list, tuple)):
+        return tuple(normal(v) for v in value)
+    if isinstance(value, (bytes, bytearray)):
+        return bytes(value)
+    return value
+
+
+def error_key(err: BaseException) -> tuple[str, str]:
+    """What the contract fixes of an error: its type, and the element its message names first."""
+    return type(err).__name__, str(err).split(":")[0]
+
+
+def _plainly(param: Any, value: Any) -> bool:
+    """Whether a value is plainly of its parameter's type (no conversion the contract allows)."""
+    kinds = {"int": (int,), "float": (int, float), "bool": (bool,), "string": (str,), "bytes": (bytes, bytearray)}
+    return isinstance(value, kinds[param.type]) and (param.type == "bool" or not isinstance(value, bool))
+
+
+def _refusing(description: Description, op: Operation) -> str:
+    """The element that must refuse this call for a value outside a range ("" if none must)."""
+    if op.kind not in ("primitive", "interface"):
+        return ""
+    element = description.primitive(op.name) if op.kind == "primitive" else description.interface(op.name)
+    if len(op.args) != len(element.params) or not all(_plainly(p, v) for p, v in zip(element.params, op.args)):
+        return ""
+    for p, v in zip(element.params, op.args):
+        if p.low is not None and p.high is not None:
+            size = len(v) if p.type == "bytes" else v
+            if not p.low <= size <= p.high:
+                return element.name
+    return ""
+
+
+def _triggered(description: Description, op: Operation) -> str:
+    """The output an interface call that completes must deliver ("" if none)."""
+    if op.kind == "interface":
+        return description.interface(op.name).triggers or ""
+    if op.kind == "input":
+        return description.input(op.name).interface.triggers or ""
+    return ""
+
+
+def _perform(robot: Any, op: Operation) -> None:
+    if op.kind == "tick":
+        robot.tick()
+    elif op.kind == "input":
+        robot.call_input(op.name, **dict(op.args))
+    elif op.kind == "interface":
+        robot.call_interface(op.name, *op.args)
+    else:
+        robot.call_primitive(op.name, *op.args)
+
+
+Connect = Callable[..., Any]
+"""connect(port, threads=False, on_output=..., on_error=..., on_io=...) of either implementation."""
+
+IO_RULE = "every byte read is shown to on_io"
+ERROR_RULE = "calls raise the contract's error types"
+REPLY_RULE = "a valid reply is decoded"
+RANGE_RULE = "a value outside its parameter's range is refused"
+OUTPUT_RULE = "an interface that completes delivers the output it triggers"
+LOAD_RULE = "a checked description loads"
+CALL_ERRORS = ("RdisTimeout", "RdisProtocolError", "RdisValueError", "TypeError", "KeyError")
+
+
+@dataclass(frozen=True)
+class Violation:
+    """A rule of the contract broken by one implementation, which a comparison cannot see when
+    both break it alike."""
+
+    who: str  # runtime | driver
+    rule: str
+    where: str  # the call, or "session"
+    detail: str
+
+    def __str__(self) -> str:
+        return f"{self.who}: {self.where}: {self.rule}, but {self.detail}"
+
+
+@dataclass
+class Run:
+    """What one implementation did: the log that is compared, the full text of each error in it
+    (by entry; only the type and the element named first are compared) and the contract's rules
+    it broke."""
+
+    who: str
+    log: Log = field(default_factory=list)
+    messages: dict[int, str] = field(default_factory=dict)
+    violations: list[Violation] = field(default_factory=list)
+
+    def error(self, head: tuple[Any, ...], err: BaseException, tail: tuple[Any, ...] = ()) -> None:
+        self.messages[len(self.log)] = f"{type(err).__name__}: {err}"
+        self.log.append((*head, *error_key(err), *tail))
+
+    def broke(self, rule: str, where: str, detail: str) -> None:
+        self.violations.append(Violation(self.who, rule, where, detail))
+
+
+def run(who: str, connect: Connect, description: Description, script: Script) -> Run:
+    """Everything observable when `script` runs against one implementation."""
+    with wire_time(Clock()) as clock:
+        return _run(Run(who), connect, description, script, clock)
+
+
+def _run(result: Run, connect: Connect, description: Description, script: Script, clock: Clock) -> Run:
+    log = result.log
+    port = DevicePort(description, log, clock)
+    shown = bytearray()
+
+    def on_io(direction: str, connection: str, data: bytes) -> None:
+        log.append(("io", direction, connection, bytes(data)))
+        if direction == "read":
+            shown.extend(data)
+
+    port.expect(hook_exchanges(description, "startup", script.startup, port.state()))
+    try:
+        robot = connect(port, threads=False, on_output=lambda o: log.append(("output", normal(o))),
+                        on_error=lambda e: result.error(("reported",), e), on_io=on_io)
+    except Exception as err:  # noqa: BLE001 - a failing startup is compared too
+        result.error(("connect",), err)
+    else:
+        port.state = lambda: dict(robot.state)
+        log.append(("connected", normal(dict(robot.state))))
+        for op in script.operations:
+            port.expect(exchanges(description, op, dict(robot.state)))
+            answered, failures, start = len(port.answers), port.failures, len(log)
+            refused = _refusing(description, op)
+            try:
+                _perform(robot, op)
+                log.append((op.label(), "ok", normal(dict(robot.state))))
+                if refused:
+                    result.broke(RANGE_RULE, op.label(), f"{refused} accepted it")
+                triggers = _triggered(description, op)
+                if triggers and not any(e[0] == "output" and e[1][0] == ("name", triggers) for e in log[start:]):
+                    result.broke(OUTPUT_RULE, op.label(), f"{triggers} was not delivered")
+            except Exception as err:  # noqa: BLE001 - the error is what is compared
+                if refused and error_key(err) != ("RdisValueError", refused):
+                    result.broke(RANGE_RULE, op.label(), f"it raised {type(err).__name__}: {err}")
+                result.error((op.label(),), err, (normal(dict(robot.state)),))
+                kind = type(err).__name__  # a driver has error types of its own: compared by name
+                if kind not in CALL_ERRORS + ("RdisConnectionError",) * (port.failures > failures):
+                    result.broke(ERROR_RULE, op.label(), f"it raised {kind}: {err}")
+                if kind in ("RdisProtocolError", "RdisTimeout") and op.kind == "primitive" \
+                        and port.answers[answered:] == [True]:
+                    result.broke(REPLY_RULE, op.label(), f"it raised {kind}: {err}")
+        port.expect(hook_exchanges(description, "terminate", script.terminate, dict(robot.state)))
+        robot.close()
+        log.append(("closed", normal(dict(robot.state))))
+        if script.after_close is not None:
+            try:
+                _perform(robot, script.after_close)
+                log.append((script.after_close.label(), "ok"))
+            except Exception as err:  # noqa: BLE001 - compared
+                result.error((script.after_close.label(),), err)
+    if bytes(shown) != bytes(port.given):
+        failed = " (the port had failed)" if port.failures else ""
+        result.broke(IO_RULE, "session", f"it showed {bytes(shown)!r} where the port gave {bytes(port.given)!r}{failed}")
+    return result
+
+
+# ---- both implementations of one description ---------------------------------------------------------
+
+
+class Pair:
+    """The runtime and the generated driver of one description text (the driver imported once)."""
+
+    def __init__(self, description: Description, folder: str) -> None:
+        digest = hashlib.sha1(description.text.encode()).hexdigest()[:16]
+        self.description = description
+        self.module_name = f"generated_{digest}"
+        path = os.path.join(folder, f"{self.module_name}.rdis")
+        with open(path, "w", encoding="utf-8") as out:
+            out.write(description.text)
+        self.failure: list[Violation] = []  # an implementation that could not even load the description
+        try:
+            self.runtime = load(path)
+        except Exception as err:  # noqa: BLE001 - reported, not raised
+            self.failure.append(Violation("runtime", LOAD_RULE, "load", f"it raised {type(err).__name__}: {err}"))
+        try:
+            self.driver: ModuleType = import_driver(path, folder, self.module_name)
+        except Exception as err:  # noqa: BLE001 - reported, not raised
+            self.failure.append(Violation("driver", LOAD_RULE, "import_driver", f"it raised {type(err).__name__}: {err}"))
+
+    def forget(self) -> None:
+        """Drop the driver module (a long search imports thousands)."""
+        sys.modules.pop(self.module_name, None)
+
+    def runtime_connect(self, port: Any, **kwargs: Any) -> Any:
+        return self.runtime.connect(port, **kwargs)
+
+    def driver_connect(self, port: Any, **kwargs: Any) -> Any:
+        return self.driver.connect(port, **kwargs)
+
+
+@dataclass(frozen=True)
+class Known:
+    """An open bug both implementations share, found by these tests: the random tests pass over it
+    (a test of its own, marked xfail, keeps it in view) and the benchmark labels it."""
+
+    name: str
+    matches: Callable[[Violation, Description], bool]
+
+
+def _reply_parts(v: Violation, d: Description) -> tuple[Any, tuple[Part, ...]]:
+    """The frame of the primitive a violation names, and its reply's parts (None, () if unframed)."""
+    name = re.match(r"call_primitive\('(\w+)'", v.where)
+    frame = d.primitive(name.group(1)).frame if name else None
+    return frame, frame.reply if frame is not None else ()
+
+
+def _narrow_xor(v: Violation, d: Description) -> bool:
+    """The call's frame checks its reply with an XOR narrower than 8 bits."""
+    return any(p.kind == "checksum" and p.check is not None and p.check.kind == "xor" and p.check.width < 8
+               for p in _reply_parts(v, d)[1])
+
+
+def _stuffed_without_length(v: Violation, d: Description) -> bool:
+    """The call's frame stuffs a reply whose payload's end is the constant after it."""
+    frame, parts = _reply_parts(v, d)
+    return frame is not None and frame.stuffing is not None and not any(p.kind == "length" for p in parts)
+
+
+KNOWN: tuple[Known, ...] = (
+    Known("a float too large for its pack code raises OverflowError, not RdisValueError",
+          lambda v, d: v.rule == ERROR_RULE and "OverflowError" in v.detail and "too large to pack" in v.detail),
+    Known("an XOR narrower than 8 bits is not reduced to its width",
+          lambda v, d: v.rule == REPLY_RULE and _narrow_xor(v, d)),
+    Known("after a write the port refused, on_io is shown the previous exchange's reply again",
+          lambda v, d: v.rule == IO_RULE and "(the port had failed)" in v.detail),
+    Known("a stuffed reply ended by a constant is read by its decoding's size, which stuffing changed",
+          lambda v, d: v.rule == REPLY_RULE and _stuffed_without_length(v, d)),
+)
+
+
+def known(v: Violation, d: Description) -> Known | None:
+    return next((k for k in KNOWN if k.matches(v, d)), None)
+
+
+@dataclass(frozen=True)
+class Outcome:
+    """Both runs of one script, and what is wrong with them (nothing, when they agree and keep the contract)."""
+
+    description: Description
+    runtime: Run
+    driver: Run
+
+    @property
+    def violations(self) -> list[Violation]:
+        return self.runtime.violations + self.driver.violations
+
+    @property
+    def new_violations(self) -> list[Violation]:
+        """The violations that no known bug explains."""
+        return [v for v in self.violations if known(v, self.description) is None]
+
+    @property
+    def agree(self) -> bool:
+        return self.runtime.log == self.driver.log
+
+    @property
+    def ok(self) -> bool:
+        """They agree, and keep the contract but for known bugs."""
+        return self.agree and not self.new_violations
+
+    def signature(self) -> tuple[Any, ...]:
+        """A short name for what went wrong, to tell one problem from another: the kinds of the first
+        entries that differ (with the shape of their errors), else the rule broken and how."""
+        if not self.agree:
+            a, b = self.runtime.log, self.driver.log
+            at = next((i for i, (x, y) in enumerate(zip(a, b)) if x != y), min(len(a), len(b)))
+            return ("disagree", _kind(self.runtime, at), _kind(self.driver, at))
+        if not self.violations:
+            return ()
+        v = (self.new_violations or self.violations)[0]
+        bug = known(v, self.description)
+        return ("known", bug.name) if bug is not None else ("contract", v.rule, _shape(v.detail))
+
+    def report(self) -> str:
+        lines = []
+        for v in self.violations:
+            bug = known(v, self.description)
+            lines.append(f"- {v}" + (f"  [known: {bug.name}]" if bug is not None else ""))
+        if not self.agree:
+            a = pprint.pformat(self.runtime.log, width=110).splitlines()
+            b = pprint.pformat(self.driver.log, width=110).splitlines()
+            lines += difflib.unified_diff(a, b, "runtime", "generated driver", lineterm="", n=4)
+            a_at, b_at = self.runtime.messages, self.driver.messages
+            for i in sorted(set(a_at) | set(b_at)):
+                if a_at.get(i) != b_at.get(i):
+                    lines.append(f"  entry {i}: runtime {a_at.get(i, '-')!r}; driver {b_at.get(i, '-')!r}")
+        return "\n".join(lines)
+
+
+def _shape(message: str) -> str:
+    """A message without its particulars (numbers, quoted values), cut short."""
+    message = re.sub(r"b?'[^']*'|\"[^\"]*\"", "Q", message)
+    return re.sub(r"\d+(\.\d+)?(e[+-]?\d+)?", "N", message)[:80]
+
+
+def _kind(run: Run, at: int) -> tuple[Any, ...]:
+    """The log entry at `at` reduced to its kind: a call and its outcome type, an event, a write."""
+    if at >= len(run.log):
+        return ("(nothing)",)
+    entry = run.log[at]
+    head = entry[0]
+    if head in ("write", "reset input", "connected", "closed", "output"):
+        return (head,)
+    kind = (head.split("(")[0], entry[1]) if head not in ("io", "reported", "connect") else (head, entry[1])
+    return (*kind, _shape(run.messages[at])) if at in run.messages else kind
+
+
+def compare(pair: Pair, script: Script) -> Outcome:
+    """Both implementations through the same session."""
+    if pair.failure:
+        failed = Run("runtime")
+        failed.violations += pair.failure
+        return Outcome(pair.description, failed, Run("driver"))
+    return Outcome(pair.description, run("runtime", pair.runtime_connect, pair.description, script),
+                   run("driver", pair.driver_connect, pair.description, script))
+
+
+class Pairs:
+    """The last few descriptions' pairs: shrinking a script reruns one description many times."""
+
+    def __init__(self, folder: str, size: int = 8) -> None:
+        self.folder = folder
+        self.size = size
+        self.pairs: dict[str, Pair] = {}
+
+    def __call__(self, description: Description) -> Pair:
+        pair = self.pairs.pop(description.text, None) or Pair(description, self.folder)
+        self.pairs[description.text] = pair  # now the most recent
+        while len(self.pairs) > self.size:
+            oldest = next(iter(self.pairs))
+            self.pairs.pop(oldest).forget()
+        return pair
