@@ -18,6 +18,7 @@ check on the strategies more than on rdisc). Exit status 1 if anything was found
 from __future__ import annotations
 
 import argparse
+import hashlib
 import importlib.util
 import os
 import sys
@@ -111,14 +112,14 @@ def search(budget: int, first_seed: int, sessions: int, shrink: bool) -> Tally:
                     tally.sessions += 1
                     tally.calls += len(script.operations)
                     count(tally, script, outcome)
-                signature = outcome.signature()
-                if not signature or signature in tally.findings:
-                    continue
-                if signature[0] == "known":  # listed as first seen, not shrunk again
-                    tally.findings[signature] = Found(signature, description, script, outcome).finding
-                    continue
-                shrinking = shrink
-                raise Found(signature, description, script, outcome)
+                for signature in outcome.signatures():
+                    if signature in tally.findings:
+                        continue
+                    if signature[0] == "known":  # listed as first seen, not shrunk again
+                        tally.findings[signature] = Found(signature, description, script, outcome).finding
+                        continue
+                    shrinking = shrink
+                    raise Found(signature, description, script, outcome)
 
         rounds += 1
         shrinking = False
@@ -147,6 +148,17 @@ def merge(tallies: list[Tally]) -> Tally:
     return total
 
 
+def fingerprint() -> str:
+    """A digest of rdisc's sources: a driver generated now carries the engine as it is on disk now, while
+    the runtime runs the one imported at start, so an edit during a search shows up as disagreements."""
+    import rdisc
+
+    digest = hashlib.sha1()
+    for path in sorted(Path(rdisc.__file__).parent.rglob("*.py")):
+        digest.update(path.read_bytes())
+    return digest.hexdigest()
+
+
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--descriptions", type=int, default=200, help="descriptions to generate (default 200)")
@@ -158,6 +170,7 @@ def main() -> int:
     jobs = max(1, args.jobs)
     shares = [args.descriptions // jobs + (1 if i < args.descriptions % jobs else 0) for i in range(jobs)]
     started = time.perf_counter()
+    sources = fingerprint()
     if jobs == 1:
         tallies = [search(shares[0], args.seed, args.sessions, not args.no_shrink)]
     else:
@@ -170,6 +183,8 @@ def main() -> int:
     print(f"{total.descriptions} descriptions, {total.sessions} sessions, {total.calls} calls "
           f"in {elapsed:.1f} s ({jobs} job{'s' if jobs > 1 else ''}; {total.shrink_runs} more runs shrinking); "
           f"Python {sys.version.split()[0]}, {os.cpu_count()} CPUs")
+    if fingerprint() != sources:
+        print("WARNING: rdisc's sources changed during the search: disagreements may be that change, not bugs")
     outcomes = ", ".join(f"{kind} {count}" for kind, count in total.outcomes.most_common())
     print(f"call outcomes (runtime): {outcomes}")
     valid = ", ".join(f"{kind} {count}" for kind, count in total.valid.most_common())

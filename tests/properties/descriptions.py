@@ -899,8 +899,8 @@ def _checksum(draw: Draw, index: int, side: list[Part], names: dict[str, int],
     return Part("checksum", fmt=fmt, check=check)
 
 
-def _side(draw: Draw, params: tuple[str, ...], reply_side: bool, payload: bool,
-          shared: bool, field_names: tuple[str, ...] = ("d0", "d1", "d2")) -> tuple[Part, ...]:
+def _side(draw: Draw, params: tuple[str, ...], reply_side: bool, payload: bool, shared: bool,
+          field_names: tuple[str, ...] = ("d0", "d1", "d2"), stuffed: bool = False) -> tuple[Part, ...]:
     """One side's parts: [header] parts... [payload parts...] [terminator]. How the payload's end
     is found is drawn first (a length field, constant bytes right after it, or its size alone),
     since a reply's delimiting decides which primitives may use the frame."""
@@ -930,7 +930,8 @@ def _side(draw: Draw, params: tuple[str, ...], reply_side: bool, payload: bool,
 
     if draw(st.integers(0, 4)) >= 2:
         add(Part("header", data=_constant_bytes(draw, 1, 3)))
-    ending = draw(st.sampled_from(["size", "length", "literal", "terminator"])) if payload else "none"
+    endings = ["length", "literal", "terminator"] + ["size"] * (not stuffed)  # a stuffed payload's size says nothing
+    ending = draw(st.sampled_from(endings)) if payload else "none"
     before = draw(st.integers(0, 2))
     length_at = draw(st.integers(0, before)) if ending == "length" else -1
     for i in range(before + 1):
@@ -958,10 +959,11 @@ def frames(draw: Draw, name: str) -> Frame:
     or none), sometimes stuffed, sometimes a listener's (`request { payload }`)."""
     params = tuple(f"q{i}" for i in range(draw(st.integers(0, 2))))
     stuffing = None
-    if sometimes(draw, 7):
+    if sometimes(draw, 4):
         stuffing = (_constant_bytes(draw, 1, 1), _constant_bytes(draw, 1, 2))
+    stuffed = stuffing is not None
     if sometimes(draw, 3):
-        parts = _side(draw, params, False, True, True)
+        parts = _side(draw, params, False, True, True, stuffed=stuffed)
         return Frame(name, params, parts, parts, True, stuffing)
     listener = stuffing is None and sometimes(draw, 5)
     request = (Part("payload"),) if listener else _side(draw, params, False, True, False)
@@ -970,7 +972,7 @@ def frames(draw: Draw, name: str) -> Frame:
         reply_kind = "payload"
     # a reply's fields often have the request's names, with the same value or another
     names = tuple(sorted({p.name for p in request if p.kind == "field"})) or ("d0", "d1")
-    reply = () if reply_kind == "none" else _side(draw, params, True, reply_kind == "payload", False, names)
+    reply = () if reply_kind == "none" else _side(draw, params, True, reply_kind == "payload", False, names, stuffed)
     return Frame(name, params, request, reply, False, stuffing)
 
 
@@ -1649,13 +1651,14 @@ reply_plans = st.builds(ReplyPlan, st.sampled_from(REPLY_KINDS), st.binary(max_s
 
 def spice(prim: Primitive, material: bytes) -> bytes:
     """`material` after the bytes a frame treats specially, which payloads of real devices contain too:
-    the stuffed sequence, the header, the constant after the payload."""
+    the stuffed sequence, the header, the constant after the payload (where a length says where the
+    payload ends, else it would end it)."""
     frame = prim.frame
     if frame is None:
         return material
     special = frame.stuffing[1] if frame.stuffing is not None else b""
     kinds = [p.kind for p in frame.reply]
-    if "payload" in kinds and kinds.index("payload") + 1 < len(kinds):
+    if "payload" in kinds and kinds.index("payload") + 1 < len(kinds) and "length" in kinds:
         special += frame.reply[kinds.index("payload") + 1].data
     if frame.reply and frame.reply[0].kind == "header":
         special += frame.reply[0].data

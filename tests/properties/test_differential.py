@@ -11,8 +11,8 @@ not (tests/properties/differential_support.py). Bytes written, input resets,
 state, outputs, errors and I/O events must be the same; and, since both could
 break a rule alike, each must keep the contract where a comparison cannot tell:
 every byte read shown to on_io, a valid reply decoded, only the contract's error
-types raised. Open bugs both share are listed in `differential_support.KNOWN`,
-each with an xfail test below; the random tests pass over them.
+types raised. An open bug both share can be listed in `differential_support.KNOWN`
+(with an xfail test of its own) for the random tests to pass over it until it is fixed.
 
 Only the public API is used, so the tests hold across rewrites of the internals.
 The example count is modest; `python benchmarks/differential.py --descriptions
@@ -26,7 +26,7 @@ from typing import Any
 
 import pytest
 from descriptions import CATALOGUE, Description, crc, descriptions, scripts
-from differential_support import KNOWN, Pairs, compare
+from differential_support import Pairs, compare
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
@@ -76,7 +76,7 @@ def test_the_device_model_computes_the_catalogue_check_values(name: str, check: 
     assert crc(b"123456789", *CATALOGUE[name]) == check
 
 
-# ---- fixed cases: the four former disagreements, and the open bugs of KNOWN ------------------------------
+# ---- fixed cases: the four former disagreements, and four faults both shared that this test found --------
 
 
 class Port:
@@ -172,20 +172,16 @@ def test_a_framed_reply_that_fails_is_shown_to_on_io(robot_of) -> None:
     assert b"".join(data for direction, _, data in robot.events if direction == "read") == spoilt
 
 
-def _known(number: int) -> pytest.MarkDecorator:
-    return pytest.mark.xfail(strict=False, reason=f"open bug: {KNOWN[number].name}")
-
-
-@_known(0)
 def test_a_float_too_large_for_its_pack_code_is_an_rdis_value_error(robot_of) -> None:
+    """Found by the differential test: an OverflowError from struct escaped."""
     robot = robot_of('primitive p(x: float) on link pack "<e" (x)\n', Port(b""))
     with pytest.raises(Exception, match="^p: ") as raised:
         robot.call_primitive("p", 1e300)
     assert type(raised.value).__name__ == "RdisValueError"
 
 
-@_known(1)
 def test_an_xor_narrower_than_a_byte_is_reduced_to_its_width(robot_of) -> None:
+    """Found by the differential test: a 4-bit XOR was written as two hex digits, a 1-bit one compared whole."""
     port = Port(b"$A*" + b"%X" % ((0x41 ^ 0x2A) & 0xF))
     robot = robot_of('frame nibble { header "$"  payload  literal "*"  checksum "xor" hex width 4 }\n'
                      'primitive p() on link frame nibble pack "BB" (0x31, 0x60) unpack "B" { v = out[0] }\n', port)
@@ -194,8 +190,8 @@ def test_an_xor_narrower_than_a_byte_is_reduced_to_its_width(robot_of) -> None:
     assert robot.state["v"] == 0x41
 
 
-@_known(2)
 def test_a_write_the_port_refuses_shows_no_stale_reply_to_on_io(robot_of) -> None:
+    """Found by the differential test: the failed exchange showed the bytes of the one before it."""
     port = Port(_frame(1, b"\x05"))
     robot = robot_of('primitive p() on link frame summed(1) pack "B" (4) unpack "B" { v = out[0] }\n', port)
     robot.call_primitive("p")
@@ -206,8 +202,8 @@ def test_a_write_the_port_refuses_shows_no_stale_reply_to_on_io(robot_of) -> Non
     assert [e for e in robot.events if e[0] == "read"] == [("read", "link", _frame(1, b"\x05"))]
 
 
-@_known(3)
 def test_a_stuffed_reply_ended_by_a_constant_is_read_up_to_the_constant(robot_of) -> None:
+    """Found by the differential test: the decoding's size was read, which stuffing had made longer."""
     robot = robot_of('frame stuffed { stuff "\\x00" after "\\xFF"  header "\\xAA"  payload  terminator "\\x55" }\n'
                      'primitive p() on link frame stuffed pack "B" (1) unpack ">H" { v = out[0] }\n',
                      Port(b"\xaa\xff\x00\x01\x55"))  # the payload FF 01, stuffed
