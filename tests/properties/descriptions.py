@@ -31,6 +31,8 @@ from typing import Any
 
 from hypothesis import strategies as st
 
+from rdisc.semantics.frames import CATALOGUE
+
 INT, FLOAT, BOOL, STRING, BYTES = "int", "float", "bool", "string", "bytes"
 NUMBERS = (INT, FLOAT)
 
@@ -573,20 +575,6 @@ def struct_text(order: str, slots: Sequence[Slot], pad: int, rest: bool) -> str:
 
 # ---- checksums ----------------------------------------------------------------------------------------
 
-# Catalogue CRCs: width, poly, init, reflect, xorout (the CRC RevEng catalogue's parameters).
-CATALOGUE: dict[str, tuple[int, int, int, bool, int]] = {
-    "crc8": (8, 0x07, 0x00, False, 0x00),
-    "crc8-maxim": (8, 0x31, 0x00, True, 0x00),
-    "crc8-dvb-s2": (8, 0xD5, 0x00, False, 0x00),
-    "crc16-xmodem": (16, 0x1021, 0x0000, False, 0x0000),
-    "crc16-ccitt-false": (16, 0x1021, 0xFFFF, False, 0x0000),
-    "crc16-kermit": (16, 0x1021, 0x0000, True, 0x0000),
-    "crc16-modbus": (16, 0x8005, 0xFFFF, True, 0x0000),
-    "crc16-arc": (16, 0x8005, 0x0000, True, 0x0000),
-    "crc16-x25": (16, 0x1021, 0xFFFF, True, 0xFFFF),
-    "crc32": (32, 0x04C11DB7, 0xFFFFFFFF, True, 0xFFFFFFFF),
-    "crc32c": (32, 0x1EDC6F41, 0xFFFFFFFF, True, 0xFFFFFFFF),
-}
 # Other spellings rdisc accepts for some of them.
 SPELLINGS = {"crc16-modbus": "CRC-16/MODBUS", "crc16-xmodem": "crc16_xmodem", "crc8-maxim": "crc8-maxim-dow",
              "crc16-ccitt-false": "crc16-autosar", "crc32": "CRC-32/ISO-HDLC"}
