@@ -1,18 +1,20 @@
 """A long differential search: the runtime against the generated driver on many random
-descriptions, listing every disagreement found, each shrunk to a minimal example.
+descriptions, listing every problem found, each shrunk to a minimal example.
 
-    python benchmarks/differential.py --descriptions 2000            # about 0.2 s a description
+    python benchmarks/differential.py --descriptions 2000            # about 0.1 s a description
     python benchmarks/differential.py --descriptions 2000 --jobs 2   # one search per CPU
     python benchmarks/differential.py --descriptions 300 --no-shrink # first examples, unshrunk
 
-It uses tests/properties/descriptions.py and differential_support.py, the test suite's
-strategies and harness (tests/properties/test_differential.py runs a few dozen).
-Hypothesis generates descriptions and sessions; when one disagrees (or breaks the
-contract's on_io rule), it is shrunk, printed and remembered by its signature (what
-differs first: a call's outcome type, a write, an I/O event...), and the search goes
-on, failing only on signatures not seen yet, until the budget of descriptions is
-spent. Also printed: how often a reply the device model calls valid was decoded (a
-check on the strategies more than on rdisc). Exit status 1 if anything was found.
+It uses the test suite's strategies and harness (tests/properties/descriptions.py and
+differential_support.py; tests/properties/test_differential.py runs a few dozen).
+Hypothesis generates descriptions and sessions. A problem is a disagreement, or a rule
+of the contract broken by either implementation (on_io, valid replies, error types,
+ranges, outputs). Each is shrunk, printed and remembered by its signature (what differs
+first, or the rule and how), and the search goes on, failing only on signatures not
+seen yet, until the budget of descriptions is spent; a bug listed in KNOWN is printed
+as first seen, unshrunk. Also printed: the calls' outcomes, apart those of calls whose
+every reply was valid (a check on the strategies as much as on rdisc). Exit status 1
+if anything was found. Leave rdisc alone while it runs (see `fingerprint`).
 """
 
 from __future__ import annotations
@@ -64,7 +66,7 @@ class Tally:
 
 
 class Found(Exception):
-    """A disagreement with a signature not seen yet in this search."""
+    """A problem with a signature not seen yet in this search."""
 
     def __init__(self, signature: tuple[Any, ...], description: Description, script: Script, outcome: Outcome):
         super().__init__(str(signature))
@@ -165,7 +167,7 @@ def main() -> int:
     parser.add_argument("--sessions", type=int, default=3, help="sessions (scripts) per description (default 3)")
     parser.add_argument("--seed", type=int, default=0, help="first seed (default 0; each job and round adds)")
     parser.add_argument("--jobs", type=int, default=1, help="parallel searches, one process each (default 1)")
-    parser.add_argument("--no-shrink", action="store_true", help="report disagreements as found, unshrunk")
+    parser.add_argument("--no-shrink", action="store_true", help="report problems as found, unshrunk")
     args = parser.parse_args()
     jobs = max(1, args.jobs)
     shares = [args.descriptions // jobs + (1 if i < args.descriptions % jobs else 0) for i in range(jobs)]
@@ -190,9 +192,9 @@ def main() -> int:
     valid = ", ".join(f"{kind} {count}" for kind, count in total.valid.most_common())
     print(f"  of calls whose every reply was valid: {valid}")
     if not total.findings:
-        print("no disagreement found")
+        print("no problem found: the implementations agree and keep the contract")
         return 0
-    print(f"{len(total.findings)} kind{'s' if len(total.findings) > 1 else ''} of disagreement found:")
+    print(f"{len(total.findings)} kind{'s' if len(total.findings) > 1 else ''} of problem found:")
     for i, finding in enumerate(total.findings.values(), 1):
         print(f"\n==== {i}. {finding.signature}")
         print(finding.description)
