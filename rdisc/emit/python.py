@@ -444,7 +444,7 @@ class _Driver:
     def connection(self, w: Writer, c: m.Connection) -> None:
         self.comment(w, c.span, f"connection {c.name}: {c.kind}, {c.baud} baud")
         periodic = [self.plan["interface", i.name] for i in self.model.interfaces.values()
-                    if i.periodic and _owner(self.model, i) == c.name]
+                    if i.periodic and self.model.owner(i) == c.name]
 
         def hook(call: m.HookCall) -> str:
             args = [self.exprs.expr(a, {}).text for a in call.args]
@@ -619,23 +619,10 @@ class _Driver:
 # ---- small pieces ------------------------------------------------------------------------------
 
 
-def _owner(model: m.Model, iface: m.Interface) -> str | None:
-    """The connection whose thread runs a periodic interface: that of its first call's primitive."""
-    for c in iface.run_order():
-        return model.primitives[c.primitive].connection
-    return next(iter(model.connections), None)
-
-
 def _direct(prim: m.Primitive, call: m.PrimitiveCall) -> list[tuple[str, m.Expr, Type | None]] | None:
     """A call's values as the primitive's format values, computed straight from the call's
-    arguments, when that changes nothing: the primitive has no post-actions, frame, table or
-    ranges, and its format arguments are constants and its parameters, each once and in order
-    (as the runtime's planner decides it)."""
-    params = [prm.name for prm in prim.params]
-    used = [a.name for a in prim.args if isinstance(a, m.Var) and a.scope is m.Scope.PARAM]
-    simple = all(isinstance(a, m.Const) or (isinstance(a, m.Var) and a.scope is m.Scope.PARAM) for a in prim.args)
-    if (prim.actions or prim.frame or prim.table or any(prm.low is not None for prm in prim.params) or not simple
-            or used != params):
+    arguments, when that changes nothing (`formats_its_params`, as the runtime's planner decides)."""
+    if not prim.formats_its_params():
         return None
     by_param = {prm.name: (prm, arg) for prm, arg in zip(prim.params, call.args)}
     values: list[tuple[str, m.Expr, Type | None]] = []

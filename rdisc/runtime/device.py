@@ -127,23 +127,14 @@ class Description:
         return engine.Interface(iface.name, _params(iface.params), calls, output)
 
     def _call(self, call: m.PrimitiveCall, slots: dict[str, int], plan: engine.Primitive) -> engine.Call:
-        """A call, with the primitive's format arguments substituted where that changes nothing.
-
-        When the primitive has no post-actions, frame, table or ranges and its format
-        arguments are constants and its parameters, each once and in order, its
-        format values are computed straight from the call's arguments (no binding in
-        between): the same expressions are evaluated, in the same order.
-        """
+        """A call, with the primitive's format arguments substituted where that changes nothing
+        (`formats_its_params`): its format values are computed straight from the call's
+        arguments, the same expressions evaluated in the same order."""
         primitive = self.model.primitives[call.primitive]
         delay = call.delay_ms / 1000.0
-        params = [p.name for p in primitive.params]
-        used = [a.name for a in primitive.args if isinstance(a, m.Var) and a.scope is m.Scope.PARAM]
-        simple = all(isinstance(a, m.Const) or (isinstance(a, m.Var) and a.scope is m.Scope.PARAM)
-                     for a in primitive.args)
-        if (primitive.actions or primitive.frame or primitive.table or plan.ranged or not simple
-                or used != params):
+        if not primitive.formats_its_params():
             return engine.Call(plan, _values([prepare(a, slots) for a in call.args]), delay)
-        by_param = dict(zip(params, zip(primitive.params, call.args)))
+        by_param = {p.name: (p, arg) for p, arg in zip(primitive.params, call.args)}
         direct: list[Prepared | m.Const] = []
         for arg in primitive.args:
             if isinstance(arg, m.Var):
@@ -170,21 +161,13 @@ class Description:
             return engine.Hook(interfaces[call.interface], lambda s: args(s, _EMPTY))
 
         periodic = tuple(interfaces[i.name] for i in self.model.interfaces.values()
-                         if i.periodic and _owner(self.model, i) == c.name)
+                         if i.periodic and self.model.owner(i) == c.name)
         keepalive = c.keepalive
         return engine.Connection(
             c.name, c.baud, c.address, c.terminator_bytes(), c.frequency_hz, periodic, hook(c.startup),
             hook(c.terminate), hook(keepalive.call if keepalive else None),
             keepalive.interval_ms / 1000.0 if keepalive else 0.0,
         )
-
-
-def _owner(model: m.Model, iface: m.Interface) -> str | None:
-    """The connection a periodic interface runs on: its first call's primitive's."""
-    calls = iface.run_order()
-    if calls:
-        return model.primitives[calls[0].primitive].connection
-    return next(iter(model.connections), None)
 
 
 def _params(params: tuple[m.Parameter, ...]) -> tuple[engine.Param, ...]:

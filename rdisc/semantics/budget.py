@@ -90,7 +90,7 @@ def budget(model: m.Model, diagnostics: Diagnostics) -> list[ConnectionBudget]:
         periodic = tuple(
             exchange(model, iface, conn.name)
             for iface in model.interfaces.values()
-            if iface.periodic and _owner(model, iface) == conn.name
+            if iface.periodic and model.owner(iface) == conn.name
         )
         keepalive = exchange(model, model.interfaces[conn.keepalive.call.interface], conn.name) if conn.keepalive else None
         b = ConnectionBudget(conn.name, conn.baud, conn.frequency_hz, periodic, keepalive,
@@ -122,13 +122,6 @@ def _warn(model: m.Model, conn: m.Connection, b: ConnectionBudget, diagnostics: 
             f"({b.capacity:g} bytes/s)",
             help="raise the baud rate, lower the frequency, or lengthen the keepalive interval",
         )
-
-
-def _owner(model: m.Model, iface: m.Interface) -> str | None:
-    """The connection whose thread runs a periodic interface (the checker made it unique)."""
-    for call in iface.calls:
-        return model.primitives[call.primitive].connection
-    return next(iter(model.connections), None)
 
 
 def exchange(model: m.Model, iface: m.Interface, connection: str) -> Exchange:

@@ -330,6 +330,15 @@ class Primitive:
         """This primitive as it is when its table's key (or its reply's tag) has c.value: one decoding."""
         return dataclasses.replace(self, decoding=c.decoding, actions=c.actions, table=None)
 
+    def formats_its_params(self) -> bool:
+        """Whether a call's arguments can be its format values as they are: no post-actions,
+        frame, table or ranges, and format arguments that are constants and its parameters,
+        each once and in order (both planners then skip binding the parameters)."""
+        used = [a.name for a in self.args if isinstance(a, Var) and a.scope is Scope.PARAM]
+        simple = all(isinstance(a, Const) or (isinstance(a, Var) and a.scope is Scope.PARAM) for a in self.args)
+        return (simple and not (self.actions or self.frame or self.table)
+                and all(p.low is None for p in self.params) and used == [p.name for p in self.params])
+
     def expects_reply(self, frames: dict[str, Frame]) -> bool:
         """A reply is read when there is one to decode, or when the frame's reply
         is an acknowledgement (constant parts only, no payload)."""
@@ -419,3 +428,10 @@ class Model:
     frames: dict[str, Frame] = field(default_factory=dict)
     constants: dict[str, Value] = field(default_factory=dict)
     enums: dict[str, dict[str, int]] = field(default_factory=dict)
+
+    def owner(self, iface: Interface) -> str | None:
+        """The connection whose thread runs a periodic interface: its first call's primitive's."""
+        calls = iface.run_order()
+        if calls:
+            return self.primitives[calls[0].primitive].connection
+        return next(iter(self.connections), None)
