@@ -1068,16 +1068,20 @@ class _Worker:
 
     def start(self) -> None:
         self.restart_clock()
-        thread = threading.Thread(target=self._loop, name=f"{self.robot.name} {self.connection.name}", daemon=True)
-        thread.start()
-        self._thread = thread
+        # Kept before it starts: a signal may interrupt `start()` once the thread exists.
+        self._thread = threading.Thread(target=self._loop, name=f"{self.robot.name} {self.connection.name}",
+                                        daemon=True)
+        self._thread.start()
 
     def stop(self) -> None:
         """Stop the thread; it finishes the interface it is running first."""
         self._stop.set()
         thread = self._thread
         if thread is not None and thread is not threading.current_thread():
-            thread.join()
+            try:
+                thread.join()
+            except RuntimeError:  # its start was interrupted before it ran: it will see the stop and end
+                pass
 
     def _loop(self) -> None:
         periodic = bool(self.connection.periodic)
@@ -1659,12 +1663,19 @@ def run_command(args: argparse.Namespace, robot: Robot, prog: str) -> int:
     except _Terminated:
         status = EXIT_SIGTERM
     finally:
-        _shutting_down[0] = True  # a second signal must not cut the terminate hooks short
+        while not _shutting_down[0]:  # from here on a signal must not cut the terminate hooks short
+            try:
+                _shutting_down[0] = True
+            except KeyboardInterrupt:
+                status = EXIT_SIGINT
+            except _Terminated:
+                status = EXIT_SIGTERM
         try:
             robot.close()
         finally:
-            for signum, handler in previous.items():
-                signal.signal(signum, handler)
+            interrupted = status in (EXIT_SIGINT, EXIT_SIGTERM)
+            for signum, handler in previous.items():  # after a signal, later ones are ignored to the exit
+                signal.signal(signum, signal.SIG_IGN if interrupted else handler)
     return status
 
 

@@ -1,0 +1,78 @@
+"""Signals at any moment leave the robot stopped: in `rdisc run` and in a generated driver's
+command line, once the port is open, the terminate hook's stop command is the last thing
+written, whatever signals arrive (one, two, a burst; during start-up or while running), the
+exit status is the first signal's (130, 143) and nothing prints a traceback."""
+
+from __future__ import annotations
+
+import signal
+import subprocess
+import sys
+import time
+from collections.abc import Callable
+
+import pytest
+from conftest import cli_env
+from devices import CreateEmulator
+from devices.create import STOP
+from runtime_support import DATA, REPO
+
+from rdisc.compile import compile_path
+from rdisc.emit.python import to_python
+
+FAST_CREATE = DATA / "fast_create.rdis"  # start-up: two commands 50 ms apart; then polls at 20 Hz
+
+# Seconds after the first command reached the device, then the signals and the gaps between them.
+# The offsets sweep start-up (its delay, the threads being started) and running.
+MOMENTS = {
+    "start-up, twice": (0.0, [signal.SIGINT, signal.SIGINT], 0.0),
+    "start-up delay, twice": (0.02, [signal.SIGINT, signal.SIGINT], 0.005),
+    "threads starting, burst": (0.05, [signal.SIGINT] * 5, 0.002),
+    "just started, SIGTERM then SIGINT": (0.07, [signal.SIGTERM, signal.SIGINT], 0.001),
+    "running, twice": (0.3, [signal.SIGINT, signal.SIGINT], 0.01),
+    "running, once": (0.3, [signal.SIGTERM], 0.0),
+}
+
+
+def _interrupted(command: Callable[[str], list[str]], after: float, signals: list[signal.Signals],
+                 gap: float) -> None:
+    """Run `command(port)` against an emulated Create, signal it `after` seconds after its first
+    command arrived, and check how it ended."""
+    with CreateEmulator() as dev:
+        process = subprocess.Popen(command(dev.port), cwd=REPO, env=cli_env(), stdout=subprocess.PIPE,
+                                   stderr=subprocess.PIPE, text=True)
+        try:
+            dev.wait_for_commands(1, timeout=30)  # the port is open: from here on the robot must end stopped
+            time.sleep(after)
+            for signum in signals:
+                process.send_signal(signum)
+                time.sleep(gap)
+            _, stderr = process.communicate(timeout=30)
+        finally:
+            if process.poll() is None:
+                process.kill()
+                process.communicate()
+        expected = 130 if signals[0] == signal.SIGINT else 143
+        assert process.returncode == expected, stderr
+        assert "Traceback" not in stderr and "internal error" not in stderr, stderr
+        dev.wait_until(lambda: bool(dev.commands) and dev.commands[-1][1] == STOP, 5, "the stop command last")
+        time.sleep(0.05)  # nothing more arrives after it
+        assert dev.commands[-1][1] == STOP, dev.commands[-3:]
+
+
+@pytest.mark.parametrize(("after", "signals", "gap"), MOMENTS.values(), ids=MOMENTS.keys())
+def test_rdisc_run_leaves_the_robot_stopped(after, signals, gap) -> None:
+    _interrupted(lambda port: [sys.executable, "-m", "rdisc", "run", str(FAST_CREATE), "--watch", "--port", port],
+                 after, signals, gap)
+
+
+DRIVER_MOMENTS = ["start-up delay, twice", "threads starting, burst", "running, twice"]
+
+
+@pytest.mark.parametrize(("after", "signals", "gap"), [MOMENTS[k] for k in DRIVER_MOMENTS], ids=DRIVER_MOMENTS)
+def test_a_generated_driver_leaves_the_robot_stopped(tmp_path, after, signals, gap) -> None:
+    driver = tmp_path / "fast_create_driver.py"
+    model = compile_path(str(FAST_CREATE)).model
+    assert model is not None
+    driver.write_text(to_python(model, FAST_CREATE.name), encoding="utf-8")
+    _interrupted(lambda port: [sys.executable, str(driver), "--watch", "--port", port], after, signals, gap)
