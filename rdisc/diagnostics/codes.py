@@ -127,7 +127,14 @@ The number of format arguments differs from the number of values the `pack` or
 access (`{0.x}`, `{0[1]}`), conversions (`!r`) and nested fields are refused:
 they would reach into Python objects."""),
     ("E304", "invalid-regex", """
-The `regex` does not compile as a Python regular expression."""),
+The `regex` does not compile as a Python regular expression, or it has a shape
+that can make Python's backtracking matcher take far more than linear time on a
+bad reply line (a device can send one): two parts of variable length in a row
+that can match the same characters (`\\s*\\s*`, `\\d+\\.?\\d*`), or a repeated
+part whose rounds can share characters (`(a+)+`, `(?:a{0,64}){0,64}`, `(a|aa)*`).
+Put a character that neither part matches between them (`(\\d+),(\\d+)` is fine),
+or make the first part possessive (`\\d++`) or atomic (`(?>...)`), so that it
+never gives characters back."""),
     ("E305", "reply-index", """
 `out[i]` reads value i of the reply: it must be a constant within the number of
 values the `unpack` format produces or the number of groups the `regex` has, and

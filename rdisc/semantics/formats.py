@@ -13,6 +13,7 @@ import struct
 from dataclasses import dataclass
 
 from rdisc.semantics.model import Type
+from rdisc.semantics import regex_shape
 
 MAX_REPEAT = 4096
 MAX_MESSAGE = 65536  # bytes of one request or reply
@@ -213,50 +214,17 @@ def format_width(spec: str) -> int:
 
 def regex_groups(pattern: str) -> int:
     """Number of groups of a regex; raises TemplateError where it does not compile
-    or could backtrack catastrophically on a reply line."""
+    or could take more than linear time on a reply line (see `regex_shape`)."""
     try:
         compiled = re.compile(pattern)
-        from re import _parser  # type: ignore[attr-defined]
-
-        risky = _nested_repeat(_parser.parse(pattern), False)
+        risky = regex_shape.risk(pattern)
     except re.error as err:
         raise TemplateError(f"invalid regular expression: {err.msg}", err.pos or 0) from None
     except (OverflowError, RecursionError, MemoryError):
         raise TemplateError("regular expression is too complex", 0, len(pattern)) from None
-    if risky:
-        raise TemplateError(
-            "a repeated group that itself repeats or branches can take exponential time on a bad reply: "
-            "rewrite it without nesting, or make the inner part possessive (`++`, `*+`)",
-            0,
-            len(pattern),
-        )
+    if risky is not None:
+        raise TemplateError(risky, 0, len(pattern))
     return compiled.groups
-
-
-def _nested_repeat(items, inside: bool) -> bool:
-    """Whether an unbounded repeat contains another repeat or an alternation."""
-    from re import _constants as c  # type: ignore[attr-defined]
-
-    for op, arg in items:
-        if op in (c.MAX_REPEAT, c.MIN_REPEAT):
-            _low, high, body = arg
-            unbounded = high == c.MAXREPEAT or high > 64
-            if inside and high > 1:
-                return True
-            if _nested_repeat(body, inside or unbounded):
-                return True
-        elif op is c.BRANCH:
-            if inside:
-                return True
-            if any(_nested_repeat(branch, inside) for branch in arg[1]):
-                return True
-        elif op is c.SUBPATTERN:
-            if _nested_repeat(arg[-1], inside):
-                return True
-        elif op in (c.ATOMIC_GROUP, c.ASSERT, c.ASSERT_NOT):
-            if _nested_repeat(arg[-1] if op is not c.ATOMIC_GROUP else arg, False):
-                return True
-    return False
 
 
 def regex_min_length(pattern: str) -> int:

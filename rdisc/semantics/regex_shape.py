@@ -1,0 +1,237 @@
+"""Which regular expressions can take more than linear time on a reply line.
+
+Python's `re` backtracks. A regex is slow on a bad line only where the same text can be
+split between its parts in many ways, and each way is tried before the match fails:
+
+- two parts of variable length, one after the other, that can match the same
+  characters (`\\s*\\s*`, `\\d+\\d*`, `.*,.*`: the characters between them give no
+  fence): n² ways, n³ with three, and so on;
+- a repeated part whose body can be split that way across two of its rounds
+  (`(a+)+`, `(?:a{0,64}){0,64}`, `(a|a)*`, `(a|aa)*`): exponentially many ways.
+
+`risk` walks the parse tree and reports the first such shape. It is conservative: a
+fixed character between two parts (`(\\d+),(\\d+)`) is a fence only when neither part
+can match it. Possessive repeats and atomic groups give nothing back, so they are safe.
+Reply lines are latin-1 text, so character sets are sets of the 256 code points.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from typing import Any
+
+try:  # Python 3.11+
+    from re import _constants as c  # type: ignore[attr-defined]
+    from re import _parser  # type: ignore[attr-defined]
+except ImportError:  # Python 3.10
+    import sre_constants as c  # type: ignore[no-redef, unused-ignore]
+    import sre_parse as _parser  # type: ignore[no-redef, unused-ignore]
+
+ALL = frozenset(range(256))
+MAX_NESTING = 6  # repeats within repeats: deeper is refused as too complex to judge
+LONGEST = 4096  # characters of a reply line (the engine's MAX_LINE): the spread of `*` and `+`
+BUDGET = 16 * LONGEST  # the most ways a run of parts that share characters may split a line
+
+_CATEGORIES = {
+    c.CATEGORY_DIGIT: r"\d", c.CATEGORY_NOT_DIGIT: r"\D", c.CATEGORY_SPACE: r"\s",
+    c.CATEGORY_NOT_SPACE: r"\S", c.CATEGORY_WORD: r"\w", c.CATEGORY_NOT_WORD: r"\W",
+}
+_CATEGORY_SETS = {
+    category: frozenset(i for i in range(256) if re.fullmatch(pattern, chr(i)))
+    for category, pattern in _CATEGORIES.items()
+}
+
+
+class Risky(Exception):
+    """A shape that can backtrack without bound; the message says which."""
+
+
+@dataclass(frozen=True)
+class _Shape:
+    chars: frozenset[int]  # what the part can match, anywhere in it
+    first: frozenset[int]  # what its match can start with
+    spread: int  # the ways it can match one text (lengths, branches), 1 for a fixed part
+    nullable: bool  # it can match the empty text
+
+    @property
+    def variable(self) -> bool:
+        return self.spread > 1
+
+
+def risk(pattern: str) -> str | None:
+    """Why `pattern` can take more than linear time on some line, or None (it cannot)."""
+    parsed = _parser.parse(pattern)
+    try:
+        _Walk(parsed.state).sequence(list(parsed), [], 0)
+    except Risky as err:
+        return str(err)
+    return None
+
+
+class _Walk:
+    def __init__(self, state: Any) -> None:
+        self.state = state
+        self.strict = False  # within two rounds of a repeat: any two variable parts sharing characters are too many
+
+    def sequence(self, items: list[Any], live: list[tuple[frozenset[int], int]],
+                 depth: int) -> list[tuple[frozenset[int], int]]:
+        """Walk parts in order. `live`: the character sets and spreads of earlier variable parts
+        that could still take characters from the part at hand; returned as they are after."""
+        for item in items:
+            shape, live = self.part(item, live, depth)
+            if shape is None:
+                continue
+            if shape.variable:
+                ways = shape.spread
+                for chars, spread in live:
+                    if chars & shape.first:
+                        ways *= spread
+                if ways > (shape.spread if self.strict else BUDGET):
+                    raise Risky("parts of variable length in a row can match the same characters, which "
+                                "takes polynomial time on a bad reply: put a character neither matches "
+                                "between them, or make the first possessive (`*+`, `++`)")
+                live = [*live, (shape.chars, shape.spread)]
+            elif not shape.nullable:  # a fence, unless an earlier variable part can match it too
+                live = [(chars, spread) for chars, spread in live if chars & shape.chars]
+        return live
+
+    def part(self, item: Any, live: list[tuple[frozenset[int], int]], depth: int) -> tuple[_Shape | None, list[tuple[frozenset[int], int]]]:
+        """The shape of one part (None: zero width) and `live` after what is inside it."""
+        op, av = item
+        if op is c.AT:
+            return None, live
+        if op in (c.ASSERT, c.ASSERT_NOT):
+            self.sequence(list(av[1]), [], depth)
+            return None, live
+        if op is c.SUBPATTERN:
+            body = av[-1]
+            return None, self.sequence(list(body), live, depth)
+        if op in (c.MAX_REPEAT, c.MIN_REPEAT):
+            return self.repeat(av, live, depth)
+        if op is c.BRANCH:
+            return self.branch(av[1], live, depth), live
+        if op is c.GROUPREF_EXISTS:
+            branches = [av[1]] + ([av[2]] if av[2] is not None else [_parser.SubPattern(self.state)])
+            return self.branch(branches, live, depth), live
+        if op is c.ATOMIC_GROUP or op is getattr(c, "POSSESSIVE_REPEAT", None):
+            body = av if op is c.ATOMIC_GROUP else av[2]
+            self.sequence(list(body), [], depth + 1)
+            low, _ = self.width([item])
+            return _Shape(self.chars(list(body)), self.first(list(body)), 1, low == 0), live
+        if op is c.GROUPREF:
+            return _Shape(ALL, ALL, LONGEST, True), live
+        chars = self.chars([item])
+        return _Shape(chars, chars, 1, False), live
+
+    def repeat(self, av: Any, live: list[tuple[frozenset[int], int]], depth: int) -> tuple[_Shape, list[tuple[frozenset[int], int]]]:
+        low, high, body = av
+        if depth >= MAX_NESTING:
+            raise Risky(f"repeats are nested more than {MAX_NESTING} deep")
+        items = list(body)
+        self.sequence(items, [], depth + 1)
+        if high > 1:  # one round after another must not be able to share characters
+            strict, self.strict = self.strict, True
+            try:
+                self.sequence(items + items, [], depth + 1)
+            except Risky:
+                raise Risky("a repeated part can split the same text between its rounds in many ways, "
+                            "which takes exponential time on a bad reply: rewrite it without nesting, "
+                            "or make the inner part possessive (`++`, `*+`)") from None
+            finally:
+                self.strict = strict
+        body_low, body_high = self.width(items)
+        longest = LONGEST if high >= c.MAXREPEAT or body_high >= c.MAXREPEAT else min(high * body_high, LONGEST)
+        spread = max(1, longest - low * body_low + 1)
+        return _Shape(self.chars(items), self.first(items), spread, low == 0 or body_low == 0), live
+
+    def branch(self, branches: list[Any], live: list[tuple[frozenset[int], int]], depth: int) -> _Shape:
+        sets, firsts = [], []
+        for alternative in branches:
+            self.sequence(list(alternative), list(live), depth)
+            sets.append(self.chars(list(alternative)))
+            firsts.append(self.first(list(alternative)))
+        widths = [self.width(list(alternative)) for alternative in branches]
+        low = min(w[0] for w in widths)
+        high = min(max(w[1] for w in widths), LONGEST)
+        overlapping = any(a & b for i, a in enumerate(firsts) for b in firsts[i + 1 :])
+        spread = (high - low + 1) * (len(branches) if overlapping else 1)
+        return _Shape(frozenset().union(*sets), frozenset().union(*firsts), spread, low == 0)
+
+    def first(self, items: list[Any]) -> frozenset[int]:
+        """What a match of the parts can start with (up to the first part that cannot be empty)."""
+        out: frozenset[int] = frozenset()
+        for item in items:
+            op, av = item
+            if op in (c.AT, c.ASSERT, c.ASSERT_NOT):
+                continue
+            if op in (c.MAX_REPEAT, c.MIN_REPEAT) or op is getattr(c, "POSSESSIVE_REPEAT", None):
+                out |= self.first(list(av[2]))
+            elif op is c.SUBPATTERN:
+                out |= self.first(list(av[-1]))
+            elif op is c.ATOMIC_GROUP:
+                out |= self.first(list(av))
+            elif op is c.BRANCH:
+                out = out.union(*(self.first(list(alternative)) for alternative in av[1]))
+            else:
+                out |= self.chars([item])
+            if self.width([item])[0] > 0:
+                break
+        return out
+
+    def width(self, items: list[Any]) -> tuple[int, int]:
+        low, high = _parser.SubPattern(self.state, items).getwidth()
+        return low, high
+
+    def chars(self, items: list[Any]) -> frozenset[int]:
+        """Every character the parts can match (case folded both ways, to be safe)."""
+        out: set[int] = set()
+        for op, av in items:
+            if op is c.LITERAL:
+                out |= _cased(av)
+            elif op is c.NOT_LITERAL:
+                out |= ALL - {av}
+            elif op is c.ANY:
+                out |= ALL
+            elif op is c.IN:
+                out |= _in(av)
+            elif op in (c.MAX_REPEAT, c.MIN_REPEAT) or op is getattr(c, "POSSESSIVE_REPEAT", None):
+                out |= self.chars(list(av[2]))
+            elif op is c.SUBPATTERN:
+                out |= self.chars(list(av[-1]))
+            elif op is c.ATOMIC_GROUP:
+                out |= self.chars(list(av))
+            elif op is c.BRANCH:
+                for alternative in av[1]:
+                    out |= self.chars(list(alternative))
+            elif op is c.GROUPREF_EXISTS:
+                out |= self.chars(list(av[1])) | (self.chars(list(av[2])) if av[2] is not None else set())
+            elif op not in (c.AT, c.ASSERT, c.ASSERT_NOT):
+                out |= ALL  # a back reference, or anything not known here: anything
+        return frozenset(out)
+
+
+def _cased(code: int) -> set[int]:
+    if code > 255:
+        return set()
+    ch = chr(code)
+    return {ord(x) for x in (ch, ch.lower(), ch.upper()) if len(x) == 1 and ord(x) < 256}
+
+
+def _in(items: Any) -> frozenset[int]:
+    out: set[int] = set()
+    negate = False
+    for op, av in items:
+        if op is c.NEGATE:
+            negate = True
+        elif op is c.LITERAL:
+            out |= _cased(av)
+        elif op is c.RANGE:
+            low, high = av
+            for code in range(low, min(high, 255) + 1):
+                out |= _cased(code)
+        elif op is c.CATEGORY:
+            out |= _CATEGORY_SETS.get(av, ALL)
+        else:
+            out |= ALL
+    return ALL - out if negate else frozenset(out)
