@@ -32,6 +32,7 @@ from rdisc.emit.python_expr import Chain, Compiler, Paren, Py, lines, literal, q
 from rdisc.emit.writer import Writer
 from rdisc.runtime import engine
 from rdisc.runtime.codec import decoder, encoder, frame_fields
+from rdisc.runtime.device import Description
 from rdisc.semantics import model as m
 from rdisc.semantics.model import Type
 from rdisc.source import SourceFile, Span
@@ -44,7 +45,7 @@ _PY_TYPES = {Type.INT: "int", Type.FLOAT: "float", Type.BOOL: "bool", Type.STRIN
 # Names a plan function may use: a parameter or field of the same name would hide
 # them, so such a parameter gets a trailing underscore.
 _BODY_NAMES = frozenset((
-    "self", "state", "args", "reply", "fields",
+    "self", "state", "args", "reply", "fields", "type", "Exception",
     "float", "int", "round", "abs", "min", "max", "str", "bool", "len", "bytes", "math", "struct", "re",
     "Any", "Args", "StateValues", "Sequence", "Value",
 ))
@@ -184,8 +185,9 @@ class _Driver:
                       model.inputs, model.outputs, model.frames):
             for name in names:
                 _identifier(name)  # names enter the text as identifiers: only checked names can
-        for element in (*model.primitives.values(), *model.interfaces.values(), *model.frames.values()):
-            for param in element.params:
+        for params in (*(e.params for e in model.primitives.values()), *(e.params for e in model.interfaces.values()),
+                       *(e.params for e in model.frames.values())):
+            for param in params:
                 _identifier(param.name)
         for adapter in model.adapters.values():
             for field in adapter.fields:
@@ -197,6 +199,7 @@ class _Driver:
         self.cls = _class_name(model.robot.name)
         self.exprs = Compiler()
         taken: set[str] = {"_DEVICE"}
+        self.taken = taken
         self.plan = {
             (kind, name): _constant_name(f"{prefix}_{name}", taken)
             for kind, prefix, names in (("primitive", "P", model.primitives), ("output", "O", model.outputs),
@@ -245,17 +248,17 @@ class _Driver:
                 w.line(f"({targets[0]},) = args" if len(targets) == 1 else f"{', '.join(targets)} = args")
             keyed = returns.startswith("dict")
             opening, closing = ("{", "}") if keyed else ("[", "]")
-            values = []
+            rendered = []
             for key, e, type_ in items:
                 py = self.exprs.bound(e, type_, local) if type_ is not None else self.exprs.expr(e, local)
-                values.append((f"{quoted(key)}: " if keyed else "", py))
-            flat = "return " + opening + ", ".join(prefix + py.text for prefix, py in values) + closing
+                rendered.append((f"{quoted(key)}: " if keyed else "", py))
+            flat = "return " + opening + ", ".join(prefix + py.text for prefix, py in rendered) + closing
             if len(flat) <= w.width() and "\n" not in flat:
                 w.line(flat)
                 return
             w.line(f"return {opening}")
             with w.indented():
-                for prefix, py in values:
+                for prefix, py in rendered:
                     _emit(w, prefix, py, ",")
             w.line(closing)
 
@@ -324,6 +327,7 @@ class _Driver:
 
     def plans(self, w: Writer) -> None:
         model = self.model
+        runs = Description(model).device.inputs  # the engine decides which inputs are written at once
         for frame in model.frames.values():
             w.blank(2)
             self.comment(w, frame.span, f"frame {frame.name}")
@@ -351,10 +355,13 @@ class _Driver:
             params = model.interfaces[i.interface].params
             self.function(w, f"_in_{i.name}", "state: StateValues, args: Args", fields,
                           [("", a, None) for a, _ in zip(i.args, params)], "Args")
+            options = {}
+            if runs[i.name].request is not None:
+                options["request"] = self.request(w, i, fields)
             w.blank(2)
             _construct(w, f"{self.plan['input', i.name]} = ", "Input", [
                 quoted(i.name), quoted(i.adapter), _param_tuple(fields), self.plan["interface", i.interface],
-                f"_in_{i.name}"])
+                f"_in_{i.name}"], options)
         for c in model.connections.values():
             w.blank(2)
             self.connection(w, c)
@@ -367,6 +374,42 @@ class _Driver:
             "ROBOT", f"{{{state}}}", f"{{{by_name['connection']}}}", f"{{{by_name['primitive']}}}",
             f"{{{by_name['interface']}}}", f"{{{by_name['input']}}}"])
         w.line('"""The whole description, planned: what the robot runs."""')
+
+    def request(self, w: Writer, i: m.DomainInput, fields: tuple[m.Parameter, ...]) -> str:
+        """The input's request in one step (the engine's `Input.request`): the input's and the
+        call's expressions one after the other, packed. Returns the function's name."""
+        iface = self.model.interfaces[i.interface]
+        (call,) = iface.calls
+        prim = self.model.primitives[call.primitive]
+        values = _direct(prim, call)
+        assert values is not None and isinstance(prim.encoding, m.Pack)  # as the engine requires
+        pack = _constant_name(f"PACK_{i.name}", self.taken)
+        w.blank(2)
+        w.line(f"{pack} = struct.Struct({quoted(prim.encoding.format)}).pack")
+        local = _params([(f.name, f.type) for f in fields])
+        inner = _params([(prm.name, prm.type) for prm in iface.params], _BODY_NAMES | set(local.values()))
+        used = set().union(*(_names(e) for _, e, _ in values))
+        function = f"_request_{i.name}"
+        w.blank(2)
+        w.line(f"# input {i.name}, written at once")
+        with w.block(f"def {function}(state: StateValues, args: Args) -> bytes | None:"):
+            names = [local[f.name] for f in fields]
+            if names:
+                w.line(f"({names[0]},) = args" if len(names) == 1 else f"{', '.join(names)} = args")
+                checks = " or ".join(f"type({n}) is not {_PY_TYPES[f.type]}" for n, f in zip(names, fields))
+                with w.block(f"if {checks}:"):
+                    w.line("return None")
+            with w.block("try:"):
+                if iface.params:
+                    targets = [inner[prm.name] if prm.name in used else "_" for prm in iface.params]
+                    bound = [self.exprs.bound(a, prm.type, local) for a, prm in zip(i.args, iface.params)]
+                    _items(w, f"{', '.join(targets)} = ", "(", bound, ")" if len(bound) > 1 else "")
+                packed = [self.exprs.bound(e, t, inner) if t is not None else self.exprs.expr(e, inner)
+                          for _, e, t in values]
+                _items(w, "return ", f"{pack}(", packed, ")")
+            with w.block("except Exception:  # noqa: BLE001 - the general way says what is wrong"):
+                w.line("return None")
+        return function
 
     def primitive(self, w: Writer, prim: m.Primitive) -> None:
         self.comment(w, prim.span, f"primitive {prim.name}")
@@ -740,6 +783,24 @@ def _frame_part(part: m.FramePart, index: Mapping[tuple[str, m.Expr], int]) -> s
     _unreachable(part)
 
 
+def _items(w: Writer, prefix: str, opening: str, values: list[Py], closing: str) -> None:
+    """`prefix opening v1, v2 closing` on one line if it fits, else a value a line. Without a
+    closing, one value and no brackets."""
+    if not closing:
+        (value,) = values
+        _emit(w, prefix, value)
+        return
+    flat = f"{prefix}{opening}{', '.join(v.text for v in values)}{closing}"
+    if len(flat) <= w.width() and "\n" not in flat:
+        w.line(flat)
+        return
+    w.line(prefix + opening)
+    with w.indented():
+        for value in values:
+            _emit(w, "", value, ",")
+    w.line(closing)
+
+
 def _emit(w: Writer, prefix: str, value: Py, suffix: str = "") -> None:
     """`prefix value suffix` at the writer's depth, the value broken over lines if it is long
     (an operator chain inside parentheses, so that the break is inside them)."""
@@ -750,21 +811,6 @@ def _emit(w: Writer, prefix: str, value: Py, suffix: str = "") -> None:
     out[0] = prefix + out[0]
     out[-1] += suffix
     w.lines(out)
-
-
-def _value_error(w: Writer, element: str) -> None:
-    """The `except` clause making an evaluation error an RdisValueError naming `element`."""
-    w.line("except _EVAL_ERRORS as err:")
-    w.line(f'    raise RdisValueError(f"{_identifier(element)}: {{err}}") from err')
-
-
-def _section(w: Writer, title: str) -> None:
-    """`# ---- title ----...` to column 100: the parts of the module, as a reader scans them."""
-    w.line(f"# ---- {title} ".ljust(w.width(), "-"))
-
-
-def _a(noun: str) -> str:
-    return f"{'an' if noun[:1].lower() in 'aeiou' else 'a'} {noun}"
 
 
 def _section(w: Writer, title: str) -> None:

@@ -12,8 +12,8 @@ import string
 import struct
 from dataclasses import dataclass
 
-from rdisc.semantics.model import Type
 from rdisc.semantics import regex_shape
+from rdisc.semantics.model import Type
 
 MAX_REPEAT = 4096
 MAX_MESSAGE = 65536  # bytes of one request or reply

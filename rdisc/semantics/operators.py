@@ -146,7 +146,7 @@ def _float(x: Any) -> float:
 
 
 def _clamp(x: Any, lo: Any, hi: Any) -> Any:
-    return lo if x < lo else hi if x > hi else x
+    return lo if x < lo else min(x, hi)
 
 
 def _reason(err: Exception) -> str:

@@ -128,9 +128,9 @@ def test_skip_unmatched_reads_past_frames_that_do_not_match(robot_of) -> None:
 def test_every_byte_read_is_shown_whatever_became_of_it(robot_of) -> None:
     seen: list[tuple[str, str, bytes]] = []
     bad = _frame(1, b"\x06")[:-1] + b"\x00"
-    with robot_of(bad, on_io=lambda *event: seen.append(event)) as robot:
-        with pytest.raises(Exception, match="^strict: ") as raised:  # the engine's, or the driver's copy
-            robot.call_primitive("strict")
+    with robot_of(bad, on_io=lambda *event: seen.append(event)) as robot, \
+            pytest.raises(Exception, match="^strict: ") as raised:  # the engine's, or the driver's copy
+        robot.call_primitive("strict")
     assert type(raised.value).__name__ == "RdisProtocolError"
     assert seen == [("write", "link", _frame(1, b"\x04")), ("read", "link", bad)]
 
@@ -181,6 +181,46 @@ def test_mypy_strict_rejects_a_misspelt_keyword(create, tmp_path) -> None:
         capture_output=True, text=True, check=False, cwd=tmp_path, env={"MYPYPATH": str(folder), "PATH": ""},
     )
     assert [line for line in done.stdout.splitlines() if ": error:" in line] == [
-        f'{script.name}:5: error: Unexpected keyword argument "radus" for "drive" of '
-        '"IrobotCreateInterfaces"; did you mean "radius"?  [call-arg]'
+        (f'{script.name}:5: error: Unexpected keyword argument "radus" for "drive" of '
+         '"IrobotCreateInterfaces"; did you mean "radius"?  [call-arg]'),
     ], done.stdout + done.stderr
+
+
+TABLE_4_3 = [((-0.2, -0.4), "89 ff38 01f4"), ((0.0, 0.0), "89 0000 0000"), ((0.0, 0.2), "89 0000 ffff"),
+             ((0.0, -0.2), "89 0000 0001"), ((0.2, 0.0), "89 00c8 7fff"), ((-0.2, 0.0), "89 ff38 7fff")]
+
+
+@pytest.fixture(scope="module")
+def fast_create(tmp_path_factory: pytest.TempPathFactory) -> dict[str, Any]:
+    """The Create without delays: its set_velocity is written at once."""
+    source = ROOT / "tests" / "runtime" / "data" / "fast_create.rdis"
+    return {"runtime": load(source), "driver": import_driver(source, tmp_path_factory.mktemp("fast"), "fast_create")}
+
+
+@pytest.mark.parametrize("kind", ["runtime", "driver"])
+def test_an_input_written_at_once_behaves_as_the_general_way(fast_create, kind) -> None:
+    """set_velocity is one plain write, so it goes through `Input.request` (the driver's compiled
+    from the expressions, the runtime's composed by the engine). The general way (ints for the
+    float fields) writes the same bytes, and an error found on the quick way is reported by
+    the general way, naming the element at fault."""
+    device = fast_create[kind].device if kind == "runtime" else fast_create[kind]._DEVICE
+    plan = device.inputs["set_velocity"]
+    assert plan.request is not None and plan.primitive is not None and plan.primitive.name == "drive"
+    port = ScriptedPort()
+    robot = fast_create[kind].connect({"btserial": port}, threads=False)
+    try:
+        for (linear, angular), expected in TABLE_4_3:
+            assert plan.request(robot.state, [linear, angular]) == bytes.fromhex(expected)
+            del port.written[:]
+            robot.inputs.set_velocity(linear=linear, angular=angular)  # the quick way
+            robot.inputs.set_velocity(linear=linear, angular=angular if angular else 0)  # an int: the general way
+            assert bytes(port.written) == bytes.fromhex(expected) * 2
+        assert plan.request(robot.state, [1e308, 1e-308]) is None  # linear / angular is too large for a float
+        value_error = engine.RdisValueError if kind == "runtime" else fast_create[kind].RdisValueError
+        with pytest.raises(value_error, match=r"^set_velocity: the result is too large for a float$"):
+            robot.inputs.set_velocity(linear=1e308, angular=1e-308)
+        assert plan.request(robot.state, [True, 0.0]) is None
+        with pytest.raises(TypeError, match=r"^input set_velocity: field linear"):
+            robot.inputs.set_velocity(linear=True, angular=0.0)
+    finally:
+        robot.close()

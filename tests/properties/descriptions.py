@@ -978,7 +978,8 @@ class RegexToken:
 
 _GROUPS = [("(\\d+)", "digits"), ("(-?\\d+)", "signed"), ("([A-Z]+)", "letters"), ("(\\d*)", "maybe_digits"),
            ("(\\w+)", "word"), ("([\\d.]+)", "decimal")]
-_SEPARATORS = [",", ";", ":", "=", "ok", "X", " "]
+_SEPARATORS = [",", ";", ":", "=", "#!", " "]  # none matches a group's characters: each one fences
+# the groups beside it, so that no regex can backtrack without bound (the checker refuses those)
 
 
 @dataclass(frozen=True)
@@ -1011,7 +1012,7 @@ def decodings(draw: Draw, fixed: bool = False, rest: bool | None = None) -> Deco
         return Decoding("unpack", template, types, None if tail else size)
     tokens: list[RegexToken] = []
     for i in range(draw(st.integers(1, 4))):
-        if i % 2 == 0 or draw(st.booleans()):
+        if i % 2 == 0:
             pattern, kind = draw(st.sampled_from(_GROUPS))
             tokens.append(RegexToken(pattern, kind))
         else:

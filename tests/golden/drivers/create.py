@@ -740,23 +740,71 @@ class Interface:
         object.__setattr__(self, "ranged", _ranged(self.params))
 
 
+Request = Callable[[StateValues, Args], bytes | None]
+"""An input's fields' values to its request bytes in one step; None where the general way must decide."""
+
+
 @dataclass(frozen=True, slots=True)
 class Input:
-    """A domain input: its adapter's fields, and the interface's arguments over them."""
+    """A domain input: its adapter's fields, and the interface's arguments over them.
+
+    When its interface is one plain write (`_written_at_once`), `request` goes from the
+    fields' values straight to the bytes: a generated driver gives one compiled from the
+    expressions, else the general way is composed into one here. It returns None for
+    anything but the fields' own types and on any error, and the general way then runs
+    and says what is wrong, so both ways behave alike."""
 
     name: str
     adapter: str
     fields: tuple[Param, ...]
     interface: Interface
     args: Callable[[StateValues, Args], Args]
-    direct: Call | None = field(init=False)  # the interface's one call, run without the interface's walk
+    request: Request | None = None
+    primitive: Primitive | None = field(init=False)  # where `request` goes, when there is one
     kinds: tuple[type, ...] = field(init=False)
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "kinds", tuple(f.kind for f in self.fields))
-        calls = self.interface.calls
-        one = calls[0] if len(calls) == 1 and calls[0].direct and not calls[0].delay else None
-        object.__setattr__(self, "direct", one if not self.interface.ranged else None)
+        call = _written_at_once(self.interface)
+        object.__setattr__(self, "primitive", call.primitive if call is not None else None)
+        request = None if call is None else self.request or _composed(self, call)
+        object.__setattr__(self, "request", request)
+
+
+def _written_at_once(interface: Interface) -> Call | None:
+    """The interface's one call, when running it is only packing its values and writing them:
+    no delay, range, output, frame, reply, post-action or string in the way."""
+    if len(interface.calls) != 1 or interface.ranged or interface.output is not None:
+        return None
+    call = interface.calls[0]
+    prim = call.primitive
+    plain = isinstance(prim.encoder, Pack) and not prim.encoder.strings and not prim.encoder.rest
+    if not call.direct or call.delay or not plain or prim.expects_reply or prim.frame is not None:
+        return None
+    return call if prim.actions is None and prim.table is None and not prim.ranged else None
+
+
+def _composed(plan: Input, call: Call) -> Request:
+    """The general way of an input written at once (`Robot._input`), as one function."""
+    kinds, args_of, floats, values_of = plan.kinds, plan.args, plan.interface.floats, call.args
+    encoder = call.primitive.encoder
+    assert isinstance(encoder, Pack)
+    pack = encoder.struct.pack
+
+    def request(state: StateValues, values: Args) -> bytes | None:
+        for value, kind in zip(values, kinds):
+            if type(value) is not kind:
+                return None
+        try:
+            args = args_of(state, values)
+            for i in floats:
+                if type(args[i]) is int:
+                    args[i] = float(args[i])
+            return pack(*values_of(state, args))
+        except Exception:  # noqa: BLE001 - the general way says what is wrong
+            return None
+
+    return request
 
 
 @dataclass(frozen=True, slots=True)
@@ -1321,31 +1369,21 @@ class Robot:
         """Run an input with its fields' values by position (each made its type here)."""
         if not self._running:
             raise self._not_running()
-        for value, kind in zip(values, plan.kinds):
-            if type(value) is not kind:
-                for i, param in enumerate(plan.fields):
-                    values[i] = _accept(values[i], param.kind, f"input {plan.name}: field {param.name}")
-                break
+        request = plan.request
+        if request is not None:  # one plain write: every command's path
+            data = request(self._state, values)
+            if data is not None:
+                assert plan.primitive is not None
+                self._write(plan.primitive, data)
+                return
+        for i, param in enumerate(plan.fields):
+            if type(values[i]) is not param.kind:
+                values[i] = _accept(values[i], param.kind, f"input {plan.name}: field {param.name}")
         try:
             args = plan.args(self._state, values)
         except EVAL_ERRORS as err:
             raise RdisValueError(f"{plan.name}: {err}") from None
-        call = plan.direct
-        if call is None:
-            self._interface(plan.interface, args)
-            return
-        interface = plan.interface  # run as `_interface` runs it, one call without a delay
-        for i in interface.floats:
-            if type(args[i]) is int:
-                _widen(interface.name, interface.floats, args)
-                break
-        try:
-            values = call.args(self._state, args)
-        except EVAL_ERRORS as err:
-            raise RdisValueError(f"{interface.name}: {err}") from None
-        self._exchange(call.primitive, values, values)
-        if interface.output is not None:
-            self._deliver(interface.output)
+        self._interface(plan.interface, args)
 
     def _call_interface(self, plan: Interface, values: Args) -> None:
         """Run an interface the host called, with its parameters' values by position."""
@@ -1407,6 +1445,23 @@ class Robot:
             raise RdisValueError(f"{plan.name}: {err}") from None
         self._exchange(plan, values, args)
 
+    def _write(self, plan: Primitive, request: bytes) -> None:
+        """Write a request that has no reply under the port's lock, then show the I/O callbacks."""
+        link = self._links.get(plan.connection)
+        if link is None:
+            raise RdisConnectionError(f"{plan.connection}: not open")
+        port = link.port
+        lock = port.lock
+        lock.acquire()  # acquire/release rather than `with`: cheaper, and this is every command's path
+        try:
+            port.io.write(request)
+        except Exception as err:  # whatever the port raises, it failed
+            raise self._port_error(plan, err) from err
+        finally:
+            lock.release()
+        if self._io_callbacks:
+            self._notify_io("write", plan.connection, request)
+
     def _exchange(self, plan: Primitive, values: Args, local: Args) -> None:
         """Encode and frame the request; under the port's lock write it and read the reply;
         then show the I/O callbacks every byte written and read, and run the post-actions.
@@ -1421,25 +1476,17 @@ class Robot:
                 request = use.frame.wrap(request, fields)
             except (struct.error, *EVAL_ERRORS) as err:
                 raise RdisValueError(f"{plan.name}: {err}") from None
+        if not plan.expects_reply:
+            self._write(plan, request)
+            if plan.actions is not None:
+                self._assign(plan, local, ())
+            return
         link = self._links.get(plan.connection)
         if link is None:
             raise RdisConnectionError(f"{plan.connection}: not open")
         port = link.port
         io = port.io
         lock = port.lock
-        if not plan.expects_reply:
-            lock.acquire()  # acquire/release rather than `with`: cheaper, and this is every command's path
-            try:
-                io.write(request)
-            except Exception as err:  # whatever the port raises, it failed
-                raise self._port_error(plan, err) from err
-            finally:
-                lock.release()
-            if self._io_callbacks:
-                self._notify_io("write", plan.connection, request)
-            if plan.actions is not None:
-                self._assign(plan, local, ())
-            return
         reader = port.input
         wait = plan.timeout or self.timeout
         reply: Sequence[Any] = ()
