@@ -80,6 +80,17 @@ reach Python's own functions, attributes or modules."""),
     ("E107", "robot-declaration", """
 A description has exactly one `robot` declaration, in its main file. Imported
 files hold reusable declarations (adapters, primitives, ...) but no robot."""),
+    ("E108", "invalid-ros-name", """
+An adapter's `ros` annotations name a ROS message type and where each field lives
+in it, and the generated ROS node writes them as Python code (an import and
+attribute access), so only what ROS itself allows is accepted. The message type
+is `package/Message`: the package in lower case (letters, digits, `_`), the
+message starting with a capital. A field path is field names joined by `.`
+(letters, digits and `_`, starting with a letter, not a Python keyword), each
+optionally with a list item `[i]` up to [1023], and optionally a final `:yaw`
+(a quaternion read or written as its yaw angle). Wrong: `ros "this/Bool"` with
+`hit: bool ros "__class__.__init__"`. Right: `ros "std_msgs/Bool"` with
+`hit: bool ros "data"`."""),
     # -- structure -----------------------------------------------------------
     ("E201", "arity-mismatch", """
 A call passes a different number of arguments than its target takes: an

@@ -4,7 +4,9 @@ The node is the generated Python driver (`rdisc.emit.python`) with a ROS bridge
 in place of its command line: one subscriber per domain input and one publisher
 per domain output, named after them (so standard ROS remapping renames them),
 the adapters' ROS messages and field paths taken from their `ros` annotations
-(stdlib/adapters.rdis). The semantics are the driver's: one implementation, not
+(stdlib/adapters.rdis). Those are checked names (rdisc.semantics.ros), resolved
+here: the node imports each message module and reads and writes each field by
+name in its own code, and nothing it does at run time looks a name up from text. The semantics are the driver's: one implementation, not
 a third copy. It runs on the system `python3`, where Debian's ROS packages live.
 """
 
@@ -14,133 +16,202 @@ from collections.abc import Mapping
 
 from rdisc.emit.python import to_python
 from rdisc.emit.python_expr import quoted
+from rdisc.emit.writer import Writer
 from rdisc.semantics import model as m
+from rdisc.semantics import ros
 from rdisc.source import SourceFile
 
 _MAIN = 'if __name__ == "__main__":\n    sys.exit(main())\n'
 
-BRIDGE = '''\
+BRIDGE_HELPERS = '''\
 # ---- the ROS 1 bridge (rdisc emit-ros): topics named after the domain inputs and outputs ----------
 
 
-def _ros_type(name: str) -> Any:
-    """The message class a ROS type name ("geometry_msgs/Twist") stands for."""
-    import importlib
+def _ros_check_messages(messages: tuple[tuple[str, str], ...]) -> None:
+    """Refuse to start unless each message is one of a ROS message package here: its
+    package is found (not imported) and holds `msg/_Message.py`, so that the imports
+    that follow load ROS messages and nothing else."""
+    import importlib.util
 
-    package, _, message = name.partition("/")
-    return getattr(importlib.import_module(f"{package}.msg"), message)
-
-
-def _ros_step(message: Any, part: str) -> tuple[Any, str, int | None]:
-    """(the object holding `part`, its field name, its list index or None)."""
-    field, _, rest = part.partition("[")
-    return message, field, int(rest.rstrip("]")) if rest else None
-
-
-def _ros_get(message: Any, path: str) -> Any:
-    """The value at `path` in a ROS message: dotted fields, `[i]` list items, `:yaw` a quaternion's yaw."""
-    path, _, conversion = path.partition(":")
-    for part in path.split("."):
-        _, field, index = _ros_step(message, part)
-        message = getattr(message, field)
-        if index is not None:
-            message = message[index] if index < len(message) else None
-    if conversion == "yaw":
-        q = message
-        return math.atan2(2 * (q.w * q.z + q.x * q.y), 1 - 2 * (q.y * q.y + q.z * q.z))
-    return message
+    for package, message in messages:
+        spec = importlib.util.find_spec(package)
+        places = list(spec.submodule_search_locations or ()) if spec is not None else []
+        if not any(os.path.isfile(os.path.join(place, "msg", f"_{message}.py")) for place in places):
+            raise SystemExit(f"{package}/{message} is not a ROS message here: install its package")
 
 
-def _ros_set(message: Any, path: str, value: Any) -> None:
-    """Put `value` at `path` in a ROS message (as `_ros_get` reads it)."""
-    path, _, conversion = path.partition(":")
-    *parents, last = path.split(".")
-    for part in parents:
-        message = getattr(message, part)
-    if conversion == "yaw":
-        quaternion = getattr(message, last)
-        quaternion.x, quaternion.y = 0.0, 0.0
-        quaternion.z, quaternion.w = math.sin(value / 2), math.cos(value / 2)
-        return
-    _, field, index = _ros_step(message, last)
-    if index is None:
-        setattr(message, field, value)
-        return
-    items = list(getattr(message, field))
-    items.extend([type(value)()] * (index + 1 - len(items)))
-    items[index] = value
-    setattr(message, field, items)
+def _ros_item(items: Any, index: int) -> Any:
+    """A list item of a message, or None past its end."""
+    return items[index] if index < len(items) else None
 
 
-def ros_main() -> int:
-    """Run the robot as a ROS node until ROS shuts it down; the terminate hooks run then."""
-    import importlib
+def _ros_with(items: Any, index: int, value: Any) -> list[Any]:
+    """A message's list with `value` at `index`, grown with empty items of its type as needed."""
+    grown = list(items)
+    grown.extend([type(value)()] * (index + 1 - len(grown)))
+    grown[index] = value
+    return grown
 
-    rospy: Any = importlib.import_module("rospy")  # Debian's python3-rospy: no types to check against
-    String = _ros_type("std_msgs/String")
-    rospy.init_node(ROBOT)
-    ports: dict[str, str] = {}
-    connections = _DEVICE.connections
-    for connection in connections.values():
-        default = connection.address or "/dev/ttyUSB0"
-        name = "~port" if len(connections) == 1 else f"~port_{connection.name}"
-        ports[connection.name] = str(rospy.get_param(name, rospy.get_param("~port", default)))
-    errors = rospy.Publisher("~errors", String, queue_size=10)
-    publishers = {output: rospy.Publisher(output, _ros_type(ros), queue_size=10)
-                  for output, (ros, _fields) in _ROS_OUTPUTS.items()}
 
-    def on_output(message: dict[str, Any]) -> None:
-        ros, fields = _ROS_OUTPUTS[message["name"]]
-        msg = _ros_type(ros)()
-        for name, path in fields:
-            _ros_set(msg, path, message["contents"][name])
-        publishers[message["name"]].publish(msg)
+def _ros_yaw(q: Any) -> float:
+    """The yaw of a quaternion."""
+    return math.atan2(2 * (q.w * q.z + q.x * q.y), 1 - 2 * (q.y * q.y + q.z * q.z))
 
-    def on_error(error: BaseException) -> None:
-        rospy.logerr("%s: %s", type(error).__name__, error)
-        errors.publish(String(data=f"{type(error).__name__}: {error}"))
 
-    def on_io(direction: str, connection: str, data: bytes) -> None:
-        rospy.loginfo("%s %s %s", connection, ">" if direction == "write" else "<", data.hex(" "))
-
-    robot = connect(ports, timeout=float(rospy.get_param("~timeout", 1.0)), on_output=on_output,
-                    on_error=on_error, on_io=on_io if rospy.get_param("~trace", False) else None)
-    rospy.on_shutdown(robot.close)
-
-    def subscriber(name: str, fields: tuple[tuple[str, str], ...]) -> Callable[[Any], None]:
-        def received(msg: Any) -> None:
-            try:
-                robot.call_input(name, **{key: _ros_get(msg, path) for key, path in fields})
-            except Exception as err:  # noqa: BLE001 - reported, and the node keeps serving
-                on_error(err)
-        return received
-
-    for name, (ros, fields) in _ROS_INPUTS.items():
-        rospy.Subscriber(name, _ros_type(ros), subscriber(name, fields), queue_size=10)
-    rospy.spin()
-    return 0'''
+def _ros_set_yaw(q: Any, yaw: float) -> None:
+    """A quaternion set to a rotation of `yaw` about z."""
+    q.x, q.y, q.z, q.w = 0.0, 0.0, math.sin(yaw / 2), math.cos(yaw / 2)'''
 
 
 def to_ros(model: m.Model, source_name: str, *, sources: Mapping[str, SourceFile] | None = None) -> str:
     """The ROS node for `model`: its generated driver, with the bridge as its main program."""
     driver = to_python(model, source_name, sources=sources)
     assert driver.endswith(_MAIN)
-    tables = [_table("_ROS_INPUTS", model, model.inputs.values()),
-              _table("_ROS_OUTPUTS", model, model.outputs.values())]
-    return (driver[: -len(_MAIN)] + "\n".join(tables) + "\n\n" + BRIDGE + "\n\n\n"
+    w = Writer()
+    _Bridge(model).write(w)
+    return (driver[: -len(_MAIN)] + BRIDGE_HELPERS + "\n\n\n" + w.text().lstrip("\n") + "\n\n"
             + 'if __name__ == "__main__":\n    sys.exit(ros_main())\n')
 
 
-def _table(name: str, model: m.Model, elements) -> str:
-    """Each input or output with its adapter's ROS message and each field's path in it."""
-    lines = [f"{name}: dict[str, tuple[str, tuple[tuple[str, str], ...]]] = {{"]
-    for element in elements:
-        adapter = model.adapters[element.adapter]
-        if adapter.ros is None:
-            continue
-        paths = ", ".join(f"({quoted(f.name)}, {quoted(f.ros or f.name)})" for f in adapter.fields)
-        lines.append(f"    {quoted(element.name)}: ({quoted(adapter.ros)}, ({paths},)),")
-    lines.append("}")
-    lines.append(f'"""Each domain {"input" if "INPUTS" in name else "output"}: its ROS message type and, '
-                 'for each field, its path in it."""')
-    return "\n".join(lines) + "\n"
+_IGNORE = "  # type: ignore[import-not-found, import-untyped, unused-ignore]"  # Debian's ROS has no types
+
+
+class _Bridge:
+    """The node's conversions and main, for the inputs and outputs whose adapter names a message."""
+
+    def __init__(self, model: m.Model) -> None:
+        self.model = model
+        self.inputs = [(i, model.adapters[i.adapter]) for i in model.inputs.values()
+                       if model.adapters[i.adapter].ros is not None]
+        self.outputs = [(o, model.adapters[o.adapter]) for o in model.outputs.values()
+                        if model.adapters[o.adapter].ros is not None]
+
+    def message(self, adapter: m.Adapter) -> str:
+        """The message class, as ros_main names it: `geometry_msgs_msg.Twist`."""
+        assert adapter.ros is not None and ros.message_problem(adapter.ros) is None
+        package, _, message = adapter.ros.partition("/")
+        return f"{package}_msg.{message}"
+
+    def write(self, w: Writer) -> None:
+        for i, adapter in self.inputs:
+            w.blank(2)
+            with w.block(f"def _ros_read_{_name(i.name)}(msg: Any) -> dict[str, Any]:"):
+                w.line(f'"""The fields of input {i.name} from a {adapter.ros}."""')
+                items = [f"{quoted(f.name)}: {_read('msg', f.ros or f.name)}" for f in adapter.fields]
+                flat = "return {" + ", ".join(items) + "}"
+                if len(flat) <= w.width():
+                    w.line(flat)
+                else:
+                    w.line("return {")
+                    with w.indented():
+                        w.lines([item + "," for item in items])
+                    w.line("}")
+        for o, adapter in self.outputs:
+            w.blank(2)
+            with w.block(f"def _ros_fill_{_name(o.name)}(msg: Any, contents: dict[str, Any]) -> None:"):
+                w.line(f'"""A {adapter.ros} filled with the fields of output {o.name}."""')
+                for f in adapter.fields:
+                    w.line(_write("msg", f.ros or f.name, f"contents[{quoted(f.name)}]"))
+        w.blank(2)
+        self.main(w)
+
+    def main(self, w: Writer) -> None:
+        adapters = [a for _, a in self.inputs] + [a for _, a in self.outputs]
+        named = [(package, message) for package, _, message in (a.ros.partition("/") for a in adapters if a.ros)]
+        messages = list(dict.fromkeys([*named, ("std_msgs", "String")]))  # as first named; ~errors' last
+        with w.block("def ros_main() -> int:"):
+            w.line('"""Run the robot as a ROS node until ROS shuts it down; the terminate hooks run then."""')
+            w.line("_ros_check_messages((")
+            with w.indented():
+                w.lines([f"({quoted(p)}, {quoted(n)})," for p, n in messages])
+            w.line("))")
+            imports = [f"import {package}.msg as {package}_msg" for package in {p for p, _ in messages}]
+            w.lines([line + _IGNORE for line in sorted([*imports, "import rospy"])])
+            w.blank()
+            w.lines([
+                "rospy.init_node(ROBOT)",
+                "ports: dict[str, str] = {}",
+                "connections = _DEVICE.connections",
+            ])
+            with w.block("for connection in connections.values():"):
+                w.lines([
+                    'default = connection.address or "/dev/ttyUSB0"',
+                    'name = "~port" if len(connections) == 1 else f"~port_{connection.name}"',
+                    'ports[connection.name] = str(rospy.get_param(name, rospy.get_param("~port", default)))',
+                ])
+            w.line('errors = rospy.Publisher("~errors", std_msgs_msg.String, queue_size=10)')
+            w.line("publishers: dict[str, tuple[Any, Any, Callable[[Any, dict[str, Any]], None]]] = {")
+            with w.indented():
+                for o, adapter in self.outputs:
+                    cls = self.message(adapter)
+                    w.line(f"{quoted(o.name)}: (")
+                    with w.indented():
+                        w.lines([f"rospy.Publisher({quoted(o.name)}, {cls}, queue_size=10),", f"{cls},",
+                                 f"_ros_fill_{_name(o.name)},"])
+                    w.line("),")
+            w.line("}")
+            w.blank()
+            with w.block("def on_output(message: dict[str, Any]) -> None:"):
+                w.line('publisher, message_type, fill = publishers[message["name"]]')
+                w.line("msg = message_type()")
+                w.line('fill(msg, message["contents"])')
+                w.line("publisher.publish(msg)")
+            w.blank()
+            with w.block("def on_error(error: BaseException) -> None:"):
+                w.line('rospy.logerr("%s: %s", type(error).__name__, error)')
+                w.line('errors.publish(std_msgs_msg.String(data=f"{type(error).__name__}: {error}"))')
+            w.blank()
+            with w.block("def on_io(direction: str, connection: str, data: bytes) -> None:"):
+                w.line('rospy.loginfo("%s %s %s", connection, ">" if direction == "write" else "<", data.hex(" "))')
+            w.blank()
+            w.lines([
+                'robot = connect(ports, timeout=float(rospy.get_param("~timeout", 1.0)), on_output=on_output,',
+                '                on_error=on_error, on_io=on_io if rospy.get_param("~trace", False) else None)',
+                "rospy.on_shutdown(robot.close)",
+            ])
+            w.blank()
+            with w.block("def subscriber(name: str, read: Callable[[Any], dict[str, Any]]) -> Callable[[Any], None]:"):
+                with w.block("def received(msg: Any) -> None:"):
+                    with w.block("try:"):
+                        w.line("robot.call_input(name, **read(msg))")
+                    with w.block("except Exception as err:  # noqa: BLE001 - reported, and the node keeps serving"):
+                        w.line("on_error(err)")
+                w.line("return received")
+            w.blank()
+            for i, adapter in self.inputs:
+                w.line(f"rospy.Subscriber({quoted(i.name)}, {self.message(adapter)},")
+                w.line(f"                 subscriber({quoted(i.name)}, _ros_read_{_name(i.name)}), queue_size=10)")
+            w.line("rospy.spin()")
+            w.line("return 0")
+
+
+def _name(name: str) -> str:
+    if not name.isidentifier():
+        raise ValueError(f"{name!r} is not a checked name")
+    return name
+
+
+def _read(root: str, path: str) -> str:
+    """Python reading a checked field path from the message `root`."""
+    assert ros.path_problem(path) is None, path
+    steps, conversion = ros.steps(path)
+    text = root
+    for field, index in steps:
+        text = f"{text}.{field}" if index is None else f"_ros_item({text}.{field}, {index})"
+    return f"_ros_yaw({text})" if conversion == "yaw" else text
+
+
+def _write(root: str, path: str, value: str) -> str:
+    """A Python statement putting `value` at a checked field path of the message `root`."""
+    assert ros.path_problem(path) is None, path
+    steps, conversion = ros.steps(path)
+    *parents, (field, index) = steps
+    holder = root
+    for name, item in parents:
+        holder = f"{holder}.{name}" if item is None else f"{holder}.{name}[{item}]"
+    if conversion == "yaw":
+        target = f"{holder}.{field}" if index is None else f"{holder}.{field}[{index}]"
+        return f"_ros_set_yaw({target}, {value})"
+    if index is None:
+        return f"{holder}.{field} = {value}"
+    return f"{holder}.{field} = _ros_with({holder}.{field}, {index}, {value})"

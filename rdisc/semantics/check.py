@@ -9,7 +9,7 @@ returned only when no error was found.
 from __future__ import annotations
 
 from rdisc.diagnostics import Diagnostics, Label, abbreviate
-from rdisc.semantics import formats
+from rdisc.semantics import formats, ros
 from rdisc.semantics import model as m
 from rdisc.semantics.frames import FrameRules, length_range, payload_end_known
 from rdisc.semantics.model import Scope, Type
@@ -262,11 +262,21 @@ class _Checker:
                 )
                 continue
             seen[f.name.text] = f
-            fields.append(m.AdapterField(f.name.text, self.type_name(f.type, "an adapter field"), f.unit, f.ros,
+            path = None
+            if f.ros is not None:
+                problem = ros.path_problem(f.ros.value)
+                if problem is not None:
+                    self.d.report("E108", f.ros.span, problem)
+                path = f.ros.value
+            fields.append(m.AdapterField(f.name.text, self.type_name(f.type, "an adapter field"), f.unit, path,
                                          f.doc))  # type: ignore[arg-type]
-        return m.Adapter(
-            decl.name.text, tuple(fields), decl.ros, id(decl) in self.s.standard, decl.doc, decl.span
-        )
+        message = None
+        if decl.ros is not None:
+            problem = ros.message_problem(decl.ros.value)
+            if problem is not None:
+                self.d.report("E108", decl.ros.span, problem)
+            message = decl.ros.value
+        return m.Adapter(decl.name.text, tuple(fields), message, id(decl) in self.s.standard, decl.doc, decl.span)
 
     def state(self, decl: ast.StateDecl) -> m.StateVariable:
         type_ = self.type_name(decl.type, "a state variable")

@@ -356,7 +356,7 @@ class FieldDecl:
     name: Ident
     type: Ident
     unit: str | None
-    ros: str | None
+    ros: StrLit | None  # a field path in the adapter's ROS message
     span: Span = _span
     doc: str | None = None
 
@@ -364,7 +364,7 @@ class FieldDecl:
 @dataclass(frozen=True, slots=True)
 class AdapterDecl:
     name: Ident
-    ros: str | None
+    ros: StrLit | None  # a ROS message type, "package/Message"
     fields: tuple[FieldDecl, ...]
     span: Span = _span
     doc: str | None = None

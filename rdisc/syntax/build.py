@@ -264,12 +264,12 @@ def _transformer_class():
             return ("priority", c[0])
 
         def adapter_decl(self, meta, c):
-            ros = self.b.string(c[1]).value if c[1] is not None else None
+            ros = self.b.string(c[1]) if c[1] is not None else None
             return ast.AdapterDecl(self.b.ident(c[0]), ros, tuple(c[2:]), self.b.span(meta), self.b.doc(meta))
 
         def field_decl(self, meta, c):
             unit = self.b.string(c[2]).value if c[2] is not None else None
-            ros = self.b.string(c[3]).value if c[3] is not None else None
+            ros = self.b.string(c[3]) if c[3] is not None else None
             return ast.FieldDecl(
                 self.b.ident(c[0]), self.b.ident(c[1]), unit, ros, self.b.span(meta), self.b.doc(meta)
             )

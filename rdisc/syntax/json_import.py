@@ -733,7 +733,7 @@ class _Importer:
         if name is None:
             return None
         self.adapter_fields[name.text] = {f.name.text: f.type.text for f in built}
-        return ast.AdapterDecl(name, _text(ros), built, obj.span, self.doc(m))
+        return ast.AdapterDecl(name, _str_lit(ros), built, obj.span, self.doc(m))
 
     def field(self, obj: JObject) -> ast.FieldDecl | None:
         m = self.members(obj, "an adapter field", _FIELD)
@@ -742,7 +742,7 @@ class _Importer:
         unit, ros = self.string(m.get("unit"), "`unit`"), self.string(m.get("ros"), "`ros`")
         if name is None or type_ is None:
             return None
-        return ast.FieldDecl(name, type_, _text(unit), _text(ros), obj.span, self.doc(m))
+        return ast.FieldDecl(name, type_, _text(unit), _str_lit(ros), obj.span, self.doc(m))
 
     def input(self, obj: JObject) -> ast.InputDecl | None:
         m = self.members(obj, "a domain interface", _INPUT)
@@ -992,6 +992,10 @@ def _present(items: list[Any]) -> tuple[Any, ...]:
 
 def _text(s: JString | None) -> str | None:
     return None if s is None else s.value
+
+
+def _str_lit(s: JString | None) -> ast.StrLit | None:
+    return None if s is None else ast.StrLit(s.value, s.span)
 
 
 def _embedded(value: str) -> bool:

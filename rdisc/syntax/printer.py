@@ -85,7 +85,7 @@ def _code(d: ast.Decl) -> list[str]:
             head = f"interface {name.text}({_params(params)}){words}"
             return _block(head, [line for stmt in body for line in _call_stmt(stmt)])
         case ast.AdapterDecl(name, ros, fields):
-            head = f"adapter {name.text}" + ("" if ros is None else f" ros {p.quote(ros)}")
+            head = f"adapter {name.text}" + ("" if ros is None else f" ros {p.quote(ros.value)}")
             return _block(head, [line for f in fields for line in _doc(f.doc) + [_field(f)]])
         case ast.InputDecl(name, adapter, call):
             return _call_lines(f"input {name.text}: {adapter.text} -> ", call, "", 0)
@@ -213,7 +213,7 @@ def _call_stmt(stmt: ast.CallStmt) -> list[str]:
 
 def _field(f: ast.FieldDecl) -> str:
     unit = "" if f.unit is None else f" unit {p.quote(f.unit)}"
-    ros = "" if f.ros is None else f" ros {p.quote(f.ros)}"
+    ros = "" if f.ros is None else f" ros {p.quote(f.ros.value)}"
     return f"{f.name.text}: {f.type.text}{unit}{ros}"
 
 

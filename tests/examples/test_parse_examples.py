@@ -134,8 +134,8 @@ def test_standard_adapters() -> None:
     assert set(adapters) == set(STANDARD_ADAPTERS)
     for name, (message, fields) in STANDARD_ADAPTERS.items():
         adapter = adapters[name]
-        assert adapter.ros == message, name
-        got = {f.name.text: (f.type.text, f.unit, f.ros) for f in adapter.fields}
+        assert adapter.ros is not None and adapter.ros.value == message, name
+        got = {f.name.text: (f.type.text, f.unit, f.ros.value if f.ros else None) for f in adapter.fields}
         assert got == fields, name
 
 

@@ -308,8 +308,9 @@ declarations = st.one_of(
         doc=docs,
     ),
     st.builds(
-        ast.AdapterDecl, ids, st.none() | strings,
-        st.lists(st.builds(ast.FieldDecl, ids, ids, st.none() | strings, st.none() | strings, doc=docs),
+        ast.AdapterDecl, ids, st.none() | strings.map(ast.StrLit),
+        st.lists(st.builds(ast.FieldDecl, ids, ids, st.none() | strings, st.none() | strings.map(ast.StrLit),
+                           doc=docs),
                  max_size=3).map(tuple),
         doc=docs,
     ),
