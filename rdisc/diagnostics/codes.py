@@ -34,8 +34,9 @@ A backslash escape that RDIS strings do not know. Known escapes are `\\n`, `\\r`
 write as raw strings, where backslashes are kept as written: r"(\\d+),(\\d+)"."""),
     ("E004", "invalid-literal", """
 A number that cannot be read (a decimal integer with leading zeros, a misplaced
-`_`), or one too large to be useful: integers are limited to 64 digits and floats
-must be finite."""),
+`_`), or one too large: integers are limited to 64 bits and a sign (at most
+18446744073709551615, `0xFFFF_FFFF_FFFF_FFFF`, either way), in .rdis and JSON
+alike, and floats must be finite."""),
     ("E005", "too-complex", """
 An expression nested deeper than the limit, or a file larger than the limit.
 Descriptions may come from devices and networks, so rdisc bounds the work any
@@ -167,8 +168,12 @@ The operator or function does not apply to these types: arithmetic needs
 numbers, bitwise operators and shifts need integers, `and`/`or`/`not` and the
 condition of `x if c else y` need booleans."""),
     ("E405", "evaluation-error", """
-A constant expression cannot be evaluated: a division by zero, or a power or
-shift whose result would be enormous."""),
+A constant expression cannot be evaluated: a division by zero, a power, shift or
+product whose result would pass 4096 bits, a float result too large for a float;
+or the value of a constant or a state variable does not fit the integers rdisc
+keeps: 64 bits and a sign. (Inside an expression a result may pass 64 bits, as
+`2 ** 64 - 1` does on its way; what is kept may not.) Wrong: `const MASK = 1 << 64`.
+Right: `const MASK = (1 << 64) - 1`."""),
     # -- frames ----------------------------------------------------------------
     ("E501", "frame-structure", """
 A frame is a sequence of parts: `header`, `literal` and `terminator` bytes,

@@ -237,6 +237,8 @@ class Compiler:
             return self.helper("_concat", [a, b])
         if op == "**":
             return self.helper("_pow", [a, b])
+        if op == "*" and type_ is Type.INT:
+            return self.helper("_imul", [a, b])
         if op == "<<":
             return self.helper("_lshift", [a, b])
         if op in ("==", "!=") and (_bool_constant(left) or _bool_constant(right)):

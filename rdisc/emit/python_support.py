@@ -62,6 +62,13 @@ def _pow(a: Any, b: Any) -> Any:
     if isinstance(result, float):
         return result
     raise ArithmeticError(f"{a} ** {b} has no real value")  # a complex result''',
+    "_imul": '''\
+def _imul(a: int, b: int) -> int:
+    """a * b for ints, bounded: results stay within 4096 bits."""
+    result = a * b
+    if result.bit_length() > 4096:
+        raise ArithmeticError(f"{a} * {b} is too large (results are limited to 4096 bits)")
+    return result''',
     "_lshift": '''\
 def _lshift(a: int, b: int) -> int:
     """a << b, bounded: results stay below 4096 bits."""

@@ -47,6 +47,7 @@ OutputCallback = Callable[[dict[str, Any]], object]
 ErrorCallback = Callable[[BaseException], object]
 IoCallback = Callable[[str, str, bytes], object]
 
+MAX_INT = (1 << 64) - 1  # the largest int a state variable holds (and its negation the smallest)
 MAX_LINE = 4096
 """Bytes of one reply line, terminator included."""
 
@@ -1594,6 +1595,10 @@ class Robot:
                 changes = plan.actions(state, local, reply)
             except EVAL_ERRORS as err:
                 raise RdisValueError(f"{plan.name}: {err}") from None
+            for name, value in changes.items():
+                if type(value) is int and not -MAX_INT <= value <= MAX_INT:
+                    raise RdisValueError(f"{plan.name}: {name} would be a {value.bit_length()}-bit integer; "
+                                         "integers are limited to 64 bits and a sign")
             new = dict(state)
             new.update(changes)
             self._state = new

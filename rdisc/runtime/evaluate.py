@@ -90,7 +90,9 @@ def prepare(expr: m.Expr, slots: Mapping[str, int] | None = None) -> Prepared:
             a, b = prepare(left, slots), prepare(right, slots)
             return lambda s, loc, r: a(s, loc, r) or b(s, loc, r)
         case m.BinaryOp(op=op, left=left, right=right):
-            if op in _CHECKED and left.type in _NUMBERS and right.type in _NUMBERS and _operator(expr) is BINARY[op]:
+            ints = left.type is m.Type.INT and right.type is m.Type.INT
+            if op in _CHECKED and left.type in _NUMBERS and right.type in _NUMBERS and _operator(expr) is BINARY[op] \
+                    and not (op == "*" and ints):  # an int product keeps BINARY's bound
                 return _checked(op, _folded(left), _folded(right), slots)
             return _binary(_operator(expr), left, right, slots)
         case m.IfElse(cond=cond, then=then, orelse=orelse):
@@ -270,7 +272,7 @@ def _clamp(arg: m.Expr, a: Prepared, lo: m.Value, hi: m.Value, slots: Mapping[st
 
 # On two ints these operators of BINARY compute exactly what the plain ones do
 # (their checks are for floats and strings), and a plain one is a C call.
-_PLAIN_ON_INTS = {"+": operator.add, "-": operator.sub, "*": operator.mul}
+_PLAIN_ON_INTS = {"+": operator.add, "-": operator.sub}  # `*` keeps its bound on ints
 
 
 def _operator(expr: m.BinaryOp) -> Callable[[Any, Any], Any]:

@@ -221,12 +221,13 @@ class _Checker:
 
     def constant(self, decl: ast.ConstDecl) -> m.Value | None:
         """A named constant, visible to every expression declared after it."""
-        errors = self.d.error_count
+        errors, failed_reads = self.d.error_count, self.typer.failed_reads
         node = self.typer.expr(decl.value, Env({}, "in a constant", "constants declared before it"))
         value = self.typer.constant(node)
-        if value is None or node.type is None:
-            if self.d.error_count == errors:
+        if value is None or node.type is None or not self.typer.kept(value, decl.value.span):
+            if self.d.error_count == errors and self.typer.failed_reads == failed_reads:
                 self.d.report("E204", decl.value.span, "a constant's value must be a constant expression")
+            self.typer.failed.add(decl.name.text)
             return None
         self.typer.named[decl.name.text] = (node.type, value)
         return value  # type: ignore[return-value]
@@ -288,7 +289,7 @@ class _Checker:
             if value is None:
                 if self.d.error_count == errors:  # not already explained
                     self.d.report("E204", decl.init.span, "an initial value must be a constant")
-            elif type_ is not None and node.type is not None:
+            elif type_ is not None and node.type is not None and self.typer.kept(value, decl.init.span):
                 before = self.d.error_count
                 self.flow(node, type_, decl.init.span, f"state variable `{decl.name.text}`")
                 if self.d.error_count == before:

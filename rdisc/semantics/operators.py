@@ -12,8 +12,10 @@ import operator
 from collections.abc import Callable
 from typing import Any
 
+from rdisc.limits import MAX_INT
+
 MAX_SHIFT = 1024
-MAX_RESULT_BITS = 4096
+MAX_RESULT_BITS = 4096  # of an int result inside an expression (so that no chain of operations can explode)
 MAX_STRING = 1 << 20
 
 
@@ -61,6 +63,18 @@ def _rshift(a: int, b: int) -> int:
     return a >> min(b, MAX_RESULT_BITS + 1)
 
 
+def _mul(a: Any, b: Any) -> Any:
+    result = a * b
+    if type(result) is int and result.bit_length() > MAX_RESULT_BITS:
+        raise EvalError(f"{shown(a)} * {shown(b)} is too large (results are limited to {MAX_RESULT_BITS} bits)")
+    return result
+
+
+def fits(value: Any) -> bool:
+    """Whether a value is within the integers rdisc keeps (64 bits and a sign); non-ints always are."""
+    return type(value) is not int or -MAX_INT <= value <= MAX_INT
+
+
 def _div(a: Any, b: Any) -> float:
     if b == 0:
         raise EvalError("division by zero")
@@ -98,7 +112,7 @@ def _checked_float(f: Callable[..., Any]) -> Callable[..., Any]:
 BINARY: dict[str, Callable[[Any, Any], Any]] = {
     "+": _checked_float(_add),
     "-": _checked_float(operator.sub),
-    "*": _checked_float(operator.mul),
+    "*": _checked_float(_mul),
     "/": _checked_float(_div),
     "//": _floordiv,
     "%": _mod,

@@ -11,10 +11,12 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from rdisc.diagnostics import Diagnostics
+from rdisc.limits import MAX_INT
 from rdisc.semantics import model as m
 from rdisc.semantics.model import Scope, Type
-from rdisc.semantics.operators import BINARY, FUNCTIONS, UNARY, EvalError
+from rdisc.semantics.operators import BINARY, FUNCTIONS, UNARY, EvalError, fits, shown
 from rdisc.semantics.resolve import suggest
+from rdisc.source import Span
 from rdisc.syntax import ast
 
 T = Type | None  # None: unknown, already reported
@@ -84,6 +86,8 @@ class Typer:
         self._constants: dict[int, tuple[m.Expr, object]] = {}
         self.reads: set[str] = set()  # state variables read by any expression
         self.named: dict[str, tuple[Type, object]] = {}  # `const` declarations: (type, value)
+        self.failed: set[str] = set()  # constants whose value has an error already reported
+        self.failed_reads = 0  # reads of those: each one's fault is reported once, at the constant
         self.enums: dict[str, dict[str, int]] = {}  # enumerations: member → value
 
     def constant(self, expr: m.Expr) -> object:
@@ -141,6 +145,9 @@ class Typer:
         if found is None and e.name in self.named:  # a constant, unless a local name hides it
             type_, value = self.named[e.name]
             return self._const(m.Const(value, type_, e.span))  # type: ignore[arg-type]
+        if found is None and e.name in self.failed:
+            self.failed_reads += 1
+            return m.Var(e.name, Scope.STATE, None, e.span)  # type: ignore[arg-type]
         if found is None:
             self.diagnostics.report(
                 "E103",
@@ -357,3 +364,12 @@ class Typer:
             return node
         self._constants[id(node)] = (node, value)
         return node
+
+    def kept(self, value: object, span: Span | None) -> bool:
+        """Whether a constant value fits where it is kept (a constant, a state variable): ints in
+        64 bits and a sign. Inside an expression, results are only bounded so that none explodes."""
+        if fits(value):
+            return True
+        self.diagnostics.report("E405", span, f"{shown(value)} is too large: integers are limited to 64 bits "
+                                f"and a sign ({-MAX_INT}..{MAX_INT})")
+        return False

@@ -7,6 +7,7 @@ import re
 from functools import lru_cache
 
 from rdisc.diagnostics import Diagnostics, abbreviate
+from rdisc.limits import MAX_INT
 from rdisc.source import Span
 from rdisc.syntax import ast
 from rdisc.syntax.precedence import BINARY, COMPARISON, OR, UNARY_OPERATORS
@@ -427,6 +428,10 @@ def _transformer_class():
             span = self.b.span(meta)
             if value is None:
                 self.b.diagnostics.report("E004", span, f"invalid integer literal `{abbreviate(str(c[0]))}`")
+                value = 0
+            elif value > MAX_INT:
+                self.b.diagnostics.report("E004", span, f"integer literal `{abbreviate(str(c[0]))}` is too large: "
+                                          f"integers are limited to 64 bits and a sign (at most {MAX_INT})")
                 value = 0
             return ast.IntLit(value, span)
 

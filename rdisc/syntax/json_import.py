@@ -34,7 +34,8 @@ from dataclasses import dataclass, fields, is_dataclass, replace
 from functools import lru_cache, partial
 from typing import Any
 
-from rdisc.diagnostics import Diagnostics, Label
+from rdisc.diagnostics import Diagnostics, Label, abbreviate
+from rdisc.limits import MAX_INT
 from rdisc.semantics import formats
 from rdisc.source import Span
 from rdisc.syntax import ast
@@ -265,6 +266,10 @@ class _Values:
             self.d.report("E004", span, f"integer with more than {MAX_INT_DIGITS} digits")
             return 0
         value = json.loads(token)
+        if integral and abs(value) > MAX_INT:
+            self.d.report("E004", span, f"integer {abbreviate(token)} is too large: integers are limited to 64 bits "
+                                        f"and a sign (at most {MAX_INT} either way)")
+            return 0
         if not integral and math.isinf(value):
             self.d.report("E004", span, "number too large for a float")
             return 0.0

@@ -821,7 +821,8 @@ def _field_value(draw: Draw, params: tuple[str, ...], fmt: str) -> Expr:
         if shape == 2:
             return Binary(INT, "&", name, Lit(INT, 0x7F))
         if shape == 3:  # as the AX-12's frame refuses an ID above the broadcast ID
-            return IfElse(INT, Binary(BOOL, "<=", name, Lit(INT, min(high, 253))), name, Lit(INT, 1 << 64))
+            refused = Lit(INT, (1 << 64) - 1)  # the largest int: no field's format takes it
+            return IfElse(INT, Binary(BOOL, "<=", name, Lit(INT, min(high, 253))), name, refused)
         return name
     return Lit(INT, draw(st.integers(max(low, -5), min(high, 300))))
 

@@ -233,7 +233,7 @@ _RESERVED = KEYWORDS | set(DECL_KEYWORDS) | {
 names = st.from_regex(r"[A-Za-z][A-Za-z0-9_]{0,6}", fullmatch=True).filter(lambda n: n not in _RESERVED)
 
 leaves = st.one_of(
-    st.integers(0, 10**64 - 1).map(ast.IntLit),
+    st.integers(0, 2**64 - 1).map(ast.IntLit),
     st.floats(min_value=0.0, allow_nan=False, allow_infinity=False).map(lambda x: ast.FloatLit(abs(x))),
     st.text().map(ast.StrLit),
     st.booleans().map(ast.BoolLit),

@@ -1,0 +1,113 @@
+"""Mutation fuzzing of the whole pipeline: figures to read, not a test.
+
+    python benchmarks/fuzz.py                        # 2,000 mutants, seed 1
+    python benchmarks/fuzz.py --count 20000 --seed 7 --jobs 2
+
+Mutants of the examples and test descriptions (tests/properties/mutants.py) go
+through check, the rendered diagnostics, canonical JSON and back, dump, the Python
+driver, the ROS node and the runtime's plans, in worker processes whose address
+space is limited (so that a mutant needing more than --memory MB fails there with
+MemoryError) and whose every mutant has an alarm (--alarm seconds). Printed: how
+many were tried, and the counts of tracebacks (grouped by the place in rdisc they
+came from, each with the smallest reproducer found), of mutants over 5 s of CPU, and
+of mutants over the memory limit. The exit code is 1 when any of the three is not zero.
+"""
+
+from __future__ import annotations
+
+import argparse
+import multiprocessing
+import resource
+import signal
+import sys
+import tempfile
+import time
+from collections import defaultdict
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(ROOT))
+sys.path.insert(0, str(ROOT / "tests" / "properties"))
+
+from mutants import Mutant, finding, mutants, run_pipeline  # noqa: E402
+
+SLOW = 5.0  # seconds of CPU for one mutant
+
+
+class _Alarm(Exception):
+    pass
+
+
+def _on_alarm(signum: int, frame: object) -> None:
+    raise _Alarm
+
+
+def _init(memory_mb: int) -> None:
+    limit = memory_mb * 1024 * 1024
+    resource.setrlimit(resource.RLIMIT_AS, (limit, limit))
+    signal.signal(signal.SIGALRM, _on_alarm)
+
+
+def _try(job: tuple[int, Mutant, int]) -> tuple[int, str | None, float]:
+    """(index, what went wrong or None, CPU seconds)."""
+    index, mutant, alarm = job
+    with tempfile.TemporaryDirectory() as folder:
+        path = Path(folder) / f"mutant{mutant.suffix}"
+        path.write_text(mutant.text, encoding="utf-8", errors="surrogatepass")
+        start = time.process_time()
+        signal.alarm(alarm)
+        try:
+            run_pipeline(path)
+            outcome = None
+        except _Alarm:
+            outcome = "slow"
+        except MemoryError:
+            outcome = "memory"
+        except Exception as err:  # noqa: BLE001 - every one is a finding
+            outcome = finding(err)
+        finally:
+            signal.alarm(0)
+        return index, outcome, time.process_time() - start
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--count", type=int, default=2000)
+    parser.add_argument("--seed", type=int, default=1)
+    parser.add_argument("--jobs", type=int, default=2)
+    parser.add_argument("--memory", type=int, default=1024, help="MB of address space a worker may use")
+    parser.add_argument("--alarm", type=int, default=30, help="seconds before a mutant is given up")
+    args = parser.parse_args()
+    tried = mutants(args.seed, args.count)
+    groups: dict[str, list[int]] = defaultdict(list)
+    slow, memory, slowest = [], [], (0.0, -1)
+    started = time.monotonic()
+    with multiprocessing.Pool(args.jobs, _init, (args.memory + 512,), maxtasksperchild=200) as pool:
+        jobs = [(i, m, args.alarm) for i, m in enumerate(tried)]
+        for index, outcome, cpu in pool.imap_unordered(_try, jobs, chunksize=8):
+            slowest = max(slowest, (cpu, index))
+            if outcome == "slow" or cpu > SLOW:
+                slow.append(index)
+            elif outcome == "memory":
+                memory.append(index)
+            elif outcome is not None:
+                groups[outcome].append(index)
+    took = time.monotonic() - started
+    print(f"mutants tried: {len(tried)} (seed {args.seed}; {sum(m.suffix == '.json' for m in tried)} JSON), "
+          f"{took:.0f} s with {args.jobs} workers")
+    print(f"tracebacks: {sum(len(v) for v in groups.values())} at {len(groups)} places in rdisc")
+    print(f"over {SLOW:g} s of CPU: {len(slow)}; over {args.memory} MB: {len(memory)}")
+    print(f"slowest: {slowest[0]:.2f} s of CPU (mutant {slowest[1]} of {tried[slowest[1]].seed})")
+    for place, indexes in sorted(groups.items(), key=lambda kv: -len(kv[1])):
+        smallest = min(indexes, key=lambda i: len(tried[i].text))
+        print(f"\n{place}: {len(indexes)} mutants; the smallest ({tried[smallest].seed}, "
+              f"{tried[smallest].suffix}):")
+        print(tried[smallest].text[:2000])
+    for label, indexes in (("slow", slow), ("over the memory limit", memory)):
+        for i in indexes[:3]:
+            print(f"\n{label}: mutant {i} of {tried[i].seed}:\n{tried[i].text[:2000]}")
+    return 1 if groups or slow or memory else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

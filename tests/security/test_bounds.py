@@ -1,0 +1,121 @@
+"""Integers have one width everywhere: 64 bits and a sign, in literals, constant folding,
+state and at run time, in the runtime and in generated drivers alike; nothing a
+description does can make a number grow without bound."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+from conftest import run_rdisc
+
+from rdisc import limits
+from rdisc.emit.python import import_driver
+from rdisc.runtime import engine, load
+
+
+def _check(tmp_path: Path, text: str, name: str = "d.rdis"):
+    source = tmp_path / name
+    source.write_text(text, encoding="utf-8")
+    return source, run_rdisc("check", source)
+
+
+def test_the_engine_keeps_the_same_width() -> None:
+    assert engine.MAX_INT == limits.MAX_INT == 2**64 - 1
+
+
+def test_constants_that_grow_are_refused_at_the_first_that_does_not_fit(tmp_path: Path) -> None:
+    """The issue's chain: 2 ** 2000, then 22 squarings (78 s and 4.3 GB before). One error,
+    at the first constant; the ones built on it are not reported again."""
+    lines = ['robot r { author "tests" }', "const A0 = 2 ** 2000"]
+    lines += [f"const A{i} = A{i - 1} * A{i - 1}" for i in range(1, 23)]
+    source, result = _check(tmp_path, "\n".join(lines) + "\n")
+    assert result.returncode == 1
+    assert result.stderr.startswith(
+        "error[E405]: a 2001-bit integer is too large: integers are limited to 64 bits and a sign "
+        "(-18446744073709551615..18446744073709551615)\n"
+        f" --> {source}:2:12\n"), result.stderr
+    assert result.stderr.count("error[") == 1
+
+
+@pytest.mark.parametrize(("text", "message"), [
+    ("const A = 18446744073709551616",
+     ("error[E004]: integer literal `18446744073709551616` is too large: integers are limited to 64 bits and a "
+     "sign (at most 18446744073709551615)")),
+    ("const A = 2 ** 63 * 2  # the value kept: an expression inside may go past it (2 ** 64 - 1 is fine)",
+     ("error[E405]: 18446744073709551616 is too large: integers are limited to 64 bits and a sign "
+     "(-18446744073709551615..18446744073709551615)")),
+    ("const A = -(2 ** 64)",
+     ("error[E405]: -18446744073709551616 is too large: integers are limited to 64 bits and a sign "
+     "(-18446744073709551615..18446744073709551615)")),
+    ("state f: float = 2 ** 1100",
+     ("error[E405]: a 1101-bit integer is too large: integers are limited to 64 bits and a sign "
+     "(-18446744073709551615..18446744073709551615)")),
+])
+def test_literals_and_folded_constants_stay_within_64_bits(tmp_path: Path, text: str, message: str) -> None:
+    _, result = _check(tmp_path, 'robot r { author "tests" }\n' + text + "\n")
+    assert result.returncode == 1
+    assert ("\n" + message + "\n") in ("\n" + result.stderr), result.stderr
+
+
+def test_the_largest_ints_are_kept(tmp_path: Path) -> None:
+    _, result = _check(tmp_path, 'robot r { author "tests" }\nconst A = 18446744073709551615\n'
+                                 "const B = -A\nconst C = 2 ** 64 - 1\nconst D = (1 << 64) - 1\n")
+    assert result.returncode == 0, result.stderr
+
+
+def test_a_json_integer_past_64_bits_is_refused(tmp_path: Path) -> None:
+    source = tmp_path / "d.json"
+    source.write_text('{"name": "r", "constants": {"A": 18446744073709551616}}', encoding="utf-8")
+    result = run_rdisc("check", source)
+    assert result.returncode == 1
+    assert ("error[E004]: integer 18446744073709551616 is too large: integers are limited to 64 bits and a sign "
+            "(at most 18446744073709551615 either way)\n") in result.stderr, result.stderr
+
+
+SQUARING = """\
+robot squaring { author "tests" }
+state x: int = 3
+state y: int = 0
+connection c: serial { baud 9600 }
+primitive square() on c pack "B" (1) { x = x * x }
+primitive tower() on c pack "B" (2) { y = ((((x * x) * (x * x)) * ((x * x) * (x * x))) * (((x * x) * (x * x)) * ((x * x) * (x * x)))) }
+"""
+
+
+class Discard:
+    timeout: float | None = 1.0
+
+    def write(self, data: bytes, /) -> int:
+        return len(data)
+
+    def read(self, size: int = 1, /) -> bytes:
+        return b""
+
+    def reset_input_buffer(self) -> None:
+        pass
+
+    def close(self) -> None:
+        pass
+
+
+@pytest.mark.parametrize("kind", ["runtime", "driver"])
+def test_a_post_action_cannot_grow_a_number_without_bound(tmp_path: Path, kind: str) -> None:
+    """`x = x * x` again and again: the call that would store more than 64 bits is refused
+    with a typed error naming the primitive; the state keeps its last value."""
+    source = tmp_path / "squaring.rdis"
+    source.write_text(SQUARING, encoding="utf-8")
+    implementation = load(source) if kind == "runtime" else import_driver(source, tmp_path, "squaring_driver")
+    value_error = engine.RdisValueError if kind == "runtime" else implementation.RdisValueError
+    with implementation.connect(Discard(), threads=False) as robot:
+        for expected in (9, 81, 6561, 43046721, 1853020188851841, 3433683820292512484657849089281):
+            if expected > limits.MAX_INT:
+                with pytest.raises(value_error, match=r"^square: x would be a 102-bit integer; integers are "
+                                                      r"limited to 64 bits and a sign$"):
+                    robot.call_primitive("square")
+                assert robot.state["x"] == 1853020188851841
+                break
+            robot.call_primitive("square")
+            assert robot.state["x"] == expected
+        with pytest.raises(value_error, match=r"^tower: "):  # 2**16 times the bits of x inside one expression
+            robot.call_primitive("tower")
