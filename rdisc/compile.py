@@ -7,10 +7,12 @@ importer instead of the parser and goes through the same checker.
 
 from __future__ import annotations
 
+import os
+import stat
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from rdisc.diagnostics import Diagnostics
+from rdisc.diagnostics import Diagnostics, abbreviate
 from rdisc.semantics.budget import ConnectionBudget, budget
 from rdisc.semantics.check import check
 from rdisc.semantics.model import Model
@@ -34,11 +36,15 @@ class Compilation:
 def read_text(path: str, diagnostics: Diagnostics, at: Span | None = None) -> str | None:
     """The text of a file, or None with an E006 diagnostic."""
     where = at or Span(path, 0, 0)
-    try:
-        with open(path, "rb") as f:
+    try:  # opened without blocking, and read only if it is a regular file (not a FIFO or a device)
+        fd = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0))
+        with os.fdopen(fd, "rb") as f:
+            if not stat.S_ISREG(os.fstat(f.fileno()).st_mode):
+                diagnostics.report("E006", where, f"cannot read {path}: not a regular file")
+                return None
             data = f.read(MAX_FILE_CHARS * 4 + 1)
-    except OSError as err:
-        diagnostics.report("E006", where, f"cannot read {path}: {err.strerror or err}")
+    except (OSError, ValueError) as err:  # ValueError: a NUL in the name
+        diagnostics.report("E006", where, f"cannot read {path}: {getattr(err, 'strerror', None) or err}")
         return None
     try:
         return data.decode("utf-8")
@@ -114,12 +120,21 @@ def _add_unit(main: ast.Module, is_main: bool, diagnostics: Diagnostics, sources
             if not isinstance(decl, ast.ImportDecl):
                 continue
             target = Path(module.path).parent / decl.path
-            if Path(decl.path).is_absolute() or not decl.path.endswith(".rdis") or not target.resolve().is_relative_to(root):
+            try:
+                resolved = target.resolve()
+                resolved.stat()  # a name too long, or with a NUL, fails here as it would on reading
+            except FileNotFoundError:
+                pass  # reported when it is read, as before
+            except (OSError, RuntimeError, ValueError) as err:  # RuntimeError: a loop of symbolic links
+                diagnostics.report("E007", decl.span, f"cannot import `{abbreviate(decl.path)}`: "
+                                   f"{getattr(err, 'strerror', None) or err}")
+                continue
+            if Path(decl.path).is_absolute() or not decl.path.endswith(".rdis") or not resolved.is_relative_to(root):
                 # A description may come from a device or a network: it reads no other files.
                 diagnostics.report("E007", decl.span, f"cannot import `{decl.path}`",
                                    label="not a relative path to an .rdis file in the description's folder")
                 continue
-            key = str(target.resolve())
+            key = str(resolved)
             if key in seen:
                 continue
             seen.add(key)

@@ -41,4 +41,4 @@ def run(args: argparse.Namespace) -> int:
     show([compilation])
     if module is None:
         return exit_code([compilation]) or EXIT_ERRORS
-    return write(print_module(module), args.output) or exit_code([compilation])
+    return write(print_module(module), args.output, list(sources)) or exit_code([compilation])

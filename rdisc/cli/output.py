@@ -2,8 +2,9 @@
 
 from __future__ import annotations
 
+import os
 import sys
-from collections.abc import Callable
+from collections.abc import Callable, Iterable
 
 from rdisc.compile import Compilation, compile_path
 
@@ -29,11 +30,20 @@ def exit_code(compilations: list[Compilation]) -> int:
     return EXIT_ERRORS if any(c.diagnostics.has_errors() for c in compilations) else EXIT_OK
 
 
-def write(text: str, path: str | None) -> int:
-    """Write a result to a file, or to stdout when no path is given."""
+def write(text: str, path: str | None, inputs: Iterable[str] = ()) -> int:
+    """Write a result to a file, or to stdout when no path is given; never over one of the
+    files it was made from (`inputs`: the description and what it imports)."""
     if path is None or path == "-":
         sys.stdout.write(text)
         return EXIT_OK
+    for source in inputs:
+        try:
+            same = os.path.samefile(path, source)
+        except (OSError, ValueError):  # one of them does not exist (yet): not the same file
+            same = False
+        if same:
+            print(f"rdisc: will not write {path}: it is {source}, which this was made from", file=sys.stderr)
+            return EXIT_USAGE
     try:
         with open(path, "w", encoding="utf-8", newline="\n") as f:
             f.write(text)
@@ -50,4 +60,4 @@ def compile_and_write(path: str, output: str | None, render: Callable[[Compilati
     show([compilation])
     if compilation.model is None or compilation.diagnostics.has_errors():
         return exit_code([compilation]) or EXIT_ERRORS
-    return write(render(compilation), output)
+    return write(render(compilation), output, list(compilation.sources))

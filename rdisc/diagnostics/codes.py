@@ -30,7 +30,8 @@ not closed on the same line. Strings are written in double quotes; a string
 cannot span lines (write `\\n` for a newline)."""),
     ("E003", "invalid-escape", """
 A backslash escape that RDIS strings do not know. Known escapes are `\\n`, `\\r`,
-`\\t`, `\\0`, `\\\\`, `\\"`, `\\xHH` and `\\uHHHH`. Regular expressions are easier to
+`\\t`, `\\0`, `\\\\`, `\\"`, `\\xHH` and `\\uHHHH`; `\\uD800` to `\\uDFFF` are halves of
+surrogate pairs, not characters, and are refused. Regular expressions are easier to
 write as raw strings, where backslashes are kept as written: r"(\\d+),(\\d+)"."""),
     ("E004", "invalid-literal", """
 A number that cannot be read (a decimal integer with leading zeros, a misplaced
@@ -52,7 +53,9 @@ files). `stdlib/adapters.rdis` is always available without import."""),
     ("E008", "invalid-json", """
 A JSON description (`rdisc import`, or `rdisc build` of a .json file) is not
 valid JSON, or does not have the shape of an RDIS description: the message says
-which member is missing or has the wrong kind of value."""),
+which member is missing or has the wrong kind of value. A string escape `\\udXXX`
+that is half of a surrogate pair without its other half is not a character, and
+is refused too."""),
     # -- names ---------------------------------------------------------------
     ("E101", "duplicate-name", """
 Two elements of the same kind have the same name. Names are unique per kind: a

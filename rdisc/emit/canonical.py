@@ -61,7 +61,8 @@ def _object(*members: tuple[str, Any]) -> JsonObject:
 
 def _number(value: float) -> float | int:
     """100.0 is written 100: delays, intervals and rates read as the thesis wrote them."""
-    return int(value) if isinstance(value, float) and value.is_integer() else value
+    exact = isinstance(value, float) and value.is_integer() and abs(value) < 2**53  # an int that is the float
+    return int(value) if exact else value
 
 
 def _state(s: m.StateVariable) -> JsonObject:

@@ -19,6 +19,10 @@ from rdisc.semantics.types import Env, Typer, describe
 from rdisc.source import Span
 from rdisc.syntax import ast
 
+MAX_BAUD = 100_000_000  # bit/s: no serial line is faster
+MAX_FREQUENCY_HZ = 10_000  # ticks a second of a connection's thread
+MAX_DURATION_MS = 3_600_000  # a delay, a timeout or a keepalive interval: an hour
+MAX_PRIORITY = 1_000_000  # either way; priorities only order the calls of one interface
 STANDARD_BAUDS = frozenset(
     (50, 75, 110, 134, 150, 200, 300, 600, 1200, 1800, 2400, 4800, 9600, 14400, 19200, 28800, 38400, 57600,
      76800, 115200, 230400, 250000, 460800, 500000, 576000, 921600, 1000000, 1152000, 1500000, 2000000,
@@ -161,8 +165,10 @@ class _Checker:
         else:
             self.d.report("E401", span, f"{into} takes {describe(target)}, but this is {describe(source)}")
 
-    def setting(self, expr: ast.Expr, what: str) -> float | None:
-        """A numeric setting (baud, Hz, ms, priority): a constant expression."""
+    def setting(self, expr: ast.Expr, what: str, most: float | None = None, unit: str = "",
+                scale: float = 1) -> float | None:
+        """A numeric setting (baud, Hz, ms, priority): a constant expression, times `scale`, at
+        most `most` (every wait and rate is bounded: a huge one would hang or overflow later)."""
         errors = self.d.error_count
         node = self.typer.expr(expr, _NOTHING)
         value = self.typer.constant(node)
@@ -171,7 +177,10 @@ class _Checker:
         if node.type not in (Type.INT, Type.FLOAT) or value is None:
             self.d.report("E204", expr.span, f"{what} must be a constant number")
             return None
-        return value  # type: ignore[return-value]
+        if most is not None and not abs(value) * scale <= most:  # type: ignore[operator]
+            self.d.report("E204", expr.span, f"{what} must be at most {most:g}{unit}")
+            return None
+        return value * scale  # type: ignore[operator, no-any-return]
 
     def once(self, items: list, what: str, where: ast.Ident) -> object | None:
         """The single clause of a kind; a repeat is reported at the repeat."""
@@ -304,7 +313,7 @@ class _Checker:
         baud_clause = self.once([a for a in decl.attrs if isinstance(a, ast.Baud)], "`baud`", name)
         baud: float | None = DEFAULT_BAUD
         if isinstance(baud_clause, ast.Baud):
-            baud = self.setting(baud_clause.value, "the baud rate")
+            baud = self.setting(baud_clause.value, "the baud rate", MAX_BAUD)
             if baud is not None:
                 if baud != int(baud) or baud <= 0:
                     self.d.report("E204", baud_clause.value.span, f"the baud rate must be a positive integer, not {baud:g}")
@@ -317,7 +326,7 @@ class _Checker:
             if threading.model.text != "single":
                 self.d.report("E209", threading.model.span, f"unknown threading model `{threading.model.text}`",
                               help="threading is `single`: one thread per connection")
-            frequency = self.setting(threading.frequency, "the frequency")
+            frequency = self.setting(threading.frequency, "the frequency", MAX_FREQUENCY_HZ, " Hz")
             if frequency is not None and frequency <= 0:
                 self.d.report("E204", threading.frequency.span, f"the frequency must be positive, not {frequency:g} Hz")
         hooks: dict[str, m.HookCall | None] = {}
@@ -356,10 +365,8 @@ class _Checker:
         )
 
     def duration(self, d: ast.Duration, what: str) -> float | None:
-        value = self.setting(d.value, what)
-        if value is None:
-            return None
-        return value * 1000 if d.unit == "s" else value
+        """A duration in ms: at most an hour (a longer one could only hang)."""
+        return self.setting(d.value, what, MAX_DURATION_MS, " ms", 1000 if d.unit == "s" else 1)
 
     def primitive(self, decl: ast.PrimitiveDecl) -> m.Primitive:
         name = decl.name
@@ -525,7 +532,10 @@ class _Checker:
         for part in frame.request + frame.reply:
             if isinstance(part, m.FrameField) and isinstance(part.value, m.Var) and part.value.name in bound:
                 arg, expr = bound[part.value.name]
-                slot = formats.struct_layout(part.format).slots[0]
+                try:
+                    slot = formats.struct_layout(part.format).slots[0]
+                except (formats.TemplateError, IndexError):  # the frame's own check reported it
+                    continue
                 self.fits(self.typer.constant(arg), slot, expr.span, f" of frame `{frame.name}`",
                           f"field `{part.name}` is packed as `{slot.code}`, {slot.low} to {slot.high}")
         has_payload = any(isinstance(p, m.FramePayload) for p in frame.reply)
@@ -682,7 +692,7 @@ class _Checker:
             if delay is not None and delay < 0:
                 self.d.report("E204", delay_clause.span, f"a delay must be zero or more, not {delay:g} ms")  # type: ignore[union-attr]
             priority_expr = self.once(list(stmt.priorities), "`priority`", stmt.call.target)
-            priority = self.setting(priority_expr, "a priority") if priority_expr is not None else 0
+            priority = self.setting(priority_expr, "a priority", MAX_PRIORITY) if priority_expr is not None else 0
             if priority is not None and priority != int(priority):
                 self.d.report("E204", priority_expr.span, "a priority must be an integer")  # type: ignore[union-attr]
             calls.append(m.PrimitiveCall(

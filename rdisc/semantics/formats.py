@@ -61,6 +61,9 @@ def struct_layout(fmt: str) -> StructLayout:
     """The values a struct format packs or unpacks, one slot per value. A final `*`
     stands for the rest of the message: one value of bytes, of any length."""
     fmt, rest = split_rest(fmt)
+    for at, ch in enumerate(fmt):  # struct reads only ASCII (its digits, not `١`), and no line breaks
+        if not ch.isascii() or ch in "\n\r\x0b\x0c":
+            raise TemplateError(f"{ch!r} is not a struct format code (they are ASCII letters and digits)", at)
     if "*" in fmt:
         raise TemplateError("`*` (the rest of the message) comes last", fmt.index("*"))
     order = fmt[:1] if fmt[:1] in "@=<>!" else ""

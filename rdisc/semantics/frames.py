@@ -279,7 +279,10 @@ def payload_end_known(frame: m.Frame, size_known: bool) -> bool:
 
 
 def length_range(part: m.FrameLength) -> tuple[int, int]:
-    """The payload sizes a length field can state."""
-    slot = formats.struct_layout(part.format).slots[0]
+    """The payload sizes a length field can state (none, when its format was refused)."""
+    try:
+        slot = formats.struct_layout(part.format).slots[0]
+    except (formats.TemplateError, IndexError):  # reported where the frame is checked
+        return 0, -1
     return max(0, (slot.low or 0) - part.adjust), (slot.high or 0) - part.adjust
 

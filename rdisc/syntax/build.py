@@ -27,8 +27,9 @@ _SIMPLE_ESCAPES = {"n": "\n", "r": "\r", "t": "\t", "0": "\0", "\\": "\\", '"': 
 
 
 def decode_string(raw: str, report=None) -> str:
-    """The value of a string token (quotes included). `report(offset, length, text)`
-    is called for each unknown escape, with offsets into `raw`."""
+    """The value of a string token (quotes included). `report(offset, length, text, why)`
+    is called for each escape that is not a character (unknown, or half of a surrogate
+    pair, which no text can hold), with offsets into `raw`."""
     if raw.startswith("r"):
         return raw[2:-1]
     body = raw[1:-1]
@@ -40,9 +41,14 @@ def decode_string(raw: str, report=None) -> str:
         if esc in _SIMPLE_ESCAPES:
             return _SIMPLE_ESCAPES[esc]
         if esc[0] in "xu" and len(esc) > 1:
-            return chr(int(esc[1:], 16))
+            code = int(esc[1:], 16)
+            if not 0xD800 <= code <= 0xDFFF:
+                return chr(code)
+            if report is not None:
+                report(1 + m.start(), len(m.group()), m.group(), "is half of a surrogate pair, not a character")
+            return "\ufffd"
         if report is not None:
-            report(1 + m.start(), len(m.group()), m.group())
+            report(1 + m.start(), len(m.group()), m.group(), None)
         return m.group()
 
     return _ESCAPE.sub(replace, body)
@@ -154,8 +160,12 @@ class Builder:
     def string(self, token) -> ast.StrLit:
         span = self.token_span(token)
 
-        def report(offset: int, length: int, text: str) -> None:
+        def report(offset: int, length: int, text: str, why: str | None) -> None:
             at = span.start + offset
+            if why is not None:
+                self.diagnostics.report("E003", Span(self.path, at, at + length), f"the escape `{text}` {why}",
+                                        help="write the character itself, or its escape if it is one")
+                return
             self.diagnostics.report(
                 "E003",
                 Span(self.path, at, at + length),

@@ -235,7 +235,12 @@ class _Values:
         if isinstance(node, lark.Token):
             span = Span(self.path, node.start_pos or 0, node.end_pos or 0)
             if node.type == "STRING":
-                return JString(json.loads(node), str(node), span)
+                text = json.loads(node)
+                if any(0xD800 <= ord(ch) <= 0xDFFF for ch in text):  # a lone surrogate escape: no character
+                    self.d.report("E008", span, "a string holds half of a surrogate pair (`\\udXXX` alone), "
+                                                "which is not a character")
+                    text = "".join("\ufffd" if 0xD800 <= ord(ch) <= 0xDFFF else ch for ch in text)
+                return JString(text, str(node), span)
             if node.type == "NUMBER":
                 return JNumber(self.number(str(node), span), span)
             if node.type == "NULL":
@@ -547,7 +552,12 @@ class _Importer:
         covers = self.array(m.get("covers"), "`covers`")
         here = side.index(obj)
         if len(covers) == 2 and all(isinstance(c, JNumber) for c in covers):
-            first, last = (int(c.value) for c in covers)  # type: ignore[union-attr]
+            first, last = (c.value for c in covers)  # type: ignore[union-attr]
+            if not (first == int(first) and last == int(last) and 0 <= first <= last < here):
+                self.d.report("E008", m["covers"].span, f"`covers` is [first, last], the indexes of two parts before "
+                                                        f"the checksum (0 to {here - 1}), first <= last")
+                first, last = (1 if here > 1 else 0), here - 1
+            first, last = int(first), int(last)
             request = isinstance(m.get("withRequest"), JBool) and m["withRequest"].value
             header = side and side[0] is not None and any(k.value == "header" for k, _ in side[0].members)
             if request or (first, last) != (1 if header else 0, here - 1):

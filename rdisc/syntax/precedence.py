@@ -118,7 +118,7 @@ def literal(value: float | str) -> Printed:  # bool and int included
     if isinstance(value, float) and math.isnan(value):
         return Printed('float("nan")', ATOM)
     magnitude = abs(value)
-    text = 'float("inf")' if math.isinf(magnitude) else repr(magnitude)
+    text = 'float("inf")' if isinstance(magnitude, float) and math.isinf(magnitude) else repr(magnitude)
     negative = math.copysign(1.0, value) < 0 if isinstance(value, float) else value < 0
     return unary("-", Printed(text, ATOM)) if negative else Printed(text, ATOM)
 
