@@ -29,7 +29,7 @@ ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 sys.path.insert(0, str(ROOT / "tests" / "properties"))
 
-from mutants import Mutant, finding, mutants, run_pipeline  # noqa: E402
+from mutants import Mutant, finding, mutants, run_pipeline
 
 SLOW = 5.0  # seconds of CPU for one mutant
 
