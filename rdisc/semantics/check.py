@@ -8,6 +8,8 @@ returned only when no error was found.
 
 from __future__ import annotations
 
+import math
+
 from rdisc.diagnostics import Diagnostics, Label, abbreviate
 from rdisc.semantics import formats, ros
 from rdisc.semantics import model as m
@@ -19,6 +21,7 @@ from rdisc.semantics.types import Env, Typer, describe
 from rdisc.source import Span
 from rdisc.syntax import ast
 
+FLOAT_LIMITS = {"e": 65504.0, "f": 3.4028234663852886e38}  # the largest finite half and single floats
 MAX_BAUD = 100_000_000  # bit/s: no serial line is faster
 MAX_FREQUENCY_HZ = 10_000  # ticks a second of a connection's thread
 MAX_DURATION_MS = 3_600_000  # a delay, a timeout or a keepalive interval: an hour
@@ -616,6 +619,16 @@ class _Checker:
             self.fits(value, slot, expr.span, "", f"`{slot.code}` holds {slot.low} to {slot.high}")
         if slot.code == "c" and isinstance(value, str) and len(value) != 1:
             self.d.report("E403", expr.span, "pack code `c` takes a string of exactly one character")
+        elif slot.code[-1:] in ("s", "p") and isinstance(value, str):
+            size = int(slot.code[:-1] or 1)
+            room = size if slot.code.endswith("s") else min(size - 1, 255)
+            if len(value) > room:
+                self.d.report("E403", expr.span, f"{shown(value)} is {len(value)} characters; `{slot.code}` holds "
+                              f"{room}, and struct would cut the rest")
+        elif slot.code in FLOAT_LIMITS and isinstance(value, (int, float)) and not isinstance(value, bool) \
+                and math.isfinite(value) and abs(value) > FLOAT_LIMITS[slot.code]:
+            self.d.report("E403", expr.span, f"{shown(value)} is too large for pack code `{slot.code}` "
+                          f"(at most {FLOAT_LIMITS[slot.code]:g})")
 
     def format_value(self, arg: m.Expr, expr: ast.Expr, field: formats.FormatField) -> None:
         if arg.type is None or formats.spec_accepts(field.spec, arg.type):

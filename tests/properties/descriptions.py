@@ -1397,6 +1397,14 @@ def _request(draw: Draw, params: tuple[Param, ...], scope: Scope,
                 low, high = ranges[value.name]
                 value = value if low <= r[1] and high >= r[0] else Lit(INT, 0)
             value = fitting(draw, value, lambda v, r=r: isinstance(v, int) and r[0] <= v <= r[1], INT, r[0], min(r[1], 300))
+        elif slot.code.endswith("s") and value.const:  # a constant string no longer than its code holds
+            room = int(slot.code[:-1] or 1)
+            try:
+                text = constant_value(value)
+            except Unknown:
+                text = ""
+            if not isinstance(text, str) or len(text) > room:
+                value = Lit(STRING, "x" * room)
         args.append(value)
     rest = [p for p in params if p.type == BYTES]
     if rest and draw(st.integers(0, 3)):

@@ -18,7 +18,7 @@ def parsed(text: str) -> tuple[ast.Module, Diagnostics]:
 
 
 def rendered(text: str) -> str:
-    module, diagnostics = parsed(text)
+    _module, diagnostics = parsed(text)
     sources = Sources()
     sources.add("t.rdis", text)
     return render_plain(diagnostics.sorted(), sources)

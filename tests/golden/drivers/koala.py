@@ -553,16 +553,32 @@ def _latin1(owner: str, value: object) -> bytes:
         raise RdisValueError(f"{owner}: {err.object[err.start:err.end]!r} is not a latin-1 character") from None
 
 
+def _string_sizes(fmt: str) -> dict[int, int]:
+    """The most bytes each `s` or `p` value of a struct format holds, by the value's position."""
+    sizes: dict[int, int] = {}
+    at = 0
+    for count, code in re.findall(r"(\d*)([a-zA-Z?])", fmt):
+        n = int(count) if count else 1
+        if code in "sp":
+            sizes[at] = n if code == "s" else max(0, min(n - 1, 255))
+            at += 1
+        elif code != "x":
+            at += n
+    return sizes
+
+
 class Pack:
     """A request packed with a struct format: the values at `strings` as latin-1 bytes
-    and, with `rest` (a format ending in `*`), the last value, bytes, appended as it is."""
+    (refused when longer than their `Ns` holds: struct would cut them short) and, with
+    `rest` (a format ending in `*`), the last value, bytes, appended as it is."""
 
-    __slots__ = ("rest", "strings", "struct")
+    __slots__ = ("rest", "sizes", "strings", "struct")
 
     def __init__(self, fixed: str, strings: tuple[int, ...] = (), rest: bool = False) -> None:
         self.struct = struct.Struct(fixed)
         self.strings = strings
         self.rest = rest
+        self.sizes = _string_sizes(fixed)
 
     def encode(self, owner: str, values: Sequence[Value]) -> bytes:
         try:
@@ -570,7 +586,10 @@ class Pack:
                 return self.struct.pack(*values)
             packed = list(values[:-1] if self.rest else values)
             for i in self.strings:
-                packed[i] = _latin1(owner, packed[i])
+                packed[i] = data = _latin1(owner, packed[i])
+                if len(data) > self.sizes.get(i, len(data)):
+                    raise RdisValueError(f"{owner}: {len(data)} bytes of text do not fit the {self.sizes[i]} "
+                                         f"that value {i} is packed in")
             fixed = self.struct.pack(*packed)
         except (struct.error, OverflowError) as err:  # OverflowError: a float too large for `e` or `f`
             raise RdisValueError(f"{owner}: {err}") from None
