@@ -146,23 +146,50 @@ def _excerpt(marks: list[_Mark], sources: Sources, width: int, style: str) -> li
     source = sources[marks[0].span.path]
     lines: list[_Line] = []
     previous: int | None = None
+    cut = 0
     for mark in marks:
         start = source.position(mark.span.start)
         text = source.line_text(start.line)
         if start.line != previous:
             if previous is not None and start.line > previous + 1:
                 lines.append([("...", _GUTTER)])
+            cut = _cut(text, start.column)
+            text = _window(text, cut)
             shown = " " + text.replace("\t", _TAB) if text else ""
             lines.append([(f"{start.line + 1:>{width}} |", _GUTTER), (shown, "")])
             previous = start.line
+        else:
+            text = _window(text, cut)
         end = source.position(mark.span.end)
-        stop = end.column if end.line == start.line else len(text)
-        carets = mark.char * max(1, _width(text[start.column : stop]))
+        stop = end.column if end.line == start.line else len(text) + cut
+        column = max(0, start.column - cut)
+        stop = max(column, min(stop - cut, len(text)))
+        carets = mark.char * max(1, _width(text[column:stop]))
         mark_style = style if mark.char == "^" else _GUTTER
-        row: _Line = [(" " * width + " |", _GUTTER), (" " + " " * _width(text[: start.column]), "")]
+        row: _Line = [(" " * width + " |", _GUTTER), (" " + " " * _width(text[:column]), "")]
         row.append((carets + (f" {mark.message}" if mark.message else ""), mark_style))
         lines.append(row)
     return lines
+
+
+_EXCERPT = 160  # columns of a long line shown around its mark
+
+
+def _cut(text: str, column: int) -> int:
+    """Where a long line's window starts (less one, for the `…` that stands for what is cut)."""
+    if len(text) <= _EXCERPT:
+        return 0
+    begin = max(0, min(column - 40, len(text) - _EXCERPT))
+    return begin - 1 if begin else 0
+
+
+def _window(text: str, cut: int) -> str:
+    """A long line cut to the window that starts after `cut` characters, `…` where it is cut."""
+    if len(text) <= _EXCERPT:
+        return text
+    head = "…" if cut else ""
+    body = text[cut + len(head): cut + len(head) + _EXCERPT]
+    return head + body + ("…" if cut + len(head) + _EXCERPT < len(text) else "")
 
 
 def _width(text: str) -> int:

@@ -21,6 +21,11 @@ from rdisc.syntax.errors import describe_unexpected
 MAX_FILE_CHARS = 8 * 1024 * 1024
 MAX_TREE_DEPTH = 120  # of Lark's tree; expressions are bounded by MAX_EXPR_DEPTH
 MAX_SYNTAX_ERRORS = 100
+MAX_LINE_CHARS = 65536  # of one line, and so of a string literal (strings do not span lines)
+MAX_DECL_TOKENS = 20000  # of one declaration: more is not a description a person wrote
+# The tokens of RDIS, roughly (a string is cut at an escaped quote): enough to count them in linear time.
+_TOKEN = re.compile(r'r?"[^"\n]*"?|[A-Za-z_][A-Za-z0-9_]*|\d[\w.]*|#[^\n]*|\S')
+_LONG_LINE = re.compile(rf"[^\n]{{{MAX_LINE_CHARS + 1},}}")
 
 DECL_KEYWORDS = (
     "import",
@@ -78,6 +83,11 @@ def parse(path: str, text: str, diagnostics: Diagnostics) -> ast.Module:
     bounds = _chunks(text)
     for i, (start, end) in enumerate(bounds):
         chunk = text[start:end]
+        too_long = _too_long(path, chunk, start)
+        if too_long is not None:  # refused before the parser, whose time and memory would grow with it
+            diagnostics.report("E005", *too_long)
+            damaged.extend(_damaged(path, chunk, start))
+            continue
         try:
             tree = parser().parse(chunk, start="start", on_error=_keyword_as_name)
         except lark.exceptions.UnexpectedInput as err:
@@ -156,6 +166,20 @@ def parse_expression(path: str, text: str, base_offset: int, diagnostics: Diagno
                 raise
             too_deep = err.orig_exc.span
     diagnostics.report("E005", too_deep, f"expression is nested too deeply (the limit is {MAX_EXPR_DEPTH} levels)")
+    return None
+
+
+def _too_long(path: str, chunk: str, start: int) -> tuple[Span, str] | None:
+    """Where and why a declaration is too long to parse: a line over the limit (a string
+    literal is on one line), or more tokens than a declaration may have."""
+    long_line = _LONG_LINE.search(chunk)
+    if long_line is not None:
+        return (Span(path, start + long_line.start(), start + long_line.end()),
+                f"line of {len(long_line.group())} characters; the limit is {MAX_LINE_CHARS}")
+    for count, _ in enumerate(_TOKEN.finditer(chunk), 1):
+        if count > MAX_DECL_TOKENS:
+            return (Span(path, start, start + len(chunk)),
+                    f"declaration has more than {MAX_DECL_TOKENS} tokens; split it, or make it simpler")
     return None
 
 

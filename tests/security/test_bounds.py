@@ -119,3 +119,24 @@ def test_a_post_action_cannot_grow_a_number_without_bound(tmp_path: Path, kind: 
             assert robot.state["x"] == expected
         with pytest.raises(value_error, match=r"^tower: "):  # 2**16 times the bits of x inside one expression
             robot.call_primitive("tower")
+
+
+def test_a_line_past_the_limit_is_refused_before_parsing(tmp_path: Path) -> None:
+    """The issue's 8 MB string literal (29 s and 3.4 GB before): refused at the line, which the
+    parser never sees; so is a chain of a million `+` on one line."""
+    text = 'robot r { author "tests" }\nconst S = "' + "a" * 100_000 + '"\nconst T = ' + " + ".join(["1"] * 30_000)
+    _source, result = _check(tmp_path, text + "\n")
+    assert result.returncode == 1
+    errors = [line for line in result.stderr.splitlines() if line.startswith("error[")]
+    assert errors == ["error[E005]: line of 100012 characters; the limit is 65536",
+                      "error[E005]: line of 120007 characters; the limit is 65536"], result.stderr[:2000]
+    assert max(len(line) for line in result.stderr.splitlines()) < 300  # the excerpt shows a window of the line
+
+
+def test_a_declaration_of_too_many_tokens_is_refused_before_parsing(tmp_path: Path) -> None:
+    text = 'robot r { author "tests" }\nconst T = 0\n' + "".join("    + 1\n" for _ in range(12_000))
+    source, result = _check(tmp_path, text)
+    assert result.returncode == 1
+    assert result.stderr.startswith(
+        "error[E005]: declaration has more than 20000 tokens; split it, or make it simpler\n"
+        f" --> {source}:2:1\n"), result.stderr[:2000]
