@@ -34,11 +34,25 @@ CATALOGUE: dict[str, tuple[int, int, int, bool, int]] = {
     "crc16-x25": (16, 0x1021, 0xFFFF, True, 0xFFFF),
     "crc32": (32, 0x04C11DB7, 0xFFFFFFFF, True, 0xFFFFFFFF),
     "crc32c": (32, 0x1EDC6F41, 0xFFFFFFFF, True, 0xFFFFFFFF),
+    "crc8-rohc": (8, 0x07, 0xFF, True, 0x00),
+    "crc8-cdma2000": (8, 0x9B, 0xFF, False, 0x00),
+    "crc8-wcdma": (8, 0x9B, 0x00, True, 0x00),
+    "crc16-buypass": (16, 0x8005, 0x0000, False, 0x0000),
+    "crc16-dnp": (16, 0x3D65, 0x0000, True, 0xFFFF),
+    "crc16-maxim": (16, 0x8005, 0x0000, True, 0xFFFF),
+    "crc16-usb": (16, 0x8005, 0xFFFF, True, 0xFFFF),
+    "crc16-genibus": (16, 0x1021, 0xFFFF, False, 0xFFFF),
+    "crc32-bzip2": (32, 0x04C11DB7, 0xFFFFFFFF, False, 0xFFFFFFFF),
+    "crc32-mpeg-2": (32, 0x04C11DB7, 0xFFFFFFFF, False, 0x00000000),
+    "crc32-posix": (32, 0x04C11DB7, 0x00000000, False, 0xFFFFFFFF),
+    "crc32-jamcrc": (32, 0x04C11DB7, 0xFFFFFFFF, True, 0x00000000),
 }
 _ALIASES = {
     "crc8-smbus": "crc8", "crc8-maxim-dow": "crc8-maxim", "crc16-ibm-3740": "crc16-ccitt-false",
     "crc16-autosar": "crc16-ccitt-false", "crc16-ccitt": "crc16-kermit", "crc16-ibm-sdlc": "crc16-x25",
     "crc16": "crc16-arc", "crc32-iso-hdlc": "crc32", "crc32-iscsi": "crc32c",
+    "crc16-umts": "crc16-buypass", "crc16-verifone": "crc16-buypass", "crc16-maxim-dow": "crc16-maxim",
+    "crc32-cksum": "crc32-posix",
 }
 ALGORITHMS = ("sum", "xor", "crc", *CATALOGUE)
 _PART_WORDS = frozenset(["header", "literal", "terminator", "length", "payload", "request"])
@@ -225,7 +239,7 @@ class FrameRules:
                                             name=name)
         else:
             d.report("E502", part.algorithm.span, f"unknown checksum algorithm \"{abbreviate(name)}\"",
-                     help=suggest(key, ALGORITHMS) or 'algorithms: "sum", "xor", "crc" and catalogue CRCs')
+                     help=_algorithm_hint(key))
             algorithm = m.ChecksumAlgorithm("sum", 8, name=name)
         if size_bits is not None and algorithm.width > size_bits:
             d.report("E502", part.format.span,  # type: ignore[union-attr]
@@ -276,6 +290,30 @@ def payload_end_known(frame: m.Frame, size_known: bool) -> bool:
     if at is None or size_known or any(isinstance(p, m.FrameLength) for p in reply):
         return True
     return at + 1 < len(reply) and isinstance(reply[at + 1], m.FrameBytes)
+
+
+def _algorithm_hint(name: str) -> str:
+    """A hint for an unknown algorithm: a known name only when this one is a slip of it (one
+    character changed, added, dropped or swapped). A CRC merely near in spelling is another
+    CRC: following such a hint would corrupt every packet, so none is offered then."""
+    known = [*ALGORITHMS, *_ALIASES]
+    slips = [k for k in known if _one_slip(name, k)]
+    if len(slips) == 1:
+        return f"did you mean `{slips[0]}`?"
+    return ('algorithms: "sum", "xor", "crc" (with its parameters: width, poly, init, ...) and the catalogue CRCs: '
+            + ", ".join(CATALOGUE))
+
+
+def _one_slip(a: str, b: str) -> bool:
+    """Whether `a` is `b` with one character changed, added or dropped, or two neighbours swapped."""
+    if a == b or abs(len(a) - len(b)) > 1:
+        return False
+    if len(a) == len(b):
+        diff = [i for i, (x, y) in enumerate(zip(a, b)) if x != y]
+        return len(diff) == 1 or (len(diff) == 2 and diff[1] == diff[0] + 1 and a[diff[0]] == b[diff[1]]
+                                  and a[diff[1]] == b[diff[0]])
+    short, long_ = (a, b) if len(a) < len(b) else (b, a)
+    return any(long_[:i] + long_[i + 1:] == short for i in range(len(long_)))
 
 
 def length_range(part: m.FrameLength) -> tuple[int, int]:

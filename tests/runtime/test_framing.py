@@ -26,7 +26,10 @@ from tests.runtime.runtime_support import MemoryPort
 CHECK_VALUES = {
     "crc8": 0xF4, "crc8-maxim": 0xA1, "crc8-dvb-s2": 0xBC, "crc16-xmodem": 0x31C3, "crc16-ccitt-false": 0x29B1,
     "crc16-kermit": 0x2189, "crc16-modbus": 0x4B37, "crc16-arc": 0xBB3D, "crc16-x25": 0x906E,
-    "crc32": 0xCBF43926, "crc32c": 0xE3069283,
+    "crc32": 0xCBF43926, "crc32c": 0xE3069283, "crc8-rohc": 0xD0, "crc8-cdma2000": 0xDA, "crc8-wcdma": 0x25,
+    "crc16-buypass": 0xFEE8, "crc16-dnp": 0xEA82, "crc16-maxim": 0x44C2, "crc16-usb": 0xB4C8,
+    "crc16-genibus": 0xD64E, "crc32-bzip2": 0xFC891918, "crc32-mpeg-2": 0x0376E6E7, "crc32-posix": 0x765E7680,
+    "crc32-jamcrc": 0x340BC6D9,
 }
 
 
