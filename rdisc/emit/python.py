@@ -447,6 +447,10 @@ class _Driver:
                 self.function(w, own["actions"], f"{signature}, reply: Sequence[Any]", prim.params,
                               [(a.target, a.value, states[a.target].type) for a in case.actions],
                               "dict[str, Value]")
+                checked = [quoted(a.target) for a in case.actions
+                           if states[a.target].type is Type.INT and m.may_outgrow(a.value)]
+                if checked:
+                    own["checked"] = _tuple(checked)
             w.blank(2)
             if entry is not None:
                 w.line(f"# reply {entry.value}")

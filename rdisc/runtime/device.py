@@ -102,6 +102,8 @@ class Description:
         if p.actions:
             prepared = [(a.target, prepare(a.value, slots), self.model.states[a.target].type) for a in p.actions]
             actions = lambda s, loc, r: {t: coerce(f(s, loc, r), type_) for t, f, type_ in prepared}
+        checked = tuple(a.target for a in p.actions
+                        if self.model.states[a.target].type is m.Type.INT and m.may_outgrow(a.value))
         frame = None
         if p.frame is not None:
             model_frame = self.model.frames[p.frame.frame]
@@ -111,7 +113,7 @@ class Description:
         return engine.Primitive(
             p.name, p.connection, _params(p.params), _values([prepare(a, slots) for a in p.args]),
             encoder(p.encoding), decoder(p.decoding), actions, frame, p.skip_unmatched,
-            None if p.timeout_ms is None else p.timeout_ms / 1000.0,
+            None if p.timeout_ms is None else p.timeout_ms / 1000.0, checked=checked,
         )
 
     def _output(self, o: m.DomainOutput) -> engine.Output:

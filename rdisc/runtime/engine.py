@@ -704,6 +704,7 @@ class Primitive:
     table: Mapping[int, Primitive] | None = None  # a reply table: the plan for each key or tag
     key: int = -1  # the position of the parameter that chooses from `table` (-1: the reply's tag does)
     tag: str | None = None  # the struct format of the tag that starts the reply
+    checked: tuple[str, ...] = ()  # state variables its post-actions may make too wide (checked as they are set)
     expects_reply: bool = field(init=False)
     framed_reply: bool = field(init=False)
     floats: tuple[int, ...] = field(init=False)
@@ -1614,7 +1615,8 @@ class Robot:
                 changes = plan.actions(state, local, reply)
             except EVAL_ERRORS as err:
                 raise RdisValueError(f"{plan.name}: {err}") from None
-            for name, value in changes.items():
+            for name in plan.checked:
+                value = changes[name]
                 if type(value) is int and not -MAX_INT <= value <= MAX_INT:
                     raise RdisValueError(f"{plan.name}: {name} would be a {value.bit_length()}-bit integer; "
                                          "integers are limited to 64 bits and a sign")

@@ -211,6 +211,31 @@ class PostAction:
     span: Span | None = _span
 
 
+_KEEPING_WIDTH = frozenset({"&", "|", "^", ">>", "==", "!=", "<", "<=", ">", ">=", "and", "or"})
+
+
+def may_outgrow(e: Expr) -> bool:
+    """Whether an int expression may pass the 64 bits (and a sign) that state keeps: not when
+    it is made of reply values, constants and state by operators that keep the width (`&`,
+    `>>`, comparisons, ...), so the run-time check is left out where it cannot fail."""
+    match e:
+        case Const() | ReplyValue():
+            return False
+        case Var(scope=scope):
+            return scope is not Scope.STATE  # a parameter is what the host gave: any int
+        case UnaryOp(operand=operand):
+            return may_outgrow(operand)
+        case BinaryOp(op=op, left=left, right=right) if op in _KEEPING_WIDTH:
+            return may_outgrow(left) or may_outgrow(right)
+        case IfElse(then=then, orelse=orelse):
+            return may_outgrow(then) or may_outgrow(orelse)
+        case FuncCall(func="abs" | "min" | "max" | "clamp", args=args):
+            return any(may_outgrow(a) for a in args)
+        case FuncCall(func="len" | "byte" | "bool"):
+            return False
+    return True
+
+
 # ---- frames: the bytes around a payload ---------------------------------------------
 
 

@@ -707,6 +707,7 @@ class Primitive:
     table: Mapping[int, Primitive] | None = None  # a reply table: the plan for each key or tag
     key: int = -1  # the position of the parameter that chooses from `table` (-1: the reply's tag does)
     tag: str | None = None  # the struct format of the tag that starts the reply
+    checked: tuple[str, ...] = ()  # state variables its post-actions may make too wide (checked as they are set)
     expects_reply: bool = field(init=False)
     framed_reply: bool = field(init=False)
     floats: tuple[int, ...] = field(init=False)
@@ -1617,7 +1618,8 @@ class Robot:
                 changes = plan.actions(state, local, reply)
             except EVAL_ERRORS as err:
                 raise RdisValueError(f"{plan.name}: {err}") from None
-            for name, value in changes.items():
+            for name in plan.checked:
+                value = changes[name]
                 if type(value) is int and not -MAX_INT <= value <= MAX_INT:
                     raise RdisValueError(f"{plan.name}: {name} would be a {value.bit_length()}-bit integer; "
                                          "integers are limited to 64 bits and a sign")
@@ -1953,6 +1955,7 @@ _P_READ_SPEED = Primitive(
     Format("E\n"),
     decoder=Match("^e,(-?\\d+),(-?\\d+)\\s*$"),
     actions=_p_read_speed_actions,
+    checked=("leftSpeed", "rightSpeed"),
 )
 
 
@@ -1975,6 +1978,7 @@ _P_SET_POSITION = Primitive(
     Format("G,{},{}\n"),
     decoder=Match("^g\\s*$"),
     actions=_p_set_position_actions,
+    checked=("leftCount", "rightCount"),
 )
 
 
@@ -2080,6 +2084,7 @@ _P_READ_POSITION = Primitive(
     Format("H\n"),
     decoder=Match("^h,(-?\\d+),(-?\\d+)\\s*$"),
     actions=_p_read_position_actions,
+    checked=("leftCount", "rightCount"),
 )
 
 
@@ -2123,6 +2128,7 @@ _P_READ_PROXIMITY = Primitive(
     Format("N\n"),
     decoder=Match("^n,(\\d+),(\\d+),(\\d+),(\\d+),(\\d+),(\\d+),(\\d+),(\\d+),(\\d+),(\\d+),(\\d+),(\\d+),(\\d+),(\\d+),(\\d+),(\\d+)\\s*$"),
     actions=_p_read_proximity_actions,
+    checked=("proximity",),
 )
 
 
