@@ -8,6 +8,7 @@ from pathlib import Path
 
 import pytest
 from conftest import run_rdisc
+from silent_port import SilentPort
 
 from rdisc import limits
 from rdisc.emit.python import import_driver
@@ -83,22 +84,6 @@ primitive tower() on c pack "B" (2) { y = ((((x * x) * (x * x)) * ((x * x) * (x 
 """
 
 
-class Discard:
-    timeout: float | None = 1.0
-
-    def write(self, data: bytes, /) -> int:
-        return len(data)
-
-    def read(self, size: int = 1, /) -> bytes:
-        return b""
-
-    def reset_input_buffer(self) -> None:
-        pass
-
-    def close(self) -> None:
-        pass
-
-
 @pytest.mark.parametrize("kind", ["runtime", "driver"])
 def test_a_post_action_cannot_grow_a_number_without_bound(tmp_path: Path, kind: str) -> None:
     """`x = x * x` again and again: the call that would store more than 64 bits is refused
@@ -107,7 +92,7 @@ def test_a_post_action_cannot_grow_a_number_without_bound(tmp_path: Path, kind: 
     source.write_text(SQUARING, encoding="utf-8")
     implementation = load(source) if kind == "runtime" else import_driver(source, tmp_path, "squaring_driver")
     value_error = engine.RdisValueError if kind == "runtime" else implementation.RdisValueError
-    with implementation.connect(Discard(), threads=False) as robot:
+    with implementation.connect(SilentPort(), threads=False) as robot:
         for expected in (9, 81, 6561, 43046721, 1853020188851841, 3433683820292512484657849089281):
             if expected > limits.MAX_INT:
                 with pytest.raises(value_error, match=r"^square: x would be a 102-bit integer; integers are "

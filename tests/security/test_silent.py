@@ -8,6 +8,7 @@ from pathlib import Path
 
 import pytest
 from conftest import run_rdisc
+from silent_port import SilentPort
 
 from rdisc.emit.python import import_driver
 from rdisc.runtime import engine, load
@@ -29,33 +30,13 @@ def test_a_constant_that_does_not_fit_is_a_diagnostic(tmp_path: Path, primitive:
     assert result.stderr.startswith(message + "\n"), result.stderr
 
 
-class Port:
-    timeout: float | None = 1.0
-
-    def __init__(self) -> None:
-        self.written = b""
-
-    def write(self, data: bytes, /) -> int:
-        self.written += data
-        return len(data)
-
-    def read(self, size: int = 1, /) -> bytes:
-        return b""
-
-    def reset_input_buffer(self) -> None:
-        pass
-
-    def close(self) -> None:
-        pass
-
-
 @pytest.mark.parametrize("kind", ["runtime", "driver"])
 def test_a_string_longer_than_its_code_is_refused_at_run_time(tmp_path: Path, kind: str) -> None:
     source = tmp_path / "named.rdis"
     source.write_text(HEAD + 'primitive name(text: string) on c pack ">B4s" (7, text)\n', encoding="utf-8")
     implementation = load(source) if kind == "runtime" else import_driver(source, tmp_path, "named_driver")
     value_error = engine.RdisValueError if kind == "runtime" else implementation.RdisValueError
-    port = Port()
+    port = SilentPort()
     with implementation.connect(port, threads=False) as robot:
         robot.call_primitive("name", "AB")
         robot.call_primitive("name", "ABCD")
