@@ -152,10 +152,8 @@ class Checksum:
         else:
             value = self._crc(data)
         if self.inverted:
-            value = ~value & full
-        if self.mask is not None:
-            value &= self.mask
-        return value
+            value ^= full
+        return value if self.mask is None else value & self.mask
 
     def _crc(self, data: bytes) -> int:
         table, width, reg = self._table, self.width, self._init
@@ -418,10 +416,74 @@ class Stuffing:
         return bytes(out)
 
 
+Wrap = Callable[[bytes, Sequence[int]], bytes]
+"""A request side's parts around a payload, with the frame's field values."""
+
+
+def _quick_wrap(side: Side) -> Wrap | None:
+    """The request side as one struct pack of the parts before the payload, then the
+    payload, then the constants and checksums after it: what `Frame.wrap` does part by
+    part, in a few steps. None when a part before the payload is a checksum or two
+    multi-byte parts there disagree on byte order (the part-by-part way then runs)."""
+    if side.payload < 0:
+        return None
+    order = ""
+    codes: list[str] = []
+    template: list[Any] = []
+    picks: list[tuple[int, int, int]] = []  # (position in the pack, field index or -1 for the length, adjust)
+    for part in side.parts[: side.payload]:
+        if isinstance(part, Bytes):
+            codes.append(f"{len(part.data)}s")
+            template.append(part.data)
+            continue
+        if not isinstance(part, (Field, Length)):
+            return None
+        fmt = part.struct.format
+        prefix, code = (fmt[0], fmt[1:]) if fmt[:1] in "<>!=@" else ("", fmt)
+        if part.struct.size > 1:
+            if prefix not in ("<", ">", "!") or order not in ("", prefix.replace("!", ">")):
+                return None
+            order = prefix.replace("!", ">")
+        codes.append(code)
+        picks.append((len(template), part.index, 0) if isinstance(part, Field) else (len(template), -1, part.adjust))
+        template.append(0)
+    head = struct.Struct((order or "<") + "".join(codes))
+    starts = [0]  # each part's first byte: before the payload from the frame's start, after it from the payload's end
+    for i, size in enumerate(side.sizes):
+        starts.append(0 if i == side.payload else starts[-1] + size)
+    after = side.payload + 1  # the first part whose start counts from the payload's end
+    tail: list[tuple[bytes, Check | None, int, int]] = []  # a constant, or a checksum of [start, stop)
+    for at, part in enumerate(side.parts[after:], after):
+        if isinstance(part, Check) and part.last < at and not part.with_request:
+            first, stop = part.first, part.last + 1
+            tail.append((b"", part, ~starts[first] if first >= after else starts[first],
+                         ~starts[stop] if stop >= after else starts[stop]))
+        elif isinstance(part, Bytes):
+            tail.append((part.data, None, 0, 0))
+        else:
+            return None
+
+    def wrap(payload: bytes, fields: Sequence[int]) -> bytes:
+        values = template.copy()
+        for at, index, adjust in picks:
+            values[at] = fields[index] if index >= 0 else len(payload) + adjust
+        out = head.pack(*values) + payload
+        end = len(out)  # where the payload ends
+        for data, check, start, stop in tail:  # ~offset: counted from the payload's end
+            if check is None:
+                out += data
+            else:
+                out += check.encode(check.checksum(out[start if start >= 0 else end + ~start :
+                                                       stop if stop >= 0 else end + ~stop]))
+        return out
+
+    return wrap
+
+
 class Frame:
     """A request side and a reply side (empty when the device answers nothing framed)."""
 
-    __slots__ = ("name", "reply", "request", "stuffing")
+    __slots__ = ("name", "quick", "reply", "request", "stuffing")
 
     def __init__(self, name: str, request: Sequence[Part], reply: Sequence[Part],
                  stuffing: Stuffing | None = None) -> None:
@@ -429,12 +491,19 @@ class Frame:
         self.request = Side(request)
         self.reply = Side(reply)
         self.stuffing = stuffing
+        self.quick = _quick_wrap(self.request)
 
     def wrap(self, payload: bytes, fields: Sequence[int]) -> bytes:
         """The request: `payload` framed (stuffed first, when the frame stuffs), with the
         frame's field values."""
         if self.stuffing is not None:
             payload = self.stuffing.stuff(payload)
+        if self.quick is not None:
+            return self.quick(payload, fields)
+        return self.wrap_parts(payload, fields)
+
+    def wrap_parts(self, payload: bytes, fields: Sequence[int]) -> bytes:
+        """The request side put together part by part, each after the ones before it."""
         chunks: list[bytes] = []
         for part in self.request.parts:
             chunks.append(part.put(payload, fields, chunks))
@@ -685,6 +754,10 @@ class FrameUse:
     fields: Callable[[StateValues, Args], list[Any]]
 
 
+Request = Callable[[StateValues, Args], bytes | None]
+"""An input's fields' or a primitive's parameters' values to its request bytes in one step; None where the general way must decide."""
+
+
 @dataclass(frozen=True, slots=True)
 class Primitive:
     """One device command: its format values (over state and its parameters), how they are
@@ -705,6 +778,7 @@ class Primitive:
     key: int = -1  # the position of the parameter that chooses from `table` (-1: the reply's tag does)
     tag: str | None = None  # the struct format of the tag that starts the reply
     checked: tuple[str, ...] = ()  # state variables its post-actions may make too wide (checked as they are set)
+    request: Request | None = None  # its parameters' values to the bytes, when it is only written (`_sent_at_once`)
     expects_reply: bool = field(init=False)
     framed_reply: bool = field(init=False)
     floats: tuple[int, ...] = field(init=False)
@@ -720,6 +794,47 @@ class Primitive:
         object.__setattr__(self, "floats", _floats(self.params))
         object.__setattr__(self, "ranged", _ranged(self.params))
         object.__setattr__(self, "tag_struct", None if self.tag is None else struct.Struct(self.tag))
+        if not _sent_at_once(self):
+            object.__setattr__(self, "request", None)
+        elif self.request is None:
+            object.__setattr__(self, "request", _composed_write(self))
+
+
+def _sent_at_once(plan: Primitive) -> bool:
+    """Whether running the primitive is only packing its values, framing them and writing
+    them: no reply, reply table, post-action or string in the way."""
+    encoder = plan.encoder
+    plain = isinstance(encoder, Pack) and not encoder.strings and not encoder.rest
+    return plain and not plan.expects_reply and plan.actions is None and plan.table is None
+
+
+def _composed_write(plan: Primitive) -> Request:
+    """The general way of a primitive only written (`Robot._primitive`), as one function of its
+    parameters' values. Like `Input.request` it returns None for anything but the parameters'
+    own types in their ranges, and on any error: the general way then says what is wrong."""
+    kinds = tuple(p.kind for p in plan.params)
+    bounds = tuple((i, plan.params[i].low, plan.params[i].high) for i in plan.ranged)
+    values_of = plan.values
+    assert isinstance(plan.encoder, Pack)
+    pack = plan.encoder.struct.pack
+    use = plan.frame
+
+    def request(state: StateValues, args: Args) -> bytes | None:
+        if len(args) != len(kinds):
+            return None
+        for value, kind in zip(args, kinds):
+            if type(value) is not kind:
+                return None
+        for i, low, high in bounds:
+            if not low <= args[i] <= high:
+                return None
+        try:
+            payload = pack(*values_of(state, args))
+            return payload if use is None else use.frame.wrap(payload, use.fields(state, args))
+        except Exception:  # noqa: BLE001 - the general way says what is wrong
+            return None
+
+    return request
 
 
 @dataclass(frozen=True, slots=True)
@@ -756,10 +871,6 @@ class Interface:
     def __post_init__(self) -> None:
         object.__setattr__(self, "floats", _floats(self.params))
         object.__setattr__(self, "ranged", _ranged(self.params))
-
-
-Request = Callable[[StateValues, Args], bytes | None]
-"""An input's fields' values to its request bytes in one step; None where the general way must decide."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -1273,7 +1384,14 @@ class Robot:
         plan = self.device.primitives.get(name)
         if plan is None:
             raise KeyError(f"{self.name} has no primitive named {name!r}")
-        self._call_primitive(plan, list(args))
+        values = list(args)
+        request = plan.request
+        if request is not None and self._running:  # one plain write: every command's path
+            data = request(self._state, values)
+            if data is not None:
+                self._write(plan, data)
+                return
+        self._call_primitive(plan, values)
 
     # ---- lifecycle ----------------------------------------------------------------------------------
 
@@ -1448,6 +1566,12 @@ class Robot:
     def _primitive(self, plan: Primitive, args: Args) -> None:
         """Run a primitive with its parameters' values: its reply table's entry, if it has
         one, then the exchange."""
+        request = plan.request
+        if request is not None:  # one plain write
+            data = request(self._state, args)
+            if data is not None:
+                self._write(plan, data)
+                return
         for i in plan.floats:
             if type(args[i]) is int:
                 _widen(plan.name, plan.floats, args)

@@ -7,6 +7,8 @@ Dynamixel 2.0 frame with byte stuffing.
 
 from __future__ import annotations
 
+import struct
+from collections.abc import Callable, Sequence
 from pathlib import Path
 
 from hypothesis import given, settings
@@ -14,7 +16,7 @@ from hypothesis import strategies as st
 
 from rdisc.compile import compile_path
 from rdisc.runtime.codec import frame_fields, wire_frame
-from rdisc.runtime.engine import Frame, FrameError, Incoming
+from rdisc.runtime.engine import Bytes, Check, Checksum, Field, Frame, FrameError, Incoming, Length, Part, Payload
 from tests.runtime.runtime_support import MemoryPort
 
 REPO = Path(__file__).resolve().parents[2]
@@ -86,3 +88,58 @@ def test_a_frame_written_is_read_back(name: str, payload: bytes, noise: bytes, i
     raw, read = frame.read(port, fields, b"", size)
     assert read == payload
     assert raw == wire
+
+
+_FIELD_FORMATS = ["B", "b", "<H", ">H", "!H", "<h", ">I", "<I", ">Q", "xB", "H", "=H"]
+_CHECKS = st.sampled_from([(Checksum("sum", 8), "B"), (Checksum("xor", 8, inverted=True), None),
+                           (Checksum("crc", 16, 0x8005, reflect_in=True, reflect_out=True), "<H"),
+                           (Checksum("crc", 16, 0x1021), ">H"), (Checksum("sum", 16), None)])
+
+
+@st.composite
+def _request_sides(draw: st.DrawFn) -> list[Part]:
+    """A request side: constants, fields and lengths, a payload, then constants and checksums
+    over any run of the parts before each (and sometimes a checksum before the payload)."""
+    parts: list[Part] = []
+    for _ in range(draw(st.integers(0, 4))):
+        kind = draw(st.sampled_from(["bytes", "field", "length", "check"]))
+        if kind == "bytes":
+            parts.append(Bytes("header" if not parts else "literal", draw(st.binary(min_size=1, max_size=3))))
+        elif kind == "field":
+            parts.append(Field("f", draw(st.sampled_from(_FIELD_FORMATS)), draw(st.integers(0, 1))))
+        elif kind == "length":
+            parts.append(Length(draw(st.sampled_from(["B", "<H", ">H"])), draw(st.integers(0, 3))))
+        elif parts:
+            first = draw(st.integers(0, len(parts) - 1))
+            parts.append(Check(*draw(_CHECKS), first, draw(st.integers(first, len(parts) - 1))))
+    parts.append(Payload())
+    for _ in range(draw(st.integers(0, 3))):
+        if draw(st.booleans()):
+            parts.append(Bytes("terminator", draw(st.binary(min_size=1, max_size=2))))
+        else:
+            first = draw(st.integers(0, len(parts) - 1))
+            parts.append(Check(*draw(_CHECKS), first, draw(st.integers(first, len(parts) - 1))))
+    return parts
+
+
+@settings(max_examples=500, deadline=None)
+@given(parts=_request_sides(), payload=st.binary(max_size=20),
+       fields=st.lists(st.integers(-1, 300), min_size=2, max_size=2))
+def test_the_quick_wrap_writes_what_the_parts_write(parts: list[Part], payload: bytes, fields: list[int]) -> None:
+    """Bytes alike, and a value that does not fit its field is the same struct.error."""
+    frame = Frame("f", parts, [])
+
+    def outcome(wrap: Callable[[bytes, Sequence[int]], bytes]) -> bytes | str:
+        try:
+            return wrap(payload, fields)
+        except struct.error as err:
+            return str(err)
+
+    expected = outcome(frame.wrap_parts)
+    if frame.quick is not None:
+        assert outcome(frame.quick) == expected
+    assert outcome(frame.wrap) == expected
+
+
+def test_the_examples_frames_have_the_quick_wrap() -> None:
+    assert sorted(n for n, (frame, _) in FRAMES.items() if frame.quick is None) == []
