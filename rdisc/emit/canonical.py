@@ -159,6 +159,7 @@ def _frame(f: m.Frame) -> JsonObject:
         ("name", f.name),
         ("parameters", [param.name for param in f.params]),
         ("parameterTypes", [param.type.value for param in f.params]),
+        ("parameterRanges", _ranges(f.params)),
         ("request", [_frame_part(part) for part in f.request]),
         ("reply", [_frame_part(part) for part in f.reply]),
         ("stuffing", None if f.stuffing is None else {"after": f.stuffing[0], "insert": f.stuffing[1]}),

@@ -19,7 +19,6 @@ Model and source name give byte-identical text.
 
 from __future__ import annotations
 
-import dataclasses
 import keyword
 import os
 import posixpath
@@ -331,7 +330,13 @@ class _Driver:
         for frame in model.frames.values():
             w.blank(2)
             self.comment(w, frame.span, f"frame {frame.name}")
-            _emit(w, f"{self.plan['frame', frame.name]} = ", Py(_frame(frame), p.ATOM))
+            values = frame_fields(frame)
+            if values:
+                function = f"_f_{frame.name}"
+                self.function(w, function, "args: Args", frame.params, [("", e, None) for _, e in values],
+                              "list[Any]")
+                w.blank(2)
+            _emit(w, f"{self.plan['frame', frame.name]} = ", Py(_frame(frame, function if values else None), p.ATOM))
         for prim in model.primitives.values():
             w.blank(2)
             self.primitive(w, prim)
@@ -417,12 +422,10 @@ class _Driver:
         signature = "state: StateValues, args: Args"
         self.function(w, f"{base}_values", signature, prim.params, [("", a, None) for a in prim.args], "Args")
         if prim.frame is not None:
-            frame = self.model.frames[prim.frame.frame]
-            bound = dict(zip((prm.name for prm in frame.params), prim.frame.args))
             w.blank(2)
-            self.function(w, f"{base}_fields", signature, prim.params,
-                          [("", _substituted(e, bound), None) for _, e in frame_fields(frame)], "list[Any]")
-            fields = f"FrameUse({self.plan['frame', frame.name]}, {base}_fields)"
+            self.function(w, f"{base}_frame", signature, prim.params, [("", a, None) for a in prim.frame.args],
+                          "Args")
+            fields = f"FrameUse({self.plan['frame', prim.frame.frame]}, {base}_frame)"
         else:
             fields = "None"
         const = self.plan["primitive", prim.name]
@@ -739,25 +742,8 @@ def _case(case: m.ReplyCase) -> str:
     return f"m{-case.value}" if case.value < 0 else str(case.value)
 
 
-def _substituted(e: m.Expr, bound: Mapping[str, m.Expr]) -> m.Expr:
-    """A frame's expression over its parameters, rewritten over the arguments they are bound to."""
-    match e:
-        case m.Var(scope=m.Scope.PARAM, name=name):
-            return bound[name]
-        case m.UnaryOp():
-            return dataclasses.replace(e, operand=_substituted(e.operand, bound))
-        case m.BinaryOp():
-            return dataclasses.replace(e, left=_substituted(e.left, bound), right=_substituted(e.right, bound))
-        case m.IfElse():
-            return dataclasses.replace(e, cond=_substituted(e.cond, bound), then=_substituted(e.then, bound),
-                                       orelse=_substituted(e.orelse, bound))
-        case m.FuncCall():
-            return dataclasses.replace(e, args=tuple(_substituted(a, bound) for a in e.args))
-    return e
-
-
-def _frame(frame: m.Frame) -> str:
-    """The constructor of a frame, as the engine takes it."""
+def _frame(frame: m.Frame, fields: str | None) -> str:
+    """The constructor of a frame, as the engine takes it; `fields`: the function of its field values."""
     index = {key: i for i, key in enumerate(frame_fields(frame))}
     request = ", ".join(_frame_part(part, index) for part in frame.request)
     reply = ", ".join(_frame_part(part, index) for part in frame.reply)
@@ -765,7 +751,12 @@ def _frame(frame: m.Frame) -> str:
     if frame.stuffing is not None:
         reserved, escape = (text.encode("latin-1") for text in frame.stuffing)
         stuffing = f", Stuffing({reserved!r}, {escape!r})"
-    return f"Frame({quoted(frame.name)}, [{request}], [{reply}]{stuffing})"
+    options = stuffing
+    if frame.params:
+        options += f", params={_param_tuple(frame.params)}"
+    if fields is not None:
+        options += f", fields={fields}"
+    return f"Frame({quoted(frame.name)}, [{request}], [{reply}]{options})"
 
 
 def _frame_part(part: m.FramePart, index: Mapping[tuple[str, m.Expr], int]) -> str:

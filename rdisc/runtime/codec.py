@@ -7,6 +7,9 @@ decoder is its constructor call), so both encode and decode alike.
 
 from __future__ import annotations
 
+from collections.abc import Callable
+from typing import Any
+
 from rdisc.runtime import engine
 from rdisc.semantics import formats
 from rdisc.semantics import model as m
@@ -43,15 +46,17 @@ def frame_fields(frame: m.Frame) -> tuple[tuple[str, m.Expr], ...]:
     return tuple(fields)
 
 
-def wire_frame(frame: m.Frame) -> engine.Frame:
-    """The Model's frame as the engine reads and writes it."""
+def wire_frame(frame: m.Frame, params: tuple[engine.Param, ...] = (),
+               fields: Callable[[engine.Args], list[Any]] | None = None) -> engine.Frame:
+    """The Model's frame as the engine reads and writes it; `params` and `fields` (the field
+    values over the parameters' values) where frames are used, not only read and written."""
     index = {key: i for i, key in enumerate(frame_fields(frame))}
     stuffing = None
     if frame.stuffing is not None:
         reserved, escape = frame.stuffing
         stuffing = engine.Stuffing(reserved.encode("latin-1"), escape.encode("latin-1"))
     return engine.Frame(frame.name, [_part(p, index) for p in frame.request], [_part(p, index) for p in frame.reply],
-                        stuffing)
+                        stuffing, params, fields)
 
 
 def checksum(a: m.ChecksumAlgorithm) -> engine.Checksum:

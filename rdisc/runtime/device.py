@@ -51,6 +51,7 @@ class Description:
     def __init__(self, model: m.Model) -> None:
         self.model = model
         self.name = model.robot.name
+        self._frames = {f.name: self._frame(f) for f in model.frames.values()}
         primitives = {p.name: self._primitive(p) for p in model.primitives.values()}
         outputs = {o.name: self._output(o) for o in model.outputs.values()}
         interfaces = {i.name: self._interface(i, primitives, outputs) for i in model.interfaces.values()}
@@ -106,15 +107,16 @@ class Description:
                         if self.model.states[a.target].type is m.Type.INT and m.may_outgrow(a.value))
         frame = None
         if p.frame is not None:
-            model_frame = self.model.frames[p.frame.frame]
-            fields = _values([prepare(e, _slots(model_frame.params)) for _, e in frame_fields(model_frame)])
-            args = _values([prepare(a, slots) for a in p.frame.args])
-            frame = engine.FrameUse(wire_frame(model_frame), lambda s, loc: fields(s, args(s, loc)))
+            frame = engine.FrameUse(self._frames[p.frame.frame], _values([prepare(a, slots) for a in p.frame.args]))
         return engine.Primitive(
             p.name, p.connection, _params(p.params), _values([prepare(a, slots) for a in p.args]),
             encoder(p.encoding), decoder(p.decoding), actions, frame, p.skip_unmatched,
             None if p.timeout_ms is None else p.timeout_ms / 1000.0, checked=checked,
         )
+
+    def _frame(self, frame: m.Frame) -> engine.Frame:
+        fields = _values([prepare(e, _slots(frame.params)) for _, e in frame_fields(frame)])
+        return wire_frame(frame, _params(frame.params), lambda args: fields(_EMPTY, args))
 
     def _output(self, o: m.DomainOutput) -> engine.Output:
         adapter = self.model.adapters[o.adapter]

@@ -422,7 +422,8 @@ class _Checker:
             table = self.reply_table(table_clause, params, scope, name)
         replies = [decoding] if decoding is not None else [c.decoding for c in table.cases] if table else []
         framed = self.once([c for c in decl.clauses if isinstance(c, ast.Framed)], "`frame`", name)
-        frame = self.frame_use(framed, env, decl, encoding, replies) if isinstance(framed, ast.Framed) else None
+        frame = (self.frame_use(framed, env, decl, encoding, replies, self.request_sizes(encoding, args, params))
+                 if isinstance(framed, ast.Framed) else None)
         if (any(isinstance(r, m.Unpack) and formats.struct_layout(r.format).rest for r in replies)
                 and (frame is None or not self.frames[frame.frame].reply)):
             self.d.report("E503", decodings[0].span if decodings else name.span,
@@ -522,8 +523,27 @@ class _Checker:
                               help="give every value of the range its reply, or narrow the range")
         return m.ReplyTable(key, tuple(cases))
 
+    def request_sizes(self, encoding: m.Pack | m.Format | None, args: tuple[m.Expr, ...],
+                      params: tuple[m.Parameter, ...]) -> tuple[int, int, str] | None:
+        """The fewest and most bytes a packed request can have, and what decides them: a
+        `*` rest of constant bytes or of a `bytes` parameter with a range (None otherwise)."""
+        if not isinstance(encoding, m.Pack):
+            return None
+        layout = formats.struct_layout(encoding.format)
+        if not layout.rest:
+            return layout.size, layout.size, ""
+        rest = args[-1] if args else None
+        value = self.typer.constant(rest) if rest is not None else None
+        if isinstance(value, bytes):
+            return layout.size + len(value), layout.size + len(value), ""
+        if isinstance(rest, m.Var) and rest.scope is Scope.PARAM:
+            param = next(p for p in params if p.name == rest.name)
+            if param.low is not None and param.high is not None:
+                return layout.size + int(param.low), layout.size + int(param.high), f"parameter `{param.name}`"
+        return None
+
     def frame_use(self, clause: ast.Framed, env: Env, decl: ast.PrimitiveDecl, encoding,
-                  replies: list) -> m.FrameUse | None:
+                  replies: list, request: tuple[int, int, str] | None) -> m.FrameUse | None:
         """`frame NAME(args)`: its arguments, and whether the frame can carry this primitive."""
         frame = self.frames.get(clause.frame.text)
         target = self.s.frames.get(clause.frame.text)
@@ -531,16 +551,7 @@ class _Checker:
                          "frame", target.name if target else None)
         if frame is None:
             return None
-        bound = dict(zip((p.name for p in frame.params), zip(args, clause.args)))
-        for part in frame.request + frame.reply:
-            if isinstance(part, m.FrameField) and isinstance(part.value, m.Var) and part.value.name in bound:
-                arg, expr = bound[part.value.name]
-                try:
-                    slot = formats.struct_layout(part.format).slots[0]
-                except (formats.TemplateError, IndexError):  # the frame's own check reported it
-                    continue
-                self.fits(self.typer.constant(arg), slot, expr.span, f" of frame `{frame.name}`",
-                          f"field `{part.name}` is packed as `{slot.code}`, {slot.low} to {slot.high}")
+        self.frame_fields_fit(frame, clause, args)
         has_payload = any(isinstance(p, m.FramePayload) for p in frame.reply)
         if replies and frame.reply and not has_payload:
             self.d.report("E504", clause.span, f"primitive `{decl.name.text}` decodes a reply, but the reply of "
@@ -553,19 +564,50 @@ class _Checker:
             self.d.report("E503", clause.span, f"the reply of frame `{frame.name}` gives no way to find where the "
                           f"payload of `{decl.name.text}` ends",
                           help="add a `length` field, constant bytes after the payload, or decode with `unpack`")
-        request_layout = formats.struct_layout(encoding.format) if isinstance(encoding, m.Pack) else None
-        sizes = [(frame.request, request_layout.size if request_layout and not request_layout.rest else None),
-                 *((frame.reply, size) for size in reply_sizes)]
+        sizes = [(frame.request, request), *((frame.reply, None if n is None else (n, n, "")) for n in reply_sizes)]
         for parts, payload in sizes:
             length = next((p for p in parts if isinstance(p, m.FrameLength)), None)
             if length is None or payload is None:
                 continue
             low, high = length_range(length)
-            if not low <= payload <= high:
+            fewest, most, by = payload
+            if low <= fewest and most <= high:
+                continue
+            states = f"it states payloads of {low} to {high} bytes"
+            if not by:
                 self.d.report("E503", clause.span, f"the length field \"{length.format}\" of frame `{frame.name}` "
-                              f"cannot state the {payload}-byte payload of `{decl.name.text}`",
-                              help=f"it states payloads of {low} to {high} bytes")
+                              f"cannot state the {fewest}-byte payload of `{decl.name.text}`", help=states)
+            else:
+                self.d.report("E503", clause.span, f"the length field \"{length.format}\" of frame `{frame.name}` "
+                              f"cannot state every payload of `{decl.name.text}`: {fewest} to {most} bytes, as "
+                              f"{by} allows", help=f"{states}; narrow the range of {by}")
         return m.FrameUse(m.FrameRef(frame.name), args)
+
+    def frame_fields_fit(self, frame: m.Frame, clause: ast.Framed, args: tuple[m.Expr, ...]) -> None:
+        """Each field of a frame over its parameters, computed from the constant arguments of
+        this use (those in their ranges: one outside is reported already), must fit its code."""
+        known: dict[str, object] = {}
+        for param, arg in zip(frame.params, args):
+            value = self.typer.constant(arg)
+            if value is not None and (param.low is None or param.low <= value <= param.high):  # type: ignore[operator]
+                known[param.name] = value
+        spans = {p.name: expr.span for p, expr in zip(frame.params, clause.args)}
+        seen: set[tuple[str, m.Expr]] = set()
+        for part in frame.request + frame.reply:
+            if (not isinstance(part, m.FrameField) or (part.name, part.value) in seen
+                    or self.typer.is_constant(part.value)):  # a constant field is checked with its frame
+                continue
+            seen.add((part.name, part.value))
+            try:
+                slot = formats.struct_layout(part.format).slots[0]
+            except (formats.TemplateError, IndexError):  # the frame's own check reported it
+                continue
+            value = self.typer.value_over(part.value, known)
+            direct = isinstance(part.value, m.Var) and part.value.name in spans
+            span = spans[part.value.name] if direct else clause.span  # type: ignore[union-attr]
+            where = f" of frame `{frame.name}`" if direct else f" as field `{part.name}` of frame `{frame.name}`"
+            self.fits(value, slot, span, where,
+                      f"field `{part.name}` is packed as `{slot.code}`, {slot.low} to {slot.high}")
 
     def template_span(self, lit: ast.StrLit, offset: int, length: int) -> Span:
         """The span of characters inside a template, exact when the literal has no escapes."""

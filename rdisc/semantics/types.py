@@ -8,6 +8,7 @@ Constant subexpressions are evaluated as they are typed, so a resource bomb
 
 from __future__ import annotations
 
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 
 from rdisc.diagnostics import Diagnostics
@@ -364,6 +365,40 @@ class Typer:
             return node
         self._constants[id(node)] = (node, value)
         return node
+
+    def value_over(self, expr: m.Expr, params: Mapping[str, object]) -> object | None:
+        """The value of an expression over given values of its parameters (a frame's field for
+        the constant arguments of one use), or None when it needs anything else or fails."""
+        if self.is_constant(expr):
+            return self.constant(expr)
+        compute: Callable[..., object]
+        operands: tuple[m.Expr, ...]
+        match expr:
+            case m.Var(scope=Scope.PARAM, name=name):
+                return params.get(name)
+            case m.UnaryOp(op=op, operand=operand):
+                compute, operands = UNARY[op], (operand,)
+            case m.BinaryOp(op="and", left=left, right=right):
+                compute, operands = (lambda x, y: x and y), (left, right)
+            case m.BinaryOp(op="or", left=left, right=right):
+                compute, operands = (lambda x, y: x or y), (left, right)
+            case m.BinaryOp(op=op, left=left, right=right):
+                compute, operands = BINARY[op], (left, right)
+            case m.IfElse(cond=cond, then=then, orelse=orelse):
+                chosen = self.value_over(cond, params)
+                return None if chosen is None else self.value_over(then if chosen else orelse, params)
+            case m.FuncCall(func=func, args=args):
+                compute, operands = FUNCTIONS[func], args
+            case _:
+                return None
+        values = [self.value_over(o, params) for o in operands]
+        if any(v is None for v in values):
+            return None
+        try:
+            result: object = compute(*values)
+        except (EvalError, ArithmeticError, ValueError, TypeError):
+            return None
+        return result
 
     def kept(self, value: object, span: Span | None) -> bool:
         """Whether a constant value fits where it is kept (a constant, a state variable): ints in

@@ -314,7 +314,7 @@ _PRIMITIVE = (
     "name", "parameters", "parameterTypes", "parameterRanges", "connection", "pack", "format", "formatArgs",
     "unpack", "regex", "frame", "skipUnmatched", "replyTable", "timeout", "postActions", "doc",
 )  # fmt: skip
-_FRAME = ("name", "parameters", "parameterTypes", "request", "reply", "stuffing", "doc")
+_FRAME = ("name", "parameters", "parameterTypes", "parameterRanges", "request", "reply", "stuffing", "doc")
 _CHECKSUM = (
     "checksum", "kind", "width", "poly", "init", "reflectIn", "reflectOut", "xorOut", "inverted", "mask", "format",
     "covers", "withRequest",

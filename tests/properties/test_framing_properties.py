@@ -16,7 +16,18 @@ from hypothesis import strategies as st
 
 from rdisc.compile import compile_path
 from rdisc.runtime.codec import frame_fields, wire_frame
-from rdisc.runtime.engine import Bytes, Check, Checksum, Field, Frame, FrameError, Incoming, Length, Part, Payload
+from rdisc.runtime.engine import (
+    Bytes,
+    Check,
+    Checksum,
+    Field,
+    Frame,
+    FrameError,
+    Incoming,
+    Length,
+    Part,
+    Payload,
+)
 from tests.runtime.runtime_support import MemoryPort
 
 REPO = Path(__file__).resolve().parents[2]

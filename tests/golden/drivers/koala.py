@@ -317,13 +317,15 @@ class Field:
 
 
 class Length:
-    """The payload's size plus `adjust`."""
+    """The payload's size plus `adjust`; `most`, the largest size its format states."""
 
-    __slots__ = ("adjust", "struct")
+    __slots__ = ("adjust", "most", "struct")
 
     def __init__(self, fmt: str, adjust: int) -> None:
         self.struct = struct.Struct(fmt)
         self.adjust = adjust
+        bits = 8 * self.struct.size
+        self.most = ((1 << (bits - 1)) - 1 if fmt[-1].islower() else (1 << bits) - 1) - adjust
 
     def put(self, payload: bytes, fields: Sequence[int], chunks: list[bytes]) -> bytes:
         return self.struct.pack(len(payload) + self.adjust)
@@ -484,23 +486,39 @@ def _quick_wrap(side: Side) -> Wrap | None:
 
 
 class Frame:
-    """A request side and a reply side (empty when the device answers nothing framed)."""
+    """A request side and a reply side (empty when the device answers nothing framed), and
+    the values of its fields over its parameters."""
 
-    __slots__ = ("name", "quick", "reply", "request", "stuffing")
+    __slots__ = ("fields", "most", "name", "params", "quick", "ranged", "reply", "request", "stuffing")
 
-    def __init__(self, name: str, request: Sequence[Part], reply: Sequence[Part],
-                 stuffing: Stuffing | None = None) -> None:
+    def __init__(self, name: str, request: Sequence[Part], reply: Sequence[Part], stuffing: Stuffing | None = None,
+                 params: tuple[Param, ...] = (), fields: Callable[[Args], list[Any]] | None = None) -> None:
         self.name = name
         self.request = Side(request)
         self.reply = Side(reply)
         self.stuffing = stuffing
+        self.params = params
+        self.ranged = _ranged(params)
+        self.fields = fields
         self.quick = _quick_wrap(self.request)
+        length = self.request.parts[self.request.length] if self.request.length >= 0 else None
+        self.most = length.most if isinstance(length, Length) else math.inf  # the largest payload it carries
+
+    def values(self, owner: str, args: Args) -> list[Any]:
+        """The field values for the frame's arguments; an argument outside its parameter's
+        range is an RdisValueError of `owner`, before anything is sent."""
+        if self.ranged:
+            _in_ranges(f"{owner}: frame {self.name}", self.params, self.ranged, args)
+        return [] if self.fields is None else self.fields(args)
 
     def wrap(self, payload: bytes, fields: Sequence[int]) -> bytes:
         """The request: `payload` framed (stuffed first, when the frame stuffs), with the
         frame's field values."""
         if self.stuffing is not None:
             payload = self.stuffing.stuff(payload)
+        if len(payload) > self.most:
+            raise ValueError(f"frame {self.name}: a {len(payload)}-byte payload is more than its length field "
+                             f"states ({self.most} bytes)")
         if self.quick is not None:
             return self.quick(payload, fields)
         return self.wrap_parts(payload, fields)
@@ -751,14 +769,15 @@ class Param:
 
 @dataclass(frozen=True, slots=True)
 class FrameUse:
-    """A primitive's frame, and its field values computed over the primitive's parameters."""
+    """A primitive's frame, and the frame's arguments over the primitive's parameters."""
 
     frame: Frame
-    fields: Callable[[StateValues, Args], list[Any]]
+    args: Callable[[StateValues, Args], Args]
 
 
 Request = Callable[[StateValues, Args], bytes | None]
-"""An input's fields' or a primitive's parameters' values to its request bytes in one step; None where the general way must decide."""
+"""An input's fields' or a primitive's parameters' values to its request bytes in one step;
+None where the general way must decide."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -833,7 +852,7 @@ def _composed_write(plan: Primitive) -> Request:
                 return None
         try:
             payload = pack(*values_of(state, args))
-            return payload if use is None else use.frame.wrap(payload, use.fields(state, args))
+            return payload if use is None else use.frame.wrap(payload, use.frame.values("", use.args(state, args)))
         except Exception:  # noqa: BLE001 - the general way says what is wrong
             return None
 
@@ -1617,8 +1636,10 @@ class Robot:
         fields: list[Any] = []
         if use is not None:
             try:
-                fields = use.fields(self._state, local)
+                fields = use.frame.values(plan.name, use.args(self._state, local))
                 request = use.frame.wrap(request, fields)
+            except RdisError:
+                raise
             except (struct.error, *EVAL_ERRORS) as err:
                 raise RdisValueError(f"{plan.name}: {err}") from None
         if not plan.expects_reply:
