@@ -19,9 +19,10 @@ from rdisc.semantics.model import Model
 from rdisc.semantics.resolve import Unit, resolve
 from rdisc.source import Sources, Span
 from rdisc.syntax import ast
-from rdisc.syntax.parse import MAX_FILE_CHARS, parse
+from rdisc.syntax.parse import MAX_FILE_CHARS, parse, token_count
 
 MAX_IMPORTS = 256
+MAX_TOKENS = 200_000  # of a description and its imports: about seventy times the largest example's
 
 
 @dataclass
@@ -54,6 +55,24 @@ def read_text(path: str, diagnostics: Diagnostics, at: Span | None = None) -> st
         return None
 
 
+class _Tokens:
+    """The tokens a description and its imports may still have. Parsing costs time in
+    proportion to them (about 10 us each in Lark), so a file past them is refused before."""
+
+    def __init__(self) -> None:
+        self.left = MAX_TOKENS
+
+    def parse(self, path: str, text: str, diagnostics: Diagnostics) -> ast.Module:
+        count = token_count(text, self.left)
+        if count > self.left:
+            diagnostics.report("E005", Span(path, 0, 0), f"the description has more than {MAX_TOKENS} tokens, "
+                               "with its imports; this file is not read")
+            self.left = 0
+            return ast.Module(path, (), refused=True)
+        self.left -= count
+        return parse(path, text, diagnostics)
+
+
 def compile_path(path: str) -> Compilation:
     """Check one description (.rdis or .json) and build its Model."""
     diagnostics = Diagnostics()
@@ -68,7 +87,7 @@ def compile_path(path: str) -> Compilation:
 def compile_module(main: ast.Module, diagnostics: Diagnostics, sources: Sources) -> Compilation:
     """Check an already-built syntax tree (from the JSON importer) with its imports."""
     units: list[Unit] = []
-    _add_unit(main, True, diagnostics, sources, units)
+    _add_unit(main, True, diagnostics, sources, units, _Tokens())
     return _analyse(units, diagnostics, sources, main)
 
 
@@ -84,19 +103,21 @@ def _load(path: str, diagnostics: Diagnostics, sources: Sources, units: list[Uni
     if text is None:
         return None
     sources.add(path, text)
+    tokens = _Tokens()
     if path.endswith(".json"):
         from rdisc.syntax.json_import import read
 
         module = read(path, text, diagnostics)
     else:
-        module = parse(path, text, diagnostics)
+        module = tokens.parse(path, text, diagnostics)
     if module is None:
         return None
-    _add_unit(module, True, diagnostics, sources, units)
+    _add_unit(module, True, diagnostics, sources, units, tokens)
     return module
 
 
-def _add_unit(main: ast.Module, is_main: bool, diagnostics: Diagnostics, sources: Sources, units: list[Unit]) -> None:
+def _add_unit(main: ast.Module, is_main: bool, diagnostics: Diagnostics, sources: Sources, units: list[Unit],
+              tokens: _Tokens) -> None:
     """Add the stdlib, the main module and every file it imports (transitively, once each).
 
     The stdlib comes first, so a user's adapter that repeats a standard name is the
@@ -149,6 +170,6 @@ def _add_unit(main: ast.Module, is_main: bool, diagnostics: Diagnostics, sources
             if text is None:
                 continue
             sources.add(str(target), text)
-            imported = parse(str(target), text, diagnostics)
+            imported = tokens.parse(str(target), text, diagnostics)
             units.append(Unit(imported))
             queue.append(imported)

@@ -75,7 +75,7 @@ def resolve(units: list[Unit], diagnostics: Diagnostics) -> Symbols:
         _declare(unit, symbols, diagnostics)
     main = next((u for u in units if u.main), None)
     robot_lost = any(keyword == "robot" for keyword, _ in symbols.damaged)
-    if symbols.robot is None and main is not None and not robot_lost:
+    if symbols.robot is None and main is not None and not robot_lost and not main.module.refused:
         first = main.module.decls[0].span.start if main.module.decls else 0
         diagnostics.report(
             "E107",

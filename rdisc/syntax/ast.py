@@ -517,3 +517,4 @@ class Module:
     path: str
     decls: tuple[Decl, ...]
     damaged: tuple[Damaged, ...] = ()
+    refused: bool = False  # refused before parsing (E005): nothing is known of it, so nothing is missing

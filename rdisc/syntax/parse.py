@@ -73,7 +73,7 @@ def parse(path: str, text: str, diagnostics: Diagnostics) -> ast.Module:
             Span(path, 0, 0),
             f"file is too large ({len(text)} characters; the limit is {MAX_FILE_CHARS})",
         )
-        return ast.Module(path, ())
+        return ast.Module(path, (), refused=True)
     import lark
 
     builder = Builder(path, _doc_comments(text), diagnostics)
@@ -169,6 +169,15 @@ def parse_expression(path: str, text: str, base_offset: int, diagnostics: Diagno
     return None
 
 
+def token_count(text: str, most: int) -> int:
+    """The tokens of `text`, counted up to `most + 1` (so in time bounded by `most`)."""
+    count = 0
+    for count, _ in enumerate(_TOKEN.finditer(text), 1):
+        if count > most:
+            break
+    return count
+
+
 def _too_long(path: str, chunk: str, start: int) -> tuple[Span, str] | None:
     """Where and why a declaration is too long to parse: a line over the limit (a string
     literal is on one line), or more tokens than a declaration may have."""
@@ -176,10 +185,9 @@ def _too_long(path: str, chunk: str, start: int) -> tuple[Span, str] | None:
     if long_line is not None:
         return (Span(path, start + long_line.start(), start + long_line.end()),
                 f"line of {len(long_line.group())} characters; the limit is {MAX_LINE_CHARS}")
-    for count, _ in enumerate(_TOKEN.finditer(chunk), 1):
-        if count > MAX_DECL_TOKENS:
-            return (Span(path, start, start + len(chunk)),
-                    f"declaration has more than {MAX_DECL_TOKENS} tokens; split it, or make it simpler")
+    if token_count(chunk, MAX_DECL_TOKENS) > MAX_DECL_TOKENS:
+        return (Span(path, start, start + len(chunk)),
+                f"declaration has more than {MAX_DECL_TOKENS} tokens; split it, or make it simpler")
     return None
 
 

@@ -61,3 +61,34 @@ def test_import_will_not_write_over_its_json(tmp_path: Path) -> None:
     result = run_rdisc("import", source, "-o", source)
     assert result.returncode == 2
     assert source.read_bytes() == before
+
+
+def test_a_description_past_the_token_budget_is_refused_before_the_parser_sees_it(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """Parsing costs time in proportion to tokens: each imported file counts against one
+    budget for the description, and a file past it is not parsed (nor is anything
+    reported missing from it)."""
+    from rdisc import compile as compile_module
+    from rdisc.syntax.parse import token_count
+
+    part = "\n".join(f"const c{i} = {i}" for i in range(compile_module.MAX_TOKENS // 10)) + "\n"
+    assert token_count(part, 10**9) == compile_module.MAX_TOKENS * 4 // 10  # two fit, three do not
+    (tmp_path / "one.rdis").write_text(part, encoding="utf-8")
+    (tmp_path / "two.rdis").write_text(part.replace("const c", "const d"), encoding="utf-8")
+    (tmp_path / "three.rdis").write_text(part.replace("const c", "const e"), encoding="utf-8")
+    main = tmp_path / "main.rdis"
+    main.write_text('robot r { author "tests" }\nimport "one.rdis"\nimport "two.rdis"\nimport "three.rdis"\n',
+                    encoding="utf-8")
+    parsed: list[str] = []
+    real_parse = compile_module.parse
+
+    def counting_parse(path: str, text: str, diagnostics):
+        parsed.append(Path(path).name)
+        return real_parse(path, text, diagnostics)
+
+    monkeypatch.setattr(compile_module, "parse", counting_parse)
+    compilation = compile_module.compile_path(str(main))
+    assert parsed == ["main.rdis", "adapters.rdis", "one.rdis", "two.rdis"]  # and the standard adapters
+    assert [(d.code, d.message) for d in compilation.diagnostics.items] == [
+        ("E005", "the description has more than 200000 tokens, with its imports; this file is not read")]
+    assert compilation.diagnostics.items[0].span.path == str(tmp_path / "three.rdis")
