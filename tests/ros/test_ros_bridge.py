@@ -22,7 +22,7 @@ from pathlib import Path
 import pytest
 
 from tests.devices import CreateEmulator
-from tests.devices.create import TABLE_4_3
+from tests.devices.create import STOP, TABLE_4_3
 
 HERE = Path(__file__).resolve().parent
 REPO = HERE.parents[1]
@@ -185,3 +185,42 @@ def test_device_errors_are_published_and_the_node_keeps_serving(ros_env: dict[st
                 assert node.poll() is None  # still serving
         finally:
             _stop(node)
+
+
+# Seconds after the first command reached the device, the signals, and the gaps between them:
+# during the start-up hook (its 50 ms delay), and while running.
+SIGNAL_MOMENTS = {
+    "start-up, twice": (0.0, [signal.SIGINT, signal.SIGINT], 0.005),
+    "start-up delay, burst": (0.02, [signal.SIGINT] * 4, 0.002),
+    "running, twice": (1.0, [signal.SIGINT, signal.SIGINT], 0.01),
+    "running, SIGTERM then SIGINT": (1.0, [signal.SIGTERM, signal.SIGINT], 0.001),
+}
+
+
+@pytest.mark.parametrize(("after", "signals", "gap"), SIGNAL_MOMENTS.values(), ids=SIGNAL_MOMENTS.keys())
+def test_signals_at_any_moment_leave_the_robot_stopped(ros_env: dict[str, str], tmp_path: Path, after: float,
+                                                       signals: list[signal.Signals], gap: float) -> None:
+    """However the node is signalled once its port is open, the stop command is the last thing
+    written and nothing prints a traceback (rospy shuts down on SIGINT and SIGTERM alike)."""
+    node_path = tmp_path / "fast_create_node.py"
+    done = subprocess.run(["python", "-m", "rdisc", "emit-ros", str(REPO / "tests" / "runtime" / "data" /
+                                                                       "fast_create.rdis"), "-o", str(node_path)],
+                          cwd=REPO, capture_output=True, text=True, check=False)
+    assert done.returncode == 0, done.stderr
+    with CreateEmulator() as device:
+        node = _start_node(node_path, ros_env, device)
+        try:
+            device.wait_for_commands(1, timeout=30)  # the port is open: from here on the robot must end stopped
+            time.sleep(after)
+            for signum in signals:
+                node.send_signal(signum)
+                time.sleep(gap)
+            output, _ = node.communicate(timeout=30)
+        finally:
+            if node.poll() is None:
+                node.kill()
+                node.communicate()
+        assert "Traceback" not in output, output
+        device.wait_until(lambda: bool(device.commands) and device.commands[-1][1] == STOP, 5, "the stop command last")
+        time.sleep(0.05)  # nothing more arrives after it
+        assert device.commands[-1][1] == STOP, device.commands[-3:]
