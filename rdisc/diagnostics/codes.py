@@ -39,9 +39,11 @@ A number that cannot be read (a decimal integer with leading zeros, a misplaced
 18446744073709551615, `0xFFFF_FFFF_FFFF_FFFF`, either way), in .rdis and JSON
 alike, and floats must be finite."""),
     ("E005", "too-complex", """
-An expression nested deeper than the limit, or a file larger than the limit.
-Descriptions may come from devices and networks, so rdisc bounds the work any
-input can cause before it reads it."""),
+Too much to read: an expression nested deeper than 100 levels, a line longer
+than 65,536 characters, a declaration of more than 20,000 tokens, a description
+of more than 200,000 tokens with its imports, a file larger than 8 MiB, or more
+than 256 imported files. Descriptions may come from devices and networks, so
+rdisc bounds the work any input can cause before it reads it."""),
     ("E006", "unreadable-file", """
 The file could not be read: it does not exist, is not readable, or is not UTF-8
 text."""),
@@ -76,11 +78,14 @@ state variables only."""),
 The name is a keyword of the language or the name of a built-in function, and
 cannot name an element, parameter, field or state variable."""),
     ("E105", "unknown-type", """
-Types are `int`, `float`, `bool` and `string`."""),
+Types are `int`, `float`, `bool`, `string` and `bytes`. `bytes` are for
+parameters and replies (a `*` rest, a `Ns` field); a state variable, a constant or
+an adapter field cannot be bytes: keep `len(out[1])` or `byte(out[1], 0)`."""),
     ("E106", "unknown-function", """
 Only the built-in functions can be called in expressions: abs, min, max, round,
-int, float, bool, str, clamp, sqrt, sin, cos, atan2, hypot. There is no way to
-reach Python's own functions, attributes or modules."""),
+int, float, bool, str, clamp, sqrt, sin, cos, atan2, hypot, len (of a string or
+bytes) and byte (`byte(data, i)`, the i-th byte of bytes as an int). There is no
+way to reach Python's own functions, attributes or modules."""),
     ("E107", "robot-declaration", """
 A description has exactly one `robot` declaration, in its main file. Imported
 files hold reusable declarations (adapters, primitives, ...) but no robot."""),
@@ -126,7 +131,8 @@ use. It must call primitives of exactly one connection (or the description must
 have a single connection)."""),
     ("E209", "unsupported-kind", """
 The connection kind or threading model is not supported. Connections are
-`serial`; threading is `single`."""),
+`serial` (a serial port, or any pyserial URL) or `tcp` (a `socket://host:port`
+address); threading is `single`: one thread per connection."""),
     # -- message formats -------------------------------------------------------
     ("E301", "invalid-pack-format", """
 `pack` and `unpack` take Python struct format strings: an optional byte order
@@ -164,8 +170,12 @@ A float flows into an integer: an `int` parameter, an integer pack code or an
 `int` state variable. Say how to convert it, usually with `round(...)` (nearest)
 or `int(...)` (towards zero)."""),
     ("E403", "value-out-of-range", """
-A constant cannot be represented by its pack code: 300 does not fit `B`
-(0..255), -1 does not fit `H` (0..65535)."""),
+A constant cannot be represented where it goes: 300 does not fit pack code `B`
+(0..255), -1 does not fit `H` (0..65535), "ABCDE" does not fit `4s`, 1e39 does
+not fit `f`; a constant argument is outside its parameter's range (a primitive's
+or a frame's: `frame dxl(id: int in 0..254)` refuses `dxl(300)`); a frame field
+computed from constant arguments does not fit its code. At run time the same is
+an `RdisValueError`, raised before anything is written."""),
     ("E404", "invalid-operation", """
 The operator or function does not apply to these types: arithmetic needs
 numbers, bitwise operators and shifts need integers, `and`/`or`/`not` and the
@@ -195,7 +205,8 @@ request as sent, in a reply); they come before the checksum."""),
     ("E503", "length-field", """
 A length field holds the payload's size plus a constant, in a struct format of
 one unsigned integer. It must be able to hold the largest payload of every
-primitive that uses the frame, and the frame's reply must let the reader find
+primitive that uses the frame (for a `*` rest of a `bytes` parameter, every
+length its range allows), and the frame's reply must let the reader find
 the end of the payload: a length field, a size fixed by the decoding, or
 constant bytes right after the payload."""),
     ("E504", "frame-use", """

@@ -31,6 +31,7 @@ STANDARD_BAUDS = frozenset(
      76800, 115200, 230400, 250000, 460800, 500000, 576000, 921600, 1000000, 1152000, 1500000, 2000000,
      2500000, 3000000, 3500000, 4000000)
 )
+CONNECTION_KINDS = ("serial", "tcp")
 DEFAULT_BAUD = 9600
 DEFAULT_FREQUENCY_HZ = 10.0
 MAX_TERMINATOR = 8
@@ -310,7 +311,7 @@ class _Checker:
 
     def connection(self, decl: ast.ConnectionDecl, interface_params) -> m.Connection:
         name = decl.name
-        if decl.kind.text not in ("serial", "tcp"):
+        if decl.kind.text not in CONNECTION_KINDS:
             self.d.report("E209", decl.kind.span, f"unknown connection kind `{decl.kind.text}`",
                           help="connections are `serial` or `tcp` (a `socket://host:port` port)")
         baud_clause = self.once([a for a in decl.attrs if isinstance(a, ast.Baud)], "`baud`", name)

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import difflib
 import re
 
 # Named terminals of grammar/rdis.lark, in words.
@@ -75,8 +76,23 @@ def _found(token) -> str:
     return f"`{text}`"
 
 
-def describe_unexpected(err, chunk: str, last: bool) -> tuple[str, int, int, str, str | None]:
-    """(code, offset in chunk, length, message, label) for a Lark error."""
+def _hint(token, accepted: set[str], after: str) -> str | None:
+    """Help for a likely slip: a misspelt keyword, or a comment written as in C (`after`:
+    the text from the token on)."""
+    text = str(token)
+    if after.startswith(("//", "/*")):
+        return "comments start with `#`, and doc comments with `///`"
+    if not re.fullmatch(r"[A-Za-z][A-Za-z0-9_]*", text):
+        return None
+    keywords = {t.lower() for t in accepted if re.fullmatch(r"[A-Z]+", t) and t not in _WORDS}
+    if "DECLARATION" in accepted:
+        keywords |= {t.lower() for t in _DECLARATIONS}
+    close = difflib.get_close_matches(text, sorted(keywords), n=1, cutoff=0.6)
+    return f"did you mean `{close[0]}`?" if close and close[0] != text else None
+
+
+def describe_unexpected(err, chunk: str, last: bool) -> tuple[str, int, int, str, str | None, str | None]:
+    """(code, offset in chunk, length, message, label, help) for a Lark error."""
     import lark
 
     if isinstance(err, lark.exceptions.UnexpectedCharacters):
@@ -85,13 +101,14 @@ def describe_unexpected(err, chunk: str, last: bool) -> tuple[str, int, int, str
         if char == '"' or chunk[offset : offset + 2] == 'r"':
             line_end = chunk.find("\n", offset)
             line_end = len(chunk) if line_end == -1 else line_end
-            return ("E002", offset, line_end - offset, "unterminated string", "this string is not closed on its line")
+            return ("E002", offset, line_end - offset, "unterminated string", "this string is not closed on its line",
+                    None)
         if char == "'":
-            return ("E002", offset, 1, "unexpected character `'`", "strings are written in double quotes")
+            return ("E002", offset, 1, "unexpected character `'`", "strings are written in double quotes", None)
         if char == "_":
-            return ("E002", offset, 1, "names cannot start with `_`", "a name starts with a letter")
+            return ("E002", offset, 1, "names cannot start with `_`", "a name starts with a letter", None)
         shown = repr(char)[1:-1] if not char.isprintable() or char.isspace() else char
-        return ("E002", offset, 1, f"unexpected character `{shown}`", "no token starts with this character")
+        return ("E002", offset, 1, f"unexpected character `{shown}`", "no token starts with this character", None)
 
     token = err.token
     accepted = set(err.expected)
@@ -102,14 +119,15 @@ def describe_unexpected(err, chunk: str, last: bool) -> tuple[str, int, int, str
     expected = expected_words(accepted)
     if token.type == "$END":
         if last:
-            return ("E001", len(chunk), 0, f"expected {expected}, found the end of the file", None)
+            return ("E001", len(chunk), 0, f"expected {expected}, found the end of the file", None, None)
         return (
             "E001",
             len(chunk),
             0,
             f"expected {expected} before the next declaration",
             "the declaration before this one is not finished",
+            None,
         )
     start = token.start_pos or 0
     length = max(1, (token.end_pos or start + 1) - start)
-    return ("E001", start, length, f"expected {expected}, found {_found(token)}", None)
+    return ("E001", start, length, f"expected {expected}, found {_found(token)}", None, _hint(token, accepted, chunk[start : start + 2]))

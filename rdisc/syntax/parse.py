@@ -149,10 +149,10 @@ def parse_expression(path: str, text: str, base_offset: int, diagnostics: Diagno
     try:
         tree = parser().parse(text, start="expr_start", on_error=_keyword_as_name)
     except lark.exceptions.UnexpectedInput as err:
-        code, offset, length, message, label = describe_unexpected(err, text, True)
+        code, offset, length, message, label, help = describe_unexpected(err, text, True)
         at = base_offset + offset
         message = message.replace("the end of the file", "the end of the expression")
-        diagnostics.report(code, Span(path, at, at + length), message, label=label)
+        diagnostics.report(code, Span(path, at, at + length), message, label=label, help=help)
         return None
     depth, deepest = _depth(tree)
     if depth > MAX_TREE_DEPTH:
@@ -229,6 +229,6 @@ def _depth(tree) -> tuple[int, object]:
 
 
 def _report_syntax_error(err, path, text, start, end, last, diagnostics) -> None:
-    code, offset, length, message, label = describe_unexpected(err, text[start:end], last)
+    code, offset, length, message, label, help = describe_unexpected(err, text[start:end], last)
     at = start + offset
-    diagnostics.report(code, Span(path, at, min(at + length, len(text))), message, label=label)
+    diagnostics.report(code, Span(path, at, min(at + length, len(text))), message, label=label, help=help)

@@ -144,3 +144,20 @@ def test_clause_keywords_are_names_where_a_name_is_expected() -> None:
     actions = module.decls[0].clauses[-1]
     assert [a.target.text for a in actions.assigns] == ["a", "baud", "length"]
     assert actions.assigns[2].value == ast.BinOp("+", ast.Index(ast.Ref("out"), ast.IntLit(2)), ast.Ref("mask"))
+
+
+@pytest.mark.parametrize(
+    ("text", "help"),
+    [
+        ('primtive p() on c pack "B" (1)\n', "did you mean `primitive`?"),
+        ("conection c: serial { baud 9600 }\n", "did you mean `connection`?"),
+        ('primitive p() on c pack "B" (1) unpakc "B"\n', "did you mean `unpack`?"),
+        ("connection c: serial { baud 9600 treminator 10 }\n", "did you mean `terminator`?"),
+        ("// a comment as in C\nstate s: int = 0\n", "comments start with `#`, and doc comments with `///`"),
+        ("/* a comment as in C */\nstate s: int = 0\n", "comments start with `#`, and doc comments with `///`"),
+        ("state s: int = 0\nbanana b\n", None),  # nothing close: no guess
+    ],
+)
+def test_a_slip_gets_help(text: str, help: str | None) -> None:
+    _, diagnostics = parsed(text)
+    assert [d.help for d in diagnostics.items] == [help]
