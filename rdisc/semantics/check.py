@@ -590,7 +590,9 @@ class _Checker:
         known: dict[str, object] = {}
         for param, arg in zip(frame.params, args):
             value = self.typer.constant(arg)
-            if value is not None and (param.low is None or param.low <= value <= param.high):  # type: ignore[operator]
+            if arg.type is not param.type or value is None:  # a mismatch is reported already
+                continue
+            if param.low is None or param.low <= value <= param.high:  # type: ignore[operator]
                 known[param.name] = value
         spans = {p.name: expr.span for p, expr in zip(frame.params, clause.args)}
         seen: set[tuple[str, m.Expr]] = set()

@@ -131,3 +131,14 @@ def test_a_call_within_the_limits_is_written_whole(robot: Any, call: tuple, writ
     port.written.clear()
     robot.call_primitive(*call)
     assert bytes(port.written) == b"\xff" * (call[0] != "mark") + bytes.fromhex(written)
+
+
+def test_an_argument_of_another_type_is_one_type_error(tmp_path: Path) -> None:
+    """Found by the fuzzer: a string where a ranged int goes was compared with the range."""
+    source, result = _check(tmp_path, HEAD + 'primitive bad() on link frame c("x") pack "B" (1)\n'
+                                           'primitive worse() on link frame tagged(2.5) pack "B" (1)\n')
+    assert result.returncode == 1
+    assert [line for line in result.stderr.splitlines() if line.startswith(("error", "rdisc:"))] == [
+        "error[E401]: parameter `id` of frame `c` takes an int, but this is a string",
+        "error[E402]: parameter `kind` of frame `tagged` takes an int, but this is a float",
+    ]
