@@ -233,6 +233,13 @@ adapters round a non-standard rate or refuse it."""),
 The struct format has no byte-order prefix, so it uses the host's native byte
 order and alignment (padding between fields). Devices have a fixed order: write
 `<` (little-endian) or `>` (big-endian)."""),
+    ("W403", "thesis-float-truncated", """
+Thesis-style JSON (no `parameterTypes`) ran on the thesis's Python 2 interpreter,
+whose `struct` packed a float given to an integer code by truncating it towards
+zero. `rdisc import` keeps that behaviour where a float may go into an int
+parameter: `"<velocity * 1000>"` into `drive(velocity: int, ...)` is imported as
+`int(velocity * 1000)`, and this warning shows each such conversion. Write
+`round(...)` instead where the device wants the nearest integer."""),
     ("W401", "link-budget", """
 The traffic this connection schedules (periodic interfaces every tick, keepalive
 every interval; 10 bits a byte at 8N1) needs more bytes per second than the baud

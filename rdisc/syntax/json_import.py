@@ -14,8 +14,9 @@ default as in thesis Appendix A. Thesis JSON has no types, so parameter types
 are inferred: a primitive parameter passed bare as format argument i has the
 type of value i of the template (else int); an interface parameter passed bare
 to a primitive parameter has that parameter's type (else float). An input or
-output without an adapter gets the standard adapter with exactly its fields, or
-an adapter of float fields made for it.
+output without an adapter gets the standard adapter with exactly its fields (for
+an input, in its order: else a copy of it in that order), or an adapter of float
+fields made for it.
 
 A member of the wrong kind, a missing name or an unknown member is an E008 error
 at the offending value, and the element it belongs to is left out (as the parser
@@ -25,6 +26,7 @@ values are bounded (E005) before Lark sees the text.
 
 from __future__ import annotations
 
+import dataclasses
 import difflib
 import json
 import math
@@ -41,6 +43,7 @@ from rdisc.source import Span
 from rdisc.syntax import ast
 from rdisc.syntax.build import MAX_INT_DIGITS
 from rdisc.syntax.parse import MAX_FILE_CHARS, parse, parse_expression
+from rdisc.syntax.printer import print_expr
 
 MAX_DEPTH = 100  # nesting of JSON arrays and objects
 MAX_VALUES = 200_000  # a description has thousands; parsing costs about 15 µs a value
@@ -339,17 +342,13 @@ Members = dict[str, JValue]
 
 
 @lru_cache(maxsize=1)
-def _standard_adapters() -> dict[str, dict[str, str]]:
-    """Field names and types of the standard adapters (stdlib/adapters.rdis)."""
+def _standard_adapters() -> dict[str, ast.AdapterDecl]:
+    """The standard adapters (stdlib/adapters.rdis), by name."""
     from rdisc.resources import stdlib_path
 
     path = stdlib_path()
     module = parse(str(path), path.read_text(encoding="utf-8"), Diagnostics())
-    return {
-        d.name.text: {f.name.text: f.type.text for f in d.fields}
-        for d in module.decls
-        if isinstance(d, ast.AdapterDecl)
-    }
+    return {d.name.text: d for d in module.decls if isinstance(d, ast.AdapterDecl)}
 
 
 class _Importer:
@@ -357,7 +356,7 @@ class _Importer:
         self.path = path
         self.d = diagnostics
         self.standard = _standard_adapters()
-        self.adapter_fields: dict[str, dict[str, str]] = dict(self.standard)
+        self.adapter_fields = {name: {f.name.text: f.type.text for f in a.fields} for name, a in self.standard.items()}
         self.primitive_types: dict[str, tuple[str, ...]] = {}
         self.interface_types: dict[str, tuple[str, ...]] = {}
         self.made_adapters: list[ast.AdapterDecl] = []
@@ -720,10 +719,29 @@ class _Importer:
             return "float"
 
         params = self.params(m, infer)
+        if "parameterTypes" not in m:  # thesis JSON, which ran on Python 2
+            floats = {p.name.text for p in params if p.type.text == "float"}
+            body = [self.truncated(stmt, floats) for stmt in body]
         if name is None:
             return None
         self.interface_types[name.text] = tuple(p.type.text for p in params)
         return ast.InterfaceDecl(name, params, tuple(clauses), tuple(body), obj.span, self.doc(m))
+
+    def truncated(self, stmt: ast.CallStmt, floats: set[str]) -> ast.CallStmt:
+        """A call as the thesis ran it: Python 2's `struct` truncated a float packed with an
+        integer code towards zero, so an argument that may be a float going into an int
+        parameter is imported as `int(...)`, with a warning that shows it."""
+        types = self.primitive_types.get(stmt.call.target.text, ())
+        args = list(stmt.call.args)
+        for i, (arg, type_) in enumerate(zip(args, types)):
+            if type_ == "int" and _may_be_float(arg, floats):
+                args[i] = ast.CallExpr(ast.Ident("int", arg.span), (arg,), arg.span)
+                self.d.report("W403", arg.span, f"a float going into an int: imported as `{print_expr(args[i])}`, "
+                              "towards zero, as Python 2's struct packed it for the thesis",
+                              help="write `round(...)` instead if the device wants the nearest integer")
+        if args == list(stmt.call.args):
+            return stmt
+        return dataclasses.replace(stmt, call=dataclasses.replace(stmt.call, args=tuple(args)))
 
     def call_stmt(self, obj: JObject) -> ast.CallStmt | None:
         m = self.members(obj, "a primitive call", _CALL)
@@ -773,7 +791,7 @@ class _Importer:
         if target is None:
             return None
         args = self.args(c.get("arguments"), self.interface_types.get(target.text, ()))
-        adapter = self.adapter_of(obj, m, name, params)
+        adapter = self.adapter_of(obj, m, name, params, ordered=True)
         call = ast.Call(target, args, calls.span)
         return ast.InputDecl(name, adapter, call, obj.span, self.doc(m))
 
@@ -794,21 +812,32 @@ class _Importer:
             assigns.append(None if expr is None else ast.Assign(field_, expr, value.span))
         return ast.OutputDecl(name, adapter, _present(assigns), obj.span, self.doc(m))
 
-    def adapter_of(self, obj: JObject, m: Members, element: ast.Ident, names: list[ast.Ident]) -> ast.Ident:
-        """The adapter named, else the standard one with exactly these fields, else a new one."""
+    def adapter_of(self, obj: JObject, m: Members, element: ast.Ident, names: list[ast.Ident],
+                   ordered: bool = False) -> ast.Ident:
+        """The adapter named, else the standard one with exactly these fields, else a new one.
+        Where the order of the fields is the element's (an input's parameters), a standard
+        adapter with them in another order is copied in this order: its units and ROS paths
+        kept, and the parameters' order kept through `rdisc build`."""
         if "adapter" in m:
             return self.ident(m["adapter"], "`adapter`") or ast.Ident("", m["adapter"].span)
-        wanted = {n.text for n in names}
-        for adapter, fields_ in self.standard.items():
-            if set(fields_) == wanted:
-                return ast.Ident(adapter, self.opening(obj))
+        wanted = [n.text for n in names]
+        standard = next((a for a in self.standard.values() if {f.name.text for f in a.fields} == set(wanted)), None)
+        if standard is not None and (not ordered or [f.name.text for f in standard.fields] == wanted):
+            return ast.Ident(standard.name.text, self.opening(obj))
         base = "".join(part[:1].upper() + part[1:] for part in element.text.split("_")) + "Message"
         made, n = base, 2
         while made in self.adapter_fields:
             made, n = f"{base}{n}", n + 1
-        decl_fields = tuple(ast.FieldDecl(f, ast.Ident("float", f.span), None, None, f.span) for f in names)
-        self.made_adapters.append(ast.AdapterDecl(ast.Ident(made, element.span), None, decl_fields, obj.span))
-        self.adapter_fields[made] = {f.text: "float" for f in names}
+        if standard is not None:
+            by_name = {f.name.text: f for f in standard.fields}
+            decl_fields = tuple(dataclasses.replace(by_name[f.text], span=f.span) for f in names)
+            doc = f"{standard.name.text}, with its fields in the order of `{element.text}`."
+            decl = ast.AdapterDecl(ast.Ident(made, element.span), standard.ros, decl_fields, obj.span, doc)
+        else:
+            decl_fields = tuple(ast.FieldDecl(f, ast.Ident("float", f.span), None, None, f.span) for f in names)
+            decl = ast.AdapterDecl(ast.Ident(made, element.span), None, decl_fields, obj.span)
+        self.made_adapters.append(decl)
+        self.adapter_fields[made] = {f.name.text: f.type.text for f in decl_fields}
         return ast.Ident(made, element.span)
 
     # -- parameters, arguments and expressions --
@@ -1015,6 +1044,32 @@ def _str_lit(s: JString | None) -> ast.StrLit | None:
 
 def _embedded(value: str) -> bool:
     return len(value) >= 3 and value[0] == "<" and value[-1] == ">"
+
+
+_FLOAT_FUNCTIONS = frozenset(["float", "sqrt", "sin", "cos", "atan2", "hypot"])
+
+
+def _may_be_float(e: ast.Expr, floats: set[str]) -> bool:
+    """Whether an expression of thesis JSON, whose float names are `floats`, may be a float
+    (the checker decides for sure; this front end only decides what to convert)."""
+    match e:
+        case ast.FloatLit():
+            return True
+        case ast.Ref(name=name):
+            return name in floats
+        case ast.Unary(op=op, operand=operand):
+            return op in "+-" and _may_be_float(operand, floats)
+        case ast.BinOp(op="/"):
+            return True
+        case ast.BinOp(op=op, left=left, right=right) if op in ("+", "-", "*", "//", "%", "**"):
+            return _may_be_float(left, floats) or _may_be_float(right, floats)
+        case ast.Conditional(then=then, orelse=orelse):
+            return _may_be_float(then, floats) or _may_be_float(orelse, floats)
+        case ast.CallExpr(func=func, args=args):
+            if func.text in _FLOAT_FUNCTIONS or (func.text == "round" and len(args) == 2):
+                return True
+            return func.text in ("abs", "min", "max", "clamp") and any(_may_be_float(a, floats) for a in args)
+    return False
 
 
 def _is_zero(v: JValue) -> bool:

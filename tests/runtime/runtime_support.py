@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import io
+import json
 import threading
 import time
 from collections.abc import Callable
@@ -62,3 +63,14 @@ class MemoryPort(io.BytesIO):
                 break
             out += byte
         return bytes(out)
+
+
+def typed_thesis_create(folder: Path) -> Path:
+    """Appendix B with its `drive` interface typed (`parameterTypes`): then a float going into
+    the primitive's ints is two E402 errors, not a thesis truncation."""
+    document = json.loads((REPO / "tests" / "syntax" / "data" / "thesis_create.json").read_text(encoding="utf-8"))
+    drive = next(i for i in document["interfaces"] if i["name"] == "drive")
+    drive["parameterTypes"] = ["float", "float"]
+    path = folder / "typed_thesis_create.json"
+    path.write_text(json.dumps(document), encoding="utf-8")
+    return path

@@ -8,7 +8,7 @@ import struct
 import pytest
 from devices import CreateEmulator
 from devices.create import DRIVE, STOP
-from runtime_support import CREATE, DATA, REPO, Recorder
+from runtime_support import CREATE, DATA, REPO, Recorder, typed_thesis_create
 
 from rdisc.runtime import RdisLoadError, load
 
@@ -54,9 +54,9 @@ def test_a_hostile_expression_is_refused_and_never_evaluated(tmp_path, monkeypat
     assert not marker.exists()
 
 
-def test_a_description_with_errors_is_a_load_error() -> None:
+def test_a_description_with_errors_is_a_load_error(tmp_path) -> None:
     with pytest.raises(RdisLoadError) as caught:
-        load(REPO / "tests" / "syntax" / "data" / "thesis_create.json")
+        load(typed_thesis_create(tmp_path))
     assert str(caught.value).count("error[E402]") == 2
     assert str(caught.value).endswith("2 errors emitted")
 

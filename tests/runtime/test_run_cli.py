@@ -13,7 +13,7 @@ import pytest
 from conftest import cli_env
 from devices import CreateEmulator, KoalaEmulator
 from devices.create import DRIVE, SENSORS, STOP, TABLE_4_3
-from runtime_support import CREATE, DATA, KOALA, REPO
+from runtime_support import CREATE, DATA, KOALA, REPO, typed_thesis_create
 
 
 def test_table_4_3_through_rdisc_run(rdisc) -> None:
@@ -80,8 +80,8 @@ def test_a_port_that_cannot_be_opened(rdisc, tmp_path) -> None:
     assert "Traceback" not in result.stderr
 
 
-def test_a_description_with_errors_shows_its_diagnostics(rdisc) -> None:
-    result = rdisc("run", REPO / "tests" / "syntax" / "data" / "thesis_create.json", "--port", "loop://")
+def test_a_description_with_errors_shows_its_diagnostics(rdisc, tmp_path) -> None:
+    result = rdisc("run", typed_thesis_create(tmp_path), "--port", "loop://")
     assert result.returncode == 1
     assert "error[E402]" in result.stderr
     assert "2 errors emitted" in result.stderr

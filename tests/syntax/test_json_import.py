@@ -38,7 +38,9 @@ def test_thesis_appendix_b() -> None:
     """Appendix B with the expressions PDF extraction lost restored."""
     source = DATA / "thesis_create.json"
     module, diagnostics = imported(source.read_text(encoding="utf-8"))
-    assert not diagnostics.items
+    assert [(d.code, d.message) for d in diagnostics.items] == [
+        ("W403", f"a float going into an int: imported as `int({name} * 1000)`, towards zero, as Python 2's struct "
+                 "packed it for the thesis") for name in ("velocity", "radius")]
     assert print_module(module) == (DATA / "thesis_create.rdis").read_text(encoding="utf-8")
 
 
@@ -46,8 +48,10 @@ def test_spans_point_into_the_json() -> None:
     text = (DATA / "thesis_create.json").read_text(encoding="utf-8")
     module, _ = imported(text)
     body = decl(module, ast.InterfaceDecl, "drive").body[0]
-    product = body.call.args[0]
-    assert isinstance(product, ast.BinOp)
+    truncated = body.call.args[0]  # int(...), as Python 2 packed the float: spanning what it converts
+    assert isinstance(truncated, ast.CallExpr) and truncated.func.text == "int"
+    product = truncated.args[0]
+    assert isinstance(product, ast.BinOp) and truncated.span == product.span
     assert text[product.span.start : product.span.end] == "velocity * 1000"
     assert text[product.left.span.start : product.left.span.end] == "velocity"
     assert SourceFile("t.json", text).position(product.span.start).line + 1 == 31
@@ -190,7 +194,7 @@ def test_adapters_standard_declared_and_made() -> None:
                             "fields": [{"name": "a", "type": "int", "unit": "1", "ros": "a", "doc": "First."},
                                        {"name": "b", "type": "string"}]}],
         "domainInterfaces": [
-            {"name": "set_velocity", "parameters": ["angular", "linear"], "calls": {"name": "drive", "arguments": []}},
+            {"name": "set_velocity", "parameters": ["linear", "angular"], "calls": {"name": "drive", "arguments": []}},
             {"name": "set_pair", "adapter": "Pair", "parameters": ["a", "b"], "calls": {"name": "go"}},
             {"name": "set_mode", "parameters": ["mode", "level"], "calls": {"name": "go", "arguments": ["<mode>"]}},
         ],
@@ -432,3 +436,40 @@ def test_deep_expression_is_refused() -> None:
     assert d.code == "E005" and d.message.startswith("expression is nested too deeply")
     assert SourceFile("t.json", text).position(d.span.start).line == 1 and text[d.span.start] == "-"
     assert module is not None and module.damaged == (ast.Damaged("state", ast.Ident("s")),)
+
+
+def test_an_input_keeps_the_order_of_its_parameters() -> None:
+    """Appendix B lists `angular, linear`: the standard adapter is copied in that order, with its
+    units and ROS paths, so that the order comes back from `rdisc build`."""
+    document = {"name": "r", "domainInterfaces": [
+        {"name": "set_velocity", "parameters": ["angular", "linear"], "calls": {"name": "drive", "arguments": []}}]}
+    assert printed(document) == """\
+robot r {}
+
+/// DifferentialSpeed, with its fields in the order of `set_velocity`.
+adapter SetVelocityMessage ros "geometry_msgs/Twist" {
+    /// Rate of turn about the vertical axis; positive is counter-clockwise.
+    angular: float unit "rad/s" ros "angular.z"
+    /// Forward speed of the robot's centre; negative drives backwards.
+    linear: float unit "m/s" ros "linear.x"
+}
+
+input set_velocity: SetVelocityMessage -> drive()
+"""
+
+
+def test_appendix_b_checks_and_its_build_keeps_what_it_says(tmp_path: Path) -> None:
+    """Appendix B as the thesis ran it: no error, the truncations shown, and building it, importing
+    the build and building again gives the same JSON, with `set_velocity`'s parameters in their order."""
+    from rdisc.emit.canonical import to_json
+
+    compilation = compile_path(str(DATA / "thesis_create.json"))
+    assert compilation.model is not None
+    assert [d.code for d in compilation.diagnostics.items] == ["W403", "W403", "W402"]
+    built = to_json(compilation.model)
+    (tmp_path / "built.json").write_text(built, encoding="utf-8")
+    again = compile_path(str(tmp_path / "built.json"))
+    assert again.model is not None and not again.diagnostics.has_errors()
+    assert to_json(again.model) == built
+    (velocity,) = json.loads(built)["domainInterfaces"]
+    assert velocity["parameters"] == ["angular", "linear"]
