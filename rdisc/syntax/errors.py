@@ -76,7 +76,7 @@ def _found(token) -> str:
     return f"`{text}`"
 
 
-def _hint(token, accepted: set[str], after: str) -> str | None:
+def _hint(token: object, accepted: set[str], after: str) -> str | None:
     """Help for a likely slip: a misspelt keyword, or a comment written as in C (`after`:
     the text from the token on)."""
     text = str(token)

@@ -721,7 +721,7 @@ class _Importer:
         params = self.params(m, infer)
         if "parameterTypes" not in m:  # thesis JSON, which ran on Python 2
             floats = {p.name.text for p in params if p.type.text == "float"}
-            body = [self.truncated(stmt, floats) for stmt in body]
+            body = tuple(self.truncated(stmt, floats) for stmt in body)
         if name is None:
             return None
         self.interface_types[name.text] = tuple(p.type.text for p in params)

@@ -33,7 +33,7 @@ input turn: PlanarSpeed -> drive(forward, turn)
 
 
 def test_the_examples_check_clean(tmp_path: Path) -> None:
-    blocks = re.findall(r"```rdis\n(.*?)```", DOC.read_text(encoding="utf-8"), re.S)
+    blocks = re.findall(r"```rdis\n(.*?)```", DOC.read_text(encoding="utf-8"), re.DOTALL)
     assert len(blocks) >= 10
     (tmp_path / "servos").mkdir()
     (tmp_path / "servos" / "common.rdis").write_text("const COMMON = 1\n", encoding="utf-8")

@@ -8,7 +8,7 @@ import struct
 import pytest
 from devices import CreateEmulator
 from devices.create import DRIVE, STOP
-from runtime_support import CREATE, DATA, REPO, Recorder, typed_thesis_create
+from runtime_support import CREATE, DATA, Recorder, typed_thesis_create
 
 from rdisc.runtime import RdisLoadError, load
 

@@ -135,7 +135,7 @@ def test_a_call_within_the_limits_is_written_whole(robot: Any, call: tuple, writ
 
 def test_an_argument_of_another_type_is_one_type_error(tmp_path: Path) -> None:
     """Found by the fuzzer: a string where a ranged int goes was compared with the range."""
-    source, result = _check(tmp_path, HEAD + 'primitive bad() on link frame c("x") pack "B" (1)\n'
+    _source, result = _check(tmp_path, HEAD + 'primitive bad() on link frame c("x") pack "B" (1)\n'
                                            'primitive worse() on link frame tagged(2.5) pack "B" (1)\n')
     assert result.returncode == 1
     assert [line for line in result.stderr.splitlines() if line.startswith(("error", "rdisc:"))] == [

@@ -39,8 +39,8 @@ def test_thesis_appendix_b() -> None:
     source = DATA / "thesis_create.json"
     module, diagnostics = imported(source.read_text(encoding="utf-8"))
     assert [(d.code, d.message) for d in diagnostics.items] == [
-        ("W403", f"a float going into an int: imported as `int({name} * 1000)`, towards zero, as Python 2's struct "
-                 "packed it for the thesis") for name in ("velocity", "radius")]
+        ("W403", (f"a float going into an int: imported as `int({name} * 1000)`, towards zero, as Python 2's struct "
+                 "packed it for the thesis")) for name in ("velocity", "radius")]
     assert print_module(module) == (DATA / "thesis_create.rdis").read_text(encoding="utf-8")
 
 
