@@ -64,10 +64,11 @@ Two elements of the same kind have the same name. Names are unique per kind: a
 primitive and an interface may share a name (the place of a reference decides
 its kind), two primitives may not. Both places are shown."""),
     ("E102", "unknown-element", """
-A reference to an element that is not declared: a primitive called by an
-interface, an interface called by a hook or an input, an output triggered by an
-interface, a connection, or an adapter. When a declared name is close, the help
-line suggests it."""),
+A reference to an element that is not declared: a primitive or interface called
+by an interface (a call names a primitive of that name, or else an interface), an
+interface called by a hook or an input, an output triggered by an interface, a
+connection, a frame, or an adapter. When a declared name is close, the help line
+suggests it."""),
     ("E103", "unknown-variable", """
 A name used in an expression is not in scope there. Scopes follow the thesis:
 state variables are readable everywhere except in initial values; primitives also
@@ -133,6 +134,12 @@ have a single connection)."""),
 The connection kind or threading model is not supported. Connections are
 `serial` (a serial port, or any pyserial URL) or `tcp` (a `socket://host:port`
 address); threading is `single`: one thread per connection."""),
+    ("E210", "interface-cycle", """
+An interface may call other interfaces (a call names a primitive of that name, or
+else an interface), but the calls must not lead back to the interface that makes
+them: a cycle would never end, and neither the link budget nor the worst-case time
+of a call could be known. Break the cycle: move the shared calls into an interface
+that both call."""),
     # -- message formats -------------------------------------------------------
     ("E301", "invalid-pack-format", """
 `pack` and `unpack` take Python struct format strings: an optional byte order

@@ -349,7 +349,7 @@ class _Driver:
                           [(name, e, types.get(name, e.type)) for name, e in o.fields], "dict[str, Value]")
             w.blank(2)
             w.line(f"{self.plan['output', o.name]} = Output({quoted(o.name)}, {function})")
-        for iface in model.interfaces.values():
+        for iface in model.callees_first():
             w.blank(2)
             self.interface(w, iface)
         for i in model.inputs.values():
@@ -472,19 +472,18 @@ class _Driver:
         self.comment(w, iface.span, f"interface {iface.name}" + (" (periodic)" if iface.periodic else ""))
         calls = []
         for n, c in enumerate(iface.run_order(), 1):
-            prim = self.model.primitives[c.primitive]
             function = f"_i_{iface.name}_{n}"
             if n > 1:
                 w.blank(2)
             options = [f"priority {c.priority}"] if c.priority else []
             options += [f"delay {c.delay_ms:g} ms"] if c.delay_ms else []
-            self.comment(w, c.span, ", ".join([f"call {prim.name}", *options]))
-            direct = _direct(prim, c)
+            self.comment(w, c.span, ", ".join([f"call {'interface ' if c.interface else ''}{c.primitive}", *options]))
+            direct = None if c.interface else _direct(self.model.primitives[c.primitive], c)
             self.function(w, function, "state: StateValues, args: Args", iface.params,
                           direct if direct is not None else [("", a, None) for a in c.args], "Args")
             delay = f", {c.delay_ms / 1000.0!r}" if c.delay_ms or direct is not None else ""
-            calls.append(f"Call({self.plan['primitive', prim.name]}, {function}{delay}"
-                         + (", direct=True)" if direct is not None else ")"))
+            target = self.plan["interface" if c.interface else "primitive", c.primitive]
+            calls.append(f"Call({target}, {function}{delay}" + (", direct=True)" if direct is not None else ")"))
         if calls:
             w.blank(2)
         output = {"output": self.plan["output", iface.triggers]} if iface.triggers else {}

@@ -54,7 +54,10 @@ class Description:
         self._frames = {f.name: self._frame(f) for f in model.frames.values()}
         primitives = {p.name: self._primitive(p) for p in model.primitives.values()}
         outputs = {o.name: self._output(o) for o in model.outputs.values()}
-        interfaces = {i.name: self._interface(i, primitives, outputs) for i in model.interfaces.values()}
+        planned: dict[str, engine.Interface] = {}
+        for iface in model.callees_first():
+            planned[iface.name] = self._interface(iface, primitives, outputs, planned)
+        interfaces = {name: planned[name] for name in model.interfaces}
         inputs = {i.name: self._input(i, interfaces) for i in model.inputs.values()}
         connections = {c.name: self._connection(c, interfaces) for c in model.connections.values()}
         self.device = engine.Device(self.name, {s.name: s.initial for s in model.states.values()}, connections,
@@ -124,16 +127,23 @@ class Description:
         return engine.Output(o.name, lambda s: {name: coerce(f(s, _EMPTY, ()), t) for name, f, t in fields})
 
     def _interface(self, iface: m.Interface, primitives: Mapping[str, engine.Primitive],
-                   outputs: Mapping[str, engine.Output]) -> engine.Interface:
+                   outputs: Mapping[str, engine.Output], callees: Mapping[str, engine.Interface]) -> engine.Interface:
+        """The interface's plan; `callees`, the plans of the interfaces it calls."""
         slots = _slots(iface.params)
-        calls = tuple(self._call(c, slots, primitives[c.primitive]) for c in iface.run_order())
+        calls = []
+        for c in iface.run_order():
+            if c.interface:
+                args = _values([prepare(a, slots) for a in c.args])
+                calls.append(engine.Call(callees[c.primitive], args, c.delay_ms / 1000.0))
+            else:
+                calls.append(self._call(c, slots, primitives[c.primitive]))
         output = outputs[iface.triggers] if iface.triggers else None
-        return engine.Interface(iface.name, _params(iface.params), calls, output)
+        return engine.Interface(iface.name, _params(iface.params), tuple(calls), output)
 
     def _call(self, call: m.PrimitiveCall, slots: dict[str, int], plan: engine.Primitive) -> engine.Call:
-        """A call, with the primitive's format arguments substituted where that changes nothing
-        (`formats_its_params`): its format values are computed straight from the call's
-        arguments, the same expressions evaluated in the same order."""
+        """A call of a primitive, with its format arguments substituted where that changes
+        nothing (`formats_its_params`): its format values are computed straight from the
+        call's arguments, the same expressions evaluated in the same order."""
         primitive = self.model.primitives[call.primitive]
         delay = call.delay_ms / 1000.0
         if not primitive.formats_its_params():

@@ -866,11 +866,11 @@ class Output:
 
 @dataclass(frozen=True, slots=True)
 class Call:
-    """A primitive call of an interface: its arguments over state and the interface's
-    parameters, and the delay after it. `direct`: the arguments are the primitive's format
-    values (it has no frame, table, ranges or post-actions)."""
+    """A call of an interface: of a primitive or of another interface, its arguments over
+    state and the interface's parameters, and the delay after it. `direct`: the arguments
+    are the primitive's format values (it has no frame, table, ranges or post-actions)."""
 
-    primitive: Primitive
+    target: Primitive | Interface
     args: Callable[[StateValues, Args], Args]
     delay: float = 0.0  # seconds
     direct: bool = False
@@ -914,7 +914,7 @@ class Input:
     def __post_init__(self) -> None:
         object.__setattr__(self, "kinds", tuple(f.kind for f in self.fields))
         call = _written_at_once(self.interface)
-        object.__setattr__(self, "primitive", call.primitive if call is not None else None)
+        object.__setattr__(self, "primitive", call.target if call is not None else None)
         request = None if call is None else self.request or _composed(self, call)
         object.__setattr__(self, "request", request)
 
@@ -925,7 +925,9 @@ def _written_at_once(interface: Interface) -> Call | None:
     if len(interface.calls) != 1 or interface.ranged or interface.output is not None:
         return None
     call = interface.calls[0]
-    prim = call.primitive
+    prim = call.target
+    if not isinstance(prim, Primitive):
+        return None
     plain = isinstance(prim.encoder, Pack) and not prim.encoder.strings and not prim.encoder.rest
     if not call.direct or call.delay or not plain or prim.expects_reply or prim.frame is not None:
         return None
@@ -935,7 +937,8 @@ def _written_at_once(interface: Interface) -> Call | None:
 def _composed(plan: Input, call: Call) -> Request:
     """The general way of an input written at once (`Robot._input`), as one function."""
     kinds, args_of, floats, values_of = plan.kinds, plan.args, plan.interface.floats, call.args
-    encoder = call.primitive.encoder
+    assert isinstance(call.target, Primitive)  # `_written_at_once`
+    encoder = call.target.encoder
     assert isinstance(encoder, Pack)
     pack = encoder.struct.pack
 
@@ -1573,10 +1576,13 @@ class Robot:
                 values = call.args(self._state, args)
             except EVAL_ERRORS as err:
                 raise RdisValueError(f"{plan.name}: {err}") from None
-            if call.direct:  # the call's values are the primitive's format values
-                self._exchange(call.primitive, values, values)
+            target = call.target
+            if isinstance(target, Interface):
+                self._interface(target, values)
+            elif call.direct:  # the call's values are the primitive's format values
+                self._exchange(target, values, values)
             else:
-                self._primitive(call.primitive, values)
+                self._primitive(target, values)
             if call.delay:
                 time.sleep(call.delay)
         if plan.output is not None:

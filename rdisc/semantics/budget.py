@@ -128,14 +128,14 @@ def exchange(model: m.Model, iface: m.Interface, connection: str) -> Exchange:
     count = 0
     wire = 0.0
     delays = 0.0
-    for call in iface.calls:
+    for call, delay in model.primitive_calls(iface):
         prim = model.primitives[call.primitive]
         size = message_bytes(prim, model.frames)
         baud = model.connections[prim.connection].baud
         wire += size * BITS_PER_BYTE * 1000.0 / baud
         if prim.connection == connection:
             count += size
-        delays += call.delay_ms
+        delays += delay
     return Exchange(iface.name, count, wire, delays)
 
 

@@ -9,6 +9,7 @@ returned only when no error was found.
 from __future__ import annotations
 
 import math
+from collections.abc import Iterator
 
 from rdisc.diagnostics import Diagnostics, Label, abbreviate
 from rdisc.semantics import formats, ros
@@ -73,8 +74,9 @@ class _Checker:
         primitives = self.primitives = {name: self.primitive(decl) for name, decl in self.s.primitives.items()}
         connections = {name: self.connection(decl, interface_params) for name, decl in self.s.connections.items()}
         interfaces = {
-            name: self.interface(decl, interface_params[name], primitives) for name, decl in self.s.interfaces.items()
+            name: self.interface(decl, interface_params, primitives) for name, decl in self.s.interfaces.items()
         }
+        self.interface_cycles(interfaces)
         inputs = {name: self.input(decl, adapters, interface_params) for name, decl in self.s.inputs.items()}
         outputs = {name: self.output(decl, adapters) for name, decl in self.s.outputs.items()}
         robot = self.robot()
@@ -724,8 +726,10 @@ class _Checker:
             out.append(m.PostAction(m.StateRef(target), value, assign.span))
         return tuple(out)
 
-    def interface(self, decl: ast.InterfaceDecl, params: tuple[m.Parameter, ...], primitives) -> m.Interface:
+    def interface(self, decl: ast.InterfaceDecl, interface_params: dict[str, tuple[m.Parameter, ...]],
+                  primitives) -> m.Interface:
         name = decl.name
+        params = interface_params[name.text]
         kind = self.once([c for c in decl.clauses if isinstance(c, ast.Kind)], "the kind (`periodic`/`adhoc`)", name)
         periodic = isinstance(kind, ast.Kind) and kind.word == "periodic"
         triggers = self.once([c for c in decl.clauses if isinstance(c, ast.Triggers)], "`triggers`", name)
@@ -739,12 +743,18 @@ class _Checker:
         env = self.env_with(scope, "in an interface", "its parameters and state variables")
         calls: list[m.PrimitiveCall] = []
         for stmt in decl.body:
-            target = self.s.primitives.get(stmt.call.target.text)
-            prim = primitives.get(stmt.call.target.text)
-            args = self.call(stmt.call, prim.params if prim else None, env, "primitive",
-                             target.name if target else None)
-            if prim is not None:
-                self.constants_into_pack(prim, args, stmt.call.args)
+            callee = stmt.call.target.text
+            calls_interface = callee not in self.s.primitives and callee in self.s.interfaces
+            if calls_interface:
+                args = self.call(stmt.call, interface_params[callee], env, "interface",
+                                 self.s.interfaces[callee].name)
+            else:
+                target = self.s.primitives.get(callee)
+                prim = primitives.get(callee)
+                args = self.call(stmt.call, prim.params if prim else None, env, "primitive",
+                                 target.name if target else None)
+                if prim is not None:
+                    self.constants_into_pack(prim, args, stmt.call.args)
             delay_clause = self.once(list(stmt.delays), "`delay`", stmt.call.target)
             delay = self.duration(delay_clause, "a delay") if isinstance(delay_clause, ast.Duration) else 0
             if delay is not None and delay < 0:
@@ -754,7 +764,7 @@ class _Checker:
             if priority is not None and priority != int(priority):
                 self.d.report("E204", priority_expr.span, "a priority must be an integer")  # type: ignore[union-attr]
             calls.append(m.PrimitiveCall(
-                m.PrimitiveRef(stmt.call.target.text), args, delay or 0, int(priority or 0), stmt.span
+                m.PrimitiveRef(callee), args, delay or 0, int(priority or 0), stmt.span, calls_interface
             ))
         if periodic:
             self.periodic_connection(decl)
@@ -782,11 +792,35 @@ class _Checker:
         if not slot.low <= value <= slot.high:  # type: ignore[operator]
             self.d.report("E403", span, f"{shown(value)} does not fit pack code `{slot.code}`{where}", label=label)
 
+    def interface_cycles(self, interfaces: dict[str, m.Interface]) -> None:
+        """Calls between interfaces form no cycle, so every call ends and its cost is known:
+        each cycle is reported once, at the call that closes it in the interface first declared."""
+        done: set[str] = set()
+
+        def visit(name: str, path: list[tuple[str, m.PrimitiveCall]]) -> None:
+            if name in done:
+                return
+            for call in interfaces[name].calls:
+                if not call.interface or call.primitive not in interfaces:
+                    continue
+                on_path = [n for n, _ in path] + [name]
+                if call.primitive in on_path:
+                    ring = on_path[on_path.index(call.primitive):]
+                    through = " -> ".join(f"`{n}`" for n in [*ring, call.primitive])
+                    self.d.report("E210", call.span, f"interface `{name}` calls `{call.primitive}`, which leads "
+                                  f"back to it: {through}",
+                                  help="calls between interfaces must end: break the cycle")
+                    continue
+                visit(call.primitive, [*path, (name, call)])
+            done.add(name)
+
+        for name in interfaces:
+            visit(name, [])
+
     def periodic_connection(self, decl: ast.InterfaceDecl) -> None:
         used: dict[str, ast.Ident] = {}
-        for stmt in decl.body:
-            prim = self.s.primitives.get(stmt.call.target.text)
-            on = next((c for c in prim.clauses if isinstance(c, ast.On)), None) if prim else None
+        for stmt, prim in self.primitives_called(decl, set()):
+            on = next((c for c in prim.clauses if isinstance(c, ast.On)), None)
             if on is not None:
                 used.setdefault(on.connection.text, stmt.call.target)
         if len(used) > 1:
@@ -799,6 +833,19 @@ class _Checker:
         elif not used and len(self.s.connections) > 1 and not decl.body:
             self.d.report("E208", decl.name.span,
                           f"periodic interface `{decl.name.text}` calls no primitive, so its connection is unknown")
+
+    def primitives_called(self, decl: ast.InterfaceDecl,
+                          seen: set[str]) -> Iterator[tuple[ast.CallStmt, ast.PrimitiveDecl]]:
+        """The primitive declarations an interface calls, through the interfaces it calls (each
+        once: a cycle is reported on its own), with the statement in `decl` that leads there."""
+        seen.add(decl.name.text)
+        for stmt in decl.body:
+            callee = stmt.call.target.text
+            prim = self.s.primitives.get(callee)
+            if prim is not None:
+                yield stmt, prim
+            elif callee in self.s.interfaces and callee not in seen:
+                yield from ((stmt, p) for _, p in self.primitives_called(self.s.interfaces[callee], seen))
 
     def input(self, decl: ast.InputDecl, adapters: dict[str, m.Adapter], interface_params) -> m.DomainInput:
         adapter = adapters.get(decl.adapter.text)

@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import dataclasses
 import enum
+from collections.abc import Iterator
 from dataclasses import dataclass, field
 from typing import NewType
 
@@ -377,11 +378,15 @@ class Primitive:
 
 @dataclass(frozen=True, slots=True)
 class PrimitiveCall:
+    """A call in an interface's body: of a primitive, or (`interface`, when no primitive has
+    the name) of another interface; the checker keeps the calls between interfaces acyclic."""
+
     primitive: PrimitiveRef
     args: tuple[Expr, ...]
     delay_ms: float = 0
     priority: int = 0
     span: Span | None = _span
+    interface: bool = False
 
 
 @dataclass(frozen=True, slots=True)
@@ -455,8 +460,37 @@ class Model:
     enums: dict[str, dict[str, int]] = field(default_factory=dict)
 
     def owner(self, iface: Interface) -> str | None:
-        """The connection whose thread runs a periodic interface: its first call's primitive's."""
-        calls = iface.run_order()
-        if calls:
-            return self.primitives[calls[0].primitive].connection
+        """The connection whose thread runs a periodic interface: its first primitive's."""
+        first = next(self.primitive_calls(iface), None)
+        if first is not None:
+            return self.primitives[first[0].primitive].connection
         return next(iter(self.connections), None)
+
+    def callees_first(self) -> list[Interface]:
+        """The interfaces, each after the interfaces it calls (the checker keeps the calls
+        between interfaces acyclic), else as declared."""
+        ordered: dict[str, Interface] = {}
+
+        def place(iface: Interface) -> None:
+            if iface.name in ordered:
+                return
+            for call in iface.calls:
+                if call.interface:
+                    place(self.interfaces[call.primitive])
+            ordered[iface.name] = iface
+
+        for iface in self.interfaces.values():
+            place(iface)
+        return list(ordered.values())
+
+    def primitive_calls(self, iface: Interface) -> Iterator[tuple[PrimitiveCall, float]]:
+        """The primitive calls an interface makes, in run order, through the interfaces it
+        calls, each with the delay after it (a called interface's own delay comes after its
+        last call's)."""
+        for call in iface.run_order():
+            if not call.interface:
+                yield call, call.delay_ms
+                continue
+            inner = list(self.primitive_calls(self.interfaces[call.primitive]))
+            for j, (prim, delay) in enumerate(inner):
+                yield prim, delay + (call.delay_ms if j == len(inner) - 1 else 0)

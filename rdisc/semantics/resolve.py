@@ -179,8 +179,10 @@ def _bind(decl: ast.Decl, symbols: Symbols, diagnostics: Diagnostics) -> None:
             for clause in decl.clauses:
                 if isinstance(clause, ast.Triggers):
                     need(clause.output, symbols.outputs, "output")
-            for stmt in decl.body:
-                need(stmt.call.target, symbols.primitives, "primitive")
+            for stmt in decl.body:  # a primitive, or else an interface, of the name
+                name = stmt.call.target.text
+                if not symbols.is_damaged("primitive", name) and not symbols.is_damaged("interface", name):
+                    need(stmt.call.target, {**symbols.interfaces, **symbols.primitives}, "primitive or interface")
         case ast.InputDecl():
             need(decl.adapter, symbols.adapters, "adapter")
             need(decl.call.target, symbols.interfaces, "interface")

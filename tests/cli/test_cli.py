@@ -124,7 +124,7 @@ def test_explain_a_code(rdisc, spelling: str) -> None:
     assert result.returncode == 0
     assert result.stdout == f"E102 (unknown-element)\n\n{CODES['E102'].explanation}\n"
     assert result.stdout.startswith(
-        "E102 (unknown-element)\n\nA reference to an element that is not declared: a primitive called by an\n"
+        "E102 (unknown-element)\n\nA reference to an element that is not declared: a primitive or interface called\n"
     )
 
 

@@ -130,7 +130,7 @@ def test_check_broken_copy_reports_a_diagnostic(installed: Installed) -> None:
     broken.write_text(text.replace("    bumpers() delay", "    bumpres() delay"), encoding="utf-8")
     done = installed.run("check", broken)
     assert done.returncode == 1, done.stderr
-    assert "error[E102]: unknown primitive `bumpres`" in done.stderr
+    assert "error[E102]: unknown primitive or interface `bumpres`" in done.stderr
     assert "broken.rdis:" in done.stderr and "did you mean `bumpers`?" in done.stderr
     assert "Traceback" not in done.stderr
 
