@@ -112,7 +112,8 @@ of `pack` or `format`."""),
     ("E203", "conflicting-clause", """
 Clauses that exclude each other, or a clause given twice: a primitive has exactly
 one of `pack`/`format` and at most one of `unpack`/`regex`; an interface is either
-`periodic` or `adhoc`; each attribute of a robot or connection is given once."""),
+`periodic` or `adhoc`, and lists the outputs it triggers in one `triggers`
+clause, each once; each attribute of a robot or connection is given once."""),
     ("E204", "invalid-value", """
 A setting outside its range: baud and frequency must be positive, a keepalive
 interval positive, a delay zero or more, a reply-line `terminator` 1 to 8 bytes.
@@ -228,7 +229,9 @@ the value of one of its int parameters, so that parameter needs a range
 one would send a request whose reply rdisc cannot read."""),
     # -- warnings --------------------------------------------------------------
     ("W102", "untriggered-output", """
-No interface triggers this output, so it is never delivered."""),
+No interface triggers this output, so it is never delivered. An interface
+triggers any number of outputs, delivered in order after its calls:
+`triggers detect_bump, odometry`."""),
     ("W103", "unread-state", """
 The state variable is never read by any expression and never written by a
 post-action: nothing uses it. (State that post-actions write is the host's to

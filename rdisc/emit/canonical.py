@@ -208,7 +208,7 @@ def _interface(i: m.Interface) -> JsonObject:
         ("parameterTypes", [param.type.value for param in i.params] or None),
         ("parameterRanges", _ranges(i.params)),
         ("primitiveCalls", calls),
-        ("triggers", i.triggers),
+        ("triggers", (i.triggers[0] if len(i.triggers) == 1 else list(i.triggers)) or None),  # one: as the thesis
         ("doc", i.doc),
     )
 

@@ -486,7 +486,7 @@ class _Driver:
             calls.append(f"Call({target}, {function}{delay}" + (", direct=True)" if direct is not None else ")"))
         if calls:
             w.blank(2)
-        output = {"output": self.plan["output", iface.triggers]} if iface.triggers else {}
+        output = {"outputs": _tuple([self.plan["output", o] for o in iface.triggers])} if iface.triggers else {}
         _construct(w, f"{self.plan['interface', iface.name]} = ", "Interface",
                    [quoted(iface.name), _param_tuple(iface.params), _tuple(calls)], output)
 

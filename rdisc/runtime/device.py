@@ -137,8 +137,8 @@ class Description:
                 calls.append(engine.Call(callees[c.primitive], args, c.delay_ms / 1000.0))
             else:
                 calls.append(self._call(c, slots, primitives[c.primitive]))
-        output = outputs[iface.triggers] if iface.triggers else None
-        return engine.Interface(iface.name, _params(iface.params), tuple(calls), output)
+        triggered = tuple(outputs[o] for o in iface.triggers)
+        return engine.Interface(iface.name, _params(iface.params), tuple(calls), triggered)
 
     def _call(self, call: m.PrimitiveCall, slots: dict[str, int], plan: engine.Primitive) -> engine.Call:
         """A call of a primitive, with its format arguments substituted where that changes

@@ -768,7 +768,13 @@ class _Checker:
             ))
         if periodic:
             self.periodic_connection(decl)
-        out_ref = m.OutputRef(triggers.output.text) if isinstance(triggers, ast.Triggers) else None
+        outputs: dict[str, ast.Ident] = {}
+        for output in triggers.outputs if isinstance(triggers, ast.Triggers) else ():
+            if output.text in outputs:
+                self.d.report("E203", output.span, f"`{output.text}` is triggered twice",
+                              labels=(Label(outputs[output.text].span, "first given here"),))
+            outputs.setdefault(output.text, output)
+        out_ref = tuple(m.OutputRef(o) for o in outputs)
         return m.Interface(name.text, params, periodic, tuple(calls), out_ref, decl.doc, decl.span)
 
     def constants_into_pack(self, prim: m.Primitive, args: tuple[m.Expr, ...], exprs: tuple[ast.Expr, ...]) -> None:
@@ -905,7 +911,7 @@ class _Checker:
         host's to call, through `call_primitive` and `call_interface`, so none is unused.)"""
         if self.s.damaged:  # what the lost declarations used is unknown
             return
-        triggered = {i.triggers for i in interfaces.values() if i.triggers}
+        triggered = {o for i in interfaces.values() for o in i.triggers}
         for name, decl in self.s.outputs.items():
             if name not in triggered and id(decl) in self.main_decls and ("output", name) not in self.s.suggested:
                 self.d.report("W102", decl.name.span, f"output `{name}` is never triggered",

@@ -395,7 +395,7 @@ class Interface:
     params: tuple[Parameter, ...]
     periodic: bool
     calls: tuple[PrimitiveCall, ...]  # as written
-    triggers: OutputRef | None = None
+    triggers: tuple[OutputRef, ...] = ()  # delivered in this order after the calls
     doc: str | None = None
     span: Span | None = _span
 

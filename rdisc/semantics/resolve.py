@@ -178,7 +178,8 @@ def _bind(decl: ast.Decl, symbols: Symbols, diagnostics: Diagnostics) -> None:
         case ast.InterfaceDecl():
             for clause in decl.clauses:
                 if isinstance(clause, ast.Triggers):
-                    need(clause.output, symbols.outputs, "output")
+                    for output in clause.outputs:
+                        need(output, symbols.outputs, "output")
             for stmt in decl.body:  # a primitive, or else an interface, of the name
                 name = stmt.call.target.text
                 if not symbols.is_damaged("primitive", name) and not symbols.is_damaged("interface", name):

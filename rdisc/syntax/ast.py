@@ -324,7 +324,7 @@ class Kind:
 
 @dataclass(frozen=True, slots=True)
 class Triggers:
-    output: Ident
+    outputs: tuple[Ident, ...]
     span: Span = _span
 
 

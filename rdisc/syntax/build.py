@@ -260,7 +260,7 @@ def _transformer_class():
             return ast.Kind(c[0], self.b.span(meta))
 
         def triggers(self, meta, c):
-            return ast.Triggers(self.b.ident(c[0]), self.b.span(meta))
+            return ast.Triggers(tuple(self.b.ident(n) for n in c), self.b.span(meta))
 
         def call_stmt(self, meta, c):
             call = ast.Call(self.b.ident(c[0]), c[1] or (), self.b.span(meta))

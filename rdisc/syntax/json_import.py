@@ -702,9 +702,12 @@ class _Importer:
             self.error(kind.span, f"an interface's `type` is `adhoc` or `periodic`, not {kind.raw}")
         elif kind is not None and kind.value == "periodic":  # adhoc is the default, left unsaid
             clauses.append(ast.Kind("periodic", kind.span))
-        triggers = self.ident(m["triggers"], "`triggers`") if "triggers" in m else None
-        if triggers is not None:
-            clauses.append(ast.Triggers(triggers, triggers.span))
+        if "triggers" in m:  # an output's name, as in the thesis, or a list of them
+            value = m["triggers"]
+            items = self.array(value, "`triggers`") if isinstance(value, JArray) else [value]
+            outputs = _present([self.ident(item, "`triggers`") for item in items])
+            if outputs:
+                clauses.append(ast.Triggers(tuple(outputs), value.span))
         calls = [
             self.object(item, "a primitive call")
             for item in self.array(m.get("primitiveCalls"), "`primitiveCalls`")

@@ -199,8 +199,8 @@ def _interface_clause(c: ast.InterfaceClause) -> str:
     match c:
         case ast.Kind(word):
             return word
-        case ast.Triggers(output):
-            return f"triggers {output.text}"
+        case ast.Triggers(outputs):
+            return "triggers " + ", ".join(o.text for o in outputs)
         case _:
             _unreachable(c)
 

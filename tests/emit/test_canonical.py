@@ -113,7 +113,7 @@ def model() -> m.Model:
                 (),
                 True,
                 (m.PrimitiveCall(m.PrimitiveRef("sense"), ()),),
-                triggers=m.OutputRef("bump"),
+                triggers=(m.OutputRef("bump"),),
             ),
         },
         adapters={

@@ -111,3 +111,50 @@ def test_calls_that_lead_back_are_refused_once_each(tmp_path: Path) -> None:
         ("E210", "interface `c` calls `a`, which leads back to it: `a` -> `b` -> `c` -> `a`"),
         ("E210", "interface `d` calls `d`, which leads back to it: `d` -> `d`"),
     ]
+
+
+BUMPERS = """\
+robot bumpers { author "tests" }
+state bumps: int = 0
+connection link: serial { baud 9600 }
+primitive bumpers() on link pack "B" (142) unpack "B" { bumps = out[0] }
+interface poll() periodic triggers left_bump, right_bump {
+    bumpers()
+}
+output left_bump: Range { distance = 0.0 if bumps & 2 != 0 else 1.0 }
+output right_bump: Range { distance = 0.0 if bumps & 1 != 0 else 1.0 }
+"""
+
+
+@pytest.mark.parametrize("kind", ["runtime", "driver"])
+def test_an_interface_triggers_several_outputs_in_order(kind: str, tmp_path: Path) -> None:
+    source = tmp_path / "bumpers.rdis"
+    source.write_text(BUMPERS, encoding="utf-8")
+    implementation = load(source) if kind == "runtime" else import_driver(source, tmp_path, "bumpers_driver")
+    delivered: list[dict[str, Any]] = []
+    with implementation.connect(ScriptedPort(b"\x02"), threads=False, on_output=delivered.append) as robot:
+        robot.call_interface("poll")
+    assert delivered == [{"name": "left_bump", "contents": {"distance": 0.0}},
+                         {"name": "right_bump", "contents": {"distance": 1.0}}]
+
+
+def test_several_outputs_go_through_json_and_back(tmp_path: Path) -> None:
+    source = tmp_path / "bumpers.rdis"
+    source.write_text(BUMPERS, encoding="utf-8")
+    compilation = compile_path(str(source))
+    assert compilation.model is not None
+    built = to_json(compilation.model)
+    (poll,) = json.loads(built)["interfaces"]
+    assert poll["triggers"] == ["left_bump", "right_bump"]  # one output is a name, as in the thesis
+    (tmp_path / "bumpers.json").write_text(built, encoding="utf-8")
+    again = compile_path(str(tmp_path / "bumpers.json"))
+    assert again.model is not None and to_json(again.model) == built
+
+
+def test_an_output_triggered_twice_is_one_error(tmp_path: Path) -> None:
+    source = tmp_path / "twice.rdis"
+    source.write_text(BUMPERS.replace("triggers left_bump, right_bump", "triggers left_bump, right_bump, left_bump"),
+                      encoding="utf-8")
+    compilation = compile_path(str(source))
+    assert [(d.code, d.message) for d in compilation.diagnostics.items] == [
+        ("E203", "`left_bump` is triggered twice")]

@@ -301,7 +301,8 @@ declarations = st.one_of(
     ),
     st.builds(
         ast.InterfaceDecl, ids, params,
-        st.lists(st.one_of(st.builds(ast.Kind, st.sampled_from(["periodic", "adhoc"])), st.builds(ast.Triggers, ids)),
+        st.lists(st.one_of(st.builds(ast.Kind, st.sampled_from(["periodic", "adhoc"])),
+                           st.builds(ast.Triggers, st.lists(ids, min_size=1, max_size=3).map(tuple))),
                  max_size=2).map(tuple),
         st.lists(st.builds(ast.CallStmt, calls, st.lists(durations, max_size=2).map(tuple),
                            st.lists(expressions, max_size=2).map(tuple)), max_size=3).map(tuple),

@@ -881,12 +881,12 @@ class Call:
 
 @dataclass(frozen=True, slots=True)
 class Interface:
-    """A host-side operation: its calls in run order, then the output it triggers."""
+    """A host-side operation: its calls in run order, then the outputs it triggers."""
 
     name: str
     params: tuple[Param, ...]
     calls: tuple[Call, ...]
-    output: Output | None = None
+    outputs: tuple[Output, ...] = ()
     floats: tuple[int, ...] = field(init=False)
     ranged: tuple[int, ...] = field(init=False)
 
@@ -925,7 +925,7 @@ class Input:
 def _written_at_once(interface: Interface) -> Call | None:
     """The interface's one call, when running it is only packing its values and writing them:
     no delay, range, output, frame, reply, post-action or string in the way."""
-    if len(interface.calls) != 1 or interface.ranged or interface.output is not None:
+    if len(interface.calls) != 1 or interface.ranged or interface.outputs:
         return None
     call = interface.calls[0]
     prim = call.target
@@ -1588,8 +1588,8 @@ class Robot:
                 self._primitive(target, values)
             if call.delay:
                 time.sleep(call.delay)
-        if plan.output is not None:
-            self._deliver(plan.output)
+        for output in plan.outputs:
+            self._deliver(output)
 
     def _primitive(self, plan: Primitive, args: Args) -> None:
         """Run a primitive with its parameters' values: its reply table's entry, if it has
@@ -2153,7 +2153,7 @@ _I_GET_BUMPERS = Interface(
     "get_bumpers",
     (),
     (Call(_P_BUMPERS, _i_get_bumpers_1, 0.015),),
-    output=_O_DETECT_BUMP,
+    outputs=(_O_DETECT_BUMP,),
 )
 
 

@@ -881,12 +881,12 @@ class Call:
 
 @dataclass(frozen=True, slots=True)
 class Interface:
-    """A host-side operation: its calls in run order, then the output it triggers."""
+    """A host-side operation: its calls in run order, then the outputs it triggers."""
 
     name: str
     params: tuple[Param, ...]
     calls: tuple[Call, ...]
-    output: Output | None = None
+    outputs: tuple[Output, ...] = ()
     floats: tuple[int, ...] = field(init=False)
     ranged: tuple[int, ...] = field(init=False)
 
@@ -925,7 +925,7 @@ class Input:
 def _written_at_once(interface: Interface) -> Call | None:
     """The interface's one call, when running it is only packing its values and writing them:
     no delay, range, output, frame, reply, post-action or string in the way."""
-    if len(interface.calls) != 1 or interface.ranged or interface.output is not None:
+    if len(interface.calls) != 1 or interface.ranged or interface.outputs:
         return None
     call = interface.calls[0]
     prim = call.target
@@ -1588,8 +1588,8 @@ class Robot:
                 self._primitive(target, values)
             if call.delay:
                 time.sleep(call.delay)
-        if plan.output is not None:
-            self._deliver(plan.output)
+        for output in plan.outputs:
+            self._deliver(output)
 
     def _primitive(self, plan: Primitive, args: Args) -> None:
         """Run a primitive with its parameters' values: its reply table's entry, if it has
@@ -2367,7 +2367,7 @@ _I_UPDATE_ODOMETRY = Interface(
     "update_odometry",
     (),
     (Call(_P_READ_SPEED, _i_update_odometry_1), Call(_P_READ_POSITION, _i_update_odometry_2)),
-    output=_O_ODOMETRY,
+    outputs=(_O_ODOMETRY,),
 )
 
 
@@ -2381,7 +2381,7 @@ _I_UPDATE_PROXIMITY = Interface(
     "update_proximity",
     (),
     (Call(_P_READ_PROXIMITY, _i_update_proximity_1),),
-    output=_O_OBSTACLE,
+    outputs=(_O_OBSTACLE,),
 )
 
 
