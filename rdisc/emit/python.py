@@ -261,6 +261,16 @@ class _Driver:
                     _emit(w, prefix, py, ",")
             w.line(closing)
 
+    def predicate(self, w: Writer, name: str, signature: str, params: tuple[m.Parameter, ...], e: m.Expr) -> None:
+        """`def name(signature) -> bool:` whose body unpacks `args` and returns the condition."""
+        local = _params([(prm.name, prm.type) for prm in params])
+        with w.block(f"def {name}({signature}) -> bool:"):
+            used = _names(e)
+            if used & {prm.name for prm in params}:
+                targets = [local[prm.name] if prm.name in used else "_" for prm in params]
+                w.line(f"({targets[0]},) = args" if len(targets) == 1 else f"{', '.join(targets)} = args")
+            _emit(w, "return ", self.exprs.expr(e, local))
+
     # -- the whole module ---------------------------------------------------------------------
 
     def module(self) -> str:
@@ -436,6 +446,10 @@ class _Driver:
             options["skip"] = "True"
         if prim.timeout_ms is not None:
             options["timeout"] = repr(prim.timeout_ms / 1000.0)
+        if prim.expect is not None:
+            options["expect"] = f"{base}_expect"
+            w.blank(2)
+            self.predicate(w, options["expect"], f"{signature}, reply: Sequence[Any]", prim.params, prim.expect)
         cases = [(prim, None)] if prim.table is None else [(prim.case(c), c) for c in prim.table.cases]
         table: list[str] = []
         for case, entry in cases:

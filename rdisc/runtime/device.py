@@ -111,10 +111,11 @@ class Description:
         frame = None
         if p.frame is not None:
             frame = engine.FrameUse(self._frames[p.frame.frame], _values([prepare(a, slots) for a in p.frame.args]))
+        expect = None if p.expect is None else prepare(p.expect, slots)
         return engine.Primitive(
             p.name, p.connection, _params(p.params), _values([prepare(a, slots) for a in p.args]),
             encoder(p.encoding), decoder(p.decoding), actions, frame, p.skip_unmatched,
-            None if p.timeout_ms is None else p.timeout_ms / 1000.0, checked=checked,
+            None if p.timeout_ms is None else p.timeout_ms / 1000.0, checked=checked, expect=expect,
         )
 
     def _frame(self, frame: m.Frame) -> engine.Frame:

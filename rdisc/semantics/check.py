@@ -415,6 +415,7 @@ class _Checker:
                 reply=reply if decodings else None, reply_note=note, reply_known=reply is not None,
             )
             actions = self.actions(action_blocks[0], action_env, {p.name for p in params})
+        expect = self.expect(decl, scope, reply, bool(decodings))
         connection = m.ConnectionRef(on.connection.text) if isinstance(on, ast.On) else m.ConnectionRef("")
         table_clause = self.once([c for c in decl.clauses if isinstance(c, ast.ReplyTable)], "a reply table", name)
         table = None
@@ -453,8 +454,29 @@ class _Checker:
                 timeout = None
             elif not replies and not (frame and self.frames[frame.frame].reply):
                 self.d.report("E204", timeout_clause.span, f"`{name.text}` reads no reply, so it has no timeout")
+        if expect is not None and table is not None:
+            self.d.report("E203", expect.span, f"primitive `{name.text}` has a reply table and also `expect`",  # type: ignore[union-attr]
+                          help="`expect` checks the reply of a primitive with one decoding")
         return m.Primitive(name.text, params, connection, encoding, args, decoding, actions, decl.doc, decl.span,  # type: ignore[arg-type]
-                           frame, skip is not None, table, timeout)
+                           frame, skip is not None, table, timeout, expect)
+
+    def expect(self, decl: ast.PrimitiveDecl, scope: dict, reply: tuple[Type, ...] | None,
+               decodes: bool) -> m.Expr | None:
+        """`expect COND`: a bool over the parameters, state and the decoded reply `out`
+        (`reply`, its types: None when its template was reported)."""
+        clause = self.once([c for c in decl.clauses if isinstance(c, ast.Expect)], "`expect`", decl.name)
+        if not isinstance(clause, ast.Expect):
+            return None
+        note = None if decodes else f"primitive `{decl.name.text}` decodes no reply: add `unpack` or `regex`"
+        env = self.env_with(scope, "in an `expect`", "`out`, parameters and state variables",
+                            reply=reply if decodes else None, reply_note=note, reply_known=reply is not None)
+        condition = self.typer.expr(clause.condition, env)
+        if not decodes and not any(isinstance(c, ast.ReplyTable) for c in decl.clauses):  # a table: E203
+            self.d.report("E202", clause.span, f"`expect` checks a decoded reply, but `{decl.name.text}` decodes none",
+                          help="add `unpack` or `regex`")
+        elif condition.type is not None and condition.type is not Type.BOOL:
+            self.d.report("E401", clause.condition.span, f"`expect` takes a bool, but this is {describe(condition.type)}")
+        return condition
 
     def reply_table(self, clause: ast.ReplyTable, params: tuple[m.Parameter, ...], scope: dict,
                     name: ast.Ident) -> m.ReplyTable | None:

@@ -351,6 +351,7 @@ class Primitive:
     skip_unmatched: bool = False  # reads frames until one decodes, within the timeout
     table: ReplyTable | None = None  # the reply chosen by a parameter (then no `decoding`)
     timeout_ms: float | None = None  # how long its reply may take, instead of the robot's timeout
+    expect: Expr | None = None  # a condition on the decoded reply that it must meet
 
     def case(self, c: ReplyCase) -> Primitive:
         """This primitive as it is when its table's key (or its reply's tag) has c.value: one decoding."""
@@ -362,7 +363,7 @@ class Primitive:
         each once and in order (both planners then skip binding the parameters)."""
         used = [a.name for a in self.args if isinstance(a, Var) and a.scope is Scope.PARAM]
         simple = all(isinstance(a, Const) or (isinstance(a, Var) and a.scope is Scope.PARAM) for a in self.args)
-        return (simple and not (self.actions or self.frame or self.table)
+        return (simple and not (self.actions or self.frame or self.table or self.expect)
                 and all(p.low is None for p in self.params) and used == [p.name for p in self.params])
 
     def expects_reply(self, frames: dict[str, Frame]) -> bool:

@@ -304,7 +304,15 @@ class ReplyTimeout:
     span: Span = _span
 
 
-PrimitiveClause = On | Encoding | Decoding | Actions | Framed | SkipUnmatched | ReplyTable | ReplyTimeout
+@dataclass(frozen=True, slots=True)
+class Expect:
+    """`expect COND`: a condition on the decoded reply (`out`) that a reply must meet."""
+
+    condition: Expr
+    span: Span = _span
+
+
+PrimitiveClause = On | Encoding | Decoding | Actions | Framed | SkipUnmatched | ReplyTable | ReplyTimeout | Expect
 
 
 @dataclass(frozen=True, slots=True)

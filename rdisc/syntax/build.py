@@ -304,6 +304,9 @@ def _transformer_class():
         def reply_timeout(self, meta, c):
             return ast.ReplyTimeout(c[0], self.b.span(meta))
 
+        def expect(self, meta, c):
+            return ast.Expect(c[0], self.b.span(meta))
+
         def skip_unmatched(self, meta, c):
             return ast.SkipUnmatched(self.b.span(meta))
 

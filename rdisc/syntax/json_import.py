@@ -315,7 +315,7 @@ _CONNECTION = (
 )  # fmt: skip
 _PRIMITIVE = (
     "name", "parameters", "parameterTypes", "parameterRanges", "connection", "pack", "format", "formatArgs",
-    "unpack", "regex", "frame", "skipUnmatched", "replyTable", "timeout", "postActions", "doc",
+    "unpack", "regex", "frame", "skipUnmatched", "replyTable", "timeout", "expect", "postActions", "doc",
 )  # fmt: skip
 _FRAME = ("name", "parameters", "parameterTypes", "parameterRanges", "request", "reply", "stuffing", "doc")
 _CHECKSUM = (
@@ -671,6 +671,10 @@ class _Importer:
             wait = self.expr(m["timeout"], "float")
             if wait is not None:
                 clauses.append(ast.ReplyTimeout(ast.Duration(wait, "ms", wait.span), wait.span))
+        if "expect" in m:
+            condition = self.reply_expr(m["expect"], "`expect`")
+            if condition is not None:
+                clauses.append(ast.Expect(condition, m["expect"].span))
         table = self.object(m.get("replyTable"), "`replyTable`")
         if table is not None:
             clauses.append(self.reply_table(table))
@@ -903,6 +907,17 @@ class _Importer:
                 return self.parse(v.value[1:-1], offsets[1 : len(v.value)])
         self.error(v.span, f"expected an expression (a number, true/false or a string), found {_kind(v)}")
         return None
+
+    def reply_expr(self, v: JValue, what: str) -> ast.Expr | None:
+        """`"<expr>"` over the reply, called `__out__` as in post-actions."""
+        s = self.string(v, what)
+        if s is None:
+            return None
+        text, offsets = s.value, self.offsets(s)
+        if _embedded(text):
+            text, offsets = text[1:-1], offsets[1 : len(text)]
+        text, offsets = _reply_as_out(text, offsets)
+        return self.parse(text, offsets)
 
     def post_action(self, v: JValue) -> ast.Assign | None:
         """`"state = expr"` (or `"<state = expr>"`), with the reply as `__out__`."""

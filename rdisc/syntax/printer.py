@@ -246,6 +246,8 @@ def _primitive_clause(c: ast.PrimitiveClause) -> tuple[list[str], bool]:
             return ["skip unmatched"], False
         case ast.ReplyTimeout(duration):
             return [f"timeout {_duration(duration)}"], False
+        case ast.Expect(condition):
+            return [f"expect {print_expr(condition)}"], False
         case ast.ReplyTable(key, entries, _, tag):
             lines = [f"reply {key.text} {{" if tag is None else f"reply tag {p.quote(tag.value)} {{"]
             for entry in entries:

@@ -801,6 +801,7 @@ class Primitive:
     tag: str | None = None  # the struct format of the tag that starts the reply
     checked: tuple[str, ...] = ()  # state variables its post-actions may make too wide (checked as they are set)
     request: Request | None = None  # its parameters' values to the bytes, when it is only written (`_sent_at_once`)
+    expect: Callable[[StateValues, Args, Sequence[Any]], object] | None = None  # a condition its decoded reply meets
     expects_reply: bool = field(init=False)
     framed_reply: bool = field(init=False)
     floats: tuple[int, ...] = field(init=False)
@@ -1674,7 +1675,7 @@ class Robot:
             if plan.timeout is not None:
                 io.timeout = plan.timeout
             reader.begin(wait)
-            plan, reply = self._read_reply(plan, link, reader, fields, request, wait)
+            plan, reply = self._read_reply(plan, link, reader, fields, request, wait, local)
         except RdisError as err:
             failed = err
         except Exception as err:  # noqa: BLE001 - whatever the port raises, it failed
@@ -1698,8 +1699,9 @@ class Robot:
             self._assign(plan, local, reply)
 
     def _read_reply(self, plan: Primitive, link: _Link, reader: Incoming, fields: list[Any], request: bytes,
-                    wait: float) -> tuple[Primitive, Sequence[Any]]:
-        """The reply, decoded, and the plan whose post-actions take it (a tag's entry)."""
+                    wait: float, local: Args) -> tuple[Primitive, Sequence[Any]]:
+        """The reply, decoded and meeting its `expect`, and the plan whose post-actions take it
+        (a tag's entry)."""
         decoder = plan.decoder
         use = plan.frame
         if use is None or not plan.framed_reply:
@@ -1713,12 +1715,12 @@ class Robot:
                 text = line[: -len(end)]
                 if end == b"\n" and text.endswith(b"\r"):  # the default takes CR LF as well as LF
                     text = text[:-1]
-                return plan, decoder.decode(plan.name, text)
+                return plan, self._met(plan, local, decoder.decode(plan.name, text))
             assert decoder is not None
             data = reader.read(decoder.size)
             if not data:
                 raise RdisTimeout(f"{plan.name}: no reply within {wait:g} s")
-            return plan, decoder.decode(plan.name, data)
+            return plan, self._met(plan, local, decoder.decode(plan.name, data))
         # The decoding's size is the payload's, unless a tag comes first or stuffing may have lengthened
         # it on the wire (then the constant after the payload ends it).
         stuffed = use.frame.stuffing is not None and bool(use.frame.reply.delimiter)
@@ -1728,7 +1730,7 @@ class Robot:
                 payload = use.frame.read(reader, fields, request, size)[1]
                 if plan.tag_struct is not None:
                     return self._tagged(plan, payload)
-                return plan, decoder.decode(plan.name, payload) if decoder is not None else ()
+                return plan, self._met(plan, local, decoder.decode(plan.name, payload)) if decoder is not None else ()
             except (FrameError, RdisProtocolError) as err:
                 nothing = isinstance(err, FrameError) and err.timeout
                 if plan.skip and not nothing and reader.deadline is not None and time.monotonic() < reader.deadline:
@@ -1739,6 +1741,19 @@ class Robot:
                 if isinstance(err, RdisProtocolError):
                     raise
                 raise RdisProtocolError(f"{plan.name}: {err}") from None
+
+    def _met(self, plan: Primitive, local: Args, reply: Sequence[Any]) -> Sequence[Any]:
+        """The reply, when it meets the primitive's `expect` (else, like a reply that does not
+        decode, an RdisProtocolError, which `skip unmatched` reads past)."""
+        if plan.expect is None:
+            return reply
+        try:
+            met = plan.expect(self._state, local, reply)
+        except EVAL_ERRORS as err:
+            raise RdisProtocolError(f"{plan.name}: reply {tuple(reply)!r}: its `expect` failed: {err}") from None
+        if not met:
+            raise RdisProtocolError(f"{plan.name}: reply {tuple(reply)!r} does not meet its `expect`")
+        return reply
 
     @staticmethod
     def _tagged(plan: Primitive, payload: bytes) -> tuple[Primitive, Sequence[Any]]:
