@@ -455,12 +455,12 @@ class _Checker:
             elif not replies and not (frame and self.frames[frame.frame].reply):
                 self.d.report("E204", timeout_clause.span, f"`{name.text}` reads no reply, so it has no timeout")
         if expect is not None and table is not None:
-            self.d.report("E203", expect.span, f"primitive `{name.text}` has a reply table and also `expect`",  # type: ignore[union-attr]
+            self.d.report("E203", expect.span, f"primitive `{name.text}` has a reply table and also `expect`",
                           help="`expect` checks the reply of a primitive with one decoding")
         return m.Primitive(name.text, params, connection, encoding, args, decoding, actions, decl.doc, decl.span,  # type: ignore[arg-type]
                            frame, skip is not None, table, timeout, expect)
 
-    def expect(self, decl: ast.PrimitiveDecl, scope: dict, reply: tuple[Type, ...] | None,
+    def expect(self, decl: ast.PrimitiveDecl, scope: dict[str, tuple[Scope, Type]], reply: tuple[Type, ...] | None,
                decodes: bool) -> m.Expr | None:
         """`expect COND`: a bool over the parameters, state and the decoded reply `out`
         (`reply`, its types: None when its template was reported)."""
