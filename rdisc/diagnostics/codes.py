@@ -104,8 +104,9 @@ optionally with a list item `[i]` up to [1023], and optionally a final `:yaw`
     # -- structure -----------------------------------------------------------
     ("E201", "arity-mismatch", """
 A call passes a different number of arguments than its target takes: an
-interface calling a primitive, a hook calling an interface, an input calling an
-interface, or a built-in function."""),
+interface calling a primitive or an interface, a hook calling an interface, an
+input calling an interface, a primitive using a frame, or a built-in function.
+Parameters with a default (`speed: int = 5`) may be left out."""),
     ("E202", "missing-clause", """
 A required clause is missing: a primitive needs `on CONNECTION` and exactly one
 of `pack` or `format`."""),
@@ -117,7 +118,9 @@ clause, each once; each attribute of a robot or connection is given once."""),
     ("E204", "invalid-value", """
 A setting outside its range: baud and frequency must be positive, a keepalive
 interval positive, a delay zero or more, a reply-line `terminator` 1 to 8 bytes.
-Settings must be constants."""),
+Settings must be constants. A parameter's range has constant bounds, low <= high,
+of its type; a default is a constant, and the parameters after one with a default
+have defaults too."""),
     ("E205", "periodic-with-parameters", """
 A periodic interface runs on every tick of its connection's thread, where nobody
 supplies arguments, so it cannot take parameters."""),

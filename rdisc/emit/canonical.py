@@ -126,6 +126,7 @@ def _primitive(x: m.Primitive) -> JsonObject:
         ("parameters", [param.name for param in x.params]),
         ("parameterTypes", [param.type.value for param in x.params]),
         ("parameterRanges", _ranges(x.params)),
+        ("parameterDefaults", _defaults(x.params)),
         ("connection", x.connection),
         encoding,
         ("formatArgs", [_embedded(a) for a in x.args]),
@@ -155,12 +156,20 @@ def _ranges(params: tuple[m.Parameter, ...]) -> list[list[int | float] | None] |
     return [None if p.low is None else [p.low, p.high] for p in params]  # type: ignore[list-item]
 
 
+def _defaults(params: tuple[m.Parameter, ...]) -> list[str | None] | None:
+    """Each parameter's default as `"<value>"` (null without one); left out when none has one."""
+    if all(p.default is None for p in params):
+        return None
+    return [None if p.default is None else _embedded(m.Const(p.default, p.type)) for p in params]
+
+
 def _frame(f: m.Frame) -> JsonObject:
     return _object(
         ("name", f.name),
         ("parameters", [param.name for param in f.params]),
         ("parameterTypes", [param.type.value for param in f.params]),
         ("parameterRanges", _ranges(f.params)),
+        ("parameterDefaults", _defaults(f.params)),
         ("request", [_frame_part(part) for part in f.request]),
         ("reply", [_frame_part(part) for part in f.reply]),
         ("stuffing", None if f.stuffing is None else {"after": f.stuffing[0], "insert": f.stuffing[1]}),
@@ -208,6 +217,7 @@ def _interface(i: m.Interface) -> JsonObject:
         ("parameters", [param.name for param in i.params] or None),
         ("parameterTypes", [param.type.value for param in i.params] or None),
         ("parameterRanges", _ranges(i.params)),
+        ("parameterDefaults", _defaults(i.params)),
         ("primitiveCalls", calls),
         ("triggers", (i.triggers[0] if len(i.triggers) == 1 else list(i.triggers)) or None),  # one: as the thesis
         ("doc", i.doc),

@@ -634,7 +634,9 @@ class _Driver:
     def call_method(self, w: Writer, kind: str, name: str, method: str) -> None:
         element = self.model.interfaces[name] if kind == "interface" else self.model.primitives[name]
         local = _params([(prm.name, prm.type) for prm in element.params], frozenset({"self"}))
-        signature = "".join(f", {local[prm.name]}: {_PY_TYPES[prm.type]}" for prm in element.params)
+        signature = "".join(f", {local[prm.name]}: {_PY_TYPES[prm.type]}"
+                            + (f" = {literal(prm.default, prm.type).text}" if prm.default is not None else "")
+                            for prm in element.params)
         with w.block(f"def {method}(self{signature}) -> None:"):
             doc = [element.doc or f"The {kind} `{name}`."]
             ranged = [f"    {local[prm.name]}: {prm.range_text()}" for prm in element.params if prm.low is not None]
@@ -718,7 +720,8 @@ def _param_tuple(params: tuple[m.Parameter, ...]) -> str:
     items = []
     for prm in params:
         bounds = f", {prm.low!r}, {prm.high!r}" if prm.low is not None else ""
-        items.append(f"Param({quoted(prm.name)}, {_PY_TYPES[prm.type]}{bounds})")
+        default = f", default={literal(prm.default, prm.type).text}" if prm.default is not None else ""
+        items.append(f"Param({quoted(prm.name)}, {_PY_TYPES[prm.type]}{bounds}{default})")
     return _tuple(items)
 
 

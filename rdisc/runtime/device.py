@@ -186,7 +186,7 @@ class Description:
 
 
 def _params(params: tuple[m.Parameter, ...]) -> tuple[engine.Param, ...]:
-    return tuple(engine.Param(p.name, _KINDS[p.type], p.low, p.high) for p in params)
+    return tuple(engine.Param(p.name, _KINDS[p.type], p.low, p.high, p.default) for p in params)
 
 
 def _slots(params: tuple[m.Parameter, ...]) -> dict[str, int]:

@@ -127,8 +127,34 @@ class _Checker:
             seen[p.name.text] = p
             type_ = self.type_name(p.type)
             low, high = self.param_range(p, type_)
-            out.append(m.Parameter(p.name.text, type_, low, high))  # type: ignore[arg-type]
+            default = self.param_default(p, type_, low, high)
+            if default is None and p.default is None and any(q.default is not None for q in params[: len(out)]):
+                self.d.report("E204", p.name.span, f"parameter `{p.name.text}` needs a default: it follows one "
+                              "that has one", help="put the parameters with defaults last")
+            out.append(m.Parameter(p.name.text, type_, low, high, default))  # type: ignore[arg-type]
         return tuple(out)
+
+    def param_default(self, p: ast.Param, type_: Type | None, low: float | None,
+                      high: float | None) -> m.Value | None:
+        """`= value`: a constant of the parameter's type (an int made a float for a float
+        parameter), within its range."""
+        if p.default is None:
+            return None
+        value = self.typer.expr(p.default, _NOTHING)
+        self.flow(value, type_, p.default.span, f"the default of parameter `{p.name.text}`")
+        constant = self.typer.constant(value)
+        if constant is None:
+            if value.type is not None:
+                self.d.report("E204", p.default.span, "a default is a constant")
+            return None
+        if type_ is Type.FLOAT and isinstance(constant, int) and not isinstance(constant, bool):
+            constant = float(constant)
+        if low is not None and high is not None and isinstance(constant, (int, float)) \
+                and not low <= constant <= high:
+            self.d.report("E403", p.default.span, f"{shown(constant)} is outside the range of parameter "
+                          f"`{p.name.text}`", label=f"in {low!r}..{high!r}")
+            return None
+        return constant  # type: ignore[return-value]
 
     def param_range(self, p: ast.Param, type_: Type | None) -> tuple[float | None, float | None]:
         """`in low..high`: constant numbers of the parameter's type, low <= high; for bytes, the
@@ -204,14 +230,14 @@ class _Checker:
         if params is None:
             return args
         name = call.target.text
-        if len(args) != len(params):
+        required = next((i for i, p in enumerate(params) if p.default is not None), len(params))
+        if not required <= len(args) <= len(params):
             labels = (Label(target.span, f"{kind} `{name}` declared here"),) if target else ()
-            self.d.report(
-                "E201", call.span,
-                f"{kind} `{name}` takes {_count(len(params), 'argument')}, but {len(args)} given",
-                labels=labels,
-            )
+            takes = _count(len(params), "argument") if required == len(params) else \
+                f"{required} to {len(params)} arguments"
+            self.d.report("E201", call.span, f"{kind} `{name}` takes {takes}, but {len(args)} given", labels=labels)
             return args
+        args += tuple(self.typer.const(p.default, p.type, call.span) for p in params[len(args):])  # type: ignore[arg-type]
         for arg, expr, param in zip(args, call.args, params):
             self.flow(arg, param.type, expr.span, f"parameter `{param.name}` of {kind} `{name}`")
             value = self.typer.constant(arg)
@@ -808,6 +834,8 @@ class _Checker:
             if not isinstance(packed, m.Var) or packed.scope is not Scope.PARAM or slot.low is None:
                 continue
             i = next(i for i, p in enumerate(prim.params) if p.name == packed.name)
+            if i >= len(exprs):  # its default, checked where it is declared
+                continue
             self.fits(
                 self.typer.constant(args[i]), slot, exprs[i].span, f" of primitive `{prim.name}`",
                 f"parameter `{packed.name}` is packed as `{slot.code}`, {slot.low} to {slot.high}",

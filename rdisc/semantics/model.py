@@ -120,6 +120,7 @@ class Parameter:
     type: Type
     low: int | float | None = None  # the range a value must be in, when declared
     high: int | float | None = None
+    default: Value | None = None  # the value when a call leaves it out (the parameters after it have one too)
 
     def range_text(self) -> str:
         return f"{self.low!r}..{self.high!r}"

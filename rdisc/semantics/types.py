@@ -128,6 +128,10 @@ class Typer:
                 return self._member(e)
         raise AssertionError(f"unknown expression node {e!r}")
 
+    def const(self, value: m.Value, type_: Type, span: Span | None) -> m.Expr:
+        """A constant the checker puts in (a parameter's default, in a call that leaves it out)."""
+        return self._const(m.Const(value, type_, span))
+
     def _const(self, node: m.Const) -> m.Expr:
         self._constants[id(node)] = (node, node.value)
         return node

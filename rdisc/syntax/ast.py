@@ -122,6 +122,7 @@ class Param:
     span: Span = _span
     low: Expr | None = None  # `in low..high`
     high: Expr | None = None
+    default: Expr | None = None  # `= value`: the value when a call leaves it out
 
 
 @dataclass(frozen=True, slots=True)

@@ -393,7 +393,7 @@ def _transformer_class():
             return tuple(x for x in c if x is not None)
 
         def param(self, meta, c):
-            return ast.Param(self.b.ident(c[0]), self.b.ident(c[1]), self.b.span(meta), c[2], c[3])
+            return ast.Param(self.b.ident(c[0]), self.b.ident(c[1]), self.b.span(meta), c[2], c[3], c[4])
 
         def args(self, meta, c):
             return tuple(x for x in c if x is not None)

@@ -314,17 +314,19 @@ _CONNECTION = (
     "name", "baud", "singleThreading", "startup", "terminate", "keepalive", "terminator", "address", "doc",
 )  # fmt: skip
 _PRIMITIVE = (
-    "name", "parameters", "parameterTypes", "parameterRanges", "connection", "pack", "format", "formatArgs",
-    "unpack", "regex", "frame", "skipUnmatched", "replyTable", "timeout", "expect", "postActions", "doc",
+    "name", "parameters", "parameterTypes", "parameterRanges", "parameterDefaults", "connection", "pack", "format",
+    "formatArgs", "unpack", "regex", "frame", "skipUnmatched", "replyTable", "timeout", "expect", "postActions", "doc",
 )  # fmt: skip
-_FRAME = ("name", "parameters", "parameterTypes", "parameterRanges", "request", "reply", "stuffing", "doc")
+_FRAME = ("name", "parameters", "parameterTypes", "parameterRanges", "parameterDefaults", "request", "reply",
+          "stuffing", "doc")
 _CHECKSUM = (
     "checksum", "kind", "width", "poly", "init", "reflectIn", "reflectOut", "xorOut", "inverted", "mask", "format",
     "covers", "withRequest",
 )  # fmt: skip
 _BYTES_ROLES = ("header", "literal", "terminator")
 _INTERFACE = (
-    "name", "type", "parameters", "parameterTypes", "parameterRanges", "primitiveCalls", "triggers", "doc",
+    "name", "type", "parameters", "parameterTypes", "parameterRanges", "parameterDefaults", "primitiveCalls",
+    "triggers", "doc",
 )  # fmt: skip
 _CALL = ("name", "arguments", "delay", "priority")
 _ADAPTER = ("name", "ros", "fields", "doc")
@@ -854,8 +856,10 @@ class _Importer:
             i for v in self.array(m.get("parameters"), "`parameters`") if (i := self.ident(v, "a parameter"))
         ]
         ranges = self.ranges(m, len(names))
+        defaults = self.defaults(m, len(names))
         if "parameterTypes" not in m:
-            return tuple(ast.Param(n, ast.Ident(infer(n), n.span), n.span, *r) for n, r in zip(names, ranges))
+            return tuple(ast.Param(n, ast.Ident(infer(n), n.span), n.span, *r, d)
+                         for n, r, d in zip(names, ranges, defaults))
         types = [
             i for v in self.array(m["parameterTypes"], "`parameterTypes`") if (i := self.ident(v, "a type"))
         ]
@@ -865,7 +869,18 @@ class _Importer:
                 f"`parameterTypes` has {len(types)} entries for {len(names)} parameters",
             )
             return ()
-        return tuple(ast.Param(n, t, n.span, *r) for n, t, r in zip(names, types, ranges))
+        return tuple(ast.Param(n, t, n.span, *r, d) for n, t, r, d in zip(names, types, ranges, defaults))
+
+    def defaults(self, m: Members, count: int) -> list[ast.Expr | None]:
+        """`parameterDefaults`: a value or null for each parameter."""
+        if "parameterDefaults" not in m:
+            return [None] * count
+        items = self.array(m["parameterDefaults"], "`parameterDefaults`")
+        if len(items) != count:
+            self.error(m["parameterDefaults"].span,
+                       f"`parameterDefaults` has {len(items)} entries for {count} parameters")
+            return [None] * count
+        return [None if isinstance(item, JNull) else self.expr(item, None) for item in items]
 
     def ranges(self, m: Members, count: int) -> list[tuple[ast.Expr | None, ast.Expr | None]]:
         """`parameterRanges`: `[low, high]` or null for each parameter."""

@@ -146,7 +146,8 @@ def _block(head: str, lines: list[str]) -> list[str]:
 
 
 def _params(params: tuple[ast.Param, ...]) -> str:
-    return ", ".join(f"{param.name.text}: {param.type.text}" + _range(param) for param in params)
+    return ", ".join(f"{param.name.text}: {param.type.text}" + _range(param)
+                     + (f" = {print_expr(param.default)}" if param.default is not None else "") for param in params)
 
 
 def _range(param: ast.Param) -> str:

@@ -765,6 +765,7 @@ class Param:
     kind: type  # int, float, bool, str or bytes
     low: float | None = None  # the declared range (for bytes, of the length)
     high: float | None = None
+    default: Value | None = None  # the value when a call leaves it out
 
 
 @dataclass(frozen=True, slots=True)
@@ -1041,18 +1042,27 @@ def _bind(what: str, params: tuple[Param, ...], args: tuple[Any, ...], kwargs: d
         raise TypeError(f"{what} takes {len(params)} arguments, {len(args)} given")
     values = list(args)
     for param in params[len(args) :]:
-        if param.name not in kwargs:
+        if param.name in kwargs:
+            values.append(kwargs.pop(param.name))
+        elif param.default is not None:
+            values.append(param.default)
+        else:
             raise TypeError(f"{what}: missing argument {param.name!r}")
-        values.append(kwargs.pop(param.name))
     if kwargs:
         raise TypeError(f"{what}: unexpected argument {next(iter(kwargs))!r}")
     return values
 
 
 def _accepted(what: str, params: tuple[Param, ...], values: Args) -> Args:
-    """Values given by position, each made its parameter's type (TypeError if it cannot be)."""
+    """Values given by position, each made its parameter's type (TypeError if it cannot be); the
+    parameters left out take their defaults."""
     if len(values) != len(params):
-        raise TypeError(f"{what} takes {len(params)} arguments, {len(values)} given")
+        left_out = params[len(values) :]
+        if len(values) > len(params) or any(p.default is None for p in left_out):
+            required = next((i for i, p in enumerate(params) if p.default is not None), len(params))
+            takes = len(params) if required == len(params) else f"{required} to {len(params)}"
+            raise TypeError(f"{what} takes {takes} arguments, {len(values)} given")
+        values.extend(p.default for p in left_out)
     for i, param in enumerate(params):
         if type(values[i]) is not param.kind:
             values[i] = _accept(values[i], param.kind, f"{what}: parameter {param.name}")
