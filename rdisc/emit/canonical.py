@@ -208,6 +208,7 @@ def _interface(i: m.Interface) -> JsonObject:
             "arguments": [_embedded(a) for a in c.args],
             "delay": _number(c.delay_ms),
             "priority": c.priority,
+            **({"when": _embedded(c.when)} if c.when is not None else {}),
         }
         for c in i.calls
     ]

@@ -489,15 +489,21 @@ class _Driver:
             function = f"_i_{iface.name}_{n}"
             if n > 1:
                 w.blank(2)
-            options = [f"priority {c.priority}"] if c.priority else []
-            options += [f"delay {c.delay_ms:g} ms"] if c.delay_ms else []
-            self.comment(w, c.span, ", ".join([f"call {'interface ' if c.interface else ''}{c.primitive}", *options]))
+            said = [f"priority {c.priority}"] if c.priority else []
+            said += [f"delay {c.delay_ms:g} ms"] if c.delay_ms else []
+            said += ["when ..."] if c.when is not None else []
+            self.comment(w, c.span, ", ".join([f"call {'interface ' if c.interface else ''}{c.primitive}", *said]))
             direct = None if c.interface else _direct(self.model.primitives[c.primitive], c)
             self.function(w, function, "state: StateValues, args: Args", iface.params,
                           direct if direct is not None else [("", a, None) for a in c.args], "Args")
             delay = f", {c.delay_ms / 1000.0!r}" if c.delay_ms or direct is not None else ""
+            options = ", direct=True" if direct is not None else ""
+            if c.when is not None:
+                w.blank(2)
+                self.predicate(w, f"{function}_when", "state: StateValues, args: Args", iface.params, c.when)
+                options += f", when={function}_when"
             target = self.plan["interface" if c.interface else "primitive", c.primitive]
-            calls.append(f"Call({target}, {function}{delay}" + (", direct=True)" if direct is not None else ")"))
+            calls.append(f"Call({target}, {function}{delay}{options})")
         if calls:
             w.blank(2)
         output = {"outputs": _tuple([self.plan["output", o] for o in iface.triggers])} if iface.triggers else {}

@@ -135,9 +135,13 @@ class Description:
         for c in iface.run_order():
             if c.interface:
                 args = _values([prepare(a, slots) for a in c.args])
-                calls.append(engine.Call(callees[c.primitive], args, c.delay_ms / 1000.0))
+                call = engine.Call(callees[c.primitive], args, c.delay_ms / 1000.0)
             else:
-                calls.append(self._call(c, slots, primitives[c.primitive]))
+                call = self._call(c, slots, primitives[c.primitive])
+            if c.when is not None:
+                holds = prepare(c.when, slots)
+                call = dataclasses.replace(call, when=lambda s, loc: holds(s, loc, ()))
+            calls.append(call)
         triggered = tuple(outputs[o] for o in iface.triggers)
         return engine.Interface(iface.name, _params(iface.params), tuple(calls), triggered)
 

@@ -876,6 +876,7 @@ class Call:
     args: Callable[[StateValues, Args], Args]
     delay: float = 0.0  # seconds
     direct: bool = False
+    when: Callable[[StateValues, Args], object] | None = None  # the call is made only when this holds
 
 
 @dataclass(frozen=True, slots=True)
@@ -931,7 +932,7 @@ def _written_at_once(interface: Interface) -> Call | None:
     if not isinstance(prim, Primitive):
         return None
     plain = isinstance(prim.encoder, Pack) and not prim.encoder.strings and not prim.encoder.rest
-    if not call.direct or call.delay or not plain or prim.expects_reply or prim.frame is not None:
+    if not call.direct or call.delay or call.when or not plain or prim.expects_reply or prim.frame is not None:
         return None
     return call if prim.actions is None and prim.table is None and not prim.ranged else None
 
@@ -1584,6 +1585,8 @@ class Robot:
             _in_ranges(plan.name, plan.params, plan.ranged, args)
         for call in plan.calls:
             try:
+                if call.when is not None and not call.when(self._state, args):
+                    continue  # not made, and so no delay after it
                 values = call.args(self._state, args)
             except EVAL_ERRORS as err:
                 raise RdisValueError(f"{plan.name}: {err}") from None

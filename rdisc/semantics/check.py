@@ -811,8 +811,12 @@ class _Checker:
             priority = self.setting(priority_expr, "a priority", MAX_PRIORITY) if priority_expr is not None else 0
             if priority is not None and priority != int(priority):
                 self.d.report("E204", priority_expr.span, "a priority must be an integer")  # type: ignore[union-attr]
+            self.once(list(stmt.conditions), "`when`", stmt.call.target)
+            when = self.typer.expr(stmt.conditions[0], env) if stmt.conditions else None
+            if when is not None and when.type is not None and when.type is not Type.BOOL:
+                self.d.report("E401", stmt.conditions[0].span, f"`when` takes a bool, but this is {describe(when.type)}")
             calls.append(m.PrimitiveCall(
-                m.PrimitiveRef(callee), args, delay or 0, int(priority or 0), stmt.span, calls_interface
+                m.PrimitiveRef(callee), args, delay or 0, int(priority or 0), stmt.span, calls_interface, when
             ))
         if periodic:
             self.periodic_connection(decl)

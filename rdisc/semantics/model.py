@@ -389,6 +389,7 @@ class PrimitiveCall:
     priority: int = 0
     span: Span | None = _span
     interface: bool = False
+    when: Expr | None = None  # made only when this holds, over state and the interface's parameters
 
 
 @dataclass(frozen=True, slots=True)

@@ -348,6 +348,7 @@ class CallStmt:
     delays: tuple[Duration, ...]
     priorities: tuple[Expr, ...]
     span: Span = _span
+    conditions: tuple[Expr, ...] = ()  # `when COND`: the call is made only when COND holds
 
 
 @dataclass(frozen=True, slots=True)

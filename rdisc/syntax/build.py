@@ -266,13 +266,17 @@ def _transformer_class():
             call = ast.Call(self.b.ident(c[0]), c[1] or (), self.b.span(meta))
             delays = tuple(x[1] for x in c[2:] if x[0] == "delay")
             priorities = tuple(x[1] for x in c[2:] if x[0] == "priority")
-            return ast.CallStmt(call, delays, priorities, self.b.span(meta))
+            conditions = tuple(x[1] for x in c[2:] if x[0] == "when")
+            return ast.CallStmt(call, delays, priorities, self.b.span(meta), conditions)
 
         def delay(self, meta, c):
             return ("delay", c[0])
 
         def priority(self, meta, c):
             return ("priority", c[0])
+
+        def when(self, meta, c):
+            return ("when", c[0])
 
         def adapter_decl(self, meta, c):
             ros = self.b.string(c[1]) if c[1] is not None else None

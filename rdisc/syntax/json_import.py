@@ -328,7 +328,7 @@ _INTERFACE = (
     "name", "type", "parameters", "parameterTypes", "parameterRanges", "parameterDefaults", "primitiveCalls",
     "triggers", "doc",
 )  # fmt: skip
-_CALL = ("name", "arguments", "delay", "priority")
+_CALL = ("name", "arguments", "delay", "priority", "when")
 _ADAPTER = ("name", "ros", "fields", "doc")
 _FIELD = ("name", "type", "unit", "ros", "doc")
 _INPUT = ("name", "adapter", "parameters", "calls", "doc")
@@ -763,8 +763,10 @@ class _Importer:
             delay = self.expr(m["delay"], "float")
         if "priority" in m and not _is_zero(m["priority"]):
             priority = self.expr(m["priority"], "int")
+        when = self.expr(m["when"], "bool") if "when" in m else None
         delays = _present([None if delay is None else ast.Duration(delay, "ms", delay.span)])
-        return ast.CallStmt(ast.Call(target, args, obj.span), delays, _present([priority]), obj.span)
+        return ast.CallStmt(ast.Call(target, args, obj.span), delays, _present([priority]), obj.span,
+                            _present([when]))
 
     def adapter(self, obj: JObject) -> ast.AdapterDecl | None:
         m = self.members(obj, "an adapter", _ADAPTER)

@@ -209,6 +209,7 @@ def _interface_clause(c: ast.InterfaceClause) -> str:
 def _call_stmt(stmt: ast.CallStmt) -> list[str]:
     suffix = "".join(f" delay {_duration(d)}" for d in stmt.delays)
     suffix += "".join(f" priority {print_expr(e)}" for e in stmt.priorities)
+    suffix += "".join(f" when {print_expr(e)}" for e in stmt.conditions)
     return _call_lines("", stmt.call, suffix, len(INDENT))
 
 

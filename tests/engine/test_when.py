@@ -1,0 +1,63 @@
+"""`when COND` on a call: an interface makes the call only when the condition holds, over
+state and its parameters (Firmata turns reporting off only for a pin that reports), in the
+runtime and a generated driver alike; the condition travels through JSON."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+from rdisc.compile import compile_path
+from rdisc.emit.canonical import to_json
+from rdisc.emit.python import import_driver
+from rdisc.runtime import load
+from tests.engine.test_one_engine import ScriptedPort
+
+FIRMATA = """\
+robot pins { author "tests" }
+state reporting: bool = False
+connection link: serial { baud 57600 }
+primitive report(pin: int, on: bool) on link pack "BB?" (0xD0, pin, on) { reporting = on }
+primitive reset() on link pack "B" (0xFF)
+interface stop(pin: int) { report(pin, False) when reporting  reset() delay 5 ms when pin > 3 }
+interface start(pin: int) { report(pin, True) }
+"""
+
+
+@pytest.mark.parametrize("kind", ["runtime", "driver"])
+def test_a_call_is_made_only_when_its_condition_holds(kind: str, tmp_path: Path) -> None:
+    source = tmp_path / "pins.rdis"
+    source.write_text(FIRMATA, encoding="utf-8")
+    implementation = load(source) if kind == "runtime" else import_driver(source, tmp_path, "pins_driver")
+    port = ScriptedPort()
+    with implementation.connect(port, threads=False) as robot:
+        robot.call_interface("stop", 2)  # not reporting, pin 2: neither call
+        assert bytes(port.written) == b""
+        robot.call_interface("start", 2)
+        robot.call_interface("stop", 5)  # reporting, pin 5: both
+        assert bytes(port.written).hex(" ") == "d0 02 01 d0 05 00 ff"
+        assert robot.state["reporting"] is False
+
+
+def test_the_condition_goes_through_json_and_back(tmp_path: Path) -> None:
+    source = tmp_path / "pins.rdis"
+    source.write_text(FIRMATA, encoding="utf-8")
+    compilation = compile_path(str(source))
+    assert compilation.model is not None and not compilation.diagnostics.items
+    built = to_json(compilation.model)
+    assert '"when": "<reporting>"' in built and '"when": "<pin > 3>"' in built
+    (tmp_path / "pins.json").write_text(built, encoding="utf-8")
+    again = compile_path(str(tmp_path / "pins.json"))
+    assert again.model is not None and to_json(again.model) == built
+
+
+def test_a_condition_is_a_bool_given_once(tmp_path: Path) -> None:
+    source = tmp_path / "bad.rdis"
+    source.write_text(FIRMATA.replace("when pin > 3", "when pin when pin > 1"), encoding="utf-8")
+    compilation = compile_path(str(source))
+    assert [(d.code, d.message) for d in compilation.diagnostics.items] == [
+        ("E203", "`when` is given twice in `reset`"),
+        ("E401", "`when` takes a bool, but this is an int"),
+    ]
