@@ -139,8 +139,7 @@ class Description:
             else:
                 call = self._call(c, slots, primitives[c.primitive])
             if c.when is not None:
-                holds = prepare(c.when, slots)
-                call = dataclasses.replace(call, when=lambda s, loc: holds(s, loc, ()))
+                call = dataclasses.replace(call, when=_condition(prepare(c.when, slots)))
             calls.append(call)
         triggered = tuple(outputs[o] for o in iface.triggers)
         return engine.Interface(iface.name, _params(iface.params), tuple(calls), triggered)
@@ -191,6 +190,11 @@ class Description:
 
 def _params(params: tuple[m.Parameter, ...]) -> tuple[engine.Param, ...]:
     return tuple(engine.Param(p.name, _KINDS[p.type], p.low, p.high, p.default) for p in params)
+
+
+def _condition(holds: Prepared) -> Callable[[Mapping[str, m.Value], Any], m.Value]:
+    """A call's `when`, over state and the interface's parameters."""
+    return lambda state, local: holds(state, local, ())
 
 
 def _slots(params: tuple[m.Parameter, ...]) -> dict[str, int]:

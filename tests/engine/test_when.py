@@ -5,7 +5,6 @@ runtime and a generated driver alike; the condition travels through JSON."""
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Any
 
 import pytest
 
@@ -39,6 +38,11 @@ def test_a_call_is_made_only_when_its_condition_holds(kind: str, tmp_path: Path)
         robot.call_interface("stop", 5)  # reporting, pin 5: both
         assert bytes(port.written).hex(" ") == "d0 02 01 d0 05 00 ff"
         assert robot.state["reporting"] is False
+        port.written.clear()
+        robot.call_interface("start", 1)
+        robot.call_interface("stop", 1)  # reporting, pin 1: only the first (each call its own condition)
+        robot.call_interface("stop", 6)  # not reporting, pin 6: only the second
+        assert bytes(port.written).hex(" ") == "d0 01 01 d0 01 00 ff"
 
 
 def test_the_condition_goes_through_json_and_back(tmp_path: Path) -> None:
