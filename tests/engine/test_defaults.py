@@ -13,8 +13,7 @@ import pytest
 from rdisc.compile import compile_path
 from rdisc.emit.canonical import to_json
 from rdisc.emit.python import import_driver
-from rdisc.runtime import load
-from tests.engine.test_one_engine import ScriptedPort
+from tests.engine.test_one_engine import ScriptedPort, implementation_of
 
 CAMERA = """\
 robot camera { author "tests" }
@@ -28,10 +27,7 @@ interface wide() { zoom(7, False)  zoom() }
 
 @pytest.fixture(scope="module", params=["runtime", "driver"])
 def implementation(request: pytest.FixtureRequest, tmp_path_factory: pytest.TempPathFactory) -> Any:
-    folder = tmp_path_factory.mktemp("defaults")
-    source = folder / "camera.rdis"
-    source.write_text(CAMERA, encoding="utf-8")
-    return load(source) if request.param == "runtime" else import_driver(source, folder, "camera_driver")
+    return implementation_of(request.param, CAMERA, tmp_path_factory.mktemp("defaults"), "camera")
 
 
 def test_calls_leave_out_what_has_a_default(implementation: Any) -> None:

@@ -13,9 +13,7 @@ import pytest
 
 from rdisc.compile import compile_path
 from rdisc.emit.canonical import to_json
-from rdisc.emit.python import import_driver
-from rdisc.runtime import load
-from tests.engine.test_one_engine import ScriptedPort
+from tests.engine.test_one_engine import ScriptedPort, implementation_of
 
 NODES = """\
 robot nodes { author "tests" }
@@ -38,10 +36,7 @@ def _node(*values: int) -> bytes:
 
 @pytest.fixture(scope="module", params=["runtime", "driver"])
 def implementation(request: pytest.FixtureRequest, tmp_path_factory: pytest.TempPathFactory) -> Any:
-    folder = tmp_path_factory.mktemp("expect")
-    source = folder / "nodes.rdis"
-    source.write_text(NODES, encoding="utf-8")
-    return load(source) if request.param == "runtime" else import_driver(source, folder, "nodes_driver")
+    return implementation_of(request.param, NODES, tmp_path_factory.mktemp("expect"), "nodes")
 
 
 def test_skip_unmatched_reads_past_replies_that_do_not_meet_it(implementation: Any) -> None:

@@ -14,10 +14,8 @@ import pytest
 
 from rdisc.compile import compile_path
 from rdisc.emit.canonical import to_json
-from rdisc.emit.python import import_driver
-from rdisc.runtime import load
 from rdisc.semantics.budget import budget
-from tests.engine.test_one_engine import ScriptedPort
+from tests.engine.test_one_engine import ScriptedPort, implementation_of
 
 SERVOS = """\
 robot servos { author "tests" }
@@ -35,10 +33,7 @@ interface led(on: int) { goto(9, on) }
 
 @pytest.fixture(scope="module", params=["runtime", "driver"])
 def implementation(request: pytest.FixtureRequest, tmp_path_factory: pytest.TempPathFactory) -> Any:
-    folder = tmp_path_factory.mktemp("interface_calls")
-    source = folder / "servos.rdis"
-    source.write_text(SERVOS, encoding="utf-8")
-    return load(source) if request.param == "runtime" else import_driver(source, folder, "servos_driver")
+    return implementation_of(request.param, SERVOS, tmp_path_factory.mktemp("interface_calls"), "servos")
 
 
 def test_calls_run_through_the_interfaces_they_call(implementation: Any) -> None:
@@ -128,9 +123,7 @@ output right_bump: Range { distance = 0.0 if bumps & 1 != 0 else 1.0 }
 
 @pytest.mark.parametrize("kind", ["runtime", "driver"])
 def test_an_interface_triggers_several_outputs_in_order(kind: str, tmp_path: Path) -> None:
-    source = tmp_path / "bumpers.rdis"
-    source.write_text(BUMPERS, encoding="utf-8")
-    implementation = load(source) if kind == "runtime" else import_driver(source, tmp_path, "bumpers_driver")
+    implementation = implementation_of(kind, BUMPERS, tmp_path, "bumpers")
     delivered: list[dict[str, Any]] = []
     with implementation.connect(ScriptedPort(b"\x02"), threads=False, on_output=delivered.append) as robot:
         robot.call_interface("poll")

@@ -74,6 +74,13 @@ class ScriptedPort:
         pass
 
 
+def implementation_of(kind: str, text: str, folder: Path, name: str) -> Any:
+    """A description's text run by the runtime (`kind` "runtime") or as its generated driver."""
+    source = folder / f"{name}.rdis"
+    source.write_text(text, encoding="utf-8")
+    return load(source) if kind == "runtime" else import_driver(source, folder, f"{name}_driver")
+
+
 def _frame(id_: int, payload: bytes) -> bytes:
     body = bytes([id_, len(payload) + 1]) + payload
     return b"\xff\xff" + body + bytes([~sum(body) & 0xFF])

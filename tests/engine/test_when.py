@@ -10,9 +10,7 @@ import pytest
 
 from rdisc.compile import compile_path
 from rdisc.emit.canonical import to_json
-from rdisc.emit.python import import_driver
-from rdisc.runtime import load
-from tests.engine.test_one_engine import ScriptedPort
+from tests.engine.test_one_engine import ScriptedPort, implementation_of
 
 FIRMATA = """\
 robot pins { author "tests" }
@@ -27,9 +25,7 @@ interface start(pin: int) { report(pin, True) }
 
 @pytest.mark.parametrize("kind", ["runtime", "driver"])
 def test_a_call_is_made_only_when_its_condition_holds(kind: str, tmp_path: Path) -> None:
-    source = tmp_path / "pins.rdis"
-    source.write_text(FIRMATA, encoding="utf-8")
-    implementation = load(source) if kind == "runtime" else import_driver(source, tmp_path, "pins_driver")
+    implementation = implementation_of(kind, FIRMATA, tmp_path, "pins")
     port = ScriptedPort()
     with implementation.connect(port, threads=False) as robot:
         robot.call_interface("stop", 2)  # not reporting, pin 2: neither call

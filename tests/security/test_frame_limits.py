@@ -11,9 +11,7 @@ from typing import Any
 import pytest
 from conftest import run_rdisc
 
-from rdisc.emit.python import import_driver
-from rdisc.runtime import load
-from tests.engine.test_one_engine import ScriptedPort
+from tests.engine.test_one_engine import ScriptedPort, implementation_of
 
 HEAD = """\
 robot limits { author "tests" }
@@ -94,10 +92,7 @@ def test_a_computed_field_of_constant_arguments_must_fit_its_code(tmp_path: Path
 
 @pytest.fixture(scope="module", params=["runtime", "driver"])
 def robot(request: pytest.FixtureRequest, tmp_path_factory: pytest.TempPathFactory) -> Any:
-    folder = tmp_path_factory.mktemp("frame_limits")
-    source = folder / "limits.rdis"
-    source.write_text(RUNS, encoding="utf-8")
-    implementation = load(source) if request.param == "runtime" else import_driver(source, folder, "limits_driver")
+    implementation = implementation_of(request.param, RUNS, tmp_path_factory.mktemp("frame_limits"), "limits")
     port = ScriptedPort()
     with implementation.connect(port, threads=False) as robot:
         robot.port_for_tests = port
