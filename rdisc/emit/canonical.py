@@ -43,6 +43,7 @@ def _document(model: m.Model) -> JsonObject:
         ("doc", robot.doc),
         ("constants", dict(model.constants) or None),
         ("enums", dict(model.enums) or None),
+        ("tables", {t.name: [[k, v] for k, v in t.entries] for t in model.tables.values()} or None),
         ("stateVariables", [_state(s) for s in model.states.values()]),
         ("connections", connections),
         ("frames", [_frame(f) for f in model.frames.values()] or None),
@@ -282,6 +283,8 @@ def _expr(e: m.Expr) -> p.Printed:
             return p.binary(op, _expr(left), _expr(right))
         case m.IfElse(cond, then, orelse):
             return p.conditional(_expr(then), _expr(cond), _expr(orelse))
+        case m.Lookup(table=table, key=key):
+            return p.Printed(f"{table}[{_expr(key).text}]", p.ATOM)
         case m.FuncCall(func, args):
             return p.call(func, [_expr(a) for a in args])
         case _:

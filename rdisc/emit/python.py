@@ -27,7 +27,7 @@ from types import ModuleType
 from typing import NoReturn
 
 from rdisc.emit import python_support as support
-from rdisc.emit.python_expr import Chain, Compiler, Paren, Py, lines, literal, quoted
+from rdisc.emit.python_expr import Chain, Compiler, Paren, Py, lines, literal, quoted, table_name
 from rdisc.emit.writer import Writer
 from rdisc.runtime import engine
 from rdisc.runtime.codec import decoder, encoder, frame_fields
@@ -337,6 +337,13 @@ class _Driver:
     def plans(self, w: Writer) -> None:
         model = self.model
         runs = Description(model).device.inputs  # the engine decides which inputs are written at once
+        for table in model.tables.values():
+            w.blank(2)
+            entries = ", ".join(f"{literal(k, table.key_type).text}: {literal(v, table.value_type).text}"
+                                for k, v in table.entries)
+            _emit(w, f"{table_name(table.name)}: dict[Any, Any] = ", Py(f"{{{entries}}}", p.ATOM))
+            if table.doc:
+                w.line(_docstring(table.doc))
         for frame in model.frames.values():
             w.blank(2)
             self.comment(w, frame.span, f"frame {frame.name}")
@@ -719,6 +726,8 @@ def _names(e: m.Expr) -> set[str]:
             return _names(cond) | _names(then) | _names(orelse)
         case m.FuncCall(args=args):
             return set().union(*(_names(a) for a in args))
+        case m.Lookup(key=key):
+            return _names(key)
     return set()
 
 

@@ -175,6 +175,11 @@ CHECKED_FLOAT = {"+": "_add", "-": "_sub", "*": "_mul", "/": "_div"}
 _PROPAGATE_NONFINITE = {"+", "-", "*"}  # an inf operand gives inf or nan
 
 
+def table_name(table: str) -> str:
+    """The module constant a driver keeps a lookup table in."""
+    return f"_TABLE_{table.upper()}"
+
+
 class Compiler:
     """Compiles expressions; records the helpers their text uses."""
 
@@ -202,6 +207,8 @@ class Compiler:
                                    self.expr(orelse, names, finite))
             case m.FuncCall(func=func, args=args):
                 return self.call(func, args, names, finite)
+            case m.Lookup(table=table, key=key):
+                return Py(f"lookup({quoted(table)}, {table_name(table)}, {self.expr(key, names).text})", p.ATOM)
         _unreachable(e)
 
     def bound(self, e: m.Expr, declared: Type, names: Mapping[str, str]) -> Py:

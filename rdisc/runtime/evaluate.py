@@ -18,6 +18,7 @@ import sys
 from collections.abc import Callable, Mapping, Sequence
 from typing import Any
 
+from rdisc.runtime.engine import lookup
 from rdisc.semantics import model as m
 from rdisc.semantics.operators import BINARY, FUNCTIONS, UNARY, EvalError
 
@@ -45,6 +46,8 @@ def evaluate(expr: m.Expr, names: Mapping[str, m.Value], reply: Sequence[m.Value
             return evaluate(then if evaluate(cond, names, reply) else orelse, names, reply)
         case m.FuncCall(func=func, args=args):
             return FUNCTIONS[func](*(evaluate(a, names, reply) for a in args))
+        case m.Lookup(table=table, entries=entries, key=key):
+            return lookup(table, dict(entries), evaluate(key, names, reply))  # type: ignore[no-any-return]
     raise AssertionError(f"unknown expression node {expr!r}")
 
 
@@ -99,6 +102,9 @@ def prepare(expr: m.Expr, slots: Mapping[str, int] | None = None) -> Prepared:
             return _if_else(prepare(cond, slots), then, orelse, slots)
         case m.FuncCall(func=func, args=args):
             return _call(func, args, slots)
+        case m.Lookup(table=table, entries=entries, key=key):
+            found, k = dict(entries), prepare(key, slots)
+            return lambda s, loc, r: lookup(table, found, k(s, loc, r))
     raise AssertionError(f"unknown expression node {expr!r}")
 
 
@@ -171,6 +177,8 @@ def _constant(expr: m.Expr) -> bool:
             return _constant(cond) and _constant(then) and _constant(orelse)
         case m.FuncCall(args=args):
             return all(_constant(a) for a in args)
+        case m.Lookup(key=key):
+            return _constant(key)
     return False
 
 

@@ -18,7 +18,7 @@ from rdisc.semantics.frames import FrameRules, length_range, payload_end_known
 from rdisc.semantics.model import Scope, Type
 from rdisc.semantics.operators import shown
 from rdisc.semantics.resolve import Symbols, Unit, check_name, suggest
-from rdisc.semantics.types import Env, Typer, describe
+from rdisc.semantics.types import Env, Typer, describe, unify
 from rdisc.source import Span
 from rdisc.syntax import ast
 
@@ -65,7 +65,10 @@ class _Checker:
         for keyword, name in self.s.damaged:  # lost to a syntax error: readable, of unknown type
             if keyword == "state":
                 self.state_env.setdefault(name, (Scope.STATE, None))  # type: ignore[arg-type]
-        constants = {name: self.constant(decl) for name, decl in self.s.constants.items()}
+        tables = {name: self.table(name, decl) for name, decl in self.s.constants.items()
+                  if isinstance(decl.value, ast.TableLit)}
+        constants = {name: self.constant(decl) for name, decl in self.s.constants.items()
+                     if not isinstance(decl.value, ast.TableLit)}
         enums = {name: self.enum(decl) for name, decl in self.s.enums.items()}
         rules = FrameRules(self.d, self.typer, self.setting)
         self.frames = {name: rules.frame(decl, self.params(decl.params, "frame"))
@@ -94,6 +97,7 @@ class _Checker:
             outputs=outputs,  # type: ignore[arg-type]
             frames=self.frames,
             constants={n: v for n, v in constants.items() if v is not None},
+            tables={n: t for n, t in tables.items() if t is not None},
             enums=enums,
         )
 
@@ -260,9 +264,52 @@ class _Checker:
                 attrs[key] = found.value  # type: ignore[attr-defined]
         return m.Robot(decl.name.text, doc=decl.doc, span=decl.span, **attrs)
 
+    def table(self, name: str, decl: ast.ConstDecl) -> m.Table | None:
+        """`const T = {key: value, ...}`: constant keys of one type (int or string), each once, and
+        constant values of one type."""
+        assert isinstance(decl.value, ast.TableLit)
+        env = Env({}, "in a table", "constants declared before it")
+        entries: dict[object, object] = {}
+        spans: dict[object, Span] = {}
+        key_types: set[Type] = set()
+        value_type: Type | None = None
+        errors = self.d.error_count
+        for key_expr, value_expr in decl.value.entries:
+            key, value = self.typer.expr(key_expr, env), self.typer.expr(value_expr, env)
+            for node, expr in ((key, key_expr), (value, value_expr)):
+                if node.type is not None and not self.typer.is_constant(node):
+                    self.d.report("E204", expr.span, "a table's keys and values are constants")
+            if key.type is not None and key.type not in (Type.INT, Type.STRING):
+                self.d.report("E401", key_expr.span, f"a table's keys are ints or strings, not {describe(key.type)}")
+            if key.type is not None:
+                key_types.add(key.type)
+            if value.type is not None:
+                joined = value.type if value_type is None else unify(value_type, value.type)
+                if joined is None and value_type is not None:
+                    self.d.report("E401", value_expr.span, f"a table's values are of one type: this is "
+                                  f"{describe(value.type)}, the ones before are {describe(value_type)}")
+                value_type = joined or value_type
+            k = self.typer.constant(key)
+            if k in spans:
+                self.d.report("E101", key_expr.span, f"key {shown(k)} is in table `{name}` twice",
+                              labels=(Label(spans[k], "first given here"),))
+            elif k is not None:
+                spans[k] = key_expr.span
+                entries[k] = self.typer.constant(value)
+        if len(key_types) > 1:
+            self.d.report("E401", decl.value.span, f"the keys of table `{name}` are of one type")
+        if self.d.error_count != errors or not key_types or value_type is None:
+            return None
+        key_type = key_types.pop()
+        if value_type is Type.FLOAT:
+            entries = {k: float(v) for k, v in entries.items()}  # type: ignore[arg-type]
+        self.typer.tables[name] = (key_type, value_type, entries)
+        return m.Table(name, key_type, value_type, tuple(entries.items()), decl.doc)  # type: ignore[arg-type]
+
     def constant(self, decl: ast.ConstDecl) -> m.Value | None:
         """A named constant, visible to every expression declared after it."""
         errors, failed_reads = self.d.error_count, self.typer.failed_reads
+        assert not isinstance(decl.value, ast.TableLit)  # `table`
         node = self.typer.expr(decl.value, Env({}, "in a constant", "constants declared before it"))
         value = self.typer.constant(node)
         if value is None or node.type is None or not self.typer.kept(value, decl.value.span):

@@ -108,7 +108,29 @@ class FuncCall:
     span: Span | None = _span
 
 
-Expr = Const | Var | ReplyValue | UnaryOp | BinaryOp | IfElse | FuncCall
+@dataclass(frozen=True, slots=True)
+class Table:
+    """A lookup table constant: its keys (ints or strings) and values, each of one type."""
+
+    name: str
+    key_type: Type
+    value_type: Type
+    entries: tuple[tuple[Value, Value], ...]
+    doc: str | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class Lookup:
+    """`TABLE[key]`: the value a lookup table holds for the key; a key it lacks is an error."""
+
+    table: str
+    entries: tuple[tuple[Value, Value], ...]
+    key: Expr
+    type: Type
+    span: Span | None = _span
+
+
+Expr = Const | Var | ReplyValue | UnaryOp | BinaryOp | IfElse | FuncCall | Lookup
 
 
 # ---- elements --------------------------------------------------------------------
@@ -461,6 +483,7 @@ class Model:
     frames: dict[str, Frame] = field(default_factory=dict)
     constants: dict[str, Value] = field(default_factory=dict)
     enums: dict[str, dict[str, int]] = field(default_factory=dict)
+    tables: dict[str, Table] = field(default_factory=dict)
 
     def owner(self, iface: Interface) -> str | None:
         """The connection whose thread runs a periodic interface: its first primitive's."""

@@ -87,6 +87,7 @@ class Typer:
         self._constants: dict[int, tuple[m.Expr, object]] = {}
         self.reads: set[str] = set()  # state variables read by any expression
         self.named: dict[str, tuple[Type, object]] = {}  # `const` declarations: (type, value)
+        self.tables: dict[str, tuple[Type, Type, dict[object, object]]] = {}  # lookup tables: key and value types
         self.failed: set[str] = set()  # constants whose value has an error already reported
         self.failed_reads = 0  # reads of those: each one's fault is reported once, at the constant
         self.enums: dict[str, dict[str, int]] = {}  # enumerations: member → value
@@ -183,6 +184,8 @@ class Typer:
         return self._const(m.Const(value, Type.INT, e.span))
 
     def _index(self, e: ast.Index, env: Env) -> m.Expr:
+        if e.base.name in self.tables and e.base.name not in env.names:
+            return self._lookup(e, env)
         if e.base.name != "out":
             self.diagnostics.report("E404", e.span, f"`{e.base.name}` cannot be indexed", help="only the reply `out` can be indexed")
             return m.ReplyValue(0, None, e.span)  # type: ignore[arg-type]
@@ -211,6 +214,24 @@ class Typer:
             )
             return m.ReplyValue(value, None, e.span)  # type: ignore[arg-type]
         return m.ReplyValue(value, env.reply[value], e.span)
+
+    def _lookup(self, e: ast.Index, env: Env) -> m.Expr:
+        """`TABLE[key]`: a key of the table's key type; a constant key must be in the table."""
+        key_type, value_type, entries = self.tables[e.base.name]
+        key = self.expr(e.index, env)
+        node = m.Lookup(e.base.name, tuple(entries.items()), key, value_type, e.span)  # type: ignore[arg-type]
+        if key.type is not None and key.type is not key_type:
+            self.diagnostics.report("E401", e.index.span, f"table `{e.base.name}` is keyed by {key_type.value}, "
+                                    f"but this is {describe(key.type)}")
+        elif self.is_constant(key):
+            value = self.constant(key)
+            if value not in entries:
+                self.diagnostics.report("E403", e.index.span, f"table `{e.base.name}` has no entry for {shown(value)}",
+                                        help=f"its keys: {', '.join(shown(k) for k in list(entries)[:8])}"
+                                        + (", ..." if len(entries) > 8 else ""))
+            else:
+                self._constants[id(node)] = (node, entries[value])
+        return node
 
     def _unary(self, e: ast.Unary, env: Env) -> m.Expr:
         operand = self.expr(e.operand, env)

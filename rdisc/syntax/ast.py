@@ -399,9 +399,17 @@ class OutputDecl:
 
 
 @dataclass(frozen=True, slots=True)
+class TableLit:
+    """`{key: value, ...}`: a lookup table, read as `NAME[key]`."""
+
+    entries: tuple[tuple[Expr, Expr], ...]
+    span: Span = _span
+
+
+@dataclass(frozen=True, slots=True)
 class ConstDecl:
     name: Ident
-    value: Expr
+    value: Expr | TableLit
     span: Span = _span
     doc: str | None = None
 

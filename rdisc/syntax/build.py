@@ -320,6 +320,12 @@ def _transformer_class():
         def const_decl(self, meta, c):
             return ast.ConstDecl(self.b.ident(c[0]), c[1], self.b.span(meta), self.b.doc(meta))
 
+        def table_lit(self, meta, c):
+            return ast.TableLit(tuple(x for x in c if x is not None), self.b.span(meta))
+
+        def table_entry(self, meta, c):
+            return (c[0], c[1])
+
         def enum_decl(self, meta, c):
             members = tuple(x for x in c[1:] if x is not None)
             return ast.EnumDecl(self.b.ident(c[0]), members, self.b.span(meta), self.b.doc(meta))

@@ -295,8 +295,8 @@ def _kind(v: JValue) -> str:
 # ---- the description ----------------------------------------------------------------------
 
 _TOP = (
-    "name", "author", "description", "version", "doc", "constants", "enums", "stateVariables", "connections",
-    "frames", "primitives", "interfaces", "domainAdapters", "domainInterfaces", "domainOutputs",
+    "name", "author", "description", "version", "doc", "constants", "enums", "tables", "stateVariables",
+    "connections", "frames", "primitives", "interfaces", "domainAdapters", "domainInterfaces", "domainOutputs",
 )  # fmt: skip
 _SECTIONS = {  # list member: (its elements in words, the RDIS keyword declaring one)
     "stateVariables": ("a state variable", "state"),
@@ -370,7 +370,7 @@ class _Importer:
     def module(self, root: JObject) -> ast.Module:
         top = self.members(root, "the description", _TOP)
         robot = self.robot(root, top)
-        constants = self.constants(top.get("constants"))
+        constants = self.constants(top.get("constants")) + self.tables(top.get("tables"))
         enums = self.enums(top.get("enums"))
         frames = self.each(top, "frames", self.frame)
         states = self.each(top, "stateVariables", self.state)
@@ -426,6 +426,25 @@ class _Importer:
                 attrs.append(ast.RobotAttr(key, s.value, s.span))
         doc = self.doc(top)
         return None if name is None else ast.RobotDecl(name, tuple(attrs), root.span, doc)
+
+    def tables(self, value: JValue | None) -> list[ast.ConstDecl]:
+        """`tables`: each a list of `[key, value]` pairs."""
+        obj = self.object(value, "`tables`") if value is not None else None
+        built = []
+        for key, item in obj.members if obj else ():
+            name = self.ident(key, "a table")
+            entries = []
+            for pair in self.array(item, "a table"):
+                both = self.array(pair, "a table entry")
+                if len(both) != 2:
+                    self.error(pair.span, "a table entry is `[key, value]`")
+                    continue
+                k, v = self.expr(both[0], None), self.expr(both[1], None)
+                if k is not None and v is not None:
+                    entries.append((k, v))
+            if name is not None:
+                built.append(ast.ConstDecl(name, ast.TableLit(tuple(entries), item.span), key.span))
+        return built
 
     def constants(self, value: JValue | None) -> list[ast.ConstDecl]:
         obj = self.object(value, "`constants`") if value is not None else None

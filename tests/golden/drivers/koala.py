@@ -1004,6 +1004,14 @@ def _floats(params: tuple[Param, ...]) -> tuple[int, ...]:
     return tuple(i for i, p in enumerate(params) if p.kind is float)
 
 
+def lookup(table: str, entries: Mapping[Any, Any], key: Any) -> Any:
+    """`table[key]` of a description's lookup table: a key it lacks is an error, never a default."""
+    try:
+        return entries[key]
+    except (KeyError, TypeError):
+        raise ValueError(f"table {table} has no entry for {key!r}") from None
+
+
 def _ranged(params: tuple[Param, ...]) -> tuple[int, ...]:
     return tuple(i for i, p in enumerate(params) if p.low is not None)
 
