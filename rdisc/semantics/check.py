@@ -274,10 +274,13 @@ class _Checker:
         key_types: set[Type] = set()
         value_type: Type | None = None
         errors = self.d.error_count
+        if not decl.value.entries:
+            self.d.report("E204", decl.value.span, f"table `{name}` is empty", help="give it `key: value` entries")
         for key_expr, value_expr in decl.value.entries:
+            for_entry = self.d.error_count
             key, value = self.typer.expr(key_expr, env), self.typer.expr(value_expr, env)
             for node, expr in ((key, key_expr), (value, value_expr)):
-                if node.type is not None and not self.typer.is_constant(node):
+                if node.type is not None and not self.typer.is_constant(node) and self.d.error_count == for_entry:
                     self.d.report("E204", expr.span, "a table's keys and values are constants")
             if key.type is not None and key.type not in (Type.INT, Type.STRING):
                 self.d.report("E401", key_expr.span, f"a table's keys are ints or strings, not {describe(key.type)}")
@@ -299,6 +302,7 @@ class _Checker:
         if len(key_types) > 1:
             self.d.report("E401", decl.value.span, f"the keys of table `{name}` are of one type")
         if self.d.error_count != errors or not key_types or value_type is None:
+            self.typer.failed.add(name)  # reported: its lookups are not reported again
             return None
         key_type = key_types.pop()
         if value_type is Type.FLOAT:

@@ -186,6 +186,9 @@ class Typer:
     def _index(self, e: ast.Index, env: Env) -> m.Expr:
         if e.base.name in self.tables and e.base.name not in env.names:
             return self._lookup(e, env)
+        if e.base.name in self.failed and e.base.name not in env.names:  # a table or constant in error
+            self.expr(e.index, env)
+            return m.ReplyValue(0, None, e.span)  # type: ignore[arg-type]
         if e.base.name != "out":
             self.diagnostics.report("E404", e.span, f"`{e.base.name}` cannot be indexed", help="only the reply `out` can be indexed")
             return m.ReplyValue(0, None, e.span)  # type: ignore[arg-type]

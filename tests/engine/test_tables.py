@@ -85,3 +85,10 @@ def test_a_driver_keeps_a_table_as_a_dict(tmp_path: Path) -> None:
     text = Path(driver.__file__).read_text(encoding="utf-8")
     assert "_TABLE_BAUD_CODE: dict[Any, Any] = {9600: 1, 19200: 2, 115200: 4}" in text
     assert 'return [4, lookup("BAUD_CODE", _TABLE_BAUD_CODE, baud)]' in text
+
+
+def test_an_empty_table_is_one_error_and_its_lookups_none(tmp_path: Path) -> None:
+    source = tmp_path / "empty.rdis"
+    source.write_text('robot r { author "tests" }\nconst T = {}\nconst U = { 2: T[1] }\n', encoding="utf-8")
+    compilation = compile_path(str(source))
+    assert [(d.code, d.message) for d in compilation.diagnostics.items] == [("E204", "table `T` is empty")]
