@@ -8,6 +8,7 @@ from __future__ import annotations
 import signal
 import subprocess
 import sys
+import threading
 import time
 from collections.abc import Callable
 
@@ -76,3 +77,28 @@ def test_a_generated_driver_leaves_the_robot_stopped(tmp_path, after, signals, g
     assert model is not None
     driver.write_text(to_python(model, FAST_CREATE.name), encoding="utf-8")
     _interrupted(lambda port: [sys.executable, str(driver), "--watch", "--port", port], after, signals, gap)
+
+
+@pytest.mark.parametrize("kind", ["runtime", "driver"])
+def test_a_command_cut_short_by_a_signal_does_not_keep_the_stop_from_being_written(kind, tmp_path) -> None:
+    """A signal can land between a command's taking of the port's lock and its `try`; the
+    interrupted thread then still holds the lock when it runs the terminate hook. Simulated by
+    taking the lock and closing in one thread: the stop command must still be written."""
+    from engine.test_one_engine import ScriptedPort, implementation_of
+
+    text = FAST_CREATE.read_text(encoding="utf-8")
+    port = ScriptedPort()
+    robot = implementation_of(kind, text, tmp_path, "fast_create").connect(port, threads=False)
+    done = threading.Event()
+
+    def interrupted_then_closed() -> None:
+        (link,) = robot._links.values()
+        link.port.lock.acquire()  # never released: as a KeyboardInterrupt before the `try` leaves it
+        robot.close()
+        done.set()
+
+    worker = threading.Thread(target=interrupted_then_closed, daemon=True)
+    worker.start()
+    worker.join(timeout=30)  # deadlocked for ever if the lock were not re-entrant
+    assert done.is_set()
+    assert bytes(port.written).endswith(STOP)

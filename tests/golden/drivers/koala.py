@@ -1200,7 +1200,9 @@ class _Port:
         self.io = io
         self.input = Incoming(io)  # what replies are read from: bytes put back, bytes taken, the deadline
         self.owned = owned  # opened by the robot, so closed by it too
-        self.lock = threading.Lock()
+        # Re-entrant: a signal landing between a command's `acquire` and its `try` leaves the lock
+        # held by the interrupted thread, which must still write the terminate hook's stop command.
+        self.lock = threading.RLock()
 
 
 class _Link:
