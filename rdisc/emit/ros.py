@@ -130,6 +130,19 @@ class _Bridge:
             w.blank()
             w.lines([
                 "rospy.init_node(ROBOT)",
+                "ros_signal = signal.getsignal(signal.SIGINT)  # rospy's: shuts the node down, logging as it goes",
+            ])
+            w.blank()
+            with w.block("def first_signal(signum: int, frame: Any) -> None:"):
+                w.line('"""rospy\'s handler, once: a burst of signals would re-enter its logging mid-write."""')
+                w.line("signal.signal(signal.SIGINT, signal.SIG_IGN)")
+                w.line("signal.signal(signal.SIGTERM, signal.SIG_IGN)")
+                with w.block("if callable(ros_signal):"):
+                    w.line("ros_signal(signum, frame)")
+            w.blank()
+            w.lines([
+                "signal.signal(signal.SIGINT, first_signal)",
+                "signal.signal(signal.SIGTERM, first_signal)",
                 "ports: dict[str, str] = {}",
                 "connections = _DEVICE.connections",
             ])
