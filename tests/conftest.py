@@ -116,6 +116,13 @@ def run_rdisc(
     )
 
 
+def check_text(folder: Path, text: str, name: str = "d.rdis") -> tuple[Path, subprocess.CompletedProcess[str]]:
+    """Write `text` as a description in `folder` and run `rdisc check` on it."""
+    source = folder / name
+    source.write_text(text, encoding="utf-8")
+    return source, run_rdisc("check", source)
+
+
 @pytest.fixture(scope="session")
 def rdisc():
     """Run the rdisc command: `rdisc("check", path)` -> CompletedProcess."""

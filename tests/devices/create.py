@@ -12,7 +12,9 @@ answers all but the last byte of each reply (nothing at all for packet 7).
 
 from __future__ import annotations
 
+import signal
 import struct
+import subprocess
 import time
 
 from . import PtyDevice
@@ -74,6 +76,30 @@ class CreateEmulator(PtyDevice):
         self.wait_until(lambda: count() >= n, timeout, f"{n} commands" + (f" {opcode}" if opcode else ""))
         with self._cond:
             return [(t, c) for t, c in self.commands if opcode is None or c[0] == opcode]
+
+    def signal_once_open(self, process: subprocess.Popen[str], after: float, signals: list[signal.Signals],
+                         gap: float) -> str:
+        """Send `signals` to `process` `after` seconds after its first command arrived (the port is
+        open: from then on the robot must end stopped), `gap` apart; wait for it to end, check that
+        the stop command was the last thing written, and return what it printed on stderr (or on
+        stdout, if that is where stderr goes)."""
+        try:
+            self.wait_for_commands(1, timeout=30)
+            time.sleep(after)
+            for signum in signals:
+                process.send_signal(signum)
+                time.sleep(gap)
+            stdout, stderr = process.communicate(timeout=30)
+        finally:
+            if process.poll() is None:
+                process.kill()
+                process.communicate()
+        printed = stderr if stderr is not None else stdout
+        assert "Traceback" not in printed, printed
+        self.wait_until(lambda: bool(self.commands) and self.commands[-1][1] == STOP, 5, "the stop command last")
+        time.sleep(0.05)  # nothing more arrives after it
+        assert self.commands[-1][1] == STOP, self.commands[-3:]
+        return printed
 
     def _cleared(self) -> None:
         self.commands.clear()

@@ -11,9 +11,8 @@ from typing import Any
 import pytest
 
 from rdisc.compile import compile_path
-from rdisc.emit.canonical import to_json
 from rdisc.emit.python import import_driver
-from tests.engine.test_one_engine import ScriptedPort, implementation_of
+from tests.engine.test_one_engine import ScriptedPort, implementation_of, through_json
 
 CAMERA = """\
 robot camera { author "tests" }
@@ -55,15 +54,9 @@ def test_a_driver_method_shows_the_defaults(tmp_path: Path) -> None:
 
 
 def test_defaults_go_through_json_and_back(tmp_path: Path) -> None:
-    source = tmp_path / "camera.rdis"
-    source.write_text(CAMERA, encoding="utf-8")
-    compilation = compile_path(str(source))
-    assert compilation.model is not None and not compilation.diagnostics.items
-    built = to_json(compilation.model)
+    compilation, built = through_json(CAMERA, tmp_path, "camera")
+    assert not compilation.diagnostics.items
     assert '"parameterDefaults": [\n        "<5>",\n        "<True>"\n      ]' in built
-    (tmp_path / "camera.json").write_text(built, encoding="utf-8")
-    again = compile_path(str(tmp_path / "camera.json"))
-    assert again.model is not None and to_json(again.model) == built
 
 
 def test_what_the_checker_refuses(tmp_path: Path) -> None:

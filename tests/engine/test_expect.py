@@ -12,8 +12,7 @@ from typing import Any
 import pytest
 
 from rdisc.compile import compile_path
-from rdisc.emit.canonical import to_json
-from tests.engine.test_one_engine import ScriptedPort, implementation_of
+from tests.engine.test_one_engine import ScriptedPort, implementation_of, through_json
 
 NODES = """\
 robot nodes { author "tests" }
@@ -61,16 +60,10 @@ def test_a_reply_that_does_not_meet_it_is_a_protocol_error_and_sets_nothing(impl
 
 
 def test_expect_goes_through_json_and_back(tmp_path: Path) -> None:
-    source = tmp_path / "nodes.rdis"
-    source.write_text(NODES, encoding="utf-8")
-    compilation = compile_path(str(source))
-    assert compilation.model is not None and not compilation.diagnostics.items
-    built = to_json(compilation.model)
+    compilation, built = through_json(NODES, tmp_path, "nodes")
+    assert not compilation.diagnostics.items
     scan = next(p for p in json.loads(built)["primitives"] if p["name"] == "scan")
     assert scan["expect"] == "<(__out__[0] & 1) != (__out__[1] & 1)>"
-    (tmp_path / "nodes.json").write_text(built, encoding="utf-8")
-    again = compile_path(str(tmp_path / "nodes.json"))
-    assert again.model is not None and to_json(again.model) == built
 
 
 @pytest.mark.parametrize(("clauses", "expected"), [

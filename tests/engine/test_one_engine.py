@@ -11,6 +11,8 @@ from typing import Any
 
 import pytest
 
+from rdisc.compile import Compilation, compile_path
+from rdisc.emit.canonical import to_json
 from rdisc.emit.python import import_driver
 from rdisc.runtime import engine, load
 
@@ -79,6 +81,20 @@ def implementation_of(kind: str, text: str, folder: Path, name: str) -> Any:
     source = folder / f"{name}.rdis"
     source.write_text(text, encoding="utf-8")
     return load(source) if kind == "runtime" else import_driver(source, folder, f"{name}_driver")
+
+
+def through_json(text: str, folder: Path, name: str) -> tuple[Compilation, str]:
+    """Compile a description's text and read its canonical JSON back: the JSON must come out
+    the same. Returns the compilation and the JSON."""
+    source = folder / f"{name}.rdis"
+    source.write_text(text, encoding="utf-8")
+    compilation = compile_path(str(source))
+    assert compilation.model is not None
+    built = to_json(compilation.model)
+    (folder / f"{name}.json").write_text(built, encoding="utf-8")
+    again = compile_path(str(folder / f"{name}.json"))
+    assert again.model is not None and to_json(again.model) == built
+    return compilation, built
 
 
 def _frame(id_: int, payload: bytes) -> bytes:

@@ -11,10 +11,9 @@ import pytest
 
 from rdisc.compile import compile_path
 from rdisc.diagnostics import Diagnostics
-from rdisc.emit.canonical import to_json
 from rdisc.syntax.parse import parse
 from rdisc.syntax.printer import print_module
-from tests.engine.test_one_engine import ScriptedPort, implementation_of
+from tests.engine.test_one_engine import ScriptedPort, implementation_of, through_json
 
 TABLES = """\
 robot tables { author "tests" }
@@ -45,14 +44,8 @@ def test_a_table_gives_the_value_of_a_key_and_refuses_another(kind: str, tmp_pat
 
 
 def test_tables_go_through_json_and_the_printer(tmp_path: Path) -> None:
-    source = tmp_path / "tables.rdis"
-    source.write_text(TABLES, encoding="utf-8")
-    compilation = compile_path(str(source))
-    assert compilation.model is not None and not compilation.diagnostics.items
-    built = to_json(compilation.model)
-    (tmp_path / "tables.json").write_text(built, encoding="utf-8")
-    again = compile_path(str(tmp_path / "tables.json"))
-    assert again.model is not None and to_json(again.model) == built
+    compilation, _ = through_json(TABLES, tmp_path, "tables")
+    assert not compilation.diagnostics.items
     module = parse("t.rdis", TABLES, Diagnostics())
     printed = print_module(module)
     assert "const BAUD_CODE = {\n    9600: 1,\n    19200: 2,\n    115200: 4,\n}\n" in printed

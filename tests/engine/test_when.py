@@ -9,8 +9,7 @@ from pathlib import Path
 import pytest
 
 from rdisc.compile import compile_path
-from rdisc.emit.canonical import to_json
-from tests.engine.test_one_engine import ScriptedPort, implementation_of
+from tests.engine.test_one_engine import ScriptedPort, implementation_of, through_json
 
 FIRMATA = """\
 robot pins { author "tests" }
@@ -42,15 +41,9 @@ def test_a_call_is_made_only_when_its_condition_holds(kind: str, tmp_path: Path)
 
 
 def test_the_condition_goes_through_json_and_back(tmp_path: Path) -> None:
-    source = tmp_path / "pins.rdis"
-    source.write_text(FIRMATA, encoding="utf-8")
-    compilation = compile_path(str(source))
-    assert compilation.model is not None and not compilation.diagnostics.items
-    built = to_json(compilation.model)
+    compilation, built = through_json(FIRMATA, tmp_path, "pins")
+    assert not compilation.diagnostics.items
     assert '"when": "<reporting>"' in built and '"when": "<pin > 3>"' in built
-    (tmp_path / "pins.json").write_text(built, encoding="utf-8")
-    again = compile_path(str(tmp_path / "pins.json"))
-    assert again.model is not None and to_json(again.model) == built
 
 
 def test_a_condition_is_a_bool_given_once(tmp_path: Path) -> None:

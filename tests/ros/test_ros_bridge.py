@@ -22,7 +22,7 @@ from pathlib import Path
 import pytest
 
 from tests.devices import CreateEmulator
-from tests.devices.create import STOP, TABLE_4_3
+from tests.devices.create import TABLE_4_3
 
 HERE = Path(__file__).resolve().parent
 REPO = HERE.parents[1]
@@ -208,19 +208,4 @@ def test_signals_at_any_moment_leave_the_robot_stopped(ros_env: dict[str, str], 
                           cwd=REPO, capture_output=True, text=True, check=False)
     assert done.returncode == 0, done.stderr
     with CreateEmulator() as device:
-        node = _start_node(node_path, ros_env, device)
-        try:
-            device.wait_for_commands(1, timeout=30)  # the port is open: from here on the robot must end stopped
-            time.sleep(after)
-            for signum in signals:
-                node.send_signal(signum)
-                time.sleep(gap)
-            output, _ = node.communicate(timeout=30)
-        finally:
-            if node.poll() is None:
-                node.kill()
-                node.communicate()
-        assert "Traceback" not in output, output
-        device.wait_until(lambda: bool(device.commands) and device.commands[-1][1] == STOP, 5, "the stop command last")
-        time.sleep(0.05)  # nothing more arrives after it
-        assert device.commands[-1][1] == STOP, device.commands[-3:]
+        device.signal_once_open(_start_node(node_path, ros_env, device), after, signals, gap)

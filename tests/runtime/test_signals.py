@@ -9,7 +9,6 @@ import signal
 import subprocess
 import sys
 import threading
-import time
 from collections.abc import Callable
 
 import pytest
@@ -42,23 +41,10 @@ def _interrupted(command: Callable[[str], list[str]], after: float, signals: lis
     with CreateEmulator() as dev:
         process = subprocess.Popen(command(dev.port), cwd=REPO, env=cli_env(), stdout=subprocess.PIPE,
                                    stderr=subprocess.PIPE, text=True)
-        try:
-            dev.wait_for_commands(1, timeout=30)  # the port is open: from here on the robot must end stopped
-            time.sleep(after)
-            for signum in signals:
-                process.send_signal(signum)
-                time.sleep(gap)
-            _, stderr = process.communicate(timeout=30)
-        finally:
-            if process.poll() is None:
-                process.kill()
-                process.communicate()
-        expected = 130 if signals[0] == signal.SIGINT else 143
-        assert process.returncode == expected, stderr
-        assert "Traceback" not in stderr and "internal error" not in stderr, stderr
-        dev.wait_until(lambda: bool(dev.commands) and dev.commands[-1][1] == STOP, 5, "the stop command last")
-        time.sleep(0.05)  # nothing more arrives after it
-        assert dev.commands[-1][1] == STOP, dev.commands[-3:]
+        stderr = dev.signal_once_open(process, after, signals, gap)
+    expected = 130 if signals[0] == signal.SIGINT else 143
+    assert process.returncode == expected, stderr
+    assert "internal error" not in stderr, stderr
 
 
 @pytest.mark.parametrize(("after", "signals", "gap"), MOMENTS.values(), ids=MOMENTS.keys())

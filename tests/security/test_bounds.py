@@ -7,18 +7,12 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
-from conftest import run_rdisc
+from conftest import check_text, run_rdisc
 from silent_port import SilentPort
 
 from rdisc import limits
 from rdisc.emit.python import import_driver
 from rdisc.runtime import engine, load
-
-
-def _check(tmp_path: Path, text: str, name: str = "d.rdis"):
-    source = tmp_path / name
-    source.write_text(text, encoding="utf-8")
-    return source, run_rdisc("check", source)
 
 
 def test_the_engine_keeps_the_same_width() -> None:
@@ -30,7 +24,7 @@ def test_constants_that_grow_are_refused_at_the_first_that_does_not_fit(tmp_path
     at the first constant; the ones built on it are not reported again."""
     lines = ['robot r { author "tests" }', "const A0 = 2 ** 2000"]
     lines += [f"const A{i} = A{i - 1} * A{i - 1}" for i in range(1, 23)]
-    source, result = _check(tmp_path, "\n".join(lines) + "\n")
+    source, result = check_text(tmp_path, "\n".join(lines) + "\n")
     assert result.returncode == 1
     assert result.stderr.startswith(
         "error[E405]: a 2001-bit integer is too large: integers are limited to 64 bits and a sign "
@@ -54,13 +48,13 @@ def test_constants_that_grow_are_refused_at_the_first_that_does_not_fit(tmp_path
      "(-18446744073709551615..18446744073709551615)")),
 ])
 def test_literals_and_folded_constants_stay_within_64_bits(tmp_path: Path, text: str, message: str) -> None:
-    _, result = _check(tmp_path, 'robot r { author "tests" }\n' + text + "\n")
+    _, result = check_text(tmp_path, 'robot r { author "tests" }\n' + text + "\n")
     assert result.returncode == 1
     assert ("\n" + message + "\n") in ("\n" + result.stderr), result.stderr
 
 
 def test_the_largest_ints_are_kept(tmp_path: Path) -> None:
-    _, result = _check(tmp_path, 'robot r { author "tests" }\nconst A = 18446744073709551615\n'
+    _, result = check_text(tmp_path, 'robot r { author "tests" }\nconst A = 18446744073709551615\n'
                                  "const B = -A\nconst C = 2 ** 64 - 1\nconst D = (1 << 64) - 1\n")
     assert result.returncode == 0, result.stderr
 
@@ -110,7 +104,7 @@ def test_a_line_past_the_limit_is_refused_before_parsing(tmp_path: Path) -> None
     """The issue's 8 MB string literal (29 s and 3.4 GB before): refused at the line, which the
     parser never sees; so is a chain of a million `+` on one line."""
     text = 'robot r { author "tests" }\nconst S = "' + "a" * 100_000 + '"\nconst T = ' + " + ".join(["1"] * 30_000)
-    _source, result = _check(tmp_path, text + "\n")
+    _source, result = check_text(tmp_path, text + "\n")
     assert result.returncode == 1
     errors = [line for line in result.stderr.splitlines() if line.startswith("error[")]
     assert errors == ["error[E005]: line of 100012 characters; the limit is 65536",
@@ -120,7 +114,7 @@ def test_a_line_past_the_limit_is_refused_before_parsing(tmp_path: Path) -> None
 
 def test_a_declaration_of_too_many_tokens_is_refused_before_parsing(tmp_path: Path) -> None:
     text = 'robot r { author "tests" }\nconst T = 0\n' + "".join("    + 1\n" for _ in range(12_000))
-    source, result = _check(tmp_path, text)
+    source, result = check_text(tmp_path, text)
     assert result.returncode == 1
     assert result.stderr.startswith(
         "error[E005]: declaration has more than 20000 tokens; split it, or make it simpler\n"

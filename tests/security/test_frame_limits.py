@@ -9,7 +9,7 @@ from pathlib import Path
 from typing import Any
 
 import pytest
-from conftest import run_rdisc
+from conftest import check_text
 
 from tests.engine.test_one_engine import ScriptedPort, implementation_of
 
@@ -35,14 +35,8 @@ primitive mark(kind: int) on link frame tagged(kind) pack "B" (2)
 """
 
 
-def _check(tmp_path: Path, text: str):
-    source = tmp_path / "limits.rdis"
-    source.write_text(text, encoding="utf-8")
-    return source, run_rdisc("check", source)
-
-
 def test_a_constant_argument_outside_a_frame_parameters_range_is_an_error(tmp_path: Path) -> None:
-    source, result = _check(tmp_path, HEAD + 'primitive bad() on link frame c(254) pack "B" (1)\n')
+    source, result = check_text(tmp_path, HEAD + 'primitive bad() on link frame c(254) pack "B" (1)\n')
     assert result.returncode == 1
     assert result.stderr == (
         "error[E403]: 254 is outside the range of parameter `id` of frame `c`\n"
@@ -56,7 +50,7 @@ def test_a_constant_argument_outside_a_frame_parameters_range_is_an_error(tmp_pa
 
 
 def test_a_length_field_must_state_every_payload_a_bytes_range_allows(tmp_path: Path) -> None:
-    source, result = _check(tmp_path, HEAD + 'primitive blob(data: bytes in 0..300) on link frame c(1) pack "B*" (7, data)\n')
+    source, result = check_text(tmp_path, HEAD + 'primitive blob(data: bytes in 0..300) on link frame c(1) pack "B*" (7, data)\n')
     assert result.returncode == 1
     assert result.stderr == (
         'error[E503]: the length field "B" of frame `c` cannot state every payload of `blob`: 1 to 301 bytes, '
@@ -70,12 +64,12 @@ def test_a_length_field_must_state_every_payload_a_bytes_range_allows(tmp_path: 
         "\n"
         "1 error emitted\n"
     )
-    _, fine = _check(tmp_path, HEAD + 'primitive blob(data: bytes in 0..254) on link frame c(1) pack "B*" (7, data)\n')
+    _, fine = check_text(tmp_path, HEAD + 'primitive blob(data: bytes in 0..254) on link frame c(1) pack "B*" (7, data)\n')
     assert fine.returncode == 0, fine.stderr
 
 
 def test_a_computed_field_of_constant_arguments_must_fit_its_code(tmp_path: Path) -> None:
-    source, result = _check(tmp_path, HEAD + 'primitive bad() on link frame tagged(0x100) pack "B" (1)\n')
+    source, result = check_text(tmp_path, HEAD + 'primitive bad() on link frame tagged(0x100) pack "B" (1)\n')
     assert result.returncode == 1
     assert result.stderr == (
         "error[E403]: 384 does not fit pack code `B` as field `code` of frame `tagged`\n"
@@ -86,7 +80,7 @@ def test_a_computed_field_of_constant_arguments_must_fit_its_code(tmp_path: Path
         "\n"
         "1 error emitted\n"
     )
-    _, fine = _check(tmp_path, HEAD + 'primitive good() on link frame tagged(0x7F) pack "B" (1)\n')
+    _, fine = check_text(tmp_path, HEAD + 'primitive good() on link frame tagged(0x7F) pack "B" (1)\n')
     assert fine.returncode == 0, fine.stderr
 
 
@@ -130,7 +124,7 @@ def test_a_call_within_the_limits_is_written_whole(robot: Any, call: tuple, writ
 
 def test_an_argument_of_another_type_is_one_type_error(tmp_path: Path) -> None:
     """Found by the fuzzer: a string where a ranged int goes was compared with the range."""
-    _source, result = _check(tmp_path, HEAD + 'primitive bad() on link frame c("x") pack "B" (1)\n'
+    _source, result = check_text(tmp_path, HEAD + 'primitive bad() on link frame c("x") pack "B" (1)\n'
                                            'primitive worse() on link frame tagged(2.5) pack "B" (1)\n')
     assert result.returncode == 1
     assert [line for line in result.stderr.splitlines() if line.startswith(("error", "rdisc:"))] == [
