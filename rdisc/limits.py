@@ -4,3 +4,7 @@ of the number; a test checks that the two agree.)"""
 
 MAX_INT = (1 << 64) - 1
 """The largest int rdisc keeps, and its negation the smallest: 64 bits and a sign."""
+
+# The most elements an array holds: a robot has tens of joints, not thousands, and every
+# array's values are written, read and copied whole.
+MAX_ARRAY = 1024

@@ -121,7 +121,7 @@ def _primitive(x: m.Primitive) -> JsonObject:
             decoding = ("unpack", None)  # no reply: the member is left out
         case _:
             _unreachable(x.decoding)
-    actions = [f"{a.target} = {_text(a.value)}" for a in x.actions]
+    actions = [line for a in x.actions for line in actions_text(a)]
     return _object(
         ("name", x.name),
         ("parameters", [param.name for param in x.params]),
@@ -146,7 +146,7 @@ def _primitive(x: m.Primitive) -> JsonObject:
 
 def _case(c: m.ReplyCase) -> JsonObject:
     kind, template = ("unpack", c.decoding.format) if isinstance(c.decoding, m.Unpack) else ("regex", c.decoding.pattern)
-    actions = [f"{a.target} = {_text(a.value)}" for a in c.actions]
+    actions = [line for a in c.actions for line in actions_text(a)]
     return _object(("value", c.value), (kind, template), ("postActions", actions or None))
 
 
@@ -261,6 +261,18 @@ def _embedded(e: m.Expr) -> str:
     return f"<{_text(e)}>"
 
 
+def actions_text(action: m.PostAction) -> list[str]:
+    """A post-action as written: `x = value`, or one `x[i] = value` per element it replaces."""
+    elements: list[str] = []
+    value = action.value
+    while isinstance(value, m.Replaced):
+        elements.insert(0, f"{action.target}[{_text(value.index)}] = {_text(value.value)}")
+        value = value.array
+    if elements and isinstance(value, m.Var) and value.name == action.target:
+        return elements
+    return [f"{action.target} = {_text(action.value)}"]
+
+
 def expression_text(e: m.Expr) -> str:
     """An expression of the Model as RDIS source text."""
     return _expr(e).text
@@ -287,12 +299,20 @@ def _expr(e: m.Expr) -> p.Printed:
             return p.Printed(f"{table}[{_expr(key).text}]", p.ATOM)
         case m.FuncCall(func, args):
             return p.call(func, [_expr(a) for a in args])
+        case m.ArrayValue(items):
+            return p.array([_expr(a) for a in items])
+        case m.Element(array, index):
+            return p.index(_expr(array).text, _expr(index))
+        case m.Replaced():
+            raise AssertionError("a replaced element is written as its post-action (`actions_text`)")
         case _:
             _unreachable(e)
 
 
-def _const(value: m.Value, type_: Type) -> p.Printed:
+def _const(value: m.Value, type_: m.AnyType) -> p.Printed:
     """A constant spelled by its type, so that 1.0 stays a float and True a bool."""
+    if isinstance(type_, m.Array):
+        return p.array([_const(v, type_.element) for v in value])  # type: ignore[union-attr]
     match type_:
         case Type.INT:
             return p.literal(int(value))

@@ -71,7 +71,7 @@ def _payload_rows(encoding: m.Pack | m.Format, args: tuple[m.Expr, ...]) -> list
     match encoding:
         case m.Pack(format=fmt):
             slots = formats.struct_layout(fmt).slots
-            return [(_size(fmt, s.code), _kind(fmt, s.code), expression_text(a)) for s, a in zip(slots, args)]
+            return [(_size(fmt, s.code), _kind(fmt, s.code), expression_text(a)) for s, a in zip(slots, m.spread(args))]
         case m.Format(template=template):
             shown = ", ".join(expression_text(a) for a in args)
             return [(None, "text", f'"{template}"' + (f" ({shown})" if shown else ""))]

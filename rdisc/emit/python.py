@@ -41,6 +41,13 @@ __all__ = ["import_driver", "to_python"]
 
 _PY_TYPES = {Type.INT: "int", Type.FLOAT: "float", Type.BOOL: "bool", Type.STRING: "str", Type.BYTES: "bytes"}
 
+
+def _py_type(type_: m.AnyType) -> str:
+    """The annotation of a value of `type_`: an array is a tuple (a list is taken too)."""
+    if isinstance(type_, m.Array):
+        return f"Sequence[{_PY_TYPES[type_.element]}]"
+    return _PY_TYPES[type_]
+
 # Names a plan function may use: a parameter or field of the same name would hide
 # them, so such a parameter gets a trailing underscore.
 _BODY_NAMES = frozenset((
@@ -250,7 +257,7 @@ class _Driver:
             rendered = []
             for key, e, type_ in items:
                 py = self.exprs.bound(e, type_, local) if type_ is not None else self.exprs.expr(e, local)
-                rendered.append((f"{quoted(key)}: " if keyed else "", py))
+                rendered.append((f"{quoted(key)}: " if keyed else key, py))  # key "*": an array given element by element
             flat = "return " + opening + ", ".join(prefix + py.text for prefix, py in rendered) + closing
             if len(flat) <= w.width() and "\n" not in flat:
                 w.line(flat)
@@ -418,7 +425,8 @@ class _Driver:
             names = [local[f.name] for f in fields]
             if names:
                 w.line(f"({names[0]},) = args" if len(names) == 1 else f"{', '.join(names)} = args")
-                checks = " or ".join(f"type({n}) is not {_PY_TYPES[f.type]}" for n, f in zip(names, fields))
+                checks = " or ".join(f"type({n}) is not {_PY_TYPES[f.type] if isinstance(f.type, Type) else 'tuple'}"
+                                    for n, f in zip(names, fields))
                 with w.block(f"if {checks}:"):
                     w.line("return None")
             with w.block("try:"):
@@ -437,7 +445,9 @@ class _Driver:
         self.comment(w, prim.span, f"primitive {prim.name}")
         base = f"_p_{prim.name}"
         signature = "state: StateValues, args: Args"
-        self.function(w, f"{base}_values", signature, prim.params, [("", a, None) for a in prim.args], "Args")
+        spreads = prim.spreads()
+        self.function(w, f"{base}_values", signature, prim.params,
+                      [("*" if i in spreads else "", a, None) for i, a in enumerate(prim.args)], "Args")
         if prim.frame is not None:
             w.blank(2)
             self.function(w, f"{base}_frame", signature, prim.params, [("", a, None) for a in prim.frame.args],
@@ -556,7 +566,7 @@ class _Driver:
                     continue  # by name only
                 w.blank(1)
                 self.comment(w, s.span)
-                w.line(f"{s.name}: {_PY_TYPES[s.type]}")
+                w.line(f"{s.name}: {_py_type(s.type)}")
                 if s.doc:
                     w.line(_docstring(s.doc))
         for kind, title, elements in (
@@ -630,7 +640,7 @@ class _Driver:
         adapter = self.model.adapters[i.adapter]
         local = _params([(f.name, f.type) for f in adapter.fields], frozenset({"self"}))
         star = ", *" if keywords and adapter.fields else ""
-        signature = star + "".join(f", {local[f.name]}: {_PY_TYPES[f.type]}" for f in adapter.fields)
+        signature = star + "".join(f", {local[f.name]}: {_py_type(f.type)}" for f in adapter.fields)
         with w.block(f"def {method}(self{signature}) -> None:"):
             doc = [i.doc or f"The domain input `{i.name}`."]
             doc += ["", f"Takes {_a(adapter.name)} and runs the interface `{i.interface}`; errors are raised."]
@@ -647,7 +657,7 @@ class _Driver:
     def call_method(self, w: Writer, kind: str, name: str, method: str) -> None:
         element = self.model.interfaces[name] if kind == "interface" else self.model.primitives[name]
         local = _params([(prm.name, prm.type) for prm in element.params], frozenset({"self"}))
-        signature = "".join(f", {local[prm.name]}: {_PY_TYPES[prm.type]}"
+        signature = "".join(f", {local[prm.name]}: {_py_type(prm.type)}"
                             + (f" = {literal(prm.default, prm.type).text}" if prm.default is not None else "")
                             for prm in element.params)
         with w.block(f"def {method}(self{signature}) -> None:"):
@@ -728,6 +738,12 @@ def _names(e: m.Expr) -> set[str]:
             return set().union(*(_names(a) for a in args))
         case m.Lookup(key=key):
             return _names(key)
+        case m.ArrayValue(items=items):
+            return set().union(*(_names(i) for i in items))
+        case m.Element(array=array, index=index):
+            return _names(array) | _names(index)
+        case m.Replaced(array=array, index=index, value=value):
+            return _names(array) | _names(index) | _names(value)
     return set()
 
 
@@ -736,7 +752,11 @@ def _param_tuple(params: tuple[m.Parameter, ...]) -> str:
     for prm in params:
         bounds = f", {prm.low!r}, {prm.high!r}" if prm.low is not None else ""
         default = f", default={literal(prm.default, prm.type).text}" if prm.default is not None else ""
-        items.append(f"Param({quoted(prm.name)}, {_PY_TYPES[prm.type]}{bounds}{default})")
+        if isinstance(prm.type, m.Array):
+            items.append(f"Param({quoted(prm.name)}, {_PY_TYPES[prm.type.element]}{bounds}{default}, "
+                         f"size={prm.type.size})")
+        else:
+            items.append(f"Param({quoted(prm.name)}, {_PY_TYPES[prm.type]}{bounds}{default})")
     return _tuple(items)
 
 

@@ -144,8 +144,11 @@ def float_literal(value: float) -> Py:
     return Py(text, p.ATOM)
 
 
-def literal(value: m.Value, type_: Type) -> Py:
+def literal(value: m.Value, type_: m.AnyType) -> Py:
     """A constant as Python source, spelled by its declared type, through repr."""
+    if isinstance(type_, m.Array):
+        assert isinstance(value, tuple)
+        return tuple_py([literal(v, type_.element) for v in value])
     match type_:
         case Type.BOOL:
             return Py(repr(bool(value)), p.ATOM)
@@ -157,6 +160,13 @@ def literal(value: m.Value, type_: Type) -> Py:
         case Type.STRING:
             return Py(quoted(str(value)), p.ATOM)
     _unreachable(type_)
+
+
+def tuple_py(items: list[Py]) -> Py:
+    """A tuple display: `(a, b)`, `(a,)`."""
+    if len(items) == 1:
+        return Py(f"({items[0].at(p.CONDITIONAL).text},)", p.ATOM)
+    return call("", items)
 
 
 def quoted(value: str | bytes) -> str:
@@ -209,11 +219,26 @@ class Compiler:
                 return self.call(func, args, names, finite)
             case m.Lookup(table=table, key=key):
                 return Py(f"lookup({quoted(table)}, {table_name(table)}, {self.expr(key, names).text})", p.ATOM)
+            case m.ArrayValue(items=items, type=type_):
+                return tuple_py([self.bound(item, type_.element, names) for item in items])
+            case m.Element(array=m.Var(type=m.Array(size=size)) as array, index=m.Const(value=at)) if 0 <= at < size:
+                return Py(f"{self.expr(array, names).text}[{at}]", p.ATOM)  # its size was checked as it was bound
+            case m.Element(array=array, index=index):
+                return call("element", [Py(quoted(m.array_name(array)), p.ATOM), self.expr(array, names),
+                                        self.expr(index, names)])
+            case m.Replaced(array=array, index=index, value=value, type=type_):
+                return call("replaced", [Py(quoted(m.array_name(array)), p.ATOM), self.expr(array, names),
+                                         self.expr(index, names), self.bound(value, type_.element, names)])
         _unreachable(e)
 
-    def bound(self, e: m.Expr, declared: Type, names: Mapping[str, str]) -> Py:
+    def bound(self, e: m.Expr, declared: m.AnyType, names: Mapping[str, str]) -> Py:
         """`e` as the value of a parameter, field or state variable of type `declared`: as the
         contract binds values, an int becomes a float where a float is declared."""
+        if isinstance(declared, m.Array):
+            py = self.expr(e, names)
+            if declared.element is Type.FLOAT and isinstance(e.type, m.Array) and e.type.element is Type.INT:
+                return call("tuple", [Py(f"float(v) for v in {py.at(p.CONDITIONAL).text}", p.ATOM)])
+            return py
         if declared is Type.FLOAT and isinstance(e, m.Const) and e.type is Type.INT:
             try:
                 return literal(float(e.value), Type.FLOAT)  # 0 bound to a float is 0.0, known now

@@ -113,7 +113,7 @@ class Description:
             frame = engine.FrameUse(self._frames[p.frame.frame], _values([prepare(a, slots) for a in p.frame.args]))
         expect = None if p.expect is None else prepare(p.expect, slots)
         return engine.Primitive(
-            p.name, p.connection, _params(p.params), _values([prepare(a, slots) for a in p.args]),
+            p.name, p.connection, _params(p.params), _spread(_values([prepare(a, slots) for a in p.args]), p.spreads()),
             encoder(p.encoding), decoder(p.decoding), actions, frame, p.skip_unmatched,
             None if p.timeout_ms is None else p.timeout_ms / 1000.0, checked=checked, expect=expect,
         )
@@ -166,7 +166,7 @@ class Description:
 
     def _input(self, i: m.DomainInput, interfaces: Mapping[str, engine.Interface]) -> engine.Input:
         adapter = self.model.adapters[i.adapter]
-        fields = tuple(engine.Param(f.name, _KINDS[f.type]) for f in adapter.fields)
+        fields = tuple(_param(f.name, f.type) for f in adapter.fields)
         slots = {f.name: n for n, f in enumerate(adapter.fields)}
         return engine.Input(i.name, i.adapter, fields, interfaces[i.interface],
                             _values([prepare(a, slots) for a in i.args]))
@@ -189,7 +189,14 @@ class Description:
 
 
 def _params(params: tuple[m.Parameter, ...]) -> tuple[engine.Param, ...]:
-    return tuple(engine.Param(p.name, _KINDS[p.type], p.low, p.high, p.default) for p in params)
+    return tuple(_param(p.name, p.type, p.low, p.high, p.default) for p in params)
+
+
+def _param(name: str, type_: m.AnyType, low: float | None = None, high: float | None = None,
+           default: m.Value | None = None) -> engine.Param:
+    if isinstance(type_, m.Array):
+        return engine.Param(name, _KINDS[type_.element], low, high, default, type_.size)
+    return engine.Param(name, _KINDS[type_], low, high, default)
 
 
 def _condition(holds: Prepared) -> Callable[[Mapping[str, m.Value], Any], m.Value]:
@@ -212,6 +219,21 @@ def _widened(f: Prepared) -> Prepared:
         return float(value) if type(value) is int else value
 
     return widened
+
+
+def _spread(values: Callable[[Mapping[str, m.Value], Any], list[m.Value]],
+            arrays: tuple[int, ...]) -> Callable[[Mapping[str, m.Value], Any], list[m.Value]]:
+    """Format values with the arrays among them (at `arrays`) given element by element."""
+    if not arrays:
+        return values
+
+    def spread(s: Mapping[str, m.Value], loc: Any) -> list[m.Value]:
+        flat: list[m.Value] = []
+        for i, v in enumerate(values(s, loc)):
+            flat.extend(v) if i in arrays else flat.append(v)  # type: ignore[arg-type]
+        return flat
+
+    return spread
 
 
 def _values(fs: list[Prepared | m.Const]) -> Callable[[Mapping[str, m.Value], Any], list[m.Value]]:

@@ -18,8 +18,9 @@ import sys
 from collections.abc import Callable, Mapping, Sequence
 from typing import Any
 
-from rdisc.runtime.engine import lookup
+from rdisc.runtime.engine import element, lookup, replaced
 from rdisc.semantics import model as m
+from rdisc.semantics.model import coerce
 from rdisc.semantics.operators import BINARY, FUNCTIONS, UNARY, EvalError
 
 __all__ = ["EvalError", "Prepared", "always_float", "coerce", "evaluate", "prepare"]
@@ -48,14 +49,14 @@ def evaluate(expr: m.Expr, names: Mapping[str, m.Value], reply: Sequence[m.Value
             return FUNCTIONS[func](*(evaluate(a, names, reply) for a in args))
         case m.Lookup(table=table, entries=entries, key=key):
             return lookup(table, dict(entries), evaluate(key, names, reply))  # type: ignore[no-any-return]
+        case m.ArrayValue(items=items, type=type_):
+            return tuple(coerce(evaluate(i, names, reply), type_.element) for i in items)
+        case m.Element(array=array, index=index):
+            return element(m.array_name(array), evaluate(array, names, reply), evaluate(index, names, reply))  # type: ignore[arg-type]
+        case m.Replaced(array=array, index=index, value=value, type=type_):
+            return replaced(m.array_name(array), evaluate(array, names, reply), evaluate(index, names, reply),  # type: ignore[arg-type]
+                            coerce(evaluate(value, names, reply), type_.element))
     raise AssertionError(f"unknown expression node {expr!r}")
-
-
-def coerce(value: m.Value, type_: m.Type) -> m.Value:
-    """A value as the type it is declared with: ints widen to floats, nothing else changes."""
-    if type_ is m.Type.FLOAT and isinstance(value, int) and not isinstance(value, bool):
-        return float(value)
-    return value
 
 
 Prepared = Callable[[Mapping[str, m.Value], Any, Sequence[m.Value]], m.Value]
@@ -105,6 +106,20 @@ def prepare(expr: m.Expr, slots: Mapping[str, int] | None = None) -> Prepared:
         case m.Lookup(table=table, entries=entries, key=key):
             found, k = dict(entries), prepare(key, slots)
             return lambda s, loc, r: lookup(table, found, k(s, loc, r))
+        case m.ArrayValue(items=items, type=type_):
+            floats = type_.element is m.Type.FLOAT
+            parts = [prepare(i, slots) for i in items]
+            if floats:
+                return lambda s, loc, r: tuple(float(f(s, loc, r)) for f in parts)
+            return lambda s, loc, r: tuple(f(s, loc, r) for f in parts)
+        case m.Element(array=array, index=index):
+            name, a, i = m.array_name(array), prepare(array, slots), prepare(index, slots)
+            return lambda s, loc, r: element(name, a(s, loc, r), i(s, loc, r))
+        case m.Replaced(array=array, index=index, value=value, type=type_):
+            name, a, i, v = m.array_name(array), prepare(array, slots), prepare(index, slots), prepare(value, slots)
+            widen = type_.element is m.Type.FLOAT
+            return lambda s, loc, r: replaced(name, a(s, loc, r), i(s, loc, r),
+                                              float(v(s, loc, r)) if widen else v(s, loc, r))
     raise AssertionError(f"unknown expression node {expr!r}")
 
 
@@ -179,6 +194,10 @@ def _constant(expr: m.Expr) -> bool:
             return all(_constant(a) for a in args)
         case m.Lookup(key=key):
             return _constant(key)
+        case m.ArrayValue(items=items):
+            return all(_constant(i) for i in items)
+        case m.Element(array=array, index=index):
+            return _constant(array) and _constant(index)
     return False
 
 

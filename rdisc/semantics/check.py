@@ -12,6 +12,7 @@ import math
 from collections.abc import Iterator
 
 from rdisc.diagnostics import Diagnostics, Label, abbreviate
+from rdisc.limits import MAX_ARRAY
 from rdisc.semantics import formats, ros
 from rdisc.semantics import model as m
 from rdisc.semantics.frames import FrameRules, length_range, payload_end_known
@@ -103,20 +104,44 @@ class _Checker:
 
     # -- shared pieces ---------------------------------------------------------------------
 
-    def type_name(self, ident: ast.Ident, what: str = "") -> Type | None:
+    def type_name(self, ref: ast.TypeRef, what: str = "", open_size: bool = False) -> m.AnyType | None:
         """A type by name; `what` names a place that holds values over time, where bytes
-        (a parameter's or a reply's variable-length data) cannot go."""
-        found = _TYPES.get(ident.text)
+        (a parameter's or a reply's variable-length data) cannot go. An array's size is a
+        constant; only an adapter's field (`open_size`) leaves it out."""
+        if isinstance(ref, ast.ArrayOf):
+            return self.array_type(ref, what, open_size)
+        found = _TYPES.get(ref.text)
         if found is None:
             self.d.report(
-                "E105", ident.span, f"unknown type `{ident.text}`", help=suggest(ident.text, _TYPES) or
-                "types are int, float, bool, string and bytes"
+                "E105", ref.span, f"unknown type `{ref.text}`", help=suggest(ref.text, _TYPES) or
+                "types are int, float, bool, string and bytes, and arrays of the first three: `int[6]`"
             )
         elif found is Type.BYTES and what:
-            self.d.report("E105", ident.span, f"{what} cannot be bytes",
+            self.d.report("E105", ref.span, f"{what} cannot be bytes",
                           help="bytes are for parameters and replies: store `len(out[1])` or `byte(out[1], 0)`")
             return None
         return found
+
+    def array_type(self, ref: ast.ArrayOf, what: str, open_size: bool) -> m.Array | None:
+        element = self.type_name(ref.element, what)
+        if element is None:
+            return None
+        if element not in (Type.INT, Type.FLOAT, Type.BOOL):
+            self.d.report("E105", ref.element.span, f"an array holds ints, floats or bools, not {element.value}")
+            return None
+        if ref.size is None:
+            if not open_size:
+                self.d.report("E105", ref.span, "an array's size is given: `int[6]`",
+                              help="only an adapter's field leaves it out, for the description to fix")
+                return None
+            return m.Array(element, 0)
+        size = self.setting(ref.size, "an array's size", MAX_ARRAY)
+        if size is None:
+            return None
+        if size != int(size) or size < 1:
+            self.d.report("E204", ref.size.span, f"an array's size is a whole number, 1 or more, not {size:g}")
+            return None
+        return m.Array(element, int(size))
 
     def params(self, params: tuple[ast.Param, ...], owner: str) -> tuple[m.Parameter, ...]:
         seen: dict[str, ast.Param] = {}
@@ -130,7 +155,7 @@ class _Checker:
                 )
             seen[p.name.text] = p
             type_ = self.type_name(p.type)
-            low, high = self.param_range(p, type_)
+            low, high = self.param_range(p, type_.element if isinstance(type_, m.Array) else type_)
             default = self.param_default(p, type_, low, high)
             if default is None and p.default is None and any(q.default is not None for q in params[: len(out)]):
                 self.d.report("E204", p.name.span, f"parameter `{p.name.text}` needs a default: it follows one "
@@ -138,7 +163,7 @@ class _Checker:
             out.append(m.Parameter(p.name.text, type_, low, high, default))  # type: ignore[arg-type]
         return tuple(out)
 
-    def param_default(self, p: ast.Param, type_: Type | None, low: float | None,
+    def param_default(self, p: ast.Param, type_: m.AnyType | None, low: float | None,
                       high: float | None) -> m.Value | None:
         """`= value`: a constant of the parameter's type (an int made a float for a float
         parameter), within its range."""
@@ -151,13 +176,12 @@ class _Checker:
             if value.type is not None:
                 self.d.report("E204", p.default.span, "a default is a constant")
             return None
-        if type_ is Type.FLOAT and isinstance(constant, int) and not isinstance(constant, bool):
-            constant = float(constant)
-        if low is not None and high is not None and isinstance(constant, (int, float)) \
-                and not low <= constant <= high:
-            self.d.report("E403", p.default.span, f"{shown(constant)} is outside the range of parameter "
-                          f"`{p.name.text}`", label=f"in {low!r}..{high!r}")
-            return None
+        constant = m.coerce(constant, type_)
+        for item in constant if isinstance(constant, tuple) else (constant,):
+            if low is not None and high is not None and isinstance(item, (int, float)) and not low <= item <= high:
+                self.d.report("E403", p.default.span, f"{shown(item)} is outside the range of parameter "
+                              f"`{p.name.text}`", label=f"in {low!r}..{high!r}")
+                return None
         return constant  # type: ignore[return-value]
 
     def param_range(self, p: ast.Param, type_: Type | None) -> tuple[float | None, float | None]:
@@ -166,8 +190,8 @@ class _Checker:
         if p.low is None or p.high is None:
             return None, None
         if type_ not in (Type.INT, Type.FLOAT, Type.BYTES):
-            self.d.report("E204", p.low.span.to(p.high.span),
-                          f"only a number (or bytes, by length) has a range, not `{p.type.text}`")
+            self.d.report("E204", p.low.span.to(p.high.span), "only a number (or bytes, by length) has a range, "
+                          f"not {'a value of unknown type' if type_ is None else describe(type_)}")
             return None, None
         low, high = self.setting(p.low, "a range's bound"), self.setting(p.high, "a range's bound")
         if low is None or high is None:
@@ -192,6 +216,14 @@ class _Checker:
         """A value of value.type goes into something of type `target` (int widens to float)."""
         source = value.type
         if source is None or target is None or source == target or (source, target) == (Type.INT, Type.FLOAT):
+            return
+        if isinstance(source, m.Array) and isinstance(target, m.Array) and 0 in (source.size, target.size) \
+                and unify(source.element, target.element) == target.element:
+            return  # an adapter's open array: its size is checked when it runs
+        if isinstance(source, m.Array) or isinstance(target, m.Array):
+            element = unify(source, target) == target
+            self.d.report("E401", span, f"{into} takes {describe(target)}, but this is {describe(source)}",
+                          help="an array's size and type are fixed: `int[6]` takes an int[6]" if not element else None)
             return
         if (source, target) == (Type.FLOAT, Type.INT):
             self.d.report(
@@ -361,7 +393,7 @@ class _Checker:
                 if problem is not None:
                     self.d.report("E108", f.ros.span, problem)
                 path = f.ros.value
-            fields.append(m.AdapterField(f.name.text, self.type_name(f.type, "an adapter field"), f.unit, path,
+            fields.append(m.AdapterField(f.name.text, self.type_name(f.type, "an adapter field", True), f.unit, path,
                                          f.doc))  # type: ignore[arg-type]
         message = None
         if decl.ros is not None:
@@ -385,7 +417,7 @@ class _Checker:
                 before = self.d.error_count
                 self.flow(node, type_, decl.init.span, f"state variable `{decl.name.text}`")
                 if self.d.error_count == before:
-                    initial = float(value) if type_ is Type.FLOAT else value  # type: ignore[arg-type]
+                    initial = m.coerce(value, type_)
         return m.StateVariable(decl.name.text, type_, initial, decl.doc, decl.span)  # type: ignore[arg-type]
 
     def connection(self, decl: ast.ConnectionDecl, interface_params) -> m.Connection:
@@ -737,16 +769,26 @@ class _Checker:
             code = "E301" if enc.kind == "pack" else "E303"
             self.d.report(code, self.template_span(enc.template, err.offset, err.length), err.message)
             return None, args
-        if len(slots) != len(args):
+        arrays = [(arg, expr) for arg, expr in zip(args, enc.args) if isinstance(arg.type, m.Array)]
+        if arrays and enc.kind == "format":
+            arg, expr = arrays[0]
+            self.d.report("E401", expr.span, f"a format field cannot format {describe(arg.type)}",  # type: ignore[arg-type]
+                          help="format its elements: `position[0]`")
+            return None, args
+        values = m.spread(args)
+        exprs = [expr for arg, expr in zip(args, enc.args)
+                 for _ in range(arg.type.size if isinstance(arg.type, m.Array) else 1)]
+        if len(slots) != len(values):
+            given = _count(len(args), "argument") + (f" giving {_count(len(values), 'value')}" if arrays else " given")
             self.d.report(
                 "E302", enc.span,
-                f"`{enc.kind} \"{abbreviate(template)}\"` takes {_count(len(slots), 'value')}, "
-                f"but {_count(len(args), 'argument')} given",
+                f"`{enc.kind} \"{abbreviate(template)}\"` takes {_count(len(slots), 'value')}, but {given}",
+                help="an array gives each of its elements" if arrays else None,
             )
             return None, args
-        for arg, expr, slot in zip(args, enc.args, slots):
+        for arg, expr, slot in zip(values, exprs, slots):
             if enc.kind == "pack":
-                self.pack_value(arg, expr, slot)
+                self.pack_value(self.typer.folded(arg), expr, slot)
             else:
                 self.format_value(arg, expr, slot)
         return (m.Pack(template) if enc.kind == "pack" else m.Format(template)), args
@@ -804,6 +846,8 @@ class _Checker:
             return None, None
 
     def actions(self, block: ast.Actions, env: Env, params: set[str]) -> tuple[m.PostAction, ...]:
+        """Post-actions; the elements stored into one array (`position[id] = out[0]`) are one
+        action, the array with each element replaced in turn."""
         out: list[m.PostAction] = []
         written: dict[str, ast.Assign] = {}
         for assign in block.assigns:
@@ -817,12 +861,35 @@ class _Checker:
                     help=suggest(target, self.s.states) or "post-actions write state variables, and only they do",
                 )
                 continue
-            if target in written:
+            declared = self.state_env.get(target, (None, None))[1]
+            first = written.get(target)
+            if first is not None and (assign.index is None or first.index is None):
                 self.d.report("E203", assign.target.span, f"state variable `{target}` is assigned twice",
-                              labels=(Label(written[target].target.span, "first assigned here"),))
-            written[target] = assign
-            self.flow(value, self.state_env.get(target, (None, None))[1], assign.value.span, f"state variable `{target}`")
-            out.append(m.PostAction(m.StateRef(target), value, assign.span))
+                              labels=(Label(first.target.span, "first assigned here"),))
+            if assign.index is None:
+                written[target] = assign
+                self.flow(value, declared, assign.value.span, f"state variable `{target}`")
+                out.append(m.PostAction(m.StateRef(target), value, assign.span))
+                continue
+            if not isinstance(declared, m.Array):
+                if declared is not None:
+                    self.d.report("E404", assign.index.span, f"`{target}` is not an array: it is {describe(declared)}")
+                continue
+            index = self.typer.expr(assign.index, env)
+            if index.type is not None and index.type is not Type.INT:
+                self.d.report("E404", assign.index.span, f"an index is an int, not {describe(index.type)}")
+            self.typer.in_array(declared, index, target, assign.index.span)
+            self.flow(value, declared.element, assign.value.span, f"an element of `{target}`")
+            self.typer.reads.add(target)
+            if first is not None and first.index is not None:  # replace one more element of the same array
+                before = next(k for k, a in enumerate(out) if a.target == target)
+                out[before] = m.PostAction(m.StateRef(target), m.Replaced(out[before].value, index, value, declared,
+                                                                          assign.span), out[before].span)
+            else:
+                written[target] = assign
+                whole = m.Var(target, Scope.STATE, declared, assign.target.span)
+                out.append(m.PostAction(m.StateRef(target), m.Replaced(whole, index, value, declared, assign.span),
+                                        assign.span))
         return tuple(out)
 
     def interface(self, decl: ast.InterfaceDecl, interface_params: dict[str, tuple[m.Parameter, ...]],
@@ -885,7 +952,7 @@ class _Checker:
         if not isinstance(prim.encoding, m.Pack) or len(args) != len(prim.params):
             return
         slots = formats.struct_layout(prim.encoding.format).slots
-        for slot, packed in zip(slots, prim.args):
+        for slot, packed in zip(slots, prim.format_values()):
             if not isinstance(packed, m.Var) or packed.scope is not Scope.PARAM or slot.low is None:
                 continue
             i = next(i for i, p in enumerate(prim.params) if p.name == packed.name)

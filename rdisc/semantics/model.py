@@ -36,7 +36,36 @@ class Type(enum.Enum):
         return {Type.INT: 0, Type.FLOAT: 0.0, Type.BOOL: False, Type.STRING: "", Type.BYTES: b""}[self]
 
 
-Value = int | float | bool | str | bytes
+@dataclass(frozen=True, slots=True)
+class Array:
+    """A fixed number of values of one scalar type (`int[6]`), held as a tuple. An adapter's
+    field leaves the size open (`float[]`, size 0): the description that uses it fixes it."""
+
+    element: Type
+    size: int  # 0: open
+
+    @property
+    def value(self) -> str:
+        """As written: `int[6]`, `float[]`."""
+        return f"{self.element.value}[{self.size or ''}]"
+
+    def default(self) -> tuple[Value, ...]:
+        return (self.element.default(),) * self.size
+
+
+AnyType = Type | Array
+Value = int | float | bool | str | bytes | tuple  # an array's value is a tuple of its elements
+
+
+def coerce(value: Value, type_: AnyType) -> Value:
+    """A value as the type it is declared with: ints widen to floats, nothing else changes."""
+    if isinstance(type_, Array):
+        if type_.element is Type.FLOAT and isinstance(value, tuple):
+            return tuple(coerce(v, Type.FLOAT) for v in value)
+        return value
+    if type_ is Type.FLOAT and isinstance(value, int) and not isinstance(value, bool):
+        return float(value)
+    return value
 
 
 # ---- typed expressions ----------------------------------------------------------
@@ -53,7 +82,7 @@ class Scope(enum.Enum):
 @dataclass(frozen=True, slots=True)
 class Const:
     value: Value
-    type: Type
+    type: AnyType
     span: Span | None = _span
 
 
@@ -61,7 +90,7 @@ class Const:
 class Var:
     name: str
     scope: Scope
-    type: Type
+    type: AnyType
     span: Span | None = _span
 
 
@@ -96,7 +125,7 @@ class IfElse:
     cond: Expr
     then: Expr
     orelse: Expr
-    type: Type
+    type: AnyType
     span: Span | None = _span
 
 
@@ -104,7 +133,7 @@ class IfElse:
 class FuncCall:
     func: str  # one of rdisc.semantics.operators.FUNCTIONS
     args: tuple[Expr, ...]
-    type: Type
+    type: AnyType
     span: Span | None = _span
 
 
@@ -130,7 +159,53 @@ class Lookup:
     span: Span | None = _span
 
 
-Expr = Const | Var | ReplyValue | UnaryOp | BinaryOp | IfElse | FuncCall | Lookup
+@dataclass(frozen=True, slots=True)
+class ArrayValue:
+    """`[a, b, c]`: an array of the items' values."""
+
+    items: tuple[Expr, ...]
+    type: Array
+    span: Span | None = _span
+
+
+@dataclass(frozen=True, slots=True)
+class Element:
+    """`array[index]`: one element; an index outside the array is an error, never wrapped."""
+
+    array: Expr
+    index: Expr
+    type: Type
+    span: Span | None = _span
+
+
+@dataclass(frozen=True, slots=True)
+class Replaced:
+    """The array with one element replaced: what `array[index] = value` in a post-action stores."""
+
+    array: Expr
+    index: Expr
+    value: Expr
+    type: Array
+    span: Span | None = _span
+
+
+def array_name(array: Expr) -> str:
+    """How a run-time error names an array: the variable's name, or `array` for a computed one."""
+    return array.name if isinstance(array, Var) else "array"
+
+
+def spread(args: tuple[Expr, ...]) -> tuple[Expr, ...]:
+    """Format arguments as the values they give, one per code: an array as its elements."""
+    values: list[Expr] = []
+    for a in args:
+        if isinstance(a.type, Array):
+            values.extend(Element(a, Const(i, Type.INT), a.type.element, a.span) for i in range(a.type.size))
+        else:
+            values.append(a)
+    return tuple(values)
+
+
+Expr = Const | Var | ReplyValue | UnaryOp | BinaryOp | IfElse | FuncCall | Lookup | ArrayValue | Element | Replaced
 
 
 # ---- elements --------------------------------------------------------------------
@@ -139,7 +214,7 @@ Expr = Const | Var | ReplyValue | UnaryOp | BinaryOp | IfElse | FuncCall | Looku
 @dataclass(frozen=True, slots=True)
 class Parameter:
     name: str
-    type: Type
+    type: AnyType
     low: int | float | None = None  # the range a value must be in, when declared
     high: int | float | None = None
     default: Value | None = None  # the value when a call leaves it out (the parameters after it have one too)
@@ -161,7 +236,7 @@ class Robot:
 @dataclass(frozen=True, slots=True)
 class StateVariable:
     name: str
-    type: Type
+    type: AnyType
     initial: Value
     doc: str | None = None
     span: Span | None = _span
@@ -255,8 +330,8 @@ def may_outgrow(e: Expr) -> bool:
             return may_outgrow(then) or may_outgrow(orelse)
         case FuncCall(func="abs" | "min" | "max" | "clamp", args=args):
             return any(may_outgrow(a) for a in args)
-        case FuncCall(func="len" | "byte" | "bool"):
-            return False
+        case FuncCall(func="len" | "byte" | "bool") | Replaced():
+            return False  # a replaced element is checked as it is stored
     return True
 
 
@@ -386,8 +461,16 @@ class Primitive:
         each once and in order (both planners then skip binding the parameters)."""
         used = [a.name for a in self.args if isinstance(a, Var) and a.scope is Scope.PARAM]
         simple = all(isinstance(a, Const) or (isinstance(a, Var) and a.scope is Scope.PARAM) for a in self.args)
-        return (simple and not (self.actions or self.frame or self.table or self.expect)
+        return (simple and not self.spreads() and not (self.actions or self.frame or self.table or self.expect)
                 and all(p.low is None for p in self.params) and used == [p.name for p in self.params])
+
+    def format_values(self) -> tuple[Expr, ...]:
+        """The format's values, one per code: an array argument as its elements."""
+        return spread(self.args)
+
+    def spreads(self) -> tuple[int, ...]:
+        """The format arguments that are arrays: each gives its elements as that many values."""
+        return tuple(i for i, a in enumerate(self.args) if isinstance(a.type, Array))
 
     def expects_reply(self, frames: dict[str, Frame]) -> bool:
         """A reply is read when there is one to decode, or when the frame's reply
@@ -432,7 +515,7 @@ class Interface:
 @dataclass(frozen=True, slots=True)
 class AdapterField:
     name: str
-    type: Type
+    type: AnyType
     unit: str | None = None
     ros: str | None = None
     doc: str | None = None

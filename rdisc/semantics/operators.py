@@ -72,6 +72,8 @@ def _mul(a: Any, b: Any) -> Any:
 
 def fits(value: Any) -> bool:
     """Whether a value is within the integers rdisc keeps (64 bits and a sign); non-ints always are."""
+    if type(value) is tuple:  # an array
+        return all(fits(v) for v in value)
     return type(value) is not int or -MAX_INT <= value <= MAX_INT
 
 

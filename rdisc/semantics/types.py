@@ -12,15 +12,15 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 
 from rdisc.diagnostics import Diagnostics
-from rdisc.limits import MAX_INT
+from rdisc.limits import MAX_ARRAY, MAX_INT
 from rdisc.semantics import model as m
-from rdisc.semantics.model import Scope, Type
+from rdisc.semantics.model import AnyType, Array, Scope, Type
 from rdisc.semantics.operators import BINARY, FUNCTIONS, UNARY, EvalError, fits, shown
 from rdisc.semantics.resolve import suggest
 from rdisc.source import Span
 from rdisc.syntax import ast
 
-T = Type | None  # None: unknown, already reported
+T = AnyType | None  # None: unknown, already reported
 NUMERIC = (Type.INT, Type.FLOAT)
 
 _ARITHMETIC = {"+", "-", "*", "/", "//", "%", "**"}
@@ -70,10 +70,15 @@ def unify(a: T, b: T) -> T:
         return a
     if {a, b} == {Type.INT, Type.FLOAT}:
         return Type.FLOAT
+    if isinstance(a, Array) and isinstance(b, Array) and a.size == b.size:
+        element = unify(a.element, b.element)
+        return Array(element, a.size) if isinstance(element, Type) else None
     return None
 
 
-def describe(t: Type) -> str:
+def describe(t: AnyType) -> str:
+    if isinstance(t, Array):
+        return f"an array {t.value}"
     return {Type.INT: "an int", Type.FLOAT: "a float", Type.BOOL: "a bool", Type.STRING: "a string",
             Type.BYTES: "bytes"}[t]
 
@@ -100,6 +105,12 @@ class Typer:
     def is_constant(self, expr: m.Expr) -> bool:
         return id(expr) in self._constants
 
+    def folded(self, expr: m.Expr) -> m.Expr:
+        """An element of a constant array known as its value (`IDS[2]`, as a format value)."""
+        if isinstance(expr, m.Element) and self.is_constant(expr.array) and isinstance(expr.index, m.Const):
+            return self._const(m.Const(self.constant(expr.array)[expr.index.value], expr.type, expr.span))  # type: ignore[index]
+        return expr
+
     # -- the rules ------------------------------------------------------------
 
     def expr(self, e: ast.Expr, env: Env) -> m.Expr:
@@ -117,6 +128,8 @@ class Typer:
                 return self._ref(e, env)
             case ast.Index():
                 return self._index(e, env)
+            case ast.ArrayLit():
+                return self._array(e, env)
             case ast.Unary():
                 return self._unary(e, env)
             case ast.BinOp():
@@ -184,13 +197,18 @@ class Typer:
         return self._const(m.Const(value, Type.INT, e.span))
 
     def _index(self, e: ast.Index, env: Env) -> m.Expr:
+        if isinstance(e.base, ast.ArrayLit):
+            return self._element(e, env)
         if e.base.name in self.tables and e.base.name not in env.names:
             return self._lookup(e, env)
+        declared = env.names.get(e.base.name, (None, self.named.get(e.base.name, (None,))[0]))[1]
+        if isinstance(declared, Array):
+            return self._element(e, env)
         if e.base.name in self.failed and e.base.name not in env.names:  # a table or constant in error
             self.expr(e.index, env)
             return m.ReplyValue(0, None, e.span)  # type: ignore[arg-type]
         if e.base.name != "out":
-            self.diagnostics.report("E404", e.span, f"`{e.base.name}` cannot be indexed", help="only the reply `out` can be indexed")
+            self.diagnostics.report("E404", e.span, f"`{e.base.name}` cannot be indexed", help="the reply `out`, arrays and lookup tables can be indexed")
             return m.ReplyValue(0, None, e.span)  # type: ignore[arg-type]
         index = self.expr(e.index, env)
         if not env.reply_known:
@@ -217,6 +235,59 @@ class Typer:
             )
             return m.ReplyValue(value, None, e.span)  # type: ignore[arg-type]
         return m.ReplyValue(value, env.reply[value], e.span)
+
+    def _element(self, e: ast.Index, env: Env) -> m.Expr:
+        """`array[index]`: an int index; a constant one within the array."""
+        array = self.expr(e.base, env)
+        index = self.expr(e.index, env)
+        if not isinstance(array.type, Array):  # an array literal in error, already reported
+            return m.Element(array, index, None, e.span)  # type: ignore[arg-type]
+        node = m.Element(array, index, array.type.element, e.span)
+        if index.type is not None and index.type is not Type.INT:
+            self.diagnostics.report("E404", e.index.span, f"an index is an int, not {describe(index.type)}")
+            return m.Element(array, index, None, e.span)  # type: ignore[arg-type]
+        self.in_array(array.type, index, e.base.name if isinstance(e.base, ast.Ref) else "the array", e.index.span)
+        folded = self._fold(node, (array, index), lambda a, i: a[i])
+        if self.is_constant(folded):  # `IDS[2]`: the element itself, wherever it goes
+            return self._const(m.Const(self.constant(folded), array.type.element, e.span))  # type: ignore[arg-type]
+        return folded
+
+    def in_array(self, array: Array, index: m.Expr, name: str, span: Span) -> None:
+        """A constant index must be one of the array's (it is checked again when it runs)."""
+        value = self.constant(index)
+        if self.is_constant(index) and array.size and not 0 <= value < array.size:  # type: ignore[operator]
+            self.diagnostics.report("E403", span, f"index {shown(value)} is outside `{name}`, which has "
+                                    f"{array.size} values", label=f"in 0..{array.size - 1}")
+            self._constants.pop(id(index))  # reported: nothing folds on it
+
+    def _array(self, e: ast.ArrayLit, env: Env) -> m.Expr:
+        """`[a, b, c]`: one or more values of one scalar type (ints in a float array widen)."""
+        items = tuple(self.expr(i, env) for i in e.items)
+        if not items:
+            self.diagnostics.report("E404", e.span, "an array has one value or more",
+                                    help="an array's size is fixed: `[0, 0, 0]`")
+            return m.ArrayValue(items, None, e.span)  # type: ignore[arg-type]
+        if len(items) > MAX_ARRAY:
+            self.diagnostics.report("E404", e.span, f"an array holds at most {MAX_ARRAY} values, not {len(items)}")
+            return m.ArrayValue(items, None, e.span)  # type: ignore[arg-type]
+        element: T = items[0].type
+        for item, written in zip(items, e.items):
+            if item.type is None:
+                return m.ArrayValue(items, None, e.span)  # type: ignore[arg-type]
+            if item.type not in (Type.INT, Type.FLOAT, Type.BOOL):
+                self.diagnostics.report("E404", written.span, f"an array holds ints, floats or bools, not "
+                                        f"{describe(item.type)}")
+                return m.ArrayValue(items, None, e.span)  # type: ignore[arg-type]
+            joined = unify(element, item.type)
+            if joined is None:
+                self.diagnostics.report("E401", written.span, f"the values of an array have one type: this is "
+                                        f"{describe(item.type)}, after {describe(element)}")  # type: ignore[arg-type]
+                return m.ArrayValue(items, None, e.span)  # type: ignore[arg-type]
+            element = joined
+        assert isinstance(element, Type)
+        node = m.ArrayValue(items, Array(element, len(items)), e.span)
+        widen = float if element is Type.FLOAT else (lambda v: v)
+        return self._fold(node, items, lambda *values: tuple(widen(v) for v in values))
 
     def _lookup(self, e: ast.Index, env: Env) -> m.Expr:
         """`TABLE[key]`: a key of the table's key type; a constant key must be in the table."""
@@ -369,8 +440,10 @@ class Typer:
                 return Type.BOOL if need("a number or bool", (Type.INT, Type.FLOAT, Type.BOOL)) else None
             case "str":
                 return Type.STRING if need("a number, bool or string", (*NUMERIC, Type.BOOL, Type.STRING)) else None
+            case "len" if isinstance(types[0], Array):
+                return Type.INT
             case "len":
-                return Type.INT if need("bytes or a string", (Type.BYTES, Type.STRING)) else None
+                return Type.INT if need("bytes, a string or an array", (Type.BYTES, Type.STRING)) else None
             case "byte":
                 if types[0] is not Type.BYTES or types[1] is not Type.INT:
                     self.diagnostics.report("E404", e.span, "`byte` takes bytes and an int index: `byte(out[1], 0)`")

@@ -59,10 +59,18 @@ class Ref:
 
 @dataclass(frozen=True, slots=True)
 class Index:
-    """`base[index]`; the checker allows it only as `out[constant]`."""
+    """`base[index]`: `out[constant]`, an array's element or a lookup table's entry."""
 
-    base: Ref
+    base: Ref | ArrayLit
     index: Expr
+    span: Span = _span
+
+
+@dataclass(frozen=True, slots=True)
+class ArrayLit:
+    """`[a, b, c]`: the values of an array, in order."""
+
+    items: tuple[Expr, ...]
     span: Span = _span
 
 
@@ -109,16 +117,29 @@ class Member:
     span: Span = _span
 
 
-Expr = IntLit | FloatLit | StrLit | BoolLit | Ref | Index | Unary | BinOp | Conditional | CallExpr | Member
+Expr = IntLit | FloatLit | StrLit | BoolLit | Ref | Index | ArrayLit | Unary | BinOp | Conditional | CallExpr | Member
 
 
 # ---- pieces shared by declarations ------------------------------------------
 
 
 @dataclass(frozen=True, slots=True)
+class ArrayOf:
+    """`int[6]`: a fixed number of values of one type. The size is a constant expression;
+    an adapter's field leaves it out (`float[]`), for the description that uses it to fix."""
+
+    element: Ident
+    size: Expr | None
+    span: Span = _span
+
+
+TypeRef = Ident | ArrayOf
+
+
+@dataclass(frozen=True, slots=True)
 class Param:
     name: Ident
-    type: Ident
+    type: TypeRef
     span: Span = _span
     low: Expr | None = None  # `in low..high`
     high: Expr | None = None
@@ -148,6 +169,7 @@ class Assign:
     target: Ident
     value: Expr
     span: Span = _span
+    index: Expr | None = None  # `target[index] = value`: one element of an array
 
 
 # ---- declarations -------------------------------------------------------------
@@ -178,7 +200,7 @@ class RobotDecl:
 @dataclass(frozen=True, slots=True)
 class StateDecl:
     name: Ident
-    type: Ident
+    type: TypeRef
     init: Expr | None
     span: Span = _span
     doc: str | None = None
@@ -364,7 +386,7 @@ class InterfaceDecl:
 @dataclass(frozen=True, slots=True)
 class FieldDecl:
     name: Ident
-    type: Ident
+    type: TypeRef
     unit: str | None
     ros: StrLit | None  # a field path in the adapter's ROS message
     span: Span = _span

@@ -108,6 +108,10 @@ class Builder:
     def ident(self, token) -> ast.Ident:
         return ast.Ident(str(token), self.token_span(token))
 
+    def type_ref(self, node) -> ast.TypeRef:
+        """A declared type: a NAME token, or an array type already built."""
+        return node if isinstance(node, ast.ArrayOf) else self.ident(node)
+
     def doc(self, meta) -> str | None:
         return self.docs.get(self.base + meta.start_pos)
 
@@ -203,7 +207,7 @@ def _transformer_class():
 
         def state_decl(self, meta, c):
             name, type_, init = c
-            return ast.StateDecl(self.b.ident(name), self.b.ident(type_), init, self.b.span(meta), self.b.doc(meta))
+            return ast.StateDecl(self.b.ident(name), self.b.type_ref(type_), init, self.b.span(meta), self.b.doc(meta))
 
         def connection_decl(self, meta, c):
             return ast.ConnectionDecl(
@@ -246,7 +250,10 @@ def _transformer_class():
             return ast.Actions(tuple(c), self.b.span(meta))
 
         def assign(self, meta, c):
-            return ast.Assign(self.b.ident(c[0]), c[1], self.b.span(meta))
+            return ast.Assign(self.b.ident(c[0]), c[2], self.b.span(meta), c[1])
+
+        def array_type(self, meta, c):
+            return ast.ArrayOf(self.b.ident(c[0]), c[1], self.b.span(meta))
 
         def interface_decl(self, meta, c):
             name, params, *rest = c
@@ -286,7 +293,7 @@ def _transformer_class():
             unit = self.b.string(c[2]).value if c[2] is not None else None
             ros = self.b.string(c[3]) if c[3] is not None else None
             return ast.FieldDecl(
-                self.b.ident(c[0]), self.b.ident(c[1]), unit, ros, self.b.span(meta), self.b.doc(meta)
+                self.b.ident(c[0]), self.b.type_ref(c[1]), unit, ros, self.b.span(meta), self.b.doc(meta)
             )
 
         def address(self, meta, c):
@@ -403,7 +410,7 @@ def _transformer_class():
             return tuple(x for x in c if x is not None)
 
         def param(self, meta, c):
-            return ast.Param(self.b.ident(c[0]), self.b.ident(c[1]), self.b.span(meta), c[2], c[3], c[4])
+            return ast.Param(self.b.ident(c[0]), self.b.type_ref(c[1]), self.b.span(meta), c[2], c[3], c[4])
 
         def args(self, meta, c):
             return tuple(x for x in c if x is not None)
@@ -445,6 +452,15 @@ def _transformer_class():
 
         def index(self, meta, c):
             return self.b.nested(ast.Index(ast.Ref(str(c[0]), self.b.token_span(c[0])), c[1], self.b.span(meta)), c[1])
+
+        def literal_index(self, meta, c):
+            items = c[0] or ()
+            array = self.b.nested(ast.ArrayLit(items, self.b.span(meta)), *items)
+            return self.b.nested(ast.Index(array, c[1], self.b.span(meta)), array, c[1])  # type: ignore[arg-type]
+
+        def array_lit(self, meta, c):
+            items = c[0] or ()
+            return self.b.nested(ast.ArrayLit(items, self.b.span(meta)), *items)
 
         def int_lit(self, meta, c):
             value = _int_value(str(c[0]))

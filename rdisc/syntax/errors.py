@@ -50,7 +50,7 @@ def expected_words(expected: set[str]) -> str:
     names = set(expected)
     if "NAME" in names and names & _EXPRESSION_START:
         phrases.append("an expression")
-        names -= _EXPRESSION_START | {"NAME", "LPAR", "ADD_OP"}
+        names -= _EXPRESSION_START | {"NAME", "LPAR", "LSQB", "ADD_OP"}  # `[`: an array
     if names & _OPERATORS:
         phrases.append("an operator")
         names -= _OPERATORS

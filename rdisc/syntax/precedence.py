@@ -104,6 +104,10 @@ def call(func: str, args: list[Printed]) -> Printed:
     return Printed(f"{func}({', '.join(a.at(CONDITIONAL) for a in args)})", ATOM)
 
 
+def array(items: list[Printed]) -> Printed:
+    return Printed(f"[{', '.join(a.at(CONDITIONAL) for a in items)}]", ATOM)
+
+
 def index(base: str, at: Printed) -> Printed:
     return Printed(f"{base}[{at.at(CONDITIONAL)}]", ATOM)
 

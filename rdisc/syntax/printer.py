@@ -40,7 +40,9 @@ def _expr(e: ast.Expr) -> p.Printed:
         case ast.Ref(name):
             return p.Printed(name, p.ATOM)
         case ast.Index(base, index):
-            return p.index(base.name, _expr(index))
+            return p.index(_expr(base).text, _expr(index))
+        case ast.ArrayLit(items):
+            return p.array([_expr(a) for a in items])
         case ast.Unary(op, operand):
             return p.unary(op, _expr(operand))
         case ast.BinOp(op, left, right):
@@ -75,7 +77,7 @@ def _code(d: ast.Decl) -> list[str]:
             return _block(f"robot {name.text}", [f"{a.key} {p.quote(a.value)}" for a in attrs])
         case ast.StateDecl(name, type_, init):
             value = "" if init is None else f" = {print_expr(init)}"
-            return [f"state {name.text}: {type_.text}{value}"]
+            return [f"state {name.text}: {_type(type_)}{value}"]
         case ast.ConnectionDecl(name, kind, attrs):
             return _block(f"connection {name.text}: {kind.text}", [_connection_attr(a) for a in attrs])
         case ast.PrimitiveDecl():
@@ -148,8 +150,14 @@ def _block(head: str, lines: list[str]) -> list[str]:
 
 
 def _params(params: tuple[ast.Param, ...]) -> str:
-    return ", ".join(f"{param.name.text}: {param.type.text}" + _range(param)
+    return ", ".join(f"{param.name.text}: {_type(param.type)}" + _range(param)
                      + (f" = {print_expr(param.default)}" if param.default is not None else "") for param in params)
+
+
+def _type(t: ast.TypeRef) -> str:
+    if isinstance(t, ast.ArrayOf):
+        return f"{t.element.text}[{'' if t.size is None else print_expr(t.size)}]"
+    return t.text
 
 
 def _range(param: ast.Param) -> str:
@@ -179,7 +187,8 @@ def _duration(d: ast.Duration) -> str:
 
 
 def _assign(a: ast.Assign) -> str:
-    return f"{a.target.text} = {print_expr(a.value)}"
+    element = "" if a.index is None else f"[{print_expr(a.index)}]"
+    return f"{a.target.text}{element} = {print_expr(a.value)}"
 
 
 def _connection_attr(a: ast.ConnectionAttr) -> str:
@@ -218,7 +227,7 @@ def _call_stmt(stmt: ast.CallStmt) -> list[str]:
 def _field(f: ast.FieldDecl) -> str:
     unit = "" if f.unit is None else f" unit {p.quote(f.unit)}"
     ros = "" if f.ros is None else f" ros {p.quote(f.ros.value)}"
-    return f"{f.name.text}: {f.type.text}{unit}{ros}"
+    return f"{f.name.text}: {_type(f.type)}{unit}{ros}"
 
 
 # ---- primitives ----------------------------------------------------------------------

@@ -762,10 +762,11 @@ class Param:
     """A parameter of an interface or a primitive, or a field of an input's adapter."""
 
     name: str
-    kind: type  # int, float, bool, str or bytes
-    low: float | None = None  # the declared range (for bytes, of the length)
+    kind: type  # int, float, bool, str or bytes; an array's elements'
+    low: float | None = None  # the declared range (for bytes, of the length; for an array, of each element)
     high: float | None = None
     default: Value | None = None  # the value when a call leaves it out
+    size: int | None = None  # an array's: its number of elements (0: any); None: not an array
 
 
 @dataclass(frozen=True, slots=True)
@@ -1012,6 +1013,22 @@ def lookup(table: str, entries: Mapping[Any, Any], key: Any) -> Any:
         raise ValueError(f"table {table} has no entry for {key!r}") from None
 
 
+def element(array: str, values: tuple[Any, ...], index: int) -> Any:
+    """`array[index]`: an index outside the array is an error, never wrapped (`a[-1]` too)."""
+    if not 0 <= index < len(values):
+        raise ValueError(f"index {index} is outside {array}, which has {len(values)} values")
+    return values[index]
+
+
+def replaced(array: str, values: tuple[Any, ...], index: int, value: Any) -> tuple[Any, ...]:
+    """The array with `values[index]` made `value` (`array[index] = value` in a post-action)."""
+    element(array, values, index)
+    if type(value) is int and not -MAX_INT <= value <= MAX_INT:
+        raise ValueError(f"{array}[{index}] would be a {value.bit_length()}-bit integer; "
+                         "integers are limited to 64 bits and a sign")
+    return values[:index] + (value,) + values[index + 1 :]
+
+
 def _ranged(params: tuple[Param, ...]) -> tuple[int, ...]:
     return tuple(i for i, p in enumerate(params) if p.low is not None)
 
@@ -1073,19 +1090,33 @@ def _accepted(what: str, params: tuple[Param, ...], values: Args) -> Args:
             raise TypeError(f"{what} takes {takes} arguments, {len(values)} given")
         values.extend(p.default for p in left_out)
     for i, param in enumerate(params):
-        if type(values[i]) is not param.kind:
+        if param.size is not None:
+            values[i] = _accept_array(values[i], param, f"{what}: parameter {param.name}")
+        elif type(values[i]) is not param.kind:
             values[i] = _accept(values[i], param.kind, f"{what}: parameter {param.name}")
     return values
 
 
+def _accept_array(value: Any, param: Param, what: str) -> tuple[Any, ...]:
+    """A list or tuple of the array's size (any size if open), each element made its type."""
+    if not isinstance(value, (list, tuple)):
+        raise TypeError(f"{what} must be a list of {param.size or 'any number of'} "
+                        f"{_KIND_NAMES[param.kind]}s, not {type(value).__name__}")
+    if param.size and len(value) != param.size:
+        raise TypeError(f"{what} must have {param.size} values, not {len(value)}")
+    return tuple(v if type(v) is param.kind else _accept(v, param.kind, f"{what}[{i}]") for i, v in enumerate(value))
+
+
 def _widen(owner: str, floats: tuple[int, ...], values: Args) -> None:
     """Computed values bound to float parameters: an int made a float, in place."""
-    for i in floats:
-        if type(values[i]) is int:
-            try:
+    try:
+        for i in floats:
+            if type(values[i]) is int:
                 values[i] = float(values[i])
-            except OverflowError as err:  # an int too large for a float
-                raise RdisValueError(f"{owner}: {err}") from None
+            elif type(values[i]) is tuple:  # an array of floats computed from ints
+                values[i] = tuple(float(v) for v in values[i])
+    except OverflowError as err:  # an int too large for a float
+        raise RdisValueError(f"{owner}: {err}") from None
 
 
 def _in_ranges(owner: str, params: tuple[Param, ...], ranged: tuple[int, ...], values: Args) -> None:
@@ -1097,6 +1128,10 @@ def _in_ranges(owner: str, params: tuple[Param, ...], ranged: tuple[int, ...], v
         if isinstance(value, bytes):
             if not low <= len(value) <= high:
                 raise RdisValueError(f"{owner}: parameter {p.name} has {len(value)} bytes, outside {low!r}..{high!r}")
+        elif isinstance(value, tuple):
+            for k, item in enumerate(value):
+                if not low <= item <= high:
+                    raise RdisValueError(f"{owner}: parameter {p.name}[{k}] is {item!r}, outside {low!r}..{high!r}")
         elif not low <= value <= high:
             raise RdisValueError(f"{owner}: parameter {p.name} is {value!r}, outside {low!r}..{high!r}")
 
