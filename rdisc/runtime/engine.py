@@ -1794,8 +1794,8 @@ class Robot:
         return case, [*local, value], case.decoder.decode(plan.name, rest) if case.decoder is not None else ()
 
     @staticmethod
-    def _read_tagged(plan: Primitive, reader: Incoming, wait: float, local: Args) -> tuple[Primitive, Args,
-                                                                                            Sequence[Any]]:
+    def _read_tagged(plan: Primitive, reader: Incoming, wait: float,
+                     local: Args) -> tuple[Primitive, Args, Sequence[Any]]:
         """A tagged reply without a frame (Firmata's stream): the tag, then exactly the bytes its
         entry decodes (a fixed size: checked). Under `skip unmatched` a tag without an entry is
         read past one byte at a time, the next tag looked for from the byte after its first,
@@ -1820,7 +1820,7 @@ class Robot:
                 continue
             decoder = case.decoder
             assert isinstance(decoder, Unpack) and not decoder.rest
-            body = reader.read(decoder.size) if decoder.size else b""
+            body = reader.read(decoder.size)
             if len(body) < decoder.size:
                 if plan.skip:
                     raise RdisTimeout(missed)
