@@ -136,6 +136,24 @@ def test_a_listener_over_a_real_serial_line(kind: str, tmp_path: Path) -> None:
         assert device.received == b""
 
 
+FRAMED = """\
+robot framed { author "tests" }
+state v: int = 0
+connection link: serial { baud 9600 }
+frame ended { request { payload } reply { payload  terminator "\\xFF" } }
+primitive poll(n: int) on link frame ended pack "B" (n) reply tag "B" { 0x10..0x1F: unpack "B" { v = out[0] * 100 + tag + n } }
+"""
+
+
+@pytest.mark.parametrize("kind", ["runtime", "driver"])
+def test_through_a_frame_a_range_entry_reads_its_tag_too(kind: str, tmp_path: Path) -> None:
+    port = ScriptedPort(bytes.fromhex("13 07 ff"))
+    with implementation_of(kind, FRAMED, tmp_path, "framed").connect(port, threads=False) as robot:
+        robot.call_primitive("poll", 2)
+        assert robot.state["v"] == 700 + 0x13 + 2
+    assert bytes(port.written).hex() == "02"
+
+
 def test_ranges_go_through_json_the_printer_and_dump(tmp_path: Path) -> None:
     compilation, built = through_json(FIRMATA, tmp_path, "firmata")
     assert not compilation.diagnostics.items
