@@ -72,12 +72,14 @@ suggests it."""),
     ("E103", "unknown-variable", """
 A name used in an expression is not in scope there. Scopes follow the thesis:
 state variables are readable everywhere except in initial values; primitives also
-see their parameters, post-actions also see the reply `out`; interfaces see their
-parameters; inputs see their adapter's fields; hook arguments and outputs see
-state variables only."""),
+see their parameters, post-actions also see the reply `out` (and those of a
+tagged reply's entries its tag, `tag`); interfaces see their parameters; inputs
+see their adapter's fields; hook arguments and outputs see state variables only."""),
     ("E104", "reserved-name", """
 The name is a keyword of the language or the name of a built-in function, and
-cannot name an element, parameter, field or state variable."""),
+cannot name an element, parameter, field or state variable. A primitive whose
+reply is chosen by its tag has no parameter named `tag`: its entries read the
+tag by that name."""),
     ("E105", "unknown-type", """
 Types are `int`, `float`, `bool`, `string` and `bytes`. `bytes` are for
 parameters and replies (a `*` rest, a `Ns` field); a state variable, a constant or
@@ -224,12 +226,22 @@ constant bytes right after the payload."""),
 A primitive's `frame NAME(args)` passes one argument per frame parameter. A
 primitive that decodes a reply needs a frame whose reply has a payload; a frame
 field's value must fit its format. `skip unmatched` (read past frames that do not
-decode: other traffic on a shared line) needs a framed reply to decode."""),
+decode: other traffic on a shared line) needs a framed reply to decode, or a
+tagged reply read without a frame (it reads past tags without an entry)."""),
     ("E505", "reply-table", """
 A reply table (`reply KEY { VALUE: unpack ... }`) chooses a primitive's reply by
 the value of one of its int parameters, so that parameter needs a range
 (`KEY: int in LOW..HIGH`) and every value in it needs its entry: a value without
-one would send a request whose reply rdisc cannot read."""),
+one would send a request whose reply rdisc cannot read. An entry is for one value
+or a range of them (`0..3: unpack "B"`); a table holds at most 4096 values.
+
+A tagged reply (`reply tag "B" { ... }`) is chosen by the integer at its start,
+whose struct format is one integer code. Read through a frame, the frame must say
+where the reply ends. Read without one (Firmata's stream, where the first byte
+says what follows), the entry the tag chooses says how many bytes follow it, so
+each entry has a fixed size: an `unpack` without `*`, not a `regex`. Wrong:
+`0xF0: unpack "B*"`. Right: `0xE0..0xEF: unpack "BB" { pin = tag & 0x0F }`, two
+bytes after any tag from 0xE0 to 0xEF, whose value the entry reads as `tag`."""),
     # -- warnings --------------------------------------------------------------
     ("W102", "untriggered-output", """
 No interface triggers this output, so it is never delivered. An interface

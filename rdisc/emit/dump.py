@@ -31,12 +31,13 @@ def _primitive(model: m.Model, p: m.Primitive) -> str:
     framed = frame.reply if frame and frame.reply else None
     if p.table is not None:
         for case in p.table.cases:
+            said = case.values_text()
             if p.table.tag is None:
-                lines += _side(f"reply when {p.table.key} = {case.value}", framed, _reply_rows(case.decoding))
+                lines += _side(f"reply when {p.table.key} = {said}", framed, _reply_rows(case.decoding))
             else:
                 tag = (formats.struct_layout(p.table.tag).size, f"tag {_kind(p.table.tag, p.table.tag[-1])}",
-                       f"= {case.value}")
-                lines += _side(f"reply tagged {case.value}", framed, [tag, *_reply_rows(case.decoding)])
+                       f"= {said}" if case.last is None else f"in {said}")
+                lines += _side(f"reply tagged {said}", framed, [tag, *_reply_rows(case.decoding)])
     elif p.expects_reply(model.frames):
         lines += _side("reply", framed, _reply_rows(p.decoding))
     else:

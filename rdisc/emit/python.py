@@ -478,7 +478,7 @@ class _Driver:
                 own["actions"] = f"{base}_actions" if entry is None else f"{base}_{_case(entry)}_actions"
                 states = self.model.states
                 w.blank(2)
-                self.function(w, own["actions"], f"{signature}, reply: Sequence[Any]", prim.params,
+                self.function(w, own["actions"], f"{signature}, reply: Sequence[Any]", prim.reply_locals(),
                               [(a.target, a.value, states[a.target].type) for a in case.actions],
                               "dict[str, Value]")
                 checked = [quoted(a.target) for a in case.actions
@@ -487,11 +487,19 @@ class _Driver:
                     own["checked"] = _tuple(checked)
             w.blank(2)
             if entry is not None:
-                w.line(f"# reply {entry.value}")
-                table.append(f"{entry.value}: {name}")
+                w.line(f"# reply {entry.values_text()}")
+                table.append(f"{entry.value}: {name}" if entry.last is None
+                             else f"**dict.fromkeys({entry.values()!r}, {name})")  # a range entry
             _construct(w, f"{name} = ", "Primitive", common, own)
         if prim.table is not None:
             options["table"] = "{" + ", ".join(table) + "}"
+            if len(f"    table={options['table']},") > w.width():  # its own constant, an entry a line
+                w.blank(2)
+                w.line(f"{const}_TABLE = {{")
+                with w.indented():
+                    w.lines([f"{item}," for item in table])
+                w.line("}")
+                options["table"] = f"{const}_TABLE"
             if prim.table.tag is not None:
                 options["tag"] = quoted(prim.table.tag)
             else:
@@ -789,8 +797,9 @@ def _codec(codec: object) -> str:
 
 
 def _case(case: m.ReplyCase) -> str:
-    """A reply table entry's value in names: 7, or m7 for -7."""
-    return f"m{-case.value}" if case.value < 0 else str(case.value)
+    """A reply table entry's value in names: 7, or m7 for -7; 224_239 for a range."""
+    first, last = (f"m{-v}" if v < 0 else str(v) for v in (case.value, case.value if case.last is None else case.last))
+    return first if case.last is None else f"{first}_{last}"
 
 
 def _frame(frame: m.Frame, fields: str | None) -> str:

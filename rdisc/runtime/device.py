@@ -93,15 +93,19 @@ class Description:
 
     # ---- plans ----------------------------------------------------------------------------------
 
-    def _primitive(self, p: m.Primitive) -> engine.Primitive:
+    def _primitive(self, p: m.Primitive, local: tuple[m.Parameter, ...] | None = None) -> engine.Primitive:
+        """The plan of a primitive; `local`, what its post-actions read besides state and the
+        reply, when that is more than its parameters (a tag's entry reads the tag)."""
         if p.table is not None:  # one plan for each key or tag, chosen when it is called or read
             plain = self._primitive(dataclasses.replace(p, table=None))
-            table = {c.value: self._primitive(p.case(c)) for c in p.table.cases}
+            table: dict[int, engine.Primitive] = {}
+            for c in p.table.cases:  # a range entry's plan once, for each of its values
+                table.update(dict.fromkeys(c.values(), self._primitive(p.case(c), p.reply_locals())))
             if p.table.tag is not None:
                 return dataclasses.replace(plain, table=table, tag=p.table.tag)
             key = next(i for i, param in enumerate(p.params) if param.name == p.table.key)
             return dataclasses.replace(plain, table=table, key=key)
-        slots = _slots(p.params)
+        slots = _slots(local or p.params)
         actions = None
         if p.actions:
             prepared = [(a.target, prepare(a.value, slots), self.model.states[a.target].type) for a in p.actions]

@@ -526,31 +526,38 @@ class _Checker:
             actions = self.actions(action_blocks[0], action_env, {p.name for p in params})
         expect = self.expect(decl, scope, reply, bool(decodings))
         connection = m.ConnectionRef(on.connection.text) if isinstance(on, ast.On) else m.ConnectionRef("")
+        framed = self.once([c for c in decl.clauses if isinstance(c, ast.Framed)], "`frame`", name)
+        # Read without a frame: none, or one whose reply is empty (a frame in error: neither)
+        unframed = framed is None or (isinstance(framed, ast.Framed) and framed.frame.text in self.frames
+                                      and not self.frames[framed.frame.text].reply)
         table_clause = self.once([c for c in decl.clauses if isinstance(c, ast.ReplyTable)], "a reply table", name)
         table = None
         if isinstance(table_clause, ast.ReplyTable):
             if decodings or action_blocks:
                 self.d.report("E203", table_clause.span, f"primitive `{name.text}` has a reply table and also "
                               "`unpack`/`regex` or post-actions", help="give each of its replies in the table")
-            table = self.reply_table(table_clause, params, scope, name)
+            if table_clause.tag is not None:
+                self.tag_not_a_param(decl)
+            table = self.reply_table(table_clause, params, scope, name, unframed)
+        tagged = table is not None and table.tag is not None
         replies = [decoding] if decoding is not None else [c.decoding for c in table.cases] if table else []
-        framed = self.once([c for c in decl.clauses if isinstance(c, ast.Framed)], "`frame`", name)
         frame = (self.frame_use(framed, env, decl, encoding, replies, self.request_sizes(encoding, args, params))
                  if isinstance(framed, ast.Framed) else None)
         if (any(isinstance(r, m.Unpack) and formats.struct_layout(r.format).rest for r in replies)
-                and (frame is None or not self.frames[frame.frame].reply)):
+                and (frame is None or not self.frames[frame.frame].reply) and not tagged):  # tagged: E505
             self.d.report("E503", decodings[0].span if decodings else name.span,
                           f"the reply of `{name.text}` ends in `*` (the rest of the message), but no frame says "
                           "where the reply ends",
                           help="read it through a frame with a `length` field or constant bytes after its payload")
-        if (table is not None and table.tag is not None
-                and (frame is None or not self.frames[frame.frame].reply
-                     or not payload_end_known(self.frames[frame.frame], False))):
-            self.d.report("E505", table_clause.span, f"the reply of `{name.text}` is chosen by its tag, so it needs "  # type: ignore[union-attr]
-                          "a frame that says where the reply ends",
-                          help="read it through a frame with a `length` field or constant bytes after its payload")
+        if (tagged and frame is not None and self.frames[frame.frame].reply
+                and not payload_end_known(self.frames[frame.frame], False)):
+            self.d.report("E505", table_clause.span, f"the reply of `{name.text}` is chosen by its tag, so its frame "  # type: ignore[union-attr]
+                          "must say where the reply ends",
+                          help="give the frame's reply a `length` field or constant bytes after its payload, "
+                          "or read the reply without a frame")
         skip = self.once([c for c in decl.clauses if isinstance(c, ast.SkipUnmatched)], "`skip unmatched`", name)
-        if skip is not None and (not replies or frame is None or not self.frames[frame.frame].reply):
+        if skip is not None and not (tagged and unframed) and (
+                not replies or frame is None or not self.frames[frame.frame].reply):
             self.d.report("E504", skip.span, f"`skip unmatched` reads past frames that do not decode, but "  # type: ignore[union-attr]
                           f"`{name.text}` does not decode a framed reply",
                           help="give it a frame with a reply, and `unpack` or `regex`")
@@ -587,10 +594,18 @@ class _Checker:
             self.d.report("E401", clause.condition.span, f"`expect` takes a bool, but this is {describe(condition.type)}")
         return condition
 
+    def tag_not_a_param(self, decl: ast.PrimitiveDecl) -> None:
+        """A tagged reply's entries read its tag as `tag`: no parameter may have that name."""
+        for param in decl.params:
+            if param.name.text == m.TAG:
+                self.d.report("E104", param.name.span, f"`{m.TAG}` names the tag of the reply of `{decl.name.text}` "
+                              "and cannot name a parameter of it", help="rename the parameter")
+
     def reply_table(self, clause: ast.ReplyTable, params: tuple[m.Parameter, ...], scope: dict,
-                    name: ast.Ident) -> m.ReplyTable | None:
+                    name: ast.Ident, unframed: bool) -> m.ReplyTable | None:
         """`reply KEY { VALUE: unpack ... }`: one reply per value of an int parameter with a range,
-        every value of the range with its entry. `reply tag "fmt" { ... }`: one per tag value."""
+        every value of the range with its entry. `reply tag "fmt" { ... }`: one per tag value; read
+        without a frame, each entry's size fixed (the tag says how much follows it)."""
         key = clause.key.text
         tag_slot = None
         if clause.tag is not None:
@@ -616,29 +631,33 @@ class _Checker:
             return None
         cases: list[m.ReplyCase] = []
         seen: dict[int, ast.ReplyEntry] = {}
+        if clause.tag is not None:  # its entries see the tag's value
+            scope = {**scope, m.TAG: (Scope.PARAM, Type.INT)}
+        sees = ("`out`, `tag`, " if clause.tag is not None else "`out`, ") + "parameters and state variables"
         for entry in clause.entries:
-            value = self.setting(entry.value, "a reply table's value")
-            if value is None:
+            bounds = self.entry_values(entry, tag_slot)
+            if bounds is None:
                 continue
-            if value != int(value):
-                self.d.report("E204", entry.value.span, "a reply table's value is an int")
+            low, high = bounds
+            if len(seen) + high - low >= MAX_TABLE:
+                self.d.report("E505", entry.span, f"the reply table of `{name.text}` has entries for more than "
+                              f"{MAX_TABLE} values", help="a reply table holds a few thousand values at most")
                 continue
-            if tag_slot is not None and not tag_slot.low <= value <= tag_slot.high:  # type: ignore[operator]
-                self.d.report("E403", entry.value.span, f"{int(value)} does not fit the tag's `{tag_slot.code}`")
+            twice = next((v for v in range(low, high + 1) if v in seen), None)
+            if twice is not None:
+                self.d.report("E203", _values_span(entry), f"{twice} has two entries in the reply table",
+                              labels=(Label(_values_span(seen[twice]), "first given here"),))
                 continue
-            if int(value) in seen:
-                self.d.report("E203", entry.value.span, f"{int(value)} has two entries in the reply table",
-                              labels=(Label(seen[int(value)].value.span, "first given here"),))
-                continue
-            seen[int(value)] = entry
+            seen.update(dict.fromkeys(range(low, high + 1), entry))
             decoding, reply = self.decoding(entry.decoding)
+            if clause.tag is not None and unframed:
+                self.sized_entry(entry, decoding, name, low, high)
             actions: tuple[m.PostAction, ...] = ()
             if entry.actions is not None:
-                action_env = self.env_with(scope, "in a post-action", "`out`, parameters and state variables",
-                                           reply=reply, reply_known=reply is not None)
+                action_env = self.env_with(scope, "in a post-action", sees, reply=reply, reply_known=reply is not None)
                 actions = self.actions(entry.actions, action_env, {p.name for p in params})
             if decoding is not None:
-                cases.append(m.ReplyCase(int(value), decoding, actions))
+                cases.append(m.ReplyCase(low, decoding, actions, None if entry.last is None else high))
         if clause.tag is not None:  # an unknown tag is a protocol error when it comes: no coverage to check
             return m.ReplyTable("", tuple(cases), clause.tag.value)
         if param.low is None:
@@ -656,6 +675,41 @@ class _Checker:
                               f"{key} = {shown_}", label=f"in {param.range_text()}",
                               help="give every value of the range its reply, or narrow the range")
         return m.ReplyTable(key, tuple(cases))
+
+    def sized_entry(self, entry: ast.ReplyEntry, decoding: m.Unpack | m.Regex | None, name: ast.Ident,
+                    low: int, high: int) -> None:
+        """A tagged reply read without a frame: the entry's decoding says how many bytes follow the tag."""
+        if isinstance(decoding, m.Regex):
+            why = "it is a `regex`"
+        elif isinstance(decoding, m.Unpack) and formats.struct_layout(decoding.format).rest:
+            why = "it ends in `*` (the rest of the message)"
+        else:
+            return
+        which = f"tag {low}" if low == high else f"tags {low}..{high}"
+        self.d.report("E505", entry.decoding.span, f"`{name.text}` reads its reply without a frame, so its entry for "
+                      f"{which} needs a fixed size, but {why}",
+                      help="decode it with an `unpack` of a fixed size, or read the reply through a frame that says "
+                      "where it ends")
+
+    def entry_values(self, entry: ast.ReplyEntry, tag_slot: formats.Slot | None) -> tuple[int, int] | None:
+        """The first and last value a reply table's entry is for (`VALUE`, or `LOW..HIGH`),
+        each an int constant that fits the tag's code; None when reported."""
+        ends: list[int] = []
+        for expr in (entry.value,) if entry.last is None else (entry.value, entry.last):
+            value = self.setting(expr, "a reply table's value")
+            if value is None:
+                return None
+            if value != int(value):
+                self.d.report("E204", expr.span, "a reply table's value is an int")
+                return None
+            if tag_slot is not None and not tag_slot.low <= value <= tag_slot.high:  # type: ignore[operator]
+                self.d.report("E403", expr.span, f"{int(value)} does not fit the tag's `{tag_slot.code}`")
+                return None
+            ends.append(int(value))
+        if ends[-1] < ends[0]:
+            self.d.report("E204", _values_span(entry), f"the range {ends[0]}..{ends[-1]} is empty")
+            return None
+        return ends[0], ends[-1]
 
     def request_sizes(self, encoding: m.Pack | m.Format | None, args: tuple[m.Expr, ...],
                       params: tuple[m.Parameter, ...]) -> tuple[int, int, str] | None:
@@ -1099,3 +1153,8 @@ class _Checker:
 
 def _count(n: int, noun: str) -> str:
     return f"{n} {noun}" if n == 1 else f"{n} {noun}s"
+
+
+def _values_span(entry: ast.ReplyEntry) -> Span:
+    """Where a reply table's entry says its value, or its range of values."""
+    return entry.value.span if entry.last is None else entry.value.span.to(entry.last.span)

@@ -420,11 +420,24 @@ class FrameUse:
 
 @dataclass(frozen=True, slots=True)
 class ReplyCase:
-    """The reply of a primitive when its table's key parameter has `value`."""
+    """The reply of a primitive when its table's key (or its reply's tag) has `value`, or
+    any value from `value` to `last`."""
 
     value: int
     decoding: Unpack | Regex
     actions: tuple[PostAction, ...] = ()
+    last: int | None = None  # the end of a range entry's values
+
+    def values(self) -> range:
+        """The key or tag values this entry is the reply for (a few thousand at most: checked)."""
+        return range(self.value, (self.value if self.last is None else self.last) + 1)
+
+    def values_text(self) -> str:
+        """`7`, or `224..239` for a range entry."""
+        return str(self.value) if self.last is None else f"{self.value}..{self.last}"
+
+
+TAG = "tag"  # the name of a tagged reply's tag in its entries' post-actions
 
 
 @dataclass(frozen=True, slots=True)
@@ -454,6 +467,13 @@ class Primitive:
     def case(self, c: ReplyCase) -> Primitive:
         """This primitive as it is when its table's key (or its reply's tag) has c.value: one decoding."""
         return dataclasses.replace(self, decoding=c.decoding, actions=c.actions, table=None)
+
+    def reply_locals(self) -> tuple[Parameter, ...]:
+        """What its post-actions read besides state and `out`: its parameters, and after
+        them, when a tag chooses the reply, the tag's value as `tag`."""
+        if self.table is None or self.table.tag is None:
+            return self.params
+        return (*self.params, Parameter(TAG, Type.INT))
 
     def formats_its_params(self) -> bool:
         """Whether a call's arguments can be its format values as they are: no post-actions,

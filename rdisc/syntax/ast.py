@@ -300,12 +300,14 @@ class SkipUnmatched:
 
 @dataclass(frozen=True, slots=True)
 class ReplyEntry:
-    """`VALUE: unpack "fmt" { post-actions }`: the reply when the key is VALUE."""
+    """`VALUE: unpack "fmt" { post-actions }`: the reply when the key is VALUE; or
+    `LOW..HIGH: ...`: when it is any of them (Firmata's 0xE0..0xEF, a channel in the tag)."""
 
     value: Expr
     decoding: Decoding
     actions: Actions | None
     span: Span = _span
+    last: Expr | None = None  # HIGH of a range entry
 
 
 @dataclass(frozen=True, slots=True)

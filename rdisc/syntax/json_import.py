@@ -482,18 +482,19 @@ class _Importer:
             case = self.object(item, "a reply table entry")
             if case is None:
                 continue
-            c = self.members(case, "a reply table entry", ("value", "unpack", "regex", "postActions"))
+            c = self.members(case, "a reply table entry", ("value", "last", "unpack", "regex", "postActions"))
             value = self.required(case, c, "value", "a reply table entry", lambda v, _: self.expr(v, "int"))
+            last = self.expr(c["last"], "int") if "last" in c else None  # a range entry: `value..last`
             kind = next((k for k in ("unpack", "regex") if k in c), None)
             template = self.string(c.get(kind), f"`{kind}`") if kind else None
-            if value is None or kind is None or template is None:
+            if value is None or kind is None or template is None or ("last" in c and last is None):
                 if kind is None:
                     self.error(case.span, "a reply table entry has `unpack` or `regex`")
                 continue
             assigns = _present([self.post_action(a) for a in self.array(c.get("postActions"), "`postActions`")])
             decoding = ast.Decoding(kind, ast.StrLit(template.value, template.span), template.span)
             actions = ast.Actions(assigns, c["postActions"].span) if assigns else None
-            entries.append(ast.ReplyEntry(value, decoding, actions, case.span))
+            entries.append(ast.ReplyEntry(value, decoding, actions, case.span, last))
         return ast.ReplyTable(key, tuple(entries), obj.span,
                               None if tag is None else ast.StrLit(tag.value, tag.span))
 

@@ -264,7 +264,8 @@ def _primitive_clause(c: ast.PrimitiveClause) -> tuple[list[str], bool]:
         case ast.ReplyTable(key, entries, _, tag):
             lines = [f"reply {key.text} {{" if tag is None else f"reply tag {p.quote(tag.value)} {{"]
             for entry in entries:
-                head = f"{print_expr(entry.value)}: {entry.decoding.kind} {_template(entry.decoding.template)}"
+                values = print_expr(entry.value) + ("" if entry.last is None else f"..{print_expr(entry.last)}")
+                head = f"{values}: {entry.decoding.kind} {_template(entry.decoding.template)}"
                 actions = _primitive_clause(entry.actions)[0] if entry.actions is not None else []
                 lines.append(INDENT + head + (" " + actions[0] if actions else ""))
                 lines.extend(INDENT + line for line in actions[1:])

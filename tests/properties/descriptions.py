@@ -1120,6 +1120,7 @@ class Primitive:
     frame_args: tuple[Expr, ...] = ()
     skip: bool = False
     timeout_ms: int | None = None
+    lasts: tuple[int | None, ...] = ()  # a tag table's entries' last values (`value..last`), None for one value
 
     def text(self) -> str:
         clauses = [f"on {self.connection}"]
@@ -1135,7 +1136,8 @@ class Primitive:
             clauses.append(f"timeout {self.timeout_ms} ms")
         if self.key is not None or self.tag is not None:
             head = f"reply {self.key}" if self.key is not None else f'reply tag "{self.tag}"'
-            entries = "\n".join(f"    {value}: {reply.text()}" for value, reply in self.entries)
+            entries = "\n".join(f"    {value}{'' if last == value else f'..{last}'}: {reply.text()}"
+                                for (value, last), (_, reply) in zip(self.values(), self.entries))
             clauses.append(f"{head} {{\n{entries}\n}}")
         actions = self.reply.actions if self.reply is not None else self.actions
         params = ", ".join(p.text() for p in self.params)
@@ -1156,6 +1158,11 @@ class Primitive:
         return (self.reply is not None or bool(self.entries)
                 or (self.frame is not None and self.frame.acknowledges))
 
+    def values(self) -> list[tuple[int, int]]:
+        """Each reply table entry's first and last value."""
+        lasts = self.lasts or (None,) * len(self.entries)
+        return [(v, v if last is None else last) for (v, _), last in zip(self.entries, lasts)]
+
     def decoding_for(self, values: Mapping[str, Any], choice: int) -> tuple[Decoding | None, bytes]:
         """The decoding of the reply to this call and the tag bytes before it."""
         if self.key is not None:
@@ -1163,9 +1170,12 @@ class Primitive:
             found = [reply for value, reply in self.entries if value == key]
             return (found[0].decoding if found else None), b""
         if self.tag is not None:
-            if choice % (len(self.entries) + 1) == len(self.entries):  # a tag with no entry
-                return None, _pack_int(self.tag, max(v for v, _ in self.entries) + 1)[0]
-            value, reply = self.entries[choice % (len(self.entries) + 1)]
+            values = self.values()
+            at = choice % (len(self.entries) + 1)
+            if at == len(self.entries):  # a tag with no entry
+                return None, _pack_int(self.tag, max(last for _, last in values) + 1)[0]
+            (value, last), (_, reply) = values[at], self.entries[at]
+            value += choice // (len(self.entries) + 1) % (last - value + 1)  # one of a range's
             return reply.decoding, struct.pack(self.tag, value)
         return (self.reply.decoding if self.reply is not None else None), b""
 
@@ -1434,8 +1444,10 @@ def _frame_fits(frame: Frame, request_size: int | None, replies: Sequence[Decodi
     """Whether a primitive of this request and these replies may use the frame (E503, E504, E505)."""
     if request_size is not None and not frame.length_states(frame.request, request_size):
         return False
-    if not frame.reply:
-        return not any(d.size is None and d.kind == "unpack" for d in replies) and table != "tag"
+    if not frame.reply:  # read unframed: a tag's entries have fixed sizes
+        if table == "tag":
+            return all(d.kind == "unpack" and d.size is not None for d in replies)
+        return not any(d.size is None and d.kind == "unpack" for d in replies)
     if frame.acknowledges:
         return not replies
     for d in replies:
@@ -1455,7 +1467,8 @@ def primitives(draw: Draw, name: str, states: Mapping[str, str], scope: Scope,
     listener = frame is not None and frame.listens and draw(st.integers(0, 2)) > 0
     delimited = frame is not None and bool(frame.reply) and frame.delimits and not frame.acknowledges
     fixed_only = frame is not None and bool(frame.reply) and not delimited
-    table = draw(st.sampled_from(["plain", "plain", "none", "key"] + ["tag", "tag"] * delimited))
+    unframed = frame is None or not frame.reply
+    table = draw(st.sampled_from(["plain", "plain", "none", "key"] + ["tag", "tag"] * (delimited or unframed)))
     if frame is not None and frame.acknowledges:
         table = "none"
     params = () if listener else _params(draw, "a", states, 3, [INT, INT, INT, FLOAT, BOOL, STRING, BYTES])
@@ -1469,11 +1482,12 @@ def primitives(draw: Draw, name: str, states: Mapping[str, str], scope: Scope,
     reply = None
     entries: tuple[tuple[int, Reply], ...] = ()
     key = tag = None
+    lasts: tuple[int | None, ...] = ()
 
-    def one_reply(fixed: bool) -> Reply:
+    def one_reply(fixed: bool, seen: tuple[Expr, ...] = ()) -> Reply:
         decoding = draw(decodings(fixed=fixed, rest=None if delimited else False))
         outs = tuple(Out(t, i) for i, t in enumerate(decoding.types))
-        return Reply(decoding, draw_actions(draw, states, local + outs))
+        return Reply(decoding, draw_actions(draw, states, local + seen + outs))
 
     if table == "plain":
         reply = one_reply(fixed_only)
@@ -1484,13 +1498,19 @@ def primitives(draw: Draw, name: str, states: Mapping[str, str], scope: Scope,
         entries = tuple((v, one_reply(fixed_only)) for v in range(int(key_param.low), int(key_param.high) + 1))
     elif table == "tag":
         tag = draw(st.sampled_from(["B", "B", ">H", "<H"]))
-        values = draw(st.lists(st.sampled_from([0, 1, 2, 0x10, 0x11, 0x7F, 0xFE]), min_size=1, max_size=3, unique=True))
-        entries = tuple((v, one_reply(False)) for v in values)
+        values = sorted(draw(st.lists(st.sampled_from([0, 1, 2, 0x10, 0x11, 0x7F, 0xFE]), min_size=1, max_size=3,
+                                      unique=True)))
+        ends = [*values[1:], 0xFF]  # a range stops before the next entry, and leaves 0xFF without one
+        lasts = tuple(None if not sometimes(draw, 3) or end - v < 2 else v + draw(st.integers(0, min(end - v - 2, 20)))
+                      for v, end in zip(values, ends))
+        # unframed: fixed sizes; the post-actions see the tag
+        entries = tuple((v, one_reply(not delimited, (Name(INT, "tag"),))) for v in values)
     replies = [reply.decoding] if reply is not None else [r.decoding for _, r in entries]
     if frame is not None and not _frame_fits(frame, size, replies, table):
         frame, frame_args = None, ()
-        if table == "tag" or any(d.size is None and d.kind == "unpack" for d in replies):
-            reply, entries, key, tag = None, (), None, None
+        sized = all(d.kind == "unpack" and d.size is not None for d in replies)
+        if (table == "tag" and not sized) or any(d.size is None and d.kind == "unpack" for d in replies):
+            reply, entries, key, tag, lasts = None, (), None, None, ()
             replies = []
     if listener and (frame is None or not replies):
         return draw(primitives(name, states, scope, (), connections))
@@ -1498,11 +1518,11 @@ def primitives(draw: Draw, name: str, states: Mapping[str, str], scope: Scope,
     if reply is None and not entries and sometimes(draw, 4):
         actions = draw_actions(draw, states, local)
     framed_reply = frame is not None and bool(frame.reply)
-    skip = framed_reply and bool(replies) and sometimes(draw, 4)
+    skip = (framed_reply or tag is not None) and bool(replies) and sometimes(draw, 4)
     reads = bool(replies) or (frame is not None and frame.acknowledges)
     timeout = draw(st.sampled_from([20, 50, 100])) if reads and sometimes(draw, 3) else None
     return Primitive(name, params, draw(st.sampled_from(connections)), encoding, template, args, reply, actions,
-                     key, tag, entries, frame, frame_args, skip, timeout)
+                     key, tag, entries, frame, frame_args, skip, timeout, lasts)
 
 
 def _call_args(draw: Draw, prim: Primitive, scope: Scope) -> tuple[Expr, ...] | None:

@@ -57,16 +57,18 @@ frame f() {
 primitive read() on c frame f() pack "B" (1) unpack "<H" timeout 500 ms { v = out[0] }
 primitive listen() on c frame f() format "" () unpack "<H" timeout 500 ms skip unmatched { v = out[0] }
 primitive line() on c format "r\\n" () regex r"^v,(\\d+)$" timeout 500 ms { v = int(out[0]) }
+primitive tagged() on c format "" () skip unmatched timeout 500 ms reply tag "B" { 1: unpack "B" { v = out[0] } }
 """
 
 
-@pytest.mark.parametrize("primitive", ["read", "listen", "line"])
+@pytest.mark.parametrize("primitive", ["read", "listen", "line", "tagged"])
 @pytest.mark.parametrize("implementation", ["runtime", "driver"])
 def test_a_trickling_device_cannot_hold_a_call_past_its_timeout(tmp_path: Path, implementation: str,
                                                                 primitive: str) -> None:
     """A device sending one garbage byte every 0.1 s (each byte well within any per-byte
     timeout) still gets the call refused at its 0.5 s deadline: the timeout is a deadline
-    for the whole reply, skipped bytes and frames included."""
+    for the whole reply, skipped bytes and frames included (for `tagged`, bytes that start
+    no tag)."""
     path = tmp_path / "trickled.rdis"
     path.write_text(TRICKLED)
     if implementation == "runtime":

@@ -1733,7 +1733,7 @@ class Robot:
             if plan.timeout is not None:
                 io.timeout = plan.timeout
             reader.begin(wait)
-            plan, reply = self._read_reply(plan, link, reader, fields, request, wait, local)
+            plan, local, reply = self._read_reply(plan, link, reader, fields, request, wait, local)
         except RdisError as err:
             failed = err
         except Exception as err:  # noqa: BLE001 - whatever the port raises, it failed
@@ -1757,12 +1757,15 @@ class Robot:
             self._assign(plan, local, reply)
 
     def _read_reply(self, plan: Primitive, link: _Link, reader: Incoming, fields: list[Any], request: bytes,
-                    wait: float, local: Args) -> tuple[Primitive, Sequence[Any]]:
-        """The reply, decoded and meeting its `expect`, and the plan whose post-actions take it
-        (a tag's entry)."""
+                    wait: float, local: Args) -> tuple[Primitive, Args, Sequence[Any]]:
+        """The plan whose post-actions take the reply (a tag's entry), what they read besides
+        it (the parameters' values, and a tag's after them), and the reply, decoded and meeting
+        its `expect`."""
         decoder = plan.decoder
         use = plan.frame
         if use is None or not plan.framed_reply:
+            if plan.tag_struct is not None:
+                return self._read_tagged(plan, reader, wait, local)
             if isinstance(decoder, Match):  # one line
                 end = link.connection.terminator
                 line = reader.read_until(end, MAX_LINE)
@@ -1773,12 +1776,12 @@ class Robot:
                 text = line[: -len(end)]
                 if end == b"\n" and text.endswith(b"\r"):  # the default takes CR LF as well as LF
                     text = text[:-1]
-                return plan, self._met(plan, local, decoder.decode(plan.name, text))
+                return plan, local, self._met(plan, local, decoder.decode(plan.name, text))
             assert decoder is not None
             data = reader.read(decoder.size)
             if not data:
                 raise RdisTimeout(f"{plan.name}: no reply within {wait:g} s")
-            return plan, self._met(plan, local, decoder.decode(plan.name, data))
+            return plan, local, self._met(plan, local, decoder.decode(plan.name, data))
         # The decoding's size is the payload's, unless a tag comes first or stuffing may have lengthened
         # it on the wire (then the constant after the payload ends it).
         stuffed = use.frame.stuffing is not None and bool(use.frame.reply.delimiter)
@@ -1787,8 +1790,8 @@ class Robot:
             try:
                 payload = use.frame.read(reader, fields, request, size)[1]
                 if plan.tag_struct is not None:
-                    return self._tagged(plan, payload)
-                return plan, self._met(plan, local, decoder.decode(plan.name, payload)) if decoder is not None else ()
+                    return self._tagged(plan, payload, local)
+                return plan, local, self._met(plan, local, decoder.decode(plan.name, payload)) if decoder else ()
             except (FrameError, RdisProtocolError) as err:
                 nothing = isinstance(err, FrameError) and err.timeout
                 if plan.skip and not nothing and reader.deadline is not None and time.monotonic() < reader.deadline:
@@ -1814,8 +1817,9 @@ class Robot:
         return reply
 
     @staticmethod
-    def _tagged(plan: Primitive, payload: bytes) -> tuple[Primitive, Sequence[Any]]:
-        """The entry a reply's tag chooses, and the rest of the payload decoded by it."""
+    def _tagged(plan: Primitive, payload: bytes, local: Args) -> tuple[Primitive, Args, Sequence[Any]]:
+        """The entry a framed reply's tag chooses, the tag after the parameters' values, and
+        the rest of the payload decoded by the entry."""
         tag = plan.tag_struct
         assert tag is not None and plan.table is not None
         if len(payload) < tag.size:
@@ -1825,7 +1829,42 @@ class Robot:
         if case is None:
             raise RdisProtocolError(f"{plan.name}: no reply entry for tag {value}")
         rest = payload[tag.size :]
-        return case, case.decoder.decode(plan.name, rest) if case.decoder is not None else ()
+        return case, [*local, value], case.decoder.decode(plan.name, rest) if case.decoder is not None else ()
+
+    @staticmethod
+    def _read_tagged(plan: Primitive, reader: Incoming, wait: float,
+                     local: Args) -> tuple[Primitive, Args, Sequence[Any]]:
+        """A tagged reply without a frame (Firmata's stream): the tag, then exactly the bytes its
+        entry decodes (a fixed size: checked). Under `skip unmatched` a tag without an entry is
+        read past one byte at a time, the next tag looked for from the byte after its first,
+        until the reply's deadline."""
+        tag = plan.tag_struct
+        assert tag is not None and plan.table is not None
+        missed = f"{plan.name}: no {'matching reply' if plan.skip else 'reply'} within {wait:g} s"
+        while True:
+            head = reader.read(tag.size)
+            if len(head) < tag.size:  # the deadline passed
+                if not head or plan.skip:
+                    raise RdisTimeout(missed)
+                raise RdisProtocolError(f"{plan.name}: expected {tag.size} bytes, got {len(head)}")
+            value = tag.unpack(head)[0]
+            case = plan.table.get(value)
+            if case is None:
+                if not plan.skip:
+                    raise RdisProtocolError(f"{plan.name}: no reply entry for tag {value}")
+                if reader.deadline is not None and time.monotonic() >= reader.deadline:
+                    raise RdisTimeout(missed)
+                reader.put_back(head[1:])
+                continue
+            decoder = case.decoder
+            assert isinstance(decoder, Unpack) and not decoder.rest
+            body = reader.read(decoder.size)
+            if len(body) < decoder.size:
+                if plan.skip:
+                    raise RdisTimeout(missed)
+                raise RdisProtocolError(f"{plan.name}: expected {decoder.size} bytes after tag {value}, "
+                                        f"got {len(body)}")
+            return case, [*local, value], decoder.decode(plan.name, body)
 
     def _port_error(self, plan: Primitive, err: BaseException) -> RdisError:
         """The typed error for what a port raised: a write that timed out, or a failed port."""
