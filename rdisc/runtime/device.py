@@ -114,8 +114,9 @@ class Description:
         expect = None if p.expect is None else prepare(p.expect, slots)
         return engine.Primitive(
             p.name, p.connection, _params(p.params), _values([prepare(a, slots) for a in p.args]),
-            encoder(p.encoding), decoder(p.decoding), actions, frame, p.skip_unmatched,
-            None if p.timeout_ms is None else p.timeout_ms / 1000.0, checked=checked, expect=expect,
+            None if p.encoding is None else encoder(p.encoding), decoder(p.decoding), actions, frame,
+            p.skip_unmatched, None if p.timeout_ms is None else p.timeout_ms / 1000.0, checked=checked,
+            expect=expect, lines=_levels(p.lines, slots),
         )
 
     def _frame(self, frame: m.Frame) -> engine.Frame:
@@ -190,6 +191,15 @@ class Description:
 
 def _params(params: tuple[m.Parameter, ...]) -> tuple[engine.Param, ...]:
     return tuple(engine.Param(p.name, _KINDS[p.type], p.low, p.high, p.default) for p in params)
+
+
+def _levels(lines: tuple[m.LineLevel, ...],
+            slots: dict[str, int]) -> Callable[[Mapping[str, m.Value], Any], dict[str, m.Value]] | None:
+    """A primitive's modem lines, over state and its parameters: each line's level, in order."""
+    if not lines:
+        return None
+    prepared = [(level.line, prepare(level.value, slots)) for level in lines]
+    return lambda state, local: {line: f(state, local, ()) for line, f in prepared}
 
 
 def _condition(holds: Prepared) -> Callable[[Mapping[str, m.Value], Any], m.Value]:
