@@ -1379,7 +1379,8 @@ class Robot:
 
     def on_io(self, callback: IoCallback) -> IoCallback:
         """Call `callback("write" | "read", connection, data)` for every write, and for every
-        byte read, whatever became of it."""
+        byte read, whatever became of it; `callback("lines", connection, b"dtr=False")` for the
+        modem lines a primitive set, before its write."""
         with self._callback_lock:
             self._io_callbacks.append(callback)
         return callback
