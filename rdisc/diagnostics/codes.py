@@ -111,10 +111,12 @@ input calling an interface, a primitive using a frame, or a built-in function.
 Parameters with a default (`speed: int = 5`) may be left out."""),
     ("E202", "missing-clause", """
 A required clause is missing: a primitive needs `on CONNECTION` and exactly one
-of `pack` or `format`."""),
+of `pack` or `format`, unless it only sets modem lines (`lines dtr = on`): then it
+writes no request, and so has no reply and no frame."""),
     ("E203", "conflicting-clause", """
 Clauses that exclude each other, or a clause given twice: a primitive has exactly
-one of `pack`/`format` and at most one of `unpack`/`regex`; an interface is either
+one of `pack`/`format` and at most one of `unpack`/`regex`, and sets each modem
+line once (`lines dtr = True, dtr = False` is refused); an interface is either
 `periodic` or `adhoc`, and lists the outputs it triggers in one `triggers`
 clause, each once; each attribute of a robot or connection is given once."""),
     ("E204", "invalid-value", """
@@ -146,6 +148,16 @@ else an interface), but the calls must not lead back to the interface that makes
 them: a cycle would never end, and neither the link budget nor the worst-case time
 of a call could be known. Break the cycle: move the shared calls into an interface
 that both call."""),
+    ("E211", "modem-lines", """
+A primitive's `lines` clause sets the modem lines of a serial port, `dtr` and `rts`,
+to bools before its request is written (True asserts the line, as in pyserial: an
+RPLIDAR A1's motor runs while DTR is cleared, an Arduino resets on a DTR pulse).
+Those two are the only lines a primitive sets, and
+only a `serial` connection has them: a `tcp` connection carries bytes alone. Wrong:
+`connection net: tcp { address "socket://10.0.0.2:4000" }` with
+`primitive motor(on: bool) on net lines dtr = not on`, or `lines cts = True`. Right:
+`connection link: serial { baud 115200 }` with
+`primitive motor(on: bool) on link lines dtr = not on`."""),
     # -- message formats -------------------------------------------------------
     ("E301", "invalid-pack-format", """
 `pack` and `unpack` take Python struct format strings: an optional byte order

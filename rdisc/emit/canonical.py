@@ -104,11 +104,14 @@ def _connection(c: m.Connection) -> JsonObject:
 
 
 def _primitive(x: m.Primitive) -> JsonObject:
+    encoding: tuple[str, str | None]
     match x.encoding:
         case m.Pack(format):
             encoding = ("pack", format)
         case m.Format(template):
             encoding = ("format", template)
+        case None:
+            encoding = ("pack", None)  # only lines set: the member is left out
         case _:
             _unreachable(x.encoding)
     decoding: tuple[str, str | None]
@@ -129,8 +132,9 @@ def _primitive(x: m.Primitive) -> JsonObject:
         ("parameterRanges", _ranges(x.params)),
         ("parameterDefaults", _defaults(x.params)),
         ("connection", x.connection),
+        ("lines", {level.line: _embedded(level.value) for level in x.lines} or None),
         encoding,
-        ("formatArgs", [_embedded(a) for a in x.args]),
+        ("formatArgs", None if x.encoding is None else [_embedded(a) for a in x.args]),
         decoding,
         ("frame", None if x.frame is None else {"name": x.frame.frame,
                                                  "arguments": [_embedded(a) for a in x.frame.args]}),

@@ -26,8 +26,13 @@ def _primitive(model: m.Model, p: m.Primitive) -> str:
     if frame is not None and frame.stuffing is not None:
         reserved, escape = (" ".join(f"{ord(c):02X}" for c in text) for text in frame.stuffing)
         lines.append(f"  payloads stuffed: {escape} inserted after every {reserved}")
-    request = _payload_rows(p.encoding, p.args)
-    lines += _side("request", frame.request if frame else None, request)
+    if p.lines:
+        levels = ", ".join(f"{level.line} = {expression_text(level.value)}" for level in p.lines)
+        lines.append(f"  lines: {levels} (set before the request)" if p.encoding else f"  lines: {levels}")
+    if p.encoding is None:
+        lines.append("  request: none")
+    else:
+        lines += _side("request", frame.request if frame else None, _payload_rows(p.encoding, p.args))
     framed = frame.reply if frame and frame.reply else None
     if p.table is not None:
         for case in p.table.cases:

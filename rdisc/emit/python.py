@@ -457,8 +457,13 @@ class _Driver:
             fields = "None"
         const = self.plan["primitive", prim.name]
         common = [quoted(prim.name), quoted(prim.connection), _param_tuple(prim.params), f"{base}_values",
-                  _codec(encoder(prim.encoding))]
+                  _codec(None if prim.encoding is None else encoder(prim.encoding))]
         options = {"frame": fields} if prim.frame is not None else {}
+        if prim.lines:
+            options["lines"] = f"{base}_lines"
+            w.blank(2)
+            self.function(w, options["lines"], signature, prim.params,
+                          [(level.line, level.value, Type.BOOL) for level in prim.lines], "dict[str, Value]")
         if prim.skip_unmatched:
             options["skip"] = "True"
         if prim.timeout_ms is not None:

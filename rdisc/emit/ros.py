@@ -175,7 +175,9 @@ class _Bridge:
                 w.line('errors.publish(std_msgs_msg.String(data=f"{type(error).__name__}: {error}"))')
             w.blank()
             with w.block("def on_io(direction: str, connection: str, data: bytes) -> None:"):
-                w.line('rospy.loginfo("%s %s %s", connection, ">" if direction == "write" else "<", data.hex(" "))')
+                w.line('shown = data.decode("ascii") if direction == "lines" else data.hex(" ")')
+                w.line('arrow = {"write": ">", "read": "<"}.get(direction, direction)')
+                w.line('rospy.loginfo("%s %s %s", connection, arrow, shown)')
             w.blank()
             w.lines([
                 'robot = connect(ports, timeout=float(rospy.get_param("~timeout", 1.0)), on_output=on_output,',

@@ -25,6 +25,13 @@ RdisProtocolError; the groups are the values (an unmatched group is "").
 all are assigned together. An expression that cannot be evaluated (division by
 zero, ...) is an RdisValueError.
 
+Modem lines. A primitive's `lines` are evaluated (bools, over state and its
+parameters) after its request is encoded and set, under the lock and in the order
+written, before its request is written (pyserial's `port.dtr`, `port.rts`; True
+asserts). A primitive without `pack` or `format` only sets them. A port that
+refuses is RdisConnectionError "C: P: cannot set dtr = False: ..."; nothing is
+written then.
+
 Ranges. A parameter declared `in LOW..HIGH` refuses a value outside it (for
 bytes, a length outside it) with RdisValueError "OWNER: parameter P is V, outside
 LOW..HIGH" ("has N bytes" for bytes), checked after binding and before the
@@ -106,7 +113,8 @@ Details both implementations follow (where the above is silent):
   texts: "P: no reply within T s" (T formatted with :g), "P: expected N bytes,
   got K", "P: reply line not terminated: LINE", "P: reply LINE does not match
   PATTERN" (LINE, PATTERN with repr), "P: write not completed within T s",
-  "C: cannot open PORT: ...", "C: ..." with the I/O error's text, "O: output
+  "C: cannot open PORT: ...", "C: ..." with the I/O error's text, "C: P: cannot
+  set LINE = LEVEL: ..." for a modem line the port refuses, "O: output
   callback raised TYPE: ..." and "C: I/O callback raised TYPE: ..." for
   RdisCallbackError, "ROBOT: closed" for a call after `close`.
   Comparisons across implementations use the type and that first name.
@@ -118,9 +126,11 @@ Details both implementations follow (where the above is silent):
 - Callbacks: on_output(cb) gets cb(output_dict), on_error(cb) gets cb(exception),
   on_io(cb) gets cb("write" | "read", connection, data) after each write and after
   each exchange that read bytes: every byte the port gave, whatever became of it
-  (a short read, a frame refused, garbage skipped). Callbacks run on the thread
-  that did the work (the caller's for inputs, a connection's for periodic work
-  and keepalives) and never concurrently with each other (one reentrant lock).
+  (a short read, a frame refused, garbage skipped); and cb("lines", connection,
+  b"dtr=False rts=True") after a primitive's `lines` are set, before its write.
+  Callbacks run on the thread that did the work (the caller's for inputs, a
+  connection's for periodic work and keepalives) and never concurrently with each
+  other (one reentrant lock).
   An exception from an output or I/O callback becomes RdisCallbackError (cause
   set) reported to the error callbacks; one from an error callback is ignored.
   An error with no error callback registered is logged (logger "rdisc").
@@ -152,9 +162,9 @@ Details both implementations follow (where the above is silent):
   primitive, with its parameters by name; values are int, else float, else
   True/False, else the string. Without `--port`, every connection opens its
   address. `--watch` prints each output as `json.dumps(output_dict)` on stdout,
-  one a line; `--trace` prints "CONN > 89 00 c8 7f ff" (written) and "CONN < 00"
-  (read) on stderr; errors reported while running are printed on stderr as
-  "rdisc run: TYPE: MESSAGE". Exit status: 0 done, 1 a description or device
+  one a line; `--trace` prints "CONN > 89 00 c8 7f ff" (written), "CONN < 00"
+  (read) and "CONN lines dtr=False" (modem lines set) on stderr; errors reported
+  while running are printed on stderr as "rdisc run: TYPE: MESSAGE". Exit status: 0 done, 1 a description or device
   error, 2 a usage error, 130 after SIGINT, 143 after SIGTERM; the terminate
   hooks run in every case.
 """

@@ -118,8 +118,9 @@ class Description:
         expect = None if p.expect is None else prepare(p.expect, slots)
         return engine.Primitive(
             p.name, p.connection, _params(p.params), _spread(_values([prepare(a, slots) for a in p.args]), p.spreads()),
-            encoder(p.encoding), decoder(p.decoding), actions, frame, p.skip_unmatched,
-            None if p.timeout_ms is None else p.timeout_ms / 1000.0, checked=checked, expect=expect,
+            None if p.encoding is None else encoder(p.encoding), decoder(p.decoding), actions, frame,
+            p.skip_unmatched, None if p.timeout_ms is None else p.timeout_ms / 1000.0, checked=checked,
+            expect=expect, lines=_levels(p.lines, slots),
         )
 
     def _frame(self, frame: m.Frame) -> engine.Frame:
@@ -201,6 +202,15 @@ def _param(name: str, type_: m.AnyType, low: float | None = None, high: float | 
     if isinstance(type_, m.Array):
         return engine.Param(name, _KINDS[type_.element], low, high, default, type_.size)
     return engine.Param(name, _KINDS[type_], low, high, default)
+
+
+def _levels(lines: tuple[m.LineLevel, ...],
+            slots: dict[str, int]) -> Callable[[Mapping[str, m.Value], Any], dict[str, m.Value]] | None:
+    """A primitive's modem lines, over state and its parameters: each line's level, in order."""
+    if not lines:
+        return None
+    prepared = [(level.line, prepare(level.value, slots)) for level in lines]
+    return lambda state, local: {line: f(state, local, ()) for line, f in prepared}
 
 
 def _condition(holds: Prepared) -> Callable[[Mapping[str, m.Value], Any], m.Value]:

@@ -152,6 +152,8 @@ def message_bytes(prim: m.Primitive, frames: dict[str, m.Frame] | None = None) -
         case m.Format(template=template):
             values = [a.value if isinstance(a, m.Const) else _SAMPLE[a.type] for a in prim.args]
             request = len(template.format(*values).encode("utf-8"))
+        case None:  # only modem lines set: no byte on the wire
+            request = 0
     match prim.decoding:
         case m.Unpack(format=fmt):
             reply = formats.struct_layout(fmt).size

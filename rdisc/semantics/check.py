@@ -493,9 +493,13 @@ class _Checker:
         encodings = [c for c in decl.clauses if isinstance(c, ast.Encoding)]
         decodings = [c for c in decl.clauses if isinstance(c, ast.Decoding)]
         action_blocks = [c for c in decl.clauses if isinstance(c, ast.Actions)]
-        if not encodings:
+        lines_clause = self.once([c for c in decl.clauses if isinstance(c, ast.Lines)], "`lines`", name)
+        replied = any(isinstance(c, ast.Decoding | ast.Framed | ast.ReplyTable) for c in decl.clauses)
+        if not encodings and (lines_clause is None or replied):
             self.d.report("E202", name.span, f"primitive `{name.text}` has neither `pack` nor `format`",
-                          help='say how the request is written: `pack ">Bhh" (...)` or `format "D,{},{}\\n" (...)`')
+                          help='say how the request is written: `pack ">Bhh" (...)` or `format "D,{},{}\\n" (...)`'
+                          if lines_clause is None else "a primitive that only sets `lines` writes no request, "
+                          "so it has no reply and no frame")
         for extra in encodings[1:]:
             self.d.report("E203", extra.span, f"primitive `{name.text}` has more than one of `pack`/`format`",
                           labels=(Label(encodings[0].span, "first given here"),))
@@ -530,6 +534,7 @@ class _Checker:
         # Read without a frame: none, or one whose reply is empty (a frame in error: neither)
         unframed = framed is None or (isinstance(framed, ast.Framed) and framed.frame.text in self.frames
                                       and not self.frames[framed.frame.text].reply)
+        lines = self.modem_lines(lines_clause, env, name, connection) if isinstance(lines_clause, ast.Lines) else ()
         table_clause = self.once([c for c in decl.clauses if isinstance(c, ast.ReplyTable)], "a reply table", name)
         table = None
         if isinstance(table_clause, ast.ReplyTable):
@@ -573,8 +578,35 @@ class _Checker:
         if expect is not None and table is not None:
             self.d.report("E203", expect.span, f"primitive `{name.text}` has a reply table and also `expect`",
                           help="`expect` checks the reply of a primitive with one decoding")
-        return m.Primitive(name.text, params, connection, encoding, args, decoding, actions, decl.doc, decl.span,  # type: ignore[arg-type]
-                           frame, skip is not None, table, timeout, expect)
+        return m.Primitive(name.text, params, connection, encoding, args, decoding, actions, decl.doc, decl.span,
+                           frame, skip is not None, table, timeout, expect, lines)
+
+    def modem_lines(self, clause: ast.Lines, env: Env, name: ast.Ident,
+                    connection: m.ConnectionRef) -> tuple[m.LineLevel, ...]:
+        """`lines dtr = COND, rts = COND`: each line of a serial port once, a bool over the
+        parameters and state; a `tcp` connection has no modem lines."""
+        conn = self.s.connections.get(connection)
+        if conn is not None and conn.kind.text == "tcp":
+            self.d.report("E211", clause.span, f"`{name.text}` sets modem lines, but connection `{connection}` is "
+                          "`tcp`, which has none", help="DTR and RTS are a serial port's: use a `serial` connection")
+        levels: list[m.LineLevel] = []
+        seen: dict[str, ast.Assign] = {}
+        for setting in clause.settings:
+            line = setting.target.text
+            value = self.typer.expr(setting.value, env)
+            if line not in m.MODEM_LINES:
+                self.d.report("E211", setting.target.span, f"`{line}` is not a modem line a primitive sets",
+                              help="a primitive sets `dtr` or `rts` (CTS, DSR, RI and CD are the device's)")
+                continue
+            if line in seen:
+                self.d.report("E203", setting.target.span, f"`{line}` is given twice in `{name.text}`",
+                              labels=(Label(seen[line].target.span, "first given here"),))
+                continue
+            seen[line] = setting
+            if value.type is not None and value.type is not Type.BOOL:
+                self.d.report("E401", setting.value.span, f"`{line}` takes a bool, but this is {describe(value.type)}")
+            levels.append(m.LineLevel(line, value, setting.span))
+        return tuple(levels)
 
     def expect(self, decl: ast.PrimitiveDecl, scope: dict[str, tuple[Scope, Type]], reply: tuple[Type, ...] | None,
                decodes: bool) -> m.Expr | None:

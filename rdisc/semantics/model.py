@@ -310,6 +310,19 @@ class PostAction:
     span: Span | None = _span
 
 
+MODEM_LINES = ("dtr", "rts")
+"""The serial port's modem lines a primitive may set (pyserial's `dtr` and `rts`)."""
+
+
+@dataclass(frozen=True, slots=True)
+class LineLevel:
+    """A modem line and its level (a bool over state and the primitive's parameters)."""
+
+    line: str  # one of MODEM_LINES
+    value: Expr
+    span: Span | None = _span
+
+
 _KEEPING_WIDTH = frozenset({"&", "|", "^", ">>", "==", "!=", "<", "<=", ">", ">=", "and", "or"})
 
 
@@ -452,7 +465,7 @@ class Primitive:
     name: str
     params: tuple[Parameter, ...]
     connection: ConnectionRef
-    encoding: Pack | Format
+    encoding: Pack | Format | None  # None: it writes no request, and only sets `lines`
     args: tuple[Expr, ...]
     decoding: Unpack | Regex | None = None
     actions: tuple[PostAction, ...] = ()
@@ -463,6 +476,7 @@ class Primitive:
     table: ReplyTable | None = None  # the reply chosen by a parameter (then no `decoding`)
     timeout_ms: float | None = None  # how long its reply may take, instead of the robot's timeout
     expect: Expr | None = None  # a condition on the decoded reply that it must meet
+    lines: tuple[LineLevel, ...] = ()  # modem lines set before the request, in this order
 
     def case(self, c: ReplyCase) -> Primitive:
         """This primitive as it is when its table's key (or its reply's tag) has c.value: one decoding."""
@@ -477,11 +491,12 @@ class Primitive:
 
     def formats_its_params(self) -> bool:
         """Whether a call's arguments can be its format values as they are: no post-actions,
-        frame, table or ranges, and format arguments that are constants and its parameters,
+        frame, table, modem lines or ranges, and format arguments that are constants and its parameters,
         each once and in order (both planners then skip binding the parameters)."""
         used = [a.name for a in self.args if isinstance(a, Var) and a.scope is Scope.PARAM]
         simple = all(isinstance(a, Const) or (isinstance(a, Var) and a.scope is Scope.PARAM) for a in self.args)
-        return (simple and not self.spreads() and not (self.actions or self.frame or self.table or self.expect)
+        return (simple and not self.spreads()
+                and not (self.actions or self.frame or self.table or self.expect or self.lines)
                 and all(p.low is None for p in self.params) and used == [p.name for p in self.params])
 
     def format_values(self) -> tuple[Expr, ...]:

@@ -337,7 +337,17 @@ class Expect:
     span: Span = _span
 
 
-PrimitiveClause = On | Encoding | Decoding | Actions | Framed | SkipUnmatched | ReplyTable | ReplyTimeout | Expect
+@dataclass(frozen=True, slots=True)
+class Lines:
+    """`lines dtr = COND, rts = COND`: the serial port's modem lines, set before the request."""
+
+    settings: tuple[Assign, ...]
+    span: Span = _span
+
+
+PrimitiveClause = (
+    On | Encoding | Decoding | Actions | Framed | SkipUnmatched | ReplyTable | ReplyTimeout | Expect | Lines
+)
 
 
 @dataclass(frozen=True, slots=True)

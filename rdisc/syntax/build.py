@@ -318,6 +318,9 @@ def _transformer_class():
         def expect(self, meta, c):
             return ast.Expect(c[0], self.b.span(meta))
 
+        def modem_lines(self, meta: object, c: list[ast.Assign]) -> ast.Lines:
+            return ast.Lines(tuple(c), self.b.span(meta))
+
         def skip_unmatched(self, meta, c):
             return ast.SkipUnmatched(self.b.span(meta))
 

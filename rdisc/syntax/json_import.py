@@ -314,8 +314,9 @@ _CONNECTION = (
     "name", "baud", "singleThreading", "startup", "terminate", "keepalive", "terminator", "address", "doc",
 )  # fmt: skip
 _PRIMITIVE = (
-    "name", "parameters", "parameterTypes", "parameterRanges", "parameterDefaults", "connection", "pack", "format",
-    "formatArgs", "unpack", "regex", "frame", "skipUnmatched", "replyTable", "timeout", "expect", "postActions", "doc",
+    "name", "parameters", "parameterTypes", "parameterRanges", "parameterDefaults", "connection", "lines", "pack",
+    "format", "formatArgs", "unpack", "regex", "frame", "skipUnmatched", "replyTable", "timeout", "expect",
+    "postActions", "doc",
 )  # fmt: skip
 _FRAME = ("name", "parameters", "parameterTypes", "parameterRanges", "parameterDefaults", "request", "reply",
           "stuffing", "doc")
@@ -667,6 +668,11 @@ class _Importer:
         connection = self.ident(m["connection"], "`connection`") if "connection" in m else None
         if connection is not None:
             clauses.append(ast.On(connection, connection.span))
+        lines = self.object(m.get("lines"), "`lines`")
+        if lines is not None:  # {"dtr": "<not on>", ...}: the lines in the order they are set
+            settings = [(self.ident(line, "a modem line"), self.expr(value, "bool")) for line, value in lines.members]
+            clauses.append(ast.Lines(tuple(ast.Assign(line, value, value.span) for line, value in settings
+                                           if line is not None and value is not None), lines.span))
         encodings = [(kind, s) for kind in ("pack", "format") if (s := self.string(m.get(kind), f"`{kind}`"))]
         slots = _slot_types(*encodings[0]) if encodings else {}
         written = self.array(m.get("formatArgs"), "`formatArgs`")

@@ -45,16 +45,36 @@ primitive strict() on link frame summed(1) pack "B" (4) unpack "B" { v = out[0] 
 """
 
 
+def _recorded_line(name: str) -> property:
+    """A modem line of a ScriptedPort: each level set is recorded among its events."""
+
+    def level(port: ScriptedPort) -> bool:
+        return port.levels[name]
+
+    def set_level(port: ScriptedPort, value: bool) -> None:
+        port.levels[name] = value
+        port.events.append((name, value))
+
+    return property(level, set_level)
+
+
 class ScriptedPort:
-    """Records writes; answers reads from a script of reply bytes, in order."""
+    """Records writes, and modem line changes in order with them (`events`: ("write", data),
+    ("dtr", level), ("rts", level)); answers reads from a script of reply bytes, in order."""
+
+    dtr = _recorded_line("dtr")
+    rts = _recorded_line("rts")
 
     def __init__(self, script: bytes = b"") -> None:
         self.script = script
         self.written = bytearray()
         self.timeout: float | None = 0.05
+        self.levels = {"dtr": True, "rts": True}  # as pyserial opens a port
+        self.events: list[tuple[str, bytes | bool]] = []
 
     def write(self, data: bytes, /) -> int:
         self.written += data
+        self.events.append(("write", bytes(data)))
         return len(data)
 
     def read(self, size: int = 1, /) -> bytes:

@@ -49,6 +49,8 @@ Args = list[Any]
 OutputCallback = Callable[[dict[str, Any]], object]
 ErrorCallback = Callable[[BaseException], object]
 IoCallback = Callable[[str, str, bytes], object]
+"""`(direction, connection, data)`: "write" or "read" and the bytes, or "lines" and the modem
+lines a primitive set, as ASCII text such as b"dtr=0 rts=1"."""
 
 MAX_INT = (1 << 64) - 1  # the largest int a state variable holds (and its negation the smallest)
 MAX_LINE = 4096
@@ -785,14 +787,15 @@ None where the general way must decide."""
 @dataclass(frozen=True, slots=True)
 class Primitive:
     """One device command: its format values (over state and its parameters), how they are
-    encoded and framed, how its reply is read and decoded, and its post-actions (the new
-    values of state variables, over state, its parameters and the reply)."""
+    encoded and framed (no encoder: no request, only modem lines), how its reply is read and
+    decoded, and its post-actions (the new values of state variables, over state, its
+    parameters and the reply)."""
 
     name: str
     connection: str
     params: tuple[Param, ...]
     values: Callable[[StateValues, Args], Args]
-    encoder: Pack | Format
+    encoder: Pack | Format | None
     decoder: Unpack | Match | None = None
     actions: Callable[[StateValues, Args, Sequence[Any]], dict[str, Value]] | None = None
     frame: FrameUse | None = None
@@ -804,6 +807,7 @@ class Primitive:
     checked: tuple[str, ...] = ()  # state variables its post-actions may make too wide (checked as they are set)
     request: Request | None = None  # its parameters' values to the bytes, when it is only written (`_sent_at_once`)
     expect: Callable[[StateValues, Args, Sequence[Any]], object] | None = None  # a condition its decoded reply meets
+    lines: Callable[[StateValues, Args], dict[str, Value]] | None = None  # "dtr"/"rts": levels, set before the request
     expects_reply: bool = field(init=False)
     framed_reply: bool = field(init=False)
     floats: tuple[int, ...] = field(init=False)
@@ -827,10 +831,10 @@ class Primitive:
 
 def _sent_at_once(plan: Primitive) -> bool:
     """Whether running the primitive is only packing its values, framing them and writing
-    them: no reply, reply table, post-action or string in the way."""
+    them: no reply, reply table, post-action, modem line or string in the way."""
     encoder = plan.encoder
     plain = isinstance(encoder, Pack) and not encoder.strings and not encoder.rest
-    return plain and not plan.expects_reply and plan.actions is None and plan.table is None
+    return plain and not plan.expects_reply and plan.actions is None and plan.table is None and plan.lines is None
 
 
 def _composed_write(plan: Primitive) -> Request:
@@ -928,7 +932,7 @@ class Input:
 
 def _written_at_once(interface: Interface) -> Call | None:
     """The interface's one call, when running it is only packing its values and writing them:
-    no delay, range, output, frame, reply, post-action or string in the way."""
+    no delay, range, output, frame, reply, post-action, modem line or string in the way."""
     if len(interface.calls) != 1 or interface.ranged or interface.outputs:
         return None
     call = interface.calls[0]
@@ -938,7 +942,7 @@ def _written_at_once(interface: Interface) -> Call | None:
     plain = isinstance(prim.encoder, Pack) and not prim.encoder.strings and not prim.encoder.rest
     if not call.direct or call.delay or call.when or not plain or prim.expects_reply or prim.frame is not None:
         return None
-    return call if prim.actions is None and prim.table is None and not prim.ranged else None
+    return call if prim.actions is None and prim.table is None and prim.lines is None and not prim.ranged else None
 
 
 def _composed(plan: Input, call: Call) -> Request:
@@ -1206,9 +1210,12 @@ class Calls:
 
 
 class Port(Protocol):
-    """What the robot needs of an open port; pyserial's `Serial` has all of it."""
+    """What the robot needs of an open port; pyserial's `Serial` has all of it (`dtr` and `rts`,
+    its modem lines, only a primitive with `lines` sets)."""
 
     timeout: float | None
+    dtr: bool
+    rts: bool
 
     def write(self, data: bytes, /) -> int | None: ...
 
@@ -1407,7 +1414,8 @@ class Robot:
 
     def on_io(self, callback: IoCallback) -> IoCallback:
         """Call `callback("write" | "read", connection, data)` for every write, and for every
-        byte read, whatever became of it."""
+        byte read, whatever became of it; `callback("lines", connection, b"dtr=False")` for the
+        modem lines a primitive set, before its write."""
         with self._callback_lock:
             self._io_callbacks.append(callback)
         return callback
@@ -1674,8 +1682,9 @@ class Robot:
             raise RdisValueError(f"{plan.name}: {err}") from None
         self._exchange(plan, values, args)
 
-    def _write(self, plan: Primitive, request: bytes) -> None:
-        """Write a request that has no reply under the port's lock, then show the I/O callbacks."""
+    def _write(self, plan: Primitive, request: bytes, levels: dict[str, Value] | None = None) -> None:
+        """Under the port's lock set the modem lines, if any, then write a request that has no
+        reply (if the primitive has one); then show the I/O callbacks."""
         link = self._links.get(plan.connection)
         if link is None:
             raise RdisConnectionError(f"{plan.connection}: not open")
@@ -1683,20 +1692,42 @@ class Robot:
         lock = port.lock
         lock.acquire()  # acquire/release rather than `with`: cheaper, and this is every command's path
         try:
-            port.io.write(request)
+            if levels is not None:
+                self._set_lines(plan, port.io, levels)
+            if plan.encoder is not None:
+                port.io.write(request)
+        except RdisError:
+            raise
         except Exception as err:  # whatever the port raises, it failed
             raise self._port_error(plan, err) from err
         finally:
             lock.release()
         if self._io_callbacks:
-            self._notify_io("write", plan.connection, request)
+            if levels is not None:
+                self._notify_io("lines", plan.connection, _lines_text(levels))
+            if plan.encoder is not None:
+                self._notify_io("write", plan.connection, request)
+
+    @staticmethod
+    def _set_lines(plan: Primitive, io: Port, levels: dict[str, Value]) -> None:
+        """Set the primitive's modem lines in the order written (pyserial's `dtr` and `rts`). A
+        port that refuses (a pty, a port with no modem lines) is an RdisConnectionError."""
+        for line, level in levels.items():
+            try:
+                if line == "dtr":
+                    io.dtr = bool(level)
+                else:
+                    io.rts = bool(level)
+            except Exception as err:  # whatever the port raises, it refused
+                raise RdisConnectionError(f"{plan.connection}: {plan.name}: cannot set {line} = {bool(level)}: "
+                                          f"{err}") from err
 
     def _exchange(self, plan: Primitive, values: Args, local: Args) -> None:
         """Encode and frame the request; under the port's lock write it and read the reply;
         then show the I/O callbacks every byte written and read, and run the post-actions.
 
         `local` is the primitive's parameters' values (a direct call passes its values)."""
-        request = plan.encoder.encode(plan.name, values)
+        request = plan.encoder.encode(plan.name, values) if plan.encoder is not None else b""
         use = plan.frame
         fields: list[Any] = []
         if use is not None:
@@ -1707,8 +1738,14 @@ class Robot:
                 raise
             except (struct.error, *EVAL_ERRORS) as err:
                 raise RdisValueError(f"{plan.name}: {err}") from None
+        levels = None
+        if plan.lines is not None:
+            try:
+                levels = plan.lines(self._state, local)
+            except EVAL_ERRORS as err:
+                raise RdisValueError(f"{plan.name}: {err}") from None
         if not plan.expects_reply:
-            self._write(plan, request)
+            self._write(plan, request, levels)
             if plan.actions is not None:
                 self._assign(plan, local, ())
             return
@@ -1722,9 +1759,12 @@ class Robot:
         wait = plan.timeout or self.timeout
         reply: Sequence[Any] = ()
         failed: BaseException | None = None
-        written = False
+        lines_set = written = False
         lock.acquire()
         try:
+            if levels is not None:
+                self._set_lines(plan, io, levels)
+                lines_set = True
             if request:  # a listener (no request) keeps what has arrived: its reply is the next one
                 io.reset_input_buffer()
                 reader.clear()
@@ -1747,6 +1787,8 @@ class Robot:
         # I/O callbacks run once the port is free again: one that calls the robot (or
         # waits for a thread that does) cannot deadlock against this exchange.
         if self._io_callbacks:
+            if lines_set and levels is not None:
+                self._notify_io("lines", plan.connection, _lines_text(levels))
             if written:
                 self._notify_io("write", plan.connection, request)
             if data:
@@ -1908,6 +1950,8 @@ class Robot:
                     self._report(error)
 
     def _notify_io(self, direction: str, connection: str, data: bytes) -> None:
+        """Show the I/O callbacks one event: "write" or "read" and the bytes, or "lines" and
+        the modem lines set (`_lines_text`)."""
         with self._callback_lock:
             for callback in list(self._io_callbacks):
                 try:
@@ -1927,6 +1971,11 @@ class Robot:
                     callback(error)
                 except Exception:  # noqa: BLE001, S110 - the contract: an error callback's failure is ignored
                     pass
+
+
+def _lines_text(levels: Mapping[str, Value]) -> bytes:
+    """The modem lines a primitive set, as the I/O callbacks see them: b"dtr=False rts=True"."""
+    return " ".join(f"{line}={bool(level)}" for line, level in levels.items()).encode("ascii")
 
 
 # ---- the command line: `rdisc run` and every driver's ------------------------------------------------
@@ -2099,6 +2148,9 @@ def _print_error(error: BaseException) -> None:
 
 
 def _print_io(direction: str, connection: str, data: bytes) -> None:
+    if direction == "lines":
+        print(f"{connection} lines {data.decode('ascii')}", file=sys.stderr, flush=True)
+        return
     arrow = ">" if direction == "write" else "<"
     print(f"{connection} {arrow} {data.hex(' ')}", file=sys.stderr, flush=True)
 
