@@ -127,7 +127,7 @@ class _Checker:
         if element is None:
             return None
         if element not in (Type.INT, Type.FLOAT, Type.BOOL):
-            self.d.report("E105", ref.element.span, f"an array holds ints, floats or bools, not {element.value}")
+            self.d.report("E105", ref.element.span, f"an array holds ints, floats or bools, not `{element.value}`")
             return None
         if ref.size is None:
             if not open_size:

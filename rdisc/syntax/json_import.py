@@ -339,6 +339,12 @@ DEFAULT_BAUD = 9600  # thesis Appendix A; written out, so the .rdis says what th
 DEFAULT_FREQUENCY_HZ = 10
 _DEFAULTS: dict[str, Any] = {"int": 0, "float": 0.0, "bool": False, "string": ""}
 _NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
+_ARRAY_TYPE = re.compile(r"([A-Za-z][A-Za-z0-9_]*)\[([0-9]{0,6})\]")
+
+
+def _type_text(t: ast.TypeRef) -> str:
+    """A declared type's name, as the importer compares it: an array's as `int[]`."""
+    return f"{t.element.text}[]" if isinstance(t, ast.ArrayOf) else t.text
 _FLOAT_SPECS = frozenset("eEfFgG%")
 
 Members = dict[str, JValue]
@@ -359,7 +365,7 @@ class _Importer:
         self.path = path
         self.d = diagnostics
         self.standard = _standard_adapters()
-        self.adapter_fields = {name: {f.name.text: f.type.text for f in a.fields} for name, a in self.standard.items()}
+        self.adapter_fields = {name: {f.name.text: _type_text(f.type) for f in a.fields} for name, a in self.standard.items()}
         self.primitive_types: dict[str, tuple[str, ...]] = {}
         self.interface_types: dict[str, tuple[str, ...]] = {}
         self.made_adapters: list[ast.AdapterDecl] = []
@@ -509,7 +515,7 @@ class _Importer:
             sides[side] = _present([None if p is None else self.frame_part(p, parts) for p in parts])
         if name is None:
             return None
-        self.frame_types[name.text] = tuple(p.type.text for p in params)
+        self.frame_types[name.text] = tuple(_type_text(p.type) for p in params)
         written = {side: m[side] for side in ("request", "reply") if side in m}
         if sides["request"] == sides["reply"]:  # one sequence for both directions
             items: tuple = sides["request"]
@@ -594,8 +600,8 @@ class _Importer:
     def state(self, obj: JObject) -> ast.StateDecl | None:
         m = self.members(obj, "a state variable", _STATE)
         name = self.name(obj, m, "a state variable")
-        type_ = self.required(obj, m, "type", "a state variable", self.ident)
-        init = None if "value" not in m else self.expr(m["value"], type_.text if type_ else None)
+        type_ = self.required(obj, m, "type", "a state variable", self.type_ref)
+        init = None if "value" not in m else self.expr(m["value"], _type_text(type_) if type_ else None)
         if name is None or type_ is None:
             return None
         return ast.StateDecl(name, type_, init, obj.span, self.doc(m))
@@ -722,7 +728,7 @@ class _Importer:
         params = self.params(m, infer)
         if name is None:
             return None
-        self.primitive_types[name.text] = tuple(p.type.text for p in params)
+        self.primitive_types[name.text] = tuple(_type_text(p.type) for p in params)
         return ast.PrimitiveDecl(name, params, tuple(clauses), obj.span, self.doc(m))
 
     def interface(self, obj: JObject) -> ast.InterfaceDecl | None:
@@ -755,11 +761,11 @@ class _Importer:
 
         params = self.params(m, infer)
         if "parameterTypes" not in m:  # thesis JSON, which ran on Python 2
-            floats = {p.name.text for p in params if p.type.text == "float"}
+            floats = {p.name.text for p in params if _type_text(p.type) == "float"}
             body = tuple(self.truncated(stmt, floats) for stmt in body)
         if name is None:
             return None
-        self.interface_types[name.text] = tuple(p.type.text for p in params)
+        self.interface_types[name.text] = tuple(_type_text(p.type) for p in params)
         return ast.InterfaceDecl(name, params, tuple(clauses), tuple(body), obj.span, self.doc(m))
 
     def truncated(self, stmt: ast.CallStmt, floats: set[str]) -> ast.CallStmt:
@@ -802,13 +808,13 @@ class _Importer:
         built = _present([None if f is None else self.field(f) for f in objects])
         if name is None:
             return None
-        self.adapter_fields[name.text] = {f.name.text: f.type.text for f in built}
+        self.adapter_fields[name.text] = {f.name.text: _type_text(f.type) for f in built}
         return ast.AdapterDecl(name, _str_lit(ros), built, obj.span, self.doc(m))
 
     def field(self, obj: JObject) -> ast.FieldDecl | None:
         m = self.members(obj, "an adapter field", _FIELD)
         name = self.name(obj, m, "an adapter field")
-        type_ = self.required(obj, m, "type", "an adapter field", self.ident)
+        type_ = self.required(obj, m, "type", "an adapter field", self.type_ref)
         unit, ros = self.string(m.get("unit"), "`unit`"), self.string(m.get("ros"), "`ros`")
         if name is None or type_ is None:
             return None
@@ -874,7 +880,7 @@ class _Importer:
             decl_fields = tuple(ast.FieldDecl(f, ast.Ident("float", f.span), None, None, f.span) for f in names)
             decl = ast.AdapterDecl(ast.Ident(made, element.span), None, decl_fields, obj.span)
         self.made_adapters.append(decl)
-        self.adapter_fields[made] = {f.name.text: f.type.text for f in decl_fields}
+        self.adapter_fields[made] = {f.name.text: _type_text(f.type) for f in decl_fields}
         return ast.Ident(made, element.span)
 
     # -- parameters, arguments and expressions --
@@ -889,7 +895,7 @@ class _Importer:
             return tuple(ast.Param(n, ast.Ident(infer(n), n.span), n.span, *r, d)
                          for n, r, d in zip(names, ranges, defaults))
         types = [
-            i for v in self.array(m["parameterTypes"], "`parameterTypes`") if (i := self.ident(v, "a type"))
+            i for v in self.array(m["parameterTypes"], "`parameterTypes`") if (i := self.type_ref(v, "a type"))
         ]
         if len(types) != len(names):
             self.error(
@@ -948,7 +954,10 @@ class _Importer:
             case JString():
                 offsets = self.offsets(v)
                 return self.parse(v.value[1:-1], offsets[1 : len(v.value)])
-        self.error(v.span, f"expected an expression (a number, true/false or a string), found {_kind(v)}")
+            case JArray(items, span) if items:  # a constant array: `"IDS": [1, 2, 3]`
+                values = [self.expr(item, None) for item in items]
+                return None if None in values else ast.ArrayLit(tuple(values), span)  # type: ignore[arg-type]
+        self.error(v.span, f"expected an expression (a number, true/false, a string or an array), found {_kind(v)}")
         return None
 
     def reply_expr(self, v: JValue, what: str) -> ast.Expr | None:
@@ -963,14 +972,14 @@ class _Importer:
         return self.parse(text, offsets)
 
     def post_action(self, v: JValue) -> ast.Assign | None:
-        """`"state = expr"` (or `"<state = expr>"`), with the reply as `__out__`."""
+        """`"state = expr"` or `"state[index] = expr"` (or inside `<...>`), with the reply as `__out__`."""
         s = self.string(v, "a post-action")
         if s is None:
             return None
         text, offsets = s.value, self.offsets(s)
         if _embedded(text):
             text, offsets = text[1:-1], offsets[1 : len(text)]
-        m = _ASSIGNMENT.match(text)
+        m = _ASSIGNMENT.match(text) or _ELEMENT_ASSIGNMENT.match(text)
         if m is None or not _NAME.fullmatch(m.group(1)):
             self.error(
                 s.span,
@@ -979,9 +988,15 @@ class _Importer:
             )
             return None
         target = ast.Ident(m.group(1), Span(self.path, offsets[m.start(1)], offsets[m.end(1)]))
+        index = None
+        if m.re is _ELEMENT_ASSIGNMENT:
+            at, end = m.start(2), m.end(2)
+            index = self.parse(*_reply_as_out(text[at:end], offsets[at : end + 1]))
+            if index is None:
+                return None
         text, offsets = _reply_as_out(text[m.end() :], offsets[m.end() :])
         value = self.parse(text, offsets)
-        return None if value is None else ast.Assign(target, value, s.span)
+        return None if value is None else ast.Assign(target, value, s.span, index)
 
     def offsets(self, s: JString) -> list[int]:
         """The file offset of each character of a decoded string, then of its closing quote."""
@@ -1042,6 +1057,16 @@ class _Importer:
     def name(self, obj: JObject, m: Members, what: str) -> ast.Ident | None:
         return self.required(obj, m, "name", what, self.ident)
 
+    def type_ref(self, v: JValue, what: str) -> ast.TypeRef | None:
+        """A type's name, or an array type: `"int[6]"`, `"float[]"` (an adapter's field)."""
+        s = self.string(v, what)
+        if s is not None and (array := _ARRAY_TYPE.fullmatch(s.value)) is not None:
+            start = s.span.start + 1  # after the opening quote: the name is written as is
+            element = ast.Ident(array.group(1), Span(self.path, start, start + len(array.group(1))))
+            size = None if not array.group(2) else ast.IntLit(int(array.group(2)), s.span)
+            return ast.ArrayOf(element, size, s.span)
+        return self.ident(v, what)
+
     def ident(self, v: JValue, what: str) -> ast.Ident | None:
         s = self.string(v, what)
         if s is None:
@@ -1086,6 +1111,7 @@ _JSON_CHAR = re.compile(
     r"\\u[dD][89abAB][0-9a-fA-F]{2}\\u[dD][c-fC-F][0-9a-fA-F]{2}|\\u[0-9a-fA-F]{4}|\\.|.", re.DOTALL
 )
 _ASSIGNMENT = re.compile(r"\s*([A-Za-z_]\w*)\s*=(?!=)")
+_ELEMENT_ASSIGNMENT = re.compile(r"\s*([A-Za-z_]\w*)\[([^=]*)\]\s*=(?!=)")  # `position[id] = ...`
 # `__out__` as an identifier; string literals are matched (and skipped) so that their text is left alone.
 _OUT = re.compile(r'r?"(?:[^"\\\n]|\\.)*"|(?<![A-Za-z0-9_])(__out__)(?![A-Za-z0-9_])')
 

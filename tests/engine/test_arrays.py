@@ -1,0 +1,137 @@
+"""Arrays: a fixed number of values of one type (`int[6]`) in state and parameters. Elements
+are read as `position[i]` and stored in post-actions as `position[id] = out[0]`; an array
+argument of `pack` gives its elements as that many values; a range bounds each element. An
+index outside the array is refused, never wrapped: at check time when it is a constant, as an
+RdisValueError when it runs, in the runtime and a generated driver alike."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+from typing import Any
+
+import pytest
+from conftest import check_text
+
+from rdisc.diagnostics import Diagnostics
+from rdisc.syntax.parse import parse
+from rdisc.syntax.printer import print_module
+from tests.engine.test_one_engine import ScriptedPort, implementation_of, through_json
+
+ARM = """\
+robot arm { author "tests" }
+const IDS = [1, 2, 3]
+state position: int[3]
+state home: float[3] = [0, 0.5, 1]
+connection bus: serial { baud 57600 }
+primitive sync_goal(goal: int[3] in 0..4095) on bus pack "<BHHBHBHBH" (0x83, 30, 2, IDS[0], goal[0], IDS[1], goal[1],
+                                                                       IDS[2], goal[2])
+primitive goals(goal: int[3]) on bus pack "<B3H" (0x84, goal)
+primitive read_one(id: int) on bus pack "<Bb" (0x02, id) unpack "<H" { position[id] = out[0] }
+primitive read_all() on bus pack "B" (0x05) unpack "<3H" { position[2] = out[0]  position[0] = out[2] }
+interface move_all(goal: int[3]) { sync_goal(goal) }
+interface park() { goals([512, 512, 512]) }
+interface tilt(by: int) { goals([position[0] + by, position[1] + by, position[2] + by]) }
+interface rest() { goals([round(home[0] * 100), round(home[1] * 100), round(home[2] * 100)]) }
+"""
+
+
+@pytest.fixture(scope="module", params=["runtime", "driver"])
+def implementation(request: pytest.FixtureRequest, tmp_path_factory: pytest.TempPathFactory) -> Any:
+    return implementation_of(request.param, ARM, tmp_path_factory.mktemp("arrays"), "arm")
+
+
+def test_an_array_gives_its_elements_to_the_format(implementation: Any) -> None:
+    port = ScriptedPort()
+    with implementation.connect(port, threads=False) as robot:
+        robot.interfaces.move_all([100, 200, 300])
+        assert bytes(port.written).hex(" ") == "83 1e 00 02 00 01 64 00 02 c8 00 03 2c 01"
+        port.written.clear()
+        robot.interfaces.park()
+        assert bytes(port.written).hex(" ") == "84 00 02 00 02 00 02"
+        assert robot.state["position"] == (0, 0, 0)
+        assert robot.state["home"] == (0.0, 0.5, 1.0)
+
+
+def test_post_actions_store_elements(implementation: Any) -> None:
+    port = ScriptedPort(bytes.fromhex("3412" "0100 0200 0300"))
+    with implementation.connect(port, threads=False) as robot:
+        robot.primitives.read_one(1)
+        assert robot.state.position == (0, 0x1234, 0)
+        robot.primitives.read_all()  # out[0] into position[2], out[2] into position[0]: both kept
+        assert robot.state.position == (3, 0x1234, 1)
+        port.written.clear()
+        robot.interfaces.tilt(10)
+        assert bytes(port.written).hex(" ") == "84 0d 00 3e 12 0b 00"
+        port.written.clear()
+        robot.interfaces.rest()
+        assert bytes(port.written).hex(" ") == "84 00 00 32 00 64 00"
+
+
+def test_an_index_outside_the_array_is_refused_when_it_runs(implementation: Any) -> None:
+    port = ScriptedPort(bytes.fromhex("3412" "3412"))
+    with implementation.connect(port, threads=False) as robot:
+        with pytest.raises(ValueError, match=r"^read_one: index 3 is outside position, which has 3 values$"):
+            robot.primitives.read_one(3)
+        with pytest.raises(ValueError, match=r"^read_one: index -1 is outside position"):
+            robot.primitives.read_one(-1)
+        assert robot.state.position == (0, 0, 0)
+
+
+def test_each_element_is_checked_before_anything_is_written(implementation: Any) -> None:
+    port = ScriptedPort()
+    with implementation.connect(port, threads=False) as robot:
+        with pytest.raises(ValueError, match=r"sync_goal: parameter goal\[2\] is 5000, outside 0\.\.4095"):
+            robot.interfaces.move_all([1, 2, 5000])
+        with pytest.raises(TypeError, match=r"move_all: parameter goal must have 3 values, not 2"):
+            robot.interfaces.move_all([1, 2])
+        with pytest.raises(TypeError, match=r"move_all: parameter goal must be a list of 3 ints, not int"):
+            robot.interfaces.move_all(7)
+        assert bytes(port.written) == b""
+
+
+def test_arrays_go_through_json_the_printer_and_dump(tmp_path: Path, rdisc) -> None:
+    compilation, built = through_json(ARM, tmp_path, "arm")
+    assert not compilation.diagnostics.items
+    document = json.loads(built)
+    assert document["constants"] == {"IDS": [1, 2, 3]}
+    assert document["stateVariables"][1] == {"name": "home", "type": "float[3]", "value": "<[0.0, 0.5, 1.0]>"}
+    (read_all,) = [p for p in document["primitives"] if p["name"] == "read_all"]
+    assert read_all["postActions"] == ["position[2] = __out__[0]", "position[0] = __out__[2]"]
+    printed = print_module(parse("arm.rdis", ARM, Diagnostics()))
+    assert "state home: float[3] = [0, 0.5, 1]\n" in printed
+    assert print_module(parse("again.rdis", printed, Diagnostics())) == printed
+    dump = rdisc("dump", tmp_path / "arm.rdis").stdout
+    assert "     5    1  u8                   1\n     6    2  u16 LE               goal[0]\n" in dump
+
+
+HEAD = 'robot a { author "tests" }\nconnection link: serial { baud 9600 }\n'
+REFUSED = {
+    "an open size": ("state p: int[]", "error[E105]: an array's size is given: `int[6]`"),
+    "a size of 0": ("state p: int[0]", "error[E204]: an array's size is a whole number, 1 or more, not 0"),
+    "strings": ("state p: string[2]", "error[E105]: an array holds ints, floats or bools, not `string`"),
+    "a constant index outside": ('state p: int[3]\nprimitive r() on link pack "B" (p[3])',
+                                 "error[E403]: index 3 is outside `p`, which has 3 values"),
+    "too many values for the format": ('state p: int[3]\nprimitive w() on link pack "BB" (1, p)',
+                                       '''error[E302]: `pack "BB"` takes 2 values, but 2 arguments giving 4 values'''),
+    "floats into ints": ("state p: int[3] = [1.5, 2, 3]",
+                         "error[E401]: state variable `p` takes an array int[3], but this is an array float[3]"),
+    "an element of a scalar": ('state p: int\nprimitive r() on link pack "B" (1) unpack "B" { p[0] = out[0] }',
+                               "error[E404]: `p` is not an array: it is an int"),
+    "an empty literal": ("state p: int[2] = []", "error[E404]: an array has one value or more"),
+    "a formatted array": ('state p: int[2]\nprimitive w() on link format "{}" (p)',
+                          "error[E401]: a format field cannot format an array int[2]"),
+    "mixed values": ("state p: int[2] = [True, 1]",
+                     "error[E401]: the values of an array have one type: this is an int, after a bool"),
+    "the whole and an element": (
+        'state p: int[2]\nprimitive r() on link pack "B" (1) unpack "B" { p[0] = out[0]  p = [1, 2] }',
+        "error[E203]: state variable `p` is assigned twice"),
+}
+
+
+@pytest.mark.parametrize(("body", "first_line"), REFUSED.values(), ids=REFUSED.keys())
+def test_what_the_checker_refuses(tmp_path: Path, body: str, first_line: str) -> None:
+    _, result = check_text(tmp_path, HEAD + body + "\n")
+    assert result.returncode == 1
+    errors = [line for line in result.stderr.splitlines() if line.startswith("error[")]
+    assert errors == [first_line], result.stderr
