@@ -42,6 +42,13 @@ __all__ = ["import_driver", "to_python"]
 _PY_TYPES = {Type.INT: "int", Type.FLOAT: "float", Type.BOOL: "bool", Type.STRING: "str", Type.BYTES: "bytes"}
 
 
+def _sample(type_: m.AnyType, comma: str) -> str:
+    """A value of `type_` as an example shows it (an array's elements joined by `comma`)."""
+    if isinstance(type_, m.Array):
+        return "[" + comma.join([_sample(type_.element, comma)] * max(type_.size, 1)) + "]"
+    return {Type.INT: "0", Type.FLOAT: "0.0", Type.BOOL: "False", Type.STRING: '""', Type.BYTES: '""'}[type_]
+
+
 def _py_type(type_: m.AnyType) -> str:
     """The annotation of a value of `type_`: an array is a tuple (a list is taken too)."""
     if isinstance(type_, m.Array):
@@ -332,10 +339,9 @@ class _Driver:
         example = next(iter(self.model.inputs.values()), None)
         if example is not None:
             fields = self.model.adapters[example.adapter].fields
-            samples = {Type.INT: "0", Type.FLOAT: "0.0", Type.BOOL: "False", Type.STRING: '""', Type.BYTES: '""'}
-            arguments = ", ".join(f"{f.name}={samples[f.type]}" for f in fields)
+            arguments = ", ".join(f"{f.name}={_sample(f.type, ', ')}" for f in fields)
             text.append(f"        robot.inputs.{_escape(example.name, {'_robot'})}({arguments})")
-            command += f" --call {example.name}" + "".join(f" {f.name}={samples[f.type]}" for f in fields)
+            command += f" --call {example.name}" + "".join(f" {f.name}={_sample(f.type, ',')}" for f in fields)
         text += ["", "or as a program (`--help` for its options):", "", command + " --watch"]
         return "\n".join(text)
 

@@ -114,7 +114,7 @@ class _Checker:
         if found is None:
             self.d.report(
                 "E105", ref.span, f"unknown type `{ref.text}`", help=suggest(ref.text, _TYPES) or
-                "types are int, float, bool, string and bytes, and arrays of the first three: `int[6]`"
+                "types are int, float, bool, string and bytes, and arrays of the first four: `int[6]`"
             )
         elif found is Type.BYTES and what:
             self.d.report("E105", ref.span, f"{what} cannot be bytes",
@@ -126,8 +126,8 @@ class _Checker:
         element = self.type_name(ref.element, what)
         if element is None:
             return None
-        if element not in (Type.INT, Type.FLOAT, Type.BOOL):
-            self.d.report("E105", ref.element.span, f"an array holds ints, floats or bools, not `{element.value}`")
+        if element is Type.BYTES:
+            self.d.report("E105", ref.element.span, "an array holds ints, floats, bools or strings, not `bytes`")
             return None
         if ref.size is None:
             if not open_size:

@@ -274,8 +274,8 @@ class Typer:
         for item, written in zip(items, e.items):
             if item.type is None:
                 return m.ArrayValue(items, None, e.span)  # type: ignore[arg-type]
-            if item.type not in (Type.INT, Type.FLOAT, Type.BOOL):
-                self.diagnostics.report("E404", written.span, f"an array holds ints, floats or bools, not "
+            if item.type not in (Type.INT, Type.FLOAT, Type.BOOL, Type.STRING):
+                self.diagnostics.report("E404", written.span, f"an array holds ints, floats, bools or strings, not "
                                         f"{describe(item.type)}")
                 return m.ArrayValue(items, None, e.span)  # type: ignore[arg-type]
             joined = unify(element, item.type)

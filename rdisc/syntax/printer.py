@@ -77,7 +77,7 @@ def _code(d: ast.Decl) -> list[str]:
             return _block(f"robot {name.text}", [f"{a.key} {p.quote(a.value)}" for a in attrs])
         case ast.StateDecl(name, type_, init):
             value = "" if init is None else f" = {print_expr(init)}"
-            return [f"state {name.text}: {_type(type_)}{value}"]
+            return [f"state {name.text}: {print_type(type_)}{value}"]
         case ast.ConnectionDecl(name, kind, attrs):
             return _block(f"connection {name.text}: {kind.text}", [_connection_attr(a) for a in attrs])
         case ast.PrimitiveDecl():
@@ -150,11 +150,11 @@ def _block(head: str, lines: list[str]) -> list[str]:
 
 
 def _params(params: tuple[ast.Param, ...]) -> str:
-    return ", ".join(f"{param.name.text}: {_type(param.type)}" + _range(param)
+    return ", ".join(f"{param.name.text}: {print_type(param.type)}" + _range(param)
                      + (f" = {print_expr(param.default)}" if param.default is not None else "") for param in params)
 
 
-def _type(t: ast.TypeRef) -> str:
+def print_type(t: ast.TypeRef) -> str:
     if isinstance(t, ast.ArrayOf):
         return f"{t.element.text}[{'' if t.size is None else print_expr(t.size)}]"
     return t.text
@@ -227,7 +227,7 @@ def _call_stmt(stmt: ast.CallStmt) -> list[str]:
 def _field(f: ast.FieldDecl) -> str:
     unit = "" if f.unit is None else f" unit {p.quote(f.unit)}"
     ros = "" if f.ros is None else f" ros {p.quote(f.ros.value)}"
-    return f"{f.name.text}: {_type(f.type)}{unit}{ros}"
+    return f"{f.name.text}: {print_type(f.type)}{unit}{ros}"
 
 
 # ---- primitives ----------------------------------------------------------------------

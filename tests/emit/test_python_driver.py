@@ -542,6 +542,7 @@ state label: string = "x"
 state flag: bool = False
 state big: float = 1e300
 state last: int = -1
+state joints: float[3] = [0, 1, 2.5]
 
 connection wire: serial {
     baud 115200
@@ -575,6 +576,10 @@ primitive hexed(text: string) on wire format "{}\n" (text) regex r"^(0x[0-9a-f]+
 
 primitive hello_p(n: int) on wire pack "B" (n)
 primitive bye_p() on wire pack "BB" (0, 0)
+primitive many(at: int, goal: int[3] in 0..1000) on wire pack "<B3H" (len(goal), goal) unpack "<2h" {
+    joints[at] = out[0] / 100
+    joints[at + 1] = [out[1], out[0]][at] * 1.5
+}
 primitive ping_p(n: int) on other pack "B" (n)
 
 interface hello(n: int) { hello_p(n) }
@@ -589,6 +594,7 @@ interface work(x: float, y: float, k: int, s: string, f: bool) triggers report {
 }
 
 interface only_report() triggers report { }
+interface spread(k: int) { many(k % 2, [k, k * 2, round(joints[2])]) }
 
 adapter Work { x: float y: float k: int s: string f: bool }
 

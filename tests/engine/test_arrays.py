@@ -109,7 +109,7 @@ HEAD = 'robot a { author "tests" }\nconnection link: serial { baud 9600 }\n'
 REFUSED = {
     "an open size": ("state p: int[]", "error[E105]: an array's size is given: `int[6]`"),
     "a size of 0": ("state p: int[0]", "error[E204]: an array's size is a whole number, 1 or more, not 0"),
-    "strings": ("state p: string[2]", "error[E105]: an array holds ints, floats or bools, not `string`"),
+    "bytes": ("state p: bytes[2]", "error[E105]: a state variable cannot be bytes"),
     "a constant index outside": ('state p: int[3]\nprimitive r() on link pack "B" (p[3])',
                                  "error[E403]: index 3 is outside `p`, which has 3 values"),
     "too many values for the format": ('state p: int[3]\nprimitive w() on link pack "BB" (1, p)',
@@ -135,3 +135,32 @@ def test_what_the_checker_refuses(tmp_path: Path, body: str, first_line: str) ->
     assert result.returncode == 1
     errors = [line for line in result.stderr.splitlines() if line.startswith("error[")]
     assert errors == [first_line], result.stderr
+
+
+JOINTS = """\
+robot joints { author "tests" }
+const NAMES = ["pan", "tilt"]
+state ticks: int[2] = [512, 1023]
+connection link: serial { baud 9600 }
+primitive goto(goal: int[2] in 0..1023) on link pack "<B2H" (0x84, goal)
+interface move(rad: float[2]) triggers joints { goto([round(rad[0] * 325.95) + 512, round(rad[1] * 325.95) + 512]) }
+output joints: JointState { name = NAMES  position = [(ticks[0] - 512) / 325.95, (ticks[1] - 512) / 325.95] }
+input aim: JointState -> move(position)
+"""
+
+
+@pytest.mark.parametrize("kind", ["runtime", "driver"])
+def test_a_joint_state_carries_every_joint(tmp_path: Path, kind: str) -> None:
+    """The standard JointState's arrays take their size from the description: an input of
+    another size is refused before anything is written."""
+    port = ScriptedPort()
+    with implementation_of(kind, JOINTS, tmp_path, "joints").connect(port, threads=False) as robot:
+        delivered: list[dict[str, Any]] = []
+        robot.on_output(delivered.append)
+        robot.inputs.aim(name=["pan", "tilt"], position=[0.5, -1.0])
+        assert bytes(port.written).hex(" ") == "84 a3 02 ba 00"
+        assert delivered == [{"name": "joints", "contents": {"name": ("pan", "tilt"),
+                                                            "position": (0.0, 511 / 325.95)}}]
+        with pytest.raises(ValueError, match=r"^aim: move takes 2 values for rad, not 3$"):
+            robot.inputs.aim(name=["pan", "tilt", "roll"], position=[0.0, 0.0, 0.0])
+        assert bytes(port.written).hex(" ") == "84 a3 02 ba 00"

@@ -16,6 +16,7 @@ import pytest
 from rdisc.diagnostics import Diagnostics
 from rdisc.syntax import ast
 from rdisc.syntax.parse import parse
+from rdisc.syntax.printer import print_type
 
 ROOT = Path(__file__).resolve().parents[2]
 STDLIB = ROOT / "stdlib" / "adapters.rdis"
@@ -23,7 +24,7 @@ EXAMPLES = ROOT / "examples"
 
 # Declarations per kind, by file (paths relative to the repository root).
 EXPECTED_COUNTS: dict[str, dict[str, int]] = {
-    "stdlib/adapters.rdis": {"AdapterDecl": 8},
+    "stdlib/adapters.rdis": {"AdapterDecl": 9},
     "examples/create.rdis": {
         "RobotDecl": 1,
         "StateDecl": 1,
@@ -121,6 +122,10 @@ STANDARD_ADAPTERS = {
         "sensor_msgs/JointState",
         {"name": ("string", None, "name[0]"), "position": ("float", "rad", "position[0]")},
     ),
+    "JointState": (
+        "sensor_msgs/JointState",
+        {"name": ("string[]", None, "name"), "position": ("float[]", "rad", "position")},
+    ),
     "Temperature": (
         "sensor_msgs/Temperature",
         {"temperature": ("float", "degC", "temperature"), "variance": ("float", "degC^2", "variance")},
@@ -135,7 +140,7 @@ def test_standard_adapters() -> None:
     for name, (message, fields) in STANDARD_ADAPTERS.items():
         adapter = adapters[name]
         assert adapter.ros is not None and adapter.ros.value == message, name
-        got = {f.name.text: (f.type.text, f.unit, f.ros.value if f.ros else None) for f in adapter.fields}
+        got = {f.name.text: (print_type(f.type), f.unit, f.ros.value if f.ros else None) for f in adapter.fields}
         assert got == fields, name
 
 
@@ -146,7 +151,7 @@ def test_standard_adapters_are_documented() -> None:
         assert adapter.doc, f"adapter {adapter.name.text} has no /// doc comment"
         for f in adapter.fields:
             assert f.doc, f"field {adapter.name.text}.{f.name.text} has no /// doc comment"
-            if f.type.text in ("int", "float"):
+            if print_type(f.type) in ("int", "float", "int[]", "float[]"):
                 assert f.unit, f"numeric field {adapter.name.text}.{f.name.text} has no unit"
     odometry = _decl(module, ast.AdapterDecl, "Odometry")
     assert ":yaw" in odometry.doc

@@ -175,6 +175,44 @@ def test_a_description_maps_an_output_to_another_message(ros_env: dict[str, str]
             _stop(node)
 
 
+# Arrays through ROS: two "joints" (the Create's voltage and charge sensors, read as one array) published as
+# one sensor_msgs/JointState, and a JointState moving both "wheels" at once.
+JOINTS = """\
+robot joints_create { author "tests" }
+const PACKETS = [22, 25]
+const NAMES = ["volts", "charge"]
+state reading: int[2]
+connection link: serial { baud 57600  threading single at 20 Hz }
+primitive sensor(i: int in 0..1) on link pack "BB" (142, PACKETS[i]) unpack ">H" { reading[i] = out[0] }
+primitive drive(velocity: int, radius: int) on link pack ">Bhh" (137, velocity, radius)
+interface poll() periodic triggers joints { sensor(0)  sensor(1) }
+interface wheels(p: float[2]) { drive(round(p[0] * 1000), round(p[1] * 1000)) }
+output joints: JointState { name = NAMES  position = [reading[0] / 1000, reading[1] / 1000] }
+input move: JointState -> wheels(position)
+"""
+
+
+def test_arrays_travel_as_one_joint_state(ros_env: dict[str, str], tmp_path: Path) -> None:
+    source = tmp_path / "joints.rdis"
+    source.write_text(JOINTS)
+    node_file = tmp_path / "joints_node.py"
+    done = subprocess.run(["python", "-m", "rdisc", "emit-ros", str(source), "-o", str(node_file)], cwd=REPO,
+                          capture_output=True, text=True, check=False)
+    assert done.returncode == 0, done.stderr
+    with CreateEmulator() as device:  # voltage 15000 mV, charge 2000 mAh
+        node = _start_node(node_file, ros_env, device)
+        try:
+            assert _echo(ros_env, "/joints/name", lambda m: m.startswith("-"))[-1] == "- volts - charge"
+            assert _echo(ros_env, "/joints/position", lambda m: m.startswith("["))[-1] == "[15.0, 2.0]"
+            published = subprocess.run(["rostopic", "pub", "-1", "/move", "sensor_msgs/JointState",
+                                         "{name: [left, right], position: [0.2, -0.1]}"], env=ros_env,
+                                        capture_output=True, text=True, timeout=60, check=False)
+            assert published.returncode == 0, published.stderr
+            device.wait_until(lambda: (200, -100) in device.drives(), 10, "the drive command")
+        finally:
+            _stop(node)
+
+
 def test_device_errors_are_published_and_the_node_keeps_serving(ros_env: dict[str, str], node_file: Path) -> None:
     with CreateEmulator(mode="silent") as device:  # never answers: every bumper poll times out
         node = _start_node(node_file, ros_env, device)

@@ -36,7 +36,7 @@ from collections.abc import Callable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any, Protocol
 
-Value = int | float | bool | str | bytes
+Value = int | float | bool | str | bytes | tuple[Any, ...]  # an array is a tuple
 """The value of a state variable, a parameter, a field or an output field."""
 
 StateValues = Mapping[str, Any]
@@ -1094,11 +1094,16 @@ def _accepted(what: str, params: tuple[Param, ...], values: Args) -> Args:
             raise TypeError(f"{what} takes {takes} arguments, {len(values)} given")
         values.extend(p.default for p in left_out)
     for i, param in enumerate(params):
-        if param.size is not None:
-            values[i] = _accept_array(values[i], param, f"{what}: parameter {param.name}")
-        elif type(values[i]) is not param.kind:
-            values[i] = _accept(values[i], param.kind, f"{what}: parameter {param.name}")
+        if type(values[i]) is not param.kind or param.size is not None:
+            values[i] = _accept_param(values[i], param, f"{what}: parameter {param.name}")
     return values
+
+
+def _accept_param(value: Any, param: Param, what: str) -> Any:
+    """A value given for a parameter or an input's field, made its type (TypeError if it cannot be)."""
+    if param.size is not None:
+        return _accept_array(value, param, what)
+    return _accept(value, param.kind, what)
 
 
 def _accept_array(value: Any, param: Param, what: str) -> tuple[Any, ...]:
@@ -1603,12 +1608,16 @@ class Robot:
                 self._write(plan.primitive, data)
                 return
         for i, param in enumerate(plan.fields):
-            if type(values[i]) is not param.kind:
-                values[i] = _accept(values[i], param.kind, f"input {plan.name}: field {param.name}")
+            if type(values[i]) is not param.kind or param.size is not None:
+                values[i] = _accept_param(values[i], param, f"input {plan.name}: field {param.name}")
         try:
             args = plan.args(self._state, values)
         except EVAL_ERRORS as err:
             raise RdisValueError(f"{plan.name}: {err}") from None
+        for param, value in zip(plan.interface.params, args):
+            if param.size and len(value) != param.size:  # an adapter's array, of any size, into one of a fixed size
+                raise RdisValueError(f"{plan.name}: {plan.interface.name} takes {param.size} values for "
+                                     f"{param.name}, not {len(value)}")
         self._interface(plan.interface, args)
 
     def _call_interface(self, plan: Interface, values: Args) -> None:
@@ -2101,7 +2110,10 @@ def parse_ports(given: list[str], device: Device) -> str | dict[str, str] | None
 
 
 def parse_value(text: str) -> Value:
-    """A command-line value: an int, a float, True or False, else the text itself."""
+    """A command-line value: an int, a float, True or False, an array of those written
+    `[1,2,3]`, else the text itself."""
+    if text.startswith("[") and text.endswith("]"):
+        return tuple(parse_value(item.strip()) for item in text[1:-1].split(",")) if text[1:-1].strip() else ()
     for convert in (int, float):
         try:
             number: Value = convert(text)
