@@ -32,12 +32,16 @@ cannot span lines (write `\\n` for a newline)."""),
 A backslash escape that RDIS strings do not know. Known escapes are `\\n`, `\\r`,
 `\\t`, `\\0`, `\\\\`, `\\"`, `\\xHH` and `\\uHHHH`; `\\uD800` to `\\uDFFF` are halves of
 surrogate pairs, not characters, and are refused. Regular expressions are easier to
-write as raw strings, where backslashes are kept as written: r"(\\d+),(\\d+)"."""),
+write as raw strings, where backslashes are kept as written: r"(\\d+),(\\d+)".
+A bytes literal has the same escapes but `\\uHHHH`, which is a character, not a byte.
+Wrong: `b"caf\\u00e9"`. Right: `b"caf\\xc3\\xa9"`."""),
     ("E004", "invalid-literal", """
 A number that cannot be read (a decimal integer with leading zeros, a misplaced
 `_`), or one too large: integers are limited to 64 bits and a sign (at most
 18446744073709551615, `0xFFFF_FFFF_FFFF_FFFF`, either way), in .rdis and JSON
-alike, and floats must be finite."""),
+alike, and floats must be finite. A bytes literal holds ASCII characters and
+escapes: a character past ASCII has no single byte. Wrong: `b"°"`. Right:
+`b"\\xc2\\xb0"` (its UTF-8), or `encode(...)` of an ASCII string."""),
     ("E005", "too-complex", """
 Too much to read: an expression nested deeper than 100 levels, a line longer
 than 65,536 characters, a declaration of more than 20,000 tokens, a description
@@ -81,14 +85,17 @@ cannot name an element, parameter, field or state variable. A primitive whose
 reply is chosen by its tag has no parameter named `tag`: its entries read the
 tag by that name."""),
     ("E105", "unknown-type", """
-Types are `int`, `float`, `bool`, `string` and `bytes`. `bytes` are for
-parameters and replies (a `*` rest, a `Ns` field); a state variable, a constant or
-an adapter field cannot be bytes: keep `len(out[1])` or `byte(out[1], 0)`."""),
+Types are `int`, `float`, `bool`, `string` and `bytes`. An adapter field crosses
+to a framework, which takes text and numbers, so it cannot be bytes. Wrong:
+`adapter Firmware { name: bytes }`. Right: `adapter Firmware { name: string }`,
+with the output giving it `ascii(firmware)` or `hex(firmware)`."""),
     ("E106", "unknown-function", """
 Only the built-in functions can be called in expressions: abs, min, max, round,
 int, float, bool, str, clamp, sqrt, sin, cos, atan2, hypot, len (of a string or
-bytes) and byte (`byte(data, i)`, the i-th byte of bytes as an int). There is no
-way to reach Python's own functions, attributes or modules."""),
+bytes), byte (`byte(data, i)`, the i-th byte of bytes as an int), hex (bytes as
+lowercase hex digits), ascii (ASCII bytes as a string), encode (an ASCII string as
+bytes), pack7 and unpack7 (Firmata's two 7-bit bytes per byte). There is no way
+to reach Python's own functions, attributes or modules."""),
     ("E107", "robot-declaration", """
 A description has exactly one `robot` declaration, in its main file. Imported
 files hold reusable declarations (adapters, primitives, ...) but no robot."""),
@@ -198,17 +205,21 @@ or `int(...)` (towards zero)."""),
 A constant cannot be represented where it goes: 300 does not fit pack code `B`
 (0..255), -1 does not fit `H` (0..65535), "ABCDE" does not fit `4s`, 1e39 does
 not fit `f`; a constant argument is outside its parameter's range (a primitive's
-or a frame's: `frame dxl(id: int in 0..254)` refuses `dxl(300)`); a frame field
+or a frame's: `frame dxl(id: int in 0..254)` refuses `dxl(300)`; bytes by their
+length: `data: bytes in 1..16` refuses `b""`); a frame field
 computed from constant arguments does not fit its code. At run time the same is
 an `RdisValueError`, raised before anything is written."""),
     ("E404", "invalid-operation", """
 The operator or function does not apply to these types: arithmetic needs
-numbers, bitwise operators and shifts need integers, `and`/`or`/`not` and the
-condition of `x if c else y` need booleans."""),
+numbers (`+` also joins two strings or two bytes), bitwise operators and shifts
+need integers, `and`/`or`/`not` and the condition of `x if c else y` need
+booleans, `hex`, `ascii`, `pack7` and `unpack7` take bytes and `encode` a string.
+Wrong: `b"\\x01" + "a"`. Right: `b"\\x01" + encode("a")`."""),
     ("E405", "evaluation-error", """
 A constant expression cannot be evaluated: a division by zero, a power, shift or
-product whose result would pass 4096 bits, a float result too large for a float;
-or the value of a constant or a state variable does not fit the integers rdisc
+product whose result would pass 4096 bits, a float result too large for a float,
+a string or bytes longer than 1 MiB, `ascii` of bytes or `encode` of a string that
+is not ASCII, `unpack7` of bytes that are not pairs of 7-bit bytes; or the value of a constant or a state variable does not fit the integers rdisc
 keeps: 64 bits and a sign. (Inside an expression a result may pass 64 bits, as
 `2 ** 64 - 1` does on its way; what is kept may not.) Wrong: `const MASK = 1 << 64`.
 Right: `const MASK = (1 << 64) - 1`."""),

@@ -41,9 +41,9 @@ def _document(model: m.Model) -> JsonObject:
         ("description", robot.description),
         ("version", robot.version),
         ("doc", robot.doc),
-        ("constants", dict(model.constants) or None),
+        ("constants", {name: _value(v) for name, v in model.constants.items()} or None),
         ("enums", dict(model.enums) or None),
-        ("tables", {t.name: [[k, v] for k, v in t.entries] for t in model.tables.values()} or None),
+        ("tables", {t.name: [[k, _value(v)] for k, v in t.entries] for t in model.tables.values()} or None),
         ("stateVariables", [_state(s) for s in model.states.values()]),
         ("connections", connections),
         ("frames", [_frame(f) for f in model.frames.values()] or None),
@@ -58,6 +58,11 @@ def _document(model: m.Model) -> JsonObject:
 def _object(*members: tuple[str, Any]) -> JsonObject:
     """An object of the members that are not None, in the order given."""
     return {key: value for key, value in members if value is not None}
+
+
+def _value(value: m.Value) -> m.Value:
+    """A constant as a JSON value; bytes, which JSON has not, as an embedded literal `"<b\"...\">"`."""
+    return _embedded(m.Const(value, Type.BYTES)) if isinstance(value, bytes) else value
 
 
 def _number(value: float) -> float | int:
@@ -326,6 +331,8 @@ def _const(value: m.Value, type_: m.AnyType) -> p.Printed:
             return p.literal(bool(value))
         case Type.STRING:
             return p.literal(str(value))
+        case Type.BYTES:
+            return p.literal(bytes(value))  # type: ignore[arg-type]
         case _:
             _unreachable(type_)
 

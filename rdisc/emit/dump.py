@@ -77,11 +77,19 @@ def _payload_rows(encoding: m.Pack | m.Format, args: tuple[m.Expr, ...]) -> list
     match encoding:
         case m.Pack(format=fmt):
             slots = formats.struct_layout(fmt).slots
-            return [(_size(fmt, s.code), _kind(fmt, s.code), expression_text(a)) for s, a in zip(slots, m.spread(args))]
+            return [_constant_rest(a) or (_size(fmt, s.code), _kind(fmt, s.code), expression_text(a))
+                    for s, a in zip(slots, m.spread(args))]
         case m.Format(template=template):
             shown = ", ".join(expression_text(a) for a in args)
             return [(None, "text", f'"{template}"' + (f" ({shown})" if shown else ""))]
     raise AssertionError(encoding)
+
+
+def _constant_rest(arg: m.Expr) -> Row | None:
+    """The row of constant bytes given for a `*` rest: their size is known, and their bytes."""
+    if not (isinstance(arg, m.Const) and isinstance(arg.value, bytes) and arg.value):
+        return None
+    return len(arg.value), "bytes (the rest)", " ".join(f"{b:02X}" for b in arg.value)
 
 
 def _code_format(fmt: str, code: str) -> str:

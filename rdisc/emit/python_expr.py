@@ -22,6 +22,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import NoReturn
 
+from rdisc.emit.python_support import CARRIED
 from rdisc.semantics import model as m
 from rdisc.semantics.model import Scope, Type
 from rdisc.syntax import precedence as p
@@ -159,6 +160,8 @@ def literal(value: m.Value, type_: m.AnyType) -> Py:
             return float_literal(float(value))
         case Type.STRING:
             return Py(quoted(str(value)), p.ATOM)
+        case Type.BYTES:
+            return Py(quoted(bytes(value)), p.ATOM)  # type: ignore[arg-type]
     _unreachable(type_)
 
 
@@ -253,6 +256,11 @@ class Compiler:
         self.helpers.add(name)
         return call(name, args)
 
+    def carried(self, name: str, args: list[Py]) -> Py:
+        """A call of a function of rdisc.semantics.operators that drivers carry as it is written there."""
+        self.helpers.add(CARRIED)
+        return call(name, args)
+
     def binary(self, op: str, left: m.Expr, right: m.Expr, type_: Type, names: Mapping[str, str],
                finite: bool) -> Py:
         if op in CHECKED_FLOAT and type_ is Type.FLOAT:
@@ -265,8 +273,8 @@ class Compiler:
                 return binary(op, self.expr(left, names, True), self.expr(right, names))
             return self.helper(CHECKED_FLOAT[op], [self.expr(left, names), self.expr(right, names)])
         a, b = self.expr(left, names), self.expr(right, names)
-        if type_ is Type.STRING and op == "+":
-            return self.helper("_concat", [a, b])
+        if type_ in (Type.STRING, Type.BYTES) and op == "+":
+            return self.carried("_concat", [a, b])
         if op == "**":
             return self.helper("_pow", [a, b])
         if op == "*" and type_ is Type.INT:
@@ -299,6 +307,8 @@ class Compiler:
                 return call("len", [self.expr(args[0], names)])
             case "byte":
                 return self.helper("_byte", [self.expr(a, names) for a in args])
+            case "hex" | "ascii" | "encode" | "pack7" | "unpack7":
+                return self.carried(f"_{func}", [self.expr(args[0], names)])
             case "sqrt" | "sin" | "cos" | "atan2" | "hypot":
                 return call(f"math.{func}", [self.expr(a, names) for a in args])
         raise ValueError(f"unknown function {func!r}")

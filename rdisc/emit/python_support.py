@@ -6,6 +6,22 @@ are, after the engine's text (`engine_text`), which every driver carries verbati
 
 from __future__ import annotations
 
+from pathlib import Path
+
+from rdisc.semantics import operators
+
+CARRIED = "strings and bytes"  # the helper that is the part of rdisc.semantics.operators drivers carry
+_CARRIED_FROM = "_MAX_TEXT = "
+_CARRIED_TO = "# ---- end of what drivers carry ----"
+
+
+def carried_text() -> str:
+    """The functions on strings and bytes of rdisc.semantics.operators, as written there: what
+    a driver whose expressions use one carries, byte for byte."""
+    text = Path(operators.__file__).read_text(encoding="utf-8")
+    return text[text.index(_CARRIED_FROM) : text.index(_CARRIED_TO)].rstrip("\n")
+
+
 # Expression helpers: each one the same operation as rdisc.semantics.operators
 # defines, written out so that the driver needs nothing of rdisc. Only the
 # helpers a description uses are written into its driver.
@@ -38,12 +54,7 @@ def _div(a: float, b: float) -> float:
     if result - result != 0.0 and math.isinf(result) and not (math.isinf(a) or math.isinf(b)):
         raise ArithmeticError("the result is too large for a float")
     return result''',
-    "_concat": '''\
-def _concat(a: str, b: str) -> str:
-    """a + b for strings, at most a mebibyte of text."""
-    if len(a) + len(b) > 1 << 20:
-        raise ValueError(f"string longer than {1 << 20} characters")
-    return a + b''',
+    CARRIED: carried_text(),
     "_pow": '''\
 def _pow(a: Any, b: Any) -> Any:
     """a ** b, bounded: an int result stays within 4096 bits, a float one must be real and finite."""
@@ -102,8 +113,6 @@ def _byte(data: bytes, index: int) -> int:
 def engine_text() -> str:
     """The text of rdisc.runtime.engine from its `from __future__` line to its end: what
     every driver carries, byte for byte."""
-    from pathlib import Path
-
     from rdisc.runtime import engine
 
     text = Path(engine.__file__).read_text(encoding="utf-8")

@@ -148,7 +148,9 @@ def message_bytes(prim: m.Primitive, frames: dict[str, m.Frame] | None = None) -
         framing = frame_bytes(frame.request) + (frame_bytes(frame.reply) if prim.expects_reply(frames or {}) else 0)
     match prim.encoding:
         case m.Pack(format=fmt):
-            request = formats.struct_layout(fmt).size
+            rest = prim.args[-1] if prim.args else None  # constant bytes for a `*` rest have their size
+            extra = len(rest.value) if isinstance(rest, m.Const) and isinstance(rest.value, bytes) else 0
+            request = formats.struct_layout(fmt).size + extra
         case m.Format(template=template):
             values = [a.value if isinstance(a, m.Const) else _SAMPLE[a.type] for a in prim.args]
             request = len(template.format(*values).encode("utf-8"))

@@ -105,9 +105,9 @@ class _Checker:
     # -- shared pieces ---------------------------------------------------------------------
 
     def type_name(self, ref: ast.TypeRef, what: str = "", open_size: bool = False) -> m.AnyType | None:
-        """A type by name; `what` names a place that holds values over time, where bytes
-        (a parameter's or a reply's variable-length data) cannot go. An array's size is a
-        constant; only an adapter's field (`open_size`) leaves it out."""
+        """A type by name; `what` names a place that crosses to a framework (an adapter's
+        field), where bytes cannot go. An array's size is a constant; only an adapter's field
+        (`open_size`) leaves it out."""
         if isinstance(ref, ast.ArrayOf):
             return self.array_type(ref, what, open_size)
         found = _TYPES.get(ref.text)
@@ -118,7 +118,7 @@ class _Checker:
             )
         elif found is Type.BYTES and what:
             self.d.report("E105", ref.span, f"{what} cannot be bytes",
-                          help="bytes are for parameters and replies: store `len(out[1])` or `byte(out[1], 0)`")
+                          help="give the framework text or numbers: `hex(firmware)`, `len(firmware)`")
             return None
         return found
 
@@ -178,8 +178,8 @@ class _Checker:
             return None
         constant = m.coerce(constant, type_)
         for item in constant if isinstance(constant, tuple) else (constant,):
-            if low is not None and high is not None and isinstance(item, (int, float)) and not low <= item <= high:
-                self.d.report("E403", p.default.span, f"{shown(item)} is outside the range of parameter "
+            if low is not None and high is not None and not _in_range(item, low, high):
+                self.d.report("E403", p.default.span, f"{_ranged(item)} is outside the range of parameter "
                               f"`{p.name.text}`", label=f"in {low!r}..{high!r}")
                 return None
         return constant  # type: ignore[return-value]
@@ -277,9 +277,9 @@ class _Checker:
         for arg, expr, param in zip(args, call.args, params):
             self.flow(arg, param.type, expr.span, f"parameter `{param.name}` of {kind} `{name}`")
             value = self.typer.constant(arg)
-            if (param.low is not None and isinstance(value, (int, float)) and not isinstance(value, bool)
-                    and not param.low <= value <= param.high):  # type: ignore[operator]
-                self.d.report("E403", expr.span, f"{shown(value)} is outside the range of parameter "
+            if param.low is not None and param.high is not None and value is not None \
+                    and not _in_range(value, param.low, param.high):
+                self.d.report("E403", expr.span, f"{_ranged(value)} is outside the range of parameter "
                               f"`{param.name}` of {kind} `{name}`", label=f"in {param.range_text()}")
         return args
 
@@ -404,7 +404,7 @@ class _Checker:
         return m.Adapter(decl.name.text, tuple(fields), message, id(decl) in self.s.standard, decl.doc, decl.span)
 
     def state(self, decl: ast.StateDecl) -> m.StateVariable:
-        type_ = self.type_name(decl.type, "a state variable")
+        type_ = self.type_name(decl.type)
         initial: object = type_.default() if type_ else None
         if decl.init is not None:
             errors = self.d.error_count
@@ -1181,6 +1181,23 @@ class _Checker:
             if name not in self.typer.reads and name not in written and known and id(decl) in self.main_decls:
                 self.d.report("W103", decl.name.span, f"state variable `{name}` is never used",
                               help="read it in an expression, write it in a post-action, or remove it")
+
+
+def _in_range(value: object, low: float, high: float) -> bool:
+    """Whether a constant is within a parameter's range: a number by its value, bytes by their
+    length (a value of another type is reported as such, not here)."""
+    if isinstance(value, bytes):
+        return low <= len(value) <= high
+    if isinstance(value, (int, float)) and not isinstance(value, bool):
+        return low <= value <= high
+    return True
+
+
+def _ranged(value: object) -> str:
+    """A constant as a range message names it: bytes by their length."""
+    if isinstance(value, bytes):
+        return f"{shown(value)} ({len(value)} byte{'s' if len(value) != 1 else ''})"
+    return shown(value)
 
 
 def _count(n: int, noun: str) -> str:

@@ -2,7 +2,8 @@
 
 One definition, used by constant folding in the checker and by the runtime's
 interpreter. Every operation that could be made to eat memory or time (powers,
-shifts, string building) is bounded here and raises `EvalError` instead.
+shifts, string and bytes building) is bounded here and raises `EvalError` (or
+`ValueError`, in the part a generated driver carries) instead.
 """
 
 from __future__ import annotations
@@ -13,10 +14,10 @@ from collections.abc import Callable
 from typing import Any
 
 from rdisc.limits import MAX_INT
+from rdisc.syntax.precedence import quote_bytes
 
 MAX_SHIFT = 1024
 MAX_RESULT_BITS = 4096  # of an int result inside an expression (so that no chain of operations can explode)
-MAX_STRING = 1 << 20
 
 
 class EvalError(ArithmeticError):
@@ -24,8 +25,8 @@ class EvalError(ArithmeticError):
 
 
 def shown(value: Any) -> str:
-    """A value as a message shows it: huge numbers abbreviated, strings quoted."""
-    text = repr(value)
+    """A value as a message shows it: huge numbers abbreviated, strings quoted, bytes as written."""
+    text = quote_bytes(value) if isinstance(value, bytes) else repr(value)
     if isinstance(value, int) and len(text) > 24:
         return f"a {value.bit_length()}-bit integer"
     return text if len(text) <= 40 else text[:37] + "..."
@@ -96,9 +97,7 @@ def _mod(a: Any, b: Any) -> Any:
 
 
 def _add(a: Any, b: Any) -> Any:
-    if isinstance(a, str) and len(a) + len(b) > MAX_STRING:
-        raise EvalError(f"string longer than {MAX_STRING} characters")
-    return a + b
+    return _concat(a, b) if isinstance(a, (str, bytes)) else a + b
 
 
 def _checked_float(f: Callable[..., Any]) -> Callable[..., Any]:
@@ -192,6 +191,76 @@ def _byte(data: Any, index: Any) -> int:
     return int(data[index])
 
 
+# ---- strings and bytes: carried by every driver that uses them ----------------------------------
+#
+# From here to the end marker, the text is copied as it is into a generated driver
+# (rdisc.emit.python_support), so the runtime, the checker and every driver compute these
+# with the same code. It uses only builtins and raises ValueError.
+
+_MAX_TEXT = 1 << 20  # characters of a string, or bytes of bytes, that an expression may build
+
+
+def _concat(a: Any, b: Any) -> Any:
+    """`a + b` of two strings or two bytes, at most _MAX_TEXT long: no chain grows one without bound."""
+    if len(a) + len(b) > _MAX_TEXT:
+        raise ValueError(f"string longer than {_MAX_TEXT} characters" if isinstance(a, str)
+                         else f"more than {_MAX_TEXT} bytes")
+    return a + b
+
+
+def _hex(data: bytes) -> str:
+    """`hex(b)`: the bytes as lowercase hex digits, two a byte: "0a1b"."""
+    if 2 * len(data) > _MAX_TEXT:
+        raise ValueError(f"hex(): {len(data)} bytes make a string longer than {_MAX_TEXT} characters")
+    return data.hex()
+
+
+def _ascii(data: bytes) -> str:
+    """`ascii(b)`: the text of ASCII bytes; a byte past 0x7f is refused, never guessed at."""
+    for i, byte in enumerate(data):
+        if byte > 0x7F:
+            raise ValueError(f"ascii(): byte {i} is 0x{byte:02x}, not ASCII")
+    return data.decode("ascii")
+
+
+def _encode(text: str) -> bytes:
+    """`encode(s)`: the bytes of an ASCII string; a character past U+007F is refused."""
+    for i, ch in enumerate(text):
+        if ord(ch) > 0x7F:
+            raise ValueError(f"encode(): character {i} is {ch!r}, not ASCII")
+    return text.encode("ascii")
+
+
+def _pack7(data: bytes) -> bytes:
+    """`pack7(b)`: Firmata's 7-bit form of bytes (STRING_DATA and other sysex payloads): each
+    byte as two bytes of 7 bits, the low 7 bits first, then bit 7."""
+    if 2 * len(data) > _MAX_TEXT:
+        raise ValueError(f"pack7(): {len(data)} bytes make more than {_MAX_TEXT} bytes")
+    out = bytearray()
+    for byte in data:
+        out += bytes((byte & 0x7F, byte >> 7 & 0x7F))
+    return bytes(out)
+
+
+def _unpack7(data: bytes) -> bytes:
+    """`unpack7(b)`: bytes from Firmata's 7-bit pairs, low bits first; an odd length, a byte with
+    bit 7 set or a pair past 255 is refused."""
+    if len(data) % 2:
+        raise ValueError(f"unpack7(): an odd number of bytes ({len(data)}), not pairs of 7-bit bytes")
+    out = bytearray()
+    for i in range(0, len(data), 2):
+        low, high = data[i], data[i + 1]
+        if low > 0x7F or high > 0x7F:
+            raise ValueError(f"unpack7(): byte {i if low > 0x7F else i + 1} has bit 7 set, not a 7-bit byte")
+        if high > 1:
+            raise ValueError(f"unpack7(): bytes {i} and {i + 1} make {low | high << 7}, more than a byte")
+        out.append(low | high << 7)
+    return bytes(out)
+
+
+# ---- end of what drivers carry ----
+
+
 FUNCTIONS: dict[str, Callable[..., Any]] = {
     "abs": abs,
     "min": min,
@@ -209,4 +278,9 @@ FUNCTIONS: dict[str, Callable[..., Any]] = {
     "hypot": _math(math.hypot),
     "len": len,
     "byte": _byte,
+    "hex": _hex,
+    "ascii": _ascii,
+    "encode": _encode,
+    "pack7": _pack7,
+    "unpack7": _unpack7,
 }

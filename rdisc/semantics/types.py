@@ -47,6 +47,11 @@ ARITY = {
     "hypot": (2, 2),
     "len": (1, 1),
     "byte": (2, 2),
+    "hex": (1, 1),
+    "ascii": (1, 1),
+    "encode": (1, 1),
+    "pack7": (1, 1),
+    "unpack7": (1, 1),
 }
 
 
@@ -124,6 +129,8 @@ class Typer:
                 return self._const(m.Const(e.value, Type.FLOAT, e.span))
             case ast.StrLit():
                 return self._const(m.Const(e.value, Type.STRING, e.span))
+            case ast.BytesLit():
+                return self._const(m.Const(e.value, Type.BYTES, e.span))
             case ast.Ref():
                 return self._ref(e, env)
             case ast.Index():
@@ -348,12 +355,12 @@ class Typer:
                 ok = a is Type.INT and b is Type.INT
                 result = Type.INT if ok else None
                 need = f"`{op}` needs two ints"
-            elif op == "+" and a == b == Type.STRING:
-                ok, result, need = True, Type.STRING, ""
+            elif op == "+" and a == b and a in (Type.STRING, Type.BYTES):
+                ok, result, need = True, a, ""
             else:  # arithmetic
                 ok = a in NUMERIC and b in NUMERIC
                 result = (Type.FLOAT if op == "/" else unify(a, b)) if ok else None
-                need = f"`{op}` needs two numbers"
+                need = "`+` needs two numbers, two strings or two bytes" if op == "+" else f"`{op}` needs two numbers"
             if not ok:
                 self.diagnostics.report(
                     "E404", e.span, f"{need}, not {describe(a)} and {describe(b)}", label="these operands"
@@ -449,6 +456,12 @@ class Typer:
                     self.diagnostics.report("E404", e.span, "`byte` takes bytes and an int index: `byte(out[1], 0)`")
                     return None
                 return Type.INT
+            case "hex" | "ascii":
+                return Type.STRING if need("bytes", (Type.BYTES,)) else None
+            case "pack7" | "unpack7":
+                return Type.BYTES if need("bytes", (Type.BYTES,)) else None
+            case "encode":
+                return Type.BYTES if need("a string", (Type.STRING,)) else None
             case _:  # sqrt sin cos atan2 hypot
                 return Type.FLOAT if need("numbers", NUMERIC) else None
 
@@ -458,10 +471,10 @@ class Typer:
             return node
         try:
             value = compute(*(self.constant(o) for o in operands))
-        except EvalError as err:
+        except (EvalError, ValueError) as err:  # an operation refused, saying why
             self.diagnostics.report("E405", node.span, str(err))
             return node
-        except (ArithmeticError, ValueError, TypeError) as err:
+        except (ArithmeticError, TypeError) as err:
             self.diagnostics.report("E405", node.span, f"cannot evaluate: {err}")
             return node
         self._constants[id(node)] = (node, value)

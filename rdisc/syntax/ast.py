@@ -44,6 +44,14 @@ class StrLit:
 
 
 @dataclass(frozen=True, slots=True)
+class BytesLit:
+    """`b"\\x01\\x02"`: constant bytes, written with ASCII characters and escapes."""
+
+    value: bytes
+    span: Span = _span
+
+
+@dataclass(frozen=True, slots=True)
 class BoolLit:
     value: bool
     span: Span = _span
@@ -117,7 +125,8 @@ class Member:
     span: Span = _span
 
 
-Expr = IntLit | FloatLit | StrLit | BoolLit | Ref | Index | ArrayLit | Unary | BinOp | Conditional | CallExpr | Member
+Expr = (IntLit | FloatLit | StrLit | BytesLit | BoolLit | Ref | Index | ArrayLit | Unary | BinOp | Conditional
+        | CallExpr | Member)
 
 
 # ---- pieces shared by declarations ------------------------------------------

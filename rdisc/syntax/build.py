@@ -4,13 +4,18 @@ from __future__ import annotations
 
 import math
 import re
+from collections.abc import Callable
 from functools import lru_cache
+from typing import TYPE_CHECKING
 
 from rdisc.diagnostics import Diagnostics, abbreviate
 from rdisc.limits import MAX_INT
 from rdisc.source import Span
 from rdisc.syntax import ast
 from rdisc.syntax.precedence import BINARY, COMPARISON, OR, UNARY_OPERATORS
+
+if TYPE_CHECKING:
+    from lark import Token
 
 MAX_INT_DIGITS = 64
 MAX_EXPR_DEPTH = 100
@@ -52,6 +57,31 @@ def decode_string(raw: str, report=None) -> str:
         return m.group()
 
     return _ESCAPE.sub(replace, body)
+
+
+_BYTES_PART = re.compile(r"\\(x[0-9a-fA-F]{2}|u[0-9a-fA-F]{4}|.)|[^\x00-\x7f]", re.DOTALL)
+
+
+def decode_bytes(raw: str, report: Callable[[int, int, str, bool], None] | None = None) -> bytes:
+    """The value of a bytes token `b"..."`: ASCII characters, and the escapes strings have but
+    `\\u` (a byte each; `\\xHH` any byte). `report(offset, length, text, escape)` is called for
+    each escape that is not a byte (`escape` True) and each character that is not ASCII."""
+
+    def replace(m: re.Match[str]) -> str:
+        esc = m.group(1)
+        if esc is None:  # a character that is not ASCII
+            if report is not None:
+                report(2 + m.start(), 1, m.group(), False)
+            return ""
+        if esc in _SIMPLE_ESCAPES:
+            return _SIMPLE_ESCAPES[esc]
+        if esc[0] == "x" and len(esc) > 1:
+            return chr(int(esc[1:], 16))
+        if report is not None:
+            report(2 + m.start(), len(m.group()), m.group(), True)
+        return ""
+
+    return _BYTES_PART.sub(replace, raw[2:-1]).encode("latin-1")
 
 
 def _int_value(text: str) -> int | None:
@@ -178,6 +208,22 @@ class Builder:
             )
 
         return ast.StrLit(decode_string(str(token), report), span)
+
+    def bytes_literal(self, token: Token) -> ast.BytesLit:
+        span = self.token_span(token)
+
+        def report(offset: int, length: int, text: str, escape: bool) -> None:
+            at = Span(self.path, span.start + offset, span.start + offset + length)
+            if escape:
+                self.diagnostics.report("E003", at, f"unknown escape `{text}` in bytes",
+                                        help="bytes are ASCII characters and the escapes `\\xHH`, `\\n`, `\\r`, "
+                                        "`\\t`, `\\0`, `\\\\` and `\\\"`")
+                return
+            utf8 = "".join(f"\\x{b:02x}" for b in text.encode("utf-8"))
+            self.diagnostics.report("E004", at, f"`{text}` in bytes is not ASCII",
+                                    help=f"write the bytes it stands for as escapes: `{utf8}` in UTF-8")
+
+        return ast.BytesLit(decode_bytes(str(token), report), span)
 
 
 @lru_cache(maxsize=1)
@@ -490,6 +536,9 @@ def _transformer_class():
 
         def str_lit(self, meta, c):
             return self.b.string(c[0])
+
+        def bytes_lit(self, meta: object, c: list[Token]) -> ast.BytesLit:
+            return self.b.bytes_literal(c[0])
 
         def bool_lit(self, meta, c):
             return ast.BoolLit(str(c[0]) == "True", self.b.span(meta))

@@ -12,6 +12,7 @@ _WORDS = {
     "FLOAT": "a number",
     "STRING": "a string",
     "RAW_STRING": "a string",
+    "BYTES_STRING": "a bytes literal",
     "TRUE": "`True`",
     "FALSE": "`False`",
     "NOT": "`not`",
@@ -31,7 +32,8 @@ _WORDS = {
 _DECLARATIONS = {"IMPORT", "ROBOT", "STATE", "CONNECTION", "PRIMITIVE", "INTERFACE", "ADAPTER", "INPUT", "OUTPUT"}
 # Terminals that can only continue an expression: listed as one phrase.
 _OPERATORS = {"POW", "SHIFT_OP", "COMP_OP", "MUL_OP", "ADD_OP", "BAR", "CARET", "AMP", "OR", "AND", "IF"}
-_EXPRESSION_START = {"INT", "FLOAT", "STRING", "RAW_STRING", "TRUE", "FALSE", "NOT", "UNARY_OP"}
+_EXPRESSION_START = {"INT", "FLOAT", "STRING", "RAW_STRING", "BYTES_STRING", "TRUE", "FALSE", "NOT",
+                     "UNARY_OP"}
 
 
 def _phrase(terminal: str) -> str | None:
@@ -71,6 +73,8 @@ def _found(token) -> str:
     text = str(token)
     if token.type in ("STRING", "RAW_STRING"):
         return f"the string {text}" if len(text) <= 30 else "a string"
+    if token.type == "BYTES_STRING":
+        return f"the bytes {text}" if len(text) <= 30 else "a bytes literal"
     if len(text) > 30:
         text = text[:27] + "..."
     return f"`{text}`"

@@ -337,7 +337,7 @@ _OUTPUT = ("name", "adapter", "returns", "doc")
 
 DEFAULT_BAUD = 9600  # thesis Appendix A; written out, so the .rdis says what the robot gets
 DEFAULT_FREQUENCY_HZ = 10
-_DEFAULTS: dict[str, Any] = {"int": 0, "float": 0.0, "bool": False, "string": ""}
+_DEFAULTS: dict[str, Any] = {"int": 0, "float": 0.0, "bool": False, "string": "", "bytes": b""}
 _NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
 _ARRAY_TYPE = re.compile(r"([A-Za-z][A-Za-z0-9_]*)\[([0-9]{0,6})\]")
 
@@ -1177,6 +1177,8 @@ def _literal(value: Any, span: Span) -> ast.Expr:
         return ast.IntLit(value, span)
     if isinstance(value, float):
         return ast.FloatLit(value, span)
+    if isinstance(value, bytes):
+        return ast.BytesLit(value, span)
     return ast.StrLit(value, span)
 
 

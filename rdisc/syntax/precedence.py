@@ -112,13 +112,15 @@ def index(base: str, at: Printed) -> Printed:
     return Printed(f"{base}[{at.at(CONDITIONAL)}]", ATOM)
 
 
-def literal(value: float | str) -> Printed:  # bool and int included
+def literal(value: float | str | bytes) -> Printed:  # bool and int included
     """A constant as the grammar reads it back: floats always with `.` or an
     exponent, negative numbers as a unary minus, non-finite floats through `float`."""
     if isinstance(value, bool):
         return Printed("True" if value else "False", ATOM)
     if isinstance(value, str):
         return Printed(quote(value), ATOM)
+    if isinstance(value, bytes):
+        return Printed(quote_bytes(value), ATOM)
     if isinstance(value, float) and math.isnan(value):
         return Printed('float("nan")', ATOM)
     magnitude = abs(value)
@@ -147,3 +149,12 @@ def quote(value: str) -> str:
             out.append(ch)
     out.append('"')
     return "".join(out)
+
+
+def quote_bytes(value: bytes) -> str:
+    """A bytes literal `b"..."` that reads back as `value`: text (printable ASCII and the usual
+    escapes) as text, `b"AT\\r\\n"`; any other bytes all as `\\xHH`, `b"\\xf0\\x79"`, not a
+    mixture that reads as neither."""
+    if all(0x20 <= byte < 0x7F or byte in b"\n\r\t" for byte in value):
+        return 'b"' + "".join(_ESCAPES.get(chr(byte), chr(byte)) for byte in value) + '"'
+    return 'b"' + "".join(f"\\x{byte:02x}" for byte in value) + '"'

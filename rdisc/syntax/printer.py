@@ -33,7 +33,7 @@ def print_expr(expr: ast.Expr) -> str:
 
 def _expr(e: ast.Expr) -> p.Printed:
     match e:
-        case ast.IntLit(value) | ast.BoolLit(value) | ast.StrLit(value):
+        case ast.IntLit(value) | ast.BoolLit(value) | ast.StrLit(value) | ast.BytesLit(value):
             return p.literal(value)
         case ast.FloatLit(value):
             return p.literal(float(value))
