@@ -5,6 +5,8 @@ reply, frames included. Sizes that depend on the values (text) show as `n`.
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 from rdisc.emit.canonical import expression_text
 from rdisc.semantics import formats
 from rdisc.semantics import model as m
@@ -75,14 +77,44 @@ def _kind(fmt: str, code: str) -> str:
 
 def _payload_rows(encoding: m.Pack | m.Format, args: tuple[m.Expr, ...]) -> list[Row]:
     match encoding:
-        case m.Pack(format=fmt):
-            slots = formats.struct_layout(fmt).slots
-            return [_constant_rest(a) or (_size(fmt, s.code), _kind(fmt, s.code), expression_text(a))
-                    for s, a in zip(slots, m.spread(args))]
+        case m.Pack(format=fmt, grouped=grouped):
+            values = [v for i, a in enumerate(args) for v in ((a,) if i in grouped else m.spread((a,)))]
+            return _rows(fmt, lambda j, k: _value_text(values[j], k), [_constant_rest(v) for v in values])
         case m.Format(template=template):
             shown = ", ".join(expression_text(a) for a in args)
             return [(None, "text", f'"{template}"' + (f" ({shown})" if shown else ""))]
     raise AssertionError(encoding)
+
+
+def _rows(fmt: str, text: Callable[[int, int | None], str], given: list[Row | None] | None = None) -> list[Row]:
+    """One row a value of the format, in wire order: a repeated group's arrays element by
+    element (`text(slot, element)`: `goal[0]`, `goal[1]`, ...); `given`, a value's own row
+    where it has one."""
+    layout = formats.struct_layout(fmt)
+    groups = {first: (codes, count) for first, codes, count in layout.groups}
+    rows: list[Row] = []
+    at = 0
+    while at < len(layout.slots):
+        if at in groups:
+            codes, count = groups[at]
+            for element in range(count):
+                rows += [(_size(fmt, layout.slots[j].code), _kind(fmt, layout.slots[j].code), text(j, element))
+                         for j in range(at, at + codes)]
+            at += codes
+            continue
+        code = layout.slots[at].code
+        rows.append((given[at] if given else None) or (_size(fmt, code), _kind(fmt, code), text(at, None)))
+        at += 1
+    return rows
+
+
+def _value_text(value: m.Expr, element: int | None) -> str:
+    """A format value as a row shows it, or one element of it (a constant's by its value)."""
+    if element is None:
+        return expression_text(value)
+    if isinstance(value, m.Const) and isinstance(value.type, m.Array):
+        return expression_text(m.Const(value.value[element], value.type.element))  # type: ignore[index]
+    return expression_text(m.Element(value, m.Const(element, m.Type.INT), value.type.element))  # type: ignore[union-attr]
 
 
 def _constant_rest(arg: m.Expr) -> Row | None:
@@ -100,8 +132,7 @@ def _code_format(fmt: str, code: str) -> str:
 def _reply_rows(decoding: m.Unpack | m.Regex | None) -> list[Row]:
     match decoding:
         case m.Unpack(format=fmt):
-            slots = formats.struct_layout(fmt).slots
-            return [(_size(fmt, s.code), _kind(fmt, s.code), f"out[{i}]") for i, s in enumerate(slots)]
+            return _rows(fmt, lambda j, k: f"out[{j}]" if k is None else f"out[{j}][{k}]")
         case m.Regex(pattern=pattern):
             return [(None, "text", f"regex {pattern!r}")]
         case None:

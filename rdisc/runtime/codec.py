@@ -21,7 +21,7 @@ def encoder(encoding: m.Pack | m.Format) -> engine.Pack | engine.Format:
     match encoding:
         case m.Pack(format=fmt):
             layout = formats.struct_layout(fmt)
-            return engine.Pack(layout.fixed, _string_slots(fmt), layout.rest)
+            return engine.Pack(layout.fixed, _string_slots(fmt), layout.rest, layout.groups)
         case m.Format(template=template):
             return engine.Format(template)
 
@@ -30,7 +30,7 @@ def decoder(decoding: m.Unpack | m.Regex | None) -> engine.Unpack | engine.Match
     match decoding:
         case m.Unpack(format=fmt):
             layout = formats.struct_layout(fmt)
-            return engine.Unpack(layout.fixed, _string_slots(fmt), layout.rest)
+            return engine.Unpack(layout.fixed, _string_slots(fmt), layout.rest, layout.groups)
         case m.Regex(pattern=pattern):
             return engine.Match(pattern)
     return None

@@ -861,9 +861,19 @@ class _Checker:
             self.d.report("E401", expr.span, f"a format field cannot format {describe(arg.type)}",  # type: ignore[arg-type]
                           help="format its elements: `position[0]`")
             return None, args
-        values = m.spread(args)
-        exprs = [expr for arg, expr in zip(args, enc.args)
-                 for _ in range(arg.type.size if isinstance(arg.type, m.Array) else 1)]
+        values: list[m.Expr] = []  # one a slot: an array spread into its elements, except into a group
+        exprs: list[ast.Expr] = []
+        grouped: list[int] = []
+        for i, (arg, expr) in enumerate(zip(args, enc.args)):
+            slot = slots[len(values)] if len(values) < len(slots) else None
+            if isinstance(slot, formats.Slot) and slot.repeat:
+                grouped.append(i)
+                values.append(arg)
+                exprs.append(expr)
+                continue
+            spread = m.spread((arg,))
+            values.extend(spread)
+            exprs.extend([expr] * len(spread))
         if len(slots) != len(values):
             given = _count(len(args), "argument") + (f" giving {_count(len(values), 'value')}" if arrays else " given")
             self.d.report(
@@ -873,10 +883,14 @@ class _Checker:
             )
             return None, args
         for arg, expr, slot in zip(values, exprs, slots):
-            if enc.kind == "pack":
-                self.pack_value(self.typer.folded(arg), expr, slot)
-            else:
+            if enc.kind == "format":
                 self.format_value(arg, expr, slot)
+            elif slot.repeat:
+                self.group_value(arg, expr, slot)
+            else:
+                self.pack_value(self.typer.folded(arg), expr, slot)
+        if enc.kind == "pack":
+            return m.Pack(template, tuple(grouped)), args
         return (m.Pack(template) if enc.kind == "pack" else m.Format(template)), args
 
     def native_warning(self, lit: ast.StrLit) -> None:
@@ -885,6 +899,16 @@ class _Checker:
             label="host byte order and alignment", help=f"write \">{lit.value.lstrip('@')}\" (big-endian) or "
             f"\"<{lit.value.lstrip('@')}\" (little-endian), as the device expects",
         )
+
+    def group_value(self, arg: m.Expr, expr: ast.Expr, slot: formats.Slot) -> None:
+        """A repeated group's code takes an array of the group's count, each element as the
+        code takes a value."""
+        code = f"`{slot.code}` of a group of {slot.repeat}"
+        self.flow(arg, m.Array(slot.type, slot.repeat), expr.span, f"pack code {code}")
+        value = self.typer.constant(arg)
+        if isinstance(value, tuple) and slot.low is not None:
+            for item in value:
+                self.fits(item, slot, expr.span, "", f"{code} holds {slot.low} to {slot.high}")
 
     def pack_value(self, arg: m.Expr, expr: ast.Expr, slot: formats.Slot) -> None:
         self.flow(arg, slot.type, expr.span, f"pack code `{slot.code}`")
@@ -923,7 +947,8 @@ class _Checker:
                 layout = formats.struct_layout(template)
                 if layout.native:
                     self.native_warning(dec.template)
-                return m.Unpack(template), tuple(s.type for s in layout.slots)
+                return m.Unpack(template), tuple(m.Array(s.type, s.repeat) if s.repeat else s.type
+                                                 for s in layout.slots)
             groups = formats.regex_groups(template)
             return m.Regex(template), (Type.STRING,) * groups
         except formats.TemplateError as err:

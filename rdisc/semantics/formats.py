@@ -7,6 +7,7 @@ offset into the template, so the checker can point at the offending character.
 
 from __future__ import annotations
 
+import dataclasses
 import re
 import string
 import struct
@@ -35,6 +36,7 @@ class Slot:
     type: Type
     low: int | None = None  # integer range, when the code has one
     high: int | None = None
+    repeat: int = 0  # in a repeated group `6(BH)`: the group's count (the value is an array of it)
 
 
 @dataclass(frozen=True, slots=True)
@@ -43,7 +45,8 @@ class StructLayout:
     size: int  # bytes on the wire (before the rest, when it ends in `*`)
     native: bool  # no byte-order prefix: host order and alignment
     rest: bool = False  # ends in `*`: the rest of the message, as bytes
-    fixed: str = ""  # the format without its `*`, for the struct module
+    fixed: str = ""  # the format without its `*` and with its groups written out, for the struct module
+    groups: tuple[tuple[int, int, int], ...] = ()  # each repeated group: (its first slot, its codes, its count)
 
 
 def split_rest(fmt: str) -> tuple[str, bool]:
@@ -55,6 +58,7 @@ def split_rest(fmt: str) -> tuple[str, bool]:
 _INT_CODES = "bBhHiIlLqQnN"
 _STANDARD_SIZES = {"b": 1, "B": 1, "h": 2, "H": 2, "i": 4, "I": 4, "l": 4, "L": 4, "q": 8, "Q": 8}
 _STRUCT_ITEM = re.compile(r"\s*(\d*)\s*([a-zA-Z?])")
+_GROUP = re.compile(r"\s*(\d+)\s*\(([^()]*)\)")  # `6(BH)`: a repeated group
 
 
 def struct_layout(fmt: str) -> StructLayout:
@@ -69,13 +73,22 @@ def struct_layout(fmt: str) -> StructLayout:
     order = fmt[:1] if fmt[:1] in "@=<>!" else ""
     body = fmt[len(order) :]
     slots: list[Slot] = []
+    groups: list[tuple[int, int, int]] = []
+    written: list[str] = []  # the body with each group written out
     pos = 0
     while pos < len(body):
         if body[pos].isspace():
             pos += 1
             continue
+        group = _GROUP.match(body, pos)
+        if group is not None:
+            written.append(_group(group, len(order), slots, groups))
+            pos = group.end()
+            continue
         m = _STRUCT_ITEM.match(body, pos)
         offset = len(order) + pos
+        if re.match(r"\s*\d+\s*\(", body[pos:]):
+            raise TemplateError("a repeated group `N(codes)` is closed by `)`, and holds no group", offset)
         if not m:
             raise TemplateError(f"`{body[pos]}` is not a struct format code", offset)
         count_text, code = m.groups()
@@ -104,7 +117,11 @@ def struct_layout(fmt: str) -> StructLayout:
             pass
         else:
             raise TemplateError(f"`{code}` is not a struct format code", code_at)
+        written.append(m.group())
         pos = m.end()
+    if groups and any(s.type is Type.STRING for s in slots):
+        raise TemplateError("a format with a repeated group holds numbers and bools only", 0, len(fmt))
+    fmt = order + "".join(written)
     try:
         size = struct.calcsize(fmt)
     except struct.error as err:
@@ -114,8 +131,29 @@ def struct_layout(fmt: str) -> StructLayout:
     native = order in ("", "@") and any(c in "hHiIlLqQnNefd" for c in body)
     if rest:
         slots.append(Slot("*", Type.BYTES))
-    return StructLayout(tuple(slots), size, native, rest, fmt)
+    return StructLayout(tuple(slots), size, native, rest, fmt, tuple(groups))
 
+
+def _group(group: re.Match[str], at: int, slots: list[Slot], groups: list[tuple[int, int, int]]) -> str:
+    """A repeated group `N(codes)`: one slot per code, each taking or giving an array of N
+    values; the codes as the struct module reads them, written out N times."""
+    count, inner = int(group.group(1)), group.group(2)
+    offset = at + group.start(2)
+    if not 1 <= count <= MAX_REPEAT:
+        raise TemplateError(f"a group repeats 1 to {MAX_REPEAT} times, not {count}", at + group.start(1),
+                            len(group.group(1)))
+    codes = [(i, ch) for i, ch in enumerate(inner) if not ch.isspace()]
+    if not codes:
+        raise TemplateError("a repeated group has one code or more", at + group.start(), len(group.group()))
+    first = len(slots)
+    for i, ch in codes:
+        inner_layout = struct_layout("<" + ch) if ch.isascii() and ch.isalpha() or ch == "?" else None
+        if inner_layout is None or len(inner_layout.slots) != 1 or inner_layout.slots[0].type is Type.STRING:
+            raise TemplateError(f"`{ch}` cannot be repeated in a group: a group holds int, float and bool codes, "
+                                "without counts", offset + i)
+        slots.append(dataclasses.replace(inner_layout.slots[0], repeat=count))
+    groups.append((first, len(codes), count))
+    return "".join(ch for _, ch in codes) * count
 
 @dataclass(frozen=True, slots=True)
 class FormatField:

@@ -280,6 +280,7 @@ class Pack:
     """Raw-encoded request: a struct format."""
 
     format: str
+    grouped: tuple[int, ...] = ()  # the arguments that fill a repeated group's codes, each an array
 
 
 @dataclass(frozen=True, slots=True)
@@ -500,12 +501,16 @@ class Primitive:
                 and all(p.low is None for p in self.params) and used == [p.name for p in self.params])
 
     def format_values(self) -> tuple[Expr, ...]:
-        """The format's values, one per code: an array argument as its elements."""
-        return spread(self.args)
+        """The format's values, one per slot: an array argument as its elements, except in a
+        repeated group, which takes it whole."""
+        spreads = self.spreads()
+        return tuple(v for i, a in enumerate(self.args) for v in (spread((a,)) if i in spreads else (a,)))
 
     def spreads(self) -> tuple[int, ...]:
-        """The format arguments that are arrays: each gives its elements as that many values."""
-        return tuple(i for i, a in enumerate(self.args) if isinstance(a.type, Array))
+        """The format arguments that are arrays outside a repeated group: each gives its elements
+        as that many values."""
+        grouped = self.encoding.grouped if isinstance(self.encoding, Pack) else ()
+        return tuple(i for i, a in enumerate(self.args) if isinstance(a.type, Array) and i not in grouped)
 
     def expects_reply(self, frames: dict[str, Frame]) -> bool:
         """A reply is read when there is one to decode, or when the frame's reply

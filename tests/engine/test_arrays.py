@@ -164,3 +164,43 @@ def test_a_joint_state_carries_every_joint(tmp_path: Path, kind: str) -> None:
         with pytest.raises(ValueError, match=r"^aim: move takes 2 values for rad, not 3$"):
             robot.inputs.aim(name=["pan", "tilt", "roll"], position=[0.0, 0.0, 0.0])
         assert bytes(port.written).hex(" ") == "84 a3 02 ba 00"
+
+
+GROUPS = """\
+robot servos { author "tests" }
+const IDS = [1, 2, 3]
+state position: int[3]
+state load: int[3]
+connection bus: serial { baud 57600 }
+primitive sync_goal(goal: int[3] in 0..4095) on bus pack "<BHH3(BI)" (0x83, 116, 4, IDS, goal)
+primitive sync_read() on bus pack "B" (0x82) unpack "<B3(Hb)" { position = out[1]  load = out[2] }
+"""
+
+
+@pytest.mark.parametrize("kind", ["runtime", "driver"])
+def test_a_repeated_group_interleaves_its_arrays(tmp_path: Path, kind: str) -> None:
+    """`3(BI)` takes two arrays of 3 and writes ID, goal, ID, goal, ...; `3(Hb)` in a reply
+    gives one array a code."""
+    port = ScriptedPort(bytes.fromhex("07" "0100ff" "0200fe" "030000"))
+    with implementation_of(kind, GROUPS, tmp_path, "servos").connect(port, threads=False) as robot:
+        robot.primitives.sync_goal([10, 20, 4095])
+        assert bytes(port.written).hex(" ") == "83 74 00 04 00 01 0a 00 00 00 02 14 00 00 00 03 ff 0f 00 00"
+        robot.primitives.sync_read()
+        assert (robot.state.position, robot.state.load) == ((1, 2, 3), (-1, -2, 0))
+
+
+def test_a_repeated_group_in_dump_json_and_the_checker(tmp_path: Path, rdisc) -> None:
+    _, built = through_json(GROUPS, tmp_path, "servos")
+    assert '"pack": "<BHH3(BI)"' in built
+    dump = rdisc("dump", tmp_path / "servos.rdis").stdout
+    assert ("     5    1  u8                   1\n     6    4  u32 LE               goal[0]\n"
+            "    10    1  u8                   2\n") in dump
+    assert "     3    1  s8                   out[2][0]\n     4    2  u16 LE               out[1][1]\n" in dump
+    _, result = check_text(tmp_path, HEAD + 'primitive w(n: int) on link pack "<3(B)" ([1, 2, 300])\n'
+                           'primitive v(g: int[2]) on link pack "<3(B)" (g)\n'
+                           'primitive u() on link pack "<3(s)" ("a")\n')
+    assert [line for line in result.stderr.splitlines() if line.startswith("error[")] == [
+        "error[E403]: 300 does not fit pack code `B`",
+        "error[E401]: pack code `B` of a group of 3 takes an array int[3], but this is an array int[2]",
+        "error[E301]: `s` cannot be repeated in a group: a group holds int, float and bool codes, without counts",
+    ]

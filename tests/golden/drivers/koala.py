@@ -656,21 +656,63 @@ def _string_sizes(fmt: str) -> dict[int, int]:
     return sizes
 
 
+Group = tuple[int, int, int]
+"""A repeated group of a struct format: its first value, its number of codes, its count."""
+
+
+def _interleaved(owner: str, values: Sequence[Value], groups: tuple[Group, ...]) -> list[Any]:
+    """Values with each group's arrays given element by element: `6(BH)` takes two arrays of
+    6 and packs their first elements, then their second, ..."""
+    flat: list[Any] = []
+    at = 0
+    for first, codes, count in groups:
+        flat.extend(values[at:first])
+        arrays: Sequence[Any] = values[first : first + codes]
+        for array in arrays:
+            if len(array) != count:
+                raise RdisValueError(f"{owner}: a group of {count} takes arrays of {count}, not {len(array)}")
+        for row in zip(*arrays):
+            flat.extend(row)
+        at = first + codes
+    flat.extend(values[at:])
+    return flat
+
+
+def _regrouped(values: Sequence[Any], groups: tuple[Group, ...]) -> tuple[Any, ...]:
+    """Unpacked values with each group's values gathered into one array a code."""
+    out: list[Any] = []
+    at = 0
+    for first, codes, count in groups:
+        take = first - len(out)
+        out.extend(values[at : at + take])
+        at += take
+        block = values[at : at + codes * count]
+        out.extend(tuple(block[k::codes]) for k in range(codes))
+        at += codes * count
+    out.extend(values[at:])
+    return tuple(out)
+
+
 class Pack:
     """A request packed with a struct format: the values at `strings` as latin-1 bytes
-    (refused when longer than their `Ns` holds: struct would cut them short) and, with
-    `rest` (a format ending in `*`), the last value, bytes, appended as it is."""
+    (refused when longer than their `Ns` holds: struct would cut them short), the arrays
+    of repeated `groups` element by element, and, with `rest` (a format ending in `*`),
+    the last value, bytes, appended as it is."""
 
-    __slots__ = ("rest", "sizes", "strings", "struct")
+    __slots__ = ("groups", "rest", "sizes", "strings", "struct")
 
-    def __init__(self, fixed: str, strings: tuple[int, ...] = (), rest: bool = False) -> None:
+    def __init__(self, fixed: str, strings: tuple[int, ...] = (), rest: bool = False,
+                 groups: tuple[Group, ...] = ()) -> None:
         self.struct = struct.Struct(fixed)
         self.strings = strings
         self.rest = rest
         self.sizes = _string_sizes(fixed)
+        self.groups = groups
 
     def encode(self, owner: str, values: Sequence[Value]) -> bytes:
         try:
+            if self.groups:
+                values = _interleaved(owner, values, self.groups)
             if not self.strings and not self.rest:
                 return self.struct.pack(*values)
             packed = list(values[:-1] if self.rest else values)
@@ -707,15 +749,18 @@ class Format:
 
 class Unpack:
     """A reply decoded with a struct format: exactly its size or, with `rest`, its fixed
-    part and then the rest as bytes; the values at `strings` as latin-1 text."""
+    part and then the rest as bytes; the values at `strings` as latin-1 text, each repeated
+    group's values as one array a code."""
 
-    __slots__ = ("rest", "size", "strings", "struct")
+    __slots__ = ("groups", "rest", "size", "strings", "struct")
 
-    def __init__(self, fixed: str, strings: tuple[int, ...] = (), rest: bool = False) -> None:
+    def __init__(self, fixed: str, strings: tuple[int, ...] = (), rest: bool = False,
+                 groups: tuple[Group, ...] = ()) -> None:
         self.struct = struct.Struct(fixed)
         self.strings = strings
         self.rest = rest
         self.size = -1 if rest else self.struct.size  # -1: the frame says where the reply ends
+        self.groups = groups
 
     def decode(self, owner: str, data: bytes) -> tuple[Value, ...]:
         layout = self.struct
@@ -728,6 +773,8 @@ class Unpack:
             raise RdisProtocolError(f"{owner}: expected {layout.size} bytes, got {len(data)}")
         else:
             values = layout.unpack(data)
+        if self.groups:  # a format with groups has no strings
+            return _regrouped(values, self.groups)
         if self.strings:
             decoded = list(values)
             for i in self.strings:
