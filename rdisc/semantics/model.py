@@ -198,7 +198,9 @@ def spread(args: tuple[Expr, ...]) -> tuple[Expr, ...]:
     """Format arguments as the values they give, one per code: an array as its elements."""
     values: list[Expr] = []
     for a in args:
-        if isinstance(a.type, Array):
+        if isinstance(a, Const) and isinstance(a.value, tuple) and isinstance(a.type, Array):
+            values.extend(Const(v, a.type.element, a.span) for v in a.value)
+        elif isinstance(a.type, Array):
             values.extend(Element(a, Const(i, Type.INT), a.type.element, a.span) for i in range(a.type.size))
         else:
             values.append(a)

@@ -294,7 +294,10 @@ class Typer:
         assert isinstance(element, Type)
         node = m.ArrayValue(items, Array(element, len(items)), e.span)
         widen = float if element is Type.FLOAT else (lambda v: v)
-        return self._fold(node, items, lambda *values: tuple(widen(v) for v in values))
+        folded = self._fold(node, items, lambda *values: tuple(widen(v) for v in values))
+        if self.is_constant(folded):  # `[1, 2, 3]` is a constant, as a named one is
+            return self._const(m.Const(self.constant(folded), node.type, e.span))  # type: ignore[arg-type]
+        return folded
 
     def _lookup(self, e: ast.Index, env: Env) -> m.Expr:
         """`TABLE[key]`: a key of the table's key type; a constant key must be in the table."""

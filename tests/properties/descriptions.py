@@ -731,11 +731,21 @@ class Frame:
         """Per parameter, the range a constant argument must fit: the formats of the fields that are it."""
         ranges: dict[str, tuple[int, int]] = {}
         for part in self.request + self.reply:
-            if part.kind == "field" and isinstance(part.value, Name):
-                r = code_range(part.fmt.lstrip("<>") if part.fmt else "B")
-                assert r is not None
-                old = ranges.get(part.value.name, r)
-                ranges[part.value.name] = (max(old[0], r[0]), min(old[1], r[1]))
+            if part.kind != "field":
+                continue
+            low, high = code_range(part.fmt.lstrip("<>") if part.fmt else "B") or (0, 255)
+            match part.value:  # the shapes `_field_value` draws
+                case Name(name=name):
+                    fits = (name, low, high)
+                case Binary(op="+", left=Name(name=name), right=Lit(v=k)):
+                    fits = (name, low - k, high - k)
+                case IfElse(cond=Binary(op="<=", left=Name(name=name), right=Lit(v=most))):
+                    fits = (name, low, min(high, most))  # above it, the field is refused
+                case _:
+                    continue
+            name, low, high = fits
+            old = ranges.get(name, (low, high))
+            ranges[name] = (max(old[0], low), min(old[1], high))
         return ranges
 
 
