@@ -66,7 +66,9 @@ is refused too."""),
     ("E101", "duplicate-name", """
 Two elements of the same kind have the same name. Names are unique per kind: a
 primitive and an interface may share a name (the place of a reference decides
-its kind), two primitives may not. Both places are shown."""),
+its kind), two primitives may not. A loop variable has a name of its own: not
+that of a parameter, state variable, constant or outer loop's variable, which it
+would hide. Both places are shown."""),
     ("E102", "unknown-element", """
 A reference to an element that is not declared: a primitive or interface called
 by an interface (a call names a primitive of that name, or else an interface), an
@@ -131,7 +133,7 @@ A setting outside its range: baud and frequency must be positive, a keepalive
 interval positive, a delay zero or more, a reply-line `terminator` 1 to 8 bytes.
 Settings must be constants. A parameter's range has constant bounds, low <= high,
 of its type; a default is a constant, and the parameters after one with a default
-have defaults too."""),
+have defaults too. A loop's range counts up: `for i in 5..0` is empty."""),
     ("E205", "periodic-with-parameters", """
 A periodic interface runs on every tick of its connection's thread, where nobody
 supplies arguments, so it cannot take parameters."""),
@@ -165,6 +167,17 @@ only a `serial` connection has them: a `tcp` connection carries bytes alone. Wro
 `primitive motor(on: bool) on net lines dtr = not on`, or `lines cts = True`. Right:
 `connection link: serial { baud 115200 }` with
 `primitive motor(on: bool) on link lines dtr = not on`."""),
+    ("E212", "loop", """
+A loop in an interface's body, `for NAME in LOW..HIGH { ... }` (both ends included)
+or `for NAME in ARRAY { ... }`, runs a number of rounds known when the description
+is checked, so the link budget and the time of a call stay known: the checker
+writes the loop out as its calls. Its bounds are constant ints and its array a
+constant array (a `const` or a literal); an array parameter or state array is
+read by its indexes, whose count its type fixes. A loop makes calls, and an
+interface's loops write out at most 4096 of them (65536 for all interfaces).
+Wrong: `interface all(n: int) { for i in 0..n { torque(i, True) } }`. Right:
+`const IDS = [1, 2, 3]` with `interface all() { for id in IDS { torque(id, True) } }`,
+or `interface move(p: int[3]) { for i in 0..2 { goal(IDS[i], p[i]) } }`."""),
     # -- message formats -------------------------------------------------------
     ("E301", "invalid-pack-format", """
 `pack` and `unpack` take Python struct format strings: an optional byte order

@@ -125,18 +125,27 @@ def _warn(model: m.Model, conn: m.Connection, b: ConnectionBudget, diagnostics: 
 
 
 def exchange(model: m.Model, iface: m.Interface, connection: str) -> Exchange:
-    count = 0
-    wire = 0.0
-    delays = 0.0
-    for call, delay in model.primitive_calls(iface):
-        prim = model.primitives[call.primitive]
-        size = message_bytes(prim, model.frames)
-        baud = model.connections[prim.connection].baud
-        wire += size * BITS_PER_BYTE * 1000.0 / baud
-        if prim.connection == connection:
-            count += size
-        delays += delay
-    return Exchange(iface.name, count, wire, delays)
+    """Bytes on `connection`, time on the wire and delays of one run of an interface, through
+    the interfaces it calls (a call's delay counts after it, made or not). Each interface is
+    costed once and its cost reused: loops call the same interface thousands of times."""
+    costs: dict[str, tuple[int, float, float]] = {}
+
+    def cost(called: m.Interface) -> tuple[int, float, float]:
+        if called.name not in costs:
+            count, wire, delays = 0, 0.0, 0.0
+            for call in called.calls:
+                if call.interface:
+                    inner = cost(model.interfaces[call.primitive])
+                else:
+                    prim = model.primitives[call.primitive]
+                    size = message_bytes(prim, model.frames)
+                    baud = model.connections[prim.connection].baud
+                    inner = (size if prim.connection == connection else 0, size * BITS_PER_BYTE * 1000.0 / baud, 0.0)
+                count, wire, delays = count + inner[0], wire + inner[1], delays + inner[2] + call.delay_ms
+            costs[called.name] = (count, wire, delays)
+        return costs[called.name]
+
+    return Exchange(iface.name, *cost(iface))
 
 
 def message_bytes(prim: m.Primitive, frames: dict[str, m.Frame] | None = None) -> int:

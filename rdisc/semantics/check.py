@@ -9,7 +9,8 @@ returned only when no error was found.
 from __future__ import annotations
 
 import math
-from collections.abc import Iterator
+from collections.abc import Iterator, Sequence
+from dataclasses import dataclass, replace
 
 from rdisc.diagnostics import Diagnostics, Label, abbreviate
 from rdisc.limits import MAX_ARRAY
@@ -38,8 +39,21 @@ DEFAULT_BAUD = 9600
 DEFAULT_FREQUENCY_HZ = 10.0
 MAX_TERMINATOR = 8
 MAX_TABLE = 4096  # entries of a reply table
+MAX_UNROLLED = 4096  # calls an interface's body makes, its loops written out
+MAX_UNROLLED_ALL = 65_536  # the same for all interfaces: the work loops cause stays bounded
 _TYPES = {t.value: t for t in Type}
 _NOTHING = Env({}, "in a setting", "")
+
+
+@dataclass(frozen=True, slots=True)
+class _Unrolling:
+    """What the statements of one interface's body are checked against, and the calls made."""
+
+    decl: ast.InterfaceDecl
+    env: Env
+    interface_params: dict[str, tuple[m.Parameter, ...]]
+    primitives: dict[str, m.Primitive]
+    calls: list[m.PrimitiveCall]
 
 
 def check(units: list[Unit], symbols: Symbols, diagnostics: Diagnostics) -> m.Model | None:
@@ -56,6 +70,7 @@ class _Checker:
         self.state_env: dict[str, tuple[Scope, Type]] = {}
         self.frames: dict[str, m.Frame] = {}
         self.primitives: dict[str, m.Primitive] = {}
+        self.written = 0  # calls in the interfaces' bodies, loops written out
 
     # -- the whole description ----------------------------------------------------------
 
@@ -1019,34 +1034,7 @@ class _Checker:
         scope = {p.name: (Scope.PARAM, p.type) for p in params if p.type is not None}
         env = self.env_with(scope, "in an interface", "its parameters and state variables")
         calls: list[m.PrimitiveCall] = []
-        for stmt in decl.body:
-            callee = stmt.call.target.text
-            calls_interface = callee not in self.s.primitives and callee in self.s.interfaces
-            if calls_interface:
-                args = self.call(stmt.call, interface_params[callee], env, "interface",
-                                 self.s.interfaces[callee].name)
-            else:
-                target = self.s.primitives.get(callee)
-                prim = primitives.get(callee)
-                args = self.call(stmt.call, prim.params if prim else None, env, "primitive",
-                                 target.name if target else None)
-                if prim is not None:
-                    self.constants_into_pack(prim, args, stmt.call.args)
-            delay_clause = self.once(list(stmt.delays), "`delay`", stmt.call.target)
-            delay = self.duration(delay_clause, "a delay") if isinstance(delay_clause, ast.Duration) else 0
-            if delay is not None and delay < 0:
-                self.d.report("E204", delay_clause.span, f"a delay must be zero or more, not {delay:g} ms")  # type: ignore[union-attr]
-            priority_expr = self.once(list(stmt.priorities), "`priority`", stmt.call.target)
-            priority = self.setting(priority_expr, "a priority", MAX_PRIORITY) if priority_expr is not None else 0
-            if priority is not None and priority != int(priority):
-                self.d.report("E204", priority_expr.span, "a priority must be an integer")  # type: ignore[union-attr]
-            self.once(list(stmt.conditions), "`when`", stmt.call.target)
-            when = self.typer.expr(stmt.conditions[0], env) if stmt.conditions else None
-            if when is not None and when.type is not None and when.type is not Type.BOOL:
-                self.d.report("E401", stmt.conditions[0].span, f"`when` takes a bool, but this is {describe(when.type)}")
-            calls.append(m.PrimitiveCall(
-                m.PrimitiveRef(callee), args, delay or 0, int(priority or 0), stmt.span, calls_interface, when
-            ))
+        self.body(decl.body, _Unrolling(decl, env, interface_params, primitives, calls), {})
         if periodic:
             self.periodic_connection(decl)
         outputs: dict[str, ast.Ident] = {}
@@ -1057,6 +1045,139 @@ class _Checker:
             outputs.setdefault(output.text, output)
         out_ref = tuple(m.OutputRef(o) for o in outputs)
         return m.Interface(name.text, params, periodic, tuple(calls), out_ref, decl.doc, decl.span)
+
+    def body(self, stmts: tuple[ast.BodyStmt, ...], u: _Unrolling, loops: dict[str, ast.Ident]) -> None:
+        """An interface's statements as plain calls: each loop written out, its variable a constant
+        in each round, so the Model, the budget and every emitter see only calls. A round that
+        reports an error ends its loop: the next rounds would repeat the fault."""
+        for stmt in stmts:
+            if isinstance(stmt, ast.CallStmt):
+                call = self.call_stmt(stmt, u.env, u.interface_params, u.primitives)
+                if loops:  # `IDS[i] + 1` of this round is known: the call says its value
+                    call = replace(call, args=tuple(self.value_of(a) for a in call.args),
+                                   when=None if call.when is None else self.value_of(call.when))
+                u.calls.append(call)
+                self.written += 1
+                continue
+            found = self.loop_values(stmt, u, loops)
+            if found is None:
+                continue
+            type_, values = found
+            name = stmt.var.text  # no constant has it (loop_variable): bound as one, then gone
+            for value in values:
+                self.typer.named[name] = (type_, value)
+                errors = self.d.error_count
+                self.body(stmt.body, u, {**loops, name: stmt.var})
+                if self.d.error_count > errors:
+                    break
+            del self.typer.named[name]
+
+    def value_of(self, expr: m.Expr) -> m.Expr:
+        """A constant expression as its value; any other as it is."""
+        if not self.typer.is_constant(expr) or expr.type is None:
+            return expr
+        return self.typer.const(self.typer.constant(expr), expr.type, expr.span)  # type: ignore[arg-type]
+
+    def loop_values(self, stmt: ast.ForStmt, u: _Unrolling,
+                    loops: dict[str, ast.Ident]) -> tuple[Type, Sequence[m.Value]] | None:
+        """The values a loop's variable takes, or None when the loop is in error (reported)."""
+        head = Span(stmt.span.path, stmt.span.start, (stmt.high or stmt.low).span.end)  # `for i in 0..5`
+        if not self.loop_variable(stmt.var, u, loops):
+            return None
+        if not stmt.body:
+            self.d.report("E212", head, "a loop without calls", help="write the calls it makes in its `{ }`")
+            return None
+        if stmt.high is None:
+            over = self.typer.expr(stmt.low, u.env)
+            if over.type is None:
+                return None
+            if not isinstance(over.type, m.Array):
+                self.d.report("E212", stmt.low.span, "a loop goes over a constant array or a range, not "
+                              f"{describe(over.type)}", help="write a range: `for i in 0..5`")
+                return None
+            if not self.typer.is_constant(over):
+                name = stmt.low.name if isinstance(stmt.low, ast.Ref) else "values"
+                self.d.report("E212", stmt.low.span, "a loop goes over a constant array or a range, not an array "
+                              "known only when it runs", help="loop over its indexes and read its elements: "
+                              f"`for i in 0..{over.type.size - 1} {{ ... {name}[i] ... }}`")
+                return None
+            type_, values = over.type.element, self.typer.constant(over)
+        else:
+            ends = [self.typer.expr(end, u.env) for end in (stmt.low, stmt.high)]
+            if any(end.type is None for end in ends):
+                return None
+            for end, written in zip(ends, (stmt.low, stmt.high)):
+                if end.type is not Type.INT or not self.typer.is_constant(end):
+                    what = describe(end.type) if end.type is not Type.INT else "an int known only when it runs"
+                    self.d.report("E212", written.span, f"a loop's bounds are constant ints, not {what}",
+                                  help="its rounds are fixed when the description is checked: write its bounds "
+                                  "with numbers and constants")
+                    return None
+            low, high = (int(self.typer.constant(end)) for end in ends)  # type: ignore[call-overload]
+            if low > high:
+                self.d.report("E204", stmt.low.span.to(stmt.high.span), f"the range {low}..{high} is empty",
+                              help="a loop counts up, from its first bound to its last, both included")
+                return None
+            type_, values = Type.INT, range(low, high + 1)
+        # Each round makes a call or more, so these bound the work before any is done.
+        rounds = len(values)  # type: ignore[arg-type]
+        too_many = f"interface `{u.decl.name.text}` unrolls into more than {MAX_UNROLLED} calls" \
+            if len(u.calls) + rounds > MAX_UNROLLED else \
+            f"the description's interfaces unroll into more than {MAX_UNROLLED_ALL} calls" \
+            if self.written + rounds > MAX_UNROLLED_ALL else None
+        if too_many is not None:
+            self.d.report("E212", head, too_many, help="every round of a loop makes its calls: loop over fewer values")
+            return None
+        return type_, values  # type: ignore[return-value]
+
+    def loop_variable(self, var: ast.Ident, u: _Unrolling, loops: dict[str, ast.Ident]) -> bool:
+        """A loop variable's name is its own: a parameter, state variable, constant or outer
+        loop variable of the name would be hidden in the loop, and its reader misled."""
+        errors = self.d.error_count
+        check_name(var, "loop variable", self.d)
+        name = var.text
+        param = next((p.name for p in u.decl.params if p.name.text == name), None)
+        state, constant = self.s.states.get(name), self.s.constants.get(name)
+        first, what = (loops[name], "an outer loop's variable") if name in loops else \
+            (param, "a parameter") if param is not None else \
+            (state.name, "a state variable") if state is not None else \
+            (constant.name, "a constant") if constant is not None else (None, "")
+        if first is not None:
+            self.d.report("E101", var.span, f"loop variable `{name}` has the name of {what}",
+                          labels=(Label(first.span, f"{what} `{name}`"),),
+                          help="give the loop variable a name of its own")
+        return self.d.error_count == errors
+
+    def call_stmt(self, stmt: ast.CallStmt, env: Env, interface_params: dict[str, tuple[m.Parameter, ...]],
+                  primitives: dict[str, m.Primitive]) -> m.PrimitiveCall:
+        """One call as the Model has it (in a loop, with the loop variables of this round)."""
+        callee = stmt.call.target.text
+        calls_interface = callee not in self.s.primitives and callee in self.s.interfaces
+        if calls_interface:
+            args = self.call(stmt.call, interface_params[callee], env, "interface",
+                             self.s.interfaces[callee].name)
+        else:
+            target = self.s.primitives.get(callee)
+            prim = primitives.get(callee)
+            args = self.call(stmt.call, prim.params if prim else None, env, "primitive",
+                             target.name if target else None)
+            if prim is not None:
+                self.constants_into_pack(prim, args, stmt.call.args)
+        delay_clause = self.once(list(stmt.delays), "`delay`", stmt.call.target)
+        delay = self.duration(delay_clause, "a delay") if isinstance(delay_clause, ast.Duration) else 0
+        if delay is not None and delay < 0:
+            self.d.report("E204", delay_clause.span, f"a delay must be zero or more, not {delay:g} ms")  # type: ignore[union-attr]
+        priority_expr = self.once(list(stmt.priorities), "`priority`", stmt.call.target)
+        priority = self.setting(priority_expr, "a priority", MAX_PRIORITY) if priority_expr is not None else 0
+        if priority is not None and priority != int(priority):
+            self.d.report("E204", priority_expr.span, "a priority must be an integer")  # type: ignore[union-attr]
+        self.once(list(stmt.conditions), "`when`", stmt.call.target)
+        when = self.typer.expr(stmt.conditions[0], env) if stmt.conditions else None
+        if when is not None and when.type is not None and when.type is not Type.BOOL:
+            self.d.report("E401", stmt.conditions[0].span, f"`when` takes a bool, but this is {describe(when.type)}")
+        return m.PrimitiveCall(
+            m.PrimitiveRef(callee), args, delay or 0, int(priority or 0), stmt.span, calls_interface, when
+        )
 
     def constants_into_pack(self, prim: m.Primitive, args: tuple[m.Expr, ...], exprs: tuple[ast.Expr, ...]) -> None:
         """A constant argument whose parameter goes straight into a pack code must fit it."""
@@ -1128,7 +1249,7 @@ class _Checker:
         """The primitive declarations an interface calls, through the interfaces it calls (each
         once: a cycle is reported on its own), with the statement in `decl` that leads there."""
         seen.add(decl.name.text)
-        for stmt in decl.body:
+        for stmt in ast.call_stmts(decl.body):
             callee = stmt.call.target.text
             prim = self.s.primitives.get(callee)
             if prim is not None:

@@ -7,7 +7,6 @@ from __future__ import annotations
 
 import dataclasses
 import enum
-from collections.abc import Iterator
 from dataclasses import dataclass, field
 from typing import NewType
 
@@ -612,10 +611,23 @@ class Model:
 
     def owner(self, iface: Interface) -> str | None:
         """The connection whose thread runs a periodic interface: its first primitive's."""
-        first = next(self.primitive_calls(iface), None)
+        first = self._first_primitive(iface, set())
         if first is not None:
-            return self.primitives[first[0].primitive].connection
+            return self.primitives[first].connection
         return next(iter(self.connections), None)
+
+    def _first_primitive(self, iface: Interface, seen: set[str]) -> PrimitiveRef | None:
+        """The primitive an interface calls first, through the interfaces it calls, each looked
+        into once (one that led to no primitive leads to none again: loops repeat calls)."""
+        seen.add(iface.name)
+        for call in iface.run_order():
+            if not call.interface:
+                return call.primitive
+            if call.primitive not in seen:
+                found = self._first_primitive(self.interfaces[call.primitive], seen)
+                if found is not None:
+                    return found
+        return None
 
     def callees_first(self) -> list[Interface]:
         """The interfaces, each after the interfaces it calls (the checker keeps the calls
@@ -634,14 +646,3 @@ class Model:
             place(iface)
         return list(ordered.values())
 
-    def primitive_calls(self, iface: Interface) -> Iterator[tuple[PrimitiveCall, float]]:
-        """The primitive calls an interface makes, in run order, through the interfaces it
-        calls, each with the delay after it (a called interface's own delay comes after its
-        last call's)."""
-        for call in iface.run_order():
-            if not call.interface:
-                yield call, call.delay_ms
-                continue
-            inner = list(self.primitive_calls(self.interfaces[call.primitive]))
-            for j, (prim, delay) in enumerate(inner):
-                yield prim, delay + (call.delay_ms if j == len(inner) - 1 else 0)

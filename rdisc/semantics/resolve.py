@@ -18,7 +18,7 @@ from rdisc.syntax import ast
 # Words that would be read as keywords where a name can stand. Other keywords of
 # the language only occur in places no name can, so they stay usable as names
 # (the thesis's Create has interfaces named `startup` and `drive`).
-KEYWORDS = frozenset(["if", "else", "and", "or", "not", "True", "False", "out", "delay", "priority"])
+KEYWORDS = frozenset(["if", "else", "and", "or", "not", "True", "False", "out", "delay", "priority", "for"])
 
 
 @dataclass(frozen=True, slots=True)
@@ -180,7 +180,7 @@ def _bind(decl: ast.Decl, symbols: Symbols, diagnostics: Diagnostics) -> None:
                 if isinstance(clause, ast.Triggers):
                     for output in clause.outputs:
                         need(output, symbols.outputs, "output")
-            for stmt in decl.body:  # a primitive, or else an interface, of the name
+            for stmt in ast.call_stmts(decl.body):  # a primitive, or else an interface, of the name
                 name = stmt.call.target.text
                 if not symbols.is_damaged("primitive", name) and not symbols.is_damaged("interface", name):
                     need(stmt.call.target, {**symbols.interfaces, **symbols.primitives}, "primitive or interface")

@@ -395,11 +395,31 @@ class CallStmt:
 
 
 @dataclass(frozen=True, slots=True)
+class ForStmt:
+    """`for NAME in LOW..HIGH { ... }` or `for NAME in ARRAY { ... }`: the body once per
+    value, both ends of a range included; the checker writes the loop out as its calls."""
+
+    var: Ident
+    low: Expr  # the array, when there is no `high`
+    high: Expr | None
+    body: tuple[BodyStmt, ...]
+    span: Span = _span
+
+
+BodyStmt = CallStmt | ForStmt
+
+
+def call_stmts(body: tuple[BodyStmt, ...]) -> list[CallStmt]:
+    """The calls written in a body, those inside loops included, each once."""
+    return [c for stmt in body for c in ([stmt] if isinstance(stmt, CallStmt) else call_stmts(stmt.body))]
+
+
+@dataclass(frozen=True, slots=True)
 class InterfaceDecl:
     name: Ident
     params: tuple[Param, ...]
     clauses: tuple[InterfaceClause, ...]
-    body: tuple[CallStmt, ...]
+    body: tuple[BodyStmt, ...]
     span: Span = _span
     doc: str | None = None
 

@@ -6,7 +6,7 @@ import math
 import re
 from collections.abc import Callable
 from functools import lru_cache
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from rdisc.diagnostics import Diagnostics, abbreviate
 from rdisc.limits import MAX_INT
@@ -304,7 +304,7 @@ def _transformer_class():
         def interface_decl(self, meta, c):
             name, params, *rest = c
             clauses = tuple(x for x in rest if isinstance(x, (ast.Kind, ast.Triggers)))
-            body = tuple(x for x in rest if isinstance(x, ast.CallStmt))
+            body = tuple(x for x in rest if isinstance(x, (ast.CallStmt, ast.ForStmt)))
             return ast.InterfaceDecl(
                 self.b.ident(name), params or (), clauses, body, self.b.span(meta), self.b.doc(meta)
             )
@@ -321,6 +321,10 @@ def _transformer_class():
             priorities = tuple(x[1] for x in c[2:] if x[0] == "priority")
             conditions = tuple(x[1] for x in c[2:] if x[0] == "when")
             return ast.CallStmt(call, delays, priorities, self.b.span(meta), conditions)
+
+        def for_stmt(self, meta: Any, c: list[Any]) -> ast.ForStmt:
+            name, low, high, *body = c
+            return ast.ForStmt(self.b.ident(name), low, high, tuple(body), self.b.span(meta))
 
         def delay(self, meta, c):
             return ("delay", c[0])

@@ -85,7 +85,7 @@ def _code(d: ast.Decl) -> list[str]:
         case ast.InterfaceDecl(name, params, clauses, body):
             words = "".join(" " + _interface_clause(c) for c in clauses)
             head = f"interface {name.text}({_params(params)}){words}"
-            return _block(head, [line for stmt in body for line in _call_stmt(stmt)])
+            return _block(head, _body(body, len(INDENT)))
         case ast.AdapterDecl(name, ros, fields):
             head = f"adapter {name.text}" + ("" if ros is None else f" ros {p.quote(ros.value)}")
             return _block(head, [line for f in fields for line in _doc(f.doc) + [_field(f)]])
@@ -217,11 +217,26 @@ def _interface_clause(c: ast.InterfaceClause) -> str:
             _unreachable(c)
 
 
-def _call_stmt(stmt: ast.CallStmt) -> list[str]:
+def _body(body: tuple[ast.BodyStmt, ...], column: int) -> list[str]:
+    """An interface's statements, a loop's own a level deeper (`column`: where they start)."""
+    lines: list[str] = []
+    for stmt in body:
+        match stmt:
+            case ast.CallStmt():
+                lines += _call_stmt(stmt, column)
+            case ast.ForStmt(var, low, high, inner):
+                over = print_expr(low) + ("" if high is None else f"..{print_expr(high)}")
+                lines += _block(f"for {var.text} in {over}", _body(inner, column + len(INDENT)))
+            case _:
+                _unreachable(stmt)
+    return lines
+
+
+def _call_stmt(stmt: ast.CallStmt, column: int) -> list[str]:
     suffix = "".join(f" delay {_duration(d)}" for d in stmt.delays)
     suffix += "".join(f" priority {print_expr(e)}" for e in stmt.priorities)
     suffix += "".join(f" when {print_expr(e)}" for e in stmt.conditions)
-    return _call_lines("", stmt.call, suffix, len(INDENT))
+    return _call_lines("", stmt.call, suffix, column)
 
 
 def _field(f: ast.FieldDecl) -> str:

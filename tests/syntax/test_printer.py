@@ -275,6 +275,13 @@ args = st.lists(expressions, max_size=3).map(tuple)
 calls = st.builds(ast.Call, ids, args)
 durations = st.builds(ast.Duration, expressions, st.sampled_from(["ms", "s"]))
 assigns = st.builds(ast.Assign, ids, expressions)
+body_stmts = st.recursive(
+    st.builds(ast.CallStmt, calls, st.lists(durations, max_size=2).map(tuple),
+              st.lists(expressions, max_size=2).map(tuple), conditions=st.lists(expressions, max_size=1).map(tuple)),
+    lambda inner: st.builds(ast.ForStmt, ids, expressions, st.none() | expressions,
+                            st.lists(inner, min_size=1, max_size=2).map(tuple)),
+    max_leaves=4,
+)  # a loop's body: calls and loops
 strings = st.text(st.characters(blacklist_categories=["Cs"]), max_size=12)
 
 declarations = st.one_of(
@@ -304,8 +311,7 @@ declarations = st.one_of(
         st.lists(st.one_of(st.builds(ast.Kind, st.sampled_from(["periodic", "adhoc"])),
                            st.builds(ast.Triggers, st.lists(ids, min_size=1, max_size=3).map(tuple))),
                  max_size=2).map(tuple),
-        st.lists(st.builds(ast.CallStmt, calls, st.lists(durations, max_size=2).map(tuple),
-                           st.lists(expressions, max_size=2).map(tuple)), max_size=3).map(tuple),
+        st.lists(body_stmts, max_size=3).map(tuple),
         doc=docs,
     ),
     st.builds(
