@@ -32,6 +32,7 @@ ROOT = Path(__file__).resolve().parents[2]
 DESCRIPTION = ROOT / "examples" / "arm.rdis"
 IDS = [1, 2, 3, 4, 5, 6]
 GOAL, PRESENT, TORQUE = 116, 132, 64
+TORQUE_PACKET = 26  # bytes of the sync write of six 1-byte values the startup hook sends
 STUFFED = -33554688  # 0xFDFFFF00 as int32: little-endian 00 FF FF FD
 
 
@@ -155,7 +156,9 @@ def test_a_move_is_the_sdks_sync_write_of_six_goals(bus: XBus, arm: Any) -> None
     goals = [min(4095, max(0, round(a * 4096 / (2 * math.pi)) + 2048)) for a in ANGLES]
     assert goals == [2048, 1070, 3026, 3072, 0, 4095]
     expected = _sdk_sync_write(bus, GOAL, 4, goals)
+    bus.clear()
     with arm.connect(bus.port, timeout=0.2, threads=False) as robot:
+        bus.wait_for(TORQUE_PACKET, 5)  # the startup hook's, then nothing but the move
         bus.clear()
         robot.interfaces.move(ANGLES)
         assert bus.wait_for(len(expected), 5) == expected
@@ -167,9 +170,11 @@ def test_a_move_is_the_sdks_sync_write_of_six_goals(bus: XBus, arm: Any) -> None
 def test_a_sync_read_asks_and_reads_as_the_sdk_does(bus: XBus, arm: Any) -> None:
     request, positions = _sdk_sync_read(bus)
     assert positions == bus.present  # the SDK read the six status packets, the stuffed one too
+    bus.clear()
     with arm.connect(bus.port, timeout=0.5, threads=False) as robot:
         delivered: list[dict[str, Any]] = []
         robot.on_output(delivered.append)
+        bus.wait_for(TORQUE_PACKET, 5)
         bus.clear()
         robot.interfaces.read_joints()
         assert bus.received == request
