@@ -6,7 +6,7 @@ import math
 import re
 from collections.abc import Callable
 from functools import lru_cache
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from rdisc.diagnostics import Diagnostics, abbreviate
 from rdisc.limits import MAX_INT
@@ -254,6 +254,11 @@ def _transformer_class():
         def state_decl(self, meta, c):
             name, type_, init = c
             return ast.StateDecl(self.b.ident(name), self.b.type_ref(type_), init, self.b.span(meta), self.b.doc(meta))
+
+        def setting_decl(self, meta: object, c: list[Any]) -> ast.SettingDecl:
+            name, type_, low, high, default = c
+            return ast.SettingDecl(self.b.ident(name), self.b.type_ref(type_), default, self.b.span(meta),
+                                   self.b.doc(meta), low, high)
 
         def connection_decl(self, meta, c):
             return ast.ConnectionDecl(
