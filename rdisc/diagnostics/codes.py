@@ -142,7 +142,10 @@ An output defines each field of its adapter exactly once: a missing field, a
 field defined twice, or a field the adapter does not have is an error."""),
     ("E207", "state-write", """
 Only post-actions write state, and they write state variables only: the target
-of an assignment in a primitive's `{ ... }` block must be a state variable."""),
+of an assignment in a primitive's `{ ... }` block must be a state variable, not a
+parameter, and not a `setting`, which is given when connecting and read-only.
+Wrong: `setting ID: int = 1` with `{ ID = out[0] }`. Right: `state id: int` with
+`{ id = out[0] }`."""),
     ("E208", "periodic-connection", """
 A periodic interface runs on the thread of a connection: the one its primitives
 use. It must call primitives of exactly one connection (or the description must
@@ -178,6 +181,18 @@ interface's loops write out at most 4096 of them (65536 for all interfaces).
 Wrong: `interface all(n: int) { for i in 0..n { torque(i, True) } }`. Right:
 `const IDS = [1, 2, 3]` with `interface all() { for id in IDS { torque(id, True) } }`,
 or `interface move(p: int[3]) { for i in 0..2 { goal(IDS[i], p[i]) } }`."""),
+    ("E213", "connect-setting", """
+A `setting` is a value given when connecting (`rdisc run --set BAUD=1000000`, a
+driver's `connect(port, BAUD=1000000)`, a ROS node's `_BAUD:=1000000`), such as a
+bus's baud rate, a servo's ID or a wheel base. It has a default, which holds when
+none is given and which the checks and the link budget use. It is read where state
+is read (arguments, format values, conditions, post-actions, outputs, inputs), but
+not where a constant is needed (an array's size, a range, a delay, a timeout, a
+frequency, a constant), since its value is not known then; a connection's `baud`
+may be an int setting. Wrong: `setting BAUD: int` (no default), `delay WAIT ms`,
+`setting RATE: float = 57600.0` with `baud RATE`. Right:
+`setting BAUD: int in 9600..1000000 = 57600` with `baud BAUD`, and
+`setting WAIT: int = 20` read as `pack "BH" (0x05, WAIT)`."""),
     # -- message formats -------------------------------------------------------
     ("E301", "invalid-pack-format", """
 `pack` and `unpack` take Python struct format strings: an optional byte order

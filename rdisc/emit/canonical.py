@@ -44,6 +44,7 @@ def _document(model: m.Model) -> JsonObject:
         ("constants", {name: _value(v) for name, v in model.constants.items()} or None),
         ("enums", dict(model.enums) or None),
         ("tables", {t.name: [[k, _value(v)] for k, v in t.entries] for t in model.tables.values()} or None),
+        ("settings", [_setting(s) for s in model.settings.values()] or None),
         ("stateVariables", [_state(s) for s in model.states.values()]),
         ("connections", connections),
         ("frames", [_frame(f) for f in model.frames.values()] or None),
@@ -80,6 +81,16 @@ def _state(s: m.StateVariable) -> JsonObject:
     )
 
 
+def _setting(s: m.Setting) -> JsonObject:
+    return _object(
+        ("name", s.name),
+        ("type", s.type.value),
+        ("range", None if s.low is None else [s.low, s.high]),
+        ("value", _embedded(m.Const(s.default, s.type))),
+        ("doc", s.doc),
+    )
+
+
 def _hook(h: m.HookCall | None) -> JsonObject | None:
     if h is None:
         return None
@@ -97,7 +108,7 @@ def _connection(c: m.Connection) -> JsonObject:
         }
     return _object(
         ("name", c.name),
-        ("baud", c.baud),
+        ("baud", c.baud if c.baud_setting is None else f"<{c.baud_setting}>"),
         ("singleThreading", {"freqHz": _number(c.frequency_hz)}),
         ("startup", _hook(c.startup)),
         ("terminate", _hook(c.terminate)),

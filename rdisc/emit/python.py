@@ -133,7 +133,7 @@ def _escape(name: str, taken: Iterable[str]) -> str:
     return name
 
 
-def _params(params: Iterable[tuple[str, Type]], reserved: frozenset[str] = _BODY_NAMES) -> dict[str, str]:
+def _params(params: Iterable[tuple[str, m.AnyType]], reserved: frozenset[str] = _BODY_NAMES) -> dict[str, str]:
     """Python names for parameters or fields: original name → local name."""
     names: dict[str, str] = {}
     originals = [name for name, _ in params]
@@ -142,7 +142,7 @@ def _params(params: Iterable[tuple[str, Type]], reserved: frozenset[str] = _BODY
     return names
 
 
-def _class_name(robot: str) -> str:
+def class_name(robot: str) -> str:
     """`irobot_create` → `IrobotCreate`."""
     name = "".join(part[:1].upper() + part[1:] for part in _identifier(robot).split("_")) or "Robot"
     if keyword.iskeyword(name) or name in _MODULE_NAMES:
@@ -194,7 +194,7 @@ def _docstring(text: str) -> str:
 
 class _Driver:
     def __init__(self, model: m.Model, source_name: str, sources: Mapping[str, SourceFile]) -> None:
-        for names in (model.states, model.connections, model.primitives, model.interfaces, model.adapters,
+        for names in (model.settings, model.states, model.connections, model.primitives, model.interfaces, model.adapters,
                       model.inputs, model.outputs, model.frames):
             for name in names:
                 _identifier(name)  # names enter the text as identifiers: only checked names can
@@ -209,9 +209,9 @@ class _Driver:
         self.source_name = source_name
         self.sources = sources
         self.main_path = model.robot.span.path if model.robot.span else None
-        self.cls = _class_name(model.robot.name)
+        self.cls = class_name(model.robot.name)
         self.exprs = Compiler()
-        taken: set[str] = {"_DEVICE"}
+        taken: set[str] = {"_DEVICE", "_SETTINGS"}
         self.taken = taken
         self.plan = {
             (kind, name): _constant_name(f"{prefix}_{name}", taken)
@@ -401,13 +401,22 @@ class _Driver:
             w.blank(2)
             self.connection(w, c)
         w.blank(2)
-        state = ", ".join(f"{quoted(s.name)}: {literal(s.initial, s.type).text}" for s in model.states.values())
+        state = ", ".join([*(f"{quoted(s.name)}: {literal(s.default, s.type).text}" for s in model.settings.values()),
+                           *(f"{quoted(s.name)}: {literal(s.initial, s.type).text}" for s in model.states.values())])
         by_name = {kind: ", ".join(f"{quoted(name)}: {self.plan[kind, name]}" for name in names)
                    for kind, names in (("connection", model.connections), ("primitive", model.primitives),
                                        ("interface", model.interfaces), ("input", model.inputs))}
+        settings = {"settings": "_SETTINGS"} if model.settings else {}
+        if model.settings:
+            w.line("_SETTINGS = (")
+            with w.indented():
+                w.lines([f"{item}," for item in _param_items(_setting_params(model))])
+            w.line(")")
+            w.line('"""The settings, given when connecting (`connect(port, NAME=value)`, `--set NAME=VALUE`)."""')
+            w.blank(2)
         _construct(w, "_DEVICE = ", "Device", [
             "ROBOT", f"{{{state}}}", f"{{{by_name['connection']}}}", f"{{{by_name['primitive']}}}",
-            f"{{{by_name['interface']}}}", f"{{{by_name['input']}}}"])
+            f"{{{by_name['interface']}}}", f"{{{by_name['input']}}}"], settings)
         w.line('"""The whole description, planned: what the robot runs."""')
 
     def request(self, w: Writer, i: m.DomainInput, fields: tuple[m.Parameter, ...]) -> str:
@@ -547,7 +556,8 @@ class _Driver:
                    [quoted(iface.name), _param_tuple(iface.params), _tuple(calls)], output)
 
     def connection(self, w: Writer, c: m.Connection) -> None:
-        self.comment(w, c.span, f"connection {c.name}: {c.kind}, {c.baud} baud")
+        baud = f"{c.baud} baud" if c.baud_setting is None else f"baud {c.baud_setting} ({c.baud} unless given)"
+        self.comment(w, c.span, f"connection {c.name}: {c.kind}, {baud}")
         periodic = [self.plan["interface", i.name] for i in self.model.interfaces.values()
                     if i.periodic and self.model.owner(i) == c.name]
 
@@ -568,6 +578,8 @@ class _Driver:
                 options[event] = hook(call)
         if c.keepalive is not None:
             options["interval"] = repr(c.keepalive.interval_ms / 1000.0)
+        if c.baud_setting is not None:
+            options["baud_setting"] = quoted(c.baud_setting)
         _construct(w, f"{self.plan['connection', c.name]} = ", "Connection", [quoted(c.name), str(c.baud)], options)
 
     # -- the typed face --------------------------------------------------------------------------
@@ -689,6 +701,9 @@ class _Driver:
             w.line(f"self._robot._call_{kind}({self.plan[kind, name]}, [{values}])")
 
     def connect_function(self, w: Writer) -> None:
+        own = ("port", "timeout", "threads", "on_output", "on_error", "on_io", "robot", self.cls)
+        keywords = _params([(s.name, s.type) for s in self.model.settings.values()], frozenset(own))
+        settings = list(self.model.settings.values())
         with w.block("def connect("):
             w.lines([
                 "port: PortSpec | None = None,",
@@ -698,18 +713,24 @@ class _Driver:
                 "on_output: OutputCallback | None = None,",
                 "on_error: ErrorCallback | None = None,",
                 "on_io: IoCallback | None = None,",
+                *(f"{keywords[s.name]}: {_py_type(s.type)} = {literal(s.default, s.type).text}," for s in settings),
             ])
         w.line(f") -> {self.cls}:")
         with w.indented():
             connections = ", ".join(self.model.connections) or "none"
-            w.line(_docstring(
-                "The robot, running: its ports open, its startup hooks run, its threads started.\n\n"
-                '`port`: a pyserial port name or URL ("/dev/ttyUSB0", "COM3", "socket://host:4000")\n'
-                "or an open port object, for every connection; or a dict {connection: port}; by\n"
-                "default, each connection's address from the description\n"
-                f"(connections: {connections}). `timeout`: seconds to wait for a reply. With\n"
-                "`threads=False`, call `tick()` yourself. Callbacks given here are registered\n"
-                "before anything is opened, so they also see what the startup hooks do."))
+            doc = ("The robot, running: its ports open, its startup hooks run, its threads started.\n\n"
+                   '`port`: a pyserial port name or URL ("/dev/ttyUSB0", "COM3", "socket://host:4000")\n'
+                   "or an open port object, for every connection; or a dict {connection: port}; by\n"
+                   "default, each connection's address from the description\n"
+                   f"(connections: {connections}). `timeout`: seconds to wait for a reply. With\n"
+                   "`threads=False`, call `tick()` yourself. Callbacks given here are registered\n"
+                   "before anything is opened, so they also see what the startup hooks do.")
+            if settings:
+                doc += "\n\nSettings (a value outside its type or range is refused before anything is opened):"
+                for s in settings:
+                    about = f": {s.doc.splitlines()[0]}" if s.doc else ""
+                    doc += f"\n    {keywords[s.name]}" + (f" in {s.range_text()}" if s.low is not None else "") + about
+            w.line(_docstring(doc))
             w.lines([
                 f"robot = {self.cls}(timeout=timeout)",
                 "if on_output is not None:",
@@ -718,9 +739,18 @@ class _Driver:
                 "    robot.on_error(on_error)",
                 "if on_io is not None:",
                 "    robot.on_io(on_io)",
-                "robot.open(port, threads=threads)",
-                "return robot",
             ])
+            given = [f"{quoted(s.name)}: {keywords[s.name]}" for s in settings]
+            bound = ", settings={" + ", ".join(given) + "}" if settings else ""
+            flat = f"robot.open(port, threads=threads{bound})"
+            if len(flat) <= w.width():
+                w.line(flat)
+            else:
+                w.line("robot.open(port, threads=threads, settings={")
+                with w.indented():
+                    w.lines([f"{item}," for item in given])
+                w.line("})")
+            w.line("return robot")
 
 
 # ---- small pieces ------------------------------------------------------------------------------
@@ -766,7 +796,17 @@ def _names(e: m.Expr) -> set[str]:
     return set()
 
 
+def _setting_params(model: m.Model) -> tuple[m.Parameter, ...]:
+    """The settings as the engine takes them: parameters of the whole description."""
+    return tuple(m.Parameter(s.name, s.type, s.low, s.high, s.default) for s in model.settings.values())
+
+
 def _param_tuple(params: tuple[m.Parameter, ...]) -> str:
+    return _tuple(_param_items(params))
+
+
+def _param_items(params: tuple[m.Parameter, ...]) -> list[str]:
+    """Each parameter's `Param(...)` constructor."""
     items = []
     for prm in params:
         bounds = f", {prm.low!r}, {prm.high!r}" if prm.low is not None else ""
@@ -776,7 +816,7 @@ def _param_tuple(params: tuple[m.Parameter, ...]) -> str:
                          f"size={prm.type.size})")
         else:
             items.append(f"Param({quoted(prm.name)}, {_PY_TYPES[prm.type]}{bounds}{default})")
-    return _tuple(items)
+    return items
 
 
 def _construct(w: Writer, prefix: str, name: str, args: list[str], options: Mapping[str, str] = {}) -> None:

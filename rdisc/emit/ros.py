@@ -14,7 +14,7 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 
-from rdisc.emit.python import to_python
+from rdisc.emit.python import class_name, to_python
 from rdisc.emit.python_expr import quoted
 from rdisc.emit.writer import Writer
 from rdisc.semantics import model as m
@@ -179,11 +179,23 @@ class _Bridge:
                 w.line('arrow = {"write": ">", "read": "<"}.get(direction, direction)')
                 w.line('rospy.loginfo("%s %s %s", connection, arrow, shown)')
             w.blank()
-            w.lines([
-                'robot = connect(ports, timeout=float(rospy.get_param("~timeout", 1.0)), on_output=on_output,',
-                '                on_error=on_error, on_io=on_io if rospy.get_param("~trace", False) else None)',
-                "rospy.on_shutdown(robot.close)",
-            ])
+            if self.model.settings:  # each given as the private parameter of its name, `_BAUD:=1000000`
+                w.lines([
+                    'given = (p.name for p in _DEVICE.settings if rospy.has_param(f"~{p.name}"))',
+                    'settings = {name: rospy.get_param(f"~{name}") for name in given}',
+                    f'robot = {class_name(self.model.robot.name)}(timeout=float(rospy.get_param("~timeout", 1.0)))',
+                    "robot.on_output(on_output)",
+                    "robot.on_error(on_error)",
+                    'if rospy.get_param("~trace", False):',
+                    "    robot.on_io(on_io)",
+                    "robot.open(ports, settings=settings)",
+                ])
+            else:
+                w.lines([
+                    'robot = connect(ports, timeout=float(rospy.get_param("~timeout", 1.0)), on_output=on_output,',
+                    '                on_error=on_error, on_io=on_io if rospy.get_param("~trace", False) else None)',
+                ])
+            w.line("rospy.on_shutdown(robot.close)")
             w.blank()
             with w.block("def subscriber(name: str, read: Callable[[Any], dict[str, Any]]) -> Callable[[Any], None]:"):
                 with w.block("def received(msg: Any) -> None:"):

@@ -7,6 +7,17 @@ expressions are interpreted (`rdisc.runtime.evaluate`), in a driver they are
 compiled to Python; tests drive both over generated descriptions with the same
 inputs and device replies and compare bytes, state, outputs, errors and I/O.
 
+Settings. A description's `setting`s are given when connecting (`connect(...,
+settings={NAME: value})` here, a keyword each on a driver's `connect`, `--set NAME=VALUE`
+on the command line); the others keep their defaults. Each value is made its type as
+a parameter's is, then checked against its range and the width of integers; a name
+the description lacks or a value that does not fit is RdisValueError "ROBOT: setting
+S is V, outside LOW..HIGH" ("ROBOT: setting S must be TYPE, not ...", "ROBOT: no
+setting named 'S' (its settings: ...)"), raised before any port is opened. Settings
+are read as state is (they are in the state mapping, and `robot.state` shows them),
+and nothing writes them. A connection whose `baud` is a setting opens its port at
+the setting's value.
+
 Values. State starts at its initial values. Arguments are bound to parameters,
 fields and state with ints widened to floats where a float is declared.
 
@@ -151,7 +162,7 @@ Details both implementations follow (where the above is silent):
   A connection given no port (no port at all, or missing from the dict) opens
   its `address`; one without an address is a ValueError, as is an unknown name.
 - `connect(port=None, timeout=1.0, threads=True, *, on_output=None, on_error=None,
-  on_io=None)`: callbacks given there are registered before anything is opened,
+  on_io=None, settings=None)` (a driver: a keyword per setting in place of `settings`): callbacks given there are registered before anything is opened,
   so they see the startup hooks' I/O and errors too.
 - `connect` that fails (opening, or a startup hook) closes what it opened (as
   `close` does, terminate hooks included) and raises the error. `close` is
@@ -160,7 +171,9 @@ Details both implementations follow (where the above is silent):
 - The command line (`rdisc run` and a generated driver's `__main__`): `--call
   NAME K=V ...` calls an input with its fields, else an interface, else a
   primitive, with its parameters by name; values are int, else float, else
-  True/False, else the string. Without `--port`, every connection opens its
+  True/False, else the string. `--set NAME=VALUE` gives a setting (the text as it
+  is for a string setting, hex for bytes, else read as --call's values); one that
+  does not fit is a usage error. Without `--port`, every connection opens its
   address. `--watch` prints each output as `json.dumps(output_dict)` on stdout,
   one a line; `--trace` prints "CONN > 89 00 c8 7f ff" (written), "CONN < 00"
   (read) and "CONN lines dtr=False" (modem lines set) on stderr; errors reported

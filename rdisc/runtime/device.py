@@ -60,8 +60,9 @@ class Description:
         interfaces = {name: planned[name] for name in model.interfaces}
         inputs = {i.name: self._input(i, interfaces) for i in model.inputs.values()}
         connections = {c.name: self._connection(c, interfaces) for c in model.connections.values()}
-        self.device = engine.Device(self.name, {s.name: s.initial for s in model.states.values()}, connections,
-                                    primitives, interfaces, inputs)
+        state = {s.name: s.default for s in model.settings.values()} | {s.name: s.initial for s in model.states.values()}
+        settings = tuple(_param(s.name, s.type, s.low, s.high, s.default) for s in model.settings.values())
+        self.device = engine.Device(self.name, state, connections, primitives, interfaces, inputs, settings)
 
     def connect(
         self,
@@ -72,14 +73,17 @@ class Description:
         on_output: engine.OutputCallback | None = None,
         on_error: engine.ErrorCallback | None = None,
         on_io: engine.IoCallback | None = None,
+        settings: Mapping[str, Any] | None = None,
     ) -> engine.Robot:
         """The robot, running: its ports open, its startup hooks run, its threads started.
 
         `port` is one port (a pyserial port name or URL, or an open pyserial-like
         object) for every connection, or a dict from connection name to port; a
-        connection given none opens its `address`. Callbacks given here are
-        registered before anything is opened, so they also see what the startup
-        hooks do.
+        connection given none opens its `address`. `settings` gives the description's
+        settings by name (the others keep their defaults); a value that does not fit its
+        type or range is an RdisValueError, before any port is opened. Callbacks given
+        here are registered before anything is opened, so they also see what the
+        startup hooks do.
         """
         robot = engine.Robot(self.device, timeout=timeout)
         if on_output is not None:
@@ -88,7 +92,7 @@ class Description:
             robot.on_error(on_error)
         if on_io is not None:
             robot.on_io(on_io)
-        robot.open(port, threads=threads)
+        robot.open(port, threads=threads, settings=settings)
         return robot
 
     # ---- plans ----------------------------------------------------------------------------------
@@ -189,7 +193,7 @@ class Description:
         return engine.Connection(
             c.name, c.baud, c.address, c.terminator_bytes(), c.frequency_hz, periodic, hook(c.startup),
             hook(c.terminate), hook(keepalive.call if keepalive else None),
-            keepalive.interval_ms / 1000.0 if keepalive else 0.0,
+            keepalive.interval_ms / 1000.0 if keepalive else 0.0, c.baud_setting,
         )
 
 

@@ -41,6 +41,12 @@ class ConnectionBudget:
     periodic: tuple[Exchange, ...]
     keepalive: Exchange | None
     keepalive_interval_ms: float | None
+    baud_setting: str | None = None  # the setting giving the baud rate: `baud` is its default
+
+    @property
+    def baud_text(self) -> str:
+        """`57600 baud`, or `57600 baud (the default of setting BAUD)`."""
+        return f"{self.baud} baud" + ("" if self.baud_setting is None else f" (the default of setting `{self.baud_setting}`)")
 
     @property
     def capacity(self) -> float:
@@ -65,7 +71,7 @@ class ConnectionBudget:
 
     def lines(self) -> list[str]:
         """The budget in words, for `rdisc check --verbose`."""
-        out = [f"connection `{self.connection}`: {self.baud} baud, {self.capacity:g} bytes/s"]
+        out = [f"connection `{self.connection}`: {self.baud_text}, {self.capacity:g} bytes/s"]
         if self.periodic:
             out.append(f"  every tick ({self.frequency_hz:g} Hz, {self.tick_ms:.1f} ms):")
             out += [f"    {_exchange(e)}" for e in self.periodic]
@@ -94,7 +100,7 @@ def budget(model: m.Model, diagnostics: Diagnostics) -> list[ConnectionBudget]:
         )
         keepalive = exchange(model, model.interfaces[conn.keepalive.call.interface], conn.name) if conn.keepalive else None
         b = ConnectionBudget(conn.name, conn.baud, conn.frequency_hz, periodic, keepalive,
-                             conn.keepalive.interval_ms if conn.keepalive else None)
+                             conn.keepalive.interval_ms if conn.keepalive else None, conn.baud_setting)
         _warn(model, conn, b, diagnostics)
         budgets.append(b)
     return budgets
@@ -118,7 +124,7 @@ def _warn(model: m.Model, conn: m.Connection, b: ConnectionBudget, diagnostics: 
     if b.load > b.capacity:
         diagnostics.report(
             "W401", conn.span,
-            f"`{conn.name}` schedules {b.load:.0f} bytes/s, more than {conn.baud} baud carries "
+            f"`{conn.name}` schedules {b.load:.0f} bytes/s, more than {b.baud_text} carries "
             f"({b.capacity:g} bytes/s)",
             help="raise the baud rate, lower the frequency, or lengthen the keepalive interval",
         )

@@ -23,6 +23,7 @@ from rdisc.semantics.resolve import Symbols, Unit, check_name, suggest
 from rdisc.semantics.types import Env, Typer, describe, unify
 from rdisc.source import Span
 from rdisc.syntax import ast
+from rdisc.syntax.printer import print_type
 
 FLOAT_LIMITS = {"e": 65504.0, "f": 3.4028234663852886e38}  # the largest finite half and single floats
 MAX_BAUD = 100_000_000  # bit/s: no serial line is faster
@@ -42,7 +43,7 @@ MAX_TABLE = 4096  # entries of a reply table
 MAX_UNROLLED = 4096  # calls an interface's body makes, its loops written out
 MAX_UNROLLED_ALL = 65_536  # the same for all interfaces: the work loops cause stays bounded
 _TYPES = {t.value: t for t in Type}
-_NOTHING = Env({}, "in a setting", "")
+_NOTHING = Env({}, "where a constant is needed", "")
 
 
 @dataclass(frozen=True, slots=True)
@@ -71,15 +72,19 @@ class _Checker:
         self.frames: dict[str, m.Frame] = {}
         self.primitives: dict[str, m.Primitive] = {}
         self.written = 0  # calls in the interfaces' bodies, loops written out
+        self.settings: dict[str, m.Setting] = {}
 
     # -- the whole description ----------------------------------------------------------
 
     def run(self) -> m.Model | None:
         adapters = {name: self.adapter(decl) for name, decl in self.s.adapters.items()}
         states = {name: self.state(decl) for name, decl in self.s.states.items()}
-        self.state_env = {n: (Scope.STATE, s.type) for n, s in states.items()}
+        self.typer.settings = set(self.s.settings)
+        settings = self.settings = {name: self.user_setting(decl) for name, decl in self.s.settings.items()}
+        self.state_env = {n: (Scope.STATE, s.type) for n, s in settings.items()}  # type: ignore[misc]
+        self.state_env.update({n: (Scope.STATE, s.type) for n, s in states.items()})  # type: ignore[misc]
         for keyword, name in self.s.damaged:  # lost to a syntax error: readable, of unknown type
-            if keyword == "state":
+            if keyword in ("state", "setting"):
                 self.state_env.setdefault(name, (Scope.STATE, None))  # type: ignore[arg-type]
         tables = {name: self.table(name, decl) for name, decl in self.s.constants.items()
                   if isinstance(decl.value, ast.TableLit)}
@@ -115,6 +120,7 @@ class _Checker:
             constants={n: v for n, v in constants.items() if v is not None},
             tables={n: t for n, t in tables.items() if t is not None},
             enums=enums,
+            settings=settings,
         )
 
     # -- shared pieces ---------------------------------------------------------------------
@@ -179,13 +185,13 @@ class _Checker:
         return tuple(out)
 
     def param_default(self, p: ast.Param, type_: m.AnyType | None, low: float | None,
-                      high: float | None) -> m.Value | None:
-        """`= value`: a constant of the parameter's type (an int made a float for a float
-        parameter), within its range."""
+                      high: float | None, what: str = "parameter") -> m.Value | None:
+        """`= value`: a constant of the parameter's (or setting's) type (an int made a float for
+        a float parameter), within its range."""
         if p.default is None:
             return None
         value = self.typer.expr(p.default, _NOTHING)
-        self.flow(value, type_, p.default.span, f"the default of parameter `{p.name.text}`")
+        self.flow(value, type_, p.default.span, f"the default of {what} `{p.name.text}`")
         constant = self.typer.constant(value)
         if constant is None:
             if value.type is not None:
@@ -194,12 +200,13 @@ class _Checker:
         constant = m.coerce(constant, type_)
         for item in constant if isinstance(constant, tuple) else (constant,):
             if low is not None and high is not None and not _in_range(item, low, high):
-                self.d.report("E403", p.default.span, f"{_ranged(item)} is outside the range of parameter "
+                self.d.report("E403", p.default.span, f"{_ranged(item)} is outside the range of {what} "
                               f"`{p.name.text}`", label=f"in {low!r}..{high!r}")
                 return None
         return constant  # type: ignore[return-value]
 
-    def param_range(self, p: ast.Param, type_: Type | None) -> tuple[float | None, float | None]:
+    def param_range(self, p: ast.Param, type_: Type | None,
+                    what: str = "parameter") -> tuple[float | None, float | None]:
         """`in low..high`: constant numbers of the parameter's type, low <= high; for bytes, the
         number of bytes."""
         if p.low is None or p.high is None:
@@ -212,7 +219,7 @@ class _Checker:
         if low is None or high is None:
             return None, None
         if type_ is Type.INT and (low != int(low) or high != int(high)):
-            self.d.report("E204", p.low.span.to(p.high.span), "an int parameter's range has int bounds")
+            self.d.report("E204", p.low.span.to(p.high.span), f"an int {what}'s range has int bounds")
             return None, None
         if type_ is Type.BYTES and (low != int(low) or high != int(high) or low < 0):
             self.d.report("E204", p.low.span.to(p.high.span), "a length's range has int bounds, 0 or more")
@@ -435,6 +442,47 @@ class _Checker:
                     initial = m.coerce(value, type_)
         return m.StateVariable(decl.name.text, type_, initial, decl.doc, decl.span)  # type: ignore[arg-type]
 
+    def user_setting(self, decl: ast.SettingDecl) -> m.Setting:
+        """`setting NAME: TYPE in LOW..HIGH = DEFAULT`: a parameter of the whole description, given
+        when connecting. Its default is required: the checks and the link budget use it."""
+        check_name(decl.name, "setting", self.d)
+        state = self.s.states.get(decl.name.text)
+        if state is not None:
+            self.d.report("E101", decl.name.span, f"`{decl.name.text}` is declared as a state variable and as a "
+                          "setting", labels=(Label(state.name.span, "the state variable"),),
+                          help="expressions read both by name: rename one")
+        type_ = self.type_name(decl.type)
+        param = ast.Param(decl.name, decl.type, decl.span, decl.low, decl.high, decl.default)
+        low, high = self.param_range(param, type_.element if isinstance(type_, m.Array) else type_, "setting")
+        default = self.param_default(param, type_, low, high, "setting")
+        if decl.default is None:
+            self.d.report("E213", decl.name.span, f"setting `{decl.name.text}` has no default",
+                          help=f"give the value it has when none is given: `setting {decl.name.text}: "
+                          f"{print_type(decl.type)} = ...`; the checks and the link budget use it")
+        return m.Setting(decl.name.text, type_, default, low, high, decl.doc, decl.span)  # type: ignore[arg-type]
+
+    def baud_setting(self, ref: ast.Ref) -> float | None:
+        """`baud NAME` of an int setting: its default is checked as a baud rate, and is what the
+        link budget assumes; the value given when connecting is the port's."""
+        setting = self.settings[ref.name]
+        declared = (Label(self.s.settings[ref.name].name.span, "declared here"),)
+        self.typer.reads.add(ref.name)
+        if setting.type is None or setting.default is None:  # reported
+            return None
+        if setting.type is not Type.INT:
+            self.d.report("E213", ref.span, f"the baud rate is an int, but setting `{ref.name}` is "
+                          f"{describe(setting.type)}", labels=declared)
+            return None
+        baud = int(setting.default)  # type: ignore[arg-type]  # an int: its type is
+        if not 0 < baud <= MAX_BAUD:
+            self.d.report("E204", ref.span, f"the baud rate must be a positive integer at most {MAX_BAUD}, but "
+                          f"the default of setting `{ref.name}` is {baud}", labels=declared)
+            return None
+        if baud not in STANDARD_BAUDS:
+            self.d.report("W201", ref.span, f"{baud} (the default of setting `{ref.name}`) is not a standard "
+                          "baud rate", help="standard rates include 9600, 19200, 38400, 57600, 115200")
+        return baud
+
     def connection(self, decl: ast.ConnectionDecl, interface_params) -> m.Connection:
         name = decl.name
         if decl.kind.text not in CONNECTION_KINDS:
@@ -442,7 +490,11 @@ class _Checker:
                           help="connections are `serial` or `tcp` (a `socket://host:port` port)")
         baud_clause = self.once([a for a in decl.attrs if isinstance(a, ast.Baud)], "`baud`", name)
         baud: float | None = DEFAULT_BAUD
-        if isinstance(baud_clause, ast.Baud):
+        given = baud_clause.value if isinstance(baud_clause, ast.Baud) else None
+        baud_setting = given.name if isinstance(given, ast.Ref) and given.name in self.settings else None
+        if baud_setting is not None:
+            baud = self.baud_setting(given)  # type: ignore[arg-type]
+        elif isinstance(baud_clause, ast.Baud):
             baud = self.setting(baud_clause.value, "the baud rate", MAX_BAUD)
             if baud is not None:
                 if baud != int(baud) or baud <= 0:
@@ -491,7 +543,7 @@ class _Checker:
             self.d.report("E204", address_clause.value.span, "a tcp connection's address is `socket://HOST:PORT`")  # type: ignore[union-attr]
         return m.Connection(
             name.text, decl.kind.text, int(baud or 0), float(frequency or 0), hooks["startup"], hooks["terminate"],
-            keepalive, decl.doc, decl.span, terminator, address,
+            keepalive, decl.doc, decl.span, terminator, address, baud_setting,
         )
 
     def duration(self, d: ast.Duration, what: str) -> float | None:
@@ -980,6 +1032,11 @@ class _Checker:
             value = self.typer.expr(assign.value, env)
             target = assign.target.text
             state = self.s.states.get(target)
+            if state is None and target in self.settings:
+                self.d.report("E207", assign.target.span, f"cannot assign `{target}`: it is a setting, given when "
+                              "connecting", help="a setting is read-only: keep what the device reports in a "
+                              "state variable")
+                continue
             if state is None:
                 what = "it is a parameter" if target in params else "it is not a state variable"
                 self.d.report(

@@ -244,6 +244,23 @@ class StateVariable:
 
 
 @dataclass(frozen=True, slots=True)
+class Setting:
+    """A value given when connecting (a baud rate, a servo's ID, a wheel base): read-only,
+    read by expressions as state is; `default` when none is given, and what the checks use."""
+
+    name: str
+    type: AnyType
+    default: Value
+    low: int | float | None = None  # the range a given value must be in, when declared
+    high: int | float | None = None
+    doc: str | None = None
+    span: Span | None = _span
+
+    def range_text(self) -> str:
+        return f"{self.low!r}..{self.high!r}"
+
+
+@dataclass(frozen=True, slots=True)
 class HookCall:
     """A connection event calling an interface; arguments see state only."""
 
@@ -271,6 +288,7 @@ class Connection:
     span: Span | None = _span
     terminator: str = "\n"  # ends a reply line; "\n" also takes a "\r" before it
     address: str | None = None  # the port opened when none is given (path or URL)
+    baud_setting: str | None = None  # the setting that gives the baud rate (`baud` is then its default)
 
     def terminator_bytes(self) -> bytes:
         return self.terminator.encode("latin-1")
@@ -608,6 +626,7 @@ class Model:
     constants: dict[str, Value] = field(default_factory=dict)
     enums: dict[str, dict[str, int]] = field(default_factory=dict)
     tables: dict[str, Table] = field(default_factory=dict)
+    settings: dict[str, Setting] = field(default_factory=dict)
 
     def owner(self, iface: Interface) -> str | None:
         """The connection whose thread runs a periodic interface: its first primitive's."""

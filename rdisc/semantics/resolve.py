@@ -36,6 +36,7 @@ class Symbols:
 
     robot: ast.RobotDecl | None = None
     states: dict[str, ast.StateDecl] = field(default_factory=dict)
+    settings: dict[str, ast.SettingDecl] = field(default_factory=dict)
     connections: dict[str, ast.ConnectionDecl] = field(default_factory=dict)
     primitives: dict[str, ast.PrimitiveDecl] = field(default_factory=dict)
     interfaces: dict[str, ast.InterfaceDecl] = field(default_factory=dict)
@@ -57,6 +58,7 @@ class Symbols:
 
 _KINDS = {
     ast.StateDecl: ("states", "state variable"),
+    ast.SettingDecl: ("settings", "setting"),
     ast.ConnectionDecl: ("connections", "connection"),
     ast.PrimitiveDecl: ("primitives", "primitive"),
     ast.InterfaceDecl: ("interfaces", "interface"),

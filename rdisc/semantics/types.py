@@ -101,6 +101,7 @@ class Typer:
         self.failed: set[str] = set()  # constants whose value has an error already reported
         self.failed_reads = 0  # reads of those: each one's fault is reported once, at the constant
         self.enums: dict[str, dict[str, int]] = {}  # enumerations: member → value
+        self.settings: set[str] = set()  # names of settings: given when connecting, so never constant
 
     def constant(self, expr: m.Expr) -> object:
         """The value of a constant expression, or None when it is not constant."""
@@ -173,6 +174,13 @@ class Typer:
             return self._const(m.Const(value, type_, e.span))  # type: ignore[arg-type]
         if found is None and e.name in self.failed:
             self.failed_reads += 1
+            return m.Var(e.name, Scope.STATE, None, e.span)  # type: ignore[arg-type]
+        if found is None and e.name in self.settings:
+            self.diagnostics.report(
+                "E213", e.span, f"setting `{e.name}` is given only when connecting, so it cannot stand {env.where}",
+                help="a setting is read where state is: in arguments, format values, conditions, post-actions "
+                "and outputs; a connection's `baud` may be one",
+            )
             return m.Var(e.name, Scope.STATE, None, e.span)  # type: ignore[arg-type]
         if found is None:
             self.diagnostics.report(

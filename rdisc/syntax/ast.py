@@ -216,6 +216,19 @@ class StateDecl:
 
 
 @dataclass(frozen=True, slots=True)
+class SettingDecl:
+    """`setting NAME: TYPE in LOW..HIGH = DEFAULT`: a value the user gives when connecting."""
+
+    name: Ident
+    type: TypeRef
+    default: Expr | None
+    span: Span = _span
+    doc: str | None = None
+    low: Expr | None = None
+    high: Expr | None = None
+
+
+@dataclass(frozen=True, slots=True)
 class Baud:
     value: Expr
     span: Span = _span
@@ -577,7 +590,7 @@ class FrameDecl:
 
 
 Decl = (
-    ImportDecl | RobotDecl | StateDecl | ConnectionDecl | PrimitiveDecl | InterfaceDecl | AdapterDecl | InputDecl
+    ImportDecl | RobotDecl | StateDecl | SettingDecl | ConnectionDecl | PrimitiveDecl | InterfaceDecl | AdapterDecl | InputDecl
     | OutputDecl | ConstDecl | EnumDecl | FrameDecl
 )
 

@@ -255,6 +255,11 @@ def _transformer_class():
             name, type_, init = c
             return ast.StateDecl(self.b.ident(name), self.b.type_ref(type_), init, self.b.span(meta), self.b.doc(meta))
 
+        def setting_decl(self, meta: object, c: list[Any]) -> ast.SettingDecl:
+            name, type_, low, high, default = c
+            return ast.SettingDecl(self.b.ident(name), self.b.type_ref(type_), default, self.b.span(meta),
+                                   self.b.doc(meta), low, high)
+
         def connection_decl(self, meta, c):
             return ast.ConnectionDecl(
                 self.b.ident(c[0]), self.b.ident(c[1]), tuple(c[2:]), self.b.span(meta), self.b.doc(meta)

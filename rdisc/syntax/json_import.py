@@ -295,10 +295,11 @@ def _kind(v: JValue) -> str:
 # ---- the description ----------------------------------------------------------------------
 
 _TOP = (
-    "name", "author", "description", "version", "doc", "constants", "enums", "tables", "stateVariables",
-    "connections", "frames", "primitives", "interfaces", "domainAdapters", "domainInterfaces", "domainOutputs",
+    "name", "author", "description", "version", "doc", "constants", "enums", "tables", "settings",
+    "stateVariables", "connections", "frames", "primitives", "interfaces", "domainAdapters", "domainInterfaces", "domainOutputs",
 )  # fmt: skip
 _SECTIONS = {  # list member: (its elements in words, the RDIS keyword declaring one)
+    "settings": ("a setting", "setting"),
     "stateVariables": ("a state variable", "state"),
     "spp": ("a connection", "connection"),
     "tcp": ("a connection", "connection"),
@@ -310,6 +311,7 @@ _SECTIONS = {  # list member: (its elements in words, the RDIS keyword declaring
     "domainOutputs": ("a domain output", "output"),
 }
 _STATE = ("name", "type", "value", "doc")
+_SETTING = ("name", "type", "range", "value", "doc")
 _CONNECTION = (
     "name", "baud", "singleThreading", "startup", "terminate", "keepalive", "terminator", "address", "doc",
 )  # fmt: skip
@@ -380,6 +382,7 @@ class _Importer:
         constants = self.constants(top.get("constants")) + self.tables(top.get("tables"))
         enums = self.enums(top.get("enums"))
         frames = self.each(top, "frames", self.frame)
+        settings = self.each(top, "settings", self.setting)
         states = self.each(top, "stateVariables", self.state)
         primitives = self.each(top, "primitives", self.primitive)
         interfaces = self.each(top, "interfaces", self.interface)
@@ -391,6 +394,7 @@ class _Importer:
         decls += [
             *constants,
             *enums,
+            *settings,
             *states,
             *connections,
             *frames,
@@ -605,6 +609,22 @@ class _Importer:
         if name is None or type_ is None:
             return None
         return ast.StateDecl(name, type_, init, obj.span, self.doc(m))
+
+    def setting(self, obj: JObject) -> ast.SettingDecl | None:
+        m = self.members(obj, "a setting", _SETTING)
+        name = self.name(obj, m, "a setting")
+        type_ = self.required(obj, m, "type", "a setting", self.type_ref)
+        default = None if "value" not in m else self.expr(m["value"], _type_text(type_) if type_ else None)
+        low = high = None
+        if "range" in m:
+            bounds = self.array(m["range"], "a setting's range")
+            if len(bounds) != 2:
+                self.error(m["range"].span, "a setting's range is `[low, high]`")
+                return None
+            low, high = self.expr(bounds[0], None), self.expr(bounds[1], None)
+        if name is None or type_ is None:
+            return None
+        return ast.SettingDecl(name, type_, default, obj.span, self.doc(m), low, high)
 
     def connections(self, value: JValue | None) -> list[ast.ConnectionDecl]:
         groups = self.object(value, "`connections`") if value is not None else None

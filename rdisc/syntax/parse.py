@@ -31,6 +31,7 @@ DECL_KEYWORDS = (
     "import",
     "robot",
     "state",
+    "setting",
     "connection",
     "primitive",
     "interface",

@@ -78,6 +78,10 @@ def _code(d: ast.Decl) -> list[str]:
         case ast.StateDecl(name, type_, init):
             value = "" if init is None else f" = {print_expr(init)}"
             return [f"state {name.text}: {print_type(type_)}{value}"]
+        case ast.SettingDecl(name, type_, default, _, _, low, high):
+            bounds = "" if low is None or high is None else f" in {print_expr(low)}..{print_expr(high)}"
+            value = "" if default is None else f" = {print_expr(default)}"
+            return [f"setting {name.text}: {print_type(type_)}{bounds}{value}"]
         case ast.ConnectionDecl(name, kind, attrs):
             return _block(f"connection {name.text}: {kind.text}", [_connection_attr(a) for a in attrs])
         case ast.PrimitiveDecl():

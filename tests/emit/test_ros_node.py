@@ -10,6 +10,8 @@ import subprocess
 import sys
 from pathlib import Path
 
+import pytest
+
 from rdisc.compile import compile_path
 from rdisc.emit.python import to_python
 from rdisc.emit.ros import to_ros
@@ -65,9 +67,42 @@ def test_list_items_and_yaw_are_code_too(tmp_path: Path) -> None:
     assert '    msg.position = _ros_with(msg.position, 0, contents["position"])\n' in node
 
 
-def test_ruff_and_mypy_strict_find_nothing(tmp_path: Path) -> None:
-    path = tmp_path / "irobot_create_node.py"
-    path.write_text(_node("create")[0], encoding="utf-8")
+SETTINGS = """\
+robot servos { author "tests" }
+setting BAUD: int in 9600..1000000 = 57600
+setting ID: int in 0..253 = 1
+connection bus: serial { baud BAUD startup hello(ID) }
+primitive ping(id: int) on bus pack "BB" (0xFF, id)
+interface hello(id: int) { ping(id) }
+"""
+
+
+def _settings_node(tmp_path: Path) -> str:
+    source = tmp_path / "servos.rdis"
+    source.write_text(SETTINGS, encoding="utf-8")
+    compilation = compile_path(str(source))
+    assert compilation.model is not None
+    return to_ros(compilation.model, "servos.rdis", sources=compilation.sources)
+
+
+def test_settings_are_read_as_private_parameters(tmp_path: Path) -> None:
+    assert """\
+    given = (p.name for p in _DEVICE.settings if rospy.has_param(f"~{p.name}"))
+    settings = {name: rospy.get_param(f"~{name}") for name in given}
+    robot = Servos(timeout=float(rospy.get_param("~timeout", 1.0)))
+    robot.on_output(on_output)
+    robot.on_error(on_error)
+    if rospy.get_param("~trace", False):
+        robot.on_io(on_io)
+    robot.open(ports, settings=settings)
+    rospy.on_shutdown(robot.close)
+""" in _settings_node(tmp_path)
+
+
+@pytest.mark.parametrize("example", ["create", "servos"])
+def test_ruff_and_mypy_strict_find_nothing(example: str, tmp_path: Path) -> None:
+    path = tmp_path / f"{example}_node.py"
+    path.write_text(_node(example)[0] if example == "create" else _settings_node(tmp_path), encoding="utf-8")
     for command in (["ruff", "check", "--isolated", "--no-cache"],
                     ["mypy", "--strict", "--no-error-summary", "--cache-dir", str(tmp_path / "cache")]):
         done = subprocess.run([sys.executable, "-m", *command, str(path)], capture_output=True, text=True,

@@ -11,10 +11,12 @@ started here is stopped here.
 from __future__ import annotations
 
 import os
+import select
 import shutil
 import signal
 import socket
 import subprocess
+import termios
 import time
 from collections.abc import Callable, Iterator
 from pathlib import Path
@@ -247,3 +249,37 @@ def test_signals_at_any_moment_leave_the_robot_stopped(ros_env: dict[str, str], 
     assert done.returncode == 0, done.stderr
     with CreateEmulator() as device:
         device.signal_once_open(_start_node(node_path, ros_env, device), after, signals, gap)
+
+
+SETTINGS = """\
+robot servos { author "tests" }
+setting BAUD: int in 9600..1000000 = 57600
+setting ID: int in 0..253 = 1
+connection bus: serial { baud BAUD startup hello(ID) }
+primitive ping(id: int) on bus pack "BB" (0xFF, id)
+interface hello(id: int) { ping(id) }
+"""
+
+
+def test_settings_are_the_node_s_private_parameters(ros_env: dict[str, str], tmp_path: Path) -> None:
+    source, path = tmp_path / "servos.rdis", tmp_path / "servos_node.py"
+    source.write_text(SETTINGS, encoding="utf-8")
+    done = subprocess.run(["python", "-m", "rdisc", "emit-ros", str(source), "-o", str(path)],
+                          cwd=REPO, capture_output=True, text=True, check=False)
+    assert done.returncode == 0, done.stderr
+    master, slave = os.openpty()
+    node = subprocess.Popen([PYTHON3, str(path), f"_port:={os.ttyname(slave)}", "_ID:=9", "_BAUD:=115200"],
+                            env=ros_env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    try:
+        received = b""
+        deadline = time.monotonic() + 30
+        while len(received) < 2 and time.monotonic() < deadline:
+            ready, _, _ = select.select([master], [], [], 0.2)
+            if ready:
+                received += os.read(master, 64)
+        assert received == b"\xff\x09", _stop(node)  # the startup hook, with the ID given
+        assert termios.tcgetattr(slave)[5] == termios.B115200  # the port opened at the baud given
+    finally:
+        _stop(node)
+        os.close(master)
+        os.close(slave)

@@ -1038,6 +1038,7 @@ class Connection:
     terminate: Hook | None = None
     keepalive: Hook | None = None
     interval: float = 0.0  # seconds between keepalives
+    baud_setting: str | None = None  # the setting that gives the baud rate (`baud` is its default)
 
 
 @dataclass(frozen=True, slots=True)
@@ -1045,11 +1046,12 @@ class Device:
     """A whole description, planned: what a Robot runs."""
 
     name: str
-    state: Mapping[str, Value]  # the initial values
+    state: Mapping[str, Value]  # the initial values, and the settings' defaults
     connections: Mapping[str, Connection]
     primitives: Mapping[str, Primitive]
     interfaces: Mapping[str, Interface]
     inputs: Mapping[str, Input]
+    settings: tuple[Param, ...] = ()  # given when connecting; read as state is, never written
 
 
 def _floats(params: tuple[Param, ...]) -> tuple[int, ...]:
@@ -1175,21 +1177,48 @@ def _widen(owner: str, floats: tuple[int, ...], values: Args) -> None:
         raise RdisValueError(f"{owner}: {err}") from None
 
 
-def _in_ranges(owner: str, params: tuple[Param, ...], ranged: tuple[int, ...], values: Args) -> None:
-    """A value outside its parameter's declared range is refused before anything is sent."""
+def _in_ranges(owner: str, params: tuple[Param, ...], ranged: tuple[int, ...], values: Args,
+               role: str = "parameter") -> None:
+    """A value outside its parameter's (or setting's) declared range is refused before anything is sent."""
     for i in ranged:
         p, value = params[i], values[i]
         low, high = p.low, p.high
         assert low is not None and high is not None  # `ranged` holds the parameters with a range
         if isinstance(value, bytes):
             if not low <= len(value) <= high:
-                raise RdisValueError(f"{owner}: parameter {p.name} has {len(value)} bytes, outside {low!r}..{high!r}")
+                raise RdisValueError(f"{owner}: {role} {p.name} has {len(value)} bytes, outside {low!r}..{high!r}")
         elif isinstance(value, tuple):
             for k, item in enumerate(value):
                 if not low <= item <= high:
-                    raise RdisValueError(f"{owner}: parameter {p.name}[{k}] is {item!r}, outside {low!r}..{high!r}")
+                    raise RdisValueError(f"{owner}: {role} {p.name}[{k}] is {item!r}, outside {low!r}..{high!r}")
         elif not low <= value <= high:
-            raise RdisValueError(f"{owner}: parameter {p.name} is {value!r}, outside {low!r}..{high!r}")
+            raise RdisValueError(f"{owner}: {role} {p.name} is {value!r}, outside {low!r}..{high!r}")
+
+
+def bind_settings(device: Device, given: Mapping[str, Any] | None) -> dict[str, Value]:
+    """The settings given when connecting, by name, each made its type (an int taken for a float)
+    and checked against its range and the width of integers; the others keep their defaults.
+    A name the description does not declare, or a value that does not fit, is an RdisValueError
+    naming the setting, raised before any port is opened."""
+    bound = {p.name: device.state[p.name] for p in device.settings}
+    declared = {p.name: p for p in device.settings}
+    for name, value in (given or {}).items():
+        param = declared.get(name)
+        if param is None:
+            known = ", ".join(declared) or "none"
+            raise RdisValueError(f"{device.name}: no setting named {name!r} (its settings: {known})")
+        try:
+            accepted = _accept_param(value, param, f"{device.name}: setting {name}")
+        except TypeError as err:
+            raise RdisValueError(str(err)) from None
+        for item in accepted if param.size is not None else (accepted,):
+            if type(item) is int and not -MAX_INT <= item <= MAX_INT:
+                raise RdisValueError(f"{device.name}: setting {name} is a {item.bit_length()}-bit integer; "
+                                     "integers are limited to 64 bits and a sign")
+        if param.low is not None:
+            _in_ranges(device.name, (param,), (0,), [accepted], "setting")
+        bound[name] = accepted
+    return bound
 
 
 class State(Mapping[str, Value]):
@@ -1309,14 +1338,14 @@ class _Link:
         self.port = port
 
 
-def _open_port(connection: Connection, url: str, timeout: float) -> Port:
-    """A port opened with pyserial (any port name or URL it knows) at the connection's baud, 8N1."""
+def _open_port(connection: Connection, url: str, timeout: float, baud: int) -> Port:
+    """A port opened with pyserial (any port name or URL it knows) at `baud`, 8N1."""
     try:
         import serial  # type: ignore[import-untyped, import-not-found, unused-ignore]
     except ImportError as err:
         raise RdisConnectionError(f"{connection.name}: opening {url} needs pyserial (pip install pyserial)") from err
     try:
-        port: Port = serial.serial_for_url(url, baudrate=connection.baud, bytesize=8, parity="N", stopbits=1,
+        port: Port = serial.serial_for_url(url, baudrate=baud, bytesize=8, parity="N", stopbits=1,
                                            timeout=timeout, write_timeout=timeout)
     except (serial.SerialException, OSError, ValueError) as err:
         raise RdisConnectionError(f"{connection.name}: cannot open {url}: {err}") from err
@@ -1537,18 +1566,22 @@ class Robot:
 
     # ---- lifecycle ----------------------------------------------------------------------------------
 
-    def open(self, port: PortSpec | None = None, *, threads: bool = True) -> None:
-        """Open the ports, run the startup hooks, then start the connections' threads.
+    def open(self, port: PortSpec | None = None, *, threads: bool = True,
+             settings: Mapping[str, Any] | None = None) -> None:
+        """Bind the settings, open the ports, run the startup hooks, then start the connections' threads.
 
         `port`: a pyserial port name or URL ("/dev/ttyUSB0", "COM3", "socket://host:4000")
         or an open port object, for every connection; or a dict {connection: port}; a
-        connection given none opens its address from the description. With
+        connection given none opens its address from the description. `settings`: values
+        of the description's settings by name (the others keep their defaults); one that
+        does not fit is an RdisValueError, before anything is opened. With
         `threads=False` no thread is started: call `tick()` from your own loop. If any of
         it fails, what was opened is closed again (terminate hooks included) and the
         error is raised.
         """
         if self._running or self._closed:
             raise RdisConnectionError(f"{self.name}: already opened")
+        self._state = {**self._state, **bind_settings(self.device, settings)}
         try:
             self._open_links(port)
             self._running = True
@@ -1637,7 +1670,10 @@ class Robot:
             by_name = isinstance(where, (str, os.PathLike))
             key: object = os.fspath(where) if by_name else id(where)
             if key not in opened:
-                io = _open_port(connections[name], os.fspath(where), self.timeout) if by_name else where
+                connection = connections[name]
+                setting = connection.baud_setting  # an int setting: the checker holds it to that type
+                baud: Any = self._state[setting] if setting is not None else connection.baud
+                io = _open_port(connection, os.fspath(where), self.timeout, baud) if by_name else where
                 opened[key] = _Port(io, owned=by_name)
             self._links[name] = _Link(connections[name], opened[key])
 
@@ -2053,6 +2089,9 @@ def add_arguments(parser: argparse.ArgumentParser, device: Device | None = None)
     parser.add_argument("--call", action="append", nargs="+", default=[], metavar="NAME [K=V ...]",
                         help="call an input (or an interface, or a primitive) with named values; repeat for "
                              f"several calls, in order{inputs}")
+    settings = f" (settings: {', '.join(p.name for p in device.settings)})" if device and device.settings else ""
+    parser.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
+                        help=f"give a setting of the description its value; repeat for several{settings}")
     parser.add_argument("--watch", action="store_true", help="print each output as a JSON line as it arrives")
     parser.add_argument("--trace", action="store_true", help="print every byte written and read, in hex, on stderr")
     parser.add_argument("--duration", type=float, metavar="S",
@@ -2068,6 +2107,7 @@ def run_command(args: argparse.Namespace, robot: Robot, prog: str) -> int:
     0 done; 1 the device failed; 2 a usage error; 130 after SIGINT; 143 after SIGTERM."""
     try:
         port = parse_ports(args.port, robot.device)
+        settings = bind_settings(robot.device, parse_settings(args.set, robot.device))
         calls = [parse_call(words, robot.device) for words in args.call]
     except ValueError as err:
         print(f"{prog}: {err}", file=sys.stderr)
@@ -2081,7 +2121,7 @@ def run_command(args: argparse.Namespace, robot: Robot, prog: str) -> int:
     status = EXIT_OK
     try:
         start = time.monotonic()
-        robot.open(port)
+        robot.open(port, settings=settings)
         for name, kind, values in calls:
             if kind == "input":
                 robot.call_input(name, **values)
@@ -2170,6 +2210,23 @@ def parse_value(text: str) -> Value:
     if text in ("True", "False"):
         return text == "True"
     return text
+
+
+def parse_settings(given: list[str], device: Device) -> dict[str, Any]:
+    """--set NAME=VALUE ...: each value read as its setting's type says (a string or bytes setting
+    takes the text as it is, hex for bytes), for `bind_settings` to check."""
+    declared = {p.name: p for p in device.settings}
+    values: dict[str, Any] = {}
+    for pair in given:
+        name, sep, text = pair.partition("=")
+        if not sep or not name:
+            raise ValueError(f"--set `{pair}` is not NAME=VALUE")
+        if name in values:
+            raise ValueError(f"--set {name} given twice")
+        param = declared.get(name)
+        textual = param is not None and param.size is None and param.kind in (str, bytes)
+        values[name] = text if textual else parse_value(text)
+    return values
 
 
 def parse_call(words: list[str], device: Device) -> tuple[str, str, dict[str, Value]]:
