@@ -419,6 +419,15 @@ def _transformer_class():
                 adjust = -adjust if str(sign) == "-" else adjust
             return ast.FrameLength(self.b.string(fmt), adjust, self.b.span(meta))
 
+        def f_optional(self, meta, c):
+            return ast.FrameOptional(tuple(c), self.b.span(meta))
+
+        def part_run(self, meta, c):
+            return tuple(c)
+
+        def f_either(self, meta, c):
+            return ast.FrameEither(tuple(run for run in c if isinstance(run, tuple)), self.b.span(meta))
+
         def f_payload(self, meta, c):
             return ast.FramePayload(self.b.span(meta))
 
