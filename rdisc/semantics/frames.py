@@ -196,8 +196,8 @@ class FrameRules:
         for extra in lengths[1:]:
             d.report("E501", extra.span, f"frame `{decl.name.text}` has two length fields")
         optionals = [p for p in parts if isinstance(p, ast.FrameOptional)]
-        for extra in optionals[1:]:
-            d.report("E506", extra.span, f"frame `{decl.name.text}` has two `optional`s",
+        for again in optionals[1:]:
+            d.report("E506", again.span, f"frame `{decl.name.text}` has two `optional`s",
                      labels=(Label(optionals[0].span, "first given here"),),
                      help="one `optional`, right after the payload, may hold several parts")
         names: dict[str, int] = {}
