@@ -279,6 +279,32 @@ primitive that decodes a reply needs a frame whose reply has a payload; a frame
 field's value must fit its format. `skip unmatched` (read past frames that do not
 decode: other traffic on a shared line) needs a framed reply to decode, or a
 tagged reply read without a frame (it reads past tags without an entry)."""),
+    ("E506", "optional-part", """
+`optional { ... }` holds parts a reply may lack, all together: NMEA's `*hh`
+checksum, which some talkers leave out. It comes right after the payload, starts
+with constant bytes (a `literal`) and is followed by constant bytes (a `literal`
+or the `terminator`) that start with another byte, so that a reader sees by one
+byte whether the optional parts came; when they did, each is checked. Inside it:
+literals, fields and checksums, not a `payload`, `length`, `header`,
+`terminator`, `optional` or `either`. A request writes the optional parts always,
+so `optional` belongs in a frame written once for both directions or in its
+`reply { }`, not in `request { }`. One `optional` per layout. Wrong:
+`header "$" payload optional { checksum "xor" hex } terminator "\\r\\n"`.
+Right: `header "$" payload optional { literal "*" checksum "xor" hex over payload }
+terminator "\\r\\n"`."""),
+    ("E507", "frame-alternatives", """
+`either { ... } or { ... }` gives a side of a frame several layouts, each the
+parts around it with one alternative in their place: VESC's `02 LEN` for a payload
+up to 255 bytes and `03 LEN LEN` for a longer one. A request is written with the
+first alternative whose length field can state the payload, so every alternative
+but the last needs a length field (one without takes every payload, and those
+after it would never be written). A reply is read by its header: each
+alternative read as a reply starts with a `header` of its own, none the end of
+another's, and they all have a payload or none do. One `either` per side, not
+inside another `either` or an `optional`. Wrong: `either { payload } or
+{ header "\\x03" length ">H" = payload payload }`. Right: `either { header
+"\\x02" length "B" = payload } or { header "\\x03" length ">H" = payload }
+payload checksum "crc16-xmodem" ">H" over payload terminator "\\x03"`."""),
     ("E505", "reply-table", """
 A reply table (`reply KEY { VALUE: unpack ... }`) chooses a primitive's reply by
 the value of one of its int parameters, so that parameter needs a range

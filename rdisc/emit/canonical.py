@@ -192,7 +192,9 @@ def _frame(f: m.Frame) -> JsonObject:
         ("parameterRanges", _ranges(f.params)),
         ("parameterDefaults", _defaults(f.params)),
         ("request", [_frame_part(part) for part in f.request]),
+        ("moreRequests", [[_frame_part(part) for part in parts] for parts in f.more_requests] or None),
         ("reply", [_frame_part(part) for part in f.reply]),
+        ("moreReplies", [[_frame_part(part) for part in parts] for parts in f.more_replies] or None),
         ("stuffing", None if f.stuffing is None else {"after": f.stuffing[0], "insert": f.stuffing[1]}),
         ("doc", f.doc),
     )
@@ -218,6 +220,8 @@ def _frame_part(part: m.FramePart) -> JsonObject:
                 ("mask", a.mask), ("format", fmt if fmt is not None else "hex"), ("covers", [first, last]),
                 ("withRequest", with_request or None),
             )
+        case m.FrameOptional(count):
+            return {"optional": count}
         case _:
             _unreachable(part)
 

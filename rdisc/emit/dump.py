@@ -34,19 +34,19 @@ def _primitive(model: m.Model, p: m.Primitive) -> str:
     if p.encoding is None:
         lines.append("  request: none")
     else:
-        lines += _side("request", frame.request if frame else None, _payload_rows(p.encoding, p.args))
-    framed = frame.reply if frame and frame.reply else None
+        lines += _sides("request", frame.requests if frame else None, _payload_rows(p.encoding, p.args), False)
+    framed = frame.replies if frame and frame.reply else None
     if p.table is not None:
         for case in p.table.cases:
             said = case.values_text()
             if p.table.tag is None:
-                lines += _side(f"reply when {p.table.key} = {said}", framed, _reply_rows(case.decoding))
+                lines += _sides(f"reply when {p.table.key} = {said}", framed, _reply_rows(case.decoding))
             else:
                 tag = (formats.struct_layout(p.table.tag).size, f"tag {_kind(p.table.tag, p.table.tag[-1])}",
                        f"= {said}" if case.last is None else f"in {said}")
-                lines += _side(f"reply tagged {said}", framed, [tag, *_reply_rows(case.decoding)])
+                lines += _sides(f"reply tagged {said}", framed, [tag, *_reply_rows(case.decoding)])
     elif p.expects_reply(model.frames):
-        lines += _side("reply", framed, _reply_rows(p.decoding))
+        lines += _sides("reply", framed, _reply_rows(p.decoding))
     else:
         lines.append("  reply: none")
     return "\n".join(lines) + "\n"
@@ -140,13 +140,26 @@ def _reply_rows(decoding: m.Unpack | m.Regex | None) -> list[Row]:
     raise AssertionError(decoding)
 
 
-def _side(name: str, parts: tuple[m.FramePart, ...] | None, payload: list[Row]) -> list[str]:
+def _sides(name: str, layouts: tuple[tuple[m.FramePart, ...], ...] | None, payload: list[Row],
+           reply: bool = True) -> list[str]:
+    """A side's table, or one per layout (`either`): the request's in the order the writer tries them."""
+    if layouts is None or len(layouts) == 1:
+        return _side(name, layouts[0] if layouts else None, payload, reply)
+    return [line for n, parts in enumerate(layouts, 1)
+            for line in _side(f"{name}, alternative {n}", parts, payload, reply)]
+
+
+def _side(name: str, parts: tuple[m.FramePart, ...] | None, payload: list[Row], reply: bool) -> list[str]:
+    """A layout's table; in a `reply`, its optional parts marked (a request writes them)."""
     rows: list[Row] = []
+    optional = range(0)  # the indexes of the rows a reply may lack
     if parts is None:
         rows = payload
     else:
-        for part in parts:
+        for i, part in enumerate(parts):
             match part:
+                case m.FrameOptional(count=count) if reply:
+                    optional = range(len(rows), len(rows) + count)
                 case m.FrameBytes(role=role, data=data):
                     rows.append((len(data), role, " ".join(f"{ord(c):02X}" for c in data)))
                 case m.FrameField(name=field, format=fmt, value=value):
@@ -168,9 +181,12 @@ def _side(name: str, parts: tuple[m.FramePart, ...] | None, payload: list[Row]) 
     total = sum(size for size, _, _ in rows if size is not None)
     varies = any(size is None for size, _, _ in rows)
     out = [f"  {name}: {total}{'+n' if varies else ''} byte{'' if total == 1 and not varies else 's'}"]
+    if optional:
+        out[0] += f", {sum(rows[i][0] or 0 for i in optional)} of them optional (a reply may lack them)"
     offset: int | None = 0
-    for size, what, detail in rows:
+    for i, (size, what, detail) in enumerate(rows):
         at = f"{offset:>4}" if offset is not None else "   ?"
+        what = f"{what} (optional)" if i in optional else what
         out.append(f"  {at}  {size if size is not None else 'n':>3}  {what:<20} {detail}")
         offset = offset + size if offset is not None and size is not None else None
     return out

@@ -857,8 +857,7 @@ def _case(case: m.ReplyCase) -> str:
 def _frame(frame: m.Frame, fields: str | None) -> str:
     """The constructor of a frame, as the engine takes it; `fields`: the function of its field values."""
     index = {key: i for i, key in enumerate(frame_fields(frame))}
-    request = ", ".join(_frame_part(part, index) for part in frame.request)
-    reply = ", ".join(_frame_part(part, index) for part in frame.reply)
+    request, reply = (", ".join(_frame_part(part, index) for part in parts) for parts in (frame.request, frame.reply))
     stuffing = ""
     if frame.stuffing is not None:
         reserved, escape = (text.encode("latin-1") for text in frame.stuffing)
@@ -868,6 +867,10 @@ def _frame(frame: m.Frame, fields: str | None) -> str:
         options += f", params={_param_tuple(frame.params)}"
     if fields is not None:
         options += f", fields={fields}"
+    for word, layouts in (("more_requests", frame.more_requests), ("more_replies", frame.more_replies)):
+        if layouts:
+            options += f", {word}=[" + ", ".join(
+                "[" + ", ".join(_frame_part(part, index) for part in parts) + "]" for parts in layouts) + "]"
     return f"Frame({quoted(frame.name)}, [{request}], [{reply}]{options})"
 
 
@@ -887,6 +890,8 @@ def _frame_part(part: m.FramePart, index: Mapping[tuple[str, m.Expr], int]) -> s
             args = ", ".join([quoted(a.kind), str(a.width), *options])
             fmt = quoted(part.format) if part.format is not None else "None"
             return f"Check(Checksum({args}), {fmt}, {part.first}, {part.last}, {part.with_request!r})"
+        case m.FrameOptional(count=count):
+            return f"OptionalParts({count})"
     _unreachable(part)
 
 

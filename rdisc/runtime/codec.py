@@ -40,7 +40,7 @@ def frame_fields(frame: m.Frame) -> tuple[tuple[str, m.Expr], ...]:
     """The frame's distinct fields, in the order their values are passed: a field of the
     reply with the name of one of the request but another value is a field of its own."""
     fields: dict[tuple[str, m.Expr], None] = {}
-    for part in frame.request + frame.reply:
+    for part in (part for layout in (*frame.requests, *frame.replies) for part in layout):
         if isinstance(part, m.FrameField):
             fields[(part.name, part.value)] = None
     return tuple(fields)
@@ -56,7 +56,8 @@ def wire_frame(frame: m.Frame, params: tuple[engine.Param, ...] = (),
         reserved, escape = frame.stuffing
         stuffing = engine.Stuffing(reserved.encode("latin-1"), escape.encode("latin-1"))
     return engine.Frame(frame.name, [_part(p, index) for p in frame.request], [_part(p, index) for p in frame.reply],
-                        stuffing, params, fields)
+                        stuffing, params, fields, [[_part(p, index) for p in layout] for layout in frame.more_requests],
+                        [[_part(p, index) for p in layout] for layout in frame.more_replies])
 
 
 def checksum(a: m.ChecksumAlgorithm) -> engine.Checksum:
@@ -75,6 +76,8 @@ def _part(part: m.FramePart, index: dict[tuple[str, m.Expr], int]) -> engine.Par
             return engine.Payload()
         case m.FrameChecksum():
             return engine.Check(checksum(part.algorithm), part.format, part.first, part.last, part.with_request)
+        case m.FrameOptional(count=count):
+            return engine.OptionalParts(count)
     raise AssertionError(part)
 
 

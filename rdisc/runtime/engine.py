@@ -361,7 +361,20 @@ class Check:
         return b"%0*X" % (self.digits, value)
 
 
-Part = Bytes | Field | Length | Payload | Check
+class OptionalParts:
+    """The `count` parts after it (right after the payload), which a reply may lack, all
+    together: they came when their first constant bytes did. A request writes them."""
+
+    __slots__ = ("count",)
+
+    def __init__(self, count: int) -> None:
+        self.count = count
+
+    def put(self, payload: bytes, fields: Sequence[int], chunks: list[bytes]) -> bytes:
+        return b""
+
+
+Part = Bytes | Field | Length | Payload | Check | OptionalParts
 
 
 def _size(part: Part) -> int:
@@ -378,7 +391,8 @@ def _size(part: Part) -> int:
 class Side:
     """The parts of one direction, with their sizes worked out once."""
 
-    __slots__ = ("delimiter", "header", "length", "parts", "payload", "prefix", "sizes", "suffix")
+    __slots__ = ("delimiter", "extra", "group", "header", "length", "marker", "most", "parts", "payload", "prefix",
+                 "sizes", "suffix")
 
     def __init__(self, parts: Sequence[Part]) -> None:
         self.parts = tuple(parts)
@@ -390,8 +404,17 @@ class Side:
         self.prefix = sum(self.sizes[:at]) - len(self.header)  # after the header, before the payload
         self.suffix = sum(self.sizes[at + 1 :]) if self.payload >= 0 else 0
         self.length = next((i for i, p in enumerate(self.parts) if isinstance(p, Length)), -1)
-        after = self.parts[self.payload + 1] if 0 <= self.payload < len(self.parts) - 1 else None
-        self.delimiter = after.data if isinstance(after, Bytes) else b""
+        length = self.parts[self.length] if self.length >= 0 else None
+        self.most = length.most if isinstance(length, Length) else math.inf  # the largest payload it carries
+        after = self.payload + 1
+        group = self.parts[after] if 0 <= self.payload and after < len(self.parts) else None
+        self.group = range(after + 1, after + 1 + group.count) if isinstance(group, OptionalParts) else range(0)
+        self.extra = sum(self.sizes[i] for i in self.group)  # bytes of the optional parts, when they come
+        first = self.parts[self.group[0]] if self.group else None
+        self.marker = first.data if isinstance(first, Bytes) else b""  # they came: these bytes are there
+        after += 1 + len(self.group) if self.group else 0
+        follow = self.parts[after] if 0 <= self.payload and after < len(self.parts) else None
+        self.delimiter = follow.data if isinstance(follow, Bytes) else b""
 
 
 class Stuffing:
@@ -464,7 +487,7 @@ def _quick_wrap(side: Side) -> Wrap | None:
                          ~starts[stop] if stop >= after else starts[stop]))
         elif isinstance(part, Bytes):
             tail.append((part.data, None, 0, 0))
-        else:
+        elif not isinstance(part, OptionalParts):  # its parts are written as any others
             return None
 
     def wrap(payload: bytes, fields: Sequence[int]) -> bytes:
@@ -488,20 +511,22 @@ class Frame:
     """A request side and a reply side (empty when the device answers nothing framed), and
     the values of its fields over its parameters."""
 
-    __slots__ = ("fields", "most", "name", "params", "quick", "ranged", "reply", "request", "stuffing")
+    __slots__ = ("fields", "headers", "name", "params", "quick", "ranged", "replies", "reply", "requests", "stuffing")
 
     def __init__(self, name: str, request: Sequence[Part], reply: Sequence[Part], stuffing: Stuffing | None = None,
-                 params: tuple[Param, ...] = (), fields: Callable[[Args], list[Any]] | None = None) -> None:
+                 params: tuple[Param, ...] = (), fields: Callable[[Args], list[Any]] | None = None,
+                 more_requests: Sequence[Sequence[Part]] = (), more_replies: Sequence[Sequence[Part]] = ()) -> None:
+        """`more_requests` and `more_replies`: the other layouts of a side (`either`), in order."""
         self.name = name
-        self.request = Side(request)
-        self.reply = Side(reply)
+        self.requests = tuple(Side(parts) for parts in (request, *more_requests))
+        self.replies = tuple(Side(parts) for parts in (reply, *more_replies))
+        self.reply = self.replies[0]
+        self.headers = tuple(side.header for side in self.replies)  # a reply's layout is known by its header
         self.stuffing = stuffing
         self.params = params
         self.ranged = _ranged(params)
         self.fields = fields
-        self.quick = _quick_wrap(self.request)
-        length = self.request.parts[self.request.length] if self.request.length >= 0 else None
-        self.most = length.most if isinstance(length, Length) else math.inf  # the largest payload it carries
+        self.quick = tuple(_quick_wrap(side) for side in self.requests)
 
     def values(self, owner: str, args: Args) -> list[Any]:
         """The field values for the frame's arguments; an argument outside its parameter's
@@ -515,17 +540,18 @@ class Frame:
         frame's field values."""
         if self.stuffing is not None:
             payload = self.stuffing.stuff(payload)
-        if len(payload) > self.most:
-            raise ValueError(f"frame {self.name}: a {len(payload)}-byte payload is more than its length field "
-                             f"states ({self.most} bytes)")
-        if self.quick is not None:
-            return self.quick(payload, fields)
-        return self.wrap_parts(payload, fields)
+        for side, quick in zip(self.requests, self.quick):  # the first layout that can state its size
+            if len(payload) <= side.most:
+                return quick(payload, fields) if quick is not None else self.wrap_parts(side, payload, fields)
+        most = max(side.most for side in self.requests)
+        raise ValueError(f"frame {self.name}: a {len(payload)}-byte payload is more than its length field"
+                         f"{' states' if len(self.requests) == 1 else 's state'} ({most} bytes)")
 
-    def wrap_parts(self, payload: bytes, fields: Sequence[int]) -> bytes:
-        """The request side put together part by part, each after the ones before it."""
+    @staticmethod
+    def wrap_parts(side: Side, payload: bytes, fields: Sequence[int]) -> bytes:
+        """A request layout put together part by part, each after the ones before it."""
         chunks: list[bytes] = []
-        for part in self.request.parts:
+        for part in side.parts:
             chunks.append(part.put(payload, fields, chunks))
         return b"".join(chunks)
 
@@ -547,7 +573,12 @@ class Frame:
     def _read(self, port: Reader, data: bytearray, fields: Sequence[int], request: bytes,
               size: int) -> tuple[bytes, bytes]:
         side = self.reply
-        data += self._sync(port, side.header) if side.header else b""
+        if len(self.replies) > 1:  # the header that comes says which layout
+            head = self._sync(port, self.headers)
+            data += head
+            side = self.replies[self.headers.index(head)]
+        elif side.header:
+            data += self._sync(port, self.headers)
         self._take(port, data, side.prefix, bool(data))
         if side.payload < 0:
             return self._check(side, bytes(data), 0, fields, request), b""
@@ -558,8 +589,13 @@ class Frame:
             size = length.struct.unpack_from(data, at)[0] - length.adjust
             if not 0 <= size <= MAX_FRAME:
                 raise FrameError(f"{self.name}: length field says {size + length.adjust}, which no payload fits")
-        if size >= 0:
+        present = True  # the optional parts came
+        if size >= 0 and not side.group:
             self._take(port, data, size + side.suffix, bool(data))
+        elif size >= 0:  # one byte after the payload tells whether they came
+            self._take(port, data, size + 1, bool(data))
+            present = data[-1:] == side.marker[:1]
+            self._take(port, data, side.suffix - 1 - (0 if present else side.extra), True)
         else:
             found = port.read_until(side.delimiter, MAX_FRAME)
             started = bool(data or found)
@@ -568,25 +604,33 @@ class Frame:
                 raise FrameError(f"{self.name}: reply not delimited by {side.delimiter!r}: {bytes(data)!r}",
                                  timeout=not started)
             size = len(found) - len(side.delimiter)
-            self._take(port, data, side.suffix - len(side.delimiter), True)
+            if side.group:  # they came when their first bytes stand where they would end
+                at = len(data) - len(side.delimiter) - side.extra
+                present = size >= side.extra and data[at : at + len(side.marker)] == side.marker
+                size -= side.extra if present else 0
+            self._take(port, data, side.suffix - side.extra - len(side.delimiter), True)
         raw = bytes(data)
-        return raw, self._check(side, raw, size, fields, request)
+        return raw, self._check(side, raw, size, fields, request, present)
 
-    def _sync(self, port: Reader, header: bytes) -> bytes:
-        window = bytearray(port.read(len(header)))
+    def _sync(self, port: Reader, headers: tuple[bytes, ...]) -> bytes:
+        """Read up to the first of `headers` to come, skipping the bytes before it; that header."""
+        shortest, longest = min(len(h) for h in headers), max(len(h) for h in headers)
+        window = bytearray(port.read(shortest))
         if not window:
             raise FrameError(f"{self.name}: no reply", timeout=True)
+        said = " or ".join(repr(h) for h in headers)
         skipped = 0
-        while window != header:
-            byte = port.read(1) if len(window) == len(header) else b""
+        while (found := next((h for h in headers if window.endswith(h)), None)) is None:
+            byte = port.read(1) if len(window) >= shortest else b""
             if not byte:
-                raise FrameError(f"{self.name}: no header {header!r} in the reply (after {skipped} bytes)")
-            del window[0]
+                raise FrameError(f"{self.name}: no header {said} in the reply (after {skipped} bytes)")
             window += byte
-            skipped += 1
+            if len(window) > longest:
+                del window[0]
+                skipped += 1
             if skipped > MAX_SKIP:
-                raise FrameError(f"{self.name}: no header {header!r} in {MAX_SKIP} bytes")
-        return bytes(window)
+                raise FrameError(f"{self.name}: no header {said} in {MAX_SKIP} bytes")
+        return found
 
     def _take(self, port: Reader, data: bytearray, size: int, started: bool) -> None:
         if size <= 0:
@@ -598,15 +642,20 @@ class Frame:
                 raise FrameError(f"{self.name}: no reply", timeout=True)
             raise FrameError(f"{self.name}: short reply, {len(data)} bytes: {bytes(data)!r}")
 
-    def _check(self, side: Side, raw: bytes, size: int, fields: Sequence[int], request: bytes) -> bytes:
-        """Every constant, field and checksum of a complete reply; its payload."""
+    def _check(self, side: Side, raw: bytes, size: int, fields: Sequence[int], request: bytes,
+               present: bool = True) -> bytes:
+        """Every constant, field and checksum of a complete reply (the optional parts when they
+        are `present`); its payload."""
+        absent = range(0) if present else side.group
         starts: list[int] = []
         at = 0
         for i, part_size in enumerate(side.sizes):
             starts.append(at)
-            at += size if i == side.payload else part_size
+            at += size if i == side.payload else 0 if i in absent else part_size
         starts.append(at)
         for i, part in enumerate(side.parts):
+            if i in absent:
+                continue
             chunk = raw[starts[i] : starts[i + 1]]
             if isinstance(part, Bytes):
                 if chunk != part.data:
@@ -1915,7 +1964,7 @@ class Robot:
             return plan, local, self._met(plan, local, decoder.decode(plan.name, data))
         # The decoding's size is the payload's, unless a tag comes first or stuffing may have lengthened
         # it on the wire (then the constant after the payload ends it).
-        stuffed = use.frame.stuffing is not None and bool(use.frame.reply.delimiter)
+        stuffed = use.frame.stuffing is not None and any(side.delimiter for side in use.frame.replies)
         size = decoder.size if decoder is not None and plan.tag is None and not stuffed else -1
         while True:  # once, or until a reply decodes when the primitive skips the others
             try:

@@ -14,6 +14,7 @@ from dataclasses import dataclass
 from rdisc.diagnostics import Diagnostics
 from rdisc.semantics import formats
 from rdisc.semantics import model as m
+from rdisc.semantics.frames import length_range
 
 BITS_PER_BYTE = 10  # 8N1: start bit, 8 data bits, stop bit
 _SAMPLE = {m.Type.INT: 0, m.Type.FLOAT: 0.0, m.Type.BOOL: False, m.Type.STRING: ""}
@@ -158,9 +159,6 @@ def message_bytes(prim: m.Primitive, frames: dict[str, m.Frame] | None = None) -
     """Bytes of the request and the reply, frames included (ASCII, and data of any
     length, counted at their shortest)."""
     frame = (frames or {}).get(prim.frame.frame) if prim.frame is not None else None
-    framing = 0
-    if frame is not None:
-        framing = frame_bytes(frame.request) + (frame_bytes(frame.reply) if prim.expects_reply(frames or {}) else 0)
     match prim.encoding:
         case m.Pack(format=fmt):
             rest = prim.args[-1] if prim.args else None  # constant bytes for a `*` rest have their size
@@ -171,6 +169,11 @@ def message_bytes(prim: m.Primitive, frames: dict[str, m.Frame] | None = None) -
             request = len(template.format(*values).encode("utf-8"))
         case None:  # only modem lines set: no byte on the wire
             request = 0
+    framing = 0
+    if frame is not None:  # the request's layout is the one its size picks; the reply's shortest, without optional parts
+        framing = frame_bytes(_written(frame.requests, request))
+        if prim.expects_reply(frames or {}):
+            framing += min((frame_bytes(parts, shortest=True) for parts in frame.replies), default=0)
     match prim.decoding:
         case m.Unpack(format=fmt):
             reply = formats.struct_layout(fmt).size
@@ -184,11 +187,26 @@ def message_bytes(prim: m.Primitive, frames: dict[str, m.Frame] | None = None) -
     return request + reply + framing
 
 
-def frame_bytes(parts: tuple[m.FramePart, ...]) -> int:
-    """Bytes of a frame side's parts other than the payload."""
+def _written(layouts: tuple[tuple[m.FramePart, ...], ...], size: int) -> tuple[m.FramePart, ...]:
+    """The layout a request of `size` bytes is written with: the first whose length field can state it."""
+    for parts in layouts:
+        length = next((p for p in parts if isinstance(p, m.FrameLength)), None)
+        if length is None or size <= length_range(length)[1]:
+            return parts
+    return layouts[-1]
+
+
+def frame_bytes(parts: tuple[m.FramePart, ...], shortest: bool = False) -> int:
+    """Bytes of a frame layout's parts other than the payload; `shortest`: without its optional parts."""
     size = 0
+    skip = 0
     for part in parts:
+        if skip:
+            skip -= 1
+            continue
         match part:
+            case m.FrameOptional(count=count) if shortest:
+                skip = count
             case m.FrameBytes(data=data):
                 size += len(data)
             case m.FrameField(format=fmt) | m.FrameLength(format=fmt):

@@ -851,21 +851,25 @@ class _Checker:
             self.d.report("E503", clause.span, f"the reply of frame `{frame.name}` gives no way to find where the "
                           f"payload of `{decl.name.text}` ends",
                           help="add a `length` field, constant bytes after the payload, or decode with `unpack`")
-        sizes = [(frame.request, request), *((frame.reply, None if n is None else (n, n, "")) for n in reply_sizes)]
-        for parts, payload in sizes:
-            length = next((p for p in parts if isinstance(p, m.FrameLength)), None)
-            if length is None or payload is None:
+        sizes = [(frame.requests, request), *((frame.replies, None if n is None else (n, n, "")) for n in reply_sizes)]
+        for layouts, payload in sizes:
+            found = [next((p for p in parts if isinstance(p, m.FrameLength)), None) for parts in layouts]
+            if not found or None in found or payload is None:  # a layout without a length field carries any payload
                 continue
-            low, high = length_range(length)
+            lengths = [length for length in found if length is not None]
+            ranges = [length_range(length) for length in lengths]
+            low, high = min(r[0] for r in ranges), max(r[1] for r in ranges)  # the writer takes the first that fits
             fewest, most, by = payload
             if low <= fewest and most <= high:
                 continue
-            states = f"it states payloads of {low} to {high} bytes"
+            field = (f"the length field \"{lengths[0].format}\"" if len(lengths) == 1 else
+                     "the length fields " + ", ".join(f'"{length.format}"' for length in lengths))
+            states = f"{'it states' if len(lengths) == 1 else 'they state'} payloads of {low} to {high} bytes"
             if not by:
-                self.d.report("E503", clause.span, f"the length field \"{length.format}\" of frame `{frame.name}` "
+                self.d.report("E503", clause.span, f"{field} of frame `{frame.name}` "
                               f"cannot state the {fewest}-byte payload of `{decl.name.text}`", help=states)
             else:
-                self.d.report("E503", clause.span, f"the length field \"{length.format}\" of frame `{frame.name}` "
+                self.d.report("E503", clause.span, f"{field} of frame `{frame.name}` "
                               f"cannot state every payload of `{decl.name.text}`: {fewest} to {most} bytes, as "
                               f"{by} allows", help=f"{states}; narrow the range of {by}")
         return m.FrameUse(m.FrameRef(frame.name), args)
@@ -882,7 +886,7 @@ class _Checker:
                 known[param.name] = value
         spans = {p.name: expr.span for p, expr in zip(frame.params, clause.args)}
         seen: set[tuple[str, m.Expr]] = set()
-        for part in frame.request + frame.reply:
+        for part in (part for layout in (*frame.requests, *frame.replies) for part in layout):
             if (not isinstance(part, m.FrameField) or (part.name, part.value) in seen
                     or self.typer.is_constant(part.value)):  # a constant field is checked with its frame
                 continue

@@ -103,16 +103,87 @@ class FrameRules:
                           help="write the parts once for both directions, or give each side its own")
         fields: dict[str, int] = {}
         if sides:
-            request = self.side(sides["request"].parts if "request" in sides else (), "request", decl, env, fields)
-            reply = self.side(sides["reply"].parts, "reply", decl, env, fields) if "reply" in sides else ()
+            for part in _nested(sides["request"].parts if "request" in sides else ()):
+                if isinstance(part, ast.FrameOptional):
+                    self.d.report("E506", part.span, "a request writes every part: `optional` belongs to a reply",
+                                  help="write these parts without `optional`")
+            request = self.layouts(sides["request"].parts if "request" in sides else (), "request", decl, env,
+                                   fields)
+            reply = self.layouts(sides["reply"].parts, "reply", decl, env, fields) if "reply" in sides else ((),)
         else:
-            request = self.side(direct, "request", decl, env, fields)
-            reply = self.side(direct, "reply", decl, env, fields, quiet=True)
-        return m.Frame(decl.name.text, params, request, reply, decl.doc, decl.span, stuffing)
+            request = self.layouts(direct, "request", decl, env, fields)
+            reply = self.layouts(direct, "reply", decl, env, fields, quiet=True)
+        return m.Frame(decl.name.text, params, request[0], reply[0], decl.doc, decl.span, stuffing, request[1:],
+                       reply[1:])
+
+    def layouts(self, parts: tuple[ast.FramePart, ...], side: str, decl: ast.FrameDecl, env: Env,
+                fields: dict[str, int], quiet: bool = False) -> tuple[tuple[m.FramePart, ...], ...]:
+        """One direction's layouts: its parts, or one layout per alternative of its `either`
+        (the parts around it in each). `quiet` silences what the request's check reported."""
+        eithers = [p for p in parts if isinstance(p, ast.FrameEither)]
+        for extra in eithers[1:]:
+            self.d.report("E507", extra.span, f"frame `{decl.name.text}` has two `either`s",
+                          labels=(Label(eithers[0].span, "first given here"),),
+                          help="write each whole layout as one alternative")
+        if not eithers:
+            return (self.side(self.flat(parts), side, decl, env, fields, quiet),)
+        either = eithers[0]
+        for inner in _nested(either.alternatives):
+            if isinstance(inner, ast.FrameEither):
+                self.d.report("E507", inner.span, "an `either` inside an `either`",
+                              help="write each whole layout as one alternative")
+        at = parts.index(either)
+        runs = [(*parts[:at], *alt, *parts[at + 1 :]) for alt in either.alternatives]
+        layouts = tuple(self.side(self.flat(run), side, decl, env, fields, quiet) for run in runs)
+        name = decl.name.text
+        if side == "request":
+            for n, layout in enumerate(layouts[:-1], 1):
+                if not any(isinstance(p, m.FrameLength) for p in layout):
+                    self.d.report("E507", either.span, f"alternative {n + 1} of frame `{name}` is never written: "
+                                  f"alternative {n} has no length field, so it carries every payload",
+                                  help="the writer takes the first alternative whose length field can state the "
+                                  "payload: put the one without a length field last")
+                    break
+            return layouts
+        heads = []
+        for n, layout in enumerate(layouts, 1):
+            first = layout[0] if layout else None
+            if not isinstance(first, m.FrameBytes) or first.role != "header":
+                self.d.report("E507", either.span, f"alternative {n} of frame `{name}` starts with no `header`",
+                              help="a reader knows which alternative came by its header: start each with its own")
+                return layouts
+            heads.append(first.data.encode("latin-1"))
+        for i, a in enumerate(heads):
+            for j in range(i + 1, len(heads)):
+                b = heads[j]
+                if a.endswith(b) or b.endswith(a):
+                    self.d.report("E507", either.span, f"alternatives {i + 1} and {j + 1} of frame `{name}` start with "
+                                  f"headers a reader cannot tell apart: {a!r} and {b!r}",
+                                  help="give each alternative a header that is not the end of another's")
+        if len({any(isinstance(p, m.FramePayload) for p in layout) for layout in layouts}) > 1:
+            self.d.report("E507", either.span, f"some alternatives of frame `{name}` have a `payload` and some not",
+                          help="give every alternative of a reply a payload, or none")
+        return layouts
+
+    def flat(self, parts: tuple[ast.FramePart, ...]) -> tuple[ast.FramePart, ...]:
+        """The parts in a row, an `optional`'s own right after it (it says how many follow)."""
+        out: list[ast.FramePart] = []
+        for part in parts:
+            if isinstance(part, ast.FrameEither):
+                continue  # a second or a nested one: `layouts` reported it
+            out.append(part)
+            if isinstance(part, ast.FrameOptional):
+                for inner in part.parts:
+                    if isinstance(inner, (ast.FrameOptional, ast.FrameEither)):
+                        self.d.report("E506", inner.span, "an `optional` holds constant bytes, fields and checksums, "
+                                      f"not an `{'optional' if isinstance(inner, ast.FrameOptional) else 'either'}`")
+                    else:
+                        out.append(inner)
+        return tuple(out)
 
     def side(self, parts: tuple[ast.FramePart, ...], side: str, decl: ast.FrameDecl, env: Env,
              fields: dict[str, int], quiet: bool = False) -> tuple[m.FramePart, ...]:
-        """One direction's parts; `quiet` when the same parts were checked as the request."""
+        """One layout's parts (`flat`); `quiet` when the same parts were checked as the request."""
         d = self.d if not quiet else Diagnostics()
         payloads = [p for p in parts if isinstance(p, ast.FramePayload)]
         if side == "request" and len(payloads) != 1:
@@ -124,6 +195,11 @@ class FrameRules:
         lengths = [p for p in parts if isinstance(p, ast.FrameLength)]
         for extra in lengths[1:]:
             d.report("E501", extra.span, f"frame `{decl.name.text}` has two length fields")
+        optionals = [p for p in parts if isinstance(p, ast.FrameOptional)]
+        for again in optionals[1:]:
+            d.report("E506", again.span, f"frame `{decl.name.text}` has two `optional`s",
+                     labels=(Label(optionals[0].span, "first given here"),),
+                     help="one `optional`, right after the payload, may hold several parts")
         names: dict[str, int] = {}
         out: list[m.FramePart] = []
         for i, part in enumerate(parts):
@@ -140,10 +216,43 @@ class FrameRules:
                     out.append(m.FramePayload())
                 case ast.FrameChecksum():
                     out.append(self.checksum(part, i, parts, names, side, d))
+                case ast.FrameOptional():
+                    count = sum(1 for p in part.parts if not isinstance(p, (ast.FrameOptional, ast.FrameEither)))
+                    self.optional(part, parts[i - 1] if i else None, parts[i + 1 : i + 1 + count],
+                                  parts[i + 1 + count :], d)
+                    out.append(m.FrameOptional(count))
+                case ast.FrameEither():  # `flat` leaves none
+                    raise AssertionError(part)
             if isinstance(part, (ast.FrameBytes, ast.FrameLength, ast.FramePayload)):
                 names.setdefault(part.role if isinstance(part, ast.FrameBytes) else
                                  "length" if isinstance(part, ast.FrameLength) else "payload", i)
         return tuple(out)
+
+    def optional(self, part: ast.FrameOptional, before: ast.FramePart | None, inner: tuple[ast.FramePart, ...],
+                 after: tuple[ast.FramePart, ...], d: Diagnostics) -> None:
+        """Where an `optional` may stand: a reader sees whether it came by one byte, the first of
+        its constant bytes, right where the payload ends."""
+        if not isinstance(before, ast.FramePayload):
+            d.report("E506", part.span, "an `optional` comes right after the `payload`",
+                     help="a reader looks for it where the payload ends")
+        for p in inner:
+            if isinstance(p, (ast.FramePayload, ast.FrameLength)) or (isinstance(p, ast.FrameBytes)
+                                                                      and p.role != "literal"):
+                word = p.role if isinstance(p, ast.FrameBytes) else "payload" if isinstance(
+                    p, ast.FramePayload) else "length"
+                d.report("E506", p.span, f"an `optional` holds constant bytes, fields and checksums, not a `{word}`")
+        first = inner[0] if inner else None
+        if not isinstance(first, ast.FrameBytes) or not first.value.value:
+            d.report("E506", part.span, "an `optional` starts with constant bytes: `optional { literal \"*\" ... }`",
+                     help="a reader sees by them whether the optional parts came")
+            return
+        follow = after[0] if after else None
+        if not isinstance(follow, ast.FrameBytes) or not follow.value.value:
+            d.report("E506", part.span, "an `optional` is followed by constant bytes (a `literal` or the `terminator`)",
+                     help="a reader sees by its first byte whether the optional parts came or these")
+        elif follow.value.value[0] == first.value.value[0]:
+            d.report("E506", follow.span, f"the bytes after an `optional` start as it does "
+                     f"(\"{abbreviate(first.value.value[0])}\"), so a reader cannot tell whether it came")
 
     def constant_bytes(self, part: ast.FrameBytes, i: int, count: int, d: Diagnostics) -> m.FrameBytes:
         text = part.value.value
@@ -283,13 +392,34 @@ class FrameRules:
 
 
 def payload_end_known(frame: m.Frame, size_known: bool) -> bool:
-    """Whether a reader can find where the reply's payload ends."""
-    reply = frame.reply
-    at = next((i for i, p in enumerate(reply) if isinstance(p, m.FramePayload)), None)
+    """Whether a reader can find where the reply's payload ends, in each layout."""
     size_known = size_known and frame.stuffing is None  # stuffing makes a payload longer on the wire
+    return all(_end_known(reply, size_known) for reply in frame.replies)
+
+
+def _end_known(reply: tuple[m.FramePart, ...], size_known: bool) -> bool:
+    at = next((i for i, p in enumerate(reply) if isinstance(p, m.FramePayload)), None)
     if at is None or size_known or any(isinstance(p, m.FrameLength) for p in reply):
         return True
-    return at + 1 < len(reply) and isinstance(reply[at + 1], m.FrameBytes)
+    after = at + 1
+    if after < len(reply) and isinstance(reply[after], m.FrameOptional):  # the constant after it ends both
+        after += 1 + reply[after].count  # type: ignore[union-attr]
+    return after < len(reply) and isinstance(reply[after], m.FrameBytes)
+
+
+def _nested(parts: tuple[ast.FramePart, ...] | tuple[tuple[ast.FramePart, ...], ...]) -> list[ast.FramePart]:
+    """Every part, those inside `optional` and `either` included (runs of parts taken apart)."""
+    out: list[ast.FramePart] = []
+    for part in parts:
+        if isinstance(part, tuple):
+            out += _nested(part)
+            continue
+        out.append(part)
+        if isinstance(part, ast.FrameOptional):
+            out += _nested(part.parts)
+        elif isinstance(part, ast.FrameEither):
+            out += _nested(part.alternatives)
+    return out
 
 
 def _algorithm_hint(name: str) -> str:

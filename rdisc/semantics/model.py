@@ -431,18 +431,40 @@ class FrameChecksum:
     with_request: bool = False
 
 
-FramePart = FrameBytes | FrameField | FrameLength | FramePayload | FrameChecksum
+@dataclass(frozen=True, slots=True)
+class FrameOptional:
+    """The `count` parts after it, which a reply may lack, all together: they are there when
+    their first bytes (constant) are. A request writes them."""
+
+    count: int
+
+
+FramePart = FrameBytes | FrameField | FrameLength | FramePayload | FrameChecksum | FrameOptional
 
 
 @dataclass(frozen=True, slots=True)
 class Frame:
+    """A frame's parts each way; with `either`, more than one layout of a side: a request is
+    written with the first that can state its payload's size, a reply read by its header."""
+
     name: str
     params: tuple[Parameter, ...]
-    request: tuple[FramePart, ...]
+    request: tuple[FramePart, ...]  # the first (or only) layout
     reply: tuple[FramePart, ...]  # () when the device answers nothing framed
     doc: str | None = None
     span: Span | None = _span
     stuffing: tuple[str, str] | None = None  # (reserved, escape): escape inserted after reserved
+    more_requests: tuple[tuple[FramePart, ...], ...] = ()  # the other layouts, in order
+    more_replies: tuple[tuple[FramePart, ...], ...] = ()
+
+    @property
+    def requests(self) -> tuple[tuple[FramePart, ...], ...]:
+        return (self.request, *self.more_requests)
+
+    @property
+    def replies(self) -> tuple[tuple[FramePart, ...], ...]:
+        """Every layout of the reply; none when the device answers nothing framed."""
+        return (self.reply, *self.more_replies) if self.reply else ()
 
 
 @dataclass(frozen=True, slots=True)

@@ -559,7 +559,24 @@ class FrameChecksum:
     span: Span = _span
 
 
-FramePart = FrameBytes | FrameField | FrameLength | FramePayload | FrameChecksum
+@dataclass(frozen=True, slots=True)
+class FrameOptional:
+    """`optional { ... }`: parts a reply may lack, all together; a request writes them."""
+
+    parts: tuple[FramePart, ...]
+    span: Span = _span
+
+
+@dataclass(frozen=True, slots=True)
+class FrameEither:
+    """`either { ... } or { ... }`: alternative runs of parts. A request is written with the
+    first whose length field can state its payload; a reply is read by the one whose header came."""
+
+    alternatives: tuple[tuple[FramePart, ...], ...]
+    span: Span = _span
+
+
+FramePart = FrameBytes | FrameField | FrameLength | FramePayload | FrameChecksum | FrameOptional | FrameEither
 
 
 @dataclass(frozen=True, slots=True)

@@ -16,6 +16,7 @@ from rdisc.syntax.precedence import BINARY, COMPARISON, OR, UNARY_OPERATORS
 
 if TYPE_CHECKING:
     from lark import Token
+    from lark.tree import Meta
 
 MAX_INT_DIGITS = 64
 MAX_EXPR_DEPTH = 100
@@ -427,6 +428,15 @@ def _transformer_class():
                 adjust = _int_value(str(amount)) or 0
                 adjust = -adjust if str(sign) == "-" else adjust
             return ast.FrameLength(self.b.string(fmt), adjust, self.b.span(meta))
+
+        def f_optional(self, meta: Meta, c: list[ast.FramePart]) -> ast.FrameOptional:
+            return ast.FrameOptional(tuple(c), self.b.span(meta))
+
+        def part_run(self, meta: Meta, c: list[ast.FramePart]) -> tuple[ast.FramePart, ...]:
+            return tuple(c)
+
+        def f_either(self, meta: Meta, c: list[object]) -> ast.FrameEither:
+            return ast.FrameEither(tuple(run for run in c if isinstance(run, tuple)), self.b.span(meta))
 
         def f_payload(self, meta, c):
             return ast.FramePayload(self.b.span(meta))

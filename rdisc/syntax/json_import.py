@@ -321,6 +321,7 @@ _PRIMITIVE = (
     "postActions", "doc",
 )  # fmt: skip
 _FRAME = ("name", "parameters", "parameterTypes", "parameterRanges", "parameterDefaults", "request", "reply",
+          "moreRequests", "moreReplies",
           "stuffing", "doc")
 _CHECKSUM = (
     "checksum", "kind", "width", "poly", "init", "reflectIn", "reflectOut", "xorOut", "inverted", "mask", "format",
@@ -513,10 +514,11 @@ class _Importer:
         m = self.members(obj, "a frame", _FRAME)
         name = self.name(obj, m, "a frame")
         params = self.params(m, lambda _: "int")
-        sides = {}
-        for side in ("request", "reply"):
-            parts = [self.object(p, "a frame part") for p in self.array(m.get(side), f"`{side}`")]
-            sides[side] = _present([None if p is None else self.frame_part(p, parts) for p in parts])
+        sides: dict[str, tuple[ast.FramePart, ...]] = {}
+        for side, more in (("request", "moreRequests"), ("reply", "moreReplies")):
+            layouts = [self.frame_parts(m.get(side), f"`{side}`"),
+                       *(self.frame_parts(v, "a layout") for v in self.array(m.get(more), f"`{more}`"))]
+            sides[side] = layouts[0] if len(layouts) == 1 else (ast.FrameEither(tuple(layouts), m[more].span),)
         if name is None:
             return None
         self.frame_types[name.text] = tuple(_type_text(p.type) for p in params)
@@ -534,6 +536,27 @@ class _Importer:
                 items += (ast.FrameStuff(ast.StrLit(insert.value, insert.span), ast.StrLit(after.value, after.span),
                                          stuffing.span),)
         return ast.FrameDecl(name, params, items, obj.span, self.doc(m))
+
+    def frame_parts(self, value: JValue | None, what: str) -> tuple[ast.FramePart, ...]:
+        """One layout's parts; `{"optional": N}` takes the N parts after it into an `optional`."""
+        objs = [self.object(p, "a frame part") for p in self.array(value, what)]
+        out: list[ast.FramePart | None] = []
+        at = 0
+        while at < len(objs):
+            obj = objs[at]
+            at += 1
+            if obj is None or not any(k.value == "optional" for k, _ in obj.members):
+                out.append(None if obj is None else self.frame_part(obj, objs))
+                continue
+            count = self.members(obj, "an optional part", ("optional",)).get("optional")
+            if not (isinstance(count, JNumber) and count.value == int(count.value) and 1 <= count.value <= len(objs) - at):
+                self.error(obj.span, f"`optional` is the number of parts after it that a reply may lack (1 to "
+                                     f"{len(objs) - at})")
+                continue
+            inner = [None if p is None else self.frame_part(p, objs) for p in objs[at : at + int(count.value)]]
+            out.append(ast.FrameOptional(_present(inner), obj.span))
+            at += int(count.value)
+        return _present(out)
 
     def frame_part(self, obj: JObject, side: list[JObject | None]) -> ast.FramePart | None:
         keys = [k.value for k, _ in obj.members]
@@ -561,7 +584,8 @@ class _Importer:
             return ast.FramePayload(obj.span)
         if "checksum" in keys:
             return self.checksum(obj, side)
-        self.error(obj.span, "a frame part is one of header, literal, terminator, field, length, payload, checksum")
+        self.error(obj.span, "a frame part is one of header, literal, terminator, field, length, payload, checksum, "
+                             "optional")
         return None
 
     def checksum(self, obj: JObject, side: list[JObject | None]) -> ast.FrameChecksum | None:

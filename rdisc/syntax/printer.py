@@ -137,8 +137,17 @@ def _frame_part(part: ast.FramePart) -> str:
                 else:
                     words.append(o.word if o.value is None else f"{o.word} {print_expr(o.value)}")
             return " ".join(words)
+        case ast.FrameOptional(parts):
+            return _run("optional", parts)
+        case ast.FrameEither(alternatives):
+            return " or ".join(_run("either" if i == 0 else "", run).lstrip() for i, run in enumerate(alternatives))
         case _:
             _unreachable(part)
+
+
+def _run(head: str, parts: tuple[ast.FramePart, ...]) -> str:
+    """`head { part  part }` on one line: a run of parts inside `optional` or `either`."""
+    return f"{head} {{ {'  '.join(_frame_part(part) for part in parts)} }}" if parts else f"{head} {{ }}"
 
 
 def _doc(doc: str | None) -> list[str]:

@@ -67,8 +67,6 @@ COVERED = [c for c in CALLS if rdisc_call(c) is not None]
 DEVIATIONS: dict[str, tuple[str, str]] = {
     "gga_without_crlf": ("RdisTimeout", ("on a serial line a sentence ends at CR LF: one without it "
                          "never ends (pynmea2 parses a str, where the end of the string ends it)")),
-    "gga_no_checksum": ("RdisTimeout", ("the checksum is optional in GGA, but a frame's parts are all "
-                        "mandatory: RDIS cannot describe an optional `*hh`, so the sentence is read past")),
 }
 # Replies NMEA 0183 refuses (or pynmea2 fails on): gga()/rmc() read past them (`skip unmatched`) and,
 # as nothing that decodes follows, raise RdisTimeout ("no matching reply") instead.
