@@ -7,6 +7,9 @@ when a diagnostic is rendered, so building spans costs nothing on the hot path.
 from __future__ import annotations
 
 import bisect
+import os
+import posixpath
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 
 
@@ -69,3 +72,20 @@ class Sources(dict[str, SourceFile]):
         source = SourceFile(path, text)
         self[path] = source
         return source
+
+
+def place(span: Span | None, sources: Mapping[str, SourceFile], main_path: str | None, main_name: str) -> str | None:
+    """`file:line` of a span, as generated files cite their description: the main file by the
+    name it was given, another by its path relative to the main file's folder (or its name,
+    when it is elsewhere)."""
+    if span is None or span.path not in sources:
+        return None
+    line = sources[span.path].position(span.start).line + 1
+    if span.path == main_path:
+        return f"{main_name}:{line}"
+    name = posixpath.basename(span.path.replace(os.sep, "/"))
+    if main_path is not None:
+        relative = os.path.relpath(span.path, os.path.dirname(main_path) or ".").replace(os.sep, "/")
+        if not relative.startswith("../"):
+            name = relative
+    return f"{name}:{line}"

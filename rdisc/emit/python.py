@@ -21,7 +21,6 @@ from __future__ import annotations
 
 import keyword
 import os
-import posixpath
 from collections.abc import Iterable, Mapping
 from types import ModuleType
 from typing import NoReturn
@@ -34,7 +33,7 @@ from rdisc.runtime.codec import decoder, encoder, frame_fields
 from rdisc.runtime.device import Description
 from rdisc.semantics import model as m
 from rdisc.semantics.model import Type
-from rdisc.source import SourceFile, Span
+from rdisc.source import SourceFile, Span, place
 from rdisc.syntax import precedence as p
 
 __all__ = ["import_driver", "to_python"]
@@ -227,19 +226,7 @@ class _Driver:
     # -- helpers ---------------------------------------------------------------------------------
 
     def where(self, span: Span | None) -> str | None:
-        """`file:line` of a span: the main file by the name it was given, another by its path
-        relative to the main file's folder (or its name, when it is elsewhere)."""
-        if span is None or span.path not in self.sources:
-            return None
-        line = self.sources[span.path].position(span.start).line + 1
-        if span.path == self.main_path:
-            return f"{self.source_name}:{line}"
-        name = posixpath.basename(span.path.replace(os.sep, "/"))
-        if self.main_path is not None:
-            relative = os.path.relpath(span.path, os.path.dirname(self.main_path) or ".").replace(os.sep, "/")
-            if not relative.startswith("../"):
-                name = relative
-        return f"{name}:{line}"
+        return place(span, self.sources, self.main_path, self.source_name)
 
     def comment(self, w: Writer, span: Span | None, what: str = "") -> None:
         """`# file:line  what` before a block that came from the description."""

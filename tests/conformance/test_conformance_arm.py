@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import math
 import struct
+import time
 from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
@@ -125,7 +126,14 @@ def _sdk_sync_read(bus: XBus) -> tuple[bytes, dict[int, int]]:
         for dxl_id in IDS:
             assert group.addParam(dxl_id)
         bus.clear()
-        assert group.txRxPacket() == sdk.COMM_SUCCESS
+        assert group.txPacket() == sdk.COMM_SUCCESS
+        # The SDK's reply timeout is a few milliseconds of wall clock: wait until the bus has
+        # answered (six status packets, one stuffed) before it reads, so a busy machine cannot fail it.
+        answers = sum(len(status(i, bus.errors[i], struct.pack("<i", bus.present[i]))) for i in IDS)
+        deadline = time.monotonic() + 10
+        while port.ser.in_waiting < answers and time.monotonic() < deadline:
+            time.sleep(0.005)
+        assert group.rxPacket() == sdk.COMM_SUCCESS
         positions = {i: struct.unpack("<i", struct.pack("<I", group.getData(i, PRESENT, 4)))[0] for i in IDS}
         return bus.received, positions
     finally:
