@@ -2,13 +2,14 @@
 
 No published Python driver of the compact protocol can be pinned: maestro-servo 0.2.0 talks
 to the Maestro by USB control transfers (pyusb), not by its serial commands; pymaestro 0.1's
-sdist ships no modules; pololu-motors 0.2.x, whose Maestro class writes the serial protocol,
-does not build on Python 3.11 (its setup.py's regex is refused); and ucan-servo-mcp's usc.py
-speaks its board's own text commands. So the bytes are held against the guide (section 5.e):
-its examples as literals, and an emulated Maestro on a pty that reads each command as the
-guide states it (a command byte with bit 7 set, data bytes without; a 14-bit value as its
-low 7 bits, then bits 7-13; replies low byte first), with its own decoding, not rdisc's.
-The rdisc runtime and the driver `rdisc emit-python` generates both go through it.
+sdist ships only an __init__ importing modules it lacks; pololu-motors 0.2.x, whose Maestro
+class writes the serial protocol, does not build on Python 3.11 (its setup.py's regex is
+refused); and ucan-servo-mcp's usc.py speaks its board's own text commands. So the bytes
+are held against the guide (section 5.e): its examples as literals, and an emulated Maestro
+on a pty that reads each command as the guide states it (a command byte with bit 7 set, data
+bytes without; a 14-bit value as its low 7 bits, then bits 7-13; replies low byte first),
+with its own decoding, not rdisc's. The rdisc runtime and the driver `rdisc emit-python`
+generates both go through it.
 """
 
 from __future__ import annotations
