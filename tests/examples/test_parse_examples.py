@@ -52,6 +52,8 @@ EXPECTED_COUNTS: dict[str, dict[str, int]] = {
                               "PrimitiveDecl": 16, "RobotDecl": 1, "StateDecl": 69},
     "examples/lx16a.rdis": {"ConnectionDecl": 1, "ConstDecl": 3, "FrameDecl": 2, "InterfaceDecl": 2,
                             "PrimitiveDecl": 31, "RobotDecl": 1, "StateDecl": 20},
+    "examples/maestro.rdis": {"ConnectionDecl": 1, "ConstDecl": 7, "EnumDecl": 1, "InputDecl": 1, "InterfaceDecl": 5,
+                              "OutputDecl": 1, "PrimitiveDecl": 8, "RobotDecl": 1, "StateDecl": 3},
     "examples/nmea.rdis": {"ConnectionDecl": 1, "ConstDecl": 2, "FrameDecl": 3, "InterfaceDecl": 2,
                            "PrimitiveDecl": 6, "RobotDecl": 1, "StateDecl": 20},
     "examples/roboclaw.rdis": {"ConnectionDecl": 1, "FrameDecl": 3, "InterfaceDecl": 1, "PrimitiveDecl": 44,
