@@ -36,7 +36,9 @@ EXPECTED_COUNTS: dict[str, dict[str, int]] = {
     },
     "examples/koala.rdis": {
         "RobotDecl": 1,
-        "StateDecl": 13,
+        "StateDecl": 8,
+        "ConstDecl": 2,
+        "SettingDecl": 3,
         "ConnectionDecl": 1,
         "PrimitiveDecl": 5,
         "InterfaceDecl": 5,
