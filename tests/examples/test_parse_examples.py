@@ -49,7 +49,7 @@ EXPECTED_COUNTS: dict[str, dict[str, int]] = {
     "examples/arm.rdis": {"ConnectionDecl": 1, "ConstDecl": 5, "EnumDecl": 2, "FrameDecl": 2, "InputDecl": 1,
                           "InterfaceDecl": 3, "OutputDecl": 1, "PrimitiveDecl": 5, "RobotDecl": 1, "StateDecl": 2},
     "examples/ax12.rdis": {"ConnectionDecl": 1, "ConstDecl": 2, "EnumDecl": 2, "FrameDecl": 1, "InterfaceDecl": 5,
-                           "PrimitiveDecl": 38, "RobotDecl": 1, "StateDecl": 25},
+                           "PrimitiveDecl": 38, "RobotDecl": 1, "SettingDecl": 1, "StateDecl": 25},
     "examples/create2.rdis": {"ConnectionDecl": 1, "InputDecl": 1, "InterfaceDecl": 3, "OutputDecl": 1,
                               "PrimitiveDecl": 16, "RobotDecl": 1, "StateDecl": 69},
     "examples/lx16a.rdis": {"ConnectionDecl": 1, "ConstDecl": 3, "FrameDecl": 2, "InterfaceDecl": 2,
