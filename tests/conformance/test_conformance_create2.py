@@ -49,7 +49,7 @@ UNCOVERED: dict[str, str] = {
 def _digit_codes(text: str) -> tuple[int, ...]:
     """The four codes of `text` for Digit LEDs ASCII: padded with blanks and cut to four, as the driver does.
 
-    The primitive takes character codes: the OI's range (32-126) is checked by the description.
+    The primitive takes an array of character codes: the OI's range (32-126) is checked by the description.
     """
     return tuple(ord(c) for c in text.ljust(4)[:4])
 
@@ -70,7 +70,7 @@ def rdisc_call(call: Call) -> tuple[str, tuple[Any, ...]] | None:
     if method == "led":
         return "leds", tuple(args) + (0,) * (3 - len(args))  # the driver's defaults are 0
     if method == "digit_led_ascii":
-        return "digit_leds_ascii", _digit_codes(args[0])
+        return "digit_leds_ascii", (_digit_codes(args[0]),)
     if method == "createSong":
         song, notes = args
         return "song", (song, bytes(notes))

@@ -62,26 +62,27 @@ PY_ARGS = {
     "drive_to_position_raw": lambda _motor, *rest: rest,
 }
 
-#: state holding a method's decoded values, in the driver's order; pyroboclaw's scale factors
+#: state holding a method's decoded values, in the driver's order (`name[i]`: an element of a
+#: per-motor array, M1 first); pyroboclaw's scale factors
 STATE = {
-    "ReadEncM1": ("encoder_m1", "encoder_m1_status"),
-    "ReadEncM2": ("encoder_m2", "encoder_m2_status"),
-    "ReadSpeedM1": ("speed_m1", "speed_m1_status"),
-    "ReadSpeedM2": ("speed_m2", "speed_m2_status"),
+    "ReadEncM1": ("encoder[0]", "encoder_status[0]"),
+    "ReadEncM2": ("encoder[1]", "encoder_status[1]"),
+    "ReadSpeedM1": ("speed[0]", "speed_status[0]"),
+    "ReadSpeedM2": ("speed[1]", "speed_status[1]"),
     "ReadMainBatteryVoltage": ("main_battery",),
     "ReadLogicBatteryVoltage": ("logic_battery",),
     "ReadVersion": ("version",),
-    "ReadM1VelocityPID": ("pid_m1_p", "pid_m1_i", "pid_m1_d", "pid_m1_qpps"),
-    "ReadPWMs": ("pwm_m1", "pwm_m2"),
-    "ReadCurrents": ("current_m1", "current_m2"),
+    "ReadM1VelocityPID": ("pid_p[0]", "pid_i[0]", "pid_d[0]", "pid_qpps[0]"),
+    "ReadPWMs": ("pwm[0]", "pwm[1]"),
+    "ReadCurrents": ("current[0]", "current[1]"),
     "ReadMinMaxMainVoltages": ("main_battery_min", "main_battery_max"),
     "ReadMinMaxLogicVoltages": ("logic_battery_min", "logic_battery_max"),
     "ReadTemp": ("temperature",),
     "ReadError": ("status",),
     "ForwardM1": (),
-    "read_encoder": ("encoder_m1",),
+    "read_encoder": ("encoder[0]",),
     "read_batt_voltage": ("main_battery",),
-    "read_currents": ("current_m1", "current_m2"),
+    "read_currents": ("current[0]", "current[1]"),
     "read_status": ("status",),
     "set_speed": (),
 }
@@ -92,8 +93,19 @@ def plan(call: Call) -> list[tuple[str, tuple[Any, ...]]]:
     """The primitive calls that do what `call` does."""
     args = PY_ARGS[call.method](*call.args) if call.method in PY_ARGS else call.args
     if call.method[0].islower() and call.method not in PY_ARGS:
-        args = ()  # pyroboclaw reads: the motor / battery argument is in the primitive's name
-    return [(name, args) for name in call.primitive.split(" + ")]
+        args = ()  # pyroboclaw reads: the motor / battery argument is in the primitive's name or its motor
+    calls = []
+    for part in call.primitive.split(" + "):
+        name, *motor = part.split()  # "forward 1": the primitive `forward` for motor 1
+        calls.append((name, (*map(int, motor), *args)))
+    return calls
+
+
+def _state(robot: Any, key: str) -> Any:
+    """A state variable's value, or one element (`encoder[1]`) of a per-motor array."""
+    name, _, index = key.partition("[")
+    value = robot.state[name]
+    return value[int(index.rstrip("]"))] if index else value
 
 
 class Claw(PtyDevice):
@@ -221,7 +233,7 @@ def test_reply(reply: Any, claw: tuple[Claw, Any, Any]) -> None:
         return
     robot.call_primitive(name, *args)
     dev.written()
-    got = tuple(robot.state[s] for s in STATE[reply.method])
+    got = tuple(_state(robot, s) for s in STATE[reply.method])
     if reply.method == "ReadVersion":
         expected = (expected[0].removesuffix("\n"),)  # LF NUL is the frame's terminator
     if reply.method in SCALE:
@@ -232,7 +244,7 @@ def test_reply(reply: Any, claw: tuple[Claw, Any, Any]) -> None:
 def test_m2_position_follows_the_manual(claw: tuple[Claw, Any, Any]) -> None:
     """Command 66 (no published capture): accel, speed, decel, position, buffer as for M1's 65."""
     dev, robot, _ = claw
-    robot.call_primitive("m2_speed_accel_decel_position", 1000, -2000, 1000, -5000, 0)
+    robot.call_primitive("speed_accel_decel_position", 2, 1000, -2000, 1000, -5000, 0)
     data = bytes.fromhex("000003e8 fffff830 000003e8 ffffec78 00")
     assert dev.written() == frame(66, data)
 

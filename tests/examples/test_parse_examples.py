@@ -36,7 +36,9 @@ EXPECTED_COUNTS: dict[str, dict[str, int]] = {
     },
     "examples/koala.rdis": {
         "RobotDecl": 1,
-        "StateDecl": 13,
+        "StateDecl": 8,
+        "ConstDecl": 2,
+        "SettingDecl": 3,
         "ConnectionDecl": 1,
         "PrimitiveDecl": 5,
         "InterfaceDecl": 5,
@@ -47,7 +49,7 @@ EXPECTED_COUNTS: dict[str, dict[str, int]] = {
     "examples/arm.rdis": {"ConnectionDecl": 1, "ConstDecl": 5, "EnumDecl": 2, "FrameDecl": 2, "InputDecl": 1,
                           "InterfaceDecl": 3, "OutputDecl": 1, "PrimitiveDecl": 5, "RobotDecl": 1, "StateDecl": 2},
     "examples/ax12.rdis": {"ConnectionDecl": 1, "ConstDecl": 2, "EnumDecl": 2, "FrameDecl": 1, "InterfaceDecl": 5,
-                           "PrimitiveDecl": 38, "RobotDecl": 1, "StateDecl": 25},
+                           "PrimitiveDecl": 38, "RobotDecl": 1, "SettingDecl": 1, "StateDecl": 25},
     "examples/create2.rdis": {"ConnectionDecl": 1, "InputDecl": 1, "InterfaceDecl": 3, "OutputDecl": 1,
                               "PrimitiveDecl": 16, "RobotDecl": 1, "StateDecl": 69},
     "examples/lx16a.rdis": {"ConnectionDecl": 1, "ConstDecl": 3, "FrameDecl": 2, "InterfaceDecl": 2,
@@ -56,8 +58,8 @@ EXPECTED_COUNTS: dict[str, dict[str, int]] = {
                               "OutputDecl": 1, "PrimitiveDecl": 8, "RobotDecl": 1, "StateDecl": 3},
     "examples/nmea.rdis": {"ConnectionDecl": 1, "ConstDecl": 2, "FrameDecl": 3, "InterfaceDecl": 2,
                            "PrimitiveDecl": 6, "RobotDecl": 1, "StateDecl": 20},
-    "examples/roboclaw.rdis": {"ConnectionDecl": 1, "FrameDecl": 3, "InterfaceDecl": 1, "PrimitiveDecl": 44,
-                               "RobotDecl": 1, "StateDecl": 30},
+    "examples/roboclaw.rdis": {"ConnectionDecl": 1, "FrameDecl": 3, "InterfaceDecl": 1, "PrimitiveDecl": 32,
+                               "RobotDecl": 1, "SettingDecl": 1, "StateDecl": 19},
 }
 
 SOURCES = [STDLIB, *sorted(EXAMPLES.glob("*.rdis"))]

@@ -139,6 +139,7 @@ def test_every_expression_of_the_examples() -> None:
         model = compile_path(str(path)).model
         assert model is not None
         state = {s.name: s.initial for s in model.states.values()}
+        state.update({s.name: s.default for s in model.settings.values()})  # read where state is
         state.update({name: 3 if s.type is INT else 0.5 for name, s in model.states.items()
                       if s.type in (INT, FLOAT) and s.initial == 0})
         for expr in _expressions(model):

@@ -251,7 +251,11 @@ _CAPTURE_REPLY = {"read_status": reply_frame(90, b"\x00")}
 
 
 class Call(NamedTuple):
-    """One request: driver method, arguments, suggested rdisc primitive, the manual's bytes if different."""
+    """One request: driver method, arguments, suggested rdisc primitive, the manual's bytes if different.
+
+    `primitive` is rdisc's primitive, its leading arguments after a space ("forward 1": M1's
+    forward), and several joined by " + " where one call of the driver writes several commands.
+    """
 
     method: str
     args: tuple[Any, ...]
@@ -274,48 +278,48 @@ def _c(method: str, primitive: str, *arg_sets: tuple[Any, ...]) -> list[Call]:
 
 
 CALLS: list[Call] = [
-    *_c("ForwardM1", "m1_forward", (0,), (64,), (127,)),
-    Call("ForwardM1", (128,), "m1_forward", ValueError),
-    Call("ForwardM1", (-1,), "m1_forward"),  # OverflowError, after writing 80 00
-    *_c("BackwardM1", "m1_backward", (64,)),
-    *_c("ForwardM2", "m2_forward", (127,)),
-    *_c("BackwardM2", "m2_backward", (0,)),
-    *_c("ForwardBackwardM1", "m1_drive_7bit", (0,), (64,), (127,)),
-    *_c("ForwardBackwardM2", "m2_drive_7bit", (64,)),
+    *_c("ForwardM1", "forward 1", (0,), (64,), (127,)),
+    Call("ForwardM1", (128,), "forward 1", ValueError),
+    Call("ForwardM1", (-1,), "forward 1"),  # OverflowError, after writing 80 00
+    *_c("BackwardM1", "backward 1", (64,)),
+    *_c("ForwardM2", "forward 2", (127,)),
+    *_c("BackwardM2", "backward 2", (0,)),
+    *_c("ForwardBackwardM1", "drive_7bit 1", (0,), (64,), (127,)),
+    *_c("ForwardBackwardM2", "drive_7bit 2", (64,)),
     *_c("MixedForward", "mixed_forward", (127,)),
     *_c("MixedBackward", "mixed_backward", (32,)),
     *_c("MixedTurnRight", "mixed_turn_right", (10,)),
     *_c("MixedTurnLeft", "mixed_turn_left", (10,)),
     *_c("MixedForwardBackward", "mixed_drive_7bit", (64,)),
     *_c("MixedLeftRight", "mixed_turn_7bit", (0,)),
-    *_c("DutyM1", "m1_duty", (0,), (16384,), (-16384,), (32767,), (-32768,)),
-    Call("DutyM1", (32768,), "m1_duty", ValueError),
-    Call("DutyM1", (-32769,), "m1_duty", ValueError),
-    *_c("DutyM2", "m2_duty", (-1,)),
+    *_c("DutyM1", "duty 1", (0,), (16384,), (-16384,), (32767,), (-32768,)),
+    Call("DutyM1", (32768,), "duty 1", ValueError),
+    Call("DutyM1", (-32769,), "duty 1", ValueError),
+    *_c("DutyM2", "duty 2", (-1,)),
     *_c("DutyM1M2", "duty_both", (0, 0), (32767, -32768)),
-    *_c("SpeedM1", "m1_speed", (0,), (12000,), (-12000,), (2**31 - 1,), (-(2**31),)),
-    Call("SpeedM1", (2**31,), "m1_speed", ValueError),
-    *_c("SpeedM2", "m2_speed", (-1,)),
+    *_c("SpeedM1", "speed 1", (0,), (12000,), (-12000,), (2**31 - 1,), (-(2**31),)),
+    Call("SpeedM1", (2**31,), "speed 1", ValueError),
+    *_c("SpeedM2", "speed 2", (-1,)),
     *_c("SpeedM1M2", "speed_both", (1000, -1000)),
-    *_c("SpeedAccelM1", "m1_speed_accel", (12000, 12000), (2**32 - 1, -(2**31))),
-    *_c("SpeedAccelM2", "m2_speed_accel", (24000, -12000)),
+    *_c("SpeedAccelM1", "speed_accel 1", (12000, 12000), (2**32 - 1, -(2**31))),
+    *_c("SpeedAccelM2", "speed_accel 2", (24000, -12000)),
     *_c("SpeedAccelM1M2", "speed_accel_both", (12000, 1000, -1000)),
     *_c("ResetEncoders", "reset_encoders"),
-    *_c("SetEncM1", "set_encoder_m1", (0,), (2**32 - 1,)),
-    Call("SetEncM1", (-1,), "set_encoder_m1", ValueError),
-    *_c("SetEncM2", "set_encoder_m2", (1000,)),
-    *_c("ReadEncM1", "read_encoder_m1"),
-    *_c("ReadEncM2", "read_encoder_m2"),
-    *_c("ReadSpeedM1", "read_speed_m1"),
-    *_c("ReadSpeedM2", "read_speed_m2"),
+    *_c("SetEncM1", "set_encoder 1", (0,), (2**32 - 1,)),
+    Call("SetEncM1", (-1,), "set_encoder 1", ValueError),
+    *_c("SetEncM2", "set_encoder 2", (1000,)),
+    *_c("ReadEncM1", "read_encoder 1"),
+    *_c("ReadEncM2", "read_encoder 2"),
+    *_c("ReadSpeedM1", "read_speed 1"),
+    *_c("ReadSpeedM2", "read_speed 2"),
     *_c("ReadMainBatteryVoltage", "read_main_battery"),
     *_c("ReadLogicBatteryVoltage", "read_logic_battery"),
     *_c("ReadVersion", "read_version"),
-    *_c("SetM1VelocityPID", "set_velocity_pid_m1", (1.0, 0.5, 0.25, 44000), (0, 0, 0, 0),
+    *_c("SetM1VelocityPID", "set_velocity_pid 1", (1.0, 0.5, 0.25, 44000), (0, 0, 0, 0),
         (1 / 3, 0, 0, 1)),
-    *_c("SetM2VelocityPID", "set_velocity_pid_m2", (1.0, 0.5, 0.25, 44000)),
-    *_c("ReadM1VelocityPID", "read_velocity_pid_m1"),
-    *_c("ReadM2VelocityPID", "read_velocity_pid_m2"),
+    *_c("SetM2VelocityPID", "set_velocity_pid 2", (1.0, 0.5, 0.25, 44000)),
+    *_c("ReadM1VelocityPID", "read_velocity_pid 1"),
+    *_c("ReadM2VelocityPID", "read_velocity_pid 2"),
     *_c("ReadPWMs", "read_pwms"),
     *_c("ReadCurrents", "read_currents"),
     *_c("SetMainVoltages", "set_main_battery_limits", (60, 340)),
@@ -324,28 +328,28 @@ CALLS: list[Call] = [
     *_c("ReadTemp", "read_temperature"),
     *_c("ReadError", "read_status"),
     # pyroboclaw
-    *_c("set_speed", "m1_speed", (1, 0), (1, 12000)),
-    *_c("set_speed", "m2_speed", (2, -12000)),
-    Call("set_speed", (1, 2**31), "m1_speed"),  # struct.error
-    *_c("drive_motor", "m1_drive_7bit", (1, 0), (1, -64), (1, 63)),
-    *_c("drive_motor", "m2_drive_7bit", (2, 0)),
-    Call("drive_motor", (1, 64), "m1_drive_7bit", ValueError),
-    Call("drive_motor", (1, -65), "m1_drive_7bit"),  # struct.error
-    *_c("stop_motor", "m1_forward", (1,)),
-    *_c("stop_motor", "m2_forward", (2,)),
-    *_c("stop_all", "m1_forward + m2_forward"),
-    *_c("reset_quad_encoders", "set_encoder_m1 + set_encoder_m2"),
-    *_c("read_encoder", "read_encoder_m1", (1,)),
-    *_c("read_encoder", "read_encoder_m2", (2,)),
+    *_c("set_speed", "speed 1", (1, 0), (1, 12000)),
+    *_c("set_speed", "speed 2", (2, -12000)),
+    Call("set_speed", (1, 2**31), "speed 1"),  # struct.error
+    *_c("drive_motor", "drive_7bit 1", (1, 0), (1, -64), (1, 63)),
+    *_c("drive_motor", "drive_7bit 2", (2, 0)),
+    Call("drive_motor", (1, 64), "drive_7bit 1", ValueError),
+    Call("drive_motor", (1, -65), "drive_7bit 1"),  # struct.error
+    *_c("stop_motor", "forward 1", (1,)),
+    *_c("stop_motor", "forward 2", (2,)),
+    *_c("stop_all", "forward 1 + forward 2"),
+    *_c("reset_quad_encoders", "set_encoder 1 + set_encoder 2"),
+    *_c("read_encoder", "read_encoder 1", (1,)),
+    *_c("read_encoder", "read_encoder 2", (2,)),
     *_c("read_batt_voltage", "read_main_battery", ("main",)),
     *_c("read_batt_voltage", "read_logic_battery", ("logic",)),
-    *_c("read_speed", "read_velocity_pid_m1 + read_speed_m1", (1,)),
-    *_c("read_max_speed", "read_velocity_pid_m2", (2,)),
+    *_c("read_speed", "read_velocity_pid 1 + read_speed 1", (1,)),
+    *_c("read_max_speed", "read_velocity_pid 2", (2,)),
     *_c("read_currents", "read_currents"),
     *_c("read_motor_pwms", "read_pwms"),
     *_c("read_temp_sensor", "read_temperature", (1,)),
     *_c("read_status", "read_status"),
-    *_c("drive_to_position_raw", "m1_speed_accel_decel_position", (1, 1000, 2000, 1000, 5000, 1)),
+    *_c("drive_to_position_raw", "speed_accel_decel_position 1", (1, 1000, 2000, 1000, 5000, 1)),
 ]
 
 

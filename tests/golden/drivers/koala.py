@@ -2472,22 +2472,22 @@ def _p_read_position_actions(state: StateValues, args: Args, reply: Sequence[Any
         "odomX": _add(
             state["odomX"],
             _mul(
-                _mul(
-                    state["metersPerPulse"],
+                4.5e-05
+                * (
                     _int(reply[0])
                     - state["leftCount"]
-                    + (_int(reply[1]) - state["rightCount"]),
+                    + (_int(reply[1]) - state["rightCount"])
                 )
                 / 2,
                 math.cos(
                     _add(
                         state["odomTheta"],
                         _div(
-                            _mul(
-                                state["metersPerPulse"],
+                            4.5e-05
+                            * (
                                 _int(reply[1])
                                 - state["rightCount"]
-                                - (_int(reply[0]) - state["leftCount"]),
+                                - (_int(reply[0]) - state["leftCount"])
                             ),
                             _mul(2, state["wheelBase"]),
                         ),
@@ -2498,22 +2498,22 @@ def _p_read_position_actions(state: StateValues, args: Args, reply: Sequence[Any
         "odomY": _add(
             state["odomY"],
             _mul(
-                _mul(
-                    state["metersPerPulse"],
+                4.5e-05
+                * (
                     _int(reply[0])
                     - state["leftCount"]
-                    + (_int(reply[1]) - state["rightCount"]),
+                    + (_int(reply[1]) - state["rightCount"])
                 )
                 / 2,
                 math.sin(
                     _add(
                         state["odomTheta"],
                         _div(
-                            _mul(
-                                state["metersPerPulse"],
+                            4.5e-05
+                            * (
                                 _int(reply[1])
                                 - state["rightCount"]
-                                - (_int(reply[0]) - state["leftCount"]),
+                                - (_int(reply[0]) - state["leftCount"])
                             ),
                             _mul(2, state["wheelBase"]),
                         ),
@@ -2526,11 +2526,11 @@ def _p_read_position_actions(state: StateValues, args: Args, reply: Sequence[Any
                 _add(
                     state["odomTheta"],
                     _div(
-                        _mul(
-                            state["metersPerPulse"],
+                        4.5e-05
+                        * (
                             _int(reply[1])
                             - state["rightCount"]
-                            - (_int(reply[0]) - state["leftCount"]),
+                            - (_int(reply[0]) - state["leftCount"])
                         ),
                         state["wheelBase"],
                     ),
@@ -2540,11 +2540,11 @@ def _p_read_position_actions(state: StateValues, args: Args, reply: Sequence[Any
                 _add(
                     state["odomTheta"],
                     _div(
-                        _mul(
-                            state["metersPerPulse"],
+                        4.5e-05
+                        * (
                             _int(reply[1])
                             - state["rightCount"]
-                            - (_int(reply[0]) - state["leftCount"]),
+                            - (_int(reply[0]) - state["leftCount"])
                         ),
                         state["wheelBase"],
                     ),
@@ -2618,11 +2618,8 @@ def _o_odometry(state: StateValues) -> dict[str, Value]:
         "x": state["odomX"],
         "y": state["odomY"],
         "theta": state["odomTheta"],
-        "linear": _mul(state["leftSpeed"] + state["rightSpeed"], state["speedUnit"]) / 2,
-        "angular": _div(
-            _mul(state["rightSpeed"] - state["leftSpeed"], state["speedUnit"]),
-            state["wheelBase"],
-        ),
+        "linear": (state["leftSpeed"] + state["rightSpeed"]) * 0.0045 / 2,
+        "angular": _div((state["rightSpeed"] - state["leftSpeed"]) * 0.0045, state["wheelBase"]),
     }
 
 
@@ -2669,8 +2666,8 @@ _I_SHUTDOWN = Interface("shutdown", (), (Call(_P_SET_SPEED, _i_shutdown_1, 0.0, 
 def _i_drive_1(state: StateValues, args: Args) -> Args:
     left, right = args
     return [
-        _clamp(round(left / state["speedUnit"]), -state["maxSpeed"], state["maxSpeed"]),
-        _clamp(round(right / state["speedUnit"]), -state["maxSpeed"], state["maxSpeed"]),
+        _clamp(round(left / 0.0045), -state["maxSpeed"], state["maxSpeed"]),
+        _clamp(round(right / 0.0045), -state["maxSpeed"], state["maxSpeed"]),
     ]
 
 
@@ -2743,13 +2740,22 @@ _C_RS232 = Connection(
 )
 
 
+_SETTINGS = (
+    Param("wheelBase", float, 0.1, 1.0, default=0.32),
+    Param("maxSpeed", int, 0, 1000, default=127),
+    Param("obstacleThreshold", int, 0, 1023, default=600),
+)
+"""The settings, given when connecting (`connect(port, NAME=value)`, `--set NAME=VALUE`)."""
+
+
 _DEVICE = Device(
     ROBOT,
-    {"speedUnit": 0.0045, "metersPerPulse": 4.5e-05, "wheelBase": 0.32, "maxSpeed": 127, "obstacleThreshold": 600, "leftSpeed": 0, "rightSpeed": 0, "leftCount": 0, "rightCount": 0, "odomX": 0.0, "odomY": 0.0, "odomTheta": 0.0, "proximity": 0},
+    {"wheelBase": 0.32, "maxSpeed": 127, "obstacleThreshold": 600, "leftSpeed": 0, "rightSpeed": 0, "leftCount": 0, "rightCount": 0, "odomX": 0.0, "odomY": 0.0, "odomTheta": 0.0, "proximity": 0},
     {"rs232": _C_RS232},
     {"set_speed": _P_SET_SPEED, "read_speed": _P_READ_SPEED, "set_position": _P_SET_POSITION, "read_position": _P_READ_POSITION, "read_proximity": _P_READ_PROXIMITY},
     {"startup": _I_STARTUP, "shutdown": _I_SHUTDOWN, "drive": _I_DRIVE, "update_odometry": _I_UPDATE_ODOMETRY, "update_proximity": _I_UPDATE_PROXIMITY},
     {"set_velocity": _IN_SET_VELOCITY},
+    settings=_SETTINGS,
 )
 """The whole description, planned: what the robot runs."""
 
@@ -2762,31 +2768,6 @@ class KoalaState(State):
     """
 
     __slots__ = ()
-
-    # koala.rdis:32
-    speedUnit: float
-    """Metres per second per Koala speed unit (one pulse per 10 ms)."""
-
-    # koala.rdis:34
-    metersPerPulse: float
-    """Metres of wheel travel per encoder pulse."""
-
-    # koala.rdis:36
-    wheelBase: float
-    """Distance between the two wheels, in metres (approximate; calibrate)."""
-
-    # koala.rdis:39
-    maxSpeed: int
-    """Largest wheel speed sent, in speed units: 127 is about 0.57 m/s. This is a
-    conservative limit, not the firmware's: raise it if your Koala allows more.
-    """
-
-    # koala.rdis:43
-    obstacleThreshold: int
-    """Proximity reading (0 to 1023, larger is nearer) from which an obstacle is
-    reported. Infrared readings depend on the obstacle's colour and surface:
-    tune this value for your environment.
-    """
 
     # koala.rdis:48
     leftSpeed: int
@@ -2978,6 +2959,9 @@ def connect(
     on_output: OutputCallback | None = None,
     on_error: ErrorCallback | None = None,
     on_io: IoCallback | None = None,
+    wheelBase: float = 0.32,
+    maxSpeed: int = 127,
+    obstacleThreshold: int = 600,
 ) -> Koala:
     """The robot, running: its ports open, its startup hooks run, its threads started.
 
@@ -2987,6 +2971,11 @@ def connect(
     (connections: rs232). `timeout`: seconds to wait for a reply. With
     `threads=False`, call `tick()` yourself. Callbacks given here are registered
     before anything is opened, so they also see what the startup hooks do.
+
+    Settings (a value outside its type or range is refused before anything is opened):
+        wheelBase in 0.1..1.0: Distance between the two wheels, in metres (approximate: calibrate it).
+        maxSpeed in 0..1000: Largest wheel speed sent, in speed units: 127 is about 0.57 m/s.
+        obstacleThreshold in 0..1023: Proximity reading (0 to 1023, larger is nearer) from which an obstacle is reported.
     """
     robot = Koala(timeout=timeout)
     if on_output is not None:
@@ -2995,7 +2984,11 @@ def connect(
         robot.on_error(on_error)
     if on_io is not None:
         robot.on_io(on_io)
-    robot.open(port, threads=threads)
+    robot.open(port, threads=threads, settings={
+        "wheelBase": wheelBase,
+        "maxSpeed": maxSpeed,
+        "obstacleThreshold": obstacleThreshold,
+    })
     return robot
 
 
