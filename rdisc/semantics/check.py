@@ -13,7 +13,7 @@ from collections.abc import Iterator, Sequence
 from dataclasses import dataclass, replace
 
 from rdisc.diagnostics import Diagnostics, Label, abbreviate
-from rdisc.limits import MAX_ARRAY
+from rdisc.limits import MAX_ARRAY, MAX_INT
 from rdisc.semantics import formats, ros
 from rdisc.semantics import model as m
 from rdisc.semantics.frames import FrameRules, length_part, length_range, length_words, payload_end_known
@@ -220,6 +220,9 @@ class _Checker:
             return None, None
         if type_ is Type.INT and (low != int(low) or high != int(high)):
             self.d.report("E204", p.low.span.to(p.high.span), f"an int {what}'s range has int bounds")
+            return None, None
+        if type_ is Type.INT and not (-MAX_INT <= low and high <= MAX_INT):  # `0..1e308` is an int, not a 64-bit one
+            self.d.report("E204", p.low.span.to(p.high.span), f"an int {what}'s range has bounds of 64 bits and a sign")
             return None, None
         if type_ is Type.BYTES and (low != int(low) or high != int(high) or low < 0):
             self.d.report("E204", p.low.span.to(p.high.span), "a length's range has int bounds, 0 or more")
