@@ -305,6 +305,17 @@ inside another `either` or an `optional`. Wrong: `either { payload } or
 { header "\\x03" length ">H" = payload payload }`. Right: `either { header
 "\\x02" length "B" = payload } or { header "\\x03" length ">H" = payload }
 payload checksum "crc16-xmodem" ">H" over payload terminator "\\x03"`."""),
+    ("E508", "bit-fields", """
+`bits FORMAT { ... }` splits one unsigned integer of a struct format (`"B"`,
+`"<H"`, `"<I"`, `"<Q"`) into fields, from its lowest bit up: `field NAME: WIDTH =
+expr` (a value over the frame's parameters, checked in a reply like a `field`) and
+at most one `length: WIDTH = payload + N` (the frame's one length, which must state
+every payload as a `length` part must, E503). The widths, each 1 bit or more, add
+up to the integer's bits exactly: a reserved bit is a field too (`field reserved:
+1 = 0`). A constant that does not fit its width is E403. RPLIDAR's response
+descriptor keeps a 30-bit length under a 2-bit send mode in one little-endian u32.
+Wrong: `bits "<I" { length: 30 = payload }` (2 bits unsaid). Right: `bits "<I" {
+length: 30 = payload  field mode: 2 = mode }`."""),
     ("E505", "reply-table", """
 A reply table (`reply KEY { VALUE: unpack ... }`) chooses a primitive's reply by
 the value of one of its int parameters, so that parameter needs a range

@@ -222,6 +222,10 @@ def _frame_part(part: m.FramePart) -> JsonObject:
             )
         case m.FrameOptional(count):
             return {"optional": count}
+        case m.FrameBits(fmt, fields):
+            return {"bits": fmt, "fields": [
+                {"length": True, "width": f.width, "adjust": f.adjust} if f.value is None else
+                {"field": f.name, "width": f.width, "value": _embedded(f.value)} for f in fields]}
         case _:
             _unreachable(part)
 

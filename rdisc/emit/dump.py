@@ -168,6 +168,8 @@ def _side(name: str, parts: tuple[m.FramePart, ...] | None, payload: list[Row], 
                 case m.FrameLength(format=fmt, adjust=adjust):
                     sign = f" {'+' if adjust >= 0 else '-'} {abs(adjust)}" if adjust else ""
                     rows.append((formats.struct_layout(fmt).size, "length", f'"{fmt}" = payload{sign}'))
+                case m.FrameBits(format=fmt, fields=bits):
+                    rows.append((formats.struct_layout(fmt).size, "bits", f'"{fmt}": ' + _bit_fields(bits)))
                 case m.FramePayload():
                     rows += [(size, f"payload {what}", detail) for size, what, detail in payload] or [
                         (0, "payload", "(empty)")]
@@ -192,6 +194,18 @@ def _side(name: str, parts: tuple[m.FramePart, ...] | None, payload: list[Row], 
     return out
 
 
+def _bit_fields(bits: tuple[m.BitField, ...]) -> str:
+    """A `bits` integer's fields with the bits each takes, from the lowest up."""
+    said, low = [], 0
+    for bit in bits:
+        value = expression_text(bit.value) if bit.value is not None else "payload" + (
+            f" {'+' if bit.adjust >= 0 else '-'} {abs(bit.adjust)}" if bit.adjust else "")
+        where = f"bit {low}" if bit.width == 1 else f"bits {low}..{low + bit.width - 1}"
+        said.append(f"{bit.name} = {value} ({where})")
+        low += bit.width
+    return ", ".join(said)
+
+
 def _name(part: m.FramePart) -> str:
     match part:
         case m.FrameBytes(role=role):
@@ -200,6 +214,8 @@ def _name(part: m.FramePart) -> str:
             return name
         case m.FrameLength():
             return "length"
+        case m.FrameBits(fields=bits):
+            return "length" if any(bit.value is None for bit in bits) else bits[0].name if bits else "bits"
         case m.FramePayload():
             return "payload"
     return "checksum"

@@ -29,7 +29,7 @@ from rdisc.emit import python_support as support
 from rdisc.emit.python_expr import Chain, Compiler, Paren, Py, lines, literal, quoted, table_name
 from rdisc.emit.writer import Writer
 from rdisc.runtime import engine
-from rdisc.runtime.codec import decoder, encoder, frame_fields
+from rdisc.runtime.codec import bit_fields, decoder, encoder, frame_fields
 from rdisc.runtime.device import Description
 from rdisc.semantics import model as m
 from rdisc.semantics.model import Type
@@ -879,6 +879,9 @@ def _frame_part(part: m.FramePart, index: Mapping[tuple[str, m.Expr], int]) -> s
             return f"Check(Checksum({args}), {fmt}, {part.first}, {part.last}, {part.with_request!r})"
         case m.FrameOptional(count=count):
             return f"OptionalParts({count})"
+        case m.FrameBits(format=fmt):
+            entries, adjust = bit_fields(part, dict(index))
+            return f"Bits({quoted(fmt)}, {entries!r}, {adjust})"
     _unreachable(part)
 
 

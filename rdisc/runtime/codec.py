@@ -14,7 +14,7 @@ from rdisc.runtime import engine
 from rdisc.semantics import formats
 from rdisc.semantics import model as m
 
-__all__ = ["checksum", "decoder", "encoder", "frame_fields", "wire_frame"]
+__all__ = ["bit_fields", "checksum", "decoder", "encoder", "frame_fields", "wire_frame"]
 
 
 def encoder(encoding: m.Pack | m.Format) -> engine.Pack | engine.Format:
@@ -43,7 +43,16 @@ def frame_fields(frame: m.Frame) -> tuple[tuple[str, m.Expr], ...]:
     for part in (part for layout in (*frame.requests, *frame.replies) for part in layout):
         if isinstance(part, m.FrameField):
             fields[(part.name, part.value)] = None
+        elif isinstance(part, m.FrameBits):
+            fields.update(((bit.name, bit.value), None) for bit in part.fields if bit.value is not None)
     return tuple(fields)
+
+
+def bit_fields(part: m.FrameBits, index: dict[tuple[str, m.Expr], int]) -> tuple[list[tuple[str, int, int]], int]:
+    """A `bits` part as the engine's `Bits` takes it: (name, width, field index or -1 for the
+    length) from the lowest bits up, and the length's adjust."""
+    entries = [(bit.name, bit.width, -1 if bit.value is None else index[(bit.name, bit.value)]) for bit in part.fields]
+    return entries, part.length.adjust if part.length is not None else 0
 
 
 def wire_frame(frame: m.Frame, params: tuple[engine.Param, ...] = (),
@@ -78,6 +87,8 @@ def _part(part: m.FramePart, index: dict[tuple[str, m.Expr], int]) -> engine.Par
             return engine.Check(checksum(part.algorithm), part.format, part.first, part.last, part.with_request)
         case m.FrameOptional(count=count):
             return engine.OptionalParts(count)
+        case m.FrameBits(format=fmt):
+            return engine.Bits(fmt, *bit_fields(part, index))
     raise AssertionError(part)
 
 

@@ -14,7 +14,7 @@ from dataclasses import dataclass
 from rdisc.diagnostics import Diagnostics
 from rdisc.semantics import formats
 from rdisc.semantics import model as m
-from rdisc.semantics.frames import length_range
+from rdisc.semantics.frames import length_part, length_range
 
 BITS_PER_BYTE = 10  # 8N1: start bit, 8 data bits, stop bit
 _SAMPLE = {m.Type.INT: 0, m.Type.FLOAT: 0.0, m.Type.BOOL: False, m.Type.STRING: ""}
@@ -190,7 +190,7 @@ def message_bytes(prim: m.Primitive, frames: dict[str, m.Frame] | None = None) -
 def _written(layouts: tuple[tuple[m.FramePart, ...], ...], size: int) -> tuple[m.FramePart, ...]:
     """The layout a request of `size` bytes is written with: the first whose length field can state it."""
     for parts in layouts:
-        length = next((p for p in parts if isinstance(p, m.FrameLength)), None)
+        length = length_part(parts)
         if length is None or size <= length_range(length)[1]:
             return parts
     return layouts[-1]
@@ -209,7 +209,7 @@ def frame_bytes(parts: tuple[m.FramePart, ...], shortest: bool = False) -> int:
                 skip = count
             case m.FrameBytes(data=data):
                 size += len(data)
-            case m.FrameField(format=fmt) | m.FrameLength(format=fmt):
+            case m.FrameField(format=fmt) | m.FrameLength(format=fmt) | m.FrameBits(format=fmt):
                 size += formats.struct_layout(fmt).size
             case m.FrameChecksum(algorithm=a, format=fmt):
                 size += formats.struct_layout(fmt).size if fmt is not None else (a.width + 3) // 4

@@ -13,10 +13,10 @@ from collections.abc import Iterator, Sequence
 from dataclasses import dataclass, replace
 
 from rdisc.diagnostics import Diagnostics, Label, abbreviate
-from rdisc.limits import MAX_ARRAY
+from rdisc.limits import MAX_ARRAY, MAX_INT
 from rdisc.semantics import formats, ros
 from rdisc.semantics import model as m
-from rdisc.semantics.frames import FrameRules, length_range, payload_end_known
+from rdisc.semantics.frames import FrameRules, length_part, length_range, length_words, payload_end_known
 from rdisc.semantics.model import Scope, Type
 from rdisc.semantics.operators import shown
 from rdisc.semantics.resolve import Symbols, Unit, check_name, suggest
@@ -220,6 +220,9 @@ class _Checker:
             return None, None
         if type_ is Type.INT and (low != int(low) or high != int(high)):
             self.d.report("E204", p.low.span.to(p.high.span), f"an int {what}'s range has int bounds")
+            return None, None
+        if type_ is Type.INT and not (-MAX_INT <= low and high <= MAX_INT):  # `0..1e308` is an int, not a 64-bit one
+            self.d.report("E204", p.low.span.to(p.high.span), f"an int {what}'s range has bounds of 64 bits and a sign")
             return None, None
         if type_ is Type.BYTES and (low != int(low) or high != int(high) or low < 0):
             self.d.report("E204", p.low.span.to(p.high.span), "a length's range has int bounds, 0 or more")
@@ -853,7 +856,7 @@ class _Checker:
                           help="add a `length` field, constant bytes after the payload, or decode with `unpack`")
         sizes = [(frame.requests, request), *((frame.replies, None if n is None else (n, n, "")) for n in reply_sizes)]
         for layouts, payload in sizes:
-            found = [next((p for p in parts if isinstance(p, m.FrameLength)), None) for parts in layouts]
+            found = [length_part(parts) for parts in layouts]
             if not found or None in found or payload is None:  # a layout without a length field carries any payload
                 continue
             lengths = [length for length in found if length is not None]
@@ -862,8 +865,8 @@ class _Checker:
             fewest, most, by = payload
             if low <= fewest and most <= high:
                 continue
-            field = (f"the length field \"{lengths[0].format}\"" if len(lengths) == 1 else
-                     "the length fields " + ", ".join(f'"{length.format}"' for length in lengths))
+            field = (f"the length field {length_words(lengths[0])}" if len(lengths) == 1 else
+                     "the length fields " + ", ".join(length_words(length) for length in lengths))
             states = f"{'it states' if len(lengths) == 1 else 'they state'} payloads of {low} to {high} bytes"
             if not by:
                 self.d.report("E503", clause.span, f"{field} of frame `{frame.name}` "
@@ -886,19 +889,27 @@ class _Checker:
                 known[param.name] = value
         spans = {p.name: expr.span for p, expr in zip(frame.params, clause.args)}
         seen: set[tuple[str, m.Expr]] = set()
-        for part in (part for layout in (*frame.requests, *frame.replies) for part in layout):
-            if (not isinstance(part, m.FrameField) or (part.name, part.value) in seen
+        parts = [part for layout in (*frame.requests, *frame.replies) for part in layout]
+        for part in [*parts, *(bit for bits in parts if isinstance(bits, m.FrameBits) for bit in bits.fields)]:
+            if (not isinstance(part, (m.FrameField, m.BitField)) or part.value is None
+                    or (part.name, part.value) in seen
                     or self.typer.is_constant(part.value)):  # a constant field is checked with its frame
                 continue
             seen.add((part.name, part.value))
-            try:
-                slot = formats.struct_layout(part.format).slots[0]
-            except (formats.TemplateError, IndexError):  # the frame's own check reported it
-                continue
             value = self.typer.value_over(part.value, known)
             direct = isinstance(part.value, m.Var) and part.value.name in spans
             span = spans[part.value.name] if direct else clause.span  # type: ignore[union-attr]
             where = f" of frame `{frame.name}`" if direct else f" as field `{part.name}` of frame `{frame.name}`"
+            if isinstance(part, m.BitField):
+                if isinstance(value, int) and not isinstance(value, bool) and not 0 <= value < 1 << part.width:
+                    self.d.report("E403", span, f"{value} does not fit the {part.width} bits of field "
+                                  f"`{part.name}`{where}", label=f"field `{part.name}` is {part.width} bits, "
+                                  f"0 to {(1 << part.width) - 1}")
+                continue
+            try:
+                slot = formats.struct_layout(part.format).slots[0]
+            except (formats.TemplateError, IndexError):  # the frame's own check reported it
+                continue
             self.fits(value, slot, span, where,
                       f"field `{part.name}` is packed as `{slot.code}`, {slot.low} to {slot.high}")
 

@@ -138,7 +138,7 @@ class FrameRules:
         name = decl.name.text
         if side == "request":
             for n, layout in enumerate(layouts[:-1], 1):
-                if not any(isinstance(p, m.FrameLength) for p in layout):
+                if length_part(layout) is None:
                     self.d.report("E507", either.span, f"alternative {n + 1} of frame `{name}` is never written: "
                                   f"alternative {n} has no length field, so it carries every payload",
                                   help="the writer takes the first alternative whose length field can state the "
@@ -192,8 +192,9 @@ class FrameRules:
                      help="`payload` marks where the primitive's own bytes go")
         elif side == "reply" and len(payloads) > 1:
             d.report("E501", payloads[1].span, f"the reply of frame `{decl.name.text}` has two payloads")
-        lengths = [p for p in parts if isinstance(p, ast.FrameLength)]
-        for extra in lengths[1:]:
+        lengths = [p for p in parts if isinstance(p, ast.FrameLength)] + [
+            f for p in parts if isinstance(p, ast.FrameBits) for f in p.fields if f.name is None]
+        for extra in sorted(lengths, key=lambda p: p.span.start)[1:]:
             d.report("E501", extra.span, f"frame `{decl.name.text}` has two length fields")
         optionals = [p for p in parts if isinstance(p, ast.FrameOptional)]
         for again in optionals[1:]:
@@ -216,6 +217,10 @@ class FrameRules:
                     out.append(m.FramePayload())
                 case ast.FrameChecksum():
                     out.append(self.checksum(part, i, parts, names, side, d))
+                case ast.FrameBits():
+                    out.append(self.bits(part, env, d, fields))
+                    for bit in part.fields:
+                        names[bit.name.text if bit.name is not None else "length"] = i
                 case ast.FrameOptional():
                     count = sum(1 for p in part.parts if not isinstance(p, (ast.FrameOptional, ast.FrameEither)))
                     self.optional(part, parts[i - 1] if i else None, parts[i + 1 : i + 1 + count],
@@ -236,6 +241,8 @@ class FrameRules:
             d.report("E506", part.span, "an `optional` comes right after the `payload`",
                      help="a reader looks for it where the payload ends")
         for p in inner:
+            if isinstance(p, ast.FrameBits) and any(f.name is None for f in p.fields):
+                d.report("E506", p.span, "an `optional` holds constant bytes, fields and checksums, not a `length`")
             if isinstance(p, (ast.FramePayload, ast.FrameLength)) or (isinstance(p, ast.FrameBytes)
                                                                       and p.role != "literal"):
                 word = p.role if isinstance(p, ast.FrameBytes) else "payload" if isinstance(
@@ -279,6 +286,45 @@ class FrameRules:
             d.report("E403", part.value.span, f"{constant} does not fit `{part.format.value}`")
         fields.setdefault(part.name.text, len(fields))
         return m.FrameField(part.name.text, part.format.value, value)
+
+    def bits(self, part: ast.FrameBits, env: Env, d: Diagnostics, fields: dict[str, int]) -> m.FrameBits:
+        """An integer split into fields from its lowest bit up: unsigned, every bit of it said once."""
+        fmt = part.format.value
+        slot = self.integer_format(part.format, "a `bits` integer", d, "E508")
+        size = 0
+        if slot is not None and slot.low != 0:
+            d.report("E508", part.format.span, f"a `bits` integer is unsigned: \"{abbreviate(fmt)}\" is signed",
+                     help=f"use \"{fmt[:-1]}{fmt[-1].upper()}\"")
+        elif slot is not None:
+            size = 8 * formats.struct_layout(fmt).size
+        out: list[m.BitField] = []
+        for bit in part.fields:
+            name = bit.name.text if bit.name is not None else "length"
+            if not 1 <= bit.width <= 64:
+                d.report("E508", bit.span, f"bit field `{name}` is 1 to 64 bits wide, not {bit.width}")
+                continue
+            if bit.name is None or bit.value is None:
+                out.append(m.BitField(name, bit.width, None, bit.adjust))
+                continue
+            if name in _PART_WORDS:
+                d.report("E104", bit.name.span, f"`{name}` names a part of every frame and cannot name a field")
+            value = self.typer.expr(bit.value, env)
+            if value.type is not None and value.type is not Type.INT:
+                d.report("E401", bit.value.span, f"field `{name}` takes an int")
+            constant = self.typer.constant(value)
+            if isinstance(constant, int) and not isinstance(constant, bool) and not (
+                    0 <= constant < 1 << bit.width):
+                d.report("E403", bit.value.span, f"{constant} does not fit the {bit.width} bits of field `{name}` "
+                         f"(0 to {(1 << bit.width) - 1})")
+            fields.setdefault(name, len(fields))
+            out.append(m.BitField(name, bit.width, value))
+        taken = sum(bit.width for bit in part.fields)
+        if size and taken != size and len(out) == len(part.fields):
+            missing = size - taken
+            d.report("E508", part.span, f"the fields of `bits \"{abbreviate(fmt)}\"` take {taken} of its {size} bits",
+                     help=f"say the other {missing} bit{'s' if missing != 1 else ''}: `field reserved: {missing} = 0`"
+                     if missing > 0 else "narrow the fields, or take a wider integer")
+        return m.FrameBits(fmt, tuple(out))
 
     def integer_format(self, lit: ast.StrLit, what: str, d: Diagnostics, code: str) -> formats.Slot | None:
         """The one integer slot of a part's struct format; anything else is reported."""
@@ -399,7 +445,7 @@ def payload_end_known(frame: m.Frame, size_known: bool) -> bool:
 
 def _end_known(reply: tuple[m.FramePart, ...], size_known: bool) -> bool:
     at = next((i for i, p in enumerate(reply) if isinstance(p, m.FramePayload)), None)
-    if at is None or size_known or any(isinstance(p, m.FrameLength) for p in reply):
+    if at is None or size_known or length_part(reply) is not None:
         return True
     after = at + 1
     if after < len(reply) and isinstance(reply[after], m.FrameOptional):  # the constant after it ends both
@@ -446,8 +492,30 @@ def _one_slip(a: str, b: str) -> bool:
     return any(long_[:i] + long_[i + 1:] == short for i in range(len(long_)))
 
 
-def length_range(part: m.FrameLength) -> tuple[int, int]:
+def length_part(parts: tuple[m.FramePart, ...]) -> m.FrameLength | m.FrameBits | None:
+    """The part of a layout holding its length: a `length`, or a `bits` with a length field in it."""
+    return next((p for p in parts if isinstance(p, m.FrameLength)
+                 or (isinstance(p, m.FrameBits) and p.length is not None)), None)
+
+
+def length_words(part: m.FrameLength | m.FrameBits) -> str:
+    """How a message names a length field: `"B"`, or `"<I" bits 0..29` in a `bits`."""
+    if isinstance(part, m.FrameLength):
+        return f'"{part.format}"'
+    low = 0
+    for bit in part.fields:
+        if bit.value is None:
+            return f'"{part.format}" bits {low}..{low + bit.width - 1}'
+        low += bit.width
+    raise AssertionError(part)
+
+
+def length_range(part: m.FrameLength | m.FrameBits) -> tuple[int, int]:
     """The payload sizes a length field can state (none, when its format was refused)."""
+    if isinstance(part, m.FrameBits):
+        length = part.length
+        assert length is not None
+        return max(0, -length.adjust), (1 << length.width) - 1 - length.adjust
     try:
         slot = formats.struct_layout(part.format).slots[0]
     except (formats.TemplateError, IndexError):  # reported where the frame is checked

@@ -439,7 +439,31 @@ class FrameOptional:
     count: int
 
 
-FramePart = FrameBytes | FrameField | FrameLength | FramePayload | FrameChecksum | FrameOptional
+@dataclass(frozen=True, slots=True)
+class BitField:
+    """`width` bits of a `FrameBits`: a field's value over the frame's parameters (in a reply
+    read and checked like a `FrameField`), or, `value` None, the payload's size plus `adjust`."""
+
+    name: str  # "length" for the length
+    width: int
+    value: Expr | None = None
+    adjust: int = 0
+
+
+@dataclass(frozen=True, slots=True)
+class FrameBits:
+    """One unsigned integer in a one-integer struct format, holding `fields` from its lowest
+    bit up (their widths add up to the format's bits)."""
+
+    format: str
+    fields: tuple[BitField, ...]
+
+    @property
+    def length(self) -> BitField | None:
+        return next((f for f in self.fields if f.value is None), None)
+
+
+FramePart = FrameBytes | FrameField | FrameLength | FramePayload | FrameChecksum | FrameOptional | FrameBits
 
 
 @dataclass(frozen=True, slots=True)

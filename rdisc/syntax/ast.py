@@ -576,7 +576,28 @@ class FrameEither:
     span: Span = _span
 
 
-FramePart = FrameBytes | FrameField | FrameLength | FramePayload | FrameChecksum | FrameOptional | FrameEither
+@dataclass(frozen=True, slots=True)
+class FrameBitField:
+    """`field NAME: WIDTH = expr`, or (no name) `length: WIDTH = payload + N`, in a `bits`."""
+
+    name: Ident | None  # None: the length
+    width: int
+    value: Expr | None  # None: the length
+    adjust: int = 0
+    span: Span = _span
+
+
+@dataclass(frozen=True, slots=True)
+class FrameBits:
+    """`bits "<I" { ... }`: one integer of a struct format, split into fields from its lowest bit up."""
+
+    format: StrLit
+    fields: tuple[FrameBitField, ...]
+    span: Span = _span
+
+
+FramePart = (FrameBytes | FrameField | FrameLength | FramePayload | FrameChecksum | FrameOptional | FrameEither
+             | FrameBits)
 
 
 @dataclass(frozen=True, slots=True)

@@ -429,6 +429,18 @@ def _transformer_class():
                 adjust = -adjust if str(sign) == "-" else adjust
             return ast.FrameLength(self.b.string(fmt), adjust, self.b.span(meta))
 
+        def f_bits(self, meta: Meta, c: list[Any]) -> ast.FrameBits:
+            return ast.FrameBits(self.b.string(c[0]), tuple(c[1:]), self.b.span(meta))
+
+        def b_length(self, meta: Meta, c: list[Any]) -> ast.FrameBitField:
+            width, sign, amount = c
+            adjust = _int_value(str(amount)) or 0 if amount is not None else 0
+            return ast.FrameBitField(None, _int_value(str(width)) or 0, None, -adjust if str(sign) == "-" else adjust,
+                                     self.b.span(meta))
+
+        def b_field(self, meta: Meta, c: list[Any]) -> ast.FrameBitField:
+            return ast.FrameBitField(self.b.ident(c[0]), _int_value(str(c[1])) or 0, c[2], 0, self.b.span(meta))
+
         def f_optional(self, meta: Meta, c: list[ast.FramePart]) -> ast.FrameOptional:
             return ast.FrameOptional(tuple(c), self.b.span(meta))
 

@@ -579,14 +579,45 @@ class _Importer:
                 return None
             amount = int(adjust.value) if isinstance(adjust, JNumber) else 0
             return ast.FrameLength(ast.StrLit(fmt.value, fmt.span), amount, obj.span)
+        if "bits" in keys:
+            return self.bits(obj)
         if "payload" in keys:
             self.members(obj, "a payload part", ("payload",))
             return ast.FramePayload(obj.span)
         if "checksum" in keys:
             return self.checksum(obj, side)
-        self.error(obj.span, "a frame part is one of header, literal, terminator, field, length, payload, checksum, "
-                             "optional")
+        self.error(obj.span, "a frame part is one of header, literal, terminator, field, length, bits, payload, "
+                             "checksum, optional")
         return None
+
+    def bits(self, obj: JObject) -> ast.FrameBits | None:
+        """`{"bits": "<I", "fields": [{"length": true, "width": 30, "adjust": 0}, {"field": "mode", ...}]}`."""
+        m = self.members(obj, "a bits part", ("bits", "fields"))
+        fmt = self.string(m.get("bits"), "`bits`")
+        out: list[ast.FrameBitField | None] = []
+        for entry in self.array(m.get("fields"), "`fields`"):
+            o = self.object(entry, "a bit field")
+            if o is None:
+                out.append(None)
+                continue
+            keys = [k.value for k, _ in o.members]
+            f = self.members(o, "a bit field", ("length", "adjust", "width") if "length" in keys else
+                             ("field", "width", "value"))
+            width = f.get("width")
+            if not (isinstance(width, JNumber) and width.value == int(width.value)):
+                self.error(o.span, "a bit field has a `width`: its number of bits")
+                out.append(None)
+                continue
+            if "length" in keys:
+                adjust = f.get("adjust")
+                out.append(ast.FrameBitField(None, int(width.value), None,
+                                             int(adjust.value) if isinstance(adjust, JNumber) else 0, o.span))
+                continue
+            name = self.required(o, f, "field", "a bit field", self.ident)
+            value = self.required(o, f, "value", "a bit field", lambda v, _: self.expr(v, "int"))
+            out.append(None if name is None or value is None else
+                       ast.FrameBitField(name, int(width.value), value, 0, o.span))
+        return None if fmt is None else ast.FrameBits(ast.StrLit(fmt.value, fmt.span), _present(out), obj.span)
 
     def checksum(self, obj: JObject, side: list[JObject | None]) -> ast.FrameChecksum | None:
         m = self.members(obj, "a checksum", _CHECKSUM)
@@ -1268,4 +1299,7 @@ def _part_name(part: JObject | None) -> str:
             return key.value
         if key.value == "field" and isinstance(value, JString):
             return value.value
+        if key.value == "fields" and isinstance(value, JArray):  # a `bits` part: any of its fields names it
+            names = [_part_name(f) if isinstance(f, JObject) else "" for f in value.items]
+            return "length" if "length" in names else next(iter(names), "checksum")
     return "checksum"

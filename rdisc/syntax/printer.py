@@ -118,6 +118,12 @@ def _code(d: ast.Decl) -> list[str]:
             _unreachable(d)
 
 
+def _bit_field(f: ast.FrameBitField) -> str:
+    if f.name is None:
+        return f"length: {f.width} = payload" + (f" {'-' if f.adjust < 0 else '+'} {abs(f.adjust)}" if f.adjust else "")
+    return f"field {f.name.text}: {f.width} = {print_expr(f.value)}"  # type: ignore[arg-type]
+
+
 def _frame_part(part: ast.FramePart) -> str:
     match part:
         case ast.FrameBytes(role, value):
@@ -139,6 +145,8 @@ def _frame_part(part: ast.FramePart) -> str:
             return " ".join(words)
         case ast.FrameOptional(parts):
             return _run("optional", parts)
+        case ast.FrameBits(fmt, fields):
+            return f"bits {p.quote(fmt.value)} {{ " + "  ".join(_bit_field(f) for f in fields) + " }"
         case ast.FrameEither(alternatives):
             return " or ".join(_run("either" if i == 0 else "", run).lstrip() for i, run in enumerate(alternatives))
         case _:

@@ -31,7 +31,7 @@ def pinned() -> dict[str, str]:
 
 
 def test_the_requirements_pin_every_driver() -> None:
-    assert set(pinned()) >= {"pycreate2", "pyax12", "pylx16a", "roboclaw", "pythoncrc", "tcr-roboclaw", "pynmea2", "pyvesc"}
+    assert set(pinned()) >= {"pycreate2", "pyax12", "pylx16a", "roboclaw", "pythoncrc", "tcr-roboclaw", "pynmea2", "pyvesc", "pyrplidar"}
 
 
 def test_every_published_driver_is_installed_at_its_pinned_version() -> None:

@@ -332,6 +332,55 @@ class Length:
     def put(self, payload: bytes, fields: Sequence[int], chunks: list[bytes]) -> bytes:
         return self.struct.pack(len(payload) + self.adjust)
 
+    def stated(self, data: bytes | bytearray, at: int) -> int:
+        """The payload's size this field says, read at `at` in `data`."""
+        return int(self.struct.unpack_from(data, at)[0]) - self.adjust
+
+
+class Bits:
+    """One unsigned integer, packed with a one-integer struct format, holding fields from its
+    lowest bit up: each (name, shift, width, the frame's field index or -1 for the length,
+    whose value is the payload's size plus `adjust`)."""
+
+    __slots__ = ("adjust", "fields", "has_length", "most", "struct")
+
+    def __init__(self, fmt: str, fields: Sequence[tuple[str, int, int]], adjust: int = 0) -> None:
+        """`fields`: (name, width, index) from the lowest bits up."""
+        self.struct = struct.Struct(fmt)
+        self.adjust = adjust
+        out = []
+        shift = 0
+        for name, width, index in fields:
+            out.append((name, shift, width, index))
+            shift += width
+        self.fields = tuple(out)
+        widths = [width for _, _, width, index in self.fields if index < 0]
+        self.has_length = bool(widths)
+        self.most = (1 << widths[0]) - 1 - adjust if widths else math.inf
+
+    def put(self, payload: bytes, fields: Sequence[int], chunks: list[bytes]) -> bytes:
+        value = 0
+        for name, shift, width, index in self.fields:
+            field = len(payload) + self.adjust if index < 0 else fields[index]
+            if not 0 <= field < 1 << width:
+                raise ValueError(f"field {name} is {field}, which does not fit its {width} bits (0 to {(1 << width) - 1})")
+            value |= field << shift
+        return self.struct.pack(value)
+
+    def stated(self, data: bytes | bytearray, at: int) -> int:
+        """The payload's size its length field says, read at `at` in `data`."""
+        value: int = self.struct.unpack_from(data, at)[0]
+        shift, width = next((shift, width) for _, shift, width, index in self.fields if index < 0)
+        return ((value >> shift) & ((1 << width) - 1)) - self.adjust
+
+    def wrong(self, chunk: bytes, fields: Sequence[int]) -> str | None:
+        """What is wrong with a reply's integer (a field that is not its request's value), if anything."""
+        value = self.struct.unpack(chunk)[0]
+        for name, shift, width, index in self.fields:
+            if index >= 0 and (value >> shift) & ((1 << width) - 1) != fields[index]:
+                return f"reply {name} is {(value >> shift) & ((1 << width) - 1)}, expected {fields[index]}"
+        return None
+
 
 class Payload:
     __slots__ = ()
@@ -377,7 +426,7 @@ class OptionalParts:
         return b""
 
 
-Part = Bytes | Field | Length | Payload | Check | OptionalParts
+Part = Bytes | Field | Length | Payload | Check | OptionalParts | Bits
 
 
 def _size(part: Part) -> int:
@@ -386,7 +435,7 @@ def _size(part: Part) -> int:
         return len(part.data)
     if isinstance(part, Check):
         return part.struct.size if part.struct is not None else part.digits
-    if isinstance(part, (Field, Length)):
+    if isinstance(part, (Field, Length, Bits)):
         return part.struct.size
     return 0
 
@@ -406,9 +455,10 @@ class Side:
         at = self.payload if self.payload >= 0 else len(self.parts)
         self.prefix = sum(self.sizes[:at]) - len(self.header)  # after the header, before the payload
         self.suffix = sum(self.sizes[at + 1 :]) if self.payload >= 0 else 0
-        self.length = next((i for i, p in enumerate(self.parts) if isinstance(p, Length)), -1)
+        self.length = next((i for i, p in enumerate(self.parts)
+                            if isinstance(p, Length) or (isinstance(p, Bits) and p.has_length)), -1)
         length = self.parts[self.length] if self.length >= 0 else None
-        self.most = length.most if isinstance(length, Length) else math.inf  # the largest payload it carries
+        self.most = length.most if isinstance(length, (Length, Bits)) else math.inf  # the largest payload it carries
         after = self.payload + 1
         group = self.parts[after] if 0 <= self.payload and after < len(self.parts) else None
         self.group = range(after + 1, after + 1 + group.count) if isinstance(group, OptionalParts) else range(0)
@@ -588,8 +638,8 @@ class Frame:
         if side.length >= 0:
             at = sum(side.sizes[: side.length])
             length = side.parts[side.length]
-            assert isinstance(length, Length)
-            size = length.struct.unpack_from(data, at)[0] - length.adjust
+            assert isinstance(length, (Length, Bits))
+            size = length.stated(data, at)
             if not 0 <= size <= MAX_FRAME:
                 raise FrameError(f"{self.name}: length field says {size + length.adjust}, which no payload fits")
         present = True  # the optional parts came
@@ -667,6 +717,8 @@ class Frame:
                 value = part.struct.unpack(chunk)[0]
                 if value != fields[part.index]:
                     raise FrameError(f"{self.name}: reply {part.name} is {value}, expected {fields[part.index]}")
+            elif isinstance(part, Bits) and (wrong := part.wrong(chunk, fields)) is not None:
+                raise FrameError(f"{self.name}: {wrong}")
             elif isinstance(part, Check):
                 covered = raw[starts[part.first] : starts[part.last + 1]]
                 expected = part.encode(part.checksum(request + covered if part.with_request else covered))
