@@ -125,7 +125,7 @@ def test_a_declaration_of_too_many_tokens_is_refused_before_parsing(tmp_path: Pa
 def test_a_range_bound_is_a_finite_number(tmp_path: Path, bound: str) -> None:
     """`float("inf")` folds to an infinity; as a range's bound it was an internal error
     (found by the fuzzer: an int range cannot be converted to one)."""
-    source, result = check_text(tmp_path, 'robot r { author "tests" }\nconnection link: serial { baud 9600 }\n'
+    _, result = check_text(tmp_path, 'robot r { author "tests" }\nconnection link: serial { baud 9600 }\n'
                                 f'primitive w(n: int in 0..{bound}) on link pack "B" (n)\n')
     assert result.returncode == 1
     value = {"float(\"inf\")": "inf", "float(\"nan\")": "nan", "-float(\"inf\")": "-inf"}[bound]
