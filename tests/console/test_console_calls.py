@@ -102,7 +102,8 @@ def test_the_origins_are_the_consoles_own() -> None:
 
 @pytest.mark.parametrize(("args", "status", "message"), [
     (["--port", "loop://", "--http", "nowhere"], 2, "rdisc console: --http `nowhere` is not HOST:PORT"),
-    (["--port", "loop://", "--set", "X=1"], 2, "rdisc console: irobot_create: no setting named 'X' (its settings: none)"),
+    (["--port", "loop://", "--set", "X=1"], 2,
+     "rdisc console: irobot_create: no setting named 'X' (its settings: none)"),
     (["--port", "/dev/rdisc-no-such-port", "--http", "127.0.0.1:0"], 1,
      "rdisc console: RdisConnectionError: btserial: cannot open /dev/rdisc-no-such-port"),
 ])
