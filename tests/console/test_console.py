@@ -166,6 +166,21 @@ def test_a_pressed_bumper_shows_in_the_detect_bump_panel(page, console: Running)
     playwright_api.expect(distance).to_have_text("1", timeout=WAIT_MS)
     count = page.locator('[data-rdis-output="detect_bump"] [data-count]')
     assert int(count.inner_text()) > 0
+    painted = page.locator('[data-rdis-output="detect_bump"] canvas[data-plot]').evaluate(
+        "c => c.getContext('2d').getImageData(0, 0, c.width, c.height).data.some(v => v !== 0)")
+    assert painted  # the plot of distance over time is drawn
+
+
+def test_a_primitive_form_sends_one_device_command(page, console: Running) -> None:
+    dev = console.dev
+    before = len(dev.drives())
+    form = page.locator('form[data-rdis-primitive="drive"]')
+    form.locator('input[name="velocity"]').fill("100")
+    form.locator('input[name="radius"]').fill("-1")
+    form.locator("button[type=submit]").click()
+    playwright_api.expect(form.locator(".result")).to_have_text("done", timeout=WAIT_MS)
+    dev.wait_for_commands(before + 1, timeout=30, opcode=DRIVE)
+    assert [c for _, c in dev.commands if c[0] == DRIVE][before:] == [bytes.fromhex("89 00 64 ff ff")]
 
 
 def test_a_bad_value_is_refused_and_shown_as_an_error(page, console: Running) -> None:
