@@ -6,8 +6,9 @@ script (assets/console.js) only fills in values as they are pushed."""
 from __future__ import annotations
 
 import json
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from html import escape
+from typing import Any
 
 from rdisc.emit.graph import GraphvizMissing, dot, nodes, svg
 from rdisc.semantics import model as m
@@ -145,12 +146,12 @@ def _details(model: m.Model, where: Callable[[Span | None], str | None]) -> dict
 
 
 def _doc_of(model: m.Model, kind: str, name: str) -> str | None:
-    table: dict[str, object] = {"connection": model.connections, "frame": model.frames, "primitive": model.primitives,
-                                "interface": model.interfaces, "input": model.inputs, "output": model.outputs,
-                                "adapter": model.adapters, "state": model.states, "setting": model.settings}
-    element = table.get(kind, {})
-    assert isinstance(element, dict)
-    doc = getattr(element.get(name), "doc", None)
+    """The element's `///` text (constants and tables keep none)."""
+    elements: dict[str, Mapping[str, Any]] = {
+        "connection": model.connections, "frame": model.frames, "primitive": model.primitives,
+        "interface": model.interfaces, "input": model.inputs, "output": model.outputs, "adapter": model.adapters,
+        "state": model.states, "setting": model.settings}
+    doc = getattr(elements.get(kind, {}).get(name), "doc", None)
     return doc if isinstance(doc, str) else None
 
 
