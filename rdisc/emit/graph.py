@@ -43,7 +43,7 @@ def dot(model: m.Model, where: Callable[[Span | None], str | None]) -> str:
              '  graph [rankdir=LR, fontname="Helvetica", fontsize=11];',
              '  node [fontname="Helvetica", fontsize=10, style=filled];',
              '  edge [fontname="Helvetica", fontsize=9];']
-    for kind, name, span in _nodes(model):
+    for kind, name, span in nodes(model):
         shape, fill = _STYLE[kind]
         attributes = {"id": f"{kind}:{name}", "label": f"{kind}\n{name}", "shape": shape, "fillcolor": fill}
         place = where(span)
@@ -73,7 +73,8 @@ def svg(dot_text: str) -> str:
     return done.stdout
 
 
-def _nodes(model: m.Model) -> Iterator[tuple[str, str, Span | None]]:
+def nodes(model: m.Model) -> Iterator[tuple[str, str, Span | None]]:
+    """(kind, name, span) of every element drawn, in the order drawn (the console lists them too)."""
     yield from (("connection", c.name, c.span) for c in model.connections.values())
     yield from (("frame", f.name, f.span) for f in model.frames.values())
     yield from (("primitive", p.name, p.span) for p in model.primitives.values())

@@ -107,6 +107,15 @@ def test_wheel_carries_the_grammar_and_the_stdlib(installed: Installed) -> None:
     assert not any(n.startswith(("tests/", "examples/", "benchmarks/")) for n in names)
 
 
+def test_wheel_carries_the_console_page_and_its_server_imports(installed: Installed) -> None:
+    names = set(zipfile.ZipFile(installed.wheel).namelist())
+    assert {"rdisc/console/assets/console.js", "rdisc/console/assets/console.css", "rdisc/console/server.py"} <= names
+    done = installed.run("-c", "import rdisc.console.server as s, importlib.resources as r; "
+                               "print(all(r.files('rdisc.console').joinpath('assets', p[1:]).read_text() "
+                               "for p in s.ASSETS))", program="python")
+    assert (done.returncode, done.stdout) == (0, "True\n"), done.stderr
+
+
 def test_installed_package_reads_its_own_files(installed: Installed) -> None:
     assert not installed.outside.resolve().is_relative_to(ROOT)
     done = installed.run("-c", "import rdisc, rdisc.resources as r; "

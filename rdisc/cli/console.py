@@ -1,0 +1,111 @@
+"""`rdisc console FILE --port P [--http HOST:PORT]`: a local web page to bring up and exercise a
+device (thesis ch. 5).
+
+Connects as `rdisc run` does (startup hooks), then serves the page at http://HOST:PORT/
+(127.0.0.1:8765 unless asked) until Ctrl-C or SIGTERM, and ends by running the terminate
+hooks. Only pages of this console's own address may drive the robot (see rdisc.console).
+
+Exit status: 1 the description has errors or the device failed to connect; 2 a usage error
+(a bad --port, --set or --http, or an address in use); 130 after SIGINT, 143 after SIGTERM.
+"""
+
+from __future__ import annotations
+
+import argparse
+import asyncio
+import os
+import signal
+import sys
+
+from rdisc.cli.output import EXIT_ERRORS, EXIT_USAGE, exit_code, show
+from rdisc.compile import compile_path
+from rdisc.runtime import engine
+
+DEFAULT_HTTP = "127.0.0.1:8765"
+
+
+def add_parser(verbs: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
+    p = verbs.add_parser(
+        "console", help="a local web page to bring up and exercise a device",
+        description="Connect to a device and serve a web page that shows the description's graph, a form for "
+                    "each input, interface and primitive, each output live, the state, errors and a byte trace. "
+                    "The terminate hooks run when it stops (Ctrl-C).",
+    )
+    p.add_argument("file", metavar="FILE", help=".rdis or thesis-style .json description")
+    p.add_argument("--port", action="append", default=[], metavar="[CONN=]PORT",
+                   help="a pyserial port or URL (/dev/ttyUSB0, socket://host:port); CONN=PORT for one connection")
+    p.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
+                   help="give a setting of the description its value; repeat for several")
+    p.add_argument("--timeout", type=float, default=1.0, metavar="S", help="reply timeout in seconds (default 1)")
+    p.add_argument("--http", default=DEFAULT_HTTP, metavar="HOST:PORT",
+                   help=f"where to serve the page (default {DEFAULT_HTTP}, loopback only; port 0: any free one)")
+    p.add_argument("--origin", action="append", default=[], metavar="URL",
+                   help="also let pages from this origin (http://name:port) drive the robot, when serving beyond "
+                        "loopback")
+    p.set_defaults(run=run)
+
+
+def parse_http(text: str) -> tuple[str, int]:
+    """HOST:PORT (an IPv6 host in brackets) as (host, port)."""
+    host, sep, port = text.rpartition(":")
+    if not sep or not port.isdigit() or int(port) > 65535:
+        raise ValueError(f"--http `{text}` is not HOST:PORT")
+    return host.strip("[]") or "127.0.0.1", int(port)
+
+
+def run(args: argparse.Namespace) -> int:
+    compilation = compile_path(args.file)
+    show([compilation])
+    model = compilation.model
+    if model is None or compilation.diagnostics.has_errors():
+        return exit_code([compilation]) or EXIT_ERRORS
+    from rdisc.console.page import render
+    from rdisc.console.server import Console
+    from rdisc.runtime.device import Description
+    from rdisc.source import place
+
+    device = Description(model).device
+    try:
+        host, http_port = parse_http(args.http)
+        port = engine.parse_ports(args.port, device)
+        settings = engine.bind_settings(device, engine.parse_settings(args.set, device))
+    except ValueError as err:
+        print(f"rdisc console: {err}", file=sys.stderr)
+        return EXIT_USAGE
+    main = model.robot.span.path if model.robot.span else None
+    page = render(model, lambda span: place(span, compilation.sources, main, os.path.basename(args.file)))
+    robot = engine.Robot(device, timeout=args.timeout)
+    console = Console(robot, page)
+    robot.on_error(lambda error: print(f"rdisc console: {type(error).__name__}: {error}", file=sys.stderr, flush=True))
+
+    def listening(bound: int) -> None:
+        shown = f"[{host}]" if ":" in host else host
+        print(f"rdisc console: {robot.name} on http://{shown}:{bound}/ (Ctrl-C stops it; the terminate hooks run)",
+              flush=True)
+
+    async def serve() -> int:
+        stop = asyncio.Event()
+        status = [engine.EXIT_OK]
+
+        def stopping(code: int) -> None:
+            if not stop.is_set():
+                status[0] = code
+                stop.set()
+
+        loop = asyncio.get_running_loop()
+        loop.add_signal_handler(signal.SIGINT, stopping, engine.EXIT_SIGINT)
+        loop.add_signal_handler(signal.SIGTERM, stopping, engine.EXIT_SIGTERM)
+        try:
+            await asyncio.to_thread(robot.open, port, settings=settings)
+            await console.serve(host, http_port, stop, listening, args.origin)
+        except engine.RdisError as err:
+            print(f"rdisc console: {type(err).__name__}: {err}", file=sys.stderr)
+            status[0] = engine.EXIT_ERROR
+        except OSError as err:  # the address is in use, or not this machine's
+            print(f"rdisc console: cannot serve on {args.http}: {err.strerror or err}", file=sys.stderr)
+            status[0] = EXIT_USAGE
+        finally:
+            await asyncio.to_thread(robot.close)
+        return status[0]
+
+    return asyncio.run(serve())

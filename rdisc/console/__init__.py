@@ -1,0 +1,18 @@
+"""`rdisc console`: a local web page to bring up and exercise a device (thesis ch. 5).
+
+`page.render` writes the page from the Model; `server.Console` serves it with its assets
+(assets/console.js and console.css, shipped in the package: nothing comes from the
+internet) and pushes to every open page, over a WebSocket, what happens as it happens:
+
+    {"type": "hello", "state": {...}, "trace": [io...], "errors": [error...], "outputs": [output...]}
+    {"type": "output", "t": S, "name": O, "contents": {FIELD: value}}
+    {"type": "io", "t": S, "direction": "write" | "read" | "lines", "connection": C, "data": "89 00 c8"}
+    {"type": "state", "state": {NAME: value}}
+    {"type": "error", "t": S, "error": TYPE, "message": TEXT}
+    {"type": "result", "id": N, "ok": true} / {..., "ok": false, "error": TYPE, "message": TEXT}
+
+and takes the page's calls, `{"id": N, "kind": "input" | "interface" | "primitive",
+"name": NAME, "values": {NAME: text}}`, each value the text of its form field (a checkbox's
+a bool), made the parameter's type here. `t` is seconds since the console started;
+bytes are hex, as `rdisc run --trace` prints them.
+"""

@@ -1,0 +1,282 @@
+"""The console's server: the page, and one WebSocket a page on which everything that
+happens is pushed and through which the page makes calls.
+
+One asyncio loop serves HTTP and the WebSockets (the `websockets` library); the robot
+runs on its own threads, and its callbacks hand what happened to the loop. Calls from
+a page run on a worker thread, one at a time per page, as `rdisc run --call` makes them.
+
+Safety: a WebSocket is accepted only from a page of this console: its Origin must be
+one of `origins` (this console's own addresses), else the handshake is answered 403
+and nothing is called. Every request's Host must be one of them too, so a page of
+another site that had its name point here (DNS rebinding) is refused as well.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import json
+import math
+import threading
+import time
+from collections import deque
+from collections.abc import Callable, Iterable
+from importlib import resources
+from typing import Any
+
+from websockets.asyncio.server import ServerConnection, broadcast, serve
+from websockets.datastructures import Headers
+from websockets.exceptions import ConnectionClosed
+from websockets.http11 import Request, Response
+
+from rdisc.runtime import engine
+
+ASSETS = {"/console.js": "text/javascript; charset=utf-8", "/console.css": "text/css; charset=utf-8"}
+TRACE_KEPT, ERRORS_KEPT = 500, 100  # what a page opened later is shown of the past
+LOOPBACK = ("127.0.0.1", "localhost", "[::1]")
+
+
+def origins_for(host: str, port: int, extra: Iterable[str] = ()) -> set[str]:
+    """The origins (scheme://host:port) of pages this console serves: its loopback names, the host
+    it was bound to (unless a wildcard) and those given."""
+    hosts = set(LOOPBACK)
+    if host not in ("", "0.0.0.0", "::"):
+        hosts.add(f"[{host}]" if ":" in host else host)
+    return {f"http://{h}:{port}" for h in hosts} | {o.rstrip("/") for o in extra}
+
+
+def jsonable(value: Any) -> Any:
+    """A value of the description as JSON shows it: bytes as hex, arrays as lists, a float
+    that JSON cannot write (inf, nan) as its text."""
+    if isinstance(value, bytes):
+        return value.hex(" ")
+    if isinstance(value, (tuple, list)):
+        return [jsonable(v) for v in value]
+    if isinstance(value, float) and not math.isfinite(value):
+        return str(value)
+    if isinstance(value, dict):
+        return {k: jsonable(v) for k, v in value.items()}
+    return value
+
+
+class Console:
+    """A connected robot, shown and driven by the pages of one server."""
+
+    def __init__(self, robot: engine.Robot, page: str) -> None:
+        self.robot = robot
+        self.page = page.encode("utf-8")
+        self.origins: set[str] = set()
+        self._start = time.monotonic()
+        self._lock = threading.Lock()
+        self._trace: deque[dict[str, Any]] = deque(maxlen=TRACE_KEPT)
+        self._errors: deque[dict[str, Any]] = deque(maxlen=ERRORS_KEPT)
+        self._outputs: dict[str, dict[str, Any]] = {}
+        self._state: dict[str, Any] = {}
+        self._loop: asyncio.AbstractEventLoop | None = None
+        self._pages: set[ServerConnection] = set()
+        robot.on_output(self._output)
+        robot.on_error(self._error)
+        robot.on_io(self._io)
+
+    # ---- what happens on the robot's threads ---------------------------------------------------------
+
+    def _now(self) -> float:
+        return round(time.monotonic() - self._start, 3)
+
+    def _output(self, message: dict[str, Any]) -> None:
+        event = {"type": "output", "t": self._now(), "name": message["name"], "contents": jsonable(message["contents"])}
+        with self._lock:
+            self._outputs[message["name"]] = event
+        self._push(event)
+        self._push_state()
+
+    def _error(self, error: BaseException) -> None:
+        self.report(type(error).__name__, str(error))
+
+    def report(self, kind: str, message: str) -> None:
+        """An error on the page's error list (and on every page open)."""
+        event = {"type": "error", "t": self._now(), "error": kind, "message": message}
+        with self._lock:
+            self._errors.append(event)
+        self._push(event)
+
+    def _io(self, direction: str, connection: str, data: bytes) -> None:
+        shown = data.decode("ascii") if direction == "lines" else data.hex(" ")
+        event = {"type": "io", "t": self._now(), "direction": direction, "connection": connection, "data": shown}
+        with self._lock:
+            self._trace.append(event)
+        self._push(event)
+        self._push_state()
+
+    def _push_state(self) -> None:
+        state = jsonable(dict(self.robot.state))
+        with self._lock:
+            if state == self._state:
+                return
+            self._state = state
+        self._push({"type": "state", "state": state})
+
+    def _push(self, event: dict[str, Any]) -> None:
+        loop = self._loop
+        if loop is None:
+            return  # no page yet: a page opened later is sent what was kept
+        try:
+            loop.call_soon_threadsafe(self._send, json.dumps(event))
+        except RuntimeError:  # the loop is closed: the console is stopping and no page is left
+            pass
+
+    def _send(self, text: str) -> None:
+        broadcast(self._pages, text)
+
+    # ---- the server ----------------------------------------------------------------------------------
+
+    async def serve(self, host: str, port: int, stop: asyncio.Event, listening: Callable[[int], None],
+                    extra_origins: Iterable[str] = ()) -> None:
+        """Serve pages until `stop` is set, then close the robot (its terminate hooks run, and the
+        pages still see their bytes); `listening(port)` once the socket listens (port 0: a free one)."""
+        self._loop = asyncio.get_running_loop()
+        async with serve(self._page, host, port, process_request=self._http, compression=None,
+                         max_size=2**16) as server:
+            bound = next(iter(server.sockets)).getsockname()[1]
+            self.origins = origins_for(host, bound, extra_origins)
+            listening(bound)
+            await stop.wait()
+            await asyncio.to_thread(self.robot.close)
+
+    def _http(self, connection: ServerConnection, request: Request) -> Response | None:
+        """Plain requests get the page and its assets; the WebSocket's handshake is checked."""
+        host = _one(request.headers, "Host")
+        if f"http://{host}" not in self.origins:
+            return _response(403, f"Forbidden: this console is not served as {host!r}\n")
+        path = request.path.split("?", 1)[0]
+        if path == "/ws":
+            origin = _one(request.headers, "Origin")
+            if origin not in self.origins:
+                return _response(403, f"Forbidden: a page from {origin!r} may not drive this robot\n")
+            return None
+        if "websocket" in (value.lower() for value in request.headers.get_all("Upgrade")):
+            return _response(404, "Not found\n")
+        if path == "/":
+            return _response(200, self.page, "text/html; charset=utf-8")
+        kind = ASSETS.get(path)
+        if kind is not None:
+            data = resources.files("rdisc.console").joinpath("assets", path[1:]).read_bytes()
+            return _response(200, data, kind)
+        return _response(404, "Not found\n")
+
+    async def _page(self, page: ServerConnection) -> None:
+        """One open page: first what happened so far, then every event as it comes; its calls."""
+        with self._lock:
+            self._state = jsonable(dict(self.robot.state))
+            hello = {"type": "hello", "t": self._now(), "state": self._state, "trace": list(self._trace),
+                     "errors": list(self._errors), "outputs": list(self._outputs.values())}
+        self._pages.add(page)
+        try:
+            await page.send(json.dumps(hello))
+            async for text in page:
+                reply = await asyncio.to_thread(self.call, text)
+                await page.send(json.dumps(reply))
+        except ConnectionClosed:
+            pass
+        finally:
+            self._pages.discard(page)
+
+    # ---- calls from a page ---------------------------------------------------------------------------
+
+    def call(self, text: str | bytes) -> dict[str, Any]:
+        """One call a page asked for, `{"id", "kind", "name", "values": {NAME: text}}`; its result."""
+        ident: Any = None
+        try:
+            request = json.loads(text)
+            if not isinstance(request, dict):
+                raise TypeError("a call is a JSON object")
+            ident = request.get("id")
+            kind, name, values = request.get("kind"), request.get("name"), request.get("values", {})
+            if not isinstance(name, str) or not isinstance(values, dict):
+                raise TypeError("a call names what it calls and gives its values by name")
+            self._make(kind, name, values)
+        except (engine.RdisError, TypeError, ValueError, KeyError) as err:
+            message = err.args[0] if isinstance(err, KeyError) and err.args else str(err)
+            self.report(type(err).__name__, str(message))
+            self._push_state()
+            return {"type": "result", "id": ident, "ok": False, "error": type(err).__name__, "message": str(message)}
+        self._push_state()
+        return {"type": "result", "id": ident, "ok": True}
+
+    def _make(self, kind: object, name: str, values: dict[str, Any]) -> None:
+        device = self.robot.device
+        if kind == "input":
+            plan = device.inputs.get(name)
+            if plan is None:
+                raise KeyError(f"{device.name} has no input named {name!r}")
+            self.robot.call_input(name, **_values(name, plan.fields, values))
+        elif kind in ("interface", "primitive"):
+            found = (device.interfaces if kind == "interface" else device.primitives).get(name)
+            if found is None:
+                raise KeyError(f"{device.name} has no {kind} named {name!r}")
+            given = _values(name, found.params, values)
+            if kind == "interface":
+                self.robot.call_interface(name, *given.values())
+            else:
+                self.robot.call_primitive(name, *given.values())
+        else:
+            raise ValueError(f"a call is of an input, an interface or a primitive, not {kind!r}")
+
+
+def _values(owner: str, params: tuple[engine.Param, ...], given: dict[str, Any]) -> dict[str, Any]:
+    """The form's texts as the parameters' types, in the parameters' order; an empty text is
+    the parameter's default, when it has one."""
+    unknown = sorted(set(given) - {p.name for p in params})
+    if unknown:
+        raise TypeError(f"{owner} has no parameter or field named {unknown[0]!r}")
+    values: dict[str, Any] = {}
+    for p in params:
+        text = given.get(p.name)
+        if (text is None or text == "") and p.default is not None:
+            values[p.name] = p.default
+        elif text is None:
+            raise TypeError(f"{owner}: {p.name} is missing")
+        else:
+            values[p.name] = _value(owner, p, text)
+    return values
+
+
+def _value(owner: str, p: engine.Param, given: Any) -> Any:
+    if p.kind is bool and p.size is None:
+        if isinstance(given, bool):
+            return given
+        if given in ("true", "false", "True", "False"):
+            return given in ("true", "True")
+        raise ValueError(f"{owner}: {p.name} must be true or false, not {given!r}")
+    if not isinstance(given, str):
+        raise TypeError(f"{owner}: {p.name} is given as text, not {type(given).__name__}")
+    text = given.strip()
+    if p.size is not None:
+        value = engine.parse_value(text if text.startswith("[") else f"[{text}]")
+        return value
+    if p.kind in (str, bytes):  # text as it is; bytes as hex, which the engine reads
+        return given
+    try:
+        return int(text, 0) if p.kind is int else float(text)
+    except ValueError:
+        raise ValueError(f"{owner}: {p.name} must be {'an int' if p.kind is int else 'a number'}, "
+                         f"not {given!r}") from None
+
+
+# the page's own files only, its WebSocket only, and no framing by another site
+_POLICY = ("default-src 'self'; connect-src 'self'; img-src 'self' data:; style-src 'self' 'unsafe-inline'; "
+           "frame-ancestors 'none'")
+
+
+def _one(headers: Headers, name: str) -> str | None:
+    """The header's value, when it is given exactly once."""
+    values = headers.get_all(name)
+    return values[0] if len(values) == 1 else None
+
+
+def _response(status: int, body: str | bytes, kind: str = "text/plain; charset=utf-8") -> Response:
+    data = body.encode("utf-8") if isinstance(body, str) else body
+    reasons = {200: "OK", 403: "Forbidden", 404: "Not Found"}
+    headers = Headers([("Content-Type", kind), ("Content-Length", str(len(data))), ("Cache-Control", "no-store"),
+                       ("X-Content-Type-Options", "nosniff"), ("Connection", "close"),
+                       ("Content-Security-Policy", _POLICY)])
+    return Response(status, reasons[status], headers, data)

@@ -1,0 +1,253 @@
+"""`rdisc console` in a real browser (Debian's Chromium driven by Playwright) against the
+emulated Create on a pty: what a form sends reaches the device as thesis Table 4.3's bytes,
+a pressed bumper shows in `detect_bump`'s panel, the trace shows the bytes, a page of
+another site cannot drive the robot, and stopping the console runs the terminate hook.
+
+Nothing here waits for a time: every wait is for a condition, with a generous timeout."""
+
+from __future__ import annotations
+
+import json
+import os
+import re
+import signal
+import socket
+import struct
+import subprocess
+import sys
+from collections.abc import Iterator
+from dataclasses import dataclass
+from pathlib import Path
+
+import pytest
+from conftest import REPO, cli_env
+from devices import CreateEmulator
+from devices.create import DRIVE, STOP, TABLE_4_3
+
+CHROMIUM = Path("/usr/bin/chromium")
+CREATE = REPO / "examples" / "create.rdis"
+WAIT_MS = 30_000  # a generous limit for any one condition (never a measure of speed)
+ON_CI = os.environ.get("CI", "").lower() in ("1", "true", "yes")
+
+playwright_api = pytest.importorskip("playwright.sync_api")
+if not CHROMIUM.exists():
+    if ON_CI:
+        raise RuntimeError("the console's tests need Debian's chromium (.ci/run installs it)")
+    pytest.skip("Debian's chromium is not installed (apt-get install chromium)", allow_module_level=True)
+
+
+@dataclass
+class Running:
+    """A console serving the emulated Create."""
+
+    dev: CreateEmulator
+    process: subprocess.Popen[str]
+    url: str
+
+    def stop(self, signum: signal.Signals) -> tuple[int, str]:
+        """Signal the console; its exit status and what it printed on stderr."""
+        self.process.send_signal(signum)
+        try:
+            _, stderr = self.process.communicate(timeout=60)
+        finally:
+            if self.process.poll() is None:
+                self.process.kill()
+                self.process.communicate()
+        return self.process.returncode, stderr
+
+
+def _console(dev: CreateEmulator, *extra: str) -> Running:
+    """`rdisc console examples/create.rdis` on the emulator's pty, on a free loopback port."""
+    process = subprocess.Popen([sys.executable, "-m", "rdisc", "console", str(CREATE), "--port", dev.port,
+                                "--http", "127.0.0.1:0", *extra], cwd=REPO, env=cli_env(),
+                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    assert process.stdout is not None
+    line = process.stdout.readline()  # printed once it listens (after the startup hooks)
+    found = re.search(r"http://127\.0\.0\.1:\d+/", line)
+    if found is None:
+        process.kill()
+        raise AssertionError(f"no address printed: {line!r} {process.communicate()}")
+    return Running(dev, process, found.group(0))
+
+
+@pytest.fixture(scope="module")
+def console() -> Iterator[Running]:
+    with CreateEmulator() as dev:
+        running = _console(dev)
+        try:
+            yield running
+        finally:
+            status, stderr = running.stop(signal.SIGTERM)
+            assert status == 143, stderr
+            assert "Traceback" not in stderr, stderr
+
+
+@pytest.fixture(scope="module")
+def browser() -> Iterator[object]:
+    with playwright_api.sync_playwright() as p:
+        launched = p.chromium.launch(executable_path=str(CHROMIUM), args=["--no-sandbox"])
+        yield launched
+        launched.close()
+
+
+@pytest.fixture
+def page(browser, console: Running):
+    context = browser.new_context()
+    opened = context.new_page()
+    opened.set_default_timeout(WAIT_MS)
+    opened.goto(console.url)
+    playwright_api.expect(opened.locator("[data-rdis-status]")).to_have_text("connected", timeout=WAIT_MS)
+    yield opened
+    context.close()
+
+
+def _drive_bytes(velocity: int, radius: int) -> bytes:
+    return struct.pack(">Bhh", DRIVE, velocity, radius)
+
+
+def _send(page, name: str, **fields: float) -> None:
+    """Fill the input's form, submit it and wait until the console answers "done"."""
+    form = page.locator(f'form[data-rdis-input="{name}"]')
+    for field, value in fields.items():
+        form.locator(f'input[name="{field}"]').fill(str(value))
+    form.locator("button[type=submit]").click()
+    playwright_api.expect(form.locator(".result")).to_have_text("done", timeout=WAIT_MS)
+
+
+def test_the_page_shows_the_description(page) -> None:
+    form = page.locator('form[data-rdis-input="set_velocity"]')
+    assert form.locator('input[name="linear"]').count() == 1
+    assert form.locator('input[name="angular"]').count() == 1
+    assert "m/s" in form.inner_text() and "rad/s" in form.inner_text()
+    assert page.locator('[data-rdis-output="detect_bump"] [data-field="distance"]').count() == 1
+    assert page.locator('form[data-rdis-interface="drive"] input[name="velocity"]').count() == 1
+    assert page.locator('form[data-rdis-primitive="drive"] input[name="radius"]').count() == 1
+    assert page.locator('[data-rdis-state] tr[data-name="bumperStates"]').count() == 1
+    # the graph: a node clicked shows its details
+    page.locator('[data-rdis-graph] svg g.node[id="input:set_velocity"]').click()
+    details = page.locator("[data-rdis-details]")
+    playwright_api.expect(details).to_contain_text("input set_velocity", timeout=WAIT_MS)
+    playwright_api.expect(details).to_contain_text("calls drive()", timeout=WAIT_MS)
+    playwright_api.expect(details).to_contain_text("create.rdis:", timeout=WAIT_MS)
+
+
+def test_set_velocity_from_the_form_reaches_the_device_as_table_4_3(page, console: Running) -> None:
+    dev = console.dev
+    for (linear, angular), (opcode, velocity, radius) in TABLE_4_3:
+        before = len(dev.drives())
+        _send(page, "set_velocity", linear=linear, angular=angular)
+        dev.wait_for_commands(before + 1, timeout=30, opcode=DRIVE)
+        sent = [c for _, c in dev.commands if c[0] == DRIVE][before:]
+        assert sent == [_drive_bytes(velocity, radius)], (linear, angular)
+
+
+def test_the_trace_shows_the_bytes_written_and_read(page, console: Running) -> None:
+    _send(page, "set_velocity", linear=0.2, angular=0)
+    trace = page.locator("[data-rdis-trace] tbody")
+    written = trace.locator("tr.write", has_text="89 00 c8 7f ff").first
+    playwright_api.expect(written).to_contain_text("btserial", timeout=WAIT_MS)
+    assert written.locator("td").nth(2).inner_text() == ">"
+    assert written.get_attribute("title") == "btserial > 89 00 c8 7f ff"  # as `rdisc run --trace` prints it
+    polled = trace.locator("tr.write", has_text="8e 07").first  # the bumper poll, Sensors packet 7
+    playwright_api.expect(polled).to_be_attached(timeout=WAIT_MS)
+    playwright_api.expect(trace.locator("tr.read").first).to_contain_text("<", timeout=WAIT_MS)
+
+
+def test_a_pressed_bumper_shows_in_the_detect_bump_panel(page, console: Running) -> None:
+    distance = page.locator('[data-rdis-output="detect_bump"] [data-field="distance"]')
+    state = page.locator('[data-rdis-state] tr[data-name="bumperStates"] [data-value]')
+    playwright_api.expect(distance).to_have_text("1", timeout=WAIT_MS)
+    console.dev.bumpers = 1  # the right bumper
+    try:
+        playwright_api.expect(distance).to_have_text("0", timeout=WAIT_MS)
+        playwright_api.expect(state).to_have_text("1", timeout=WAIT_MS)
+    finally:
+        console.dev.bumpers = 0
+    playwright_api.expect(distance).to_have_text("1", timeout=WAIT_MS)
+    count = page.locator('[data-rdis-output="detect_bump"] [data-count]')
+    assert int(count.inner_text()) > 0
+    painted = page.locator('[data-rdis-output="detect_bump"] canvas[data-plot]').evaluate(
+        "c => c.getContext('2d').getImageData(0, 0, c.width, c.height).data.some(v => v !== 0)")
+    assert painted  # the plot of distance over time is drawn
+
+
+def test_a_primitive_form_sends_one_device_command(page, console: Running) -> None:
+    dev = console.dev
+    before = len(dev.drives())
+    form = page.locator('form[data-rdis-primitive="drive"]')
+    form.locator('input[name="velocity"]').fill("100")
+    form.locator('input[name="radius"]').fill("-1")
+    form.locator("button[type=submit]").click()
+    playwright_api.expect(form.locator(".result")).to_have_text("done", timeout=WAIT_MS)
+    dev.wait_for_commands(before + 1, timeout=30, opcode=DRIVE)
+    assert [c for _, c in dev.commands if c[0] == DRIVE][before:] == [bytes.fromhex("89 00 64 ff ff")]
+
+
+def test_a_bad_value_is_refused_and_shown_as_an_error(page, console: Running) -> None:
+    from websockets.sync.client import connect
+
+    before = len(console.dev.commands)
+    with connect(console.url.replace("http", "ws") + "ws", origin=console.url.rstrip("/")) as ws:
+        hello = json.loads(ws.recv())
+        assert hello["type"] == "hello"
+        ws.send(json.dumps({"id": 7, "kind": "input", "name": "set_velocity",
+                            "values": {"linear": "fast", "angular": "0"}}))
+        reply = next(m for m in map(json.loads, iter(ws.recv, None)) if m["type"] == "result")
+    assert reply == {"type": "result", "id": 7, "ok": False, "error": "ValueError",
+                     "message": "set_velocity: linear must be a number, not 'fast'"}
+    errors = page.locator("[data-rdis-errors]")
+    playwright_api.expect(errors).to_contain_text("ValueError: set_velocity: linear must be a number, not 'fast'",
+                                                  timeout=WAIT_MS)
+    assert not [c for _, c in console.dev.commands[before:] if c[0] == DRIVE]
+
+
+def test_a_page_of_another_site_cannot_drive_the_robot(browser, console: Running) -> None:
+    """A page from another origin, open in the same browser, tries the console's WebSocket."""
+    ws_url = console.url.replace("http", "ws") + "ws"
+    attack = f"""<!DOCTYPE html><title>waiting</title><script>
+      const ws = new WebSocket({json.dumps(ws_url)});
+      ws.onopen = () => {{ document.title = "opened";
+        ws.send(JSON.stringify({{id: 1, kind: "input", name: "set_velocity", values: {{linear: "0.5", angular: "0"}}}}));
+        ws.send(JSON.stringify({{id: 2, kind: "primitive", name: "drive", values: {{velocity: "500", radius: "0"}}}})); }};
+      ws.onclose = () => {{ if (document.title === "waiting") document.title = "refused"; }};
+    </script>"""
+    before = len(console.dev.commands)
+    context = browser.new_context()
+    try:
+        context.route("http://elsewhere.example/", lambda route: route.fulfill(body=attack, content_type="text/html"))
+        other = context.new_page()
+        other.goto("http://elsewhere.example/")
+        playwright_api.expect(other).to_have_title("refused", timeout=WAIT_MS)
+    finally:
+        context.close()
+    assert not [c for _, c in console.dev.commands[before:] if c[0] == DRIVE]
+
+
+def test_a_foreign_origin_is_answered_403(console: Running) -> None:
+    from websockets.exceptions import InvalidStatus
+    from websockets.sync.client import connect
+
+    before = len(console.dev.commands)
+    ws_url = console.url.replace("http", "ws") + "ws"
+    port = int(console.url.rstrip("/").rsplit(":", 1)[1])
+    own = console.url.rstrip("/")
+    # another site's page; no Origin at all; this console's Origin sent to another name that
+    # leads here (DNS rebinding: the Host is not the console's)
+    for url, origin in ((ws_url, "http://elsewhere.example"), (ws_url, None),
+                        (f"ws://elsewhere.example:{port}/ws", own)):
+        with pytest.raises(InvalidStatus) as refused:
+            connect(url, origin=origin, sock=socket.create_connection(("127.0.0.1", port)))
+        assert refused.value.response.status_code == 403
+    assert not [c for _, c in console.dev.commands[before:] if c[0] == DRIVE]
+
+
+def test_stopping_the_console_runs_the_terminate_hook() -> None:
+    with CreateEmulator() as dev:
+        running = _console(dev)
+        dev.wait_for_commands(2, timeout=30)
+        status, stderr = running.stop(signal.SIGINT)
+        assert status == 130, stderr
+        assert "Traceback" not in stderr, stderr
+        dev.wait_until(lambda: bool(dev.commands) and dev.commands[-1][1] == STOP, 30, "the stop command last")
+        assert dev.commands[-1][1] == STOP
+        assert dev.opcodes()[:2] == [128, 132]  # the startup hook: Start, Full

@@ -1,0 +1,115 @@
+"""What the console does with a page's call, without a browser: the form's texts typed as the
+description declares them, the exact bytes written, and a refused value answered with its
+error (on every page's error list) and nothing written. And its command line's usage errors."""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+
+import pytest
+from conftest import REPO, cli_env
+from engine.test_one_engine import ScriptedPort
+
+from rdisc.console.server import Console, origins_for
+from rdisc.runtime import load
+
+DESCRIPTION = """
+robot t { }
+connection link: serial { baud 9600 }
+primitive move(speed: int in -100..100, on: bool) on link pack "<bB" (speed, 1 if on else 0)
+primitive blob(data: bytes in 0..8) on link pack "B*" (len(data), data)
+primitive goals(goal: int[3] in 0..255) on link pack "3B" (goal)
+primitive say(text: string) on link format "S{}\\n" (text)
+interface go(speed: int in 0..7 = 5, fast: bool = False) { move(speed * 2 if fast else speed, True) }
+input set_velocity: DifferentialSpeed -> go(round(linear * 7), angular > 0)
+"""
+
+
+@pytest.fixture
+def console(tmp_path):
+    path = tmp_path / "t.rdis"
+    path.write_text(DESCRIPTION)
+    port = ScriptedPort()
+    robot = load(path).connect(port, threads=False)
+    events: list[dict] = []
+    console = Console(robot, "<p>page</p>")
+    console._push = events.append  # what every page would be sent
+    yield console, port, events
+    robot.close()
+
+
+def call(console: Console, kind: str, name: str, **values: object) -> dict:
+    return console.call(json.dumps({"id": 1, "kind": kind, "name": name, "values": values}))
+
+
+@pytest.mark.parametrize(("kind", "name", "values", "written"), [
+    ("primitive", "move", {"speed": "-3", "on": True}, b"\xfd\x01"),
+    ("primitive", "move", {"speed": "0x10", "on": False}, b"\x10\x00"),
+    ("primitive", "blob", {"data": "0a0b"}, b"\x02\x0a\x0b"),
+    ("primitive", "goals", {"goal": "[1, 2, 255]"}, b"\x01\x02\xff"),
+    ("primitive", "goals", {"goal": "4, 5, 6"}, b"\x04\x05\x06"),
+    ("primitive", "say", {"text": " hi "}, b"S hi \n"),
+    ("interface", "go", {"speed": "", "fast": False}, b"\x05\x01"),  # empty: the default
+    ("interface", "go", {"speed": "3", "fast": True}, b"\x06\x01"),
+    ("input", "set_velocity", {"linear": "1", "angular": "-0.5"}, b"\x07\x01"),
+])
+def test_a_call_is_typed_as_declared_and_written(console, kind, name, values, written) -> None:
+    robot_console, port, _ = console
+    assert call(robot_console, kind, name, **values) == {"type": "result", "id": 1, "ok": True}
+    assert bytes(port.written) == written
+
+
+@pytest.mark.parametrize(("kind", "name", "values", "error", "message"), [
+    ("primitive", "move", {"speed": "1.5", "on": True}, "ValueError", "move: speed must be an int, not '1.5'"),
+    ("primitive", "move", {"speed": "200", "on": True}, "RdisValueError",
+     "move: parameter speed is 200, outside -100..100"),
+    ("primitive", "move", {"speed": "1", "on": "yes"}, "ValueError", "move: on must be true or false, not 'yes'"),
+    ("primitive", "move", {"speed": "1"}, "TypeError", "move: on is missing"),
+    ("primitive", "move", {"speed": "1", "on": True, "x": "1"}, "TypeError",
+     "move has no parameter or field named 'x'"),
+    ("primitive", "move", {"speed": 1, "on": True}, "TypeError", "move: speed is given as text, not int"),
+    ("input", "set_velocity", {"linear": "fast", "angular": "0"}, "ValueError",
+     "set_velocity: linear must be a number, not 'fast'"),
+    ("input", "nothing", {}, "KeyError", "t has no input named 'nothing'"),
+    ("output", "set_velocity", {}, "ValueError",
+     "a call is of an input, an interface or a primitive, not 'output'"),
+])
+def test_a_refused_call_writes_nothing_and_is_an_error_on_the_page(console, kind, name, values, error,
+                                                                    message) -> None:
+    robot_console, port, events = console
+    assert call(robot_console, kind, name, **values) == {"type": "result", "id": 1, "ok": False, "error": error,
+                                                         "message": message}
+    assert bytes(port.written) == b""
+    assert [(e["error"], e["message"]) for e in events if e["type"] == "error"] == [(error, message)]
+
+
+def test_a_call_that_is_not_a_call_is_refused(console) -> None:
+    robot_console, port, _ = console
+    for text in ("[1]", "not json", json.dumps({"id": 2, "kind": "input", "name": 3})):
+        assert robot_console.call(text)["ok"] is False
+    assert bytes(port.written) == b""
+
+
+def test_the_origins_are_the_consoles_own() -> None:
+    assert origins_for("127.0.0.1", 8765) == {"http://127.0.0.1:8765", "http://localhost:8765",
+                                              "http://[::1]:8765"}
+    assert "http://192.168.1.5:80" in origins_for("192.168.1.5", 80)
+    assert origins_for("0.0.0.0", 80, ["http://robot.lan:80/"]) == origins_for("127.0.0.1", 80) | {
+        "http://robot.lan:80"}
+
+
+@pytest.mark.parametrize(("args", "status", "message"), [
+    (["--port", "loop://", "--http", "nowhere"], 2, "rdisc console: --http `nowhere` is not HOST:PORT"),
+    (["--port", "loop://", "--set", "X=1"], 2,
+     "rdisc console: irobot_create: no setting named 'X' (its settings: none)"),
+    (["--port", "/dev/rdisc-no-such-port", "--http", "127.0.0.1:0"], 1,
+     "rdisc console: RdisConnectionError: btserial: cannot open /dev/rdisc-no-such-port"),
+])
+def test_usage_and_connection_errors(args, status, message) -> None:
+    done = subprocess.run([sys.executable, "-m", "rdisc", "console", "examples/create.rdis", *args], cwd=REPO,
+                          env=cli_env(), capture_output=True, text=True, timeout=120, check=False)
+    assert done.returncode == status, done.stderr
+    assert message in done.stderr
+    assert "Traceback" not in done.stderr
