@@ -422,6 +422,7 @@ class _Driver:
                     w.line(f"{quoted(message.type)},")
                     text = [quoted(line) for line in message.definition.splitlines(keepends=True)]
                     w.lines([*text[:-1], f"{text[-1]},"])
+                    w.line(f"{_tuple([quoted(name) for name in message.fields])},")
                     w.line(f"{_tuple([quoted(path) for path in message.paths])},")
                 w.line("),")
         w.line("}")

@@ -1106,11 +1106,12 @@ class Device:
 class Message:
     """The ROS 2 message a recording (`--record`) carries an adapter's values as: its type
     (`geometry_msgs/msg/Twist`), its definition with those of the messages it uses (the
-    `ros2msg` schema text), and where each field of the adapter goes, in the adapter's order
-    (`linear.x`, `position[0]`, `pose.pose.orientation:yaw` for a quaternion given by its yaw)."""
+    `ros2msg` schema text), the adapter's fields and where each goes (`linear.x`, `position[0]`,
+    `pose.pose.orientation:yaw` for a quaternion given by its yaw)."""
 
     type: str
     definition: str
+    fields: tuple[str, ...]
     paths: tuple[str, ...]
 
 
@@ -2226,7 +2227,7 @@ class Recorder:
         if message is None:
             self._write(f"/{name}", _TEXT, _TEXT_SCHEMA, {"data": json.dumps(dict(contents), default=list)})
         else:
-            self._write(f"/{name}", message.type, message.definition, ros_message(message, list(contents.values())))
+            self._write(f"/{name}", message.type, message.definition, ros_message(message, contents))
 
     def _stamp(self) -> int:
         """Now in nanoseconds, later than every time written before: the file keeps the order."""
@@ -2243,11 +2244,12 @@ class Recorder:
             self._writer.write_message(topic, registered, message, log_time=stamp)
 
 
-def ros_message(message: Message, values: Sequence[Any]) -> dict[str, Any]:
-    """An adapter's values, in its field order, as the nested members of its ROS 2 message
-    (what `mcap-ros2-support` encodes); members no field names keep their defaults."""
+def ros_message(message: Message, values: Mapping[str, Any]) -> dict[str, Any]:
+    """An adapter's values by field name as the nested members of its ROS 2 message (what
+    `mcap-ros2-support` encodes); members no field names keep their defaults."""
     out: dict[str, Any] = {}
-    for path, value in zip(message.paths, values):
+    for name, path in zip(message.fields, message.paths):
+        value = values[name]
         steps, _, conversion = path.partition(":")
         if conversion == "yaw":
             value = {"x": 0.0, "y": 0.0, "z": math.sin(value / 2), "w": math.cos(value / 2)}

@@ -100,7 +100,8 @@ def adapter_message(adapter: m.Adapter) -> engine.Message | None:
     paths = tuple(f.ros for f in adapter.fields)
     if any(path is None for path in paths):
         return None
-    return engine.Message(ros2_name(adapter.ros), definition(adapter.ros), tuple(p for p in paths if p is not None))
+    return engine.Message(ros2_name(adapter.ros), definition(adapter.ros), tuple(f.name for f in adapter.fields),
+                          tuple(p for p in paths if p is not None))
 
 
 def recorded_messages(model: m.Model) -> dict[str, engine.Message]:
