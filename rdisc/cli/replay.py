@@ -9,13 +9,14 @@ from __future__ import annotations
 
 import argparse
 import sys
+from typing import Any
 
 from rdisc.cli.output import EXIT_ERRORS, EXIT_USAGE, exit_code, show
 from rdisc.compile import compile_path
 from rdisc.runtime import engine
 
 
-def add_parser(verbs) -> None:
+def add_parser(verbs: Any) -> None:  # argparse's subparsers
     p = verbs.add_parser(
         "replay", help="replay a recording (rdisc run --record) through a description and report differences",
         description="Feed the device bytes of a recording through a description, making the recorded calls "

@@ -2176,7 +2176,7 @@ class Recorder:
     def __init__(self, robot: Robot, output: Any, settings: Mapping[str, Any] | None = None) -> None:
         from mcap_ros2.writer import Writer  # only a recording needs it
 
-        self._writer = Writer(output)
+        self._writer: Any = Writer(output)
         self._device = robot.device
         self._adapters = {o.name: o.adapter for i in robot.device.interfaces.values() for o in i.outputs}
         self._lock = threading.Lock()

@@ -121,6 +121,7 @@ class ReplayPort:
         self._exchanges = deque(exchanges)
         self._available = bytearray()
         self.timeout: float | None = 0.0
+        self.dtr = self.rts = False  # the modem lines a primitive sets are recorded, nothing more
 
     def write(self, data: bytes, /) -> int:
         while self._exchanges:  # a listener's bytes recorded before the write come first
@@ -165,7 +166,8 @@ def replay(recording: Recording, device: engine.Device) -> Recording:
     output = io.BytesIO()
     recorder = engine.Recorder(robot, output, recording.settings)
     ports = {name: ReplayPort(recording.exchanges.get(name, ())) for name in device.connections}
-    robot.open(ports, threads=False, settings=_settings(recording.settings))
+    given: dict[str, engine.Port] = dict(ports)
+    robot.open(given, threads=False, settings=_settings(recording.settings))
     try:
         for run in recording.runs:
             try:
