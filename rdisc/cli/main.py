@@ -6,9 +6,9 @@ import argparse
 import sys
 
 from rdisc import __version__
-from rdisc.cli import build, check, console, dump, emit_python, emit_ros, explain, graph, import_, run
+from rdisc.cli import build, check, console, dump, emit_python, emit_ros, explain, graph, import_, replay, run
 
-VERBS = (check, build, import_, explain, run, console, emit_python, emit_ros, dump, graph)
+VERBS = (check, build, import_, explain, run, replay, console, emit_python, emit_ros, dump, graph)
 EXIT_INTERNAL = 3
 
 

@@ -31,6 +31,7 @@ from rdisc.emit.writer import Writer
 from rdisc.runtime import engine
 from rdisc.runtime.codec import bit_fields, decoder, encoder, frame_fields
 from rdisc.runtime.device import Description
+from rdisc.runtime.messages import recorded_messages
 from rdisc.semantics import model as m
 from rdisc.semantics.model import Type
 from rdisc.source import SourceFile, Span, place
@@ -365,7 +366,7 @@ class _Driver:
             self.function(w, function, "state: StateValues", None,
                           [(name, e, types.get(name, e.type)) for name, e in o.fields], "dict[str, Value]")
             w.blank(2)
-            w.line(f"{self.plan['output', o.name]} = Output({quoted(o.name)}, {function})")
+            w.line(f"{self.plan['output', o.name]} = Output({quoted(o.name)}, {function}, {quoted(o.adapter)})")
         for iface in model.callees_first():
             w.blank(2)
             self.interface(w, iface)
@@ -394,6 +395,10 @@ class _Driver:
                    for kind, names in (("connection", model.connections), ("primitive", model.primitives),
                                        ("interface", model.interfaces), ("input", model.inputs))}
         settings = {"settings": "_SETTINGS"} if model.settings else {}
+        messages = recorded_messages(model)
+        if messages:
+            settings["messages"] = "_MESSAGES"
+            self.messages(w, messages)
         if model.settings:
             w.line("_SETTINGS = (")
             with w.indented():
@@ -405,6 +410,24 @@ class _Driver:
             "ROBOT", f"{{{state}}}", f"{{{by_name['connection']}}}", f"{{{by_name['primitive']}}}",
             f"{{{by_name['interface']}}}", f"{{{by_name['input']}}}"], settings)
         w.line('"""The whole description, planned: what the robot runs."""')
+
+    @staticmethod
+    def messages(w: Writer, messages: Mapping[str, engine.Message]) -> None:
+        """The ROS 2 message of each adapter, for recordings: its definition a line of text a line."""
+        w.line("_MESSAGES = {")
+        with w.indented():
+            for adapter, message in messages.items():
+                w.line(f"{quoted(adapter)}: Message(")
+                with w.indented():
+                    w.line(f"{quoted(message.type)},")
+                    text = [quoted(line) for line in message.definition.splitlines(keepends=True)]
+                    w.lines([*text[:-1], f"{text[-1]},"])
+                    w.line(f"{_tuple([quoted(name) for name in message.fields])},")
+                    w.line(f"{_tuple([quoted(path) for path in message.paths])},")
+                w.line("),")
+        w.line("}")
+        w.line('"""Each adapter\'s ROS 2 message, as a recording (`--record`) carries it."""')
+        w.blank(2)
 
     def request(self, w: Writer, i: m.DomainInput, fields: tuple[m.Parameter, ...]) -> str:
         """The input's request in one step (the engine's `Input.request`): the input's and the

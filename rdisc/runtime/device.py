@@ -19,6 +19,7 @@ from rdisc.runtime import engine
 from rdisc.runtime.codec import decoder, encoder, frame_fields, wire_frame
 from rdisc.runtime.errors import RdisLoadError
 from rdisc.runtime.evaluate import Prepared, coerce, prepare
+from rdisc.runtime.messages import recorded_messages
 from rdisc.semantics import model as m
 
 __all__ = ["Description", "load"]
@@ -62,7 +63,8 @@ class Description:
         connections = {c.name: self._connection(c, interfaces) for c in model.connections.values()}
         state = {s.name: s.default for s in model.settings.values()} | {s.name: s.initial for s in model.states.values()}
         settings = tuple(_param(s.name, s.type, s.low, s.high, s.default) for s in model.settings.values())
-        self.device = engine.Device(self.name, state, connections, primitives, interfaces, inputs, settings)
+        self.device = engine.Device(self.name, state, connections, primitives, interfaces, inputs, settings,
+                                    recorded_messages(model))
 
     def connect(
         self,
@@ -134,7 +136,7 @@ class Description:
     def _output(self, o: m.DomainOutput) -> engine.Output:
         adapter = self.model.adapters[o.adapter]
         fields = [(name, prepare(e), _field_type(adapter, name, e)) for name, e in o.fields]
-        return engine.Output(o.name, lambda s: {name: coerce(f(s, _EMPTY, ()), t) for name, f, t in fields})
+        return engine.Output(o.name, lambda s: {name: coerce(f(s, _EMPTY, ()), t) for name, f, t in fields}, o.adapter)
 
     def _interface(self, iface: m.Interface, primitives: Mapping[str, engine.Primitive],
                    outputs: Mapping[str, engine.Output], callees: Mapping[str, engine.Interface]) -> engine.Interface:

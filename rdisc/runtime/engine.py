@@ -1017,6 +1017,7 @@ class Output:
 
     name: str
     fields: Callable[[StateValues], dict[str, Value]]
+    adapter: str = ""
 
 
 @dataclass(frozen=True, slots=True)
@@ -1150,6 +1151,20 @@ class Device:
     interfaces: Mapping[str, Interface]
     inputs: Mapping[str, Input]
     settings: tuple[Param, ...] = ()  # given when connecting; read as state is, never written
+    messages: Mapping[str, Message] = field(default_factory=dict)  # by adapter: how a recording carries it
+
+
+@dataclass(frozen=True, slots=True)
+class Message:
+    """The ROS 2 message a recording (`--record`) carries an adapter's values as: its type
+    (`geometry_msgs/msg/Twist`), its definition with those of the messages it uses (the
+    `ros2msg` schema text), the adapter's fields and where each goes (`linear.x`, `position[0]`,
+    `pose.pose.orientation:yaw` for a quaternion given by its yaw)."""
+
+    type: str
+    definition: str
+    fields: tuple[str, ...]
+    paths: tuple[str, ...]
 
 
 def _floats(params: tuple[Param, ...]) -> tuple[int, ...]:
@@ -1493,6 +1508,8 @@ class _Worker:
         for interface in self.connection.periodic:
             if self._stop.is_set():
                 return
+            if robot._run_callbacks:
+                robot._notify_run(self.connection.name, "periodic", interface.name)
             try:
                 robot._interface(interface, [])
             except Exception as err:  # noqa: BLE001 - reported; the schedule goes on
@@ -1506,6 +1523,8 @@ class _Worker:
                 return
             due = self._keepalive_due + self.interval
             self._keepalive_due = due if due > now else now + self.interval
+        if robot._run_callbacks:
+            robot._notify_run(self.connection.name, "keepalive", keepalive.interface.name)
         try:
             robot._hook(keepalive)
         except Exception as err:  # noqa: BLE001 - reported; the schedule goes on
@@ -1570,6 +1589,7 @@ class Robot:
         self._output_callbacks: list[OutputCallback] = []
         self._error_callbacks: list[ErrorCallback] = []
         self._io_callbacks: list[IoCallback] = []
+        self._run_callbacks: list[Callable[[str, str, str], object]] = []  # a Recorder's: what a thread runs
         self._links: dict[str, _Link] = {}
         self._workers: list[_Worker] = []
         self._close_lock = threading.Lock()
@@ -2151,6 +2171,12 @@ class Robot:
                     error.__cause__ = err
                     self._report(error)
 
+    def _notify_run(self, connection: str, kind: str, name: str) -> None:
+        """Tell a recorder that a connection's thread starts a periodic interface or its keepalive."""
+        with self._callback_lock:
+            for callback in list(self._run_callbacks):
+                callback(connection, kind, name)
+
     def _report(self, error: BaseException) -> None:
         with self._callback_lock:
             callbacks = list(self._error_callbacks)
@@ -2166,6 +2192,134 @@ class Robot:
 def _lines_text(levels: Mapping[str, Value]) -> bytes:
     """The modem lines a primitive set, as the I/O callbacks see them: b"dtr=False rts=True"."""
     return " ".join(f"{line}={bool(level)}" for line, level in levels.items()).encode("ascii")
+
+
+# ---- recordings: a session in MCAP ------------------------------------------------------------------
+
+
+_TEXT = "std_msgs/msg/String"
+_TEXT_SCHEMA = "string data\n"
+_BYTES = "std_msgs/msg/UInt8MultiArray"
+_BYTES_SCHEMA = ("MultiArrayLayout layout\nuint8[] data\n" + "=" * 80 + "\nMSG: std_msgs/MultiArrayLayout\n"
+                 "MultiArrayDimension[] dim\nuint32 data_offset\n" + "=" * 80
+                 + "\nMSG: std_msgs/MultiArrayDimension\nstring label\nuint32 size\nuint32 stride\n")
+_LOG = "rcl_interfaces/msg/Log"
+_LOG_SCHEMA = ("byte DEBUG=10\nbyte INFO=20\nbyte WARN=30\nbyte ERROR=40\nbyte FATAL=50\n"
+               "builtin_interfaces/Time stamp\nuint8 level\nstring name\nstring msg\nstring file\n"
+               "string function\nuint32 line\n" + "=" * 80 + "\nMSG: builtin_interfaces/Time\n"
+               "int32 sec\nuint32 nanosec\n")
+RUNS_TOPIC = "/rdisc/runs"
+
+
+class Recorder:
+    """A session written to an MCAP file of ROS 2 messages (Foxglove and `ros2 bag` open it;
+    `rdisc replay` runs it again through a description).
+
+    Topics: each input called and each output delivered on `/NAME`, as its adapter's ROS 2
+    message (`Device.messages`), or, for an adapter without one, its fields as JSON in a
+    std_msgs/String; the bytes each way on `/rdisc/CONNECTION/write` and `/read`
+    (std_msgs/UInt8MultiArray), the modem lines a primitive set on `/rdisc/CONNECTION/lines`;
+    what ran, in order, on `/rdisc/runs` (JSON: each call of the host with its values, each
+    periodic interface and keepalive a connection's thread started), which is what a replay
+    repeats; errors on `/rosout` (rcl_interfaces/Log). Times are the host's clock, in order.
+    Needs the `mcap` and `mcap-ros2-support` packages, imported here only (ImportError without).
+    """
+
+    def __init__(self, robot: Robot, output: Any, settings: Mapping[str, Any] | None = None) -> None:
+        from mcap_ros2.writer import Writer  # only a recording needs it
+
+        self._writer: Any = Writer(output)
+        self._device = robot.device
+        self._adapters = {o.name: o.adapter for i in robot.device.interfaces.values() for o in i.outputs}
+        self._lock = threading.Lock()
+        self._time = 0
+        self._schemas: dict[str, Any] = {}
+        self._writer.add_metadata("rdisc", {"robot": robot.name,
+                                            "settings": json.dumps(dict(settings or {}), default=list)})
+        robot.on_output(self.output)
+        robot.on_error(self.error)
+        robot.on_io(self.io)
+        robot._run_callbacks.append(self.run)
+
+    def call(self, kind: str, name: str, values: Mapping[str, Any]) -> None:
+        """The host calls an input, an interface or a primitive with these values by name."""
+        self._write(RUNS_TOPIC, _TEXT, _TEXT_SCHEMA, {"data": json.dumps({"call": kind, "name": name,
+                                                                         "values": dict(values)})})
+        plan = self._device.inputs.get(name) if kind == "input" else None
+        if plan is not None:
+            self._adapted(name, plan.adapter, dict(values))
+
+    def run(self, connection: str, kind: str, name: str) -> None:
+        """A connection's thread starts a periodic interface or its keepalive."""
+        self._write(RUNS_TOPIC, _TEXT, _TEXT_SCHEMA, {"data": json.dumps({kind: name, "connection": connection})})
+
+    def output(self, message: dict[str, Any]) -> None:
+        self._adapted(message["name"], self._adapters.get(message["name"], ""), message["contents"])
+
+    def error(self, error: BaseException) -> None:
+        stamp = self._stamp()
+        self._write("/rosout", _LOG, _LOG_SCHEMA, {
+            "stamp": {"sec": stamp // 1_000_000_000, "nanosec": stamp % 1_000_000_000}, "level": 40,
+            "name": self._device.name, "msg": f"{type(error).__name__}: {error}"}, stamp)
+
+    def io(self, direction: str, connection: str, data: bytes) -> None:
+        if direction == "lines":
+            self._write(f"/rdisc/{connection}/lines", _TEXT, _TEXT_SCHEMA, {"data": data.decode("ascii")})
+        else:
+            self._write(f"/rdisc/{connection}/{direction}", _BYTES, _BYTES_SCHEMA, {"data": list(data)})
+
+    def finish(self) -> None:
+        """Write the file's index and close it: call it once the robot is closed."""
+        with self._lock:
+            self._writer.finish()
+
+    def _adapted(self, name: str, adapter: str, contents: Mapping[str, Any]) -> None:
+        """An adapter's values on `/NAME`: its ROS 2 message, or JSON text."""
+        message = self._device.messages.get(adapter)
+        if message is None:
+            self._write(f"/{name}", _TEXT, _TEXT_SCHEMA, {"data": json.dumps(dict(contents), default=list)})
+        else:
+            self._write(f"/{name}", message.type, message.definition, ros_message(message, contents))
+
+    def _stamp(self) -> int:
+        """Now in nanoseconds, later than every time written before: the file keeps the order."""
+        with self._lock:
+            self._time = max(time.time_ns(), self._time + 1)
+            return self._time
+
+    def _write(self, topic: str, kind: str, schema: str, message: dict[str, Any], stamp: int | None = None) -> None:
+        stamp = self._stamp() if stamp is None else stamp
+        with self._lock:
+            registered = self._schemas.get(kind)
+            if registered is None:
+                registered = self._schemas[kind] = self._writer.register_msgdef(kind, schema)
+            self._writer.write_message(topic, registered, message, log_time=stamp)
+
+
+def ros_message(message: Message, values: Mapping[str, Any]) -> dict[str, Any]:
+    """An adapter's values by field name as the nested members of its ROS 2 message (what
+    `mcap-ros2-support` encodes); members no field names keep their defaults."""
+    out: dict[str, Any] = {}
+    for name, path in zip(message.fields, message.paths):
+        value = values[name]
+        steps, _, conversion = path.partition(":")
+        if conversion == "yaw":
+            value = {"x": 0.0, "y": 0.0, "z": math.sin(value / 2), "w": math.cos(value / 2)}
+        elif isinstance(value, tuple):
+            value = list(value)
+        where = out
+        names = steps.split(".")
+        for step in names[:-1]:
+            where = where.setdefault(step, {})
+        last, bracket, index = names[-1].partition("[")
+        if bracket:
+            items = where.setdefault(last, [])
+            position = int(index[:-1])
+            items.extend([None] * (position + 1 - len(items)))
+            items[position] = value
+        else:
+            where[last] = value
+    return out
 
 
 # ---- the command line: `rdisc run` and every driver's ------------------------------------------------
@@ -2196,6 +2350,9 @@ def add_arguments(parser: argparse.ArgumentParser, device: Device | None = None)
                         help="run for S seconds (default: until the calls are done; with --watch, until Ctrl-C)")
     parser.add_argument("--timeout", type=float, default=1.0, metavar="S",
                         help="reply timeout in seconds (default 1)")
+    parser.add_argument("--record", metavar="FILE.mcap",
+                        help="record the session in MCAP: inputs and outputs as ROS 2 messages, the bytes "
+                             "each way, errors (needs the mcap and mcap-ros2-support packages)")
 
 
 def run_command(args: argparse.Namespace, robot: Robot, prog: str) -> int:
@@ -2210,6 +2367,17 @@ def run_command(args: argparse.Namespace, robot: Robot, prog: str) -> int:
     except ValueError as err:
         print(f"{prog}: {err}", file=sys.stderr)
         return EXIT_USAGE
+    recorder: Recorder | None = None
+    if args.record:
+        try:
+            recorder = Recorder(robot, args.record, settings)
+        except ImportError:
+            print(f"{prog}: --record needs the mcap and mcap-ros2-support packages "
+                  "(pip install mcap mcap-ros2-support)", file=sys.stderr)
+            return EXIT_USAGE
+        except OSError as err:
+            print(f"{prog}: cannot write {args.record}: {err.strerror or err}", file=sys.stderr)
+            return EXIT_USAGE
     robot.on_error(_print_error)
     if args.watch:
         robot.on_output(_print_output)
@@ -2221,6 +2389,8 @@ def run_command(args: argparse.Namespace, robot: Robot, prog: str) -> int:
         start = time.monotonic()
         robot.open(port, settings=settings)
         for name, kind, values in calls:
+            if recorder is not None:
+                recorder.call(kind, name, values)
             if kind == "input":
                 robot.call_input(name, **values)
             elif kind == "interface":
@@ -2233,6 +2403,8 @@ def run_command(args: argparse.Namespace, robot: Robot, prog: str) -> int:
             _sleep(None)
     except RdisError as err:
         _print_error(err)
+        if recorder is not None:
+            recorder.error(err)
         status = EXIT_ERROR
     except (TypeError, ValueError) as err:  # values of the wrong type for a call, or a bad port
         print(f"{prog}: {err}", file=sys.stderr)
@@ -2251,6 +2423,8 @@ def run_command(args: argparse.Namespace, robot: Robot, prog: str) -> int:
                 status = EXIT_SIGTERM
         try:
             robot.close()
+            if recorder is not None:
+                recorder.finish()
         finally:
             interrupted = status in (EXIT_SIGINT, EXIT_SIGTERM)
             for signum, handler in previous.items():  # after a signal, later ones are ignored to the exit

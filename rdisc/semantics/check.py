@@ -270,7 +270,7 @@ class _Checker:
         if node.type not in (Type.INT, Type.FLOAT) or value is None:
             self.d.report("E204", expr.span, f"{what} must be a constant number")
             return None
-        if not math.isfinite(value):  # type: ignore[arg-type]  # float("inf") folds to one
+        if isinstance(value, float) and not math.isfinite(value):  # float("inf") folds to one
             self.d.report("E204", expr.span, f"{what} must be a finite number, not {value!r}")
             return None
         if most is not None and not abs(value) * scale <= most:  # type: ignore[operator]

@@ -263,7 +263,7 @@ class Typer:
             return m.Element(array, index, None, e.span)  # type: ignore[arg-type]
         self.in_array(array.type, index, e.base.name if isinstance(e.base, ast.Ref) else "the array", e.index.span)
         folded = self._fold(node, (array, index), lambda a, i: a[i])
-        if self.is_constant(folded):  # `IDS[2]`: the element itself, wherever it goes
+        if self.is_constant(folded) and fits(self.constant(folded)):  # `IDS[2]`: the element itself
             return self._const(m.Const(self.constant(folded), array.type.element, e.span))  # type: ignore[arg-type]
         return folded
 
@@ -303,7 +303,7 @@ class Typer:
         node = m.ArrayValue(items, Array(element, len(items)), e.span)
         widen = float if element is Type.FLOAT else (lambda v: v)
         folded = self._fold(node, items, lambda *values: tuple(widen(v) for v in values))
-        if self.is_constant(folded):  # `[1, 2, 3]` is a constant, as a named one is
+        if self.is_constant(folded) and fits(self.constant(folded)):  # `[1, 2, 3]`, as a named one is
             return self._const(m.Const(self.constant(folded), node.type, e.span))  # type: ignore[arg-type]
         return folded
 

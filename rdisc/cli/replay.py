@@ -1,0 +1,56 @@
+"""`rdisc replay FILE.mcap DESCRIPTION`: a recording's device bytes through a description, and
+where its outputs (and the bytes it writes) differ from the recording's.
+
+Exit status: 0 the replay is the recording; 1 it differs (each difference a line), or the
+description has errors; 2 the recording cannot be read (or the mcap libraries are missing).
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from typing import Any
+
+from rdisc.cli.output import EXIT_ERRORS, EXIT_USAGE, exit_code, show
+from rdisc.compile import compile_path
+from rdisc.runtime import engine
+
+
+def add_parser(verbs: Any) -> None:  # argparse's subparsers
+    p = verbs.add_parser(
+        "replay", help="replay a recording (rdisc run --record) through a description and report differences",
+        description="Feed the device bytes of a recording through a description, making the recorded calls "
+                    "in order, and report where its outputs and the bytes it writes differ from the recording.",
+    )
+    p.add_argument("recording", metavar="FILE.mcap", help="a recording made by rdisc run --record")
+    p.add_argument("file", metavar="DESCRIPTION", help=".rdis or thesis-style .json description")
+    p.set_defaults(run=run)
+
+
+def run(args: argparse.Namespace) -> int:
+    from rdisc.runtime.replay import RecordingError, differences, read_recording, replay
+
+    compilation = compile_path(args.file)
+    show([compilation])
+    if compilation.model is None or compilation.diagnostics.has_errors():
+        return exit_code([compilation]) or EXIT_ERRORS
+    from rdisc.runtime.device import Description
+
+    device = Description(compilation.model).device
+    try:
+        recorded = read_recording(args.recording)
+    except RecordingError as err:
+        print(f"rdisc replay: {args.recording}: {err}", file=sys.stderr)
+        return EXIT_USAGE
+    try:
+        replayed = replay(recorded, device)
+    except engine.RdisError as err:  # the startup hooks failed
+        print(f"rdisc replay: {type(err).__name__}: {err}", file=sys.stderr)
+        return EXIT_ERRORS
+    found = differences(recorded, replayed, device)
+    for line in found:
+        print(line)
+    if found:
+        print(f"rdisc replay: {args.file} differs from {args.recording}", file=sys.stderr)
+        return EXIT_ERRORS
+    return 0

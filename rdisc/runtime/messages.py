@@ -1,0 +1,110 @@
+"""ROS 2 message definitions, as data: what a recording (`--record FILE.mcap`) needs to carry
+each input and output as its adapter's ROS 2 message, and its raw bytes and errors.
+
+An MCAP channel of ROS 2 messages names its schema `pkg/msg/Type` and carries the `.msg`
+text with every message it uses after it, each under a line of `=` and `MSG: pkg/Type`
+(the `ros2msg` encoding that `mcap-ros2-support`, Foxglove and `ros2 bag` read). The
+standard adapters name ROS 1 types (`geometry_msgs/Twist`); the ROS 2 type is the same
+package and name with `msg` between them, and these are the definitions of the ones the
+standard adapters use (the engine has those of a recording's own channels: bytes, text,
+log lines).
+"""
+
+from __future__ import annotations
+
+from rdisc.runtime import engine
+from rdisc.semantics import model as m
+
+DEFINITIONS: dict[str, str] = {
+    "builtin_interfaces/Time": "int32 sec\nuint32 nanosec\n",
+    "std_msgs/Header": "builtin_interfaces/Time stamp\nstring frame_id\n",
+    "std_msgs/Bool": "bool data\n",
+    "geometry_msgs/Vector3": "float64 x\nfloat64 y\nfloat64 z\n",
+    "geometry_msgs/Point": "float64 x\nfloat64 y\nfloat64 z\n",
+    "geometry_msgs/Quaternion": "float64 x 0\nfloat64 y 0\nfloat64 z 0\nfloat64 w 1\n",
+    "geometry_msgs/Pose": "Point position\nQuaternion orientation\n",
+    "geometry_msgs/Pose2D": "float64 x\nfloat64 y\nfloat64 theta\n",
+    "geometry_msgs/Twist": "Vector3 linear\nVector3 angular\n",
+    "geometry_msgs/PoseWithCovariance": "Pose pose\nfloat64[36] covariance\n",
+    "geometry_msgs/TwistWithCovariance": "Twist twist\nfloat64[36] covariance\n",
+    "nav_msgs/Odometry": (
+        "std_msgs/Header header\nstring child_frame_id\ngeometry_msgs/PoseWithCovariance pose\n"
+        "geometry_msgs/TwistWithCovariance twist\n"
+    ),
+    "sensor_msgs/Range": (
+        "uint8 ULTRASOUND=0\nuint8 INFRARED=1\nstd_msgs/Header header\nuint8 radiation_type\n"
+        "float32 field_of_view\nfloat32 min_range\nfloat32 max_range\nfloat32 range\n"
+    ),
+    "sensor_msgs/BatteryState": (
+        "uint8 POWER_SUPPLY_STATUS_UNKNOWN=0\nuint8 POWER_SUPPLY_STATUS_CHARGING=1\n"
+        "uint8 POWER_SUPPLY_STATUS_DISCHARGING=2\nuint8 POWER_SUPPLY_STATUS_NOT_CHARGING=3\n"
+        "uint8 POWER_SUPPLY_STATUS_FULL=4\n"
+        "std_msgs/Header header\nfloat32 voltage\nfloat32 temperature\nfloat32 current\nfloat32 charge\n"
+        "float32 capacity\nfloat32 design_capacity\nfloat32 percentage\nuint8 power_supply_status\n"
+        "uint8 power_supply_health\nuint8 power_supply_technology\nbool present\nfloat32[] cell_voltage\n"
+        "float32[] cell_temperature\nstring location\nstring serial_number\n"
+    ),
+    "sensor_msgs/JointState": (
+        "std_msgs/Header header\nstring[] name\nfloat64[] position\nfloat64[] velocity\nfloat64[] effort\n"
+    ),
+    "sensor_msgs/Temperature": "std_msgs/Header header\nfloat64 temperature\nfloat64 variance\n",
+}
+"""Each message's own fields (and constants), by its ROS 1 style name `pkg/Type`; a type
+without a package is of the package of the message that names it."""
+
+_PRIMITIVES = frozenset({"bool", "byte", "char", "float32", "float64", "int8", "uint8", "int16", "uint16",
+                         "int32", "uint32", "int64", "uint64", "string", "wstring"})
+_SEPARATOR = "=" * 80
+
+
+def _uses(name: str) -> list[str]:
+    """The messages a definition's fields are of, in the order they first appear."""
+    package = name.split("/")[0]
+    found: list[str] = []
+    for line in DEFINITIONS[name].splitlines():
+        kind = line.split()[0].split("[")[0]
+        if kind in _PRIMITIVES or "=" in line:
+            continue
+        used = kind if "/" in kind else f"{package}/{kind}"
+        if used not in found:
+            found.append(used)
+    return found
+
+
+def ros2_name(name: str) -> str:
+    """`geometry_msgs/Twist` as ROS 2 names it: `geometry_msgs/msg/Twist`."""
+    package, _, message = name.partition("/")
+    return f"{package}/msg/{message}"
+
+
+def definition(name: str) -> str:
+    """The `ros2msg` schema text of a message (`pkg/Type`): its fields, then each message it
+    uses, depth first, once, under its `MSG:` line."""
+    order: list[str] = []
+    todo = [name]
+    while todo:
+        current = todo.pop(0)
+        if current not in order:
+            order.append(current)
+            todo[:0] = _uses(current)
+    parts = [DEFINITIONS[name]]
+    parts += [f"{_SEPARATOR}\nMSG: {used}\n{DEFINITIONS[used]}" for used in order[1:]]
+    return "".join(parts)
+
+
+def adapter_message(adapter: m.Adapter) -> engine.Message | None:
+    """The ROS 2 message an adapter is recorded as, when it names one that is defined here and
+    every field has a path; else None (a recording carries it as JSON text)."""
+    if adapter.ros is None or adapter.ros not in DEFINITIONS:
+        return None
+    paths = tuple(f.ros for f in adapter.fields)
+    if any(path is None for path in paths):
+        return None
+    return engine.Message(ros2_name(adapter.ros), definition(adapter.ros), tuple(f.name for f in adapter.fields),
+                          tuple(p for p in paths if p is not None))
+
+
+def recorded_messages(model: m.Model) -> dict[str, engine.Message]:
+    """The ROS 2 message of each adapter the description's inputs and outputs use, by adapter."""
+    used = dict.fromkeys([*(i.adapter for i in model.inputs.values()), *(o.adapter for o in model.outputs.values())])
+    return {name: message for name in used if (message := adapter_message(model.adapters[name])) is not None}
