@@ -151,7 +151,7 @@ def test_torque_is_one_sync_write_as_the_sdk_sends_it(bus: XBus, arm: Any) -> No
     on = _sdk_sync_write(bus, TORQUE, 1, [1] * 6)
     off = _sdk_sync_write(bus, TORQUE, 1, [0] * 6)
     bus.clear()
-    with arm.connect(bus.port, timeout=0.2, threads=False):  # the startup hook: torque on
+    with arm.connect(bus.port, timeout=5.0, threads=False):  # the startup hook: torque on
         assert bus.wait_for(len(on), 5) == on
         bus.clear()
     assert bus.wait_for(len(off), 5) == off  # the terminate hook: torque off
@@ -165,7 +165,7 @@ def test_a_move_is_the_sdks_sync_write_of_six_goals(bus: XBus, arm: Any) -> None
     assert goals == [2048, 1070, 3026, 3072, 0, 4095]
     expected = _sdk_sync_write(bus, GOAL, 4, goals)
     bus.clear()
-    with arm.connect(bus.port, timeout=0.2, threads=False) as robot:
+    with arm.connect(bus.port, timeout=5.0, threads=False) as robot:
         bus.wait_for(TORQUE_PACKET, 5)  # the startup hook's, then nothing but the move
         bus.clear()
         robot.interfaces.move(ANGLES)
@@ -179,7 +179,7 @@ def test_a_sync_read_asks_and_reads_as_the_sdk_does(bus: XBus, arm: Any) -> None
     request, positions = _sdk_sync_read(bus)
     assert positions == bus.present  # the SDK read the six status packets, the stuffed one too
     bus.clear()
-    with arm.connect(bus.port, timeout=0.5, threads=False) as robot:
+    with arm.connect(bus.port, timeout=5.0, threads=False) as robot:
         delivered: list[dict[str, Any]] = []
         robot.on_output(delivered.append)
         bus.wait_for(TORQUE_PACKET, 5)

@@ -145,7 +145,7 @@ def micro() -> Iterator[Maestro]:
 
 @pytest.fixture
 def robot(micro: Maestro, implementation: tuple[Any, type[Exception]]) -> Iterator[Any]:
-    with implementation[0].connect(micro.port, timeout=0.5, threads=False) as connected:
+    with implementation[0].connect(micro.port, timeout=5.0, threads=False) as connected:
         yield connected
 
 
@@ -272,7 +272,7 @@ def test_the_emulator_reads_the_guides_set_multiple_targets() -> None:
 def test_set_multiple_targets_on_a_mini_maestro(implementation: tuple[Any, type[Exception]]) -> None:
     targets = [0, 4000, 6000, 8000, 4095 * 4, 0x3FFF]
     expected = bytes([SET_MULTIPLE_TARGETS, 6, 0]) + b"".join(compact(SET_TARGET, 0, t)[2:] for t in targets)
-    with Maestro(channels=12) as mini, implementation[0].connect(mini.port, timeout=0.5, threads=False) as robot:
+    with Maestro(channels=12) as mini, implementation[0].connect(mini.port, timeout=5.0, threads=False) as robot:
         robot.interfaces.set_all_targets(targets)
         assert mini.wait_for(len(expected), 5) == expected
         robot.primitives.get_errors()  # a reply after the command: it has been read
@@ -280,7 +280,7 @@ def test_set_multiple_targets_on_a_mini_maestro(implementation: tuple[Any, type[
         assert robot.state.errors == 0
         with pytest.raises(implementation[1]):
             robot.interfaces.set_all_targets([6000] * 5 + [0x4000])
-    with Maestro() as micro, implementation[0].connect(micro.port, timeout=0.5, threads=False) as robot:
+    with Maestro() as micro, implementation[0].connect(micro.port, timeout=5.0, threads=False) as robot:
         robot.interfaces.set_all_targets(targets)  # a Micro Maestro does not know the command
         robot.primitives.get_errors()
         assert robot.state.errors & PROTOCOL_ERROR
