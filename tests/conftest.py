@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import difflib
 import os
+import re
 import subprocess
 import sys
 from dataclasses import dataclass
@@ -94,6 +95,19 @@ def cli_env(**extra: str) -> dict[str, str]:
     env.update({"NO_COLOR": "1", "TERM": "dumb", "PYTHONIOENCODING": "utf-8", "COLUMNS": "200"})
     env.update(extra)
     return env
+
+
+def untimed(stderr: str) -> list[str]:
+    """The lines of a `--trace` without their times (`0.1234 CONN > 89 00` -> `CONN > 89 00`),
+    each checked to start with the seconds since the run started, four decimals, never going back."""
+    lines, last = [], 0.0
+    for line in stderr.splitlines():
+        match = re.fullmatch(r"(\d+\.\d{4}) (.*)", line)
+        assert match is not None, f"not a timed trace line: {line!r}"
+        assert float(match[1]) >= last, f"the trace goes back in time: {line!r}"
+        last = float(match[1])
+        lines.append(match[2])
+    return lines
 
 
 def run_rdisc(

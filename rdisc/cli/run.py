@@ -2,8 +2,8 @@
 
 Loads the description, then does what every generated driver's command line does
 (the engine's `run_command`, one implementation for both): connects (startup
-hooks), performs the calls in order, then runs for `--duration` seconds, or until
-Ctrl-C with `--watch`, or ends when the calls are done. Whatever happens (the end,
+hooks), performs the calls in order, then runs until `--duration` seconds after the
+startup hooks ended, or until Ctrl-C with `--watch`, or ends when the calls are done. Whatever happens (the end,
 a device error, Ctrl-C, SIGTERM), it ends by running the terminate hooks, so a
 robot is left stopped.
 

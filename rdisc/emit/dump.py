@@ -1,15 +1,19 @@
 """`rdisc dump`: each primitive's wire layout as a byte table, to hold against the
-device's manual: offset, size and meaning of every part of the request and the
-reply, frames included. Sizes that depend on the values (text) show as `n`.
+device's manual: offset, size, kind and value of every part of the request and the
+reply, frames included. Sizes that depend on the values (text) show as `n`. Constant
+bytes show in hex as they go on the wire (a constant integer of a format with its
+decimal value after it: `84 (132)`), text as RDIS spells it (`"\\r\\n"` escaped).
 """
 
 from __future__ import annotations
 
+import struct
 from collections.abc import Callable
 
 from rdisc.emit.canonical import expression_text
 from rdisc.semantics import formats
 from rdisc.semantics import model as m
+from rdisc.syntax.printer import spell_template
 
 
 def dump(model: m.Model) -> str:
@@ -79,10 +83,12 @@ def _payload_rows(encoding: m.Pack | m.Format, args: tuple[m.Expr, ...]) -> list
     match encoding:
         case m.Pack(format=fmt, grouped=grouped):
             values = [v for i, a in enumerate(args) for v in ((a,) if i in grouped else m.spread((a,)))]
-            return _rows(fmt, lambda j, k: _value_text(values[j], k), [_constant_rest(v) for v in values])
+            slots = formats.struct_layout(fmt).slots
+            return _rows(fmt, lambda j, k: _value_text(values[j], k, _code_format(fmt, slots[j].code)),
+                         [_constant_rest(v) for v in values])
         case m.Format(template=template):
             shown = ", ".join(expression_text(a) for a in args)
-            return [(None, "text", f'"{template}"' + (f" ({shown})" if shown else ""))]
+            return [(None, "text", spell_template(template) + (f" ({shown})" if shown else ""))]
     raise AssertionError(encoding)
 
 
@@ -108,20 +114,42 @@ def _rows(fmt: str, text: Callable[[int, int | None], str], given: list[Row | No
     return rows
 
 
-def _value_text(value: m.Expr, element: int | None) -> str:
-    """A format value as a row shows it, or one element of it (a constant's by its value)."""
+def _value_text(value: m.Expr, element: int | None, fmt: str) -> str:
+    """A format value as a row shows it, or one element of it (a constant's by its value);
+    `fmt`, the struct format of its one code."""
     if element is None:
-        return expression_text(value)
+        return _shown(value, fmt)
     if isinstance(value, m.Const) and isinstance(value.type, m.Array):
-        return expression_text(m.Const(value.value[element], value.type.element))  # type: ignore[index]
+        return _shown(m.Const(value.value[element], value.type.element), fmt)  # type: ignore[index]
     return expression_text(m.Element(value, m.Const(element, m.Type.INT), value.type.element))  # type: ignore[union-attr]
+
+
+def _shown(value: m.Expr, fmt: str) -> str:
+    """A value packed by the struct format `fmt` (one code): a constant integer as its bytes in
+    hex, as they go on the wire, and its decimal value (`01 F4 (500)`); anything else as RDIS text."""
+    match value:
+        case m.Const(value=int() as number, type=m.Type.INT):
+            pass
+        case m.UnaryOp(op="-", operand=m.Const(value=int() as magnitude, type=m.Type.INT)):  # `-2` as written
+            number = -magnitude
+        case _:
+            return expression_text(value)
+    try:
+        packed = struct.pack(fmt, number)
+    except struct.error:  # a value the format cannot hold is the checker's to report
+        return expression_text(value)
+    return f"{_hex(packed)} ({number})"
+
+
+def _hex(data: bytes) -> str:
+    return " ".join(f"{b:02X}" for b in data)
 
 
 def _constant_rest(arg: m.Expr) -> Row | None:
     """The row of constant bytes given for a `*` rest: their size is known, and their bytes."""
     if not (isinstance(arg, m.Const) and isinstance(arg.value, bytes) and arg.value):
         return None
-    return len(arg.value), "bytes (the rest)", " ".join(f"{b:02X}" for b in arg.value)
+    return len(arg.value), "bytes (the rest)", _hex(arg.value)
 
 
 def _code_format(fmt: str, code: str) -> str:
@@ -134,7 +162,7 @@ def _reply_rows(decoding: m.Unpack | m.Regex | None) -> list[Row]:
         case m.Unpack(format=fmt):
             return _rows(fmt, lambda j, k: f"out[{j}]" if k is None else f"out[{j}][{k}]")
         case m.Regex(pattern=pattern):
-            return [(None, "text", f"regex {pattern!r}")]
+            return [(None, "text", f"regex {spell_template(pattern)}")]
         case None:
             return []
     raise AssertionError(decoding)
@@ -163,8 +191,7 @@ def _side(name: str, parts: tuple[m.FramePart, ...] | None, payload: list[Row], 
                 case m.FrameBytes(role=role, data=data):
                     rows.append((len(data), role, " ".join(f"{ord(c):02X}" for c in data)))
                 case m.FrameField(name=field, format=fmt, value=value):
-                    rows.append((formats.struct_layout(fmt).size, f"field {field}",
-                                 f'"{fmt}" = {expression_text(value)}'))
+                    rows.append((formats.struct_layout(fmt).size, f"field {field}", f'"{fmt}" = {_shown(value, fmt)}'))
                 case m.FrameLength(format=fmt, adjust=adjust):
                     sign = f" {'+' if adjust >= 0 else '-'} {abs(adjust)}" if adjust else ""
                     rows.append((formats.struct_layout(fmt).size, "length", f'"{fmt}" = payload{sign}'))
@@ -185,11 +212,12 @@ def _side(name: str, parts: tuple[m.FramePart, ...] | None, payload: list[Row], 
     out = [f"  {name}: {total}{'+n' if varies else ''} byte{'' if total == 1 and not varies else 's'}"]
     if optional:
         out[0] += f", {sum(rows[i][0] or 0 for i in optional)} of them optional (a reply may lack them)"
+    out.append(f"  {'offset':>6}  {'size':>4}  {'kind':<20}  value")
     offset: int | None = 0
     for i, (size, what, detail) in enumerate(rows):
-        at = f"{offset:>4}" if offset is not None else "   ?"
+        at = f"{offset:>6}" if offset is not None else f"{'?':>6}"
         what = f"{what} (optional)" if i in optional else what
-        out.append(f"  {at}  {size if size is not None else 'n':>3}  {what:<20} {detail}")
+        out.append(f"  {at}  {size if size is not None else 'n':>4}  {what:<20}  {detail}")
         offset = offset + size if offset is not None and size is not None else None
     return out
 

@@ -27,17 +27,31 @@ BRIDGE_HELPERS = '''\
 # ---- the ROS 1 bridge (rdisc emit-ros): topics named after the domain inputs and outputs ----------
 
 
-def _ros_check_messages(messages: tuple[tuple[str, str], ...]) -> None:
-    """Refuse to start unless each message is one of a ROS message package here: its
+def _ros_check_installed(messages: tuple[tuple[str, str], ...]) -> None:
+    """Refuse to start, saying what is missing (exit status 2, no traceback), unless this
+    python has ROS 1 (rospy) and each message is one of a ROS message package here: its
     package is found (not imported) and holds `msg/_Message.py`, so that the imports
     that follow load ROS messages and nothing else."""
     import importlib.util
 
+    missing = []
+    if importlib.util.find_spec("rospy") is None:
+        missing.append(f"ROS 1 is not here: {sys.executable} has no rospy; run the node with the python3 "
+                       "of a ROS 1 installation (Debian: apt install python3-rospy)")
     for package, message in messages:
         spec = importlib.util.find_spec(package)
         places = list(spec.submodule_search_locations or ()) if spec is not None else []
         if not any(os.path.isfile(os.path.join(place, "msg", f"_{message}.py")) for place in places):
-            raise SystemExit(f"{package}/{message} is not a ROS message here: install its package")
+            missing.append(f"{package}/{message} is not a ROS message here: install its package")
+    if missing:
+        _ros_refuse(missing)
+
+
+def _ros_refuse(problems: list[str]) -> None:
+    """Say why the node cannot start, on stderr, and end with exit status 2."""
+    prog = os.path.basename(sys.argv[0])
+    print("\\n".join(f"{prog}: {problem}" for problem in problems), file=sys.stderr)
+    raise SystemExit(2)
 
 
 def _ros_item(items: Any, index: int) -> Any:
@@ -121,12 +135,15 @@ class _Bridge:
         messages = list(dict.fromkeys([*named, ("std_msgs", "String")]))  # as first named; ~errors' last
         with w.block("def ros_main() -> int:"):
             w.line('"""Run the robot as a ROS node until ROS shuts it down; the terminate hooks run then."""')
-            w.line("_ros_check_messages((")
+            w.line("_ros_check_installed((")
             with w.indented():
                 w.lines([f"({quoted(p)}, {quoted(n)})," for p, n in messages])
             w.line("))")
             imports = [f"import {package}.msg as {package}_msg" for package in {p for p, _ in messages}]
-            w.lines([line + _IGNORE for line in sorted([*imports, "import rospy"])])
+            with w.block("try:  # a ROS found but broken (a module of its own missing) is refused, too"):
+                w.lines([line + _IGNORE for line in sorted([*imports, "import rospy"])])
+            with w.block("except ImportError as err:"):
+                w.line('_ros_refuse([f"ROS 1 does not load here: {err}"])')
             w.blank()
             w.lines([
                 "rospy.init_node(ROBOT)",

@@ -170,13 +170,17 @@ Details both implementations follow (where the above is silent):
   finish the interface it is running, delays included.
 - The command line (`rdisc run` and a generated driver's `__main__`): `--call
   NAME K=V ...` calls an input with its fields, else an interface, else a
-  primitive, with its parameters by name; values are int, else float, else
-  True/False, else the string. `--set NAME=VALUE` gives a setting (the text as it
-  is for a string setting, hex for bytes, else read as --call's values); one that
-  does not fit is a usage error. Without `--port`, every connection opens its
-  address. `--watch` prints each output as `json.dumps(output_dict)` on stdout,
-  one a line; `--trace` prints "CONN > 89 00 c8 7f ff" (written), "CONN < 00"
-  (read) and "CONN lines dtr=False" (modem lines set) on stderr; errors reported
+  primitive, with its parameters by name, each value read as its parameter's
+  type says: a string as written (`line=1234` is text), bytes as hex
+  (`data=00080000`), an array as `[1,2,3]`, a number or True/False otherwise. An
+  unknown name is answered with the nearest known one ("did you mean ...?").
+  `--set NAME=VALUE` gives a setting, read the same way; one that does not fit is
+  a usage error. Without `--port`, every connection opens its address.
+  `--duration S` runs S seconds from the end of the startup hooks. `--watch`
+  prints each output as `json.dumps(output_dict)` on stdout, one a line; `--trace`
+  prints, after the monotonic seconds since the run started (four decimals),
+  "0.1234 CONN > 89 00 c8 7f ff" (written), "0.1250 CONN < 00" (read) and
+  "0.1201 CONN lines dtr=False" (modem lines set) on stderr; errors reported
   while running are printed on stderr as "rdisc run: TYPE: MESSAGE". Exit status: 0 done, 1 a description or device
   error, 2 a usage error, 130 after SIGINT, 143 after SIGTERM; the terminate
   hooks run in every case.

@@ -286,9 +286,9 @@ def _primitive_clause(c: ast.PrimitiveClause) -> tuple[list[str], bool]:
         case ast.On(connection):
             return [f"on {connection.text}"], False
         case ast.Encoding(kind, template, args):
-            return [f"{kind} {_template(template)} ({_args(args)})"], False
+            return [f"{kind} {spell_template(template.value)} ({_args(args)})"], False
         case ast.Decoding(kind, template):
-            return [f"{kind} {_template(template)}"], False
+            return [f"{kind} {spell_template(template.value)}"], False
         case ast.Framed(frame, args):
             return [f"frame {frame.text}({_args(args)})"], False
         case ast.SkipUnmatched():
@@ -303,7 +303,7 @@ def _primitive_clause(c: ast.PrimitiveClause) -> tuple[list[str], bool]:
             lines = [f"reply {key.text} {{" if tag is None else f"reply tag {p.quote(tag.value)} {{"]
             for entry in entries:
                 values = print_expr(entry.value) + ("" if entry.last is None else f"..{print_expr(entry.last)}")
-                head = f"{values}: {entry.decoding.kind} {_template(entry.decoding.template)}"
+                head = f"{values}: {entry.decoding.kind} {spell_template(entry.decoding.template.value)}"
                 actions = _primitive_clause(entry.actions)[0] if entry.actions is not None else []
                 lines.append(INDENT + head + (" " + actions[0] if actions else ""))
                 lines.extend(INDENT + line for line in actions[1:])
@@ -330,9 +330,9 @@ def _lay_out(head: str, pieces: list[tuple[list[str], bool]], wrapped: bool) -> 
     return lines
 
 
-def _template(template: ast.StrLit) -> str:
-    """Templates with backslashes (regexes above all) as raw strings, so `\\d` stays `\\d`."""
-    value = template.value
+def spell_template(value: str) -> str:
+    """A template (a format's or a regex) as RDIS text: with backslashes (regexes above all) as a
+    raw string, so `\\d` stays `\\d`; else quoted, control characters escaped."""
     if "\\" in value and value.isprintable() and _RAW_SPELLABLE.fullmatch(value):
         return f'r"{value}"'
     return p.quote(value)

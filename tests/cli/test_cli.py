@@ -75,10 +75,11 @@ def test_missing_file_exits_2(rdisc, tmp_path: Path) -> None:
     assert "nowhere.rdis" in result.stderr
 
 
-def test_directory_is_unreadable_exits_2(rdisc, tmp_path: Path) -> None:
+def test_a_directory_is_not_one_description_exits_2(rdisc, tmp_path: Path) -> None:
+    """`rdisc check` takes a directory for the descriptions in it; the verbs of one description don't."""
     folder = tmp_path / "folder.rdis"
     folder.mkdir()
-    result = rdisc("check", folder)
+    result = rdisc("dump", folder)
     assert result.returncode == 2
     assert "error[E006]: cannot read" in result.stderr
 
@@ -150,7 +151,7 @@ def test_verbose_prints_the_budget_of_create(rdisc) -> None:
     assert result.returncode == 0
     assert result.stderr == ""
     assert result.stdout.splitlines() == [
-        "connection `btserial`: 57600 baud, 5760 bytes/s",
+        "examples/create.rdis: connection `btserial`: 57600 baud, 5760 bytes/s",
         "  every tick (40 Hz, 25.0 ms):",
         "    get_bumpers: 3 bytes, 0.52 ms on the wire + 15 ms of delays = 15.52 ms",
         "    15.52 ms of 25.0 ms per tick",
@@ -158,6 +159,34 @@ def test_verbose_prints_the_budget_of_create(rdisc) -> None:
         "    get_bumpers: 3 bytes, 0.52 ms on the wire + 15 ms of delays = 15.52 ms",
         "  scheduled: 123.0 bytes/s, 2.1% of the link",
     ]
+
+
+def test_verbose_names_the_file_of_each_budget(rdisc) -> None:
+    result = rdisc("check", "-v", KOALA, CREATE)
+    assert (result.returncode, result.stderr) == (0, "")
+    assert [line for line in result.stdout.splitlines() if not line.startswith(" ")] == [
+        "examples/koala.rdis: connection `rs232`: 38400 baud, 3840 bytes/s",
+        "examples/create.rdis: connection `btserial`: 57600 baud, 5760 bytes/s",
+    ]
+
+
+def test_a_directory_is_each_description_in_it_in_sorted_order(rdisc, tmp_path: Path) -> None:
+    result = rdisc("check", "-v", "examples/")
+    assert (result.returncode, result.stderr) == (0, "")
+    described = sorted(f"examples/{p.name}" for p in (REPO / "examples").glob("*.rdis"))
+    assert list(dict.fromkeys(line.partition(": ")[0] for line in result.stdout.splitlines()
+                              if not line.startswith(" "))) == described
+    (tmp_path / "b.rdis").write_text((REPO / CREATE).read_text(encoding="utf-8"), encoding="utf-8")
+    (tmp_path / "a.json").write_text("{", encoding="utf-8")
+    (tmp_path / "notes.txt").write_text("not a description", encoding="utf-8")
+    result = rdisc("check", "-v", tmp_path)
+    assert result.returncode == 1
+    assert f"--> {tmp_path}/a.json" in result.stderr and "notes.txt" not in result.stderr
+    assert result.stdout.splitlines()[0] == f"{tmp_path}/b.rdis: connection `btserial`: 57600 baud, 5760 bytes/s"
+    empty = tmp_path / "empty"
+    empty.mkdir()
+    result = rdisc("check", empty)
+    assert (result.returncode, result.stderr) == (2, f"rdisc check: no .rdis or .json description in {empty}\n")
 
 
 def test_long_verbose_flag_is_the_same(rdisc) -> None:

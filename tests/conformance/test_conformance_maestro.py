@@ -106,8 +106,8 @@ class Maestro(PtyDevice):
         elif command == GET_MOVING_STATE:
             self.send(bytes([int(self.position != self.target)]))
         elif command == GET_ERRORS:
-            self.send(struct.pack("<H", self.errors))
-            self.errors = 0
+            errors, self.errors = self.errors, 0  # cleared before the answer leaves: the host may look at once
+            self.send(struct.pack("<H", errors))
         elif command == GO_HOME:
             self.position = list(self.home)
             self.target = list(self.home)

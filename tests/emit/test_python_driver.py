@@ -19,7 +19,7 @@ from pathlib import Path
 from types import ModuleType
 
 import pytest
-from conftest import cli_env
+from conftest import cli_env, untimed
 from devices import CreateEmulator, KoalaEmulator, pty_device
 from devices.create import DRIVE, FULL, SENSORS, START, STOP, TABLE_4_3
 
@@ -414,7 +414,7 @@ def test_command_line_call_writes_the_bytes_and_stops_at_exit(drivers) -> None:
         assert dev.opcodes()[:2] == [START, FULL]
         assert dev.drives() == [(200, 32767), (0, 0)]
         assert dev.commands[-1][1] == STOP
-    trace = done.stderr.splitlines()
+    trace = untimed(done.stderr)
     assert trace[:2] == ["btserial > 80", "btserial > 84"]
     assert "btserial > 89 00 c8 7f ff" in trace
     assert trace[-1] == "btserial > 89 00 00 00 00"

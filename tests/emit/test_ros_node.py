@@ -108,3 +108,20 @@ def test_ruff_and_mypy_strict_find_nothing(example: str, tmp_path: Path) -> None
         done = subprocess.run([sys.executable, "-m", *command, str(path)], capture_output=True, text=True,
                               check=False, cwd=tmp_path)
         assert done.returncode == 0, done.stdout + done.stderr
+
+
+def test_without_ros_the_node_says_what_is_missing(tmp_path: Path) -> None:
+    """Run by a python without ROS (isolated, no site packages: no rospy whatever is
+    installed), the node says so and ends with exit status 2, not a traceback."""
+    node = tmp_path / "create_node.py"
+    node.write_text(_node("create")[0], encoding="utf-8")
+    done = subprocess.run([sys.executable, "-I", "-S", str(node), "--port", "loop://"], capture_output=True,
+                          text=True, check=False, cwd=tmp_path, timeout=60)
+    assert (done.returncode, done.stdout) == (2, "")
+    assert done.stderr.splitlines() == [
+        (f"create_node.py: ROS 1 is not here: {sys.executable} has no rospy; run the node with the python3 of a "
+        "ROS 1 installation (Debian: apt install python3-rospy)"),
+        "create_node.py: geometry_msgs/Twist is not a ROS message here: install its package",
+        "create_node.py: sensor_msgs/Range is not a ROS message here: install its package",
+        "create_node.py: std_msgs/String is not a ROS message here: install its package",
+    ]

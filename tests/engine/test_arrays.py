@@ -102,7 +102,7 @@ def test_arrays_go_through_json_the_printer_and_dump(tmp_path: Path, rdisc) -> N
     assert "state home: float[3] = [0, 0.5, 1]\n" in printed
     assert print_module(parse("again.rdis", printed, Diagnostics())) == printed
     dump = rdisc("dump", tmp_path / "arm.rdis").stdout
-    assert "     5    1  u8                   1\n     6    2  u16 LE               goal[0]\n" in dump
+    assert "       5     1  u8                    01 (1)\n       6     2  u16 LE                goal[0]\n" in dump
 
 
 HEAD = 'robot a { author "tests" }\nconnection link: serial { baud 9600 }\n'
@@ -193,9 +193,9 @@ def test_a_repeated_group_in_dump_json_and_the_checker(tmp_path: Path, rdisc) ->
     _, built = through_json(GROUPS, tmp_path, "servos")
     assert '"pack": "<BHH3(BI)"' in built
     dump = rdisc("dump", tmp_path / "servos.rdis").stdout
-    assert ("     5    1  u8                   1\n     6    4  u32 LE               goal[0]\n"
-            "    10    1  u8                   2\n") in dump
-    assert "     3    1  s8                   out[2][0]\n     4    2  u16 LE               out[1][1]\n" in dump
+    assert ("       5     1  u8                    01 (1)\n       6     4  u32 LE                goal[0]\n"
+            "      10     1  u8                    02 (2)\n") in dump
+    assert "       3     1  s8                    out[2][0]\n       4     2  u16 LE                out[1][1]\n" in dump
     _, result = check_text(tmp_path, HEAD + 'primitive w(n: int) on link pack "<3(B)" ([1, 2, 300])\n'
                            'primitive v(g: int[2]) on link pack "<3(B)" (g)\n'
                            'primitive u() on link pack "<3(s)" ("a")\n')

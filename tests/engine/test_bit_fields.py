@@ -216,18 +216,20 @@ def test_json_printer_dump_and_budget(tmp_path: Path) -> None:
     assert dump(model).split("\n\n")[1] == """\
 primitive scan() on serial0, frame rplidar(1, 129)
   request: 2 bytes
-     0    1  header               A5
-     1    1  payload u8           32
+  offset  size  kind                  value
+       0     1  header                A5
+       1     1  payload u8            20 (32)
   reply: 12 bytes
-     0    2  header               A5 5A
-     2    4  bits                 "<I": length = payload (bits 0..29), mode = mode (bits 30..31)
-     6    1  field type           "B" = type
-     7    1  payload u8           out[0]
-     8    2  payload u16 LE       out[1]
-    10    2  payload u16 LE       out[2]"""
+  offset  size  kind                  value
+       0     2  header                A5 5A
+       2     4  bits                  "<I": length = payload (bits 0..29), mode = mode (bits 30..31)
+       6     1  field type            "B" = type
+       7     1  payload u8            out[0]
+       8     2  payload u16 LE        out[1]
+      10     2  payload u16 LE        out[2]"""
     send = dump(model).split("\n\n")[3]
-    assert ('     1    2  bits                 ">H": channel = channel (bits 0..2), flag = 1 (bit 3), '
+    assert ('       1     2  bits                  ">H": channel = channel (bits 0..2), flag = 1 (bit 3), '
             "length = payload + 1 (bits 4..15)\n") in send
-    assert "     ?    1  checksum             sum as B, over length .. payload" in send
+    assert "       ?     1  checksum              sum as B, over length .. payload" in send
     # the budget counts the bits' integer as its four bytes: A5 50, then A5 5A u32 type and 20 bytes
     assert message_bytes(model.primitives["get_info"], model.frames) == 2 + 7 + 20

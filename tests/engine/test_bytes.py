@@ -200,8 +200,9 @@ def test_constant_bytes_have_their_size_in_the_dump_and_the_budget(tmp_path: Pat
     assert """\
 primitive report_firmware() on link, frame sysex()
   request: 3 bytes
-     0    1  header               F0
-     1    1  payload bytes (the rest) 79
-     2    1  terminator           F7
+  offset  size  kind                  value
+       0     1  header                F0
+       1     1  payload bytes (the rest)  79
+       2     1  terminator            F7
 """ in dump(model)
     assert message_bytes(model.primitives["report_firmware"], model.frames) == 3 + 5

@@ -235,38 +235,42 @@ def test_json_printer_dump_and_budget(tmp_path: Path) -> None:
     assert dump(model).split("\n\n")[0] == """\
 primitive firmware() on uart, frame vesc()
   request, alternative 1: 6 bytes
-     0    1  header               02
-     1    1  length               "B" = payload
-     2    1  payload u8           0
-     3    2  checksum             crc16-xmodem as >H, over payload
-     5    1  terminator           03
+  offset  size  kind                  value
+       0     1  header                02
+       1     1  length                "B" = payload
+       2     1  payload u8            00 (0)
+       3     2  checksum              crc16-xmodem as >H, over payload
+       5     1  terminator            03
   request, alternative 2: 7 bytes
-     0    1  header               03
-     1    2  length               ">H" = payload
-     3    1  payload u8           0
-     4    2  checksum             crc16-xmodem as >H, over payload
-     6    1  terminator           03
+  offset  size  kind                  value
+       0     1  header                03
+       1     2  length                ">H" = payload
+       3     1  payload u8            00 (0)
+       4     2  checksum              crc16-xmodem as >H, over payload
+       6     1  terminator            03
   reply, alternative 1: 8+n bytes
-     0    1  header               02
-     1    1  length               "B" = payload
-     2    1  payload u8           out[0]
-     3    1  payload u8           out[1]
-     4    1  payload u8           out[2]
-     5    n  payload bytes (the rest) out[3]
-     ?    2  checksum             crc16-xmodem as >H, over payload
-     ?    1  terminator           03
+  offset  size  kind                  value
+       0     1  header                02
+       1     1  length                "B" = payload
+       2     1  payload u8            out[0]
+       3     1  payload u8            out[1]
+       4     1  payload u8            out[2]
+       5     n  payload bytes (the rest)  out[3]
+       ?     2  checksum              crc16-xmodem as >H, over payload
+       ?     1  terminator            03
   reply, alternative 2: 9+n bytes
-     0    1  header               03
-     1    2  length               ">H" = payload
-     3    1  payload u8           out[0]
-     4    1  payload u8           out[1]
-     5    1  payload u8           out[2]
-     6    n  payload bytes (the rest) out[3]
-     ?    2  checksum             crc16-xmodem as >H, over payload
-     ?    1  terminator           03"""
+  offset  size  kind                  value
+       0     1  header                03
+       1     2  length                ">H" = payload
+       3     1  payload u8            out[0]
+       4     1  payload u8            out[1]
+       5     1  payload u8            out[2]
+       6     n  payload bytes (the rest)  out[3]
+       ?     2  checksum              crc16-xmodem as >H, over payload
+       ?     1  terminator            03"""
     gga = dump(model).split("\n\n")[3]
     assert "  reply: 6+n bytes, 3 of them optional (a reply may lack them)\n" in gga
-    assert "     ?    1  literal (optional)   2A\n" in gga
+    assert "       ?     1  literal (optional)    2A\n" in gga
     # the budget: the request's layout by its size (1 byte: 02 LEN), the reply's shortest
     assert message_bytes(model.primitives["firmware"], model.frames) == 6 + 3 + 5
     # a request writes the optional `*hh` ($ *hh CR LF); a reply is counted without it ($ CR LF), its regex

@@ -20,6 +20,7 @@ from typing import Any
 
 import pytest
 import serial  # type: ignore[import-untyped]
+from conftest import untimed
 
 from rdisc.compile import compile_path
 from rdisc.emit.dump import dump
@@ -191,5 +192,5 @@ def test_trace_shows_the_lines(tmp_path: Path, rdisc: Any) -> None:
     source.write_text(LIDAR, encoding="utf-8")
     result = rdisc("run", source, "--port", "loop://", "--call", "scan", "--trace")
     assert result.returncode == 0, result.stderr
-    assert result.stderr.splitlines() == [
+    assert untimed(result.stderr) == [
         "link lines dtr=False", "link lines dtr=True", "link lines rts=False dtr=True", "link > a5 20"]

@@ -13,6 +13,7 @@ from pathlib import Path
 from typing import Any
 
 import pytest
+from conftest import untimed
 
 from rdisc.compile import compile_path
 from rdisc.diagnostics import Diagnostics
@@ -167,7 +168,7 @@ def test_set_on_the_command_line_over_a_pty(kind: str, tmp_path: Path) -> None:
     assert result.returncode == 0, result.stderr
     assert received == b"\xff\x09\xff\x03T9,0.250,12\n"  # `label=12` is the text of a string setting
     assert speed == termios.B115200  # the port opened at the baud rate given
-    assert result.stderr.splitlines()[:2] == ["bus > ff 09", "bus > ff 03"]
+    assert untimed(result.stderr)[:2] == ["bus > ff 09", "bus > ff 03"]
 
     result, received, _ = _run([*command, "--set", "ID=900", "--call", "hello", "id=3"], tmp_path)
     prog = "rdisc run" if kind == "rdisc run" else "servos_driver.py"

@@ -173,19 +173,23 @@ def test_ranges_go_through_json_the_printer_and_dump(tmp_path: Path) -> None:
     assert dump(model).split("\n\n")[0] == """\
 primitive listen() on link
   request: 0+n bytes
-     0    n  text                 ""
+  offset  size  kind                  value
+       0     n  text                  ""
   reply tagged 144..159: 3 bytes
-     0    1  tag u8               in 144..159
-     1    1  u8                   out[0]
-     2    1  u8                   out[1]
+  offset  size  kind                  value
+       0     1  tag u8                in 144..159
+       1     1  u8                    out[0]
+       2     1  u8                    out[1]
   reply tagged 224..239: 3 bytes
-     0    1  tag u8               in 224..239
-     1    1  u8                   out[0]
-     2    1  u8                   out[1]
+  offset  size  kind                  value
+       0     1  tag u8                in 224..239
+       1     1  u8                    out[0]
+       2     1  u8                    out[1]
   reply tagged 249: 3 bytes
-     0    1  tag u8               = 249
-     1    1  u8                   out[0]
-     2    1  u8                   out[1]"""
+  offset  size  kind                  value
+       0     1  tag u8                = 249
+       1     1  u8                    out[0]
+       2     1  u8                    out[1]"""
     # The link budget counts the tag and the longest entry after it.
     assert [message_bytes(model.primitives[n], model.frames) for n in ("listen", "version", "wide")] == [3, 4, 4]
 

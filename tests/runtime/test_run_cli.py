@@ -10,7 +10,7 @@ import sys
 import time
 
 import pytest
-from conftest import cli_env
+from conftest import cli_env, untimed
 from devices import CreateEmulator, KoalaEmulator
 from devices.create import DRIVE, SENSORS, STOP, TABLE_4_3
 from runtime_support import CREATE, DATA, KOALA, REPO, typed_thesis_create
@@ -25,7 +25,7 @@ def test_table_4_3_through_rdisc_run(rdisc) -> None:
         dev.wait_for_commands(len(TABLE_4_3) + 1, opcode=DRIVE)
         assert dev.drives() == [expected[1:] for _, expected in TABLE_4_3] + [(0, 0)]
         assert dev.commands[-1][1] == STOP
-    trace = result.stderr.splitlines()
+    trace = untimed(result.stderr)
     assert trace[:2] == ["btserial > 80", "btserial > 84"]
     assert "btserial > 89 ff 38 01 f4" in trace  # (137, -200, 500)
     assert trace[-1] == "btserial > 89 00 00 00 00"  # the terminate hook

@@ -21,6 +21,7 @@ or as a program (`--help` for its options):
 from __future__ import annotations
 
 import argparse
+import difflib
 import json
 import logging
 import math
@@ -1220,10 +1221,13 @@ def _accept(value: Any, kind: type, what: str) -> Any:
         return int(value)
     if kind is str and isinstance(value, str):
         return value
+    if kind is bytes and isinstance(value, str):
+        try:
+            return bytes.fromhex(value)
+        except ValueError:
+            raise TypeError(f"{what} must be bytes, as hex such as 3c20 (two digits a byte), not {value!r}") from None
     if kind is bytes:
         try:
-            if isinstance(value, str):
-                return bytes.fromhex(value)
             if isinstance(value, (bytes, bytearray, memoryview, list, tuple)):
                 return bytes(value)
         except (ValueError, TypeError) as err:
@@ -2348,9 +2352,12 @@ def add_arguments(parser: argparse.ArgumentParser, device: Device | None = None)
     parser.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
                         help=f"give a setting of the description its value; repeat for several{settings}")
     parser.add_argument("--watch", action="store_true", help="print each output as a JSON line as it arrives")
-    parser.add_argument("--trace", action="store_true", help="print every byte written and read, in hex, on stderr")
+    parser.add_argument("--trace", action="store_true",
+                        help="print every byte written and read, in hex, on stderr, after the seconds since the "
+                             "run started: `0.1234 CONN > 89 00 c8 80 00`")
     parser.add_argument("--duration", type=float, metavar="S",
-                        help="run for S seconds (default: until the calls are done; with --watch, until Ctrl-C)")
+                        help="run for S seconds, counted from the end of the startup hooks (default: until the "
+                             "calls are done; with --watch, until Ctrl-C)")
     parser.add_argument("--timeout", type=float, default=1.0, metavar="S",
                         help="reply timeout in seconds (default 1)")
     parser.add_argument("--record", metavar="FILE.mcap",
@@ -2360,9 +2367,11 @@ def add_arguments(parser: argparse.ArgumentParser, device: Device | None = None)
 
 def run_command(args: argparse.Namespace, robot: Robot, prog: str) -> int:
     """What `rdisc run` does with its options: connect, make the --call calls in order, then
-    run for --duration seconds (or, with --watch, until Ctrl-C; else end when the calls are
-    done). It always ends by closing the robot, which runs the terminate hooks. Exit status:
-    0 done; 1 the device failed; 2 a usage error; 130 after SIGINT; 143 after SIGTERM."""
+    run until --duration seconds after the startup hooks ended (or, with --watch, until
+    Ctrl-C; else end when the calls are done). It always ends by closing the robot, which
+    runs the terminate hooks. Exit status: 0 done; 1 the device failed; 2 a usage error;
+    130 after SIGINT; 143 after SIGTERM."""
+    began = time.monotonic()
     try:
         port = parse_ports(args.port, robot.device)
         settings = bind_settings(robot.device, parse_settings(args.set, robot.device))
@@ -2385,12 +2394,12 @@ def run_command(args: argparse.Namespace, robot: Robot, prog: str) -> int:
     if args.watch:
         robot.on_output(_print_output)
     if args.trace:
-        robot.on_io(_print_io)
+        robot.on_io(lambda direction, connection, data: _print_io(began, direction, connection, data))
     previous = _install_signal_handlers()
     status = EXIT_OK
     try:
-        start = time.monotonic()
         robot.open(port, settings=settings)
+        started = time.monotonic()  # the startup hooks are done: --duration counts from here
         for name, kind, values in calls:
             if recorder is not None:
                 recorder.call(kind, name, values)
@@ -2401,7 +2410,7 @@ def run_command(args: argparse.Namespace, robot: Robot, prog: str) -> int:
             else:
                 robot.call_primitive(name, *values.values())
         if args.duration is not None:
-            _sleep(args.duration - (time.monotonic() - start))
+            _sleep(args.duration - (time.monotonic() - started))
         elif args.watch:
             _sleep(None)
     except RdisError as err:
@@ -2487,9 +2496,24 @@ def parse_value(text: str) -> Value:
     return text
 
 
+def parse_typed(text: str, param: Param | None) -> Value:
+    """A command-line value read as its parameter's, field's or setting's type says: a string
+    as it is written, bytes as the hex text that `_accept` reads, an array `[a,b,c]` element by
+    element, anything else by `parse_value` (the type check then refuses what does not fit)."""
+    if param is None:
+        return parse_value(text)
+    textual = param.kind in (str, bytes)
+    if param.size is None:
+        return text if textual else parse_value(text)
+    if not (text.startswith("[") and text.endswith("]")) or not textual:
+        return parse_value(text)
+    inner = text[1:-1]
+    return tuple(item.strip() for item in inner.split(",")) if inner.strip() else ()
+
+
 def parse_settings(given: list[str], device: Device) -> dict[str, Any]:
-    """--set NAME=VALUE ...: each value read as its setting's type says (a string or bytes setting
-    takes the text as it is, hex for bytes), for `bind_settings` to check."""
+    """--set NAME=VALUE ...: each value read as its setting's type says (`parse_typed`), for
+    `bind_settings` to check."""
     declared = {p.name: p for p in device.settings}
     values: dict[str, Any] = {}
     for pair in given:
@@ -2498,16 +2522,27 @@ def parse_settings(given: list[str], device: Device) -> dict[str, Any]:
             raise ValueError(f"--set `{pair}` is not NAME=VALUE")
         if name in values:
             raise ValueError(f"--set {name} given twice")
-        param = declared.get(name)
-        textual = param is not None and param.size is None and param.kind in (str, bytes)
-        values[name] = text if textual else parse_value(text)
+        values[name] = parse_typed(text, declared.get(name))
     return values
 
 
 def parse_call(words: list[str], device: Device) -> tuple[str, str, dict[str, Value]]:
     """--call NAME K=V ...: (name, "input" | "interface" | "primitive", values in declaration
-    order); an input is preferred to an interface of the same name, an interface to a primitive."""
+    order, each read as its parameter's or field's type says); an input is preferred to an
+    interface of the same name, an interface to a primitive. An unknown name is answered with
+    the nearest known one."""
     name, *pairs = words
+    plan: Input | Interface | Primitive | None = None
+    for kind, plan in (("input", device.inputs.get(name)), ("interface", device.interfaces.get(name)),
+                       ("primitive", device.primitives.get(name))):
+        if plan is not None:
+            break
+    else:
+        known = list(dict.fromkeys([*device.inputs, *device.interfaces, *device.primitives]))
+        near = difflib.get_close_matches(name, known, n=1)
+        hint = f"did you mean `{near[0]}`?" if near else f"there are: {', '.join(known) or 'none'}"
+        raise ValueError(f"{device.name} has no input, interface or primitive `{name}`; {hint}")
+    params = {p.name: p for p in (plan.fields if isinstance(plan, Input) else plan.params)}
     values: dict[str, Value] = {}
     for pair in pairs:
         key, sep, text = pair.partition("=")
@@ -2515,18 +2550,11 @@ def parse_call(words: list[str], device: Device) -> tuple[str, str, dict[str, Va
             raise ValueError(f"--call {name}: `{pair}` is not KEY=VALUE")
         if key in values:
             raise ValueError(f"--call {name}: `{key}` given twice")
-        values[key] = parse_value(text)
-    plan: Input | Interface | Primitive | None
-    for kind, plan in (("input", device.inputs.get(name)), ("interface", device.interfaces.get(name)),
-                       ("primitive", device.primitives.get(name))):
-        if plan is not None:
-            expected = [p.name for p in (plan.fields if isinstance(plan, Input) else plan.params)]
-            if sorted(values) != sorted(expected):
-                wanted = " ".join(f"{e}=..." for e in expected) or "no values"
-                raise ValueError(f"--call {name} takes {wanted}")
-            return name, kind, {e: values[e] for e in expected}
-    known = ", ".join(dict.fromkeys([*device.inputs, *device.interfaces, *device.primitives])) or "none"
-    raise ValueError(f"{device.name} has no input, interface or primitive `{name}` (there are: {known})")
+        values[key] = parse_typed(text, params.get(key))
+    if sorted(values) != sorted(params):
+        wanted = " ".join(f"{e}=..." for e in params) or "no values"
+        raise ValueError(f"--call {name} takes {wanted}")
+    return name, kind, {e: values[e] for e in params}
 
 
 def _print_output(message: dict[str, Any]) -> None:
@@ -2538,12 +2566,14 @@ def _print_error(error: BaseException) -> None:
     print(f"rdisc run: {type(error).__name__}: {error}", file=sys.stderr, flush=True)
 
 
-def _print_io(direction: str, connection: str, data: bytes) -> None:
+def _print_io(began: float, direction: str, connection: str, data: bytes) -> None:
+    """One --trace line: the seconds since `began` (monotonic), the connection, then `>` and
+    the bytes written, `<` and the bytes read, or `lines` and the modem lines set."""
     if direction == "lines":
-        print(f"{connection} lines {data.decode('ascii')}", file=sys.stderr, flush=True)
-        return
-    arrow = ">" if direction == "write" else "<"
-    print(f"{connection} {arrow} {data.hex(' ')}", file=sys.stderr, flush=True)
+        shown = f"lines {data.decode('ascii')}"
+    else:
+        shown = f"{'>' if direction == 'write' else '<'} {data.hex(' ')}"
+    print(f"{time.monotonic() - began:.4f} {connection} {shown}", file=sys.stderr, flush=True)
 
 
 _shutting_down = [False]
@@ -3308,9 +3338,10 @@ def connect(
 
 def main(argv: list[str] | None = None) -> int:
     """The command line, with the options of `rdisc run`: connect, make the --call calls in
-    order, then run for --duration seconds (or, with --watch, until Ctrl-C). It always ends
-    by closing the robot, which runs the terminate hooks. Exit status: 0 done; 1 the device
-    failed; 2 a usage error; 130 after SIGINT; 143 after SIGTERM.
+    order, then run for --duration seconds from the end of the startup hooks (or, with
+    --watch, until Ctrl-C). It always ends by closing the robot, which runs the terminate
+    hooks. Exit status: 0 done; 1 the device failed; 2 a usage error; 130 after SIGINT; 143
+    after SIGTERM.
     """
     parser = argparse.ArgumentParser(description="Drive koala (a driver generated by rdisc from koala.rdis).")
     add_arguments(parser, _DEVICE)

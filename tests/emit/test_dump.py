@@ -1,0 +1,39 @@
+"""`rdisc dump` as a user reads it beside a manual: a header line over each table, constant
+integers as the bytes they put on the wire (and their decimal value), text escaped as RDIS
+writes it, so a `\\r\\n` does not break the table."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+MODEM = """\
+robot modem { author "tests" }
+connection link: serial { baud 9600 }
+primitive hello(speed: int) on link pack ">BHhB" (0x84, 500, -2, speed)
+primitive at(command: string) on link format "AT+{}\\r\\n" (command) regex "^OK\\r$"
+"""
+
+
+def test_constants_in_hex_text_escaped_and_a_header(tmp_path: Path, rdisc) -> None:
+    source = tmp_path / "modem.rdis"
+    source.write_text(MODEM, encoding="utf-8")
+    result = rdisc("dump", source)
+    assert (result.returncode, result.stderr) == (0, "")
+    assert result.stdout == """\
+primitive hello(speed: int) on link
+  request: 6 bytes
+  offset  size  kind                  value
+       0     1  u8                    84 (132)
+       1     2  u16 BE                01 F4 (500)
+       3     2  s16 BE                FF FE (-2)
+       5     1  u8                    speed
+  reply: none
+
+primitive at(command: string) on link
+  request: 0+n bytes
+  offset  size  kind                  value
+       0     n  text                  "AT+{}\\r\\n" (command)
+  reply: 0+n bytes
+  offset  size  kind                  value
+       0     n  text                  regex "^OK\\r$"
+"""
