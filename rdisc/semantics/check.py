@@ -197,6 +197,8 @@ class _Checker:
             if value.type is not None:
                 self.d.report("E204", p.default.span, "a default is a constant")
             return None
+        if not self.typer.kept(constant, p.default.span):  # 64 bits and a sign, as a float can hold
+            return None
         constant = m.coerce(constant, type_)
         for item in constant if isinstance(constant, tuple) else (constant,):
             if low is not None and high is not None and not _in_range(item, low, high):

@@ -131,3 +131,15 @@ def test_a_range_bound_is_a_finite_number(tmp_path: Path, bound: str) -> None:
     value = {"float(\"inf\")": "inf", "float(\"nan\")": "nan", "-float(\"inf\")": "-inf"}[bound]
     assert result.stderr.startswith(f"error[E204]: a range's bound must be a finite number, not {value}\n"), \
         result.stderr
+
+
+@pytest.mark.parametrize("declaration", ["setting scale: float = 2 ** 1100",
+                                         "primitive p(x: float = 2 ** 1100) on link pack \"d\" (x)"])
+def test_a_default_is_kept_in_64_bits(tmp_path: Path, declaration: str) -> None:
+    """A float default given as a huge int was an internal error (found by the fuzzer:
+    int too large to convert to float)."""
+    _, result = check_text(tmp_path, 'robot r { author "tests" }\nconnection link: serial { baud 9600 }\n'
+                           + declaration + "\n")
+    assert result.returncode == 1
+    assert result.stderr.startswith("error[E405]: a 1101-bit integer is too large: integers are limited to "
+                                    "64 bits and a sign"), result.stderr
