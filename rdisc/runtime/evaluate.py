@@ -51,11 +51,11 @@ def evaluate(expr: m.Expr, names: Mapping[str, m.Value], reply: Sequence[m.Value
             return lookup(table, dict(entries), evaluate(key, names, reply))  # type: ignore[no-any-return]
         case m.ArrayValue(items=items, type=type_):
             return tuple(coerce(evaluate(i, names, reply), type_.element) for i in items)
-        case m.Element(array=array, index=index):
-            return element(m.array_name(array), evaluate(array, names, reply), evaluate(index, names, reply))  # type: ignore[arg-type]
-        case m.Replaced(array=array, index=index, value=value, type=type_):
-            return replaced(m.array_name(array), evaluate(array, names, reply), evaluate(index, names, reply),  # type: ignore[arg-type]
-                            coerce(evaluate(value, names, reply), type_.element))
+        case m.Element(array=array, index=at):
+            return element(m.array_name(array), evaluate(array, names, reply), evaluate(at, names, reply))  # type: ignore[arg-type, no-any-return]
+        case m.Replaced(array=array, index=at, value=new, type=type_):
+            return replaced(m.array_name(array), evaluate(array, names, reply), evaluate(at, names, reply),  # type: ignore[arg-type]
+                            coerce(evaluate(new, names, reply), type_.element))
     raise AssertionError(f"unknown expression node {expr!r}")
 
 
@@ -110,15 +110,15 @@ def prepare(expr: m.Expr, slots: Mapping[str, int] | None = None) -> Prepared:
             floats = type_.element is m.Type.FLOAT
             parts = [prepare(i, slots) for i in items]
             if floats:
-                return lambda s, loc, r: tuple(float(f(s, loc, r)) for f in parts)
+                return lambda s, loc, r: tuple(float(f(s, loc, r)) for f in parts)  # type: ignore[arg-type]
             return lambda s, loc, r: tuple(f(s, loc, r) for f in parts)
-        case m.Element(array=array, index=index):
-            name, a, i = m.array_name(array), prepare(array, slots), prepare(index, slots)
-            return lambda s, loc, r: element(name, a(s, loc, r), i(s, loc, r))
-        case m.Replaced(array=array, index=index, value=value, type=type_):
-            name, a, i, v = m.array_name(array), prepare(array, slots), prepare(index, slots), prepare(value, slots)
+        case m.Element(array=array, index=at):
+            name, a, i = m.array_name(array), prepare(array, slots), prepare(at, slots)
+            return lambda s, loc, r: element(name, a(s, loc, r), i(s, loc, r))  # type: ignore[arg-type]
+        case m.Replaced(array=array, index=at, value=new, type=type_):
+            name, a, i, v = m.array_name(array), prepare(array, slots), prepare(at, slots), prepare(new, slots)
             widen = type_.element is m.Type.FLOAT
-            return lambda s, loc, r: replaced(name, a(s, loc, r), i(s, loc, r),
+            return lambda s, loc, r: replaced(name, a(s, loc, r), i(s, loc, r),  # type: ignore[arg-type]
                                               float(v(s, loc, r)) if widen else v(s, loc, r))
     raise AssertionError(f"unknown expression node {expr!r}")
 

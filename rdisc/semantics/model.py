@@ -8,7 +8,7 @@ from __future__ import annotations
 import dataclasses
 import enum
 from dataclasses import dataclass, field
-from typing import NewType
+from typing import Any, NewType
 
 from rdisc.source import Span
 
@@ -53,7 +53,7 @@ class Array:
 
 
 AnyType = Type | Array
-Value = int | float | bool | str | bytes | tuple  # an array's value is a tuple of its elements
+Value = int | float | bool | str | bytes | tuple[Any, ...]  # an array's value is a tuple of its elements
 
 
 def coerce(value: Value, type_: AnyType) -> Value:

@@ -309,6 +309,7 @@ class Typer:
 
     def _lookup(self, e: ast.Index, env: Env) -> m.Expr:
         """`TABLE[key]`: a key of the table's key type; a constant key must be in the table."""
+        assert isinstance(e.base, ast.Ref)  # `_index` sends an array literal's elements elsewhere
         key_type, value_type, entries = self.tables[e.base.name]
         key = self.expr(e.index, env)
         node = m.Lookup(e.base.name, tuple(entries.items()), key, value_type, e.span)  # type: ignore[arg-type]
@@ -340,7 +341,7 @@ class Typer:
         node = m.UnaryOp(e.op, operand, result, e.span)  # type: ignore[arg-type]
         return self._fold(node, (operand,), lambda a: UNARY[e.op](a))
 
-    def _bad_operand(self, e: ast.Expr, t: Type, need: str) -> None:
+    def _bad_operand(self, e: ast.Expr, t: AnyType, need: str) -> None:
         self.diagnostics.report("E404", e.span, f"{need}, not {describe(t)}")
 
     def _binary(self, e: ast.BinOp, env: Env) -> m.Expr:
