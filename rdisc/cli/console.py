@@ -1,12 +1,14 @@
-"""`rdisc console FILE --port P [--http HOST:PORT]`: a local web page to bring up and exercise a
+"""`rdisc console FILE --port P [--http HOST:PORT] [--record FILE.mcap]`: a local web page to bring up and exercise a
 device (thesis ch. 5).
 
 Connects as `rdisc run` does (startup hooks), then serves the page at http://HOST:PORT/
 (127.0.0.1:8765 unless asked) until Ctrl-C or SIGTERM, and ends by running the terminate
-hooks. Only pages of this console's own address may drive the robot (see rdisc.console).
+hooks. With --record, the session is recorded as `rdisc run --record` records it, the
+page's calls as the host's. Only pages of this console's own address may drive the robot (see rdisc.console).
 
 Exit status: 1 the description has errors or the device failed to connect; 2 a usage error
-(a bad --port, --set or --http, or an address in use); 130 after SIGINT, 143 after SIGTERM.
+(a bad --port, --set or --http, an address in use, or a --record file that cannot be
+written); 130 after SIGINT, 143 after SIGTERM.
 """
 
 from __future__ import annotations
@@ -42,6 +44,9 @@ def add_parser(verbs: argparse._SubParsersAction[argparse.ArgumentParser]) -> No
     p.add_argument("--origin", action="append", default=[], metavar="URL",
                    help="also let pages from this origin (http://name:port) drive the robot, when serving beyond "
                         "loopback")
+    p.add_argument("--record", metavar="FILE.mcap",
+                   help="record the session in MCAP as `rdisc run --record` does: the page's calls, outputs, "
+                        "the bytes each way, errors (needs the mcap and mcap-ros2-support packages)")
     p.set_defaults(run=run)
 
 
@@ -75,7 +80,10 @@ def run(args: argparse.Namespace) -> int:
     main = model.robot.span.path if model.robot.span else None
     page = render(model, lambda span: place(span, compilation.sources, main, os.path.basename(args.file)))
     robot = engine.Robot(device, timeout=args.timeout)
-    console = Console(robot, page)
+    recorder = engine.start_recording(robot, args.record, settings, "rdisc console") if args.record else None
+    if args.record and recorder is None:
+        return EXIT_USAGE
+    console = Console(robot, page, recorder)
     robot.on_error(lambda error: print(f"rdisc console: {type(error).__name__}: {error}", file=sys.stderr, flush=True))
 
     def listening(bound: int) -> None:
@@ -100,12 +108,16 @@ def run(args: argparse.Namespace) -> int:
             await console.serve(host, http_port, stop, listening, args.origin)
         except engine.RdisError as err:
             print(f"rdisc console: {type(err).__name__}: {err}", file=sys.stderr)
+            if recorder is not None:
+                recorder.error(err)
             status[0] = engine.EXIT_ERROR
         except OSError as err:  # the address is in use, or not this machine's
             print(f"rdisc console: cannot serve on {args.http}: {err.strerror or err}", file=sys.stderr)
             status[0] = EXIT_USAGE
         finally:
             await asyncio.to_thread(robot.close)
+            if recorder is not None:
+                recorder.finish()
         return status[0]
 
     return asyncio.run(serve())

@@ -59,10 +59,13 @@ def jsonable(value: Any) -> Any:
 
 
 class Console:
-    """A connected robot, shown and driven by the pages of one server."""
+    """A connected robot, shown and driven by the pages of one server; with a `recorder`
+    (`--record`), each call a page makes is recorded as the host's call, as `rdisc run` records
+    its --call calls (the robot's bytes, outputs and errors the recorder takes from the robot)."""
 
-    def __init__(self, robot: engine.Robot, page: str) -> None:
+    def __init__(self, robot: engine.Robot, page: str, recorder: engine.Recorder | None = None) -> None:
         self.robot = robot
+        self.recorder = recorder
         self.page = page.encode("utf-8")
         self.origins: set[str] = set()
         self._start = time.monotonic()
@@ -195,6 +198,8 @@ class Console:
                 raise TypeError("a call names what it calls and gives its values by name")
             self._make(kind, name, values)
         except (engine.RdisError, TypeError, ValueError, KeyError) as err:
+            if self.recorder is not None and isinstance(err, engine.RdisError):
+                self.recorder.error(err)
             message = err.args[0] if isinstance(err, KeyError) and err.args else str(err)
             self.report(type(err).__name__, str(message))
             self._push_state()
@@ -208,18 +213,25 @@ class Console:
             plan = device.inputs.get(name)
             if plan is None:
                 raise KeyError(f"{device.name} has no input named {name!r}")
-            self.robot.call_input(name, **_values(name, plan.fields, values))
+            given = self._record(kind, name, _values(name, plan.fields, values))
+            self.robot.call_input(name, **given)
         elif kind in ("interface", "primitive"):
             found = (device.interfaces if kind == "interface" else device.primitives).get(name)
             if found is None:
                 raise KeyError(f"{device.name} has no {kind} named {name!r}")
-            given = _values(name, found.params, values)
+            given = self._record(kind, name, _values(name, found.params, values))
             if kind == "interface":
                 self.robot.call_interface(name, *given.values())
             else:
                 self.robot.call_primitive(name, *given.values())
         else:
             raise ValueError(f"a call is of an input, an interface or a primitive, not {kind!r}")
+
+    def _record(self, kind: str, name: str, values: dict[str, Any]) -> dict[str, Any]:
+        """A call whose values are typed, recorded before it is made (as `rdisc run` does)."""
+        if self.recorder is not None:
+            self.recorder.call(kind, name, values)
+        return values
 
 
 def _values(owner: str, params: tuple[engine.Param, ...], given: dict[str, Any]) -> dict[str, Any]:

@@ -2376,17 +2376,9 @@ def run_command(args: argparse.Namespace, robot: Robot, prog: str) -> int:
     except ValueError as err:
         print(f"{prog}: {err}", file=sys.stderr)
         return EXIT_USAGE
-    recorder: Recorder | None = None
-    if args.record:
-        try:
-            recorder = Recorder(robot, args.record, settings)
-        except ImportError:
-            print(f"{prog}: --record needs the mcap and mcap-ros2-support packages "
-                  "(pip install mcap mcap-ros2-support)", file=sys.stderr)
-            return EXIT_USAGE
-        except OSError as err:
-            print(f"{prog}: cannot write {args.record}: {err.strerror or err}", file=sys.stderr)
-            return EXIT_USAGE
+    recorder = start_recording(robot, args.record, settings, prog) if args.record else None
+    if args.record and recorder is None:
+        return EXIT_USAGE
     robot.on_error(_print_error)
     if args.watch:
         robot.on_output(_print_output)
@@ -2439,6 +2431,20 @@ def run_command(args: argparse.Namespace, robot: Robot, prog: str) -> int:
             for signum, handler in previous.items():  # after a signal, later ones are ignored to the exit
                 signal.signal(signum, signal.SIG_IGN if interrupted else handler)
     return status
+
+
+def start_recording(robot: Robot, path: str, settings: Mapping[str, Any], prog: str) -> Recorder | None:
+    """`--record PATH` (of `rdisc run`, a driver and `rdisc console`): a Recorder attached to
+    `robot`, or None once stderr says why there is none (the mcap packages are missing, the
+    file cannot be written), which is a usage error."""
+    try:
+        return Recorder(robot, path, settings)
+    except ImportError:
+        print(f"{prog}: --record needs the mcap and mcap-ros2-support packages "
+              "(pip install mcap mcap-ros2-support)", file=sys.stderr)
+    except OSError as err:
+        print(f"{prog}: cannot write {path}: {err.strerror or err}", file=sys.stderr)
+    return None
 
 
 def parse_ports(given: list[str], device: Device) -> str | dict[str, str] | None:

@@ -1,21 +1,25 @@
-"""Recordings: `rdisc run --record FILE.mcap` (and a generated driver's) against the emulated
-Create on a pty, read back with the `mcap` and `mcap-ros2-support` readers, then `rdisc replay`
-with the same description and with changed ones."""
+"""Recordings: `rdisc run --record FILE.mcap` (and a generated driver's, and `rdisc console`'s)
+against the emulated Create on a pty, read back with the `mcap` and `mcap-ros2-support` readers,
+then `rdisc replay` with the same description and with changed ones. The console is driven over
+its WebSocket as a page of its own address drives it (no browser); every wait is for a condition."""
 
 from __future__ import annotations
 
 import json
+import re
+import signal
 import subprocess
 import sys
 from pathlib import Path
 from typing import Any
 
 import pytest
-from conftest import cli_env
+from conftest import REPO, cli_env
 from devices import CreateEmulator
 from mcap.reader import make_reader
 from mcap_ros2.decoder import DecoderFactory
 from runtime_support import CREATE
+from websockets.sync.client import connect
 
 CALLS = ("--call", "set_velocity", "linear=0.2", "angular=0",
          "--call", "set_velocity", "linear=-0.2", "angular=-0.4")
@@ -154,3 +158,59 @@ def test_without_the_mcap_libraries_record_says_what_to_install(rdisc, tmp_path)
     assert result.stderr == ("rdisc run: --record needs the mcap and mcap-ros2-support packages "
                              "(pip install mcap mcap-ros2-support)\n")
     assert not (tmp_path / "x.mcap").exists()
+
+
+def call(page, ident: int, kind: str, name: str, **values: str) -> dict:
+    """Make one call as the page does; the console's result for it."""
+    page.send(json.dumps({"id": ident, "kind": kind, "name": name, "values": values}))
+    while True:
+        event = json.loads(page.recv(timeout=60))
+        if event["type"] == "result" and event["id"] == ident:
+            return event
+
+
+def test_the_consoles_page_calls_are_recorded_as_the_hosts(rdisc, tmp_path) -> None:
+    path = tmp_path / "console.mcap"
+    with CreateEmulator() as dev:
+        process = subprocess.Popen([sys.executable, "-m", "rdisc", "console", str(CREATE), "--port", dev.port,
+                                    "--http", "127.0.0.1:0", "--record", str(path)], cwd=REPO, env=cli_env(),
+                                   stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        try:
+            assert process.stdout is not None
+            found = re.search(r"http://127\.0\.0\.1:(\d+)/", process.stdout.readline())
+            assert found is not None
+            with connect(f"ws://127.0.0.1:{found.group(1)}/ws", origin=found.group(0).rstrip("/"),
+                         compression=None) as page:
+                assert call(page, 1, "input", "set_velocity", linear="0.2", angular="0")["ok"] is True
+                refused = call(page, 2, "primitive", "drive", velocity="100000", radius="0")
+                assert refused["ok"] is False
+            dev.wait_for_commands(1, opcode=137)
+            process.send_signal(signal.SIGINT)
+            _, stderr = process.communicate(timeout=60)
+        finally:
+            if process.poll() is None:
+                process.kill()
+                process.communicate()
+    assert process.returncode == 130, stderr
+    assert "Traceback" not in stderr
+    found_messages = messages(path)
+    twists = [(schema, m.linear.x, m.angular.z) for topic, schema, m in found_messages if topic == "/set_velocity"]
+    assert twists == [("geometry_msgs/msg/Twist", 0.2, 0.0)]
+    calls = [json.loads(m.data) for topic, _, m in found_messages if topic == "/rdisc/runs"]
+    assert [c for c in calls if "call" in c] == [
+        {"call": "input", "name": "set_velocity", "values": {"linear": 0.2, "angular": 0.0}},
+        {"call": "primitive", "name": "drive", "values": {"velocity": 100000, "radius": 0}}]
+    writes = [bytes(m.data) for topic, _, m in found_messages if topic == "/rdisc/btserial/write"]
+    assert writes[:2] == [b"\x80", b"\x84"]  # the startup hook
+    assert [w for w in writes if w[0] == 137] == [bytes.fromhex("89 00 c8 7f ff"), bytes.fromhex("89 00 00 00 00")]
+    errors = [m.msg for topic, _, m in found_messages if topic == "/rosout"]
+    assert errors == [f"{refused['error']}: {refused['message']}"]
+    assert rdisc("replay", path, CREATE).returncode == 0
+
+
+def test_a_console_record_file_that_cannot_be_written_is_a_usage_error(rdisc, tmp_path) -> None:
+    where = tmp_path / "no-such-folder" / "x.mcap"
+    result = rdisc("console", CREATE, "--port", "loop://", "--record", where)
+    assert result.returncode == 2
+    assert result.stderr.startswith(f"rdisc console: cannot write {where}: ")
+    assert "Traceback" not in result.stderr
