@@ -132,37 +132,7 @@ def _edges(model: m.Model) -> Iterator[tuple[str, str, str]]:
 
 def _reads(*exprs: m.Expr) -> list[str]:
     """The state variables (and settings) the expressions read, in order, once each."""
-    found: dict[str, None] = {}
-
-    def walk(e: m.Expr) -> None:
-        match e:
-            case m.Var(name=name, scope=m.Scope.STATE):
-                found[name] = None
-            case m.UnaryOp(operand=a):
-                walk(a)
-            case m.BinaryOp(left=a, right=b):
-                walk(a)
-                walk(b)
-            case m.IfElse(cond=a, then=b, orelse=c):
-                walk(a)
-                walk(b)
-                walk(c)
-            case m.FuncCall(args=args) | m.ArrayValue(items=args):
-                for a in args:
-                    walk(a)
-            case m.Lookup(key=a):
-                walk(a)
-            case m.Element(array=a, index=b):
-                walk(a)
-                walk(b)
-            case m.Replaced(array=a, index=b, value=c):
-                walk(a)
-                walk(b)
-                walk(c)
-
-    for e in exprs:
-        walk(e)
-    return list(found)
+    return list(dict.fromkeys(v.name for e in exprs for v in m.variables(e) if v.scope is m.Scope.STATE))
 
 
 def _attributes(items: dict[str, str]) -> str:

@@ -785,26 +785,7 @@ def _direct(prim: m.Primitive, call: m.PrimitiveCall) -> list[tuple[str, m.Expr,
 
 def _names(e: m.Expr) -> set[str]:
     """The parameters and fields an expression reads."""
-    match e:
-        case m.Var(name=name, scope=scope):
-            return set() if scope is m.Scope.STATE else {name}
-        case m.UnaryOp(operand=operand):
-            return _names(operand)
-        case m.BinaryOp(left=left, right=right):
-            return _names(left) | _names(right)
-        case m.IfElse(cond=cond, then=then, orelse=orelse):
-            return _names(cond) | _names(then) | _names(orelse)
-        case m.FuncCall(args=args):
-            return set().union(*(_names(a) for a in args))
-        case m.Lookup(key=key):
-            return _names(key)
-        case m.ArrayValue(items=items):
-            return set().union(*(_names(i) for i in items))
-        case m.Element(array=array, index=index):
-            return _names(array) | _names(index)
-        case m.Replaced(array=array, index=index, value=value):
-            return _names(array) | _names(index) | _names(value)
-    return set()
+    return {v.name for v in m.variables(e) if v.scope is not m.Scope.STATE}
 
 
 def _setting_params(model: m.Model) -> tuple[m.Parameter, ...]:

@@ -179,26 +179,13 @@ def _folded(expr: m.Expr) -> m.Expr:
 
 
 def _constant(expr: m.Expr) -> bool:
+    """Whether `expr` reads no name and no reply (a replaced element is never folded)."""
     match expr:
         case m.Const():
             return True
-        case m.Var() | m.ReplyValue():
+        case m.Var() | m.ReplyValue() | m.Replaced():
             return False
-        case m.UnaryOp(operand=operand):
-            return _constant(operand)
-        case m.BinaryOp(left=left, right=right):
-            return _constant(left) and _constant(right)
-        case m.IfElse(cond=cond, then=then, orelse=orelse):
-            return _constant(cond) and _constant(then) and _constant(orelse)
-        case m.FuncCall(args=args):
-            return all(_constant(a) for a in args)
-        case m.Lookup(key=key):
-            return _constant(key)
-        case m.ArrayValue(items=items):
-            return all(_constant(i) for i in items)
-        case m.Element(array=array, index=index):
-            return _constant(array) and _constant(index)
-    return False
+    return all(_constant(o) for o in m.operands(expr))
 
 
 def _if_else(c: Prepared, then: m.Expr, orelse: m.Expr, slots: Mapping[str, int] | None) -> Prepared:

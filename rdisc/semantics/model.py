@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import dataclasses
 import enum
+from collections.abc import Iterator
 from dataclasses import dataclass, field
 from typing import Any, NewType
 
@@ -204,6 +205,28 @@ def spread(args: tuple[Expr, ...]) -> tuple[Expr, ...]:
         else:
             values.append(a)
     return tuple(values)
+
+
+def operands(e: Expr) -> tuple[Expr, ...]:
+    """The expressions `e` is made of, one level down (none for a name, a constant, `out[i]`)."""
+    match e:
+        case UnaryOp(operand=a) | Lookup(key=a):
+            return (a,)
+        case BinaryOp(left=a, right=b) | Element(array=a, index=b):
+            return (a, b)
+        case IfElse(cond=a, then=b, orelse=c) | Replaced(array=a, index=b, value=c):
+            return (a, b, c)
+        case FuncCall(args=items) | ArrayValue(items=items):
+            return items
+    return ()
+
+
+def variables(e: Expr) -> Iterator[Var]:
+    """Every name `e` reads (state, parameters, fields), in order, repeats included."""
+    if isinstance(e, Var):
+        yield e
+    for operand in operands(e):
+        yield from variables(operand)
 
 
 Expr = Const | Var | ReplyValue | UnaryOp | BinaryOp | IfElse | FuncCall | Lookup | ArrayValue | Element | Replaced
