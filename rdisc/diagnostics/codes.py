@@ -330,6 +330,59 @@ says what follows), the entry the tag chooses says how many bytes follow it, so
 each entry has a fixed size: an `unpack` without `*`, not a `regex`. Wrong:
 `0xF0: unpack "B*"`. Right: `0xE0..0xEF: unpack "BB" { pin = tag & 0x0F }`, two
 bytes after any tag from 0xE0 to 0xEF, whose value the entry reads as `tag`."""),
+    # -- the body -------------------------------------------------------------
+    ("E601", "body-tree", """
+A robot's body is one tree of links: one root (the base, the child of no joint),
+every other link the child of exactly one joint, every link reachable from the
+root, no cycle, no joint joining a link to itself. Tools reading URDF silently drop
+links they cannot reach, so rdisc refuses them before any tool sees them. Wrong:
+`joint a: fixed base -> arm {}` with `joint b: revolute hand -> arm {...}` (two
+parents). Right: `joint b: revolute arm -> hand {...}`."""),
+    ("E602", "body-shape", """
+A link's `visual` and `collision` shapes are `box(x, y, z)` (full lengths),
+`cylinder(radius, length)` (along its z axis), `sphere(radius)` or
+`mesh("file.stl")` / `mesh("file.stl", scale)`, in metres, every size a constant
+number more than 0; a shape is placed by `at [x, y, z]` and `rpy [roll, pitch,
+yaw]` in its link's frame. Vectors are three constant numbers in brackets. Wrong:
+`visual cylinder(0.1) at (0, 0, 1)`. Right: `visual cylinder(0.1, 0.05) at [0, 0, 1]`."""),
+    ("E603", "joint", """
+A joint is `joint NAME: KIND PARENT -> CHILD { ... }` with KIND `fixed`,
+`revolute`, `continuous` or `prismatic`. `at` and `rpy` place the child's frame in
+the parent's; `axis` (not zero) is what it turns about or slides along;
+`limit LOW..HIGH` (LOW < HIGH) bounds a revolute or prismatic joint's position,
+and those two also need `velocity` and `effort` (more than 0; URDF requires
+them); a continuous joint has no `limit`; a fixed joint has only `at` and `rpy`;
+`damping` and `friction` are 0 or more. Wrong: `joint j: revolute a -> b { axis
+[0, 0, 0] }`. Right: `joint j: revolute a -> b { axis [0, 0, 1]  limit -1.5..1.5
+velocity 2  effort 1 }`."""),
+    ("E604", "inertial", """
+A link's inertial is its `mass` (kg, more than 0), its `centre` of mass (m, in the
+link's frame; the link's origin when not given) and its `inertia` about that
+centre (kg m²): `[ixx, iyy, izz]`, or `[ixx, iyy, izz, ixy, ixz, iyz]`. Mass and
+inertia come together. The tensor must be physical: positive definite, and its
+principal moments meet the triangle inequality (none larger than the other two
+together). Wrong: `mass 1  inertia [0.1, 0.1, 0.3]`. Right: `mass 1  inertia [0.1,
+0.1, 0.15]`."""),
+    ("E605", "transmission", """
+A transmission binds a moving joint to the device: `command QUANTITY to
+TARGET.PARAM { ... }` names a numeric parameter of a primitive or interface that
+sets the joint's `position`, `velocity` or `effort`; `measure QUANTITY from STATE
+{ ... }` names a numeric state variable that the device's replies set (an array's
+element as `[i]`, a constant index). Each says both conversions: `raw = ...`, the
+device's value from the quantity, and `QUANTITY = ...`, the quantity from `raw`;
+they read only their variable and constants, and `raw` has the device's type (an
+int is written with `round(...)`). Wrong: `command velocity to drive.speed { raw =
+velocity * 1000 }`. Right: `command velocity to drive.speed { raw = round(velocity
+* 1000)  velocity = raw / 1000 }`."""),
+    ("E606", "body-device-agreement", """
+The body and the device must agree. Every value of a joint's range (its `limit`
+for a position, -velocity..velocity, -effort..effort), converted by `raw = ...`,
+must lie in the range the commanded parameter accepts (`goal: int in 0..4095`);
+and the two conversions must undo each other: a device value converted to the
+joint and back is itself, to one step of an int. Both are checked at 33 points of
+the joint's range with the interpreter the runtime uses. Wrong: a servo's `goal:
+int in 0..1023` with `limit -3.2..3.2` through `raw = round(position * 195.3) +
+512`. Right: `limit -2.6..2.6`."""),
     # -- warnings --------------------------------------------------------------
     ("W102", "untriggered-output", """
 No interface triggers this output, so it is never delivered. An interface

@@ -19,6 +19,7 @@ from rdisc.semantics import model as m
 from rdisc.semantics.frames import FrameRules, length_part, length_range, length_words, payload_end_known
 from rdisc.semantics.model import Scope, Type
 from rdisc.semantics.operators import shown
+from rdisc.semantics.body import BodyRules
 from rdisc.semantics.resolve import Symbols, Unit, check_name, suggest
 from rdisc.semantics.types import Env, Typer, describe, unify
 from rdisc.source import Span
@@ -103,6 +104,12 @@ class _Checker:
         self.interface_cycles(interfaces)
         inputs = {name: self.input(decl, adapters, interface_params) for name, decl in self.s.inputs.items()}
         outputs = {name: self.output(decl, adapters) for name, decl in self.s.outputs.items()}
+        body = BodyRules(self.d, self.typer, self.s, self.setting)
+        links = {name: body.link(decl) for name, decl in self.s.links.items()}
+        joints = {j.name: j for j in (body.joint(decl) for decl in self.s.joints.values()) if j is not None}
+        joints = body.tree(links, joints)
+        transmissions = {name: body.transmission(decl, joints, primitives, interface_params, states)  # type: ignore[arg-type]
+                         for name, decl in self.s.transmissions.items()}
         robot = self.robot()
         self.unused(interfaces)
         if self.d.has_errors() or robot is None:
@@ -121,6 +128,9 @@ class _Checker:
             tables={n: t for n, t in tables.items() if t is not None},
             enums=enums,
             settings=settings,
+            links=links,
+            joints=joints,
+            transmissions={n: t for n, t in transmissions.items() if t is not None},
         )
 
     # -- shared pieces ---------------------------------------------------------------------

@@ -681,6 +681,131 @@ class DomainOutput:
     span: Span | None = _span
 
 
+# ---- the body (thesis ch. 6) -------------------------------------------------------
+
+Vector = tuple[float, float, float]
+ORIGIN: Vector = (0.0, 0.0, 0.0)
+
+
+@dataclass(frozen=True, slots=True)
+class Pose:
+    """A frame relative to its parent's: a translation (m), then roll, pitch, yaw (rad) about
+    the parent's fixed x, y, z axes, as URDF's `origin`."""
+
+    xyz: Vector = ORIGIN
+    rpy: Vector = ORIGIN
+
+    def is_identity(self) -> bool:
+        return self.xyz == ORIGIN and self.rpy == ORIGIN
+
+
+class ShapeKind(enum.Enum):
+    BOX = "box"  # size: x, y, z (full lengths, m)
+    CYLINDER = "cylinder"  # size: radius, length (along its z axis, m)
+    SPHERE = "sphere"  # size: radius (m)
+    MESH = "mesh"  # size: scale x, y, z; path: the mesh file, as written
+
+
+@dataclass(frozen=True, slots=True)
+class Shape:
+    """A visual or collision shape placed in its link's frame."""
+
+    kind: ShapeKind
+    size: tuple[float, ...]
+    origin: Pose = Pose()
+    path: str | None = None
+    span: Span | None = _span
+
+
+@dataclass(frozen=True, slots=True)
+class Inertial:
+    """Mass (kg) at `centre` (m, in the link's frame), and the inertia tensor about the centre,
+    in the link's axes (kg m²): ixx, iyy, izz, ixy, ixz, iyz."""
+
+    mass: float
+    centre: Vector
+    inertia: tuple[float, float, float, float, float, float]
+
+
+@dataclass(frozen=True, slots=True)
+class Link:
+    name: str
+    visuals: tuple[Shape, ...] = ()
+    collisions: tuple[Shape, ...] = ()
+    inertial: Inertial | None = None
+    doc: str | None = None
+    span: Span | None = _span
+
+
+class JointKind(enum.Enum):
+    FIXED = "fixed"
+    REVOLUTE = "revolute"  # about `axis`, within `limit` (rad)
+    CONTINUOUS = "continuous"  # about `axis`, without a position limit
+    PRISMATIC = "prismatic"  # along `axis`, within `limit` (m)
+
+
+@dataclass(frozen=True, slots=True)
+class Joint:
+    """`child`'s frame is `origin` in `parent`'s, then moved about or along the unit `axis`."""
+
+    name: str
+    kind: JointKind
+    parent: str
+    child: str
+    origin: Pose = Pose()
+    axis: Vector = (1.0, 0.0, 0.0)
+    lower: float | None = None  # the position limit (revolute, prismatic)
+    upper: float | None = None
+    velocity: float | None = None  # the largest speed (rad/s, m/s)
+    effort: float | None = None  # the largest torque (N m) or force (N)
+    damping: float = 0.0
+    friction: float = 0.0
+    doc: str | None = None
+    span: Span | None = _span
+
+    def moves(self) -> bool:
+        return self.kind is not JointKind.FIXED
+
+
+class Quantity(enum.Enum):
+    POSITION = "position"  # rad or m
+    VELOCITY = "velocity"  # rad/s or m/s
+    EFFORT = "effort"  # N m or N
+
+
+@dataclass(frozen=True, slots=True)
+class Binding:
+    """A joint quantity and a device value, converted both ways. A command drives a parameter
+    of a primitive or interface (`target.parameter[index]`); a measure reads a state variable
+    (`target[index]`). `to_device` reads the quantity by its name (`position`, ...) and gives the
+    device's value; `to_joint` reads that value as `raw` and gives the quantity back."""
+
+    quantity: Quantity
+    target: str
+    parameter: str | None
+    index: int | None
+    to_device: Expr
+    to_joint: Expr
+    interface: bool = False  # the target is an interface, not a primitive
+    span: Span | None = _span
+
+    def place(self) -> str:
+        where = self.target if self.parameter is None else f"{self.target}.{self.parameter}"
+        return where if self.index is None else f"{where}[{self.index}]"
+
+
+@dataclass(frozen=True, slots=True)
+class Transmission:
+    """How the device moves and senses one joint."""
+
+    name: str
+    joint: str
+    commands: tuple[Binding, ...] = ()
+    measures: tuple[Binding, ...] = ()
+    doc: str | None = None
+    span: Span | None = _span
+
+
 @dataclass(frozen=True, slots=True)
 class Model:
     robot: Robot
@@ -696,6 +821,14 @@ class Model:
     enums: dict[str, dict[str, int]] = field(default_factory=dict)
     tables: dict[str, Table] = field(default_factory=dict)
     settings: dict[str, Setting] = field(default_factory=dict)
+    links: dict[str, Link] = field(default_factory=dict)
+    joints: dict[str, Joint] = field(default_factory=dict)  # parents before children
+    transmissions: dict[str, Transmission] = field(default_factory=dict)
+
+    def root_link(self) -> Link | None:
+        """The link no joint moves: the checker allows exactly one when there are links."""
+        children = {j.child for j in self.joints.values()}
+        return next((link for link in self.links.values() if link.name not in children), None)
 
     def owner(self, iface: Interface) -> str | None:
         """The connection whose thread runs a periodic interface: its first primitive's."""

@@ -46,6 +46,9 @@ class Symbols:
     constants: dict[str, ast.ConstDecl] = field(default_factory=dict)
     enums: dict[str, ast.EnumDecl] = field(default_factory=dict)
     frames: dict[str, ast.FrameDecl] = field(default_factory=dict)
+    links: dict[str, ast.LinkDecl] = field(default_factory=dict)
+    joints: dict[str, ast.JointDecl] = field(default_factory=dict)
+    transmissions: dict[str, ast.TransmissionDecl] = field(default_factory=dict)
     standard: set[int] = field(default_factory=set)  # id() of declarations from the stdlib
     damaged: set[tuple[str, str]] = field(default_factory=set)  # (keyword, name) lost to syntax errors
     # (kind, name) offered as "did you mean" for an unknown reference: probably used,
@@ -68,6 +71,9 @@ _KINDS = {
     ast.ConstDecl: ("constants", "constant"),
     ast.EnumDecl: ("enums", "enum"),
     ast.FrameDecl: ("frames", "frame"),
+    ast.LinkDecl: ("links", "link"),
+    ast.JointDecl: ("joints", "joint"),
+    ast.TransmissionDecl: ("transmissions", "transmission"),
 }
 
 
@@ -191,5 +197,15 @@ def _bind(decl: ast.Decl, symbols: Symbols, diagnostics: Diagnostics) -> None:
             need(decl.call.target, symbols.interfaces, "interface")
         case ast.OutputDecl():
             need(decl.adapter, symbols.adapters, "adapter")
+        case ast.JointDecl():
+            need(decl.parent, symbols.links, "link")
+            need(decl.child, symbols.links, "link")
+        case ast.TransmissionDecl():
+            need(decl.joint, symbols.joints, "joint")
+            for binding in decl.bindings:
+                if binding.role == "command":
+                    need(binding.target, {**symbols.interfaces, **symbols.primitives}, "primitive or interface")
+                elif binding.target.text not in symbols.settings:  # read like state; refused by the checker
+                    need(binding.target, symbols.states, "state variable")
         case _:
             pass

@@ -627,9 +627,96 @@ class FrameDecl:
     doc: str | None = None
 
 
+# ---- the body (thesis ch. 6) ----------------------------------------------------
+
+
+@dataclass(frozen=True, slots=True)
+class Shape:
+    """`box(x, y, z)`, `cylinder(radius, length)`, `sphere(radius)`, `mesh("file.stl", scale)`."""
+
+    kind: Ident
+    args: tuple[Expr, ...]
+    span: Span = _span
+
+
+@dataclass(frozen=True, slots=True)
+class ShapeUse:
+    """`visual SHAPE at XYZ rpy RPY` or `collision ...`: a shape placed in its link's frame."""
+
+    role: str  # "visual" | "collision"
+    shape: Shape
+    at: Expr | None
+    rpy: Expr | None
+    span: Span = _span
+
+
+@dataclass(frozen=True, slots=True)
+class BodyValue:
+    """One `KEY value` clause of a link or joint: `mass 3.6`, `axis [0, 1, 0]`, `at [...]`."""
+
+    key: str
+    value: Expr
+    span: Span = _span
+
+
+@dataclass(frozen=True, slots=True)
+class JointLimit:
+    """`limit LOW..HIGH`: the joint's position range (rad, or m for a prismatic joint)."""
+
+    low: Expr
+    high: Expr
+    span: Span = _span
+
+
+@dataclass(frozen=True, slots=True)
+class LinkDecl:
+    name: Ident
+    items: tuple[ShapeUse | BodyValue, ...]
+    span: Span = _span
+    doc: str | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class JointDecl:
+    """`joint NAME: KIND PARENT -> CHILD { ... }`."""
+
+    name: Ident
+    kind: Ident
+    parent: Ident
+    child: Ident
+    items: tuple[BodyValue | JointLimit, ...]
+    span: Span = _span
+    doc: str | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class Binding:
+    """`command QUANTITY to TARGET.PARAM[i] { raw = ...  QUANTITY = ... }` or
+    `measure QUANTITY from STATE[i] { ... }`: a joint quantity and a device value, both ways."""
+
+    role: str  # "command" | "measure"
+    quantity: Ident
+    target: Ident  # a primitive or interface (command), a state variable (measure)
+    member: Ident | None  # the parameter commanded
+    index: Expr | None  # its element, for an array
+    conversions: tuple[Assign, ...]
+    span: Span = _span
+
+
+@dataclass(frozen=True, slots=True)
+class TransmissionDecl:
+    """`transmission NAME: JOINT { command ... measure ... }`."""
+
+    name: Ident
+    joint: Ident
+    bindings: tuple[Binding, ...]
+    span: Span = _span
+    doc: str | None = None
+
+
 Decl = (
     ImportDecl | RobotDecl | StateDecl | SettingDecl | ConnectionDecl | PrimitiveDecl | InterfaceDecl | AdapterDecl | InputDecl
-    | OutputDecl | ConstDecl | EnumDecl | FrameDecl
+    | OutputDecl | ConstDecl | EnumDecl | FrameDecl | LinkDecl | JointDecl | TransmissionDecl
 )
 
 

@@ -474,6 +474,73 @@ def _transformer_class():
         def member(self, meta, c):
             return ast.Member(self.b.ident(c[0]), self.b.ident(c[1]), self.b.span(meta))
 
+        def link_decl(self, meta, c):
+            return ast.LinkDecl(self.b.ident(c[0]), tuple(c[1:]), self.b.span(meta), self.b.doc(meta))
+
+        def visual(self, meta, c):
+            return ast.ShapeUse("visual", c[0], *c[1], self.b.span(meta))
+
+        def collision(self, meta, c):
+            return ast.ShapeUse("collision", c[0], *c[1], self.b.span(meta))
+
+        def shape(self, meta, c):
+            return ast.Shape(self.b.ident(c[0]), c[1] or (), self.b.span(meta))
+
+        def pose(self, meta, c):
+            return c[0], c[1]
+
+        def joint_decl(self, meta, c):
+            name, kind, parent, child, *items = c
+            return ast.JointDecl(self.b.ident(name), self.b.ident(kind), self.b.ident(parent), self.b.ident(child),
+                                 tuple(items), self.b.span(meta), self.b.doc(meta))
+
+        def mass(self, meta, c):
+            return ast.BodyValue("mass", c[0], self.b.span(meta))
+
+        def centre(self, meta, c):
+            return ast.BodyValue("centre", c[0], self.b.span(meta))
+
+        def inertia(self, meta, c):
+            return ast.BodyValue("inertia", c[0], self.b.span(meta))
+
+        def joint_at(self, meta, c):
+            return ast.BodyValue("at", c[0], self.b.span(meta))
+
+        def joint_rpy(self, meta, c):
+            return ast.BodyValue("rpy", c[0], self.b.span(meta))
+
+        def axis(self, meta, c):
+            return ast.BodyValue("axis", c[0], self.b.span(meta))
+
+        def max_velocity(self, meta, c):
+            return ast.BodyValue("velocity", c[0], self.b.span(meta))
+
+        def max_effort(self, meta, c):
+            return ast.BodyValue("effort", c[0], self.b.span(meta))
+
+        def damping(self, meta, c):
+            return ast.BodyValue("damping", c[0], self.b.span(meta))
+
+        def friction(self, meta, c):
+            return ast.BodyValue("friction", c[0], self.b.span(meta))
+
+        def limit(self, meta, c):
+            return ast.JointLimit(c[0], c[1], self.b.span(meta))
+
+        def transmission_decl(self, meta, c):
+            return ast.TransmissionDecl(self.b.ident(c[0]), self.b.ident(c[1]), tuple(c[2:]), self.b.span(meta),
+                                        self.b.doc(meta))
+
+        def command(self, meta, c):
+            quantity, target, member, index, *conversions = c
+            return ast.Binding("command", self.b.ident(quantity), self.b.ident(target), self.b.ident(member), index,
+                               tuple(conversions), self.b.span(meta))
+
+        def measure(self, meta, c):
+            quantity, target, index, *conversions = c
+            return ast.Binding("measure", self.b.ident(quantity), self.b.ident(target), None, index,
+                               tuple(conversions), self.b.span(meta))
+
         def input_decl(self, meta, c):
             call_span = self.b.token_span(c[2])
             if c[3]:

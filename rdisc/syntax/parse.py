@@ -41,6 +41,9 @@ DECL_KEYWORDS = (
     "const",
     "enum",
     "frame",
+    "link",
+    "joint",
+    "transmission",
 )
 _DECL_START = re.compile(r"^(?:{})\b".format("|".join(DECL_KEYWORDS)), re.MULTILINE)
 _DOC_RUN = re.compile(r"(?:^[ \t]*///[^\n]*\n?)+", re.MULTILINE)

@@ -1,0 +1,509 @@
+"""The body's rules (thesis ch. 6): links, joints and transmissions, checked into the Model.
+
+Robot formats check a tree of links; what none of them checks is that the body and the
+device agree. Here a joint's limits, mapped through its transmission's conversion, must
+fall in the range the device accepts, and the two conversions must undo each other, so a
+URDF, a simulation and the serial device cannot silently disagree.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Iterable
+
+from rdisc.diagnostics import Diagnostics, Label
+from rdisc.semantics import model as m
+from rdisc.semantics.model import Scope, Type
+from rdisc.semantics.operators import EvalError
+from rdisc.semantics.resolve import Symbols, suggest
+from rdisc.semantics.types import Env, Typer, describe
+from rdisc.syntax import ast
+
+# Sizes a shape takes, in order, and what they are called in diagnostics.
+SHAPES = {
+    m.ShapeKind.BOX: ("x", "y", "z"),
+    m.ShapeKind.CYLINDER: ("radius", "length"),
+    m.ShapeKind.SPHERE: ("radius",),
+}
+_KINDS = {k.value: k for k in m.JointKind}
+_QUANTITIES = {q.value: q for q in m.Quantity}
+_LIMITED = (m.JointKind.REVOLUTE, m.JointKind.PRISMATIC)
+SAMPLES = 33  # points of a joint's range at which a conversion is checked, both ends included
+_CONSTANTS = Env({}, "in the body", "constants")
+
+Number = Callable[[ast.Expr, str], "float | None"]
+
+
+class BodyRules:
+    """Checks the body's declarations; `number` reads a constant number (reported if not)."""
+
+    def __init__(self, d: Diagnostics, typer: Typer, symbols: Symbols, number: Number) -> None:
+        self.d = d
+        self.typer = typer
+        self.s = symbols
+        self.number = number
+
+    # -- constants of the body ---------------------------------------------------------
+
+    def vector(self, expr: ast.Expr, what: str) -> m.Vector | None:
+        """Three constant finite numbers written as an array: `[0, 0, 0.05]`."""
+        values = self.numbers(expr, what)
+        if values is None:
+            return None
+        if len(values) != 3:
+            self.d.report("E602", expr.span, f"{what} is three numbers, `[x, y, z]`, not {len(values)}")
+            return None
+        return values[0], values[1], values[2]
+
+    def numbers(self, expr: ast.Expr, what: str) -> tuple[float, ...] | None:
+        errors = self.d.error_count
+        node = self.typer.expr(expr, _CONSTANTS)
+        if self.d.error_count > errors:
+            return None
+        value = self.typer.constant(node)
+        items = value if isinstance(value, tuple) else None
+        if items is None or not all(type(v) in (int, float) and math.isfinite(v) for v in items):
+            self.d.report("E602", expr.span, f"{what} must be constant numbers, written `[x, y, z]`")
+            return None
+        return tuple(float(v) for v in items)
+
+    def positive(self, expr: ast.Expr, what: str, code: str, zero: bool = False) -> float | None:
+        value = self.number(expr, what)
+        if value is None:
+            return None
+        if value < 0 or (value == 0 and not zero):
+            self.d.report(code, expr.span, f"{what} must be {'0 or more' if zero else 'more than 0'}, not {value:g}")
+            return None
+        return float(value)
+
+    def once(self, items: Iterable[ast.BodyValue | ast.JointLimit], key: str, owner: ast.Ident) -> ast.Expr | None:
+        """The value of a clause given at most once; a repeat is reported where it is."""
+        found = [i for i in items if isinstance(i, ast.BodyValue) and i.key == key]
+        for extra in found[1:]:
+            self.d.report("E203", extra.span, f"`{key}` is given twice in `{owner.text}`",
+                          labels=(Label(found[0].span, "first given here"),))
+        return found[0].value if found else None
+
+    # -- links ---------------------------------------------------------------------------
+
+    def link(self, decl: ast.LinkDecl) -> m.Link:
+        uses = [i for i in decl.items if isinstance(i, ast.ShapeUse)]
+        visuals = tuple(s for s in (self.shape(u) for u in uses if u.role == "visual") if s is not None)
+        collisions = tuple(s for s in (self.shape(u) for u in uses if u.role == "collision") if s is not None)
+        return m.Link(decl.name.text, visuals, collisions, self.inertial(decl), decl.doc, decl.span)
+
+    def shape(self, use: ast.ShapeUse) -> m.Shape | None:
+        origin = self.pose(use.at, use.rpy)
+        kind_name = use.shape.kind.text
+        kind = next((k for k in m.ShapeKind if k.value == kind_name), None)
+        if kind is None:
+            self.d.report("E602", use.shape.kind.span, f"unknown shape `{kind_name}`",
+                          help=suggest(kind_name, [k.value for k in m.ShapeKind])
+                          or "shapes are box(x, y, z), cylinder(radius, length), sphere(radius), mesh(\"file\")")
+            return None
+        args = use.shape.args
+        if kind is m.ShapeKind.MESH:
+            return self.mesh(use, origin)
+        names = SHAPES[kind]
+        if len(args) != len(names):
+            self.d.report("E602", use.shape.span, f"{kind_name} takes {len(names)} size"
+                          f"{'s' if len(names) > 1 else ''} ({', '.join(names)}), not {len(args)}",
+                          help=f"write `{kind_name}({', '.join(names)})` in metres")
+            return None
+        size = [self.positive(a, f"a {kind_name}'s {n}", "E602") for a, n in zip(args, names, strict=True)]
+        if origin is None or any(v is None for v in size):
+            return None
+        return m.Shape(kind, tuple(size), origin, None, use.span)  # type: ignore[arg-type]
+
+    def mesh(self, use: ast.ShapeUse, origin: m.Pose | None) -> m.Shape | None:
+        """`mesh("file.stl")` or `mesh("file.stl", scale)`, the scale one number or three."""
+        args = use.shape.args
+        path = args[0] if args else None
+        if not 1 <= len(args) <= 2 or not isinstance(path, ast.StrLit) or not path.value:
+            self.d.report("E602", use.shape.span, "a mesh is `mesh(\"file\")` or `mesh(\"file\", scale)`",
+                          help="the file is a path as the tools reading the output will see it")
+            return None
+        scale: tuple[float, ...] | None = (1.0, 1.0, 1.0)
+        if len(args) == 2:
+            if isinstance(args[1], ast.ArrayLit):
+                scale = self.vector(args[1], "a mesh's scale")
+            else:
+                one = self.positive(args[1], "a mesh's scale", "E602")
+                scale = None if one is None else (one, one, one)
+        if scale is None or origin is None:
+            return None
+        if not all(v > 0 for v in scale):
+            self.d.report("E602", args[1].span, "a mesh's scale must be more than 0")
+            return None
+        return m.Shape(m.ShapeKind.MESH, scale, origin, path.value, use.span)
+
+    def pose(self, at: ast.Expr | None, rpy: ast.Expr | None) -> m.Pose | None:
+        xyz = m.ORIGIN if at is None else self.vector(at, "a position")
+        angles = m.ORIGIN if rpy is None else self.vector(rpy, "roll, pitch and yaw")
+        return None if xyz is None or angles is None else m.Pose(xyz, angles)
+
+    def inertial(self, decl: ast.LinkDecl) -> m.Inertial | None:
+        """Mass, centre and inertia: a link has all (the centre defaults to its origin) or none."""
+        values = [i for i in decl.items if isinstance(i, ast.BodyValue)]
+        mass_expr = self.once(values, "mass", decl.name)
+        centre_expr = self.once(values, "centre", decl.name)
+        inertia_expr = self.once(values, "inertia", decl.name)
+        if mass_expr is None and inertia_expr is None:
+            if centre_expr is not None:
+                self.d.report("E604", centre_expr.span, f"link `{decl.name.text}` has a centre of mass but no mass",
+                              help="give its `mass` (kg) and `inertia` too")
+            return None
+        if mass_expr is None or inertia_expr is None:
+            given = mass_expr or inertia_expr
+            missing = "inertia" if inertia_expr is None else "mass"
+            self.d.report("E604", given.span, f"link `{decl.name.text}` has no {missing}",  # type: ignore[union-attr]
+                          help="a link's inertial is its `mass` (kg) and `inertia` (kg m²) together")
+            return None
+        mass = self.positive(mass_expr, "a link's mass", "E604")
+        centre = m.ORIGIN if centre_expr is None else self.vector(centre_expr, "a centre of mass")
+        inertia = self.inertia(inertia_expr)
+        if mass is None or centre is None or inertia is None:
+            return None
+        return m.Inertial(mass, centre, inertia)
+
+    def inertia(self, expr: ast.Expr) -> tuple[float, float, float, float, float, float] | None:
+        """`[ixx, iyy, izz]` or `[ixx, iyy, izz, ixy, ixz, iyz]`: a physical tensor is positive
+        definite and its principal moments meet the triangle inequality."""
+        values = self.numbers(expr, "an inertia")
+        if values is None:
+            return None
+        if len(values) not in (3, 6):
+            self.d.report("E604", expr.span, f"an inertia is [ixx, iyy, izz] or [ixx, iyy, izz, ixy, ixz, iyz], "
+                          f"not {len(values)} numbers")
+            return None
+        full = values + (0.0, 0.0, 0.0) if len(values) == 3 else values
+        tensor = (full[0], full[1], full[2], full[3], full[4], full[5])
+        moments = principal_moments(tensor)
+        if min(moments) <= 0:
+            self.d.report("E604", expr.span, "the inertia is not positive definite: its principal moments are "
+                          + ", ".join(f"{v:.6g}" for v in moments), help="every principal moment is more than 0")
+            return None
+        a, b, c = sorted(moments)
+        if a + b < c * (1 - 1e-9):
+            self.d.report("E604", expr.span, f"the inertia breaks the triangle inequality: its principal moments "
+                          f"{a:.6g} + {b:.6g} < {c:.6g}",
+                          help="no body has one moment larger than the other two together")
+            return None
+        return tensor
+
+    # -- joints and the tree ---------------------------------------------------------------
+
+    def joint(self, decl: ast.JointDecl) -> m.Joint | None:
+        kind = _KINDS.get(decl.kind.text)
+        if kind is None:
+            self.d.report("E603", decl.kind.span, f"unknown joint kind `{decl.kind.text}`",
+                          help=suggest(decl.kind.text, _KINDS) or "joints are " + ", ".join(_KINDS))
+            return None
+        items = decl.items
+        at, rpy = self.once(items, "at", decl.name), self.once(items, "rpy", decl.name)
+        origin = self.pose(at, rpy)
+        limits = [i for i in items if isinstance(i, ast.JointLimit)]
+        for extra in limits[1:]:
+            self.d.report("E203", extra.span, f"`limit` is given twice in `{decl.name.text}`",
+                          labels=(Label(limits[0].span, "first given here"),))
+        moving = {"axis", "velocity", "effort", "damping", "friction"}
+        if kind is m.JointKind.FIXED:
+            for item in items:
+                if isinstance(item, ast.JointLimit) or item.key in moving:
+                    key = "limit" if isinstance(item, ast.JointLimit) else item.key
+                    self.d.report("E603", item.span, f"a fixed joint does not move: it has no `{key}`")
+            return None if origin is None else m.Joint(decl.name.text, kind, decl.parent.text, decl.child.text,
+                                                       origin, doc=decl.doc, span=decl.span)
+        axis = (1.0, 0.0, 0.0)
+        axis_expr = self.once(items, "axis", decl.name)
+        if axis_expr is not None:
+            given = self.vector(axis_expr, "an axis")
+            if given is not None and not any(given):
+                self.d.report("E603", axis_expr.span, "an axis must not be zero",
+                              help="the unit vector the joint turns about or slides along: `axis [0, 0, 1]`")
+                given = None
+            axis = given or axis
+        lower = upper = None
+        if limits:
+            limit = limits[0]
+            if kind not in _LIMITED:
+                self.d.report("E603", limit.span, f"a {kind.value} joint has no position limit",
+                              help="a joint that turns within limits is `revolute`" if kind is m.JointKind.CONTINUOUS
+                              else None)
+            else:
+                lower, upper = self.number(limit.low, "a joint's limit"), self.number(limit.high, "a joint's limit")
+                if lower is not None and upper is not None and not lower < upper:
+                    self.d.report("E603", limit.span, f"a joint's limits are ordered, low < high, not "
+                                  f"{lower:g}..{upper:g}")
+                    lower = upper = None
+        elif kind in _LIMITED:
+            self.d.report("E603", decl.name.span, f"{kind.value} joint `{decl.name.text}` has no `limit LOW..HIGH`",
+                          help="a continuous joint turns without limits")
+        bounds: dict[str, float | None] = {}
+        for key, zero in (("velocity", False), ("effort", False), ("damping", True), ("friction", True)):
+            expr = self.once(items, key, decl.name)
+            bounds[key] = None if expr is None else self.positive(expr, f"a joint's {key}", "E603", zero)
+            if expr is None and key in ("velocity", "effort") and kind in _LIMITED:
+                self.d.report("E603", decl.name.span, f"{kind.value} joint `{decl.name.text}` has no `{key}`",
+                              help="URDF needs a moving joint's largest velocity and effort")
+        if origin is None:
+            return None
+        return m.Joint(decl.name.text, kind, decl.parent.text, decl.child.text, origin, axis, lower, upper,
+                       bounds["velocity"], bounds["effort"], bounds["damping"] or 0.0, bounds["friction"] or 0.0,
+                       decl.doc, decl.span)
+
+    def tree(self, links: dict[str, m.Link], joints: dict[str, m.Joint]) -> dict[str, m.Joint]:
+        """One tree with one root: every link moved by at most one joint, reachable from the root,
+        no cycle. The joints come back parents first."""
+        decls = self.s.joints
+        moved_by: dict[str, str] = {}
+        for joint in joints.values():
+            decl = decls[joint.name]
+            if joint.parent == joint.child:
+                self.d.report("E601", decl.child.span, f"joint `{joint.name}` joins link `{joint.child}` to itself")
+                continue
+            first = moved_by.get(joint.child)
+            if first is not None:
+                self.d.report("E601", decl.child.span, f"link `{joint.child}` is the child of two joints",
+                              labels=(Label(decls[first].child.span, f"also of joint `{first}`"),),
+                              help="a link hangs from one parent; join the other with a link of its own")
+                continue
+            moved_by[joint.child] = joint.name
+        if not links:
+            return {}
+        roots = [name for name in links if name not in moved_by]
+        if not roots:
+            name = next(iter(links))
+            self.d.report("E601", self.s.links[name].name.span, "the links form a cycle with no root",
+                          help="one link, the base, is the child of no joint")
+            return {}
+        for extra in roots[1:]:
+            self.d.report("E601", self.s.links[extra].name.span, f"link `{extra}` is not joined to the tree of "
+                          f"`{roots[0]}`", labels=(Label(self.s.links[roots[0]].name.span, "the root"),),
+                          help="join it with a joint (`fixed` if it does not move): a robot is one tree")
+        order: dict[str, m.Joint] = {}
+        children: dict[str, list[m.Joint]] = {}
+        for joint in joints.values():
+            if moved_by.get(joint.child) == joint.name:
+                children.setdefault(joint.parent, []).append(joint)
+        frontier = [roots[0]]
+        while frontier:
+            parent = frontier.pop(0)
+            for joint in children.get(parent, ()):
+                order[joint.name] = joint
+                frontier.append(joint.child)
+        for joint in joints.values():
+            if joint.name not in order and moved_by.get(joint.child) == joint.name and joint.child in links \
+                    and joint.parent in links and joint.parent in moved_by:
+                self.d.report("E601", decls[joint.name].name.span, f"joint `{joint.name}` closes a cycle: link "
+                              f"`{joint.child}` is not reachable from the root `{roots[0]}`")
+        return order
+
+    # -- transmissions -----------------------------------------------------------------
+
+    def transmission(self, decl: ast.TransmissionDecl, joints: dict[str, m.Joint],
+                     primitives: dict[str, m.Primitive], interfaces: dict[str, tuple[m.Parameter, ...]],
+                     states: dict[str, m.StateVariable]) -> m.Transmission | None:
+        joint = joints.get(decl.joint.text)
+        if joint is None:  # unknown (reported) or refused
+            return None
+        if not joint.moves():
+            self.d.report("E605", decl.joint.span, f"joint `{joint.name}` is fixed: there is nothing to transmit")
+            return None
+        if not decl.bindings:
+            self.d.report("E605", decl.name.span, f"transmission `{decl.name.text}` neither commands nor measures "
+                          f"joint `{joint.name}`", help="add `command QUANTITY to ...` or `measure QUANTITY from ...`")
+        commands, measures = [], []
+        for binding in decl.bindings:
+            checked = self.binding(binding, joint, primitives, interfaces, states)
+            if checked is not None:
+                (commands if binding.role == "command" else measures).append(checked)
+        return m.Transmission(decl.name.text, joint.name, tuple(commands), tuple(measures), decl.doc, decl.span)
+
+    def binding(self, b: ast.Binding, joint: m.Joint, primitives: dict[str, m.Primitive],
+                interfaces: dict[str, tuple[m.Parameter, ...]],
+                states: dict[str, m.StateVariable]) -> m.Binding | None:
+        quantity = _QUANTITIES.get(b.quantity.text)
+        if quantity is None:
+            self.d.report("E605", b.quantity.span, f"unknown joint quantity `{b.quantity.text}`",
+                          help=suggest(b.quantity.text, _QUANTITIES) or "a joint has a position, velocity and effort")
+            return None
+        target = b.target.text
+        param: m.Parameter | None = None
+        device: m.AnyType | None
+        is_interface = False
+        if b.role == "command":
+            primitive = primitives.get(target)
+            params = primitive.params if primitive is not None else interfaces.get(target)
+            is_interface = primitive is None
+            if params is None:  # unknown: reported
+                return None
+            member = b.member.text  # type: ignore[union-attr]  # a command names its parameter
+            param = next((p for p in params if p.name == member), None)
+            if param is None:
+                kind = "interface" if is_interface else "primitive"
+                self.d.report("E605", b.member.span, f"{kind} `{target}` has no parameter `{member}`",  # type: ignore[union-attr]
+                              help=suggest(member, [p.name for p in params]))
+                return None
+            device = param.type
+            where = f"parameter `{target}.{member}`"
+        else:
+            if target in self.s.settings:
+                self.d.report("E605", b.target.span, f"`{target}` is a setting: a joint is measured by a state "
+                              "variable its replies set")
+                return None
+            variable = states.get(target)
+            if variable is None:
+                return None
+            self.typer.reads.add(target)
+            device = variable.type
+            where = f"state variable `{target}`"
+        index = self.index(b, device, where)
+        if index is False:
+            return None
+        scalar = device.element if isinstance(device, m.Array) else device
+        if scalar not in (Type.INT, Type.FLOAT):
+            self.d.report("E605", b.target.span, f"{where} is {describe(device)}, not a number",
+                          help="a joint's quantity is carried by an int or float")
+            return None
+        conversions = self.conversions(b, quantity, scalar)
+        if conversions is None:
+            return None
+        binding = m.Binding(quantity, target, param.name if param is not None else None, index, *conversions,
+                            interface=is_interface, span=b.span)
+        self.agree(b, binding, joint, scalar, param)
+        return binding
+
+    def index(self, b: ast.Binding, device: m.AnyType | None, where: str) -> int | None | bool:
+        """The element of an array a binding names (False when refused, None for a scalar)."""
+        if isinstance(device, m.Array):
+            if b.index is None:
+                self.d.report("E605", b.span, f"{where} is {describe(device)}: name one element, `[i]`")
+                return False
+            value = self.number(b.index, "an element's index")
+            if value is None:
+                return False
+            if value != int(value) or not 0 <= value < device.size:
+                self.d.report("E605", b.index.span, f"{where} has elements 0..{device.size - 1}, not {value:g}")
+                return False
+            return int(value)
+        if b.index is not None:
+            self.d.report("E605", b.index.span, f"{where} is not an array")
+            return False
+        return None
+
+    def conversions(self, b: ast.Binding, quantity: m.Quantity, device: Type) -> tuple[m.Expr, m.Expr] | None:
+        """`raw = ...` (the device's value, from the quantity) and `QUANTITY = ...` (back)."""
+        name = quantity.value
+        found: dict[str, ast.Assign] = {}
+        for a in b.conversions:
+            if a.target.text not in ("raw", name) or a.index is not None:
+                self.d.report("E605", a.target.span, f"a {b.role} converts `raw` and `{name}`, not "
+                              f"`{a.target.text}`", help=f"`raw = ...` from `{name}`, and `{name} = ...` from `raw`")
+                return None
+            if a.target.text in found:
+                self.d.report("E203", a.span, f"`{a.target.text}` is given twice",
+                              labels=(Label(found[a.target.text].span, "first given here"),))
+                return None
+            found[a.target.text] = a
+        for missing in ("raw", name):
+            if missing not in found:
+                reads = f"`{name}`" if missing == "raw" else "`raw`"
+                self.d.report("E605", b.span, f"this {b.role} does not say `{missing} = ...` (from {reads})",
+                              help="a transmission converts both ways: the checks and the simulation need both")
+                return None
+        raw_env = Env({name: (Scope.PARAM, Type.FLOAT)}, "in a conversion to the device", f"`{name}` and constants")
+        joint_env = Env({"raw": (Scope.PARAM, device)}, "in a conversion to the joint", "`raw` and constants")
+        errors = self.d.error_count
+        to_device = self.typer.expr(found["raw"].value, raw_env)
+        to_joint = self.typer.expr(found[name].value, joint_env)
+        if self.d.error_count > errors:
+            return None
+        if (to_device.type, device) == (Type.FLOAT, Type.INT):
+            self.d.report("E402", found["raw"].value.span, "the device's value is an int, but this is a float",
+                          help="convert it: `round(...)` to the nearest integer")
+            return None
+        for expr, assign in ((to_device, found["raw"]), (to_joint, found[name])):
+            if expr.type not in (Type.INT, Type.FLOAT):
+                self.d.report("E401", assign.value.span, f"a conversion gives a number, not {describe(expr.type)}")
+                return None
+        return to_device, to_joint
+
+    def agree(self, b: ast.Binding, binding: m.Binding, joint: m.Joint, device: Type,
+              param: m.Parameter | None) -> None:
+        """The joint's range, mapped to the device, lies in what the device accepts; and the device's
+        value, converted to the joint and back, is itself (to one step of an int)."""
+        low, high, text = joint_range(joint, binding.quantity)
+        decl = self.s.joints[joint.name]
+        span = next((i.span for i in decl.items if isinstance(i, ast.JointLimit) and text == "limit"
+                     or isinstance(i, ast.BodyValue) and i.key == text), decl.span)
+        if low is None or high is None:
+            return
+        from rdisc.runtime.evaluate import evaluate  # the runtime's own interpreter: the check is what runs
+
+        name = binding.quantity.value
+        step = 1.0 if device is Type.INT else 0.0
+        for x in sample(low, high):
+            try:
+                raw = evaluate(binding.to_device, {name: x})
+                back = evaluate(binding.to_joint, {"raw": raw})
+                again = evaluate(binding.to_device, {name: back})
+            except (EvalError, ArithmeticError, ValueError, OverflowError) as err:
+                self.d.report("E606", b.span, f"converting {name} {x:g} of joint `{joint.name}` fails: {err}",
+                              labels=(Label(span, f"its {text}"),))
+                return
+            if param is not None and param.low is not None and param.high is not None \
+                    and not param.low <= raw <= param.high:  # type: ignore[operator]
+                self.d.report("E606", b.span, f"joint `{joint.name}`'s {name} {x:g} becomes {raw!r} at "
+                              f"{binding.place()}, outside its range {param.range_text()}",
+                              labels=(Label(span, f"the joint's {text}"), *self.range_label(binding)),
+                              help="narrow the joint's limits, or correct the conversion")
+                return
+            if not _close(again, raw, step):  # type: ignore[arg-type]
+                self.d.report("E606", b.span, f"the conversions do not undo each other: {name} {x:g} becomes "
+                              f"raw {raw!r}, which comes back as {name} {back!r}, which becomes raw {again!r}",
+                              help=f"`{name} = ...` must invert `raw = ...`")
+                return
+
+    def range_label(self, binding: m.Binding) -> tuple[Label, ...]:
+        decl = self.s.primitives.get(binding.target) or self.s.interfaces.get(binding.target)
+        if decl is None:
+            return ()
+        p = next((p for p in decl.params if p.name.text == binding.parameter), None)
+        if p is None or p.low is None or p.high is None:
+            return ()
+        return (Label(p.low.span.to(p.high.span), "the range the device accepts"),)
+
+
+def joint_range(joint: m.Joint, quantity: m.Quantity) -> tuple[float | None, float | None, str]:
+    """The range of a quantity the body allows, and what states it."""
+    if quantity is m.Quantity.POSITION:
+        return joint.lower, joint.upper, "limit"
+    bound = joint.velocity if quantity is m.Quantity.VELOCITY else joint.effort
+    return (None, None, "") if bound is None else (-bound, bound, quantity.value)
+
+
+def sample(low: float, high: float) -> list[float]:
+    return [low + (high - low) * i / (SAMPLES - 1) for i in range(SAMPLES)]
+
+
+def _close(a: float, b: float, step: float) -> bool:
+    return abs(a - b) <= max(step, 1e-9 * max(abs(a), abs(b), 1.0))
+
+
+def principal_moments(t: tuple[float, float, float, float, float, float]) -> tuple[float, float, float]:
+    """The eigenvalues of the symmetric inertia tensor (ixx, iyy, izz, ixy, ixz, iyz), by the
+    closed form for a symmetric 3x3 matrix."""
+    xx, yy, zz, xy, xz, yz = t
+    off = xy * xy + xz * xz + yz * yz
+    if off == 0:
+        return xx, yy, zz
+    q = (xx + yy + zz) / 3
+    p = math.sqrt(((xx - q) ** 2 + (yy - q) ** 2 + (zz - q) ** 2 + 2 * off) / 6)
+    b = [[(xx - q) / p, xy / p, xz / p], [xy / p, (yy - q) / p, yz / p], [xz / p, yz / p, (zz - q) / p]]
+    det = (b[0][0] * (b[1][1] * b[2][2] - b[1][2] * b[2][1]) - b[0][1] * (b[1][0] * b[2][2] - b[1][2] * b[2][0])
+           + b[0][2] * (b[1][0] * b[2][1] - b[1][1] * b[2][0]))
+    phi = math.acos(max(-1.0, min(1.0, det / 2))) / 3
+    one = q + 2 * p * math.cos(phi)
+    three = q + 2 * p * math.cos(phi + 2 * math.pi / 3)
+    return one, 3 * q - one - three, three
