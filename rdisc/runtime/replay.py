@@ -90,7 +90,8 @@ def _take(recording: Recording, topic: str, message: Any) -> None:
             exchanges.append((None, data))  # read with nothing written: a listener's
     elif len(parts) == 2 and parts[1] not in ("rosout", ""):
         contents = json.loads(message.data) if type(message).__name__ == "String" else message
-        recording.messages.setdefault(parts[1], []).append(dict(_flat(contents)))
+        recording.messages.setdefault(parts[1], []).append(  # a header's stamp is when it was recorded
+            {path: value for path, value in _flat(contents) if not path.startswith("header.stamp.")})
 
 
 def _flat(value: Any, prefix: str = "") -> Iterable[tuple[str, Any]]:
