@@ -14,7 +14,8 @@ from typing import Any
 
 import pytest
 from conftest import cli_env
-from devices import PtyDevice
+from devices import BenchEmulator
+from devices.bench import READINGS
 from rosbags.highlevel import AnyReader
 from rosbags.rosbag2 import Reader
 from rosbags.typesys import Stores, get_types_from_msg, get_typestore
@@ -24,7 +25,6 @@ from rdisc.runtime import engine, messages
 
 BENCH = DATA / "bench.rdis"
 HUMBLE = get_typestore(Stores.ROS2_HUMBLE)
-READINGS = "0.5,1,12.25,-1.5,2.0,4.0,0.75,1.5,-2.0,0.5,0.25,-0.125,0.1,0.2,-0.3,36.5"
 CALLS = ("--call", "set_velocity", "linear=0.5", "angular=-0.25",
          "--call", "set_pose", "x=1.5", "y=-2", "theta=0.5",
          "--call", "set_joint", "name=pan", "position=0.75",
@@ -32,35 +32,12 @@ CALLS = ("--call", "set_velocity", "linear=0.5", "angular=-0.25",
          "--call", "report")
 
 
-class Bench(PtyDevice):
-    """The bench device: one reply line to each command line, as bench.rdis's header says."""
-
-    def __init__(self, answers: dict[str, str] | None = None) -> None:
-        super().__init__()
-        self.answers = {"V": "v", "P": "p", "J": "j", "M": "m", "Q": "q", "S": f"s,{READINGS}", **(answers or {})}
-        self.lines: list[str] = []
-        self._pending = bytearray()
-
-    def handle(self, data: bytes) -> None:
-        self._pending += data
-        while b"\n" in self._pending:
-            line, _, rest = bytes(self._pending).partition(b"\n")
-            self._pending[:] = rest
-            text = line.decode("ascii")
-            with self._cond:
-                self.lines.append(text)
-            answer = self.answers.get(text.split(",")[0])
-            if answer is not None:
-                self.send(answer.encode("ascii") + b"\n")
-
-
-def record(command: list[str], path: Path, *calls: str, answers: dict[str, str] | None = None,
-           description: Path = BENCH) -> subprocess.CompletedProcess[str]:
-    """`command DESCRIPTION --port PTY --record path CALLS` against the bench device."""
-    with Bench(answers) as dev:
-        return subprocess.run([*command, *([str(description)] if command[-1] == "run" else []), "--port", dev.port,
-                               "--record", str(path), *calls], env=cli_env(), capture_output=True, text=True,
-                              check=False)
+def record(command: list[str], path: Path, *calls: str,
+           answers: dict[str, str | None] | None = None) -> subprocess.CompletedProcess[str]:
+    """`command --port PTY --record path CALLS` against the bench device."""
+    with BenchEmulator(answers) as dev:
+        return subprocess.run([*command, "--port", dev.port, "--record", str(path), *calls], env=cli_env(),
+                              capture_output=True, text=True, check=False)
 
 
 def rosbag(path: Path) -> list[tuple[str, str, int, Any]]:
@@ -70,17 +47,17 @@ def rosbag(path: Path) -> list[tuple[str, str, int, Any]]:
                 for connection, stamp, raw in reader.messages()]
 
 
-RUN = [sys.executable, "-m", "rdisc", "run"]
+RDISC = [sys.executable, "-m", "rdisc"]
 
 
 @pytest.fixture(scope="module", params=["runtime", "driver"])
 def session(request, tmp_path_factory) -> Path:
     """A recorded session of every call of CALLS, by `rdisc run` or by the bench's driver."""
     folder = tmp_path_factory.mktemp(request.param)
-    command = RUN
+    command = [*RDISC, "run", str(BENCH)]
     if request.param == "driver":
         driver = folder / "bench_driver.py"
-        emitted = subprocess.run([*RUN[:-1], "emit-python", str(BENCH), "-o", str(driver)], env=cli_env(),
+        emitted = subprocess.run([*RDISC, "emit-python", str(BENCH), "-o", str(driver)], env=cli_env(),
                                  capture_output=True, text=True, check=False)
         assert emitted.returncode == 0, emitted.stderr
         command = [sys.executable, str(driver)]
@@ -216,3 +193,67 @@ def test_every_definition_rdisc_has_is_rosbags_own(name) -> None:
     kind, text = own[name] if name in own else (messages.ros2_name(name), messages.definition(name))
     for part, definition in _parsed(kind, text).items():
         assert definition == HUMBLE.fielddefs[part], part
+
+
+# ---- rdisc replay compares errors --------------------------------------------------------------------
+
+QUERY = 'primitive query() on line format "Q\\n" () regex r"^q$"'
+
+
+def variant(tmp_path: Path, name: str, query: str) -> Path:
+    """bench.rdis with another `query` primitive."""
+    text = BENCH.read_text()
+    assert QUERY in text
+    path = tmp_path / f"{name}.rdis"
+    path.write_text(text.replace(QUERY, query))
+    return path
+
+
+def test_a_refused_reply_recorded_and_not_replayed_is_a_difference(rdisc, tmp_path) -> None:
+    path = tmp_path / "refused.mcap"
+    result = record([*RDISC, "run", str(BENCH)], path, "--call", "ask", answers={"Q": "nope"})
+    assert result.returncode == 1
+    refusal = "RdisProtocolError: query: reply 'nope' does not match '^q$'"
+    assert [m.msg for topic, _, _, m in rosbag(path) if topic == "/rosout"] == [refusal]
+    assert rdisc("replay", path, BENCH).stdout == ""
+    lenient = variant(tmp_path, "lenient", 'primitive query() on line format "Q\\n" () regex r"^\\w+$"')
+    result = rdisc("replay", path, lenient)
+    assert result.returncode == 1
+    assert result.stdout == f"error #1: recorded, not replayed: {refusal}\n"
+
+
+def test_an_error_only_in_the_replay_is_a_difference(rdisc, tmp_path) -> None:
+    lenient = variant(tmp_path, "lenient", 'primitive query() on line format "Q\\n" () regex r"^\\w+$"')
+    path = tmp_path / "accepted.mcap"
+    result = record([*RDISC, "run", str(lenient)], path, "--call", "ask", "--call", "report", answers={"Q": "nope"})
+    assert result.returncode == 0, result.stderr
+    assert rdisc("replay", path, lenient).stdout == ""
+    result = rdisc("replay", path, BENCH)
+    assert result.returncode == 1
+    assert result.stdout == ("error #1: replayed, not recorded: "
+                             "RdisProtocolError: query: reply 'nope' does not match '^q$'\n")
+
+
+def test_a_timeout_recorded_replays_as_it_read_and_its_absence_is_a_difference(rdisc, tmp_path) -> None:
+    path = tmp_path / "timeout.mcap"
+    result = record([*RDISC, "run", str(BENCH)], path, "--timeout", "0.2", "--call", "ask", answers={"Q": None})
+    assert result.returncode == 1
+    timeout = "RdisTimeout: query: no reply within 0.2 s"
+    assert [m.msg for topic, _, _, m in rosbag(path) if topic == "/rosout"] == [timeout]
+    same = rdisc("replay", path, BENCH)
+    assert (same.returncode, same.stdout) == (0, "")
+    unanswered = variant(tmp_path, "unanswered", 'primitive query() on line format "Q\\n" ()')
+    result = rdisc("replay", path, unanswered)
+    assert result.returncode == 1
+    assert result.stdout == f"error #1: recorded, not replayed: {timeout}\n"
+
+
+def test_errors_are_matched_by_their_text_not_their_place() -> None:
+    """One error more in the replay is one line, not every later error shifted."""
+    from rdisc.runtime.replay import _error_differences
+
+    assert _error_differences(["A", "B", "C"], ["A", "X", "B", "C"]) == ["error #2: replayed, not recorded: X"]
+    assert _error_differences(["A", "B"], ["A", "C"]) == ["error #2: recorded, not replayed: B",
+                                                          "error #2: replayed, not recorded: C"]
+    assert _error_differences([str(n) for n in range(8)], []) == [
+        *(f"error #{n + 1}: recorded, not replayed: {n}" for n in range(5)), "errors: 3 more differ"]
