@@ -6,11 +6,13 @@ each way on every connection. The replay opens the description on ports that giv
 recorded replies, without threads, makes the recorded calls and runs the periodic interfaces and
 keepalives where the recording ran them, and records all of it again with the same Recorder.
 Then the two recordings are compared, topic by topic: each input and output message field by
-field, and the bytes written on each connection. Delays are slept as in a live session.
+field (a header's stamp aside), the bytes written on each connection, and the errors (a refused
+reply, a timeout) of one and not the other. Delays are slept as in a live session.
 """
 
 from __future__ import annotations
 
+import difflib
 import io
 import json
 import os
@@ -34,10 +36,12 @@ class Recording:
     """What a replay needs of a recording, and what it compares."""
 
     settings: dict[str, Any] = field(default_factory=dict)
+    timeout: float | None = None  # the reply timeout of the session; None in a recording older than it
     runs: list[dict[str, Any]] = field(default_factory=list)  # in order
     exchanges: dict[str, list[tuple[bytes | None, bytes]]] = field(default_factory=dict)  # by connection
     writes: dict[str, list[bytes]] = field(default_factory=dict)  # by connection
     messages: dict[str, list[dict[str, Any]]] = field(default_factory=dict)  # by input or output, flattened
+    errors: list[str] = field(default_factory=list)  # `Type: message`, in order
 
 
 def read_recording(source: str | os.PathLike[str] | io.BytesIO) -> Recording:
@@ -58,6 +62,8 @@ def read_recording(source: str | os.PathLike[str] | io.BytesIO) -> Recording:
             for metadata in reader.iter_metadata():
                 if metadata.name == "rdisc":
                     recording.settings = json.loads(metadata.metadata.get("settings", "{}"))
+                    timeout = json.loads(metadata.metadata.get("timeout", "null"))
+                    recording.timeout = float(timeout) if isinstance(timeout, (int, float)) and timeout > 0 else None
                     found = True
             if not found:
                 raise RecordingError("not a recording of rdisc (it has no `rdisc` metadata)")
@@ -88,9 +94,12 @@ def _take(recording: Recording, topic: str, message: Any) -> None:
             exchanges[-1] = (exchanges[-1][0], data)  # the reply to that write
         else:
             exchanges.append((None, data))  # read with nothing written: a listener's
-    elif len(parts) == 2 and parts[1] not in ("rosout", ""):
+    elif topic == "/rosout":
+        recording.errors.append(message.msg)
+    elif len(parts) == 2 and parts[1]:
         contents = json.loads(message.data) if type(message).__name__ == "String" else message
-        recording.messages.setdefault(parts[1], []).append(dict(_flat(contents)))
+        recording.messages.setdefault(parts[1], []).append(  # a header's stamp is when it was recorded
+            {path: value for path, value in _flat(contents) if not path.startswith("header.stamp.")})
 
 
 def _flat(value: Any, prefix: str = "") -> Iterable[tuple[str, Any]]:
@@ -161,8 +170,9 @@ class ReplayPort:
 
 def replay(recording: Recording, device: engine.Device) -> Recording:
     """Run the recording's runs through a device on ports that answer as the recording did,
-    and give the recording of that."""
-    robot = engine.Robot(device, timeout=0.05)  # a reply is there at once, or never
+    and give the recording of that. The reply timeout is the session's, so that a timeout's
+    error reads as it did; it is never waited for, as a reply is there at once, or never."""
+    robot = engine.Robot(device, timeout=recording.timeout or 0.05)
     output = io.BytesIO()
     recorder = engine.Recorder(robot, output, recording.settings)
     ports = {name: ReplayPort(recording.exchanges.get(name, ())) for name in device.connections}
@@ -197,6 +207,8 @@ def _run(robot: engine.Robot, recorder: engine.Recorder, run: Mapping[str, Any])
                 robot.call_interface(name, *values.values())
             else:
                 robot.call_primitive(name, *values.values())
+        except engine.RdisError:  # the device's or the values' error, as in a live session (RdisValueError too)
+            raise
         except (KeyError, TypeError, ValueError) as err:  # not in this description, or not with these values
             raise engine.RdisValueError(f"the recorded call of {kind} {name}: {err}") from None
         return
@@ -215,7 +227,7 @@ def _run(robot: engine.Robot, recorder: engine.Recorder, run: Mapping[str, Any])
 
 
 def differences(recorded: Recording, replayed: Recording, device: engine.Device) -> list[str]:
-    """Where the replay's messages and bytes written differ from the recording's, in words."""
+    """Where the replay's messages, bytes written and errors differ from the recording's, in words."""
     lines: list[str] = []
     names = dict.fromkeys([*recorded.messages, *replayed.messages])
     fields = _field_names(device)
@@ -226,6 +238,22 @@ def differences(recorded: Recording, replayed: Recording, device: engine.Device)
         lines += _compare(f"{connection} writes", recorded.writes.get(connection, []),
                           replayed.writes.get(connection, []),
                           lambda a, b: [f"recorded {a.hex(' ')}, replayed {b.hex(' ')}"] if a != b else [])
+    return lines + _error_differences(recorded.errors, replayed.errors)
+
+
+def _error_differences(recorded: list[str], replayed: list[str]) -> list[str]:
+    """The errors of one run and not of the other, in order: matched by their text, so one error
+    more or less is one line, not a shift of every error after it."""
+    lines: list[str] = []
+    matcher = difflib.SequenceMatcher(a=recorded, b=replayed, autojunk=False)
+    for tag, a_start, a_end, b_start, b_end in matcher.get_opcodes():
+        if tag != "equal":
+            lines += [f"error #{n + 1}: recorded, not replayed: {text}"
+                      for n, text in enumerate(recorded[a_start:a_end], start=a_start)]
+            lines += [f"error #{n + 1}: replayed, not recorded: {text}"
+                      for n, text in enumerate(replayed[b_start:b_end], start=b_start)]
+    if len(lines) > SHOWN:
+        lines[SHOWN:] = [f"errors: {len(lines) - SHOWN} more differ"]
     return lines
 
 

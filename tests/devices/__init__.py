@@ -30,7 +30,7 @@ from typing import TYPE_CHECKING
 if TYPE_CHECKING:
     from typing_extensions import Self
 
-__all__ = ["CreateEmulator", "KoalaEmulator", "PtyDevice", "pty_device"]
+__all__ = ["BenchEmulator", "CreateEmulator", "KoalaEmulator", "PtyDevice", "pty_device"]
 
 
 class PtyDevice:
@@ -191,5 +191,6 @@ def pty_device(handler: Callable[[bytes], bytes | None]) -> Iterator[PtyDevice]:
         yield dev
 
 
+from .bench import BenchEmulator
 from .create import CreateEmulator
 from .koala import KoalaEmulator

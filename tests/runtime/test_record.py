@@ -96,7 +96,7 @@ def test_the_runs_in_order_and_the_file_is_ros2(recording) -> None:
         assert twist.data.decode() == ("Vector3 linear\nVector3 angular\n" + "=" * 80
                                        + "\nMSG: geometry_msgs/Vector3\nfloat64 x\nfloat64 y\nfloat64 z\n")
         metadata = {m.name: m.metadata for m in reader.iter_metadata()}
-        assert metadata == {"rdisc": {"robot": "irobot_create", "settings": "{}"}}
+        assert metadata == {"rdisc": {"robot": "irobot_create", "timeout": "1.0", "settings": "{}"}}
 
 
 def test_replay_with_the_same_description_finds_no_difference(rdisc, recording) -> None:

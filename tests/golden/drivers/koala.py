@@ -2204,18 +2204,25 @@ def _lines_text(levels: Mapping[str, Value]) -> bytes:
 # ---- recordings: a session in MCAP ------------------------------------------------------------------
 
 
+_SEPARATOR = "=" * 80  # between a ros2msg schema's message and each message it uses
+_HEADER = "std_msgs/Header header"  # a message's field, which a recording stamps
 _TEXT = "std_msgs/msg/String"
 _TEXT_SCHEMA = "string data\n"
 _BYTES = "std_msgs/msg/UInt8MultiArray"
-_BYTES_SCHEMA = ("MultiArrayLayout layout\nuint8[] data\n" + "=" * 80 + "\nMSG: std_msgs/MultiArrayLayout\n"
-                 "MultiArrayDimension[] dim\nuint32 data_offset\n" + "=" * 80
+_BYTES_SCHEMA = ("MultiArrayLayout layout\nuint8[] data\n" + _SEPARATOR + "\nMSG: std_msgs/MultiArrayLayout\n"
+                 "MultiArrayDimension[] dim\nuint32 data_offset\n" + _SEPARATOR
                  + "\nMSG: std_msgs/MultiArrayDimension\nstring label\nuint32 size\nuint32 stride\n")
 _LOG = "rcl_interfaces/msg/Log"
 _LOG_SCHEMA = ("byte DEBUG=10\nbyte INFO=20\nbyte WARN=30\nbyte ERROR=40\nbyte FATAL=50\n"
                "builtin_interfaces/Time stamp\nuint8 level\nstring name\nstring msg\nstring file\n"
-               "string function\nuint32 line\n" + "=" * 80 + "\nMSG: builtin_interfaces/Time\n"
+               "string function\nuint32 line\n" + _SEPARATOR + "\nMSG: builtin_interfaces/Time\n"
                "int32 sec\nuint32 nanosec\n")
 RUNS_TOPIC = "/rdisc/runs"
+
+
+def _time(stamp: int) -> dict[str, int]:
+    """Nanoseconds since the epoch as a builtin_interfaces/Time."""
+    return {"sec": stamp // 1_000_000_000, "nanosec": stamp % 1_000_000_000}
 
 
 class Recorder:
@@ -2241,7 +2248,7 @@ class Recorder:
         self._lock = threading.Lock()
         self._time = 0
         self._schemas: dict[str, Any] = {}
-        self._writer.add_metadata("rdisc", {"robot": robot.name,
+        self._writer.add_metadata("rdisc", {"robot": robot.name, "timeout": json.dumps(robot.timeout),
                                             "settings": json.dumps(dict(settings or {}), default=list)})
         robot.on_output(self.output)
         robot.on_error(self.error)
@@ -2266,7 +2273,7 @@ class Recorder:
     def error(self, error: BaseException) -> None:
         stamp = self._stamp()
         self._write("/rosout", _LOG, _LOG_SCHEMA, {
-            "stamp": {"sec": stamp // 1_000_000_000, "nanosec": stamp % 1_000_000_000}, "level": 40,
+            "stamp": _time(stamp), "level": 40,
             "name": self._device.name, "msg": f"{type(error).__name__}: {error}"}, stamp)
 
     def io(self, direction: str, connection: str, data: bytes) -> None:
@@ -2281,12 +2288,17 @@ class Recorder:
             self._writer.finish()
 
     def _adapted(self, name: str, adapter: str, contents: Mapping[str, Any]) -> None:
-        """An adapter's values on `/NAME`: its ROS 2 message, or JSON text."""
+        """An adapter's values on `/NAME`: its ROS 2 message, or JSON text. A message with a
+        std_msgs/Header is stamped with the time it is recorded at, as a ROS 2 publisher's is."""
         message = self._device.messages.get(adapter)
         if message is None:
             self._write(f"/{name}", _TEXT, _TEXT_SCHEMA, {"data": json.dumps(dict(contents), default=list)})
-        else:
-            self._write(f"/{name}", message.type, message.definition, ros_message(message, contents))
+            return
+        stamp = self._stamp()
+        members = ros_message(message, contents)
+        if _HEADER in message.definition.partition(_SEPARATOR)[0].splitlines():
+            members.setdefault("header", {})["stamp"] = _time(stamp)
+        self._write(f"/{name}", message.type, message.definition, members, stamp)
 
     def _stamp(self) -> int:
         """Now in nanoseconds, later than every time written before: the file keeps the order."""
