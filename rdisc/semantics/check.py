@@ -1094,6 +1094,11 @@ class _Checker:
                               labels=(Label(first.target.span, "first assigned here"),))
             if assign.index is None:
                 written[target] = assign
+                if isinstance(declared, m.Array) and declared.size and isinstance(value.type, m.Array) \
+                        and not value.type.size:  # nothing would check its size when it runs
+                    self.d.report("E401", assign.value.span, f"state variable `{target}` holds {describe(declared)}, "
+                                  "but this array has any size", help=f"declare it `{declared.element.value}[]`")
+                    continue
                 self.flow(value, declared, assign.value.span, f"state variable `{target}`")
                 out.append(m.PostAction(m.StateRef(target), value, assign.span))
                 continue

@@ -15,8 +15,9 @@ from conftest import check_text
 from rdisc.diagnostics import Diagnostics
 from rdisc.emit import dump
 from rdisc.limits import MAX_ARRAY
-from rdisc.runtime import engine
+from rdisc.runtime import codec, engine
 from rdisc.semantics import budget, formats
+from rdisc.semantics import model as m
 from rdisc.syntax.parse import parse
 from rdisc.syntax.printer import print_module
 from tests.engine.test_one_engine import ScriptedPort, implementation_of, through_json
@@ -132,6 +133,14 @@ def test_a_count_over_the_bound_is_refused() -> None:
     assert engine.MAX_ARRAY == MAX_ARRAY
 
 
+def test_groups_before_the_count_field_and_values_after_the_group() -> None:
+    encoder = codec.encoder(m.Pack("<2(Bb)#B#(hB)H"))
+    data = encoder.encode("x", [(1, 2), (-1, -2), (300, -5, 7), (1, 2, 3), 9])
+    assert data.hex(" ") == "01 ff 02 fe 03 2c 01 01 fb ff 02 07 00 03 09 00"
+    assert codec.decoder(m.Unpack("<2(Bb)#B#(hB)H")).decode("x", data) == ((1, 2), (-1, -2), (300, -5, 7),
+                                                                              (1, 2, 3), 9)
+
+
 def test_the_layout_of_a_counted_group() -> None:
     layout = formats.struct_layout("<H#B2(bb)#(BH)I")
     assert layout.varying == formats.Varying("<HBbbbb", "BH", "I", 1, 255, "B", 1)
@@ -151,10 +160,10 @@ def test_the_layout_of_a_counted_group() -> None:
     ("<#B#(B)#(H)", "one group of a message is repeated as the message says, not two"),
     ("<#B#B#(H)", "a message has one count field `#B`, for its `#(...)` group"),
     ("<#h#(B)", "a count field is `#` and an unsigned integer code: `#B`, `#H`, `#I`, `#L` or `#Q`"),
-    ("B*(B)", "a group repeated as the message says needs a byte order (`<` or `>`): in host order, padding "
-              "would move with the count"),
-    ("<*(B)*", "`*` (the rest of the message) cannot follow a group repeated as the message says: where would "
-               "the group end?"),
+    ("B*(B)", ("a group repeated as the message says needs a byte order (`<` or `>`): in host order, padding "
+              "would move with the count")),
+    ("<*(B)*", ("`*` (the rest of the message) cannot follow a group repeated as the message says: where would "
+               "the group end?")),
     ("<B*B", "`*` (the rest of the message) comes last"),
     ("<#B#(Bs)", "`s` cannot be repeated in a group: a group holds int, float and bool codes, without counts"),
 ])
@@ -174,6 +183,8 @@ primitive unequal(a: int[2], b: int[3]) on port pack "<*(BB)" (a, b)
 primitive scalar(a: int) on port pack "<*(B)" (a)
 primitive unframed() on port pack "B" (1) unpack "<#B#(H)" { ids = out[0] }
 primitive any(a: int[]) on port frame f() pack "<*(H)" (a)
+state two: int[2]
+primitive fixed() on port frame f() pack "B" (1) unpack "<*(B)" { two = out[0] }
 """
 
 
@@ -209,7 +220,23 @@ error[E503]: the reply of `unframed` repeats a group as many times as the messag
   |
   = help: read it through a frame with a `length` field or constant bytes after its payload
 
-4 errors emitted
+warning[W103]: state variable `two` is never used
+  --> d.rdis:10:7
+   |
+10 | state two: int[2]
+   |       ^^^
+   |
+   = help: read it in an expression, write it in a post-action, or remove it
+
+error[E401]: state variable `two` holds an array int[2], but this array has any size
+  --> d.rdis:11:73
+   |
+11 | primitive fixed() on port frame f() pack "B" (1) unpack "<*(B)" { two = out[0] }
+   |                                                                         ^^^^^^
+   |
+   = help: declare it `int[]`
+
+5 errors, 1 warning emitted
 """
 
 
