@@ -197,8 +197,13 @@ may be an int setting. Wrong: `setting BAUD: int` (no default), `delay WAIT ms`,
     ("E301", "invalid-pack-format", """
 `pack` and `unpack` take Python struct format strings: an optional byte order
 (`<`, `>`, `!`, `=`, `@`) then codes such as `B` (unsigned byte), `h` (signed
-16-bit), `f` (float), with optional repeat counts. Pointer codes (`P`) are not
-allowed."""),
+16-bit), `f` (float), with optional repeat counts, and a final `*` for the rest of
+the message as bytes. Pointer codes (`P`) are not allowed. A group of int, float
+and bool codes repeats `N(BH)` N times (1 to 4096), or as many times as the message
+says: `#(BH)`, counted by one unsigned count field `#B` (or `#H`, ...) before it,
+or `*(BH)`, until the message ends, last. One such group a message, with a byte
+order (`<`, `>` or `!`). Wrong: `unpack "<B#(BH)"` (no count field),
+`unpack "<*(BH)B"` (not last). Right: `unpack "<#B#(BH)B"`, `unpack "<B*(BH)"`."""),
     ("E302", "format-argument-count", """
 The number of format arguments differs from the number of values the `pack` or
 `format` string takes. `pack ">Bhh"` takes three values; `format "D,{},{}"` two."""),
@@ -235,8 +240,10 @@ A constant cannot be represented where it goes: 300 does not fit pack code `B`
 not fit `f`; a constant argument is outside its parameter's range (a primitive's
 or a frame's: `frame dxl(id: int in 0..254)` refuses `dxl(300)`; bytes by their
 length: `data: bytes in 1..16` refuses `b""`); a frame field
-computed from constant arguments does not fit its code. At run time the same is
-an `RdisValueError`, raised before anything is written."""),
+computed from constant arguments does not fit its code; the arrays of a group
+repeated as the message says have sizes that differ, or more values than its
+count field holds (`#B` counts to 255: an `int[300]` needs `#H`). At run time the
+same is an `RdisValueError`, raised before anything is written."""),
     ("E404", "invalid-operation", """
 The operator or function does not apply to these types: arithmetic needs
 numbers (`+` also joins two strings or two bytes), bitwise operators and shifts
@@ -270,9 +277,13 @@ request as sent, in a reply); they come before the checksum."""),
 A length field holds the payload's size plus a constant, in a struct format of
 one unsigned integer. It must be able to hold the largest payload of every
 primitive that uses the frame (for a `*` rest of a `bytes` parameter, every
-length its range allows), and the frame's reply must let the reader find
-the end of the payload: a length field, a size fixed by the decoding, or
-constant bytes right after the payload."""),
+length its range allows; for a group repeated as the message says, its arrays'
+size, its count field's largest value or 1024 rounds), and the frame's reply must
+let the reader find the end of the payload: a length field, a size fixed by the
+decoding, or constant bytes right after the payload. A reply that ends in `*` or
+repeats a group as the message says (`#(BH)`, `*(BH)`) is read through such a
+frame. Wrong: `unpack "<B*(BH)"` without a frame. Right: the same with
+`frame f()` whose reply has a `length` field."""),
     ("E504", "frame-use", """
 A primitive's `frame NAME(args)` passes one argument per frame parameter. A
 primitive that decodes a reply needs a frame whose reply has a payload; a frame

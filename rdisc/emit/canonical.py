@@ -76,7 +76,7 @@ def _state(s: m.StateVariable) -> JsonObject:
     return _object(
         ("name", s.name),
         ("type", s.type.value),
-        ("value", _embedded(m.Const(s.initial, s.type))),
+        ("value", _embedded(m.Const(s.initial, s.type)) if s.initial != () else None),  # an open array starts empty
         ("doc", s.doc),
     )
 

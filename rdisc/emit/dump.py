@@ -94,13 +94,26 @@ def _payload_rows(encoding: m.Pack | m.Format, args: tuple[m.Expr, ...]) -> list
 
 def _rows(fmt: str, text: Callable[[int, int | None], str], given: list[Row | None] | None = None) -> list[Row]:
     """One row a value of the format, in wire order: a repeated group's arrays element by
-    element (`text(slot, element)`: `goal[0]`, `goal[1]`, ...); `given`, a value's own row
+    element (`text(slot, element)`: `goal[0]`, `goal[1]`, ...), a group repeated as the
+    message says once, as element `i`, after its count field; `given`, a value's own row
     where it has one."""
     layout = formats.struct_layout(fmt)
     groups = {first: (codes, count) for first, codes, count in layout.groups}
+    varying = layout.varying
     rows: list[Row] = []
     at = 0
-    while at < len(layout.slots):
+    while at <= len(layout.slots):
+        if varying is not None and at == varying.count_slot:
+            code = varying.count_code
+            rows.append((_size(fmt, code), f"count {_kind(fmt, code)}", "k (the rounds of the group)"))
+        if at == len(layout.slots):
+            break
+        if at in groups and not groups[at][1]:
+            codes = groups[at][0]
+            rows += [(None, f"{_kind(fmt, layout.slots[j].code)} x k", text(j, None) + "[i]")
+                     for j in range(at, at + codes)]
+            at += codes
+            continue
         if at in groups:
             codes, count = groups[at]
             for element in range(count):

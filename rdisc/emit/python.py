@@ -832,6 +832,7 @@ def _codec(codec: object) -> str:
         case engine.Pack() | engine.Unpack():
             options = (f", strings={codec.strings!r}" if codec.strings else "") + (", rest=True" if codec.rest else "")
             options += f", groups={codec.groups!r}" if codec.groups else ""
+            options += f", varying={codec.varying!r}" if codec.varying else ""
             return f"{type(codec).__name__}({quoted(codec.struct.format)}{options})"
         case engine.Format():
             return f"Format({quoted(codec.template)})"

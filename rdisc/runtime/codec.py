@@ -21,7 +21,8 @@ def encoder(encoding: m.Pack | m.Format) -> engine.Pack | engine.Format:
     match encoding:
         case m.Pack(format=fmt):
             layout = formats.struct_layout(fmt)
-            return engine.Pack(layout.fixed, _string_slots(fmt), layout.rest, layout.groups)
+            fixed, varying = _fixed(layout)
+            return engine.Pack(fixed, _string_slots(fmt), layout.rest, layout.groups, varying)
         case m.Format(template=template):
             return engine.Format(template)
 
@@ -30,7 +31,8 @@ def decoder(decoding: m.Unpack | m.Regex | None) -> engine.Unpack | engine.Match
     match decoding:
         case m.Unpack(format=fmt):
             layout = formats.struct_layout(fmt)
-            return engine.Unpack(layout.fixed, _string_slots(fmt), layout.rest, layout.groups)
+            fixed, varying = _fixed(layout)
+            return engine.Unpack(fixed, _string_slots(fmt), layout.rest, layout.groups, varying)
         case m.Regex(pattern=pattern):
             return engine.Match(pattern)
     return None
@@ -90,6 +92,13 @@ def _part(part: m.FramePart, index: dict[tuple[str, m.Expr], int]) -> engine.Par
         case m.FrameBits(format=fmt):
             return engine.Bits(fmt, *bit_fields(part, index))
     raise AssertionError(part)
+
+
+def _fixed(layout: formats.StructLayout) -> tuple[str, engine.Varying | None]:
+    """The engine's struct format and varying group: with a group repeated as the message says,
+    the format before it."""
+    v = layout.varying
+    return (layout.fixed, None) if v is None else (v.head, (v.unit, v.tail, v.count_at))
 
 
 def _string_slots(fmt: str) -> tuple[int, ...]:

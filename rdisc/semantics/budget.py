@@ -157,13 +157,17 @@ def exchange(model: m.Model, iface: m.Interface, connection: str) -> Exchange:
 
 def message_bytes(prim: m.Primitive, frames: dict[str, m.Frame] | None = None) -> int:
     """Bytes of the request and the reply, frames included (ASCII, and data of any
-    length, counted at their shortest)."""
+    length, counted at their shortest; a group repeated as the message says at its most
+    rounds: an array's size, its count field's largest value or MAX_ARRAY, no more than the
+    frame's length field states)."""
     frame = (frames or {}).get(prim.frame.frame) if prim.frame is not None else None
     match prim.encoding:
-        case m.Pack(format=fmt):
+        case m.Pack(format=fmt, grouped=grouped):
             rest = prim.args[-1] if prim.args else None  # constant bytes for a `*` rest have their size
             extra = len(rest.value) if isinstance(rest, m.Const) and isinstance(rest.value, bytes) else 0
-            request = formats.struct_layout(fmt).size + extra
+            layout = formats.struct_layout(fmt)
+            rounds = formats.most_rounds(layout, [prim.args[i].type for i in formats.varying_args(layout, grouped)])
+            request = layout.most(rounds) + extra
         case m.Format(template=template):
             values = [a.value if isinstance(a, m.Const) else _SAMPLE[a.type] for a in prim.args]
             request = len(template.format(*values).encode("utf-8"))
@@ -176,7 +180,11 @@ def message_bytes(prim: m.Primitive, frames: dict[str, m.Frame] | None = None) -
             framing += min((frame_bytes(parts, shortest=True) for parts in frame.replies), default=0)
     match prim.decoding:
         case m.Unpack(format=fmt):
-            reply = formats.struct_layout(fmt).size
+            layout = formats.struct_layout(fmt)
+            reply = layout.most(formats.most_rounds(layout, []))
+            if layout.varying is not None and frame is not None:
+                stated = [length_range(length)[1] for parts in frame.replies if (length := length_part(parts))]
+                reply = min([reply, *stated])
         case m.Regex(pattern=pattern):
             reply = formats.regex_min_length(pattern) + 1  # and its line terminator
         case None:

@@ -137,8 +137,9 @@ class _Checker:
 
     def type_name(self, ref: ast.TypeRef, what: str = "", open_size: bool = False) -> m.AnyType | None:
         """A type by name; `what` names a place that crosses to a framework (an adapter's
-        field), where bytes cannot go. An array's size is a constant; only an adapter's field
-        (`open_size`) leaves it out."""
+        field), where bytes cannot go. An array's size is a constant; an adapter's field, a
+        state variable and a parameter (`open_size`) may leave it out: an array of any size,
+        such as a reply's group repeated as the message says."""
         if isinstance(ref, ast.ArrayOf):
             return self.array_type(ref, what, open_size)
         found = _TYPES.get(ref.text)
@@ -163,7 +164,7 @@ class _Checker:
         if ref.size is None:
             if not open_size:
                 self.d.report("E105", ref.span, "an array's size is given: `int[6]`",
-                              help="only an adapter's field leaves it out, for the description to fix")
+                              help="only an adapter's field, a state variable and a parameter leave it out")
                 return None
             return m.Array(element, 0)
         size = self.setting(ref.size, "an array's size", MAX_ARRAY)
@@ -185,7 +186,7 @@ class _Checker:
                     labels=(Label(seen[p.name.text].name.span, "first declared here"),),
                 )
             seen[p.name.text] = p
-            type_ = self.type_name(p.type)
+            type_ = self.type_name(p.type, open_size=owner in ("primitive", "interface"))
             low, high = self.param_range(p, type_.element if isinstance(type_, m.Array) else type_)
             default = self.param_default(p, type_, low, high)
             if default is None and p.default is None and any(q.default is not None for q in params[: len(out)]):
@@ -260,7 +261,8 @@ class _Checker:
         if isinstance(source, m.Array) or isinstance(target, m.Array):
             element = unify(source, target) == target
             self.d.report("E401", span, f"{into} takes {describe(target)}, but this is {describe(source)}",
-                          help="an array's size and type are fixed: `int[6]` takes an int[6]" if not element else None)
+                          help="an array's size and type are fixed: `int[6]` takes an int[6]"
+                          if not element and not (isinstance(target, m.Array) and target.size == 0) else None)
             return
         if (source, target) == (Type.FLOAT, Type.INT):
             self.d.report(
@@ -444,7 +446,7 @@ class _Checker:
         return m.Adapter(decl.name.text, tuple(fields), message, id(decl) in self.s.standard, decl.doc, decl.span)
 
     def state(self, decl: ast.StateDecl) -> m.StateVariable:
-        type_ = self.type_name(decl.type)
+        type_ = self.type_name(decl.type, open_size=True)
         initial: object = type_.default() if type_ else None
         if decl.init is not None:
             errors = self.d.error_count
@@ -633,11 +635,10 @@ class _Checker:
         replies = [decoding] if decoding is not None else [c.decoding for c in table.cases] if table else []
         frame = (self.frame_use(framed, env, decl, encoding, replies, self.request_sizes(encoding, args, params))
                  if isinstance(framed, ast.Framed) else None)
-        if (any(isinstance(r, m.Unpack) and formats.struct_layout(r.format).rest for r in replies)
-                and (frame is None or not self.frames[frame.frame].reply) and not tagged):  # tagged: E505
+        open_ends = [why for r in replies if isinstance(r, m.Unpack) and (why := _open_end(r))]
+        if open_ends and (frame is None or not self.frames[frame.frame].reply) and not tagged:  # tagged: E505
             self.d.report("E503", decodings[0].span if decodings else name.span,
-                          f"the reply of `{name.text}` ends in `*` (the rest of the message), but no frame says "
-                          "where the reply ends",
+                          f"the reply of `{name.text}` {open_ends[0]}, but no frame says where the reply ends",
                           help="read it through a frame with a `length` field or constant bytes after its payload")
         if (tagged and frame is not None and self.frames[frame.frame].reply
                 and not payload_end_known(self.frames[frame.frame], False)):
@@ -798,8 +799,8 @@ class _Checker:
         """A tagged reply read without a frame: the entry's decoding says how many bytes follow the tag."""
         if isinstance(decoding, m.Regex):
             why = "it is a `regex`"
-        elif isinstance(decoding, m.Unpack) and formats.struct_layout(decoding.format).rest:
-            why = "it ends in `*` (the rest of the message)"
+        elif isinstance(decoding, m.Unpack) and (open_end := _open_end(decoding)):
+            why = f"it {open_end}"
         else:
             return
         which = f"tag {low}" if low == high else f"tags {low}..{high}"
@@ -835,6 +836,9 @@ class _Checker:
         if not isinstance(encoding, m.Pack):
             return None
         layout = formats.struct_layout(encoding.format)
+        if layout.varying is not None:
+            rounds = formats.most_rounds(layout, [args[i].type for i in formats.varying_args(layout, encoding.grouped)])
+            return layout.size, layout.most(rounds), f"a repeated group of up to {rounds} rounds"
         if not layout.rest:
             return layout.size, layout.size, ""
         rest = args[-1] if args else None
@@ -864,7 +868,7 @@ class _Checker:
         reply_sizes = []
         for decoding in replies:
             layout = formats.struct_layout(decoding.format) if isinstance(decoding, m.Unpack) else None
-            reply_sizes.append(layout.size if layout is not None and not layout.rest else None)
+            reply_sizes.append(layout.size if layout is not None and not layout.open_end else None)
         if any(not payload_end_known(frame, size is not None) for size in reply_sizes):
             self.d.report("E503", clause.span, f"the reply of frame `{frame.name}` gives no way to find where the "
                           f"payload of `{decl.name.text}` ends",
@@ -889,7 +893,8 @@ class _Checker:
             else:
                 self.d.report("E503", clause.span, f"{field} of frame `{frame.name}` "
                               f"cannot state every payload of `{decl.name.text}`: {fewest} to {most} bytes, as "
-                              f"{by} allows", help=f"{states}; narrow the range of {by}")
+                              f"{by} allows", help=f"{states}; " + (f"narrow the range of {by}" if "parameter" in by else
+                                                                   "give the group's arrays a fixed size, or fewer"))
         return m.FrameUse(m.FrameRef(frame.name), args)
 
     def frame_fields_fit(self, frame: m.Frame, clause: ast.Framed, args: tuple[m.Expr, ...]) -> None:
@@ -941,6 +946,7 @@ class _Checker:
         args = tuple(self.typer.expr(a, env) for a in enc.args)
         template = enc.template.value
         try:
+            layout = None
             if enc.kind == "pack":
                 layout = formats.struct_layout(template)
                 slots: tuple = layout.slots
@@ -986,9 +992,26 @@ class _Checker:
                 self.group_value(arg, expr, slot)
             else:
                 self.pack_value(self.typer.folded(arg), expr, slot)
+        if layout is not None and layout.varying is not None:
+            self.rounds_fit(layout, [(args[i], enc.args[i]) for i in formats.varying_args(layout, tuple(grouped))])
         if enc.kind == "pack":
             return m.Pack(template, tuple(grouped)), args
-        return (m.Pack(template) if enc.kind == "pack" else m.Format(template)), args
+        return m.Format(template), args
+
+    def rounds_fit(self, layout: formats.StructLayout, arrays: list[tuple[m.Expr, ast.Expr]]) -> None:
+        """The arrays of a group repeated as the message says: of one size where their sizes are
+        fixed, and no more than its count field holds."""
+        assert layout.varying is not None
+        sized = [(t.size, expr) for arg, expr in arrays if isinstance(t := arg.type, m.Array) and t.size]
+        if any(size != sized[0][0] for size, _ in sized):
+            size, expr = next((size, expr) for size, expr in sized if size != sized[0][0])
+            self.d.report("E403", expr.span, f"the arrays of a repeated group have one size, but this one has {size} "
+                          f"values and the first {sized[0][0]}", labels=(Label(sized[0][1].span, "the first"),))
+        high = layout.varying.count_high
+        if high and sized and max(size for size, _ in sized) > high:
+            size, expr = max(sized, key=lambda item: item[0])
+            self.d.report("E403", expr.span, f"the count field `#{layout.varying.count_code}` holds at most {high}, but this array "
+                          f"has {size} values", help="count the group with a wider field: `#H`")
 
     def native_warning(self, lit: ast.StrLit) -> None:
         self.d.report(
@@ -998,10 +1021,10 @@ class _Checker:
         )
 
     def group_value(self, arg: m.Expr, expr: ast.Expr, slot: formats.Slot) -> None:
-        """A repeated group's code takes an array of the group's count, each element as the
-        code takes a value."""
-        code = f"`{slot.code}` of a group of {slot.repeat}"
-        self.flow(arg, m.Array(slot.type, slot.repeat), expr.span, f"pack code {code}")
+        """A repeated group's code takes an array of the group's count (of any size when the
+        message says it), each element as the code takes a value."""
+        code = f"`{slot.code}` of a group of {slot.repeat}" if slot.repeat > 0 else f"`{slot.code}` of a repeated group"
+        self.flow(arg, m.Array(slot.type, max(slot.repeat, 0)), expr.span, f"pack code {code}")
         value = self.typer.constant(arg)
         if isinstance(value, tuple) and slot.low is not None:
             for item in value:
@@ -1044,7 +1067,7 @@ class _Checker:
                 layout = formats.struct_layout(template)
                 if layout.native:
                     self.native_warning(dec.template)
-                return m.Unpack(template), tuple(m.Array(s.type, s.repeat) if s.repeat else s.type
+                return m.Unpack(template), tuple(m.Array(s.type, max(s.repeat, 0)) if s.repeat else s.type
                                                  for s in layout.slots)
             groups = formats.regex_groups(template)
             return m.Regex(template), (Type.STRING,) * groups
@@ -1081,6 +1104,11 @@ class _Checker:
                               labels=(Label(first.target.span, "first assigned here"),))
             if assign.index is None:
                 written[target] = assign
+                if isinstance(declared, m.Array) and declared.size and isinstance(value.type, m.Array) \
+                        and not value.type.size:  # nothing would check its size when it runs
+                    self.d.report("E401", assign.value.span, f"state variable `{target}` holds {describe(declared)}, "
+                                  "but this array has any size", help=f"declare it `{declared.element.value}[]`")
+                    continue
                 self.flow(value, declared, assign.value.span, f"state variable `{target}`")
                 out.append(m.PostAction(m.StateRef(target), value, assign.span))
                 continue
@@ -1440,3 +1468,13 @@ def _count(n: int, noun: str) -> str:
 def _values_span(entry: ast.ReplyEntry) -> Span:
     """Where a reply table's entry says its value, or its range of values."""
     return entry.value.span if entry.last is None else entry.value.span.to(entry.last.span)
+
+
+def _open_end(decoding: m.Unpack) -> str:
+    """What makes a reply's size unknown until it is read ("" when nothing does)."""
+    layout = formats.struct_layout(decoding.format)
+    if layout.rest:
+        return "ends in `*` (the rest of the message)"
+    if layout.varying is not None:
+        return "repeats a group as many times as the message says"
+    return ""

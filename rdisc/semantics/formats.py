@@ -13,8 +13,9 @@ import string
 import struct
 from dataclasses import dataclass
 
+from rdisc.limits import MAX_ARRAY
 from rdisc.semantics import regex_shape
-from rdisc.semantics.model import Type
+from rdisc.semantics.model import AnyType, Array, Type
 
 MAX_REPEAT = 4096
 MAX_MESSAGE = 65536  # bytes of one request or reply
@@ -36,7 +37,29 @@ class Slot:
     type: Type
     low: int | None = None  # integer range, when the code has one
     high: int | None = None
-    repeat: int = 0  # in a repeated group `6(BH)`: the group's count (the value is an array of it)
+    repeat: int = 0  # in a repeated group `6(BH)`: the group's count (the value is an array of it); -1 in a
+    # group repeated as the message says (`#(BH)`, `*(BH)`), whose value is an array of any size
+
+
+@dataclass(frozen=True, slots=True)
+class Varying:
+    """A group repeated as many times as the message says, after `head` (a struct format
+    with its byte order) and before `tail`: `#(BH)` as many times as the count field `#B`
+    in the head says (its index among the head's values: `count_at`), `*(BH)` until the
+    message ends (`count_at` -1). The count field takes and gives no value: a request
+    computes it from the arrays' length, a reply's arrays have its length."""
+
+    head: str
+    unit: str  # the group's codes, once
+    tail: str
+    count_at: int
+    count_high: int = 0  # the largest count the count field holds, at most MAX_ARRAY (0: no count field)
+    count_code: str = ""
+    count_slot: int = -1  # the slot the count field comes before (its place among the values)
+
+    @property
+    def unit_size(self) -> int:
+        return struct.calcsize(self.head[:1] + self.unit)
 
 
 @dataclass(frozen=True, slots=True)
@@ -47,6 +70,16 @@ class StructLayout:
     rest: bool = False  # ends in `*`: the rest of the message, as bytes
     fixed: str = ""  # the format without its `*` and with its groups written out, for the struct module
     groups: tuple[tuple[int, int, int], ...] = ()  # each repeated group: (its first slot, its codes, its count)
+    varying: Varying | None = None  # a group repeated as the message says (its count 0 in `groups`)
+
+    @property
+    def open_end(self) -> bool:
+        """Whether the message's size is not the format's: something must say where it ends."""
+        return self.rest or self.varying is not None
+
+    def most(self, count: int) -> int:
+        """The size of the message with `count` rounds of its varying group (its size without one)."""
+        return self.size + (self.varying.unit_size * count if self.varying is not None else 0)
 
 
 def split_rest(fmt: str) -> tuple[str, bool]:
@@ -58,43 +91,86 @@ def split_rest(fmt: str) -> tuple[str, bool]:
 _INT_CODES = "bBhHiIlLqQnN"
 _STANDARD_SIZES = {"b": 1, "B": 1, "h": 2, "H": 2, "i": 4, "I": 4, "l": 4, "L": 4, "q": 8, "Q": 8}
 _STRUCT_ITEM = re.compile(r"\s*(\d*)\s*([a-zA-Z?])")
-_GROUP = re.compile(r"\s*(\d+)\s*\(([^()]*)\)")  # `6(BH)`: a repeated group
+_GROUP = re.compile(r"\s*(\d+|#|\*)\s*\(([^()]*)\)")  # `6(BH)`: a repeated group; `#(BH)`, `*(BH)`: as the message says
+_COUNT = re.compile(r"\s*#\s*([a-zA-Z?]?)")  # `#B`: the count field of the `#(...)` group
 
 
 def struct_layout(fmt: str) -> StructLayout:
     """The values a struct format packs or unpacks, one slot per value. A final `*`
-    stands for the rest of the message: one value of bytes, of any length."""
+    stands for the rest of the message: one value of bytes, of any length. One group may be
+    repeated as the message says: `#(BH)`, counted by a field `#B` before it, or `*(BH)`,
+    until the message ends (see `Varying`)."""
     fmt, rest = split_rest(fmt)
     for at, ch in enumerate(fmt):  # struct reads only ASCII (its digits, not `١`), and no line breaks
         if not ch.isascii() or ch in "\n\r\x0b\x0c":
             raise TemplateError(f"{ch!r} is not a struct format code (they are ASCII letters and digits)", at)
-    if "*" in fmt:
-        raise TemplateError("`*` (the rest of the message) comes last", fmt.index("*"))
+    star = re.search(r"\*(?!\s*\()", fmt)
+    if star is not None:
+        raise TemplateError("`*` (the rest of the message) comes last", star.start())
     order = fmt[:1] if fmt[:1] in "@=<>!" else ""
     body = fmt[len(order) :]
     slots: list[Slot] = []
     groups: list[tuple[int, int, int]] = []
     written: list[str] = []  # the body with each group written out
+    wire = 0  # the values the struct module packs so far
+    count: tuple[int, str, int, int] | None = None  # the count field `#B`: its value's index, code, offset, slot
+    varying: tuple[int, str, int] | None = None  # the varying group: its place in `written`, its codes, its offset
     pos = 0
     while pos < len(body):
         if body[pos].isspace():
             pos += 1
             continue
+        offset = len(order) + pos
         group = _GROUP.match(body, pos)
         if group is not None:
-            written.append(_group(group, len(order), slots, groups))
+            codes = _group(group, len(order), slots, groups)
+            kind = group.group(1)
+            if kind in "#*":
+                if varying is not None:
+                    raise TemplateError("one group of a message is repeated as the message says, not two", offset,
+                                        len(group.group().strip()))
+                if kind == "#" and count is None:
+                    raise TemplateError("a `#(...)` group is counted by a field before it: `<#B #(BH)`", offset)
+                if kind == "*" and count is not None:
+                    raise TemplateError("a `*(...)` group is repeated until the message ends: it has no count "
+                                        "field `#B`", count[2], 2)
+                if kind == "*" and body[group.end() :].strip():
+                    raise TemplateError("a `*(...)` group is repeated until the message ends, so it comes last",
+                                        offset, len(group.group().strip()))
+                if rest:
+                    raise TemplateError("`*` (the rest of the message) cannot follow a group repeated as the message "
+                                        "says: where would the group end?", len(fmt))
+                if order in ("", "@"):
+                    raise TemplateError("a group repeated as the message says needs a byte order (`<` or `>`): "
+                                        "in host order, padding would move with the count", offset)
+                varying = (len(written), codes, offset)
+            else:
+                written.append(codes * groups[-1][2])
+                wire += len(codes) * groups[-1][2]
             pos = group.end()
             continue
+        counted = _COUNT.match(body, pos)
+        if counted is not None:
+            code = counted.group(1)
+            if not code or code not in "BHILQ":
+                raise TemplateError("a count field is `#` and an unsigned integer code: `#B`, `#H`, `#I`, `#L` or "
+                                    "`#Q`", offset, len(counted.group().strip()))
+            if count is not None:
+                raise TemplateError("a message has one count field `#B`, for its `#(...)` group", offset, 2)
+            count = (wire, code, offset, len(slots))
+            written.append(code)
+            wire += 1
+            pos = counted.end()
+            continue
         m = _STRUCT_ITEM.match(body, pos)
-        offset = len(order) + pos
-        if re.match(r"\s*\d+\s*\(", body[pos:]):
+        if re.match(r"\s*(\d+|#|\*)\s*\(", body[pos:]):
             raise TemplateError("a repeated group `N(codes)` is closed by `)`, and holds no group", offset)
         if not m:
             raise TemplateError(f"`{body[pos]}` is not a struct format code", offset)
         count_text, code = m.groups()
-        count = int(count_text) if count_text else 1
-        if count > MAX_REPEAT:
-            raise TemplateError(f"repeat count {count} is larger than {MAX_REPEAT}", offset, len(m.group().strip()))
+        n = int(count_text) if count_text else 1
+        if n > MAX_REPEAT:
+            raise TemplateError(f"repeat count {n} is larger than {MAX_REPEAT}", offset, len(m.group().strip()))
         code_at = len(order) + m.end() - 1
         if code == "P":
             raise TemplateError("pointer code `P` has no meaning on a wire", code_at)
@@ -104,42 +180,53 @@ def struct_layout(fmt: str) -> StructLayout:
             bits = 8 * (_STANDARD_SIZES.get(code) or struct.calcsize(code))
             signed = code.islower()
             low, high = (-(1 << (bits - 1)), (1 << (bits - 1)) - 1) if signed else (0, (1 << bits) - 1)
-            slots.extend([Slot(code, Type.INT, low, high)] * count)
+            slots.extend([Slot(code, Type.INT, low, high)] * n)
         elif code in "efd":
-            slots.extend([Slot(code, Type.FLOAT)] * count)
+            slots.extend([Slot(code, Type.FLOAT)] * n)
         elif code == "?":
-            slots.extend([Slot(code, Type.BOOL)] * count)
+            slots.extend([Slot(code, Type.BOOL)] * n)
         elif code in "sp":
-            slots.append(Slot(f"{count}{code}", Type.STRING))
+            slots.append(Slot(f"{n}{code}", Type.STRING))
         elif code == "c":
-            slots.extend([Slot(code, Type.STRING)] * count)
+            slots.extend([Slot(code, Type.STRING)] * n)
         elif code == "x":
             pass
         else:
             raise TemplateError(f"`{code}` is not a struct format code", code_at)
         written.append(m.group())
+        wire += 0 if code == "x" else 1 if code in "sp" else n
         pos = m.end()
+    if count is not None and varying is None:
+        raise TemplateError("a count field `#B` counts a `#(...)` group after it, and there is none", count[2], 2)
     if groups and any(s.type is Type.STRING for s in slots):
         raise TemplateError("a format with a repeated group holds numbers and bools only", 0, len(fmt))
-    fmt = order + "".join(written)
+    fixed = order + "".join(written)
     try:
-        size = struct.calcsize(fmt)
+        size = struct.calcsize(fixed)
     except struct.error as err:
         raise TemplateError(f"invalid struct format: {err}", 0, len(fmt)) from None
     if size > MAX_MESSAGE:
-        raise TemplateError(f"the message is {size} bytes; the limit is {MAX_MESSAGE}", 0, len(fmt))
+        raise TemplateError(f"the message is {size} bytes; the limit is {MAX_MESSAGE}", 0, len(fixed))
     native = order in ("", "@") and any(c in "hHiIlLqQnNefd" for c in body)
     if rest:
         slots.append(Slot("*", Type.BYTES))
-    return StructLayout(tuple(slots), size, native, rest, fmt, tuple(groups))
+    shape = None
+    if varying is not None:
+        at, codes, _ = varying
+        high = min(MAX_ARRAY, (1 << 8 * _STANDARD_SIZES[count[1]]) - 1) if count is not None else 0
+        shape = Varying(order + "".join(written[:at]), codes, "".join(written[at:]),
+                        *((count[0], high, count[1], count[3]) if count is not None else (-1,)))
+    return StructLayout(tuple(slots), size, native, rest, fixed, tuple(groups), shape)
 
 
 def _group(group: re.Match[str], at: int, slots: list[Slot], groups: list[tuple[int, int, int]]) -> str:
-    """A repeated group `N(codes)`: one slot per code, each taking or giving an array of N
-    values; the codes as the struct module reads them, written out N times."""
-    count, inner = int(group.group(1)), group.group(2)
+    """A repeated group `N(codes)`, `#(codes)` or `*(codes)`: one slot per code, each taking or
+    giving an array of N values (of any size for `#` and `*`, count 0 in `groups`); the
+    group's codes once, as the struct module reads them."""
+    varying = group.group(1) in "#*"
+    count, inner = (0 if varying else int(group.group(1))), group.group(2)
     offset = at + group.start(2)
-    if not 1 <= count <= MAX_REPEAT:
+    if not varying and not 1 <= count <= MAX_REPEAT:
         raise TemplateError(f"a group repeats 1 to {MAX_REPEAT} times, not {count}", at + group.start(1),
                             len(group.group(1)))
     codes = [(i, ch) for i, ch in enumerate(inner) if not ch.isspace()]
@@ -151,9 +238,30 @@ def _group(group: re.Match[str], at: int, slots: list[Slot], groups: list[tuple[
         if inner_layout is None or len(inner_layout.slots) != 1 or inner_layout.slots[0].type is Type.STRING:
             raise TemplateError(f"`{ch}` cannot be repeated in a group: a group holds int, float and bool codes, "
                                 "without counts", offset + i)
-        slots.append(dataclasses.replace(inner_layout.slots[0], repeat=count))
+        slots.append(dataclasses.replace(inner_layout.slots[0], repeat=-1 if varying else count))
     groups.append((first, len(codes), count))
-    return "".join(ch for _, ch in codes) * count
+    return "".join(ch for _, ch in codes)
+
+
+def varying_args(layout: StructLayout, grouped: tuple[int, ...]) -> list[int]:
+    """Of the arguments that fill a request's groups (`grouped`, in order), those that fill its
+    group repeated as the message says."""
+    at = 0
+    for _, codes, count in layout.groups:
+        if not count:
+            return list(grouped[at : at + codes])
+        at += codes
+    return []
+
+
+def most_rounds(layout: StructLayout, types: list[AnyType | None]) -> int:
+    """The most rounds of a varying group filled by arrays of these types: the size of one of a
+    fixed size, else what its count field holds, at most MAX_ARRAY."""
+    sizes = [t.size for t in types if isinstance(t, Array) and t.size]
+    if sizes:
+        return min(sizes)
+    return layout.varying.count_high if layout.varying is not None and layout.varying.count_high else MAX_ARRAY
+
 
 @dataclass(frozen=True, slots=True)
 class FormatField:

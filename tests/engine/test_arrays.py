@@ -107,7 +107,7 @@ def test_arrays_go_through_json_the_printer_and_dump(tmp_path: Path, rdisc) -> N
 
 HEAD = 'robot a { author "tests" }\nconnection link: serial { baud 9600 }\n'
 REFUSED = {
-    "an open size": ("state p: int[]", "error[E105]: an array's size is given: `int[6]`"),
+    "an open size": ("setting p: int[] = [1]", "error[E105]: an array's size is given: `int[6]`"),
     "a size of 0": ("state p: int[0]", "error[E204]: an array's size is a whole number, 1 or more, not 0"),
     "bytes": ("state p: bytes[2]", "error[E105]: an array holds ints, floats, bools or strings, not `bytes`"),
     "a constant index outside": ('state p: int[3]\nprimitive r() on link pack "B" (p[3])',

@@ -54,6 +54,7 @@ IoCallback = Callable[[str, str, bytes], object]
 lines a primitive set, as ASCII text such as b"dtr=0 rts=1"."""
 
 MAX_INT = (1 << 64) - 1  # the largest int a state variable holds (and its negation the smallest)
+MAX_ARRAY = 1024  # the most elements an array holds, and rounds a group repeated as a message says
 MAX_LINE = 4096
 """Bytes of one reply line, terminator included."""
 
@@ -759,7 +760,17 @@ def _string_sizes(fmt: str) -> dict[int, int]:
 
 
 Group = tuple[int, int, int]
-"""A repeated group of a struct format: its first value, its number of codes, its count."""
+"""A repeated group of a struct format: its first value, its number of codes, its count (0:
+as many as the message says)."""
+
+Varying = tuple[str, str, int]
+"""A group repeated as many times as the message says: its codes once, the format after it,
+and the index of its count field among the values before it (-1: until the message ends)."""
+
+
+def _counted(groups: tuple[Group, ...], rounds: int) -> tuple[Group, ...]:
+    """The groups with the varying one's count set."""
+    return tuple((first, codes, count or rounds) for first, codes, count in groups)
 
 
 def _interleaved(owner: str, values: Sequence[Value], groups: tuple[Group, ...]) -> list[Any]:
@@ -799,20 +810,25 @@ class Pack:
     """A request packed with a struct format: the values at `strings` as latin-1 bytes
     (refused when longer than their `Ns` holds: struct would cut them short), the arrays
     of repeated `groups` element by element, and, with `rest` (a format ending in `*`),
-    the last value, bytes, appended as it is."""
+    the last value, bytes, appended as it is. With `varying`, `fixed` is the format before
+    that group, repeated as many times as its arrays hold values, and its count field
+    computed."""
 
-    __slots__ = ("groups", "rest", "sizes", "strings", "struct")
+    __slots__ = ("groups", "rest", "sizes", "strings", "struct", "varying")
 
     def __init__(self, fixed: str, strings: tuple[int, ...] = (), rest: bool = False,
-                 groups: tuple[Group, ...] = ()) -> None:
+                 groups: tuple[Group, ...] = (), varying: Varying | None = None) -> None:
         self.struct = struct.Struct(fixed)
         self.strings = strings
         self.rest = rest
         self.sizes = _string_sizes(fixed)
         self.groups = groups
+        self.varying = varying
 
     def encode(self, owner: str, values: Sequence[Value]) -> bytes:
         try:
+            if self.varying is not None:
+                return self._varying(owner, values, self.varying)
             if self.groups:
                 values = _interleaved(owner, values, self.groups)
             if not self.strings and not self.rest:
@@ -831,6 +847,25 @@ class Pack:
             assert isinstance(tail, bytes)
             return fixed + tail
         return fixed
+
+    def _varying(self, owner: str, values: Sequence[Value], varying: Varying) -> bytes:
+        """The arrays of the varying group, all of one length, give its rounds and its count."""
+        unit, tail, count_at = varying
+        first, codes = next((first, codes) for first, codes, count in self.groups if not count)
+        lengths = {len(array) for array in values[first : first + codes]}  # type: ignore[arg-type]
+        if len(lengths) > 1:
+            raise RdisValueError(f"{owner}: the arrays of a repeated group have one length, not "
+                                 f"{' and '.join(map(str, sorted(lengths)))}")
+        rounds = lengths.pop()
+        if rounds > MAX_ARRAY:
+            raise RdisValueError(f"{owner}: a group is repeated at most {MAX_ARRAY} times, not {rounds}")
+        flat = _interleaved(owner, values, _counted(self.groups, rounds))
+        if count_at >= 0:
+            flat.insert(count_at, rounds)
+        try:
+            return struct.pack(self.struct.format + unit * rounds + tail, *flat)
+        except struct.error as err:  # a value out of its code's range, the count field's among them
+            raise RdisValueError(f"{owner}: {err} ({rounds} groups)") from None
 
 
 class Format:
@@ -852,21 +887,25 @@ class Format:
 class Unpack:
     """A reply decoded with a struct format: exactly its size or, with `rest`, its fixed
     part and then the rest as bytes; the values at `strings` as latin-1 text, each repeated
-    group's values as one array a code."""
+    group's values as one array a code. With `varying`, `fixed` is the format before that
+    group, repeated as many times as its count field says or as fill the reply."""
 
-    __slots__ = ("groups", "rest", "size", "strings", "struct")
+    __slots__ = ("groups", "rest", "size", "strings", "struct", "varying")
 
     def __init__(self, fixed: str, strings: tuple[int, ...] = (), rest: bool = False,
-                 groups: tuple[Group, ...] = ()) -> None:
+                 groups: tuple[Group, ...] = (), varying: Varying | None = None) -> None:
         self.struct = struct.Struct(fixed)
         self.strings = strings
         self.rest = rest
-        self.size = -1 if rest else self.struct.size  # -1: the frame says where the reply ends
+        self.size = -1 if rest or varying else self.struct.size  # -1: the frame says where the reply ends
         self.groups = groups
+        self.varying = varying
 
     def decode(self, owner: str, data: bytes) -> tuple[Value, ...]:
         layout = self.struct
         values: tuple[Any, ...]
+        if self.varying is not None:
+            return self._varying(owner, data, self.varying)
         if self.rest:
             if len(data) < layout.size:
                 raise RdisProtocolError(f"{owner}: expected {layout.size} bytes or more, got {len(data)}")
@@ -883,6 +922,34 @@ class Unpack:
                 decoded[i] = decoded[i].decode("latin-1")
             return tuple(decoded)
         return values
+
+    def _varying(self, owner: str, data: bytes, varying: Varying) -> tuple[Value, ...]:
+        """The rounds the count field says, or as many as the bytes after the head and before
+        the tail hold whole; the count field's own value dropped."""
+        unit, tail, count_at = varying
+        order = self.struct.format[:1]
+        unit_size, tail_size = struct.calcsize(order + unit), struct.calcsize(order + tail)
+        head = self.struct.size
+        if len(data) < head + tail_size:
+            raise RdisProtocolError(f"{owner}: expected {head + tail_size} bytes or more, got {len(data)}")
+        if count_at >= 0:
+            rounds = self.struct.unpack_from(data)[count_at]
+            if rounds > MAX_ARRAY:
+                raise RdisProtocolError(f"{owner}: the reply counts {rounds} groups; at most {MAX_ARRAY} are read")
+            if len(data) != head + unit_size * rounds + tail_size:
+                raise RdisProtocolError(f"{owner}: {rounds} groups make {head + unit_size * rounds + tail_size} "
+                                        f"bytes, got {len(data)}")
+        else:
+            rounds, extra = divmod(len(data) - head - tail_size, unit_size)
+            if extra:
+                raise RdisProtocolError(f"{owner}: {len(data) - head} bytes after the first {head} are not whole "
+                                        f"groups of {unit_size}")
+            if rounds > MAX_ARRAY:
+                raise RdisProtocolError(f"{owner}: the reply holds {rounds} groups; at most {MAX_ARRAY} are read")
+        values = list(struct.unpack(self.struct.format + unit * rounds + tail, data))
+        if count_at >= 0:
+            del values[count_at]
+        return _regrouped(values, _counted(self.groups, rounds))
 
 
 class Match:
