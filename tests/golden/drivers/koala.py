@@ -2293,8 +2293,9 @@ def _time(stamp: int) -> dict[str, int]:
 
 
 class Recorder:
-    """A session written to an MCAP file of ROS 2 messages (Foxglove and `ros2 bag` open it;
-    `rdisc replay` runs it again through a description).
+    """A session written to an MCAP file of ROS 2 messages in the `ros2` profile (the tests
+    read it back with rosbags, an independent reader; `rdisc replay` runs it again through a
+    description).
 
     Topics: each input called and each output delivered on `/NAME`, as its adapter's ROS 2
     message (`Device.messages`), or, for an adapter without one, its fields as JSON in a
