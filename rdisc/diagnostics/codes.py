@@ -338,9 +338,12 @@ A tagged reply (`reply tag "B" { ... }`) is chosen by the integer at its start,
 whose struct format is one integer code. Read through a frame, the frame must say
 where the reply ends. Read without one (Firmata's stream, where the first byte
 says what follows), the entry the tag chooses says how many bytes follow it, so
-each entry has a fixed size: an `unpack` without `*`, not a `regex`. Wrong:
-`0xF0: unpack "B*"`. Right: `0xE0..0xEF: unpack "BB" { pin = tag & 0x0F }`, two
-bytes after any tag from 0xE0 to 0xEF, whose value the entry reads as `tag`."""),
+each entry has a fixed size: an `unpack` without `*`, not a `regex`, unless it is
+read to an end marker: `until "\\xF7"` (1 to 8 bytes, only in such a table) reads to
+those bytes, drops them and decodes the rest with an `unpack` ending in `*`.
+Wrong: `0xF0: unpack "B*"`. Right: `0xE0..0xEF: unpack "BB" { pin = tag & 0x0F }`,
+two bytes after any tag from 0xE0 to 0xEF, whose value the entry reads as `tag`;
+`0xF0: unpack "B*" until "\\xF7"`, a Firmata sysex message."""),
     # -- the body -------------------------------------------------------------
     ("E601", "body-tree", """
 A robot's body is one tree of links: one root (the base, the child of no joint),

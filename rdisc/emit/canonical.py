@@ -167,7 +167,9 @@ def _primitive(x: m.Primitive) -> JsonObject:
 def _case(c: m.ReplyCase) -> JsonObject:
     kind, template = ("unpack", c.decoding.format) if isinstance(c.decoding, m.Unpack) else ("regex", c.decoding.pattern)
     actions = [line for a in c.actions for line in actions_text(a)]
-    return _object(("value", c.value), ("last", c.last), (kind, template), ("postActions", actions or None))
+    until = c.decoding.until if isinstance(c.decoding, m.Unpack) else None
+    return _object(("value", c.value), ("last", c.last), (kind, template), ("until", until),
+                   ("postActions", actions or None))
 
 
 def _ranges(params: tuple[m.Parameter, ...]) -> list[list[int | float] | None] | None:

@@ -172,8 +172,11 @@ def _code_format(fmt: str, code: str) -> str:
 
 def _reply_rows(decoding: m.Unpack | m.Regex | None) -> list[Row]:
     match decoding:
-        case m.Unpack(format=fmt):
-            return _rows(fmt, lambda j, k: f"out[{j}]" if k is None else f"out[{j}][{k}]")
+        case m.Unpack(format=fmt, until=until):
+            rows = _rows(fmt, lambda j, k: f"out[{j}]" if k is None else f"out[{j}][{k}]")
+            if until is not None:
+                rows.append((len(until), "end (dropped)", _hex(until.encode("latin-1"))))
+            return rows
         case m.Regex(pattern=pattern):
             return [(None, "text", f"regex {spell_template(pattern)}")]
         case None:

@@ -29,10 +29,11 @@ def encoder(encoding: m.Pack | m.Format) -> engine.Pack | engine.Format:
 
 def decoder(decoding: m.Unpack | m.Regex | None) -> engine.Unpack | engine.Match | None:
     match decoding:
-        case m.Unpack(format=fmt):
+        case m.Unpack(format=fmt, until=until):
             layout = formats.struct_layout(fmt)
             fixed, varying = _fixed(layout)
-            return engine.Unpack(fixed, _string_slots(fmt), layout.rest, layout.groups, varying)
+            return engine.Unpack(fixed, _string_slots(fmt), layout.rest, layout.groups, varying,
+                                 None if until is None else until.encode("latin-1"))
         case m.Regex(pattern=pattern):
             return engine.Match(pattern)
     return None

@@ -179,9 +179,9 @@ def message_bytes(prim: m.Primitive, frames: dict[str, m.Frame] | None = None) -
         if prim.expects_reply(frames or {}):
             framing += min((frame_bytes(parts, shortest=True) for parts in frame.replies), default=0)
     match prim.decoding:
-        case m.Unpack(format=fmt):
+        case m.Unpack(format=fmt, until=until):
             layout = formats.struct_layout(fmt)
-            reply = layout.most(formats.most_rounds(layout, []))
+            reply = layout.most(formats.most_rounds(layout, [])) + len(until or "")  # and its end marker
             if layout.varying is not None and frame is not None:
                 stated = [length_range(length)[1] for parts in frame.replies if (length := length_part(parts))]
                 reply = min([reply, *stated])

@@ -16,10 +16,10 @@ from rdisc.diagnostics import Diagnostics, Label, abbreviate
 from rdisc.limits import MAX_ARRAY, MAX_INT
 from rdisc.semantics import formats, ros
 from rdisc.semantics import model as m
+from rdisc.semantics.body import BodyRules
 from rdisc.semantics.frames import FrameRules, length_part, length_range, length_words, payload_end_known
 from rdisc.semantics.model import Scope, Type
 from rdisc.semantics.operators import shown
-from rdisc.semantics.body import BodyRules
 from rdisc.semantics.resolve import Symbols, Unit, check_name, suggest
 from rdisc.semantics.types import Env, Typer, describe, unify
 from rdisc.source import Span
@@ -768,7 +768,9 @@ class _Checker:
                 continue
             seen.update(dict.fromkeys(range(low, high + 1), entry))
             decoding, reply = self.decoding(entry.decoding)
-            if clause.tag is not None and unframed:
+            if entry.until is not None:
+                decoding = self.until(entry, decoding, name, clause.tag is not None and unframed)
+            elif clause.tag is not None and unframed:
                 self.sized_entry(entry, decoding, name, low, high)
             actions: tuple[m.PostAction, ...] = ()
             if entry.actions is not None:
@@ -808,6 +810,31 @@ class _Checker:
                       f"{which} needs a fixed size, but {why}",
                       help="decode it with an `unpack` of a fixed size, or read the reply through a frame that says "
                       "where it ends")
+
+    def until(self, entry: ast.ReplyEntry, decoding: m.Unpack | m.Regex | None, name: ast.Ident,
+              unframed_tag: bool) -> m.Unpack | None:
+        """`until "\\xF7"`: an unframed tagged reply's entry read to its end marker (Firmata's sysex),
+        the marker dropped and what is before it decoded by an `unpack` ending in `*`."""
+        until = entry.until
+        assert until is not None
+        if not unframed_tag:
+            self.d.report("E505", until.span, f"`until` is for a tagged reply read without a frame, and `{name.text}`"
+                          " does not read one", help="a frame, or a reply table's key, already says where it ends")
+            return None
+        if not 1 <= len(until.value) <= MAX_TERMINATOR or any(ord(ch) > 0xFF for ch in until.value):
+            self.d.report("E505", until.span, f"`until` is 1 to {MAX_TERMINATOR} bytes (characters up to \\xff)")
+            return None
+        if not isinstance(decoding, m.Unpack):
+            if decoding is not None:
+                self.d.report("E505", entry.decoding.span, "an entry read `until` its end is decoded by an `unpack`")
+            return None
+        layout = formats.struct_layout(decoding.format)
+        if not layout.rest or layout.varying is not None:
+            self.d.report("E505", entry.decoding.span, "an entry read `until` its end takes what comes before the "
+                          "end as bytes: its `unpack` ends in `*`",
+                          help='e.g. `0xF0: unpack "B*" until "\\xF7"`, the bytes of a Firmata sysex message')
+            return None
+        return m.Unpack(decoding.format, until.value)
 
     def entry_values(self, entry: ast.ReplyEntry, tag_slot: formats.Slot | None) -> tuple[int, int] | None:
         """The first and last value a reply table's entry is for (`VALUE`, or `LOW..HIGH`),

@@ -334,9 +334,11 @@ class Format:
 
 @dataclass(frozen=True, slots=True)
 class Unpack:
-    """Fixed-width raw reply: a struct format."""
+    """Fixed-width raw reply: a struct format. With `until`, an unframed tagged reply's entry
+    reads to those bytes (Firmata's sysex, ended by 0xF7) and its `*` rest takes what is before."""
 
     format: str
+    until: str | None = None  # latin-1 text, as a connection's terminator
 
 
 @dataclass(frozen=True, slots=True)

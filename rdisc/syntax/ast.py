@@ -330,6 +330,7 @@ class ReplyEntry:
     actions: Actions | None
     span: Span = _span
     last: Expr | None = None  # HIGH of a range entry
+    until: StrLit | None = None  # `until "\xF7"`: read to these bytes (an unframed tagged reply's entry)
 
 
 @dataclass(frozen=True, slots=True)

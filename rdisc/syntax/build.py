@@ -363,10 +363,11 @@ def _transformer_class():
             return ast.ReplyTable(ast.Ident("tag", tag.span), tuple(c[1:]), self.b.span(meta), tag)
 
         def reply_entry(self, meta, c):
-            value, last, kind, template, *assigns = c
+            value, last, kind, template, until, *assigns = c
             decoding = ast.Decoding(kind, self.b.string(template), self.b.span(meta))
             actions = None if assigns == [None] else ast.Actions(tuple(assigns), self.b.span(meta))
-            return ast.ReplyEntry(value, decoding, actions, self.b.span(meta), last)
+            return ast.ReplyEntry(value, decoding, actions, self.b.span(meta), last,
+                                  None if until is None else self.b.string(until))
 
         def reply_timeout(self, meta, c):
             return ast.ReplyTimeout(c[0], self.b.span(meta))

@@ -494,7 +494,7 @@ class _Importer:
             case = self.object(item, "a reply table entry")
             if case is None:
                 continue
-            c = self.members(case, "a reply table entry", ("value", "last", "unpack", "regex", "postActions"))
+            c = self.members(case, "a reply table entry", ("value", "last", "unpack", "regex", "until", "postActions"))
             value = self.required(case, c, "value", "a reply table entry", lambda v, _: self.expr(v, "int"))
             last = self.expr(c["last"], "int") if "last" in c else None  # a range entry: `value..last`
             kind = next((k for k in ("unpack", "regex") if k in c), None)
@@ -506,7 +506,9 @@ class _Importer:
             assigns = _present([self.post_action(a) for a in self.array(c.get("postActions"), "`postActions`")])
             decoding = ast.Decoding(kind, ast.StrLit(template.value, template.span), template.span)
             actions = ast.Actions(assigns, c["postActions"].span) if assigns else None
-            entries.append(ast.ReplyEntry(value, decoding, actions, case.span, last))
+            until = self.string(c["until"], "`until`") if "until" in c else None
+            entries.append(ast.ReplyEntry(value, decoding, actions, case.span, last,
+                                          None if until is None else ast.StrLit(until.value, until.span)))
         return ast.ReplyTable(key, tuple(entries), obj.span,
                               None if tag is None else ast.StrLit(tag.value, tag.span))
 

@@ -304,6 +304,8 @@ def _primitive_clause(c: ast.PrimitiveClause) -> tuple[list[str], bool]:
             for entry in entries:
                 values = print_expr(entry.value) + ("" if entry.last is None else f"..{print_expr(entry.last)}")
                 head = f"{values}: {entry.decoding.kind} {spell_template(entry.decoding.template.value)}"
+                if entry.until is not None:
+                    head += f" until {p.quote(entry.until.value)}"
                 actions = _primitive_clause(entry.actions)[0] if entry.actions is not None else []
                 lines.append(INDENT + head + (" " + actions[0] if actions else ""))
                 lines.extend(INDENT + line for line in actions[1:])

@@ -220,3 +220,104 @@ primitive skips() on link pack "B" (1) skip unmatched unpack "B"
         ("E103", "unknown name `tag` in a post-action"),
         ("E504", "`skip unmatched` reads past frames that do not decode, but `skips` does not decode a framed reply"),
     ]
+
+
+SYSEX = """\
+robot sysex { author "tests" }
+state analog: int = 0
+state major: int = 0
+state minor: int = 0
+state sketch: string = ""
+connection link: serial { baud 57600 }
+/// Messages as they come; a sysex message runs from F0 to F7 (REPORT_FIRMWARE is 0x79).
+primitive listen() on link format "" () skip unmatched reply tag "B" {
+    0xE0..0xEF: unpack "BB" { analog = out[0] | out[1] << 7 }
+    0xF0: unpack "BBB*" until "\\xF7" {
+        major = out[1] if out[0] == 0x79 else major
+        minor = out[2] if out[0] == 0x79 else minor
+        sketch = ascii(unpack7(out[3])) if out[0] == 0x79 else sketch
+    }
+}
+/// Asks for the firmware; the answer is a sysex message.
+primitive firmware() on link pack "BBB" (0xF0, 0x79, 0xF7) reply tag "B" {
+    0xF0: unpack "BBB*" until "\\xF7" { major = out[1]  minor = out[2]  sketch = ascii(unpack7(out[3])) }
+}
+"""
+# "Std" in Firmata's 7-bit pairs (low 7 bits, then the high bit).
+REPORT = bytes.fromhex("f0 79 02 05 53 00 74 00 64 00 f7")
+
+
+@pytest.mark.parametrize("kind", ["runtime", "driver"])
+def test_a_sysex_message_is_read_to_its_end_byte(kind: str, tmp_path: Path) -> None:
+    seen: list[tuple[str, str]] = []
+    port = ScriptedPort(bytes.fromhex("e3 10 02") + REPORT + bytes.fromhex("f0 71 01"))  # the last never ends
+    implementation = implementation_of(kind, SYSEX, tmp_path, "sysex")
+    with implementation.connect(port, threads=False, on_io=lambda d, _c, b: seen.append((d, b.hex(" ")))) as robot:
+        robot.call_primitive("listen")
+        robot.call_primitive("listen")
+        assert [robot.state[k] for k in ("analog", "major", "minor", "sketch")] == [272, 2, 5, "Std"]
+        with pytest.raises(TimeoutError) as caught:
+            robot.call_primitive("listen")
+        assert str(caught.value) == "listen: no matching reply within 1 s"
+    assert seen == [("read", "e3 10 02"), ("read", REPORT.hex(" ")), ("read", "f0 71 01")]
+
+
+@pytest.mark.parametrize("kind", ["runtime", "driver"])
+def test_a_sysex_answer_over_a_real_serial_line(kind: str, tmp_path: Path) -> None:
+    implementation = implementation_of(kind, SYSEX, tmp_path, "sysex")
+    answers = [REPORT, bytes.fromhex("f0 79 02")]  # the second never ends
+    with pty_device(lambda data: answers.pop(0) if data == bytes.fromhex("f0 79 f7") else None) as device, \
+            implementation.connect(device.port, threads=False) as robot:
+        robot.call_primitive("firmware")
+        assert [robot.state[k] for k in ("major", "minor", "sketch")] == [2, 5, "Std"]
+        with pytest.raises(Exception) as caught:  # without `skip unmatched`, a protocol error
+            robot.call_primitive("firmware")
+        assert (type(caught.value).__name__, str(caught.value)) == (
+            "RdisProtocolError", "firmware: no end f7 after tag 240 within 1 s")
+
+
+def test_until_goes_through_json_the_printer_dump_and_budget(tmp_path: Path) -> None:
+    compilation, built = through_json(SYSEX, tmp_path, "sysex")
+    assert not compilation.diagnostics.items
+    firmware = next(p for p in json.loads(built)["primitives"] if p["name"] == "firmware")
+    assert firmware["replyTable"]["cases"] == [{"value": 240, "unpack": "BBB*", "until": "\u00f7", "postActions": [
+        "major = __out__[1]", "minor = __out__[2]", "sketch = ascii(unpack7(__out__[3]))"]}]
+    printed = print_module(parse("s.rdis", SYSEX, Diagnostics()))
+    assert '    240: unpack "BBB*" until "\u00f7" {' in printed  # as frames print their bytes
+    assert print_module(parse("s.rdis", printed, Diagnostics())) == printed
+    model = compilation.model
+    assert model is not None
+    assert dump(model).split("\n\n")[1].rstrip().splitlines()[-8:] == [
+        "  reply tagged 240: 5+n bytes",
+        "  offset  size  kind                  value",
+        "       0     1  tag u8                = 240",
+        "       1     1  u8                    out[0]",
+        "       2     1  u8                    out[1]",
+        "       3     1  u8                    out[2]",
+        "       4     n  bytes (the rest)      out[3]",
+        "       ?     1  end (dropped)         F7",
+    ]
+    # The budget counts the tag, the fixed part and the end byte (the rest at its shortest).
+    assert message_bytes(model.primitives["firmware"], model.frames) == 3 + 1 + 3 + 1
+
+
+def test_what_the_checker_refuses_of_until(tmp_path: Path) -> None:
+    source = tmp_path / "bad.rdis"
+    source.write_text("""\
+robot bad { author "tests" }
+connection link: serial { baud 9600 }
+frame ended { request { payload } reply { payload  terminator "\\xFF" } }
+primitive framed() on link frame ended pack "B" (1) reply tag "B" { 1: unpack "B*" until "\\xF7" }
+primitive keyed(r: int in 0..1) on link pack "B" (r) reply r { 0..1: unpack "B*" until "\\xF7" }
+primitive fixed() on link format "" () reply tag "B" { 0xF0: unpack "BB" until "\\xF7" }
+primitive line() on link format "" () reply tag "B" { 0xF0: regex "(.*)" until "\\xF7" }
+primitive long() on link format "" () reply tag "B" { 0xF0: unpack "B*" until "123456789" }
+""", encoding="utf-8")
+    compilation = compile_path(str(source))
+    assert [(d.code, d.message) for d in compilation.diagnostics.items] == [
+        ("E505", "`until` is for a tagged reply read without a frame, and `framed` does not read one"),
+        ("E505", "`until` is for a tagged reply read without a frame, and `keyed` does not read one"),
+        ("E505", "an entry read `until` its end takes what comes before the end as bytes: its `unpack` ends in `*`"),
+        ("E505", "an entry read `until` its end is decoded by an `unpack`"),
+        ("E505", "`until` is 1 to 8 bytes (characters up to \\xff)"),
+    ]

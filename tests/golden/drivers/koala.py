@@ -888,18 +888,20 @@ class Unpack:
     """A reply decoded with a struct format: exactly its size or, with `rest`, its fixed
     part and then the rest as bytes; the values at `strings` as latin-1 text, each repeated
     group's values as one array a code. With `varying`, `fixed` is the format before that
-    group, repeated as many times as its count field says or as fill the reply."""
+    group, repeated as many times as its count field says or as fill the reply. With `until`, an
+    unframed tagged reply's entry is read to those bytes (Firmata's sysex end), which are dropped."""
 
-    __slots__ = ("groups", "rest", "size", "strings", "struct", "varying")
+    __slots__ = ("groups", "rest", "size", "strings", "struct", "until", "varying")
 
     def __init__(self, fixed: str, strings: tuple[int, ...] = (), rest: bool = False,
-                 groups: tuple[Group, ...] = (), varying: Varying | None = None) -> None:
+                 groups: tuple[Group, ...] = (), varying: Varying | None = None, until: bytes | None = None) -> None:
         self.struct = struct.Struct(fixed)
         self.strings = strings
         self.rest = rest
         self.size = -1 if rest or varying else self.struct.size  # -1: the frame says where the reply ends
         self.groups = groups
         self.varying = varying
+        self.until = until
 
     def decode(self, owner: str, data: bytes) -> tuple[Value, ...]:
         layout = self.struct
@@ -2183,7 +2185,15 @@ class Robot:
                 reader.put_back(head[1:])
                 continue
             decoder = case.decoder
-            assert isinstance(decoder, Unpack) and not decoder.rest
+            assert isinstance(decoder, Unpack)
+            if decoder.until is not None:  # to its end marker, which is not the reply's
+                body = reader.read_until(decoder.until)
+                if not body.endswith(decoder.until):
+                    if plan.skip:
+                        raise RdisTimeout(missed)
+                    raise RdisProtocolError(f"{plan.name}: no end {decoder.until.hex(' ')} after tag {value} "
+                                            f"within {wait:g} s")
+                return case, [*local, value], decoder.decode(plan.name, body[: -len(decoder.until)])
             body = reader.read(decoder.size)
             if len(body) < decoder.size:
                 if plan.skip:
