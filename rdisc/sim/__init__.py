@@ -33,6 +33,7 @@ from typing import Any
 
 from rdisc.emit.mjcf import actuator_name, to_mjcf
 from rdisc.runtime import engine
+from rdisc.runtime.codec import decoder
 from rdisc.runtime.evaluate import prepare
 from rdisc.semantics import model as m
 
@@ -64,8 +65,11 @@ class _Sensed:
 
 @dataclass(frozen=True, slots=True)
 class _Reply:
-    """What the simulation knows of one reply: the values it senses and those `expect` pins."""
+    """What the simulation knows of one reply: its values when nothing sets them (what its
+    decoding gives for zero bytes; a regex's groups each "0"), those it senses and those
+    `expect` pins."""
 
+    zeros: tuple[Any, ...]
     sensed: tuple[_Sensed, ...]
     pinned: tuple[tuple[int, m.Value], ...]
 
@@ -103,7 +107,6 @@ class Simulation:
         self._replies = {p.name: _replies(p) for p in model.primitives.values()}
         self._keys = {p.name: [q.name for q in p.params].index(p.table.key)
                       for p in model.primitives.values() if p.table is not None and p.table.key}
-        self._defaults: dict[int, tuple[Any, ...]] = {}
         if seed is not None:
             jitter = random.Random(seed)
             for joint in model.joints.values():
@@ -186,9 +189,9 @@ class Simulation:
         replies = self._replies[plan.name]
         key = self._keys.get(plan.name)
         reply = replies.get(None if key is None else local[key])
-        values = list(self._default(plan))
-        if reply is None or not values:
-            return values
+        if reply is None:
+            return ()
+        values = list(reply.zeros)
         for k, value in reply.pinned:
             values[k] = value
         for s in reply.sensed:
@@ -202,31 +205,18 @@ class Simulation:
                 values[s.out] = to_device(self._quantity(joint, quantity))
         return values
 
-    def _default(self, plan: engine.Primitive) -> tuple[Any, ...]:
-        """A reply of zeros: what the decoder gives for zero bytes, or a regex's groups each "0"."""
-        known = self._defaults.get(id(plan))
-        if known is None:
-            decoder = plan.decoder
-            if isinstance(decoder, engine.Unpack):
-                known = tuple(decoder.decode(plan.name, bytes(decoder.size)))
-            elif isinstance(decoder, engine.Match):
-                known = ("0",) * re.compile(decoder.pattern).groups
-            else:
-                known = ()
-            self._defaults[id(plan)] = known
-        return known
-
 
 def _replies(p: m.Primitive) -> dict[int | None, _Reply]:
     """The primitive's reply, or its table's replies by key value (a tag's table: none)."""
     if p.table is None:
-        return {None: _reply(p.actions, p.expect, p.params)}
+        return {None: _reply(p.decoding, p.actions, p.expect, p.params)}
     if p.table.tag is not None:
         return {}
-    return {v: _reply(c.actions, p.expect, p.params) for c in p.table.cases for v in c.values()}
+    return {v: _reply(c.decoding, c.actions, p.expect, p.params) for c in p.table.cases for v in c.values()}
 
 
-def _reply(actions: tuple[m.PostAction, ...], expect: m.Expr | None, params: tuple[m.Parameter, ...]) -> _Reply:
+def _reply(decoding: m.Unpack | m.Regex | None, actions: tuple[m.PostAction, ...], expect: m.Expr | None,
+           params: tuple[m.Parameter, ...]) -> _Reply:
     slots = {p.name: i for i, p in enumerate(params)}
     sensed: list[_Sensed] = []
     for a in actions:
@@ -236,7 +226,20 @@ def _reply(actions: tuple[m.PostAction, ...], expect: m.Expr | None, params: tup
             case m.Replaced(array=m.Var(name=name), index=index, value=m.ReplyValue(index=k)) if name == a.target:
                 at = prepare(index, slots)
                 sensed.append(_Sensed(k, a.target, lambda local, at=at: at({}, local, ())))
-    return _Reply(tuple(sensed), tuple(_pins(expect)) if expect is not None else ())
+    pins = tuple(_pins(expect)) if expect is not None else ()
+    return _Reply(_zeros(decoding), tuple(sensed), pins)
+
+
+def _zeros(decoding: m.Unpack | m.Regex | None) -> tuple[Any, ...]:
+    """A reply of zeros: what the decoding gives for zero bytes, or a regex's groups each "0"."""
+    match decoding:
+        case m.Unpack():
+            unpack = decoder(decoding)
+            assert isinstance(unpack, engine.Unpack)
+            return tuple(unpack.decode("", bytes(unpack.size)))
+        case m.Regex(pattern=pattern):
+            return ("0",) * re.compile(pattern).groups
+    return ()
 
 
 def _pins(expect: m.Expr) -> list[tuple[int, m.Value]]:

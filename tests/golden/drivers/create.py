@@ -3131,6 +3131,7 @@ def connect(
     on_output: OutputCallback | None = None,
     on_error: ErrorCallback | None = None,
     on_io: IoCallback | None = None,
+    sim: Simulator | None = None,
 ) -> IrobotCreate:
     """The robot, running: its ports open, its startup hooks run, its threads started.
 
@@ -3139,7 +3140,8 @@ def connect(
     default, each connection's address from the description
     (connections: btserial). `timeout`: seconds to wait for a reply. With
     `threads=False`, call `tick()` yourself. Callbacks given here are registered
-    before anything is opened, so they also see what the startup hooks do.
+    before anything is opened, so they also see what the startup hooks do. `sim`: a
+    simulated device in place of the ports (`rdisc.sim.Simulation` of the description).
     """
     robot = IrobotCreate(timeout=timeout)
     if on_output is not None:
@@ -3148,7 +3150,7 @@ def connect(
         robot.on_error(on_error)
     if on_io is not None:
         robot.on_io(on_io)
-    robot.open(port, threads=threads)
+    robot.open(port, threads=threads, sim=sim)
     return robot
 
 

@@ -3425,6 +3425,7 @@ def connect(
     on_output: OutputCallback | None = None,
     on_error: ErrorCallback | None = None,
     on_io: IoCallback | None = None,
+    sim: Simulator | None = None,
     wheelBase: float = 0.32,
     maxSpeed: int = 127,
     obstacleThreshold: int = 600,
@@ -3436,7 +3437,8 @@ def connect(
     default, each connection's address from the description
     (connections: rs232). `timeout`: seconds to wait for a reply. With
     `threads=False`, call `tick()` yourself. Callbacks given here are registered
-    before anything is opened, so they also see what the startup hooks do.
+    before anything is opened, so they also see what the startup hooks do. `sim`: a
+    simulated device in place of the ports (`rdisc.sim.Simulation` of the description).
 
     Settings (a value outside its type or range is refused before anything is opened):
         wheelBase in 0.1..1.0: Distance between the two wheels, in metres (approximate: calibrate it).
@@ -3450,7 +3452,7 @@ def connect(
         robot.on_error(on_error)
     if on_io is not None:
         robot.on_io(on_io)
-    robot.open(port, threads=threads, settings={
+    robot.open(port, threads=threads, sim=sim, settings={
         "wheelBase": wheelBase,
         "maxSpeed": maxSpeed,
         "obstacleThreshold": obstacleThreshold,
