@@ -12,7 +12,7 @@ import argparse
 from rdisc.cli.output import compile_and_write
 
 
-def add_parser(verbs) -> None:
+def add_parser(verbs: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     p = verbs.add_parser(
         "emit-mjcf", help="write a description's body as a MuJoCo model (MJCF)",
         description="Write the links, joints and transmissions of a description as MJCF, which MuJoCo loads.",

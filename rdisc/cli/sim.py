@@ -21,7 +21,7 @@ from rdisc.compile import compile_path
 from rdisc.runtime import engine
 
 
-def add_parser(verbs) -> None:
+def add_parser(verbs: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     p = verbs.add_parser(
         "sim", help="run a description against a MuJoCo simulation of its body",
         description="Run a description as `rdisc run` does, against a simulation of its links, joints and "

@@ -34,7 +34,7 @@ from typing import Any
 from rdisc.emit.mjcf import actuator_name, to_mjcf
 from rdisc.runtime import engine
 from rdisc.runtime.codec import decoder
-from rdisc.runtime.evaluate import prepare
+from rdisc.runtime.evaluate import Prepared, prepare
 from rdisc.semantics import model as m
 
 __all__ = ["Simulation"]
@@ -81,7 +81,7 @@ class Simulation:
     (None: every joint starts at zero); `realtime` runs the physics on the wall clock."""
 
     def __init__(self, model: m.Model, *, seed: int | None = None, realtime: bool = False) -> None:
-        import mujoco
+        import mujoco  # type: ignore[import-untyped]
 
         self._mujoco = mujoco
         self.model = model
@@ -224,8 +224,7 @@ def _reply(decoding: m.Unpack | m.Regex | None, actions: tuple[m.PostAction, ...
             case m.ReplyValue(index=k):
                 sensed.append(_Sensed(k, a.target, None))
             case m.Replaced(array=m.Var(name=name), index=index, value=m.ReplyValue(index=k)) if name == a.target:
-                at = prepare(index, slots)
-                sensed.append(_Sensed(k, a.target, lambda local, at=at: at({}, local, ())))
+                sensed.append(_Sensed(k, a.target, _over_params(prepare(index, slots))))
     pins = tuple(_pins(expect)) if expect is not None else ()
     return _Reply(_zeros(decoding), tuple(sensed), pins)
 
@@ -252,6 +251,11 @@ def _pins(expect: m.Expr) -> list[tuple[int, m.Value]]:
         case m.BinaryOp(op="==", left=m.Const(value=value), right=m.ReplyValue(index=k)):
             return [(k, value)]
     return []
+
+
+def _over_params(f: Prepared) -> Callable[[Sequence[Any]], Any]:
+    """An expression over a primitive's parameters alone (an element's index)."""
+    return lambda local: f({}, local, ())
 
 
 def _format_positions(p: m.Primitive) -> list[int]:
