@@ -6,9 +6,23 @@ import argparse
 import sys
 
 from rdisc import __version__
-from rdisc.cli import build, check, console, dump, emit_python, emit_ros, explain, graph, import_, replay, run
+from rdisc.cli import (
+    build,
+    check,
+    console,
+    dump,
+    emit_mjcf,
+    emit_python,
+    emit_ros,
+    explain,
+    graph,
+    import_,
+    replay,
+    run,
+    sim,
+)
 
-VERBS = (check, build, import_, explain, run, replay, console, emit_python, emit_ros, dump, graph)
+VERBS = (check, build, import_, explain, run, sim, replay, console, emit_python, emit_ros, emit_mjcf, dump, graph)
 EXIT_INTERNAL = 3
 
 

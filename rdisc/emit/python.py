@@ -712,7 +712,7 @@ class _Driver:
             w.line(f"self._robot._call_{kind}({self.plan[kind, name]}, [{values}])")
 
     def connect_function(self, w: Writer) -> None:
-        own = ("port", "timeout", "threads", "on_output", "on_error", "on_io", "robot", self.cls)
+        own = ("port", "timeout", "threads", "on_output", "on_error", "on_io", "sim", "robot", self.cls)
         keywords = _params([(s.name, s.type) for s in self.model.settings.values()], frozenset(own))
         settings = list(self.model.settings.values())
         with w.block("def connect("):
@@ -724,6 +724,7 @@ class _Driver:
                 "on_output: OutputCallback | None = None,",
                 "on_error: ErrorCallback | None = None,",
                 "on_io: IoCallback | None = None,",
+                "sim: Simulator | None = None,",
                 *(f"{keywords[s.name]}: {_py_type(s.type)} = {literal(s.default, s.type).text}," for s in settings),
             ])
         w.line(f") -> {self.cls}:")
@@ -735,7 +736,8 @@ class _Driver:
                    "default, each connection's address from the description\n"
                    f"(connections: {connections}). `timeout`: seconds to wait for a reply. With\n"
                    "`threads=False`, call `tick()` yourself. Callbacks given here are registered\n"
-                   "before anything is opened, so they also see what the startup hooks do.")
+                   "before anything is opened, so they also see what the startup hooks do. `sim`: a\n"
+                   "simulated device in place of the ports (`rdisc.sim.Simulation` of the description).")
             if settings:
                 doc += "\n\nSettings (a value outside its type or range is refused before anything is opened):"
                 for s in settings:
@@ -753,11 +755,11 @@ class _Driver:
             ])
             given = [f"{quoted(s.name)}: {keywords[s.name]}" for s in settings]
             bound = ", settings={" + ", ".join(given) + "}" if settings else ""
-            flat = f"robot.open(port, threads=threads{bound})"
+            flat = f"robot.open(port, threads=threads, sim=sim{bound})"
             if len(flat) <= w.width():
                 w.line(flat)
             else:
-                w.line("robot.open(port, threads=threads, settings={")
+                w.line("robot.open(port, threads=threads, sim=sim, settings={")
                 with w.indented():
                     w.lines([f"{item}," for item in given])
                 w.line("})")

@@ -76,6 +76,7 @@ class Description:
         on_error: engine.ErrorCallback | None = None,
         on_io: engine.IoCallback | None = None,
         settings: Mapping[str, Any] | None = None,
+        sim: bool | engine.Simulator = False,
     ) -> engine.Robot:
         """The robot, running: its ports open, its startup hooks run, its threads started.
 
@@ -85,8 +86,17 @@ class Description:
         settings by name (the others keep their defaults); a value that does not fit its
         type or range is an RdisValueError, before any port is opened. Callbacks given
         here are registered before anything is opened, so they also see what the
-        startup hooks do.
+        startup hooks do. `sim=True` runs the description against a MuJoCo simulation of its
+        body in simulated time (`rdisc.sim.Simulation`, or give one), opening no port:
+        `robot.run_for(seconds)` runs its schedule.
         """
+        simulator: engine.Simulator | None = None
+        if sim is True:
+            from rdisc.sim import Simulation
+
+            simulator = Simulation(self.model)
+        elif sim is not False:
+            simulator = sim
         robot = engine.Robot(self.device, timeout=timeout)
         if on_output is not None:
             robot.on_output(on_output)
@@ -94,7 +104,7 @@ class Description:
             robot.on_error(on_error)
         if on_io is not None:
             robot.on_io(on_io)
-        robot.open(port, threads=threads, settings=settings)
+        robot.open(port, threads=threads, settings=settings, sim=simulator)
         return robot
 
     # ---- plans ----------------------------------------------------------------------------------

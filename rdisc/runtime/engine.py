@@ -1500,6 +1500,23 @@ PortSpec = str | os.PathLike[str] | Port | Mapping[str, "str | os.PathLike[str] 
 from connection name to port."""
 
 
+class Simulator(Protocol):
+    """A simulated device in place of the ports (`Robot.open(sim=...)`; `rdisc.sim` gives one
+    over MuJoCo): it takes what the host commands, by primitive and interface with their
+    parameters' values, and answers a primitive's reply with its values. In simulated time
+    (`realtime` False) the robot runs no threads: its schedule and delays advance the simulation."""
+
+    realtime: bool
+
+    def interface(self, plan: Interface, args: Args, /) -> None: ...
+
+    def exchange(self, plan: Primitive, local: Args, /) -> Sequence[Any]: ...
+
+    def advance(self, seconds: float, /) -> None: ...
+
+    def now(self) -> float: ...
+
+
 class _Port:
     """One open port, shared by the connections given the same one, with its exchange lock."""
 
@@ -1571,7 +1588,7 @@ class _Worker:
     def restart_clock(self) -> None:
         """Make now the start of the schedule."""
         with self._lock:
-            self._start = time.monotonic()
+            self._start = self.robot._clock()
             self._keepalive_due = self._start + self.interval
 
     def tick(self) -> None:
@@ -1591,7 +1608,7 @@ class _Worker:
         if keepalive is None or not self.interval:
             return
         with self._lock:
-            now = time.monotonic()
+            now = robot._clock()
             if now < self._keepalive_due:
                 return
             due = self._keepalive_due + self.interval
@@ -1667,7 +1684,11 @@ class Robot:
         self._workers: list[_Worker] = []
         self._close_lock = threading.Lock()
         self._running = False
+        self._direct = False  # running on ports: a plain write may skip the general way
         self._closed = False
+        self._sim: Simulator | None = None
+        self._clock: Callable[[], float] = time.monotonic  # the schedule's time, and the delays'
+        self._sleep: Callable[[float], None] = time.sleep
 
     # ---- callbacks --------------------------------------------------------------------------------
 
@@ -1748,7 +1769,7 @@ class Robot:
             raise KeyError(f"{self.name} has no primitive named {name!r}")
         values = list(args)
         request = plan.request
-        if request is not None and self._running:  # one plain write: every command's path
+        if request is not None and self._direct:  # one plain write: every command's path
             data = request(self._state, values)
             if data is not None:
                 self._write(plan, data)
@@ -1758,7 +1779,7 @@ class Robot:
     # ---- lifecycle ----------------------------------------------------------------------------------
 
     def open(self, port: PortSpec | None = None, *, threads: bool = True,
-             settings: Mapping[str, Any] | None = None) -> None:
+             settings: Mapping[str, Any] | None = None, sim: Simulator | None = None) -> None:
         """Bind the settings, open the ports, run the startup hooks, then start the connections' threads.
 
         `port`: a pyserial port name or URL ("/dev/ttyUSB0", "COM3", "socket://host:4000")
@@ -1768,14 +1789,20 @@ class Robot:
         does not fit is an RdisValueError, before anything is opened. With
         `threads=False` no thread is started: call `tick()` from your own loop. If any of
         it fails, what was opened is closed again (terminate hooks included) and the
-        error is raised.
+        error is raised. `sim`: a simulated device in place of the ports (no port is
+        opened); in simulated time no thread is started either: `run_for` runs the schedule.
         """
         if self._running or self._closed:
             raise RdisConnectionError(f"{self.name}: already opened")
         self._state = {**self._state, **bind_settings(self.device, settings)}
         try:
-            self._open_links(port)
+            if sim is None:
+                self._open_links(port)
+            else:
+                self._simulate(sim)
+                threads = threads and sim.realtime
             self._running = True
+            self._direct = sim is None
             self.startup()
             self._workers = [_Worker(self, c) for c in self.device.connections.values()]
             for worker in self._workers:
@@ -1795,7 +1822,7 @@ class Robot:
         """Run the terminate hooks of the connections that are open, in declaration order
         (`close()` does): they leave the robot stopped. Errors are reported, not raised."""
         for connection in self.device.connections.values():
-            if connection.terminate is not None and connection.name in self._links:
+            if connection.terminate is not None and (connection.name in self._links or self._sim is not None):
                 try:
                     self._hook(connection.terminate)
                 except Exception as err:  # noqa: BLE001 - reported, and the others run
@@ -1809,6 +1836,30 @@ class Robot:
         for worker in self._workers:
             worker.tick()
 
+    def run_for(self, seconds: float | None) -> None:
+        """Run the connections' schedules for `seconds` of simulated time (None: for ever), on
+        this thread: each connection's tick when it is due, as its thread would run it, the
+        simulation advanced up to it (and by the delays within it)."""
+        sim = self._sim
+        if sim is None or sim.realtime or not self._running:
+            raise RdisConnectionError(f"{self.name}: not running in simulated time")
+        end = math.inf if seconds is None else sim.now() + seconds
+        ticks = dict.fromkeys(self._workers, 0)  # each periodic connection's next tick
+        while True:
+            due = {w: w._start + k * w.period if w.connection.periodic else w._keepalive_due if w.interval else math.inf
+                   for w, k in ticks.items()}
+            wake = min(due.values(), default=math.inf)
+            if wake > end:
+                sim.advance(end - sim.now())
+                return
+            sim.advance(max(wake - sim.now(), 0.0))
+            for worker, when in due.items():
+                if when <= wake:
+                    worker.tick()  # as the thread's loop: a tick already past is skipped
+                    if worker.connection.periodic:
+                        late = math.ceil((sim.now() - worker._start) / worker.period - 1e-9)
+                        ticks[worker] = max(ticks[worker] + 1, late)
+
     def close(self) -> None:
         """Stop the threads (each finishes the interface it is running, delays included), run
         the terminate hooks (errors reported, not raised) and close the ports `open` opened.
@@ -1818,6 +1869,7 @@ class Robot:
                 return
             self._closed = True
             self._running = False
+            self._direct = False
         for worker in self._workers:
             worker.stop()
         self.terminate()
@@ -1881,6 +1933,12 @@ class Robot:
                 assert plan.primitive is not None
                 self._write(plan.primitive, data)
                 return
+        self._input_in_full(plan, values)
+
+    def _input_in_full(self, plan: Input, values: Args) -> None:
+        """An input the general way: its fields made their types, its interface's arguments."""
+        if not self._running:
+            raise self._not_running()
         for i, param in enumerate(plan.fields):
             if type(values[i]) is not param.kind or param.size is not None:
                 values[i] = _accept_param(values[i], param, f"input {plan.name}: field {param.name}")
@@ -1937,7 +1995,7 @@ class Robot:
             else:
                 self._primitive(target, values)
             if call.delay:
-                time.sleep(call.delay)
+                self._sleep(call.delay)
         for output in plan.outputs:
             self._deliver(output)
 
@@ -1950,6 +2008,10 @@ class Robot:
             if data is not None:
                 self._write(plan, data)
                 return
+        self._primitive_in_full(plan, args)
+
+    def _primitive_in_full(self, plan: Primitive, args: Args) -> None:
+        """A primitive the general way: its parameters checked, its reply table's entry chosen."""
         for i in plan.floats:
             if type(args[i]) is int:
                 _widen(plan.name, plan.floats, args)
@@ -2010,23 +2072,7 @@ class Robot:
         then show the I/O callbacks every byte written and read, and run the post-actions.
 
         `local` is the primitive's parameters' values (a direct call passes its values)."""
-        request = plan.encoder.encode(plan.name, values) if plan.encoder is not None else b""
-        use = plan.frame
-        fields: list[Any] = []
-        if use is not None:
-            try:
-                fields = use.frame.values(plan.name, use.args(self._state, local))
-                request = use.frame.wrap(request, fields)
-            except RdisError:
-                raise
-            except (struct.error, *EVAL_ERRORS) as err:
-                raise RdisValueError(f"{plan.name}: {err}") from None
-        levels = None
-        if plan.lines is not None:
-            try:
-                levels = plan.lines(self._state, local)
-            except EVAL_ERRORS as err:
-                raise RdisValueError(f"{plan.name}: {err}") from None
+        request, fields, levels = self._request(plan, values, local)
         if not plan.expects_reply:
             self._write(plan, request, levels)
             if plan.actions is not None:
@@ -2078,6 +2124,69 @@ class Robot:
                 self._notify_io("read", plan.connection, data)
         if failed is not None:
             raise failed
+        if plan.actions is not None:
+            self._assign(plan, local, reply)
+
+    def _request(self, plan: Primitive, values: Args,
+                 local: Args) -> tuple[bytes, list[Any], dict[str, Value] | None]:
+        """The request encoded and framed, the frame's fields, and the modem lines' levels."""
+        request = plan.encoder.encode(plan.name, values) if plan.encoder is not None else b""
+        use = plan.frame
+        fields: list[Any] = []
+        if use is not None:
+            try:
+                fields = use.frame.values(plan.name, use.args(self._state, local))
+                request = use.frame.wrap(request, fields)
+            except RdisError:
+                raise
+            except (struct.error, *EVAL_ERRORS) as err:
+                raise RdisValueError(f"{plan.name}: {err}") from None
+        levels = None
+        if plan.lines is not None:
+            try:
+                levels = plan.lines(self._state, local)
+            except EVAL_ERRORS as err:
+                raise RdisValueError(f"{plan.name}: {err}") from None
+        return request, fields, levels
+
+    # ---- a simulated device: `open(sim=...)` puts these in place of the ports' ways ------------------
+
+    def _simulate(self, sim: Simulator) -> None:
+        """Run against `sim`: every primitive the general way (the simulator takes parameters'
+        values, which a plain write's shortcut never has), its exchange with the simulator, and
+        in simulated time the schedule's clock and the delays the simulation's. Instance
+        attributes, so that a robot on ports runs exactly the code it runs without them."""
+        self._sim = sim
+        self._input = self._input_in_full  # type: ignore[method-assign]
+        self._primitive = self._primitive_in_full  # type: ignore[method-assign]
+        self._interface = self._simulated_interface  # type: ignore[method-assign]
+        self._exchange = self._simulated_exchange  # type: ignore[method-assign]
+        if not sim.realtime:
+            self._clock = sim.now
+            self._sleep = sim.advance
+
+    def _simulated_interface(self, plan: Interface, args: Args) -> None:
+        """An interface: the simulator sees its parameters' values first (a transmission may
+        command one), then it runs as it always does."""
+        assert self._sim is not None
+        self._sim.interface(plan, args)
+        Robot._interface(self, plan, args)
+
+    def _simulated_exchange(self, plan: Primitive, values: Args, local: Args) -> None:
+        """A primitive against the simulator: its request is encoded as for a port (the I/O
+        callbacks see it written, and what a port refuses is refused), the simulator takes the
+        parameters' values and gives the reply's, which meet the `expect` and go to the
+        post-actions as a reply read from a port would."""
+        assert self._sim is not None
+        request, _fields, levels = self._request(plan, values, local)
+        reply = self._sim.exchange(plan, local)
+        if self._io_callbacks:
+            if levels is not None:
+                self._notify_io("lines", plan.connection, _lines_text(levels))
+            if request:
+                self._notify_io("write", plan.connection, request)
+        if plan.expects_reply:
+            reply = self._met(plan, local, reply)
         if plan.actions is not None:
             self._assign(plan, local, reply)
 
@@ -2425,13 +2534,15 @@ class _Terminated(BaseException):
     """SIGTERM, turned into an exception so that the terminate hooks run on the way out."""
 
 
-def add_arguments(parser: argparse.ArgumentParser, device: Device | None = None) -> None:
-    """The options of `rdisc run` (and of a driver's command line), on `parser`."""
+def add_arguments(parser: argparse.ArgumentParser, device: Device | None = None, *, ports: bool = True) -> None:
+    """The options of `rdisc run` (and of a driver's command line), on `parser`; without
+    `--port` for a simulated device (`rdisc sim`)."""
     connections = f" (connections: {', '.join(device.connections)})" if device is not None else ""
     inputs = f" (inputs: {', '.join(device.inputs)})" if device is not None and device.inputs else ""
-    parser.add_argument("--port", action="append", default=[], metavar="[CONN=]PORT",
-                        help="a pyserial port or URL (/dev/ttyUSB0, COM3, socket://host:port); "
-                             f"CONN=PORT for one connection of several{connections}")
+    if ports:
+        parser.add_argument("--port", action="append", default=[], metavar="[CONN=]PORT",
+                            help="a pyserial port or URL (/dev/ttyUSB0, COM3, socket://host:port); "
+                                 f"CONN=PORT for one connection of several{connections}")
     parser.add_argument("--call", action="append", nargs="+", default=[], metavar="NAME [K=V ...]",
                         help="call an input (or an interface, or a primitive) with named values; repeat for "
                              f"several calls, in order{inputs}")
@@ -2452,15 +2563,18 @@ def add_arguments(parser: argparse.ArgumentParser, device: Device | None = None)
                              "each way, errors (needs the mcap and mcap-ros2-support packages)")
 
 
-def run_command(args: argparse.Namespace, robot: Robot, prog: str) -> int:
+def run_command(args: argparse.Namespace, robot: Robot, prog: str, sim: Simulator | None = None) -> int:
     """What `rdisc run` does with its options: connect, make the --call calls in order, then
     run until --duration seconds after the startup hooks ended (or, with --watch, until
     Ctrl-C; else end when the calls are done). It always ends by closing the robot, which
     runs the terminate hooks. Exit status: 0 done; 1 the device failed; 2 a usage error;
-    130 after SIGINT; 143 after SIGTERM."""
-    began = time.monotonic()
+    130 after SIGINT; 143 after SIGTERM. With `sim` (`rdisc sim`) the robot runs against
+    the simulated device; in simulated time the seconds, the trace's included, are its."""
+    simulated = sim is not None and not sim.realtime
+    clock = sim.now if sim is not None and simulated else time.monotonic
+    began = clock()
     try:
-        port = parse_ports(args.port, robot.device)
+        port = None if sim is not None else parse_ports(args.port, robot.device)
         settings = bind_settings(robot.device, parse_settings(args.set, robot.device))
         calls = [parse_call(words, robot.device) for words in args.call]
     except ValueError as err:
@@ -2473,12 +2587,12 @@ def run_command(args: argparse.Namespace, robot: Robot, prog: str) -> int:
     if args.watch:
         robot.on_output(_print_output)
     if args.trace:
-        robot.on_io(lambda direction, connection, data: _print_io(began, direction, connection, data))
+        robot.on_io(lambda direction, connection, data: _print_io(clock() - began, direction, connection, data))
     previous = _install_signal_handlers()
     status = EXIT_OK
     try:
-        robot.open(port, settings=settings)
-        started = time.monotonic()  # the startup hooks are done: --duration counts from here
+        robot.open(port, settings=settings, sim=sim)
+        started = clock()  # the startup hooks are done: --duration counts from here
         for name, kind, values in calls:
             if recorder is not None:
                 recorder.call(kind, name, values)
@@ -2488,7 +2602,9 @@ def run_command(args: argparse.Namespace, robot: Robot, prog: str) -> int:
                 robot.call_interface(name, *values.values())
             else:
                 robot.call_primitive(name, *values.values())
-        if args.duration is not None:
+        if simulated and (args.duration is not None or args.watch):
+            robot.run_for(None if args.duration is None else args.duration - (clock() - started))
+        elif args.duration is not None:
             _sleep(args.duration - (time.monotonic() - started))
         elif args.watch:
             _sleep(None)
@@ -2659,14 +2775,14 @@ def _print_error(error: BaseException) -> None:
     print(f"rdisc run: {type(error).__name__}: {error}", file=sys.stderr, flush=True)
 
 
-def _print_io(began: float, direction: str, connection: str, data: bytes) -> None:
-    """One --trace line: the seconds since `began` (monotonic), the connection, then `>` and
+def _print_io(elapsed: float, direction: str, connection: str, data: bytes) -> None:
+    """One --trace line: the seconds since the run began, the connection, then `>` and
     the bytes written, `<` and the bytes read, or `lines` and the modem lines set."""
     if direction == "lines":
         shown = f"lines {data.decode('ascii')}"
     else:
         shown = f"{'>' if direction == 'write' else '<'} {data.hex(' ')}"
-    print(f"{time.monotonic() - began:.4f} {connection} {shown}", file=sys.stderr, flush=True)
+    print(f"{elapsed:.4f} {connection} {shown}", file=sys.stderr, flush=True)
 
 
 _shutting_down = [False]

@@ -137,11 +137,13 @@ def driver_module(tmp_path_factory: pytest.TempPathFactory) -> ModuleType:
 def robot(request: pytest.FixtureRequest, driver_module: ModuleType) -> Iterator[Robot]:
     seen = bytearray()
     holder: list[Robot] = []
+    # No thread: the description polls the encoders 20 times a second for its odometry, and these
+    # tests compare the bytes of each call alone with the published driver's.
     with pty_device(lambda data: holder[0].answer(seen, data) if holder else None) as dev:
         if request.param == "runtime":
-            impl, errs = load(DESCRIPTION).connect(dev.port, timeout=TIMEOUT), errors
+            impl, errs = load(DESCRIPTION).connect(dev.port, timeout=TIMEOUT, threads=False), errors
         else:
-            impl, errs = driver_module.connect(dev.port, timeout=TIMEOUT), driver_module
+            impl, errs = driver_module.connect(dev.port, timeout=TIMEOUT, threads=False), driver_module
         holder.append(Robot(impl, dev, errs))
         try:
             yield holder[0]

@@ -124,7 +124,7 @@ def test_an_unknown_setting_names_the_known_ones(kind: str, tmp_path: Path) -> N
 def test_the_driver_s_connect_takes_each_setting_typed_with_its_doc(tmp_path: Path) -> None:
     driver = implementation_of("driver", SERVOS, tmp_path, "servos")
     text = (tmp_path / "servos_driver.py").read_text(encoding="utf-8")
-    assert ("    on_io: IoCallback | None = None,\n    BAUD: int = 57600,\n    ID: int = 1,\n"
+    assert ("    on_io: IoCallback | None = None,\n    sim: Simulator | None = None,\n    BAUD: int = 57600,\n    ID: int = 1,\n"
             "    wheel_base: float = 0.25,\n    label: str = \"arm\",\n) -> Servos:\n") in text
     assert ("    Settings (a value outside its type or range is refused before anything is opened):\n"
             "        BAUD in 9600..1000000: The bus's rate.\n"

@@ -1,0 +1,272 @@
+"""A description's body simulated in MuJoCo, in place of its device (`rdisc sim`, `connect(sim=True)`).
+
+The engine runs the description as it always does; at each primitive it hands the
+simulation the primitive's parameters' values instead of writing them
+(`rdisc.runtime.engine.Simulator`). What the device would do with them, and what it
+would answer, comes from the transmissions:
+
+- a transmission that commands a parameter of the primitive, or of an interface being
+  called, sets its joint's actuator (`rdisc emit-mjcf`) to the parameter's value
+  converted to the joint's units (`to_joint`, which reads it as `raw`);
+- a reply value that a post-action stores directly into a state variable a
+  transmission measures (`left_encoder = out[33]`, `present[i] = out[2]`) is the
+  simulated joint's quantity converted to the device's (`to_device`); a value the
+  primitive's `expect` pins (`out[0] == 0x55`) is that value; any other is zero (an
+  empty string, a "0" group of a regex).
+
+Then `expect` and the post-actions run on that reply as on a real one, so state,
+outputs and inputs are unchanged. Time is simulated (a fixed timestep, advanced by the
+robot's schedule and delays: the same run gives the same figures), or the wall clock's
+with `realtime`. MuJoCo is imported when a simulation is made, not before.
+"""
+
+from __future__ import annotations
+
+import math
+import random
+import re
+import threading
+import time
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+from typing import Any
+
+from rdisc.emit.mjcf import actuator_name, to_mjcf
+from rdisc.runtime import engine
+from rdisc.runtime.codec import decoder
+from rdisc.runtime.evaluate import Prepared, prepare
+from rdisc.semantics import model as m
+
+__all__ = ["Simulation"]
+
+JITTER = 0.01  # rad (m): how far `seed` moves each joint from where it starts
+
+
+@dataclass(frozen=True, slots=True)
+class _Command:
+    """A transmission's command: a parameter (an element of it) sets an actuator's target."""
+
+    param: int
+    element: int | None
+    actuator: int
+    to_joint: Callable[[Any], float]
+
+
+@dataclass(frozen=True, slots=True)
+class _Sensed:
+    """A reply value the simulation gives: the joint's quantity, as the device reports it.
+    `element`, over the primitive's parameters, says which element of an array variable the
+    value is stored in (None: a variable that is not an array)."""
+
+    out: int
+    state: str
+    element: Callable[[Sequence[Any]], Any] | None
+
+
+@dataclass(frozen=True, slots=True)
+class _Reply:
+    """What the simulation knows of one reply: its values when nothing sets them (what its
+    decoding gives for zero bytes; a regex's groups each "0"), those it senses and those
+    `expect` pins."""
+
+    zeros: tuple[Any, ...]
+    sensed: tuple[_Sensed, ...]
+    pinned: tuple[tuple[int, m.Value], ...]
+
+
+class Simulation:
+    """The MuJoCo twin of a description's body, answering as its device would (`engine.Simulator`).
+
+    `seed` moves each joint's starting position by up to JITTER, the same for the same seed
+    (None: every joint starts at zero); `realtime` runs the physics on the wall clock."""
+
+    def __init__(self, model: m.Model, *, seed: int | None = None, realtime: bool = False) -> None:
+        import mujoco  # type: ignore[import-untyped]
+
+        self._mujoco = mujoco
+        self.model = model
+        self.realtime = realtime
+        self.physics = mujoco.MjModel.from_xml_string(to_mjcf(model))
+        self.data = mujoco.MjData(self.physics)
+        self._lock = threading.Lock()
+        self._time = 0.0
+        self._began = time.monotonic()
+        self._commands: dict[tuple[bool, str], list[_Command]] = {}
+        self._measures: dict[tuple[str, int | None], tuple[m.Joint, m.Quantity, Callable[[float], Any]]] = {}
+        for t in model.transmissions.values():
+            joint = model.joints[t.joint]
+            for b in t.commands:
+                owner = model.interfaces[b.target] if b.interface else model.primitives[b.target]
+                param = next(i for i, p in enumerate(owner.params) if p.name == b.parameter)
+                actuator = mujoco.mj_name2id(self.physics, mujoco.mjtObj.mjOBJ_ACTUATOR, actuator_name(t, b))
+                self._commands.setdefault((b.interface, b.target), []).append(
+                    _Command(param, b.index, actuator, _conversion(b.to_joint, "raw")))
+            for b in t.measures:
+                self._measures[b.target, b.index] = (joint, b.quantity, _conversion(b.to_device, b.quantity.value))
+        self._direct = {p.name: _format_positions(p) for p in model.primitives.values() if p.formats_its_params()}
+        self._replies = {p.name: _replies(p) for p in model.primitives.values()}
+        self._keys = {p.name: [q.name for q in p.params].index(p.table.key)
+                      for p in model.primitives.values() if p.table is not None and p.table.key}
+        if seed is not None:
+            jitter = random.Random(seed)
+            for joint in model.joints.values():
+                if joint.moves():
+                    self.data.qpos[self._joint(joint.name).qposadr[0]] += jitter.uniform(-JITTER, JITTER)
+        mujoco.mj_forward(self.physics, self.data)
+
+    # ---- engine.Simulator ---------------------------------------------------------------------------
+
+    def interface(self, plan: engine.Interface, args: engine.Args) -> None:
+        commands = self._commands.get((True, plan.name))
+        if commands:
+            with self._lock:
+                self._catch_up()
+                self._command(commands, args)
+
+    def exchange(self, plan: engine.Primitive, local: engine.Args) -> Sequence[Any]:
+        commands = self._commands.get((False, plan.name))
+        with self._lock:
+            self._catch_up()
+            if commands:
+                positions = self._direct.get(plan.name)
+                if positions is not None and len(local) != len(plan.params):  # a direct call's format values
+                    local = [local[i] for i in positions]
+                self._command(commands, local)
+            return self._reply(plan, local) if plan.expects_reply else ()
+
+    def advance(self, seconds: float) -> None:
+        """Step the physics `seconds` further (to the nearest whole timestep)."""
+        with self._lock:
+            self._step_to(self._time + seconds)
+
+    def now(self) -> float:
+        """The simulated time: seconds since the simulation began."""
+        return self._time
+
+    # ---- what a test or a viewer reads -------------------------------------------------------------
+
+    def position(self, joint: str) -> float:
+        """A joint's position (rad or m) now."""
+        return float(self.data.qpos[self._joint(joint).qposadr[0]])
+
+    def pose(self, link: str) -> tuple[float, float, float]:
+        """A link's x, y (m) and heading (rad, about z) in the world now."""
+        body = self.data.body(link)
+        w, _x, _y, z = body.xquat
+        return float(body.xpos[0]), float(body.xpos[1]), 2 * math.atan2(float(z), float(w))
+
+    # ---- inside ---------------------------------------------------------------------------------------
+
+    def _catch_up(self) -> None:
+        if self.realtime:
+            self._step_to(time.monotonic() - self._began)
+
+    def _step_to(self, target: float) -> None:
+        step = self.physics.opt.timestep
+        while self.data.time + step / 2 <= target:
+            self._mujoco.mj_step(self.physics, self.data)
+        self._time = max(self._time, target)
+
+    def _joint(self, name: str) -> Any:
+        return self.physics.joint(name)
+
+    def _command(self, commands: list[_Command], values: Sequence[Any]) -> None:
+        for c in commands:
+            value = values[c.param] if c.element is None else values[c.param][c.element]
+            self.data.ctrl[c.actuator] = c.to_joint(value)
+
+    def _quantity(self, joint: m.Joint, quantity: m.Quantity) -> float:
+        j = self._joint(joint.name)
+        match quantity:
+            case m.Quantity.POSITION:
+                return float(self.data.qpos[j.qposadr[0]])
+            case m.Quantity.VELOCITY:
+                return float(self.data.qvel[j.dofadr[0]])
+            case m.Quantity.EFFORT:
+                return float(self.data.qfrc_actuator[j.dofadr[0]])
+
+    def _reply(self, plan: engine.Primitive, local: Sequence[Any]) -> Sequence[Any]:
+        replies = self._replies[plan.name]
+        key = self._keys.get(plan.name)
+        reply = replies.get(None if key is None else local[key])
+        if reply is None:
+            return ()
+        values = list(reply.zeros)
+        for k, value in reply.pinned:
+            values[k] = value
+        for s in reply.sensed:
+            try:
+                index = None if s.element is None else s.element(local)
+            except (LookupError, *engine.EVAL_ERRORS):
+                continue
+            measure = self._measures.get((s.state, index))
+            if measure is not None:
+                joint, quantity, to_device = measure
+                values[s.out] = to_device(self._quantity(joint, quantity))
+        return values
+
+
+def _replies(p: m.Primitive) -> dict[int | None, _Reply]:
+    """The primitive's reply, or its table's replies by key value (a tag's table: none)."""
+    if p.table is None:
+        return {None: _reply(p.decoding, p.actions, p.expect, p.params)}
+    if p.table.tag is not None:
+        return {}
+    return {v: _reply(c.decoding, c.actions, p.expect, p.params) for c in p.table.cases for v in c.values()}
+
+
+def _reply(decoding: m.Unpack | m.Regex | None, actions: tuple[m.PostAction, ...], expect: m.Expr | None,
+           params: tuple[m.Parameter, ...]) -> _Reply:
+    slots = {p.name: i for i, p in enumerate(params)}
+    sensed: list[_Sensed] = []
+    for a in actions:
+        match a.value:
+            case m.ReplyValue(index=k):
+                sensed.append(_Sensed(k, a.target, None))
+            case m.Replaced(array=m.Var(name=name), index=index, value=m.ReplyValue(index=k)) if name == a.target:
+                sensed.append(_Sensed(k, a.target, _over_params(prepare(index, slots))))
+    pins = tuple(_pins(expect)) if expect is not None else ()
+    return _Reply(_zeros(decoding), tuple(sensed), pins)
+
+
+def _zeros(decoding: m.Unpack | m.Regex | None) -> tuple[Any, ...]:
+    """A reply of zeros: what the decoding gives for zero bytes, or a regex's groups each "0"."""
+    match decoding:
+        case m.Unpack():
+            unpack = decoder(decoding)
+            assert isinstance(unpack, engine.Unpack)
+            return tuple(unpack.decode("", bytes(unpack.size)))
+        case m.Regex(pattern=pattern):
+            return ("0",) * re.compile(pattern).groups
+    return ()
+
+
+def _pins(expect: m.Expr) -> list[tuple[int, m.Value]]:
+    """The reply values `expect` fixes: `out[k] == C` in a conjunction."""
+    match expect:
+        case m.BinaryOp(op="and", left=left, right=right):
+            return _pins(left) + _pins(right)
+        case m.BinaryOp(op="==", left=m.ReplyValue(index=k), right=m.Const(value=value)):
+            return [(k, value)]
+        case m.BinaryOp(op="==", left=m.Const(value=value), right=m.ReplyValue(index=k)):
+            return [(k, value)]
+    return []
+
+
+def _over_params(f: Prepared) -> Callable[[Sequence[Any]], Any]:
+    """An expression over a primitive's parameters alone (an element's index)."""
+    return lambda local: f({}, local, ())
+
+
+def _format_positions(p: m.Primitive) -> list[int]:
+    """Where each parameter is among the format values of a primitive called directly."""
+    at = {a.name: i for i, a in enumerate(p.args) if isinstance(a, m.Var)}
+    return [at[param.name] for param in p.params]
+
+
+def _conversion(expr: m.Expr, name: str) -> Callable[[Any], Any]:
+    """A transmission's conversion as a function of the one value it reads (`raw`, or the quantity)."""
+    converted = prepare(expr, {name: 0})
+    if name == "raw":
+        return lambda value: converted({}, [value], ())
+    return lambda value: converted({}, [float(value)], ())
