@@ -377,7 +377,8 @@ velocity * 1000 }`. Right: `command velocity to drive.speed { raw = round(veloci
     ("E606", "body-device-agreement", """
 The body and the device must agree. Every value of a joint's range (its `limit`
 for a position, -velocity..velocity, -effort..effort), converted by `raw = ...`,
-must lie in the range the commanded parameter accepts (`goal: int in 0..4095`);
+must be a finite number in the range the commanded parameter accepts (`goal: int
+in 0..4095`), and converting it must not fail (no division by zero);
 and the two conversions must undo each other: a device value converted to the
 joint and back is itself, to one step of an int. Both are checked at 33 points of
 the joint's range with the interpreter the runtime uses. Wrong: a servo's `goal:
