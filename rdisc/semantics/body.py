@@ -30,6 +30,9 @@ _KINDS = {k.value: k for k in m.JointKind}
 _QUANTITIES = {q.value: q for q in m.Quantity}
 _LIMITED = (m.JointKind.REVOLUTE, m.JointKind.PRISMATIC)
 SAMPLES = 33  # points of a joint's range at which a conversion is checked, both ends included
+# Operations of all conversions checked against the device: under a second of sampling, many times
+# what a real body has; beyond it, a description's conversions would cost more to check than to read.
+MAX_CONVERSION_NODES = 50_000
 _CONSTANTS = Env({}, "in the body", "constants")
 
 Number = Callable[[ast.Expr, str], "float | None"]
@@ -43,6 +46,7 @@ class BodyRules:
         self.typer = typer
         self.s = symbols
         self.number = number
+        self.work = 0  # operations of the conversions sampled so far
 
     # -- constants of the body ---------------------------------------------------------
 
@@ -466,15 +470,28 @@ class BodyRules:
                      or isinstance(i, ast.BodyValue) and i.key == text), decl.span)
         if low is None or high is None:
             return
-        from rdisc.runtime.evaluate import evaluate  # the runtime's own interpreter: the check is what runs
+        from rdisc.runtime.evaluate import prepare  # the runtime's own interpreter: the check is what runs
 
+        self.work += 2 * size(binding.to_device) + size(binding.to_joint)
+        if self.work > MAX_CONVERSION_NODES:
+            if self.work - MAX_CONVERSION_NODES <= 2 * size(binding.to_device) + size(binding.to_joint):
+                self.d.report("E005", b.span, f"the body's conversions have more than {MAX_CONVERSION_NODES} "
+                              "operations in all: too many to check against the device",
+                              help="a conversion is a scale and an offset: `raw = round(position * 195.3) + 512`")
+            return
         name = binding.quantity.value
         step = 1.0 if device is Type.INT else 0.0
+        to_device, to_joint = prepare(binding.to_device), prepare(binding.to_joint)
+
+        def given(value: m.Value, type_: Type) -> m.Value:
+            """A value as the runtime binds it: an int where a float is declared made a float."""
+            return float(value) if type_ is Type.FLOAT and type(value) is int else value
+
         for x in sample(low, high):
             try:
-                raw = evaluate(binding.to_device, {name: x})
-                back = evaluate(binding.to_joint, {"raw": raw})
-                again = evaluate(binding.to_device, {name: back})
+                raw = given(to_device({}, {name: x}, ()), device)
+                back = given(to_joint({}, {"raw": raw}, ()), Type.FLOAT)
+                again = given(to_device({}, {name: back}, ()), device)
             except (EvalError, ArithmeticError, ValueError, OverflowError) as err:
                 self.d.report("E606", b.span, f"converting {name} {x:g} of joint `{joint.name}` fails: {err}",
                               labels=(Label(span, f"its {text}"),))
@@ -514,6 +531,15 @@ def joint_range(joint: m.Joint, quantity: m.Quantity) -> tuple[float | None, flo
         return joint.lower, joint.upper, "limit"
     bound = joint.velocity if quantity is m.Quantity.VELOCITY else joint.effort
     return (None, None, "") if bound is None else (-bound, bound, quantity.value)
+
+
+def size(expr: m.Expr) -> int:
+    """The number of operations (nodes) of an expression."""
+    count, pending = 0, [expr]
+    while pending:
+        count += 1
+        pending.extend(m.operands(pending.pop()))
+    return count
 
 
 def sample(low: float, high: float) -> list[float]:

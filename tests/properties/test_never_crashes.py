@@ -501,3 +501,35 @@ def test_binary_junk(workdir: Path) -> None:
 def test_fifty_thousand_syntax_errors_are_capped(workdir: Path) -> None:
     c = giant(workdir, "errors.rdis", HEAD + "state $\n" * 50_000, "E002")
     assert len(c.diagnostics.items) <= 200
+
+
+def _body(links: int, conversion: str = "round(position * 195.3) + 512") -> str:
+    """A chain of `links` links, each turned by a revolute joint through a servo's goal."""
+    lines = ['primitive servo(goal: int in 0..1023) on link pack ">H" (goal)', "link l0 { visual box(1, 1, 1) }"]
+    for i in range(1, links):
+        lines += [f"link l{i} {{ visual box(1, 1, 1) mass 1 inertia [1, 1, 1] }}",
+                  f"joint j{i}: revolute l{i - 1} -> l{i} {{ limit -1.5..1.5 velocity 2 effort 1 axis [0, 0, 1] }}",
+                  (f"transmission t{i}: j{i} {{ command position to servo.goal "
+                  f"{{ raw = {conversion}  position = (raw - 512) / 195.3 }} }}")]
+    return HEAD + "\n".join(lines) + "\n"
+
+
+def test_two_thousand_links_check_in_linear_time(workdir: Path) -> None:
+    """A body of 2,000 links, joints and transmissions (each conversion sampled 33 times) costs
+    what a description of its size costs: the tree is walked once, no joint searched for."""
+    path = workdir / "chain.rdis"
+    path.write_text(_body(2000), encoding="utf-8")
+    reference = min(cpu_seconds(lambda: check(REFERENCE))[0] for _ in range(3))
+    cost, c = cpu_seconds(lambda: check(path))
+    assert isinstance(c, Compilation) and c.model is not None, c.diagnostics.items
+    assert len(c.model.joints) == 1999 and len(c.model.transmissions) == 1999
+    assert cost < 200 * reference, f"{cost:.2f} s of CPU, {cost / reference:.0f} checks of {REFERENCE.name}"
+
+
+def test_huge_conversions_are_sampled_within_a_budget(workdir: Path) -> None:
+    """Conversions of thousands of operations each: sampling stops at 50,000 operations in all."""
+    group = "(" + " + ".join(["position * 0.01"] * 20) + ")"
+    wide = "round(" + " + ".join([f"({' + '.join([group] * 20)})"] * 5) + ")"  # 2,000 products
+    c = giant(workdir, "conversions.rdis", _body(12, wide), "E005")
+    assert [d.message for d in c.diagnostics.items if d.code == "E005"] == [
+        "the body's conversions have more than 50000 operations in all: too many to check against the device"]
