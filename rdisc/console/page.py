@@ -150,7 +150,8 @@ def _doc_of(model: m.Model, kind: str, name: str) -> str | None:
     elements: dict[str, Mapping[str, Any]] = {
         "connection": model.connections, "frame": model.frames, "primitive": model.primitives,
         "interface": model.interfaces, "input": model.inputs, "output": model.outputs, "adapter": model.adapters,
-        "state": model.states, "setting": model.settings}
+        "state": model.states, "setting": model.settings, "link": model.links, "joint": model.joints,
+        "transmission": model.transmissions}
     doc = getattr(elements.get(kind, {}).get(name), "doc", None)
     return doc if isinstance(doc, str) else None
 

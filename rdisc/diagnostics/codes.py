@@ -45,9 +45,11 @@ escapes: a character past ASCII has no single byte. Wrong: `b"°"`. Right:
     ("E005", "too-complex", """
 Too much to read: an expression nested deeper than 100 levels, a line longer
 than 65,536 characters, a declaration of more than 20,000 tokens, a description
-of more than 200,000 tokens with its imports, a file larger than 8 MiB, or more
-than 256 imported files. Descriptions may come from devices and networks, so
-rdisc bounds the work any input can cause before it reads it."""),
+of more than 200,000 tokens with its imports, a file larger than 8 MiB, more
+than 256 imported files, or transmissions whose conversions have more than
+50,000 operations in all (each is sampled at 33 points of its joint's range).
+Descriptions may come from devices and networks, so rdisc bounds the work any
+input can cause before it reads it."""),
     ("E006", "unreadable-file", """
 The file could not be read: it does not exist, is not readable, or is not UTF-8
 text."""),
@@ -391,7 +393,8 @@ velocity * 1000 }`. Right: `command velocity to drive.speed { raw = round(veloci
     ("E606", "body-device-agreement", """
 The body and the device must agree. Every value of a joint's range (its `limit`
 for a position, -velocity..velocity, -effort..effort), converted by `raw = ...`,
-must lie in the range the commanded parameter accepts (`goal: int in 0..4095`);
+must be a finite number in the range the commanded parameter accepts (`goal: int
+in 0..4095`), and converting it must not fail (no division by zero);
 and the two conversions must undo each other: a device value converted to the
 joint and back is itself, to one step of an int. Both are checked at 33 points of
 the joint's range with the interpreter the runtime uses. Wrong: a servo's `goal:

@@ -7,6 +7,13 @@ language adds (types, adapters, docs) is in extra keys. Expressions are written
 `"<expr>"` as in the thesis, printed from the typed IR with the parser's
 precedence table, and post-actions `"state = expr"` with the reply as `__out__`.
 
+The body (thesis ch. 6) is in `links`, `joints` and `transmissions`, in SI units as in
+RDIS and URDF: lengths and positions in m, angles in rad (`rpy`, a revolute joint's
+`limit`), masses in kg, inertia in kg m² about the centre of mass, velocities in rad/s
+or m/s, efforts in N m or N. A shape or a joint is placed by `xyz` and `rpy` (left out
+when zero); a transmission's conversions are `toDevice` (from the joint's quantity, by
+its name, to the device's value) and `toJoint` (from `raw` back).
+
 Deterministic: keys in a fixed logical order, elements in model order, 2-space
 indentation, no timestamp: the same Model always gives byte-identical text.
 """
@@ -53,6 +60,9 @@ def _document(model: m.Model) -> JsonObject:
         ("domainAdapters", adapters or None),
         ("domainInterfaces", [_input(i, model.adapters[i.adapter]) for i in model.inputs.values()]),
         ("domainOutputs", [_output(o) for o in model.outputs.values()]),
+        ("links", [_link(link) for link in model.links.values()] or None),
+        ("joints", [_joint(j) for j in model.joints.values()] or None),
+        ("transmissions", [_transmission(t) for t in model.transmissions.values()] or None),
     )
 
 
@@ -280,6 +290,80 @@ def _output(o: m.DomainOutput) -> JsonObject:
         ("adapter", o.adapter),
         ("returns", {name: _embedded(value) for name, value in o.fields}),
         ("doc", o.doc),
+    )
+
+
+# ---- the body --------------------------------------------------------------------------
+
+
+def _vector(v: tuple[float, ...]) -> list[float | int]:
+    return [_number(x) for x in v]
+
+
+def _pose(pose: m.Pose) -> tuple[tuple[str, Any], tuple[str, Any]]:
+    """`xyz` and `rpy` members, each left out when zero."""
+    return (("xyz", None if pose.xyz == m.ORIGIN else _vector(pose.xyz)),
+            ("rpy", None if pose.rpy == m.ORIGIN else _vector(pose.rpy)))
+
+
+def _shape(s: m.Shape) -> JsonObject:
+    mesh = s.kind is m.ShapeKind.MESH
+    return _object(
+        ("shape", s.kind.value),
+        ("path", s.path),
+        ("scale" if mesh else "size", _vector(s.size)),
+        *_pose(s.origin),
+    )
+
+
+def _link(link: m.Link) -> JsonObject:
+    inertial = link.inertial
+    return _object(
+        ("name", link.name),
+        ("visuals", [_shape(s) for s in link.visuals] or None),
+        ("collisions", [_shape(s) for s in link.collisions] or None),
+        ("inertial", None if inertial is None else {
+            "mass": _number(inertial.mass), "centre": _vector(inertial.centre), "inertia": _vector(inertial.inertia)}),
+        ("doc", link.doc),
+    )
+
+
+def _joint(j: m.Joint) -> JsonObject:
+    return _object(
+        ("name", j.name),
+        ("type", j.kind.value),
+        ("parent", j.parent),
+        ("child", j.child),
+        *_pose(j.origin),
+        ("axis", _vector(j.axis) if j.moves() else None),
+        ("limit", None if j.lower is None or j.upper is None else [_number(j.lower), _number(j.upper)]),
+        ("velocity", None if j.velocity is None else _number(j.velocity)),
+        ("effort", None if j.effort is None else _number(j.effort)),
+        ("damping", _number(j.damping) or None),
+        ("friction", _number(j.friction) or None),
+        ("doc", j.doc),
+    )
+
+
+def _binding(b: m.Binding) -> JsonObject:
+    target = "state" if b.parameter is None else "interface" if b.interface else "primitive"
+    return _object(
+        ("quantity", b.quantity.value),
+        (target, b.target),
+        ("parameter", b.parameter),
+        ("index", b.index),
+        ("toDevice", _embedded(b.to_device)),
+        ("toJoint", _embedded(b.to_joint)),
+    )
+
+
+def _transmission(t: m.Transmission) -> JsonObject:
+    return _object(
+        ("name", t.name),
+        ("joint", t.joint),
+        ("commands", [_binding(b) for b in t.commands] or None),
+        ("measures", [_binding(b) for b in t.measures] or None),
+        ("doc", t.doc),
     )
 
 

@@ -2,6 +2,9 @@
 reference between them, in Graphviz's DOT language; `svg` lays it out with Graphviz's
 `dot`.
 
+The body is drawn as its tree (link, joint, link) with each transmission's edges to the
+joint it drives, the primitive or interface that commands it and the state that measures it.
+
 Every node's `id` is `kind:name`, its label the kind and the name, and its tooltip the
 place in the source it was declared (`file:line`), so an SVG can be searched and points
 back to the text. Constants, enums and tables are folded into the expressions that use
@@ -30,6 +33,9 @@ _STYLE = {
     "setting": ("ellipse", "#f0f0f0"),
     "constant": ("plaintext", "#ffffff"),
     "table": ("plaintext", "#ffffff"),
+    "link": ("box", "#e4e4f7"),
+    "joint": ("circle", "#e4e4f7"),
+    "transmission": ("hexagon", "#f7f0d4"),
 }
 
 
@@ -85,6 +91,9 @@ def nodes(model: m.Model) -> Iterator[tuple[str, str, Span | None]]:
     yield from (("adapter", a.name, a.span) for a in model.adapters.values() if a.name in used or not a.standard)
     yield from (("setting", s.name, s.span) for s in model.settings.values())
     yield from (("state", s.name, s.span) for s in model.states.values() if s.name not in model.settings)
+    yield from (("link", link.name, link.span) for link in model.links.values())
+    yield from (("joint", j.name, j.span) for j in model.joints.values())
+    yield from (("transmission", t.name, t.span) for t in model.transmissions.values())
     yield from (("constant", name, None) for name in model.constants)
     yield from (("table", name, None) for name in model.tables)
 
@@ -128,6 +137,16 @@ def _edges(model: m.Model) -> Iterator[tuple[str, str, str]]:
         yield f"output:{o.name}", f"adapter:{o.adapter}", "sends"
         for name in _reads(*(e for _, e in o.fields)):
             yield variable(name), f"output:{o.name}", "read by"
+    for j in model.joints.values():  # the body as a tree: parent link, joint, child link
+        yield f"link:{j.parent}", f"joint:{j.name}", j.kind.value
+        yield f"joint:{j.name}", f"link:{j.child}", "child"
+    for t in model.transmissions.values():
+        yield f"transmission:{t.name}", f"joint:{t.joint}", "drives"
+        for b in t.commands:
+            kind = "interface" if b.interface else "primitive"
+            yield f"transmission:{t.name}", f"{kind}:{b.target}", f"commands {b.quantity.value} as {b.place()}"
+        for b in t.measures:
+            yield variable(b.target), f"transmission:{t.name}", f"measures {b.quantity.value} as {b.place()}"
 
 
 def _reads(*exprs: m.Expr) -> list[str]:

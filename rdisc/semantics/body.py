@@ -9,9 +9,10 @@ URDF, a simulation and the serial device cannot silently disagree.
 from __future__ import annotations
 
 import math
+from collections import deque
 from collections.abc import Callable, Iterable
 
-from rdisc.diagnostics import Diagnostics, Label
+from rdisc.diagnostics import Diagnostics, Label, abbreviate
 from rdisc.semantics import model as m
 from rdisc.semantics.model import Scope, Type
 from rdisc.semantics.operators import EvalError
@@ -29,6 +30,9 @@ _KINDS = {k.value: k for k in m.JointKind}
 _QUANTITIES = {q.value: q for q in m.Quantity}
 _LIMITED = (m.JointKind.REVOLUTE, m.JointKind.PRISMATIC)
 SAMPLES = 33  # points of a joint's range at which a conversion is checked, both ends included
+# Operations of all conversions checked against the device: under a second of sampling, many times
+# what a real body has; beyond it, a description's conversions would cost more to check than to read.
+MAX_CONVERSION_NODES = 50_000
 _CONSTANTS = Env({}, "in the body", "constants")
 
 Number = Callable[[ast.Expr, str], "float | None"]
@@ -42,6 +46,7 @@ class BodyRules:
         self.typer = typer
         self.s = symbols
         self.number = number
+        self.work = 0  # operations of the conversions sampled so far
 
     # -- constants of the body ---------------------------------------------------------
 
@@ -238,7 +243,8 @@ class BodyRules:
                     lower = upper = None
         elif kind in _LIMITED:
             self.d.report("E603", decl.name.span, f"{kind.value} joint `{decl.name.text}` has no `limit LOW..HIGH`",
-                          help="a continuous joint turns without limits")
+                          help="a continuous joint turns without limits" if kind is m.JointKind.REVOLUTE
+                          else "the range it slides over, in metres")
         bounds: dict[str, float | None] = {}
         for key, zero in (("velocity", False), ("effort", False), ("damping", True), ("friction", True)):
             expr = self.once(items, key, decl.name)
@@ -254,9 +260,10 @@ class BodyRules:
 
     def tree(self, links: dict[str, m.Link], joints: dict[str, m.Joint]) -> dict[str, m.Joint]:
         """One tree with one root: every link moved by at most one joint, reachable from the root,
-        no cycle. The joints come back parents first."""
+        no cycle. The joints come back parents first. A link is reported detached only when every
+        joint was understood: a joint refused or naming an unknown link may be the one missing."""
         decls = self.s.joints
-        moved_by: dict[str, str] = {}
+        moved_by: dict[str, m.Joint] = {}
         for joint in joints.values():
             decl = decls[joint.name]
             if joint.parent == joint.child:
@@ -265,10 +272,10 @@ class BodyRules:
             first = moved_by.get(joint.child)
             if first is not None:
                 self.d.report("E601", decl.child.span, f"link `{joint.child}` is the child of two joints",
-                              labels=(Label(decls[first].child.span, f"also of joint `{first}`"),),
+                              labels=(Label(decls[first.name].child.span, f"also of joint `{first.name}`"),),
                               help="a link hangs from one parent; join the other with a link of its own")
                 continue
-            moved_by[joint.child] = joint.name
+            moved_by[joint.child] = joint
         if not links:
             return {}
         roots = [name for name in links if name not in moved_by]
@@ -277,27 +284,50 @@ class BodyRules:
             self.d.report("E601", self.s.links[name].name.span, "the links form a cycle with no root",
                           help="one link, the base, is the child of no joint")
             return {}
-        for extra in roots[1:]:
+        complete = len(joints) == len(decls) and all(j.parent in links and j.child in links for j in joints.values())
+        for extra in roots[1:] if complete else ():
             self.d.report("E601", self.s.links[extra].name.span, f"link `{extra}` is not joined to the tree of "
                           f"`{roots[0]}`", labels=(Label(self.s.links[roots[0]].name.span, "the root"),),
                           help="join it with a joint (`fixed` if it does not move): a robot is one tree")
-        order: dict[str, m.Joint] = {}
         children: dict[str, list[m.Joint]] = {}
-        for joint in joints.values():
-            if moved_by.get(joint.child) == joint.name:
-                children.setdefault(joint.parent, []).append(joint)
-        frontier = [roots[0]]
-        while frontier:
-            parent = frontier.pop(0)
-            for joint in children.get(parent, ()):
-                order[joint.name] = joint
-                frontier.append(joint.child)
-        for joint in joints.values():
-            if joint.name not in order and moved_by.get(joint.child) == joint.name and joint.child in links \
-                    and joint.parent in links and joint.parent in moved_by:
-                self.d.report("E601", decls[joint.name].name.span, f"joint `{joint.name}` closes a cycle: link "
-                              f"`{joint.child}` is not reachable from the root `{roots[0]}`")
+        for joint in moved_by.values():
+            children.setdefault(joint.parent, []).append(joint)
+        order: dict[str, m.Joint] = {}
+        reached: set[str] = set()
+        for root in roots:  # the root's tree first: its joints are the body's; then the detached trees
+            frontier = deque([root])
+            while frontier:
+                for joint in children.get(frontier.popleft(), ()):
+                    if root == roots[0]:
+                        order[joint.name] = joint
+                    reached.add(joint.child)
+                    frontier.append(joint.child)
+        self.cycles({link: joint for link, joint in moved_by.items() if link not in reached and link in links},
+                    roots[0])
         return order
+
+    def cycles(self, unreached: dict[str, m.Joint], root: str) -> None:
+        """Report each cycle among links no root reaches, once, at its first joint declared: each such
+        link hangs from its parent, so following parents ends on a cycle or on an unknown link."""
+        state: dict[str, int] = {}  # 1: on the path being followed, 2: done
+        declared = {name: i for i, name in enumerate(self.s.joints)}
+        for start in unreached:
+            path: list[str] = []
+            link: str | None = start
+            while link is not None and link in unreached and link not in state:
+                state[link] = 1
+                path.append(link)
+                link = unreached[link].parent
+            if link is not None and state.get(link) == 1:
+                ring = path[path.index(link):]
+                names = [unreached[x].name for x in ring]
+                first = min(names, key=declared.__getitem__)
+                self.d.report("E601", self.s.joints[first].name.span,
+                              f"joint `{first}` closes a cycle: links " + ", ".join(f"`{x}`" for x in ring)
+                              + f" hang from each other, not from the root `{root}`",
+                              help="a robot is one tree: every link hangs from the root through one joint")
+            for x in path:
+                state[x] = 2
 
     # -- transmissions -----------------------------------------------------------------
 
@@ -363,7 +393,7 @@ class BodyRules:
             return None
         scalar = device.element if isinstance(device, m.Array) else device
         if scalar not in (Type.INT, Type.FLOAT):
-            self.d.report("E605", b.target.span, f"{where} is {describe(device)}, not a number",
+            self.d.report("E605", (b.member or b.target).span, f"{where} is {describe(device)}, not a number",
                           help="a joint's quantity is carried by an int or float")
             return None
         conversions = self.conversions(b, quantity, scalar)
@@ -378,7 +408,8 @@ class BodyRules:
         """The element of an array a binding names (False when refused, None for a scalar)."""
         if isinstance(device, m.Array):
             if b.index is None:
-                self.d.report("E605", b.span, f"{where} is {describe(device)}: name one element, `[i]`")
+                self.d.report("E605", (b.member or b.target).span, f"{where} is {describe(device)}: name one "
+                              "element, `[i]`")
                 return False
             value = self.number(b.index, "an element's index")
             if value is None:
@@ -439,29 +470,48 @@ class BodyRules:
                      or isinstance(i, ast.BodyValue) and i.key == text), decl.span)
         if low is None or high is None:
             return
-        from rdisc.runtime.evaluate import evaluate  # the runtime's own interpreter: the check is what runs
+        from rdisc.runtime.evaluate import prepare  # the runtime's own interpreter: the check is what runs
 
+        self.work += 2 * size(binding.to_device) + size(binding.to_joint)
+        if self.work > MAX_CONVERSION_NODES:
+            if self.work - MAX_CONVERSION_NODES <= 2 * size(binding.to_device) + size(binding.to_joint):
+                self.d.report("E005", b.span, f"the body's conversions have more than {MAX_CONVERSION_NODES} "
+                              "operations in all: too many to check against the device",
+                              help="a conversion is a scale and an offset: `raw = round(position * 195.3) + 512`")
+            return
         name = binding.quantity.value
         step = 1.0 if device is Type.INT else 0.0
+        to_device, to_joint = prepare(binding.to_device), prepare(binding.to_joint)
+
+        def given(value: m.Value, type_: Type) -> m.Value:
+            """A value as the runtime binds it: an int where a float is declared made a float."""
+            return float(value) if type_ is Type.FLOAT and type(value) is int else value
+
         for x in sample(low, high):
             try:
-                raw = evaluate(binding.to_device, {name: x})
-                back = evaluate(binding.to_joint, {"raw": raw})
-                again = evaluate(binding.to_device, {name: back})
+                raw = given(to_device({}, {name: x}, ()), device)
+                back = given(to_joint({}, {"raw": raw}, ()), Type.FLOAT)
+                again = given(to_device({}, {name: back}, ()), device)
             except (EvalError, ArithmeticError, ValueError, OverflowError) as err:
                 self.d.report("E606", b.span, f"converting {name} {x:g} of joint `{joint.name}` fails: {err}",
                               labels=(Label(span, f"its {text}"),))
                 return
+            if any(isinstance(v, float) and not math.isfinite(v) for v in (raw, back, again)):
+                self.d.report("E606", b.span, f"converting {name} {x:g} of joint `{joint.name}` gives raw "
+                              f"{_shown(raw)}, which comes back as {name} {_shown(back)}: not a finite number",
+                              labels=(Label(span, f"its {text}"),))
+                return
             if param is not None and param.low is not None and param.high is not None \
                     and not param.low <= raw <= param.high:  # type: ignore[operator]
-                self.d.report("E606", b.span, f"joint `{joint.name}`'s {name} {x:g} becomes {raw!r} at "
+                self.d.report("E606", b.span, f"joint `{joint.name}`'s {name} {x:g} becomes {_shown(raw)} at "
                               f"{binding.place()}, outside its range {param.range_text()}",
                               labels=(Label(span, f"the joint's {text}"), *self.range_label(binding)),
                               help="narrow the joint's limits, or correct the conversion")
                 return
             if not _close(again, raw, step):  # type: ignore[arg-type]
                 self.d.report("E606", b.span, f"the conversions do not undo each other: {name} {x:g} becomes "
-                              f"raw {raw!r}, which comes back as {name} {back!r}, which becomes raw {again!r}",
+                              f"raw {_shown(raw)}, which comes back as {name} {_shown(back)}, which becomes raw "
+                              f"{_shown(again)}",
                               help=f"`{name} = ...` must invert `raw = ...`")
                 return
 
@@ -483,12 +533,34 @@ def joint_range(joint: m.Joint, quantity: m.Quantity) -> tuple[float | None, flo
     return (None, None, "") if bound is None else (-bound, bound, quantity.value)
 
 
+def size(expr: m.Expr) -> int:
+    """The number of operations (nodes) of an expression."""
+    count, pending = 0, [expr]
+    while pending:
+        count += 1
+        pending.extend(m.operands(pending.pop()))
+    return count
+
+
 def sample(low: float, high: float) -> list[float]:
-    return [low + (high - low) * i / (SAMPLES - 1) for i in range(SAMPLES)]
+    """SAMPLES points from low to high, both included; weighted so that no step overflows when
+    high - low is beyond the largest float."""
+    return [low * (1 - i / (SAMPLES - 1)) + high * (i / (SAMPLES - 1)) for i in range(SAMPLES)]
+
+
+def _shown(value: object) -> str:
+    return abbreviate(repr(value))
 
 
 def _close(a: float, b: float, step: float) -> bool:
-    return abs(a - b) <= max(step, 1e-9 * max(abs(a), abs(b), 1.0))
+    """Equal to one step (of an int), or to a relative 1e-9; exact for ints beyond a float's range."""
+    difference = abs(a - b)
+    if difference <= step:
+        return True
+    try:
+        return difference <= 1e-9 * max(abs(a), abs(b), 1.0)
+    except OverflowError:  # ints too large for a float that differ by more than a step
+        return False
 
 
 def principal_moments(t: tuple[float, float, float, float, float, float]) -> tuple[float, float, float]:

@@ -114,8 +114,40 @@ def _code(d: ast.Decl) -> list[str]:
                 else:
                     lines.append(_frame_part(item))
             return _block(head, lines)
+        case ast.LinkDecl(name, items):
+            return _block(f"link {name.text}", [_link_item(i) for i in items])
+        case ast.JointDecl(name, kind, parent, child, items):
+            return _block(f"joint {name.text}: {kind.text} {parent.text} -> {child.text}",
+                          [_joint_item(i) for i in items])
+        case ast.TransmissionDecl(name, joint, bindings):
+            return _block(f"transmission {name.text}: {joint.text}", [line for b in bindings for line in _binding(b)])
         case _:
             _unreachable(d)
+
+
+# ---- the body -------------------------------------------------------------------------
+
+
+def _link_item(item: ast.ShapeUse | ast.BodyValue) -> str:
+    if isinstance(item, ast.BodyValue):
+        return f"{item.key} {print_expr(item.value)}"
+    shape = f"{item.role} {item.shape.kind.text}({_args(item.shape.args)})"
+    return shape + "".join(f" {word} {print_expr(e)}" for word, e in (("at", item.at), ("rpy", item.rpy))
+                           if e is not None)
+
+
+def _joint_item(item: ast.BodyValue | ast.JointLimit) -> str:
+    if isinstance(item, ast.JointLimit):
+        return f"limit {print_expr(item.low)}..{print_expr(item.high)}"
+    return f"{item.key} {print_expr(item.value)}"
+
+
+def _binding(b: ast.Binding) -> list[str]:
+    """`command Q to T.P[i] { ... }` or `measure Q from S[i] { ... }`, one conversion a line."""
+    place = b.target.text + ("" if b.member is None else f".{b.member.text}")
+    place += "" if b.index is None else f"[{print_expr(b.index)}]"
+    word = "to" if b.role == "command" else "from"
+    return _block(f"{b.role} {b.quantity.text} {word} {place}", [_assign(a) for a in b.conversions])
 
 
 def _bit_field(f: ast.FrameBitField) -> str:

@@ -15,7 +15,7 @@ from rdisc.semantics import model as m
 from rdisc.semantics.model import Scope, Type
 
 ROOT = Path(__file__).resolve().parents[2]
-EXAMPLES = sorted((ROOT / "examples").glob("*.rdis"))
+EXAMPLES = [*sorted((ROOT / "examples").glob("*.rdis")), ROOT / "tests" / "golden" / "json" / "body.rdis"]
 
 
 def const(value: m.Value, type_: Type) -> m.Const:

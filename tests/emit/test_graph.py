@@ -84,3 +84,25 @@ def test_a_broken_description_draws_nothing(rdisc, tmp_path: Path) -> None:
     result = rdisc("graph", broken, "-o", tmp_path / "m.dot")
     assert result.returncode == 1 and "error[E102]" in result.stderr
     assert not (tmp_path / "m.dot").exists()
+
+
+def test_the_body_is_a_tree_with_its_transmissions(rdisc) -> None:
+    """Links and joints drawn as the tree (parent, joint, child); a transmission's edges go to its
+    joint, to what commands it and from the state that measures it."""
+    dot = rdisc("graph", "tests/golden/json/body.rdis").stdout
+    edges = [line.strip() for line in dot.splitlines() if "->" in line and ("link:" in line or "transmission:" in line)]
+    assert edges == [
+        '"link:base" -> "joint:shoulder" [label="revolute"];',
+        '"joint:shoulder" -> "link:upper" [label="child"];',
+        '"link:base" -> "joint:mount" [label="fixed"];',
+        '"joint:mount" -> "link:camera" [label="child"];',
+        '"link:upper" -> "joint:rail" [label="prismatic"];',
+        '"joint:rail" -> "link:carriage" [label="child"];',
+        '"transmission:shoulder_servo" -> "joint:shoulder" [label="drives"];',
+        '"transmission:shoulder_servo" -> "primitive:servo" [label="commands position as servo.goal"];',
+        '"state:present" -> "transmission:shoulder_servo" [label="measures position as present[0]"];',
+        '"transmission:rail_drive" -> "joint:rail" [label="drives"];',
+        '"transmission:rail_drive" -> "interface:slide" [label="commands velocity as slide.speed"];',
+    ]
+    assert ('"joint:rail" [id="joint:rail", label="joint\\nrail", shape="circle", fillcolor="#e4e4f7", '
+            'tooltip="body.rdis:19"];') in dot

@@ -20,6 +20,17 @@ def test_canonical_json_golden(name: str, rdisc, golden) -> None:
     golden.check(JSON / f"{name}.json", result.stdout)
 
 
+def test_the_body_golden(rdisc, golden, tmp_path: Path) -> None:
+    """Links, joints and transmissions in JSON (every kind of shape, joint and binding), and the
+    JSON built again gives the same text."""
+    result = rdisc("build", JSON / "body.rdis")
+    assert (result.returncode, result.stderr) == (0, "")
+    golden.check(JSON / "body.json", result.stdout)
+    (tmp_path / "body.json").write_text(result.stdout, encoding="utf-8")
+    again = rdisc("build", tmp_path / "body.json")
+    assert (again.returncode, again.stderr, again.stdout) == (0, "", result.stdout)
+
+
 @pytest.mark.parametrize("name", EXAMPLES)
 def test_build_is_byte_identical_under_different_hash_seeds(name: str, rdisc, tmp_path: Path) -> None:
     outputs = []

@@ -34,7 +34,8 @@ from rdisc.diagnostics.text import render_plain
 from rdisc.source import Sources
 
 REPO = Path(__file__).resolve().parents[2]
-SEED_PATHS = sorted((REPO / "examples").glob("*.rdis")) + [REPO / "stdlib" / "adapters.rdis"]
+BODY = REPO / "tests" / "golden" / "json" / "body.rdis"  # every kind of link, joint and transmission
+SEED_PATHS = sorted((REPO / "examples").glob("*.rdis")) + [REPO / "stdlib" / "adapters.rdis", BODY]
 SEEDS = [p.read_text(encoding="utf-8") for p in SEED_PATHS]
 
 FUZZ = settings(
@@ -59,6 +60,8 @@ TOKENS = [
     '"{0.__class__}"', '"{!r}"', '"{:>999999999}"', '"{"', '"}"', '"\\q"', '"\\x4"', '"\\uZZZZ"',
     'r"(\\d+"', '"%s"', '">Bz"', '"P"', '"999999999B"', '"@"',
     "__import__('os')", "_x", "x.y", "eval(", "lambda", "[x for x in y]",
+    "link", "joint", "transmission", "visual", "collision", "mesh(", "box(", "mass", "inertia", "axis", "limit",
+    "command", "measure", "to", "from", "raw", "->", "..", "[0, 0, 0]", "[1e308, 1, 1]",
     "\x00", "\x1b[31m", "\u202e", "\u200b", "\ufeff", "\u0301", "\U0001F916", "\ud7ff", "\u2028", "\x85",
     "é", "字", "\uffff",
 ]
@@ -303,17 +306,17 @@ def test_reply_index_with_a_string_branch(workdir: Path) -> None:
 # -- JSON through the importer ---------------------------------------------------------
 
 
-def canonical(name: str) -> str:
+def canonical(path: Path) -> str:
     from rdisc.emit.canonical import to_json
 
-    c = compile_path(str(REPO / "examples" / f"{name}.rdis"))
+    c = compile_path(str(path))
     assert c.model is not None
     return to_json(c.model)
 
 
 @pytest.fixture(scope="module")
 def json_seeds() -> list[str]:
-    return [canonical("create"), canonical("koala")]
+    return [canonical(REPO / "examples" / "create.rdis"), canonical(REPO / "examples" / "koala.rdis"), canonical(BODY)]
 
 
 JSON_TOKENS = [
@@ -321,11 +324,12 @@ JSON_TOKENS = [
     '"<__import__(\'os\')>"', '"<1 << 100000>"', '"<2 ** 10 ** 10>"', '"<(((((((((((>"', '"<' + "-" * 150 + '1>"',
     '"\\ud800"', '"\\u0000"', '"{0.__class__}"', '"__out__[7]"', "[" * 150, "{\"a\":" * 120,
     '"name"', '"primitives"', '"interfaces"', '"connections"', '"spp"', '"formatArgs"', '"pack"', '"postActions"',
+    '"links"', '"joints"', '"transmissions"', '"toDevice"', '"limit"', '"size"', '"mesh"', '"inertia"',
 ]
 
 
 @settings(FUZZ, max_examples=fuzz_examples(120))
-@given(which=st.integers(0, 1), edits=st.lists(edit, min_size=1, max_size=5), token=st.sampled_from(JSON_TOKENS),
+@given(which=st.integers(0, 2), edits=st.lists(edit, min_size=1, max_size=5), token=st.sampled_from(JSON_TOKENS),
        at=st.floats(0, 1))
 def test_mutated_json(workdir: Path, json_seeds: list[str], which: int, edits, token: str, at: float) -> None:
     text = mutate(json_seeds[which], edits)
@@ -362,7 +366,7 @@ def _replace_somewhere(doc, rng: random.Random, value):
 
 
 @settings(FUZZ, max_examples=fuzz_examples(60))
-@given(which=st.integers(0, 1), choice=st.integers(0, 2**32 - 1), values=st.lists(json_values, min_size=1, max_size=3),
+@given(which=st.integers(0, 2), choice=st.integers(0, 2**32 - 1), values=st.lists(json_values, min_size=1, max_size=3),
        drop=st.booleans())
 def test_structurally_mutated_json(workdir: Path, json_seeds: list[str], which: int, choice: int, values,
                                    drop: bool) -> None:
@@ -497,3 +501,35 @@ def test_binary_junk(workdir: Path) -> None:
 def test_fifty_thousand_syntax_errors_are_capped(workdir: Path) -> None:
     c = giant(workdir, "errors.rdis", HEAD + "state $\n" * 50_000, "E002")
     assert len(c.diagnostics.items) <= 200
+
+
+def _body(links: int, conversion: str = "round(position * 195.3) + 512") -> str:
+    """A chain of `links` links, each turned by a revolute joint through a servo's goal."""
+    lines = ['primitive servo(goal: int in 0..1023) on link pack ">H" (goal)', "link l0 { visual box(1, 1, 1) }"]
+    for i in range(1, links):
+        lines += [f"link l{i} {{ visual box(1, 1, 1) mass 1 inertia [1, 1, 1] }}",
+                  f"joint j{i}: revolute l{i - 1} -> l{i} {{ limit -1.5..1.5 velocity 2 effort 1 axis [0, 0, 1] }}",
+                  (f"transmission t{i}: j{i} {{ command position to servo.goal "
+                  f"{{ raw = {conversion}  position = (raw - 512) / 195.3 }} }}")]
+    return HEAD + "\n".join(lines) + "\n"
+
+
+def test_two_thousand_links_check_in_linear_time(workdir: Path) -> None:
+    """A body of 2,000 links, joints and transmissions (each conversion sampled 33 times) costs
+    what a description of its size costs: the tree is walked once, no joint searched for."""
+    path = workdir / "chain.rdis"
+    path.write_text(_body(2000), encoding="utf-8")
+    reference = min(cpu_seconds(lambda: check(REFERENCE))[0] for _ in range(3))
+    cost, c = cpu_seconds(lambda: check(path))
+    assert isinstance(c, Compilation) and c.model is not None, c.diagnostics.items
+    assert len(c.model.joints) == 1999 and len(c.model.transmissions) == 1999
+    assert cost < 200 * reference, f"{cost:.2f} s of CPU, {cost / reference:.0f} checks of {REFERENCE.name}"
+
+
+def test_huge_conversions_are_sampled_within_a_budget(workdir: Path) -> None:
+    """Conversions of thousands of operations each: sampling stops at 50,000 operations in all."""
+    group = "(" + " + ".join(["position * 0.01"] * 20) + ")"
+    wide = "round(" + " + ".join([f"({' + '.join([group] * 20)})"] * 5) + ")"  # 2,000 products
+    c = giant(workdir, "conversions.rdis", _body(12, wide), "E005")
+    assert [d.message for d in c.diagnostics.items if d.code == "E005"] == [
+        "the body's conversions have more than 50000 operations in all: too many to check against the device"]

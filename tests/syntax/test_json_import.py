@@ -17,6 +17,7 @@ from rdisc.syntax.json_import import MAX_DEPTH, MAX_VALUES, read
 from rdisc.syntax.printer import print_module
 
 DATA = Path(__file__).resolve().parent / "data"
+ROOT = Path(__file__).resolve().parents[2]
 
 
 def imported(text: str) -> tuple[ast.Module | None, Diagnostics]:
@@ -366,6 +367,22 @@ ERRORS = [
     ('{"name": "x",\n "connections": {"spp": [{"name": "c", "keepalive": {"name": "k"}}]}}', "E008", 2, 53,
      "the `keepalive` hook has no `interval`"),
     ('{"name": "x",\n "domainOutputs": [{"name": "o"}]}', "E008", 2, 20, "a domain output has no `returns`"),
+    ('{"name": "x",\n "links": [{"name": "l", "visuals": [{"size": [1]}]}]}', "E008", 2, 38,
+     "a visual shape has no `shape`"),
+    ('{"name": "x",\n "links": [{"name": "l", "inertial": {"mass": 1, "inertia": [1, 1, 1], "centre_": [0, 0, 0]}}]}',
+     "E008", 2, 72, "unknown member `centre_` in `inertial`"),
+    ('{"name": "x",\n "joints": [{"name": "j", "type": "fixed", "child": "b"}]}', "E008", 2, 13,
+     "a joint has no `parent`"),
+    ('{"name": "x",\n "joints": [{"name": "j", "type": "revolute", "parent": "a", "child": "b", "limit": [1]}]}',
+     "E008", 2, 85, "a joint's limit is `[low, high]`"),
+    (('{"name": "x",\n "transmissions": [{"name": "t", "joint": "j", "commands": [{"quantity": "position", '
+     '"parameter": "p", "toDevice": "<position>", "toJoint": "<raw>"}]}]}'), "E008", 2, 61,
+     "a command names one `primitive` or one `interface`"),
+    (('{"name": "x",\n "transmissions": [{"name": "t", "joint": "j", "measures": [{"quantity": "position", '
+     '"state": "s", "toDevice": "<position>"}]}]}'), "E008", 2, 61, "a measure has no `toJoint`"),
+    (('{"name": "x",\n "transmissions": [{"name": "t", "joint": "j", "measures": [{"quantity": "position", '
+     '"state": "s", "toDevice": "<position +>", "toJoint": "<raw>"}]}]}'), "E001", 2, 124,
+     "expected an expression, found the end of the expression"),
     ("[" * (MAX_DEPTH + 1) + "]" * (MAX_DEPTH + 1), "E005", 1, MAX_DEPTH + 1,
      f"JSON is nested too deeply (the limit is {MAX_DEPTH} levels)"),
     ("[" + "1," * MAX_VALUES + "1]", "E005", 1, 2 * MAX_VALUES + 1,
@@ -379,6 +396,35 @@ def test_errors(text: str, code: str, line: int, column: int, message: str) -> N
     (d,) = diagnostics.items
     position = SourceFile("t.json", text).position(d.span.start)
     assert (d.code, position.line + 1, position.column + 1, d.message) == (code, line, column, message)
+
+
+def test_the_body_checked_from_json_points_into_the_json(tmp_path: Path) -> None:
+    """The checker's diagnostics about a body read from JSON are at the JSON's lines: a zero axis,
+    two parents, a command naming a primitive as an interface."""
+    document = json.loads(compile_json(ROOT / "tests" / "golden" / "json" / "body.rdis"))
+    document["joints"][0]["axis"] = [0, 0, 0]
+    document["joints"][1]["child"] = "upper"
+    document["transmissions"][1]["commands"][0]["primitive"] = document["transmissions"][1]["commands"][0].pop(
+        "interface")
+    path = tmp_path / "body.json"
+    text = json.dumps(document, indent=1)
+    path.write_text(text, encoding="utf-8")
+    compilation = compile_path(str(path))
+    found = [(d.code, text[d.span.start:d.span.end], d.message) for d in compilation.diagnostics.items]
+    assert found == [
+        ("E008", '"slide"', "`slide` is an interface"),
+        ("E603", "[\n    0,\n    0,\n    0\n   ]", "an axis must not be zero"),
+        ("E601", "upper", "link `upper` is the child of two joints"),
+        ("E601", "camera", "link `camera` is not joined to the tree of `base`"),
+    ]
+
+
+def compile_json(path: Path) -> str:
+    from rdisc.emit.canonical import to_json
+
+    compilation = compile_path(str(path))
+    assert compilation.model is not None
+    return to_json(compilation.model)
 
 
 def test_unknown_member_suggests_the_closest() -> None:
@@ -407,7 +453,9 @@ json_values = st.recursive(
     st.none() | st.booleans() | st.integers() | st.floats(allow_nan=False, allow_infinity=False) | st.text(),
     lambda children: st.lists(children, max_size=4) | st.dictionaries(
         st.sampled_from(["name", "type", "value", "parameters", "primitives", "interfaces", "stateVariables",
-                         "connections", "spp", "formatArgs", "pack", "postActions", "returns", "calls", "x"]),
+                         "connections", "spp", "formatArgs", "pack", "postActions", "returns", "calls", "x",
+                         "links", "joints", "transmissions", "visuals", "shape", "size", "inertial", "mass",
+                         "parent", "child", "limit", "commands", "measures", "quantity", "state", "toDevice"]),
         children, max_size=5),
     max_leaves=30,
 )  # fmt: skip

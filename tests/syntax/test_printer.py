@@ -142,6 +142,61 @@ def test_canonical_text() -> None:
     assert parsed(EXPECTED) == module
 
 
+BODY = """
+link base { visual cylinder(0.17, 0.09) at [0, 0, 0.045]   collision box(0.3, 0.3, 0.09) rpy [0, 0, (1.5)]
+  mass 3.6 centre [0, 0, 0.03] inertia [0.02, 0.02, 0.035, 0, 0, 0.001] visual mesh("m.stl", [1, 1, 2]) }
+link arm {}
+/// The shoulder.
+joint lift: revolute base -> arm { limit -(1.5)..1.5 velocity 2 effort 1 axis [0, 0, 1] damping 0.1 friction 0 }
+transmission lifter: lift {
+  command position to servo.goal { raw = round(position * 195.3) + 512   position = (raw - 512) / 195.3 }
+  measure position from present[ID - 1] { raw = round(position * 195.3) + 512 position = (raw - 512) / 195.3 }
+  command effort to torque.limit[0] {}
+}
+"""
+
+BODY_EXPECTED = """link base {
+    visual cylinder(0.17, 0.09) at [0, 0, 0.045]
+    collision box(0.3, 0.3, 0.09) rpy [0, 0, 1.5]
+    mass 3.6
+    centre [0, 0, 0.03]
+    inertia [0.02, 0.02, 0.035, 0, 0, 0.001]
+    visual mesh("m.stl", [1, 1, 2])
+}
+
+link arm {}
+
+/// The shoulder.
+joint lift: revolute base -> arm {
+    limit -1.5..1.5
+    velocity 2
+    effort 1
+    axis [0, 0, 1]
+    damping 0.1
+    friction 0
+}
+
+transmission lifter: lift {
+    command position to servo.goal {
+        raw = round(position * 195.3) + 512
+        position = (raw - 512) / 195.3
+    }
+    measure position from present[ID - 1] {
+        raw = round(position * 195.3) + 512
+        position = (raw - 512) / 195.3
+    }
+    command effort to torque.limit[0] {}
+}
+"""
+
+
+def test_the_body_prints_back() -> None:
+    """Links, joints and transmissions: every clause in the order written, one a line."""
+    module = parsed(BODY)
+    assert print_module(module) == BODY_EXPECTED
+    assert parsed(BODY_EXPECTED) == module
+
+
 def test_empty_module() -> None:
     assert print_module(ast.Module("t.rdis", ())) == ""
 
@@ -228,6 +283,8 @@ def test_literals_outside_what_the_parser_makes(node: ast.Expr, printed: str) ->
 _RESERVED = KEYWORDS | set(DECL_KEYWORDS) | {
     "r", "on", "pack", "format", "unpack", "regex", "periodic", "adhoc", "triggers", "baud", "threading",
     "at", "Hz", "startup", "terminate", "keepalive", "every", "ms", "s", "unit", "ros",
+    "visual", "collision", "mass", "centre", "inertia", "rpy", "axis", "limit", "velocity", "effort", "damping",
+    "friction", "command", "measure", "to", "from",
 }  # fmt: skip
 
 names = st.from_regex(r"[A-Za-z][A-Za-z0-9_]{0,6}", fullmatch=True).filter(lambda n: n not in _RESERVED)
@@ -324,6 +381,34 @@ declarations = st.one_of(
     st.builds(ast.InputDecl, ids, ids, calls, doc=docs),
     st.builds(ast.OutputDecl, ids, ids, st.lists(assigns, max_size=3).map(tuple), doc=docs),
     st.builds(ast.ImportDecl, strings, doc=docs),
+    st.builds(
+        ast.LinkDecl, ids,
+        st.lists(st.one_of(
+            st.builds(ast.ShapeUse, st.sampled_from(["visual", "collision"]), st.builds(ast.Shape, ids, args),
+                      st.none() | expressions, st.none() | expressions),
+            st.builds(ast.BodyValue, st.sampled_from(["mass", "centre", "inertia"]), expressions),
+        ), max_size=4).map(tuple),
+        doc=docs,
+    ),
+    st.builds(
+        ast.JointDecl, ids, ids, ids, ids,
+        st.lists(st.one_of(
+            st.builds(ast.BodyValue, st.sampled_from(["at", "rpy", "axis", "velocity", "effort", "damping",
+                                                      "friction"]), expressions),
+            st.builds(ast.JointLimit, expressions, expressions),
+        ), max_size=4).map(tuple),
+        doc=docs,
+    ),
+    st.builds(
+        ast.TransmissionDecl, ids, ids,
+        st.lists(st.one_of(
+            st.builds(ast.Binding, st.just("command"), ids, ids, ids, st.none() | expressions,
+                      st.lists(assigns, max_size=2).map(tuple)),
+            st.builds(ast.Binding, st.just("measure"), ids, ids, st.none(), st.none() | expressions,
+                      st.lists(assigns, max_size=2).map(tuple)),
+        ), max_size=3).map(tuple),
+        doc=docs,
+    ),
     st.builds(
         ast.RobotDecl, ids,
         st.lists(st.builds(ast.RobotAttr, st.sampled_from(["author", "description", "version"]), strings),

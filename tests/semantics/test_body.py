@@ -1,0 +1,217 @@
+"""The body's checks (rdisc/semantics/body.py), each with its exact diagnostic: where it points,
+what it says, and the help, the did-you-mean and the labels that show both sides."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from rdisc.compile import compile_path
+
+HEAD = 'robot r { author "t" }\nconnection c: serial { baud 9600 }\n'
+# A servo arm's device: a goal in 0..1023, a float speed, a string label; state read back.
+DEVICE = (
+    "link base {}\nlink arm {}\n"
+    "joint lift: revolute base -> arm { limit -1.5..1.5 velocity 2 effort 1 axis [0, 0, 1] }\n"
+    "state pos: int\nstate many: int[3]\nstate name: string\nsetting gain: float = 1.0\n"
+    'primitive servo(goal: int in 0..1023, speed: float, label: string) on c pack ">Hf" (goal, speed)\n'
+    'primitive read() on c pack "B" (1) unpack ">hhhh" { pos = out[0]  many = [out[1], out[2], out[3]] }\n'
+    "interface poll() periodic { read() }\n"
+    'interface move(target: float) { servo(round(target), 1.0, "") }\n'
+)
+
+Found = tuple[str, str, str]  # code, the text it points at, message
+
+
+def check(tmp_path: Path, body: str) -> list[tuple[str, str, str, str | None, list[tuple[str, str]]]]:
+    """The errors of a description, each as (code, the text it points at, message, help, labels)."""
+    text = HEAD + body
+    path = tmp_path / "body.rdis"
+    path.write_text(text, encoding="utf-8")
+    compilation = compile_path(str(path))
+    return [(d.code, text[d.span.start:d.span.end], d.message, d.help,
+             [(text[label.span.start:label.span.end], label.message) for label in d.labels])
+            for d in compilation.diagnostics.sorted() if d.severity == 1]
+
+
+def errors(tmp_path: Path, body: str) -> list[Found]:
+    return [found[:3] for found in check(tmp_path, body)]  # type: ignore[misc]
+
+
+TREE = [
+    ("link a {}\nlink b {}\njoint ab: fixed a -> b {}\njoint ba: fixed b -> a {}\n",
+     [("E601", "a", "the links form a cycle with no root")]),
+    (("link base {}\nlink a {}\nlink b {}\nlink c {}\njoint ab: fixed a -> b {}\njoint ba: fixed b -> a {}\n"
+     "joint bc: fixed b -> c {}\n"),
+     [("E601", "ab", "joint `ab` closes a cycle: links `b`, `a` hang from each other, not from the root `base`")]),
+    (("link base {}\nlink a {}\nlink b {}\njoint one: fixed base -> b {}\njoint two: fixed a -> b {}\n"
+     "joint three: fixed base -> a {}\n"),
+     [("E601", "b", "link `b` is the child of two joints")]),
+    ("link base {}\nlink a {}\nlink lost {}\nlink x {}\njoint j: fixed base -> a {}\njoint lx: fixed lost -> x {}\n",
+     [("E601", "lost", "link `lost` is not joined to the tree of `base`")]),
+    ("link base {}\njoint j: fixed base -> base {}\n", [("E601", "base", "joint `j` joins link `base` to itself")]),
+    ("link base {}\nlink wheel {}\njoint j: fixed bsae -> wheell {}\n",
+     [("E102", "bsae", "unknown link `bsae`"), ("E102", "wheell", "unknown link `wheell`")]),
+]
+
+SHAPES = [
+    ("link base { visual cylnder(0.1, 0.2) }\n", [("E602", "cylnder", "unknown shape `cylnder`")]),
+    ("link base { visual cylinder(0.1) }\n",
+     [("E602", "cylinder(0.1)", "cylinder takes 2 sizes (radius, length), not 1")]),
+    ("link base { visual box(0.1, 0, -1) }\n",
+     [("E602", "0", "a box's y must be more than 0, not 0"), ("E602", "-1", "a box's z must be more than 0, not -1")]),
+    ('link base { visual sphere(1) at [0, 0] collision sphere(1) at 5 }\n',
+     [("E602", "[0, 0]", "a position is three numbers, `[x, y, z]`, not 2"),
+      ("E602", "5", "a position must be constant numbers, written `[x, y, z]`")]),
+    ('link base { visual mesh("") collision mesh("a.stl", 0) visual mesh("a.stl", [1, 0, 1]) }\n',
+     [("E602", 'mesh("")', 'a mesh is `mesh("file")` or `mesh("file", scale)`'),
+      ("E602", "0", "a mesh's scale must be more than 0, not 0"),
+      ("E602", "[1, 0, 1]", "a mesh's scale must be more than 0")]),
+]
+
+JOINTS = [
+    ("link base {}\nlink a {}\njoint j: revolut base -> a {}\n", [("E603", "revolut", "unknown joint kind `revolut`")]),
+    ("link base {}\nlink a {}\njoint j: continuous base -> a { axis [0, 0, 0] }\n",
+     [("E603", "[0, 0, 0]", "an axis must not be zero")]),
+    ("link base {}\nlink a {}\njoint j: revolute base -> a { limit 1..-1 velocity 1 effort 1 }\n",
+     [("E603", "limit 1..-1", "a joint's limits are ordered, low < high, not 1..-1")]),
+    ("link base {}\nlink a {}\njoint j: prismatic base -> a { axis [1, 0, 0] }\n",
+     [("E603", "j", "prismatic joint `j` has no `limit LOW..HIGH`"),
+      ("E603", "j", "prismatic joint `j` has no `velocity`"),
+      ("E603", "j", "prismatic joint `j` has no `effort`")]),
+    ("link base {}\nlink a {}\njoint j: continuous base -> a { limit -1..1 }\n",
+     [("E603", "limit -1..1", "a continuous joint has no position limit")]),
+    ("link base {}\nlink a {}\njoint j: fixed base -> a { axis [0, 0, 1] velocity 1 limit 0..1 }\n",
+     [("E603", "axis [0, 0, 1]", "a fixed joint does not move: it has no `axis`"),
+      ("E603", "velocity 1", "a fixed joint does not move: it has no `velocity`"),
+      ("E603", "limit 0..1", "a fixed joint does not move: it has no `limit`")]),
+    ("link base {}\nlink a {}\njoint j: continuous base -> a { velocity 0 damping -1 friction 0 }\n",
+     [("E603", "0", "a joint's velocity must be more than 0, not 0"),
+      ("E603", "-1", "a joint's damping must be 0 or more, not -1")]),
+    ("link base {}\nlink a {}\njoint j: continuous base -> a { velocity 1 velocity 2 }\n",
+     [("E203", "velocity 2", "`velocity` is given twice in `j`")]),
+]
+
+INERTIALS = [
+    ("link base { mass 1 }\n", [("E604", "1", "link `base` has no inertia")]),
+    ("link base { inertia [1, 1, 1] }\n", [("E604", "[1, 1, 1]", "link `base` has no mass")]),
+    ("link base { centre [0, 0, 0] }\n", [("E604", "[0, 0, 0]", "link `base` has a centre of mass but no mass")]),
+    ("link base { mass 0 inertia [1, 1, 1] }\n", [("E604", "0", "a link's mass must be more than 0, not 0")]),
+    ("link base { mass 1 inertia [1, 1, 1, 2, 0, 0] }\n",
+     [("E604", "[1, 1, 1, 2, 0, 0]", "the inertia is not positive definite: its principal moments are 3, 1, -1")]),
+    ("link base { mass 1 inertia [0.1, 0.1, 0.3] }\n",
+     [("E604", "[0.1, 0.1, 0.3]",
+       "the inertia breaks the triangle inequality: its principal moments 0.1 + 0.1 < 0.3")]),
+    ("link base { mass 1 inertia [0.1, 0.1] }\n",
+     [("E604", "[0.1, 0.1]", "an inertia is [ixx, iyy, izz] or [ixx, iyy, izz, ixy, ixz, iyz], not 2 numbers")]),
+]
+
+
+def conversion(binding: str) -> str:
+    return DEVICE + f"transmission t: lift {{ {binding} }}\n"
+
+
+TRANSMISSIONS = [
+    (conversion("command positon to servo.goal { raw = 1  positon = raw }"),
+     [("E605", "positon", "unknown joint quantity `positon`")]),
+    (conversion("command position to servo.gaol { raw = round(position)  position = raw }"),
+     [("E605", "gaol", "primitive `servo` has no parameter `gaol`")]),
+    (conversion("measure position from many { raw = round(position)  position = raw }"),
+     [("E605", "many", "state variable `many` is an array int[3]: name one element, `[i]`")]),
+    (conversion("measure position from many[3] { raw = round(position)  position = raw }"),
+     [("E605", "3", "state variable `many` has elements 0..2, not 3")]),
+    (conversion("measure position from pos[0] { raw = round(position)  position = raw }"),
+     [("E605", "0", "state variable `pos` is not an array")]),
+    (conversion("measure position from name { raw = round(position)  position = raw }"),
+     [("E605", "name", "state variable `name` is a string, not a number")]),
+    (conversion("command position to servo.label { raw = round(position)  position = raw }"),
+     [("E605", "label", "parameter `servo.label` is a string, not a number")]),
+    (conversion("measure position from gain { raw = position  position = raw }"),
+     [("E605", "gain", "`gain` is a setting: a joint is measured by a state variable its replies set")]),
+    (conversion("command position to servo.goal { raw = round(position * 300) + 512 }"),
+     [("E605", "command position to servo.goal { raw = round(position * 300) + 512 }",
+       "this command does not say `position = ...` (from `raw`)")]),
+    (conversion("command position to servo.goal { raw = 1  position = raw  speed = 2 }"),
+     [("E605", "speed", "a command converts `raw` and `position`, not `speed`")]),
+    (conversion("command position to servo.goal { raw = 1  raw = 2  position = raw }"),
+     [("E203", "raw = 2", "`raw` is given twice")]),
+    (conversion("command position to servo.goal { raw = position * 300 + 512  position = (raw - 512) / 300 }"),
+     [("E402", "position * 300 + 512", "the device's value is an int, but this is a float")]),
+    (conversion('command position to servo.goal { raw = "a"  position = raw }'),
+     [("E401", '"a"', "a conversion gives a number, not a string")]),
+    (conversion("command position to servo.goal { raw = round(pos)  position = raw + position }"),
+     [("E103", "pos", "unknown name `pos` in a conversion to the device"),
+      ("E103", "position", "unknown name `position` in a conversion to the joint")]),
+    (conversion("command position to sevro.goal { raw = 1  position = raw }"),
+     [("E102", "sevro", "unknown primitive or interface `sevro`")]),
+    (conversion("measure position from poss { raw = round(position)  position = raw }"),
+     [("E102", "poss", "unknown state variable `poss`")]),
+    (DEVICE + "transmission t: lfit {}\n", [("E102", "lfit", "unknown joint `lfit`")]),
+    (DEVICE + "transmission t: lift {}\n", [("E605", "t", "transmission `t` neither commands nor measures joint `lift`")]),
+    (DEVICE + "link hand {}\njoint wrist: fixed arm -> hand {}\ntransmission t: wrist {}\n",
+     [("E605", "wrist", "joint `wrist` is fixed: there is nothing to transmit")]),
+]
+
+SIDES = "command position to servo.goal { raw = round(position * 400) + 512  position = (raw - 512) / 400 }"
+AGREEMENT = [
+    (conversion(SIDES),
+     [("E606", SIDES, "joint `lift`'s position -1.5 becomes -88 at servo.goal, outside its range 0..1023")]),
+    (conversion("command position to servo.goal { raw = round(position * 300) + 512  position = (raw - 512) / 150 }"),
+     [("E606", "command position to servo.goal { raw = round(position * 300) + 512  position = (raw - 512) / 150 }",
+       ("the conversions do not undo each other: position -1.5 becomes raw 62, which comes back as position -3.0, "
+       "which becomes raw -388"))]),
+    (conversion("command position to servo.goal { raw = round(1 / (position - position))  position = raw }"),
+     [("E606", "command position to servo.goal { raw = round(1 / (position - position))  position = raw }",
+       "converting position -1.5 of joint `lift` fails: division by zero")]),
+    (conversion('command velocity to servo.speed { raw = velocity * float("inf")  velocity = raw }'),
+     [("E606", 'command velocity to servo.speed { raw = velocity * float("inf")  velocity = raw }',
+       ("converting velocity -2 of joint `lift` gives raw -inf, which comes back as velocity -inf: not a finite "
+       "number"))]),
+]
+
+
+@pytest.mark.parametrize(("body", "expected"), TREE + SHAPES + JOINTS + INERTIALS + TRANSMISSIONS + AGREEMENT)
+def test_exact_errors(tmp_path: Path, body: str, expected: list[Found]) -> None:
+    assert errors(tmp_path, body) == expected
+
+
+def test_names_suggest_the_closest(tmp_path: Path) -> None:
+    helps = [(found[1], found[3]) for body in (TREE[5][0], SHAPES[0][0], JOINTS[0][0], TRANSMISSIONS[0][0],
+                                                 TRANSMISSIONS[1][0], TRANSMISSIONS[14][0], TRANSMISSIONS[15][0],
+                                                 TRANSMISSIONS[16][0])
+             for found in check(tmp_path, body)]
+    assert helps == [
+        ("bsae", "did you mean `base`?"), ("wheell", "did you mean `wheel`?"), ("cylnder", "did you mean `cylinder`?"),
+        ("revolut", "did you mean `revolute`?"), ("positon", "did you mean `position`?"),
+        ("gaol", "did you mean `goal`?"), ("sevro", "did you mean `servo`?"), ("poss", "did you mean `pos`?"),
+        ("lfit", "did you mean `lift`?"),
+    ]
+
+
+def test_the_body_and_the_device_both_shown(tmp_path: Path) -> None:
+    """A limit outside what the device accepts: the joint's limit and the parameter's range, both labelled."""
+    ((_, _, _, help, labels),) = check(tmp_path, conversion(SIDES))
+    assert labels == [("limit -1.5..1.5", "the joint's limit"), ("0..1023", "the range the device accepts")]
+    assert help == "narrow the joint's limits, or correct the conversion"
+
+
+def test_two_parents_show_the_other(tmp_path: Path) -> None:
+    ((_, _, _, _, labels),) = check(tmp_path, TREE[2][0])
+    assert labels == [("b", "also of joint `one`")]
+
+
+def test_a_range_beyond_the_largest_float_is_sampled(tmp_path: Path) -> None:
+    """-1e308..1e308 is sampled without overflowing: the device's range is what refuses it."""
+    body = (DEVICE.replace("limit -1.5..1.5", "limit -1e308..1e308")
+            + "transmission t: lift { command position to servo.goal { raw = round(position)  position = raw } }\n")
+    ((code, _, message),) = errors(tmp_path, body)
+    assert (code, message) == ("E606", ("joint `lift`'s position -1e+308 becomes -10000000000000000109... at servo.goal, "
+                                       "outside its range 0..1023"))
+
+
+def test_a_body_that_agrees_checks_clean(tmp_path: Path) -> None:
+    body = conversion("command position to servo.goal { raw = round(position * 300) + 512  position = (raw - 512) / 300 }"
+                      "  measure position from many[1] { raw = round(position * 300)  position = raw / 300 }"
+                      "  command velocity to move.target { raw = velocity * 2  velocity = raw / 2 }")
+    assert check(tmp_path, body) == []
