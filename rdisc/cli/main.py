@@ -6,9 +6,23 @@ import argparse
 import sys
 
 from rdisc import __version__
-from rdisc.cli import build, check, console, dump, emit_python, emit_ros, explain, graph, import_, replay, run
+from rdisc.cli import (
+    build,
+    check,
+    console,
+    dump,
+    emit_python,
+    emit_ros,
+    emit_sdf,
+    emit_urdf,
+    explain,
+    graph,
+    import_,
+    replay,
+    run,
+)
 
-VERBS = (check, build, import_, explain, run, replay, console, emit_python, emit_ros, dump, graph)
+VERBS = (check, build, import_, explain, run, replay, console, emit_python, emit_ros, emit_urdf, emit_sdf, dump, graph)
 EXIT_INTERNAL = 3
 
 

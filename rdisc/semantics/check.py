@@ -16,10 +16,10 @@ from rdisc.diagnostics import Diagnostics, Label, abbreviate
 from rdisc.limits import MAX_ARRAY, MAX_INT
 from rdisc.semantics import formats, ros
 from rdisc.semantics import model as m
+from rdisc.semantics.body import BodyRules
 from rdisc.semantics.frames import FrameRules, length_part, length_range, length_words, payload_end_known
 from rdisc.semantics.model import Scope, Type
 from rdisc.semantics.operators import shown
-from rdisc.semantics.body import BodyRules
 from rdisc.semantics.resolve import Symbols, Unit, check_name, suggest
 from rdisc.semantics.types import Env, Typer, describe, unify
 from rdisc.source import Span
