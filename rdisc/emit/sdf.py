@@ -78,8 +78,14 @@ def _pose(parent: ET.Element, pose: m.Pose, relative_to: str | None = None) -> N
     child(parent, "pose", numbers(pose.xyz + pose.rpy), **attributes)
 
 
+def _renamed(model: ET.Element, kind: str, name: str, written: str) -> None:
+    if written != name:
+        comment(model, f"{kind} {name} of the description: SDF gives links and joints one namespace")
+
+
 def _link(model: ET.Element, link: m.Link, name: str, joint: str | None) -> None:
     comment(model, link.doc)
+    _renamed(model, "link", link.name, name)
     element = child(model, "link", name=name)
     if joint is not None:
         _pose(element, m.Pose(), relative_to=joint)
@@ -118,7 +124,9 @@ def _geometry(geometry: ET.Element, shape: m.Shape) -> None:
 def _joint(model: ET.Element, joint: m.Joint, names: dict[tuple[str, str], str],
            transmissions: list[m.Transmission]) -> None:
     comment(model, joint.doc)
-    element = child(model, "joint", name=names[("joint", joint.name)], type=joint.kind.value)
+    name = names[("joint", joint.name)]
+    _renamed(model, "joint", joint.name, name)
+    element = child(model, "joint", name=name, type=joint.kind.value)
     for transmission in transmissions:
         comment(element, f"transmission {transmission.name}")
         for binding in transmission.commands:
