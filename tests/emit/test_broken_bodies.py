@@ -8,7 +8,8 @@ stands for a real fault. What the tools said here:
   a negative mass, an impossible inertia and unordered limits;
 - libsdformat (`ign sdf -k`, reading the URDF) refuses the zero axis, the negative mass and
   the impossible inertia, and turns unordered limits round with a warning;
-- urchin refuses the cycle and the missing parent.
+- urchin refuses the cycle, the detached link, the cycle beside the tree and the missing
+  parent, and takes the others (a tree of three links with three joints among them).
 """
 
 from __future__ import annotations
@@ -19,7 +20,7 @@ from pathlib import Path
 
 import pytest
 
-from tests.emit.body_tools import Tree, check_urdf, ign_sdf_check
+from tests.emit.body_tools import Tree, check_urdf, ign_sdf_check, require_module
 
 HEADER = """\
 robot r { description "x" }
@@ -152,3 +153,27 @@ def test_the_same_body_in_urdf_is_refused_or_misread_by_the_tools(case: Case, tm
     if case.ign is not None:
         code, said = ign_sdf_check(path)
         assert code == case.ign[0] and case.ign[1] in said.splitlines(), said
+
+
+# What urchin says of each body by hand: the first line of its error, or None when it takes it.
+URCHIN = {
+    "a cycle": "There are cycles in the link graph",
+    "a detached link": "Links are not all connected. Connected components are:",
+    "a cycle beside the tree": "Links are not all connected. Connected components are:",
+    "a missing parent": "Joint j2 has invalid parent link name nowhere",
+}
+
+
+@pytest.mark.parametrize("case", CASES, ids=lambda c: c.name)
+def test_what_urchin_makes_of_the_same_body(case: Case, tmp_path: Path) -> None:
+    urchin = require_module("urchin")
+    path = tmp_path / "hand.urdf"
+    path.write_text(case.urdf, encoding="utf-8")
+    try:
+        robot = urchin.URDF.load(str(path), lazy_load_meshes=True)
+    except ValueError as err:
+        assert str(err).splitlines()[0] == URCHIN.get(case.name)
+    else:
+        assert case.name not in URCHIN
+        assert (len(robot.links), len(robot.joints)) == (len(re.findall("<link ", case.urdf)),
+                                                         len(re.findall("<joint ", case.urdf)))
