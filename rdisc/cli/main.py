@@ -14,6 +14,8 @@ from rdisc.cli import (
     emit_mjcf,
     emit_python,
     emit_ros,
+    emit_sdf,
+    emit_urdf,
     explain,
     graph,
     import_,
@@ -22,7 +24,8 @@ from rdisc.cli import (
     sim,
 )
 
-VERBS = (check, build, import_, explain, run, sim, replay, console, emit_python, emit_ros, emit_mjcf, dump, graph)
+VERBS = (check, build, import_, explain, run, sim, replay, console, emit_python, emit_ros, emit_urdf, emit_sdf,
+         emit_mjcf, dump, graph)
 EXIT_INTERNAL = 3
 
 

@@ -61,3 +61,15 @@ def compile_and_write(path: str, output: str | None, render: Callable[[Compilati
     if compilation.model is None or compilation.diagnostics.has_errors():
         return exit_code([compilation]) or EXIT_ERRORS
     return write(render(compilation), output, list(compilation.sources))
+
+
+def emit_body(verb: str, path: str, output: str | None, render: Callable[[Compilation], str]) -> int:
+    """`compile_and_write` for the body's formats: a description with no body (or one XML
+    cannot carry) is an error of its own, said in a line, exit 1, nothing written."""
+    from rdisc.emit.body_xml import BodyError
+
+    try:
+        return compile_and_write(path, output, render)
+    except BodyError as err:
+        print(f"rdisc {verb}: {path}: {err}", file=sys.stderr)
+        return EXIT_ERRORS
