@@ -169,6 +169,31 @@ def test_arm_joints_reach_their_targets_within_their_limits(kind: str, tmp_path:
         robot.close()
 
 
+EXAMPLE_ARM = ROOT / "examples" / "arm.rdis"
+
+
+@pytest.mark.parametrize("kind", ["runtime", "driver"])
+def test_the_example_arm_moves_all_six_joints_through_its_joint_state_input(kind: str, tmp_path: Path) -> None:
+    """examples/arm.rdis as shipped: a JointState input, one sync write of six goals, then its
+    periodic sync read and six status packets whose present positions the simulation gives."""
+    impl = implementation_of(kind, EXAMPLE_ARM.read_text(encoding="utf-8"), tmp_path, "arm")
+    sim = Simulation(_model(EXAMPLE_ARM))
+    outputs: list[dict[str, Any]] = []
+    robot = impl.connect(sim=sim, on_output=outputs.append)
+    target = [0.5, -0.3, 0.8, -0.6, 1.0, 0.2]
+    try:
+        robot.call_input("command", name=[], position=target)
+        robot.run_for(2.0)
+    finally:
+        robot.close()
+    joints = outputs[-1]["contents"]
+    assert joints["name"] == ("waist", "shoulder", "elbow", "wrist_pitch", "wrist_roll", "gripper")
+    step = 2 * math.pi / 4096  # one unit of the servos' present position
+    assert all(abs(got - want) <= 2 * step for got, want in zip(joints["position"], target, strict=True))
+    for name, want in zip(joints["name"], target, strict=True):
+        assert abs(sim.position(name) - want) < 0.01
+
+
 def test_a_reply_value_that_expect_pins_is_given_and_others_are_zero(tmp_path: Path) -> None:
     text = ARM.read_text(encoding="utf-8").replace("expect out[0] == 0x55", "expect out[0] == 0x56")
     source = tmp_path / "arm.rdis"
