@@ -187,8 +187,11 @@ def run_pipeline(path: Path) -> None:
     from rdisc.diagnostics.text import render_plain
     from rdisc.emit.canonical import to_json
     from rdisc.emit.dump import dump
+    from rdisc.emit.mjcf import to_mjcf
     from rdisc.emit.python import to_python
     from rdisc.emit.ros import to_ros
+    from rdisc.emit.sdf import to_sdf
+    from rdisc.emit.urdf import to_urdf
     from rdisc.runtime.device import Description
 
     c = compile_path(str(path))
@@ -201,11 +204,24 @@ def run_pipeline(path: Path) -> None:
     to_python(c.model, path.name, sources=c.sources).encode("utf-8")
     to_ros(c.model, path.name, sources=c.sources).encode("utf-8")
     Description(c.model)
+    if c.model.links:  # the body, in every format; MuJoCo must take what rdisc accepted
+        to_urdf(c.model, path.name).encode("utf-8")
+        to_sdf(c.model, path.name).encode("utf-8")
+        _mujoco_loads(to_mjcf(c.model))
     back = path.with_name(path.stem + ".back.json")
     back.write_text(canonical, encoding="utf-8")
     again = compile_path(str(back))
     assert again.model is not None and not again.diagnostics.has_errors(), render_plain(again.diagnostics.items,
                                                                                         again.sources)
+
+
+def _mujoco_loads(mjcf: str) -> None:
+    """MuJoCo compiles the model (when installed): a body rdisc accepts is one it can simulate."""
+    try:
+        import mujoco
+    except ImportError:
+        return
+    mujoco.MjModel.from_xml_string(mjcf)
 
 
 def finding(error: BaseException) -> str:
