@@ -1,14 +1,16 @@
-"""`rdisc console FILE --port P [--http HOST:PORT] [--record FILE.mcap]`: a local web page to bring up and exercise a
-device (thesis ch. 5).
+"""`rdisc console FILE (--port P | --sim [--seed N]) [--http HOST:PORT] [--record FILE.mcap]`: a local web page to
+bring up and exercise a device (thesis ch. 5), or a simulation of its body.
 
 Connects as `rdisc run` does (startup hooks), then serves the page at http://HOST:PORT/
 (127.0.0.1:8765 unless asked) until Ctrl-C or SIGTERM, and ends by running the terminate
-hooks. With --record, the session is recorded as `rdisc run --record` records it, the
+hooks. With --sim the robot drives the MuJoCo simulation `rdisc sim --realtime` drives (its
+time the wall clock's, so what the page commands moves as a device would), and the page
+says so. With --record, the session is recorded as `rdisc run --record` records it, the
 page's calls as the host's. Only pages of this console's own address may drive the robot (see rdisc.console).
 
 Exit status: 1 the description has errors or the device failed to connect; 2 a usage error
-(a bad --port, --set or --http, an address in use, or a --record file that cannot be
-written); 130 after SIGINT, 143 after SIGTERM.
+(a bad --port, --set or --http, --port with --sim, --sim without a body or MuJoCo, an address
+in use, or a --record file that cannot be written); 130 after SIGINT, 143 after SIGTERM.
 """
 
 from __future__ import annotations
@@ -20,6 +22,7 @@ import signal
 import sys
 
 from rdisc.cli.output import EXIT_ERRORS, EXIT_USAGE, exit_code, show
+from rdisc.cli.sim import add_seed_argument, simulation
 from rdisc.compile import compile_path
 from rdisc.runtime import engine
 
@@ -29,13 +32,17 @@ DEFAULT_HTTP = "127.0.0.1:8765"
 def add_parser(verbs: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     p = verbs.add_parser(
         "console", help="a local web page to bring up and exercise a device",
-        description="Connect to a device and serve a web page that shows the description's graph, a form for "
-                    "each input, interface and primitive, each output live, the state, errors and a byte trace. "
-                    "The terminate hooks run when it stops (Ctrl-C).",
+        description="Connect to a device (or, with --sim, a simulation of its body) and serve a web page that "
+                    "shows the description's graph, a form for each input, interface and primitive, each output "
+                    "live, the state, errors and a byte trace. The terminate hooks run when it stops (Ctrl-C).",
     )
     p.add_argument("file", metavar="FILE", help=".rdis or thesis-style .json description")
     p.add_argument("--port", action="append", default=[], metavar="[CONN=]PORT",
                    help="a pyserial port or URL (/dev/ttyUSB0, socket://host:port); CONN=PORT for one connection")
+    p.add_argument("--sim", action="store_true",
+                   help="drive a MuJoCo simulation of the description's body on the wall clock, as "
+                        "`rdisc sim --realtime` does, in place of the device (no --port)")
+    add_seed_argument(p)
     p.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
                    help="give a setting of the description its value; repeat for several")
     p.add_argument("--timeout", type=float, default=1.0, metavar="S", help="reply timeout in seconds (default 1)")
@@ -72,13 +79,21 @@ def run(args: argparse.Namespace) -> int:
     device = Description(model).device
     try:
         host, http_port = parse_http(args.http)
-        port = engine.parse_ports(args.port, device)
+        if args.sim and args.port:
+            raise ValueError("--sim drives a simulation in place of the device: give --port or --sim, not both")
+        if args.seed is not None and not args.sim:
+            raise ValueError("--seed is for --sim")
+        port = None if args.sim else engine.parse_ports(args.port, device)
         settings = engine.bind_settings(device, engine.parse_settings(args.set, device))
     except ValueError as err:
         print(f"rdisc console: {err}", file=sys.stderr)
         return EXIT_USAGE
     main = model.robot.span.path if model.robot.span else None
-    page = render(model, lambda span: place(span, compilation.sources, main, os.path.basename(args.file)))
+    page = render(model, lambda span: place(span, compilation.sources, main, os.path.basename(args.file)),
+                  simulated=args.sim)
+    sim = simulation(model, args.file, "rdisc console", seed=args.seed, realtime=True) if args.sim else None
+    if args.sim and sim is None:
+        return EXIT_USAGE
     robot = engine.Robot(device, timeout=args.timeout)
     recorder = engine.start_recording(robot, args.record, settings, "rdisc console") if args.record else None
     if args.record and recorder is None:
@@ -88,7 +103,8 @@ def run(args: argparse.Namespace) -> int:
 
     def listening(bound: int) -> None:
         shown = f"[{host}]" if ":" in host else host
-        print(f"rdisc console: {robot.name} on http://{shown}:{bound}/ (Ctrl-C stops it; the terminate hooks run)",
+        what = f"{robot.name}, simulated," if sim is not None else robot.name
+        print(f"rdisc console: {what} on http://{shown}:{bound}/ (Ctrl-C stops it; the terminate hooks run)",
               flush=True)
 
     async def serve() -> int:
@@ -104,7 +120,7 @@ def run(args: argparse.Namespace) -> int:
         loop.add_signal_handler(signal.SIGINT, stopping, engine.EXIT_SIGINT)
         loop.add_signal_handler(signal.SIGTERM, stopping, engine.EXIT_SIGTERM)
         try:
-            await asyncio.to_thread(robot.open, port, settings=settings)
+            await asyncio.to_thread(robot.open, port, settings=settings, sim=sim)
             await console.serve(host, http_port, stop, listening, args.origin)
         except engine.RdisError as err:
             print(f"rdisc console: {type(err).__name__}: {err}", file=sys.stderr)

@@ -15,10 +15,15 @@ from __future__ import annotations
 
 import argparse
 import sys
+from typing import TYPE_CHECKING
 
 from rdisc.cli.output import EXIT_ERRORS, EXIT_USAGE, exit_code, show
 from rdisc.compile import compile_path
 from rdisc.runtime import engine
+
+if TYPE_CHECKING:
+    from rdisc.semantics.model import Model
+    from rdisc.sim import Simulation
 
 
 def add_parser(verbs: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
@@ -29,10 +34,30 @@ def add_parser(verbs: argparse._SubParsersAction[argparse.ArgumentParser]) -> No
     )
     p.add_argument("file", metavar="FILE", help=".rdis or thesis-style .json description")
     engine.add_arguments(p, ports=False)
-    p.add_argument("--seed", type=int, metavar="N",
-                   help="start each joint up to 0.01 rad (m) away from zero, the same way for the same N")
+    add_seed_argument(p)
     p.add_argument("--realtime", action="store_true", help="run on the wall clock instead of simulated time")
     p.set_defaults(run=run)
+
+
+def add_seed_argument(parser: argparse.ArgumentParser) -> None:
+    """`--seed N`, of `rdisc sim` and `rdisc console --sim`."""
+    parser.add_argument("--seed", type=int, metavar="N",
+                        help="start each joint up to 0.01 rad (m) away from zero, the same way for the same N")
+
+
+def simulation(model: Model, path: str, prog: str, *, seed: int | None, realtime: bool) -> Simulation | None:
+    """The MuJoCo simulation of `model`'s body (`rdisc sim`, `rdisc console --sim`), or None once
+    stderr says why there is none (no `link`, or MuJoCo missing), which is a usage error."""
+    if not model.links:
+        print(f"{prog}: {path} has no body to simulate: it declares no `link`", file=sys.stderr)
+        return None
+    try:
+        from rdisc.sim import Simulation
+
+        return Simulation(model, seed=seed, realtime=realtime)
+    except ImportError:
+        print(f"{prog}: needs MuJoCo (pip install mujoco, or pip install 'rdisc[sim]')", file=sys.stderr)
+        return None
 
 
 def run(args: argparse.Namespace) -> int:
@@ -41,17 +66,10 @@ def run(args: argparse.Namespace) -> int:
     model = compilation.model
     if model is None or compilation.diagnostics.has_errors():
         return exit_code([compilation]) or EXIT_ERRORS
-    if not model.links:
-        print(f"rdisc sim: {args.file} has no body to simulate: it declares no `link`", file=sys.stderr)
-        return EXIT_USAGE
-    try:
-        from rdisc.sim import Simulation
-
-        simulation = Simulation(model, seed=args.seed, realtime=args.realtime)
-    except ImportError:
-        print("rdisc sim: needs MuJoCo (pip install mujoco, or pip install 'rdisc[sim]')", file=sys.stderr)
+    simulated = simulation(model, args.file, "rdisc sim", seed=args.seed, realtime=args.realtime)
+    if simulated is None:
         return EXIT_USAGE
     from rdisc.runtime.device import Description
 
     robot = engine.Robot(Description(model).device, timeout=args.timeout)
-    return engine.run_command(args, robot, "rdisc sim", sim=simulation)
+    return engine.run_command(args, robot, "rdisc sim", sim=simulated)

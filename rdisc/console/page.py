@@ -14,10 +14,15 @@ from rdisc.emit.graph import GraphvizMissing, dot, nodes, svg
 from rdisc.semantics import model as m
 from rdisc.source import Span
 
+SIMULATED = ('<span class="badge" data-rdis-sim title="a MuJoCo simulation of the body, on the wall clock: '
+             'no device is attached">simulation</span>')
 
-def render(model: m.Model, where: Callable[[Span | None], str | None]) -> str:
-    """The whole page, as HTML; `where` gives a span's `file:line`."""
+
+def render(model: m.Model, where: Callable[[Span | None], str | None], *, simulated: bool = False) -> str:
+    """The whole page, as HTML; `where` gives a span's `file:line`. A `simulated` robot's page
+    says so in its title and with a badge beside the status, so it is not taken for the device."""
     name = escape(model.robot.name)
+    badge, simulation = (f" {SIMULATED}", " (simulation)") if simulated else ("", "")
     try:
         graph = _inline(svg(dot(model, where)))
     except GraphvizMissing as err:
@@ -27,11 +32,11 @@ def render(model: m.Model, where: Callable[[Span | None], str | None]) -> str:
 <html lang="en">
 <head>
 <meta charset="utf-8">
-<title>{name} — rdisc console</title>
+<title>{name}{simulation} — rdisc console</title>
 <link rel="stylesheet" href="/console.css">
 </head>
 <body>
-<header><h1>{name}</h1> <span class="status" data-rdis-status>connecting…</span></header>
+<header><h1>{name}</h1>{badge} <span class="status" data-rdis-status>connecting…</span></header>
 <main>
 <section class="graph" data-rdis-graph><h2>Description</h2>{graph}
 <div class="details" data-rdis-details><p class="note">Click an element of the graph for its details.</p></div>

@@ -104,6 +104,11 @@ def test_the_origins_are_the_consoles_own() -> None:
     (["--port", "loop://", "--http", "nowhere"], 2, "rdisc console: --http `nowhere` is not HOST:PORT"),
     (["--port", "loop://", "--set", "X=1"], 2,
      "rdisc console: irobot_create: no setting named 'X' (its settings: none)"),
+    (["--sim", "--port", "loop://"], 2,
+     "rdisc console: --sim drives a simulation in place of the device: give --port or --sim, not both"),
+    (["--port", "loop://", "--seed", "3"], 2, "rdisc console: --seed is for --sim"),
+    (["--sim", "--http", "127.0.0.1:0"], 2,
+     "rdisc console: examples/create.rdis has no body to simulate: it declares no `link`"),
     (["--port", "/dev/rdisc-no-such-port", "--http", "127.0.0.1:0"], 1,
      "rdisc console: RdisConnectionError: btserial: cannot open /dev/rdisc-no-such-port"),
 ])

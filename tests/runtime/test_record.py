@@ -18,9 +18,10 @@ from conftest import REPO, cli_env
 from devices import CreateEmulator
 from mcap.reader import make_reader
 from mcap_ros2.decoder import DecoderFactory
-from runtime_support import CREATE
+from runtime_support import CREATE, EXAMPLES
 from websockets.sync.client import connect
 
+CREATE2 = EXAMPLES / "create2.rdis"
 CALLS = ("--call", "set_velocity", "linear=0.2", "angular=0",
          "--call", "set_velocity", "linear=-0.2", "angular=-0.4")
 
@@ -206,6 +207,41 @@ def test_the_consoles_page_calls_are_recorded_as_the_hosts(rdisc, tmp_path) -> N
     errors = [m.msg for topic, _, m in found_messages if topic == "/rosout"]
     assert errors == [f"{refused['error']}: {refused['message']}"]
     assert rdisc("replay", path, CREATE).returncode == 0
+
+
+def test_a_simulated_session_is_recorded(tmp_path: Path) -> None:
+    """`rdisc console --sim --record`: the page's call, the simulated odometry and the bytes written."""
+    pytest.importorskip("mujoco")
+    path = tmp_path / "sim.mcap"
+    process = subprocess.Popen([sys.executable, "-m", "rdisc", "console", str(CREATE2), "--sim", "--http",
+                                "127.0.0.1:0", "--record", str(path)], cwd=REPO, env=cli_env(),
+                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    try:
+        assert process.stdout is not None
+        found_url = re.search(r"http://127\.0\.0\.1:(\d+)/", process.stdout.readline())
+        assert found_url is not None
+        with connect(f"ws://127.0.0.1:{found_url.group(1)}/ws", origin=found_url.group(0).rstrip("/"),
+                     compression=None) as ws:
+            assert call(ws, 1, "input", "set_velocity", linear="0.2", angular="0")["ok"] is True
+            for _ in range(1000):  # the odometry's pushes, until it has moved
+                event = json.loads(ws.recv(timeout=60))
+                if event["type"] == "output" and event["contents"]["x"] > 0.01:
+                    break
+            assert event["type"] == "output" and event["contents"]["x"] > 0.01, event
+        process.send_signal(signal.SIGINT)
+        _, stderr = process.communicate(timeout=60)
+    finally:
+        if process.poll() is None:
+            process.kill()
+            process.communicate()
+    assert process.returncode == 130, stderr
+    assert "Traceback" not in stderr, stderr
+    found = messages(path)
+    assert [(m.linear.x, m.angular.z) for topic, _, m in found if topic == "/set_velocity"] == [(0.2, 0.0)]
+    odometry = [m.pose.pose.position.x for topic, _, m in found if topic == "/odom"]
+    assert odometry[-1] > 0.01 and odometry == sorted(odometry)
+    writes = [bytes(m.data) for topic, _, m in found if topic == "/rdisc/oi/write"]
+    assert bytes.fromhex("91 00 c8 00 c8") in writes  # drive_direct(200, 200)
 
 
 def test_a_console_record_file_that_cannot_be_written_is_a_usage_error(rdisc, tmp_path) -> None:
