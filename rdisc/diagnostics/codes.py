@@ -202,8 +202,12 @@ the message as bytes. Pointer codes (`P`) are not allowed. A group of int, float
 and bool codes repeats `N(BH)` N times (1 to 4096), or as many times as the message
 says: `#(BH)`, counted by one unsigned count field `#B` (or `#H`, ...) before it,
 or `*(BH)`, until the message ends, last. One such group a message, with a byte
-order (`<`, `>` or `!`). Wrong: `unpack "<B#(BH)"` (no count field),
-`unpack "<*(BH)B"` (not last). Right: `unpack "<#B#(BH)B"`, `unpack "<B*(BH)"`."""),
+order (`<`, `>` or `!`). An unsigned integer code (`B`, `H`, `I`, `L`, `Q`, without
+a count, outside groups) may be split into two bit fields or more, from its lowest bit
+up, whose widths add up to its bits: `B{1,1,6}`, one value each. Wrong: `unpack
+"<B#(BH)"` (no count field), `unpack "<*(BH)B"` (not last), `unpack "<B{1,6}"` (7 of
+8 bits), `pack "<h{8,8}"` (signed). Right: `unpack "<#B#(BH)B"`, `unpack "<B*(BH)"`,
+`unpack "<B{1,1,6}H{1,15}H"`."""),
     ("E302", "format-argument-count", """
 The number of format arguments differs from the number of values the `pack` or
 `format` string takes. `pack ">Bhh"` takes three values; `format "D,{},{}"` two."""),

@@ -833,6 +833,7 @@ def _codec(codec: object) -> str:
             options = (f", strings={codec.strings!r}" if codec.strings else "") + (", rest=True" if codec.rest else "")
             options += f", groups={codec.groups!r}" if codec.groups else ""
             options += f", varying={codec.varying!r}" if codec.varying else ""
+            options += f", bits={codec.bits!r}" if codec.bits else ""
             return f"{type(codec).__name__}({quoted(codec.struct.format)}{options})"
         case engine.Format():
             return f"Format({quoted(codec.template)})"

@@ -16,10 +16,10 @@ from rdisc.diagnostics import Diagnostics, Label, abbreviate
 from rdisc.limits import MAX_ARRAY, MAX_INT
 from rdisc.semantics import formats, ros
 from rdisc.semantics import model as m
+from rdisc.semantics.body import BodyRules
 from rdisc.semantics.frames import FrameRules, length_part, length_range, length_words, payload_end_known
 from rdisc.semantics.model import Scope, Type
 from rdisc.semantics.operators import shown
-from rdisc.semantics.body import BodyRules
 from rdisc.semantics.resolve import Symbols, Unit, check_name, suggest
 from rdisc.semantics.types import Env, Typer, describe, unify
 from rdisc.source import Span
@@ -1031,10 +1031,10 @@ class _Checker:
                 self.fits(item, slot, expr.span, "", f"{code} holds {slot.low} to {slot.high}")
 
     def pack_value(self, arg: m.Expr, expr: ast.Expr, slot: formats.Slot) -> None:
-        self.flow(arg, slot.type, expr.span, f"pack code `{slot.code}`")
+        self.flow(arg, slot.type, expr.span, f"pack code {slot.shown}")
         value = self.typer.constant(arg)
         if arg.type is Type.INT:
-            self.fits(value, slot, expr.span, "", f"`{slot.code}` holds {slot.low} to {slot.high}")
+            self.fits(value, slot, expr.span, "", f"{slot.shown} holds {slot.low} to {slot.high}")
         if slot.code == "c" and isinstance(value, str) and len(value) != 1:
             self.d.report("E403", expr.span, "pack code `c` takes a string of exactly one character")
         elif slot.code[-1:] in ("s", "p") and isinstance(value, str):
@@ -1307,7 +1307,7 @@ class _Checker:
                 continue
             self.fits(
                 self.typer.constant(args[i]), slot, exprs[i].span, f" of primitive `{prim.name}`",
-                f"parameter `{packed.name}` is packed as `{slot.code}`, {slot.low} to {slot.high}",
+                f"parameter `{packed.name}` is packed as {slot.shown}, {slot.low} to {slot.high}",
             )
 
     def fits(self, value: object, slot: formats.Slot, span: Span, where: str, label: str) -> None:
@@ -1315,7 +1315,7 @@ class _Checker:
         if slot.low is None or not isinstance(value, int) or isinstance(value, bool):
             return
         if not slot.low <= value <= slot.high:  # type: ignore[operator]
-            self.d.report("E403", span, f"{shown(value)} does not fit pack code `{slot.code}`{where}", label=label)
+            self.d.report("E403", span, f"{shown(value)} does not fit pack code {slot.shown}{where}", label=label)
 
     def interface_cycles(self, interfaces: dict[str, m.Interface]) -> None:
         """Calls between interfaces form no cycle, so every call ends and its cost is known:
