@@ -121,7 +121,10 @@ Parameters with a default (`speed: int = 5`) may be left out."""),
     ("E202", "missing-clause", """
 A required clause is missing: a primitive needs `on CONNECTION` and exactly one
 of `pack` or `format`, unless it only sets modem lines (`lines dtr = on`): then it
-writes no request, and so has no reply and no frame."""),
+writes no request, and so has no reply and no frame. A primitive that reads
+several replies (`replies 6`) says how each is read: `unpack` or `regex`. Wrong:
+`primitive read() on bus pack "B" (1) replies 6`. Right: `primitive read() on bus
+pack "B" (1) replies 6 unpack "<BBh"`."""),
     ("E203", "conflicting-clause", """
 Clauses that exclude each other, or a clause given twice: a primitive has exactly
 one of `pack`/`format` and at most one of `unpack`/`regex`, and sets each modem
@@ -133,7 +136,8 @@ A setting outside its range: baud and frequency must be positive, a keepalive
 interval positive, a delay zero or more, a reply-line `terminator` 1 to 8 bytes.
 Settings must be constants. A parameter's range has constant bounds, low <= high,
 of its type; a default is a constant, and the parameters after one with a default
-have defaults too. A loop's range counts up: `for i in 5..0` is empty."""),
+have defaults too. A loop's range counts up: `for i in 5..0` is empty. A reply
+count (`replies N`) is a constant int from 2 to 1024."""),
     ("E205", "periodic-with-parameters", """
 A periodic interface runs on every tick of its connection's thread, where nobody
 supplies arguments, so it cannot take parameters."""),

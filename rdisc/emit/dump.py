@@ -50,7 +50,7 @@ def _primitive(model: m.Model, p: m.Primitive) -> str:
                        f"= {said}" if case.last is None else f"in {said}")
                 lines += _sides(f"reply tagged {said}", framed, [tag, *_reply_rows(case.decoding)])
     elif p.expects_reply(model.frames):
-        lines += _sides("reply", framed, _reply_rows(p.decoding))
+        lines += _sides(f"{p.replies} replies, each" if p.replies else "reply", framed, _reply_rows(p.decoding))
     else:
         lines.append("  reply: none")
     return "\n".join(lines) + "\n"

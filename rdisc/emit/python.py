@@ -493,6 +493,8 @@ class _Driver:
             options["skip"] = "True"
         if prim.timeout_ms is not None:
             options["timeout"] = repr(prim.timeout_ms / 1000.0)
+        if prim.replies:
+            options["replies"] = str(prim.replies)
         if prim.expect is not None:
             options["expect"] = f"{base}_expect"
             w.blank(2)

@@ -126,7 +126,7 @@ class Description:
             p.name, p.connection, _params(p.params), _spread(_values([prepare(a, slots) for a in p.args]), p.spreads()),
             None if p.encoding is None else encoder(p.encoding), decoder(p.decoding), actions, frame,
             p.skip_unmatched, None if p.timeout_ms is None else p.timeout_ms / 1000.0, checked=checked,
-            expect=expect, lines=_levels(p.lines, slots),
+            expect=expect, lines=_levels(p.lines, slots), replies=p.replies,
         )
 
     def _frame(self, frame: m.Frame) -> engine.Frame:

@@ -607,12 +607,16 @@ class _Checker:
         reply: tuple[Type, ...] | None = ()
         if decodings:
             decoding, reply = self.decoding(decodings[0])
+        replies_clause = self.once([c for c in decl.clauses if isinstance(c, ast.Replies)], "`replies`", name)
+        count = self.reply_count(replies_clause, name, reply, bool(decodings)) \
+            if isinstance(replies_clause, ast.Replies) else 0
         actions: tuple[m.PostAction, ...] = ()
         if action_blocks:
             note = None if decodings else f"primitive `{name.text}` reads no reply: add `unpack` or `regex`"
+            collected = tuple(m.Array(t, count) for t in reply) if count and reply is not None else reply
             action_env = self.env_with(
                 scope, "in a post-action", "`out`, parameters and state variables",
-                reply=reply if decodings else None, reply_note=note, reply_known=reply is not None,
+                reply=collected if decodings else None, reply_note=note, reply_known=reply is not None,
             )
             actions = self.actions(action_blocks[0], action_env, {p.name for p in params})
         expect = self.expect(decl, scope, reply, bool(decodings))
@@ -665,7 +669,29 @@ class _Checker:
             self.d.report("E203", expect.span, f"primitive `{name.text}` has a reply table and also `expect`",
                           help="`expect` checks the reply of a primitive with one decoding")
         return m.Primitive(name.text, params, connection, encoding, args, decoding, actions, decl.doc, decl.span,
-                           frame, skip is not None, table, timeout, expect, lines)
+                           frame, skip is not None, table, timeout, expect, lines, count)
+
+    def reply_count(self, clause: ast.Replies, name: ast.Ident, reply: tuple[m.AnyType, ...] | None,
+                    decodes: bool) -> int:
+        """`replies N`: a constant int from 2 to MAX_ARRAY, of a primitive with one decoding whose
+        values are not arrays (each value of the replies is one, of N). 0 where it is refused."""
+        value = self.setting(clause.count, "a reply count", MAX_ARRAY)
+        if value is None:
+            return 0
+        if not isinstance(value, int) or isinstance(value, bool) or value < 2:
+            self.d.report("E204", clause.count.span, f"a reply count is a constant int from 2 to {MAX_ARRAY}, "
+                          f"not {shown(value)}")
+            return 0
+        if not decodes:
+            self.d.report("E202", clause.span, f"`{name.text}` reads {value} replies, but decodes none",
+                          help="say how each reply is read: `unpack` or `regex` (a reply table chooses one reply)")
+            return 0
+        if reply is not None and any(isinstance(t, m.Array) for t in reply):
+            self.d.report("E401", clause.span, f"`{name.text}` reads {value} replies, whose values are arrays: "
+                          "each value of the replies would be an array of arrays",
+                          help="read a reply of single values, or one reply with a repeated group")
+            return 0
+        return value
 
     def modem_lines(self, clause: ast.Lines, env: Env, name: ast.Ident,
                     connection: m.ConnectionRef) -> tuple[m.LineLevel, ...]:

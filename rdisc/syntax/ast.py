@@ -352,6 +352,15 @@ class ReplyTimeout:
 
 
 @dataclass(frozen=True, slots=True)
+class Replies:
+    """`replies N`: N replies to one request (a sync read's status packets), each read and
+    decoded as one reply is; the post-actions read each value of them as an array of N."""
+
+    count: Expr
+    span: Span = _span
+
+
+@dataclass(frozen=True, slots=True)
 class Expect:
     """`expect COND`: a condition on the decoded reply (`out`) that a reply must meet."""
 
@@ -369,6 +378,7 @@ class Lines:
 
 PrimitiveClause = (
     On | Encoding | Decoding | Actions | Framed | SkipUnmatched | ReplyTable | ReplyTimeout | Expect | Lines
+    | Replies
 )
 
 

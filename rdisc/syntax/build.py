@@ -371,6 +371,9 @@ def _transformer_class():
         def reply_timeout(self, meta, c):
             return ast.ReplyTimeout(c[0], self.b.span(meta))
 
+        def replies(self, meta: object, c: list[ast.Expr]) -> ast.Replies:
+            return ast.Replies(c[0], self.b.span(meta))
+
         def expect(self, meta, c):
             return ast.Expect(c[0], self.b.span(meta))
 

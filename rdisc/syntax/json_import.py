@@ -317,7 +317,7 @@ _CONNECTION = (
 )  # fmt: skip
 _PRIMITIVE = (
     "name", "parameters", "parameterTypes", "parameterRanges", "parameterDefaults", "connection", "lines", "pack",
-    "format", "formatArgs", "unpack", "regex", "frame", "skipUnmatched", "replyTable", "timeout", "expect",
+    "format", "formatArgs", "unpack", "regex", "frame", "skipUnmatched", "replyTable", "timeout", "replies", "expect",
     "postActions", "doc",
 )  # fmt: skip
 _FRAME = ("name", "parameters", "parameterTypes", "parameterRanges", "parameterDefaults", "request", "reply",
@@ -780,6 +780,10 @@ class _Importer:
             wait = self.expr(m["timeout"], "float")
             if wait is not None:
                 clauses.append(ast.ReplyTimeout(ast.Duration(wait, "ms", wait.span), wait.span))
+        if "replies" in m:
+            count = self.expr(m["replies"], "int")
+            if count is not None:
+                clauses.append(ast.Replies(count, count.span))
         if "expect" in m:
             condition = self.reply_expr(m["expect"], "`expect`")
             if condition is not None:

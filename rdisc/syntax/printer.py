@@ -297,6 +297,8 @@ def _primitive_clause(c: ast.PrimitiveClause) -> tuple[list[str], bool]:
             return [f"timeout {_duration(duration)}"], False
         case ast.Expect(condition):
             return [f"expect {print_expr(condition)}"], False
+        case ast.Replies(count):
+            return [f"replies {print_expr(count)}"], False
         case ast.Lines(settings):
             return ["lines " + ", ".join(_assign(a) for a in settings)], False
         case ast.ReplyTable(key, entries, _, tag):

@@ -1075,6 +1075,7 @@ class Primitive:
     request: Request | None = None  # its parameters' values to the bytes, when it is only written (`_sent_at_once`)
     expect: Callable[[StateValues, Args, Sequence[Any]], object] | None = None  # a condition its decoded reply meets
     lines: Callable[[StateValues, Args], dict[str, Value]] | None = None  # "dtr"/"rts": levels, set before the request
+    replies: int = 0  # `replies N`: N replies to one request, collected value by value into arrays (0: one)
     expects_reply: bool = field(init=False)
     framed_reply: bool = field(init=False)
     floats: tuple[int, ...] = field(init=False)
@@ -2111,7 +2112,10 @@ class Robot:
             if plan.timeout is not None:
                 io.timeout = plan.timeout
             reader.begin(wait)
-            plan, local, reply = self._read_reply(plan, link, reader, fields, request, wait, local)
+            if plan.replies:
+                reply = self._read_replies(plan, link, reader, fields, request, wait, local)
+            else:
+                plan, local, reply = self._read_reply(plan, link, reader, fields, request, wait, local)
         except RdisError as err:
             failed = err
         except Exception as err:  # noqa: BLE001 - whatever the port raises, it failed
@@ -2182,6 +2186,23 @@ class Robot:
                 if isinstance(err, RdisProtocolError):
                     raise
                 raise RdisProtocolError(f"{plan.name}: {err}") from None
+
+    def _read_replies(self, plan: Primitive, link: _Link, reader: Incoming, fields: list[Any], request: bytes,
+                      wait: float, local: Args) -> tuple[tuple[Any, ...], ...]:
+        """`replies N`: N replies read in turn as one is (each meeting its `expect`), all within the
+        one deadline; value i of them all as one array, in the order they came."""
+        got: list[Sequence[Any]] = []
+        for n in range(plan.replies):
+            try:
+                got.append(self._read_reply(plan, link, reader, fields, request, wait, local)[2])
+            except RdisTimeout:
+                if not n:
+                    raise
+                raise RdisTimeout(f"{plan.name}: {n} of {plan.replies} replies within {wait:g} s") from None
+            except RdisProtocolError as err:
+                raise RdisProtocolError(f"{plan.name}: reply {n + 1} of {plan.replies}: "
+                                        f"{str(err).removeprefix(plan.name + ': ')}") from None
+        return tuple(zip(*got))
 
     def _met(self, plan: Primitive, local: Args, reply: Sequence[Any]) -> Sequence[Any]:
         """The reply, when it meets the primitive's `expect` (else, like a reply that does not
