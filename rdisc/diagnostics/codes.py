@@ -184,7 +184,9 @@ read by its indexes, whose count its type fixes. A loop makes calls, and an
 interface's loops write out at most 4096 of them (65536 for all interfaces).
 Wrong: `interface all(n: int) { for i in 0..n { torque(i, True) } }`. Right:
 `const IDS = [1, 2, 3]` with `interface all() { for id in IDS { torque(id, True) } }`,
-or `interface move(p: int[3]) { for i in 0..2 { goal(IDS[i], p[i]) } }`."""),
+or `interface move(p: int[3]) { for i in 0..2 { goal(IDS[i], p[i]) } }`. A
+primitive's `replies id in IDS frame status(id)` goes over the same: a constant
+array or a range of constant ints, a reply a value."""),
     ("E213", "connect-setting", """
 A `setting` is a value given when connecting (`rdisc run --set BAUD=1000000`, a
 driver's `connect(port, BAUD=1000000)`, a ROS node's `_BAUD:=1000000`), such as a

@@ -39,6 +39,8 @@ def _primitive(model: m.Model, p: m.Primitive) -> str:
         lines.append("  request: none")
     else:
         lines += _sides("request", frame.requests if frame else None, _payload_rows(p.encoding, p.args), False)
+    if p.reply_frames:  # each reply through its own frame, all of one frame
+        frame = model.frames[p.reply_frames[0].frame]
     framed = frame.replies if frame and frame.reply else None
     if p.table is not None:
         for case in p.table.cases:
@@ -50,7 +52,10 @@ def _primitive(model: m.Model, p: m.Primitive) -> str:
                        f"= {said}" if case.last is None else f"in {said}")
                 lines += _sides(f"reply tagged {said}", framed, [tag, *_reply_rows(case.decoding)])
     elif p.expects_reply(model.frames):
-        lines += _sides(f"{p.replies} replies, each" if p.replies else "reply", framed, _reply_rows(p.decoding))
+        uses = [f"{use.frame}({', '.join(expression_text(a) for a in use.args)})" for use in p.reply_frames]
+        through = f", frame {uses[0]} .. {uses[-1]}" if uses else ""
+        lines += _sides(f"{p.replies} replies{through}, each" if p.replies else "reply", framed,
+                        _reply_rows(p.decoding))
     else:
         lines.append("  reply: none")
     return "\n".join(lines) + "\n"

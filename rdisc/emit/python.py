@@ -495,6 +495,14 @@ class _Driver:
             options["timeout"] = repr(prim.timeout_ms / 1000.0)
         if prim.replies:
             options["replies"] = str(prim.replies)
+        if prim.reply_frames:
+            uses = []
+            for n, use in enumerate(prim.reply_frames):
+                w.blank(2)
+                self.function(w, f"{base}_reply_frame_{n}", signature, prim.params,
+                              [("", a, None) for a in use.args], "Args")
+                uses.append(f"FrameUse({self.plan['frame', use.frame]}, {base}_reply_frame_{n})")
+            options["reply_frames"] = _tuple(uses)
         if prim.expect is not None:
             options["expect"] = f"{base}_expect"
             w.blank(2)

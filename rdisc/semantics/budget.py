@@ -176,8 +176,10 @@ def message_bytes(prim: m.Primitive, frames: dict[str, m.Frame] | None = None) -
     framing = answer = 0  # the request's framing, and the reply's
     if frame is not None:  # the request's layout is the one its size picks; the reply's shortest, without optional parts
         framing = frame_bytes(_written(frame.requests, request))
-        if prim.expects_reply(frames or {}):
-            answer = min((frame_bytes(parts, shortest=True) for parts in frame.replies), default=0)
+    if prim.reply_frames:  # each reply through its own frame, all of one frame
+        frame = (frames or {}).get(prim.reply_frames[0].frame)
+    if frame is not None and prim.expects_reply(frames or {}):
+        answer = min((frame_bytes(parts, shortest=True) for parts in frame.replies), default=0)
     match prim.decoding:
         case m.Unpack(format=fmt):
             layout = formats.struct_layout(fmt)

@@ -1,8 +1,9 @@
 """Several replies to one request, read by one primitive: `replies N` reads N replies in turn,
 each as one reply is read (through the frame's reply side, decoded, held by `expect`), all
 within the one reply deadline; the post-actions read value i of them all as an array of N
-(a sync read answered by N status packets). Runtime and generated driver alike, through the
-one engine."""
+(a sync read answered by N status packets). `replies id in IDS frame status(id)` reads each
+through a frame of its own arguments (each servo's status packet carries its ID). Runtime and
+generated driver alike, through the one engine."""
 
 from __future__ import annotations
 
@@ -30,6 +31,11 @@ state quality: int[2]
 primitive read_all() on port frame f() pack "BB" (0x82, 3) replies 3 unpack "<BBh" expect out[0] == 0x55 {
     error = out[1]  present = out[2]
 }
+/// A sync read whose status packets carry each servo's ID, in the order asked.
+const IDS = [1, 2, 3]
+frame status(id: int in 0..253) { request { payload }  reply { header "\\xFE"  field id "B" = id  payload } }
+primitive read_ids() on port frame f() pack "BBBB" (0x82, 1, 2, 3) replies id in IDS frame status(id)
+    unpack "<Bh" { error = out[0]  present = out[1] }
 /// Two unframed scan nodes after one request, their check bits held node by node.
 primitive nodes() on port format "N" () unpack "<B{1,1,6}" replies 2 expect out[0] != out[1] { quality = out[2] }
 """
@@ -78,6 +84,19 @@ def test_too_few_replies_time_out(implementation: Any) -> None:
         assert robot.state.present == (0, 0, 0)
 
 
+def test_each_reply_through_its_own_frame(implementation: Any) -> None:
+    port = ScriptedPort(bytes.fromhex("FE 01 00 0a00" "FE 02 04 0b00" "FE 03 00 0c00"
+                                      "FE 01 00 0a00" "FE 03 00 0c00"))
+    with implementation.connect(port, threads=False) as robot:
+        robot.primitives.read_ids()
+        assert bytes(port.written).hex(" ") == "ff 04 82 01 02 03 8c"
+        assert (robot.state.error, robot.state.present) == ((0, 4, 0), (10, 11, 12))
+        with pytest.raises(Exception, match=r"^read_ids: reply 2 of 3: status: reply id is 3, expected 2$") as raised:
+            robot.primitives.read_ids()
+        assert type(raised.value).__name__ == "RdisProtocolError"
+        assert robot.state.present == (10, 11, 12)
+
+
 def test_a_bad_frame_among_the_replies_is_refused(implementation: Any) -> None:
     broken = bytearray(status("55 00 0200"))
     broken[-1] ^= 0xFF
@@ -99,6 +118,11 @@ primitive none() on port pack "B" (1) replies 2
 primitive grouped() on port frame f() pack "B" (1) replies 2 unpack "<*(B)"
 primitive many() on port pack "B" (1) replies 1025 unpack "B"
 primitive fine() on port pack "B" (1) replies 2 unpack "B" { two = out[0] }
+frame g(id: int in 0..9) { header "\\xAA"  field id "B" = id  length "B" = payload  payload }
+primitive hidden(one: int) on port pack "B" (1) replies one in 0..1 frame g(one) unpack "B"
+primitive varying(ids: int[2]) on port pack "B" (1) replies id in ids frame g(id) unpack "B"
+primitive wide() on port pack "B" (1) replies id in [1, 20] frame g(id) unpack "B"
+primitive lone() on port pack "B" (1) replies id in 3..3 frame g(id) unpack "B"
 """
 
 
@@ -141,7 +165,36 @@ error[E204]: a reply count must be at most 1024
 10 | primitive many() on port pack "B" (1) replies 1025 unpack "B"
    |                                               ^^^^
 
-5 errors emitted
+error[E101]: loop variable `one` has the name of a parameter
+  --> d.rdis:13:57
+   |
+13 | primitive hidden(one: int) on port pack "B" (1) replies one in 0..1 frame g(one) unpack "B"
+   |                  --- a parameter `one`
+   |                                                         ^^^
+   |
+   = help: give the loop variable a name of its own
+
+error[E212]: a loop goes over a constant array or a range, not an array known only when it runs
+  --> d.rdis:14:67
+   |
+14 | primitive varying(ids: int[2]) on port pack "B" (1) replies id in ids frame g(id) unpack "B"
+   |                                                                   ^^^
+   |
+   = help: loop over its indexes and read its elements: `for i in 0..1 { ... ids[i] ... }`
+
+error[E403]: 20 is outside the range of parameter `id` of frame `g`
+  --> d.rdis:15:69
+   |
+15 | primitive wide() on port pack "B" (1) replies id in [1, 20] frame g(id) unpack "B"
+   |                                                                     ^^ in 0..9
+
+error[E204]: a primitive reads 2 to 1024 replies, not 1
+  --> d.rdis:16:39
+   |
+16 | primitive lone() on port pack "B" (1) replies id in 3..3 frame g(id) unpack "B"
+   |                                       ^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^
+
+9 errors emitted
 """
 
 
@@ -164,4 +217,15 @@ def test_json_printer_dump_and_budget(tmp_path: Path) -> None:
        6     1  checksum              sum as B, over length .. payload
 """ in dump.dump(model)
     sizes = {name: budget.message_bytes(prim, model.frames) for name, prim in model.primitives.items()}
-    assert sizes == {"read_all": 5 + 3 * 7, "nodes": 1 + 2 * 1}
+    assert sizes == {"read_all": 5 + 3 * 7, "read_ids": 7 + 3 * 5, "nodes": 1 + 2 * 1}
+    assert """\
+  3 replies, frame status(1) .. status(3), each: 5 bytes
+  offset  size  kind                  value
+       0     1  header                FE
+       1     1  field id              "B" = id
+       2     1  payload u8            out[0]
+       3     2  payload s16 LE        out[1]
+""" in dump.dump(model)
+    assert '"replyFrames": [' in built
+    printed = print_module(parse("bus.rdis", BUS, Diagnostics()))
+    assert "    replies id in IDS frame status(id)\n" in printed

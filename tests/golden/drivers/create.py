@@ -34,7 +34,7 @@ import sys
 import threading
 import time
 from collections.abc import Callable, Iterator, Mapping, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any, Protocol
 
 Value = int | float | bool | str | bytes | tuple[Any, ...]  # an array is a tuple
@@ -1076,11 +1076,13 @@ class Primitive:
     expect: Callable[[StateValues, Args, Sequence[Any]], object] | None = None  # a condition its decoded reply meets
     lines: Callable[[StateValues, Args], dict[str, Value]] | None = None  # "dtr"/"rts": levels, set before the request
     replies: int = 0  # `replies N`: N replies to one request, collected value by value into arrays (0: one)
+    reply_frames: tuple[FrameUse, ...] = ()  # each reply's own frame (`replies id in IDS frame status(id)`)
     expects_reply: bool = field(init=False)
     framed_reply: bool = field(init=False)
     floats: tuple[int, ...] = field(init=False)
     ranged: tuple[int, ...] = field(init=False)
     tag_struct: struct.Struct | None = field(init=False)
+    answers: tuple[Primitive, ...] = field(init=False)  # for each of `reply_frames`: this plan, reading through it
 
     def __post_init__(self) -> None:
         reply = self.frame.frame.reply if self.frame is not None else None
@@ -1091,6 +1093,8 @@ class Primitive:
         object.__setattr__(self, "floats", _floats(self.params))
         object.__setattr__(self, "ranged", _ranged(self.params))
         object.__setattr__(self, "tag_struct", None if self.tag is None else struct.Struct(self.tag))
+        object.__setattr__(self, "answers", tuple(replace(self, frame=use, reply_frames=())
+                                                  for use in self.reply_frames))
         if not _sent_at_once(self):
             object.__setattr__(self, "request", None)
         elif self.request is None:
@@ -2189,12 +2193,21 @@ class Robot:
 
     def _read_replies(self, plan: Primitive, link: _Link, reader: Incoming, fields: list[Any], request: bytes,
                       wait: float, local: Args) -> tuple[tuple[Any, ...], ...]:
-        """`replies N`: N replies read in turn as one is (each meeting its `expect`), all within the
-        one deadline; value i of them all as one array, in the order they came."""
+        """`replies N`: N replies read in turn as one is (each meeting its `expect`; through its own
+        frame, with its own field values, when `reply_frames` gives them), all within the one
+        deadline; value i of them all as one array, in the order they came."""
         got: list[Sequence[Any]] = []
         for n in range(plan.replies):
+            answer = plan.answers[n] if plan.answers else plan
+            if plan.answers:
+                use = answer.frame
+                assert use is not None
+                try:
+                    fields = use.frame.values(plan.name, use.args(self._state, local))
+                except (struct.error, *EVAL_ERRORS) as err:
+                    raise RdisValueError(f"{plan.name}: {err}") from None
             try:
-                got.append(self._read_reply(plan, link, reader, fields, request, wait, local)[2])
+                got.append(self._read_reply(answer, link, reader, fields, request, wait, local)[2])
             except RdisTimeout:
                 if not n:
                     raise
