@@ -123,7 +123,10 @@ Parameters with a default (`speed: int = 5`) may be left out."""),
     ("E202", "missing-clause", """
 A required clause is missing: a primitive needs `on CONNECTION` and exactly one
 of `pack` or `format`, unless it only sets modem lines (`lines dtr = on`): then it
-writes no request, and so has no reply and no frame."""),
+writes no request, and so has no reply and no frame. A primitive that reads
+several replies (`replies 6`) says how each is read: `unpack` or `regex`. Wrong:
+`primitive read() on bus pack "B" (1) replies 6`. Right: `primitive read() on bus
+pack "B" (1) replies 6 unpack "<BBh"`."""),
     ("E203", "conflicting-clause", """
 Clauses that exclude each other, or a clause given twice: a primitive has exactly
 one of `pack`/`format` and at most one of `unpack`/`regex`, and sets each modem
@@ -135,7 +138,8 @@ A setting outside its range: baud and frequency must be positive, a keepalive
 interval positive, a delay zero or more, a reply-line `terminator` 1 to 8 bytes.
 Settings must be constants. A parameter's range has constant bounds, low <= high,
 of its type; a default is a constant, and the parameters after one with a default
-have defaults too. A loop's range counts up: `for i in 5..0` is empty."""),
+have defaults too. A loop's range counts up: `for i in 5..0` is empty. A reply
+count (`replies N`) is a constant int from 2 to 1024."""),
     ("E205", "periodic-with-parameters", """
 A periodic interface runs on every tick of its connection's thread, where nobody
 supplies arguments, so it cannot take parameters."""),
@@ -182,7 +186,9 @@ read by its indexes, whose count its type fixes. A loop makes calls, and an
 interface's loops write out at most 4096 of them (65536 for all interfaces).
 Wrong: `interface all(n: int) { for i in 0..n { torque(i, True) } }`. Right:
 `const IDS = [1, 2, 3]` with `interface all() { for id in IDS { torque(id, True) } }`,
-or `interface move(p: int[3]) { for i in 0..2 { goal(IDS[i], p[i]) } }`."""),
+or `interface move(p: int[3]) { for i in 0..2 { goal(IDS[i], p[i]) } }`. A
+primitive's `replies id in IDS frame status(id)` goes over the same: a constant
+array or a range of constant ints, a reply a value."""),
     ("E213", "connect-setting", """
 A `setting` is a value given when connecting (`rdisc run --set BAUD=1000000`, a
 driver's `connect(port, BAUD=1000000)`, a ROS node's `_BAUD:=1000000`), such as a
@@ -204,8 +210,12 @@ the message as bytes. Pointer codes (`P`) are not allowed. A group of int, float
 and bool codes repeats `N(BH)` N times (1 to 4096), or as many times as the message
 says: `#(BH)`, counted by one unsigned count field `#B` (or `#H`, ...) before it,
 or `*(BH)`, until the message ends, last. One such group a message, with a byte
-order (`<`, `>` or `!`). Wrong: `unpack "<B#(BH)"` (no count field),
-`unpack "<*(BH)B"` (not last). Right: `unpack "<#B#(BH)B"`, `unpack "<B*(BH)"`."""),
+order (`<`, `>` or `!`). An unsigned integer code (`B`, `H`, `I`, `L`, `Q`, without
+a count, outside groups) may be split into two bit fields or more, from its lowest bit
+up, whose widths add up to its bits: `B{1,1,6}`, one value each. Wrong: `unpack
+"<B#(BH)"` (no count field), `unpack "<*(BH)B"` (not last), `unpack "<B{1,6}"` (7 of
+8 bits), `pack "<h{8,8}"` (signed). Right: `unpack "<#B#(BH)B"`, `unpack "<B*(BH)"`,
+`unpack "<B{1,1,6}H{1,15}H"`."""),
     ("E302", "format-argument-count", """
 The number of format arguments differs from the number of values the `pack` or
 `format` string takes. `pack ">Bhh"` takes three values; `format "D,{},{}"` two."""),

@@ -166,6 +166,9 @@ def _primitive(x: m.Primitive) -> JsonObject:
                                                  "arguments": [_embedded(a) for a in x.frame.args]}),
         ("skipUnmatched", x.skip_unmatched or None),
         ("timeout", None if x.timeout_ms is None else _number(x.timeout_ms)),
+        ("replies", x.replies or None),
+        ("replyFrames", [{"name": use.frame, "arguments": [_embedded(a) for a in use.args]}
+                         for use in x.reply_frames] or None),
         ("expect", None if x.expect is None else _embedded(x.expect)),
         ("replyTable", None if x.table is None else _object(
             ("key", x.table.key or None), ("tag", x.table.tag), ("cases", [_case(c) for c in x.table.cases]))),

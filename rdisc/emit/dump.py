@@ -39,6 +39,8 @@ def _primitive(model: m.Model, p: m.Primitive) -> str:
         lines.append("  request: none")
     else:
         lines += _sides("request", frame.requests if frame else None, _payload_rows(p.encoding, p.args), False)
+    if p.reply_frames:  # each reply through its own frame, all of one frame
+        frame = model.frames[p.reply_frames[0].frame]
     framed = frame.replies if frame and frame.reply else None
     if p.table is not None:
         for case in p.table.cases:
@@ -50,7 +52,10 @@ def _primitive(model: m.Model, p: m.Primitive) -> str:
                        f"= {said}" if case.last is None else f"in {said}")
                 lines += _sides(f"reply tagged {said}", framed, [tag, *_reply_rows(case.decoding)])
     elif p.expects_reply(model.frames):
-        lines += _sides("reply", framed, _reply_rows(p.decoding))
+        uses = [f"{use.frame}({', '.join(expression_text(a) for a in use.args)})" for use in p.reply_frames]
+        through = f", frame {uses[0]} .. {uses[-1]}" if uses else ""
+        lines += _sides(f"{p.replies} replies{through}, each" if p.replies else "reply", framed,
+                        _reply_rows(p.decoding))
     else:
         lines.append("  reply: none")
     return "\n".join(lines) + "\n"
@@ -95,10 +100,11 @@ def _payload_rows(encoding: m.Pack | m.Format, args: tuple[m.Expr, ...]) -> list
 def _rows(fmt: str, text: Callable[[int, int | None], str], given: list[Row | None] | None = None) -> list[Row]:
     """One row a value of the format, in wire order: a repeated group's arrays element by
     element (`text(slot, element)`: `goal[0]`, `goal[1]`, ...), a group repeated as the
-    message says once, as element `i`, after its count field; `given`, a value's own row
-    where it has one."""
+    message says once, as element `i`, after its count field; an integer split into bit fields
+    once, its fields with their bits; `given`, a value's own row where it has one."""
     layout = formats.struct_layout(fmt)
     groups = {first: (codes, count) for first, codes, count in layout.groups}
+    splits = {first: (code[-1], len(widths)) for first, code, widths in layout.bits}
     varying = layout.varying
     rows: list[Row] = []
     at = 0
@@ -113,6 +119,12 @@ def _rows(fmt: str, text: Callable[[int, int | None], str], given: list[Row | No
             rows += [(None, f"{_kind(fmt, layout.slots[j].code)} x k", text(j, None) + "[i]")
                      for j in range(at, at + codes)]
             at += codes
+            continue
+        if at in splits:
+            code, fields = splits[at]
+            said = [f"{text(j, None)} ({formats.bit_span(*layout.slots[j].bits or (0, 0))})" for j in range(at, at + fields)]
+            rows.append((_size(fmt, code), f"bits {_kind(fmt, code)}", ", ".join(said)))
+            at += fields
             continue
         if at in groups:
             codes, count = groups[at]
@@ -244,8 +256,7 @@ def _bit_fields(bits: tuple[m.BitField, ...]) -> str:
     for bit in bits:
         value = expression_text(bit.value) if bit.value is not None else "payload" + (
             f" {'+' if bit.adjust >= 0 else '-'} {abs(bit.adjust)}" if bit.adjust else "")
-        where = f"bit {low}" if bit.width == 1 else f"bits {low}..{low + bit.width - 1}"
-        said.append(f"{bit.name} = {value} ({where})")
+        said.append(f"{bit.name} = {value} ({formats.bit_span(low, bit.width)})")
         low += bit.width
     return ", ".join(said)
 

@@ -115,10 +115,13 @@ def _edges(model: m.Model) -> Iterator[tuple[str, str, str]]:
         yield f"primitive:{p.name}", f"connection:{p.connection}", "on"
         if p.frame is not None:
             yield f"primitive:{p.name}", f"frame:{p.frame.frame}", "frame"
+        if p.reply_frames:
+            yield f"primitive:{p.name}", f"frame:{p.reply_frames[0].frame}", f"{p.replies} replies"
         actions = list(p.actions) + [a for case in (p.table.cases if p.table else ()) for a in case.actions]
         for target in dict.fromkeys(a.target for a in actions):
             yield f"primitive:{p.name}", variable(target), "writes"
-        for name in _reads(*p.args, *(p.frame.args if p.frame else ()), *(a.value for a in actions)):
+        for name in _reads(*p.args, *(p.frame.args if p.frame else ()), *(a for use in p.reply_frames for a in use.args),
+                           *(a.value for a in actions)):
             if name not in {a.target for a in actions}:
                 yield variable(name), f"primitive:{p.name}", "read by"
     for i in model.interfaces.values():

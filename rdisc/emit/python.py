@@ -493,6 +493,16 @@ class _Driver:
             options["skip"] = "True"
         if prim.timeout_ms is not None:
             options["timeout"] = repr(prim.timeout_ms / 1000.0)
+        if prim.replies:
+            options["replies"] = str(prim.replies)
+        if prim.reply_frames:
+            uses = []
+            for n, use in enumerate(prim.reply_frames):
+                w.blank(2)
+                self.function(w, f"{base}_reply_frame_{n}", signature, prim.params,
+                              [("", a, None) for a in use.args], "Args")
+                uses.append(f"FrameUse({self.plan['frame', use.frame]}, {base}_reply_frame_{n})")
+            options["reply_frames"] = _tuple(uses)
         if prim.expect is not None:
             options["expect"] = f"{base}_expect"
             w.blank(2)
@@ -835,6 +845,7 @@ def _codec(codec: object) -> str:
             options = (f", strings={codec.strings!r}" if codec.strings else "") + (", rest=True" if codec.rest else "")
             options += f", groups={codec.groups!r}" if codec.groups else ""
             options += f", varying={codec.varying!r}" if codec.varying else ""
+            options += f", bits={codec.bits!r}" if codec.bits else ""
             options += f", until={codec.until!r}" if isinstance(codec, engine.Unpack) and codec.until else ""
             return f"{type(codec).__name__}({quoted(codec.struct.format)}{options})"
         case engine.Format():

@@ -20,9 +20,7 @@ __all__ = ["bit_fields", "checksum", "decoder", "encoder", "frame_fields", "wire
 def encoder(encoding: m.Pack | m.Format) -> engine.Pack | engine.Format:
     match encoding:
         case m.Pack(format=fmt):
-            layout = formats.struct_layout(fmt)
-            fixed, varying = _fixed(layout)
-            return engine.Pack(fixed, _string_slots(fmt), layout.rest, layout.groups, varying)
+            return engine.Pack(*_struct_codec(formats.struct_layout(fmt)))
         case m.Format(template=template):
             return engine.Format(template)
 
@@ -30,10 +28,8 @@ def encoder(encoding: m.Pack | m.Format) -> engine.Pack | engine.Format:
 def decoder(decoding: m.Unpack | m.Regex | None) -> engine.Unpack | engine.Match | None:
     match decoding:
         case m.Unpack(format=fmt, until=until):
-            layout = formats.struct_layout(fmt)
-            fixed, varying = _fixed(layout)
-            return engine.Unpack(fixed, _string_slots(fmt), layout.rest, layout.groups, varying,
-                                 None if until is None else until.encode("latin-1"))
+            return engine.Unpack(*_struct_codec(formats.struct_layout(fmt)),
+                                 until=None if until is None else until.encode("latin-1"))
         case m.Regex(pattern=pattern):
             return engine.Match(pattern)
     return None
@@ -95,14 +91,17 @@ def _part(part: m.FramePart, index: dict[tuple[str, m.Expr], int]) -> engine.Par
     raise AssertionError(part)
 
 
-def _fixed(layout: formats.StructLayout) -> tuple[str, engine.Varying | None]:
-    """The engine's struct format and varying group: with a group repeated as the message says,
-    the format before it."""
+StructCodec = tuple[str, tuple[int, ...], bool, tuple[engine.Group, ...], engine.Varying | None,
+                    tuple[engine.Split, ...]]
+
+
+def _struct_codec(layout: formats.StructLayout) -> StructCodec:
+    """A struct format as the engine's `Pack` and `Unpack` take it: the struct module's format
+    (with a group repeated as the message says, the format before it), the indexes of its
+    strings and its groups among the struct module's values (an integer split into bit fields
+    one value), whether it ends in the rest, that group, the integers split into bits."""
     v = layout.varying
-    return (layout.fixed, None) if v is None else (v.head, (v.unit, v.tail, v.count_at))
-
-
-def _string_slots(fmt: str) -> tuple[int, ...]:
-    """Indexes of the values a struct format packs or unpacks as bytes (`s`, `p`, `c`)."""
-    slots = formats.struct_layout(fmt).slots
-    return tuple(i for i, slot in enumerate(slots) if slot.type is m.Type.STRING)
+    fixed, varying = (layout.fixed, None) if v is None else (v.head, (v.unit, v.tail, v.count_at))
+    strings = tuple(layout.joined(i) for i, slot in enumerate(layout.slots) if slot.type is m.Type.STRING)
+    groups = tuple((layout.joined(first), codes, count) for first, codes, count in layout.groups)
+    return fixed, strings, layout.rest, groups, varying, layout.bits

@@ -132,11 +132,13 @@ class Description:
         if p.frame is not None:
             frame = engine.FrameUse(self._frames[p.frame.frame], _values([prepare(a, slots) for a in p.frame.args]))
         expect = None if p.expect is None else prepare(p.expect, slots)
+        answers = tuple(engine.FrameUse(self._frames[use.frame], _values([prepare(a, slots) for a in use.args]))
+                        for use in p.reply_frames)
         return engine.Primitive(
             p.name, p.connection, _params(p.params), _spread(_values([prepare(a, slots) for a in p.args]), p.spreads()),
             None if p.encoding is None else encoder(p.encoding), decoder(p.decoding), actions, frame,
             p.skip_unmatched, None if p.timeout_ms is None else p.timeout_ms / 1000.0, checked=checked,
-            expect=expect, lines=_levels(p.lines, slots),
+            expect=expect, lines=_levels(p.lines, slots), replies=p.replies, reply_frames=answers,
         )
 
     def _frame(self, frame: m.Frame) -> engine.Frame:

@@ -159,7 +159,7 @@ def message_bytes(prim: m.Primitive, frames: dict[str, m.Frame] | None = None) -
     """Bytes of the request and the reply, frames included (ASCII, and data of any
     length, counted at their shortest; a group repeated as the message says at its most
     rounds: an array's size, its count field's largest value or MAX_ARRAY, no more than the
-    frame's length field states)."""
+    frame's length field states), the reply as many times as `replies` says."""
     frame = (frames or {}).get(prim.frame.frame) if prim.frame is not None else None
     match prim.encoding:
         case m.Pack(format=fmt, grouped=grouped):
@@ -173,11 +173,13 @@ def message_bytes(prim: m.Primitive, frames: dict[str, m.Frame] | None = None) -
             request = len(template.format(*values).encode("utf-8"))
         case None:  # only modem lines set: no byte on the wire
             request = 0
-    framing = 0
+    framing = answer = 0  # the request's framing, and the reply's
     if frame is not None:  # the request's layout is the one its size picks; the reply's shortest, without optional parts
         framing = frame_bytes(_written(frame.requests, request))
-        if prim.expects_reply(frames or {}):
-            framing += min((frame_bytes(parts, shortest=True) for parts in frame.replies), default=0)
+    if prim.reply_frames:  # each reply through its own frame, all of one frame
+        frame = (frames or {}).get(prim.reply_frames[0].frame)
+    if frame is not None and prim.expects_reply(frames or {}):
+        answer = min((frame_bytes(parts, shortest=True) for parts in frame.replies), default=0)
     match prim.decoding:
         case m.Unpack(format=fmt, until=until):
             layout = formats.struct_layout(fmt)
@@ -188,11 +190,11 @@ def message_bytes(prim: m.Primitive, frames: dict[str, m.Frame] | None = None) -
         case m.Regex(pattern=pattern):
             reply = formats.regex_min_length(pattern) + 1  # and its line terminator
         case None:
-            reply = max((message_bytes(prim.case(c), frames) - request - framing for c in prim.table.cases),
+            reply = max((message_bytes(prim.case(c), frames) - request - framing - answer for c in prim.table.cases),
                         default=0) if prim.table else 0
             if prim.table is not None and prim.table.tag is not None:
                 reply += formats.struct_layout(prim.table.tag).size
-    return request + reply + framing
+    return request + framing + (reply + answer) * max(prim.replies, 1)
 
 
 def _written(layouts: tuple[tuple[m.FramePart, ...], ...], size: int) -> tuple[m.FramePart, ...]:

@@ -607,12 +607,16 @@ class _Checker:
         reply: tuple[Type, ...] | None = ()
         if decodings:
             decoding, reply = self.decoding(decodings[0])
+        replies_clause = self.once([c for c in decl.clauses if isinstance(c, ast.Replies)], "`replies`", name)
+        count, reply_frames = self.reply_count(replies_clause, decl, reply, decoding, env, encoding) \
+            if isinstance(replies_clause, ast.Replies) else (0, ())
         actions: tuple[m.PostAction, ...] = ()
         if action_blocks:
             note = None if decodings else f"primitive `{name.text}` reads no reply: add `unpack` or `regex`"
+            collected = tuple(m.Array(t, count) for t in reply) if count and reply is not None else reply
             action_env = self.env_with(
                 scope, "in a post-action", "`out`, parameters and state variables",
-                reply=reply if decodings else None, reply_note=note, reply_known=reply is not None,
+                reply=collected if decodings else None, reply_note=note, reply_known=reply is not None,
             )
             actions = self.actions(action_blocks[0], action_env, {p.name for p in params})
         expect = self.expect(decl, scope, reply, bool(decodings))
@@ -665,7 +669,66 @@ class _Checker:
             self.d.report("E203", expect.span, f"primitive `{name.text}` has a reply table and also `expect`",
                           help="`expect` checks the reply of a primitive with one decoding")
         return m.Primitive(name.text, params, connection, encoding, args, decoding, actions, decl.doc, decl.span,
-                           frame, skip is not None, table, timeout, expect, lines)
+                           frame, skip is not None, table, timeout, expect, lines, count, reply_frames)
+
+    def reply_count(self, clause: ast.Replies, decl: ast.PrimitiveDecl, reply: tuple[m.AnyType, ...] | None,
+                    decoding: m.Unpack | m.Regex | None, env: Env,
+                    encoding: m.Pack | m.Format | None) -> tuple[int, tuple[m.FrameUse, ...]]:
+        """`replies N` (a constant int) or `replies id in IDS frame status(id)` (a reply, with its
+        own frame, a value): 2 to MAX_ARRAY replies, of a primitive with one decoding whose values
+        are not arrays (each value of the replies is one, of N). (0, ()) where it is refused."""
+        name = decl.name.text
+        frames: tuple[m.FrameUse, ...] = ()
+        if clause.var is None:
+            value = self.setting(clause.over, "a reply count", MAX_ARRAY)
+        else:
+            found = self.reply_frames(clause, decl, decoding, env, encoding)
+            if found is None:
+                return 0, ()
+            value, frames = len(found), found
+        if value is None:
+            return 0, ()
+        if not isinstance(value, int) or isinstance(value, bool) or not 2 <= value <= MAX_ARRAY:
+            said = f"a reply count is a constant int from 2 to {MAX_ARRAY}, not {shown(value)}" \
+                if clause.var is None else f"a primitive reads 2 to {MAX_ARRAY} replies, not {value}"
+            self.d.report("E204", clause.over.span if clause.var is None else clause.span, said)
+            return 0, ()
+        if decoding is None:
+            self.d.report("E202", clause.span, f"`{name}` reads {value} replies, but decodes none",
+                          help="say how each reply is read: `unpack` or `regex` (a reply table chooses one reply)")
+            return 0, ()
+        if reply is not None and any(isinstance(t, m.Array) for t in reply):
+            self.d.report("E401", clause.span, f"`{name}` reads {value} replies, whose values are arrays: "
+                          "each value of the replies would be an array of arrays",
+                          help="read a reply of single values, or one reply with a repeated group")
+            return 0, ()
+        return value, frames
+
+    def reply_frames(self, clause: ast.Replies, decl: ast.PrimitiveDecl, decoding: m.Unpack | m.Regex | None,
+                     env: Env, encoding: m.Pack | m.Format | None) -> tuple[m.FrameUse, ...] | None:
+        """`replies id in IDS frame status(id)`: each reply's frame, written out with the variable
+        a constant in each (its arguments, constant ones as their values); None where in error."""
+        assert clause.var is not None and clause.frame is not None
+        if not self.loop_variable(clause.var, decl.params, {}):
+            return None
+        found = self.constant_values(clause.over, clause.high, env)
+        if found is None:
+            return None
+        type_, values = found
+        if len(values) > MAX_ARRAY:  # before any is written out
+            self.d.report("E204", clause.span, f"a primitive reads 2 to {MAX_ARRAY} replies, not {len(values)}")
+            return None
+        frames: list[m.FrameUse] = []
+        name = clause.var.text  # no constant has it (loop_variable): bound as one, then gone
+        for value in values:
+            self.typer.named[name] = (type_, value)
+            errors = self.d.error_count
+            use = self.frame_use(clause.frame, env, decl, encoding, [decoding] if decoding else [], None)
+            if use is None or self.d.error_count > errors:
+                break
+            frames.append(replace(use, args=tuple(self.value_of(a) for a in use.args)))
+        del self.typer.named[name]
+        return tuple(frames) if len(frames) == len(values) else None
 
     def modem_lines(self, clause: ast.Lines, env: Env, name: ast.Ident,
                     connection: m.ConnectionRef) -> tuple[m.LineLevel, ...]:
@@ -1058,10 +1121,10 @@ class _Checker:
                 self.fits(item, slot, expr.span, "", f"{code} holds {slot.low} to {slot.high}")
 
     def pack_value(self, arg: m.Expr, expr: ast.Expr, slot: formats.Slot) -> None:
-        self.flow(arg, slot.type, expr.span, f"pack code `{slot.code}`")
+        self.flow(arg, slot.type, expr.span, f"pack code {slot.shown}")
         value = self.typer.constant(arg)
         if arg.type is Type.INT:
-            self.fits(value, slot, expr.span, "", f"`{slot.code}` holds {slot.low} to {slot.high}")
+            self.fits(value, slot, expr.span, "", f"{slot.shown} holds {slot.low} to {slot.high}")
         if slot.code == "c" and isinstance(value, str) and len(value) != 1:
             self.d.report("E403", expr.span, "pack code `c` takes a string of exactly one character")
         elif slot.code[-1:] in ("s", "p") and isinstance(value, str):
@@ -1224,45 +1287,17 @@ class _Checker:
                     loops: dict[str, ast.Ident]) -> tuple[Type, Sequence[m.Value]] | None:
         """The values a loop's variable takes, or None when the loop is in error (reported)."""
         head = Span(stmt.span.path, stmt.span.start, (stmt.high or stmt.low).span.end)  # `for i in 0..5`
-        if not self.loop_variable(stmt.var, u, loops):
+        if not self.loop_variable(stmt.var, u.decl.params, loops):
             return None
         if not stmt.body:
             self.d.report("E212", head, "a loop without calls", help="write the calls it makes in its `{ }`")
             return None
-        if stmt.high is None:
-            over = self.typer.expr(stmt.low, u.env)
-            if over.type is None:
-                return None
-            if not isinstance(over.type, m.Array):
-                self.d.report("E212", stmt.low.span, "a loop goes over a constant array or a range, not "
-                              f"{describe(over.type)}", help="write a range: `for i in 0..5`")
-                return None
-            if not self.typer.is_constant(over):
-                name = stmt.low.name if isinstance(stmt.low, ast.Ref) else "values"
-                self.d.report("E212", stmt.low.span, "a loop goes over a constant array or a range, not an array "
-                              "known only when it runs", help="loop over its indexes and read its elements: "
-                              f"`for i in 0..{over.type.size - 1} {{ ... {name}[i] ... }}`")
-                return None
-            type_, values = over.type.element, self.typer.constant(over)
-        else:
-            ends = [self.typer.expr(end, u.env) for end in (stmt.low, stmt.high)]
-            if any(end.type is None for end in ends):
-                return None
-            for end, written in zip(ends, (stmt.low, stmt.high)):
-                if end.type is not Type.INT or not self.typer.is_constant(end):
-                    what = describe(end.type) if end.type is not Type.INT else "an int known only when it runs"
-                    self.d.report("E212", written.span, f"a loop's bounds are constant ints, not {what}",
-                                  help="its rounds are fixed when the description is checked: write its bounds "
-                                  "with numbers and constants")
-                    return None
-            low, high = (int(self.typer.constant(end)) for end in ends)  # type: ignore[call-overload]
-            if low > high:
-                self.d.report("E204", stmt.low.span.to(stmt.high.span), f"the range {low}..{high} is empty",
-                              help="a loop counts up, from its first bound to its last, both included")
-                return None
-            type_, values = Type.INT, range(low, high + 1)
+        found = self.constant_values(stmt.low, stmt.high, u.env)
+        if found is None:
+            return None
+        type_, values = found
         # Each round makes a call or more, so these bound the work before any is done.
-        rounds = len(values)  # type: ignore[arg-type]
+        rounds = len(values)
         too_many = f"interface `{u.decl.name.text}` unrolls into more than {MAX_UNROLLED} calls" \
             if len(u.calls) + rounds > MAX_UNROLLED else \
             f"the description's interfaces unroll into more than {MAX_UNROLLED_ALL} calls" \
@@ -1270,15 +1305,51 @@ class _Checker:
         if too_many is not None:
             self.d.report("E212", head, too_many, help="every round of a loop makes its calls: loop over fewer values")
             return None
-        return type_, values  # type: ignore[return-value]
+        return type_, values
 
-    def loop_variable(self, var: ast.Ident, u: _Unrolling, loops: dict[str, ast.Ident]) -> bool:
+    def constant_values(self, low_expr: ast.Expr, high_expr: ast.Expr | None,
+                        env: Env) -> tuple[Type, Sequence[m.Value]] | None:
+        """The values of a loop's (or a `replies`') variable: a constant array's, or those of a
+        range of constant ints, both ends included; None when they are in error (reported)."""
+        if high_expr is None:
+            over = self.typer.expr(low_expr, env)
+            if over.type is None:
+                return None
+            if not isinstance(over.type, m.Array):
+                self.d.report("E212", low_expr.span, "a loop goes over a constant array or a range, not "
+                              f"{describe(over.type)}", help="write a range: `for i in 0..5`")
+                return None
+            if not self.typer.is_constant(over):
+                name = low_expr.name if isinstance(low_expr, ast.Ref) else "values"
+                self.d.report("E212", low_expr.span, "a loop goes over a constant array or a range, not an array "
+                              "known only when it runs", help="loop over its indexes and read its elements: "
+                              f"`for i in 0..{over.type.size - 1} {{ ... {name}[i] ... }}`")
+                return None
+            return over.type.element, self.typer.constant(over)  # type: ignore[return-value]
+        ends = [self.typer.expr(end, env) for end in (low_expr, high_expr)]
+        if any(end.type is None for end in ends):
+            return None
+        for end, written in zip(ends, (low_expr, high_expr)):
+            if end.type is not Type.INT or not self.typer.is_constant(end):
+                what = describe(end.type) if end.type is not Type.INT else "an int known only when it runs"
+                self.d.report("E212", written.span, f"a loop's bounds are constant ints, not {what}",
+                              help="its rounds are fixed when the description is checked: write its bounds "
+                              "with numbers and constants")
+                return None
+        low, high = (int(self.typer.constant(end)) for end in ends)  # type: ignore[call-overload]
+        if low > high:
+            self.d.report("E204", low_expr.span.to(high_expr.span), f"the range {low}..{high} is empty",
+                          help="a loop counts up, from its first bound to its last, both included")
+            return None
+        return Type.INT, range(low, high + 1)
+
+    def loop_variable(self, var: ast.Ident, params: tuple[ast.Param, ...], loops: dict[str, ast.Ident]) -> bool:
         """A loop variable's name is its own: a parameter, state variable, constant or outer
         loop variable of the name would be hidden in the loop, and its reader misled."""
         errors = self.d.error_count
         check_name(var, "loop variable", self.d)
         name = var.text
-        param = next((p.name for p in u.decl.params if p.name.text == name), None)
+        param = next((p.name for p in params if p.name.text == name), None)
         state, constant = self.s.states.get(name), self.s.constants.get(name)
         first, what = (loops[name], "an outer loop's variable") if name in loops else \
             (param, "a parameter") if param is not None else \
@@ -1334,7 +1405,7 @@ class _Checker:
                 continue
             self.fits(
                 self.typer.constant(args[i]), slot, exprs[i].span, f" of primitive `{prim.name}`",
-                f"parameter `{packed.name}` is packed as `{slot.code}`, {slot.low} to {slot.high}",
+                f"parameter `{packed.name}` is packed as {slot.shown}, {slot.low} to {slot.high}",
             )
 
     def fits(self, value: object, slot: formats.Slot, span: Span, where: str, label: str) -> None:
@@ -1342,7 +1413,7 @@ class _Checker:
         if slot.low is None or not isinstance(value, int) or isinstance(value, bool):
             return
         if not slot.low <= value <= slot.high:  # type: ignore[operator]
-            self.d.report("E403", span, f"{shown(value)} does not fit pack code `{slot.code}`{where}", label=label)
+            self.d.report("E403", span, f"{shown(value)} does not fit pack code {slot.shown}{where}", label=label)
 
     def interface_cycles(self, interfaces: dict[str, m.Interface]) -> None:
         """Calls between interfaces form no cycle, so every call ends and its cost is known:

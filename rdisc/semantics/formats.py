@@ -39,6 +39,19 @@ class Slot:
     high: int | None = None
     repeat: int = 0  # in a repeated group `6(BH)`: the group's count (the value is an array of it); -1 in a
     # group repeated as the message says (`#(BH)`, `*(BH)`), whose value is an array of any size
+    bits: tuple[int, int] | None = None  # a bit field of an integer code (`B{1,1,6}`): its lowest bit, its width
+
+    @property
+    def shown(self) -> str:
+        """The code as a message names it: `B`, or `B{1,1,6}` bits 2..7 for a bit field."""
+        if self.bits is None:
+            return f"`{self.code}`"
+        return f"`{self.code}` {bit_span(*self.bits)}"
+
+
+def bit_span(low: int, width: int) -> str:
+    """The bits a field takes in its integer: `bit 0`, `bits 2..7`."""
+    return f"bit {low}" if width == 1 else f"bits {low}..{low + width - 1}"
 
 
 @dataclass(frozen=True, slots=True)
@@ -71,6 +84,13 @@ class StructLayout:
     fixed: str = ""  # the format without its `*` and with its groups written out, for the struct module
     groups: tuple[tuple[int, int, int], ...] = ()  # each repeated group: (its first slot, its codes, its count)
     varying: Varying | None = None  # a group repeated as the message says (its count 0 in `groups`)
+    bits: tuple[tuple[int, str, tuple[int, ...]], ...] = ()  # each integer split into bit fields: its first
+    # field's slot, its code with the byte order, its fields' widths from its lowest bit up
+
+    def joined(self, slot: int) -> int:
+        """The index among the struct module's values of a slot's value (not a bit field's): what
+        the engine counts groups and strings in."""
+        return slot - sum(len(widths) - 1 for first, _, widths in self.bits if first < slot)
 
     @property
     def open_end(self) -> bool:
@@ -93,13 +113,15 @@ _STANDARD_SIZES = {"b": 1, "B": 1, "h": 2, "H": 2, "i": 4, "I": 4, "l": 4, "L": 
 _STRUCT_ITEM = re.compile(r"\s*(\d*)\s*([a-zA-Z?])")
 _GROUP = re.compile(r"\s*(\d+|#|\*)\s*\(([^()]*)\)")  # `6(BH)`: a repeated group; `#(BH)`, `*(BH)`: as the message says
 _COUNT = re.compile(r"\s*#\s*([a-zA-Z?]?)")  # `#B`: the count field of the `#(...)` group
+_SPLIT = re.compile(r"\s*\{([^{}]*)\}")  # `B{1,1,6}`: the integer before it split into bit fields
 
 
 def struct_layout(fmt: str) -> StructLayout:
     """The values a struct format packs or unpacks, one slot per value. A final `*`
     stands for the rest of the message: one value of bytes, of any length. One group may be
     repeated as the message says: `#(BH)`, counted by a field `#B` before it, or `*(BH)`,
-    until the message ends (see `Varying`)."""
+    until the message ends (see `Varying`). An unsigned integer code may be split into bit
+    fields, one value each, from its lowest bit up: `B{1,1,6}` (see `_bit_widths`)."""
     fmt, rest = split_rest(fmt)
     for at, ch in enumerate(fmt):  # struct reads only ASCII (its digits, not `١`), and no line breaks
         if not ch.isascii() or ch in "\n\r\x0b\x0c":
@@ -114,6 +136,7 @@ def struct_layout(fmt: str) -> StructLayout:
     written: list[str] = []  # the body with each group written out
     wire = 0  # the values the struct module packs so far
     count: tuple[int, str, int, int] | None = None  # the count field `#B`: its value's index, code, offset, slot
+    splits: list[tuple[int, str, tuple[int, ...]]] = []  # `StructLayout.bits`
     varying: tuple[int, str, int] | None = None  # the varying group: its place in `written`, its codes, its offset
     pos = 0
     while pos < len(body):
@@ -165,6 +188,10 @@ def struct_layout(fmt: str) -> StructLayout:
         m = _STRUCT_ITEM.match(body, pos)
         if re.match(r"\s*(\d+|#|\*)\s*\(", body[pos:]):
             raise TemplateError("a repeated group `N(codes)` is closed by `)`, and holds no group", offset)
+        if body[pos] == "{" and "}" not in body[pos:]:
+            raise TemplateError("bit fields `{...}` are closed by `}`", offset)
+        if body[pos] == "{":
+            raise TemplateError("bit fields `{...}` follow the unsigned integer code they split: `B{1,1,6}`", offset)
         if not m:
             raise TemplateError(f"`{body[pos]}` is not a struct format code", offset)
         count_text, code = m.groups()
@@ -176,6 +203,19 @@ def struct_layout(fmt: str) -> StructLayout:
             raise TemplateError("pointer code `P` has no meaning on a wire", code_at)
         if code in "nN" and order not in ("", "@"):
             raise TemplateError(f"`{code}` exists only in native mode (no byte-order prefix)", code_at)
+        split = _SPLIT.match(body, m.end())
+        if split is not None:
+            widths = _bit_widths(split, order, count_text, code, len(order))
+            low = 0
+            splits.append((len(slots), order + code, widths))
+            for width in widths:
+                slots.append(Slot(f"{code}{{{','.join(map(str, widths))}}}", Type.INT, 0, (1 << width) - 1,
+                                  bits=(low, width)))
+                low += width
+            written.append(code)
+            wire += 1
+            pos = split.end()
+            continue
         if code in _INT_CODES:
             bits = 8 * (_STANDARD_SIZES.get(code) or struct.calcsize(code))
             signed = code.islower()
@@ -216,7 +256,32 @@ def struct_layout(fmt: str) -> StructLayout:
         high = min(MAX_ARRAY, (1 << 8 * _STANDARD_SIZES[count[1]]) - 1) if count is not None else 0
         shape = Varying(order + "".join(written[:at]), codes, "".join(written[at:]),
                         *((count[0], high, count[1], count[3]) if count is not None else (-1,)))
-    return StructLayout(tuple(slots), size, native, rest, fixed, tuple(groups), shape)
+    return StructLayout(tuple(slots), size, native, rest, fixed, tuple(groups), shape, tuple(splits))
+
+
+def _bit_widths(split: re.Match[str], order: str, count: str, code: str, at: int) -> tuple[int, ...]:
+    """The widths of an integer code's bit fields `B{1,1,6}`: an unsigned code without a
+    count, two fields or more, every bit of the integer in one of them."""
+    offset = at + split.start(1) - 1
+    if count:
+        raise TemplateError(f"a code split into bit fields has no count: `{code}{{...}}`, not `{count}{code}{{...}}`",
+                            at + split.start() - len(count) - 1, len(count))
+    if code not in "BHILQ":
+        hint = f" (signed): use `{code.upper()}`" if code in "bhilq" else ""
+        raise TemplateError(f"bit fields split an unsigned integer code (`B`, `H`, `I`, `L` or `Q`), not `{code}`"
+                            f"{hint}", offset - 1)
+    words = split.group(1).replace(",", " ").split()
+    if not all(word.isdigit() for word in words) or len(words) < 2:
+        raise TemplateError("bit fields are two widths or more, from the lowest bit up: `B{1,1,6}`", offset,
+                            len(split.group(1)) + 2)
+    widths = tuple(int(word) for word in words)
+    size = 8 * struct.calcsize(order + code)
+    if 0 in widths or sum(widths) != size:
+        said = "a bit field is 1 bit wide or more" if 0 in widths else \
+            f"the bit fields of `{code}` take {sum(widths)} of its {size} bits: every bit is in one field " \
+            "(a reserved bit too)"
+        raise TemplateError(said, offset, len(split.group(1)) + 2)
+    return widths
 
 
 def _group(group: re.Match[str], at: int, slots: list[Slot], groups: list[tuple[int, int, int]]) -> str:
@@ -234,6 +299,8 @@ def _group(group: re.Match[str], at: int, slots: list[Slot], groups: list[tuple[
         raise TemplateError("a repeated group has one code or more", at + group.start(), len(group.group()))
     first = len(slots)
     for i, ch in codes:
+        if ch in "{}":
+            raise TemplateError("a repeated group holds no bit fields", offset + i)
         inner_layout = struct_layout("<" + ch) if ch.isascii() and ch.isalpha() or ch == "?" else None
         if inner_layout is None or len(inner_layout.slots) != 1 or inner_layout.slots[0].type is Type.STRING:
             raise TemplateError(f"`{ch}` cannot be repeated in a group: a group holds int, float and bool codes, "

@@ -568,6 +568,8 @@ class Primitive:
     timeout_ms: float | None = None  # how long its reply may take, instead of the robot's timeout
     expect: Expr | None = None  # a condition on the decoded reply that it must meet
     lines: tuple[LineLevel, ...] = ()  # modem lines set before the request, in this order
+    replies: int = 0  # `replies N`: N replies to its request, each value of them an array of N (0: one reply)
+    reply_frames: tuple[FrameUse, ...] = ()  # each reply's own frame, when `replies` gives them
 
     def case(self, c: ReplyCase) -> Primitive:
         """This primitive as it is when its table's key (or its reply's tag) has c.value: one decoding."""

@@ -353,6 +353,20 @@ class ReplyTimeout:
 
 
 @dataclass(frozen=True, slots=True)
+class Replies:
+    """`replies N`: N replies to one request (a sync read's status packets), each read and
+    decoded as one reply is; the post-actions read each value of them as an array of N. Or
+    `replies id in IDS frame status(id)` (`over` a constant array, or a range `over..high`):
+    a reply a value of the variable, each read through its own frame."""
+
+    over: Expr  # N, or what the variable goes over
+    span: Span = _span
+    var: Ident | None = None
+    high: Expr | None = None
+    frame: Framed | None = None
+
+
+@dataclass(frozen=True, slots=True)
 class Expect:
     """`expect COND`: a condition on the decoded reply (`out`) that a reply must meet."""
 
@@ -370,6 +384,7 @@ class Lines:
 
 PrimitiveClause = (
     On | Encoding | Decoding | Actions | Framed | SkipUnmatched | ReplyTable | ReplyTimeout | Expect | Lines
+    | Replies
 )
 
 

@@ -372,6 +372,15 @@ def _transformer_class():
         def reply_timeout(self, meta, c):
             return ast.ReplyTimeout(c[0], self.b.span(meta))
 
+        def replies(self, meta: object, c: list[ast.Expr]) -> ast.Replies:
+            return ast.Replies(c[0], self.b.span(meta))
+
+        def replies_each(self, meta: object, c: list[Any]) -> ast.Replies:
+            var, low, high, frame, args = c
+            span = self.b.span(meta)
+            framed = ast.Framed(self.b.ident(frame), args or (), span)
+            return ast.Replies(low, span, self.b.ident(var), high, framed)
+
         def expect(self, meta, c):
             return ast.Expect(c[0], self.b.span(meta))
 

@@ -321,7 +321,8 @@ _CONNECTION = (
 )  # fmt: skip
 _PRIMITIVE = (
     "name", "parameters", "parameterTypes", "parameterRanges", "parameterDefaults", "connection", "lines", "pack",
-    "format", "formatArgs", "unpack", "regex", "frame", "skipUnmatched", "replyTable", "timeout", "expect",
+    "format", "formatArgs", "unpack", "regex", "frame", "skipUnmatched", "replyTable", "timeout", "replies", "replyFrames",
+    "expect",
     "postActions", "doc",
 )  # fmt: skip
 _FRAME = ("name", "parameters", "parameterTypes", "parameterRanges", "parameterDefaults", "request", "reply",
@@ -800,6 +801,16 @@ class _Importer:
             wait = self.expr(m["timeout"], "float")
             if wait is not None:
                 clauses.append(ast.ReplyTimeout(ast.Duration(wait, "ms", wait.span), wait.span))
+        if "replyFrames" in m:
+            given = m.get("parameters")
+            each = self.reply_frames(m["replyFrames"], {item.value for item in given.items if isinstance(item, JString)}
+                                     if isinstance(given, JArray) else set())
+            if each is not None:
+                clauses.append(each)
+        elif "replies" in m:
+            count = self.expr(m["replies"], "int")
+            if count is not None:
+                clauses.append(ast.Replies(count, count.span))
         if "expect" in m:
             condition = self.reply_expr(m["expect"], "`expect`")
             if condition is not None:
@@ -1158,6 +1169,28 @@ class _Importer:
                 return None if None in values else ast.ArrayLit(tuple(values), span)  # type: ignore[arg-type]
         self.error(v.span, f"expected an expression (a number, true/false, a string or an array), found {_kind(v)}")
         return None
+
+    def reply_frames(self, v: JValue, params: set[str]) -> ast.Replies | None:
+        """`"replyFrames"`, each reply's frame written out, as `replies reply in 0..N-1 frame
+        NAME(args)`: an argument that differs between replies is `[a0, a1, ...][reply]`."""
+        objects = [f for f in self.array(v, "`replyFrames`") if isinstance(f, JObject)]
+        frames = [self.members(f, "a reply frame", ("name", "arguments")) for f in objects]
+        names = {self.name(obj, f, "a reply frame") for obj, f in zip(objects, frames)}
+        if len(frames) < 2 or len(names) != 1 or None in names:
+            self.error(v.span, "`replyFrames` names one frame, for each of two replies or more")
+            return None
+        frame = names.pop()
+        assert frame is not None
+        rows = [self.args(f.get("arguments"), self.frame_types.get(frame.text, ())) for f in frames]
+        if len({len(row) for row in rows}) != 1:
+            self.error(v.span, "every reply frame of `replyFrames` takes as many arguments")
+            return None
+        var = ast.Ident(next(n for n in ("reply", "reply_", "reply__", "reply_n") if n not in params), v.span)
+        args = [column[0] if len({print_expr(a) for a in column}) == 1
+                else ast.Index(ast.ArrayLit(column, v.span), ast.Ref(var.text, v.span), v.span)
+                for column in zip(*rows)]
+        framed = ast.Framed(frame, tuple(args), v.span)
+        return ast.Replies(ast.IntLit(0, v.span), v.span, var, ast.IntLit(len(rows) - 1, v.span), framed)
 
     def reply_expr(self, v: JValue, what: str) -> ast.Expr | None:
         """`"<expr>"` over the reply, called `__out__` as in post-actions."""

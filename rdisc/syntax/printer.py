@@ -329,6 +329,12 @@ def _primitive_clause(c: ast.PrimitiveClause) -> tuple[list[str], bool]:
             return [f"timeout {_duration(duration)}"], False
         case ast.Expect(condition):
             return [f"expect {print_expr(condition)}"], False
+        case ast.Replies(over, _, var, high, framed):
+            if var is None:
+                return [f"replies {print_expr(over)}"], False
+            values = print_expr(over) + ("" if high is None else f"..{print_expr(high)}")
+            through = "" if framed is None else f" frame {framed.frame.text}({_args(framed.args)})"
+            return [f"replies {var.text} in {values}{through}"], False
         case ast.Lines(settings):
             return ["lines " + ", ".join(_assign(a) for a in settings)], False
         case ast.ReplyTable(key, entries, _, tag):

@@ -4,7 +4,10 @@
 Why: RPLIDAR's descriptor keeps the response's length in the low 30 bits of a little-endian u32
 and the send mode in its high 2 (a `bits` part); pyrplidar's PyRPlidarResponse unpacks it with
 `& 0x3FFFFFFF` and `>> 30`, and its PyRPlidarCommand writes A5 CMD (and, with data, the size, the
-data and their XOR). Both the runtime and the generated driver are checked.
+data and their XOR). A scan node's fields are bit fields of its payload (`B{1,1,6}H{1,15}H`), read
+as PyRPlidarMeasurement reads them with shifts and masks; pyrplidar does not check the node's check
+bits, which the interface manual states (the start flag's inverse, a check bit of 1), and the
+description refuses a node that breaks them. Both the runtime and the generated driver are checked.
 """
 
 from __future__ import annotations
@@ -85,3 +88,35 @@ def test_nodes_follow_without_descriptors_and_their_check_bits_are_held(robot) -
     with pytest.raises(Exception, match=r"^node: "):
         robot_.call_primitive("node")
     assert port.written == b""
+
+
+def _node(start: int, quality: int, angle_q6: int, distance_q2: int, inverse: int | None = None,
+          check: int = 1) -> bytes:
+    """A scan node as the interface manual lays it out, the inverse flag right unless given."""
+    flags = start | (1 - start if inverse is None else inverse) << 1 | quality << 2
+    return struct.pack("<BHH", flags, check | angle_q6 << 1, distance_q2)
+
+
+NODES = [_node(0, 15, 320, 0x1234), _node(1, 0, 0, 0), _node(0, 63, (1 << 15) - 1, 0xFFFF),
+         _node(1, 47, 23040 - 1, 1), _node(0, 1, 1, 4000)]
+
+
+def test_node_fields_are_read_as_pyrplidar_reads_them(robot) -> None:  # type: ignore[no-untyped-def]
+    robot_, port = robot
+    port.script = b"".join(NODES)
+    for node in NODES:
+        robot_.call_primitive("node")
+        measured = protocol.PyRPlidarMeasurement(node)
+        assert (robot_.state["start"], robot_.state["quality"], robot_.state["angle"], robot_.state["distance"]) == (
+            measured.start_flag, measured.quality, measured.angle, measured.distance)
+
+
+@pytest.mark.parametrize("node", [_node(0, 15, 320, 8, inverse=0), _node(1, 15, 320, 8, inverse=1),
+                                  _node(1, 15, 320, 8, check=0)])
+def test_a_node_breaking_its_check_bits_is_refused(robot, node: bytes) -> None:  # type: ignore[no-untyped-def]
+    robot_, port = robot
+    port.script = node
+    with pytest.raises(Exception, match=r"^node: reply \(.*\) does not meet its `expect`$") as raised:
+        robot_.call_primitive("node")
+    assert type(raised.value).__name__ == "RdisProtocolError"
+    assert robot_.state["quality"] == 0

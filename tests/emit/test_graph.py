@@ -27,10 +27,15 @@ def test_dot_golden(name: str, rdisc, golden) -> None:
 
 
 def test_a_loop_of_calls_is_one_edge_counted(rdisc) -> None:
+    dot = rdisc("graph", "examples/maestro.rdis").stdout
+    assert '"interface:read_joints" -> "primitive:get_position" [label="calls ×6"];' in dot
+
+
+def test_replies_through_their_own_frame_are_one_edge(rdisc) -> None:
     dot = rdisc("graph", "examples/arm.rdis").stdout
-    assert '"interface:read_joints" -> "primitive:answer" [label="calls ×6"];' in dot
+    assert '"primitive:sync_read_present" -> "frame:status" [label="6 replies"];' in dot
     assert '"connection:bus" -> "interface:read_joints" [label="every tick (20 Hz)"];' in dot
-    assert '"primitive:answer" -> "state:present" [label="writes"];' in dot
+    assert '"primitive:sync_read_present" -> "state:present" [label="writes"];' in dot
     assert '"state:present" -> "output:joints" [label="read by"];' in dot
 
 

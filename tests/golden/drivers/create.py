@@ -34,7 +34,7 @@ import sys
 import threading
 import time
 from collections.abc import Callable, Iterator, Mapping, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any, Protocol
 
 Value = int | float | bool | str | bytes | tuple[Any, ...]  # an array is a tuple
@@ -342,7 +342,8 @@ class Length:
 class Bits:
     """One unsigned integer, packed with a one-integer struct format, holding fields from its
     lowest bit up: each (name, shift, width, the frame's field index or -1 for the length,
-    whose value is the payload's size plus `adjust`)."""
+    whose value is the payload's size plus `adjust`). A frame's `bits` part, and an integer of
+    a primitive's struct format split into bit fields (`Split`)."""
 
     __slots__ = ("adjust", "fields", "has_length", "most", "struct")
 
@@ -361,26 +362,33 @@ class Bits:
         self.most = (1 << widths[0]) - 1 - adjust if widths else math.inf
 
     def put(self, payload: bytes, fields: Sequence[int], chunks: list[bytes]) -> bytes:
-        value = 0
-        for name, shift, width, index in self.fields:
-            field = len(payload) + self.adjust if index < 0 else fields[index]
-            if not 0 <= field < 1 << width:
-                raise ValueError(f"field {name} is {field}, which does not fit its {width} bits (0 to {(1 << width) - 1})")
-            value |= field << shift
-        return self.struct.pack(value)
+        return self.struct.pack(self.join([len(payload) + self.adjust if index < 0 else fields[index]
+                                           for _, _, _, index in self.fields]))
+
+    def join(self, values: Sequence[int]) -> int:
+        """The integer holding `values`, one a field from the lowest bits up; a value that does
+        not fit its field is a ValueError."""
+        joined = 0
+        for (name, shift, width, _), value in zip(self.fields, values):
+            if not 0 <= value < 1 << width:
+                raise ValueError(f"field {name} is {value}, which does not fit its {width} bits (0 to {(1 << width) - 1})")
+            joined |= value << shift
+        return joined
+
+    def split(self, value: int) -> list[int]:
+        """The integer's fields, from its lowest bits up."""
+        return [(value >> shift) & ((1 << width) - 1) for _, shift, width, _ in self.fields]
 
     def stated(self, data: bytes | bytearray, at: int) -> int:
         """The payload's size its length field says, read at `at` in `data`."""
-        value: int = self.struct.unpack_from(data, at)[0]
-        shift, width = next((shift, width) for _, shift, width, index in self.fields if index < 0)
-        return ((value >> shift) & ((1 << width) - 1)) - self.adjust
+        values = self.split(self.struct.unpack_from(data, at)[0])
+        return next(value for value, (_, _, _, index) in zip(values, self.fields) if index < 0) - self.adjust
 
     def wrong(self, chunk: bytes, fields: Sequence[int]) -> str | None:
         """What is wrong with a reply's integer (a field that is not its request's value), if anything."""
-        value = self.struct.unpack(chunk)[0]
-        for name, shift, width, index in self.fields:
-            if index >= 0 and (value >> shift) & ((1 << width) - 1) != fields[index]:
-                return f"reply {name} is {(value >> shift) & ((1 << width) - 1)}, expected {fields[index]}"
+        for (name, _, _, index), value in zip(self.fields, self.split(self.struct.unpack(chunk)[0])):
+            if index >= 0 and value != fields[index]:
+                return f"reply {name} is {value}, expected {fields[index]}"
         return None
 
 
@@ -768,6 +776,34 @@ Varying = tuple[str, str, int]
 and the index of its count field among the values before it (-1: until the message ends)."""
 
 
+Split = tuple[int, str, tuple[int, ...]]
+"""An integer of a struct format split into bit fields (`B{1,1,6}`): the index of its first field
+among the values, its code with the byte order, its fields' widths from its lowest bit up."""
+
+
+def _splitters(splits: tuple[Split, ...]) -> tuple[tuple[int, Bits], ...]:
+    """Each split integer's first value and its `Bits`, whose fields are named by their values' indexes."""
+    return tuple((first, Bits(fmt, [(f"value {first + k}", width, k) for k, width in enumerate(widths)]))
+                 for first, fmt, widths in splits)
+
+
+def _joined(values: Sequence[Any], splitters: tuple[tuple[int, Bits], ...]) -> list[Any]:
+    """Values with each split integer's fields joined into it (a ValueError where one does not fit)."""
+    out = list(values)
+    for first, bits in reversed(splitters):
+        end = first + len(bits.fields)
+        out[first:end] = [bits.join(out[first:end])]
+    return out
+
+
+def _split(values: Sequence[Any], splitters: tuple[tuple[int, Bits], ...]) -> tuple[Any, ...]:
+    """Decoded values with each split integer in its fields."""
+    out = list(values)
+    for first, bits in splitters:  # in order: the integers before one are split already
+        out[first : first + 1] = bits.split(out[first])
+    return tuple(out)
+
+
 def _counted(groups: tuple[Group, ...], rounds: int) -> tuple[Group, ...]:
     """The groups with the varying one's count set."""
     return tuple((first, codes, count or rounds) for first, codes, count in groups)
@@ -812,20 +848,28 @@ class Pack:
     of repeated `groups` element by element, and, with `rest` (a format ending in `*`),
     the last value, bytes, appended as it is. With `varying`, `fixed` is the format before
     that group, repeated as many times as its arrays hold values, and its count field
-    computed."""
+    computed. The fields of each integer split into `bits` are joined into it first; the
+    other indexes count it as one value."""
 
-    __slots__ = ("groups", "rest", "sizes", "strings", "struct", "varying")
+    __slots__ = ("bits", "groups", "rest", "sizes", "splitters", "strings", "struct", "varying")
 
     def __init__(self, fixed: str, strings: tuple[int, ...] = (), rest: bool = False,
-                 groups: tuple[Group, ...] = (), varying: Varying | None = None) -> None:
+                 groups: tuple[Group, ...] = (), varying: Varying | None = None, bits: tuple[Split, ...] = ()) -> None:
         self.struct = struct.Struct(fixed)
         self.strings = strings
         self.rest = rest
         self.sizes = _string_sizes(fixed)
         self.groups = groups
         self.varying = varying
+        self.bits = bits
+        self.splitters = _splitters(bits)
 
     def encode(self, owner: str, values: Sequence[Value]) -> bytes:
+        if self.splitters:
+            try:
+                values = _joined(values, self.splitters)
+            except (ValueError, TypeError) as err:  # a value too wide for its bits
+                raise RdisValueError(f"{owner}: {err}") from None
         try:
             if self.varying is not None:
                 return self._varying(owner, values, self.varying)
@@ -888,22 +932,30 @@ class Unpack:
     """A reply decoded with a struct format: exactly its size or, with `rest`, its fixed
     part and then the rest as bytes; the values at `strings` as latin-1 text, each repeated
     group's values as one array a code. With `varying`, `fixed` is the format before that
-    group, repeated as many times as its count field says or as fill the reply. With `until`, an
-    unframed tagged reply's entry is read to those bytes (Firmata's sysex end), which are dropped."""
+    group, repeated as many times as its count field says or as fill the reply. Each integer
+    split into `bits` is then given as its fields. With `until`, an unframed tagged reply's
+    entry is read to those bytes (Firmata's sysex end), which are dropped."""
 
-    __slots__ = ("groups", "rest", "size", "strings", "struct", "until", "varying")
+    __slots__ = ("bits", "groups", "rest", "size", "splitters", "strings", "struct", "until", "varying")
 
     def __init__(self, fixed: str, strings: tuple[int, ...] = (), rest: bool = False,
-                 groups: tuple[Group, ...] = (), varying: Varying | None = None, until: bytes | None = None) -> None:
+                 groups: tuple[Group, ...] = (), varying: Varying | None = None, bits: tuple[Split, ...] = (),
+                 until: bytes | None = None) -> None:
         self.struct = struct.Struct(fixed)
         self.strings = strings
         self.rest = rest
         self.size = -1 if rest or varying else self.struct.size  # -1: the frame says where the reply ends
         self.groups = groups
         self.varying = varying
+        self.bits = bits
+        self.splitters = _splitters(bits)
         self.until = until
 
     def decode(self, owner: str, data: bytes) -> tuple[Value, ...]:
+        values = self._decode(owner, data)
+        return _split(values, self.splitters) if self.splitters else values
+
+    def _decode(self, owner: str, data: bytes) -> tuple[Value, ...]:
         layout = self.struct
         values: tuple[Any, ...]
         if self.varying is not None:
@@ -1026,11 +1078,14 @@ class Primitive:
     request: Request | None = None  # its parameters' values to the bytes, when it is only written (`_sent_at_once`)
     expect: Callable[[StateValues, Args, Sequence[Any]], object] | None = None  # a condition its decoded reply meets
     lines: Callable[[StateValues, Args], dict[str, Value]] | None = None  # "dtr"/"rts": levels, set before the request
+    replies: int = 0  # `replies N`: N replies to one request, collected value by value into arrays (0: one)
+    reply_frames: tuple[FrameUse, ...] = ()  # each reply's own frame (`replies id in IDS frame status(id)`)
     expects_reply: bool = field(init=False)
     framed_reply: bool = field(init=False)
     floats: tuple[int, ...] = field(init=False)
     ranged: tuple[int, ...] = field(init=False)
     tag_struct: struct.Struct | None = field(init=False)
+    answers: tuple[Primitive, ...] = field(init=False)  # for each of `reply_frames`: this plan, reading through it
 
     def __post_init__(self) -> None:
         reply = self.frame.frame.reply if self.frame is not None else None
@@ -1041,18 +1096,24 @@ class Primitive:
         object.__setattr__(self, "floats", _floats(self.params))
         object.__setattr__(self, "ranged", _ranged(self.params))
         object.__setattr__(self, "tag_struct", None if self.tag is None else struct.Struct(self.tag))
+        object.__setattr__(self, "answers", tuple(replace(self, frame=use, reply_frames=())
+                                                  for use in self.reply_frames))
         if not _sent_at_once(self):
             object.__setattr__(self, "request", None)
         elif self.request is None:
             object.__setattr__(self, "request", _composed_write(self))
 
 
+def _plain(encoder: Pack | Format | None) -> bool:
+    """Whether an encoder is one struct module's `pack` of its values as they are: no string,
+    rest or bit fields to prepare first."""
+    return isinstance(encoder, Pack) and not encoder.strings and not encoder.rest and not encoder.bits
+
+
 def _sent_at_once(plan: Primitive) -> bool:
     """Whether running the primitive is only packing its values, framing them and writing
     them: no reply, reply table, post-action, modem line or string in the way."""
-    encoder = plan.encoder
-    plain = isinstance(encoder, Pack) and not encoder.strings and not encoder.rest
-    return plain and not plan.expects_reply and plan.actions is None and plan.table is None and plan.lines is None
+    return _plain(plan.encoder) and not plan.expects_reply and plan.actions is None and plan.table is None and plan.lines is None
 
 
 def _composed_write(plan: Primitive) -> Request:
@@ -1158,8 +1219,7 @@ def _written_at_once(interface: Interface) -> Call | None:
     prim = call.target
     if not isinstance(prim, Primitive):
         return None
-    plain = isinstance(prim.encoder, Pack) and not prim.encoder.strings and not prim.encoder.rest
-    if not call.direct or call.delay or call.when or not plain or prim.expects_reply or prim.frame is not None:
+    if not call.direct or call.delay or call.when or not _plain(prim.encoder) or prim.expects_reply or prim.frame is not None:
         return None
     return call if prim.actions is None and prim.table is None and prim.lines is None and not prim.ranged else None
 
@@ -2105,7 +2165,10 @@ class Robot:
             if plan.timeout is not None:
                 io.timeout = plan.timeout
             reader.begin(wait)
-            plan, local, reply = self._read_reply(plan, link, reader, fields, request, wait, local)
+            if plan.replies:
+                reply = self._read_replies(plan, link, reader, fields, request, wait, local)
+            else:
+                plan, local, reply = self._read_reply(plan, link, reader, fields, request, wait, local)
         except RdisError as err:
             failed = err
         except Exception as err:  # noqa: BLE001 - whatever the port raises, it failed
@@ -2239,6 +2302,32 @@ class Robot:
                 if isinstance(err, RdisProtocolError):
                     raise
                 raise RdisProtocolError(f"{plan.name}: {err}") from None
+
+    def _read_replies(self, plan: Primitive, link: _Link, reader: Incoming, fields: list[Any], request: bytes,
+                      wait: float, local: Args) -> tuple[tuple[Any, ...], ...]:
+        """`replies N`: N replies read in turn as one is (each meeting its `expect`; through its own
+        frame, with its own field values, when `reply_frames` gives them), all within the one
+        deadline; value i of them all as one array, in the order they came."""
+        got: list[Sequence[Any]] = []
+        for n in range(plan.replies):
+            answer = plan.answers[n] if plan.answers else plan
+            if plan.answers:
+                use = answer.frame
+                assert use is not None
+                try:
+                    fields = use.frame.values(plan.name, use.args(self._state, local))
+                except (struct.error, *EVAL_ERRORS) as err:
+                    raise RdisValueError(f"{plan.name}: {err}") from None
+            try:
+                got.append(self._read_reply(answer, link, reader, fields, request, wait, local)[2])
+            except RdisTimeout:
+                if not n:
+                    raise
+                raise RdisTimeout(f"{plan.name}: {n} of {plan.replies} replies within {wait:g} s") from None
+            except RdisProtocolError as err:
+                raise RdisProtocolError(f"{plan.name}: reply {n + 1} of {plan.replies}: "
+                                        f"{str(err).removeprefix(plan.name + ': ')}") from None
+        return tuple(zip(*got))
 
     def _met(self, plan: Primitive, local: Args, reply: Sequence[Any]) -> Sequence[Any]:
         """The reply, when it meets the primitive's `expect` (else, like a reply that does not
