@@ -1563,7 +1563,8 @@ from connection name to port."""
 class Simulator(Protocol):
     """A simulated device in place of the ports (`Robot.open(sim=...)`; `rdisc.sim` gives one
     over MuJoCo): it takes what the host commands, by primitive and interface with their
-    parameters' values, and answers a primitive's reply with its values. In simulated time
+    parameters' values, and answers a primitive's reply with its values (`replies N`: a list
+    of N replies, each its values). In simulated time
     (`realtime` False) the robot runs no threads: its schedule and delays advance the simulation."""
 
     realtime: bool
@@ -2248,7 +2249,10 @@ class Robot:
                 self._notify_io("lines", plan.connection, _lines_text(levels))
             if request:
                 self._notify_io("write", plan.connection, request)
-        if plan.expects_reply:
+        if plan.replies:  # each meets its own expect, and value i of them all is one array
+            reply = tuple(zip(*(self._met(plan.answers[n] if plan.answers else plan, local, one)
+                                for n, one in enumerate(reply))))
+        elif plan.expects_reply:
             reply = self._met(plan, local, reply)
         if plan.actions is not None:
             self._assign(plan, local, reply)

@@ -132,6 +132,8 @@ class Simulation:
                 if positions is not None and len(local) != len(plan.params):  # a direct call's format values
                     local = [local[i] for i in positions]
                 self._command(commands, local)
+            if plan.replies:  # one reply a servo (a sync read): reply n tells element n
+                return [self._reply(plan, local, n) for n in range(plan.replies)]
             return self._reply(plan, local) if plan.expects_reply else ()
 
     def advance(self, seconds: float) -> None:
@@ -185,7 +187,9 @@ class Simulation:
             case m.Quantity.EFFORT:
                 return float(self.data.qfrc_actuator[j.dofadr[0]])
 
-    def _reply(self, plan: engine.Primitive, local: Sequence[Any]) -> Sequence[Any]:
+    def _reply(self, plan: engine.Primitive, local: Sequence[Any], n: int | None = None) -> Sequence[Any]:
+        """The values of a reply (reply `n` of `replies N`, whose `present = out[2]` stores
+        element n): zeros, the values `expect` pins, and what the measured joints read."""
         replies = self._replies[plan.name]
         key = self._keys.get(plan.name)
         reply = replies.get(None if key is None else local[key])
@@ -196,7 +200,7 @@ class Simulation:
             values[k] = value
         for s in reply.sensed:
             try:
-                index = None if s.element is None else s.element(local)
+                index = n if s.element is None else s.element(local)
             except (LookupError, *engine.EVAL_ERRORS):
                 continue
             measure = self._measures.get((s.state, index))
