@@ -45,10 +45,20 @@ class BodyRules:
         self.d = d
         self.typer = typer
         self.s = symbols
-        self.number = number
+        self.constant = number
         self.work = 0  # operations of the conversions sampled so far
 
     # -- constants of the body ---------------------------------------------------------
+
+    def number(self, expr: ast.Expr, what: str) -> float | None:
+        """A constant number as a finite float (`2 ** 1100` is an int no float holds)."""
+        value = self.constant(expr, what)
+        if value is None:
+            return None
+        finite = _finite(value)
+        if finite is None:
+            self.d.report("E204", expr.span, f"{what} must be a finite number")
+        return finite
 
     def vector(self, expr: ast.Expr, what: str) -> m.Vector | None:
         """Three constant finite numbers written as an array: `[0, 0, 0.05]`."""
@@ -67,10 +77,11 @@ class BodyRules:
             return None
         value = self.typer.constant(node)
         items = value if isinstance(value, tuple) else None
-        if items is None or not all(type(v) in (int, float) and math.isfinite(v) for v in items):
-            self.d.report("E602", expr.span, f"{what} must be constant numbers, written `[x, y, z]`")
+        floats = [_finite(v) if type(v) in (int, float) else None for v in items or ()]
+        if items is None or None in floats:
+            self.d.report("E602", expr.span, f"{what} must be constant finite numbers, written `[x, y, z]`")
             return None
-        return tuple(float(v) for v in items)
+        return tuple(floats)  # type: ignore[arg-type]  # no None in them
 
     def positive(self, expr: ast.Expr, what: str, code: str, zero: bool = False) -> float | None:
         value = self.number(expr, what)
@@ -455,6 +466,8 @@ class BodyRules:
                           help="convert it: `round(...)` to the nearest integer")
             return None
         for expr, assign in ((to_device, found["raw"]), (to_joint, found[name])):
+            if expr.type is None:  # a value of unknown type, reported where it comes from
+                return None
             if expr.type not in (Type.INT, Type.FLOAT):
                 self.d.report("E401", assign.value.span, f"a conversion gives a number, not {describe(expr.type)}")
                 return None
@@ -579,3 +592,12 @@ def principal_moments(t: tuple[float, float, float, float, float, float]) -> tup
     one = q + 2 * p * math.cos(phi)
     three = q + 2 * p * math.cos(phi + 2 * math.pi / 3)
     return one, 3 * q - one - three, three
+
+
+def _finite(value: float) -> float | None:
+    """`value` as a float, when it is a finite one."""
+    try:
+        number = float(value)
+    except OverflowError:
+        return None
+    return number if math.isfinite(number) else None

@@ -241,7 +241,7 @@ class _Checker:
             self.d.report("E204", p.low.span.to(p.high.span), "a length's range has int bounds, 0 or more")
             return None, None
         if low > high:
-            self.d.report("E204", p.low.span.to(p.high.span), f"the range {low:g}..{high:g} is empty")
+            self.d.report("E204", p.low.span.to(p.high.span), f"the range {shown(low)}..{shown(high)} is empty")
             return None, None
         return (int(low), int(high)) if type_ is not Type.FLOAT else (float(low), float(high))
 
@@ -413,6 +413,8 @@ class _Checker:
             if node.type is not Type.INT or not isinstance(value, int) or isinstance(value, bool):
                 if node.type is not None:
                     self.d.report("E204", member.value.span, "an enum member's value is a constant integer")
+                continue
+            if not self.typer.kept(value, member.value.span):  # 64 bits and a sign: it must go through JSON
                 continue
             members[member.name.text] = value
         return members

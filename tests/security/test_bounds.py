@@ -46,6 +46,11 @@ def test_constants_that_grow_are_refused_at_the_first_that_does_not_fit(tmp_path
     ("state f: float = 2 ** 1100",
      ("error[E405]: a 1101-bit integer is too large: integers are limited to 64 bits and a sign "
      "(-18446744073709551615..18446744073709551615)")),
+    ("enum Op { read = 2 ** 1100 }  # found by the fuzzer: its JSON did not read back",
+     ("error[E405]: a 1101-bit integer is too large: integers are limited to 64 bits and a sign "
+     "(-18446744073709551615..18446744073709551615)")),
+    ("primitive p(x: float in 2 ** 1100..0) pack \"<f\" (x)  # found by the fuzzer: an internal error",
+     "error[E204]: the range a 1101-bit integer..0 is empty"),
 ])
 def test_literals_and_folded_constants_stay_within_64_bits(tmp_path: Path, text: str, message: str) -> None:
     _, result = check_text(tmp_path, 'robot r { author "tests" }\n' + text + "\n")
