@@ -380,3 +380,14 @@ def test_the_arm_s_body_and_joint_states_reach_robot_state_publisher(ros_env: di
                 _stop(process)
             output = _stop(node)
         assert node.returncode == 0, output
+
+
+def test_a_joint_states_rate_that_is_no_rate_stops_the_node(ros_env: dict[str, str], tmp_path: Path) -> None:
+    node_file = tmp_path / "arm_node.py"
+    done = subprocess.run(["python", "-m", "rdisc", "emit-ros", str(REPO / "examples" / "arm.rdis"), "-o",
+                           str(node_file)], cwd=REPO, capture_output=True, text=True, check=False)
+    assert done.returncode == 0, done.stderr
+    refused = subprocess.run([PYTHON3, str(node_file), "_port:=/dev/null", "_joint_states_rate:=0"], env=ros_env,
+                             capture_output=True, text=True, check=False, timeout=60)
+    assert (refused.returncode, refused.stderr.splitlines()[-1:]) == (
+        2, ["arm_node.py: ~joint_states_rate is 0: give Hz, above 0, at most 1000"]), refused.stderr
