@@ -77,8 +77,8 @@ CASES = [
          urdf(*LINKS, joint("j1", "base", "a")),
          "Error:   Failed to find root link: Two root links found: [b] and [base]"),
     Case("a cycle beside the tree", f"joint j1: revolute a -> b {{ {MOVES} }}\njoint j2: revolute b -> a {{ {MOVES} }}\n",
-         [("E601", "d.rdis:5:7", "joint `j1` closes a cycle: links `b`, `a` hang from each other, not from the "
-                                 "root `base`")],
+         [("E601", "d.rdis:5:7", ("joint `j1` closes a cycle: links `b`, `a` hang from each other, not from the "
+                                  "root `base`"))],
          urdf(*LINKS, joint("j1", "a", "b"), joint("j2", "b", "a")),
          Tree("r", "base", []),  # a and b silently dropped
          (0, "Valid.")),  # and libsdformat takes it too
