@@ -4,7 +4,7 @@ The node is the generated Python driver with a ROS bridge as its program: a
 subscriber per domain input, a publisher per domain output, parameters `~port`
 (`~port_CONNECTION` for each of several connections), `~trace` and `~timeout`,
 device errors logged and published on `~errors`, and the terminate hooks run on
-shutdown.
+shutdown. With a body, the node sets `robot_description` and publishes `joint_states`.
 """
 
 from __future__ import annotations
@@ -12,7 +12,7 @@ from __future__ import annotations
 import argparse
 import os
 
-from rdisc.cli.output import compile_and_write
+from rdisc.cli.output import emit_body
 
 
 def add_parser(verbs) -> None:
@@ -27,5 +27,5 @@ def run(args: argparse.Namespace) -> int:
     from rdisc.emit.ros import to_ros
 
     name = os.path.basename(args.file)
-    return compile_and_write(args.file, args.output,
-                             lambda c: to_ros(c.model, name, sources=c.sources))  # type: ignore[arg-type]
+    return emit_body("emit-ros", args.file, args.output,  # a body XML cannot carry is refused as emit-urdf does
+                     lambda c: to_ros(c.model, name, sources=c.sources))  # type: ignore[arg-type]

@@ -78,13 +78,17 @@ _MODULE_NAMES = frozenset((
 ))
 
 
-def to_python(model: m.Model, source_name: str, *, sources: Mapping[str, SourceFile] | None = None) -> str:
+def to_python(model: m.Model, source_name: str, *, sources: Mapping[str, SourceFile] | None = None,
+              helpers: Iterable[str] = ()) -> str:
     """The driver module for `model`, generated from the file called `source_name`.
 
     `sources` (the files read while compiling, by path) give the `# file:line`
-    comments; without them the comments are left out.
+    comments; without them the comments are left out. `helpers`: expression helpers
+    written in too, for code appended to the driver (the ROS node's conversions).
     """
-    return _Driver(model, source_name, sources or {}).module()
+    driver = _Driver(model, source_name, sources or {})
+    driver.exprs.helpers.update(helpers)
+    return driver.module()
 
 
 def import_driver(description: str | os.PathLike[str], folder: str | os.PathLike[str],

@@ -8,6 +8,15 @@ the adapters' ROS messages and field paths taken from their `ros` annotations
 here: the node imports each message module and reads and writes each field by
 name in its own code, and nothing it does at run time looks a name up from text. The semantics are the driver's: one implementation, not
 a third copy. It runs on the system `python3`, where Debian's ROS packages live.
+
+A description with a body also gives the node its URDF (`rdisc emit-urdf`'s, a string
+constant set as `robot_description` unless `~publish_description` is false) and a
+`sensor_msgs/JointState` on `joint_states` for its measured joints, at `~joint_states_rate`
+Hz: a ROS timer reads the robot's state snapshot (immutable, so no lock) and converts
+each measured state variable with its transmission's `QUANTITY = ...`, compiled by the
+driver's expression compiler. A steady rate rather than one message per tick, as ros_control's
+joint_state_controller publishes: robot_state_publisher and RViz keep the transforms fresh
+while the arm stands still, and the engine needs no hook of its own for the node.
 """
 
 from __future__ import annotations
@@ -15,10 +24,12 @@ from __future__ import annotations
 from collections.abc import Mapping
 
 from rdisc.emit.python import class_name, to_python
-from rdisc.emit.python_expr import quoted
+from rdisc.emit.python_expr import Compiler, quoted
+from rdisc.emit.urdf import to_urdf
 from rdisc.emit.writer import Writer
 from rdisc.semantics import model as m
 from rdisc.semantics import ros
+from rdisc.semantics.model import Type
 from rdisc.source import SourceFile
 
 _MAIN = 'if __name__ == "__main__":\n    sys.exit(main())\n'
@@ -78,11 +89,13 @@ def _ros_set_yaw(q: Any, yaw: float) -> None:
 
 
 def to_ros(model: m.Model, source_name: str, *, sources: Mapping[str, SourceFile] | None = None) -> str:
-    """The ROS node for `model`: its generated driver, with the bridge as its main program."""
-    driver = to_python(model, source_name, sources=sources)
-    assert driver.endswith(_MAIN)
+    """The ROS node for `model`: its generated driver, with the bridge as its main program (a
+    BodyError if its body has what XML cannot carry)."""
     w = Writer()
-    _Bridge(model).write(w)
+    bridge = _Bridge(model, source_name)
+    bridge.write(w)  # first: the driver carries the helpers its conversions use
+    driver = to_python(model, source_name, sources=sources, helpers=bridge.exprs.helpers)
+    assert driver.endswith(_MAIN)
     return (driver[: -len(_MAIN)] + BRIDGE_HELPERS + "\n\n\n" + w.text().lstrip("\n") + "\n\n"
             + 'if __name__ == "__main__":\n    sys.exit(ros_main())\n')
 
@@ -93,8 +106,11 @@ _IGNORE = "  # type: ignore[import-not-found, import-untyped, unused-ignore]"  #
 class _Bridge:
     """The node's conversions and main, for the inputs and outputs whose adapter names a message."""
 
-    def __init__(self, model: m.Model) -> None:
+    def __init__(self, model: m.Model, source_name: str) -> None:
         self.model = model
+        self.source_name = source_name
+        self.exprs = Compiler()
+        self.measured = _measured(model)
         self.inputs = [(i, model.adapters[i.adapter]) for i in model.inputs.values()
                        if model.adapters[i.adapter].ros is not None]
         self.outputs = [(o, model.adapters[o.adapter]) for o in model.outputs.values()
@@ -126,12 +142,52 @@ class _Bridge:
                 w.line(f'"""A {adapter.ros} filled with the fields of output {o.name}."""')
                 for f in adapter.fields:
                     w.line(_write("msg", f.ros or f.name, f"contents[{quoted(f.name)}]"))
+        if self.model.links:
+            w.blank(2)
+            self.body(w)
         w.blank(2)
         self.main(w)
+
+    def body(self, w: Writer) -> None:
+        """The URDF as a constant, and the measured joints' names and their conversion from the state."""
+        w.line(f"# The body, as `rdisc emit-urdf {self.source_name}` writes it: the robot_description parameter.")
+        w.line("_ROS_DESCRIPTION = (")
+        with w.indented():
+            w.lines([quoted(line) for line in to_urdf(self.model, self.source_name).splitlines(keepends=True)])
+        w.line(")")
+        if not self.measured:
+            return
+        w.lines(["_ROS_JOINTS = (", *(f"    {quoted(joint)}," for joint, _ in self.measured), ")"])
+        w.blank(2)
+        quantities = [q for q in m.Quantity if any(q in measures for _, measures in self.measured)]
+        with w.block("def _ros_joint_states(state: StateValues) -> tuple[list[float], list[float], list[float]]:"):
+            w.line('"""Position, velocity and effort of each of _ROS_JOINTS, read from the state variables that')
+            w.line("measure them through their transmissions' conversions (`position = ...` of `raw`). A quantity")
+            w.line('no joint measures is an empty list; one that another joint measures is NaN there."""')
+            w.line("return (")
+            with w.indented():
+                for quantity in m.Quantity:
+                    if quantity not in quantities:
+                        w.line(f"[],  # no {quantity.value}")
+                        continue
+                    w.line("[")
+                    with w.indented():
+                        for joint, measures in self.measured:
+                            binding = measures.get(quantity)
+                            if binding is None:
+                                w.line(f"math.nan,  # {joint}")
+                                continue
+                            raw = f"state[{quoted(binding.target)}]"
+                            raw = raw if binding.index is None else f"{raw}[{binding.index}]"
+                            w.line(f"{self.exprs.bound(binding.to_joint, Type.FLOAT, {'raw': raw}).text},")
+                    w.line("],")
+            w.line(")")
 
     def main(self, w: Writer) -> None:
         adapters = [a for _, a in self.inputs] + [a for _, a in self.outputs]
         named = [(package, message) for package, _, message in (a.ros.partition("/") for a in adapters if a.ros)]
+        if self.measured:
+            named.append(("sensor_msgs", "JointState"))
         messages = list(dict.fromkeys([*named, ("std_msgs", "String")]))  # as first named; ~errors' last
         with w.block("def ros_main() -> int:"):
             w.line('"""Run the robot as a ROS node until ROS shuts it down; the terminate hooks run then."""')
@@ -145,10 +201,20 @@ class _Bridge:
             with w.block("except ImportError as err:"):
                 w.line('_ros_refuse([f"ROS 1 does not load here: {err}"])')
             w.blank()
-            w.lines([
-                "rospy.init_node(ROBOT)",
-                "ros_signal = signal.getsignal(signal.SIGINT)  # rospy's: shuts the node down, logging as it goes",
-            ])
+            w.line("rospy.init_node(ROBOT)")
+            if self.model.links:
+                w.lines([
+                    'if rospy.get_param("~publish_description", True):',
+                    '    rospy.set_param("robot_description", _ROS_DESCRIPTION)',
+                ])
+            if self.measured:
+                w.lines([
+                    f'joint_states_rate = rospy.get_param("~joint_states_rate", {_rate(self.model)!r})',
+                    "if isinstance(joint_states_rate, bool) or not isinstance(joint_states_rate, (int, float)) \\",
+                    "        or not 0 < joint_states_rate <= 1000:",
+                    '    _ros_refuse([f"~joint_states_rate is {joint_states_rate!r}: give Hz, above 0, at most 1000"])',
+                ])
+            w.line("ros_signal = signal.getsignal(signal.SIGINT)  # rospy's: shuts the node down, logging as it goes")
             w.blank()
             with w.block("def first_signal(signum: int, frame: Any) -> None:"):
                 w.line('"""rospy\'s handler, once: a burst of signals would re-enter its logging mid-write."""')
@@ -170,6 +236,8 @@ class _Bridge:
                     'ports[connection.name] = str(rospy.get_param(name, rospy.get_param("~port", default)))',
                 ])
             w.line('errors = rospy.Publisher("~errors", std_msgs_msg.String, queue_size=10)')
+            if self.measured:
+                w.line('joint_states = rospy.Publisher("joint_states", sensor_msgs_msg.JointState, queue_size=10)')
             w.line("publishers: dict[str, tuple[Any, Any, Callable[[Any, dict[str, Any]], None]]] = {")
             with w.indented():
                 for o, adapter in self.outputs:
@@ -214,6 +282,25 @@ class _Bridge:
                 ])
             w.line("rospy.on_shutdown(robot.close)")
             w.blank()
+            if self.measured:
+                with w.block("def publish_joint_states(event: Any) -> None:"):
+                    w.line('"""The measured joints as the robot\'s state snapshot has them now, stamped now."""')
+                    with w.block("try:"):
+                        w.lines([
+                            "position, velocity, effort = _ros_joint_states(robot.state)",
+                            "msg = sensor_msgs_msg.JointState(",
+                            "    name=list(_ROS_JOINTS), position=position, velocity=velocity, effort=effort)",
+                            "msg.header.stamp = rospy.Time.now()",
+                            "joint_states.publish(msg)",
+                        ])
+                    w.lines([
+                        "except Exception as err:  # noqa: BLE001 - reported, and the node keeps publishing",
+                        "    if not rospy.is_shutdown():  # a publisher closed by the shutdown is no error",
+                        "        on_error(err)",
+                    ])
+                w.blank()
+                w.line("rospy.Timer(rospy.Duration(1.0 / joint_states_rate), publish_joint_states)")
+                w.blank()
             with w.block("def subscriber(name: str, read: Callable[[Any], dict[str, Any]]) -> Callable[[Any], None]:"):
                 with w.block("def received(msg: Any) -> None:"):
                     with w.block("try:"):
@@ -227,6 +314,23 @@ class _Bridge:
                 w.line(f"                 subscriber({quoted(i.name)}, _ros_read_{_name(i.name)}), queue_size=10)")
             w.line("rospy.spin()")
             w.line("return 0")
+
+
+def _measured(model: m.Model) -> list[tuple[str, dict[m.Quantity, m.Binding]]]:
+    """Each joint a transmission measures, in the body's order, with the first measure of each quantity."""
+    measures: dict[str, dict[m.Quantity, m.Binding]] = {}
+    for transmission in model.transmissions.values():
+        for binding in transmission.measures:
+            measures.setdefault(transmission.joint, {}).setdefault(binding.quantity, binding)
+    return [(joint, measures[joint]) for joint in model.joints if joint in measures]
+
+
+def _rate(model: m.Model) -> float:
+    """The default of `~joint_states_rate`: the fastest schedule that runs periodic interfaces
+    (the state changes no faster), else joint_state_publisher's 10 Hz."""
+    owners = {model.owner(i) for i in model.interfaces.values() if i.periodic}
+    rates = [c.frequency_hz for name, c in model.connections.items() if name in owners and c.frequency_hz > 0]
+    return float(max(rates, default=10.0))
 
 
 def _name(name: str) -> str:

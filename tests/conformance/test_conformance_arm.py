@@ -1,13 +1,13 @@
 """examples/arm.rdis against ROBOTIS's published dynamixel-sdk, byte for byte, over real ptys.
 
-An emulated bus of six X-series servos (protocol 2.0) sits on a pty. dynamixel-sdk's
+An emulated bus of six X-series servos (protocol 2.0, tests/devices/dynamixel.py) sits on a pty. dynamixel-sdk's
 GroupSyncWrite and GroupSyncRead talk to it, and so do the rdisc runtime and the driver
 `rdisc emit-python` generates: every packet they write must be the SDK's, and the positions
 they read from the same status packets must be the ones the SDK's getData returns.
 
-The bus answers from the protocol as the e-Manual states it, with its own CRC-16/BUYPASS
-(`_crc`, bit by bit) and byte stuffing, not with rdisc's or the SDK's code; one servo's present
-position is a multi-turn value whose bytes hold FF FF FD, so its status packet is stuffed.
+The bus answers from the protocol as the e-Manual states it, not with rdisc's or the SDK's
+code; one servo's present position is a multi-turn value whose bytes hold FF FF FD, so its
+status packet is stuffed.
 """
 
 from __future__ import annotations
@@ -24,72 +24,15 @@ import pytest
 pytest.importorskip("dynamixel_sdk")
 
 import dynamixel_sdk as sdk
-from devices import PtyDevice
+from devices.dynamixel import IDS, PRESENT, XBus, status
 
 from rdisc.emit.python import import_driver
 from rdisc.runtime import load
 
 ROOT = Path(__file__).resolve().parents[2]
 DESCRIPTION = ROOT / "examples" / "arm.rdis"
-IDS = [1, 2, 3, 4, 5, 6]
-GOAL, PRESENT, TORQUE = 116, 132, 64
+GOAL, TORQUE = 116, 64
 TORQUE_PACKET = 26  # bytes of the sync write of six 1-byte values the startup hook sends
-STUFFED = -33554688  # 0xFDFFFF00 as int32: little-endian 00 FF FF FD
-
-
-def _crc(data: bytes) -> int:
-    """CRC-16/BUYPASS (poly 0x8005, init 0, no reflection): the e-Manual's packet CRC."""
-    crc = 0
-    for byte in data:
-        crc ^= byte << 8
-        for _ in range(8):
-            crc = ((crc << 1) ^ 0x8005) if crc & 0x8000 else crc << 1
-            crc &= 0xFFFF
-    return crc
-
-
-def _stuffed(body: bytes) -> bytes:
-    """An FD after every FF FF FD past the header."""
-    out = bytearray(body[:4])
-    for byte in body[4:]:
-        out.append(byte)
-        if out[-3:] == b"\xff\xff\xfd" and len(out) > 4 + 2:
-            out.append(0xFD)
-    return bytes(out)
-
-
-def status(dxl_id: int, error: int, data: bytes) -> bytes:
-    """A status packet: FF FF FD 00 ID LEN 55 ERR DATA CRC, LEN and CRC over the stuffed packet."""
-    params = _stuffed(b"\xff\xff\xfd\x00" + bytes([dxl_id, 0, 0, 0x55, error]) + data)[9:]
-    body = b"\xff\xff\xfd\x00" + bytes([dxl_id]) + struct.pack("<H", len(params) + 4) + b"\x55" + bytes([error]) + params
-    return body + struct.pack("<H", _crc(body))
-
-
-class XBus(PtyDevice):
-    """Six X-series servos on one bus: a sync read is answered by each, in the order asked."""
-
-    def __init__(self) -> None:
-        super().__init__()
-        self.present = {1: 0, 2: 1024, 3: 2048, 4: 3071, 5: 4095, 6: STUFFED}
-        self.errors = {i: 0 for i in IDS}
-        self.errors[4] = 0x80  # a hardware alert: reported, the data still valid
-        self._pending = bytearray()
-
-    def handle(self, data: bytes) -> None:
-        self._pending += data
-        while len(self._pending) >= 10:
-            size = struct.unpack_from("<H", self._pending, 5)[0] + 7
-            if len(self._pending) < size:
-                return
-            packet, self._pending = bytes(self._pending[:size]), self._pending[size:]
-            if packet[7] == 0x82:  # sync read: start, length, IDs
-                start, length = struct.unpack_from("<HH", packet, 8)
-                assert (start, length) == (PRESENT, 4)
-                for dxl_id in packet[12:-2]:
-                    self.send(status(dxl_id, self.errors[dxl_id], struct.pack("<i", self.present[dxl_id])))
-
-    def _cleared(self) -> None:
-        self._pending.clear()
 
 
 @pytest.fixture

@@ -2,10 +2,13 @@
 bridge in place of its command line, it imports the adapters' ROS messages and reads
 and writes their fields in its own code (nothing is looked up from a string when it
 runs), and it is clean for ruff and `mypy --strict`. (tests/ros runs it against a
-real roscore.)"""
+real roscore.) A description with a body gives the node its URDF and joint states."""
 
 from __future__ import annotations
 
+import ast
+import importlib.util
+import math
 import subprocess
 import sys
 from pathlib import Path
@@ -15,6 +18,7 @@ import pytest
 from rdisc.compile import compile_path
 from rdisc.emit.python import to_python
 from rdisc.emit.ros import to_ros
+from rdisc.emit.urdf import to_urdf
 
 REPO = Path(__file__).resolve().parents[2]
 
@@ -125,3 +129,102 @@ def test_without_ros_the_node_says_what_is_missing(tmp_path: Path) -> None:
         "create_node.py: sensor_msgs/Range is not a ROS message here: install its package",
         "create_node.py: std_msgs/String is not a ROS message here: install its package",
     ]
+
+
+def _description_constant(node: str) -> str:
+    """The value of the node's `_ROS_DESCRIPTION`, read as Python reads it."""
+    (value,) = [n.value for n in ast.parse(node).body
+                if isinstance(n, ast.Assign) and [ast.unparse(t) for t in n.targets] == ["_ROS_DESCRIPTION"]]
+    text = ast.literal_eval(value)
+    assert isinstance(text, str)
+    return text
+
+
+def test_a_body_gives_the_node_its_urdf_and_joint_states() -> None:
+    """The arm's node carries `rdisc emit-urdf`'s URDF, sets it as robot_description unless told
+    not to, and publishes each measured joint's position, converted from its servo's state."""
+    compilation = compile_path(str(REPO / "examples" / "arm.rdis"))
+    assert compilation.model is not None
+    node = _node("arm")[0]
+    assert _description_constant(node) == to_urdf(compilation.model, "arm.rdis")
+    assert ('    rospy.init_node(ROBOT)\n'
+            '    if rospy.get_param("~publish_description", True):\n'
+            '        rospy.set_param("robot_description", _ROS_DESCRIPTION)\n'
+            '    joint_states_rate = rospy.get_param("~joint_states_rate", 20.0)\n') in node  # the bus's 20 Hz
+    conversion = "(state[\"present\"][{}] - 2048) / 651.8986469044033,"
+    assert ('_ROS_JOINTS = (\n    "waist",\n    "shoulder",\n    "elbow",\n    "wrist_pitch",\n    "wrist_roll",\n'
+            '    "gripper",\n)\n') in node
+    assert ("    return (\n        [\n" + "".join(f"            {conversion.format(i)}\n" for i in range(6))
+            + "        ],\n        [],  # no velocity\n        [],  # no effort\n    )\n") in node
+    assert '    joint_states = rospy.Publisher("joint_states", sensor_msgs_msg.JointState, queue_size=10)\n' in node
+    assert "    rospy.Timer(rospy.Duration(1.0 / joint_states_rate), publish_joint_states)\n" in node
+
+
+MIXED = """\
+robot mixer { author "tests" }
+state ticks: int = 0
+state speed: float = 0.0
+state torque: int[2]
+connection c: serial { baud 9600 }
+primitive poll() on c pack "B" (1) unpack ">hfhh" { ticks = out[0]  speed = out[1]  torque = [out[2], out[3]] }
+link base {}
+link wheel {}
+link arm {}
+link idle {}
+joint spin: continuous base -> wheel { axis [0, 1, 0] velocity 10 effort 1 }
+joint lift: revolute base -> arm { limit -1..1 velocity 2 effort 3 }
+joint rest: revolute base -> idle { limit -1..1 velocity 2 effort 3 }
+transmission drive: spin { measure velocity from speed { raw = velocity / 2.5  velocity = raw * 2.5 } }
+transmission hoist: lift {
+    measure position from ticks { raw = round(position * 100)  position = raw / 100 }
+    measure effort from torque[1] { raw = round(effort * 10)  effort = raw / 10 }
+}
+"""
+
+
+def _mixed_node(tmp_path: Path, text: str = MIXED) -> Path:
+    source = tmp_path / "mixer.rdis"
+    source.write_text(text, encoding="utf-8")
+    node = tmp_path / "mixer_node.py"
+    done = subprocess.run([sys.executable, "-m", "rdisc", "emit-ros", str(source), "-o", str(node)],
+                          capture_output=True, text=True, check=False)
+    assert done.returncode == 0, done.stderr
+    return node
+
+
+def test_joint_states_convert_what_each_joint_measures(tmp_path: Path) -> None:
+    """Each measured joint once, in the body's order (`rest` measures nothing: left out); each
+    quantity some joint measures is a list over all of them, NaN where a joint does not measure
+    it; the conversions run as compiled, with the helper one of them needs (`_mul`) in the node."""
+    path = _mixed_node(tmp_path)
+    spec = importlib.util.spec_from_file_location("mixer_node", path)
+    assert spec is not None and spec.loader is not None
+    module = importlib.util.module_from_spec(spec)
+    sys.modules["mixer_node"] = module  # dataclasses look their module up by name
+    try:
+        spec.loader.exec_module(module)  # the node imports rospy only in ros_main
+    finally:
+        del sys.modules["mixer_node"]
+    assert module._ROS_JOINTS == ("spin", "lift")
+    position, velocity, effort = module._ros_joint_states({"ticks": -157, "speed": 1.5, "torque": (7, -23)})
+    assert (math.isnan(position[0]), position[1]) == (True, -1.57)
+    assert (velocity[0], math.isnan(velocity[1])) == (3.75, True)
+    assert (math.isnan(effort[0]), effort[1]) == (True, -2.3)
+    text = path.read_text(encoding="utf-8")
+    assert "            _mul(state[\"speed\"], 2.5),\n" in text
+    assert 'rospy.get_param("~joint_states_rate", 10.0)' in text  # no periodic work: joint_state_publisher's rate
+
+
+def test_a_body_measuring_nothing_gives_only_the_description(tmp_path: Path) -> None:
+    node = _mixed_node(tmp_path, MIXED[: MIXED.index("transmission")]).read_text(encoding="utf-8")
+    assert 'rospy.set_param("robot_description", _ROS_DESCRIPTION)' in node
+    assert "joint_states" not in node and "_ros_joint_states" not in node
+
+
+def test_the_node_of_a_body_is_clean_for_ruff_and_mypy_strict(tmp_path: Path) -> None:
+    path = _mixed_node(tmp_path)
+    for command in (["ruff", "check", "--isolated", "--no-cache"],
+                    ["mypy", "--strict", "--no-error-summary", "--cache-dir", str(tmp_path / "cache")]):
+        done = subprocess.run([sys.executable, "-m", *command, str(path)], capture_output=True, text=True,
+                              check=False, cwd=tmp_path)
+        assert done.returncode == 0, done.stdout + done.stderr

@@ -1,5 +1,5 @@
-"""The ROS bridge against a real roscore: `rdisc emit-ros` of the Create, run by the
-system python3 against an emulated Create on a pseudo-terminal.
+"""The ROS bridge against a real roscore: `rdisc emit-ros` of the Create (and of the arm,
+for the body), run by the system python3 against an emulated device on a pseudo-terminal.
 
 Twists published on `set_velocity` must reach the device as the "Expected" bytes of
 thesis Table 4.3; a bumper hit must appear on `detect_bump`; shutting the node down
@@ -10,6 +10,8 @@ started here is stopped here.
 
 from __future__ import annotations
 
+import json
+import math
 import os
 import select
 import shutil
@@ -20,11 +22,14 @@ import termios
 import time
 from collections.abc import Callable, Iterator
 from pathlib import Path
+from typing import Any
 
 import pytest
 
+from rdisc.compile import compile_path
 from tests.devices import CreateEmulator
 from tests.devices.create import TABLE_4_3
+from tests.devices.dynamixel import IDS, XBus
 
 HERE = Path(__file__).resolve().parent
 REPO = HERE.parents[1]
@@ -283,3 +288,106 @@ def test_settings_are_the_node_s_private_parameters(ros_env: dict[str, str], tmp
         _stop(node)
         os.close(master)
         os.close(slave)
+
+
+def _listen(env: dict[str, str], what: str) -> subprocess.Popen:
+    """tests/ros/listen.py on `joint_states` or `tf`: a JSON line a message, for a minute at most."""
+    return subprocess.Popen([PYTHON3, str(HERE / "listen.py"), what], env=env, stdout=subprocess.PIPE, text=True)
+
+
+def _until(listener: subprocess.Popen, wanted: Callable[[dict[str, Any]], bool]) -> list[dict[str, Any]]:
+    """The messages `listener` printed, up to the first that is `wanted`."""
+    assert listener.stdout is not None
+    seen: list[dict[str, Any]] = []
+    for line in listener.stdout:
+        seen.append(json.loads(line))
+        if wanted(seen[-1]):
+            return seen
+    raise AssertionError(f"not among the {len(seen)} messages; the last: {seen[-3:]}")
+
+
+def _quaternion(axis: tuple[float, float, float], angle: float) -> list[float]:
+    """The rotation by `angle` about the unit `axis`, as (x, y, z, w)."""
+    s = math.sin(angle / 2)
+    return [axis[0] * s, axis[1] * s, axis[2] * s, math.cos(angle / 2)]
+
+
+ROBOT_STATE_PUBLISHER = Path("/usr/lib/robot_state_publisher/robot_state_publisher")
+
+
+def test_the_arm_s_body_and_joint_states_reach_robot_state_publisher(ros_env: dict[str, str], tmp_path: Path) -> None:
+    """examples/arm.rdis's node against six emulated servos: it sets robot_description to its
+    URDF and publishes the positions the servos report on joint_states, stamped, under the
+    joints' names; ROS's own robot_state_publisher turns both into the transforms of the arm
+    (each joint's origin, turned about its axis by the servo's angle)."""
+    tf_here = subprocess.run([PYTHON3, "-c", "import tf2_msgs.msg"], capture_output=True, check=False).returncode == 0
+    if not (ROBOT_STATE_PUBLISHER.exists() and tf_here) and os.environ.get("CI") != "true":
+        pytest.skip("robot_state_publisher is not installed (apt-get install ros-robot-state-publisher "
+                    "python3-tf2-msgs)")
+    arm = REPO / "examples" / "arm.rdis"
+    node_file = tmp_path / "arm_node.py"
+    done = subprocess.run(["python", "-m", "rdisc", "emit-ros", str(arm), "-o", str(node_file)], cwd=REPO,
+                          capture_output=True, text=True, check=False)
+    assert done.returncode == 0, done.stderr
+    present = {1: 2048, 2: 1024, 3: 3072, 4: 2560, 5: 0, 6: 4095}  # the centre, -90°, +90°, +45°, -180°, ~+180°
+    angles = [(present[i] - 2048) * 2 * math.pi / 4096 for i in IDS]
+    names = ["waist", "shoulder", "elbow", "wrist_pitch", "wrist_roll", "gripper"]
+    with XBus() as bus:
+        bus.present = present
+        node = subprocess.Popen([PYTHON3, str(node_file), f"_port:={bus.port}"], env=ros_env, stdout=subprocess.PIPE,
+                                stderr=subprocess.STDOUT, text=True)
+        listeners = [_listen(ros_env, "joint_states"), _listen(ros_env, "tf")]
+        publisher: subprocess.Popen | None = None
+        try:
+            seen = _until(listeners[0], lambda m: m["position"] == pytest.approx(angles, abs=1e-12))
+            # robot_description was set before the node opened its port: robot_state_publisher reads it as it starts
+            publisher = subprocess.Popen([str(ROBOT_STATE_PUBLISHER)], env=ros_env, stdout=subprocess.PIPE,
+                                         stderr=subprocess.STDOUT, text=True)
+            assert {(tuple(m["name"]), len(m["position"]), tuple(m["velocity"]), tuple(m["effort"]))
+                    for m in seen} == {(tuple(names), 6, (), ())}  # before the first read: the state's defaults
+            stamps = [m["stamp"] for m in seen]
+            assert stamps[0] > 0 and stamps == sorted(stamps)
+
+            got = subprocess.run(["rosparam", "get", "/robot_description"], env=ros_env, capture_output=True,
+                                 text=True, check=True, timeout=60)
+            urdf = subprocess.run([PYTHON3, "-c", "import sys, yaml; sys.stdout.write(yaml.safe_load(sys.stdin))"],
+                                  input=got.stdout, capture_output=True, text=True, check=True).stdout
+            emitted = subprocess.run(["python", "-m", "rdisc", "emit-urdf", str(arm)], cwd=REPO, capture_output=True,
+                                     text=True, check=True).stdout
+            assert urdf == emitted
+            urchin = pytest.importorskip("urchin")
+            (tmp_path / "arm.urdf").write_text(urdf, encoding="utf-8")
+            robot = urchin.URDF.load(str(tmp_path / "arm.urdf"), lazy_load_meshes=True)
+            assert (len(robot.links), [j.name for j in robot.joints]) == (7, names)
+
+            model = compile_path(str(arm)).model
+            assert model is not None
+            expected = {joint.child: (joint.parent, list(joint.origin.xyz), _quaternion(joint.axis, angle))
+                        for joint, angle in zip(model.joints.values(), angles)}
+            transforms: dict[str, tuple[str, list[float]]] = {}  # each child's, once turned by its angle
+
+            def all_there(t: dict[str, Any]) -> bool:
+                turn = expected[t["child"]][2] if t["child"] in expected else None
+                if turn is not None and any(t["rotation"] == pytest.approx([sign * v for v in turn], abs=1e-9)
+                                            for sign in (1, -1)):  # q and -q are the same rotation
+                    transforms[t["child"]] = (t["parent"], t["translation"])
+                return len(transforms) == len(expected)
+
+            _until(listeners[1], all_there)
+            assert transforms == {child: (parent, pytest.approx(xyz)) for child, (parent, xyz, _) in expected.items()}
+        finally:
+            for process in (*([publisher] if publisher else []), *listeners):
+                _stop(process)
+            output = _stop(node)
+        assert node.returncode == 0, output
+
+
+def test_a_joint_states_rate_that_is_no_rate_stops_the_node(ros_env: dict[str, str], tmp_path: Path) -> None:
+    node_file = tmp_path / "arm_node.py"
+    done = subprocess.run(["python", "-m", "rdisc", "emit-ros", str(REPO / "examples" / "arm.rdis"), "-o",
+                           str(node_file)], cwd=REPO, capture_output=True, text=True, check=False)
+    assert done.returncode == 0, done.stderr
+    refused = subprocess.run([PYTHON3, str(node_file), "_port:=/dev/null", "_joint_states_rate:=0"], env=ros_env,
+                             capture_output=True, text=True, check=False, timeout=60)
+    assert (refused.returncode, refused.stderr.splitlines()[-1:]) == (
+        2, ["arm_node.py: ~joint_states_rate is 0: give Hz, above 0, at most 1000"]), refused.stderr

@@ -1,0 +1,72 @@
+"""Six emulated Dynamixel X-series servos (protocol 2.0, ROBOTIS e-Manual) on one pty bus.
+
+The bus answers from the protocol as the e-Manual states it, with its own CRC-16/BUYPASS
+(`_crc`, bit by bit) and byte stuffing, not with rdisc's or dynamixel-sdk's code: a sync
+read of Present Position is answered by each servo in the order asked, with its status
+packet; everything else (sync writes) is taken without an answer, as the servos do.
+"""
+
+from __future__ import annotations
+
+import struct
+
+from . import PtyDevice
+
+IDS = [1, 2, 3, 4, 5, 6]
+PRESENT = 132  # Present Position's address
+STUFFED = -33554688  # 0xFDFFFF00 as int32: little-endian 00 FF FF FD
+
+
+def _crc(data: bytes) -> int:
+    """CRC-16/BUYPASS (poly 0x8005, init 0, no reflection): the e-Manual's packet CRC."""
+    crc = 0
+    for byte in data:
+        crc ^= byte << 8
+        for _ in range(8):
+            crc = ((crc << 1) ^ 0x8005) if crc & 0x8000 else crc << 1
+            crc &= 0xFFFF
+    return crc
+
+
+def _stuffed(body: bytes) -> bytes:
+    """An FD after every FF FF FD past the header."""
+    out = bytearray(body[:4])
+    for byte in body[4:]:
+        out.append(byte)
+        if out[-3:] == b"\xff\xff\xfd" and len(out) > 4 + 2:
+            out.append(0xFD)
+    return bytes(out)
+
+
+def status(dxl_id: int, error: int, data: bytes) -> bytes:
+    """A status packet: FF FF FD 00 ID LEN 55 ERR DATA CRC, LEN and CRC over the stuffed packet."""
+    params = _stuffed(b"\xff\xff\xfd\x00" + bytes([dxl_id, 0, 0, 0x55, error]) + data)[9:]
+    body = b"\xff\xff\xfd\x00" + bytes([dxl_id]) + struct.pack("<H", len(params) + 4) + b"\x55" + bytes([error]) + params
+    return body + struct.pack("<H", _crc(body))
+
+
+class XBus(PtyDevice):
+    """Six X-series servos on one bus: a sync read is answered by each, in the order asked."""
+
+    def __init__(self) -> None:
+        super().__init__()
+        self.present = {1: 0, 2: 1024, 3: 2048, 4: 3071, 5: 4095, 6: STUFFED}  # each servo's, by ID
+        self.errors = {i: 0 for i in IDS}
+        self.errors[4] = 0x80  # a hardware alert: reported, the data still valid
+        self._pending = bytearray()
+
+    def handle(self, data: bytes) -> None:
+        self._pending += data
+        while len(self._pending) >= 10:
+            size = struct.unpack_from("<H", self._pending, 5)[0] + 7
+            if len(self._pending) < size:
+                return
+            packet, self._pending = bytes(self._pending[:size]), self._pending[size:]
+            if packet[7] == 0x82:  # sync read: start, length, IDs
+                start, length = struct.unpack_from("<HH", packet, 8)
+                assert (start, length) == (PRESENT, 4)
+                for dxl_id in packet[12:-2]:
+                    self.send(status(dxl_id, self.errors[dxl_id], struct.pack("<i", self.present[dxl_id])))
+
+    def _cleared(self) -> None:
+        self._pending.clear()

@@ -1,0 +1,41 @@
+"""Print each message on `joint_states` (`listen.py joint_states`) or `/tf` (`listen.py tf`)
+as one JSON line, for the body's tests. Run by the system python3.
+
+A JointState is its names, position, velocity and effort (NaN, which JSON lacks, as null)
+and its stamp in seconds; a TFMessage is one line per transform: parent and child frame,
+translation and rotation (x, y, z, w). It ends by itself after a minute, so a test reading it
+until some message never waits longer."""
+
+import json
+import math
+import sys
+
+import rospy
+from sensor_msgs.msg import JointState
+from tf2_msgs.msg import TFMessage
+
+
+def shown(values: list[float]) -> list[float | None]:
+    return [None if math.isnan(v) else v for v in values]
+
+
+def joint_state(msg: JointState) -> None:
+    print(json.dumps({"name": list(msg.name), "position": shown(msg.position), "velocity": shown(msg.velocity),
+                      "effort": shown(msg.effort), "stamp": msg.header.stamp.to_sec()}), flush=True)
+
+
+def transforms(msg: TFMessage) -> None:
+    for t in msg.transforms:
+        move, turn = t.transform.translation, t.transform.rotation
+        print(json.dumps({"parent": t.header.frame_id, "child": t.child_frame_id,
+                          "translation": [move.x, move.y, move.z], "rotation": [turn.x, turn.y, turn.z, turn.w]}),
+              flush=True)
+
+
+rospy.init_node("rdisc_listen", anonymous=True)
+rospy.Timer(rospy.Duration(60), lambda _event: rospy.signal_shutdown("a minute has passed"), oneshot=True)
+if sys.argv[1] == "tf":
+    rospy.Subscriber("/tf", TFMessage, transforms, queue_size=100)
+else:
+    rospy.Subscriber("joint_states", JointState, joint_state, queue_size=100)
+rospy.spin()
