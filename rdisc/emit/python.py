@@ -268,14 +268,15 @@ class _Driver:
             w.line(closing)
 
     def predicate(self, w: Writer, name: str, signature: str, params: tuple[m.Parameter, ...], e: m.Expr) -> None:
-        """`def name(signature) -> bool:` whose body unpacks `args` and returns the condition."""
+        """`def name(signature) -> bool:` whose body unpacks `args` and returns the condition, as a
+        bool (a reply's or an argument's value is `Any` to mypy, and so would the comparison be)."""
         local = _params([(prm.name, prm.type) for prm in params])
         with w.block(f"def {name}({signature}) -> bool:"):
             used = _names(e)
             if used & {prm.name for prm in params}:
                 targets = [local[prm.name] if prm.name in used else "_" for prm in params]
                 w.line(f"({targets[0]},) = args" if len(targets) == 1 else f"{', '.join(targets)} = args")
-            _emit(w, "return ", self.exprs.expr(e, local))
+            _emit(w, "return bool(", self.exprs.expr(e, local), ")")
 
     # -- the whole module ---------------------------------------------------------------------
 

@@ -82,6 +82,7 @@ def drivers(tmp_path_factory) -> dict[str, Path]:
     return {
         "create": generate(EXAMPLES / "create.rdis", folder, "irobot_create"),
         "koala": generate(EXAMPLES / "koala.rdis", folder, "koala"),
+        "arm": generate(EXAMPLES / "arm.rdis", folder, "arm"),  # replies, expect, groups, a body
         "fast_create": generate(without_delays(EXAMPLES / "create.rdis", fast), fast, "fast_create"),
     }
 
@@ -94,7 +95,7 @@ def test_generated_source_matches_the_golden(drivers, golden, example) -> None:
     golden.check(GOLDEN / f"{example}.py", drivers[example].read_text(encoding="utf-8"))
 
 
-@pytest.mark.parametrize("example", ["create", "koala"])
+@pytest.mark.parametrize("example", ["create", "koala", "arm"])
 def test_ruff_finds_nothing(drivers, example) -> None:
     done = subprocess.run([sys.executable, "-m", "ruff", "check", "--isolated", "--no-cache", str(drivers[example])],
                           capture_output=True, text=True, check=False)
@@ -102,7 +103,7 @@ def test_ruff_finds_nothing(drivers, example) -> None:
 
 
 def test_mypy_strict_finds_nothing(drivers, tmp_path) -> None:
-    paths = [str(drivers["create"]), str(drivers["koala"])]
+    paths = [str(drivers["create"]), str(drivers["koala"]), str(drivers["arm"])]
     done = subprocess.run(
         [sys.executable, "-m", "mypy", "--strict", "--no-error-summary", "--cache-dir", str(tmp_path / "cache"),
          *paths],
