@@ -11,6 +11,7 @@ import dataclasses
 import re
 import string
 import struct
+import warnings
 from dataclasses import dataclass
 
 from rdisc.limits import MAX_ARRAY
@@ -432,8 +433,10 @@ def regex_groups(pattern: str) -> int:
     """Number of groups of a regex; raises TemplateError where it does not compile
     or could take more than linear time on a reply line (see `regex_shape`)."""
     try:
-        compiled = re.compile(pattern)
-        risky = regex_shape.risk(pattern)
+        with warnings.catch_warnings():  # Python's hints about future syntax (`[[`) are not the user's to see
+            warnings.simplefilter("ignore", FutureWarning)
+            compiled = re.compile(pattern)
+            risky = regex_shape.risk(pattern)
     except re.error as err:
         raise TemplateError(f"invalid regular expression: {err.msg}", err.pos or 0) from None
     except (OverflowError, RecursionError, MemoryError):
