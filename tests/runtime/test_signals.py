@@ -1,7 +1,11 @@
 """Signals at any moment leave the robot stopped: in `rdisc run` and in a generated driver's
 command line, once the port is open, the terminate hook's stop command is the last thing
 written, whatever signals arrive (one, two, a burst; during start-up or while running), the
-exit status is the first signal's (130, 143) and nothing prints a traceback."""
+exit status is the first signal handled (130, 143) and nothing prints a traceback.
+
+Two signals that arrive before Python next looks (1 ms apart on a busy machine) are handled in
+the order of their numbers, SIGINT (2) before SIGTERM (15), which is CPython's rule, not
+rdisc's: for them either status is right, and the robot must still be left stopped."""
 
 from __future__ import annotations
 
@@ -42,8 +46,10 @@ def _interrupted(command: Callable[[str], list[str]], after: float, signals: lis
         process = subprocess.Popen(command(dev.port), cwd=REPO, env=cli_env(), stdout=subprocess.PIPE,
                                    stderr=subprocess.PIPE, text=True)
         stderr = dev.signal_once_open(process, after, signals, gap)
-    expected = 130 if signals[0] == signal.SIGINT else 143
-    assert process.returncode == expected, stderr
+    expected = {130 if signals[0] == signal.SIGINT else 143}
+    if gap < 0.005:  # both may be pending at once: see the module's docstring
+        expected |= {130 if s == signal.SIGINT else 143 for s in signals}
+    assert process.returncode in expected, stderr
     assert "internal error" not in stderr, stderr
 
 
