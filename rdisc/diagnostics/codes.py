@@ -114,6 +114,15 @@ optionally with a list item `[i]` up to [1023], and optionally a final `:yaw`
 (a quaternion read or written as its yaw angle). Wrong: `ros "this/Bool"` with
 `hit: bool ros "__class__.__init__"`. Right: `ros "std_msgs/Bool"` with
 `hit: bool ros "data"`."""),
+    ("E109", "unknown-unit", """
+A parameter's `unit` is one of the units rdisc knows, each with what it
+measures: m, cm, mm (a length); rad, deg (an angle); s, ms (a time); m/s, mm/s
+(a linear velocity); rad/s, deg/s, rpm (an angular velocity); N (a force); N m,
+mN m (a torque); A, mA (a current); V, mV (a voltage); % and count (no
+dimension). Only a number, or an array of numbers, has a unit. The unit is not
+converted: it documents the parameter and lets a transmission check that the
+joint quantity it commands fits (E605). Wrong: `drive(speed: int unit "mm/sec")`.
+Right: `drive(speed: int unit "mm/s")`."""),
     # -- structure -----------------------------------------------------------
     ("E201", "arity-mismatch", """
 A call passes a different number of arguments than its target takes: an
@@ -397,9 +406,13 @@ sets the joint's `position`, `velocity` or `effort`; `measure QUANTITY from STAT
 element as `[i]`, a constant index). Each says both conversions: `raw = ...`, the
 device's value from the quantity, and `QUANTITY = ...`, the quantity from `raw`;
 they read only their variable and constants, and `raw` has the device's type (an
-int is written with `round(...)`). Wrong: `command velocity to drive.speed { raw =
-velocity * 1000 }`. Right: `command velocity to drive.speed { raw = round(velocity
-* 1000)  velocity = raw / 1000 }`."""),
+int is written with `round(...)`). A commanded parameter's unit must carry the
+quantity: a position an angle or a length, a velocity an angular or a linear
+velocity, an effort a torque, a force or a current, and `count` or `%` any of them
+(the conversion may turn a wheel's rad/s into mm/s). Wrong: `command velocity to
+drive.speed { raw = velocity * 1000 }`, or a position to `speed: int unit "mm/s"`.
+Right: `command velocity to drive.speed { raw = round(velocity * 1000)  velocity =
+raw / 1000 }`."""),
     ("E606", "body-device-agreement", """
 The body and the device must agree. Every value of a joint's range (its `limit`
 for a position, -velocity..velocity, -effort..effort), converted by `raw = ...`,

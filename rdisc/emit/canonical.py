@@ -157,6 +157,7 @@ def _primitive(x: m.Primitive) -> JsonObject:
         ("parameterTypes", [param.type.value for param in x.params]),
         ("parameterRanges", _ranges(x.params)),
         ("parameterDefaults", _defaults(x.params)),
+        ("parameterUnits", _units(x.params)),
         ("connection", x.connection),
         ("lines", {level.line: _embedded(level.value) for level in x.lines} or None),
         encoding,
@@ -199,6 +200,13 @@ def _defaults(params: tuple[m.Parameter, ...]) -> list[str | None] | None:
     return [None if p.default is None else _embedded(m.Const(p.default, p.type)) for p in params]
 
 
+def _units(params: tuple[m.Parameter, ...]) -> list[str | None] | None:
+    """Each parameter's unit (null without one); left out when none has one."""
+    if all(p.unit is None for p in params):
+        return None
+    return [p.unit for p in params]
+
+
 def _frame(f: m.Frame) -> JsonObject:
     return _object(
         ("name", f.name),
@@ -206,6 +214,7 @@ def _frame(f: m.Frame) -> JsonObject:
         ("parameterTypes", [param.type.value for param in f.params]),
         ("parameterRanges", _ranges(f.params)),
         ("parameterDefaults", _defaults(f.params)),
+        ("parameterUnits", _units(f.params)),
         ("request", [_frame_part(part) for part in f.request]),
         ("moreRequests", [[_frame_part(part) for part in parts] for parts in f.more_requests] or None),
         ("reply", [_frame_part(part) for part in f.reply]),
@@ -263,6 +272,7 @@ def _interface(i: m.Interface) -> JsonObject:
         ("parameterTypes", [param.type.value for param in i.params] or None),
         ("parameterRanges", _ranges(i.params)),
         ("parameterDefaults", _defaults(i.params)),
+        ("parameterUnits", _units(i.params)),
         ("primitiveCalls", calls),
         ("triggers", (i.triggers[0] if len(i.triggers) == 1 else list(i.triggers)) or None),  # one: as the thesis
         ("doc", i.doc),

@@ -722,6 +722,9 @@ class _Driver:
             ranged = [f"    {local[prm.name]}: {prm.range_text()}" for prm in element.params if prm.low is not None]
             if ranged:
                 doc += ["", "Ranges (a value outside is refused before anything is written):", *ranged]
+            units = [f"    {local[prm.name]}: {prm.unit}" for prm in element.params if prm.unit is not None]
+            if units:
+                doc += ["", "Units (as the device takes them):", *units]
             w.line(_docstring("\n".join(doc)))
             values = ", ".join(local[prm.name] for prm in element.params)
             w.line(f"self._robot._call_{kind}({self.plan[kind, name]}, [{values}])")

@@ -18,6 +18,7 @@ from rdisc.semantics.model import Scope, Type
 from rdisc.semantics.operators import EvalError
 from rdisc.semantics.resolve import Symbols, suggest
 from rdisc.semantics.types import Env, Typer, describe
+from rdisc.semantics.units import CARRIERS, UNITS, carries, dimension_of
 from rdisc.syntax import ast
 
 # Sizes a shape takes, in order, and what they are called in diagnostics.
@@ -388,6 +389,17 @@ class BodyRules:
                 return None
             device = param.type
             where = f"parameter `{target}.{member}`"
+            if param.unit is not None and not carries(param.unit, quantity):
+                decl = self.s.primitives.get(target) or self.s.interfaces.get(target)
+                unit = next((p.unit for p in decl.params if p.name.text == member), None) if decl else None
+                self.d.report("E605", b.member.span,  # type: ignore[union-attr]
+                              f"`{target}.{member}` is in {param.unit}, {UNITS[param.unit].value}, but the "
+                              f"transmission commands joint `{joint.name}`'s {quantity.value}, "
+                              f"{dimension_of(quantity, joint.kind).value}",
+                              labels=() if unit is None else (Label(unit.span, "the parameter's unit"),),
+                              help=f"a {quantity.value} is carried by "
+                              f"{' or '.join(d.value for d in CARRIERS[quantity])}, or a dimensionless count or %")
+                return None
         else:
             if target in self.s.settings:
                 self.d.report("E605", b.target.span, f"`{target}` is a setting: a joint is measured by a state "

@@ -22,6 +22,7 @@ from rdisc.semantics.model import Scope, Type
 from rdisc.semantics.operators import shown
 from rdisc.semantics.resolve import Symbols, Unit, check_name, suggest
 from rdisc.semantics.types import Env, Typer, describe, unify
+from rdisc.semantics.units import UNITS
 from rdisc.source import Span
 from rdisc.syntax import ast
 from rdisc.syntax.printer import print_type
@@ -192,8 +193,25 @@ class _Checker:
             if default is None and p.default is None and any(q.default is not None for q in params[: len(out)]):
                 self.d.report("E204", p.name.span, f"parameter `{p.name.text}` needs a default: it follows one "
                               "that has one", help="put the parameters with defaults last")
-            out.append(m.Parameter(p.name.text, type_, low, high, default))  # type: ignore[arg-type]
+            out.append(m.Parameter(p.name.text, type_, low, high, default,  # type: ignore[arg-type]
+                                   self.param_unit(p, type_)))
         return tuple(out)
+
+    def param_unit(self, p: ast.Param, type_: m.AnyType | None) -> str | None:
+        """`unit "mm/s"`: one of the table's units, on a number (or an array of numbers)."""
+        if p.unit is None:
+            return None
+        if p.unit.value not in UNITS:
+            self.d.report("E109", p.unit.span, f"unknown unit `{p.unit.value}`",
+                          help=suggest(p.unit.value, UNITS) or f"the units are {', '.join(UNITS)}")
+            return None
+        element = type_.element if isinstance(type_, m.Array) else type_
+        if element not in (Type.INT, Type.FLOAT):
+            if type_ is not None:
+                self.d.report("E109", p.unit.span, f"parameter `{p.name.text}` is {describe(type_)}: only a "
+                              "number has a unit")
+            return None
+        return p.unit.value
 
     def param_default(self, p: ast.Param, type_: m.AnyType | None, low: float | None,
                       high: float | None, what: str = "parameter") -> m.Value | None:

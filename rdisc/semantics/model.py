@@ -242,6 +242,7 @@ class Parameter:
     low: int | float | None = None  # the range a value must be in, when declared
     high: int | float | None = None
     default: Value | None = None  # the value when a call leaves it out (the parameters after it have one too)
+    unit: str | None = None  # one of rdisc.semantics.units.UNITS, when declared
 
     def range_text(self) -> str:
         return f"{self.low!r}..{self.high!r}"

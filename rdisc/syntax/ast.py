@@ -153,6 +153,7 @@ class Param:
     low: Expr | None = None  # `in low..high`
     high: Expr | None = None
     default: Expr | None = None  # `= value`: the value when a call leaves it out
+    unit: StrLit | None = None  # `unit "mm/s"`
 
 
 @dataclass(frozen=True, slots=True)

@@ -567,7 +567,8 @@ def _transformer_class():
             return tuple(x for x in c if x is not None)
 
         def param(self, meta, c):
-            return ast.Param(self.b.ident(c[0]), self.b.type_ref(c[1]), self.b.span(meta), c[2], c[3], c[4])
+            unit = None if c[4] is None else self.b.string(c[4])
+            return ast.Param(self.b.ident(c[0]), self.b.type_ref(c[1]), self.b.span(meta), c[2], c[3], c[5], unit)
 
         def args(self, meta, c):
             return tuple(x for x in c if x is not None)

@@ -320,13 +320,12 @@ _CONNECTION = (
     "name", "baud", "singleThreading", "startup", "terminate", "keepalive", "terminator", "address", "doc",
 )  # fmt: skip
 _PRIMITIVE = (
-    "name", "parameters", "parameterTypes", "parameterRanges", "parameterDefaults", "connection", "lines", "pack",
-    "format", "formatArgs", "unpack", "regex", "frame", "skipUnmatched", "replyTable", "timeout", "replies", "replyFrames",
-    "expect",
-    "postActions", "doc",
+    "name", "parameters", "parameterTypes", "parameterRanges", "parameterDefaults", "parameterUnits", "connection",
+    "lines", "pack", "format", "formatArgs", "unpack", "regex", "frame", "skipUnmatched", "replyTable", "timeout",
+    "replies", "replyFrames", "expect", "postActions", "doc",
 )  # fmt: skip
-_FRAME = ("name", "parameters", "parameterTypes", "parameterRanges", "parameterDefaults", "request", "reply",
-          "moreRequests", "moreReplies",
+_FRAME = ("name", "parameters", "parameterTypes", "parameterRanges", "parameterDefaults", "parameterUnits",
+          "request", "reply", "moreRequests", "moreReplies",
           "stuffing", "doc")
 _CHECKSUM = (
     "checksum", "kind", "width", "poly", "init", "reflectIn", "reflectOut", "xorOut", "inverted", "mask", "format",
@@ -334,8 +333,8 @@ _CHECKSUM = (
 )  # fmt: skip
 _BYTES_ROLES = ("header", "literal", "terminator")
 _INTERFACE = (
-    "name", "type", "parameters", "parameterTypes", "parameterRanges", "parameterDefaults", "primitiveCalls",
-    "triggers", "doc",
+    "name", "type", "parameters", "parameterTypes", "parameterRanges", "parameterDefaults", "parameterUnits",
+    "primitiveCalls", "triggers", "doc",
 )  # fmt: skip
 _CALL = ("name", "arguments", "delay", "priority", "when")
 _ADAPTER = ("name", "ros", "fields", "doc")
@@ -1101,9 +1100,10 @@ class _Importer:
         ]
         ranges = self.ranges(m, len(names))
         defaults = self.defaults(m, len(names))
+        units = self.units(m, len(names))
         if "parameterTypes" not in m:
-            return tuple(ast.Param(n, ast.Ident(infer(n), n.span), n.span, *r, d)
-                         for n, r, d in zip(names, ranges, defaults))
+            return tuple(ast.Param(n, ast.Ident(infer(n), n.span), n.span, *r, d, u)
+                         for n, r, d, u in zip(names, ranges, defaults, units))
         types = [
             i for v in self.array(m["parameterTypes"], "`parameterTypes`") if (i := self.type_ref(v, "a type"))
         ]
@@ -1113,7 +1113,17 @@ class _Importer:
                 f"`parameterTypes` has {len(types)} entries for {len(names)} parameters",
             )
             return ()
-        return tuple(ast.Param(n, t, n.span, *r, d) for n, t, r, d in zip(names, types, ranges, defaults))
+        return tuple(ast.Param(n, t, n.span, *r, d, u) for n, t, r, d, u in zip(names, types, ranges, defaults, units))
+
+    def units(self, m: Members, count: int) -> list[ast.StrLit | None]:
+        """`parameterUnits`: a unit or null for each parameter."""
+        if "parameterUnits" not in m:
+            return [None] * count
+        items = self.array(m["parameterUnits"], "`parameterUnits`")
+        if len(items) != count:
+            self.error(m["parameterUnits"].span, f"`parameterUnits` has {len(items)} entries for {count} parameters")
+            return [None] * count
+        return [None if isinstance(item, JNull) else _str_lit(self.string(item, "a parameter's unit")) for item in items]
 
     def defaults(self, m: Members, count: int) -> list[ast.Expr | None]:
         """`parameterDefaults`: a value or null for each parameter."""

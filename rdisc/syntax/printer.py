@@ -204,6 +204,7 @@ def _block(head: str, lines: list[str]) -> list[str]:
 
 def _params(params: tuple[ast.Param, ...]) -> str:
     return ", ".join(f"{param.name.text}: {print_type(param.type)}" + _range(param)
+                     + (f" unit {p.quote(param.unit.value)}" if param.unit is not None else "")
                      + (f" = {print_expr(param.default)}" if param.default is not None else "") for param in params)
 
 

@@ -49,7 +49,7 @@ primitive read() on rs232 format "E\n" () regex "^e,(-?\\d+),(-?\\d+)\t$" { a = 
 primitive ping(n: int, s: string) { } on rs232 pack "B" (n)
 primitive one() on rs232 pack ">h" (-1) unpack ">h" { count = out[0] }
 primitive a_primitive_with_a_long_name(first_parameter: int, second_parameter: int) on rs232 pack ">Bhh" (137, first_parameter, second_parameter) unpack ">hh" { x = out[0] y = out[1] }
-interface drive(velocity: float, radius: float) adhoc triggers odometry {
+interface drive(velocity: float   unit   "m/s", radius: float in -2..2 unit "m" = 0.0) adhoc triggers odometry {
   set_speed(round(velocity * 1000), round(radius * 1000)) delay 100 ms priority 2 delay 5 s
   set_speed(0, 0)
 }
@@ -107,7 +107,7 @@ primitive a_primitive_with_a_long_name(first_parameter: int, second_parameter: i
         y = out[1]
     }
 
-interface drive(velocity: float, radius: float) adhoc triggers odometry {
+interface drive(velocity: float unit "m/s", radius: float in -2..2 unit "m" = 0.0) adhoc triggers odometry {
     set_speed(round(velocity * 1000), round(radius * 1000)) delay 100 ms delay 5 s priority 2
     set_speed(0, 0)
 }
