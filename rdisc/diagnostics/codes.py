@@ -364,7 +364,15 @@ read to an end marker: `until "\\xF7"` (1 to 8 bytes, only in such a table) read
 those bytes, drops them and decodes the rest with an `unpack` ending in `*`.
 Wrong: `0xF0: unpack "B*"`. Right: `0xE0..0xEF: unpack "BB" { pin = tag & 0x0F }`,
 two bytes after any tag from 0xE0 to 0xEF, whose value the entry reads as `tag`;
-`0xF0: unpack "B*" until "\\xF7"`, a Firmata sysex message."""),
+`0xF0: unpack "B*" until "\\xF7"`, a Firmata sysex message.
+
+A reply of sub-payloads (`reply each tag "B" length "B" { ... }`, Kobuki's feedback)
+is read through a frame that says where its payload ends, as the sub-payloads run
+to that end. Each entry decodes bytes with an `unpack`, not a `regex`. Without
+`length`, the entry's size says where the next tag starts, so it is fixed (no `*`);
+with it, the length is one unsigned integer that can state the entry's size.
+Wrong: `reply each tag "B" { 1: unpack "B*" }`. Right: `reply each tag "B" length
+"B" { 0x04: unpack "<hh3x" { angle = out[0] } }`, through `frame packet`."""),
     # -- the body -------------------------------------------------------------
     ("E601", "body-tree", """
 A robot's body is one tree of links: one root (the base, the child of no joint),

@@ -172,7 +172,8 @@ def _primitive(x: m.Primitive) -> JsonObject:
                          for use in x.reply_frames] or None),
         ("expect", None if x.expect is None else _embedded(x.expect)),
         ("replyTable", None if x.table is None else _object(
-            ("key", x.table.key or None), ("tag", x.table.tag), ("cases", [_case(c) for c in x.table.cases]))),
+            ("key", x.table.key or None), ("tag", x.table.tag), ("each", x.table.each or None),
+            ("length", x.table.length), ("cases", [_case(c) for c in x.table.cases]))),
         ("postActions", actions or None),
         ("doc", x.doc),
     )

@@ -50,7 +50,21 @@ def _primitive(model: m.Model, p: m.Primitive) -> str:
             else:
                 tag = (formats.struct_layout(p.table.tag).size, f"tag {_kind(p.table.tag, p.table.tag[-1])}",
                        f"= {said}" if case.last is None else f"in {said}")
-                lines += _sides(f"reply tagged {said}", framed, [tag, *_reply_rows(case.decoding)])
+                rows = [tag, *_reply_rows(case.decoding)]
+                if p.table.each:  # one sub-payload; the frame is shown around the first alone
+                    if p.table.length is not None:
+                        assert isinstance(case.decoding, m.Unpack)  # sub-payloads are bytes (E505)
+                        layout = formats.struct_layout(case.decoding.format)  # its pad bytes too
+                        size = None if layout.rest or layout.varying else layout.size
+                        rows.insert(1, (formats.struct_layout(p.table.length).size,
+                                        f"length {_kind(p.table.length, p.table.length[-1])}",
+                                        "of what follows" if size is None else f"= {size}"))
+                    if case is p.table.cases[0]:
+                        skipped = " (an unknown tag skipped by its length)" if p.table.length else ""
+                        lines += _sides("reply", framed, [(None, "sub-payloads", f"each a tag and its bytes{skipped}")])
+                    lines += _sides(f"sub-payload tagged {said}", None, rows)
+                    continue
+                lines += _sides(f"reply tagged {said}", framed, rows)
     elif p.expects_reply(model.frames):
         uses = [f"{use.frame}({', '.join(expression_text(a) for a in use.args)})" for use in p.reply_frames]
         through = f", frame {uses[0]} .. {uses[-1]}" if uses else ""

@@ -547,6 +547,10 @@ class _Driver:
                 options["table"] = f"{const}_TABLE"
             if prim.table.tag is not None:
                 options["tag"] = quoted(prim.table.tag)
+                if prim.table.each:
+                    options["each"] = "True"
+                if prim.table.length is not None:
+                    options["length"] = quoted(prim.table.length)
             else:
                 options["key"] = str(next(i for i, prm in enumerate(prim.params) if prm.name == prim.table.key))
             w.blank(2)

@@ -118,7 +118,8 @@ class Description:
             for c in p.table.cases:  # a range entry's plan once, for each of its values
                 table.update(dict.fromkeys(c.values(), self._primitive(p.case(c), p.reply_locals())))
             if p.table.tag is not None:
-                return dataclasses.replace(plain, table=table, tag=p.table.tag)
+                return dataclasses.replace(plain, table=table, tag=p.table.tag, each=p.table.each,
+                                           length=p.table.length)
             key = next(i for i, param in enumerate(p.params) if param.name == p.table.key)
             return dataclasses.replace(plain, table=table, key=key)
         slots = _slots(local or p.params)

@@ -189,11 +189,13 @@ def message_bytes(prim: m.Primitive, frames: dict[str, m.Frame] | None = None) -
                 reply = min([reply, *stated])
         case m.Regex(pattern=pattern):
             reply = formats.regex_min_length(pattern) + 1  # and its line terminator
+        case None if prim.table is not None:  # each entry's reply after its tag (and its length)
+            t = prim.table
+            head = sum(formats.struct_layout(f).size for f in (t.tag, t.length) if f is not None)
+            sizes = [message_bytes(prim.case(c), frames) - request - framing - answer + head for c in t.cases]
+            reply = sum(sizes) if t.each else max(sizes, default=0)  # sub-payloads: each entry's once
         case None:
-            reply = max((message_bytes(prim.case(c), frames) - request - framing - answer for c in prim.table.cases),
-                        default=0) if prim.table else 0
-            if prim.table is not None and prim.table.tag is not None:
-                reply += formats.struct_layout(prim.table.tag).size
+            reply = 0
     return request + framing + (reply + answer) * max(prim.replies, 1)
 
 

@@ -821,6 +821,8 @@ class _Checker:
                 return None
             tag_slot = layout.slots[0]
             param = m.Parameter(key, Type.INT, tag_slot.low, tag_slot.high)
+            if not self.sub_payloads(clause, name, unframed):
+                return None
         else:
             param = next((p for p in params if p.name == key), None)  # type: ignore[assignment]
         if param is None:
@@ -853,6 +855,8 @@ class _Checker:
             decoding, reply = self.decoding(entry.decoding)
             if entry.until is not None:
                 decoding = self.until(entry, decoding, name, clause.tag is not None and unframed)
+            elif clause.each:
+                self.sub_payload_entry(clause, entry, decoding, low, high)
             elif clause.tag is not None and unframed:
                 self.sized_entry(entry, decoding, name, low, high)
             actions: tuple[m.PostAction, ...] = ()
@@ -862,7 +866,8 @@ class _Checker:
             if decoding is not None:
                 cases.append(m.ReplyCase(low, decoding, actions, None if entry.last is None else high))
         if clause.tag is not None:  # an unknown tag is a protocol error when it comes: no coverage to check
-            return m.ReplyTable("", tuple(cases), clause.tag.value)
+            return m.ReplyTable("", tuple(cases), clause.tag.value, clause.each,
+                                None if clause.length is None else clause.length.value)
         if param.low is None:
             self.d.report("E505", clause.key.span, f"`{key}` has no range, so the reply table of `{name.text}` "
                           "cannot have an entry for each of its values",
@@ -878,6 +883,51 @@ class _Checker:
                               f"{key} = {shown_}", label=f"in {param.range_text()}",
                               help="give every value of the range its reply, or narrow the range")
         return m.ReplyTable(key, tuple(cases))
+
+    def sub_payloads(self, clause: ast.ReplyTable, name: ast.Ident, unframed: bool) -> bool:
+        """`reply each tag "B" length "B"`: sub-payloads until the framed payload ends, each its
+        length an unsigned integer after its tag. Whether the table can be read so."""
+        if not clause.each:
+            return True
+        if unframed:
+            self.d.report("E505", clause.span, f"the reply of `{name.text}` is a sequence of sub-payloads until its "
+                          "payload ends, so it is read through a frame", help="give the primitive a frame whose reply "
+                          "has a `length` field or constant bytes after its payload")
+            return False
+        if clause.length is None:
+            return True
+        try:
+            layout = formats.struct_layout(clause.length.value)
+        except formats.TemplateError as err:
+            self.d.report("E301", clause.length.span, err.message)
+            return False
+        if len(layout.slots) != 1 or layout.slots[0].type is not Type.INT or (layout.slots[0].low or 0) < 0:
+            self.d.report("E505", clause.length.span, "a sub-payload's length is one unsigned integer: a struct "
+                          f"format such as \"B\" or \"<H\", not \"{abbreviate(clause.length.value)}\"")
+            return False
+        return True
+
+    def sub_payload_entry(self, clause: ast.ReplyTable, entry: ast.ReplyEntry, decoding: m.Unpack | m.Regex | None,
+                          low: int, high: int) -> None:
+        """An entry of sub-payloads decodes its bytes with an `unpack`: of a fixed size without a
+        length field (the size says where the next tag starts), one the length field can state."""
+        which = f"tag {low}" if low == high else f"tags {low}..{high}"
+        if isinstance(decoding, m.Regex):
+            self.d.report("E505", entry.decoding.span, f"the sub-payload of {which} is bytes: decode it with `unpack`")
+            return
+        if not isinstance(decoding, m.Unpack):
+            return
+        open_end = _open_end(decoding)
+        if clause.length is None and open_end:
+            self.d.report("E505", entry.decoding.span, f"the sub-payloads have no length field, so the entry for "
+                          f"{which} needs a fixed size, but it {open_end}",
+                          help='give each sub-payload its length: `reply each tag "B" length "B" { ... }`')
+        elif clause.length is not None and not open_end:
+            size = formats.struct_layout(decoding.format).size
+            most = formats.struct_layout(clause.length.value).slots[0].high or 0
+            if size > most:
+                self.d.report("E505", entry.decoding.span, f"the entry for {which} decodes {size} bytes, more than "
+                              f"a sub-payload's length field \"{clause.length.value}\" states ({most})")
 
     def sized_entry(self, entry: ast.ReplyEntry, decoding: m.Unpack | m.Regex | None, name: ast.Ident,
                     low: int, high: int) -> None:

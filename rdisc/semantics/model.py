@@ -550,6 +550,8 @@ class ReplyTable:
     key: str  # the parameter whose value chooses the reply ("" when a tag does)
     cases: tuple[ReplyCase, ...]
     tag: str | None = None  # a one-integer struct format: the tag starting the payload chooses
+    each: bool = False  # the payload is sub-payloads, each tagged and decoded by its entry, until it ends
+    length: str | None = None  # each sub-payload's length field after its tag (`each`): an unknown tag is skipped
 
 
 @dataclass(frozen=True, slots=True)

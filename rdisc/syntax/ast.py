@@ -337,12 +337,16 @@ class ReplyEntry:
 @dataclass(frozen=True, slots=True)
 class ReplyTable:
     """`reply KEY { ... }`: the reply's decoding chosen by a parameter's value; or
-    `reply tag "fmt" { ... }`: by the tag at the start of the reply's payload."""
+    `reply tag "fmt" { ... }`: by the tag at the start of the reply's payload; or
+    `reply each tag "fmt" length "fmt" { ... }`: the payload a sequence of sub-payloads, each
+    an entry chosen by its own tag (Kobuki's feedback), with or without its own length."""
 
     key: Ident
     entries: tuple[ReplyEntry, ...]
     span: Span = _span
     tag: StrLit | None = None
+    each: bool = False  # `reply each tag`: entries repeat over the payload
+    length: StrLit | None = None  # each sub-payload's length field after its tag (`each` only)
 
 
 @dataclass(frozen=True, slots=True)

@@ -362,6 +362,11 @@ def _transformer_class():
             tag = self.b.string(c[0])
             return ast.ReplyTable(ast.Ident("tag", tag.span), tuple(c[1:]), self.b.span(meta), tag)
 
+        def reply_each_table(self, meta: object, c: list[Any]) -> ast.ReplyTable:
+            tag = self.b.string(c[0])
+            length = None if c[1] is None else self.b.string(c[1])
+            return ast.ReplyTable(ast.Ident("tag", tag.span), tuple(c[2:]), self.b.span(meta), tag, True, length)
+
         def reply_entry(self, meta, c):
             value, last, kind, template, until, *assigns = c
             decoding = ast.Decoding(kind, self.b.string(template), self.b.span(meta))

@@ -501,8 +501,13 @@ class _Importer:
         return built
 
     def reply_table(self, obj: JObject) -> ast.ReplyTable:
-        t = self.members(obj, "`replyTable`", ("key", "tag", "cases"))
+        t = self.members(obj, "`replyTable`", ("key", "tag", "each", "length", "cases"))
         tag = self.string(t.get("tag"), "`tag`")
+        flag = t.get("each")
+        each = isinstance(flag, JBool) and flag.value
+        if flag is not None and not isinstance(flag, JBool):
+            self.error(flag.span, "`each` is true or false")
+        length = self.string(t.get("length"), "`length`")
         if tag is not None:
             key = ast.Ident("tag", tag.span)
         else:
@@ -527,8 +532,11 @@ class _Importer:
             until = self.string(c["until"], "`until`") if "until" in c else None
             entries.append(ast.ReplyEntry(value, decoding, actions, case.span, last,
                                           None if until is None else ast.StrLit(until.value, until.span)))
+        if (each or length is not None) and tag is None:
+            self.error(obj.span, "a reply table of sub-payloads (`each`, `length`) has a `tag`")
         return ast.ReplyTable(key, tuple(entries), obj.span,
-                              None if tag is None else ast.StrLit(tag.value, tag.span))
+                              None if tag is None else ast.StrLit(tag.value, tag.span), each and tag is not None,
+                              None if length is None or tag is None else ast.StrLit(length.value, length.span))
 
     def frame(self, obj: JObject) -> ast.FrameDecl | None:
         m = self.members(obj, "a frame", _FRAME)

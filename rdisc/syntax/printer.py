@@ -338,8 +338,12 @@ def _primitive_clause(c: ast.PrimitiveClause) -> tuple[list[str], bool]:
             return [f"replies {var.text} in {values}{through}"], False
         case ast.Lines(settings):
             return ["lines " + ", ".join(_assign(a) for a in settings)], False
-        case ast.ReplyTable(key, entries, _, tag):
-            lines = [f"reply {key.text} {{" if tag is None else f"reply tag {p.quote(tag.value)} {{"]
+        case ast.ReplyTable(key, entries, _, tag, each, length):
+            if tag is None:
+                lines = [f"reply {key.text} {{"]
+            else:
+                sized = "" if length is None else f" length {p.quote(length.value)}"
+                lines = [f"reply {'each ' if each else ''}tag {p.quote(tag.value)}{sized} {{"]
             for entry in entries:
                 values = print_expr(entry.value) + ("" if entry.last is None else f"..{print_expr(entry.last)}")
                 head = f"{values}: {entry.decoding.kind} {spell_template(entry.decoding.template.value)}"

@@ -1074,6 +1074,8 @@ class Primitive:
     table: Mapping[int, Primitive] | None = None  # a reply table: the plan for each key or tag
     key: int = -1  # the position of the parameter that chooses from `table` (-1: the reply's tag does)
     tag: str | None = None  # the struct format of the tag that starts the reply
+    each: bool = False  # the framed payload is sub-payloads, each a tag and its entry's bytes, until it ends
+    length: str | None = None  # `each`: the struct format of each sub-payload's length, after its tag
     checked: tuple[str, ...] = ()  # state variables its post-actions may make too wide (checked as they are set)
     request: Request | None = None  # its parameters' values to the bytes, when it is only written (`_sent_at_once`)
     expect: Callable[[StateValues, Args, Sequence[Any]], object] | None = None  # a condition its decoded reply meets
@@ -1085,6 +1087,7 @@ class Primitive:
     floats: tuple[int, ...] = field(init=False)
     ranged: tuple[int, ...] = field(init=False)
     tag_struct: struct.Struct | None = field(init=False)
+    length_struct: struct.Struct | None = field(init=False)
     answers: tuple[Primitive, ...] = field(init=False)  # for each of `reply_frames`: this plan, reading through it
 
     def __post_init__(self) -> None:
@@ -1096,6 +1099,7 @@ class Primitive:
         object.__setattr__(self, "floats", _floats(self.params))
         object.__setattr__(self, "ranged", _ranged(self.params))
         object.__setattr__(self, "tag_struct", None if self.tag is None else struct.Struct(self.tag))
+        object.__setattr__(self, "length_struct", None if self.length is None else struct.Struct(self.length))
         object.__setattr__(self, "answers", tuple(replace(self, frame=use, reply_frames=())
                                                   for use in self.reply_frames))
         if not _sent_at_once(self):
@@ -2191,7 +2195,11 @@ class Robot:
                 self._notify_io("read", plan.connection, data)
         if failed is not None:
             raise failed
-        if plan.actions is not None:
+        if plan.each:  # each sub-payload's post-actions, in the order they came
+            for case, args, one in reply:
+                if case.actions is not None:
+                    self._assign(case, args, one)
+        elif plan.actions is not None:
             self._assign(plan, local, reply)
 
     def _request(self, plan: Primitive, values: Args,
@@ -2293,6 +2301,8 @@ class Robot:
         while True:  # once, or until a reply decodes when the primitive skips the others
             try:
                 payload = use.frame.read(reader, fields, request, size)[1]
+                if plan.each:
+                    return plan, local, self._sub_payloads(plan, payload, local)
                 if plan.tag_struct is not None:
                     return self._tagged(plan, payload, local)
                 return plan, local, self._met(plan, local, decoder.decode(plan.name, payload)) if decoder else ()
@@ -2360,6 +2370,47 @@ class Robot:
             raise RdisProtocolError(f"{plan.name}: no reply entry for tag {value}")
         rest = payload[tag.size :]
         return case, [*local, value], case.decoder.decode(plan.name, rest) if case.decoder is not None else ()
+
+    @staticmethod
+    def _sub_payloads(plan: Primitive, payload: bytes, local: Args) -> list[tuple[Primitive, Args, Sequence[Any]]]:
+        """A payload of sub-payloads (Kobuki's feedback), in any order and any subset, until it
+        ends: each its tag, its length when the table gives one, and its bytes, decoded by the
+        entry the tag chooses (its plan, the tag after the parameters' values, its values). With
+        a length, a tag without an entry is skipped (a newer firmware's) and a length that is
+        not its entry's size refused; without one, the entry's size says where the next starts.
+        All are decoded before any post-action runs, so a bad one changes no state."""
+        tag = plan.tag_struct
+        size = plan.length_struct
+        assert tag is not None and plan.table is not None
+        head = tag.size + (size.size if size is not None else 0)
+        parts: list[tuple[Primitive, Args, Sequence[Any]]] = []
+        at = 0
+        while at < len(payload):
+            if len(payload) - at < head:
+                raise RdisProtocolError(f"{plan.name}: {len(payload) - at} bytes at offset {at} are no "
+                                        f"sub-payload (its head is {head})")
+            value = tag.unpack_from(payload, at)[0]
+            case = plan.table.get(value)
+            if case is None and size is None:
+                raise RdisProtocolError(f"{plan.name}: no reply entry for tag {value} at offset {at}")
+            decoder = case.decoder if case is not None else None
+            if size is not None:
+                length = size.unpack_from(payload, at + tag.size)[0]
+            else:
+                assert decoder is not None
+                length = decoder.size
+            start = at + head
+            if start + length > len(payload):
+                raise RdisProtocolError(f"{plan.name}: the sub-payload of tag {value} at offset {at} is {length} "
+                                        f"bytes, but {len(payload) - start} remain")
+            at = start + length
+            if case is None or decoder is None:
+                continue
+            if size is not None and decoder.size >= 0 and length != decoder.size:
+                raise RdisProtocolError(f"{plan.name}: the sub-payload of tag {value} at offset {start - head} "
+                                        f"is {length} bytes; its entry decodes {decoder.size}")
+            parts.append((case, [*local, value], decoder.decode(plan.name, payload[start:at])))
+        return parts
 
     @staticmethod
     def _read_tagged(plan: Primitive, reader: Incoming, wait: float,
