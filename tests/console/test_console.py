@@ -252,3 +252,10 @@ def test_stopping_the_console_runs_the_terminate_hook() -> None:
         dev.wait_until(lambda: bool(dev.commands) and dev.commands[-1][1] == STOP, 30, "the stop command last")
         assert dev.commands[-1][1] == STOP
         assert dev.opcodes()[:2] == [128, 132]  # the startup hook: Start, Full
+
+
+def test_the_plot_s_axes_are_at_round_values(page) -> None:
+    """The plot's gridlines and labels: the smallest step of 1, 2 or 5 times a power of ten that
+    gives no more than about the ticks asked for."""
+    assert page.evaluate("[ticks(0, 0.37, 5), ticks(-1.5, 1.5, 4), ticks(12.3, 14.1, 5), ticks(0, 1000, 4)]") == [
+        [0, 0.1, 0.2, 0.3], [-1, 0, 1], [12.5, 13, 13.5, 14], [0, 500, 1000]]

@@ -112,6 +112,16 @@ function showOutput(message) {
 
 const COLOURS = ["#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b"];
 
+// Round values from lo to hi for an axis, about `count` of them, a step of 1, 2 or 5 times a
+// power of ten (0.37 over 5 ticks: 0, 0.1, 0.2, 0.3).
+function ticks(lo, hi, count) {
+  const rough = (hi - lo) / count, power = 10 ** Math.floor(Math.log10(rough));
+  const step = power * ([1, 2, 5, 10].find((m) => m * power >= rough) || 10);
+  const out = [];
+  for (let k = Math.ceil(lo / step); k * step <= hi + step * 1e-9; k++) out.push(Number((k * step).toPrecision(12)));
+  return out;
+}
+
 function plot(canvas, fields) {
   if (!canvas) return;
   const g = canvas.getContext("2d");
@@ -127,8 +137,15 @@ function plot(canvas, fields) {
   const y = (v) => 4 + (hi - v) / (hi - lo) * (h - bottom - 8);
   g.strokeStyle = "#bbb"; g.fillStyle = "#555"; g.font = "10px sans-serif";
   g.strokeRect(left, 4, w - left - 4, h - bottom - 8);
-  g.fillText(shown(hi), 2, 12); g.fillText(shown(lo), 2, h - bottom);
-  g.fillText(shown(t0) + " s", left, h - 3); g.fillText(shown(t1) + " s", w - 60, h - 3);
+  g.strokeStyle = "#eee";  // gridlines at round values, labelled: value on the left, seconds below
+  for (const v of ticks(lo, hi, 4)) {
+    g.beginPath(); g.moveTo(left, y(v)); g.lineTo(w - 4, y(v)); g.stroke();
+    g.fillText(shown(v), 2, y(v) + 3);
+  }
+  for (const t of ticks(t0, t1, 5)) {
+    g.beginPath(); g.moveTo(x(t), 4); g.lineTo(x(t), h - bottom - 4); g.stroke();
+    g.fillText(shown(t) + " s", x(t) - 8, h - 3);
+  }
   Object.entries(fields).forEach(([name, points], i) => {
     g.strokeStyle = COLOURS[i % COLOURS.length];
     g.beginPath();
