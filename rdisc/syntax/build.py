@@ -243,16 +243,16 @@ def _transformer_class():
         def start(self, meta, children):
             return [c for c in children if c is not None]
 
-        def import_decl(self, meta, c):
+        def import_decl(self, meta: Meta, c: list[Any]) -> ast.ImportDecl:
             return ast.ImportDecl(self.b.string(c[0]).value, self.b.span(meta), self.b.doc(meta))
 
-        def robot_decl(self, meta, c):
+        def robot_decl(self, meta: Meta, c: list[Any]) -> ast.RobotDecl:
             return ast.RobotDecl(self.b.ident(c[0]), tuple(c[1:]), self.b.span(meta), self.b.doc(meta))
 
-        def robot_attr(self, meta, c):
+        def robot_attr(self, meta: Meta, c: list[Any]) -> ast.RobotAttr:
             return ast.RobotAttr(c[0], self.b.string(c[1]).value, self.b.span(meta))
 
-        def state_decl(self, meta, c):
+        def state_decl(self, meta: Meta, c: list[Any]) -> ast.StateDecl:
             name, type_, init = c
             return ast.StateDecl(self.b.ident(name), self.b.type_ref(type_), init, self.b.span(meta), self.b.doc(meta))
 
@@ -261,53 +261,53 @@ def _transformer_class():
             return ast.SettingDecl(self.b.ident(name), self.b.type_ref(type_), default, self.b.span(meta),
                                    self.b.doc(meta), low, high)
 
-        def connection_decl(self, meta, c):
+        def connection_decl(self, meta: Meta, c: list[Any]) -> ast.ConnectionDecl:
             return ast.ConnectionDecl(
                 self.b.ident(c[0]), self.b.ident(c[1]), tuple(c[2:]), self.b.span(meta), self.b.doc(meta)
             )
 
-        def baud(self, meta, c):
+        def baud(self, meta: Meta, c: list[Any]) -> ast.Baud:
             return ast.Baud(c[0], self.b.span(meta))
 
-        def threading(self, meta, c):
+        def threading(self, meta: Meta, c: list[Any]) -> ast.Threading:
             return ast.Threading(self.b.ident(c[0]), c[1], self.b.span(meta))
 
-        def hook(self, meta, c):
+        def hook(self, meta: Meta, c: list[Any]) -> ast.Hook:
             return ast.Hook(c[0], c[1], None, self.b.span(meta))
 
-        def keepalive(self, meta, c):
+        def keepalive(self, meta: Meta, c: list[Any]) -> ast.Hook:
             return ast.Hook("keepalive", c[0], c[1], self.b.span(meta))
 
-        def terminator(self, meta, c):
+        def terminator(self, meta: Meta, c: list[Any]) -> ast.Terminator:
             return ast.Terminator(self.b.string(c[0]), self.b.span(meta))
 
-        def hook_call(self, meta, c):
+        def hook_call(self, meta: Meta, c: list[Any]) -> ast.Call:
             return ast.Call(self.b.ident(c[0]), c[1] or (), self.b.span(meta))
 
-        def primitive_decl(self, meta, c):
+        def primitive_decl(self, meta: Meta, c: list[Any]) -> ast.PrimitiveDecl:
             return ast.PrimitiveDecl(
                 self.b.ident(c[0]), c[1] or (), tuple(c[2:]), self.b.span(meta), self.b.doc(meta)
             )
 
-        def on(self, meta, c):
+        def on(self, meta: Meta, c: list[Any]) -> ast.On:
             return ast.On(self.b.ident(c[0]), self.b.span(meta))
 
-        def encoding(self, meta, c):
+        def encoding(self, meta: Meta, c: list[Any]) -> ast.Encoding:
             return ast.Encoding(c[0], self.b.string(c[1]), c[2] or (), self.b.span(meta))
 
-        def decoding(self, meta, c):
+        def decoding(self, meta: Meta, c: list[Any]) -> ast.Decoding:
             return ast.Decoding(c[0], self.b.string(c[1]), self.b.span(meta))
 
-        def actions(self, meta, c):
+        def actions(self, meta: Meta, c: list[Any]) -> ast.Actions:
             return ast.Actions(tuple(c), self.b.span(meta))
 
-        def assign(self, meta, c):
+        def assign(self, meta: Meta, c: list[Any]) -> ast.Assign:
             return ast.Assign(self.b.ident(c[0]), c[2], self.b.span(meta), c[1])
 
-        def array_type(self, meta, c):
+        def array_type(self, meta: Meta, c: list[Any]) -> ast.ArrayOf:
             return ast.ArrayOf(self.b.ident(c[0]), c[1], self.b.span(meta))
 
-        def interface_decl(self, meta, c):
+        def interface_decl(self, meta: Meta, c: list[Any]) -> ast.InterfaceDecl:
             name, params, *rest = c
             clauses = tuple(x for x in rest if isinstance(x, (ast.Kind, ast.Triggers)))
             body = tuple(x for x in rest if isinstance(x, (ast.CallStmt, ast.ForStmt)))
@@ -315,13 +315,13 @@ def _transformer_class():
                 self.b.ident(name), params or (), clauses, body, self.b.span(meta), self.b.doc(meta)
             )
 
-        def kind(self, meta, c):
+        def kind(self, meta: Meta, c: list[Any]) -> ast.Kind:
             return ast.Kind(c[0], self.b.span(meta))
 
-        def triggers(self, meta, c):
+        def triggers(self, meta: Meta, c: list[Any]) -> ast.Triggers:
             return ast.Triggers(tuple(self.b.ident(n) for n in c), self.b.span(meta))
 
-        def call_stmt(self, meta, c):
+        def call_stmt(self, meta: Meta, c: list[Any]) -> ast.CallStmt:
             call = ast.Call(self.b.ident(c[0]), c[1] or (), self.b.span(meta))
             delays = tuple(x[1] for x in c[2:] if x[0] == "delay")
             priorities = tuple(x[1] for x in c[2:] if x[0] == "priority")
@@ -341,24 +341,24 @@ def _transformer_class():
         def when(self, meta, c):
             return ("when", c[0])
 
-        def adapter_decl(self, meta, c):
+        def adapter_decl(self, meta: Meta, c: list[Any]) -> ast.AdapterDecl:
             ros = self.b.string(c[1]) if c[1] is not None else None
             return ast.AdapterDecl(self.b.ident(c[0]), ros, tuple(c[2:]), self.b.span(meta), self.b.doc(meta))
 
-        def field_decl(self, meta, c):
+        def field_decl(self, meta: Meta, c: list[Any]) -> ast.FieldDecl:
             unit = self.b.string(c[2]).value if c[2] is not None else None
             ros = self.b.string(c[3]) if c[3] is not None else None
             return ast.FieldDecl(
                 self.b.ident(c[0]), self.b.type_ref(c[1]), unit, ros, self.b.span(meta), self.b.doc(meta)
             )
 
-        def address(self, meta, c):
+        def address(self, meta: Meta, c: list[Any]) -> ast.Address:
             return ast.Address(self.b.string(c[0]), self.b.span(meta))
 
-        def reply_table(self, meta, c):
+        def reply_table(self, meta: Meta, c: list[Any]) -> ast.ReplyTable:
             return ast.ReplyTable(self.b.ident(c[0]), tuple(c[1:]), self.b.span(meta))
 
-        def reply_tag_table(self, meta, c):
+        def reply_tag_table(self, meta: Meta, c: list[Any]) -> ast.ReplyTable:
             tag = self.b.string(c[0])
             return ast.ReplyTable(ast.Ident("tag", tag.span), tuple(c[1:]), self.b.span(meta), tag)
 
@@ -367,14 +367,14 @@ def _transformer_class():
             length = None if c[1] is None else self.b.string(c[1])
             return ast.ReplyTable(ast.Ident("tag", tag.span), tuple(c[2:]), self.b.span(meta), tag, True, length)
 
-        def reply_entry(self, meta, c):
+        def reply_entry(self, meta: Meta, c: list[Any]) -> ast.ReplyEntry:
             value, last, kind, template, until, *assigns = c
             decoding = ast.Decoding(kind, self.b.string(template), self.b.span(meta))
             actions = None if assigns == [None] else ast.Actions(tuple(assigns), self.b.span(meta))
             return ast.ReplyEntry(value, decoding, actions, self.b.span(meta), last,
                                   None if until is None else self.b.string(until))
 
-        def reply_timeout(self, meta, c):
+        def reply_timeout(self, meta: Meta, c: list[Any]) -> ast.ReplyTimeout:
             return ast.ReplyTimeout(c[0], self.b.span(meta))
 
         def replies(self, meta: object, c: list[ast.Expr]) -> ast.Replies:
@@ -386,57 +386,58 @@ def _transformer_class():
             framed = ast.Framed(self.b.ident(frame), args or (), span)
             return ast.Replies(low, span, self.b.ident(var), high, framed)
 
-        def expect(self, meta, c):
+        def expect(self, meta: Meta, c: list[Any]) -> ast.Expect:
             return ast.Expect(c[0], self.b.span(meta))
 
         def modem_lines(self, meta: object, c: list[ast.Assign]) -> ast.Lines:
             return ast.Lines(tuple(c), self.b.span(meta))
 
-        def skip_unmatched(self, meta, c):
+        def skip_unmatched(self, meta: Meta, c: list[Any]) -> ast.SkipUnmatched:
             return ast.SkipUnmatched(self.b.span(meta))
 
-        def framed(self, meta, c):
+        def framed(self, meta: Meta, c: list[Any]) -> ast.Framed:
             return ast.Framed(self.b.ident(c[0]), c[1] or (), self.b.span(meta))
 
-        def const_decl(self, meta, c):
+        def const_decl(self, meta: Meta, c: list[Any]) -> ast.ConstDecl:
             return ast.ConstDecl(self.b.ident(c[0]), c[1], self.b.span(meta), self.b.doc(meta))
 
-        def table_lit(self, meta, c):
+        def table_lit(self, meta: Meta, c: list[Any]) -> ast.TableLit:
             return ast.TableLit(tuple(x for x in c if x is not None), self.b.span(meta))
 
         def table_entry(self, meta, c):
             return (c[0], c[1])
 
-        def enum_decl(self, meta, c):
+        def enum_decl(self, meta: Meta, c: list[Any]) -> ast.EnumDecl:
             members = tuple(x for x in c[1:] if x is not None)
             return ast.EnumDecl(self.b.ident(c[0]), members, self.b.span(meta), self.b.doc(meta))
 
-        def enum_member(self, meta, c):
+        def enum_member(self, meta: Meta, c: list[Any]) -> ast.EnumMember:
             return ast.EnumMember(self.b.ident(c[0]), c[1], self.b.span(meta))
 
-        def frame_decl(self, meta, c):
+        def frame_decl(self, meta: Meta, c: list[Any]) -> ast.FrameDecl:
             return ast.FrameDecl(self.b.ident(c[0]), c[1] or (), tuple(c[2:]), self.b.span(meta), self.b.doc(meta))
 
-        def f_stuff(self, meta, c):
+        def f_stuff(self, meta: Meta, c: list[Any]) -> ast.FrameStuff:
             return ast.FrameStuff(self.b.string(c[0]), self.b.string(c[1]), self.b.span(meta))
 
-        def request_side(self, meta, c):
+        def request_side(self, meta: Meta, c: list[Any]) -> ast.FrameSide:
             return ast.FrameSide("request", tuple(c), self.b.span(meta))
 
-        def reply_side(self, meta, c):
+        def reply_side(self, meta: Meta, c: list[Any]) -> ast.FrameSide:
             return ast.FrameSide("reply", tuple(c), self.b.span(meta))
 
-        def _bytes(role):
-            def part(self, meta, c):
+        @staticmethod
+        def _bytes(role: str) -> Callable[[Any, Meta, list[Any]], ast.FrameBytes]:
+            def part(self: Any, meta: Meta, c: list[Any]) -> ast.FrameBytes:
                 return ast.FrameBytes(role, self.b.string(c[0]), self.b.span(meta))
             return part
 
         f_header, f_literal, f_terminator = _bytes("header"), _bytes("literal"), _bytes("terminator")
 
-        def f_field(self, meta, c):
+        def f_field(self, meta: Meta, c: list[Any]) -> ast.FrameField:
             return ast.FrameField(self.b.ident(c[0]), self.b.string(c[1]), c[2], self.b.span(meta))
 
-        def f_length(self, meta, c):
+        def f_length(self, meta: Meta, c: list[Any]) -> ast.FrameLength:
             fmt, sign, amount = c
             adjust = 0
             if amount is not None:
@@ -465,105 +466,107 @@ def _transformer_class():
         def f_either(self, meta: Meta, c: list[object]) -> ast.FrameEither:
             return ast.FrameEither(tuple(run for run in c if isinstance(run, tuple)), self.b.span(meta))
 
-        def f_payload(self, meta, c):
+        def f_payload(self, meta: Meta, c: list[Any]) -> ast.FramePayload:
             return ast.FramePayload(self.b.span(meta))
 
-        def f_checksum(self, meta, c):
+        def f_checksum(self, meta: Meta, c: list[Any]) -> ast.FrameChecksum:
             algorithm, encoding, *options = c
             fmt = None if encoding == "hex" else self.b.string(encoding)
             return ast.FrameChecksum(self.b.string(algorithm), fmt, tuple(options), self.b.span(meta))
 
-        def c_inverted(self, meta, c):
+        def c_inverted(self, meta: Meta, c: list[Any]) -> ast.ChecksumOption:
             return ast.ChecksumOption("inverted", span=self.b.span(meta))
 
-        def c_reflect(self, meta, c):
+        def c_reflect(self, meta: Meta, c: list[Any]) -> ast.ChecksumOption:
             return ast.ChecksumOption("reflect", span=self.b.span(meta))
 
-        def c_setting(self, meta, c):
+        def c_setting(self, meta: Meta, c: list[Any]) -> ast.ChecksumOption:
             return ast.ChecksumOption(str(c[0]), c[1], span=self.b.span(meta))
 
-        def c_over(self, meta, c):
+        def c_over(self, meta: Meta, c: list[Any]) -> ast.ChecksumOption:
             names = tuple(self.b.ident(t) for t in c if t is not None)
             return ast.ChecksumOption("over", over=names, span=self.b.span(meta))
 
-        def member(self, meta, c):
+        def member(self, meta: Meta, c: list[Any]) -> ast.Member:
             return ast.Member(self.b.ident(c[0]), self.b.ident(c[1]), self.b.span(meta))
 
-        def link_decl(self, meta, c):
+        def link_decl(self, meta: Meta, c: list[Any]) -> ast.LinkDecl:
             return ast.LinkDecl(self.b.ident(c[0]), tuple(c[1:]), self.b.span(meta), self.b.doc(meta))
 
-        def visual(self, meta, c):
-            return ast.ShapeUse("visual", c[0], *c[1], self.b.span(meta))
+        def visual(self, meta: Meta, c: list[Any]) -> ast.ShapeUse:
+            at, rpy = c[1]
+            return ast.ShapeUse("visual", c[0], at, rpy, self.b.span(meta))
 
-        def collision(self, meta, c):
-            return ast.ShapeUse("collision", c[0], *c[1], self.b.span(meta))
+        def collision(self, meta: Meta, c: list[Any]) -> ast.ShapeUse:
+            at, rpy = c[1]
+            return ast.ShapeUse("collision", c[0], at, rpy, self.b.span(meta))
 
-        def shape(self, meta, c):
+        def shape(self, meta: Meta, c: list[Any]) -> ast.Shape:
             return ast.Shape(self.b.ident(c[0]), c[1] or (), self.b.span(meta))
 
-        def pose(self, meta, c):
+        def pose(self, meta: Meta, c: list[Any]) -> tuple[ast.Expr | None, ast.Expr | None]:
             return c[0], c[1]
 
-        def joint_decl(self, meta, c):
+        def joint_decl(self, meta: Meta, c: list[Any]) -> ast.JointDecl:
             name, kind, parent, child, *items = c
             return ast.JointDecl(self.b.ident(name), self.b.ident(kind), self.b.ident(parent), self.b.ident(child),
                                  tuple(items), self.b.span(meta), self.b.doc(meta))
 
-        def mass(self, meta, c):
+        def mass(self, meta: Meta, c: list[Any]) -> ast.BodyValue:
             return ast.BodyValue("mass", c[0], self.b.span(meta))
 
-        def centre(self, meta, c):
+        def centre(self, meta: Meta, c: list[Any]) -> ast.BodyValue:
             return ast.BodyValue("centre", c[0], self.b.span(meta))
 
-        def inertia(self, meta, c):
+        def inertia(self, meta: Meta, c: list[Any]) -> ast.BodyValue:
             return ast.BodyValue("inertia", c[0], self.b.span(meta))
 
-        def joint_at(self, meta, c):
+        def joint_at(self, meta: Meta, c: list[Any]) -> ast.BodyValue:
             return ast.BodyValue("at", c[0], self.b.span(meta))
 
-        def joint_rpy(self, meta, c):
+        def joint_rpy(self, meta: Meta, c: list[Any]) -> ast.BodyValue:
             return ast.BodyValue("rpy", c[0], self.b.span(meta))
 
-        def axis(self, meta, c):
+        def axis(self, meta: Meta, c: list[Any]) -> ast.BodyValue:
             return ast.BodyValue("axis", c[0], self.b.span(meta))
 
-        def max_velocity(self, meta, c):
+        def max_velocity(self, meta: Meta, c: list[Any]) -> ast.BodyValue:
             return ast.BodyValue("velocity", c[0], self.b.span(meta))
 
-        def max_effort(self, meta, c):
+        def max_effort(self, meta: Meta, c: list[Any]) -> ast.BodyValue:
             return ast.BodyValue("effort", c[0], self.b.span(meta))
 
-        def damping(self, meta, c):
+        def damping(self, meta: Meta, c: list[Any]) -> ast.BodyValue:
             return ast.BodyValue("damping", c[0], self.b.span(meta))
 
-        def friction(self, meta, c):
+        def friction(self, meta: Meta, c: list[Any]) -> ast.BodyValue:
             return ast.BodyValue("friction", c[0], self.b.span(meta))
 
-        def limit(self, meta, c):
+        def limit(self, meta: Meta, c: list[Any]) -> ast.JointLimit:
             return ast.JointLimit(c[0], c[1], self.b.span(meta))
 
-        def transmission_decl(self, meta, c):
+        def transmission_decl(self, meta: Meta, c: list[Any]) -> ast.TransmissionDecl:
             return ast.TransmissionDecl(self.b.ident(c[0]), self.b.ident(c[1]), tuple(c[2:]), self.b.span(meta),
                                         self.b.doc(meta))
 
-        def command(self, meta, c):
+        def command(self, meta: Meta, c: list[Any]) -> ast.Binding:
             quantity, target, member, index, *conversions = c
             return ast.Binding("command", self.b.ident(quantity), self.b.ident(target), self.b.ident(member), index,
                                tuple(conversions), self.b.span(meta))
 
-        def measure(self, meta, c):
+        def measure(self, meta: Meta, c: list[Any]) -> ast.Binding:
             quantity, target, index, *conversions = c
             return ast.Binding("measure", self.b.ident(quantity), self.b.ident(target), None, index,
                                tuple(conversions), self.b.span(meta))
 
-        def input_decl(self, meta, c):
+        def input_decl(self, meta: Meta, c: list[Any]) -> ast.InputDecl:
             call_span = self.b.token_span(c[2])
             if c[3]:
                 call_span = call_span.to(c[3][-1].span)
             call = ast.Call(self.b.ident(c[2]), c[3] or (), call_span)
             return ast.InputDecl(self.b.ident(c[0]), self.b.ident(c[1]), call, self.b.span(meta), self.b.doc(meta))
 
-        def output_decl(self, meta, c):
+        def output_decl(self, meta: Meta, c: list[Any]) -> ast.OutputDecl:
             return ast.OutputDecl(
                 self.b.ident(c[0]), self.b.ident(c[1]), tuple(c[2:]), self.b.span(meta), self.b.doc(meta)
             )
@@ -571,14 +574,14 @@ def _transformer_class():
         def params(self, meta, c):
             return tuple(x for x in c if x is not None)
 
-        def param(self, meta, c):
+        def param(self, meta: Meta, c: list[Any]) -> ast.Param:
             unit = None if c[4] is None else self.b.string(c[4])
             return ast.Param(self.b.ident(c[0]), self.b.type_ref(c[1]), self.b.span(meta), c[2], c[3], c[5], unit)
 
         def args(self, meta, c):
             return tuple(x for x in c if x is not None)
 
-        def duration(self, meta, c):
+        def duration(self, meta: Meta, c: list[Any]) -> ast.Duration:
             return ast.Duration(c[0], c[1], self.b.span(meta))
 
         # -- keyword groups: the word itself --
@@ -625,7 +628,7 @@ def _transformer_class():
             items = c[0] or ()
             return self.b.nested(ast.ArrayLit(items, self.b.span(meta)), *items)
 
-        def int_lit(self, meta, c):
+        def int_lit(self, meta: Meta, c: list[Any]) -> ast.IntLit:
             value = _int_value(str(c[0]))
             span = self.b.span(meta)
             if value is None:
@@ -637,7 +640,7 @@ def _transformer_class():
                 value = 0
             return ast.IntLit(value, span)
 
-        def float_lit(self, meta, c):
+        def float_lit(self, meta: Meta, c: list[Any]) -> ast.FloatLit:
             span = self.b.span(meta)
             try:
                 value = float(str(c[0]))
@@ -654,10 +657,10 @@ def _transformer_class():
         def bytes_lit(self, meta: object, c: list[Token]) -> ast.BytesLit:
             return self.b.bytes_literal(c[0])
 
-        def bool_lit(self, meta, c):
+        def bool_lit(self, meta: Meta, c: list[Any]) -> ast.BoolLit:
             return ast.BoolLit(str(c[0]) == "True", self.b.span(meta))
 
-        def name(self, meta, c):
+        def name(self, meta: Meta, c: list[Any]) -> ast.Ref:
             return ast.Ref(str(c[0]), self.b.span(meta))
 
     return Transformer
