@@ -76,11 +76,29 @@ class _Tokens:
 def compile_path(path: str) -> Compilation:
     """Check one description (.rdis or .json) and build its Model."""
     diagnostics = Diagnostics()
+    text = read_text(path, diagnostics)
+    if text is None:
+        return Compilation(None, diagnostics, Sources())
+    return compile_text(path, text, diagnostics)
+
+
+def compile_text(path: str, text: str, diagnostics: Diagnostics | None = None) -> Compilation:
+    """Check a description given as text, named `path` (.json for the JSON importer): a ROS
+    node rebuilds its Model for `~sim` from the canonical JSON it embeds, with no file."""
+    diagnostics = diagnostics if diagnostics is not None else Diagnostics()
     sources = Sources()
-    units: list[Unit] = []
-    main = _load(path, diagnostics, sources, units)
+    sources.add(path, text)
+    tokens = _Tokens()
+    if path.endswith(".json"):
+        from rdisc.syntax.json_import import read
+
+        main = read(path, text, diagnostics)
+    else:
+        main = tokens.parse(path, text, diagnostics)
     if main is None:
         return Compilation(None, diagnostics, sources)
+    units: list[Unit] = []
+    _add_unit(main, True, diagnostics, sources, units, tokens)
     return _analyse(units, diagnostics, sources, main)
 
 
@@ -96,24 +114,6 @@ def _analyse(units: list[Unit], diagnostics: Diagnostics, sources: Sources, main
     model = check(units, symbols, diagnostics)
     budgets = budget(model, diagnostics) if model is not None else []
     return Compilation(model, diagnostics, sources, budgets, main)
-
-
-def _load(path: str, diagnostics: Diagnostics, sources: Sources, units: list[Unit]) -> ast.Module | None:
-    text = read_text(path, diagnostics)
-    if text is None:
-        return None
-    sources.add(path, text)
-    tokens = _Tokens()
-    if path.endswith(".json"):
-        from rdisc.syntax.json_import import read
-
-        module = read(path, text, diagnostics)
-    else:
-        module = tokens.parse(path, text, diagnostics)
-    if module is None:
-        return None
-    _add_unit(module, True, diagnostics, sources, units, tokens)
-    return module
 
 
 def _add_unit(main: ast.Module, is_main: bool, diagnostics: Diagnostics, sources: Sources, units: list[Unit],

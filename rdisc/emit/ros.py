@@ -22,7 +22,9 @@ while the arm stands still, and the engine needs no hook of its own for the node
 from __future__ import annotations
 
 from collections.abc import Mapping
+from pathlib import PurePath
 
+from rdisc.emit.canonical import to_json
 from rdisc.emit.python import class_name, to_python
 from rdisc.emit.python_expr import Compiler, quoted
 from rdisc.emit.urdf import to_urdf
@@ -55,14 +57,14 @@ def _ros_check_installed(messages: tuple[tuple[str, str], ...]) -> None:
         if not any(os.path.isfile(os.path.join(place, "msg", f"_{message}.py")) for place in places):
             missing.append(f"{package}/{message} is not a ROS message here: install its package")
     if missing:
-        _ros_refuse(missing)
+        raise _ros_refuse(missing)
 
 
-def _ros_refuse(problems: list[str]) -> None:
-    """Say why the node cannot start, on stderr, and end with exit status 2."""
+def _ros_refuse(problems: list[str]) -> SystemExit:
+    """Say why the node cannot start, on stderr: raise what it gives to end with exit status 2."""
     prog = os.path.basename(sys.argv[0])
     print("\\n".join(f"{prog}: {problem}" for problem in problems), file=sys.stderr)
-    raise SystemExit(2)
+    return SystemExit(2)
 
 
 def _ros_item(items: Any, index: int) -> Any:
@@ -100,7 +102,7 @@ def to_ros(model: m.Model, source_name: str, *, sources: Mapping[str, SourceFile
             + 'if __name__ == "__main__":\n    sys.exit(ros_main())\n')
 
 
-_IGNORE = "  # type: ignore[import-not-found, import-untyped, unused-ignore]"  # Debian's ROS has no types
+_IGNORE = "  # type: ignore[import-not-found, import-untyped, unused-ignore]"  # Debian's ROS (and rdisc) have no types
 
 
 class _Bridge:
@@ -155,8 +157,10 @@ class _Bridge:
         with w.indented():
             w.lines([quoted(line) for line in to_urdf(self.model, self.source_name).splitlines(keepends=True)])
         w.line(")")
+        self.simulation(w)
         if not self.measured:
             return
+        w.blank(2)
         w.lines(["_ROS_JOINTS = (", *(f"    {quoted(joint)}," for joint, _ in self.measured), ")"])
         w.blank(2)
         quantities = [q for q in m.Quantity if any(q in measures for _, measures in self.measured)]
@@ -183,6 +187,47 @@ class _Bridge:
                     w.line("],")
             w.line(")")
 
+    def simulation(self, w: Writer) -> None:
+        """The description as canonical JSON, and the simulation `~sim` builds from it: the node
+        carries no .rdis file, and rdisc and MuJoCo are needed only when it simulates."""
+        w.blank(2)
+        w.line(f"# The description, as `rdisc build {self.source_name}` writes it: `~sim` checks it again for its body.")
+        w.line("_ROS_CANONICAL = (")
+        with w.indented():
+            w.lines([quoted(line) for line in to_json(self.model).splitlines(keepends=True)])
+        w.line(")")
+        w.blank(2)
+        with w.block("def _ros_simulation() -> Simulator:"):
+            w.line('"""The MuJoCo simulation of the body on the wall clock (`rdisc sim --realtime`\'s), in place of')
+            w.line("the device (`~sim`): rdisc rebuilds the Model from _ROS_CANONICAL. Only here are rdisc and")
+            w.line('MuJoCo imported; without either the node says which, and ends with exit status 2."""')
+            w.line("import importlib.util")
+            w.blank()
+            w.lines([
+                "missing = [f\"~sim needs {name}, which {sys.executable} cannot import: {hint}\" for name, module, hint in (",
+                "    (\"rdisc\", \"rdisc\", \"put rdisc on PYTHONPATH, or pip install 'rdisc[sim]'\"),",
+                '    ("MuJoCo", "mujoco", "pip install mujoco"),',
+                ") if importlib.util.find_spec(module) is None]",
+                "if missing:",
+                "    raise _ros_refuse(missing)",
+                "try:  # an rdisc found whose own dependencies are not",
+                *(f"    {line}{_IGNORE}" for line in ("from rdisc.compile import compile_text",
+                                                      "from rdisc.diagnostics import Severity",
+                                                      "from rdisc.sim import Simulation")),
+                "except ImportError as err:",
+                '    raise _ros_refuse([f"~sim: rdisc does not load here: {err}"]) from None',
+                f"compilation = compile_text({quoted(_json_name(self.source_name))}, _ROS_CANONICAL)",
+                "errors = [f\"{d.code} {d.message}\" for d in compilation.diagnostics.sorted() if d.severity == Severity.ERROR]",
+                "if compilation.model is None or errors:",
+                '    raise _ros_refuse([f"~sim: this rdisc does not take the description the node was made from: {error}"',
+                '                       for error in errors or ["no model"]])',
+                "try:",
+                "    simulation: Simulator = Simulation(compilation.model, realtime=True)",
+                "except (ImportError, ValueError) as err:  # a MuJoCo that does not load, or refuses the body",
+                '    raise _ros_refuse([f"~sim: MuJoCo does not simulate the body: {err}"]) from None',
+                "return simulation",
+            ])
+
     def main(self, w: Writer) -> None:
         adapters = [a for _, a in self.inputs] + [a for _, a in self.outputs]
         named = [(package, message) for package, _, message in (a.ros.partition("/") for a in adapters if a.ros)]
@@ -199,7 +244,7 @@ class _Bridge:
             with w.block("try:  # a ROS found but broken (a module of its own missing) is refused, too"):
                 w.lines([line + _IGNORE for line in sorted([*imports, "import rospy"])])
             with w.block("except ImportError as err:"):
-                w.line('_ros_refuse([f"ROS 1 does not load here: {err}"])')
+                w.line('raise _ros_refuse([f"ROS 1 does not load here: {err}"]) from None')
             w.blank()
             w.line("rospy.init_node(ROBOT)")
             if self.model.links:
@@ -212,7 +257,14 @@ class _Bridge:
                     f'joint_states_rate = rospy.get_param("~joint_states_rate", {_rate(self.model)!r})',
                     "if isinstance(joint_states_rate, bool) or not isinstance(joint_states_rate, (int, float)) \\",
                     "        or not 0 < joint_states_rate <= 1000:",
-                    '    _ros_refuse([f"~joint_states_rate is {joint_states_rate!r}: give Hz, above 0, at most 1000"])',
+                    '    raise _ros_refuse([f"~joint_states_rate is {joint_states_rate!r}: give Hz, above 0, at most 1000"])',
+                ])
+            if self.model.links:
+                w.lines([
+                    'sim = rospy.get_param("~sim", False)',
+                    "if not isinstance(sim, bool):",
+                    '    raise _ros_refuse([f"~sim is {sim!r}: give true (simulate the body) or false (the device)"])',
+                    "simulation = _ros_simulation() if sim else None",
                 ])
             w.line("ros_signal = signal.getsignal(signal.SIGINT)  # rospy's: shuts the node down, logging as it goes")
             w.blank()
@@ -273,12 +325,13 @@ class _Bridge:
                     "robot.on_error(on_error)",
                     'if rospy.get_param("~trace", False):',
                     "    robot.on_io(on_io)",
-                    "robot.open(ports, settings=settings)",
+                    f"robot.open(ports, settings=settings{', sim=simulation' if self.model.links else ''})",
                 ])
             else:
                 w.lines([
                     'robot = connect(ports, timeout=float(rospy.get_param("~timeout", 1.0)), on_output=on_output,',
-                    '                on_error=on_error, on_io=on_io if rospy.get_param("~trace", False) else None)',
+                    '                on_error=on_error, on_io=on_io if rospy.get_param("~trace", False) else None'
+                    + (", sim=simulation)" if self.model.links else ")"),
                 ])
             w.line("rospy.on_shutdown(robot.close)")
             w.blank()
@@ -331,6 +384,11 @@ def _rate(model: m.Model) -> float:
     owners = {model.owner(i) for i in model.interfaces.values() if i.periodic}
     rates = [c.frequency_hz for name, c in model.connections.items() if name in owners and c.frequency_hz > 0]
     return float(max(rates, default=10.0))
+
+
+def _json_name(source_name: str) -> str:
+    """The name the embedded JSON is checked under: the description's, ending .json for the JSON importer."""
+    return str(PurePath(source_name).with_suffix(".json").name)
 
 
 def _name(name: str) -> str:

@@ -15,7 +15,8 @@ from pathlib import Path
 
 import pytest
 
-from rdisc.compile import compile_path
+from rdisc.compile import compile_path, compile_text
+from rdisc.emit.canonical import to_json
 from rdisc.emit.python import to_python
 from rdisc.emit.ros import to_ros
 from rdisc.emit.urdf import to_urdf
@@ -228,3 +229,39 @@ def test_the_node_of_a_body_is_clean_for_ruff_and_mypy_strict(tmp_path: Path) ->
         done = subprocess.run([sys.executable, "-m", *command, str(path)], capture_output=True, text=True,
                               check=False, cwd=tmp_path)
         assert done.returncode == 0, done.stdout + done.stderr
+
+
+def test_a_body_s_node_can_simulate_it_from_the_json_it_carries(tmp_path: Path) -> None:
+    """For `~sim` the node carries the description as `rdisc build` writes it; rdisc's JSON
+    importer rebuilds the same Model from it (its canonical JSON again byte for byte), and the
+    node's `_ros_simulation` makes the MuJoCo simulation of that body on the wall clock."""
+    pytest.importorskip("mujoco")
+    compilation = compile_path(str(REPO / "examples" / "create2.rdis"))
+    assert compilation.model is not None
+    path = tmp_path / "create2_node.py"
+    path.write_text(to_ros(compilation.model, "create2.rdis", sources=compilation.sources), encoding="utf-8")
+    spec = importlib.util.spec_from_file_location("create2_node", path)
+    assert spec is not None and spec.loader is not None
+    module = importlib.util.module_from_spec(spec)
+    sys.modules["create2_node"] = module  # dataclasses look their module up by name
+    try:
+        spec.loader.exec_module(module)
+        assert module._ROS_CANONICAL == to_json(compilation.model)
+        again = compile_text("create2.json", module._ROS_CANONICAL)
+        assert again.model is not None and not again.diagnostics.items
+        assert to_json(again.model) == module._ROS_CANONICAL
+        simulation = module._ros_simulation()
+    finally:
+        del sys.modules["create2_node"]
+    assert (simulation.realtime, list(simulation.model.joints)) == (True, list(compilation.model.joints))
+    node = path.read_text(encoding="utf-8")
+    assert ('    sim = rospy.get_param("~sim", False)\n'
+            '    if not isinstance(sim, bool):\n'
+            '        raise _ros_refuse([f"~sim is {sim!r}: give true (simulate the body) or false (the device)"])\n'
+            '    simulation = _ros_simulation() if sim else None\n') in node
+    assert "on_io=on_io if rospy.get_param(\"~trace\", False) else None, sim=simulation)\n" in node
+
+
+def test_a_node_without_a_body_has_nothing_to_simulate() -> None:
+    node = _node("create")[0]
+    assert "~sim" not in node and "_ROS_CANONICAL" not in node and "rdisc" not in node.split("def ros_main")[1]

@@ -1,9 +1,9 @@
-"""Print each message on `joint_states` (`listen.py joint_states`) or `/tf` (`listen.py tf`)
-as one JSON line, for the body's tests. Run by the system python3.
+"""Print each message on `joint_states` (`listen.py joint_states`), `/tf` (`listen.py tf`) or
+`odom` (`listen.py odom`) as one JSON line, for the body's tests. Run by the system python3.
 
 A JointState is its names, position, velocity and effort (NaN, which JSON lacks, as null)
 and its stamp in seconds; a TFMessage is one line per transform: parent and child frame,
-translation and rotation (x, y, z, w). It ends by itself after a minute, so a test reading it
+translation and rotation (x, y, z, w); an Odometry is its position's x and y. It ends by itself after a minute, so a test reading it
 until some message never waits longer."""
 
 import json
@@ -11,6 +11,7 @@ import math
 import sys
 
 import rospy
+from nav_msgs.msg import Odometry
 from sensor_msgs.msg import JointState
 from tf2_msgs.msg import TFMessage
 
@@ -32,10 +33,17 @@ def transforms(msg: TFMessage) -> None:
               flush=True)
 
 
+def odometry(msg: Odometry) -> None:
+    where = msg.pose.pose.position
+    print(json.dumps({"x": where.x, "y": where.y}), flush=True)
+
+
 rospy.init_node("rdisc_listen", anonymous=True)
 rospy.Timer(rospy.Duration(60), lambda _event: rospy.signal_shutdown("a minute has passed"), oneshot=True)
 if sys.argv[1] == "tf":
     rospy.Subscriber("/tf", TFMessage, transforms, queue_size=100)
+elif sys.argv[1] == "odom":
+    rospy.Subscriber("odom", Odometry, odometry, queue_size=100)
 else:
     rospy.Subscriber("joint_states", JointState, joint_state, queue_size=100)
 rospy.spin()

@@ -10,6 +10,7 @@ started here is stopped here.
 
 from __future__ import annotations
 
+import importlib.util
 import json
 import math
 import os
@@ -18,6 +19,7 @@ import shutil
 import signal
 import socket
 import subprocess
+import sysconfig
 import termios
 import time
 from collections.abc import Callable, Iterator
@@ -391,3 +393,87 @@ def test_a_joint_states_rate_that_is_no_rate_stops_the_node(ros_env: dict[str, s
                              capture_output=True, text=True, check=False, timeout=60)
     assert (refused.returncode, refused.stderr.splitlines()[-1:]) == (
         2, ["arm_node.py: ~joint_states_rate is 0: give Hz, above 0, at most 1000"]), refused.stderr
+
+
+CREATE2 = REPO / "examples" / "create2.rdis"
+
+
+@pytest.fixture(scope="module")
+def create2_node(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    path = tmp_path_factory.mktemp("create2") / "create2_node.py"
+    done = subprocess.run(["python", "-m", "rdisc", "emit-ros", str(CREATE2), "-o", str(path)], cwd=REPO,
+                          capture_output=True, text=True, check=False)
+    assert done.returncode == 0, done.stderr
+    return path
+
+
+def _with_rdisc(ros_env: dict[str, str], *places: str) -> dict[str, str]:
+    """ros_env with `places` first on the system python3's path (Debian's rospy and messages still found after)."""
+    return dict(ros_env, PYTHONPATH=os.pathsep.join(places))
+
+
+def test_sim_true_drives_the_simulated_body_from_a_twist(ros_env: dict[str, str], create2_node: Path) -> None:
+    """`_sim:=true`: the Create 2's node runs against the MuJoCo simulation of its body, on the
+    system python3 given this python's rdisc and MuJoCo through PYTHONPATH (the work tree, as
+    an editable install is a .pth file PYTHONPATH does not read, then this python's
+    site-packages: the same minor version, so MuJoCo's and numpy's compiled modules load). A
+    Twist on set_velocity turns the simulated wheels: odom's x grows, y stays near 0, and
+    joint_states reads the wheels turning, as from the device."""
+    if importlib.util.find_spec("mujoco") is None:
+        if os.environ.get("CI") == "true":
+            pytest.fail("MuJoCo is required under CI (pip install '.[test]')", pytrace=False)
+        pytest.skip("MuJoCo is not installed (pip install mujoco)")
+    env = _with_rdisc(ros_env, str(REPO), sysconfig.get_paths()["purelib"])
+    node = subprocess.Popen([PYTHON3, str(create2_node), "_sim:=true"], env=env, stdout=subprocess.PIPE,
+                            stderr=subprocess.STDOUT, text=True)
+    listeners = [_listen(ros_env, "odom"), _listen(ros_env, "joint_states")]
+    twists = subprocess.Popen([PYTHON3, str(HERE / "twists.py")], env=ros_env, stdin=subprocess.PIPE,
+                              stdout=subprocess.PIPE, text=True)
+    try:
+        assert twists.stdout is not None and twists.stdin is not None
+        assert twists.stdout.readline().strip() == "ready"  # the node subscribed
+        twists.stdin.write("0.2 0\n")
+        twists.stdin.flush()
+        assert twists.stdout.readline().startswith("sent ")
+        odometry = _until(listeners[0], lambda m: m["x"] > 0.1)
+        xs = [m["x"] for m in odometry]
+        assert xs == sorted(xs) and all(abs(m["y"]) < 0.005 for m in odometry), odometry[-5:]
+        wheels = _until(listeners[1], lambda m: min(m["position"]) > 1.0)  # rad: 36 mm of travel each
+        assert wheels[-1]["name"] == ["left_wheel_joint", "right_wheel_joint"]
+    finally:
+        if twists.stdin is not None:
+            twists.stdin.close()
+        for process in (twists, *listeners):
+            _stop(process, signal.SIGTERM)
+        output = _stop(node)
+    assert node.returncode == 0, output
+
+
+PROG = "create2_node.py"
+SIM_MISSING = {
+    "neither": ((), [(f"{PROG}: ~sim needs rdisc, which {PYTHON3} cannot import: put rdisc on PYTHONPATH, "
+                      "or pip install 'rdisc[sim]'"),
+                     f"{PROG}: ~sim needs MuJoCo, which {PYTHON3} cannot import: pip install mujoco"]),
+    "no MuJoCo": ((str(REPO),), [f"{PROG}: ~sim needs MuJoCo, which {PYTHON3} cannot import: pip install mujoco"]),
+}
+
+
+@pytest.mark.parametrize(("places", "said"), SIM_MISSING.values(), ids=SIM_MISSING.keys())
+def test_sim_true_without_rdisc_or_mujoco_says_which_and_exits_2(ros_env: dict[str, str], create2_node: Path,
+                                                                  places: tuple[str, ...], said: list[str]) -> None:
+    probe = "import importlib.util as u; print(u.find_spec('rdisc') is None, u.find_spec('mujoco') is None)"
+    here = subprocess.run([PYTHON3, "-c", probe], env=_with_rdisc(ros_env, *places), cwd=create2_node.parent,
+                          capture_output=True, text=True, check=True).stdout.split()  # not the work tree's rdisc
+    if here != ["False" if places else "True", "True"]:
+        pytest.skip(f"{PYTHON3} has rdisc or MuJoCo installed of its own")
+    refused = subprocess.run([PYTHON3, str(create2_node), "_sim:=true"], env=_with_rdisc(ros_env, *places),
+                             capture_output=True, text=True, check=False, timeout=60)
+    assert (refused.returncode, refused.stderr.splitlines()[-len(said):]) == (2, said), refused.stderr
+    assert "Traceback" not in refused.stderr
+
+
+def test_a_sim_that_is_no_bool_stops_the_node(ros_env: dict[str, str], create2_node: Path) -> None:
+    refused = subprocess.run([PYTHON3, str(create2_node), "_sim:=1"], env=ros_env, capture_output=True, text=True,
+                             check=False, timeout=60)
+    assert (refused.returncode, refused.stderr.splitlines()[-1:]) == (
+        2, [f"{PROG}: ~sim is 1: give true (simulate the body) or false (the device)"]), refused.stderr
