@@ -7,6 +7,7 @@ import sys
 from collections.abc import Callable, Iterable
 
 from rdisc.compile import Compilation, compile_path
+from rdisc.semantics.model import Model
 
 EXIT_OK, EXIT_ERRORS, EXIT_USAGE = 0, 1, 2
 
@@ -51,6 +52,16 @@ def write(text: str, path: str | None, inputs: Iterable[str] = ()) -> int:
         print(f"rdisc: cannot write {path}: {err.strerror or err}", file=sys.stderr)
         return EXIT_USAGE
     return EXIT_OK
+
+
+def checked_model(path: str) -> Model | int:
+    """The model of a description that checks without errors, its warnings shown; else the
+    exit status once its diagnostics are: the start of every verb that runs a description."""
+    compilation = compile_path(path)
+    show([compilation])
+    if compilation.model is None or compilation.diagnostics.has_errors():
+        return exit_code([compilation]) or EXIT_ERRORS
+    return compilation.model
 
 
 def compile_and_write(path: str, output: str | None, render: Callable[[Compilation], str]) -> int:

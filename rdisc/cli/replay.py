@@ -11,8 +11,7 @@ import argparse
 import sys
 from typing import Any
 
-from rdisc.cli.output import EXIT_ERRORS, EXIT_USAGE, exit_code, show
-from rdisc.compile import compile_path
+from rdisc.cli.output import EXIT_ERRORS, EXIT_USAGE, checked_model
 from rdisc.runtime import engine
 
 
@@ -30,13 +29,12 @@ def add_parser(verbs: Any) -> None:  # argparse's subparsers
 def run(args: argparse.Namespace) -> int:
     from rdisc.runtime.replay import RecordingError, differences, read_recording, replay
 
-    compilation = compile_path(args.file)
-    show([compilation])
-    if compilation.model is None or compilation.diagnostics.has_errors():
-        return exit_code([compilation]) or EXIT_ERRORS
+    model = checked_model(args.file)
+    if isinstance(model, int):
+        return model
     from rdisc.runtime.device import Description
 
-    device = Description(compilation.model).device
+    device = Description(model).device
     try:
         recorded = read_recording(args.recording)
     except RecordingError as err:

@@ -15,8 +15,7 @@ from __future__ import annotations
 
 import argparse
 
-from rdisc.cli.output import EXIT_ERRORS, exit_code, show
-from rdisc.compile import compile_path
+from rdisc.cli.output import checked_model
 from rdisc.runtime import engine
 
 
@@ -31,11 +30,10 @@ def add_parser(verbs) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    compilation = compile_path(args.file)
-    show([compilation])
-    if compilation.model is None or compilation.diagnostics.has_errors():
-        return exit_code([compilation]) or EXIT_ERRORS
+    model = checked_model(args.file)
+    if isinstance(model, int):
+        return model
     from rdisc.runtime.device import Description
 
-    robot = engine.Robot(Description(compilation.model).device, timeout=args.timeout)
+    robot = engine.Robot(Description(model).device, timeout=args.timeout)
     return engine.run_command(args, robot, "rdisc run")

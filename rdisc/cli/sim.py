@@ -17,8 +17,7 @@ import argparse
 import sys
 from typing import TYPE_CHECKING
 
-from rdisc.cli.output import EXIT_ERRORS, EXIT_USAGE, exit_code, show
-from rdisc.compile import compile_path
+from rdisc.cli.output import EXIT_USAGE, checked_model
 from rdisc.runtime import engine
 
 if TYPE_CHECKING:
@@ -61,11 +60,9 @@ def simulation(model: Model, path: str, prog: str, *, seed: int | None, realtime
 
 
 def run(args: argparse.Namespace) -> int:
-    compilation = compile_path(args.file)
-    show([compilation])
-    model = compilation.model
-    if model is None or compilation.diagnostics.has_errors():
-        return exit_code([compilation]) or EXIT_ERRORS
+    model = checked_model(args.file)
+    if isinstance(model, int):
+        return model
     simulated = simulation(model, args.file, "rdisc sim", seed=args.seed, realtime=args.realtime)
     if simulated is None:
         return EXIT_USAGE
