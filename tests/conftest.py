@@ -130,6 +130,32 @@ def run_rdisc(
     )
 
 
+def start_console(*args: str | os.PathLike[str]) -> tuple[subprocess.Popen[str], str, str]:
+    """`rdisc console ARGS --http 127.0.0.1:0`: the process, the line it prints once it listens
+    (after the startup hooks) and the address in it."""
+    process = subprocess.Popen([sys.executable, "-m", "rdisc", "console", *map(str, args), "--http", "127.0.0.1:0"],
+                               cwd=REPO, env=cli_env(), stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    assert process.stdout is not None
+    line = process.stdout.readline()
+    found = re.search(r"http://127\.0\.0\.1:\d+/", line)
+    if found is None:
+        process.kill()
+        raise AssertionError(f"no address printed: {line!r} {process.communicate()}")
+    return process, line, found.group(0)
+
+
+def stop_process(process: subprocess.Popen[str], signum: int) -> tuple[int, str]:
+    """Signal a process; its exit status and what it printed on stderr (killed if not ended in 60 s)."""
+    process.send_signal(signum)
+    try:
+        _, stderr = process.communicate(timeout=60)
+    finally:
+        if process.poll() is None:
+            process.kill()
+            process.communicate()
+    return process.returncode, stderr
+
+
 def check_text(folder: Path, text: str, name: str = "d.rdis") -> tuple[Path, subprocess.CompletedProcess[str]]:
     """Write `text` as a description in `folder` and run `rdisc check` on it."""
     source = folder / name

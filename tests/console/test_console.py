@@ -9,18 +9,16 @@ from __future__ import annotations
 
 import json
 import os
-import re
 import signal
 import socket
 import struct
 import subprocess
-import sys
 from collections.abc import Iterator
 from dataclasses import dataclass
 from pathlib import Path
 
 import pytest
-from conftest import REPO, cli_env
+from conftest import REPO, start_console, stop_process
 from devices import CreateEmulator
 from devices.create import DRIVE, STOP, TABLE_4_3
 
@@ -46,28 +44,13 @@ class Running:
 
     def stop(self, signum: signal.Signals) -> tuple[int, str]:
         """Signal the console; its exit status and what it printed on stderr."""
-        self.process.send_signal(signum)
-        try:
-            _, stderr = self.process.communicate(timeout=60)
-        finally:
-            if self.process.poll() is None:
-                self.process.kill()
-                self.process.communicate()
-        return self.process.returncode, stderr
+        return stop_process(self.process, signum)
 
 
 def _console(dev: CreateEmulator, *extra: str) -> Running:
     """`rdisc console examples/create.rdis` on the emulator's pty, on a free loopback port."""
-    process = subprocess.Popen([sys.executable, "-m", "rdisc", "console", str(CREATE), "--port", dev.port,
-                                "--http", "127.0.0.1:0", *extra], cwd=REPO, env=cli_env(),
-                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    assert process.stdout is not None
-    line = process.stdout.readline()  # printed once it listens (after the startup hooks)
-    found = re.search(r"http://127\.0\.0\.1:\d+/", line)
-    if found is None:
-        process.kill()
-        raise AssertionError(f"no address printed: {line!r} {process.communicate()}")
-    return Running(dev, process, found.group(0))
+    process, _, url = start_console(CREATE, "--port", dev.port, *extra)
+    return Running(dev, process, url)
 
 
 @pytest.fixture(scope="module")
@@ -82,23 +65,33 @@ def console() -> Iterator[Running]:
             assert "Traceback" not in stderr, stderr
 
 
-@pytest.fixture(scope="module")
-def browser() -> Iterator[object]:
+def launched_chromium() -> Iterator[object]:
+    """Debian's Chromium under Playwright, for a module's `browser` fixture."""
     with playwright_api.sync_playwright() as p:
         launched = p.chromium.launch(executable_path=str(CHROMIUM), args=["--no-sandbox"])
         yield launched
         launched.close()
 
 
-@pytest.fixture
-def page(browser, console: Running):
+def opened_page(browser, url: str) -> Iterator[object]:
+    """A page of its own at the console's `url`, once its WebSocket is connected."""
     context = browser.new_context()
     opened = context.new_page()
     opened.set_default_timeout(WAIT_MS)
-    opened.goto(console.url)
+    opened.goto(url)
     playwright_api.expect(opened.locator("[data-rdis-status]")).to_have_text("connected", timeout=WAIT_MS)
     yield opened
     context.close()
+
+
+@pytest.fixture(scope="module")
+def browser() -> Iterator[object]:
+    yield from launched_chromium()
+
+
+@pytest.fixture
+def page(browser, console: Running):
+    yield from opened_page(browser, console.url)
 
 
 def _drive_bytes(velocity: int, radius: int) -> bytes:

@@ -10,17 +10,15 @@ other wait is for a condition, with a generous timeout."""
 from __future__ import annotations
 
 import json
-import re
 import signal
 import socket
 import subprocess
-import sys
 from collections.abc import Iterator
 
 import pytest
-from conftest import REPO, cli_env
+from conftest import REPO, start_console, stop_process
 
-from console.test_console import CHROMIUM, WAIT_MS
+from console.test_console import CHROMIUM, WAIT_MS, launched_chromium, opened_page
 
 pytest.importorskip("mujoco")
 playwright_api = pytest.importorskip("playwright.sync_api")
@@ -33,29 +31,9 @@ POLLS = 300  # reads of the page's odometry, 50 ms apart: the robot needs some 2
 
 def _console(*extra: str) -> tuple[subprocess.Popen[str], str]:
     """`rdisc console examples/create2.rdis --sim` on a free loopback port, and its address."""
-    process = subprocess.Popen([sys.executable, "-m", "rdisc", "console", str(CREATE2), "--sim", "--http",
-                                "127.0.0.1:0", *extra], cwd=REPO, env=cli_env(),
-                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    assert process.stdout is not None
-    line = process.stdout.readline()  # printed once it listens (after the startup hooks)
-    found = re.search(r"http://127\.0\.0\.1:\d+/", line)
-    if found is None:
-        process.kill()
-        raise AssertionError(f"no address printed: {line!r} {process.communicate()}")
+    process, line, url = start_console(CREATE2, "--sim", *extra)
     assert line.startswith("rdisc console: create2, simulated, on "), line
-    return process, found.group(0)
-
-
-def _stop(process: subprocess.Popen[str], signum: signal.Signals) -> tuple[int, str]:
-    """Signal the console; its exit status and what it printed on stderr."""
-    process.send_signal(signum)
-    try:
-        _, stderr = process.communicate(timeout=60)
-    finally:
-        if process.poll() is None:
-            process.kill()
-            process.communicate()
-    return process.returncode, stderr
+    return process, url
 
 
 @pytest.fixture(scope="module")
@@ -64,28 +42,19 @@ def console() -> Iterator[str]:
     try:
         yield url
     finally:
-        status, stderr = _stop(process, signal.SIGTERM)
+        status, stderr = stop_process(process, signal.SIGTERM)
         assert status == 143, stderr
         assert "Traceback" not in stderr, stderr
 
 
 @pytest.fixture(scope="module")
 def browser() -> Iterator[object]:
-    with playwright_api.sync_playwright() as p:
-        launched = p.chromium.launch(executable_path=str(CHROMIUM), args=["--no-sandbox"])
-        yield launched
-        launched.close()
+    yield from launched_chromium()
 
 
 @pytest.fixture
 def page(browser, console: str):
-    context = browser.new_context()
-    opened = context.new_page()
-    opened.set_default_timeout(WAIT_MS)
-    opened.goto(console)
-    playwright_api.expect(opened.locator("[data-rdis-status]")).to_have_text("connected", timeout=WAIT_MS)
-    yield opened
-    context.close()
+    yield from opened_page(browser, console)
 
 
 def test_set_velocity_from_the_form_moves_the_simulated_odometry(page) -> None:

@@ -6,7 +6,6 @@ its WebSocket as a page of its own address drives it (no browser); every wait is
 from __future__ import annotations
 
 import json
-import re
 import signal
 import subprocess
 import sys
@@ -14,7 +13,7 @@ from pathlib import Path
 from typing import Any
 
 import pytest
-from conftest import REPO, cli_env
+from conftest import cli_env, start_console, stop_process
 from devices import CreateEmulator
 from mcap.reader import make_reader
 from mcap_ros2.decoder import DecoderFactory
@@ -173,26 +172,16 @@ def call(page, ident: int, kind: str, name: str, **values: str) -> dict:
 def test_the_consoles_page_calls_are_recorded_as_the_hosts(rdisc, tmp_path) -> None:
     path = tmp_path / "console.mcap"
     with CreateEmulator() as dev:
-        process = subprocess.Popen([sys.executable, "-m", "rdisc", "console", str(CREATE), "--port", dev.port,
-                                    "--http", "127.0.0.1:0", "--record", str(path)], cwd=REPO, env=cli_env(),
-                                   stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        process, _, url = start_console(CREATE, "--port", dev.port, "--record", path)
         try:
-            assert process.stdout is not None
-            found = re.search(r"http://127\.0\.0\.1:(\d+)/", process.stdout.readline())
-            assert found is not None
-            with connect(f"ws://127.0.0.1:{found.group(1)}/ws", origin=found.group(0).rstrip("/"),
-                         compression=None) as page:
+            with connect(f"{url.replace('http', 'ws', 1)}ws", origin=url.rstrip("/"), compression=None) as page:
                 assert call(page, 1, "input", "set_velocity", linear="0.2", angular="0")["ok"] is True
                 refused = call(page, 2, "primitive", "drive", velocity="100000", radius="0")
                 assert refused["ok"] is False
             dev.wait_for_commands(1, opcode=137)
-            process.send_signal(signal.SIGINT)
-            _, stderr = process.communicate(timeout=60)
         finally:
-            if process.poll() is None:
-                process.kill()
-                process.communicate()
-    assert process.returncode == 130, stderr
+            status, stderr = stop_process(process, signal.SIGINT)
+    assert status == 130, stderr
     assert "Traceback" not in stderr
     found_messages = messages(path)
     twists = [(schema, m.linear.x, m.angular.z) for topic, schema, m in found_messages if topic == "/set_velocity"]
@@ -213,28 +202,18 @@ def test_a_simulated_session_is_recorded(tmp_path: Path) -> None:
     """`rdisc console --sim --record`: the page's call, the simulated odometry and the bytes written."""
     pytest.importorskip("mujoco")
     path = tmp_path / "sim.mcap"
-    process = subprocess.Popen([sys.executable, "-m", "rdisc", "console", str(CREATE2), "--sim", "--http",
-                                "127.0.0.1:0", "--record", str(path)], cwd=REPO, env=cli_env(),
-                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    process, _, url = start_console(CREATE2, "--sim", "--record", path)
     try:
-        assert process.stdout is not None
-        found_url = re.search(r"http://127\.0\.0\.1:(\d+)/", process.stdout.readline())
-        assert found_url is not None
-        with connect(f"ws://127.0.0.1:{found_url.group(1)}/ws", origin=found_url.group(0).rstrip("/"),
-                     compression=None) as ws:
+        with connect(f"{url.replace('http', 'ws', 1)}ws", origin=url.rstrip("/"), compression=None) as ws:
             assert call(ws, 1, "input", "set_velocity", linear="0.2", angular="0")["ok"] is True
             for _ in range(1000):  # the odometry's pushes, until it has moved
                 event = json.loads(ws.recv(timeout=60))
                 if event["type"] == "output" and event["contents"]["x"] > 0.01:
                     break
             assert event["type"] == "output" and event["contents"]["x"] > 0.01, event
-        process.send_signal(signal.SIGINT)
-        _, stderr = process.communicate(timeout=60)
     finally:
-        if process.poll() is None:
-            process.kill()
-            process.communicate()
-    assert process.returncode == 130, stderr
+        status, stderr = stop_process(process, signal.SIGINT)
+    assert status == 130, stderr
     assert "Traceback" not in stderr, stderr
     found = messages(path)
     assert [(m.linear.x, m.angular.z) for topic, _, m in found if topic == "/set_velocity"] == [(0.2, 0.0)]
