@@ -13,9 +13,9 @@ from rdisc.compile import compile_path
 from rdisc.emit.python import import_driver
 from rdisc.semantics.units import UNITS, Dimension
 from tests.engine.test_one_engine import ScriptedPort, through_json
+from tests.semantics.test_body import check
 
 ROOT = Path(__file__).resolve().parents[2]
-HEAD = 'robot r { author "t" }\nconnection c: serial { baud 9600 }\n'
 # A wheel, a lift and a slide, and a device whose parameters say their units.
 BODY = (
     "link base {}\nlink wheel {}\nlink arm {}\nlink carriage {}\n"
@@ -28,17 +28,6 @@ BODY = (
     'primitive screw(at: int in 0..200 unit "mm") on c pack ">BH" (4, at)\n'
     'interface wait_for(time: float unit "s") { wheel(0) }\n'
 )
-
-
-def check(tmp_path: Path, text: str) -> list[tuple[str, str, str, str | None, list[tuple[str, str]]]]:
-    """The errors of a description, each as (code, the text it points at, message, help, labels)."""
-    text = HEAD + text
-    path = tmp_path / "units.rdis"
-    path.write_text(text, encoding="utf-8")
-    compilation = compile_path(str(path))
-    return [(d.code, text[d.span.start:d.span.end], d.message, d.help,
-             [(text[label.span.start:label.span.end], label.message) for label in d.labels])
-            for d in compilation.diagnostics.sorted() if d.severity == 1]
 
 
 def command(joint: str, quantity: str, target: str) -> str:
