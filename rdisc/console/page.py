@@ -188,7 +188,7 @@ def _facts(model: m.Model, kind: str, name: str) -> list[str]:
             facts.append(f'regex "{p.decoding.pattern}"')
         if p.frame is not None:
             facts.append(f"frame {p.frame.frame}")
-        facts += [f"sets {a.target}" for a in p.actions]
+        facts += [f"sets {a.target}" for a in p.post_actions()]
         return facts
     if kind == "interface":
         i = model.interfaces[name]

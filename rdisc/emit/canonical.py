@@ -174,8 +174,22 @@ def _primitive(x: m.Primitive) -> JsonObject:
         ("replyTable", None if x.table is None else _object(
             ("key", x.table.key or None), ("tag", x.table.tag), ("each", x.table.each or None),
             ("length", x.table.length), ("cases", [_case(c) for c in x.table.cases]))),
+        ("replyList", [_listed(r) for r in x.listed] or None),
         ("postActions", actions or None),
         ("doc", x.doc),
+    )
+
+
+def _listed(r: m.ListedReply) -> JsonObject:
+    """One reply of `replies { }`: its own frame (left out: the primitive's), decoding, expect
+    and post-actions."""
+    kind, template = ("unpack", r.decoding.format) if isinstance(r.decoding, m.Unpack) else ("regex", r.decoding.pattern)
+    actions = [line for a in r.actions for line in actions_text(a)]
+    return _object(
+        ("frame", None if r.frame is None else {"name": r.frame.frame,
+                                                 "arguments": [_embedded(a) for a in r.frame.args]}),
+        (kind, template), ("expect", None if r.expect is None else _embedded(r.expect)),
+        ("postActions", actions or None),
     )
 
 

@@ -65,6 +65,14 @@ def _primitive(model: m.Model, p: m.Primitive) -> str:
                     lines += _sides(f"sub-payload tagged {said}", None, rows)
                     continue
                 lines += _sides(f"reply tagged {said}", framed, rows)
+    elif p.listed:  # each reply its own shape, through its own frame or the primitive's
+        for n, r in enumerate(p.listed, 1):
+            use = r.frame or p.frame
+            own = model.frames[use.frame] if use is not None else None
+            through = "" if r.frame is None else \
+                f", frame {r.frame.frame}({', '.join(expression_text(a) for a in r.frame.args)})"
+            lines += _sides(f"reply {n} of {len(p.listed)}{through}", own.replies if own and own.reply else None,
+                            _reply_rows(r.decoding))
     elif p.expects_reply(model.frames):
         uses = [f"{use.frame}({', '.join(expression_text(a) for a in use.args)})" for use in p.reply_frames]
         through = f", frame {uses[0]} .. {uses[-1]}" if uses else ""

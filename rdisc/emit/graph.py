@@ -117,10 +117,14 @@ def _edges(model: m.Model) -> Iterator[tuple[str, str, str]]:
             yield f"primitive:{p.name}", f"frame:{p.frame.frame}", "frame"
         if p.reply_frames:
             yield f"primitive:{p.name}", f"frame:{p.reply_frames[0].frame}", f"{p.replies} replies"
-        actions = list(p.actions) + [a for case in (p.table.cases if p.table else ()) for a in case.actions]
+        listed = [r.frame for r in p.listed if r.frame is not None]
+        for frame in dict.fromkeys(use.frame for use in listed):
+            yield f"primitive:{p.name}", f"frame:{frame}", f"{len(p.listed)} replies"
+        actions = p.post_actions()
         for target in dict.fromkeys(a.target for a in actions):
             yield f"primitive:{p.name}", variable(target), "writes"
-        for name in _reads(*p.args, *(p.frame.args if p.frame else ()), *(a for use in p.reply_frames for a in use.args),
+        for name in _reads(*p.args, *(p.frame.args if p.frame else ()),
+                           *(a for use in (*p.reply_frames, *listed) for a in use.args),
                            *(a.value for a in actions)):
             if name not in {a.target for a in actions}:
                 yield variable(name), f"primitive:{p.name}", "read by"

@@ -512,6 +512,28 @@ class _Driver:
             options["expect"] = f"{base}_expect"
             w.blank(2)
             self.predicate(w, options["expect"], f"{signature}, reply: Sequence[Any]", prim.params, prim.expect)
+        answers: list[str] = []
+        for n, listed in enumerate(prim.listed, 1):  # each its own plan: frame, decoder, expect, post-actions
+            own = {key: value for key, value in options.items() if key != "frame"}
+            if listed.frame is not None or prim.frame is not None:
+                use = listed.frame or prim.frame
+                assert use is not None
+                w.blank(2)
+                self.function(w, f"{base}_reply_{n}_frame", signature, prim.params, [("", a, None) for a in use.args],
+                              "Args")
+                own["frame"] = f"FrameUse({self.plan['frame', use.frame]}, {base}_reply_{n}_frame)"
+            own["decoder"] = _codec(decoder(listed.decoding))
+            if listed.expect is not None:
+                own["expect"] = f"{base}_reply_{n}_expect"
+                w.blank(2)
+                self.predicate(w, own["expect"], f"{signature}, reply: Sequence[Any]", prim.params, listed.expect)
+            self.post_actions(w, f"{base}_reply_{n}_actions", prim, listed.actions, own)
+            w.blank(2)
+            w.line(f"# reply {n} of {len(prim.listed)}")
+            _construct(w, f"{const}_REPLY_{n} = ", "Primitive", common, own)
+            answers.append(f"{const}_REPLY_{n}")
+        if answers:
+            options["answers"] = _tuple(answers)
         cases = [(prim, None)] if prim.table is None else [(prim.case(c), c) for c in prim.table.cases]
         table: list[str] = []
         for case, entry in cases:
@@ -519,17 +541,8 @@ class _Driver:
             own = dict(options)
             if case.decoding is not None:
                 own["decoder"] = _codec(decoder(case.decoding))
-            if case.actions:
-                own["actions"] = f"{base}_actions" if entry is None else f"{base}_{_case(entry)}_actions"
-                states = self.model.states
-                w.blank(2)
-                self.function(w, own["actions"], f"{signature}, reply: Sequence[Any]", prim.reply_locals(),
-                              [(a.target, a.value, states[a.target].type) for a in case.actions],
-                              "dict[str, Value]")
-                checked = [quoted(a.target) for a in case.actions
-                           if states[a.target].type is Type.INT and m.may_outgrow(a.value)]
-                if checked:
-                    own["checked"] = _tuple(checked)
+            self.post_actions(w, f"{base}_actions" if entry is None else f"{base}_{_case(entry)}_actions", prim,
+                              case.actions, own)
             w.blank(2)
             if entry is not None:
                 w.line(f"# reply {entry.values_text()}")
@@ -555,6 +568,21 @@ class _Driver:
                 options["key"] = str(next(i for i, prm in enumerate(prim.params) if prm.name == prim.table.key))
             w.blank(2)
             _construct(w, f"{const} = ", "Primitive", common, options)
+
+    def post_actions(self, w: Writer, name: str, prim: m.Primitive, actions: tuple[m.PostAction, ...],
+                     options: dict[str, str]) -> None:
+        """The function of a reply's post-actions, if it has any, named in `options` with the
+        state variables they may make too wide."""
+        if not actions:
+            return
+        options["actions"] = name
+        states = self.model.states
+        w.blank(2)
+        self.function(w, name, "state: StateValues, args: Args, reply: Sequence[Any]", prim.reply_locals(),
+                      [(a.target, a.value, states[a.target].type) for a in actions], "dict[str, Value]")
+        checked = [quoted(a.target) for a in actions if states[a.target].type is Type.INT and m.may_outgrow(a.value)]
+        if checked:
+            options["checked"] = _tuple(checked)
 
     def interface(self, w: Writer, iface: m.Interface) -> None:
         self.comment(w, iface.span, f"interface {iface.name}" + (" (periodic)" if iface.periodic else ""))

@@ -140,6 +140,7 @@ class Description:
             None if p.encoding is None else encoder(p.encoding), decoder(p.decoding), actions, frame,
             p.skip_unmatched, None if p.timeout_ms is None else p.timeout_ms / 1000.0, checked=checked,
             expect=expect, lines=_levels(p.lines, slots), replies=p.replies, reply_frames=answers,
+            answers=tuple(self._primitive(p.listed_reply(r)) for r in p.listed),
         )
 
     def _frame(self, frame: m.Frame) -> engine.Frame:

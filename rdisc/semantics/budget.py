@@ -159,7 +159,8 @@ def message_bytes(prim: m.Primitive, frames: dict[str, m.Frame] | None = None) -
     """Bytes of the request and the reply, frames included (ASCII, and data of any
     length, counted at their shortest; a group repeated as the message says at its most
     rounds: an array's size, its count field's largest value or MAX_ARRAY, no more than the
-    frame's length field states), the reply as many times as `replies` says."""
+    frame's length field states), the reply as many times as `replies` says, or each listed
+    reply once (`replies { }`)."""
     frame = (frames or {}).get(prim.frame.frame) if prim.frame is not None else None
     match prim.encoding:
         case m.Pack(format=fmt, grouped=grouped):
@@ -173,11 +174,21 @@ def message_bytes(prim: m.Primitive, frames: dict[str, m.Frame] | None = None) -
             request = len(template.format(*values).encode("utf-8"))
         case None:  # only modem lines set: no byte on the wire
             request = 0
-    framing = answer = 0  # the request's framing, and the reply's
-    if frame is not None:  # the request's layout is the one its size picks; the reply's shortest, without optional parts
+    framing = 0  # the request's framing
+    if frame is not None:  # the request's layout is the one its size picks
         framing = frame_bytes(_written(frame.requests, request))
-    if prim.reply_frames:  # each reply through its own frame, all of one frame
-        frame = (frames or {}).get(prim.reply_frames[0].frame)
+    if prim.listed:  # each listed reply once, through its own frame or the primitive's
+        return request + framing + sum(_reply_bytes(prim.listed_reply(r), frames, request, framing)
+                                       for r in prim.listed)
+    return request + framing + _reply_bytes(prim, frames, request, framing) * max(prim.replies, 1)
+
+
+def _reply_bytes(prim: m.Primitive, frames: dict[str, m.Frame] | None, request: int, framing: int) -> int:
+    """Bytes of one reply, its frame's shortest reply layout (without optional parts) included;
+    `request` and `framing`, the request's, which a table's entries are counted without."""
+    use = prim.reply_frames[0] if prim.reply_frames else prim.frame  # replies through their own frames: all of one
+    frame = (frames or {}).get(use.frame) if use is not None else None
+    answer = 0
     if frame is not None and prim.expects_reply(frames or {}):
         answer = min((frame_bytes(parts, shortest=True) for parts in frame.replies), default=0)
     match prim.decoding:
@@ -196,7 +207,7 @@ def message_bytes(prim: m.Primitive, frames: dict[str, m.Frame] | None = None) -
             reply = sum(sizes) if t.each else max(sizes, default=0)  # sub-payloads: each entry's once
         case None:
             reply = 0
-    return request + framing + (reply + answer) * max(prim.replies, 1)
+    return reply + answer
 
 
 def _written(layouts: tuple[tuple[m.FramePart, ...], ...], size: int) -> tuple[m.FramePart, ...]:

@@ -601,7 +601,7 @@ class _Checker:
         decodings = [c for c in decl.clauses if isinstance(c, ast.Decoding)]
         action_blocks = [c for c in decl.clauses if isinstance(c, ast.Actions)]
         lines_clause = self.once([c for c in decl.clauses if isinstance(c, ast.Lines)], "`lines`", name)
-        replied = any(isinstance(c, ast.Decoding | ast.Framed | ast.ReplyTable) for c in decl.clauses)
+        replied = any(isinstance(c, ast.Decoding | ast.Framed | ast.ReplyTable | ast.ReplyList) for c in decl.clauses)
         if not encodings and (lines_clause is None or replied):
             self.d.report("E202", name.span, f"primitive `{name.text}` has neither `pack` nor `format`",
                           help='say how the request is written: `pack ">Bhh" (...)` or `format "D,{},{}\\n" (...)`'
@@ -630,6 +630,9 @@ class _Checker:
         replies_clause = self.once([c for c in decl.clauses if isinstance(c, ast.Replies)], "`replies`", name)
         count, reply_frames = self.reply_count(replies_clause, decl, reply, decoding, env, encoding) \
             if isinstance(replies_clause, ast.Replies) else (0, ())
+        list_clause = self.once([c for c in decl.clauses if isinstance(c, ast.ReplyList)], "`replies { }`", name)
+        listed = self.listed_replies(list_clause, decl, scope, env, encoding) \
+            if isinstance(list_clause, ast.ReplyList) else ()
         actions: tuple[m.PostAction, ...] = ()
         if action_blocks:
             note = None if decodings else f"primitive `{name.text}` reads no reply: add `unpack` or `regex`"
@@ -656,7 +659,8 @@ class _Checker:
                 self.tag_not_a_param(decl)
             table = self.reply_table(table_clause, params, scope, name, unframed)
         tagged = table is not None and table.tag is not None
-        replies = [decoding] if decoding is not None else [c.decoding for c in table.cases] if table else []
+        replies = [decoding] if decoding is not None else [c.decoding for c in table.cases] if table else \
+            [r.decoding for r in listed if r.frame is None]  # read through the primitive's frame, or none
         frame = (self.frame_use(framed, env, decl, encoding, replies, self.request_sizes(encoding, args, params))
                  if isinstance(framed, ast.Framed) else None)
         open_ends = [why for r in replies if isinstance(r, m.Unpack) and (why := _open_end(r))]
@@ -671,7 +675,9 @@ class _Checker:
                           help="give the frame's reply a `length` field or constant bytes after its payload, "
                           "or read the reply without a frame")
         skip = self.once([c for c in decl.clauses if isinstance(c, ast.SkipUnmatched)], "`skip unmatched`", name)
-        if skip is not None and not (tagged and unframed) and (
+        framed_all = bool(listed) and all(r.frame is not None or (frame and self.frames[frame.frame].reply)
+                                          for r in listed)
+        if skip is not None and not (tagged and unframed) and not framed_all and (
                 not replies or frame is None or not self.frames[frame.frame].reply):
             self.d.report("E504", skip.span, f"`skip unmatched` reads past frames that do not decode, but "  # type: ignore[union-attr]
                           f"`{name.text}` does not decode a framed reply",
@@ -683,13 +689,58 @@ class _Checker:
             if timeout is not None and timeout <= 0:
                 self.d.report("E204", timeout_clause.span, "a timeout must be positive")
                 timeout = None
-            elif not replies and not (frame and self.frames[frame.frame].reply):
+            elif not replies and not listed and not (frame and self.frames[frame.frame].reply):
                 self.d.report("E204", timeout_clause.span, f"`{name.text}` reads no reply, so it has no timeout")
         if expect is not None and table is not None:
             self.d.report("E203", expect.span, f"primitive `{name.text}` has a reply table and also `expect`",
                           help="`expect` checks the reply of a primitive with one decoding")
         return m.Primitive(name.text, params, connection, encoding, args, decoding, actions, decl.doc, decl.span,
-                           frame, skip is not None, table, timeout, expect, lines, count, reply_frames)
+                           frame, skip is not None, table, timeout, expect, lines, count, reply_frames, listed)
+
+    def listed_replies(self, clause: ast.ReplyList, decl: ast.PrimitiveDecl, scope: dict[str, tuple[Scope, Type]],
+                       env: Env, encoding: m.Pack | m.Format | None) -> tuple[m.ListedReply, ...]:
+        """`replies { ... }`: 2 to MAX_ARRAY replies in a fixed order, each decoded its own way,
+        held by its own `expect` and stored by its own post-actions, through its own frame (one
+        whose reply carries a payload) or the primitive's. () where it is refused."""
+        name = decl.name.text
+        given = ((ast.Decoding, "`unpack`/`regex`"), (ast.Actions, "post-actions"), (ast.Expect, "`expect`"),
+                 (ast.ReplyTable, "a reply table"), (ast.Replies, "`replies N`"))
+        other = next((what for kind, what in given if any(isinstance(c, kind) for c in decl.clauses)), None)
+        if other is not None:
+            self.d.report("E203", clause.span, f"primitive `{name}` has `replies {{ }}` and also {other}",
+                          help="each reply of `replies { }` has its own decoding, `expect` and post-actions: "
+                          "write them there")
+            return ()
+        if not 2 <= len(clause.replies) <= MAX_ARRAY:
+            self.d.report("E204", clause.span, f"a primitive reads 2 to {MAX_ARRAY} replies, not "
+                          f"{len(clause.replies)}", help="a primitive that reads one reply says how with `unpack` "
+                          "or `regex` alone")
+            return ()
+        sees = "`out`, parameters and state variables"
+        listed: list[m.ListedReply] = []
+        for n, r in enumerate(clause.replies, 1):
+            decoding, reply = self.decoding(r.decoding)
+            expect = None
+            if r.expect is not None:
+                expect = self.typer.expr(r.expect, self.env_with(scope, "in an `expect`", sees, reply=reply,
+                                                                 reply_known=reply is not None))
+                if expect.type is not None and expect.type is not Type.BOOL:
+                    self.d.report("E401", r.expect.span, f"`expect` takes a bool, but this is {describe(expect.type)}")
+            actions: tuple[m.PostAction, ...] = ()
+            if r.actions is not None:
+                action_env = self.env_with(scope, "in a post-action", sees, reply=reply, reply_known=reply is not None)
+                actions = self.actions(r.actions, action_env, set(scope))
+            frame = None
+            if r.frame is not None:
+                frame = self.frame_use(r.frame, env, decl, encoding, [decoding] if decoding else [], None)
+                if frame is not None and not self.frames[frame.frame].reply:
+                    self.d.report("E504", r.frame.span, f"reply {n} of `{name}` is read through frame "
+                                  f"`{frame.frame}`, whose reply is empty",
+                                  help="read it through a frame whose reply has a `payload`, or through the "
+                                  "primitive's frame (leave out its `frame`)")
+            if decoding is not None:
+                listed.append(m.ListedReply(decoding, frame, expect, actions))
+        return tuple(listed) if len(listed) == len(clause.replies) else ()
 
     def reply_count(self, clause: ast.Replies, decl: ast.PrimitiveDecl, reply: tuple[m.AnyType, ...] | None,
                     decoding: m.Unpack | m.Regex | None, env: Env,
@@ -1603,8 +1654,7 @@ class _Checker:
             if name not in triggered and id(decl) in self.main_decls and ("output", name) not in self.s.suggested:
                 self.d.report("W102", decl.name.span, f"output `{name}` is never triggered",
                               help=f"add `triggers {name}` to the interface that reads its state")
-        written = {a.target for p in self.primitives.values()
-                   for a in (*p.actions, *(a for c in (p.table.cases if p.table else ()) for a in c.actions))}
+        written = {a.target for p in self.primitives.values() for a in p.post_actions()}
         for name, decl in self.s.states.items():
             known = self.state_env.get(name, (None, None))[1] is not None  # else its type is reported
             if name not in self.typer.reads and name not in written and known and id(decl) in self.main_decls:

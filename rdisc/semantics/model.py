@@ -542,6 +542,17 @@ class ReplyCase:
         return str(self.value) if self.last is None else f"{self.value}..{self.last}"
 
 
+@dataclass(frozen=True, slots=True)
+class ListedReply:
+    """One reply of `replies { ... }`, read in its place among the others: through its own
+    frame (None: the primitive's), decoded, held by its own `expect`, then its post-actions."""
+
+    decoding: Unpack | Regex
+    frame: FrameUse | None = None
+    expect: Expr | None = None
+    actions: tuple[PostAction, ...] = ()
+
+
 TAG = "tag"  # the name of a tagged reply's tag in its entries' post-actions
 
 
@@ -573,6 +584,18 @@ class Primitive:
     lines: tuple[LineLevel, ...] = ()  # modem lines set before the request, in this order
     replies: int = 0  # `replies N`: N replies to its request, each value of them an array of N (0: one reply)
     reply_frames: tuple[FrameUse, ...] = ()  # each reply's own frame, when `replies` gives them
+    listed: tuple[ListedReply, ...] = ()  # `replies { ... }`: replies of different shapes, in order
+
+    def listed_reply(self, r: ListedReply) -> Primitive:
+        """This primitive as it is for one of its listed replies: that reply's frame, decoding,
+        `expect` and post-actions, as if it were its only one."""
+        return dataclasses.replace(self, decoding=r.decoding, frame=r.frame or self.frame, expect=r.expect,
+                                   actions=r.actions, listed=())
+
+    def post_actions(self) -> tuple[PostAction, ...]:
+        """Every post-action it may run: its own, its table's entries' and its listed replies'."""
+        return (*self.actions, *(a for c in (self.table.cases if self.table else ()) for a in c.actions),
+                *(a for r in self.listed for a in r.actions))
 
     def case(self, c: ReplyCase) -> Primitive:
         """This primitive as it is when its table's key (or its reply's tag) has c.value: one decoding."""
@@ -610,7 +633,7 @@ class Primitive:
     def expects_reply(self, frames: dict[str, Frame]) -> bool:
         """A reply is read when there is one to decode, or when the frame's reply
         is an acknowledgement (constant parts only, no payload)."""
-        if self.decoding is not None or self.table is not None:
+        if self.decoding is not None or self.table is not None or self.listed:
             return True
         if self.frame is None:
             return False

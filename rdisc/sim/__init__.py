@@ -134,6 +134,8 @@ class Simulation:
                 self._command(commands, local)
             if plan.replies:  # one reply a servo (a sync read): reply n tells element n
                 return [self._reply(plan, local, n) for n in range(plan.replies)]
+            if plan.answers:  # `replies { }`: each listed reply as a table's entry n
+                return [self._reply(plan, local, listed=n) for n in range(len(plan.answers))]
             return self._reply(plan, local) if plan.expects_reply else ()
 
     def advance(self, seconds: float) -> None:
@@ -187,12 +189,14 @@ class Simulation:
             case m.Quantity.EFFORT:
                 return float(self.data.qfrc_actuator[j.dofadr[0]])
 
-    def _reply(self, plan: engine.Primitive, local: Sequence[Any], n: int | None = None) -> Sequence[Any]:
+    def _reply(self, plan: engine.Primitive, local: Sequence[Any], n: int | None = None,
+               listed: int | None = None) -> Sequence[Any]:
         """The values of a reply (reply `n` of `replies N`, whose `present = out[2]` stores
-        element n): zeros, the values `expect` pins, and what the measured joints read."""
+        element n; or the `listed`th of `replies { }`): zeros, the values `expect` pins, and what
+        the measured joints read."""
         replies = self._replies[plan.name]
         key = self._keys.get(plan.name)
-        reply = replies.get(None if key is None else local[key])
+        reply = replies.get(listed if listed is not None else None if key is None else local[key])
         if reply is None:
             return ()
         values = list(reply.zeros)
@@ -211,7 +215,10 @@ class Simulation:
 
 
 def _replies(p: m.Primitive) -> dict[int | None, _Reply]:
-    """The primitive's reply, or its table's replies by key value (a tag's table: none)."""
+    """The primitive's reply, or its table's replies by key value (a tag's table: none), or its
+    listed replies by their place."""
+    if p.listed:  # by their place
+        return {n: _reply(r.decoding, r.actions, r.expect, p.params) for n, r in enumerate(p.listed)}
     if p.table is None:
         return {None: _reply(p.decoding, p.actions, p.expect, p.params)}
     if p.table.tag is not None:

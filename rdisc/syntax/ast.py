@@ -372,6 +372,27 @@ class Replies:
 
 
 @dataclass(frozen=True, slots=True)
+class ListedReply:
+    """One reply of `replies { ... }`: `frame status(2) unpack "<BB" expect out[0] == 0 { ... }`,
+    its frame (None: the primitive's), decoding, condition and post-actions its own."""
+
+    decoding: Decoding
+    span: Span = _span
+    frame: Framed | None = None
+    expect: Expr | None = None
+    actions: Actions | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class ReplyList:
+    """`replies { ... }`: a fixed sequence of replies to one request, each of its own shape (a
+    Dynamixel bulk read's status packets, each servo's own data)."""
+
+    replies: tuple[ListedReply, ...]
+    span: Span = _span
+
+
+@dataclass(frozen=True, slots=True)
 class Expect:
     """`expect COND`: a condition on the decoded reply (`out`) that a reply must meet."""
 
@@ -389,7 +410,7 @@ class Lines:
 
 PrimitiveClause = (
     On | Encoding | Decoding | Actions | Framed | SkipUnmatched | ReplyTable | ReplyTimeout | Expect | Lines
-    | Replies
+    | Replies | ReplyList
 )
 
 

@@ -322,7 +322,7 @@ _CONNECTION = (
 _PRIMITIVE = (
     "name", "parameters", "parameterTypes", "parameterRanges", "parameterDefaults", "parameterUnits", "connection",
     "lines", "pack", "format", "formatArgs", "unpack", "regex", "frame", "skipUnmatched", "replyTable", "timeout",
-    "replies", "replyFrames", "expect", "postActions", "doc",
+    "replies", "replyFrames", "replyList", "expect", "postActions", "doc",
 )  # fmt: skip
 _FRAME = ("name", "parameters", "parameterTypes", "parameterRanges", "parameterDefaults", "parameterUnits",
           "request", "reply", "moreRequests", "moreReplies",
@@ -499,6 +499,35 @@ class _Importer:
                     made.append(ast.EnumMember(ident, expr, member.span))
             built.append(ast.EnumDecl(name, tuple(made), key.span))
         return built
+
+    def framed(self, v: JValue | None) -> ast.Framed | None:
+        """`{"name": ..., "arguments": [...]}`: a primitive's frame, or a listed reply's."""
+        framed = self.object(v, "`frame`")
+        if framed is None:
+            return None
+        f = self.members(framed, "`frame`", ("name", "arguments"))
+        frame = self.name(framed, f, "`frame`")
+        if frame is None:
+            return None
+        return ast.Framed(frame, self.args(f.get("arguments"), self.frame_types.get(frame.text, ())), framed.span)
+
+    def listed_reply(self, v: JValue) -> ast.ListedReply | None:
+        """One reply of `"replyList"`: its frame, `unpack` or `regex`, `expect` and post-actions."""
+        obj = self.object(v, "a listed reply")
+        if obj is None:
+            return None
+        r = self.members(obj, "a listed reply", ("frame", "unpack", "regex", "expect", "postActions"))
+        kind = next((k for k in ("unpack", "regex") if k in r), None)
+        template = self.string(r.get(kind), f"`{kind}`") if kind else None
+        if kind is None or template is None:
+            if kind is None:
+                self.error(obj.span, "a listed reply has `unpack` or `regex`")
+            return None
+        decoding = ast.Decoding(kind, ast.StrLit(template.value, template.span), template.span)
+        expect = self.reply_expr(r["expect"], "`expect`") if "expect" in r else None
+        assigns = _present([self.post_action(a) for a in self.array(r.get("postActions"), "`postActions`")])
+        actions = ast.Actions(assigns, r["postActions"].span) if assigns else None
+        return ast.ListedReply(decoding, obj.span, self.framed(r.get("frame")), expect, actions)
 
     def reply_table(self, obj: JObject) -> ast.ReplyTable:
         t = self.members(obj, "`replyTable`", ("key", "tag", "each", "length", "cases"))
@@ -794,13 +823,9 @@ class _Importer:
             s = self.string(m.get(kind), f"`{kind}`")
             if s is not None:
                 clauses.append(ast.Decoding(kind, ast.StrLit(s.value, s.span), s.span))
-        framed = self.object(m.get("frame"), "`frame`")
+        framed = self.framed(m.get("frame"))
         if framed is not None:
-            f = self.members(framed, "`frame`", ("name", "arguments"))
-            frame = self.name(framed, f, "`frame`")
-            if frame is not None:
-                types = self.frame_types.get(frame.text, ())
-                clauses.append(ast.Framed(frame, self.args(f.get("arguments"), types), framed.span))
+            clauses.append(framed)
         skip = m.get("skipUnmatched")
         if isinstance(skip, JBool) and skip.value:
             clauses.append(ast.SkipUnmatched(skip.span))
@@ -825,6 +850,9 @@ class _Importer:
         table = self.object(m.get("replyTable"), "`replyTable`")
         if table is not None:
             clauses.append(self.reply_table(table))
+        if "replyList" in m:
+            listed = _present([self.listed_reply(r) for r in self.array(m["replyList"], "`replyList`")])
+            clauses.append(ast.ReplyList(tuple(listed), m["replyList"].span))
         actions = self.array(m.get("postActions"), "`postActions`")
         if actions:  # none is the default, left unsaid
             assigns = _present([self.post_action(a) for a in actions])

@@ -336,6 +336,18 @@ def _primitive_clause(c: ast.PrimitiveClause) -> tuple[list[str], bool]:
             values = print_expr(over) + ("" if high is None else f"..{print_expr(high)}")
             through = "" if framed is None else f" frame {framed.frame.text}({_args(framed.args)})"
             return [f"replies {var.text} in {values}{through}"], False
+        case ast.ReplyList(replies):
+            lines = ["replies {"]
+            for listed in replies:
+                head = "" if listed.frame is None else \
+                    f"frame {listed.frame.frame.text}({_args(listed.frame.args)}) "
+                head += f"{listed.decoding.kind} {spell_template(listed.decoding.template.value)}"
+                if listed.expect is not None:
+                    head += f" expect {print_expr(listed.expect)}"
+                actions = _primitive_clause(listed.actions)[0] if listed.actions is not None else []
+                lines.append(INDENT + head + (" " + actions[0] if actions else ""))
+                lines.extend(INDENT + line for line in actions[1:])
+            return [*lines, "}"], False
         case ast.Lines(settings):
             return ["lines " + ", ".join(_assign(a) for a in settings)], False
         case ast.ReplyTable(key, entries, _, tag, each, length):

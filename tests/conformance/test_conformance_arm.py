@@ -1,7 +1,7 @@
 """examples/arm.rdis against ROBOTIS's published dynamixel-sdk, byte for byte, over real ptys.
 
 An emulated bus of six X-series servos (protocol 2.0, tests/devices/dynamixel.py) sits on a pty. dynamixel-sdk's
-GroupSyncWrite and GroupSyncRead talk to it, and so do the rdisc runtime and the driver
+GroupSyncWrite, GroupSyncRead and GroupBulkRead talk to it, and so do the rdisc runtime and the driver
 `rdisc emit-python` generates: every packet they write must be the SDK's, and the positions
 they read from the same status packets must be the ones the SDK's getData returns.
 
@@ -24,7 +24,7 @@ import pytest
 pytest.importorskip("dynamixel_sdk")
 
 import dynamixel_sdk as sdk
-from devices.dynamixel import IDS, PRESENT, XBus, status
+from devices.dynamixel import IDS, PRESENT, TEMPERATURE, XBus, status
 
 from rdisc.emit.python import import_driver
 from rdisc.runtime import load
@@ -83,6 +83,26 @@ def _sdk_sync_read(bus: XBus) -> tuple[bytes, dict[int, int]]:
         port.closePort()
 
 
+def _sdk_bulk_read(bus: XBus) -> tuple[bytes, int, int]:
+    """The packet GroupBulkRead sends for servo 1's Present Position (4 bytes) and servo 6's
+    Present Temperature (1 byte), and the two values it reads back."""
+    port, handler = _sdk(bus)
+    try:
+        group = sdk.GroupBulkRead(port, handler)
+        assert group.addParam(1, PRESENT, 4) and group.addParam(6, TEMPERATURE, 1)
+        bus.clear()
+        assert group.txPacket() == sdk.COMM_SUCCESS
+        answers = len(status(1, 0, struct.pack("<i", bus.present[1]))) + len(status(6, 0, b"\0"))
+        deadline = time.monotonic() + 10  # as for the sync read: the bus has answered before the SDK reads
+        while port.ser.in_waiting < answers and time.monotonic() < deadline:
+            time.sleep(0.005)
+        assert group.rxPacket() == sdk.COMM_SUCCESS
+        position = struct.unpack("<i", struct.pack("<I", group.getData(1, PRESENT, 4)))[0]
+        return bus.received, position, group.getData(6, TEMPERATURE, 1)
+    finally:
+        port.closePort()
+
+
 @pytest.fixture(scope="module", params=["runtime", "driver"])
 def arm(request: pytest.FixtureRequest, tmp_path_factory: pytest.TempPathFactory) -> Any:
     if request.param == "runtime":
@@ -136,3 +156,19 @@ def test_a_sync_read_asks_and_reads_as_the_sdk_does(bus: XBus, arm: Any) -> None
         assert joints["contents"]["position"] == pytest.approx(
             [(positions[i] - 2048) * 2 * math.pi / 4096 for i in IDS])
 
+
+
+def test_a_bulk_read_asks_and_reads_as_the_sdk_does(bus: XBus, arm: Any) -> None:
+    bus.present[1] = -123456  # a multi-turn position, to tell it from the temperature
+    request, position, temperature = _sdk_bulk_read(bus)
+    assert (position, temperature) == (-123456, 36)
+    bus.clear()
+    with arm.connect(bus.port, timeout=5.0, threads=False) as robot:
+        bus.wait_for(TORQUE_PACKET, 5)
+        bus.clear()
+        robot.primitives.bulk_read_waist_gripper()
+        assert bus.received == request
+        assert request.hex(" ") == "ff ff fd 00 fe 0d 00 92 01 84 00 04 00 06 92 00 01 00 " + request[-2:].hex(" ")
+        assert robot.state.present[0] == position
+        assert robot.state.gripper_temperature == temperature
+        assert robot.state.present[1:] == (2048,) * 5  # the others' as they were

@@ -3,7 +3,8 @@
 The bus answers from the protocol as the e-Manual states it, with its own CRC-16/BUYPASS
 (`_crc`, bit by bit) and byte stuffing, not with rdisc's or dynamixel-sdk's code: a sync
 read of Present Position is answered by each servo in the order asked, with its status
-packet; everything else (sync writes) is taken without an answer, as the servos do.
+packet, and so is a bulk read of Present Position or Present Temperature, each servo its own
+address and length; everything else (sync writes) is taken without an answer, as the servos do.
 """
 
 from __future__ import annotations
@@ -14,6 +15,7 @@ from . import PtyDevice
 
 IDS = [1, 2, 3, 4, 5, 6]
 PRESENT = 132  # Present Position's address
+TEMPERATURE = 146  # Present Temperature's address (1 byte)
 STUFFED = -33554688  # 0xFDFFFF00 as int32: little-endian 00 FF FF FD
 
 
@@ -53,6 +55,7 @@ class XBus(PtyDevice):
         self.present = {1: 0, 2: 1024, 3: 2048, 4: 3071, 5: 4095, 6: STUFFED}  # each servo's, by ID
         self.errors = {i: 0 for i in IDS}
         self.errors[4] = 0x80  # a hardware alert: reported, the data still valid
+        self.temperatures = {i: 30 + i for i in IDS}
         self._pending = bytearray()
 
     def handle(self, data: bytes) -> None:
@@ -67,6 +70,13 @@ class XBus(PtyDevice):
                 assert (start, length) == (PRESENT, 4)
                 for dxl_id in packet[12:-2]:
                     self.send(status(dxl_id, self.errors[dxl_id], struct.pack("<i", self.present[dxl_id])))
+            elif packet[7] == 0x92:  # bulk read: ID, start, length for each servo
+                for at in range(8, size - 2, 5):
+                    dxl_id, start, length = struct.unpack_from("<BHH", packet, at)
+                    data = struct.pack("<i", self.present[dxl_id]) if start == PRESENT else \
+                        bytes([self.temperatures[dxl_id]])
+                    assert (start, length) in ((PRESENT, 4), (TEMPERATURE, 1))
+                    self.send(status(dxl_id, self.errors[dxl_id], data))
 
     def _cleared(self) -> None:
         self._pending.clear()

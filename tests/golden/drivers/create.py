@@ -1082,26 +1082,30 @@ class Primitive:
     lines: Callable[[StateValues, Args], dict[str, Value]] | None = None  # "dtr"/"rts": levels, set before the request
     replies: int = 0  # `replies N`: N replies to one request, collected value by value into arrays (0: one)
     reply_frames: tuple[FrameUse, ...] = ()  # each reply's own frame (`replies id in IDS frame status(id)`)
+    answers: tuple[Primitive, ...] = ()  # the replies read in turn, a plan each: `replies { }`'s, each its own
+    # frame, decoder, expect and post-actions; `replies N`'s made here, this plan's (through `reply_frames`)
     expects_reply: bool = field(init=False)
     framed_reply: bool = field(init=False)
     floats: tuple[int, ...] = field(init=False)
     ranged: tuple[int, ...] = field(init=False)
     tag_struct: struct.Struct | None = field(init=False)
     length_struct: struct.Struct | None = field(init=False)
-    answers: tuple[Primitive, ...] = field(init=False)  # for each of `reply_frames`: this plan, reading through it
 
     def __post_init__(self) -> None:
         reply = self.frame.frame.reply if self.frame is not None else None
         framed = reply is not None and bool(reply.parts)
         acknowledged = framed and reply is not None and reply.payload < 0  # constant parts only
         object.__setattr__(self, "framed_reply", framed)
-        object.__setattr__(self, "expects_reply", self.decoder is not None or self.table is not None or acknowledged)
+        object.__setattr__(self, "expects_reply", self.decoder is not None or self.table is not None or acknowledged
+                           or bool(self.answers))
         object.__setattr__(self, "floats", _floats(self.params))
         object.__setattr__(self, "ranged", _ranged(self.params))
         object.__setattr__(self, "tag_struct", None if self.tag is None else struct.Struct(self.tag))
         object.__setattr__(self, "length_struct", None if self.length is None else struct.Struct(self.length))
-        object.__setattr__(self, "answers", tuple(replace(self, frame=use, reply_frames=())
-                                                  for use in self.reply_frames))
+        if self.replies:  # one plan for each reply, all alike but for their frames
+            one = replace(self, replies=0, reply_frames=())
+            object.__setattr__(self, "answers", tuple(replace(one, frame=use) for use in self.reply_frames)
+                               or (one,) * self.replies)
         if not _sent_at_once(self):
             object.__setattr__(self, "request", None)
         elif self.request is None:
@@ -1570,8 +1574,8 @@ from connection name to port."""
 class Simulator(Protocol):
     """A simulated device in place of the ports (`Robot.open(sim=...)`; `rdisc.sim` gives one
     over MuJoCo): it takes what the host commands, by primitive and interface with their
-    parameters' values, and answers a primitive's reply with its values (`replies N`: a list
-    of N replies, each its values). In simulated time
+    parameters' values, and answers a primitive's reply with its values (`replies N` or
+    `replies { }`: a list of a reply for each of its `answers`, each its values). In simulated time
     (`realtime` False) the robot runs no threads: its schedule and delays advance the simulation."""
 
     realtime: bool
@@ -2170,7 +2174,7 @@ class Robot:
             if plan.timeout is not None:
                 io.timeout = plan.timeout
             reader.begin(wait)
-            if plan.replies:
+            if plan.answers:
                 reply = self._read_replies(plan, link, reader, fields, request, wait, local)
             else:
                 plan, local, reply = self._read_reply(plan, link, reader, fields, request, wait, local)
@@ -2195,12 +2199,22 @@ class Robot:
                 self._notify_io("read", plan.connection, data)
         if failed is not None:
             raise failed
-        if plan.each:  # each sub-payload's post-actions, in the order they came
+        self._store(plan, local, reply)
+
+    def _store(self, plan: Primitive, local: Args, reply: Sequence[Any]) -> None:
+        """Run the post-actions on a reply read whole (every part decoded and met, so a bad one
+        changed no state): each sub-payload's, or each listed reply's, in the order they came;
+        or the primitive's (`replies N`: value i of the replies as one array)."""
+        if plan.each:
             for case, args, one in reply:
                 if case.actions is not None:
                     self._assign(case, args, one)
+        elif plan.answers and not plan.replies:
+            for answer, one in zip(plan.answers, reply):
+                if answer.actions is not None:
+                    self._assign(answer, local, one)
         elif plan.actions is not None:
-            self._assign(plan, local, reply)
+            self._assign(plan, local, tuple(zip(*reply)) if plan.replies else reply)
 
     def _request(self, plan: Primitive, values: Args,
                  local: Args) -> tuple[bytes, list[Any], dict[str, Value] | None]:
@@ -2260,13 +2274,11 @@ class Robot:
                 self._notify_io("lines", plan.connection, _lines_text(levels))
             if request:
                 self._notify_io("write", plan.connection, request)
-        if plan.replies:  # each meets its own expect, and value i of them all is one array
-            reply = tuple(zip(*(self._met(plan.answers[n] if plan.answers else plan, local, one)
-                                for n, one in enumerate(reply))))
+        if plan.answers:  # one reply for each, meeting its own expect
+            reply = [self._met(answer, local, one) for answer, one in zip(plan.answers, reply)]
         elif plan.expects_reply:
             reply = self._met(plan, local, reply)
-        if plan.actions is not None:
-            self._assign(plan, local, reply)
+        self._store(plan, local, reply)
 
     def _read_reply(self, plan: Primitive, link: _Link, reader: Incoming, fields: list[Any], request: bytes,
                     wait: float, local: Args) -> tuple[Primitive, Args, Sequence[Any]]:
@@ -2318,16 +2330,15 @@ class Robot:
                 raise RdisProtocolError(f"{plan.name}: {err}") from None
 
     def _read_replies(self, plan: Primitive, link: _Link, reader: Incoming, fields: list[Any], request: bytes,
-                      wait: float, local: Args) -> tuple[tuple[Any, ...], ...]:
-        """`replies N`: N replies read in turn as one is (each meeting its `expect`; through its own
-        frame, with its own field values, when `reply_frames` gives them), all within the one
-        deadline; value i of them all as one array, in the order they came."""
+                      wait: float, local: Args) -> list[Sequence[Any]]:
+        """`replies N` and `replies { }`: a reply for each of the plan's answers, read in turn as
+        one is (each decoded and meeting its `expect`; through its own frame, with its own field
+        values, where it has one), all within the one deadline, in the order they came."""
         got: list[Sequence[Any]] = []
-        for n in range(plan.replies):
-            answer = plan.answers[n] if plan.answers else plan
-            if plan.answers:
-                use = answer.frame
-                assert use is not None
+        count = len(plan.answers)
+        for n, answer in enumerate(plan.answers):
+            use = answer.frame
+            if use is not None and use is not plan.frame:
                 try:
                     fields = use.frame.values(plan.name, use.args(self._state, local))
                 except (struct.error, *EVAL_ERRORS) as err:
@@ -2337,11 +2348,11 @@ class Robot:
             except RdisTimeout:
                 if not n:
                     raise
-                raise RdisTimeout(f"{plan.name}: {n} of {plan.replies} replies within {wait:g} s") from None
+                raise RdisTimeout(f"{plan.name}: {n} of {count} replies within {wait:g} s") from None
             except RdisProtocolError as err:
-                raise RdisProtocolError(f"{plan.name}: reply {n + 1} of {plan.replies}: "
+                raise RdisProtocolError(f"{plan.name}: reply {n + 1} of {count}: "
                                         f"{str(err).removeprefix(plan.name + ': ')}") from None
-        return tuple(zip(*got))
+        return got
 
     def _met(self, plan: Primitive, local: Args, reply: Sequence[Any]) -> Sequence[Any]:
         """The reply, when it meets the primitive's `expect` (else, like a reply that does not
