@@ -141,14 +141,21 @@ Clauses that exclude each other, or a clause given twice: a primitive has exactl
 one of `pack`/`format` and at most one of `unpack`/`regex`, and sets each modem
 line once (`lines dtr = True, dtr = False` is refused); an interface is either
 `periodic` or `adhoc`, and lists the outputs it triggers in one `triggers`
-clause, each once; each attribute of a robot or connection is given once."""),
+clause, each once; each attribute of a robot or connection is given once. A
+primitive whose replies differ in shape (`replies { ... }`) gives each reply its
+own decoding, `expect` and post-actions there, and none of the primitive's own.
+Wrong: `primitive bulk() on bus pack "B" (0x92) unpack "<BB" replies { unpack "<BBi"
+unpack "<BBB" }`. Right: `primitive bulk() on bus pack "B" (0x92) replies { unpack
+"<BBi" { position = out[2] }  unpack "<BBB" { temperature = out[2] } }`."""),
     ("E204", "invalid-value", """
 A setting outside its range: baud and frequency must be positive, a keepalive
 interval positive, a delay zero or more, a reply-line `terminator` 1 to 8 bytes.
 Settings must be constants. A parameter's range has constant bounds, low <= high,
 of its type; a default is a constant, and the parameters after one with a default
 have defaults too. A loop's range counts up: `for i in 5..0` is empty. A reply
-count (`replies N`) is a constant int from 2 to 1024."""),
+count (`replies N`) is a constant int from 2 to 1024, and `replies { ... }` lists 2
+to 1024 replies. Wrong: `replies { unpack "<BBi" }` (one reply: say it with `unpack`
+alone). Right: `replies { unpack "<BBi"  unpack "<BBB" }`."""),
     ("E205", "periodic-with-parameters", """
 A periodic interface runs on every tick of its connection's thread, where nobody
 supplies arguments, so it cannot take parameters."""),
@@ -310,7 +317,12 @@ A primitive's `frame NAME(args)` passes one argument per frame parameter. A
 primitive that decodes a reply needs a frame whose reply has a payload; a frame
 field's value must fit its format. `skip unmatched` (read past frames that do not
 decode: other traffic on a shared line) needs a framed reply to decode, or a
-tagged reply read without a frame (it reads past tags without an entry)."""),
+tagged reply read without a frame (it reads past tags without an entry). A reply
+of `replies { ... }` read through a frame of its own needs one whose reply side
+has a payload. Wrong: `replies { frame quiet() unpack "<h" ... }` where `frame
+quiet { request { payload } }` answers nothing. Right: `replies { frame status(1)
+unpack "<h" ... }` where `status` has `reply { header "\\xFE" field id "B" = id
+payload }`."""),
     ("E506", "optional-part", """
 `optional { ... }` holds parts a reply may lack, all together: NMEA's `*hh`
 checksum, which some talkers leave out. It comes right after the payload, starts

@@ -515,13 +515,12 @@ class _Driver:
         answers: list[str] = []
         for n, listed in enumerate(prim.listed, 1):  # each its own plan: frame, decoder, expect, post-actions
             own = {key: value for key, value in options.items() if key != "frame"}
-            if listed.frame is not None or prim.frame is not None:
-                use = listed.frame or prim.frame
-                assert use is not None
+            own_frame = listed.frame or prim.frame
+            if own_frame is not None:
                 w.blank(2)
-                self.function(w, f"{base}_reply_{n}_frame", signature, prim.params, [("", a, None) for a in use.args],
-                              "Args")
-                own["frame"] = f"FrameUse({self.plan['frame', use.frame]}, {base}_reply_{n}_frame)"
+                self.function(w, f"{base}_reply_{n}_frame", signature, prim.params,
+                              [("", a, None) for a in own_frame.args], "Args")
+                own["frame"] = f"FrameUse({self.plan['frame', own_frame.frame]}, {base}_reply_{n}_frame)"
             own["decoder"] = _codec(decoder(listed.decoding))
             if listed.expect is not None:
                 own["expect"] = f"{base}_reply_{n}_expect"

@@ -263,7 +263,7 @@ class _Checker:
             return None, None
         return (int(low), int(high)) if type_ is not Type.FLOAT else (float(low), float(high))
 
-    def env_with(self, extra: dict[str, tuple[Scope, Type]], where: str, sees: str, **kw) -> Env:
+    def env_with(self, extra: dict[str, tuple[Scope, m.AnyType]], where: str, sees: str, **kw) -> Env:
         names = dict(self.state_env)
         names.update(extra)
         return Env(names, where, sees, **kw)
@@ -697,7 +697,7 @@ class _Checker:
         return m.Primitive(name.text, params, connection, encoding, args, decoding, actions, decl.doc, decl.span,
                            frame, skip is not None, table, timeout, expect, lines, count, reply_frames, listed)
 
-    def listed_replies(self, clause: ast.ReplyList, decl: ast.PrimitiveDecl, scope: dict[str, tuple[Scope, Type]],
+    def listed_replies(self, clause: ast.ReplyList, decl: ast.PrimitiveDecl, scope: dict[str, tuple[Scope, m.AnyType]],
                        env: Env, encoding: m.Pack | m.Format | None) -> tuple[m.ListedReply, ...]:
         """`replies { ... }`: 2 to MAX_ARRAY replies in a fixed order, each decoded its own way,
         held by its own `expect` and stored by its own post-actions, through its own frame (one
