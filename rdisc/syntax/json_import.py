@@ -321,7 +321,7 @@ _CONNECTION = (
 )  # fmt: skip
 _PRIMITIVE = (
     "name", "parameters", "parameterTypes", "parameterRanges", "parameterDefaults", "parameterUnits", "connection",
-    "lines", "pack", "format", "formatArgs", "unpack", "regex", "frame", "skipUnmatched", "replyTable", "timeout",
+    "lines", "pack", "format", "formatArgs", "unpack", "regex", "recordsUntil", "frame", "skipUnmatched", "replyTable", "timeout",
     "replies", "replyFrames", "expect", "postActions", "doc",
 )  # fmt: skip
 _FRAME = ("name", "parameters", "parameterTypes", "parameterRanges", "parameterDefaults", "parameterUnits",
@@ -794,6 +794,9 @@ class _Importer:
             s = self.string(m.get(kind), f"`{kind}`")
             if s is not None:
                 clauses.append(ast.Decoding(kind, ast.StrLit(s.value, s.span), s.span))
+        marker = self.string(m.get("recordsUntil"), "`recordsUntil`")
+        if marker is not None:
+            clauses.append(ast.Records(ast.StrLit(marker.value, marker.span), marker.span))
         framed = self.object(m.get("frame"), "`frame`")
         if framed is not None:
             f = self.members(framed, "`frame`", ("name", "arguments"))

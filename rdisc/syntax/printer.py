@@ -336,6 +336,8 @@ def _primitive_clause(c: ast.PrimitiveClause) -> tuple[list[str], bool]:
             values = print_expr(over) + ("" if high is None else f"..{print_expr(high)}")
             through = "" if framed is None else f" frame {framed.frame.text}({_args(framed.args)})"
             return [f"replies {var.text} in {values}{through}"], False
+        case ast.Records(marker):
+            return [f"reply each until {p.quote(marker.value)}"], False
         case ast.Lines(settings):
             return ["lines " + ", ".join(_assign(a) for a in settings)], False
         case ast.ReplyTable(key, entries, _, tag, each, length):
