@@ -98,7 +98,8 @@ Only the built-in functions can be called in expressions: abs, min, max, round,
 int, float, bool, str, clamp, sqrt, sin, cos, atan2, hypot, len (of a string or
 bytes), byte (`byte(data, i)`, the i-th byte of bytes as an int), hex (bytes as
 lowercase hex digits), ascii (ASCII bytes as a string), encode (an ASCII string as
-bytes), pack7 and unpack7 (Firmata's two 7-bit bytes per byte). There is no way
+bytes), pack7 and unpack7 (Firmata's two 7-bit bytes per byte), bitset (an int with
+bit a[i] set for each element of an int array). There is no way
 to reach Python's own functions, attributes or modules."""),
     ("E107", "robot-declaration", """
 A description has exactly one `robot` declaration, in its main file. Imported
