@@ -98,7 +98,8 @@ Only the built-in functions can be called in expressions: abs, min, max, round,
 int, float, bool, str, clamp, sqrt, sin, cos, atan2, hypot, len (of a string or
 bytes), byte (`byte(data, i)`, the i-th byte of bytes as an int), hex (bytes as
 lowercase hex digits), ascii (ASCII bytes as a string), encode (an ASCII string as
-bytes), pack7 and unpack7 (Firmata's two 7-bit bytes per byte). There is no way
+bytes), pack7 and unpack7 (Firmata's two 7-bit bytes per byte), bitset (an int with
+bit a[i] set for each element of an int array). There is no way
 to reach Python's own functions, attributes or modules."""),
     ("E107", "robot-declaration", """
 A description has exactly one `robot` declaration, in its main file. Imported
@@ -385,6 +386,18 @@ to that end. Each entry decodes bytes with an `unpack`, not a `regex`. Without
 with it, the length is one unsigned integer that can state the entry's size.
 Wrong: `reply each tag "B" { 1: unpack "B*" }`. Right: `reply each tag "B" length
 "B" { 0x04: unpack "<hh3x" { angle = out[0] } }`, through `frame packet`."""),
+    ("E509", "reply-records", """
+`reply each until "\\x7F"` reads a reply's payload as records, each ended by its
+marker (Firmata's capability report: for each pin its mode and resolution pairs,
+then 7F). The marker is 1 to 8 constant bytes, and a record ends where the marker
+first comes. Each record is decoded by the primitive's one `unpack` (not a `regex`:
+records are bytes), typically ending in a group `<*(...)`, and the post-actions run
+once per record, in order, reading its position from 0 as `index`. The records run
+to the payload's end, so the reply is read through a frame that says where that
+is; and the primitive reads one reply, so not with `replies` or a reply table.
+Wrong: `primitive caps() on link pack "B" (0x6B) reply each until "\\x7F" unpack
+"<*(BB)"`, no frame. Right: the same with `frame capability`, a frame whose reply is
+`header "\\xF0\\x6C" payload terminator "\\xF7"`."""),
     # -- the body -------------------------------------------------------------
     ("E601", "body-tree", """
 A robot's body is one tree of links: one root (the base, the child of no joint),

@@ -163,6 +163,7 @@ def _primitive(x: m.Primitive) -> JsonObject:
         encoding,
         ("formatArgs", None if x.encoding is None else [_embedded(a) for a in x.args]),
         decoding,
+        ("recordsUntil", x.records),
         ("frame", None if x.frame is None else {"name": x.frame.frame,
                                                  "arguments": [_embedded(a) for a in x.frame.args]}),
         ("skipUnmatched", x.skip_unmatched or None),

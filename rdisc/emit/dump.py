@@ -76,8 +76,11 @@ def _primitive(model: m.Model, p: m.Primitive) -> str:
     elif p.expects_reply(model.frames):
         uses = [f"{use.frame}({', '.join(expression_text(a) for a in use.args)})" for use in p.reply_frames]
         through = f", frame {uses[0]} .. {uses[-1]}" if uses else ""
-        lines += _sides(f"{p.replies} replies{through}, each" if p.replies else "reply", framed,
-                        _reply_rows(p.decoding))
+        rows = _reply_rows(p.decoding)
+        if p.records is not None:  # one record; the frame is shown around it
+            rows.append((len(p.records), "record end", _hex(p.records.encode("latin-1"))))
+        said = f"{p.replies} replies{through}, each" if p.replies else "reply"
+        lines += _sides("reply: records, each" if p.records is not None else said, framed, rows)
     else:
         lines.append("  reply: none")
     return "\n".join(lines) + "\n"

@@ -511,7 +511,8 @@ class _Driver:
         if prim.expect is not None:
             options["expect"] = f"{base}_expect"
             w.blank(2)
-            self.predicate(w, options["expect"], f"{signature}, reply: Sequence[Any]", prim.params, prim.expect)
+            self.predicate(w, options["expect"], f"{signature}, reply: Sequence[Any]", prim.reply_locals(),
+                           prim.expect)
         answers: list[str] = []
         for n, listed in enumerate(prim.listed, 1):  # each its own plan: frame, decoder, expect, post-actions
             own = {key: value for key, value in options.items() if key != "frame"}
@@ -533,6 +534,8 @@ class _Driver:
             answers.append(f"{const}_REPLY_{n}")
         if answers:
             options["answers"] = _tuple(answers)
+        if prim.records is not None:
+            options["records"] = repr(prim.records.encode("latin-1"))
         cases = [(prim, None)] if prim.table is None else [(prim.case(c), c) for c in prim.table.cases]
         table: list[str] = []
         for case, entry in cases:

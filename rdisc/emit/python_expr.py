@@ -307,7 +307,7 @@ class Compiler:
                 return call("len", [self.expr(args[0], names)])
             case "byte":
                 return self.helper("_byte", [self.expr(a, names) for a in args])
-            case "hex" | "ascii" | "encode" | "pack7" | "unpack7":
+            case "hex" | "ascii" | "encode" | "pack7" | "unpack7" | "bitset":
                 return self.carried(f"_{func}", [self.expr(args[0], names)])
             case "sqrt" | "sin" | "cos" | "atan2" | "hypot":
                 return call(f"math.{func}", [self.expr(a, names) for a in args])

@@ -268,10 +268,13 @@ class _Bridge:
                 ])
             w.line("ros_signal = signal.getsignal(signal.SIGINT)  # rospy's: shuts the node down, logging as it goes")
             w.blank()
+            with w.block("def later_signal(signum: int, frame: Any) -> None:"):
+                w.line('"""Ignored here, not by SIG_IGN, which makes a signal already pending raise OSError."""')
+            w.blank()
             with w.block("def first_signal(signum: int, frame: Any) -> None:"):
                 w.line('"""rospy\'s handler, once: a burst of signals would re-enter its logging mid-write."""')
-                w.line("signal.signal(signal.SIGINT, signal.SIG_IGN)")
-                w.line("signal.signal(signal.SIGTERM, signal.SIG_IGN)")
+                w.line("signal.signal(signal.SIGINT, later_signal)")
+                w.line("signal.signal(signal.SIGTERM, later_signal)")
                 with w.block("if callable(ros_signal):"):
                     w.line("ros_signal(signum, frame)")
             w.blank()
@@ -365,8 +368,14 @@ class _Bridge:
             for i, adapter in self.inputs:
                 w.line(f"rospy.Subscriber({quoted(i.name)}, {self.message(adapter)},")
                 w.line(f"                 subscriber({quoted(i.name)}, _ros_read_{_name(i.name)}), queue_size=10)")
-            w.line("rospy.spin()")
-            w.line("return 0")
+            w.lines([
+                "rospy.spin()",
+                "# Later signals are ignored to the exit; SIG_IGN set here, outside a handler, takes a",
+                "# signal already pending first.",
+                "signal.signal(signal.SIGINT, signal.SIG_IGN)",
+                "signal.signal(signal.SIGTERM, signal.SIG_IGN)",
+                "return 0",
+            ])
 
 
 def _measured(model: m.Model) -> list[tuple[str, dict[m.Quantity, m.Binding]]]:

@@ -111,7 +111,7 @@ class Description:
 
     def _primitive(self, p: m.Primitive, local: tuple[m.Parameter, ...] | None = None) -> engine.Primitive:
         """The plan of a primitive; `local`, what its post-actions read besides state and the
-        reply, when that is more than its parameters (a tag's entry reads the tag)."""
+        reply, when that is more than its parameters and its own (a tag's entry reads the tag)."""
         if p.table is not None:  # one plan for each key or tag, chosen when it is called or read
             plain = self._primitive(dataclasses.replace(p, table=None))
             table: dict[int, engine.Primitive] = {}
@@ -122,7 +122,7 @@ class Description:
                                            length=p.table.length)
             key = next(i for i, param in enumerate(p.params) if param.name == p.table.key)
             return dataclasses.replace(plain, table=table, key=key)
-        slots = _slots(local or p.params)
+        slots = _slots(local or p.reply_locals())
         actions = None
         if p.actions:
             prepared = [(a.target, prepare(a.value, slots), self.model.states[a.target].type) for a in p.actions]
@@ -141,6 +141,7 @@ class Description:
             p.skip_unmatched, None if p.timeout_ms is None else p.timeout_ms / 1000.0, checked=checked,
             expect=expect, lines=_levels(p.lines, slots), replies=p.replies, reply_frames=answers,
             answers=tuple(self._primitive(p.listed_reply(r)) for r in p.listed),
+            records=None if p.records is None else p.records.encode("latin-1"),
         )
 
     def _frame(self, frame: m.Frame) -> engine.Frame:

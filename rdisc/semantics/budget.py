@@ -195,6 +195,8 @@ def _reply_bytes(prim: m.Primitive, frames: dict[str, m.Frame] | None, request: 
         case m.Unpack(format=fmt, until=until):
             layout = formats.struct_layout(fmt)
             reply = layout.most(formats.most_rounds(layout, [])) + len(until or "")  # and its end marker
+            if prim.records is not None:  # one record and its marker: a report's records are counted as one
+                reply += len(prim.records)
             if layout.varying is not None and frame is not None:
                 stated = [length_range(length)[1] for parts in frame.replies if (length := length_part(parts))]
                 reply = min([reply, *stated])

@@ -627,6 +627,10 @@ class _Checker:
         reply: tuple[Type, ...] | None = ()
         if decodings:
             decoding, reply = self.decoding(decodings[0])
+        records_clause = self.once([c for c in decl.clauses if isinstance(c, ast.Records)], "`reply each until`", name)
+        if isinstance(records_clause, ast.Records):  # each record's post-actions read its position as `index`
+            self.not_a_param(decl, m.INDEX, "the position of a record of the reply")
+            scope = {**scope, m.INDEX: (Scope.PARAM, Type.INT)}
         replies_clause = self.once([c for c in decl.clauses if isinstance(c, ast.Replies)], "`replies`", name)
         count, reply_frames = self.reply_count(replies_clause, decl, reply, decoding, env, encoding) \
             if isinstance(replies_clause, ast.Replies) else (0, ())
@@ -656,15 +660,18 @@ class _Checker:
                 self.d.report("E203", table_clause.span, f"primitive `{name.text}` has a reply table and also "
                               "`unpack`/`regex` or post-actions", help="give each of its replies in the table")
             if table_clause.tag is not None:
-                self.tag_not_a_param(decl)
+                self.not_a_param(decl, m.TAG, "the tag of the reply")
             table = self.reply_table(table_clause, params, scope, name, unframed)
         tagged = table is not None and table.tag is not None
         replies = [decoding] if decoding is not None else [c.decoding for c in table.cases] if table else \
             [r.decoding for r in listed if r.frame is None]  # read through the primitive's frame, or none
         frame = (self.frame_use(framed, env, decl, encoding, replies, self.request_sizes(encoding, args, params))
                  if isinstance(framed, ast.Framed) else None)
+        records = self.records(records_clause, name, decodings, decoding, frame, count or len(listed), table) \
+            if isinstance(records_clause, ast.Records) else None
         open_ends = [why for r in replies if isinstance(r, m.Unpack) and (why := _open_end(r))]
-        if open_ends and (frame is None or not self.frames[frame.frame].reply) and not tagged:  # tagged: E505
+        if (open_ends and (frame is None or not self.frames[frame.frame].reply) and not tagged  # tagged: E505
+                and records_clause is None):  # records: E509
             self.d.report("E503", decodings[0].span if decodings else name.span,
                           f"the reply of `{name.text}` {open_ends[0]}, but no frame says where the reply ends",
                           help="read it through a frame with a `length` field or constant bytes after its payload")
@@ -695,7 +702,8 @@ class _Checker:
             self.d.report("E203", expect.span, f"primitive `{name.text}` has a reply table and also `expect`",
                           help="`expect` checks the reply of a primitive with one decoding")
         return m.Primitive(name.text, params, connection, encoding, args, decoding, actions, decl.doc, decl.span,
-                           frame, skip is not None, table, timeout, expect, lines, count, reply_frames, listed)
+                           frame, skip is not None, table, timeout, expect, lines, count, reply_frames, records,
+                           listed)
 
     def listed_replies(self, clause: ast.ReplyList, decl: ast.PrimitiveDecl, scope: dict[str, tuple[Scope, m.AnyType]],
                        env: Env, encoding: m.Pack | m.Format | None) -> tuple[m.ListedReply, ...]:
@@ -741,6 +749,38 @@ class _Checker:
             if decoding is not None:
                 listed.append(m.ListedReply(decoding, frame, expect, actions))
         return tuple(listed) if len(listed) == len(clause.replies) else ()
+
+    def records(self, clause: ast.Records, name: ast.Ident, decodings: list[ast.Decoding],
+                decoding: m.Unpack | m.Regex | None, frame: m.FrameUse | None, count: int,
+                table: m.ReplyTable | None) -> str | None:
+        """`reply each until "\\x7F"`: a framed payload of records, each ended by the marker (1 to
+        8 constant bytes) and decoded by the primitive's one `unpack`; not with `replies` or a
+        reply table, which read replies otherwise. The marker, or None where refused."""
+        marker = clause.marker
+        said = f"`{name.text}` reads its reply as records"
+        if not 1 <= len(marker.value) <= MAX_TERMINATOR or any(ord(ch) > 0xFF for ch in marker.value):
+            self.d.report("E509", marker.span, f"a record's end marker is 1 to {MAX_TERMINATOR} bytes "
+                          "(characters up to \\xff)")
+            return None
+        if count or table is not None:
+            self.d.report("E509", clause.span, f"{said}, so it reads one reply, not "
+                          + ("several (`replies`)" if count else "one chosen by a reply table"),
+                          help="each record is decoded by the primitive's `unpack`")
+            return None
+        if not isinstance(decoding, m.Unpack):
+            if decodings and decoding is None:  # its template was reported
+                return None
+            self.d.report("E509", decodings[0].span if decodings else clause.span,
+                          f"{said}, each decoded by an `unpack`" + (", not a `regex`" if decodings else ""),
+                          help='e.g. `reply each until "\\x7F" unpack "<*(BB)"`, pairs of bytes until the marker')
+            return None
+        if frame is None or not self.frames[frame.frame].reply or not payload_end_known(self.frames[frame.frame], False):
+            self.d.report("E509", clause.span, f"{said} until its payload ends, so it is read through a frame "
+                          "that says where that is",
+                          help="give the primitive a frame whose reply has a `length` field or constant bytes "
+                          "after its payload")
+            return None
+        return marker.value
 
     def reply_count(self, clause: ast.Replies, decl: ast.PrimitiveDecl, reply: tuple[m.AnyType, ...] | None,
                     decoding: m.Unpack | m.Regex | None, env: Env,
@@ -846,11 +886,12 @@ class _Checker:
             self.d.report("E401", clause.condition.span, f"`expect` takes a bool, but this is {describe(condition.type)}")
         return condition
 
-    def tag_not_a_param(self, decl: ast.PrimitiveDecl) -> None:
-        """A tagged reply's entries read its tag as `tag`: no parameter may have that name."""
+    def not_a_param(self, decl: ast.PrimitiveDecl, local: str, what: str) -> None:
+        """A name the post-actions read besides the parameters (a tagged reply's `tag`, a
+        record's `index`): no parameter may have it."""
         for param in decl.params:
-            if param.name.text == m.TAG:
-                self.d.report("E104", param.name.span, f"`{m.TAG}` names the tag of the reply of `{decl.name.text}` "
+            if param.name.text == local:
+                self.d.report("E104", param.name.span, f"`{local}` names {what} of `{decl.name.text}` "
                               "and cannot name a parameter of it", help="rename the parameter")
 
     def reply_table(self, clause: ast.ReplyTable, params: tuple[m.Parameter, ...], scope: dict,

@@ -554,6 +554,7 @@ class ListedReply:
 
 
 TAG = "tag"  # the name of a tagged reply's tag in its entries' post-actions
+INDEX = "index"  # the name of a record's position in the post-actions of `reply each until`
 
 
 @dataclass(frozen=True, slots=True)
@@ -584,6 +585,7 @@ class Primitive:
     lines: tuple[LineLevel, ...] = ()  # modem lines set before the request, in this order
     replies: int = 0  # `replies N`: N replies to its request, each value of them an array of N (0: one reply)
     reply_frames: tuple[FrameUse, ...] = ()  # each reply's own frame, when `replies` gives them
+    records: str | None = None  # `reply each until`: the marker ending each record of the payload (latin-1)
     listed: tuple[ListedReply, ...] = ()  # `replies { ... }`: replies of different shapes, in order
 
     def listed_reply(self, r: ListedReply) -> Primitive:
@@ -603,7 +605,10 @@ class Primitive:
 
     def reply_locals(self) -> tuple[Parameter, ...]:
         """What its post-actions read besides state and `out`: its parameters, and after
-        them, when a tag chooses the reply, the tag's value as `tag`."""
+        them, when a tag chooses the reply, the tag's value as `tag`, or, when the reply is
+        records, the record's position as `index`."""
+        if self.records is not None:
+            return (*self.params, Parameter(INDEX, Type.INT))
         if self.table is None or self.table.tag is None:
             return self.params
         return (*self.params, Parameter(TAG, Type.INT))

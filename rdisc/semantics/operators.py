@@ -258,6 +258,17 @@ def _unpack7(data: bytes) -> bytes:
     return bytes(out)
 
 
+def _bitset(bits: tuple[int, ...]) -> int:
+    """`bitset(a)`: one int with bit a[i] set for each element (a Firmata pin's set of modes),
+    each element 0..63 so the set stays a 64-bit int; any other is refused."""
+    out = 0
+    for i, bit in enumerate(bits):
+        if not 0 <= bit <= 63:
+            raise ValueError(f"bitset(): element {i} is {bit}, not a bit from 0 to 63")
+        out |= 1 << bit
+    return out
+
+
 # ---- end of what drivers carry ----
 
 
@@ -283,4 +294,5 @@ FUNCTIONS: dict[str, Callable[..., Any]] = {
     "encode": _encode,
     "pack7": _pack7,
     "unpack7": _unpack7,
+    "bitset": _bitset,
 }

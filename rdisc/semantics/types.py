@@ -52,6 +52,7 @@ ARITY = {
     "encode": (1, 1),
     "pack7": (1, 1),
     "unpack7": (1, 1),
+    "bitset": (1, 1),
 }
 
 
@@ -474,6 +475,11 @@ class Typer:
                 return Type.BYTES if need("bytes", (Type.BYTES,)) else None
             case "encode":
                 return Type.BYTES if need("a string", (Type.STRING,)) else None
+            case "bitset" if isinstance(types[0], Array) and types[0].element is Type.INT:
+                return Type.INT
+            case "bitset":
+                self.diagnostics.report("E404", e.args[0].span, f"`bitset` needs an int array, not {describe(types[0])}")
+                return None
             case _:  # sqrt sin cos atan2 hypot
                 return Type.FLOAT if need("numbers", NUMERIC) else None
 

@@ -401,6 +401,16 @@ class Expect:
 
 
 @dataclass(frozen=True, slots=True)
+class Records:
+    """`reply each until "\x7F"`: the reply's payload is records, each ended by the marker,
+    each decoded by the primitive's `unpack` and its post-actions run for it with `index`
+    (Firmata's capability report: a pin's modes, then 7F)."""
+
+    marker: StrLit
+    span: Span = _span
+
+
+@dataclass(frozen=True, slots=True)
 class Lines:
     """`lines dtr = COND, rts = COND`: the serial port's modem lines, set before the request."""
 
@@ -410,7 +420,7 @@ class Lines:
 
 PrimitiveClause = (
     On | Encoding | Decoding | Actions | Framed | SkipUnmatched | ReplyTable | ReplyTimeout | Expect | Lines
-    | Replies | ReplyList
+    | Replies | ReplyList | Records
 )
 
 

@@ -367,6 +367,9 @@ def _transformer_class():
             length = None if c[1] is None else self.b.string(c[1])
             return ast.ReplyTable(ast.Ident("tag", tag.span), tuple(c[2:]), self.b.span(meta), tag, True, length)
 
+        def reply_records(self, meta: Meta, c: list[Any]) -> ast.Records:
+            return ast.Records(self.b.string(c[0]), self.b.span(meta))
+
         def reply_entry(self, meta: Meta, c: list[Any]) -> ast.ReplyEntry:
             value, last, kind, template, until, *assigns = c
             decoding = ast.Decoding(kind, self.b.string(template), self.b.span(meta))

@@ -321,8 +321,8 @@ _CONNECTION = (
 )  # fmt: skip
 _PRIMITIVE = (
     "name", "parameters", "parameterTypes", "parameterRanges", "parameterDefaults", "parameterUnits", "connection",
-    "lines", "pack", "format", "formatArgs", "unpack", "regex", "frame", "skipUnmatched", "replyTable", "timeout",
-    "replies", "replyFrames", "replyList", "expect", "postActions", "doc",
+    "lines", "pack", "format", "formatArgs", "unpack", "regex", "recordsUntil", "frame", "skipUnmatched",
+    "replyTable", "timeout", "replies", "replyFrames", "replyList", "expect", "postActions", "doc",
 )  # fmt: skip
 _FRAME = ("name", "parameters", "parameterTypes", "parameterRanges", "parameterDefaults", "parameterUnits",
           "request", "reply", "moreRequests", "moreReplies",
@@ -823,6 +823,9 @@ class _Importer:
             s = self.string(m.get(kind), f"`{kind}`")
             if s is not None:
                 clauses.append(ast.Decoding(kind, ast.StrLit(s.value, s.span), s.span))
+        marker = self.string(m.get("recordsUntil"), "`recordsUntil`")
+        if marker is not None:
+            clauses.append(ast.Records(ast.StrLit(marker.value, marker.span), marker.span))
         framed = self.framed(m.get("frame"))
         if framed is not None:
             clauses.append(framed)

@@ -348,6 +348,8 @@ def _primitive_clause(c: ast.PrimitiveClause) -> tuple[list[str], bool]:
                 lines.append(INDENT + head + (" " + actions[0] if actions else ""))
                 lines.extend(INDENT + line for line in actions[1:])
             return [*lines, "}"], False
+        case ast.Records(marker):
+            return [f"reply each until {p.quote(marker.value)}"], False
         case ast.Lines(settings):
             return ["lines " + ", ".join(_assign(a) for a in settings)], False
         case ast.ReplyTable(key, entries, _, tag, each, length):

@@ -60,6 +60,8 @@ EXPECTED_COUNTS: dict[str, dict[str, int]] = {
                               "OutputDecl": 1, "PrimitiveDecl": 8, "RobotDecl": 1, "StateDecl": 3},
     "examples/nmea.rdis": {"ConnectionDecl": 1, "ConstDecl": 2, "FrameDecl": 3, "InterfaceDecl": 2,
                            "PrimitiveDecl": 6, "RobotDecl": 1, "StateDecl": 20},
+    "examples/firmata.rdis": {"ConnectionDecl": 1, "EnumDecl": 1, "FrameDecl": 4, "InterfaceDecl": 3,
+                              "PrimitiveDecl": 11, "RobotDecl": 1, "StateDecl": 10},
     "examples/kobuki.rdis": {"ConnectionDecl": 1, "FrameDecl": 2, "InterfaceDecl": 2, "PrimitiveDecl": 2,
                              "RobotDecl": 1, "StateDecl": 12},
     "examples/rplidar.rdis": {"ConnectionDecl": 1, "FrameDecl": 2, "InterfaceDecl": 2, "PrimitiveDecl": 8,

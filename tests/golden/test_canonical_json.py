@@ -9,7 +9,7 @@ import pytest
 
 REPO = Path(__file__).resolve().parents[2]
 JSON = Path(__file__).resolve().parent / "json"
-EXAMPLES = ["create", "koala", "ax12", "roboclaw", "rplidar"]
+EXAMPLES = ["create", "koala", "ax12", "roboclaw", "rplidar", "firmata"]
 DUMPS = Path(__file__).resolve().parent / "dumps"
 
 
@@ -43,7 +43,7 @@ def test_build_is_byte_identical_under_different_hash_seeds(name: str, rdisc, tm
     assert outputs[0].endswith(b"\n") and b"\r" not in outputs[0]
 
 
-@pytest.mark.parametrize("name", ["ax12", "create2", "roboclaw", "nmea", "rplidar"])
+@pytest.mark.parametrize("name", ["ax12", "create2", "roboclaw", "nmea", "rplidar", "firmata"])
 def test_dump_golden(name: str, rdisc, golden) -> None:
     """Each primitive's bytes, as a user holds them against the device's manual."""
     result = rdisc("dump", f"examples/{name}.rdis")

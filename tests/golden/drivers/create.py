@@ -1076,6 +1076,7 @@ class Primitive:
     tag: str | None = None  # the struct format of the tag that starts the reply
     each: bool = False  # the framed payload is sub-payloads, each a tag and its entry's bytes, until it ends
     length: str | None = None  # `each`: the struct format of each sub-payload's length, after its tag
+    records: bytes | None = None  # the marker ending each record of the framed payload, each decoded by `decoder`
     checked: tuple[str, ...] = ()  # state variables its post-actions may make too wide (checked as they are set)
     request: Request | None = None  # its parameters' values to the bytes, when it is only written (`_sent_at_once`)
     expect: Callable[[StateValues, Args, Sequence[Any]], object] | None = None  # a condition its decoded reply meets
@@ -2203,16 +2204,13 @@ class Robot:
 
     def _store(self, plan: Primitive, local: Args, reply: Sequence[Any]) -> None:
         """Run the post-actions on a reply read whole (every part decoded and met, so a bad one
-        changed no state): each sub-payload's, or each listed reply's, in the order they came;
-        or the primitive's (`replies N`: value i of the replies as one array)."""
-        if plan.each:
-            for case, args, one in reply:
-                if case.actions is not None:
-                    self._assign(case, args, one)
+        changed no state): each sub-payload's, record's or listed reply's in the order they came,
+        published together; or the primitive's (`replies N`: value i of the replies as one array)."""
+        if plan.each or plan.records is not None:
+            self._assign_each([part for part in reply if part[0].actions is not None])
         elif plan.answers and not plan.replies:
-            for answer, one in zip(plan.answers, reply):
-                if answer.actions is not None:
-                    self._assign(answer, local, one)
+            self._assign_each([(answer, local, one) for answer, one in zip(plan.answers, reply)
+                               if answer.actions is not None])
         elif plan.actions is not None:
             self._assign(plan, local, tuple(zip(*reply)) if plan.replies else reply)
 
@@ -2276,7 +2274,7 @@ class Robot:
                 self._notify_io("write", plan.connection, request)
         if plan.answers:  # one reply for each, meeting its own expect
             reply = [self._met(answer, local, one) for answer, one in zip(plan.answers, reply)]
-        elif plan.expects_reply:
+        elif plan.expects_reply and not plan.each and plan.records is None:
             reply = self._met(plan, local, reply)
         self._store(plan, local, reply)
 
@@ -2309,12 +2307,14 @@ class Robot:
         # The decoding's size is the payload's, unless a tag comes first or stuffing may have lengthened
         # it on the wire (then the constant after the payload ends it).
         stuffed = use.frame.stuffing is not None and any(side.delimiter for side in use.frame.replies)
-        size = decoder.size if decoder is not None and plan.tag is None and not stuffed else -1
+        size = decoder.size if decoder is not None and plan.tag is None and plan.records is None and not stuffed else -1
         while True:  # once, or until a reply decodes when the primitive skips the others
             try:
                 payload = use.frame.read(reader, fields, request, size)[1]
                 if plan.each:
                     return plan, local, self._sub_payloads(plan, payload, local)
+                if plan.records is not None:
+                    return plan, local, self._records(plan, payload, local)
                 if plan.tag_struct is not None:
                     return self._tagged(plan, payload, local)
                 return plan, local, self._met(plan, local, decoder.decode(plan.name, payload)) if decoder else ()
@@ -2381,6 +2381,30 @@ class Robot:
             raise RdisProtocolError(f"{plan.name}: no reply entry for tag {value}")
         rest = payload[tag.size :]
         return case, [*local, value], case.decoder.decode(plan.name, rest) if case.decoder is not None else ()
+
+    def _records(self, plan: Primitive, payload: bytes, local: Args) -> list[tuple[Primitive, Args, Sequence[Any]]]:
+        """A payload of records, each ended by the marker where it first comes (Firmata's capability
+        report: a pin's mode and resolution pairs, then 7F), each decoded by the primitive's decoder
+        and meeting its `expect`, its position after the parameters' values (`index`). At most
+        MAX_ARRAY of them; a payload whose end is not a marker is refused, as is a record that does
+        not decode. All are decoded before any post-action runs, so a bad one changes no state."""
+        marker = plan.records
+        decoder = plan.decoder
+        assert marker is not None and decoder is not None
+        parts: list[tuple[Primitive, Args, Sequence[Any]]] = []
+        at = 0
+        while at < len(payload):
+            end = payload.find(marker, at)
+            if end < 0:
+                raise RdisProtocolError(f"{plan.name}: the reply's last {len(payload) - at} bytes end in no "
+                                        f"{marker.hex(' ')}, so they are no record")
+            if len(parts) == MAX_ARRAY:
+                raise RdisProtocolError(f"{plan.name}: more than {MAX_ARRAY} records")
+            index: Args = [*local, len(parts)]
+            name = f"{plan.name}: record {len(parts)}"
+            parts.append((plan, index, self._met(plan, index, decoder.decode(name, payload[at:end]))))
+            at = end + len(marker)
+        return parts
 
     @staticmethod
     def _sub_payloads(plan: Primitive, payload: bytes, local: Args) -> list[tuple[Primitive, Args, Sequence[Any]]]:
@@ -2474,21 +2498,26 @@ class Robot:
 
     def _assign(self, plan: Primitive, local: Args, reply: Sequence[Any]) -> None:
         """The post-actions: all values computed from one snapshot, then published together."""
-        assert plan.actions is not None
+        self._assign_each([(plan, local, reply)])
+
+    def _assign_each(self, parts: Sequence[tuple[Primitive, Args, Sequence[Any]]]) -> None:
+        """The post-actions of each part in turn (sub-payloads, records), each part's computed from
+        the state the one before left; all published together, or none when one fails."""
         with self._state_lock:
             state = self._state
-            try:
-                changes = plan.actions(state, local, reply)
-            except EVAL_ERRORS as err:
-                raise RdisValueError(f"{plan.name}: {err}") from None
-            for name in plan.checked:
-                value = changes[name]
-                if type(value) is int and not -MAX_INT <= value <= MAX_INT:
-                    raise RdisValueError(f"{plan.name}: {name} would be a {value.bit_length()}-bit integer; "
-                                         "integers are limited to 64 bits and a sign")
-            new = dict(state)
-            new.update(changes)
-            self._state = new
+            for plan, local, reply in parts:
+                assert plan.actions is not None
+                try:
+                    changes = plan.actions(state, local, reply)
+                except EVAL_ERRORS as err:
+                    raise RdisValueError(f"{plan.name}: {err}") from None
+                for name in plan.checked:
+                    value = changes[name]
+                    if type(value) is int and not -MAX_INT <= value <= MAX_INT:
+                        raise RdisValueError(f"{plan.name}: {name} would be a {value.bit_length()}-bit integer; "
+                                             "integers are limited to 64 bits and a sign")
+                state = {**state, **changes}
+            self._state = state
 
     # ---- delivering to callbacks: one at a time, a failing one reported -----------------------------
 
@@ -2791,9 +2820,11 @@ def run_command(args: argparse.Namespace, robot: Robot, prog: str, sim: Simulato
             if recorder is not None:
                 recorder.finish()
         finally:
-            interrupted = status in (EXIT_SIGINT, EXIT_SIGTERM)
-            for signum, handler in previous.items():  # after a signal, later ones are ignored to the exit
-                signal.signal(signum, signal.SIG_IGN if interrupted else handler)
+            # After a signal, _on_signal stays and ignores later ones to the exit (SIG_IGN would
+            # make a signal already pending raise OSError).
+            if status not in (EXIT_SIGINT, EXIT_SIGTERM):
+                for signum, handler in previous.items():
+                    signal.signal(signum, handler)
     return status
 
 
