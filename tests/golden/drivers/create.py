@@ -2820,11 +2820,9 @@ def run_command(args: argparse.Namespace, robot: Robot, prog: str, sim: Simulato
             if recorder is not None:
                 recorder.finish()
         finally:
-            # After a signal, _on_signal stays and ignores later ones to the exit (SIG_IGN would
-            # make a signal already pending raise OSError).
-            if status not in (EXIT_SIGINT, EXIT_SIGTERM):
-                for signum, handler in previous.items():
-                    signal.signal(signum, handler)
+            interrupted = status in (EXIT_SIGINT, EXIT_SIGTERM)
+            for signum, handler in previous.items():  # after a signal, later ones are ignored to the exit
+                signal.signal(signum, signal.SIG_IGN if interrupted else handler)
     return status
 
 
