@@ -390,9 +390,8 @@ def _transformer_class():
             return ast.Replies(low, span, self.b.ident(var), high, framed)
 
         def listed_reply(self, meta: Meta, c: list[Any]) -> ast.ListedReply:
-            frame, args, kind, template, condition, *assigns = c
+            framed, kind, template, condition, *assigns = c
             span = self.b.span(meta)
-            framed = None if frame is None else ast.Framed(self.b.ident(frame), args or (), span)
             actions = ast.Actions(tuple(assigns), span) if assigns else None  # `{}` says nothing more
             return ast.ListedReply(ast.Decoding(kind, self.b.string(template), span), span, framed, condition, actions)
 

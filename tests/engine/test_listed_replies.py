@@ -178,7 +178,7 @@ error[E504]: reply 1 of `silent` is read through frame `quiet`, whose reply is e
  --> d.rdis:8:51
   |
 8 | primitive silent() on port pack "B" (1) replies { frame quiet() unpack "<h"  unpack "<B" }
-  |                                                   ^^^^^^^^^^^^^^^^^^^^^^^^^
+  |                                                   ^^^^^^^^^^^^^
   |
   = help: read it through a frame whose reply has a `payload`, or through the primitive's frame (leave out its `frame`)
 

@@ -212,3 +212,24 @@ def test_a_reply_value_that_expect_pins_is_given_and_others_are_zero(tmp_path: P
             robot.call_interface("sense")  # a disjunction pins nothing: out[0] is zero
     finally:
         robot.close()
+
+
+@pytest.mark.parametrize("kind", ["runtime", "driver"])
+def test_a_bulk_read_is_answered_reply_by_reply_from_the_joints(kind: str, tmp_path: Path) -> None:
+    """examples/arm.rdis's bulk read, two status packets of different shapes: the first's
+    present position comes from the waist through its transmission, the second's temperature,
+    which nothing measures, is zero; each reply's `expect` pins its first value."""
+    impl = implementation_of(kind, EXAMPLE_ARM.read_text(encoding="utf-8"), tmp_path, "arm")
+    sim = Simulation(_model(EXAMPLE_ARM))
+    robot = impl.connect(sim=sim)
+    try:
+        robot.call_input("command", name=[], position=[0.5, 0.0, 0.0, 0.0, 0.0, 0.0])
+        robot.run_for(2.0)
+        robot.call_primitive("bulk_read_waist_gripper")
+        waist = sim.position("waist")
+        state = robot.state
+    finally:
+        robot.close()
+    assert abs(waist - 0.5) < 0.01
+    assert state["present"][0] == round(waist * 4096 / (2 * math.pi)) + 2048
+    assert state["error"][0] == 0 and state["error"][5] == 0 and state["gripper_temperature"] == 0
