@@ -410,7 +410,7 @@ parents). Right: `joint b: revolute arm -> hand {...}`."""),
 A link's `visual` and `collision` shapes are `box(x, y, z)` (full lengths),
 `cylinder(radius, length)` (along its z axis), `sphere(radius)` or
 `mesh("file.stl")` / `mesh("file.stl", scale)`, in metres, every size a constant
-number more than 0; a shape is placed by `at [x, y, z]` and `rpy [roll, pitch,
+number more than 0 (a mesh's path printable characters, as URDF and SDF carry it); a shape is placed by `at [x, y, z]` and `rpy [roll, pitch,
 yaw]` in its link's frame. Vectors are three constant numbers in brackets. Wrong:
 `visual cylinder(0.1) at (0, 0, 1)`. Right: `visual cylinder(0.1, 0.05) at [0, 0, 1]`."""),
     ("E603", "joint", """

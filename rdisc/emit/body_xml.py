@@ -15,13 +15,12 @@ import xml.etree.ElementTree as ET
 from rdisc.emit.canonical import expression_text
 from rdisc.semantics import model as m
 
-# What XML 1.0 cannot carry at all (its `Char` production): a mesh path with one of these
-# would make a document no tool reads.
+# What XML 1.0 cannot carry at all (its `Char` production), even in a comment.
 _NOT_XML = re.compile("[^\t\n\r\x20-\ud7ff\ue000-\ufffd\U00010000-\U0010ffff]")
 
 
 class BodyError(ValueError):
-    """The description has no body to write, or one XML cannot carry."""
+    """The description has no body to write."""
 
 
 def require_body(model: m.Model) -> m.Link:
@@ -51,22 +50,16 @@ def unit(axis: m.Vector) -> m.Vector:
     return x, y, z
 
 
-def text(value: str, what: str) -> str:
-    """A string of the description (a mesh's path) as XML can carry it, or a BodyError."""
-    bad = _NOT_XML.search(value)
-    if bad is not None:
-        raise BodyError(f"{what} {value!r} has a character XML cannot carry ({bad.group()!r})")
-    return value
-
-
 def comment(parent: ET.Element, words: str | None) -> None:
-    """The description's words as one XML comment line (a comment cannot hold `--`)."""
+    """The description's words as one XML comment line (a comment cannot hold `--`, and a
+    character XML cannot carry is written as its escape: `\\x00`)."""
     if not words:
         return
     line = " ".join(words.split())
     while "--" in line:
         line = line.replace("--", "- -")
-    parent.append(ET.Comment(f" {text(line, 'a comment')} "))
+    line = _NOT_XML.sub(lambda bad: bad.group().encode("unicode_escape").decode("ascii"), line)
+    parent.append(ET.Comment(f" {line} "))
 
 
 def child(parent: ET.Element, tag: str, content: str | None = None, **attributes: str) -> ET.Element:

@@ -91,8 +91,7 @@ def _ros_set_yaw(q: Any, yaw: float) -> None:
 
 
 def to_ros(model: m.Model, source_name: str, *, sources: Mapping[str, SourceFile] | None = None) -> str:
-    """The ROS node for `model`: its generated driver, with the bridge as its main program (a
-    BodyError if its body has what XML cannot carry)."""
+    """The ROS node for `model`: its generated driver, with the bridge as its main program."""
     w = Writer()
     bridge = _Bridge(model, source_name)
     bridge.write(w)  # first: the driver carries the helpers its conversions use

@@ -21,7 +21,6 @@ from rdisc.emit.body_xml import (
     number,
     numbers,
     require_body,
-    text,
     unit,
 )
 from rdisc.semantics import model as m
@@ -117,7 +116,7 @@ def _geometry(geometry: ET.Element, shape: m.Shape) -> None:
             child(child(geometry, "sphere"), "radius", number(size[0]))
         case m.ShapeKind.MESH:
             mesh = child(geometry, "mesh")
-            child(mesh, "uri", text(shape.path or "", "a mesh's path"))
+            child(mesh, "uri", shape.path or "")
             child(mesh, "scale", numbers(size))
 
 

@@ -18,7 +18,6 @@ from rdisc.emit.body_xml import (
     number,
     numbers,
     require_body,
-    text,
     unit,
 )
 from rdisc.semantics import model as m
@@ -78,7 +77,7 @@ def _geometry(geometry: ET.Element, shape: m.Shape) -> None:
         case m.ShapeKind.SPHERE:
             child(geometry, "sphere", radius=number(size[0]))
         case m.ShapeKind.MESH:
-            child(geometry, "mesh", filename=text(shape.path or "", "a mesh's path"), scale=numbers(size))
+            child(geometry, "mesh", filename=shape.path or "", scale=numbers(size))
 
 
 def _joint(robot: ET.Element, joint: m.Joint) -> None:

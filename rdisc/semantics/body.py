@@ -140,6 +140,11 @@ class BodyRules:
             self.d.report("E602", use.shape.span, "a mesh is `mesh(\"file\")` or `mesh(\"file\", scale)`",
                           help="the file is a path as the tools reading the output will see it")
             return None
+        if not path.value.isprintable():
+            self.d.report("E602", path.span, f"a mesh's path has a character no URDF or SDF file can carry: "
+                          f"{next(c for c in path.value if not c.isprintable())!r}",
+                          help="a mesh's path is printable text, as the tools reading the output will see it")
+            return None
         scale: tuple[float, ...] | None = (1.0, 1.0, 1.0)
         if len(args) == 2:
             if isinstance(args[1], ast.ArrayLit):

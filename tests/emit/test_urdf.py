@@ -138,6 +138,16 @@ def test_a_doc_with_two_dashes_is_still_an_xml_comment(tmp_path: Path, rdisc) ->
     assert "  <!-- The base - - a plate. -->\n  <link name=\"base\">\n" in result.stdout
 
 
+def test_words_xml_cannot_carry_are_escaped_in_their_comment(tmp_path: Path, rdisc) -> None:
+    """Found by the fuzzer (seed 41): a description of "\\0" made the URDF writer fail."""
+    source = tmp_path / "twisty.rdis"
+    source.write_text(TWISTY.replace('"A test body -- every', '"A test\\0body\\x01 -- every'), encoding="utf-8")
+    result = rdisc("emit-urdf", source, "-o", tmp_path / "twisty.urdf")
+    urdf = (tmp_path / "twisty.urdf").read_text(encoding="utf-8")
+    assert result.returncode == 0 and "<!-- A test\\x00body\\x01 - - every kind" in urdf
+    assert isinstance(check_urdf(tmp_path / "twisty.urdf"), Tree)
+
+
 def test_a_description_without_links_is_an_error(tmp_path: Path, rdisc) -> None:
     source = tmp_path / "d.rdis"
     source.write_text('robot r { description "no body" }\nconst N = 1\n', encoding="utf-8")

@@ -226,9 +226,12 @@ def test_a_body_that_agrees_checks_clean(tmp_path: Path) -> None:
      [("E204", "2 ** 1100", "a link's mass must be a finite number")]),
     ("link base { visual sphere(2 ** 1100) }\n",
      [("E204", "2 ** 1100", "a sphere's radius must be a finite number")]),
+    # seed 41: a path no XML file can carry was an error of the URDF writer, not of the checker
+    ('link base { visual mesh("a\\x01.stl") }\n',
+     [("E602", '"a\\x01.stl"', "a mesh's path has a character no URDF or SDF file can carry: '\\x01'")]),
     (DEVICE + "transmission t: lift { command position to servo.goal { raw = round(position * undefined)  "
      "position = raw } }\n",
      [("E103", "undefined", "unknown name `undefined` in a conversion to the device")]),
 ])
-def test_numbers_no_float_holds_are_refused_not_crashed_on(tmp_path: Path, body: str, expected: list[Found]) -> None:
+def test_values_no_output_can_hold_are_refused_not_crashed_on(tmp_path: Path, body: str, expected: list[Found]) -> None:
     assert errors(tmp_path, body) == expected
