@@ -1,35 +1,34 @@
-"""`rdisc VERB ...`: one module per verb, each with add_parser() and run(args) -> exit code."""
+"""`rdisc VERB ...`: one module per verb, each with add_parser() and run(args) -> exit code.
+
+A verb's module is imported only when that verb is asked for: `rdisc check` need not load
+the runtime, asyncio or the console to start (`rdisc --help` loads them all to list them).
+"""
 
 from __future__ import annotations
 
 import argparse
+import importlib
 import sys
+from types import ModuleType
 
 from rdisc import __version__
-from rdisc.cli import (
-    build,
-    check,
-    console,
-    dump,
-    emit_mjcf,
-    emit_python,
-    emit_ros,
-    emit_sdf,
-    emit_urdf,
-    explain,
-    graph,
-    import_,
-    replay,
-    run,
-    sim,
-)
 
-VERBS = (check, build, import_, explain, run, sim, replay, console, emit_python, emit_ros, emit_urdf, emit_sdf,
-         emit_mjcf, dump, graph)
+# Each verb and its module in rdisc.cli, in the order `rdisc --help` lists them. Only these
+# names are ever imported.
+VERBS = {
+    "check": "check", "build": "build", "import": "import_", "explain": "explain", "run": "run", "sim": "sim",
+    "replay": "replay", "console": "console", "emit-python": "emit_python", "emit-ros": "emit_ros",
+    "emit-urdf": "emit_urdf", "emit-sdf": "emit_sdf", "emit-mjcf": "emit_mjcf", "dump": "dump", "graph": "graph",
+}  # fmt: skip
 EXIT_INTERNAL = 3
 
 
-def parser() -> argparse.ArgumentParser:
+def _module(verb: str) -> ModuleType:
+    return importlib.import_module(f"rdisc.cli.{VERBS[verb]}")
+
+
+def parser(argv: list[str] | None = None) -> argparse.ArgumentParser:
+    """The command line's parser: of the verb `argv` names, or of every verb."""
     p = argparse.ArgumentParser(
         prog="rdisc",
         description="The RDIS toolchain: check robot device descriptions and turn them into what frameworks use.",
@@ -37,13 +36,15 @@ def parser() -> argparse.ArgumentParser:
     p.add_argument("--version", action="version", version=f"rdisc {__version__}")
     p.add_argument("--debug", action="store_true", help="show the Python traceback of an internal error")
     verbs = p.add_subparsers(dest="verb", metavar="VERB", required=True)
-    for verb in VERBS:
-        verb.add_parser(verbs)
+    named = next((a for a in argv or () if not a.startswith("-")), None)
+    for verb in [named] if named in VERBS else VERBS:
+        _module(verb).add_parser(verbs)
     return p
 
 
 def main(argv: list[str] | None = None) -> int:
-    args = parser().parse_args(argv)
+    given = sys.argv[1:] if argv is None else argv
+    args = parser(given).parse_args(given)
     try:
         return args.run(args)
     except KeyboardInterrupt:
