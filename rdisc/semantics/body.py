@@ -416,6 +416,8 @@ class BodyRules:
             self.typer.reads.add(target)
             device = variable.type
             where = f"state variable `{target}`"
+        if device is None:  # its type is in error, reported where it is declared
+            return None
         index = self.index(b, device, where)
         if index is False:
             return None

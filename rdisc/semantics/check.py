@@ -240,11 +240,11 @@ class _Checker:
                     what: str = "parameter") -> tuple[float | None, float | None]:
         """`in low..high`: constant numbers of the parameter's type, low <= high; for bytes, the
         number of bytes."""
-        if p.low is None or p.high is None:
+        if p.low is None or p.high is None or type_ is None:  # None: its type is in error, reported
             return None, None
         if type_ not in (Type.INT, Type.FLOAT, Type.BYTES):
             self.d.report("E204", p.low.span.to(p.high.span), "only a number (or bytes, by length) has a range, "
-                          f"not {'a value of unknown type' if type_ is None else describe(type_)}")
+                          f"not {describe(type_)}")
             return None, None
         low, high = self.setting(p.low, "a range's bound"), self.setting(p.high, "a range's bound")
         if low is None or high is None:
@@ -616,7 +616,7 @@ class _Checker:
         for extra in action_blocks[1:]:
             self.d.report("E203", extra.span, f"primitive `{name.text}` has more than one post-action block",
                           labels=(Label(action_blocks[0].span, "first given here"),))
-        scope = {p.name: (Scope.PARAM, p.type) for p in params if p.type is not None}
+        scope = {p.name: (Scope.PARAM, p.type) for p in params}  # one of a type in error: known, of type None
         env = self.env_with(scope, "in a primitive", "its parameters and state variables",
                             reply_note="`out`, the reply, is in scope only in post-actions")
         encoding: m.Pack | m.Format | None = None
@@ -1303,13 +1303,16 @@ class _Checker:
     def format_value(self, arg: m.Expr, expr: ast.Expr, field: formats.FormatField) -> None:
         if arg.type is None or formats.spec_accepts(field.spec, arg.type):
             return
+        written = f"{{:{field.spec}}}" if field.spec else "{}"
         if arg.type is Type.FLOAT and formats.spec_accepts(field.spec, Type.INT):
             self.d.report(
-                "E402", expr.span, f"format field `{{:{field.spec}}}` takes an int, but this is a float",
+                "E402", expr.span, f"format field `{written}` takes an int, but this is a float",
                 help="convert it: `round(...)` to the nearest integer, `int(...)` towards zero",
             )
         else:
-            self.d.report("E401", expr.span, f"format field `{{:{field.spec}}}` cannot format {describe(arg.type)}")
+            self.d.report("E401", expr.span, f"format field `{written}` cannot format {describe(arg.type)}",
+                          help="write bytes as text with `ascii(...)` or `hex(...)`" if arg.type is Type.BYTES
+                          else None)
 
     def decoding(self, dec: ast.Decoding) -> tuple[m.Unpack | m.Regex | None, tuple[Type, ...] | None]:
         """The decoding and the types of its values; None for a template already reported."""
@@ -1398,7 +1401,7 @@ class _Checker:
                 f"periodic interface `{name.text}` cannot take parameters",
                 help="nobody passes arguments on a tick: read state variables instead, or make it `adhoc`",
             )
-        scope = {p.name: (Scope.PARAM, p.type) for p in params if p.type is not None}
+        scope = {p.name: (Scope.PARAM, p.type) for p in params}  # one of a type in error: known, of type None
         env = self.env_with(scope, "in an interface", "its parameters and state variables")
         calls: list[m.PrimitiveCall] = []
         self.body(decl.body, _Unrolling(decl, env, interface_params, primitives, calls), {})

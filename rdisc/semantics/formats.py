@@ -415,7 +415,10 @@ _SAMPLES = {Type.INT: 0, Type.FLOAT: 0.0, Type.BOOL: False, Type.STRING: ""}
 
 
 def spec_accepts(spec: str, type_: Type) -> bool:
-    """Whether a format spec can format a value of this type."""
+    """Whether a format spec can format a value of this type (text, never bytes: they have no
+    one way to be written as text)."""
+    if type_ not in _SAMPLES:
+        return False
     try:
         format(_SAMPLES[type_], spec)
     except (ValueError, TypeError):

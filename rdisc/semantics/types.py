@@ -115,7 +115,9 @@ class Typer:
     def folded(self, expr: m.Expr) -> m.Expr:
         """An element of a constant array known as its value (`IDS[2]`, as a format value)."""
         if isinstance(expr, m.Element) and self.is_constant(expr.array) and isinstance(expr.index, m.Const):
-            return self._const(m.Const(self.constant(expr.array)[expr.index.value], expr.type, expr.span))  # type: ignore[index]
+            values, index = self.constant(expr.array), expr.index.value
+            if isinstance(values, tuple) and type(index) is int and 0 <= index < len(values):  # else reported
+                return self._const(m.Const(values[index], expr.type, expr.span))
         return expr
 
     # -- the rules ------------------------------------------------------------

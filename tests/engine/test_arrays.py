@@ -112,6 +112,8 @@ REFUSED = {
     "bytes": ("state p: bytes[2]", "error[E105]: an array holds ints, floats, bools or strings, not `bytes`"),
     "a constant index outside": ('state p: int[3]\nprimitive r() on link pack "B" (p[3])',
                                  "error[E403]: index 3 is outside `p`, which has 3 values"),
+    "a float index of a constant": ('const IDS = [1, 2]\nprimitive r() on link pack "B" (IDS[1.0])',
+                                    "error[E404]: an index is an int, not a float"),  # fuzzer, seed 43: a crash
     "too many values for the format": ('state p: int[3]\nprimitive w() on link pack "BB" (1, p)',
                                        '''error[E302]: `pack "BB"` takes 2 values, but 2 arguments giving 4 values'''),
     "floats into ints": ("state p: int[3] = [1.5, 2, 3]",

@@ -144,6 +144,7 @@ adapter Blob { data: bytes }
 connection link: serial { baud 9600 }
 primitive send(data: bytes in 1..2) on link pack "*" (data)
 interface i() { send(b"") send(b"abc") send(b"ab") }
+primitive say(data: bytes) on link format "{}{:>4}" (data, data)
 """, encoding="utf-8")
     compilation = compile_path(str(source))
     assert [(d.code, d.message) for d in compilation.diagnostics.items] == [
@@ -155,6 +156,8 @@ interface i() { send(b"") send(b"abc") send(b"ab") }
         ("E404", "`encode` needs a string, not bytes"),
         ("E404", "`+` needs two numbers, two strings or two bytes, not bytes and a string"),
         ("E404", "`<` compares two numbers or two strings, not bytes and bytes"),
+        ("E401", "format field `{}` cannot format bytes"),  # fuzzer, seed 43: was an internal error
+        ("E401", "format field `{:>4}` cannot format bytes"),
         ("E403", 'b"" (0 bytes) is outside the range of parameter `data` of primitive `send`'),
         ("E403", 'b"abc" (3 bytes) is outside the range of parameter `data` of primitive `send`'),
         ("W103", "state variable `s` is never used"),

@@ -229,6 +229,10 @@ def test_a_body_that_agrees_checks_clean(tmp_path: Path) -> None:
     # seed 41: a path no XML file can carry was an error of the URDF writer, not of the checker
     ('link base { visual mesh("a\\x01.stl") }\n',
      [("E602", '"a\\x01.stl"', "a mesh's path has a character no URDF or SDF file can carry: '\\x01'")]),
+    # seed 43: a parameter of an unknown type, commanded
+    (DEVICE.replace("goal: int in", "goal: reply in") + "transmission t: lift { command position to servo.goal "
+     "{ raw = round(position)  position = raw } }\n",
+     [("E105", "reply", "unknown type `reply`")]),
     (DEVICE + "transmission t: lift { command position to servo.goal { raw = round(position * undefined)  "
      "position = raw } }\n",
      [("E103", "undefined", "unknown name `undefined` in a conversion to the device")]),
