@@ -2,6 +2,7 @@
 
     python benchmarks/fuzz.py                        # 2,000 mutants, seed 1
     python benchmarks/fuzz.py --count 20000 --seed 7 --jobs 2
+    python benchmarks/fuzz.py --seed 7 --keep /tmp/found   # and each reproducer whole, as a file
 
 Mutants of the examples and test descriptions (tests/properties/mutants.py) go
 through check, the rendered diagnostics, canonical JSON and back, dump, the Python
@@ -77,6 +78,8 @@ def main() -> int:
     parser.add_argument("--jobs", type=int, default=2)
     parser.add_argument("--memory", type=int, default=1024, help="MB of address space a worker may use")
     parser.add_argument("--alarm", type=int, default=30, help="seconds before a mutant is given up")
+    parser.add_argument("--keep", type=Path, help="a folder to write each place's smallest reproducer to, whole "
+                        "(the report shows its first 2,000 characters)")
     args = parser.parse_args()
     tried = mutants(args.seed, args.count)
     groups: dict[str, list[int]] = defaultdict(list)
@@ -103,6 +106,11 @@ def main() -> int:
         print(f"\n{place}: {len(indexes)} mutants; the smallest ({tried[smallest].seed}, "
               f"{tried[smallest].suffix}):")
         print(tried[smallest].text[:2000])
+        if args.keep is not None:
+            args.keep.mkdir(parents=True, exist_ok=True)
+            kept = args.keep / f"mutant{smallest}{tried[smallest].suffix}"
+            kept.write_text(tried[smallest].text, encoding="utf-8", errors="surrogatepass")
+            print(f"(whole in {kept})")
     for label, indexes in (("slow", slow), ("over the memory limit", memory)):
         for i in indexes[:3]:
             print(f"\n{label}: mutant {i} of {tried[i].seed}:\n{tried[i].text[:2000]}")
