@@ -313,6 +313,12 @@ def _primitive(d: ast.PrimitiveDecl) -> list[str]:
     return _lay_out(head, pieces, wrapped=True)
 
 
+def _entry(head: str, actions: ast.Actions | None) -> list[str]:
+    """One line of a reply table or a reply list, indented: its head, then its post-actions."""
+    block = _primitive_clause(actions)[0] if actions is not None else []
+    return [INDENT + head + (" " + block[0] if block else ""), *(INDENT + line for line in block[1:])]
+
+
 def _primitive_clause(c: ast.PrimitiveClause) -> tuple[list[str], bool]:
     """The clause's lines, and whether it continues the line before it."""
     match c:
@@ -344,9 +350,7 @@ def _primitive_clause(c: ast.PrimitiveClause) -> tuple[list[str], bool]:
                 head += f"{listed.decoding.kind} {spell_template(listed.decoding.template.value)}"
                 if listed.expect is not None:
                     head += f" expect {print_expr(listed.expect)}"
-                actions = _primitive_clause(listed.actions)[0] if listed.actions is not None else []
-                lines.append(INDENT + head + (" " + actions[0] if actions else ""))
-                lines.extend(INDENT + line for line in actions[1:])
+                lines.extend(_entry(head, listed.actions))
             return [*lines, "}"], False
         case ast.Records(marker):
             return [f"reply each until {p.quote(marker.value)}"], False
@@ -363,9 +367,7 @@ def _primitive_clause(c: ast.PrimitiveClause) -> tuple[list[str], bool]:
                 head = f"{values}: {entry.decoding.kind} {spell_template(entry.decoding.template.value)}"
                 if entry.until is not None:
                     head += f" until {p.quote(entry.until.value)}"
-                actions = _primitive_clause(entry.actions)[0] if entry.actions is not None else []
-                lines.append(INDENT + head + (" " + actions[0] if actions else ""))
-                lines.extend(INDENT + line for line in actions[1:])
+                lines.extend(_entry(head, entry.actions))
             return [*lines, "}"], False
         case ast.Actions(()):
             return ["{}"], True

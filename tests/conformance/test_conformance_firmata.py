@@ -20,6 +20,8 @@ harness's Board waits instead until the emulator's bytes have arrived, and start
 from __future__ import annotations
 
 import time
+from collections.abc import Iterator
+from contextlib import contextmanager
 from pathlib import Path
 from typing import Any
 
@@ -60,6 +62,18 @@ def _board(port: str, report: bytes) -> Any:
     return Board(port, layout=None, baudrate=57600)
 
 
+@contextmanager
+def _uno(report: bytes) -> Iterator[tuple[Any, Any]]:
+    """An emulated Uno on a pty answering the capability query with `report`, and pyFirmata2's
+    Board on it, set up by that query as pyFirmata2 does; closed after."""
+    with pty_device(lambda data: report if data == b"\xf0\x6b\xf7" else None) as dev:
+        board = _board(dev.port, report)
+        try:
+            yield dev, board
+        finally:
+            board.exit()
+
+
 def _layout(modes: tuple[int, ...], pins: int) -> dict[str, tuple[int, ...]]:
     """pyFirmata2's board dict from the description's sets of modes: pins 0..pins-1 renumbered as
     it does (its digital pins those not analog, its analog pins counted from 0), servo pins the
@@ -82,13 +96,9 @@ def _rdisc_modes(kind: str, report: bytes, tmp_path: Path) -> tuple[tuple[int, .
 @pytest.mark.parametrize("kind", ["runtime", "driver"])
 def test_the_capability_query_and_layout_are_pyfirmata2s(kind: str, tmp_path: Path) -> None:
     report = uno_report(pullup=False)  # StandardFirmata 2.3
-    with pty_device(lambda data: report if data == b"\xf0\x6b\xf7" else None) as dev:
-        board = _board(dev.port, report)
-        try:
-            layout = board._layout
-        finally:
-            board.exit()
-        asked = dev.received
+    with _uno(report) as (dev, board):
+        layout = board._layout
+    asked = dev.received
     modes, pins, written = _rdisc_modes(kind, report, tmp_path)
     assert written == asked == b"\xf0\x6b\xf7"
     assert layout == _layout(modes, pins) == {
@@ -133,25 +143,21 @@ REQUESTS: list[tuple[str, str, tuple[Any, ...], str]] = [
 @pytest.mark.parametrize("kind", ["runtime", "driver"])
 def test_commands_are_written_as_pyfirmata2_writes_them(kind: str, tmp_path: Path) -> None:
     report = uno_report(pullup=False)
-    with pty_device(lambda data: report if data == b"\xf0\x6b\xf7" else None) as dev:
-        board = _board(dev.port, report)
-        try:
-            board.digital[13].mode = pyfirmata2.OUTPUT
-            board.digital[13].write(1)
-            board.digital[12].mode = pyfirmata2.OUTPUT
-            board.digital[12].write(1)
-            board.digital[13].write(0)
-            board.digital[3].mode = pyfirmata2.PWM
-            board.digital[3].write(0.5)
-            board.analog[0].enable_reporting()
-            board.digital_ports[1].enable_reporting()
-            board.servo_config(9, 544, 2400, 90)
-            board.setSamplingInterval(19)
-            board.send_sysex(pyfirmata2.REPORT_FIRMWARE, [])
-            expected = bytes.fromhex(" ".join(r[3] for r in REQUESTS))
-            theirs = dev.wait_for(3 + len(expected))[3:]
-        finally:
-            board.exit()
+    with _uno(report) as (dev, board):
+        board.digital[13].mode = pyfirmata2.OUTPUT
+        board.digital[13].write(1)
+        board.digital[12].mode = pyfirmata2.OUTPUT
+        board.digital[12].write(1)
+        board.digital[13].write(0)
+        board.digital[3].mode = pyfirmata2.PWM
+        board.digital[3].write(0.5)
+        board.analog[0].enable_reporting()
+        board.digital_ports[1].enable_reporting()
+        board.servo_config(9, 544, 2400, 90)
+        board.setSamplingInterval(19)
+        board.send_sysex(pyfirmata2.REPORT_FIRMWARE, [])
+        expected = bytes.fromhex(" ".join(r[3] for r in REQUESTS))
+        theirs = dev.wait_for(3 + len(expected))[3:]
     port = ScriptedPort(FIRMWARE)
     ours = bytearray()
     with implementation_of(kind, DESCRIPTION, tmp_path, "firmata").connect(port, threads=False) as robot:
@@ -169,19 +175,15 @@ def test_commands_are_written_as_pyfirmata2_writes_them(kind: str, tmp_path: Pat
 @pytest.mark.parametrize("kind", ["runtime", "driver"])
 def test_the_boards_messages_are_read_as_pyfirmata2_reads_them(kind: str, tmp_path: Path) -> None:
     report = uno_report(pullup=False)
-    with pty_device(lambda data: report if data == b"\xf0\x6b\xf7" else None) as dev:
-        board = _board(dev.port, report)
-        try:
-            board.analog[0].enable_reporting()
-            board.digital[10].mode = pyfirmata2.INPUT  # and reports its port
-            dev.send(STREAM)
-            _arrived(board, len(STREAM))
-            while board.bytes_available():
-                board.iterate()
-            theirs = (board.firmata_version, board.firmware_version, board.firmware, board.analog[0].value,
-                      board.digital[10].value)
-        finally:
-            board.exit()
+    with _uno(report) as (dev, board):
+        board.analog[0].enable_reporting()
+        board.digital[10].mode = pyfirmata2.INPUT  # and reports its port
+        dev.send(STREAM)
+        _arrived(board, len(STREAM))
+        while board.bytes_available():
+            board.iterate()
+        theirs = (board.firmata_version, board.firmware_version, board.firmware, board.analog[0].value,
+                  board.digital[10].value)
     with implementation_of(kind, DESCRIPTION, tmp_path, "firmata").connect(ScriptedPort(STREAM),
                                                                             threads=False) as robot:
         for _ in range(4):
