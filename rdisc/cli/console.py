@@ -5,7 +5,7 @@ Connects as `rdisc run` does (startup hooks), then serves the page at http://HOS
 (127.0.0.1:8765 unless asked) until Ctrl-C or SIGTERM, and ends by running the terminate
 hooks. With --sim the robot drives the MuJoCo simulation `rdisc sim --realtime` drives (its
 time the wall clock's, so what the page commands moves as a device would), and the page
-says so. With --record, the session is recorded as `rdisc run --record` records it, the
+says so and shows the simulated body as it moves. With --record, the session is recorded as `rdisc run --record` records it, the
 page's calls as the host's. Only pages of this console's own address may drive the robot (see rdisc.console).
 
 Exit status: 1 the description has errors or the device failed to connect; 2 a usage error
@@ -98,7 +98,7 @@ def run(args: argparse.Namespace) -> int:
     recorder = engine.start_recording(robot, args.record, settings, "rdisc console") if args.record else None
     if args.record and recorder is None:
         return EXIT_USAGE
-    console = Console(robot, page, recorder)
+    console = Console(robot, page, recorder, sim)
     robot.on_error(lambda error: print(f"rdisc console: {type(error).__name__}: {error}", file=sys.stderr, flush=True))
 
     def listening(bound: int) -> None:

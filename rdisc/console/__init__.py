@@ -10,8 +10,11 @@ internet) and pushes to every open page, over a WebSocket, what happens as it ha
     {"type": "state", "state": {NAME: value}}
     {"type": "error", "t": S, "error": TYPE, "message": TEXT}
     {"type": "result", "id": N, "ok": true} / {..., "ok": false, "error": TYPE, "message": TEXT}
+    {"type": "body", "t": S, "links": {LINK: [x, y, z, qw, qx, qy, qz]}, "joints": {JOINT: position}}
 
-and takes the page's calls, `{"id": N, "kind": "input" | "interface" | "primitive",
+the last (`--sim` only) ten times a second while a page is open: each link's frame in the
+world (m, and a unit quaternion) and each moving joint's position (rad or m), as the
+simulation has them (`rdisc.sim.Simulation.link_poses`); the page draws the body from them. The server takes the page's calls, `{"id": N, "kind": "input" | "interface" | "primitive",
 "name": NAME, "values": {NAME: text}}`, each value the text of its form field (a checkbox's
 a bool), made the parameter's type here. `t` is seconds since the console started;
 bytes are hex, as `rdisc run --trace` prints them.

@@ -1,6 +1,6 @@
 """The console's page, written from the Model: the graph, a form for every input,
 interface and primitive, a panel for every output, the state table, the errors and
-the byte trace. Everything the page shows of the description is escaped here; the
+the byte trace; with a simulation, a view of its body. Everything the page shows of the description is escaped here; the
 script (assets/console.js) only fills in values as they are pushed."""
 
 from __future__ import annotations
@@ -11,6 +11,7 @@ from html import escape
 from typing import Any
 
 from rdisc.emit.graph import GraphvizMissing, dot, nodes, svg
+from rdisc.emit.mjcf import quaternion
 from rdisc.semantics import model as m
 from rdisc.source import Span
 
@@ -20,14 +21,20 @@ SIMULATED = ('<span class="badge" data-rdis-sim title="a MuJoCo simulation of th
 
 def render(model: m.Model, where: Callable[[Span | None], str | None], *, simulated: bool = False) -> str:
     """The whole page, as HTML; `where` gives a span's `file:line`. A `simulated` robot's page
-    says so in its title and with a badge beside the status, so it is not taken for the device."""
+    says so in its title and with a badge beside the status, so it is not taken for the device,
+    and shows its body as the simulation has it (a device's page shows none: what a device
+    reports of its joints is its outputs')."""
     name = escape(model.robot.name)
     badge, simulation = (f" {SIMULATED}", " (simulation)") if simulated else ("", "")
     try:
         graph = _inline(svg(dot(model, where)))
     except GraphvizMissing as err:
         graph = f'<p class="note">{escape(str(err))}</p>'
-    details = json.dumps(_details(model, where)).replace("<", "\\u003c")  # no "</script>" can end it early
+    details = _json(_details(model, where))
+    body = shapes = ""
+    if simulated and model.links:
+        body = _body_view(model)
+        shapes = f'<script type="application/json" id="rdis-body">{_json(_body_shapes(model))}</script>\n'
     return f"""<!DOCTYPE html>
 <html lang="en">
 <head>
@@ -42,7 +49,7 @@ def render(model: m.Model, where: Callable[[Span | None], str | None], *, simula
 <div class="details" data-rdis-details><p class="note">Click an element of the graph for its details.</p></div>
 </section>
 <section class="inputs"><h2>Inputs</h2>{''.join(_input_form(model, i) for i in model.inputs.values()) or _none}</section>
-<section class="outputs"><h2>Outputs</h2>{''.join(_output_panel(model, o) for o in model.outputs.values()) or _none}
+{body}<section class="outputs"><h2>Outputs</h2>{''.join(_output_panel(model, o) for o in model.outputs.values()) or _none}
 </section>
 <section class="state"><h2>State</h2>{_state_table(model)}</section>
 <section class="errors"><h2>Errors</h2><ol data-rdis-errors></ol></section>
@@ -55,13 +62,65 @@ def render(model: m.Model, where: Callable[[Span | None], str | None], *, simula
 <tbody></tbody></table></section>
 </main>
 <script type="application/json" id="rdis-details">{details}</script>
-<script src="/console.js"></script>
+{shapes}<script src="/console.js"></script>
 </body>
 </html>
 """
 
 
 _none = '<p class="note">none</p>'
+
+
+def _json(value: object) -> str:
+    """JSON for a `<script>` element: no "</script>" in a name can end it early."""
+    return json.dumps(value).replace("<", "\\u003c")
+
+
+VIEWS = (("top", "top (x–y)"), ("side", "side (x–z)"))
+PANEL, GAP, HEAD = 300, 20, 18  # px: each view's square, between the views, above them
+
+
+def _body_view(model: m.Model) -> str:
+    """A top and a side view of the body (one `<g data-rdis-link>` a link and one `<line
+    data-rdis-joint>` a joint in each, a `<polygon data-rdis-shape>` a shape), and a row a
+    moving joint for its position; console.js places them as the simulation's poses come."""
+    views = []
+    for n, (view, title) in enumerate(VIEWS):
+        shapes = "".join(f'<polygon data-rdis-shape="{escape(link)}"></polygon>'
+                         for link, drawn in _drawn(model) for _ in drawn)
+        joints = "".join(f'<line data-rdis-joint="{escape(j.name)}"></line>' for j in model.joints.values())
+        links = "".join(f'<g data-rdis-link="{escape(k)}"><title>{escape(k)}</title><circle r="3"></circle></g>'
+                        for k in model.links)
+        views.append(f'<g data-view="{view}" transform="translate({n * (PANEL + GAP)},0)">'
+                     f'<text x="2" y="13">{title}</text><text class="scale" x="{PANEL - 2}" y="13" '
+                     f'text-anchor="end" data-scale></text><rect class="frame" x="0" y="{HEAD}" width="{PANEL}" '
+                     f'height="{PANEL}"></rect><path class="ground"></path>{shapes}{joints}{links}</g>')
+    rows = "".join(f'<tr data-name="{escape(j.name)}"><th>{escape(j.name)}</th><td data-value>–</td>'
+                   f'<td class="unit">{"m" if j.kind is m.JointKind.PRISMATIC else "rad"}</td>'
+                   f'<td class="type">{j.kind.value}, {escape(j.parent)} → {escape(j.child)}</td></tr>'
+                   for j in model.joints.values() if j.moves())
+    width = 2 * PANEL + GAP
+    return (f'<section class="body" data-rdis-body><h2>Body <span class="type">as the simulation has it now, '
+            f'not as a device measures it</span></h2>'
+            f'<svg viewBox="0 0 {width} {PANEL + HEAD}" width="{width}" height="{PANEL + HEAD}">{"".join(views)}</svg>'
+            f'<table data-rdis-joints>{rows}</table></section>\n')
+
+
+def _drawn(model: m.Model) -> list[tuple[str, tuple[m.Shape, ...]]]:
+    """The shapes drawn of each link: its visuals, or its collision shapes when it has none
+    (a mesh is not drawn: only its link's origin is)."""
+    return [(link.name, tuple(s for s in (link.visuals or link.collisions) if s.kind is not m.ShapeKind.MESH))
+            for link in model.links.values()]
+
+
+def _body_shapes(model: m.Model) -> dict[str, object]:
+    """What console.js needs to draw the body: each drawn shape (its kind, size and frame in its
+    link's, the orientation a quaternion w, x, y, z) in the order of the page's polygons, and
+    each joint's parent and child link."""
+    shapes = [{"link": link, "kind": s.kind.value, "size": list(s.size), "at": list(s.origin.xyz),
+               "quat": list(quaternion(s.origin.rpy))} for link, drawn in _drawn(model) for s in drawn]
+    joints = {j.name: [j.parent, j.child] for j in model.joints.values()}
+    return {"shapes": shapes, "joints": joints}
 
 
 def _inline(text: str) -> str:

@@ -21,7 +21,7 @@ import time
 from collections import deque
 from collections.abc import Callable, Iterable
 from importlib import resources
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from websockets.asyncio.server import ServerConnection, broadcast, serve
 from websockets.datastructures import Headers
@@ -30,9 +30,13 @@ from websockets.http11 import Request, Response
 
 from rdisc.runtime import engine
 
+if TYPE_CHECKING:
+    from rdisc.sim import Simulation
+
 ASSETS = {"/console.js": "text/javascript; charset=utf-8", "/console.css": "text/css; charset=utf-8"}
 TRACE_KEPT, ERRORS_KEPT = 500, 100  # what a page opened later is shown of the past
 LOOPBACK = ("127.0.0.1", "localhost", "[::1]")
+BODY_HZ = 10  # how often a simulated body is pushed to the open pages
 
 
 def origins_for(host: str, port: int, extra: Iterable[str] = ()) -> set[str]:
@@ -61,11 +65,14 @@ def jsonable(value: Any) -> Any:
 class Console:
     """A connected robot, shown and driven by the pages of one server; with a `recorder`
     (`--record`), each call a page makes is recorded as the host's call, as `rdisc run` records
-    its --call calls (the robot's bytes, outputs and errors the recorder takes from the robot)."""
+    its --call calls (the robot's bytes, outputs and errors the recorder takes from the robot);
+    with the `body` it drives (`--sim`), the body as it is now is pushed BODY_HZ times a second."""
 
-    def __init__(self, robot: engine.Robot, page: str, recorder: engine.Recorder | None = None) -> None:
+    def __init__(self, robot: engine.Robot, page: str, recorder: engine.Recorder | None = None,
+                 body: Simulation | None = None) -> None:
         self.robot = robot
         self.recorder = recorder
+        self.body = body
         self.page = page.encode("utf-8")
         self.origins: set[str] = set()
         self._start = time.monotonic()
@@ -130,6 +137,20 @@ class Console:
     def _send(self, text: str) -> None:
         broadcast(self._pages, text)
 
+    def _body_event(self, body: Simulation) -> dict[str, Any]:
+        """The simulated body now: each link's world frame, each moving joint's position."""
+        links = {name: [round(v, 6) for v in pose] for name, pose in body.link_poses().items()}
+        joints = {name: round(value, 6) for name, value in body.joint_positions().items()}
+        return {"type": "body", "t": self._now(), "links": links, "joints": joints}
+
+    async def _push_body(self, body: Simulation) -> None:
+        """While a page is open, the body as the simulation has it, BODY_HZ times a second
+        (read on a worker thread: the simulation's lock may be held by a step)."""
+        while True:
+            await asyncio.sleep(1 / BODY_HZ)
+            if self._pages:
+                self._send(json.dumps(await asyncio.to_thread(self._body_event, body)))
+
     # ---- the server ----------------------------------------------------------------------------------
 
     async def serve(self, host: str, port: int, stop: asyncio.Event, listening: Callable[[int], None],
@@ -142,7 +163,12 @@ class Console:
             bound = next(iter(server.sockets)).getsockname()[1]
             self.origins = origins_for(host, bound, extra_origins)
             listening(bound)
-            await stop.wait()
+            pushing = asyncio.create_task(self._push_body(self.body)) if self.body is not None else None
+            try:
+                await stop.wait()
+            finally:
+                if pushing is not None:
+                    pushing.cancel()
             await asyncio.to_thread(self.robot.close)
 
     def _http(self, connection: ServerConnection, request: Request) -> Response | None:

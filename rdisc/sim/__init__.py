@@ -103,6 +103,7 @@ class Simulation:
                     _Command(param, b.index, actuator, _conversion(b.to_joint, "raw")))
             for b in t.measures:
                 self._measures[b.target, b.index] = (joint, b.quantity, _conversion(b.to_device, b.quantity.value))
+        self._bodies = {name: mujoco.mj_name2id(self.physics, mujoco.mjtObj.mjOBJ_BODY, name) for name in model.links}
         self._direct = {p.name: _format_positions(p) for p in model.primitives.values() if p.formats_its_params()}
         self._replies = {p.name: _replies(p) for p in model.primitives.values()}
         self._keys = {p.name: [q.name for q in p.params].index(p.table.key)
@@ -154,6 +155,23 @@ class Simulation:
     def position(self, joint: str) -> float:
         """A joint's position (rad or m) now."""
         return float(self.data.qpos[self._joint(joint).qposadr[0]])
+
+    def link_poses(self) -> dict[str, tuple[float, ...]]:
+        """Each link's frame in the world now: x, y, z (m), then its orientation as a unit
+        quaternion w, x, y, z (every link is a body of its own in `emit.mjcf`, fixed joints'
+        too). On the wall clock the physics is first brought up to now, so that a view sees the
+        body move even while the robot sends nothing."""
+        with self._lock:
+            self._catch_up()
+            return {name: (*map(float, self.data.xpos[body]), *map(float, self.data.xquat[body]))
+                    for name, body in self._bodies.items()}
+
+    def joint_positions(self) -> dict[str, float]:
+        """Each moving joint's position (rad or m) now."""
+        with self._lock:
+            self._catch_up()
+            return {j.name: float(self.data.qpos[self._joint(j.name).qposadr[0]])
+                    for j in self.model.joints.values() if j.moves()}
 
     def pose(self, link: str) -> tuple[float, float, float]:
         """A link's x, y (m) and heading (rad, about z) in the world now."""

@@ -117,6 +117,7 @@ def test_the_page_shows_the_description(page) -> None:
     assert page.locator('form[data-rdis-primitive="drive"] input[name="radius"]').count() == 1
     assert page.locator('[data-rdis-state] tr[data-name="bumperStates"]').count() == 1
     assert page.locator("[data-rdis-sim]").count() == 0  # a device, not a simulation
+    assert page.locator("[data-rdis-body]").count() == 0  # so no view of a simulated body
     # the graph: a node clicked shows its details
     page.locator('[data-rdis-graph] svg g.node[id="input:set_velocity"]').click()
     details = page.locator("[data-rdis-details]")

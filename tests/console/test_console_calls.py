@@ -118,3 +118,30 @@ def test_usage_and_connection_errors(args, status, message) -> None:
     assert done.returncode == status, done.stderr
     assert message in done.stderr
     assert "Traceback" not in done.stderr
+
+
+def test_the_body_message_is_the_simulated_links_frames_and_joints_positions() -> None:
+    """`--sim`'s pushed message: the example arm straight up, each link's origin (m) and
+    orientation (w, x, y, z), each moving joint's position."""
+    pytest.importorskip("mujoco")
+    from rdisc.compile import compile_path
+    from rdisc.sim import Simulation
+
+    arm = REPO / "examples" / "arm.rdis"
+    model = compile_path(str(arm)).model
+    assert model is not None
+    sim = Simulation(model)
+    robot = load(arm).connect(sim=sim, threads=False)
+    try:
+        event = Console(robot, "<p>page</p>", body=sim)._body_event(sim)
+    finally:
+        robot.close()
+    assert isinstance(event.pop("t"), float)
+    unturned = [1.0, 0.0, 0.0, 0.0]
+    heights = {"base": 0.0, "shoulder": 0.045, "upper_arm": 0.095, "forearm": 0.295, "wrist": 0.475, "hand": 0.525}
+    assert json.loads(json.dumps(event)) == {
+        "type": "body",
+        "links": {**{link: [0.0, 0.0, z, *unturned] for link, z in heights.items()},
+                  "gripper": [0.0, 0.02, 0.585, *unturned]},
+        "joints": dict.fromkeys(["waist", "shoulder", "elbow", "wrist_pitch", "wrist_roll", "gripper"], 0.0),
+    }

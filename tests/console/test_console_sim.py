@@ -82,6 +82,35 @@ def test_set_velocity_from_the_form_moves_the_simulated_odometry(page) -> None:
     playwright_api.expect(drive).to_contain_text("oi", timeout=WAIT_MS)  # drive_direct(200, 200), as the bytes go
 
 
+def test_the_base_drives_forward_in_the_top_view(page) -> None:
+    """The view of the body: the base's frame as the simulation has it, drawn further right
+    (+x) as it drives, its wheels turning in the joints' numbers."""
+    page.wait_for_selector("[data-rdis-body][data-t]", timeout=WAIT_MS)  # a first pose has been drawn
+    base = page.locator('[data-rdis-body] g[data-view="top"] g[data-rdis-link="base"]')
+    wheel = page.locator('[data-rdis-body] [data-rdis-joints] tr[data-name="left_wheel_joint"] [data-value]')
+
+    def drawn() -> tuple[float, float, float]:
+        x, y, _ = (float(v) for v in base.get_attribute("data-at").split())
+        return x, y, float(base.locator("circle").get_attribute("cx"))
+
+    start_x, start_y, start_cx = drawn()
+    start_wheel = float(wheel.inner_text())
+    form = page.locator('form[data-rdis-input="set_velocity"]')
+    form.locator('input[name="linear"]').fill("0.2")
+    form.locator('input[name="angular"]').fill("0")
+    form.locator("button[type=submit]").click()
+    playwright_api.expect(form.locator(".result")).to_have_text("done", timeout=WAIT_MS)
+    for _ in range(POLLS):
+        x, y, cx = drawn()
+        if x - start_x > 0.05:
+            break
+        page.wait_for_timeout(50)
+    assert x - start_x > 0.05 and abs(y - start_y) < 0.01, (start_x, x, y)  # straight ahead, more than 5 cm
+    assert cx > start_cx  # drawn further right
+    assert float(wheel.inner_text()) - start_wheel > 1  # 5 cm is 1.4 rad of a 36 mm wheel
+    assert page.locator('[data-rdis-body] g[data-view="top"] g[data-rdis-link]').count() == 4
+
+
 def test_the_page_says_it_is_a_simulation(page) -> None:
     badge = page.locator("header [data-rdis-sim]")
     playwright_api.expect(badge).to_be_visible(timeout=WAIT_MS)

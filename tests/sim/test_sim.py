@@ -233,3 +233,62 @@ def test_a_bulk_read_is_answered_reply_by_reply_from_the_joints(kind: str, tmp_p
     assert abs(waist - 0.5) < 0.01
     assert state["present"][0] == round(waist * 4096 / (2 * math.pi)) + 2048
     assert state["error"][0] == 0 and state["error"][5] == 0 and state["gripper_temperature"] == 0
+
+
+def _quaternion_matrix(q: tuple[float, ...]) -> numpy.ndarray:
+    matrix = numpy.zeros(9)
+    mujoco.mju_quat2Mat(matrix, numpy.array(q))
+    return matrix.reshape(3, 3)
+
+
+def test_link_poses_at_zero_are_the_joints_origins_added_up() -> None:
+    """The example arm straight up: each link's origin is its joints' `at` summed by hand, unturned."""
+    poses = Simulation(_model(EXAMPLE_ARM)).link_poses()
+    heights = {"base": 0, "shoulder": 0.045, "upper_arm": 0.095, "forearm": 0.295, "wrist": 0.475, "hand": 0.525,
+               "gripper": 0.585}
+    assert set(poses) == set(heights)
+    for link, z in heights.items():
+        y = 0.02 if link == "gripper" else 0
+        numpy.testing.assert_allclose(poses[link], (0, y, z, 1, 0, 0, 0), atol=1e-12)
+
+
+def test_link_poses_are_urchins_forward_kinematics_of_the_urdf(tmp_path: Path) -> None:
+    """The example arm at known angles (every joint moved, set in MuJoCo's state): each link's
+    position and orientation is where urchin puts it from rdisc's URDF, within 1e-6."""
+    urchin = pytest.importorskip("urchin")
+    from rdisc.emit.urdf import to_urdf
+
+    model = _model(EXAMPLE_ARM)
+    urdf = tmp_path / "arm.urdf"
+    urdf.write_text(to_urdf(model, "arm.rdis"), encoding="utf-8")
+    robot = urchin.URDF.load(str(urdf), lazy_load_meshes=True)
+    sim = Simulation(model)
+    angles = {"waist": 0.7, "shoulder": -0.4, "elbow": 1.1, "wrist_pitch": -0.9, "wrist_roll": 2.0, "gripper": 0.5}
+    for name, angle in angles.items():
+        sim.data.qpos[sim.physics.joint(name).qposadr[0]] = angle
+    mujoco.mj_forward(sim.physics, sim.data)
+    poses = sim.link_poses()
+    assert sim.joint_positions() == angles
+    fk = {link.name: pose for link, pose in robot.link_fk(cfg=angles).items()}
+    assert set(fk) == set(poses)
+    for name, pose in poses.items():
+        numpy.testing.assert_allclose(pose[:3], fk[name][:3, 3], atol=1e-6)
+        numpy.testing.assert_allclose(_quaternion_matrix(pose[3:]), fk[name][:3, :3], atol=1e-6)
+        assert abs(numpy.linalg.norm(pose[3:]) - 1) < 1e-9
+    assert poses["gripper"][2] < 0.55  # it is bent: 0.585 m straight up
+
+
+def test_the_create2_base_drives_forward_in_link_poses() -> None:
+    sim = Simulation(_model(CREATE2))
+    robot = load(CREATE2).connect(sim=sim)
+    try:
+        start = sim.link_poses()["base"]
+        robot.call_input("set_velocity", linear=0.2, angular=0.0)
+        robot.run_for(2.0)
+        end = sim.link_poses()
+    finally:
+        robot.close()
+    assert abs(end["base"][0] - start[0] - 0.3974) < 0.01 and abs(end["base"][1] - start[1]) < 1e-6
+    for wheel in ("left_wheel", "right_wheel"):
+        assert abs(end[wheel][0] - end["base"][0]) < 0.002  # carried along, beside the base (which tilts a little)
+        assert abs(sim.joint_positions()[f"{wheel}_joint"]) > 10  # some 0.4 m / 0.036 m of turning

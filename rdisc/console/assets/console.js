@@ -180,6 +180,127 @@ function showIo(message) {
   while (body.rows.length > TRACE_ROWS) body.deleteRow(-1);
 }
 
+// ---- the simulated body: a top (x-y) and a side (x-z) view of the pushed link frames ----------------
+
+const bodyShapes = document.getElementById("rdis-body");
+const body = bodyShapes ? JSON.parse(bodyShapes.textContent) : null;
+const PANEL = 300, HEAD = 18, MARGIN = 14;  // px: as page.py lays the views out
+const VIEWS = { top: [0, 1], side: [0, 2] };  // the world axes each view shows, across and up
+const ROUND = 24;                              // points on a drawn circle
+let extent = null;  // [[lo x, lo y, lo z], [hi ...]] in m: all the body has covered, so a moving base moves
+
+// v turned by the unit quaternion q = [w, x, y, z]
+function rotate(q, v) {
+  const [w, x, y, z] = q;
+  const t = [2 * (y * v[2] - z * v[1]), 2 * (z * v[0] - x * v[2]), 2 * (x * v[1] - y * v[0])];
+  return [v[0] + w * t[0] + y * t[2] - z * t[1], v[1] + w * t[1] + z * t[0] - x * t[2],
+          v[2] + w * t[2] + x * t[1] - y * t[0]];
+}
+
+function circle(radius, z) {
+  return Array.from({ length: ROUND }, (_, k) => {
+    const a = 2 * Math.PI * k / ROUND;
+    return [radius * Math.cos(a), radius * Math.sin(a), z];
+  });
+}
+
+// Points of the shape in its own frame whose hull is its outline seen from any side (a sphere: its centre).
+function corners(shape) {
+  const [a, b, c] = shape.size;
+  if (shape.kind === "box") {
+    const out = [];
+    for (const sx of [-1, 1]) for (const sy of [-1, 1]) for (const sz of [-1, 1]) out.push([sx * a / 2, sy * b / 2, sz * c / 2]);
+    return out;
+  }
+  if (shape.kind === "cylinder") return circle(a, -b / 2).concat(circle(a, b / 2));
+  return [[0, 0, 0]];
+}
+
+// The convex hull of 2-D points, anticlockwise (Andrew's monotone chain).
+function hull(points) {
+  const p = points.slice().sort((u, v) => u[0] - v[0] || u[1] - v[1]);
+  if (p.length < 3) return p;
+  const cross = (o, a, b) => (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
+  const half = (list) => {
+    const out = [];
+    for (const q of list) {
+      while (out.length >= 2 && cross(out[out.length - 2], out[out.length - 1], q) <= 0) out.pop();
+      out.push(q);
+    }
+    out.pop();
+    return out;
+  };
+  return half(p).concat(half(p.slice().reverse()));
+}
+
+// Each drawn shape in the world as it is now: its points (a sphere: its centre and radius).
+function placedShapes(links) {
+  return body.shapes.map((shape) => {
+    const pose = links[shape.link];
+    const turn = pose.slice(3);
+    const place = (v) => {
+      const inLink = rotate(shape.quat, v).map((x, i) => x + shape.at[i]);
+      return rotate(turn, inLink).map((x, i) => x + pose[i]);
+    };
+    return { points: corners(shape).map(place), radius: shape.kind === "sphere" ? shape.size[0] : 0 };
+  });
+}
+
+function grow(points, radius) {
+  for (const p of points) {
+    if (!extent) extent = [p.slice(), p.slice()];
+    for (let i = 0; i < 3; i++) {
+      extent[0][i] = Math.min(extent[0][i], p[i] - radius);
+      extent[1][i] = Math.max(extent[1][i], p[i] + radius);
+    }
+  }
+}
+
+function showBody(message) {
+  const view = document.querySelector("[data-rdis-body]");
+  if (!view || !body) return;
+  const links = message.links;
+  const shapes = placedShapes(links);
+  for (const s of shapes) grow(s.points, s.radius);
+  grow(Object.values(links).map((pose) => pose.slice(0, 3)), 0);
+  grow([[0, 0, 0]], 0);  // the world's origin and floor stay in view
+  const span = Math.max(0.1, ...[0, 1, 2].map((i) => extent[1][i] - extent[0][i]));
+  const scale = (PANEL - 2 * MARGIN) / span;  // px a metre, the same in both views
+  for (const [name, [across, up]] of Object.entries(VIEWS)) {
+    const g = view.querySelector(`g[data-view="${name}"]`);
+    const mid = [across, up].map((i) => (extent[0][i] + extent[1][i]) / 2);
+    const px = (p) => [PANEL / 2 + (p[across] - mid[0]) * scale, HEAD + PANEL / 2 - (p[up] - mid[1]) * scale];
+    g.querySelector("[data-scale]").textContent = shown(Math.round(span * 1000) / 1000) + " m across";
+    const [ox, oy] = px([0, 0, 0]).map((v) => v.toFixed(1));  // the floor; from above, the world's axes
+    g.querySelector("path.ground").setAttribute("d", `M0,${oy}H${PANEL}` + (name === "top" ? `M${ox},${HEAD}V${HEAD + PANEL}` : ""));
+    g.querySelectorAll("polygon[data-rdis-shape]").forEach((polygon, k) => {
+      const s = shapes[k];
+      const outline = s.radius
+        ? circle(s.radius, 0).map((c) => { const p = s.points[0].slice(); p[across] += c[0]; p[up] += c[1]; return p; })
+        : s.points;
+      polygon.setAttribute("points", hull(outline.map(px)).map((q) => q.map((v) => v.toFixed(1)).join(",")).join(" "));
+    });
+    for (const line of g.querySelectorAll("line[data-rdis-joint]")) {
+      const [parent, child] = body.joints[line.dataset.rdisJoint];
+      const [x1, y1] = px(links[parent]), [x2, y2] = px(links[child]);
+      Object.entries({ x1, y1, x2, y2 }).forEach(([k, v]) => line.setAttribute(k, v.toFixed(1)));
+    }
+    for (const link of g.querySelectorAll("g[data-rdis-link]")) {
+      const pose = links[link.dataset.rdisLink];
+      const [cx, cy] = px(pose);
+      link.dataset.at = pose.slice(0, 3).map((v) => v.toFixed(4)).join(" ");  // where it is, in m
+      const dot = link.querySelector("circle");
+      dot.setAttribute("cx", cx.toFixed(1));
+      dot.setAttribute("cy", cy.toFixed(1));
+    }
+  }
+  for (const row of view.querySelectorAll("[data-rdis-joints] tr[data-name]")) {
+    const value = message.joints[row.dataset.name];
+    if (value !== undefined) row.querySelector("[data-value]").textContent = value.toFixed(4);
+  }
+  view.dataset.t = message.t;
+}
+
 function receive(message) {
   switch (message.type) {
     case "hello":
@@ -193,6 +314,7 @@ function receive(message) {
     case "state": showState(message.state); break;
     case "error": showError(message); break;
     case "result": answered(message); break;
+    case "body": showBody(message); break;
   }
 }
 
