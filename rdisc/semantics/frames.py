@@ -198,7 +198,8 @@ class FrameRules:
             if not layout:
                 continue
             if not isinstance(last, m.FrameBytes) or last.role != "terminator":
-                message = f"the {side} of frame `{frame.name}` escapes but ends with no `terminator`"
+                whose = f"the {side} of frame" if frame.request != frame.reply else "frame"
+                message = f"{whose} `{frame.name}` escapes but ends with no `terminator`"
                 help_ = ("a reader finds a packet's end at its terminator, whose first byte the escaping keeps out of "
                          "the bytes before it: `terminator \"\\x7E\"`")
             elif last.data[:1] == frame.escaping.escape:

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import json
 from pathlib import Path
+from typing import Any
 
 import pytest
 from conftest import check_text
@@ -134,15 +135,15 @@ def test_garbage_before_the_flag_and_fill_flags_are_read_past(kind: str, tmp_pat
 
 
 BAD = [
-    (bytes.fromhex("7e 04 00 7d 01 04 7e 00 00 7e"), r"^command: hdlc: the escape b'\}' comes before b'\\x01', "
-                                                     r"which is no code: "),
+    (bytes.fromhex("7e 04 00 7d 01 04 7e 00 00 7e"), (r"^command: hdlc: the escape b'\}' comes before b'\\x01', "
+                                                      r"which is no code: ")),
     (bytes.fromhex("7e 04 00 7d 7e"), r"^command: hdlc: the packet ends in the escape b'\}': "),
-    (rfc1662(GOOD)[:-2] + b"\xe6\x7e", r"^command: hdlc: checksum b'~\\xe6' does not match the reply, which sums "
-                                      r"to b'~\\xe7'$"),
+    (rfc1662(GOOD)[:-2] + b"\xe6\x7e", (r"^command: hdlc: checksum b'~\\xe6' does not match the reply, which "
+                                       r"sums to b'~\\xe7'$")),
     (rfc1662(b"\x05\x00\x7d\x04\x7e"), r"^command: hdlc: length field says 5, but the payload is 4 bytes"),
     (rfc1662(b"\x03"), r"^command: hdlc: length field says 3, but the payload is 0 bytes"),
-    (bytes.fromhex("7e 01 7e"), r"^command: hdlc: a 3-byte packet, unescaped, where its parts take 5 bytes and the "
-                                r"payload: "),
+    (bytes.fromhex("7e 01 7e"), (r"^command: hdlc: a 3-byte packet, unescaped, where its parts take 5 bytes and "
+                                 r"the payload: ")),
 ]
 
 
@@ -174,3 +175,102 @@ def test_a_request_is_escaped_after_its_size_is_checked(kind: str, tmp_path: Pat
         robot.call_primitive("blob", b"\x7e" * 255)
     assert bytes(port.written) == rfc1662(b"\xff" + b"\x7e" * 255)
     assert len(port.written) == 2 + 1 + 255 * 2 + 2
+
+
+ESCAPE = 'escape "\\x7D" xor 0x20 for "\\x7E\\x7D"'
+CASES = [
+    ('frame f { payload terminator "\\xC0"  escape "\\xDB" { "\\xC0": "\\xDC" } }',
+     ('error[E510]: the escape "\\xdb" is not itself escaped, so a reader takes the same byte in the data for an '
+     "escape")),
+    ('frame f { payload terminator "\\xC0"  escape "\\xDB" { "\\xC0": "\\xDC", "\\xDB": "\\xC0" } }',
+     'error[E510]: "\\xdb" is escaped as "\\xdb\\xc0", whose code "\\xc0" is an escaped byte itself'),
+    ('frame f { payload terminator "\\xC0"  escape "\\xDB" { "\\xC0": "\\xDC", "\\xDB": "\\xDC" } }',
+     'error[E510]: "\\xc0" and "\\xdb" are both escaped as "\\xdb\\xdc", so a reader cannot tell them apart'),
+    ('frame f { payload terminator "\\xC0"  escape "\\xDB" { "\\xC0": "\\xDC", "\\xC0": "\\xDD" } }',
+     'error[E510]: "\\xc0" is escaped twice'),
+    ('frame f { payload terminator "\\xC0"  escape "\\xDB\\xDB" { "\\xC0": "\\xDC", "\\xDB": "\\xDD" } }',
+     'error[E510]: an escape, an escaped byte and a code are one byte each, not "\\xdb\\xdb"'),
+    ('frame f { payload terminator "\\xC0"  escape "\\xDB" { } }',
+     "error[E510]: an `escape` table lists each byte it escapes and its code"),
+    ('frame f { payload terminator "\\x7E"  escape "\\x7D" xor 0 for "\\x7E\\x7D" }',
+     "error[E510]: an `escape`'s mask is 1 to 255 (0x01 to 0xFF), not 0"),
+    ('frame f { payload terminator "\\x7E"  escape "\\x7D" xor 0x20 for "\\x7E\\x7D\\x5E" }',
+     'error[E510]: "~" is escaped as "}^", whose code "^" is an escaped byte itself'),
+    (f'frame f {{ payload terminator "\\x0D"  {ESCAPE} }}',
+     ('error[E510]: the terminator "\\r" of frame `f` starts with a byte that is not escaped, so it may come before '
+     "the packet ends")),
+    (f'frame f {{ payload terminator "\\x7D"  {ESCAPE} }}',
+     'error[E510]: the terminator "}" of frame `f` starts with the escape, which comes before every code'),
+    (f"frame f {{ payload  {ESCAPE} }}", "error[E510]: frame `f` escapes but ends with no `terminator`"),
+    (f'frame f {{ request {{ payload terminator "\\x7E" }} reply {{ payload }}  {ESCAPE} }}',
+     "error[E510]: the reply of frame `f` escapes but ends with no `terminator`"),
+    (f'frame f {{ header "$" payload optional {{ literal "*" checksum "xor" hex }} terminator "\\x7E"  {ESCAPE} }}',
+     ("error[E510]: a frame that escapes has no `optional`: its reply is found between its flags and taken apart by "
+     "the sizes of its parts")),
+    (f'frame f {{ payload terminator "\\x7E"  {ESCAPE}  stuff "\\xFD" after "\\xFF\\xFF" }}',
+     "error[E510]: frame `f` both stuffs and escapes"),
+    (f'frame f {{ payload terminator "\\x7E"  {ESCAPE}  {ESCAPE} }}', "error[E510]: frame `f` has two `escape` rules"),
+]
+
+
+@pytest.mark.parametrize(("frame", "first_line"), CASES)
+def test_the_checker_says_what_is_wrong(tmp_path: Path, frame: str, first_line: str) -> None:
+    _, result = check_text(tmp_path, 'robot r { author "t" }\n' + frame + "\n")
+    assert result.returncode == 1
+    errors_ = [line for line in result.stderr.splitlines() if line.startswith("error[")]
+    assert errors_ == [first_line], result.stderr
+
+
+def test_a_reply_read_to_its_end_is_no_e503(tmp_path: Path) -> None:
+    """A reply through a frame that escapes ends at its terminator: a `*` rest needs no length field."""
+    text = SLIP + 'primitive dump_all() on link frame slip pack "B" (1) unpack "B*" { a = out[0] }\n'
+    _, result = check_text(tmp_path, text)
+    assert result.returncode == 0, result.stderr
+
+
+def test_json_printer_dump_and_budget(tmp_path: Path) -> None:
+    compilation, built = through_json(SLIP, tmp_path, "slip")
+    frame = json.loads(built)["frames"][0]
+    assert frame["escaping"] == {"escape": "\u00db", "codes": {"\u00c0": "\u00dc", "\u00db": "\u00dd"}}
+    model = compilation.model
+    assert model is not None
+    assert dump(model).split("\n\n")[0].splitlines()[:3] == [
+        "primitive pair(x: int in 0..255, y: int in 0..255) on link, frame slip()",
+        "  escaped between the flags: C0 as DB DC, DB as DB DD",
+        "  request: 4 bytes",
+    ]
+    # at their worst every byte between the flags is escaped: C0 x y C0, C0 a b w w C0
+    assert message_bytes(model.primitives["pair"], model.frames) == (1 + 2 * 2 + 1) + (1 + 2 * 4 + 1)
+    compilation, built = through_json(HDLC, tmp_path, "gimbal")
+    frame = json.loads(built)["frames"][0]
+    assert frame["escaping"] == {"escape": "}", "codes": {"~": "^", "}": "]"}}
+    model = compilation.model
+    assert model is not None
+    assert "  escaped between the flags: 7E as 7D 5E, 7D as 7D 5D\n" in dump(model)
+    assert message_bytes(model.primitives["command"], model.frames) == (2 + 2 * 5) + (2 + 2 * 7)
+    for text in (SLIP, SLIP_BARE, HDLC):
+        printed = print_module(parse("f.rdis", text, Diagnostics()))
+        assert print_module(parse("g.rdis", printed, Diagnostics())) == printed
+        assert parse("g.rdis", printed, Diagnostics()).decls == parse("f.rdis", text, Diagnostics()).decls
+    assert '    escape "}" xor 0x20 for "~}"\n' in print_module(parse("f.rdis", HDLC, Diagnostics()))
+    assert '    escape "Û" { "À": "Ü", "Û": "Ý" }\n' in print_module(parse("f.rdis", SLIP, Diagnostics()))
+
+
+def test_json_import_reads_the_table_and_refuses_a_bad_one(tmp_path: Path, rdisc: Any) -> None:
+    _, built = through_json(HDLC, tmp_path, "gimbal")
+    (tmp_path / "gimbal.json").write_text(built, encoding="utf-8")
+    result = rdisc("import", tmp_path / "gimbal.json")
+    assert result.returncode == 0, result.stderr
+    assert '    escape "}" { "~": "^", "}": "]" }\n' in result.stdout
+    bad = json.loads(built)
+    bad["frames"][0]["escaping"] = {"escape": "}", "codes": {"~": "^"}, "xor": 32}
+    (tmp_path / "bad.json").write_text(json.dumps(bad), encoding="utf-8")
+    result = rdisc("check", tmp_path / "bad.json")
+    assert result.returncode == 1
+    assert "error[E008]: unknown member `xor` in `escaping`" in result.stderr
+    del bad["frames"][0]["escaping"]["xor"]
+    (tmp_path / "bad.json").write_text(json.dumps(bad), encoding="utf-8")
+    result = rdisc("check", tmp_path / "bad.json")
+    assert result.returncode == 1
+    assert ('error[E510]: the escape "}" is not itself escaped, so a reader takes the same byte in the data for an '
+            "escape") in result.stderr
