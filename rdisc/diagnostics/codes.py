@@ -361,6 +361,21 @@ up to the integer's bits exactly: a reserved bit is a field too (`field reserved
 descriptor keeps a 30-bit length under a 2-bit send mode in one little-endian u32.
 Wrong: `bits "<I" { length: 30 = payload }` (2 bits unsaid). Right: `bits "<I" {
 length: 30 = payload  field mode: 2 = mode }`."""),
+    ("E510", "escaping", """
+`escape ESC xor MASK for "BYTES"` (HDLC, PPP: `escape "\\x7D" xor 0x20 for
+"\\x7E\\x7D"`) or `escape ESC { "BYTE": "CODE", ... }` (SLIP: `escape "\\xDB" {
+"\\xC0": "\\xDC", "\\xDB": "\\xDD" }`) sends each listed byte between a frame's
+flags as the escape and its code. The escape, each byte and each code are one
+byte; a byte is listed once and no two share a code; the escape is escaped itself
+(else the same byte in the data would read as an escape) and no code is an
+escaped byte (a code follows the escape as it is). A reader finds a packet's end
+at its terminator, so each side of the frame ends with a `terminator` whose first
+byte is escaped and is not the escape; the packet is then unescaped and taken
+apart by the sizes of its parts, so the frame has no `optional` and no `either`,
+and it is not also stuffed (`stuff`). Wrong: `frame slip { payload terminator
+"\\xC0"  escape "\\xDB" { "\\xC0": "\\xDC" } }` (a DB in the data reads as an
+escape). Right: `frame slip { payload terminator "\\xC0"  escape "\\xDB" {
+"\\xC0": "\\xDC", "\\xDB": "\\xDD" } }`."""),
     ("E505", "reply-table", """
 A reply table (`reply KEY { VALUE: unpack ... }`) chooses a primitive's reply by
 the value of one of its int parameters, so that parameter needs a range

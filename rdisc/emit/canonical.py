@@ -236,6 +236,7 @@ def _frame(f: m.Frame) -> JsonObject:
         ("reply", [_frame_part(part) for part in f.reply]),
         ("moreReplies", [[_frame_part(part) for part in parts] for parts in f.more_replies] or None),
         ("stuffing", None if f.stuffing is None else {"after": f.stuffing[0], "insert": f.stuffing[1]}),
+        ("escaping", None if f.escaping is None else {"escape": f.escaping.escape, "codes": dict(f.escaping.table)}),
         ("doc", f.doc),
     )
 

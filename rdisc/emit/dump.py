@@ -32,6 +32,10 @@ def _primitive(model: m.Model, p: m.Primitive) -> str:
     if frame is not None and frame.stuffing is not None:
         reserved, escape = (" ".join(f"{ord(c):02X}" for c in text) for text in frame.stuffing)
         lines.append(f"  payloads stuffed: {escape} inserted after every {reserved}")
+    if frame is not None and frame.escaping is not None:
+        escape = f"{ord(frame.escaping.escape):02X}"
+        codes = ", ".join(f"{ord(byte):02X} as {escape} {ord(code):02X}" for byte, code in frame.escaping.table)
+        lines.append(f"  escaped between the flags: {codes}")
     if p.lines:
         levels = ", ".join(f"{level.line} = {expression_text(level.value)}" for level in p.lines)
         lines.append(f"  lines: {levels} (set before the request)" if p.encoding else f"  lines: {levels}")

@@ -29,7 +29,7 @@ from rdisc.emit import python_support as support
 from rdisc.emit.python_expr import Chain, Compiler, Paren, Py, lines, literal, quoted, table_name
 from rdisc.emit.writer import Writer
 from rdisc.runtime import engine
-from rdisc.runtime.codec import bit_fields, decoder, encoder, frame_fields
+from rdisc.runtime.codec import bit_fields, decoder, encoder, escape_table, frame_fields
 from rdisc.runtime.device import Description
 from rdisc.runtime.messages import recorded_messages
 from rdisc.semantics import model as m
@@ -920,6 +920,8 @@ def _frame(frame: m.Frame, fields: str | None) -> str:
         if layouts:
             options += f", {word}=[" + ", ".join(
                 "[" + ", ".join(_frame_part(part, index) for part in parts) + "]" for parts in layouts) + "]"
+    if frame.escaping is not None:
+        options += f", escaping=Escaping({frame.escaping.escape.encode('latin-1')!r}, {escape_table(frame.escaping)!r})"
     return f"Frame({quoted(frame.name)}, [{request}], [{reply}]{options})"
 
 

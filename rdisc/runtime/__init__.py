@@ -64,6 +64,10 @@ the payload's size comes from the length field, else the decoding's fixed size,
 else the constant after it; every constant, field and checksum is checked
 (binary checksums exactly, hex digits in either case). Nothing at all is
 RdisTimeout; anything else wrong is RdisProtocolError "P: FRAME: what is wrong".
+A frame that escapes (SLIP, HDLC) has the bytes between its header and terminator
+escaped after framing; its reply is read up to the first terminator (empty packets
+dropped), unescaped (an escape before no code is a protocol error), its length
+field checked against the payload's size, then checked as any other.
 A frame whose reply has no payload is an acknowledgement, read after every
 request. A request of no bytes (a listener) is not written and does not discard
 unread input: its reply is the next frame. With `skip unmatched`, a reply frame

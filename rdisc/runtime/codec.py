@@ -63,9 +63,17 @@ def wire_frame(frame: m.Frame, params: tuple[engine.Param, ...] = (),
     if frame.stuffing is not None:
         reserved, escape = frame.stuffing
         stuffing = engine.Stuffing(reserved.encode("latin-1"), escape.encode("latin-1"))
+    escaping = None
+    if frame.escaping is not None:
+        escaping = engine.Escaping(frame.escaping.escape.encode("latin-1"), escape_table(frame.escaping))
     return engine.Frame(frame.name, [_part(p, index) for p in frame.request], [_part(p, index) for p in frame.reply],
                         stuffing, params, fields, [[_part(p, index) for p in layout] for layout in frame.more_requests],
-                        [[_part(p, index) for p in layout] for layout in frame.more_replies])
+                        [[_part(p, index) for p in layout] for layout in frame.more_replies], escaping)
+
+
+def escape_table(escaping: m.Escaping) -> list[tuple[bytes, bytes]]:
+    """An `escape` rule's (byte, code) pairs as the engine's `Escaping` takes them."""
+    return [(byte.encode("latin-1"), code.encode("latin-1")) for byte, code in escaping.table]
 
 
 def checksum(a: m.ChecksumAlgorithm) -> engine.Checksum:

@@ -155,12 +155,13 @@ def exchange(model: m.Model, iface: m.Interface, connection: str) -> Exchange:
     return Exchange(iface.name, *cost(iface))
 
 
-def message_bytes(prim: m.Primitive, frames: dict[str, m.Frame] | None = None) -> int:
+def message_bytes(prim: m.Primitive, frames: dict[str, m.Frame] | None = None, escaped: bool = True) -> int:
     """Bytes of the request and the reply, frames included (ASCII, and data of any
     length, counted at their shortest; a group repeated as the message says at its most
     rounds: an array's size, its count field's largest value or MAX_ARRAY, no more than the
     frame's length field states), the reply as many times as `replies` says, or each listed
-    reply once (`replies { }`)."""
+    reply once (`replies { }`). Through a frame that escapes, at their worst (`escaped`):
+    every byte between the flags escaped, so two."""
     frame = (frames or {}).get(prim.frame.frame) if prim.frame is not None else None
     match prim.encoding:
         case m.Pack(format=fmt, grouped=grouped):
@@ -175,15 +176,27 @@ def message_bytes(prim: m.Primitive, frames: dict[str, m.Frame] | None = None) -
         case None:  # only modem lines set: no byte on the wire
             request = 0
     framing = 0  # the request's framing
+    sent = request
     if frame is not None:  # the request's layout is the one its size picks
-        framing = frame_bytes(_written(frame.requests, request))
+        written = _written(frame.requests, request)
+        framing = frame_bytes(written)
+        sent = _worst(frame, written, request + framing) if escaped else request + framing
     if prim.listed:  # each listed reply once, through its own frame or the primitive's
-        return request + framing + sum(_reply_bytes(prim.listed_reply(r), frames, request, framing)
-                                       for r in prim.listed)
-    return request + framing + _reply_bytes(prim, frames, request, framing) * max(prim.replies, 1)
+        return sent + sum(_reply_bytes(prim.listed_reply(r), frames, request, framing, escaped) for r in prim.listed)
+    return sent + _reply_bytes(prim, frames, request, framing, escaped) * max(prim.replies, 1)
 
 
-def _reply_bytes(prim: m.Primitive, frames: dict[str, m.Frame] | None, request: int, framing: int) -> int:
+def _worst(frame: m.Frame, layout: tuple[m.FramePart, ...], size: int) -> int:
+    """`size` bytes of a layout as sent at their worst: every byte between the flags escaped."""
+    if frame.escaping is None or not layout:
+        return size
+    flags = sum(len(p.data) for p in (layout[0], layout[-1])
+                if isinstance(p, m.FrameBytes) and p.role in ("header", "terminator"))
+    return flags + 2 * (size - flags)
+
+
+def _reply_bytes(prim: m.Primitive, frames: dict[str, m.Frame] | None, request: int, framing: int,
+                 escaped: bool = True) -> int:
     """Bytes of one reply, its frame's shortest reply layout (without optional parts) included;
     `request` and `framing`, the request's, which a table's entries are counted without."""
     use = prim.reply_frames[0] if prim.reply_frames else prim.frame  # replies through their own frames: all of one
@@ -205,11 +218,11 @@ def _reply_bytes(prim: m.Primitive, frames: dict[str, m.Frame] | None, request: 
         case None if prim.table is not None:  # each entry's reply after its tag (and its length)
             t = prim.table
             head = sum(formats.struct_layout(f).size for f in (t.tag, t.length) if f is not None)
-            sizes = [message_bytes(prim.case(c), frames) - request - framing - answer + head for c in t.cases]
+            sizes = [message_bytes(prim.case(c), frames, False) - request - framing - answer + head for c in t.cases]
             reply = sum(sizes) if t.each else max(sizes, default=0)  # sub-payloads: each entry's once
         case None:
             reply = 0
-    return reply + answer
+    return _worst(frame, frame.reply, reply + answer) if frame is not None and answer and escaped else reply + answer
 
 
 def _written(layouts: tuple[tuple[m.FramePart, ...], ...], size: int) -> tuple[m.FramePart, ...]:

@@ -78,7 +78,7 @@ class FrameRules:
     def frame(self, decl: ast.FrameDecl, params: tuple[m.Parameter, ...]) -> m.Frame:
         scope = {p.name: (Scope.PARAM, p.type) for p in params if p.type is not None}
         env = Env(scope, "in a frame", "its parameters")
-        direct = tuple(i for i in decl.items if not isinstance(i, (ast.FrameSide, ast.FrameStuff)))
+        direct = tuple(i for i in decl.items if not isinstance(i, (ast.FrameSide, ast.FrameStuff, ast.FrameEscape)))
         stuffs = [i for i in decl.items if isinstance(i, ast.FrameStuff)]
         for extra in stuffs[1:]:
             self.d.report("E501", extra.span, f"frame `{decl.name.text}` has two `stuff` rules",
@@ -90,6 +90,15 @@ class FrameRules:
                 if not 1 <= len(lit.value) <= MAX_BYTES or any(ord(ch) > 0xFF for ch in lit.value):
                     self.d.report("E501", lit.span, f"stuffing bytes are 1 to {MAX_BYTES} bytes (characters up to \\xff)")
             stuffing = (reserved.value, escape.value)
+        escapes = [i for i in decl.items if isinstance(i, ast.FrameEscape)]
+        for again in escapes[1:]:
+            self.d.report("E510", again.span, f"frame `{decl.name.text}` has two `escape` rules",
+                          labels=(Label(escapes[0].span, "first given here"),))
+        if escapes and stuffs:
+            self.d.report("E510", escapes[0].span, f"frame `{decl.name.text}` both stuffs and escapes",
+                          labels=(Label(stuffs[0].span, "stuffed here"),),
+                          help="a frame has one kind of byte stuffing: `stuff` or `escape`")
+        escaping = self.escaping(escapes[0]) if escapes else None
         sides: dict[str, ast.FrameSide] = {}
         for item in decl.items:
             if isinstance(item, ast.FrameSide):
@@ -113,8 +122,99 @@ class FrameRules:
         else:
             request = self.layouts(direct, "request", decl, env, fields)
             reply = self.layouts(direct, "reply", decl, env, fields, quiet=True)
-        return m.Frame(decl.name.text, params, request[0], reply[0], decl.doc, decl.span, stuffing, request[1:],
-                       reply[1:])
+        frame = m.Frame(decl.name.text, params, request[0], reply[0], decl.doc, decl.span, stuffing, request[1:],
+                        reply[1:], escaping)
+        if escaping is not None:
+            self.escaped(frame, escapes[0], decl)
+        return frame
+
+    def escaping(self, item: ast.FrameEscape) -> m.Escaping | None:
+        """An `escape` rule's table of (byte, code), each one byte; None when it is wrong (reported)."""
+        wrong = False
+        for lit in (item.escape, *(lit for entry in item.table for lit in entry)):
+            if len(lit.value) != 1 or ord(lit.value) > 0xFF:
+                self.d.report("E510", lit.span, f"an escape, an escaped byte and a code are one byte each, "
+                              f"not \"{abbreviate(lit.value)}\"")
+                wrong = True
+        if item.escaped is not None:
+            if not 1 <= len(item.escaped.value) <= MAX_BYTES or any(ord(ch) > 0xFF for ch in item.escaped.value):
+                self.d.report("E510", item.escaped.span, f"the escaped bytes are 1 to {MAX_BYTES} bytes "
+                              "(characters up to \\xff)")
+                wrong = True
+            mask = item.xor if item.xor is not None else 0
+            if not 1 <= mask <= 0xFF:
+                self.d.report("E510", item.span, f"an `escape`'s mask is 1 to 255 (0x01 to 0xFF), not {mask}")
+                wrong = True
+            table = tuple((ch, chr(ord(ch) ^ mask)) for ch in item.escaped.value)
+        else:
+            table = tuple((byte.value, code.value) for byte, code in item.table)
+            if not table:
+                self.d.report("E510", item.span, "an `escape` table lists each byte it escapes and its code",
+                              help='SLIP: `escape "\\xDB" { "\\xC0": "\\xDC", "\\xDB": "\\xDD" }`')
+                wrong = True
+        if wrong:
+            return None
+        codes: dict[str, str] = {}
+        for byte, code in table:
+            if table.count((byte, code)) > 1 or [b for b, _ in table].count(byte) > 1:
+                self.d.report("E510", item.span, f"\"{abbreviate(byte)}\" is escaped twice")
+                return None
+            if code in codes:
+                self.d.report("E510", item.span, f"\"{abbreviate(codes[code])}\" and \"{abbreviate(byte)}\" are both "
+                              f"escaped as \"{abbreviate(item.escape.value + code)}\", so a reader cannot tell them apart")
+                return None
+            codes[code] = byte
+        escaped = {byte for byte, _ in table}
+        if item.escape.value not in escaped:
+            self.d.report("E510", item.escape.span, f"the escape \"{abbreviate(item.escape.value)}\" is not itself "
+                          "escaped, so a reader takes the same byte in the data for an escape",
+                          help="escape it too, as SLIP escapes DB as DB DD and HDLC 7D as 7D 5D")
+            return None
+        for code, byte in codes.items():
+            if code in escaped:
+                self.d.report("E510", item.span, f"\"{abbreviate(byte)}\" is escaped as \"{abbreviate(item.escape.value + code)}"
+                              f"\", whose code \"{abbreviate(code)}\" is an escaped byte itself",
+                              help="a code follows the escape unescaped: give each byte a code that is not escaped")
+                return None
+        return m.Escaping(item.escape.value, table)
+
+    def escaped(self, frame: m.Frame, item: ast.FrameEscape, decl: ast.FrameDecl) -> None:
+        """Where escaping works: one layout each way, each ending with a terminator whose first byte
+        is escaped (so a reader finds the packet's end at the first one that comes)."""
+        assert frame.escaping is not None
+        parts = tuple(p for i in decl.items for p in (i.parts if isinstance(i, ast.FrameSide) else (i,))
+                      if not isinstance(p, (ast.FrameStuff, ast.FrameEscape)))
+        for part in _nested(parts):
+            if isinstance(part, (ast.FrameOptional, ast.FrameEither)):
+                word = "optional" if isinstance(part, ast.FrameOptional) else "either"
+                self.d.report("E510", part.span, f"a frame that escapes has no `{word}`: its reply is found between its "
+                              "flags and taken apart by the sizes of its parts",
+                              labels=(Label(item.span, "escaped here"),))
+                return
+        said: set[str] = set()
+        escaped = {byte for byte, _ in frame.escaping.table}
+        for side, layout in (("request", frame.request), ("reply", frame.reply)):
+            last = layout[-1] if layout else None
+            if not layout:
+                continue
+            if not isinstance(last, m.FrameBytes) or last.role != "terminator":
+                whose = f"the {side} of frame" if frame.request != frame.reply else "frame"
+                message = f"{whose} `{frame.name}` escapes but ends with no `terminator`"
+                help_ = ("a reader finds a packet's end at its terminator, whose first byte the escaping keeps out of "
+                         "the bytes before it: `terminator \"\\x7E\"`")
+            elif last.data[:1] == frame.escaping.escape:
+                message = (f"the terminator \"{abbreviate(last.data)}\" of frame `{frame.name}` starts with the "
+                           "escape, which comes before every code")
+                help_ = "escape with another byte than the terminator's"
+            elif last.data[:1] not in escaped:
+                message = (f"the terminator \"{abbreviate(last.data)}\" of frame `{frame.name}` starts with a byte that "
+                           "is not escaped, so it may come before the packet ends")
+                help_ = "escape it: the escaping keeps it out of the bytes between the flags"
+            else:
+                continue
+            if message not in said:
+                said.add(message)
+                self.d.report("E510", item.span, message, help=help_)
 
     def layouts(self, parts: tuple[ast.FramePart, ...], side: str, decl: ast.FrameDecl, env: Env,
                 fields: dict[str, int], quiet: bool = False) -> tuple[tuple[m.FramePart, ...], ...]:
@@ -439,6 +539,8 @@ class FrameRules:
 
 def payload_end_known(frame: m.Frame, size_known: bool) -> bool:
     """Whether a reader can find where the reply's payload ends, in each layout."""
+    if frame.escaping is not None:  # read up to its terminator (E510 otherwise)
+        return True
     size_known = size_known and frame.stuffing is None  # stuffing makes a payload longer on the wire
     return all(_end_known(reply, size_known) for reply in frame.replies)
 

@@ -493,6 +493,15 @@ FramePart = FrameBytes | FrameField | FrameLength | FramePayload | FrameChecksum
 
 
 @dataclass(frozen=True, slots=True)
+class Escaping:
+    """Escaping between a frame's flags (SLIP, HDLC, PPP): each byte of `table` is sent as
+    `escape` and its code (one character up to \\xff each), so no flag comes between them."""
+
+    escape: str
+    table: tuple[tuple[str, str], ...]  # (byte, code)
+
+
+@dataclass(frozen=True, slots=True)
 class Frame:
     """A frame's parts each way; with `either`, more than one layout of a side: a request is
     written with the first that can state its payload's size, a reply read by its header."""
@@ -506,6 +515,7 @@ class Frame:
     stuffing: tuple[str, str] | None = None  # (reserved, escape): escape inserted after reserved
     more_requests: tuple[tuple[FramePart, ...], ...] = ()  # the other layouts, in order
     more_replies: tuple[tuple[FramePart, ...], ...] = ()
+    escaping: Escaping | None = None
 
     @property
     def requests(self) -> tuple[tuple[FramePart, ...], ...]:

@@ -671,10 +671,23 @@ class FrameStuff:
 
 
 @dataclass(frozen=True, slots=True)
+class FrameEscape:
+    """`escape "\\x7D" xor 0x20 for "\\x7E\\x7D"` (HDLC, PPP) or `escape "\\xDB" { "\\xC0": "\\xDC",
+    "\\xDB": "\\xDD" }` (SLIP): each listed byte between the frame's flags sent as ESCAPE and a code,
+    its own XOR the mask or the one the table gives."""
+
+    escape: StrLit
+    table: tuple[tuple[StrLit, StrLit], ...]  # (byte, code); () in the xor form
+    xor: int | None = None  # the xor form's mask, and the bytes it escapes
+    escaped: StrLit | None = None
+    span: Span = _span
+
+
+@dataclass(frozen=True, slots=True)
 class FrameDecl:
     name: Ident
     params: tuple[Param, ...]
-    items: tuple[FramePart | FrameSide | FrameStuff, ...]
+    items: tuple[FramePart | FrameSide | FrameStuff | FrameEscape, ...]
     span: Span = _span
     doc: str | None = None
 

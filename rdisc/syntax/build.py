@@ -432,6 +432,17 @@ def _transformer_class():
         def f_stuff(self, meta: Meta, c: list[Any]) -> ast.FrameStuff:
             return ast.FrameStuff(self.b.string(c[0]), self.b.string(c[1]), self.b.span(meta))
 
+        def f_escape_xor(self, meta: Meta, c: list[Any]) -> ast.FrameEscape:
+            mask = _int_value(str(c[1]))
+            return ast.FrameEscape(self.b.string(c[0]), (), -1 if mask is None else mask, self.b.string(c[2]),
+                                   self.b.span(meta))
+
+        def f_escape_table(self, meta: Meta, c: list[Any]) -> ast.FrameEscape:
+            return ast.FrameEscape(self.b.string(c[0]), tuple(e for e in c[1:] if e is not None), span=self.b.span(meta))
+
+        def escape_entry(self, meta: Meta, c: list[Any]) -> tuple[ast.StrLit, ast.StrLit]:
+            return self.b.string(c[0]), self.b.string(c[1])
+
         def request_side(self, meta: Meta, c: list[Any]) -> ast.FrameSide:
             return ast.FrameSide("request", tuple(c), self.b.span(meta))
 

@@ -326,7 +326,7 @@ _PRIMITIVE = (
 )  # fmt: skip
 _FRAME = ("name", "parameters", "parameterTypes", "parameterRanges", "parameterDefaults", "parameterUnits",
           "request", "reply", "moreRequests", "moreReplies",
-          "stuffing", "doc")
+          "stuffing", "escaping", "doc")
 _CHECKSUM = (
     "checksum", "kind", "width", "poly", "init", "reflectIn", "reflectOut", "xorOut", "inverted", "mask", "format",
     "covers", "withRequest",
@@ -592,6 +592,18 @@ class _Importer:
             if after is not None and insert is not None:
                 items += (ast.FrameStuff(ast.StrLit(insert.value, insert.span), ast.StrLit(after.value, after.span),
                                          stuffing.span),)
+        escaping = self.object(m.get("escaping"), "`escaping`")
+        if escaping is not None:
+            e = self.members(escaping, "`escaping`", ("escape", "codes"))
+            escape = self.required(escaping, e, "escape", "`escaping`", self.string)
+            codes = self.required(escaping, e, "codes", "`escaping`", self.object)
+            if escape is not None and codes is not None:
+                table = []
+                for key, value in codes.members:
+                    code = self.string(value, "a code")
+                    if code is not None:
+                        table.append((ast.StrLit(key.value, key.span), ast.StrLit(code.value, code.span)))
+                items += (ast.FrameEscape(ast.StrLit(escape.value, escape.span), tuple(table), span=escaping.span),)
         return ast.FrameDecl(name, params, items, obj.span, self.doc(m))
 
     def frame_parts(self, value: JValue | None, what: str) -> tuple[ast.FramePart, ...]:

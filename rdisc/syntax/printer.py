@@ -111,6 +111,8 @@ def _code(d: ast.Decl) -> list[str]:
                     lines += _block(item.side, [_frame_part(part) for part in item.parts])
                 elif isinstance(item, ast.FrameStuff):
                     lines.append(f"stuff {p.quote(item.escape.value)} after {p.quote(item.reserved.value)}")
+                elif isinstance(item, ast.FrameEscape):
+                    lines.append(_escape(item))
                 else:
                     lines.append(_frame_part(item))
             return _block(head, lines)
@@ -123,6 +125,13 @@ def _code(d: ast.Decl) -> list[str]:
             return _block(f"transmission {name.text}: {joint.text}", [line for b in bindings for line in _binding(b)])
         case _:
             _unreachable(d)
+
+
+def _escape(item: ast.FrameEscape) -> str:
+    head = f"escape {p.quote(item.escape.value)}"
+    if item.escaped is not None:
+        return f"{head} xor 0x{item.xor:02X} for {p.quote(item.escaped.value)}"
+    return f"{head} {{ " + ", ".join(f"{p.quote(b.value)}: {p.quote(c.value)}" for b, c in item.table) + " }"
 
 
 # ---- the body -------------------------------------------------------------------------

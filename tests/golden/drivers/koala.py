@@ -454,7 +454,7 @@ class Side:
     """The parts of one direction, with their sizes worked out once."""
 
     __slots__ = ("delimiter", "extra", "group", "header", "length", "marker", "most", "parts", "payload", "prefix",
-                 "sizes", "suffix")
+                 "sizes", "suffix", "terminator")
 
     def __init__(self, parts: Sequence[Part]) -> None:
         self.parts = tuple(parts)
@@ -462,6 +462,8 @@ class Side:
         self.payload = next((i for i, p in enumerate(self.parts) if isinstance(p, Payload)), -1)
         first = self.parts[0] if self.parts else None
         self.header = first.data if isinstance(first, Bytes) and first.role == "header" else b""
+        last = self.parts[-1] if self.parts else None
+        self.terminator = last.data if isinstance(last, Bytes) and last.role == "terminator" else b""
         at = self.payload if self.payload >= 0 else len(self.parts)
         self.prefix = sum(self.sizes[:at]) - len(self.header)  # after the header, before the payload
         self.suffix = sum(self.sizes[at + 1 :]) if self.payload >= 0 else 0
@@ -503,6 +505,40 @@ class Stuffing:
             out += data[start:after]
             start = after + len(self.escape)
         out += data[start:]
+        return bytes(out)
+
+
+class Escaping:
+    """Escaping between a frame's flags (SLIP, HDLC, PPP): each byte of the table is sent as
+    `escape` and its code, so that no flag comes between them; the checker made sure the
+    escape is escaped itself and no code is an escaped byte."""
+
+    __slots__ = ("codes", "escape", "sent")
+
+    def __init__(self, escape: bytes, table: Sequence[tuple[bytes, bytes]]) -> None:
+        self.escape = escape
+        self.sent = [bytes([byte]) for byte in range(256)]  # each byte as it is sent
+        for byte, code in table:
+            self.sent[byte[0]] = escape + code
+        self.codes = {code[0]: byte for byte, code in table}
+
+    def escaped(self, data: bytes) -> bytes:
+        return b"".join([self.sent[byte] for byte in data])
+
+    def unescaped(self, data: bytes, name: str) -> bytes:
+        """`data` as it was before escaping; an escape before a byte that is no code, or at the
+        end, is a FrameError."""
+        pieces = data.split(self.escape)
+        out = bytearray(pieces[0])
+        for at, piece in enumerate(pieces[1:], 2):
+            if not piece and at == len(pieces):
+                raise FrameError(f"{name}: the packet ends in the escape {self.escape!r}: {data!r}")
+            code = piece[0] if piece else self.escape[0]
+            if code not in self.codes:
+                raise FrameError(f"{name}: the escape {self.escape!r} comes before {bytes([code])!r}, "
+                                 f"which is no code: {data!r}")
+            out += self.codes[code]
+            out += piece[1:]
         return bytes(out)
 
 
@@ -574,18 +610,22 @@ class Frame:
     """A request side and a reply side (empty when the device answers nothing framed), and
     the values of its fields over its parameters."""
 
-    __slots__ = ("fields", "headers", "name", "params", "quick", "ranged", "replies", "reply", "requests", "stuffing")
+    __slots__ = ("escaping", "fields", "headers", "name", "params", "quick", "ranged", "replies", "reply", "requests",
+                 "stuffing")
 
     def __init__(self, name: str, request: Sequence[Part], reply: Sequence[Part], stuffing: Stuffing | None = None,
                  params: tuple[Param, ...] = (), fields: Callable[[Args], list[Any]] | None = None,
-                 more_requests: Sequence[Sequence[Part]] = (), more_replies: Sequence[Sequence[Part]] = ()) -> None:
-        """`more_requests` and `more_replies`: the other layouts of a side (`either`), in order."""
+                 more_requests: Sequence[Sequence[Part]] = (), more_replies: Sequence[Sequence[Part]] = (),
+                 escaping: Escaping | None = None) -> None:
+        """`more_requests` and `more_replies`: the other layouts of a side (`either`), in order;
+        `escaping`: the bytes between the header and the terminator escaped (one layout each way)."""
         self.name = name
         self.requests = tuple(Side(parts) for parts in (request, *more_requests))
         self.replies = tuple(Side(parts) for parts in (reply, *more_replies))
         self.reply = self.replies[0]
         self.headers = tuple(side.header for side in self.replies)  # a reply's layout is known by its header
         self.stuffing = stuffing
+        self.escaping = escaping
         self.params = params
         self.ranged = _ranged(params)
         self.fields = fields
@@ -600,12 +640,16 @@ class Frame:
 
     def wrap(self, payload: bytes, fields: Sequence[int]) -> bytes:
         """The request: `payload` framed (stuffed first, when the frame stuffs), with the
-        frame's field values."""
+        frame's field values; when it escapes, what comes between its flags escaped."""
         if self.stuffing is not None:
             payload = self.stuffing.stuff(payload)
         for side, quick in zip(self.requests, self.quick):  # the first layout that can state its size
             if len(payload) <= side.most:
-                return quick(payload, fields) if quick is not None else self.wrap_parts(side, payload, fields)
+                out = quick(payload, fields) if quick is not None else self.wrap_parts(side, payload, fields)
+                if self.escaping is None:
+                    return out
+                end = len(out) - len(side.terminator)
+                return out[: len(side.header)] + self.escaping.escaped(out[len(side.header) : end]) + out[end:]
         most = max(side.most for side in self.requests)
         raise ValueError(f"frame {self.name}: a {len(payload)}-byte payload is more than its length field"
                          f"{' states' if len(self.requests) == 1 else 's state'} ({most} bytes)")
@@ -635,6 +679,8 @@ class Frame:
 
     def _read(self, port: Reader, data: bytearray, fields: Sequence[int], request: bytes,
               size: int) -> tuple[bytes, bytes]:
+        if self.escaping is not None:
+            return self._read_escaped(port, data, fields, request)
         side = self.reply
         if len(self.replies) > 1:  # the header that comes says which layout
             head = self._sync(port, self.headers)
@@ -674,6 +720,41 @@ class Frame:
             self._take(port, data, side.suffix - side.extra - len(side.delimiter), True)
         raw = bytes(data)
         return raw, self._check(side, raw, size, fields, request, present)
+
+    def _read_escaped(self, port: Reader, data: bytearray, fields: Sequence[int],
+                      request: bytes) -> tuple[bytes, bytes]:
+        """A reply between flags: the bytes up to the first terminator (which the escaping keeps
+        out of those before it), unescaped, then taken apart by the sizes of its parts."""
+        side = self.reply
+        assert self.escaping is not None
+        end = side.terminator
+        if side.header:
+            data += self._sync(port, self.headers)
+        while True:
+            found = port.read_until(end, MAX_FRAME)
+            started = bool(data or found)
+            data += found
+            if not found.endswith(end):
+                raise FrameError(f"{self.name}: reply not delimited by {end!r}: {bytes(data)!r}", timeout=not started)
+            if len(found) > len(end) or side.header not in (b"", end):
+                break
+            if len(data) > MAX_SKIP:  # flags, flags: no packet
+                raise FrameError(f"{self.name}: no packet in {MAX_SKIP} bytes")
+            # two flags in a row hold an empty packet, which RFC 1055 and RFC 1662 drop: the second may open the next
+        raw = side.header + self.escaping.unescaped(found[: -len(end)], self.name) + end
+        fixed = sum(side.sizes)  # every part's but the payload's
+        size = len(raw) - fixed
+        if size < 0 or (side.payload < 0 and size):
+            raise FrameError(f"{self.name}: a {len(raw)}-byte packet, unescaped, where its parts take "
+                             f"{fixed} bytes{' and the payload' if side.payload >= 0 else ''}: {raw!r}")
+        if side.length >= 0:
+            length = side.parts[side.length]
+            assert isinstance(length, (Length, Bits))
+            stated = length.stated(raw, sum(side.sizes[: side.length]))
+            if stated != size:
+                raise FrameError(f"{self.name}: length field says {stated + length.adjust}, but the payload is "
+                                 f"{size} bytes: {raw!r}")
+        return bytes(data), self._check(side, raw, size, fields, request)
 
     def _sync(self, port: Reader, headers: tuple[bytes, ...]) -> bytes:
         """Read up to the first of `headers` to come, skipping the bytes before it; that header."""
