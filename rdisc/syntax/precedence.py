@@ -151,10 +151,17 @@ def quote(value: str) -> str:
     return "".join(out)
 
 
+def quote_octets(value: str) -> str:
+    """A string literal of bytes on the wire (a header, a terminator, a marker) that reads back
+    as `value`: text (printable ASCII and the usual escapes) as text, `"AT\\r\\n"`; any other
+    bytes all as `\\xHH`, `"\\xff\\xff"` rather than `"ÿÿ"`, not a mixture that reads as neither."""
+    if all(" " <= ch < "\x7f" or ch in "\n\r\t" for ch in value):
+        return '"' + "".join(_ESCAPES.get(ch, ch) for ch in value) + '"'
+    if all(ord(ch) <= 0xFF for ch in value):
+        return '"' + "".join(f"\\x{ord(ch):02x}" for ch in value) + '"'
+    return quote(value)  # past a byte: the checker's to refuse, printed as written
+
+
 def quote_bytes(value: bytes) -> str:
-    """A bytes literal `b"..."` that reads back as `value`: text (printable ASCII and the usual
-    escapes) as text, `b"AT\\r\\n"`; any other bytes all as `\\xHH`, `b"\\xf0\\x79"`, not a
-    mixture that reads as neither."""
-    if all(0x20 <= byte < 0x7F or byte in b"\n\r\t" for byte in value):
-        return 'b"' + "".join(_ESCAPES.get(chr(byte), chr(byte)) for byte in value) + '"'
-    return 'b"' + "".join(f"\\x{byte:02x}" for byte in value) + '"'
+    """A bytes literal `b"..."` that reads back as `value`, as `quote_octets` writes a string."""
+    return "b" + quote_octets(value.decode("latin-1"))

@@ -110,7 +110,7 @@ def _code(d: ast.Decl) -> list[str]:
                 if isinstance(item, ast.FrameSide):
                     lines += _block(item.side, [_frame_part(part) for part in item.parts])
                 elif isinstance(item, ast.FrameStuff):
-                    lines.append(f"stuff {p.quote(item.escape.value)} after {p.quote(item.reserved.value)}")
+                    lines.append(f"stuff {p.quote_octets(item.escape.value)} after {p.quote_octets(item.reserved.value)}")
                 elif isinstance(item, ast.FrameEscape):
                     lines.append(_escape(item))
                 else:
@@ -128,10 +128,10 @@ def _code(d: ast.Decl) -> list[str]:
 
 
 def _escape(item: ast.FrameEscape) -> str:
-    head = f"escape {p.quote(item.escape.value)}"
+    head = f"escape {p.quote_octets(item.escape.value)}"
     if item.escaped is not None:
-        return f"{head} xor 0x{item.xor:02X} for {p.quote(item.escaped.value)}"
-    return f"{head} {{ " + ", ".join(f"{p.quote(b.value)}: {p.quote(c.value)}" for b, c in item.table) + " }"
+        return f"{head} xor 0x{item.xor:02X} for {p.quote_octets(item.escaped.value)}"
+    return f"{head} {{ " + ", ".join(f"{p.quote_octets(b.value)}: {p.quote_octets(c.value)}" for b, c in item.table) + " }"
 
 
 # ---- the body -------------------------------------------------------------------------
@@ -168,7 +168,7 @@ def _bit_field(f: ast.FrameBitField) -> str:
 def _frame_part(part: ast.FramePart) -> str:
     match part:
         case ast.FrameBytes(role, value):
-            return f"{role} {p.quote(value.value)}"
+            return f"{role} {p.quote_octets(value.value)}"
         case ast.FrameField(name, fmt, value):
             return f"field {name.text} {p.quote(fmt.value)} = {print_expr(value)}"
         case ast.FrameLength(fmt, adjust):
@@ -263,7 +263,7 @@ def _connection_attr(a: ast.ConnectionAttr) -> str:
         case ast.Hook(event, call, every):
             return f"{event} {_call(call)}" + ("" if every is None else f" every {_duration(every)}")
         case ast.Terminator(value):
-            return f"terminator {p.quote(value.value)}"
+            return f"terminator {p.quote_octets(value.value)}"
         case ast.Address(value):
             return f"address {p.quote(value.value)}"
         case _:
@@ -362,7 +362,7 @@ def _primitive_clause(c: ast.PrimitiveClause) -> tuple[list[str], bool]:
                 lines.extend(_entry(head, listed.actions))
             return [*lines, "}"], False
         case ast.Records(marker):
-            return [f"reply each until {p.quote(marker.value)}"], False
+            return [f"reply each until {p.quote_octets(marker.value)}"], False
         case ast.Lines(settings):
             return ["lines " + ", ".join(_assign(a) for a in settings)], False
         case ast.ReplyTable(key, entries, _, tag, each, length):
@@ -375,7 +375,7 @@ def _primitive_clause(c: ast.PrimitiveClause) -> tuple[list[str], bool]:
                 values = print_expr(entry.value) + ("" if entry.last is None else f"..{print_expr(entry.last)}")
                 head = f"{values}: {entry.decoding.kind} {spell_template(entry.decoding.template.value)}"
                 if entry.until is not None:
-                    head += f" until {p.quote(entry.until.value)}"
+                    head += f" until {p.quote_octets(entry.until.value)}"
                 lines.extend(_entry(head, entry.actions))
             return [*lines, "}"], False
         case ast.Actions(()):
