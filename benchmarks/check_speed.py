@@ -270,6 +270,9 @@ def main() -> int:
     p.add_argument("--verbose", action="store_true", help="also summarise python -X importtime")
     args = p.parse_args()
     print(f"Python {sys.version.split()[0]} on {sys.platform}, {os.cpu_count()} CPUs")
+    if sys.dont_write_bytecode:  # as PYTHONDONTWRITEBYTECODE says: cold starts compile every module
+        print("   no bytecode is cached here (PYTHONDONTWRITEBYTECODE): each start compiles rdisc's modules"
+              " from source, as a user's installation does not")
     cold_start(args.runs)
     if args.verbose:
         import_profile()
