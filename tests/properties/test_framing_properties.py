@@ -1,8 +1,8 @@
 """The framing module on arbitrary bytes: reading never fails but with a FrameError,
 and a frame written is read back as the payload it carries (stuffing included).
 
-The frames are the examples' own (Dynamixel, LX-16A, RoboClaw, NMEA) and a
-Dynamixel 2.0 frame with byte stuffing.
+The frames are the examples' own (Dynamixel, LX-16A, RoboClaw, NMEA), a
+Dynamixel 2.0 frame with byte stuffing, and SLIP and HDLC frames escaped between flags.
 """
 
 from __future__ import annotations
@@ -41,6 +41,18 @@ frame dxl2(id: int) {
 connection bus: serial { baud 57600 }
 primitive ping(id: int) on bus frame dxl2(id) pack "B" (1)
 """
+ESCAPED = """\
+robot escaped { author "tests" }
+frame slip { header "\\xC0"  payload  terminator "\\xC0"  escape "\\xDB" { "\\xC0": "\\xDC", "\\xDB": "\\xDD" } }
+frame hdlc(address: int) {
+    header "\\x7E"  field address "B" = address  length "B" = payload  payload
+    checksum "crc16-x25" "<H" over address .. payload  terminator "\\x7E"
+    escape "\\x7D" xor 0x20 for "\\x7E\\x7D"
+}
+connection link: serial { baud 57600 }
+primitive slip_ping() on link frame slip pack "B" (1)
+primitive hdlc_ping(address: int) on link frame hdlc(address) pack "B" (1)
+"""
 
 
 
@@ -48,8 +60,10 @@ primitive ping(id: int) on bus frame dxl2(id) pack "B" (1)
 def _frames(tmp: Path) -> dict[str, tuple[Frame, int]]:
     """Each example frame with the number of its fields."""
     (tmp / "dxl2.rdis").write_text(DXL2)
+    (tmp / "escaped.rdis").write_text(ESCAPED)
     found: dict[str, tuple[Frame, int]] = {}
-    for path in [*(REPO / "examples" / f"{n}.rdis" for n in ("ax12", "lx16a", "roboclaw", "nmea")), tmp / "dxl2.rdis"]:
+    examples = (REPO / "examples" / f"{n}.rdis" for n in ("ax12", "lx16a", "roboclaw", "nmea"))
+    for path in [*examples, tmp / "dxl2.rdis", tmp / "escaped.rdis"]:
         model = compile_path(str(path)).model
         assert model is not None
         for frame in model.frames.values():
@@ -60,7 +74,8 @@ def _frames(tmp: Path) -> dict[str, tuple[Frame, int]]:
 FRAMES = _frames(Path(__import__("tempfile").mkdtemp()))
 NAMES = sorted(FRAMES)
 _BYTE_SOUP = st.lists(st.one_of(st.binary(max_size=6), st.sampled_from(
-    [b"\xff\xff", b"\xff\xff\xfd\x00", b"\x55\x55", b"$", b"*", b"\r\n", b"\n\x00", b"\xfd", b"\x80"])), max_size=30)
+    [b"\xff\xff", b"\xff\xff\xfd\x00", b"\x55\x55", b"$", b"*", b"\r\n", b"\n\x00", b"\xfd", b"\x80",
+     b"\xc0", b"\xdb\xdc", b"\xdb", b"\x7e", b"\x7d\x5e", b"\x7d"])), max_size=30)
 
 
 @settings(max_examples=600, deadline=None)
