@@ -17,6 +17,11 @@ each measured state variable with its transmission's `QUANTITY = ...`, compiled 
 driver's expression compiler. A steady rate rather than one message per tick, as ros_control's
 joint_state_controller publishes: robot_state_publisher and RViz keep the transforms fresh
 while the arm stands still, and the engine needs no hook of its own for the node.
+
+Joints are commanded on `joint_command` (a `sensor_msgs/JointState`): each primitive or
+interface all of whose parameters transmissions bind (or that have defaults) is called once
+per message naming its joints, with each value converted by its transmission's `raw = ...`,
+compiled as the measures are, through the robot's own call (its ranges checked there).
 """
 
 from __future__ import annotations
@@ -26,7 +31,7 @@ from pathlib import PurePath
 
 from rdisc.emit.canonical import to_json
 from rdisc.emit.python import class_name, to_python
-from rdisc.emit.python_expr import Compiler, quoted
+from rdisc.emit.python_expr import Compiler, literal, quoted
 from rdisc.emit.urdf import to_urdf
 from rdisc.emit.writer import Writer
 from rdisc.semantics import model as m
@@ -90,6 +95,37 @@ def _ros_set_yaw(q: Any, yaw: float) -> None:
     q.x, q.y, q.z, q.w = 0.0, 0.0, math.sin(yaw / 2), math.cos(yaw / 2)'''
 
 
+JOINT_COMMAND = '''def _ros_joint_command(robot: Robot, msg: Any, report: Callable[[BaseException], None]) -> None:
+    """Call each of _ROS_COMMANDS whose joints the JointState `msg` names, all of them, with their
+    values through the transmissions; what cannot be sent is reported (an RdisValueError), and
+    nothing is sent for that target."""
+    given = {name: at for at, name in enumerate(msg.name)}
+    values = (msg.position, msg.velocity, msg.effort)
+    for kind, target, joints, arguments in _ROS_COMMANDS:
+        missing = [joint for joint, _ in joints if joint not in given]
+        if len(missing) == len(joints):
+            continue
+        if missing:
+            report(RdisValueError(f"joint_command: {target} takes {', '.join(j for j, _ in joints)} together; "
+                                  f"missing: {', '.join(missing)}"))
+            continue
+        lacking = [f"{_ROS_QUANTITIES[q]} of {joint}" for joint, q in joints if given[joint] >= len(values[q])]
+        if lacking:
+            report(RdisValueError(f"joint_command: {target}: no {', '.join(lacking)}"))
+            continue
+        try:
+            args = arguments([values[q][given[joint]] for joint, q in joints])
+            if kind == "primitive":
+                robot.call_primitive(target, *args)
+            else:
+                robot.call_interface(target, *args)
+        except Exception as err:  # noqa: BLE001 - reported, and the other targets still sent
+            report(err)
+    unknown = [name for name in msg.name if name not in _ROS_COMMANDED]
+    if unknown:
+        report(RdisValueError(f"joint_command: no command takes {', '.join(unknown)}"))'''
+
+
 def to_ros(model: m.Model, source_name: str, *, sources: Mapping[str, SourceFile] | None = None) -> str:
     """The ROS node for `model`: its generated driver, with the bridge as its main program."""
     w = Writer()
@@ -112,6 +148,7 @@ class _Bridge:
         self.source_name = source_name
         self.exprs = Compiler()
         self.measured = _measured(model)
+        self.commanded = _commanded(model)
         self.inputs = [(i, model.adapters[i.adapter]) for i in model.inputs.values()
                        if model.adapters[i.adapter].ros is not None]
         self.outputs = [(o, model.adapters[o.adapter]) for o in model.outputs.values()
@@ -157,6 +194,9 @@ class _Bridge:
             w.lines([quoted(line) for line in to_urdf(self.model, self.source_name).splitlines(keepends=True)])
         w.line(")")
         self.simulation(w)
+        if self.commanded:
+            w.blank(2)
+            self.commands(w)
         if not self.measured:
             return
         w.blank(2)
@@ -185,6 +225,49 @@ class _Bridge:
                             w.line(f"{self.exprs.bound(binding.to_joint, Type.FLOAT, {'raw': raw}).text},")
                     w.line("],")
             w.line(")")
+
+    def commands(self, w: Writer) -> None:
+        """Each fully bound command target as its arguments from its joints' values, and the
+        function that calls them for a JointState."""
+        for k, (_kind, target, params, joints) in enumerate(self.commanded):
+            with w.block(f"def _ros_command_{k}(v: list[float]) -> list[Any]:"):
+                w.line(f'"""The arguments of {target} from the values of {", ".join(j for j, _ in joints)}."""')
+                w.line("return [")
+                with w.indented():
+                    for param, bound in params:
+                        w.lines(self.argument(param, bound, joints))
+                w.line("]")
+            w.blank(2)
+        w.line("# The targets all of whose parameters transmissions bind: kind, name, the joints with the")
+        w.line("# quantity of each (0 position, 1 velocity, 2 effort), and the arguments from their values.")
+        w.line("_ROS_COMMANDS: tuple[tuple[str, str, tuple[tuple[str, int], ...], Callable[[list[float]], list[Any]]], ...] = (")
+        quantities = list(m.Quantity)
+        with w.indented():
+            for k, (kind, target, _params, joints) in enumerate(self.commanded):
+                w.line(f"({quoted(kind)}, {quoted(target)}, (")
+                w.lines([f"    ({quoted(j)}, {quantities.index(b.quantity)})," for j, b in joints])
+                w.line(f"), _ros_command_{k}),")
+        w.line(")")
+        w.blank(2)
+        w.lines(['_ROS_QUANTITIES = ("position", "velocity", "effort")', "_ROS_COMMANDED = frozenset((",
+                 *(f"    {quoted(j)}," for j in dict.fromkeys(j for c in self.commanded for j, _ in c[3])), "))"])
+        w.blank(2)
+        w.lines(JOINT_COMMAND.splitlines())
+
+    def argument(self, param: m.Parameter, bound: dict[int | None, int],
+                 joints: list[tuple[str, m.Binding]]) -> list[str]:
+        """One argument: each place's value converted from its joint's (`v[k]`), else the parameter's default."""
+        def converted(index: int | None, declared: m.AnyType) -> str:
+            k = bound[index]
+            binding = joints[k][1]
+            return self.exprs.bound(binding.to_device, declared, {binding.quantity.value: f"v[{k}]"}).text
+        if not bound:
+            assert param.default is not None
+            return [literal(param.default, param.type).text + ","]
+        if isinstance(param.type, m.Array):
+            element = param.type.element
+            return ["(", *(f"    {converted(i, element)}," for i in range(param.type.size)), "),"]
+        return [converted(None, param.type) + ","]
 
     def simulation(self, w: Writer) -> None:
         """The description as canonical JSON, and the simulation `~sim` builds from it: the node
@@ -230,7 +313,7 @@ class _Bridge:
     def main(self, w: Writer) -> None:
         adapters = [a for _, a in self.inputs] + [a for _, a in self.outputs]
         named = [(package, message) for package, _, message in (a.ros.partition("/") for a in adapters if a.ros)]
-        if self.measured:
+        if self.measured or self.commanded:
             named.append(("sensor_msgs", "JointState"))
         messages = list(dict.fromkeys([*named, ("std_msgs", "String")]))  # as first named; ~errors' last
         with w.block("def ros_main() -> int:"):
@@ -364,6 +447,9 @@ class _Bridge:
                         w.line("on_error(err)")
                 w.line("return received")
             w.blank()
+            if self.commanded:
+                w.line('rospy.Subscriber("joint_command", sensor_msgs_msg.JointState,')
+                w.line("                 lambda msg: _ros_joint_command(robot, msg, on_error), queue_size=10)")
             for i, adapter in self.inputs:
                 w.line(f"rospy.Subscriber({quoted(i.name)}, {self.message(adapter)},")
                 w.line(f"                 subscriber({quoted(i.name)}, _ros_read_{_name(i.name)}), queue_size=10)")
@@ -384,6 +470,37 @@ def _measured(model: m.Model) -> list[tuple[str, dict[m.Quantity, m.Binding]]]:
         for binding in transmission.measures:
             measures.setdefault(transmission.joint, {}).setdefault(binding.quantity, binding)
     return [(joint, measures[joint]) for joint in model.joints if joint in measures]
+
+
+_Commanded = tuple[str, str, list[tuple[m.Parameter, dict[int | None, int]]], list[tuple[str, m.Binding]]]
+
+
+def _commanded(model: m.Model) -> list[_Commanded]:
+    """Each primitive or interface whose parameters transmissions bind, every element of an array,
+    but for those with defaults: its kind, name, each parameter with the place (into the joints) of
+    each of its elements, and the joints bound at those places with their first binding there."""
+    places: dict[tuple[bool, str], dict[tuple[str, int | None], tuple[str, m.Binding]]] = {}
+    for transmission in model.transmissions.values():
+        for binding in transmission.commands:
+            assert binding.parameter is not None
+            at = places.setdefault((binding.interface, binding.target), {})
+            at.setdefault((binding.parameter, binding.index), (transmission.joint, binding))
+    found: list[_Commanded] = []
+    for (interface, target), at in places.items():
+        params = (model.interfaces[target] if interface else model.primitives[target]).params
+        bound: list[tuple[m.Parameter, dict[int | None, int]]] = []
+        joints: list[tuple[str, m.Binding]] = []
+        for param in params:
+            indexes: list[int | None] = (list(range(param.type.size)) if isinstance(param.type, m.Array)
+                                         else [None])
+            given = {i: at[(param.name, i)] for i in indexes if (param.name, i) in at}
+            if len(given) < len(indexes) and (given or param.default is None):
+                break
+            bound.append((param, {i: len(joints) + k for k, i in enumerate(given)}))
+            joints.extend(given.values())
+        else:
+            found.append(("interface" if interface else "primitive", target, bound, joints))
+    return found
 
 
 def _rate(model: m.Model) -> float:

@@ -477,3 +477,65 @@ def test_a_sim_that_is_no_bool_stops_the_node(ros_env: dict[str, str], create2_n
                              check=False, timeout=60)
     assert (refused.returncode, refused.stderr.splitlines()[-1:]) == (
         2, [f"{PROG}: ~sim is 1: give true (simulate the body) or false (the device)"]), refused.stderr
+
+
+def _sync_goals(received: bytes) -> list[list[int]]:
+    """The goals of each sync write of Goal Position (0x83 at 116, 4 bytes) among the Dynamixel
+    packets `received` (FF FF FD 00, ID, length, instruction, parameters, CRC)."""
+    goals: list[list[int]] = []
+    at = received.find(b"\xff\xff\xfd\x00")
+    while 0 <= at and at + 7 <= len(received):
+        size = int.from_bytes(received[at + 5:at + 7], "little") + 7
+        packet = received[at:at + size]
+        if packet[7] == 0x83 and packet[8:12] == bytes([116, 0, 4, 0]):
+            goals.append([int.from_bytes(packet[i + 1:i + 5], "little", signed=True) for i in range(12, size - 2, 5)])
+        at = received.find(b"\xff\xff\xfd\x00", at + size)
+    return goals
+
+
+def _publish_joints(env: dict[str, str], names: list[str], quantity: str, values: list[float]) -> None:
+    """One JointState on joint_command, latched for the node to take (`rostopic pub -1`)."""
+    message = json.dumps({"name": names, quantity: values})
+    subprocess.run(["rostopic", "pub", "-1", "/joint_command", "sensor_msgs/JointState", message], env=env,
+                   capture_output=True, text=True, check=True, timeout=60)
+
+
+ARM_JOINTS = ["waist", "shoulder", "elbow", "wrist_pitch", "wrist_roll", "gripper"]
+
+
+def test_a_joint_state_on_joint_command_moves_the_arm_s_servos(ros_env: dict[str, str], tmp_path: Path) -> None:
+    """examples/arm.rdis's node: six positions on joint_command are one sync write of six goals,
+    each the transmission's `raw = round(position * UNITS_PER_RAD) + CENTRE`; five joints of the
+    six is a line on ~errors, and nothing is written for it."""
+    node_file = tmp_path / "arm_node.py"
+    done = subprocess.run(["python", "-m", "rdisc", "emit-ros", str(REPO / "examples" / "arm.rdis"), "-o",
+                           str(node_file)], cwd=REPO, capture_output=True, text=True, check=False)
+    assert done.returncode == 0, done.stderr
+    with XBus() as bus:
+        node = subprocess.Popen([PYTHON3, str(node_file), f"_port:={bus.port}"], env=ros_env, stdout=subprocess.PIPE,
+                                stderr=subprocess.STDOUT, text=True)
+        listener = _listen(ros_env, "joint_states")
+        try:
+            _until(listener, lambda m: True)  # the node is up
+            shown = ""
+            for _ in range(5):  # the echo may subscribe after a message was published
+                echo = subprocess.Popen(["rostopic", "echo", "-n", "1", "/arm/errors"], env=ros_env,
+                                        stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+                _publish_joints(ros_env, ARM_JOINTS[:5], "position", [0.0] * 5)
+                try:
+                    shown = echo.communicate(timeout=5)[0].split("---")[0]
+                    break
+                except subprocess.TimeoutExpired:
+                    _stop(echo)
+            error = subprocess.run([PYTHON3, "-c", "import sys, yaml; sys.stdout.write(yaml.safe_load(sys.stdin)['data'])"],
+                                   input=shown, capture_output=True, text=True, check=True).stdout
+            assert error == ("RdisValueError: joint_command: sync_goal takes waist, shoulder, elbow, wrist_pitch, "
+                             "wrist_roll, gripper together; missing: gripper")
+            assert _sync_goals(bus.received) == []
+            _publish_joints(ros_env, ARM_JOINTS, "position", [0.0, -math.pi / 2, math.pi / 2, math.pi / 4, 0.1, -0.1])
+            bus.wait_until(lambda: bool(_sync_goals(bus.received)), 15, "a sync write of goals")
+            assert _sync_goals(bus.received) == [[2048, 1024, 3072, 2560, 2048 + 65, 2048 - 65]]
+        finally:
+            _stop(listener)
+            output = _stop(node)
+        assert node.returncode == 0, output
