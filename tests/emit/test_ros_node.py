@@ -12,6 +12,7 @@ import math
 import subprocess
 import sys
 from pathlib import Path
+from types import SimpleNamespace
 
 import pytest
 
@@ -265,3 +266,76 @@ def test_a_body_s_node_can_simulate_it_from_the_json_it_carries(tmp_path: Path) 
 def test_a_node_without_a_body_has_nothing_to_simulate() -> None:
     node = _node("create")[0]
     assert "~sim" not in node and "_ROS_CANONICAL" not in node and "rdisc" not in node.split("def ros_main")[1]
+
+
+COMMANDED = """\
+robot commander { author "tests" }
+connection c: serial { baud 9600 }
+primitive move(speed: int in -100..100 unit "count", gain: int = 3) on c pack ">bB" (speed, gain)
+primitive both(a: int unit "count", b: int) on c pack ">bb" (a, b)
+link base {}
+link wheel {}
+link arm {}
+joint spin: continuous base -> wheel { axis [0, 1, 0] velocity 10 effort 1 }
+joint lift: revolute base -> arm { limit -1..1 velocity 2 effort 3 }
+transmission drive: spin { command velocity to move.speed { raw = round(velocity * 10)  velocity = raw / 10 } }
+transmission hoist: lift { command position to both.a { raw = round(position * 100)  position = raw / 100 } }
+"""
+
+
+class _Recorder:
+    """A robot that records the calls joint_command makes."""
+
+    def __init__(self) -> None:
+        self.calls: list[tuple[str, tuple[object, ...]]] = []
+
+    def call_primitive(self, name: str, *args: object) -> None:
+        self.calls.append((name, args))
+
+
+def _commands(node: Path, messages: list[dict[str, list[object]]]) -> tuple[list[tuple[str, tuple[object, ...]]],
+                                                                             list[str]]:
+    """The calls and the reported errors of the node's _ros_joint_command for each message."""
+    spec = importlib.util.spec_from_file_location("commander_node", node)
+    assert spec is not None and spec.loader is not None
+    module = importlib.util.module_from_spec(spec)
+    sys.modules["commander_node"] = module
+    try:
+        spec.loader.exec_module(module)
+    finally:
+        del sys.modules["commander_node"]
+    robot, reported = _Recorder(), []
+    for fields in messages:
+        msg = SimpleNamespace(**{"name": [], "position": [], "velocity": [], "effort": [], **fields})
+        module._ros_joint_command(robot, msg, lambda err: reported.append(f"{type(err).__name__}: {err}"))
+    return robot.calls, reported
+
+
+def test_joint_command_calls_each_target_its_transmissions_bind_fully(tmp_path: Path) -> None:
+    """`move` is reachable (speed bound, gain its default); `both` is not (b unbound), so `lift`
+    is no joint a command takes; a velocity missing is reported and nothing is sent."""
+    source = tmp_path / "commander.rdis"
+    source.write_text(COMMANDED, encoding="utf-8")
+    node = tmp_path / "commander_node.py"
+    done = subprocess.run([sys.executable, "-m", "rdisc", "emit-ros", str(source), "-o", str(node)],
+                          capture_output=True, text=True, check=False)
+    assert done.returncode == 0, done.stderr
+    calls, reported = _commands(node, [
+        {"name": ["spin"], "velocity": [-4.26]},
+        {"name": ["spin"], "position": [1.0]},
+        {"name": ["lift", "spin"], "position": [0.5, 0.0], "velocity": [0.0, 2.0]},  # parallel to the names
+    ])
+    assert calls == [("move", (-43, 3)), ("move", (20, 3))]
+    assert reported == ["RdisValueError: joint_command: move: no velocity of spin",
+                        "RdisValueError: joint_command: no command takes lift"]
+
+
+def test_the_create_2_s_wheels_are_drive_direct(tmp_path: Path) -> None:
+    """Both wheels' velocities (rad/s) are one drive_direct of mm/s, right first as it takes them."""
+    node = tmp_path / "create2_node.py"
+    node.write_text(_node("create2")[0], encoding="utf-8")
+    calls, reported = _commands(node, [{"name": ["left_wheel_joint", "right_wheel_joint"], "velocity": [5.0, -2.0]},
+                                       {"name": ["left_wheel_joint"], "velocity": [5.0]}])
+    assert calls == [("drive_direct", (-72, 180))]
+    assert reported == [("RdisValueError: joint_command: drive_direct takes right_wheel_joint, left_wheel_joint "
+                         "together; missing: right_wheel_joint")]
