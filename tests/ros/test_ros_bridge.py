@@ -512,8 +512,9 @@ def test_a_joint_state_on_joint_command_moves_the_arm_s_servos(ros_env: dict[str
                            str(node_file)], cwd=REPO, capture_output=True, text=True, check=False)
     assert done.returncode == 0, done.stderr
     with XBus() as bus:
-        node = subprocess.Popen([PYTHON3, str(node_file), f"_port:={bus.port}"], env=ros_env, stdout=subprocess.PIPE,
-                                stderr=subprocess.STDOUT, text=True)
+        # the rate given: a test before may have left a private parameter of the arm's on the master
+        node = subprocess.Popen([PYTHON3, str(node_file), f"_port:={bus.port}", "_joint_states_rate:=20"], env=ros_env,
+                                stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
         listener = _listen(ros_env, "joint_states")
         try:
             _until(listener, lambda m: True)  # the node is up
