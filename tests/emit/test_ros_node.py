@@ -184,10 +184,11 @@ transmission hoist: lift {
 """
 
 
-def _mixed_node(tmp_path: Path, text: str = MIXED) -> Path:
-    source = tmp_path / "mixer.rdis"
+def _emitted_node(tmp_path: Path, text: str = MIXED, name: str = "mixer") -> Path:
+    """The node `rdisc emit-ros` writes for `text` (the mixer's description unless said)."""
+    source = tmp_path / f"{name}.rdis"
     source.write_text(text, encoding="utf-8")
-    node = tmp_path / "mixer_node.py"
+    node = tmp_path / f"{name}_node.py"
     done = subprocess.run([sys.executable, "-m", "rdisc", "emit-ros", str(source), "-o", str(node)],
                           capture_output=True, text=True, check=False)
     assert done.returncode == 0, done.stderr
@@ -198,7 +199,7 @@ def test_joint_states_convert_what_each_joint_measures(tmp_path: Path) -> None:
     """Each measured joint once, in the body's order (`rest` measures nothing: left out); each
     quantity some joint measures is a list over all of them, NaN where a joint does not measure
     it; the conversions run as compiled, with the helper one of them needs (`_mul`) in the node."""
-    path = _mixed_node(tmp_path)
+    path = _emitted_node(tmp_path)
     spec = importlib.util.spec_from_file_location("mixer_node", path)
     assert spec is not None and spec.loader is not None
     module = importlib.util.module_from_spec(spec)
@@ -218,13 +219,13 @@ def test_joint_states_convert_what_each_joint_measures(tmp_path: Path) -> None:
 
 
 def test_a_body_measuring_nothing_gives_only_the_description(tmp_path: Path) -> None:
-    node = _mixed_node(tmp_path, MIXED[: MIXED.index("transmission")]).read_text(encoding="utf-8")
+    node = _emitted_node(tmp_path, MIXED[: MIXED.index("transmission")]).read_text(encoding="utf-8")
     assert 'rospy.set_param("robot_description", _ROS_DESCRIPTION)' in node
     assert "joint_states" not in node and "_ros_joint_states" not in node
 
 
 def test_the_node_of_a_body_is_clean_for_ruff_and_mypy_strict(tmp_path: Path) -> None:
-    path = _mixed_node(tmp_path)
+    path = _emitted_node(tmp_path)
     for command in (["ruff", "check", "--isolated", "--no-cache"],
                     ["mypy", "--strict", "--no-error-summary", "--cache-dir", str(tmp_path / "cache")]):
         done = subprocess.run([sys.executable, "-m", *command, str(path)], capture_output=True, text=True,
@@ -314,12 +315,7 @@ def _commands(node: Path, messages: list[dict[str, list[object]]]) -> tuple[list
 def test_joint_command_calls_each_target_its_transmissions_bind_fully(tmp_path: Path) -> None:
     """`move` is reachable (speed bound, gain its default); `both` is not (b unbound), so `lift`
     is no joint a command takes; a velocity missing is reported and nothing is sent."""
-    source = tmp_path / "commander.rdis"
-    source.write_text(COMMANDED, encoding="utf-8")
-    node = tmp_path / "commander_node.py"
-    done = subprocess.run([sys.executable, "-m", "rdisc", "emit-ros", str(source), "-o", str(node)],
-                          capture_output=True, text=True, check=False)
-    assert done.returncode == 0, done.stderr
+    node = _emitted_node(tmp_path, COMMANDED, "commander")
     calls, reported = _commands(node, [
         {"name": ["spin"], "velocity": [-4.26]},
         {"name": ["spin"], "position": [1.0]},
