@@ -144,7 +144,7 @@ class FrameRules:
             mask = item.xor if item.xor is not None else 0
             if not 1 <= mask <= 0xFF:
                 self.d.report("E510", item.span, f"an `escape`'s mask is 1 to 255 (0x01 to 0xFF), not {mask}")
-                wrong = True
+                wrong, mask = True, 0  # no codes of it to check further
             table = tuple((ch, chr(ord(ch) ^ mask)) for ch in item.escaped.value)
         else:
             table = tuple((byte.value, code.value) for byte, code in item.table)

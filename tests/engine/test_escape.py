@@ -194,6 +194,8 @@ CASES = [
      "error[E510]: an `escape` table lists each byte it escapes and its code"),
     ('frame f { payload terminator "\\x7E"  escape "\\x7D" xor 0 for "\\x7E\\x7D" }',
      "error[E510]: an `escape`'s mask is 1 to 255 (0x01 to 0xFF), not 0"),
+    ('frame f { payload terminator "\\x7E"  escape "\\x7D" xor 99999999999999999999 for "\\x7E\\x7D" }',
+     "error[E510]: an `escape`'s mask is 1 to 255 (0x01 to 0xFF), not 99999999999999999999"),  # fuzzer, seed 59
     ('frame f { payload terminator "\\x7E"  escape "\\x7D" xor 0x20 for "\\x7E\\x7D\\x5E" }',
      'error[E510]: "~" is escaped as "}^", whose code "^" is an escaped byte itself'),
     (f'frame f {{ payload terminator "\\x0D"  {ESCAPE} }}',
