@@ -84,6 +84,19 @@ def opened_page(browser, url: str) -> Iterator[object]:
     context.close()
 
 
+def refused_elsewhere(browser, attack: str) -> None:
+    """`attack`, a page of another site (http://elsewhere.example/) in a context of its own,
+    until its title says the console refused its WebSocket."""
+    context = browser.new_context()
+    try:
+        context.route("http://elsewhere.example/", lambda route: route.fulfill(body=attack, content_type="text/html"))
+        other = context.new_page()
+        other.goto("http://elsewhere.example/")
+        playwright_api.expect(other).to_have_title("refused", timeout=WAIT_MS)
+    finally:
+        context.close()
+
+
 @pytest.fixture(scope="module")
 def browser() -> Iterator[object]:
     yield from launched_chromium()
@@ -207,14 +220,7 @@ def test_a_page_of_another_site_cannot_drive_the_robot(browser, console: Running
       ws.onclose = () => {{ if (document.title === "waiting") document.title = "refused"; }};
     </script>"""
     before = len(console.dev.commands)
-    context = browser.new_context()
-    try:
-        context.route("http://elsewhere.example/", lambda route: route.fulfill(body=attack, content_type="text/html"))
-        other = context.new_page()
-        other.goto("http://elsewhere.example/")
-        playwright_api.expect(other).to_have_title("refused", timeout=WAIT_MS)
-    finally:
-        context.close()
+    refused_elsewhere(browser, attack)
     assert not [c for _, c in console.dev.commands[before:] if c[0] == DRIVE]
 
 

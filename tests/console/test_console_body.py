@@ -15,12 +15,9 @@ from collections.abc import Iterator
 import pytest
 from conftest import REPO, start_console, stop_process
 
-from console.test_console import CHROMIUM, WAIT_MS, launched_chromium, opened_page
+from console.test_console import WAIT_MS, launched_chromium, opened_page, playwright_api
 
 pytest.importorskip("mujoco")
-playwright_api = pytest.importorskip("playwright.sync_api")
-if not CHROMIUM.exists():
-    pytest.skip("Debian's chromium is not installed (apt-get install chromium)", allow_module_level=True)
 
 ARM = REPO / "examples" / "arm.rdis"
 LINKS = ["base", "shoulder", "upper_arm", "forearm", "wrist", "hand", "gripper"]

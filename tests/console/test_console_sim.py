@@ -18,12 +18,9 @@ from collections.abc import Iterator
 import pytest
 from conftest import REPO, start_console, stop_process
 
-from console.test_console import CHROMIUM, WAIT_MS, launched_chromium, opened_page
+from console.test_console import WAIT_MS, launched_chromium, opened_page, playwright_api, refused_elsewhere
 
 pytest.importorskip("mujoco")
-playwright_api = pytest.importorskip("playwright.sync_api")
-if not CHROMIUM.exists():
-    pytest.skip("Debian's chromium is not installed (apt-get install chromium)", allow_module_level=True)
 
 CREATE2 = REPO / "examples" / "create2.rdis"
 POLLS = 300  # reads of the page's odometry, 50 ms apart: the robot needs some 20 of them to move 5 cm
@@ -128,14 +125,7 @@ def test_a_page_of_another_site_cannot_drive_the_simulation(browser, console: st
       ws.onopen = () => {{ document.title = "opened"; }};
       ws.onclose = () => {{ if (document.title === "waiting") document.title = "refused"; }};
     </script>"""
-    context = browser.new_context()
-    try:
-        context.route("http://elsewhere.example/", lambda route: route.fulfill(body=attack, content_type="text/html"))
-        other = context.new_page()
-        other.goto("http://elsewhere.example/")
-        playwright_api.expect(other).to_have_title("refused", timeout=WAIT_MS)
-    finally:
-        context.close()
+    refused_elsewhere(browser, attack)
     port = int(console.rstrip("/").rsplit(":", 1)[1])
     for origin in ("http://elsewhere.example", None):
         with pytest.raises(InvalidStatus) as refused:
