@@ -133,7 +133,7 @@ class Simulation:
                 if positions is not None and len(local) != len(plan.params):  # a direct call's format values
                     local = [local[i] for i in positions]
                 self._command(commands, local)
-            if plan.each or plan.records is not None:  # sub-payloads or records: it reports none
+            if plan.in_parts:  # sub-payloads or records: it reports none
                 return []
             if plan.replies:  # one reply a servo (a sync read): reply n tells element n
                 return [self._reply(plan, local, n) for n in range(plan.replies)]

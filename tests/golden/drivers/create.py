@@ -1168,6 +1168,7 @@ class Primitive:
     # frame, decoder, expect and post-actions; `replies N`'s made here, this plan's (through `reply_frames`)
     expects_reply: bool = field(init=False)
     framed_reply: bool = field(init=False)
+    in_parts: bool = field(init=False)  # read as sub-payloads or records, each its plan, values and post-actions
     floats: tuple[int, ...] = field(init=False)
     ranged: tuple[int, ...] = field(init=False)
     tag_struct: struct.Struct | None = field(init=False)
@@ -1178,6 +1179,7 @@ class Primitive:
         framed = reply is not None and bool(reply.parts)
         acknowledged = framed and reply is not None and reply.payload < 0  # constant parts only
         object.__setattr__(self, "framed_reply", framed)
+        object.__setattr__(self, "in_parts", self.each or self.records is not None)
         object.__setattr__(self, "expects_reply", self.decoder is not None or self.table is not None or acknowledged
                            or bool(self.answers))
         object.__setattr__(self, "floats", _floats(self.params))
@@ -2287,7 +2289,7 @@ class Robot:
         """Run the post-actions on a reply read whole (every part decoded and met, so a bad one
         changed no state): each sub-payload's, record's or listed reply's in the order they came,
         published together; or the primitive's (`replies N`: value i of the replies as one array)."""
-        if plan.each or plan.records is not None:
+        if plan.in_parts:
             self._assign_each([part for part in reply if part[0].actions is not None])
         elif plan.answers and not plan.replies:
             self._assign_each([(answer, local, one) for answer, one in zip(plan.answers, reply)
@@ -2355,7 +2357,7 @@ class Robot:
                 self._notify_io("write", plan.connection, request)
         if plan.answers:  # one reply for each, meeting its own expect
             reply = [self._met(answer, local, one) for answer, one in zip(plan.answers, reply)]
-        elif plan.expects_reply and not plan.each and plan.records is None:
+        elif plan.expects_reply and not plan.in_parts:
             reply = self._met(plan, local, reply)
         self._store(plan, local, reply)
 
