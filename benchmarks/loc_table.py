@@ -29,6 +29,10 @@ DEVICES = [
     ("roboclaw.rdis", "tcr-roboclaw", ["tcr_roboclaw.roboclaw"]),  # Basicmicro's own, the reference
     ("roboclaw.rdis", "roboclaw", ["roboclaw.roboclaw", "roboclaw.roboclaw_cmd"]),  # covers about half the commands
     ("nmea.rdis", "pynmea2", ["pynmea2.nmea", "pynmea2.nmea_utils", "pynmea2.types.talker"]),
+    ("arm.rdis", "dynamixel-sdk", ["dynamixel_sdk.port_handler", "dynamixel_sdk.protocol2_packet_handler",
+                                   "dynamixel_sdk.group_sync_write", "dynamixel_sdk.group_sync_read",
+                                   "dynamixel_sdk.group_bulk_read", "dynamixel_sdk.robotis_def"]),
+    ("firmata.rdis", "pyFirmata2", ["pyfirmata2.pyfirmata2", "pyfirmata2.util", "pyfirmata2.boards"]),
 ]
 
 
