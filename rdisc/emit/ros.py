@@ -188,7 +188,7 @@ class _Bridge:
 
     def body(self, w: Writer) -> None:
         """The URDF as a constant, and the measured joints' names and their conversion from the state."""
-        w.line(f"# The body, as `rdisc emit-urdf {self.source_name}` writes it: the robot_description parameter.")
+        w.comment(f"The body, as `rdisc emit-urdf {self.source_name}` writes it: the robot_description parameter.")
         w.line("_ROS_DESCRIPTION = (")
         with w.indented():
             w.lines([quoted(line) for line in to_urdf(self.model, self.source_name).splitlines(keepends=True)])
@@ -273,7 +273,7 @@ class _Bridge:
         """The description as canonical JSON, and the simulation `~sim` builds from it: the node
         carries no .rdis file, and rdisc and MuJoCo are needed only when it simulates."""
         w.blank(2)
-        w.line(f"# The description, as `rdisc build {self.source_name}` writes it: `~sim` checks it again for its body.")
+        w.comment(f"The description, as `rdisc build {self.source_name}` writes it: `~sim` checks it again for its body.")
         w.line("_ROS_CANONICAL = (")
         with w.indented():
             w.lines([quoted(line) for line in to_json(self.model).splitlines(keepends=True)])

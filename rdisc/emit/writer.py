@@ -15,6 +15,24 @@ from contextlib import contextmanager
 INDENT = "    "
 
 
+def printable(text: str, keep: str = "") -> str:
+    """`text` with every character that is not printable escaped as Python escapes it, so
+    that nothing a description or a file name says can end a comment or a string early (a
+    CR or LF would end a comment and start a statement); `keep` is kept as is. Every text
+    that reaches generated code other than through `repr` goes through here."""
+    out = []
+    for ch in text:
+        if ch.isprintable() or ch in keep:
+            out.append(ch)
+        elif ord(ch) <= 0xFF:
+            out.append(f"\\x{ord(ch):02x}")
+        elif ord(ch) <= 0xFFFF:
+            out.append(f"\\u{ord(ch):04x}")
+        else:
+            out.append(f"\\U{ord(ch):08x}")
+    return "".join(out)
+
+
 class Writer:
     def __init__(self) -> None:
         self._lines: list[str] = []
@@ -31,6 +49,10 @@ class Writer:
         self._blanks = 0
         for part in text.split("\n"):
             self._lines.append(INDENT * self._depth + part if part else "")
+
+    def comment(self, text: str) -> None:
+        """`# text` on one line, whatever `text` holds (escaped by `printable`)."""
+        self.line("# " + printable(text))
 
     def lines(self, texts: list[str] | tuple[str, ...]) -> None:
         for text in texts:
@@ -68,5 +90,9 @@ class Writer:
         return limit - len(INDENT) * self._depth
 
     def text(self) -> str:
-        """Everything written, with one newline at the end."""
-        return "\n".join(self._lines).rstrip("\n") + "\n"
+        """Everything written, with one newline at the end. A carriage return or a NUL in it is
+        a bug of the emitter (Python would end a line or refuse the module there), never written."""
+        text = "\n".join(self._lines).rstrip("\n") + "\n"
+        if "\r" in text or "\x00" in text:
+            raise ValueError("generated code would hold a carriage return or a NUL: text not escaped")
+        return text
