@@ -3,8 +3,8 @@
     python benchmarks/driver_speed.py             # the figures
     python benchmarks/driver_speed.py --calls 50000
 
-Two commands, each written into a port object that discards the bytes, three ways,
-in this process and this run:
+Three commands, each written into a port object that discards the bytes, several ways,
+in this process and this run (the targets are issue 21's):
 
 1. The Create's `set_velocity` input (examples/create.rdis, copied with every delay
    made 0 ms), over the six rows of thesis Table 4.3 in turn:
@@ -12,7 +12,7 @@ in this process and this run:
      special radii, round to mm) then `port.write(struct.pack(">Bhh", 137, v, r))`,
      with the fields by keyword;
    - the driver `rdisc emit-python` generates: `robot.set_velocity(linear=..., angular=...)`
-     (target: within 1.3x of the baseline);
+     (target: within 1.2x of the baseline);
    - the rdisc runtime interpreting the description: `robot.call_input("set_velocity", ...)`
      (target: within 3x of the baseline).
 2. The AX-12's broadcast goal position, a framed write (examples/ax12.rdis,
@@ -22,8 +22,17 @@ in this process and this run:
    - baseline: hand-written and specialised to this one packet: the goal's range
      check, then one `struct.pack` of the whole packet, its checksum summed from
      the constant bytes and the goal's two;
-   - the generated driver: `robot.call_primitive("goto_all", goal)` (target: within 2x);
-   - the runtime: `robot.call_primitive("goto_all", goal)` (target: within 4x).
+   - the generated driver: `robot.call_primitive("goto_all", goal)` and its typed method
+     `robot.primitives.goto_all(goal)` (target: within 1.5x);
+   - the runtime: `robot.call_primitive("goto_all", goal)` and `robot.primitives.goto_all(goal)`
+     (target: within 3x).
+3. The Create 2's Drive Direct (examples/create2.rdis, `drive_direct(right, left)`: opcode 145,
+   two big-endian mm/s), over three pairs of wheel speeds:
+   - baseline: hand-written, the range check and one `struct.pack`;
+   - pycreate2 0.9's own `Create2.drive_direct(r, l)` (its clamp, a pack, an unpack to
+     bytes, a pack of them), when installed (`pip install --no-deps -r tests/published-drivers.txt`);
+   - the generated driver's `robot.primitives.drive_direct(right, left)` (target: no slower
+     than pycreate2) and the runtime's.
 
 Every way is called as the others are, through one function call per command.
 Each figure is the best of --repeat runs of --calls calls, the three ways
@@ -54,6 +63,8 @@ from rdisc.runtime import load
 
 CREATE = ROOT / "examples" / "create.rdis"
 AX12 = ROOT / "examples" / "ax12.rdis"
+CREATE2 = ROOT / "examples" / "create2.rdis"
+WHEELS = [(200, 200), (-500, 500), (123, -45)]
 TABLE_4_3 = [(-0.2, -0.4), (0.0, 0.0), (0.0, 0.2), (0.0, -0.2), (0.2, 0.0), (-0.2, 0.0)]
 GOALS = [(0,), (512,), (1023,)]
 GOTO_ALL_512 = bytes.fromhex("FF FF FE 05 03 1E 00 02 D9")  # written out from the AX-12 manual, not computed
@@ -61,6 +72,8 @@ GOTO_ALL_512 = bytes.fromhex("FF FF FE 05 03 1E 00 02 D9")  # written out from t
 
 class DiscardingPort:
     """A port that takes every byte and keeps only the last write (to compare the ways' bytes)."""
+
+    is_open = False  # what pycreate2's destructor asks before it would close the port
 
     def __init__(self) -> None:
         self.last = b""
@@ -110,12 +123,20 @@ def goto_all(port: DiscardingPort, goal: int) -> None:
     port.write(struct.pack("<6BHB", 0xFF, 0xFF, 0xFE, 5, 3, 0x1E, goal, checksum))
 
 
+def drive_direct(port: DiscardingPort, right: int, left: int) -> None:
+    """drive_direct by hand: both speeds in -500..500 mm/s, then one struct.pack and one write."""
+    if not -500 <= right <= 500 or not -500 <= left <= 500:
+        raise ValueError(f"a wheel speed outside -500..500 mm/s: {right}, {left}")
+    port.write(struct.pack(">Bhh", 145, right, left))
+
+
 @dataclass
 class Way:
     label: str
     call: Callable[..., Any]
     port: DiscardingPort
     target: float | None  # at most this many times the baseline; None for the baseline
+    against: str | None = None  # the label of another way the target is relative to (else the baseline)
 
 
 @dataclass
@@ -143,7 +164,7 @@ def create_bench(folder: Path) -> Bench:
             Way("baseline (hand-written struct.pack + write)",
                 lambda linear, angular: set_velocity(port, linear=linear, angular=angular), port, None),
             Way("generated driver, robot.set_velocity(...)",
-                lambda linear, angular: driver.set_velocity(linear=linear, angular=angular), driver_port, 1.3),
+                lambda linear, angular: driver.set_velocity(linear=linear, angular=angular), driver_port, 1.2),
             Way("rdisc runtime, robot.call_input(...)",
                 lambda linear, angular: runtime.call_input("set_velocity", linear=linear, angular=angular),
                 runtime_port, 3.0),
@@ -161,11 +182,47 @@ def ax12_bench(folder: Path) -> Bench:
         [
             Way("baseline (hand-written struct.pack + checksum)", lambda goal: goto_all(port, goal), port, None),
             Way("generated driver, robot.call_primitive(...)",
-                lambda goal: driver.call_primitive("goto_all", goal), driver_port, 2.0),
+                lambda goal: driver.call_primitive("goto_all", goal), driver_port, 1.5),
+            Way("generated driver, robot.primitives.goto_all(...)",
+                lambda goal: driver.primitives.goto_all(goal), driver_port, 1.5),
             Way("rdisc runtime, robot.call_primitive(...)",
-                lambda goal: runtime.call_primitive("goto_all", goal), runtime_port, 4.0),
+                lambda goal: runtime.call_primitive("goto_all", goal), runtime_port, 3.0),
+            Way("rdisc runtime, robot.primitives.goto_all(...)",
+                lambda goal: runtime.primitives.goto_all(goal), runtime_port, 3.0),
         ],
     )
+
+
+def pycreate2_robot(port: DiscardingPort) -> Any:
+    """pycreate2's Create2 writing into `port`, its serial port never opened; None when not installed."""
+    try:
+        import pycreate2.create2api as api
+        from pycreate2.createSerial import SerialCommandInterface
+    except ImportError:
+        return None
+    bot = api.Create2.__new__(api.Create2)
+    bot.SCI = SerialCommandInterface.__new__(SerialCommandInterface)
+    bot.SCI.ser = port
+    api.Create2.__del__ = lambda self: None  # its destructor drives the robot
+    return bot
+
+
+def create2_bench(folder: Path) -> Bench:
+    port, theirs, driver_port, runtime_port = DiscardingPort(), DiscardingPort(), DiscardingPort(), DiscardingPort()
+    driver = import_driver(CREATE2, folder, "create2_driver").connect(driver_port, threads=False)
+    runtime = load(CREATE2).connect(runtime_port, threads=False)
+    ways = [Way("baseline (hand-written struct.pack + write)",
+                lambda right, left: drive_direct(port, right, left), port, None)]
+    bot = pycreate2_robot(theirs)
+    if bot is not None:
+        ways.append(Way("pycreate2, Create2.drive_direct(...)", bot.drive_direct, theirs, None))
+    ways += [
+        Way("generated driver, robot.primitives.drive_direct(...)", driver.primitives.drive_direct, driver_port,
+            1.0 if bot is not None else None, "pycreate2, Create2.drive_direct(...)" if bot is not None else None),
+        Way("rdisc runtime, robot.primitives.drive_direct(...)", runtime.primitives.drive_direct, runtime_port,
+            None),
+    ]
+    return Bench("Create 2 drive_direct, two wheel speeds (three pairs in turn)", WHEELS, ways)
 
 
 def same_bytes(bench: Bench) -> bool:
@@ -201,11 +258,12 @@ def report(bench: Bench, calls: int, repeat: int) -> None:
     base = best[bench.ways[0].label]
     print(f"{bench.title}:")
     for way in bench.ways:
-        line = f"  {way.label:<48}{best[way.label]:8.0f} ns"
+        line = f"  {way.label:<54}{best[way.label]:8.0f} ns   {best[way.label] / base:5.2f}x baseline"
         if way.target is not None:
-            ratio = best[way.label] / base
-            line += (f"   {ratio:5.2f}x baseline  (target <= {way.target}x)  "
-                     f"{'PASS' if ratio <= way.target else 'MISS'}")
+            ratio = best[way.label] / best[way.against or bench.ways[0].label]
+            if way.against:
+                line += f"  {ratio:5.2f}x pycreate2"
+            line += f" (target <= {way.target}x)  {'PASS' if ratio <= way.target else 'MISS'}"
         print(line)
 
 
@@ -222,7 +280,7 @@ def main() -> int:
               f"not the manual's {GOTO_ALL_512.hex(' ')}", file=sys.stderr)
         return 1
     with tempfile.TemporaryDirectory() as tmp:
-        benches = [create_bench(Path(tmp)), ax12_bench(Path(tmp))]
+        benches = [create_bench(Path(tmp)), ax12_bench(Path(tmp)), create2_bench(Path(tmp))]
         checked = [same_bytes(bench) for bench in benches]  # every difference printed, not only the first
         if not all(checked):
             return 1
