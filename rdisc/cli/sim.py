@@ -46,16 +46,20 @@ def add_seed_argument(parser: argparse.ArgumentParser) -> None:
 
 def simulation(model: Model, path: str, prog: str, *, seed: int | None, realtime: bool) -> Simulation | None:
     """The MuJoCo simulation of `model`'s body (`rdisc sim`, `rdisc console --sim`), or None once
-    stderr says why there is none (no `link`, or MuJoCo missing), which is a usage error."""
+    stderr says why there is none (no `link`, MuJoCo missing, or a body MuJoCo refuses), which
+    is a usage error."""
     if not model.links:
         print(f"{prog}: {path} has no body to simulate: it declares no `link`", file=sys.stderr)
         return None
     try:
-        from rdisc.sim import Simulation
-
-        return Simulation(model, seed=seed, realtime=realtime)
+        from rdisc.sim import Simulation, SimulationError
     except ImportError:
         print(f"{prog}: needs MuJoCo (pip install mujoco, or pip install 'rdisc[sim]')", file=sys.stderr)
+        return None
+    try:
+        return Simulation(model, seed=seed, realtime=realtime)
+    except SimulationError as err:  # a mesh it cannot read, contacts past its memory
+        print(f"{prog}: {err}", file=sys.stderr)
         return None
 
 

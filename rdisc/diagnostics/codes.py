@@ -417,7 +417,8 @@ Wrong: `primitive caps() on link pack "B" (0x6B) reply each until "\\x7F" unpack
     ("E601", "body-tree", """
 A robot's body is one tree of links: one root (the base, the child of no joint),
 every other link the child of exactly one joint, every link reachable from the
-root, no cycle, no joint joining a link to itself. Tools reading URDF silently drop
+root, no cycle, no joint joining a link to itself, and no link more than 256 joints
+from the root (a simulator's model nests each link in its parent's). Tools reading URDF silently drop
 links they cannot reach, so rdisc refuses them before any tool sees them. Wrong:
 `joint a: fixed base -> arm {}` with `joint b: revolute hand -> arm {...}` (two
 parents). Right: `joint b: revolute arm -> hand {...}`."""),
@@ -425,7 +426,7 @@ parents). Right: `joint b: revolute arm -> hand {...}`."""),
 A link's `visual` and `collision` shapes are `box(x, y, z)` (full lengths),
 `cylinder(radius, length)` (along its z axis), `sphere(radius)` or
 `mesh("file.stl")` / `mesh("file.stl", scale)`, in metres, every size a constant
-number more than 0 (a mesh's path printable characters, as URDF and SDF carry it); a shape is placed by `at [x, y, z]` and `rpy [roll, pitch,
+number more than 0 and at most 10,000 m (a mesh's path printable characters, as URDF and SDF carry it); a shape is placed by `at [x, y, z]` and `rpy [roll, pitch,
 yaw]` in its link's frame. Vectors are three constant numbers in brackets. Wrong:
 `visual cylinder(0.1) at (0, 0, 1)`. Right: `visual cylinder(0.1, 0.05) at [0, 0, 1]`."""),
     ("E603", "joint", """
@@ -445,7 +446,9 @@ centre (kg m²): `[ixx, iyy, izz]`, or `[ixx, iyy, izz, ixy, ixz, iyz]`. Mass an
 inertia come together. The tensor must be physical: positive definite, and its
 principal moments meet the triangle inequality (none larger than the other two
 together). Wrong: `mass 1  inertia [0.1, 0.1, 0.3]`. Right: `mass 1  inertia [0.1,
-0.1, 0.15]`."""),
+0.1, 0.15]`. A simulator integrates a mass of at most 1,000,000 kg and an inertia
+whose elements are at most 1,000,000 kg m²; larger (a mass of 1e308) is refused here
+rather than met as a simulation that never ends."""),
     ("E605", "transmission", """
 A transmission binds a moving joint to the device: `command QUANTITY to
 TARGET.PARAM { ... }` names a numeric parameter of a primitive or interface that

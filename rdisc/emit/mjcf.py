@@ -25,10 +25,14 @@ POSITION_ERROR = 0.05  # rad (m): a position actuator gives the joint's whole ef
 VELOCITY_ERROR = 0.01  # a velocity actuator gives the whole effort this fraction of the speed limit away
 
 
-def to_mjcf(model: m.Model) -> str:
-    """The MJCF text of the description's body (a model of its robot's links, joints and actuators)."""
+def to_mjcf(model: m.Model, mesh_folder: str | None = None) -> str:
+    """The MJCF text of the description's body (a model of its robot's links, joints and actuators).
+    `mesh_folder`: where a mesh's relative path starts (MuJoCo's `meshdir`; else where it is read)."""
     root = ET.Element("mujoco", model=model.robot.name)
-    ET.SubElement(root, "compiler", angle="radian", autolimits="true", boundmass="0.001", boundinertia="1e-6")
+    compiler = ET.SubElement(root, "compiler", angle="radian", autolimits="true", boundmass="0.001",
+                             boundinertia="1e-6")
+    if mesh_folder is not None:
+        compiler.set("meshdir", mesh_folder)
     ET.SubElement(root, "option", timestep=_num(TIMESTEP), integrator="implicitfast")
     meshes = [(link, shape) for link in model.links.values() for shape in (*link.visuals, *link.collisions)
               if shape.kind is m.ShapeKind.MESH]

@@ -34,6 +34,10 @@ SAMPLES = 33  # points of a joint's range at which a conversion is checked, both
 # Operations of all conversions checked against the device: under a second of sampling, many times
 # what a real body has; beyond it, a description's conversions would cost more to check than to read.
 MAX_CONVERSION_NODES = 50_000
+MAX_MASS = 1e6  # kg: a link heavier is out of what a simulator integrates (a mass of 1e308 makes MuJoCo's NaN)
+MAX_INERTIA = 1e6  # kg m², each element of an inertia
+MAX_LENGTH = 1e4  # m, each size of a shape
+MAX_DEPTH = 256  # joints from the root to the farthest link: MJCF nests a body in its parent's
 _CONSTANTS = Env({}, "in the body", "constants")
 
 Number = Callable[[ast.Expr, str], "float | None"]
@@ -84,12 +88,18 @@ class BodyRules:
             return None
         return tuple(floats)  # type: ignore[arg-type]  # no None in them
 
-    def positive(self, expr: ast.Expr, what: str, code: str, zero: bool = False) -> float | None:
+    def positive(self, expr: ast.Expr, what: str, code: str, zero: bool = False,
+                 most: float = math.inf, unit: str = "") -> float | None:
+        """A constant more than 0 (or 0 too), and at most `most` (in `unit`): what a simulator can integrate."""
         value = self.number(expr, what)
         if value is None:
             return None
         if value < 0 or (value == 0 and not zero):
             self.d.report(code, expr.span, f"{what} must be {'0 or more' if zero else 'more than 0'}, not {value:g}")
+            return None
+        if value > most:
+            self.d.report(code, expr.span, f"{what} of {value:g} {unit} is more than a simulator can integrate",
+                          help=f"at most {most:g} {unit}")
             return None
         return float(value)
 
@@ -127,7 +137,8 @@ class BodyRules:
                           f"{'s' if len(names) > 1 else ''} ({', '.join(names)}), not {len(args)}",
                           help=f"write `{kind_name}({', '.join(names)})` in metres")
             return None
-        size = [self.positive(a, f"a {kind_name}'s {n}", "E602") for a, n in zip(args, names, strict=True)]
+        size = [self.positive(a, f"a {kind_name}'s {n}", "E602", most=MAX_LENGTH, unit="m")
+                for a, n in zip(args, names, strict=True)]
         if origin is None or any(v is None for v in size):
             return None
         return m.Shape(kind, tuple(size), origin, None, use.span)  # type: ignore[arg-type]
@@ -181,7 +192,7 @@ class BodyRules:
             self.d.report("E604", given.span, f"link `{decl.name.text}` has no {missing}",  # type: ignore[union-attr]
                           help="a link's inertial is its `mass` (kg) and `inertia` (kg m²) together")
             return None
-        mass = self.positive(mass_expr, "a link's mass", "E604")
+        mass = self.positive(mass_expr, "a link's mass", "E604", most=MAX_MASS, unit="kg")
         centre = m.ORIGIN if centre_expr is None else self.vector(centre_expr, "a centre of mass")
         inertia = self.inertia(inertia_expr)
         if mass is None or centre is None or inertia is None:
@@ -197,6 +208,10 @@ class BodyRules:
         if len(values) not in (3, 6):
             self.d.report("E604", expr.span, f"an inertia is [ixx, iyy, izz] or [ixx, iyy, izz, ixy, ixz, iyz], "
                           f"not {len(values)} numbers")
+            return None
+        if max(abs(v) for v in values) > MAX_INERTIA:
+            self.d.report("E604", expr.span, f"an inertia of {max(abs(v) for v in values):g} kg m² is more than a "
+                          "simulator can integrate", help=f"each element at most {MAX_INERTIA:g} kg m²")
             return None
         full = values + (0.0, 0.0, 0.0) if len(values) == 3 else values
         tensor = (full[0], full[1], full[2], full[3], full[4], full[5])
@@ -312,13 +327,18 @@ class BodyRules:
         order: dict[str, m.Joint] = {}
         reached: set[str] = set()
         for root in roots:  # the root's tree first: its joints are the body's; then the detached trees
-            frontier = deque([root])
+            frontier = deque([(root, 0)])
             while frontier:
-                for joint in children.get(frontier.popleft(), ()):
+                parent, depth = frontier.popleft()
+                for joint in children.get(parent, ()):
                     if root == roots[0]:
                         order[joint.name] = joint
+                        if depth == MAX_DEPTH:
+                            self.d.report("E601", decls[joint.name].name.span, f"joint `{joint.name}` is "
+                                          f"{depth + 1} joints from the root link `{root}`: more than a "
+                                          "simulator nests", help=f"a body is at most {MAX_DEPTH} joints deep")
                     reached.add(joint.child)
-                    frontier.append(joint.child)
+                    frontier.append((joint.child, depth + 1))
         self.cycles({link: joint for link, joint in moved_by.items() if link not in reached and link in links},
                     roots[0])
         return order

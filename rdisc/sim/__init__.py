@@ -23,6 +23,7 @@ with `realtime`. MuJoCo is imported when a simulation is made, not before.
 from __future__ import annotations
 
 import math
+import os
 import random
 import re
 import threading
@@ -37,9 +38,23 @@ from rdisc.runtime.codec import decoder
 from rdisc.runtime.evaluate import Prepared, prepare
 from rdisc.semantics import model as m
 
-__all__ = ["Simulation"]
+__all__ = ["Simulation", "SimulationError"]
 
 JITTER = 0.01  # rad (m): how far `seed` moves each joint from where it starts
+
+
+class SimulationError(engine.RdisError):
+    """The body cannot be simulated: MuJoCo refused it, or its state stopped being finite (an
+    unstable integration, which MuJoCo would otherwise reset to time 0 and go on)."""
+
+
+_warnings: list[str] = []  # MuJoCo's warnings since a simulation last looked, in place of its MUJOCO_LOG.TXT
+
+
+def _take_warning(text: str) -> None:
+    """MuJoCo's warning handler: kept for the simulation to raise, never written into the user's folder."""
+    if len(_warnings) < 16:
+        _warnings.append(text.strip())
 
 
 @dataclass(frozen=True, slots=True)
@@ -84,10 +99,20 @@ class Simulation:
         import mujoco  # type: ignore[import-untyped]
 
         self._mujoco = mujoco
+        mujoco.set_mju_user_warning(_take_warning)  # no MUJOCO_LOG.TXT in the current folder
+        _warnings.clear()
         self.model = model
         self.realtime = realtime
-        self.physics = mujoco.MjModel.from_xml_string(to_mjcf(model))
-        self.data = mujoco.MjData(self.physics)
+        self.failed: SimulationError | None = None  # once unstable, the physics stays where it failed
+        try:
+            described = model.robot.span.path if model.robot.span is not None else None
+            folder = os.path.dirname(os.path.abspath(described)) if described else None  # a mesh's path starts there
+            self.physics = mujoco.MjModel.from_xml_string(to_mjcf(model, folder))
+            self.data = mujoco.MjData(self.physics)
+        except (ValueError, mujoco.FatalError) as err:  # a mesh it cannot read, a body it cannot hold
+            raise SimulationError(f"{model.robot.name}: MuJoCo cannot simulate this body: "
+                                  f"{str(err).strip().splitlines()[0] if str(err).strip() else type(err).__name__}"
+                                  ) from None
         self._lock = threading.Lock()
         self._time = 0.0
         self._began = time.monotonic()
@@ -113,7 +138,11 @@ class Simulation:
             for joint in model.joints.values():
                 if joint.moves():
                     self.data.qpos[self._joint(joint.name).qposadr[0]] += jitter.uniform(-JITTER, JITTER)
-        mujoco.mj_forward(self.physics, self.data)
+        try:
+            mujoco.mj_forward(self.physics, self.data)
+        except mujoco.FatalError as err:  # its memory for contacts overflowed, say
+            raise SimulationError(f"{model.robot.name}: MuJoCo cannot simulate this body: "
+                                  f"{str(err).strip().splitlines()[0]}") from None
 
     # ---- engine.Simulator ---------------------------------------------------------------------------
 
@@ -186,10 +215,30 @@ class Simulation:
             self._step_to(time.monotonic() - self._began)
 
     def _step_to(self, target: float) -> None:
+        """Step to `target`: as many steps as fit, counted before the first (MuJoCo resets an
+        unstable simulation's time to 0, so a loop on its time would never end). A warning or a
+        state that is no longer finite stops the physics there, for good: SimulationError."""
+        if self.failed is not None:  # the clock goes on (a schedule waiting for it ends), the physics not
+            self._time = max(self._time, target)
+            return
         step = self.physics.opt.timestep
-        while self.data.time + step / 2 <= target:
-            self._mujoco.mj_step(self.physics, self.data)
+        began = self.data.time
+        steps = max(0, math.floor((target - began) / step + 0.5))
+        try:
+            for _ in range(steps):
+                self._mujoco.mj_step(self.physics, self.data)
+                if _warnings or self.data.time < began:
+                    break
+        except self._mujoco.FatalError as err:  # its memory for contacts overflowed, say
+            _warnings.insert(0, str(err).strip().splitlines()[0])
         self._time = max(self._time, target)
+        if _warnings or not (math.isfinite(float(self.data.qpos.sum())) and math.isfinite(float(self.data.qvel.sum()))):
+            said = _warnings[0] if _warnings else "its state is no longer finite"
+            _warnings.clear()
+            self.failed = SimulationError(f"{self.model.robot.name}: the simulation became unstable near "
+                                          f"t = {began:.4f} s: {said} (is a mass, an inertia or a gain "
+                                          "out of proportion to the others?)")
+            raise self.failed
 
     def _joint(self, name: str) -> Any:
         return self.physics.joint(name)
