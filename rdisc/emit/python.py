@@ -1,7 +1,7 @@
 """Model → a standalone Python driver module (`rdisc emit-python`).
 
-A driver is the engine (`rdisc.runtime.engine`, carried verbatim: the same code
-the runtime runs) and the description's plans, written as Python source: each
+A driver is the engine (the modules of `rdisc.engine` as marked sections: the same
+code the runtime runs) and the description's plans, written as Python source: each
 expression of the checked IR printed as a small function with the parser's
 precedence table, each encoder, decoder and frame as its constructor. Over them,
 typed classes give every input, interface and primitive a real method
@@ -25,10 +25,11 @@ from collections.abc import Iterable, Mapping
 from types import ModuleType
 from typing import NoReturn
 
+from rdisc import engine
 from rdisc.emit import python_support as support
 from rdisc.emit.python_expr import Chain, Compiler, Paren, Py, lines, literal, quoted, table_name
 from rdisc.emit.writer import Writer
-from rdisc.runtime import engine
+from rdisc.engine import carry
 from rdisc.runtime.codec import bit_fields, decoder, encoder, escape_table, frame_fields
 from rdisc.runtime.device import Description
 from rdisc.runtime.messages import recorded_messages
@@ -70,12 +71,8 @@ _ROBOT_MEMBERS = frozenset((
 ))
 # Members of State besides the state variables (it is a Mapping).
 _STATE_MEMBERS = frozenset(("keys", "items", "values", "get"))
-# Module-level names a robot's class name must not take: the engine's.
-_MODULE_NAMES = frozenset((
-    "State", "Port", "PortSpec", "Value", "Robot", "Device", "Connection", "Primitive", "Interface", "Input",
-    "Output", "Hook", "Call", "Calls", "Param", "Frame", "Pack", "Format", "Unpack", "Match", "None", "True",
-    "False",
-))
+# The classes a driver defines for its robot, by their names' endings after the robot's class name.
+_CLASS_ENDINGS = ("", "State", "Inputs", "Interfaces", "Primitives")
 
 
 def to_python(model: m.Model, source_name: str, *, sources: Mapping[str, SourceFile] | None = None,
@@ -147,9 +144,11 @@ def _params(params: Iterable[tuple[str, m.AnyType]], reserved: frozenset[str] = 
 
 
 def class_name(robot: str) -> str:
-    """`irobot_create` → `IrobotCreate`."""
+    """`irobot_create` → `IrobotCreate`; `Robot` added where the class, or one of the classes named
+    after it, would take a name the engine's modules bind (`incoming` → `IncomingRobot`)."""
     name = "".join(part[:1].upper() + part[1:] for part in _identifier(robot).split("_")) or "Robot"
-    if keyword.iskeyword(name) or name in _MODULE_NAMES:
+    engine = carry.names()
+    while keyword.iskeyword(name) or any(name + ending in engine for ending in _CLASS_ENDINGS):
         name += "Robot"
     return name
 
@@ -215,7 +214,7 @@ class _Driver:
         self.main_path = model.robot.span.path if model.robot.span else None
         self.cls = class_name(model.robot.name)
         self.exprs = Compiler()
-        taken: set[str] = {"_DEVICE", "_SETTINGS"}
+        taken: set[str] = {"_DEVICE", "_SETTINGS", *carry.names()}  # a plan's constant takes none of these
         self.taken = taken
         self.plan = {
             (kind, name): _constant_name(f"{prefix}_{name}", taken)
@@ -287,7 +286,7 @@ class _Driver:
         w = Writer()
         w.line(_docstring(self.header()))
         w.blank(1)
-        _section(w, "the rdisc engine (rdisc/runtime/engine.py, verbatim)")
+        _section(w, "the rdisc engine: the modules of rdisc/engine, each after its marker")
         w.raw(support.engine_text())
         w.blank(2)
         _section(w, f"{self.model.robot.name}: the plans of {self.source_name}")

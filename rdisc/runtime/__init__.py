@@ -190,8 +190,8 @@ Details both implementations follow (where the above is silent):
   hooks run in every case.
 """
 
+from rdisc.engine import MAX_LINE, Robot
 from rdisc.runtime.device import Description, load
-from rdisc.runtime.engine import MAX_LINE, Robot
 from rdisc.runtime.errors import (
     RdisCallbackError,
     RdisConnectionError,
