@@ -19,6 +19,7 @@ Model and source name give byte-identical text.
 
 from __future__ import annotations
 
+import functools
 import keyword
 import os
 from collections.abc import Iterable, Mapping
@@ -57,17 +58,12 @@ def _py_type(type_: m.AnyType) -> str:
     return _PY_TYPES[type_]
 
 # Names a plan function may use: a parameter or field of the same name would hide
-# them, so such a parameter gets a trailing underscore.
+# them, so such a parameter gets a trailing underscore. The engine's (`lookup`,
+# `element`, ...) are among them too (`_body_names`).
 _BODY_NAMES = frozenset((
     "self", "state", "args", "reply", "fields", "type", "Exception",
     "float", "int", "round", "abs", "min", "max", "str", "bool", "len", "bytes", "math", "struct", "re",
     "Any", "Args", "StateValues", "Sequence", "Value",
-))
-# The robot class's own members: an input of one of these names gets a trailing underscore.
-_ROBOT_MEMBERS = frozenset((
-    "open", "close", "startup", "terminate", "tick", "state", "closed", "timeout", "on_output", "on_error",
-    "on_io", "call_input", "call_interface", "call_primitive", "inputs", "interfaces", "primitives", "device",
-    "name",
 ))
 # Members of State besides the state variables (it is a Mapping).
 _STATE_MEMBERS = frozenset(("keys", "items", "values", "get"))
@@ -134,8 +130,23 @@ def _escape(name: str, taken: Iterable[str]) -> str:
     return name
 
 
-def _params(params: Iterable[tuple[str, m.AnyType]], reserved: frozenset[str] = _BODY_NAMES) -> dict[str, str]:
-    """Python names for parameters or fields: original name → local name."""
+def _body_names() -> frozenset[str]:
+    """The names a plan function's parameters must not hide: its own, and every name the engine binds."""
+    return _BODY_NAMES | carry.names()
+
+
+@functools.cache
+def _robot_members() -> frozenset[str]:
+    """The engine Robot's public members, its class's and an instance's (`device`, `name`): an
+    input's typed method of one of these names gets a trailing underscore, so that it hides none."""
+    robot = engine.Robot(engine.Device("", {}, {}, {}, {}, {}))
+    return frozenset(name for name in dir(robot) if not name.startswith("_"))
+
+
+def _params(params: Iterable[tuple[str, m.AnyType]], reserved: frozenset[str] | None = None) -> dict[str, str]:
+    """Python names for parameters or fields: original name → local name, none of `reserved`
+    (by default, `_body_names()`)."""
+    reserved = _body_names() if reserved is None else reserved
     names: dict[str, str] = {}
     originals = [name for name, _ in params]
     for name in originals:
@@ -225,7 +236,7 @@ class _Driver:
         }
         self.input_methods: dict[str, str] = {}
         for name in model.inputs:
-            self.input_methods[name] = _escape(name, _ROBOT_MEMBERS | set(self.input_methods.values()))
+            self.input_methods[name] = _escape(name, _robot_members() | set(self.input_methods.values()))
 
     # -- helpers ---------------------------------------------------------------------------------
 
@@ -445,7 +456,7 @@ class _Driver:
         w.blank(2)
         w.line(f"{pack} = struct.Struct({quoted(prim.encoding.format)}).pack")
         local = _params([(f.name, f.type) for f in fields])
-        inner = _params([(prm.name, prm.type) for prm in iface.params], _BODY_NAMES | set(local.values()))
+        inner = _params([(prm.name, prm.type) for prm in iface.params], _body_names() | set(local.values()))
         used = set().union(*(_names(e) for _, e, _ in values))
         function = f"_request_{i.name}"
         w.blank(2)

@@ -103,7 +103,7 @@ def _widen(owner: str, floats: tuple[int, ...], values: Args) -> None:
         raise RdisValueError(f"{owner}: {err}") from None
 
 
-def _in_ranges(owner: str, params: tuple[Param, ...], ranged: tuple[int, ...], values: Args,
+def _check_ranges(owner: str, params: tuple[Param, ...], ranged: tuple[int, ...], values: Args,
                role: str = "parameter") -> None:
     """A value outside its parameter's (or setting's) declared range is refused before anything is sent."""
     for i in ranged:
@@ -142,6 +142,6 @@ def bind_settings(device: Device, given: Mapping[str, Any] | None) -> dict[str, 
                 raise RdisValueError(f"{device.name}: setting {name} is a {item.bit_length()}-bit integer; "
                                      "integers are limited to 64 bits and a sign")
         if param.low is not None:
-            _in_ranges(device.name, (param,), (0,), [accepted], "setting")
+            _check_ranges(device.name, (param,), (0,), [accepted], "setting")
         bound[name] = accepted
     return bound

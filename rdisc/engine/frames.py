@@ -6,7 +6,7 @@ import struct
 from collections.abc import Callable, Sequence
 from typing import Any
 
-from rdisc.engine.arguments import _in_ranges
+from rdisc.engine.arguments import _check_ranges
 from rdisc.engine.plans import Param, _ranged
 from rdisc.engine.values import Args
 from rdisc.engine.wire import (
@@ -120,7 +120,7 @@ class Frame:
         """The field values for the frame's arguments; an argument outside its parameter's
         range is an RdisValueError of `owner`, before anything is sent."""
         if self.ranged:
-            _in_ranges(f"{owner}: frame {self.name}", self.params, self.ranged, args)
+            _check_ranges(f"{owner}: frame {self.name}", self.params, self.ranged, args)
         return [] if self.fields is None else self.fields(args)
 
     def wrap(self, payload: bytes, fields: Sequence[int]) -> bytes:

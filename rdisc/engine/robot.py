@@ -9,7 +9,7 @@ import time
 from collections.abc import Callable, Iterator, Mapping
 from typing import Any
 
-from rdisc.engine.arguments import _accept_param, _accepted, _bind, _in_ranges, _widen, bind_settings
+from rdisc.engine.arguments import _accept_param, _accepted, _bind, _check_ranges, _widen, bind_settings
 from rdisc.engine.errors import RdisConnectionError, RdisValueError
 from rdisc.engine.exchange import Exchange, _lines_text
 from rdisc.engine.operations import EVAL_ERRORS
@@ -406,7 +406,7 @@ class Robot(Exchange):
                 _widen(plan.name, plan.floats, args)
                 break
         if plan.ranged:
-            _in_ranges(plan.name, plan.params, plan.ranged, args)
+            _check_ranges(plan.name, plan.params, plan.ranged, args)
         for call in plan.calls:
             try:
                 if call.when is not None and not call.when(self._state, args):
@@ -444,7 +444,7 @@ class Robot(Exchange):
                 _widen(plan.name, plan.floats, args)
                 break
         if plan.ranged:
-            _in_ranges(plan.name, plan.params, plan.ranged, args)
+            _check_ranges(plan.name, plan.params, plan.ranged, args)
         if plan.key >= 0:
             assert plan.table is not None  # and the key's range holds every key of it
             plan = plan.table[args[plan.key]]
