@@ -1,4 +1,7 @@
-"""Values given by the host: arguments bound to parameters and made their types, ranges checked, settings bound."""
+"""Values given by the host: arguments bound to parameters as Python binds them, made their
+declared types and checked against their ranges before anything is sent; settings bound before
+a port is opened.
+"""
 
 from __future__ import annotations
 

@@ -132,10 +132,8 @@ def imports() -> str:
 @functools.cache
 def text() -> str:
     """The engine as a driver carries it: the gathered imports, then each module's body after its marker."""
-    parts = [imports()]
-    for part in sections():
-        parts.append(f"{part.marker}\n\n\n{part.body}")
-    return "\n\n\n".join(parts)
+    sections_text = "\n\n\n".join(f"{part.marker}\n\n\n{part.body}" for part in sections())
+    return f"{imports()}\n\n{sections_text}"  # one blank line after imports, as isort has it before a comment
 
 
 def bound(statements: list[ast.stmt]) -> list[str]:

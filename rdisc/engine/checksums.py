@@ -1,4 +1,6 @@
-"""The checksums frames carry: sums, XORs and table-driven CRCs."""
+"""The checksums frames carry: sums, XORs and CRCs, a CRC's table computed once so that checking
+a reply costs one lookup a byte.
+"""
 
 from __future__ import annotations
 

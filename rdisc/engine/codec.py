@@ -1,4 +1,6 @@
-"""Requests encoded and replies decoded: struct formats, format strings and regular expressions."""
+"""Requests encoded and replies decoded, with struct formats, format strings and regular
+expressions; a value that does not fit is a typed error naming the element at fault.
+"""
 
 from __future__ import annotations
 

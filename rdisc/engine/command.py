@@ -1,4 +1,6 @@
-"""The command line `rdisc run` and every driver share: options, calls, signals, exit status."""
+"""The command line `rdisc run` and every driver share: its options, the calls they make,
+signals and exit statuses.
+"""
 
 from __future__ import annotations
 

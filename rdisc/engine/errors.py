@@ -1,4 +1,6 @@
-"""The errors a description's run raises: one base type, and one for each way a run fails."""
+"""The errors a run raises: RdisError, and one subclass for each way a run fails, so that a
+caller handles what it can (a timeout, a reply not as described, a lost port) and the rest alike.
+"""
 
 from __future__ import annotations
 

@@ -1,4 +1,7 @@
-"""The exchange with a device: requests written, replies read, post-actions run, callbacks told."""
+"""The exchange with a device: the part of a robot that writes requests, reads replies, runs
+their post-actions and tells the callbacks, one at a time. Apart from the lifecycle (`robot`),
+so that each can be read on its own.
+"""
 
 from __future__ import annotations
 

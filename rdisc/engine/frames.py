@@ -1,4 +1,6 @@
-"""A frame: a request side and a reply side, written part by part or at once, read and checked."""
+"""A frame: its request side written part by part or in one struct pack, its reply side read
+(resynchronising on its header) with every part checked.
+"""
 
 from __future__ import annotations
 

@@ -1,4 +1,7 @@
-"""The plans: what a description specialises, per primitive, interface, input and connection."""
+"""The plans: what a description specialises (per primitive, interface, input and connection), as
+data and small functions. The runtime builds them with its interpreter and a driver writes them
+as source; both hand the engine the same types.
+"""
 
 from __future__ import annotations
 

@@ -1,4 +1,6 @@
-"""Ports: what the robot needs of one, a simulated device in their place, opening one by name."""
+"""Ports: what the robot needs of one (pyserial's `Serial` has it all), a simulated device in
+their place, and opening one by name with pyserial, imported only then.
+"""
 
 from __future__ import annotations
 

@@ -1,4 +1,6 @@
-"""Recordings: a session written to an MCAP file of ROS 2 messages."""
+"""Recordings: a session written to an MCAP file of ROS 2 messages, which `rdisc replay` runs
+again through a description.
+"""
 
 from __future__ import annotations
 

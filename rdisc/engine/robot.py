@@ -1,4 +1,6 @@
-"""The robot: its lifecycle and public face, running inputs, interfaces and primitives."""
+"""The robot: its lifecycle (ports opened, hooks, threads, closing) and its public face (state,
+inputs, interfaces, primitives); what it runs is written and read by the exchange it inherits.
+"""
 
 from __future__ import annotations
 

@@ -1,4 +1,6 @@
-"""The schedule of a connection: its periodic interfaces and keepalive, on its own thread."""
+"""The schedule of a connection: its periodic interfaces and keepalive, each run on the
+connection's own thread when due, never in a burst.
+"""
 
 from __future__ import annotations
 

@@ -1,4 +1,6 @@
-"""The values plans compute with, as Python types, and the signatures of the callbacks."""
+"""The values plans compute with, as Python types, and the callbacks' signatures: the words
+every other module of the engine speaks.
+"""
 
 from __future__ import annotations
 

@@ -1,4 +1,7 @@
-"""Bytes on the wire: a port's input as an exchange reads it, and the parts of a frame's side."""
+"""Bytes on the wire: a port's input as an exchange reads it (one deadline for a whole reply,
+bytes put back to look for the next header in), and the parts a frame's side is made of, each
+part's size worked out once.
+"""
 
 from __future__ import annotations
 

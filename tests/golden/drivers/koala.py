@@ -37,7 +37,6 @@ from collections.abc import Callable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field, replace
 from typing import Any, Protocol
 
-
 # ---- rdisc engine: errors (rdisc/engine/errors.py), the errors a run raises ----------------------
 
 
