@@ -1782,6 +1782,8 @@ class Exchange:
     _run_callbacks: list[Callable[[str, str, str], object]]
     _links: dict[str, _Link]
 
+    # ---- writing requests, reading replies, running post-actions ------------------------------------
+
     def _write(self, plan: Primitive, request: bytes, levels: dict[str, Value] | None = None) -> None:
         """Under the port's lock set the modem lines, if any, then write a request that has no
         reply (if the primitive has one); then show the I/O callbacks."""
