@@ -21,10 +21,10 @@ import os
 import signal
 import sys
 
+from rdisc import engine
 from rdisc.cli.output import EXIT_ERRORS, EXIT_USAGE, exit_code, show
 from rdisc.cli.sim import add_seed_argument, simulation
 from rdisc.compile import compile_path
-from rdisc.runtime import engine
 
 DEFAULT_HTTP = "127.0.0.1:8765"
 

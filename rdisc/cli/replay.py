@@ -11,8 +11,8 @@ import argparse
 import sys
 from typing import Any
 
+from rdisc import engine
 from rdisc.cli.output import EXIT_ERRORS, EXIT_USAGE, checked_model
-from rdisc.runtime import engine
 
 
 def add_parser(verbs: Any) -> None:  # argparse's subparsers

@@ -15,8 +15,8 @@ from __future__ import annotations
 
 import argparse
 
+from rdisc import engine
 from rdisc.cli.output import checked_model
-from rdisc.runtime import engine
 
 
 def add_parser(verbs) -> None:

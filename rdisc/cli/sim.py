@@ -17,8 +17,8 @@ import argparse
 import sys
 from typing import TYPE_CHECKING
 
+from rdisc import engine
 from rdisc.cli.output import EXIT_USAGE, checked_model
-from rdisc.runtime import engine
 
 if TYPE_CHECKING:
     from rdisc.semantics.model import Model

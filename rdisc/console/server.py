@@ -28,7 +28,7 @@ from websockets.datastructures import Headers
 from websockets.exceptions import ConnectionClosed
 from websockets.http11 import Request, Response
 
-from rdisc.runtime import engine
+from rdisc import engine
 
 if TYPE_CHECKING:
     from rdisc.sim import Simulation

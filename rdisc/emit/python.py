@@ -1,7 +1,7 @@
 """Model → a standalone Python driver module (`rdisc emit-python`).
 
-A driver is the engine (`rdisc.runtime.engine`, carried verbatim: the same code
-the runtime runs) and the description's plans, written as Python source: each
+A driver is the engine (the modules of `rdisc.engine` as marked sections: the same
+code the runtime runs) and the description's plans, written as Python source: each
 expression of the checked IR printed as a small function with the parser's
 precedence table, each encoder, decoder and frame as its constructor. Over them,
 typed classes give every input, interface and primitive a real method
@@ -19,16 +19,18 @@ Model and source name give byte-identical text.
 
 from __future__ import annotations
 
+import functools
 import keyword
 import os
 from collections.abc import Iterable, Mapping
 from types import ModuleType
 from typing import NoReturn
 
+from rdisc import engine
 from rdisc.emit import python_support as support
 from rdisc.emit.python_expr import Chain, Compiler, Paren, Py, lines, literal, quoted, table_name
 from rdisc.emit.writer import Writer, printable
-from rdisc.runtime import engine
+from rdisc.engine import carry
 from rdisc.runtime.codec import bit_fields, decoder, encoder, escape_table, frame_fields
 from rdisc.runtime.device import Description
 from rdisc.runtime.messages import recorded_messages
@@ -56,26 +58,17 @@ def _py_type(type_: m.AnyType) -> str:
     return _PY_TYPES[type_]
 
 # Names a plan function may use: a parameter or field of the same name would hide
-# them, so such a parameter gets a trailing underscore.
+# them, so such a parameter gets a trailing underscore. The engine's (`lookup`,
+# `element`, ...) are among them too (`_body_names`).
 _BODY_NAMES = frozenset((
     "self", "state", "args", "reply", "fields", "type", "Exception",
     "float", "int", "round", "abs", "min", "max", "str", "bool", "len", "bytes", "math", "struct", "re",
     "Any", "Args", "StateValues", "Sequence", "Value",
 ))
-# The robot class's own members: an input of one of these names gets a trailing underscore.
-_ROBOT_MEMBERS = frozenset((
-    "open", "close", "startup", "terminate", "tick", "state", "closed", "timeout", "on_output", "on_error",
-    "on_io", "call_input", "call_interface", "call_primitive", "inputs", "interfaces", "primitives", "device",
-    "name",
-))
 # Members of State besides the state variables (it is a Mapping).
 _STATE_MEMBERS = frozenset(("keys", "items", "values", "get"))
-# Module-level names a robot's class name must not take: the engine's.
-_MODULE_NAMES = frozenset((
-    "State", "Port", "PortSpec", "Value", "Robot", "Device", "Connection", "Primitive", "Interface", "Input",
-    "Output", "Hook", "Call", "Calls", "Param", "Frame", "Pack", "Format", "Unpack", "Match", "None", "True",
-    "False",
-))
+# The classes a driver defines for its robot, by their names' endings after the robot's class name.
+_CLASS_ENDINGS = ("", "State", "Inputs", "Interfaces", "Primitives")
 
 
 def to_python(model: m.Model, source_name: str, *, sources: Mapping[str, SourceFile] | None = None,
@@ -137,8 +130,23 @@ def _escape(name: str, taken: Iterable[str]) -> str:
     return name
 
 
-def _params(params: Iterable[tuple[str, m.AnyType]], reserved: frozenset[str] = _BODY_NAMES) -> dict[str, str]:
-    """Python names for parameters or fields: original name → local name."""
+def _body_names() -> frozenset[str]:
+    """The names a plan function's parameters must not hide: its own, and every name the engine binds."""
+    return _BODY_NAMES | carry.names()
+
+
+@functools.cache
+def _robot_members() -> frozenset[str]:
+    """The engine Robot's public members, its class's and an instance's (`device`, `name`): an
+    input's typed method of one of these names gets a trailing underscore, so that it hides none."""
+    robot = engine.Robot(engine.Device("", {}, {}, {}, {}, {}))
+    return frozenset(name for name in dir(robot) if not name.startswith("_"))
+
+
+def _params(params: Iterable[tuple[str, m.AnyType]], reserved: frozenset[str] | None = None) -> dict[str, str]:
+    """Python names for parameters or fields: original name → local name, none of `reserved`
+    (by default, `_body_names()`)."""
+    reserved = _body_names() if reserved is None else reserved
     names: dict[str, str] = {}
     originals = [name for name, _ in params]
     for name in originals:
@@ -147,9 +155,11 @@ def _params(params: Iterable[tuple[str, m.AnyType]], reserved: frozenset[str] = 
 
 
 def class_name(robot: str) -> str:
-    """`irobot_create` → `IrobotCreate`."""
+    """`irobot_create` → `IrobotCreate`; `Robot` added where the class, or one of the classes named
+    after it, would take a name the engine's modules bind (`incoming` → `IncomingRobot`)."""
     name = "".join(part[:1].upper() + part[1:] for part in _identifier(robot).split("_")) or "Robot"
-    if keyword.iskeyword(name) or name in _MODULE_NAMES:
+    engine = carry.names()
+    while keyword.iskeyword(name) or any(name + ending in engine for ending in _CLASS_ENDINGS):
         name += "Robot"
     return name
 
@@ -199,7 +209,7 @@ class _Driver:
         self.main_path = model.robot.span.path if model.robot.span else None
         self.cls = class_name(model.robot.name)
         self.exprs = Compiler()
-        taken: set[str] = {"_DEVICE", "_SETTINGS"}
+        taken: set[str] = {"_DEVICE", "_SETTINGS", *carry.names()}  # a plan's constant takes none of these
         self.taken = taken
         self.plan = {
             (kind, name): _constant_name(f"{prefix}_{name}", taken)
@@ -210,7 +220,7 @@ class _Driver:
         }
         self.input_methods: dict[str, str] = {}
         for name in model.inputs:
-            self.input_methods[name] = _escape(name, _ROBOT_MEMBERS | set(self.input_methods.values()))
+            self.input_methods[name] = _escape(name, _robot_members() | set(self.input_methods.values()))
 
     # -- helpers ---------------------------------------------------------------------------------
 
@@ -271,7 +281,7 @@ class _Driver:
         w = Writer()
         w.line(_docstring(self.header()))
         w.blank(1)
-        _section(w, "the rdisc engine (rdisc/runtime/engine.py, verbatim)")
+        _section(w, "the rdisc engine: the modules of rdisc/engine, each after its marker")
         w.raw(support.engine_text())
         w.blank(2)
         _section(w, f"{self.model.robot.name}: the plans of {self.source_name}")
@@ -430,7 +440,7 @@ class _Driver:
         w.blank(2)
         w.line(f"{pack} = struct.Struct({quoted(prim.encoding.format)}).pack")
         local = _params([(f.name, f.type) for f in fields])
-        inner = _params([(prm.name, prm.type) for prm in iface.params], _BODY_NAMES | set(local.values()))
+        inner = _params([(prm.name, prm.type) for prm in iface.params], _body_names() | set(local.values()))
         used = set().union(*(_names(e) for _, e, _ in values))
         function = f"_request_{i.name}"
         w.blank(2)

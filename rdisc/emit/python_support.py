@@ -1,7 +1,8 @@
 """The expression helpers a generated driver may need, and the engine's text it carries.
 
 `rdisc.emit.python` writes the helpers a description's expressions use, as they
-are, after the engine's text (`engine_text`), which every driver carries verbatim.
+are, after the engine's text (`engine_text`: its modules as marked sections), which every
+driver carries.
 """
 
 from __future__ import annotations
@@ -111,9 +112,8 @@ def _byte(data: bytes, index: int) -> int:
 
 
 def engine_text() -> str:
-    """The text of rdisc.runtime.engine from its `from __future__` line to its end: what
-    every driver carries, byte for byte."""
-    from rdisc.runtime import engine
+    """The engine as every driver carries it: the modules of rdisc.engine as marked sections, in
+    their listed order, each byte for byte from the end of its imports (`rdisc.engine.carry`)."""
+    from rdisc.engine import carry
 
-    text = Path(engine.__file__).read_text(encoding="utf-8")
-    return text[text.index("from __future__ import annotations") :].rstrip("\n")
+    return carry.text()

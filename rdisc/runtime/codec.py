@@ -10,7 +10,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import Any
 
-from rdisc.runtime import engine
+from rdisc import engine
 from rdisc.semantics import formats
 from rdisc.semantics import model as m
 

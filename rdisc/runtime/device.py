@@ -1,6 +1,6 @@
 """A description planned for the engine: `load` → `Description` → `connect` → `Robot`.
 
-The Model is turned once into the engine's plans (`rdisc.runtime.engine`): encoders,
+The Model is turned once into the engine's plans (`rdisc.engine`): encoders,
 decoders and frames as data, and each expression of the checked IR prepared by
 `rdisc.runtime.evaluate.prepare` into a closure, so a call walks prepared objects
 and parses nothing. Everything that happens at run time is the engine's, the same
@@ -15,7 +15,7 @@ from collections.abc import Callable, Mapping
 from types import MappingProxyType
 from typing import Any
 
-from rdisc.runtime import engine
+from rdisc import engine
 from rdisc.runtime.codec import decoder, encoder, frame_fields, wire_frame
 from rdisc.runtime.errors import RdisLoadError
 from rdisc.runtime.evaluate import Prepared, coerce, prepare

@@ -1,12 +1,12 @@
 """Typed run-time errors: the engine's, and the one only loading a description raises.
 
-The engine (`rdisc.runtime.engine`) defines the error types; a generated driver
+The engine (`rdisc.engine`) defines the error types; a generated driver
 carries the engine, so code written against one works with the other.
 """
 
 from __future__ import annotations
 
-from rdisc.runtime.engine import (
+from rdisc.engine import (
     RdisCallbackError,
     RdisConnectionError,
     RdisError,

@@ -18,7 +18,7 @@ import sys
 from collections.abc import Callable, Mapping, Sequence
 from typing import Any
 
-from rdisc.runtime.engine import element, lookup, replaced
+from rdisc.engine import element, lookup, replaced
 from rdisc.semantics import model as m
 from rdisc.semantics.model import coerce
 from rdisc.semantics.operators import BINARY, FUNCTIONS, UNARY, EvalError

@@ -12,7 +12,7 @@ log lines).
 
 from __future__ import annotations
 
-from rdisc.runtime import engine
+from rdisc import engine
 from rdisc.semantics import model as m
 
 DEFINITIONS: dict[str, str] = {

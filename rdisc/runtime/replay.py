@@ -21,7 +21,7 @@ from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
-from rdisc.runtime import engine
+from rdisc import engine
 
 SHOWN = 5
 """Differences shown per topic; the others are counted."""

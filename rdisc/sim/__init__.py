@@ -2,7 +2,7 @@
 
 The engine runs the description as it always does; at each primitive it hands the
 simulation the primitive's parameters' values instead of writing them
-(`rdisc.runtime.engine.Simulator`). What the device would do with them, and what it
+(`rdisc.engine.Simulator`). What the device would do with them, and what it
 would answer, comes from the transmissions:
 
 - a transmission that commands a parameter of the primitive, or of an interface being
@@ -32,8 +32,8 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import Any
 
+from rdisc import engine
 from rdisc.emit.mjcf import actuator_name, to_mjcf
-from rdisc.runtime import engine
 from rdisc.runtime.codec import decoder
 from rdisc.runtime.evaluate import Prepared, prepare
 from rdisc.semantics import model as m

@@ -12,10 +12,11 @@ from typing import Any
 import pytest
 from conftest import check_text
 
+from rdisc import engine
 from rdisc.diagnostics import Diagnostics
 from rdisc.emit import dump
 from rdisc.limits import MAX_ARRAY
-from rdisc.runtime import codec, engine
+from rdisc.runtime import codec
 from rdisc.semantics import budget, formats
 from rdisc.semantics import model as m
 from rdisc.syntax.parse import parse

@@ -1,5 +1,5 @@
-"""One engine: the runtime and every generated driver run `rdisc.runtime.engine`, the
-driver carrying its text byte for byte; the cases where the two used to disagree
+"""One engine: the runtime and every generated driver run `rdisc.engine`, the driver
+carrying its modules' text byte for byte; the cases where the two used to disagree
 now behave as the contract says, in both; the public face is the same in both."""
 
 from __future__ import annotations
@@ -11,10 +11,12 @@ from typing import Any
 
 import pytest
 
+from rdisc import engine
 from rdisc.compile import Compilation, compile_path
 from rdisc.emit.canonical import to_json
 from rdisc.emit.python import import_driver
-from rdisc.runtime import engine, load
+from rdisc.engine import carry
+from rdisc.runtime import load
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -141,11 +143,11 @@ def robot_of(request: pytest.FixtureRequest, implementations: dict[str, Any]):
 
 
 def test_the_driver_carries_the_engine_byte_for_byte(implementations) -> None:
-    engine_source = Path(engine.__file__).read_text(encoding="utf-8")
-    carried = engine_source[engine_source.index("from __future__ import annotations"):]
     driver_text = Path(implementations["driver"].__file__).read_text(encoding="utf-8")
-    assert carried.rstrip("\n") in driver_text
-    assert driver_text.count("class Robot:") == 1  # the engine once, nothing of it written again
+    for section in carry.sections():  # each module's text after its imports, after its marker
+        assert f"{section.marker}\n\n\n{section.body}\n" in driver_text
+    assert carry.text() in driver_text
+    assert driver_text.count("class Robot(") == 1  # the engine once, nothing of it written again
 
 
 def test_a_reply_field_is_checked_against_its_own_value(robot_of) -> None:

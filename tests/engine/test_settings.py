@@ -15,9 +15,10 @@ from typing import Any
 import pytest
 from conftest import untimed
 
+from rdisc import engine
 from rdisc.compile import compile_path
 from rdisc.diagnostics import Diagnostics
-from rdisc.runtime import RdisValueError, engine
+from rdisc.runtime import RdisValueError
 from rdisc.semantics.budget import budget
 from rdisc.syntax.printer import print_module
 from tests.engine.test_one_engine import ScriptedPort, implementation_of, through_json

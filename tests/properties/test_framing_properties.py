@@ -15,8 +15,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from rdisc.compile import compile_path
-from rdisc.runtime.codec import frame_fields, wire_frame
-from rdisc.runtime.engine import (
+from rdisc.engine import (
     Bytes,
     Check,
     Checksum,
@@ -28,6 +27,7 @@ from rdisc.runtime.engine import (
     Part,
     Payload,
 )
+from rdisc.runtime.codec import frame_fields, wire_frame
 from tests.runtime.runtime_support import MemoryPort
 
 REPO = Path(__file__).resolve().parents[2]

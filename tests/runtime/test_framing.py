@@ -5,8 +5,7 @@ from __future__ import annotations
 
 import pytest
 
-from rdisc.runtime.codec import checksum
-from rdisc.runtime.engine import (
+from rdisc.engine import (
     Bytes,
     Check,
     Checksum,
@@ -18,6 +17,7 @@ from rdisc.runtime.engine import (
     Payload,
     Stuffing,
 )
+from rdisc.runtime.codec import checksum
 from rdisc.semantics import model as m
 from rdisc.semantics.frames import CATALOGUE
 from tests.runtime.runtime_support import MemoryPort

@@ -21,7 +21,8 @@ from rosbags.rosbag2 import Reader
 from rosbags.typesys import Stores, get_types_from_msg, get_typestore
 from runtime_support import DATA
 
-from rdisc.runtime import engine, messages
+from rdisc.engine import recording
+from rdisc.runtime import messages
 
 BENCH = DATA / "bench.rdis"
 HUMBLE = get_typestore(Stores.ROS2_HUMBLE)
@@ -188,8 +189,8 @@ def _parsed(name: str, text: str) -> dict[str, Any]:
 def test_every_definition_rdisc_has_is_rosbags_own(name) -> None:
     """The definitions of every standard adapter's message and of the recording's own channels,
     whether a session uses them or not."""
-    own = {"rdisc bytes": (engine._BYTES, engine._BYTES_SCHEMA), "rdisc text": (engine._TEXT, engine._TEXT_SCHEMA),
-           "rdisc log": (engine._LOG, engine._LOG_SCHEMA)}
+    own = {"rdisc bytes": (recording._BYTES, recording._BYTES_SCHEMA),
+           "rdisc text": (recording._TEXT, recording._TEXT_SCHEMA), "rdisc log": (recording._LOG, recording._LOG_SCHEMA)}
     kind, text = own[name] if name in own else (messages.ros2_name(name), messages.definition(name))
     for part, definition in _parsed(kind, text).items():
         assert definition == HUMBLE.fielddefs[part], part

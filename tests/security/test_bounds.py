@@ -10,9 +10,9 @@ import pytest
 from conftest import check_text, run_rdisc
 from silent_port import SilentPort
 
-from rdisc import limits
+from rdisc import engine, limits
 from rdisc.emit.python import import_driver
-from rdisc.runtime import engine, load
+from rdisc.runtime import load
 
 
 def test_the_engine_keeps_the_same_width() -> None:

@@ -10,8 +10,9 @@ import pytest
 from conftest import run_rdisc
 from silent_port import SilentPort
 
+from rdisc import engine
 from rdisc.emit.python import import_driver
-from rdisc.runtime import engine, load
+from rdisc.runtime import load
 
 HEAD = 'robot r { author "tests" }\nconnection c: serial { baud 9600 }\n'
 

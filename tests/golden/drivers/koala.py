@@ -17,7 +17,7 @@ or as a program (`--help` for its options):
     python koala.py --port /dev/ttyUSB0 --call set_velocity linear=0.0 angular=0.0 --watch
 """
 
-# ---- the rdisc engine (rdisc/runtime/engine.py, verbatim) ----------------------------------------
+# ---- the rdisc engine: the modules of rdisc/engine, each after its marker ------------------------
 from __future__ import annotations
 
 import argparse
@@ -37,34 +37,7 @@ from collections.abc import Callable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field, replace
 from typing import Any, Protocol
 
-Value = int | float | bool | str | bytes | tuple[Any, ...]  # an array is a tuple
-"""The value of a state variable, a parameter, a field or an output field."""
-
-StateValues = Mapping[str, Any]
-"""The state variables by name: a snapshot, never changed in place. (Each value is of
-its variable's declared type, which the checker knows and Python's types cannot say.)"""
-
-Args = list[Any]
-"""The values of a call's parameters (or an input's fields), by position."""
-
-OutputCallback = Callable[[dict[str, Any]], object]
-ErrorCallback = Callable[[BaseException], object]
-IoCallback = Callable[[str, str, bytes], object]
-"""`(direction, connection, data)`: "write" or "read" and the bytes, or "lines" and the modem
-lines a primitive set, as ASCII text such as b"dtr=0 rts=1"."""
-
-MAX_INT = (1 << 64) - 1  # the largest int a state variable holds (and its negation the smallest)
-MAX_ARRAY = 1024  # the most elements an array holds, and rounds a group repeated as a message says
-MAX_LINE = 4096
-"""Bytes of one reply line, terminator included."""
-
-EVAL_ERRORS = (ArithmeticError, ValueError, TypeError, IndexError, OverflowError)
-"""What evaluating an expression can raise; each becomes an RdisValueError of the element at fault."""
-
-_log = logging.getLogger("rdisc")
-
-
-# ---- errors ------------------------------------------------------------------------------------
+# ---- rdisc engine: errors (rdisc/engine/errors.py), the errors a run raises ----------------------
 
 
 class RdisError(Exception):
@@ -91,34 +64,65 @@ class RdisCallbackError(RdisError):
     """A user callback raised; the exception is the cause."""
 
 
-# ---- frames on the wire ----------------------------------------------------------------------------
-#
-# A frame is a sequence of parts: constant bytes (a header, a literal, a
-# terminator), fields computed from the frame's arguments, a length field, the
-# payload and checksums. Every part has a fixed size but the payload, so a reply
-# is read in at most four reads: the header (sliding over garbage until it
-# matches), the parts before the payload, the payload (its size from the length
-# field, from the decoding, or up to the constant that follows it) and the parts
-# after it.
-
-MAX_FRAME = 65536  # bytes of one frame; more is garbage, not a reply
-MAX_SKIP = 4096  # bytes discarded while looking for a header
+# ---- rdisc engine: operations (rdisc/engine/operations.py), values' operations, limits -----------
 
 
-class FrameError(Exception):
-    """A reply that is not the frame described; `timeout` when nothing at all came."""
+# The engine's: the named limits, and an element of an array read or replaced.
 
-    def __init__(self, message: str, timeout: bool = False) -> None:
-        super().__init__(message)
-        self.timeout = timeout
+MAX_INT = (1 << 64) - 1  # the largest int a state variable holds (and its negation the smallest)
+MAX_ARRAY = 1024  # the most elements an array holds, and rounds a group repeated as a message says
+MAX_LINE = 4096
+"""Bytes of one reply line, terminator included."""
+
+EVAL_ERRORS = (ArithmeticError, ValueError, TypeError, IndexError, OverflowError)
+"""What evaluating an expression can raise; each becomes an RdisValueError of the element at fault."""
 
 
-class Reader(Protocol):
-    timeout: float | None
+def lookup(table: str, entries: Mapping[Any, Any], key: Any) -> Any:
+    """`table[key]` of a description's lookup table: a key it lacks is an error, never a default."""
+    try:
+        return entries[key]
+    except (KeyError, TypeError):
+        raise ValueError(f"table {table} has no entry for {key!r}") from None
 
-    def read(self, size: int = 1, /) -> bytes: ...
 
-    def read_until(self, expected: bytes = b"\n", size: int | None = None, /) -> bytes: ...
+def element(array: str, values: tuple[Any, ...], index: int) -> Any:
+    """`array[index]`: an index outside the array is an error, never wrapped (`a[-1]` too)."""
+    if not 0 <= index < len(values):
+        raise ValueError(f"index {index} is outside {array}, which has {len(values)} values")
+    return values[index]
+
+
+def replaced(array: str, values: tuple[Any, ...], index: int, value: Any) -> tuple[Any, ...]:
+    """The array with `values[index]` made `value` (`array[index] = value` in a post-action)."""
+    element(array, values, index)
+    if type(value) is int and not -MAX_INT <= value <= MAX_INT:
+        raise ValueError(f"{array}[{index}] would be a {value.bit_length()}-bit integer; "
+                         "integers are limited to 64 bits and a sign")
+    return values[:index] + (value,) + values[index + 1 :]
+
+
+# ---- rdisc engine: values (rdisc/engine/values.py), types of values, callbacks -------------------
+
+
+Value = int | float | bool | str | bytes | tuple[Any, ...]  # an array is a tuple
+"""The value of a state variable, a parameter, a field or an output field."""
+
+StateValues = Mapping[str, Any]
+"""The state variables by name: a snapshot, never changed in place. (Each value is of
+its variable's declared type, which the checker knows and Python's types cannot say.)"""
+
+Args = list[Any]
+"""The values of a call's parameters (or an input's fields), by position."""
+
+OutputCallback = Callable[[dict[str, Any]], object]
+ErrorCallback = Callable[[BaseException], object]
+IoCallback = Callable[[str, str, bytes], object]
+"""`(direction, connection, data)`: "write" or "read" and the bytes, or "lines" and the modem
+lines a primitive set, as ASCII text such as b"dtr=0 rts=1"."""
+
+
+# ---- rdisc engine: checksums (rdisc/engine/checksums.py), sums, XORs and CRCs --------------------
 
 
 def _reflect(value: int, width: int) -> int:
@@ -197,6 +201,37 @@ def _crc_table(width: int, poly: int, reflected: bool) -> tuple[int, ...]:
                 reg = ((reg << 1) ^ poly) & full if reg & top else (reg << 1) & full
             table.append(reg)
     return tuple(table)
+
+
+# ---- rdisc engine: wire (rdisc/engine/wire.py), a port's input, frames' parts --------------------
+
+
+# A frame is a sequence of parts: constant bytes (a header, a literal, a
+# terminator), fields computed from the frame's arguments, a length field, the
+# payload and checksums. Every part has a fixed size but the payload, so a reply
+# is read in at most four reads: the header (sliding over garbage until it
+# matches), the parts before the payload, the payload (its size from the length
+# field, from the decoding, or up to the constant that follows it) and the parts
+# after it.
+
+MAX_FRAME = 65536  # bytes of one frame; more is garbage, not a reply
+MAX_SKIP = 4096  # bytes discarded while looking for a header
+
+
+class FrameError(Exception):
+    """A reply that is not the frame described; `timeout` when nothing at all came."""
+
+    def __init__(self, message: str, timeout: bool = False) -> None:
+        super().__init__(message)
+        self.timeout = timeout
+
+
+class Reader(Protocol):
+    timeout: float | None
+
+    def read(self, size: int = 1, /) -> bytes: ...
+
+    def read_until(self, expected: bytes = b"\n", size: int | None = None, /) -> bytes: ...
 
 
 class Incoming:
@@ -542,287 +577,7 @@ class Escaping:
         return bytes(out)
 
 
-Wrap = Callable[[bytes, Sequence[int]], bytes]
-"""A request side's parts around a payload, with the frame's field values."""
-
-
-def _quick_wrap(side: Side) -> Wrap | None:
-    """The request side as one struct pack of the parts before the payload, then the
-    payload, then the constants and checksums after it: what `Frame.wrap` does part by
-    part, in a few steps. None when a part before the payload is a checksum or two
-    multi-byte parts there disagree on byte order (the part-by-part way then runs)."""
-    if side.payload < 0:
-        return None
-    order = ""
-    codes: list[str] = []
-    template: list[Any] = []
-    picks: list[tuple[int, int, int]] = []  # (position in the pack, field index or -1 for the length, adjust)
-    for part in side.parts[: side.payload]:
-        if isinstance(part, Bytes):
-            codes.append(f"{len(part.data)}s")
-            template.append(part.data)
-            continue
-        if not isinstance(part, (Field, Length)):
-            return None
-        fmt = part.struct.format
-        prefix, code = (fmt[0], fmt[1:]) if fmt[:1] in "<>!=@" else ("", fmt)
-        if part.struct.size > 1:
-            if prefix not in ("<", ">", "!") or order not in ("", prefix.replace("!", ">")):
-                return None
-            order = prefix.replace("!", ">")
-        codes.append(code)
-        picks.append((len(template), part.index, 0) if isinstance(part, Field) else (len(template), -1, part.adjust))
-        template.append(0)
-    head = struct.Struct((order or "<") + "".join(codes))
-    starts = [0]  # each part's first byte: before the payload from the frame's start, after it from the payload's end
-    for i, size in enumerate(side.sizes):
-        starts.append(0 if i == side.payload else starts[-1] + size)
-    after = side.payload + 1  # the first part whose start counts from the payload's end
-    tail: list[tuple[bytes, Check | None, int, int]] = []  # a constant, or a checksum of [start, stop)
-    for at, part in enumerate(side.parts[after:], after):
-        if isinstance(part, Check) and part.last < at and not part.with_request:
-            first, stop = part.first, part.last + 1
-            tail.append((b"", part, ~starts[first] if first >= after else starts[first],
-                         ~starts[stop] if stop >= after else starts[stop]))
-        elif isinstance(part, Bytes):
-            tail.append((part.data, None, 0, 0))
-        elif not isinstance(part, OptionalParts):  # its parts are written as any others
-            return None
-
-    def wrap(payload: bytes, fields: Sequence[int]) -> bytes:
-        values = template.copy()
-        for at, index, adjust in picks:
-            values[at] = fields[index] if index >= 0 else len(payload) + adjust
-        out = head.pack(*values) + payload
-        end = len(out)  # where the payload ends
-        for data, check, start, stop in tail:  # ~offset: counted from the payload's end
-            if check is None:
-                out += data
-            else:
-                out += check.encode(check.checksum(out[start if start >= 0 else end + ~start :
-                                                       stop if stop >= 0 else end + ~stop]))
-        return out
-
-    return wrap
-
-
-class Frame:
-    """A request side and a reply side (empty when the device answers nothing framed), and
-    the values of its fields over its parameters."""
-
-    __slots__ = ("escaping", "fields", "headers", "name", "params", "quick", "ranged", "replies", "reply", "requests",
-                 "stuffing")
-
-    def __init__(self, name: str, request: Sequence[Part], reply: Sequence[Part], stuffing: Stuffing | None = None,
-                 params: tuple[Param, ...] = (), fields: Callable[[Args], list[Any]] | None = None,
-                 more_requests: Sequence[Sequence[Part]] = (), more_replies: Sequence[Sequence[Part]] = (),
-                 escaping: Escaping | None = None) -> None:
-        """`more_requests` and `more_replies`: the other layouts of a side (`either`), in order;
-        `escaping`: the bytes between the header and the terminator escaped (one layout each way)."""
-        self.name = name
-        self.requests = tuple(Side(parts) for parts in (request, *more_requests))
-        self.replies = tuple(Side(parts) for parts in (reply, *more_replies))
-        self.reply = self.replies[0]
-        self.headers = tuple(side.header for side in self.replies)  # a reply's layout is known by its header
-        self.stuffing = stuffing
-        self.escaping = escaping
-        self.params = params
-        self.ranged = _ranged(params)
-        self.fields = fields
-        self.quick = tuple(_quick_wrap(side) for side in self.requests)
-
-    def values(self, owner: str, args: Args) -> list[Any]:
-        """The field values for the frame's arguments; an argument outside its parameter's
-        range is an RdisValueError of `owner`, before anything is sent."""
-        if self.ranged:
-            _in_ranges(f"{owner}: frame {self.name}", self.params, self.ranged, args)
-        return [] if self.fields is None else self.fields(args)
-
-    def wrap(self, payload: bytes, fields: Sequence[int]) -> bytes:
-        """The request: `payload` framed (stuffed first, when the frame stuffs), with the
-        frame's field values; when it escapes, what comes between its flags escaped."""
-        if self.stuffing is not None:
-            payload = self.stuffing.stuff(payload)
-        for side, quick in zip(self.requests, self.quick):  # the first layout that can state its size
-            if len(payload) <= side.most:
-                out = quick(payload, fields) if quick is not None else self.wrap_parts(side, payload, fields)
-                if self.escaping is None:
-                    return out
-                end = len(out) - len(side.terminator)
-                return out[: len(side.header)] + self.escaping.escaped(out[len(side.header) : end]) + out[end:]
-        most = max(side.most for side in self.requests)
-        raise ValueError(f"frame {self.name}: a {len(payload)}-byte payload is more than its length field"
-                         f"{' states' if len(self.requests) == 1 else 's state'} ({most} bytes)")
-
-    @staticmethod
-    def wrap_parts(side: Side, payload: bytes, fields: Sequence[int]) -> bytes:
-        """A request layout put together part by part, each after the ones before it."""
-        chunks: list[bytes] = []
-        for part in side.parts:
-            chunks.append(part.put(payload, fields, chunks))
-        return b"".join(chunks)
-
-    def read(self, port: Reader, fields: Sequence[int], request: bytes, size: int) -> tuple[bytes, bytes]:
-        """Read one reply frame from `port`; (the bytes read, the payload).
-
-        `size` is the payload's size when the decoding fixes it, else -1. Bytes
-        before the header are skipped; every constant, field and checksum is
-        checked. FrameError says what is wrong.
-        """
-        data = bytearray()
-        try:
-            return self._read(port, data, fields, request, size)
-        except FrameError:
-            if len(data) > 1 and isinstance(port, Incoming):  # look for the next header in what was taken
-                port.put_back(bytes(data[1:]))
-            raise
-
-    def _read(self, port: Reader, data: bytearray, fields: Sequence[int], request: bytes,
-              size: int) -> tuple[bytes, bytes]:
-        if self.escaping is not None:
-            return self._read_escaped(port, data, fields, request)
-        side = self.reply
-        if len(self.replies) > 1:  # the header that comes says which layout
-            head = self._sync(port, self.headers)
-            data += head
-            side = self.replies[self.headers.index(head)]
-        elif side.header:
-            data += self._sync(port, self.headers)
-        self._take(port, data, side.prefix, bool(data))
-        if side.payload < 0:
-            return self._check(side, bytes(data), 0, fields, request), b""
-        if side.length >= 0:
-            at = sum(side.sizes[: side.length])
-            length = side.parts[side.length]
-            assert isinstance(length, (Length, Bits))
-            size = length.stated(data, at)
-            if not 0 <= size <= MAX_FRAME:
-                raise FrameError(f"{self.name}: length field says {size + length.adjust}, which no payload fits")
-        present = True  # the optional parts came
-        if size >= 0 and not side.group:
-            self._take(port, data, size + side.suffix, bool(data))
-        elif size >= 0:  # one byte after the payload tells whether they came
-            self._take(port, data, size + 1, bool(data))
-            present = data[-1:] == side.marker[:1]
-            self._take(port, data, side.suffix - 1 - (0 if present else side.extra), True)
-        else:
-            found = port.read_until(side.delimiter, MAX_FRAME)
-            started = bool(data or found)
-            data += found
-            if not found.endswith(side.delimiter):
-                raise FrameError(f"{self.name}: reply not delimited by {side.delimiter!r}: {bytes(data)!r}",
-                                 timeout=not started)
-            size = len(found) - len(side.delimiter)
-            if side.group:  # they came when their first bytes stand where they would end
-                at = len(data) - len(side.delimiter) - side.extra
-                present = size >= side.extra and data[at : at + len(side.marker)] == side.marker
-                size -= side.extra if present else 0
-            self._take(port, data, side.suffix - side.extra - len(side.delimiter), True)
-        raw = bytes(data)
-        return raw, self._check(side, raw, size, fields, request, present)
-
-    def _read_escaped(self, port: Reader, data: bytearray, fields: Sequence[int],
-                      request: bytes) -> tuple[bytes, bytes]:
-        """A reply between flags: the bytes up to the first terminator (which the escaping keeps
-        out of those before it), unescaped, then taken apart by the sizes of its parts."""
-        side = self.reply
-        assert self.escaping is not None
-        end = side.terminator
-        if side.header:
-            data += self._sync(port, self.headers)
-        while True:
-            found = port.read_until(end, MAX_FRAME)
-            started = bool(data or found)
-            data += found
-            if not found.endswith(end):
-                raise FrameError(f"{self.name}: reply not delimited by {end!r}: {bytes(data)!r}", timeout=not started)
-            if len(found) > len(end) or side.header not in (b"", end):
-                break
-            if len(data) > MAX_SKIP:  # flags, flags: no packet
-                raise FrameError(f"{self.name}: no packet in {MAX_SKIP} bytes")
-            # two flags in a row hold an empty packet, which RFC 1055 and RFC 1662 drop: the second may open the next
-        raw = side.header + self.escaping.unescaped(found[: -len(end)], self.name) + end
-        fixed = sum(side.sizes)  # every part's but the payload's
-        size = len(raw) - fixed
-        if size < 0 or (side.payload < 0 and size):
-            raise FrameError(f"{self.name}: a {len(raw)}-byte packet, unescaped, where its parts take "
-                             f"{fixed} bytes{' and the payload' if side.payload >= 0 else ''}: {raw!r}")
-        if side.length >= 0:
-            length = side.parts[side.length]
-            assert isinstance(length, (Length, Bits))
-            stated = length.stated(raw, sum(side.sizes[: side.length]))
-            if stated != size:
-                raise FrameError(f"{self.name}: length field says {stated + length.adjust}, but the payload is "
-                                 f"{size} bytes: {raw!r}")
-        return bytes(data), self._check(side, raw, size, fields, request)
-
-    def _sync(self, port: Reader, headers: tuple[bytes, ...]) -> bytes:
-        """Read up to the first of `headers` to come, skipping the bytes before it; that header."""
-        shortest, longest = min(len(h) for h in headers), max(len(h) for h in headers)
-        window = bytearray(port.read(shortest))
-        if not window:
-            raise FrameError(f"{self.name}: no reply", timeout=True)
-        said = " or ".join(repr(h) for h in headers)
-        skipped = 0
-        while (found := next((h for h in headers if window.endswith(h)), None)) is None:
-            byte = port.read(1) if len(window) >= shortest else b""
-            if not byte:
-                raise FrameError(f"{self.name}: no header {said} in the reply (after {skipped} bytes)")
-            window += byte
-            if len(window) > longest:
-                del window[0]
-                skipped += 1
-            if skipped > MAX_SKIP:
-                raise FrameError(f"{self.name}: no header {said} in {MAX_SKIP} bytes")
-        return found
-
-    def _take(self, port: Reader, data: bytearray, size: int, started: bool) -> None:
-        if size <= 0:
-            return
-        got = port.read(size)
-        data += got
-        if len(got) < size:
-            if not started and not got:
-                raise FrameError(f"{self.name}: no reply", timeout=True)
-            raise FrameError(f"{self.name}: short reply, {len(data)} bytes: {bytes(data)!r}")
-
-    def _check(self, side: Side, raw: bytes, size: int, fields: Sequence[int], request: bytes,
-               present: bool = True) -> bytes:
-        """Every constant, field and checksum of a complete reply (the optional parts when they
-        are `present`); its payload."""
-        absent = range(0) if present else side.group
-        starts: list[int] = []
-        at = 0
-        for i, part_size in enumerate(side.sizes):
-            starts.append(at)
-            at += size if i == side.payload else 0 if i in absent else part_size
-        starts.append(at)
-        for i, part in enumerate(side.parts):
-            if i in absent:
-                continue
-            chunk = raw[starts[i] : starts[i + 1]]
-            if isinstance(part, Bytes):
-                if chunk != part.data:
-                    raise FrameError(f"{self.name}: expected {part.data!r} as the {part.role}, got {chunk!r}")
-            elif isinstance(part, Field):
-                value = part.struct.unpack(chunk)[0]
-                if value != fields[part.index]:
-                    raise FrameError(f"{self.name}: reply {part.name} is {value}, expected {fields[part.index]}")
-            elif isinstance(part, Bits) and (wrong := part.wrong(chunk, fields)) is not None:
-                raise FrameError(f"{self.name}: {wrong}")
-            elif isinstance(part, Check):
-                covered = raw[starts[part.first] : starts[part.last + 1]]
-                expected = part.encode(part.checksum(request + covered if part.with_request else covered))
-                if (chunk if part.struct is not None else chunk.upper()) != expected:
-                    raise FrameError(f"{self.name}: checksum {chunk!r} does not match the reply, "
-                                     f"which sums to {expected!r}")
-        if side.payload < 0:
-            return b""
-        payload = raw[starts[side.payload] : starts[side.payload + 1]]
-        return self.stuffing.unstuff(payload, self.name) if self.stuffing is not None else payload
-
-
-# ---- requests and replies ----------------------------------------------------------------------
+# ---- rdisc engine: codec (rdisc/engine/codec.py), encoding and decoding --------------------------
 
 
 def _latin1(owner: str, value: object) -> bytes:
@@ -1107,7 +862,7 @@ class Match:
         return groups
 
 
-# ---- plans: what a description specialises ---------------------------------------------------------
+# ---- rdisc engine: plans (rdisc/engine/plans.py), what a description specialises -----------------
 
 
 @dataclass(frozen=True, slots=True)
@@ -1396,35 +1151,12 @@ def _floats(params: tuple[Param, ...]) -> tuple[int, ...]:
     return tuple(i for i, p in enumerate(params) if p.kind is float)
 
 
-def lookup(table: str, entries: Mapping[Any, Any], key: Any) -> Any:
-    """`table[key]` of a description's lookup table: a key it lacks is an error, never a default."""
-    try:
-        return entries[key]
-    except (KeyError, TypeError):
-        raise ValueError(f"table {table} has no entry for {key!r}") from None
-
-
-def element(array: str, values: tuple[Any, ...], index: int) -> Any:
-    """`array[index]`: an index outside the array is an error, never wrapped (`a[-1]` too)."""
-    if not 0 <= index < len(values):
-        raise ValueError(f"index {index} is outside {array}, which has {len(values)} values")
-    return values[index]
-
-
-def replaced(array: str, values: tuple[Any, ...], index: int, value: Any) -> tuple[Any, ...]:
-    """The array with `values[index]` made `value` (`array[index] = value` in a post-action)."""
-    element(array, values, index)
-    if type(value) is int and not -MAX_INT <= value <= MAX_INT:
-        raise ValueError(f"{array}[{index}] would be a {value.bit_length()}-bit integer; "
-                         "integers are limited to 64 bits and a sign")
-    return values[:index] + (value,) + values[index + 1 :]
-
-
 def _ranged(params: tuple[Param, ...]) -> tuple[int, ...]:
     return tuple(i for i, p in enumerate(params) if p.low is not None)
 
 
-# ---- values given by the host --------------------------------------------------------------------------
+# ---- rdisc engine: arguments (rdisc/engine/arguments.py), values given by the host ---------------
+
 
 _KIND_NAMES: dict[type, str] = {int: "int", float: "float", bool: "bool", str: "string", bytes: "bytes"}
 
@@ -1518,7 +1250,7 @@ def _widen(owner: str, floats: tuple[int, ...], values: Args) -> None:
         raise RdisValueError(f"{owner}: {err}") from None
 
 
-def _in_ranges(owner: str, params: tuple[Param, ...], ranged: tuple[int, ...], values: Args,
+def _check_ranges(owner: str, params: tuple[Param, ...], ranged: tuple[int, ...], values: Args,
                role: str = "parameter") -> None:
     """A value outside its parameter's (or setting's) declared range is refused before anything is sent."""
     for i in ranged:
@@ -1557,78 +1289,295 @@ def bind_settings(device: Device, given: Mapping[str, Any] | None) -> dict[str, 
                 raise RdisValueError(f"{device.name}: setting {name} is a {item.bit_length()}-bit integer; "
                                      "integers are limited to 64 bits and a sign")
         if param.low is not None:
-            _in_ranges(device.name, (param,), (0,), [accepted], "setting")
+            _check_ranges(device.name, (param,), (0,), [accepted], "setting")
         bound[name] = accepted
     return bound
 
 
-class State(Mapping[str, Value]):
-    """The state variables at one moment: `state["name"]` or `state.name`. Immutable: the
-    robot publishes a new snapshot after each primitive's post-actions."""
+# ---- rdisc engine: frames (rdisc/engine/frames.py), frames written and read ----------------------
 
-    __slots__ = ("_values",)
 
-    def __init__(self, values: StateValues) -> None:
-        self._values = values
+Wrap = Callable[[bytes, Sequence[int]], bytes]
+"""A request side's parts around a payload, with the frame's field values."""
 
-    def __getitem__(self, name: str) -> Value:
-        value: Value = self._values[name]
-        return value
 
-    def __getattr__(self, name: str) -> Value:
+def _quick_wrap(side: Side) -> Wrap | None:
+    """The request side as one struct pack of the parts before the payload, then the
+    payload, then the constants and checksums after it: what `Frame.wrap` does part by
+    part, in a few steps. None when a part before the payload is a checksum or two
+    multi-byte parts there disagree on byte order (the part-by-part way then runs)."""
+    if side.payload < 0:
+        return None
+    order = ""
+    codes: list[str] = []
+    template: list[Any] = []
+    picks: list[tuple[int, int, int]] = []  # (position in the pack, field index or -1 for the length, adjust)
+    for part in side.parts[: side.payload]:
+        if isinstance(part, Bytes):
+            codes.append(f"{len(part.data)}s")
+            template.append(part.data)
+            continue
+        if not isinstance(part, (Field, Length)):
+            return None
+        fmt = part.struct.format
+        prefix, code = (fmt[0], fmt[1:]) if fmt[:1] in "<>!=@" else ("", fmt)
+        if part.struct.size > 1:
+            if prefix not in ("<", ">", "!") or order not in ("", prefix.replace("!", ">")):
+                return None
+            order = prefix.replace("!", ">")
+        codes.append(code)
+        picks.append((len(template), part.index, 0) if isinstance(part, Field) else (len(template), -1, part.adjust))
+        template.append(0)
+    head = struct.Struct((order or "<") + "".join(codes))
+    starts = [0]  # each part's first byte: before the payload from the frame's start, after it from the payload's end
+    for i, size in enumerate(side.sizes):
+        starts.append(0 if i == side.payload else starts[-1] + size)
+    after = side.payload + 1  # the first part whose start counts from the payload's end
+    tail: list[tuple[bytes, Check | None, int, int]] = []  # a constant, or a checksum of [start, stop)
+    for at, part in enumerate(side.parts[after:], after):
+        if isinstance(part, Check) and part.last < at and not part.with_request:
+            first, stop = part.first, part.last + 1
+            tail.append((b"", part, ~starts[first] if first >= after else starts[first],
+                         ~starts[stop] if stop >= after else starts[stop]))
+        elif isinstance(part, Bytes):
+            tail.append((part.data, None, 0, 0))
+        elif not isinstance(part, OptionalParts):  # its parts are written as any others
+            return None
+
+    def wrap(payload: bytes, fields: Sequence[int]) -> bytes:
+        values = template.copy()
+        for at, index, adjust in picks:
+            values[at] = fields[index] if index >= 0 else len(payload) + adjust
+        out = head.pack(*values) + payload
+        end = len(out)  # where the payload ends
+        for data, check, start, stop in tail:  # ~offset: counted from the payload's end
+            if check is None:
+                out += data
+            else:
+                out += check.encode(check.checksum(out[start if start >= 0 else end + ~start :
+                                                       stop if stop >= 0 else end + ~stop]))
+        return out
+
+    return wrap
+
+
+class Frame:
+    """A request side and a reply side (empty when the device answers nothing framed), and
+    the values of its fields over its parameters."""
+
+    __slots__ = ("escaping", "fields", "headers", "name", "params", "quick", "ranged", "replies", "reply", "requests",
+                 "stuffing")
+
+    def __init__(self, name: str, request: Sequence[Part], reply: Sequence[Part], stuffing: Stuffing | None = None,
+                 params: tuple[Param, ...] = (), fields: Callable[[Args], list[Any]] | None = None,
+                 more_requests: Sequence[Sequence[Part]] = (), more_replies: Sequence[Sequence[Part]] = (),
+                 escaping: Escaping | None = None) -> None:
+        """`more_requests` and `more_replies`: the other layouts of a side (`either`), in order;
+        `escaping`: the bytes between the header and the terminator escaped (one layout each way)."""
+        self.name = name
+        self.requests = tuple(Side(parts) for parts in (request, *more_requests))
+        self.replies = tuple(Side(parts) for parts in (reply, *more_replies))
+        self.reply = self.replies[0]
+        self.headers = tuple(side.header for side in self.replies)  # a reply's layout is known by its header
+        self.stuffing = stuffing
+        self.escaping = escaping
+        self.params = params
+        self.ranged = _ranged(params)
+        self.fields = fields
+        self.quick = tuple(_quick_wrap(side) for side in self.requests)
+
+    def values(self, owner: str, args: Args) -> list[Any]:
+        """The field values for the frame's arguments; an argument outside its parameter's
+        range is an RdisValueError of `owner`, before anything is sent."""
+        if self.ranged:
+            _check_ranges(f"{owner}: frame {self.name}", self.params, self.ranged, args)
+        return [] if self.fields is None else self.fields(args)
+
+    def wrap(self, payload: bytes, fields: Sequence[int]) -> bytes:
+        """The request: `payload` framed (stuffed first, when the frame stuffs), with the
+        frame's field values; when it escapes, what comes between its flags escaped."""
+        if self.stuffing is not None:
+            payload = self.stuffing.stuff(payload)
+        for side, quick in zip(self.requests, self.quick):  # the first layout that can state its size
+            if len(payload) <= side.most:
+                out = quick(payload, fields) if quick is not None else self.wrap_parts(side, payload, fields)
+                if self.escaping is None:
+                    return out
+                end = len(out) - len(side.terminator)
+                return out[: len(side.header)] + self.escaping.escaped(out[len(side.header) : end]) + out[end:]
+        most = max(side.most for side in self.requests)
+        raise ValueError(f"frame {self.name}: a {len(payload)}-byte payload is more than its length field"
+                         f"{' states' if len(self.requests) == 1 else 's state'} ({most} bytes)")
+
+    @staticmethod
+    def wrap_parts(side: Side, payload: bytes, fields: Sequence[int]) -> bytes:
+        """A request layout put together part by part, each after the ones before it."""
+        chunks: list[bytes] = []
+        for part in side.parts:
+            chunks.append(part.put(payload, fields, chunks))
+        return b"".join(chunks)
+
+    def read(self, port: Reader, fields: Sequence[int], request: bytes, size: int) -> tuple[bytes, bytes]:
+        """Read one reply frame from `port`; (the bytes read, the payload).
+
+        `size` is the payload's size when the decoding fixes it, else -1. Bytes
+        before the header are skipped; every constant, field and checksum is
+        checked. FrameError says what is wrong.
+        """
+        data = bytearray()
         try:
-            value: Value = self._values[name]
-            return value
-        except KeyError:
-            raise AttributeError(f"no state variable {name!r}") from None
+            return self._read(port, data, fields, request, size)
+        except FrameError:
+            if len(data) > 1 and isinstance(port, Incoming):  # look for the next header in what was taken
+                port.put_back(bytes(data[1:]))
+            raise
 
-    def __iter__(self) -> Iterator[str]:
-        return iter(self._values)
+    def _read(self, port: Reader, data: bytearray, fields: Sequence[int], request: bytes,
+              size: int) -> tuple[bytes, bytes]:
+        if self.escaping is not None:
+            return self._read_escaped(port, data, fields, request)
+        side = self.reply
+        if len(self.replies) > 1:  # the header that comes says which layout
+            head = self._sync(port, self.headers)
+            data += head
+            side = self.replies[self.headers.index(head)]
+        elif side.header:
+            data += self._sync(port, self.headers)
+        self._take(port, data, side.prefix, bool(data))
+        if side.payload < 0:
+            return self._check(side, bytes(data), 0, fields, request), b""
+        if side.length >= 0:
+            at = sum(side.sizes[: side.length])
+            length = side.parts[side.length]
+            assert isinstance(length, (Length, Bits))
+            size = length.stated(data, at)
+            if not 0 <= size <= MAX_FRAME:
+                raise FrameError(f"{self.name}: length field says {size + length.adjust}, which no payload fits")
+        present = True  # the optional parts came
+        if size >= 0 and not side.group:
+            self._take(port, data, size + side.suffix, bool(data))
+        elif size >= 0:  # one byte after the payload tells whether they came
+            self._take(port, data, size + 1, bool(data))
+            present = data[-1:] == side.marker[:1]
+            self._take(port, data, side.suffix - 1 - (0 if present else side.extra), True)
+        else:
+            found = port.read_until(side.delimiter, MAX_FRAME)
+            started = bool(data or found)
+            data += found
+            if not found.endswith(side.delimiter):
+                raise FrameError(f"{self.name}: reply not delimited by {side.delimiter!r}: {bytes(data)!r}",
+                                 timeout=not started)
+            size = len(found) - len(side.delimiter)
+            if side.group:  # they came when their first bytes stand where they would end
+                at = len(data) - len(side.delimiter) - side.extra
+                present = size >= side.extra and data[at : at + len(side.marker)] == side.marker
+                size -= side.extra if present else 0
+            self._take(port, data, side.suffix - side.extra - len(side.delimiter), True)
+        raw = bytes(data)
+        return raw, self._check(side, raw, size, fields, request, present)
 
-    def __len__(self) -> int:
-        return len(self._values)
+    def _read_escaped(self, port: Reader, data: bytearray, fields: Sequence[int],
+                      request: bytes) -> tuple[bytes, bytes]:
+        """A reply between flags: the bytes up to the first terminator (which the escaping keeps
+        out of those before it), unescaped, then taken apart by the sizes of its parts."""
+        side = self.reply
+        assert self.escaping is not None
+        end = side.terminator
+        if side.header:
+            data += self._sync(port, self.headers)
+        while True:
+            found = port.read_until(end, MAX_FRAME)
+            started = bool(data or found)
+            data += found
+            if not found.endswith(end):
+                raise FrameError(f"{self.name}: reply not delimited by {end!r}: {bytes(data)!r}", timeout=not started)
+            if len(found) > len(end) or side.header not in (b"", end):
+                break
+            if len(data) > MAX_SKIP:  # flags, flags: no packet
+                raise FrameError(f"{self.name}: no packet in {MAX_SKIP} bytes")
+            # two flags in a row hold an empty packet, which RFC 1055 and RFC 1662 drop: the second may open the next
+        raw = side.header + self.escaping.unescaped(found[: -len(end)], self.name) + end
+        fixed = sum(side.sizes)  # every part's but the payload's
+        size = len(raw) - fixed
+        if size < 0 or (side.payload < 0 and size):
+            raise FrameError(f"{self.name}: a {len(raw)}-byte packet, unescaped, where its parts take "
+                             f"{fixed} bytes{' and the payload' if side.payload >= 0 else ''}: {raw!r}")
+        if side.length >= 0:
+            length = side.parts[side.length]
+            assert isinstance(length, (Length, Bits))
+            stated = length.stated(raw, sum(side.sizes[: side.length]))
+            if stated != size:
+                raise FrameError(f"{self.name}: length field says {stated + length.adjust}, but the payload is "
+                                 f"{size} bytes: {raw!r}")
+        return bytes(data), self._check(side, raw, size, fields, request)
 
-    def __repr__(self) -> str:
-        return f"State({dict(self._values)!r})"
+    def _sync(self, port: Reader, headers: tuple[bytes, ...]) -> bytes:
+        """Read up to the first of `headers` to come, skipping the bytes before it; that header."""
+        shortest, longest = min(len(h) for h in headers), max(len(h) for h in headers)
+        window = bytearray(port.read(shortest))
+        if not window:
+            raise FrameError(f"{self.name}: no reply", timeout=True)
+        said = " or ".join(repr(h) for h in headers)
+        skipped = 0
+        while (found := next((h for h in headers if window.endswith(h)), None)) is None:
+            byte = port.read(1) if len(window) >= shortest else b""
+            if not byte:
+                raise FrameError(f"{self.name}: no header {said} in the reply (after {skipped} bytes)")
+            window += byte
+            if len(window) > longest:
+                del window[0]
+                skipped += 1
+            if skipped > MAX_SKIP:
+                raise FrameError(f"{self.name}: no header {said} in {MAX_SKIP} bytes")
+        return found
+
+    def _take(self, port: Reader, data: bytearray, size: int, started: bool) -> None:
+        if size <= 0:
+            return
+        got = port.read(size)
+        data += got
+        if len(got) < size:
+            if not started and not got:
+                raise FrameError(f"{self.name}: no reply", timeout=True)
+            raise FrameError(f"{self.name}: short reply, {len(data)} bytes: {bytes(data)!r}")
+
+    def _check(self, side: Side, raw: bytes, size: int, fields: Sequence[int], request: bytes,
+               present: bool = True) -> bytes:
+        """Every constant, field and checksum of a complete reply (the optional parts when they
+        are `present`); its payload."""
+        absent = range(0) if present else side.group
+        starts: list[int] = []
+        at = 0
+        for i, part_size in enumerate(side.sizes):
+            starts.append(at)
+            at += size if i == side.payload else 0 if i in absent else part_size
+        starts.append(at)
+        for i, part in enumerate(side.parts):
+            if i in absent:
+                continue
+            chunk = raw[starts[i] : starts[i + 1]]
+            if isinstance(part, Bytes):
+                if chunk != part.data:
+                    raise FrameError(f"{self.name}: expected {part.data!r} as the {part.role}, got {chunk!r}")
+            elif isinstance(part, Field):
+                value = part.struct.unpack(chunk)[0]
+                if value != fields[part.index]:
+                    raise FrameError(f"{self.name}: reply {part.name} is {value}, expected {fields[part.index]}")
+            elif isinstance(part, Bits) and (wrong := part.wrong(chunk, fields)) is not None:
+                raise FrameError(f"{self.name}: {wrong}")
+            elif isinstance(part, Check):
+                covered = raw[starts[part.first] : starts[part.last + 1]]
+                expected = part.encode(part.checksum(request + covered if part.with_request else covered))
+                if (chunk if part.struct is not None else chunk.upper()) != expected:
+                    raise FrameError(f"{self.name}: checksum {chunk!r} does not match the reply, "
+                                     f"which sums to {expected!r}")
+        if side.payload < 0:
+            return b""
+        payload = raw[starts[side.payload] : starts[side.payload + 1]]
+        return self.stuffing.unstuff(payload, self.name) if self.stuffing is not None else payload
 
 
-class Calls:
-    """`robot.inputs`, `robot.interfaces` or `robot.primitives`: each element of that kind
-    as a method of its name (an input takes its fields by name, the others their
-    parameters by position or name)."""
-
-    __slots__ = ("_kind", "_robot")
-
-    def __init__(self, robot: Robot, kind: str) -> None:
-        self._robot = robot
-        self._kind = kind
-
-    def _plans(self) -> Mapping[str, Input | Interface | Primitive]:
-        device = self._robot.device
-        if self._kind == "input":
-            return device.inputs
-        return device.interfaces if self._kind == "interface" else device.primitives
-
-    def __getattr__(self, name: str) -> Callable[..., None]:
-        plan = self._plans().get(name)
-        if plan is None:
-            raise AttributeError(f"{self._robot.name} has no {self._kind} named {name!r}")
-        robot = self._robot
-        if isinstance(plan, Input):
-            return lambda **fields: robot.call_input(name, **fields)
-        if isinstance(plan, Interface):
-            interface = plan
-            return lambda *args, **kwargs: robot._call_interface(
-                interface, _bind(f"interface {name}", interface.params, args, kwargs))
-        primitive = plan
-        return lambda *args, **kwargs: robot._call_primitive(
-            primitive, _bind(f"primitive {name}", primitive.params, args, kwargs))
-
-    def __dir__(self) -> list[str]:
-        return sorted(self._plans())
-
-
-# ---- ports --------------------------------------------------------------------------------------------
+# ---- rdisc engine: ports (rdisc/engine/ports.py), ports, a simulated device ----------------------
 
 
 class Port(Protocol):
@@ -1718,7 +1667,7 @@ def _write_timed_out(err: BaseException) -> bool:
     return timeout_type is not None and isinstance(err, timeout_type)
 
 
-# ---- the schedule of a connection ----------------------------------------------------------------
+# ---- rdisc engine: schedule (rdisc/engine/schedule.py), a connection's thread --------------------
 
 
 class _Worker:
@@ -1811,10 +1760,529 @@ class _Worker:
                 return
 
 
-# ---- the robot ------------------------------------------------------------------------------------------
+# ---- rdisc engine: exchange (rdisc/engine/exchange.py), writing and reading ----------------------
 
 
-class Robot:
+_log = logging.getLogger("rdisc")
+
+
+class Exchange:
+    """The part of a Robot that talks to its devices: it writes requests, reads replies and
+    decodes them, runs their post-actions, and tells the callbacks what happened (one at a
+    time, a failing one reported). `Robot` is the rest of it, and sets what is declared here."""
+
+    name: str
+    timeout: float
+    _state: dict[str, Value]
+    _state_lock: threading.Lock
+    _callback_lock: threading.RLock
+    _output_callbacks: list[OutputCallback]
+    _error_callbacks: list[ErrorCallback]
+    _io_callbacks: list[IoCallback]
+    _run_callbacks: list[Callable[[str, str, str], object]]
+    _links: dict[str, _Link]
+
+    # ---- writing requests, reading replies, running post-actions ------------------------------------
+
+    def _write(self, plan: Primitive, request: bytes, levels: dict[str, Value] | None = None) -> None:
+        """Under the port's lock set the modem lines, if any, then write a request that has no
+        reply (if the primitive has one); then show the I/O callbacks."""
+        link = self._links.get(plan.connection)
+        if link is None:
+            raise RdisConnectionError(f"{plan.connection}: not open")
+        port = link.port
+        lock = port.lock
+        lock.acquire()  # acquire/release rather than `with`: cheaper, and this is every command's path
+        try:
+            if levels is not None:
+                self._set_lines(plan, port.io, levels)
+            if plan.encoder is not None:
+                port.io.write(request)
+        except RdisError:
+            raise
+        except Exception as err:  # whatever the port raises, it failed
+            raise self._port_error(plan, err) from err
+        finally:
+            lock.release()
+        if self._io_callbacks:
+            if levels is not None:
+                self._notify_io("lines", plan.connection, _lines_text(levels))
+            if plan.encoder is not None:
+                self._notify_io("write", plan.connection, request)
+
+    @staticmethod
+    def _set_lines(plan: Primitive, io: Port, levels: dict[str, Value]) -> None:
+        """Set the primitive's modem lines in the order written (pyserial's `dtr` and `rts`). A
+        port that refuses (a pty, a port with no modem lines) is an RdisConnectionError."""
+        for line, level in levels.items():
+            try:
+                if line == "dtr":
+                    io.dtr = bool(level)
+                else:
+                    io.rts = bool(level)
+            except Exception as err:  # whatever the port raises, it refused
+                raise RdisConnectionError(f"{plan.connection}: {plan.name}: cannot set {line} = {bool(level)}: "
+                                          f"{err}") from err
+
+    def _exchange(self, plan: Primitive, values: Args, local: Args) -> None:
+        """Encode and frame the request; under the port's lock write it and read the reply;
+        then show the I/O callbacks every byte written and read, and run the post-actions.
+
+        `local` is the primitive's parameters' values (a direct call passes its values)."""
+        request, fields, levels = self._request(plan, values, local)
+        if not plan.expects_reply:
+            self._write(plan, request, levels)
+            if plan.actions is not None:
+                self._assign(plan, local, ())
+            return
+        link = self._links.get(plan.connection)
+        if link is None:
+            raise RdisConnectionError(f"{plan.connection}: not open")
+        port = link.port
+        io = port.io
+        lock = port.lock
+        reader = port.input
+        wait = plan.timeout or self.timeout
+        reply: Sequence[Any] = ()
+        failed: BaseException | None = None
+        lines_set = written = False
+        lock.acquire()
+        try:
+            if levels is not None:
+                self._set_lines(plan, io, levels)
+                lines_set = True
+            if request:  # a listener (no request) keeps what has arrived: its reply is the next one
+                io.reset_input_buffer()
+                reader.clear()
+                io.write(request)
+                written = True
+            if plan.timeout is not None:
+                io.timeout = plan.timeout
+            reader.begin(wait)
+            if plan.answers:
+                reply = self._read_replies(plan, link, reader, fields, request, wait, local)
+            else:
+                plan, local, reply = self._read_reply(plan, link, reader, fields, request, wait, local)
+        except RdisError as err:
+            failed = err
+        except Exception as err:  # noqa: BLE001 - whatever the port raises, it failed
+            failed = self._port_error(plan, err)
+            failed.__cause__ = err
+        finally:
+            data = reader.end()
+            if plan.timeout is not None:
+                io.timeout = self.timeout
+            lock.release()
+        # I/O callbacks run once the port is free again: one that calls the robot (or
+        # waits for a thread that does) cannot deadlock against this exchange.
+        if self._io_callbacks:
+            if lines_set and levels is not None:
+                self._notify_io("lines", plan.connection, _lines_text(levels))
+            if written:
+                self._notify_io("write", plan.connection, request)
+            if data:
+                self._notify_io("read", plan.connection, data)
+        if failed is not None:
+            raise failed
+        self._store(plan, local, reply)
+
+    def _store(self, plan: Primitive, local: Args, reply: Sequence[Any]) -> None:
+        """Run the post-actions on a reply read whole (every part decoded and met, so a bad one
+        changed no state): each sub-payload's, record's or listed reply's in the order they came,
+        published together; or the primitive's (`replies N`: value i of the replies as one array)."""
+        if plan.in_parts:
+            self._assign_each([part for part in reply if part[0].actions is not None])
+        elif plan.answers and not plan.replies:
+            self._assign_each([(answer, local, one) for answer, one in zip(plan.answers, reply)
+                               if answer.actions is not None])
+        elif plan.actions is not None:
+            self._assign(plan, local, tuple(zip(*reply)) if plan.replies else reply)
+
+    def _request(self, plan: Primitive, values: Args,
+                 local: Args) -> tuple[bytes, list[Any], dict[str, Value] | None]:
+        """The request encoded and framed, the frame's fields, and the modem lines' levels."""
+        request = plan.encoder.encode(plan.name, values) if plan.encoder is not None else b""
+        use = plan.frame
+        fields: list[Any] = []
+        if use is not None:
+            try:
+                fields = use.frame.values(plan.name, use.args(self._state, local))
+                request = use.frame.wrap(request, fields)
+            except RdisError:
+                raise
+            except (struct.error, *EVAL_ERRORS) as err:
+                raise RdisValueError(f"{plan.name}: {err}") from None
+        levels = None
+        if plan.lines is not None:
+            try:
+                levels = plan.lines(self._state, local)
+            except EVAL_ERRORS as err:
+                raise RdisValueError(f"{plan.name}: {err}") from None
+        return request, fields, levels
+
+    def _read_reply(self, plan: Primitive, link: _Link, reader: Incoming, fields: list[Any], request: bytes,
+                    wait: float, local: Args) -> tuple[Primitive, Args, Sequence[Any]]:
+        """The plan whose post-actions take the reply (a tag's entry), what they read besides
+        it (the parameters' values, and a tag's after them), and the reply, decoded and meeting
+        its `expect`."""
+        decoder = plan.decoder
+        use = plan.frame
+        if use is None or not plan.framed_reply:
+            if plan.tag_struct is not None:
+                return self._read_tagged(plan, reader, wait, local)
+            if isinstance(decoder, Match):  # one line
+                end = link.connection.terminator
+                line = reader.read_until(end, MAX_LINE)
+                if not line:
+                    raise RdisTimeout(f"{plan.name}: no reply within {wait:g} s")
+                if not line.endswith(end):
+                    raise RdisProtocolError(f"{plan.name}: reply line not terminated: {line.decode('latin-1')!r}")
+                text = line[: -len(end)]
+                if end == b"\n" and text.endswith(b"\r"):  # the default takes CR LF as well as LF
+                    text = text[:-1]
+                return plan, local, self._met(plan, local, decoder.decode(plan.name, text))
+            assert decoder is not None
+            data = reader.read(decoder.size)
+            if not data:
+                raise RdisTimeout(f"{plan.name}: no reply within {wait:g} s")
+            return plan, local, self._met(plan, local, decoder.decode(plan.name, data))
+        # The decoding's size is the payload's, unless a tag comes first or stuffing may have lengthened
+        # it on the wire (then the constant after the payload ends it).
+        stuffed = use.frame.stuffing is not None and any(side.delimiter for side in use.frame.replies)
+        size = decoder.size if decoder is not None and plan.tag is None and plan.records is None and not stuffed else -1
+        while True:  # once, or until a reply decodes when the primitive skips the others
+            try:
+                payload = use.frame.read(reader, fields, request, size)[1]
+                if plan.each:
+                    return plan, local, self._sub_payloads(plan, payload, local)
+                if plan.records is not None:
+                    return plan, local, self._records(plan, payload, local)
+                if plan.tag_struct is not None:
+                    return self._tagged(plan, payload, local)
+                return plan, local, self._met(plan, local, decoder.decode(plan.name, payload)) if decoder else ()
+            except (FrameError, RdisProtocolError) as err:
+                nothing = isinstance(err, FrameError) and err.timeout
+                if plan.skip and not nothing and reader.deadline is not None and time.monotonic() < reader.deadline:
+                    continue
+                if nothing or plan.skip:
+                    raise RdisTimeout(f"{plan.name}: no {'matching reply' if plan.skip else 'reply'} "
+                                      f"within {wait:g} s") from None
+                if isinstance(err, RdisProtocolError):
+                    raise
+                raise RdisProtocolError(f"{plan.name}: {err}") from None
+
+    def _read_replies(self, plan: Primitive, link: _Link, reader: Incoming, fields: list[Any], request: bytes,
+                      wait: float, local: Args) -> list[Sequence[Any]]:
+        """`replies N` and `replies { }`: a reply for each of the plan's answers, read in turn as
+        one is (each decoded and meeting its `expect`; through its own frame, with its own field
+        values, where it has one), all within the one deadline, in the order they came."""
+        got: list[Sequence[Any]] = []
+        count = len(plan.answers)
+        for n, answer in enumerate(plan.answers):
+            use = answer.frame
+            if use is not None and use is not plan.frame:
+                try:
+                    fields = use.frame.values(plan.name, use.args(self._state, local))
+                except (struct.error, *EVAL_ERRORS) as err:
+                    raise RdisValueError(f"{plan.name}: {err}") from None
+            try:
+                got.append(self._read_reply(answer, link, reader, fields, request, wait, local)[2])
+            except RdisTimeout:
+                if not n:
+                    raise
+                raise RdisTimeout(f"{plan.name}: {n} of {count} replies within {wait:g} s") from None
+            except RdisProtocolError as err:
+                raise RdisProtocolError(f"{plan.name}: reply {n + 1} of {count}: "
+                                        f"{str(err).removeprefix(plan.name + ': ')}") from None
+        return got
+
+    def _met(self, plan: Primitive, local: Args, reply: Sequence[Any]) -> Sequence[Any]:
+        """The reply, when it meets the primitive's `expect` (else, like a reply that does not
+        decode, an RdisProtocolError, which `skip unmatched` reads past)."""
+        if plan.expect is None:
+            return reply
+        try:
+            met = plan.expect(self._state, local, reply)
+        except EVAL_ERRORS as err:
+            raise RdisProtocolError(f"{plan.name}: reply {tuple(reply)!r}: its `expect` failed: {err}") from None
+        if not met:
+            raise RdisProtocolError(f"{plan.name}: reply {tuple(reply)!r} does not meet its `expect`")
+        return reply
+
+    @staticmethod
+    def _tagged(plan: Primitive, payload: bytes, local: Args) -> tuple[Primitive, Args, Sequence[Any]]:
+        """The entry a framed reply's tag chooses, the tag after the parameters' values, and
+        the rest of the payload decoded by the entry."""
+        tag = plan.tag_struct
+        assert tag is not None and plan.table is not None
+        if len(payload) < tag.size:
+            raise RdisProtocolError(f"{plan.name}: expected {tag.size} bytes or more, got {len(payload)}")
+        value = tag.unpack_from(payload)[0]
+        case = plan.table.get(value)
+        if case is None:
+            raise RdisProtocolError(f"{plan.name}: no reply entry for tag {value}")
+        rest = payload[tag.size :]
+        return case, [*local, value], case.decoder.decode(plan.name, rest) if case.decoder is not None else ()
+
+    def _records(self, plan: Primitive, payload: bytes, local: Args) -> list[tuple[Primitive, Args, Sequence[Any]]]:
+        """A payload of records, each ended by the marker where it first comes (Firmata's capability
+        report: a pin's mode and resolution pairs, then 7F), each decoded by the primitive's decoder
+        and meeting its `expect`, its position after the parameters' values (`index`). At most
+        MAX_ARRAY of them; a payload whose end is not a marker is refused, as is a record that does
+        not decode. All are decoded before any post-action runs, so a bad one changes no state."""
+        marker = plan.records
+        decoder = plan.decoder
+        assert marker is not None and decoder is not None
+        parts: list[tuple[Primitive, Args, Sequence[Any]]] = []
+        at = 0
+        while at < len(payload):
+            end = payload.find(marker, at)
+            if end < 0:
+                raise RdisProtocolError(f"{plan.name}: the reply's last {len(payload) - at} bytes end in no "
+                                        f"{marker.hex(' ')}, so they are no record")
+            if len(parts) == MAX_ARRAY:
+                raise RdisProtocolError(f"{plan.name}: more than {MAX_ARRAY} records")
+            index: Args = [*local, len(parts)]
+            name = f"{plan.name}: record {len(parts)}"
+            parts.append((plan, index, self._met(plan, index, decoder.decode(name, payload[at:end]))))
+            at = end + len(marker)
+        return parts
+
+    @staticmethod
+    def _sub_payloads(plan: Primitive, payload: bytes, local: Args) -> list[tuple[Primitive, Args, Sequence[Any]]]:
+        """A payload of sub-payloads (Kobuki's feedback), in any order and any subset, until it
+        ends: each its tag, its length when the table gives one, and its bytes, decoded by the
+        entry the tag chooses (its plan, the tag after the parameters' values, its values). With
+        a length, a tag without an entry is skipped (a newer firmware's) and a length that is
+        not its entry's size refused; without one, the entry's size says where the next starts.
+        All are decoded before any post-action runs, so a bad one changes no state."""
+        tag = plan.tag_struct
+        size = plan.length_struct
+        assert tag is not None and plan.table is not None
+        head = tag.size + (size.size if size is not None else 0)
+        parts: list[tuple[Primitive, Args, Sequence[Any]]] = []
+        at = 0
+        while at < len(payload):
+            if len(payload) - at < head:
+                raise RdisProtocolError(f"{plan.name}: {len(payload) - at} bytes at offset {at} are no "
+                                        f"sub-payload (its head is {head})")
+            value = tag.unpack_from(payload, at)[0]
+            case = plan.table.get(value)
+            if case is None and size is None:
+                raise RdisProtocolError(f"{plan.name}: no reply entry for tag {value} at offset {at}")
+            decoder = case.decoder if case is not None else None
+            if size is not None:
+                length = size.unpack_from(payload, at + tag.size)[0]
+            else:
+                assert decoder is not None
+                length = decoder.size
+            start = at + head
+            if start + length > len(payload):
+                raise RdisProtocolError(f"{plan.name}: the sub-payload of tag {value} at offset {at} is {length} "
+                                        f"bytes, but {len(payload) - start} remain")
+            at = start + length
+            if case is None or decoder is None:
+                continue
+            if size is not None and decoder.size >= 0 and length != decoder.size:
+                raise RdisProtocolError(f"{plan.name}: the sub-payload of tag {value} at offset {start - head} "
+                                        f"is {length} bytes; its entry decodes {decoder.size}")
+            parts.append((case, [*local, value], decoder.decode(plan.name, payload[start:at])))
+        return parts
+
+    @staticmethod
+    def _read_tagged(plan: Primitive, reader: Incoming, wait: float,
+                     local: Args) -> tuple[Primitive, Args, Sequence[Any]]:
+        """A tagged reply without a frame (Firmata's stream): the tag, then exactly the bytes its
+        entry decodes (a fixed size: checked). Under `skip unmatched` a tag without an entry is
+        read past one byte at a time, the next tag looked for from the byte after its first,
+        until the reply's deadline."""
+        tag = plan.tag_struct
+        assert tag is not None and plan.table is not None
+        missed = f"{plan.name}: no {'matching reply' if plan.skip else 'reply'} within {wait:g} s"
+        while True:
+            head = reader.read(tag.size)
+            if len(head) < tag.size:  # the deadline passed
+                if not head or plan.skip:
+                    raise RdisTimeout(missed)
+                raise RdisProtocolError(f"{plan.name}: expected {tag.size} bytes, got {len(head)}")
+            value = tag.unpack(head)[0]
+            case = plan.table.get(value)
+            if case is None:
+                if not plan.skip:
+                    raise RdisProtocolError(f"{plan.name}: no reply entry for tag {value}")
+                if reader.deadline is not None and time.monotonic() >= reader.deadline:
+                    raise RdisTimeout(missed)
+                reader.put_back(head[1:])
+                continue
+            decoder = case.decoder
+            assert isinstance(decoder, Unpack)
+            if decoder.until is not None:  # to its end marker, which is not the reply's
+                body = reader.read_until(decoder.until)
+                if not body.endswith(decoder.until):
+                    if plan.skip:
+                        raise RdisTimeout(missed)
+                    raise RdisProtocolError(f"{plan.name}: no end {decoder.until.hex(' ')} after tag {value} "
+                                            f"within {wait:g} s")
+                return case, [*local, value], decoder.decode(plan.name, body[: -len(decoder.until)])
+            body = reader.read(decoder.size)
+            if len(body) < decoder.size:
+                if plan.skip:
+                    raise RdisTimeout(missed)
+                raise RdisProtocolError(f"{plan.name}: expected {decoder.size} bytes after tag {value}, "
+                                        f"got {len(body)}")
+            return case, [*local, value], decoder.decode(plan.name, body)
+
+    def _port_error(self, plan: Primitive, err: BaseException) -> RdisError:
+        """The typed error for what a port raised: a write that timed out, or a failed port."""
+        if _write_timed_out(err):
+            return RdisTimeout(f"{plan.name}: write not completed within {self.timeout:g} s")
+        return RdisConnectionError(f"{plan.connection}: {err}")
+
+    def _assign(self, plan: Primitive, local: Args, reply: Sequence[Any]) -> None:
+        """The post-actions: all values computed from one snapshot, then published together."""
+        self._assign_each([(plan, local, reply)])
+
+    def _assign_each(self, parts: Sequence[tuple[Primitive, Args, Sequence[Any]]]) -> None:
+        """The post-actions of each part in turn (sub-payloads, records), each part's computed from
+        the state the one before left; all published together, or none when one fails."""
+        with self._state_lock:
+            state = self._state
+            for plan, local, reply in parts:
+                assert plan.actions is not None
+                try:
+                    changes = plan.actions(state, local, reply)
+                except EVAL_ERRORS as err:
+                    raise RdisValueError(f"{plan.name}: {err}") from None
+                for name in plan.checked:
+                    value = changes[name]
+                    if type(value) is int and not -MAX_INT <= value <= MAX_INT:
+                        raise RdisValueError(f"{plan.name}: {name} would be a {value.bit_length()}-bit integer; "
+                                             "integers are limited to 64 bits and a sign")
+                state = {**state, **changes}
+            self._state = state
+
+    # ---- delivering to callbacks: one at a time, a failing one reported -----------------------------
+
+    def _deliver(self, plan: Output) -> None:
+        try:
+            contents = plan.fields(self._state)
+        except EVAL_ERRORS as err:
+            raise RdisValueError(f"{plan.name}: {err}") from None
+        message: dict[str, Any] = {"name": plan.name, "contents": contents}
+        with self._callback_lock:
+            for callback in list(self._output_callbacks):
+                try:
+                    callback(message)
+                except Exception as err:  # noqa: BLE001 - a user's callback must not stop delivery
+                    error = RdisCallbackError(f"{plan.name}: output callback raised {type(err).__name__}: {err}")
+                    error.__cause__ = err
+                    self._report(error)
+
+    def _notify_io(self, direction: str, connection: str, data: bytes) -> None:
+        """Show the I/O callbacks one event: "write" or "read" and the bytes, or "lines" and
+        the modem lines set (`_lines_text`)."""
+        with self._callback_lock:
+            for callback in list(self._io_callbacks):
+                try:
+                    callback(direction, connection, data)
+                except Exception as err:  # noqa: BLE001 - a user's callback must not stop the I/O
+                    error = RdisCallbackError(f"{connection}: I/O callback raised {type(err).__name__}: {err}")
+                    error.__cause__ = err
+                    self._report(error)
+
+    def _notify_run(self, connection: str, kind: str, name: str) -> None:
+        """Tell a recorder that a connection's thread starts a periodic interface or its keepalive."""
+        with self._callback_lock:
+            for callback in list(self._run_callbacks):
+                callback(connection, kind, name)
+
+    def _report(self, error: BaseException) -> None:
+        with self._callback_lock:
+            callbacks = list(self._error_callbacks)
+            if not callbacks:
+                _log.warning("%s: %s: %s", self.name, type(error).__name__, error)
+            for callback in callbacks:
+                try:
+                    callback(error)
+                except Exception:  # noqa: BLE001, S110 - the contract: an error callback's failure is ignored
+                    pass
+
+
+def _lines_text(levels: Mapping[str, Value]) -> bytes:
+    """The modem lines a primitive set, as the I/O callbacks see them: b"dtr=False rts=True"."""
+    return " ".join(f"{line}={bool(level)}" for line, level in levels.items()).encode("ascii")
+
+
+# ---- rdisc engine: robot (rdisc/engine/robot.py), lifecycle and public face ----------------------
+
+
+class State(Mapping[str, Value]):
+    """The state variables at one moment: `state["name"]` or `state.name`. Immutable: the
+    robot publishes a new snapshot after each primitive's post-actions."""
+
+    __slots__ = ("_values",)
+
+    def __init__(self, values: StateValues) -> None:
+        self._values = values
+
+    def __getitem__(self, name: str) -> Value:
+        value: Value = self._values[name]
+        return value
+
+    def __getattr__(self, name: str) -> Value:
+        try:
+            value: Value = self._values[name]
+            return value
+        except KeyError:
+            raise AttributeError(f"no state variable {name!r}") from None
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self._values)
+
+    def __len__(self) -> int:
+        return len(self._values)
+
+    def __repr__(self) -> str:
+        return f"State({dict(self._values)!r})"
+
+
+class Calls:
+    """`robot.inputs`, `robot.interfaces` or `robot.primitives`: each element of that kind
+    as a method of its name (an input takes its fields by name, the others their
+    parameters by position or name)."""
+
+    __slots__ = ("_kind", "_robot")
+
+    def __init__(self, robot: Robot, kind: str) -> None:
+        self._robot = robot
+        self._kind = kind
+
+    def _plans(self) -> Mapping[str, Input | Interface | Primitive]:
+        device = self._robot.device
+        if self._kind == "input":
+            return device.inputs
+        return device.interfaces if self._kind == "interface" else device.primitives
+
+    def __getattr__(self, name: str) -> Callable[..., None]:
+        plan = self._plans().get(name)
+        if plan is None:
+            raise AttributeError(f"{self._robot.name} has no {self._kind} named {name!r}")
+        robot = self._robot
+        if isinstance(plan, Input):
+            return lambda **fields: robot.call_input(name, **fields)
+        if isinstance(plan, Interface):
+            interface = plan
+            return lambda *args, **kwargs: robot._call_interface(
+                interface, _bind(f"interface {name}", interface.params, args, kwargs))
+        primitive = plan
+        return lambda *args, **kwargs: robot._call_primitive(
+            primitive, _bind(f"primitive {name}", primitive.params, args, kwargs))
+
+    def __dir__(self) -> list[str]:
+        return sorted(self._plans())
+
+
+class Robot(Exchange):
     """A description's devices, driven: `open()` opens the ports, runs the startup hooks
     and starts one thread per connection; `close()` (or leaving a `with` block) stops
     them, runs the terminate hooks and closes the ports.
@@ -2135,7 +2603,7 @@ class Robot:
                 _widen(plan.name, plan.floats, args)
                 break
         if plan.ranged:
-            _in_ranges(plan.name, plan.params, plan.ranged, args)
+            _check_ranges(plan.name, plan.params, plan.ranged, args)
         for call in plan.calls:
             try:
                 if call.when is not None and not call.when(self._state, args):
@@ -2173,7 +2641,7 @@ class Robot:
                 _widen(plan.name, plan.floats, args)
                 break
         if plan.ranged:
-            _in_ranges(plan.name, plan.params, plan.ranged, args)
+            _check_ranges(plan.name, plan.params, plan.ranged, args)
         if plan.key >= 0:
             assert plan.table is not None  # and the key's range holds every key of it
             plan = plan.table[args[plan.key]]
@@ -2182,142 +2650,6 @@ class Robot:
         except EVAL_ERRORS as err:
             raise RdisValueError(f"{plan.name}: {err}") from None
         self._exchange(plan, values, args)
-
-    def _write(self, plan: Primitive, request: bytes, levels: dict[str, Value] | None = None) -> None:
-        """Under the port's lock set the modem lines, if any, then write a request that has no
-        reply (if the primitive has one); then show the I/O callbacks."""
-        link = self._links.get(plan.connection)
-        if link is None:
-            raise RdisConnectionError(f"{plan.connection}: not open")
-        port = link.port
-        lock = port.lock
-        lock.acquire()  # acquire/release rather than `with`: cheaper, and this is every command's path
-        try:
-            if levels is not None:
-                self._set_lines(plan, port.io, levels)
-            if plan.encoder is not None:
-                port.io.write(request)
-        except RdisError:
-            raise
-        except Exception as err:  # whatever the port raises, it failed
-            raise self._port_error(plan, err) from err
-        finally:
-            lock.release()
-        if self._io_callbacks:
-            if levels is not None:
-                self._notify_io("lines", plan.connection, _lines_text(levels))
-            if plan.encoder is not None:
-                self._notify_io("write", plan.connection, request)
-
-    @staticmethod
-    def _set_lines(plan: Primitive, io: Port, levels: dict[str, Value]) -> None:
-        """Set the primitive's modem lines in the order written (pyserial's `dtr` and `rts`). A
-        port that refuses (a pty, a port with no modem lines) is an RdisConnectionError."""
-        for line, level in levels.items():
-            try:
-                if line == "dtr":
-                    io.dtr = bool(level)
-                else:
-                    io.rts = bool(level)
-            except Exception as err:  # whatever the port raises, it refused
-                raise RdisConnectionError(f"{plan.connection}: {plan.name}: cannot set {line} = {bool(level)}: "
-                                          f"{err}") from err
-
-    def _exchange(self, plan: Primitive, values: Args, local: Args) -> None:
-        """Encode and frame the request; under the port's lock write it and read the reply;
-        then show the I/O callbacks every byte written and read, and run the post-actions.
-
-        `local` is the primitive's parameters' values (a direct call passes its values)."""
-        request, fields, levels = self._request(plan, values, local)
-        if not plan.expects_reply:
-            self._write(plan, request, levels)
-            if plan.actions is not None:
-                self._assign(plan, local, ())
-            return
-        link = self._links.get(plan.connection)
-        if link is None:
-            raise RdisConnectionError(f"{plan.connection}: not open")
-        port = link.port
-        io = port.io
-        lock = port.lock
-        reader = port.input
-        wait = plan.timeout or self.timeout
-        reply: Sequence[Any] = ()
-        failed: BaseException | None = None
-        lines_set = written = False
-        lock.acquire()
-        try:
-            if levels is not None:
-                self._set_lines(plan, io, levels)
-                lines_set = True
-            if request:  # a listener (no request) keeps what has arrived: its reply is the next one
-                io.reset_input_buffer()
-                reader.clear()
-                io.write(request)
-                written = True
-            if plan.timeout is not None:
-                io.timeout = plan.timeout
-            reader.begin(wait)
-            if plan.answers:
-                reply = self._read_replies(plan, link, reader, fields, request, wait, local)
-            else:
-                plan, local, reply = self._read_reply(plan, link, reader, fields, request, wait, local)
-        except RdisError as err:
-            failed = err
-        except Exception as err:  # noqa: BLE001 - whatever the port raises, it failed
-            failed = self._port_error(plan, err)
-            failed.__cause__ = err
-        finally:
-            data = reader.end()
-            if plan.timeout is not None:
-                io.timeout = self.timeout
-            lock.release()
-        # I/O callbacks run once the port is free again: one that calls the robot (or
-        # waits for a thread that does) cannot deadlock against this exchange.
-        if self._io_callbacks:
-            if lines_set and levels is not None:
-                self._notify_io("lines", plan.connection, _lines_text(levels))
-            if written:
-                self._notify_io("write", plan.connection, request)
-            if data:
-                self._notify_io("read", plan.connection, data)
-        if failed is not None:
-            raise failed
-        self._store(plan, local, reply)
-
-    def _store(self, plan: Primitive, local: Args, reply: Sequence[Any]) -> None:
-        """Run the post-actions on a reply read whole (every part decoded and met, so a bad one
-        changed no state): each sub-payload's, record's or listed reply's in the order they came,
-        published together; or the primitive's (`replies N`: value i of the replies as one array)."""
-        if plan.in_parts:
-            self._assign_each([part for part in reply if part[0].actions is not None])
-        elif plan.answers and not plan.replies:
-            self._assign_each([(answer, local, one) for answer, one in zip(plan.answers, reply)
-                               if answer.actions is not None])
-        elif plan.actions is not None:
-            self._assign(plan, local, tuple(zip(*reply)) if plan.replies else reply)
-
-    def _request(self, plan: Primitive, values: Args,
-                 local: Args) -> tuple[bytes, list[Any], dict[str, Value] | None]:
-        """The request encoded and framed, the frame's fields, and the modem lines' levels."""
-        request = plan.encoder.encode(plan.name, values) if plan.encoder is not None else b""
-        use = plan.frame
-        fields: list[Any] = []
-        if use is not None:
-            try:
-                fields = use.frame.values(plan.name, use.args(self._state, local))
-                request = use.frame.wrap(request, fields)
-            except RdisError:
-                raise
-            except (struct.error, *EVAL_ERRORS) as err:
-                raise RdisValueError(f"{plan.name}: {err}") from None
-        levels = None
-        if plan.lines is not None:
-            try:
-                levels = plan.lines(self._state, local)
-            except EVAL_ERRORS as err:
-                raise RdisValueError(f"{plan.name}: {err}") from None
-        return request, fields, levels
 
     # ---- a simulated device: `open(sim=...)` puts these in place of the ports' ways ------------------
 
@@ -2361,300 +2693,8 @@ class Robot:
             reply = self._met(plan, local, reply)
         self._store(plan, local, reply)
 
-    def _read_reply(self, plan: Primitive, link: _Link, reader: Incoming, fields: list[Any], request: bytes,
-                    wait: float, local: Args) -> tuple[Primitive, Args, Sequence[Any]]:
-        """The plan whose post-actions take the reply (a tag's entry), what they read besides
-        it (the parameters' values, and a tag's after them), and the reply, decoded and meeting
-        its `expect`."""
-        decoder = plan.decoder
-        use = plan.frame
-        if use is None or not plan.framed_reply:
-            if plan.tag_struct is not None:
-                return self._read_tagged(plan, reader, wait, local)
-            if isinstance(decoder, Match):  # one line
-                end = link.connection.terminator
-                line = reader.read_until(end, MAX_LINE)
-                if not line:
-                    raise RdisTimeout(f"{plan.name}: no reply within {wait:g} s")
-                if not line.endswith(end):
-                    raise RdisProtocolError(f"{plan.name}: reply line not terminated: {line.decode('latin-1')!r}")
-                text = line[: -len(end)]
-                if end == b"\n" and text.endswith(b"\r"):  # the default takes CR LF as well as LF
-                    text = text[:-1]
-                return plan, local, self._met(plan, local, decoder.decode(plan.name, text))
-            assert decoder is not None
-            data = reader.read(decoder.size)
-            if not data:
-                raise RdisTimeout(f"{plan.name}: no reply within {wait:g} s")
-            return plan, local, self._met(plan, local, decoder.decode(plan.name, data))
-        # The decoding's size is the payload's, unless a tag comes first or stuffing may have lengthened
-        # it on the wire (then the constant after the payload ends it).
-        stuffed = use.frame.stuffing is not None and any(side.delimiter for side in use.frame.replies)
-        size = decoder.size if decoder is not None and plan.tag is None and plan.records is None and not stuffed else -1
-        while True:  # once, or until a reply decodes when the primitive skips the others
-            try:
-                payload = use.frame.read(reader, fields, request, size)[1]
-                if plan.each:
-                    return plan, local, self._sub_payloads(plan, payload, local)
-                if plan.records is not None:
-                    return plan, local, self._records(plan, payload, local)
-                if plan.tag_struct is not None:
-                    return self._tagged(plan, payload, local)
-                return plan, local, self._met(plan, local, decoder.decode(plan.name, payload)) if decoder else ()
-            except (FrameError, RdisProtocolError) as err:
-                nothing = isinstance(err, FrameError) and err.timeout
-                if plan.skip and not nothing and reader.deadline is not None and time.monotonic() < reader.deadline:
-                    continue
-                if nothing or plan.skip:
-                    raise RdisTimeout(f"{plan.name}: no {'matching reply' if plan.skip else 'reply'} "
-                                      f"within {wait:g} s") from None
-                if isinstance(err, RdisProtocolError):
-                    raise
-                raise RdisProtocolError(f"{plan.name}: {err}") from None
 
-    def _read_replies(self, plan: Primitive, link: _Link, reader: Incoming, fields: list[Any], request: bytes,
-                      wait: float, local: Args) -> list[Sequence[Any]]:
-        """`replies N` and `replies { }`: a reply for each of the plan's answers, read in turn as
-        one is (each decoded and meeting its `expect`; through its own frame, with its own field
-        values, where it has one), all within the one deadline, in the order they came."""
-        got: list[Sequence[Any]] = []
-        count = len(plan.answers)
-        for n, answer in enumerate(plan.answers):
-            use = answer.frame
-            if use is not None and use is not plan.frame:
-                try:
-                    fields = use.frame.values(plan.name, use.args(self._state, local))
-                except (struct.error, *EVAL_ERRORS) as err:
-                    raise RdisValueError(f"{plan.name}: {err}") from None
-            try:
-                got.append(self._read_reply(answer, link, reader, fields, request, wait, local)[2])
-            except RdisTimeout:
-                if not n:
-                    raise
-                raise RdisTimeout(f"{plan.name}: {n} of {count} replies within {wait:g} s") from None
-            except RdisProtocolError as err:
-                raise RdisProtocolError(f"{plan.name}: reply {n + 1} of {count}: "
-                                        f"{str(err).removeprefix(plan.name + ': ')}") from None
-        return got
-
-    def _met(self, plan: Primitive, local: Args, reply: Sequence[Any]) -> Sequence[Any]:
-        """The reply, when it meets the primitive's `expect` (else, like a reply that does not
-        decode, an RdisProtocolError, which `skip unmatched` reads past)."""
-        if plan.expect is None:
-            return reply
-        try:
-            met = plan.expect(self._state, local, reply)
-        except EVAL_ERRORS as err:
-            raise RdisProtocolError(f"{plan.name}: reply {tuple(reply)!r}: its `expect` failed: {err}") from None
-        if not met:
-            raise RdisProtocolError(f"{plan.name}: reply {tuple(reply)!r} does not meet its `expect`")
-        return reply
-
-    @staticmethod
-    def _tagged(plan: Primitive, payload: bytes, local: Args) -> tuple[Primitive, Args, Sequence[Any]]:
-        """The entry a framed reply's tag chooses, the tag after the parameters' values, and
-        the rest of the payload decoded by the entry."""
-        tag = plan.tag_struct
-        assert tag is not None and plan.table is not None
-        if len(payload) < tag.size:
-            raise RdisProtocolError(f"{plan.name}: expected {tag.size} bytes or more, got {len(payload)}")
-        value = tag.unpack_from(payload)[0]
-        case = plan.table.get(value)
-        if case is None:
-            raise RdisProtocolError(f"{plan.name}: no reply entry for tag {value}")
-        rest = payload[tag.size :]
-        return case, [*local, value], case.decoder.decode(plan.name, rest) if case.decoder is not None else ()
-
-    def _records(self, plan: Primitive, payload: bytes, local: Args) -> list[tuple[Primitive, Args, Sequence[Any]]]:
-        """A payload of records, each ended by the marker where it first comes (Firmata's capability
-        report: a pin's mode and resolution pairs, then 7F), each decoded by the primitive's decoder
-        and meeting its `expect`, its position after the parameters' values (`index`). At most
-        MAX_ARRAY of them; a payload whose end is not a marker is refused, as is a record that does
-        not decode. All are decoded before any post-action runs, so a bad one changes no state."""
-        marker = plan.records
-        decoder = plan.decoder
-        assert marker is not None and decoder is not None
-        parts: list[tuple[Primitive, Args, Sequence[Any]]] = []
-        at = 0
-        while at < len(payload):
-            end = payload.find(marker, at)
-            if end < 0:
-                raise RdisProtocolError(f"{plan.name}: the reply's last {len(payload) - at} bytes end in no "
-                                        f"{marker.hex(' ')}, so they are no record")
-            if len(parts) == MAX_ARRAY:
-                raise RdisProtocolError(f"{plan.name}: more than {MAX_ARRAY} records")
-            index: Args = [*local, len(parts)]
-            name = f"{plan.name}: record {len(parts)}"
-            parts.append((plan, index, self._met(plan, index, decoder.decode(name, payload[at:end]))))
-            at = end + len(marker)
-        return parts
-
-    @staticmethod
-    def _sub_payloads(plan: Primitive, payload: bytes, local: Args) -> list[tuple[Primitive, Args, Sequence[Any]]]:
-        """A payload of sub-payloads (Kobuki's feedback), in any order and any subset, until it
-        ends: each its tag, its length when the table gives one, and its bytes, decoded by the
-        entry the tag chooses (its plan, the tag after the parameters' values, its values). With
-        a length, a tag without an entry is skipped (a newer firmware's) and a length that is
-        not its entry's size refused; without one, the entry's size says where the next starts.
-        All are decoded before any post-action runs, so a bad one changes no state."""
-        tag = plan.tag_struct
-        size = plan.length_struct
-        assert tag is not None and plan.table is not None
-        head = tag.size + (size.size if size is not None else 0)
-        parts: list[tuple[Primitive, Args, Sequence[Any]]] = []
-        at = 0
-        while at < len(payload):
-            if len(payload) - at < head:
-                raise RdisProtocolError(f"{plan.name}: {len(payload) - at} bytes at offset {at} are no "
-                                        f"sub-payload (its head is {head})")
-            value = tag.unpack_from(payload, at)[0]
-            case = plan.table.get(value)
-            if case is None and size is None:
-                raise RdisProtocolError(f"{plan.name}: no reply entry for tag {value} at offset {at}")
-            decoder = case.decoder if case is not None else None
-            if size is not None:
-                length = size.unpack_from(payload, at + tag.size)[0]
-            else:
-                assert decoder is not None
-                length = decoder.size
-            start = at + head
-            if start + length > len(payload):
-                raise RdisProtocolError(f"{plan.name}: the sub-payload of tag {value} at offset {at} is {length} "
-                                        f"bytes, but {len(payload) - start} remain")
-            at = start + length
-            if case is None or decoder is None:
-                continue
-            if size is not None and decoder.size >= 0 and length != decoder.size:
-                raise RdisProtocolError(f"{plan.name}: the sub-payload of tag {value} at offset {start - head} "
-                                        f"is {length} bytes; its entry decodes {decoder.size}")
-            parts.append((case, [*local, value], decoder.decode(plan.name, payload[start:at])))
-        return parts
-
-    @staticmethod
-    def _read_tagged(plan: Primitive, reader: Incoming, wait: float,
-                     local: Args) -> tuple[Primitive, Args, Sequence[Any]]:
-        """A tagged reply without a frame (Firmata's stream): the tag, then exactly the bytes its
-        entry decodes (a fixed size: checked). Under `skip unmatched` a tag without an entry is
-        read past one byte at a time, the next tag looked for from the byte after its first,
-        until the reply's deadline."""
-        tag = plan.tag_struct
-        assert tag is not None and plan.table is not None
-        missed = f"{plan.name}: no {'matching reply' if plan.skip else 'reply'} within {wait:g} s"
-        while True:
-            head = reader.read(tag.size)
-            if len(head) < tag.size:  # the deadline passed
-                if not head or plan.skip:
-                    raise RdisTimeout(missed)
-                raise RdisProtocolError(f"{plan.name}: expected {tag.size} bytes, got {len(head)}")
-            value = tag.unpack(head)[0]
-            case = plan.table.get(value)
-            if case is None:
-                if not plan.skip:
-                    raise RdisProtocolError(f"{plan.name}: no reply entry for tag {value}")
-                if reader.deadline is not None and time.monotonic() >= reader.deadline:
-                    raise RdisTimeout(missed)
-                reader.put_back(head[1:])
-                continue
-            decoder = case.decoder
-            assert isinstance(decoder, Unpack)
-            if decoder.until is not None:  # to its end marker, which is not the reply's
-                body = reader.read_until(decoder.until)
-                if not body.endswith(decoder.until):
-                    if plan.skip:
-                        raise RdisTimeout(missed)
-                    raise RdisProtocolError(f"{plan.name}: no end {decoder.until.hex(' ')} after tag {value} "
-                                            f"within {wait:g} s")
-                return case, [*local, value], decoder.decode(plan.name, body[: -len(decoder.until)])
-            body = reader.read(decoder.size)
-            if len(body) < decoder.size:
-                if plan.skip:
-                    raise RdisTimeout(missed)
-                raise RdisProtocolError(f"{plan.name}: expected {decoder.size} bytes after tag {value}, "
-                                        f"got {len(body)}")
-            return case, [*local, value], decoder.decode(plan.name, body)
-
-    def _port_error(self, plan: Primitive, err: BaseException) -> RdisError:
-        """The typed error for what a port raised: a write that timed out, or a failed port."""
-        if _write_timed_out(err):
-            return RdisTimeout(f"{plan.name}: write not completed within {self.timeout:g} s")
-        return RdisConnectionError(f"{plan.connection}: {err}")
-
-    def _assign(self, plan: Primitive, local: Args, reply: Sequence[Any]) -> None:
-        """The post-actions: all values computed from one snapshot, then published together."""
-        self._assign_each([(plan, local, reply)])
-
-    def _assign_each(self, parts: Sequence[tuple[Primitive, Args, Sequence[Any]]]) -> None:
-        """The post-actions of each part in turn (sub-payloads, records), each part's computed from
-        the state the one before left; all published together, or none when one fails."""
-        with self._state_lock:
-            state = self._state
-            for plan, local, reply in parts:
-                assert plan.actions is not None
-                try:
-                    changes = plan.actions(state, local, reply)
-                except EVAL_ERRORS as err:
-                    raise RdisValueError(f"{plan.name}: {err}") from None
-                for name in plan.checked:
-                    value = changes[name]
-                    if type(value) is int and not -MAX_INT <= value <= MAX_INT:
-                        raise RdisValueError(f"{plan.name}: {name} would be a {value.bit_length()}-bit integer; "
-                                             "integers are limited to 64 bits and a sign")
-                state = {**state, **changes}
-            self._state = state
-
-    # ---- delivering to callbacks: one at a time, a failing one reported -----------------------------
-
-    def _deliver(self, plan: Output) -> None:
-        try:
-            contents = plan.fields(self._state)
-        except EVAL_ERRORS as err:
-            raise RdisValueError(f"{plan.name}: {err}") from None
-        message: dict[str, Any] = {"name": plan.name, "contents": contents}
-        with self._callback_lock:
-            for callback in list(self._output_callbacks):
-                try:
-                    callback(message)
-                except Exception as err:  # noqa: BLE001 - a user's callback must not stop delivery
-                    error = RdisCallbackError(f"{plan.name}: output callback raised {type(err).__name__}: {err}")
-                    error.__cause__ = err
-                    self._report(error)
-
-    def _notify_io(self, direction: str, connection: str, data: bytes) -> None:
-        """Show the I/O callbacks one event: "write" or "read" and the bytes, or "lines" and
-        the modem lines set (`_lines_text`)."""
-        with self._callback_lock:
-            for callback in list(self._io_callbacks):
-                try:
-                    callback(direction, connection, data)
-                except Exception as err:  # noqa: BLE001 - a user's callback must not stop the I/O
-                    error = RdisCallbackError(f"{connection}: I/O callback raised {type(err).__name__}: {err}")
-                    error.__cause__ = err
-                    self._report(error)
-
-    def _notify_run(self, connection: str, kind: str, name: str) -> None:
-        """Tell a recorder that a connection's thread starts a periodic interface or its keepalive."""
-        with self._callback_lock:
-            for callback in list(self._run_callbacks):
-                callback(connection, kind, name)
-
-    def _report(self, error: BaseException) -> None:
-        with self._callback_lock:
-            callbacks = list(self._error_callbacks)
-            if not callbacks:
-                _log.warning("%s: %s: %s", self.name, type(error).__name__, error)
-            for callback in callbacks:
-                try:
-                    callback(error)
-                except Exception:  # noqa: BLE001, S110 - the contract: an error callback's failure is ignored
-                    pass
-
-
-def _lines_text(levels: Mapping[str, Value]) -> bytes:
-    """The modem lines a primitive set, as the I/O callbacks see them: b"dtr=False rts=True"."""
-    return " ".join(f"{line}={bool(level)}" for line, level in levels.items()).encode("ascii")
-
-
-# ---- recordings: a session in MCAP ------------------------------------------------------------------
+# ---- rdisc engine: recording (rdisc/engine/recording.py), sessions in MCAP -----------------------
 
 
 _SEPARATOR = "=" * 80  # between a ros2msg schema's message and each message it uses
@@ -2795,7 +2835,8 @@ def ros_message(message: Message, values: Mapping[str, Any]) -> dict[str, Any]:
     return out
 
 
-# ---- the command line: `rdisc run` and every driver's ------------------------------------------------
+# ---- rdisc engine: command (rdisc/engine/command.py), the command line ---------------------------
+
 
 EXIT_OK, EXIT_ERROR, EXIT_USAGE, EXIT_SIGINT, EXIT_SIGTERM = 0, 1, 2, 130, 143
 

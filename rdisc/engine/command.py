@@ -1,0 +1,309 @@
+"""The command line `rdisc run` and every driver share: its options, the calls they make,
+signals and exit statuses.
+"""
+
+from __future__ import annotations
+
+import argparse
+import difflib
+import json
+import signal
+import sys
+import time
+from collections.abc import Mapping
+from typing import Any
+
+from rdisc.engine.arguments import bind_settings
+from rdisc.engine.errors import RdisError
+from rdisc.engine.plans import Device, Input, Interface, Param, Primitive
+from rdisc.engine.ports import Simulator
+from rdisc.engine.recording import Recorder
+from rdisc.engine.robot import Robot
+from rdisc.engine.values import Value
+
+EXIT_OK, EXIT_ERROR, EXIT_USAGE, EXIT_SIGINT, EXIT_SIGTERM = 0, 1, 2, 130, 143
+
+
+class _Terminated(BaseException):
+    """SIGTERM, turned into an exception so that the terminate hooks run on the way out."""
+
+
+def add_arguments(parser: argparse.ArgumentParser, device: Device | None = None, *, ports: bool = True) -> None:
+    """The options of `rdisc run` (and of a driver's command line), on `parser`; without
+    `--port` for a simulated device (`rdisc sim`)."""
+    connections = f" (connections: {', '.join(device.connections)})" if device is not None else ""
+    inputs = f" (inputs: {', '.join(device.inputs)})" if device is not None and device.inputs else ""
+    if ports:
+        parser.add_argument("--port", action="append", default=[], metavar="[CONN=]PORT",
+                            help="a pyserial port or URL (/dev/ttyUSB0, COM3, socket://host:port); "
+                                 f"CONN=PORT for one connection of several{connections}")
+    parser.add_argument("--call", action="append", nargs="+", default=[], metavar="NAME [K=V ...]",
+                        help="call an input (or an interface, or a primitive) with named values; repeat for "
+                             f"several calls, in order{inputs}")
+    settings = f" (settings: {', '.join(p.name for p in device.settings)})" if device and device.settings else ""
+    parser.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
+                        help=f"give a setting of the description its value; repeat for several{settings}")
+    parser.add_argument("--watch", action="store_true", help="print each output as a JSON line as it arrives")
+    parser.add_argument("--trace", action="store_true",
+                        help="print every byte written and read, in hex, on stderr, after the seconds since the "
+                             "run started: `0.1234 CONN > 89 00 c8 80 00`")
+    parser.add_argument("--duration", type=float, metavar="S",
+                        help="run for S seconds, counted from the end of the startup hooks (default: until the "
+                             "calls are done; with --watch, until Ctrl-C)")
+    parser.add_argument("--timeout", type=float, default=1.0, metavar="S",
+                        help="reply timeout in seconds (default 1)")
+    parser.add_argument("--record", metavar="FILE.mcap",
+                        help="record the session in MCAP: inputs and outputs as ROS 2 messages, the bytes "
+                             "each way, errors (needs the mcap and mcap-ros2-support packages)")
+
+
+def run_command(args: argparse.Namespace, robot: Robot, prog: str, sim: Simulator | None = None) -> int:
+    """What `rdisc run` does with its options: connect, make the --call calls in order, then
+    run until --duration seconds after the startup hooks ended (or, with --watch, until
+    Ctrl-C; else end when the calls are done). It always ends by closing the robot, which
+    runs the terminate hooks. Exit status: 0 done; 1 the device failed; 2 a usage error;
+    130 after SIGINT; 143 after SIGTERM. With `sim` (`rdisc sim`) the robot runs against
+    the simulated device; in simulated time the seconds, the trace's included, are its."""
+    simulated = sim is not None and not sim.realtime
+    clock = sim.now if sim is not None and simulated else time.monotonic
+    began = clock()
+    try:
+        port = None if sim is not None else parse_ports(args.port, robot.device)
+        settings = bind_settings(robot.device, parse_settings(args.set, robot.device))
+        calls = [parse_call(words, robot.device) for words in args.call]
+    except ValueError as err:
+        print(f"{prog}: {err}", file=sys.stderr)
+        return EXIT_USAGE
+    recorder = start_recording(robot, args.record, settings, prog) if args.record else None
+    if args.record and recorder is None:
+        return EXIT_USAGE
+    robot.on_error(_print_error)
+    if args.watch:
+        robot.on_output(_print_output)
+    if args.trace:
+        robot.on_io(lambda direction, connection, data: _print_io(clock() - began, direction, connection, data))
+    previous = _install_signal_handlers()
+    status = EXIT_OK
+    try:
+        robot.open(port, settings=settings, sim=sim)
+        started = clock()  # the startup hooks are done: --duration counts from here
+        for name, kind, values in calls:
+            if recorder is not None:
+                recorder.call(kind, name, values)
+            if kind == "input":
+                robot.call_input(name, **values)
+            elif kind == "interface":
+                robot.call_interface(name, *values.values())
+            else:
+                robot.call_primitive(name, *values.values())
+        if simulated and (args.duration is not None or args.watch):
+            robot.run_for(None if args.duration is None else args.duration - (clock() - started))
+        elif args.duration is not None:
+            _sleep(args.duration - (time.monotonic() - started))
+        elif args.watch:
+            _sleep(None)
+    except RdisError as err:
+        _print_error(err)
+        if recorder is not None:
+            recorder.error(err)
+        status = EXIT_ERROR
+    except (TypeError, ValueError) as err:  # values of the wrong type for a call, or a bad port
+        print(f"{prog}: {err}", file=sys.stderr)
+        status = EXIT_USAGE
+    except KeyboardInterrupt:
+        status = EXIT_SIGINT
+    except _Terminated:
+        status = EXIT_SIGTERM
+    finally:
+        while not _shutting_down[0]:  # from here on a signal must not cut the terminate hooks short
+            try:
+                _shutting_down[0] = True
+            except KeyboardInterrupt:
+                status = EXIT_SIGINT
+            except _Terminated:
+                status = EXIT_SIGTERM
+        try:
+            robot.close()
+            if recorder is not None:
+                recorder.finish()
+        finally:
+            interrupted = status in (EXIT_SIGINT, EXIT_SIGTERM)
+            for signum, handler in previous.items():  # after a signal, later ones are ignored to the exit
+                signal.signal(signum, signal.SIG_IGN if interrupted else handler)
+    return status
+
+
+def start_recording(robot: Robot, path: str, settings: Mapping[str, Any], prog: str) -> Recorder | None:
+    """`--record PATH` (of `rdisc run`, a driver and `rdisc console`): a Recorder attached to
+    `robot`, or None once stderr says why there is none (the mcap packages are missing, the
+    file cannot be written), which is a usage error."""
+    try:
+        return Recorder(robot, path, settings)
+    except ImportError:
+        print(f"{prog}: --record needs the mcap and mcap-ros2-support packages "
+              "(pip install mcap mcap-ros2-support)", file=sys.stderr)
+    except OSError as err:
+        print(f"{prog}: cannot write {path}: {err.strerror or err}", file=sys.stderr)
+    return None
+
+
+def parse_ports(given: list[str], device: Device) -> str | dict[str, str] | None:
+    """`--port P` for every connection, `--port CONN=P` for one; a plain port is the default for
+    the others, and a connection given none opens its `address`."""
+    connections = device.connections
+    addresses = {name: c.address for name, c in connections.items() if c.address is not None}
+    if not given:
+        if len(addresses) == len(connections):
+            return None
+        raise ValueError("give the device's port: --port /dev/ttyUSB0 (or CONN=PORT for each connection)")
+    default: str | None = None
+    named: dict[str, str] = {}
+    for value in given:
+        name, sep, port = value.partition("=")
+        if sep and name in connections:
+            if name in named:
+                raise ValueError(f"two ports for connection `{name}`")
+            named[name] = port
+        elif sep and name.isidentifier():
+            raise ValueError(f"`{name}` is not a connection of {device.name} "
+                             f"(its connections: {', '.join(connections) or 'none'})")
+        elif default is not None:
+            raise ValueError(f"two ports without a connection name: `{default}` and `{value}`")
+        else:
+            default = value
+    if not named:
+        assert default is not None
+        return default
+    for name in connections:
+        if name not in named:
+            fallback = default if default is not None else addresses.get(name)
+            if fallback is None:
+                raise ValueError(f"no port for connection `{name}`: add --port {name}=PORT")
+            named[name] = fallback
+    return named
+
+
+def parse_value(text: str) -> Value:
+    """A command-line value: an int, a float, True or False, an array of those written
+    `[1,2,3]`, else the text itself."""
+    if text.startswith("[") and text.endswith("]"):
+        return tuple(parse_value(item.strip()) for item in text[1:-1].split(",")) if text[1:-1].strip() else ()
+    for convert in (int, float):
+        try:
+            number: Value = convert(text)
+        except ValueError:
+            continue
+        return number
+    if text in ("True", "False"):
+        return text == "True"
+    return text
+
+
+def parse_typed(text: str, param: Param | None) -> Value:
+    """A command-line value read as its parameter's, field's or setting's type says: a string
+    as it is written, bytes as the hex text that `_accept` reads, an array `[a,b,c]` element by
+    element, anything else by `parse_value` (the type check then refuses what does not fit)."""
+    if param is None:
+        return parse_value(text)
+    textual = param.kind in (str, bytes)
+    if param.size is None:
+        return text if textual else parse_value(text)
+    if not (text.startswith("[") and text.endswith("]")) or not textual:
+        return parse_value(text)
+    inner = text[1:-1]
+    return tuple(item.strip() for item in inner.split(",")) if inner.strip() else ()
+
+
+def parse_settings(given: list[str], device: Device) -> dict[str, Any]:
+    """--set NAME=VALUE ...: each value read as its setting's type says (`parse_typed`), for
+    `bind_settings` to check."""
+    declared = {p.name: p for p in device.settings}
+    values: dict[str, Any] = {}
+    for pair in given:
+        name, sep, text = pair.partition("=")
+        if not sep or not name:
+            raise ValueError(f"--set `{pair}` is not NAME=VALUE")
+        if name in values:
+            raise ValueError(f"--set {name} given twice")
+        values[name] = parse_typed(text, declared.get(name))
+    return values
+
+
+def parse_call(words: list[str], device: Device) -> tuple[str, str, dict[str, Value]]:
+    """--call NAME K=V ...: (name, "input" | "interface" | "primitive", values in declaration
+    order, each read as its parameter's or field's type says); an input is preferred to an
+    interface of the same name, an interface to a primitive. An unknown name is answered with
+    the nearest known one."""
+    name, *pairs = words
+    plan: Input | Interface | Primitive | None = None
+    for kind, plan in (("input", device.inputs.get(name)), ("interface", device.interfaces.get(name)),
+                       ("primitive", device.primitives.get(name))):
+        if plan is not None:
+            break
+    else:
+        known = list(dict.fromkeys([*device.inputs, *device.interfaces, *device.primitives]))
+        near = difflib.get_close_matches(name, known, n=1)
+        hint = f"did you mean `{near[0]}`?" if near else f"there are: {', '.join(known) or 'none'}"
+        raise ValueError(f"{device.name} has no input, interface or primitive `{name}`; {hint}")
+    params = {p.name: p for p in (plan.fields if isinstance(plan, Input) else plan.params)}
+    values: dict[str, Value] = {}
+    for pair in pairs:
+        key, sep, text = pair.partition("=")
+        if not sep or not key:
+            raise ValueError(f"--call {name}: `{pair}` is not KEY=VALUE")
+        if key in values:
+            raise ValueError(f"--call {name}: `{key}` given twice")
+        values[key] = parse_typed(text, params.get(key))
+    if sorted(values) != sorted(params):
+        wanted = " ".join(f"{e}=..." for e in params) or "no values"
+        raise ValueError(f"--call {name} takes {wanted}")
+    return name, kind, {e: values[e] for e in params}
+
+
+def _print_output(message: dict[str, Any]) -> None:
+    sys.stdout.write(json.dumps(message) + "\n")
+    sys.stdout.flush()
+
+
+def _print_error(error: BaseException) -> None:
+    print(f"rdisc run: {type(error).__name__}: {error}", file=sys.stderr, flush=True)
+
+
+def _print_io(elapsed: float, direction: str, connection: str, data: bytes) -> None:
+    """One --trace line: the seconds since the run began, the connection, then `>` and
+    the bytes written, `<` and the bytes read, or `lines` and the modem lines set."""
+    if direction == "lines":
+        shown = f"lines {data.decode('ascii')}"
+    else:
+        shown = f"{'>' if direction == 'write' else '<'} {data.hex(' ')}"
+    print(f"{elapsed:.4f} {connection} {shown}", file=sys.stderr, flush=True)
+
+
+_shutting_down = [False]
+
+
+def _on_signal(signum: int, frame: object) -> None:
+    if _shutting_down[0]:
+        return  # the first signal already started the shutdown: the terminate hooks run in peace
+    _shutting_down[0] = True
+    raise KeyboardInterrupt if signum == signal.SIGINT else _Terminated()
+
+
+def _install_signal_handlers() -> dict[int, Any]:
+    _shutting_down[0] = False
+    previous: dict[int, Any] = {}
+    for signum in (signal.SIGINT, signal.SIGTERM):
+        try:
+            previous[signum] = signal.signal(signum, _on_signal)
+        except ValueError:  # not the main thread: leave the handlers alone
+            pass
+    return previous
+
+
+def _sleep(seconds: float | None) -> None:
+    """Sleep (forever if None); a signal ends it through its handler."""
+    if seconds is None:
+        while True:
+            time.sleep(3600)
+    elif seconds > 0:
+        time.sleep(seconds)

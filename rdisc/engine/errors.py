@@ -1,0 +1,29 @@
+"""The errors a run raises: RdisError, and one subclass for each way a run fails, so that a
+caller handles what it can (a timeout, a reply not as described, a lost port) and the rest alike.
+"""
+
+from __future__ import annotations
+
+
+class RdisError(Exception):
+    """Any failure while a description runs."""
+
+
+class RdisTimeout(RdisError, TimeoutError):
+    """The device sent no reply within the timeout."""
+
+
+class RdisProtocolError(RdisError):
+    """The device replied, but not as described: short, unterminated or unmatched."""
+
+
+class RdisConnectionError(RdisError, ConnectionError):
+    """A port could not be opened, failed, or disappeared."""
+
+
+class RdisValueError(RdisError, ValueError):
+    """A value could not be computed or encoded (division by zero, out of range for its code)."""
+
+
+class RdisCallbackError(RdisError):
+    """A user callback raised; the exception is the cause."""

@@ -1,0 +1,307 @@
+"""The plans: what a description specialises (per primitive, interface, input and connection), as
+data and small functions. The runtime builds them with its interpreter and a driver writes them
+as source; both hand the engine the same types.
+"""
+
+from __future__ import annotations
+
+import struct
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass, field, replace
+from typing import TYPE_CHECKING, Any
+
+from rdisc.engine.codec import Format, Match, Pack, Unpack
+from rdisc.engine.values import Args, StateValues, Value
+
+if TYPE_CHECKING:
+    from rdisc.engine.frames import Frame
+
+
+@dataclass(frozen=True, slots=True)
+class Param:
+    """A parameter of an interface or a primitive, or a field of an input's adapter."""
+
+    name: str
+    kind: type  # int, float, bool, str or bytes; an array's elements'
+    low: float | None = None  # the declared range (for bytes, of the length; for an array, of each element)
+    high: float | None = None
+    default: Value | None = None  # the value when a call leaves it out
+    size: int | None = None  # an array's: its number of elements (0: any); None: not an array
+
+
+@dataclass(frozen=True, slots=True)
+class FrameUse:
+    """A primitive's frame, and the frame's arguments over the primitive's parameters."""
+
+    frame: Frame
+    args: Callable[[StateValues, Args], Args]
+
+
+Request = Callable[[StateValues, Args], bytes | None]
+"""An input's fields' or a primitive's parameters' values to its request bytes in one step;
+None where the general way must decide."""
+
+
+@dataclass(frozen=True, slots=True)
+class Primitive:
+    """One device command: its format values (over state and its parameters), how they are
+    encoded and framed (no encoder: no request, only modem lines), how its reply is read and
+    decoded, and its post-actions (the new values of state variables, over state, its
+    parameters and the reply)."""
+
+    name: str
+    connection: str
+    params: tuple[Param, ...]
+    values: Callable[[StateValues, Args], Args]
+    encoder: Pack | Format | None
+    decoder: Unpack | Match | None = None
+    actions: Callable[[StateValues, Args, Sequence[Any]], dict[str, Value]] | None = None
+    frame: FrameUse | None = None
+    skip: bool = False  # `skip unmatched`: read past replies that do not decode
+    timeout: float | None = None  # seconds its reply may take, instead of the robot's
+    table: Mapping[int, Primitive] | None = None  # a reply table: the plan for each key or tag
+    key: int = -1  # the position of the parameter that chooses from `table` (-1: the reply's tag does)
+    tag: str | None = None  # the struct format of the tag that starts the reply
+    each: bool = False  # the framed payload is sub-payloads, each a tag and its entry's bytes, until it ends
+    length: str | None = None  # `each`: the struct format of each sub-payload's length, after its tag
+    records: bytes | None = None  # the marker ending each record of the framed payload, each decoded by `decoder`
+    checked: tuple[str, ...] = ()  # state variables its post-actions may make too wide (checked as they are set)
+    request: Request | None = None  # its parameters' values to the bytes, when it is only written (`_sent_at_once`)
+    expect: Callable[[StateValues, Args, Sequence[Any]], object] | None = None  # a condition its decoded reply meets
+    lines: Callable[[StateValues, Args], dict[str, Value]] | None = None  # "dtr"/"rts": levels, set before the request
+    replies: int = 0  # `replies N`: N replies to one request, collected value by value into arrays (0: one)
+    reply_frames: tuple[FrameUse, ...] = ()  # each reply's own frame (`replies id in IDS frame status(id)`)
+    answers: tuple[Primitive, ...] = ()  # the replies read in turn, a plan each: `replies { }`'s, each its own
+    # frame, decoder, expect and post-actions; `replies N`'s made here, this plan's (through `reply_frames`)
+    expects_reply: bool = field(init=False)
+    framed_reply: bool = field(init=False)
+    in_parts: bool = field(init=False)  # read as sub-payloads or records, each its plan, values and post-actions
+    floats: tuple[int, ...] = field(init=False)
+    ranged: tuple[int, ...] = field(init=False)
+    tag_struct: struct.Struct | None = field(init=False)
+    length_struct: struct.Struct | None = field(init=False)
+
+    def __post_init__(self) -> None:
+        reply = self.frame.frame.reply if self.frame is not None else None
+        framed = reply is not None and bool(reply.parts)
+        acknowledged = framed and reply is not None and reply.payload < 0  # constant parts only
+        object.__setattr__(self, "framed_reply", framed)
+        object.__setattr__(self, "in_parts", self.each or self.records is not None)
+        object.__setattr__(self, "expects_reply", self.decoder is not None or self.table is not None or acknowledged
+                           or bool(self.answers))
+        object.__setattr__(self, "floats", _floats(self.params))
+        object.__setattr__(self, "ranged", _ranged(self.params))
+        object.__setattr__(self, "tag_struct", None if self.tag is None else struct.Struct(self.tag))
+        object.__setattr__(self, "length_struct", None if self.length is None else struct.Struct(self.length))
+        if self.replies:  # one plan for each reply, all alike but for their frames
+            one = replace(self, replies=0, reply_frames=())
+            object.__setattr__(self, "answers", tuple(replace(one, frame=use) for use in self.reply_frames)
+                               or (one,) * self.replies)
+        if not _sent_at_once(self):
+            object.__setattr__(self, "request", None)
+        elif self.request is None:
+            object.__setattr__(self, "request", _composed_write(self))
+
+
+def _plain(encoder: Pack | Format | None) -> bool:
+    """Whether an encoder is one struct module's `pack` of its values as they are: no string,
+    rest or bit fields to prepare first."""
+    return isinstance(encoder, Pack) and not encoder.strings and not encoder.rest and not encoder.bits
+
+
+def _sent_at_once(plan: Primitive) -> bool:
+    """Whether running the primitive is only packing its values, framing them and writing
+    them: no reply, reply table, post-action, modem line or string in the way."""
+    return _plain(plan.encoder) and not plan.expects_reply and plan.actions is None and plan.table is None and plan.lines is None
+
+
+def _composed_write(plan: Primitive) -> Request:
+    """The general way of a primitive only written (`Robot._primitive`), as one function of its
+    parameters' values. Like `Input.request` it returns None for anything but the parameters'
+    own types in their ranges, and on any error: the general way then says what is wrong."""
+    kinds = tuple(p.kind for p in plan.params)
+    bounds = tuple((i, plan.params[i].low, plan.params[i].high) for i in plan.ranged)
+    values_of = plan.values
+    assert isinstance(plan.encoder, Pack)
+    pack = plan.encoder.struct.pack
+    use = plan.frame
+
+    def request(state: StateValues, args: Args) -> bytes | None:
+        if len(args) != len(kinds):
+            return None
+        for value, kind in zip(args, kinds):
+            if type(value) is not kind:
+                return None
+        for i, low, high in bounds:
+            if not low <= args[i] <= high:
+                return None
+        try:
+            payload = pack(*values_of(state, args))
+            return payload if use is None else use.frame.wrap(payload, use.frame.values("", use.args(state, args)))
+        except Exception:  # noqa: BLE001 - the general way says what is wrong
+            return None
+
+    return request
+
+
+@dataclass(frozen=True, slots=True)
+class Output:
+    """A domain output: its fields over state, in its adapter's order."""
+
+    name: str
+    fields: Callable[[StateValues], dict[str, Value]]
+    adapter: str = ""
+
+
+@dataclass(frozen=True, slots=True)
+class Call:
+    """A call of an interface: of a primitive or of another interface, its arguments over
+    state and the interface's parameters, and the delay after it. `direct`: the arguments
+    are the primitive's format values (it has no frame, table, ranges or post-actions)."""
+
+    target: Primitive | Interface
+    args: Callable[[StateValues, Args], Args]
+    delay: float = 0.0  # seconds
+    direct: bool = False
+    when: Callable[[StateValues, Args], object] | None = None  # the call is made only when this holds
+
+
+@dataclass(frozen=True, slots=True)
+class Interface:
+    """A host-side operation: its calls in run order, then the outputs it triggers."""
+
+    name: str
+    params: tuple[Param, ...]
+    calls: tuple[Call, ...]
+    outputs: tuple[Output, ...] = ()
+    floats: tuple[int, ...] = field(init=False)
+    ranged: tuple[int, ...] = field(init=False)
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "floats", _floats(self.params))
+        object.__setattr__(self, "ranged", _ranged(self.params))
+
+
+@dataclass(frozen=True, slots=True)
+class Input:
+    """A domain input: its adapter's fields, and the interface's arguments over them.
+
+    When its interface is one plain write (`_written_at_once`), `request` goes from the
+    fields' values straight to the bytes: a generated driver gives one compiled from the
+    expressions, else the general way is composed into one here. It returns None for
+    anything but the fields' own types and on any error, and the general way then runs
+    and says what is wrong, so both ways behave alike."""
+
+    name: str
+    adapter: str
+    fields: tuple[Param, ...]
+    interface: Interface
+    args: Callable[[StateValues, Args], Args]
+    request: Request | None = None
+    primitive: Primitive | None = field(init=False)  # where `request` goes, when there is one
+    kinds: tuple[type, ...] = field(init=False)
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "kinds", tuple(f.kind for f in self.fields))
+        call = _written_at_once(self.interface)
+        object.__setattr__(self, "primitive", call.target if call is not None else None)
+        request = None if call is None else self.request or _composed(self, call)
+        object.__setattr__(self, "request", request)
+
+
+def _written_at_once(interface: Interface) -> Call | None:
+    """The interface's one call, when running it is only packing its values and writing them:
+    no delay, range, output, frame, reply, post-action, modem line or string in the way."""
+    if len(interface.calls) != 1 or interface.ranged or interface.outputs:
+        return None
+    call = interface.calls[0]
+    prim = call.target
+    if not isinstance(prim, Primitive):
+        return None
+    if not call.direct or call.delay or call.when or not _plain(prim.encoder) or prim.expects_reply or prim.frame is not None:
+        return None
+    return call if prim.actions is None and prim.table is None and prim.lines is None and not prim.ranged else None
+
+
+def _composed(plan: Input, call: Call) -> Request:
+    """The general way of an input written at once (`Robot._input`), as one function."""
+    kinds, args_of, floats, values_of = plan.kinds, plan.args, plan.interface.floats, call.args
+    assert isinstance(call.target, Primitive)  # `_written_at_once`
+    encoder = call.target.encoder
+    assert isinstance(encoder, Pack)
+    pack = encoder.struct.pack
+
+    def request(state: StateValues, values: Args) -> bytes | None:
+        for value, kind in zip(values, kinds):
+            if type(value) is not kind:
+                return None
+        try:
+            args = args_of(state, values)
+            for i in floats:
+                if type(args[i]) is int:
+                    args[i] = float(args[i])
+            return pack(*values_of(state, args))
+        except Exception:  # noqa: BLE001 - the general way says what is wrong
+            return None
+
+    return request
+
+
+@dataclass(frozen=True, slots=True)
+class Hook:
+    """A connection's startup, terminate or keepalive call: an interface, arguments over state."""
+
+    interface: Interface
+    args: Callable[[StateValues], Args]
+
+
+@dataclass(frozen=True, slots=True)
+class Connection:
+    """A transport and what runs on it: hooks, periodic interfaces, its thread's frequency."""
+
+    name: str
+    baud: int
+    address: str | None = None  # opened when no port is given
+    terminator: bytes = b"\n"  # ends a reply line
+    frequency: float = 0.0  # ticks a second
+    periodic: tuple[Interface, ...] = ()
+    startup: Hook | None = None
+    terminate: Hook | None = None
+    keepalive: Hook | None = None
+    interval: float = 0.0  # seconds between keepalives
+    baud_setting: str | None = None  # the setting that gives the baud rate (`baud` is its default)
+
+
+@dataclass(frozen=True, slots=True)
+class Device:
+    """A whole description, planned: what a Robot runs."""
+
+    name: str
+    state: Mapping[str, Value]  # the initial values, and the settings' defaults
+    connections: Mapping[str, Connection]
+    primitives: Mapping[str, Primitive]
+    interfaces: Mapping[str, Interface]
+    inputs: Mapping[str, Input]
+    settings: tuple[Param, ...] = ()  # given when connecting; read as state is, never written
+    messages: Mapping[str, Message] = field(default_factory=dict)  # by adapter: how a recording carries it
+
+
+@dataclass(frozen=True, slots=True)
+class Message:
+    """The ROS 2 message a recording (`--record`) carries an adapter's values as: its type
+    (`geometry_msgs/msg/Twist`), its definition with those of the messages it uses (the
+    `ros2msg` schema text), the adapter's fields and where each goes (`linear.x`, `position[0]`,
+    `pose.pose.orientation:yaw` for a quaternion given by its yaw)."""
+
+    type: str
+    definition: str
+    fields: tuple[str, ...]
+    paths: tuple[str, ...]
+
+
+def _floats(params: tuple[Param, ...]) -> tuple[int, ...]:
+    return tuple(i for i, p in enumerate(params) if p.kind is float)
+
+
+def _ranged(params: tuple[Param, ...]) -> tuple[int, ...]:
+    return tuple(i for i, p in enumerate(params) if p.low is not None)

@@ -1,0 +1,103 @@
+"""Ports: what the robot needs of one (pyserial's `Serial` has it all), a simulated device in
+their place, and opening one by name with pyserial, imported only then.
+"""
+
+from __future__ import annotations
+
+import os
+import sys
+import threading
+from collections.abc import Mapping, Sequence
+from typing import Any, Protocol
+
+from rdisc.engine.errors import RdisConnectionError
+from rdisc.engine.plans import Connection, Interface, Primitive
+from rdisc.engine.values import Args
+from rdisc.engine.wire import Incoming
+
+
+class Port(Protocol):
+    """What the robot needs of an open port; pyserial's `Serial` has all of it (`dtr` and `rts`,
+    its modem lines, only a primitive with `lines` sets)."""
+
+    timeout: float | None
+    dtr: bool
+    rts: bool
+
+    def write(self, data: bytes, /) -> int | None: ...
+
+    def read(self, size: int = 1, /) -> bytes: ...
+
+    def read_until(self, expected: bytes = b"\n", size: int | None = None, /) -> bytes: ...
+
+    def reset_input_buffer(self) -> None: ...
+
+    def close(self) -> None: ...
+
+
+PortSpec = str | os.PathLike[str] | Port | Mapping[str, "str | os.PathLike[str] | Port"]
+"""A port for every connection (a pyserial port name or URL, or an open port), or a dict
+from connection name to port."""
+
+
+class Simulator(Protocol):
+    """A simulated device in place of the ports (`Robot.open(sim=...)`; `rdisc.sim` gives one
+    over MuJoCo): it takes what the host commands, by primitive and interface with their
+    parameters' values, and answers a primitive's reply with its values (`replies N` or
+    `replies { }`: a list of a reply for each of its `answers`, each its values). In simulated time
+    (`realtime` False) the robot runs no threads: its schedule and delays advance the simulation."""
+
+    realtime: bool
+
+    def interface(self, plan: Interface, args: Args, /) -> None: ...
+
+    def exchange(self, plan: Primitive, local: Args, /) -> Sequence[Any]: ...
+
+    def advance(self, seconds: float, /) -> None: ...
+
+    def now(self) -> float: ...
+
+
+class _Port:
+    """One open port, shared by the connections given the same one, with its exchange lock."""
+
+    __slots__ = ("input", "io", "lock", "owned")
+
+    def __init__(self, io: Port, owned: bool) -> None:
+        self.io = io
+        self.input = Incoming(io)  # what replies are read from: bytes put back, bytes taken, the deadline
+        self.owned = owned  # opened by the robot, so closed by it too
+        # Re-entrant: a signal landing between a command's `acquire` and its `try` leaves the lock
+        # held by the interrupted thread, which must still write the terminate hook's stop command.
+        self.lock = threading.RLock()
+
+
+class _Link:
+    """A connection and its port."""
+
+    __slots__ = ("connection", "port")
+
+    def __init__(self, connection: Connection, port: _Port) -> None:
+        self.connection = connection
+        self.port = port
+
+
+def _open_port(connection: Connection, url: str, timeout: float, baud: int) -> Port:
+    """A port opened with pyserial (any port name or URL it knows) at `baud`, 8N1."""
+    try:
+        import serial  # type: ignore[import-untyped, import-not-found, unused-ignore]
+    except ImportError as err:
+        raise RdisConnectionError(f"{connection.name}: opening {url} needs pyserial (pip install pyserial)") from err
+    try:
+        port: Port = serial.serial_for_url(url, baudrate=baud, bytesize=8, parity="N", stopbits=1,
+                                           timeout=timeout, write_timeout=timeout)
+    except (serial.SerialException, OSError, ValueError) as err:
+        raise RdisConnectionError(f"{connection.name}: cannot open {url}: {err}") from err
+    return port
+
+
+def _write_timed_out(err: BaseException) -> bool:
+    """Whether a port's exception is pyserial's for a write that could not complete in time."""
+    serial = sys.modules.get("serial")  # a port that raises it has imported it
+    timeout_type = getattr(serial, "SerialTimeoutException", None) if serial is not None else None
+    return timeout_type is not None and isinstance(err, timeout_type)

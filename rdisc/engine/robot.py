@@ -1,0 +1,499 @@
+"""The robot: its lifecycle (ports opened, hooks, threads, closing) and its public face (state,
+inputs, interfaces, primitives); what it runs is written and read by the exchange it inherits.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import threading
+import time
+from collections.abc import Callable, Iterator, Mapping
+from typing import Any
+
+from rdisc.engine.arguments import _accept_param, _accepted, _bind, _check_ranges, _widen, bind_settings
+from rdisc.engine.errors import RdisConnectionError, RdisValueError
+from rdisc.engine.exchange import Exchange, _lines_text
+from rdisc.engine.operations import EVAL_ERRORS
+from rdisc.engine.plans import Device, Hook, Input, Interface, Primitive
+from rdisc.engine.ports import PortSpec, Simulator, _Link, _open_port, _Port
+from rdisc.engine.schedule import _Worker
+from rdisc.engine.values import Args, ErrorCallback, IoCallback, OutputCallback, StateValues, Value
+
+
+class State(Mapping[str, Value]):
+    """The state variables at one moment: `state["name"]` or `state.name`. Immutable: the
+    robot publishes a new snapshot after each primitive's post-actions."""
+
+    __slots__ = ("_values",)
+
+    def __init__(self, values: StateValues) -> None:
+        self._values = values
+
+    def __getitem__(self, name: str) -> Value:
+        value: Value = self._values[name]
+        return value
+
+    def __getattr__(self, name: str) -> Value:
+        try:
+            value: Value = self._values[name]
+            return value
+        except KeyError:
+            raise AttributeError(f"no state variable {name!r}") from None
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self._values)
+
+    def __len__(self) -> int:
+        return len(self._values)
+
+    def __repr__(self) -> str:
+        return f"State({dict(self._values)!r})"
+
+
+class Calls:
+    """`robot.inputs`, `robot.interfaces` or `robot.primitives`: each element of that kind
+    as a method of its name (an input takes its fields by name, the others their
+    parameters by position or name)."""
+
+    __slots__ = ("_kind", "_robot")
+
+    def __init__(self, robot: Robot, kind: str) -> None:
+        self._robot = robot
+        self._kind = kind
+
+    def _plans(self) -> Mapping[str, Input | Interface | Primitive]:
+        device = self._robot.device
+        if self._kind == "input":
+            return device.inputs
+        return device.interfaces if self._kind == "interface" else device.primitives
+
+    def __getattr__(self, name: str) -> Callable[..., None]:
+        plan = self._plans().get(name)
+        if plan is None:
+            raise AttributeError(f"{self._robot.name} has no {self._kind} named {name!r}")
+        robot = self._robot
+        if isinstance(plan, Input):
+            return lambda **fields: robot.call_input(name, **fields)
+        if isinstance(plan, Interface):
+            interface = plan
+            return lambda *args, **kwargs: robot._call_interface(
+                interface, _bind(f"interface {name}", interface.params, args, kwargs))
+        primitive = plan
+        return lambda *args, **kwargs: robot._call_primitive(
+            primitive, _bind(f"primitive {name}", primitive.params, args, kwargs))
+
+    def __dir__(self) -> list[str]:
+        return sorted(self._plans())
+
+
+class Robot(Exchange):
+    """A description's devices, driven: `open()` opens the ports, runs the startup hooks
+    and starts one thread per connection; `close()` (or leaving a `with` block) stops
+    them, runs the terminate hooks and closes the ports.
+
+    State lives in a dict that is never changed in place: post-actions build a new one
+    under the state lock and publish it with one assignment, so any reader sees a
+    consistent snapshot without locking.
+    """
+
+    def __init__(self, device: Device, *, timeout: float = 1.0) -> None:
+        """A robot not connected yet; `timeout`: seconds a reply may take."""
+        self.device = device
+        self.name = device.name
+        self.timeout = timeout
+        self._state: dict[str, Value] = dict(device.state)
+        self._state_lock = threading.Lock()
+        self._callback_lock = threading.RLock()  # callbacks run one at a time
+        self._output_callbacks: list[OutputCallback] = []
+        self._error_callbacks: list[ErrorCallback] = []
+        self._io_callbacks: list[IoCallback] = []
+        self._run_callbacks: list[Callable[[str, str, str], object]] = []  # a Recorder's: what a thread runs
+        self._links: dict[str, _Link] = {}
+        self._workers: list[_Worker] = []
+        self._close_lock = threading.Lock()
+        self._running = False
+        self._direct = False  # running on ports: a plain write may skip the general way
+        self._closed = False
+        self._sim: Simulator | None = None
+        self._clock: Callable[[], float] = time.monotonic  # the schedule's time, and the delays'
+        self._sleep: Callable[[float], None] = time.sleep
+
+    # ---- callbacks --------------------------------------------------------------------------------
+
+    def on_output(self, callback: OutputCallback) -> OutputCallback:
+        """Call `callback({"name": ..., "contents": {...}})` for every output triggered."""
+        with self._callback_lock:
+            self._output_callbacks.append(callback)
+        return callback
+
+    def on_error(self, callback: ErrorCallback) -> ErrorCallback:
+        """Call `callback(error)` for every error of periodic work, keepalives, terminate hooks
+        and callbacks (with none registered, errors are logged to the "rdisc" logger)."""
+        with self._callback_lock:
+            self._error_callbacks.append(callback)
+        return callback
+
+    def on_io(self, callback: IoCallback) -> IoCallback:
+        """Call `callback("write" | "read", connection, data)` for every write, and for every
+        byte read, whatever became of it; `callback("lines", connection, b"dtr=False")` for the
+        modem lines a primitive set, before its write."""
+        with self._callback_lock:
+            self._io_callbacks.append(callback)
+        return callback
+
+    # ---- what the host can see and call -------------------------------------------------------------
+
+    @property
+    def state(self) -> State:
+        """The state variables now: an immutable snapshot, `robot.state["name"]` or `.name`."""
+        return State(self._state)
+
+    @property
+    def closed(self) -> bool:
+        return self._closed
+
+    @property
+    def inputs(self) -> Any:  # a Calls; a generated driver gives a class of typed methods
+        """The domain inputs, by name: `robot.inputs.NAME(field=value, ...)`."""
+        return Calls(self, "input")
+
+    @property
+    def interfaces(self) -> Any:  # a Calls, or a driver's typed methods
+        """The interfaces, by name: `robot.interfaces.NAME(param, ...)`."""
+        return Calls(self, "interface")
+
+    @property
+    def primitives(self) -> Any:  # a Calls, or a driver's typed methods
+        """The primitives (device commands), by name: `robot.primitives.NAME(param, ...)`."""
+        return Calls(self, "primitive")
+
+    def call_input(self, name: str, /, **fields: Any) -> None:
+        """Run a domain input with its adapter's fields by name, on this thread; errors are raised."""
+        plan = self.device.inputs.get(name)
+        if plan is None:
+            raise KeyError(f"{self.name} has no input named {name!r}")
+        try:
+            if len(fields) != len(plan.fields):
+                raise KeyError(name)
+            values = [fields[f.name] for f in plan.fields]
+        except KeyError:
+            expected = ", ".join(f.name for f in plan.fields)
+            raise TypeError(f"input {name} takes the fields {expected} ({plan.adapter}); "
+                            f"given: {', '.join(fields) or 'none'}") from None
+        self._input(plan, values)
+
+    def call_interface(self, name: str, /, *args: Any) -> None:
+        """Run an interface with positional arguments, on this thread; errors are raised."""
+        plan = self.device.interfaces.get(name)
+        if plan is None:
+            raise KeyError(f"{self.name} has no interface named {name!r}")
+        self._call_interface(plan, list(args))
+
+    def call_primitive(self, name: str, /, *args: Any) -> None:
+        """Send one device command (a primitive) with positional arguments, read its reply and
+        run its post-actions, on this thread; errors are raised."""
+        plan = self.device.primitives.get(name)
+        if plan is None:
+            raise KeyError(f"{self.name} has no primitive named {name!r}")
+        values = list(args)
+        request = plan.request
+        if request is not None and self._direct:  # one plain write: every command's path
+            data = request(self._state, values)
+            if data is not None:
+                self._write(plan, data)
+                return
+        self._call_primitive(plan, values)
+
+    # ---- lifecycle ----------------------------------------------------------------------------------
+
+    def open(self, port: PortSpec | None = None, *, threads: bool = True,
+             settings: Mapping[str, Any] | None = None, sim: Simulator | None = None) -> None:
+        """Bind the settings, open the ports, run the startup hooks, then start the connections' threads.
+
+        `port`: a pyserial port name or URL ("/dev/ttyUSB0", "COM3", "socket://host:4000")
+        or an open port object, for every connection; or a dict {connection: port}; a
+        connection given none opens its address from the description. `settings`: values
+        of the description's settings by name (the others keep their defaults); one that
+        does not fit is an RdisValueError, before anything is opened. With
+        `threads=False` no thread is started: call `tick()` from your own loop. If any of
+        it fails, what was opened is closed again (terminate hooks included) and the
+        error is raised. `sim`: a simulated device in place of the ports (no port is
+        opened); in simulated time no thread is started either: `run_for` runs the schedule.
+        """
+        if self._running or self._closed:
+            raise RdisConnectionError(f"{self.name}: already opened")
+        self._state = {**self._state, **bind_settings(self.device, settings)}
+        try:
+            if sim is None:
+                self._open_links(port)
+            else:
+                self._simulate(sim)
+                threads = threads and sim.realtime
+            self._running = True
+            self._direct = sim is None
+            self.startup()
+            self._workers = [_Worker(self, c) for c in self.device.connections.values()]
+            for worker in self._workers:
+                if threads:
+                    worker.start()
+        except BaseException:
+            self.close()
+            raise
+
+    def startup(self) -> None:
+        """Run the startup hooks, in declaration order (`open()` does); errors are raised."""
+        for connection in self.device.connections.values():
+            if connection.startup is not None:
+                self._hook(connection.startup)
+
+    def terminate(self) -> None:
+        """Run the terminate hooks of the connections that are open, in declaration order
+        (`close()` does): they leave the robot stopped. Errors are reported, not raised."""
+        for connection in self.device.connections.values():
+            if connection.terminate is not None and (connection.name in self._links or self._sim is not None):
+                try:
+                    self._hook(connection.terminate)
+                except Exception as err:  # noqa: BLE001 - reported, and the others run
+                    self._report(err)
+
+    def tick(self) -> None:
+        """One iteration of every connection's work on this thread, in declaration order: its
+        periodic interfaces, then its keepalive if due. Errors are reported, as the threads' are."""
+        if not self._running:
+            raise self._not_running()
+        for worker in self._workers:
+            worker.tick()
+
+    def run_for(self, seconds: float | None) -> None:
+        """Run the connections' schedules for `seconds` of simulated time (None: for ever), on
+        this thread: each connection's tick when it is due, as its thread would run it, the
+        simulation advanced up to it (and by the delays within it)."""
+        sim = self._sim
+        if sim is None or sim.realtime or not self._running:
+            raise RdisConnectionError(f"{self.name}: not running in simulated time")
+        end = math.inf if seconds is None else sim.now() + seconds
+        ticks = dict.fromkeys(self._workers, 0)  # each periodic connection's next tick
+        while True:
+            due = {w: w._start + k * w.period if w.connection.periodic else w._keepalive_due if w.interval else math.inf
+                   for w, k in ticks.items()}
+            wake = min(due.values(), default=math.inf)
+            if wake > end:
+                sim.advance(end - sim.now())
+                return
+            sim.advance(max(wake - sim.now(), 0.0))
+            for worker, when in due.items():
+                if when <= wake:
+                    worker.tick()  # as the thread's loop: a tick already past is skipped
+                    if worker.connection.periodic:
+                        late = math.ceil((sim.now() - worker._start) / worker.period - 1e-9)
+                        ticks[worker] = max(ticks[worker] + 1, late)
+
+    def close(self) -> None:
+        """Stop the threads (each finishes the interface it is running, delays included), run
+        the terminate hooks (errors reported, not raised) and close the ports `open` opened.
+        Idempotent; the robot does nothing more afterwards."""
+        with self._close_lock:
+            if self._closed:
+                return
+            self._closed = True
+            self._running = False
+            self._direct = False
+        for worker in self._workers:
+            worker.stop()
+        self.terminate()
+        for port in {id(link.port): link.port for link in self._links.values()}.values():
+            if port.owned:
+                try:
+                    port.io.close()
+                except Exception:  # noqa: BLE001, S110 - a port that fails to close is closed enough
+                    pass
+
+    def __enter__(self) -> Robot:  # noqa: PYI034 - typing.Self needs Python 3.11
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.close()
+
+    def _not_running(self) -> RdisConnectionError:
+        return RdisConnectionError(f"{self.name}: {'closed' if self._closed else 'not open'}")
+
+    def _open_links(self, port: PortSpec | None) -> None:
+        """A port for each connection: one name or URL is opened once and shared, with one
+        lock; an open port object is used as it is and never closed here; a connection
+        given no port opens its address."""
+        connections = self.device.connections
+        given: dict[str, Any]
+        if isinstance(port, Mapping):
+            unknown = [name for name in port if name not in connections]
+            if unknown:
+                raise ValueError(f"{self.name} has no connection named {unknown[0]!r} "
+                                 f"(its connections: {', '.join(connections) or 'none'})")
+            given = dict(port)
+        else:
+            given = dict.fromkeys(connections, port) if port is not None else {}
+        for name, connection in connections.items():
+            if name not in given:
+                if connection.address is None:
+                    raise ValueError(f"no port given for connection {name!r}, which has no `address`")
+                given[name] = connection.address
+        opened: dict[object, _Port] = {}
+        for name, where in given.items():
+            by_name = isinstance(where, (str, os.PathLike))
+            key: object = os.fspath(where) if by_name else id(where)
+            if key not in opened:
+                connection = connections[name]
+                setting = connection.baud_setting  # an int setting: the checker holds it to that type
+                baud: Any = self._state[setting] if setting is not None else connection.baud
+                io = _open_port(connection, os.fspath(where), self.timeout, baud) if by_name else where
+                opened[key] = _Port(io, owned=by_name)
+            self._links[name] = _Link(connections[name], opened[key])
+
+    # ---- running the plans --------------------------------------------------------------------------
+
+    def _input(self, plan: Input, values: Args) -> None:
+        """Run an input with its fields' values by position (each made its type here)."""
+        if not self._running:
+            raise self._not_running()
+        request = plan.request
+        if request is not None:  # one plain write: every command's path
+            data = request(self._state, values)
+            if data is not None:
+                assert plan.primitive is not None
+                self._write(plan.primitive, data)
+                return
+        self._input_in_full(plan, values)
+
+    def _input_in_full(self, plan: Input, values: Args) -> None:
+        """An input the general way: its fields made their types, its interface's arguments."""
+        if not self._running:
+            raise self._not_running()
+        for i, param in enumerate(plan.fields):
+            if type(values[i]) is not param.kind or param.size is not None:
+                values[i] = _accept_param(values[i], param, f"input {plan.name}: field {param.name}")
+        try:
+            args = plan.args(self._state, values)
+        except EVAL_ERRORS as err:
+            raise RdisValueError(f"{plan.name}: {err}") from None
+        for param, value in zip(plan.interface.params, args):
+            if param.size and len(value) != param.size:  # an adapter's array, of any size, into one of a fixed size
+                raise RdisValueError(f"{plan.name}: {plan.interface.name} takes {param.size} values for "
+                                     f"{param.name}, not {len(value)}")
+        self._interface(plan.interface, args)
+
+    def _call_interface(self, plan: Interface, values: Args) -> None:
+        """Run an interface the host called, with its parameters' values by position."""
+        if not self._running:
+            raise self._not_running()
+        self._interface(plan, _accepted(f"interface {plan.name}", plan.params, values))
+
+    def _call_primitive(self, plan: Primitive, values: Args) -> None:
+        """Run a primitive the host called, with its parameters' values by position."""
+        if not self._running:
+            raise self._not_running()
+        self._primitive(plan, _accepted(f"primitive {plan.name}", plan.params, values))
+
+    def _hook(self, hook: Hook) -> None:
+        try:
+            args = hook.args(self._state)
+        except EVAL_ERRORS as err:
+            raise RdisValueError(f"{hook.interface.name}: {err}") from None
+        self._interface(hook.interface, args)
+
+    def _interface(self, plan: Interface, args: Args) -> None:
+        """Run an interface with its parameters' values: its calls in order, each followed by
+        its delay, then its output. An error stops it where it happened."""
+        for i in plan.floats:  # (inline: this is every command's path)
+            if type(args[i]) is int:
+                _widen(plan.name, plan.floats, args)
+                break
+        if plan.ranged:
+            _check_ranges(plan.name, plan.params, plan.ranged, args)
+        for call in plan.calls:
+            try:
+                if call.when is not None and not call.when(self._state, args):
+                    continue  # not made, and so no delay after it
+                values = call.args(self._state, args)
+            except EVAL_ERRORS as err:
+                raise RdisValueError(f"{plan.name}: {err}") from None
+            target = call.target
+            if isinstance(target, Interface):
+                self._interface(target, values)
+            elif call.direct:  # the call's values are the primitive's format values
+                self._exchange(target, values, values)
+            else:
+                self._primitive(target, values)
+            if call.delay:
+                self._sleep(call.delay)
+        for output in plan.outputs:
+            self._deliver(output)
+
+    def _primitive(self, plan: Primitive, args: Args) -> None:
+        """Run a primitive with its parameters' values: its reply table's entry, if it has
+        one, then the exchange."""
+        request = plan.request
+        if request is not None:  # one plain write
+            data = request(self._state, args)
+            if data is not None:
+                self._write(plan, data)
+                return
+        self._primitive_in_full(plan, args)
+
+    def _primitive_in_full(self, plan: Primitive, args: Args) -> None:
+        """A primitive the general way: its parameters checked, its reply table's entry chosen."""
+        for i in plan.floats:
+            if type(args[i]) is int:
+                _widen(plan.name, plan.floats, args)
+                break
+        if plan.ranged:
+            _check_ranges(plan.name, plan.params, plan.ranged, args)
+        if plan.key >= 0:
+            assert plan.table is not None  # and the key's range holds every key of it
+            plan = plan.table[args[plan.key]]
+        try:
+            values = plan.values(self._state, args)
+        except EVAL_ERRORS as err:
+            raise RdisValueError(f"{plan.name}: {err}") from None
+        self._exchange(plan, values, args)
+
+    # ---- a simulated device: `open(sim=...)` puts these in place of the ports' ways ------------------
+
+    def _simulate(self, sim: Simulator) -> None:
+        """Run against `sim`: every primitive the general way (the simulator takes parameters'
+        values, which a plain write's shortcut never has), its exchange with the simulator, and
+        in simulated time the schedule's clock and the delays the simulation's. Instance
+        attributes, so that a robot on ports runs exactly the code it runs without them."""
+        self._sim = sim
+        self._input = self._input_in_full  # type: ignore[method-assign]
+        self._primitive = self._primitive_in_full  # type: ignore[method-assign]
+        self._interface = self._simulated_interface  # type: ignore[method-assign]
+        self._exchange = self._simulated_exchange  # type: ignore[method-assign]
+        if not sim.realtime:
+            self._clock = sim.now
+            self._sleep = sim.advance
+
+    def _simulated_interface(self, plan: Interface, args: Args) -> None:
+        """An interface: the simulator sees its parameters' values first (a transmission may
+        command one), then it runs as it always does."""
+        assert self._sim is not None
+        self._sim.interface(plan, args)
+        Robot._interface(self, plan, args)
+
+    def _simulated_exchange(self, plan: Primitive, values: Args, local: Args) -> None:
+        """A primitive against the simulator: its request is encoded as for a port (the I/O
+        callbacks see it written, and what a port refuses is refused), the simulator takes the
+        parameters' values and gives the reply's, which meet the `expect` and go to the
+        post-actions as a reply read from a port would."""
+        assert self._sim is not None
+        request, _fields, levels = self._request(plan, values, local)
+        reply = self._sim.exchange(plan, local)
+        if self._io_callbacks:
+            if levels is not None:
+                self._notify_io("lines", plan.connection, _lines_text(levels))
+            if request:
+                self._notify_io("write", plan.connection, request)
+        if plan.answers:  # one reply for each, meeting its own expect
+            reply = [self._met(answer, local, one) for answer, one in zip(plan.answers, reply)]
+        elif plan.expects_reply and not plan.in_parts:
+            reply = self._met(plan, local, reply)
+        self._store(plan, local, reply)
