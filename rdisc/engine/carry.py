@@ -71,11 +71,10 @@ def _type_checking(node: ast.stmt) -> bool:
 
 
 def section(module: str, what: str, text: str) -> Section:
-    """A module's text split into its head and its body; a head with anything but a docstring,
-    imports from the standard library or the engine, and `if TYPE_CHECKING:` over the engine's
-    imports is refused (ValueError): the engine needs nothing else."""
-    tree = ast.parse(text)
-    statements = tree.body
+    """A module's text split into its head (its docstring, its imports, `if TYPE_CHECKING:` over
+    imports of the engine) and its body. An import of rdisc outside the engine, or a top-level
+    import after the head, is refused (ValueError): a driver would carry it."""
+    statements = ast.parse(text).body
     end = 0
     imports: list[ast.Import | ast.ImportFrom] = []
     for at, node in enumerate(statements):
@@ -88,6 +87,10 @@ def section(module: str, what: str, text: str) -> Section:
         elif not (docstring or _own(node) or _type_checking(node)):
             break
         end = node.end_lineno or end
+    for node in statements:
+        if node.lineno > end and (isinstance(node, (ast.Import, ast.ImportFrom))
+                                  or (isinstance(node, ast.If) and ast.unparse(node.test) == "TYPE_CHECKING")):
+            raise ValueError(f"{module}: line {node.lineno}: an import after the first definition")
     lines = text.split("\n")
     return Section(module, what, "\n".join(lines[:end]), "\n".join(lines[end:]).strip("\n"), tuple(imports))
 

@@ -128,6 +128,8 @@ def test_the_package_exports_every_public_name_of_its_modules() -> None:
 def test_the_carrier_refuses_a_head_that_imports_rdisc_outside_the_engine() -> None:
     with pytest.raises(ValueError, match="imports nothing of rdisc but itself"):
         carry.section("bad", "", '"""Bad."""\n\nfrom rdisc.runtime import load\n\nX = 1\n')
+    with pytest.raises(ValueError, match="line 5: an import after the first definition"):
+        carry.section("late", "", '"""Late."""\n\nX = 1\n\nimport os\n')
     part = carry.section("good", "", '"""Good."""\n\nimport os\nfrom rdisc.engine.errors import RdisError\n\n'
                                      "# a comment is carried\nX = os.sep\n")
     assert part.body == "# a comment is carried\nX = os.sep"
