@@ -271,11 +271,11 @@ def _side(name: str, parts: tuple[m.FramePart, ...] | None, payload: list[Row], 
         out[0] += f", {sum(rows[i][0] or 0 for i in optional)} of them optional (a reply may lack them)"
     out.append(f"  {'offset':>6}  {'size':>4}  {'kind':<20}  value")
     offset: int | None = 0
-    for i, (size, what, detail) in enumerate(rows):
+    for i, (width, what, detail) in enumerate(rows):
         at = f"{offset:>6}" if offset is not None else f"{'?':>6}"
         what = f"{what} (optional)" if i in optional else what
-        out.append(f"  {at}  {size if size is not None else 'n':>4}  {what:<20}  {detail}")
-        offset = offset + size if offset is not None and size is not None else None
+        out.append(f"  {at}  {width if width is not None else 'n':>4}  {what:<20}  {detail}")
+        offset = offset + width if offset is not None and width is not None else None
     return out
 
 
