@@ -360,7 +360,8 @@ class BodyRules:
         if not decl.bindings:
             self.d.report("E605", decl.name.span, f"transmission `{decl.name.text}` neither commands nor measures "
                           f"joint `{joint.name}`", help="add `command QUANTITY to ...` or `measure QUANTITY from ...`")
-        commands, measures = [], []
+        commands: list[m.Binding] = []
+        measures: list[m.Binding] = []
         for binding in decl.bindings:
             checked = self.binding(binding, joint, primitives, interfaces, states)
             if checked is not None:

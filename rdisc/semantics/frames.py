@@ -451,12 +451,12 @@ class FrameRules:
             options.setdefault(option.word, option)
         values: dict[str, int] = {}
         for word in ("mask", "poly", "init", "xorout", "width"):
-            option = options.get(word)
-            if option is None or option.value is None:
+            given = options.get(word)
+            if given is None or given.value is None:
                 continue
-            value = self.setting(option.value, f"`{word}`")
+            value = self.setting(given.value, f"`{word}`")
             if value is not None and (value != int(value) or value < 0):
-                d.report("E502", option.value.span, f"`{word}` is a non-negative integer")
+                d.report("E502", given.value.span, f"`{word}` is a non-negative integer")
             elif value is not None:
                 values[word] = int(value)
         size_bits = None
