@@ -206,7 +206,7 @@ def _ranges(params: tuple[m.Parameter, ...]) -> list[list[int | float] | None] |
     """Each parameter's `[low, high]` (null without a range); left out when none has one."""
     if all(p.low is None for p in params):
         return None
-    return [None if p.low is None else [p.low, p.high] for p in params]  # type: ignore[list-item]
+    return [None if p.low is None or p.high is None else [p.low, p.high] for p in params]  # both, or neither
 
 
 def _defaults(params: tuple[m.Parameter, ...]) -> list[str | None] | None:

@@ -173,9 +173,10 @@ def _value_text(value: m.Expr, element: int | None, fmt: str) -> str:
     `fmt`, the struct format of its one code."""
     if element is None:
         return _shown(value, fmt)
-    if isinstance(value, m.Const) and isinstance(value.type, m.Array):
-        return _shown(m.Const(value.value[element], value.type.element), fmt)  # type: ignore[index]
-    return expression_text(m.Element(value, m.Const(element, m.Type.INT), value.type.element))  # type: ignore[union-attr]
+    assert isinstance(value.type, m.Array), "only an array's value has elements"
+    if isinstance(value, m.Const) and isinstance(value.value, tuple):
+        return _shown(m.Const(value.value[element], value.type.element), fmt)
+    return expression_text(m.Element(value, m.Const(element, m.Type.INT), value.type.element))
 
 
 def _shown(value: m.Expr, fmt: str) -> str:
