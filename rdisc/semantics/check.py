@@ -922,6 +922,7 @@ class _Checker:
         without a frame, each entry's size fixed (the tag says how much follows it)."""
         key = clause.key.text
         tag_slot = None
+        param: m.Parameter | None
         if clause.tag is not None:
             try:
                 layout = formats.struct_layout(clause.tag.value)
@@ -937,7 +938,7 @@ class _Checker:
             if not self.sub_payloads(clause, name, unframed):
                 return None
         else:
-            param = next((p for p in params if p.name == key), None)  # type: ignore[assignment]
+            param = next((p for p in params if p.name == key), None)
         if param is None:
             self.d.report("E103", clause.key.span, f"`{key}` is not a parameter of `{name.text}`",
                           help=suggest(key, [p.name for p in params]) or "a reply table's key is a parameter")
@@ -1191,7 +1192,7 @@ class _Checker:
             seen.add((part.name, part.value))
             computed = self.typer.value_over(part.value, known)
             direct = isinstance(part.value, m.Var) and part.value.name in spans
-            span = spans[part.value.name] if direct else clause.span  # type: ignore[union-attr]
+            span = spans[part.value.name] if isinstance(part.value, m.Var) and direct else clause.span
             where = f" of frame `{frame.name}`" if direct else f" as field `{part.name}` of frame `{frame.name}`"
             if isinstance(part, m.BitField):
                 if isinstance(computed, int) and not isinstance(computed, bool) and not 0 <= computed < 1 << part.width:
@@ -1465,9 +1466,10 @@ class _Checker:
 
     def value_of(self, expr: m.Expr) -> m.Expr:
         """A constant expression as its value; any other as it is."""
-        if not self.typer.is_constant(expr) or expr.type is None:
+        value = self.typer.constant(expr)
+        if value is None or expr.type is None:  # not constant (a constant's value is never None)
             return expr
-        return self.typer.const(self.typer.constant(expr), expr.type, expr.span)  # type: ignore[arg-type]
+        return self.typer.const(value, expr.type, expr.span)
 
     def loop_values(self, stmt: ast.ForStmt, u: _Unrolling,
                     loops: dict[str, ast.Ident]) -> tuple[Type, Sequence[m.Value]] | None:
@@ -1511,7 +1513,9 @@ class _Checker:
                               "known only when it runs", help="loop over its indexes and read its elements: "
                               f"`for i in 0..{over.type.size - 1} {{ ... {name}[i] ... }}`")
                 return None
-            return over.type.element, self.typer.constant(over)  # type: ignore[return-value]
+            values = self.typer.constant(over)
+            assert isinstance(values, tuple)  # a constant array's value
+            return over.type.element, values
         ends = [self.typer.expr(end, env) for end in (low_expr, high_expr)]
         if any(end.type is None for end in ends):
             return None
@@ -1565,12 +1569,12 @@ class _Checker:
                 self.constants_into_pack(prim, args, stmt.call.args)
         delay_clause = self.once(list(stmt.delays), "`delay`", stmt.call.target)
         delay = self.duration(delay_clause, "a delay") if isinstance(delay_clause, ast.Duration) else 0
-        if delay is not None and delay < 0:
-            self.d.report("E204", delay_clause.span, f"a delay must be zero or more, not {delay:g} ms")  # type: ignore[union-attr]
+        if delay_clause is not None and delay is not None and delay < 0:
+            self.d.report("E204", delay_clause.span, f"a delay must be zero or more, not {delay:g} ms")
         priority_expr = self.once(list(stmt.priorities), "`priority`", stmt.call.target)
         priority = self.setting(priority_expr, "a priority", MAX_PRIORITY) if priority_expr is not None else 0
-        if priority is not None and priority != int(priority):
-            self.d.report("E204", priority_expr.span, "a priority must be an integer")  # type: ignore[union-attr]
+        if priority_expr is not None and priority is not None and priority != int(priority):
+            self.d.report("E204", priority_expr.span, "a priority must be an integer")
         self.once(list(stmt.conditions), "`when`", stmt.call.target)
         when = self.typer.expr(stmt.conditions[0], env) if stmt.conditions else None
         if when is not None and when.type is not None and when.type is not Type.BOOL:

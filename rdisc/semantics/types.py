@@ -154,7 +154,7 @@ class Typer:
                 return self._member(e)
         raise AssertionError(f"unknown expression node {e!r}")
 
-    def const(self, value: m.Value, type_: Type, span: Span | None) -> m.Expr:
+    def const(self, value: m.Value, type_: AnyType, span: Span | None) -> m.Expr:
         """A constant the checker puts in (a parameter's default, in a call that leaves it out)."""
         return self._const(m.Const(value, type_, span))
 
