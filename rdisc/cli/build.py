@@ -7,7 +7,7 @@ import argparse
 from rdisc.cli.output import compile_and_write
 
 
-def add_parser(verbs) -> None:
+def add_parser(verbs: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     p = verbs.add_parser("build", help="write the canonical JSON of a description")
     p.add_argument("file", metavar="FILE", help="an .rdis (or .json) description")
     p.add_argument("-o", "--output", metavar="OUT", help="where to write the JSON (default: stdout)")
@@ -17,4 +17,4 @@ def add_parser(verbs) -> None:
 def run(args: argparse.Namespace) -> int:
     from rdisc.emit.canonical import to_json
 
-    return compile_and_write(args.file, args.output, lambda c: to_json(c.model))  # type: ignore[arg-type]
+    return compile_and_write(args.file, args.output, lambda model, _: to_json(model))

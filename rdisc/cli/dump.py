@@ -8,7 +8,7 @@ import argparse
 from rdisc.cli.output import compile_and_write
 
 
-def add_parser(verbs) -> None:
+def add_parser(verbs: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     p = verbs.add_parser("dump", help="print each primitive's wire layout (a byte table)",
                          description="Print the bytes of each primitive's request and reply, frames included.")
     p.add_argument("file", metavar="FILE", help="an .rdis (or thesis-style .json) description")
@@ -19,4 +19,4 @@ def add_parser(verbs) -> None:
 def run(args: argparse.Namespace) -> int:
     from rdisc.emit.dump import dump
 
-    return compile_and_write(args.file, args.output, lambda c: dump(c.model))  # type: ignore[arg-type]
+    return compile_and_write(args.file, args.output, lambda model, _: dump(model))

@@ -25,4 +25,4 @@ def add_parser(verbs: argparse._SubParsersAction[argparse.ArgumentParser]) -> No
 def run(args: argparse.Namespace) -> int:
     from rdisc.emit.mjcf import to_mjcf
 
-    return compile_and_write(args.file, args.output, lambda c: to_mjcf(c.model))  # type: ignore[arg-type]
+    return compile_and_write(args.file, args.output, lambda model, _: to_mjcf(model))

@@ -15,7 +15,7 @@ import os
 from rdisc.cli.output import compile_and_write
 
 
-def add_parser(verbs) -> None:
+def add_parser(verbs: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     p = verbs.add_parser(
         "emit-python", help="write a standalone Python driver for a description",
         description="Compile a description into a Python driver module (standard library and pyserial only).",
@@ -30,4 +30,4 @@ def run(args: argparse.Namespace) -> int:
 
     name = os.path.basename(args.file)
     return compile_and_write(args.file, args.output,
-                             lambda c: to_python(c.model, name, sources=c.sources))  # type: ignore[arg-type]
+                             lambda model, sources: to_python(model, name, sources=sources))

@@ -15,7 +15,7 @@ import os
 from rdisc.cli.output import emit_body
 
 
-def add_parser(verbs) -> None:
+def add_parser(verbs: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     p = verbs.add_parser("emit-ros", help="write a ROS 1 node (rospy) for a description",
                          description="Compile a description into a ROS 1 node: its Python driver and a ROS bridge.")
     p.add_argument("file", metavar="FILE", help="an .rdis (or thesis-style .json) description")
@@ -28,4 +28,4 @@ def run(args: argparse.Namespace) -> int:
 
     name = os.path.basename(args.file)
     return emit_body("emit-ros", args.file, args.output,  # a body XML cannot carry is refused as emit-urdf does
-                     lambda c: to_ros(c.model, name, sources=c.sources))  # type: ignore[arg-type]
+                     lambda model, sources: to_ros(model, name, sources=sources))

@@ -22,4 +22,4 @@ def run(args: argparse.Namespace) -> int:
     from rdisc.emit.sdf import to_sdf
 
     name = os.path.basename(args.file)
-    return emit_body("emit-sdf", args.file, args.output, lambda c: to_sdf(c.model, name))  # type: ignore[arg-type]
+    return emit_body("emit-sdf", args.file, args.output, lambda model, _: to_sdf(model, name))

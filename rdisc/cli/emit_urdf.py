@@ -22,4 +22,4 @@ def run(args: argparse.Namespace) -> int:
     from rdisc.emit.urdf import to_urdf
 
     name = os.path.basename(args.file)
-    return emit_body("emit-urdf", args.file, args.output, lambda c: to_urdf(c.model, name))  # type: ignore[arg-type]
+    return emit_body("emit-urdf", args.file, args.output, lambda model, _: to_urdf(model, name))

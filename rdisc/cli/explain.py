@@ -9,7 +9,7 @@ from rdisc.cli.output import EXIT_OK, EXIT_USAGE
 from rdisc.diagnostics.codes import CODES, lookup
 
 
-def add_parser(verbs) -> None:
+def add_parser(verbs: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     p = verbs.add_parser("explain", help="explain a diagnostic code (E102, unknown-element); all codes without one")
     p.add_argument("code", nargs="?", metavar="CODE")
     p.set_defaults(run=run)
@@ -17,8 +17,8 @@ def add_parser(verbs) -> None:
 
 def run(args: argparse.Namespace) -> int:
     if args.code is None:
-        for code in CODES.values():
-            print(f"{code.id}  {code.name}")
+        for known in CODES.values():
+            print(f"{known.id}  {known.name}")
         return EXIT_OK
     code = lookup(args.code)
     if code is None:

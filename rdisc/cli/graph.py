@@ -6,11 +6,16 @@ from __future__ import annotations
 import argparse
 import os
 import sys
+from typing import TYPE_CHECKING
 
 from rdisc.cli.output import EXIT_USAGE, compile_and_write
 
+if TYPE_CHECKING:
+    from rdisc.semantics.model import Model
+    from rdisc.source import Sources
 
-def add_parser(verbs) -> None:
+
+def add_parser(verbs: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     p = verbs.add_parser("graph", help="draw the description as a graph (SVG by Graphviz, or DOT)",
                          description="Draw connections, frames, primitives, interfaces, inputs, outputs, adapters, "
                                      "state and settings, with an edge for each reference. -o FILE.svg lays it out "
@@ -26,10 +31,9 @@ def run(args: argparse.Namespace) -> int:
 
     as_svg = args.output is not None and args.output.lower().endswith(".svg")
 
-    def render(compilation) -> str:
-        model = compilation.model
+    def render(model: Model, sources: Sources) -> str:
         main = model.robot.span.path if model.robot.span else None
-        text = dot(model, lambda span: place(span, compilation.sources, main, os.path.basename(args.file)))
+        text = dot(model, lambda span: place(span, sources, main, os.path.basename(args.file)))
         return svg(text) if as_svg else text
 
     try:

@@ -16,7 +16,7 @@ from rdisc.diagnostics import Diagnostics
 from rdisc.source import Sources
 
 
-def add_parser(verbs) -> None:
+def add_parser(verbs: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     p = verbs.add_parser("import", help="turn a thesis-style JSON description into .rdis source")
     p.add_argument("file", metavar="FILE", help="a JSON description (Appendix B shape)")
     p.add_argument("-o", "--output", metavar="OUT", help="where to write the .rdis source (default: stdout)")

@@ -8,6 +8,7 @@ from collections.abc import Callable, Iterable
 
 from rdisc.compile import Compilation, compile_path
 from rdisc.semantics.model import Model
+from rdisc.source import Sources
 
 EXIT_OK, EXIT_ERRORS, EXIT_USAGE = 0, 1, 2
 
@@ -21,8 +22,8 @@ def show(compilations: list[Compilation]) -> None:
 
     from rdisc.diagnostics.text import render
 
-    sources = {path: src for c in compilations for path, src in c.sources.items()}
-    Console(stderr=True, highlight=False).print(render(items, sources), soft_wrap=True)  # type: ignore[arg-type]
+    sources = Sources((path, src) for c in compilations for path, src in c.sources.items())
+    Console(stderr=True, highlight=False).print(render(items, sources), soft_wrap=True)
 
 
 def exit_code(compilations: list[Compilation]) -> int:
@@ -64,17 +65,18 @@ def checked_model(path: str) -> Model | int:
     return compilation.model
 
 
-def compile_and_write(path: str, output: str | None, render: Callable[[Compilation], str]) -> int:
-    """Check a description, show its diagnostics, and write what `render` makes of it when
-    it has no errors: the shape of every verb that turns a description into a file."""
+def compile_and_write(path: str, output: str | None, render: Callable[[Model, Sources], str]) -> int:
+    """Check a description, show its diagnostics, and write what `render` makes of its model
+    (and the files read) when it has no errors: the shape of every verb that turns a
+    description into a file."""
     compilation = compile_path(path)
     show([compilation])
     if compilation.model is None or compilation.diagnostics.has_errors():
         return exit_code([compilation]) or EXIT_ERRORS
-    return write(render(compilation), output, list(compilation.sources))
+    return write(render(compilation.model, compilation.sources), output, list(compilation.sources))
 
 
-def emit_body(verb: str, path: str, output: str | None, render: Callable[[Compilation], str]) -> int:
+def emit_body(verb: str, path: str, output: str | None, render: Callable[[Model, Sources], str]) -> int:
     """`compile_and_write` for the body's formats: a description with no body is an error
     of its own, said in a line, exit 1, nothing written."""
     from rdisc.emit.body_xml import BodyError

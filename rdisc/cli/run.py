@@ -19,7 +19,7 @@ from rdisc import engine
 from rdisc.cli.output import checked_model
 
 
-def add_parser(verbs) -> None:
+def add_parser(verbs: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     p = verbs.add_parser(
         "run", help="run a description against a device: calls, outputs, I/O trace",
         description="Connect to a device, perform calls and show outputs. The terminate hooks always run at the end.",

@@ -206,7 +206,7 @@ def _ranges(params: tuple[m.Parameter, ...]) -> list[list[int | float] | None] |
     """Each parameter's `[low, high]` (null without a range); left out when none has one."""
     if all(p.low is None for p in params):
         return None
-    return [None if p.low is None else [p.low, p.high] for p in params]  # type: ignore[list-item]
+    return [None if p.low is None or p.high is None else [p.low, p.high] for p in params]  # both, or neither
 
 
 def _defaults(params: tuple[m.Parameter, ...]) -> list[str | None] | None:
@@ -456,18 +456,22 @@ def _expr(e: m.Expr) -> p.Printed:
 def _const(value: m.Value, type_: m.AnyType) -> p.Printed:
     """A constant spelled by its type, so that 1.0 stays a float and True a bool."""
     if isinstance(type_, m.Array):
-        return p.array([_const(v, type_.element) for v in value])  # type: ignore[union-attr]
+        assert isinstance(value, tuple), "an array's value is a tuple"
+        return p.array([_const(v, type_.element) for v in value])
     match type_:
         case Type.INT:
+            assert isinstance(value, (int, float)), "a checked int constant is a number"
             return p.literal(int(value))
         case Type.FLOAT:
+            assert isinstance(value, (int, float)), "a checked float constant is a number"
             return p.literal(float(value))
         case Type.BOOL:
             return p.literal(bool(value))
         case Type.STRING:
             return p.literal(str(value))
         case Type.BYTES:
-            return p.literal(bytes(value))  # type: ignore[arg-type]
+            assert isinstance(value, bytes), "a checked bytes constant is bytes"
+            return p.literal(value)
         case _:
             _unreachable(type_)
 

@@ -173,9 +173,10 @@ def _value_text(value: m.Expr, element: int | None, fmt: str) -> str:
     `fmt`, the struct format of its one code."""
     if element is None:
         return _shown(value, fmt)
-    if isinstance(value, m.Const) and isinstance(value.type, m.Array):
-        return _shown(m.Const(value.value[element], value.type.element), fmt)  # type: ignore[index]
-    return expression_text(m.Element(value, m.Const(element, m.Type.INT), value.type.element))  # type: ignore[union-attr]
+    assert isinstance(value.type, m.Array), "only an array's value has elements"
+    if isinstance(value, m.Const) and isinstance(value.value, tuple):
+        return _shown(m.Const(value.value[element], value.type.element), fmt)
+    return expression_text(m.Element(value, m.Const(element, m.Type.INT), value.type.element))
 
 
 def _shown(value: m.Expr, fmt: str) -> str:
@@ -271,11 +272,11 @@ def _side(name: str, parts: tuple[m.FramePart, ...] | None, payload: list[Row], 
         out[0] += f", {sum(rows[i][0] or 0 for i in optional)} of them optional (a reply may lack them)"
     out.append(f"  {'offset':>6}  {'size':>4}  {'kind':<20}  value")
     offset: int | None = 0
-    for i, (size, what, detail) in enumerate(rows):
+    for i, (width, what, detail) in enumerate(rows):
         at = f"{offset:>6}" if offset is not None else f"{'?':>6}"
         what = f"{what} (optional)" if i in optional else what
-        out.append(f"  {at}  {size if size is not None else 'n':>4}  {what:<20}  {detail}")
-        offset = offset + size if offset is not None and size is not None else None
+        out.append(f"  {at}  {width if width is not None else 'n':>4}  {what:<20}  {detail}")
+        offset = offset + width if offset is not None and width is not None else None
     return out
 
 

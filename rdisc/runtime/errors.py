@@ -6,6 +6,8 @@ carries the engine, so code written against one works with the other.
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from rdisc.engine import (
     RdisCallbackError,
     RdisConnectionError,
@@ -14,6 +16,10 @@ from rdisc.engine import (
     RdisTimeout,
     RdisValueError,
 )
+
+if TYPE_CHECKING:
+    from rdisc.compile import Compilation
+    from rdisc.diagnostics import Diagnostic
 
 __all__ = ["RdisCallbackError", "RdisConnectionError", "RdisError", "RdisLoadError", "RdisProtocolError",
            "RdisTimeout", "RdisValueError"]
@@ -26,13 +32,13 @@ class RdisLoadError(RdisError):
     generated from a description without errors).
     """
 
-    def __init__(self, message: str, diagnostics: tuple = (), sources: object = None) -> None:
+    def __init__(self, message: str, diagnostics: tuple[Diagnostic, ...] = (), sources: object = None) -> None:
         super().__init__(message)
         self.diagnostics = diagnostics
         self.sources = sources
 
     @classmethod
-    def from_compilation(cls, path: str, compilation) -> RdisLoadError:  # compilation: rdisc.compile.Compilation
+    def from_compilation(cls, path: str, compilation: Compilation) -> RdisLoadError:
         from rdisc.diagnostics.text import render_plain
 
         items = compilation.diagnostics.sorted()

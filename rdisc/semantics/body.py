@@ -83,10 +83,11 @@ class BodyRules:
         value = self.typer.constant(node)
         items = value if isinstance(value, tuple) else None
         floats = [_finite(v) if type(v) in (int, float) else None for v in items or ()]
-        if items is None or None in floats:
+        finite = tuple(f for f in floats if f is not None)
+        if items is None or len(finite) != len(floats):
             self.d.report("E602", expr.span, f"{what} must be constant finite numbers, written `[x, y, z]`")
             return None
-        return tuple(floats)  # type: ignore[arg-type]  # no None in them
+        return finite
 
     def positive(self, expr: ast.Expr, what: str, code: str, zero: bool = False,
                  most: float = math.inf, unit: str = "") -> float | None:
@@ -139,9 +140,10 @@ class BodyRules:
             return None
         size = [self.positive(a, f"a {kind_name}'s {n}", "E602", most=MAX_LENGTH, unit="m")
                 for a, n in zip(args, names, strict=True)]
-        if origin is None or any(v is None for v in size):
+        sizes = tuple(v for v in size if v is not None)
+        if origin is None or len(sizes) != len(size):
             return None
-        return m.Shape(kind, tuple(size), origin, None, use.span)  # type: ignore[arg-type]
+        return m.Shape(kind, sizes, origin, None, use.span)
 
     def mesh(self, use: ast.ShapeUse, origin: m.Pose | None) -> m.Shape | None:
         """`mesh("file.stl")` or `mesh("file.stl", scale)`, the scale one number or three."""
@@ -181,15 +183,15 @@ class BodyRules:
         mass_expr = self.once(values, "mass", decl.name)
         centre_expr = self.once(values, "centre", decl.name)
         inertia_expr = self.once(values, "inertia", decl.name)
-        if mass_expr is None and inertia_expr is None:
-            if centre_expr is not None:
-                self.d.report("E604", centre_expr.span, f"link `{decl.name.text}` has a centre of mass but no mass",
-                              help="give its `mass` (kg) and `inertia` too")
-            return None
         if mass_expr is None or inertia_expr is None:
             given = mass_expr or inertia_expr
+            if given is None:
+                if centre_expr is not None:
+                    self.d.report("E604", centre_expr.span, f"link `{decl.name.text}` has a centre of mass but no "
+                                  "mass", help="give its `mass` (kg) and `inertia` too")
+                return None
             missing = "inertia" if inertia_expr is None else "mass"
-            self.d.report("E604", given.span, f"link `{decl.name.text}` has no {missing}",  # type: ignore[union-attr]
+            self.d.report("E604", given.span, f"link `{decl.name.text}` has no {missing}",
                           help="a link's inertial is its `mass` (kg) and `inertia` (kg m²) together")
             return None
         mass = self.positive(mass_expr, "a link's mass", "E604", most=MAX_MASS, unit="kg")
@@ -380,7 +382,8 @@ class BodyRules:
         if not decl.bindings:
             self.d.report("E605", decl.name.span, f"transmission `{decl.name.text}` neither commands nor measures "
                           f"joint `{joint.name}`", help="add `command QUANTITY to ...` or `measure QUANTITY from ...`")
-        commands, measures = [], []
+        commands: list[m.Binding] = []
+        measures: list[m.Binding] = []
         for binding in decl.bindings:
             checked = self.binding(binding, joint, primitives, interfaces, states)
             if checked is not None:
@@ -405,11 +408,12 @@ class BodyRules:
             is_interface = primitive is None
             if params is None:  # unknown: reported
                 return None
-            member = b.member.text  # type: ignore[union-attr]  # a command names its parameter
+            assert b.member is not None  # a command names its parameter (the parser and the importer see to it)
+            member = b.member.text
             param = next((p for p in params if p.name == member), None)
             if param is None:
                 kind = "interface" if is_interface else "primitive"
-                self.d.report("E605", b.member.span, f"{kind} `{target}` has no parameter `{member}`",  # type: ignore[union-attr]
+                self.d.report("E605", b.member.span, f"{kind} `{target}` has no parameter `{member}`",
                               help=suggest(member, [p.name for p in params]))
                 return None
             device = param.type
@@ -417,7 +421,7 @@ class BodyRules:
             if param.unit is not None and not carries(param.unit, quantity):
                 decl = self.s.primitives.get(target) or self.s.interfaces.get(target)
                 unit = next((p.unit for p in decl.params if p.name.text == member), None) if decl else None
-                self.d.report("E605", b.member.span,  # type: ignore[union-attr]
+                self.d.report("E605", b.member.span,
                               f"`{target}.{member}` is in {param.unit}, {UNITS[param.unit].value}, but the "
                               f"transmission commands joint `{joint.name}`'s {quantity.value}, "
                               f"{dimension_of(quantity, joint.kind).value}",

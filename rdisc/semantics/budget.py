@@ -17,7 +17,7 @@ from rdisc.semantics import model as m
 from rdisc.semantics.frames import length_part, length_range
 
 BITS_PER_BYTE = 10  # 8N1: start bit, 8 data bits, stop bit
-_SAMPLE = {m.Type.INT: 0, m.Type.FLOAT: 0.0, m.Type.BOOL: False, m.Type.STRING: ""}
+_SAMPLE: dict[m.AnyType, m.Value] = {m.Type.INT: 0, m.Type.FLOAT: 0.0, m.Type.BOOL: False, m.Type.STRING: ""}
 
 
 @dataclass(frozen=True, slots=True)

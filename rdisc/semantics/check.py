@@ -11,6 +11,7 @@ from __future__ import annotations
 import math
 from collections.abc import Iterator, Sequence
 from dataclasses import dataclass, replace
+from typing import Protocol, TypeVar
 
 from rdisc.diagnostics import Diagnostics, Label, abbreviate
 from rdisc.limits import MAX_ARRAY, MAX_INT
@@ -21,7 +22,7 @@ from rdisc.semantics.frames import FrameRules, length_part, length_range, length
 from rdisc.semantics.model import Scope, Type
 from rdisc.semantics.operators import shown
 from rdisc.semantics.resolve import Symbols, Unit, check_name, suggest
-from rdisc.semantics.types import Env, Typer, describe, unify
+from rdisc.semantics.types import Env, Names, Typer, describe, unify
 from rdisc.semantics.units import UNITS
 from rdisc.source import Span
 from rdisc.syntax import ast
@@ -48,6 +49,14 @@ _TYPES = {t.value: t for t in Type}
 _NOTHING = Env({}, "where a constant is needed", "")
 
 
+class _Spanned(Protocol):
+    @property
+    def span(self) -> Span: ...
+
+
+_Clause = TypeVar("_Clause", bound=_Spanned)
+
+
 @dataclass(frozen=True, slots=True)
 class _Unrolling:
     """What the statements of one interface's body are checked against, and the calls made."""
@@ -70,7 +79,7 @@ class _Checker:
         self.d = diagnostics
         self.typer = Typer(diagnostics)
         self.main_decls = {id(decl) for unit in units if unit.main for decl in unit.module.decls}
-        self.state_env: dict[str, tuple[Scope, Type]] = {}
+        self.state_env: dict[str, tuple[Scope, m.AnyType]] = {}
         self.frames: dict[str, m.Frame] = {}
         self.primitives: dict[str, m.Primitive] = {}
         self.written = 0  # calls in the interfaces' bodies, loops written out
@@ -83,8 +92,8 @@ class _Checker:
         states = {name: self.state(decl) for name, decl in self.s.states.items()}
         self.typer.settings = set(self.s.settings)
         settings = self.settings = {name: self.user_setting(decl) for name, decl in self.s.settings.items()}
-        self.state_env = {n: (Scope.STATE, s.type) for n, s in settings.items()}  # type: ignore[misc]
-        self.state_env.update({n: (Scope.STATE, s.type) for n, s in states.items()})  # type: ignore[misc]
+        self.state_env = {n: (Scope.STATE, s.type) for n, s in settings.items()}
+        self.state_env.update({n: (Scope.STATE, s.type) for n, s in states.items()})
         for keyword, name in self.s.damaged:  # lost to a syntax error: readable, of unknown type
             if keyword in ("state", "setting"):
                 self.state_env.setdefault(name, (Scope.STATE, None))  # type: ignore[arg-type]
@@ -109,7 +118,7 @@ class _Checker:
         links = {name: body.link(decl) for name, decl in self.s.links.items()}
         joints = {j.name: j for j in (body.joint(decl) for decl in self.s.joints.values()) if j is not None}
         joints = body.tree(links, joints)
-        transmissions = {name: body.transmission(decl, joints, primitives, interface_params, states)  # type: ignore[arg-type]
+        transmissions = {name: body.transmission(decl, joints, primitives, interface_params, states)
                          for name, decl in self.s.transmissions.items()}
         robot = self.robot()
         self.unused(interfaces)
@@ -118,12 +127,12 @@ class _Checker:
         return m.Model(
             robot=robot,
             states=states,
-            connections=connections,  # type: ignore[arg-type]
-            primitives=primitives,  # type: ignore[arg-type]
+            connections=connections,
+            primitives=primitives,
             interfaces=interfaces,
             adapters=adapters,
-            inputs=inputs,  # type: ignore[arg-type]
-            outputs=outputs,  # type: ignore[arg-type]
+            inputs=inputs,
+            outputs=outputs,
             frames=self.frames,
             constants={n: v for n, v in constants.items() if v is not None},
             tables={n: t for n, t in tables.items() if t is not None},
@@ -143,6 +152,10 @@ class _Checker:
         such as a reply's group repeated as the message says."""
         if isinstance(ref, ast.ArrayOf):
             return self.array_type(ref, what, open_size)
+        return self.scalar_type(ref, what)
+
+    def scalar_type(self, ref: ast.Ident, what: str) -> Type | None:
+        """A type named by a word (`int`), as `type_name` says."""
         found = _TYPES.get(ref.text)
         if found is None:
             self.d.report(
@@ -156,7 +169,7 @@ class _Checker:
         return found
 
     def array_type(self, ref: ast.ArrayOf, what: str, open_size: bool) -> m.Array | None:
-        element = self.type_name(ref.element, what)
+        element = self.scalar_type(ref.element, what)
         if element is None:
             return None
         if element is Type.BYTES:
@@ -228,13 +241,14 @@ class _Checker:
             return None
         if not self.typer.kept(constant, p.default.span):  # 64 bits and a sign, as a float can hold
             return None
-        constant = m.coerce(constant, type_)
+        if type_ is not None:
+            constant = m.coerce(constant, type_)
         for item in constant if isinstance(constant, tuple) else (constant,):
             if low is not None and high is not None and not _in_range(item, low, high):
                 self.d.report("E403", p.default.span, f"{_ranged(item)} is outside the range of {what} "
                               f"`{p.name.text}`", label=f"in {low!r}..{high!r}")
                 return None
-        return constant  # type: ignore[return-value]
+        return constant
 
     def param_range(self, p: ast.Param, type_: Type | None,
                     what: str = "parameter") -> tuple[float | None, float | None]:
@@ -263,12 +277,13 @@ class _Checker:
             return None, None
         return (int(low), int(high)) if type_ is not Type.FLOAT else (float(low), float(high))
 
-    def env_with(self, extra: dict[str, tuple[Scope, m.AnyType]], where: str, sees: str, **kw) -> Env:
+    def env_with(self, extra: Names, where: str, sees: str, reply: tuple[m.AnyType, ...] | None = None,
+                 reply_note: str | None = None, reply_known: bool = True) -> Env:
         names = dict(self.state_env)
         names.update(extra)
-        return Env(names, where, sees, **kw)
+        return Env(names, where, sees, reply, reply_note, reply_known)
 
-    def flow(self, value: m.Expr, target: Type | None, span: Span, into: str) -> None:
+    def flow(self, value: m.Expr, target: m.AnyType | None, span: Span, into: str) -> None:
         """A value of value.type goes into something of type `target` (int widens to float)."""
         source = value.type
         if source is None or target is None or source == target or (source, target) == (Type.INT, Type.FLOAT):
@@ -299,18 +314,18 @@ class _Checker:
         value = self.typer.constant(node)
         if node.type is None or self.d.error_count > errors:
             return None
-        if node.type not in (Type.INT, Type.FLOAT) or value is None:
+        if node.type not in (Type.INT, Type.FLOAT) or not isinstance(value, (int, float)):
             self.d.report("E204", expr.span, f"{what} must be a constant number")
             return None
         if isinstance(value, float) and not math.isfinite(value):  # float("inf") folds to one
             self.d.report("E204", expr.span, f"{what} must be a finite number, not {value!r}")
             return None
-        if most is not None and not abs(value) * scale <= most:  # type: ignore[operator]
+        if most is not None and not abs(value) * scale <= most:
             self.d.report("E204", expr.span, f"{what} must be at most {most:g}{unit}")
             return None
-        return value * scale  # type: ignore[operator, no-any-return]
+        return value * scale
 
-    def once(self, items: list, what: str, where: ast.Ident) -> object | None:
+    def once(self, items: Sequence[_Clause], what: str, where: ast.Ident) -> _Clause | None:
         """The single clause of a kind; a repeat is reported at the repeat."""
         for extra in items[1:]:
             self.d.report(
@@ -353,7 +368,7 @@ class _Checker:
         for key in ("author", "description", "version"):
             found = self.once([a for a in decl.attrs if a.key == key], f"`{key}`", decl.name)
             if found is not None:
-                attrs[key] = found.value  # type: ignore[attr-defined]
+                attrs[key] = found.value
         return m.Robot(decl.name.text, doc=decl.doc, span=decl.span, **attrs)
 
     def table(self, name: str, decl: ast.ConstDecl) -> m.Table | None:
@@ -361,10 +376,10 @@ class _Checker:
         constant values of one type."""
         assert isinstance(decl.value, ast.TableLit)
         env = Env({}, "in a table", "constants declared before it")
-        entries: dict[object, object] = {}
-        spans: dict[object, Span] = {}
-        key_types: set[Type] = set()
-        value_type: Type | None = None
+        entries: dict[m.Value, m.Value] = {}
+        spans: dict[m.Value, Span] = {}
+        key_types: set[m.AnyType] = set()
+        value_type: m.AnyType | None = None
         errors = self.d.error_count
         if not decl.value.entries:
             self.d.report("E204", decl.value.span, f"table `{name}` is empty", help="give it `key: value` entries")
@@ -390,16 +405,19 @@ class _Checker:
                               labels=(Label(spans[k], "first given here"),))
             elif k is not None:
                 spans[k] = key_expr.span
-                entries[k] = self.typer.constant(value)
+                known = self.typer.constant(value)
+                if known is not None:  # else reported
+                    entries[k] = known
         if len(key_types) > 1:
             self.d.report("E401", decl.value.span, f"the keys of table `{name}` are of one type")
-        if self.d.error_count != errors or not key_types or value_type is None:
+        key_type = next(iter(key_types), None)  # one, or more than one reported
+        if self.d.error_count != errors or not isinstance(key_type, Type) or value_type is None:
             self.typer.failed.add(name)  # reported: its lookups are not reported again
             return None
-        key_type = key_types.pop()
         if value_type is Type.FLOAT:
-            entries = {k: float(v) for k, v in entries.items()}  # type: ignore[arg-type]
+            entries = {k: m.coerce(v, Type.FLOAT) for k, v in entries.items()}
         self.typer.tables[name] = (key_type, value_type, entries)
+        # A table's values may be arrays, which m.Table.value_type (a Type) does not say.
         return m.Table(name, key_type, value_type, tuple(entries.items()), decl.doc)  # type: ignore[arg-type]
 
     def constant(self, decl: ast.ConstDecl) -> m.Value | None:
@@ -414,7 +432,7 @@ class _Checker:
             self.typer.failed.add(decl.name.text)
             return None
         self.typer.named[decl.name.text] = (node.type, value)
-        return value  # type: ignore[return-value]
+        return value
 
     def enum(self, decl: ast.EnumDecl) -> dict[str, int]:
         members: dict[str, int] = {}
@@ -455,8 +473,8 @@ class _Checker:
                 if problem is not None:
                     self.d.report("E108", f.ros.span, problem)
                 path = f.ros.value
-            fields.append(m.AdapterField(f.name.text, self.type_name(f.type, "an adapter field", True), f.unit, path,
-                                         f.doc))  # type: ignore[arg-type]
+            field_type = self.type_name(f.type, "an adapter field", True)  # None: reported
+            fields.append(m.AdapterField(f.name.text, field_type, f.unit, path, f.doc))  # type: ignore[arg-type]
         message = None
         if decl.ros is not None:
             problem = ros.message_problem(decl.ros.value)
@@ -523,7 +541,8 @@ class _Checker:
                           "baud rate", help="standard rates include 9600, 19200, 38400, 57600, 115200")
         return baud
 
-    def connection(self, decl: ast.ConnectionDecl, interface_params) -> m.Connection:
+    def connection(self, decl: ast.ConnectionDecl,
+                   interface_params: dict[str, tuple[m.Parameter, ...]]) -> m.Connection:
         name = decl.name
         if decl.kind.text not in CONNECTION_KINDS:
             self.d.report("E209", decl.kind.span, f"unknown connection kind `{decl.kind.text}`",
@@ -579,8 +598,8 @@ class _Checker:
                 terminator = text
         address_clause = self.once([a for a in decl.attrs if isinstance(a, ast.Address)], "`address`", name)
         address = address_clause.value.value if isinstance(address_clause, ast.Address) else None
-        if decl.kind.text == "tcp" and address is not None and not address.startswith("socket://"):
-            self.d.report("E204", address_clause.value.span, "a tcp connection's address is `socket://HOST:PORT`")  # type: ignore[union-attr]
+        if decl.kind.text == "tcp" and address_clause is not None and not address_clause.value.value.startswith("socket://"):
+            self.d.report("E204", address_clause.value.span, "a tcp connection's address is `socket://HOST:PORT`")
         return m.Connection(
             name.text, decl.kind.text, int(baud or 0), float(frequency or 0), hooks["startup"], hooks["terminate"],
             keepalive, decl.doc, decl.span, terminator, address, baud_setting,
@@ -610,11 +629,11 @@ class _Checker:
         for extra in encodings[1:]:
             self.d.report("E203", extra.span, f"primitive `{name.text}` has more than one of `pack`/`format`",
                           labels=(Label(encodings[0].span, "first given here"),))
-        for extra in decodings[1:]:
-            self.d.report("E203", extra.span, f"primitive `{name.text}` has more than one of `unpack`/`regex`",
+        for repeated in decodings[1:]:
+            self.d.report("E203", repeated.span, f"primitive `{name.text}` has more than one of `unpack`/`regex`",
                           labels=(Label(decodings[0].span, "first given here"),))
-        for extra in action_blocks[1:]:
-            self.d.report("E203", extra.span, f"primitive `{name.text}` has more than one post-action block",
+        for block in action_blocks[1:]:
+            self.d.report("E203", block.span, f"primitive `{name.text}` has more than one post-action block",
                           labels=(Label(action_blocks[0].span, "first given here"),))
         scope = {p.name: (Scope.PARAM, p.type) for p in params}  # one of a type in error: known, of type None
         env = self.env_with(scope, "in a primitive", "its parameters and state variables",
@@ -624,7 +643,7 @@ class _Checker:
         if encodings:
             encoding, args = self.encoding(encodings[0], env)
         decoding: m.Unpack | m.Regex | None = None
-        reply: tuple[Type, ...] | None = ()
+        reply: tuple[m.AnyType, ...] | None = ()
         if decodings:
             decoding, reply = self.decoding(decodings[0])
         records_clause = self.once([c for c in decl.clauses if isinstance(c, ast.Records)], "`reply each until`", name)
@@ -640,7 +659,9 @@ class _Checker:
         actions: tuple[m.PostAction, ...] = ()
         if action_blocks:
             note = None if decodings else f"primitive `{name.text}` reads no reply: add `unpack` or `regex`"
-            collected = tuple(m.Array(t, count) for t in reply) if count and reply is not None else reply
+            # A count only with scalar values (E401 for arrays): out[i] is the array of the i-th values.
+            collected = tuple(m.Array(t, count) if isinstance(t, Type) else t for t in reply) \
+                if count and reply is not None else reply
             action_env = self.env_with(
                 scope, "in a post-action", "`out`, parameters and state variables",
                 reply=collected if decodings else None, reply_note=note, reply_known=reply is not None,
@@ -675,9 +696,9 @@ class _Checker:
             self.d.report("E503", decodings[0].span if decodings else name.span,
                           f"the reply of `{name.text}` {open_ends[0]}, but no frame says where the reply ends",
                           help="read it through a frame with a `length` field or constant bytes after its payload")
-        if (tagged and frame is not None and self.frames[frame.frame].reply
+        if (isinstance(table_clause, ast.ReplyTable) and tagged and frame is not None and self.frames[frame.frame].reply
                 and not payload_end_known(self.frames[frame.frame], False)):
-            self.d.report("E505", table_clause.span, f"the reply of `{name.text}` is chosen by its tag, so its frame "  # type: ignore[union-attr]
+            self.d.report("E505", table_clause.span, f"the reply of `{name.text}` is chosen by its tag, so its frame "
                           "must say where the reply ends",
                           help="give the frame's reply a `length` field or constant bytes after its payload, "
                           "or read the reply without a frame")
@@ -686,7 +707,7 @@ class _Checker:
                                           for r in listed)
         if skip is not None and not (tagged and unframed) and not framed_all and (
                 not replies or frame is None or not self.frames[frame.frame].reply):
-            self.d.report("E504", skip.span, f"`skip unmatched` reads past frames that do not decode, but "  # type: ignore[union-attr]
+            self.d.report("E504", skip.span, f"`skip unmatched` reads past frames that do not decode, but "
                           f"`{name.text}` does not decode a framed reply",
                           help="give it a frame with a reply, and `unpack` or `regex`")
         timeout_clause = self.once([c for c in decl.clauses if isinstance(c, ast.ReplyTimeout)], "`timeout`", name)
@@ -868,7 +889,7 @@ class _Checker:
             levels.append(m.LineLevel(line, value, setting.span))
         return tuple(levels)
 
-    def expect(self, decl: ast.PrimitiveDecl, scope: dict[str, tuple[Scope, Type]], reply: tuple[Type, ...] | None,
+    def expect(self, decl: ast.PrimitiveDecl, scope: Names, reply: tuple[m.AnyType, ...] | None,
                decodes: bool) -> m.Expr | None:
         """`expect COND`: a bool over the parameters, state and the decoded reply `out`
         (`reply`, its types: None when its template was reported)."""
@@ -894,13 +915,14 @@ class _Checker:
                 self.d.report("E104", param.name.span, f"`{local}` names {what} of `{decl.name.text}` "
                               "and cannot name a parameter of it", help="rename the parameter")
 
-    def reply_table(self, clause: ast.ReplyTable, params: tuple[m.Parameter, ...], scope: dict,
+    def reply_table(self, clause: ast.ReplyTable, params: tuple[m.Parameter, ...], scope: Names,
                     name: ast.Ident, unframed: bool) -> m.ReplyTable | None:
         """`reply KEY { VALUE: unpack ... }`: one reply per value of an int parameter with a range,
         every value of the range with its entry. `reply tag "fmt" { ... }`: one per tag value; read
         without a frame, each entry's size fixed (the tag says how much follows it)."""
         key = clause.key.text
         tag_slot = None
+        param: m.Parameter | None
         if clause.tag is not None:
             try:
                 layout = formats.struct_layout(clause.tag.value)
@@ -916,7 +938,7 @@ class _Checker:
             if not self.sub_payloads(clause, name, unframed):
                 return None
         else:
-            param = next((p for p in params if p.name == key), None)  # type: ignore[assignment]
+            param = next((p for p in params if p.name == key), None)
         if param is None:
             self.d.report("E103", clause.key.span, f"`{key}` is not a parameter of `{name.text}`",
                           help=suggest(key, [p.name for p in params]) or "a reply table's key is a parameter")
@@ -1103,8 +1125,8 @@ class _Checker:
                 return layout.size + int(param.low), layout.size + int(param.high), f"parameter `{param.name}`"
         return None
 
-    def frame_use(self, clause: ast.Framed, env: Env, decl: ast.PrimitiveDecl, encoding,
-                  replies: list, request: tuple[int, int, str] | None) -> m.FrameUse | None:
+    def frame_use(self, clause: ast.Framed, env: Env, decl: ast.PrimitiveDecl, encoding: m.Pack | m.Format | None,
+                  replies: Sequence[m.Unpack | m.Regex], request: tuple[int, int, str] | None) -> m.FrameUse | None:
         """`frame NAME(args)`: its arguments, and whether the frame can carry this primitive."""
         frame = self.frames.get(clause.frame.text)
         target = self.s.frames.get(clause.frame.text)
@@ -1168,13 +1190,13 @@ class _Checker:
                     or self.typer.is_constant(part.value)):  # a constant field is checked with its frame
                 continue
             seen.add((part.name, part.value))
-            value = self.typer.value_over(part.value, known)
+            computed = self.typer.value_over(part.value, known)
             direct = isinstance(part.value, m.Var) and part.value.name in spans
-            span = spans[part.value.name] if direct else clause.span  # type: ignore[union-attr]
+            span = spans[part.value.name] if isinstance(part.value, m.Var) and direct else clause.span
             where = f" of frame `{frame.name}`" if direct else f" as field `{part.name}` of frame `{frame.name}`"
             if isinstance(part, m.BitField):
-                if isinstance(value, int) and not isinstance(value, bool) and not 0 <= value < 1 << part.width:
-                    self.d.report("E403", span, f"{value} does not fit the {part.width} bits of field "
+                if isinstance(computed, int) and not isinstance(computed, bool) and not 0 <= computed < 1 << part.width:
+                    self.d.report("E403", span, f"{computed} does not fit the {part.width} bits of field "
                                   f"`{part.name}`{where}", label=f"field `{part.name}` is {part.width} bits, "
                                   f"0 to {(1 << part.width) - 1}")
                 continue
@@ -1182,7 +1204,7 @@ class _Checker:
                 slot = formats.struct_layout(part.format).slots[0]
             except (formats.TemplateError, IndexError):  # the frame's own check reported it
                 continue
-            self.fits(value, slot, span, where,
+            self.fits(computed, slot, span, where,
                       f"field `{part.name}` is packed as `{slot.code}`, {slot.low} to {slot.high}")
 
     def template_span(self, lit: ast.StrLit, offset: int, length: int) -> Span:
@@ -1201,7 +1223,7 @@ class _Checker:
             layout = None
             if enc.kind == "pack":
                 layout = formats.struct_layout(template)
-                slots: tuple = layout.slots
+                slots: tuple[formats.Slot | formats.FormatField, ...] = layout.slots
                 if layout.native:
                     self.native_warning(enc.template)
             else:
@@ -1212,8 +1234,8 @@ class _Checker:
             return None, args
         arrays = [(arg, expr) for arg, expr in zip(args, enc.args) if isinstance(arg.type, m.Array)]
         if arrays and enc.kind == "format":
-            arg, expr = arrays[0]
-            self.d.report("E401", expr.span, f"a format field cannot format {describe(arg.type)}",  # type: ignore[arg-type]
+            array, written = arrays[0]
+            self.d.report("E401", written.span, f"a format field cannot format {describe(array.type)}",
                           help="format its elements: `position[0]`")
             return None, args
         values: list[m.Expr] = []  # one a slot: an array spread into its elements, except into a group
@@ -1238,7 +1260,7 @@ class _Checker:
             )
             return None, args
         for arg, expr, slot in zip(values, exprs, slots):
-            if enc.kind == "format":
+            if isinstance(slot, formats.FormatField):  # `format`: every slot is one; `pack`: none is
                 self.format_value(arg, expr, slot)
             elif slot.repeat:
                 self.group_value(arg, expr, slot)
@@ -1314,7 +1336,7 @@ class _Checker:
                           help="write bytes as text with `ascii(...)` or `hex(...)`" if arg.type is Type.BYTES
                           else None)
 
-    def decoding(self, dec: ast.Decoding) -> tuple[m.Unpack | m.Regex | None, tuple[Type, ...] | None]:
+    def decoding(self, dec: ast.Decoding) -> tuple[m.Unpack | m.Regex | None, tuple[m.AnyType, ...] | None]:
         """The decoding and the types of its values; None for a template already reported."""
         template = dec.template.value
         try:
@@ -1389,7 +1411,7 @@ class _Checker:
         return tuple(out)
 
     def interface(self, decl: ast.InterfaceDecl, interface_params: dict[str, tuple[m.Parameter, ...]],
-                  primitives) -> m.Interface:
+                  primitives: dict[str, m.Primitive]) -> m.Interface:
         name = decl.name
         params = interface_params[name.text]
         kind = self.once([c for c in decl.clauses if isinstance(c, ast.Kind)], "the kind (`periodic`/`adhoc`)", name)
@@ -1444,9 +1466,10 @@ class _Checker:
 
     def value_of(self, expr: m.Expr) -> m.Expr:
         """A constant expression as its value; any other as it is."""
-        if not self.typer.is_constant(expr) or expr.type is None:
+        value = self.typer.constant(expr)
+        if value is None or expr.type is None:  # not constant (a constant's value is never None)
             return expr
-        return self.typer.const(self.typer.constant(expr), expr.type, expr.span)  # type: ignore[arg-type]
+        return self.typer.const(value, expr.type, expr.span)
 
     def loop_values(self, stmt: ast.ForStmt, u: _Unrolling,
                     loops: dict[str, ast.Ident]) -> tuple[Type, Sequence[m.Value]] | None:
@@ -1490,7 +1513,9 @@ class _Checker:
                               "known only when it runs", help="loop over its indexes and read its elements: "
                               f"`for i in 0..{over.type.size - 1} {{ ... {name}[i] ... }}`")
                 return None
-            return over.type.element, self.typer.constant(over)  # type: ignore[return-value]
+            values = self.typer.constant(over)
+            assert isinstance(values, tuple)  # a constant array's value
+            return over.type.element, values
         ends = [self.typer.expr(end, env) for end in (low_expr, high_expr)]
         if any(end.type is None for end in ends):
             return None
@@ -1501,7 +1526,8 @@ class _Checker:
                               help="its rounds are fixed when the description is checked: write its bounds "
                               "with numbers and constants")
                 return None
-        low, high = (int(self.typer.constant(end)) for end in ends)  # type: ignore[call-overload]
+        low, high = (self.typer.constant(end) for end in ends)
+        assert isinstance(low, int) and isinstance(high, int)  # constant ints: checked above
         if low > high:
             self.d.report("E204", low_expr.span.to(high_expr.span), f"the range {low}..{high} is empty",
                           help="a loop counts up, from its first bound to its last, both included")
@@ -1543,12 +1569,12 @@ class _Checker:
                 self.constants_into_pack(prim, args, stmt.call.args)
         delay_clause = self.once(list(stmt.delays), "`delay`", stmt.call.target)
         delay = self.duration(delay_clause, "a delay") if isinstance(delay_clause, ast.Duration) else 0
-        if delay is not None and delay < 0:
-            self.d.report("E204", delay_clause.span, f"a delay must be zero or more, not {delay:g} ms")  # type: ignore[union-attr]
+        if delay_clause is not None and delay is not None and delay < 0:
+            self.d.report("E204", delay_clause.span, f"a delay must be zero or more, not {delay:g} ms")
         priority_expr = self.once(list(stmt.priorities), "`priority`", stmt.call.target)
         priority = self.setting(priority_expr, "a priority", MAX_PRIORITY) if priority_expr is not None else 0
-        if priority is not None and priority != int(priority):
-            self.d.report("E204", priority_expr.span, "a priority must be an integer")  # type: ignore[union-attr]
+        if priority_expr is not None and priority is not None and priority != int(priority):
+            self.d.report("E204", priority_expr.span, "a priority must be an integer")
         self.once(list(stmt.conditions), "`when`", stmt.call.target)
         when = self.typer.expr(stmt.conditions[0], env) if stmt.conditions else None
         if when is not None and when.type is not None and when.type is not Type.BOOL:
@@ -1635,7 +1661,8 @@ class _Checker:
             elif callee in self.s.interfaces and callee not in seen:
                 yield from ((stmt, p) for _, p in self.primitives_called(self.s.interfaces[callee], seen))
 
-    def input(self, decl: ast.InputDecl, adapters: dict[str, m.Adapter], interface_params) -> m.DomainInput:
+    def input(self, decl: ast.InputDecl, adapters: dict[str, m.Adapter],
+              interface_params: dict[str, tuple[m.Parameter, ...]]) -> m.DomainInput:
         adapter = adapters.get(decl.adapter.text)
         if adapter is None:  # unknown adapter, already reported: do not report its fields as unknown
             return m.DomainInput(decl.name.text, m.AdapterRef(decl.adapter.text), m.InterfaceRef(decl.call.target.text),
@@ -1699,10 +1726,10 @@ class _Checker:
                 self.d.report("W102", decl.name.span, f"output `{name}` is never triggered",
                               help=f"add `triggers {name}` to the interface that reads its state")
         written = {a.target for p in self.primitives.values() for a in p.post_actions()}
-        for name, decl in self.s.states.items():
+        for name, state in self.s.states.items():
             known = self.state_env.get(name, (None, None))[1] is not None  # else its type is reported
-            if name not in self.typer.reads and name not in written and known and id(decl) in self.main_decls:
-                self.d.report("W103", decl.name.span, f"state variable `{name}` is never used",
+            if name not in self.typer.reads and name not in written and known and id(state) in self.main_decls:
+                self.d.report("W103", state.name.span, f"state variable `{name}` is never used",
                               help="read it in an expression, write it in a post-action, or remove it")
 
 

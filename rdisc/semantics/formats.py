@@ -414,7 +414,7 @@ _SPEC_WIDTH = re.compile(r"(?:.?[<>=^])?[+\- ]?z?#?0?(\d+)?")
 _SAMPLES = {Type.INT: 0, Type.FLOAT: 0.0, Type.BOOL: False, Type.STRING: ""}
 
 
-def spec_accepts(spec: str, type_: Type) -> bool:
+def spec_accepts(spec: str, type_: AnyType) -> bool:
     """Whether a format spec can format a value of this type (text, never bytes: they have no
     one way to be written as text)."""
     if type_ not in _SAMPLES:
@@ -452,8 +452,6 @@ def regex_groups(pattern: str) -> int:
 def regex_min_length(pattern: str) -> int:
     """The fewest characters the regex can match (a lower bound on a reply)."""
     try:
-        from re import _parser  # type: ignore[attr-defined]
-
-        return min(_parser.parse(pattern).getwidth()[0], 1 << 16)
+        return min(regex_shape.parse_tree(pattern).getwidth()[0], 1 << 16)
     except Exception:  # noqa: BLE001 - a lower bound of 0 is always safe
         return 0

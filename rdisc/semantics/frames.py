@@ -451,12 +451,12 @@ class FrameRules:
             options.setdefault(option.word, option)
         values: dict[str, int] = {}
         for word in ("mask", "poly", "init", "xorout", "width"):
-            option = options.get(word)
-            if option is None or option.value is None:
+            given = options.get(word)
+            if given is None or given.value is None:
                 continue
-            value = self.setting(option.value, f"`{word}`")
+            value = self.setting(given.value, f"`{word}`")
             if value is not None and (value != int(value) or value < 0):
-                d.report("E502", option.value.span, f"`{word}` is a non-negative integer")
+                d.report("E502", given.value.span, f"`{word}` is a non-negative integer")
             elif value is not None:
                 values[word] = int(value)
         size_bits = None
@@ -496,9 +496,9 @@ class FrameRules:
             d.report("E502", part.algorithm.span, f"unknown checksum algorithm \"{abbreviate(name)}\"",
                      help=_algorithm_hint(key))
             algorithm = m.ChecksumAlgorithm("sum", 8, name=name)
-        if size_bits is not None and algorithm.width > size_bits:
-            d.report("E502", part.format.span,  # type: ignore[union-attr]
-                     f"a {algorithm.width}-bit checksum does not fit \"{part.format.value}\" ({size_bits} bits)")  # type: ignore[union-attr]
+        if size_bits is not None and part.format is not None and algorithm.width > size_bits:
+            d.report("E502", part.format.span,
+                     f"a {algorithm.width}-bit checksum does not fit \"{part.format.value}\" ({size_bits} bits)")
         first, last, with_request = self.span_of(part, options.get("over"), i, parts, names, side, d)
         return m.FrameChecksum(algorithm, part.format.value if part.format else None, first, last, with_request)
 
@@ -550,8 +550,9 @@ def _end_known(reply: tuple[m.FramePart, ...], size_known: bool) -> bool:
     if at is None or size_known or length_part(reply) is not None:
         return True
     after = at + 1
-    if after < len(reply) and isinstance(reply[after], m.FrameOptional):  # the constant after it ends both
-        after += 1 + reply[after].count  # type: ignore[union-attr]
+    optional = reply[after] if after < len(reply) else None
+    if isinstance(optional, m.FrameOptional):  # the constant after it ends both
+        after += 1 + optional.count
     return after < len(reply) and isinstance(reply[after], m.FrameBytes)
 
 

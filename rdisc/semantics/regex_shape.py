@@ -18,15 +18,16 @@ Reply lines are latin-1 text, so character sets are sets of the 256 code points.
 from __future__ import annotations
 
 import re
+import sys
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-try:  # Python 3.11+
-    from re import _constants as c  # type: ignore[attr-defined]
-    from re import _parser  # type: ignore[attr-defined]
-except ImportError:  # Python 3.10
-    import sre_constants as c  # type: ignore[no-redef, unused-ignore]
-    import sre_parse as _parser  # type: ignore[no-redef, unused-ignore]
+if TYPE_CHECKING or sys.version_info < (3, 11):  # typeshed describes the parser under its old names
+    import sre_constants as c
+    import sre_parse as _parser
+else:  # where Python 3.11 moved them (the old names warn)
+    from re import _constants as c
+    from re import _parser
 
 ALL = frozenset(range(256))
 MAX_NESTING = 6  # repeats within repeats: deeper is refused as too complex to judge
@@ -59,18 +60,23 @@ class _Shape:
         return self.spread > 1
 
 
+def parse_tree(pattern: str) -> _parser.SubPattern:
+    """The parse tree of `pattern` by Python's own regex parser (raises re.error)."""
+    return _parser.parse(pattern)
+
+
 def risk(pattern: str) -> str | None:
     """Why `pattern` can take more than linear time on some line, or None (it cannot)."""
-    parsed = _parser.parse(pattern)
+    parsed = parse_tree(pattern)
     try:
-        _Walk(parsed.state).sequence(list(parsed), [], 0)
+        _Walk(parsed.state).sequence(list(parsed.data), [], 0)
     except Risky as err:
         return str(err)
     return None
 
 
 class _Walk:
-    def __init__(self, state: Any) -> None:
+    def __init__(self, state: _parser.State) -> None:
         self.state = state
         self.strict = False  # within two rounds of a repeat: any two variable parts sharing characters are too many
 

@@ -22,6 +22,7 @@ from rdisc.syntax import ast
 
 T = AnyType | None  # None: unknown, already reported
 NUMERIC = (Type.INT, Type.FLOAT)
+Names = dict[str, tuple[Scope, AnyType]]  # what an expression may read: its scope and type, by name
 
 _ARITHMETIC = {"+", "-", "*", "/", "//", "%", "**"}
 _BITWISE = {"&", "|", "^", "<<", ">>"}
@@ -60,10 +61,10 @@ ARITY = {
 class Env:
     """What an expression may read, and how to explain what it may not."""
 
-    names: dict[str, tuple[Scope, Type]]
+    names: Names
     where: str  # "in a hook argument", ...
     sees: str  # "state variables", ...
-    reply: tuple[Type, ...] | None = None  # types of out[i], in post-actions
+    reply: tuple[AnyType, ...] | None = None  # types of out[i], in post-actions
     reply_note: str | None = None  # why `out` is not available, when it is not
     reply_known: bool = True  # False when the reply's template was already reported
 
@@ -95,16 +96,16 @@ class Typer:
     def __init__(self, diagnostics: Diagnostics) -> None:
         self.diagnostics = diagnostics
         # id(node) → (node, value); holding the node keeps its id from being reused.
-        self._constants: dict[int, tuple[m.Expr, object]] = {}
+        self._constants: dict[int, tuple[m.Expr, m.Value]] = {}
         self.reads: set[str] = set()  # state variables read by any expression
-        self.named: dict[str, tuple[Type, object]] = {}  # `const` declarations: (type, value)
-        self.tables: dict[str, tuple[Type, Type, dict[object, object]]] = {}  # lookup tables: key and value types
+        self.named: dict[str, tuple[AnyType, m.Value]] = {}  # `const` declarations: (type, value)
+        self.tables: dict[str, tuple[Type, AnyType, dict[m.Value, m.Value]]] = {}  # lookup tables: key and value types
         self.failed: set[str] = set()  # constants whose value has an error already reported
         self.failed_reads = 0  # reads of those: each one's fault is reported once, at the constant
         self.enums: dict[str, dict[str, int]] = {}  # enumerations: member → value
         self.settings: set[str] = set()  # names of settings: given when connecting, so never constant
 
-    def constant(self, expr: m.Expr) -> object:
+    def constant(self, expr: m.Expr) -> m.Value | None:
         """The value of a constant expression, or None when it is not constant."""
         found = self._constants.get(id(expr))
         return None if found is None else found[1]
@@ -153,7 +154,7 @@ class Typer:
                 return self._member(e)
         raise AssertionError(f"unknown expression node {e!r}")
 
-    def const(self, value: m.Value, type_: Type, span: Span | None) -> m.Expr:
+    def const(self, value: m.Value, type_: AnyType, span: Span | None) -> m.Expr:
         """A constant the checker puts in (a parameter's default, in a call that leaves it out)."""
         return self._const(m.Const(value, type_, span))
 
@@ -174,7 +175,7 @@ class Typer:
         found = env.names.get(e.name)
         if found is None and e.name in self.named:  # a constant, unless a local name hides it
             type_, value = self.named[e.name]
-            return self._const(m.Const(value, type_, e.span))  # type: ignore[arg-type]
+            return self._const(m.Const(value, type_, e.span))
         if found is None and e.name in self.failed:
             self.failed_reads += 1
             return m.Var(e.name, Scope.STATE, None, e.span)  # type: ignore[arg-type]
@@ -239,7 +240,7 @@ class Typer:
             return m.ReplyValue(0, None, e.span)  # type: ignore[arg-type]
         value = self.constant(index)
         if index.type is None:
-            return m.ReplyValue(0, None, e.span)  # type: ignore[arg-type]
+            return m.ReplyValue(0, None, e.span)
         if index.type is not Type.INT or not isinstance(value, int) or isinstance(value, bool):
             self.diagnostics.report("E305", e.index.span, "the index of `out` must be a constant integer")
             return m.ReplyValue(0, None, e.span)  # type: ignore[arg-type]
@@ -252,7 +253,8 @@ class Typer:
                 help=f"valid indexes are 0 to {count - 1}" if count else "this reply has no values",
             )
             return m.ReplyValue(value, None, e.span)  # type: ignore[arg-type]
-        return m.ReplyValue(value, env.reply[value], e.span)
+        # A value of replies read N times is an array, which m.ReplyValue.type (a Type) does not say.
+        return m.ReplyValue(value, env.reply[value], e.span)  # type: ignore[arg-type]
 
     def _element(self, e: ast.Index, env: Env) -> m.Expr:
         """`array[index]`: an int index; a constant one within the array."""
@@ -291,7 +293,7 @@ class Typer:
         element: T = items[0].type
         for item, written in zip(items, e.items):
             if item.type is None:
-                return m.ArrayValue(items, None, e.span)  # type: ignore[arg-type]
+                return m.ArrayValue(items, None, e.span)
             if item.type not in (Type.INT, Type.FLOAT, Type.BOOL, Type.STRING):
                 self.diagnostics.report("E404", written.span, f"an array holds ints, floats, bools or strings, not "
                                         f"{describe(item.type)}")
@@ -315,6 +317,7 @@ class Typer:
         assert isinstance(e.base, ast.Ref)  # `_index` sends an array literal's elements elsewhere
         key_type, value_type, entries = self.tables[e.base.name]
         key = self.expr(e.index, env)
+        # A table's values may be arrays, which m.Lookup.type (a Type) does not say.
         node = m.Lookup(e.base.name, tuple(entries.items()), key, value_type, e.span)  # type: ignore[arg-type]
         if key.type is not None and key.type is not key_type:
             self.diagnostics.report("E401", e.index.span, f"table `{e.base.name}` is keyed by {key_type.value}, "
@@ -344,8 +347,10 @@ class Typer:
         node = m.UnaryOp(e.op, operand, result, e.span)  # type: ignore[arg-type]
         return self._fold(node, (operand,), lambda a: UNARY[e.op](a))
 
-    def _bad_operand(self, e: ast.Expr, t: AnyType, need: str) -> None:
+    def _bad_operand(self, e: ast.Expr, t: AnyType, need: str) -> T:
+        """Report an operand of the wrong type: the result is unknown (None), so nothing cascades."""
         self.diagnostics.report("E404", e.span, f"{need}, not {describe(t)}")
+        return None
 
     def _binary(self, e: ast.BinOp, env: Env) -> m.Expr:
         left = self.expr(e.left, env)
@@ -401,8 +406,9 @@ class Typer:
         node = m.IfElse(cond, then, orelse, result, e.span)  # type: ignore[arg-type]
         if result is not None and self.is_constant(cond):
             chosen = then if self.constant(cond) else orelse
-            if self.is_constant(chosen):
-                self._constants[id(node)] = (node, self.constant(chosen))
+            found = self._constants.get(id(chosen))
+            if found is not None:
+                self._constants[id(node)] = (node, found[1])
         return node
 
     def _call(self, e: ast.CallExpr, env: Env) -> m.Expr:
@@ -433,10 +439,10 @@ class Typer:
         if any(t is None for t in types):
             return None
 
-        def need(what: str, accepted) -> bool:
+        def need(what: str, accepted: tuple[Type, ...]) -> bool:
             for arg, t in zip(e.args, types):
-                if t not in accepted:
-                    self.diagnostics.report("E404", arg.span, f"`{name}` needs {what}, not {describe(t)}")  # type: ignore[arg-type]
+                if t is not None and t not in accepted:
+                    self.diagnostics.report("E404", arg.span, f"`{name}` needs {what}, not {describe(t)}")
                     return False
             return True
 
@@ -485,7 +491,7 @@ class Typer:
             case _:  # sqrt sin cos atan2 hypot
                 return Type.FLOAT if need("numbers", NUMERIC) else None
 
-    def _fold(self, node: m.Expr, operands: tuple[m.Expr, ...], compute) -> m.Expr:
+    def _fold(self, node: m.Expr, operands: tuple[m.Expr, ...], compute: Callable[..., m.Value]) -> m.Expr:
         """Evaluate a node whose operands are all constant; report what cannot be."""
         if node.type is None or not all(self.is_constant(o) for o in operands):
             return node

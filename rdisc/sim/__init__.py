@@ -96,7 +96,7 @@ class Simulation:
     (None: every joint starts at zero); `realtime` runs the physics on the wall clock."""
 
     def __init__(self, model: m.Model, *, seed: int | None = None, realtime: bool = False) -> None:
-        import mujoco  # type: ignore[import-untyped]
+        import mujoco
 
         self._mujoco = mujoco
         mujoco.set_mju_user_warning(_take_warning)  # no MUJOCO_LOG.TXT in the current folder

@@ -15,7 +15,7 @@ from rdisc.syntax import ast
 from rdisc.syntax.precedence import BINARY, COMPARISON, OR, UNARY_OPERATORS
 
 if TYPE_CHECKING:
-    from lark import Token
+    from lark import Token, Transformer, Tree
     from lark.tree import Meta
 
 MAX_INT_DIGITS = 64
@@ -32,7 +32,7 @@ _ESCAPE = re.compile(r"\\(x[0-9a-fA-F]{2}|u[0-9a-fA-F]{4}|.)", re.DOTALL)
 _SIMPLE_ESCAPES = {"n": "\n", "r": "\r", "t": "\t", "0": "\0", "\\": "\\", '"': '"', "'": "'"}
 
 
-def decode_string(raw: str, report=None) -> str:
+def decode_string(raw: str, report: Callable[[int, int, str, str | None], None] | None = None) -> str:
     """The value of a string token (quotes included). `report(offset, length, text, why)`
     is called for each escape that is not a character (unknown, or half of a surrogate
     pair, which no text can hold), with offsets into `raw`."""
@@ -104,11 +104,12 @@ class Builder:
         self.diagnostics = diagnostics
         self.base = 0
         # Per chunk, by id(node), holding the node so that its id stays its own:
-        self.prefixed: dict[int, tuple[ast.Expr, list]] = {}  # a prefixed operand → its items
+        self.prefixed: dict[int, tuple[ast.Expr, list[ast.Expr | Token]]] = {}  # a prefixed operand → its items
         self.depth: dict[int, tuple[ast.Expr, int]] = {}  # an expression → its depth
 
-    def build(self, tree, base: int) -> list[ast.Decl]:
-        """The declarations of one chunk; raises TooDeep for an expression past the limit."""
+    def build(self, tree: Tree[Token], base: int) -> list[ast.Decl]:
+        """The declarations of one chunk (a `start` tree); raises TooDeep for an expression past
+        the limit."""
         self.base = base
         self.prefixed.clear()
         self.depth.clear()
@@ -117,6 +118,13 @@ class Builder:
         finally:
             self.prefixed.clear()
             self.depth.clear()
+
+    def expression(self, tree: Tree[Token], base: int) -> ast.Expr:
+        """The expression of an `expr_start` tree (one expression on its own, as a JSON string
+        holds it); raises TooDeep as `build` does."""
+        built: object = self.build(tree, base)  # the transformer builds the tree's root: here, an expression
+        assert isinstance(built, _EXPRESSIONS), f"an expression tree built {built!r}"
+        return built
 
     def nested(self, node: ast.Expr, *children: ast.Expr) -> ast.Expr:
         """Record the depth of a new expression node; refuse one nested too deeply."""
@@ -128,25 +136,27 @@ class Builder:
 
     # -- helpers used by the transformer --
 
-    def span(self, meta) -> Span:
+    def span(self, meta: Meta) -> Span:
         if getattr(meta, "empty", False):
             return Span(self.path, self.base, self.base)
         return Span(self.path, self.base + meta.start_pos, self.base + meta.end_pos)
 
-    def token_span(self, token) -> Span:
-        return Span(self.path, self.base + token.start_pos, self.base + token.end_pos)
+    def token_span(self, token: Token) -> Span:
+        start, end = token.start_pos, token.end_pos
+        assert start is not None and end is not None  # the lexer places every token it makes
+        return Span(self.path, self.base + start, self.base + end)
 
-    def ident(self, token) -> ast.Ident:
+    def ident(self, token: Token) -> ast.Ident:
         return ast.Ident(str(token), self.token_span(token))
 
-    def type_ref(self, node) -> ast.TypeRef:
+    def type_ref(self, node: Token | ast.ArrayOf) -> ast.TypeRef:
         """A declared type: a NAME token, or an array type already built."""
         return node if isinstance(node, ast.ArrayOf) else self.ident(node)
 
-    def doc(self, meta) -> str | None:
+    def doc(self, meta: Meta) -> str | None:
         return self.docs.get(self.base + meta.start_pos)
 
-    def resolve(self, items: list) -> ast.Expr:
+    def resolve(self, items: list[ast.Expr | Token]) -> ast.Expr:
         """Operators and operands of a flat chain → a tree, by precedence climbing.
 
         `items` alternates operands (AST nodes) and operator tokens; a token where
@@ -176,6 +186,7 @@ class Builder:
             compared = False
             while pos < len(items):
                 token = items[pos]
+                assert isinstance(token, lark.Token)  # operands and operators alternate
                 op = BINARY[str(token)]
                 if op.level < minimum:
                     break
@@ -189,10 +200,10 @@ class Builder:
 
         return climb(OR, 0)
 
-    def misplaced(self, token, message: str) -> None:
+    def misplaced(self, token: Token, message: str) -> None:
         self.diagnostics.report("E001", self.token_span(token), message)
 
-    def string(self, token) -> ast.StrLit:
+    def string(self, token: Token) -> ast.StrLit:
         span = self.token_span(token)
 
         def report(offset: int, length: int, text: str, why: str | None) -> None:
@@ -227,20 +238,25 @@ class Builder:
         return ast.BytesLit(decode_bytes(str(token), report), span)
 
 
+_EXPRESSIONS = (ast.IntLit, ast.FloatLit, ast.StrLit, ast.BytesLit, ast.BoolLit, ast.Ref, ast.Index, ast.ArrayLit,
+                ast.Unary, ast.BinOp, ast.Conditional, ast.CallExpr, ast.Member)
+
+
 @lru_cache(maxsize=1)
-def _transformer_class():
+def _transformer_class() -> Callable[[Builder], Transformer[Token, list[ast.Decl]]]:
+    """The transformer, defined when first needed: Lark is imported lazily (start-up time)."""
     import lark
     from lark import v_args
 
     @v_args(meta=True)
-    class Transformer(lark.Transformer):
+    class Transformer(lark.Transformer[lark.Token, list[ast.Decl]]):
         def __init__(self, builder: Builder) -> None:
             super().__init__(visit_tokens=False)
             self.b = builder
 
         # -- top level --
 
-        def start(self, meta, children):
+        def start(self, meta: Meta, children: list[ast.Decl | None]) -> list[ast.Decl]:
             return [c for c in children if c is not None]
 
         def import_decl(self, meta: Meta, c: list[Any]) -> ast.ImportDecl:
@@ -256,7 +272,7 @@ def _transformer_class():
             name, type_, init = c
             return ast.StateDecl(self.b.ident(name), self.b.type_ref(type_), init, self.b.span(meta), self.b.doc(meta))
 
-        def setting_decl(self, meta: object, c: list[Any]) -> ast.SettingDecl:
+        def setting_decl(self, meta: Meta, c: list[Any]) -> ast.SettingDecl:
             name, type_, low, high, default = c
             return ast.SettingDecl(self.b.ident(name), self.b.type_ref(type_), default, self.b.span(meta),
                                    self.b.doc(meta), low, high)
@@ -332,13 +348,13 @@ def _transformer_class():
             name, low, high, *body = c
             return ast.ForStmt(self.b.ident(name), low, high, tuple(body), self.b.span(meta))
 
-        def delay(self, meta, c):
+        def delay(self, meta: Meta, c: list[ast.Duration]) -> tuple[str, ast.Duration]:
             return ("delay", c[0])
 
-        def priority(self, meta, c):
+        def priority(self, meta: Meta, c: list[ast.Expr]) -> tuple[str, ast.Expr]:
             return ("priority", c[0])
 
-        def when(self, meta, c):
+        def when(self, meta: Meta, c: list[ast.Expr]) -> tuple[str, ast.Expr]:
             return ("when", c[0])
 
         def adapter_decl(self, meta: Meta, c: list[Any]) -> ast.AdapterDecl:
@@ -362,7 +378,7 @@ def _transformer_class():
             tag = self.b.string(c[0])
             return ast.ReplyTable(ast.Ident("tag", tag.span), tuple(c[1:]), self.b.span(meta), tag)
 
-        def reply_each_table(self, meta: object, c: list[Any]) -> ast.ReplyTable:
+        def reply_each_table(self, meta: Meta, c: list[Any]) -> ast.ReplyTable:
             tag = self.b.string(c[0])
             length = None if c[1] is None else self.b.string(c[1])
             return ast.ReplyTable(ast.Ident("tag", tag.span), tuple(c[2:]), self.b.span(meta), tag, True, length)
@@ -380,10 +396,10 @@ def _transformer_class():
         def reply_timeout(self, meta: Meta, c: list[Any]) -> ast.ReplyTimeout:
             return ast.ReplyTimeout(c[0], self.b.span(meta))
 
-        def replies(self, meta: object, c: list[ast.Expr]) -> ast.Replies:
+        def replies(self, meta: Meta, c: list[ast.Expr]) -> ast.Replies:
             return ast.Replies(c[0], self.b.span(meta))
 
-        def replies_each(self, meta: object, c: list[Any]) -> ast.Replies:
+        def replies_each(self, meta: Meta, c: list[Any]) -> ast.Replies:
             var, low, high, frame, args = c
             span = self.b.span(meta)
             framed = ast.Framed(self.b.ident(frame), args or (), span)
@@ -401,7 +417,7 @@ def _transformer_class():
         def expect(self, meta: Meta, c: list[Any]) -> ast.Expect:
             return ast.Expect(c[0], self.b.span(meta))
 
-        def modem_lines(self, meta: object, c: list[ast.Assign]) -> ast.Lines:
+        def modem_lines(self, meta: Meta, c: list[ast.Assign]) -> ast.Lines:
             return ast.Lines(tuple(c), self.b.span(meta))
 
         def skip_unmatched(self, meta: Meta, c: list[Any]) -> ast.SkipUnmatched:
@@ -416,7 +432,7 @@ def _transformer_class():
         def table_lit(self, meta: Meta, c: list[Any]) -> ast.TableLit:
             return ast.TableLit(tuple(x for x in c if x is not None), self.b.span(meta))
 
-        def table_entry(self, meta, c):
+        def table_entry(self, meta: Meta, c: list[ast.Expr]) -> tuple[ast.Expr, ast.Expr]:
             return (c[0], c[1])
 
         def enum_decl(self, meta: Meta, c: list[Any]) -> ast.EnumDecl:
@@ -594,14 +610,14 @@ def _transformer_class():
                 self.b.ident(c[0]), self.b.ident(c[1]), tuple(c[2:]), self.b.span(meta), self.b.doc(meta)
             )
 
-        def params(self, meta, c):
+        def params(self, meta: Meta, c: list[ast.Param | None]) -> tuple[ast.Param, ...]:
             return tuple(x for x in c if x is not None)
 
         def param(self, meta: Meta, c: list[Any]) -> ast.Param:
             unit = None if c[4] is None else self.b.string(c[4])
             return ast.Param(self.b.ident(c[0]), self.b.type_ref(c[1]), self.b.span(meta), c[2], c[3], c[5], unit)
 
-        def args(self, meta, c):
+        def args(self, meta: Meta, c: list[ast.Expr | None]) -> tuple[ast.Expr, ...]:
             return tuple(x for x in c if x is not None)
 
         def duration(self, meta: Meta, c: list[Any]) -> ast.Duration:
@@ -609,7 +625,7 @@ def _transformer_class():
 
         # -- keyword groups: the word itself --
 
-        def _word(self, meta, c):
+        def _word(self, meta: Meta, c: list[Token]) -> str:
             return str(c[0])
 
         robot_key = hook_event = encoding_kind = decoding_kind = kind_word = time_unit = _word
@@ -617,37 +633,39 @@ def _transformer_class():
 
         # -- expressions --
 
-        def conditional(self, meta, c):
+        def conditional(self, meta: Meta, c: list[ast.Expr]) -> ast.Expr:
             return self.b.nested(ast.Conditional(c[0], c[1], c[2], self.b.span(meta)), *c)
 
-        def chain(self, meta, c):
-            items: list = []
+        def chain(self, meta: Meta, c: list[ast.Expr | Token]) -> ast.Expr:
+            items: list[ast.Expr | Token] = []
             for child in c:
-                items.extend(self.b.prefixed.get(id(child), (child, [child]))[1])
+                prefixed = self.b.prefixed.get(id(child))
+                items.extend([child] if prefixed is None else prefixed[1])
             return self.b.resolve(items)
 
-        def prefixed(self, meta, c):
+        def prefixed(self, meta: Meta, c: list[ast.Expr | Token]) -> ast.Expr:
             node = self.b.resolve(c)
             self.b.prefixed[id(node)] = (node, c)
             return node
 
-        def group(self, meta, c):
+        def group(self, meta: Meta, c: list[ast.Expr]) -> ast.Expr:
             """`( expr )`: a finished operand, never re-opened by the chain around it."""
             self.b.prefixed.pop(id(c[0]), None)
             return c[0]
 
-        def call(self, meta, c):
+        def call(self, meta: Meta, c: list[Any]) -> ast.Expr:
             return self.b.nested(ast.CallExpr(self.b.ident(c[0]), c[1] or (), self.b.span(meta)), *(c[1] or ()))
 
-        def index(self, meta, c):
+        def index(self, meta: Meta, c: list[Any]) -> ast.Expr:
             return self.b.nested(ast.Index(ast.Ref(str(c[0]), self.b.token_span(c[0])), c[1], self.b.span(meta)), c[1])
 
-        def literal_index(self, meta, c):
+        def literal_index(self, meta: Meta, c: list[Any]) -> ast.Expr:
             items = c[0] or ()
-            array = self.b.nested(ast.ArrayLit(items, self.b.span(meta)), *items)
-            return self.b.nested(ast.Index(array, c[1], self.b.span(meta)), array, c[1])  # type: ignore[arg-type]
+            array = ast.ArrayLit(items, self.b.span(meta))
+            self.b.nested(array, *items)
+            return self.b.nested(ast.Index(array, c[1], self.b.span(meta)), array, c[1])
 
-        def array_lit(self, meta, c):
+        def array_lit(self, meta: Meta, c: list[Any]) -> ast.Expr:
             items = c[0] or ()
             return self.b.nested(ast.ArrayLit(items, self.b.span(meta)), *items)
 
@@ -674,10 +692,10 @@ def _transformer_class():
                 value = 0.0
             return ast.FloatLit(value, span)
 
-        def str_lit(self, meta, c):
+        def str_lit(self, meta: Meta, c: list[Token]) -> ast.StrLit:
             return self.b.string(c[0])
 
-        def bytes_lit(self, meta: object, c: list[Token]) -> ast.BytesLit:
+        def bytes_lit(self, meta: Meta, c: list[Token]) -> ast.BytesLit:
             return self.b.bytes_literal(c[0])
 
         def bool_lit(self, meta: Meta, c: list[Any]) -> ast.BoolLit:

@@ -4,6 +4,11 @@ from __future__ import annotations
 
 import difflib
 import re
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from lark import Token
+    from lark.exceptions import UnexpectedInput
 
 # Named terminals of grammar/rdis.lark, in words.
 _WORDS = {
@@ -67,7 +72,7 @@ def expected_words(expected: set[str]) -> str:
     return ", ".join(phrases[:-1]) + " or " + phrases[-1]
 
 
-def _found(token) -> str:
+def _found(token: Token) -> str:
     if token.type == "$END":
         return "the end of the file"
     text = str(token)
@@ -95,12 +100,13 @@ def _hint(token: object, accepted: set[str], after: str) -> str | None:
     return f"did you mean `{close[0]}`?" if close and close[0] != text else None
 
 
-def describe_unexpected(err, chunk: str, last: bool) -> tuple[str, int, int, str, str | None, str | None]:
+def describe_unexpected(err: UnexpectedInput, chunk: str,
+                        last: bool) -> tuple[str, int, int, str, str | None, str | None]:
     """(code, offset in chunk, length, message, label, help) for a Lark error."""
     import lark
 
     if isinstance(err, lark.exceptions.UnexpectedCharacters):
-        offset = err.pos_in_stream
+        offset = err.pos_in_stream or 0  # the lexer always sets it; Lark's class declares it None
         char = chunk[offset] if offset < len(chunk) else ""
         if char == '"' or chunk[offset : offset + 2] == 'r"':
             line_end = chunk.find("\n", offset)
@@ -114,6 +120,8 @@ def describe_unexpected(err, chunk: str, last: bool) -> tuple[str, int, int, str
         shown = repr(char)[1:-1] if not char.isprintable() or char.isspace() else char
         return ("E002", offset, 1, f"unexpected character `{shown}`", "no token starts with this character", None)
 
+    if not isinstance(err, lark.exceptions.UnexpectedToken):  # UnexpectedEOF, which only Earley raises
+        return ("E001", len(chunk), 0, "expected more, found the end of the file", None, None)
     token = err.token
     accepted = set(err.expected)
     if err.interactive_parser is not None:  # exact: LALR merges lookaheads of similar states

@@ -34,7 +34,7 @@ import re
 from collections.abc import Callable
 from dataclasses import dataclass, fields, is_dataclass, replace
 from functools import lru_cache, partial
-from typing import Any
+from typing import TYPE_CHECKING, Any, TypeVar
 
 from rdisc.diagnostics import Diagnostics, Label, abbreviate
 from rdisc.limits import MAX_INT
@@ -44,6 +44,10 @@ from rdisc.syntax import ast
 from rdisc.syntax.build import MAX_INT_DIGITS
 from rdisc.syntax.parse import MAX_FILE_CHARS, parse, parse_expression
 from rdisc.syntax.printer import print_expr
+
+if TYPE_CHECKING:
+    from lark import Lark, Token, Tree
+    from lark.exceptions import UnexpectedInput
 
 MAX_DEPTH = 100  # nesting of JSON arrays and objects
 MAX_VALUES = 200_000  # a description has thousands; parsing costs about 15 µs a value
@@ -88,6 +92,8 @@ class JObject:
 
 
 JValue = JString | JNumber | JBool | JNull | JArray | JObject
+_Kind = TypeVar("_Kind", JString, JNumber, JBool, JNull, JArray, JObject)
+_Built = TypeVar("_Built")
 
 
 def read(path: str, text: str, diagnostics: Diagnostics) -> ast.Module | None:
@@ -123,7 +129,7 @@ def read_json(path: str, text: str, diagnostics: Diagnostics) -> JValue | None:
 
 
 @lru_cache(maxsize=1)
-def _json_parser():  # -> lark.Lark, imported lazily like the RDIS parser
+def _json_parser() -> Lark:  # imported lazily like the RDIS parser
     import lark
 
     from rdisc.resources import grammar_path
@@ -182,12 +188,16 @@ _VALUE_START = {"STRING", "NUMBER", "TRUE", "FALSE", "NULL", "LBRACE", "LSQB"}
 _STRING_PREFIX = re.compile(r'"(?:[^"\\\x00-\x1f]|\\["\\/bfnrt]|\\u[0-9a-fA-F]{4})*')
 
 
-def _report_json_error(err, path: str, text: str, diagnostics: Diagnostics) -> None:
+def _report_json_error(err: UnexpectedInput, path: str, text: str, diagnostics: Diagnostics) -> None:
     import lark
 
     if isinstance(err, lark.exceptions.UnexpectedCharacters):
         begin, end, message = _character_error(text, err.pos_in_stream or 0)
         diagnostics.report("E008", Span(path, begin, end), message)
+        return
+    if not isinstance(err, lark.exceptions.UnexpectedToken):  # UnexpectedEOF, which only Earley raises
+        diagnostics.report("E008", Span(path, len(text), len(text)), "invalid JSON: expected more, found the end "
+                           "of the file")
         return
     token = err.token
     expected = set(err.interactive_parser.accepts()) if err.interactive_parser else set(err.expected)
@@ -232,7 +242,7 @@ class _Values:
         self.path = path
         self.d = diagnostics
 
-    def value(self, node) -> JValue:
+    def value(self, node: Tree[Token] | Token) -> JValue:
         import lark
 
         if isinstance(node, lark.Token):
@@ -254,6 +264,7 @@ class _Values:
             return JArray(tuple(self.value(c) for c in node.children), span)
         members: dict[str, tuple[JString, JValue]] = {}
         for member in node.children:
+            assert isinstance(member, lark.Tree)  # the grammar's `member`: a key and its value
             key, value = self.value(member.children[0]), self.value(member.children[1])
             assert isinstance(key, JString)
             if key.value in members:
@@ -273,7 +284,7 @@ class _Values:
         if integral and len(token.lstrip("-")) > MAX_INT_DIGITS:
             self.d.report("E004", span, f"integer with more than {MAX_INT_DIGITS} digits")
             return 0
-        value = json.loads(token)
+        value: int | float = json.loads(token)
         if integral and abs(value) > MAX_INT:
             self.d.report("E004", span, f"integer {abbreviate(token)} is too large: integers are limited to 64 bits "
                                         f"and a sign (at most {MAX_INT} either way)")
@@ -540,7 +551,8 @@ class _Importer:
         if tag is not None:
             key = ast.Ident("tag", tag.span)
         else:
-            key = self.required(obj, t, "key", "`replyTable`", self.ident) or ast.Ident("", obj.span)
+            named = self.required(obj, t, "key", "`replyTable`", self.ident)
+            key = named or ast.Ident("", obj.span)
         entries = []
         for item in self.array(t.get("cases"), "`cases`"):
             case = self.object(item, "a reply table entry")
@@ -581,7 +593,7 @@ class _Importer:
         self.frame_types[name.text] = tuple(_type_text(p.type) for p in params)
         written = {side: m[side] for side in ("request", "reply") if side in m}
         if sides["request"] == sides["reply"]:  # one sequence for both directions
-            items: tuple = sides["request"]
+            items: tuple[ast.FramePart | ast.FrameSide | ast.FrameStuff | ast.FrameEscape, ...] = sides["request"]
         else:
             items = tuple(ast.FrameSide(side, parts, written[side].span if side in written else obj.span)
                           for side, parts in sides.items() if parts or side == "request")
@@ -699,22 +711,25 @@ class _Importer:
         if name.value.lower() in ("crc", "sum", "xor"):
             flags.append(("reflectIn", "reflect"))
         for flag, word in flags:
-            if isinstance(m.get(flag), JBool) and m[flag].value:
-                options.append(ast.ChecksumOption(word, span=m[flag].span))
+            given = m.get(flag)
+            if isinstance(given, JBool) and given.value:
+                options.append(ast.ChecksumOption(word, span=given.span))
         settings = ("mask", "width", "poly", "init", "xorOut") if name.value.lower() == "crc" else ("mask",)
         for key in settings:
             if isinstance(m.get(key), JNumber):
                 options.append(ast.ChecksumOption(key.lower(), self.expr(m[key], "int"), span=m[key].span))
         covers = self.array(m.get("covers"), "`covers`")
         here = side.index(obj)
-        if len(covers) == 2 and all(isinstance(c, JNumber) for c in covers):
-            first, last = (c.value for c in covers)  # type: ignore[union-attr]
+        numbers = [c.value for c in covers if isinstance(c, JNumber)]
+        if len(covers) == 2 and len(numbers) == 2:
+            first, last = numbers
             if not (first == int(first) and last == int(last) and 0 <= first <= last < here):
                 self.d.report("E008", m["covers"].span, f"`covers` is [first, last], the indexes of two parts before "
                                                         f"the checksum (0 to {here - 1}), first <= last")
                 first, last = (1 if here > 1 else 0), here - 1
             first, last = int(first), int(last)
-            request = isinstance(m.get("withRequest"), JBool) and m["withRequest"].value
+            with_request = m.get("withRequest")
+            request = isinstance(with_request, JBool) and with_request.value
             header = side and side[0] is not None and any(k.value == "header" for k, _ in side[0].members)
             if request or (first, last) != (1 if header else 0, here - 1):
                 names = [_part_name(p) for p in side]
@@ -1156,7 +1171,7 @@ class _Importer:
             return tuple(ast.Param(n, ast.Ident(infer(n), n.span), n.span, *r, d, u)
                          for n, r, d, u in zip(names, ranges, defaults, units))
         types = [
-            i for v in self.array(m["parameterTypes"], "`parameterTypes`") if (i := self.type_ref(v, "a type"))
+            t for v in self.array(m["parameterTypes"], "`parameterTypes`") if (t := self.type_ref(v, "a type"))
         ]
         if len(types) != len(names):
             self.error(
@@ -1227,7 +1242,8 @@ class _Importer:
                 return self.parse(v.value[1:-1], offsets[1 : len(v.value)])
             case JArray(items, span) if items:  # a constant array: `"IDS": [1, 2, 3]`
                 values = [self.expr(item, None) for item in items]
-                return None if None in values else ast.ArrayLit(tuple(values), span)  # type: ignore[arg-type]
+                built = tuple(value for value in values if value is not None)
+                return ast.ArrayLit(built, span) if len(built) == len(values) else None
         self.error(v.span, f"expected an expression (a number, true/false, a string or an array), found {_kind(v)}")
         return None
 
@@ -1340,8 +1356,8 @@ class _Importer:
         return found
 
     def required(
-        self, obj: JObject, m: Members, key: str, what: str, get: Callable[[JValue, str], Any]
-    ) -> Any:
+        self, obj: JObject, m: Members, key: str, what: str, get: Callable[[JValue, str], _Built]
+    ) -> _Built | None:
         if key not in m:
             self.error(self.opening(obj), f"{what} has no `{key}`")
             return None
@@ -1385,7 +1401,7 @@ class _Importer:
         found = self.expect(v, JArray, what, "an array")
         return () if found is None else found.items
 
-    def expect(self, v: JValue | None, kind: type, what: str, words: str) -> Any:
+    def expect(self, v: JValue | None, kind: type[_Kind], what: str, words: str) -> _Kind | None:
         if v is None or isinstance(v, kind):
             return v
         self.error(v.span, f"{what} must be {words}, found {_kind(v)}")

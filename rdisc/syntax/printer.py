@@ -97,10 +97,10 @@ def _code(d: ast.Decl) -> list[str]:
             return _call_lines(f"input {name.text}: {adapter.text} -> ", call, "", 0)
         case ast.OutputDecl(name, adapter, fields):
             return _block(f"output {name.text}: {adapter.text}", [_assign(a) for a in fields])
-        case ast.ConstDecl(name, ast.TableLit(entries)):
-            return _block(f"const {name.text} =", [f"{print_expr(k)}: {print_expr(v)}," for k, v in entries])
         case ast.ConstDecl(name, value):
-            return [f"const {name.text} = {print_expr(value)}"]  # type: ignore[arg-type]  # not a table: above
+            if isinstance(value, ast.TableLit):
+                return _block(f"const {name.text} =", [f"{print_expr(k)}: {print_expr(v)}," for k, v in value.entries])
+            return [f"const {name.text} = {print_expr(value)}"]
         case ast.EnumDecl(name, members):
             return _block(f"enum {name.text}", [f"{m.name.text} = {print_expr(m.value)}," for m in members])
         case ast.FrameDecl(name, params, items):
