@@ -1460,6 +1460,8 @@ def _bind(what: str, params: tuple[Param, ...], args: tuple[Any, ...], kwargs: d
     """Arguments by position and by name, as Python binds them."""
     if len(args) > len(params):
         raise TypeError(f"{what} takes {len(params)} arguments, {len(args)} given")
+    if not kwargs and len(args) == len(params):  # every argument by position: nothing to bind
+        return list(args)
     return [*args, *bind_named(what, params[len(args) :], kwargs).values()]
 
 
@@ -1571,18 +1573,25 @@ def bind_named(what: str, params: tuple[Param, ...], given: Mapping[str, Any],
     """Values given by name bound to the parameters (or fields), in their order, each made its type
     by `read` if given; a parameter left out takes its default. The one binding of the typed API,
     `--call`, the console and a replay."""
-    names = {p.name for p in params}
-    unknown = next((name for name in given if name not in names), None)
-    if unknown is not None:
-        raise Unbound(what, unknown, None)
     values: dict[str, Any] = {}
+    missing = None
+    found = 0
     for param in params:
         if param.name in given:
-            values[param.name] = given[param.name] if read is None else read(given[param.name], param)
+            values[param.name] = given[param.name]
+            found += 1
         elif param.default is not None:
             values[param.name] = param.default
-        else:
-            raise Unbound(what, None, param.name)
+        elif missing is None:
+            missing = param.name
+    if found < len(given):
+        raise Unbound(what, next(name for name in given if name not in values), None)
+    if missing is not None:
+        raise Unbound(what, None, missing)
+    if read is not None:
+        for param in params:
+            if param.name in given:
+                values[param.name] = read(values[param.name], param)
     return values
 
 
