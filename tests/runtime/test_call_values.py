@@ -180,7 +180,7 @@ def _console(description: Any, name: str, values: dict[str, str]) -> tuple[str, 
     return "written", bytes(port.written).hex()
 
 
-def _replay(description: Any, name: str, values: dict[str, str]) -> tuple[str, str]:
+def _replay(description: Any, name: str, values: dict[str, Any]) -> tuple[str, str]:
     """A recording whose one run is the call, its values JSON's strings: the replay's writes or error."""
     kind = _kind(description.device, name)
     replayed = replay(Recording(runs=[{"call": kind, "name": name, "values": values}]), description.device)
@@ -225,6 +225,27 @@ def test_a_drivers_command_line_reads_each_value_alike(driver: Path) -> None:
 def _run_driver(driver: Path, *args: str) -> subprocess.CompletedProcess[str]:
     return subprocess.run([sys.executable, str(driver), "--port", "loop://", *args], capture_output=True, text=True,
                           check=False, timeout=60, env=cli_env())
+
+
+@pytest.mark.parametrize(("name", "values", "outcome"), [
+    ("move", {"speed": 16}, ("written", "10")),
+    ("level", {"x": 2}, ("written", _double(2.0))),
+    ("goals", {"goal": [1, 2, 255]}, ("written", "0102ff")),
+    ("zoom", {"tele": False}, ("written", "810500")),
+    ("blob", {"data": "0a0b"}, ("written", "020a0b")),  # bytes as a recording writes them: hex
+    ("level", {"x": float("inf")}, ("RdisValueError", "primitive level: parameter x is inf: a number must be finite")),
+    ("goals", {"goal": [1, float("nan"), 3]},
+     ("RdisValueError", "primitive goals: parameter goal[1] is nan: a number must be finite")),
+    ("move", {"speed": 2**70}, ("RdisValueError", ("primitive move: parameter speed is a 71-bit integer; "
+                                                   "integers are limited to 64 bits and a sign"))),
+    ("move", {"speed": True}, ("RdisValueError", ("the recorded call of primitive move: primitive move: parameter "
+                                                  "speed must be int, not bool True"))),
+])
+def test_a_recordings_json_values_are_read_by_the_same_rule(description: Any, name: str, values: dict[str, Any],
+                                                            outcome: tuple[str, str]) -> None:
+    """A recording holds JSON: its numbers, lists and bools are taken as the typed API takes them, and a
+    number JSON cannot hold (Python's json writes inf as `Infinity`) or too wide is refused as a text's is."""
+    assert _replay(description, name, values) == outcome
 
 
 # ---- binding by name: the same values bound, each surface's words for what does not bind -----------------
