@@ -214,6 +214,7 @@ class Console:
     def call(self, text: str | bytes) -> dict[str, Any]:
         """One call a page asked for, `{"id", "kind", "name", "values": {NAME: text}}`; its result."""
         ident: Any = None
+        made = False  # a call refused before it is made is not the robot's error, nor recorded
         try:
             request = json.loads(text)
             if not isinstance(request, dict):
@@ -222,9 +223,13 @@ class Console:
             kind, name, values = request.get("kind"), request.get("name"), request.get("values", {})
             if not isinstance(name, str) or not isinstance(values, dict):
                 raise TypeError("a call names what it calls and gives its values by name")
-            self._make(kind, name, values)
+            given = _read(self.robot.device, kind, name, values)
+            if self.recorder is not None:  # recorded before it is made, as `rdisc run` does
+                self.recorder.call(str(kind), name, given)
+            made = True
+            engine.make_call(self.robot, str(kind), name, given)
         except (engine.RdisError, TypeError, ValueError, KeyError) as err:
-            if self.recorder is not None and isinstance(err, engine.RdisError):
+            if self.recorder is not None and made and isinstance(err, engine.RdisError):
                 self.recorder.error(err)
             message = err.args[0] if isinstance(err, KeyError) and err.args else str(err)
             self.report(type(err).__name__, str(message))
@@ -233,71 +238,31 @@ class Console:
         self._push_state()
         return {"type": "result", "id": ident, "ok": True}
 
-    def _make(self, kind: object, name: str, values: dict[str, Any]) -> None:
-        device = self.robot.device
-        if kind == "input":
-            plan = device.inputs.get(name)
-            if plan is None:
-                raise KeyError(f"{device.name} has no input named {name!r}")
-            given = self._record(kind, name, _values(name, plan.fields, values))
-            self.robot.call_input(name, **given)
-        elif kind in ("interface", "primitive"):
-            found = (device.interfaces if kind == "interface" else device.primitives).get(name)
-            if found is None:
-                raise KeyError(f"{device.name} has no {kind} named {name!r}")
-            given = self._record(kind, name, _values(name, found.params, values))
-            if kind == "interface":
-                self.robot.call_interface(name, *given.values())
-            else:
-                self.robot.call_primitive(name, *given.values())
-        else:
-            raise ValueError(f"a call is of an input, an interface or a primitive, not {kind!r}")
 
-    def _record(self, kind: str, name: str, values: dict[str, Any]) -> dict[str, Any]:
-        """A call whose values are typed, recorded before it is made (as `rdisc run` does)."""
-        if self.recorder is not None:
-            self.recorder.call(kind, name, values)
-        return values
+_FORM_WORDS = {int: "an int", float: "a number", bool: "true or false"}
+"""What a form's field of a scalar type must hold, in the words of the console's errors."""
 
 
-def _values(owner: str, params: tuple[engine.Param, ...], given: dict[str, Any]) -> dict[str, Any]:
-    """The form's texts as the parameters' types, in the parameters' order; an empty text is
-    the parameter's default, when it has one."""
-    unknown = sorted(set(given) - {p.name for p in params})
-    if unknown:
-        raise TypeError(f"{owner} has no parameter or field named {unknown[0]!r}")
-    values: dict[str, Any] = {}
-    for p in params:
-        text = given.get(p.name)
-        if (text is None or text == "") and p.default is not None:
-            values[p.name] = p.default
-        elif text is None:
-            raise TypeError(f"{owner}: {p.name} is missing")
-        else:
-            values[p.name] = _value(owner, p, text)
-    return values
+def _read(device: engine.Device, kind: object, name: str, values: dict[str, Any]) -> dict[str, Any]:
+    """The form's values, each a text (a checkbox's a bool), typed as `--call` types them
+    (`engine.call_values`), in the parameters' order; the console's words for what is refused."""
 
+    def read(given: Any, p: engine.Param, what: str) -> Any:
+        if not isinstance(given, str) and not (isinstance(given, bool) and p.kind is bool and p.size is None):
+            raise TypeError(f"{name}: {p.name} is given as text, not {type(given).__name__}")
+        try:
+            return engine.read_value(given, p, what)
+        except TypeError:
+            if p.size is not None or p.kind not in _FORM_WORDS:
+                raise
+            raise ValueError(f"{name}: {p.name} must be {_FORM_WORDS[p.kind]}, not {given!r}") from None
 
-def _value(owner: str, p: engine.Param, given: Any) -> Any:
-    if p.kind is bool and p.size is None:
-        if isinstance(given, bool):
-            return given
-        if given in ("true", "false", "True", "False"):
-            return given in ("true", "True")
-        raise ValueError(f"{owner}: {p.name} must be true or false, not {given!r}")
-    if not isinstance(given, str):
-        raise TypeError(f"{owner}: {p.name} is given as text, not {type(given).__name__}")
-    text = given.strip()
-    if p.size is not None:
-        value = engine.parse_value(text if text.startswith("[") else f"[{text}]")
-        return value
-    if p.kind in (str, bytes):  # text as it is; bytes as hex, which the engine reads
-        return given
     try:
-        return int(text, 0) if p.kind is int else float(text)
-    except ValueError:
-        raise ValueError(f"{owner}: {p.name} must be {'an int' if p.kind is int else 'a number'}, "
-                         f"not {given!r}") from None
+        return engine.call_values(device, kind, name, values, read)
+    except engine.Unbound as err:
+        if err.unknown is not None:
+            raise TypeError(f"{name} has no parameter or field named {err.unknown!r}") from None
+        raise TypeError(f"{name}: {err.missing} is missing") from None
 
 
 # the page's own files only, its WebSocket only, and no framing by another site

@@ -14,7 +14,7 @@ and pyserial to open a port by name; nothing of rdisc outside it. The semantics 
 contract in docs/runtime.md.
 """
 
-from rdisc.engine.arguments import bind_settings
+from rdisc.engine.arguments import Unbound, bind_named, bind_settings, call_values, read_value
 from rdisc.engine.checksums import Checksum
 from rdisc.engine.codec import Format, Group, Match, Pack, Split, Unpack, Varying
 from rdisc.engine.command import (
@@ -24,11 +24,10 @@ from rdisc.engine.command import (
     EXIT_SIGTERM,
     EXIT_USAGE,
     add_arguments,
+    make_call,
     parse_call,
     parse_ports,
     parse_settings,
-    parse_typed,
-    parse_value,
     run_command,
     start_recording,
 )
@@ -145,19 +144,22 @@ __all__ = [
     "State",
     "StateValues",
     "Stuffing",
+    "Unbound",
     "Unpack",
     "Value",
     "Varying",
     "Wrap",
     "add_arguments",
+    "bind_named",
     "bind_settings",
+    "call_values",
     "element",
     "lookup",
+    "make_call",
     "parse_call",
     "parse_ports",
     "parse_settings",
-    "parse_typed",
-    "parse_value",
+    "read_value",
     "replaced",
     "ros_message",
     "run_command",

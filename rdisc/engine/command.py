@@ -13,9 +13,9 @@ import time
 from collections.abc import Mapping
 from typing import Any
 
-from rdisc.engine.arguments import bind_settings
-from rdisc.engine.errors import RdisError
-from rdisc.engine.plans import Device, Input, Interface, Param, Primitive
+from rdisc.engine.arguments import Unbound, bind_settings, call_values, read_value
+from rdisc.engine.errors import RdisError, RdisValueError
+from rdisc.engine.plans import Device, Input, Interface, Primitive
 from rdisc.engine.ports import Simulator
 from rdisc.engine.recording import Recorder
 from rdisc.engine.robot import Robot
@@ -71,7 +71,7 @@ def run_command(args: argparse.Namespace, robot: Robot, prog: str, sim: Simulato
         port = None if sim is not None else parse_ports(args.port, robot.device)
         settings = bind_settings(robot.device, parse_settings(args.set, robot.device))
         calls = [parse_call(words, robot.device) for words in args.call]
-    except ValueError as err:
+    except (TypeError, ValueError) as err:
         print(f"{prog}: {err}", file=sys.stderr)
         return EXIT_USAGE
     recorder = start_recording(robot, args.record, settings, prog) if args.record else None
@@ -90,12 +90,7 @@ def run_command(args: argparse.Namespace, robot: Robot, prog: str, sim: Simulato
         for name, kind, values in calls:
             if recorder is not None:
                 recorder.call(kind, name, values)
-            if kind == "input":
-                robot.call_input(name, **values)
-            elif kind == "interface":
-                robot.call_interface(name, *values.values())
-            else:
-                robot.call_primitive(name, *values.values())
+            make_call(robot, kind, name, values)
         if simulated and (args.duration is not None or args.watch):
             robot.run_for(None if args.duration is None else args.duration - (clock() - started))
         elif args.duration is not None:
@@ -183,40 +178,9 @@ def parse_ports(given: list[str], device: Device) -> str | dict[str, str] | None
     return named
 
 
-def parse_value(text: str) -> Value:
-    """A command-line value: an int, a float, True or False, an array of those written
-    `[1,2,3]`, else the text itself."""
-    if text.startswith("[") and text.endswith("]"):
-        return tuple(parse_value(item.strip()) for item in text[1:-1].split(",")) if text[1:-1].strip() else ()
-    for convert in (int, float):
-        try:
-            number: Value = convert(text)
-        except ValueError:
-            continue
-        return number
-    if text in ("True", "False"):
-        return text == "True"
-    return text
-
-
-def parse_typed(text: str, param: Param | None) -> Value:
-    """A command-line value read as its parameter's, field's or setting's type says: a string
-    as it is written, bytes as the hex text that `_accept` reads, an array `[a,b,c]` element by
-    element, anything else by `parse_value` (the type check then refuses what does not fit)."""
-    if param is None:
-        return parse_value(text)
-    textual = param.kind in (str, bytes)
-    if param.size is None:
-        return text if textual else parse_value(text)
-    if not (text.startswith("[") and text.endswith("]")) or not textual:
-        return parse_value(text)
-    inner = text[1:-1]
-    return tuple(item.strip() for item in inner.split(",")) if inner.strip() else ()
-
-
 def parse_settings(given: list[str], device: Device) -> dict[str, Any]:
-    """--set NAME=VALUE ...: each value read as its setting's type says (`parse_typed`), for
-    `bind_settings` to check."""
+    """--set NAME=VALUE ...: each value read as its setting's type says (`read_value`), for
+    `bind_settings` to check; one that does not fit is an RdisValueError naming the setting."""
     declared = {p.name: p for p in device.settings}
     values: dict[str, Any] = {}
     for pair in given:
@@ -225,15 +189,20 @@ def parse_settings(given: list[str], device: Device) -> dict[str, Any]:
             raise ValueError(f"--set `{pair}` is not NAME=VALUE")
         if name in values:
             raise ValueError(f"--set {name} given twice")
-        values[name] = parse_typed(text, declared.get(name))
+        param = declared.get(name)
+        try:
+            values[name] = text if param is None else read_value(text, param, f"{device.name}: setting {name}")
+        except TypeError as err:
+            raise RdisValueError(str(err)) from None
     return values
 
 
 def parse_call(words: list[str], device: Device) -> tuple[str, str, dict[str, Value]]:
     """--call NAME K=V ...: (name, "input" | "interface" | "primitive", values in declaration
-    order, each read as its parameter's or field's type says); an input is preferred to an
-    interface of the same name, an interface to a primitive. An unknown name is answered with
-    the nearest known one."""
+    order, each read as its parameter's or field's type says, `read_value`; those left out take
+    their defaults); an input is preferred to an interface of the same name, an interface to a
+    primitive. An unknown name is answered with the nearest known one. A value that does not fit
+    is refused here, before anything is opened (TypeError, or RdisValueError naming it)."""
     name, *pairs = words
     plan: Input | Interface | Primitive | None = None
     for kind, plan in (("input", device.inputs.get(name)), ("interface", device.interfaces.get(name)),
@@ -245,19 +214,31 @@ def parse_call(words: list[str], device: Device) -> tuple[str, str, dict[str, Va
         near = difflib.get_close_matches(name, known, n=1)
         hint = f"did you mean `{near[0]}`?" if near else f"there are: {', '.join(known) or 'none'}"
         raise ValueError(f"{device.name} has no input, interface or primitive `{name}`; {hint}")
-    params = {p.name: p for p in (plan.fields if isinstance(plan, Input) else plan.params)}
-    values: dict[str, Value] = {}
+    given: dict[str, str] = {}
     for pair in pairs:
         key, sep, text = pair.partition("=")
         if not sep or not key:
             raise ValueError(f"--call {name}: `{pair}` is not KEY=VALUE")
-        if key in values:
+        if key in given:
             raise ValueError(f"--call {name}: `{key}` given twice")
-        values[key] = parse_typed(text, params.get(key))
-    if sorted(values) != sorted(params):
-        wanted = " ".join(f"{e}=..." for e in params) or "no values"
-        raise ValueError(f"--call {name} takes {wanted}")
-    return name, kind, {e: values[e] for e in params}
+        given[key] = text
+    try:
+        return name, kind, call_values(device, kind, name, given)
+    except Unbound:
+        params = plan.fields if isinstance(plan, Input) else plan.params
+        wanted = " ".join(f"{p.name}=..." if p.default is None else f"[{p.name}={p.default!r}]" for p in params)
+        raise ValueError(f"--call {name} takes {wanted or 'no values'}") from None
+
+
+def make_call(robot: Robot, kind: str, name: str, values: Mapping[str, Value]) -> None:
+    """A call of an input, interface or primitive with its values by name, in declaration order
+    (`call_values`'): how `--call`, the console and a replay make theirs."""
+    if kind == "input":
+        robot.call_input(name, **values)
+    elif kind == "interface":
+        robot.call_interface(name, *values.values())
+    else:
+        robot.call_primitive(name, *values.values())
 
 
 def _print_output(message: dict[str, Any]) -> None:

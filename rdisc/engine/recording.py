@@ -69,7 +69,7 @@ class Recorder:
     def call(self, kind: str, name: str, values: Mapping[str, Any]) -> None:
         """The host calls an input, an interface or a primitive with these values by name."""
         self._write(RUNS_TOPIC, _TEXT, _TEXT_SCHEMA, {"data": json.dumps({"call": kind, "name": name,
-                                                                         "values": dict(values)})})
+                                                                         "values": dict(values)}, default=bytes.hex)})
         plan = self._device.inputs.get(name) if kind == "input" else None
         if plan is not None:
             self._adapted(name, plan.adapter, dict(values))

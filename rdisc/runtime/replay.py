@@ -198,19 +198,16 @@ def _settings(values: Mapping[str, Any]) -> dict[str, Any]:
 def _run(robot: engine.Robot, recorder: engine.Recorder, run: Mapping[str, Any]) -> None:
     """One recorded run again: a call of the host, or a connection's periodic interface or keepalive."""
     if "call" in run:
-        kind, name, values = run["call"], run["name"], _settings(run["values"])
-        recorder.call(kind, name, values)
-        try:
-            if kind == "input":
-                robot.call_input(name, **values)
-            elif kind == "interface":
-                robot.call_interface(name, *values.values())
-            else:
-                robot.call_primitive(name, *values.values())
+        kind, name = run["call"], run["name"]
+        try:  # the values read as `--call` and the console read theirs, then recorded and made as they are
+            values = engine.call_values(robot.device, kind, name, run["values"])
+            recorder.call(kind, name, values)
+            engine.make_call(robot, kind, name, values)
         except engine.RdisError:  # the device's or the values' error, as in a live session (RdisValueError too)
             raise
         except (KeyError, TypeError, ValueError) as err:  # not in this description, or not with these values
-            raise engine.RdisValueError(f"the recorded call of {kind} {name}: {err}") from None
+            message = err.args[0] if isinstance(err, KeyError) and err.args else err
+            raise engine.RdisValueError(f"the recorded call of {kind} {name}: {message}") from None
         return
     connection = robot.device.connections.get(run.get("connection", ""))
     if connection is None:

@@ -1192,17 +1192,9 @@ def _bind(what: str, params: tuple[Param, ...], args: tuple[Any, ...], kwargs: d
     """Arguments by position and by name, as Python binds them."""
     if len(args) > len(params):
         raise TypeError(f"{what} takes {len(params)} arguments, {len(args)} given")
-    values = list(args)
-    for param in params[len(args) :]:
-        if param.name in kwargs:
-            values.append(kwargs.pop(param.name))
-        elif param.default is not None:
-            values.append(param.default)
-        else:
-            raise TypeError(f"{what}: missing argument {param.name!r}")
-    if kwargs:
-        raise TypeError(f"{what}: unexpected argument {next(iter(kwargs))!r}")
-    return values
+    if not kwargs and len(args) == len(params):  # every argument by position: nothing to bind
+        return list(args)
+    return [*args, *bind_named(what, params[len(args) :], kwargs).values()]
 
 
 def _accepted(what: str, params: tuple[Param, ...], values: Args) -> Args:
@@ -1285,13 +1277,129 @@ def bind_settings(device: Device, given: Mapping[str, Any] | None) -> dict[str, 
         except TypeError as err:
             raise RdisValueError(str(err)) from None
         for item in accepted if param.size is not None else (accepted,):
-            if type(item) is int and not -MAX_INT <= item <= MAX_INT:
-                raise RdisValueError(f"{device.name}: setting {name} is a {item.bit_length()}-bit integer; "
-                                     "integers are limited to 64 bits and a sign")
+            _within_width(item, f"{device.name}: setting {name}")
         if param.low is not None:
             _check_ranges(device.name, (param,), (0,), [accepted], "setting")
         bound[name] = accepted
     return bound
+
+
+def _within_width(value: Any, what: str) -> None:
+    if type(value) is int and not -MAX_INT <= value <= MAX_INT:
+        raise RdisValueError(f"{what} is a {value.bit_length()}-bit integer; integers are limited to 64 bits and a sign")
+
+
+class Unbound(TypeError):
+    """Values given by name that do not bind to the parameters: the first name of none of them
+    (`unknown`), else the first parameter given no value and without a default (`missing`)."""
+
+    def __init__(self, what: str, unknown: str | None, missing: str | None) -> None:
+        super().__init__(f"{what}: unexpected argument {unknown!r}" if unknown is not None
+                         else f"{what}: missing argument {missing!r}")
+        self.unknown = unknown
+        self.missing = missing
+
+
+def bind_named(what: str, params: tuple[Param, ...], given: Mapping[str, Any],
+               read: Callable[[Any, Param], Any] | None = None) -> dict[str, Any]:
+    """Values given by name bound to the parameters (or fields), in their order, each made its type
+    by `read` if given; a parameter left out takes its default. The one binding of the typed API,
+    `--call`, the console and a replay."""
+    values: dict[str, Any] = {}
+    missing = None
+    found = 0
+    for param in params:
+        if param.name in given:
+            values[param.name] = given[param.name]
+            found += 1
+        elif param.default is not None:
+            values[param.name] = param.default
+        elif missing is None:
+            missing = param.name
+    if found < len(given):
+        raise Unbound(what, next(name for name in given if name not in values), None)
+    if missing is not None:
+        raise Unbound(what, None, missing)
+    if read is not None:
+        for param in params:
+            if param.name in given:
+                values[param.name] = read(values[param.name], param)
+    return values
+
+
+def call_values(device: Device, kind: object, name: str, given: Mapping[str, Any],
+                read: Callable[[Any, Param, str], Any] | None = None) -> dict[str, Value]:
+    """The values given by name (text, or JSON) of a call of the input, interface or primitive
+    `name`: `bind_named` with `read_value` (or `read`, which calls it). KeyError if there is no
+    such element; Unbound, TypeError or RdisValueError (naming the parameter) if they do not fit."""
+    if kind not in ("input", "interface", "primitive"):
+        raise ValueError(f"a call is of an input, an interface or a primitive, not {kind!r}")
+    plans: Mapping[str, Input | Interface | Primitive] = (
+        device.inputs if kind == "input" else device.interfaces if kind == "interface" else device.primitives)
+    plan = plans.get(name)
+    if plan is None:
+        raise KeyError(f"{device.name} has no {kind} named {name!r}")
+    reader = read_value if read is None else read
+    if isinstance(plan, Input):
+        return bind_named(f"input {name}", plan.fields, given,
+                          lambda value, p: reader(value, p, f"input {name}: field {p.name}"))
+    return bind_named(f"{kind} {name}", plan.params, given,
+                      lambda value, p: reader(value, p, f"{kind} {name}: parameter {p.name}"))
+
+
+def read_value(given: Any, param: Param, what: str) -> Any:
+    """A value given from outside Python for a parameter, field or setting, made its type: text (a
+    `--call` or `--set` K=V, a console's form) or a JSON value (a recording). A number is written as
+    a description writes one (`42`, `0x2A`, `-1.5e3`), in ASCII, finite and within 64 bits and a
+    sign, else it is an RdisValueError naming `what`; an array is `[a, b]` (or `a, b`) or a list;
+    bytes are hex; an empty text is the default, if there is one, of any type but string and bytes.
+    Any other value is taken as the typed API takes it (a TypeError if it does not fit)."""
+    if given == "" and param.default is not None and (param.size is not None or param.kind not in (str, bytes)):
+        return param.default
+    if param.size is None:
+        return _accept(_read_item(given, param.kind, what), param.kind, what)
+    if isinstance(given, str):
+        inner = given.strip()
+        inner = inner[1:-1] if inner.startswith("[") and inner.endswith("]") else inner
+        given = [item.strip() for item in inner.split(",")] if inner.strip() else []
+    if isinstance(given, (list, tuple)):
+        given = tuple(_read_item(item, param.kind, f"{what}[{i}]") for i, item in enumerate(given))
+    return _accept_array(given, param, what)
+
+
+def _read_item(given: Any, kind: type, what: str) -> Any:
+    """One value (or an array's element) read: a number's text as its number, checked; a text that
+    is no number is left for the type check to refuse."""
+    if isinstance(given, float) and not math.isfinite(given):
+        raise RdisValueError(f"{what} is {given!r}: a number must be finite")
+    if not isinstance(given, str) or kind in (str, bytes):
+        _within_width(given, what)
+        return given
+    text = given.strip()
+    if text in ("True", "true", "False", "false"):
+        return text in ("True", "true")
+    shown = repr(text) if len(text) <= 40 else f"{text[:30]!r}... ({len(text)} characters)"
+    if kind is not bool and not text.isascii():  # Python would read '٣٣' as 33
+        raise RdisValueError(f"{what} is {shown}: a number is written in ASCII")
+    digits = text.lstrip("+-").replace("_", "")
+    number: int | float
+    try:
+        number = float(text) if kind is float and digits[:2].lower() not in ("0x", "0b", "0o") else int(text, 0)
+    except ValueError:
+        if digits.isdigit():  # `010` is no number, as in a description; or too many digits to read
+            if len(digits) > 20:
+                raise RdisValueError(f"{what} is {shown}: integers are limited to 64 bits and a sign") from None
+            return given
+        if kind is float:
+            return given
+        try:  # `1.5` or `1e400` for an int
+            number = float(text)
+        except ValueError:
+            return given
+    if not math.isfinite(number):
+        raise RdisValueError(f"{what} is {shown}: a number must be finite")
+    _within_width(number, what)
+    return number
 
 
 # ---- rdisc engine: frames (rdisc/engine/frames.py), frames written and read ----------------------
@@ -2752,7 +2860,7 @@ class Recorder:
     def call(self, kind: str, name: str, values: Mapping[str, Any]) -> None:
         """The host calls an input, an interface or a primitive with these values by name."""
         self._write(RUNS_TOPIC, _TEXT, _TEXT_SCHEMA, {"data": json.dumps({"call": kind, "name": name,
-                                                                         "values": dict(values)})})
+                                                                         "values": dict(values)}, default=bytes.hex)})
         plan = self._device.inputs.get(name) if kind == "input" else None
         if plan is not None:
             self._adapted(name, plan.adapter, dict(values))
@@ -2888,7 +2996,7 @@ def run_command(args: argparse.Namespace, robot: Robot, prog: str, sim: Simulato
         port = None if sim is not None else parse_ports(args.port, robot.device)
         settings = bind_settings(robot.device, parse_settings(args.set, robot.device))
         calls = [parse_call(words, robot.device) for words in args.call]
-    except ValueError as err:
+    except (TypeError, ValueError) as err:
         print(f"{prog}: {err}", file=sys.stderr)
         return EXIT_USAGE
     recorder = start_recording(robot, args.record, settings, prog) if args.record else None
@@ -2907,12 +3015,7 @@ def run_command(args: argparse.Namespace, robot: Robot, prog: str, sim: Simulato
         for name, kind, values in calls:
             if recorder is not None:
                 recorder.call(kind, name, values)
-            if kind == "input":
-                robot.call_input(name, **values)
-            elif kind == "interface":
-                robot.call_interface(name, *values.values())
-            else:
-                robot.call_primitive(name, *values.values())
+            make_call(robot, kind, name, values)
         if simulated and (args.duration is not None or args.watch):
             robot.run_for(None if args.duration is None else args.duration - (clock() - started))
         elif args.duration is not None:
@@ -3000,40 +3103,9 @@ def parse_ports(given: list[str], device: Device) -> str | dict[str, str] | None
     return named
 
 
-def parse_value(text: str) -> Value:
-    """A command-line value: an int, a float, True or False, an array of those written
-    `[1,2,3]`, else the text itself."""
-    if text.startswith("[") and text.endswith("]"):
-        return tuple(parse_value(item.strip()) for item in text[1:-1].split(",")) if text[1:-1].strip() else ()
-    for convert in (int, float):
-        try:
-            number: Value = convert(text)
-        except ValueError:
-            continue
-        return number
-    if text in ("True", "False"):
-        return text == "True"
-    return text
-
-
-def parse_typed(text: str, param: Param | None) -> Value:
-    """A command-line value read as its parameter's, field's or setting's type says: a string
-    as it is written, bytes as the hex text that `_accept` reads, an array `[a,b,c]` element by
-    element, anything else by `parse_value` (the type check then refuses what does not fit)."""
-    if param is None:
-        return parse_value(text)
-    textual = param.kind in (str, bytes)
-    if param.size is None:
-        return text if textual else parse_value(text)
-    if not (text.startswith("[") and text.endswith("]")) or not textual:
-        return parse_value(text)
-    inner = text[1:-1]
-    return tuple(item.strip() for item in inner.split(",")) if inner.strip() else ()
-
-
 def parse_settings(given: list[str], device: Device) -> dict[str, Any]:
-    """--set NAME=VALUE ...: each value read as its setting's type says (`parse_typed`), for
-    `bind_settings` to check."""
+    """--set NAME=VALUE ...: each value read as its setting's type says (`read_value`), for
+    `bind_settings` to check; one that does not fit is an RdisValueError naming the setting."""
     declared = {p.name: p for p in device.settings}
     values: dict[str, Any] = {}
     for pair in given:
@@ -3042,15 +3114,20 @@ def parse_settings(given: list[str], device: Device) -> dict[str, Any]:
             raise ValueError(f"--set `{pair}` is not NAME=VALUE")
         if name in values:
             raise ValueError(f"--set {name} given twice")
-        values[name] = parse_typed(text, declared.get(name))
+        param = declared.get(name)
+        try:
+            values[name] = text if param is None else read_value(text, param, f"{device.name}: setting {name}")
+        except TypeError as err:
+            raise RdisValueError(str(err)) from None
     return values
 
 
 def parse_call(words: list[str], device: Device) -> tuple[str, str, dict[str, Value]]:
     """--call NAME K=V ...: (name, "input" | "interface" | "primitive", values in declaration
-    order, each read as its parameter's or field's type says); an input is preferred to an
-    interface of the same name, an interface to a primitive. An unknown name is answered with
-    the nearest known one."""
+    order, each read as its parameter's or field's type says, `read_value`; those left out take
+    their defaults); an input is preferred to an interface of the same name, an interface to a
+    primitive. An unknown name is answered with the nearest known one. A value that does not fit
+    is refused here, before anything is opened (TypeError, or RdisValueError naming it)."""
     name, *pairs = words
     plan: Input | Interface | Primitive | None = None
     for kind, plan in (("input", device.inputs.get(name)), ("interface", device.interfaces.get(name)),
@@ -3062,19 +3139,31 @@ def parse_call(words: list[str], device: Device) -> tuple[str, str, dict[str, Va
         near = difflib.get_close_matches(name, known, n=1)
         hint = f"did you mean `{near[0]}`?" if near else f"there are: {', '.join(known) or 'none'}"
         raise ValueError(f"{device.name} has no input, interface or primitive `{name}`; {hint}")
-    params = {p.name: p for p in (plan.fields if isinstance(plan, Input) else plan.params)}
-    values: dict[str, Value] = {}
+    given: dict[str, str] = {}
     for pair in pairs:
         key, sep, text = pair.partition("=")
         if not sep or not key:
             raise ValueError(f"--call {name}: `{pair}` is not KEY=VALUE")
-        if key in values:
+        if key in given:
             raise ValueError(f"--call {name}: `{key}` given twice")
-        values[key] = parse_typed(text, params.get(key))
-    if sorted(values) != sorted(params):
-        wanted = " ".join(f"{e}=..." for e in params) or "no values"
-        raise ValueError(f"--call {name} takes {wanted}")
-    return name, kind, {e: values[e] for e in params}
+        given[key] = text
+    try:
+        return name, kind, call_values(device, kind, name, given)
+    except Unbound:
+        params = plan.fields if isinstance(plan, Input) else plan.params
+        wanted = " ".join(f"{p.name}=..." if p.default is None else f"[{p.name}={p.default!r}]" for p in params)
+        raise ValueError(f"--call {name} takes {wanted or 'no values'}") from None
+
+
+def make_call(robot: Robot, kind: str, name: str, values: Mapping[str, Value]) -> None:
+    """A call of an input, interface or primitive with its values by name, in declaration order
+    (`call_values`'): how `--call`, the console and a replay make theirs."""
+    if kind == "input":
+        robot.call_input(name, **values)
+    elif kind == "interface":
+        robot.call_interface(name, *values.values())
+    else:
+        robot.call_primitive(name, *values.values())
 
 
 def _print_output(message: dict[str, Any]) -> None:
