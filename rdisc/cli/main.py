@@ -11,6 +11,7 @@ import contextlib
 import importlib
 import sys
 from types import ModuleType
+from typing import cast
 
 from rdisc import __version__
 
@@ -70,7 +71,7 @@ def main(argv: list[str] | None = None) -> int:
         budget = token_budget(args.max_tokens)
     try:
         with budget:
-            return int(args.run(args))
+            return cast(int, args.run(args))
     except KeyboardInterrupt:
         return 130
     except BrokenPipeError:
