@@ -58,7 +58,17 @@ _DECL_NAME = re.compile(r"({})\s+([A-Za-z][A-Za-z0-9_]*)".format("|".join(DECL_K
 
 @lru_cache(maxsize=1)
 def parser() -> lark.Lark:
-    """The grammar's parser; Lark is imported only now: start-up time matters for `rdisc check`."""
+    """The grammar's parser, its states' lexers sharing one pattern (rdisc/syntax/lexing.py)."""
+    from rdisc.syntax.lexing import share_scanners
+
+    made = lark_parser()
+    share_scanners(made)
+    return made
+
+
+def lark_parser() -> lark.Lark:
+    """The grammar's parser as Lark makes it; Lark is imported only now: start-up time matters
+    for `rdisc check`."""
     import lark
 
     from rdisc.resources import grammar_path
