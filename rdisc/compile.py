@@ -7,8 +7,12 @@ importer instead of the parser and goes through the same checker.
 
 from __future__ import annotations
 
+import gc
 import os
 import stat
+from collections.abc import Iterator
+from contextlib import contextmanager
+from contextvars import ContextVar
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -23,6 +27,19 @@ from rdisc.syntax.parse import MAX_FILE_CHARS, parse, token_count
 
 MAX_IMPORTS = 256
 MAX_TOKENS = 200_000  # of a description and its imports: about seventy times the largest example's
+# The budget of descriptions compiled in this context: the command line's --max-tokens (token_budget).
+_max_tokens: ContextVar[int] = ContextVar("max_tokens", default=MAX_TOKENS)
+
+
+@contextmanager
+def token_budget(tokens: int) -> Iterator[None]:
+    """Descriptions compiled inside may have up to `tokens` tokens with their imports: what
+    `--max-tokens` gives every verb that reads one, for large descriptions a user trusts."""
+    reset = _max_tokens.set(tokens)
+    try:
+        yield
+    finally:
+        _max_tokens.reset(reset)
 
 
 @dataclass
@@ -59,36 +76,55 @@ class _Tokens:
     """The tokens a description and its imports may still have. Parsing costs time in
     proportion to them (about 10 us each in Lark), so a file past them is refused before."""
 
-    def __init__(self) -> None:
-        self.left = MAX_TOKENS
+    def __init__(self, most: int | None = None) -> None:
+        self.most = _max_tokens.get() if most is None else most
+        self.left = self.most
 
     def parse(self, path: str, text: str, diagnostics: Diagnostics) -> ast.Module:
         count = token_count(text, self.left)
         if count > self.left:
-            diagnostics.report("E005", Span(path, 0, 0), f"the description has more than {MAX_TOKENS} tokens, "
-                               "with its imports; this file is not read")
+            diagnostics.report("E005", Span(path, 0, 0), f"the description has more than {self.most} tokens, "
+                               "with its imports; this file is not read",
+                               help="a larger description you trust is read with `--max-tokens N`")
             self.left = 0
             return ast.Module(path, (), refused=True)
         self.left -= count
         return parse(path, text, diagnostics)
 
 
-def compile_path(path: str) -> Compilation:
-    """Check one description (.rdis or .json) and build its Model."""
+@contextmanager
+def _without_collections() -> Iterator[None]:
+    """The cyclic garbage collector paused: a large description is a few million new objects
+    and almost no cycles, and the collector's passes over them cost a third of a check, more
+    the larger it is (about 10 MB more memory for 40,000 lines)."""
+    enabled = gc.isenabled()
+    gc.disable()
+    try:
+        yield
+    finally:
+        if enabled:
+            gc.enable()
+
+
+def compile_path(path: str, max_tokens: int | None = None) -> Compilation:
+    """Check one description (.rdis or .json) and build its Model. `max_tokens`: the token
+    budget of the description with its imports (default: the context's, MAX_TOKENS)."""
     diagnostics = Diagnostics()
     text = read_text(path, diagnostics)
     if text is None:
         return Compilation(None, diagnostics, Sources())
-    return compile_text(path, text, diagnostics)
+    return compile_text(path, text, diagnostics, max_tokens)
 
 
-def compile_text(path: str, text: str, diagnostics: Diagnostics | None = None) -> Compilation:
+@_without_collections()
+def compile_text(path: str, text: str, diagnostics: Diagnostics | None = None,
+                 max_tokens: int | None = None) -> Compilation:
     """Check a description given as text, named `path` (.json for the JSON importer): a ROS
     node rebuilds its Model for `~sim` from the canonical JSON it embeds, with no file."""
     diagnostics = diagnostics if diagnostics is not None else Diagnostics()
     sources = Sources()
     sources.add(path, text)
-    tokens = _Tokens()
+    tokens = _Tokens(max_tokens)
     if path.endswith(".json"):
         from rdisc.syntax.json_import import read
 
@@ -102,10 +138,12 @@ def compile_text(path: str, text: str, diagnostics: Diagnostics | None = None) -
     return _analyse(units, diagnostics, sources, main)
 
 
-def compile_module(main: ast.Module, diagnostics: Diagnostics, sources: Sources) -> Compilation:
+@_without_collections()
+def compile_module(main: ast.Module, diagnostics: Diagnostics, sources: Sources,
+                   max_tokens: int | None = None) -> Compilation:
     """Check an already-built syntax tree (from the JSON importer) with its imports."""
     units: list[Unit] = []
-    _add_unit(main, True, diagnostics, sources, units, _Tokens())
+    _add_unit(main, True, diagnostics, sources, units, _Tokens(max_tokens))
     return _analyse(units, diagnostics, sources, main)
 
 

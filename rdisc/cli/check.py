@@ -12,7 +12,7 @@ from rdisc.cli.output import EXIT_USAGE, exit_code, show
 from rdisc.compile import compile_path
 
 
-def add_parser(verbs) -> None:
+def add_parser(verbs: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     p = verbs.add_parser("check", help="check descriptions and report every problem")
     p.add_argument("files", nargs="+", metavar="FILE",
                    help=".rdis or thesis-style .json descriptions; a directory: each .rdis and .json file in it")

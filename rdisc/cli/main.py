@@ -7,9 +7,11 @@ the runtime, asyncio or the console to start (`rdisc --help` loads them all to l
 from __future__ import annotations
 
 import argparse
+import contextlib
 import importlib
 import sys
 from types import ModuleType
+from typing import cast
 
 from rdisc import __version__
 
@@ -27,6 +29,16 @@ def _module(verb: str) -> ModuleType:
     return importlib.import_module(f"rdisc.cli.{VERBS[verb]}")
 
 
+def _tokens(text: str) -> int:
+    try:
+        value = int(text.replace("_", "").replace(",", ""))
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"not a number of tokens: {text!r}") from None
+    if value < 1:
+        raise argparse.ArgumentTypeError(f"the budget must be at least one token, not {value}")
+    return value
+
+
 def parser(argv: list[str] | None = None) -> argparse.ArgumentParser:
     """The command line's parser: of the verb `argv` names, or of every verb."""
     p = argparse.ArgumentParser(
@@ -39,14 +51,27 @@ def parser(argv: list[str] | None = None) -> argparse.ArgumentParser:
     named = next((a for a in argv or () if not a.startswith("-")), None)
     for verb in [named] if named in VERBS else VERBS:
         _module(verb).add_parser(verbs)
+        if verb != "explain":  # every other verb reads a description (and has imported rdisc.compile)
+            from rdisc.compile import MAX_TOKENS
+
+            verbs.choices[verb].add_argument(
+                "--max-tokens", type=_tokens, metavar="N",
+                help=f"read a description of up to N tokens with its imports (default {MAX_TOKENS:,}): for large,"
+                " generated descriptions you trust; checking takes time in proportion to them")
     return p
 
 
 def main(argv: list[str] | None = None) -> int:
     given = sys.argv[1:] if argv is None else argv
     args = parser(given).parse_args(given)
+    budget: contextlib.AbstractContextManager[None] = contextlib.nullcontext()
+    if getattr(args, "max_tokens", None) is not None:
+        from rdisc.compile import token_budget
+
+        budget = token_budget(args.max_tokens)
     try:
-        return args.run(args)
+        with budget:
+            return cast(int, args.run(args))
     except KeyboardInterrupt:
         return 130
     except BrokenPipeError:

@@ -45,9 +45,9 @@ escapes: a character past ASCII has no single byte. Wrong: `b"°"`. Right:
     ("E005", "too-complex", """
 Too much to read: an expression nested deeper than 100 levels, a line longer
 than 65,536 characters, a declaration of more than 20,000 tokens, a description
-of more than 200,000 tokens with its imports, a file larger than 8 MiB, more
-than 256 imported files, or transmissions whose conversions have more than
-50,000 operations in all (each is sampled at 33 points of its joint's range).
+of more than 200,000 tokens with its imports (`--max-tokens N` raises this
+one), a file larger than 8 MiB, more than 256 imported files, or
+transmissions whose conversions have more than 50,000 operations in all (each is sampled at 33 points of its joint's range).
 Descriptions may come from devices and networks, so rdisc bounds the work any
 input can cause before it reads it."""),
     ("E006", "unreadable-file", """

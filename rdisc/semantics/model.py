@@ -8,8 +8,12 @@ from __future__ import annotations
 import dataclasses
 import enum
 from collections.abc import Iterator
-from dataclasses import dataclass, field
-from typing import Any, NewType
+from typing import TYPE_CHECKING, Any, NewType
+
+if TYPE_CHECKING:
+    from dataclasses import dataclass, field
+else:  # the same classes, their methods written out ahead of time: rdisc/frozen.py
+    from rdisc.semantics.model_methods import dataclass, field
 
 from rdisc.source import Span
 
@@ -33,7 +37,8 @@ class Type(enum.Enum):
 
     def default(self) -> Value:
         """The value `""` stands for in thesis JSON (section 4.3.3)."""
-        return {Type.INT: 0, Type.FLOAT: 0.0, Type.BOOL: False, Type.STRING: "", Type.BYTES: b""}[self]
+        defaults: dict[Type, Value] = {Type.INT: 0, Type.FLOAT: 0.0, Type.BOOL: False, Type.STRING: "", Type.BYTES: b""}
+        return defaults[self]
 
 
 @dataclass(frozen=True, slots=True)

@@ -8,6 +8,7 @@ not resolve is reported here once, and later passes skip it silently.
 from __future__ import annotations
 
 import difflib
+from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
 
 from rdisc.diagnostics import Diagnostics, Label
@@ -91,9 +92,12 @@ def resolve(units: list[Unit], diagnostics: Diagnostics) -> Symbols:
             f"{main.module.path} has no `robot` declaration",
             help="start the description with `robot NAME { author \"...\" }`",
         )
+    # What a call statement or a command names: a primitive, or else an interface. Merged once
+    # here, not per call: binding takes time in proportion to the description.
+    callables: dict[str, ast.InterfaceDecl | ast.PrimitiveDecl] = {**symbols.interfaces, **symbols.primitives}
     for unit in units:
         for decl in unit.module.decls:
-            _bind(decl, symbols, diagnostics)
+            _bind(decl, symbols, callables, diagnostics)
     return symbols
 
 
@@ -107,13 +111,13 @@ def check_name(name: ast.Ident, what: str, diagnostics: Diagnostics) -> None:
                            help=f"choose another name, e.g. `{name.text}_value`")
 
 
-def closest(name: str, candidates) -> str | None:
+def closest(name: str, candidates: Iterable[str]) -> str | None:
     """The declared name closest to a misspelt one, if any is close."""
     close = difflib.get_close_matches(name, list(candidates), n=1, cutoff=0.6)
     return close[0] if close else None
 
 
-def suggest(name: str, candidates) -> str | None:
+def suggest(name: str, candidates: Iterable[str]) -> str | None:
     """A 'did you mean' help line when a declared name is close."""
     close = closest(name, candidates)
     return f"did you mean `{close}`?" if close else None
@@ -158,8 +162,8 @@ def _declare(unit: Unit, symbols: Symbols, diagnostics: Diagnostics) -> None:
             symbols.standard.add(id(decl))
 
 
-def _bind(decl: ast.Decl, symbols: Symbols, diagnostics: Diagnostics) -> None:
-    def need(ident: ast.Ident, table: dict, what: str) -> None:
+def _bind(decl: ast.Decl, symbols: Symbols, callables: Mapping[str, object], diagnostics: Diagnostics) -> None:
+    def need(ident: ast.Ident, table: Mapping[str, object], what: str) -> None:
         if ident.text not in table and not symbols.is_damaged(what, ident.text):
             close = closest(ident.text, table)
             if close:
@@ -184,14 +188,14 @@ def _bind(decl: ast.Decl, symbols: Symbols, diagnostics: Diagnostics) -> None:
                 elif isinstance(clause, ast.Framed):
                     need(clause.frame, symbols.frames, "frame")
         case ast.InterfaceDecl():
-            for clause in decl.clauses:
-                if isinstance(clause, ast.Triggers):
-                    for output in clause.outputs:
+            for part in decl.clauses:
+                if isinstance(part, ast.Triggers):
+                    for output in part.outputs:
                         need(output, symbols.outputs, "output")
             for stmt in ast.call_stmts(decl.body):  # a primitive, or else an interface, of the name
                 name = stmt.call.target.text
                 if not symbols.is_damaged("primitive", name) and not symbols.is_damaged("interface", name):
-                    need(stmt.call.target, {**symbols.interfaces, **symbols.primitives}, "primitive or interface")
+                    need(stmt.call.target, callables, "primitive or interface")
         case ast.InputDecl():
             need(decl.adapter, symbols.adapters, "adapter")
             need(decl.call.target, symbols.interfaces, "interface")
@@ -204,7 +208,7 @@ def _bind(decl: ast.Decl, symbols: Symbols, diagnostics: Diagnostics) -> None:
             need(decl.joint, symbols.joints, "joint")
             for binding in decl.bindings:
                 if binding.role == "command":
-                    need(binding.target, {**symbols.interfaces, **symbols.primitives}, "primitive or interface")
+                    need(binding.target, callables, "primitive or interface")
                 elif binding.target.text not in symbols.settings:  # read like state; refused by the checker
                     need(binding.target, symbols.states, "state variable")
         case _:

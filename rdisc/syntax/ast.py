@@ -7,7 +7,12 @@ kept as written, repeats included: the checker reports what is missing or double
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from dataclasses import dataclass, field
+else:  # the same classes, their methods written out ahead of time: rdisc/frozen.py
+    from rdisc.syntax.ast_methods import dataclass, field
 
 from rdisc.source import Span
 

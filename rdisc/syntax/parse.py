@@ -11,12 +11,16 @@ from __future__ import annotations
 
 import re
 from functools import lru_cache
+from typing import TYPE_CHECKING, cast
 
 from rdisc.diagnostics import Diagnostics
 from rdisc.source import Span
 from rdisc.syntax import ast
 from rdisc.syntax.build import MAX_EXPR_DEPTH, Builder, TooDeep
 from rdisc.syntax.errors import describe_unexpected
+
+if TYPE_CHECKING:
+    import lark
 
 MAX_FILE_CHARS = 8 * 1024 * 1024
 MAX_TREE_DEPTH = 120  # of Lark's tree; expressions are bounded by MAX_EXPR_DEPTH
@@ -53,7 +57,18 @@ _DECL_NAME = re.compile(r"({})\s+([A-Za-z][A-Za-z0-9_]*)".format("|".join(DECL_K
 
 
 @lru_cache(maxsize=1)
-def parser():  # -> lark.Lark, imported lazily: start-up time matters for `rdisc check`
+def parser() -> lark.Lark:
+    """The grammar's parser, its states' lexers sharing one pattern (rdisc/syntax/lexing.py)."""
+    from rdisc.syntax.lexing import share_scanners
+
+    made = lark_parser()
+    share_scanners(made)
+    return made
+
+
+def lark_parser() -> lark.Lark:
+    """The grammar's parser as Lark makes it; Lark is imported only now: start-up time matters
+    for `rdisc check`."""
     import lark
 
     from rdisc.resources import grammar_path
@@ -124,7 +139,7 @@ def parse(path: str, text: str, diagnostics: Diagnostics) -> ast.Module:
 _NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
 
 
-def _keyword_as_name(err) -> bool:
+def _keyword_as_name(err: lark.exceptions.UnexpectedInput) -> bool:
     """Keywords are contextual: a clause keyword (`baud`, `length`, `mask`, ...) where the
     parser wants a name is that name. LALR merges the states after an expression, so the
     lexer offers every keyword that may follow an expression anywhere; this undoes that."""
@@ -163,8 +178,8 @@ def parse_expression(path: str, text: str, base_offset: int, diagnostics: Diagno
         meta = deepest.meta
         too_deep = Span(path, base_offset + meta.start_pos, base_offset + meta.end_pos)
     else:
-        try:
-            return Builder(path, {}, diagnostics).build(tree, base_offset)
+        try:  # built from the `expr_start` rule: one expression
+            return cast(ast.Expr, Builder(path, {}, diagnostics).build(tree, base_offset))
         except lark.exceptions.VisitError as err:
             if not isinstance(err.orig_exc, TooDeep):
                 raise
@@ -216,7 +231,7 @@ def _doc_comments(text: str) -> dict[int, str]:
     return docs
 
 
-def _depth(tree) -> tuple[int, object]:
+def _depth(tree: lark.Tree[lark.Token]) -> tuple[int, lark.Tree[lark.Token]]:
     """Maximum depth of a Lark tree, computed without recursion."""
     import lark
 
@@ -232,7 +247,8 @@ def _depth(tree) -> tuple[int, object]:
     return best, deepest
 
 
-def _report_syntax_error(err, path, text, start, end, last, diagnostics) -> None:
+def _report_syntax_error(err: lark.exceptions.UnexpectedInput, path: str, text: str, start: int, end: int,
+                         last: bool, diagnostics: Diagnostics) -> None:
     code, offset, length, message, label, help = describe_unexpected(err, text[start:end], last)
     at = start + offset
     diagnostics.report(code, Span(path, at, min(at + length, len(text))), message, label=label, help=help)

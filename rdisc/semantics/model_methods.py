@@ -1,0 +1,2670 @@
+"""The methods of the frozen dataclasses of rdisc/semantics/model.py, written out ahead of time (why: rdisc/frozen.py).
+
+Written by `python -m rdisc.frozen_writer` from the declarations: do not edit; rerun it after
+changing a class's fields (a test holds this file equal to what it writes).
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from rdisc.frozen import DEFAULT, FACTORY, MISSING, FieldSpec, Written, classes, field
+
+__all__ = ["dataclass", "field"]
+
+_set = object.__setattr__
+
+
+def _init_Array(self: Any, element: Any, size: Any) -> None:
+    _set(self, "element", element)
+    _set(self, "size", size)
+
+
+def _repr_Array(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(element={self.element!r}, size={self.size!r})"
+
+
+def _eq_Array(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.element, self.size) == (other.element, other.size)
+    return NotImplemented
+
+
+def _hash_Array(self: Any) -> int:
+    return hash((self.element, self.size))
+
+
+def _init_Const(self: Any, value: Any, type: Any, span: Any = DEFAULT) -> None:
+    _set(self, "value", value)
+    _set(self, "type", type)
+    _set(self, "span", span)
+
+
+def _repr_Const(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(value={self.value!r}, type={self.type!r})"
+
+
+def _eq_Const(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.value, self.type) == (other.value, other.type)
+    return NotImplemented
+
+
+def _hash_Const(self: Any) -> int:
+    return hash((self.value, self.type))
+
+
+def _init_Var(self: Any, name: Any, scope: Any, type: Any, span: Any = DEFAULT) -> None:
+    _set(self, "name", name)
+    _set(self, "scope", scope)
+    _set(self, "type", type)
+    _set(self, "span", span)
+
+
+def _repr_Var(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(name={self.name!r}, scope={self.scope!r}, type={self.type!r})"
+
+
+def _eq_Var(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.name, self.scope, self.type) == (other.name, other.scope, other.type)
+    return NotImplemented
+
+
+def _hash_Var(self: Any) -> int:
+    return hash((self.name, self.scope, self.type))
+
+
+def _init_ReplyValue(self: Any, index: Any, type: Any, span: Any = DEFAULT) -> None:
+    _set(self, "index", index)
+    _set(self, "type", type)
+    _set(self, "span", span)
+
+
+def _repr_ReplyValue(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(index={self.index!r}, type={self.type!r})"
+
+
+def _eq_ReplyValue(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.index, self.type) == (other.index, other.type)
+    return NotImplemented
+
+
+def _hash_ReplyValue(self: Any) -> int:
+    return hash((self.index, self.type))
+
+
+def _init_UnaryOp(self: Any, op: Any, operand: Any, type: Any, span: Any = DEFAULT) -> None:
+    _set(self, "op", op)
+    _set(self, "operand", operand)
+    _set(self, "type", type)
+    _set(self, "span", span)
+
+
+def _repr_UnaryOp(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(op={self.op!r}, operand={self.operand!r}, type={self.type!r})"
+
+
+def _eq_UnaryOp(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.op, self.operand, self.type) == (other.op, other.operand, other.type)
+    return NotImplemented
+
+
+def _hash_UnaryOp(self: Any) -> int:
+    return hash((self.op, self.operand, self.type))
+
+
+def _init_BinaryOp(self: Any, op: Any, left: Any, right: Any, type: Any, span: Any = DEFAULT) -> None:
+    _set(self, "op", op)
+    _set(self, "left", left)
+    _set(self, "right", right)
+    _set(self, "type", type)
+    _set(self, "span", span)
+
+
+def _repr_BinaryOp(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(op={self.op!r}, left={self.left!r}, right={self.right!r}, type={self.type!r})"
+
+
+def _eq_BinaryOp(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.op, self.left, self.right, self.type) == (other.op, other.left, other.right, other.type)
+    return NotImplemented
+
+
+def _hash_BinaryOp(self: Any) -> int:
+    return hash((self.op, self.left, self.right, self.type))
+
+
+def _init_IfElse(self: Any, cond: Any, then: Any, orelse: Any, type: Any, span: Any = DEFAULT) -> None:
+    _set(self, "cond", cond)
+    _set(self, "then", then)
+    _set(self, "orelse", orelse)
+    _set(self, "type", type)
+    _set(self, "span", span)
+
+
+def _repr_IfElse(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(cond={self.cond!r}, then={self.then!r}, orelse={self.orelse!r}, type={self.type!r})"
+
+
+def _eq_IfElse(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.cond,
+            self.then,
+            self.orelse,
+            self.type,
+        ) == (
+            other.cond,
+            other.then,
+            other.orelse,
+            other.type,
+        )
+    return NotImplemented
+
+
+def _hash_IfElse(self: Any) -> int:
+    return hash((self.cond, self.then, self.orelse, self.type))
+
+
+def _init_FuncCall(self: Any, func: Any, args: Any, type: Any, span: Any = DEFAULT) -> None:
+    _set(self, "func", func)
+    _set(self, "args", args)
+    _set(self, "type", type)
+    _set(self, "span", span)
+
+
+def _repr_FuncCall(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(func={self.func!r}, args={self.args!r}, type={self.type!r})"
+
+
+def _eq_FuncCall(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.func, self.args, self.type) == (other.func, other.args, other.type)
+    return NotImplemented
+
+
+def _hash_FuncCall(self: Any) -> int:
+    return hash((self.func, self.args, self.type))
+
+
+def _init_Table(
+    self: Any,
+    name: Any,
+    key_type: Any,
+    value_type: Any,
+    entries: Any,
+    doc: Any = DEFAULT,
+) -> None:
+    _set(self, "name", name)
+    _set(self, "key_type", key_type)
+    _set(self, "value_type", value_type)
+    _set(self, "entries", entries)
+    _set(self, "doc", doc)
+
+
+def _repr_Table(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(name={self.name!r}, key_type={self.key_type!r}, value_type={self.value_type!r}, entries={self.entries!r}, doc={self.doc!r})"
+
+
+def _eq_Table(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.name,
+            self.key_type,
+            self.value_type,
+            self.entries,
+            self.doc,
+        ) == (
+            other.name,
+            other.key_type,
+            other.value_type,
+            other.entries,
+            other.doc,
+        )
+    return NotImplemented
+
+
+def _hash_Table(self: Any) -> int:
+    return hash((self.name, self.key_type, self.value_type, self.entries, self.doc))
+
+
+def _init_Lookup(self: Any, table: Any, entries: Any, key: Any, type: Any, span: Any = DEFAULT) -> None:
+    _set(self, "table", table)
+    _set(self, "entries", entries)
+    _set(self, "key", key)
+    _set(self, "type", type)
+    _set(self, "span", span)
+
+
+def _repr_Lookup(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(table={self.table!r}, entries={self.entries!r}, key={self.key!r}, type={self.type!r})"
+
+
+def _eq_Lookup(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.table,
+            self.entries,
+            self.key,
+            self.type,
+        ) == (
+            other.table,
+            other.entries,
+            other.key,
+            other.type,
+        )
+    return NotImplemented
+
+
+def _hash_Lookup(self: Any) -> int:
+    return hash((self.table, self.entries, self.key, self.type))
+
+
+def _init_ArrayValue(self: Any, items: Any, type: Any, span: Any = DEFAULT) -> None:
+    _set(self, "items", items)
+    _set(self, "type", type)
+    _set(self, "span", span)
+
+
+def _repr_ArrayValue(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(items={self.items!r}, type={self.type!r})"
+
+
+def _eq_ArrayValue(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.items, self.type) == (other.items, other.type)
+    return NotImplemented
+
+
+def _hash_ArrayValue(self: Any) -> int:
+    return hash((self.items, self.type))
+
+
+def _init_Element(self: Any, array: Any, index: Any, type: Any, span: Any = DEFAULT) -> None:
+    _set(self, "array", array)
+    _set(self, "index", index)
+    _set(self, "type", type)
+    _set(self, "span", span)
+
+
+def _repr_Element(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(array={self.array!r}, index={self.index!r}, type={self.type!r})"
+
+
+def _eq_Element(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.array, self.index, self.type) == (other.array, other.index, other.type)
+    return NotImplemented
+
+
+def _hash_Element(self: Any) -> int:
+    return hash((self.array, self.index, self.type))
+
+
+def _init_Replaced(self: Any, array: Any, index: Any, value: Any, type: Any, span: Any = DEFAULT) -> None:
+    _set(self, "array", array)
+    _set(self, "index", index)
+    _set(self, "value", value)
+    _set(self, "type", type)
+    _set(self, "span", span)
+
+
+def _repr_Replaced(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(array={self.array!r}, index={self.index!r}, value={self.value!r}, type={self.type!r})"
+
+
+def _eq_Replaced(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.array,
+            self.index,
+            self.value,
+            self.type,
+        ) == (
+            other.array,
+            other.index,
+            other.value,
+            other.type,
+        )
+    return NotImplemented
+
+
+def _hash_Replaced(self: Any) -> int:
+    return hash((self.array, self.index, self.value, self.type))
+
+
+def _init_Parameter(
+    self: Any,
+    name: Any,
+    type: Any,
+    low: Any = DEFAULT,
+    high: Any = DEFAULT,
+    default: Any = DEFAULT,
+    unit: Any = DEFAULT,
+) -> None:
+    _set(self, "name", name)
+    _set(self, "type", type)
+    _set(self, "low", low)
+    _set(self, "high", high)
+    _set(self, "default", default)
+    _set(self, "unit", unit)
+
+
+def _repr_Parameter(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(name={self.name!r}, type={self.type!r}, low={self.low!r}, high={self.high!r}, default={self.default!r}, unit={self.unit!r})"
+
+
+def _eq_Parameter(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.name,
+            self.type,
+            self.low,
+            self.high,
+            self.default,
+            self.unit,
+        ) == (
+            other.name,
+            other.type,
+            other.low,
+            other.high,
+            other.default,
+            other.unit,
+        )
+    return NotImplemented
+
+
+def _hash_Parameter(self: Any) -> int:
+    return hash((self.name, self.type, self.low, self.high, self.default, self.unit))
+
+
+def _init_Robot(
+    self: Any,
+    name: Any,
+    author: Any = DEFAULT,
+    description: Any = DEFAULT,
+    version: Any = DEFAULT,
+    doc: Any = DEFAULT,
+    span: Any = DEFAULT,
+) -> None:
+    _set(self, "name", name)
+    _set(self, "author", author)
+    _set(self, "description", description)
+    _set(self, "version", version)
+    _set(self, "doc", doc)
+    _set(self, "span", span)
+
+
+def _repr_Robot(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(name={self.name!r}, author={self.author!r}, description={self.description!r}, version={self.version!r}, doc={self.doc!r})"
+
+
+def _eq_Robot(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.name,
+            self.author,
+            self.description,
+            self.version,
+            self.doc,
+        ) == (
+            other.name,
+            other.author,
+            other.description,
+            other.version,
+            other.doc,
+        )
+    return NotImplemented
+
+
+def _hash_Robot(self: Any) -> int:
+    return hash((self.name, self.author, self.description, self.version, self.doc))
+
+
+def _init_StateVariable(
+    self: Any,
+    name: Any,
+    type: Any,
+    initial: Any,
+    doc: Any = DEFAULT,
+    span: Any = DEFAULT,
+) -> None:
+    _set(self, "name", name)
+    _set(self, "type", type)
+    _set(self, "initial", initial)
+    _set(self, "doc", doc)
+    _set(self, "span", span)
+
+
+def _repr_StateVariable(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(name={self.name!r}, type={self.type!r}, initial={self.initial!r}, doc={self.doc!r})"
+
+
+def _eq_StateVariable(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.name,
+            self.type,
+            self.initial,
+            self.doc,
+        ) == (
+            other.name,
+            other.type,
+            other.initial,
+            other.doc,
+        )
+    return NotImplemented
+
+
+def _hash_StateVariable(self: Any) -> int:
+    return hash((self.name, self.type, self.initial, self.doc))
+
+
+def _init_Setting(
+    self: Any,
+    name: Any,
+    type: Any,
+    default: Any,
+    low: Any = DEFAULT,
+    high: Any = DEFAULT,
+    doc: Any = DEFAULT,
+    span: Any = DEFAULT,
+) -> None:
+    _set(self, "name", name)
+    _set(self, "type", type)
+    _set(self, "default", default)
+    _set(self, "low", low)
+    _set(self, "high", high)
+    _set(self, "doc", doc)
+    _set(self, "span", span)
+
+
+def _repr_Setting(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(name={self.name!r}, type={self.type!r}, default={self.default!r}, low={self.low!r}, high={self.high!r}, doc={self.doc!r})"
+
+
+def _eq_Setting(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.name,
+            self.type,
+            self.default,
+            self.low,
+            self.high,
+            self.doc,
+        ) == (
+            other.name,
+            other.type,
+            other.default,
+            other.low,
+            other.high,
+            other.doc,
+        )
+    return NotImplemented
+
+
+def _hash_Setting(self: Any) -> int:
+    return hash((self.name, self.type, self.default, self.low, self.high, self.doc))
+
+
+def _init_HookCall(self: Any, interface: Any, args: Any, span: Any = DEFAULT) -> None:
+    _set(self, "interface", interface)
+    _set(self, "args", args)
+    _set(self, "span", span)
+
+
+def _repr_HookCall(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(interface={self.interface!r}, args={self.args!r})"
+
+
+def _eq_HookCall(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.interface, self.args) == (other.interface, other.args)
+    return NotImplemented
+
+
+def _hash_HookCall(self: Any) -> int:
+    return hash((self.interface, self.args))
+
+
+def _init_Keepalive(self: Any, call: Any, interval_ms: Any) -> None:
+    _set(self, "call", call)
+    _set(self, "interval_ms", interval_ms)
+
+
+def _repr_Keepalive(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(call={self.call!r}, interval_ms={self.interval_ms!r})"
+
+
+def _eq_Keepalive(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.call, self.interval_ms) == (other.call, other.interval_ms)
+    return NotImplemented
+
+
+def _hash_Keepalive(self: Any) -> int:
+    return hash((self.call, self.interval_ms))
+
+
+def _init_Connection(
+    self: Any,
+    name: Any,
+    kind: Any,
+    baud: Any,
+    frequency_hz: Any,
+    startup: Any = DEFAULT,
+    terminate: Any = DEFAULT,
+    keepalive: Any = DEFAULT,
+    doc: Any = DEFAULT,
+    span: Any = DEFAULT,
+    terminator: Any = DEFAULT,
+    address: Any = DEFAULT,
+    baud_setting: Any = DEFAULT,
+) -> None:
+    _set(self, "name", name)
+    _set(self, "kind", kind)
+    _set(self, "baud", baud)
+    _set(self, "frequency_hz", frequency_hz)
+    _set(self, "startup", startup)
+    _set(self, "terminate", terminate)
+    _set(self, "keepalive", keepalive)
+    _set(self, "doc", doc)
+    _set(self, "span", span)
+    _set(self, "terminator", terminator)
+    _set(self, "address", address)
+    _set(self, "baud_setting", baud_setting)
+
+
+def _repr_Connection(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(name={self.name!r}, kind={self.kind!r}, baud={self.baud!r}, frequency_hz={self.frequency_hz!r}, startup={self.startup!r}, terminate={self.terminate!r}, keepalive={self.keepalive!r}, doc={self.doc!r}, terminator={self.terminator!r}, address={self.address!r}, baud_setting={self.baud_setting!r})"
+
+
+def _eq_Connection(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.name,
+            self.kind,
+            self.baud,
+            self.frequency_hz,
+            self.startup,
+            self.terminate,
+            self.keepalive,
+            self.doc,
+            self.terminator,
+            self.address,
+            self.baud_setting,
+        ) == (
+            other.name,
+            other.kind,
+            other.baud,
+            other.frequency_hz,
+            other.startup,
+            other.terminate,
+            other.keepalive,
+            other.doc,
+            other.terminator,
+            other.address,
+            other.baud_setting,
+        )
+    return NotImplemented
+
+
+def _hash_Connection(self: Any) -> int:
+    return hash((
+        self.name,
+        self.kind,
+        self.baud,
+        self.frequency_hz,
+        self.startup,
+        self.terminate,
+        self.keepalive,
+        self.doc,
+        self.terminator,
+        self.address,
+        self.baud_setting,
+    ))
+
+
+def _init_Pack(self: Any, format: Any, grouped: Any = DEFAULT) -> None:
+    _set(self, "format", format)
+    _set(self, "grouped", grouped)
+
+
+def _repr_Pack(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(format={self.format!r}, grouped={self.grouped!r})"
+
+
+def _eq_Pack(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.format, self.grouped) == (other.format, other.grouped)
+    return NotImplemented
+
+
+def _hash_Pack(self: Any) -> int:
+    return hash((self.format, self.grouped))
+
+
+def _init_Format(self: Any, template: Any) -> None:
+    _set(self, "template", template)
+
+
+def _repr_Format(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(template={self.template!r})"
+
+
+def _eq_Format(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.template,) == (other.template,)
+    return NotImplemented
+
+
+def _hash_Format(self: Any) -> int:
+    return hash((self.template,))
+
+
+def _init_Unpack(self: Any, format: Any, until: Any = DEFAULT) -> None:
+    _set(self, "format", format)
+    _set(self, "until", until)
+
+
+def _repr_Unpack(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(format={self.format!r}, until={self.until!r})"
+
+
+def _eq_Unpack(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.format, self.until) == (other.format, other.until)
+    return NotImplemented
+
+
+def _hash_Unpack(self: Any) -> int:
+    return hash((self.format, self.until))
+
+
+def _init_Regex(self: Any, pattern: Any) -> None:
+    _set(self, "pattern", pattern)
+
+
+def _repr_Regex(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(pattern={self.pattern!r})"
+
+
+def _eq_Regex(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.pattern,) == (other.pattern,)
+    return NotImplemented
+
+
+def _hash_Regex(self: Any) -> int:
+    return hash((self.pattern,))
+
+
+def _init_PostAction(self: Any, target: Any, value: Any, span: Any = DEFAULT) -> None:
+    _set(self, "target", target)
+    _set(self, "value", value)
+    _set(self, "span", span)
+
+
+def _repr_PostAction(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(target={self.target!r}, value={self.value!r})"
+
+
+def _eq_PostAction(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.target, self.value) == (other.target, other.value)
+    return NotImplemented
+
+
+def _hash_PostAction(self: Any) -> int:
+    return hash((self.target, self.value))
+
+
+def _init_LineLevel(self: Any, line: Any, value: Any, span: Any = DEFAULT) -> None:
+    _set(self, "line", line)
+    _set(self, "value", value)
+    _set(self, "span", span)
+
+
+def _repr_LineLevel(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(line={self.line!r}, value={self.value!r})"
+
+
+def _eq_LineLevel(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.line, self.value) == (other.line, other.value)
+    return NotImplemented
+
+
+def _hash_LineLevel(self: Any) -> int:
+    return hash((self.line, self.value))
+
+
+def _init_ChecksumAlgorithm(
+    self: Any,
+    kind: Any,
+    width: Any,
+    poly: Any = DEFAULT,
+    init: Any = DEFAULT,
+    reflect_in: Any = DEFAULT,
+    reflect_out: Any = DEFAULT,
+    xorout: Any = DEFAULT,
+    inverted: Any = DEFAULT,
+    mask: Any = DEFAULT,
+    name: Any = DEFAULT,
+) -> None:
+    _set(self, "kind", kind)
+    _set(self, "width", width)
+    _set(self, "poly", poly)
+    _set(self, "init", init)
+    _set(self, "reflect_in", reflect_in)
+    _set(self, "reflect_out", reflect_out)
+    _set(self, "xorout", xorout)
+    _set(self, "inverted", inverted)
+    _set(self, "mask", mask)
+    _set(self, "name", name)
+
+
+def _repr_ChecksumAlgorithm(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(kind={self.kind!r}, width={self.width!r}, poly={self.poly!r}, init={self.init!r}, reflect_in={self.reflect_in!r}, reflect_out={self.reflect_out!r}, xorout={self.xorout!r}, inverted={self.inverted!r}, mask={self.mask!r}, name={self.name!r})"
+
+
+def _eq_ChecksumAlgorithm(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.kind,
+            self.width,
+            self.poly,
+            self.init,
+            self.reflect_in,
+            self.reflect_out,
+            self.xorout,
+            self.inverted,
+            self.mask,
+            self.name,
+        ) == (
+            other.kind,
+            other.width,
+            other.poly,
+            other.init,
+            other.reflect_in,
+            other.reflect_out,
+            other.xorout,
+            other.inverted,
+            other.mask,
+            other.name,
+        )
+    return NotImplemented
+
+
+def _hash_ChecksumAlgorithm(self: Any) -> int:
+    return hash((
+        self.kind,
+        self.width,
+        self.poly,
+        self.init,
+        self.reflect_in,
+        self.reflect_out,
+        self.xorout,
+        self.inverted,
+        self.mask,
+        self.name,
+    ))
+
+
+def _init_FrameBytes(self: Any, role: Any, data: Any) -> None:
+    _set(self, "role", role)
+    _set(self, "data", data)
+
+
+def _repr_FrameBytes(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(role={self.role!r}, data={self.data!r})"
+
+
+def _eq_FrameBytes(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.role, self.data) == (other.role, other.data)
+    return NotImplemented
+
+
+def _hash_FrameBytes(self: Any) -> int:
+    return hash((self.role, self.data))
+
+
+def _init_FrameField(self: Any, name: Any, format: Any, value: Any) -> None:
+    _set(self, "name", name)
+    _set(self, "format", format)
+    _set(self, "value", value)
+
+
+def _repr_FrameField(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(name={self.name!r}, format={self.format!r}, value={self.value!r})"
+
+
+def _eq_FrameField(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.name, self.format, self.value) == (other.name, other.format, other.value)
+    return NotImplemented
+
+
+def _hash_FrameField(self: Any) -> int:
+    return hash((self.name, self.format, self.value))
+
+
+def _init_FrameLength(self: Any, format: Any, adjust: Any) -> None:
+    _set(self, "format", format)
+    _set(self, "adjust", adjust)
+
+
+def _repr_FrameLength(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(format={self.format!r}, adjust={self.adjust!r})"
+
+
+def _eq_FrameLength(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.format, self.adjust) == (other.format, other.adjust)
+    return NotImplemented
+
+
+def _hash_FrameLength(self: Any) -> int:
+    return hash((self.format, self.adjust))
+
+
+def _init_FramePayload(self: Any) -> None:
+    pass
+
+
+def _repr_FramePayload(self: Any) -> str:
+    return f"{self.__class__.__qualname__}()"
+
+
+def _eq_FramePayload(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return () == ()
+    return NotImplemented
+
+
+def _hash_FramePayload(self: Any) -> int:
+    return hash(())
+
+
+def _init_FrameChecksum(
+    self: Any,
+    algorithm: Any,
+    format: Any,
+    first: Any,
+    last: Any,
+    with_request: Any = DEFAULT,
+) -> None:
+    _set(self, "algorithm", algorithm)
+    _set(self, "format", format)
+    _set(self, "first", first)
+    _set(self, "last", last)
+    _set(self, "with_request", with_request)
+
+
+def _repr_FrameChecksum(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(algorithm={self.algorithm!r}, format={self.format!r}, first={self.first!r}, last={self.last!r}, with_request={self.with_request!r})"
+
+
+def _eq_FrameChecksum(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.algorithm,
+            self.format,
+            self.first,
+            self.last,
+            self.with_request,
+        ) == (
+            other.algorithm,
+            other.format,
+            other.first,
+            other.last,
+            other.with_request,
+        )
+    return NotImplemented
+
+
+def _hash_FrameChecksum(self: Any) -> int:
+    return hash((self.algorithm, self.format, self.first, self.last, self.with_request))
+
+
+def _init_FrameOptional(self: Any, count: Any) -> None:
+    _set(self, "count", count)
+
+
+def _repr_FrameOptional(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(count={self.count!r})"
+
+
+def _eq_FrameOptional(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.count,) == (other.count,)
+    return NotImplemented
+
+
+def _hash_FrameOptional(self: Any) -> int:
+    return hash((self.count,))
+
+
+def _init_BitField(self: Any, name: Any, width: Any, value: Any = DEFAULT, adjust: Any = DEFAULT) -> None:
+    _set(self, "name", name)
+    _set(self, "width", width)
+    _set(self, "value", value)
+    _set(self, "adjust", adjust)
+
+
+def _repr_BitField(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(name={self.name!r}, width={self.width!r}, value={self.value!r}, adjust={self.adjust!r})"
+
+
+def _eq_BitField(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.name,
+            self.width,
+            self.value,
+            self.adjust,
+        ) == (
+            other.name,
+            other.width,
+            other.value,
+            other.adjust,
+        )
+    return NotImplemented
+
+
+def _hash_BitField(self: Any) -> int:
+    return hash((self.name, self.width, self.value, self.adjust))
+
+
+def _init_FrameBits(self: Any, format: Any, fields: Any) -> None:
+    _set(self, "format", format)
+    _set(self, "fields", fields)
+
+
+def _repr_FrameBits(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(format={self.format!r}, fields={self.fields!r})"
+
+
+def _eq_FrameBits(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.format, self.fields) == (other.format, other.fields)
+    return NotImplemented
+
+
+def _hash_FrameBits(self: Any) -> int:
+    return hash((self.format, self.fields))
+
+
+def _init_Escaping(self: Any, escape: Any, table: Any) -> None:
+    _set(self, "escape", escape)
+    _set(self, "table", table)
+
+
+def _repr_Escaping(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(escape={self.escape!r}, table={self.table!r})"
+
+
+def _eq_Escaping(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.escape, self.table) == (other.escape, other.table)
+    return NotImplemented
+
+
+def _hash_Escaping(self: Any) -> int:
+    return hash((self.escape, self.table))
+
+
+def _init_Frame(
+    self: Any,
+    name: Any,
+    params: Any,
+    request: Any,
+    reply: Any,
+    doc: Any = DEFAULT,
+    span: Any = DEFAULT,
+    stuffing: Any = DEFAULT,
+    more_requests: Any = DEFAULT,
+    more_replies: Any = DEFAULT,
+    escaping: Any = DEFAULT,
+) -> None:
+    _set(self, "name", name)
+    _set(self, "params", params)
+    _set(self, "request", request)
+    _set(self, "reply", reply)
+    _set(self, "doc", doc)
+    _set(self, "span", span)
+    _set(self, "stuffing", stuffing)
+    _set(self, "more_requests", more_requests)
+    _set(self, "more_replies", more_replies)
+    _set(self, "escaping", escaping)
+
+
+def _repr_Frame(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(name={self.name!r}, params={self.params!r}, request={self.request!r}, reply={self.reply!r}, doc={self.doc!r}, stuffing={self.stuffing!r}, more_requests={self.more_requests!r}, more_replies={self.more_replies!r}, escaping={self.escaping!r})"
+
+
+def _eq_Frame(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.name,
+            self.params,
+            self.request,
+            self.reply,
+            self.doc,
+            self.stuffing,
+            self.more_requests,
+            self.more_replies,
+            self.escaping,
+        ) == (
+            other.name,
+            other.params,
+            other.request,
+            other.reply,
+            other.doc,
+            other.stuffing,
+            other.more_requests,
+            other.more_replies,
+            other.escaping,
+        )
+    return NotImplemented
+
+
+def _hash_Frame(self: Any) -> int:
+    return hash((
+        self.name,
+        self.params,
+        self.request,
+        self.reply,
+        self.doc,
+        self.stuffing,
+        self.more_requests,
+        self.more_replies,
+        self.escaping,
+    ))
+
+
+def _init_FrameUse(self: Any, frame: Any, args: Any) -> None:
+    _set(self, "frame", frame)
+    _set(self, "args", args)
+
+
+def _repr_FrameUse(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(frame={self.frame!r}, args={self.args!r})"
+
+
+def _eq_FrameUse(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.frame, self.args) == (other.frame, other.args)
+    return NotImplemented
+
+
+def _hash_FrameUse(self: Any) -> int:
+    return hash((self.frame, self.args))
+
+
+def _init_ReplyCase(
+    self: Any,
+    value: Any,
+    decoding: Any,
+    actions: Any = DEFAULT,
+    last: Any = DEFAULT,
+) -> None:
+    _set(self, "value", value)
+    _set(self, "decoding", decoding)
+    _set(self, "actions", actions)
+    _set(self, "last", last)
+
+
+def _repr_ReplyCase(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(value={self.value!r}, decoding={self.decoding!r}, actions={self.actions!r}, last={self.last!r})"
+
+
+def _eq_ReplyCase(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.value,
+            self.decoding,
+            self.actions,
+            self.last,
+        ) == (
+            other.value,
+            other.decoding,
+            other.actions,
+            other.last,
+        )
+    return NotImplemented
+
+
+def _hash_ReplyCase(self: Any) -> int:
+    return hash((self.value, self.decoding, self.actions, self.last))
+
+
+def _init_ListedReply(
+    self: Any,
+    decoding: Any,
+    frame: Any = DEFAULT,
+    expect: Any = DEFAULT,
+    actions: Any = DEFAULT,
+) -> None:
+    _set(self, "decoding", decoding)
+    _set(self, "frame", frame)
+    _set(self, "expect", expect)
+    _set(self, "actions", actions)
+
+
+def _repr_ListedReply(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(decoding={self.decoding!r}, frame={self.frame!r}, expect={self.expect!r}, actions={self.actions!r})"
+
+
+def _eq_ListedReply(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.decoding,
+            self.frame,
+            self.expect,
+            self.actions,
+        ) == (
+            other.decoding,
+            other.frame,
+            other.expect,
+            other.actions,
+        )
+    return NotImplemented
+
+
+def _hash_ListedReply(self: Any) -> int:
+    return hash((self.decoding, self.frame, self.expect, self.actions))
+
+
+def _init_ReplyTable(
+    self: Any,
+    key: Any,
+    cases: Any,
+    tag: Any = DEFAULT,
+    each: Any = DEFAULT,
+    length: Any = DEFAULT,
+) -> None:
+    _set(self, "key", key)
+    _set(self, "cases", cases)
+    _set(self, "tag", tag)
+    _set(self, "each", each)
+    _set(self, "length", length)
+
+
+def _repr_ReplyTable(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(key={self.key!r}, cases={self.cases!r}, tag={self.tag!r}, each={self.each!r}, length={self.length!r})"
+
+
+def _eq_ReplyTable(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.key,
+            self.cases,
+            self.tag,
+            self.each,
+            self.length,
+        ) == (
+            other.key,
+            other.cases,
+            other.tag,
+            other.each,
+            other.length,
+        )
+    return NotImplemented
+
+
+def _hash_ReplyTable(self: Any) -> int:
+    return hash((self.key, self.cases, self.tag, self.each, self.length))
+
+
+def _init_Primitive(
+    self: Any,
+    name: Any,
+    params: Any,
+    connection: Any,
+    encoding: Any,
+    args: Any,
+    decoding: Any = DEFAULT,
+    actions: Any = DEFAULT,
+    doc: Any = DEFAULT,
+    span: Any = DEFAULT,
+    frame: Any = DEFAULT,
+    skip_unmatched: Any = DEFAULT,
+    table: Any = DEFAULT,
+    timeout_ms: Any = DEFAULT,
+    expect: Any = DEFAULT,
+    lines: Any = DEFAULT,
+    replies: Any = DEFAULT,
+    reply_frames: Any = DEFAULT,
+    records: Any = DEFAULT,
+    listed: Any = DEFAULT,
+) -> None:
+    _set(self, "name", name)
+    _set(self, "params", params)
+    _set(self, "connection", connection)
+    _set(self, "encoding", encoding)
+    _set(self, "args", args)
+    _set(self, "decoding", decoding)
+    _set(self, "actions", actions)
+    _set(self, "doc", doc)
+    _set(self, "span", span)
+    _set(self, "frame", frame)
+    _set(self, "skip_unmatched", skip_unmatched)
+    _set(self, "table", table)
+    _set(self, "timeout_ms", timeout_ms)
+    _set(self, "expect", expect)
+    _set(self, "lines", lines)
+    _set(self, "replies", replies)
+    _set(self, "reply_frames", reply_frames)
+    _set(self, "records", records)
+    _set(self, "listed", listed)
+
+
+def _repr_Primitive(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(name={self.name!r}, params={self.params!r}, connection={self.connection!r}, encoding={self.encoding!r}, args={self.args!r}, decoding={self.decoding!r}, actions={self.actions!r}, doc={self.doc!r}, frame={self.frame!r}, skip_unmatched={self.skip_unmatched!r}, table={self.table!r}, timeout_ms={self.timeout_ms!r}, expect={self.expect!r}, lines={self.lines!r}, replies={self.replies!r}, reply_frames={self.reply_frames!r}, records={self.records!r}, listed={self.listed!r})"
+
+
+def _eq_Primitive(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.name,
+            self.params,
+            self.connection,
+            self.encoding,
+            self.args,
+            self.decoding,
+            self.actions,
+            self.doc,
+            self.frame,
+            self.skip_unmatched,
+            self.table,
+            self.timeout_ms,
+            self.expect,
+            self.lines,
+            self.replies,
+            self.reply_frames,
+            self.records,
+            self.listed,
+        ) == (
+            other.name,
+            other.params,
+            other.connection,
+            other.encoding,
+            other.args,
+            other.decoding,
+            other.actions,
+            other.doc,
+            other.frame,
+            other.skip_unmatched,
+            other.table,
+            other.timeout_ms,
+            other.expect,
+            other.lines,
+            other.replies,
+            other.reply_frames,
+            other.records,
+            other.listed,
+        )
+    return NotImplemented
+
+
+def _hash_Primitive(self: Any) -> int:
+    return hash((
+        self.name,
+        self.params,
+        self.connection,
+        self.encoding,
+        self.args,
+        self.decoding,
+        self.actions,
+        self.doc,
+        self.frame,
+        self.skip_unmatched,
+        self.table,
+        self.timeout_ms,
+        self.expect,
+        self.lines,
+        self.replies,
+        self.reply_frames,
+        self.records,
+        self.listed,
+    ))
+
+
+def _init_PrimitiveCall(
+    self: Any,
+    primitive: Any,
+    args: Any,
+    delay_ms: Any = DEFAULT,
+    priority: Any = DEFAULT,
+    span: Any = DEFAULT,
+    interface: Any = DEFAULT,
+    when: Any = DEFAULT,
+) -> None:
+    _set(self, "primitive", primitive)
+    _set(self, "args", args)
+    _set(self, "delay_ms", delay_ms)
+    _set(self, "priority", priority)
+    _set(self, "span", span)
+    _set(self, "interface", interface)
+    _set(self, "when", when)
+
+
+def _repr_PrimitiveCall(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(primitive={self.primitive!r}, args={self.args!r}, delay_ms={self.delay_ms!r}, priority={self.priority!r}, interface={self.interface!r}, when={self.when!r})"
+
+
+def _eq_PrimitiveCall(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.primitive,
+            self.args,
+            self.delay_ms,
+            self.priority,
+            self.interface,
+            self.when,
+        ) == (
+            other.primitive,
+            other.args,
+            other.delay_ms,
+            other.priority,
+            other.interface,
+            other.when,
+        )
+    return NotImplemented
+
+
+def _hash_PrimitiveCall(self: Any) -> int:
+    return hash((self.primitive, self.args, self.delay_ms, self.priority, self.interface, self.when))
+
+
+def _init_Interface(
+    self: Any,
+    name: Any,
+    params: Any,
+    periodic: Any,
+    calls: Any,
+    triggers: Any = DEFAULT,
+    doc: Any = DEFAULT,
+    span: Any = DEFAULT,
+) -> None:
+    _set(self, "name", name)
+    _set(self, "params", params)
+    _set(self, "periodic", periodic)
+    _set(self, "calls", calls)
+    _set(self, "triggers", triggers)
+    _set(self, "doc", doc)
+    _set(self, "span", span)
+
+
+def _repr_Interface(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(name={self.name!r}, params={self.params!r}, periodic={self.periodic!r}, calls={self.calls!r}, triggers={self.triggers!r}, doc={self.doc!r})"
+
+
+def _eq_Interface(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.name,
+            self.params,
+            self.periodic,
+            self.calls,
+            self.triggers,
+            self.doc,
+        ) == (
+            other.name,
+            other.params,
+            other.periodic,
+            other.calls,
+            other.triggers,
+            other.doc,
+        )
+    return NotImplemented
+
+
+def _hash_Interface(self: Any) -> int:
+    return hash((self.name, self.params, self.periodic, self.calls, self.triggers, self.doc))
+
+
+def _init_AdapterField(
+    self: Any,
+    name: Any,
+    type: Any,
+    unit: Any = DEFAULT,
+    ros: Any = DEFAULT,
+    doc: Any = DEFAULT,
+) -> None:
+    _set(self, "name", name)
+    _set(self, "type", type)
+    _set(self, "unit", unit)
+    _set(self, "ros", ros)
+    _set(self, "doc", doc)
+
+
+def _repr_AdapterField(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(name={self.name!r}, type={self.type!r}, unit={self.unit!r}, ros={self.ros!r}, doc={self.doc!r})"
+
+
+def _eq_AdapterField(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.name,
+            self.type,
+            self.unit,
+            self.ros,
+            self.doc,
+        ) == (
+            other.name,
+            other.type,
+            other.unit,
+            other.ros,
+            other.doc,
+        )
+    return NotImplemented
+
+
+def _hash_AdapterField(self: Any) -> int:
+    return hash((self.name, self.type, self.unit, self.ros, self.doc))
+
+
+def _init_Adapter(
+    self: Any,
+    name: Any,
+    fields: Any,
+    ros: Any = DEFAULT,
+    standard: Any = DEFAULT,
+    doc: Any = DEFAULT,
+    span: Any = DEFAULT,
+) -> None:
+    _set(self, "name", name)
+    _set(self, "fields", fields)
+    _set(self, "ros", ros)
+    _set(self, "standard", standard)
+    _set(self, "doc", doc)
+    _set(self, "span", span)
+
+
+def _repr_Adapter(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(name={self.name!r}, fields={self.fields!r}, ros={self.ros!r}, standard={self.standard!r}, doc={self.doc!r})"
+
+
+def _eq_Adapter(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.name,
+            self.fields,
+            self.ros,
+            self.standard,
+            self.doc,
+        ) == (
+            other.name,
+            other.fields,
+            other.ros,
+            other.standard,
+            other.doc,
+        )
+    return NotImplemented
+
+
+def _hash_Adapter(self: Any) -> int:
+    return hash((self.name, self.fields, self.ros, self.standard, self.doc))
+
+
+def _init_DomainInput(
+    self: Any,
+    name: Any,
+    adapter: Any,
+    interface: Any,
+    args: Any,
+    doc: Any = DEFAULT,
+    span: Any = DEFAULT,
+) -> None:
+    _set(self, "name", name)
+    _set(self, "adapter", adapter)
+    _set(self, "interface", interface)
+    _set(self, "args", args)
+    _set(self, "doc", doc)
+    _set(self, "span", span)
+
+
+def _repr_DomainInput(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(name={self.name!r}, adapter={self.adapter!r}, interface={self.interface!r}, args={self.args!r}, doc={self.doc!r})"
+
+
+def _eq_DomainInput(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.name,
+            self.adapter,
+            self.interface,
+            self.args,
+            self.doc,
+        ) == (
+            other.name,
+            other.adapter,
+            other.interface,
+            other.args,
+            other.doc,
+        )
+    return NotImplemented
+
+
+def _hash_DomainInput(self: Any) -> int:
+    return hash((self.name, self.adapter, self.interface, self.args, self.doc))
+
+
+def _init_DomainOutput(
+    self: Any,
+    name: Any,
+    adapter: Any,
+    fields: Any,
+    doc: Any = DEFAULT,
+    span: Any = DEFAULT,
+) -> None:
+    _set(self, "name", name)
+    _set(self, "adapter", adapter)
+    _set(self, "fields", fields)
+    _set(self, "doc", doc)
+    _set(self, "span", span)
+
+
+def _repr_DomainOutput(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(name={self.name!r}, adapter={self.adapter!r}, fields={self.fields!r}, doc={self.doc!r})"
+
+
+def _eq_DomainOutput(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.name,
+            self.adapter,
+            self.fields,
+            self.doc,
+        ) == (
+            other.name,
+            other.adapter,
+            other.fields,
+            other.doc,
+        )
+    return NotImplemented
+
+
+def _hash_DomainOutput(self: Any) -> int:
+    return hash((self.name, self.adapter, self.fields, self.doc))
+
+
+def _init_Pose(self: Any, xyz: Any = DEFAULT, rpy: Any = DEFAULT) -> None:
+    _set(self, "xyz", xyz)
+    _set(self, "rpy", rpy)
+
+
+def _repr_Pose(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(xyz={self.xyz!r}, rpy={self.rpy!r})"
+
+
+def _eq_Pose(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.xyz, self.rpy) == (other.xyz, other.rpy)
+    return NotImplemented
+
+
+def _hash_Pose(self: Any) -> int:
+    return hash((self.xyz, self.rpy))
+
+
+def _init_Shape(
+    self: Any,
+    kind: Any,
+    size: Any,
+    origin: Any = DEFAULT,
+    path: Any = DEFAULT,
+    span: Any = DEFAULT,
+) -> None:
+    _set(self, "kind", kind)
+    _set(self, "size", size)
+    _set(self, "origin", origin)
+    _set(self, "path", path)
+    _set(self, "span", span)
+
+
+def _repr_Shape(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(kind={self.kind!r}, size={self.size!r}, origin={self.origin!r}, path={self.path!r})"
+
+
+def _eq_Shape(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.kind,
+            self.size,
+            self.origin,
+            self.path,
+        ) == (
+            other.kind,
+            other.size,
+            other.origin,
+            other.path,
+        )
+    return NotImplemented
+
+
+def _hash_Shape(self: Any) -> int:
+    return hash((self.kind, self.size, self.origin, self.path))
+
+
+def _init_Inertial(self: Any, mass: Any, centre: Any, inertia: Any) -> None:
+    _set(self, "mass", mass)
+    _set(self, "centre", centre)
+    _set(self, "inertia", inertia)
+
+
+def _repr_Inertial(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(mass={self.mass!r}, centre={self.centre!r}, inertia={self.inertia!r})"
+
+
+def _eq_Inertial(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.mass, self.centre, self.inertia) == (other.mass, other.centre, other.inertia)
+    return NotImplemented
+
+
+def _hash_Inertial(self: Any) -> int:
+    return hash((self.mass, self.centre, self.inertia))
+
+
+def _init_Link(
+    self: Any,
+    name: Any,
+    visuals: Any = DEFAULT,
+    collisions: Any = DEFAULT,
+    inertial: Any = DEFAULT,
+    doc: Any = DEFAULT,
+    span: Any = DEFAULT,
+) -> None:
+    _set(self, "name", name)
+    _set(self, "visuals", visuals)
+    _set(self, "collisions", collisions)
+    _set(self, "inertial", inertial)
+    _set(self, "doc", doc)
+    _set(self, "span", span)
+
+
+def _repr_Link(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(name={self.name!r}, visuals={self.visuals!r}, collisions={self.collisions!r}, inertial={self.inertial!r}, doc={self.doc!r})"
+
+
+def _eq_Link(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.name,
+            self.visuals,
+            self.collisions,
+            self.inertial,
+            self.doc,
+        ) == (
+            other.name,
+            other.visuals,
+            other.collisions,
+            other.inertial,
+            other.doc,
+        )
+    return NotImplemented
+
+
+def _hash_Link(self: Any) -> int:
+    return hash((self.name, self.visuals, self.collisions, self.inertial, self.doc))
+
+
+def _init_Joint(
+    self: Any,
+    name: Any,
+    kind: Any,
+    parent: Any,
+    child: Any,
+    origin: Any = DEFAULT,
+    axis: Any = DEFAULT,
+    lower: Any = DEFAULT,
+    upper: Any = DEFAULT,
+    velocity: Any = DEFAULT,
+    effort: Any = DEFAULT,
+    damping: Any = DEFAULT,
+    friction: Any = DEFAULT,
+    doc: Any = DEFAULT,
+    span: Any = DEFAULT,
+) -> None:
+    _set(self, "name", name)
+    _set(self, "kind", kind)
+    _set(self, "parent", parent)
+    _set(self, "child", child)
+    _set(self, "origin", origin)
+    _set(self, "axis", axis)
+    _set(self, "lower", lower)
+    _set(self, "upper", upper)
+    _set(self, "velocity", velocity)
+    _set(self, "effort", effort)
+    _set(self, "damping", damping)
+    _set(self, "friction", friction)
+    _set(self, "doc", doc)
+    _set(self, "span", span)
+
+
+def _repr_Joint(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(name={self.name!r}, kind={self.kind!r}, parent={self.parent!r}, child={self.child!r}, origin={self.origin!r}, axis={self.axis!r}, lower={self.lower!r}, upper={self.upper!r}, velocity={self.velocity!r}, effort={self.effort!r}, damping={self.damping!r}, friction={self.friction!r}, doc={self.doc!r})"
+
+
+def _eq_Joint(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.name,
+            self.kind,
+            self.parent,
+            self.child,
+            self.origin,
+            self.axis,
+            self.lower,
+            self.upper,
+            self.velocity,
+            self.effort,
+            self.damping,
+            self.friction,
+            self.doc,
+        ) == (
+            other.name,
+            other.kind,
+            other.parent,
+            other.child,
+            other.origin,
+            other.axis,
+            other.lower,
+            other.upper,
+            other.velocity,
+            other.effort,
+            other.damping,
+            other.friction,
+            other.doc,
+        )
+    return NotImplemented
+
+
+def _hash_Joint(self: Any) -> int:
+    return hash((
+        self.name,
+        self.kind,
+        self.parent,
+        self.child,
+        self.origin,
+        self.axis,
+        self.lower,
+        self.upper,
+        self.velocity,
+        self.effort,
+        self.damping,
+        self.friction,
+        self.doc,
+    ))
+
+
+def _init_Binding(
+    self: Any,
+    quantity: Any,
+    target: Any,
+    parameter: Any,
+    index: Any,
+    to_device: Any,
+    to_joint: Any,
+    interface: Any = DEFAULT,
+    span: Any = DEFAULT,
+) -> None:
+    _set(self, "quantity", quantity)
+    _set(self, "target", target)
+    _set(self, "parameter", parameter)
+    _set(self, "index", index)
+    _set(self, "to_device", to_device)
+    _set(self, "to_joint", to_joint)
+    _set(self, "interface", interface)
+    _set(self, "span", span)
+
+
+def _repr_Binding(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(quantity={self.quantity!r}, target={self.target!r}, parameter={self.parameter!r}, index={self.index!r}, to_device={self.to_device!r}, to_joint={self.to_joint!r}, interface={self.interface!r})"
+
+
+def _eq_Binding(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.quantity,
+            self.target,
+            self.parameter,
+            self.index,
+            self.to_device,
+            self.to_joint,
+            self.interface,
+        ) == (
+            other.quantity,
+            other.target,
+            other.parameter,
+            other.index,
+            other.to_device,
+            other.to_joint,
+            other.interface,
+        )
+    return NotImplemented
+
+
+def _hash_Binding(self: Any) -> int:
+    return hash((
+        self.quantity,
+        self.target,
+        self.parameter,
+        self.index,
+        self.to_device,
+        self.to_joint,
+        self.interface,
+    ))
+
+
+def _init_Transmission(
+    self: Any,
+    name: Any,
+    joint: Any,
+    commands: Any = DEFAULT,
+    measures: Any = DEFAULT,
+    doc: Any = DEFAULT,
+    span: Any = DEFAULT,
+) -> None:
+    _set(self, "name", name)
+    _set(self, "joint", joint)
+    _set(self, "commands", commands)
+    _set(self, "measures", measures)
+    _set(self, "doc", doc)
+    _set(self, "span", span)
+
+
+def _repr_Transmission(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(name={self.name!r}, joint={self.joint!r}, commands={self.commands!r}, measures={self.measures!r}, doc={self.doc!r})"
+
+
+def _eq_Transmission(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.name,
+            self.joint,
+            self.commands,
+            self.measures,
+            self.doc,
+        ) == (
+            other.name,
+            other.joint,
+            other.commands,
+            other.measures,
+            other.doc,
+        )
+    return NotImplemented
+
+
+def _hash_Transmission(self: Any) -> int:
+    return hash((self.name, self.joint, self.commands, self.measures, self.doc))
+
+
+def _init_Model(
+    self: Any,
+    robot: Any,
+    states: Any,
+    connections: Any,
+    primitives: Any,
+    interfaces: Any,
+    adapters: Any,
+    inputs: Any,
+    outputs: Any,
+    frames: Any = DEFAULT,
+    constants: Any = DEFAULT,
+    enums: Any = DEFAULT,
+    tables: Any = DEFAULT,
+    settings: Any = DEFAULT,
+    links: Any = DEFAULT,
+    joints: Any = DEFAULT,
+    transmissions: Any = DEFAULT,
+) -> None:
+    _set(self, "robot", robot)
+    _set(self, "states", states)
+    _set(self, "connections", connections)
+    _set(self, "primitives", primitives)
+    _set(self, "interfaces", interfaces)
+    _set(self, "adapters", adapters)
+    _set(self, "inputs", inputs)
+    _set(self, "outputs", outputs)
+    _set(self, "frames", {} if frames is FACTORY else frames)
+    _set(self, "constants", {} if constants is FACTORY else constants)
+    _set(self, "enums", {} if enums is FACTORY else enums)
+    _set(self, "tables", {} if tables is FACTORY else tables)
+    _set(self, "settings", {} if settings is FACTORY else settings)
+    _set(self, "links", {} if links is FACTORY else links)
+    _set(self, "joints", {} if joints is FACTORY else joints)
+    _set(self, "transmissions", {} if transmissions is FACTORY else transmissions)
+
+
+def _repr_Model(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(robot={self.robot!r}, states={self.states!r}, connections={self.connections!r}, primitives={self.primitives!r}, interfaces={self.interfaces!r}, adapters={self.adapters!r}, inputs={self.inputs!r}, outputs={self.outputs!r}, frames={self.frames!r}, constants={self.constants!r}, enums={self.enums!r}, tables={self.tables!r}, settings={self.settings!r}, links={self.links!r}, joints={self.joints!r}, transmissions={self.transmissions!r})"
+
+
+def _eq_Model(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.robot,
+            self.states,
+            self.connections,
+            self.primitives,
+            self.interfaces,
+            self.adapters,
+            self.inputs,
+            self.outputs,
+            self.frames,
+            self.constants,
+            self.enums,
+            self.tables,
+            self.settings,
+            self.links,
+            self.joints,
+            self.transmissions,
+        ) == (
+            other.robot,
+            other.states,
+            other.connections,
+            other.primitives,
+            other.interfaces,
+            other.adapters,
+            other.inputs,
+            other.outputs,
+            other.frames,
+            other.constants,
+            other.enums,
+            other.tables,
+            other.settings,
+            other.links,
+            other.joints,
+            other.transmissions,
+        )
+    return NotImplemented
+
+
+def _hash_Model(self: Any) -> int:
+    return hash((
+        self.robot,
+        self.states,
+        self.connections,
+        self.primitives,
+        self.interfaces,
+        self.adapters,
+        self.inputs,
+        self.outputs,
+        self.frames,
+        self.constants,
+        self.enums,
+        self.tables,
+        self.settings,
+        self.links,
+        self.joints,
+        self.transmissions,
+    ))
+
+
+WRITTEN: dict[str, Written] = {
+    "Array": Written(
+        (("element", MISSING), ("size", MISSING)),
+        {"__init__": _init_Array, "__repr__": _repr_Array, "__eq__": _eq_Array, "__hash__": _hash_Array},
+    ),
+    "Const": Written(
+        (("value", MISSING), ("type", MISSING), ("span", FieldSpec(None, MISSING, False, False))),
+        {"__init__": _init_Const, "__repr__": _repr_Const, "__eq__": _eq_Const, "__hash__": _hash_Const},
+    ),
+    "Var": Written(
+        (
+            ("name", MISSING),
+            ("scope", MISSING),
+            ("type", MISSING),
+            ("span", FieldSpec(None, MISSING, False, False)),
+        ),
+        {"__init__": _init_Var, "__repr__": _repr_Var, "__eq__": _eq_Var, "__hash__": _hash_Var},
+    ),
+    "ReplyValue": Written(
+        (("index", MISSING), ("type", MISSING), ("span", FieldSpec(None, MISSING, False, False))),
+        {
+            "__init__": _init_ReplyValue,
+            "__repr__": _repr_ReplyValue,
+            "__eq__": _eq_ReplyValue,
+            "__hash__": _hash_ReplyValue,
+        },
+    ),
+    "UnaryOp": Written(
+        (
+            ("op", MISSING),
+            ("operand", MISSING),
+            ("type", MISSING),
+            ("span", FieldSpec(None, MISSING, False, False)),
+        ),
+        {
+            "__init__": _init_UnaryOp,
+            "__repr__": _repr_UnaryOp,
+            "__eq__": _eq_UnaryOp,
+            "__hash__": _hash_UnaryOp,
+        },
+    ),
+    "BinaryOp": Written(
+        (
+            ("op", MISSING),
+            ("left", MISSING),
+            ("right", MISSING),
+            ("type", MISSING),
+            ("span", FieldSpec(None, MISSING, False, False)),
+        ),
+        {
+            "__init__": _init_BinaryOp,
+            "__repr__": _repr_BinaryOp,
+            "__eq__": _eq_BinaryOp,
+            "__hash__": _hash_BinaryOp,
+        },
+    ),
+    "IfElse": Written(
+        (
+            ("cond", MISSING),
+            ("then", MISSING),
+            ("orelse", MISSING),
+            ("type", MISSING),
+            ("span", FieldSpec(None, MISSING, False, False)),
+        ),
+        {"__init__": _init_IfElse, "__repr__": _repr_IfElse, "__eq__": _eq_IfElse, "__hash__": _hash_IfElse},
+    ),
+    "FuncCall": Written(
+        (
+            ("func", MISSING),
+            ("args", MISSING),
+            ("type", MISSING),
+            ("span", FieldSpec(None, MISSING, False, False)),
+        ),
+        {
+            "__init__": _init_FuncCall,
+            "__repr__": _repr_FuncCall,
+            "__eq__": _eq_FuncCall,
+            "__hash__": _hash_FuncCall,
+        },
+    ),
+    "Table": Written(
+        (
+            ("name", MISSING),
+            ("key_type", MISSING),
+            ("value_type", MISSING),
+            ("entries", MISSING),
+            ("doc", DEFAULT),
+        ),
+        {"__init__": _init_Table, "__repr__": _repr_Table, "__eq__": _eq_Table, "__hash__": _hash_Table},
+    ),
+    "Lookup": Written(
+        (
+            ("table", MISSING),
+            ("entries", MISSING),
+            ("key", MISSING),
+            ("type", MISSING),
+            ("span", FieldSpec(None, MISSING, False, False)),
+        ),
+        {"__init__": _init_Lookup, "__repr__": _repr_Lookup, "__eq__": _eq_Lookup, "__hash__": _hash_Lookup},
+    ),
+    "ArrayValue": Written(
+        (("items", MISSING), ("type", MISSING), ("span", FieldSpec(None, MISSING, False, False))),
+        {
+            "__init__": _init_ArrayValue,
+            "__repr__": _repr_ArrayValue,
+            "__eq__": _eq_ArrayValue,
+            "__hash__": _hash_ArrayValue,
+        },
+    ),
+    "Element": Written(
+        (
+            ("array", MISSING),
+            ("index", MISSING),
+            ("type", MISSING),
+            ("span", FieldSpec(None, MISSING, False, False)),
+        ),
+        {
+            "__init__": _init_Element,
+            "__repr__": _repr_Element,
+            "__eq__": _eq_Element,
+            "__hash__": _hash_Element,
+        },
+    ),
+    "Replaced": Written(
+        (
+            ("array", MISSING),
+            ("index", MISSING),
+            ("value", MISSING),
+            ("type", MISSING),
+            ("span", FieldSpec(None, MISSING, False, False)),
+        ),
+        {
+            "__init__": _init_Replaced,
+            "__repr__": _repr_Replaced,
+            "__eq__": _eq_Replaced,
+            "__hash__": _hash_Replaced,
+        },
+    ),
+    "Parameter": Written(
+        (
+            ("name", MISSING),
+            ("type", MISSING),
+            ("low", DEFAULT),
+            ("high", DEFAULT),
+            ("default", DEFAULT),
+            ("unit", DEFAULT),
+        ),
+        {
+            "__init__": _init_Parameter,
+            "__repr__": _repr_Parameter,
+            "__eq__": _eq_Parameter,
+            "__hash__": _hash_Parameter,
+        },
+    ),
+    "Robot": Written(
+        (
+            ("name", MISSING),
+            ("author", DEFAULT),
+            ("description", DEFAULT),
+            ("version", DEFAULT),
+            ("doc", DEFAULT),
+            ("span", FieldSpec(None, MISSING, False, False)),
+        ),
+        {"__init__": _init_Robot, "__repr__": _repr_Robot, "__eq__": _eq_Robot, "__hash__": _hash_Robot},
+    ),
+    "StateVariable": Written(
+        (
+            ("name", MISSING),
+            ("type", MISSING),
+            ("initial", MISSING),
+            ("doc", DEFAULT),
+            ("span", FieldSpec(None, MISSING, False, False)),
+        ),
+        {
+            "__init__": _init_StateVariable,
+            "__repr__": _repr_StateVariable,
+            "__eq__": _eq_StateVariable,
+            "__hash__": _hash_StateVariable,
+        },
+    ),
+    "Setting": Written(
+        (
+            ("name", MISSING),
+            ("type", MISSING),
+            ("default", MISSING),
+            ("low", DEFAULT),
+            ("high", DEFAULT),
+            ("doc", DEFAULT),
+            ("span", FieldSpec(None, MISSING, False, False)),
+        ),
+        {
+            "__init__": _init_Setting,
+            "__repr__": _repr_Setting,
+            "__eq__": _eq_Setting,
+            "__hash__": _hash_Setting,
+        },
+    ),
+    "HookCall": Written(
+        (("interface", MISSING), ("args", MISSING), ("span", FieldSpec(None, MISSING, False, False))),
+        {
+            "__init__": _init_HookCall,
+            "__repr__": _repr_HookCall,
+            "__eq__": _eq_HookCall,
+            "__hash__": _hash_HookCall,
+        },
+    ),
+    "Keepalive": Written(
+        (("call", MISSING), ("interval_ms", MISSING)),
+        {
+            "__init__": _init_Keepalive,
+            "__repr__": _repr_Keepalive,
+            "__eq__": _eq_Keepalive,
+            "__hash__": _hash_Keepalive,
+        },
+    ),
+    "Connection": Written(
+        (
+            ("name", MISSING),
+            ("kind", MISSING),
+            ("baud", MISSING),
+            ("frequency_hz", MISSING),
+            ("startup", DEFAULT),
+            ("terminate", DEFAULT),
+            ("keepalive", DEFAULT),
+            ("doc", DEFAULT),
+            ("span", FieldSpec(None, MISSING, False, False)),
+            ("terminator", DEFAULT),
+            ("address", DEFAULT),
+            ("baud_setting", DEFAULT),
+        ),
+        {
+            "__init__": _init_Connection,
+            "__repr__": _repr_Connection,
+            "__eq__": _eq_Connection,
+            "__hash__": _hash_Connection,
+        },
+    ),
+    "Pack": Written(
+        (("format", MISSING), ("grouped", DEFAULT)),
+        {"__init__": _init_Pack, "__repr__": _repr_Pack, "__eq__": _eq_Pack, "__hash__": _hash_Pack},
+    ),
+    "Format": Written(
+        (("template", MISSING),),
+        {"__init__": _init_Format, "__repr__": _repr_Format, "__eq__": _eq_Format, "__hash__": _hash_Format},
+    ),
+    "Unpack": Written(
+        (("format", MISSING), ("until", DEFAULT)),
+        {"__init__": _init_Unpack, "__repr__": _repr_Unpack, "__eq__": _eq_Unpack, "__hash__": _hash_Unpack},
+    ),
+    "Regex": Written(
+        (("pattern", MISSING),),
+        {"__init__": _init_Regex, "__repr__": _repr_Regex, "__eq__": _eq_Regex, "__hash__": _hash_Regex},
+    ),
+    "PostAction": Written(
+        (("target", MISSING), ("value", MISSING), ("span", FieldSpec(None, MISSING, False, False))),
+        {
+            "__init__": _init_PostAction,
+            "__repr__": _repr_PostAction,
+            "__eq__": _eq_PostAction,
+            "__hash__": _hash_PostAction,
+        },
+    ),
+    "LineLevel": Written(
+        (("line", MISSING), ("value", MISSING), ("span", FieldSpec(None, MISSING, False, False))),
+        {
+            "__init__": _init_LineLevel,
+            "__repr__": _repr_LineLevel,
+            "__eq__": _eq_LineLevel,
+            "__hash__": _hash_LineLevel,
+        },
+    ),
+    "ChecksumAlgorithm": Written(
+        (
+            ("kind", MISSING),
+            ("width", MISSING),
+            ("poly", DEFAULT),
+            ("init", DEFAULT),
+            ("reflect_in", DEFAULT),
+            ("reflect_out", DEFAULT),
+            ("xorout", DEFAULT),
+            ("inverted", DEFAULT),
+            ("mask", DEFAULT),
+            ("name", DEFAULT),
+        ),
+        {
+            "__init__": _init_ChecksumAlgorithm,
+            "__repr__": _repr_ChecksumAlgorithm,
+            "__eq__": _eq_ChecksumAlgorithm,
+            "__hash__": _hash_ChecksumAlgorithm,
+        },
+    ),
+    "FrameBytes": Written(
+        (("role", MISSING), ("data", MISSING)),
+        {
+            "__init__": _init_FrameBytes,
+            "__repr__": _repr_FrameBytes,
+            "__eq__": _eq_FrameBytes,
+            "__hash__": _hash_FrameBytes,
+        },
+    ),
+    "FrameField": Written(
+        (("name", MISSING), ("format", MISSING), ("value", MISSING)),
+        {
+            "__init__": _init_FrameField,
+            "__repr__": _repr_FrameField,
+            "__eq__": _eq_FrameField,
+            "__hash__": _hash_FrameField,
+        },
+    ),
+    "FrameLength": Written(
+        (("format", MISSING), ("adjust", MISSING)),
+        {
+            "__init__": _init_FrameLength,
+            "__repr__": _repr_FrameLength,
+            "__eq__": _eq_FrameLength,
+            "__hash__": _hash_FrameLength,
+        },
+    ),
+    "FramePayload": Written(
+        (),
+        {
+            "__init__": _init_FramePayload,
+            "__repr__": _repr_FramePayload,
+            "__eq__": _eq_FramePayload,
+            "__hash__": _hash_FramePayload,
+        },
+    ),
+    "FrameChecksum": Written(
+        (
+            ("algorithm", MISSING),
+            ("format", MISSING),
+            ("first", MISSING),
+            ("last", MISSING),
+            ("with_request", DEFAULT),
+        ),
+        {
+            "__init__": _init_FrameChecksum,
+            "__repr__": _repr_FrameChecksum,
+            "__eq__": _eq_FrameChecksum,
+            "__hash__": _hash_FrameChecksum,
+        },
+    ),
+    "FrameOptional": Written(
+        (("count", MISSING),),
+        {
+            "__init__": _init_FrameOptional,
+            "__repr__": _repr_FrameOptional,
+            "__eq__": _eq_FrameOptional,
+            "__hash__": _hash_FrameOptional,
+        },
+    ),
+    "BitField": Written(
+        (("name", MISSING), ("width", MISSING), ("value", DEFAULT), ("adjust", DEFAULT)),
+        {
+            "__init__": _init_BitField,
+            "__repr__": _repr_BitField,
+            "__eq__": _eq_BitField,
+            "__hash__": _hash_BitField,
+        },
+    ),
+    "FrameBits": Written(
+        (("format", MISSING), ("fields", MISSING)),
+        {
+            "__init__": _init_FrameBits,
+            "__repr__": _repr_FrameBits,
+            "__eq__": _eq_FrameBits,
+            "__hash__": _hash_FrameBits,
+        },
+    ),
+    "Escaping": Written(
+        (("escape", MISSING), ("table", MISSING)),
+        {
+            "__init__": _init_Escaping,
+            "__repr__": _repr_Escaping,
+            "__eq__": _eq_Escaping,
+            "__hash__": _hash_Escaping,
+        },
+    ),
+    "Frame": Written(
+        (
+            ("name", MISSING),
+            ("params", MISSING),
+            ("request", MISSING),
+            ("reply", MISSING),
+            ("doc", DEFAULT),
+            ("span", FieldSpec(None, MISSING, False, False)),
+            ("stuffing", DEFAULT),
+            ("more_requests", DEFAULT),
+            ("more_replies", DEFAULT),
+            ("escaping", DEFAULT),
+        ),
+        {"__init__": _init_Frame, "__repr__": _repr_Frame, "__eq__": _eq_Frame, "__hash__": _hash_Frame},
+    ),
+    "FrameUse": Written(
+        (("frame", MISSING), ("args", MISSING)),
+        {
+            "__init__": _init_FrameUse,
+            "__repr__": _repr_FrameUse,
+            "__eq__": _eq_FrameUse,
+            "__hash__": _hash_FrameUse,
+        },
+    ),
+    "ReplyCase": Written(
+        (("value", MISSING), ("decoding", MISSING), ("actions", DEFAULT), ("last", DEFAULT)),
+        {
+            "__init__": _init_ReplyCase,
+            "__repr__": _repr_ReplyCase,
+            "__eq__": _eq_ReplyCase,
+            "__hash__": _hash_ReplyCase,
+        },
+    ),
+    "ListedReply": Written(
+        (("decoding", MISSING), ("frame", DEFAULT), ("expect", DEFAULT), ("actions", DEFAULT)),
+        {
+            "__init__": _init_ListedReply,
+            "__repr__": _repr_ListedReply,
+            "__eq__": _eq_ListedReply,
+            "__hash__": _hash_ListedReply,
+        },
+    ),
+    "ReplyTable": Written(
+        (("key", MISSING), ("cases", MISSING), ("tag", DEFAULT), ("each", DEFAULT), ("length", DEFAULT)),
+        {
+            "__init__": _init_ReplyTable,
+            "__repr__": _repr_ReplyTable,
+            "__eq__": _eq_ReplyTable,
+            "__hash__": _hash_ReplyTable,
+        },
+    ),
+    "Primitive": Written(
+        (
+            ("name", MISSING),
+            ("params", MISSING),
+            ("connection", MISSING),
+            ("encoding", MISSING),
+            ("args", MISSING),
+            ("decoding", DEFAULT),
+            ("actions", DEFAULT),
+            ("doc", DEFAULT),
+            ("span", FieldSpec(None, MISSING, False, False)),
+            ("frame", DEFAULT),
+            ("skip_unmatched", DEFAULT),
+            ("table", DEFAULT),
+            ("timeout_ms", DEFAULT),
+            ("expect", DEFAULT),
+            ("lines", DEFAULT),
+            ("replies", DEFAULT),
+            ("reply_frames", DEFAULT),
+            ("records", DEFAULT),
+            ("listed", DEFAULT),
+        ),
+        {
+            "__init__": _init_Primitive,
+            "__repr__": _repr_Primitive,
+            "__eq__": _eq_Primitive,
+            "__hash__": _hash_Primitive,
+        },
+    ),
+    "PrimitiveCall": Written(
+        (
+            ("primitive", MISSING),
+            ("args", MISSING),
+            ("delay_ms", DEFAULT),
+            ("priority", DEFAULT),
+            ("span", FieldSpec(None, MISSING, False, False)),
+            ("interface", DEFAULT),
+            ("when", DEFAULT),
+        ),
+        {
+            "__init__": _init_PrimitiveCall,
+            "__repr__": _repr_PrimitiveCall,
+            "__eq__": _eq_PrimitiveCall,
+            "__hash__": _hash_PrimitiveCall,
+        },
+    ),
+    "Interface": Written(
+        (
+            ("name", MISSING),
+            ("params", MISSING),
+            ("periodic", MISSING),
+            ("calls", MISSING),
+            ("triggers", DEFAULT),
+            ("doc", DEFAULT),
+            ("span", FieldSpec(None, MISSING, False, False)),
+        ),
+        {
+            "__init__": _init_Interface,
+            "__repr__": _repr_Interface,
+            "__eq__": _eq_Interface,
+            "__hash__": _hash_Interface,
+        },
+    ),
+    "AdapterField": Written(
+        (("name", MISSING), ("type", MISSING), ("unit", DEFAULT), ("ros", DEFAULT), ("doc", DEFAULT)),
+        {
+            "__init__": _init_AdapterField,
+            "__repr__": _repr_AdapterField,
+            "__eq__": _eq_AdapterField,
+            "__hash__": _hash_AdapterField,
+        },
+    ),
+    "Adapter": Written(
+        (
+            ("name", MISSING),
+            ("fields", MISSING),
+            ("ros", DEFAULT),
+            ("standard", DEFAULT),
+            ("doc", DEFAULT),
+            ("span", FieldSpec(None, MISSING, False, False)),
+        ),
+        {
+            "__init__": _init_Adapter,
+            "__repr__": _repr_Adapter,
+            "__eq__": _eq_Adapter,
+            "__hash__": _hash_Adapter,
+        },
+    ),
+    "DomainInput": Written(
+        (
+            ("name", MISSING),
+            ("adapter", MISSING),
+            ("interface", MISSING),
+            ("args", MISSING),
+            ("doc", DEFAULT),
+            ("span", FieldSpec(None, MISSING, False, False)),
+        ),
+        {
+            "__init__": _init_DomainInput,
+            "__repr__": _repr_DomainInput,
+            "__eq__": _eq_DomainInput,
+            "__hash__": _hash_DomainInput,
+        },
+    ),
+    "DomainOutput": Written(
+        (
+            ("name", MISSING),
+            ("adapter", MISSING),
+            ("fields", MISSING),
+            ("doc", DEFAULT),
+            ("span", FieldSpec(None, MISSING, False, False)),
+        ),
+        {
+            "__init__": _init_DomainOutput,
+            "__repr__": _repr_DomainOutput,
+            "__eq__": _eq_DomainOutput,
+            "__hash__": _hash_DomainOutput,
+        },
+    ),
+    "Pose": Written(
+        (("xyz", DEFAULT), ("rpy", DEFAULT)),
+        {"__init__": _init_Pose, "__repr__": _repr_Pose, "__eq__": _eq_Pose, "__hash__": _hash_Pose},
+    ),
+    "Shape": Written(
+        (
+            ("kind", MISSING),
+            ("size", MISSING),
+            ("origin", DEFAULT),
+            ("path", DEFAULT),
+            ("span", FieldSpec(None, MISSING, False, False)),
+        ),
+        {"__init__": _init_Shape, "__repr__": _repr_Shape, "__eq__": _eq_Shape, "__hash__": _hash_Shape},
+    ),
+    "Inertial": Written(
+        (("mass", MISSING), ("centre", MISSING), ("inertia", MISSING)),
+        {
+            "__init__": _init_Inertial,
+            "__repr__": _repr_Inertial,
+            "__eq__": _eq_Inertial,
+            "__hash__": _hash_Inertial,
+        },
+    ),
+    "Link": Written(
+        (
+            ("name", MISSING),
+            ("visuals", DEFAULT),
+            ("collisions", DEFAULT),
+            ("inertial", DEFAULT),
+            ("doc", DEFAULT),
+            ("span", FieldSpec(None, MISSING, False, False)),
+        ),
+        {"__init__": _init_Link, "__repr__": _repr_Link, "__eq__": _eq_Link, "__hash__": _hash_Link},
+    ),
+    "Joint": Written(
+        (
+            ("name", MISSING),
+            ("kind", MISSING),
+            ("parent", MISSING),
+            ("child", MISSING),
+            ("origin", DEFAULT),
+            ("axis", DEFAULT),
+            ("lower", DEFAULT),
+            ("upper", DEFAULT),
+            ("velocity", DEFAULT),
+            ("effort", DEFAULT),
+            ("damping", DEFAULT),
+            ("friction", DEFAULT),
+            ("doc", DEFAULT),
+            ("span", FieldSpec(None, MISSING, False, False)),
+        ),
+        {"__init__": _init_Joint, "__repr__": _repr_Joint, "__eq__": _eq_Joint, "__hash__": _hash_Joint},
+    ),
+    "Binding": Written(
+        (
+            ("quantity", MISSING),
+            ("target", MISSING),
+            ("parameter", MISSING),
+            ("index", MISSING),
+            ("to_device", MISSING),
+            ("to_joint", MISSING),
+            ("interface", DEFAULT),
+            ("span", FieldSpec(None, MISSING, False, False)),
+        ),
+        {
+            "__init__": _init_Binding,
+            "__repr__": _repr_Binding,
+            "__eq__": _eq_Binding,
+            "__hash__": _hash_Binding,
+        },
+    ),
+    "Transmission": Written(
+        (
+            ("name", MISSING),
+            ("joint", MISSING),
+            ("commands", DEFAULT),
+            ("measures", DEFAULT),
+            ("doc", DEFAULT),
+            ("span", FieldSpec(None, MISSING, False, False)),
+        ),
+        {
+            "__init__": _init_Transmission,
+            "__repr__": _repr_Transmission,
+            "__eq__": _eq_Transmission,
+            "__hash__": _hash_Transmission,
+        },
+    ),
+    "Model": Written(
+        (
+            ("robot", MISSING),
+            ("states", MISSING),
+            ("connections", MISSING),
+            ("primitives", MISSING),
+            ("interfaces", MISSING),
+            ("adapters", MISSING),
+            ("inputs", MISSING),
+            ("outputs", MISSING),
+            ("frames", FieldSpec(MISSING, dict, True, True)),
+            ("constants", FieldSpec(MISSING, dict, True, True)),
+            ("enums", FieldSpec(MISSING, dict, True, True)),
+            ("tables", FieldSpec(MISSING, dict, True, True)),
+            ("settings", FieldSpec(MISSING, dict, True, True)),
+            ("links", FieldSpec(MISSING, dict, True, True)),
+            ("joints", FieldSpec(MISSING, dict, True, True)),
+            ("transmissions", FieldSpec(MISSING, dict, True, True)),
+        ),
+        {"__init__": _init_Model, "__repr__": _repr_Model, "__eq__": _eq_Model, "__hash__": _hash_Model},
+    ),
+}
+dataclass = classes(WRITTEN)

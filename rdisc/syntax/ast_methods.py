@@ -1,0 +1,2979 @@
+"""The methods of the frozen dataclasses of rdisc/syntax/ast.py, written out ahead of time (why: rdisc/frozen.py).
+
+Written by `python -m rdisc.frozen_writer` from the declarations: do not edit; rerun it after
+changing a class's fields (a test holds this file equal to what it writes).
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from rdisc.frozen import DEFAULT, MISSING, FieldSpec, Written, classes, field
+
+__all__ = ["dataclass", "field"]
+
+_set = object.__setattr__
+
+
+def _init_Ident(self: Any, text: Any, span: Any = DEFAULT) -> None:
+    _set(self, "text", text)
+    _set(self, "span", span)
+
+
+def _repr_Ident(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(text={self.text!r})"
+
+
+def _eq_Ident(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.text,) == (other.text,)
+    return NotImplemented
+
+
+def _hash_Ident(self: Any) -> int:
+    return hash((self.text,))
+
+
+def _init_IntLit(self: Any, value: Any, span: Any = DEFAULT) -> None:
+    _set(self, "value", value)
+    _set(self, "span", span)
+
+
+def _repr_IntLit(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(value={self.value!r})"
+
+
+def _eq_IntLit(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.value,) == (other.value,)
+    return NotImplemented
+
+
+def _hash_IntLit(self: Any) -> int:
+    return hash((self.value,))
+
+
+def _init_FloatLit(self: Any, value: Any, span: Any = DEFAULT) -> None:
+    _set(self, "value", value)
+    _set(self, "span", span)
+
+
+def _repr_FloatLit(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(value={self.value!r})"
+
+
+def _eq_FloatLit(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.value,) == (other.value,)
+    return NotImplemented
+
+
+def _hash_FloatLit(self: Any) -> int:
+    return hash((self.value,))
+
+
+def _init_StrLit(self: Any, value: Any, span: Any = DEFAULT) -> None:
+    _set(self, "value", value)
+    _set(self, "span", span)
+
+
+def _repr_StrLit(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(value={self.value!r})"
+
+
+def _eq_StrLit(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.value,) == (other.value,)
+    return NotImplemented
+
+
+def _hash_StrLit(self: Any) -> int:
+    return hash((self.value,))
+
+
+def _init_BytesLit(self: Any, value: Any, span: Any = DEFAULT) -> None:
+    _set(self, "value", value)
+    _set(self, "span", span)
+
+
+def _repr_BytesLit(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(value={self.value!r})"
+
+
+def _eq_BytesLit(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.value,) == (other.value,)
+    return NotImplemented
+
+
+def _hash_BytesLit(self: Any) -> int:
+    return hash((self.value,))
+
+
+def _init_BoolLit(self: Any, value: Any, span: Any = DEFAULT) -> None:
+    _set(self, "value", value)
+    _set(self, "span", span)
+
+
+def _repr_BoolLit(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(value={self.value!r})"
+
+
+def _eq_BoolLit(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.value,) == (other.value,)
+    return NotImplemented
+
+
+def _hash_BoolLit(self: Any) -> int:
+    return hash((self.value,))
+
+
+def _init_Ref(self: Any, name: Any, span: Any = DEFAULT) -> None:
+    _set(self, "name", name)
+    _set(self, "span", span)
+
+
+def _repr_Ref(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(name={self.name!r})"
+
+
+def _eq_Ref(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.name,) == (other.name,)
+    return NotImplemented
+
+
+def _hash_Ref(self: Any) -> int:
+    return hash((self.name,))
+
+
+def _init_Index(self: Any, base: Any, index: Any, span: Any = DEFAULT) -> None:
+    _set(self, "base", base)
+    _set(self, "index", index)
+    _set(self, "span", span)
+
+
+def _repr_Index(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(base={self.base!r}, index={self.index!r})"
+
+
+def _eq_Index(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.base, self.index) == (other.base, other.index)
+    return NotImplemented
+
+
+def _hash_Index(self: Any) -> int:
+    return hash((self.base, self.index))
+
+
+def _init_ArrayLit(self: Any, items: Any, span: Any = DEFAULT) -> None:
+    _set(self, "items", items)
+    _set(self, "span", span)
+
+
+def _repr_ArrayLit(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(items={self.items!r})"
+
+
+def _eq_ArrayLit(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.items,) == (other.items,)
+    return NotImplemented
+
+
+def _hash_ArrayLit(self: Any) -> int:
+    return hash((self.items,))
+
+
+def _init_Unary(self: Any, op: Any, operand: Any, span: Any = DEFAULT) -> None:
+    _set(self, "op", op)
+    _set(self, "operand", operand)
+    _set(self, "span", span)
+
+
+def _repr_Unary(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(op={self.op!r}, operand={self.operand!r})"
+
+
+def _eq_Unary(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.op, self.operand) == (other.op, other.operand)
+    return NotImplemented
+
+
+def _hash_Unary(self: Any) -> int:
+    return hash((self.op, self.operand))
+
+
+def _init_BinOp(self: Any, op: Any, left: Any, right: Any, span: Any = DEFAULT) -> None:
+    _set(self, "op", op)
+    _set(self, "left", left)
+    _set(self, "right", right)
+    _set(self, "span", span)
+
+
+def _repr_BinOp(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(op={self.op!r}, left={self.left!r}, right={self.right!r})"
+
+
+def _eq_BinOp(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.op, self.left, self.right) == (other.op, other.left, other.right)
+    return NotImplemented
+
+
+def _hash_BinOp(self: Any) -> int:
+    return hash((self.op, self.left, self.right))
+
+
+def _init_Conditional(self: Any, then: Any, cond: Any, orelse: Any, span: Any = DEFAULT) -> None:
+    _set(self, "then", then)
+    _set(self, "cond", cond)
+    _set(self, "orelse", orelse)
+    _set(self, "span", span)
+
+
+def _repr_Conditional(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(then={self.then!r}, cond={self.cond!r}, orelse={self.orelse!r})"
+
+
+def _eq_Conditional(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.then, self.cond, self.orelse) == (other.then, other.cond, other.orelse)
+    return NotImplemented
+
+
+def _hash_Conditional(self: Any) -> int:
+    return hash((self.then, self.cond, self.orelse))
+
+
+def _init_CallExpr(self: Any, func: Any, args: Any, span: Any = DEFAULT) -> None:
+    _set(self, "func", func)
+    _set(self, "args", args)
+    _set(self, "span", span)
+
+
+def _repr_CallExpr(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(func={self.func!r}, args={self.args!r})"
+
+
+def _eq_CallExpr(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.func, self.args) == (other.func, other.args)
+    return NotImplemented
+
+
+def _hash_CallExpr(self: Any) -> int:
+    return hash((self.func, self.args))
+
+
+def _init_Member(self: Any, enum: Any, member: Any, span: Any = DEFAULT) -> None:
+    _set(self, "enum", enum)
+    _set(self, "member", member)
+    _set(self, "span", span)
+
+
+def _repr_Member(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(enum={self.enum!r}, member={self.member!r})"
+
+
+def _eq_Member(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.enum, self.member) == (other.enum, other.member)
+    return NotImplemented
+
+
+def _hash_Member(self: Any) -> int:
+    return hash((self.enum, self.member))
+
+
+def _init_ArrayOf(self: Any, element: Any, size: Any, span: Any = DEFAULT) -> None:
+    _set(self, "element", element)
+    _set(self, "size", size)
+    _set(self, "span", span)
+
+
+def _repr_ArrayOf(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(element={self.element!r}, size={self.size!r})"
+
+
+def _eq_ArrayOf(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.element, self.size) == (other.element, other.size)
+    return NotImplemented
+
+
+def _hash_ArrayOf(self: Any) -> int:
+    return hash((self.element, self.size))
+
+
+def _init_Param(
+    self: Any,
+    name: Any,
+    type: Any,
+    span: Any = DEFAULT,
+    low: Any = DEFAULT,
+    high: Any = DEFAULT,
+    default: Any = DEFAULT,
+    unit: Any = DEFAULT,
+) -> None:
+    _set(self, "name", name)
+    _set(self, "type", type)
+    _set(self, "span", span)
+    _set(self, "low", low)
+    _set(self, "high", high)
+    _set(self, "default", default)
+    _set(self, "unit", unit)
+
+
+def _repr_Param(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(name={self.name!r}, type={self.type!r}, low={self.low!r}, high={self.high!r}, default={self.default!r}, unit={self.unit!r})"
+
+
+def _eq_Param(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.name,
+            self.type,
+            self.low,
+            self.high,
+            self.default,
+            self.unit,
+        ) == (
+            other.name,
+            other.type,
+            other.low,
+            other.high,
+            other.default,
+            other.unit,
+        )
+    return NotImplemented
+
+
+def _hash_Param(self: Any) -> int:
+    return hash((self.name, self.type, self.low, self.high, self.default, self.unit))
+
+
+def _init_Call(self: Any, target: Any, args: Any, span: Any = DEFAULT) -> None:
+    _set(self, "target", target)
+    _set(self, "args", args)
+    _set(self, "span", span)
+
+
+def _repr_Call(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(target={self.target!r}, args={self.args!r})"
+
+
+def _eq_Call(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.target, self.args) == (other.target, other.args)
+    return NotImplemented
+
+
+def _hash_Call(self: Any) -> int:
+    return hash((self.target, self.args))
+
+
+def _init_Duration(self: Any, value: Any, unit: Any, span: Any = DEFAULT) -> None:
+    _set(self, "value", value)
+    _set(self, "unit", unit)
+    _set(self, "span", span)
+
+
+def _repr_Duration(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(value={self.value!r}, unit={self.unit!r})"
+
+
+def _eq_Duration(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.value, self.unit) == (other.value, other.unit)
+    return NotImplemented
+
+
+def _hash_Duration(self: Any) -> int:
+    return hash((self.value, self.unit))
+
+
+def _init_Assign(self: Any, target: Any, value: Any, span: Any = DEFAULT, index: Any = DEFAULT) -> None:
+    _set(self, "target", target)
+    _set(self, "value", value)
+    _set(self, "span", span)
+    _set(self, "index", index)
+
+
+def _repr_Assign(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(target={self.target!r}, value={self.value!r}, index={self.index!r})"
+
+
+def _eq_Assign(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.target, self.value, self.index) == (other.target, other.value, other.index)
+    return NotImplemented
+
+
+def _hash_Assign(self: Any) -> int:
+    return hash((self.target, self.value, self.index))
+
+
+def _init_ImportDecl(self: Any, path: Any, span: Any = DEFAULT, doc: Any = DEFAULT) -> None:
+    _set(self, "path", path)
+    _set(self, "span", span)
+    _set(self, "doc", doc)
+
+
+def _repr_ImportDecl(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(path={self.path!r}, doc={self.doc!r})"
+
+
+def _eq_ImportDecl(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.path, self.doc) == (other.path, other.doc)
+    return NotImplemented
+
+
+def _hash_ImportDecl(self: Any) -> int:
+    return hash((self.path, self.doc))
+
+
+def _init_RobotAttr(self: Any, key: Any, value: Any, span: Any = DEFAULT) -> None:
+    _set(self, "key", key)
+    _set(self, "value", value)
+    _set(self, "span", span)
+
+
+def _repr_RobotAttr(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(key={self.key!r}, value={self.value!r})"
+
+
+def _eq_RobotAttr(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.key, self.value) == (other.key, other.value)
+    return NotImplemented
+
+
+def _hash_RobotAttr(self: Any) -> int:
+    return hash((self.key, self.value))
+
+
+def _init_RobotDecl(self: Any, name: Any, attrs: Any, span: Any = DEFAULT, doc: Any = DEFAULT) -> None:
+    _set(self, "name", name)
+    _set(self, "attrs", attrs)
+    _set(self, "span", span)
+    _set(self, "doc", doc)
+
+
+def _repr_RobotDecl(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(name={self.name!r}, attrs={self.attrs!r}, doc={self.doc!r})"
+
+
+def _eq_RobotDecl(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.name, self.attrs, self.doc) == (other.name, other.attrs, other.doc)
+    return NotImplemented
+
+
+def _hash_RobotDecl(self: Any) -> int:
+    return hash((self.name, self.attrs, self.doc))
+
+
+def _init_StateDecl(
+    self: Any,
+    name: Any,
+    type: Any,
+    init: Any,
+    span: Any = DEFAULT,
+    doc: Any = DEFAULT,
+) -> None:
+    _set(self, "name", name)
+    _set(self, "type", type)
+    _set(self, "init", init)
+    _set(self, "span", span)
+    _set(self, "doc", doc)
+
+
+def _repr_StateDecl(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(name={self.name!r}, type={self.type!r}, init={self.init!r}, doc={self.doc!r})"
+
+
+def _eq_StateDecl(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.name, self.type, self.init, self.doc) == (other.name, other.type, other.init, other.doc)
+    return NotImplemented
+
+
+def _hash_StateDecl(self: Any) -> int:
+    return hash((self.name, self.type, self.init, self.doc))
+
+
+def _init_SettingDecl(
+    self: Any,
+    name: Any,
+    type: Any,
+    default: Any,
+    span: Any = DEFAULT,
+    doc: Any = DEFAULT,
+    low: Any = DEFAULT,
+    high: Any = DEFAULT,
+) -> None:
+    _set(self, "name", name)
+    _set(self, "type", type)
+    _set(self, "default", default)
+    _set(self, "span", span)
+    _set(self, "doc", doc)
+    _set(self, "low", low)
+    _set(self, "high", high)
+
+
+def _repr_SettingDecl(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(name={self.name!r}, type={self.type!r}, default={self.default!r}, doc={self.doc!r}, low={self.low!r}, high={self.high!r})"
+
+
+def _eq_SettingDecl(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.name,
+            self.type,
+            self.default,
+            self.doc,
+            self.low,
+            self.high,
+        ) == (
+            other.name,
+            other.type,
+            other.default,
+            other.doc,
+            other.low,
+            other.high,
+        )
+    return NotImplemented
+
+
+def _hash_SettingDecl(self: Any) -> int:
+    return hash((self.name, self.type, self.default, self.doc, self.low, self.high))
+
+
+def _init_Baud(self: Any, value: Any, span: Any = DEFAULT) -> None:
+    _set(self, "value", value)
+    _set(self, "span", span)
+
+
+def _repr_Baud(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(value={self.value!r})"
+
+
+def _eq_Baud(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.value,) == (other.value,)
+    return NotImplemented
+
+
+def _hash_Baud(self: Any) -> int:
+    return hash((self.value,))
+
+
+def _init_Threading(self: Any, model: Any, frequency: Any, span: Any = DEFAULT) -> None:
+    _set(self, "model", model)
+    _set(self, "frequency", frequency)
+    _set(self, "span", span)
+
+
+def _repr_Threading(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(model={self.model!r}, frequency={self.frequency!r})"
+
+
+def _eq_Threading(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.model, self.frequency) == (other.model, other.frequency)
+    return NotImplemented
+
+
+def _hash_Threading(self: Any) -> int:
+    return hash((self.model, self.frequency))
+
+
+def _init_Hook(self: Any, event: Any, call: Any, every: Any, span: Any = DEFAULT) -> None:
+    _set(self, "event", event)
+    _set(self, "call", call)
+    _set(self, "every", every)
+    _set(self, "span", span)
+
+
+def _repr_Hook(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(event={self.event!r}, call={self.call!r}, every={self.every!r})"
+
+
+def _eq_Hook(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.event, self.call, self.every) == (other.event, other.call, other.every)
+    return NotImplemented
+
+
+def _hash_Hook(self: Any) -> int:
+    return hash((self.event, self.call, self.every))
+
+
+def _init_Terminator(self: Any, value: Any, span: Any = DEFAULT) -> None:
+    _set(self, "value", value)
+    _set(self, "span", span)
+
+
+def _repr_Terminator(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(value={self.value!r})"
+
+
+def _eq_Terminator(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.value,) == (other.value,)
+    return NotImplemented
+
+
+def _hash_Terminator(self: Any) -> int:
+    return hash((self.value,))
+
+
+def _init_Address(self: Any, value: Any, span: Any = DEFAULT) -> None:
+    _set(self, "value", value)
+    _set(self, "span", span)
+
+
+def _repr_Address(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(value={self.value!r})"
+
+
+def _eq_Address(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.value,) == (other.value,)
+    return NotImplemented
+
+
+def _hash_Address(self: Any) -> int:
+    return hash((self.value,))
+
+
+def _init_ConnectionDecl(
+    self: Any,
+    name: Any,
+    kind: Any,
+    attrs: Any,
+    span: Any = DEFAULT,
+    doc: Any = DEFAULT,
+) -> None:
+    _set(self, "name", name)
+    _set(self, "kind", kind)
+    _set(self, "attrs", attrs)
+    _set(self, "span", span)
+    _set(self, "doc", doc)
+
+
+def _repr_ConnectionDecl(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(name={self.name!r}, kind={self.kind!r}, attrs={self.attrs!r}, doc={self.doc!r})"
+
+
+def _eq_ConnectionDecl(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.name,
+            self.kind,
+            self.attrs,
+            self.doc,
+        ) == (
+            other.name,
+            other.kind,
+            other.attrs,
+            other.doc,
+        )
+    return NotImplemented
+
+
+def _hash_ConnectionDecl(self: Any) -> int:
+    return hash((self.name, self.kind, self.attrs, self.doc))
+
+
+def _init_On(self: Any, connection: Any, span: Any = DEFAULT) -> None:
+    _set(self, "connection", connection)
+    _set(self, "span", span)
+
+
+def _repr_On(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(connection={self.connection!r})"
+
+
+def _eq_On(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.connection,) == (other.connection,)
+    return NotImplemented
+
+
+def _hash_On(self: Any) -> int:
+    return hash((self.connection,))
+
+
+def _init_Encoding(self: Any, kind: Any, template: Any, args: Any, span: Any = DEFAULT) -> None:
+    _set(self, "kind", kind)
+    _set(self, "template", template)
+    _set(self, "args", args)
+    _set(self, "span", span)
+
+
+def _repr_Encoding(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(kind={self.kind!r}, template={self.template!r}, args={self.args!r})"
+
+
+def _eq_Encoding(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.kind, self.template, self.args) == (other.kind, other.template, other.args)
+    return NotImplemented
+
+
+def _hash_Encoding(self: Any) -> int:
+    return hash((self.kind, self.template, self.args))
+
+
+def _init_Decoding(self: Any, kind: Any, template: Any, span: Any = DEFAULT) -> None:
+    _set(self, "kind", kind)
+    _set(self, "template", template)
+    _set(self, "span", span)
+
+
+def _repr_Decoding(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(kind={self.kind!r}, template={self.template!r})"
+
+
+def _eq_Decoding(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.kind, self.template) == (other.kind, other.template)
+    return NotImplemented
+
+
+def _hash_Decoding(self: Any) -> int:
+    return hash((self.kind, self.template))
+
+
+def _init_Actions(self: Any, assigns: Any, span: Any = DEFAULT) -> None:
+    _set(self, "assigns", assigns)
+    _set(self, "span", span)
+
+
+def _repr_Actions(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(assigns={self.assigns!r})"
+
+
+def _eq_Actions(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.assigns,) == (other.assigns,)
+    return NotImplemented
+
+
+def _hash_Actions(self: Any) -> int:
+    return hash((self.assigns,))
+
+
+def _init_Framed(self: Any, frame: Any, args: Any, span: Any = DEFAULT) -> None:
+    _set(self, "frame", frame)
+    _set(self, "args", args)
+    _set(self, "span", span)
+
+
+def _repr_Framed(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(frame={self.frame!r}, args={self.args!r})"
+
+
+def _eq_Framed(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.frame, self.args) == (other.frame, other.args)
+    return NotImplemented
+
+
+def _hash_Framed(self: Any) -> int:
+    return hash((self.frame, self.args))
+
+
+def _init_SkipUnmatched(self: Any, span: Any = DEFAULT) -> None:
+    _set(self, "span", span)
+
+
+def _repr_SkipUnmatched(self: Any) -> str:
+    return f"{self.__class__.__qualname__}()"
+
+
+def _eq_SkipUnmatched(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return () == ()
+    return NotImplemented
+
+
+def _hash_SkipUnmatched(self: Any) -> int:
+    return hash(())
+
+
+def _init_ReplyEntry(
+    self: Any,
+    value: Any,
+    decoding: Any,
+    actions: Any,
+    span: Any = DEFAULT,
+    last: Any = DEFAULT,
+    until: Any = DEFAULT,
+) -> None:
+    _set(self, "value", value)
+    _set(self, "decoding", decoding)
+    _set(self, "actions", actions)
+    _set(self, "span", span)
+    _set(self, "last", last)
+    _set(self, "until", until)
+
+
+def _repr_ReplyEntry(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(value={self.value!r}, decoding={self.decoding!r}, actions={self.actions!r}, last={self.last!r}, until={self.until!r})"
+
+
+def _eq_ReplyEntry(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.value,
+            self.decoding,
+            self.actions,
+            self.last,
+            self.until,
+        ) == (
+            other.value,
+            other.decoding,
+            other.actions,
+            other.last,
+            other.until,
+        )
+    return NotImplemented
+
+
+def _hash_ReplyEntry(self: Any) -> int:
+    return hash((self.value, self.decoding, self.actions, self.last, self.until))
+
+
+def _init_ReplyTable(
+    self: Any,
+    key: Any,
+    entries: Any,
+    span: Any = DEFAULT,
+    tag: Any = DEFAULT,
+    each: Any = DEFAULT,
+    length: Any = DEFAULT,
+) -> None:
+    _set(self, "key", key)
+    _set(self, "entries", entries)
+    _set(self, "span", span)
+    _set(self, "tag", tag)
+    _set(self, "each", each)
+    _set(self, "length", length)
+
+
+def _repr_ReplyTable(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(key={self.key!r}, entries={self.entries!r}, tag={self.tag!r}, each={self.each!r}, length={self.length!r})"
+
+
+def _eq_ReplyTable(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.key,
+            self.entries,
+            self.tag,
+            self.each,
+            self.length,
+        ) == (
+            other.key,
+            other.entries,
+            other.tag,
+            other.each,
+            other.length,
+        )
+    return NotImplemented
+
+
+def _hash_ReplyTable(self: Any) -> int:
+    return hash((self.key, self.entries, self.tag, self.each, self.length))
+
+
+def _init_ReplyTimeout(self: Any, duration: Any, span: Any = DEFAULT) -> None:
+    _set(self, "duration", duration)
+    _set(self, "span", span)
+
+
+def _repr_ReplyTimeout(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(duration={self.duration!r})"
+
+
+def _eq_ReplyTimeout(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.duration,) == (other.duration,)
+    return NotImplemented
+
+
+def _hash_ReplyTimeout(self: Any) -> int:
+    return hash((self.duration,))
+
+
+def _init_Replies(
+    self: Any,
+    over: Any,
+    span: Any = DEFAULT,
+    var: Any = DEFAULT,
+    high: Any = DEFAULT,
+    frame: Any = DEFAULT,
+) -> None:
+    _set(self, "over", over)
+    _set(self, "span", span)
+    _set(self, "var", var)
+    _set(self, "high", high)
+    _set(self, "frame", frame)
+
+
+def _repr_Replies(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(over={self.over!r}, var={self.var!r}, high={self.high!r}, frame={self.frame!r})"
+
+
+def _eq_Replies(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.over,
+            self.var,
+            self.high,
+            self.frame,
+        ) == (
+            other.over,
+            other.var,
+            other.high,
+            other.frame,
+        )
+    return NotImplemented
+
+
+def _hash_Replies(self: Any) -> int:
+    return hash((self.over, self.var, self.high, self.frame))
+
+
+def _init_ListedReply(
+    self: Any,
+    decoding: Any,
+    span: Any = DEFAULT,
+    frame: Any = DEFAULT,
+    expect: Any = DEFAULT,
+    actions: Any = DEFAULT,
+) -> None:
+    _set(self, "decoding", decoding)
+    _set(self, "span", span)
+    _set(self, "frame", frame)
+    _set(self, "expect", expect)
+    _set(self, "actions", actions)
+
+
+def _repr_ListedReply(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(decoding={self.decoding!r}, frame={self.frame!r}, expect={self.expect!r}, actions={self.actions!r})"
+
+
+def _eq_ListedReply(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.decoding,
+            self.frame,
+            self.expect,
+            self.actions,
+        ) == (
+            other.decoding,
+            other.frame,
+            other.expect,
+            other.actions,
+        )
+    return NotImplemented
+
+
+def _hash_ListedReply(self: Any) -> int:
+    return hash((self.decoding, self.frame, self.expect, self.actions))
+
+
+def _init_ReplyList(self: Any, replies: Any, span: Any = DEFAULT) -> None:
+    _set(self, "replies", replies)
+    _set(self, "span", span)
+
+
+def _repr_ReplyList(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(replies={self.replies!r})"
+
+
+def _eq_ReplyList(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.replies,) == (other.replies,)
+    return NotImplemented
+
+
+def _hash_ReplyList(self: Any) -> int:
+    return hash((self.replies,))
+
+
+def _init_Expect(self: Any, condition: Any, span: Any = DEFAULT) -> None:
+    _set(self, "condition", condition)
+    _set(self, "span", span)
+
+
+def _repr_Expect(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(condition={self.condition!r})"
+
+
+def _eq_Expect(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.condition,) == (other.condition,)
+    return NotImplemented
+
+
+def _hash_Expect(self: Any) -> int:
+    return hash((self.condition,))
+
+
+def _init_Records(self: Any, marker: Any, span: Any = DEFAULT) -> None:
+    _set(self, "marker", marker)
+    _set(self, "span", span)
+
+
+def _repr_Records(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(marker={self.marker!r})"
+
+
+def _eq_Records(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.marker,) == (other.marker,)
+    return NotImplemented
+
+
+def _hash_Records(self: Any) -> int:
+    return hash((self.marker,))
+
+
+def _init_Lines(self: Any, settings: Any, span: Any = DEFAULT) -> None:
+    _set(self, "settings", settings)
+    _set(self, "span", span)
+
+
+def _repr_Lines(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(settings={self.settings!r})"
+
+
+def _eq_Lines(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.settings,) == (other.settings,)
+    return NotImplemented
+
+
+def _hash_Lines(self: Any) -> int:
+    return hash((self.settings,))
+
+
+def _init_PrimitiveDecl(
+    self: Any,
+    name: Any,
+    params: Any,
+    clauses: Any,
+    span: Any = DEFAULT,
+    doc: Any = DEFAULT,
+) -> None:
+    _set(self, "name", name)
+    _set(self, "params", params)
+    _set(self, "clauses", clauses)
+    _set(self, "span", span)
+    _set(self, "doc", doc)
+
+
+def _repr_PrimitiveDecl(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(name={self.name!r}, params={self.params!r}, clauses={self.clauses!r}, doc={self.doc!r})"
+
+
+def _eq_PrimitiveDecl(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.name,
+            self.params,
+            self.clauses,
+            self.doc,
+        ) == (
+            other.name,
+            other.params,
+            other.clauses,
+            other.doc,
+        )
+    return NotImplemented
+
+
+def _hash_PrimitiveDecl(self: Any) -> int:
+    return hash((self.name, self.params, self.clauses, self.doc))
+
+
+def _init_Kind(self: Any, word: Any, span: Any = DEFAULT) -> None:
+    _set(self, "word", word)
+    _set(self, "span", span)
+
+
+def _repr_Kind(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(word={self.word!r})"
+
+
+def _eq_Kind(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.word,) == (other.word,)
+    return NotImplemented
+
+
+def _hash_Kind(self: Any) -> int:
+    return hash((self.word,))
+
+
+def _init_Triggers(self: Any, outputs: Any, span: Any = DEFAULT) -> None:
+    _set(self, "outputs", outputs)
+    _set(self, "span", span)
+
+
+def _repr_Triggers(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(outputs={self.outputs!r})"
+
+
+def _eq_Triggers(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.outputs,) == (other.outputs,)
+    return NotImplemented
+
+
+def _hash_Triggers(self: Any) -> int:
+    return hash((self.outputs,))
+
+
+def _init_CallStmt(
+    self: Any,
+    call: Any,
+    delays: Any,
+    priorities: Any,
+    span: Any = DEFAULT,
+    conditions: Any = DEFAULT,
+) -> None:
+    _set(self, "call", call)
+    _set(self, "delays", delays)
+    _set(self, "priorities", priorities)
+    _set(self, "span", span)
+    _set(self, "conditions", conditions)
+
+
+def _repr_CallStmt(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(call={self.call!r}, delays={self.delays!r}, priorities={self.priorities!r}, conditions={self.conditions!r})"
+
+
+def _eq_CallStmt(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.call,
+            self.delays,
+            self.priorities,
+            self.conditions,
+        ) == (
+            other.call,
+            other.delays,
+            other.priorities,
+            other.conditions,
+        )
+    return NotImplemented
+
+
+def _hash_CallStmt(self: Any) -> int:
+    return hash((self.call, self.delays, self.priorities, self.conditions))
+
+
+def _init_ForStmt(self: Any, var: Any, low: Any, high: Any, body: Any, span: Any = DEFAULT) -> None:
+    _set(self, "var", var)
+    _set(self, "low", low)
+    _set(self, "high", high)
+    _set(self, "body", body)
+    _set(self, "span", span)
+
+
+def _repr_ForStmt(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(var={self.var!r}, low={self.low!r}, high={self.high!r}, body={self.body!r})"
+
+
+def _eq_ForStmt(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.var, self.low, self.high, self.body) == (other.var, other.low, other.high, other.body)
+    return NotImplemented
+
+
+def _hash_ForStmt(self: Any) -> int:
+    return hash((self.var, self.low, self.high, self.body))
+
+
+def _init_InterfaceDecl(
+    self: Any,
+    name: Any,
+    params: Any,
+    clauses: Any,
+    body: Any,
+    span: Any = DEFAULT,
+    doc: Any = DEFAULT,
+) -> None:
+    _set(self, "name", name)
+    _set(self, "params", params)
+    _set(self, "clauses", clauses)
+    _set(self, "body", body)
+    _set(self, "span", span)
+    _set(self, "doc", doc)
+
+
+def _repr_InterfaceDecl(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(name={self.name!r}, params={self.params!r}, clauses={self.clauses!r}, body={self.body!r}, doc={self.doc!r})"
+
+
+def _eq_InterfaceDecl(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.name,
+            self.params,
+            self.clauses,
+            self.body,
+            self.doc,
+        ) == (
+            other.name,
+            other.params,
+            other.clauses,
+            other.body,
+            other.doc,
+        )
+    return NotImplemented
+
+
+def _hash_InterfaceDecl(self: Any) -> int:
+    return hash((self.name, self.params, self.clauses, self.body, self.doc))
+
+
+def _init_FieldDecl(
+    self: Any,
+    name: Any,
+    type: Any,
+    unit: Any,
+    ros: Any,
+    span: Any = DEFAULT,
+    doc: Any = DEFAULT,
+) -> None:
+    _set(self, "name", name)
+    _set(self, "type", type)
+    _set(self, "unit", unit)
+    _set(self, "ros", ros)
+    _set(self, "span", span)
+    _set(self, "doc", doc)
+
+
+def _repr_FieldDecl(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(name={self.name!r}, type={self.type!r}, unit={self.unit!r}, ros={self.ros!r}, doc={self.doc!r})"
+
+
+def _eq_FieldDecl(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.name,
+            self.type,
+            self.unit,
+            self.ros,
+            self.doc,
+        ) == (
+            other.name,
+            other.type,
+            other.unit,
+            other.ros,
+            other.doc,
+        )
+    return NotImplemented
+
+
+def _hash_FieldDecl(self: Any) -> int:
+    return hash((self.name, self.type, self.unit, self.ros, self.doc))
+
+
+def _init_AdapterDecl(
+    self: Any,
+    name: Any,
+    ros: Any,
+    fields: Any,
+    span: Any = DEFAULT,
+    doc: Any = DEFAULT,
+) -> None:
+    _set(self, "name", name)
+    _set(self, "ros", ros)
+    _set(self, "fields", fields)
+    _set(self, "span", span)
+    _set(self, "doc", doc)
+
+
+def _repr_AdapterDecl(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(name={self.name!r}, ros={self.ros!r}, fields={self.fields!r}, doc={self.doc!r})"
+
+
+def _eq_AdapterDecl(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.name,
+            self.ros,
+            self.fields,
+            self.doc,
+        ) == (
+            other.name,
+            other.ros,
+            other.fields,
+            other.doc,
+        )
+    return NotImplemented
+
+
+def _hash_AdapterDecl(self: Any) -> int:
+    return hash((self.name, self.ros, self.fields, self.doc))
+
+
+def _init_InputDecl(
+    self: Any,
+    name: Any,
+    adapter: Any,
+    call: Any,
+    span: Any = DEFAULT,
+    doc: Any = DEFAULT,
+) -> None:
+    _set(self, "name", name)
+    _set(self, "adapter", adapter)
+    _set(self, "call", call)
+    _set(self, "span", span)
+    _set(self, "doc", doc)
+
+
+def _repr_InputDecl(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(name={self.name!r}, adapter={self.adapter!r}, call={self.call!r}, doc={self.doc!r})"
+
+
+def _eq_InputDecl(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.name,
+            self.adapter,
+            self.call,
+            self.doc,
+        ) == (
+            other.name,
+            other.adapter,
+            other.call,
+            other.doc,
+        )
+    return NotImplemented
+
+
+def _hash_InputDecl(self: Any) -> int:
+    return hash((self.name, self.adapter, self.call, self.doc))
+
+
+def _init_OutputDecl(
+    self: Any,
+    name: Any,
+    adapter: Any,
+    fields: Any,
+    span: Any = DEFAULT,
+    doc: Any = DEFAULT,
+) -> None:
+    _set(self, "name", name)
+    _set(self, "adapter", adapter)
+    _set(self, "fields", fields)
+    _set(self, "span", span)
+    _set(self, "doc", doc)
+
+
+def _repr_OutputDecl(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(name={self.name!r}, adapter={self.adapter!r}, fields={self.fields!r}, doc={self.doc!r})"
+
+
+def _eq_OutputDecl(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.name,
+            self.adapter,
+            self.fields,
+            self.doc,
+        ) == (
+            other.name,
+            other.adapter,
+            other.fields,
+            other.doc,
+        )
+    return NotImplemented
+
+
+def _hash_OutputDecl(self: Any) -> int:
+    return hash((self.name, self.adapter, self.fields, self.doc))
+
+
+def _init_TableLit(self: Any, entries: Any, span: Any = DEFAULT) -> None:
+    _set(self, "entries", entries)
+    _set(self, "span", span)
+
+
+def _repr_TableLit(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(entries={self.entries!r})"
+
+
+def _eq_TableLit(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.entries,) == (other.entries,)
+    return NotImplemented
+
+
+def _hash_TableLit(self: Any) -> int:
+    return hash((self.entries,))
+
+
+def _init_ConstDecl(self: Any, name: Any, value: Any, span: Any = DEFAULT, doc: Any = DEFAULT) -> None:
+    _set(self, "name", name)
+    _set(self, "value", value)
+    _set(self, "span", span)
+    _set(self, "doc", doc)
+
+
+def _repr_ConstDecl(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(name={self.name!r}, value={self.value!r}, doc={self.doc!r})"
+
+
+def _eq_ConstDecl(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.name, self.value, self.doc) == (other.name, other.value, other.doc)
+    return NotImplemented
+
+
+def _hash_ConstDecl(self: Any) -> int:
+    return hash((self.name, self.value, self.doc))
+
+
+def _init_EnumMember(self: Any, name: Any, value: Any, span: Any = DEFAULT) -> None:
+    _set(self, "name", name)
+    _set(self, "value", value)
+    _set(self, "span", span)
+
+
+def _repr_EnumMember(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(name={self.name!r}, value={self.value!r})"
+
+
+def _eq_EnumMember(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.name, self.value) == (other.name, other.value)
+    return NotImplemented
+
+
+def _hash_EnumMember(self: Any) -> int:
+    return hash((self.name, self.value))
+
+
+def _init_EnumDecl(self: Any, name: Any, members: Any, span: Any = DEFAULT, doc: Any = DEFAULT) -> None:
+    _set(self, "name", name)
+    _set(self, "members", members)
+    _set(self, "span", span)
+    _set(self, "doc", doc)
+
+
+def _repr_EnumDecl(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(name={self.name!r}, members={self.members!r}, doc={self.doc!r})"
+
+
+def _eq_EnumDecl(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.name, self.members, self.doc) == (other.name, other.members, other.doc)
+    return NotImplemented
+
+
+def _hash_EnumDecl(self: Any) -> int:
+    return hash((self.name, self.members, self.doc))
+
+
+def _init_FrameBytes(self: Any, role: Any, value: Any, span: Any = DEFAULT) -> None:
+    _set(self, "role", role)
+    _set(self, "value", value)
+    _set(self, "span", span)
+
+
+def _repr_FrameBytes(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(role={self.role!r}, value={self.value!r})"
+
+
+def _eq_FrameBytes(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.role, self.value) == (other.role, other.value)
+    return NotImplemented
+
+
+def _hash_FrameBytes(self: Any) -> int:
+    return hash((self.role, self.value))
+
+
+def _init_FrameField(self: Any, name: Any, format: Any, value: Any, span: Any = DEFAULT) -> None:
+    _set(self, "name", name)
+    _set(self, "format", format)
+    _set(self, "value", value)
+    _set(self, "span", span)
+
+
+def _repr_FrameField(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(name={self.name!r}, format={self.format!r}, value={self.value!r})"
+
+
+def _eq_FrameField(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.name, self.format, self.value) == (other.name, other.format, other.value)
+    return NotImplemented
+
+
+def _hash_FrameField(self: Any) -> int:
+    return hash((self.name, self.format, self.value))
+
+
+def _init_FrameLength(self: Any, format: Any, adjust: Any, span: Any = DEFAULT) -> None:
+    _set(self, "format", format)
+    _set(self, "adjust", adjust)
+    _set(self, "span", span)
+
+
+def _repr_FrameLength(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(format={self.format!r}, adjust={self.adjust!r})"
+
+
+def _eq_FrameLength(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.format, self.adjust) == (other.format, other.adjust)
+    return NotImplemented
+
+
+def _hash_FrameLength(self: Any) -> int:
+    return hash((self.format, self.adjust))
+
+
+def _init_FramePayload(self: Any, span: Any = DEFAULT) -> None:
+    _set(self, "span", span)
+
+
+def _repr_FramePayload(self: Any) -> str:
+    return f"{self.__class__.__qualname__}()"
+
+
+def _eq_FramePayload(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return () == ()
+    return NotImplemented
+
+
+def _hash_FramePayload(self: Any) -> int:
+    return hash(())
+
+
+def _init_ChecksumOption(
+    self: Any,
+    word: Any,
+    value: Any = DEFAULT,
+    over: Any = DEFAULT,
+    span: Any = DEFAULT,
+) -> None:
+    _set(self, "word", word)
+    _set(self, "value", value)
+    _set(self, "over", over)
+    _set(self, "span", span)
+
+
+def _repr_ChecksumOption(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(word={self.word!r}, value={self.value!r}, over={self.over!r})"
+
+
+def _eq_ChecksumOption(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.word, self.value, self.over) == (other.word, other.value, other.over)
+    return NotImplemented
+
+
+def _hash_ChecksumOption(self: Any) -> int:
+    return hash((self.word, self.value, self.over))
+
+
+def _init_FrameChecksum(self: Any, algorithm: Any, format: Any, options: Any, span: Any = DEFAULT) -> None:
+    _set(self, "algorithm", algorithm)
+    _set(self, "format", format)
+    _set(self, "options", options)
+    _set(self, "span", span)
+
+
+def _repr_FrameChecksum(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(algorithm={self.algorithm!r}, format={self.format!r}, options={self.options!r})"
+
+
+def _eq_FrameChecksum(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.algorithm, self.format, self.options) == (other.algorithm, other.format, other.options)
+    return NotImplemented
+
+
+def _hash_FrameChecksum(self: Any) -> int:
+    return hash((self.algorithm, self.format, self.options))
+
+
+def _init_FrameOptional(self: Any, parts: Any, span: Any = DEFAULT) -> None:
+    _set(self, "parts", parts)
+    _set(self, "span", span)
+
+
+def _repr_FrameOptional(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(parts={self.parts!r})"
+
+
+def _eq_FrameOptional(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.parts,) == (other.parts,)
+    return NotImplemented
+
+
+def _hash_FrameOptional(self: Any) -> int:
+    return hash((self.parts,))
+
+
+def _init_FrameEither(self: Any, alternatives: Any, span: Any = DEFAULT) -> None:
+    _set(self, "alternatives", alternatives)
+    _set(self, "span", span)
+
+
+def _repr_FrameEither(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(alternatives={self.alternatives!r})"
+
+
+def _eq_FrameEither(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.alternatives,) == (other.alternatives,)
+    return NotImplemented
+
+
+def _hash_FrameEither(self: Any) -> int:
+    return hash((self.alternatives,))
+
+
+def _init_FrameBitField(
+    self: Any,
+    name: Any,
+    width: Any,
+    value: Any,
+    adjust: Any = DEFAULT,
+    span: Any = DEFAULT,
+) -> None:
+    _set(self, "name", name)
+    _set(self, "width", width)
+    _set(self, "value", value)
+    _set(self, "adjust", adjust)
+    _set(self, "span", span)
+
+
+def _repr_FrameBitField(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(name={self.name!r}, width={self.width!r}, value={self.value!r}, adjust={self.adjust!r})"
+
+
+def _eq_FrameBitField(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.name,
+            self.width,
+            self.value,
+            self.adjust,
+        ) == (
+            other.name,
+            other.width,
+            other.value,
+            other.adjust,
+        )
+    return NotImplemented
+
+
+def _hash_FrameBitField(self: Any) -> int:
+    return hash((self.name, self.width, self.value, self.adjust))
+
+
+def _init_FrameBits(self: Any, format: Any, fields: Any, span: Any = DEFAULT) -> None:
+    _set(self, "format", format)
+    _set(self, "fields", fields)
+    _set(self, "span", span)
+
+
+def _repr_FrameBits(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(format={self.format!r}, fields={self.fields!r})"
+
+
+def _eq_FrameBits(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.format, self.fields) == (other.format, other.fields)
+    return NotImplemented
+
+
+def _hash_FrameBits(self: Any) -> int:
+    return hash((self.format, self.fields))
+
+
+def _init_FrameSide(self: Any, side: Any, parts: Any, span: Any = DEFAULT) -> None:
+    _set(self, "side", side)
+    _set(self, "parts", parts)
+    _set(self, "span", span)
+
+
+def _repr_FrameSide(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(side={self.side!r}, parts={self.parts!r})"
+
+
+def _eq_FrameSide(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.side, self.parts) == (other.side, other.parts)
+    return NotImplemented
+
+
+def _hash_FrameSide(self: Any) -> int:
+    return hash((self.side, self.parts))
+
+
+def _init_FrameStuff(self: Any, escape: Any, reserved: Any, span: Any = DEFAULT) -> None:
+    _set(self, "escape", escape)
+    _set(self, "reserved", reserved)
+    _set(self, "span", span)
+
+
+def _repr_FrameStuff(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(escape={self.escape!r}, reserved={self.reserved!r})"
+
+
+def _eq_FrameStuff(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.escape, self.reserved) == (other.escape, other.reserved)
+    return NotImplemented
+
+
+def _hash_FrameStuff(self: Any) -> int:
+    return hash((self.escape, self.reserved))
+
+
+def _init_FrameEscape(
+    self: Any,
+    escape: Any,
+    table: Any,
+    xor: Any = DEFAULT,
+    escaped: Any = DEFAULT,
+    span: Any = DEFAULT,
+) -> None:
+    _set(self, "escape", escape)
+    _set(self, "table", table)
+    _set(self, "xor", xor)
+    _set(self, "escaped", escaped)
+    _set(self, "span", span)
+
+
+def _repr_FrameEscape(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(escape={self.escape!r}, table={self.table!r}, xor={self.xor!r}, escaped={self.escaped!r})"
+
+
+def _eq_FrameEscape(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.escape,
+            self.table,
+            self.xor,
+            self.escaped,
+        ) == (
+            other.escape,
+            other.table,
+            other.xor,
+            other.escaped,
+        )
+    return NotImplemented
+
+
+def _hash_FrameEscape(self: Any) -> int:
+    return hash((self.escape, self.table, self.xor, self.escaped))
+
+
+def _init_FrameDecl(
+    self: Any,
+    name: Any,
+    params: Any,
+    items: Any,
+    span: Any = DEFAULT,
+    doc: Any = DEFAULT,
+) -> None:
+    _set(self, "name", name)
+    _set(self, "params", params)
+    _set(self, "items", items)
+    _set(self, "span", span)
+    _set(self, "doc", doc)
+
+
+def _repr_FrameDecl(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(name={self.name!r}, params={self.params!r}, items={self.items!r}, doc={self.doc!r})"
+
+
+def _eq_FrameDecl(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.name,
+            self.params,
+            self.items,
+            self.doc,
+        ) == (
+            other.name,
+            other.params,
+            other.items,
+            other.doc,
+        )
+    return NotImplemented
+
+
+def _hash_FrameDecl(self: Any) -> int:
+    return hash((self.name, self.params, self.items, self.doc))
+
+
+def _init_Shape(self: Any, kind: Any, args: Any, span: Any = DEFAULT) -> None:
+    _set(self, "kind", kind)
+    _set(self, "args", args)
+    _set(self, "span", span)
+
+
+def _repr_Shape(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(kind={self.kind!r}, args={self.args!r})"
+
+
+def _eq_Shape(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.kind, self.args) == (other.kind, other.args)
+    return NotImplemented
+
+
+def _hash_Shape(self: Any) -> int:
+    return hash((self.kind, self.args))
+
+
+def _init_ShapeUse(self: Any, role: Any, shape: Any, at: Any, rpy: Any, span: Any = DEFAULT) -> None:
+    _set(self, "role", role)
+    _set(self, "shape", shape)
+    _set(self, "at", at)
+    _set(self, "rpy", rpy)
+    _set(self, "span", span)
+
+
+def _repr_ShapeUse(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(role={self.role!r}, shape={self.shape!r}, at={self.at!r}, rpy={self.rpy!r})"
+
+
+def _eq_ShapeUse(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.role, self.shape, self.at, self.rpy) == (other.role, other.shape, other.at, other.rpy)
+    return NotImplemented
+
+
+def _hash_ShapeUse(self: Any) -> int:
+    return hash((self.role, self.shape, self.at, self.rpy))
+
+
+def _init_BodyValue(self: Any, key: Any, value: Any, span: Any = DEFAULT) -> None:
+    _set(self, "key", key)
+    _set(self, "value", value)
+    _set(self, "span", span)
+
+
+def _repr_BodyValue(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(key={self.key!r}, value={self.value!r})"
+
+
+def _eq_BodyValue(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.key, self.value) == (other.key, other.value)
+    return NotImplemented
+
+
+def _hash_BodyValue(self: Any) -> int:
+    return hash((self.key, self.value))
+
+
+def _init_JointLimit(self: Any, low: Any, high: Any, span: Any = DEFAULT) -> None:
+    _set(self, "low", low)
+    _set(self, "high", high)
+    _set(self, "span", span)
+
+
+def _repr_JointLimit(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(low={self.low!r}, high={self.high!r})"
+
+
+def _eq_JointLimit(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.low, self.high) == (other.low, other.high)
+    return NotImplemented
+
+
+def _hash_JointLimit(self: Any) -> int:
+    return hash((self.low, self.high))
+
+
+def _init_LinkDecl(self: Any, name: Any, items: Any, span: Any = DEFAULT, doc: Any = DEFAULT) -> None:
+    _set(self, "name", name)
+    _set(self, "items", items)
+    _set(self, "span", span)
+    _set(self, "doc", doc)
+
+
+def _repr_LinkDecl(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(name={self.name!r}, items={self.items!r}, doc={self.doc!r})"
+
+
+def _eq_LinkDecl(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.name, self.items, self.doc) == (other.name, other.items, other.doc)
+    return NotImplemented
+
+
+def _hash_LinkDecl(self: Any) -> int:
+    return hash((self.name, self.items, self.doc))
+
+
+def _init_JointDecl(
+    self: Any,
+    name: Any,
+    kind: Any,
+    parent: Any,
+    child: Any,
+    items: Any,
+    span: Any = DEFAULT,
+    doc: Any = DEFAULT,
+) -> None:
+    _set(self, "name", name)
+    _set(self, "kind", kind)
+    _set(self, "parent", parent)
+    _set(self, "child", child)
+    _set(self, "items", items)
+    _set(self, "span", span)
+    _set(self, "doc", doc)
+
+
+def _repr_JointDecl(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(name={self.name!r}, kind={self.kind!r}, parent={self.parent!r}, child={self.child!r}, items={self.items!r}, doc={self.doc!r})"
+
+
+def _eq_JointDecl(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.name,
+            self.kind,
+            self.parent,
+            self.child,
+            self.items,
+            self.doc,
+        ) == (
+            other.name,
+            other.kind,
+            other.parent,
+            other.child,
+            other.items,
+            other.doc,
+        )
+    return NotImplemented
+
+
+def _hash_JointDecl(self: Any) -> int:
+    return hash((self.name, self.kind, self.parent, self.child, self.items, self.doc))
+
+
+def _init_Binding(
+    self: Any,
+    role: Any,
+    quantity: Any,
+    target: Any,
+    member: Any,
+    index: Any,
+    conversions: Any,
+    span: Any = DEFAULT,
+) -> None:
+    _set(self, "role", role)
+    _set(self, "quantity", quantity)
+    _set(self, "target", target)
+    _set(self, "member", member)
+    _set(self, "index", index)
+    _set(self, "conversions", conversions)
+    _set(self, "span", span)
+
+
+def _repr_Binding(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(role={self.role!r}, quantity={self.quantity!r}, target={self.target!r}, member={self.member!r}, index={self.index!r}, conversions={self.conversions!r})"
+
+
+def _eq_Binding(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.role,
+            self.quantity,
+            self.target,
+            self.member,
+            self.index,
+            self.conversions,
+        ) == (
+            other.role,
+            other.quantity,
+            other.target,
+            other.member,
+            other.index,
+            other.conversions,
+        )
+    return NotImplemented
+
+
+def _hash_Binding(self: Any) -> int:
+    return hash((self.role, self.quantity, self.target, self.member, self.index, self.conversions))
+
+
+def _init_TransmissionDecl(
+    self: Any,
+    name: Any,
+    joint: Any,
+    bindings: Any,
+    span: Any = DEFAULT,
+    doc: Any = DEFAULT,
+) -> None:
+    _set(self, "name", name)
+    _set(self, "joint", joint)
+    _set(self, "bindings", bindings)
+    _set(self, "span", span)
+    _set(self, "doc", doc)
+
+
+def _repr_TransmissionDecl(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(name={self.name!r}, joint={self.joint!r}, bindings={self.bindings!r}, doc={self.doc!r})"
+
+
+def _eq_TransmissionDecl(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.name,
+            self.joint,
+            self.bindings,
+            self.doc,
+        ) == (
+            other.name,
+            other.joint,
+            other.bindings,
+            other.doc,
+        )
+    return NotImplemented
+
+
+def _hash_TransmissionDecl(self: Any) -> int:
+    return hash((self.name, self.joint, self.bindings, self.doc))
+
+
+def _init_Damaged(self: Any, keyword: Any, name: Any) -> None:
+    _set(self, "keyword", keyword)
+    _set(self, "name", name)
+
+
+def _repr_Damaged(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(keyword={self.keyword!r}, name={self.name!r})"
+
+
+def _eq_Damaged(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.keyword, self.name) == (other.keyword, other.name)
+    return NotImplemented
+
+
+def _hash_Damaged(self: Any) -> int:
+    return hash((self.keyword, self.name))
+
+
+def _init_Module(self: Any, path: Any, decls: Any, damaged: Any = DEFAULT, refused: Any = DEFAULT) -> None:
+    _set(self, "path", path)
+    _set(self, "decls", decls)
+    _set(self, "damaged", damaged)
+    _set(self, "refused", refused)
+
+
+def _repr_Module(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(path={self.path!r}, decls={self.decls!r}, damaged={self.damaged!r}, refused={self.refused!r})"
+
+
+def _eq_Module(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.path,
+            self.decls,
+            self.damaged,
+            self.refused,
+        ) == (
+            other.path,
+            other.decls,
+            other.damaged,
+            other.refused,
+        )
+    return NotImplemented
+
+
+def _hash_Module(self: Any) -> int:
+    return hash((self.path, self.decls, self.damaged, self.refused))
+
+
+WRITTEN: dict[str, Written] = {
+    "Ident": Written(
+        (("text", MISSING), ("span", FieldSpec(None, MISSING, False, False))),
+        {"__init__": _init_Ident, "__repr__": _repr_Ident, "__eq__": _eq_Ident, "__hash__": _hash_Ident},
+    ),
+    "IntLit": Written(
+        (("value", MISSING), ("span", FieldSpec(None, MISSING, False, False))),
+        {"__init__": _init_IntLit, "__repr__": _repr_IntLit, "__eq__": _eq_IntLit, "__hash__": _hash_IntLit},
+    ),
+    "FloatLit": Written(
+        (("value", MISSING), ("span", FieldSpec(None, MISSING, False, False))),
+        {
+            "__init__": _init_FloatLit,
+            "__repr__": _repr_FloatLit,
+            "__eq__": _eq_FloatLit,
+            "__hash__": _hash_FloatLit,
+        },
+    ),
+    "StrLit": Written(
+        (("value", MISSING), ("span", FieldSpec(None, MISSING, False, False))),
+        {"__init__": _init_StrLit, "__repr__": _repr_StrLit, "__eq__": _eq_StrLit, "__hash__": _hash_StrLit},
+    ),
+    "BytesLit": Written(
+        (("value", MISSING), ("span", FieldSpec(None, MISSING, False, False))),
+        {
+            "__init__": _init_BytesLit,
+            "__repr__": _repr_BytesLit,
+            "__eq__": _eq_BytesLit,
+            "__hash__": _hash_BytesLit,
+        },
+    ),
+    "BoolLit": Written(
+        (("value", MISSING), ("span", FieldSpec(None, MISSING, False, False))),
+        {
+            "__init__": _init_BoolLit,
+            "__repr__": _repr_BoolLit,
+            "__eq__": _eq_BoolLit,
+            "__hash__": _hash_BoolLit,
+        },
+    ),
+    "Ref": Written(
+        (("name", MISSING), ("span", FieldSpec(None, MISSING, False, False))),
+        {"__init__": _init_Ref, "__repr__": _repr_Ref, "__eq__": _eq_Ref, "__hash__": _hash_Ref},
+    ),
+    "Index": Written(
+        (("base", MISSING), ("index", MISSING), ("span", FieldSpec(None, MISSING, False, False))),
+        {"__init__": _init_Index, "__repr__": _repr_Index, "__eq__": _eq_Index, "__hash__": _hash_Index},
+    ),
+    "ArrayLit": Written(
+        (("items", MISSING), ("span", FieldSpec(None, MISSING, False, False))),
+        {
+            "__init__": _init_ArrayLit,
+            "__repr__": _repr_ArrayLit,
+            "__eq__": _eq_ArrayLit,
+            "__hash__": _hash_ArrayLit,
+        },
+    ),
+    "Unary": Written(
+        (("op", MISSING), ("operand", MISSING), ("span", FieldSpec(None, MISSING, False, False))),
+        {"__init__": _init_Unary, "__repr__": _repr_Unary, "__eq__": _eq_Unary, "__hash__": _hash_Unary},
+    ),
+    "BinOp": Written(
+        (
+            ("op", MISSING),
+            ("left", MISSING),
+            ("right", MISSING),
+            ("span", FieldSpec(None, MISSING, False, False)),
+        ),
+        {"__init__": _init_BinOp, "__repr__": _repr_BinOp, "__eq__": _eq_BinOp, "__hash__": _hash_BinOp},
+    ),
+    "Conditional": Written(
+        (
+            ("then", MISSING),
+            ("cond", MISSING),
+            ("orelse", MISSING),
+            ("span", FieldSpec(None, MISSING, False, False)),
+        ),
+        {
+            "__init__": _init_Conditional,
+            "__repr__": _repr_Conditional,
+            "__eq__": _eq_Conditional,
+            "__hash__": _hash_Conditional,
+        },
+    ),
+    "CallExpr": Written(
+        (("func", MISSING), ("args", MISSING), ("span", FieldSpec(None, MISSING, False, False))),
+        {
+            "__init__": _init_CallExpr,
+            "__repr__": _repr_CallExpr,
+            "__eq__": _eq_CallExpr,
+            "__hash__": _hash_CallExpr,
+        },
+    ),
+    "Member": Written(
+        (("enum", MISSING), ("member", MISSING), ("span", FieldSpec(None, MISSING, False, False))),
+        {"__init__": _init_Member, "__repr__": _repr_Member, "__eq__": _eq_Member, "__hash__": _hash_Member},
+    ),
+    "ArrayOf": Written(
+        (("element", MISSING), ("size", MISSING), ("span", FieldSpec(None, MISSING, False, False))),
+        {
+            "__init__": _init_ArrayOf,
+            "__repr__": _repr_ArrayOf,
+            "__eq__": _eq_ArrayOf,
+            "__hash__": _hash_ArrayOf,
+        },
+    ),
+    "Param": Written(
+        (
+            ("name", MISSING),
+            ("type", MISSING),
+            ("span", FieldSpec(None, MISSING, False, False)),
+            ("low", DEFAULT),
+            ("high", DEFAULT),
+            ("default", DEFAULT),
+            ("unit", DEFAULT),
+        ),
+        {"__init__": _init_Param, "__repr__": _repr_Param, "__eq__": _eq_Param, "__hash__": _hash_Param},
+    ),
+    "Call": Written(
+        (("target", MISSING), ("args", MISSING), ("span", FieldSpec(None, MISSING, False, False))),
+        {"__init__": _init_Call, "__repr__": _repr_Call, "__eq__": _eq_Call, "__hash__": _hash_Call},
+    ),
+    "Duration": Written(
+        (("value", MISSING), ("unit", MISSING), ("span", FieldSpec(None, MISSING, False, False))),
+        {
+            "__init__": _init_Duration,
+            "__repr__": _repr_Duration,
+            "__eq__": _eq_Duration,
+            "__hash__": _hash_Duration,
+        },
+    ),
+    "Assign": Written(
+        (
+            ("target", MISSING),
+            ("value", MISSING),
+            ("span", FieldSpec(None, MISSING, False, False)),
+            ("index", DEFAULT),
+        ),
+        {"__init__": _init_Assign, "__repr__": _repr_Assign, "__eq__": _eq_Assign, "__hash__": _hash_Assign},
+    ),
+    "ImportDecl": Written(
+        (("path", MISSING), ("span", FieldSpec(None, MISSING, False, False)), ("doc", DEFAULT)),
+        {
+            "__init__": _init_ImportDecl,
+            "__repr__": _repr_ImportDecl,
+            "__eq__": _eq_ImportDecl,
+            "__hash__": _hash_ImportDecl,
+        },
+    ),
+    "RobotAttr": Written(
+        (("key", MISSING), ("value", MISSING), ("span", FieldSpec(None, MISSING, False, False))),
+        {
+            "__init__": _init_RobotAttr,
+            "__repr__": _repr_RobotAttr,
+            "__eq__": _eq_RobotAttr,
+            "__hash__": _hash_RobotAttr,
+        },
+    ),
+    "RobotDecl": Written(
+        (
+            ("name", MISSING),
+            ("attrs", MISSING),
+            ("span", FieldSpec(None, MISSING, False, False)),
+            ("doc", DEFAULT),
+        ),
+        {
+            "__init__": _init_RobotDecl,
+            "__repr__": _repr_RobotDecl,
+            "__eq__": _eq_RobotDecl,
+            "__hash__": _hash_RobotDecl,
+        },
+    ),
+    "StateDecl": Written(
+        (
+            ("name", MISSING),
+            ("type", MISSING),
+            ("init", MISSING),
+            ("span", FieldSpec(None, MISSING, False, False)),
+            ("doc", DEFAULT),
+        ),
+        {
+            "__init__": _init_StateDecl,
+            "__repr__": _repr_StateDecl,
+            "__eq__": _eq_StateDecl,
+            "__hash__": _hash_StateDecl,
+        },
+    ),
+    "SettingDecl": Written(
+        (
+            ("name", MISSING),
+            ("type", MISSING),
+            ("default", MISSING),
+            ("span", FieldSpec(None, MISSING, False, False)),
+            ("doc", DEFAULT),
+            ("low", DEFAULT),
+            ("high", DEFAULT),
+        ),
+        {
+            "__init__": _init_SettingDecl,
+            "__repr__": _repr_SettingDecl,
+            "__eq__": _eq_SettingDecl,
+            "__hash__": _hash_SettingDecl,
+        },
+    ),
+    "Baud": Written(
+        (("value", MISSING), ("span", FieldSpec(None, MISSING, False, False))),
+        {"__init__": _init_Baud, "__repr__": _repr_Baud, "__eq__": _eq_Baud, "__hash__": _hash_Baud},
+    ),
+    "Threading": Written(
+        (("model", MISSING), ("frequency", MISSING), ("span", FieldSpec(None, MISSING, False, False))),
+        {
+            "__init__": _init_Threading,
+            "__repr__": _repr_Threading,
+            "__eq__": _eq_Threading,
+            "__hash__": _hash_Threading,
+        },
+    ),
+    "Hook": Written(
+        (
+            ("event", MISSING),
+            ("call", MISSING),
+            ("every", MISSING),
+            ("span", FieldSpec(None, MISSING, False, False)),
+        ),
+        {"__init__": _init_Hook, "__repr__": _repr_Hook, "__eq__": _eq_Hook, "__hash__": _hash_Hook},
+    ),
+    "Terminator": Written(
+        (("value", MISSING), ("span", FieldSpec(None, MISSING, False, False))),
+        {
+            "__init__": _init_Terminator,
+            "__repr__": _repr_Terminator,
+            "__eq__": _eq_Terminator,
+            "__hash__": _hash_Terminator,
+        },
+    ),
+    "Address": Written(
+        (("value", MISSING), ("span", FieldSpec(None, MISSING, False, False))),
+        {
+            "__init__": _init_Address,
+            "__repr__": _repr_Address,
+            "__eq__": _eq_Address,
+            "__hash__": _hash_Address,
+        },
+    ),
+    "ConnectionDecl": Written(
+        (
+            ("name", MISSING),
+            ("kind", MISSING),
+            ("attrs", MISSING),
+            ("span", FieldSpec(None, MISSING, False, False)),
+            ("doc", DEFAULT),
+        ),
+        {
+            "__init__": _init_ConnectionDecl,
+            "__repr__": _repr_ConnectionDecl,
+            "__eq__": _eq_ConnectionDecl,
+            "__hash__": _hash_ConnectionDecl,
+        },
+    ),
+    "On": Written(
+        (("connection", MISSING), ("span", FieldSpec(None, MISSING, False, False))),
+        {"__init__": _init_On, "__repr__": _repr_On, "__eq__": _eq_On, "__hash__": _hash_On},
+    ),
+    "Encoding": Written(
+        (
+            ("kind", MISSING),
+            ("template", MISSING),
+            ("args", MISSING),
+            ("span", FieldSpec(None, MISSING, False, False)),
+        ),
+        {
+            "__init__": _init_Encoding,
+            "__repr__": _repr_Encoding,
+            "__eq__": _eq_Encoding,
+            "__hash__": _hash_Encoding,
+        },
+    ),
+    "Decoding": Written(
+        (("kind", MISSING), ("template", MISSING), ("span", FieldSpec(None, MISSING, False, False))),
+        {
+            "__init__": _init_Decoding,
+            "__repr__": _repr_Decoding,
+            "__eq__": _eq_Decoding,
+            "__hash__": _hash_Decoding,
+        },
+    ),
+    "Actions": Written(
+        (("assigns", MISSING), ("span", FieldSpec(None, MISSING, False, False))),
+        {
+            "__init__": _init_Actions,
+            "__repr__": _repr_Actions,
+            "__eq__": _eq_Actions,
+            "__hash__": _hash_Actions,
+        },
+    ),
+    "Framed": Written(
+        (("frame", MISSING), ("args", MISSING), ("span", FieldSpec(None, MISSING, False, False))),
+        {"__init__": _init_Framed, "__repr__": _repr_Framed, "__eq__": _eq_Framed, "__hash__": _hash_Framed},
+    ),
+    "SkipUnmatched": Written(
+        (("span", FieldSpec(None, MISSING, False, False)),),
+        {
+            "__init__": _init_SkipUnmatched,
+            "__repr__": _repr_SkipUnmatched,
+            "__eq__": _eq_SkipUnmatched,
+            "__hash__": _hash_SkipUnmatched,
+        },
+    ),
+    "ReplyEntry": Written(
+        (
+            ("value", MISSING),
+            ("decoding", MISSING),
+            ("actions", MISSING),
+            ("span", FieldSpec(None, MISSING, False, False)),
+            ("last", DEFAULT),
+            ("until", DEFAULT),
+        ),
+        {
+            "__init__": _init_ReplyEntry,
+            "__repr__": _repr_ReplyEntry,
+            "__eq__": _eq_ReplyEntry,
+            "__hash__": _hash_ReplyEntry,
+        },
+    ),
+    "ReplyTable": Written(
+        (
+            ("key", MISSING),
+            ("entries", MISSING),
+            ("span", FieldSpec(None, MISSING, False, False)),
+            ("tag", DEFAULT),
+            ("each", DEFAULT),
+            ("length", DEFAULT),
+        ),
+        {
+            "__init__": _init_ReplyTable,
+            "__repr__": _repr_ReplyTable,
+            "__eq__": _eq_ReplyTable,
+            "__hash__": _hash_ReplyTable,
+        },
+    ),
+    "ReplyTimeout": Written(
+        (("duration", MISSING), ("span", FieldSpec(None, MISSING, False, False))),
+        {
+            "__init__": _init_ReplyTimeout,
+            "__repr__": _repr_ReplyTimeout,
+            "__eq__": _eq_ReplyTimeout,
+            "__hash__": _hash_ReplyTimeout,
+        },
+    ),
+    "Replies": Written(
+        (
+            ("over", MISSING),
+            ("span", FieldSpec(None, MISSING, False, False)),
+            ("var", DEFAULT),
+            ("high", DEFAULT),
+            ("frame", DEFAULT),
+        ),
+        {
+            "__init__": _init_Replies,
+            "__repr__": _repr_Replies,
+            "__eq__": _eq_Replies,
+            "__hash__": _hash_Replies,
+        },
+    ),
+    "ListedReply": Written(
+        (
+            ("decoding", MISSING),
+            ("span", FieldSpec(None, MISSING, False, False)),
+            ("frame", DEFAULT),
+            ("expect", DEFAULT),
+            ("actions", DEFAULT),
+        ),
+        {
+            "__init__": _init_ListedReply,
+            "__repr__": _repr_ListedReply,
+            "__eq__": _eq_ListedReply,
+            "__hash__": _hash_ListedReply,
+        },
+    ),
+    "ReplyList": Written(
+        (("replies", MISSING), ("span", FieldSpec(None, MISSING, False, False))),
+        {
+            "__init__": _init_ReplyList,
+            "__repr__": _repr_ReplyList,
+            "__eq__": _eq_ReplyList,
+            "__hash__": _hash_ReplyList,
+        },
+    ),
+    "Expect": Written(
+        (("condition", MISSING), ("span", FieldSpec(None, MISSING, False, False))),
+        {"__init__": _init_Expect, "__repr__": _repr_Expect, "__eq__": _eq_Expect, "__hash__": _hash_Expect},
+    ),
+    "Records": Written(
+        (("marker", MISSING), ("span", FieldSpec(None, MISSING, False, False))),
+        {
+            "__init__": _init_Records,
+            "__repr__": _repr_Records,
+            "__eq__": _eq_Records,
+            "__hash__": _hash_Records,
+        },
+    ),
+    "Lines": Written(
+        (("settings", MISSING), ("span", FieldSpec(None, MISSING, False, False))),
+        {"__init__": _init_Lines, "__repr__": _repr_Lines, "__eq__": _eq_Lines, "__hash__": _hash_Lines},
+    ),
+    "PrimitiveDecl": Written(
+        (
+            ("name", MISSING),
+            ("params", MISSING),
+            ("clauses", MISSING),
+            ("span", FieldSpec(None, MISSING, False, False)),
+            ("doc", DEFAULT),
+        ),
+        {
+            "__init__": _init_PrimitiveDecl,
+            "__repr__": _repr_PrimitiveDecl,
+            "__eq__": _eq_PrimitiveDecl,
+            "__hash__": _hash_PrimitiveDecl,
+        },
+    ),
+    "Kind": Written(
+        (("word", MISSING), ("span", FieldSpec(None, MISSING, False, False))),
+        {"__init__": _init_Kind, "__repr__": _repr_Kind, "__eq__": _eq_Kind, "__hash__": _hash_Kind},
+    ),
+    "Triggers": Written(
+        (("outputs", MISSING), ("span", FieldSpec(None, MISSING, False, False))),
+        {
+            "__init__": _init_Triggers,
+            "__repr__": _repr_Triggers,
+            "__eq__": _eq_Triggers,
+            "__hash__": _hash_Triggers,
+        },
+    ),
+    "CallStmt": Written(
+        (
+            ("call", MISSING),
+            ("delays", MISSING),
+            ("priorities", MISSING),
+            ("span", FieldSpec(None, MISSING, False, False)),
+            ("conditions", DEFAULT),
+        ),
+        {
+            "__init__": _init_CallStmt,
+            "__repr__": _repr_CallStmt,
+            "__eq__": _eq_CallStmt,
+            "__hash__": _hash_CallStmt,
+        },
+    ),
+    "ForStmt": Written(
+        (
+            ("var", MISSING),
+            ("low", MISSING),
+            ("high", MISSING),
+            ("body", MISSING),
+            ("span", FieldSpec(None, MISSING, False, False)),
+        ),
+        {
+            "__init__": _init_ForStmt,
+            "__repr__": _repr_ForStmt,
+            "__eq__": _eq_ForStmt,
+            "__hash__": _hash_ForStmt,
+        },
+    ),
+    "InterfaceDecl": Written(
+        (
+            ("name", MISSING),
+            ("params", MISSING),
+            ("clauses", MISSING),
+            ("body", MISSING),
+            ("span", FieldSpec(None, MISSING, False, False)),
+            ("doc", DEFAULT),
+        ),
+        {
+            "__init__": _init_InterfaceDecl,
+            "__repr__": _repr_InterfaceDecl,
+            "__eq__": _eq_InterfaceDecl,
+            "__hash__": _hash_InterfaceDecl,
+        },
+    ),
+    "FieldDecl": Written(
+        (
+            ("name", MISSING),
+            ("type", MISSING),
+            ("unit", MISSING),
+            ("ros", MISSING),
+            ("span", FieldSpec(None, MISSING, False, False)),
+            ("doc", DEFAULT),
+        ),
+        {
+            "__init__": _init_FieldDecl,
+            "__repr__": _repr_FieldDecl,
+            "__eq__": _eq_FieldDecl,
+            "__hash__": _hash_FieldDecl,
+        },
+    ),
+    "AdapterDecl": Written(
+        (
+            ("name", MISSING),
+            ("ros", MISSING),
+            ("fields", MISSING),
+            ("span", FieldSpec(None, MISSING, False, False)),
+            ("doc", DEFAULT),
+        ),
+        {
+            "__init__": _init_AdapterDecl,
+            "__repr__": _repr_AdapterDecl,
+            "__eq__": _eq_AdapterDecl,
+            "__hash__": _hash_AdapterDecl,
+        },
+    ),
+    "InputDecl": Written(
+        (
+            ("name", MISSING),
+            ("adapter", MISSING),
+            ("call", MISSING),
+            ("span", FieldSpec(None, MISSING, False, False)),
+            ("doc", DEFAULT),
+        ),
+        {
+            "__init__": _init_InputDecl,
+            "__repr__": _repr_InputDecl,
+            "__eq__": _eq_InputDecl,
+            "__hash__": _hash_InputDecl,
+        },
+    ),
+    "OutputDecl": Written(
+        (
+            ("name", MISSING),
+            ("adapter", MISSING),
+            ("fields", MISSING),
+            ("span", FieldSpec(None, MISSING, False, False)),
+            ("doc", DEFAULT),
+        ),
+        {
+            "__init__": _init_OutputDecl,
+            "__repr__": _repr_OutputDecl,
+            "__eq__": _eq_OutputDecl,
+            "__hash__": _hash_OutputDecl,
+        },
+    ),
+    "TableLit": Written(
+        (("entries", MISSING), ("span", FieldSpec(None, MISSING, False, False))),
+        {
+            "__init__": _init_TableLit,
+            "__repr__": _repr_TableLit,
+            "__eq__": _eq_TableLit,
+            "__hash__": _hash_TableLit,
+        },
+    ),
+    "ConstDecl": Written(
+        (
+            ("name", MISSING),
+            ("value", MISSING),
+            ("span", FieldSpec(None, MISSING, False, False)),
+            ("doc", DEFAULT),
+        ),
+        {
+            "__init__": _init_ConstDecl,
+            "__repr__": _repr_ConstDecl,
+            "__eq__": _eq_ConstDecl,
+            "__hash__": _hash_ConstDecl,
+        },
+    ),
+    "EnumMember": Written(
+        (("name", MISSING), ("value", MISSING), ("span", FieldSpec(None, MISSING, False, False))),
+        {
+            "__init__": _init_EnumMember,
+            "__repr__": _repr_EnumMember,
+            "__eq__": _eq_EnumMember,
+            "__hash__": _hash_EnumMember,
+        },
+    ),
+    "EnumDecl": Written(
+        (
+            ("name", MISSING),
+            ("members", MISSING),
+            ("span", FieldSpec(None, MISSING, False, False)),
+            ("doc", DEFAULT),
+        ),
+        {
+            "__init__": _init_EnumDecl,
+            "__repr__": _repr_EnumDecl,
+            "__eq__": _eq_EnumDecl,
+            "__hash__": _hash_EnumDecl,
+        },
+    ),
+    "FrameBytes": Written(
+        (("role", MISSING), ("value", MISSING), ("span", FieldSpec(None, MISSING, False, False))),
+        {
+            "__init__": _init_FrameBytes,
+            "__repr__": _repr_FrameBytes,
+            "__eq__": _eq_FrameBytes,
+            "__hash__": _hash_FrameBytes,
+        },
+    ),
+    "FrameField": Written(
+        (
+            ("name", MISSING),
+            ("format", MISSING),
+            ("value", MISSING),
+            ("span", FieldSpec(None, MISSING, False, False)),
+        ),
+        {
+            "__init__": _init_FrameField,
+            "__repr__": _repr_FrameField,
+            "__eq__": _eq_FrameField,
+            "__hash__": _hash_FrameField,
+        },
+    ),
+    "FrameLength": Written(
+        (("format", MISSING), ("adjust", MISSING), ("span", FieldSpec(None, MISSING, False, False))),
+        {
+            "__init__": _init_FrameLength,
+            "__repr__": _repr_FrameLength,
+            "__eq__": _eq_FrameLength,
+            "__hash__": _hash_FrameLength,
+        },
+    ),
+    "FramePayload": Written(
+        (("span", FieldSpec(None, MISSING, False, False)),),
+        {
+            "__init__": _init_FramePayload,
+            "__repr__": _repr_FramePayload,
+            "__eq__": _eq_FramePayload,
+            "__hash__": _hash_FramePayload,
+        },
+    ),
+    "ChecksumOption": Written(
+        (
+            ("word", MISSING),
+            ("value", DEFAULT),
+            ("over", DEFAULT),
+            ("span", FieldSpec(None, MISSING, False, False)),
+        ),
+        {
+            "__init__": _init_ChecksumOption,
+            "__repr__": _repr_ChecksumOption,
+            "__eq__": _eq_ChecksumOption,
+            "__hash__": _hash_ChecksumOption,
+        },
+    ),
+    "FrameChecksum": Written(
+        (
+            ("algorithm", MISSING),
+            ("format", MISSING),
+            ("options", MISSING),
+            ("span", FieldSpec(None, MISSING, False, False)),
+        ),
+        {
+            "__init__": _init_FrameChecksum,
+            "__repr__": _repr_FrameChecksum,
+            "__eq__": _eq_FrameChecksum,
+            "__hash__": _hash_FrameChecksum,
+        },
+    ),
+    "FrameOptional": Written(
+        (("parts", MISSING), ("span", FieldSpec(None, MISSING, False, False))),
+        {
+            "__init__": _init_FrameOptional,
+            "__repr__": _repr_FrameOptional,
+            "__eq__": _eq_FrameOptional,
+            "__hash__": _hash_FrameOptional,
+        },
+    ),
+    "FrameEither": Written(
+        (("alternatives", MISSING), ("span", FieldSpec(None, MISSING, False, False))),
+        {
+            "__init__": _init_FrameEither,
+            "__repr__": _repr_FrameEither,
+            "__eq__": _eq_FrameEither,
+            "__hash__": _hash_FrameEither,
+        },
+    ),
+    "FrameBitField": Written(
+        (
+            ("name", MISSING),
+            ("width", MISSING),
+            ("value", MISSING),
+            ("adjust", DEFAULT),
+            ("span", FieldSpec(None, MISSING, False, False)),
+        ),
+        {
+            "__init__": _init_FrameBitField,
+            "__repr__": _repr_FrameBitField,
+            "__eq__": _eq_FrameBitField,
+            "__hash__": _hash_FrameBitField,
+        },
+    ),
+    "FrameBits": Written(
+        (("format", MISSING), ("fields", MISSING), ("span", FieldSpec(None, MISSING, False, False))),
+        {
+            "__init__": _init_FrameBits,
+            "__repr__": _repr_FrameBits,
+            "__eq__": _eq_FrameBits,
+            "__hash__": _hash_FrameBits,
+        },
+    ),
+    "FrameSide": Written(
+        (("side", MISSING), ("parts", MISSING), ("span", FieldSpec(None, MISSING, False, False))),
+        {
+            "__init__": _init_FrameSide,
+            "__repr__": _repr_FrameSide,
+            "__eq__": _eq_FrameSide,
+            "__hash__": _hash_FrameSide,
+        },
+    ),
+    "FrameStuff": Written(
+        (("escape", MISSING), ("reserved", MISSING), ("span", FieldSpec(None, MISSING, False, False))),
+        {
+            "__init__": _init_FrameStuff,
+            "__repr__": _repr_FrameStuff,
+            "__eq__": _eq_FrameStuff,
+            "__hash__": _hash_FrameStuff,
+        },
+    ),
+    "FrameEscape": Written(
+        (
+            ("escape", MISSING),
+            ("table", MISSING),
+            ("xor", DEFAULT),
+            ("escaped", DEFAULT),
+            ("span", FieldSpec(None, MISSING, False, False)),
+        ),
+        {
+            "__init__": _init_FrameEscape,
+            "__repr__": _repr_FrameEscape,
+            "__eq__": _eq_FrameEscape,
+            "__hash__": _hash_FrameEscape,
+        },
+    ),
+    "FrameDecl": Written(
+        (
+            ("name", MISSING),
+            ("params", MISSING),
+            ("items", MISSING),
+            ("span", FieldSpec(None, MISSING, False, False)),
+            ("doc", DEFAULT),
+        ),
+        {
+            "__init__": _init_FrameDecl,
+            "__repr__": _repr_FrameDecl,
+            "__eq__": _eq_FrameDecl,
+            "__hash__": _hash_FrameDecl,
+        },
+    ),
+    "Shape": Written(
+        (("kind", MISSING), ("args", MISSING), ("span", FieldSpec(None, MISSING, False, False))),
+        {"__init__": _init_Shape, "__repr__": _repr_Shape, "__eq__": _eq_Shape, "__hash__": _hash_Shape},
+    ),
+    "ShapeUse": Written(
+        (
+            ("role", MISSING),
+            ("shape", MISSING),
+            ("at", MISSING),
+            ("rpy", MISSING),
+            ("span", FieldSpec(None, MISSING, False, False)),
+        ),
+        {
+            "__init__": _init_ShapeUse,
+            "__repr__": _repr_ShapeUse,
+            "__eq__": _eq_ShapeUse,
+            "__hash__": _hash_ShapeUse,
+        },
+    ),
+    "BodyValue": Written(
+        (("key", MISSING), ("value", MISSING), ("span", FieldSpec(None, MISSING, False, False))),
+        {
+            "__init__": _init_BodyValue,
+            "__repr__": _repr_BodyValue,
+            "__eq__": _eq_BodyValue,
+            "__hash__": _hash_BodyValue,
+        },
+    ),
+    "JointLimit": Written(
+        (("low", MISSING), ("high", MISSING), ("span", FieldSpec(None, MISSING, False, False))),
+        {
+            "__init__": _init_JointLimit,
+            "__repr__": _repr_JointLimit,
+            "__eq__": _eq_JointLimit,
+            "__hash__": _hash_JointLimit,
+        },
+    ),
+    "LinkDecl": Written(
+        (
+            ("name", MISSING),
+            ("items", MISSING),
+            ("span", FieldSpec(None, MISSING, False, False)),
+            ("doc", DEFAULT),
+        ),
+        {
+            "__init__": _init_LinkDecl,
+            "__repr__": _repr_LinkDecl,
+            "__eq__": _eq_LinkDecl,
+            "__hash__": _hash_LinkDecl,
+        },
+    ),
+    "JointDecl": Written(
+        (
+            ("name", MISSING),
+            ("kind", MISSING),
+            ("parent", MISSING),
+            ("child", MISSING),
+            ("items", MISSING),
+            ("span", FieldSpec(None, MISSING, False, False)),
+            ("doc", DEFAULT),
+        ),
+        {
+            "__init__": _init_JointDecl,
+            "__repr__": _repr_JointDecl,
+            "__eq__": _eq_JointDecl,
+            "__hash__": _hash_JointDecl,
+        },
+    ),
+    "Binding": Written(
+        (
+            ("role", MISSING),
+            ("quantity", MISSING),
+            ("target", MISSING),
+            ("member", MISSING),
+            ("index", MISSING),
+            ("conversions", MISSING),
+            ("span", FieldSpec(None, MISSING, False, False)),
+        ),
+        {
+            "__init__": _init_Binding,
+            "__repr__": _repr_Binding,
+            "__eq__": _eq_Binding,
+            "__hash__": _hash_Binding,
+        },
+    ),
+    "TransmissionDecl": Written(
+        (
+            ("name", MISSING),
+            ("joint", MISSING),
+            ("bindings", MISSING),
+            ("span", FieldSpec(None, MISSING, False, False)),
+            ("doc", DEFAULT),
+        ),
+        {
+            "__init__": _init_TransmissionDecl,
+            "__repr__": _repr_TransmissionDecl,
+            "__eq__": _eq_TransmissionDecl,
+            "__hash__": _hash_TransmissionDecl,
+        },
+    ),
+    "Damaged": Written(
+        (("keyword", MISSING), ("name", MISSING)),
+        {
+            "__init__": _init_Damaged,
+            "__repr__": _repr_Damaged,
+            "__eq__": _eq_Damaged,
+            "__hash__": _hash_Damaged,
+        },
+    ),
+    "Module": Written(
+        (("path", MISSING), ("decls", MISSING), ("damaged", DEFAULT), ("refused", DEFAULT)),
+        {"__init__": _init_Module, "__repr__": _repr_Module, "__eq__": _eq_Module, "__hash__": _hash_Module},
+    ),
+}
+dataclass = classes(WRITTEN)
