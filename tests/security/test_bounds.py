@@ -8,11 +8,11 @@ from pathlib import Path
 
 import pytest
 from conftest import check_text, run_rdisc
-from silent_port import SilentPort
 
 from rdisc import limits
 from rdisc.emit.python import import_driver
 from rdisc.runtime import engine, load
+from tests.support.ports import ScriptedPort
 
 
 def test_the_engine_keeps_the_same_width() -> None:
@@ -91,7 +91,7 @@ def test_a_post_action_cannot_grow_a_number_without_bound(tmp_path: Path, kind: 
     source.write_text(SQUARING, encoding="utf-8")
     implementation = load(source) if kind == "runtime" else import_driver(source, tmp_path, "squaring_driver")
     value_error = engine.RdisValueError if kind == "runtime" else implementation.RdisValueError
-    with implementation.connect(SilentPort(), threads=False) as robot:
+    with implementation.connect(ScriptedPort(timeout=1.0), threads=False) as robot:
         for expected in (9, 81, 6561, 43046721, 1853020188851841, 3433683820292512484657849089281):
             if expected > limits.MAX_INT:
                 with pytest.raises(value_error, match=r"^square: x would be a 102-bit integer; integers are "

@@ -8,10 +8,10 @@ from pathlib import Path
 
 import pytest
 from conftest import run_rdisc
-from silent_port import SilentPort
 
 from rdisc.emit.python import import_driver
 from rdisc.runtime import engine, load
+from tests.support.ports import ScriptedPort
 
 HEAD = 'robot r { author "tests" }\nconnection c: serial { baud 9600 }\n'
 
@@ -36,7 +36,7 @@ def test_a_string_longer_than_its_code_is_refused_at_run_time(tmp_path: Path, ki
     source.write_text(HEAD + 'primitive name(text: string) on c pack ">B4s" (7, text)\n', encoding="utf-8")
     implementation = load(source) if kind == "runtime" else import_driver(source, tmp_path, "named_driver")
     value_error = engine.RdisValueError if kind == "runtime" else implementation.RdisValueError
-    port = SilentPort()
+    port = ScriptedPort(timeout=1.0)
     with implementation.connect(port, threads=False) as robot:
         robot.call_primitive("name", "AB")
         robot.call_primitive("name", "ABCD")
