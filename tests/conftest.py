@@ -22,7 +22,7 @@ import re
 import subprocess
 import sys
 import traceback
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 from pathlib import Path
 from unittest import mock
@@ -168,13 +168,13 @@ class _Pipe(io.TextIOWrapper):
     """A standard stream as a subprocess's is when captured: UTF-8 over bytes, not a terminal."""
 
     def __init__(self, data: bytes = b"") -> None:
-        super().__init__(io.BytesIO(data), encoding="utf-8", write_through=True)
+        self.data = io.BytesIO(data)
+        super().__init__(self.data, encoding="utf-8", write_through=True)
 
     def captured(self) -> str:
         """What was written, read back as `subprocess.run(text=True)` reads a pipe (universal newlines)."""
         self.flush()
-        data = self.buffer.getvalue()  # type: ignore[attr-defined]
-        return data.decode("utf-8", "replace").replace("\r\n", "\n").replace("\r", "\n")
+        return self.data.getvalue().decode("utf-8", "replace").replace("\r\n", "\n").replace("\r", "\n")
 
 
 @contextlib.contextmanager
@@ -249,12 +249,12 @@ def check_text(folder: Path, text: str, name: str = "d.rdis") -> tuple[Path, sub
 
 
 @pytest.fixture(scope="session")
-def rdisc():
+def rdisc() -> Callable[..., subprocess.CompletedProcess[str]]:
     """Run the rdisc command: `rdisc("check", path)` -> CompletedProcess (in process where it can)."""
     return run_rdisc
 
 
 @pytest.fixture(scope="session")
-def rdisc_process():
+def rdisc_process() -> Callable[..., subprocess.CompletedProcess[str]]:
     """Run the rdisc command as a user does, `python -m rdisc` in a subprocess."""
     return run_rdisc_process
