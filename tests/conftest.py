@@ -21,6 +21,7 @@ import os
 import re
 import subprocess
 import sys
+import threading
 import traceback
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass
@@ -177,6 +178,9 @@ class _Pipe(io.TextIOWrapper):
         return self.data.getvalue().decode("utf-8", "replace").replace("\r\n", "\n").replace("\r", "\n")
 
 
+_ONE_AT_A_TIME = threading.Lock()  # the streams, folder and environment are the process's: one run holds them
+
+
 @contextlib.contextmanager
 def _as_a_subprocess(cwd: Path, env: dict[str, str]) -> Iterator[tuple[_Pipe, _Pipe]]:
     """For one run: the subprocess's environment (rich reads NO_COLOR, TERM and COLUMNS from it when
@@ -199,7 +203,7 @@ def run_rdisc_here(
     from rdisc.cli.main import main
 
     argv = [str(a) for a in args]
-    with _as_a_subprocess(cwd, cli_env(**(env or {}))) as (stdout, stderr):
+    with _ONE_AT_A_TIME, _as_a_subprocess(cwd, cli_env(**(env or {}))) as (stdout, stderr):
         try:
             status = main(argv)
         except SystemExit as exit_:  # argparse's usage errors, --help, --version
