@@ -4,17 +4,29 @@ Goldens are files under tests/golden/ holding an exact expected output. A test
 compares what it produced with its golden; `pytest --update-goldens` rewrites
 the goldens instead (and still fails nothing), so a changed rendering is
 reviewed in the diff rather than accepted silently. Nothing else writes them.
+
+`run_rdisc` runs a verb that only reads and writes files (check, build, dump, ...) in this
+process, through the command's entry function, as a subprocess would see it (a pipe, no
+colour, 200 columns): about 5 ms where starting Python costs a second. Verbs that open
+devices, handle signals or serve (run, replay, sim, console) and runs that set interpreter
+variables (PYTHONHASHSEED) start a real process; `run_rdisc_process` always does.
 """
 
 from __future__ import annotations
 
+import contextlib
 import difflib
+import io
 import os
 import re
 import subprocess
 import sys
+import threading
+import traceback
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 from pathlib import Path
+from unittest import mock
 
 import pytest
 
@@ -110,7 +122,30 @@ def untimed(stderr: str) -> list[str]:
     return lines
 
 
+#: verbs that only read and write files: run in this process by `run_rdisc`
+IN_PROCESS_VERBS = frozenset({"check", "build", "import", "explain", "dump", "graph",
+                              "emit-python", "emit-ros", "emit-urdf", "emit-sdf", "emit-mjcf"})
+
+
 def run_rdisc(
+    *args: str | os.PathLike[str],
+    cwd: Path = REPO,
+    env: dict[str, str] | None = None,
+    timeout: float = 60,
+) -> subprocess.CompletedProcess[str]:
+    """`rdisc ARGS...`, text captured; `env` adds variables. In this process when the verb only
+    reads and writes files (or is no verb: a usage error), else `python -m rdisc` in a subprocess."""
+    argv = [str(a) for a in args]
+    verb = next((a for a in argv if not a.startswith("-")), None)
+    from rdisc.cli.main import VERBS
+
+    at_start = any(name.startswith("PYTHON") for name in env or {})  # read only when Python starts
+    if (verb in IN_PROCESS_VERBS or verb not in VERBS) and not at_start:
+        return run_rdisc_here(*argv, cwd=cwd, env=env)
+    return run_rdisc_process(*argv, cwd=cwd, env=env, timeout=timeout)
+
+
+def run_rdisc_process(
     *args: str | os.PathLike[str],
     cwd: Path = REPO,
     env: dict[str, str] | None = None,
@@ -128,6 +163,60 @@ def run_rdisc(
         errors="replace",
         timeout=timeout,
     )
+
+
+class _Pipe(io.TextIOWrapper):
+    """A standard stream as a subprocess's is when captured: UTF-8 over bytes, not a terminal."""
+
+    def __init__(self, data: bytes = b"") -> None:
+        self.data = io.BytesIO(data)
+        super().__init__(self.data, encoding="utf-8", write_through=True)
+
+    def captured(self) -> str:
+        """What was written, read back as `subprocess.run(text=True)` reads a pipe (universal newlines)."""
+        self.flush()
+        return self.data.getvalue().decode("utf-8", "replace").replace("\r\n", "\n").replace("\r", "\n")
+
+
+_ONE_AT_A_TIME = threading.Lock()  # the streams, folder and environment are the process's: one run holds them
+
+
+@contextlib.contextmanager
+def _as_a_subprocess(cwd: Path, env: dict[str, str]) -> Iterator[tuple[_Pipe, _Pipe]]:
+    """For one run: the subprocess's environment (rich reads NO_COLOR, TERM and COLUMNS from it when
+    it makes a console), working folder and standard streams; all restored after."""
+    stdout, stderr = _Pipe(), _Pipe()
+    with mock.patch.dict(os.environ, env, clear=True), contextlib.chdir(cwd), \
+            mock.patch.object(sys, "stdin", _Pipe()), \
+            contextlib.redirect_stdout(stdout), contextlib.redirect_stderr(stderr):
+        yield stdout, stderr
+
+
+def run_rdisc_here(
+    *args: str | os.PathLike[str],
+    cwd: Path = REPO,
+    env: dict[str, str] | None = None,
+) -> subprocess.CompletedProcess[str]:
+    """`rdisc ARGS...` through the command's entry function, in this process: the exit status,
+    stdout and stderr that `python -m rdisc` would give (what escapes `main` is a traceback and
+    status 1, as the interpreter makes it)."""
+    from rdisc.cli.main import main
+
+    argv = [str(a) for a in args]
+    with _ONE_AT_A_TIME, _as_a_subprocess(cwd, cli_env(**(env or {}))) as (stdout, stderr):
+        try:
+            status = main(argv)
+        except SystemExit as exit_:  # argparse's usage errors, --help, --version
+            if exit_.code is None or isinstance(exit_.code, int):
+                status = exit_.code or 0
+            else:
+                print(exit_.code, file=sys.stderr)
+                status = 1
+        except Exception:  # noqa: BLE001 - the interpreter would print it and exit 1
+            traceback.print_exc(file=sys.stderr)
+            status = 1
+    return subprocess.CompletedProcess([sys.executable, "-m", "rdisc", *argv], status,
+                                       stdout.captured(), stderr.captured())
 
 
 def start_console(*args: str | os.PathLike[str]) -> tuple[subprocess.Popen[str], str, str]:
@@ -164,6 +253,12 @@ def check_text(folder: Path, text: str, name: str = "d.rdis") -> tuple[Path, sub
 
 
 @pytest.fixture(scope="session")
-def rdisc():
-    """Run the rdisc command: `rdisc("check", path)` -> CompletedProcess."""
+def rdisc() -> Callable[..., subprocess.CompletedProcess[str]]:
+    """Run the rdisc command: `rdisc("check", path)` -> CompletedProcess (in process where it can)."""
     return run_rdisc
+
+
+@pytest.fixture(scope="session")
+def rdisc_process() -> Callable[..., subprocess.CompletedProcess[str]]:
+    """Run the rdisc command as a user does, `python -m rdisc` in a subprocess."""
+    return run_rdisc_process

@@ -23,6 +23,7 @@ from hypothesis import strategies as st
 from rdisc.compile import compile_path
 from rdisc.emit.python import import_driver
 from rdisc.runtime import load
+from tests.support.ports import ScriptedPort
 
 ROOT = Path(__file__).resolve().parents[1]
 EXAMPLES = [
@@ -32,39 +33,6 @@ EXAMPLES = [
     "tests/runtime/data/cr_device.rdis",  # reply lines end in "\r"
     "tests/runtime/data/framed_servo.rdis",  # frames: length, sums, CRCs, acknowledgements, resync
 ]
-
-
-class ScriptedPort:
-    """Records writes; answers reads from one script of reply bytes, in order."""
-
-    def __init__(self, script: bytes) -> None:
-        self.script = script
-        self.written = bytearray()
-
-    def write(self, data: bytes, /) -> int:
-        self.written += data
-        return len(data)
-
-    def flush(self) -> None:
-        pass
-
-    def read(self, size: int = 1, /) -> bytes:
-        taken, self.script = self.script[:size], self.script[size:]
-        return taken
-
-    def read_until(self, expected: bytes = b"\n", size: int | None = None, /) -> bytes:
-        end = self.script.find(expected)
-        stop = len(self.script) if end == -1 else end + len(expected)
-        if size is not None:
-            stop = min(stop, size)
-        taken, self.script = self.script[:stop], self.script[stop:]
-        return taken
-
-    def reset_input_buffer(self) -> None:
-        pass  # the script is what the device says next, not stale input
-
-    def close(self) -> None:
-        pass
 
 
 def _without_delays(example: str, folder: Path) -> Path:

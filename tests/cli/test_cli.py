@@ -1,4 +1,6 @@
-"""The `rdisc` command as a user meets it: real subprocesses, real files, exit codes.
+"""The `rdisc` command as a user meets it: real files, exit codes. The tests that take
+`rdisc_process` run `python -m rdisc` in a subprocess (the entry point, its exit status, no
+traceback); the others call the same entry function in this process (tests/conftest.py).
 
 Exit codes: 0 clean (warnings allowed), 1 errors in a description, 2 a usage
 problem (unknown verb or option, a file that cannot be read, an unknown code),
@@ -47,8 +49,8 @@ input start: Contact -> go()
 
 
 @pytest.mark.parametrize("example", [CREATE, KOALA])
-def test_clean_description_exits_0_silently(rdisc, example: str) -> None:
-    result = rdisc("check", example)
+def test_clean_description_exits_0_silently(rdisc_process, example: str) -> None:
+    result = rdisc_process("check", example)
     assert (result.returncode, result.stdout, result.stderr) == (0, "", "")
 
 
@@ -60,16 +62,16 @@ def test_only_warnings_exit_0(rdisc, tmp_path: Path) -> None:
     assert result.stderr.rstrip().endswith("1 warning emitted")
 
 
-def test_errors_exit_1(rdisc, tmp_path: Path) -> None:
+def test_errors_exit_1(rdisc_process, tmp_path: Path) -> None:
     path = write(tmp_path, "bad.rdis", CLEAN.replace("baud 9600", "baud 0"))
-    result = rdisc("check", path)
+    result = rdisc_process("check", path)
     assert result.returncode == 1
     assert "error[E204]: the baud rate must be a positive integer, not 0" in result.stderr
     assert result.stderr.rstrip().endswith("1 error emitted")
 
 
-def test_missing_file_exits_2(rdisc, tmp_path: Path) -> None:
-    result = rdisc("check", tmp_path / "nowhere.rdis")
+def test_missing_file_exits_2(rdisc_process, tmp_path: Path) -> None:
+    result = rdisc_process("check", tmp_path / "nowhere.rdis")
     assert result.returncode == 2
     assert "error[E006]: cannot read" in result.stderr
     assert "nowhere.rdis" in result.stderr
@@ -111,8 +113,8 @@ def test_usage_errors_exit_2(rdisc, argv: list[str], words: str) -> None:
     assert result.stdout == ""
 
 
-def test_version(rdisc) -> None:
-    result = rdisc("--version")
+def test_version(rdisc_process) -> None:
+    result = rdisc_process("--version")
     assert (result.returncode, result.stdout, result.stderr) == (0, f"rdisc {__version__}\n", "")
 
 
@@ -301,10 +303,10 @@ def test_import_of_broken_json_syntax_writes_nothing(rdisc, tmp_path: Path) -> N
 # -- junk input --------------------------------------------------------------------
 
 
-def test_binary_junk_is_a_diagnostic(rdisc, tmp_path: Path) -> None:
+def test_binary_junk_is_a_diagnostic(rdisc_process, tmp_path: Path) -> None:
     path = tmp_path / "junk.rdis"
     path.write_bytes(random.Random(7).randbytes(4096))
-    result = rdisc("check", path)
+    result = rdisc_process("check", path)
     no_crash(result)
     assert result.returncode == 2
     assert "error[E006]" in result.stderr and "not UTF-8 text" in result.stderr
@@ -338,3 +340,24 @@ def test_empty_file_says_there_is_no_robot(rdisc, tmp_path: Path) -> None:
     no_crash(result)
     assert result.returncode == 1
     assert "error[E107]" in result.stderr
+
+
+# -- the tests' in-process runs ------------------------------------------------------
+
+
+@pytest.mark.parametrize("argv", [
+    ["check", "tests/golden/diagnostics/E102.rdis"],
+    ["check", "WIDE"],
+    ["check", "--format", "json", "tests/golden/diagnostics/E101.rdis", "tests/golden/diagnostics/W103.rdis"],
+    ["check", "-v", CREATE],
+    ["explain", "E102"],
+    ["check", "--no-such-option", CREATE],
+    ["build", "--help"],
+], ids=["errors", "wide", "json", "verbose", "explain", "usage", "help"])
+def test_a_run_in_process_prints_what_the_command_prints(rdisc, rdisc_process, argv: list[str], tmp_path: Path) -> None:
+    """The other tests run these verbs in this process: they must see the command's own exit
+    status and bytes, rich's rendering (an emoji, a line past 80 columns) and argparse's wrapping."""
+    wide = write(tmp_path, "wide.rdis", CLEAN + 'state s: string = "\U0001F916" $  # ' + "x" * 150 + "\n")
+    args = [str(wide) if arg == "WIDE" else arg for arg in argv]
+    here, there = rdisc(*args), rdisc_process(*args)
+    assert (here.returncode, here.stdout, here.stderr) == (there.returncode, there.stdout, there.stderr)

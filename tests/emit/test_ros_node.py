@@ -15,6 +15,7 @@ from pathlib import Path
 from types import SimpleNamespace
 
 import pytest
+from conftest import run_rdisc
 
 from rdisc.compile import compile_path, compile_text
 from rdisc.emit.canonical import to_json
@@ -193,8 +194,7 @@ def _emitted_node(tmp_path: Path, text: str = MIXED, name: str = "mixer") -> Pat
     source = tmp_path / f"{name}.rdis"
     source.write_text(text, encoding="utf-8")
     node = tmp_path / f"{name}_node.py"
-    done = subprocess.run([sys.executable, "-m", "rdisc", "emit-ros", str(source), "-o", str(node)],
-                          capture_output=True, text=True, check=False)
+    done = run_rdisc("emit-ros", source, "-o", node)
     assert done.returncode == 0, done.stderr
     return node
 

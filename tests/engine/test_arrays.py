@@ -11,7 +11,6 @@ from pathlib import Path
 from typing import Any
 
 import pytest
-from conftest import check_text
 
 from rdisc.diagnostics import Diagnostics
 from rdisc.syntax.parse import parse
@@ -105,38 +104,7 @@ def test_arrays_go_through_json_the_printer_and_dump(tmp_path: Path, rdisc) -> N
     assert "       5     1  u8                    01 (1)\n       6     2  u16 LE                goal[0]\n" in dump
 
 
-HEAD = 'robot a { author "tests" }\nconnection link: serial { baud 9600 }\n'
-REFUSED = {
-    "an open size": ("setting p: int[] = [1]", "error[E105]: an array's size is given: `int[6]`"),
-    "a size of 0": ("state p: int[0]", "error[E204]: an array's size is a whole number, 1 or more, not 0"),
-    "bytes": ("state p: bytes[2]", "error[E105]: an array holds ints, floats, bools or strings, not `bytes`"),
-    "a constant index outside": ('state p: int[3]\nprimitive r() on link pack "B" (p[3])',
-                                 "error[E403]: index 3 is outside `p`, which has 3 values"),
-    "a float index of a constant": ('const IDS = [1, 2]\nprimitive r() on link pack "B" (IDS[1.0])',
-                                    "error[E404]: an index is an int, not a float"),  # fuzzer, seed 43: a crash
-    "too many values for the format": ('state p: int[3]\nprimitive w() on link pack "BB" (1, p)',
-                                       '''error[E302]: `pack "BB"` takes 2 values, but 2 arguments giving 4 values'''),
-    "floats into ints": ("state p: int[3] = [1.5, 2, 3]",
-                         "error[E401]: state variable `p` takes an array int[3], but this is an array float[3]"),
-    "an element of a scalar": ('state p: int\nprimitive r() on link pack "B" (1) unpack "B" { p[0] = out[0] }',
-                               "error[E404]: `p` is not an array: it is an int"),
-    "an empty literal": ("state p: int[2] = []", "error[E404]: an array has one value or more"),
-    "a formatted array": ('state p: int[2]\nprimitive w() on link format "{}" (p)',
-                          "error[E401]: a format field cannot format an array int[2]"),
-    "mixed values": ("state p: int[2] = [True, 1]",
-                     "error[E401]: the values of an array have one type: this is an int, after a bool"),
-    "the whole and an element": (
-        'state p: int[2]\nprimitive r() on link pack "B" (1) unpack "B" { p[0] = out[0]  p = [1, 2] }',
-        "error[E203]: state variable `p` is assigned twice"),
-}
-
-
-@pytest.mark.parametrize(("body", "first_line"), REFUSED.values(), ids=REFUSED.keys())
-def test_what_the_checker_refuses(tmp_path: Path, body: str, first_line: str) -> None:
-    _, result = check_text(tmp_path, HEAD + body + "\n")
-    assert result.returncode == 1
-    errors = [line for line in result.stderr.splitlines() if line.startswith("error[")]
-    assert errors == [first_line], result.stderr
+# What the checker refuses in arrays: tests/semantics/cases/arrays.rdis.
 
 
 JOINTS = """\
@@ -191,18 +159,11 @@ def test_a_repeated_group_interleaves_its_arrays(tmp_path: Path, kind: str) -> N
         assert (robot.state.position, robot.state.load) == ((1, 2, 3), (-1, -2, 0))
 
 
-def test_a_repeated_group_in_dump_json_and_the_checker(tmp_path: Path, rdisc) -> None:
+def test_a_repeated_group_in_dump_and_json(tmp_path: Path, rdisc) -> None:
+    """What the checker refuses of a group is in tests/semantics/cases/arrays.rdis."""
     _, built = through_json(GROUPS, tmp_path, "servos")
     assert '"pack": "<BHH3(BI)"' in built
     dump = rdisc("dump", tmp_path / "servos.rdis").stdout
     assert ("       5     1  u8                    01 (1)\n       6     4  u32 LE                goal[0]\n"
             "      10     1  u8                    02 (2)\n") in dump
     assert "       3     1  s8                    out[2][0]\n       4     2  u16 LE                out[1][1]\n" in dump
-    _, result = check_text(tmp_path, HEAD + 'primitive w(n: int) on link pack "<3(B)" ([1, 2, 300])\n'
-                           'primitive v(g: int[2]) on link pack "<3(B)" (g)\n'
-                           'primitive u() on link pack "<3(s)" ("a")\n')
-    assert [line for line in result.stderr.splitlines() if line.startswith("error[")] == [
-        "error[E403]: 300 does not fit pack code `B`",
-        "error[E401]: pack code `B` of a group of 3 takes an array int[3], but this is an array int[2]",
-        "error[E301]: `s` cannot be repeated in a group: a group holds int, float and bool codes, without counts",
-    ]

@@ -129,43 +129,7 @@ def test_a_reply_checks_each_bit_field_against_its_request(kind: str, tmp_path: 
             robot.call_primitive("get", 3)
 
 
-CASES = [
-    ('frame f { header "\\xA5" bits "<I" { length: 30 = payload } payload }',
-     'error[E508]: the fields of `bits "<I"` take 30 of its 32 bits',
-     "help: say the other 2 bits: `field reserved: 2 = 0`"),
-    ('frame f { header "\\xA5" bits "B" { length: 6 = payload  field a: 4 = 0 } payload }',
-     'error[E508]: the fields of `bits "B"` take 10 of its 8 bits',
-     "help: narrow the fields, or take a wider integer"),
-    ('frame f { header "\\xA5" bits "<i" { length: 30 = payload  field m: 2 = 1 } payload }',
-     'error[E508]: a `bits` integer is unsigned: "<i" is signed', 'help: use "<I"'),
-    ('frame f { header "\\xA5" bits "<HH" { length: 30 = payload  field m: 2 = 1 } payload }',
-     'error[E508]: a `bits` integer is one integer: a struct format such as "B", ">H" or "<I", not "<HH"', None),
-    ('frame f { header "\\xA5" bits "<I" { length: 0 = payload  field m: 32 = 5 } payload }',
-     "error[E508]: bit field `length` is 1 to 64 bits wide, not 0", None),
-    ('frame f { header "\\xA5" bits "<I" { length: 30 = payload  field m: 2 = 5 } payload }',
-     "error[E403]: 5 does not fit the 2 bits of field `m` (0 to 3)", None),
-    ('frame f { header "\\xA5" bits "<I" { length: 30 = payload  field m: 2 = 1.5 } payload }',
-     "error[E401]: field `m` takes an int", None),
-    ('frame f { header "\\xA5" bits "B" { length: 4 = payload  field payload: 4 = 1 } payload }',
-     "error[E104]: `payload` names a part of every frame and cannot name a field", None),
-    ('frame f { header "\\xA5" bits "<I" { length: 30 = payload  field m: 2 = 1 } length "B" = payload payload }',
-     "error[E501]: frame `f` has two length fields", None),
-    ('frame f { header "$" payload optional { literal "*" bits "B" { length: 8 = payload } } terminator "\\n" }',
-     "error[E506]: an `optional` holds constant bytes, fields and checksums, not a `length`", None),
-    (('frame f { either { header "\\x01" bits "B" { field a: 8 = 1 } } or { header "\\x02" length "B" = payload } '
-      "payload }"), ("error[E507]: alternative 2 of frame `f` is never written: alternative 1 has no length field, so "
-                   "it carries every payload"), None),
-]
-
-
-@pytest.mark.parametrize(("frame", "first_line", "help_line"), CASES)
-def test_the_checker_says_what_is_wrong(tmp_path: Path, frame: str, first_line: str, help_line: str | None) -> None:
-    _, result = check_text(tmp_path, 'robot r { author "t" }\n' + frame + "\n")
-    assert result.returncode == 1
-    errors_ = [line for line in result.stderr.splitlines() if line.startswith("error[")]
-    assert errors_ == [first_line], result.stderr
-    if help_line is not None:
-        assert f"  = {help_line}" in result.stderr.splitlines()
+# What the checker refuses in bit fields: tests/semantics/cases/bit_fields.rdis.
 
 
 def test_a_length_bit_field_must_state_every_payload(tmp_path: Path) -> None:

@@ -9,7 +9,6 @@ from pathlib import Path
 from typing import Any
 
 import pytest
-from conftest import check_text
 
 from rdisc.diagnostics import Diagnostics
 from rdisc.emit.dump import dump
@@ -177,57 +176,7 @@ def test_a_request_is_escaped_after_its_size_is_checked(kind: str, tmp_path: Pat
     assert len(port.written) == 2 + 1 + 255 * 2 + 2
 
 
-ESCAPE = 'escape "\\x7D" xor 0x20 for "\\x7E\\x7D"'
-CASES = [
-    ('frame f { payload terminator "\\xC0"  escape "\\xDB" { "\\xC0": "\\xDC" } }',
-     ('error[E510]: the escape "\\xdb" is not itself escaped, so a reader takes the same byte in the data for an '
-     "escape")),
-    ('frame f { payload terminator "\\xC0"  escape "\\xDB" { "\\xC0": "\\xDC", "\\xDB": "\\xC0" } }',
-     'error[E510]: "\\xdb" is escaped as "\\xdb\\xc0", whose code "\\xc0" is an escaped byte itself'),
-    ('frame f { payload terminator "\\xC0"  escape "\\xDB" { "\\xC0": "\\xDC", "\\xDB": "\\xDC" } }',
-     'error[E510]: "\\xc0" and "\\xdb" are both escaped as "\\xdb\\xdc", so a reader cannot tell them apart'),
-    ('frame f { payload terminator "\\xC0"  escape "\\xDB" { "\\xC0": "\\xDC", "\\xC0": "\\xDD" } }',
-     'error[E510]: "\\xc0" is escaped twice'),
-    ('frame f { payload terminator "\\xC0"  escape "\\xDB\\xDB" { "\\xC0": "\\xDC", "\\xDB": "\\xDD" } }',
-     'error[E510]: an escape, an escaped byte and a code are one byte each, not "\\xdb\\xdb"'),
-    ('frame f { payload terminator "\\xC0"  escape "\\xDB" { } }',
-     "error[E510]: an `escape` table lists each byte it escapes and its code"),
-    ('frame f { payload terminator "\\x7E"  escape "\\x7D" xor 0 for "\\x7E\\x7D" }',
-     "error[E510]: an `escape`'s mask is 1 to 255 (0x01 to 0xFF), not 0"),
-    ('frame f { payload terminator "\\x7E"  escape "\\x7D" xor 99999999999999999999 for "\\x7E\\x7D" }',
-     "error[E510]: an `escape`'s mask is 1 to 255 (0x01 to 0xFF), not 99999999999999999999"),  # fuzzer, seed 59
-    ('frame f { payload terminator "\\x7E"  escape "\\x7D" xor 0x20 for "\\x7E\\x7D\\x5E" }',
-     'error[E510]: "~" is escaped as "}^", whose code "^" is an escaped byte itself'),
-    (f'frame f {{ payload terminator "\\x0D"  {ESCAPE} }}',
-     ('error[E510]: the terminator "\\r" of frame `f` starts with a byte that is not escaped, so it may come before '
-     "the packet ends")),
-    (f'frame f {{ payload terminator "\\x7D"  {ESCAPE} }}',
-     'error[E510]: the terminator "}" of frame `f` starts with the escape, which comes before every code'),
-    (f"frame f {{ payload  {ESCAPE} }}", "error[E510]: frame `f` escapes but ends with no `terminator`"),
-    (f'frame f {{ request {{ payload terminator "\\x7E" }} reply {{ payload }}  {ESCAPE} }}',
-     "error[E510]: the reply of frame `f` escapes but ends with no `terminator`"),
-    (f'frame f {{ header "$" payload optional {{ literal "*" checksum "xor" hex }} terminator "\\x7E"  {ESCAPE} }}',
-     ("error[E510]: a frame that escapes has no `optional`: its reply is found between its flags and taken apart by "
-     "the sizes of its parts")),
-    (f'frame f {{ payload terminator "\\x7E"  {ESCAPE}  stuff "\\xFD" after "\\xFF\\xFF" }}',
-     "error[E510]: frame `f` both stuffs and escapes"),
-    (f'frame f {{ payload terminator "\\x7E"  {ESCAPE}  {ESCAPE} }}', "error[E510]: frame `f` has two `escape` rules"),
-]
-
-
-@pytest.mark.parametrize(("frame", "first_line"), CASES)
-def test_the_checker_says_what_is_wrong(tmp_path: Path, frame: str, first_line: str) -> None:
-    _, result = check_text(tmp_path, 'robot r { author "t" }\n' + frame + "\n")
-    assert result.returncode == 1
-    errors_ = [line for line in result.stderr.splitlines() if line.startswith("error[")]
-    assert errors_ == [first_line], result.stderr
-
-
-def test_a_reply_read_to_its_end_is_no_e503(tmp_path: Path) -> None:
-    """A reply through a frame that escapes ends at its terminator: a `*` rest needs no length field."""
-    text = SLIP + 'primitive dump_all() on link frame slip pack "B" (1) unpack "B*" { a = out[0] }\n'
-    _, result = check_text(tmp_path, text)
-    assert result.returncode == 0, result.stderr
+# What the checker refuses in an escaping frame: tests/semantics/cases/escape.rdis.
 
 
 def test_json_printer_dump_and_budget(tmp_path: Path) -> None:

@@ -10,7 +10,6 @@ from pathlib import Path
 from typing import Any
 
 import pytest
-from conftest import check_text
 
 from rdisc.diagnostics import Diagnostics
 from rdisc.emit.dump import dump
@@ -163,50 +162,7 @@ def test_after_a_sized_payload_one_byte_tells_whether_they_came(kind: str, tmp_p
     assert bytes(port.written) == bytes.fromhex("aa 01 07 55 07 0d") * 3
 
 
-CASES = [
-    ('frame f { header "$" payload optional { checksum "xor" hex } terminator "\\r\\n" }',
-     'error[E506]: an `optional` starts with constant bytes: `optional { literal "*" ... }`'),
-    ('frame f { header "$" optional { literal "*" } payload terminator "\\r\\n" }',
-     "error[E506]: an `optional` comes right after the `payload`"),
-    ('frame f { header "$" payload optional { literal "*" checksum "xor" hex } }',
-     "error[E506]: an `optional` is followed by constant bytes (a `literal` or the `terminator`)"),
-    ('frame f { header "$" payload optional { literal "*" checksum "xor" hex } terminator "*" }',
-     'error[E506]: the bytes after an `optional` start as it does ("*"), so a reader cannot tell whether it came'),
-    ('frame f { request { payload optional { literal "*" } terminator "\\n" } reply { payload terminator "\\n" } }',
-     "error[E506]: a request writes every part: `optional` belongs to a reply"),
-    ('frame f { header "$" payload optional { literal "*" length "B" = payload } terminator "\\n" }',
-     "error[E506]: an `optional` holds constant bytes, fields and checksums, not a `length`"),
-    ('frame f { either { header "\\x02" } or { header "\\x02\\x02" length "B" = payload } payload }',
-     ("error[E507]: alternative 2 of frame `f` is never written: alternative 1 has no length field, so it carries "
-     "every payload")),
-    (('frame f { either { header "\\x02" length "B" = payload } or { header "\\x01\\x02" length ">H" = payload } '
-     'payload }'), ("error[E507]: alternatives 1 and 2 of frame `f` start with headers a reader cannot tell apart: "
-     "b'\\x02' and b'\\x01\\x02'")),
-    ('frame f { either { length "B" = payload } or { header "\\x03" length ">H" = payload } payload }',
-     "error[E507]: alternative 1 of frame `f` starts with no `header`"),
-    ('frame f { either { header "\\x02" length "B" = payload payload } or { header "\\x03" } }',
-     "error[E501]: the request of frame `f` needs exactly one `payload`"),
-    (('frame f { request { payload } reply { either { header "\\x02" payload terminator "\\n" } or '
-     '{ header "\\x03" } } }'), "error[E507]: some alternatives of frame `f` have a `payload` and some not"),
-    (('frame f { either { header "\\x02" length "B" = payload } or { header "\\x03" length ">H" = payload } '
-     'payload either { literal "a" } or { literal "b" } }'), "error[E507]: frame `f` has two `either`s"),
-]
-
-
-@pytest.mark.parametrize(("frame", "first_line"), CASES)
-def test_the_checker_says_what_is_wrong(tmp_path: Path, frame: str, first_line: str) -> None:
-    _, result = check_text(tmp_path, 'robot r { author "t" }\n' + frame + "\n")
-    assert result.returncode == 1
-    errors_ = [line for line in result.stderr.splitlines() if line.startswith("error[")]
-    assert errors_[0] == first_line, result.stderr
-
-
-def test_a_payload_no_layout_states_is_e503(tmp_path: Path) -> None:
-    text = VESC.replace("bytes in 0..400", "bytes in 0..70000")
-    _, result = check_text(tmp_path, text)
-    assert ('error[E503]: the length fields "B", ">H" of frame `vesc` cannot state every payload of `write`: '
-            "1 to 70001 bytes, as parameter `data` allows") in result.stderr
-    assert "help: they state payloads of 0 to 65535 bytes; narrow the range of parameter `data`" in result.stderr
+# What the checker refuses in optional parts and alternatives: tests/semantics/cases/frame_alternatives.rdis.
 
 
 def test_json_printer_dump_and_budget(tmp_path: Path) -> None:

@@ -139,53 +139,7 @@ connection link: serial { baud 9600 }
 primitive torque(id: int, on: bool) on link pack "<BB?" (0x18, id, on)
 primitive read(id: int) on link pack "B" (id) unpack "<H" { position[id] = out[0] }
 """
-REFUSED = {
-    "bounds known when it runs": ("interface a(n: int) { for i in 0..n { torque(i, True) } }",
-                                  "error[E212]: a loop's bounds are constant ints, not an int known only when it runs"),
-    "a float bound": ("interface a() { for i in 0.5..3 { torque(i, True) } }",
-                      "error[E212]: a loop's bounds are constant ints, not a float"),
-    "a parameter array": (
-        "interface a(p: int[3]) { for x in p { torque(x, True) } }",
-        "error[E212]: a loop goes over a constant array or a range, not an array known only when it runs"),
-    "a state array": (
-        "interface a() { for x in position { torque(x, True) } }",
-        "error[E212]: a loop goes over a constant array or a range, not an array known only when it runs"),
-    "an int": ("interface a() { for x in 5 { torque(x, True) } }",
-               "error[E212]: a loop goes over a constant array or a range, not an int"),
-    "an empty range": ("interface a() { for i in 3..0 { torque(i, True) } }", "error[E204]: the range 3..0 is empty"),
-    "no calls": ("interface a() { for i in IDS { } }", "error[E212]: a loop without calls"),
-    "too many rounds": ("interface a() { for i in 0..4096 { torque(i % 256, True) } }",
-                        "error[E212]: interface `a` unrolls into more than 4096 calls"),
-    "too many in nested loops": (
-        "interface a() { for i in 0..63 { for j in 0..64 { torque(j, True) } } }",
-        "error[E212]: interface `a` unrolls into more than 4096 calls"),
-    "a parameter's name": ("interface a(n: int) { for n in 0..1 { torque(n, True) } }",
-                           "error[E101]: loop variable `n` has the name of a parameter"),
-    "a state variable's name": ("interface a() { for position in IDS { torque(position, True) } }",
-                                "error[E101]: loop variable `position` has the name of a state variable"),
-    "a constant's name": ("interface a() { for IDS in 0..1 { torque(1, True) } }",
-                          "error[E101]: loop variable `IDS` has the name of a constant"),
-    "an outer loop's name": ("interface a() { for i in 0..1 { for i in 0..1 { torque(i, True) } } }",
-                             "error[E101]: loop variable `i` has the name of an outer loop's variable"),
-    "a function's name": ("interface a() { for len in IDS { torque(len, True) } }",
-                          "error[E104]: `len` is a built-in function and cannot name a loop variable"),
-    "an index outside in one round": ("interface a() { for i in 0..3 { torque(IDS[i], True) } }",
-                                      "error[E403]: index 3 is outside `IDS`, which has 3 values"),
-    "a value outside its pack code in one round": (
-        "interface a() { for i in 1..3 { torque(i * 100, True) } }",
-        "error[E403]: 300 does not fit pack code `B` of primitive `torque`"),
-    "a value of the wrong type": ("interface a() { for i in 0..3 { torque(1, i) } }",
-                                  "error[E401]: parameter `on` of primitive `torque` takes a bool, but this is an int"),
-}
-
-
-@pytest.mark.parametrize(("body", "first_line"), REFUSED.values(), ids=REFUSED.keys())
-def test_what_the_checker_refuses(tmp_path: Path, body: str, first_line: str) -> None:
-    """One fault, one error: a round that fails ends its loop, so the others do not repeat it."""
-    _, result = check_text(tmp_path, HEAD + body + "\n")
-    assert result.returncode == 1
-    errors = [line for line in result.stderr.splitlines() if line.startswith("error[")]
-    assert errors == [first_line], result.stderr
+# What the checker refuses in loops, one error each: tests/semantics/cases/loops.rdis.
 
 
 def test_a_refused_loop_says_what_to_write_instead(tmp_path: Path) -> None:

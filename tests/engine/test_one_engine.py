@@ -17,6 +17,7 @@ from rdisc.emit.canonical import to_json
 from rdisc.emit.python import import_driver
 from rdisc.engine import carry
 from rdisc.runtime import load
+from tests.support.ports import ScriptedPort
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -45,57 +46,6 @@ primitive tagged() on link frame ended pack "B" (2) reply tag "B" {
 primitive skipping() on link frame summed(1) pack "B" (3) skip unmatched timeout 50 ms unpack "B" { v = out[0] }
 primitive strict() on link frame summed(1) pack "B" (4) unpack "B" { v = out[0] }
 """
-
-
-def _recorded_line(name: str) -> property:
-    """A modem line of a ScriptedPort: each level set is recorded among its events."""
-
-    def level(port: ScriptedPort) -> bool:
-        return port.levels[name]
-
-    def set_level(port: ScriptedPort, value: bool) -> None:
-        port.levels[name] = value
-        port.events.append((name, value))
-
-    return property(level, set_level)
-
-
-class ScriptedPort:
-    """Records writes, and modem line changes in order with them (`events`: ("write", data),
-    ("dtr", level), ("rts", level)); answers reads from a script of reply bytes, in order."""
-
-    dtr = _recorded_line("dtr")
-    rts = _recorded_line("rts")
-
-    def __init__(self, script: bytes = b"") -> None:
-        self.script = script
-        self.written = bytearray()
-        self.timeout: float | None = 0.05
-        self.levels = {"dtr": True, "rts": True}  # as pyserial opens a port
-        self.events: list[tuple[str, bytes | bool]] = []
-
-    def write(self, data: bytes, /) -> int:
-        self.written += data
-        self.events.append(("write", bytes(data)))
-        return len(data)
-
-    def read(self, size: int = 1, /) -> bytes:
-        taken, self.script = self.script[:size], self.script[size:]
-        return taken
-
-    def read_until(self, expected: bytes = b"\n", size: int | None = None, /) -> bytes:
-        end = self.script.find(expected)
-        stop = len(self.script) if end == -1 else end + len(expected)
-        if size is not None:
-            stop = min(stop, size)
-        taken, self.script = self.script[:stop], self.script[stop:]
-        return taken
-
-    def reset_input_buffer(self) -> None:
-        pass
-
-    def close(self) -> None:
-        pass
 
 
 def implementation_of(kind: str, text: str, folder: Path, name: str) -> Any:

@@ -20,7 +20,6 @@ from rdisc.runtime import load
 from rdisc.semantics.budget import message_bytes
 from rdisc.syntax.parse import parse
 from rdisc.syntax.printer import print_module
-from tests.conftest import check_text
 from tests.engine.test_one_engine import ScriptedPort, implementation_of, through_json
 
 FIRMATA = (Path(__file__).parents[2] / "examples" / "firmata.rdis").read_text(encoding="utf-8")
@@ -149,32 +148,4 @@ def test_the_printer_dump_and_the_budget(tmp_path: Path) -> None:
     assert message_bytes(model.primitives["capabilities"], model.frames) == 3 + 3 + 2 * 1024 + 1
 
 
-HEAD = '''robot r { author "a" }
-connection link: serial { baud 57600 }
-state modes: int[8]
-frame caps { request { header "\\xF0" payload terminator "\\xF7" } reply { header "\\xF0\\x6C" payload terminator "\\xF7" } }
-'''
-
-
-@pytest.mark.parametrize(("body", "expected"), [
-    ('primitive c() on link pack "B" (0x6B) reply each until "\\x7F" unpack "<*(BB)" { modes[index] = bitset(out[0]) }',
-     "E509: `c` reads its reply as records until its payload ends, so it is read through a frame that says where that is"),
-    ('primitive c() on link frame caps pack "B" (0x6B) reply each until "" unpack "<*(BB)"',
-     "E509: a record's end marker is 1 to 8 bytes (characters up to \\xff)"),
-    ('primitive c() on link frame caps pack "B" (0x6B) reply each until "\\x7F" regex "x"',
-     "E509: `c` reads its reply as records, each decoded by an `unpack`, not a `regex`"),
-    ('primitive c() on link frame caps pack "B" (0x6B) reply each until "\\x7F" replies 2 unpack "BB"',
-     "E509: `c` reads its reply as records, so it reads one reply, not several (`replies`)"),
-    ('primitive c(index: int) on link frame caps pack "B" (0x6B) reply each until "\\x7F" unpack "<*(BB)"',
-     "E104: `index` names the position of a record of the reply of `c` and cannot name a parameter of it"),
-    ('primitive c() on link frame caps pack "B" (0x6B) unpack "B" { modes[0] = bitset([1, 64]) }',
-     "E405: bitset(): element 1 is 64, not a bit from 0 to 63"),
-    ('primitive c() on link frame caps pack "B" (0x6B) unpack "B" { modes[0] = bitset(out[0]) }',
-     "E404: `bitset` needs an int array, not an int"),
-    ('primitive c() on link frame caps pack "B" (0x6B) unpack "B" { modes[0] = index }',
-     "E103: "),
-])
-def test_what_the_checker_refuses(body: str, expected: str, tmp_path: Path) -> None:
-    _, result = check_text(tmp_path, HEAD + body + "\n")
-    code, message = expected.split(": ", 1)
-    assert f"error[{code}]: {message}" in result.stderr, result.stderr
+# What the checker refuses in records: tests/semantics/cases/records.rdis.

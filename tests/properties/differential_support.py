@@ -2,8 +2,8 @@
 
 Both the runtime (`rdisc.runtime.load(...).connect`) and the generated driver
 (`rdisc.emit.python.import_driver(...).connect`) are driven through their public
-API only, with the same `Script` against a `DevicePort`: an in-memory,
-pyserial-like port that answers each exchange when its request is written (a
+API only, with the same `Script` against a `PlannedDevice` behind a `ScriptedPort`
+(tests/support/ports.py): a device that answers each exchange when its request is written (a
 listener's when it reads with nothing pending) with the reply its `ReplyPlan`
 says, computed from the request, the robot's state at that moment and the
 primitive's parameters. Everything observable goes into one ordered log: every
@@ -48,6 +48,7 @@ from descriptions import (
 
 from rdisc.emit.python import import_driver
 from rdisc.runtime import load
+from tests.support.ports import ScriptedPort
 
 Log = list[tuple[Any, ...]]
 
@@ -88,17 +89,12 @@ def wire_time(clock: Clock) -> Iterator[Clock]:
         time.monotonic = real
 
 
-class DevicePort:
-    """An open port, in memory, with a device behind it that answers as planned."""
+class PlannedDevice:
+    """The device behind the port (a `ScriptedPort`): it answers each exchange as planned."""
 
-    def __init__(self, description: Description, log: Log, clock: Clock) -> None:
+    def __init__(self, description: Description) -> None:
         self.description = description
-        self.log = log
-        self.clock = clock
-        self.timeout: float | None = 1.0
-        self.buffer = bytearray()
         self.queue: deque[Exchange] = deque()
-        self.given = bytearray()  # every byte a read returned
         self.answers: list[bool] = []  # per exchange answered: whether its reply was valid
         self.failures = 0  # times the port raised
         self.state: Callable[[], dict[str, Any]] = lambda: {n: v for n, _, v in description.states}
@@ -107,61 +103,29 @@ class DevicePort:
         """The exchanges of the next operation, in the order they are expected."""
         self.queue = deque(exchanges)
 
-    def _answer(self, request: bytes, listening: bool = False) -> None:
+    def answer(self, request: bytes, listening: bool = False) -> bytes:
         """The next exchange's reply, made now; a listener's is not checked for validity, since bytes
         the robot put back after an earlier reply come before it."""
-        if self.queue:
-            exchange = self.queue.popleft()
-            if exchange.plan.kind == "broken":
-                self.failures += 1
-                raise OSError(5, "the device is gone")
-            state = self.state()
-            try:
-                values = exchange.values(state)
-            except Unknown:
-                values = dict(state)
-            wire = reply_for(self.description, exchange.primitive, values, request, exchange.plan)
-            self.buffer += wire.data
-            self.answers.append(wire.valid and not listening)
+        if not self.queue:
+            return b""
+        exchange = self.queue.popleft()
+        if exchange.plan.kind == "broken":
+            self.failures += 1
+            raise OSError(5, "the device is gone")
+        state = self.state()
+        try:
+            values = exchange.values(state)
+        except Unknown:
+            values = dict(state)
+        wire = reply_for(self.description, exchange.primitive, values, request, exchange.plan)
+        self.answers.append(wire.valid and not listening)
+        return wire.data
 
-    def write(self, data: bytes, /) -> int:
-        self.log.append(("write", bytes(data)))
-        self._answer(bytes(data))
-        return len(data)
-
-    def flush(self) -> None:
-        pass
-
-    def _listen(self) -> None:
-        if not self.buffer and self.queue and self.queue[0].primitive.listens:
-            self._answer(b"", listening=True)
-
-    def _take(self, count: int, complete: bool) -> bytes:
-        taken = bytes(self.buffer[:count])
-        del self.buffer[:count]
-        self.given += taken
-        if not complete:  # the read waited its whole timeout for more
-            self.clock.now += self.timeout or 0.0
-        return taken
-
-    def read(self, size: int = 1, /) -> bytes:
-        self._listen()
-        return self._take(size, len(self.buffer) >= size)
-
-    def read_until(self, expected: bytes = b"\n", size: int | None = None, /) -> bytes:
-        self._listen()
-        end = self.buffer.find(expected)
-        stop = len(self.buffer) if end < 0 else end + len(expected)
-        if size is not None and size <= stop:
-            return self._take(size, True)
-        return self._take(stop, end >= 0)
-
-    def reset_input_buffer(self) -> None:
-        self.log.append(("reset input", bytes(self.buffer)))
-        self.buffer.clear()
-
-    def close(self) -> None:
-        pass
+    def listen(self) -> bytes:
+        """A listener's reply, when the robot reads with nothing waiting."""
+        if self.queue and self.queue[0].primitive.listens:
+            return self.answer(b"", listening=True)
+        return b""
 
 
 # ---- what each operation is expected to exchange -------------------------------------------------------
@@ -348,7 +312,12 @@ def run(who: str, connect: Connect, description: Description, script: Script) ->
 
 def _run(result: Run, connect: Connect, description: Description, script: Script, clock: Clock) -> Run:
     log = result.log
-    port = DevicePort(description, log, clock)
+    device = PlannedDevice(description)
+
+    def waited(seconds: float) -> None:
+        clock.now += seconds
+
+    port = ScriptedPort(device=device, events=log, record_resets=True, timeout=1.0, on_timeout=waited)
     shown = bytearray()
 
     def on_io(direction: str, connection: str, data: bytes) -> None:
@@ -356,18 +325,18 @@ def _run(result: Run, connect: Connect, description: Description, script: Script
         if direction == "read":
             shown.extend(data)
 
-    port.expect(hook_exchanges(description, "startup", script.startup, port.state()))
+    device.expect(hook_exchanges(description, "startup", script.startup, device.state()))
     try:
         robot = connect(port, threads=False, on_output=lambda o: log.append(("output", normal(o))),
                         on_error=lambda e: result.error(("reported",), e), on_io=on_io)
     except Exception as err:  # noqa: BLE001 - a failing startup is compared too
         result.error(("connect",), err)
     else:
-        port.state = lambda: dict(robot.state)
+        device.state = lambda: dict(robot.state)
         log.append(("connected", snapshot(robot)))
         for op in script.operations:
-            port.expect(exchanges(description, op, dict(robot.state)))
-            answered, failures, start = len(port.answers), port.failures, len(log)
+            device.expect(exchanges(description, op, dict(robot.state)))
+            answered, failures, start = len(device.answers), device.failures, len(log)
             refused = _refusing(description, op)
             try:
                 _perform(robot, op)
@@ -382,12 +351,12 @@ def _run(result: Run, connect: Connect, description: Description, script: Script
                     result.broke(RANGE_RULE, op.label(), f"it raised {type(err).__name__}: {err}")
                 result.error((op.label(),), err, (snapshot(robot),))
                 kind = type(err).__name__  # a driver has error types of its own: compared by name
-                if kind not in CALL_ERRORS + ("RdisConnectionError",) * (port.failures > failures):
+                if kind not in CALL_ERRORS + ("RdisConnectionError",) * (device.failures > failures):
                     result.broke(ERROR_RULE, op.label(), f"it raised {kind}: {err}")
                 if kind in ("RdisProtocolError", "RdisTimeout") and op.kind == "primitive" \
-                        and port.answers[answered:] == [True]:
+                        and device.answers[answered:] == [True]:
                     result.broke(REPLY_RULE, op.label(), f"it raised {kind}: {err}")
-        port.expect(hook_exchanges(description, "terminate", script.terminate, dict(robot.state)))
+        device.expect(hook_exchanges(description, "terminate", script.terminate, dict(robot.state)))
         robot.close()
         log.append(("closed", snapshot(robot)))
         if script.after_close is not None:
@@ -397,7 +366,7 @@ def _run(result: Run, connect: Connect, description: Description, script: Script
             except Exception as err:  # noqa: BLE001 - compared
                 result.error((script.after_close.label(),), err)
     if bytes(shown) != bytes(port.given):
-        failed = " (the port had failed)" if port.failures else ""
+        failed = " (the port had failed)" if device.failures else ""
         result.broke(IO_RULE, "session", f"it showed {bytes(shown)!r} where the port gave {bytes(port.given)!r}{failed}")
     return result
 

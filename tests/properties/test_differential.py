@@ -34,6 +34,7 @@ from hypothesis import strategies as st
 from rdisc.compile import compile_path
 from rdisc.emit.python import import_driver
 from rdisc.runtime import load
+from tests.support.ports import ScriptedPort
 
 SESSIONS = 3  # scripts per description: a driver costs an import, a session microseconds
 
@@ -80,38 +81,6 @@ def test_the_device_model_computes_the_catalogue_check_values(name: str, check: 
 # ---- fixed cases: the four former disagreements, and four faults both shared that this test found --------
 
 
-class Port:
-    """A port that records writes and answers reads from fixed bytes; `fail` makes writes raise."""
-
-    def __init__(self, reply: bytes, fail: bool = False) -> None:
-        self.reply = bytearray(reply)
-        self.fail = fail
-        self.written = bytearray()
-        self.timeout: float | None = 0.05
-
-    def write(self, data: bytes, /) -> int:
-        if self.fail:
-            raise OSError(5, "the device is gone")
-        self.written += data
-        return len(data)
-
-    def read(self, size: int = 1, /) -> bytes:
-        taken = bytes(self.reply[:size])
-        del self.reply[:size]
-        return taken
-
-    def read_until(self, expected: bytes = b"\n", size: int | None = None, /) -> bytes:
-        end = self.reply.find(expected)
-        stop = len(self.reply) if end < 0 else end + len(expected)
-        return self.read(stop if size is None else min(stop, size))
-
-    def reset_input_buffer(self) -> None:
-        pass
-
-    def close(self) -> None:
-        pass
-
-
 HEADER = """robot cases { author "tests" }
 state v: int = 0
 connection link: serial { baud 9600 }
@@ -122,7 +91,7 @@ frame summed(id: int) { header "\\xFF\\xFF"  field id "B" = id  length "B" = pay
 @pytest.fixture(params=["runtime", "driver"])
 def robot_of(request: pytest.FixtureRequest, tmp_path: Path) -> Any:
     """robot_of(description, port) -> (robot, its on_io events) for one implementation."""
-    def make(text: str, port: Port) -> tuple[Any, list[tuple[Any, ...]]]:
+    def make(text: str, port: ScriptedPort) -> tuple[Any, list[tuple[Any, ...]]]:
         path = tmp_path / "case.rdis"
         path.write_text(HEADER + text, encoding="utf-8")
         events: list[tuple[Any, ...]] = []
@@ -146,7 +115,7 @@ def test_a_reply_field_named_like_a_request_field_is_checked_against_its_own_val
     """Formerly refused ('reply a is 144, expected 129'): seen here by the valid-reply check."""
     text = ('frame named { request { field a "B" = 0x81  payload } reply { field a "B" = 0x90  payload } }\n'
             'primitive p() on link frame named pack "B" (1) unpack "B" { v = out[0] }\n')
-    robot, _ = robot_of(text, Port(b"\x90\x07"))
+    robot, _ = robot_of(text, ScriptedPort(b"\x90\x07"))
     robot.call_primitive("p")
     assert robot.state["v"] == 7
 
@@ -156,7 +125,7 @@ def test_a_tagged_reply_through_a_frame_ended_by_a_terminator_decodes(robot_of) 
     text = ('frame ended { request { payload } reply { payload  terminator "\\xFF" } }\n'
             'primitive p() on link frame ended pack "B" (2) reply tag "B" {\n'
             '    0x10: unpack "B" { v = out[0] }  0x11: unpack "<H" { v = out[0] } }\n')
-    robot, _ = robot_of(text, Port(b"\x11\x34\x12\xff"))
+    robot, _ = robot_of(text, ScriptedPort(b"\x11\x34\x12\xff"))
     robot.call_primitive("p")
     assert robot.state["v"] == 0x1234
 
@@ -164,7 +133,7 @@ def test_a_tagged_reply_through_a_frame_ended_by_a_terminator_decodes(robot_of) 
 def test_skip_unmatched_reads_past_frames_an_unpack_primitive_does_not_match(robot_of) -> None:
     """Formerly a disagreement: the runtime skipped, the driver raised RdisProtocolError."""
     text = 'primitive p() on link frame summed(1) pack "B" (3) skip unmatched timeout 50 ms unpack "B" { v = out[0] }\n'
-    robot, _ = robot_of(text, Port(_frame(2, b"\x05") + _frame(1, b"\x09")))
+    robot, _ = robot_of(text, ScriptedPort(_frame(2, b"\x05") + _frame(1, b"\x09")))
     robot.call_primitive("p")
     assert robot.state["v"] == 9
 
@@ -172,7 +141,7 @@ def test_skip_unmatched_reads_past_frames_an_unpack_primitive_does_not_match(rob
 def test_a_framed_reply_that_fails_is_shown_to_on_io(robot_of) -> None:
     """Formerly shown by neither: seen here by the on_io check."""
     spoilt = _frame(1, b"\x05")[:-1] + b"\x00"
-    robot, events = robot_of(READ, Port(spoilt))
+    robot, events = robot_of(READ, ScriptedPort(spoilt))
     with pytest.raises(Exception, match="^p: ") as raised:
         robot.call_primitive("p")
     assert type(raised.value).__name__ == "RdisProtocolError"
@@ -181,7 +150,7 @@ def test_a_framed_reply_that_fails_is_shown_to_on_io(robot_of) -> None:
 
 def test_a_float_too_large_for_its_pack_code_is_an_rdis_value_error(robot_of) -> None:
     """Found by the differential test: an OverflowError from struct escaped."""
-    robot, _ = robot_of('primitive p(x: float) on link pack "<e" (x)\n', Port(b""))
+    robot, _ = robot_of('primitive p(x: float) on link pack "<e" (x)\n', ScriptedPort(b""))
     with pytest.raises(Exception, match="^p: ") as raised:
         robot.call_primitive("p", 1e300)
     assert type(raised.value).__name__ == "RdisValueError"
@@ -191,7 +160,7 @@ def test_an_xor_narrower_than_a_byte_is_reduced_to_its_width(robot_of) -> None:
     """Found by the differential test: a 4-bit XOR was written as two hex digits, a 1-bit one compared whole."""
     text = ('frame nibble { header "$"  payload  literal "*"  checksum "xor" hex width 4 }\n'
             'primitive p() on link frame nibble pack "BB" (0x31, 0x60) unpack "B" { v = out[0] }\n')
-    port = Port(b"$A*" + b"%X" % ((0x41 ^ 0x2A) & 0xF))
+    port = ScriptedPort(b"$A*" + b"%X" % ((0x41 ^ 0x2A) & 0xF))
     robot, _ = robot_of(text, port)
     robot.call_primitive("p")
     assert bytes(port.written) == b"$1`*" + b"%X" % ((0x31 ^ 0x60 ^ 0x2A) & 0xF)
@@ -200,7 +169,7 @@ def test_an_xor_narrower_than_a_byte_is_reduced_to_its_width(robot_of) -> None:
 
 def test_a_write_the_port_refuses_shows_no_stale_reply_to_on_io(robot_of) -> None:
     """Found by the differential test: the failed exchange showed the bytes of the one before it."""
-    port = Port(_frame(1, b"\x05"))
+    port = ScriptedPort(_frame(1, b"\x05"))
     robot, events = robot_of(READ, port)
     robot.call_primitive("p")
     port.fail = True
@@ -214,6 +183,6 @@ def test_a_stuffed_reply_ended_by_a_constant_is_read_up_to_the_constant(robot_of
     """Found by the differential test: the decoding's size was read, which stuffing had made longer."""
     text = ('frame stuffed { stuff "\\x00" after "\\xFF"  header "\\xAA"  payload  terminator "\\x55" }\n'
             'primitive p() on link frame stuffed pack "B" (1) unpack ">H" { v = out[0] }\n')
-    robot, _ = robot_of(text, Port(b"\xaa\xff\x00\x01\x55"))  # the payload FF 01, stuffed
+    robot, _ = robot_of(text, ScriptedPort(b"\xaa\xff\x00\x01\x55"))  # the payload FF 01, stuffed
     robot.call_primitive("p")
     assert robot.state["v"] == 0xFF01

@@ -28,7 +28,7 @@ from rdisc.engine import (
     Payload,
 )
 from rdisc.runtime.codec import frame_fields, wire_frame
-from tests.runtime.runtime_support import MemoryPort
+from tests.support.ports import ScriptedPort
 
 REPO = Path(__file__).resolve().parents[2]
 DXL2 = """\
@@ -84,7 +84,7 @@ _BYTE_SOUP = st.lists(st.one_of(st.binary(max_size=6), st.sampled_from(
 def test_reading_any_bytes_gives_a_frame_or_a_frame_error(name: str, chunks: list[bytes], size: int,
                                                          fields: list[int]) -> None:
     frame, _ = FRAMES[name]
-    port = Incoming(MemoryPort(b"".join(chunks)))
+    port = Incoming(ScriptedPort(b"".join(chunks)))
     for _ in range(3):  # and again, from what a bad frame gave back
         try:
             raw, payload = frame.read(port, fields, b"\x80\x10", size)
@@ -109,7 +109,7 @@ def test_a_frame_written_is_read_back(name: str, payload: bytes, noise: bytes, i
         wire = frame.wrap(payload, fields)
     except Exception:  # noqa: BLE001 - a payload too long for its length field: not this property's
         return
-    port = Incoming(MemoryPort(noise.replace(frame.reply.header[:1], b"") + wire if frame.reply.header else wire))
+    port = Incoming(ScriptedPort(noise.replace(frame.reply.header[:1], b"") + wire if frame.reply.header else wire))
     size = -1 if frame.reply.length >= 0 or frame.reply.delimiter else len(payload)
     raw, read = frame.read(port, fields, b"", size)
     assert read == payload

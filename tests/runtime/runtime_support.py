@@ -1,8 +1,7 @@
-"""Shared by the runtime tests: paths, callbacks that record what they get, and a port in memory."""
+"""Shared by the runtime tests: paths, and callbacks that record what they get."""
 
 from __future__ import annotations
 
-import io
 import json
 import threading
 import time
@@ -50,19 +49,6 @@ class Recorder:
 
     def wait_count(self, n: int, timeout: float = 3.0) -> list[Any]:
         return self.wait(lambda items: len(items) >= n, timeout)
-
-
-class MemoryPort(io.BytesIO):
-    """A port whose device has already said everything it will say (a read past it is a timeout)."""
-
-    def read_until(self, expected: bytes = b"\n", size: int | None = None) -> bytes:
-        out = bytearray()
-        while not out.endswith(expected) and (size is None or len(out) < size):
-            byte = self.read(1)
-            if not byte:
-                break
-            out += byte
-        return bytes(out)
 
 
 def typed_thesis_create(folder: Path) -> Path:

@@ -17,6 +17,7 @@ from rdisc.runtime import (
     RdisValueError,
     load,
 )
+from tests.support.ports import ScriptedPort
 
 FAST_CREATE = DATA / "fast_create.rdis"
 
@@ -188,31 +189,10 @@ def test_calls_after_close_are_connection_errors() -> None:
 
 
 def test_a_port_object_is_used_as_it_is_and_left_open() -> None:
-    class Port:
-        def __init__(self) -> None:
-            self.written: list[bytes] = []
-            self.closed = False
-
-        def write(self, data: bytes) -> int:
-            self.written.append(bytes(data))
-            return len(data)
-
-        def read(self, n: int) -> bytes:
-            return bytes(n)
-
-        def read_until(self, expected: bytes, size: int) -> bytes:
-            return b"\n"
-
-        def reset_input_buffer(self) -> None:
-            pass
-
-        def close(self) -> None:
-            self.closed = True
-
-    port = Port()
+    port = ScriptedPort()
     with load(FAST_CREATE).connect(port, threads=False) as robot:
         robot.call_input("set_velocity", linear=0.2, angular=0.0)
-    assert port.written == [b"\x80", b"\x84", b"\x89\x00\xc8\x7f\xff", STOP]
+    assert port.writes == [b"\x80", b"\x84", b"\x89\x00\xc8\x7f\xff", STOP]
     assert not port.closed
 
 

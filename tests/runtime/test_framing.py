@@ -20,7 +20,7 @@ from rdisc.engine import (
 from rdisc.runtime.codec import checksum
 from rdisc.semantics import model as m
 from rdisc.semantics.frames import CATALOGUE
-from tests.runtime.runtime_support import MemoryPort
+from tests.support.ports import ScriptedPort
 
 # The check value of each catalogue CRC: its result over b"123456789" (CRC RevEng catalogue).
 CHECK_VALUES = {
@@ -62,7 +62,7 @@ def test_dynamixel_request_is_the_manuals() -> None:
 def test_reply_after_garbage_is_found() -> None:
     body = bytes([1, 3, 0, 0x20])
     reply = bytes.fromhex("00ff12") + b"\xff\xff" + body + bytes([~sum(body) & 0xFF])
-    raw, payload = DXL.read(MemoryPort(reply), [1], b"", -1)
+    raw, payload = DXL.read(ScriptedPort(reply), [1], b"", -1)
     assert payload == bytes([0, 0x20])
     assert raw == reply[3:]
 
@@ -75,13 +75,13 @@ def test_reply_after_garbage_is_found() -> None:
 ])
 def test_faults_are_frame_errors(reply: bytes, message: str) -> None:
     with pytest.raises(FrameError, match=message) as caught:
-        DXL.read(MemoryPort(reply), [1], b"", -1)
+        DXL.read(ScriptedPort(reply), [1], b"", -1)
     assert not caught.value.timeout
 
 
 def test_nothing_at_all_is_a_timeout() -> None:
     with pytest.raises(FrameError) as caught:
-        DXL.read(MemoryPort(b""), [1], b"", -1)
+        DXL.read(ScriptedPort(b""), [1], b"", -1)
     assert caught.value.timeout
 
 
@@ -92,10 +92,10 @@ def test_reply_checksum_over_the_request_and_a_delimited_payload() -> None:
     request = frame.wrap(b"\x15", [0x80])
     text = b"USB Roboclaw 2x7a v4.1.34"
     reply = text + b"\n\x00" + crc(request + text + b"\n\x00").to_bytes(2, "big")
-    assert frame.read(MemoryPort(reply), [0x80], request, -1)[1] == text
+    assert frame.read(ScriptedPort(reply), [0x80], request, -1)[1] == text
     spoilt = reply[:-1] + bytes([reply[-1] ^ 1])
     with pytest.raises(FrameError, match="checksum"):
-        frame.read(MemoryPort(spoilt), [0x80], request, -1)
+        frame.read(ScriptedPort(spoilt), [0x80], request, -1)
 
 
 def test_hex_checksum_and_terminator() -> None:
@@ -108,9 +108,9 @@ def test_hex_checksum_and_terminator() -> None:
 def test_binary_checksum_bytes_are_compared_exactly() -> None:
     """A struct checksum byte that happens to be a lower-case letter is not upper-cased (0x61 is not 0x41)."""
     frame = Frame("f", [Payload()], [Bytes("header", b"\xaa"), Payload(), Check(Checksum("sum", 8), "B", 1, 1)])
-    assert frame.read(MemoryPort(b"\xaa\x61\x61"), [], b"", 1)[1] == b"\x61"
+    assert frame.read(ScriptedPort(b"\xaa\x61\x61"), [], b"", 1)[1] == b"\x61"
     with pytest.raises(FrameError, match="checksum"):
-        frame.read(MemoryPort(b"\xaa\x61\x41"), [], b"", 1)
+        frame.read(ScriptedPort(b"\xaa\x61\x41"), [], b"", 1)
 
 
 DXL2 = Frame("dxl2", [Bytes("header", b"\xff\xff\xfd\x00"), Field("id", "B", 0), Length("<H", 2), Payload(),
@@ -130,7 +130,7 @@ def test_stuffing_is_inserted_counted_and_removed() -> None:
     request = DXL2.wrap(payload, [1])
     assert request[5:7] == (len(payload) + 1 + 2).to_bytes(2, "little")  # the length counts the escape
     assert request[7:-2] == bytes.fromhex("037400fffffdfd01")
-    raw, unstuffed = DXL2.read(MemoryPort(request), [1], b"", -1)
+    raw, unstuffed = DXL2.read(ScriptedPort(request), [1], b"", -1)
     assert (raw, unstuffed) == (request, payload)
 
 
@@ -138,7 +138,7 @@ def test_a_reserved_sequence_without_its_escape_is_a_frame_error() -> None:
     body = bytes.fromhex("01 0700 55 fffffd 00".replace(" ", ""))  # FF FF FD not followed by FD
     crc = Checksum("crc", 16, 0x8005)(b"\xff\xff\xfd\x00" + body)
     with pytest.raises(FrameError, match="not followed by"):
-        DXL2.read(MemoryPort(b"\xff\xff\xfd\x00" + body + crc.to_bytes(2, "little")), [1], b"", -1)
+        DXL2.read(ScriptedPort(b"\xff\xff\xfd\x00" + body + crc.to_bytes(2, "little")), [1], b"", -1)
 
 
 def test_a_bad_frame_gives_back_what_it_took() -> None:
@@ -146,7 +146,7 @@ def test_a_bad_frame_gives_back_what_it_took() -> None:
     body = bytes([1, 3, 0, 0x20])
     good = b"\xff\xff" + body + bytes([~sum(body) & 0xFF])
     cut = good[:-3]  # no checksum: the good frame's first bytes complete it, wrongly
-    port = Incoming(MemoryPort(cut + good))
+    port = Incoming(ScriptedPort(cut + good))
     with pytest.raises(FrameError, match="checksum"):
         DXL.read(port, [1], b"", -1)
     assert DXL.read(port, [1], b"", -1) == (good, bytes([0, 0x20]))

@@ -5,9 +5,9 @@ from __future__ import annotations
 
 import pytest
 from runtime_support import DATA
-from test_one_semantics import ScriptedPort
 
 from rdisc.runtime import RdisProtocolError, load
+from tests.support.ports import ScriptedPort
 
 
 def test_lines_end_at_the_connections_terminator() -> None:

@@ -8,11 +8,11 @@ from pathlib import Path
 
 import pytest
 from conftest import check_text, run_rdisc
-from silent_port import SilentPort
 
 from rdisc import engine, limits
 from rdisc.emit.python import import_driver
 from rdisc.runtime import load
+from tests.support.ports import ScriptedPort
 
 
 def test_the_engine_keeps_the_same_width() -> None:
@@ -33,35 +33,7 @@ def test_constants_that_grow_are_refused_at_the_first_that_does_not_fit(tmp_path
     assert result.stderr.count("error[") == 1
 
 
-@pytest.mark.parametrize(("text", "message"), [
-    ("const A = 18446744073709551616",
-     ("error[E004]: integer literal `18446744073709551616` is too large: integers are limited to 64 bits and a "
-     "sign (at most 18446744073709551615)")),
-    ("const A = 2 ** 63 * 2  # the value kept: an expression inside may go past it (2 ** 64 - 1 is fine)",
-     ("error[E405]: 18446744073709551616 is too large: integers are limited to 64 bits and a sign "
-     "(-18446744073709551615..18446744073709551615)")),
-    ("const A = -(2 ** 64)",
-     ("error[E405]: -18446744073709551616 is too large: integers are limited to 64 bits and a sign "
-     "(-18446744073709551615..18446744073709551615)")),
-    ("state f: float = 2 ** 1100",
-     ("error[E405]: a 1101-bit integer is too large: integers are limited to 64 bits and a sign "
-     "(-18446744073709551615..18446744073709551615)")),
-    ("enum Op { read = 2 ** 1100 }  # found by the fuzzer: its JSON did not read back",
-     ("error[E405]: a 1101-bit integer is too large: integers are limited to 64 bits and a sign "
-     "(-18446744073709551615..18446744073709551615)")),
-    ("primitive p(x: float in 2 ** 1100..0) pack \"<f\" (x)  # found by the fuzzer: an internal error",
-     "error[E204]: the range a 1101-bit integer..0 is empty"),
-])
-def test_literals_and_folded_constants_stay_within_64_bits(tmp_path: Path, text: str, message: str) -> None:
-    _, result = check_text(tmp_path, 'robot r { author "tests" }\n' + text + "\n")
-    assert result.returncode == 1
-    assert ("\n" + message + "\n") in ("\n" + result.stderr), result.stderr
-
-
-def test_the_largest_ints_are_kept(tmp_path: Path) -> None:
-    _, result = check_text(tmp_path, 'robot r { author "tests" }\nconst A = 18446744073709551615\n'
-                                 "const B = -A\nconst C = 2 ** 64 - 1\nconst D = (1 << 64) - 1\n")
-    assert result.returncode == 0, result.stderr
+# Literals and folded constants within 64 bits, and the largest kept: tests/semantics/cases/security_bounds.rdis.
 
 
 def test_a_json_integer_past_64_bits_is_refused(tmp_path: Path) -> None:
@@ -91,7 +63,7 @@ def test_a_post_action_cannot_grow_a_number_without_bound(tmp_path: Path, kind: 
     source.write_text(SQUARING, encoding="utf-8")
     implementation = load(source) if kind == "runtime" else import_driver(source, tmp_path, "squaring_driver")
     value_error = engine.RdisValueError if kind == "runtime" else implementation.RdisValueError
-    with implementation.connect(SilentPort(), threads=False) as robot:
+    with implementation.connect(ScriptedPort(timeout=1.0), threads=False) as robot:
         for expected in (9, 81, 6561, 43046721, 1853020188851841, 3433683820292512484657849089281):
             if expected > limits.MAX_INT:
                 with pytest.raises(value_error, match=r"^square: x would be a 102-bit integer; integers are "
@@ -126,25 +98,4 @@ def test_a_declaration_of_too_many_tokens_is_refused_before_parsing(tmp_path: Pa
         f" --> {source}:2:1\n"), result.stderr[:2000]
 
 
-@pytest.mark.parametrize("bound", ['float("inf")', 'float("nan")', '-float("inf")'])
-def test_a_range_bound_is_a_finite_number(tmp_path: Path, bound: str) -> None:
-    """`float("inf")` folds to an infinity; as a range's bound it was an internal error
-    (found by the fuzzer: an int range cannot be converted to one)."""
-    _, result = check_text(tmp_path, 'robot r { author "tests" }\nconnection link: serial { baud 9600 }\n'
-                                f'primitive w(n: int in 0..{bound}) on link pack "B" (n)\n')
-    assert result.returncode == 1
-    value = {"float(\"inf\")": "inf", "float(\"nan\")": "nan", "-float(\"inf\")": "-inf"}[bound]
-    assert result.stderr.startswith(f"error[E204]: a range's bound must be a finite number, not {value}\n"), \
-        result.stderr
-
-
-@pytest.mark.parametrize("declaration", ["setting scale: float = 2 ** 1100",
-                                         "primitive p(x: float = 2 ** 1100) on link pack \"d\" (x)"])
-def test_a_default_is_kept_in_64_bits(tmp_path: Path, declaration: str) -> None:
-    """A float default given as a huge int was an internal error (found by the fuzzer:
-    int too large to convert to float)."""
-    _, result = check_text(tmp_path, 'robot r { author "tests" }\nconnection link: serial { baud 9600 }\n'
-                           + declaration + "\n")
-    assert result.returncode == 1
-    assert result.stderr.startswith("error[E405]: a 1101-bit integer is too large: integers are limited to "
-                                    "64 bits and a sign"), result.stderr
+# A range's bound is a finite number, a default is kept in 64 bits: tests/semantics/cases/security_bounds.rdis.

@@ -287,10 +287,10 @@ ONE_PER_CODE = list({c.json_code or c.code: c for c in CASES}.values())
 
 
 @pytest.fixture(scope="module")
-def imports(rdisc, warm: Path) -> dict[str, object]:
+def imports(rdisc_process, warm: Path) -> dict[str, object]:
     def one(case: Case):
         out = warm / f"{case.id}.subprocess.rdis"
-        return rdisc("import", warm / f"{case.id}.json", "-o", out), out
+        return rdisc_process("import", warm / f"{case.id}.json", "-o", out), out
 
     with ThreadPoolExecutor(max_workers=max(2, os.cpu_count() or 2)) as pool:
         return dict(zip((c.id for c in ONE_PER_CODE), pool.map(one, ONE_PER_CODE)))

@@ -8,27 +8,16 @@ from pathlib import Path
 
 import pytest
 from conftest import run_rdisc
-from silent_port import SilentPort
 
 from rdisc import engine
 from rdisc.emit.python import import_driver
 from rdisc.runtime import load
+from tests.support.ports import ScriptedPort
 
 HEAD = 'robot r { author "tests" }\nconnection c: serial { baud 9600 }\n'
 
 
-@pytest.mark.parametrize(("primitive", "message"), [
-    ('pack ">4s" ("ABCDE")', "error[E403]: 'ABCDE' is 5 characters; `4s` holds 4, and struct would cut the rest"),
-    ('pack ">4p" ("ABCD")', "error[E403]: 'ABCD' is 4 characters; `4p` holds 3, and struct would cut the rest"),
-    ('pack ">f" (1e39)', "error[E403]: 1e+39 is too large for pack code `f` (at most 3.40282e+38)"),
-    ('pack ">e" (65520.0)', "error[E403]: 65520.0 is too large for pack code `e` (at most 65504)"),
-])
-def test_a_constant_that_does_not_fit_is_a_diagnostic(tmp_path: Path, primitive: str, message: str) -> None:
-    source = tmp_path / "d.rdis"
-    source.write_text(HEAD + f"primitive p() on c {primitive}\n", encoding="utf-8")
-    result = run_rdisc("check", source)
-    assert result.returncode == 1
-    assert result.stderr.startswith(message + "\n"), result.stderr
+# A constant that does not fit its pack code is a diagnostic: tests/semantics/cases/security_silent.rdis.
 
 
 @pytest.mark.parametrize("kind", ["runtime", "driver"])
@@ -37,7 +26,7 @@ def test_a_string_longer_than_its_code_is_refused_at_run_time(tmp_path: Path, ki
     source.write_text(HEAD + 'primitive name(text: string) on c pack ">B4s" (7, text)\n', encoding="utf-8")
     implementation = load(source) if kind == "runtime" else import_driver(source, tmp_path, "named_driver")
     value_error = engine.RdisValueError if kind == "runtime" else implementation.RdisValueError
-    port = SilentPort()
+    port = ScriptedPort(timeout=1.0)
     with implementation.connect(port, threads=False) as robot:
         robot.call_primitive("name", "AB")
         robot.call_primitive("name", "ABCD")
