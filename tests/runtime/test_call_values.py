@@ -18,8 +18,8 @@ from typing import Any
 import pytest
 from conftest import cli_env, untimed
 
-from rdisc.console.server import Console
 from rdisc import engine
+from rdisc.console.server import Console
 from rdisc.runtime.replay import Recording, replay
 from tests.engine.test_one_engine import ScriptedPort, implementation_of
 
