@@ -11,7 +11,7 @@ import difflib
 from dataclasses import dataclass, field
 
 from rdisc.diagnostics import Diagnostics, Label
-from rdisc.semantics.operators import FUNCTIONS
+from rdisc.engine.operations import FUNCTIONS
 from rdisc.source import Span
 from rdisc.syntax import ast
 

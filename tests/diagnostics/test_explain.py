@@ -10,7 +10,7 @@ import pytest
 from rdisc.diagnostics.codes import CODES
 from rdisc.semantics import check
 from rdisc.semantics.model import Type
-from rdisc.semantics.operators import FUNCTIONS
+from rdisc.engine.operations import FUNCTIONS
 
 
 def _words(text: str) -> set[str]:

@@ -10,7 +10,7 @@ from pathlib import Path
 from rdisc.compile import compile_path
 from rdisc.diagnostics.codes import CODES
 from rdisc.semantics.frames import CATALOGUE
-from rdisc.semantics.operators import FUNCTIONS
+from rdisc.engine.operations import FUNCTIONS
 
 DOC = Path(__file__).resolve().parents[2] / "docs" / "language.md"
 
