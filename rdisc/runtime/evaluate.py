@@ -99,8 +99,7 @@ def prepare(expr: m.Expr, slots: Mapping[str, int] | None = None) -> Prepared:
             return lambda s, loc, r: a(s, loc, r) or b(s, loc, r)
         case m.BinaryOp(op=op, left=left, right=right):
             left, right = _folded(left), _folded(right)  # `x % (2 + 1)` is `x % 3`: Python's own `%`
-            operation = binary_operation(replace(expr, left=left, right=right))
-            return _binary(_PYTHON[op] if operation is None else getattr(operations, operation), left, right, slots)
+            return _binary(_operation(replace(expr, left=left, right=right)), left, right, slots)
         case m.IfElse(cond=cond, then=then, orelse=orelse):
             return _if_else(prepare(cond, slots), then, orelse, slots)
         case m.FuncCall():
@@ -178,14 +177,17 @@ def _call(expr: m.FuncCall, slots: Mapping[str, int] | None) -> Prepared:
     name = call_operation(expr)
     function = getattr(operations if name.startswith("_") else builtins, name)
     args = expr.args
-    first = prepare(args[0], slots) if args else None
     rest = [_fold(a) for a in args[1:]]
-    if first is not None and all(c is not None for c in rest):
+    if args and all(c is not None for c in rest):
         constants = tuple(c.value for c in rest)  # type: ignore[union-attr]
         if not constants:
-            return lambda s, loc, r: function(first(s, loc, r))
+            return _applied(function, args[0], slots)
+        first = prepare(args[0], slots)
         if len(constants) == 2:
             low, high = constants
+            if isinstance(args[0], m.Var) and args[0].scope is not m.Scope.STATE:
+                key = _key(args[0].name, slots)
+                return lambda s, loc, r: function(loc[key], low, high)
             return lambda s, loc, r: function(first(s, loc, r), low, high)
         return lambda s, loc, r: function(first(s, loc, r), *constants)
     prepared = tuple(prepare(a, slots) for a in args)
@@ -193,6 +195,30 @@ def _call(expr: m.FuncCall, slots: Mapping[str, int] | None) -> Prepared:
         a, b = prepared
         return lambda s, loc, r: function(a(s, loc, r), b(s, loc, r))
     return lambda s, loc, r: function(*[p(s, loc, r) for p in prepared])
+
+
+def _applied(function: Callable[[Any], Any], arg: m.Expr, slots: Mapping[str, int] | None) -> Prepared:
+    """`function(arg)`, the commonest shapes of the argument (a parameter or field, or one of
+    them with a constant: `round(velocity * 1000)`) read in the closure itself."""
+    match arg:
+        case m.Var(name=name, scope=m.Scope.STATE):
+            return lambda s, loc, r: function(s[name])
+        case m.Var(name=name):
+            key = _key(name, slots)
+            return lambda s, loc, r: function(loc[key])
+        case m.BinaryOp(left=m.Var(name=name, scope=scope), right=m.Const(value=c)) if (
+            arg.op not in ("and", "or") and scope is not m.Scope.STATE
+        ):
+            binary, key = _operation(arg), _key(name, slots)
+            return lambda s, loc, r: function(binary(loc[key], c))
+    a = prepare(arg, slots)
+    return lambda s, loc, r: function(a(s, loc, r))
+
+
+def _operation(e: m.BinaryOp) -> Callable[[Any, Any], Any]:
+    """What computes `e`: its function in rdisc.engine.operations, or Python's operator."""
+    operation = binary_operation(e)
+    return _PYTHON[e.op] if operation is None else getattr(operations, operation)
 
 
 # Python's operators, where rdisc.semantics.operators says one computes exactly what the
