@@ -74,7 +74,7 @@ _STATE_MEMBERS = frozenset(("keys", "items", "values", "get"))
 _MODULE_NAMES = frozenset((
     "State", "Port", "PortSpec", "Value", "Robot", "Device", "Connection", "Primitive", "Interface", "Input",
     "Output", "Hook", "Call", "Calls", "Param", "Frame", "Pack", "Format", "Unpack", "Match", "None", "True",
-    "False",
+    "False", "EvalError", "BINARY", "UNARY", "FUNCTIONS",  # the last four: rdisc.engine.operations'
 ))
 
 

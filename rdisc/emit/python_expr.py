@@ -107,7 +107,7 @@ def binary(op: str, left: Py, right: Py, spelling: str | None = None) -> Py:
         low = high = p.ARITH
     a, b = left.at(low), right.at(high)
     word = spelling if spelling is not None else o.spelling.strip()
-    rest = ((word + " ", b),)
+    rest: tuple[tuple[str, Py], ...] = ((word + " ", b),)
     # `a + b - c` is one chain (the left operand is not parenthesised, so it has this level).
     if isinstance(a.shape, Chain) and a.level == o.level and a is left:
         first, rest = a.shape.first, a.shape.rest + rest
@@ -152,10 +152,10 @@ def literal(value: m.Value, type_: m.AnyType) -> Py:
         case Type.BOOL:
             return Py(repr(bool(value)), p.ATOM)
         case Type.INT:
-            number = int(value)
+            number = int(value)  # type: ignore[arg-type]
             return Py(repr(number), p.UNARY if number < 0 else p.ATOM)
         case Type.FLOAT:
-            return float_literal(float(value))
+            return float_literal(float(value))  # type: ignore[arg-type]
         case Type.STRING:
             return Py(quoted(str(value)), p.ATOM)
         case Type.BYTES:
@@ -216,7 +216,7 @@ class Compiler:
                 return Py(f"lookup({quoted(table)}, {table_name(table)}, {self.expr(key, names).text})", p.ATOM)
             case m.ArrayValue(items=items, type=type_):
                 return tuple_py([self.bound(item, type_.element, names) for item in items])
-            case m.Element(array=m.Var(type=m.Array(size=size)) as array, index=m.Const(value=at)) if 0 <= at < size:
+            case m.Element(array=m.Var(type=m.Array(size=size)) as array, index=m.Const(value=int(at))) if 0 <= at < size:
                 return Py(f"{self.expr(array, names).text}[{at}]", p.ATOM)  # its size was checked as it was bound
             case m.Element(array=array, index=index):
                 return call("element", [Py(quoted(m.array_name(array)), p.ATOM), self.expr(array, names),
@@ -234,7 +234,7 @@ class Compiler:
             if declared.element is Type.FLOAT and isinstance(e.type, m.Array) and e.type.element is Type.INT:
                 return call("tuple", [Py(f"float(v) for v in {py.at(p.CONDITIONAL).text}", p.ATOM)])
             return py
-        if declared is Type.FLOAT and isinstance(e, m.Const) and e.type is Type.INT:
+        if declared is Type.FLOAT and isinstance(e, m.Const) and isinstance(e.value, int) and e.type is Type.INT:
             try:
                 return literal(float(e.value), Type.FLOAT)  # 0 bound to a float is 0.0, known now
             except OverflowError:

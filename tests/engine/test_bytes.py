@@ -1,6 +1,6 @@
 """Bytes as values: state holds them (`state firmware: bytes`), `b"..."` writes them, and
 `hex`, `ascii`, `encode`, `pack7`, `unpack7`, `+` and `==` work on them, in the runtime and a
-generated driver alike (the driver carries the functions' text from rdisc.semantics.operators);
+generated driver alike (the driver carries the functions' text from rdisc.engine.operations);
 constants are folded and refused at check time; all of it travels through JSON and the printer."""
 
 from __future__ import annotations
