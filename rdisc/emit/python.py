@@ -6,9 +6,9 @@ expression of the checked IR printed as a small function with the parser's
 precedence table, each encoder, decoder and frame as its constructor. Over them,
 typed classes give every input, interface and primitive a real method
 (`robot.inputs.set_velocity(linear=0.2, angular=0.0)`), so that a type checker
-catches a misspelt name. The operations that Python would not bound or check the
-same way as the interpreter (float overflow, powers, shifts, long strings) go
-through small helpers written into the module.
+catches a misspelt name. The operations of expressions that Python's own operators
+would not bound or check as the interpreter does (float overflow, powers, shifts, long
+strings) are calls of rdisc.engine.operations, whose text the module carries too.
 
 What comes from the description enters the text only as a checked name (an
 identifier, renamed with a trailing underscore where it would clash with a
@@ -71,17 +71,13 @@ _STATE_MEMBERS = frozenset(("keys", "items", "values", "get"))
 _CLASS_ENDINGS = ("", "State", "Inputs", "Interfaces", "Primitives")
 
 
-def to_python(model: m.Model, source_name: str, *, sources: Mapping[str, SourceFile] | None = None,
-              helpers: Iterable[str] = ()) -> str:
+def to_python(model: m.Model, source_name: str, *, sources: Mapping[str, SourceFile] | None = None) -> str:
     """The driver module for `model`, generated from the file called `source_name`.
 
     `sources` (the files read while compiling, by path) give the `# file:line`
-    comments; without them the comments are left out. `helpers`: expression helpers
-    written in too, for code appended to the driver (the ROS node's conversions).
+    comments; without them the comments are left out.
     """
-    driver = _Driver(model, source_name, sources or {})
-    driver.exprs.helpers.update(helpers)
-    return driver.module()
+    return _Driver(model, source_name, sources or {}).module()
 
 
 def import_driver(description: str | os.PathLike[str], folder: str | os.PathLike[str],
@@ -275,7 +271,6 @@ class _Driver:
     # -- the whole module ---------------------------------------------------------------------
 
     def module(self) -> str:
-        # The plans decide which helpers the module needs, so they are written first.
         plans = Writer()
         self.plans(plans)
         w = Writer()
@@ -287,9 +282,6 @@ class _Driver:
         _section(w, f"{self.model.robot.name}: the plans of {self.source_name}")
         w.blank(1)
         w.line(f"ROBOT = {quoted(self.model.robot.name)}")
-        for name in (n for n in support.HELPERS if n in self.exprs.helpers):  # a fixed order
-            w.blank(2)
-            w.raw(support.HELPERS[name])
         w.blank(2)
         w.raw(plans.text().rstrip("\n"))
         w.blank(2)

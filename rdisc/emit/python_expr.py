@@ -1,13 +1,11 @@
 """Typed expression IR → Python expression source, for the generated driver.
 
 Precedence and parentheses come from the parser's table (rdisc.syntax.precedence),
-which orders the operators as Python does. The text computes what
-rdisc.semantics.operators computes: where a Python operator alone would not
-(a float overflowing to inf, an unbounded power or shift, a long string, the
-`0x` forms of `int`), it goes through a helper the driver defines (`_mul`,
-`_pow`, ...). A float overflow needs no check where the infinity cannot get lost
-before a consumer that refuses it (`round(velocity * 1000)`: `round(inf)` raises
-as the checked multiplication would, so the error is the same RdisValueError).
+which orders the operators as Python does. The text computes what the runtime
+computes, with the same functions: every driver carries rdisc.engine.operations, and
+an operation is written as the call of its function there (`_mul(x, y)`, `_round(x)`),
+or as Python's own operator where rdisc.semantics.operators says that computes exactly
+the same (`a + b` of two ints, `x * 0.5`, `x % 256`), errors and their messages included.
 
 A `Py` keeps the shape of its text, so a long expression can be laid out over
 several lines at its calls and operator chains (`lines`), the way a person would
@@ -22,9 +20,9 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import NoReturn
 
-from rdisc.emit.python_support import CARRIED
 from rdisc.semantics import model as m
 from rdisc.semantics.model import Scope, Type
+from rdisc.semantics.operators import binary_operation, call_operation, surely_float
 from rdisc.syntax import precedence as p
 
 INDENT = "    "
@@ -109,7 +107,7 @@ def binary(op: str, left: Py, right: Py, spelling: str | None = None) -> Py:
         low = high = p.ARITH
     a, b = left.at(low), right.at(high)
     word = spelling if spelling is not None else o.spelling.strip()
-    rest = ((word + " ", b),)
+    rest: tuple[tuple[str, Py], ...] = ((word + " ", b),)
     # `a + b - c` is one chain (the left operand is not parenthesised, so it has this level).
     if isinstance(a.shape, Chain) and a.level == o.level and a is left:
         first, rest = a.shape.first, a.shape.rest + rest
@@ -154,10 +152,10 @@ def literal(value: m.Value, type_: m.AnyType) -> Py:
         case Type.BOOL:
             return Py(repr(bool(value)), p.ATOM)
         case Type.INT:
-            number = int(value)
+            number = int(value)  # type: ignore[arg-type]
             return Py(repr(number), p.UNARY if number < 0 else p.ATOM)
         case Type.FLOAT:
-            return float_literal(float(value))
+            return float_literal(float(value))  # type: ignore[arg-type]
         case Type.STRING:
             return Py(quoted(str(value)), p.ATOM)
         case Type.BYTES:
@@ -184,9 +182,6 @@ def quoted(value: str | bytes) -> str:
 
 # ---- the compiler -----------------------------------------------------------------------------------
 
-CHECKED_FLOAT = {"+": "_add", "-": "_sub", "*": "_mul", "/": "_div"}
-_PROPAGATE_NONFINITE = {"+", "-", "*"}  # an inf operand gives inf or nan
-
 
 def table_name(table: str) -> str:
     """The module constant a driver keeps a lookup table in."""
@@ -194,14 +189,12 @@ def table_name(table: str) -> str:
 
 
 class Compiler:
-    """Compiles expressions; records the helpers their text uses."""
+    """Compiles expressions: each operation as the call of its function in rdisc.engine.operations
+    (which the driver carries), or as Python's own operator where that computes exactly the same."""
 
-    def __init__(self) -> None:
-        self.helpers: set[str] = set()
-
-    def expr(self, e: m.Expr, names: Mapping[str, str], finite: bool = False) -> Py:
+    def expr(self, e: m.Expr, names: Mapping[str, str]) -> Py:
         """`e` as Python. `names`: local names of parameters and fields (state is read from
-        the mapping `state`). `finite`: a non-finite value of `e` would be refused where it goes."""
+        the mapping `state`)."""
         match e:
             case m.Const(value=value, type=type_):
                 return literal(value, type_)
@@ -212,19 +205,18 @@ class Compiler:
             case m.ReplyValue(index=index):
                 return Py(f"reply[{index!r}]", p.ATOM)
             case m.UnaryOp(op=op, operand=operand):
-                return unary(op, self.expr(operand, names, finite and op in ("-", "+")))
-            case m.BinaryOp(op=op, left=left, right=right, type=type_):
-                return self.binary(op, left, right, type_, names, finite)
+                return unary(op, self.expr(operand, names))
+            case m.BinaryOp():
+                return self.binary(e, names)
             case m.IfElse(cond=cond, then=then, orelse=orelse):
-                return conditional(self.expr(then, names, finite), self.expr(cond, names),
-                                   self.expr(orelse, names, finite))
-            case m.FuncCall(func=func, args=args):
-                return self.call(func, args, names, finite)
+                return conditional(self.expr(then, names), self.expr(cond, names), self.expr(orelse, names))
+            case m.FuncCall(args=args):
+                return call(call_operation(e), [self.expr(a, names) for a in args])
             case m.Lookup(table=table, key=key):
                 return Py(f"lookup({quoted(table)}, {table_name(table)}, {self.expr(key, names).text})", p.ATOM)
             case m.ArrayValue(items=items, type=type_):
                 return tuple_py([self.bound(item, type_.element, names) for item in items])
-            case m.Element(array=m.Var(type=m.Array(size=size)) as array, index=m.Const(value=at)) if 0 <= at < size:
+            case m.Element(array=m.Var(type=m.Array(size=size)) as array, index=m.Const(value=int(at))) if 0 <= at < size:
                 return Py(f"{self.expr(array, names).text}[{at}]", p.ATOM)  # its size was checked as it was bound
             case m.Element(array=array, index=index):
                 return call("element", [Py(quoted(m.array_name(array)), p.ATOM), self.expr(array, names),
@@ -242,7 +234,7 @@ class Compiler:
             if declared.element is Type.FLOAT and isinstance(e.type, m.Array) and e.type.element is Type.INT:
                 return call("tuple", [Py(f"float(v) for v in {py.at(p.CONDITIONAL).text}", p.ATOM)])
             return py
-        if declared is Type.FLOAT and isinstance(e, m.Const) and e.type is Type.INT:
+        if declared is Type.FLOAT and isinstance(e, m.Const) and isinstance(e.value, int) and e.type is Type.INT:
             try:
                 return literal(float(e.value), Type.FLOAT)  # 0 bound to a float is 0.0, known now
             except OverflowError:
@@ -252,112 +244,19 @@ class Compiler:
             return call("float", [py])
         return py
 
-    def helper(self, name: str, args: list[Py]) -> Py:
-        self.helpers.add(name)
-        return call(name, args)
-
-    def carried(self, name: str, args: list[Py]) -> Py:
-        """A call of a function of rdisc.semantics.operators that drivers carry as it is written there."""
-        self.helpers.add(CARRIED)
-        return call(name, args)
-
-    def binary(self, op: str, left: m.Expr, right: m.Expr, type_: Type, names: Mapping[str, str],
-               finite: bool) -> Py:
-        if op in CHECKED_FLOAT and type_ is Type.FLOAT:
-            if _cannot_overflow(op, left, right):  # an infinite operand may still get here
-                divisor_finite = finite and op != "/"
-                return binary(op, self.expr(left, names, finite), self.expr(right, names, divisor_finite))
-            if finite and op in _PROPAGATE_NONFINITE:
-                return binary(op, self.expr(left, names, True), self.expr(right, names, True))
-            if finite and op == "/":  # inf / x is inf or nan; x / inf is 0, so the divisor is checked
-                return binary(op, self.expr(left, names, True), self.expr(right, names))
-            return self.helper(CHECKED_FLOAT[op], [self.expr(left, names), self.expr(right, names)])
-        a, b = self.expr(left, names), self.expr(right, names)
-        if type_ in (Type.STRING, Type.BYTES) and op == "+":
-            return self.carried("_concat", [a, b])
-        if op == "**":
-            return self.helper("_pow", [a, b])
-        if op == "*" and type_ is Type.INT:
-            return self.helper("_imul", [a, b])
-        if op == "<<":
-            return self.helper("_lshift", [a, b])
-        if op in ("==", "!=") and (_bool_constant(left) or _bool_constant(right)):
+    def binary(self, e: m.BinaryOp, names: Mapping[str, str]) -> Py:
+        a, b = self.expr(e.left, names), self.expr(e.right, names)
+        operation = binary_operation(e)
+        if operation is not None:
+            return call(operation, [a, b])
+        if e.op in ("==", "!=") and (_bool_constant(e.left) or _bool_constant(e.right)):
             # A bool against True or False: `is`, as linters want it (both sides are bools).
-            return binary(op, a, b, "is" if op == "==" else "is not")
-        return binary(op, a, b)
-
-    def call(self, func: str, args: tuple[m.Expr, ...], names: Mapping[str, str], finite: bool) -> Py:
-        match func:
-            case "round" if len(args) == 1:
-                return call("round", [self.expr(args[0], names, True)])  # round(inf) raises
-            case "round":
-                x = self.expr(args[0], names)
-                return call("round", [x if surely_float(args[0]) else call("float", [x]), self.expr(args[1], names)])
-            case "int" if args[0].type is Type.STRING:
-                return self.helper("_int", [self.expr(args[0], names)])
-            case "int":
-                return call("int", [self.expr(args[0], names, True)])  # int(inf) raises
-            case "abs":
-                return call("abs", [self.expr(args[0], names, finite)])
-            case "min" | "max" | "bool" | "str" | "float":
-                return call(func, [self.expr(a, names) for a in args])
-            case "clamp":
-                return self.helper("_clamp", [self.expr(a, names) for a in args])
-            case "len":
-                return call("len", [self.expr(args[0], names)])
-            case "byte":
-                return self.helper("_byte", [self.expr(a, names) for a in args])
-            case "hex" | "ascii" | "encode" | "pack7" | "unpack7" | "bitset":
-                return self.carried(f"_{func}", [self.expr(args[0], names)])
-            case "sqrt" | "sin" | "cos" | "atan2" | "hypot":
-                return call(f"math.{func}", [self.expr(a, names) for a in args])
-        raise ValueError(f"unknown function {func!r}")
-
-
-def _cannot_overflow(op: str, left: m.Expr, right: m.Expr) -> bool:
-    """Whether a finite result is certain from the operands: `x * 0.5`, `x / 2` (and no
-    division by zero), `x + 0`."""
-    def constant(e: m.Expr) -> float | None:
-        if isinstance(e, m.Const) and e.type in (Type.INT, Type.FLOAT) and math.isfinite(e.value):
-            return abs(float(e.value))
-        return None
-
-    match op:
-        case "*":
-            return any(c is not None and c <= 1.0 for c in (constant(left), constant(right)))
-        case "/":
-            c = constant(right)
-            return c is not None and c >= 1.0
-        case "+" | "-":
-            return constant(left) == 0.0 or constant(right) == 0.0
-    return False
+            return binary(e.op, a, b, "is" if e.op == "==" else "is not")
+        return binary(e.op, a, b)
 
 
 def _bool_constant(e: m.Expr) -> bool:
     return isinstance(e, m.Const) and e.type is Type.BOOL
-
-
-def surely_float(e: m.Expr) -> bool:
-    """Whether `e` is a float whenever it has a value. A float-typed expression may be an int
-    at run time (`min(1, 2.0)` is 1), and binding makes it a float."""
-    match e:
-        case m.Const(type=type_) | m.Var(type=type_) | m.ReplyValue(type=type_):
-            return type_ is Type.FLOAT
-        case m.UnaryOp(op="-" | "+", operand=operand):
-            return surely_float(operand)
-        case m.BinaryOp(op="/"):
-            return True
-        case m.BinaryOp(op="+" | "-" | "*" | "%" | "//" | "**", left=left, right=right, type=Type.FLOAT):
-            return surely_float(left) or surely_float(right)
-        case m.IfElse(then=then, orelse=orelse):
-            return surely_float(then) and surely_float(orelse)
-        case m.FuncCall(func="float" | "sqrt" | "sin" | "cos" | "atan2" | "hypot"):
-            return True
-        case m.FuncCall(func="round", args=args):
-            return len(args) == 2
-        case m.FuncCall(func="abs" | "min" | "max" | "clamp", args=args):
-            return all(surely_float(a) for a in args)
-    return False
 
 
 def _unreachable(node: NoReturn) -> NoReturn:

@@ -130,8 +130,8 @@ def to_ros(model: m.Model, source_name: str, *, sources: Mapping[str, SourceFile
     """The ROS node for `model`: its generated driver, with the bridge as its main program."""
     w = Writer()
     bridge = _Bridge(model, source_name)
-    bridge.write(w)  # first: the driver carries the helpers its conversions use
-    driver = to_python(model, source_name, sources=sources, helpers=bridge.exprs.helpers)
+    bridge.write(w)
+    driver = to_python(model, source_name, sources=sources)
     assert driver.endswith(_MAIN)
     return (driver[: -len(_MAIN)] + BRIDGE_HELPERS + "\n\n\n" + w.text().lstrip("\n") + "\n\n"
             + 'if __name__ == "__main__":\n    sys.exit(ros_main())\n')

@@ -1,29 +1,32 @@
 """The expression interpreter: evaluates the checked, typed IR of the Model.
 
-It walks the IR directly (never source text, never Python's eval). Operators and
-functions come from rdisc.semantics.operators, the same definitions the checker
-folds constants with, so a constant means the same thing at check and at run time.
+It walks the IR directly (never source text, never Python's eval). Every operator and
+function is computed by rdisc.engine.operations, the same functions the checker folds
+constants with and every generated driver carries, so an expression means the same thing,
+errors included, at check time, in the runtime and in a driver.
 
 `evaluate` is the reference walk. `prepare` does the same walk once, ahead of
 time, and returns a closure per node (the runtime calls an expression thousands
 of times a second); it reads each name from where the checker bound it (state or
-the local parameters/fields), and it is tested against `evaluate`.
+the local parameters/fields), calls Python's own operator where rdisc.semantics.operators
+says it computes exactly what the operation does, and it is tested against `evaluate`.
 """
 
 from __future__ import annotations
 
-import math
+import builtins
 import operator
-import sys
 from collections.abc import Callable, Mapping, Sequence
+from dataclasses import replace
 from typing import Any
 
-from rdisc.engine import element, lookup, replaced
+from rdisc.engine import operations
+from rdisc.engine.operations import BINARY, FUNCTIONS, UNARY, EvalError, element, lookup, replaced
 from rdisc.semantics import model as m
 from rdisc.semantics.model import coerce
-from rdisc.semantics.operators import BINARY, FUNCTIONS, UNARY, EvalError
+from rdisc.semantics.operators import binary_operation, call_operation
 
-__all__ = ["EvalError", "Prepared", "always_float", "coerce", "evaluate", "prepare"]
+__all__ = ["EvalError", "Prepared", "coerce", "evaluate", "prepare"]
 
 
 def evaluate(expr: m.Expr, names: Mapping[str, m.Value], reply: Sequence[m.Value] = ()) -> m.Value:
@@ -36,17 +39,17 @@ def evaluate(expr: m.Expr, names: Mapping[str, m.Value], reply: Sequence[m.Value
         case m.ReplyValue(index=index):
             return reply[index]
         case m.UnaryOp(op=op, operand=operand):
-            return UNARY[op](evaluate(operand, names, reply))
+            return UNARY[op](evaluate(operand, names, reply))  # type: ignore[no-any-return]
         case m.BinaryOp(op="and", left=left, right=right):
             return evaluate(left, names, reply) and evaluate(right, names, reply)
         case m.BinaryOp(op="or", left=left, right=right):
             return evaluate(left, names, reply) or evaluate(right, names, reply)
         case m.BinaryOp(op=op, left=left, right=right):
-            return BINARY[op](evaluate(left, names, reply), evaluate(right, names, reply))
+            return BINARY[op](evaluate(left, names, reply), evaluate(right, names, reply))  # type: ignore[no-any-return]
         case m.IfElse(cond=cond, then=then, orelse=orelse):
             return evaluate(then if evaluate(cond, names, reply) else orelse, names, reply)
         case m.FuncCall(func=func, args=args):
-            return FUNCTIONS[func](*(evaluate(a, names, reply) for a in args))
+            return FUNCTIONS[func](*(evaluate(a, names, reply) for a in args))  # type: ignore[no-any-return]
         case m.Lookup(table=table, entries=entries, key=key):
             return lookup(table, dict(entries), evaluate(key, names, reply))  # type: ignore[no-any-return]
         case m.ArrayValue(items=items, type=type_):
@@ -85,7 +88,7 @@ def prepare(expr: m.Expr, slots: Mapping[str, int] | None = None) -> Prepared:
         case m.ReplyValue(index=index):
             return lambda s, loc, r: r[index]
         case m.UnaryOp(op=op, operand=operand):
-            unary, a = UNARY[op], prepare(operand, slots)
+            unary, a = _PYTHON_UNARY[op], prepare(operand, slots)  # no unary operation can fail
             return lambda s, loc, r: unary(a(s, loc, r))
         case m.BinaryOp(op="and", left=left, right=right):
             a, b = prepare(left, slots), prepare(right, slots)
@@ -94,15 +97,12 @@ def prepare(expr: m.Expr, slots: Mapping[str, int] | None = None) -> Prepared:
             a, b = prepare(left, slots), prepare(right, slots)
             return lambda s, loc, r: a(s, loc, r) or b(s, loc, r)
         case m.BinaryOp(op=op, left=left, right=right):
-            ints = left.type is m.Type.INT and right.type is m.Type.INT
-            if op in _CHECKED and left.type in _NUMBERS and right.type in _NUMBERS and _operator(expr) is BINARY[op] \
-                    and not (op == "*" and ints):  # an int product keeps BINARY's bound
-                return _checked(op, _folded(left), _folded(right), slots)
-            return _binary(_operator(expr), left, right, slots)
+            left, right = _folded(left), _folded(right)  # `x % (2 + 1)` is `x % 3`: Python's own `%`
+            return _binary(_operation(replace(expr, left=left, right=right)), left, right, slots)
         case m.IfElse(cond=cond, then=then, orelse=orelse):
             return _if_else(prepare(cond, slots), then, orelse, slots)
-        case m.FuncCall(func=func, args=args):
-            return _call(func, args, slots)
+        case m.FuncCall():
+            return _call(expr, slots)
         case m.Lookup(table=table, entries=entries, key=key):
             found, k = dict(entries), prepare(key, slots)
             return lambda s, loc, r: lookup(table, found, k(s, loc, r))
@@ -117,42 +117,10 @@ def prepare(expr: m.Expr, slots: Mapping[str, int] | None = None) -> Prepared:
             return lambda s, loc, r: element(name, a(s, loc, r), i(s, loc, r))  # type: ignore[arg-type]
         case m.Replaced(array=array, index=at, value=new, type=type_):
             name, a, i, v = m.array_name(array), prepare(array, slots), prepare(at, slots), prepare(new, slots)
-            widen = type_.element is m.Type.FLOAT
-            return lambda s, loc, r: replaced(name, a(s, loc, r), i(s, loc, r),  # type: ignore[arg-type]
-                                              float(v(s, loc, r)) if widen else v(s, loc, r))
+            if type_.element is m.Type.FLOAT:
+                return lambda s, loc, r: replaced(name, a(s, loc, r), i(s, loc, r), float(v(s, loc, r)))  # type: ignore[arg-type]
+            return lambda s, loc, r: replaced(name, a(s, loc, r), i(s, loc, r), v(s, loc, r))  # type: ignore[arg-type]
     raise AssertionError(f"unknown expression node {expr!r}")
-
-
-_FLOAT_FUNCTIONS = frozenset({"float", "sqrt", "sin", "cos", "atan2", "hypot"})  # always return a float
-
-
-def always_float(expr: m.Expr) -> bool:
-    """Whether `expr` certainly evaluates to a float (or fails), its local names being floats where declared so.
-
-    Conservative: False says nothing. The runtime uses it to skip widening a
-    value that is a float already.
-    """
-    match expr:
-        case m.Const(value=value):
-            return type(value) is float
-        case m.Var(scope=scope, type=type_):
-            return scope is not m.Scope.STATE and type_ is m.Type.FLOAT
-        case m.UnaryOp(op="-" | "+", operand=operand):
-            return always_float(operand)
-        case m.BinaryOp(op="/", left=left, right=right):
-            return left.type in _NUMBERS and right.type in _NUMBERS
-        case m.BinaryOp(op="+" | "-" | "*", left=left, right=right):
-            return (left.type in _NUMBERS and right.type in _NUMBERS
-                    and (always_float(left) or always_float(right)))
-        case m.IfElse(then=then, orelse=orelse):
-            return always_float(then) and always_float(orelse)
-        case m.FuncCall(func="abs" | "min" | "max" | "clamp", args=args):
-            return bool(args) and all(always_float(a) for a in args)
-        case m.FuncCall(func="round", args=args):
-            return len(args) == 2
-        case m.FuncCall(func=func):
-            return func in _FLOAT_FUNCTIONS
-    return False
 
 
 def _key(name: str, slots: Mapping[str, int] | None) -> str | int:
@@ -203,22 +171,23 @@ def _if_else(c: Prepared, then: m.Expr, orelse: m.Expr, slots: Mapping[str, int]
     return lambda s, loc, r: tf(s, loc, r) if c(s, loc, r) else of(s, loc, r)
 
 
-def _call(func: str, args: tuple[m.Expr, ...], slots: Mapping[str, int] | None) -> Prepared:
+def _call(expr: m.FuncCall, slots: Mapping[str, int] | None) -> Prepared:
     """A function call; constant arguments after the first are passed as they are."""
-    function = FUNCTIONS[func]
-    first = prepare(args[0], slots) if args else None
+    name = call_operation(expr)
+    function = getattr(operations if name.startswith("_") else builtins, name)
+    args = expr.args
     rest = [_fold(a) for a in args[1:]]
-    if first is not None and all(c is not None for c in rest):
+    if args and all(c is not None for c in rest):
         constants = tuple(c.value for c in rest)  # type: ignore[union-attr]
         if not constants:
-            if func == "round":
-                return _round(args[0], first, slots)
-            return lambda s, loc, r: function(first(s, loc, r))
+            return _applied(function, args[0], slots)
+        first = prepare(args[0], slots)
         if len(constants) == 2:
-            lo, hi = constants
-            if func == "clamp":
-                return _clamp(args[0], first, lo, hi, slots)
-            return lambda s, loc, r: function(first(s, loc, r), lo, hi)
+            low, high = constants
+            if isinstance(args[0], m.Var) and args[0].scope is not m.Scope.STATE:
+                key = _key(args[0].name, slots)
+                return lambda s, loc, r: function(loc[key], low, high)
+            return lambda s, loc, r: function(first(s, loc, r), low, high)
         return lambda s, loc, r: function(first(s, loc, r), *constants)
     prepared = tuple(prepare(a, slots) for a in args)
     if len(prepared) == 2:
@@ -227,82 +196,48 @@ def _call(func: str, args: tuple[m.Expr, ...], slots: Mapping[str, int] | None) 
     return lambda s, loc, r: function(*[p(s, loc, r) for p in prepared])
 
 
-# For speed, `round(x)` and `clamp(x, lo, hi)` with constant bounds are computed
-# in the closure, without the call to FUNCTIONS' Python function.
-_ROUND = FUNCTIONS["round"]
-
-
-def _round(arg: m.Expr, a: Prepared, slots: Mapping[str, int] | None) -> Prepared:
-    scaled = _scaled(arg)
-    if scaled is not None:
-        # round(name * constant), a unit conversion: the whole of it in one closure.
-        binary, name, c = scaled
-        key = _key(name, slots)
-
-        def rounded_scaled(s: Mapping[str, m.Value], loc: Any, r: Sequence[m.Value]) -> m.Value:
-            v = loc[key]
-            x: Any = binary(v, c)
-            if not _MIN <= x <= _MAX:
-                x = _overflow(v, c, x)
-            try:
-                return round(x)
-            except (ValueError, OverflowError):
-                return _ROUND(x)  # raises the EvalError FUNCTIONS' round raises
-
-        return rounded_scaled
-
-    def rounded(s: Mapping[str, m.Value], loc: Any, r: Sequence[m.Value]) -> m.Value:
-        x: Any = a(s, loc, r)
-        try:
-            return round(x)
-        except (ValueError, OverflowError):
-            return _ROUND(x)  # raises the EvalError FUNCTIONS' round raises
-
-    return rounded
-
-
-def _scaled(expr: m.Expr) -> tuple[Callable[[Any, Any], Any], str, m.Value] | None:
-    """(operator, local name, constant) of `name op constant` that `_checked` computes, if `expr` is one."""
-    match expr:
-        case m.BinaryOp(op=op, left=m.Var(name=name, scope=scope), right=m.Const(value=c)) if (
-            op in _CHECKED and scope is not m.Scope.STATE and expr.left.type in _NUMBERS
-            and expr.right.type in _NUMBERS and _operator(expr) is BINARY[op] and not (op == "/" and c == 0)
+def _applied(function: Callable[[Any], Any], arg: m.Expr, slots: Mapping[str, int] | None) -> Prepared:
+    """`function(arg)`, the commonest shapes of the argument (a parameter or field, or one of
+    them with a constant: `round(velocity * 1000)`) read in the closure itself."""
+    match arg:
+        case m.Var(name=name, scope=m.Scope.STATE):
+            return lambda s, loc, r: function(s[name])
+        case m.Var(name=name):
+            key = _key(name, slots)
+            return lambda s, loc, r: function(loc[key])
+        case m.BinaryOp(left=m.Var(name=name, scope=scope), right=m.Const(value=c)) if (
+            arg.op not in ("and", "or") and scope is not m.Scope.STATE
         ):
-            return _CHECKED[op], name, c
-    return None
+            binary, key = _operation(arg), _key(name, slots)
+            return lambda s, loc, r: function(binary(loc[key], c))
+    a = prepare(arg, slots)
+    return lambda s, loc, r: function(a(s, loc, r))
 
 
-def _clamp(arg: m.Expr, a: Prepared, lo: m.Value, hi: m.Value, slots: Mapping[str, int] | None) -> Prepared:
-    if isinstance(arg, m.Var) and arg.scope is not m.Scope.STATE:
-        key = _key(arg.name, slots)
-        return lambda s, loc, r: lo if loc[key] < lo else hi if loc[key] > hi else loc[key]  # noqa: FURB136
-
-    def clamped(s: Mapping[str, m.Value], loc: Any, r: Sequence[m.Value]) -> m.Value:
-        x: Any = a(s, loc, r)
-        return lo if x < lo else hi if x > hi else x  # noqa: FURB136 - as FUNCTIONS["clamp"]
-
-    return clamped
+def _operation(e: m.BinaryOp) -> Callable[[Any, Any], Any]:
+    """What computes `e`: its function in rdisc.engine.operations, or Python's operator."""
+    operation = binary_operation(e)
+    return _PYTHON[e.op] if operation is None else getattr(operations, operation)
 
 
-# On two ints these operators of BINARY compute exactly what the plain ones do
-# (their checks are for floats and strings), and a plain one is a C call.
-_PLAIN_ON_INTS = {"+": operator.add, "-": operator.sub}  # `*` keeps its bound on ints
-
-
-def _operator(expr: m.BinaryOp) -> Callable[[Any, Any], Any]:
-    if expr.op in _PLAIN_ON_INTS and expr.left.type is m.Type.INT and expr.right.type is m.Type.INT:
-        return _PLAIN_ON_INTS[expr.op]
-    return BINARY[expr.op]
+# Python's operators, where rdisc.semantics.operators says one computes exactly what the
+# operation does: a C call, not a Python function's frame.
+_PYTHON: dict[str, Callable[[Any, Any], Any]] = {
+    "+": operator.add, "-": operator.sub, "*": operator.mul, "/": operator.truediv,
+    "//": operator.floordiv, "%": operator.mod, ">>": operator.rshift,
+    "&": operator.and_, "|": operator.or_, "^": operator.xor,
+    "==": operator.eq, "!=": operator.ne, "<": operator.lt, "<=": operator.le, ">": operator.gt, ">=": operator.ge,
+}
+_PYTHON_UNARY: dict[str, Callable[[Any], Any]] = {
+    "-": operator.neg, "+": operator.pos, "~": operator.invert, "not": operator.not_,
+}
 
 
 def _binary(binary: Callable[[Any, Any], Any], left: m.Expr, right: m.Expr,
             slots: Mapping[str, int] | None) -> Prepared:
-    """A binary operation, with its most common shapes (a name or a constant on either side) unrolled."""
+    """A binary operation of folded operands, its most common shapes (a name or a constant on
+    either side) unrolled."""
     match left, right:
-        case _, _ if _fold(right) is not None and not isinstance(right, m.Const):
-            return _binary(binary, left, _fold(right), slots)  # type: ignore[arg-type]
-        case _, _ if _fold(left) is not None and not isinstance(left, m.Const):
-            return _binary(binary, _fold(left), right, slots)  # type: ignore[arg-type]
         case m.Var(name=name, scope=m.Scope.STATE), m.Const(value=constant):
             if binary in _STATE_COMPARE:
                 return _STATE_COMPARE[binary](name, constant)
@@ -322,8 +257,8 @@ def _binary(binary: Callable[[Any, Any], Any], left: m.Expr, right: m.Expr,
     return lambda s, loc, r: binary(a(s, loc, r), b(s, loc, r))
 
 
-# A name compared with a constant, for speed: the comparison is made in the
-# closure rather than by calling BINARY's, which are these operator functions.
+# A name compared with a constant, for speed: the comparison is made in the closure
+# rather than by calling Python's operator function.
 _STATE_COMPARE: dict[Callable[[Any, Any], Any], Callable[[Any, Any], Prepared]] = {
     operator.eq: lambda key, c: lambda s, loc, r: s[key] == c,
     operator.ne: lambda key, c: lambda s, loc, r: s[key] != c,
@@ -340,70 +275,4 @@ _LOCAL_COMPARE: dict[Callable[[Any, Any], Any], Callable[[Any, Any], Prepared]] 
     operator.gt: lambda key, c: lambda s, loc, r: loc[key] > c,
     operator.ge: lambda key, c: lambda s, loc, r: loc[key] >= c,
 }
-assert all(BINARY[op] in _LOCAL_COMPARE for op in ("==", "!=", "<", "<=", ">", ">="))
-
-
-# Float arithmetic, for speed: BINARY's `+ - * /` on numbers with the overflow
-# check of `_checked_float` (rdisc.semantics.operators) done in the closure, no
-# wrapper frame. A result within +-_MAX is finite and needs no check; any other
-# (an infinity, NaN, a huge int) goes through `_overflow`, the check as written there.
-_NUMBERS = (m.Type.INT, m.Type.FLOAT)
-_CHECKED = {"+": operator.add, "-": operator.sub, "*": operator.mul, "/": operator.truediv}
-_MAX = sys.float_info.max
-_MIN = -_MAX
-
-
-def _overflow(a: Any, b: Any, result: Any) -> Any:
-    if isinstance(result, float) and math.isinf(result) and not (math.isinf(a) or math.isinf(b)):
-        raise EvalError("the result is too large for a float")
-    return result
-
-
-def _checked(op: str, left: m.Expr, right: m.Expr, slots: Mapping[str, int] | None) -> Prepared:
-    """`left op right` on two numbers, as BINARY[op] computes it (its checks inlined)."""
-    binary = _CHECKED[op]
-    if isinstance(right, m.Const) and not (op == "/" and right.value == 0):
-        c = right.value  # a constant divisor that is not 0 needs no zero check
-        if isinstance(left, m.Var):
-            name = left.name
-            if left.scope is m.Scope.STATE:
-                def state_const(s: Mapping[str, m.Value], loc: Any, r: Sequence[m.Value]) -> m.Value:
-                    a = s[name]
-                    result = binary(a, c)
-                    return result if _MIN <= result <= _MAX else _overflow(a, c, result)
-
-                return state_const
-            key = _key(name, slots)
-
-            def local_const(s: Mapping[str, m.Value], loc: Any, r: Sequence[m.Value]) -> m.Value:
-                a = loc[key]
-                result = binary(a, c)
-                return result if _MIN <= result <= _MAX else _overflow(a, c, result)
-
-            return local_const
-        fa = prepare(left, slots)
-
-        def expr_const(s: Mapping[str, m.Value], loc: Any, r: Sequence[m.Value]) -> m.Value:
-            a = fa(s, loc, r)
-            result = binary(a, c)
-            return result if _MIN <= result <= _MAX else _overflow(a, c, result)
-
-        return expr_const
-    fa, fb = prepare(left, slots), prepare(right, slots)
-    if op == "/":
-        def divide(s: Mapping[str, m.Value], loc: Any, r: Sequence[m.Value]) -> m.Value:
-            a: Any = fa(s, loc, r)
-            b: Any = fb(s, loc, r)
-            if b == 0:
-                raise EvalError("division by zero")  # as operators._div
-            result = a / b
-            return result if _MIN <= result <= _MAX else _overflow(a, b, result)
-
-        return divide
-
-    def exprs(s: Mapping[str, m.Value], loc: Any, r: Sequence[m.Value]) -> m.Value:
-        a, b = fa(s, loc, r), fb(s, loc, r)
-        result = binary(a, b)
-        return result if _MIN <= result <= _MAX else _overflow(a, b, result)
-
-    return exprs
+assert all(_PYTHON[op] in _LOCAL_COMPARE for op in ("==", "!=", "<", "<=", ">", ">="))

@@ -13,9 +13,9 @@ from collections import deque
 from collections.abc import Callable, Iterable
 
 from rdisc.diagnostics import Diagnostics, Label, abbreviate
+from rdisc.engine.operations import EvalError
 from rdisc.semantics import model as m
 from rdisc.semantics.model import Scope, Type
-from rdisc.semantics.operators import EvalError
 from rdisc.semantics.resolve import Symbols, suggest
 from rdisc.semantics.types import Env, Typer, describe
 from rdisc.semantics.units import CARRIERS, UNITS, carries, dimension_of

@@ -136,7 +136,7 @@ class IfElse:
 
 @dataclass(frozen=True, slots=True)
 class FuncCall:
-    func: str  # one of rdisc.semantics.operators.FUNCTIONS
+    func: str  # one of rdisc.engine.operations.FUNCTIONS
     args: tuple[Expr, ...]
     type: AnyType
     span: Span | None = _span

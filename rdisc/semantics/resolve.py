@@ -12,7 +12,7 @@ from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
 
 from rdisc.diagnostics import Diagnostics, Label
-from rdisc.semantics.operators import FUNCTIONS
+from rdisc.engine.operations import FUNCTIONS
 from rdisc.source import Span
 from rdisc.syntax import ast
 

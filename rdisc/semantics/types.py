@@ -12,10 +12,11 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 
 from rdisc.diagnostics import Diagnostics
+from rdisc.engine.operations import BINARY, FUNCTIONS, UNARY, EvalError, fits
 from rdisc.limits import MAX_ARRAY, MAX_INT
 from rdisc.semantics import model as m
 from rdisc.semantics.model import AnyType, Array, Scope, Type
-from rdisc.semantics.operators import BINARY, FUNCTIONS, UNARY, EvalError, fits, shown
+from rdisc.semantics.operators import shown
 from rdisc.semantics.resolve import suggest
 from rdisc.source import Span
 from rdisc.syntax import ast

@@ -8,9 +8,9 @@ import re
 import pytest
 
 from rdisc.diagnostics.codes import CODES
+from rdisc.engine.operations import FUNCTIONS
 from rdisc.semantics import check
 from rdisc.semantics.model import Type
-from rdisc.semantics.operators import FUNCTIONS
 
 
 def _words(text: str) -> set[str]:

@@ -9,8 +9,8 @@ from pathlib import Path
 
 from rdisc.compile import compile_path
 from rdisc.diagnostics.codes import CODES
+from rdisc.engine.operations import FUNCTIONS
 from rdisc.semantics.frames import CATALOGUE
-from rdisc.semantics.operators import FUNCTIONS
 
 DOC = Path(__file__).resolve().parents[2] / "docs" / "language.md"
 

@@ -1,6 +1,6 @@
 """Bytes as values: state holds them (`state firmware: bytes`), `b"..."` writes them, and
 `hex`, `ascii`, `encode`, `pack7`, `unpack7`, `+` and `==` work on them, in the runtime and a
-generated driver alike (the driver carries the functions' text from rdisc.semantics.operators);
+generated driver alike (the driver carries the functions' text from rdisc.engine.operations);
 constants are folded and refused at check time; all of it travels through JSON and the printer."""
 
 from __future__ import annotations
@@ -12,7 +12,7 @@ import pytest
 from rdisc.compile import compile_path
 from rdisc.diagnostics import Diagnostics
 from rdisc.emit.dump import dump
-from rdisc.emit.python_support import carried_text
+from rdisc.engine import carry
 from rdisc.semantics.budget import message_bytes
 from rdisc.syntax.parse import parse
 from rdisc.syntax.printer import print_module
@@ -209,3 +209,8 @@ primitive report_firmware() on link, frame sysex()
        2     1  terminator            F7
 """ in dump(model)
     assert message_bytes(model.primitives["report_firmware"], model.frames) == 3 + 5
+
+
+def carried_text() -> str:
+    """The operations' section of the carried engine: the module's body, as a driver carries it."""
+    return next(part for part in carry.sections() if part.module == "operations").body

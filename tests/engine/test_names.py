@@ -15,7 +15,6 @@ import pytest
 from conftest import cli_env, run_rdisc, untimed
 
 from rdisc.compile import compile_path
-from rdisc.emit import python_support as support
 from rdisc.emit.python import class_name, import_driver, to_python
 from rdisc.engine import carry
 from rdisc.runtime import load
@@ -77,10 +76,10 @@ def _top_level(text: str) -> list[str]:
 
 @pytest.mark.parametrize("example", sorted(path.name for path in (ROOT / "examples").glob("*.rdis")))
 def test_a_driver_binds_each_top_level_name_once(example) -> None:
-    """Every expression helper written in too, as the ROS node's conversions may ask."""
+    """The expression operations are carried whole, as the ROS node's conversions may ask."""
     compilation = compile_path(str(ROOT / "examples" / example))
     assert compilation.model is not None
-    names = _top_level(to_python(compilation.model, example, helpers=support.HELPERS))
+    names = _top_level(to_python(compilation.model, example))
     assert sorted({name for name in names if names.count(name) > 1}) == []
 
 
