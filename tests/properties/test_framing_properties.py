@@ -15,7 +15,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from rdisc.compile import compile_path
-from rdisc.runtime.codec import frame_fields, wire_frame
+from rdisc.runtime.codec import frame_fields
+from rdisc.runtime.device import wire_frame
 from rdisc.runtime.engine import (
     Bytes,
     Check,
