@@ -67,6 +67,8 @@ def _condition(takes: tuple[str, ...], params: tuple[m.Parameter, ...], e: m.Exp
 
 @dataclass(frozen=True, slots=True, eq=False)
 class Frame:
+    """engine.Frame: its parts each way as constructs, its fields' values a Code over the args."""
+
     name: str
     request: list[Construct[Any]]
     reply: list[Construct[Any]]
@@ -81,6 +83,8 @@ class Frame:
 
 @dataclass(frozen=True, slots=True, eq=False)
 class FrameUse:
+    """engine.FrameUse: a frame, and its arguments over the primitive's parameters."""
+
     frame: Frame
     args: Code
 
@@ -95,6 +99,8 @@ class Entry:
 
 @dataclass(frozen=True, slots=True, eq=False)
 class Primitive:
+    """engine.Primitive; `table`, its entries each with the values it is for."""
+
     name: str
     connection: str
     params: tuple[Construct[engine.Param], ...]
@@ -122,6 +128,8 @@ class Primitive:
 
 @dataclass(frozen=True, slots=True, eq=False)
 class Output:
+    """engine.Output."""
+
     name: str
     fields: Code
     adapter: str = ""
@@ -129,6 +137,8 @@ class Output:
 
 @dataclass(frozen=True, slots=True, eq=False)
 class Call:
+    """engine.Call: `direct`, the arguments are the primitive's format values."""
+
     target: Primitive | Interface
     args: Code
     delay: float = 0.0
@@ -139,6 +149,8 @@ class Call:
 
 @dataclass(frozen=True, slots=True, eq=False)
 class Interface:
+    """engine.Interface."""
+
     name: str
     params: tuple[Construct[engine.Param], ...]
     calls: tuple[Call, ...]
@@ -148,23 +160,29 @@ class Interface:
 
 @dataclass(frozen=True, slots=True, eq=False)
 class Input:
+    """engine.Input; `request`: the engine writes it at once, so a driver compiles that."""
+
     name: str
     adapter: str
     fields: tuple[Construct[engine.Param], ...]
     interface: Interface
     args: Code
     _: KW_ONLY
-    request: bool = False  # written at once (`engine._written_at_once`): a driver compiles its request
+    request: bool = False
 
 
 @dataclass(frozen=True, slots=True, eq=False)
 class Hook:
+    """engine.Hook."""
+
     interface: Interface
     args: Code  # takes the state only
 
 
 @dataclass(frozen=True, slots=True, eq=False)
 class Connection:
+    """engine.Connection."""
+
     name: str
     baud: int
     _: KW_ONLY
@@ -181,6 +199,8 @@ class Connection:
 
 @dataclass(frozen=True, slots=True, eq=False)
 class Device:
+    """engine.Device."""
+
     name: str
     state: Mapping[str, m.Value]
     connections: Mapping[str, Connection]
