@@ -113,6 +113,13 @@ class _Engine:
         made: T = self.done[plan]
         return made
 
+    def closure(self, code: plans.Code | None) -> Any:
+        """The function a Code says, made once however many plans share it."""
+        if code is None:
+            return None
+        made = {plans.Gives.LIST: _list, plans.Gives.DICT: _dict, plans.Gives.BOOL: _predicate}[code.gives]
+        return self.once(code, lambda: made(code))
+
     def device(self, d: plans.Device) -> engine.Device:
         return engine.Device(
             d.name, dict(d.state), {name: self.connection(c) for name, c in d.connections.items()},
@@ -122,13 +129,12 @@ class _Engine:
         )
 
     def frame(self, f: plans.Frame) -> engine.Frame:
-        fields = None if f.fields is None else _list(f.fields)
         return self.once(f, lambda: engine.Frame(
-            f.name, built(f.request), built(f.reply), built(f.stuffing), built(f.params), fields,
+            f.name, built(f.request), built(f.reply), built(f.stuffing), built(f.params), self.closure(f.fields),
             built(f.more_requests), built(f.more_replies), built(f.escaping)))
 
-    def use(self, use: plans.FrameUse | None) -> engine.FrameUse | None:
-        return None if use is None else engine.FrameUse(self.frame(use.frame), _list(use.args))
+    def use(self, use: plans.FrameUse) -> engine.FrameUse:
+        return engine.FrameUse(self.frame(use.frame), self.closure(use.args))
 
     def primitive(self, p: plans.Primitive) -> engine.Primitive:
         return self.once(p, lambda: self._primitive(p))
@@ -138,16 +144,15 @@ class _Engine:
         if p.table is not None:  # a range entry's plan once, for each of its values
             table = {value: self.primitive(entry.plan) for entry in p.table for value in entry.case.values()}
         return engine.Primitive(
-            p.name, p.connection, built(p.params), _list(p.values), built(p.encoder), built(p.decoder),
-            None if p.actions is None else _dict(p.actions), self.use(p.frame), p.skip, p.timeout, table, p.key,
-            p.tag, p.each, p.length, p.records, p.checked, expect=None if p.expect is None else _predicate(p.expect),
-            lines=None if p.lines is None else _dict(p.lines), replies=p.replies,
-            reply_frames=tuple(engine.FrameUse(self.frame(u.frame), _list(u.args)) for u in p.reply_frames),
+            p.name, p.connection, built(p.params), self.closure(p.values), built(p.encoder), built(p.decoder),
+            self.closure(p.actions), None if p.frame is None else self.use(p.frame), p.skip, p.timeout, table, p.key, p.tag, p.each, p.length,
+            p.records, p.checked, expect=self.closure(p.expect), lines=self.closure(p.lines), replies=p.replies,
+            reply_frames=tuple(self.use(u) for u in p.reply_frames),
             answers=tuple(self.primitive(answer) for answer in p.answers),
         )
 
     def output(self, o: plans.Output) -> engine.Output:
-        return self.once(o, lambda: engine.Output(o.name, _dict(o.fields), o.adapter))
+        return self.once(o, lambda: engine.Output(o.name, self.closure(o.fields), o.adapter))
 
     def interface(self, i: plans.Interface) -> engine.Interface:
         return self.once(i, lambda: engine.Interface(i.name, built(i.params), tuple(self.call(c) for c in i.calls),
@@ -155,16 +160,16 @@ class _Engine:
 
     def call(self, c: plans.Call) -> engine.Call:
         target = self.primitive(c.target) if isinstance(c.target, plans.Primitive) else self.interface(c.target)
-        return engine.Call(target, _list(c.args), c.delay, c.direct, None if c.when is None else _predicate(c.when))
+        return engine.Call(target, self.closure(c.args), c.delay, c.direct, self.closure(c.when))
 
     def input(self, i: plans.Input) -> engine.Input:
-        made = engine.Input(i.name, i.adapter, built(i.fields), self.interface(i.interface), _list(i.args))
+        made = engine.Input(i.name, i.adapter, built(i.fields), self.interface(i.interface), self.closure(i.args))
         assert (made.request is not None) == i.request, f"{i.name}: the lowering and the engine disagree"
         return made
 
     def connection(self, c: plans.Connection) -> engine.Connection:
         def hook(h: plans.Hook | None) -> engine.Hook | None:
-            return None if h is None else engine.Hook(self.interface(h.interface), _list(h.args))
+            return None if h is None else engine.Hook(self.interface(h.interface), self.closure(h.args))
 
         return engine.Connection(
             c.name, c.baud, c.address, c.terminator, c.frequency, tuple(self.interface(i) for i in c.periodic),
