@@ -19,21 +19,21 @@ Model and source name give byte-identical text.
 
 from __future__ import annotations
 
+import dataclasses
 import functools
 import keyword
 import os
 from collections.abc import Iterable, Mapping
 from types import ModuleType
-from typing import NoReturn
 
 from rdisc import engine
+from rdisc import lower as lowering
 from rdisc.emit import python_support as support
 from rdisc.emit.python_expr import Chain, Compiler, Paren, Py, lines, literal, quoted, table_name
 from rdisc.emit.writer import Writer, printable
 from rdisc.engine import carry
-from rdisc.runtime.codec import bit_fields, decoder, encoder, escape_table, frame_fields
-from rdisc.runtime.device import Description
-from rdisc.runtime.messages import recorded_messages
+from rdisc.lower import lower
+from rdisc.runtime.codec import Construct
 from rdisc.semantics import model as m
 from rdisc.semantics.model import Type
 from rdisc.source import SourceFile, Span, place
@@ -42,6 +42,9 @@ from rdisc.syntax import precedence as p
 __all__ = ["import_driver", "to_python"]
 
 _PY_TYPES = {Type.INT: "int", Type.FLOAT: "float", Type.BOOL: "bool", Type.STRING: "str", Type.BYTES: "bytes"}
+
+
+_SIGNATURE = {"state": "state: StateValues", "args": "args: Args", "reply": "reply: Sequence[Any]"}
 
 
 def _sample(type_: m.AnyType, comma: str) -> str:
@@ -214,6 +217,7 @@ class _Driver:
                                         ("connection", "C", model.connections), ("frame", "FRAME", model.frames))
             for name in names
         }
+        self.names: dict[object, str] = {}  # each plan and Code written: the name it has in the module
         self.input_methods: dict[str, str] = {}
         for name in model.inputs:
             self.input_methods[name] = _escape(name, _robot_members() | set(self.input_methods.values()))
@@ -230,7 +234,7 @@ class _Driver:
             w.comment(f"{where}" + (f"  {what}" if what else ""))
 
     def function(self, w: Writer, name: str, signature: str, params: tuple[m.Parameter, ...] | None,
-                 values: Iterable[tuple[str, m.Expr, Type | None]], returns: str) -> None:
+                 values: Iterable[lowering.Item], returns: str) -> None:
         """`def name(signature) -> returns:` whose body unpacks `args` into the parameters'
         names and returns a list (keys None) or a dict of the expressions' values, each bound
         to its type where one is given."""
@@ -327,8 +331,10 @@ class _Driver:
     # -- plans ---------------------------------------------------------------------------------------
 
     def plans(self, w: Writer) -> None:
+        """The lowered plans (`rdisc.lower`), each Code a function, each plan a constant."""
         model = self.model
-        runs = Description(model).device.inputs  # the engine decides which inputs are written at once
+        lowered = lower(model)
+        device = lowered.device
         for table in model.tables.values():
             w.blank(2)
             entries = ", ".join(f"{literal(k, table.key_type).text}: {literal(v, table.value_type).text}"
@@ -339,67 +345,51 @@ class _Driver:
         for frame in model.frames.values():
             w.blank(2)
             self.comment(w, frame.span, f"frame {frame.name}")
-            values = frame_fields(frame)
-            if values:
-                function = f"_f_{frame.name}"
-                self.function(w, function, "args: Args", frame.params, [("", e, None) for _, e in values],
-                              "list[Any]")
+            framed = lowered.frames[frame.name]
+            if framed.fields is not None:
+                self.code(w, f"_f_{frame.name}", framed.fields)
                 w.blank(2)
-            _emit(w, f"{self.plan['frame', frame.name]} = ", Py(_frame(frame, function if values else None), p.ATOM))
+            self.constant(w, self.plan["frame", frame.name], framed)
         for prim in model.primitives.values():
             w.blank(2)
-            self.primitive(w, prim)
+            self.primitive(w, prim, device.primitives[prim.name])
         for o in model.outputs.values():
             w.blank(2)
             self.comment(w, o.span, f"output {o.name}: {o.adapter}")
-            types = {f.name: f.type for f in model.adapters[o.adapter].fields}
-            function = f"_o_{o.name}"
-            self.function(w, function, "state: StateValues", None,
-                          [(name, e, types.get(name, e.type)) for name, e in o.fields], "dict[str, Value]")
+            output = lowered.outputs[o.name]
+            self.code(w, f"_o_{o.name}", output.fields)
             w.blank(2)
-            w.line(f"{self.plan['output', o.name]} = Output({quoted(o.name)}, {function}, {quoted(o.adapter)})")
+            self.constant(w, self.plan["output", o.name], output)
         for iface in model.callees_first():
             w.blank(2)
-            self.interface(w, iface)
+            self.interface(w, iface, device.interfaces[iface.name])
         for i in model.inputs.values():
             w.blank(2)
             self.comment(w, i.span, f"input {i.name}: {i.adapter} -> {i.interface}")
-            adapter = model.adapters[i.adapter]
-            fields = tuple(m.Parameter(f.name, f.type) for f in adapter.fields)
-            params = model.interfaces[i.interface].params
-            self.function(w, f"_in_{i.name}", "state: StateValues, args: Args", fields,
-                          [("", a, None) for a, _ in zip(i.args, params)], "Args")
-            options = {}
-            if runs[i.name].request is not None:
-                options["request"] = self.request(w, i, fields)
+            plan = device.inputs[i.name]
+            self.code(w, f"_in_{i.name}", plan.args)
+            request = {"request": self.request(w, i, plan)} if plan.request else {}
             w.blank(2)
-            _construct(w, f"{self.plan['input', i.name]} = ", "Input", [
-                quoted(i.name), quoted(i.adapter), _param_tuple(fields), self.plan["interface", i.interface],
-                f"_in_{i.name}"], options)
+            self.constant(w, self.plan["input", i.name], plan, request)
         for c in model.connections.values():
             w.blank(2)
-            self.connection(w, c)
+            baud = f"{c.baud} baud" if c.baud_setting is None else f"baud {c.baud_setting} ({c.baud} unless given)"
+            self.comment(w, c.span, f"connection {c.name}: {c.kind}, {baud}")
+            self.constant(w, self.plan["connection", c.name], device.connections[c.name])
         w.blank(2)
-        state = ", ".join([*(f"{quoted(s.name)}: {literal(s.default, s.type).text}" for s in model.settings.values()),
-                           *(f"{quoted(s.name)}: {literal(s.initial, s.type).text}" for s in model.states.values())])
-        by_name = {kind: ", ".join(f"{quoted(name)}: {self.plan[kind, name]}" for name in names)
-                   for kind, names in (("connection", model.connections), ("primitive", model.primitives),
-                                       ("interface", model.interfaces), ("input", model.inputs))}
-        settings = {"settings": "_SETTINGS"} if model.settings else {}
-        messages = recorded_messages(model)
-        if messages:
-            settings["messages"] = "_MESSAGES"
-            self.messages(w, messages)
-        if model.settings:
+        named = {"name": "ROBOT"}
+        if device.messages:
+            named["messages"] = "_MESSAGES"
+            self.messages(w, device.messages)
+        if device.settings:
+            named["settings"] = "_SETTINGS"
             w.line("_SETTINGS = (")
             with w.indented():
-                w.lines([f"{item}," for item in _param_items(_setting_params(model))])
+                w.lines([f"{self.text(setting)}," for setting in device.settings])
             w.line(")")
             w.line('"""The settings, given when connecting (`connect(port, NAME=value)`, `--set NAME=VALUE`)."""')
             w.blank(2)
-        _construct(w, "_DEVICE = ", "Device", [
-            "ROBOT", f"{{{state}}}", f"{{{by_name['connection']}}}", f"{{{by_name['primitive']}}}",
-            f"{{{by_name['interface']}}}", f"{{{by_name['input']}}}"], settings)
+        self.constant(w, "_DEVICE", device, named)
         w.line('"""The whole description, planned: what the robot runs."""')
 
     @staticmethod
@@ -420,20 +410,86 @@ class _Driver:
         w.line('"""Each adapter\'s ROS 2 message, as a recording (`--record`) carries it."""')
         w.blank(2)
 
-    def request(self, w: Writer, i: m.DomainInput, fields: tuple[m.Parameter, ...]) -> str:
+    def code(self, w: Writer, name: str, code: lowering.Code) -> None:
+        """`def name(...)` computing what `code` says; plans refer to it by that name."""
+        self.names[code] = name
+        signature = ", ".join(_SIGNATURE[taken] for taken in code.takes)
+        if code.gives is lowering.Gives.BOOL:
+            ((_, condition, _),) = code.items
+            self.predicate(w, name, signature, code.params, condition)
+        else:
+            returns = "Args" if code.gives is lowering.Gives.LIST else "dict[str, Value]"
+            self.function(w, name, signature, code.params, code.items, returns)
+
+    def constant(self, w: Writer, name: str, plan: object, given: Mapping[str, str] = {}) -> None:
+        """`name = Plan(...)`, one argument a line when long; `given`: fields written as these names."""
+        self.names[plan] = name
+        args, options = self.arguments(plan, given)
+        _construct(w, f"{name} = ", type(plan).__name__, args, options)
+
+    def arguments(self, made: object, given: Mapping[str, str] = {}) -> tuple[list[str], dict[str, str]]:
+        """The constructor arguments of a plan or a construct, as text: a plan's fields before
+        `KW_ONLY` in order (those left at their defaults at the end left out, unless an option
+        follows), the others by keyword when not at their defaults."""
+        if isinstance(made, Construct):
+            return [self.text(a) for a in made.args], {key: self.text(value) for key, value in made.options}
+        positional: list[tuple[str, bool]] = []
+        options: dict[str, str] = {}
+        for f in dataclasses.fields(made):  # type: ignore[arg-type]
+            value = getattr(made, f.name)
+            default = f.default_factory() if f.default_factory is not dataclasses.MISSING else f.default
+            text = given.get(f.name) or self.text(value)
+            if not f.kw_only:
+                positional.append((text, default is not dataclasses.MISSING and value == default))
+            elif f.name in given or value != default:
+                options[f.name] = text
+        while positional and positional[-1][1] and not options:
+            positional.pop()
+        return [text for text, _ in positional], options
+
+    def text(self, value: object) -> str:
+        """A value of a plan as Python: a named plan or Code by its name, another plan or a
+        construct as its constructor call, a hook's Code as a lambda, data through repr."""
+        match value:
+            case lowering.Code() if value not in self.names:  # a hook's arguments, over state
+                items = ", ".join(self.exprs.expr(e, {}).text for _, e, _ in value.items)
+                return f"lambda state: [{items}]"
+            case (lowering.Code() | lowering.Frame() | lowering.Primitive() | lowering.Interface() | lowering.Output() | lowering.Input()
+                  | lowering.Connection()):
+                return self.names[value]
+            case Construct() | lowering.Call() | lowering.FrameUse() | lowering.Hook():
+                args, options = self.arguments(value)
+                return f"{_kind(value)}({', '.join([*args, *(f'{k}={v}' for k, v in options.items())])})"
+            case type():
+                return value.__name__
+            case bool() | None:
+                return repr(value)
+            case int():
+                return repr(value)
+            case float():
+                return literal(value, Type.FLOAT).text
+            case str() | bytes():
+                return quoted(value)
+            case tuple():
+                return _tuple([self.text(v) for v in value])
+            case list():
+                return "[" + ", ".join(self.text(v) for v in value) + "]"
+            case dict():
+                return "{" + ", ".join(f"{self.text(k)}: {self.text(v)}" for k, v in value.items()) + "}"
+        raise AssertionError(f"no text for a {type(value).__name__}")
+
+    def request(self, w: Writer, i: m.DomainInput, plan: lowering.Input) -> str:
         """The input's request in one step (the engine's `Input.request`): the input's and the
         call's expressions one after the other, packed. Returns the function's name."""
-        iface = self.model.interfaces[i.interface]
-        (call,) = iface.calls
-        prim = self.model.primitives[call.primitive]
-        values = _direct(prim, call)
-        assert values is not None and isinstance(prim.encoding, m.Pack)  # as the engine requires
+        (call,) = plan.interface.calls
+        assert isinstance(call.target, lowering.Primitive) and call.target.encoder is not None  # `request`
         pack = _constant_name(f"PACK_{i.name}", self.taken)
         w.blank(2)
-        w.line(f"{pack} = struct.Struct({quoted(prim.encoding.format)}).pack")
+        w.line(f"{pack} = struct.Struct({quoted(call.target.encoder.args[0])}).pack")
+        fields, iface_params = plan.args.params, call.args.params
         local = _params([(f.name, f.type) for f in fields])
-        inner = _params([(prm.name, prm.type) for prm in iface.params], _body_names() | set(local.values()))
-        used = set().union(*(_names(e) for _, e, _ in values))
+        inner = _params([(prm.name, prm.type) for prm in iface_params], _body_names() | set(local.values()))
+        used = set().union(*(_names(e) for _, e, _ in call.args.items))
         function = f"_request_{i.name}"
         w.blank(2)
         w.line(f"# input {i.name}, written at once")
@@ -446,136 +502,66 @@ class _Driver:
                 with w.block(f"if {checks}:"):
                     w.line("return None")
             with w.block("try:"):
-                if iface.params:
-                    targets = [inner[prm.name] if prm.name in used else "_" for prm in iface.params]
-                    bound = [self.exprs.bound(a, prm.type, local) for a, prm in zip(i.args, iface.params)]
+                if iface_params:
+                    targets = [inner[prm.name] if prm.name in used else "_" for prm in iface_params]
+                    bound = [self.exprs.bound(e, prm.type, local) for (_, e, _), prm in zip(plan.args.items, iface_params)]
                     _items(w, f"{', '.join(targets)} = ", "(", bound, ")" if len(bound) > 1 else "")
                 packed = [self.exprs.bound(e, t, inner) if t is not None else self.exprs.expr(e, inner)
-                          for _, e, t in values]
+                          for _, e, t in call.args.items]
                 _items(w, "return ", f"{pack}(", packed, ")")
             with w.block("except Exception:  # noqa: BLE001 - the general way says what is wrong"):
                 w.line("return None")
         return function
 
-    def primitive(self, w: Writer, prim: m.Primitive) -> None:
+    def primitive(self, w: Writer, prim: m.Primitive, plan: lowering.Primitive) -> None:
         self.comment(w, prim.span, f"primitive {prim.name}")
-        base = f"_p_{prim.name}"
-        signature = "state: StateValues, args: Args"
-        spreads = prim.spreads()
-        self.function(w, f"{base}_values", signature, prim.params,
-                      [("*" if i in spreads else "", a, None) for i, a in enumerate(prim.args)], "Args")
-        if prim.frame is not None:
-            w.blank(2)
-            self.function(w, f"{base}_frame", signature, prim.params, [("", a, None) for a in prim.frame.args],
-                          "Args")
-            fields = f"FrameUse({self.plan['frame', prim.frame.frame]}, {base}_frame)"
-        else:
-            fields = "None"
-        const = self.plan["primitive", prim.name]
-        common = [quoted(prim.name), quoted(prim.connection), _param_tuple(prim.params), f"{base}_values",
-                  _codec(None if prim.encoding is None else encoder(prim.encoding))]
-        options = {"frame": fields} if prim.frame is not None else {}
-        if prim.lines:
-            options["lines"] = f"{base}_lines"
-            w.blank(2)
-            self.function(w, options["lines"], signature, prim.params,
-                          [(level.line, level.value, Type.BOOL) for level in prim.lines], "dict[str, Value]")
-        if prim.skip_unmatched:
-            options["skip"] = "True"
-        if prim.timeout_ms is not None:
-            options["timeout"] = repr(prim.timeout_ms / 1000.0)
-        if prim.replies:
-            options["replies"] = str(prim.replies)
-        if prim.reply_frames:
-            uses = []
-            for n, use in enumerate(prim.reply_frames):
+        base, const = f"_p_{prim.name}", self.plan["primitive", prim.name]
+        self.code(w, f"{base}_values", plan.values)
+        functions = [("frame", None if plan.frame is None else plan.frame.args), ("lines", plan.lines),
+                     *((f"reply_frame_{n}", use.args) for n, use in enumerate(plan.reply_frames)),
+                     ("expect", plan.expect)]
+        for suffix, code in functions:
+            if code is not None:
                 w.blank(2)
-                self.function(w, f"{base}_reply_frame_{n}", signature, prim.params,
-                              [("", a, None) for a in use.args], "Args")
-                uses.append(f"FrameUse({self.plan['frame', use.frame]}, {base}_reply_frame_{n})")
-            options["reply_frames"] = _tuple(uses)
-        if prim.expect is not None:
-            options["expect"] = f"{base}_expect"
+                self.code(w, f"{base}_{suffix}", code)
+        for n, answer in enumerate(plan.answers, 1):  # each its own plan: frame, decoder, expect, post-actions
+            own = (("frame", None if answer.frame is None else answer.frame.args), ("expect", answer.expect),
+                   ("actions", answer.actions))
+            for suffix, code in own:
+                if code is not None and code not in self.names:
+                    w.blank(2)
+                    self.code(w, f"{base}_reply_{n}_{suffix}", code)
             w.blank(2)
-            self.predicate(w, options["expect"], f"{signature}, reply: Sequence[Any]", prim.reply_locals(),
-                           prim.expect)
-        answers: list[str] = []
-        for n, listed in enumerate(prim.listed, 1):  # each its own plan: frame, decoder, expect, post-actions
-            own = {key: value for key, value in options.items() if key != "frame"}
-            own_frame = listed.frame or prim.frame
-            if own_frame is not None:
-                w.blank(2)
-                self.function(w, f"{base}_reply_{n}_frame", signature, prim.params,
-                              [("", a, None) for a in own_frame.args], "Args")
-                own["frame"] = f"FrameUse({self.plan['frame', own_frame.frame]}, {base}_reply_{n}_frame)"
-            own["decoder"] = _codec(decoder(listed.decoding))
-            if listed.expect is not None:
-                own["expect"] = f"{base}_reply_{n}_expect"
-                w.blank(2)
-                self.predicate(w, own["expect"], f"{signature}, reply: Sequence[Any]", prim.params, listed.expect)
-            self.post_actions(w, f"{base}_reply_{n}_actions", prim, listed.actions, own)
-            w.blank(2)
-            w.line(f"# reply {n} of {len(prim.listed)}")
-            _construct(w, f"{const}_REPLY_{n} = ", "Primitive", common, own)
-            answers.append(f"{const}_REPLY_{n}")
-        if answers:
-            options["answers"] = _tuple(answers)
-        if prim.records is not None:
-            options["records"] = repr(prim.records.encode("latin-1"))
-        cases = [(prim, None)] if prim.table is None else [(prim.case(c), c) for c in prim.table.cases]
+            w.line(f"# reply {n} of {len(plan.answers)}")
+            self.constant(w, f"{const}_REPLY_{n}", answer)
+        entries = [(None, plan)] if plan.table is None else [(entry.case, entry.plan) for entry in plan.table]
         table: list[str] = []
-        for case, entry in cases:
-            name = const if entry is None else f"{const}_{_case(entry).upper()}"
-            own = dict(options)
-            if case.decoding is not None:
-                own["decoder"] = _codec(decoder(case.decoding))
-            self.post_actions(w, f"{base}_actions" if entry is None else f"{base}_{_case(entry)}_actions", prim,
-                              case.actions, own)
+        for case, entry in entries:
+            name = const if case is None else f"{const}_{_case(case).upper()}"
+            if entry.actions is not None and entry.actions not in self.names:
+                w.blank(2)
+                self.code(w, f"{base}_actions" if case is None else f"{base}_{_case(case)}_actions", entry.actions)
             w.blank(2)
-            if entry is not None:
-                w.line(f"# reply {entry.values_text()}")
-                table.append(f"{entry.value}: {name}" if entry.last is None
-                             else f"**dict.fromkeys({entry.values()!r}, {name})")  # a range entry
-            _construct(w, f"{name} = ", "Primitive", common, own)
-        if prim.table is not None:
-            options["table"] = "{" + ", ".join(table) + "}"
-            if len(f"    table={options['table']},") > w.width():  # its own constant, an entry a line
+            if case is not None:
+                w.line(f"# reply {case.values_text()}")
+                table.append(f"{case.value}: {name}" if case.last is None
+                             else f"**dict.fromkeys({case.values()!r}, {name})")  # a range entry
+            self.constant(w, name, entry)
+        if plan.table is not None:
+            entries_text = "{" + ", ".join(table) + "}"
+            if len(f"    table={entries_text},") > w.width():  # its own constant, an entry a line
                 w.blank(2)
                 w.line(f"{const}_TABLE = {{")
                 with w.indented():
                     w.lines([f"{item}," for item in table])
                 w.line("}")
-                options["table"] = f"{const}_TABLE"
-            if prim.table.tag is not None:
-                options["tag"] = quoted(prim.table.tag)
-                if prim.table.each:
-                    options["each"] = "True"
-                if prim.table.length is not None:
-                    options["length"] = quoted(prim.table.length)
-            else:
-                options["key"] = str(next(i for i, prm in enumerate(prim.params) if prm.name == prim.table.key))
+                entries_text = f"{const}_TABLE"
             w.blank(2)
-            _construct(w, f"{const} = ", "Primitive", common, options)
+            self.constant(w, const, plan, {"table": entries_text})
 
-    def post_actions(self, w: Writer, name: str, prim: m.Primitive, actions: tuple[m.PostAction, ...],
-                     options: dict[str, str]) -> None:
-        """The function of a reply's post-actions, if it has any, named in `options` with the
-        state variables they may make too wide."""
-        if not actions:
-            return
-        options["actions"] = name
-        states = self.model.states
-        w.blank(2)
-        self.function(w, name, "state: StateValues, args: Args, reply: Sequence[Any]", prim.reply_locals(),
-                      [(a.target, a.value, states[a.target].type) for a in actions], "dict[str, Value]")
-        checked = [quoted(a.target) for a in actions if states[a.target].type is Type.INT and m.may_outgrow(a.value)]
-        if checked:
-            options["checked"] = _tuple(checked)
-
-    def interface(self, w: Writer, iface: m.Interface) -> None:
+    def interface(self, w: Writer, iface: m.Interface, plan: lowering.Interface) -> None:
         self.comment(w, iface.span, f"interface {iface.name}" + (" (periodic)" if iface.periodic else ""))
-        calls = []
-        for n, c in enumerate(iface.run_order(), 1):
+        for n, (c, call) in enumerate(zip(iface.run_order(), plan.calls), 1):
             function = f"_i_{iface.name}_{n}"
             if n > 1:
                 w.blank(2)
@@ -583,49 +569,13 @@ class _Driver:
             said += [f"delay {c.delay_ms:g} ms"] if c.delay_ms else []
             said += ["when ..."] if c.when is not None else []
             self.comment(w, c.span, ", ".join([f"call {'interface ' if c.interface else ''}{c.primitive}", *said]))
-            direct = None if c.interface else _direct(self.model.primitives[c.primitive], c)
-            self.function(w, function, "state: StateValues, args: Args", iface.params,
-                          direct if direct is not None else [("", a, None) for a in c.args], "Args")
-            delay = f", {c.delay_ms / 1000.0!r}" if c.delay_ms or direct is not None else ""
-            options = ", direct=True" if direct is not None else ""
-            if c.when is not None:
+            self.code(w, function, call.args)
+            if call.when is not None:
                 w.blank(2)
-                self.predicate(w, f"{function}_when", "state: StateValues, args: Args", iface.params, c.when)
-                options += f", when={function}_when"
-            target = self.plan["interface" if c.interface else "primitive", c.primitive]
-            calls.append(f"Call({target}, {function}{delay}{options})")
-        if calls:
+                self.code(w, f"{function}_when", call.when)
+        if plan.calls:
             w.blank(2)
-        output = {"outputs": _tuple([self.plan["output", o] for o in iface.triggers])} if iface.triggers else {}
-        _construct(w, f"{self.plan['interface', iface.name]} = ", "Interface",
-                   [quoted(iface.name), _param_tuple(iface.params), _tuple(calls)], output)
-
-    def connection(self, w: Writer, c: m.Connection) -> None:
-        baud = f"{c.baud} baud" if c.baud_setting is None else f"baud {c.baud_setting} ({c.baud} unless given)"
-        self.comment(w, c.span, f"connection {c.name}: {c.kind}, {baud}")
-        periodic = [self.plan["interface", i.name] for i in self.model.interfaces.values()
-                    if i.periodic and self.model.owner(i) == c.name]
-
-        def hook(call: m.HookCall) -> str:
-            args = [self.exprs.expr(a, {}).text for a in call.args]
-            return f"Hook({self.plan['interface', call.interface]}, lambda state: [{', '.join(args)}])"
-
-        options = {"address": quoted(c.address)} if c.address is not None else {}
-        if c.terminator != "\n":
-            options["terminator"] = quoted(c.terminator_bytes())
-        if c.frequency_hz:
-            options["frequency"] = repr(float(c.frequency_hz))
-        if periodic:
-            options["periodic"] = _tuple(periodic)
-        for event, call in (("startup", c.startup), ("terminate", c.terminate),
-                            ("keepalive", c.keepalive.call if c.keepalive else None)):
-            if call is not None:
-                options[event] = hook(call)
-        if c.keepalive is not None:
-            options["interval"] = repr(c.keepalive.interval_ms / 1000.0)
-        if c.baud_setting is not None:
-            options["baud_setting"] = quoted(c.baud_setting)
-        _construct(w, f"{self.plan['connection', c.name]} = ", "Connection", [quoted(c.name), str(c.baud)], options)
+        self.constant(w, self.plan["interface", iface.name], plan)
 
     # -- the typed face --------------------------------------------------------------------------
 
@@ -807,48 +757,9 @@ class _Driver:
 # ---- small pieces ------------------------------------------------------------------------------
 
 
-def _direct(prim: m.Primitive, call: m.PrimitiveCall) -> list[tuple[str, m.Expr, Type | None]] | None:
-    """A call's values as the primitive's format values, computed straight from the call's
-    arguments, when that changes nothing (`formats_its_params`, as the runtime's planner decides)."""
-    if not prim.formats_its_params():
-        return None
-    by_param = {prm.name: (prm, arg) for prm, arg in zip(prim.params, call.args)}
-    values: list[tuple[str, m.Expr, Type | None]] = []
-    for arg in prim.args:
-        if isinstance(arg, m.Var):
-            prm, expr = by_param[arg.name]
-            values.append(("", expr, prm.type))
-        else:
-            values.append(("", arg, None))
-    return values
-
-
 def _names(e: m.Expr) -> set[str]:
     """The parameters and fields an expression reads."""
     return {v.name for v in m.variables(e) if v.scope is not m.Scope.STATE}
-
-
-def _setting_params(model: m.Model) -> tuple[m.Parameter, ...]:
-    """The settings as the engine takes them: parameters of the whole description."""
-    return tuple(m.Parameter(s.name, s.type, s.low, s.high, s.default) for s in model.settings.values())
-
-
-def _param_tuple(params: tuple[m.Parameter, ...]) -> str:
-    return _tuple(_param_items(params))
-
-
-def _param_items(params: tuple[m.Parameter, ...]) -> list[str]:
-    """Each parameter's `Param(...)` constructor."""
-    items = []
-    for prm in params:
-        bounds = f", {prm.low!r}, {prm.high!r}" if prm.low is not None else ""
-        default = f", default={literal(prm.default, prm.type).text}" if prm.default is not None else ""
-        if isinstance(prm.type, m.Array):
-            items.append(f"Param({quoted(prm.name)}, {_PY_TYPES[prm.type.element]}{bounds}{default}, "
-                         f"size={prm.type.size})")
-        else:
-            items.append(f"Param({quoted(prm.name)}, {_PY_TYPES[prm.type]}{bounds}{default})")
-    return items
 
 
 def _construct(w: Writer, prefix: str, name: str, args: list[str], options: Mapping[str, str] = {}) -> None:
@@ -864,75 +775,15 @@ def _construct(w: Writer, prefix: str, name: str, args: list[str], options: Mapp
     w.line(")")
 
 
-def _codec(codec: object) -> str:
-    """The constructor of an encoder or a decoder."""
-    match codec:
-        case None:
-            return "None"
-        case engine.Pack() | engine.Unpack():
-            options = (f", strings={codec.strings!r}" if codec.strings else "") + (", rest=True" if codec.rest else "")
-            options += f", groups={codec.groups!r}" if codec.groups else ""
-            options += f", varying={codec.varying!r}" if codec.varying else ""
-            options += f", bits={codec.bits!r}" if codec.bits else ""
-            options += f", until={codec.until!r}" if isinstance(codec, engine.Unpack) and codec.until else ""
-            return f"{type(codec).__name__}({quoted(codec.struct.format)}{options})"
-        case engine.Format():
-            return f"Format({quoted(codec.template)})"
-        case engine.Match():
-            return f"Match({quoted(codec.pattern)})"
-    raise AssertionError(codec)
+def _kind(made: object) -> str:
+    """The name of what a constructor call makes."""
+    return made.kind.__name__ if isinstance(made, Construct) else type(made).__name__
 
 
 def _case(case: m.ReplyCase) -> str:
     """A reply table entry's value in names: 7, or m7 for -7; 224_239 for a range."""
     first, last = (f"m{-v}" if v < 0 else str(v) for v in (case.value, case.value if case.last is None else case.last))
     return first if case.last is None else f"{first}_{last}"
-
-
-def _frame(frame: m.Frame, fields: str | None) -> str:
-    """The constructor of a frame, as the engine takes it; `fields`: the function of its field values."""
-    index = {key: i for i, key in enumerate(frame_fields(frame))}
-    request, reply = (", ".join(_frame_part(part, index) for part in parts) for parts in (frame.request, frame.reply))
-    stuffing = ""
-    if frame.stuffing is not None:
-        reserved, escape = (text.encode("latin-1") for text in frame.stuffing)
-        stuffing = f", Stuffing({reserved!r}, {escape!r})"
-    options = stuffing
-    if frame.params:
-        options += f", params={_param_tuple(frame.params)}"
-    if fields is not None:
-        options += f", fields={fields}"
-    for word, layouts in (("more_requests", frame.more_requests), ("more_replies", frame.more_replies)):
-        if layouts:
-            options += f", {word}=[" + ", ".join(
-                "[" + ", ".join(_frame_part(part, index) for part in parts) + "]" for parts in layouts) + "]"
-    if frame.escaping is not None:
-        options += f", escaping=Escaping({frame.escaping.escape.encode('latin-1')!r}, {escape_table(frame.escaping)!r})"
-    return f"Frame({quoted(frame.name)}, [{request}], [{reply}]{options})"
-
-
-def _frame_part(part: m.FramePart, index: Mapping[tuple[str, m.Expr], int]) -> str:
-    match part:
-        case m.FrameBytes(role=role, data=data):
-            return f"Bytes({quoted(role)}, {data.encode('latin-1')!r})"
-        case m.FrameField(name=name, format=fmt, value=value):
-            return f"Field({quoted(name)}, {quoted(fmt)}, {index[(name, value)]})"
-        case m.FrameLength(format=fmt, adjust=adjust):
-            return f"Length({quoted(fmt)}, {adjust})"
-        case m.FramePayload():
-            return "Payload()"
-        case m.FrameChecksum(algorithm=a):
-            options = [f"{a.poly:#x}", f"{a.init:#x}", repr(a.reflect_in), repr(a.reflect_out), f"{a.xorout:#x}",
-                       repr(a.inverted), repr(a.mask)]
-            args = ", ".join([quoted(a.kind), str(a.width), *options])
-            fmt = quoted(part.format) if part.format is not None else "None"
-            return f"Check(Checksum({args}), {fmt}, {part.first}, {part.last}, {part.with_request!r})"
-        case m.FrameOptional(count=count):
-            return f"OptionalParts({count})"
-        case m.FrameBits(format=fmt):
-            entries, adjust = bit_fields(part, dict(index))
-            return f"Bits({quoted(fmt)}, {entries!r}, {adjust})"
-    _unreachable(part)
 
 
 def _items(w: Writer, prefix: str, opening: str, values: list[Py], closing: str) -> None:
@@ -978,7 +829,3 @@ def _tuple(items: list[str]) -> str:
     if not items:
         return "()"
     return f"({items[0]},)" if len(items) == 1 else f"({', '.join(items)})"
-
-
-def _unreachable(node: NoReturn) -> NoReturn:
-    raise AssertionError(f"unhandled case {node!r}")

@@ -1,38 +1,105 @@
-"""A primitive's bytes as the engine takes them: its encoder, its decoder, its frame.
+"""A primitive's bytes as the engine takes them: its encoder, its decoder, its frame's parts.
 
-These are data built once from the Model. The runtime hands the objects to the
-engine; `rdisc emit-python` writes their constructors (`repr` of an encoder or a
-decoder is its constructor call), so both encode and decode alike.
+These are data built once from the Model, each a `Construct`: the engine object and the
+constructor call that made it. The runtime hands the objects to the engine; `rdisc
+emit-python` writes the calls, so both encode and decode alike.
 """
 
 from __future__ import annotations
 
-from collections.abc import Callable
-from typing import Any
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from typing import Any, Generic, TypeVar
 
 from rdisc import engine
 from rdisc.semantics import formats
 from rdisc.semantics import model as m
 
-__all__ = ["bit_fields", "checksum", "decoder", "encoder", "frame_fields", "wire_frame"]
+__all__ = ["Construct", "Hex", "built", "checksum", "decoder", "decoding", "encoder", "encoding", "escaping",
+           "frame_fields", "param", "parts", "stuffing"]
+
+T = TypeVar("T")
+
+_KINDS: dict[m.Type, type] = {m.Type.INT: int, m.Type.FLOAT: float, m.Type.BOOL: bool, m.Type.STRING: str,
+                              m.Type.BYTES: bytes}
 
 
-def encoder(encoding: m.Pack | m.Format) -> engine.Pack | engine.Format:
+class Hex(int):
+    """An integer best read in hexadecimal (a CRC's polynomial): its repr says so."""
+
+    def __repr__(self) -> str:
+        return f"{self:#x}"
+
+
+@dataclass(frozen=True, slots=True, eq=False)
+class Construct(Generic[T]):
+    """An engine object and its constructor call: `kind(*args, **options)`, constructs among
+    them made first. The runtime takes `value`; a driver is written the call."""
+
+    kind: type[T]
+    args: tuple[Any, ...] = ()
+    options: tuple[tuple[str, Any], ...] = ()
+    value: T = field(init=False)
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "value", self.kind(*map(built, self.args),
+                                                    **{key: built(value) for key, value in self.options}))
+
+
+def built(value: Any) -> Any:
+    """`value` with the constructs in it (in lists and tuples too) as the objects they made."""
+    if isinstance(value, Construct):
+        return value.value
+    if isinstance(value, (list, tuple)):
+        return type(value)(map(built, value))
+    return value
+
+
+def _call(kind: type[T], *args: Any, **options: Any) -> Construct[T]:
+    """The construct of `kind(*args, **options)`, the options left out that are at their
+    defaults (None, False, empty)."""
+    given = tuple((key, value) for key, value in options.items()
+                  if value is not None and value is not False and value != () and value != [])
+    return Construct(kind, args, given)
+
+
+def encoding(encoding: m.Pack | m.Format) -> Construct[engine.Pack] | Construct[engine.Format]:
     match encoding:
         case m.Pack(format=fmt):
-            return engine.Pack(*_struct_codec(formats.struct_layout(fmt)))
+            return _struct_codec(engine.Pack, formats.struct_layout(fmt))
         case m.Format(template=template):
-            return engine.Format(template)
+            return _call(engine.Format, template)
 
 
-def decoder(decoding: m.Unpack | m.Regex | None) -> engine.Unpack | engine.Match | None:
+def decoding(decoding: m.Unpack | m.Regex | None) -> Construct[engine.Unpack] | Construct[engine.Match] | None:
     match decoding:
         case m.Unpack(format=fmt, until=until):
-            return engine.Unpack(*_struct_codec(formats.struct_layout(fmt)),
+            return _struct_codec(engine.Unpack, formats.struct_layout(fmt),
                                  until=None if until is None else until.encode("latin-1"))
         case m.Regex(pattern=pattern):
-            return engine.Match(pattern)
+            return _call(engine.Match, pattern)
     return None
+
+
+def encoder(encoding_: m.Pack | m.Format) -> engine.Pack | engine.Format:
+    """The engine's encoder of a request."""
+    return encoding(encoding_).value
+
+
+def decoder(decoding_: m.Unpack | m.Regex | None) -> engine.Unpack | engine.Match | None:
+    """The engine's decoder of a reply, if it has one."""
+    made = decoding(decoding_)
+    return None if made is None else made.value
+
+
+def param(name: str, type_: m.AnyType, low: float | None = None, high: float | None = None,
+          default: m.Value | None = None) -> Construct[engine.Param]:
+    """A parameter, field or setting as the engine takes it; its default of its declared type."""
+    bounds = (low, high) if low is not None else ()
+    options = () if default is None else (("default", m.coerce(default, type_)),)  # False is a default too
+    if isinstance(type_, m.Array):
+        return Construct(engine.Param, (name, _KINDS[type_.element], *bounds), (*options, ("size", type_.size)))
+    return Construct(engine.Param, (name, _KINDS[type_], *bounds), options)
 
 
 def frame_fields(frame: m.Frame) -> tuple[tuple[str, m.Expr], ...]:
@@ -47,63 +114,64 @@ def frame_fields(frame: m.Frame) -> tuple[tuple[str, m.Expr], ...]:
     return tuple(fields)
 
 
-def bit_fields(part: m.FrameBits, index: dict[tuple[str, m.Expr], int]) -> tuple[list[tuple[str, int, int]], int]:
-    """A `bits` part as the engine's `Bits` takes it: (name, width, field index or -1 for the
-    length) from the lowest bits up, and the length's adjust."""
-    entries = [(bit.name, bit.width, -1 if bit.value is None else index[(bit.name, bit.value)]) for bit in part.fields]
-    return entries, part.length.adjust if part.length is not None else 0
-
-
-def wire_frame(frame: m.Frame, params: tuple[engine.Param, ...] = (),
-               fields: Callable[[engine.Args], list[Any]] | None = None) -> engine.Frame:
-    """The Model's frame as the engine reads and writes it; `params` and `fields` (the field
-    values over the parameters' values) where frames are used, not only read and written."""
+def parts(frame: m.Frame, layout: tuple[m.FramePart, ...]) -> list[Construct[Any]]:
+    """One layout of a frame's side as the engine's parts."""
     index = {key: i for i, key in enumerate(frame_fields(frame))}
-    stuffing = None
-    if frame.stuffing is not None:
-        reserved, escape = frame.stuffing
-        stuffing = engine.Stuffing(reserved.encode("latin-1"), escape.encode("latin-1"))
-    escaping = None
-    if frame.escaping is not None:
-        escaping = engine.Escaping(frame.escaping.escape.encode("latin-1"), escape_table(frame.escaping))
-    return engine.Frame(frame.name, [_part(p, index) for p in frame.request], [_part(p, index) for p in frame.reply],
-                        stuffing, params, fields, [[_part(p, index) for p in layout] for layout in frame.more_requests],
-                        [[_part(p, index) for p in layout] for layout in frame.more_replies], escaping)
+    return [_part(part, index) for part in layout]
 
 
-def escape_table(escaping: m.Escaping) -> list[tuple[bytes, bytes]]:
-    """An `escape` rule's (byte, code) pairs as the engine's `Escaping` takes them."""
-    return [(byte.encode("latin-1"), code.encode("latin-1")) for byte, code in escaping.table]
+def stuffing(frame: m.Frame) -> Construct[engine.Stuffing] | None:
+    if frame.stuffing is None:
+        return None
+    reserved, escape = frame.stuffing
+    return _call(engine.Stuffing, reserved.encode("latin-1"), escape.encode("latin-1"))
+
+
+def escaping(frame: m.Frame) -> Construct[engine.Escaping] | None:
+    """An `escape` rule as the engine's `Escaping`: the escape, and its (byte, code) pairs."""
+    if frame.escaping is None:
+        return None
+    table = [(byte.encode("latin-1"), code.encode("latin-1")) for byte, code in frame.escaping.table]
+    return _call(engine.Escaping, frame.escaping.escape.encode("latin-1"), table)
 
 
 def checksum(a: m.ChecksumAlgorithm) -> engine.Checksum:
-    return engine.Checksum(a.kind, a.width, a.poly, a.init, a.reflect_in, a.reflect_out, a.xorout, a.inverted, a.mask)
+    """The engine's checksum of an algorithm."""
+    return _checksum(a).value
 
 
-def _part(part: m.FramePart, index: dict[tuple[str, m.Expr], int]) -> engine.Part:
+def _checksum(a: m.ChecksumAlgorithm) -> Construct[engine.Checksum]:
+    def hexadecimal(value: int) -> Hex | None:
+        return Hex(value) if value else None
+
+    return _call(engine.Checksum, a.kind, a.width, poly=hexadecimal(a.poly), init=hexadecimal(a.init),
+                 reflect_in=a.reflect_in, reflect_out=a.reflect_out, xorout=hexadecimal(a.xorout),
+                 inverted=a.inverted, mask=a.mask)
+
+
+def _part(part: m.FramePart, index: Mapping[tuple[str, m.Expr], int]) -> Construct[Any]:
     match part:
         case m.FrameBytes(role=role, data=data):
-            return engine.Bytes(role, data.encode("latin-1"))
+            return _call(engine.Bytes, role, data.encode("latin-1"))
         case m.FrameField(name=name, format=fmt, value=value):
-            return engine.Field(name, fmt, index[(name, value)])
+            return _call(engine.Field, name, fmt, index[(name, value)])
         case m.FrameLength(format=fmt, adjust=adjust):
-            return engine.Length(fmt, adjust)
+            return _call(engine.Length, fmt, adjust)
         case m.FramePayload():
-            return engine.Payload()
+            return _call(engine.Payload)
         case m.FrameChecksum():
-            return engine.Check(checksum(part.algorithm), part.format, part.first, part.last, part.with_request)
+            return _call(engine.Check, _checksum(part.algorithm), part.format, part.first, part.last,
+                         with_request=part.with_request)
         case m.FrameOptional(count=count):
-            return engine.OptionalParts(count)
-        case m.FrameBits(format=fmt):
-            return engine.Bits(fmt, *bit_fields(part, index))
+            return _call(engine.OptionalParts, count)
+        case m.FrameBits(format=fmt, fields=bits):
+            # (name, width, field index or -1 for the length) from the lowest bits up, and the length's adjust
+            entries = [(bit.name, bit.width, -1 if bit.value is None else index[(bit.name, bit.value)]) for bit in bits]
+            return _call(engine.Bits, fmt, entries, part.length.adjust if part.length is not None else 0)
     raise AssertionError(part)
 
 
-StructCodec = tuple[str, tuple[int, ...], bool, tuple[engine.Group, ...], engine.Varying | None,
-                    tuple[engine.Split, ...]]
-
-
-def _struct_codec(layout: formats.StructLayout) -> StructCodec:
+def _struct_codec(kind: type[T], layout: formats.StructLayout, until: bytes | None = None) -> Construct[T]:
     """A struct format as the engine's `Pack` and `Unpack` take it: the struct module's format
     (with a group repeated as the message says, the format before it), the indexes of its
     strings and its groups among the struct module's values (an integer split into bit fields
@@ -112,4 +180,5 @@ def _struct_codec(layout: formats.StructLayout) -> StructCodec:
     fixed, varying = (layout.fixed, None) if v is None else (v.head, (v.unit, v.tail, v.count_at))
     strings = tuple(layout.joined(i) for i, slot in enumerate(layout.slots) if slot.type is m.Type.STRING)
     groups = tuple((layout.joined(first), codes, count) for first, codes, count in layout.groups)
-    return fixed, strings, layout.rest, groups, varying, layout.bits
+    return _call(kind, fixed, strings=strings, rest=layout.rest, groups=groups, varying=varying, bits=layout.bits,
+                 until=until)

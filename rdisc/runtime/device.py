@@ -1,32 +1,30 @@
 """A description planned for the engine: `load` → `Description` → `connect` → `Robot`.
 
-The Model is turned once into the engine's plans (`rdisc.engine`): encoders,
-decoders and frames as data, and each expression of the checked IR prepared by
-`rdisc.runtime.evaluate.prepare` into a closure, so a call walks prepared objects
-and parses nothing. Everything that happens at run time is the engine's, the same
-code a generated driver carries.
+The Model's plans (`rdisc.lower`) are made the engine's (`rdisc.engine`): each
+`Code` a closure over the expressions prepared by `rdisc.runtime.evaluate.prepare`, so a
+call walks prepared objects and parses nothing. Everything that happens at run time is
+the engine's, the same code a generated driver carries; what the plans are is the
+lowering's, the same plans a generated driver is written from.
 """
 
 from __future__ import annotations
 
-import dataclasses
 import os
 from collections.abc import Callable, Mapping
 from types import MappingProxyType
-from typing import Any
+from typing import Any, TypeVar
 
 from rdisc import engine
-from rdisc.runtime.codec import decoder, encoder, frame_fields, wire_frame
+from rdisc import lower as plans
+from rdisc.runtime.codec import built
 from rdisc.runtime.errors import RdisLoadError
 from rdisc.runtime.evaluate import Prepared, coerce, prepare
-from rdisc.runtime.messages import recorded_messages
 from rdisc.semantics import model as m
 
-__all__ = ["Description", "load"]
+__all__ = ["Description", "load", "wire_frame"]
 
-_KINDS: dict[m.Type, type] = {m.Type.INT: int, m.Type.FLOAT: float, m.Type.BOOL: bool, m.Type.STRING: str,
-                              m.Type.BYTES: bytes}
 _EMPTY: Mapping[str, m.Value] = MappingProxyType({})
+T = TypeVar("T")
 
 
 def load(source: str | os.PathLike[str] | m.Model) -> Description:
@@ -52,19 +50,7 @@ class Description:
     def __init__(self, model: m.Model) -> None:
         self.model = model
         self.name = model.robot.name
-        self._frames = {f.name: self._frame(f) for f in model.frames.values()}
-        primitives = {p.name: self._primitive(p) for p in model.primitives.values()}
-        outputs = {o.name: self._output(o) for o in model.outputs.values()}
-        planned: dict[str, engine.Interface] = {}
-        for iface in model.callees_first():
-            planned[iface.name] = self._interface(iface, primitives, outputs, planned)
-        interfaces = {name: planned[name] for name in model.interfaces}
-        inputs = {i.name: self._input(i, interfaces) for i in model.inputs.values()}
-        connections = {c.name: self._connection(c, interfaces) for c in model.connections.values()}
-        state = {s.name: s.default for s in model.settings.values()} | {s.name: s.initial for s in model.states.values()}
-        settings = tuple(_param(s.name, s.type, s.low, s.high, s.default) for s in model.settings.values())
-        self.device = engine.Device(self.name, state, connections, primitives, interfaces, inputs, settings,
-                                    recorded_messages(model))
+        self.device = _Engine().device(plans.lower(model).device)
 
     def connect(
         self,
@@ -107,145 +93,153 @@ class Description:
         robot.open(port, threads=threads, settings=settings, sim=simulator)
         return robot
 
-    # ---- plans ----------------------------------------------------------------------------------
 
-    def _primitive(self, p: m.Primitive, local: tuple[m.Parameter, ...] | None = None) -> engine.Primitive:
-        """The plan of a primitive; `local`, what its post-actions read besides state and the
-        reply, when that is more than its parameters and its own (a tag's entry reads the tag)."""
-        if p.table is not None:  # one plan for each key or tag, chosen when it is called or read
-            plain = self._primitive(dataclasses.replace(p, table=None))
-            table: dict[int, engine.Primitive] = {}
-            for c in p.table.cases:  # a range entry's plan once, for each of its values
-                table.update(dict.fromkeys(c.values(), self._primitive(p.case(c), p.reply_locals())))
-            if p.table.tag is not None:
-                return dataclasses.replace(plain, table=table, tag=p.table.tag, each=p.table.each,
-                                           length=p.table.length)
-            key = next(i for i, param in enumerate(p.params) if param.name == p.table.key)
-            return dataclasses.replace(plain, table=table, key=key)
-        slots = _slots(local or p.reply_locals())
-        actions = None
-        if p.actions:
-            prepared = [(a.target, prepare(a.value, slots), self.model.states[a.target].type) for a in p.actions]
-            actions = lambda s, loc, r: {t: coerce(f(s, loc, r), type_) for t, f, type_ in prepared}
-        checked = tuple(a.target for a in p.actions
-                        if self.model.states[a.target].type is m.Type.INT and m.may_outgrow(a.value))
-        frame = None
-        if p.frame is not None:
-            frame = engine.FrameUse(self._frames[p.frame.frame], _values([prepare(a, slots) for a in p.frame.args]))
-        expect = None if p.expect is None else prepare(p.expect, slots)
-        answers = tuple(engine.FrameUse(self._frames[use.frame], _values([prepare(a, slots) for a in use.args]))
-                        for use in p.reply_frames)
+
+def wire_frame(frame: m.Frame) -> engine.Frame:
+    """One frame of the Model as the engine reads and writes it."""
+    return _Engine().frame(plans.frame(frame))
+
+
+class _Engine:
+    """The plans as the engine's, each built once (plans are shared: a primitive called by
+    many interfaces, an interface by hooks), each Code a closure."""
+
+    def __init__(self) -> None:
+        self.done: dict[object, Any] = {}
+
+    def once(self, plan: object, make: Callable[[], T]) -> T:
+        if plan not in self.done:
+            self.done[plan] = make()
+        made: T = self.done[plan]
+        return made
+
+    def closure(self, code: plans.Code | None) -> Any:
+        """The function a Code says, made once however many plans share it."""
+        if code is None:
+            return None
+        made = {plans.Gives.LIST: _list, plans.Gives.DICT: _dict, plans.Gives.BOOL: _predicate}[code.gives]
+        return self.once(code, lambda: made(code))
+
+    def device(self, d: plans.Device) -> engine.Device:
+        return engine.Device(
+            d.name, dict(d.state), {name: self.connection(c) for name, c in d.connections.items()},
+            {name: self.primitive(p) for name, p in d.primitives.items()},
+            {name: self.interface(i) for name, i in d.interfaces.items()},
+            {name: self.input(i) for name, i in d.inputs.items()}, built(d.settings), dict(d.messages),
+        )
+
+    def frame(self, f: plans.Frame) -> engine.Frame:
+        return self.once(f, lambda: engine.Frame(
+            f.name, built(f.request), built(f.reply), built(f.stuffing), built(f.params), self.closure(f.fields),
+            built(f.more_requests), built(f.more_replies), built(f.escaping)))
+
+    def use(self, use: plans.FrameUse) -> engine.FrameUse:
+        return engine.FrameUse(self.frame(use.frame), self.closure(use.args))
+
+    def primitive(self, p: plans.Primitive) -> engine.Primitive:
+        return self.once(p, lambda: self._primitive(p))
+
+    def _primitive(self, p: plans.Primitive) -> engine.Primitive:
+        table = None
+        if p.table is not None:  # a range entry's plan once, for each of its values
+            table = {value: self.primitive(entry.plan) for entry in p.table for value in entry.case.values()}
         return engine.Primitive(
-            p.name, p.connection, _params(p.params), _spread(_values([prepare(a, slots) for a in p.args]), p.spreads()),
-            None if p.encoding is None else encoder(p.encoding), decoder(p.decoding), actions, frame,
-            p.skip_unmatched, None if p.timeout_ms is None else p.timeout_ms / 1000.0, checked=checked,
-            expect=expect, lines=_levels(p.lines, slots), replies=p.replies, reply_frames=answers,
-            answers=tuple(self._primitive(p.listed_reply(r)) for r in p.listed),
-            records=None if p.records is None else p.records.encode("latin-1"),
+            p.name, p.connection, built(p.params), self.closure(p.values), built(p.encoder), built(p.decoder),
+            self.closure(p.actions), None if p.frame is None else self.use(p.frame), p.skip, p.timeout, table, p.key, p.tag, p.each, p.length,
+            p.records, p.checked, expect=self.closure(p.expect), lines=self.closure(p.lines), replies=p.replies,
+            reply_frames=tuple(self.use(u) for u in p.reply_frames),
+            answers=tuple(self.primitive(answer) for answer in p.answers),
         )
 
-    def _frame(self, frame: m.Frame) -> engine.Frame:
-        fields = _values([prepare(e, _slots(frame.params)) for _, e in frame_fields(frame)])
-        return wire_frame(frame, _params(frame.params), lambda args: fields(_EMPTY, args))
+    def output(self, o: plans.Output) -> engine.Output:
+        return self.once(o, lambda: engine.Output(o.name, self.closure(o.fields), o.adapter))
 
-    def _output(self, o: m.DomainOutput) -> engine.Output:
-        adapter = self.model.adapters[o.adapter]
-        fields = [(name, prepare(e), _field_type(adapter, name, e)) for name, e in o.fields]
-        return engine.Output(o.name, lambda s: {name: coerce(f(s, _EMPTY, ()), t) for name, f, t in fields}, o.adapter)
+    def interface(self, i: plans.Interface) -> engine.Interface:
+        return self.once(i, lambda: engine.Interface(i.name, built(i.params), tuple(self.call(c) for c in i.calls),
+                                                     tuple(self.output(o) for o in i.outputs)))
 
-    def _interface(self, iface: m.Interface, primitives: Mapping[str, engine.Primitive],
-                   outputs: Mapping[str, engine.Output], callees: Mapping[str, engine.Interface]) -> engine.Interface:
-        """The interface's plan; `callees`, the plans of the interfaces it calls."""
-        slots = _slots(iface.params)
-        calls = []
-        for c in iface.run_order():
-            if c.interface:
-                args = _values([prepare(a, slots) for a in c.args])
-                call = engine.Call(callees[c.primitive], args, c.delay_ms / 1000.0)
-            else:
-                call = self._call(c, slots, primitives[c.primitive])
-            if c.when is not None:
-                call = dataclasses.replace(call, when=_condition(prepare(c.when, slots)))
-            calls.append(call)
-        triggered = tuple(outputs[o] for o in iface.triggers)
-        return engine.Interface(iface.name, _params(iface.params), tuple(calls), triggered)
+    def call(self, c: plans.Call) -> engine.Call:
+        target = self.primitive(c.target) if isinstance(c.target, plans.Primitive) else self.interface(c.target)
+        return engine.Call(target, self.closure(c.args), c.delay, c.direct, self.closure(c.when))
 
-    def _call(self, call: m.PrimitiveCall, slots: dict[str, int], plan: engine.Primitive) -> engine.Call:
-        """A call of a primitive, with its format arguments substituted where that changes
-        nothing (`formats_its_params`): its format values are computed straight from the
-        call's arguments, the same expressions evaluated in the same order."""
-        primitive = self.model.primitives[call.primitive]
-        delay = call.delay_ms / 1000.0
-        if not primitive.formats_its_params():
-            return engine.Call(plan, _values([prepare(a, slots) for a in call.args]), delay)
-        by_param = {p.name: (p, arg) for p, arg in zip(primitive.params, call.args)}
-        direct: list[Prepared | m.Const] = []
-        for arg in primitive.args:
-            if isinstance(arg, m.Var):
-                param, expr = by_param[arg.name]
-                widen = param.type is m.Type.FLOAT and expr.type is m.Type.INT
-                direct.append(_widened(prepare(expr, slots)) if widen else prepare(expr, slots))
-            else:
-                assert isinstance(arg, m.Const)  # `simple`
-                direct.append(arg)  # a constant, such as an opcode
-        return engine.Call(plan, _values(direct), delay, direct=True)
+    def input(self, i: plans.Input) -> engine.Input:
+        made = engine.Input(i.name, i.adapter, built(i.fields), self.interface(i.interface), self.closure(i.args))
+        assert (made.request is not None) == i.request, f"{i.name}: the lowering and the engine disagree"
+        return made
 
-    def _input(self, i: m.DomainInput, interfaces: Mapping[str, engine.Interface]) -> engine.Input:
-        adapter = self.model.adapters[i.adapter]
-        fields = tuple(_param(f.name, f.type) for f in adapter.fields)
-        slots = {f.name: n for n, f in enumerate(adapter.fields)}
-        return engine.Input(i.name, i.adapter, fields, interfaces[i.interface],
-                            _values([prepare(a, slots) for a in i.args]))
+    def connection(self, c: plans.Connection) -> engine.Connection:
+        def hook(h: plans.Hook | None) -> engine.Hook | None:
+            return None if h is None else engine.Hook(self.interface(h.interface), self.closure(h.args))
 
-    def _connection(self, c: m.Connection, interfaces: Mapping[str, engine.Interface]) -> engine.Connection:
-        def hook(call: m.HookCall | None) -> engine.Hook | None:
-            if call is None:
-                return None
-            args = _values([prepare(a) for a in call.args])
-            return engine.Hook(interfaces[call.interface], lambda s: args(s, _EMPTY))
-
-        periodic = tuple(interfaces[i.name] for i in self.model.interfaces.values()
-                         if i.periodic and self.model.owner(i) == c.name)
-        keepalive = c.keepalive
         return engine.Connection(
-            c.name, c.baud, c.address, c.terminator_bytes(), c.frequency_hz, periodic, hook(c.startup),
-            hook(c.terminate), hook(keepalive.call if keepalive else None),
-            keepalive.interval_ms / 1000.0 if keepalive else 0.0, c.baud_setting,
+            c.name, c.baud, c.address, c.terminator, c.frequency, tuple(self.interface(i) for i in c.periodic),
+            hook(c.startup), hook(c.terminate), hook(c.keepalive), c.interval, c.baud_setting,
         )
 
 
-def _params(params: tuple[m.Parameter, ...]) -> tuple[engine.Param, ...]:
-    return tuple(_param(p.name, p.type, p.low, p.high, p.default) for p in params)
+def _slots(code: plans.Code) -> dict[str, int]:
+    return {p.name: i for i, p in enumerate(code.params)}
 
 
-def _param(name: str, type_: m.AnyType, low: float | None = None, high: float | None = None,
-           default: m.Value | None = None) -> engine.Param:
-    if isinstance(type_, m.Array):
-        return engine.Param(name, _KINDS[type_.element], low, high, default, type_.size)
-    return engine.Param(name, _KINDS[type_], low, high, default)
+def _list(code: plans.Code) -> Any:
+    """A LIST code as a closure taking what it takes: its items' values, bound to their
+    types, arrays marked "*" given element by element."""
+    slots = _slots(code)
+    values = _values([_bound(e, type_, slots) for _, e, type_ in code.items])
+    values = _spread(values, tuple(i for i, (key, _, _) in enumerate(code.items) if key == "*"))
+    match code.takes:
+        case ("state", "args"):
+            return values
+        case ("args",):
+            return lambda args: values(_EMPTY, args)
+        case ("state",):
+            return lambda state: values(state, _EMPTY)
+    raise AssertionError(code.takes)
 
 
-def _levels(lines: tuple[m.LineLevel, ...],
-            slots: dict[str, int]) -> Callable[[Mapping[str, m.Value], Any], dict[str, m.Value]] | None:
-    """A primitive's modem lines, over state and its parameters: each line's level, in order."""
-    if not lines:
-        return None
-    prepared = [(level.line, prepare(level.value, slots)) for level in lines]
-    return lambda state, local: {line: f(state, local, ()) for line, f in prepared}
+def _dict(code: plans.Code) -> Any:
+    """A DICT code as a closure: its items' values by key, each coerced to its type if it has one
+    (all have or none has)."""
+    slots = _slots(code)
+    typed = [(key, prepare(e, slots), type_) for key, e, type_ in code.items if type_ is not None]
+    if not typed:
+        plain = [(key, prepare(e, slots)) for key, e, _ in code.items]
+        match code.takes:
+            case ("state", "args"):
+                return lambda s, loc: {key: f(s, loc, ()) for key, f in plain}
+    assert len(typed) == len(code.items), "all typed or none"
+    match code.takes:
+        case ("state", "args", "reply"):
+            return lambda s, loc, r: {key: coerce(f(s, loc, r), t) for key, f, t in typed}
+        case ("state",):
+            return lambda s: {key: coerce(f(s, _EMPTY, ()), t) for key, f, t in typed}
+    raise AssertionError(code.takes)
 
 
-def _condition(holds: Prepared) -> Callable[[Mapping[str, m.Value], Any], m.Value]:
-    """A call's `when`, over state and the interface's parameters."""
-    return lambda state, local: holds(state, local, ())
+def _predicate(code: plans.Code) -> Any:
+    """A BOOL code as a closure: its one item's value (the engine tests its truth)."""
+    ((_, e, _),) = code.items
+    holds = prepare(e, _slots(code))
+    match code.takes:
+        case ("state", "args", "reply"):
+            return holds
+        case ("state", "args"):
+            return lambda state, local: holds(state, local, ())
+    raise AssertionError(code.takes)
 
 
-def _slots(params: tuple[m.Parameter, ...]) -> dict[str, int]:
-    return {p.name: i for i, p in enumerate(params)}
-
-
-def _field_type(adapter: m.Adapter, name: str, expr: m.Expr) -> m.Type:
-    field = adapter.field(name)
-    return field.type if field is not None else expr.type
+def _bound(e: m.Expr, type_: m.AnyType | None, slots: dict[str, int]) -> Prepared | m.Const:
+    """`e` prepared, bound to `type_` as the contract binds values (an int made a float where a
+    float is declared); a constant given as it is, which `_values` puts in as it is."""
+    if type_ is None and isinstance(e, m.Const):
+        return e
+    f = prepare(e, slots)
+    if type_ is m.Type.FLOAT and e.type is m.Type.INT:
+        return _widened(f)
+    if isinstance(type_, m.Array) and type_.element is m.Type.FLOAT and isinstance(e.type, m.Array) \
+            and e.type.element is m.Type.INT:
+        return lambda s, loc, r: coerce(f(s, loc, r), type_)
+    return f
 
 
 def _widened(f: Prepared) -> Prepared:

@@ -47,7 +47,7 @@ class _SharedScanner:
         if found is None or found[1] in self.allowed_types:
             return found  # nothing matches here, or what the state's own pattern finds first
         if self.own is None:
-            self.own = lark.lexer.Scanner(self.terminals, self.lexer.g_regex_flags,  # type: ignore[no-untyped-call]
+            self.own = lark.lexer.Scanner(self.terminals, self.lexer.g_regex_flags,
                                           self.lexer.re, self.lexer.use_bytes)
         own: tuple[str, str] | None = self.own.match(text, pos)
         return own

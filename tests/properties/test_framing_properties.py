@@ -27,7 +27,8 @@ from rdisc.engine import (
     Part,
     Payload,
 )
-from rdisc.runtime.codec import frame_fields, wire_frame
+from rdisc.runtime.codec import frame_fields
+from rdisc.runtime.device import wire_frame
 from tests.support.ports import ScriptedPort
 
 REPO = Path(__file__).resolve().parents[2]

@@ -1,0 +1,403 @@
+"""Model → plans (`lower`): every decision about how a description is run, made once.
+
+The plans mirror the engine's (`rdisc.engine`: Primitive, Call, Interface, Input,
+Output, Hook, Connection, Device, Frame, FrameUse). Where the engine takes a function, a
+plan holds a `Code`: what the function computes, as data. The engine's data objects
+(encoders, decoders, frame parts, parameters) are built here, once, as `Construct`s. Two
+back ends walk the same plans: the runtime (`rdisc.runtime.device`) makes each Code a
+closure over `rdisc.runtime.evaluate.prepare`; the emitter (`rdisc.emit.python`) writes
+each Code as a function and each plan as its constructor call. Neither decides anything
+about the description's structure.
+
+A plan's fields after `KW_ONLY` are options, written by keyword when they are not at
+their default.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import enum
+from collections.abc import Mapping
+from dataclasses import KW_ONLY, dataclass
+from typing import Any
+
+from rdisc import engine
+from rdisc.engine.plans import _plain as plain  # the engine's rule of a plain struct pack
+from rdisc.runtime.codec import Construct, decoding, encoding, escaping, frame_fields, param, parts, stuffing
+from rdisc.runtime.messages import recorded_messages
+from rdisc.semantics import model as m
+
+__all__ = ["Call", "Code", "Connection", "Device", "Frame", "FrameUse", "Gives", "Hook", "Input", "Interface",
+           "Output", "Plans", "Primitive", "frame", "lower"]
+
+Item = tuple[str, m.Expr, m.AnyType | None]
+"""What a Code returns, one item: its key (a dict's key; in a list, "*" for an array given
+element by element, else ""), the expression, the type its value is bound to (None: as it is)."""
+
+
+class Gives(enum.Enum):
+    """What a Code returns."""
+
+    LIST = "list"  # its items' values, in order
+    DICT = "dict"  # its items' values by key
+    BOOL = "bool"  # its one item's truth
+
+
+@dataclass(frozen=True, slots=True, eq=False)
+class Code:
+    """A function of a plan, as data: given `takes` (of "state", "args", "reply", in this
+    order), `args` unpacked into `params`, it returns its items as `gives` says."""
+
+    takes: tuple[str, ...]
+    gives: Gives
+    params: tuple[m.Parameter, ...]
+    items: tuple[Item, ...]
+
+
+_OVER_ARGS = ("state", "args")
+_OVER_REPLY = ("state", "args", "reply")
+
+
+def _values(params: tuple[m.Parameter, ...], exprs: tuple[m.Expr, ...], takes: tuple[str, ...] = _OVER_ARGS) -> Code:
+    return Code(takes, Gives.LIST, params, tuple(("", e, None) for e in exprs))
+
+
+def _condition(takes: tuple[str, ...], params: tuple[m.Parameter, ...], e: m.Expr) -> Code:
+    return Code(takes, Gives.BOOL, params, (("", e, None),))
+
+
+@dataclass(frozen=True, slots=True, eq=False)
+class Frame:
+    """engine.Frame: its parts each way as constructs, its fields' values a Code over the args."""
+
+    name: str
+    request: list[Construct[Any]]
+    reply: list[Construct[Any]]
+    _: KW_ONLY
+    stuffing: Construct[engine.Stuffing] | None = None
+    params: tuple[Construct[engine.Param], ...] = ()
+    fields: Code | None = None  # takes the args only
+    more_requests: list[list[Construct[Any]]] = dataclasses.field(default_factory=list)
+    more_replies: list[list[Construct[Any]]] = dataclasses.field(default_factory=list)
+    escaping: Construct[engine.Escaping] | None = None
+
+
+@dataclass(frozen=True, slots=True, eq=False)
+class FrameUse:
+    """engine.FrameUse: a frame, and its arguments over the primitive's parameters."""
+
+    frame: Frame
+    args: Code
+
+
+@dataclass(frozen=True, slots=True, eq=False)
+class Entry:
+    """A reply table's entry: the key or tag values it is for, and its plan."""
+
+    case: m.ReplyCase
+    plan: Primitive
+
+
+@dataclass(frozen=True, slots=True, eq=False)
+class Primitive:
+    """engine.Primitive; `table`, its entries each with the values it is for."""
+
+    name: str
+    connection: str
+    params: tuple[Construct[engine.Param], ...]
+    values: Code
+    encoder: Construct[engine.Pack] | Construct[engine.Format] | None
+    _: KW_ONLY
+    decoder: Construct[engine.Unpack] | Construct[engine.Match] | None = None
+    actions: Code | None = None
+    frame: FrameUse | None = None
+    skip: bool = False
+    timeout: float | None = None
+    table: tuple[Entry, ...] | None = None
+    key: int = -1
+    tag: str | None = None
+    each: bool = False
+    length: str | None = None
+    records: bytes | None = None
+    checked: tuple[str, ...] = ()
+    expect: Code | None = None
+    lines: Code | None = None
+    replies: int = 0
+    reply_frames: tuple[FrameUse, ...] = ()
+    answers: tuple[Primitive, ...] = ()
+
+
+@dataclass(frozen=True, slots=True, eq=False)
+class Output:
+    """engine.Output."""
+
+    name: str
+    fields: Code
+    adapter: str = ""
+
+
+@dataclass(frozen=True, slots=True, eq=False)
+class Call:
+    """engine.Call: `direct`, the arguments are the primitive's format values."""
+
+    target: Primitive | Interface
+    args: Code
+    delay: float = 0.0
+    _: KW_ONLY
+    direct: bool = False
+    when: Code | None = None
+
+
+@dataclass(frozen=True, slots=True, eq=False)
+class Interface:
+    """engine.Interface."""
+
+    name: str
+    params: tuple[Construct[engine.Param], ...]
+    calls: tuple[Call, ...]
+    _: KW_ONLY
+    outputs: tuple[Output, ...] = ()
+
+
+@dataclass(frozen=True, slots=True, eq=False)
+class Input:
+    """engine.Input; `request`: the engine writes it at once, so a driver compiles that."""
+
+    name: str
+    adapter: str
+    fields: tuple[Construct[engine.Param], ...]
+    interface: Interface
+    args: Code
+    _: KW_ONLY
+    request: bool = False
+
+
+@dataclass(frozen=True, slots=True, eq=False)
+class Hook:
+    """engine.Hook."""
+
+    interface: Interface
+    args: Code  # takes the state only
+
+
+@dataclass(frozen=True, slots=True, eq=False)
+class Connection:
+    """engine.Connection."""
+
+    name: str
+    baud: int
+    _: KW_ONLY
+    address: str | None = None
+    terminator: bytes = b"\n"
+    frequency: float = 0.0
+    periodic: tuple[Interface, ...] = ()
+    startup: Hook | None = None
+    terminate: Hook | None = None
+    keepalive: Hook | None = None
+    interval: float = 0.0
+    baud_setting: str | None = None
+
+
+@dataclass(frozen=True, slots=True, eq=False)
+class Device:
+    """engine.Device."""
+
+    name: str
+    state: Mapping[str, m.Value]
+    connections: Mapping[str, Connection]
+    primitives: Mapping[str, Primitive]
+    interfaces: Mapping[str, Interface]
+    inputs: Mapping[str, Input]
+    _: KW_ONLY
+    settings: tuple[Construct[engine.Param], ...] = ()
+    messages: Mapping[str, engine.Message] = dataclasses.field(default_factory=dict)
+
+
+@dataclass(frozen=True, slots=True)
+class Plans:
+    """A description lowered: the device, and the frames and outputs its plans use, by name."""
+
+    device: Device
+    frames: Mapping[str, Frame]
+    outputs: Mapping[str, Output]
+
+
+def lower(model: m.Model) -> Plans:
+    """The plans of a checked description."""
+    return _Lowering(model).plans
+
+
+class _Lowering:
+    def __init__(self, model: m.Model) -> None:
+        self.model = model
+        self.frames = {f.name: frame(f) for f in model.frames.values()}
+        primitives = {p.name: self.primitive(p) for p in model.primitives.values()}
+        outputs = {o.name: self.output(o) for o in model.outputs.values()}
+        planned: dict[str, Interface] = {}
+        for iface in model.callees_first():
+            planned[iface.name] = self.interface(iface, primitives, outputs, planned)
+        interfaces = {name: planned[name] for name in model.interfaces}
+        inputs = {i.name: self.input(i, interfaces) for i in model.inputs.values()}
+        connections = {c.name: self.connection(c, interfaces) for c in model.connections.values()}
+        state = ({s.name: m.coerce(s.default, s.type) for s in model.settings.values()}
+                 | {s.name: m.coerce(s.initial, s.type) for s in model.states.values()})
+        settings = tuple(param(s.name, s.type, s.low, s.high, s.default) for s in model.settings.values())
+        device = Device(model.robot.name, state, connections, primitives, interfaces, inputs, settings=settings,
+                        messages=recorded_messages(model))
+        self.plans = Plans(device, self.frames, outputs)
+
+    # ---- primitives -----------------------------------------------------------------------------
+
+    def primitive(self, p: m.Primitive) -> Primitive:
+        """A primitive's plan; with a reply table, one plan for each entry besides (a range
+        entry's once, for each of its values), chosen by a parameter or by the reply's tag."""
+        if p.table is None:
+            return self.single(p, p.reply_locals())
+        plain = self.single(dataclasses.replace(p, table=None), p.reply_locals())
+        table = tuple(Entry(c, self.reply(plain, p.case(c), p.reply_locals())) for c in p.table.cases)
+        if p.table.tag is not None:
+            return dataclasses.replace(plain, table=table, tag=p.table.tag, each=p.table.each, length=p.table.length)
+        key = next(i for i, prm in enumerate(p.params) if prm.name == p.table.key)
+        return dataclasses.replace(plain, table=table, key=key)
+
+    def single(self, p: m.Primitive, local: tuple[m.Parameter, ...]) -> Primitive:
+        """The plan of a primitive without a reply table, its listed replies each its own plan;
+        `local`, what its `expect` and post-actions read besides state and the reply."""
+        spreads = p.spreads()
+        values = Code(_OVER_ARGS, Gives.LIST, p.params,
+                      tuple(("*" if i in spreads else "", a, None) for i, a in enumerate(p.args)))
+        lines = None
+        if p.lines:
+            lines = Code(_OVER_ARGS, Gives.DICT, p.params, tuple((level.line, level.value, None) for level in p.lines))
+        plan = Primitive(
+            p.name, p.connection, _params(p.params), values, None if p.encoding is None else encoding(p.encoding),
+            frame=self.frame_use(p.frame, p.params), skip=p.skip_unmatched,
+            timeout=None if p.timeout_ms is None else p.timeout_ms / 1000.0,
+            records=None if p.records is None else p.records.encode("latin-1"),
+            expect=None if p.expect is None else _condition(_OVER_REPLY, local, p.expect),
+            lines=lines, replies=p.replies,
+            reply_frames=tuple(FrameUse(self.frames[use.frame], _values(p.params, use.args)) for use in p.reply_frames),
+        )
+        plan = self.reply(plan, p, local)
+        return dataclasses.replace(plan, answers=tuple(self.listed(plan, p.listed_reply(r)) for r in p.listed))
+
+    def listed(self, plan: Primitive, p: m.Primitive) -> Primitive:
+        """One of `replies { }`: the primitive's plan with that reply's frame, decoder, expect
+        and post-actions."""
+        expect = None if p.expect is None else _condition(_OVER_REPLY, p.reply_locals(), p.expect)
+        own = dataclasses.replace(plan, frame=self.frame_use(p.frame, p.params), expect=expect, answers=())
+        return self.reply(own, p, p.reply_locals())
+
+    def reply(self, plan: Primitive, p: m.Primitive, local: tuple[m.Parameter, ...]) -> Primitive:
+        """`plan` reading `p`'s reply: its decoder and its post-actions over `local` (besides
+        state and the reply), with the state variables they may make too wide."""
+        states = self.model.states
+        actions = None
+        if p.actions:
+            actions = Code(_OVER_REPLY, Gives.DICT, local,
+                           tuple((a.target, a.value, states[a.target].type) for a in p.actions))
+        checked = tuple(a.target for a in p.actions if states[a.target].type is m.Type.INT and m.may_outgrow(a.value))
+        return dataclasses.replace(plan, decoder=decoding(p.decoding), actions=actions, checked=checked)
+
+    def frame_use(self, use: m.FrameUse | None, params: tuple[m.Parameter, ...]) -> FrameUse | None:
+        return None if use is None else FrameUse(self.frames[use.frame], _values(params, use.args))
+
+    # ---- interfaces, inputs, outputs, connections ---------------------------------------------------
+
+    def output(self, o: m.DomainOutput) -> Output:
+        adapter = self.model.adapters[o.adapter]
+        fields = tuple((name, e, _field_type(adapter, name, e)) for name, e in o.fields)
+        return Output(o.name, Code(("state",), Gives.DICT, (), fields), o.adapter)
+
+    def interface(self, iface: m.Interface, primitives: Mapping[str, Primitive], outputs: Mapping[str, Output],
+                  callees: Mapping[str, Interface]) -> Interface:
+        """The interface's plan; `callees`, the plans of the interfaces it calls."""
+        calls = []
+        for c in iface.run_order():
+            if c.interface:
+                call = Call(callees[c.primitive], _values(iface.params, c.args), c.delay_ms / 1000.0)
+            else:
+                call = self.call(c, iface.params, primitives[c.primitive])
+            if c.when is not None:
+                call = dataclasses.replace(call, when=_condition(_OVER_ARGS, iface.params, c.when))
+            calls.append(call)
+        return Interface(iface.name, _params(iface.params), tuple(calls),
+                         outputs=tuple(outputs[o] for o in iface.triggers))
+
+    def call(self, call: m.PrimitiveCall, params: tuple[m.Parameter, ...], plan: Primitive) -> Call:
+        """A call of a primitive, with its format arguments substituted where that changes
+        nothing (`formats_its_params`): its format values are computed straight from the
+        call's arguments, the same expressions evaluated in the same order, each bound to
+        its parameter's type."""
+        primitive = self.model.primitives[call.primitive]
+        delay = call.delay_ms / 1000.0
+        if not primitive.formats_its_params():
+            return Call(plan, _values(params, call.args), delay)
+        by_param = {prm.name: (prm, arg) for prm, arg in zip(primitive.params, call.args)}
+        direct: list[Item] = []
+        for arg in primitive.args:
+            if isinstance(arg, m.Var):
+                prm, expr = by_param[arg.name]
+                direct.append(("", expr, prm.type))
+            else:
+                direct.append(("", arg, None))  # a constant, such as an opcode
+        return Call(plan, Code(_OVER_ARGS, Gives.LIST, params, tuple(direct)), delay, direct=True)
+
+    def input(self, i: m.DomainInput, interfaces: Mapping[str, Interface]) -> Input:
+        adapter = self.model.adapters[i.adapter]
+        fields = tuple(m.Parameter(f.name, f.type) for f in adapter.fields)
+        interface = interfaces[i.interface]
+        plan = Input(i.name, i.adapter, _params(fields), interface, _values(fields, i.args))
+        return dataclasses.replace(plan, request=_written_at_once(interface))
+
+    def connection(self, c: m.Connection, interfaces: Mapping[str, Interface]) -> Connection:
+        def hook(call: m.HookCall | None) -> Hook | None:
+            return None if call is None else Hook(interfaces[call.interface], _values((), call.args, ("state",)))
+
+        periodic = tuple(interfaces[i.name] for i in self.model.interfaces.values()
+                         if i.periodic and self.model.owner(i) == c.name)
+        keepalive = c.keepalive
+        return Connection(
+            c.name, c.baud, address=c.address, terminator=c.terminator_bytes(), frequency=float(c.frequency_hz or 0),
+            periodic=periodic, startup=hook(c.startup), terminate=hook(c.terminate),
+            keepalive=hook(keepalive.call if keepalive else None),
+            interval=keepalive.interval_ms / 1000.0 if keepalive else 0.0, baud_setting=c.baud_setting,
+        )
+
+
+def frame(f: m.Frame) -> Frame:
+    """A frame's plan: its parts each way, and its fields' values over its parameters."""
+    values = frame_fields(f)
+    fields = _values(f.params, tuple(e for _, e in values), ("args",)) if values else None
+    return Frame(f.name, parts(f, f.request), parts(f, f.reply), stuffing=stuffing(f), params=_params(f.params),
+                 fields=fields, more_requests=[parts(f, layout) for layout in f.more_requests],
+                 more_replies=[parts(f, layout) for layout in f.more_replies], escaping=escaping(f))
+
+
+def _written_at_once(interface: Interface) -> bool:
+    """Whether running the interface is one plain write (the engine's `_written_at_once`, which
+    decides at run time): one direct call of a primitive packed with a struct format, no delay,
+    condition, range, output, frame, reply, post-action, modem line or string in the way."""
+    if len(interface.calls) != 1 or interface.outputs or _ranged(interface.params):
+        return False
+    call = interface.calls[0]
+    prim = call.target
+    if not isinstance(prim, Primitive) or not call.direct or call.delay or call.when is not None:
+        return False
+    expects_reply = prim.decoder is not None or prim.table is not None or bool(prim.answers)
+    return (plain(None if prim.encoder is None else prim.encoder.value) and not expects_reply and prim.frame is None
+            and prim.actions is None and prim.lines is None
+            and not _ranged(prim.params))
+
+
+def _ranged(params: tuple[Construct[engine.Param], ...]) -> bool:
+    return any(prm.value.low is not None for prm in params)
+
+
+def _params(params: tuple[m.Parameter, ...]) -> tuple[Construct[engine.Param], ...]:
+    return tuple(param(p.name, p.type, p.low, p.high, p.default) for p in params)
+
+
+def _field_type(adapter: m.Adapter, name: str, expr: m.Expr) -> m.AnyType:
+    field = adapter.field(name)
+    return field.type if field is not None else expr.type
