@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import argparse
 
-from rdisc.cli.output import compile_and_write
+from rdisc.cli.output import emit_body
 
 
 def add_parser(verbs: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
@@ -25,4 +25,4 @@ def add_parser(verbs: argparse._SubParsersAction[argparse.ArgumentParser]) -> No
 def run(args: argparse.Namespace) -> int:
     from rdisc.emit.mjcf import to_mjcf
 
-    return compile_and_write(args.file, args.output, lambda model, _: to_mjcf(model))
+    return emit_body("emit-mjcf", args.file, args.output, lambda model, _: to_mjcf(model))

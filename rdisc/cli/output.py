@@ -77,8 +77,8 @@ def compile_and_write(path: str, output: str | None, render: Callable[[Model, So
 
 
 def emit_body(verb: str, path: str, output: str | None, render: Callable[[Model, Sources], str]) -> int:
-    """`compile_and_write` for the body's formats: a description with no body is an error
-    of its own, said in a line, exit 1, nothing written."""
+    """`compile_and_write` for the body's formats: a description with no body (or one the format
+    cannot hold) is an error of its own, said in a line, exit 1, nothing written."""
     from rdisc.emit.body_xml import BodyError
 
     try:

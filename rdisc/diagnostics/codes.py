@@ -417,8 +417,7 @@ Wrong: `primitive caps() on link pack "B" (0x6B) reply each until "\\x7F" unpack
     ("E601", "body-tree", """
 A robot's body is one tree of links: one root (the base, the child of no joint),
 every other link the child of exactly one joint, every link reachable from the
-root, no cycle, no joint joining a link to itself, and no link more than 256 joints
-from the root (a simulator's model nests each link in its parent's). Tools reading URDF silently drop
+root, no cycle, no joint joining a link to itself. Tools reading URDF silently drop
 links they cannot reach, so rdisc refuses them before any tool sees them. Wrong:
 `joint a: fixed base -> arm {}` with `joint b: revolute hand -> arm {...}` (two
 parents). Right: `joint b: revolute arm -> hand {...}`."""),

@@ -20,7 +20,7 @@ _NOT_XML = re.compile("[^\t\n\r\x20-\ud7ff\ue000-\ufffd\U00010000-\U0010ffff]")
 
 
 class BodyError(ValueError):
-    """The description has no body to write."""
+    """The description has no body to write, or one the format cannot hold."""
 
 
 def require_body(model: m.Model) -> m.Link:

@@ -17,11 +17,13 @@ from __future__ import annotations
 import math
 import xml.etree.ElementTree as ET
 
+from rdisc.emit.body_xml import BodyError
 from rdisc.semantics import model as m
 
 TIMESTEP = 0.002  # s: MuJoCo's default, fixed so that a simulation repeats exactly
 CASTER_FRICTION = "0.01 0.005 0.0001"  # sliding, torsional, rolling: a ball caster's
 POSITION_ERROR = 0.05  # rad (m): a position actuator gives the joint's whole effort this far from its target
+MAX_DEPTH = 256  # joints from the root: Python's XML writer recurses a level a body, and so does MuJoCo's parser
 VELOCITY_ERROR = 0.01  # a velocity actuator gives the whole effort this fraction of the speed limit away
 
 
@@ -45,6 +47,10 @@ def to_mjcf(model: m.Model, mesh_folder: str | None = None) -> str:
     ET.SubElement(world, "light", pos="0 0 3", dir="0 0 -1", directional="true")
     ET.SubElement(world, "geom", name="floor", type="plane", size="0 0 0.05", rgba="0.8 0.8 0.8 1")
     base = model.root_link()
+    depth = _depth(model)
+    if depth > MAX_DEPTH:
+        raise BodyError(f"the body is {depth} joints deep; MJCF nests each link in its parent's, "
+                        f"and rdisc writes at most {MAX_DEPTH}")
     if base is not None:
         mesh_names = {id(shape): f"{link.name}_mesh{n}" for n, (link, shape) in enumerate(meshes)}
         _body(model, world, base, None, rolls(model), mesh_names)
@@ -55,6 +61,14 @@ def to_mjcf(model: m.Model, mesh_folder: str | None = None) -> str:
             _actuator(act, model.joints[transmission.joint], transmission, binding)
     ET.indent(root)
     return ET.tostring(root, encoding="unicode") + "\n"
+
+
+def _depth(model: m.Model) -> int:
+    """Joints from the root link to the farthest one (the joints come parents first)."""
+    depth: dict[str, int] = {}
+    for joint in model.joints.values():
+        depth[joint.child] = depth.get(joint.parent, 0) + 1
+    return max(depth.values(), default=0)
 
 
 def rolls(model: m.Model) -> bool:

@@ -41,7 +41,25 @@ from rdisc.engine.errors import (
 )
 from rdisc.engine.exchange import Exchange
 from rdisc.engine.frames import Frame, Wrap
-from rdisc.engine.operations import EVAL_ERRORS, MAX_ARRAY, MAX_INT, MAX_LINE, element, lookup, replaced
+from rdisc.engine.operations import (
+    BINARY,
+    EVAL_ERRORS,
+    FLOAT_MAX,
+    FUNCTIONS,
+    MAX_ARRAY,
+    MAX_INT,
+    MAX_LINE,
+    MAX_RESULT_BITS,
+    MAX_SHIFT,
+    MAX_TEXT,
+    UNARY,
+    EvalError,
+    element,
+    fits,
+    lookup,
+    replaced,
+    shown,
+)
 from rdisc.engine.plans import (
     Call,
     Connection,
@@ -80,18 +98,25 @@ from rdisc.engine.wire import (
 )
 
 __all__ = [
+    "BINARY",
     "EVAL_ERRORS",
     "EXIT_ERROR",
     "EXIT_OK",
     "EXIT_SIGINT",
     "EXIT_SIGTERM",
     "EXIT_USAGE",
+    "FLOAT_MAX",
+    "FUNCTIONS",
     "MAX_ARRAY",
     "MAX_FRAME",
     "MAX_INT",
     "MAX_LINE",
+    "MAX_RESULT_BITS",
+    "MAX_SHIFT",
     "MAX_SKIP",
+    "MAX_TEXT",
     "RUNS_TOPIC",
+    "UNARY",
     "Args",
     "Bits",
     "Bytes",
@@ -103,6 +128,7 @@ __all__ = [
     "Device",
     "ErrorCallback",
     "Escaping",
+    "EvalError",
     "Exchange",
     "Field",
     "Format",
@@ -154,6 +180,7 @@ __all__ = [
     "bind_settings",
     "call_values",
     "element",
+    "fits",
     "lookup",
     "make_call",
     "parse_call",
@@ -163,5 +190,6 @@ __all__ = [
     "replaced",
     "ros_message",
     "run_command",
+    "shown",
     "start_recording",
 ]

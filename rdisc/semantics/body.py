@@ -37,7 +37,6 @@ MAX_CONVERSION_NODES = 50_000
 MAX_MASS = 1e6  # kg: a link heavier is out of what a simulator integrates (a mass of 1e308 makes MuJoCo's NaN)
 MAX_INERTIA = 1e6  # kg m², each element of an inertia
 MAX_LENGTH = 1e4  # m, each size of a shape
-MAX_DEPTH = 256  # joints from the root to the farthest link: MJCF nests a body in its parent's
 _CONSTANTS = Env({}, "in the body", "constants")
 
 Number = Callable[[ast.Expr, str], "float | None"]
@@ -329,18 +328,13 @@ class BodyRules:
         order: dict[str, m.Joint] = {}
         reached: set[str] = set()
         for root in roots:  # the root's tree first: its joints are the body's; then the detached trees
-            frontier = deque([(root, 0)])
+            frontier = deque([root])
             while frontier:
-                parent, depth = frontier.popleft()
-                for joint in children.get(parent, ()):
+                for joint in children.get(frontier.popleft(), ()):
                     if root == roots[0]:
                         order[joint.name] = joint
-                        if depth == MAX_DEPTH:
-                            self.d.report("E601", decls[joint.name].name.span, f"joint `{joint.name}` is "
-                                          f"{depth + 1} joints from the root link `{root}`: more than a "
-                                          "simulator nests", help=f"a body is at most {MAX_DEPTH} joints deep")
                     reached.add(joint.child)
-                    frontier.append((joint.child, depth + 1))
+                    frontier.append(joint.child)
         self.cycles({link: joint for link, joint in moved_by.items() if link not in reached and link in links},
                     roots[0])
         return order

@@ -36,13 +36,19 @@ def test_a_mass_or_inertia_no_simulator_integrates_is_refused_at_check() -> None
     ]
 
 
-def test_a_body_deeper_than_mjcf_nests_is_refused_at_check() -> None:
+def test_a_body_deeper_than_mjcf_nests_is_a_message_not_a_recursion_error(tmp_path: Path) -> None:
     lines = ['robot chain { author "tests" }', "link l0 { mass 1 inertia [0.1, 0.1, 0.1] }"]
-    for i in range(1, 300):
+    for i in range(1, 1200):
         lines.append(f"link l{i} {{ mass 1 inertia [0.1, 0.1, 0.1] }}")
         lines.append(f"joint j{i}: fixed l{i - 1} -> l{i} {{ at [0, 0, 0.1] }}")
-    assert _codes("\n".join(lines)) == [
-        ("E601", "joint `j257` is 257 joints from the root link `l0`: more than a simulator nests")]
+    source = tmp_path / "chain.rdis"
+    source.write_text("\n".join(lines), encoding="utf-8")
+    assert _codes(source.read_text(encoding="utf-8")) == []  # the checker takes it; MJCF cannot nest it
+    said = "the body is 1199 joints deep; MJCF nests each link in its parent's, and rdisc writes at most 256"
+    result = run_rdisc("emit-mjcf", source)
+    assert (result.returncode, result.stderr) == (1, f"rdisc emit-mjcf: {source}: {said}\n")
+    result = run_rdisc("sim", source, "--duration", "0.01", cwd=tmp_path)
+    assert (result.returncode, result.stderr) == (2, f"rdisc sim: chain: MuJoCo cannot simulate this body: {said}\n")
 
 
 def test_an_unstable_simulation_ends_with_a_message_and_no_log(tmp_path: Path) -> None:
