@@ -269,3 +269,17 @@ def test_the_plot_s_axes_are_at_round_values(page) -> None:
     gives no more than about the ticks asked for."""
     assert page.evaluate("[ticks(0, 0.37, 5), ticks(-1.5, 1.5, 4), ticks(12.3, 14.1, 5), ticks(0, 1000, 4)]") == [
         [0, 0.1, 0.2, 0.3], [-1, 0, 1], [12.5, 13, 13.5, 14], [0, 500, 1000]]
+
+
+def test_the_page_opens_only_through_the_printed_address(browser, console: Running) -> None:
+    """The address the console printed carries its token, and the page passes it on to its WebSocket
+    (every page of these tests opens through it); without the token the page is refused."""
+    context = browser.new_context()
+    try:
+        refused = context.new_page().goto(console_origin(console.url) + "/")
+        assert refused is not None and refused.status == 403
+        opened = next(opened_page(browser, console.url))
+        playwright_api.expect(opened.locator("[data-rdis-status]")).to_have_text("connected", timeout=WAIT_MS)
+        opened.context.close()
+    finally:
+        context.close()
