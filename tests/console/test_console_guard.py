@@ -249,3 +249,12 @@ def test_sigint_s_stop_is_not_queued_behind_page_calls() -> None:
         assert [c for c in after[stop + 1:] if c[0] == DRIVE] == [], after  # no page's drive after the stop
         assert len([c for c in after[:stop] if c == GO_BYTES]) <= 2, after  # the call in progress at most
         assert len([c for c in after[:stop] if c[0] == SENSORS]) <= 2, after  # within about one timed-out poll
+
+
+def test_the_help_tells_of_the_token_and_allow_remote() -> None:
+    done = subprocess.run([sys.executable, "-m", "rdisc", "console", "--help"], cwd=REPO, env=cli_env(),
+                          capture_output=True, text=True, timeout=120, check=False)
+    assert done.returncode == 0, done.stderr
+    text = " ".join(done.stdout.split())
+    assert "The address it prints carries a token, new each run" in text
+    assert "--allow-remote" in text and "whenever the last page closes" in text
