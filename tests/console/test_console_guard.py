@@ -258,3 +258,37 @@ def test_the_help_tells_of_the_token_and_allow_remote() -> None:
     text = " ".join(done.stdout.split())
     assert "The address it prints carries a token, new each run" in text
     assert "--allow-remote" in text and "whenever the last page closes" in text
+
+
+def _masked_text(text: str) -> bytes:
+    """One WebSocket text frame as a client sends it (masked; under 126 bytes)."""
+    data = text.encode("utf-8")
+    assert len(data) < 126
+    mask = b"\x01\x02\x03\x04"
+    return bytes([0x81, 0x80 | len(data)]) + mask + bytes(b ^ mask[i % 4] for i, b in enumerate(data))
+
+
+def test_a_page_that_stops_answering_pings_leaves_the_robot_stopped() -> None:
+    """A client that makes a call and then goes quiet (never reads, so never answers the server's
+    pings, as a machine that dropped off the network): it is closed, and the terminate hook runs."""
+    with CreateEmulator() as dev:
+        process, _, url = start_console(CREATE, "--port", dev.port)
+        try:
+            port = int(console_origin(url).rsplit(":", 1)[1])
+            query = url.partition("?")[2]
+            with socket.create_connection(("127.0.0.1", port)) as raw:
+                raw.sendall(f"GET /ws?{query} HTTP/1.1\r\nHost: 127.0.0.1:{port}\r\n"
+                            f"Origin: http://127.0.0.1:{port}\r\nUpgrade: websocket\r\nConnection: Upgrade\r\n"
+                            "Sec-WebSocket-Key: dGhlIHNhbXBsZSBub25jZQ==\r\nSec-WebSocket-Version: 13\r\n\r\n"
+                            .encode("ascii"))
+                answer = b""
+                while b"\r\n\r\n" not in answer:
+                    answer += raw.recv(1)
+                assert answer.startswith(b"HTTP/1.1 101"), answer
+                raw.sendall(_masked_text(json.dumps({"id": 1, **GO})))
+                dev.wait_until(lambda: GO_BYTES in _drives(dev), 30, "the drive")
+                dev.wait_until(lambda: _drives(dev)[-1:] == [STOP], 60, "the stop once the page stopped answering")
+        finally:
+            status, stderr = stop_process(process, signal.SIGINT)
+        assert status == 130 and "Traceback" not in stderr, stderr
+        assert "rdisc console: the last page closed: shutdown() ran" in stderr, stderr
