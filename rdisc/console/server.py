@@ -271,12 +271,20 @@ class Console:
         open for the next page. On the calls thread, after any call a page made before it closed."""
         if self.stopping or self._pages or self.robot.closed:
             return
-        hooks = [f"{c.terminate.interface.name}()" for c in self.robot.device.connections.values()
-                 if c.terminate is not None]
+        hooks = [c.terminate for c in self.robot.device.connections.values() if c.terminate is not None]
         if not hooks:
             return
+        if self.recorder is not None:  # recorded as the host's calls, so a replay writes the same stop
+            state = dict(self.robot.state)
+            for hook in hooks:
+                try:
+                    values = dict(zip((p.name for p in hook.interface.params), hook.args(state), strict=True))
+                except Exception:  # noqa: BLE001, S112 - the hook's own run reports it
+                    continue
+                self.recorder.call("interface", hook.interface.name, values)
         self.robot.terminate()  # its errors are reported, as the robot's are
-        self.tell(f"rdisc console: the last page closed: {', '.join(hooks)} ran (the terminate hook); "
+        names = ", ".join(f"{hook.interface.name}()" for hook in hooks)
+        self.tell(f"rdisc console: the last page closed: {names} ran (the terminate hook); "
                   "the robot stays open for the next page")
 
     # ---- calls from a page ---------------------------------------------------------------------------

@@ -292,3 +292,26 @@ def test_a_page_that_stops_answering_pings_leaves_the_robot_stopped() -> None:
             status, stderr = stop_process(process, signal.SIGINT)
         assert status == 130 and "Traceback" not in stderr, stderr
         assert "rdisc console: the last page closed: shutdown() ran" in stderr, stderr
+
+
+def test_a_recorded_session_replays_the_stop_of_the_last_page_closing(tmp_path) -> None:
+    """With --record, the terminate hook run when the last page closed is recorded as the host's
+    call, so `rdisc replay` writes the same bytes."""
+    from websockets.sync.client import connect
+
+    pytest.importorskip("mcap")
+    path = tmp_path / "console.mcap"
+    with CreateEmulator() as dev:
+        process, _, url = start_console(CREATE, "--port", dev.port, "--record", path)
+        try:
+            with connect(console_ws(url), origin=console_origin(url)) as ws:
+                assert json.loads(ws.recv(timeout=30))["type"] == "hello"
+                ws.send(json.dumps({"id": 1, **GO}))
+                assert _result(ws)["ok"] is True
+            dev.wait_until(lambda: _drives(dev)[-2:] == [GO_BYTES, STOP], 30, "the stop once the page closed")
+        finally:
+            status, stderr = stop_process(process, signal.SIGINT)
+    assert status == 130 and "Traceback" not in stderr, stderr
+    replayed = subprocess.run([sys.executable, "-m", "rdisc", "replay", str(path), str(CREATE)], cwd=REPO,
+                              env=cli_env(), capture_output=True, text=True, timeout=120, check=False)
+    assert replayed.returncode == 0, replayed.stdout + replayed.stderr
