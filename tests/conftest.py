@@ -221,16 +221,27 @@ def run_rdisc_here(
 
 def start_console(*args: str | os.PathLike[str]) -> tuple[subprocess.Popen[str], str, str]:
     """`rdisc console ARGS --http 127.0.0.1:0`: the process, the line it prints once it listens
-    (after the startup hooks) and the address in it."""
+    (after the startup hooks) and the address in it, with its token (`http://127.0.0.1:P/?token=T`)."""
     process = subprocess.Popen([sys.executable, "-m", "rdisc", "console", *map(str, args), "--http", "127.0.0.1:0"],
                                cwd=REPO, env=cli_env(), stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     assert process.stdout is not None
     line = process.stdout.readline()
-    found = re.search(r"http://127\.0\.0\.1:\d+/", line)
+    found = re.search(r"http://127\.0\.0\.1:\d+/\?token=[A-Za-z0-9_-]+", line)
     if found is None:
         process.kill()
         raise AssertionError(f"no address printed: {line!r} {process.communicate()}")
     return process, line, found.group(0)
+
+
+def console_ws(url: str) -> str:
+    """The WebSocket address of the console at `url` (as `start_console` gives it), with its token."""
+    base, _, query = url.partition("?")
+    return base.replace("http", "ws", 1) + "ws" + (f"?{query}" if query else "")
+
+
+def console_origin(url: str) -> str:
+    """The origin (http://host:port) of the console at `url`."""
+    return url.partition("?")[0].rstrip("/")
 
 
 def stop_process(process: subprocess.Popen[str], signum: int) -> tuple[int, str]:

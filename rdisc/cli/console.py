@@ -1,15 +1,16 @@
-"""`rdisc console FILE (--port P | --sim [--seed N]) [--http HOST:PORT] [--record FILE.mcap]`: a local web page to
-bring up and exercise a device (thesis ch. 5), or a simulation of its body.
+"""`rdisc console FILE (--port P | --sim [--seed N]) [--http HOST:PORT [--allow-remote]] [--record FILE.mcap]`: a
+local web page to bring up and exercise a device (thesis ch. 5), or a simulation of its body.
 
-Connects as `rdisc run` does (startup hooks), then serves the page at http://HOST:PORT/
-(127.0.0.1:8765 unless asked) until Ctrl-C or SIGTERM, and ends by running the terminate
-hooks. With --sim the robot drives the MuJoCo simulation `rdisc sim --realtime` drives (its
+Connects as `rdisc run` does (startup hooks), then serves the page at the address it prints,
+http://HOST:PORT/?token=TOKEN (127.0.0.1:8765 unless asked; the token is the credential, new
+each run) until Ctrl-C or SIGTERM, and ends by running the terminate hooks; they also run
+whenever the last page closes. An --http beyond loopback needs --allow-remote. With --sim the robot drives the MuJoCo simulation `rdisc sim --realtime` drives (its
 time the wall clock's, so what the page commands moves as a device would), and the page
 says so and shows the simulated body as it moves. With --record, the session is recorded as `rdisc run --record` records it, the
 page's calls as the host's. Only pages of this console's own address may drive the robot (see rdisc.console).
 
 Exit status: 1 the description has errors or the device failed to connect; 2 a usage error
-(a bad --port, --set or --http, --port with --sim, --sim without a body or MuJoCo, an address
+(a bad --port, --set or --http, an --http beyond loopback without --allow-remote, --port with --sim, --sim without a body or MuJoCo, an address
 in use, or a --record file that cannot be written); 130 after SIGINT, 143 after SIGTERM.
 """
 
@@ -17,6 +18,7 @@ from __future__ import annotations
 
 import argparse
 import asyncio
+import ipaddress
 import os
 import signal
 import sys
@@ -34,7 +36,9 @@ def add_parser(verbs: argparse._SubParsersAction[argparse.ArgumentParser]) -> No
         "console", help="a local web page to bring up and exercise a device",
         description="Connect to a device (or, with --sim, a simulation of its body) and serve a web page that "
                     "shows the description's graph, a form for each input, interface and primitive, each output "
-                    "live, the state, errors and a byte trace. The terminate hooks run when it stops (Ctrl-C).",
+                    "live, the state, errors and a byte trace. The terminate hooks run when it stops (Ctrl-C) and "
+                    "whenever the last page closes. The address it prints carries a token, new each run: only "
+                    "whoever has that address can open the page and drive the robot.",
     )
     p.add_argument("file", metavar="FILE", help=".rdis or thesis-style .json description")
     p.add_argument("--port", action="append", default=[], metavar="[CONN=]PORT",
@@ -47,7 +51,11 @@ def add_parser(verbs: argparse._SubParsersAction[argparse.ArgumentParser]) -> No
                    help="give a setting of the description its value; repeat for several")
     p.add_argument("--timeout", type=float, default=1.0, metavar="S", help="reply timeout in seconds (default 1)")
     p.add_argument("--http", default=DEFAULT_HTTP, metavar="HOST:PORT",
-                   help=f"where to serve the page (default {DEFAULT_HTTP}, loopback only; port 0: any free one)")
+                   help=f"where to serve the page (default {DEFAULT_HTTP}; port 0: any free one); an address beyond "
+                        "loopback needs --allow-remote")
+    p.add_argument("--allow-remote", action="store_true",
+                   help="let --http name an address beyond loopback (0.0.0.0: every interface): anyone on the "
+                        "network who has the printed address, with its token, can then drive the robot")
     p.add_argument("--origin", action="append", default=[], metavar="URL",
                    help="also let pages from this origin (http://name:port) drive the robot, when serving beyond "
                         "loopback")
@@ -65,6 +73,16 @@ def parse_http(text: str) -> tuple[str, int]:
     return host.strip("[]") or "127.0.0.1", int(port)
 
 
+def is_loopback(host: str) -> bool:
+    """Whether HOST is this machine's loopback only (127.0.0.0/8, ::1, localhost)."""
+    if host == "localhost":
+        return True
+    try:
+        return ipaddress.ip_address(host).is_loopback
+    except ValueError:  # a name: it may lead anywhere
+        return False
+
+
 def run(args: argparse.Namespace) -> int:
     compilation = compile_path(args.file)
     show([compilation])
@@ -79,6 +97,9 @@ def run(args: argparse.Namespace) -> int:
     device = Description(model).device
     try:
         host, http_port = parse_http(args.http)
+        if not is_loopback(host) and not args.allow_remote:
+            raise ValueError(f"--http {args.http} serves beyond this machine, where anyone on the network who has "
+                             "the address could drive the robot: add --allow-remote if that is meant")
         if args.sim and args.port:
             raise ValueError("--sim drives a simulation in place of the device: give --port or --sim, not both")
         if args.seed is not None and not args.sim:
@@ -98,14 +119,17 @@ def run(args: argparse.Namespace) -> int:
     recorder = engine.start_recording(robot, args.record, settings, "rdisc console") if args.record else None
     if args.record and recorder is None:
         return EXIT_USAGE
-    console = Console(robot, page, recorder, sim)
+    console = Console(robot, page, recorder, sim, tell=lambda text: print(text, file=sys.stderr, flush=True))
     robot.on_error(lambda error: print(f"rdisc console: {type(error).__name__}: {error}", file=sys.stderr, flush=True))
 
     def listening(bound: int) -> None:
         shown = f"[{host}]" if ":" in host else host
         what = f"{robot.name}, simulated," if sim is not None else robot.name
-        print(f"rdisc console: {what} on http://{shown}:{bound}/ (Ctrl-C stops it; the terminate hooks run)",
-              flush=True)
+        print(f"rdisc console: {what} on http://{shown}:{bound}/?token={console.token} (Ctrl-C stops it; the "
+              "terminate hooks run)", flush=True)
+        if not is_loopback(host):
+            print(f"rdisc console: WARNING: served beyond this machine ({args.http}): anyone on the network who "
+                  "has this address can drive the robot", flush=True)
 
     async def serve() -> int:
         stop = asyncio.Event()

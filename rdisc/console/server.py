@@ -3,25 +3,36 @@ happens is pushed and through which the page makes calls.
 
 One asyncio loop serves HTTP and the WebSockets (the `websockets` library); the robot
 runs on its own threads, and its callbacks hand what happened to the loop. Calls from
-a page run on a worker thread, one at a time per page, as `rdisc run --call` makes them.
+the pages run on the console's own calls thread, one at a time and in the order they came,
+as `rdisc run --call` makes them; the robot is closed on a thread of its own, so the
+stop never waits behind page calls, and once the console is stopping no call is made.
+When the last page closes (or stops answering pings) the terminate hooks run, so a robot
+is not left moving with nobody watching; it stays open for the next page.
 
-Safety: a WebSocket is accepted only from a page of this console: its Origin must be
-one of `origins` (this console's own addresses), else the handshake is answered 403
-and nothing is called. Every request's Host must be one of them too, so a page of
-another site that had its name point here (DNS rebinding) is refused as well.
+Safety: a credential, as Jupyter's: a random `token` in the address the console prints
+(`http://127.0.0.1:P/?token=...`) is required for the page and for the WebSocket (the page
+passes it on), compared in constant time; a request without it, or with another, is
+answered 403 and nothing is called. A WebSocket is also accepted only from a page of this
+console: its Origin must be one of `origins` (this console's own addresses), and every
+request's Host must be one of them too, so a page of another site that had its name
+point here (DNS rebinding) is refused as well.
 """
 
 from __future__ import annotations
 
 import asyncio
+import hmac
 import json
 import math
+import secrets
 import threading
 import time
 from collections import deque
 from collections.abc import Callable, Iterable
+from concurrent.futures import ThreadPoolExecutor
 from importlib import resources
 from typing import TYPE_CHECKING, Any
+from urllib.parse import parse_qs, urlsplit
 
 from websockets.asyncio.server import ServerConnection, broadcast, serve
 from websockets.datastructures import Headers
@@ -37,6 +48,9 @@ ASSETS = {"/console.js": "text/javascript; charset=utf-8", "/console.css": "text
 TRACE_KEPT, ERRORS_KEPT = 500, 100  # what a page opened later is shown of the past
 LOOPBACK = ("127.0.0.1", "localhost", "[::1]")
 BODY_HZ = 10  # how often a simulated body is pushed to the open pages
+PING_S = 5.0  # a page is pinged this often, and closed when it does not answer within as long
+MAX_DEPTH = 32  # how deep a page's call may nest its JSON (a call is an object of texts)
+STOPPING = "the console is stopping: no more calls are made"
 
 
 def origins_for(host: str, port: int, extra: Iterable[str] = ()) -> set[str]:
@@ -69,12 +83,16 @@ class Console:
     with the `body` it drives (`--sim`), the body as it is now is pushed BODY_HZ times a second."""
 
     def __init__(self, robot: engine.Robot, page: str, recorder: engine.Recorder | None = None,
-                 body: Simulation | None = None) -> None:
+                 body: Simulation | None = None, tell: Callable[[str], None] | None = None) -> None:
         self.robot = robot
         self.recorder = recorder
         self.body = body
         self.page = page.encode("utf-8")
         self.origins: set[str] = set()
+        self.token = secrets.token_urlsafe(32)  # the credential: in the printed address, asked of every page
+        self.tell = tell or (lambda text: None)  # a line for the person who started the console
+        self.stopping = False  # set when the console stops: no page call is made from then on
+        self._calls = ThreadPoolExecutor(max_workers=1, thread_name_prefix="rdisc-console-calls")
         self._start = time.monotonic()
         self._lock = threading.Lock()
         self._trace: deque[dict[str, Any]] = deque(maxlen=TRACE_KEPT)
@@ -158,33 +176,63 @@ class Console:
         """Serve pages until `stop` is set, then close the robot (its terminate hooks run, and the
         pages still see their bytes); `listening(port)` once the socket listens (port 0: a free one)."""
         self._loop = asyncio.get_running_loop()
-        async with serve(self._page, host, port, process_request=self._http, compression=None,
-                         max_size=2**16) as server:
-            bound = next(iter(server.sockets)).getsockname()[1]
-            self.origins = origins_for(host, bound, extra_origins)
-            listening(bound)
-            pushing = asyncio.create_task(self._push_body(self.body)) if self.body is not None else None
+        try:
+            async with serve(self._page, host, port, process_request=self._http, compression=None,
+                             max_size=2**16, ping_interval=PING_S, ping_timeout=PING_S) as server:
+                bound = next(iter(server.sockets)).getsockname()[1]
+                self.origins = origins_for(host, bound, extra_origins)
+                listening(bound)
+                pushing = asyncio.create_task(self._push_body(self.body)) if self.body is not None else None
+                try:
+                    await stop.wait()
+                finally:
+                    self.stopping = True
+                    if pushing is not None:
+                        pushing.cancel()
+                await self.close()
+        finally:
+            self.stopping = True
+            self._calls.shutdown(wait=False, cancel_futures=True)
+
+    async def close(self) -> None:
+        """Close the robot on a thread of its own (never queued behind page calls): from now on no
+        page call is made, and the engine ends the one in progress (`Robot.close`)."""
+        self.stopping = True
+        loop = asyncio.get_running_loop()
+        closed: asyncio.Future[None] = loop.create_future()
+
+        def done() -> None:
+            if not closed.done():
+                closed.set_result(None)
+
+        def close() -> None:
             try:
-                await stop.wait()
+                self.robot.close()
             finally:
-                if pushing is not None:
-                    pushing.cancel()
-            await asyncio.to_thread(self.robot.close)
+                loop.call_soon_threadsafe(done)
+
+        threading.Thread(target=close, name="rdisc-console-close", daemon=True).start()
+        await closed
 
     def _http(self, connection: ServerConnection, request: Request) -> Response | None:
         """Plain requests get the page and its assets; the WebSocket's handshake is checked."""
         host = _one(request.headers, "Host")
         if f"http://{host}" not in self.origins:
             return _response(403, f"Forbidden: this console is not served as {host!r}\n")
-        path = request.path.split("?", 1)[0]
+        address = urlsplit(request.path)
+        path = address.path
         if path == "/ws":
             origin = _one(request.headers, "Origin")
             if origin not in self.origins:
                 return _response(403, f"Forbidden: a page from {origin!r} may not drive this robot\n")
+            if not self._holds_token(address.query):
+                return _response(403, _NO_TOKEN)
             return None
         if "websocket" in (value.lower() for value in request.headers.get_all("Upgrade")):
             return _response(404, "Not found\n")
         if path == "/":
+            if not self._holds_token(address.query):
+                return _response(403, _NO_TOKEN)
             return _response(200, self.page, "text/html; charset=utf-8")
         kind = ASSETS.get(path)
         if kind is not None:
@@ -192,31 +240,63 @@ class Console:
             return _response(200, data, kind)
         return _response(404, "Not found\n")
 
+    def _holds_token(self, query: str) -> bool:
+        """Whether a request's query gives this console's token (once), compared in constant time."""
+        given = parse_qs(query).get("token", [])
+        return len(given) == 1 and hmac.compare_digest(given[0].encode("utf-8"), self.token.encode("utf-8"))
+
     async def _page(self, page: ServerConnection) -> None:
-        """One open page: first what happened so far, then every event as it comes; its calls."""
+        """One open page: first what happened so far, then every event as it comes; its calls, each
+        made on the calls thread. When the last page closes, the terminate hooks run."""
         with self._lock:
             self._state = jsonable(dict(self.robot.state))
             hello = {"type": "hello", "t": self._now(), "state": self._state, "trace": list(self._trace),
                      "errors": list(self._errors), "outputs": list(self._outputs.values())}
         self._pages.add(page)
+        loop = asyncio.get_running_loop()
         try:
             await page.send(json.dumps(hello))
             async for text in page:
-                reply = await asyncio.to_thread(self.call, text)
+                reply = _refused(text) if self.stopping else await loop.run_in_executor(self._calls, self.call, text)
                 await page.send(json.dumps(reply))
         except ConnectionClosed:
             pass
         finally:
             self._pages.discard(page)
+            if not self._pages and not self.stopping:
+                self._calls.submit(self._last_page_closed)
+
+    def _last_page_closed(self) -> None:
+        """No page is open: run the terminate hooks (the robot stops), and say so; the robot stays
+        open for the next page. On the calls thread, after any call a page made before it closed."""
+        if self.stopping or self._pages or self.robot.closed:
+            return
+        hooks = [c.terminate for c in self.robot.device.connections.values() if c.terminate is not None]
+        if not hooks:
+            return
+        if self.recorder is not None:  # recorded as the host's calls, so a replay writes the same stop
+            state = dict(self.robot.state)
+            for hook in hooks:
+                try:
+                    values = dict(zip((p.name for p in hook.interface.params), hook.args(state), strict=True))
+                except Exception:  # noqa: BLE001, S112 - the hook's own run reports it
+                    continue
+                self.recorder.call("interface", hook.interface.name, values)
+        self.robot.terminate()  # its errors are reported, as the robot's are
+        names = ", ".join(f"{hook.interface.name}()" for hook in hooks)
+        self.tell(f"rdisc console: the last page closed: {names} ran (the terminate hook); "
+                  "the robot stays open for the next page")
 
     # ---- calls from a page ---------------------------------------------------------------------------
 
     def call(self, text: str | bytes) -> dict[str, Any]:
         """One call a page asked for, `{"id", "kind", "name", "values": {NAME: text}}`; its result."""
+        if self.stopping:
+            return _refused(text)
         ident: Any = None
         made = False  # a call refused before it is made is not the robot's error, nor recorded
         try:
-            request = json.loads(text)
+            request = _parse(text)
             if not isinstance(request, dict):
                 raise TypeError("a call is a JSON object")
             ident = request.get("id")
@@ -237,6 +317,40 @@ class Console:
             return {"type": "result", "id": ident, "ok": False, "error": type(err).__name__, "message": str(message)}
         self._push_state()
         return {"type": "result", "id": ident, "ok": True}
+
+
+def _parse(text: str | bytes) -> Any:
+    """A page's message as JSON, refused (ValueError) when it nests deeper than MAX_DEPTH: the
+    depth is counted before parsing, so no message can exhaust the parser's recursion."""
+    chars = text.decode("utf-8", "replace") if isinstance(text, bytes) else text
+    depth, quoted, escaped = 0, False, False
+    for char in chars:
+        if quoted:
+            if escaped:
+                escaped = False
+            elif char == "\\":
+                escaped = True
+            elif char == '"':
+                quoted = False
+        elif char == '"':
+            quoted = True
+        elif char in "[{":
+            depth += 1
+            if depth > MAX_DEPTH:
+                raise ValueError(f"a call nests its values at most {MAX_DEPTH} deep")
+        elif char in "]}":
+            depth -= 1
+    return json.loads(text)
+
+
+def _refused(text: str | bytes) -> dict[str, Any]:
+    """The answer to a call made while the console is stopping: nothing is called."""
+    try:
+        request = _parse(text)
+        ident = request.get("id") if isinstance(request, dict) else None
+    except ValueError:
+        ident = None
+    return {"type": "result", "id": ident, "ok": False, "error": "Refused", "message": STOPPING}
 
 
 _FORM_WORDS = {int: "an int", float: "a number", bool: "true or false"}
@@ -265,6 +379,9 @@ def _read(device: engine.Device, kind: object, name: str, values: dict[str, Any]
         raise TypeError(f"{name}: {err.missing} is missing") from None
 
 
+_NO_TOKEN = ("Forbidden: open the address this console printed, with its token "
+             "(http://HOST:PORT/?token=...)\n")
+
 # the page's own files only, its WebSocket only, and no framing by another site
 _POLICY = ("default-src 'self'; connect-src 'self'; img-src 'self' data:; style-src 'self' 'unsafe-inline'; "
            "frame-ancestors 'none'")
@@ -281,5 +398,6 @@ def _response(status: int, body: str | bytes, kind: str = "text/plain; charset=u
     reasons = {200: "OK", 403: "Forbidden", 404: "Not Found"}
     headers = Headers([("Content-Type", kind), ("Content-Length", str(len(data))), ("Cache-Control", "no-store"),
                        ("X-Content-Type-Options", "nosniff"), ("Connection", "close"),
+                       ("Referrer-Policy", "no-referrer"),
                        ("Content-Security-Policy", _POLICY)])
     return Response(status, reasons[status], headers, data)

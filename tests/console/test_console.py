@@ -18,7 +18,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import pytest
-from conftest import REPO, start_console, stop_process
+from conftest import REPO, console_origin, console_ws, start_console, stop_process
 from devices import CreateEmulator
 from devices.create import DRIVE, STOP, TABLE_4_3
 
@@ -104,7 +104,17 @@ def browser() -> Iterator[object]:
 
 @pytest.fixture
 def page(browser, console: Running):
-    yield from opened_page(browser, console.url)
+    """A page of the console; once it closed (the last page), the stop its terminate hook sends."""
+    opened = opened_page(browser, console.url)
+    yield next(opened)
+    stops = _stops(console.dev)
+    next(opened, None)  # closed
+    console.dev.wait_until(lambda: _stops(console.dev) > stops, 30, "the stop once the last page closed")
+
+
+def _stops(dev: CreateEmulator) -> int:
+    with dev._cond:
+        return sum(1 for _, c in dev.commands if c == STOP)
 
 
 def _drive_bytes(velocity: int, radius: int) -> bytes:
@@ -195,7 +205,7 @@ def test_a_bad_value_is_refused_and_shown_as_an_error(page, console: Running) ->
     from websockets.sync.client import connect
 
     before = len(console.dev.commands)
-    with connect(console.url.replace("http", "ws") + "ws", origin=console.url.rstrip("/")) as ws:
+    with connect(console_ws(console.url), origin=console_origin(console.url)) as ws:
         hello = json.loads(ws.recv())
         assert hello["type"] == "hello"
         ws.send(json.dumps({"id": 7, "kind": "input", "name": "set_velocity",
@@ -211,7 +221,7 @@ def test_a_bad_value_is_refused_and_shown_as_an_error(page, console: Running) ->
 
 def test_a_page_of_another_site_cannot_drive_the_robot(browser, console: Running) -> None:
     """A page from another origin, open in the same browser, tries the console's WebSocket."""
-    ws_url = console.url.replace("http", "ws") + "ws"
+    ws_url = console_ws(console.url)  # even with the token, the Origin is refused
     attack = f"""<!DOCTYPE html><title>waiting</title><script>
       const ws = new WebSocket({json.dumps(ws_url)});
       ws.onopen = () => {{ document.title = "opened";
@@ -229,13 +239,13 @@ def test_a_foreign_origin_is_answered_403(console: Running) -> None:
     from websockets.sync.client import connect
 
     before = len(console.dev.commands)
-    ws_url = console.url.replace("http", "ws") + "ws"
-    port = int(console.url.rstrip("/").rsplit(":", 1)[1])
-    own = console.url.rstrip("/")
+    ws_url = console_ws(console.url)  # with the token: the Origin and Host are what is refused
+    port = int(console_origin(console.url).rsplit(":", 1)[1])
+    own = console_origin(console.url)
     # another site's page; no Origin at all; this console's Origin sent to another name that
     # leads here (DNS rebinding: the Host is not the console's)
     for url, origin in ((ws_url, "http://elsewhere.example"), (ws_url, None),
-                        (f"ws://elsewhere.example:{port}/ws", own)):
+                        (ws_url.replace("127.0.0.1", "elsewhere.example"), own)):
         with pytest.raises(InvalidStatus) as refused:
             connect(url, origin=origin, sock=socket.create_connection(("127.0.0.1", port)))
         assert refused.value.response.status_code == 403
@@ -259,3 +269,17 @@ def test_the_plot_s_axes_are_at_round_values(page) -> None:
     gives no more than about the ticks asked for."""
     assert page.evaluate("[ticks(0, 0.37, 5), ticks(-1.5, 1.5, 4), ticks(12.3, 14.1, 5), ticks(0, 1000, 4)]") == [
         [0, 0.1, 0.2, 0.3], [-1, 0, 1], [12.5, 13, 13.5, 14], [0, 500, 1000]]
+
+
+def test_the_page_opens_only_through_the_printed_address(browser, console: Running) -> None:
+    """The address the console printed carries its token, and the page passes it on to its WebSocket
+    (every page of these tests opens through it); without the token the page is refused."""
+    context = browser.new_context()
+    try:
+        refused = context.new_page().goto(console_origin(console.url) + "/")
+        assert refused is not None and refused.status == 403
+        opened = next(opened_page(browser, console.url))
+        playwright_api.expect(opened.locator("[data-rdis-status]")).to_have_text("connected", timeout=WAIT_MS)
+        opened.context.close()
+    finally:
+        context.close()

@@ -16,7 +16,7 @@ import subprocess
 from collections.abc import Iterator
 
 import pytest
-from conftest import REPO, start_console, stop_process
+from conftest import REPO, console_origin, console_ws, start_console, stop_process
 
 from console.test_console import WAIT_MS, launched_chromium, opened_page, playwright_api, refused_elsewhere
 
@@ -119,14 +119,14 @@ def test_a_page_of_another_site_cannot_drive_the_simulation(browser, console: st
     from websockets.exceptions import InvalidStatus
     from websockets.sync.client import connect
 
-    ws_url = console.replace("http", "ws") + "ws"
+    ws_url = console_ws(console)  # even with the token, the Origin is refused
     attack = f"""<!DOCTYPE html><title>waiting</title><script>
       const ws = new WebSocket({json.dumps(ws_url)});
       ws.onopen = () => {{ document.title = "opened"; }};
       ws.onclose = () => {{ if (document.title === "waiting") document.title = "refused"; }};
     </script>"""
     refused_elsewhere(browser, attack)
-    port = int(console.rstrip("/").rsplit(":", 1)[1])
+    port = int(console_origin(console).rsplit(":", 1)[1])
     for origin in ("http://elsewhere.example", None):
         with pytest.raises(InvalidStatus) as refused:
             connect(ws_url, origin=origin, sock=socket.create_connection(("127.0.0.1", port)))

@@ -13,7 +13,7 @@ from pathlib import Path
 from typing import Any
 
 import pytest
-from conftest import cli_env, start_console, stop_process
+from conftest import cli_env, console_origin, console_ws, start_console, stop_process
 from devices import CreateEmulator
 from mcap.reader import make_reader
 from mcap_ros2.decoder import DecoderFactory
@@ -174,13 +174,17 @@ def test_the_consoles_page_calls_are_recorded_as_the_hosts(rdisc, tmp_path) -> N
     with CreateEmulator() as dev:
         process, _, url = start_console(CREATE, "--port", dev.port, "--record", path)
         try:
-            with connect(f"{url.replace('http', 'ws', 1)}ws", origin=url.rstrip("/"), compression=None) as page:
+            with connect(console_ws(url), origin=console_origin(url), compression=None) as page:
                 assert call(page, 1, "input", "set_velocity", linear="0.2", angular="0")["ok"] is True
                 refused = call(page, 2, "primitive", "drive", velocity="100000", radius="0")
                 assert refused["ok"] is False
-            dev.wait_for_commands(1, opcode=137)
+                dev.wait_for_commands(1, opcode=137)
+                # stopped with the page open: the last page closing would run the terminate hook too
+                status, stderr = stop_process(process, signal.SIGINT)
         finally:
-            status, stderr = stop_process(process, signal.SIGINT)
+            if process.poll() is None:
+                process.kill()
+                process.communicate()
     assert status == 130, stderr
     assert "Traceback" not in stderr
     found_messages = messages(path)
@@ -204,7 +208,7 @@ def test_a_simulated_session_is_recorded(tmp_path: Path) -> None:
     path = tmp_path / "sim.mcap"
     process, _, url = start_console(CREATE2, "--sim", "--record", path)
     try:
-        with connect(f"{url.replace('http', 'ws', 1)}ws", origin=url.rstrip("/"), compression=None) as ws:
+        with connect(console_ws(url), origin=console_origin(url), compression=None) as ws:
             assert call(ws, 1, "input", "set_velocity", linear="0.2", angular="0")["ok"] is True
             for _ in range(1000):  # the odometry's pushes, until it has moved
                 event = json.loads(ws.recv(timeout=60))

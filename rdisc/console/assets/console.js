@@ -319,7 +319,9 @@ function receive(message) {
 }
 
 function connect() {
-  socket = new WebSocket(`ws://${location.host}/ws`);
+  // the console's credential, given in the address it printed: the WebSocket asks for it too
+  const token = new URLSearchParams(location.search).get("token") || "";
+  socket = new WebSocket(`ws://${location.host}/ws?token=${encodeURIComponent(token)}`);
   socket.addEventListener("open", () => { status.textContent = "connected"; status.className = "status up"; });
   socket.addEventListener("message", (ev) => receive(JSON.parse(ev.data)));
   socket.addEventListener("close", () => {
