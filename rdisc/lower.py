@@ -112,6 +112,7 @@ class Written:
     covered: bytes = b""
     partial: int | None = None  # a "sum" checksum: the sum of `covered`, to which the payload's is added
     tail: bytes = b""
+    constant: bytes | None = None  # no parameters and constant values: the whole request, always
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -411,9 +412,17 @@ def _written(plan: Primitive, params: tuple[m.Parameter, ...]) -> Written | None
             or any(isinstance(prm.type, m.Array) for prm in params):
         return None
     written = Written(params, plan.values, encoder.struct.format)
-    if plan.frame is None:
-        return written
-    return _folded(written, plan.frame, encoder.struct.size)
+    folded = written if plan.frame is None else _folded(written, plan.frame, encoder.struct.size)
+    if folded is None or params or not all(isinstance(e, m.Const) for _, e, _ in plan.values.items):
+        return folded
+    try:
+        payload = encoder.struct.pack(*(e.value for _, e, _ in plan.values.items if isinstance(e, m.Const)))
+    except struct.error:
+        return folded  # the general way says what is wrong, each time
+    check = b""
+    if folded.checksum is not None:
+        check = struct.pack(folded.check_format, folded.checksum.value(folded.covered + payload))
+    return dataclasses.replace(folded, constant=folded.head + payload + check + folded.tail)
 
 
 def _folded(written: Written, use: FrameUse, size: int) -> Written | None:

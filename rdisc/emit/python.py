@@ -566,6 +566,13 @@ class _Driver:
         """The primitive's request in one step (the engine's `Primitive.request`), as the lowering
         describes it: its parameters checked, its values packed between the frame's constant
         bytes, the checksum added to. Returns the function's name (the blank lines after it written)."""
+        function = f"_p_{prim.name}_request"
+        if written.constant is not None:
+            with w.block(f"def {function}(state: StateValues, args: Args) -> bytes | None:"):
+                w.line(f'"""{prim.name}, only written: always these bytes (given arguments, the general way decides)."""')
+                w.line(f"return None if args else {quoted(written.constant)}")
+            w.blank(2)
+            return function
         pack = _constant_name(f"PACK_{prim.name}", self.taken)
         w.line(f"{pack} = struct.Struct({quoted(written.format)}).pack")
         checked = ""
@@ -586,7 +593,6 @@ class _Driver:
                 w.line(f"{function_of} = {self.text(written.checksum)}")
                 covered = f"{quoted(written.covered)} + payload" if written.covered else "payload"
                 checked = f"{check}({function_of}({covered}))"
-        function = f"_p_{prim.name}_request"
         local = _params([(prm.name, prm.type) for prm in written.params])
         w.blank(2)
         with w.block(f"def {function}(state: StateValues, args: Args) -> bytes | None:"):
@@ -598,21 +604,27 @@ class _Driver:
                         w.line("return None")
                 else:
                     w.line(f"({names[0]},) = args" if len(names) == 1 else f"{', '.join(names)} = args")
+                tests = []
                 for name, prm in zip(names, written.params):
                     test = f"type({name}) is not {_PY_TYPES[prm.type] if isinstance(prm.type, Type) else 'tuple'}"
                     if prm.low is not None and prm.high is not None:
                         test += (f" or not {literal(prm.low, prm.type).text} <= {name} <= "
                                  f"{literal(prm.high, prm.type).text}")
-                    with w.block(f"if {test}:"):
+                    tests.append(test)
+                together = f"if {' or '.join(tests)}:"
+                for test in [together] if len(together) <= w.width() - 8 else [f"if {test}:" for test in tests]:
+                    with w.block(test):  # one test, or one a parameter
                         w.line("return None")
                 packed = [self.exprs.bound(e, t, local) if t is not None else self.exprs.expr(e, local)
                           for _, e, t in written.values.items]
-                _items(w, "payload = ", f"{pack}(", packed, ")")
+                framed = bool(written.head or checked or written.tail)
+                _items(w, "payload = " if framed else "return ", f"{pack}(", packed, ")")
             with w.block("except Exception:  # noqa: BLE001 - the general way says what is wrong"):
                 w.line("return None")
-            pieces = [quoted(written.head)] if written.head else []
-            pieces += ["payload"] + ([checked] if checked else []) + ([quoted(written.tail)] if written.tail else [])
-            w.line(f"return {' + '.join(pieces)}")
+            if framed:
+                pieces = [quoted(written.head)] if written.head else []
+                pieces += ["payload"] + ([checked] if checked else []) + ([quoted(written.tail)] if written.tail else [])
+                w.line(f"return {' + '.join(pieces)}")
         w.blank(2)
         return function
 

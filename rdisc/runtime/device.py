@@ -156,6 +156,9 @@ class _Engine:
     def written(self, w: plans.Written, params: tuple[engine.Param, ...]) -> engine.Request:
         """A primitive's request in one step, as its description says (`plans.Written`); what
         a driver writes as one function."""
+        if w.constant is not None:
+            constant = w.constant
+            return lambda state, args: None if args else constant
         kinds = tuple(prm.kind for prm in params)
         bounds = tuple((i, prm.low, prm.high) for i, prm in enumerate(params) if prm.low is not None)
         leading = _leading_constants(w.values)  # the values: these, then the parameters' in order

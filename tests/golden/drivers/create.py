@@ -3543,18 +3543,9 @@ def _p_start_values(state: StateValues, args: Args) -> Args:
     return [128]
 
 
-_PACK_START = struct.Struct("B").pack
-
-
 def _p_start_request(state: StateValues, args: Args) -> bytes | None:
-    """start, only written: its request in one step (None: the general way decides)."""
-    try:
-        if args:
-            return None
-        payload = _PACK_START(128)
-    except Exception:  # noqa: BLE001 - the general way says what is wrong
-        return None
-    return payload
+    """start, only written: always these bytes (given arguments, the general way decides)."""
+    return None if args else b"\x80"
 
 
 _P_START = Primitive("start", "btserial", (), _p_start_values, Pack("B"), request=_p_start_request)
@@ -3565,18 +3556,9 @@ def _p_full_values(state: StateValues, args: Args) -> Args:
     return [132]
 
 
-_PACK_FULL = struct.Struct("B").pack
-
-
 def _p_full_request(state: StateValues, args: Args) -> bytes | None:
-    """full, only written: its request in one step (None: the general way decides)."""
-    try:
-        if args:
-            return None
-        payload = _PACK_FULL(132)
-    except Exception:  # noqa: BLE001 - the general way says what is wrong
-        return None
-    return payload
+    """full, only written: always these bytes (given arguments, the general way decides)."""
+    return None if args else b"\x84"
 
 
 _P_FULL = Primitive("full", "btserial", (), _p_full_values, Pack("B"), request=_p_full_request)
@@ -3595,14 +3577,11 @@ def _p_drive_request(state: StateValues, args: Args) -> bytes | None:
     """drive, only written: its request in one step (None: the general way decides)."""
     try:
         velocity, radius = args
-        if type(velocity) is not int:
+        if type(velocity) is not int or type(radius) is not int:
             return None
-        if type(radius) is not int:
-            return None
-        payload = _PACK_DRIVE(137, velocity, radius)
+        return _PACK_DRIVE(137, velocity, radius)
     except Exception:  # noqa: BLE001 - the general way says what is wrong
         return None
-    return payload
 
 
 _P_DRIVE = Primitive(
