@@ -17,18 +17,21 @@ from __future__ import annotations
 
 import dataclasses
 import enum
+import struct
 from collections.abc import Mapping
 from dataclasses import KW_ONLY, dataclass
 from typing import Any
 
 from rdisc import engine
+from rdisc.engine.operations import EVAL_ERRORS
 from rdisc.engine.plans import _plain as plain  # the engine's rule of a plain struct pack
 from rdisc.runtime.codec import Construct, decoding, encoding, escaping, frame_fields, param, parts, stuffing
+from rdisc.runtime.evaluate import prepare
 from rdisc.runtime.messages import recorded_messages
 from rdisc.semantics import model as m
 
 __all__ = ["Call", "Code", "Connection", "Device", "Frame", "FrameUse", "Gives", "Hook", "Input", "Interface",
-           "Output", "Plans", "Primitive", "frame", "lower"]
+           "Output", "Plans", "Primitive", "Written", "frame", "lower"]
 
 Item = tuple[str, m.Expr, m.AnyType | None]
 """What a Code returns, one item: its key (a dict's key; in a list, "*" for an array given
@@ -54,6 +57,7 @@ class Code:
     items: tuple[Item, ...]
 
 
+_NO_STATE: Mapping[str, m.Value] = {}
 _OVER_ARGS = ("state", "args")
 _OVER_REPLY = ("state", "args", "reply")
 
@@ -91,6 +95,27 @@ class FrameUse:
 
 
 @dataclass(frozen=True, slots=True, eq=False)
+class Written:
+    """A primitive only written, in one step (the engine's `Primitive.request`): its parameters
+    each of its own type and in its range, its format values packed with `format`, between the
+    frame's constant bytes (its arguments constants, the payload's size fixed): `head`, the
+    checksum after the payload (if any) over `covered` (the head's bytes it covers) and the
+    payload, then `tail`. Anything else, and the general way decides (and says what is wrong)."""
+
+    params: tuple[m.Parameter, ...]
+    values: Code
+    format: str
+    _: KW_ONLY
+    head: bytes = b""
+    checksum: Construct[engine.Checksum] | None = None
+    check_format: str = ""  # how the checksum is packed
+    covered: bytes = b""
+    partial: int | None = None  # a "sum" checksum: the sum of `covered`, to which the payload's is added
+    tail: bytes = b""
+    constant: bytes | None = None  # no parameters and constant values: the whole request, always
+
+
+@dataclass(frozen=True, slots=True, eq=False)
 class Entry:
     """A reply table's entry: the key or tag values it is for, and its plan."""
 
@@ -125,6 +150,7 @@ class Primitive:
     replies: int = 0
     reply_frames: tuple[FrameUse, ...] = ()
     answers: tuple[Primitive, ...] = ()
+    request: Written | None = None
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -252,7 +278,8 @@ class _Lowering:
         """A primitive's plan; with a reply table, one plan for each entry besides (a range
         entry's once, for each of its values), chosen by a parameter or by the reply's tag."""
         if p.table is None:
-            return self.single(p, p.reply_locals())
+            plan = self.single(p, p.reply_locals())
+            return dataclasses.replace(plan, request=_written(plan, p.params))
         plain = self.single(dataclasses.replace(p, table=None), p.reply_locals())
         table = tuple(Entry(c, self.reply(plain, p.case(c), p.reply_locals())) for c in p.table.cases)
         if p.table.tag is not None:
@@ -372,6 +399,83 @@ def frame(f: m.Frame) -> Frame:
     return Frame(f.name, parts(f, f.request), parts(f, f.reply), stuffing=stuffing(f), params=_params(f.params),
                  fields=fields, more_requests=[parts(f, layout) for layout in f.more_requests],
                  more_replies=[parts(f, layout) for layout in f.more_replies], escaping=escaping(f))
+
+
+def _written(plan: Primitive, params: tuple[m.Parameter, ...]) -> Written | None:
+    """A primitive's request in one step, when it is only written (the engine's `_sent_at_once`)
+    and its frame, if any, folds into constant bytes around a payload of a fixed size."""
+    encoder = None if plan.encoder is None else plan.encoder.value
+    if not plain(encoder) or not isinstance(encoder, engine.Pack) or encoder.groups or encoder.varying:
+        return None
+    if plan.decoder is not None or plan.table is not None or plan.answers or plan.actions is not None \
+            or plan.lines is not None or any(key == "*" for key, _, _ in plan.values.items) \
+            or any(isinstance(prm.type, m.Array) for prm in params):
+        return None
+    written = Written(params, plan.values, encoder.struct.format)
+    folded = written if plan.frame is None else _folded(written, plan.frame, encoder.struct.size)
+    if folded is None or params or not all(isinstance(e, m.Const) for _, e, _ in plan.values.items):
+        return folded
+    try:
+        payload = encoder.struct.pack(*(e.value for _, e, _ in plan.values.items if isinstance(e, m.Const)))
+    except struct.error:
+        return folded  # the general way says what is wrong, each time
+    check = b""
+    if folded.checksum is not None:
+        check = struct.pack(folded.check_format, folded.checksum.value(folded.covered + payload))
+    return dataclasses.replace(folded, constant=folded.head + payload + check + folded.tail)
+
+
+def _folded(written: Written, use: FrameUse, size: int) -> Written | None:
+    """`written` with its frame's parts folded around its payload: the frame's arguments
+    constants, nothing escaped or stuffed, one layout, no reply read; before the payload
+    constant bytes, fields and the length only; after it a checksum of parts up to it, then
+    constant bytes."""
+    f = use.frame
+    reply = engine.Side([part.value for part in f.reply])
+    acknowledged = bool(reply.parts) and reply.payload < 0  # the engine's: a reply of constant parts is read
+    if f.stuffing is not None or f.escaping is not None or f.more_requests or acknowledged \
+            or not all(isinstance(e, m.Const) for _, e, _ in use.args.items):
+        return None
+    args = [e.value for _, e, _ in use.args.items if isinstance(e, m.Const)]
+    made = engine.Frame(f.name, [part.value for part in f.request], [], params=tuple(prm.value for prm in f.params),
+                        fields=None if f.fields is None else _evaluated(f.fields))
+    side = made.requests[0]
+    payload_at = side.payload
+    if payload_at < 0 or size > side.most:
+        return None
+    try:
+        fields = made.values("", args)
+    except (engine.RdisValueError, *EVAL_ERRORS):
+        return None
+    before, after = side.parts[:payload_at], side.parts[payload_at + 1:]
+    if not all(isinstance(part, (engine.Bytes, engine.Field, engine.Length)) for part in before):
+        return None
+    head_size = sum(side.sizes[:payload_at])
+    try:
+        framed = made.wrap(bytes(size), fields)
+    except (ValueError, struct.error):
+        return None
+    head = framed[:head_size]
+    check = after[0] if after and isinstance(after[0], engine.Check) else None
+    if not all(isinstance(part, engine.Bytes) for part in after[1 if check else 0:]):
+        return None
+    tail = b"".join(part.data for part in after[1 if check else 0:] if isinstance(part, engine.Bytes))
+    if check is None:
+        return dataclasses.replace(written, head=head, tail=tail)
+    if check.last != payload_at or check.struct is None or check.with_request:
+        return None
+    construct = f.request[payload_at + 1].args[0]
+    covered = head[sum(side.sizes[:check.first]):]
+    partial = sum(covered) if check.checksum.kind == "sum" else None
+    return dataclasses.replace(written, head=head, checksum=construct, check_format=check.struct.format,
+                               covered=covered, partial=partial, tail=tail)
+
+
+def _evaluated(code: Code) -> Any:
+    """A frame's fields' values over its arguments (the runtime's closure of the Code)."""
+    slots = {prm.name: i for i, prm in enumerate(code.params)}
+    fs = [prepare(e, slots) for _, e, _ in code.items]
+    return lambda args: [f(_NO_STATE, args, ()) for f in fs]
 
 
 def _written_at_once(interface: Interface) -> bool:

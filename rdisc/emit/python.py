@@ -546,6 +546,9 @@ class _Driver:
                 w.line(f"# reply {case.values_text()}")
                 table.append(f"{case.value}: {name}" if case.last is None
                              else f"**dict.fromkeys({case.values()!r}, {name})")  # a range entry
+            if entry.request is not None:
+                self.constant(w, name, entry, {"request": self.written(w, prim, entry.request)})
+                continue
             self.constant(w, name, entry)
         if plan.table is not None:
             entries_text = "{" + ", ".join(table) + "}"
@@ -558,6 +561,72 @@ class _Driver:
                 entries_text = f"{const}_TABLE"
             w.blank(2)
             self.constant(w, const, plan, {"table": entries_text})
+
+    def written(self, w: Writer, prim: m.Primitive, written: lowering.Written) -> str:
+        """The primitive's request in one step (the engine's `Primitive.request`), as the lowering
+        describes it: its parameters checked, its values packed between the frame's constant
+        bytes, the checksum added to. Returns the function's name (the blank lines after it written)."""
+        function = f"_p_{prim.name}_request"
+        if written.constant is not None:
+            with w.block(f"def {function}(state: StateValues, args: Args) -> bytes | None:"):
+                w.line(f'"""{prim.name}, only written: always these bytes (given arguments, the general way decides)."""')
+                w.line(f"return None if args else {quoted(written.constant)}")
+            w.blank(2)
+            return function
+        pack = _constant_name(f"PACK_{prim.name}", self.taken)
+        w.line(f"{pack} = struct.Struct({quoted(written.format)}).pack")
+        checked = ""
+        if written.checksum is not None:
+            check = _constant_name(f"PACK_{prim.name}_CHECKSUM", self.taken)
+            w.line(f"{check} = struct.Struct({quoted(written.check_format)}).pack")
+            checksum: engine.Checksum = written.checksum.value
+            if written.partial is not None:  # a sum: the constant bytes' summed here
+                full = (1 << checksum.width) - 1
+                total = f"({written.partial:#x} + sum(payload)) & {full:#x}"
+                if checksum.inverted:
+                    total = f"({total}) ^ {full:#x}"
+                if checksum.mask is not None and checksum.mask != full:
+                    total = f"({total}) & {checksum.mask:#x}"
+                checked = f"{check}({total})"
+            else:
+                function_of = _constant_name(f"CHECKSUM_{prim.name}", self.taken)
+                w.line(f"{function_of} = {self.text(written.checksum)}")
+                covered = f"{quoted(written.covered)} + payload" if written.covered else "payload"
+                checked = f"{check}({function_of}({covered}))"
+        local = _params([(prm.name, prm.type) for prm in written.params])
+        w.blank(2)
+        with w.block(f"def {function}(state: StateValues, args: Args) -> bytes | None:"):
+            w.line(f'"""{prim.name}, only written: its request in one step (None: the general way decides)."""')
+            with w.block("try:"):
+                names = [local[prm.name] for prm in written.params]
+                if not names:
+                    with w.block("if args:"):
+                        w.line("return None")
+                else:
+                    w.line(f"({names[0]},) = args" if len(names) == 1 else f"{', '.join(names)} = args")
+                tests = []
+                for name, prm in zip(names, written.params):
+                    test = f"type({name}) is not {_PY_TYPES[prm.type] if isinstance(prm.type, Type) else 'tuple'}"
+                    if prm.low is not None and prm.high is not None:
+                        test += (f" or not {literal(prm.low, prm.type).text} <= {name} <= "
+                                 f"{literal(prm.high, prm.type).text}")
+                    tests.append(test)
+                together = f"if {' or '.join(tests)}:"
+                for test in [together] if len(together) <= w.width() - 8 else [f"if {test}:" for test in tests]:
+                    with w.block(test):  # one test, or one a parameter
+                        w.line("return None")
+                packed = [self.exprs.bound(e, t, local) if t is not None else self.exprs.expr(e, local)
+                          for _, e, t in written.values.items]
+                framed = bool(written.head or checked or written.tail)
+                _items(w, "payload = " if framed else "return ", f"{pack}(", packed, ")")
+            with w.block("except Exception:  # noqa: BLE001 - the general way says what is wrong"):
+                w.line("return None")
+            if framed:
+                pieces = [quoted(written.head)] if written.head else []
+                pieces += ["payload"] + ([checked] if checked else []) + ([quoted(written.tail)] if written.tail else [])
+                w.line(f"return {' + '.join(pieces)}")
+        w.blank(2)
+        return function
 
     def interface(self, w: Writer, iface: m.Interface, plan: lowering.Interface) -> None:
         self.comment(w, iface.span, f"interface {iface.name}" + (" (periodic)" if iface.periodic else ""))
@@ -630,11 +699,12 @@ class _Driver:
             with w.block("def __init__(self, *, timeout: float = 1.0) -> None:"):
                 w.line('"""A robot not connected yet: `open()` connects it. `timeout`: seconds a reply may take."""')
                 w.line("super().__init__(_DEVICE, timeout=timeout)")
+                w.line(f"self._typed = ({cls}Inputs(self), {cls}Interfaces(self), {cls}Primitives(self))")
             for member, returns, body, doc_ in (
                 ("state", f"{cls}State", f"{cls}State(self._state)", "The state variables now: an immutable snapshot."),
-                ("inputs", f"{cls}Inputs", f"{cls}Inputs(self)", "The domain inputs, as typed methods."),
-                ("interfaces", f"{cls}Interfaces", f"{cls}Interfaces(self)", "The interfaces, as typed methods."),
-                ("primitives", f"{cls}Primitives", f"{cls}Primitives(self)", "The primitives, as typed methods."),
+                ("inputs", f"{cls}Inputs", "self._typed[0]", "The domain inputs, as typed methods."),
+                ("interfaces", f"{cls}Interfaces", "self._typed[1]", "The interfaces, as typed methods."),
+                ("primitives", f"{cls}Primitives", "self._typed[2]", "The primitives, as typed methods."),
             ):
                 w.blank(1)
                 w.line("@property")

@@ -4,6 +4,7 @@ inputs, interfaces, primitives); what it runs is written and read by the exchang
 
 from __future__ import annotations
 
+import functools
 import math
 import os
 import threading
@@ -56,11 +57,9 @@ class Calls:
     as a method of its name (an input takes its fields by name, the others their
     parameters by position or name)."""
 
-    __slots__ = ("_kind", "_robot")
-
     def __init__(self, robot: Robot, kind: str) -> None:
         self._robot = robot
-        self._kind = kind
+        self._kind = kind  # each method made is kept as an attribute: `__getattr__` makes it once
 
     def _plans(self) -> Mapping[str, Input | Interface | Primitive]:
         device = self._robot.device
@@ -73,15 +72,19 @@ class Calls:
         if plan is None:
             raise AttributeError(f"{self._robot.name} has no {self._kind} named {name!r}")
         robot = self._robot
+        method: Callable[..., None]
         if isinstance(plan, Input):
-            return lambda **fields: robot.call_input(name, **fields)
-        if isinstance(plan, Interface):
+            method = functools.partial(robot.call_input, name)
+        elif isinstance(plan, Interface):
             interface = plan
-            return lambda *args, **kwargs: robot._call_interface(
+            method = lambda *args, **kwargs: robot._call_interface(
                 interface, _bind(f"interface {name}", interface.params, args, kwargs))
-        primitive = plan
-        return lambda *args, **kwargs: robot._call_primitive(
-            primitive, _bind(f"primitive {name}", primitive.params, args, kwargs))
+        else:
+            primitive = plan
+            method = lambda *args, **kwargs: robot._call_primitive(
+                primitive, _bind(f"primitive {name}", primitive.params, args, kwargs))
+        setattr(self, name, method)
+        return method
 
     def __dir__(self) -> list[str]:
         return sorted(self._plans())
@@ -112,6 +115,7 @@ class Robot(Exchange):
         self._links: dict[str, _Link] = {}
         self._workers: list[_Worker] = []
         self._close_lock = threading.Lock()
+        self._calls = {kind: Calls(self, kind) for kind in ("input", "interface", "primitive")}
         self._running = False
         self._direct = False  # running on ports: a plain write may skip the general way
         self._closed = False
@@ -156,17 +160,17 @@ class Robot(Exchange):
     @property
     def inputs(self) -> Any:  # a Calls; a generated driver gives a class of typed methods
         """The domain inputs, by name: `robot.inputs.NAME(field=value, ...)`."""
-        return Calls(self, "input")
+        return self._calls["input"]
 
     @property
     def interfaces(self) -> Any:  # a Calls, or a driver's typed methods
         """The interfaces, by name: `robot.interfaces.NAME(param, ...)`."""
-        return Calls(self, "interface")
+        return self._calls["interface"]
 
     @property
     def primitives(self) -> Any:  # a Calls, or a driver's typed methods
         """The primitives (device commands), by name: `robot.primitives.NAME(param, ...)`."""
-        return Calls(self, "primitive")
+        return self._calls["primitive"]
 
     def call_input(self, name: str, /, **fields: Any) -> None:
         """Run a domain input with its adapter's fields by name, on this thread; errors are raised."""
@@ -196,14 +200,7 @@ class Robot(Exchange):
         plan = self.device.primitives.get(name)
         if plan is None:
             raise KeyError(f"{self.name} has no primitive named {name!r}")
-        values = list(args)
-        request = plan.request
-        if request is not None and self._direct:  # one plain write: every command's path
-            data = request(self._state, values)
-            if data is not None:
-                self._write(plan, data)
-                return
-        self._call_primitive(plan, values)
+        self._call_primitive(plan, list(args))
 
     # ---- lifecycle ----------------------------------------------------------------------------------
 
@@ -388,7 +385,14 @@ class Robot(Exchange):
         self._interface(plan, _accepted(f"interface {plan.name}", plan.params, values))
 
     def _call_primitive(self, plan: Primitive, values: Args) -> None:
-        """Run a primitive the host called, with its parameters' values by position."""
+        """Run a primitive the host called, with its parameters' values by position: a plain
+        write in one step (`plan.request`) when it can be, else the general way."""
+        request = plan.request
+        if request is not None and self._direct:  # one plain write: every command's path
+            data = request(self._state, values)
+            if data is not None:
+                self._write(plan, data)
+                return
         if not self._running:
             raise self._not_running()
         self._primitive(plan, _accepted(f"primitive {plan.name}", plan.params, values))

@@ -10,6 +10,7 @@ lowering's, the same plans a generated driver is written from.
 from __future__ import annotations
 
 import os
+import struct
 from collections.abc import Callable, Mapping
 from types import MappingProxyType
 from typing import Any, TypeVar
@@ -149,7 +150,46 @@ class _Engine:
             p.records, p.checked, expect=self.closure(p.expect), lines=self.closure(p.lines), replies=p.replies,
             reply_frames=tuple(self.use(u) for u in p.reply_frames),
             answers=tuple(self.primitive(answer) for answer in p.answers),
+            request=None if p.request is None else self.written(p.request, built(p.params)),
         )
+
+    def written(self, w: plans.Written, params: tuple[engine.Param, ...]) -> engine.Request:
+        """A primitive's request in one step, as its description says (`plans.Written`); what
+        a driver writes as one function."""
+        if w.constant is not None:
+            constant = w.constant
+            return lambda state, args: None if args else constant
+        kinds = tuple(prm.kind for prm in params)
+        bounds = tuple((i, prm.low, prm.high) for i, prm in enumerate(params) if prm.low is not None)
+        leading = _leading_constants(w.values)  # the values: these, then the parameters' in order
+        constants = leading or ()
+        values = None if leading is not None else self.closure(w.values)
+        pack = struct.Struct(w.format).pack
+        head, tail, covered, partial = w.head, w.tail, w.covered, w.partial
+        checksum: engine.Checksum | None = built(w.checksum)
+        pack_check = struct.Struct(w.check_format or "B").pack
+        full, flip, mask = _sum_finish(checksum)
+
+        def request(state: Mapping[str, m.Value], args: Any) -> bytes | None:
+            if len(args) != len(kinds):
+                return None
+            for value, kind in zip(args, kinds):
+                if type(value) is not kind:
+                    return None
+            for i, low, high in bounds:
+                if not low <= args[i] <= high:
+                    return None
+            try:
+                payload = pack(*constants, *args) if values is None else pack(*values(state, args))
+            except Exception:  # noqa: BLE001 - the general way says what is wrong
+                return None
+            if checksum is None:
+                return head + payload + tail
+            if partial is not None:  # a sum: the covered bytes' summed once
+                return head + payload + pack_check((((partial + sum(payload)) & full) ^ flip) & mask) + tail
+            return head + payload + pack_check(checksum(covered + payload)) + tail
+
+        return request
 
     def output(self, o: plans.Output) -> engine.Output:
         return self.once(o, lambda: engine.Output(o.name, self.closure(o.fields), o.adapter))
@@ -175,6 +215,26 @@ class _Engine:
             c.name, c.baud, c.address, c.terminator, c.frequency, tuple(self.interface(i) for i in c.periodic),
             hook(c.startup), hook(c.terminate), hook(c.keepalive), c.interval, c.baud_setting,
         )
+
+
+def _leading_constants(code: plans.Code) -> tuple[m.Value, ...] | None:
+    """The constants a primitive's format values start with, when the parameters' values follow
+    them as they are, in order (an opcode and the parameters: `pack(*constants, *args)`)."""
+    count = len(code.items) - len(code.params)
+    if count < 0 or any(not isinstance(e, m.Const) or type_ is not None for _, e, type_ in code.items[:count]):
+        return None
+    for (_, e, type_), prm in zip(code.items[count:], code.params):
+        if not isinstance(e, m.Var) or e.scope is not m.Scope.PARAM or e.name != prm.name or type_ is not None:
+            return None
+    return tuple(e.value for _, e, _ in code.items[:count] if isinstance(e, m.Const))
+
+
+def _sum_finish(checksum: engine.Checksum | None) -> tuple[int, int, int]:
+    """A "sum" checksum's last steps, as masks: kept to its width, inverted (XOR), masked."""
+    if checksum is None:
+        return 0, 0, 0
+    full = (1 << checksum.width) - 1
+    return full, full if checksum.inverted else 0, full if checksum.mask is None else checksum.mask
 
 
 def _slots(code: plans.Code) -> dict[str, int]:

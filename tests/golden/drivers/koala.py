@@ -22,6 +22,7 @@ from __future__ import annotations
 
 import argparse
 import difflib
+import functools
 import json
 import logging
 import math
@@ -2673,11 +2674,9 @@ class Calls:
     as a method of its name (an input takes its fields by name, the others their
     parameters by position or name)."""
 
-    __slots__ = ("_kind", "_robot")
-
     def __init__(self, robot: Robot, kind: str) -> None:
         self._robot = robot
-        self._kind = kind
+        self._kind = kind  # each method made is kept as an attribute: `__getattr__` makes it once
 
     def _plans(self) -> Mapping[str, Input | Interface | Primitive]:
         device = self._robot.device
@@ -2690,15 +2689,19 @@ class Calls:
         if plan is None:
             raise AttributeError(f"{self._robot.name} has no {self._kind} named {name!r}")
         robot = self._robot
+        method: Callable[..., None]
         if isinstance(plan, Input):
-            return lambda **fields: robot.call_input(name, **fields)
-        if isinstance(plan, Interface):
+            method = functools.partial(robot.call_input, name)
+        elif isinstance(plan, Interface):
             interface = plan
-            return lambda *args, **kwargs: robot._call_interface(
+            method = lambda *args, **kwargs: robot._call_interface(
                 interface, _bind(f"interface {name}", interface.params, args, kwargs))
-        primitive = plan
-        return lambda *args, **kwargs: robot._call_primitive(
-            primitive, _bind(f"primitive {name}", primitive.params, args, kwargs))
+        else:
+            primitive = plan
+            method = lambda *args, **kwargs: robot._call_primitive(
+                primitive, _bind(f"primitive {name}", primitive.params, args, kwargs))
+        setattr(self, name, method)
+        return method
 
     def __dir__(self) -> list[str]:
         return sorted(self._plans())
@@ -2729,6 +2732,7 @@ class Robot(Exchange):
         self._links: dict[str, _Link] = {}
         self._workers: list[_Worker] = []
         self._close_lock = threading.Lock()
+        self._calls = {kind: Calls(self, kind) for kind in ("input", "interface", "primitive")}
         self._running = False
         self._direct = False  # running on ports: a plain write may skip the general way
         self._closed = False
@@ -2773,17 +2777,17 @@ class Robot(Exchange):
     @property
     def inputs(self) -> Any:  # a Calls; a generated driver gives a class of typed methods
         """The domain inputs, by name: `robot.inputs.NAME(field=value, ...)`."""
-        return Calls(self, "input")
+        return self._calls["input"]
 
     @property
     def interfaces(self) -> Any:  # a Calls, or a driver's typed methods
         """The interfaces, by name: `robot.interfaces.NAME(param, ...)`."""
-        return Calls(self, "interface")
+        return self._calls["interface"]
 
     @property
     def primitives(self) -> Any:  # a Calls, or a driver's typed methods
         """The primitives (device commands), by name: `robot.primitives.NAME(param, ...)`."""
-        return Calls(self, "primitive")
+        return self._calls["primitive"]
 
     def call_input(self, name: str, /, **fields: Any) -> None:
         """Run a domain input with its adapter's fields by name, on this thread; errors are raised."""
@@ -2813,14 +2817,7 @@ class Robot(Exchange):
         plan = self.device.primitives.get(name)
         if plan is None:
             raise KeyError(f"{self.name} has no primitive named {name!r}")
-        values = list(args)
-        request = plan.request
-        if request is not None and self._direct:  # one plain write: every command's path
-            data = request(self._state, values)
-            if data is not None:
-                self._write(plan, data)
-                return
-        self._call_primitive(plan, values)
+        self._call_primitive(plan, list(args))
 
     # ---- lifecycle ----------------------------------------------------------------------------------
 
@@ -3005,7 +3002,14 @@ class Robot(Exchange):
         self._interface(plan, _accepted(f"interface {plan.name}", plan.params, values))
 
     def _call_primitive(self, plan: Primitive, values: Args) -> None:
-        """Run a primitive the host called, with its parameters' values by position."""
+        """Run a primitive the host called, with its parameters' values by position: a plain
+        write in one step (`plan.request`) when it can be, else the general way."""
+        request = plan.request
+        if request is not None and self._direct:  # one plain write: every command's path
+            data = request(self._state, values)
+            if data is not None:
+                self._write(plan, data)
+                return
         if not self._running:
             raise self._not_running()
         self._primitive(plan, _accepted(f"primitive {plan.name}", plan.params, values))
@@ -4133,6 +4137,7 @@ class Koala(Robot):
     def __init__(self, *, timeout: float = 1.0) -> None:
         """A robot not connected yet: `open()` connects it. `timeout`: seconds a reply may take."""
         super().__init__(_DEVICE, timeout=timeout)
+        self._typed = (KoalaInputs(self), KoalaInterfaces(self), KoalaPrimitives(self))
 
     @property
     def state(self) -> KoalaState:
@@ -4142,17 +4147,17 @@ class Koala(Robot):
     @property
     def inputs(self) -> KoalaInputs:
         """The domain inputs, as typed methods."""
-        return KoalaInputs(self)
+        return self._typed[0]
 
     @property
     def interfaces(self) -> KoalaInterfaces:
         """The interfaces, as typed methods."""
-        return KoalaInterfaces(self)
+        return self._typed[1]
 
     @property
     def primitives(self) -> KoalaPrimitives:
         """The primitives, as typed methods."""
-        return KoalaPrimitives(self)
+        return self._typed[2]
 
     def set_velocity(self, linear: float, angular: float) -> None:
         """A Twist from the framework, as wheel speeds: for a wheel base b, the left

@@ -1,0 +1,170 @@
+"""A primitive only written goes out in one step (`Primitive.request`), as the lowering describes
+it (`rdisc.lower.Written`): its parameters checked, its values packed between its frame's
+constant bytes, the checksum summed from the constant part's. The runtime's closure and the
+driver's function give exactly the bytes the general way gives, or None and the general way
+then raises its typed error; the typed methods take that step first."""
+
+from __future__ import annotations
+
+import functools
+import tempfile
+from collections.abc import Sequence
+from typing import Any
+
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from rdisc.compile import compile_text
+from rdisc.emit.python import import_driver, to_python
+from rdisc.engine.arguments import _accepted
+from rdisc.lower import lower
+from rdisc.runtime import load
+from tests.support.ports import ScriptedPort
+
+DESCRIPTION = """\
+robot written { description "primitives written in one step" }
+
+const BROADCAST = 254
+state mode: int = 2
+
+frame summed(id: int in 0..BROADCAST) {
+    header "\\xFF\\xFF"
+    field id "B" = id
+    length "B" = payload + 1
+    payload
+    checksum "sum" "B" inverted
+}
+frame crc(address: int) {
+    header "\\xAA"  field address "B" = address  length "B" = payload  payload  checksum "crc16-xmodem" ">H"
+    terminator "\\r\\n"
+}
+frame xored { header "\\x02"  length "B" = payload  payload  checksum "xor" "B" }
+
+connection link: serial { baud 115200 }
+
+primitive goto(goal: int in 0..1023) on link frame summed(BROADCAST) pack "<BBH" (3, 30, goal)
+primitive drive(right: int in -500..500, left: int in -500..500) on link pack ">Bhh" (145, right, left)
+primitive speed(v: float in -1.5..1.5, turn: int) on link frame crc(7) pack ">bfh" (-3, v * 2, turn)
+primitive flag(on: bool, level: int in 0..200) on link frame xored pack "<B?B" (9, on, level)
+primitive scaled(x: int) on link pack ">BH" (1, x * 3 + 1)
+primitive moded(x: int in 0..9) on link frame summed(1) pack "<BBB" (4, mode, x)
+primitive nothing() on link frame summed(2) pack "B" (6)
+"""
+
+NAMES = ("goto", "drive", "speed", "flag", "scaled", "moded", "nothing")
+
+
+@functools.cache
+def _path() -> str:
+    folder = tempfile.mkdtemp(prefix="rdisc-written-")
+    path = f"{folder}/written.rdis"
+    with open(path, "w", encoding="utf-8") as out:
+        out.write(DESCRIPTION)
+    return path
+
+
+@functools.cache
+def _robots() -> tuple[tuple[Any, ScriptedPort], ...]:
+    """The runtime's robot and the driver's, each on its own port."""
+    path = _path()
+    driver = import_driver(path, path.rsplit("/", 1)[0], "written_driver_for_requests")
+    made = []
+    for robot in (load(path).connect, driver.connect):
+        port = ScriptedPort()
+        made.append((robot(port, threads=False), port))
+    return tuple(made)
+
+
+def _general(robot: Any, port: ScriptedPort, name: str, values: Sequence[Any]) -> bytes | str:
+    """What the general way writes for these values, or the name of the error it raises."""
+    plan = robot.device.primitives[name]
+    before = len(port.written)
+    try:
+        type(robot)._primitive_in_full(robot, plan, _accepted(f"primitive {name}", plan.params, list(values)))
+    except Exception as err:  # noqa: BLE001 - its type is compared
+        return type(err).__name__
+    return bytes(port.written[before:])
+
+
+def _outside(plan: Any, values: Sequence[Any]) -> bool:
+    """Whether the values are each of its parameter's own type, and one is outside its range."""
+    return all(type(v) is p.kind for v, p in zip(values, plan.params)) and any(
+        p.low is not None and not p.low <= v <= p.high for v, p in zip(values, plan.params))
+
+
+INTS = st.one_of(st.integers(-2000, 2000), st.integers(-2**70, 2**70))
+VALUES = st.one_of(INTS, st.floats(allow_nan=True, allow_infinity=True), st.booleans(), st.just("7"))
+
+
+@settings(max_examples=400, deadline=None)
+@given(name=st.sampled_from(NAMES), values=st.lists(VALUES, min_size=0, max_size=3))
+def test_one_step_gives_the_general_ways_bytes_or_leaves_it_to_the_general_way(name: str, values: list[Any]) -> None:
+    for robot, port in _robots():
+        plan = robot.device.primitives[name]
+        assert plan.request is not None, f"{name} is only written"
+        fast = plan.request(robot._state, list(values))
+        general = _general(robot, port, name, values)
+        if fast is not None:
+            assert fast == general
+        if len(values) == len(plan.params) and _outside(plan, values):
+            assert fast is None
+            assert general == "RdisValueError"
+        before = len(port.written)  # the host's way: the one step, else the general way's error
+        try:
+            robot.call_primitive(name, *values)
+            called: bytes | str = bytes(port.written[before:])
+        except Exception as err:  # noqa: BLE001 - its type is compared
+            called = type(err).__name__
+        assert called == general
+
+
+@pytest.mark.parametrize(("name", "values", "expected"), [
+    ("goto", [512], "FF FF FE 05 03 1E 00 02 D9"),  # the AX-12 manual's broadcast goal position
+    ("goto", [0], "FF FF FE 05 03 1E 00 00 DB"),
+    ("drive", [200, -45], "91 00 C8 FF D3"),
+    ("moded", [3], "FF FF 01 04 04 02 03 F1"),
+    ("nothing", [], "FF FF 02 02 06 F5"),
+])
+def test_one_step_writes_the_published_bytes(name: str, values: list[Any], expected: str) -> None:
+    for robot, port in _robots():
+        before = len(port.written)
+        robot.call_primitive(name, *values)
+        assert bytes(port.written[before:]) == bytes.fromhex(expected)
+
+
+def test_the_lowering_folds_the_frame_into_constant_bytes() -> None:
+    compilation = compile_text("written.rdis", DESCRIPTION)
+    assert compilation.model is not None
+    primitives = lower(compilation.model).device.primitives
+    goto = primitives["goto"].request
+    assert goto is not None
+    assert (goto.head, goto.covered, goto.partial, goto.tail) == (b"\xff\xff\xfe\x05", b"\xfe\x05", 0xFE + 5, b"")
+    speed = primitives["speed"].request
+    assert speed is not None
+    assert (speed.head, speed.partial, speed.tail) == (b"\xaa\x07\x07", None, b"\r\n")  # a CRC: over the bytes
+    drive = primitives["drive"].request
+    assert drive is not None and (drive.head, drive.checksum) == (b"", None)
+    text = to_python(compilation.model, "written.rdis")
+    assert "def _p_goto_request(state: StateValues, args: Args) -> bytes | None:" in text
+    assert 'return b"\\xff\\xff\\xfe\\x05" + payload + _PACK_GOTO_CHECKSUM(((0x103 + sum(payload)) & 0xff) ^ 0xff)' \
+        in text
+    assert "request=_p_goto_request," in text
+
+
+def test_a_typed_method_takes_the_one_step_first_and_is_made_once() -> None:
+    for robot, _port in _robots():
+        counted: list[Any] = []
+        robot._primitive = lambda plan, _args, seen=counted: seen.append(plan)  # the general way, counted (this instance's): it writes nothing
+        try:
+            robot.primitives.goto(100)
+            robot.primitives.drive(1, 2)
+            robot.call_primitive("goto", 5000)  # out of range: the general way says so
+        except Exception:  # noqa: BLE001, S110 - the counted general way wrote nothing
+            pass
+        finally:
+            del robot._primitive
+        assert len(counted) == 1
+        assert robot.primitives is robot.primitives  # the typed methods' object is made once
+    runtime = _robots()[0][0]
+    assert runtime.primitives.drive is runtime.primitives.drive  # the runtime's method kept, not made each call
