@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import json
 import math
+import os
 import threading
 import time
 from collections.abc import Mapping
@@ -50,9 +51,15 @@ class Recorder:
     Needs the `mcap` and `mcap-ros2-support` packages, imported here only (ImportError without).
     """
 
-    def __init__(self, robot: Robot, output: Any, settings: Mapping[str, Any] | None = None) -> None:
-        from mcap_ros2.writer import Writer  # only a recording needs it
+    def __init__(self, robot: Robot, output: Any, settings: Mapping[str, Any] | None = None, *,
+                 replace: bool = False) -> None:
+        """`output` a stream, or a path: a new file (FileExistsError if there is one), or, with
+        `replace`, one that may be there already."""
+        from mcap_ros2.writer import Writer  # only a recording needs it: nothing is created without it
 
+        self._file: Any = None
+        if isinstance(output, (str, os.PathLike)):
+            output = self._file = open(output, "wb" if replace else "xb")  # noqa: SIM115 (closed by finish)
         self._writer: Any = Writer(output)
         self._device = robot.device
         self._adapters = {o.name: o.adapter for i in robot.device.interfaces.values() for o in i.outputs}
@@ -96,7 +103,11 @@ class Recorder:
     def finish(self) -> None:
         """Write the file's index and close it: call it once the robot is closed."""
         with self._lock:
-            self._writer.finish()
+            try:
+                self._writer.finish()
+            finally:
+                if self._file is not None:
+                    self._file.close()
 
     def _adapted(self, name: str, adapter: str, contents: Mapping[str, Any]) -> None:
         """An adapter's values on `/NAME`: its ROS 2 message, or JSON text. A message with a

@@ -33,7 +33,7 @@ import struct
 import sys
 import threading
 import time
-from collections.abc import Callable, Iterator, Mapping, Sequence
+from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field, replace
 from typing import Any, Protocol
 
@@ -1073,7 +1073,7 @@ class Format:
     def encode(self, owner: str, values: Sequence[Value]) -> bytes:
         try:
             text = self.template.format(*values)
-        except (ValueError, TypeError, IndexError, KeyError) as err:
+        except (ValueError, TypeError, IndexError, KeyError, OverflowError) as err:  # `{:c}` of 2**40 overflows
             raise RdisValueError(f"{owner}: {err}") from None
         return _latin1(owner, text)
 
@@ -3155,9 +3155,15 @@ class Recorder:
     Needs the `mcap` and `mcap-ros2-support` packages, imported here only (ImportError without).
     """
 
-    def __init__(self, robot: Robot, output: Any, settings: Mapping[str, Any] | None = None) -> None:
-        from mcap_ros2.writer import Writer  # only a recording needs it
+    def __init__(self, robot: Robot, output: Any, settings: Mapping[str, Any] | None = None, *,
+                 replace: bool = False) -> None:
+        """`output` a stream, or a path: a new file (FileExistsError if there is one), or, with
+        `replace`, one that may be there already."""
+        from mcap_ros2.writer import Writer  # only a recording needs it: nothing is created without it
 
+        self._file: Any = None
+        if isinstance(output, (str, os.PathLike)):
+            output = self._file = open(output, "wb" if replace else "xb")  # noqa: SIM115 (closed by finish)
         self._writer: Any = Writer(output)
         self._device = robot.device
         self._adapters = {o.name: o.adapter for i in robot.device.interfaces.values() for o in i.outputs}
@@ -3201,7 +3207,11 @@ class Recorder:
     def finish(self) -> None:
         """Write the file's index and close it: call it once the robot is closed."""
         with self._lock:
-            self._writer.finish()
+            try:
+                self._writer.finish()
+            finally:
+                if self._file is not None:
+                    self._file.close()
 
     def _adapted(self, name: str, adapter: str, contents: Mapping[str, Any]) -> None:
         """An adapter's values on `/NAME`: its ROS 2 message, or JSON text. A message with a
@@ -3293,16 +3303,21 @@ def add_arguments(parser: argparse.ArgumentParser, device: Device | None = None,
                         help="reply timeout in seconds (default 1)")
     parser.add_argument("--record", metavar="FILE.mcap",
                         help="record the session in MCAP: inputs and outputs as ROS 2 messages, the bytes "
-                             "each way, errors (needs the mcap and mcap-ros2-support packages)")
+                             "each way, errors (needs the mcap and mcap-ros2-support packages); a file that "
+                             "exists is refused unless --force")
+    parser.add_argument("--force", action="store_true",
+                        help="let --record replace a file that exists (never the description or its imports)")
 
 
-def run_command(args: argparse.Namespace, robot: Robot, prog: str, sim: Simulator | None = None) -> int:
+def run_command(args: argparse.Namespace, robot: Robot, prog: str, sim: Simulator | None = None,
+                inputs: Iterable[str] = ()) -> int:
     """What `rdisc run` does with its options: connect, make the --call calls in order, then
     run until --duration seconds after the startup hooks ended (or, with --watch, until
     Ctrl-C; else end when the calls are done). It always ends by closing the robot, which
     runs the terminate hooks. Exit status: 0 done; 1 the device failed; 2 a usage error;
     130 after SIGINT; 143 after SIGTERM. With `sim` (`rdisc sim`) the robot runs against
-    the simulated device; in simulated time the seconds, the trace's included, are its."""
+    the simulated device; in simulated time the seconds, the trace's included, are its.
+    `inputs` are the files the description was read from, which --record never writes over."""
     simulated = sim is not None and not sim.realtime
     clock = sim.now if sim is not None and simulated else time.monotonic
     began = clock()
@@ -3313,7 +3328,8 @@ def run_command(args: argparse.Namespace, robot: Robot, prog: str, sim: Simulato
     except (TypeError, ValueError) as err:
         print(f"{prog}: {err}", file=sys.stderr)
         return EXIT_USAGE
-    recorder = start_recording(robot, args.record, settings, prog) if args.record else None
+    recorder = (start_recording(robot, args.record, settings, prog, force=args.force, inputs=inputs)
+                if args.record else None)
     if args.record and recorder is None:
         return EXIT_USAGE
     robot.on_error(_print_error)
@@ -3367,17 +3383,37 @@ def run_command(args: argparse.Namespace, robot: Robot, prog: str, sim: Simulato
     return status
 
 
-def start_recording(robot: Robot, path: str, settings: Mapping[str, Any], prog: str) -> Recorder | None:
-    """`--record PATH` (of `rdisc run`, a driver and `rdisc console`): a Recorder attached to
-    `robot`, or None once stderr says why there is none (the mcap packages are missing, the
-    file cannot be written), which is a usage error."""
+def start_recording(robot: Robot, path: str, settings: Mapping[str, Any], prog: str, *, force: bool = False,
+                    inputs: Iterable[str] = ()) -> Recorder | None:
+    """`--record PATH` (of `rdisc run`, `rdisc sim`, a driver and `rdisc console`): a Recorder
+    attached to `robot`, or None once stderr says in a line why there is none, which is a usage
+    error: the mcap packages are missing, PATH is one of `inputs` (the description and its
+    imports, even with `force`), PATH exists and `force` is not given, or it cannot be written."""
+    source = made_from(path, inputs)
+    if source is not None:
+        print(f"{prog}: will not record to {path}: it is {source}, which this runs", file=sys.stderr)
+        return None
     try:
-        return Recorder(robot, path, settings)
+        return Recorder(robot, path, settings, replace=force)
     except ImportError:
         print(f"{prog}: --record needs the mcap and mcap-ros2-support packages "
               "(pip install mcap mcap-ros2-support)", file=sys.stderr)
+    except FileExistsError:
+        print(f"{prog}: will not record to {path}: it exists (--force replaces it)", file=sys.stderr)
     except OSError as err:
         print(f"{prog}: cannot write {path}: {err.strerror or err}", file=sys.stderr)
+    return None
+
+
+def made_from(path: str, inputs: Iterable[str]) -> str | None:
+    """The one of `inputs` (the files a description was read from) that `path` is, if any: a
+    file written is never one of those (`-o` of every verb, `--record`)."""
+    for source in inputs:
+        try:
+            if os.path.samefile(path, source):
+                return source
+        except (OSError, ValueError):  # one of them does not exist (yet): not the same file
+            pass
     return None
 
 
