@@ -145,3 +145,16 @@ def test_millions_of_messages_are_refused_by_their_count_before_any_is_decoded(t
     assert status == 2, stderr
     assert stderr == f"rdisc replay: {path}: too many messages: more than {replay_module.MAX_MESSAGES}\n"
     assert decoded == []
+
+
+@pytest.mark.parametrize("realtime", [False, True])
+def test_delays_are_slept_only_with_realtime(realtime: bool, tmp_path: Path, monkeypatch) -> None:
+    """The Create's startup hooks each wait 1000 ms: a replay waits for none unless --realtime."""
+    import time
+
+    slept: list[float] = []
+    monkeypatch.setattr(time, "sleep", slept.append)
+    path = recording(tmp_path / "calls.mcap", [run(GOOD_RUN)])
+    result = run_rdisc_here("replay", path, CREATE, *(["--realtime"] if realtime else []))
+    assert result.returncode in (0, 1), result.stderr
+    assert (1.0 in slept) is realtime, slept
