@@ -53,8 +53,8 @@ def add_parser(verbs: argparse._SubParsersAction[argparse.ArgumentParser]) -> No
                         "loopback")
     p.add_argument("--record", metavar="FILE.mcap",
                    help="record the session in MCAP as `rdisc run --record` does: the page's calls, outputs, "
-                        "the bytes each way, errors (needs the mcap and mcap-ros2-support packages); a file that "
-                        "exists is refused unless --force")
+                        "the bytes each way, errors (needs the mcap and mcap-ros2-support packages); a file "
+                        "that exists is refused unless --force")
     p.add_argument("--force", action="store_true",
                    help="let --record replace a file that exists (never the description or its imports)")
     p.set_defaults(run=run)

@@ -90,11 +90,15 @@ def read_recording(source: str | os.PathLike[str] | io.BytesIO) -> Recording:
         raise RecordingError("not a readable recording: nested too deep") from None
     except (McapError, ValueError, KeyError, TypeError, IndexError, NotImplementedError, AttributeError,
             struct.error, EOFError) as err:
-        raise RecordingError(f"not a readable recording: {str(err).splitlines()[0] if str(err) else type(err).__name__}") from None
+        said = str(err).splitlines()[0] if str(err) else type(err).__name__
+        raise RecordingError(f"not a readable recording: {said}") from None
     return recording
 
 
-def _records(stream: Any) -> tuple[dict[str, str] | None, dict[int, Any], dict[int, Any], list[tuple[int, int, bytes]]]:
+_Records = tuple[dict[str, str] | None, dict[int, Any], dict[int, Any], list[tuple[int, int, bytes]]]
+
+
+def _records(stream: Any) -> _Records:
     """The `rdisc` metadata, schemas and channels by id, and each message (log time, channel,
     data) undecoded: chunks decompressed one at a time within MAX_CHUNK and MAX_BYTES, the
     messages counted within MAX_MESSAGES."""
@@ -148,7 +152,8 @@ def _decompressed(chunk: Any) -> bytes:
     else:
         raise RecordingError(f"not a readable recording: a chunk compressed with {chunk.compression!r}")
     if len(data) != size:
-        raise RecordingError(f"not a readable recording: a chunk of {len(data)} bytes or more that says it has {size}")
+        raise RecordingError(f"not a readable recording: a chunk of {len(data)} bytes or more that says it "
+                             f"has {size}")
     return bytes(data)
 
 
@@ -199,8 +204,8 @@ def _decoder(factory: Any, channel_id: int, channels: Mapping[int, Any],
     channel = channels.get(channel_id)
     schema = schemas.get(channel.schema_id) if channel is not None else None
     if channel is None or schema is None:
-        raise RecordingError(f"not a readable recording: a message of channel {channel_id}, which it does not "
-                             "describe")
+        raise RecordingError(f"not a readable recording: a message of channel {channel_id}, which it does "
+                             "not describe")
     decode = factory.decoder_for(channel.message_encoding, schema)
     if decode is None:
         raise RecordingError(f"not a readable recording: topic {channel.topic} is not ROS 2 messages in CDR")
@@ -235,18 +240,21 @@ def _take(recording: Recording, topic: str, schema: str, message: Any) -> None:
         if schema == TEXT_TYPE:
             contents = json.loads(_field(topic, schema, TEXT_TYPE, message, "data", str))
             if not isinstance(contents, dict):
-                raise RecordingError(f"not a readable recording: {topic} holds {type(contents).__name__}, not fields")
+                raise RecordingError(f"not a readable recording: {topic} holds {type(contents).__name__}, "
+                                     "not fields")
         else:
             contents = message
         recording.messages.setdefault(parts[1], []).append(  # a header's stamp is when it was recorded
             {path: value for path, value in _flat(contents) if not path.startswith("header.stamp.")})
 
 
-def _field(topic: str, schema: str, expected: str, message: Any, name: str, kind: type | tuple[type, ...]) -> Any:
+def _field(topic: str, schema: str, expected: str, message: Any, name: str,
+           kind: type | tuple[type, ...]) -> Any:
     """A message's field, of the schema and type rdisc writes on that topic; else RecordingError."""
     value = getattr(message, name, None)
     if schema != expected or not isinstance(value, kind):
-        raise RecordingError(f"not a readable recording: {topic} is {schema}, not the {expected} rdisc writes")
+        raise RecordingError(f"not a readable recording: {topic} is {schema}, not the {expected} rdisc "
+                             "writes")
     return value
 
 
@@ -265,7 +273,8 @@ def _run_of(text: str) -> dict[str, Any]:
             isinstance(run.get("periodic"), str) or isinstance(run.get("keepalive"), str)):
         return run
     shown = text if len(text) <= 80 else text[:77] + "..."
-    raise RecordingError(f"not a readable recording: a run that is not a call or a connection's work: {shown}")
+    raise RecordingError("not a readable recording: a run that is not a call or a connection's work: "
+                         f"{shown}")
 
 
 def _flat(value: Any, prefix: str = "") -> Iterable[tuple[str, Any]]:

@@ -1073,7 +1073,7 @@ class Format:
     def encode(self, owner: str, values: Sequence[Value]) -> bytes:
         try:
             text = self.template.format(*values)
-        except (ValueError, TypeError, IndexError, KeyError, OverflowError) as err:  # `{:c}` of 2**40 overflows
+        except (ValueError, TypeError, IndexError, KeyError, OverflowError) as err:  # `{:c}` of 2**40: overflow
             raise RdisValueError(f"{owner}: {err}") from None
         return _latin1(owner, text)
 
@@ -3159,7 +3159,7 @@ class Recorder:
                  replace: bool = False) -> None:
         """`output` a stream, or a path: a new file (FileExistsError if there is one), or, with
         `replace`, one that may be there already."""
-        from mcap_ros2.writer import Writer  # only a recording needs it: nothing is created without it
+        from mcap_ros2.writer import Writer  # only a recording needs it
 
         self._file: Any = None
         if isinstance(output, (str, os.PathLike)):
@@ -3187,7 +3187,8 @@ class Recorder:
 
     def run(self, connection: str, kind: str, name: str) -> None:
         """A connection's thread starts a periodic interface or its keepalive."""
-        self._write(RUNS_TOPIC, TEXT_TYPE, _TEXT_SCHEMA, {"data": json.dumps({kind: name, "connection": connection})})
+        run = {kind: name, "connection": connection}
+        self._write(RUNS_TOPIC, TEXT_TYPE, _TEXT_SCHEMA, {"data": json.dumps(run)})
 
     def output(self, message: dict[str, Any]) -> None:
         self._adapted(message["name"], self._adapters.get(message["name"], ""), message["contents"])
@@ -3218,7 +3219,8 @@ class Recorder:
         std_msgs/Header is stamped with the time it is recorded at, as a ROS 2 publisher's is."""
         message = self._device.messages.get(adapter)
         if message is None:
-            self._write(f"/{name}", TEXT_TYPE, _TEXT_SCHEMA, {"data": json.dumps(dict(contents), default=list)})
+            text = json.dumps(dict(contents), default=list)
+            self._write(f"/{name}", TEXT_TYPE, _TEXT_SCHEMA, {"data": text})
             return
         stamp = self._stamp()
         members = ros_message(message, contents)
