@@ -61,7 +61,10 @@ def add_parser(verbs: argparse._SubParsersAction[argparse.ArgumentParser]) -> No
                         "loopback")
     p.add_argument("--record", metavar="FILE.mcap",
                    help="record the session in MCAP as `rdisc run --record` does: the page's calls, outputs, "
-                        "the bytes each way, errors (needs the mcap and mcap-ros2-support packages)")
+                        "the bytes each way, errors (needs the mcap and mcap-ros2-support packages); a file "
+                        "that exists is refused unless --force")
+    p.add_argument("--force", action="store_true",
+                   help="let --record replace a file that exists (never the description or its imports)")
     p.set_defaults(run=run)
 
 
@@ -116,7 +119,8 @@ def run(args: argparse.Namespace) -> int:
     if args.sim and sim is None:
         return EXIT_USAGE
     robot = engine.Robot(device, timeout=args.timeout)
-    recorder = engine.start_recording(robot, args.record, settings, "rdisc console") if args.record else None
+    recorder = (engine.start_recording(robot, args.record, settings, "rdisc console", force=args.force,
+                                       inputs=list(compilation.sources)) if args.record else None)
     if args.record and recorder is None:
         return EXIT_USAGE
     console = Console(robot, page, recorder, sim, tell=lambda text: print(text, file=sys.stderr, flush=True))

@@ -2,11 +2,11 @@
 
 from __future__ import annotations
 
-import os
 import sys
 from collections.abc import Callable, Iterable
 
 from rdisc.compile import Compilation, compile_path
+from rdisc.engine.command import made_from
 from rdisc.semantics.model import Model
 from rdisc.source import Sources
 
@@ -38,14 +38,10 @@ def write(text: str, path: str | None, inputs: Iterable[str] = ()) -> int:
     if path is None or path == "-":
         sys.stdout.write(text)
         return EXIT_OK
-    for source in inputs:
-        try:
-            same = os.path.samefile(path, source)
-        except (OSError, ValueError):  # one of them does not exist (yet): not the same file
-            same = False
-        if same:
-            print(f"rdisc: will not write {path}: it is {source}, which this was made from", file=sys.stderr)
-            return EXIT_USAGE
+    source = made_from(path, inputs)
+    if source is not None:
+        print(f"rdisc: will not write {path}: it is {source}, which this was made from", file=sys.stderr)
+        return EXIT_USAGE
     try:
         with open(path, "w", encoding="utf-8", newline="\n") as f:
             f.write(text)
@@ -58,11 +54,21 @@ def write(text: str, path: str | None, inputs: Iterable[str] = ()) -> int:
 def checked_model(path: str) -> Model | int:
     """The model of a description that checks without errors, its warnings shown; else the
     exit status once its diagnostics are: the start of every verb that runs a description."""
+    compilation = checked(path)
+    if isinstance(compilation, int):
+        return compilation
+    assert compilation.model is not None
+    return compilation.model
+
+
+def checked(path: str) -> Compilation | int:
+    """`checked_model`'s compilation, for a verb that needs the files read too (`list(.sources)`),
+    its model not None."""
     compilation = compile_path(path)
     show([compilation])
     if compilation.model is None or compilation.diagnostics.has_errors():
         return exit_code([compilation]) or EXIT_ERRORS
-    return compilation.model
+    return compilation
 
 
 def compile_and_write(path: str, output: str | None, render: Callable[[Model, Sources], str]) -> int:

@@ -16,7 +16,7 @@ from __future__ import annotations
 import argparse
 
 from rdisc import engine
-from rdisc.cli.output import checked_model
+from rdisc.cli.output import checked
 
 
 def add_parser(verbs: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
@@ -30,10 +30,12 @@ def add_parser(verbs: argparse._SubParsersAction[argparse.ArgumentParser]) -> No
 
 
 def run(args: argparse.Namespace) -> int:
-    model = checked_model(args.file)
-    if isinstance(model, int):
-        return model
+    compilation = checked(args.file)
+    if isinstance(compilation, int):
+        return compilation
+    model = compilation.model
+    assert model is not None
     from rdisc.runtime.device import Description
 
     robot = engine.Robot(Description(model).device, timeout=args.timeout)
-    return engine.run_command(args, robot, "rdisc run")
+    return engine.run_command(args, robot, "rdisc run", inputs=list(compilation.sources))

@@ -18,7 +18,7 @@ import sys
 from typing import TYPE_CHECKING
 
 from rdisc import engine
-from rdisc.cli.output import EXIT_USAGE, checked_model
+from rdisc.cli.output import EXIT_USAGE, checked
 
 if TYPE_CHECKING:
     from rdisc.semantics.model import Model
@@ -64,13 +64,15 @@ def simulation(model: Model, path: str, prog: str, *, seed: int | None, realtime
 
 
 def run(args: argparse.Namespace) -> int:
-    model = checked_model(args.file)
-    if isinstance(model, int):
-        return model
+    compilation = checked(args.file)
+    if isinstance(compilation, int):
+        return compilation
+    model = compilation.model
+    assert model is not None
     simulated = simulation(model, args.file, "rdisc sim", seed=args.seed, realtime=args.realtime)
     if simulated is None:
         return EXIT_USAGE
     from rdisc.runtime.device import Description
 
     robot = engine.Robot(Description(model).device, timeout=args.timeout)
-    return engine.run_command(args, robot, "rdisc sim", sim=simulated)
+    return engine.run_command(args, robot, "rdisc sim", sim=simulated, inputs=list(compilation.sources))

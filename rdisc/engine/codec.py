@@ -194,7 +194,7 @@ class Format:
     def encode(self, owner: str, values: Sequence[Value]) -> bytes:
         try:
             text = self.template.format(*values)
-        except (ValueError, TypeError, IndexError, KeyError) as err:
+        except (ValueError, TypeError, IndexError, KeyError, OverflowError) as err:  # `{:c}` of 2**40: overflow
             raise RdisValueError(f"{owner}: {err}") from None
         return _latin1(owner, text)
 

@@ -7,10 +7,11 @@ from __future__ import annotations
 import argparse
 import difflib
 import json
+import os
 import signal
 import sys
 import time
-from collections.abc import Mapping
+from collections.abc import Iterable, Mapping
 from typing import Any
 
 from rdisc.engine.arguments import Unbound, bind_settings, call_values, read_value
@@ -54,16 +55,21 @@ def add_arguments(parser: argparse.ArgumentParser, device: Device | None = None,
                         help="reply timeout in seconds (default 1)")
     parser.add_argument("--record", metavar="FILE.mcap",
                         help="record the session in MCAP: inputs and outputs as ROS 2 messages, the bytes "
-                             "each way, errors (needs the mcap and mcap-ros2-support packages)")
+                             "each way, errors (needs the mcap and mcap-ros2-support packages); a file that "
+                             "exists is refused unless --force")
+    parser.add_argument("--force", action="store_true",
+                        help="let --record replace a file that exists (never the description or its imports)")
 
 
-def run_command(args: argparse.Namespace, robot: Robot, prog: str, sim: Simulator | None = None) -> int:
+def run_command(args: argparse.Namespace, robot: Robot, prog: str, sim: Simulator | None = None,
+                inputs: Iterable[str] = ()) -> int:
     """What `rdisc run` does with its options: connect, make the --call calls in order, then
     run until --duration seconds after the startup hooks ended (or, with --watch, until
     Ctrl-C; else end when the calls are done). It always ends by closing the robot, which
     runs the terminate hooks. Exit status: 0 done; 1 the device failed; 2 a usage error;
     130 after SIGINT; 143 after SIGTERM. With `sim` (`rdisc sim`) the robot runs against
-    the simulated device; in simulated time the seconds, the trace's included, are its."""
+    the simulated device; in simulated time the seconds, the trace's included, are its.
+    `inputs` are the files the description was read from, which --record never writes over."""
     simulated = sim is not None and not sim.realtime
     clock = sim.now if sim is not None and simulated else time.monotonic
     began = clock()
@@ -74,7 +80,8 @@ def run_command(args: argparse.Namespace, robot: Robot, prog: str, sim: Simulato
     except (TypeError, ValueError) as err:
         print(f"{prog}: {err}", file=sys.stderr)
         return EXIT_USAGE
-    recorder = start_recording(robot, args.record, settings, prog) if args.record else None
+    recorder = (start_recording(robot, args.record, settings, prog, force=args.force, inputs=inputs)
+                if args.record else None)
     if args.record and recorder is None:
         return EXIT_USAGE
     robot.on_error(_print_error)
@@ -128,17 +135,37 @@ def run_command(args: argparse.Namespace, robot: Robot, prog: str, sim: Simulato
     return status
 
 
-def start_recording(robot: Robot, path: str, settings: Mapping[str, Any], prog: str) -> Recorder | None:
-    """`--record PATH` (of `rdisc run`, a driver and `rdisc console`): a Recorder attached to
-    `robot`, or None once stderr says why there is none (the mcap packages are missing, the
-    file cannot be written), which is a usage error."""
+def start_recording(robot: Robot, path: str, settings: Mapping[str, Any], prog: str, *, force: bool = False,
+                    inputs: Iterable[str] = ()) -> Recorder | None:
+    """`--record PATH` (of `rdisc run`, `rdisc sim`, a driver and `rdisc console`): a Recorder
+    attached to `robot`, or None once stderr says in a line why there is none, which is a usage
+    error: the mcap packages are missing, PATH is one of `inputs` (the description and its
+    imports, even with `force`), PATH exists and `force` is not given, or it cannot be written."""
+    source = made_from(path, inputs)
+    if source is not None:
+        print(f"{prog}: will not record to {path}: it is {source}, which this runs", file=sys.stderr)
+        return None
     try:
-        return Recorder(robot, path, settings)
+        return Recorder(robot, path, settings, replace=force)
     except ImportError:
         print(f"{prog}: --record needs the mcap and mcap-ros2-support packages "
               "(pip install mcap mcap-ros2-support)", file=sys.stderr)
+    except FileExistsError:
+        print(f"{prog}: will not record to {path}: it exists (--force replaces it)", file=sys.stderr)
     except OSError as err:
         print(f"{prog}: cannot write {path}: {err.strerror or err}", file=sys.stderr)
+    return None
+
+
+def made_from(path: str, inputs: Iterable[str]) -> str | None:
+    """The one of `inputs` (the files a description was read from) that `path` is, if any: a
+    file written is never one of those (`-o` of every verb, `--record`)."""
+    for source in inputs:
+        try:
+            if os.path.samefile(path, source):
+                return source
+        except (OSError, ValueError):  # one of them does not exist (yet): not the same file
+            pass
     return None
 
 

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import json
 import math
+import os
 import threading
 import time
 from collections.abc import Mapping
@@ -16,13 +17,13 @@ from rdisc.engine.robot import Robot
 
 _SEPARATOR = "=" * 80  # between a ros2msg schema's message and each message it uses
 _HEADER = "std_msgs/Header header"  # a message's field, which a recording stamps
-_TEXT = "std_msgs/msg/String"
+TEXT_TYPE = "std_msgs/msg/String"
 _TEXT_SCHEMA = "string data\n"
-_BYTES = "std_msgs/msg/UInt8MultiArray"
+BYTES_TYPE = "std_msgs/msg/UInt8MultiArray"
 _BYTES_SCHEMA = ("MultiArrayLayout layout\nuint8[] data\n" + _SEPARATOR + "\nMSG: std_msgs/MultiArrayLayout\n"
                  "MultiArrayDimension[] dim\nuint32 data_offset\n" + _SEPARATOR
                  + "\nMSG: std_msgs/MultiArrayDimension\nstring label\nuint32 size\nuint32 stride\n")
-_LOG = "rcl_interfaces/msg/Log"
+LOG_TYPE = "rcl_interfaces/msg/Log"
 _LOG_SCHEMA = ("byte DEBUG=10\nbyte INFO=20\nbyte WARN=30\nbyte ERROR=40\nbyte FATAL=50\n"
                "builtin_interfaces/Time stamp\nuint8 level\nstring name\nstring msg\nstring file\n"
                "string function\nuint32 line\n" + _SEPARATOR + "\nMSG: builtin_interfaces/Time\n"
@@ -50,9 +51,15 @@ class Recorder:
     Needs the `mcap` and `mcap-ros2-support` packages, imported here only (ImportError without).
     """
 
-    def __init__(self, robot: Robot, output: Any, settings: Mapping[str, Any] | None = None) -> None:
+    def __init__(self, robot: Robot, output: Any, settings: Mapping[str, Any] | None = None, *,
+                 replace: bool = False) -> None:
+        """`output` a stream, or a path: a new file (FileExistsError if there is one), or, with
+        `replace`, one that may be there already."""
         from mcap_ros2.writer import Writer  # only a recording needs it
 
+        self._file: Any = None
+        if isinstance(output, (str, os.PathLike)):
+            output = self._file = open(output, "wb" if replace else "xb")  # noqa: SIM115 (closed by finish)
         self._writer: Any = Writer(output)
         self._device = robot.device
         self._adapters = {o.name: o.adapter for i in robot.device.interfaces.values() for o in i.outputs}
@@ -68,7 +75,7 @@ class Recorder:
 
     def call(self, kind: str, name: str, values: Mapping[str, Any]) -> None:
         """The host calls an input, an interface or a primitive with these values by name."""
-        self._write(RUNS_TOPIC, _TEXT, _TEXT_SCHEMA, {"data": json.dumps({"call": kind, "name": name,
+        self._write(RUNS_TOPIC, TEXT_TYPE, _TEXT_SCHEMA, {"data": json.dumps({"call": kind, "name": name,
                                                                          "values": dict(values)}, default=bytes.hex)})
         plan = self._device.inputs.get(name) if kind == "input" else None
         if plan is not None:
@@ -76,34 +83,40 @@ class Recorder:
 
     def run(self, connection: str, kind: str, name: str) -> None:
         """A connection's thread starts a periodic interface or its keepalive."""
-        self._write(RUNS_TOPIC, _TEXT, _TEXT_SCHEMA, {"data": json.dumps({kind: name, "connection": connection})})
+        run = {kind: name, "connection": connection}
+        self._write(RUNS_TOPIC, TEXT_TYPE, _TEXT_SCHEMA, {"data": json.dumps(run)})
 
     def output(self, message: dict[str, Any]) -> None:
         self._adapted(message["name"], self._adapters.get(message["name"], ""), message["contents"])
 
     def error(self, error: BaseException) -> None:
         stamp = self._stamp()
-        self._write("/rosout", _LOG, _LOG_SCHEMA, {
+        self._write("/rosout", LOG_TYPE, _LOG_SCHEMA, {
             "stamp": _time(stamp), "level": 40,
             "name": self._device.name, "msg": f"{type(error).__name__}: {error}"}, stamp)
 
     def io(self, direction: str, connection: str, data: bytes) -> None:
         if direction == "lines":
-            self._write(f"/rdisc/{connection}/lines", _TEXT, _TEXT_SCHEMA, {"data": data.decode("ascii")})
+            self._write(f"/rdisc/{connection}/lines", TEXT_TYPE, _TEXT_SCHEMA, {"data": data.decode("ascii")})
         else:
-            self._write(f"/rdisc/{connection}/{direction}", _BYTES, _BYTES_SCHEMA, {"data": list(data)})
+            self._write(f"/rdisc/{connection}/{direction}", BYTES_TYPE, _BYTES_SCHEMA, {"data": list(data)})
 
     def finish(self) -> None:
         """Write the file's index and close it: call it once the robot is closed."""
         with self._lock:
-            self._writer.finish()
+            try:
+                self._writer.finish()
+            finally:
+                if self._file is not None:
+                    self._file.close()
 
     def _adapted(self, name: str, adapter: str, contents: Mapping[str, Any]) -> None:
         """An adapter's values on `/NAME`: its ROS 2 message, or JSON text. A message with a
         std_msgs/Header is stamped with the time it is recorded at, as a ROS 2 publisher's is."""
         message = self._device.messages.get(adapter)
         if message is None:
-            self._write(f"/{name}", _TEXT, _TEXT_SCHEMA, {"data": json.dumps(dict(contents), default=list)})
+            text = json.dumps(dict(contents), default=list)
+            self._write(f"/{name}", TEXT_TYPE, _TEXT_SCHEMA, {"data": text})
             return
         stamp = self._stamp()
         members = ros_message(message, contents)

@@ -350,10 +350,11 @@ def format_fields(template: str) -> tuple[FormatField, ...]:
         parsed = list(string.Formatter().parse(template))
     except ValueError as err:
         raise TemplateError(f"invalid format string: {err}", 0, len(template)) from None
+    offsets = _field_offsets(template)
     for _literal, name, spec, conversion in parsed:
         if name is None:
             continue
-        offset = _field_offset(template, len(fields))
+        offset = offsets[len(fields)] if len(fields) < len(offsets) else 0
         if conversion:
             raise TemplateError(f"conversion `!{conversion}` is not allowed in a format field", offset)
         if spec and ("{" in spec or "}" in spec):
@@ -394,20 +395,18 @@ def format_fields(template: str) -> tuple[FormatField, ...]:
     return tuple(by_index[i] for i in range(count))
 
 
-def _field_offset(template: str, n: int) -> int:
-    """Offset of the n-th replacement field's `{` (escaped `{{` skipped)."""
-    seen = -1
+def _field_offsets(template: str) -> list[int]:
+    """Offset of each replacement field's `{`, in order (escaped `{{` and `}}` skipped): one pass."""
+    offsets: list[int] = []
     i = 0
     while i < len(template):
         if template.startswith("{{", i) or template.startswith("}}", i):
             i += 2
             continue
         if template[i] == "{":
-            seen += 1
-            if seen == n:
-                return i
+            offsets.append(i)
         i += 1
-    return 0
+    return offsets
 
 
 _SPEC_WIDTH = re.compile(r"(?:.?[<>=^])?[+\- ]?z?#?0?(\d+)?")

@@ -189,8 +189,8 @@ def _parsed(name: str, text: str) -> dict[str, Any]:
 def test_every_definition_rdisc_has_is_rosbags_own(name) -> None:
     """The definitions of every standard adapter's message and of the recording's own channels,
     whether a session uses them or not."""
-    own = {"rdisc bytes": (recording._BYTES, recording._BYTES_SCHEMA),
-           "rdisc text": (recording._TEXT, recording._TEXT_SCHEMA), "rdisc log": (recording._LOG, recording._LOG_SCHEMA)}
+    own = {"rdisc bytes": (recording.BYTES_TYPE, recording._BYTES_SCHEMA),
+           "rdisc text": (recording.TEXT_TYPE, recording._TEXT_SCHEMA), "rdisc log": (recording.LOG_TYPE, recording._LOG_SCHEMA)}
     kind, text = own[name] if name in own else (messages.ros2_name(name), messages.definition(name))
     for part, definition in _parsed(kind, text).items():
         assert definition == HUMBLE.fielddefs[part], part

@@ -34,7 +34,7 @@ import struct
 import sys
 import threading
 import time
-from collections.abc import Callable, Iterator, Mapping, Sequence
+from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field, replace
 from typing import Any, Protocol
 
@@ -1074,7 +1074,7 @@ class Format:
     def encode(self, owner: str, values: Sequence[Value]) -> bytes:
         try:
             text = self.template.format(*values)
-        except (ValueError, TypeError, IndexError, KeyError) as err:
+        except (ValueError, TypeError, IndexError, KeyError, OverflowError) as err:  # `{:c}` of 2**40: overflow
             raise RdisValueError(f"{owner}: {err}") from None
         return _latin1(owner, text)
 
@@ -3125,13 +3125,13 @@ class Robot(Exchange):
 
 _SEPARATOR = "=" * 80  # between a ros2msg schema's message and each message it uses
 _HEADER = "std_msgs/Header header"  # a message's field, which a recording stamps
-_TEXT = "std_msgs/msg/String"
+TEXT_TYPE = "std_msgs/msg/String"
 _TEXT_SCHEMA = "string data\n"
-_BYTES = "std_msgs/msg/UInt8MultiArray"
+BYTES_TYPE = "std_msgs/msg/UInt8MultiArray"
 _BYTES_SCHEMA = ("MultiArrayLayout layout\nuint8[] data\n" + _SEPARATOR + "\nMSG: std_msgs/MultiArrayLayout\n"
                  "MultiArrayDimension[] dim\nuint32 data_offset\n" + _SEPARATOR
                  + "\nMSG: std_msgs/MultiArrayDimension\nstring label\nuint32 size\nuint32 stride\n")
-_LOG = "rcl_interfaces/msg/Log"
+LOG_TYPE = "rcl_interfaces/msg/Log"
 _LOG_SCHEMA = ("byte DEBUG=10\nbyte INFO=20\nbyte WARN=30\nbyte ERROR=40\nbyte FATAL=50\n"
                "builtin_interfaces/Time stamp\nuint8 level\nstring name\nstring msg\nstring file\n"
                "string function\nuint32 line\n" + _SEPARATOR + "\nMSG: builtin_interfaces/Time\n"
@@ -3159,9 +3159,15 @@ class Recorder:
     Needs the `mcap` and `mcap-ros2-support` packages, imported here only (ImportError without).
     """
 
-    def __init__(self, robot: Robot, output: Any, settings: Mapping[str, Any] | None = None) -> None:
+    def __init__(self, robot: Robot, output: Any, settings: Mapping[str, Any] | None = None, *,
+                 replace: bool = False) -> None:
+        """`output` a stream, or a path: a new file (FileExistsError if there is one), or, with
+        `replace`, one that may be there already."""
         from mcap_ros2.writer import Writer  # only a recording needs it
 
+        self._file: Any = None
+        if isinstance(output, (str, os.PathLike)):
+            output = self._file = open(output, "wb" if replace else "xb")  # noqa: SIM115 (closed by finish)
         self._writer: Any = Writer(output)
         self._device = robot.device
         self._adapters = {o.name: o.adapter for i in robot.device.interfaces.values() for o in i.outputs}
@@ -3177,7 +3183,7 @@ class Recorder:
 
     def call(self, kind: str, name: str, values: Mapping[str, Any]) -> None:
         """The host calls an input, an interface or a primitive with these values by name."""
-        self._write(RUNS_TOPIC, _TEXT, _TEXT_SCHEMA, {"data": json.dumps({"call": kind, "name": name,
+        self._write(RUNS_TOPIC, TEXT_TYPE, _TEXT_SCHEMA, {"data": json.dumps({"call": kind, "name": name,
                                                                          "values": dict(values)}, default=bytes.hex)})
         plan = self._device.inputs.get(name) if kind == "input" else None
         if plan is not None:
@@ -3185,34 +3191,40 @@ class Recorder:
 
     def run(self, connection: str, kind: str, name: str) -> None:
         """A connection's thread starts a periodic interface or its keepalive."""
-        self._write(RUNS_TOPIC, _TEXT, _TEXT_SCHEMA, {"data": json.dumps({kind: name, "connection": connection})})
+        run = {kind: name, "connection": connection}
+        self._write(RUNS_TOPIC, TEXT_TYPE, _TEXT_SCHEMA, {"data": json.dumps(run)})
 
     def output(self, message: dict[str, Any]) -> None:
         self._adapted(message["name"], self._adapters.get(message["name"], ""), message["contents"])
 
     def error(self, error: BaseException) -> None:
         stamp = self._stamp()
-        self._write("/rosout", _LOG, _LOG_SCHEMA, {
+        self._write("/rosout", LOG_TYPE, _LOG_SCHEMA, {
             "stamp": _time(stamp), "level": 40,
             "name": self._device.name, "msg": f"{type(error).__name__}: {error}"}, stamp)
 
     def io(self, direction: str, connection: str, data: bytes) -> None:
         if direction == "lines":
-            self._write(f"/rdisc/{connection}/lines", _TEXT, _TEXT_SCHEMA, {"data": data.decode("ascii")})
+            self._write(f"/rdisc/{connection}/lines", TEXT_TYPE, _TEXT_SCHEMA, {"data": data.decode("ascii")})
         else:
-            self._write(f"/rdisc/{connection}/{direction}", _BYTES, _BYTES_SCHEMA, {"data": list(data)})
+            self._write(f"/rdisc/{connection}/{direction}", BYTES_TYPE, _BYTES_SCHEMA, {"data": list(data)})
 
     def finish(self) -> None:
         """Write the file's index and close it: call it once the robot is closed."""
         with self._lock:
-            self._writer.finish()
+            try:
+                self._writer.finish()
+            finally:
+                if self._file is not None:
+                    self._file.close()
 
     def _adapted(self, name: str, adapter: str, contents: Mapping[str, Any]) -> None:
         """An adapter's values on `/NAME`: its ROS 2 message, or JSON text. A message with a
         std_msgs/Header is stamped with the time it is recorded at, as a ROS 2 publisher's is."""
         message = self._device.messages.get(adapter)
         if message is None:
-            self._write(f"/{name}", _TEXT, _TEXT_SCHEMA, {"data": json.dumps(dict(contents), default=list)})
+            text = json.dumps(dict(contents), default=list)
+            self._write(f"/{name}", TEXT_TYPE, _TEXT_SCHEMA, {"data": text})
             return
         stamp = self._stamp()
         members = ros_message(message, contents)
@@ -3297,16 +3309,21 @@ def add_arguments(parser: argparse.ArgumentParser, device: Device | None = None,
                         help="reply timeout in seconds (default 1)")
     parser.add_argument("--record", metavar="FILE.mcap",
                         help="record the session in MCAP: inputs and outputs as ROS 2 messages, the bytes "
-                             "each way, errors (needs the mcap and mcap-ros2-support packages)")
+                             "each way, errors (needs the mcap and mcap-ros2-support packages); a file that "
+                             "exists is refused unless --force")
+    parser.add_argument("--force", action="store_true",
+                        help="let --record replace a file that exists (never the description or its imports)")
 
 
-def run_command(args: argparse.Namespace, robot: Robot, prog: str, sim: Simulator | None = None) -> int:
+def run_command(args: argparse.Namespace, robot: Robot, prog: str, sim: Simulator | None = None,
+                inputs: Iterable[str] = ()) -> int:
     """What `rdisc run` does with its options: connect, make the --call calls in order, then
     run until --duration seconds after the startup hooks ended (or, with --watch, until
     Ctrl-C; else end when the calls are done). It always ends by closing the robot, which
     runs the terminate hooks. Exit status: 0 done; 1 the device failed; 2 a usage error;
     130 after SIGINT; 143 after SIGTERM. With `sim` (`rdisc sim`) the robot runs against
-    the simulated device; in simulated time the seconds, the trace's included, are its."""
+    the simulated device; in simulated time the seconds, the trace's included, are its.
+    `inputs` are the files the description was read from, which --record never writes over."""
     simulated = sim is not None and not sim.realtime
     clock = sim.now if sim is not None and simulated else time.monotonic
     began = clock()
@@ -3317,7 +3334,8 @@ def run_command(args: argparse.Namespace, robot: Robot, prog: str, sim: Simulato
     except (TypeError, ValueError) as err:
         print(f"{prog}: {err}", file=sys.stderr)
         return EXIT_USAGE
-    recorder = start_recording(robot, args.record, settings, prog) if args.record else None
+    recorder = (start_recording(robot, args.record, settings, prog, force=args.force, inputs=inputs)
+                if args.record else None)
     if args.record and recorder is None:
         return EXIT_USAGE
     robot.on_error(_print_error)
@@ -3371,17 +3389,37 @@ def run_command(args: argparse.Namespace, robot: Robot, prog: str, sim: Simulato
     return status
 
 
-def start_recording(robot: Robot, path: str, settings: Mapping[str, Any], prog: str) -> Recorder | None:
-    """`--record PATH` (of `rdisc run`, a driver and `rdisc console`): a Recorder attached to
-    `robot`, or None once stderr says why there is none (the mcap packages are missing, the
-    file cannot be written), which is a usage error."""
+def start_recording(robot: Robot, path: str, settings: Mapping[str, Any], prog: str, *, force: bool = False,
+                    inputs: Iterable[str] = ()) -> Recorder | None:
+    """`--record PATH` (of `rdisc run`, `rdisc sim`, a driver and `rdisc console`): a Recorder
+    attached to `robot`, or None once stderr says in a line why there is none, which is a usage
+    error: the mcap packages are missing, PATH is one of `inputs` (the description and its
+    imports, even with `force`), PATH exists and `force` is not given, or it cannot be written."""
+    source = made_from(path, inputs)
+    if source is not None:
+        print(f"{prog}: will not record to {path}: it is {source}, which this runs", file=sys.stderr)
+        return None
     try:
-        return Recorder(robot, path, settings)
+        return Recorder(robot, path, settings, replace=force)
     except ImportError:
         print(f"{prog}: --record needs the mcap and mcap-ros2-support packages "
               "(pip install mcap mcap-ros2-support)", file=sys.stderr)
+    except FileExistsError:
+        print(f"{prog}: will not record to {path}: it exists (--force replaces it)", file=sys.stderr)
     except OSError as err:
         print(f"{prog}: cannot write {path}: {err.strerror or err}", file=sys.stderr)
+    return None
+
+
+def made_from(path: str, inputs: Iterable[str]) -> str | None:
+    """The one of `inputs` (the files a description was read from) that `path` is, if any: a
+    file written is never one of those (`-o` of every verb, `--record`)."""
+    for source in inputs:
+        try:
+            if os.path.samefile(path, source):
+                return source
+        except (OSError, ValueError):  # one of them does not exist (yet): not the same file
+            pass
     return None
 
 
