@@ -24,6 +24,7 @@ from rdisc.engine.command import (
     EXIT_SIGTERM,
     EXIT_USAGE,
     add_arguments,
+    made_from,
     make_call,
     parse_call,
     parse_ports,
@@ -75,7 +76,7 @@ from rdisc.engine.plans import (
     Request,
 )
 from rdisc.engine.ports import Port, PortSpec, Simulator
-from rdisc.engine.recording import RUNS_TOPIC, Recorder, ros_message
+from rdisc.engine.recording import BYTES_TYPE, LOG_TYPE, RUNS_TOPIC, TEXT_TYPE, Recorder, ros_message
 from rdisc.engine.robot import Calls, Robot, State
 from rdisc.engine.values import Args, ErrorCallback, IoCallback, OutputCallback, StateValues, Value
 from rdisc.engine.wire import (
@@ -99,6 +100,7 @@ from rdisc.engine.wire import (
 
 __all__ = [
     "BINARY",
+    "BYTES_TYPE",
     "EVAL_ERRORS",
     "EXIT_ERROR",
     "EXIT_OK",
@@ -107,6 +109,7 @@ __all__ = [
     "EXIT_USAGE",
     "FLOAT_MAX",
     "FUNCTIONS",
+    "LOG_TYPE",
     "MAX_ARRAY",
     "MAX_FRAME",
     "MAX_INT",
@@ -116,6 +119,7 @@ __all__ = [
     "MAX_SKIP",
     "MAX_TEXT",
     "RUNS_TOPIC",
+    "TEXT_TYPE",
     "UNARY",
     "Args",
     "Bits",
@@ -182,6 +186,7 @@ __all__ = [
     "element",
     "fits",
     "lookup",
+    "made_from",
     "make_call",
     "parse_call",
     "parse_ports",
