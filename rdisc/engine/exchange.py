@@ -45,6 +45,10 @@ class Exchange:
     _io_callbacks: list[IoCallback]
     _run_callbacks: list[Callable[[str, str, str], object]]
     _links: dict[str, _Link]
+    # Closing (`Robot.close`): from the moment it begins nothing is written but by the thread that
+    # closes (`_closer`: the terminate hooks), and once they are done nothing at all (`_closer` None).
+    _closed: bool
+    _closer: int | None
 
     # ---- writing requests, reading replies, running post-actions ------------------------------------
 
@@ -58,6 +62,8 @@ class Exchange:
         lock = port.lock
         lock.acquire()  # acquire/release rather than `with`: cheaper, and this is every command's path
         try:
+            if self._closed:  # under the lock: a write that got it before the terminate hooks comes before them
+                self._refuse(plan)
             if levels is not None:
                 self._set_lines(plan, port.io, levels)
             if plan.encoder is not None:
@@ -73,6 +79,14 @@ class Exchange:
                 self._notify_io("lines", plan.connection, _lines_text(levels))
             if plan.encoder is not None:
                 self._notify_io("write", plan.connection, request)
+
+    def _refuse(self, plan: Primitive) -> None:
+        """While the robot closes, a write is refused unless the closing thread makes it (its
+        terminate hooks); once they are done, every write is: the stop stays the last command."""
+        closer = self._closer
+        if closer is None or closer != threading.get_ident():
+            raise RdisConnectionError(f"{self.name}: {plan.name} not sent: the robot is "
+                                      f"{'closing' if closer is not None else 'closed'}")
 
     @staticmethod
     def _set_lines(plan: Primitive, io: Port, levels: dict[str, Value]) -> None:
@@ -112,6 +126,8 @@ class Exchange:
         lines_set = written = False
         lock.acquire()
         try:
+            if self._closed:
+                self._refuse(plan)
             if levels is not None:
                 self._set_lines(plan, io, levels)
                 lines_set = True

@@ -118,10 +118,12 @@ class Robot(Exchange):
         self._calls = {kind: Calls(self, kind) for kind in ("input", "interface", "primitive")}
         self._running = False
         self._direct = False  # running on ports: a plain write may skip the general way
-        self._closed = False
+        self._closed = False  # closing or closed: writes are refused (`_refuse`) but by the `_closer`
+        self._closer: int | None = None
+        self._closing = threading.Event()  # set when closing begins: it ends the other threads' delays
         self._sim: Simulator | None = None
         self._clock: Callable[[], float] = time.monotonic  # the schedule's time, and the delays'
-        self._sleep: Callable[[float], None] = time.sleep
+        self._sleep: Callable[[float], None] = self._delay
 
     # ---- callbacks --------------------------------------------------------------------------------
 
@@ -287,18 +289,25 @@ class Robot(Exchange):
                         ticks[worker] = max(ticks[worker] + 1, late)
 
     def close(self) -> None:
-        """Stop the threads (each finishes the interface it is running, delays included), run
-        the terminate hooks (errors reported, not raised) and close the ports `open` opened.
-        Idempotent; the robot does nothing more afterwards."""
+        """Stop every other thread from writing (a host call or periodic interface in progress
+        ends with an RdisConnectionError at its next write, its delays cut short), stop the
+        threads, run the terminate hooks on this thread (errors reported, not raised), then
+        refuse every write and close the ports `open` opened: the terminate hooks' commands
+        are the last written. Idempotent; the robot does nothing more afterwards."""
         with self._close_lock:
             if self._closed:
                 return
+            self._closer = threading.get_ident()
             self._closed = True
             self._running = False
             self._direct = False
-        for worker in self._workers:
-            worker.stop()
-        self.terminate()
+        self._closing.set()
+        try:
+            for worker in self._workers:
+                worker.stop()
+            self.terminate()
+        finally:
+            self._closer = None
         for port in {id(link.port): link.port for link in self._links.values()}.values():
             if port.owned:
                 try:
@@ -311,6 +320,14 @@ class Robot(Exchange):
 
     def __exit__(self, *exc: object) -> None:
         self.close()
+
+    def _delay(self, seconds: float) -> None:
+        """A call's delay: the closing thread's (its terminate hooks') is whole; any other
+        thread's ends when closing begins, for its next write to be refused at once."""
+        if self._closer == threading.get_ident():
+            time.sleep(seconds)
+        else:
+            self._closing.wait(seconds)
 
     def _not_running(self) -> RdisConnectionError:
         return RdisConnectionError(f"{self.name}: {'closed' if self._closed else 'not open'}")
@@ -489,6 +506,8 @@ class Robot(Exchange):
         parameters' values and gives the reply's, which meet the `expect` and go to the
         post-actions as a reply read from a port would."""
         assert self._sim is not None
+        if self._closed:
+            self._refuse(plan)
         request, _fields, levels = self._request(plan, values, local)
         reply = self._sim.exchange(plan, local)
         if self._io_callbacks:

@@ -9,6 +9,7 @@ import threading
 import time
 from typing import TYPE_CHECKING
 
+from rdisc.engine.errors import RdisConnectionError
 from rdisc.engine.plans import Connection
 
 if TYPE_CHECKING:
@@ -53,7 +54,7 @@ class _Worker:
             try:
                 robot._interface(interface, [])
             except Exception as err:  # noqa: BLE001 - reported; the schedule goes on
-                robot._report(err)
+                self._report(err)
         keepalive = self.connection.keepalive
         if keepalive is None or not self.interval:
             return
@@ -68,7 +69,12 @@ class _Worker:
         try:
             robot._hook(keepalive)
         except Exception as err:  # noqa: BLE001 - reported; the schedule goes on
-            robot._report(err)
+            self._report(err)
+
+    def _report(self, err: Exception) -> None:
+        """Report an error of the work, but not the refusal that ends it when the robot closes."""
+        if not (self.robot._closed and isinstance(err, RdisConnectionError)):
+            self.robot._report(err)
 
     def start(self) -> None:
         self.restart_clock()

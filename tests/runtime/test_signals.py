@@ -94,3 +94,29 @@ def test_a_command_cut_short_by_a_signal_does_not_keep_the_stop_from_being_writt
     worker.join(timeout=30)  # deadlocked for ever if the lock were not re-entrant
     assert done.is_set()
     assert bytes(port.written).endswith(STOP)
+
+
+DANCE = FAST_CREATE.read_text(encoding="utf-8") + """
+interface dance() {
+    drive(100, 0) delay 200 ms
+    drive(200, 0) delay 200 ms
+    drive(300, 0)
+}
+"""
+
+
+@pytest.mark.parametrize("after", [0.1, 0.3])
+def test_a_signal_during_a_call_of_several_commands_leaves_the_stop_last(tmp_path, after) -> None:
+    """SIGINT while `--call dance` runs (in a delay between its commands): the stop is the last
+    command the device gets, and the call's remaining commands are never written."""
+    source = tmp_path / "dance.rdis"
+    source.write_text(DANCE, encoding="utf-8")
+    with CreateEmulator() as dev:
+        process = subprocess.Popen([sys.executable, "-m", "rdisc", "run", str(source), "--call", "dance",
+                                    "--port", dev.port], cwd=REPO, env=cli_env(), stdout=subprocess.PIPE,
+                                   stderr=subprocess.PIPE, text=True)
+        dev.wait_for_commands(1, timeout=30, opcode=137)
+        stderr = dev.signal_once_open(process, after, [signal.SIGINT], 0.0)
+        assert process.returncode == 130, stderr
+        assert dev.drives()[-1] == (0, 0)
+        assert (300, 0) not in dev.drives()

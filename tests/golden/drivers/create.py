@@ -2131,7 +2131,7 @@ class _Worker:
             try:
                 robot._interface(interface, [])
             except Exception as err:  # noqa: BLE001 - reported; the schedule goes on
-                robot._report(err)
+                self._report(err)
         keepalive = self.connection.keepalive
         if keepalive is None or not self.interval:
             return
@@ -2146,7 +2146,12 @@ class _Worker:
         try:
             robot._hook(keepalive)
         except Exception as err:  # noqa: BLE001 - reported; the schedule goes on
-            robot._report(err)
+            self._report(err)
+
+    def _report(self, err: Exception) -> None:
+        """Report an error of the work, but not the refusal that ends it when the robot closes."""
+        if not (self.robot._closed and isinstance(err, RdisConnectionError)):
+            self.robot._report(err)
 
     def start(self) -> None:
         self.restart_clock()
@@ -2204,6 +2209,10 @@ class Exchange:
     _io_callbacks: list[IoCallback]
     _run_callbacks: list[Callable[[str, str, str], object]]
     _links: dict[str, _Link]
+    # Closing (`Robot.close`): from the moment it begins nothing is written but by the thread that
+    # closes (`_closer`: the terminate hooks), and once they are done nothing at all (`_closer` None).
+    _closed: bool
+    _closer: int | None
 
     # ---- writing requests, reading replies, running post-actions ------------------------------------
 
@@ -2217,6 +2226,8 @@ class Exchange:
         lock = port.lock
         lock.acquire()  # acquire/release rather than `with`: cheaper, and this is every command's path
         try:
+            if self._closed:  # under the lock: a write that got it before the terminate hooks comes before them
+                self._refuse(plan)
             if levels is not None:
                 self._set_lines(plan, port.io, levels)
             if plan.encoder is not None:
@@ -2232,6 +2243,14 @@ class Exchange:
                 self._notify_io("lines", plan.connection, _lines_text(levels))
             if plan.encoder is not None:
                 self._notify_io("write", plan.connection, request)
+
+    def _refuse(self, plan: Primitive) -> None:
+        """While the robot closes, a write is refused unless the closing thread makes it (its
+        terminate hooks); once they are done, every write is: the stop stays the last command."""
+        closer = self._closer
+        if closer is None or closer != threading.get_ident():
+            raise RdisConnectionError(f"{self.name}: {plan.name} not sent: the robot is "
+                                      f"{'closing' if closer is not None else 'closed'}")
 
     @staticmethod
     def _set_lines(plan: Primitive, io: Port, levels: dict[str, Value]) -> None:
@@ -2271,6 +2290,8 @@ class Exchange:
         lines_set = written = False
         lock.acquire()
         try:
+            if self._closed:
+                self._refuse(plan)
             if levels is not None:
                 self._set_lines(plan, io, levels)
                 lines_set = True
@@ -2735,10 +2756,12 @@ class Robot(Exchange):
         self._calls = {kind: Calls(self, kind) for kind in ("input", "interface", "primitive")}
         self._running = False
         self._direct = False  # running on ports: a plain write may skip the general way
-        self._closed = False
+        self._closed = False  # closing or closed: writes are refused (`_refuse`) but by the `_closer`
+        self._closer: int | None = None
+        self._closing = threading.Event()  # set when closing begins: it ends the other threads' delays
         self._sim: Simulator | None = None
         self._clock: Callable[[], float] = time.monotonic  # the schedule's time, and the delays'
-        self._sleep: Callable[[float], None] = time.sleep
+        self._sleep: Callable[[float], None] = self._delay
 
     # ---- callbacks --------------------------------------------------------------------------------
 
@@ -2904,18 +2927,25 @@ class Robot(Exchange):
                         ticks[worker] = max(ticks[worker] + 1, late)
 
     def close(self) -> None:
-        """Stop the threads (each finishes the interface it is running, delays included), run
-        the terminate hooks (errors reported, not raised) and close the ports `open` opened.
-        Idempotent; the robot does nothing more afterwards."""
+        """Stop every other thread from writing (a host call or periodic interface in progress
+        ends with an RdisConnectionError at its next write, its delays cut short), stop the
+        threads, run the terminate hooks on this thread (errors reported, not raised), then
+        refuse every write and close the ports `open` opened: the terminate hooks' commands
+        are the last written. Idempotent; the robot does nothing more afterwards."""
         with self._close_lock:
             if self._closed:
                 return
+            self._closer = threading.get_ident()
             self._closed = True
             self._running = False
             self._direct = False
-        for worker in self._workers:
-            worker.stop()
-        self.terminate()
+        self._closing.set()
+        try:
+            for worker in self._workers:
+                worker.stop()
+            self.terminate()
+        finally:
+            self._closer = None
         for port in {id(link.port): link.port for link in self._links.values()}.values():
             if port.owned:
                 try:
@@ -2928,6 +2958,14 @@ class Robot(Exchange):
 
     def __exit__(self, *exc: object) -> None:
         self.close()
+
+    def _delay(self, seconds: float) -> None:
+        """A call's delay: the closing thread's (its terminate hooks') is whole; any other
+        thread's ends when closing begins, for its next write to be refused at once."""
+        if self._closer == threading.get_ident():
+            time.sleep(seconds)
+        else:
+            self._closing.wait(seconds)
 
     def _not_running(self) -> RdisConnectionError:
         return RdisConnectionError(f"{self.name}: {'closed' if self._closed else 'not open'}")
@@ -3106,6 +3144,8 @@ class Robot(Exchange):
         parameters' values and gives the reply's, which meet the `expect` and go to the
         post-actions as a reply read from a port would."""
         assert self._sim is not None
+        if self._closed:
+            self._refuse(plan)
         request, _fields, levels = self._request(plan, values, local)
         reply = self._sim.exchange(plan, local)
         if self._io_callbacks:
