@@ -71,8 +71,11 @@ class Incoming:
         """Finish an exchange: the port's timeout as it was; the bytes it gave."""
         self.deadline = None
         if self.shortened:
-            self.port.timeout = self.timeout
             self.shortened = False
+            try:
+                self.port.timeout = self.timeout
+            except Exception:  # noqa: BLE001, S110 - a port gone mid-reply: its read's failure is the one to tell
+                pass
         taken = bytes(self.taken)
         self.taken.clear()  # an exchange that fails before it reads shows nothing of an earlier one
         return taken
