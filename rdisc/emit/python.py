@@ -612,7 +612,8 @@ class _Driver:
                                  f"{literal(prm.high, prm.type).text}")
                     tests.append(test)
                 together = f"if {' or '.join(tests)}:"
-                for test in [together] if len(together) <= w.width() - 8 else [f"if {test}:" for test in tests]:
+                for test in [] if not tests else [together] if len(together) <= w.width() - 8 else [
+                        f"if {test}:" for test in tests]:
                     with w.block(test):  # one test, or one a parameter
                         w.line("return None")
                 packed = [self.exprs.bound(e, t, local) if t is not None else self.exprs.expr(e, local)

@@ -112,6 +112,8 @@ def test_a_close_after_each_write_of_a_host_call_leaves_the_stop_last(dancer: An
                 _wait_until_closing(robot)
 
     robot.on_io(on_io)
+    delay = robot._sleep
+    robot._sleep = lambda seconds: delay(seconds) if robot.closed else None  # whole once closing began
     error = _dance(robot)
     _check(port, k, error, closers[0])
 

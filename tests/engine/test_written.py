@@ -9,6 +9,7 @@ from __future__ import annotations
 import functools
 import tempfile
 from collections.abc import Sequence
+from pathlib import Path
 from typing import Any
 
 import pytest
@@ -168,3 +169,28 @@ def test_a_typed_method_takes_the_one_step_first_and_is_made_once() -> None:
         assert robot.primitives is robot.primitives  # the typed methods' object is made once
     runtime = _robots()[0][0]
     assert runtime.primitives.drive is runtime.primitives.drive  # the runtime's method kept, not made each call
+
+
+NO_PARAMETERS = """\
+robot computed { author "tests" }
+frame f1(q0: int, q1: int) {
+    length "B" = payload
+    literal "\\xFF\\xFF"
+    field d0 "B" = q0
+    payload
+}
+connection c0: serial { baud 9600 }
+primitive p1() on c0 frame f1(0, 0) pack "<b" ((0 + 0))
+"""
+
+
+@pytest.mark.parametrize("kind", ["runtime", "driver"])
+def test_a_primitive_of_no_parameters_and_a_computed_value_is_written_in_one_step(tmp_path: Path, kind: str) -> None:
+    """Found by the differential test: its driver wrote `if :` where no parameter is checked."""
+    from tests.engine.test_one_engine import implementation_of
+    from tests.support.ports import ScriptedPort
+
+    port = ScriptedPort()
+    with implementation_of(kind, NO_PARAMETERS, tmp_path, f"computed_{kind}").connect(port, threads=False) as robot:
+        robot.call_primitive("p1")
+    assert port.writes == [b"\x01\xff\xff\x00\x00"]

@@ -149,11 +149,12 @@ def test_millions_of_messages_are_refused_by_their_count_before_any_is_decoded(t
 
 @pytest.mark.parametrize("realtime", [False, True])
 def test_delays_are_slept_only_with_realtime(realtime: bool, tmp_path: Path, monkeypatch) -> None:
-    """The Create's startup hooks each wait 1000 ms: a replay waits for none unless --realtime."""
-    import time
+    """The Create's startup hooks each wait 1000 ms: a replay waits for none unless --realtime
+    (the robot's delays are its `_delay`, which replay puts aside unless asked)."""
+    from rdisc.engine.robot import Robot
 
     slept: list[float] = []
-    monkeypatch.setattr(time, "sleep", slept.append)
+    monkeypatch.setattr(Robot, "_delay", lambda robot, seconds: slept.append(seconds))
     path = recording(tmp_path / "calls.mcap", [run(GOOD_RUN)])
     result = run_rdisc_here("replay", path, CREATE, *(["--realtime"] if realtime else []))
     assert result.returncode in (0, 1), result.stderr
