@@ -66,7 +66,7 @@ def test_a_hostile_name_changes_no_statement(model, plain: dict[str, str], name:
     assert _statements(to_ros(model, name)) == plain["node"]
 
 
-@settings(max_examples=60, deadline=None)
+@settings(max_examples=20, deadline=None)
 @given(st.text(min_size=1, max_size=40))
 def test_any_name_changes_no_statement(model, plain: dict[str, str], name: str) -> None:  # type: ignore[no-untyped-def]
     assert _statements(to_python(model, name + ".rdis")) == plain["driver"]
