@@ -3507,18 +3507,27 @@ def parse_settings(given: list[str], device: Device) -> dict[str, Any]:
     `bind_settings` to check; one that does not fit is an RdisValueError naming the setting."""
     declared = {p.name: p for p in device.settings}
     values: dict[str, Any] = {}
-    for pair in given:
-        name, sep, text = pair.partition("=")
-        if not sep or not name:
-            raise ValueError(f"--set `{pair}` is not NAME=VALUE")
-        if name in values:
-            raise ValueError(f"--set {name} given twice")
+    for name, text in _pairs(given, "--set ", "NAME", "{}").items():
         param = declared.get(name)
         try:
             values[name] = text if param is None else read_value(text, param, f"{device.name}: setting {name}")
         except TypeError as err:
             raise RdisValueError(str(err)) from None
     return values
+
+
+def _pairs(words: list[str], said: str, key: str, shown: str) -> dict[str, str]:
+    """`K=V` words as a dict in their order: `said` starts a refusal, `key` names the K of a
+    word without one, `shown` writes a K given twice."""
+    given: dict[str, str] = {}
+    for pair in words:
+        name, sep, text = pair.partition("=")
+        if not sep or not name:
+            raise ValueError(f"{said}`{pair}` is not {key}=VALUE")
+        if name in given:
+            raise ValueError(f"{said}{shown.format(name)} given twice")
+        given[name] = text
+    return given
 
 
 def parse_call(words: list[str], device: Device) -> tuple[str, str, dict[str, Value]]:
@@ -3538,14 +3547,7 @@ def parse_call(words: list[str], device: Device) -> tuple[str, str, dict[str, Va
         near = difflib.get_close_matches(name, known, n=1)
         hint = f"did you mean `{near[0]}`?" if near else f"there are: {', '.join(known) or 'none'}"
         raise ValueError(f"{device.name} has no input, interface or primitive `{name}`; {hint}")
-    given: dict[str, str] = {}
-    for pair in pairs:
-        key, sep, text = pair.partition("=")
-        if not sep or not key:
-            raise ValueError(f"--call {name}: `{pair}` is not KEY=VALUE")
-        if key in given:
-            raise ValueError(f"--call {name}: `{key}` given twice")
-        given[key] = text
+    given = _pairs(pairs, f"--call {name}: ", "KEY", "`{}`")
     try:
         return name, kind, call_values(device, kind, name, given)
     except Unbound:
