@@ -74,6 +74,7 @@ from rdisc.engine.plans import (
     Param,
     Primitive,
     Request,
+    plainly_given,
 )
 from rdisc.engine.ports import Port, PortSpec, Simulator
 from rdisc.engine.recording import BYTES_TYPE, LOG_TYPE, RUNS_TOPIC, TEXT_TYPE, Recorder, ros_message
@@ -191,6 +192,7 @@ __all__ = [
     "parse_call",
     "parse_ports",
     "parse_settings",
+    "plainly_given",
     "read_value",
     "replaced",
     "ros_message",

@@ -17,6 +17,7 @@ from typing import Any, TypeVar
 
 from rdisc import engine
 from rdisc import lower as plans
+from rdisc.engine.plans import plainly_given
 from rdisc.runtime.codec import built
 from rdisc.runtime.errors import RdisLoadError
 from rdisc.runtime.evaluate import Prepared, coerce, prepare
@@ -171,14 +172,8 @@ class _Engine:
         full, flip, mask = _sum_finish(checksum)
 
         def request(state: Mapping[str, m.Value], args: Any) -> bytes | None:
-            if len(args) != len(kinds):
+            if not plainly_given(args, kinds, bounds):
                 return None
-            for value, kind in zip(args, kinds):
-                if type(value) is not kind:
-                    return None
-            for i, low, high in bounds:
-                if not low <= args[i] <= high:
-                    return None
             try:
                 payload = pack(*constants, *args) if values is None else pack(*values(state, args))
             except Exception:  # noqa: BLE001 - the general way says what is wrong

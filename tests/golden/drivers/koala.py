@@ -1281,6 +1281,20 @@ def _sent_at_once(plan: Primitive) -> bool:
     return _plain(plan.encoder) and not plan.expects_reply and plan.actions is None and plan.table is None and plan.lines is None
 
 
+def plainly_given(args: Args, kinds: tuple[type, ...], bounds: tuple[tuple[int, Any, Any], ...]) -> bool:
+    """Whether a one-step request may take these values: one of each parameter's own type, those
+    with a range within it (anything else goes the general way, which says what is wrong)."""
+    if len(args) != len(kinds):
+        return False
+    for value, kind in zip(args, kinds):
+        if type(value) is not kind:
+            return False
+    for i, low, high in bounds:
+        if not low <= args[i] <= high:
+            return False
+    return True
+
+
 def _composed_write(plan: Primitive) -> Request:
     """The general way of a primitive only written (`Robot._primitive`), as one function of its
     parameters' values. Like `Input.request` it returns None for anything but the parameters'
@@ -1293,14 +1307,8 @@ def _composed_write(plan: Primitive) -> Request:
     use = plan.frame
 
     def request(state: StateValues, args: Args) -> bytes | None:
-        if len(args) != len(kinds):
+        if not plainly_given(args, kinds, bounds):
             return None
-        for value, kind in zip(args, kinds):
-            if type(value) is not kind:
-                return None
-        for i, low, high in bounds:
-            if not low <= args[i] <= high:
-                return None
         try:
             payload = pack(*values_of(state, args))
             return payload if use is None else use.frame.wrap(payload, use.frame.values("", use.args(state, args)))
