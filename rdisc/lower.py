@@ -115,6 +115,112 @@ class Written:
     constant: bytes | None = None  # no parameters and constant values: the whole request, always
 
 
+# ---- the shapes of a reply: the engine's (`rdisc.engine.plans`), a table's entries each with its values
+
+@dataclass(frozen=True, slots=True)
+class NoReply:
+    """engine.NoReply: nothing is read."""
+
+
+NO_REPLY = NoReply()
+
+
+@dataclass(frozen=True, slots=True, eq=False)
+class LineReply:
+    """engine.LineReply: a line, matched."""
+
+    decoder: Construct[engine.Match]
+
+
+@dataclass(frozen=True, slots=True, eq=False)
+class FixedReply:
+    """engine.FixedReply: the bytes the decoder takes, no frame."""
+
+    decoder: Construct[engine.Unpack]
+
+
+@dataclass(frozen=True, slots=True, eq=False)
+class FramedReply:
+    """engine.FramedReply: a reply frame's payload decoded (or the frame only read)."""
+
+    decoder: Construct[engine.Unpack] | Construct[engine.Match] | None = None
+    _: KW_ONLY
+    skip: bool = False
+
+
+@dataclass(frozen=True, slots=True, eq=False)
+class TaggedReply:
+    """engine.TaggedReply: a reply frame's tag, then its entry's bytes."""
+
+    tag: str
+    table: tuple[Entry, ...]
+    _: KW_ONLY
+    skip: bool = False
+
+
+@dataclass(frozen=True, slots=True, eq=False)
+class TaggedStream:
+    """engine.TaggedStream: a tag, then its entry's bytes, no frame."""
+
+    tag: str
+    table: tuple[Entry, ...]
+    _: KW_ONLY
+    skip: bool = False
+
+
+@dataclass(frozen=True, slots=True, eq=False)
+class SubPayloads:
+    """engine.SubPayloads: a reply frame's payload of tagged sub-payloads."""
+
+    tag: str
+    table: tuple[Entry, ...]
+    length: str | None = None
+    _: KW_ONLY
+    skip: bool = False
+
+
+@dataclass(frozen=True, slots=True, eq=False)
+class Records:
+    """engine.Records: a reply frame's payload of records, each ended by the marker."""
+
+    marker: bytes
+    decoder: Construct[engine.Unpack]
+    _: KW_ONLY
+    skip: bool = False
+
+
+@dataclass(frozen=True, slots=True, eq=False)
+class KeyedReply:
+    """engine.KeyedReply: a reply table chosen by the parameter at `key`."""
+
+    key: int
+    table: tuple[Entry, ...]
+
+
+@dataclass(frozen=True, slots=True, eq=False)
+class SeveralReplies:
+    """engine.SeveralReplies: `replies N`, each reply read as `each`."""
+
+    count: int
+    each: Reply
+    frames: tuple[FrameUse, ...] = ()
+
+
+@dataclass(frozen=True, slots=True, eq=False)
+class ListedReplies:
+    """engine.ListedReplies: `replies { }`, a plan each."""
+
+    answers: tuple[Primitive, ...]
+
+
+Reply = (NoReply | LineReply | FixedReply | FramedReply | TaggedReply | TaggedStream | SubPayloads | Records
+         | KeyedReply | SeveralReplies | ListedReplies)
+"""How a primitive's reply is read, decided once here (`_Lowering.read_as`)."""
+
+TABLED = (TaggedReply, TaggedStream, SubPayloads, KeyedReply)
+"""The shapes with a reply table."""
+
+
 @dataclass(frozen=True, slots=True, eq=False)
 class Entry:
     """A reply table's entry: the key or tag values it is for, and its plan."""
@@ -125,7 +231,8 @@ class Entry:
 
 @dataclass(frozen=True, slots=True, eq=False)
 class Primitive:
-    """engine.Primitive; `table`, its entries each with the values it is for."""
+    """engine.Primitive; `reply`, how its reply is read (a reply table's entries each with the
+    values it is for)."""
 
     name: str
     connection: str
@@ -133,23 +240,13 @@ class Primitive:
     values: Code
     encoder: Construct[engine.Pack] | Construct[engine.Format] | None
     _: KW_ONLY
-    decoder: Construct[engine.Unpack] | Construct[engine.Match] | None = None
+    reply: Reply = NO_REPLY
     actions: Code | None = None
     frame: FrameUse | None = None
-    skip: bool = False
     timeout: float | None = None
-    table: tuple[Entry, ...] | None = None
-    key: int = -1
-    tag: str | None = None
-    each: bool = False
-    length: str | None = None
-    records: bytes | None = None
     checked: tuple[str, ...] = ()
     expect: Code | None = None
     lines: Code | None = None
-    replies: int = 0
-    reply_frames: tuple[FrameUse, ...] = ()
-    answers: tuple[Primitive, ...] = ()
     request: Written | None = None
 
 
@@ -257,6 +354,7 @@ class _Lowering:
     def __init__(self, model: m.Model) -> None:
         self.model = model
         self.frames = {f.name: frame(f) for f in model.frames.values()}
+        self.own_frames: dict[str, tuple[FrameUse, ...]] = {}
         primitives = {p.name: self.primitive(p) for p in model.primitives.values()}
         outputs = {o.name: self.output(o) for o in model.outputs.values()}
         planned: dict[str, Interface] = {}
@@ -282,10 +380,13 @@ class _Lowering:
             return dataclasses.replace(plan, request=_written(plan, p.params))
         plain = self.single(dataclasses.replace(p, table=None), p.reply_locals())
         table = tuple(Entry(c, self.reply(plain, p.case(c), p.reply_locals())) for c in p.table.cases)
-        if p.table.tag is not None:
-            return dataclasses.replace(plain, table=table, tag=p.table.tag, each=p.table.each, length=p.table.length)
-        key = next(i for i, prm in enumerate(p.params) if prm.name == p.table.key)
-        return dataclasses.replace(plain, table=table, key=key)
+        if p.table.tag is None:
+            key = next(i for i, prm in enumerate(p.params) if prm.name == p.table.key)
+            return dataclasses.replace(plain, reply=KeyedReply(key, table))
+        frames = self.reply_frames(p)
+        tagged = _tagged(p.table, frames[0] if frames else plain.frame, p.skip_unmatched, table)
+        return dataclasses.replace(plain, reply=SeveralReplies(len(frames) or p.replies, tagged, frames)
+                                   if p.replies else tagged)
 
     def single(self, p: m.Primitive, local: tuple[m.Parameter, ...]) -> Primitive:
         """The plan of a primitive without a reply table, its listed replies each its own plan;
@@ -298,25 +399,24 @@ class _Lowering:
             lines = Code(_OVER_ARGS, Gives.DICT, p.params, tuple((level.line, level.value, None) for level in p.lines))
         plan = Primitive(
             p.name, p.connection, _params(p.params), values, None if p.encoding is None else encoding(p.encoding),
-            frame=self.frame_use(p.frame, p.params), skip=p.skip_unmatched,
-            timeout=None if p.timeout_ms is None else p.timeout_ms / 1000.0,
-            records=None if p.records is None else p.records.encode("latin-1"),
-            expect=None if p.expect is None else _condition(_OVER_REPLY, local, p.expect),
-            lines=lines, replies=p.replies,
-            reply_frames=tuple(FrameUse(self.frames[use.frame], _values(p.params, use.args)) for use in p.reply_frames),
+            frame=self.frame_use(p.frame, p.params), timeout=None if p.timeout_ms is None else p.timeout_ms / 1000.0,
+            expect=None if p.expect is None else _condition(_OVER_REPLY, local, p.expect), lines=lines,
         )
         plan = self.reply(plan, p, local)
-        return dataclasses.replace(plan, answers=tuple(self.listed(plan, p.listed_reply(r)) for r in p.listed))
+        if not p.listed:
+            return plan
+        return dataclasses.replace(plan, reply=ListedReplies(tuple(self.listed(plan, p.listed_reply(r))
+                                                                     for r in p.listed)))
 
     def listed(self, plan: Primitive, p: m.Primitive) -> Primitive:
         """One of `replies { }`: the primitive's plan with that reply's frame, decoder, expect
         and post-actions."""
         expect = None if p.expect is None else _condition(_OVER_REPLY, p.reply_locals(), p.expect)
-        own = dataclasses.replace(plan, frame=self.frame_use(p.frame, p.params), expect=expect, answers=())
+        own = dataclasses.replace(plan, frame=self.frame_use(p.frame, p.params), expect=expect)
         return self.reply(own, p, p.reply_locals())
 
     def reply(self, plan: Primitive, p: m.Primitive, local: tuple[m.Parameter, ...]) -> Primitive:
-        """`plan` reading `p`'s reply: its decoder and its post-actions over `local` (besides
+        """`plan` reading `p`'s reply (`read_as`): and its post-actions over `local` (besides
         state and the reply), with the state variables they may make too wide."""
         states = self.model.states
         actions = None
@@ -324,7 +424,29 @@ class _Lowering:
             actions = Code(_OVER_REPLY, Gives.DICT, local,
                            tuple((a.target, a.value, states[a.target].type) for a in p.actions))
         checked = tuple(a.target for a in p.actions if states[a.target].type is m.Type.INT and m.may_outgrow(a.value))
-        return dataclasses.replace(plan, decoder=decoding(p.decoding), actions=actions, checked=checked)
+        return dataclasses.replace(plan, reply=self.read_as(p, plan.frame), actions=actions, checked=checked)
+
+    def read_as(self, p: m.Primitive, use: FrameUse | None) -> Reply:
+        """How `p`'s reply is read through `use` (a primitive without a reply table or listed
+        replies, or one of its entries or listed replies): several replies, each as one is; one
+        reply to decode; a frame of constant parts that acknowledges; or nothing."""
+        decoder = decoding(p.decoding)
+        if p.replies:
+            frames = self.reply_frames(p)
+            each = _one(decoder, frames[0] if frames else use, p.skip_unmatched, p.records)
+            return SeveralReplies(len(frames) or p.replies, each, frames)
+        if decoder is not None:
+            return _one(decoder, use, p.skip_unmatched, p.records)
+        if use is not None and _acknowledges(use.frame):
+            return FramedReply(skip=p.skip_unmatched)
+        return NO_REPLY
+
+    def reply_frames(self, p: m.Primitive) -> tuple[FrameUse, ...]:
+        """`replies N`'s own frames, made once a primitive (its table's entries share them)."""
+        if p.name not in self.own_frames:
+            self.own_frames[p.name] = tuple(FrameUse(self.frames[use.frame], _values(p.params, use.args))
+                                            for use in p.reply_frames)
+        return self.own_frames[p.name]
 
     def frame_use(self, use: m.FrameUse | None, params: tuple[m.Parameter, ...]) -> FrameUse | None:
         return None if use is None else FrameUse(self.frames[use.frame], _values(params, use.args))
@@ -407,8 +529,7 @@ def _written(plan: Primitive, params: tuple[m.Parameter, ...]) -> Written | None
     encoder = None if plan.encoder is None else plan.encoder.value
     if not plain(encoder) or not isinstance(encoder, engine.Pack) or encoder.groups or encoder.varying:
         return None
-    if plan.decoder is not None or plan.table is not None or plan.answers or plan.actions is not None \
-            or plan.lines is not None or any(key == "*" for key, _, _ in plan.values.items) \
+    if not isinstance(plan.reply, NoReply) or plan.actions is not None or plan.lines is not None or any(key == "*" for key, _, _ in plan.values.items) \
             or any(isinstance(prm.type, m.Array) for prm in params):
         return None
     written = Written(params, plan.values, encoder.struct.format)
@@ -431,9 +552,7 @@ def _folded(written: Written, use: FrameUse, size: int) -> Written | None:
     constant bytes, fields and the length only; after it a checksum of parts up to it, then
     constant bytes."""
     f = use.frame
-    reply = engine.Side([part.value for part in f.reply])
-    acknowledged = bool(reply.parts) and reply.payload < 0  # the engine's: a reply of constant parts is read
-    if f.stuffing is not None or f.escaping is not None or f.more_requests or acknowledged \
+    if f.stuffing is not None or f.escaping is not None or f.more_requests or _acknowledges(f) \
             or not all(isinstance(e, m.Const) for _, e, _ in use.args.items):
         return None
     args = [e.value for _, e, _ in use.args.items if isinstance(e, m.Const)]
@@ -471,6 +590,41 @@ def _folded(written: Written, use: FrameUse, size: int) -> Written | None:
                                covered=covered, partial=partial, tail=tail)
 
 
+def _one(decoder: Construct[engine.Unpack] | Construct[engine.Match] | None, use: FrameUse | None, skip: bool,
+         records: str | None) -> Reply:
+    """How one reply is read: through a frame whose reply has parts, its payload (as records,
+    or decoded); with no frame, a line matched or the bytes an `unpack` takes."""
+    if use is not None and use.frame.reply:
+        if records is not None:
+            assert decoder is not None and decoder.kind is engine.Unpack  # the checker's
+            return Records(records.encode("latin-1"), decoder, skip=skip)
+        return FramedReply(decoder, skip=skip)
+    if decoder is None:
+        return NO_REPLY
+    if decoder.kind is engine.Match:
+        return LineReply(decoder)
+    assert decoder.kind is engine.Unpack
+    return FixedReply(decoder)
+
+
+def _tagged(table: m.ReplyTable, use: FrameUse | None, skip: bool, entries: tuple[Entry, ...]) -> Reply:
+    """How a reply whose tag chooses its entry is read: through a frame whose reply has parts,
+    its payload's tag (or its sub-payloads, each with its tag); with no frame, a tag and its bytes."""
+    assert table.tag is not None
+    if use is None or not use.frame.reply:
+        return TaggedStream(table.tag, entries, skip=skip)
+    if table.each:
+        return SubPayloads(table.tag, entries, table.length, skip=skip)
+    return TaggedReply(table.tag, entries, skip=skip)
+
+
+def _acknowledges(f: Frame) -> bool:
+    """Whether a frame's reply is an acknowledgement: constant parts only, no payload (the
+    engine reads it, and there is nothing to decode)."""
+    reply = engine.Side([part.value for part in f.reply])
+    return bool(reply.parts) and reply.payload < 0
+
+
 def _evaluated(code: Code) -> Any:
     """A frame's fields' values over its arguments (the runtime's closure of the Code)."""
     slots = {prm.name: i for i, prm in enumerate(code.params)}
@@ -488,8 +642,8 @@ def _written_at_once(interface: Interface) -> bool:
     prim = call.target
     if not isinstance(prim, Primitive) or not call.direct or call.delay or call.when is not None:
         return False
-    expects_reply = prim.decoder is not None or prim.table is not None or bool(prim.answers)
-    return (plain(None if prim.encoder is None else prim.encoder.value) and not expects_reply and prim.frame is None
+    return (plain(None if prim.encoder is None else prim.encoder.value) and isinstance(prim.reply, NoReply)
+            and prim.frame is None
             and prim.actions is None and prim.lines is None
             and not _ranged(prim.params))
 

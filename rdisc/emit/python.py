@@ -457,9 +457,14 @@ class _Driver:
             case (lowering.Code() | lowering.Frame() | lowering.Primitive() | lowering.Interface() | lowering.Output() | lowering.Input()
                   | lowering.Connection()):
                 return self.names[value]
-            case Construct() | lowering.Call() | lowering.FrameUse() | lowering.Hook():
+            case (Construct() | lowering.Call() | lowering.FrameUse() | lowering.Hook() | lowering.NoReply()
+                  | lowering.LineReply() | lowering.FixedReply() | lowering.FramedReply() | lowering.TaggedReply()
+                  | lowering.TaggedStream() | lowering.SubPayloads() | lowering.Records() | lowering.KeyedReply()
+                  | lowering.SeveralReplies() | lowering.ListedReplies()):
                 args, options = self.arguments(value)
                 return f"{_kind(value)}({', '.join([*args, *(f'{k}={v}' for k, v in options.items())])})"
+            case tuple() if value and isinstance(value[0], lowering.Entry):  # a reply table, written before
+                return self.names[value]
             case type():
                 return value.__name__
             case bool() | None:
@@ -517,14 +522,16 @@ class _Driver:
         self.comment(w, prim.span, f"primitive {prim.name}")
         base, const = f"_p_{prim.name}", self.plan["primitive", prim.name]
         self.code(w, f"{base}_values", plan.values)
+        shape = plan.reply
         functions = [("frame", None if plan.frame is None else plan.frame.args), ("lines", plan.lines),
-                     *((f"reply_frame_{n}", use.args) for n, use in enumerate(plan.reply_frames)),
+                     *((f"reply_frame_{n}", use.args) for n, use in enumerate(_reply_frames(shape))),
                      ("expect", plan.expect)]
         for suffix, code in functions:
             if code is not None:
                 w.blank(2)
                 self.code(w, f"{base}_{suffix}", code)
-        for n, answer in enumerate(plan.answers, 1):  # each its own plan: frame, decoder, expect, post-actions
+        answers = shape.answers if isinstance(shape, lowering.ListedReplies) else ()
+        for n, answer in enumerate(answers, 1):  # each its own plan: frame, decoder, expect, post-actions
             own = (("frame", None if answer.frame is None else answer.frame.args), ("expect", answer.expect),
                    ("actions", answer.actions))
             for suffix, code in own:
@@ -532,10 +539,11 @@ class _Driver:
                     w.blank(2)
                     self.code(w, f"{base}_reply_{n}_{suffix}", code)
             w.blank(2)
-            w.line(f"# reply {n} of {len(plan.answers)}")
+            w.line(f"# reply {n} of {len(answers)}")
             self.constant(w, f"{const}_REPLY_{n}", answer)
-        entries = [(None, plan)] if plan.table is None else [(entry.case, entry.plan) for entry in plan.table]
-        table: list[str] = []
+        table = _table(shape)
+        entries = [(None, plan)] if table is None else [(entry.case, entry.plan) for entry in table]
+        texts: list[str] = []
         for case, entry in entries:
             name = const if case is None else f"{const}_{_case(case).upper()}"
             if entry.actions is not None and entry.actions not in self.names:
@@ -544,23 +552,23 @@ class _Driver:
             w.blank(2)
             if case is not None:
                 w.line(f"# reply {case.values_text()}")
-                table.append(f"{case.value}: {name}" if case.last is None
+                texts.append(f"{case.value}: {name}" if case.last is None
                              else f"**dict.fromkeys({case.values()!r}, {name})")  # a range entry
             if entry.request is not None:
                 self.constant(w, name, entry, {"request": self.written(w, prim, entry.request)})
                 continue
             self.constant(w, name, entry)
-        if plan.table is not None:
-            entries_text = "{" + ", ".join(table) + "}"
-            if len(f"    table={entries_text},") > w.width():  # its own constant, an entry a line
+        if table is not None:
+            self.names[table] = "{" + ", ".join(texts) + "}"
+            if len(f"    reply={self.text(shape)},") > w.width():  # the table its own constant, an entry a line
                 w.blank(2)
                 w.line(f"{const}_TABLE = {{")
                 with w.indented():
-                    w.lines([f"{item}," for item in table])
+                    w.lines([f"{item}," for item in texts])
                 w.line("}")
-                entries_text = f"{const}_TABLE"
+                self.names[table] = f"{const}_TABLE"
             w.blank(2)
-            self.constant(w, const, plan, {"table": entries_text})
+            self.constant(w, const, plan)
 
     def written(self, w: Writer, prim: m.Primitive, written: lowering.Written) -> str:
         """The primitive's request in one step (the engine's `Primitive.request`), as the lowering
@@ -849,6 +857,18 @@ def _construct(w: Writer, prefix: str, name: str, args: list[str], options: Mapp
 def _kind(made: object) -> str:
     """The name of what a constructor call makes."""
     return made.kind.__name__ if isinstance(made, Construct) else type(made).__name__
+
+
+def _table(shape: lowering.Reply) -> tuple[lowering.Entry, ...] | None:
+    """A reply shape's table, if it has one."""
+    return shape.table if isinstance(shape, lowering.TABLED) else None
+
+
+def _reply_frames(shape: lowering.Reply) -> tuple[lowering.FrameUse, ...]:
+    """`replies N`'s own frames: the shape's, or its table's entries' (which share them)."""
+    if isinstance(shape, lowering.SeveralReplies):
+        return shape.frames
+    return next((frames for entry in _table(shape) or () if (frames := _reply_frames(entry.plan.reply))), ())
 
 
 def _case(case: m.ReplyCase) -> str:

@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import struct
 from collections.abc import Callable, Mapping, Sequence
-from dataclasses import dataclass, field, replace
+from dataclasses import KW_ONLY, dataclass, field
 from typing import TYPE_CHECKING, Any
 
 from rdisc.engine.codec import Format, Match, Pack, Unpack
@@ -42,61 +42,164 @@ Request = Callable[[StateValues, Args], bytes | None]
 None where the general way must decide."""
 
 
+# ---- the shapes of a reply: one of these is how a primitive's reply is read ---------------------
+
+
+@dataclass(frozen=True, slots=True)
+class NoReply:
+    """Nothing is read: the request is only written (its post-actions read its parameters alone)."""
+
+
+NO_REPLY = NoReply()
+
+
+@dataclass(frozen=True, slots=True)
+class LineReply:
+    """A line up to the connection's terminator, matched by `decoder` (no frame)."""
+
+    decoder: Match
+
+
+@dataclass(frozen=True, slots=True)
+class FixedReply:
+    """The bytes `decoder` takes, as they come (no frame)."""
+
+    decoder: Unpack
+
+
+@dataclass(frozen=True, slots=True)
+class FramedReply:
+    """A reply frame, its payload decoded by `decoder` (None: the frame is only read, as a frame
+    of constant parts acknowledges). `skip`: frames that do not decode are read past."""
+
+    decoder: Unpack | Match | None = None
+    _: KW_ONLY
+    skip: bool = False
+
+
+@dataclass(frozen=True, slots=True)
+class TaggedReply:
+    """A reply frame whose payload starts with a tag (struct format `tag`): the rest is decoded
+    by the entry of `table` the tag chooses, whose post-actions take it."""
+
+    tag: str
+    table: Mapping[int, Primitive]
+    _: KW_ONLY
+    skip: bool = False
+    tag_struct: struct.Struct = field(init=False)
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "tag_struct", struct.Struct(self.tag))
+
+
+@dataclass(frozen=True, slots=True)
+class TaggedStream:
+    """A tag, then exactly the bytes its entry decodes, with no frame (Firmata's stream). `skip`:
+    a tag without an entry is read past."""
+
+    tag: str
+    table: Mapping[int, Primitive]
+    _: KW_ONLY
+    skip: bool = False
+    tag_struct: struct.Struct = field(init=False)
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "tag_struct", struct.Struct(self.tag))
+
+
+@dataclass(frozen=True, slots=True)
+class SubPayloads:
+    """A reply frame whose payload is sub-payloads until it ends (Kobuki's feedback): each a tag,
+    its length (struct format `length`, when given) and the bytes its entry decodes."""
+
+    tag: str
+    table: Mapping[int, Primitive]
+    length: str | None = None
+    _: KW_ONLY
+    skip: bool = False
+    tag_struct: struct.Struct = field(init=False)
+    length_struct: struct.Struct | None = field(init=False)
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "tag_struct", struct.Struct(self.tag))
+        object.__setattr__(self, "length_struct", None if self.length is None else struct.Struct(self.length))
+
+
+@dataclass(frozen=True, slots=True)
+class Records:
+    """A reply frame whose payload is records, each ended by `marker`, each decoded by `decoder`
+    (Firmata's capability report)."""
+
+    marker: bytes
+    decoder: Unpack | Match
+    _: KW_ONLY
+    skip: bool = False
+
+
+@dataclass(frozen=True, slots=True)
+class KeyedReply:
+    """A reply table chosen by a parameter (at position `key`): the entry its value chooses is
+    what runs, chosen before anything is written (`entry`)."""
+
+    key: int
+    table: Mapping[int, Primitive]
+
+    def entry(self, args: Args) -> Primitive:
+        return self.table[args[self.key]]  # the key's range holds every key of the table
+
+
+@dataclass(frozen=True, slots=True)
+class SeveralReplies:
+    """`replies N`: `count` replies to one request, each read as `each`, through its own frame
+    where `frames` gives one (else the primitive's); their values collected value by value into
+    arrays for the primitive's post-actions."""
+
+    count: int
+    each: Reply
+    frames: tuple[FrameUse, ...] = ()
+
+
+@dataclass(frozen=True, slots=True)
+class ListedReplies:
+    """`replies { }`: the replies read in turn, a plan each (its own frame, reply, `expect` and
+    post-actions)."""
+
+    answers: tuple[Primitive, ...]
+
+
+Reply = (NoReply | LineReply | FixedReply | FramedReply | TaggedReply | TaggedStream | SubPayloads | Records
+         | KeyedReply | SeveralReplies | ListedReplies)
+"""How a primitive's reply is read: one shape each, decided by the lowering (`rdisc.lower`) and
+read by one `match` (`Exchange._read`)."""
+
+
 @dataclass(frozen=True, slots=True)
 class Primitive:
     """One device command: its format values (over state and its parameters), how they are
     encoded and framed (no encoder: no request, only modem lines), how its reply is read and
-    decoded, and its post-actions (the new values of state variables, over state, its
-    parameters and the reply)."""
+    decoded (`reply`, one of the shapes of `Reply`), and its post-actions (the new values of
+    state variables, over state, its parameters and the reply)."""
 
     name: str
     connection: str
     params: tuple[Param, ...]
     values: Callable[[StateValues, Args], Args]
     encoder: Pack | Format | None
-    decoder: Unpack | Match | None = None
+    _: KW_ONLY
+    reply: Reply = NO_REPLY  # how its reply is read
     actions: Callable[[StateValues, Args, Sequence[Any]], dict[str, Value]] | None = None
     frame: FrameUse | None = None
-    skip: bool = False  # `skip unmatched`: read past replies that do not decode
     timeout: float | None = None  # seconds its reply may take, instead of the robot's
-    table: Mapping[int, Primitive] | None = None  # a reply table: the plan for each key or tag
-    key: int = -1  # the position of the parameter that chooses from `table` (-1: the reply's tag does)
-    tag: str | None = None  # the struct format of the tag that starts the reply
-    each: bool = False  # the framed payload is sub-payloads, each a tag and its entry's bytes, until it ends
-    length: str | None = None  # `each`: the struct format of each sub-payload's length, after its tag
-    records: bytes | None = None  # the marker ending each record of the framed payload, each decoded by `decoder`
     checked: tuple[str, ...] = ()  # state variables its post-actions may make too wide (checked as they are set)
     request: Request | None = None  # its parameters' values to the bytes, when it is only written (`_sent_at_once`)
     expect: Callable[[StateValues, Args, Sequence[Any]], object] | None = None  # a condition its decoded reply meets
     lines: Callable[[StateValues, Args], dict[str, Value]] | None = None  # "dtr"/"rts": levels, set before the request
-    replies: int = 0  # `replies N`: N replies to one request, collected value by value into arrays (0: one)
-    reply_frames: tuple[FrameUse, ...] = ()  # each reply's own frame (`replies id in IDS frame status(id)`)
-    answers: tuple[Primitive, ...] = ()  # the replies read in turn, a plan each: `replies { }`'s, each its own
-    # frame, decoder, expect and post-actions; `replies N`'s made here, this plan's (through `reply_frames`)
-    expects_reply: bool = field(init=False)
-    framed_reply: bool = field(init=False)
-    in_parts: bool = field(init=False)  # read as sub-payloads or records, each its plan, values and post-actions
     floats: tuple[int, ...] = field(init=False)
     ranged: tuple[int, ...] = field(init=False)
-    tag_struct: struct.Struct | None = field(init=False)
-    length_struct: struct.Struct | None = field(init=False)
 
     def __post_init__(self) -> None:
-        reply = self.frame.frame.reply if self.frame is not None else None
-        framed = reply is not None and bool(reply.parts)
-        acknowledged = framed and reply is not None and reply.payload < 0  # constant parts only
-        object.__setattr__(self, "framed_reply", framed)
-        object.__setattr__(self, "in_parts", self.each or self.records is not None)
-        object.__setattr__(self, "expects_reply", self.decoder is not None or self.table is not None or acknowledged
-                           or bool(self.answers))
         object.__setattr__(self, "floats", _floats(self.params))
         object.__setattr__(self, "ranged", _ranged(self.params))
-        object.__setattr__(self, "tag_struct", None if self.tag is None else struct.Struct(self.tag))
-        object.__setattr__(self, "length_struct", None if self.length is None else struct.Struct(self.length))
-        if self.replies:  # one plan for each reply, all alike but for their frames
-            one = replace(self, replies=0, reply_frames=())
-            object.__setattr__(self, "answers", tuple(replace(one, frame=use) for use in self.reply_frames)
-                               or (one,) * self.replies)
         if not _sent_at_once(self):
             object.__setattr__(self, "request", None)
         elif self.request is None:
@@ -112,7 +215,7 @@ def _plain(encoder: Pack | Format | None) -> bool:
 def _sent_at_once(plan: Primitive) -> bool:
     """Whether running the primitive is only packing its values, framing them and writing
     them: no reply, reply table, post-action, modem line or string in the way."""
-    return _plain(plan.encoder) and not plan.expects_reply and plan.actions is None and plan.table is None and plan.lines is None
+    return _plain(plan.encoder) and isinstance(plan.reply, NoReply) and plan.actions is None and plan.lines is None
 
 
 def plainly_given(args: Args, kinds: tuple[type, ...], bounds: tuple[tuple[int, Any, Any], ...]) -> bool:
@@ -226,9 +329,10 @@ def _written_at_once(interface: Interface) -> Call | None:
     prim = call.target
     if not isinstance(prim, Primitive):
         return None
-    if not call.direct or call.delay or call.when or not _plain(prim.encoder) or prim.expects_reply or prim.frame is not None:
+    if not call.direct or call.delay or call.when or not _plain(prim.encoder) or not isinstance(prim.reply, NoReply) \
+            or prim.frame is not None:
         return None
-    return call if prim.actions is None and prim.table is None and prim.lines is None and not prim.ranged else None
+    return call if prim.actions is None and prim.lines is None and not prim.ranged else None
 
 
 def _composed(plan: Input, call: Call) -> Request:

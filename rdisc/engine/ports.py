@@ -43,15 +43,19 @@ from connection name to port."""
 class Simulator(Protocol):
     """A simulated device in place of the ports (`Robot.open(sim=...)`; `rdisc.sim` gives one
     over MuJoCo): it takes what the host commands, by primitive and interface with their
-    parameters' values, and answers a primitive's reply with its values (`replies N` or
-    `replies { }`: a list of a reply for each of its `answers`, each its values). In simulated time
-    (`realtime` False) the robot runs no threads: its schedule and delays advance the simulation."""
+    parameters' values (`interface`, `exchange`), and answers each reply a primitive reads with
+    its values (`reply`; `place`, the reply's among `replies N` or `replies { }`, None for a
+    primitive's one reply), the reply's shape (`Primitive.reply`) saying which it reads. In
+    simulated time (`realtime` False) the robot runs no threads: its schedule and delays advance
+    the simulation."""
 
     realtime: bool
 
     def interface(self, plan: Interface, args: Args, /) -> None: ...
 
-    def exchange(self, plan: Primitive, local: Args, /) -> Sequence[Any]: ...
+    def exchange(self, plan: Primitive, local: Args, /) -> None: ...
+
+    def reply(self, plan: Primitive, local: Args, place: int | None, /) -> Sequence[Any]: ...
 
     def advance(self, seconds: float, /) -> None: ...
 

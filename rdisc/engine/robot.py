@@ -14,9 +14,9 @@ from typing import Any
 
 from rdisc.engine.arguments import _accept_param, _accepted, _bind, _check_ranges, _widen, bind_settings
 from rdisc.engine.errors import RdisConnectionError, RdisValueError
-from rdisc.engine.exchange import Exchange, _lines_text
+from rdisc.engine.exchange import Exchange
 from rdisc.engine.operations import EVAL_ERRORS
-from rdisc.engine.plans import Device, Hook, Input, Interface, Primitive
+from rdisc.engine.plans import Device, Hook, Input, Interface, KeyedReply, Primitive
 from rdisc.engine.ports import PortSpec, Simulator, _Link, _open_port, _Port
 from rdisc.engine.schedule import _Worker
 from rdisc.engine.values import Args, ErrorCallback, IoCallback, OutputCallback, StateValues, Value
@@ -468,9 +468,8 @@ class Robot(Exchange):
                 break
         if plan.ranged:
             _check_ranges(plan.name, plan.params, plan.ranged, args)
-        if plan.key >= 0:
-            assert plan.table is not None  # and the key's range holds every key of it
-            plan = plan.table[args[plan.key]]
+        if isinstance(plan.reply, KeyedReply):
+            plan = plan.reply.entry(args)
         try:
             values = plan.values(self._state, args)
         except EVAL_ERRORS as err:
@@ -481,14 +480,13 @@ class Robot(Exchange):
 
     def _simulate(self, sim: Simulator) -> None:
         """Run against `sim`: every primitive the general way (the simulator takes parameters'
-        values, which a plain write's shortcut never has), its exchange with the simulator, and
-        in simulated time the schedule's clock and the delays the simulation's. Instance
-        attributes, so that a robot on ports runs exactly the code it runs without them."""
+        values, which a plain write's shortcut never has), and in simulated time the schedule's
+        clock and the delays the simulation's. Instance attributes, so that a robot on ports runs
+        exactly the code it runs without them. Each exchange is the simulator's (`Exchange._simulated`)."""
         self._sim = sim
         self._input = self._input_in_full  # type: ignore[method-assign]
         self._primitive = self._primitive_in_full  # type: ignore[method-assign]
         self._interface = self._simulated_interface  # type: ignore[method-assign]
-        self._exchange = self._simulated_exchange  # type: ignore[method-assign]
         if not sim.realtime:
             self._clock = sim.now
             self._sleep = sim.advance
@@ -499,24 +497,3 @@ class Robot(Exchange):
         assert self._sim is not None
         self._sim.interface(plan, args)
         Robot._interface(self, plan, args)
-
-    def _simulated_exchange(self, plan: Primitive, values: Args, local: Args) -> None:
-        """A primitive against the simulator: its request is encoded as for a port (the I/O
-        callbacks see it written, and what a port refuses is refused), the simulator takes the
-        parameters' values and gives the reply's, which meet the `expect` and go to the
-        post-actions as a reply read from a port would."""
-        assert self._sim is not None
-        if self._closed:
-            self._refuse(plan)
-        request, _fields, levels = self._request(plan, values, local)
-        reply = self._sim.exchange(plan, local)
-        if self._io_callbacks:
-            if levels is not None:
-                self._notify_io("lines", plan.connection, _lines_text(levels))
-            if request:
-                self._notify_io("write", plan.connection, request)
-        if plan.answers:  # one reply for each, meeting its own expect
-            reply = [self._met(answer, local, one) for answer, one in zip(plan.answers, reply)]
-        elif plan.expects_reply and not plan.in_parts:
-            reply = self._met(plan, local, reply)
-        self._store(plan, local, reply)

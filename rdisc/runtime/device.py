@@ -13,7 +13,7 @@ import os
 import struct
 from collections.abc import Callable, Mapping
 from types import MappingProxyType
-from typing import Any, TypeVar
+from typing import Any, TypeVar, assert_never
 
 from rdisc import engine
 from rdisc import lower as plans
@@ -142,17 +142,44 @@ class _Engine:
         return self.once(p, lambda: self._primitive(p))
 
     def _primitive(self, p: plans.Primitive) -> engine.Primitive:
-        table = None
-        if p.table is not None:  # a range entry's plan once, for each of its values
-            table = {value: self.primitive(entry.plan) for entry in p.table for value in entry.case.values()}
         return engine.Primitive(
-            p.name, p.connection, built(p.params), self.closure(p.values), built(p.encoder), built(p.decoder),
-            self.closure(p.actions), None if p.frame is None else self.use(p.frame), p.skip, p.timeout, table, p.key, p.tag, p.each, p.length,
-            p.records, p.checked, expect=self.closure(p.expect), lines=self.closure(p.lines), replies=p.replies,
-            reply_frames=tuple(self.use(u) for u in p.reply_frames),
-            answers=tuple(self.primitive(answer) for answer in p.answers),
+            p.name, p.connection, built(p.params), self.closure(p.values), built(p.encoder), reply=self.reply(p.reply),
+            actions=self.closure(p.actions), frame=None if p.frame is None else self.use(p.frame), timeout=p.timeout,
+            checked=p.checked, expect=self.closure(p.expect), lines=self.closure(p.lines),
             request=None if p.request is None else self.written(p.request, built(p.params)),
         )
+
+    def reply(self, r: plans.Reply) -> engine.Reply:
+        """How the reply is read, as the lowering decided it."""
+        match r:
+            case plans.NoReply():
+                return engine.NO_REPLY
+            case plans.LineReply(decoder=decoder):
+                return engine.LineReply(decoder.value)
+            case plans.FixedReply(decoder=decoder):
+                return engine.FixedReply(decoder.value)
+            case plans.FramedReply(decoder=decoder, skip=skip):
+                return engine.FramedReply(built(decoder), skip=skip)
+            case plans.TaggedReply(tag=tag, table=table, skip=skip):
+                return engine.TaggedReply(tag, self.table(table), skip=skip)
+            case plans.TaggedStream(tag=tag, table=table, skip=skip):
+                return engine.TaggedStream(tag, self.table(table), skip=skip)
+            case plans.SubPayloads(tag=tag, table=table, length=length, skip=skip):
+                return engine.SubPayloads(tag, self.table(table), length, skip=skip)
+            case plans.Records(marker=marker, decoder=decoder, skip=skip):
+                return engine.Records(marker, decoder.value, skip=skip)
+            case plans.KeyedReply(key=key, table=table):
+                return engine.KeyedReply(key, self.table(table))
+            case plans.SeveralReplies(count=count, each=each, frames=frames):
+                return engine.SeveralReplies(count, self.reply(each), tuple(self.use(u) for u in frames))
+            case plans.ListedReplies(answers=answers):
+                return engine.ListedReplies(tuple(self.primitive(answer) for answer in answers))
+            case _:
+                assert_never(r)
+
+    def table(self, entries: tuple[plans.Entry, ...]) -> dict[int, engine.Primitive]:
+        """A reply table: each entry's plan for each of its values (a range entry's plan once)."""
+        return {value: self.primitive(entry.plan) for entry in entries for value in entry.case.values()}
 
     def written(self, w: plans.Written, params: tuple[engine.Param, ...]) -> engine.Request:
         """A primitive's request in one step, as its description says (`plans.Written`); what

@@ -133,6 +133,7 @@ class Simulation:
         self._replies = {p.name: _replies(p) for p in model.primitives.values()}
         self._keys = {p.name: [q.name for q in p.params].index(p.table.key)
                       for p in model.primitives.values() if p.table is not None and p.table.key}
+        self._listed = {p.name for p in model.primitives.values() if p.listed}  # replies by their place
         if seed is not None:
             jitter = random.Random(seed)
             for joint in model.joints.values():
@@ -153,7 +154,7 @@ class Simulation:
                 self._catch_up()
                 self._command(commands, args)
 
-    def exchange(self, plan: engine.Primitive, local: engine.Args) -> Sequence[Any]:
+    def exchange(self, plan: engine.Primitive, local: engine.Args) -> None:
         commands = self._commands.get((False, plan.name))
         with self._lock:
             self._catch_up()
@@ -162,13 +163,10 @@ class Simulation:
                 if positions is not None and len(local) != len(plan.params):  # a direct call's format values
                     local = [local[i] for i in positions]
                 self._command(commands, local)
-            if plan.in_parts:  # sub-payloads or records: it reports none
-                return []
-            if plan.replies:  # one reply a servo (a sync read): reply n tells element n
-                return [self._reply(plan, local, n) for n in range(plan.replies)]
-            if plan.answers:  # `replies { }`: each listed reply as a table's entry n
-                return [self._reply(plan, local, listed=n) for n in range(len(plan.answers))]
-            return self._reply(plan, local) if plan.expects_reply else ()
+
+    def reply(self, plan: engine.Primitive, local: engine.Args, place: int | None) -> Sequence[Any]:
+        with self._lock:
+            return self._reply(plan, local, place)
 
     def advance(self, seconds: float) -> None:
         """Step the physics `seconds` further (to the nearest whole timestep)."""
@@ -258,14 +256,14 @@ class Simulation:
             case m.Quantity.EFFORT:
                 return float(self.data.qfrc_actuator[j.dofadr[0]])
 
-    def _reply(self, plan: engine.Primitive, local: Sequence[Any], n: int | None = None,
-               listed: int | None = None) -> Sequence[Any]:
-        """The values of a reply (reply `n` of `replies N`, whose `present = out[2]` stores
-        element n; or the `listed`th of `replies { }`): zeros, the values `expect` pins, and what
-        the measured joints read."""
+    def _reply(self, plan: engine.Primitive, local: Sequence[Any], place: int | None) -> Sequence[Any]:
+        """The values of a reply (at `place` among several: the `place`th of `replies { }`, or
+        reply n of `replies N`, whose `present = out[2]` stores element n): zeros, the values
+        `expect` pins, and what the measured joints read."""
         replies = self._replies[plan.name]
+        listed = plan.name in self._listed
         key = self._keys.get(plan.name)
-        reply = replies.get(listed if listed is not None else None if key is None else local[key])
+        reply = replies.get(place if listed else None if key is None else local[key])
         if reply is None:
             return ()
         values = list(reply.zeros)
@@ -273,7 +271,7 @@ class Simulation:
             values[k] = value
         for s in reply.sensed:
             try:
-                index = n if s.element is None else s.element(local)
+                index = (None if listed else place) if s.element is None else s.element(local)
             except (LookupError, *engine.EVAL_ERRORS):
                 continue
             measure = self._measures.get((s.state, index))
