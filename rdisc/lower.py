@@ -5,7 +5,7 @@ Output, Hook, Connection, Device, Frame, FrameUse). Where the engine takes a fun
 plan holds a `Code`: what the function computes, as data. The engine's data objects
 (encoders, decoders, frame parts, parameters) are built here, once, as `Construct`s. Two
 back ends walk the same plans: the runtime (`rdisc.runtime.device`) makes each Code a
-closure over `rdisc.runtime.evaluate.prepare`; the emitter (`rdisc.emit.python`) writes
+closure over `rdisc.semantics.evaluate.prepare`; the emitter (`rdisc.emit.python`) writes
 each Code as a function and each plan as its constructor call. Neither decides anything
 about the description's structure.
 
@@ -25,10 +25,19 @@ from typing import Any
 from rdisc import engine
 from rdisc.engine.operations import EVAL_ERRORS
 from rdisc.engine.plans import _plain as plain  # the engine's rule of a plain struct pack
-from rdisc.runtime.codec import Construct, decoding, encoding, escaping, frame_fields, param, parts, stuffing
-from rdisc.runtime.evaluate import prepare
-from rdisc.runtime.messages import recorded_messages
+from rdisc.lowering.constructs import (
+    Construct,
+    decoding,
+    encoding,
+    escaping,
+    frame_fields,
+    param,
+    parts,
+    stuffing,
+)
+from rdisc.lowering.messages import recorded_messages
 from rdisc.semantics import model as m
+from rdisc.semantics.evaluate import prepare
 
 __all__ = ["Call", "Code", "Connection", "Device", "Frame", "FrameUse", "Gives", "Hook", "Input", "Interface",
            "Output", "Plans", "Primitive", "Written", "frame", "lower"]

@@ -11,7 +11,6 @@ import struct
 from collections.abc import Callable
 
 from rdisc.emit.canonical import expression_text
-from rdisc.semantics import formats
 from rdisc.semantics import model as m
 from rdisc.syntax.printer import spell_template
 
@@ -52,16 +51,16 @@ def _primitive(model: m.Model, p: m.Primitive) -> str:
             if p.table.tag is None:
                 lines += _sides(f"reply when {p.table.key} = {said}", framed, _reply_rows(case.decoding))
             else:
-                tag = (formats.struct_layout(p.table.tag).size, f"tag {_kind(p.table.tag, p.table.tag[-1])}",
+                assert p.table.tag_layout is not None
+                tag = (p.table.tag_layout.size, f"tag {_integer_kind(p.table.tag_layout)}",
                        f"= {said}" if case.last is None else f"in {said}")
                 rows = [tag, *_reply_rows(case.decoding)]
                 if p.table.each:  # one sub-payload; the frame is shown around the first alone
-                    if p.table.length is not None:
+                    if p.table.length_layout is not None:
                         assert isinstance(case.decoding, m.Unpack)  # sub-payloads are bytes (E505)
-                        layout = formats.struct_layout(case.decoding.format)  # its pad bytes too
+                        layout = case.decoding.layout  # its pad bytes too
                         size = None if layout.rest or layout.varying else layout.size
-                        rows.insert(1, (formats.struct_layout(p.table.length).size,
-                                        f"length {_kind(p.table.length, p.table.length[-1])}",
+                        rows.insert(1, (p.table.length_layout.size, f"length {_integer_kind(p.table.length_layout)}",
                                         "of what follows" if size is None else f"= {size}"))
                     if case is p.table.cases[0]:
                         skipped = " (an unknown tag skipped by its length)" if p.table.length else ""
@@ -97,28 +96,32 @@ _KINDS = {"b": "s8", "B": "u8", "h": "s16", "H": "u16", "i": "s32", "I": "u32", 
           "q": "s64", "Q": "u64", "e": "f16", "f": "f32", "d": "f64", "?": "bool", "c": "char"}
 
 
-def _size(fmt: str, code: str) -> int | None:
-    """Bytes of one struct code of a format; None for `*`, the rest of the message."""
-    return None if code == "*" else formats.struct_layout(_code_format(fmt, code)).size
-
-
-def _kind(fmt: str, code: str) -> str:
-    """`s16 BE`, `u8`, `text`, `bytes`: what a struct code holds, with its byte order when it has one."""
+def _kind(layout: m.StructLayout, code: str, size: int) -> str:
+    """`s16 BE`, `u8`, `text`, `bytes`: what a struct code of `size` bytes holds, with its byte
+    order when it has one."""
     if code == "*":
         return "bytes (the rest)"
-    size = formats.struct_layout(_code_format(fmt, code)).size
     kind = _KINDS.get(code[-1], "text")
     if size == 1 or kind == "text":
         return kind
-    return kind + {">": " BE", "!": " BE", "<": " LE"}.get(fmt[:1], " native")
+    return kind + {">": " BE", "!": " BE", "<": " LE"}.get(layout.order, " native")
+
+
+def _integer_kind(layout: m.StructLayout) -> str:
+    """What the one integer of a one-integer format holds: `u8`, `u16 LE`."""
+    return _kind(layout, layout.slots[0].code, layout.size)
+
+
+def _slot_size(slot: m.Slot) -> int | None:
+    """Bytes of one value of a slot; None for `*`, the rest of the message."""
+    return None if slot.code == "*" else slot.size
 
 
 def _payload_rows(encoding: m.Pack | m.Format, args: tuple[m.Expr, ...]) -> list[Row]:
     match encoding:
-        case m.Pack(format=fmt, grouped=grouped):
+        case m.Pack(layout=layout, grouped=grouped):
             values = [v for i, a in enumerate(args) for v in ((a,) if i in grouped else m.spread((a,)))]
-            slots = formats.struct_layout(fmt).slots
-            return _rows(fmt, lambda j, k: _value_text(values[j], k, _code_format(fmt, slots[j].code)),
+            return _rows(layout, lambda j, k: _value_text(values[j], k, _code_format(layout, layout.slots[j].code)),
                          [_constant_rest(v) for v in values])
         case m.Format(template=template):
             shown = ", ".join(expression_text(a) for a in args)
@@ -126,44 +129,46 @@ def _payload_rows(encoding: m.Pack | m.Format, args: tuple[m.Expr, ...]) -> list
     raise AssertionError(encoding)
 
 
-def _rows(fmt: str, text: Callable[[int, int | None], str], given: list[Row | None] | None = None) -> list[Row]:
+def _rows(layout: m.StructLayout, text: Callable[[int, int | None], str],
+          given: list[Row | None] | None = None) -> list[Row]:
     """One row a value of the format, in wire order: a repeated group's arrays element by
     element (`text(slot, element)`: `goal[0]`, `goal[1]`, ...), a group repeated as the
     message says once, as element `i`, after its count field; an integer split into bit fields
     once, its fields with their bits; `given`, a value's own row where it has one."""
-    layout = formats.struct_layout(fmt)
+    slots = layout.slots
     groups = {first: (codes, count) for first, codes, count in layout.groups}
     splits = {first: (code[-1], len(widths)) for first, code, widths in layout.bits}
     varying = layout.varying
     rows: list[Row] = []
     at = 0
-    while at <= len(layout.slots):
+    while at <= len(slots):
         if varying is not None and at == varying.count_slot:
-            code = varying.count_code
-            rows.append((_size(fmt, code), f"count {_kind(fmt, code)}", "k (the rounds of the group)"))
-        if at == len(layout.slots):
+            size = varying.count_size
+            rows.append((size, f"count {_kind(layout, varying.count_code, size)}", "k (the rounds of the group)"))
+        if at == len(slots):
             break
         if at in groups and not groups[at][1]:
             codes = groups[at][0]
-            rows += [(None, f"{_kind(fmt, layout.slots[j].code)} x k", text(j, None) + "[i]")
+            rows += [(None, f"{_kind(layout, slots[j].code, slots[j].size)} x k", text(j, None) + "[i]")
                      for j in range(at, at + codes)]
             at += codes
             continue
         if at in splits:
             code, fields = splits[at]
-            said = [f"{text(j, None)} ({formats.bit_span(*layout.slots[j].bits or (0, 0))})" for j in range(at, at + fields)]
-            rows.append((_size(fmt, code), f"bits {_kind(fmt, code)}", ", ".join(said)))
+            said = [f"{text(j, None)} ({m.bit_span(*slots[j].bits or (0, 0))})" for j in range(at, at + fields)]
+            rows.append((slots[at].size, f"bits {_kind(layout, code, slots[at].size)}", ", ".join(said)))
             at += fields
             continue
         if at in groups:
             codes, count = groups[at]
             for element in range(count):
-                rows += [(_size(fmt, layout.slots[j].code), _kind(fmt, layout.slots[j].code), text(j, element))
+                rows += [(slots[j].size, _kind(layout, slots[j].code, slots[j].size), text(j, element))
                          for j in range(at, at + codes)]
             at += codes
             continue
-        code = layout.slots[at].code
-        rows.append((given[at] if given else None) or (_size(fmt, code), _kind(fmt, code), text(at, None)))
+        slot = slots[at]
+        rows.append((given[at] if given else None)
+                    or (_slot_size(slot), _kind(layout, slot.code, slot.size), text(at, None)))
         at += 1
     return rows
 
@@ -207,15 +212,15 @@ def _constant_rest(arg: m.Expr) -> Row | None:
     return len(arg.value), "bytes (the rest)", _hex(arg.value)
 
 
-def _code_format(fmt: str, code: str) -> str:
-    prefix = fmt[:1] if fmt[:1] in "@=<>!" else "<"
-    return prefix + code
+def _code_format(layout: m.StructLayout, code: str) -> str:
+    """The struct format of one code of a layout, standard sizes when the layout gives no byte order."""
+    return (layout.order or "<") + code
 
 
 def _reply_rows(decoding: m.Unpack | m.Regex | None) -> list[Row]:
     match decoding:
-        case m.Unpack(format=fmt, until=until):
-            rows = _rows(fmt, lambda j, k: f"out[{j}]" if k is None else f"out[{j}][{k}]")
+        case m.Unpack(layout=layout, until=until):
+            rows = _rows(layout, lambda j, k: f"out[{j}]" if k is None else f"out[{j}][{k}]")
             if until is not None:
                 rows.append((len(until), "end (dropped)", _hex(until.encode("latin-1"))))
             return rows
@@ -248,18 +253,18 @@ def _side(name: str, parts: tuple[m.FramePart, ...] | None, payload: list[Row], 
                     optional = range(len(rows), len(rows) + count)
                 case m.FrameBytes(role=role, data=data):
                     rows.append((len(data), role, " ".join(f"{ord(c):02X}" for c in data)))
-                case m.FrameField(name=field, format=fmt, value=value):
-                    rows.append((formats.struct_layout(fmt).size, f"field {field}", f'"{fmt}" = {_shown(value, fmt)}'))
-                case m.FrameLength(format=fmt, adjust=adjust):
+                case m.FrameField(name=field, format=fmt, value=value, layout=layout):
+                    rows.append((layout.size, f"field {field}", f'"{fmt}" = {_shown(value, fmt)}'))
+                case m.FrameLength(format=fmt, adjust=adjust, layout=layout):
                     sign = f" {'+' if adjust >= 0 else '-'} {abs(adjust)}" if adjust else ""
-                    rows.append((formats.struct_layout(fmt).size, "length", f'"{fmt}" = payload{sign}'))
-                case m.FrameBits(format=fmt, fields=bits):
-                    rows.append((formats.struct_layout(fmt).size, "bits", f'"{fmt}": ' + _bit_fields(bits)))
+                    rows.append((layout.size, "length", f'"{fmt}" = payload{sign}'))
+                case m.FrameBits(format=fmt, fields=bits, layout=layout):
+                    rows.append((layout.size, "bits", f'"{fmt}": ' + _bit_fields(bits)))
                 case m.FramePayload():
                     rows += [(size, f"payload {what}", detail) for size, what, detail in payload] or [
                         (0, "payload", "(empty)")]
                 case m.FrameChecksum(algorithm=a, format=fmt, first=first, last=last, with_request=req):
-                    size = formats.struct_layout(fmt).size if fmt else (a.width + 3) // 4
+                    size = part.layout.size if part.layout is not None else (a.width + 3) // 4
                     covers = " .. ".join(dict.fromkeys([_name(parts[first]), _name(parts[last])]))
                     covers = ("the request .. " if req else "") + covers
                     extras = " inverted" if a.inverted else ""
@@ -286,7 +291,7 @@ def _bit_fields(bits: tuple[m.BitField, ...]) -> str:
     for bit in bits:
         value = expression_text(bit.value) if bit.value is not None else "payload" + (
             f" {'+' if bit.adjust >= 0 else '-'} {abs(bit.adjust)}" if bit.adjust else "")
-        said.append(f"{bit.name} = {value} ({formats.bit_span(low, bit.width)})")
+        said.append(f"{bit.name} = {value} ({m.bit_span(low, bit.width)})")
         low += bit.width
     return ", ".join(said)
 

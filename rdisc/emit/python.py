@@ -33,7 +33,7 @@ from rdisc.emit.python_expr import Chain, Compiler, Paren, Py, lines, literal, q
 from rdisc.emit.writer import Writer, printable
 from rdisc.engine import carry
 from rdisc.lower import lower
-from rdisc.runtime.codec import Construct
+from rdisc.lowering.constructs import Construct
 from rdisc.semantics import model as m
 from rdisc.semantics.model import Type
 from rdisc.source import SourceFile, Span, place

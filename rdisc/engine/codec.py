@@ -24,20 +24,6 @@ def _latin1(owner: str, value: object) -> bytes:
         raise RdisValueError(f"{owner}: {err.object[err.start:err.end]!r} is not a latin-1 character") from None
 
 
-def _string_sizes(fmt: str) -> dict[int, int]:
-    """The most bytes each `s` or `p` value of a struct format holds, by the value's position."""
-    sizes: dict[int, int] = {}
-    at = 0
-    for count, code in re.findall(r"(\d*)([a-zA-Z?])", fmt):
-        n = int(count) if count else 1
-        if code in "sp":
-            sizes[at] = n if code == "s" else max(0, min(n - 1, 255))
-            at += 1
-        elif code != "x":
-            at += n
-    return sizes
-
-
 Group = tuple[int, int, int]
 """A repeated group of a struct format: its first value, its number of codes, its count (0:
 as many as the message says)."""
@@ -115,7 +101,7 @@ def _regrouped(values: Sequence[Any], groups: tuple[Group, ...]) -> tuple[Any, .
 
 class Pack:
     """A request packed with a struct format: the values at `strings` as latin-1 bytes
-    (refused when longer than their `Ns` holds: struct would cut them short), the arrays
+    (refused when longer than `rooms` says their `Ns` holds: struct would cut them short), the arrays
     of repeated `groups` element by element, and, with `rest` (a format ending in `*`),
     the last value, bytes, appended as it is. With `varying`, `fixed` is the format before
     that group, repeated as many times as its arrays hold values, and its count field
@@ -125,11 +111,13 @@ class Pack:
     __slots__ = ("bits", "groups", "rest", "sizes", "splitters", "strings", "struct", "varying")
 
     def __init__(self, fixed: str, strings: tuple[int, ...] = (), rest: bool = False,
-                 groups: tuple[Group, ...] = (), varying: Varying | None = None, bits: tuple[Split, ...] = ()) -> None:
+                 groups: tuple[Group, ...] = (), varying: Varying | None = None, bits: tuple[Split, ...] = (),
+                 rooms: tuple[tuple[int, int], ...] = ()) -> None:
+        """`rooms`: each `Ns` or `Np` value's index among the values, and the most bytes it holds."""
         self.struct = struct.Struct(fixed)
         self.strings = strings
         self.rest = rest
-        self.sizes = _string_sizes(fixed)
+        self.sizes = dict(rooms)
         self.groups = groups
         self.varying = varying
         self.bits = bits
@@ -207,11 +195,14 @@ class Unpack:
     split into `bits` is then given as its fields. With `until`, an unframed tagged reply's
     entry is read to those bytes (Firmata's sysex end), which are dropped."""
 
-    __slots__ = ("bits", "groups", "rest", "size", "splitters", "strings", "struct", "until", "varying")
+    __slots__ = ("bits", "groups", "rest", "size", "splitters", "strings", "struct", "until", "varying",
+                 "varying_sizes")
 
     def __init__(self, fixed: str, strings: tuple[int, ...] = (), rest: bool = False,
                  groups: tuple[Group, ...] = (), varying: Varying | None = None, bits: tuple[Split, ...] = (),
-                 until: bytes | None = None) -> None:
+                 until: bytes | None = None, varying_sizes: tuple[int, int] = (0, 0)) -> None:
+        """`varying_sizes`: the bytes of one round of the `varying` group and of the format after it."""
+        self.varying_sizes = varying_sizes
         self.struct = struct.Struct(fixed)
         self.strings = strings
         self.rest = rest
@@ -252,8 +243,7 @@ class Unpack:
         """The rounds the count field says, or as many as the bytes after the head and before
         the tail hold whole; the count field's own value dropped."""
         unit, tail, count_at = varying
-        order = self.struct.format[:1]
-        unit_size, tail_size = struct.calcsize(order + unit), struct.calcsize(order + tail)
+        unit_size, tail_size = self.varying_sizes
         head = self.struct.size
         if len(data) < head + tail_size:
             raise RdisProtocolError(f"{owner}: expected {head + tail_size} bytes or more, got {len(data)}")

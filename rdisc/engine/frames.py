@@ -51,13 +51,11 @@ def _quick_wrap(side: Side) -> Wrap | None:
             continue
         if not isinstance(part, (Field, Length)):
             return None
-        fmt = part.struct.format
-        prefix, code = (fmt[0], fmt[1:]) if fmt[:1] in "<>!=@" else ("", fmt)
         if part.struct.size > 1:
-            if prefix not in ("<", ">", "!") or order not in ("", prefix.replace("!", ">")):
+            if part.order not in ("<", ">", "!") or order not in ("", part.order.replace("!", ">")):
                 return None
-            order = prefix.replace("!", ">")
-        codes.append(code)
+            order = part.order.replace("!", ">")
+        codes.append(part.code)
         picks.append((len(template), part.index, 0) if isinstance(part, Field) else (len(template), -1, part.adjust))
         template.append(0)
     head = struct.Struct((order or "<") + "".join(codes))

@@ -152,13 +152,15 @@ class Bytes:
 
 
 class Field:
-    """The frame's `index`-th field value, packed with a one-integer struct format."""
+    """The frame's `index`-th field value, packed as one integer: its struct `code` in byte `order`."""
 
-    __slots__ = ("index", "name", "struct")
+    __slots__ = ("code", "index", "name", "order", "struct")
 
-    def __init__(self, name: str, fmt: str, index: int) -> None:
+    def __init__(self, name: str, order: str, code: str, index: int) -> None:
         self.name = name
-        self.struct = struct.Struct(fmt)
+        self.order = order
+        self.code = code
+        self.struct = struct.Struct(order + code)
         self.index = index
 
     def put(self, payload: bytes, fields: Sequence[int], chunks: list[bytes]) -> bytes:
@@ -166,15 +168,17 @@ class Field:
 
 
 class Length:
-    """The payload's size plus `adjust`; `most`, the largest size its format states."""
+    """The payload's size plus `adjust`, packed as one integer: its struct `code` in byte
+    `order`, `high` the largest value the code holds; `most`, the largest size it states."""
 
-    __slots__ = ("adjust", "most", "struct")
+    __slots__ = ("adjust", "code", "most", "order", "struct")
 
-    def __init__(self, fmt: str, adjust: int) -> None:
-        self.struct = struct.Struct(fmt)
+    def __init__(self, order: str, code: str, adjust: int, high: int) -> None:
+        self.order = order
+        self.code = code
+        self.struct = struct.Struct(order + code)
         self.adjust = adjust
-        bits = 8 * self.struct.size
-        self.most = ((1 << (bits - 1)) - 1 if fmt[-1].islower() else (1 << bits) - 1) - adjust
+        self.most = high - adjust
 
     def put(self, payload: bytes, fields: Sequence[int], chunks: list[bytes]) -> bytes:
         return self.struct.pack(len(payload) + self.adjust)

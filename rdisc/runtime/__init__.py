@@ -3,7 +3,7 @@
 The run-time semantics are implemented once, in the engine (`rdisc.engine`), which the
 runtime imports and every driver `rdisc emit-python` generates carries. What differs is
 only how a description becomes the engine's plans: here the expressions are interpreted
-(`rdisc.runtime.evaluate`), in a driver they are compiled to Python. The contract both
+(`rdisc.semantics.evaluate`), in a driver they are compiled to Python. The contract both
 keep (primitives, replies, frames, schedules, callbacks, errors, the command line) is
 docs/runtime.md.
 """

@@ -1,7 +1,7 @@
 """A description planned for the engine: `load` → `Description` → `connect` → `Robot`.
 
 The Model's plans (`rdisc.lower`) are made the engine's (`rdisc.engine`): each
-`Code` a closure over the expressions prepared by `rdisc.runtime.evaluate.prepare`, so a
+`Code` a closure over the expressions prepared by `rdisc.semantics.evaluate.prepare`, so a
 call walks prepared objects and parses nothing. Everything that happens at run time is
 the engine's, the same code a generated driver carries; what the plans are is the
 lowering's, the same plans a generated driver is written from.
@@ -18,10 +18,10 @@ from typing import Any, TypeVar, assert_never
 from rdisc import engine
 from rdisc import lower as plans
 from rdisc.engine.plans import plainly_given
-from rdisc.runtime.codec import built
+from rdisc.lowering.constructs import built
 from rdisc.runtime.errors import RdisLoadError
-from rdisc.runtime.evaluate import Prepared, coerce, prepare
 from rdisc.semantics import model as m
+from rdisc.semantics.evaluate import Prepared, coerce, prepare
 
 __all__ = ["Description", "load", "wire_frame"]
 

@@ -520,7 +520,7 @@ class BodyRules:
                      or isinstance(i, ast.BodyValue) and i.key == text), decl.span)
         if low is None or high is None:
             return
-        from rdisc.runtime.evaluate import prepare  # the runtime's own interpreter: the check is what runs
+        from rdisc.semantics.evaluate import prepare  # the runtime's own interpreter: the check is what runs
 
         self.work += 2 * size(binding.to_device) + size(binding.to_joint)
         if self.work > MAX_CONVERSION_NODES:

@@ -164,10 +164,9 @@ def message_bytes(prim: m.Primitive, frames: dict[str, m.Frame] | None = None, e
     every byte between the flags escaped, so two."""
     frame = (frames or {}).get(prim.frame.frame) if prim.frame is not None else None
     match prim.encoding:
-        case m.Pack(format=fmt, grouped=grouped):
+        case m.Pack(layout=layout, grouped=grouped):
             rest = prim.args[-1] if prim.args else None  # constant bytes for a `*` rest have their size
             extra = len(rest.value) if isinstance(rest, m.Const) and isinstance(rest.value, bytes) else 0
-            layout = formats.struct_layout(fmt)
             rounds = formats.most_rounds(layout, [prim.args[i].type for i in formats.varying_args(layout, grouped)])
             request = layout.most(rounds) + extra
         case m.Format(template=template):
@@ -205,8 +204,7 @@ def _reply_bytes(prim: m.Primitive, frames: dict[str, m.Frame] | None, request: 
     if frame is not None and prim.expects_reply(frames or {}):
         answer = min((frame_bytes(parts, shortest=True) for parts in frame.replies), default=0)
     match prim.decoding:
-        case m.Unpack(format=fmt, until=until):
-            layout = formats.struct_layout(fmt)
+        case m.Unpack(layout=layout, until=until):
             reply = layout.most(formats.most_rounds(layout, [])) + len(until or "")  # and its end marker
             if prim.records is not None:  # one record and its marker: a report's records are counted as one
                 reply += len(prim.records)
@@ -217,7 +215,7 @@ def _reply_bytes(prim: m.Primitive, frames: dict[str, m.Frame] | None, request: 
             reply = formats.regex_min_length(pattern) + 1  # and its line terminator
         case None if prim.table is not None:  # each entry's reply after its tag (and its length)
             t = prim.table
-            head = sum(formats.struct_layout(f).size for f in (t.tag, t.length) if f is not None)
+            head = sum(layout.size for layout in (t.tag_layout, t.length_layout) if layout is not None)
             sizes = [message_bytes(prim.case(c), frames, False) - request - framing - answer + head for c in t.cases]
             reply = sum(sizes) if t.each else max(sizes, default=0)  # sub-payloads: each entry's once
         case None:
@@ -247,8 +245,8 @@ def frame_bytes(parts: tuple[m.FramePart, ...], shortest: bool = False) -> int:
                 skip = count
             case m.FrameBytes(data=data):
                 size += len(data)
-            case m.FrameField(format=fmt) | m.FrameLength(format=fmt) | m.FrameBits(format=fmt):
-                size += formats.struct_layout(fmt).size
-            case m.FrameChecksum(algorithm=a, format=fmt):
-                size += formats.struct_layout(fmt).size if fmt is not None else (a.width + 3) // 4
+            case m.FrameField(layout=layout) | m.FrameLength(layout=layout) | m.FrameBits(layout=layout):
+                size += layout.size
+            case m.FrameChecksum(algorithm=a, layout=layout):
+                size += layout.size if layout is not None else (a.width + 3) // 4
     return size

@@ -922,21 +922,27 @@ class _Checker:
         without a frame, each entry's size fixed (the tag says how much follows it)."""
         key = clause.key.text
         tag_slot = None
+        tag_layout: m.StructLayout | None = None
+        length_layout: m.StructLayout | None = None  # `each`'s length field, if given
         param: m.Parameter | None
         if clause.tag is not None:
             try:
-                layout = formats.struct_layout(clause.tag.value)
+                tag_layout = formats.struct_layout(clause.tag.value)
             except formats.TemplateError as err:
                 self.d.report("E301", clause.tag.span, err.message)
                 return None
-            if len(layout.slots) != 1 or layout.slots[0].type is not Type.INT:
+            if len(tag_layout.slots) != 1 or tag_layout.slots[0].type is not Type.INT:
                 self.d.report("E505", clause.tag.span, "a reply tag is one integer: a struct format such as "
                               f"\"B\" or \">H\", not \"{abbreviate(clause.tag.value)}\"")
                 return None
-            tag_slot = layout.slots[0]
+            tag_slot = tag_layout.slots[0]
             param = m.Parameter(key, Type.INT, tag_slot.low, tag_slot.high)
             if not self.sub_payloads(clause, name, unframed):
                 return None
+            if clause.each and clause.length is not None:
+                length_layout = self.length_field(clause.length)
+                if length_layout is None:
+                    return None
         else:
             param = next((p for p in params if p.name == key), None)
         if param is None:
@@ -970,7 +976,7 @@ class _Checker:
             if entry.until is not None:
                 decoding = self.until(entry, decoding, name, clause.tag is not None and unframed)
             elif clause.each:
-                self.sub_payload_entry(clause, entry, decoding, low, high)
+                self.sub_payload_entry(clause, entry, decoding, low, high, length_layout)
             elif clause.tag is not None and unframed:
                 self.sized_entry(entry, decoding, name, low, high)
             actions: tuple[m.PostAction, ...] = ()
@@ -981,7 +987,8 @@ class _Checker:
                 cases.append(m.ReplyCase(low, decoding, actions, None if entry.last is None else high))
         if clause.tag is not None:  # an unknown tag is a protocol error when it comes: no coverage to check
             return m.ReplyTable("", tuple(cases), clause.tag.value, clause.each,
-                                None if clause.length is None else clause.length.value)
+                                None if clause.length is None else clause.length.value, tag_layout=tag_layout,
+                                length_layout=length_layout)
         if param.low is None:
             self.d.report("E505", clause.key.span, f"`{key}` has no range, so the reply table of `{name.text}` "
                           "cannot have an entry for each of its values",
@@ -1008,21 +1015,23 @@ class _Checker:
                           "payload ends, so it is read through a frame", help="give the primitive a frame whose reply "
                           "has a `length` field or constant bytes after its payload")
             return False
-        if clause.length is None:
-            return True
-        try:
-            layout = formats.struct_layout(clause.length.value)
-        except formats.TemplateError as err:
-            self.d.report("E301", clause.length.span, err.message)
-            return False
-        if len(layout.slots) != 1 or layout.slots[0].type is not Type.INT or (layout.slots[0].low or 0) < 0:
-            self.d.report("E505", clause.length.span, "a sub-payload's length is one unsigned integer: a struct "
-                          f"format such as \"B\" or \"<H\", not \"{abbreviate(clause.length.value)}\"")
-            return False
         return True
 
+    def length_field(self, length: ast.StrLit) -> m.StructLayout | None:
+        """The layout of a sub-payload's length field (`length "B"`): one unsigned integer."""
+        try:
+            layout = formats.struct_layout(length.value)
+        except formats.TemplateError as err:
+            self.d.report("E301", length.span, err.message)
+            return None
+        if len(layout.slots) != 1 or layout.slots[0].type is not Type.INT or (layout.slots[0].low or 0) < 0:
+            self.d.report("E505", length.span, "a sub-payload's length is one unsigned integer: a struct "
+                          f"format such as \"B\" or \"<H\", not \"{abbreviate(length.value)}\"")
+            return None
+        return layout
+
     def sub_payload_entry(self, clause: ast.ReplyTable, entry: ast.ReplyEntry, decoding: m.Unpack | m.Regex | None,
-                          low: int, high: int) -> None:
+                          low: int, high: int, length: m.StructLayout | None) -> None:
         """An entry of sub-payloads decodes its bytes with an `unpack`: of a fixed size without a
         length field (the size says where the next tag starts), one the length field can state."""
         which = f"tag {low}" if low == high else f"tags {low}..{high}"
@@ -1036,9 +1045,9 @@ class _Checker:
             self.d.report("E505", entry.decoding.span, f"the sub-payloads have no length field, so the entry for "
                           f"{which} needs a fixed size, but it {open_end}",
                           help='give each sub-payload its length: `reply each tag "B" length "B" { ... }`')
-        elif clause.length is not None and not open_end:
-            size = formats.struct_layout(decoding.format).size
-            most = formats.struct_layout(clause.length.value).slots[0].high or 0
+        elif clause.length is not None and length is not None and not open_end:
+            size = decoding.layout.size
+            most = length.slots[0].high or 0
             if size > most:
                 self.d.report("E505", entry.decoding.span, f"the entry for {which} decodes {size} bytes, more than "
                               f"a sub-payload's length field \"{clause.length.value}\" states ({most})")
@@ -1075,13 +1084,13 @@ class _Checker:
             if decoding is not None:
                 self.d.report("E505", entry.decoding.span, "an entry read `until` its end is decoded by an `unpack`")
             return None
-        layout = formats.struct_layout(decoding.format)
+        layout = decoding.layout
         if not layout.rest or layout.varying is not None:
             self.d.report("E505", entry.decoding.span, "an entry read `until` its end takes what comes before the "
                           "end as bytes: its `unpack` ends in `*`",
                           help='e.g. `0xF0: unpack "B*" until "\\xF7"`, the bytes of a Firmata sysex message')
             return None
-        return m.Unpack(decoding.format, until.value)
+        return m.Unpack(decoding.format, layout, until.value)
 
     def entry_values(self, entry: ast.ReplyEntry, tag_slot: formats.Slot | None) -> tuple[int, int] | None:
         """The first and last value a reply table's entry is for (`VALUE`, or `LOW..HIGH`),
@@ -1109,7 +1118,7 @@ class _Checker:
         `*` rest of constant bytes or of a `bytes` parameter with a range (None otherwise)."""
         if not isinstance(encoding, m.Pack):
             return None
-        layout = formats.struct_layout(encoding.format)
+        layout = encoding.layout
         if layout.varying is not None:
             rounds = formats.most_rounds(layout, [args[i].type for i in formats.varying_args(layout, encoding.grouped)])
             return layout.size, layout.most(rounds), f"a repeated group of up to {rounds} rounds"
@@ -1141,7 +1150,7 @@ class _Checker:
                           f"frame `{frame.name}` has no `payload`")
         reply_sizes = []
         for decoding in replies:
-            layout = formats.struct_layout(decoding.format) if isinstance(decoding, m.Unpack) else None
+            layout = decoding.layout if isinstance(decoding, m.Unpack) else None
             reply_sizes.append(layout.size if layout is not None and not layout.open_end else None)
         if any(not payload_end_known(frame, size is not None) for size in reply_sizes):
             self.d.report("E503", clause.span, f"the reply of frame `{frame.name}` gives no way to find where the "
@@ -1200,10 +1209,9 @@ class _Checker:
                                   f"`{part.name}`{where}", label=f"field `{part.name}` is {part.width} bits, "
                                   f"0 to {(1 << part.width) - 1}")
                 continue
-            try:
-                slot = formats.struct_layout(part.format).slots[0]
-            except (formats.TemplateError, IndexError):  # the frame's own check reported it
+            if not part.layout.slots:  # refused: the frame's own check reported it
                 continue
+            slot = part.layout.slots[0]
             self.fits(computed, slot, span, where,
                       f"field `{part.name}` is packed as `{slot.code}`, {slot.low} to {slot.high}")
 
@@ -1268,8 +1276,8 @@ class _Checker:
                 self.pack_value(self.typer.folded(arg), expr, slot)
         if layout is not None and layout.varying is not None:
             self.rounds_fit(layout, [(args[i], enc.args[i]) for i in formats.varying_args(layout, tuple(grouped))])
-        if enc.kind == "pack":
-            return m.Pack(template, tuple(grouped)), args
+        if layout is not None:
+            return m.Pack(template, layout, tuple(grouped)), args
         return m.Format(template), args
 
     def rounds_fit(self, layout: formats.StructLayout, arrays: list[tuple[m.Expr, ast.Expr]]) -> None:
@@ -1344,7 +1352,7 @@ class _Checker:
                 layout = formats.struct_layout(template)
                 if layout.native:
                     self.native_warning(dec.template)
-                return m.Unpack(template), tuple(m.Array(s.type, max(s.repeat, 0)) if s.repeat else s.type
+                return m.Unpack(template, layout), tuple(m.Array(s.type, max(s.repeat, 0)) if s.repeat else s.type
                                                  for s in layout.slots)
             groups = formats.regex_groups(template)
             return m.Regex(template), (Type.STRING,) * groups
@@ -1587,7 +1595,7 @@ class _Checker:
         """A constant argument whose parameter goes straight into a pack code must fit it."""
         if not isinstance(prim.encoding, m.Pack) or len(args) != len(prim.params):
             return
-        slots = formats.struct_layout(prim.encoding.format).slots
+        slots = prim.encoding.layout.slots
         for slot, packed in zip(slots, prim.format_values()):
             if not isinstance(packed, m.Var) or packed.scope is not Scope.PARAM or slot.low is None:
                 continue
@@ -1761,7 +1769,7 @@ def _values_span(entry: ast.ReplyEntry) -> Span:
 
 def _open_end(decoding: m.Unpack) -> str:
     """What makes a reply's size unknown until it is read ("" when nothing does)."""
-    layout = formats.struct_layout(decoding.format)
+    layout = decoding.layout
     if layout.rest:
         return "ends in `*` (the rest of the message)"
     if layout.varying is not None:

@@ -2,7 +2,9 @@
 (`pack`/`unpack`), PEP 3101 formats (`format`) and regular expressions (`regex`).
 
 Each analysis returns a value or raises `TemplateError` with a message and an
-offset into the template, so the checker can point at the offending character.
+offset into the template, so the checker can point at the offending character. A struct
+format is parsed here alone, once, into the `StructLayout` the Model stores beside it:
+lowering, emitters and the engine read that layout, never the format's text.
 """
 
 from __future__ import annotations
@@ -16,7 +18,11 @@ from dataclasses import dataclass
 
 from rdisc.limits import MAX_ARRAY
 from rdisc.semantics import regex_shape
-from rdisc.semantics.model import AnyType, Array, Type
+from rdisc.semantics.model import AnyType, Array, Slot, StructLayout, Type, Varying, bit_span
+
+__all__ = ["MAX_MESSAGE", "MAX_REPEAT", "FormatField", "Slot", "StructLayout", "TemplateError", "Varying", "bit_span",
+           "format_fields", "format_width", "most_rounds", "regex_groups", "regex_min_length", "spec_accepts",
+           "split_rest", "struct_layout", "varying_args"]
 
 MAX_REPEAT = 4096
 MAX_MESSAGE = 65536  # bytes of one request or reply
@@ -28,79 +34,6 @@ class TemplateError(ValueError):
         self.message = message
         self.offset = offset
         self.length = length
-
-
-@dataclass(frozen=True, slots=True)
-class Slot:
-    """One value a template takes or yields."""
-
-    code: str  # the struct code or the PEP 3101 spec ("" for `{}`)
-    type: Type
-    low: int | None = None  # integer range, when the code has one
-    high: int | None = None
-    repeat: int = 0  # in a repeated group `6(BH)`: the group's count (the value is an array of it); -1 in a
-    # group repeated as the message says (`#(BH)`, `*(BH)`), whose value is an array of any size
-    bits: tuple[int, int] | None = None  # a bit field of an integer code (`B{1,1,6}`): its lowest bit, its width
-
-    @property
-    def shown(self) -> str:
-        """The code as a message names it: `B`, or `B{1,1,6}` bits 2..7 for a bit field."""
-        if self.bits is None:
-            return f"`{self.code}`"
-        return f"`{self.code}` {bit_span(*self.bits)}"
-
-
-def bit_span(low: int, width: int) -> str:
-    """The bits a field takes in its integer: `bit 0`, `bits 2..7`."""
-    return f"bit {low}" if width == 1 else f"bits {low}..{low + width - 1}"
-
-
-@dataclass(frozen=True, slots=True)
-class Varying:
-    """A group repeated as many times as the message says, after `head` (a struct format
-    with its byte order) and before `tail`: `#(BH)` as many times as the count field `#B`
-    in the head says (its index among the head's values: `count_at`), `*(BH)` until the
-    message ends (`count_at` -1). The count field takes and gives no value: a request
-    computes it from the arrays' length, a reply's arrays have its length."""
-
-    head: str
-    unit: str  # the group's codes, once
-    tail: str
-    count_at: int
-    count_high: int = 0  # the largest count the count field holds, at most MAX_ARRAY (0: no count field)
-    count_code: str = ""
-    count_slot: int = -1  # the slot the count field comes before (its place among the values)
-
-    @property
-    def unit_size(self) -> int:
-        return struct.calcsize(self.head[:1] + self.unit)
-
-
-@dataclass(frozen=True, slots=True)
-class StructLayout:
-    slots: tuple[Slot, ...]
-    size: int  # bytes on the wire (before the rest, when it ends in `*`)
-    native: bool  # no byte-order prefix: host order and alignment
-    rest: bool = False  # ends in `*`: the rest of the message, as bytes
-    fixed: str = ""  # the format without its `*` and with its groups written out, for the struct module
-    groups: tuple[tuple[int, int, int], ...] = ()  # each repeated group: (its first slot, its codes, its count)
-    varying: Varying | None = None  # a group repeated as the message says (its count 0 in `groups`)
-    bits: tuple[tuple[int, str, tuple[int, ...]], ...] = ()  # each integer split into bit fields: its first
-    # field's slot, its code with the byte order, its fields' widths from its lowest bit up
-
-    def joined(self, slot: int) -> int:
-        """The index among the struct module's values of a slot's value (not a bit field's): what
-        the engine counts groups and strings in."""
-        return slot - sum(len(widths) - 1 for first, _, widths in self.bits if first < slot)
-
-    @property
-    def open_end(self) -> bool:
-        """Whether the message's size is not the format's: something must say where it ends."""
-        return self.rest or self.varying is not None
-
-    def most(self, count: int) -> int:
-        """The size of the message with `count` rounds of its varying group (its size without one)."""
-        return self.size + (self.varying.unit_size * count if self.varying is not None else 0)
 
 
 def split_rest(fmt: str) -> tuple[str, bool]:
@@ -255,9 +188,26 @@ def struct_layout(fmt: str) -> StructLayout:
     if varying is not None:
         at, codes, _ = varying
         high = min(MAX_ARRAY, (1 << 8 * _STANDARD_SIZES[count[1]]) - 1) if count is not None else 0
-        shape = Varying(order + "".join(written[:at]), codes, "".join(written[at:]),
-                        *((count[0], high, count[1], count[3]) if count is not None else (-1,)))
-    return StructLayout(tuple(slots), size, native, rest, fixed, tuple(groups), shape, tuple(splits))
+        tail = "".join(written[at:])
+        count_at, count_code, count_slot = (count[0], count[1], count[3]) if count is not None else (-1, "", -1)
+        shape = Varying(order + "".join(written[:at]), codes, tail, count_at, high, count_code, count_slot,
+                        unit_size=struct.calcsize(order + codes), tail_size=struct.calcsize(order + tail),
+                        count_size=struct.calcsize(order + count_code) if count_code else 0)
+    sized = tuple(dataclasses.replace(slot, size=_code_size(order, slot.code)) for slot in slots)
+    layout = StructLayout(sized, size, native, rest, fixed, tuple(groups), shape, tuple(splits), order)
+    rooms = tuple((layout.joined(i), _room(slot.code)) for i, slot in enumerate(sized) if slot.code[-1:] in ("s", "p"))
+    return dataclasses.replace(layout, rooms=rooms)
+
+
+def _code_size(order: str, code: str) -> int:
+    """Bytes of one value of a slot's code (a bit field's: its integer's), in the format's byte order."""
+    return 0 if code == "*" else struct.calcsize(order + code.split("{")[0])
+
+
+def _room(code: str) -> int:
+    """The most bytes of text an `Ns` or `Np` value holds (struct cuts the rest short)."""
+    count = int(code[:-1] or 1)
+    return count if code.endswith("s") else max(0, min(count - 1, 255))
 
 
 def _bit_widths(split: re.Match[str], order: str, count: str, code: str, at: int) -> tuple[int, ...]:

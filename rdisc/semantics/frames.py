@@ -311,8 +311,8 @@ class FrameRules:
                     out.append(self.field(part, env, d, fields))
                     names[part.name.text] = i
                 case ast.FrameLength():
-                    self.integer_format(part.format, "a length field", d, "E503")
-                    out.append(m.FrameLength(part.format.value, part.adjust))
+                    layout = self.integer_format(part.format, "a length field", d, "E503")
+                    out.append(m.FrameLength(part.format.value, part.adjust, layout))
                 case ast.FramePayload():
                     out.append(m.FramePayload())
                 case ast.FrameChecksum():
@@ -376,7 +376,8 @@ class FrameRules:
     def field(self, part: ast.FrameField, env: Env, d: Diagnostics, fields: dict[str, int]) -> m.FrameField:
         if part.name.text in _PART_WORDS:
             d.report("E104", part.name.span, f"`{part.name.text}` names a part of every frame and cannot name a field")
-        slot = self.integer_format(part.format, f"field `{part.name.text}`", d, "E501")
+        layout = self.integer_format(part.format, f"field `{part.name.text}`", d, "E501")
+        slot = layout.slots[0] if layout.slots else None
         value = self.typer.expr(part.value, env)
         if value.type is not None and value.type is not Type.INT:
             d.report("E401", part.value.span, f"field `{part.name.text}` takes an int")
@@ -385,18 +386,18 @@ class FrameRules:
                 and not slot.low <= constant <= slot.high):  # type: ignore[operator]
             d.report("E403", part.value.span, f"{constant} does not fit `{part.format.value}`")
         fields.setdefault(part.name.text, len(fields))
-        return m.FrameField(part.name.text, part.format.value, value)
+        return m.FrameField(part.name.text, part.format.value, value, layout)
 
     def bits(self, part: ast.FrameBits, env: Env, d: Diagnostics, fields: dict[str, int]) -> m.FrameBits:
         """An integer split into fields from its lowest bit up: unsigned, every bit of it said once."""
         fmt = part.format.value
-        slot = self.integer_format(part.format, "a `bits` integer", d, "E508")
+        layout = self.integer_format(part.format, "a `bits` integer", d, "E508")
         size = 0
-        if slot is not None and slot.low != 0:
+        if layout.slots and layout.slots[0].low != 0:
             d.report("E508", part.format.span, f"a `bits` integer is unsigned: \"{abbreviate(fmt)}\" is signed",
                      help=f"use \"{fmt[:-1]}{fmt[-1].upper()}\"")
-        elif slot is not None:
-            size = 8 * formats.struct_layout(fmt).size
+        elif layout.slots:
+            size = 8 * layout.size
         out: list[m.BitField] = []
         for bit in part.fields:
             name = bit.name.text if bit.name is not None else "length"
@@ -424,20 +425,21 @@ class FrameRules:
             d.report("E508", part.span, f"the fields of `bits \"{abbreviate(fmt)}\"` take {taken} of its {size} bits",
                      help=f"say the other {missing} bit{'s' if missing != 1 else ''}: `field reserved: {missing} = 0`"
                      if missing > 0 else "narrow the fields, or take a wider integer")
-        return m.FrameBits(fmt, tuple(out))
+        return m.FrameBits(fmt, tuple(out), layout)
 
-    def integer_format(self, lit: ast.StrLit, what: str, d: Diagnostics, code: str) -> formats.Slot | None:
-        """The one integer slot of a part's struct format; anything else is reported."""
+    def integer_format(self, lit: ast.StrLit, what: str, d: Diagnostics, code: str) -> m.StructLayout:
+        """The layout of a part's struct format, one integer; anything else is reported, and
+        gives `REFUSED` (no slots)."""
         try:
             layout = formats.struct_layout(lit.value)
         except formats.TemplateError as err:
             d.report("E301", lit.span, err.message)
-            return None
+            return m.REFUSED
         if len(layout.slots) != 1 or layout.slots[0].type is not Type.INT:
             d.report(code, lit.span, f"{what} is one integer: a struct format such as \"B\", \">H\" or \"<I\", "
                      f"not \"{abbreviate(lit.value)}\"")
-            return None
-        return layout.slots[0]
+            return m.REFUSED
+        return layout
 
     def checksum(self, part: ast.FrameChecksum, i: int, parts: tuple[ast.FramePart, ...], names: dict[str, int],
                  side: str, d: Diagnostics) -> m.FrameChecksum:
@@ -460,10 +462,11 @@ class FrameRules:
             elif value is not None:
                 values[word] = int(value)
         size_bits = None
+        layout: m.StructLayout | None = None
         if part.format is not None:
-            slot = self.integer_format(part.format, "a checksum", d, "E502")
-            if slot is not None:
-                size_bits = formats.struct_layout(part.format.value).size * 8
+            layout = self.integer_format(part.format, "a checksum", d, "E502")
+            if layout.slots:
+                size_bits = layout.size * 8
         crc_only = [w for w in ("poly", "init", "xorout", "reflect") if w in options]
         if key in CATALOGUE:
             width, poly, init, reflect, xorout = CATALOGUE[key]
@@ -500,7 +503,8 @@ class FrameRules:
             d.report("E502", part.format.span,
                      f"a {algorithm.width}-bit checksum does not fit \"{part.format.value}\" ({size_bits} bits)")
         first, last, with_request = self.span_of(part, options.get("over"), i, parts, names, side, d)
-        return m.FrameChecksum(algorithm, part.format.value if part.format else None, first, last, with_request)
+        return m.FrameChecksum(algorithm, part.format.value if part.format else None, first, last, with_request,
+                               layout)
 
     def span_of(self, part: ast.FrameChecksum, over: ast.ChecksumOption | None, i: int,
                 parts: tuple[ast.FramePart, ...], names: dict[str, int], side: str,
@@ -619,9 +623,8 @@ def length_range(part: m.FrameLength | m.FrameBits) -> tuple[int, int]:
         length = part.length
         assert length is not None
         return max(0, -length.adjust), (1 << length.width) - 1 - length.adjust
-    try:
-        slot = formats.struct_layout(part.format).slots[0]
-    except (formats.TemplateError, IndexError):  # reported where the frame is checked
+    if not part.layout.slots:  # refused: reported where the frame is checked
         return 0, -1
+    slot = part.layout.slots[0]
     return max(0, (slot.low or 0) - part.adjust), (slot.high or 0) - part.adjust
 

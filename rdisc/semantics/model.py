@@ -323,11 +323,98 @@ class Connection:
         return self.terminator.encode("latin-1")
 
 
+# ---- struct layouts: a struct format parsed once, by the checker (rdisc.semantics.formats) -------------
+
+
+@dataclass(frozen=True, slots=True)
+class Slot:
+    """One value a struct format takes or yields."""
+
+    code: str  # the struct code as written: `B`, `3s`, `B{1,1,6}` for a bit field, `*` for the rest
+    type: Type
+    low: int | None = None  # integer range, when the code has one
+    high: int | None = None
+    repeat: int = 0  # in a repeated group `6(BH)`: the group's count (the value is an array of it); -1 in a
+    # group repeated as the message says (`#(BH)`, `*(BH)`), whose value is an array of any size
+    bits: tuple[int, int] | None = None  # a bit field of an integer code (`B{1,1,6}`): its lowest bit, its width
+    size: int = field(default=0, compare=False)  # bytes of one value of its code (a bit field: of its integer)
+
+    @property
+    def shown(self) -> str:
+        """The code as a message names it: `B`, or `B{1,1,6}` bits 2..7 for a bit field."""
+        if self.bits is None:
+            return f"`{self.code}`"
+        return f"`{self.code}` {bit_span(*self.bits)}"
+
+
+def bit_span(low: int, width: int) -> str:
+    """The bits a field takes in its integer: `bit 0`, `bits 2..7`."""
+    return f"bit {low}" if width == 1 else f"bits {low}..{low + width - 1}"
+
+
+@dataclass(frozen=True, slots=True)
+class Varying:
+    """A group repeated as many times as the message says, after `head` (a struct format
+    with its byte order) and before `tail`: `#(BH)` as many times as the count field `#B`
+    in the head says (its index among the head's values: `count_at`), `*(BH)` until the
+    message ends (`count_at` -1). The count field takes and gives no value: a request
+    computes it from the arrays' length, a reply's arrays have its length."""
+
+    head: str
+    unit: str  # the group's codes, once
+    tail: str
+    count_at: int
+    count_high: int = 0  # the largest count the count field holds, at most MAX_ARRAY (0: no count field)
+    count_code: str = ""
+    count_slot: int = -1  # the slot the count field comes before (its place among the values)
+    unit_size: int = field(default=0, compare=False)  # bytes of one round
+    tail_size: int = field(default=0, compare=False)  # bytes of the tail
+    count_size: int = field(default=0, compare=False)  # bytes of the count field (0: none)
+
+
+@dataclass(frozen=True, slots=True)
+class StructLayout:
+    """A struct format as every stage after the checker reads it: its values, the struct
+    module's format and the sizes, worked out once."""
+
+    slots: tuple[Slot, ...]
+    size: int  # bytes on the wire (before the rest, when it ends in `*`; without a round of its varying group)
+    native: bool  # no byte-order prefix: host order and alignment
+    rest: bool = False  # ends in `*`: the rest of the message, as bytes
+    fixed: str = ""  # the format without its `*` and with its groups written out, for the struct module
+    groups: tuple[tuple[int, int, int], ...] = ()  # each repeated group: (its first slot, its codes, its count)
+    varying: Varying | None = None  # a group repeated as the message says (its count 0 in `groups`)
+    bits: tuple[tuple[int, str, tuple[int, ...]], ...] = ()  # each integer split into bit fields: its first
+    # field's slot, its code with the byte order, its fields' widths from its lowest bit up
+    order: str = ""  # the byte-order prefix as written (`<`, `>`, `!`, `=`, `@`), "" when none
+    rooms: tuple[tuple[int, int], ...] = ()  # each `Ns` or `Np` value: its index among the struct module's
+    # values, the most bytes of text it holds
+
+    def joined(self, slot: int) -> int:
+        """The index among the struct module's values of a slot's value (not a bit field's): what
+        the engine counts groups and strings in."""
+        return slot - sum(len(widths) - 1 for first, _, widths in self.bits if first < slot)
+
+    @property
+    def open_end(self) -> bool:
+        """Whether the message's size is not the format's: something must say where it ends."""
+        return self.rest or self.varying is not None
+
+    def most(self, count: int) -> int:
+        """The size of the message with `count` rounds of its varying group (its size without one)."""
+        return self.size + (self.varying.unit_size * count if self.varying is not None else 0)
+
+
+REFUSED = StructLayout((), 0, False)
+"""The layout of a format the checker refused (reported: no Model is made of it)."""
+
+
 @dataclass(frozen=True, slots=True)
 class Pack:
     """Raw-encoded request: a struct format."""
 
     format: str
+    layout: StructLayout = field(compare=False, repr=False)  # the format parsed (derived: not in the JSON)
     grouped: tuple[int, ...] = ()  # the arguments that fill a repeated group's codes, each an array
 
 
@@ -344,6 +431,7 @@ class Unpack:
     reads to those bytes (Firmata's sysex, ended by 0xF7) and its `*` rest takes what is before."""
 
     format: str
+    layout: StructLayout = field(compare=False, repr=False)
     until: str | None = None  # latin-1 text, as a connection's terminator
 
 
@@ -435,6 +523,7 @@ class FrameField:
     name: str
     format: str
     value: Expr
+    layout: StructLayout = field(compare=False, repr=False)
 
 
 @dataclass(frozen=True, slots=True)
@@ -443,6 +532,7 @@ class FrameLength:
 
     format: str
     adjust: int
+    layout: StructLayout = field(compare=False, repr=False)
 
 
 @dataclass(frozen=True, slots=True)
@@ -460,6 +550,7 @@ class FrameChecksum:
     first: int
     last: int
     with_request: bool = False
+    layout: StructLayout | None = field(default=None, compare=False, repr=False)  # of `format`
 
 
 @dataclass(frozen=True, slots=True)
@@ -488,6 +579,7 @@ class FrameBits:
 
     format: str
     fields: tuple[BitField, ...]
+    layout: StructLayout = field(compare=False, repr=False)
 
     @property
     def length(self) -> BitField | None:
@@ -579,6 +671,8 @@ class ReplyTable:
     tag: str | None = None  # a one-integer struct format: the tag starting the payload chooses
     each: bool = False  # the payload is sub-payloads, each tagged and decoded by its entry, until it ends
     length: str | None = None  # each sub-payload's length field after its tag (`each`): an unknown tag is skipped
+    tag_layout: StructLayout | None = field(default=None, compare=False, repr=False)  # of `tag`
+    length_layout: StructLayout | None = field(default=None, compare=False, repr=False)  # of `length`
 
 
 @dataclass(frozen=True, slots=True)

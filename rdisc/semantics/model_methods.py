@@ -629,8 +629,191 @@ def _hash_Connection(self: Any) -> int:
     ))
 
 
-def _init_Pack(self: Any, format: Any, grouped: Any = DEFAULT) -> None:
+def _init_Slot(
+    self: Any,
+    code: Any,
+    type: Any,
+    low: Any = DEFAULT,
+    high: Any = DEFAULT,
+    repeat: Any = DEFAULT,
+    bits: Any = DEFAULT,
+    size: Any = DEFAULT,
+) -> None:
+    _set(self, "code", code)
+    _set(self, "type", type)
+    _set(self, "low", low)
+    _set(self, "high", high)
+    _set(self, "repeat", repeat)
+    _set(self, "bits", bits)
+    _set(self, "size", size)
+
+
+def _repr_Slot(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(code={self.code!r}, type={self.type!r}, low={self.low!r}, high={self.high!r}, repeat={self.repeat!r}, bits={self.bits!r}, size={self.size!r})"
+
+
+def _eq_Slot(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.code,
+            self.type,
+            self.low,
+            self.high,
+            self.repeat,
+            self.bits,
+        ) == (
+            other.code,
+            other.type,
+            other.low,
+            other.high,
+            other.repeat,
+            other.bits,
+        )
+    return NotImplemented
+
+
+def _hash_Slot(self: Any) -> int:
+    return hash((self.code, self.type, self.low, self.high, self.repeat, self.bits))
+
+
+def _init_Varying(
+    self: Any,
+    head: Any,
+    unit: Any,
+    tail: Any,
+    count_at: Any,
+    count_high: Any = DEFAULT,
+    count_code: Any = DEFAULT,
+    count_slot: Any = DEFAULT,
+    unit_size: Any = DEFAULT,
+    tail_size: Any = DEFAULT,
+    count_size: Any = DEFAULT,
+) -> None:
+    _set(self, "head", head)
+    _set(self, "unit", unit)
+    _set(self, "tail", tail)
+    _set(self, "count_at", count_at)
+    _set(self, "count_high", count_high)
+    _set(self, "count_code", count_code)
+    _set(self, "count_slot", count_slot)
+    _set(self, "unit_size", unit_size)
+    _set(self, "tail_size", tail_size)
+    _set(self, "count_size", count_size)
+
+
+def _repr_Varying(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(head={self.head!r}, unit={self.unit!r}, tail={self.tail!r}, count_at={self.count_at!r}, count_high={self.count_high!r}, count_code={self.count_code!r}, count_slot={self.count_slot!r}, unit_size={self.unit_size!r}, tail_size={self.tail_size!r}, count_size={self.count_size!r})"
+
+
+def _eq_Varying(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.head,
+            self.unit,
+            self.tail,
+            self.count_at,
+            self.count_high,
+            self.count_code,
+            self.count_slot,
+        ) == (
+            other.head,
+            other.unit,
+            other.tail,
+            other.count_at,
+            other.count_high,
+            other.count_code,
+            other.count_slot,
+        )
+    return NotImplemented
+
+
+def _hash_Varying(self: Any) -> int:
+    return hash((
+        self.head,
+        self.unit,
+        self.tail,
+        self.count_at,
+        self.count_high,
+        self.count_code,
+        self.count_slot,
+    ))
+
+
+def _init_StructLayout(
+    self: Any,
+    slots: Any,
+    size: Any,
+    native: Any,
+    rest: Any = DEFAULT,
+    fixed: Any = DEFAULT,
+    groups: Any = DEFAULT,
+    varying: Any = DEFAULT,
+    bits: Any = DEFAULT,
+    order: Any = DEFAULT,
+    rooms: Any = DEFAULT,
+) -> None:
+    _set(self, "slots", slots)
+    _set(self, "size", size)
+    _set(self, "native", native)
+    _set(self, "rest", rest)
+    _set(self, "fixed", fixed)
+    _set(self, "groups", groups)
+    _set(self, "varying", varying)
+    _set(self, "bits", bits)
+    _set(self, "order", order)
+    _set(self, "rooms", rooms)
+
+
+def _repr_StructLayout(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(slots={self.slots!r}, size={self.size!r}, native={self.native!r}, rest={self.rest!r}, fixed={self.fixed!r}, groups={self.groups!r}, varying={self.varying!r}, bits={self.bits!r}, order={self.order!r}, rooms={self.rooms!r})"
+
+
+def _eq_StructLayout(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.slots,
+            self.size,
+            self.native,
+            self.rest,
+            self.fixed,
+            self.groups,
+            self.varying,
+            self.bits,
+            self.order,
+            self.rooms,
+        ) == (
+            other.slots,
+            other.size,
+            other.native,
+            other.rest,
+            other.fixed,
+            other.groups,
+            other.varying,
+            other.bits,
+            other.order,
+            other.rooms,
+        )
+    return NotImplemented
+
+
+def _hash_StructLayout(self: Any) -> int:
+    return hash((
+        self.slots,
+        self.size,
+        self.native,
+        self.rest,
+        self.fixed,
+        self.groups,
+        self.varying,
+        self.bits,
+        self.order,
+        self.rooms,
+    ))
+
+
+def _init_Pack(self: Any, format: Any, layout: Any, grouped: Any = DEFAULT) -> None:
     _set(self, "format", format)
+    _set(self, "layout", layout)
     _set(self, "grouped", grouped)
 
 
@@ -666,8 +849,9 @@ def _hash_Format(self: Any) -> int:
     return hash((self.template,))
 
 
-def _init_Unpack(self: Any, format: Any, until: Any = DEFAULT) -> None:
+def _init_Unpack(self: Any, format: Any, layout: Any, until: Any = DEFAULT) -> None:
     _set(self, "format", format)
+    _set(self, "layout", layout)
     _set(self, "until", until)
 
 
@@ -834,10 +1018,11 @@ def _hash_FrameBytes(self: Any) -> int:
     return hash((self.role, self.data))
 
 
-def _init_FrameField(self: Any, name: Any, format: Any, value: Any) -> None:
+def _init_FrameField(self: Any, name: Any, format: Any, value: Any, layout: Any) -> None:
     _set(self, "name", name)
     _set(self, "format", format)
     _set(self, "value", value)
+    _set(self, "layout", layout)
 
 
 def _repr_FrameField(self: Any) -> str:
@@ -854,9 +1039,10 @@ def _hash_FrameField(self: Any) -> int:
     return hash((self.name, self.format, self.value))
 
 
-def _init_FrameLength(self: Any, format: Any, adjust: Any) -> None:
+def _init_FrameLength(self: Any, format: Any, adjust: Any, layout: Any) -> None:
     _set(self, "format", format)
     _set(self, "adjust", adjust)
+    _set(self, "layout", layout)
 
 
 def _repr_FrameLength(self: Any) -> str:
@@ -898,12 +1084,14 @@ def _init_FrameChecksum(
     first: Any,
     last: Any,
     with_request: Any = DEFAULT,
+    layout: Any = DEFAULT,
 ) -> None:
     _set(self, "algorithm", algorithm)
     _set(self, "format", format)
     _set(self, "first", first)
     _set(self, "last", last)
     _set(self, "with_request", with_request)
+    _set(self, "layout", layout)
 
 
 def _repr_FrameChecksum(self: Any) -> str:
@@ -981,9 +1169,10 @@ def _hash_BitField(self: Any) -> int:
     return hash((self.name, self.width, self.value, self.adjust))
 
 
-def _init_FrameBits(self: Any, format: Any, fields: Any) -> None:
+def _init_FrameBits(self: Any, format: Any, fields: Any, layout: Any) -> None:
     _set(self, "format", format)
     _set(self, "fields", fields)
+    _set(self, "layout", layout)
 
 
 def _repr_FrameBits(self: Any) -> str:
@@ -1188,12 +1377,16 @@ def _init_ReplyTable(
     tag: Any = DEFAULT,
     each: Any = DEFAULT,
     length: Any = DEFAULT,
+    tag_layout: Any = DEFAULT,
+    length_layout: Any = DEFAULT,
 ) -> None:
     _set(self, "key", key)
     _set(self, "cases", cases)
     _set(self, "tag", tag)
     _set(self, "each", each)
     _set(self, "length", length)
+    _set(self, "tag_layout", tag_layout)
+    _set(self, "length_layout", length_layout)
 
 
 def _repr_ReplyTable(self: Any) -> str:
@@ -2247,8 +2440,60 @@ WRITTEN: dict[str, Written] = {
             "__hash__": _hash_Connection,
         },
     ),
+    "Slot": Written(
+        (
+            ("code", MISSING),
+            ("type", MISSING),
+            ("low", DEFAULT),
+            ("high", DEFAULT),
+            ("repeat", DEFAULT),
+            ("bits", DEFAULT),
+            ("size", FieldSpec(0, MISSING, False, True)),
+        ),
+        {"__init__": _init_Slot, "__repr__": _repr_Slot, "__eq__": _eq_Slot, "__hash__": _hash_Slot},
+    ),
+    "Varying": Written(
+        (
+            ("head", MISSING),
+            ("unit", MISSING),
+            ("tail", MISSING),
+            ("count_at", MISSING),
+            ("count_high", DEFAULT),
+            ("count_code", DEFAULT),
+            ("count_slot", DEFAULT),
+            ("unit_size", FieldSpec(0, MISSING, False, True)),
+            ("tail_size", FieldSpec(0, MISSING, False, True)),
+            ("count_size", FieldSpec(0, MISSING, False, True)),
+        ),
+        {
+            "__init__": _init_Varying,
+            "__repr__": _repr_Varying,
+            "__eq__": _eq_Varying,
+            "__hash__": _hash_Varying,
+        },
+    ),
+    "StructLayout": Written(
+        (
+            ("slots", MISSING),
+            ("size", MISSING),
+            ("native", MISSING),
+            ("rest", DEFAULT),
+            ("fixed", DEFAULT),
+            ("groups", DEFAULT),
+            ("varying", DEFAULT),
+            ("bits", DEFAULT),
+            ("order", DEFAULT),
+            ("rooms", DEFAULT),
+        ),
+        {
+            "__init__": _init_StructLayout,
+            "__repr__": _repr_StructLayout,
+            "__eq__": _eq_StructLayout,
+            "__hash__": _hash_StructLayout,
+        },
+    ),
     "Pack": Written(
-        (("format", MISSING), ("grouped", DEFAULT)),
+        (("format", MISSING), ("layout", FieldSpec(MISSING, MISSING, False, False)), ("grouped", DEFAULT)),
         {"__init__": _init_Pack, "__repr__": _repr_Pack, "__eq__": _eq_Pack, "__hash__": _hash_Pack},
     ),
     "Format": Written(
@@ -2256,7 +2501,7 @@ WRITTEN: dict[str, Written] = {
         {"__init__": _init_Format, "__repr__": _repr_Format, "__eq__": _eq_Format, "__hash__": _hash_Format},
     ),
     "Unpack": Written(
-        (("format", MISSING), ("until", DEFAULT)),
+        (("format", MISSING), ("layout", FieldSpec(MISSING, MISSING, False, False)), ("until", DEFAULT)),
         {"__init__": _init_Unpack, "__repr__": _repr_Unpack, "__eq__": _eq_Unpack, "__hash__": _hash_Unpack},
     ),
     "Regex": Written(
@@ -2311,7 +2556,12 @@ WRITTEN: dict[str, Written] = {
         },
     ),
     "FrameField": Written(
-        (("name", MISSING), ("format", MISSING), ("value", MISSING)),
+        (
+            ("name", MISSING),
+            ("format", MISSING),
+            ("value", MISSING),
+            ("layout", FieldSpec(MISSING, MISSING, False, False)),
+        ),
         {
             "__init__": _init_FrameField,
             "__repr__": _repr_FrameField,
@@ -2320,7 +2570,7 @@ WRITTEN: dict[str, Written] = {
         },
     ),
     "FrameLength": Written(
-        (("format", MISSING), ("adjust", MISSING)),
+        (("format", MISSING), ("adjust", MISSING), ("layout", FieldSpec(MISSING, MISSING, False, False))),
         {
             "__init__": _init_FrameLength,
             "__repr__": _repr_FrameLength,
@@ -2344,6 +2594,7 @@ WRITTEN: dict[str, Written] = {
             ("first", MISSING),
             ("last", MISSING),
             ("with_request", DEFAULT),
+            ("layout", FieldSpec(None, MISSING, False, False)),
         ),
         {
             "__init__": _init_FrameChecksum,
@@ -2371,7 +2622,7 @@ WRITTEN: dict[str, Written] = {
         },
     ),
     "FrameBits": Written(
-        (("format", MISSING), ("fields", MISSING)),
+        (("format", MISSING), ("fields", MISSING), ("layout", FieldSpec(MISSING, MISSING, False, False))),
         {
             "__init__": _init_FrameBits,
             "__repr__": _repr_FrameBits,
@@ -2431,7 +2682,15 @@ WRITTEN: dict[str, Written] = {
         },
     ),
     "ReplyTable": Written(
-        (("key", MISSING), ("cases", MISSING), ("tag", DEFAULT), ("each", DEFAULT), ("length", DEFAULT)),
+        (
+            ("key", MISSING),
+            ("cases", MISSING),
+            ("tag", DEFAULT),
+            ("each", DEFAULT),
+            ("length", DEFAULT),
+            ("tag_layout", FieldSpec(None, MISSING, False, False)),
+            ("length_layout", FieldSpec(None, MISSING, False, False)),
+        ),
         {
             "__init__": _init_ReplyTable,
             "__repr__": _repr_ReplyTable,

@@ -1,7 +1,7 @@
 """Which operation computes a node of a typed expression, decided once for the runtime and the emitter.
 
 The operations themselves are rdisc.engine.operations. Both the runtime's interpreter
-(rdisc.runtime.evaluate) and the expression compiler (rdisc.emit.python_expr) ask here which
+(rdisc.semantics.evaluate) and the expression compiler (rdisc.emit.python_expr) ask here which
 of its functions a node needs, or whether Python's own operator or builtin computes exactly
 the same (results and errors alike), which is then the faster thing to use: the sum of two
 ints (bounded where it is kept, not here), `x * 0.5` (which cannot overflow), `x % 256`

@@ -34,9 +34,9 @@ from typing import Any
 
 from rdisc import engine
 from rdisc.emit.mjcf import actuator_name, to_mjcf
-from rdisc.runtime.codec import decoder
-from rdisc.runtime.evaluate import Prepared, prepare
+from rdisc.lowering.constructs import decoder
 from rdisc.semantics import model as m
+from rdisc.semantics.evaluate import Prepared, prepare
 
 __all__ = ["Simulation", "SimulationError"]
 

@@ -11,6 +11,7 @@ from conftest import cli_env
 
 from rdisc.compile import compile_path
 from rdisc.emit.canonical import to_json
+from rdisc.semantics import formats
 from rdisc.semantics import model as m
 from rdisc.semantics.model import Scope, Type
 
@@ -54,7 +55,7 @@ def model() -> m.Model:
                 "move",
                 (m.Parameter("v", Type.INT),),
                 m.ConnectionRef("link"),
-                m.Pack(">Bh"),
+                m.Pack(">Bh", formats.struct_layout(">Bh")),
                 (const(137, Type.INT), var("v", Type.INT)),
             ),
             "sense": m.Primitive(

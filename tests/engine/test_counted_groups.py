@@ -16,7 +16,7 @@ from rdisc import engine
 from rdisc.diagnostics import Diagnostics
 from rdisc.emit import dump
 from rdisc.limits import MAX_ARRAY
-from rdisc.runtime import codec
+from rdisc.lowering import constructs as codec
 from rdisc.semantics import budget, formats
 from rdisc.semantics import model as m
 from rdisc.syntax.parse import parse
@@ -51,6 +51,15 @@ def implementation(request: pytest.FixtureRequest, tmp_path_factory: pytest.Temp
 def frame(payload: str) -> bytes:
     data = bytes.fromhex(payload)
     return b"\xaa" + len(data).to_bytes(2, "little") + data
+
+
+def _pack(fmt: str) -> m.Pack:
+    """A `pack` as the checker makes it: its layout stored beside it."""
+    return m.Pack(fmt, formats.struct_layout(fmt))
+
+
+def _unpack(fmt: str) -> m.Unpack:
+    return m.Unpack(fmt, formats.struct_layout(fmt))
 
 
 def test_a_request_repeats_its_group_as_its_arrays_hold(implementation: Any) -> None:
@@ -122,12 +131,12 @@ def test_a_remainder_that_is_not_a_whole_group_is_refused(implementation: Any) -
 
 
 def test_a_count_over_the_bound_is_refused() -> None:
-    decoder = engine.Unpack("<H", groups=((0, 1, 0),), varying=("B", "", 0))
+    decoder = engine.Unpack("<H", groups=((0, 1, 0),), varying=("B", "", 0), varying_sizes=(1, 0))
     assert decoder.decode("r", bytes.fromhex("0300 010203")) == ((1, 2, 3),)
     with pytest.raises(engine.RdisProtocolError, match=rf"^r: the reply counts {MAX_ARRAY + 1} groups; at most "
                        rf"{MAX_ARRAY} are read$"):
         decoder.decode("r", (MAX_ARRAY + 1).to_bytes(2, "little") + bytes(MAX_ARRAY + 1))
-    until = engine.Unpack("<", groups=((0, 1, 0),), varying=("B", "", -1))
+    until = engine.Unpack("<", groups=((0, 1, 0),), varying=("B", "", -1), varying_sizes=(1, 0))
     with pytest.raises(engine.RdisProtocolError, match=rf"^r: the reply holds {MAX_ARRAY + 1} groups; at most "
                        rf"{MAX_ARRAY} are read$"):
         until.decode("r", bytes(MAX_ARRAY + 1))
@@ -135,10 +144,10 @@ def test_a_count_over_the_bound_is_refused() -> None:
 
 
 def test_groups_before_the_count_field_and_values_after_the_group() -> None:
-    encoder = codec.encoder(m.Pack("<2(Bb)#B#(hB)H"))
+    encoder = codec.encoder(_pack("<2(Bb)#B#(hB)H"))
     data = encoder.encode("x", [(1, 2), (-1, -2), (300, -5, 7), (1, 2, 3), 9])
     assert data.hex(" ") == "01 ff 02 fe 03 2c 01 01 fb ff 02 07 00 03 09 00"
-    assert codec.decoder(m.Unpack("<2(Bb)#B#(hB)H")).decode("x", data) == ((1, 2), (-1, -2), (300, -5, 7),
+    assert codec.decoder(_unpack("<2(Bb)#B#(hB)H")).decode("x", data) == ((1, 2), (-1, -2), (300, -5, 7),
                                                                               (1, 2, 3), 9)
 
 

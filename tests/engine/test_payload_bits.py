@@ -15,7 +15,7 @@ from conftest import check_text
 
 from rdisc.diagnostics import Diagnostics
 from rdisc.emit import dump
-from rdisc.runtime import codec
+from rdisc.lowering import constructs as codec
 from rdisc.semantics import budget, formats
 from rdisc.semantics import model as m
 from rdisc.syntax.parse import parse
@@ -51,6 +51,15 @@ interface slow(level: int in 0..15) { mode(True, 2, level) }
 @pytest.fixture(scope="module", params=["runtime", "driver"])
 def implementation(request: pytest.FixtureRequest, tmp_path_factory: pytest.TempPathFactory) -> Any:
     return implementation_of(request.param, LIDAR, tmp_path_factory.mktemp("bits"), "lidar")
+
+
+def _pack(fmt: str) -> m.Pack:
+    """A `pack` as the checker makes it: its layout stored beside it."""
+    return m.Pack(fmt, formats.struct_layout(fmt))
+
+
+def _unpack(fmt: str) -> m.Unpack:
+    return m.Unpack(fmt, formats.struct_layout(fmt))
 
 
 def test_a_request_joins_its_bit_fields_into_one_integer(implementation: Any) -> None:
@@ -120,11 +129,11 @@ def test_the_layout_and_the_engine_codec() -> None:
     assert formats.struct_layout("<B{4, 4} H {8 8}").bits == ((0, "<B", (4, 4)), (2, "<H", (8, 8)))
     texts = formats.struct_layout("<H{8,8}3sB{7,1}?")
     assert [texts.joined(i) for i in (2, 5)] == [1, 3]
-    encoder = codec.encoder(m.Pack("<B{4,4}#B#(B)H{15,1}"))
+    encoder = codec.encoder(_pack("<B{4,4}#B#(B)H{15,1}"))
     assert (encoder.groups, encoder.varying, encoder.bits) == (  # type: ignore[union-attr]
         ((1, 1, 0),), ("B", "H", 1), ((0, "<B", (4, 4)), (3, "<H", (15, 1))))
     assert encoder.encode("x", [9, 2, (1, 2), 300, 1]).hex(" ") == "29 02 01 02 2c 81"
-    assert codec.decoder(m.Unpack("<B{4,4}#B#(B)H{15,1}")).decode("x", bytes.fromhex("29 02 01 02 2c 81")) == (
+    assert codec.decoder(_unpack("<B{4,4}#B#(B)H{15,1}")).decode("x", bytes.fromhex("29 02 01 02 2c 81")) == (
         9, 2, (1, 2), 300, 1)
 
 

@@ -27,7 +27,7 @@ from rdisc.engine import (
     Part,
     Payload,
 )
-from rdisc.runtime.codec import frame_fields
+from rdisc.lowering.constructs import frame_fields
 from rdisc.runtime.device import wire_frame
 from tests.support.ports import ScriptedPort
 
@@ -117,7 +117,8 @@ def test_a_frame_written_is_read_back(name: str, payload: bytes, noise: bytes, i
     assert raw == wire
 
 
-_FIELD_FORMATS = ["B", "b", "<H", ">H", "!H", "<h", ">I", "<I", ">Q", "xB", "H", "=H"]
+_FIELD_FORMATS = [("", "B"), ("", "b"), ("<", "H"), (">", "H"), ("!", "H"), ("<", "h"), (">", "I"), ("<", "I"),
+                  (">", "Q"), ("", "xB"), ("", "H"), ("=", "H")]  # (byte order, code)
 _CHECKS = st.sampled_from([(Checksum("sum", 8), "B"), (Checksum("xor", 8, inverted=True), None),
                            (Checksum("crc", 16, 0x8005, reflect_in=True, reflect_out=True), "<H"),
                            (Checksum("crc", 16, 0x1021), ">H"), (Checksum("sum", 16), None)])
@@ -133,9 +134,10 @@ def _request_sides(draw: st.DrawFn) -> list[Part]:
         if kind == "bytes":
             parts.append(Bytes("header" if not parts else "literal", draw(st.binary(min_size=1, max_size=3))))
         elif kind == "field":
-            parts.append(Field("f", draw(st.sampled_from(_FIELD_FORMATS)), draw(st.integers(0, 1))))
+            parts.append(Field("f", *draw(st.sampled_from(_FIELD_FORMATS)), draw(st.integers(0, 1))))
         elif kind == "length":
-            parts.append(Length(draw(st.sampled_from(["B", "<H", ">H"])), draw(st.integers(0, 3))))
+            order, code, high = draw(st.sampled_from([("", "B", 0xFF), ("<", "H", 0xFFFF), (">", "H", 0xFFFF)]))
+            parts.append(Length(order, code, draw(st.integers(0, 3)), high))
         elif parts:
             first = draw(st.integers(0, len(parts) - 1))
             parts.append(Check(*draw(_CHECKS), first, draw(st.integers(first, len(parts) - 1))))

@@ -17,7 +17,7 @@ from rdisc.engine import (
     Payload,
     Stuffing,
 )
-from rdisc.runtime.codec import checksum
+from rdisc.lowering.constructs import checksum
 from rdisc.semantics import model as m
 from rdisc.semantics.frames import CATALOGUE
 from tests.support.ports import ScriptedPort
@@ -46,9 +46,9 @@ def test_sums_and_xor() -> None:
     assert Checksum("xor", 8)(b"GPGLL,4916.45,N,12311.12,W,225444,A,") == 0x1D  # NMEA's textbook sentence
 
 
-DXL = Frame("dxl", [Bytes("header", b"\xff\xff"), Field("id", "B", 0), Length("B", 1), Payload(),
+DXL = Frame("dxl", [Bytes("header", b"\xff\xff"), Field("id", "", "B", 0), Length("", "B", 1, 0xFF), Payload(),
                     Check(Checksum("sum", 8, inverted=True), "B", 1, 3)],
-            [Bytes("header", b"\xff\xff"), Field("id", "B", 0), Length("B", 1), Payload(),
+            [Bytes("header", b"\xff\xff"), Field("id", "", "B", 0), Length("", "B", 1, 0xFF), Payload(),
              Check(Checksum("sum", 8, inverted=True), "B", 1, 3)])
 
 
@@ -87,7 +87,7 @@ def test_nothing_at_all_is_a_timeout() -> None:
 
 def test_reply_checksum_over_the_request_and_a_delimited_payload() -> None:
     crc = Checksum("crc", 16, 0x1021)
-    frame = Frame("version", [Field("address", "B", 0), Payload()],
+    frame = Frame("version", [Field("address", "", "B", 0), Payload()],
                   [Payload(), Bytes("literal", b"\n\x00"), Check(crc, ">H", 0, 1, with_request=True)])
     request = frame.wrap(b"\x15", [0x80])
     text = b"USB Roboclaw 2x7a v4.1.34"
@@ -113,9 +113,9 @@ def test_binary_checksum_bytes_are_compared_exactly() -> None:
         frame.read(ScriptedPort(b"\xaa\x61\x41"), [], b"", 1)
 
 
-DXL2 = Frame("dxl2", [Bytes("header", b"\xff\xff\xfd\x00"), Field("id", "B", 0), Length("<H", 2), Payload(),
+DXL2 = Frame("dxl2", [Bytes("header", b"\xff\xff\xfd\x00"), Field("id", "", "B", 0), Length("<", "H", 2, 0xFFFF), Payload(),
                       Check(Checksum("crc", 16, 0x8005), "<H", 0, 3)],
-             [Bytes("header", b"\xff\xff\xfd\x00"), Field("id", "B", 0), Length("<H", 2), Payload(),
+             [Bytes("header", b"\xff\xff\xfd\x00"), Field("id", "", "B", 0), Length("<", "H", 2, 0xFFFF), Payload(),
               Check(Checksum("crc", 16, 0x8005), "<H", 0, 3)],
              Stuffing(b"\xff\xff\xfd", b"\xfd"))
 

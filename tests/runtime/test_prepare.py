@@ -10,8 +10,8 @@ from hypothesis import strategies as st
 from runtime_support import CREATE, DATA, KOALA
 
 from rdisc.compile import compile_path
-from rdisc.runtime.evaluate import EvalError, evaluate, prepare
 from rdisc.semantics import model as m
+from rdisc.semantics.evaluate import EvalError, evaluate, prepare
 
 INT, FLOAT, BOOL = m.Type.INT, m.Type.FLOAT, m.Type.BOOL
 

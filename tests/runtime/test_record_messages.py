@@ -22,7 +22,7 @@ from rosbags.typesys import Stores, get_types_from_msg, get_typestore
 from runtime_support import DATA
 
 from rdisc.engine import recording
-from rdisc.runtime import messages
+from rdisc.lowering import messages
 
 BENCH = DATA / "bench.rdis"
 HUMBLE = get_typestore(Stores.ROS2_HUMBLE)

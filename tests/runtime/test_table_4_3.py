@@ -14,8 +14,8 @@ import pytest
 from devices.create import TABLE_4_3
 
 from rdisc.compile import compile_path
-from rdisc.runtime.evaluate import coerce, evaluate
 from rdisc.semantics import model as m
+from rdisc.semantics.evaluate import coerce, evaluate
 
 CREATE = Path(__file__).parents[2] / "examples" / "create.rdis"
 

@@ -660,13 +660,15 @@ class Bytes:
 
 
 class Field:
-    """The frame's `index`-th field value, packed with a one-integer struct format."""
+    """The frame's `index`-th field value, packed as one integer: its struct `code` in byte `order`."""
 
-    __slots__ = ("index", "name", "struct")
+    __slots__ = ("code", "index", "name", "order", "struct")
 
-    def __init__(self, name: str, fmt: str, index: int) -> None:
+    def __init__(self, name: str, order: str, code: str, index: int) -> None:
         self.name = name
-        self.struct = struct.Struct(fmt)
+        self.order = order
+        self.code = code
+        self.struct = struct.Struct(order + code)
         self.index = index
 
     def put(self, payload: bytes, fields: Sequence[int], chunks: list[bytes]) -> bytes:
@@ -674,15 +676,17 @@ class Field:
 
 
 class Length:
-    """The payload's size plus `adjust`; `most`, the largest size its format states."""
+    """The payload's size plus `adjust`, packed as one integer: its struct `code` in byte
+    `order`, `high` the largest value the code holds; `most`, the largest size it states."""
 
-    __slots__ = ("adjust", "most", "struct")
+    __slots__ = ("adjust", "code", "most", "order", "struct")
 
-    def __init__(self, fmt: str, adjust: int) -> None:
-        self.struct = struct.Struct(fmt)
+    def __init__(self, order: str, code: str, adjust: int, high: int) -> None:
+        self.order = order
+        self.code = code
+        self.struct = struct.Struct(order + code)
         self.adjust = adjust
-        bits = 8 * self.struct.size
-        self.most = ((1 << (bits - 1)) - 1 if fmt[-1].islower() else (1 << bits) - 1) - adjust
+        self.most = high - adjust
 
     def put(self, payload: bytes, fields: Sequence[int], chunks: list[bytes]) -> bytes:
         return self.struct.pack(len(payload) + self.adjust)
@@ -907,20 +911,6 @@ def _latin1(owner: str, value: object) -> bytes:
         raise RdisValueError(f"{owner}: {err.object[err.start:err.end]!r} is not a latin-1 character") from None
 
 
-def _string_sizes(fmt: str) -> dict[int, int]:
-    """The most bytes each `s` or `p` value of a struct format holds, by the value's position."""
-    sizes: dict[int, int] = {}
-    at = 0
-    for count, code in re.findall(r"(\d*)([a-zA-Z?])", fmt):
-        n = int(count) if count else 1
-        if code in "sp":
-            sizes[at] = n if code == "s" else max(0, min(n - 1, 255))
-            at += 1
-        elif code != "x":
-            at += n
-    return sizes
-
-
 Group = tuple[int, int, int]
 """A repeated group of a struct format: its first value, its number of codes, its count (0:
 as many as the message says)."""
@@ -998,7 +988,7 @@ def _regrouped(values: Sequence[Any], groups: tuple[Group, ...]) -> tuple[Any, .
 
 class Pack:
     """A request packed with a struct format: the values at `strings` as latin-1 bytes
-    (refused when longer than their `Ns` holds: struct would cut them short), the arrays
+    (refused when longer than `rooms` says their `Ns` holds: struct would cut them short), the arrays
     of repeated `groups` element by element, and, with `rest` (a format ending in `*`),
     the last value, bytes, appended as it is. With `varying`, `fixed` is the format before
     that group, repeated as many times as its arrays hold values, and its count field
@@ -1008,11 +998,13 @@ class Pack:
     __slots__ = ("bits", "groups", "rest", "sizes", "splitters", "strings", "struct", "varying")
 
     def __init__(self, fixed: str, strings: tuple[int, ...] = (), rest: bool = False,
-                 groups: tuple[Group, ...] = (), varying: Varying | None = None, bits: tuple[Split, ...] = ()) -> None:
+                 groups: tuple[Group, ...] = (), varying: Varying | None = None, bits: tuple[Split, ...] = (),
+                 rooms: tuple[tuple[int, int], ...] = ()) -> None:
+        """`rooms`: each `Ns` or `Np` value's index among the values, and the most bytes it holds."""
         self.struct = struct.Struct(fixed)
         self.strings = strings
         self.rest = rest
-        self.sizes = _string_sizes(fixed)
+        self.sizes = dict(rooms)
         self.groups = groups
         self.varying = varying
         self.bits = bits
@@ -1090,11 +1082,14 @@ class Unpack:
     split into `bits` is then given as its fields. With `until`, an unframed tagged reply's
     entry is read to those bytes (Firmata's sysex end), which are dropped."""
 
-    __slots__ = ("bits", "groups", "rest", "size", "splitters", "strings", "struct", "until", "varying")
+    __slots__ = ("bits", "groups", "rest", "size", "splitters", "strings", "struct", "until", "varying",
+                 "varying_sizes")
 
     def __init__(self, fixed: str, strings: tuple[int, ...] = (), rest: bool = False,
                  groups: tuple[Group, ...] = (), varying: Varying | None = None, bits: tuple[Split, ...] = (),
-                 until: bytes | None = None) -> None:
+                 until: bytes | None = None, varying_sizes: tuple[int, int] = (0, 0)) -> None:
+        """`varying_sizes`: the bytes of one round of the `varying` group and of the format after it."""
+        self.varying_sizes = varying_sizes
         self.struct = struct.Struct(fixed)
         self.strings = strings
         self.rest = rest
@@ -1135,8 +1130,7 @@ class Unpack:
         """The rounds the count field says, or as many as the bytes after the head and before
         the tail hold whole; the count field's own value dropped."""
         unit, tail, count_at = varying
-        order = self.struct.format[:1]
-        unit_size, tail_size = struct.calcsize(order + unit), struct.calcsize(order + tail)
+        unit_size, tail_size = self.varying_sizes
         head = self.struct.size
         if len(data) < head + tail_size:
             raise RdisProtocolError(f"{owner}: expected {head + tail_size} bytes or more, got {len(data)}")
@@ -1857,13 +1851,11 @@ def _quick_wrap(side: Side) -> Wrap | None:
             continue
         if not isinstance(part, (Field, Length)):
             return None
-        fmt = part.struct.format
-        prefix, code = (fmt[0], fmt[1:]) if fmt[:1] in "<>!=@" else ("", fmt)
         if part.struct.size > 1:
-            if prefix not in ("<", ">", "!") or order not in ("", prefix.replace("!", ">")):
+            if part.order not in ("<", ">", "!") or order not in ("", part.order.replace("!", ">")):
                 return None
-            order = prefix.replace("!", ">")
-        codes.append(code)
+            order = part.order.replace("!", ">")
+        codes.append(part.code)
         picks.append((len(template), part.index, 0) if isinstance(part, Field) else (len(template), -1, part.adjust))
         template.append(0)
     head = struct.Struct((order or "<") + "".join(codes))

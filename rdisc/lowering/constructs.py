@@ -2,7 +2,9 @@
 
 These are data built once from the Model, each a `Construct`: the engine object and the
 constructor call that made it. The runtime hands the objects to the engine; `rdisc
-emit-python` writes the calls, so both encode and decode alike.
+emit-python` writes the calls, so both encode and decode alike. A struct format comes as
+the layout the checker stored beside it (`model.StructLayout`): its struct module format,
+sizes and indexes are handed on as they are, never worked out again from its text.
 """
 
 from __future__ import annotations
@@ -12,7 +14,6 @@ from dataclasses import dataclass, field
 from typing import Any, Generic, TypeVar
 
 from rdisc import engine
-from rdisc.semantics import formats
 from rdisc.semantics import model as m
 
 __all__ = ["Construct", "Hex", "built", "checksum", "decoder", "decoding", "encoder", "encoding", "escaping",
@@ -65,17 +66,16 @@ def _call(kind: type[T], *args: Any, **options: Any) -> Construct[T]:
 
 def encoding(encoding: m.Pack | m.Format) -> Construct[engine.Pack] | Construct[engine.Format]:
     match encoding:
-        case m.Pack(format=fmt):
-            return _struct_codec(engine.Pack, formats.struct_layout(fmt))
+        case m.Pack(layout=layout):
+            return _struct_codec(engine.Pack, layout)
         case m.Format(template=template):
             return _call(engine.Format, template)
 
 
 def decoding(decoding: m.Unpack | m.Regex | None) -> Construct[engine.Unpack] | Construct[engine.Match] | None:
     match decoding:
-        case m.Unpack(format=fmt, until=until):
-            return _struct_codec(engine.Unpack, formats.struct_layout(fmt),
-                                 until=None if until is None else until.encode("latin-1"))
+        case m.Unpack(layout=layout, until=until):
+            return _struct_codec(engine.Unpack, layout, until=None if until is None else until.encode("latin-1"))
         case m.Regex(pattern=pattern):
             return _call(engine.Match, pattern)
     return None
@@ -153,10 +153,10 @@ def _part(part: m.FramePart, index: Mapping[tuple[str, m.Expr], int]) -> Constru
     match part:
         case m.FrameBytes(role=role, data=data):
             return _call(engine.Bytes, role, data.encode("latin-1"))
-        case m.FrameField(name=name, format=fmt, value=value):
-            return _call(engine.Field, name, fmt, index[(name, value)])
-        case m.FrameLength(format=fmt, adjust=adjust):
-            return _call(engine.Length, fmt, adjust)
+        case m.FrameField(name=name, value=value, layout=layout):
+            return _call(engine.Field, name, layout.order, layout.slots[0].code, index[(name, value)])
+        case m.FrameLength(adjust=adjust, layout=layout):
+            return _call(engine.Length, layout.order, layout.slots[0].code, adjust, layout.slots[0].high)
         case m.FramePayload():
             return _call(engine.Payload)
         case m.FrameChecksum():
@@ -171,14 +171,19 @@ def _part(part: m.FramePart, index: Mapping[tuple[str, m.Expr], int]) -> Constru
     raise AssertionError(part)
 
 
-def _struct_codec(kind: type[T], layout: formats.StructLayout, until: bytes | None = None) -> Construct[T]:
+def _struct_codec(kind: type[T], layout: m.StructLayout, until: bytes | None = None) -> Construct[T]:
     """A struct format as the engine's `Pack` and `Unpack` take it: the struct module's format
     (with a group repeated as the message says, the format before it), the indexes of its
     strings and its groups among the struct module's values (an integer split into bit fields
-    one value), whether it ends in the rest, that group, the integers split into bits."""
+    one value), whether it ends in the rest, that group, the integers split into bits; a
+    request's, the most bytes each `Ns` and `Np` holds; a reply's, the sizes of that group's
+    round and of what follows it."""
     v = layout.varying
     fixed, varying = (layout.fixed, None) if v is None else (v.head, (v.unit, v.tail, v.count_at))
     strings = tuple(layout.joined(i) for i, slot in enumerate(layout.slots) if slot.type is m.Type.STRING)
     groups = tuple((layout.joined(first), codes, count) for first, codes, count in layout.groups)
+    if kind is engine.Pack:
+        return _call(kind, fixed, strings=strings, rest=layout.rest, groups=groups, varying=varying,
+                     bits=layout.bits, rooms=layout.rooms)
     return _call(kind, fixed, strings=strings, rest=layout.rest, groups=groups, varying=varying, bits=layout.bits,
-                 until=until)
+                 until=until, varying_sizes=None if v is None else (v.unit_size, v.tail_size))
