@@ -156,13 +156,14 @@ class _Ros2Node:
             name = f"{self.namespace.rstrip('/')}/{name}"
         return "rt" + name
 
-    def listener(self, received: Callable[[Any], None] | None = None) -> Any:
-        """Cyclone's callbacks for an entity: QoS mismatches reported, messages queued for `received`."""
+    def listener(self, topic: str, received: Callable[[Any], None] | None = None) -> Any:
+        """Cyclone's callbacks for a reader or writer of `topic` (called as it is being made, too):
+        QoS mismatches reported, messages queued for `received`."""
         from cyclonedds.core import Listener
 
-        def mismatch(entity: Any, status: Any, what: str) -> None:
+        def mismatch(status: Any, what: str) -> None:
             policy = _ROS2_POLICIES.get(status.last_policy_id, f"QoS policy {status.last_policy_id}")
-            text = f"{entity.topic.name.removeprefix('rt')}: {what} ({policy}): no messages flow between them"
+            text = f"{topic.removeprefix('rt')}: {what} ({policy}): no messages flow between them"
             threading.Thread(target=self.report, args=(text,), daemon=True).start()  # not on Cyclone's thread
 
         def available(reader: Any) -> None:
@@ -171,10 +172,10 @@ class _Ros2Node:
                 self.received.put((received, msg))
 
         return Listener(  # type: ignore[no-untyped-call]
-            on_offered_incompatible_qos=lambda writer, status: mismatch(
-                writer, status, "a subscription asks for what this publisher does not offer"),
-            on_requested_incompatible_qos=lambda reader, status: mismatch(
-                reader, status, "a publisher does not offer what this subscription asks for"),
+            on_offered_incompatible_qos=lambda _writer, status: mismatch(
+                status, "a subscription asks for what this publisher does not offer"),
+            on_requested_incompatible_qos=lambda _reader, status: mismatch(
+                status, "a publisher does not offer what this subscription asks for"),
             **({"on_data_available": available} if received is not None else {}))
 
     def handle(self) -> None:
@@ -187,8 +188,9 @@ class _Ros2Node:
         from cyclonedds.pub import DataWriter
         from cyclonedds.topic import Topic
 
-        writer = DataWriter(self.participant, Topic(self.participant, self.topic(name), message), qos=qos,
-                            listener=self.listener())
+        topic = self.topic(name)
+        writer = DataWriter(self.participant, Topic(self.participant, topic, message), qos=qos,
+                            listener=self.listener(topic))
         self.writers.append(writer)
         self.announce()
         return writer
@@ -198,8 +200,9 @@ class _Ros2Node:
         from cyclonedds.sub import DataReader
         from cyclonedds.topic import Topic
 
-        reader = DataReader(self.participant, Topic(self.participant, self.topic(name), message), qos=self.default,
-                            listener=self.listener(received))
+        topic = self.topic(name)
+        reader = DataReader(self.participant, Topic(self.participant, topic, message), qos=self.default,
+                            listener=self.listener(topic, received))
         self.readers.append(reader)
         self.announce()
         return reader
