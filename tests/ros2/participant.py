@@ -63,8 +63,12 @@ class Types:
         return dds.array(self.kind(inner), size) if node == Nodetype.ARRAY else dds.sequence(self.kind(inner))
 
 
+SAYING = threading.Lock()  # Cyclone's threads and the main one: a line at a time
+
+
 def say(**event: Any) -> None:
-    print(json.dumps(event), flush=True)
+    with SAYING:
+        print(json.dumps(event), flush=True)
 
 
 def main() -> None:

@@ -27,6 +27,7 @@ from conftest import run_rdisc
 
 from tests.devices import CreateEmulator
 from tests.devices.create import TABLE_4_3
+from tests.ros2.loopback import LOOPBACK
 
 pytest.importorskip("cyclonedds")
 typesys = pytest.importorskip("rosbags.typesys")
@@ -34,10 +35,6 @@ typesys = pytest.importorskip("rosbags.typesys")
 HERE = Path(__file__).resolve().parent
 REPO = HERE.parents[1]
 STOP = bytes([137, 0, 0, 0, 0])  # the terminate hook: drive(0, 0)
-# Cyclone DDS on loopback only: no multicast there, so the peers are found by unicast.
-LOOPBACK = ('<CycloneDDS><Domain id="any"><General><Interfaces><NetworkInterface name="lo"/></Interfaces>'
-            "<AllowMulticast>false</AllowMulticast></General><Discovery><ParticipantIndex>auto</ParticipantIndex>"
-            '<Peers><Peer address="127.0.0.1"/></Peers></Discovery></Domain></CycloneDDS>')
 
 
 @pytest.fixture(scope="module")
