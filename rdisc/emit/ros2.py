@@ -64,7 +64,7 @@ class _Ros2(Bridge):
         named = [a.ros for a in adapters if a.ros is not None]
         if self.measured or self.commanded:
             named.append("sensor_msgs/JointState")
-        base = ["builtin_interfaces/Time", "std_msgs/String", "rmw_dds_common/ParticipantEntitiesInfo"]
+        base = ["builtin_interfaces/Time", "std_msgs/String", "rmw_dds_common/ParticipantEntitiesInfo"]  # the node's
         self.speaks = list(dict.fromkeys([*named, *base]))
 
     def problems(self) -> list[str]:
@@ -141,7 +141,7 @@ class _Ros2(Bridge):
         return f.name, kind, default
 
     def main(self, w: Writer) -> None:
-        packages = sorted({n.split("/")[0] for n in self.speaks})
+        packages = sorted({n.split("/")[0] for n in self.speaks} - {"rmw_dds_common"})  # the node's own
         with w.block("def ros_main() -> int:"):
             w.line('"""Run the robot as a ROS 2 node until SIGINT or SIGTERM: the driver\'s run with `--duration inf`,')
             w.line("so the terminate hooks run then and their commands are the last written. Exit status as the")
@@ -171,18 +171,13 @@ class _Ros2(Bridge):
             w.line("messages = _ros2_messages()")
             w.lines([f"{package}_msg = messages.{package}" for package in packages])
             w.blank()
-            with w.block("def report(problem: str) -> None:"):
-                w.line('print(f"{prog}: {problem}", file=sys.stderr, flush=True)')
-                w.line("errors.write(std_msgs_msg.String(data=problem))")
-            w.blank()
-            w.line("node = _Ros2Node(ROBOT, remaps, rmw_dds_common_msg, report)")
-            w.line('errors = node.publisher("~/errors", std_msgs_msg.String, node.default)')
+            w.line("node = _Ros2Node(ROBOT, remaps, messages)")
             self.publishers(w, "node.publisher({topic}, {message}, node.sensor_data)")
             w.blank()
             self.on_output(w, "_ros2_time({seconds}, builtin_interfaces_msg.Time)", "{publisher}.write({msg})")
             w.blank()
             with w.block("def on_error(error: BaseException) -> None:"):
-                w.line('errors.write(std_msgs_msg.String(data=f"{type(error).__name__}: {error}"))')
+                w.line('node.errors.write(std_msgs_msg.String(data=f"{type(error).__name__}: {error}"))')
             w.blank()
             w.line(f"robot = {class_name(self.model.robot.name)}(timeout=args.timeout)")
             w.line("robot.on_output(on_output)")

@@ -111,12 +111,11 @@ _ROS2_POLICIES = {2: "durability", 4: "deadline", 8: "liveliness", 11: "reliabil
 
 class _Ros2Node:
     """One ROS 2 node on its own DDS participant, in domain ROS_DOMAIN_ID (0 unset), with ROS 2's
-    names and QoS. Messages received are handled on the node's own thread, in order (a DDS write
-    from Cyclone's receive thread, as an error published, could deadlock it); a QoS mismatch is
-    reported through `report`, never silent."""
+    names and QoS, `messages` (`_ros2_messages()`) its types. Messages received are handled on the
+    node's own thread, in order (a DDS write from Cyclone's receive thread, as an error published,
+    could deadlock it); a QoS mismatch is reported on stderr and `~/errors`, never silent."""
 
-    def __init__(self, name: str, remaps: dict[str, str], rmw_dds_common: Any,
-                 report: Callable[[str], None]) -> None:
+    def __init__(self, name: str, remaps: dict[str, str], messages: Any) -> None:
         import queue
 
         from cyclonedds.core import Policy, Qos
@@ -129,8 +128,8 @@ class _Ros2Node:
         self.name = remaps.get("__node", name)
         self.namespace = "/" + remaps.get("__ns", "/").strip("/")
         self.remaps = remaps
-        self.report = report
-        self.types = rmw_dds_common
+        self.types = messages.rmw_dds_common
+        self.string = messages.std_msgs.String
         xcdr1 = Policy.DataRepresentation(use_cdrv0_representation=True)
         reliable = Policy.Reliability.Reliable(duration(milliseconds=100))
         # ROS 2's profiles: the default (subscriptions, errors, joint states) and the sensor-data
@@ -142,10 +141,12 @@ class _Ros2Node:
         self.participant = DomainParticipant(int(domain), qos=Qos(Policy.Userdata(b"enclave=/;")))
         self.readers: list[Any] = []
         self.writers: list[Any] = []
+        self.errors: Any = None
         self.received: queue.SimpleQueue[tuple[Callable[[Any], None], Any] | None] = queue.SimpleQueue()
         self.handler = threading.Thread(target=self.handle, name="ros2 subscriptions", daemon=True)
         self.handler.start()
-        self.discovery = self.publisher("ros_discovery_info", rmw_dds_common.ParticipantEntitiesInfo, self.latched)
+        self.publisher("ros_discovery_info", self.types.ParticipantEntitiesInfo, self.latched)  # writers[0]
+        self.errors = self.publisher("~/errors", self.string, self.default)
 
     def topic(self, name: str) -> str:
         """The DDS topic of a ROS 2 topic name (`~/x` the node's own, `x` in its namespace), remapped."""
@@ -177,6 +178,12 @@ class _Ros2Node:
             on_requested_incompatible_qos=lambda _reader, status: mismatch(
                 status, "a publisher does not offer what this subscription asks for"),
             **({"on_data_available": available} if received is not None else {}))
+
+    def report(self, problem: str) -> None:
+        """A problem of the node's, on stderr and on `~/errors`."""
+        print(f"{os.path.basename(sys.argv[0])}: {problem}", file=sys.stderr, flush=True)
+        if self.errors is not None:  # None only while the node is being made
+            self.errors.write(self.string(data=problem))
 
     def handle(self) -> None:
         """Each message received, handled in order until `close`."""
