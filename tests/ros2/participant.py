@@ -4,8 +4,9 @@ rosbags' ROS 2 message definitions (not rdisc's), named and encoded as ROS 2 doe
     python participant.py jazzy NODE      # in the node's ROS_DOMAIN_ID and CYCLONEDDS_URI
 
 It publishes Twists on `set_velocity` (one a line of stdin, "linear angular"; `{"sent": T}` after
-each, T from time.monotonic()), and prints one JSON line for each event: "matched" once the node
-subscribes to `set_velocity`; each `detect_bump` message (sensor-data profile) as its CDR bytes in
+each, T from time.monotonic()), or for NODE `arm` JointStates on `joint_command` (a line of JSON,
+`{"name": [...], "position": [...]}`), and prints one JSON line for each event: "matched" once the
+node subscribes to what it publishes; each `joint_states` message as its CDR bytes; each `detect_bump` message (sensor-data profile) as its CDR bytes in
 hex, for rosbags to decode; "incompatible" when its reliable reader of `detect_bump` is refused by
 the node's best-effort writer; each `ros_discovery_info` naming the node; each error on
 `/NODE/errors`. It ends at the end of stdin.
@@ -87,9 +88,16 @@ def main() -> None:
         return Topic(participant, f"rt/{name}", types[message])
 
     twist, vector = types["geometry_msgs/msg/Twist"], types["geometry_msgs/msg/Vector3"]
-    writer = DataWriter(participant, topic("set_velocity", "geometry_msgs/msg/Twist"), qos=default,
+    joints, header, stamp = (types["sensor_msgs/msg/JointState"], types["std_msgs/msg/Header"],
+                             types["builtin_interfaces/msg/Time"])
+    commanding = "joint_command" if node == "arm" else "set_velocity"
+    writer = DataWriter(participant, topic(commanding, "sensor_msgs/msg/JointState" if node == "arm"
+                                           else "geometry_msgs/msg/Twist"), qos=default,
                         listener=Listener(on_publication_matched=lambda _w, status: (
                             matched.set() if status.current_count > 0 else None)))
+    states = DataReader(participant, topic("joint_states", "sensor_msgs/msg/JointState"), qos=default,
+                        listener=Listener(on_data_available=lambda reader: [
+                            say(joint_states=msg.serialize().hex()) for msg in reader.take(N=100)]))
     bumps = DataReader(participant, topic("detect_bump", "sensor_msgs/msg/Range"), qos=sensor_data,
                        listener=Listener(on_data_available=lambda reader: [
                            say(bump=msg.serialize().hex()) for msg in reader.take(N=100)]))
@@ -108,12 +116,17 @@ def main() -> None:
         return
     say(matched=True)
     for line in sys.stdin:
-        linear, angular = map(float, line.split())
-        message = twist(linear=vector(x=linear, y=0.0, z=0.0), angular=vector(x=0.0, y=0.0, z=angular))
+        if node == "arm":
+            given = json.loads(line)
+            message = joints(header=header(stamp=stamp(sec=0, nanosec=0), frame_id=""), name=given["name"],
+                             position=given.get("position", []), velocity=[], effort=[])
+        else:
+            linear, angular = map(float, line.split())
+            message = twist(linear=vector(x=linear, y=0.0, z=0.0), angular=vector(x=0.0, y=0.0, z=angular))
         start = time.monotonic()
         writer.write(message)
         say(sent=start)
-    del bumps, refused, discovery, errors
+    del states, bumps, refused, discovery, errors
 
 
 if __name__ == "__main__":

@@ -11,6 +11,7 @@ reader of the best-effort output is reported by both sides; the node announces i
 from __future__ import annotations
 
 import json
+import math
 import os
 import queue
 import signal
@@ -27,6 +28,7 @@ from conftest import run_rdisc
 
 from tests.devices import CreateEmulator
 from tests.devices.create import TABLE_4_3
+from tests.devices.dynamixel import XBus, sync_goals
 from tests.ros2.loopback import LOOPBACK
 
 pytest.importorskip("cyclonedds")
@@ -60,8 +62,8 @@ def _start_node(node_file: Path, env: dict[str, str], device: CreateEmulator) ->
 class Participant:
     """participant.py, its JSON lines read as they come."""
 
-    def __init__(self, env: dict[str, str]) -> None:
-        self.process = subprocess.Popen([sys.executable, str(HERE / "participant.py"), "jazzy", "irobot_create"],
+    def __init__(self, env: dict[str, str], node: str = "irobot_create") -> None:
+        self.process = subprocess.Popen([sys.executable, str(HERE / "participant.py"), "jazzy", node],
                                         env=env, stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True)
         self.events: queue.Queue[dict[str, Any]] = queue.Queue()
         self.seen: list[dict[str, Any]] = []
@@ -91,8 +93,14 @@ class Participant:
         return [event[key] for event in self.seen if key in event]
 
     def twist(self, linear: float, angular: float) -> None:
+        self.send_line(f"{linear} {angular}")
+
+    def send(self, joints: dict[str, list[Any]]) -> None:
+        self.send_line(json.dumps(joints))
+
+    def send_line(self, line: str) -> None:
         assert self.process.stdin is not None
-        self.process.stdin.write(f"{linear} {angular}\n")
+        self.process.stdin.write(line + "\n")
         self.process.stdin.flush()
 
     def stop(self) -> None:
@@ -179,3 +187,46 @@ def test_signals_leave_the_robot_stopped(node_file: Path, dds_env: dict[str, str
         node = _start_node(node_file, dds_env, device)
         printed = device.signal_once_open(node, after, signals, 0.01)
         assert node.returncode == status, printed
+
+
+ARM_JOINTS = ["waist", "shoulder", "elbow", "wrist_pitch", "wrist_roll", "gripper"]
+
+
+def test_the_arm_s_joints_over_ros_2(dds_env: dict[str, str], tmp_path: Path) -> None:
+    """examples/arm.rdis's node: the positions its six servos report arrive on `joint_states`,
+    stamped, under the joints' names; six positions on `joint_command` are one sync write of the
+    six goals its transmissions give; five of the six are an error, and nothing is written."""
+    path = tmp_path / "arm_node.py"
+    done = run_rdisc("emit-ros2", REPO / "examples" / "arm.rdis", "-o", path)
+    assert done.returncode == 0, done.stderr
+    store = typesys.get_typestore(typesys.Stores.ROS2_JAZZY)
+    present = {1: 2048, 2: 1024, 3: 3072, 4: 2560, 5: 0, 6: 4095}
+    angles = [(present[i] - 2048) * 2 * math.pi / 4096 for i in sorted(present)]
+    with XBus() as bus:
+        bus.present = present
+        node = subprocess.Popen([sys.executable, str(path), "--ros-args", "-p", f"port:={bus.port}"], env=dds_env,
+                                stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        arm = Participant(dds_env, "arm")
+        try:
+            arm.wait(lambda e: "matched" in e or "unmatched" in e, "subscription to joint_command")
+            assert arm.seen[-1] == {"matched": True}
+
+            def decoded(event: dict[str, Any]) -> Any:
+                return store.deserialize_cdr(bytes.fromhex(event["joint_states"]), "sensor_msgs/msg/JointState")
+
+            state = decoded(arm.wait(lambda e: "joint_states" in e and list(decoded(e).position) == pytest.approx(
+                angles, abs=1e-12), "the servos' positions"))
+            assert list(state.name) == ARM_JOINTS and state.header.stamp.sec > 0
+            arm.send({"name": ARM_JOINTS[:5], "position": [0.0] * 5})
+            arm.wait(lambda e: e.get("error") == ("RdisValueError: joint_command: sync_goal takes waist, shoulder, "
+                                                  "elbow, wrist_pitch, wrist_roll, gripper together; missing: "
+                                                  "gripper"), "the error of five joints")
+            assert sync_goals(bus.received) == []
+            arm.send({"name": ARM_JOINTS, "position": [0.0, -math.pi / 2, math.pi / 2,
+                                                      math.pi / 4, 0.1, -0.1]})
+            bus.wait_until(lambda: bool(sync_goals(bus.received)), 15, "a sync write of goals")
+            assert sync_goals(bus.received) == [[2048, 1024, 3072, 2560, 2048 + 65, 2048 - 65]]
+        finally:
+            arm.stop()
+            _, stderr = _stop(node, signal.SIGINT)
+        assert node.returncode == 130, stderr
