@@ -4,6 +4,7 @@ take, and a description naming a message rdisc has no ROS 2 definition of is ref
 
 from __future__ import annotations
 
+import os
 import subprocess
 import sys
 from pathlib import Path
@@ -14,26 +15,29 @@ from conftest import run_rdisc
 REPO = Path(__file__).resolve().parents[2]
 
 
-def _emitted(tmp_path: Path, example: str) -> Path:
-    path = tmp_path / f"{example}_node.py"
-    done = run_rdisc("emit-ros2", REPO / "examples" / f"{example}.rdis", "-o", path)
-    assert done.returncode == 0, done.stderr
-    return path
+@pytest.fixture(scope="module")
+def nodes(tmp_path_factory: pytest.TempPathFactory) -> dict[str, Path]:
+    """The ROS 2 nodes of the Create and of the arm, written once for the module."""
+    folder = tmp_path_factory.mktemp("nodes")
+    written = {}
+    for example in ("create", "arm"):
+        written[example] = folder / f"{example}_node.py"
+        done = run_rdisc("emit-ros2", REPO / "examples" / f"{example}.rdis", "-o", written[example])
+        assert done.returncode == 0, done.stderr
+    return written
 
 
-@pytest.mark.parametrize("example", ["create", "arm"])
-def test_ruff_and_mypy_strict_find_nothing(tmp_path: Path, example: str) -> None:
-    path = _emitted(tmp_path, example)
+def test_ruff_and_mypy_strict_find_nothing(nodes: dict[str, Path], tmp_path: Path) -> None:
     for command in (["ruff", "check", "--isolated", "--no-cache"],
                     ["mypy", "--strict", "--no-error-summary", "--cache-dir", str(tmp_path / "cache")]):
-        done = subprocess.run([sys.executable, "-m", *command, str(path)], capture_output=True, text=True,
-                              check=False, cwd=tmp_path)
+        done = subprocess.run([sys.executable, "-m", *command, *map(str, nodes.values())], capture_output=True,
+                              text=True, check=False, cwd=tmp_path)
         assert done.returncode == 0, done.stdout + done.stderr
 
 
-def test_without_cyclonedds_the_node_says_so(tmp_path: Path) -> None:
+def test_without_cyclonedds_the_node_says_so(nodes: dict[str, Path], tmp_path: Path) -> None:
     """Run by a python without site packages (no cyclonedds whatever is installed): exit status 2, one line."""
-    node = _emitted(tmp_path, "create")
+    node = nodes["create"]
     done = subprocess.run([sys.executable, "-I", "-S", str(node), "--ros-args", "-p", "port:=loop://"],
                           capture_output=True, text=True, check=False, cwd=tmp_path, timeout=60)
     assert (done.returncode, done.stdout) == (2, "")
@@ -50,11 +54,20 @@ def test_without_cyclonedds_the_node_says_so(tmp_path: Path) -> None:
                                              "and -r FROM:=TO")),
     (["--ros-args", "-p", "port:=a", "-p", "port:=b"], "create_node.py: -p port given twice"),
 ])
-def test_a_command_line_it_does_not_take_is_refused(tmp_path: Path, words: list[str], said: str) -> None:
-    node = _emitted(tmp_path, "create")
-    done = subprocess.run([sys.executable, str(node), *words], capture_output=True, text=True, check=False,
-                          cwd=tmp_path, timeout=60)
+def test_a_command_line_it_does_not_take_is_refused(nodes: dict[str, Path], tmp_path: Path, words: list[str],
+                                                    said: str) -> None:
+    done = subprocess.run([sys.executable, str(nodes["create"]), *words], capture_output=True, text=True,
+                          check=False, cwd=tmp_path, timeout=60)
     assert (done.returncode, done.stderr.splitlines()) == (2, [said])
+
+
+def test_a_domain_id_out_of_range_is_refused(nodes: dict[str, Path], tmp_path: Path) -> None:
+    pytest.importorskip("cyclonedds")
+    done = subprocess.run([sys.executable, str(nodes["create"]), "--ros-args", "-p", "port:=loop://"],
+                          capture_output=True, text=True, check=False, cwd=tmp_path, timeout=60,
+                          env=dict(os.environ, ROS_DOMAIN_ID="233"))
+    assert (done.returncode, done.stderr.splitlines()) == (
+        2, ["create_node.py: ROS_DOMAIN_ID is '233': give a domain from 0 to 232"])
 
 
 def test_a_message_without_a_ros_2_definition_is_refused(tmp_path: Path) -> None:
