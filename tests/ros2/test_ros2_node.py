@@ -48,10 +48,9 @@ def node_file(tmp_path_factory: pytest.TempPathFactory) -> Path:
 
 
 @pytest.fixture()
-def dds_env(worker_id: str) -> dict[str, str]:
-    """A domain of this test's own (each pytest worker another), on loopback."""
-    domain = 100 + (0 if worker_id == "master" else int(worker_id.removeprefix("gw")))
-    return dict(os.environ, ROS_DOMAIN_ID=str(domain), CYCLONEDDS_URI=LOOPBACK)
+def dds_env() -> dict[str, str]:
+    """A domain of this test process's own (from its pid: another run beside it picks another), on loopback."""
+    return dict(os.environ, ROS_DOMAIN_ID=str(10 + os.getpid() % 200), CYCLONEDDS_URI=LOOPBACK)
 
 
 def _start_node(node_file: Path, env: dict[str, str], device: CreateEmulator) -> subprocess.Popen[str]:
