@@ -48,7 +48,25 @@ def to_ros2(model: m.Model, source_name: str, *, distro: str = messages.DEFAULT_
     problems = node.problems()
     if problems:
         raise Ros2Error("; ".join(problems))
-    return node.node(to_python(model, source_name, sources=sources), HELPERS + "\n\n\n" + bridge.HELPERS)
+    driver = to_python(model, source_name, sources=sources)
+    end = driver.index('\n"""\n')  # the end of its docstring: what the node needs, and how it runs
+    driver = driver[:end] + _header(model, source_name, distro) + driver[end:]
+    return node.node(driver, HELPERS + "\n\n\n" + bridge.HELPERS)
+
+
+def _header(model: m.Model, source_name: str, distro: str) -> str:
+    """What the node's docstring says past the driver's: the node's program is not the driver's."""
+    return "\n".join([
+        "",
+        "",
+        f"Written by `rdisc emit-ros2 --distro {distro}` from {source_name}, this file runs as a ROS 2 node",
+        f"(ROS 2 {distro.capitalize()}'s messages), not as the driver's program above. It needs no ROS 2",
+        "installation, only Cyclone DDS's Python binding (`pip install cyclonedds`) and pyserial:",
+        "",
+        f"    ROS_DOMAIN_ID=0 python {model.robot.name}_node.py --ros-args -p port:=/dev/ttyUSB0",
+        "",
+        "with `-p NAME:=VALUE` for its port, timeout, trace and settings, and `-r FROM:=TO` remappings.",
+    ])
 
 
 class _Ros2(Bridge):
