@@ -20,6 +20,7 @@ from rdisc import __version__
 VERBS = {
     "check": "check", "build": "build", "import": "import_", "explain": "explain", "run": "run", "sim": "sim",
     "replay": "replay", "console": "console", "emit-python": "emit_python", "emit-ros": "emit_ros",
+    "emit-ros2": "emit_ros2",
     "emit-urdf": "emit_urdf", "emit-sdf": "emit_sdf", "emit-mjcf": "emit_mjcf", "dump": "dump", "graph": "graph",
 }  # fmt: skip
 EXIT_INTERNAL = 3

@@ -1,5 +1,6 @@
-"""ROS 2 message definitions, as data: what a recording (`--record FILE.mcap`) needs to carry
-each input and output as its adapter's ROS 2 message, and its raw bytes and errors.
+"""ROS 2 message definitions, as data: the one table of the messages rdisc speaks. A recording
+(`--record FILE.mcap`) carries each input and output as its adapter's ROS 2 message with these
+schemas; the ROS 2 node (`rdisc emit-ros2`) builds its DDS types from them, per distribution.
 
 An MCAP channel of ROS 2 messages names its schema `pkg/msg/Type` and carries the `.msg`
 text with every message it uses after it, each under a line of `=` and `MSG: pkg/Type`
@@ -11,6 +12,9 @@ log lines).
 """
 
 from __future__ import annotations
+
+from collections.abc import Iterable
+from dataclasses import dataclass
 
 from rdisc import engine
 from rdisc.semantics import model as m
@@ -56,9 +60,81 @@ DEFINITIONS: dict[str, str] = {
         "std_msgs/Header header\nstring[] name\nfloat64[] position\nfloat64[] velocity\nfloat64[] effort\n"
     ),
     "sensor_msgs/Temperature": "std_msgs/Header header\nfloat64 temperature\nfloat64 variance\n",
+    "std_msgs/String": "string data\n",
+    # What a ROS 2 node announces itself with, on `ros_discovery_info` (`ros2 node list` reads it).
+    "rmw_dds_common/Gid": "char[24] data\n",
+    "rmw_dds_common/NodeEntitiesInfo": (
+        "string<=256 node_namespace\nstring<=256 node_name\nGid[] reader_gid_seq\nGid[] writer_gid_seq\n"
+    ),
+    "rmw_dds_common/ParticipantEntitiesInfo": "Gid gid\nNodeEntitiesInfo[] node_entities_info_seq\n",
 }
-"""Each message's own fields (and constants), by its ROS 1 style name `pkg/Type`; a type
-without a package is of the package of the message that names it."""
+"""Each message's own fields (and constants), by its ROS 1 style name `pkg/Type`, as ROS 2 Humble
+defines it (recordings carry these); a type without a package is of the package of the message
+that names it."""
+
+DISTROS = ("humble", "jazzy")
+DEFAULT_DISTRO = "jazzy"
+_CHANGED: dict[str, dict[str, str]] = {
+    "humble": {},
+    "jazzy": {
+        "sensor_msgs/Range": DEFINITIONS["sensor_msgs/Range"] + "float32 variance\n",
+        "rmw_dds_common/Gid": "char[16] data\n",  # a DDS GUID's 16 bytes since Iron, not 24
+    },
+}
+"""Where a later distribution's definition differs from Humble's on the wire."""
+
+
+def definitions(distro: str) -> dict[str, str]:
+    """The table as ROS 2 `distro` (one of DISTROS) defines its messages."""
+    return {**DEFINITIONS, **_CHANGED[distro]}
+
+
+@dataclass(frozen=True, slots=True)
+class Field:
+    """A member of a message: its name, its type (a primitive, or a message `pkg/Type`), a string's
+    bound (`string<=256`), and what it is a list of: None a single value, 0 a sequence, else an
+    array of that size; its default, as the definition writes it, or None."""
+
+    name: str
+    type: str
+    bound: int | None
+    size: int | None
+    default: str | None
+
+
+def fields(name: str, distro: str = "humble") -> tuple[Field, ...]:
+    """The members of message `name` (`pkg/Type`) in ROS 2 `distro`, constants left out."""
+    package = name.split("/")[0]
+    found = []
+    for line in definitions(distro)[name].splitlines():
+        kind, member, *default = line.split()
+        if "=" in member:
+            continue  # a constant: no member of the message on the wire
+        base, _, size = kind.partition("[")
+        base, _, bound = base.partition("<=")
+        if base not in _PRIMITIVES and "/" not in base:
+            base = f"{package}/{base}"
+        found.append(Field(member, base, int(bound) if bound else None,
+                           None if not size else int(size[:-1] or 0), default[0] if default else None))
+    return tuple(found)
+
+
+def used(names: Iterable[str], distro: str = "humble") -> list[str]:
+    """`names` and every message their members are of, each after those it uses (so a type is
+    defined before it is named)."""
+    order: list[str] = []
+
+    def visit(name: str) -> None:
+        if name in order:
+            return
+        for member in fields(name, distro):
+            if member.type not in _PRIMITIVES:
+                visit(member.type)
+        order.append(name)
+
+    for name in names:
+        visit(name)
+    return order
 
 _PRIMITIVES = frozenset({"bool", "byte", "char", "float32", "float64", "int8", "uint8", "int16", "uint16",
                          "int32", "uint32", "int64", "uint64", "string", "wstring"})
@@ -70,7 +146,7 @@ def _uses(name: str) -> list[str]:
     package = name.split("/")[0]
     found: list[str] = []
     for line in DEFINITIONS[name].splitlines():
-        kind = line.split()[0].split("[")[0]
+        kind = line.split()[0].split("[")[0].split("<=")[0]
         if kind in _PRIMITIVES or "=" in line:
             continue
         used = kind if "/" in kind else f"{package}/{kind}"

@@ -80,3 +80,17 @@ class XBus(PtyDevice):
 
     def _cleared(self) -> None:
         self._pending.clear()
+
+
+def sync_goals(received: bytes) -> list[list[int]]:
+    """The goals of each sync write of Goal Position (0x83 at 116, 4 bytes) among the Dynamixel
+    packets `received` (FF FF FD 00, ID, length, instruction, parameters, CRC)."""
+    goals: list[list[int]] = []
+    at = received.find(b"\xff\xff\xfd\x00")
+    while 0 <= at and at + 7 <= len(received):
+        size = int.from_bytes(received[at + 5:at + 7], "little") + 7
+        packet = received[at:at + size]
+        if packet[7] == 0x83 and packet[8:12] == bytes([116, 0, 4, 0]):
+            goals.append([int.from_bytes(packet[i + 1:i + 5], "little", signed=True) for i in range(12, size - 2, 5)])
+        at = received.find(b"\xff\xff\xfd\x00", at + size)
+    return goals

@@ -31,7 +31,7 @@ import pytest
 from rdisc.compile import compile_path
 from tests.devices import CreateEmulator
 from tests.devices.create import TABLE_4_3
-from tests.devices.dynamixel import IDS, XBus
+from tests.devices.dynamixel import IDS, XBus, sync_goals
 
 HERE = Path(__file__).resolve().parent
 REPO = HERE.parents[1]
@@ -479,20 +479,6 @@ def test_a_sim_that_is_no_bool_stops_the_node(ros_env: dict[str, str], create2_n
         2, [f"{PROG}: ~sim is 1: give true (simulate the body) or false (the device)"]), refused.stderr
 
 
-def _sync_goals(received: bytes) -> list[list[int]]:
-    """The goals of each sync write of Goal Position (0x83 at 116, 4 bytes) among the Dynamixel
-    packets `received` (FF FF FD 00, ID, length, instruction, parameters, CRC)."""
-    goals: list[list[int]] = []
-    at = received.find(b"\xff\xff\xfd\x00")
-    while 0 <= at and at + 7 <= len(received):
-        size = int.from_bytes(received[at + 5:at + 7], "little") + 7
-        packet = received[at:at + size]
-        if packet[7] == 0x83 and packet[8:12] == bytes([116, 0, 4, 0]):
-            goals.append([int.from_bytes(packet[i + 1:i + 5], "little", signed=True) for i in range(12, size - 2, 5)])
-        at = received.find(b"\xff\xff\xfd\x00", at + size)
-    return goals
-
-
 def _publish_joints(env: dict[str, str], names: list[str], quantity: str, values: list[float]) -> None:
     """One JointState on joint_command, latched for the node to take (`rostopic pub -1`)."""
     message = json.dumps({"name": names, quantity: values})
@@ -532,10 +518,10 @@ def test_a_joint_state_on_joint_command_moves_the_arm_s_servos(ros_env: dict[str
                                    input=shown, capture_output=True, text=True, check=True).stdout
             assert error == ("RdisValueError: joint_command: sync_goal takes waist, shoulder, elbow, wrist_pitch, "
                              "wrist_roll, gripper together; missing: gripper")
-            assert _sync_goals(bus.received) == []
+            assert sync_goals(bus.received) == []
             _publish_joints(ros_env, ARM_JOINTS, "position", [0.0, -math.pi / 2, math.pi / 2, math.pi / 4, 0.1, -0.1])
-            bus.wait_until(lambda: bool(_sync_goals(bus.received)), 15, "a sync write of goals")
-            assert _sync_goals(bus.received) == [[2048, 1024, 3072, 2560, 2048 + 65, 2048 - 65]]
+            bus.wait_until(lambda: bool(sync_goals(bus.received)), 15, "a sync write of goals")
+            assert sync_goals(bus.received) == [[2048, 1024, 3072, 2560, 2048 + 65, 2048 - 65]]
         finally:
             _stop(listener)
             output = _stop(node)

@@ -102,6 +102,25 @@ def test_usage_errors(rdisc, args, message) -> None:
     assert "Traceback" not in result.stderr
 
 
+def test_duration_inf_runs_until_a_signal() -> None:
+    """`--duration inf` (how the ROS 2 node runs): polling goes on, printing nothing, until SIGINT."""
+    with CreateEmulator() as dev:
+        process = subprocess.Popen(
+            [sys.executable, "-m", "rdisc", "run", str(DATA / "fast_create.rdis"), "--port", dev.port, "--duration",
+             "inf"], cwd=REPO, env=cli_env(), stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        try:
+            polls = len(dev.wait_for_commands(1, timeout=15, opcode=SENSORS))
+            dev.wait_for_commands(polls + 3, timeout=5, opcode=SENSORS)
+            assert process.poll() is None
+            process.send_signal(signal.SIGINT)
+            stdout, stderr = process.communicate(timeout=10)
+            assert (process.returncode, stdout, stderr) == (130, "", "")
+            dev.wait_until(lambda: bool(dev.commands) and dev.commands[-1][1] == STOP, 5, "the stop command")
+        finally:
+            if process.poll() is None:
+                process.kill()
+
+
 @pytest.mark.parametrize(("signum", "status"), [(signal.SIGINT, 130), (signal.SIGTERM, 143)],
                          ids=["SIGINT", "SIGTERM"])
 def test_a_signal_still_stops_the_robot(signum, status) -> None:

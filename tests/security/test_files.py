@@ -40,7 +40,7 @@ def test_a_fifo_is_refused_without_blocking(tmp_path: Path) -> None:
     assert result.stderr.startswith(f"error[E006]: cannot read {fifo}: not a regular file\n"), result.stderr
 
 
-@pytest.mark.parametrize("verb", ["build", "dump", "emit-python", "emit-ros"])
+@pytest.mark.parametrize("verb", ["build", "dump", "emit-python", "emit-ros", "emit-ros2"])
 def test_no_output_over_the_description_or_its_imports(tmp_path: Path, verb: str) -> None:
     source = tmp_path / "create.rdis"
     shutil.copy(REPO / "examples" / "create.rdis", source)

@@ -3507,14 +3507,16 @@ def add_arguments(parser: argparse.ArgumentParser, device: Device | None = None,
 
 
 def run_command(args: argparse.Namespace, robot: Robot, prog: str, sim: Simulator | None = None,
-                inputs: Iterable[str] = ()) -> int:
+                inputs: Iterable[str] = (), opened: Callable[[], object] | None = None) -> int:
     """What `rdisc run` does with its options: connect, make the --call calls in order, then
     run until --duration seconds after the startup hooks ended (or, with --watch, until
     Ctrl-C; else end when the calls are done). It always ends by closing the robot, which
     runs the terminate hooks. Exit status: 0 done; 1 the device failed; 2 a usage error;
     130 after SIGINT; 143 after SIGTERM. With `sim` (`rdisc sim`) the robot runs against
     the simulated device; in simulated time the seconds, the trace's included, are its.
-    `inputs` are the files the description was read from, which --record never writes over."""
+    `inputs` are the files the description was read from, which --record never writes over.
+    `opened` is called once the startup hooks are done (a ROS 2 node subscribes then); `--duration
+    inf` runs until a signal."""
     simulated = sim is not None and not sim.realtime
     clock = sim.now if sim is not None and simulated else time.monotonic
     began = clock()
@@ -3539,6 +3541,8 @@ def run_command(args: argparse.Namespace, robot: Robot, prog: str, sim: Simulato
     try:
         robot.open(port, settings=settings, sim=sim)
         started = clock()  # the startup hooks are done: --duration counts from here
+        if opened is not None:
+            opened()
         for name, kind, values in calls:
             if recorder is not None:
                 recorder.call(kind, name, values)
@@ -3756,8 +3760,8 @@ def _install_signal_handlers() -> dict[int, Any]:
 
 
 def _sleep(seconds: float | None) -> None:
-    """Sleep (forever if None); a signal ends it through its handler."""
-    if seconds is None:
+    """Sleep (forever if None or infinite); a signal ends it through its handler."""
+    if seconds is None or seconds == math.inf:
         while True:
             time.sleep(3600)
     elif seconds > 0:
