@@ -13,7 +13,7 @@ import os
 import sys
 
 from rdisc.cli.output import EXIT_ERRORS, emit_body
-from rdisc.runtime.messages import DEFAULT_DISTRO, DISTROS
+from rdisc.lowering.messages import DEFAULT_DISTRO, DISTROS
 
 
 def add_parser(verbs: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:

@@ -25,7 +25,7 @@ from rdisc.emit.canonical import to_json
 from rdisc.emit.python_expr import Compiler, literal, quoted
 from rdisc.emit.urdf import to_urdf
 from rdisc.emit.writer import Writer
-from rdisc.runtime import messages
+from rdisc.lowering import messages
 from rdisc.semantics import model as m
 from rdisc.semantics import ros
 from rdisc.semantics.model import Type

@@ -7,7 +7,7 @@ names; parameters from `--ros-args -p port:=/dev/ttyUSB0 -p NAME:=VALUE`, read b
 own command line (`--port`, `--set`, `--timeout`, `--trace`), and the run is the driver's
 `run_command` until a signal, so the terminate hooks' commands are the last written. Messages are
 the ROS 2 distribution's (`--distro`), their DDS types made from rdisc's one table of message
-definitions (rdisc/runtime/messages.py), and only messages in it can be spoken.
+definitions (rdisc/lowering/messages.py), and only messages in it can be spoken.
 """
 
 from __future__ import annotations
@@ -21,7 +21,7 @@ from rdisc.emit.python import class_name, to_python
 from rdisc.emit.python_expr import quoted
 from rdisc.emit.ros2_helpers import HELPERS
 from rdisc.emit.writer import Writer
-from rdisc.runtime import messages
+from rdisc.lowering import messages
 from rdisc.semantics import model as m
 from rdisc.semantics import ros
 from rdisc.source import SourceFile
