@@ -60,7 +60,8 @@ def _primitive(model: m.Model, p: m.Primitive) -> str:
                         assert isinstance(case.decoding, m.Unpack)  # sub-payloads are bytes (E505)
                         layout = case.decoding.layout  # its pad bytes too
                         size = None if layout.rest or layout.varying else layout.size
-                        rows.insert(1, (p.table.length_layout.size, f"length {_integer_kind(p.table.length_layout)}",
+                        length = p.table.length_layout
+                        rows.insert(1, (length.size, f"length {_integer_kind(length)}",
                                         "of what follows" if size is None else f"= {size}"))
                     if case is p.table.cases[0]:
                         skipped = " (an unknown tag skipped by its length)" if p.table.length else ""
@@ -121,8 +122,8 @@ def _payload_rows(encoding: m.Pack | m.Format, args: tuple[m.Expr, ...]) -> list
     match encoding:
         case m.Pack(layout=layout, grouped=grouped):
             values = [v for i, a in enumerate(args) for v in ((a,) if i in grouped else m.spread((a,)))]
-            return _rows(layout, lambda j, k: _value_text(values[j], k, _code_format(layout, layout.slots[j].code)),
-                         [_constant_rest(v) for v in values])
+            codes = [_code_format(layout, slot.code) for slot in layout.slots]
+            return _rows(layout, lambda j, k: _value_text(values[j], k, codes[j]), [_constant_rest(v) for v in values])
         case m.Format(template=template):
             shown = ", ".join(expression_text(a) for a in args)
             return [(None, "text", spell_template(template) + (f" ({shown})" if shown else ""))]
@@ -144,7 +145,8 @@ def _rows(layout: m.StructLayout, text: Callable[[int, int | None], str],
     while at <= len(slots):
         if varying is not None and at == varying.count_slot:
             size = varying.count_size
-            rows.append((size, f"count {_kind(layout, varying.count_code, size)}", "k (the rounds of the group)"))
+            kind = _kind(layout, varying.count_code, size)
+            rows.append((size, f"count {kind}", "k (the rounds of the group)"))
         if at == len(slots):
             break
         if at in groups and not groups[at][1]:
@@ -155,7 +157,8 @@ def _rows(layout: m.StructLayout, text: Callable[[int, int | None], str],
             continue
         if at in splits:
             code, fields = splits[at]
-            said = [f"{text(j, None)} ({m.bit_span(*slots[j].bits or (0, 0))})" for j in range(at, at + fields)]
+            said = [f"{text(j, None)} ({m.bit_span(*slots[j].bits or (0, 0))})"
+                    for j in range(at, at + fields)]
             rows.append((slots[at].size, f"bits {_kind(layout, code, slots[at].size)}", ", ".join(said)))
             at += fields
             continue

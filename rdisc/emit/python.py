@@ -93,12 +93,12 @@ def import_driver(description: str | os.PathLike[str], folder: str | os.PathLike
     import sys
 
     from rdisc.compile import compile_path
-    from rdisc.runtime.errors import RdisLoadError
+    from rdisc.diagnostics.load_error import RdisLoadError
 
     path = os.fspath(description)
     compilation = compile_path(path)
     if compilation.model is None or compilation.diagnostics.has_errors():
-        raise RdisLoadError.from_compilation(path, compilation)
+        raise RdisLoadError.of(path, compilation.diagnostics, compilation.sources)
     name = module_name or f"{_identifier(compilation.model.robot.name)}_driver"
     target = os.path.join(os.fspath(folder), f"{name}.py")
     with open(target, "w", encoding="utf-8") as out:

@@ -75,7 +75,8 @@ def encoding(encoding: m.Pack | m.Format) -> Construct[engine.Pack] | Construct[
 def decoding(decoding: m.Unpack | m.Regex | None) -> Construct[engine.Unpack] | Construct[engine.Match] | None:
     match decoding:
         case m.Unpack(layout=layout, until=until):
-            return _struct_codec(engine.Unpack, layout, until=None if until is None else until.encode("latin-1"))
+            end = None if until is None else until.encode("latin-1")
+            return _struct_codec(engine.Unpack, layout, until=end)
         case m.Regex(pattern=pattern):
             return _call(engine.Match, pattern)
     return None
@@ -154,9 +155,9 @@ def _part(part: m.FramePart, index: Mapping[tuple[str, m.Expr], int]) -> Constru
         case m.FrameBytes(role=role, data=data):
             return _call(engine.Bytes, role, data.encode("latin-1"))
         case m.FrameField(name=name, value=value, layout=layout):
-            return _call(engine.Field, name, layout.order, layout.slots[0].code, index[(name, value)])
+            return _call(engine.Field, name, layout.order, layout.codes, index[(name, value)])
         case m.FrameLength(adjust=adjust, layout=layout):
-            return _call(engine.Length, layout.order, layout.slots[0].code, adjust, layout.slots[0].high)
+            return _call(engine.Length, layout.order, layout.codes, adjust, layout.slots[0].high)
         case m.FramePayload():
             return _call(engine.Payload)
         case m.FrameChecksum():

@@ -17,9 +17,9 @@ from typing import Any, TypeVar, assert_never
 
 from rdisc import engine
 from rdisc import lower as plans
+from rdisc.diagnostics.load_error import RdisLoadError
 from rdisc.engine.plans import plainly_given
 from rdisc.lowering.constructs import built
-from rdisc.runtime.errors import RdisLoadError
 from rdisc.semantics import model as m
 from rdisc.semantics.evaluate import Prepared, coerce, prepare
 
@@ -42,7 +42,7 @@ def load(source: str | os.PathLike[str] | m.Model) -> Description:
     path = os.fspath(source)
     compilation = compile_path(path)
     if compilation.model is None or compilation.diagnostics.has_errors():
-        raise RdisLoadError.from_compilation(path, compilation)
+        raise RdisLoadError.of(path, compilation.diagnostics, compilation.sources)
     return Description(compilation.model)
 
 

@@ -1320,8 +1320,7 @@ class _Checker:
         if slot.code == "c" and isinstance(value, str) and len(value) != 1:
             self.d.report("E403", expr.span, "pack code `c` takes a string of exactly one character")
         elif slot.code[-1:] in ("s", "p") and isinstance(value, str):
-            size = int(slot.code[:-1] or 1)
-            room = size if slot.code.endswith("s") else min(size - 1, 255)
+            room = formats.text_room(slot.code)
             if len(value) > room:
                 self.d.report("E403", expr.span, f"{shown(value)} is {len(value)} characters; `{slot.code}` holds "
                               f"{room}, and struct would cut the rest")
@@ -1352,8 +1351,8 @@ class _Checker:
                 layout = formats.struct_layout(template)
                 if layout.native:
                     self.native_warning(dec.template)
-                return m.Unpack(template, layout), tuple(m.Array(s.type, max(s.repeat, 0)) if s.repeat else s.type
-                                                 for s in layout.slots)
+                types = tuple(m.Array(s.type, max(s.repeat, 0)) if s.repeat else s.type for s in layout.slots)
+                return m.Unpack(template, layout), types
             groups = formats.regex_groups(template)
             return m.Regex(template), (Type.STRING,) * groups
         except formats.TemplateError as err:

@@ -20,9 +20,9 @@ from rdisc.limits import MAX_ARRAY
 from rdisc.semantics import regex_shape
 from rdisc.semantics.model import AnyType, Array, Slot, StructLayout, Type, Varying, bit_span
 
-__all__ = ["MAX_MESSAGE", "MAX_REPEAT", "FormatField", "Slot", "StructLayout", "TemplateError", "Varying", "bit_span",
-           "format_fields", "format_width", "most_rounds", "regex_groups", "regex_min_length", "spec_accepts",
-           "split_rest", "struct_layout", "varying_args"]
+__all__ = ["MAX_MESSAGE", "MAX_REPEAT", "FormatField", "Slot", "StructLayout", "TemplateError", "Varying",
+           "bit_span", "format_fields", "format_width", "most_rounds", "regex_groups", "regex_min_length", "spec_accepts",
+           "split_rest", "struct_layout", "text_room", "varying_args"]
 
 MAX_REPEAT = 4096
 MAX_MESSAGE = 65536  # bytes of one request or reply
@@ -189,13 +189,14 @@ def struct_layout(fmt: str) -> StructLayout:
         at, codes, _ = varying
         high = min(MAX_ARRAY, (1 << 8 * _STANDARD_SIZES[count[1]]) - 1) if count is not None else 0
         tail = "".join(written[at:])
-        count_at, count_code, count_slot = (count[0], count[1], count[3]) if count is not None else (-1, "", -1)
+        count_at, count_code, count_slot = (-1, "", -1) if count is None else (count[0], count[1], count[3])
         shape = Varying(order + "".join(written[:at]), codes, tail, count_at, high, count_code, count_slot,
                         unit_size=struct.calcsize(order + codes), tail_size=struct.calcsize(order + tail),
                         count_size=struct.calcsize(order + count_code) if count_code else 0)
     sized = tuple(dataclasses.replace(slot, size=_code_size(order, slot.code)) for slot in slots)
     layout = StructLayout(sized, size, native, rest, fixed, tuple(groups), shape, tuple(splits), order)
-    rooms = tuple((layout.joined(i), _room(slot.code)) for i, slot in enumerate(sized) if slot.code[-1:] in ("s", "p"))
+    rooms = tuple((layout.joined(i), text_room(slot.code)) for i, slot in enumerate(sized)
+                  if slot.code[-1:] in ("s", "p"))
     return dataclasses.replace(layout, rooms=rooms)
 
 
@@ -204,7 +205,7 @@ def _code_size(order: str, code: str) -> int:
     return 0 if code == "*" else struct.calcsize(order + code.split("{")[0])
 
 
-def _room(code: str) -> int:
+def text_room(code: str) -> int:
     """The most bytes of text an `Ns` or `Np` value holds (struct cuts the rest short)."""
     count = int(code[:-1] or 1)
     return count if code.endswith("s") else max(0, min(count - 1, 255))

@@ -503,8 +503,8 @@ class FrameRules:
             d.report("E502", part.format.span,
                      f"a {algorithm.width}-bit checksum does not fit \"{part.format.value}\" ({size_bits} bits)")
         first, last, with_request = self.span_of(part, options.get("over"), i, parts, names, side, d)
-        return m.FrameChecksum(algorithm, part.format.value if part.format else None, first, last, with_request,
-                               layout)
+        fmt = part.format.value if part.format else None
+        return m.FrameChecksum(algorithm, fmt, first, last, with_request, layout)
 
     def span_of(self, part: ast.FrameChecksum, over: ast.ChecksumOption | None, i: int,
                 parts: tuple[ast.FramePart, ...], names: dict[str, int], side: str,

@@ -390,6 +390,11 @@ class StructLayout:
     rooms: tuple[tuple[int, int], ...] = ()  # each `Ns` or `Np` value: its index among the struct module's
     # values, the most bytes of text it holds
 
+    @property
+    def codes(self) -> str:
+        """The struct module's format without its byte order: what a one-integer part packs (`xB` too)."""
+        return self.fixed[len(self.order) :]
+
     def joined(self, slot: int) -> int:
         """The index among the struct module's values of a slot's value (not a bit field's): what
         the engine counts groups and strings in."""

@@ -5,6 +5,7 @@ format's text again."""
 
 from __future__ import annotations
 
+import functools
 import re
 import struct
 from pathlib import Path
@@ -12,7 +13,9 @@ from pathlib import Path
 import rdisc
 from rdisc.compile import compile_text
 from rdisc.lower import lower
+from rdisc.runtime import load
 from rdisc.semantics import model as m
+from tests.support.ports import ScriptedPort
 
 DESCRIPTION = """\
 robot layouts { description "struct layouts of every kind" }
@@ -24,13 +27,15 @@ frame framed(id: int in 0..200) {
     request {
         header "\\xFF"  field id ">H" = id  length "<H" = payload + 1  payload  checksum "crc16-xmodem" ">H"
     }
-    reply { header "\\xFF"  bits "<H" { length: 12 = payload  field id: 4 = id & 15 }  payload  checksum "xor" hex }
+    reply {
+        header "\\xFF"  bits "<H" { length: 12 = payload  field id: 4 = id & 15 }  payload  checksum "xor" hex
+    }
 }
 
 connection link: serial { baud 115200 }
 
-primitive named(level: int, label: string) on link frame framed(1) pack ">BhH5s10pc" (1, level, 7, label, "ab", "z")
-    unpack "<H#B2(bb)#(BH)I" { seen = out[0] }
+primitive named(level: int, label: string) on link frame framed(1)
+    pack ">BhH5s10pc" (1, level, 7, label, "ab", "z") unpack "<H#B2(bb)#(BH)I" { seen = out[0] }
 primitive flags(low: int in 0..1, high: int in 0..127) on link frame framed(3) pack "<B{1,7}xq" (low, high, 9)
     unpack "<h3s*" { name = out[1] }
 primitive sensors() on link format "" () frame framed(4) reply each tag "B" length ">H" {
@@ -39,6 +44,7 @@ primitive sensors() on link format "" () frame framed(4) reply each tag "B" leng
 """
 
 
+@functools.cache
 def _model() -> m.Model:
     compiled = compile_text("layouts.rdis", DESCRIPTION)
     assert compiled.model is not None, [d.message for d in compiled.diagnostics.sorted()]
@@ -47,7 +53,8 @@ def _model() -> m.Model:
 
 def _code_sizes(layout: m.StructLayout) -> list[int]:
     """Each slot's size as the struct module counts one value of its code."""
-    return [0 if s.code == "*" else struct.calcsize(layout.order + s.code.split("{")[0]) for s in layout.slots]
+    return [0 if s.code == "*" else struct.calcsize(layout.order + s.code.split("{")[0])
+            for s in layout.slots]
 
 
 def test_a_primitive_holds_the_layouts_of_its_formats() -> None:
@@ -75,7 +82,8 @@ def test_a_primitive_holds_the_layouts_of_its_formats() -> None:
 def test_frame_parts_and_reply_tags_hold_their_layouts() -> None:
     model = _model()
     frame = model.frames["framed"]
-    field, length, check = (p for p in frame.request if isinstance(p, (m.FrameField, m.FrameLength, m.FrameChecksum)))
+    field, length, check = (p for p in frame.request
+                            if isinstance(p, (m.FrameField, m.FrameLength, m.FrameChecksum)))
     assert isinstance(field, m.FrameField) and isinstance(length, m.FrameLength)
     assert isinstance(check, m.FrameChecksum)
     assert (field.layout.order, field.layout.slots[0].code, field.layout.size) == (">", "H", 2)
@@ -105,6 +113,21 @@ def test_the_engine_gets_the_stored_layouts() -> None:
     assert isinstance(field, rdisc.engine.Field) and isinstance(length, rdisc.engine.Length)
     assert (field.order, field.code, length.order, length.code) == (">", "H", "<", "H")
     assert length.most == 0xFFFF - 1  # what `"<H"` holds, less the adjust
+
+
+def test_a_padded_part_keeps_its_pad_bytes() -> None:
+    """A one-integer part's format may pad (`xB`, `<xH`): the engine is given all its codes."""
+    compiled = compile_text("padded.rdis", """\
+robot padded { description "padded frame parts" }
+frame padded(id: int in 0..200) { header "\\xFF"  field id "xB" = id  length "<xH" = payload  payload }
+connection link: serial { baud 115200 }
+primitive go(v: int in 0..9) on link frame padded(5) pack "B" (v)
+""")
+    assert compiled.model is not None
+    port = ScriptedPort()
+    with load(compiled.model).connect(port, threads=False) as robot:
+        robot.primitives.go(7)
+    assert bytes(port.written).hex(" ") == "ff 00 05 00 01 00 07"
 
 
 def test_the_layout_is_derived_data() -> None:
