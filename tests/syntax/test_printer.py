@@ -197,6 +197,14 @@ def test_the_body_prints_back() -> None:
     assert parsed(BODY_EXPECTED) == module
 
 
+def test_an_output_s_frame_prints_back() -> None:
+    """`frame LINK` after the adapter, before the fields."""
+    text = "output detect_bump: Range frame bumper {\n    distance = 0.0\n}\n"
+    module = parsed(text)
+    assert module.decls[0].frame == ast.Ident("bumper")  # type: ignore[union-attr]
+    assert print_module(module) == text
+
+
 def test_empty_module() -> None:
     assert print_module(ast.Module("t.rdis", ())) == ""
 
