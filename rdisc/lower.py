@@ -160,6 +160,7 @@ class Output:
     name: str
     fields: Code
     adapter: str = ""
+    frame: str = ""
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -334,7 +335,7 @@ class _Lowering:
     def output(self, o: m.DomainOutput) -> Output:
         adapter = self.model.adapters[o.adapter]
         fields = tuple((name, e, _field_type(adapter, name, e)) for name, e in o.fields)
-        return Output(o.name, Code(("state",), Gives.DICT, (), fields), o.adapter)
+        return Output(o.name, Code(("state",), Gives.DICT, (), fields), o.adapter, self.model.frame_id(o))
 
     def interface(self, iface: m.Interface, primitives: Mapping[str, Primitive], outputs: Mapping[str, Output],
                   callees: Mapping[str, Interface]) -> Interface:

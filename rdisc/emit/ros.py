@@ -72,6 +72,15 @@ def _ros_refuse(problems: list[str]) -> SystemExit:
     return SystemExit(2)
 
 
+def _ros_header(msg: Any, read_ns: int, frame_id: str) -> None:
+    """Stamp a message that has a std_msgs/Header (genpy says which: `_has_header`) as an output's
+    data: the time it was read (`OutputMessage.read_ns`, not the time of publishing) and the body's
+    link it belongs to (its `frame`, else the body's base; "" without a body)."""
+    if msg._has_header:
+        msg.header.stamp.secs, msg.header.stamp.nsecs = divmod(read_ns, 1_000_000_000)
+        msg.header.frame_id = frame_id
+
+
 def _ros_item(items: Any, index: int) -> Any:
     """A list item of a message, or None past its end."""
     return items[index] if index < len(items) else None
@@ -375,21 +384,23 @@ class _Bridge:
             w.line('errors = rospy.Publisher("~errors", std_msgs_msg.String, queue_size=10)')
             if self.measured:
                 w.line('joint_states = rospy.Publisher("joint_states", sensor_msgs_msg.JointState, queue_size=10)')
-            w.line("publishers: dict[str, tuple[Any, Any, Callable[[Any, dict[str, Any]], None]]] = {")
+            w.line("# Each output's publisher, message, filling and frame id (the body's link it belongs to).")
+            w.line("publishers: dict[str, tuple[Any, Any, Callable[[Any, dict[str, Any]], None], str]] = {")
             with w.indented():
                 for o, adapter in self.outputs:
                     cls = self.message(adapter)
                     w.line(f"{quoted(o.name)}: (")
                     with w.indented():
                         w.lines([f"rospy.Publisher({quoted(o.name)}, {cls}, queue_size=10),", f"{cls},",
-                                 f"_ros_fill_{_name(o.name)},"])
+                                 f"_ros_fill_{_name(o.name)},", f"{quoted(self.model.frame_id(o))},"])
                     w.line("),")
             w.line("}")
             w.blank()
-            with w.block("def on_output(message: dict[str, Any]) -> None:"):
-                w.line('publisher, message_type, fill = publishers[message["name"]]')
+            with w.block("def on_output(message: OutputMessage) -> None:"):
+                w.line('publisher, message_type, fill, frame_id = publishers[message["name"]]')
                 w.line("msg = message_type()")
                 w.line('fill(msg, message["contents"])')
+                w.line("_ros_header(msg, message.read_ns, frame_id)")
                 w.line("publisher.publish(msg)")
             w.blank()
             with w.block("def on_error(error: BaseException) -> None:"):

@@ -159,6 +159,7 @@ class Output:
     name: str
     fields: Callable[[StateValues], dict[str, Value]]
     adapter: str = ""
+    frame: str = ""  # the frame id its stamped messages name (`Model.frame_id`): a link of the body, or none
 
 
 @dataclass(frozen=True, slots=True)

@@ -143,6 +143,39 @@ def test_twists_bumpers_and_shutdown(ros_env: dict[str, str], node_file: Path) -
         assert node.returncode == 0, output
 
 
+def test_a_range_is_stamped_when_its_reply_was_read_and_names_its_frame(ros_env: dict[str, str],
+                                                                         tmp_path: Path) -> None:
+    """tests/runtime/data/framed_create.rdis: `detect_bump` is in the bumper's frame, `base_bump`
+    (no `frame`) in the base's. Each Range's stamp is when the bumpers' reply was read: after the
+    device wrote that reply and before it wrote the next (the node polls again only after reading),
+    and at least the poll's 60 ms delay before the Range arrived, which was published after it."""
+    node_file = tmp_path / "framed_node.py"
+    done = subprocess.run(["python", "-m", "rdisc", "emit-ros", str(REPO / "tests" / "runtime" / "data" /
+                                                                     "framed_create.rdis"), "-o", str(node_file)],
+                          cwd=REPO, capture_output=True, text=True, check=False)
+    assert done.returncode == 0, done.stderr
+    with CreateEmulator(bumpers=0b01) as device:
+        node = _start_node(node_file, ros_env, device)
+        listeners = [_listen(ros_env, "range", "detect_bump"), _listen(ros_env, "range", "base_bump")]
+        try:
+            bumper = _until(listeners[0], lambda m: True)[-1]
+            base = _until(listeners[1], lambda m: True)[-1]
+        finally:
+            for listener in listeners:
+                _stop(listener)
+            output = _stop(node)
+        replies = [at for at, data in device.sent]
+    assert node.returncode == 0, output
+    assert (bumper["frame_id"], bumper["range"], base["frame_id"], base["range"]) == ("bumper", 0.0, "base", 0.0)
+    for ranged in (bumper, base):
+        stamp = ranged["stamp"]
+        read = [at for at in replies if at <= stamp]
+        assert stamp > 0 and read, (stamp, replies[:3])
+        later = replies[len(read):]
+        assert not later or stamp < later[0]  # the reply before it, not a later one
+        assert ranged["received"] - stamp >= 60_000_000  # published after the delay, stamped before it
+
+
 # Appendix C's mapping: the bumpers published as a std_msgs/Bool "hit", by an adapter of the description's own.
 HIT = """\
 robot hit_create { author "tests" }
@@ -292,9 +325,10 @@ def test_settings_are_the_node_s_private_parameters(ros_env: dict[str, str], tmp
         os.close(slave)
 
 
-def _listen(env: dict[str, str], what: str) -> subprocess.Popen:
-    """tests/ros/listen.py on `joint_states` or `tf`: a JSON line a message, for a minute at most."""
-    return subprocess.Popen([PYTHON3, str(HERE / "listen.py"), what], env=env, stdout=subprocess.PIPE, text=True)
+def _listen(env: dict[str, str], *what: str) -> subprocess.Popen:
+    """tests/ros/listen.py on `joint_states`, `tf`, `odom` or `range TOPIC`: a JSON line a message, for a
+    minute at most."""
+    return subprocess.Popen([PYTHON3, str(HERE / "listen.py"), *what], env=env, stdout=subprocess.PIPE, text=True)
 
 
 def _until(listener: subprocess.Popen, wanted: Callable[[dict[str, Any]], bool]) -> list[dict[str, Any]]:
