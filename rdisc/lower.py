@@ -29,6 +29,7 @@ from rdisc.runtime.codec import Construct, decoding, encoding, escaping, frame_f
 from rdisc.runtime.evaluate import prepare
 from rdisc.runtime.messages import recorded_messages
 from rdisc.semantics import model as m
+from rdisc.semantics.ros import header_frames
 
 __all__ = ["Call", "Code", "Connection", "Device", "Frame", "FrameUse", "Gives", "Hook", "Input", "Interface",
            "Output", "Plans", "Primitive", "Written", "frame", "lower"]
@@ -161,6 +162,7 @@ class Output:
     fields: Code
     adapter: str = ""
     frame: str = ""
+    child_frame: str = ""
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -335,7 +337,7 @@ class _Lowering:
     def output(self, o: m.DomainOutput) -> Output:
         adapter = self.model.adapters[o.adapter]
         fields = tuple((name, e, _field_type(adapter, name, e)) for name, e in o.fields)
-        return Output(o.name, Code(("state",), Gives.DICT, (), fields), o.adapter, self.model.frame_id(o))
+        return Output(o.name, Code(("state",), Gives.DICT, (), fields), o.adapter, *header_frames(self.model, o))
 
     def interface(self, iface: m.Interface, primitives: Mapping[str, Primitive], outputs: Mapping[str, Output],
                   callees: Mapping[str, Interface]) -> Interface:

@@ -72,13 +72,15 @@ def _ros_refuse(problems: list[str]) -> SystemExit:
     return SystemExit(2)
 
 
-def _ros_header(msg: Any, read_ns: int, frame_id: str) -> None:
+def _ros_header(msg: Any, read_ns: int, frame_id: str, child_frame_id: str) -> None:
     """Stamp a message that has a std_msgs/Header (genpy says which: `_has_header`) as an output's
-    data: the time it was read (`OutputMessage.read_ns`, not the time of publishing) and the body's
-    link it belongs to (its `frame`, else the body's base; "" without a body)."""
+    data: the time it was read (`OutputMessage.read_ns`, not the time of publishing) and its frames:
+    the body's link it belongs to (an Odometry's pose is in `odom`, that link its child frame)."""
     if msg._has_header:
         msg.header.stamp.secs, msg.header.stamp.nsecs = divmod(read_ns, 1_000_000_000)
         msg.header.frame_id = frame_id
+    if child_frame_id:
+        msg.child_frame_id = child_frame_id
 
 
 def _ros_item(items: Any, index: int) -> Any:
@@ -384,23 +386,25 @@ class _Bridge:
             w.line('errors = rospy.Publisher("~errors", std_msgs_msg.String, queue_size=10)')
             if self.measured:
                 w.line('joint_states = rospy.Publisher("joint_states", sensor_msgs_msg.JointState, queue_size=10)')
-            w.line("# Each output's publisher, message, filling and frame id (the body's link it belongs to).")
-            w.line("publishers: dict[str, tuple[Any, Any, Callable[[Any, dict[str, Any]], None], str]] = {")
+            w.line("# Each output's publisher, message, filling, and the frame id and child frame id it names: the")
+            w.line("# body's link its data belongs to (an Odometry's pose is in odom, that link its child frame).")
+            w.line("publishers: dict[str, tuple[Any, Any, Callable[[Any, dict[str, Any]], None], str, str]] = {")
             with w.indented():
                 for o, adapter in self.outputs:
                     cls = self.message(adapter)
                     w.line(f"{quoted(o.name)}: (")
                     with w.indented():
                         w.lines([f"rospy.Publisher({quoted(o.name)}, {cls}, queue_size=10),", f"{cls},",
-                                 f"_ros_fill_{_name(o.name)},", f"{quoted(self.model.frame_id(o))},"])
+                                 f"_ros_fill_{_name(o.name)},",
+                                 *(f"{quoted(frame)}," for frame in ros.header_frames(self.model, o))])
                     w.line("),")
             w.line("}")
             w.blank()
             with w.block("def on_output(message: OutputMessage) -> None:"):
-                w.line('publisher, message_type, fill, frame_id = publishers[message["name"]]')
+                w.line('publisher, message_type, fill, frame_id, child_frame_id = publishers[message["name"]]')
                 w.line("msg = message_type()")
                 w.line('fill(msg, message["contents"])')
-                w.line("_ros_header(msg, message.read_ns, frame_id)")
+                w.line("_ros_header(msg, message.read_ns, frame_id, child_frame_id)")
                 w.line("publisher.publish(msg)")
             w.blank()
             with w.block("def on_error(error: BaseException) -> None:"):

@@ -159,7 +159,8 @@ class Output:
     name: str
     fields: Callable[[StateValues], dict[str, Value]]
     adapter: str = ""
-    frame: str = ""  # the frame id its stamped messages name (`Model.frame_id`): a link of the body, or none
+    frame: str = ""  # its stamped messages' frame id and child frame id (`semantics.ros.header_frames`)
+    child_frame: str = ""
 
 
 @dataclass(frozen=True, slots=True)

@@ -65,7 +65,7 @@ class Recorder:
         self._device = robot.device
         delivered = [o for i in robot.device.interfaces.values() for o in i.outputs]
         self._adapters = {o.name: o.adapter for o in delivered}
-        self._frames = {o.name: o.frame for o in delivered}
+        self._frames = {o.name: (o.frame, o.child_frame) for o in delivered}
         self._lock = threading.Lock()
         self._time = 0
         self._schemas: dict[str, Any] = {}
@@ -93,7 +93,7 @@ class Recorder:
         """An output delivered: its header (if its message has one) stamped when its data was read,
         in its frame."""
         name = message["name"]
-        header = (message.read_ns, self._frames.get(name, ""))
+        header = (message.read_ns, *self._frames.get(name, ("", "")))
         self._adapted(name, self._adapters.get(name, ""), message["contents"], header)
 
     def error(self, error: BaseException) -> None:
@@ -118,10 +118,11 @@ class Recorder:
                     self._file.close()
 
     def _adapted(self, name: str, adapter: str, contents: Mapping[str, Any],
-                 header: tuple[int, str] | None = None) -> None:
+                 header: tuple[int, str, str] | None = None) -> None:
         """An adapter's values on `/NAME`: its ROS 2 message, or JSON text. A message with a
-        std_msgs/Header is stamped with `header` (an output's: when its data was read, and its
-        frame id), else (an input) with the time it is recorded at, as a ROS 2 publisher's is."""
+        std_msgs/Header is stamped with `header` (an output's: when its data was read, its frame
+        id and child frame id), else (an input) with the time it is recorded at, as a ROS 2
+        publisher's is."""
         message = self._device.messages.get(adapter)
         if message is None:
             text = json.dumps(dict(contents), default=list)
@@ -130,8 +131,10 @@ class Recorder:
         stamp = self._stamp()
         members = ros_message(message, contents)
         if _HEADER in message.definition.partition(_SEPARATOR)[0].splitlines():
-            read_ns, frame = (stamp, "") if header is None else header
+            read_ns, frame, child = (stamp, "", "") if header is None else header
             members.setdefault("header", {}).update(stamp=_time(read_ns), frame_id=frame)
+            if child:
+                members["child_frame_id"] = child
         self._write(f"/{name}", message.type, message.definition, members, stamp)
 
     def _stamp(self) -> int:
