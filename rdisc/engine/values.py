@@ -18,7 +18,6 @@ Args = list[Any]
 """The values of a call's parameters (or an input's fields), by position."""
 
 
-
 class OutputMessage(dict[str, Any]):
     """An output as its callbacks get it: `{"name": ..., "contents": {...}}`, and `read_ns`, when
     the state it was computed from was read (the newest reply's, in nanoseconds since the epoch,
