@@ -387,7 +387,7 @@ declarations = st.one_of(
         doc=docs,
     ),
     st.builds(ast.InputDecl, ids, ids, calls, doc=docs),
-    st.builds(ast.OutputDecl, ids, ids, st.lists(assigns, max_size=3).map(tuple), doc=docs),
+    st.builds(ast.OutputDecl, ids, ids, st.lists(assigns, max_size=3).map(tuple), doc=docs, frame=st.none() | ids),
     st.builds(ast.ImportDecl, strings, doc=docs),
     st.builds(
         ast.LinkDecl, ids,
