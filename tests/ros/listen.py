@@ -4,7 +4,8 @@ line, for the body's tests. Run by the system python3.
 
 A JointState is its names, position, velocity and effort (NaN, which JSON lacks, as null)
 and its stamp in seconds; a TFMessage is one line per transform: parent and child frame,
-translation and rotation (x, y, z, w); an Odometry is its position's x and y; a Range is its
+translation and rotation (x, y, z, w); an Odometry is its position's x and y, its frames and
+stamp (ns); a Range is its
 range, its header's stamp (ns) and frame id, and when it was received (ns, the host's clock). It ends by itself after a minute, so a test reading it
 until some message never waits longer."""
 
@@ -38,7 +39,8 @@ def transforms(msg: TFMessage) -> None:
 
 def odometry(msg: Odometry) -> None:
     where = msg.pose.pose.position
-    print(json.dumps({"x": where.x, "y": where.y}), flush=True)
+    print(json.dumps({"x": where.x, "y": where.y, "frame_id": msg.header.frame_id, "child_frame_id": msg.child_frame_id,
+                      "stamp": msg.header.stamp.to_nsec()}), flush=True)
 
 
 def ranged(msg: Range) -> None:

@@ -176,6 +176,39 @@ def test_a_range_is_stamped_when_its_reply_was_read_and_names_its_frame(ros_env:
         assert ranged["received"] - stamp >= 60_000_000  # published after the delay, stamped before it
 
 
+# An Odometry of a robot with a body: the Create's voltage sensor (15000 mV) read as how far it went (15 m).
+TRAVELLED = """\
+robot travelled { author "tests" }
+state x: float = 0.0
+connection link: serial { baud 57600  threading single at 20 Hz }
+primitive voltage() on link pack "BB" (142, 22) unpack ">H" { x = out[0] / 1000 }
+interface poll() periodic triggers odom { voltage() }
+output odom: Odometry { x = x  y = 0.0  theta = 0.0  linear = 0.0  angular = 0.0 }
+link chassis { mass 2  inertia [0.1, 0.1, 0.1] }
+"""
+
+
+def test_an_odometry_is_in_odom_with_the_base_as_its_child_frame(ros_env: dict[str, str], tmp_path: Path) -> None:
+    """REP 105: the pose in the fixed `odom` frame, the body's base (`chassis`) its child frame,
+    stamped when the device's reply was read."""
+    source, node_file = tmp_path / "travelled.rdis", tmp_path / "travelled_node.py"
+    source.write_text(TRAVELLED, encoding="utf-8")
+    done = subprocess.run(["python", "-m", "rdisc", "emit-ros", str(source), "-o", str(node_file)], cwd=REPO,
+                          capture_output=True, text=True, check=False)
+    assert done.returncode == 0, done.stderr
+    with CreateEmulator() as device:
+        node = _start_node(node_file, ros_env, device)
+        listener = _listen(ros_env, "odom")
+        try:
+            odometry = _until(listener, lambda m: m["x"] == 15.0)[-1]
+        finally:
+            _stop(listener)
+            _stop(node)
+        replies = [at for at, _ in device.sent]
+    assert (odometry["frame_id"], odometry["child_frame_id"]) == ("odom", "chassis")
+    assert any(at <= odometry["stamp"] for at in replies)
+
+
 # Appendix C's mapping: the bumpers published as a std_msgs/Bool "hit", by an adapter of the description's own.
 HIT = """\
 robot hit_create { author "tests" }
