@@ -38,6 +38,7 @@ from rdisc.lowering.constructs import (
 from rdisc.lowering.messages import recorded_messages
 from rdisc.semantics import model as m
 from rdisc.semantics.evaluate import prepare
+from rdisc.semantics.ros import header_frames
 
 __all__ = ["Call", "Code", "Connection", "Device", "Frame", "FrameUse", "Gives", "Hook", "Input", "Interface",
            "Output", "Plans", "Primitive", "Written", "frame", "lower"]
@@ -266,6 +267,8 @@ class Output:
     name: str
     fields: Code
     adapter: str = ""
+    frame: str = ""
+    child_frame: str = ""
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -465,7 +468,7 @@ class _Lowering:
     def output(self, o: m.DomainOutput) -> Output:
         adapter = self.model.adapters[o.adapter]
         fields = tuple((name, e, _field_type(adapter, name, e)) for name, e in o.fields)
-        return Output(o.name, Code(("state",), Gives.DICT, (), fields), o.adapter)
+        return Output(o.name, Code(("state",), Gives.DICT, (), fields), o.adapter, *header_frames(self.model, o))
 
     def interface(self, iface: m.Interface, primitives: Mapping[str, Primitive], outputs: Mapping[str, Output],
                   callees: Mapping[str, Interface]) -> Interface:

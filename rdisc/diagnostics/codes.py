@@ -75,8 +75,11 @@ would hide. Both places are shown."""),
 A reference to an element that is not declared: a primitive or interface called
 by an interface (a call names a primitive of that name, or else an interface), an
 interface called by a hook or an input, an output triggered by an interface, a
-connection, a frame, or an adapter. When a declared name is close, the help line
-suggests it."""),
+connection, a frame, an adapter, a link joined by a joint or named by an output's
+`frame` (`output detect_bump: Range frame bumper`: the body's link its data belongs
+to, whose name its messages carry as their frame), or a joint a transmission moves
+and the state variable it measures.
+When a declared name is close, the help line suggests it."""),
     ("E103", "unknown-variable", """
 A name used in an expression is not in scope there. Scopes follow the thesis:
 state variables are readable everywhere except in initial values; primitives also

@@ -159,11 +159,6 @@ class Bridge:
         w.blank(2)
         self.main(w)
 
-    def frame(self, output: m.DomainOutput) -> str:
-        """The `frame_id` of an output's stamped messages: the body's base link, else empty."""
-        root = self.model.root_link()
-        return root.name if root is not None else ""
-
     def stamped(self, adapter: m.Adapter) -> bool:
         """Whether an adapter's message has a `std_msgs/Header header` to stamp (as the table of
         messages defines it; a message not in it is published as filled)."""
@@ -173,7 +168,10 @@ class Bridge:
     def publishers(self, w: Writer, publisher: str) -> None:
         """`publishers`: each output's publisher (`publisher` formatted with `topic` and `message`),
         message class, filling, and the frame of a stamped message (None: no header)."""
-        w.line("publishers: dict[str, tuple[Any, Any, Callable[[Any, dict[str, Any]], None], str | None]] = {")
+        w.line("# Each output's publisher, message, filling, and for a stamped message the frame id and child")
+        w.line("# frame id it names: the body's link its data belongs to (an Odometry's pose is in odom, that")
+        w.line("# link its child frame); None: no header.")
+        w.line("publishers: dict[str, tuple[Any, Any, Callable[[Any, dict[str, Any]], None], tuple[str, str] | None]] = {")
         with w.indented():
             for o, adapter in self.outputs:
                 cls = self.message(adapter)
@@ -181,22 +179,24 @@ class Bridge:
                 with w.indented():
                     w.lines([publisher.format(topic=quoted(o.name), message=cls) + ",", f"{cls},",
                              f"_ros_fill_{name(o.name)},",
-                             f"{quoted(self.frame(o)) if self.stamped(adapter) else None},"])
+                             f"{_frames(ros.header_frames(self.model, o)) if self.stamped(adapter) else None},"])
                 w.line("),")
         w.line("}")
 
     def on_output(self, w: Writer, now: str, publish: str) -> None:
         """`on_output`: an output as its message, published (`publish` formatted with `publisher`
         and `msg`); a message with a header is stamped here, and only here, for both ROS versions:
-        the time its data was read (the output is delivered on the connection's thread as its
-        reply is read) as `now` makes it of `time.time()`, and its frame."""
-        with w.block("def on_output(message: dict[str, Any]) -> None:"):
-            w.line('publisher, message_type, fill, frame_id = publishers[message["name"]]')
+        the time its data was read (`OutputMessage.read_ns`, not the time of publishing) as `now`
+        makes it of nanoseconds, and its frames."""
+        with w.block("def on_output(message: OutputMessage) -> None:"):
+            w.line('publisher, message_type, fill, frames = publishers[message["name"]]')
             w.line("msg = message_type()")
             w.line('fill(msg, message["contents"])')
-            with w.block("if frame_id is not None:"):
-                w.line(f"msg.header.stamp = {now.format(seconds='time.time()')}")
-                w.line("msg.header.frame_id = frame_id")
+            with w.block("if frames is not None:"):
+                w.line(f"msg.header.stamp = {now.format(nanoseconds='message.read_ns')}")
+                w.line("msg.header.frame_id, child_frame_id = frames")
+                with w.block("if child_frame_id:"):
+                    w.line("msg.child_frame_id = child_frame_id")
             w.line(publish.format(publisher="publisher", msg="msg"))
 
     def body(self, w: Writer) -> None:
@@ -407,3 +407,8 @@ def _write(root: str, path: str, value: str) -> str:
     if index is None:
         return f"{holder}.{field} = {value}"
     return f"{holder}.{field} = _ros_with({holder}.{field}, {index}, {value})"
+
+
+def _frames(frames: tuple[str, str]) -> str:
+    """A stamped output's (frame id, child frame id) as source."""
+    return f"({quoted(frames[0])}, {quoted(frames[1])})"

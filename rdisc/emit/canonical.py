@@ -318,6 +318,7 @@ def _output(o: m.DomainOutput) -> JsonObject:
     return _object(
         ("name", o.name),
         ("adapter", o.adapter),
+        ("frame", o.frame),
         ("returns", {name: _embedded(value) for name, value in o.fields}),
         ("doc", o.doc),
     )

@@ -142,6 +142,8 @@ def _edges(model: m.Model) -> Iterator[tuple[str, str, str]]:
         yield f"input:{d.name}", f"interface:{d.interface}", "calls"
     for o in model.outputs.values():
         yield f"output:{o.name}", f"adapter:{o.adapter}", "sends"
+        if o.frame is not None:  # the link its data belongs to, as written (the base's is not drawn)
+            yield f"output:{o.name}", f"link:{o.frame}", "in frame"
         for name in _reads(*(e for _, e in o.fields)):
             yield variable(name), f"output:{o.name}", "read by"
     for j in model.joints.values():  # the body as a tree: parent link, joint, child link

@@ -135,7 +135,7 @@ class _Ros1(Bridge):
                 w.line('joint_states = rospy.Publisher("joint_states", sensor_msgs_msg.JointState, queue_size=10)')
             self.publishers(w, "rospy.Publisher({topic}, {message}, queue_size=10)")
             w.blank()
-            self.on_output(w, "rospy.Time.from_sec({seconds})", "{publisher}.publish({msg})")
+            self.on_output(w, "rospy.Time(*divmod({nanoseconds}, 1_000_000_000))", "{publisher}.publish({msg})")
             w.blank()
             with w.block("def on_error(error: BaseException) -> None:"):
                 w.line('rospy.logerr("%s: %s", type(error).__name__, error)')

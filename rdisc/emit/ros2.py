@@ -192,7 +192,7 @@ class _Ros2(Bridge):
             w.line("node = _Ros2Node(ROBOT, remaps, messages)")
             self.publishers(w, "node.publisher({topic}, {message}, node.sensor_data)")
             w.blank()
-            self.on_output(w, "_ros2_time({seconds}, builtin_interfaces_msg.Time)", "{publisher}.write({msg})")
+            self.on_output(w, "_ros2_time({nanoseconds}, builtin_interfaces_msg.Time)", "{publisher}.write({msg})")
             w.blank()
             with w.block("def on_error(error: BaseException) -> None:"):
                 w.line('node.errors.write(std_msgs_msg.String(data=f"{type(error).__name__}: {error}"))')
@@ -215,7 +215,7 @@ class _Ros2(Bridge):
                             w.lines([
                                 "position, velocity, effort = _ros_joint_states(robot.state)",
                                 "joint_states.write(sensor_msgs_msg.JointState(",
-                                "    header=std_msgs_msg.Header(stamp=_ros2_time(time.time(), builtin_interfaces_msg.Time)),",
+                                "    header=std_msgs_msg.Header(stamp=_ros2_time(time.time_ns(), builtin_interfaces_msg.Time)),",
                                 "    name=list(_ROS_JOINTS), position=position, velocity=velocity, effort=effort))",
                             ])
                         w.line("except Exception as err:  # noqa: BLE001 - reported, and the node keeps publishing")

@@ -43,9 +43,8 @@ def _ros2_struct(name: str, members: tuple[tuple[str, Any, Any], ...]) -> Any:
     return dataclass(made)
 
 
-def _ros2_time(seconds: float, time_type: Any) -> Any:
-    """A builtin_interfaces/Time of `seconds` since the epoch."""
-    nanoseconds = round(seconds * 1e9)
+def _ros2_time(nanoseconds: int, time_type: Any) -> Any:
+    """A builtin_interfaces/Time of `nanoseconds` since the epoch."""
     return time_type(sec=nanoseconds // 1_000_000_000, nanosec=nanoseconds % 1_000_000_000)
 
 

@@ -92,7 +92,15 @@ from rdisc.engine.plans import (
 from rdisc.engine.ports import Port, PortSpec, Simulator
 from rdisc.engine.recording import BYTES_TYPE, LOG_TYPE, RUNS_TOPIC, TEXT_TYPE, Recorder, ros_message
 from rdisc.engine.robot import Calls, Robot, State
-from rdisc.engine.values import Args, ErrorCallback, IoCallback, OutputCallback, StateValues, Value
+from rdisc.engine.values import (
+    Args,
+    ErrorCallback,
+    IoCallback,
+    OutputCallback,
+    OutputMessage,
+    StateValues,
+    Value,
+)
 from rdisc.engine.wire import (
     MAX_FRAME,
     MAX_SKIP,
@@ -172,6 +180,7 @@ __all__ = [
     "OptionalParts",
     "Output",
     "OutputCallback",
+    "OutputMessage",
     "Pack",
     "Param",
     "Part",

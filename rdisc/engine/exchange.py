@@ -40,7 +40,7 @@ from rdisc.engine.plans import (
     TaggedStream,
 )
 from rdisc.engine.ports import Port, Simulator, _Link, _write_timed_out
-from rdisc.engine.values import Args, ErrorCallback, IoCallback, OutputCallback, Value
+from rdisc.engine.values import Args, ErrorCallback, IoCallback, OutputCallback, OutputMessage, Value
 from rdisc.engine.wire import FrameError, Incoming
 
 _log = logging.getLogger("rdisc")
@@ -58,6 +58,7 @@ class Exchange:
     name: str
     timeout: float
     _state: dict[str, Value]
+    _read_ns: int | None  # when a reply last changed the state (ns since the epoch); None: none has
     _state_lock: threading.Lock
     _callback_lock: threading.RLock
     _output_callbacks: list[OutputCallback]
@@ -511,16 +512,19 @@ class Exchange:
                         raise RdisValueError(f"{plan.name}: {name} would be a {value.bit_length()}-bit integer; "
                                              "integers are limited to 64 bits and a sign")
                 state = {**state, **changes}
+            self._read_ns = time.time_ns()  # the reply just read: an output's `read_ns`
             self._state = state
 
     # ---- delivering to callbacks: one at a time, a failing one reported -----------------------------
 
     def _deliver(self, plan: Output) -> None:
+        with self._state_lock:  # the snapshot and when it was read, together
+            state, read_ns = self._state, self._read_ns
         try:
-            contents = plan.fields(self._state)
+            contents = plan.fields(state)
         except EVAL_ERRORS as err:
             raise RdisValueError(f"{plan.name}: {err}") from None
-        message: dict[str, Any] = {"name": plan.name, "contents": contents}
+        message = OutputMessage(plan.name, contents, time.time_ns() if read_ns is None else read_ns)
         with self._callback_lock:
             for callback in list(self._output_callbacks):
                 try:

@@ -262,6 +262,8 @@ class Output:
     name: str
     fields: Callable[[StateValues], dict[str, Value]]
     adapter: str = ""
+    frame: str = ""  # its stamped messages' frame id and child frame id (`semantics.ros.header_frames`)
+    child_frame: str = ""
 
 
 @dataclass(frozen=True, slots=True)

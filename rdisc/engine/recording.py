@@ -14,6 +14,7 @@ from typing import Any
 
 from rdisc.engine.plans import Message
 from rdisc.engine.robot import Robot
+from rdisc.engine.values import OutputMessage
 
 _SEPARATOR = "=" * 80  # between a ros2msg schema's message and each message it uses
 _HEADER = "std_msgs/Header header"  # a message's field, which a recording stamps
@@ -62,7 +63,9 @@ class Recorder:
             output = self._file = open(output, "wb" if replace else "xb")  # noqa: SIM115 (closed by finish)
         self._writer: Any = Writer(output)
         self._device = robot.device
-        self._adapters = {o.name: o.adapter for i in robot.device.interfaces.values() for o in i.outputs}
+        delivered = [o for i in robot.device.interfaces.values() for o in i.outputs]
+        self._adapters = {o.name: o.adapter for o in delivered}
+        self._frames = {o.name: (o.frame, o.child_frame) for o in delivered}
         self._lock = threading.Lock()
         self._time = 0
         self._schemas: dict[str, Any] = {}
@@ -86,8 +89,12 @@ class Recorder:
         run = {kind: name, "connection": connection}
         self._write(RUNS_TOPIC, TEXT_TYPE, _TEXT_SCHEMA, {"data": json.dumps(run)})
 
-    def output(self, message: dict[str, Any]) -> None:
-        self._adapted(message["name"], self._adapters.get(message["name"], ""), message["contents"])
+    def output(self, message: OutputMessage) -> None:
+        """An output delivered: its header (if its message has one) stamped when its data was read,
+        in its frame."""
+        name = message["name"]
+        header = (message.read_ns, *self._frames.get(name, ("", "")))
+        self._adapted(name, self._adapters.get(name, ""), message["contents"], header)
 
     def error(self, error: BaseException) -> None:
         stamp = self._stamp()
@@ -110,9 +117,12 @@ class Recorder:
                 if self._file is not None:
                     self._file.close()
 
-    def _adapted(self, name: str, adapter: str, contents: Mapping[str, Any]) -> None:
+    def _adapted(self, name: str, adapter: str, contents: Mapping[str, Any],
+                 header: tuple[int, str, str] | None = None) -> None:
         """An adapter's values on `/NAME`: its ROS 2 message, or JSON text. A message with a
-        std_msgs/Header is stamped with the time it is recorded at, as a ROS 2 publisher's is."""
+        std_msgs/Header is stamped with `header` (an output's: when its data was read, its frame
+        id and child frame id), else (an input) with the time it is recorded at, as a ROS 2
+        publisher's is."""
         message = self._device.messages.get(adapter)
         if message is None:
             text = json.dumps(dict(contents), default=list)
@@ -121,7 +131,10 @@ class Recorder:
         stamp = self._stamp()
         members = ros_message(message, contents)
         if _HEADER in message.definition.partition(_SEPARATOR)[0].splitlines():
-            members.setdefault("header", {})["stamp"] = _time(stamp)
+            read_ns, frame, child = (stamp, "", "") if header is None else header
+            members.setdefault("header", {}).update(stamp=_time(read_ns), frame_id=frame)
+            if child:
+                members["child_frame_id"] = child
         self._write(f"/{name}", message.type, message.definition, members, stamp)
 
     def _stamp(self) -> int:

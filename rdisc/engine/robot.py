@@ -109,6 +109,7 @@ class Robot(Exchange):
         self._state_lock = threading.Lock()
         self._callback_lock = threading.RLock()  # callbacks run one at a time
         self._output_callbacks: list[OutputCallback] = []
+        self._read_ns: int | None = None  # when a reply last changed the state
         self._error_callbacks: list[ErrorCallback] = []
         self._io_callbacks: list[IoCallback] = []
         self._run_callbacks: list[Callable[[str, str, str], object]] = []  # a Recorder's: what a thread runs
@@ -128,7 +129,8 @@ class Robot(Exchange):
     # ---- callbacks --------------------------------------------------------------------------------
 
     def on_output(self, callback: OutputCallback) -> OutputCallback:
-        """Call `callback({"name": ..., "contents": {...}})` for every output triggered."""
+        """Call `callback({"name": ..., "contents": {...}})` for every output triggered: an
+        `OutputMessage`, whose `read_ns` says when its data was read."""
         with self._callback_lock:
             self._output_callbacks.append(callback)
         return callback

@@ -17,7 +17,22 @@ its variable's declared type, which the checker knows and Python's types cannot 
 Args = list[Any]
 """The values of a call's parameters (or an input's fields), by position."""
 
-OutputCallback = Callable[[dict[str, Any]], object]
+
+class OutputMessage(dict[str, Any]):
+    """An output as its callbacks get it: `{"name": ..., "contents": {...}}`, and `read_ns`, when
+    the state it was computed from was read (the newest reply's, in nanoseconds since the epoch,
+    the host's clock; when it was delivered if no reply has changed the state yet). What a
+    framework's header stamp carries: the data's time, not the publishing's. A dict, so that it
+    compares, prints and serialises as the two keys it holds."""
+
+    __slots__ = ("read_ns",)
+
+    def __init__(self, name: str, contents: dict[str, Any], read_ns: int) -> None:
+        super().__init__(name=name, contents=contents)
+        self.read_ns = read_ns
+
+
+OutputCallback = Callable[[OutputMessage], object]
 ErrorCallback = Callable[[BaseException], object]
 IoCallback = Callable[[str, str, bytes], object]
 """`(direction, connection, data)`: "write" or "read" and the bytes, or "lines" and the modem

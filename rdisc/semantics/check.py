@@ -1684,6 +1684,7 @@ class _Checker:
 
     def output(self, decl: ast.OutputDecl, adapters: dict[str, m.Adapter]) -> m.DomainOutput:
         adapter = adapters.get(decl.adapter.text)
+        frame = None if decl.frame is None else decl.frame.text
         env = Env(dict(self.state_env), "in an output", "state variables")
         values: dict[str, m.Expr] = {}
         first: dict[str, ast.Assign] = {}
@@ -1708,7 +1709,7 @@ class _Checker:
             self.flow(value, field.type, assign.value.span, f"field `{field.name}` of `{adapter.name}`")
             values[field.name] = value
         if adapter is None:
-            return m.DomainOutput(decl.name.text, m.AdapterRef(decl.adapter.text), (), decl.doc, decl.span)
+            return m.DomainOutput(decl.name.text, m.AdapterRef(decl.adapter.text), (), decl.doc, decl.span, frame)
         missing = [f.name for f in adapter.fields if f.name not in values and f.name not in first]
         if missing and len(first) == len(decl.fields):  # a misspelt field already explains the gap
             self.d.report(
@@ -1718,7 +1719,7 @@ class _Checker:
                 help="an output defines every field of its adapter",
             )
         fields = tuple((f.name, values[f.name]) for f in adapter.fields if f.name in values)
-        return m.DomainOutput(decl.name.text, m.AdapterRef(adapter.name), fields, decl.doc, decl.span)
+        return m.DomainOutput(decl.name.text, m.AdapterRef(adapter.name), fields, decl.doc, decl.span, frame)
 
     # -- what is declared and never used ----------------------------------------------------
 

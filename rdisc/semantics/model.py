@@ -828,6 +828,7 @@ class DomainOutput:
     fields: tuple[tuple[str, Expr], ...]  # in the adapter's field order
     doc: str | None = None
     span: Span | None = _span
+    frame: str | None = None  # the link its data belongs to, as written (`Model.frame_id` when not)
 
 
 # ---- the body (thesis ch. 6) -------------------------------------------------------
@@ -978,6 +979,15 @@ class Model:
         """The link no joint moves: the checker allows exactly one when there are links."""
         children = {j.child for j in self.joints.values()}
         return next((link for link in self.links.values() if link.name not in children), None)
+
+    def frame_id(self, output: DomainOutput) -> str:
+        """The frame a framework's stamped message of `output` names (ROS's `header.frame_id`):
+        its `frame` link, else the body's base, else "" (no body: no frame to name). Every
+        emitter asks here."""
+        if output.frame is not None:
+            return output.frame
+        root = self.root_link()
+        return "" if root is None else root.name
 
     def owner(self, iface: Interface) -> str | None:
         """The connection whose thread runs a periodic interface: its first primitive's."""

@@ -1757,16 +1757,18 @@ def _init_DomainOutput(
     fields: Any,
     doc: Any = DEFAULT,
     span: Any = DEFAULT,
+    frame: Any = DEFAULT,
 ) -> None:
     _set(self, "name", name)
     _set(self, "adapter", adapter)
     _set(self, "fields", fields)
     _set(self, "doc", doc)
     _set(self, "span", span)
+    _set(self, "frame", frame)
 
 
 def _repr_DomainOutput(self: Any) -> str:
-    return f"{self.__class__.__qualname__}(name={self.name!r}, adapter={self.adapter!r}, fields={self.fields!r}, doc={self.doc!r})"
+    return f"{self.__class__.__qualname__}(name={self.name!r}, adapter={self.adapter!r}, fields={self.fields!r}, doc={self.doc!r}, frame={self.frame!r})"
 
 
 def _eq_DomainOutput(self: Any, other: Any) -> Any:
@@ -1776,17 +1778,19 @@ def _eq_DomainOutput(self: Any, other: Any) -> Any:
             self.adapter,
             self.fields,
             self.doc,
+            self.frame,
         ) == (
             other.name,
             other.adapter,
             other.fields,
             other.doc,
+            other.frame,
         )
     return NotImplemented
 
 
 def _hash_DomainOutput(self: Any) -> int:
-    return hash((self.name, self.adapter, self.fields, self.doc))
+    return hash((self.name, self.adapter, self.fields, self.doc, self.frame))
 
 
 def _init_Pose(self: Any, xyz: Any = DEFAULT, rpy: Any = DEFAULT) -> None:
@@ -2809,6 +2813,7 @@ WRITTEN: dict[str, Written] = {
             ("fields", MISSING),
             ("doc", DEFAULT),
             ("span", FieldSpec(None, MISSING, False, False)),
+            ("frame", DEFAULT),
         ),
         {
             "__init__": _init_DomainOutput,

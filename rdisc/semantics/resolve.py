@@ -201,6 +201,8 @@ def _bind(decl: ast.Decl, symbols: Symbols, callables: Mapping[str, object], dia
             need(decl.call.target, symbols.interfaces, "interface")
         case ast.OutputDecl():
             need(decl.adapter, symbols.adapters, "adapter")
+            if decl.frame is not None:
+                need(decl.frame, symbols.links, "link")
         case ast.JointDecl():
             need(decl.parent, symbols.links, "link")
             need(decl.child, symbols.links, "link")

@@ -11,6 +11,10 @@ from __future__ import annotations
 
 import keyword
 import re
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from rdisc.semantics import model as m
 
 MAX_INDEX = 1023  # a list item past it would make the node grow the list that far
 
@@ -56,3 +60,18 @@ def steps(path: str) -> tuple[list[tuple[str, int | None]], str | None]:
         assert found is not None, path  # checked by path_problem
         out.append((found.group(1), None if found.group(2) is None else int(found.group(2))))
     return out, conversion or None
+
+
+ODOMETRY = "nav_msgs/Odometry"
+ODOMETRY_FRAME = "odom"  # REP 105's fixed frame of odometry
+
+
+def header_frames(model: m.Model, output: m.DomainOutput) -> tuple[str, str]:
+    """The `header.frame_id` and `child_frame_id` ("": none) of an output's stamped messages, for
+    every framework and recording: its link (`Model.frame_id`: its `frame`, else the body's base),
+    but an Odometry's pose is in the fixed `odom` frame and its twist in that link, its child
+    frame (REP 105). Without a body, neither is named."""
+    link = model.frame_id(output)
+    if link and model.adapters[output.adapter].ros == ODOMETRY:
+        return ODOMETRY_FRAME, link
+    return link, ""

@@ -524,11 +524,14 @@ class InputDecl:
 
 @dataclass(frozen=True, slots=True)
 class OutputDecl:
+    """`output NAME: ADAPTER [frame LINK] { field = expr ... }`."""
+
     name: Ident
     adapter: Ident
     fields: tuple[Assign, ...]
     span: Span = _span
     doc: str | None = None
+    frame: Ident | None = None  # the body's link its data belongs to (its base when not given)
 
 
 @dataclass(frozen=True, slots=True)

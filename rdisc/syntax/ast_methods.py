@@ -1376,16 +1376,18 @@ def _init_OutputDecl(
     fields: Any,
     span: Any = DEFAULT,
     doc: Any = DEFAULT,
+    frame: Any = DEFAULT,
 ) -> None:
     _set(self, "name", name)
     _set(self, "adapter", adapter)
     _set(self, "fields", fields)
     _set(self, "span", span)
     _set(self, "doc", doc)
+    _set(self, "frame", frame)
 
 
 def _repr_OutputDecl(self: Any) -> str:
-    return f"{self.__class__.__qualname__}(name={self.name!r}, adapter={self.adapter!r}, fields={self.fields!r}, doc={self.doc!r})"
+    return f"{self.__class__.__qualname__}(name={self.name!r}, adapter={self.adapter!r}, fields={self.fields!r}, doc={self.doc!r}, frame={self.frame!r})"
 
 
 def _eq_OutputDecl(self: Any, other: Any) -> Any:
@@ -1395,17 +1397,19 @@ def _eq_OutputDecl(self: Any, other: Any) -> Any:
             self.adapter,
             self.fields,
             self.doc,
+            self.frame,
         ) == (
             other.name,
             other.adapter,
             other.fields,
             other.doc,
+            other.frame,
         )
     return NotImplemented
 
 
 def _hash_OutputDecl(self: Any) -> int:
-    return hash((self.name, self.adapter, self.fields, self.doc))
+    return hash((self.name, self.adapter, self.fields, self.doc, self.frame))
 
 
 def _init_TableLit(self: Any, entries: Any, span: Any = DEFAULT) -> None:
@@ -2649,6 +2653,7 @@ WRITTEN: dict[str, Written] = {
             ("fields", MISSING),
             ("span", FieldSpec(None, MISSING, False, False)),
             ("doc", DEFAULT),
+            ("frame", DEFAULT),
         ),
         {
             "__init__": _init_OutputDecl,

@@ -606,8 +606,9 @@ def _transformer_class() -> Callable[[Builder], Transformer[Token, list[ast.Decl
             return ast.InputDecl(self.b.ident(c[0]), self.b.ident(c[1]), call, self.b.span(meta), self.b.doc(meta))
 
         def output_decl(self, meta: Meta, c: list[Any]) -> ast.OutputDecl:
+            frame = None if c[2] is None else self.b.ident(c[2])
             return ast.OutputDecl(
-                self.b.ident(c[0]), self.b.ident(c[1]), tuple(c[2:]), self.b.span(meta), self.b.doc(meta)
+                self.b.ident(c[0]), self.b.ident(c[1]), tuple(c[3:]), self.b.span(meta), self.b.doc(meta), frame
             )
 
         def params(self, meta: Meta, c: list[ast.Param | None]) -> tuple[ast.Param, ...]:

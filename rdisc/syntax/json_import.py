@@ -351,7 +351,7 @@ _CALL = ("name", "arguments", "delay", "priority", "when")
 _ADAPTER = ("name", "ros", "fields", "doc")
 _FIELD = ("name", "type", "unit", "ros", "doc")
 _INPUT = ("name", "adapter", "parameters", "calls", "doc")
-_OUTPUT = ("name", "adapter", "returns", "doc")
+_OUTPUT = ("name", "adapter", "frame", "returns", "doc")
 _LINK = ("name", "visuals", "collisions", "inertial", "doc")
 _SHAPE = ("shape", "path", "size", "scale", "xyz", "rpy")
 _INERTIAL = ("mass", "centre", "inertia")
@@ -1024,7 +1024,8 @@ class _Importer:
         for field_, value in written:
             expr = self.expr(value, types.get(field_.text))
             assigns.append(None if expr is None else ast.Assign(field_, expr, value.span))
-        return ast.OutputDecl(name, adapter, _present(assigns), obj.span, self.doc(m))
+        frame = None if "frame" not in m else self.ident(m["frame"], "`frame`")
+        return ast.OutputDecl(name, adapter, _present(assigns), obj.span, self.doc(m), frame)
 
     # -- the body: the RDIS clauses its members stand for, checked by the checker --
 

@@ -95,8 +95,9 @@ def _code(d: ast.Decl) -> list[str]:
             return _block(head, [line for f in fields for line in _doc(f.doc) + [_field(f)]])
         case ast.InputDecl(name, adapter, call):
             return _call_lines(f"input {name.text}: {adapter.text} -> ", call, "", 0)
-        case ast.OutputDecl(name, adapter, fields):
-            return _block(f"output {name.text}: {adapter.text}", [_assign(a) for a in fields])
+        case ast.OutputDecl(name, adapter, fields, frame=frame):
+            at = "" if frame is None else f" frame {frame.text}"
+            return _block(f"output {name.text}: {adapter.text}{at}", [_assign(a) for a in fields])
         case ast.ConstDecl(name, value):
             if isinstance(value, ast.TableLit):
                 return _block(f"const {name.text} =", [f"{print_expr(k)}: {print_expr(v)}," for k, v in value.entries])

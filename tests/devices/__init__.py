@@ -42,6 +42,7 @@ class PtyDevice:
     def __init__(self) -> None:
         self.port = ""
         self.chunks: list[tuple[float, bytes]] = []  # (time.monotonic(), bytes) as read
+        self.sent: list[tuple[int, bytes]] = []  # (time.time_ns(), bytes) as written: the host's clock, as a stamp's
         self._received = bytearray()
         self._cond = threading.Condition()
         self._master: int | None = None
@@ -64,6 +65,7 @@ class PtyDevice:
         if master is None or not data:
             return
         try:
+            self.sent.append((time.time_ns(), data))  # before the host can read it
             os.write(master, data)
         except OSError:
             pass

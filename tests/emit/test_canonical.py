@@ -16,7 +16,8 @@ from rdisc.semantics import model as m
 from rdisc.semantics.model import Scope, Type
 
 ROOT = Path(__file__).resolve().parents[2]
-EXAMPLES = [*sorted((ROOT / "examples").glob("*.rdis")), ROOT / "tests" / "golden" / "json" / "body.rdis"]
+FRAMED = ROOT / "tests" / "runtime" / "data" / "framed_create.rdis"  # an output's `frame`
+EXAMPLES = [*sorted((ROOT / "examples").glob("*.rdis")), ROOT / "tests" / "golden" / "json" / "body.rdis", FRAMED]
 
 
 def const(value: m.Value, type_: Type) -> m.Const:
@@ -373,3 +374,17 @@ def test_byte_identical_under_two_hash_seeds(path: Path, rdisc) -> None:
     outputs = [rdisc("build", path, env=cli_env(PYTHONHASHSEED=seed)) for seed in ("1", "2")]
     assert outputs[0].returncode == 0, outputs[0].stderr
     assert outputs[0].stdout == outputs[1].stdout
+
+
+def test_an_output_s_frame_is_written_when_given_and_each_output_s_frame_id_follows() -> None:
+    """`frame LINK` is the member `frame` after the adapter; an output without one has none in
+    the JSON, and its frame id is the body's base (`Model.frame_id`, which every emitter asks)."""
+    compiled = compile_path(str(FRAMED))
+    assert compiled.model is not None, compiled.diagnostics.items
+    outputs = json.loads(to_json(compiled.model))["domainOutputs"]
+    assert [list(o) for o in outputs] == [["name", "adapter", "frame", "returns", "doc"],
+                                          ["name", "adapter", "returns", "doc"]]
+    assert outputs[0]["frame"] == "bumper"
+    assert [compiled.model.frame_id(o) for o in compiled.model.outputs.values()] == ["bumper", "base"]
+    create = compile_path(str(ROOT / "examples" / "create.rdis")).model
+    assert create is not None and create.frame_id(create.outputs["detect_bump"]) == ""  # no body: no frame

@@ -111,3 +111,11 @@ def test_the_body_is_a_tree_with_its_transmissions(rdisc) -> None:
     ]
     assert ('"joint:rail" [id="joint:rail", label="joint\\nrail", shape="circle", fillcolor="#e4e4f7", '
             'tooltip="body.rdis:19"];') in dot
+
+
+def test_an_output_s_frame_is_an_edge_to_its_link(rdisc) -> None:
+    """`output detect_bump: Range frame bumper`: drawn to the link; `base_bump`, the base's by
+    default, has no such edge."""
+    dot = rdisc("graph", "tests/runtime/data/framed_create.rdis").stdout
+    assert [line.strip() for line in dot.splitlines() if '"link:' in line and "output:" in line] == [
+        '"output:detect_bump" -> "link:bumper" [label="in frame"];']

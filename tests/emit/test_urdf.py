@@ -78,7 +78,17 @@ def test_urchin_reads_the_links_joints_and_transmissions_back(body) -> None:
         interfaces = [INTERFACES[q] for q in dict.fromkeys(quantities)] or ["hardware_interface/JointStateInterface"]
         assert [(j.name, j.hardwareInterfaces) for j in t.joints] == [(want.joint, interfaces)]
         first = (want.commands or want.measures)[0]
-        assert [(a.name, a.mechanicalReduction) for a in t.actuators] == [(first.place(), 1.0)]
+        assert [(a.name, a.mechanicalReduction) for a in t.actuators] == [(first.place(), REDUCTIONS[name])]
+
+
+# Each body's transmissions' gear ratios, from the descriptions' own numbers: the actuator's value
+# per unit of the joint's (a position's `raw = round(position * UNITS_PER_RAD) + CENTRE`).
+REDUCTIONS = {
+    **{f"{joint}_servo": 4096 / (2 * 3.141592653589793)
+       for joint in ("waist", "shoulder", "elbow", "wrist_pitch", "wrist_roll", "gripper")},  # the arm's
+    "left_drive": 0.036 * 1000, "right_drive": 0.036 * 1000,  # the Create 2's wheels: mm/s at the rim
+    "drive": 36, "lifter": 195.3,  # the test body's
+}
 
 
 def _same_link(np, link, want: m.Link) -> None:

@@ -1,18 +1,22 @@
-"""Print each message on `joint_states` (`listen.py joint_states`), `/tf` (`listen.py tf`) or
-`odom` (`listen.py odom`) as one JSON line, for the body's tests. Run by the system python3.
+"""Print each message on `joint_states` (`listen.py joint_states`), `/tf` (`listen.py tf`),
+`odom` (`listen.py odom`) or a sensor_msgs/Range topic (`listen.py range TOPIC`) as one JSON
+line, for the body's tests. Run by the system python3.
 
 A JointState is its names, position, velocity and effort (NaN, which JSON lacks, as null)
 and its stamp in seconds; a TFMessage is one line per transform: parent and child frame,
-translation and rotation (x, y, z, w); an Odometry is its position's x and y. It ends by itself after a minute, so a test reading it
+translation and rotation (x, y, z, w); an Odometry is its position's x and y, its frames and
+stamp (ns); a Range is its
+range, its header's stamp (ns) and frame id, and when it was received (ns, the host's clock). It ends by itself after a minute, so a test reading it
 until some message never waits longer."""
 
 import json
 import math
 import sys
+import time
 
 import rospy
 from nav_msgs.msg import Odometry
-from sensor_msgs.msg import JointState
+from sensor_msgs.msg import JointState, Range
 from tf2_msgs.msg import TFMessage
 
 
@@ -35,13 +39,22 @@ def transforms(msg: TFMessage) -> None:
 
 def odometry(msg: Odometry) -> None:
     where = msg.pose.pose.position
-    print(json.dumps({"x": where.x, "y": where.y}), flush=True)
+    print(json.dumps({"x": where.x, "y": where.y, "frame_id": msg.header.frame_id, "child_frame_id": msg.child_frame_id,
+                      "stamp": msg.header.stamp.to_nsec()}), flush=True)
+
+
+def ranged(msg: Range) -> None:
+    received = time.time_ns()
+    print(json.dumps({"range": msg.range, "stamp": msg.header.stamp.to_nsec(), "frame_id": msg.header.frame_id,
+                      "received": received}), flush=True)
 
 
 rospy.init_node("rdisc_listen", anonymous=True)
 rospy.Timer(rospy.Duration(60), lambda _event: rospy.signal_shutdown("a minute has passed"), oneshot=True)
 if sys.argv[1] == "tf":
     rospy.Subscriber("/tf", TFMessage, transforms, queue_size=100)
+elif sys.argv[1] == "range":
+    rospy.Subscriber(sys.argv[2], Range, ranged, queue_size=100)
 elif sys.argv[1] == "odom":
     rospy.Subscriber("odom", Odometry, odometry, queue_size=100)
 else:

@@ -143,6 +143,72 @@ def test_twists_bumpers_and_shutdown(ros_env: dict[str, str], node_file: Path) -
         assert node.returncode == 0, output
 
 
+def test_a_range_is_stamped_when_its_reply_was_read_and_names_its_frame(ros_env: dict[str, str],
+                                                                         tmp_path: Path) -> None:
+    """tests/runtime/data/framed_create.rdis: `detect_bump` is in the bumper's frame, `base_bump`
+    (no `frame`) in the base's. Each Range's stamp is when the bumpers' reply was read: after the
+    device wrote that reply and before it wrote the next (the node polls again only after reading),
+    and at least the poll's 60 ms delay before the Range arrived, which was published after it."""
+    node_file = tmp_path / "framed_node.py"
+    done = subprocess.run(["python", "-m", "rdisc", "emit-ros", str(REPO / "tests" / "runtime" / "data" /
+                                                                     "framed_create.rdis"), "-o", str(node_file)],
+                          cwd=REPO, capture_output=True, text=True, check=False)
+    assert done.returncode == 0, done.stderr
+    with CreateEmulator(bumpers=0b01) as device:
+        node = _start_node(node_file, ros_env, device)
+        listeners = [_listen(ros_env, "range", "detect_bump"), _listen(ros_env, "range", "base_bump")]
+        try:
+            bumper = _until(listeners[0], lambda m: True)[-1]
+            base = _until(listeners[1], lambda m: True)[-1]
+        finally:
+            for listener in listeners:
+                _stop(listener)
+            output = _stop(node)
+        replies = [at for at, data in device.sent]
+    assert node.returncode == 0, output
+    assert (bumper["frame_id"], bumper["range"], base["frame_id"], base["range"]) == ("bumper", 0.0, "base", 0.0)
+    for ranged in (bumper, base):
+        stamp = ranged["stamp"]
+        read = [at for at in replies if at <= stamp]
+        assert stamp > 0 and read, (stamp, replies[:3])
+        later = replies[len(read):]
+        assert not later or stamp < later[0]  # the reply before it, not a later one
+        assert ranged["received"] - stamp >= 60_000_000  # published after the delay, stamped before it
+
+
+# An Odometry of a robot with a body: the Create's voltage sensor (15000 mV) read as how far it went (15 m).
+TRAVELLED = """\
+robot travelled { author "tests" }
+state x: float = 0.0
+connection link: serial { baud 57600  threading single at 20 Hz }
+primitive voltage() on link pack "BB" (142, 22) unpack ">H" { x = out[0] / 1000 }
+interface poll() periodic triggers odom { voltage() }
+output odom: Odometry { x = x  y = 0.0  theta = 0.0  linear = 0.0  angular = 0.0 }
+link chassis { mass 2  inertia [0.1, 0.1, 0.1] }
+"""
+
+
+def test_an_odometry_is_in_odom_with_the_base_as_its_child_frame(ros_env: dict[str, str], tmp_path: Path) -> None:
+    """REP 105: the pose in the fixed `odom` frame, the body's base (`chassis`) its child frame,
+    stamped when the device's reply was read."""
+    source, node_file = tmp_path / "travelled.rdis", tmp_path / "travelled_node.py"
+    source.write_text(TRAVELLED, encoding="utf-8")
+    done = subprocess.run(["python", "-m", "rdisc", "emit-ros", str(source), "-o", str(node_file)], cwd=REPO,
+                          capture_output=True, text=True, check=False)
+    assert done.returncode == 0, done.stderr
+    with CreateEmulator() as device:
+        node = _start_node(node_file, ros_env, device)
+        listener = _listen(ros_env, "odom")
+        try:
+            odometry = _until(listener, lambda m: m["x"] == 15.0)[-1]
+        finally:
+            _stop(listener)
+            _stop(node)
+        replies = [at for at, _ in device.sent]
+    assert (odometry["frame_id"], odometry["child_frame_id"]) == ("odom", "chassis")
+    assert any(at <= odometry["stamp"] for at in replies)
+
+
 # Appendix C's mapping: the bumpers published as a std_msgs/Bool "hit", by an adapter of the description's own.
 HIT = """\
 robot hit_create { author "tests" }
@@ -292,9 +358,10 @@ def test_settings_are_the_node_s_private_parameters(ros_env: dict[str, str], tmp
         os.close(slave)
 
 
-def _listen(env: dict[str, str], what: str) -> subprocess.Popen:
-    """tests/ros/listen.py on `joint_states` or `tf`: a JSON line a message, for a minute at most."""
-    return subprocess.Popen([PYTHON3, str(HERE / "listen.py"), what], env=env, stdout=subprocess.PIPE, text=True)
+def _listen(env: dict[str, str], *what: str) -> subprocess.Popen:
+    """tests/ros/listen.py on `joint_states`, `tf`, `odom` or `range TOPIC`: a JSON line a message, for a
+    minute at most."""
+    return subprocess.Popen([PYTHON3, str(HERE / "listen.py"), *what], env=env, stdout=subprocess.PIPE, text=True)
 
 
 def _until(listener: subprocess.Popen, wanted: Callable[[dict[str, Any]], bool]) -> list[dict[str, Any]]:

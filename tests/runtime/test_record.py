@@ -17,7 +17,7 @@ from conftest import cli_env, console_origin, console_ws, start_console, stop_pr
 from devices import CreateEmulator
 from mcap.reader import make_reader
 from mcap_ros2.decoder import DecoderFactory
-from runtime_support import CREATE, EXAMPLES
+from runtime_support import CREATE, DATA, EXAMPLES
 from websockets.sync.client import connect
 
 CREATE2 = EXAMPLES / "create2.rdis"
@@ -61,6 +61,42 @@ def test_outputs_are_recorded_as_ranges(recording) -> None:
               if topic == "/detect_bump"]
     assert ranges
     assert set(ranges) == {("sensor_msgs/msg/Range", 0.0, "")}
+
+
+def test_outputs_are_stamped_when_their_reply_was_read_and_name_their_frame(tmp_path: Path) -> None:
+    """tests/runtime/data/framed_create.rdis: `detect_bump` names the bumper link, `base_bump`
+    (no `frame`) the base. Each Range's header stamp is when the bumpers' reply was read: after
+    the read was seen, before the Range was recorded (recording times are the host's clock) and,
+    but for the last poll (closing cuts its delay short), at least the poll's 60 ms delay before;
+    the two outputs of one poll carry the same stamp."""
+    path = tmp_path / "framed.mcap"
+    with CreateEmulator(bumpers=1) as dev:
+        result = subprocess.run([sys.executable, "-m", "rdisc", "run", str(DATA / "framed_create.rdis"), "--port",
+                                 dev.port, "--record", str(path), "--duration", "0.3"],
+                                env=cli_env(), capture_output=True, text=True, check=False)
+    assert result.returncode == 0, result.stderr
+    with path.open("rb") as f:
+        reader = make_reader(f, decoder_factories=[DecoderFactory()])
+        found = [(channel.topic, message.log_time, decoded)
+                 for _, channel, message, decoded in reader.iter_decoded_messages(log_time_order=True)]
+    polls: list[tuple[int, dict[str, tuple[int, str, float, int]]]] = []  # each read's time, the Ranges after it
+    for topic, logged, decoded in found:
+        if topic == "/rdisc/btserial/read":
+            polls.append((logged, {}))
+        elif topic in ("/detect_bump", "/base_bump"):
+            stamp = decoded.header.stamp.sec * 1_000_000_000 + decoded.header.stamp.nanosec
+            assert polls and polls[-1][0] <= stamp < logged, (polls[-1][0], stamp, logged)
+            polls[-1][1][topic] = (stamp, decoded.header.frame_id, decoded.range, logged)
+    delivered = [ranges for _, ranges in polls if ranges]
+    assert len(delivered) >= 3
+    for ranges in delivered[:-1]:
+        assert all(logged - stamp >= 60_000_000 for stamp, _, _, logged in ranges.values()), ranges
+    for ranges in delivered:
+        assert {topic: (frame, distance) for topic, (_, frame, distance, _) in ranges.items()} == {
+            "/detect_bump": ("bumper", 0.0), "/base_bump": ("base", 0.0)}
+        assert ranges["/detect_bump"][0] == ranges["/base_bump"][0]  # one reply read: one time
+    stamps = [ranges["/detect_bump"][0] for ranges in delivered]
+    assert stamps == sorted(set(stamps))  # each poll's own
 
 
 def test_the_bytes_each_way(recording) -> None:

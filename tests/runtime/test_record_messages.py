@@ -81,6 +81,16 @@ def stamped(stamp: int, message: Any) -> None:
     assert message.header.frame_id == ""
 
 
+def read_stamped(found: list[tuple[str, str, int, Any]], stamp: int, message: Any) -> None:
+    """An output's header carries when its data was read: after the reply's bytes were recorded
+    and before the output was (the time its state was read, not the time it was recorded); and
+    no frame, the bench having no body."""
+    header = message.header.stamp.sec * 1_000_000_000 + message.header.stamp.nanosec
+    reads = [at for topic, _, at, _ in found if topic == "/rdisc/line/read" and at <= header]
+    assert reads and header < stamp, (reads[-1:], header, stamp)
+    assert message.header.frame_id == ""
+
+
 def test_every_input_as_its_message(session) -> None:
     found = rosbag(session)
     _, twist = only(found, "/set_velocity", "geometry_msgs/msg/Twist")
@@ -100,19 +110,19 @@ def test_every_input_as_its_message(session) -> None:
 def test_every_output_as_its_message(session) -> None:
     found = rosbag(session)
     stamp, range_ = only(found, "/range", "sensor_msgs/msg/Range")
-    stamped(stamp, range_)
+    read_stamped(found, stamp, range_)
     assert (range_.radiation_type, range_.field_of_view, range_.min_range, range_.max_range, range_.range) \
         == (0, 0.0, 0.0, 0.0, 0.5)
     _, contact = only(found, "/contact", "std_msgs/msg/Bool")
     assert contact.data is True
     stamp, battery = only(found, "/battery", "sensor_msgs/msg/BatteryState")
-    stamped(stamp, battery)
+    read_stamped(found, stamp, battery)
     assert (battery.voltage, battery.current, battery.charge, battery.capacity, battery.percentage) \
         == (12.25, -1.5, 2.0, 4.0, 0.75)
     assert (battery.temperature, battery.design_capacity, battery.power_supply_status, battery.present,
             battery.cell_voltage.tolist(), battery.location, battery.serial_number) == (0.0, 0.0, 0, False, [], "", "")
     stamp, odometry = only(found, "/odometry", "nav_msgs/msg/Odometry")
-    stamped(stamp, odometry)
+    read_stamped(found, stamp, odometry)
     assert odometry.child_frame_id == ""
     position, orientation = odometry.pose.pose.position, odometry.pose.pose.orientation
     assert (position.x, position.y, position.z) == (1.5, -2.0, 0.0)
@@ -124,13 +134,13 @@ def test_every_output_as_its_message(session) -> None:
     _, speeds = only(found, "/speeds", "geometry_msgs/msg/Twist")
     assert (speeds.linear.x, speeds.angular.z) == (0.25, -0.125)
     stamp, head = only(found, "/head", "sensor_msgs/msg/JointState")
-    stamped(stamp, head)
+    read_stamped(found, stamp, head)
     assert (head.name, head.position.tolist()) == (["pan"], [0.1])
     stamp, joints = only(found, "/joints", "sensor_msgs/msg/JointState")
-    stamped(stamp, joints)
+    read_stamped(found, stamp, joints)
     assert (joints.name, joints.position.tolist()) == (["pan", "tilt", "roll"], [0.1, 0.2, -0.3])
     stamp, temperature = only(found, "/temperature", "sensor_msgs/msg/Temperature")
-    stamped(stamp, temperature)
+    read_stamped(found, stamp, temperature)
     assert (temperature.temperature, temperature.variance) == (36.5, 0.25)
 
 

@@ -197,6 +197,14 @@ def test_the_body_prints_back() -> None:
     assert parsed(BODY_EXPECTED) == module
 
 
+def test_an_output_s_frame_prints_back() -> None:
+    """`frame LINK` after the adapter, before the fields."""
+    text = "output detect_bump: Range frame bumper {\n    distance = 0.0\n}\n"
+    module = parsed(text)
+    assert module.decls[0].frame == ast.Ident("bumper")  # type: ignore[union-attr]
+    assert print_module(module) == text
+
+
 def test_empty_module() -> None:
     assert print_module(ast.Module("t.rdis", ())) == ""
 
@@ -379,7 +387,7 @@ declarations = st.one_of(
         doc=docs,
     ),
     st.builds(ast.InputDecl, ids, ids, calls, doc=docs),
-    st.builds(ast.OutputDecl, ids, ids, st.lists(assigns, max_size=3).map(tuple), doc=docs),
+    st.builds(ast.OutputDecl, ids, ids, st.lists(assigns, max_size=3).map(tuple), doc=docs, frame=st.none() | ids),
     st.builds(ast.ImportDecl, strings, doc=docs),
     st.builds(
         ast.LinkDecl, ids,

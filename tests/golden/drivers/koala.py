@@ -430,7 +430,22 @@ its variable's declared type, which the checker knows and Python's types cannot 
 Args = list[Any]
 """The values of a call's parameters (or an input's fields), by position."""
 
-OutputCallback = Callable[[dict[str, Any]], object]
+
+class OutputMessage(dict[str, Any]):
+    """An output as its callbacks get it: `{"name": ..., "contents": {...}}`, and `read_ns`, when
+    the state it was computed from was read (the newest reply's, in nanoseconds since the epoch,
+    the host's clock; when it was delivered if no reply has changed the state yet). What a
+    framework's header stamp carries: the data's time, not the publishing's. A dict, so that it
+    compares, prints and serialises as the two keys it holds."""
+
+    __slots__ = ("read_ns",)
+
+    def __init__(self, name: str, contents: dict[str, Any], read_ns: int) -> None:
+        super().__init__(name=name, contents=contents)
+        self.read_ns = read_ns
+
+
+OutputCallback = Callable[[OutputMessage], object]
 ErrorCallback = Callable[[BaseException], object]
 IoCallback = Callable[[str, str, bytes], object]
 """`(direction, connection, data)`: "write" or "read" and the bytes, or "lines" and the modem
@@ -1422,6 +1437,8 @@ class Output:
     name: str
     fields: Callable[[StateValues], dict[str, Value]]
     adapter: str = ""
+    frame: str = ""  # its stamped messages' frame id and child frame id (`semantics.ros.header_frames`)
+    child_frame: str = ""
 
 
 @dataclass(frozen=True, slots=True)
@@ -2317,6 +2334,7 @@ class Exchange:
     name: str
     timeout: float
     _state: dict[str, Value]
+    _read_ns: int | None  # when a reply last changed the state (ns since the epoch); None: none has
     _state_lock: threading.Lock
     _callback_lock: threading.RLock
     _output_callbacks: list[OutputCallback]
@@ -2770,16 +2788,19 @@ class Exchange:
                         raise RdisValueError(f"{plan.name}: {name} would be a {value.bit_length()}-bit integer; "
                                              "integers are limited to 64 bits and a sign")
                 state = {**state, **changes}
+            self._read_ns = time.time_ns()  # the reply just read: an output's `read_ns`
             self._state = state
 
     # ---- delivering to callbacks: one at a time, a failing one reported -----------------------------
 
     def _deliver(self, plan: Output) -> None:
+        with self._state_lock:  # the snapshot and when it was read, together
+            state, read_ns = self._state, self._read_ns
         try:
-            contents = plan.fields(self._state)
+            contents = plan.fields(state)
         except EVAL_ERRORS as err:
             raise RdisValueError(f"{plan.name}: {err}") from None
-        message: dict[str, Any] = {"name": plan.name, "contents": contents}
+        message = OutputMessage(plan.name, contents, time.time_ns() if read_ns is None else read_ns)
         with self._callback_lock:
             for callback in list(self._output_callbacks):
                 try:
@@ -2921,6 +2942,7 @@ class Robot(Exchange):
         self._state_lock = threading.Lock()
         self._callback_lock = threading.RLock()  # callbacks run one at a time
         self._output_callbacks: list[OutputCallback] = []
+        self._read_ns: int | None = None  # when a reply last changed the state
         self._error_callbacks: list[ErrorCallback] = []
         self._io_callbacks: list[IoCallback] = []
         self._run_callbacks: list[Callable[[str, str, str], object]] = []  # a Recorder's: what a thread runs
@@ -2940,7 +2962,8 @@ class Robot(Exchange):
     # ---- callbacks --------------------------------------------------------------------------------
 
     def on_output(self, callback: OutputCallback) -> OutputCallback:
-        """Call `callback({"name": ..., "contents": {...}})` for every output triggered."""
+        """Call `callback({"name": ..., "contents": {...}})` for every output triggered: an
+        `OutputMessage`, whose `read_ns` says when its data was read."""
         with self._callback_lock:
             self._output_callbacks.append(callback)
         return callback
@@ -3361,7 +3384,9 @@ class Recorder:
             output = self._file = open(output, "wb" if replace else "xb")  # noqa: SIM115 (closed by finish)
         self._writer: Any = Writer(output)
         self._device = robot.device
-        self._adapters = {o.name: o.adapter for i in robot.device.interfaces.values() for o in i.outputs}
+        delivered = [o for i in robot.device.interfaces.values() for o in i.outputs]
+        self._adapters = {o.name: o.adapter for o in delivered}
+        self._frames = {o.name: (o.frame, o.child_frame) for o in delivered}
         self._lock = threading.Lock()
         self._time = 0
         self._schemas: dict[str, Any] = {}
@@ -3385,8 +3410,12 @@ class Recorder:
         run = {kind: name, "connection": connection}
         self._write(RUNS_TOPIC, TEXT_TYPE, _TEXT_SCHEMA, {"data": json.dumps(run)})
 
-    def output(self, message: dict[str, Any]) -> None:
-        self._adapted(message["name"], self._adapters.get(message["name"], ""), message["contents"])
+    def output(self, message: OutputMessage) -> None:
+        """An output delivered: its header (if its message has one) stamped when its data was read,
+        in its frame."""
+        name = message["name"]
+        header = (message.read_ns, *self._frames.get(name, ("", "")))
+        self._adapted(name, self._adapters.get(name, ""), message["contents"], header)
 
     def error(self, error: BaseException) -> None:
         stamp = self._stamp()
@@ -3409,9 +3438,12 @@ class Recorder:
                 if self._file is not None:
                     self._file.close()
 
-    def _adapted(self, name: str, adapter: str, contents: Mapping[str, Any]) -> None:
+    def _adapted(self, name: str, adapter: str, contents: Mapping[str, Any],
+                 header: tuple[int, str, str] | None = None) -> None:
         """An adapter's values on `/NAME`: its ROS 2 message, or JSON text. A message with a
-        std_msgs/Header is stamped with the time it is recorded at, as a ROS 2 publisher's is."""
+        std_msgs/Header is stamped with `header` (an output's: when its data was read, its frame
+        id and child frame id), else (an input) with the time it is recorded at, as a ROS 2
+        publisher's is."""
         message = self._device.messages.get(adapter)
         if message is None:
             text = json.dumps(dict(contents), default=list)
@@ -3420,7 +3452,10 @@ class Recorder:
         stamp = self._stamp()
         members = ros_message(message, contents)
         if _HEADER in message.definition.partition(_SEPARATOR)[0].splitlines():
-            members.setdefault("header", {})["stamp"] = _time(stamp)
+            read_ns, frame, child = (stamp, "", "") if header is None else header
+            members.setdefault("header", {}).update(stamp=_time(read_ns), frame_id=frame)
+            if child:
+                members["child_frame_id"] = child
         self._write(f"/{name}", message.type, message.definition, members, stamp)
 
     def _stamp(self) -> int:
