@@ -13,8 +13,8 @@ from typing import Any
 import pytest
 
 from rdisc import engine
+from rdisc import lower as lowering
 from rdisc.compile import compile_path
-from rdisc.lower import lower
 from tests.engine.test_one_engine import ScriptedPort, implementation_of
 
 SHAPES = r"""robot shapes { author "tests" }
@@ -80,7 +80,7 @@ def test_the_lowering_gives_each_primitive_the_shape_it_needs_and_every_shape_is
     source.write_text(SHAPES, encoding="utf-8")
     compilation = compile_path(str(source))
     assert compilation.model is not None and not compilation.diagnostics.has_errors()
-    plans = lower(compilation.model).device.primitives
+    plans = lowering.lower(compilation.model).device.primitives
     assert {name: type(plans[name].reply).__name__ for name, *_ in EXCHANGES} == {
         name: shape for name, shape, *_ in EXCHANGES}
     every = {shape.__name__ for shape in typing.get_args(engine.Reply)}
@@ -88,10 +88,14 @@ def test_the_lowering_gives_each_primitive_the_shape_it_needs_and_every_shape_is
     # The shapes within shapes: `replies N` reads each reply as one; a listed reply is read through
     # its own frame; a tag's entries and a key's are plans, their replies read as their own.
     several, listed, keyed = plans["several"].reply, plans["listed"].reply, plans["keyed"].reply
-    assert type(several).__name__ == "SeveralReplies" and type(several.each).__name__ == "FixedReply"  # type: ignore[union-attr]
-    assert [type(answer.reply).__name__ for answer in listed.answers] == ["FramedReply"] * 2  # type: ignore[union-attr]
-    assert [type(entry.plan.reply).__name__ for entry in keyed.table] == ["FixedReply"] * 2  # type: ignore[union-attr]
-    assert plans["acknowledged"].reply.decoder is None  # type: ignore[union-attr]  # only the frame is read
+    assert isinstance(several, lowering.SeveralReplies) and isinstance(several.each, lowering.FixedReply)
+    assert (several.count, several.frames) == (2, ())
+    assert isinstance(listed, lowering.ListedReplies)
+    assert [type(answer.reply).__name__ for answer in listed.answers] == ["FramedReply"] * 2
+    assert isinstance(keyed, lowering.KeyedReply) and keyed.key == 0
+    assert [type(entry.plan.reply).__name__ for entry in keyed.table] == ["FixedReply"] * 2
+    acknowledged = plans["acknowledged"].reply
+    assert isinstance(acknowledged, lowering.FramedReply) and acknowledged.decoder is None  # only the frame is read
 
 
 @pytest.mark.parametrize("kind", ["runtime", "driver"])
