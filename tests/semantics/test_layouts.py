@@ -12,7 +12,7 @@ from pathlib import Path
 
 import rdisc
 from rdisc.compile import compile_text
-from rdisc.lower import lower
+from rdisc.lower import FixedReply, lower
 from rdisc.runtime import load
 from rdisc.semantics import model as m
 from tests.support.ports import ScriptedPort
@@ -103,11 +103,12 @@ def test_the_engine_gets_the_stored_layouts() -> None:
     model = _model()
     device = lower(model).device
     named = device.primitives["named"]
-    assert named.encoder is not None and named.decoder is not None
+    reply = named.reply
+    assert named.encoder is not None and isinstance(reply, FixedReply)
     assert isinstance(named.encoder.value, rdisc.engine.Pack)
     assert named.encoder.value.sizes == {3: 5, 4: 9}
-    assert isinstance(named.decoder.value, rdisc.engine.Unpack)
-    assert named.decoder.value.varying_sizes == (3, 4)
+    assert isinstance(reply.decoder.value, rdisc.engine.Unpack)
+    assert reply.decoder.value.varying_sizes == (3, 4)
     framed = lower(model).frames["framed"]
     field, length = framed.request[1].value, framed.request[2].value
     assert isinstance(field, rdisc.engine.Field) and isinstance(length, rdisc.engine.Length)
@@ -141,7 +142,7 @@ def test_the_layout_is_derived_data() -> None:
 PACKAGE = Path(rdisc.__file__).parent
 PARSES = re.compile(r"\bstruct_layout\(|\bcalcsize\(|\bsplit_rest\(")
 CHECKER = {"semantics/formats.py", "semantics/check.py", "semantics/frames.py"}  # where the Model is made
-IMPORTER = "syntax/json_import.py"  # infers the types of thesis JSON's arguments, before there is a Model
+IMPORTER = "json_import.py"  # infers the types of thesis JSON's arguments, before there is a Model
 
 
 def test_no_module_after_the_checker_parses_a_format() -> None:
