@@ -12,7 +12,7 @@ from pathlib import Path
 
 import rdisc
 from rdisc.compile import compile_text
-from rdisc.lower import FixedReply, lower
+from rdisc.lower import FramedReply, lower
 from rdisc.runtime import load
 from rdisc.semantics import model as m
 from tests.support.ports import ScriptedPort
@@ -104,7 +104,7 @@ def test_the_engine_gets_the_stored_layouts() -> None:
     device = lower(model).device
     named = device.primitives["named"]
     reply = named.reply
-    assert named.encoder is not None and isinstance(reply, FixedReply)
+    assert named.encoder is not None and isinstance(reply, FramedReply) and reply.decoder is not None
     assert isinstance(named.encoder.value, rdisc.engine.Pack)
     assert named.encoder.value.sizes == {3: 5, 4: 9}
     assert isinstance(reply.decoder.value, rdisc.engine.Unpack)
