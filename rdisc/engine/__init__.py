@@ -77,7 +77,19 @@ from rdisc.engine.plans import (
     plainly_given,
 )
 from rdisc.engine.ports import Port, PortSpec, Simulator
-from rdisc.engine.recording import BYTES_TYPE, LOG_TYPE, RUNS_TOPIC, TEXT_TYPE, Recorder, ros_message
+from rdisc.engine.recording import (
+    BYTES_TYPE,
+    LOG_TYPE,
+    RUNS_TOPIC,
+    STATE_TOPIC,
+    TEXT_TYPE,
+    Recorder,
+    Session,
+    Sink,
+    Topic,
+    ros_message,
+    session_topics,
+)
 from rdisc.engine.robot import Calls, Robot, State
 from rdisc.engine.values import Args, ErrorCallback, IoCallback, OutputCallback, StateValues, Value
 from rdisc.engine.wire import (
@@ -120,6 +132,7 @@ __all__ = [
     "MAX_SKIP",
     "MAX_TEXT",
     "RUNS_TOPIC",
+    "STATE_TOPIC",
     "TEXT_TYPE",
     "UNARY",
     "Args",
@@ -169,12 +182,15 @@ __all__ = [
     "Recorder",
     "Request",
     "Robot",
+    "Session",
     "Side",
     "Simulator",
+    "Sink",
     "Split",
     "State",
     "StateValues",
     "Stuffing",
+    "Topic",
     "Unbound",
     "Unpack",
     "Value",
@@ -197,6 +213,7 @@ __all__ = [
     "replaced",
     "ros_message",
     "run_command",
+    "session_topics",
     "shown",
     "start_recording",
 ]
