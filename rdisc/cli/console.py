@@ -18,12 +18,12 @@ from __future__ import annotations
 
 import argparse
 import asyncio
-import ipaddress
 import os
 import signal
 import sys
 
 from rdisc import engine
+from rdisc.cli.address import is_loopback, parse_address
 from rdisc.cli.output import EXIT_ERRORS, EXIT_USAGE, exit_code, show
 from rdisc.cli.sim import add_seed_argument, simulation
 from rdisc.compile import compile_path
@@ -68,24 +68,6 @@ def add_parser(verbs: argparse._SubParsersAction[argparse.ArgumentParser]) -> No
     p.set_defaults(run=run)
 
 
-def parse_http(text: str) -> tuple[str, int]:
-    """HOST:PORT (an IPv6 host in brackets) as (host, port)."""
-    host, sep, port = text.rpartition(":")
-    if not sep or not port.isdigit() or int(port) > 65535:
-        raise ValueError(f"--http `{text}` is not HOST:PORT")
-    return host.strip("[]") or "127.0.0.1", int(port)
-
-
-def is_loopback(host: str) -> bool:
-    """Whether HOST is this machine's loopback only (127.0.0.0/8, ::1, localhost)."""
-    if host == "localhost":
-        return True
-    try:
-        return ipaddress.ip_address(host).is_loopback
-    except ValueError:  # a name: it may lead anywhere
-        return False
-
-
 def run(args: argparse.Namespace) -> int:
     compilation = compile_path(args.file)
     show([compilation])
@@ -99,7 +81,7 @@ def run(args: argparse.Namespace) -> int:
 
     device = Description(model).device
     try:
-        host, http_port = parse_http(args.http)
+        host, http_port = parse_address(args.http, "--http")
         if not is_loopback(host) and not args.allow_remote:
             raise ValueError(f"--http {args.http} serves beyond this machine, where anyone on the network who has "
                              "the address could drive the robot: add --allow-remote if that is meant")
