@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import json
 import os
+import re
 import select
 import signal
 import struct
@@ -15,7 +16,7 @@ import time
 from typing import Any
 
 import pytest
-from conftest import cli_env
+from conftest import cli_env, console_origin, console_ws, stop_process
 from devices import CreateEmulator
 from devices.create import STOP
 from rosbags.typesys import Stores, get_types_from_msg, get_typestore
@@ -176,3 +177,38 @@ def test_without_foxglove_sdk_it_says_what_to_install(rdisc, tmp_path) -> None:
                             "--call", "drive", "velocity=0.1", "radius=0"],
                            cwd=REPO, env=env, capture_output=True, text=True, timeout=60, check=False)
     assert (plain.returncode, plain.stderr) == (0, "")  # rdisc runs without it
+
+
+def test_the_console_serves_its_pages_calls_to_foxglove_too() -> None:
+    """`rdisc console --foxglove`: a call a page makes reaches Foxglove as the host's, as the
+    input's message, on /rdisc/runs and as the bytes it wrote."""
+    with CreateEmulator() as dev:
+        process = subprocess.Popen(
+            [sys.executable, "-m", "rdisc", "console", str(DATA / "fast_create.rdis"), "--port", dev.port,
+             "--http", "127.0.0.1:0", "--foxglove", "127.0.0.1:0"],
+            cwd=REPO, env=cli_env(), stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        try:
+            said = _line(process)
+            assert said.startswith("rdisc console: Foxglove on ws://127.0.0.1:"), said
+            port = int(said.split("ws://127.0.0.1:")[1].split()[0])
+            page = re.search(r"http://127\.0\.0\.1:\d+/\?token=[A-Za-z0-9_-]+", _line(process))
+            assert page is not None
+            with connect(f"ws://127.0.0.1:{port}", subprotocols=[SUBPROTOCOL], open_timeout=10) as socket:
+                client = Client(socket)
+                client.subscribe("/detect_bump", "/set_velocity", "/rdisc/runs", "/rdisc/btserial/write")
+                client.receive(lambda found: len(found) > 0)  # subscribed: the bumpers' poll is arriving
+                with connect(console_ws(page.group(0)), origin=console_origin(page.group(0))) as ws:
+                    assert json.loads(ws.recv(timeout=30))["type"] == "hello"
+                    ws.send(json.dumps({"id": 1, "kind": "input", "name": "set_velocity",
+                                        "values": {"linear": "0.2", "angular": "0"}}))
+                    found = client.receive(lambda found: any(
+                        t == "/rdisc/btserial/write" and bytes(m.data)[0] == 0x89 for t, _, m in found))
+        finally:
+            status, stderr = stop_process(process, signal.SIGINT)
+        assert status == 130 and "Traceback" not in stderr, stderr
+    twists = [(m.linear.x, m.linear.y, m.angular.z) for topic, _, m in found if topic == "/set_velocity"]
+    assert twists == [(0.2, 0.0, 0.0)]
+    runs = [json.loads(m.data) for topic, _, m in found if topic == "/rdisc/runs"]
+    assert runs == [{"call": "input", "name": "set_velocity", "values": {"linear": 0.2, "angular": 0.0}}]
+    drives = [bytes(m.data) for topic, _, m in found if topic == "/rdisc/btserial/write" and m.data[0] == 0x89]
+    assert drives == [bytes.fromhex("89 00 c8 7f ff")]  # Table 4.3: 0.2 m/s straight ahead
