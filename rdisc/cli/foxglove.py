@@ -12,7 +12,7 @@ from rdisc.cli.output import EXIT_USAGE
 from rdisc.runtime.foxglove import FoxgloveServer
 
 DEFAULT_FOXGLOVE = "127.0.0.1:8766"  # the console's page is on 8765 by default
-NEEDS = "foxglove-sdk and mcap-ros2-support packages (pip install 'rdisc[foxglove]')"
+NEEDS = "foxglove-sdk and mcap-ros2-support packages (pip install foxglove-sdk mcap-ros2-support)"
 
 
 def add_argument(parser: argparse.ArgumentParser) -> None:

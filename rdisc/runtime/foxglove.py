@@ -9,7 +9,7 @@ encoder the recording's (`mcap-ros2-support`). All channels are advertised when 
 starts; a message is encoded only while some client is subscribed to its channel. Clients
 only watch: the server offers no publishing, services or parameters.
 
-Needs the `foxglove-sdk` and `mcap-ros2-support` packages (`pip install 'rdisc[foxglove]'`),
+Needs the `foxglove-sdk` and `mcap-ros2-support` packages (`pip install '.[foxglove]'`),
 imported here only (ImportError without).
 """
 
