@@ -212,3 +212,14 @@ def test_the_console_serves_its_pages_calls_to_foxglove_too() -> None:
     assert runs == [{"call": "input", "name": "set_velocity", "values": {"linear": 0.2, "angular": 0.0}}]
     drives = [bytes(m.data) for topic, _, m in found if topic == "/rdisc/btserial/write" and m.data[0] == 0x89]
     assert drives == [bytes.fromhex("89 00 c8 7f ff")]  # Table 4.3: 0.2 m/s straight ahead
+
+
+def test_beyond_loopback_with_allow_remote_it_serves_and_warns(rdisc) -> None:
+    result = rdisc("run", DATA / "fast_create.rdis", "--port", "loop://", "--foxglove", "0.0.0.0:0", "--allow-remote",
+                   "--call", "drive", "velocity=0.1", "radius=0")
+    assert (result.returncode, result.stderr) == (0, "")
+    said = result.stdout.splitlines()
+    assert len(said) == 2 and re.fullmatch(
+        r"rdisc run: Foxglove on ws://0\.0\.0\.0:\d+ \(in Foxglove: Open connection, Foxglove WebSocket\)", said[0])
+    assert said[1] == ("rdisc run: WARNING: served beyond this machine (0.0.0.0:0): anyone on the network can watch "
+                       "the robot")
