@@ -1,4 +1,5 @@
-"""`rdisc console FILE (--port P | --sim [--seed N]) [--http HOST:PORT [--allow-remote]] [--record FILE.mcap]`: a
+"""`rdisc console FILE (--port P | --sim [--seed N]) [--http HOST:PORT [--allow-remote]] [--record FILE.mcap]
+[--foxglove [HOST:PORT]]`: a
 local web page to bring up and exercise a device (thesis ch. 5), or a simulation of its body.
 
 Connects as `rdisc run` does (startup hooks), then serves the page at the address it prints,
@@ -7,23 +8,25 @@ each run) until Ctrl-C or SIGTERM, and ends by running the terminate hooks; they
 whenever the last page closes. An --http beyond loopback needs --allow-remote. With --sim the robot drives the MuJoCo simulation `rdisc sim --realtime` drives (its
 time the wall clock's, so what the page commands moves as a device would), and the page
 says so and shows the simulated body as it moves. With --record, the session is recorded as `rdisc run --record` records it, the
-page's calls as the host's. Only pages of this console's own address may drive the robot (see rdisc.console).
+page's calls as the host's; with --foxglove, it is served live to Foxglove as `rdisc run --foxglove`
+serves it. Only pages of this console's own address may drive the robot (see rdisc.console).
 
 Exit status: 1 the description has errors or the device failed to connect; 2 a usage error
 (a bad --port, --set or --http, an --http beyond loopback without --allow-remote, --port with --sim, --sim without a body or MuJoCo, an address
-in use, or a --record file that cannot be written); 130 after SIGINT, 143 after SIGTERM.
+in use, a --record file that cannot be written, or a bad --foxglove); 130 after SIGINT, 143 after SIGTERM.
 """
 
 from __future__ import annotations
 
 import argparse
 import asyncio
-import ipaddress
 import os
 import signal
 import sys
 
 from rdisc import engine
+from rdisc.cli import foxglove
+from rdisc.cli.address import is_loopback, parse_address
 from rdisc.cli.output import EXIT_ERRORS, EXIT_USAGE, exit_code, show
 from rdisc.cli.sim import add_seed_argument, simulation
 from rdisc.compile import compile_path
@@ -53,9 +56,11 @@ def add_parser(verbs: argparse._SubParsersAction[argparse.ArgumentParser]) -> No
     p.add_argument("--http", default=DEFAULT_HTTP, metavar="HOST:PORT",
                    help=f"where to serve the page (default {DEFAULT_HTTP}; port 0: any free one); an address beyond "
                         "loopback needs --allow-remote")
+    foxglove.add_argument(p)
     p.add_argument("--allow-remote", action="store_true",
-                   help="let --http name an address beyond loopback (0.0.0.0: every interface): anyone on the "
-                        "network who has the printed address, with its token, can then drive the robot")
+                   help="let --http (and --foxglove) name an address beyond loopback (0.0.0.0: every interface): "
+                        "anyone on the network who has the printed address, with its token, can then drive the "
+                        "robot (and anyone can watch it in Foxglove)")
     p.add_argument("--origin", action="append", default=[], metavar="URL",
                    help="also let pages from this origin (http://name:port) drive the robot, when serving beyond "
                         "loopback")
@@ -66,24 +71,6 @@ def add_parser(verbs: argparse._SubParsersAction[argparse.ArgumentParser]) -> No
     p.add_argument("--force", action="store_true",
                    help="let --record replace a file that exists (never the description or its imports)")
     p.set_defaults(run=run)
-
-
-def parse_http(text: str) -> tuple[str, int]:
-    """HOST:PORT (an IPv6 host in brackets) as (host, port)."""
-    host, sep, port = text.rpartition(":")
-    if not sep or not port.isdigit() or int(port) > 65535:
-        raise ValueError(f"--http `{text}` is not HOST:PORT")
-    return host.strip("[]") or "127.0.0.1", int(port)
-
-
-def is_loopback(host: str) -> bool:
-    """Whether HOST is this machine's loopback only (127.0.0.0/8, ::1, localhost)."""
-    if host == "localhost":
-        return True
-    try:
-        return ipaddress.ip_address(host).is_loopback
-    except ValueError:  # a name: it may lead anywhere
-        return False
 
 
 def run(args: argparse.Namespace) -> int:
@@ -99,7 +86,7 @@ def run(args: argparse.Namespace) -> int:
 
     device = Description(model).device
     try:
-        host, http_port = parse_http(args.http)
+        host, http_port = parse_address(args.http, "--http")
         if not is_loopback(host) and not args.allow_remote:
             raise ValueError(f"--http {args.http} serves beyond this machine, where anyone on the network who has "
                              "the address could drive the robot: add --allow-remote if that is meant")
@@ -119,11 +106,15 @@ def run(args: argparse.Namespace) -> int:
     if args.sim and sim is None:
         return EXIT_USAGE
     robot = engine.Robot(device, timeout=args.timeout)
+    session = engine.Session(robot) if args.record or args.foxglove is not None else None
     recorder = (engine.start_recording(robot, args.record, settings, "rdisc console", force=args.force,
-                                       inputs=list(compilation.sources)) if args.record else None)
+                                       inputs=list(compilation.sources), session=session) if args.record else None)
     if args.record and recorder is None:
         return EXIT_USAGE
-    console = Console(robot, page, recorder, sim, tell=lambda text: print(text, file=sys.stderr, flush=True))
+    live = foxglove.start(args, session, robot.name, "rdisc console") if session is not None else None
+    if isinstance(live, int):
+        return live
+    console = Console(robot, page, session, sim, tell=lambda text: print(text, file=sys.stderr, flush=True))
     robot.on_error(lambda error: print(f"rdisc console: {type(error).__name__}: {error}", file=sys.stderr, flush=True))
 
     def listening(bound: int) -> None:
@@ -152,14 +143,16 @@ def run(args: argparse.Namespace) -> int:
             await console.serve(host, http_port, stop, listening, args.origin)
         except engine.RdisError as err:
             print(f"rdisc console: {type(err).__name__}: {err}", file=sys.stderr)
-            if recorder is not None:
-                recorder.error(err)
+            if session is not None:
+                session.error(err)
             status[0] = engine.EXIT_ERROR
         except OSError as err:  # the address is in use, or not this machine's
             print(f"rdisc console: cannot serve on {args.http}: {err.strerror or err}", file=sys.stderr)
             status[0] = EXIT_USAGE
         finally:
             await asyncio.to_thread(robot.close)
+            if live is not None:
+                live.stop()
             if recorder is not None:
                 recorder.finish()
         return status[0]

@@ -77,15 +77,16 @@ def jsonable(value: Any) -> Any:
 
 
 class Console:
-    """A connected robot, shown and driven by the pages of one server; with a `recorder`
-    (`--record`), each call a page makes is recorded as the host's call, as `rdisc run` records
-    its --call calls (the robot's bytes, outputs and errors the recorder takes from the robot);
+    """A connected robot, shown and driven by the pages of one server; with the robot's `session`
+    (what `--record` records and `--foxglove` serves), each call a page makes is told to it as
+    the host's call, as `rdisc run` tells its --call calls (the robot's bytes, outputs and errors
+    the session takes from the robot);
     with the `body` it drives (`--sim`), the body as it is now is pushed BODY_HZ times a second."""
 
-    def __init__(self, robot: engine.Robot, page: str, recorder: engine.Recorder | None = None,
+    def __init__(self, robot: engine.Robot, page: str, session: engine.Session | None = None,
                  body: Simulation | None = None, tell: Callable[[str], None] | None = None) -> None:
         self.robot = robot
-        self.recorder = recorder
+        self.session = session
         self.body = body
         self.page = page.encode("utf-8")
         self.origins: set[str] = set()
@@ -274,14 +275,14 @@ class Console:
         hooks = [c.terminate for c in self.robot.device.connections.values() if c.terminate is not None]
         if not hooks:
             return
-        if self.recorder is not None:  # recorded as the host's calls, so a replay writes the same stop
+        if self.session is not None:  # told as the host's calls, so a replay writes the same stop
             state = dict(self.robot.state)
             for hook in hooks:
                 try:
                     values = dict(zip((p.name for p in hook.interface.params), hook.args(state), strict=True))
                 except Exception:  # noqa: BLE001, S112 - the hook's own run reports it
                     continue
-                self.recorder.call("interface", hook.interface.name, values)
+                self.session.call("interface", hook.interface.name, values)
         self.robot.terminate()  # its errors are reported, as the robot's are
         names = ", ".join(f"{hook.interface.name}()" for hook in hooks)
         self.tell(f"rdisc console: the last page closed: {names} ran (the terminate hook); "
@@ -304,13 +305,13 @@ class Console:
             if not isinstance(name, str) or not isinstance(values, dict):
                 raise TypeError("a call names what it calls and gives its values by name")
             given = _read(self.robot.device, kind, name, values)
-            if self.recorder is not None:  # recorded before it is made, as `rdisc run` does
-                self.recorder.call(str(kind), name, given)
+            if self.session is not None:  # told before it is made, as `rdisc run` does
+                self.session.call(str(kind), name, given)
             made = True
             engine.make_call(self.robot, str(kind), name, given)
         except (engine.RdisError, TypeError, ValueError, KeyError) as err:
-            if self.recorder is not None and made and isinstance(err, engine.RdisError):
-                self.recorder.error(err)
+            if self.session is not None and made and isinstance(err, engine.RdisError):
+                self.session.error(err)
             message = err.args[0] if isinstance(err, KeyError) and err.args else str(err)
             self.report(type(err).__name__, str(message))
             self._push_state()

@@ -90,7 +90,19 @@ from rdisc.engine.plans import (
     plainly_given,
 )
 from rdisc.engine.ports import Port, PortSpec, Simulator
-from rdisc.engine.recording import BYTES_TYPE, LOG_TYPE, RUNS_TOPIC, TEXT_TYPE, Recorder, ros_message
+from rdisc.engine.recording import (
+    BYTES_TYPE,
+    LOG_TYPE,
+    RUNS_TOPIC,
+    STATE_TOPIC,
+    TEXT_TYPE,
+    Recorder,
+    Session,
+    Sink,
+    Topic,
+    ros_message,
+    session_topics,
+)
 from rdisc.engine.robot import Calls, Robot, State
 from rdisc.engine.values import (
     Args,
@@ -142,6 +154,7 @@ __all__ = [
     "MAX_TEXT",
     "NO_REPLY",
     "RUNS_TOPIC",
+    "STATE_TOPIC",
     "TEXT_TYPE",
     "UNARY",
     "Args",
@@ -200,9 +213,11 @@ __all__ = [
     "Reply",
     "Request",
     "Robot",
+    "Session",
     "SeveralReplies",
     "Side",
     "Simulator",
+    "Sink",
     "Split",
     "State",
     "StateValues",
@@ -210,6 +225,7 @@ __all__ = [
     "SubPayloads",
     "TaggedReply",
     "TaggedStream",
+    "Topic",
     "Unbound",
     "Unpack",
     "Value",
@@ -232,6 +248,7 @@ __all__ = [
     "replaced",
     "ros_message",
     "run_command",
+    "session_topics",
     "shown",
     "start_recording",
 ]

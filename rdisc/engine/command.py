@@ -19,7 +19,7 @@ from rdisc.engine.arguments import Unbound, bind_settings, call_values, read_val
 from rdisc.engine.errors import RdisError, RdisValueError
 from rdisc.engine.plans import Device, Input, Interface, Primitive
 from rdisc.engine.ports import Simulator
-from rdisc.engine.recording import Recorder
+from rdisc.engine.recording import Recorder, Session
 from rdisc.engine.robot import Robot
 from rdisc.engine.values import Value
 
@@ -63,7 +63,8 @@ def add_arguments(parser: argparse.ArgumentParser, device: Device | None = None,
 
 
 def run_command(args: argparse.Namespace, robot: Robot, prog: str, sim: Simulator | None = None,
-                inputs: Iterable[str] = (), opened: Callable[[], object] | None = None) -> int:
+                inputs: Iterable[str] = (), opened: Callable[[], object] | None = None,
+                session: Session | None = None) -> int:
     """What `rdisc run` does with its options: connect, make the --call calls in order, then
     run until --duration seconds after the startup hooks ended (or, with --watch, until
     Ctrl-C; else end when the calls are done). It always ends by closing the robot, which
@@ -72,7 +73,8 @@ def run_command(args: argparse.Namespace, robot: Robot, prog: str, sim: Simulato
     the simulated device; in simulated time the seconds, the trace's included, are its.
     `inputs` are the files the description was read from, which --record never writes over.
     `opened` is called once the startup hooks are done (a ROS 2 node subscribes then); `--duration
-    inf` runs until a signal."""
+    inf` runs until a signal. `session`: the robot's, when something besides --record observes it
+    (`rdisc run --foxglove`): the calls are told to it, and --record records it."""
     simulated = sim is not None and not sim.realtime
     clock = sim.now if sim is not None and simulated else time.monotonic
     began = clock()
@@ -83,10 +85,11 @@ def run_command(args: argparse.Namespace, robot: Robot, prog: str, sim: Simulato
     except (TypeError, ValueError) as err:
         print(f"{prog}: {err}", file=sys.stderr)
         return EXIT_USAGE
-    recorder = (start_recording(robot, args.record, settings, prog, force=args.force, inputs=inputs)
-                if args.record else None)
+    recorder = (start_recording(robot, args.record, settings, prog, force=args.force, inputs=inputs,
+                                session=session) if args.record else None)
     if args.record and recorder is None:
         return EXIT_USAGE
+    session = recorder.session if recorder is not None else session
     robot.on_error(_print_error)
     if args.watch:
         robot.on_output(_print_output)
@@ -100,8 +103,8 @@ def run_command(args: argparse.Namespace, robot: Robot, prog: str, sim: Simulato
         if opened is not None:
             opened()
         for name, kind, values in calls:
-            if recorder is not None:
-                recorder.call(kind, name, values)
+            if session is not None:
+                session.call(kind, name, values)
             make_call(robot, kind, name, values)
         if simulated and (args.duration is not None or args.watch):
             robot.run_for(None if args.duration is None else args.duration - (clock() - started))
@@ -111,8 +114,8 @@ def run_command(args: argparse.Namespace, robot: Robot, prog: str, sim: Simulato
             _sleep(None)
     except RdisError as err:
         _print_error(err)
-        if recorder is not None:
-            recorder.error(err)
+        if session is not None:
+            session.error(err)
         status = EXIT_ERROR
     except (TypeError, ValueError) as err:  # values of the wrong type for a call, or a bad port
         print(f"{prog}: {err}", file=sys.stderr)
@@ -141,17 +144,18 @@ def run_command(args: argparse.Namespace, robot: Robot, prog: str, sim: Simulato
 
 
 def start_recording(robot: Robot, path: str, settings: Mapping[str, Any], prog: str, *, force: bool = False,
-                    inputs: Iterable[str] = ()) -> Recorder | None:
+                    inputs: Iterable[str] = (), session: Session | None = None) -> Recorder | None:
     """`--record PATH` (of `rdisc run`, `rdisc sim`, a driver and `rdisc console`): a Recorder
     attached to `robot`, or None once stderr says in a line why there is none, which is a usage
     error: the mcap packages are missing, PATH is one of `inputs` (the description and its
-    imports, even with `force`), PATH exists and `force` is not given, or it cannot be written."""
+    imports, even with `force`), PATH exists and `force` is not given, or it cannot be written.
+    `session`: the robot's, when something else observes it too."""
     source = made_from(path, inputs)
     if source is not None:
         print(f"{prog}: will not record to {path}: it is {source}, which this runs", file=sys.stderr)
         return None
     try:
-        return Recorder(robot, path, settings, replace=force)
+        return Recorder(robot, path, settings, replace=force, session=session)
     except ImportError:
         print(f"{prog}: --record needs the mcap and mcap-ros2-support packages "
               "(pip install mcap mcap-ros2-support)", file=sys.stderr)

@@ -176,14 +176,17 @@ class Exchange:
                 io.timeout = self.timeout
             lock.release()
         # I/O callbacks run once the port is free again: one that calls the robot (or
-        # waits for a thread that does) cannot deadlock against this exchange.
+        # waits for a thread that does) cannot deadlock against this exchange. They see the
+        # exchange's events together: no other thread's write comes between its write and its
+        # reply (a recording would take the reply for that write's).
         if self._io_callbacks:
-            if lines_set and levels is not None:
-                self._notify_io("lines", plan.connection, _lines_text(levels))
-            if written:
-                self._notify_io("write", plan.connection, request)
-            if data:
-                self._notify_io("read", plan.connection, data)
+            with self._callback_lock:
+                if lines_set and levels is not None:
+                    self._notify_io("lines", plan.connection, _lines_text(levels))
+                if written:
+                    self._notify_io("write", plan.connection, request)
+                if data:
+                    self._notify_io("read", plan.connection, data)
         if failed is not None:
             raise failed
         self._store(parts)

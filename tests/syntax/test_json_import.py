@@ -11,9 +11,9 @@ from hypothesis import strategies as st
 
 from rdisc.compile import compile_path
 from rdisc.diagnostics import Diagnostics
+from rdisc.json_import import MAX_DEPTH, MAX_VALUES, read
 from rdisc.source import SourceFile
 from rdisc.syntax import ast
-from rdisc.json_import import MAX_DEPTH, MAX_VALUES, read
 from rdisc.syntax.printer import print_module
 
 DATA = Path(__file__).resolve().parent / "data"
