@@ -35,8 +35,8 @@ import sys
 import threading
 import time
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
-from dataclasses import dataclass, field, replace
-from typing import Any, NamedTuple, Protocol
+from dataclasses import KW_ONLY, dataclass, field
+from typing import Any, NamedTuple, Protocol, assert_never
 
 # ---- rdisc engine: errors (rdisc/engine/errors.py), the errors a run raises ----------------------
 
@@ -430,7 +430,22 @@ its variable's declared type, which the checker knows and Python's types cannot 
 Args = list[Any]
 """The values of a call's parameters (or an input's fields), by position."""
 
-OutputCallback = Callable[[dict[str, Any]], object]
+
+class OutputMessage(dict[str, Any]):
+    """An output as its callbacks get it: `{"name": ..., "contents": {...}}`, and `read_ns`, when
+    the state it was computed from was read (the newest reply's, in nanoseconds since the epoch,
+    the host's clock; when it was delivered if no reply has changed the state yet). What a
+    framework's header stamp carries: the data's time, not the publishing's. A dict, so that it
+    compares, prints and serialises as the two keys it holds."""
+
+    __slots__ = ("read_ns",)
+
+    def __init__(self, name: str, contents: dict[str, Any], read_ns: int) -> None:
+        super().__init__(name=name, contents=contents)
+        self.read_ns = read_ns
+
+
+OutputCallback = Callable[[OutputMessage], object]
 ErrorCallback = Callable[[BaseException], object]
 IoCallback = Callable[[str, str, bytes], object]
 """`(direction, connection, data)`: "write" or "read" and the bytes, or "lines" and the modem
@@ -660,13 +675,15 @@ class Bytes:
 
 
 class Field:
-    """The frame's `index`-th field value, packed with a one-integer struct format."""
+    """The frame's `index`-th field value, packed as one integer: its struct `code` in byte `order`."""
 
-    __slots__ = ("index", "name", "struct")
+    __slots__ = ("code", "index", "name", "order", "struct")
 
-    def __init__(self, name: str, fmt: str, index: int) -> None:
+    def __init__(self, name: str, order: str, code: str, index: int) -> None:
         self.name = name
-        self.struct = struct.Struct(fmt)
+        self.order = order
+        self.code = code
+        self.struct = struct.Struct(order + code)
         self.index = index
 
     def put(self, payload: bytes, fields: Sequence[int], chunks: list[bytes]) -> bytes:
@@ -674,15 +691,17 @@ class Field:
 
 
 class Length:
-    """The payload's size plus `adjust`; `most`, the largest size its format states."""
+    """The payload's size plus `adjust`, packed as one integer: its struct `code` in byte
+    `order`, `high` the largest value the code holds; `most`, the largest size it states."""
 
-    __slots__ = ("adjust", "most", "struct")
+    __slots__ = ("adjust", "code", "most", "order", "struct")
 
-    def __init__(self, fmt: str, adjust: int) -> None:
-        self.struct = struct.Struct(fmt)
+    def __init__(self, order: str, code: str, adjust: int, high: int) -> None:
+        self.order = order
+        self.code = code
+        self.struct = struct.Struct(order + code)
         self.adjust = adjust
-        bits = 8 * self.struct.size
-        self.most = ((1 << (bits - 1)) - 1 if fmt[-1].islower() else (1 << bits) - 1) - adjust
+        self.most = high - adjust
 
     def put(self, payload: bytes, fields: Sequence[int], chunks: list[bytes]) -> bytes:
         return self.struct.pack(len(payload) + self.adjust)
@@ -907,20 +926,6 @@ def _latin1(owner: str, value: object) -> bytes:
         raise RdisValueError(f"{owner}: {err.object[err.start:err.end]!r} is not a latin-1 character") from None
 
 
-def _string_sizes(fmt: str) -> dict[int, int]:
-    """The most bytes each `s` or `p` value of a struct format holds, by the value's position."""
-    sizes: dict[int, int] = {}
-    at = 0
-    for count, code in re.findall(r"(\d*)([a-zA-Z?])", fmt):
-        n = int(count) if count else 1
-        if code in "sp":
-            sizes[at] = n if code == "s" else max(0, min(n - 1, 255))
-            at += 1
-        elif code != "x":
-            at += n
-    return sizes
-
-
 Group = tuple[int, int, int]
 """A repeated group of a struct format: its first value, its number of codes, its count (0:
 as many as the message says)."""
@@ -998,7 +1003,7 @@ def _regrouped(values: Sequence[Any], groups: tuple[Group, ...]) -> tuple[Any, .
 
 class Pack:
     """A request packed with a struct format: the values at `strings` as latin-1 bytes
-    (refused when longer than their `Ns` holds: struct would cut them short), the arrays
+    (refused when longer than `rooms` says their `Ns` holds: struct would cut them short), the arrays
     of repeated `groups` element by element, and, with `rest` (a format ending in `*`),
     the last value, bytes, appended as it is. With `varying`, `fixed` is the format before
     that group, repeated as many times as its arrays hold values, and its count field
@@ -1008,11 +1013,13 @@ class Pack:
     __slots__ = ("bits", "groups", "rest", "sizes", "splitters", "strings", "struct", "varying")
 
     def __init__(self, fixed: str, strings: tuple[int, ...] = (), rest: bool = False,
-                 groups: tuple[Group, ...] = (), varying: Varying | None = None, bits: tuple[Split, ...] = ()) -> None:
+                 groups: tuple[Group, ...] = (), varying: Varying | None = None, bits: tuple[Split, ...] = (),
+                 rooms: tuple[tuple[int, int], ...] = ()) -> None:
+        """`rooms`: each `Ns` or `Np` value's index among the values, and the most bytes it holds."""
         self.struct = struct.Struct(fixed)
         self.strings = strings
         self.rest = rest
-        self.sizes = _string_sizes(fixed)
+        self.sizes = dict(rooms)
         self.groups = groups
         self.varying = varying
         self.bits = bits
@@ -1090,11 +1097,14 @@ class Unpack:
     split into `bits` is then given as its fields. With `until`, an unframed tagged reply's
     entry is read to those bytes (Firmata's sysex end), which are dropped."""
 
-    __slots__ = ("bits", "groups", "rest", "size", "splitters", "strings", "struct", "until", "varying")
+    __slots__ = ("bits", "groups", "rest", "size", "splitters", "strings", "struct", "until", "varying",
+                 "varying_sizes")
 
     def __init__(self, fixed: str, strings: tuple[int, ...] = (), rest: bool = False,
                  groups: tuple[Group, ...] = (), varying: Varying | None = None, bits: tuple[Split, ...] = (),
-                 until: bytes | None = None) -> None:
+                 until: bytes | None = None, varying_sizes: tuple[int, int] = (0, 0)) -> None:
+        """`varying_sizes`: the bytes of one round of the `varying` group and of the format after it."""
+        self.varying_sizes = varying_sizes
         self.struct = struct.Struct(fixed)
         self.strings = strings
         self.rest = rest
@@ -1135,8 +1145,7 @@ class Unpack:
         """The rounds the count field says, or as many as the bytes after the head and before
         the tail hold whole; the count field's own value dropped."""
         unit, tail, count_at = varying
-        order = self.struct.format[:1]
-        unit_size, tail_size = struct.calcsize(order + unit), struct.calcsize(order + tail)
+        unit_size, tail_size = self.varying_sizes
         head = self.struct.size
         if len(data) < head + tail_size:
             raise RdisProtocolError(f"{owner}: expected {head + tail_size} bytes or more, got {len(data)}")
@@ -1208,61 +1217,164 @@ Request = Callable[[StateValues, Args], bytes | None]
 None where the general way must decide."""
 
 
+# ---- the shapes of a reply: one of these is how a primitive's reply is read ---------------------
+
+
+@dataclass(frozen=True, slots=True)
+class NoReply:
+    """Nothing is read: the request is only written (its post-actions read its parameters alone)."""
+
+
+NO_REPLY = NoReply()
+
+
+@dataclass(frozen=True, slots=True)
+class LineReply:
+    """A line up to the connection's terminator, matched by `decoder` (no frame)."""
+
+    decoder: Match
+
+
+@dataclass(frozen=True, slots=True)
+class FixedReply:
+    """The bytes `decoder` takes, as they come (no frame)."""
+
+    decoder: Unpack
+
+
+@dataclass(frozen=True, slots=True)
+class FramedReply:
+    """A reply frame, its payload decoded by `decoder` (None: the frame is only read, as a frame
+    of constant parts acknowledges). `skip`: frames that do not decode are read past."""
+
+    decoder: Unpack | Match | None = None
+    _: KW_ONLY
+    skip: bool = False
+
+
+@dataclass(frozen=True, slots=True)
+class TaggedReply:
+    """A reply frame whose payload starts with a tag (struct format `tag`): the rest is decoded
+    by the entry of `table` the tag chooses, whose post-actions take it."""
+
+    tag: str
+    table: Mapping[int, Primitive]
+    _: KW_ONLY
+    skip: bool = False
+    tag_struct: struct.Struct = field(init=False)
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "tag_struct", struct.Struct(self.tag))
+
+
+@dataclass(frozen=True, slots=True)
+class TaggedStream:
+    """A tag, then exactly the bytes its entry decodes, with no frame (Firmata's stream). `skip`:
+    a tag without an entry is read past."""
+
+    tag: str
+    table: Mapping[int, Primitive]
+    _: KW_ONLY
+    skip: bool = False
+    tag_struct: struct.Struct = field(init=False)
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "tag_struct", struct.Struct(self.tag))
+
+
+@dataclass(frozen=True, slots=True)
+class SubPayloads:
+    """A reply frame whose payload is sub-payloads until it ends (Kobuki's feedback): each a tag,
+    its length (struct format `length`, when given) and the bytes its entry decodes."""
+
+    tag: str
+    table: Mapping[int, Primitive]
+    length: str | None = None
+    _: KW_ONLY
+    skip: bool = False
+    tag_struct: struct.Struct = field(init=False)
+    length_struct: struct.Struct | None = field(init=False)
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "tag_struct", struct.Struct(self.tag))
+        object.__setattr__(self, "length_struct", None if self.length is None else struct.Struct(self.length))
+
+
+@dataclass(frozen=True, slots=True)
+class Records:
+    """A reply frame whose payload is records, each ended by `marker`, each decoded by `decoder`
+    (Firmata's capability report)."""
+
+    marker: bytes
+    decoder: Unpack | Match
+    _: KW_ONLY
+    skip: bool = False
+
+
+@dataclass(frozen=True, slots=True)
+class KeyedReply:
+    """A reply table chosen by a parameter (at position `key`): the entry its value chooses is
+    what runs, chosen before anything is written (`entry`)."""
+
+    key: int
+    table: Mapping[int, Primitive]
+
+    def entry(self, args: Args) -> Primitive:
+        return self.table[args[self.key]]  # the key's range holds every key of the table
+
+
+@dataclass(frozen=True, slots=True)
+class SeveralReplies:
+    """`replies N`: `count` replies to one request, each read as `each`, through its own frame
+    where `frames` gives one (else the primitive's); their values collected value by value into
+    arrays for the primitive's post-actions."""
+
+    count: int
+    each: Reply
+    frames: tuple[FrameUse, ...] = ()
+
+
+@dataclass(frozen=True, slots=True)
+class ListedReplies:
+    """`replies { }`: the replies read in turn, a plan each (its own frame, reply, `expect` and
+    post-actions)."""
+
+    answers: tuple[Primitive, ...]
+
+
+Reply = (NoReply | LineReply | FixedReply | FramedReply | TaggedReply | TaggedStream | SubPayloads | Records
+         | KeyedReply | SeveralReplies | ListedReplies)
+"""How a primitive's reply is read: one shape each, decided by the lowering (`rdisc.lower`) and
+read by one `match` (`Exchange._read`)."""
+
+
 @dataclass(frozen=True, slots=True)
 class Primitive:
     """One device command: its format values (over state and its parameters), how they are
     encoded and framed (no encoder: no request, only modem lines), how its reply is read and
-    decoded, and its post-actions (the new values of state variables, over state, its
-    parameters and the reply)."""
+    decoded (`reply`, one of the shapes of `Reply`), and its post-actions (the new values of
+    state variables, over state, its parameters and the reply)."""
 
     name: str
     connection: str
     params: tuple[Param, ...]
     values: Callable[[StateValues, Args], Args]
     encoder: Pack | Format | None
-    decoder: Unpack | Match | None = None
+    _: KW_ONLY
+    reply: Reply = NO_REPLY  # how its reply is read
     actions: Callable[[StateValues, Args, Sequence[Any]], dict[str, Value]] | None = None
     frame: FrameUse | None = None
-    skip: bool = False  # `skip unmatched`: read past replies that do not decode
     timeout: float | None = None  # seconds its reply may take, instead of the robot's
-    table: Mapping[int, Primitive] | None = None  # a reply table: the plan for each key or tag
-    key: int = -1  # the position of the parameter that chooses from `table` (-1: the reply's tag does)
-    tag: str | None = None  # the struct format of the tag that starts the reply
-    each: bool = False  # the framed payload is sub-payloads, each a tag and its entry's bytes, until it ends
-    length: str | None = None  # `each`: the struct format of each sub-payload's length, after its tag
-    records: bytes | None = None  # the marker ending each record of the framed payload, each decoded by `decoder`
     checked: tuple[str, ...] = ()  # state variables its post-actions may make too wide (checked as they are set)
     request: Request | None = None  # its parameters' values to the bytes, when it is only written (`_sent_at_once`)
     expect: Callable[[StateValues, Args, Sequence[Any]], object] | None = None  # a condition its decoded reply meets
     lines: Callable[[StateValues, Args], dict[str, Value]] | None = None  # "dtr"/"rts": levels, set before the request
-    replies: int = 0  # `replies N`: N replies to one request, collected value by value into arrays (0: one)
-    reply_frames: tuple[FrameUse, ...] = ()  # each reply's own frame (`replies id in IDS frame status(id)`)
-    answers: tuple[Primitive, ...] = ()  # the replies read in turn, a plan each: `replies { }`'s, each its own
-    # frame, decoder, expect and post-actions; `replies N`'s made here, this plan's (through `reply_frames`)
-    expects_reply: bool = field(init=False)
-    framed_reply: bool = field(init=False)
-    in_parts: bool = field(init=False)  # read as sub-payloads or records, each its plan, values and post-actions
     floats: tuple[int, ...] = field(init=False)
     ranged: tuple[int, ...] = field(init=False)
-    tag_struct: struct.Struct | None = field(init=False)
-    length_struct: struct.Struct | None = field(init=False)
 
     def __post_init__(self) -> None:
-        reply = self.frame.frame.reply if self.frame is not None else None
-        framed = reply is not None and bool(reply.parts)
-        acknowledged = framed and reply is not None and reply.payload < 0  # constant parts only
-        object.__setattr__(self, "framed_reply", framed)
-        object.__setattr__(self, "in_parts", self.each or self.records is not None)
-        object.__setattr__(self, "expects_reply", self.decoder is not None or self.table is not None or acknowledged
-                           or bool(self.answers))
         object.__setattr__(self, "floats", _floats(self.params))
         object.__setattr__(self, "ranged", _ranged(self.params))
-        object.__setattr__(self, "tag_struct", None if self.tag is None else struct.Struct(self.tag))
-        object.__setattr__(self, "length_struct", None if self.length is None else struct.Struct(self.length))
-        if self.replies:  # one plan for each reply, all alike but for their frames
-            one = replace(self, replies=0, reply_frames=())
-            object.__setattr__(self, "answers", tuple(replace(one, frame=use) for use in self.reply_frames)
-                               or (one,) * self.replies)
         if not _sent_at_once(self):
             object.__setattr__(self, "request", None)
         elif self.request is None:
@@ -1278,7 +1390,7 @@ def _plain(encoder: Pack | Format | None) -> bool:
 def _sent_at_once(plan: Primitive) -> bool:
     """Whether running the primitive is only packing its values, framing them and writing
     them: no reply, reply table, post-action, modem line or string in the way."""
-    return _plain(plan.encoder) and not plan.expects_reply and plan.actions is None and plan.table is None and plan.lines is None
+    return _plain(plan.encoder) and isinstance(plan.reply, NoReply) and plan.actions is None and plan.lines is None
 
 
 def plainly_given(args: Args, kinds: tuple[type, ...], bounds: tuple[tuple[int, Any, Any], ...]) -> bool:
@@ -1325,6 +1437,8 @@ class Output:
     name: str
     fields: Callable[[StateValues], dict[str, Value]]
     adapter: str = ""
+    frame: str = ""  # its stamped messages' frame id and child frame id (`semantics.ros.header_frames`)
+    child_frame: str = ""
 
 
 @dataclass(frozen=True, slots=True)
@@ -1392,9 +1506,10 @@ def _written_at_once(interface: Interface) -> Call | None:
     prim = call.target
     if not isinstance(prim, Primitive):
         return None
-    if not call.direct or call.delay or call.when or not _plain(prim.encoder) or prim.expects_reply or prim.frame is not None:
+    if not call.direct or call.delay or call.when or not _plain(prim.encoder) or not isinstance(prim.reply, NoReply) \
+            or prim.frame is not None:
         return None
-    return call if prim.actions is None and prim.table is None and prim.lines is None and not prim.ranged else None
+    return call if prim.actions is None and prim.lines is None and not prim.ranged else None
 
 
 def _composed(plan: Input, call: Call) -> Request:
@@ -1753,13 +1868,11 @@ def _quick_wrap(side: Side) -> Wrap | None:
             continue
         if not isinstance(part, (Field, Length)):
             return None
-        fmt = part.struct.format
-        prefix, code = (fmt[0], fmt[1:]) if fmt[:1] in "<>!=@" else ("", fmt)
         if part.struct.size > 1:
-            if prefix not in ("<", ">", "!") or order not in ("", prefix.replace("!", ">")):
+            if part.order not in ("<", ">", "!") or order not in ("", part.order.replace("!", ">")):
                 return None
-            order = prefix.replace("!", ">")
-        codes.append(code)
+            order = part.order.replace("!", ">")
+        codes.append(part.code)
         picks.append((len(template), part.index, 0) if isinstance(part, Field) else (len(template), -1, part.adjust))
         template.append(0)
     head = struct.Struct((order or "<") + "".join(codes))
@@ -2041,15 +2154,19 @@ from connection name to port."""
 class Simulator(Protocol):
     """A simulated device in place of the ports (`Robot.open(sim=...)`; `rdisc.sim` gives one
     over MuJoCo): it takes what the host commands, by primitive and interface with their
-    parameters' values, and answers a primitive's reply with its values (`replies N` or
-    `replies { }`: a list of a reply for each of its `answers`, each its values). In simulated time
-    (`realtime` False) the robot runs no threads: its schedule and delays advance the simulation."""
+    parameters' values (`interface`, `exchange`), and answers each reply a primitive reads with
+    its values (`reply`; `place`, the reply's among `replies N` or `replies { }`, None for a
+    primitive's one reply), the reply's shape (`Primitive.reply`) saying which it reads. In
+    simulated time (`realtime` False) the robot runs no threads: its schedule and delays advance
+    the simulation."""
 
     realtime: bool
 
     def interface(self, plan: Interface, args: Args, /) -> None: ...
 
-    def exchange(self, plan: Primitive, local: Args, /) -> Sequence[Any]: ...
+    def exchange(self, plan: Primitive, local: Args, /) -> None: ...
+
+    def reply(self, plan: Primitive, local: Args, place: int | None, /) -> Sequence[Any]: ...
 
     def advance(self, seconds: float, /) -> None: ...
 
@@ -2204,6 +2321,10 @@ class _Worker:
 
 _log = logging.getLogger("rdisc")
 
+_ReplyPart = tuple[Primitive, Args, Sequence[Any]]
+"""A reply read, or a part of one: the plan whose post-actions take it, what they read besides it
+(the parameters' values, and a tag or a record's position after them), and its values."""
+
 
 class Exchange:
     """The part of a Robot that talks to its devices: it writes requests, reads replies and
@@ -2213,6 +2334,7 @@ class Exchange:
     name: str
     timeout: float
     _state: dict[str, Value]
+    _read_ns: int | None  # when a reply last changed the state (ns since the epoch); None: none has
     _state_lock: threading.Lock
     _callback_lock: threading.RLock
     _output_callbacks: list[OutputCallback]
@@ -2224,6 +2346,7 @@ class Exchange:
     # closes (`_closer`: the terminate hooks), and once they are done nothing at all (`_closer` None).
     _closed: bool
     _closer: int | None
+    _sim: Simulator | None  # a simulated device in place of the ports (`_simulated`)
 
     # ---- writing requests, reading replies, running post-actions ------------------------------------
 
@@ -2282,8 +2405,11 @@ class Exchange:
         then show the I/O callbacks every byte written and read, and run the post-actions.
 
         `local` is the primitive's parameters' values (a direct call passes its values)."""
+        if self._sim is not None:
+            self._simulated(self._sim, plan, values, local)
+            return
         request, fields, levels = self._request(plan, values, local)
-        if not plan.expects_reply:
+        if isinstance(plan.reply, NoReply):
             self._write(plan, request, levels)
             if plan.actions is not None:
                 self._assign(plan, local, ())
@@ -2296,7 +2422,7 @@ class Exchange:
         lock = port.lock
         reader = port.input
         wait = plan.timeout or self.timeout
-        reply: Sequence[Any] = ()
+        parts: list[_ReplyPart] = []
         failed: BaseException | None = None
         lines_set = written = False
         lock.acquire()
@@ -2314,10 +2440,7 @@ class Exchange:
             if plan.timeout is not None:
                 io.timeout = plan.timeout
             reader.begin(wait)
-            if plan.answers:
-                reply = self._read_replies(plan, link, reader, fields, request, wait, local)
-            else:
-                plan, local, reply = self._read_reply(plan, link, reader, fields, request, wait, local)
+            parts = self._read(plan, plan.reply, plan.frame, link, reader, fields, request, wait, local)
         except RdisError as err:
             failed = err
         except Exception as err:  # noqa: BLE001 - whatever the port raises, it failed
@@ -2342,19 +2465,15 @@ class Exchange:
                     self._notify_io("read", plan.connection, data)
         if failed is not None:
             raise failed
-        self._store(plan, local, reply)
+        self._store(parts)
 
-    def _store(self, plan: Primitive, local: Args, reply: Sequence[Any]) -> None:
+    def _store(self, parts: list[_ReplyPart]) -> None:
         """Run the post-actions on a reply read whole (every part decoded and met, so a bad one
         changed no state): each sub-payload's, record's or listed reply's in the order they came,
-        published together; or the primitive's (`replies N`: value i of the replies as one array)."""
-        if plan.in_parts:
-            self._assign_each([part for part in reply if part[0].actions is not None])
-        elif plan.answers and not plan.replies:
-            self._assign_each([(answer, local, one) for answer, one in zip(plan.answers, reply)
-                               if answer.actions is not None])
-        elif plan.actions is not None:
-            self._assign(plan, local, tuple(zip(*reply)) if plan.replies else reply)
+        published together."""
+        taken = [part for part in parts if part[0].actions is not None]
+        if taken:
+            self._assign_each(taken)
 
     def _request(self, plan: Primitive, values: Args,
                  local: Args) -> tuple[bytes, list[Any], dict[str, Value] | None]:
@@ -2378,17 +2497,14 @@ class Exchange:
                 raise RdisValueError(f"{plan.name}: {err}") from None
         return request, fields, levels
 
-    def _read_reply(self, plan: Primitive, link: _Link, reader: Incoming, fields: list[Any], request: bytes,
-                    wait: float, local: Args) -> tuple[Primitive, Args, Sequence[Any]]:
-        """The plan whose post-actions take the reply (a tag's entry), what they read besides
-        it (the parameters' values, and a tag's after them), and the reply, decoded and meeting
-        its `expect`."""
-        decoder = plan.decoder
-        use = plan.frame
-        if use is None or not plan.framed_reply:
-            if plan.tag_struct is not None:
-                return self._read_tagged(plan, reader, wait, local)
-            if isinstance(decoder, Match):  # one line
+    def _read(self, plan: Primitive, shape: Reply, use: FrameUse | None, link: _Link, reader: Incoming,
+              fields: list[Any], request: bytes, wait: float, local: Args) -> list[_ReplyPart]:
+        """The reply, read from the port as `shape` says (through `use`, its frame), each part
+        decoded and meeting its `expect`: the parts whose post-actions take it."""
+        match shape:
+            case NoReply():
+                return [(plan, local, ())]
+            case LineReply(decoder=decoder):
                 end = link.connection.terminator
                 line = reader.read_until(end, MAX_LINE)
                 if not line:
@@ -2398,53 +2514,77 @@ class Exchange:
                 text = line[: -len(end)]
                 if end == b"\n" and text.endswith(b"\r"):  # the default takes CR LF as well as LF
                     text = text[:-1]
-                return plan, local, self._met(plan, local, decoder.decode(plan.name, text))
-            assert decoder is not None
-            data = reader.read(decoder.size)
-            if not data:
-                raise RdisTimeout(f"{plan.name}: no reply within {wait:g} s")
-            return plan, local, self._met(plan, local, decoder.decode(plan.name, data))
-        # The decoding's size is the payload's, unless a tag comes first or stuffing may have lengthened
-        # it on the wire (then the constant after the payload ends it).
-        stuffed = use.frame.stuffing is not None and any(side.delimiter for side in use.frame.replies)
-        size = decoder.size if decoder is not None and plan.tag is None and plan.records is None and not stuffed else -1
-        while True:  # once, or until a reply decodes when the primitive skips the others
+                return [(plan, local, self._met(plan, local, decoder.decode(plan.name, text)))]
+            case FixedReply(decoder=unpack):
+                data = reader.read(unpack.size)
+                if not data:
+                    raise RdisTimeout(f"{plan.name}: no reply within {wait:g} s")
+                return [(plan, local, self._met(plan, local, unpack.decode(plan.name, data)))]
+            case TaggedStream():
+                return [self._read_tagged(plan, shape, reader, wait, local)]
+            case FramedReply(decoder=decoding, skip=skip):
+                # The decoding's size is the payload's, unless stuffing may have lengthened it on
+                # the wire (then the constant after the payload ends it).
+                assert use is not None
+                stuffed = use.frame.stuffing is not None and any(side.delimiter for side in use.frame.replies)
+                size = decoding.size if decoding is not None and not stuffed else -1
+                return self._framed(plan, use, reader, fields, request, wait, skip, size, lambda payload: [
+                    (plan, local, self._met(plan, local, decoding.decode(plan.name, payload)) if decoding else ())])
+            case TaggedReply(skip=skip):
+                return self._framed(plan, use, reader, fields, request, wait, skip, -1,
+                                    lambda payload: [self._tagged(plan, shape, payload, local)])
+            case SubPayloads(skip=skip):
+                return self._framed(plan, use, reader, fields, request, wait, skip, -1,
+                                    lambda payload: self._sub_payloads(plan, shape, payload, local))
+            case Records(skip=skip):
+                return self._framed(plan, use, reader, fields, request, wait, skip, -1,
+                                    lambda payload: self._records(plan, shape, payload, local))
+            case SeveralReplies(count=count, each=each, frames=frames):  # value i of them all, as one array
+                turns = [(plan, each, frames[n] if frames else use) for n in range(count)]
+                got = self._in_turn(plan, turns, link, reader, fields, request, wait, local)
+                return [(plan, local, tuple(zip(*(values for _, _, values in got))))]
+            case ListedReplies(answers=answers):
+                turns = [(answer, answer.reply, answer.frame) for answer in answers]
+                return self._in_turn(plan, turns, link, reader, fields, request, wait, local)
+            case KeyedReply():  # `Robot._primitive_in_full` runs the entry its key chooses
+                raise AssertionError(f"{plan.name}: a reply table's entry is chosen before the exchange")
+            case _:
+                assert_never(shape)
+
+    def _framed(self, plan: Primitive, use: FrameUse | None, reader: Incoming, fields: list[Any], request: bytes,
+                wait: float, skip: bool, size: int, taken: Callable[[bytes], list[_ReplyPart]]) -> list[_ReplyPart]:
+        """A reply frame's payload (`size`: its decoding's, or -1), as `taken` reads it: once, or
+        under `skip unmatched` until one is read, within the deadline."""
+        assert use is not None
+        while True:
             try:
-                payload = use.frame.read(reader, fields, request, size)[1]
-                if plan.each:
-                    return plan, local, self._sub_payloads(plan, payload, local)
-                if plan.records is not None:
-                    return plan, local, self._records(plan, payload, local)
-                if plan.tag_struct is not None:
-                    return self._tagged(plan, payload, local)
-                return plan, local, self._met(plan, local, decoder.decode(plan.name, payload)) if decoder else ()
+                return taken(use.frame.read(reader, fields, request, size)[1])
             except (FrameError, RdisProtocolError) as err:
                 nothing = isinstance(err, FrameError) and err.timeout
-                if plan.skip and not nothing and reader.deadline is not None and time.monotonic() < reader.deadline:
+                if skip and not nothing and reader.deadline is not None and time.monotonic() < reader.deadline:
                     continue
-                if nothing or plan.skip:
-                    raise RdisTimeout(f"{plan.name}: no {'matching reply' if plan.skip else 'reply'} "
+                if nothing or skip:
+                    raise RdisTimeout(f"{plan.name}: no {'matching reply' if skip else 'reply'} "
                                       f"within {wait:g} s") from None
                 if isinstance(err, RdisProtocolError):
                     raise
                 raise RdisProtocolError(f"{plan.name}: {err}") from None
 
-    def _read_replies(self, plan: Primitive, link: _Link, reader: Incoming, fields: list[Any], request: bytes,
-                      wait: float, local: Args) -> list[Sequence[Any]]:
-        """`replies N` and `replies { }`: a reply for each of the plan's answers, read in turn as
-        one is (each decoded and meeting its `expect`; through its own frame, with its own field
+    def _in_turn(self, plan: Primitive, turns: list[tuple[Primitive, Reply, FrameUse | None]], link: _Link,
+                 reader: Incoming, fields: list[Any], request: bytes, wait: float, local: Args) -> list[_ReplyPart]:
+        """`replies N` and `replies { }`: a reply for each turn, read in turn as one is (each as
+        its plan and shape say, meeting its `expect`; through its own frame, with its own field
         values, where it has one), all within the one deadline, in the order they came."""
-        got: list[Sequence[Any]] = []
-        count = len(plan.answers)
-        for n, answer in enumerate(plan.answers):
-            use = answer.frame
+        got: list[_ReplyPart] = []
+        count = len(turns)
+        for n, (own, shape, use) in enumerate(turns):
             if use is not None and use is not plan.frame:
                 try:
                     fields = use.frame.values(plan.name, use.args(self._state, local))
                 except (struct.error, *EVAL_ERRORS) as err:
                     raise RdisValueError(f"{plan.name}: {err}") from None
             try:
-                got.append(self._read_reply(answer, link, reader, fields, request, wait, local)[2])
+                got.append(self._read(own, shape, use, link, reader, fields, request, wait, local)[0])
             except RdisTimeout:
                 if not n:
                     raise
@@ -2453,6 +2593,44 @@ class Exchange:
                 raise RdisProtocolError(f"{plan.name}: reply {n + 1} of {count}: "
                                         f"{str(err).removeprefix(plan.name + ': ')}") from None
         return got
+
+    def _simulated(self, sim: Simulator, plan: Primitive, values: Args, local: Args) -> None:
+        """A primitive against the simulator: its request is encoded as for a port (the I/O
+        callbacks see it written, and what a port refuses is refused), the simulator takes the
+        parameters' values and gives each reply's, which meet the `expect` and go to the
+        post-actions as a reply read from a port would."""
+        if self._closed:
+            self._refuse(plan)
+        request, _fields, levels = self._request(plan, values, local)
+        sim.exchange(plan, local)
+        if self._io_callbacks:
+            if levels is not None:
+                self._notify_io("lines", plan.connection, _lines_text(levels))
+            if request:
+                self._notify_io("write", plan.connection, request)
+        self._store(self._given(sim, plan, local))
+
+    def _given(self, sim: Simulator, plan: Primitive, local: Args) -> list[_ReplyPart]:
+        """The replies a simulator gives in place of the port's (`Simulator.reply`), as the parts
+        a reply of the plan's shape is read into: each meeting its plan's `expect`."""
+        shape = plan.reply
+        match shape:
+            case NoReply():
+                return [(plan, local, ())]
+            case LineReply() | FixedReply() | FramedReply() | TaggedReply() | TaggedStream():
+                return [(plan, local, self._met(plan, local, sim.reply(plan, local, None)))]
+            case SubPayloads() | Records():  # a simulator reports none
+                return []
+            case SeveralReplies(count=count):
+                replies = [self._met(plan, local, sim.reply(plan, local, n)) for n in range(count)]
+                return [(plan, local, tuple(zip(*replies)))]
+            case ListedReplies(answers=answers):
+                return [(answer, local, self._met(answer, local, sim.reply(plan, local, n)))
+                        for n, answer in enumerate(answers)]
+            case KeyedReply():
+                raise AssertionError(f"{plan.name}: a reply table's entry is chosen before the exchange")
+            case _:
+                assert_never(shape)
 
     def _met(self, plan: Primitive, local: Args, reply: Sequence[Any]) -> Sequence[Any]:
         """The reply, when it meets the primitive's `expect` (else, like a reply that does not
@@ -2468,30 +2646,28 @@ class Exchange:
         return reply
 
     @staticmethod
-    def _tagged(plan: Primitive, payload: bytes, local: Args) -> tuple[Primitive, Args, Sequence[Any]]:
+    def _tagged(plan: Primitive, shape: TaggedReply, payload: bytes, local: Args) -> _ReplyPart:
         """The entry a framed reply's tag chooses, the tag after the parameters' values, and
         the rest of the payload decoded by the entry."""
-        tag = plan.tag_struct
-        assert tag is not None and plan.table is not None
+        tag = shape.tag_struct
         if len(payload) < tag.size:
             raise RdisProtocolError(f"{plan.name}: expected {tag.size} bytes or more, got {len(payload)}")
         value = tag.unpack_from(payload)[0]
-        case = plan.table.get(value)
+        case = shape.table.get(value)
         if case is None:
             raise RdisProtocolError(f"{plan.name}: no reply entry for tag {value}")
-        rest = payload[tag.size :]
-        return case, [*local, value], case.decoder.decode(plan.name, rest) if case.decoder is not None else ()
+        decoder = _entry_decoder(case)
+        return case, [*local, value], decoder.decode(plan.name, payload[tag.size :]) if decoder is not None else ()
 
-    def _records(self, plan: Primitive, payload: bytes, local: Args) -> list[tuple[Primitive, Args, Sequence[Any]]]:
+    def _records(self, plan: Primitive, shape: Records, payload: bytes, local: Args) -> list[_ReplyPart]:
         """A payload of records, each ended by the marker where it first comes (Firmata's capability
         report: a pin's mode and resolution pairs, then 7F), each decoded by the primitive's decoder
         and meeting its `expect`, its position after the parameters' values (`index`). At most
         MAX_ARRAY of them; a payload whose end is not a marker is refused, as is a record that does
         not decode. All are decoded before any post-action runs, so a bad one changes no state."""
-        marker = plan.records
-        decoder = plan.decoder
-        assert marker is not None and decoder is not None
-        parts: list[tuple[Primitive, Args, Sequence[Any]]] = []
+        marker = shape.marker
+        decoder = shape.decoder
+        parts: list[_ReplyPart] = []
         at = 0
         while at < len(payload):
             end = payload.find(marker, at)
@@ -2507,28 +2683,27 @@ class Exchange:
         return parts
 
     @staticmethod
-    def _sub_payloads(plan: Primitive, payload: bytes, local: Args) -> list[tuple[Primitive, Args, Sequence[Any]]]:
+    def _sub_payloads(plan: Primitive, shape: SubPayloads, payload: bytes, local: Args) -> list[_ReplyPart]:
         """A payload of sub-payloads (Kobuki's feedback), in any order and any subset, until it
         ends: each its tag, its length when the table gives one, and its bytes, decoded by the
         entry the tag chooses (its plan, the tag after the parameters' values, its values). With
         a length, a tag without an entry is skipped (a newer firmware's) and a length that is
         not its entry's size refused; without one, the entry's size says where the next starts.
         All are decoded before any post-action runs, so a bad one changes no state."""
-        tag = plan.tag_struct
-        size = plan.length_struct
-        assert tag is not None and plan.table is not None
+        tag = shape.tag_struct
+        size = shape.length_struct
         head = tag.size + (size.size if size is not None else 0)
-        parts: list[tuple[Primitive, Args, Sequence[Any]]] = []
+        parts: list[_ReplyPart] = []
         at = 0
         while at < len(payload):
             if len(payload) - at < head:
                 raise RdisProtocolError(f"{plan.name}: {len(payload) - at} bytes at offset {at} are no "
                                         f"sub-payload (its head is {head})")
             value = tag.unpack_from(payload, at)[0]
-            case = plan.table.get(value)
+            case = shape.table.get(value)
             if case is None and size is None:
                 raise RdisProtocolError(f"{plan.name}: no reply entry for tag {value} at offset {at}")
-            decoder = case.decoder if case is not None else None
+            decoder = _entry_decoder(case) if case is not None else None
             if size is not None:
                 length = size.unpack_from(payload, at + tag.size)[0]
             else:
@@ -2548,43 +2723,42 @@ class Exchange:
         return parts
 
     @staticmethod
-    def _read_tagged(plan: Primitive, reader: Incoming, wait: float,
-                     local: Args) -> tuple[Primitive, Args, Sequence[Any]]:
+    def _read_tagged(plan: Primitive, shape: TaggedStream, reader: Incoming, wait: float, local: Args) -> _ReplyPart:
         """A tagged reply without a frame (Firmata's stream): the tag, then exactly the bytes its
         entry decodes (a fixed size: checked). Under `skip unmatched` a tag without an entry is
         read past one byte at a time, the next tag looked for from the byte after its first,
         until the reply's deadline."""
-        tag = plan.tag_struct
-        assert tag is not None and plan.table is not None
-        missed = f"{plan.name}: no {'matching reply' if plan.skip else 'reply'} within {wait:g} s"
+        tag = shape.tag_struct
+        skip = shape.skip
+        missed = f"{plan.name}: no {'matching reply' if skip else 'reply'} within {wait:g} s"
         while True:
             head = reader.read(tag.size)
             if len(head) < tag.size:  # the deadline passed
-                if not head or plan.skip:
+                if not head or skip:
                     raise RdisTimeout(missed)
                 raise RdisProtocolError(f"{plan.name}: expected {tag.size} bytes, got {len(head)}")
             value = tag.unpack(head)[0]
-            case = plan.table.get(value)
+            case = shape.table.get(value)
             if case is None:
-                if not plan.skip:
+                if not skip:
                     raise RdisProtocolError(f"{plan.name}: no reply entry for tag {value}")
                 if reader.deadline is not None and time.monotonic() >= reader.deadline:
                     raise RdisTimeout(missed)
                 reader.put_back(head[1:])
                 continue
-            decoder = case.decoder
-            assert isinstance(decoder, Unpack)
+            decoder = _entry_decoder(case)
+            assert isinstance(decoder, Unpack)  # an unframed entry's size is fixed, or it has an end
             if decoder.until is not None:  # to its end marker, which is not the reply's
                 body = reader.read_until(decoder.until)
                 if not body.endswith(decoder.until):
-                    if plan.skip:
+                    if skip:
                         raise RdisTimeout(missed)
                     raise RdisProtocolError(f"{plan.name}: no end {decoder.until.hex(' ')} after tag {value} "
                                             f"within {wait:g} s")
                 return case, [*local, value], decoder.decode(plan.name, body[: -len(decoder.until)])
             body = reader.read(decoder.size)
             if len(body) < decoder.size:
-                if plan.skip:
+                if skip:
                     raise RdisTimeout(missed)
                 raise RdisProtocolError(f"{plan.name}: expected {decoder.size} bytes after tag {value}, "
                                         f"got {len(body)}")
@@ -2617,16 +2791,19 @@ class Exchange:
                         raise RdisValueError(f"{plan.name}: {name} would be a {value.bit_length()}-bit integer; "
                                              "integers are limited to 64 bits and a sign")
                 state = {**state, **changes}
+            self._read_ns = time.time_ns()  # the reply just read: an output's `read_ns`
             self._state = state
 
     # ---- delivering to callbacks: one at a time, a failing one reported -----------------------------
 
     def _deliver(self, plan: Output) -> None:
+        with self._state_lock:  # the snapshot and when it was read, together
+            state, read_ns = self._state, self._read_ns
         try:
-            contents = plan.fields(self._state)
+            contents = plan.fields(state)
         except EVAL_ERRORS as err:
             raise RdisValueError(f"{plan.name}: {err}") from None
-        message: dict[str, Any] = {"name": plan.name, "contents": contents}
+        message = OutputMessage(plan.name, contents, time.time_ns() if read_ns is None else read_ns)
         with self._callback_lock:
             for callback in list(self._output_callbacks):
                 try:
@@ -2664,6 +2841,13 @@ class Exchange:
                     callback(error)
                 except Exception:  # noqa: BLE001, S110 - the contract: an error callback's failure is ignored
                     pass
+
+
+def _entry_decoder(entry: Primitive) -> Unpack | Match | None:
+    """What decodes a tag's entry: the decoder of its reply (after the tag, the rest of the
+    frame's payload, or unframed the bytes it takes), None for an entry that decodes nothing."""
+    reply = entry.reply
+    return reply.decoder if isinstance(reply, (FixedReply, FramedReply, LineReply)) else None
 
 
 def _lines_text(levels: Mapping[str, Value]) -> bytes:
@@ -2761,6 +2945,7 @@ class Robot(Exchange):
         self._state_lock = threading.Lock()
         self._callback_lock = threading.RLock()  # callbacks run one at a time
         self._output_callbacks: list[OutputCallback] = []
+        self._read_ns: int | None = None  # when a reply last changed the state
         self._error_callbacks: list[ErrorCallback] = []
         self._io_callbacks: list[IoCallback] = []
         self._run_callbacks: list[Callable[[str, str, str], object]] = []  # a Recorder's: what a thread runs
@@ -2780,7 +2965,8 @@ class Robot(Exchange):
     # ---- callbacks --------------------------------------------------------------------------------
 
     def on_output(self, callback: OutputCallback) -> OutputCallback:
-        """Call `callback({"name": ..., "contents": {...}})` for every output triggered."""
+        """Call `callback({"name": ..., "contents": {...}})` for every output triggered: an
+        `OutputMessage`, whose `read_ns` says when its data was read."""
         with self._callback_lock:
             self._output_callbacks.append(callback)
         return callback
@@ -3120,9 +3306,8 @@ class Robot(Exchange):
                 break
         if plan.ranged:
             _check_ranges(plan.name, plan.params, plan.ranged, args)
-        if plan.key >= 0:
-            assert plan.table is not None  # and the key's range holds every key of it
-            plan = plan.table[args[plan.key]]
+        if isinstance(plan.reply, KeyedReply):
+            plan = plan.reply.entry(args)
         try:
             values = plan.values(self._state, args)
         except EVAL_ERRORS as err:
@@ -3133,14 +3318,13 @@ class Robot(Exchange):
 
     def _simulate(self, sim: Simulator) -> None:
         """Run against `sim`: every primitive the general way (the simulator takes parameters'
-        values, which a plain write's shortcut never has), its exchange with the simulator, and
-        in simulated time the schedule's clock and the delays the simulation's. Instance
-        attributes, so that a robot on ports runs exactly the code it runs without them."""
+        values, which a plain write's shortcut never has), and in simulated time the schedule's
+        clock and the delays the simulation's. Instance attributes, so that a robot on ports runs
+        exactly the code it runs without them. Each exchange is the simulator's (`Exchange._simulated`)."""
         self._sim = sim
         self._input = self._input_in_full  # type: ignore[method-assign]
         self._primitive = self._primitive_in_full  # type: ignore[method-assign]
         self._interface = self._simulated_interface  # type: ignore[method-assign]
-        self._exchange = self._simulated_exchange  # type: ignore[method-assign]
         if not sim.realtime:
             self._clock = sim.now
             self._sleep = sim.advance
@@ -3151,27 +3335,6 @@ class Robot(Exchange):
         assert self._sim is not None
         self._sim.interface(plan, args)
         Robot._interface(self, plan, args)
-
-    def _simulated_exchange(self, plan: Primitive, values: Args, local: Args) -> None:
-        """A primitive against the simulator: its request is encoded as for a port (the I/O
-        callbacks see it written, and what a port refuses is refused), the simulator takes the
-        parameters' values and gives the reply's, which meet the `expect` and go to the
-        post-actions as a reply read from a port would."""
-        assert self._sim is not None
-        if self._closed:
-            self._refuse(plan)
-        request, _fields, levels = self._request(plan, values, local)
-        reply = self._sim.exchange(plan, local)
-        if self._io_callbacks:
-            if levels is not None:
-                self._notify_io("lines", plan.connection, _lines_text(levels))
-            if request:
-                self._notify_io("write", plan.connection, request)
-        if plan.answers:  # one reply for each, meeting its own expect
-            reply = [self._met(answer, local, one) for answer, one in zip(plan.answers, reply)]
-        elif plan.expects_reply and not plan.in_parts:
-            reply = self._met(plan, local, reply)
-        self._store(plan, local, reply)
 
 
 # ---- rdisc engine: recording (rdisc/engine/recording.py), sessions in MCAP -----------------------
@@ -3292,7 +3455,9 @@ class Session:
     def __init__(self, robot: Robot) -> None:
         self._robot = robot
         self._device = robot.device
-        self._adapters = {o.name: o.adapter for i in robot.device.interfaces.values() for o in i.outputs}
+        delivered = [o for i in robot.device.interfaces.values() for o in i.outputs]
+        self._adapters = {o.name: o.adapter for o in delivered}
+        self._frames = {o.name: (o.frame, o.child_frame) for o in delivered}
         self.topics = {topic.name: topic for topic in session_topics(robot.device)}
         self._sinks: list[Sink] = []
         self._state_sinks: list[Sink] = []
@@ -3323,8 +3488,12 @@ class Session:
         """A connection's thread starts a periodic interface or its keepalive."""
         self._send(RUNS_TOPIC, {"data": json.dumps({kind: name, "connection": connection})})
 
-    def output(self, message: dict[str, Any]) -> None:
-        self._adapted(message["name"], self._adapters.get(message["name"], ""), message["contents"])
+    def output(self, message: OutputMessage) -> None:
+        """An output delivered: its header (if its message has one) stamped when its data was read,
+        in its frame."""
+        name = message["name"]
+        header = (message.read_ns, *self._frames.get(name, ("", "")))
+        self._adapted(name, self._adapters.get(name, ""), message["contents"], header)
         self._changed_state()
 
     def error(self, error: BaseException) -> None:
@@ -3350,9 +3519,12 @@ class Session:
                     topic = self.topics[STATE_TOPIC + name]
                     self._send(topic.name, _state_members(topic.type, value), sinks=self._state_sinks)
 
-    def _adapted(self, name: str, adapter: str, contents: Mapping[str, Any]) -> None:
+    def _adapted(self, name: str, adapter: str, contents: Mapping[str, Any],
+                 header: tuple[int, str, str] | None = None) -> None:
         """An adapter's values on `/NAME`: its ROS 2 message, or JSON text. A message with a
-        std_msgs/Header is stamped with the time it is sent at, as a ROS 2 publisher's is."""
+        std_msgs/Header is stamped with `header` (an output's: when its data was read, its frame
+        id and child frame id), else (an input) with the time it is sent at, as a ROS 2
+        publisher's is."""
         message = self._device.messages.get(adapter)
         if message is None:
             self._send(f"/{name}", {"data": json.dumps(dict(contents), default=list)})
@@ -3361,7 +3533,10 @@ class Session:
             stamp = self._stamp()
             members = ros_message(message, contents)
             if _HEADER in message.definition.partition(_SEPARATOR)[0].splitlines():
-                members.setdefault("header", {})["stamp"] = _time(stamp)
+                read_ns, frame, child = (stamp, "", "") if header is None else header
+                members.setdefault("header", {}).update(stamp=_time(read_ns), frame_id=frame)
+                if child:
+                    members["child_frame_id"] = child
             self._send(f"/{name}", members, stamp)
 
     def _stamp(self) -> int:
@@ -3501,7 +3676,8 @@ def add_arguments(parser: argparse.ArgumentParser, device: Device | None = None,
 
 
 def run_command(args: argparse.Namespace, robot: Robot, prog: str, sim: Simulator | None = None,
-                inputs: Iterable[str] = (), session: Session | None = None) -> int:
+                inputs: Iterable[str] = (), opened: Callable[[], object] | None = None,
+                session: Session | None = None) -> int:
     """What `rdisc run` does with its options: connect, make the --call calls in order, then
     run until --duration seconds after the startup hooks ended (or, with --watch, until
     Ctrl-C; else end when the calls are done). It always ends by closing the robot, which
@@ -3509,8 +3685,9 @@ def run_command(args: argparse.Namespace, robot: Robot, prog: str, sim: Simulato
     130 after SIGINT; 143 after SIGTERM. With `sim` (`rdisc sim`) the robot runs against
     the simulated device; in simulated time the seconds, the trace's included, are its.
     `inputs` are the files the description was read from, which --record never writes over.
-    `session`: the robot's, when something besides --record observes it (`rdisc run --foxglove`):
-    the calls are told to it, and --record records it."""
+    `opened` is called once the startup hooks are done (a ROS 2 node subscribes then); `--duration
+    inf` runs until a signal. `session`: the robot's, when something besides --record observes it
+    (`rdisc run --foxglove`): the calls are told to it, and --record records it."""
     simulated = sim is not None and not sim.realtime
     clock = sim.now if sim is not None and simulated else time.monotonic
     began = clock()
@@ -3536,6 +3713,8 @@ def run_command(args: argparse.Namespace, robot: Robot, prog: str, sim: Simulato
     try:
         robot.open(port, settings=settings, sim=sim)
         started = clock()  # the startup hooks are done: --duration counts from here
+        if opened is not None:
+            opened()
         for name, kind, values in calls:
             if session is not None:
                 session.call(kind, name, values)
@@ -3754,8 +3933,8 @@ def _install_signal_handlers() -> dict[int, Any]:
 
 
 def _sleep(seconds: float | None) -> None:
-    """Sleep (forever if None); a signal ends it through its handler."""
-    if seconds is None:
+    """Sleep (forever if None or infinite); a signal ends it through its handler."""
+    if seconds is None or seconds == math.inf:
         while True:
             time.sleep(3600)
     elif seconds > 0:
@@ -3838,7 +4017,7 @@ _P_BUMPERS = Primitive(
     (),
     _p_bumpers_values,
     Pack("BB"),
-    decoder=Unpack("B"),
+    reply=FixedReply(Unpack("B")),
     actions=_p_bumpers_actions,
 )
 
