@@ -76,7 +76,7 @@ def main(argv: list[str] | None = None) -> int:
             signal.pthread_sigmask(signal.SIG_SETMASK, held)
 
 
-def hold_signals() -> set[signal.Signals] | None:
+def hold_signals() -> set[int | signal.Signals] | None:
     """Block SIGINT and SIGTERM in this thread (they wait, pending, for `engine.command_line` to let
     them through); the mask found, or None where there are no signal masks (Windows)."""
     if not hasattr(signal, "pthread_sigmask"):

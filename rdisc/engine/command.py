@@ -318,7 +318,7 @@ def command_line(run: Callable[[], int]) -> int:
     (blocked, until these handlers were in place) are handled at once. The handlers and signal
     mask found are restored after; after a signal, later ones stay ignored to the exit."""
     previous = _install_signal_handlers()
-    mask: set[signal.Signals] | None = None
+    mask: set[int | signal.Signals] | None = None
     status = EXIT_SIGINT
     try:
         mask = _unblock_signals()  # a signal held back is handled here, as KeyboardInterrupt or _Terminated
@@ -343,7 +343,7 @@ def command_line(run: Callable[[], int]) -> int:
     return status
 
 
-def _unblock_signals() -> set[signal.Signals] | None:
+def _unblock_signals() -> set[int | signal.Signals] | None:
     """SIGINT and SIGTERM let through to this thread (a signal held back comes now); the mask it
     had, or None where there are no masks (Windows)."""
     if not hasattr(signal, "pthread_sigmask"):
