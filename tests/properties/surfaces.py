@@ -104,7 +104,7 @@ def _no_sleep(seconds: float) -> None:
 
 
 def _ports(device: Any, rng: random.Random) -> dict[str, Any]:
-    from ports import ScriptedPort
+    from tests.support.ports import ScriptedPort
 
     return {name: ScriptedPort(device=_Answers(rng), timeout=0.0) for name in device.connections}
 
