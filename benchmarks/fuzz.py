@@ -56,6 +56,7 @@ def _init(memory_mb: int) -> None:
     limit = memory_mb * 1024 * 1024
     resource.setrlimit(resource.RLIMIT_AS, (limit, limit))
     signal.signal(signal.SIGALRM, _on_alarm)
+    signal.signal(signal.SIGPROF, _on_alarm)
 
 
 def _try(job: tuple[int, Mutant, int]) -> tuple[int, str | None, float]:
@@ -85,18 +86,19 @@ def _try_surface(job: tuple[str, int, int, int]) -> tuple[int, str | None, float
     surface, seed, index, alarm = job
     with tempfile.TemporaryDirectory() as folder:
         start, began = time.process_time(), time.monotonic()
-        signal.alarm(alarm)
+        signal.setitimer(signal.ITIMER_PROF, alarm)  # of CPU time: a loaded machine's waits are no hang
         try:
-            surfaces.run(surface, surfaces.case(surface, seed, index), Path(folder))
-            outcome = None
-        except _Alarm:
+            try:
+                surfaces.run(surface, surfaces.case(surface, seed, index), Path(folder))
+                outcome = None
+            finally:
+                signal.setitimer(signal.ITIMER_PROF, 0)
+        except _Alarm:  # in the case, or as it ended
             outcome = "slow"
         except MemoryError:
             outcome = "memory"
         except Exception as err:  # noqa: BLE001 - every one is a finding
             outcome = finding(err)
-        finally:
-            signal.alarm(0)
         return (index, outcome, time.process_time() - start, time.monotonic() - began,
                 resource.getrusage(resource.RUSAGE_SELF).ru_maxrss)
 
@@ -118,7 +120,8 @@ def _surface(args: argparse.Namespace) -> int:
                 groups[outcome].append(index)
             if args.progress and (done + 1) % args.progress == 0:
                 print(f"... {done + 1} cases, {sum(map(len, groups.values()))} tracebacks, {len(slow)} slow, "
-                      f"{len(memory)} over memory, {time.monotonic() - started:.0f} s", flush=True)
+                      f"{len(memory)} over memory, {time.monotonic() - started:.0f} s; worst {slowest[0]:.2f} s "
+                      f"of CPU, {longest[0]:.2f} s on the clock, peak {peak / 1024:.0f} MB", flush=True)
     took = time.monotonic() - started
     print(f"surface {args.surface}: cases tried: {args.count} (seed {args.seed}), {took:.0f} s with {args.jobs} workers")
     print(f"tracebacks: {sum(len(v) for v in groups.values())} at {len(groups)} places in rdisc")
@@ -148,7 +151,7 @@ def main() -> int:
     parser.add_argument("--seed", type=int, default=1)
     parser.add_argument("--jobs", type=int, default=2)
     parser.add_argument("--memory", type=int, default=1024, help="MB of address space a worker may use")
-    parser.add_argument("--alarm", type=int, default=30, help="seconds before a mutant is given up")
+    parser.add_argument("--alarm", type=int, default=30, help="seconds before a mutant is given up (of CPU, for --surface)")
     parser.add_argument("--keep", type=Path, help="a folder to write each place's smallest reproducer to, whole "
                         "(the report shows its first 2,000 characters)")
     parser.add_argument("--surface", choices=("pipeline", *surfaces.SURFACES), default="pipeline",

