@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import argparse
 import asyncio
+import math
 import os
 import signal
 import sys
@@ -30,6 +31,7 @@ from rdisc.cli.address import is_loopback, parse_address
 from rdisc.cli.output import EXIT_ERRORS, EXIT_USAGE, exit_code, show
 from rdisc.cli.sim import add_seed_argument, simulation
 from rdisc.compile import compile_path
+from rdisc.console import PING_S
 
 DEFAULT_HTTP = "127.0.0.1:8765"
 
@@ -64,6 +66,9 @@ def add_parser(verbs: argparse._SubParsersAction[argparse.ArgumentParser]) -> No
     p.add_argument("--origin", action="append", default=[], metavar="URL",
                    help="also let pages from this origin (http://name:port) drive the robot, when serving beyond "
                         "loopback")
+    p.add_argument("--ping", type=_seconds, default=PING_S, metavar="S",
+                   help=f"ping each page every S seconds; one that does not answer within S is closed, and if it "
+                        f"was the last, the terminate hooks run (default {PING_S:g})")
     p.add_argument("--record", metavar="FILE.mcap",
                    help="record the session in MCAP as `rdisc run --record` does: the page's calls, outputs, "
                         "the bytes each way, errors (needs the mcap and mcap-ros2-support packages); a file "
@@ -71,6 +76,17 @@ def add_parser(verbs: argparse._SubParsersAction[argparse.ArgumentParser]) -> No
     p.add_argument("--force", action="store_true",
                    help="let --record replace a file that exists (never the description or its imports)")
     p.set_defaults(run=run)
+
+
+def _seconds(text: str) -> float:
+    """A time in seconds, more than zero and finite (--ping)."""
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"not a number of seconds: {text!r}") from None
+    if not 0 < value < math.inf:
+        raise argparse.ArgumentTypeError(f"not a time more than zero: {text!r}")
+    return value
 
 
 def run(args: argparse.Namespace) -> int:
@@ -114,7 +130,8 @@ def run(args: argparse.Namespace) -> int:
     live = foxglove.start(args, session, robot.name, "rdisc console") if session is not None else None
     if isinstance(live, int):
         return live
-    console = Console(robot, page, session, sim, tell=lambda text: print(text, file=sys.stderr, flush=True))
+    console = Console(robot, page, session, sim, tell=lambda text: print(text, file=sys.stderr, flush=True),
+                      ping=args.ping)
     robot.on_error(lambda error: print(f"rdisc console: {type(error).__name__}: {error}", file=sys.stderr, flush=True))
 
     def listening(bound: int) -> None:

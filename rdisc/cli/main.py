@@ -9,6 +9,7 @@ from __future__ import annotations
 import argparse
 import contextlib
 import importlib
+import signal
 import sys
 from types import ModuleType
 from typing import cast
@@ -63,6 +64,28 @@ def parser(argv: list[str] | None = None) -> argparse.ArgumentParser:
 
 
 def main(argv: list[str] | None = None) -> int:
+    """The command line: SIGINT and SIGTERM are held back from the first instant until the engine's
+    handlers are in place (`engine.command_line`), so a signal that comes while rdisc is still
+    starting ends it with 130 or 143 and no traceback; the mask found is restored after."""
+    held = hold_signals()
+    try:
+        from rdisc.engine.command import command_line
+
+        return command_line(lambda: _main(argv))
+    finally:
+        if held is not None:
+            signal.pthread_sigmask(signal.SIG_SETMASK, held)
+
+
+def hold_signals() -> set[int | signal.Signals] | None:
+    """Block SIGINT and SIGTERM in this thread (they wait, pending, for `engine.command_line` to let
+    them through); the mask found, or None where there are no signal masks (Windows)."""
+    if not hasattr(signal, "pthread_sigmask"):
+        return None
+    return signal.pthread_sigmask(signal.SIG_BLOCK, (signal.SIGINT, signal.SIGTERM))
+
+
+def _main(argv: list[str] | None) -> int:
     given = sys.argv[1:] if argv is None else argv
     args = parser(given).parse_args(given)
     budget: contextlib.AbstractContextManager[None] = contextlib.nullcontext()

@@ -19,3 +19,8 @@ simulation has them (`rdisc.sim.Simulation.link_poses`); the page draws the body
 a bool), made the parameter's type here. `t` is seconds since the console started;
 bytes are hex, as `rdisc run --trace` prints them.
 """
+
+PING_S = 5.0
+"""Seconds: how often the console pings each page, and how long a page has to answer (and to close
+once closed): a page that does not is gone, and when it was the last the terminate hooks run
+(`rdisc console --ping`)."""

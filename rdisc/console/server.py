@@ -40,6 +40,7 @@ from websockets.exceptions import ConnectionClosed
 from websockets.http11 import Request, Response
 
 from rdisc import engine
+from rdisc.console import PING_S
 
 if TYPE_CHECKING:
     from rdisc.sim import Simulation
@@ -48,7 +49,6 @@ ASSETS = {"/console.js": "text/javascript; charset=utf-8", "/console.css": "text
 TRACE_KEPT, ERRORS_KEPT = 500, 100  # what a page opened later is shown of the past
 LOOPBACK = ("127.0.0.1", "localhost", "[::1]")
 BODY_HZ = 10  # how often a simulated body is pushed to the open pages
-PING_S = 5.0  # a page is pinged this often, and closed when it does not answer within as long
 MAX_DEPTH = 32  # how deep a page's call may nest its JSON (a call is an object of texts)
 STOPPING = "the console is stopping: no more calls are made"
 
@@ -84,8 +84,10 @@ class Console:
     with the `body` it drives (`--sim`), the body as it is now is pushed BODY_HZ times a second."""
 
     def __init__(self, robot: engine.Robot, page: str, session: engine.Session | None = None,
-                 body: Simulation | None = None, tell: Callable[[str], None] | None = None) -> None:
+                 body: Simulation | None = None, tell: Callable[[str], None] | None = None,
+                 ping: float = PING_S) -> None:
         self.robot = robot
+        self.ping = ping  # seconds: how often a page is pinged, and how long it has to answer, or to close
         self.session = session
         self.body = body
         self.page = page.encode("utf-8")
@@ -179,7 +181,8 @@ class Console:
         self._loop = asyncio.get_running_loop()
         try:
             async with serve(self._page, host, port, process_request=self._http, compression=None,
-                             max_size=2**16, ping_interval=PING_S, ping_timeout=PING_S) as server:
+                             max_size=2**16, ping_interval=self.ping, ping_timeout=self.ping,
+                             close_timeout=self.ping) as server:
                 bound = next(iter(server.sockets)).getsockname()[1]
                 self.origins = origins_for(host, bound, extra_origins)
                 listening(bound)

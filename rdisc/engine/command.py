@@ -319,6 +319,47 @@ def _install_signal_handlers() -> dict[int, Any]:
     return previous
 
 
+def command_line(run: Callable[[], int]) -> int:
+    """`run()`, a command line's whole run (`rdisc`'s, a driver's main), with SIGINT and SIGTERM
+    handled from its first instant: the first ends it with 130 or 143 and no traceback, even
+    before there is a robot (`run_command` handles them from then on, stopping the robot
+    first), later ones are ignored until it has returned. Signals the entry point held back
+    (blocked, until these handlers were in place) are handled at once. The handlers and signal
+    mask found are restored after; after a signal, later ones stay ignored to the exit."""
+    previous = _install_signal_handlers()
+    mask: set[int | signal.Signals] | None = None
+    status = EXIT_SIGINT
+    try:
+        mask = _unblock_signals()  # a signal held back is handled here, as KeyboardInterrupt or _Terminated
+        status = run()
+    except KeyboardInterrupt:
+        status = EXIT_SIGINT
+    except _Terminated:
+        status = EXIT_SIGTERM
+    finally:
+        while not _shutting_down[0]:  # a signal from here on is too late to end it: it is ignored
+            try:
+                _shutting_down[0] = True
+            except KeyboardInterrupt:
+                status = EXIT_SIGINT
+            except _Terminated:
+                status = EXIT_SIGTERM
+        interrupted = status in (EXIT_SIGINT, EXIT_SIGTERM)
+        for signum, handler in previous.items():
+            signal.signal(signum, signal.SIG_IGN if interrupted else handler)
+        if mask is not None and not interrupted:
+            signal.pthread_sigmask(signal.SIG_SETMASK, mask)
+    return status
+
+
+def _unblock_signals() -> set[int | signal.Signals] | None:
+    """SIGINT and SIGTERM let through to this thread (a signal held back comes now); the mask it
+    had, or None where there are no masks (Windows)."""
+    if not hasattr(signal, "pthread_sigmask"):
+        return None
+    return signal.pthread_sigmask(signal.SIG_UNBLOCK, (signal.SIGINT, signal.SIGTERM))
+
+
 def _sleep(seconds: float | None) -> None:
     """Sleep (forever if None or infinite); a signal ends it through its handler."""
     if seconds is None or seconds == math.inf:

@@ -12,6 +12,7 @@ reply, a timeout) of one and not the other. Delays are not slept unless asked (`
 
 from __future__ import annotations
 
+import contextlib
 import difflib
 import io
 import json
@@ -89,7 +90,7 @@ def read_recording(source: str | os.PathLike[str] | io.BytesIO) -> Recording:
     except RecursionError:
         raise RecordingError("not a readable recording: nested too deep") from None
     except (McapError, ValueError, KeyError, TypeError, IndexError, NotImplementedError, AttributeError,
-            struct.error, EOFError) as err:
+            struct.error, EOFError, OverflowError) as err:  # OverflowError: a record's length past any size
         said = str(err).splitlines()[0] if str(err) else type(err).__name__
         raise RecordingError(f"not a readable recording: {said}") from None
     return recording
@@ -206,7 +207,15 @@ def _decoder(factory: Any, channel_id: int, channels: Mapping[int, Any],
     if channel is None or schema is None:
         raise RecordingError(f"not a readable recording: a message of channel {channel_id}, which it does "
                              "not describe")
-    decode = factory.decoder_for(channel.message_encoding, schema)
+    from mcap_ros2._vendor.rosidl_adapter.parser import InvalidSpecification, InvalidValue
+
+    try:  # the schema's text is parsed here; its parser prints what it refuses, so that is kept from stderr
+        with contextlib.redirect_stderr(io.StringIO()):
+            decode = factory.decoder_for(channel.message_encoding, schema)
+    except (InvalidSpecification, InvalidValue, NameError) as err:  # NameError: its word for a constant's bad name
+        said = str(err).splitlines()[0] if str(err) else type(err).__name__
+        raise RecordingError(f"not a readable recording: the schema {schema.name} of {channel.topic}: {said}"
+                             ) from None
     if decode is None:
         raise RecordingError(f"not a readable recording: topic {channel.topic} is not ROS 2 messages in CDR")
     return channel.topic, schema.name, decode

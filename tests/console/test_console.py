@@ -66,7 +66,7 @@ def console() -> Iterator[Running]:
 
 
 def launched_chromium() -> Iterator[object]:
-    """Debian's Chromium under Playwright, for a module's `browser` fixture."""
+    """Debian's Chromium under Playwright, for the `browser` fixture (tests/console/conftest.py)."""
     with playwright_api.sync_playwright() as p:
         launched = p.chromium.launch(executable_path=str(CHROMIUM), args=["--no-sandbox"])
         yield launched
@@ -95,11 +95,6 @@ def refused_elsewhere(browser, attack: str) -> None:
         playwright_api.expect(other).to_have_title("refused", timeout=WAIT_MS)
     finally:
         context.close()
-
-
-@pytest.fixture(scope="module")
-def browser() -> Iterator[object]:
-    yield from launched_chromium()
 
 
 @pytest.fixture

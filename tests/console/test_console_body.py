@@ -15,7 +15,7 @@ from collections.abc import Iterator
 import pytest
 from conftest import REPO, start_console, stop_process
 
-from console.test_console import WAIT_MS, launched_chromium, opened_page, playwright_api
+from console.test_console import WAIT_MS, opened_page, playwright_api
 
 pytest.importorskip("mujoco")
 
@@ -36,11 +36,6 @@ def console() -> Iterator[str]:
         status, stderr = stop_process(process, signal.SIGTERM)
         assert status == 143, stderr
         assert "Traceback" not in stderr, stderr
-
-
-@pytest.fixture(scope="module")
-def browser() -> Iterator[object]:
-    yield from launched_chromium()
 
 
 @pytest.fixture

@@ -27,7 +27,7 @@ from collections.abc import Iterator
 from typing import Any
 
 import pytest
-from conftest import REPO, cli_env, console_origin, console_ws, start_console, stop_process
+from conftest import REPO, cli_env, console_origin, console_ws, run_rdisc_here, start_console, stop_process
 from devices import CreateEmulator
 from devices.create import DRIVE, SENSORS, STOP
 
@@ -204,20 +204,23 @@ PAGES = 30
 
 
 def test_sigint_s_stop_is_not_queued_behind_page_calls() -> None:
-    """30 pages call set_velocity as fast as they are answered, against a Create that never answers
-    (its bumper poll waits a whole reply timeout each time, holding the port). After SIGINT no page
-    call writes again (at most the one in progress, before the stop), and the stop comes before
-    the poll could have timed out twice more."""
+    """30 pages (more than asyncio's thread pool has threads, below 26 cores) call set_velocity as fast
+    as they are answered, against a Create that never answers (its bumper poll waits a whole reply
+    timeout, 0.1 s, each time, holding the port); SIGINT once every page is connected and 30 drives
+    went out. After SIGINT no page call writes again (at most the one in progress, before the
+    stop), and the stop comes before the poll could have timed out twice more."""
     from websockets.exceptions import ConnectionClosed
     from websockets.sync.client import connect
 
     with CreateEmulator(mode="silent") as dev:
-        process, _, url = start_console(CREATE, "--port", dev.port, "--timeout", "0.3")
+        process, _, url = start_console(CREATE, "--port", dev.port, "--timeout", "0.1")
         ended = threading.Event()
+        opened: list[int] = []
 
         def page(number: int) -> None:
             try:
                 with connect(console_ws(url), origin=console_origin(url), open_timeout=60) as ws:
+                    opened.append(number)
                     for n in range(10_000):
                         ws.send(json.dumps({"id": n, **GO}))
                         if _result(ws)["ok"] is not True or ended.is_set():
@@ -229,7 +232,8 @@ def test_sigint_s_stop_is_not_queued_behind_page_calls() -> None:
         try:
             for thread in pages:
                 thread.start()
-            dev.wait_until(lambda: len(_drives(dev)) >= 2 * PAGES, 120, "the pages' drives")
+            dev.wait_until(lambda: len(opened) == PAGES, 120, "every page connected")  # each with a call queued
+            dev.wait_until(lambda: len(_drives(dev)) >= PAGES, 120, "the pages' drives")
             with dev._cond:
                 signalled = len(dev.commands)
             status, stderr = stop_process(process, signal.SIGINT)
@@ -249,6 +253,13 @@ def test_sigint_s_stop_is_not_queued_behind_page_calls() -> None:
         assert [c for c in after[stop + 1:] if c[0] == DRIVE] == [], after  # no page's drive after the stop
         assert len([c for c in after[:stop] if c == GO_BYTES]) <= 2, after  # the call in progress at most
         assert len([c for c in after[:stop] if c[0] == SENSORS]) <= 2, after  # within about one timed-out poll
+
+
+@pytest.mark.parametrize("ping", ["0", "inf", "soon"])
+def test_a_ping_that_is_no_time_is_a_usage_error(ping: str) -> None:
+    done = run_rdisc_here("console", CREATE, "--port", "loop://", "--ping", ping)  # refused before it serves
+    assert done.returncode == 2, done.stderr
+    assert "argument --ping: not a" in done.stderr and "Traceback" not in done.stderr, done.stderr
 
 
 def test_the_help_tells_of_the_token_and_allow_remote() -> None:
@@ -272,7 +283,7 @@ def test_a_page_that_stops_answering_pings_leaves_the_robot_stopped() -> None:
     """A client that makes a call and then goes quiet (never reads, so never answers the server's
     pings, as a machine that dropped off the network): it is closed, and the terminate hook runs."""
     with CreateEmulator() as dev:
-        process, _, url = start_console(CREATE, "--port", dev.port)
+        process, _, url = start_console(CREATE, "--port", dev.port, "--ping", "0.5")  # gone within 1 s, not 10
         try:
             port = int(console_origin(url).rsplit(":", 1)[1])
             query = url.partition("?")[2]
@@ -312,6 +323,5 @@ def test_a_recorded_session_replays_the_stop_of_the_last_page_closing(tmp_path) 
         finally:
             status, stderr = stop_process(process, signal.SIGINT)
     assert status == 130 and "Traceback" not in stderr, stderr
-    replayed = subprocess.run([sys.executable, "-m", "rdisc", "replay", str(path), str(CREATE)], cwd=REPO,
-                              env=cli_env(), capture_output=True, text=True, timeout=120, check=False)
+    replayed = run_rdisc_here("replay", path, CREATE)
     assert replayed.returncode == 0, replayed.stdout + replayed.stderr

@@ -14,6 +14,7 @@ import importlib.util
 import json
 import math
 import os
+import re
 import select
 import shutil
 import signal
@@ -322,6 +323,47 @@ def test_signals_at_any_moment_leave_the_robot_stopped(ros_env: dict[str, str], 
     assert done.returncode == 0, done.stderr
     with CreateEmulator() as device:
         device.signal_once_open(_start_node(node_path, ros_env, device), after, signals, gap)
+
+
+# The fast Create whose twist starts an interface of three commands, 200 ms apart.
+DANCE = re.sub(r"input set_velocity: DifferentialSpeed -> drive\((?:.|\n)*?\n\)\n", """\
+interface dance(linear: float, angular: float) {
+    drive(100, 0) delay 200 ms
+    drive(200, 0) delay 200 ms
+    drive(round(linear * 1000) + 300, round(angular))
+}
+
+input set_velocity: DifferentialSpeed -> dance(linear, angular)
+""", (REPO / "tests" / "runtime" / "data" / "fast_create.rdis").read_text(encoding="utf-8"))
+
+
+def test_a_signal_during_a_twist_s_call_of_several_commands_leaves_the_stop_last(ros_env: dict[str, str],
+                                                                                  tmp_path: Path) -> None:
+    """SIGINT while the subscriber's call of an interface of three commands is in its first delay:
+    the call writes nothing more, the terminate hook's stop is the last command the device gets."""
+    assert "-> dance(linear, angular)" in DANCE
+    source, node_path = tmp_path / "dance.rdis", tmp_path / "dance_node.py"
+    source.write_text(DANCE, encoding="utf-8")
+    done = subprocess.run(["python", "-m", "rdisc", "emit-ros", str(source), "-o", str(node_path)], cwd=REPO,
+                          capture_output=True, text=True, check=False)
+    assert done.returncode == 0, done.stderr
+    with CreateEmulator() as device:
+        node = _start_node(node_path, ros_env, device)
+        twists = subprocess.Popen([PYTHON3, str(HERE / "twists.py")], env=ros_env, stdin=subprocess.PIPE,
+                                  stdout=subprocess.PIPE, text=True)
+        try:
+            assert twists.stdout is not None and twists.stdin is not None
+            assert twists.stdout.readline().strip() == "ready"  # the node subscribed
+            twists.stdin.write("0.0 0.0\n")
+            twists.stdin.flush()
+            device.wait_until(lambda: (100, 0) in device.drives(), 15, "the dance's first command")
+            device.signal_once_open(node, 0.05, [signal.SIGINT], 0.0)  # the stop last, no traceback
+        finally:
+            twists.stdin.close()
+            _stop(twists, signal.SIGTERM)
+            if node.returncode is None:  # not signalled yet: the test failed before
+                _stop(node)
+    assert (300, 0) not in device.drives(), device.drives()
 
 
 SETTINGS = """\

@@ -5,6 +5,7 @@ its count before any message is decoded."""
 from __future__ import annotations
 
 import json
+import struct
 from pathlib import Path
 from typing import Any
 
@@ -159,3 +160,43 @@ def test_delays_are_slept_only_with_realtime(realtime: bool, tmp_path: Path, mon
     result = run_rdisc_here("replay", path, CREATE, *(["--realtime"] if realtime else []))
     assert result.returncode in (0, 1), result.stderr
     assert (1.0 in slept) is realtime, slept
+
+
+@pytest.mark.parametrize(("schema", "said"), [
+    ("byte X=2 ** 64", "can not be converted to type 'byte'"),
+    ("=== not a field", "'===' is an invalid message name"),
+    ("string =1", "invalid constant name"),
+    ("1e39 data", "invalid message name"),
+])
+def test_a_schema_its_parser_refuses_is_refused_in_a_line(schema: str, said: str, tmp_path: Path) -> None:
+    """The ROS 2 message parser raises its own errors (and prints them) for a schema it cannot
+    read: each is the recording's fault, said in one line."""
+    path = tmp_path / "schema.mcap"
+    with path.open("wb") as f:
+        writer = McapWriter(f)
+        writer.start("ros2", "tests")
+        writer.add_metadata("rdisc", {"robot": "create", "timeout": "1", "settings": "{}"})
+        channel = writer.register_channel("/rdisc/runs", "cdr", writer.register_schema(TEXT[0], "ros2msg",
+                                                                                       schema.encode()))
+        writer.add_message(channel, 1, b"\x00\x01\x00\x00\x01\x00\x00\x00\x00", 1)
+        writer.finish()
+    status, stderr = replay(path)
+    assert status == 2 and stderr.startswith(f"rdisc replay: {path}: not a readable recording: the schema "
+                                             f"{TEXT[0]} of /rdisc/runs: "), stderr
+    assert said in stderr, stderr
+
+
+def test_a_chunk_whose_records_say_a_length_past_any_size_is_refused(tmp_path: Path) -> None:
+    """A chunk of 60 bytes whose records' length is 2**63 + 1 (the mcap reader's read of it overflows)."""
+
+    def record(opcode: int, body: bytes) -> bytes:
+        return struct.pack("<BQ", opcode, len(body)) + body
+
+    def text(value: str) -> bytes:
+        return struct.pack("<I", len(value)) + value.encode()
+
+    chunk = struct.pack("<QQQI", 0, 0, 10, 0) + text("zstd") + struct.pack("<Q", 2**63 + 1) + bytes(20)
+    path = tmp_path / "long.mcap"
+    path.write_bytes(b"\x89MCAP0\r\n" + record(0x01, text("ros2") + text("tests")) + record(0x06, chunk))
+    status, stderr = replay(path)
+    assert status == 2 and stderr.startswith(f"rdisc replay: {path}: not a readable recording"), stderr

@@ -120,3 +120,36 @@ def test_a_signal_during_a_call_of_several_commands_leaves_the_stop_last(tmp_pat
         assert process.returncode == 130, stderr
         assert dev.drives()[-1] == (0, 0)
         assert (300, 0) not in dev.drives()
+
+
+# Instants before the robot exists, counted in the imports rdisc makes after its package (`python
+# -X importtime` writes a line to stderr as each import ends): from its first modules to its last.
+EARLY = [1, 5, 20, 60, 120]
+
+
+@pytest.mark.parametrize("imports", EARLY)
+def test_signals_while_rdisc_is_starting_end_it_without_a_traceback(imports) -> None:
+    """SIGINT twice while rdisc is still importing and reading its arguments: held back until its
+    handlers are in place, then 130, with nothing but the import lines on stderr."""
+    process = subprocess.Popen([sys.executable, "-X", "importtime", "-m", "rdisc", "run", str(FAST_CREATE),
+                                "--port", "loop://", "--duration", "5"], cwd=REPO, env=cli_env(),
+                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    assert process.stderr is not None
+    counted, lines = -1, []
+    for line in process.stderr:
+        lines.append(line)
+        if counted < 0 and line.rstrip().endswith("| rdisc"):
+            counted = 0  # the package is imported: `rdisc/__main__.py` runs next and holds the signals back
+        elif counted >= 0 and line.startswith("import time:"):
+            counted += 1
+            if counted == imports:
+                process.send_signal(signal.SIGINT)
+                process.send_signal(signal.SIGINT)
+                break
+    stdout, rest = process.communicate(timeout=60)
+    stderr = "".join(lines) + rest
+    assert counted == imports, f"rdisc made {counted} imports after its package"
+    assert "Traceback" not in stderr, stderr
+    assert [line for line in stderr.splitlines() if not line.startswith("import time:")] == [], stderr
+    assert process.returncode == 130, stderr
+    assert stdout == ""
