@@ -127,19 +127,33 @@ def test_a_signal_during_a_call_of_several_commands_leaves_the_stop_last(tmp_pat
 EARLY = [1, 5, 20, 60, 120]
 
 
+# How rdisc is started: `python -m rdisc`, and the `rdisc` script pip writes, which imports the
+# entry that pyproject.toml names and calls it (as this `-c` does).
+SCRIPT = "import sys; from rdisc.start import main; sys.exit(main())"
+LAUNCHES = {"python -m rdisc": ["-m", "rdisc"], "the rdisc script": ["-c", SCRIPT]}
+
+
+def test_the_rdisc_script_is_the_entry_that_holds_signals_back() -> None:
+    import tomllib
+
+    project = tomllib.loads((REPO / "pyproject.toml").read_text(encoding="utf-8"))
+    assert project["project"]["scripts"] == {"rdisc": "rdisc.start:main"}
+
+
+@pytest.mark.parametrize("launch", LAUNCHES.values(), ids=LAUNCHES.keys())
 @pytest.mark.parametrize("imports", EARLY)
-def test_signals_while_rdisc_is_starting_end_it_without_a_traceback(imports) -> None:
+def test_signals_while_rdisc_is_starting_end_it_without_a_traceback(imports, launch) -> None:
     """SIGINT twice while rdisc is still importing and reading its arguments: held back until its
     handlers are in place, then 130, with nothing but the import lines on stderr."""
-    process = subprocess.Popen([sys.executable, "-X", "importtime", "-m", "rdisc", "run", str(FAST_CREATE),
+    process = subprocess.Popen([sys.executable, "-X", "importtime", *launch, "run", str(FAST_CREATE),
                                 "--port", "loop://", "--duration", "5"], cwd=REPO, env=cli_env(),
                                stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     assert process.stderr is not None
     counted, lines = -1, []
     for line in process.stderr:
         lines.append(line)
-        if counted < 0 and line.rstrip().endswith("| rdisc"):
-            counted = 0  # the package is imported: `rdisc/__main__.py` runs next and holds the signals back
+        if counted < 0 and line.startswith("import time:") and line.split("|")[-1].strip() == "rdisc":
+            counted = 0  # the package is imported: `rdisc.start` is next, and holds the signals back
         elif counted >= 0 and line.startswith("import time:"):
             counted += 1
             if counted == imports:
