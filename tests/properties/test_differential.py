@@ -26,6 +26,7 @@ from pathlib import Path
 from typing import Any
 
 import pytest
+from conftest import fuzz_examples
 from descriptions import CATALOGUE, Description, crc, descriptions, scripts
 from differential_support import Pairs, compare
 from hypothesis import HealthCheck, given, settings
@@ -44,7 +45,7 @@ def pairs(tmp_path_factory: pytest.TempPathFactory) -> Pairs:
     return Pairs(str(tmp_path_factory.mktemp("differential")))
 
 
-@settings(max_examples=60, deadline=None, derandomize=True, database=None,
+@settings(max_examples=fuzz_examples(30), deadline=None, derandomize=True, database=None,
           suppress_health_check=[HealthCheck.function_scoped_fixture, HealthCheck.too_slow,
                                  HealthCheck.data_too_large])
 @given(data=st.data())
@@ -57,7 +58,7 @@ def test_runtime_and_generated_driver_agree_on_random_descriptions(pairs: Pairs,
         assert outcome.ok, outcome.report()
 
 
-@settings(max_examples=60, deadline=None, derandomize=True, database=None,
+@settings(max_examples=fuzz_examples(30), deadline=None, derandomize=True, database=None,
           suppress_health_check=[HealthCheck.function_scoped_fixture, HealthCheck.too_slow])
 @given(description=descriptions())
 def test_every_generated_description_compiles(tmp_path: Path, description: Description) -> None:

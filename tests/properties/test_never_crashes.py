@@ -253,7 +253,7 @@ expressions = st.recursive(
 _LITERAL = re.compile(r'(?<![\w.])\d+(\.\d+)?(?![\w.])|"[^"\n]*"')
 
 
-@settings(FUZZ, max_examples=fuzz_examples(80))
+@settings(FUZZ, max_examples=fuzz_examples(40))
 @given(seed=st.integers(0, len(SEEDS) - 1),
        swaps=st.lists(st.tuples(st.floats(0, 1), expressions), min_size=1, max_size=2))
 def test_expression_swaps_round_trip(workdir: Path, seed: int, swaps) -> None:
