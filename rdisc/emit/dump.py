@@ -245,6 +245,24 @@ def _sides(name: str, layouts: tuple[tuple[m.FramePart, ...], ...] | None, paylo
 
 def _side(name: str, parts: tuple[m.FramePart, ...] | None, payload: list[Row], reply: bool) -> list[str]:
     """A layout's table; in a `reply`, its optional parts marked (a request writes them)."""
+    rows, optional = _layout_rows(parts, payload, reply)
+    total = sum(size for size, _, _ in rows if size is not None)
+    varies = any(size is None for size, _, _ in rows)
+    out = [f"  {name}: {total}{'+n' if varies else ''} byte{'' if total == 1 and not varies else 's'}"]
+    if optional:
+        out[0] += f", {sum(rows[i][0] or 0 for i in optional)} of them optional (a reply may lack them)"
+    out.append(f"  {'offset':>6}  {'size':>4}  {'kind':<20}  value")
+    offset: int | None = 0
+    for i, (width, what, detail) in enumerate(rows):
+        at = f"{offset:>6}" if offset is not None else f"{'?':>6}"
+        what = f"{what} (optional)" if i in optional else what
+        out.append(f"  {at}  {width if width is not None else 'n':>4}  {what:<20}  {detail}")
+        offset = offset + width if offset is not None and width is not None else None
+    return out
+
+
+def _layout_rows(parts: tuple[m.FramePart, ...] | None, payload: list[Row], reply: bool) -> tuple[list[Row], range]:
+    """A layout's rows, the payload's among them, and the indexes of those a `reply` may lack."""
     rows: list[Row] = []
     optional = range(0)  # the indexes of the rows a reply may lack
     if parts is None:
@@ -273,19 +291,7 @@ def _side(name: str, parts: tuple[m.FramePart, ...] | None, payload: list[Row], 
                     extras = " inverted" if a.inverted else ""
                     extras += f" mask {a.mask:#x}" if a.mask is not None else ""
                     rows.append((size, "checksum", f"{a.name}{extras} as {fmt or 'hex'}, over {covers}"))
-    total = sum(size for size, _, _ in rows if size is not None)
-    varies = any(size is None for size, _, _ in rows)
-    out = [f"  {name}: {total}{'+n' if varies else ''} byte{'' if total == 1 and not varies else 's'}"]
-    if optional:
-        out[0] += f", {sum(rows[i][0] or 0 for i in optional)} of them optional (a reply may lack them)"
-    out.append(f"  {'offset':>6}  {'size':>4}  {'kind':<20}  value")
-    offset: int | None = 0
-    for i, (width, what, detail) in enumerate(rows):
-        at = f"{offset:>6}" if offset is not None else f"{'?':>6}"
-        what = f"{what} (optional)" if i in optional else what
-        out.append(f"  {at}  {width if width is not None else 'n':>4}  {what:<20}  {detail}")
-        offset = offset + width if offset is not None and width is not None else None
-    return out
+    return rows, optional
 
 
 def _bit_fields(bits: tuple[m.BitField, ...]) -> str:
@@ -312,3 +318,68 @@ def _name(part: m.FramePart) -> str:
         case m.FramePayload():
             return "payload"
     return "checksum"
+
+
+# ---- one request's concrete bytes (`rdisc dump FILE PRIMITIVE --args K=V ...`) -----------------------
+
+_FORMATS = {kind: code for code, kind in _KINDS.items() if code not in "lLc"}
+
+
+def dump_request(model: m.Model, name: str, given: str, data: bytes) -> str:
+    """The bytes a request of primitive `name` is for the arguments `given` (as the caller spells
+    them), made by the engine, held against the primitive's byte table: each row's offset, size,
+    kind, value as the table says it, the value the bytes hold and the bytes. Bytes that do not
+    follow the table (a stuffed or escaped frame, sizes that cannot be told apart) show whole."""
+    p = model.primitives[name]
+    lines = [f"primitive {name}({given}) on {p.connection}: {len(data)} byte{'' if len(data) == 1 else 's'}"]
+    if p.encoding is None:
+        return "\n".join([*lines, "  request: none (nothing is written)"]) + "\n"
+    lines.append(f"  {_hex(data)}")
+    frame = model.frames[p.frame.frame] if p.frame is not None else None
+    payload = _payload_rows(p.encoding, p.args)
+    rows = None
+    if frame is None or (frame.stuffing is None and frame.escaping is None):
+        for parts in frame.requests if frame is not None else (None,):
+            rows = _sized(_layout_rows(parts, payload, False)[0], len(data))
+            if rows is not None:
+                break
+    if rows is None:
+        return "\n".join([*lines, "  (stuffed, escaped or of sizes the table cannot tell: the bytes whole)"]) + "\n"
+    lines.append(f"  {'offset':>6}  {'size':>4}  {'kind':<20}  {'value':<28}  {'holds':<12}  bytes")
+    offset = 0
+    for size, what, detail in rows:
+        part = data[offset : offset + size]
+        lines.append(f"  {offset:>6}  {size:>4}  {what:<20}  {detail:<28}  {_held(what, detail, part):<12}  "
+                     f"{_hex(part)}".rstrip())
+        offset += size
+    return "\n".join(lines) + "\n"
+
+
+def _sized(rows: list[Row], total: int) -> list[tuple[int, str, str]] | None:
+    """The rows with every size known, a single one of varying size taking what the others leave
+    of `total`; None when they cannot hold `total` bytes."""
+    known = sum(size for size, _, _ in rows if size is not None)
+    varying = [i for i, (size, _, _) in enumerate(rows) if size is None]
+    if len(varying) > 1 or known > total or (not varying and known != total):
+        return None
+    return [(total - known if size is None else size, what, detail) for size, what, detail in rows]
+
+
+def _held(what: str, detail: str, part: bytes) -> str:
+    """The number a row's bytes hold, read as its kind says (a frame's field or length by its
+    format); text as RDIS spells it; "" for bytes and checksums, shown in hex only."""
+    kind = what.removeprefix("payload ")
+    fmt = None
+    if kind in _FORMATS or kind.rsplit(" ", 1)[0] in _FORMATS:
+        base, _, order = kind.partition(" ")
+        fmt = {"BE": ">", "LE": "<"}.get(order, "=") + _FORMATS[base]
+    elif (what == "length" or what.startswith("field ")) and detail.startswith('"'):
+        fmt = detail[1 : detail.index('"', 1)]
+    elif kind == "text":
+        return spell_template(part.decode("latin-1"))
+    if fmt is None:
+        return ""
+    try:
+        return repr(struct.unpack(fmt, part)[0])
+    except struct.error:  # a format that is not one number's
+        return ""
