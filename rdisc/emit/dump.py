@@ -7,6 +7,7 @@ decimal value after it: `84 (132)`), text as RDIS spells it (`"\\r\\n"` escaped)
 
 from __future__ import annotations
 
+import re
 import struct
 from collections.abc import Callable
 
@@ -345,14 +346,107 @@ def dump_request(model: m.Model, name: str, given: str, data: bytes) -> str:
                 break
     if rows is None:
         return "\n".join([*lines, "  (stuffed, escaped or of sizes the table cannot tell: the bytes whole)"]) + "\n"
-    lines.append(f"  {'offset':>6}  {'size':>4}  {'kind':<20}  {'value':<28}  {'holds':<12}  bytes")
+    return "\n".join([*lines, *held_table(rows, data)]) + "\n"
+
+
+def held_table(rows: list[tuple[int, str, str]], data: bytes) -> list[str]:
+    """Rows of known sizes held against `data`, a line each under a heading: offset, size, kind,
+    value as the table says it, the value the bytes hold, and the bytes."""
+    lines = [f"  {'offset':>6}  {'size':>4}  {'kind':<20}  {'value':<28}  {'holds':<12}  bytes"]
     offset = 0
     for size, what, detail in rows:
         part = data[offset : offset + size]
         lines.append(f"  {offset:>6}  {size:>4}  {what:<20}  {detail:<28}  {_held(what, detail, part):<12}  "
                      f"{_hex(part)}".rstrip())
         offset += size
-    return "\n".join(lines) + "\n"
+    return lines
+
+
+Layout = tuple[list[Row], str | None]
+"""A message's rows, and the regular expression its text must match (text formats and regexes)."""
+
+
+def request_layouts(model: m.Model, p: m.Primitive) -> list[Layout]:
+    """The byte tables a request of `p` can have (a frame's alternatives); none when it writes
+    nothing, or when its frame stuffs or escapes (its table is not its bytes)."""
+    if p.encoding is None:
+        return []
+    frame = model.frames[p.frame.frame] if p.frame is not None else None
+    if frame is not None and (frame.stuffing is not None or frame.escaping is not None):
+        return []
+    pattern = None
+    if isinstance(p.encoding, m.Format):  # a text: each `{}` any text
+        pattern = "".join(re.escape(piece) if n % 2 == 0 else "(.*?)"
+                          for n, piece in enumerate(re.split(r"(\{[^{}]*\})", p.encoding.template))) + r"\Z"
+    payload = _payload_rows(p.encoding, p.args)
+    return [(_layout_rows(parts, payload, False)[0], pattern)
+            for parts in (frame.requests if frame is not None else (None,))]
+
+
+def reply_layouts(model: m.Model, p: m.Primitive) -> list[tuple[str, Layout]]:
+    """The byte tables a reply of `p` can have, each with a name (`reply`, `reply when k = 1`,
+    `reply 2 of 3`); none for what dump shows as records or sub-payloads, or a stuffed or
+    escaped frame, whose tables are not their bytes."""
+    use = p.reply_frames[0] if p.reply_frames else p.frame
+    frame = model.frames[use.frame] if use is not None else None
+    if frame is not None and (frame.stuffing is not None or frame.escaping is not None):
+        return []
+    sides = frame.replies if frame is not None and frame.reply else (None,)
+
+    def layouts(name: str, decoding: m.Unpack | m.Regex | None, payload: list[Row],
+                through: tuple[tuple[m.FramePart, ...], ...] | tuple[None] = sides) -> list[tuple[str, Layout]]:
+        pattern = decoding.pattern if isinstance(decoding, m.Regex) else None
+        return [(name, (_layout_rows(parts, payload, True)[0], pattern)) for parts in through]
+
+    if p.table is not None:
+        if p.table.each:
+            return []
+        found = []
+        for case in p.table.cases:
+            rows = _reply_rows(case.decoding)
+            if p.table.tag is not None:
+                assert p.table.tag_layout is not None
+                rows = [(p.table.tag_layout.size, f"tag {_integer_kind(p.table.tag_layout)}",
+                         f"= {case.values_text()}"), *rows]
+            found += layouts(f"reply when {p.table.key} = {case.values_text()}", case.decoding, rows)
+        return found
+    if p.listed:
+        found = []
+        for n, r in enumerate(p.listed, 1):
+            through = r.frame or p.frame
+            own = model.frames[through.frame] if through is not None else None
+            found += layouts(f"reply {n} of {len(p.listed)}", r.decoding, _reply_rows(r.decoding),
+                             own.replies if own is not None and own.reply else (None,))
+        return found
+    if p.records is not None or not p.expects_reply(model.frames):
+        return []
+    return layouts("reply", p.decoding, _reply_rows(p.decoding))
+
+
+_CONSTANT = re.compile(r"([0-9A-F]{2}(?: [0-9A-F]{2})*)(?: \(-?\d+\))?")
+
+
+def matched(layout: Layout, data: bytes) -> list[tuple[int, str, str]] | None:
+    """The layout's rows sized to `data` when its bytes can be that message: every constant
+    (header, constant values) the bytes it says, a text matching its pattern; else None."""
+    rows, pattern = layout
+    if pattern is not None:
+        try:
+            text = data.decode("latin-1")
+            if re.match(pattern, text, re.DOTALL) is None:  # a regex as the engine's `Match` reads it
+                return None
+        except re.error:
+            return None
+    sized = _sized(rows, len(data))
+    if sized is None:
+        return None
+    offset = 0
+    for size, _what, detail in sized:
+        constant = _CONSTANT.fullmatch(detail)
+        if constant is not None and data[offset : offset + size] != bytes.fromhex(constant.group(1)):
+            return None
+        offset += size
+    return sized
 
 
 def _sized(rows: list[Row], total: int) -> list[tuple[int, str, str]] | None:

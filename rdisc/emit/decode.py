@@ -1,0 +1,136 @@
+"""`rdisc decode`: captured traffic told as a description's requests and replies, as `cantools
+decode` tells CAN frames. Each message written is held against every primitive's request table
+(`rdisc dump`'s, its constants and text checked), each message read against the reply tables of
+the request before it first, then every primitive's; the first that fits names it, its fields
+shown as `rdisc dump --args` shows them. Bytes that fit none are shown as unknown."""
+
+from __future__ import annotations
+
+import struct
+from collections.abc import Sequence
+from typing import Any
+
+from rdisc import engine
+from rdisc.capture import Message
+from rdisc.emit.dump import Layout, held_table, matched, reply_layouts, request_layouts
+from rdisc.engine.wire import FrameError
+from rdisc.semantics import model as m
+
+
+def decode(model: m.Model, device: engine.Device, messages: Sequence[Message]) -> str:
+    """Each message and what it is (`device`: the model's plans, whose frames check a message
+    whole: its length, fields and checksum)."""
+    checks = {name: _checks(model, device, name) for name in model.primitives}
+    requests = {name: request_layouts(model, p) for name, p in model.primitives.items()}
+    replies = {name: reply_layouts(model, p) for name, p in model.primitives.items()}
+    written: dict[str | None, bytes] = {}  # the last request on each connection (a checksum may cover it)
+    asked: dict[str | None, str] = {}  # the primitive of the last request on each connection
+    lines: list[str] = []
+    for message in messages:
+        on = f"{message.connection} " if message.connection is not None else ""
+        lines.append(f"{on}{'>' if message.write else '<'} {message.data.hex(' ').upper()}".rstrip())
+        names = [name for name, p in model.primitives.items()
+                 if message.connection is None or p.connection == message.connection]
+        if message.write:
+            written[message.connection] = message.data
+            found = [(f"request {name}", rows) for name in names
+                     if (rows := _first(requests[name], message.data)) is not None
+                     and _whole(checks[name][0], message.data, b"")]
+            if found:
+                asked[message.connection] = found[0][0].removeprefix("request ")
+            else:
+                asked.pop(message.connection, None)
+        else:
+            before = asked.get(message.connection)
+            ordered = ([before] if before in names else []) + [name for name in names if name != before]
+            request = written.get(message.connection, b"")
+            found = [(f"{said} of {name}", rows) for name in ordered for said, layout in replies[name]
+                     if (rows := matched(layout, message.data)) is not None
+                     and _whole(checks[name][1], message.data, request)]
+            if found and found[0][0].endswith(f" of {before}"):  # the request's own reply: no other is meant
+                found = found[:1]
+        if not found:
+            side = "request" if message.write else "reply"
+            lines.append(f"  unknown: no primitive's {side} is these {len(message.data)} bytes")
+            continue
+        said, rows = found[0]
+        others = list(dict.fromkeys(other.rsplit(" ", 1)[-1] for other, _ in found[1:]))
+        also = f" (also fits: {', '.join(others)})" if others else ""
+        lines += [f"  {said}{also}", *held_table(rows, message.data)]
+    return "\n".join(lines) + "\n" if lines else ""
+
+
+def _first(layouts: list[Layout], data: bytes) -> list[tuple[int, str, str]] | None:
+    return next((rows for layout in layouts if (rows := matched(layout, data)) is not None), None)
+
+
+class _Whatever:
+    """A frame field's expected value, equal to any: a capture is read without its call's values."""
+
+    __hash__ = None  # type: ignore[assignment]
+
+    def __eq__(self, other: object) -> bool:
+        return True
+
+    def __ne__(self, other: object) -> bool:
+        return False
+
+
+class _AnyFields:
+    def __getitem__(self, index: int) -> _Whatever:
+        return _Whatever()
+
+
+class _Bytes:
+    """A message as a port the frame reads it from."""
+
+    timeout: float | None = 0.0
+
+    def __init__(self, data: bytes) -> None:
+        self.data, self.at = data, 0
+
+    def read(self, size: int = 1, /) -> bytes:
+        chunk = self.data[self.at : self.at + size]
+        self.at += len(chunk)
+        return chunk
+
+    def read_until(self, expected: bytes = b"\n", size: int | None = None, /) -> bytes:
+        end = self.data.find(expected, self.at) if expected else -1
+        stop = len(self.data) if end < 0 else end + len(expected)
+        return self.read(stop - self.at if size is None else min(size, stop - self.at))
+
+
+_Check = tuple[engine.Frame, ...]
+
+
+def _checks(model: m.Model, device: engine.Device, name: str) -> tuple[_Check, _Check]:
+    """The engine's frames that read a request of `name` (one per layout) and its reply, as a
+    device and the host read them; none where a message has no frame of its own to check
+    (unframed, or a reply through another frame)."""
+    use = device.primitives[name].frame
+    if use is None:
+        return (), ()
+    frame = use.frame
+    requests = tuple(engine.Frame(frame.name, side.parts, side.parts) for side in frame.requests)
+    p = model.primitives[name]
+    framed = frame.reply.parts and not p.reply_frames and not p.listed
+    return requests, (frame,) if framed else ()
+
+
+def _whole(frames: _Check, data: bytes, request: bytes) -> bool:
+    """Whether one of `frames` reads `data` whole, its constants, length and checksum right (no
+    frames: nothing to check)."""
+    if not frames:
+        return True
+    for frame in frames:
+        side = frame.reply
+        size = len(data) - sum(n for i, n in enumerate(side.sizes) if i != side.payload)
+        port = _Bytes(data)
+        fields: Any = _AnyFields()
+        try:
+            raw, _ = frame.read(port, fields, request, size)
+        except (FrameError, engine.RdisError, struct.error, ValueError, IndexError, TypeError):
+            continue
+        if raw == data and port.at == len(data):
+            return True
+    return False
