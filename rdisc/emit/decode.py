@@ -31,9 +31,10 @@ def decode(model: m.Model, device: engine.Device, messages: Sequence[Message]) -
         lines.append(f"{on}{'>' if message.write else '<'} {message.data.hex(' ').upper()}".rstrip())
         names = [name for name, p in model.primitives.items()
                  if message.connection is None or p.connection == message.connection]
+        found: list[tuple[str, list[tuple[int, str, str]], str | None]] = []  # name, rows, a reply's regex
         if message.write:
             written[message.connection] = message.data
-            found = [(f"request {name}", rows) for name in names
+            found = [(f"request {name}", rows, None) for name in names
                      if (rows := _first(requests[name], message.data)) is not None
                      and _whole(checks[name][0], message.data, b"")]
             if found:
@@ -44,8 +45,9 @@ def decode(model: m.Model, device: engine.Device, messages: Sequence[Message]) -
             before = asked.get(message.connection)
             ordered = ([before] if before in names else []) + [name for name in names if name != before]
             request = written.get(message.connection, b"")
-            found = [(f"{said} of {name}", rows) for name in ordered for said, layout in replies[name]
-                     if (rows := matched(layout, message.data)) is not None
+            found = [(f"{said} of {name}", rows, pattern if isinstance(pattern, str) else None)
+                     for name in ordered for said, (table, pattern) in replies[name]
+                     if (rows := matched((table, pattern), message.data)) is not None
                      and _whole(checks[name][1], message.data, request)]
             if found and found[0][0].endswith(f" of {before}"):  # the request's own reply: no other is meant
                 found = found[:1]
@@ -53,10 +55,15 @@ def decode(model: m.Model, device: engine.Device, messages: Sequence[Message]) -
             side = "request" if message.write else "reply"
             lines.append(f"  unknown: no primitive's {side} is these {len(message.data)} bytes")
             continue
-        said, rows = found[0]
-        others = list(dict.fromkeys(other.rsplit(" ", 1)[-1] for other, _ in found[1:]))
+        said, rows, regex = found[0]
+        others = list(dict.fromkeys(other.rsplit(" ", 1)[-1] for other, _, _ in found[1:]))
         also = f" (also fits: {', '.join(others)})" if others else ""
         lines += [f"  {said}{also}", *held_table(rows, message.data)]
+        if regex is not None:  # its groups, as the engine's decoder reads them
+            try:
+                lines.append(f"  out = {list(engine.Match(regex).decode(said, message.data))!r}")
+            except engine.RdisError:
+                pass
     return "\n".join(lines) + "\n" if lines else ""
 
 

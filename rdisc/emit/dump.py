@@ -362,8 +362,9 @@ def held_table(rows: list[tuple[int, str, str]], data: bytes) -> list[str]:
     return lines
 
 
-Layout = tuple[list[Row], str | None]
-"""A message's rows, and the regular expression its text must match (text formats and regexes)."""
+Layout = tuple[list[Row], str | tuple[str, ...] | None]
+"""A message's rows, and what its text must be: a reply's regular expression, or a request
+format's literal pieces (in order, the values between them)."""
 
 
 def request_layouts(model: m.Model, p: m.Primitive) -> list[Layout]:
@@ -375,9 +376,8 @@ def request_layouts(model: m.Model, p: m.Primitive) -> list[Layout]:
     if frame is not None and (frame.stuffing is not None or frame.escaping is not None):
         return []
     pattern = None
-    if isinstance(p.encoding, m.Format):  # a text: each `{}` any text
-        pattern = "".join(re.escape(piece) if n % 2 == 0 else "(.*?)"
-                          for n, piece in enumerate(re.split(r"(\{[^{}]*\})", p.encoding.template))) + r"\Z"
+    if isinstance(p.encoding, m.Format):  # a text: its literal pieces, any text for each `{}`
+        pattern = tuple(re.split(r"\{[^{}]*\}", p.encoding.template))
     payload = _payload_rows(p.encoding, p.args)
     return [(_layout_rows(parts, payload, False)[0], pattern)
             for parts in (frame.requests if frame is not None else (None,))]
@@ -430,9 +430,11 @@ def matched(layout: Layout, data: bytes) -> list[tuple[int, str, str]] | None:
     """The layout's rows sized to `data` when its bytes can be that message: every constant
     (header, constant values) the bytes it says, a text matching its pattern; else None."""
     rows, pattern = layout
-    if pattern is not None:
+    text = data.decode("latin-1")
+    if isinstance(pattern, tuple) and not _pieces_in_order(pattern, text):
+        return None
+    if isinstance(pattern, str):
         try:
-            text = data.decode("latin-1")
             if re.match(pattern, text, re.DOTALL) is None:  # a regex as the engine's `Match` reads it
                 return None
         except re.error:
@@ -477,3 +479,20 @@ def _held(what: str, detail: str, part: bytes) -> str:
         return repr(struct.unpack(fmt, part)[0])
     except struct.error:  # a format that is not one number's
         return ""
+
+
+def _pieces_in_order(pieces: tuple[str, ...], text: str) -> bool:
+    """Whether `text` is the pieces with anything between them: the first at its start, the last
+    at its end, the others found in order between (linear: no regex to backtrack)."""
+    first, *middle, last = pieces if len(pieces) > 1 else (pieces[0], pieces[0])
+    if len(pieces) == 1:
+        return text == first
+    if not text.startswith(first) or not text.endswith(last) or len(text) < len(first) + len(last):
+        return False
+    at, end = len(first), len(text) - len(last)
+    for piece in middle:
+        found = text.find(piece, at, end)
+        if found < 0:
+            return False
+        at = found + len(piece)
+    return True

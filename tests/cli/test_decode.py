@@ -167,3 +167,40 @@ def test_too_much_text_binary_a_missing_file_and_not_a_recording(rdisc, tmp_path
     result = rdisc("decode", EXAMPLES / "create.rdis", fake)
     assert (result.returncode, result.stdout) == (2, "")
     assert result.stderr.startswith(f"rdisc decode: {fake}: not a readable recording") and result.stderr.count("\n") == 1
+
+
+def test_text_requests_by_their_format_and_replies_by_their_regex(rdisc, tmp_path: Path) -> None:
+    capture = tmp_path / "koala.txt"
+    capture.write_text("> 45 0a\n< 65 2c 31 2c 32 0d 0a\n> 47 0a\n")
+    assert decode(rdisc, "koala.rdis", capture) == [
+        "> 45 0A",
+        "  request read_speed",
+        HEAD,
+        '       0     2  text                  "E\\n"                         "E\\n"         45 0A',
+        "< 65 2C 31 2C 32 0D 0A",
+        "  reply of read_speed",
+        HEAD,
+        '       0     7  text                  regex r"^e,(-?\\d+),(-?\\d+)\\s*$"  "e,1,2\\r\\n"   65 2C 31 2C 32 0D 0A',
+        "  out = ['1', '2']",
+        "> 47 0A",  # `G,{},{}\n` wants its commas
+        "  unknown: no primitive's request is these 2 bytes",
+    ]
+
+
+def test_every_example_reads_random_bytes_without_a_traceback(tmp_path: Path) -> None:
+    """Bytes of every length up to 300, random and cut from the examples' own headers, through
+    every example: each message is named or unknown, in process, never an exception."""
+    import random
+
+    from rdisc.capture import Message
+    from rdisc.emit.decode import decode as decoded
+    from rdisc.runtime.device import load
+
+    chance = random.Random(23)
+    for path in sorted(EXAMPLES.glob("*.rdis")):
+        description = load(path)
+        messages = [Message(chance.random() < 0.5, (b"\xff\xff" if n % 3 == 0 else b"")
+                            + bytes(chance.randrange(256) for _ in range(chance.randrange(300))))
+                    for n in range(60)]
+        text = decoded(description.model, description.device, messages)
+        assert text.count("\n  request ") + text.count("\n  reply") + text.count("\n  unknown: ") >= 60, path
