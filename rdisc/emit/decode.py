@@ -37,6 +37,7 @@ def decode(model: m.Model, device: engine.Device, messages: Sequence[Message]) -
             found = [(f"request {name}", rows, None) for name in names
                      if (rows := _first(requests[name], message.data)) is not None
                      and _whole(checks[name][0], message.data, b"")]
+            found.sort(key=lambda one: not _fixed(checks[one[0].removeprefix("request ")][0]))  # broadcast: *_all
             if found:
                 asked[message.connection] = found[0][0].removeprefix("request ")
             else:
@@ -107,7 +108,7 @@ class _Bytes:
         return self.read(stop - self.at if size is None else min(size, stop - self.at))
 
 
-_Check = tuple[engine.Frame, ...]
+_Check = tuple[tuple[engine.Frame, Any], ...]  # a frame that reads the message, the fields it must carry
 
 
 def _checks(model: m.Model, device: engine.Device, name: str) -> tuple[_Check, _Check]:
@@ -115,13 +116,25 @@ def _checks(model: m.Model, device: engine.Device, name: str) -> tuple[_Check, _
     device and the host read them; none where a message has no frame of its own to check
     (unframed, or a reply through another frame)."""
     use = device.primitives[name].frame
-    if use is None:
+    p = model.primitives[name]
+    if use is None or p.frame is None:
         return (), ()
     frame = use.frame
-    requests = tuple(engine.Frame(frame.name, side.parts, side.parts) for side in frame.requests)
-    p = model.primitives[name]
+    fields: Any = _AnyFields()
+    if all(isinstance(arg, m.Const) for arg in p.frame.args):  # `dxl(BROADCAST)`: the fields are known
+        try:
+            fields = frame.values(name, use.args(device.state, [None] * len(p.params)))
+        except (engine.RdisError, *engine.EVAL_ERRORS):
+            pass
+    requests = tuple((engine.Frame(frame.name, side.parts, side.parts), fields) for side in frame.requests)
     framed = frame.reply.parts and not p.reply_frames and not p.listed
-    return requests, (frame,) if framed else ()
+    return requests, ((frame, fields),) if framed else ()
+
+
+def _fixed(frames: _Check) -> bool:
+    """Whether the frame's fields are constants (`dxl(BROADCAST)`): such a primitive is named before
+    one whose fields are its parameters' and that the same bytes fit too."""
+    return bool(frames) and not isinstance(frames[0][1], _AnyFields)
 
 
 def _whole(frames: _Check, data: bytes, request: bytes) -> bool:
@@ -129,11 +142,10 @@ def _whole(frames: _Check, data: bytes, request: bytes) -> bool:
     frames: nothing to check)."""
     if not frames:
         return True
-    for frame in frames:
+    for frame, fields in frames:
         side = frame.reply
         size = len(data) - sum(n for i, n in enumerate(side.sizes) if i != side.payload)
         port = _Bytes(data)
-        fields: Any = _AnyFields()
         try:
             raw, _ = frame.read(port, fields, request, size)
         except (FrameError, engine.RdisError, struct.error, ValueError, IndexError, TypeError):

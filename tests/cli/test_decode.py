@@ -55,17 +55,18 @@ def test_hex_lines_of_a_create_session(rdisc, tmp_path: Path) -> None:
 
 def test_an_ax12_exchange_framed_and_checked(rdisc, tmp_path: Path) -> None:
     """The manual's WRITE of goal 512 and its status; a READ of the position and its reply; the
-    same reply with its checksum wrong is no reply, and a request with a wrong checksum no request."""
+    same reply with its checksum wrong is no reply, and a request with a wrong checksum no request;
+    a broadcast is the broadcasting primitive's."""
     capture = tmp_path / "ax12.txt"
     capture.write_text("bus > ff ff 01 05 03 1e 00 02 d6\nbus < ff ff 01 02 00 fc\n"
                        "> FF FF 01 04 02 24 02 D2\n< ff ff 01 04 00 00 02 f8\n< ff ff 01 04 00 00 02 00\n"
-                       "> FF FF 01 04 02 24 02 D3\n")
+                       "> FF FF 01 04 02 24 02 D3\n> ff ff fe 02 01 fe\n")
     frame = "       0     2  header                FF FF                                       FF FF"
     field = "       2     1  field id              \"B\" = id                      1             01"
     checksum = "  checksum              sum inverted as B, over id .. payload                "
     assert decode(rdisc, "ax12.rdis", capture) == [
         "bus > FF FF 01 05 03 1E 00 02 D6",
-        "  request goto (also fits: goto_all)",
+        "  request goto",
         HEAD, frame, field,
         "       3     1  length                \"B\" = payload + 1             5             05",
         "       4     1  payload u8            03 (3)                        3             03",
@@ -97,6 +98,13 @@ def test_an_ax12_exchange_framed_and_checked(rdisc, tmp_path: Path) -> None:
         "  unknown: no primitive's reply is these 8 bytes",
         "> FF FF 01 04 02 24 02 D3",
         "  unknown: no primitive's request is these 8 bytes",
+        "> FF FF FE 02 01 FE",  # a broadcast: the primitive whose frame says 254 is named first
+        "  request ping_all (also fits: ping)",
+        HEAD, frame,
+        "       2     1  field id              \"B\" = id                      254           FE",
+        "       3     1  length                \"B\" = payload + 1             2             02",
+        "       4     1  payload u8            01 (1)                        1             01",
+        "       5     1" + checksum + "FE",
     ]
 
 
