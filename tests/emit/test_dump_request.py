@@ -82,3 +82,19 @@ def test_an_unknown_primitive_names_the_known_ones(rdisc) -> None:
     result = rdisc("dump", EXAMPLES / "create.rdis", "drve")
     assert (result.returncode, result.stdout, result.stderr) == (
         2, "", "rdisc dump: irobot_create has no primitive `drve` (its primitives: start, full, drive, bumpers)\n")
+
+
+def test_the_bytes_are_those_a_call_writes() -> None:
+    """`Robot.request` is the call's own path: a port given the same call receives the same bytes."""
+    from rdisc.runtime.device import load
+    from tests.support.ports import ScriptedPort
+
+    description = load(EXAMPLES / "ax12.rdis")
+    port = ScriptedPort(bytes.fromhex("ffff010200fc"))
+    robot = description.connect(port, threads=False)
+    try:
+        before = len(port.written)
+        robot.call_primitive("goto", 1, 512)
+        assert bytes(port.written[before:]) == robot.request("goto", 1, 512) == bytes.fromhex("ffff010503 1e0002d6")
+    finally:
+        robot.close()
