@@ -13,7 +13,7 @@ from typing import Any
 from rdisc import engine
 from rdisc.capture import Message
 from rdisc.emit.dump import Layout, held_table, matched, reply_layouts, request_layouts
-from rdisc.engine.wire import FrameError
+from rdisc.engine.wire import Field, FrameError
 from rdisc.semantics import model as m
 
 
@@ -24,6 +24,7 @@ def decode(model: m.Model, device: engine.Device, messages: Sequence[Message]) -
     requests = {name: request_layouts(model, p) for name, p in model.primitives.items()}
     replies = {name: reply_layouts(model, p) for name, p in model.primitives.items()}
     written: dict[str | None, bytes] = {}  # the last request on each connection (a checksum may cover it)
+    carried: dict[str | None, _Fields] = {}  # its frame's fields, which its reply must carry too
     asked: dict[str | None, str] = {}  # the primitive of the last request on each connection
     lines: list[str] = []
     for message in messages:
@@ -39,7 +40,9 @@ def decode(model: m.Model, device: engine.Device, messages: Sequence[Message]) -
                      and _whole(checks[name][0], message.data, b"")]
             found.sort(key=lambda one: not _fixed(checks[one[0].removeprefix("request ")][0]))  # broadcast: *_all
             if found:
-                asked[message.connection] = found[0][0].removeprefix("request ")
+                name = found[0][0].removeprefix("request ")
+                asked[message.connection] = name
+                carried[message.connection] = _fields_of(checks[name][0], message.data)
             else:
                 asked.pop(message.connection, None)
         else:
@@ -49,9 +52,17 @@ def decode(model: m.Model, device: engine.Device, messages: Sequence[Message]) -
             found = [(f"{said} of {name}", rows, pattern if isinstance(pattern, str) else None)
                      for name in ordered for said, (table, pattern) in replies[name]
                      if (rows := matched((table, pattern), message.data)) is not None
-                     and _whole(checks[name][1], message.data, request)]
+                     and _whole(checks[name][1], message.data, request,
+                                carried.get(message.connection) if name == before else None)]
             if found and found[0][0].endswith(f" of {before}"):  # the request's own reply: no other is meant
                 found = found[:1]
+            elif before in names:  # its shape, but not its request's fields (another servo's status)
+                for said, (table, pattern) in replies[before]:
+                    rows = matched((table, pattern), message.data)
+                    if rows is not None and _whole(checks[before][1], message.data, request):
+                        wrong = _misread(checks[before][1], message.data, request, carried.get(message.connection))
+                        found = [(f"{said} of {before}, but {wrong}", rows, None)]
+                        break
         if not found:
             side = "request" if message.write else "reply"
             lines.append(f"  unknown: no primitive's {side} is these {len(message.data)} bytes")
@@ -84,9 +95,32 @@ class _Whatever:
         return False
 
 
-class _AnyFields:
-    def __getitem__(self, index: int) -> _Whatever:
-        return _Whatever()
+class _Fields:
+    """A frame's field values by index, those not known equal to any."""
+
+    def __init__(self, known: dict[int, int] | None = None) -> None:
+        self.known = known or {}
+
+    def __getitem__(self, index: int) -> int | _Whatever:
+        return self.known.get(index, _Whatever())
+
+
+
+def _fields_of(frames: _Check, data: bytes) -> _Fields:
+    """The field values a request read whole by one of `frames` carries (`dxl`'s ID), by index."""
+    for frame, _ in frames:
+        side = frame.reply
+        payload = len(data) - sum(n for i, n in enumerate(side.sizes) if i != side.payload)
+        if side.group or payload < 0:  # optional parts: where each field stands is not one sum
+            continue
+        known, at = {}, 0
+        for i, (part, size) in enumerate(zip(side.parts, side.sizes)):
+            size = payload if i == side.payload else size
+            if isinstance(part, Field):
+                known[part.index] = part.struct.unpack(data[at : at + size])[0]
+            at += size
+        return _Fields(known)
+    return _Fields()
 
 
 class _Bytes:
@@ -120,7 +154,7 @@ def _checks(model: m.Model, device: engine.Device, name: str) -> tuple[_Check, _
     if use is None or p.frame is None:
         return (), ()
     frame = use.frame
-    fields: Any = _AnyFields()
+    fields: Any = _Fields()
     if all(isinstance(arg, m.Const) for arg in p.frame.args):  # `dxl(BROADCAST)`: the fields are known
         try:
             fields = frame.values(name, use.args(device.state, [None] * len(p.params)))
@@ -134,22 +168,29 @@ def _checks(model: m.Model, device: engine.Device, name: str) -> tuple[_Check, _
 def _fixed(frames: _Check) -> bool:
     """Whether the frame's fields are constants (`dxl(BROADCAST)`): such a primitive is named before
     one whose fields are its parameters' and that the same bytes fit too."""
-    return bool(frames) and not isinstance(frames[0][1], _AnyFields)
+    return bool(frames) and not isinstance(frames[0][1], _Fields)
 
 
-def _whole(frames: _Check, data: bytes, request: bytes) -> bool:
-    """Whether one of `frames` reads `data` whole, its constants, length and checksum right (no
-    frames: nothing to check)."""
-    if not frames:
-        return True
-    for frame, fields in frames:
+def _whole(frames: _Check, data: bytes, request: bytes, carried: _Fields | None = None) -> bool:
+    """Whether one of `frames` reads `data` whole, its constants, fields (those `carried` by its
+    request, if given), length and checksum right (no frames: nothing to check)."""
+    return _misread(frames, data, request, carried) is None
+
+
+def _misread(frames: _Check, data: bytes, request: bytes, carried: _Fields | None = None) -> str | None:
+    """`_whole`'s answer: None, or what the engine's frame found wrong (the last layout's)."""
+    wrong = None
+    for frame, own in frames:
+        fields: Any = carried if carried is not None and isinstance(own, _Fields) else own
         side = frame.reply
         size = len(data) - sum(n for i, n in enumerate(side.sizes) if i != side.payload)
         port = _Bytes(data)
         try:
             raw, _ = frame.read(port, fields, request, size)
-        except (FrameError, engine.RdisError, struct.error, ValueError, IndexError, TypeError):
+        except (FrameError, engine.RdisError, struct.error, ValueError, IndexError, TypeError) as err:
+            wrong = str(err)
             continue
         if raw == data and port.at == len(data):
-            return True
-    return False
+            return None
+        wrong = f"{frame.name}: {len(data) - port.at} bytes after the frame"
+    return wrong

@@ -60,11 +60,14 @@ def test_an_ax12_exchange_framed_and_checked(rdisc, tmp_path: Path) -> None:
     capture = tmp_path / "ax12.txt"
     capture.write_text("bus > ff ff 01 05 03 1e 00 02 d6\nbus < ff ff 01 02 00 fc\n"
                        "> FF FF 01 04 02 24 02 D2\n< ff ff 01 04 00 00 02 f8\n< ff ff 01 04 00 00 02 00\n"
-                       "> FF FF 01 04 02 24 02 D3\n> ff ff fe 02 01 fe\n")
+                       "> FF FF 01 04 02 24 02 D3\n> ff ff fe 02 01 fe\n"
+                       "> FF FF 01 04 02 24 02 D2\n< ff ff 02 04 00 00 02 f7\n")
     frame = "       0     2  header                FF FF                                       FF FF"
     field = "       2     1  field id              \"B\" = id                      1             01"
     checksum = "  checksum              sum inverted as B, over id .. payload                "
-    assert decode(rdisc, "ax12.rdis", capture) == [
+    lines = decode(rdisc, "ax12.rdis", capture)
+    position, reply = lines[18:28], lines[28:37]
+    assert lines == [
         "bus > FF FF 01 05 03 1E 00 02 D6",
         "  request goto",
         HEAD, frame, field,
@@ -105,6 +108,15 @@ def test_an_ax12_exchange_framed_and_checked(rdisc, tmp_path: Path) -> None:
         "       3     1  length                \"B\" = payload + 1             2             02",
         "       4     1  payload u8            01 (1)                        1             01",
         "       5     1" + checksum + "FE",
+        "> FF FF 01 04 02 24 02 D2",
+        "  request read_position",
+        *position[2:],
+        "< FF FF 02 04 00 00 02 F7",  # servo 2 answers a request to servo 1: the engine's refusal said
+        "  reply of read_position, but dxl: reply id is 2, expected 1",
+        HEAD, frame,
+        "       2     1  field id              \"B\" = id                      2             02",
+        *reply[5:-1],
+        "       7     1" + checksum + "F7",
     ]
 
 
