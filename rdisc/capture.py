@@ -17,6 +17,9 @@ MAX_TEXT = 16 * 2**20
 """The characters a capture of text may hold."""
 MAX_LINE = 64 * 2**10
 """The characters a line of it may hold."""
+MAX_MESSAGES = 100_000
+"""The messages a capture may hold: each is held against every primitive (about 0.3 ms each for
+the AX-12's 38), so that a decode ends within a minute."""
 
 _SPY = re.compile(r"\d+\.\d{3} (TX|RX)\s+([0-9A-F]{4})  ")
 
@@ -44,8 +47,15 @@ def read_text(stream: IO[str], name: str) -> list[Message]:
         if len(line) > MAX_LINE:
             raise CaptureError(f"{name}:{number}: a line of {len(line)} characters, more than {MAX_LINE}")
     if any(_SPY.match(line) for line in lines):
-        return _spy(lines, name)
-    return [m for number, line in enumerate(lines, 1) if (m := _hex_line(line, f"{name}:{number}")) is not None]
+        return _counted(_spy(lines, name), name)
+    return _counted([m for number, line in enumerate(lines, 1)
+                     if (m := _hex_line(line, f"{name}:{number}")) is not None], name)
+
+
+def _counted(messages: list[Message], name: str) -> list[Message]:
+    if len(messages) > MAX_MESSAGES:
+        raise CaptureError(f"{name}: {len(messages)} messages, more than {MAX_MESSAGES}")
+    return messages
 
 
 def _hex_line(line: str, where: str) -> Message | None:
@@ -97,10 +107,10 @@ def read_recording(path: str) -> list[Message]:
         recording = read(path)
     except RecordingError as err:
         raise CaptureError(f"{path}: {err}") from None
-    return [Message(write, data, connection)
-            for connection, exchanges in recording.exchanges.items()
-            for written, reply in exchanges
-            for write, data in ((True, written), (False, reply)) if data]
+    return _counted([Message(write, data, connection)
+                     for connection, exchanges in recording.exchanges.items()
+                     for written, reply in exchanges
+                     for write, data in ((True, written), (False, reply)) if data], path)
 
 
 def _cut(text: str) -> str:

@@ -224,3 +224,13 @@ def test_every_example_reads_random_bytes_without_a_traceback(tmp_path: Path) ->
                     for n in range(60)]
         text = decoded(description.model, description.device, messages)
         assert text.count("\n  request ") + text.count("\n  reply") + text.count("\n  unknown: ") >= 60, path
+
+
+def test_a_capture_of_too_many_messages_is_refused(rdisc, tmp_path: Path, monkeypatch) -> None:
+    from rdisc import capture as capture_module
+
+    monkeypatch.setattr(capture_module, "MAX_MESSAGES", 3)
+    capture = tmp_path / "long.txt"
+    capture.write_text("> 8e 07\n< 03\n" * 2)
+    result = rdisc("decode", EXAMPLES / "create.rdis", capture)
+    assert (result.returncode, result.stdout, result.stderr) == (2, "", f"rdisc decode: {capture}: 4 messages, more than 3\n")
