@@ -123,7 +123,7 @@ def untimed(stderr: str) -> list[str]:
 
 
 #: verbs that only read and write files: run in this process by `run_rdisc`
-IN_PROCESS_VERBS = frozenset({"check", "build", "import", "explain", "dump", "graph",
+IN_PROCESS_VERBS = frozenset({"check", "build", "import", "explain", "dump", "decode", "graph",
                               "emit-python", "emit-ros", "emit-urdf", "emit-sdf", "emit-mjcf"})
 
 

@@ -7,6 +7,7 @@ decimal value after it: `84 (132)`), text as RDIS spells it (`"\\r\\n"` escaped)
 
 from __future__ import annotations
 
+import re
 import struct
 from collections.abc import Callable
 
@@ -245,6 +246,24 @@ def _sides(name: str, layouts: tuple[tuple[m.FramePart, ...], ...] | None, paylo
 
 def _side(name: str, parts: tuple[m.FramePart, ...] | None, payload: list[Row], reply: bool) -> list[str]:
     """A layout's table; in a `reply`, its optional parts marked (a request writes them)."""
+    rows, optional = _layout_rows(parts, payload, reply)
+    total = sum(size for size, _, _ in rows if size is not None)
+    varies = any(size is None for size, _, _ in rows)
+    out = [f"  {name}: {total}{'+n' if varies else ''} byte{'' if total == 1 and not varies else 's'}"]
+    if optional:
+        out[0] += f", {sum(rows[i][0] or 0 for i in optional)} of them optional (a reply may lack them)"
+    out.append(f"  {'offset':>6}  {'size':>4}  {'kind':<20}  value")
+    offset: int | None = 0
+    for i, (width, what, detail) in enumerate(rows):
+        at = f"{offset:>6}" if offset is not None else f"{'?':>6}"
+        what = f"{what} (optional)" if i in optional else what
+        out.append(f"  {at}  {width if width is not None else 'n':>4}  {what:<20}  {detail}")
+        offset = offset + width if offset is not None and width is not None else None
+    return out
+
+
+def _layout_rows(parts: tuple[m.FramePart, ...] | None, payload: list[Row], reply: bool) -> tuple[list[Row], range]:
+    """A layout's rows, the payload's among them, and the indexes of those a `reply` may lack."""
     rows: list[Row] = []
     optional = range(0)  # the indexes of the rows a reply may lack
     if parts is None:
@@ -273,19 +292,7 @@ def _side(name: str, parts: tuple[m.FramePart, ...] | None, payload: list[Row], 
                     extras = " inverted" if a.inverted else ""
                     extras += f" mask {a.mask:#x}" if a.mask is not None else ""
                     rows.append((size, "checksum", f"{a.name}{extras} as {fmt or 'hex'}, over {covers}"))
-    total = sum(size for size, _, _ in rows if size is not None)
-    varies = any(size is None for size, _, _ in rows)
-    out = [f"  {name}: {total}{'+n' if varies else ''} byte{'' if total == 1 and not varies else 's'}"]
-    if optional:
-        out[0] += f", {sum(rows[i][0] or 0 for i in optional)} of them optional (a reply may lack them)"
-    out.append(f"  {'offset':>6}  {'size':>4}  {'kind':<20}  value")
-    offset: int | None = 0
-    for i, (width, what, detail) in enumerate(rows):
-        at = f"{offset:>6}" if offset is not None else f"{'?':>6}"
-        what = f"{what} (optional)" if i in optional else what
-        out.append(f"  {at}  {width if width is not None else 'n':>4}  {what:<20}  {detail}")
-        offset = offset + width if offset is not None and width is not None else None
-    return out
+    return rows, optional
 
 
 def _bit_fields(bits: tuple[m.BitField, ...]) -> str:
@@ -312,3 +319,180 @@ def _name(part: m.FramePart) -> str:
         case m.FramePayload():
             return "payload"
     return "checksum"
+
+
+# ---- one request's concrete bytes (`rdisc dump FILE PRIMITIVE --args K=V ...`) -----------------------
+
+_FORMATS = {kind: code for code, kind in _KINDS.items() if code not in "lLc"}
+
+
+def dump_request(model: m.Model, name: str, given: str, data: bytes) -> str:
+    """The bytes a request of primitive `name` is for the arguments `given` (as the caller spells
+    them), made by the engine, held against the primitive's byte table: each row's offset, size,
+    kind, value as the table says it, the value the bytes hold and the bytes. Bytes that do not
+    follow the table (a stuffed or escaped frame, sizes that cannot be told apart) show whole."""
+    p = model.primitives[name]
+    lines = [f"primitive {name}({given}) on {p.connection}: {len(data)} byte{'' if len(data) == 1 else 's'}"]
+    if p.encoding is None:
+        return "\n".join([*lines, "  request: none (nothing is written)"]) + "\n"
+    lines.append(f"  {_hex(data)}")
+    frame = model.frames[p.frame.frame] if p.frame is not None else None
+    payload = _payload_rows(p.encoding, p.args)
+    rows = None
+    if frame is None or (frame.stuffing is None and frame.escaping is None):
+        for parts in frame.requests if frame is not None else (None,):
+            rows = _sized(_layout_rows(parts, payload, False)[0], len(data))
+            if rows is not None:
+                break
+    if rows is None:
+        return "\n".join([*lines, "  (stuffed, escaped or of sizes the table cannot tell: the bytes whole)"]) + "\n"
+    return "\n".join([*lines, *held_table(rows, data)]) + "\n"
+
+
+def held_table(rows: list[tuple[int, str, str]], data: bytes) -> list[str]:
+    """Rows of known sizes held against `data`, a line each under a heading: offset, size, kind,
+    value as the table says it, the value the bytes hold, and the bytes."""
+    lines = [f"  {'offset':>6}  {'size':>4}  {'kind':<20}  {'value':<28}  {'holds':<12}  bytes"]
+    offset = 0
+    for size, what, detail in rows:
+        part = data[offset : offset + size]
+        lines.append(f"  {offset:>6}  {size:>4}  {what:<20}  {detail:<28}  {_held(what, detail, part):<12}  "
+                     f"{_hex(part)}".rstrip())
+        offset += size
+    return lines
+
+
+Layout = tuple[list[Row], str | tuple[str, ...] | None]
+"""A message's rows, and what its text must be: a reply's regular expression, or a request
+format's literal pieces (in order, the values between them)."""
+
+
+def request_layouts(model: m.Model, p: m.Primitive) -> list[Layout]:
+    """The byte tables a request of `p` can have (a frame's alternatives); none when it writes
+    nothing, or when its frame stuffs or escapes (its table is not its bytes)."""
+    if p.encoding is None:
+        return []
+    frame = model.frames[p.frame.frame] if p.frame is not None else None
+    if frame is not None and (frame.stuffing is not None or frame.escaping is not None):
+        return []
+    pattern = None
+    if isinstance(p.encoding, m.Format):  # a text: its literal pieces, any text for each `{}`
+        pattern = tuple(re.split(r"\{[^{}]*\}", p.encoding.template))
+    payload = _payload_rows(p.encoding, p.args)
+    return [(_layout_rows(parts, payload, False)[0], pattern)
+            for parts in (frame.requests if frame is not None else (None,))]
+
+
+def reply_layouts(model: m.Model, p: m.Primitive) -> list[tuple[str, Layout]]:
+    """The byte tables a reply of `p` can have, each with a name (`reply`, `reply when k = 1`,
+    `reply 2 of 3`); none for what dump shows as records or sub-payloads, or a stuffed or
+    escaped frame, whose tables are not their bytes."""
+    use = p.reply_frames[0] if p.reply_frames else p.frame
+    frame = model.frames[use.frame] if use is not None else None
+    if frame is not None and (frame.stuffing is not None or frame.escaping is not None):
+        return []
+    sides = frame.replies if frame is not None and frame.reply else (None,)
+
+    def layouts(name: str, decoding: m.Unpack | m.Regex | None, payload: list[Row],
+                through: tuple[tuple[m.FramePart, ...], ...] | tuple[None] = sides) -> list[tuple[str, Layout]]:
+        pattern = decoding.pattern if isinstance(decoding, m.Regex) else None
+        return [(name, (_layout_rows(parts, payload, True)[0], pattern)) for parts in through]
+
+    if p.table is not None:
+        if p.table.each:
+            return []
+        found = []
+        for case in p.table.cases:
+            rows = _reply_rows(case.decoding)
+            if p.table.tag is not None:
+                assert p.table.tag_layout is not None
+                rows = [(p.table.tag_layout.size, f"tag {_integer_kind(p.table.tag_layout)}",
+                         f"= {case.values_text()}"), *rows]
+            found += layouts(f"reply when {p.table.key} = {case.values_text()}", case.decoding, rows)
+        return found
+    if p.listed:
+        found = []
+        for n, r in enumerate(p.listed, 1):
+            through = r.frame or p.frame
+            own = model.frames[through.frame] if through is not None else None
+            found += layouts(f"reply {n} of {len(p.listed)}", r.decoding, _reply_rows(r.decoding),
+                             own.replies if own is not None and own.reply else (None,))
+        return found
+    if p.records is not None or not p.expects_reply(model.frames):
+        return []
+    return layouts("reply", p.decoding, _reply_rows(p.decoding))
+
+
+_CONSTANT = re.compile(r"([0-9A-F]{2}(?: [0-9A-F]{2})*)(?: \(-?\d+\))?")
+
+
+def matched(layout: Layout, data: bytes) -> list[tuple[int, str, str]] | None:
+    """The layout's rows sized to `data` when its bytes can be that message: every constant
+    (header, constant values) the bytes it says, a text matching its pattern; else None."""
+    rows, pattern = layout
+    text = data.decode("latin-1")
+    if isinstance(pattern, tuple) and not _pieces_in_order(pattern, text):
+        return None
+    if isinstance(pattern, str):
+        try:
+            if re.match(pattern, text, re.DOTALL) is None:  # a regex as the engine's `Match` reads it
+                return None
+        except re.error:
+            return None
+    sized = _sized(rows, len(data))
+    if sized is None:
+        return None
+    offset = 0
+    for size, _what, detail in sized:
+        constant = _CONSTANT.fullmatch(detail)
+        if constant is not None and data[offset : offset + size] != bytes.fromhex(constant.group(1)):
+            return None
+        offset += size
+    return sized
+
+
+def _sized(rows: list[Row], total: int) -> list[tuple[int, str, str]] | None:
+    """The rows with every size known, a single one of varying size taking what the others leave
+    of `total`; None when they cannot hold `total` bytes."""
+    known = sum(size for size, _, _ in rows if size is not None)
+    varying = [i for i, (size, _, _) in enumerate(rows) if size is None]
+    if len(varying) > 1 or known > total or (not varying and known != total):
+        return None
+    return [(total - known if size is None else size, what, detail) for size, what, detail in rows]
+
+
+def _held(what: str, detail: str, part: bytes) -> str:
+    """The number a row's bytes hold, read as its kind says (a frame's field or length by its
+    format); text as RDIS spells it; "" for bytes and checksums, shown in hex only."""
+    kind = what.removeprefix("payload ")
+    fmt = None
+    if kind in _FORMATS or kind.rsplit(" ", 1)[0] in _FORMATS:
+        base, _, order = kind.partition(" ")
+        fmt = {"BE": ">", "LE": "<"}.get(order, "=") + _FORMATS[base]
+    elif (what == "length" or what.startswith("field ")) and detail.startswith('"'):
+        fmt = detail[1 : detail.index('"', 1)]
+    elif kind == "text":
+        return spell_template(part.decode("latin-1"))
+    if fmt is None:
+        return ""
+    try:
+        return repr(struct.unpack(fmt, part)[0])
+    except struct.error:  # a format that is not one number's
+        return ""
+
+
+def _pieces_in_order(pieces: tuple[str, ...], text: str) -> bool:
+    """Whether `text` is the pieces with anything between them: the first at its start, the last
+    at its end, the others found in order between (linear: no regex to backtrack)."""
+    first, *middle, last = pieces if len(pieces) > 1 else (pieces[0], pieces[0])
+    if len(pieces) == 1:
+        return text == first
+    if not text.startswith(first) or not text.endswith(last) or len(text) < len(first) + len(last):
+        return False
+    at, end = len(first), len(text) - len(last)
+    for piece in middle:
+        found = text.find(piece, at, end)
+        if found < 0:
+            return False
+        at = found + len(piece)
+    return True

@@ -219,7 +219,7 @@ def parse_settings(given: list[str], device: Device) -> dict[str, Any]:
     `bind_settings` to check; one that does not fit is an RdisValueError naming the setting."""
     declared = {p.name: p for p in device.settings}
     values: dict[str, Any] = {}
-    for name, text in _pairs(given, "--set ", "NAME", "{}").items():
+    for name, text in named_pairs(given, "--set ", "NAME", "{}").items():
         param = declared.get(name)
         try:
             values[name] = text if param is None else read_value(text, param, f"{device.name}: setting {name}")
@@ -228,7 +228,7 @@ def parse_settings(given: list[str], device: Device) -> dict[str, Any]:
     return values
 
 
-def _pairs(words: list[str], said: str, key: str, shown: str) -> dict[str, str]:
+def named_pairs(words: list[str], said: str, key: str, shown: str) -> dict[str, str]:
     """`K=V` words as a dict in their order: `said` starts a refusal, `key` names the K of a
     word without one, `shown` writes a K given twice."""
     given: dict[str, str] = {}
@@ -259,7 +259,7 @@ def parse_call(words: list[str], device: Device) -> tuple[str, str, dict[str, Va
         near = difflib.get_close_matches(name, known, n=1)
         hint = f"did you mean `{near[0]}`?" if near else f"there are: {', '.join(known) or 'none'}"
         raise ValueError(f"{device.name} has no input, interface or primitive `{name}`; {hint}")
-    given = _pairs(pairs, f"--call {name}: ", "KEY", "`{}`")
+    given = named_pairs(pairs, f"--call {name}: ", "KEY", "`{}`")
     try:
         return name, kind, call_values(device, kind, name, given)
     except Unbound:

@@ -206,6 +206,16 @@ class Robot(Exchange):
             raise KeyError(f"{self.name} has no primitive named {name!r}")
         self._call_primitive(plan, list(args))
 
+    def request(self, name: str, /, *args: Any) -> bytes:
+        """The bytes primitive `name` would write for these arguments (framed, after every check
+        a call makes), neither written nor needing a port: what `rdisc dump --args` shows. b""
+        for a primitive that writes nothing (a listener). Errors are raised as a call's."""
+        plan = self.device.primitives.get(name)
+        if plan is None:
+            raise KeyError(f"{self.name} has no primitive named {name!r}")
+        plan, values, local = self._planned(plan, _accepted(f"primitive {plan.name}", plan.params, list(args)))
+        return self._request(plan, values, local)[0]
+
     # ---- lifecycle ----------------------------------------------------------------------------------
 
     def open(self, port: PortSpec | None = None, *, threads: bool = True,
@@ -464,6 +474,11 @@ class Robot(Exchange):
 
     def _primitive_in_full(self, plan: Primitive, args: Args) -> None:
         """A primitive the general way: its parameters checked, its reply table's entry chosen."""
+        self._exchange(*self._planned(plan, args))
+
+    def _planned(self, plan: Primitive, args: Args) -> tuple[Primitive, Args, Args]:
+        """A primitive's parameters checked (ints made floats, ranges), its reply table's entry
+        chosen: that plan, its format values and the parameters' values."""
         for i in plan.floats:
             if type(args[i]) is int:
                 _widen(plan.name, plan.floats, args)
@@ -476,7 +491,7 @@ class Robot(Exchange):
             values = plan.values(self._state, args)
         except EVAL_ERRORS as err:
             raise RdisValueError(f"{plan.name}: {err}") from None
-        self._exchange(plan, values, args)
+        return plan, values, args
 
     # ---- a simulated device: `open(sim=...)` puts these in place of the ports' ways ------------------
 

@@ -3042,6 +3042,16 @@ class Robot(Exchange):
             raise KeyError(f"{self.name} has no primitive named {name!r}")
         self._call_primitive(plan, list(args))
 
+    def request(self, name: str, /, *args: Any) -> bytes:
+        """The bytes primitive `name` would write for these arguments (framed, after every check
+        a call makes), neither written nor needing a port: what `rdisc dump --args` shows. b""
+        for a primitive that writes nothing (a listener). Errors are raised as a call's."""
+        plan = self.device.primitives.get(name)
+        if plan is None:
+            raise KeyError(f"{self.name} has no primitive named {name!r}")
+        plan, values, local = self._planned(plan, _accepted(f"primitive {plan.name}", plan.params, list(args)))
+        return self._request(plan, values, local)[0]
+
     # ---- lifecycle ----------------------------------------------------------------------------------
 
     def open(self, port: PortSpec | None = None, *, threads: bool = True,
@@ -3300,6 +3310,11 @@ class Robot(Exchange):
 
     def _primitive_in_full(self, plan: Primitive, args: Args) -> None:
         """A primitive the general way: its parameters checked, its reply table's entry chosen."""
+        self._exchange(*self._planned(plan, args))
+
+    def _planned(self, plan: Primitive, args: Args) -> tuple[Primitive, Args, Args]:
+        """A primitive's parameters checked (ints made floats, ranges), its reply table's entry
+        chosen: that plan, its format values and the parameters' values."""
         for i in plan.floats:
             if type(args[i]) is int:
                 _widen(plan.name, plan.floats, args)
@@ -3312,7 +3327,7 @@ class Robot(Exchange):
             values = plan.values(self._state, args)
         except EVAL_ERRORS as err:
             raise RdisValueError(f"{plan.name}: {err}") from None
-        self._exchange(plan, values, args)
+        return plan, values, args
 
     # ---- a simulated device: `open(sim=...)` puts these in place of the ports' ways ------------------
 
@@ -3832,7 +3847,7 @@ def parse_settings(given: list[str], device: Device) -> dict[str, Any]:
     `bind_settings` to check; one that does not fit is an RdisValueError naming the setting."""
     declared = {p.name: p for p in device.settings}
     values: dict[str, Any] = {}
-    for name, text in _pairs(given, "--set ", "NAME", "{}").items():
+    for name, text in named_pairs(given, "--set ", "NAME", "{}").items():
         param = declared.get(name)
         try:
             values[name] = text if param is None else read_value(text, param, f"{device.name}: setting {name}")
@@ -3841,7 +3856,7 @@ def parse_settings(given: list[str], device: Device) -> dict[str, Any]:
     return values
 
 
-def _pairs(words: list[str], said: str, key: str, shown: str) -> dict[str, str]:
+def named_pairs(words: list[str], said: str, key: str, shown: str) -> dict[str, str]:
     """`K=V` words as a dict in their order: `said` starts a refusal, `key` names the K of a
     word without one, `shown` writes a K given twice."""
     given: dict[str, str] = {}
@@ -3872,7 +3887,7 @@ def parse_call(words: list[str], device: Device) -> tuple[str, str, dict[str, Va
         near = difflib.get_close_matches(name, known, n=1)
         hint = f"did you mean `{near[0]}`?" if near else f"there are: {', '.join(known) or 'none'}"
         raise ValueError(f"{device.name} has no input, interface or primitive `{name}`; {hint}")
-    given = _pairs(pairs, f"--call {name}: ", "KEY", "`{}`")
+    given = named_pairs(pairs, f"--call {name}: ", "KEY", "`{}`")
     try:
         return name, kind, call_values(device, kind, name, given)
     except Unbound:

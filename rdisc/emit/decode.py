@@ -1,0 +1,196 @@
+"""`rdisc decode`: captured traffic told as a description's requests and replies, as `cantools
+decode` tells CAN frames. Each message written is held against every primitive's request table
+(`rdisc dump`'s, its constants and text checked), each message read against the reply tables of
+the request before it first, then every primitive's; the first that fits names it, its fields
+shown as `rdisc dump --args` shows them. Bytes that fit none are shown as unknown."""
+
+from __future__ import annotations
+
+import struct
+from collections.abc import Sequence
+from typing import Any
+
+from rdisc import engine
+from rdisc.capture import Message
+from rdisc.emit.dump import Layout, held_table, matched, reply_layouts, request_layouts
+from rdisc.engine.wire import Field, FrameError
+from rdisc.semantics import model as m
+
+
+def decode(model: m.Model, device: engine.Device, messages: Sequence[Message]) -> str:
+    """Each message and what it is (`device`: the model's plans, whose frames check a message
+    whole: its length, fields and checksum)."""
+    checks = {name: _checks(model, device, name) for name in model.primitives}
+    requests = {name: request_layouts(model, p) for name, p in model.primitives.items()}
+    replies = {name: reply_layouts(model, p) for name, p in model.primitives.items()}
+    written: dict[str | None, bytes] = {}  # the last request on each connection (a checksum may cover it)
+    carried: dict[str | None, _Fields] = {}  # its frame's fields, which its reply must carry too
+    asked: dict[str | None, str] = {}  # the primitive of the last request on each connection
+    lines: list[str] = []
+    for message in messages:
+        on = f"{message.connection} " if message.connection is not None else ""
+        lines.append(f"{on}{'>' if message.write else '<'} {message.data.hex(' ').upper()}".rstrip())
+        names = [name for name, p in model.primitives.items()
+                 if message.connection is None or p.connection == message.connection]
+        found: list[tuple[str, list[tuple[int, str, str]], str | None]] = []  # name, rows, a reply's regex
+        if message.write:
+            written[message.connection] = message.data
+            found = [(f"request {name}", rows, None) for name in names
+                     if (rows := _first(requests[name], message.data)) is not None
+                     and _whole(checks[name][0], message.data, b"")]
+            found.sort(key=lambda one: not _fixed(checks[one[0].removeprefix("request ")][0]))  # broadcast: *_all
+            if found:
+                name = found[0][0].removeprefix("request ")
+                asked[message.connection] = name
+                carried[message.connection] = _fields_of(checks[name][0], message.data)
+            else:
+                asked.pop(message.connection, None)
+        else:
+            before = asked.get(message.connection)
+            ordered = ([before] if before in names else []) + [name for name in names if name != before]
+            request = written.get(message.connection, b"")
+            found = [(f"{said} of {name}", rows, pattern if isinstance(pattern, str) else None)
+                     for name in ordered for said, (table, pattern) in replies[name]
+                     if (rows := matched((table, pattern), message.data)) is not None
+                     and _whole(checks[name][1], message.data, request,
+                                carried.get(message.connection) if name == before else None)]
+            if found and found[0][0].endswith(f" of {before}"):  # the request's own reply: no other is meant
+                found = found[:1]
+            elif before in names:  # its shape, but not its request's fields (another servo's status)
+                for said, (table, pattern) in replies[before]:
+                    rows = matched((table, pattern), message.data)
+                    if rows is not None and _whole(checks[before][1], message.data, request):
+                        wrong = _misread(checks[before][1], message.data, request, carried.get(message.connection))
+                        found = [(f"{said} of {before}, but {wrong}", rows, None)]
+                        break
+        if not found:
+            side = "request" if message.write else "reply"
+            lines.append(f"  unknown: no primitive's {side} is these {len(message.data)} bytes")
+            continue
+        said, rows, regex = found[0]
+        others = list(dict.fromkeys(other.rsplit(" ", 1)[-1] for other, _, _ in found[1:]))
+        also = f" (also fits: {', '.join(others)})" if others else ""
+        lines += [f"  {said}{also}", *held_table(rows, message.data)]
+        if regex is not None:  # its groups, as the engine's decoder reads them
+            try:
+                lines.append(f"  out = {list(engine.Match(regex).decode(said, message.data))!r}")
+            except engine.RdisError:
+                pass
+    return "\n".join(lines) + "\n" if lines else ""
+
+
+def _first(layouts: list[Layout], data: bytes) -> list[tuple[int, str, str]] | None:
+    return next((rows for layout in layouts if (rows := matched(layout, data)) is not None), None)
+
+
+class _Whatever:
+    """A frame field's expected value, equal to any: a capture is read without its call's values."""
+
+    __hash__ = None  # type: ignore[assignment]
+
+    def __eq__(self, other: object) -> bool:
+        return True
+
+    def __ne__(self, other: object) -> bool:
+        return False
+
+
+class _Fields:
+    """A frame's field values by index, those not known equal to any."""
+
+    def __init__(self, known: dict[int, int] | None = None) -> None:
+        self.known = known or {}
+
+    def __getitem__(self, index: int) -> int | _Whatever:
+        return self.known.get(index, _Whatever())
+
+
+
+def _fields_of(frames: _Check, data: bytes) -> _Fields:
+    """The field values a request read whole by one of `frames` carries (`dxl`'s ID), by index."""
+    for frame, _ in frames:
+        side = frame.reply
+        payload = len(data) - sum(n for i, n in enumerate(side.sizes) if i != side.payload)
+        if side.group or payload < 0:  # optional parts: where each field stands is not one sum
+            continue
+        known, at = {}, 0
+        for i, (part, size) in enumerate(zip(side.parts, side.sizes)):
+            size = payload if i == side.payload else size
+            if isinstance(part, Field):
+                known[part.index] = part.struct.unpack(data[at : at + size])[0]
+            at += size
+        return _Fields(known)
+    return _Fields()
+
+
+class _Bytes:
+    """A message as a port the frame reads it from."""
+
+    timeout: float | None = 0.0
+
+    def __init__(self, data: bytes) -> None:
+        self.data, self.at = data, 0
+
+    def read(self, size: int = 1, /) -> bytes:
+        chunk = self.data[self.at : self.at + size]
+        self.at += len(chunk)
+        return chunk
+
+    def read_until(self, expected: bytes = b"\n", size: int | None = None, /) -> bytes:
+        end = self.data.find(expected, self.at) if expected else -1
+        stop = len(self.data) if end < 0 else end + len(expected)
+        return self.read(stop - self.at if size is None else min(size, stop - self.at))
+
+
+_Check = tuple[tuple[engine.Frame, Any], ...]  # a frame that reads the message, the fields it must carry
+
+
+def _checks(model: m.Model, device: engine.Device, name: str) -> tuple[_Check, _Check]:
+    """The engine's frames that read a request of `name` (one per layout) and its reply, as a
+    device and the host read them; none where a message has no frame of its own to check
+    (unframed, or a reply through another frame)."""
+    use = device.primitives[name].frame
+    p = model.primitives[name]
+    if use is None or p.frame is None:
+        return (), ()
+    frame = use.frame
+    fields: Any = _Fields()
+    if all(isinstance(arg, m.Const) for arg in p.frame.args):  # `dxl(BROADCAST)`: the fields are known
+        try:
+            fields = frame.values(name, use.args(device.state, [None] * len(p.params)))
+        except (engine.RdisError, *engine.EVAL_ERRORS):
+            pass
+    requests = tuple((engine.Frame(frame.name, side.parts, side.parts), fields) for side in frame.requests)
+    framed = frame.reply.parts and not p.reply_frames and not p.listed
+    return requests, ((frame, fields),) if framed else ()
+
+
+def _fixed(frames: _Check) -> bool:
+    """Whether the frame's fields are constants (`dxl(BROADCAST)`): such a primitive is named before
+    one whose fields are its parameters' and that the same bytes fit too."""
+    return bool(frames) and not isinstance(frames[0][1], _Fields)
+
+
+def _whole(frames: _Check, data: bytes, request: bytes, carried: _Fields | None = None) -> bool:
+    """Whether one of `frames` reads `data` whole, its constants, fields (those `carried` by its
+    request, if given), length and checksum right (no frames: nothing to check)."""
+    return _misread(frames, data, request, carried) is None
+
+
+def _misread(frames: _Check, data: bytes, request: bytes, carried: _Fields | None = None) -> str | None:
+    """`_whole`'s answer: None, or what the engine's frame found wrong (the last layout's)."""
+    wrong = None
+    for frame, own in frames:
+        fields: Any = carried if carried is not None and isinstance(own, _Fields) else own
+        side = frame.reply
+        size = len(data) - sum(n for i, n in enumerate(side.sizes) if i != side.payload)
+        port = _Bytes(data)
+        try:
+            raw, _ = frame.read(port, fields, request, size)
+        except (FrameError, engine.RdisError, struct.error, ValueError, IndexError, TypeError) as err:
+            wrong = str(err)
+            continue
+        if raw == data and port.at == len(data):
+            return None
+        wrong = f"{frame.name}: {len(data) - port.at} bytes after the frame"
+    return wrong

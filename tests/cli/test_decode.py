@@ -1,0 +1,236 @@
+"""`rdisc decode FILE [CAPTURE]`: captured traffic told as the description's requests and
+replies, field by field: hex lines, a pyserial spy:// hex dump (made by pyserial's own
+formatter) and an rdisc recording. Bytes that fit nothing, or whose checksum is wrong, are shown
+as unknown; a capture that cannot be read is refused in one line, exit 2, never a traceback."""
+
+from __future__ import annotations
+
+import io
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+from conftest import cli_env
+from mcap_ros2.writer import Writer
+from serial.urlhandler.protocol_spy import FormatHexdump
+
+from rdisc.engine.recording import _BYTES_SCHEMA
+
+EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
+HEAD = "  offset  size  kind                  value                         holds         bytes"
+DRIVE = [
+    "> 89 00 C8 FF FF",
+    "  request drive",
+    HEAD,
+    "       0     1  u8                    89 (137)                      137           89",
+    "       1     2  s16 BE                velocity                      200           00 C8",
+    "       3     2  s16 BE                radius                        -1            FF FF",
+]
+BUMPERS = [
+    "> 8E 07",
+    "  request bumpers",
+    HEAD,
+    "       0     1  u8                    8E (142)                      142           8E",
+    "       1     1  u8                    07 (7)                        7             07",
+    "< 03",
+    "  reply of bumpers",
+    HEAD,
+    "       0     1  u8                    out[0]                        3             03",
+]
+
+
+def decode(rdisc, description: str, capture: Path) -> list[str]:
+    result = rdisc("decode", EXAMPLES / description, capture)
+    assert (result.returncode, result.stderr) == (0, ""), result.stderr
+    return result.stdout.splitlines()
+
+
+def test_hex_lines_of_a_create_session(rdisc, tmp_path: Path) -> None:
+    capture = tmp_path / "create.txt"
+    capture.write_text("# drive, then the bumpers\n> 89 00 c8 ff ff\n>8e07\n< 03\n\n> 12 34  # no such opcode\n")
+    assert decode(rdisc, "create.rdis", capture) == [
+        *DRIVE, *BUMPERS, "> 12 34", "  unknown: no primitive's request is these 2 bytes"]
+
+
+def test_an_ax12_exchange_framed_and_checked(rdisc, tmp_path: Path) -> None:
+    """The manual's WRITE of goal 512 and its status; a READ of the position and its reply; the
+    same reply with its checksum wrong is no reply, and a request with a wrong checksum no request;
+    a broadcast is the broadcasting primitive's."""
+    capture = tmp_path / "ax12.txt"
+    capture.write_text("bus > ff ff 01 05 03 1e 00 02 d6\nbus < ff ff 01 02 00 fc\n"
+                       "> FF FF 01 04 02 24 02 D2\n< ff ff 01 04 00 00 02 f8\n< ff ff 01 04 00 00 02 00\n"
+                       "> FF FF 01 04 02 24 02 D3\n> ff ff fe 02 01 fe\n"
+                       "> FF FF 01 04 02 24 02 D2\n< ff ff 02 04 00 00 02 f7\n")
+    frame = "       0     2  header                FF FF                                       FF FF"
+    field = "       2     1  field id              \"B\" = id                      1             01"
+    checksum = "  checksum              sum inverted as B, over id .. payload                "
+    lines = decode(rdisc, "ax12.rdis", capture)
+    position, reply = lines[18:28], lines[28:37]
+    assert lines == [
+        "bus > FF FF 01 05 03 1E 00 02 D6",
+        "  request goto",
+        HEAD, frame, field,
+        "       3     1  length                \"B\" = payload + 1             5             05",
+        "       4     1  payload u8            03 (3)                        3             03",
+        "       5     1  payload u8            1E (30)                       30            1E",
+        "       6     2  payload u16 LE        goal                          512           00 02",
+        "       8     1" + checksum + "D6",
+        "bus < FF FF 01 02 00 FC",
+        "  reply of goto",
+        HEAD, frame, field,
+        "       3     1  length                \"B\" = payload + 1             2             02",
+        "       4     1  payload u8            out[0]                        0             00",
+        "       5     1" + checksum + "FC",
+        "> FF FF 01 04 02 24 02 D2",
+        "  request read_position",
+        HEAD, frame, field,
+        "       3     1  length                \"B\" = payload + 1             4             04",
+        "       4     1  payload u8            02 (2)                        2             02",
+        "       5     1  payload u8            24 (36)                       36            24",
+        "       6     1  payload u8            02 (2)                        2             02",
+        "       7     1" + checksum + "D2",
+        "< FF FF 01 04 00 00 02 F8",
+        "  reply of read_position",
+        HEAD, frame, field,
+        "       3     1  length                \"B\" = payload + 1             4             04",
+        "       4     1  payload u8            out[0]                        0             00",
+        "       5     2  payload u16 LE        out[1]                        512           00 02",
+        "       7     1" + checksum + "F8",
+        "< FF FF 01 04 00 00 02 00",
+        "  unknown: no primitive's reply is these 8 bytes",
+        "> FF FF 01 04 02 24 02 D3",
+        "  unknown: no primitive's request is these 8 bytes",
+        "> FF FF FE 02 01 FE",  # a broadcast: the primitive whose frame says 254 is named first
+        "  request ping_all (also fits: ping)",
+        HEAD, frame,
+        "       2     1  field id              \"B\" = id                      254           FE",
+        "       3     1  length                \"B\" = payload + 1             2             02",
+        "       4     1  payload u8            01 (1)                        1             01",
+        "       5     1" + checksum + "FE",
+        "> FF FF 01 04 02 24 02 D2",
+        "  request read_position",
+        *position[2:],
+        "< FF FF 02 04 00 00 02 F7",  # servo 2 answers a request to servo 1: the engine's refusal said
+        "  reply of read_position, but dxl: reply id is 2, expected 1",
+        HEAD, frame,
+        "       2     1  field id              \"B\" = id                      2             02",
+        *reply[5:-1],
+        "       7     1" + checksum + "F7",
+    ]
+
+
+def test_a_pyserial_spy_log(rdisc, tmp_path: Path) -> None:
+    """What `spy://PORT?file=LOG` writes, by pyserial's own formatter: control lines skipped, a
+    message of more than 16 bytes joined from its rows."""
+    log = io.StringIO()
+    spy = FormatHexdump(log, False)
+    spy.control("RTS", "active")
+    spy.tx(bytes.fromhex("8900c8ffff"))
+    spy.rx(b"")
+    spy.tx(bytes.fromhex("8e07"))
+    spy.rx(bytes.fromhex("03"))
+    spy.tx(bytes(range(17)))
+    capture = tmp_path / "spy.log"
+    capture.write_text(log.getvalue())
+    assert decode(rdisc, "create.rdis", capture) == [
+        *DRIVE, *BUMPERS, "> " + bytes(range(17)).hex(" ").upper(),
+        "  unknown: no primitive's request is these 17 bytes"]
+
+
+def test_an_rdisc_recording(rdisc, tmp_path: Path) -> None:
+    capture = tmp_path / "create.mcap"
+    with capture.open("wb") as f:
+        writer = Writer(f)
+        writer.add_metadata("rdisc", {"robot": "create", "timeout": "1", "settings": "{}"})
+        schema = writer.register_msgdef("std_msgs/msg/UInt8MultiArray", _BYTES_SCHEMA)
+        for n, (topic, data) in enumerate([("write", "8e07"), ("read", "03")], start=1):
+            writer.write_message(f"/rdisc/btserial/{topic}", schema, {"data": list(bytes.fromhex(data))}, log_time=n)
+        writer.finish()
+    assert decode(rdisc, "create.rdis", capture) == [
+        "btserial " + line if line[0] in "<>" else line for line in BUMPERS]
+
+
+def test_hex_lines_on_stdin() -> None:
+    result = subprocess.run([sys.executable, "-m", "rdisc", "decode", str(EXAMPLES / "create.rdis")],
+                            input="> 8e 07\n< 03\n", env=cli_env(), capture_output=True, text=True, check=False)
+    assert (result.returncode, result.stderr, result.stdout.splitlines()) == (0, "", BUMPERS)
+
+
+@pytest.mark.parametrize(("text", "said"), [
+    ("> 89 0g\n", "{path}:1: not hex bytes (two digits a byte): '89 0g'"),
+    ("> 89 0\n", "{path}:1: not hex bytes (two digits a byte): '89 0'"),
+    ("# fine\n89 00\n", "{path}:2: a message starts with > (host to device) or < (device to host): '89 00'"),
+    ("> " + "00" * 40_000 + "\n", "{path}:1: a line of 80002 characters, more than 65536"),
+    ("000000.000 TX   0000  zz\n", "{path}:1: not a row of pyserial's hex dump: '000000.000 TX   0000  zz'"),
+])
+def test_a_bad_capture_is_one_line_and_exit_2(rdisc, tmp_path: Path, text: str, said: str) -> None:
+    capture = tmp_path / "bad.txt"
+    capture.write_text(text)
+    result = rdisc("decode", EXAMPLES / "create.rdis", capture)
+    assert (result.returncode, result.stdout, result.stderr) == (2, "", "rdisc decode: " + said.format(path=capture) + "\n")
+
+
+def test_too_much_text_binary_a_missing_file_and_not_a_recording(rdisc, tmp_path: Path) -> None:
+    huge, binary, fake = tmp_path / "huge.txt", tmp_path / "bytes.bin", tmp_path / "fake.mcap"
+    huge.write_text(("> 89 00 c8 ff ff\n") * (2**20 + 1))
+    binary.write_bytes(b"\xff\xfe\x00" * 100)
+    fake.write_bytes(b"not mcap")
+    said = {
+        huge: f"{huge}: more than 16 MiB of text",
+        binary: f"{binary}: not text (hex lines or a spy log); a recording ends in .mcap",
+        tmp_path / "missing.txt": f"{tmp_path / 'missing.txt'}: No such file or directory",
+    }
+    for path, line in said.items():
+        result = rdisc("decode", EXAMPLES / "create.rdis", path)
+        assert (result.returncode, result.stdout, result.stderr) == (2, "", f"rdisc decode: {line}\n")
+    result = rdisc("decode", EXAMPLES / "create.rdis", fake)
+    assert (result.returncode, result.stdout) == (2, "")
+    assert result.stderr.startswith(f"rdisc decode: {fake}: not a readable recording") and result.stderr.count("\n") == 1
+
+
+def test_text_requests_by_their_format_and_replies_by_their_regex(rdisc, tmp_path: Path) -> None:
+    capture = tmp_path / "koala.txt"
+    capture.write_text("> 45 0a\n< 65 2c 31 2c 32 0d 0a\n> 47 0a\n")
+    assert decode(rdisc, "koala.rdis", capture) == [
+        "> 45 0A",
+        "  request read_speed",
+        HEAD,
+        '       0     2  text                  "E\\n"                         "E\\n"         45 0A',
+        "< 65 2C 31 2C 32 0D 0A",
+        "  reply of read_speed",
+        HEAD,
+        '       0     7  text                  regex r"^e,(-?\\d+),(-?\\d+)\\s*$"  "e,1,2\\r\\n"   65 2C 31 2C 32 0D 0A',
+        "  out = ['1', '2']",
+        "> 47 0A",  # `G,{},{}\n` wants its commas
+        "  unknown: no primitive's request is these 2 bytes",
+    ]
+
+
+def test_every_example_reads_random_bytes_without_a_traceback(tmp_path: Path) -> None:
+    """Bytes of every length up to 300, random and cut from the examples' own headers, through
+    every example: each message is named or unknown, in process, never an exception."""
+    import random
+
+    from rdisc.capture import Message
+    from rdisc.emit.decode import decode as decoded
+    from rdisc.runtime.device import load
+
+    chance = random.Random(23)
+    for path in sorted(EXAMPLES.glob("*.rdis")):
+        description = load(path)
+        messages = [Message(chance.random() < 0.5, (b"\xff\xff" if n % 3 == 0 else b"")
+                            + bytes(chance.randrange(256) for _ in range(chance.randrange(300))))
+                    for n in range(60)]
+        text = decoded(description.model, description.device, messages)
+        assert text.count("\n  request ") + text.count("\n  reply") + text.count("\n  unknown: ") >= 60, path
+
+
+def test_a_capture_of_too_many_messages_is_refused(rdisc, tmp_path: Path, monkeypatch) -> None:
+    from rdisc import capture as capture_module
+
+    monkeypatch.setattr(capture_module, "MAX_MESSAGES", 3)
+    capture = tmp_path / "long.txt"
+    capture.write_text("> 8e 07\n< 03\n" * 2)
+    result = rdisc("decode", EXAMPLES / "create.rdis", capture)
+    assert (result.returncode, result.stdout, result.stderr) == (2, "", f"rdisc decode: {capture}: 4 messages, more than 3\n")
