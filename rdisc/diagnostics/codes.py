@@ -300,9 +300,10 @@ one payload, a header comes first and a terminator last, and constant bytes are
     ("E502", "checksum", """
 A checksum names its algorithm: "sum", "xor", "lrc" (the two's complement of the
 sum, Modbus ASCII's), "fletcher8" (UBX's CK_A, CK_B: 16 bits, CK_A the low byte),
-"crc" with its `poly` (and `init`, `xorout`, `reflect`, `width`), or a catalogue
-CRC such as "crc8", "crc7-mmc", "crc16-xmodem", "crc16-modbus", "crc24-lte-a"
-(RTCM 3's CRC-24Q), "crc32", "crc64-xz". A sum, an XOR or an LRC is 1 to 32 bits
+"crc" with its `poly` (and `init`, `xorout`, `width`, and `reflect`, or `reflect
+in` or `reflect out` for one way only), or a catalogue CRC such as "crc8",
+"crc7-mmc", "crc16-xmodem", "crc16-modbus", "crc24-lte-a" (RTCM 3's CRC-24Q),
+"crc32", "crc64-xz". A sum, an XOR or an LRC is 1 to 32 bits
 wide, a CRC 1 to 64, and a CRC's `poly`, `init` and `xorout` fit its width (the
 polynomial without its top bit, as the CRC catalogue writes it: 0x864CFB, not
 0x1864CFB). The width must fit the struct format, which holds one unsigned

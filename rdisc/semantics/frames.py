@@ -485,7 +485,7 @@ class FrameRules:
             layout = self.integer_format(part.format, "a checksum", d, "E502")
             if layout.slots:
                 size_bits = layout.size * 8
-        crc_only = [w for w in ("poly", "init", "xorout", "reflect") if w in options]
+        crc_only = [w for w in ("poly", "init", "xorout", "reflect", "reflect in", "reflect out") if w in options]
         if key in CATALOGUE:
             width, poly, init, reflect, xorout = CATALOGUE[key]
             for word in crc_only + (["width"] if "width" in options else []):
@@ -508,9 +508,14 @@ class FrameRules:
                                  f"`{word}` {values[word]:#x} does not fit a {width}-bit CRC",
                                  help=("write the polynomial without its top bit, as the catalogue does: "
                                        f"{values[word] & ((1 << width) - 1):#x}") if word == "poly" else None)
-            reflect = "reflect" in options
-            algorithm = m.ChecksumAlgorithm("crc", width, values.get("poly", 0), values.get("init", 0), reflect,
-                                            reflect, values.get("xorout", 0), "inverted" in options,
+            sides = [w for w in ("reflect", "reflect in", "reflect out") if w in options]
+            for word in sides[1:]:
+                d.report("E502", options[word].span, f"`{word}` beside `{sides[0]}`: write `reflect` for both ways, "
+                         "`reflect in` or `reflect out` for one")
+            reflect_in = bool(sides) and sides[0] in ("reflect", "reflect in")
+            reflect_out = bool(sides) and sides[0] in ("reflect", "reflect out")
+            algorithm = m.ChecksumAlgorithm("crc", width, values.get("poly", 0), values.get("init", 0), reflect_in,
+                                            reflect_out, values.get("xorout", 0), "inverted" in options,
                                             values.get("mask"), name)
         elif key in SUMS:
             fixed = SUMS[key]

@@ -1,16 +1,19 @@
 """Checksums beyond byte-wide CRCs, sums and XORs, held against published values, in the runtime
 and the generated driver alike: Pololu's CRC-7 (the Motoron guide's own "Set speed" example and
-its C routine), Modbus ASCII's LRC (the two's complement of the sum) and RTCM 3's CRC-24Q
-(pyrtcm's `calc_crc24q`). Their JSON reads back to the same Model.
+its C routine), Modbus ASCII's LRC (the two's complement of the sum), RTCM 3's CRC-24Q
+(pyrtcm's `calc_crc24q`) and a CRC reflected one way only (CRC-12/UMTS, the catalogue's check
+value). Their JSON reads back to the same Model, and `rdisc dump` shows a CRC's parameters.
 """
 
 from __future__ import annotations
 
+import json
 from pathlib import Path
 
 import pytest
 
 from rdisc.engine import Checksum
+from tests.conftest import run_rdisc
 from tests.engine.test_one_engine import ScriptedPort, implementation_of, through_json
 
 DESCRIPTION = """\
@@ -20,12 +23,15 @@ connection link: serial { baud 115200 }
 /// Pololu's CRC-7: x^7 + x^3 + 1, computed least significant bit first (their "0x91").
 frame pololu { payload  checksum "crc" "B" width 7 poly 0x09 reflect }
 frame modbus_lrc { payload  checksum "lrc" "B" }
+/// CRC-12/UMTS: its input unreflected, its output reflected.
+frame umts { payload  checksum "crc" ">H" width 12 poly 0x80F reflect out }
 frame gnss { header "$"  payload  checksum "CRC-24Q" hex  terminator "\\r\\n" }
 primitive set_speed(motor: int in 1..3, value: int in -800..800) on link frame pololu \
 pack "BBBB" (0xD1, motor, value & 0x7F, (value >> 7) & 0x7F)
 primitive read_registers(unit: int in 1..247, first: int in 0..65535, count: int in 1..125) on link \
 frame modbus_lrc pack ">BBHH" (unit, 3, first, count)
 primitive text(line: bytes in 1..60) on link frame gnss pack "*" (line)
+primitive block(data: bytes in 1..20) on link frame umts pack "*" (data)
 primitive echo() on link frame pololu pack "B" (0x9A) unpack "<h" { speed = out[0] }
 """
 
@@ -101,6 +107,29 @@ def test_crc24q_is_pyrtcms(kind: str, tmp_path: Path) -> None:
     assert helpers.calc_crc24q(b"123456789") == 0xCDE703  # the catalogue's check value
 
 
+@pytest.mark.parametrize("kind", ["runtime", "driver"])
+def test_a_crc_reflected_out_only_gives_the_catalogues_check_value(kind: str, tmp_path: Path) -> None:
+    port = ScriptedPort()
+    with implementation_of(kind, DESCRIPTION, tmp_path, "checks").connect(port, threads=False) as robot:
+        robot.call_primitive("block", b"123456789")
+    assert bytes(port.written) == b"123456789\x0d\xaf"  # CRC-12/UMTS: check=0xdaf
+
+
+def test_dump_shows_a_crcs_parameters(tmp_path: Path) -> None:
+    source = tmp_path / "checks.rdis"
+    source.write_text(DESCRIPTION, encoding="utf-8")
+    shown = run_rdisc("dump", source).stdout
+    assert "checksum              crc width 7 poly 0x9 reflect as B, over payload" in shown
+    assert "checksum              crc width 12 poly 0x80f reflect out as >H, over payload" in shown
+    assert "checksum              lrc as B, over payload" in shown
+
+
 def test_the_json_reads_back_to_the_same_model(tmp_path: Path) -> None:
     _, built = through_json(DESCRIPTION, tmp_path, "checks")
-    assert '"kind": "lrc"' in built and '"checksum": "CRC-24Q"' in built and '"width": 7' in built
+    checks = {frame["name"]: part for frame in json.loads(built)["frames"] for part in frame["request"]
+              if "checksum" in part}
+    assert checks["pololu"] == {"checksum": "crc", "kind": "crc", "width": 7, "poly": 9, "init": 0, "reflectIn": True,
+                                "reflectOut": True, "xorOut": 0, "format": "B", "covers": [0, 0]}
+    assert (checks["umts"]["reflectIn"], checks["umts"]["reflectOut"]) == (False, True)
+    assert checks["modbus_lrc"] == {"checksum": "lrc", "kind": "lrc", "width": 8, "format": "B", "covers": [0, 0]}
+    assert checks["gnss"]["checksum"] == "CRC-24Q" and checks["gnss"]["width"] == 24

@@ -30,6 +30,7 @@ def _check(part: str) -> tuple[list[tuple[str, str, str, str | None]], m.Model |
     ('checksum "fletcher8" "<H"', 16),
     ('checksum "lrc" "B"', 8),
     ('checksum "twos-complement" ">H"', 16),
+    ('checksum "crc" ">H" width 12 poly 0x80F reflect out', 12),
 ])
 def test_widths_beside_8_16_and_32_are_accepted(part: str, width: int) -> None:
     found, model = _check(part)
@@ -55,12 +56,25 @@ def test_widths_beside_8_16_and_32_are_accepted(part: str, width: int) -> None:
         ("E502", "width 8", "a fletcher8 is 16 bits wide: it takes no `width`", None)]),
     ('checksum "lrc" "B" poly 7', [
         ("E502", "poly 7", "`poly` belongs to a CRC, not to a lrc", None)]),
+    ('checksum "crc" ">H" width 12 poly 0x80F reflect reflect in', [
+        ("E502", "reflect in", ("`reflect in` beside `reflect`: write `reflect` for both ways, `reflect in` or "
+                                "`reflect out` for one"), None)]),
     ('checksum "crc24-lte-a" "B"', [
         ("E502", '"B"', 'a 24-bit checksum does not fit "B" (8 bits)', None)]),
 ])
 def test_a_bad_width_or_parameter_is_e502_at_its_words(part: str, expected: list[tuple[str, str, str, str | None]],
                                                         ) -> None:
     assert _check(part)[0] == expected
+
+
+@pytest.mark.parametrize(("words", "ways"), [("reflect", (True, True)), ("reflect in", (True, False)),
+                                              ("reflect out", (False, True)), ("", (False, False))])
+def test_reflect_names_the_ways_it_reflects(words: str, ways: tuple[bool, bool]) -> None:
+    found, model = _check(f'checksum "crc" ">H" width 12 poly 0x80F {words}')
+    assert found == [] and model is not None
+    check = model.frames["f"].request[-1]
+    assert isinstance(check, m.FrameChecksum)
+    assert (check.algorithm.reflect_in, check.algorithm.reflect_out) == ways
 
 
 def test_e502_explains_the_rules_the_checker_applies() -> None:
