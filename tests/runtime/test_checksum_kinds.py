@@ -12,7 +12,10 @@ from pathlib import Path
 
 import pytest
 
+from rdisc.diagnostics import Diagnostics
 from rdisc.engine import Checksum
+from rdisc.syntax.parse import parse
+from rdisc.syntax.printer import print_module
 from tests.conftest import run_rdisc
 from tests.engine.test_one_engine import ScriptedPort, implementation_of, through_json
 
@@ -133,3 +136,12 @@ def test_the_json_reads_back_to_the_same_model(tmp_path: Path) -> None:
     assert (checks["umts"]["reflectIn"], checks["umts"]["reflectOut"]) == (False, True)
     assert checks["modbus_lrc"] == {"checksum": "lrc", "kind": "lrc", "width": 8, "format": "B", "covers": [0, 0]}
     assert checks["gnss"]["checksum"] == "CRC-24Q" and checks["gnss"]["width"] == 24
+
+
+def test_the_printer_writes_the_checksums_back() -> None:
+    module = parse("checks.rdis", DESCRIPTION, Diagnostics())
+    printed = print_module(module)
+    for words in ('checksum "crc" "B" width 7 poly 9 reflect', 'checksum "lrc" "B"',
+                  'checksum "crc" ">H" width 12 poly 2063 reflect out', 'checksum "CRC-24Q" hex'):  # numbers in decimal
+        assert words in printed
+    assert parse("checks.rdis", printed, Diagnostics()) == module
