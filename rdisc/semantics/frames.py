@@ -46,6 +46,7 @@ CATALOGUE: dict[str, tuple[int, int, int, bool, int]] = {
     "crc32-mpeg-2": (32, 0x04C11DB7, 0xFFFFFFFF, False, 0x00000000),
     "crc32-posix": (32, 0x04C11DB7, 0x00000000, False, 0xFFFFFFFF),
     "crc32-jamcrc": (32, 0x04C11DB7, 0xFFFFFFFF, True, 0x00000000),
+    "crc16-mcrf4xx": (16, 0x1021, 0xFFFF, True, 0x0000),  # MAVLink's "X.25" CRC
     "crc3-gsm": (3, 0x3, 0x0, False, 0x7),
     "crc4-g-704": (4, 0x3, 0x0, True, 0x0),
     "crc5-usb": (5, 0x05, 0x1F, True, 0x1F),
