@@ -706,14 +706,15 @@ class _Importer:
         if name is None or fmt is None:
             return None
         options: list[ast.ChecksumOption] = []
+        given = m.get("inverted")
+        if isinstance(given, JBool) and given.value:
+            options.append(ast.ChecksumOption("inverted", span=given.span))
         # `reflect` is written only for a CRC given by its parameters: a catalogue CRC fixes its own
-        flags = [("inverted", "inverted")]
         if name.value.lower() in ("crc", "sum", "xor"):
-            flags.append(("reflectIn", "reflect"))
-        for flag, word in flags:
-            given = m.get(flag)
-            if isinstance(given, JBool) and given.value:
-                options.append(ast.ChecksumOption(word, span=given.span))
+            ways = [isinstance(way, JBool) and way.value for way in (m.get("reflectIn"), m.get("reflectOut"))]
+            if any(ways):
+                word = "reflect" if all(ways) else ("reflect in" if ways[0] else "reflect out")
+                options.append(ast.ChecksumOption(word, span=m["reflectIn" if ways[0] else "reflectOut"].span))
         settings = ("mask", "width", "poly", "init", "xorOut") if name.value.lower() == "crc" else ("mask",)
         for key in settings:
             if isinstance(m.get(key), JNumber):

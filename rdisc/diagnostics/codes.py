@@ -298,13 +298,17 @@ both directions or a `request { }` and a `reply { }`. A request frame has exactl
 one payload, a header comes first and a terminator last, and constant bytes are
 1 to 64 bytes (characters up to \\xff)."""),
     ("E502", "checksum", """
-A checksum names its algorithm: "sum", "xor", "crc" with its `poly` (and `init`,
-`xorout`, `reflect`), or a catalogue CRC such as "crc8", "crc8-maxim",
-"crc16-xmodem", "crc16-ccitt-false", "crc16-kermit", "crc16-modbus", "crc16-arc",
-"crc16-x25", "crc32", "crc32c". Its width (8, 16 or 32 bits for a CRC) must fit
-its struct format, which holds one unsigned integer, or be written as `hex`
-digits. `over A .. B` names the parts it covers (`request` first covers the
-request as sent, in a reply); they come before the checksum."""),
+A checksum names its algorithm: "sum", "xor", "lrc" (the two's complement of the
+sum, Modbus ASCII's), "fletcher8" (UBX's CK_A, CK_B: 16 bits, CK_A the low byte),
+"crc" with its `poly` (and `init`, `xorout`, `width`, and `reflect`, or `reflect
+in` or `reflect out` for one way only), or a catalogue CRC such as "crc8",
+"crc7-mmc", "crc16-xmodem", "crc16-modbus", "crc24-lte-a" (RTCM 3's CRC-24Q),
+"crc32", "crc64-xz". A sum, an XOR or an LRC is 1 to 32 bits
+wide, a CRC 1 to 64, and a CRC's `poly`, `init` and `xorout` fit its width (the
+polynomial without its top bit, as the CRC catalogue writes it: 0x864CFB, not
+0x1864CFB). The width must fit the struct format, which holds one unsigned
+integer, or be written as `hex` digits. `over A .. B` names the parts it covers
+(`request` first covers the request as sent, in a reply); they come before the checksum."""),
     ("E503", "length-field", """
 A length field holds the payload's size plus a constant, in a struct format of
 one unsigned integer. It must be able to hold the largest payload of every

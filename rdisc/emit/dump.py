@@ -289,10 +289,23 @@ def _layout_rows(parts: tuple[m.FramePart, ...] | None, payload: list[Row], repl
                     size = part.layout.size if part.layout is not None else (a.width + 3) // 4
                     covers = " .. ".join(dict.fromkeys([_name(parts[first]), _name(parts[last])]))
                     covers = ("the request .. " if req else "") + covers
-                    extras = " inverted" if a.inverted else ""
+                    extras = _crc_parameters(a) if a.kind == "crc" and a.name.strip().lower() == "crc" else ""
+                    extras += " inverted" if a.inverted else ""
                     extras += f" mask {a.mask:#x}" if a.mask is not None else ""
                     rows.append((size, "checksum", f"{a.name}{extras} as {fmt or 'hex'}, over {covers}"))
     return rows, optional
+
+
+def _crc_parameters(a: m.ChecksumAlgorithm) -> str:
+    """A CRC given by its parameters, as written: the catalogue's names say the rest themselves."""
+    words = f" width {a.width} poly {a.poly:#x}"
+    words += f" init {a.init:#x}" if a.init else ""
+    words += f" xorout {a.xorout:#x}" if a.xorout else ""
+    if a.reflect_in and a.reflect_out:
+        words += " reflect"
+    elif a.reflect_in or a.reflect_out:
+        words += " reflect in" if a.reflect_in else " reflect out"
+    return words
 
 
 def _bit_fields(bits: tuple[m.BitField, ...]) -> str:

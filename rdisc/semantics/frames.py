@@ -46,15 +46,34 @@ CATALOGUE: dict[str, tuple[int, int, int, bool, int]] = {
     "crc32-mpeg-2": (32, 0x04C11DB7, 0xFFFFFFFF, False, 0x00000000),
     "crc32-posix": (32, 0x04C11DB7, 0x00000000, False, 0xFFFFFFFF),
     "crc32-jamcrc": (32, 0x04C11DB7, 0xFFFFFFFF, True, 0x00000000),
+    "crc16-mcrf4xx": (16, 0x1021, 0xFFFF, True, 0x0000),  # MAVLink's "X.25" CRC
+    "crc3-gsm": (3, 0x3, 0x0, False, 0x7),
+    "crc4-g-704": (4, 0x3, 0x0, True, 0x0),
+    "crc5-usb": (5, 0x05, 0x1F, True, 0x1F),
+    "crc7-mmc": (7, 0x09, 0x00, False, 0x00),
+    "crc7-rohc": (7, 0x4F, 0x7F, True, 0x00),
+    "crc7-umts": (7, 0x45, 0x00, False, 0x00),
+    "crc10-atm": (10, 0x233, 0x000, False, 0x000),
+    "crc12-dect": (12, 0x80F, 0x000, False, 0x000),
+    "crc15-can": (15, 0x4599, 0x0000, False, 0x0000),
+    "crc24-lte-a": (24, 0x864CFB, 0x000000, False, 0x000000),
+    "crc24-openpgp": (24, 0x864CFB, 0xB704CE, False, 0x000000),
+    "crc24-ble": (24, 0x00065B, 0x555555, True, 0x000000),
+    "crc64-ecma-182": (64, 0x42F0E1EBA9EA3693, 0x0, False, 0x0),
+    "crc64-xz": (64, 0x42F0E1EBA9EA3693, 0xFFFFFFFFFFFFFFFF, True, 0xFFFFFFFFFFFFFFFF),
 }
 _ALIASES = {
     "crc8-smbus": "crc8", "crc8-maxim-dow": "crc8-maxim", "crc16-ibm-3740": "crc16-ccitt-false",
     "crc16-autosar": "crc16-ccitt-false", "crc16-ccitt": "crc16-kermit", "crc16-ibm-sdlc": "crc16-x25",
     "crc16": "crc16-arc", "crc32-iso-hdlc": "crc32", "crc32-iscsi": "crc32c",
     "crc16-umts": "crc16-buypass", "crc16-verifone": "crc16-buypass", "crc16-maxim-dow": "crc16-maxim",
-    "crc32-cksum": "crc32-posix",
+    "crc32-cksum": "crc32-posix", "crc4-itu": "crc4-g-704", "crc24q": "crc24-lte-a", "crc24": "crc24-openpgp",
+    "crc64": "crc64-ecma-182", "crc64-go-ecma": "crc64-xz", "crc10": "crc10-atm", "crc12-x25": "crc12-dect",
+    "twos-complement": "lrc",
 }
-ALGORITHMS = ("sum", "xor", "crc", *CATALOGUE)
+# Checksums that are no CRC: their kind and fixed width (None: as wide as their format, 1 to 32 bits).
+SUMS: dict[str, int | None] = {"sum": None, "xor": None, "lrc": None, "fletcher8": 16}
+ALGORITHMS = (*SUMS, "crc", *CATALOGUE)
 _PART_WORDS = frozenset(["header", "literal", "terminator", "length", "payload", "request"])
 
 
@@ -467,7 +486,7 @@ class FrameRules:
             layout = self.integer_format(part.format, "a checksum", d, "E502")
             if layout.slots:
                 size_bits = layout.size * 8
-        crc_only = [w for w in ("poly", "init", "xorout", "reflect") if w in options]
+        crc_only = [w for w in ("poly", "init", "xorout", "reflect", "reflect in", "reflect out") if w in options]
         if key in CATALOGUE:
             width, poly, init, reflect, xorout = CATALOGUE[key]
             for word in crc_only + (["width"] if "width" in options else []):
@@ -480,17 +499,31 @@ class FrameRules:
             if "poly" not in values:
                 d.report("E502", part.algorithm.span, 'a "crc" needs its `poly`',
                          help='or name a catalogue CRC, such as "crc16-xmodem"')
-            if width not in (8, 16, 32):
+            if not 1 <= width <= 64:
                 d.report("E502", (options["width"].value or part).span if "width" in options else part.span,
-                         f"a CRC is 8, 16 or 32 bits wide, not {width}")
-            reflect = "reflect" in options
-            algorithm = m.ChecksumAlgorithm("crc", width, values.get("poly", 0), values.get("init", 0), reflect,
-                                            reflect, values.get("xorout", 0), "inverted" in options,
+                         f"a CRC is 1 to 64 bits wide, not {width}")
+            else:
+                for word in ("poly", "init", "xorout"):
+                    if values.get(word, 0) >> width:
+                        d.report("E502", (options[word].value or options[word]).span,
+                                 f"`{word}` {values[word]:#x} does not fit a {width}-bit CRC",
+                                 help=("write the polynomial without its top bit, as the catalogue does: "
+                                       f"{values[word] & ((1 << width) - 1):#x}") if word == "poly" else None)
+            sides = [w for w in ("reflect", "reflect in", "reflect out") if w in options]
+            for word in sides[1:]:
+                d.report("E502", options[word].span, f"`{word}` beside `{sides[0]}`: write `reflect` for both ways, "
+                         "`reflect in` or `reflect out` for one")
+            reflect_in = bool(sides) and sides[0] in ("reflect", "reflect in")
+            reflect_out = bool(sides) and sides[0] in ("reflect", "reflect out")
+            algorithm = m.ChecksumAlgorithm("crc", width, values.get("poly", 0), values.get("init", 0), reflect_in,
+                                            reflect_out, values.get("xorout", 0), "inverted" in options,
                                             values.get("mask"), name)
-        elif key in ("sum", "xor"):
-            for word in crc_only:
-                d.report("E502", options[word].span, f"`{word}` belongs to a CRC, not to a {key}")
-            width = values.get("width", size_bits or 8)
+        elif key in SUMS:
+            fixed = SUMS[key]
+            for word in crc_only + (["width"] if fixed is not None and "width" in options else []):
+                d.report("E502", options[word].span, f"`{word}` belongs to a CRC, not to a {key}"
+                         if word != "width" else f"a {key} is {fixed} bits wide: it takes no `width`")
+            width = fixed or values.get("width", size_bits or 8)
             if not 1 <= width <= 32:
                 d.report("E502", part.span, f"a {key} is 1 to 32 bits wide, not {width}")
             algorithm = m.ChecksumAlgorithm(key, width, inverted="inverted" in options, mask=values.get("mask"),
@@ -583,7 +616,8 @@ def _algorithm_hint(name: str) -> str:
     slips = [k for k in known if _one_slip(name, k)]
     if len(slips) == 1:
         return f"did you mean `{slips[0]}`?"
-    return ('algorithms: "sum", "xor", "crc" (with its parameters: width, poly, init, ...) and the catalogue CRCs: '
+    return ('algorithms: "sum", "xor", "crc" (with its parameters: width, poly, init, ...), "lrc", "fletcher8" '
+            'and the catalogue CRCs: '
             + ", ".join(CATALOGUE))
 
 

@@ -603,7 +603,8 @@ class FramePayload:
 
 @dataclass(frozen=True, slots=True)
 class ChecksumOption:
-    """`inverted`, `reflect`, `mask/poly/init/xorout/width EXPR` or `over A .. B`."""
+    """`inverted`, `reflect` (`reflect in`, `reflect out`: one way only), `mask/poly/init/xorout/width EXPR`
+    or `over A .. B`."""
 
     word: str
     value: Expr | None = None

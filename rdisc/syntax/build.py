@@ -517,7 +517,11 @@ def _transformer_class() -> Callable[[Builder], Transformer[Token, list[ast.Decl
             return ast.ChecksumOption("inverted", span=self.b.span(meta))
 
         def c_reflect(self, meta: Meta, c: list[Any]) -> ast.ChecksumOption:
-            return ast.ChecksumOption("reflect", span=self.b.span(meta))
+            side = c[0] if c and c[0] is not None else None
+            return ast.ChecksumOption("reflect" if side is None else f"reflect {side}", span=self.b.span(meta))
+
+        def reflect_side(self, meta: Meta, c: list[Any]) -> str:
+            return str(c[0])
 
         def c_setting(self, meta: Meta, c: list[Any]) -> ast.ChecksumOption:
             return ast.ChecksumOption(str(c[0]), c[1], span=self.b.span(meta))

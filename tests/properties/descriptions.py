@@ -584,15 +584,20 @@ def _reflect(value: int, width: int) -> int:
     return int(f"{value:0{width}b}"[::-1], 2)
 
 
-def crc(data: bytes, width: int, poly: int, init: int, reflect: bool, xorout: int) -> int:
-    """A CRC bit by bit, as the Rocksoft model defines it (reflected in and out together)."""
-    top, full = 1 << (width - 1), (1 << width) - 1
+def crc(data: bytes, width: int, poly: int, init: int, reflect: bool, xorout: int,
+        reflect_out: bool | None = None) -> int:
+    """A CRC bit by bit, as the Rocksoft model defines it (the output reflected as the input
+    unless `reflect_out` says otherwise), one message bit at a time, so any width from 1 up."""
+    full = (1 << width) - 1
     reg = init
     for byte in data:
-        reg ^= (_reflect(byte, 8) if reflect else byte) << (width - 8)
-        for _ in range(8):
-            reg = ((reg << 1) ^ poly) & full if reg & top else (reg << 1) & full
-    return (_reflect(reg, width) if reflect else reg) ^ xorout
+        for bit in f"{byte:08b}"[::-1] if reflect else f"{byte:08b}":
+            top = reg >> (width - 1) & 1
+            reg = (reg << 1) & full
+            if top ^ int(bit):
+                reg ^= poly
+    reflected = reflect if reflect_out is None else reflect_out
+    return (_reflect(reg, width) if reflected else reg) ^ xorout
 
 
 @dataclass(frozen=True)
@@ -600,7 +605,7 @@ class Checksum:
     """A checksum part: its algorithm as written, parameters, options, and the parts it covers."""
 
     algorithm: str
-    kind: str  # sum | xor | crc
+    kind: str  # sum | xor | lrc | fletcher8 | crc
     width: int
     options: tuple[str, ...]  # as written, `over` excluded
     over: tuple[str, ...]  # the names after `over`, as written
@@ -613,18 +618,27 @@ class Checksum:
     xorout: int = 0
     inverted: bool = False
     mask: int | None = None
+    reflect_out: bool | None = None  # None: as `reflect`
 
     def compute(self, data: bytes) -> int:
         full = (1 << self.width) - 1
         if self.kind == "sum":
             value = sum(data) & full
+        elif self.kind == "lrc":
+            value = -sum(data) & full
+        elif self.kind == "fletcher8":
+            ck_a = ck_b = 0
+            for byte in data:
+                ck_a = (ck_a + byte) % 256
+                ck_b = (ck_b + ck_a) % 256
+            value = ck_a + 256 * ck_b
         elif self.kind == "xor":
             value = 0
             for byte in data:
                 value ^= byte
             value &= full
         else:
-            value = crc(data, self.width, self.poly, self.init, self.reflect, self.xorout)
+            value = crc(data, self.width, self.poly, self.init, self.reflect, self.xorout, self.reflect_out)
         if self.inverted:
             value = ~value & full
         if self.mask is not None:
@@ -857,7 +871,7 @@ def _checksum(draw: Draw, index: int, side: list[Part], names: dict[str, int],
         if first_default > index - 1:
             return None
         first, last = first_default, index - 1
-    kind = draw(st.sampled_from(["sum", "sum", "xor", "crc", "catalogue", "catalogue"]))
+    kind = draw(st.sampled_from(["sum", "sum", "xor", "lrc", "fletcher8", "crc", "catalogue", "catalogue"]))
     hex_digits = sometimes(draw, 5)
     options: list[str] = []
     inverted = sometimes(draw, 4)
@@ -866,22 +880,27 @@ def _checksum(draw: Draw, index: int, side: list[Part], names: dict[str, int],
         name = draw(st.sampled_from(sorted(CATALOGUE)))
         width, poly, init, reflect, xorout = CATALOGUE[name]
         algorithm = SPELLINGS.get(name, name) if sometimes(draw, 4) else name
-        fmt = None if hex_digits else draw(st.sampled_from({8: ["B", ">H"], 16: [">H", "<H", "<I"], 32: [">I", "<I"]}[width]))
+        fmt = None if hex_digits else draw(st.sampled_from(_formats_holding(width)))
         check = Checksum(algorithm, "crc", width, (), (), 0, 0, False, poly, init, reflect, xorout)
     elif kind == "crc":
-        width = draw(st.sampled_from([8, 16, 32]))
-        poly = draw(st.sampled_from([0x07, 0x31, 0x1021, 0x8005, 0x04C11DB7, 0x1D])) & ((1 << width) - 1) or 0x07
+        width = draw(st.sampled_from([8, 16, 32, 3, 7, 12, 24, 64]))
+        poly = draw(st.sampled_from([0x07, 0x31, 0x1021, 0x8005, 0x04C11DB7, 0x1D])) & ((1 << width) - 1) or 0x03
         init = draw(st.sampled_from([0, (1 << width) - 1, 0x1D0F & ((1 << width) - 1)]))
         xorout = draw(st.sampled_from([0, (1 << width) - 1]))
-        reflect = draw(st.booleans())
-        fmt = None if hex_digits else {8: "B", 16: draw(st.sampled_from([">H", "<H"])), 32: draw(st.sampled_from([">I", "<I"]))}[width]
+        reflect, reflect_out = draw(st.booleans()), draw(st.booleans())
+        fmt = None if hex_digits else draw(st.sampled_from(_formats_holding(width)))
         options += [f"poly {poly:#x}"]
         options += [f"init {init:#x}"] if init or draw(st.booleans()) else []
         options += [f"xorout {xorout:#x}"] if xorout else []
-        options += ["reflect"] if reflect else []
+        options += [{(True, True): "reflect", (True, False): "reflect in", (False, True): "reflect out"}[
+            (reflect, reflect_out)]] if reflect or reflect_out else []
         if fmt is None or width != 8 or draw(st.booleans()):
             options.append(f"width {width}")
-        check = Checksum("crc", "crc", width, (), (), 0, 0, False, poly, init, reflect, xorout)
+        check = Checksum("crc", "crc", width, (), (), 0, 0, False, poly, init, reflect, xorout,
+                         reflect_out=reflect_out)
+    elif kind == "fletcher8":
+        fmt = None if hex_digits else draw(st.sampled_from(["<H", ">H", "<I"]))
+        check = Checksum(kind, kind, 16, (), (), 0, 0, False)
     else:
         fmt = None if hex_digits else draw(st.sampled_from(["B", "B", ">H", "<H", ">I"]))
         size_bits = 8 * struct.calcsize(fmt) if fmt else 8
@@ -894,8 +913,13 @@ def _checksum(draw: Draw, index: int, side: list[Part], names: dict[str, int],
     options += [f"mask {mask:#x}"] if mask is not None else []
     order = draw(st.permutations(options))
     check = Checksum(check.algorithm, check.kind, check.width, tuple(order), over, first, last, with_request,
-                     check.poly, check.init, check.reflect, check.xorout, inverted, mask)
+                     check.poly, check.init, check.reflect, check.xorout, inverted, mask, check.reflect_out)
     return Part("checksum", fmt=fmt, check=check)
+
+
+def _formats_holding(width: int) -> list[str]:
+    """The one-integer struct formats a checksum of `width` bits fits."""
+    return [fmt for fmt in ("B", ">H", "<H", ">I", "<I", ">Q", "<Q") if struct.calcsize(fmt) * 8 >= width]
 
 
 def _side(draw: Draw, params: tuple[str, ...], reply_side: bool, payload: bool, shared: bool,

@@ -29,7 +29,10 @@ CHECK_VALUES = {
     "crc32": 0xCBF43926, "crc32c": 0xE3069283, "crc8-rohc": 0xD0, "crc8-cdma2000": 0xDA, "crc8-wcdma": 0x25,
     "crc16-buypass": 0xFEE8, "crc16-dnp": 0xEA82, "crc16-maxim": 0x44C2, "crc16-usb": 0xB4C8,
     "crc16-genibus": 0xD64E, "crc32-bzip2": 0xFC891918, "crc32-mpeg-2": 0x0376E6E7, "crc32-posix": 0x765E7680,
-    "crc32-jamcrc": 0x340BC6D9,
+    "crc32-jamcrc": 0x340BC6D9, "crc16-mcrf4xx": 0x6F91, "crc3-gsm": 0x4, "crc4-g-704": 0x7, "crc5-usb": 0x19, "crc7-mmc": 0x75,
+    "crc7-rohc": 0x53, "crc7-umts": 0x61, "crc10-atm": 0x199, "crc12-dect": 0xF5B, "crc15-can": 0x059E,
+    "crc24-lte-a": 0xCDE703, "crc24-openpgp": 0x21CF02, "crc24-ble": 0xC25A56, "crc64-ecma-182": 0x6C40DF5F0B497347,
+    "crc64-xz": 0x995DC9BBDF1939FA,
 }
 
 
