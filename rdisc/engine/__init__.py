@@ -112,6 +112,7 @@ from rdisc.engine.values import (
     OutputCallback,
     OutputMessage,
     StateValues,
+    TraceCallback,
     Value,
 )
 from rdisc.engine.wire import (
@@ -227,6 +228,7 @@ __all__ = [
     "TaggedReply",
     "TaggedStream",
     "Topic",
+    "TraceCallback",
     "Unbound",
     "Unpack",
     "Value",
