@@ -50,7 +50,7 @@ from rdisc.engine.values import (
     TraceCallback,
     Value,
 )
-from rdisc.engine.wire import FrameError, Incoming
+from rdisc.engine.wire import ChecksumError, FrameError, Incoming
 
 _log = logging.getLogger("rdisc")
 
@@ -292,16 +292,31 @@ class Exchange:
     def _framed(self, plan: Primitive, use: FrameUse | None, reader: Incoming, fields: list[Any], request: bytes,
                 wait: float, skip: bool, size: int, taken: Callable[[bytes], list[_ReplyPart]]) -> list[_ReplyPart]:
         """A reply frame's payload (`size`: its decoding's, or -1), as `taken` reads it: once, or
-        under `skip unmatched` until one is read, within the deadline."""
+        under `skip unmatched` until one is read, within the deadline.
+
+        `skip unmatched` reads past a frame of another device or message (a constant or field
+        not the request's, a tag without an entry, a payload that does not decode or meet the
+        `expect`) and bytes that are no frame; it raises for a frame whose checksum is wrong (this
+        device's reply, corrupted). The next frame is looked for from the byte after the start of
+        the one read past, unless a checksum vouched for it whole. Each is told to the trace."""
         assert use is not None
+        frame = use.frame
         while True:
+            raw = b""
             try:
-                return taken(use.frame.read(reader, fields, request, size)[1])
+                raw, payload = frame.read(reader, fields, request, size)
+                return taken(payload)
             except (FrameError, RdisProtocolError) as err:
                 nothing = isinstance(err, FrameError) and err.timeout
-                if skip and not nothing and reader.deadline is not None and time.monotonic() < reader.deadline:
-                    continue
-                if nothing or skip:
+                if skip and not nothing and not isinstance(err, ChecksumError):
+                    if raw and not frame.vouched:  # bytes that decoded as no reply of this one may hold its start
+                        reader.put_back(raw[1:])
+                    if self._trace_callbacks:
+                        said = str(err) if isinstance(err, RdisProtocolError) else f"{plan.name}: {err}"
+                        self._happened("skip", plan.connection, said.encode("utf-8"))
+                    if reader.deadline is not None and time.monotonic() < reader.deadline:
+                        continue
+                if nothing or (skip and not isinstance(err, ChecksumError)):
                     raise RdisTimeout(f"{plan.name}: no {'matching reply' if skip else 'reply'} "
                                       f"within {wait:g} s") from None
                 if isinstance(err, RdisProtocolError):

@@ -561,6 +561,11 @@ class FrameError(Exception):
         self.timeout = timeout
 
 
+class ChecksumError(FrameError):
+    """A reply frame whose constants and fields are right but whose checksum is wrong: this
+    device's reply, corrupted. An error even under `skip unmatched`, as drivers report it."""
+
+
 class Reader(Protocol):
     timeout: float | None
 
@@ -830,12 +835,14 @@ def _size(part: Part) -> int:
 class Side:
     """The parts of one direction, with their sizes worked out once."""
 
-    __slots__ = ("delimiter", "extra", "group", "header", "length", "marker", "most", "parts", "payload", "prefix",
-                 "sizes", "suffix", "terminator")
+    __slots__ = ("checked", "delimiter", "extra", "group", "header", "length", "marker", "most", "parts", "payload",
+                 "prefix", "sizes", "suffix", "terminator")
 
     def __init__(self, parts: Sequence[Part]) -> None:
         self.parts = tuple(parts)
         self.sizes = tuple(_size(p) for p in self.parts)
+        # the order a reply's parts are checked in: the checksums after every other part
+        self.checked = tuple(sorted(range(len(self.parts)), key=lambda i: isinstance(self.parts[i], Check)))
         self.payload = next((i for i, p in enumerate(self.parts) if isinstance(p, Payload)), -1)
         first = self.parts[0] if self.parts else None
         self.header = first.data if isinstance(first, Bytes) and first.role == "header" else b""
@@ -1918,7 +1925,7 @@ class Frame:
     the values of its fields over its parameters."""
 
     __slots__ = ("escaping", "fields", "headers", "name", "params", "quick", "ranged", "replies", "reply", "requests",
-                 "stuffing")
+                 "stuffing", "vouched")
 
     def __init__(self, name: str, request: Sequence[Part], reply: Sequence[Part], stuffing: Stuffing | None = None,
                  params: tuple[Param, ...] = (), fields: Callable[[Args], list[Any]] | None = None,
@@ -1931,6 +1938,9 @@ class Frame:
         self.replies = tuple(Side(parts) for parts in (reply, *more_replies))
         self.reply = self.replies[0]
         self.headers = tuple(side.header for side in self.replies)  # a reply's layout is known by its header
+        # Every layout of a reply has a checksum: a reply read whole is a frame, every byte of it,
+        # and no other starts inside it (`skip unmatched` reads past it whole, not from its second byte).
+        self.vouched = all(any(isinstance(part, Check) for part in side.parts) for side in self.replies)
         self.stuffing = stuffing
         self.escaping = escaping
         self.params = params
@@ -1997,7 +2007,7 @@ class Frame:
             data += self._sync(port, self.headers)
         self._take(port, data, side.prefix, bool(data))
         if side.payload < 0:
-            return self._check(side, bytes(data), 0, fields, request), b""
+            return self._check(side, bytes(data), 0, fields, request, measured=True), b""
         if side.length >= 0:
             at = sum(side.sizes[: side.length])
             length = side.parts[side.length]
@@ -2006,6 +2016,7 @@ class Frame:
             if not 0 <= size <= MAX_FRAME:
                 raise FrameError(f"{self.name}: length field says {size + length.adjust}, which no payload fits")
         present = True  # the optional parts came
+        measured = size >= 0  # its length was known before its end came: it ran into no other frame
         if size >= 0 and not side.group:
             self._take(port, data, size + side.suffix, bool(data))
         elif size >= 0:  # one byte after the payload tells whether they came
@@ -2026,7 +2037,7 @@ class Frame:
                 size -= side.extra if present else 0
             self._take(port, data, side.suffix - side.extra - len(side.delimiter), True)
         raw = bytes(data)
-        return raw, self._check(side, raw, size, fields, request, present)
+        return raw, self._check(side, raw, size, fields, request, present, measured)
 
     def _read_escaped(self, port: Reader, data: bytearray, fields: Sequence[int],
                       request: bytes) -> tuple[bytes, bytes]:
@@ -2094,9 +2105,12 @@ class Frame:
             raise FrameError(f"{self.name}: short reply, {len(data)} bytes: {bytes(data)!r}")
 
     def _check(self, side: Side, raw: bytes, size: int, fields: Sequence[int], request: bytes,
-               present: bool = True) -> bytes:
+               present: bool = True, measured: bool = False) -> bytes:
         """Every constant, field and checksum of a complete reply (the optional parts when they
-        are `present`); its payload."""
+        are `present`); its payload. The checksums last: a wrong constant or field is another
+        frame, or none (a FrameError); a wrong checksum after them, in a frame whose length was
+        `measured` (a length field, or the decoding's size), is this device's reply corrupted (a
+        ChecksumError). One ended by a delimiter may have run into the next frame: a FrameError."""
         absent = range(0) if present else side.group
         starts: list[int] = []
         at = 0
@@ -2104,7 +2118,8 @@ class Frame:
             starts.append(at)
             at += size if i == side.payload else 0 if i in absent else part_size
         starts.append(at)
-        for i, part in enumerate(side.parts):
+        for i in side.checked:
+            part = side.parts[i]
             if i in absent:
                 continue
             chunk = raw[starts[i] : starts[i + 1]]
@@ -2121,8 +2136,8 @@ class Frame:
                 covered = raw[starts[part.first] : starts[part.last + 1]]
                 expected = part.encode(part.checksum(request + covered if part.with_request else covered))
                 if (chunk if part.struct is not None else chunk.upper()) != expected:
-                    raise FrameError(f"{self.name}: checksum {chunk!r} does not match the reply, "
-                                     f"which sums to {expected!r}")
+                    error = ChecksumError if measured else FrameError
+                    raise error(f"{self.name}: checksum {chunk!r} does not match the reply, which sums to {expected!r}")
         if side.payload < 0:
             return b""
         payload = raw[starts[side.payload] : starts[side.payload + 1]]
@@ -2564,16 +2579,31 @@ class Exchange:
     def _framed(self, plan: Primitive, use: FrameUse | None, reader: Incoming, fields: list[Any], request: bytes,
                 wait: float, skip: bool, size: int, taken: Callable[[bytes], list[_ReplyPart]]) -> list[_ReplyPart]:
         """A reply frame's payload (`size`: its decoding's, or -1), as `taken` reads it: once, or
-        under `skip unmatched` until one is read, within the deadline."""
+        under `skip unmatched` until one is read, within the deadline.
+
+        `skip unmatched` reads past a frame of another device or message (a constant or field
+        not the request's, a tag without an entry, a payload that does not decode or meet the
+        `expect`) and bytes that are no frame; it raises for a frame whose checksum is wrong (this
+        device's reply, corrupted). The next frame is looked for from the byte after the start of
+        the one read past, unless a checksum vouched for it whole. Each is told to the trace."""
         assert use is not None
+        frame = use.frame
         while True:
+            raw = b""
             try:
-                return taken(use.frame.read(reader, fields, request, size)[1])
+                raw, payload = frame.read(reader, fields, request, size)
+                return taken(payload)
             except (FrameError, RdisProtocolError) as err:
                 nothing = isinstance(err, FrameError) and err.timeout
-                if skip and not nothing and reader.deadline is not None and time.monotonic() < reader.deadline:
-                    continue
-                if nothing or skip:
+                if skip and not nothing and not isinstance(err, ChecksumError):
+                    if raw and not frame.vouched:  # bytes that decoded as no reply of this one may hold its start
+                        reader.put_back(raw[1:])
+                    if self._trace_callbacks:
+                        said = str(err) if isinstance(err, RdisProtocolError) else f"{plan.name}: {err}"
+                        self._happened("skip", plan.connection, said.encode("utf-8"))
+                    if reader.deadline is not None and time.monotonic() < reader.deadline:
+                        continue
+                if nothing or (skip and not isinstance(err, ChecksumError)):
                     raise RdisTimeout(f"{plan.name}: no {'matching reply' if skip else 'reply'} "
                                       f"within {wait:g} s") from None
                 if isinstance(err, RdisProtocolError):
