@@ -120,3 +120,16 @@ def test_run_trace_shows_why_a_reply_was_skipped(tmp_path: Path) -> None:
         "link skip listen: summed: reply id is 2, expected 1",
         "link < ff ff 02 02 05 f6 ff ff 01 02 09 f3",
     ]
+
+
+def test_run_trace_stamps_a_request_when_it_was_written(tmp_path: Path) -> None:
+    """`rdisc run --trace` against the late device: the request's line is stamped a reply's delay
+    before the reply's (both used to be stamped when the reply came)."""
+    source = tmp_path / "late.rdis"
+    source.write_text(LATE, encoding="utf-8")
+    with LateDevice() as device:
+        result = run_rdisc("run", str(source), "--port", device.port, "--trace", "--duration", "0.2")
+    assert result.returncode == 0, result.stderr
+    assert untimed(result.stderr)[:2] == ["link > 41", "link < 07"]
+    written, read = (float(line.split()[0]) for line in result.stderr.splitlines()[:2])
+    assert written + DELAY * 0.8 <= read
