@@ -113,6 +113,7 @@ from rdisc.engine.values import (
     OutputCallback,
     OutputMessage,
     StateValues,
+    TraceCallback,
     Value,
 )
 from rdisc.engine.wire import (
@@ -121,6 +122,7 @@ from rdisc.engine.wire import (
     Bits,
     Bytes,
     Check,
+    ChecksumError,
     Escaping,
     Field,
     FrameError,
@@ -166,6 +168,7 @@ __all__ = [
     "Calls",
     "Check",
     "Checksum",
+    "ChecksumError",
     "Connection",
     "Device",
     "ErrorCallback",
@@ -228,6 +231,7 @@ __all__ = [
     "TaggedReply",
     "TaggedStream",
     "Topic",
+    "TraceCallback",
     "Unbound",
     "Unpack",
     "Value",

@@ -94,7 +94,7 @@ def run_command(args: argparse.Namespace, robot: Robot, prog: str, sim: Simulato
     if args.watch:
         robot.on_output(_print_output)
     if args.trace:
-        robot.on_io(lambda direction, connection, data: _print_io(clock() - began, direction, connection, data))
+        robot.on_trace(lambda when, kind, connection, data: _print_io(when - began, kind, connection, data))
     previous = _install_signal_handlers()
     status = EXIT_OK
     try:
@@ -288,13 +288,14 @@ def _print_error(error: BaseException) -> None:
     print(f"rdisc run: {type(error).__name__}: {error}", file=sys.stderr, flush=True)
 
 
-def _print_io(elapsed: float, direction: str, connection: str, data: bytes) -> None:
-    """One --trace line: the seconds since the run began, the connection, then `>` and
-    the bytes written, `<` and the bytes read, or `lines` and the modem lines set."""
-    if direction == "lines":
-        shown = f"lines {data.decode('ascii')}"
+def _print_io(elapsed: float, kind: str, connection: str, data: bytes) -> None:
+    """One --trace line: the seconds since the run began when it happened, the connection, then
+    `>` and the bytes written, `<` and the bytes read, `lines` and the modem lines set, or `skip`
+    and why a reply was read past."""
+    if kind in ("lines", "skip"):
+        shown = f"{kind} {data.decode('utf-8', 'replace')}"
     else:
-        shown = f"{'>' if direction == 'write' else '<'} {data.hex(' ')}"
+        shown = f"{'>' if kind == 'write' else '<'} {data.hex(' ')}"
     print(f"{elapsed:.4f} {connection} {shown}", file=sys.stderr, flush=True)
 
 

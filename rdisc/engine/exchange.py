@@ -9,6 +9,7 @@ import logging
 import struct
 import threading
 import time
+from collections import deque
 from collections.abc import Callable, Mapping, Sequence
 from typing import Any, assert_never
 
@@ -40,8 +41,16 @@ from rdisc.engine.plans import (
     TaggedStream,
 )
 from rdisc.engine.ports import Port, Simulator, _Link, _write_timed_out
-from rdisc.engine.values import Args, ErrorCallback, IoCallback, OutputCallback, OutputMessage, Value
-from rdisc.engine.wire import FrameError, Incoming
+from rdisc.engine.values import (
+    Args,
+    ErrorCallback,
+    IoCallback,
+    OutputCallback,
+    OutputMessage,
+    TraceCallback,
+    Value,
+)
+from rdisc.engine.wire import ChecksumError, FrameError, Incoming
 
 _log = logging.getLogger("rdisc")
 
@@ -64,6 +73,12 @@ class Exchange:
     _output_callbacks: list[OutputCallback]
     _error_callbacks: list[ErrorCallback]
     _io_callbacks: list[IoCallback]
+    _trace_callbacks: list[TraceCallback]
+    # What crossed the wire (and each reply skipped), stamped and queued as it happens, under the
+    # port's lock: the callbacks are shown it in that order, once the port is free (`_show`).
+    _events: deque[tuple[float, str, str, bytes]]
+    _events_lock: threading.Lock
+    _clock: Callable[[], float]
     _run_callbacks: list[Callable[[str, str, str], object]]
     _links: dict[str, _Link]
     # Closing (`Robot.close`): from the moment it begins nothing is written but by the thread that
@@ -76,31 +91,33 @@ class Exchange:
 
     def _write(self, plan: Primitive, request: bytes, levels: dict[str, Value] | None = None) -> None:
         """Under the port's lock set the modem lines, if any, then write a request that has no
-        reply (if the primitive has one); then show the I/O callbacks."""
+        reply (if the primitive has one); then show the callbacks."""
         link = self._links.get(plan.connection)
         if link is None:
             raise RdisConnectionError(f"{plan.connection}: not open")
         port = link.port
         lock = port.lock
+        watched = bool(self._io_callbacks or self._trace_callbacks)
         lock.acquire()  # acquire/release rather than `with`: cheaper, and this is every command's path
         try:
             if self._closed:  # under the lock: a write that got it before the terminate hooks comes before them
                 self._refuse(plan)
             if levels is not None:
                 self._set_lines(plan, port.io, levels)
+                if watched:
+                    self._happened("lines", plan.connection, _lines_text(levels))
             if plan.encoder is not None:
                 port.io.write(request)
+                if watched:
+                    self._happened("write", plan.connection, request)
         except RdisError:
             raise
         except Exception as err:  # whatever the port raises, it failed
             raise self._port_error(plan, err) from err
         finally:
             lock.release()
-        if self._io_callbacks:
-            if levels is not None:
-                self._notify_io("lines", plan.connection, _lines_text(levels))
-            if plan.encoder is not None:
-                self._notify_io("write", plan.connection, request)
+            if watched:
+                self._show()
 
     def _refuse(self, plan: Primitive) -> None:
         """While the robot closes, a write is refused unless the closing thread makes it (its
@@ -148,19 +165,21 @@ class Exchange:
         wait = plan.timeout or self.timeout
         parts: list[_ReplyPart] = []
         failed: BaseException | None = None
-        lines_set = written = False
+        watched = bool(self._io_callbacks or self._trace_callbacks)
         lock.acquire()
         try:
             if self._closed:
                 self._refuse(plan)
             if levels is not None:
                 self._set_lines(plan, io, levels)
-                lines_set = True
+                if watched:
+                    self._happened("lines", plan.connection, _lines_text(levels))
             if request:  # a listener (no request) keeps what has arrived: its reply is the next one
                 io.reset_input_buffer()
                 reader.clear()
                 io.write(request)
-                written = True
+                if watched:
+                    self._happened("write", plan.connection, request)
             if plan.timeout is not None:
                 io.timeout = plan.timeout
             reader.begin(wait)
@@ -172,21 +191,16 @@ class Exchange:
             failed.__cause__ = err
         finally:
             data = reader.end()
+            if data and watched:  # stamped when its last byte came
+                self._happened("read", plan.connection, data)
             if plan.timeout is not None:
                 io.timeout = self.timeout
             lock.release()
-        # I/O callbacks run once the port is free again: one that calls the robot (or
-        # waits for a thread that does) cannot deadlock against this exchange. They see the
-        # exchange's events together: no other thread's write comes between its write and its
-        # reply (a recording would take the reply for that write's).
-        if self._io_callbacks:
-            with self._callback_lock:
-                if lines_set and levels is not None:
-                    self._notify_io("lines", plan.connection, _lines_text(levels))
-                if written:
-                    self._notify_io("write", plan.connection, request)
-                if data:
-                    self._notify_io("read", plan.connection, data)
+        # The callbacks run once the port is free again: one that calls the robot (or waits for a
+        # thread that does) cannot deadlock against this exchange. They see what crossed the wire
+        # in the order it did: no other thread's write comes between this write and its reply.
+        if watched:
+            self._show()
         if failed is not None:
             raise failed
         self._store(parts)
@@ -278,16 +292,31 @@ class Exchange:
     def _framed(self, plan: Primitive, use: FrameUse | None, reader: Incoming, fields: list[Any], request: bytes,
                 wait: float, skip: bool, size: int, taken: Callable[[bytes], list[_ReplyPart]]) -> list[_ReplyPart]:
         """A reply frame's payload (`size`: its decoding's, or -1), as `taken` reads it: once, or
-        under `skip unmatched` until one is read, within the deadline."""
+        under `skip unmatched` until one is read, within the deadline.
+
+        `skip unmatched` reads past a frame of another device or message (a constant or field
+        not the request's, a tag without an entry, a payload that does not decode or meet the
+        `expect`) and bytes that are no frame; it raises for a frame whose checksum is wrong (this
+        device's reply, corrupted). The next frame is looked for from the byte after the start of
+        the one read past, unless a checksum vouched for it whole. Each is told to the trace."""
         assert use is not None
+        frame = use.frame
         while True:
+            raw = b""
             try:
-                return taken(use.frame.read(reader, fields, request, size)[1])
+                raw, payload = frame.read(reader, fields, request, size)
+                return taken(payload)
             except (FrameError, RdisProtocolError) as err:
                 nothing = isinstance(err, FrameError) and err.timeout
-                if skip and not nothing and reader.deadline is not None and time.monotonic() < reader.deadline:
-                    continue
-                if nothing or skip:
+                if skip and not nothing and not isinstance(err, ChecksumError):
+                    if raw and not frame.vouched:  # bytes that decoded as no reply of this one may hold its start
+                        reader.put_back(raw[1:])
+                    if self._trace_callbacks:
+                        said = str(err) if isinstance(err, RdisProtocolError) else f"{plan.name}: {err}"
+                        self._happened("skip", plan.connection, said.encode("utf-8"))
+                    if reader.deadline is not None and time.monotonic() < reader.deadline:
+                        continue
+                if nothing or (skip and not isinstance(err, ChecksumError)):
                     raise RdisTimeout(f"{plan.name}: no {'matching reply' if skip else 'reply'} "
                                       f"within {wait:g} s") from None
                 if isinstance(err, RdisProtocolError):
@@ -327,11 +356,12 @@ class Exchange:
             self._refuse(plan)
         request, _fields, levels = self._request(plan, values, local)
         sim.exchange(plan, local)
-        if self._io_callbacks:
+        if self._io_callbacks or self._trace_callbacks:
             if levels is not None:
-                self._notify_io("lines", plan.connection, _lines_text(levels))
+                self._happened("lines", plan.connection, _lines_text(levels))
             if request:
-                self._notify_io("write", plan.connection, request)
+                self._happened("write", plan.connection, request)
+            self._show()
         self._store(self._given(sim, plan, local))
 
     def _given(self, sim: Simulator, plan: Primitive, local: Args) -> list[_ReplyPart]:
@@ -537,17 +567,36 @@ class Exchange:
                     error.__cause__ = err
                     self._report(error)
 
-    def _notify_io(self, direction: str, connection: str, data: bytes) -> None:
-        """Show the I/O callbacks one event: "write" or "read" and the bytes, or "lines" and
-        the modem lines set (`_lines_text`)."""
+    def _happened(self, kind: str, connection: str, data: bytes) -> None:
+        """An event as it happens, under the port's lock: stamped by the robot's clock and queued
+        in the order of the wire, across threads and connections, for `_show`. "write" or "read"
+        and the bytes, "lines" and the modem lines set (`_lines_text`), "skip" and why a reply
+        was read past."""
+        with self._events_lock:
+            self._events.append((self._clock(), kind, connection, data))
+
+    def _show(self) -> None:
+        """The events queued, in order, to the callbacks, one at a time: the I/O callbacks every
+        one but "skip", the trace callbacks every one with its stamp. A thread shows another's
+        events that came before its own and are not shown yet (so a line never jumps the queue)."""
         with self._callback_lock:
-            for callback in list(self._io_callbacks):
-                try:
-                    callback(direction, connection, data)
-                except Exception as err:  # noqa: BLE001 - a user's callback must not stop the I/O
-                    error = RdisCallbackError(f"{connection}: I/O callback raised {type(err).__name__}: {err}")
-                    error.__cause__ = err
-                    self._report(error)
+            while True:
+                with self._events_lock:
+                    if not self._events:
+                        return
+                    when, kind, connection, data = self._events.popleft()
+                if kind != "skip":
+                    self._notify(self._io_callbacks, connection, kind, connection, data)
+                self._notify(self._trace_callbacks, connection, when, kind, connection, data)
+
+    def _notify(self, callbacks: Sequence[Callable[..., object]], connection: str, *event: Any) -> None:
+        for callback in list(callbacks):
+            try:
+                callback(*event)
+            except Exception as err:  # noqa: BLE001 - a user's callback must not stop the I/O
+                error = RdisCallbackError(f"{connection}: I/O callback raised {type(err).__name__}: {err}")
+                error.__cause__ = err
+                self._report(error)
 
     def _notify_run(self, connection: str, kind: str, name: str) -> None:
         """Tell a recorder that a connection's thread starts a periodic interface or its keepalive."""

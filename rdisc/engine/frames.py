@@ -17,6 +17,7 @@ from rdisc.engine.wire import (
     Bits,
     Bytes,
     Check,
+    ChecksumError,
     Escaping,
     Field,
     FrameError,
@@ -96,7 +97,7 @@ class Frame:
     the values of its fields over its parameters."""
 
     __slots__ = ("escaping", "fields", "headers", "name", "params", "quick", "ranged", "replies", "reply", "requests",
-                 "stuffing")
+                 "stuffing", "vouched")
 
     def __init__(self, name: str, request: Sequence[Part], reply: Sequence[Part], stuffing: Stuffing | None = None,
                  params: tuple[Param, ...] = (), fields: Callable[[Args], list[Any]] | None = None,
@@ -109,6 +110,9 @@ class Frame:
         self.replies = tuple(Side(parts) for parts in (reply, *more_replies))
         self.reply = self.replies[0]
         self.headers = tuple(side.header for side in self.replies)  # a reply's layout is known by its header
+        # Every layout of a reply has a checksum: a reply read whole is a frame, every byte of it,
+        # and no other starts inside it (`skip unmatched` reads past it whole, not from its second byte).
+        self.vouched = all(any(isinstance(part, Check) for part in side.parts) for side in self.replies)
         self.stuffing = stuffing
         self.escaping = escaping
         self.params = params
@@ -175,7 +179,7 @@ class Frame:
             data += self._sync(port, self.headers)
         self._take(port, data, side.prefix, bool(data))
         if side.payload < 0:
-            return self._check(side, bytes(data), 0, fields, request), b""
+            return self._check(side, bytes(data), 0, fields, request, measured=True), b""
         if side.length >= 0:
             at = sum(side.sizes[: side.length])
             length = side.parts[side.length]
@@ -184,6 +188,7 @@ class Frame:
             if not 0 <= size <= MAX_FRAME:
                 raise FrameError(f"{self.name}: length field says {size + length.adjust}, which no payload fits")
         present = True  # the optional parts came
+        measured = size >= 0  # its length was known before its end came: it ran into no other frame
         if size >= 0 and not side.group:
             self._take(port, data, size + side.suffix, bool(data))
         elif size >= 0:  # one byte after the payload tells whether they came
@@ -204,7 +209,7 @@ class Frame:
                 size -= side.extra if present else 0
             self._take(port, data, side.suffix - side.extra - len(side.delimiter), True)
         raw = bytes(data)
-        return raw, self._check(side, raw, size, fields, request, present)
+        return raw, self._check(side, raw, size, fields, request, present, measured)
 
     def _read_escaped(self, port: Reader, data: bytearray, fields: Sequence[int],
                       request: bytes) -> tuple[bytes, bytes]:
@@ -272,9 +277,12 @@ class Frame:
             raise FrameError(f"{self.name}: short reply, {len(data)} bytes: {bytes(data)!r}")
 
     def _check(self, side: Side, raw: bytes, size: int, fields: Sequence[int], request: bytes,
-               present: bool = True) -> bytes:
+               present: bool = True, measured: bool = False) -> bytes:
         """Every constant, field and checksum of a complete reply (the optional parts when they
-        are `present`); its payload."""
+        are `present`); its payload. The checksums last: a wrong constant or field is another
+        frame, or none (a FrameError); a wrong checksum after them, in a frame whose length was
+        `measured` (a length field, or the decoding's size), is this device's reply corrupted (a
+        ChecksumError). One ended by a delimiter may have run into the next frame: a FrameError."""
         absent = range(0) if present else side.group
         starts: list[int] = []
         at = 0
@@ -282,7 +290,8 @@ class Frame:
             starts.append(at)
             at += size if i == side.payload else 0 if i in absent else part_size
         starts.append(at)
-        for i, part in enumerate(side.parts):
+        for i in side.checked:
+            part = side.parts[i]
             if i in absent:
                 continue
             chunk = raw[starts[i] : starts[i + 1]]
@@ -299,8 +308,8 @@ class Frame:
                 covered = raw[starts[part.first] : starts[part.last + 1]]
                 expected = part.encode(part.checksum(request + covered if part.with_request else covered))
                 if (chunk if part.struct is not None else chunk.upper()) != expected:
-                    raise FrameError(f"{self.name}: checksum {chunk!r} does not match the reply, "
-                                     f"which sums to {expected!r}")
+                    error = ChecksumError if measured else FrameError
+                    raise error(f"{self.name}: checksum {chunk!r} does not match the reply, which sums to {expected!r}")
         if side.payload < 0:
             return b""
         payload = raw[starts[side.payload] : starts[side.payload + 1]]

@@ -9,6 +9,7 @@ import math
 import os
 import threading
 import time
+from collections import deque
 from collections.abc import Callable, Iterator, Mapping
 from typing import Any
 
@@ -19,7 +20,15 @@ from rdisc.engine.operations import EVAL_ERRORS
 from rdisc.engine.plans import Device, Hook, Input, Interface, KeyedReply, Primitive
 from rdisc.engine.ports import PortSpec, Simulator, _Link, _open_port, _Port
 from rdisc.engine.schedule import _Worker
-from rdisc.engine.values import Args, ErrorCallback, IoCallback, OutputCallback, StateValues, Value
+from rdisc.engine.values import (
+    Args,
+    ErrorCallback,
+    IoCallback,
+    OutputCallback,
+    StateValues,
+    TraceCallback,
+    Value,
+)
 
 
 class State(Mapping[str, Value]):
@@ -112,6 +121,9 @@ class Robot(Exchange):
         self._read_ns: int | None = None  # when a reply last changed the state
         self._error_callbacks: list[ErrorCallback] = []
         self._io_callbacks: list[IoCallback] = []
+        self._trace_callbacks: list[TraceCallback] = []
+        self._events: deque[tuple[float, str, str, bytes]] = deque()
+        self._events_lock = threading.Lock()
         self._run_callbacks: list[Callable[[str, str, str], object]] = []  # a Recorder's: what a thread runs
         self._links: dict[str, _Link] = {}
         self._workers: list[_Worker] = []
@@ -148,6 +160,16 @@ class Robot(Exchange):
         modem lines a primitive set, before its write."""
         with self._callback_lock:
             self._io_callbacks.append(callback)
+        return callback
+
+    def on_trace(self, callback: TraceCallback) -> TraceCallback:
+        """Call `callback(time, kind, connection, data)` for what an I/O callback sees, stamped
+        when it happened (a request when it was written, a reply when its last byte came), and
+        for each reply `skip unmatched` read past: `kind` "skip", `data` why (UTF-8 text). In
+        the order it happened, across threads; `time` is the robot's clock (`time.monotonic`,
+        or a simulation's time). `rdisc run --trace` prints these."""
+        with self._callback_lock:
+            self._trace_callbacks.append(callback)
         return callback
 
     # ---- what the host can see and call -------------------------------------------------------------

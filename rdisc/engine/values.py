@@ -37,3 +37,7 @@ ErrorCallback = Callable[[BaseException], object]
 IoCallback = Callable[[str, str, bytes], object]
 """`(direction, connection, data)`: "write" or "read" and the bytes, or "lines" and the modem
 lines a primitive set, as ASCII text such as b"dtr=0 rts=1"."""
+TraceCallback = Callable[[float, str, str, bytes], object]
+"""`(time, kind, connection, data)`: what an I/O callback sees, and "skip" with why a reply was
+read past (`skip unmatched`, as UTF-8 text), each stamped when it happened by the robot's clock
+(`time.monotonic`, or a simulation's time)."""

@@ -33,6 +33,11 @@ class FrameError(Exception):
         self.timeout = timeout
 
 
+class ChecksumError(FrameError):
+    """A reply frame whose constants and fields are right but whose checksum is wrong: this
+    device's reply, corrupted. An error even under `skip unmatched`, as drivers report it."""
+
+
 class Reader(Protocol):
     timeout: float | None
 
@@ -302,12 +307,14 @@ def _size(part: Part) -> int:
 class Side:
     """The parts of one direction, with their sizes worked out once."""
 
-    __slots__ = ("delimiter", "extra", "group", "header", "length", "marker", "most", "parts", "payload", "prefix",
-                 "sizes", "suffix", "terminator")
+    __slots__ = ("checked", "delimiter", "extra", "group", "header", "length", "marker", "most", "parts", "payload",
+                 "prefix", "sizes", "suffix", "terminator")
 
     def __init__(self, parts: Sequence[Part]) -> None:
         self.parts = tuple(parts)
         self.sizes = tuple(_size(p) for p in self.parts)
+        # the order a reply's parts are checked in: the checksums after every other part
+        self.checked = tuple(sorted(range(len(self.parts)), key=lambda i: isinstance(self.parts[i], Check)))
         self.payload = next((i for i, p in enumerate(self.parts) if isinstance(p, Payload)), -1)
         first = self.parts[0] if self.parts else None
         self.header = first.data if isinstance(first, Bytes) and first.role == "header" else b""

@@ -34,6 +34,7 @@ import struct
 import sys
 import threading
 import time
+from collections import deque
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from dataclasses import KW_ONLY, dataclass, field
 from typing import Any, NamedTuple, Protocol, assert_never
@@ -450,6 +451,10 @@ ErrorCallback = Callable[[BaseException], object]
 IoCallback = Callable[[str, str, bytes], object]
 """`(direction, connection, data)`: "write" or "read" and the bytes, or "lines" and the modem
 lines a primitive set, as ASCII text such as b"dtr=0 rts=1"."""
+TraceCallback = Callable[[float, str, str, bytes], object]
+"""`(time, kind, connection, data)`: what an I/O callback sees, and "skip" with why a reply was
+read past (`skip unmatched`, as UTF-8 text), each stamped when it happened by the robot's clock
+(`time.monotonic`, or a simulation's time)."""
 
 
 # ---- rdisc engine: checksums (rdisc/engine/checksums.py), sums, XORs and CRCs --------------------
@@ -569,6 +574,11 @@ class FrameError(Exception):
     def __init__(self, message: str, timeout: bool = False) -> None:
         super().__init__(message)
         self.timeout = timeout
+
+
+class ChecksumError(FrameError):
+    """A reply frame whose constants and fields are right but whose checksum is wrong: this
+    device's reply, corrupted. An error even under `skip unmatched`, as drivers report it."""
 
 
 class Reader(Protocol):
@@ -840,12 +850,14 @@ def _size(part: Part) -> int:
 class Side:
     """The parts of one direction, with their sizes worked out once."""
 
-    __slots__ = ("delimiter", "extra", "group", "header", "length", "marker", "most", "parts", "payload", "prefix",
-                 "sizes", "suffix", "terminator")
+    __slots__ = ("checked", "delimiter", "extra", "group", "header", "length", "marker", "most", "parts", "payload",
+                 "prefix", "sizes", "suffix", "terminator")
 
     def __init__(self, parts: Sequence[Part]) -> None:
         self.parts = tuple(parts)
         self.sizes = tuple(_size(p) for p in self.parts)
+        # the order a reply's parts are checked in: the checksums after every other part
+        self.checked = tuple(sorted(range(len(self.parts)), key=lambda i: isinstance(self.parts[i], Check)))
         self.payload = next((i for i, p in enumerate(self.parts) if isinstance(p, Payload)), -1)
         first = self.parts[0] if self.parts else None
         self.header = first.data if isinstance(first, Bytes) and first.role == "header" else b""
@@ -1928,7 +1940,7 @@ class Frame:
     the values of its fields over its parameters."""
 
     __slots__ = ("escaping", "fields", "headers", "name", "params", "quick", "ranged", "replies", "reply", "requests",
-                 "stuffing")
+                 "stuffing", "vouched")
 
     def __init__(self, name: str, request: Sequence[Part], reply: Sequence[Part], stuffing: Stuffing | None = None,
                  params: tuple[Param, ...] = (), fields: Callable[[Args], list[Any]] | None = None,
@@ -1941,6 +1953,9 @@ class Frame:
         self.replies = tuple(Side(parts) for parts in (reply, *more_replies))
         self.reply = self.replies[0]
         self.headers = tuple(side.header for side in self.replies)  # a reply's layout is known by its header
+        # Every layout of a reply has a checksum: a reply read whole is a frame, every byte of it,
+        # and no other starts inside it (`skip unmatched` reads past it whole, not from its second byte).
+        self.vouched = all(any(isinstance(part, Check) for part in side.parts) for side in self.replies)
         self.stuffing = stuffing
         self.escaping = escaping
         self.params = params
@@ -2007,7 +2022,7 @@ class Frame:
             data += self._sync(port, self.headers)
         self._take(port, data, side.prefix, bool(data))
         if side.payload < 0:
-            return self._check(side, bytes(data), 0, fields, request), b""
+            return self._check(side, bytes(data), 0, fields, request, measured=True), b""
         if side.length >= 0:
             at = sum(side.sizes[: side.length])
             length = side.parts[side.length]
@@ -2016,6 +2031,7 @@ class Frame:
             if not 0 <= size <= MAX_FRAME:
                 raise FrameError(f"{self.name}: length field says {size + length.adjust}, which no payload fits")
         present = True  # the optional parts came
+        measured = size >= 0  # its length was known before its end came: it ran into no other frame
         if size >= 0 and not side.group:
             self._take(port, data, size + side.suffix, bool(data))
         elif size >= 0:  # one byte after the payload tells whether they came
@@ -2036,7 +2052,7 @@ class Frame:
                 size -= side.extra if present else 0
             self._take(port, data, side.suffix - side.extra - len(side.delimiter), True)
         raw = bytes(data)
-        return raw, self._check(side, raw, size, fields, request, present)
+        return raw, self._check(side, raw, size, fields, request, present, measured)
 
     def _read_escaped(self, port: Reader, data: bytearray, fields: Sequence[int],
                       request: bytes) -> tuple[bytes, bytes]:
@@ -2104,9 +2120,12 @@ class Frame:
             raise FrameError(f"{self.name}: short reply, {len(data)} bytes: {bytes(data)!r}")
 
     def _check(self, side: Side, raw: bytes, size: int, fields: Sequence[int], request: bytes,
-               present: bool = True) -> bytes:
+               present: bool = True, measured: bool = False) -> bytes:
         """Every constant, field and checksum of a complete reply (the optional parts when they
-        are `present`); its payload."""
+        are `present`); its payload. The checksums last: a wrong constant or field is another
+        frame, or none (a FrameError); a wrong checksum after them, in a frame whose length was
+        `measured` (a length field, or the decoding's size), is this device's reply corrupted (a
+        ChecksumError). One ended by a delimiter may have run into the next frame: a FrameError."""
         absent = range(0) if present else side.group
         starts: list[int] = []
         at = 0
@@ -2114,7 +2133,8 @@ class Frame:
             starts.append(at)
             at += size if i == side.payload else 0 if i in absent else part_size
         starts.append(at)
-        for i, part in enumerate(side.parts):
+        for i in side.checked:
+            part = side.parts[i]
             if i in absent:
                 continue
             chunk = raw[starts[i] : starts[i + 1]]
@@ -2131,8 +2151,8 @@ class Frame:
                 covered = raw[starts[part.first] : starts[part.last + 1]]
                 expected = part.encode(part.checksum(request + covered if part.with_request else covered))
                 if (chunk if part.struct is not None else chunk.upper()) != expected:
-                    raise FrameError(f"{self.name}: checksum {chunk!r} does not match the reply, "
-                                     f"which sums to {expected!r}")
+                    error = ChecksumError if measured else FrameError
+                    raise error(f"{self.name}: checksum {chunk!r} does not match the reply, which sums to {expected!r}")
         if side.payload < 0:
             return b""
         payload = raw[starts[side.payload] : starts[side.payload + 1]]
@@ -2355,6 +2375,12 @@ class Exchange:
     _output_callbacks: list[OutputCallback]
     _error_callbacks: list[ErrorCallback]
     _io_callbacks: list[IoCallback]
+    _trace_callbacks: list[TraceCallback]
+    # What crossed the wire (and each reply skipped), stamped and queued as it happens, under the
+    # port's lock: the callbacks are shown it in that order, once the port is free (`_show`).
+    _events: deque[tuple[float, str, str, bytes]]
+    _events_lock: threading.Lock
+    _clock: Callable[[], float]
     _run_callbacks: list[Callable[[str, str, str], object]]
     _links: dict[str, _Link]
     # Closing (`Robot.close`): from the moment it begins nothing is written but by the thread that
@@ -2367,31 +2393,33 @@ class Exchange:
 
     def _write(self, plan: Primitive, request: bytes, levels: dict[str, Value] | None = None) -> None:
         """Under the port's lock set the modem lines, if any, then write a request that has no
-        reply (if the primitive has one); then show the I/O callbacks."""
+        reply (if the primitive has one); then show the callbacks."""
         link = self._links.get(plan.connection)
         if link is None:
             raise RdisConnectionError(f"{plan.connection}: not open")
         port = link.port
         lock = port.lock
+        watched = bool(self._io_callbacks or self._trace_callbacks)
         lock.acquire()  # acquire/release rather than `with`: cheaper, and this is every command's path
         try:
             if self._closed:  # under the lock: a write that got it before the terminate hooks comes before them
                 self._refuse(plan)
             if levels is not None:
                 self._set_lines(plan, port.io, levels)
+                if watched:
+                    self._happened("lines", plan.connection, _lines_text(levels))
             if plan.encoder is not None:
                 port.io.write(request)
+                if watched:
+                    self._happened("write", plan.connection, request)
         except RdisError:
             raise
         except Exception as err:  # whatever the port raises, it failed
             raise self._port_error(plan, err) from err
         finally:
             lock.release()
-        if self._io_callbacks:
-            if levels is not None:
-                self._notify_io("lines", plan.connection, _lines_text(levels))
-            if plan.encoder is not None:
-                self._notify_io("write", plan.connection, request)
+            if watched:
+                self._show()
 
     def _refuse(self, plan: Primitive) -> None:
         """While the robot closes, a write is refused unless the closing thread makes it (its
@@ -2439,19 +2467,21 @@ class Exchange:
         wait = plan.timeout or self.timeout
         parts: list[_ReplyPart] = []
         failed: BaseException | None = None
-        lines_set = written = False
+        watched = bool(self._io_callbacks or self._trace_callbacks)
         lock.acquire()
         try:
             if self._closed:
                 self._refuse(plan)
             if levels is not None:
                 self._set_lines(plan, io, levels)
-                lines_set = True
+                if watched:
+                    self._happened("lines", plan.connection, _lines_text(levels))
             if request:  # a listener (no request) keeps what has arrived: its reply is the next one
                 io.reset_input_buffer()
                 reader.clear()
                 io.write(request)
-                written = True
+                if watched:
+                    self._happened("write", plan.connection, request)
             if plan.timeout is not None:
                 io.timeout = plan.timeout
             reader.begin(wait)
@@ -2463,21 +2493,16 @@ class Exchange:
             failed.__cause__ = err
         finally:
             data = reader.end()
+            if data and watched:  # stamped when its last byte came
+                self._happened("read", plan.connection, data)
             if plan.timeout is not None:
                 io.timeout = self.timeout
             lock.release()
-        # I/O callbacks run once the port is free again: one that calls the robot (or
-        # waits for a thread that does) cannot deadlock against this exchange. They see the
-        # exchange's events together: no other thread's write comes between its write and its
-        # reply (a recording would take the reply for that write's).
-        if self._io_callbacks:
-            with self._callback_lock:
-                if lines_set and levels is not None:
-                    self._notify_io("lines", plan.connection, _lines_text(levels))
-                if written:
-                    self._notify_io("write", plan.connection, request)
-                if data:
-                    self._notify_io("read", plan.connection, data)
+        # The callbacks run once the port is free again: one that calls the robot (or waits for a
+        # thread that does) cannot deadlock against this exchange. They see what crossed the wire
+        # in the order it did: no other thread's write comes between this write and its reply.
+        if watched:
+            self._show()
         if failed is not None:
             raise failed
         self._store(parts)
@@ -2569,16 +2594,31 @@ class Exchange:
     def _framed(self, plan: Primitive, use: FrameUse | None, reader: Incoming, fields: list[Any], request: bytes,
                 wait: float, skip: bool, size: int, taken: Callable[[bytes], list[_ReplyPart]]) -> list[_ReplyPart]:
         """A reply frame's payload (`size`: its decoding's, or -1), as `taken` reads it: once, or
-        under `skip unmatched` until one is read, within the deadline."""
+        under `skip unmatched` until one is read, within the deadline.
+
+        `skip unmatched` reads past a frame of another device or message (a constant or field
+        not the request's, a tag without an entry, a payload that does not decode or meet the
+        `expect`) and bytes that are no frame; it raises for a frame whose checksum is wrong (this
+        device's reply, corrupted). The next frame is looked for from the byte after the start of
+        the one read past, unless a checksum vouched for it whole. Each is told to the trace."""
         assert use is not None
+        frame = use.frame
         while True:
+            raw = b""
             try:
-                return taken(use.frame.read(reader, fields, request, size)[1])
+                raw, payload = frame.read(reader, fields, request, size)
+                return taken(payload)
             except (FrameError, RdisProtocolError) as err:
                 nothing = isinstance(err, FrameError) and err.timeout
-                if skip and not nothing and reader.deadline is not None and time.monotonic() < reader.deadline:
-                    continue
-                if nothing or skip:
+                if skip and not nothing and not isinstance(err, ChecksumError):
+                    if raw and not frame.vouched:  # bytes that decoded as no reply of this one may hold its start
+                        reader.put_back(raw[1:])
+                    if self._trace_callbacks:
+                        said = str(err) if isinstance(err, RdisProtocolError) else f"{plan.name}: {err}"
+                        self._happened("skip", plan.connection, said.encode("utf-8"))
+                    if reader.deadline is not None and time.monotonic() < reader.deadline:
+                        continue
+                if nothing or (skip and not isinstance(err, ChecksumError)):
                     raise RdisTimeout(f"{plan.name}: no {'matching reply' if skip else 'reply'} "
                                       f"within {wait:g} s") from None
                 if isinstance(err, RdisProtocolError):
@@ -2618,11 +2658,12 @@ class Exchange:
             self._refuse(plan)
         request, _fields, levels = self._request(plan, values, local)
         sim.exchange(plan, local)
-        if self._io_callbacks:
+        if self._io_callbacks or self._trace_callbacks:
             if levels is not None:
-                self._notify_io("lines", plan.connection, _lines_text(levels))
+                self._happened("lines", plan.connection, _lines_text(levels))
             if request:
-                self._notify_io("write", plan.connection, request)
+                self._happened("write", plan.connection, request)
+            self._show()
         self._store(self._given(sim, plan, local))
 
     def _given(self, sim: Simulator, plan: Primitive, local: Args) -> list[_ReplyPart]:
@@ -2828,17 +2869,36 @@ class Exchange:
                     error.__cause__ = err
                     self._report(error)
 
-    def _notify_io(self, direction: str, connection: str, data: bytes) -> None:
-        """Show the I/O callbacks one event: "write" or "read" and the bytes, or "lines" and
-        the modem lines set (`_lines_text`)."""
+    def _happened(self, kind: str, connection: str, data: bytes) -> None:
+        """An event as it happens, under the port's lock: stamped by the robot's clock and queued
+        in the order of the wire, across threads and connections, for `_show`. "write" or "read"
+        and the bytes, "lines" and the modem lines set (`_lines_text`), "skip" and why a reply
+        was read past."""
+        with self._events_lock:
+            self._events.append((self._clock(), kind, connection, data))
+
+    def _show(self) -> None:
+        """The events queued, in order, to the callbacks, one at a time: the I/O callbacks every
+        one but "skip", the trace callbacks every one with its stamp. A thread shows another's
+        events that came before its own and are not shown yet (so a line never jumps the queue)."""
         with self._callback_lock:
-            for callback in list(self._io_callbacks):
-                try:
-                    callback(direction, connection, data)
-                except Exception as err:  # noqa: BLE001 - a user's callback must not stop the I/O
-                    error = RdisCallbackError(f"{connection}: I/O callback raised {type(err).__name__}: {err}")
-                    error.__cause__ = err
-                    self._report(error)
+            while True:
+                with self._events_lock:
+                    if not self._events:
+                        return
+                    when, kind, connection, data = self._events.popleft()
+                if kind != "skip":
+                    self._notify(self._io_callbacks, connection, kind, connection, data)
+                self._notify(self._trace_callbacks, connection, when, kind, connection, data)
+
+    def _notify(self, callbacks: Sequence[Callable[..., object]], connection: str, *event: Any) -> None:
+        for callback in list(callbacks):
+            try:
+                callback(*event)
+            except Exception as err:  # noqa: BLE001 - a user's callback must not stop the I/O
+                error = RdisCallbackError(f"{connection}: I/O callback raised {type(err).__name__}: {err}")
+                error.__cause__ = err
+                self._report(error)
 
     def _notify_run(self, connection: str, kind: str, name: str) -> None:
         """Tell a recorder that a connection's thread starts a periodic interface or its keepalive."""
@@ -2963,6 +3023,9 @@ class Robot(Exchange):
         self._read_ns: int | None = None  # when a reply last changed the state
         self._error_callbacks: list[ErrorCallback] = []
         self._io_callbacks: list[IoCallback] = []
+        self._trace_callbacks: list[TraceCallback] = []
+        self._events: deque[tuple[float, str, str, bytes]] = deque()
+        self._events_lock = threading.Lock()
         self._run_callbacks: list[Callable[[str, str, str], object]] = []  # a Recorder's: what a thread runs
         self._links: dict[str, _Link] = {}
         self._workers: list[_Worker] = []
@@ -2999,6 +3062,16 @@ class Robot(Exchange):
         modem lines a primitive set, before its write."""
         with self._callback_lock:
             self._io_callbacks.append(callback)
+        return callback
+
+    def on_trace(self, callback: TraceCallback) -> TraceCallback:
+        """Call `callback(time, kind, connection, data)` for what an I/O callback sees, stamped
+        when it happened (a request when it was written, a reply when its last byte came), and
+        for each reply `skip unmatched` read past: `kind` "skip", `data` why (UTF-8 text). In
+        the order it happened, across threads; `time` is the robot's clock (`time.monotonic`,
+        or a simulation's time). `rdisc run --trace` prints these."""
+        with self._callback_lock:
+            self._trace_callbacks.append(callback)
         return callback
 
     # ---- what the host can see and call -------------------------------------------------------------
@@ -3737,7 +3810,7 @@ def run_command(args: argparse.Namespace, robot: Robot, prog: str, sim: Simulato
     if args.watch:
         robot.on_output(_print_output)
     if args.trace:
-        robot.on_io(lambda direction, connection, data: _print_io(clock() - began, direction, connection, data))
+        robot.on_trace(lambda when, kind, connection, data: _print_io(when - began, kind, connection, data))
     previous = _install_signal_handlers()
     status = EXIT_OK
     try:
@@ -3931,13 +4004,14 @@ def _print_error(error: BaseException) -> None:
     print(f"rdisc run: {type(error).__name__}: {error}", file=sys.stderr, flush=True)
 
 
-def _print_io(elapsed: float, direction: str, connection: str, data: bytes) -> None:
-    """One --trace line: the seconds since the run began, the connection, then `>` and
-    the bytes written, `<` and the bytes read, or `lines` and the modem lines set."""
-    if direction == "lines":
-        shown = f"lines {data.decode('ascii')}"
+def _print_io(elapsed: float, kind: str, connection: str, data: bytes) -> None:
+    """One --trace line: the seconds since the run began when it happened, the connection, then
+    `>` and the bytes written, `<` and the bytes read, `lines` and the modem lines set, or `skip`
+    and why a reply was read past."""
+    if kind in ("lines", "skip"):
+        shown = f"{kind} {data.decode('utf-8', 'replace')}"
     else:
-        shown = f"{'>' if direction == 'write' else '<'} {data.hex(' ')}"
+        shown = f"{'>' if kind == 'write' else '<'} {data.hex(' ')}"
     print(f"{elapsed:.4f} {connection} {shown}", file=sys.stderr, flush=True)
 
 
