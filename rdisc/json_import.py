@@ -333,7 +333,7 @@ _CONNECTION = (
 _PRIMITIVE = (
     "name", "parameters", "parameterTypes", "parameterRanges", "parameterDefaults", "parameterUnits", "connection",
     "lines", "pack", "format", "formatArgs", "unpack", "regex", "recordsUntil", "frame", "skipUnmatched",
-    "replyTable", "timeout", "replies", "replyFrames", "replyList", "expect", "postActions", "doc",
+    "replyTable", "timeout", "retry", "replies", "replyFrames", "replyList", "expect", "postActions", "doc",
 )  # fmt: skip
 _FRAME = ("name", "parameters", "parameterTypes", "parameterRanges", "parameterDefaults", "parameterUnits",
           "request", "reply", "moreRequests", "moreReplies",
@@ -863,6 +863,10 @@ class _Importer:
             wait = self.expr(m["timeout"], "float")
             if wait is not None:
                 clauses.append(ast.ReplyTimeout(ast.Duration(wait, "ms", wait.span), wait.span))
+        if "retry" in m:
+            count = self.expr(m["retry"], "int")
+            if count is not None:
+                clauses.append(ast.Retry(count, count.span))
         if "replyFrames" in m:
             given = m.get("parameters")
             each = self.reply_frames(m["replyFrames"], {item.value for item in given.items if isinstance(item, JString)}

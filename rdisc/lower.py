@@ -254,6 +254,7 @@ class Primitive:
     actions: Code | None = None
     frame: FrameUse | None = None
     timeout: float | None = None
+    retries: int = 0
     checked: tuple[str, ...] = ()
     expect: Code | None = None
     lines: Code | None = None
@@ -412,6 +413,7 @@ class _Lowering:
         plan = Primitive(
             p.name, p.connection, _params(p.params), values, None if p.encoding is None else encoding(p.encoding),
             frame=self.frame_use(p.frame, p.params), timeout=None if p.timeout_ms is None else p.timeout_ms / 1000.0,
+            retries=p.retries,
             expect=None if p.expect is None else _condition(_OVER_REPLY, local, p.expect), lines=lines,
         )
         plan = self.reply(plan, p, local)

@@ -159,7 +159,10 @@ of its type; a default is a constant, and the parameters after one with a defaul
 have defaults too. A loop's range counts up: `for i in 5..0` is empty. A reply
 count (`replies N`) is a constant int from 2 to 1024, and `replies { ... }` lists 2
 to 1024 replies. Wrong: `replies { unpack "<BBi" }` (one reply: say it with `unpack`
-alone). Right: `replies { unpack "<BBi"  unpack "<BBB" }`."""),
+alone). Right: `replies { unpack "<BBi"  unpack "<BBB" }`. A retry count (`retry N`)
+is a constant int from 1 to 10, of a primitive that writes a request and reads a
+reply: a resend needs both. Wrong: `primitive go() on link pack "B" (1) retry 2`.
+Right: `primitive ping() on link pack "B" (1) unpack "B" retry 2`."""),
     ("E205", "periodic-with-parameters", """
 A periodic interface runs on every tick of its connection's thread, where nobody
 supplies arguments, so it cannot take parameters."""),

@@ -190,6 +190,7 @@ class Primitive:
     actions: Callable[[StateValues, Args, Sequence[Any]], dict[str, Value]] | None = None
     frame: FrameUse | None = None
     timeout: float | None = None  # seconds its reply may take, instead of the robot's
+    retries: int = 0  # resends after a reply that timed out or did not match (`retry N`)
     checked: tuple[str, ...] = ()  # state variables its post-actions may make too wide (checked as they are set)
     request: Request | None = None  # its parameters' values to the bytes, when it is only written (`_sent_at_once`)
     expect: Callable[[StateValues, Args, Sequence[Any]], object] | None = None  # a condition its decoded reply meets

@@ -145,6 +145,7 @@ class _Engine:
         return engine.Primitive(
             p.name, p.connection, built(p.params), self.closure(p.values), built(p.encoder), reply=self.reply(p.reply),
             actions=self.closure(p.actions), frame=None if p.frame is None else self.use(p.frame), timeout=p.timeout,
+            retries=p.retries,
             checked=p.checked, expect=self.closure(p.expect), lines=self.closure(p.lines),
             request=None if p.request is None else self.written(p.request, built(p.params)),
         )

@@ -42,6 +42,7 @@ CONNECTION_KINDS = ("serial", "tcp")
 DEFAULT_BAUD = 9600
 DEFAULT_FREQUENCY_HZ = 10.0
 MAX_TERMINATOR = 8
+MAX_RETRIES = 10  # resends of one request: each may wait a whole timeout
 MAX_TABLE = 4096  # entries of a reply table
 MAX_UNROLLED = 4096  # calls an interface's body makes, its loops written out
 MAX_UNROLLED_ALL = 65_536  # the same for all interfaces: the work loops cause stays bounded
@@ -719,12 +720,37 @@ class _Checker:
                 timeout = None
             elif not replies and not listed and not (frame and self.frames[frame.frame].reply):
                 self.d.report("E204", timeout_clause.span, f"`{name.text}` reads no reply, so it has no timeout")
+        retry = self.once([c for c in decl.clauses if isinstance(c, ast.Retry)], "`retry`", name)
+        replied = bool(replies or listed or (frame and self.frames[frame.frame].reply))
+        writes = encoding is not None and (frame is not None or encoding != m.Format(""))  # `format "" ()` listens
+        retries = self.retries(retry, name, writes, replied) if isinstance(retry, ast.Retry) else 0
         if expect is not None and table is not None:
             self.d.report("E203", expect.span, f"primitive `{name.text}` has a reply table and also `expect`",
                           help="`expect` checks the reply of a primitive with one decoding")
         return m.Primitive(name.text, params, connection, encoding, args, decoding, actions, decl.doc, decl.span,
                            frame, skip is not None, table, timeout, expect, lines, count, reply_frames, records,
-                           listed)
+                           listed, retries)
+
+    def retries(self, clause: ast.Retry, name: ast.Ident, writes: bool, replied: bool) -> int:
+        """`retry N`: resends of a request whose reply timed out or did not match, a constant
+        int from 1 to MAX_RETRIES, of a primitive that writes a request and reads a reply. 0
+        where it is refused."""
+        value = self.setting(clause.count, "a retry count", MAX_RETRIES)
+        if value is None:
+            return 0
+        if not isinstance(value, int) or isinstance(value, bool) or value < 1:
+            self.d.report("E204", clause.count.span,
+                          f"a retry count is a constant int from 1 to {MAX_RETRIES}, not {shown(value)}")
+            return 0
+        if not replied:
+            self.d.report("E204", clause.span, f"`{name.text}` reads no reply, so it has nothing to retry",
+                          help="`retry` resends a request whose reply timed out or did not match")
+            return 0
+        if not writes:
+            self.d.report("E204", clause.span, f"`{name.text}` writes no request, so it has nothing to resend",
+                          help="a primitive that only listens waits for its reply within its `timeout`")
+            return 0
+        return value
 
     def listed_replies(self, clause: ast.ReplyList, decl: ast.PrimitiveDecl, scope: dict[str, tuple[Scope, m.AnyType]],
                        env: Env, encoding: m.Pack | m.Format | None) -> tuple[m.ListedReply, ...]:

@@ -1436,6 +1436,7 @@ def _init_Primitive(
     reply_frames: Any = DEFAULT,
     records: Any = DEFAULT,
     listed: Any = DEFAULT,
+    retries: Any = DEFAULT,
 ) -> None:
     _set(self, "name", name)
     _set(self, "params", params)
@@ -1456,10 +1457,11 @@ def _init_Primitive(
     _set(self, "reply_frames", reply_frames)
     _set(self, "records", records)
     _set(self, "listed", listed)
+    _set(self, "retries", retries)
 
 
 def _repr_Primitive(self: Any) -> str:
-    return f"{self.__class__.__qualname__}(name={self.name!r}, params={self.params!r}, connection={self.connection!r}, encoding={self.encoding!r}, args={self.args!r}, decoding={self.decoding!r}, actions={self.actions!r}, doc={self.doc!r}, frame={self.frame!r}, skip_unmatched={self.skip_unmatched!r}, table={self.table!r}, timeout_ms={self.timeout_ms!r}, expect={self.expect!r}, lines={self.lines!r}, replies={self.replies!r}, reply_frames={self.reply_frames!r}, records={self.records!r}, listed={self.listed!r})"
+    return f"{self.__class__.__qualname__}(name={self.name!r}, params={self.params!r}, connection={self.connection!r}, encoding={self.encoding!r}, args={self.args!r}, decoding={self.decoding!r}, actions={self.actions!r}, doc={self.doc!r}, frame={self.frame!r}, skip_unmatched={self.skip_unmatched!r}, table={self.table!r}, timeout_ms={self.timeout_ms!r}, expect={self.expect!r}, lines={self.lines!r}, replies={self.replies!r}, reply_frames={self.reply_frames!r}, records={self.records!r}, listed={self.listed!r}, retries={self.retries!r})"
 
 
 def _eq_Primitive(self: Any, other: Any) -> Any:
@@ -1483,6 +1485,7 @@ def _eq_Primitive(self: Any, other: Any) -> Any:
             self.reply_frames,
             self.records,
             self.listed,
+            self.retries,
         ) == (
             other.name,
             other.params,
@@ -1502,6 +1505,7 @@ def _eq_Primitive(self: Any, other: Any) -> Any:
             other.reply_frames,
             other.records,
             other.listed,
+            other.retries,
         )
     return NotImplemented
 
@@ -1526,6 +1530,7 @@ def _hash_Primitive(self: Any) -> int:
         self.reply_frames,
         self.records,
         self.listed,
+        self.retries,
     ))
 
 
@@ -2723,6 +2728,7 @@ WRITTEN: dict[str, Written] = {
             ("reply_frames", DEFAULT),
             ("records", DEFAULT),
             ("listed", DEFAULT),
+            ("retries", DEFAULT),
         ),
         {
             "__init__": _init_Primitive,

@@ -894,6 +894,25 @@ def _hash_ReplyTable(self: Any) -> int:
     return hash((self.key, self.entries, self.tag, self.each, self.length))
 
 
+def _init_Retry(self: Any, count: Any, span: Any = DEFAULT) -> None:
+    _set(self, "count", count)
+    _set(self, "span", span)
+
+
+def _repr_Retry(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(count={self.count!r})"
+
+
+def _eq_Retry(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.count,) == (other.count,)
+    return NotImplemented
+
+
+def _hash_Retry(self: Any) -> int:
+    return hash((self.count,))
+
+
 def _init_ReplyTimeout(self: Any, duration: Any, span: Any = DEFAULT) -> None:
     _set(self, "duration", duration)
     _set(self, "span", span)
@@ -2460,6 +2479,10 @@ WRITTEN: dict[str, Written] = {
             "__eq__": _eq_ReplyTable,
             "__hash__": _hash_ReplyTable,
         },
+    ),
+    "Retry": Written(
+        (("count", MISSING), ("span", FieldSpec(None, MISSING, False, False))),
+        {"__init__": _init_Retry, "__repr__": _repr_Retry, "__eq__": _eq_Retry, "__hash__": _hash_Retry},
     ),
     "ReplyTimeout": Written(
         (("duration", MISSING), ("span", FieldSpec(None, MISSING, False, False))),

@@ -396,6 +396,9 @@ def _transformer_class() -> Callable[[Builder], Transformer[Token, list[ast.Decl
         def reply_timeout(self, meta: Meta, c: list[Any]) -> ast.ReplyTimeout:
             return ast.ReplyTimeout(c[0], self.b.span(meta))
 
+        def retry(self, meta: Meta, c: list[ast.Expr]) -> ast.Retry:
+            return ast.Retry(c[0], self.b.span(meta))
+
         def replies(self, meta: Meta, c: list[ast.Expr]) -> ast.Replies:
             return ast.Replies(c[0], self.b.span(meta))
 

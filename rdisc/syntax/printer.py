@@ -344,6 +344,8 @@ def _primitive_clause(c: ast.PrimitiveClause) -> tuple[list[str], bool]:
             return ["skip unmatched"], False
         case ast.ReplyTimeout(duration):
             return [f"timeout {_duration(duration)}"], False
+        case ast.Retry(count):
+            return [f"retry {print_expr(count)}"], False
         case ast.Expect(condition):
             return [f"expect {print_expr(condition)}"], False
         case ast.Replies(over, _, var, high, framed):
