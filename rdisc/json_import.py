@@ -347,7 +347,7 @@ _INTERFACE = (
     "name", "type", "parameters", "parameterTypes", "parameterRanges", "parameterDefaults", "parameterUnits",
     "primitiveCalls", "triggers", "doc",
 )  # fmt: skip
-_CALL = ("name", "arguments", "delay", "priority", "when")
+_CALL = ("name", "arguments", "delay", "priority", "when", "until", "every", "within")
 _ADAPTER = ("name", "ros", "fields", "doc")
 _FIELD = ("name", "type", "unit", "ros", "doc")
 _INPUT = ("name", "adapter", "parameters", "calls", "doc")
@@ -973,7 +973,21 @@ class _Importer:
         when = self.expr(m["when"], "bool") if "when" in m else None
         delays = _present([None if delay is None else ast.Duration(delay, "ms", delay.span)])
         return ast.CallStmt(ast.Call(target, args, obj.span), delays, _present([priority]), obj.span,
-                            _present([when]))
+                            _present([when]), _present([self.poll(obj, m)]))
+
+    def poll(self, obj: JObject, m: Members) -> ast.Poll | None:
+        """`"until"`, `"every"` and `"within"` (ms), together: the call's `until COND every P within T`."""
+        if "until" not in m:
+            return None
+        until = self.expr(m["until"], "bool")
+        every = self.expr(m["every"], "float") if "every" in m else None
+        within = self.expr(m["within"], "float") if "within" in m else None
+        if every is None or within is None:
+            self.d.report("E008", obj.span, "a call with `until` gives `every` and `within` (ms)")
+            return None
+        if until is None:
+            return None
+        return ast.Poll(until, ast.Duration(every, "ms", every.span), ast.Duration(within, "ms", within.span), obj.span)
 
     def adapter(self, obj: JObject) -> ast.AdapterDecl | None:
         m = self.members(obj, "an adapter", _ADAPTER)

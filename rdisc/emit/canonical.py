@@ -280,6 +280,8 @@ def _interface(i: m.Interface) -> JsonObject:
             "delay": _number(c.delay_ms),
             "priority": c.priority,
             **({"when": _embedded(c.when)} if c.when is not None else {}),
+            **({"until": _embedded(c.until), "every": _number(c.every_ms), "within": _number(c.within_ms)}
+               if c.until is not None else {}),
         }
         for c in i.calls
     ]

@@ -278,6 +278,9 @@ class Call:
     delay: float = 0.0  # seconds
     direct: bool = False
     when: Callable[[StateValues, Args], object] | None = None  # the call is made only when this holds
+    until: Callable[[StateValues, Args], object] | None = None  # made again every `every` s until this holds
+    every: float = 0.0
+    within: float = 0.0  # seconds: at most within / every more calls, else an RdisTimeout
 
 
 @dataclass(frozen=True, slots=True)

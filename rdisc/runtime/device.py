@@ -224,7 +224,8 @@ class _Engine:
 
     def call(self, c: plans.Call) -> engine.Call:
         target = self.primitive(c.target) if isinstance(c.target, plans.Primitive) else self.interface(c.target)
-        return engine.Call(target, self.closure(c.args), c.delay, c.direct, self.closure(c.when))
+        return engine.Call(target, self.closure(c.args), c.delay, c.direct, self.closure(c.when),
+                           self.closure(c.until), c.every, c.within)
 
     def input(self, i: plans.Input) -> engine.Input:
         made = engine.Input(i.name, i.adapter, built(i.fields), self.interface(i.interface), self.closure(i.args))

@@ -773,6 +773,9 @@ class PrimitiveCall:
     span: Span | None = _span
     interface: bool = False
     when: Expr | None = None  # made only when this holds, over state and the interface's parameters
+    until: Expr | None = None  # made again every `every_ms` until this holds, at most within_ms / every_ms more times
+    every_ms: float = 0
+    within_ms: float = 0
 
 
 @dataclass(frozen=True, slots=True)

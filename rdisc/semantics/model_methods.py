@@ -1543,6 +1543,9 @@ def _init_PrimitiveCall(
     span: Any = DEFAULT,
     interface: Any = DEFAULT,
     when: Any = DEFAULT,
+    until: Any = DEFAULT,
+    every_ms: Any = DEFAULT,
+    within_ms: Any = DEFAULT,
 ) -> None:
     _set(self, "primitive", primitive)
     _set(self, "args", args)
@@ -1551,10 +1554,13 @@ def _init_PrimitiveCall(
     _set(self, "span", span)
     _set(self, "interface", interface)
     _set(self, "when", when)
+    _set(self, "until", until)
+    _set(self, "every_ms", every_ms)
+    _set(self, "within_ms", within_ms)
 
 
 def _repr_PrimitiveCall(self: Any) -> str:
-    return f"{self.__class__.__qualname__}(primitive={self.primitive!r}, args={self.args!r}, delay_ms={self.delay_ms!r}, priority={self.priority!r}, interface={self.interface!r}, when={self.when!r})"
+    return f"{self.__class__.__qualname__}(primitive={self.primitive!r}, args={self.args!r}, delay_ms={self.delay_ms!r}, priority={self.priority!r}, interface={self.interface!r}, when={self.when!r}, until={self.until!r}, every_ms={self.every_ms!r}, within_ms={self.within_ms!r})"
 
 
 def _eq_PrimitiveCall(self: Any, other: Any) -> Any:
@@ -1566,6 +1572,9 @@ def _eq_PrimitiveCall(self: Any, other: Any) -> Any:
             self.priority,
             self.interface,
             self.when,
+            self.until,
+            self.every_ms,
+            self.within_ms,
         ) == (
             other.primitive,
             other.args,
@@ -1573,12 +1582,25 @@ def _eq_PrimitiveCall(self: Any, other: Any) -> Any:
             other.priority,
             other.interface,
             other.when,
+            other.until,
+            other.every_ms,
+            other.within_ms,
         )
     return NotImplemented
 
 
 def _hash_PrimitiveCall(self: Any) -> int:
-    return hash((self.primitive, self.args, self.delay_ms, self.priority, self.interface, self.when))
+    return hash((
+        self.primitive,
+        self.args,
+        self.delay_ms,
+        self.priority,
+        self.interface,
+        self.when,
+        self.until,
+        self.every_ms,
+        self.within_ms,
+    ))
 
 
 def _init_Interface(
@@ -2746,6 +2768,9 @@ WRITTEN: dict[str, Written] = {
             ("span", FieldSpec(None, MISSING, False, False)),
             ("interface", DEFAULT),
             ("when", DEFAULT),
+            ("until", DEFAULT),
+            ("every_ms", DEFAULT),
+            ("within_ms", DEFAULT),
         ),
         {
             "__init__": _init_PrimitiveCall,

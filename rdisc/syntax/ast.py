@@ -471,6 +471,18 @@ class CallStmt:
     priorities: tuple[Expr, ...]
     span: Span = _span
     conditions: tuple[Expr, ...] = ()  # `when COND`: the call is made only when COND holds
+    polls: tuple[Poll, ...] = ()  # `until COND every P within T`: made again until COND holds
+
+
+@dataclass(frozen=True, slots=True)
+class Poll:
+    """`until COND every P within T`: the call made again every P until COND holds after it,
+    at most T/P more times."""
+
+    condition: Expr
+    every: Duration
+    within: Duration
+    span: Span = _span
 
 
 @dataclass(frozen=True, slots=True)
