@@ -21,13 +21,17 @@ robot mover { author "tests" }
 state moving: bool = False
 state position: int = 0
 connection link: serial { baud 57600 }
-primitive go(goal: int in 0..4095) on link pack "<BH" (0x03, goal)
+primitive go(goal: int) on link pack "<BH" (0x03, goal)
 primitive status() on link pack "B" (0x04) unpack "<?H" { moving = out[0]  position = out[1] }
 /// Move, then ask until the servo has stopped at the goal.
 interface move_to(goal: int in 0..4095) {
     go(goal)
     status() until not moving and position == goal every 10 ms within 30 ms
 }
+/// A write-only call polled too (not one plain write: the poll is in the way).
+interface nudge(goal: int) { go(goal) until moving every 10 ms within 20 ms }
+adapter Goal { goal: int }
+input set_goal: Goal -> nudge(goal)
 """
 
 
@@ -81,6 +85,19 @@ def test_not_within_the_limit_is_a_timeout_saying_how_many_calls(implementation:
         assert str(caught.value) == "move_to: status() did not meet its `until` within 0.03 s (4 calls, every 0.01 s)"
         assert port.writes == [b"\x03\x00\x02"] + [b"\x04"] * 4
         assert robot.state["position"] == 100
+
+
+def test_a_write_only_call_is_polled_too(implementation: Any) -> None:
+    port = ScriptedPort(device=Servo(arrives=1))
+    with implementation.connect(port, threads=False) as robot:
+        with pytest.raises(Exception) as caught:
+            robot.call_interface("nudge", 7)
+        assert str(caught.value) == "nudge: go() did not meet its `until` within 0.02 s (3 calls, every 0.01 s)"
+        assert port.writes == [b"\x03\x07\x00"] * 3
+        with pytest.raises(Exception) as caught:  # an input's one call: not a plain write either
+            robot.call_input("set_goal", goal=8)
+        assert str(caught.value) == "nudge: go() did not meet its `until` within 0.02 s (3 calls, every 0.01 s)"
+        assert port.writes[3:] == [b"\x03\x08\x00"] * 3
 
 
 def test_until_goes_through_json_and_back(tmp_path: Path) -> None:

@@ -1503,14 +1503,14 @@ class Input:
 
 def _written_at_once(interface: Interface) -> Call | None:
     """The interface's one call, when running it is only packing its values and writing them:
-    no delay, range, output, frame, reply, post-action, modem line or string in the way."""
+    no delay, condition, poll, range, output, frame, reply, post-action, modem line or string in the way."""
     if len(interface.calls) != 1 or interface.ranged or interface.outputs:
         return None
     call = interface.calls[0]
     prim = call.target
     if not isinstance(prim, Primitive):
         return None
-    if not call.direct or call.delay or call.when or not _plain(prim.encoder) or not isinstance(prim.reply, NoReply) \
+    if not call.direct or call.delay or call.when or call.until or not _plain(prim.encoder) or not isinstance(prim.reply, NoReply) \
             or prim.frame is not None:
         return None
     return call if prim.actions is None and prim.lines is None and not prim.ranged else None
