@@ -136,3 +136,14 @@ def test_what_the_checker_refuses(tmp_path: Path, option: str, expected: list[tu
                       encoding="utf-8")
     compilation = compile_path(str(source))
     assert [(d.code, d.message) for d in compilation.diagnostics.items] == expected
+
+
+def test_json_with_until_but_no_interval_is_refused(tmp_path: Path) -> None:
+    _, built = through_json(MOVER, tmp_path, "mover")
+    document = json.loads(built)
+    call = next(i for i in document["interfaces"] if i["name"] == "move_to")["primitiveCalls"][1]
+    del call["every"]
+    (tmp_path / "cut.json").write_text(json.dumps(document), encoding="utf-8")
+    compilation = compile_path(str(tmp_path / "cut.json"))
+    assert [(d.code, d.message) for d in compilation.diagnostics.items] == [
+        ("E008", "a call with `until` gives `every` and `within` (ms)")]
