@@ -333,7 +333,7 @@ _CONNECTION = (
 _PRIMITIVE = (
     "name", "parameters", "parameterTypes", "parameterRanges", "parameterDefaults", "parameterUnits", "connection",
     "lines", "pack", "format", "formatArgs", "unpack", "regex", "recordsUntil", "frame", "skipUnmatched",
-    "replyTable", "timeout", "replies", "replyFrames", "replyList", "expect", "postActions", "doc",
+    "replyTable", "timeout", "retry", "replies", "replyFrames", "replyList", "expect", "postActions", "doc",
 )  # fmt: skip
 _FRAME = ("name", "parameters", "parameterTypes", "parameterRanges", "parameterDefaults", "parameterUnits",
           "request", "reply", "moreRequests", "moreReplies",
@@ -347,7 +347,7 @@ _INTERFACE = (
     "name", "type", "parameters", "parameterTypes", "parameterRanges", "parameterDefaults", "parameterUnits",
     "primitiveCalls", "triggers", "doc",
 )  # fmt: skip
-_CALL = ("name", "arguments", "delay", "priority", "when")
+_CALL = ("name", "arguments", "delay", "priority", "when", "until", "every", "within")
 _ADAPTER = ("name", "ros", "fields", "doc")
 _FIELD = ("name", "type", "unit", "ros", "doc")
 _INPUT = ("name", "adapter", "parameters", "calls", "doc")
@@ -864,6 +864,10 @@ class _Importer:
             wait = self.expr(m["timeout"], "float")
             if wait is not None:
                 clauses.append(ast.ReplyTimeout(ast.Duration(wait, "ms", wait.span), wait.span))
+        if "retry" in m:
+            count = self.expr(m["retry"], "int")
+            if count is not None:
+                clauses.append(ast.Retry(count, count.span))
         if "replyFrames" in m:
             given = m.get("parameters")
             each = self.reply_frames(m["replyFrames"], {item.value for item in given.items if isinstance(item, JString)}
@@ -970,7 +974,21 @@ class _Importer:
         when = self.expr(m["when"], "bool") if "when" in m else None
         delays = _present([None if delay is None else ast.Duration(delay, "ms", delay.span)])
         return ast.CallStmt(ast.Call(target, args, obj.span), delays, _present([priority]), obj.span,
-                            _present([when]))
+                            _present([when]), _present([self.poll(obj, m)]))
+
+    def poll(self, obj: JObject, m: Members) -> ast.Poll | None:
+        """`"until"`, `"every"` and `"within"` (ms), together: the call's `until COND every P within T`."""
+        if "until" not in m:
+            return None
+        until = self.expr(m["until"], "bool")
+        every = self.expr(m["every"], "float") if "every" in m else None
+        within = self.expr(m["within"], "float") if "within" in m else None
+        if every is None or within is None:
+            self.d.report("E008", obj.span, "a call with `until` gives `every` and `within` (ms)")
+            return None
+        if until is None:
+            return None
+        return ast.Poll(until, ast.Duration(every, "ms", every.span), ast.Duration(within, "ms", within.span), obj.span)
 
     def adapter(self, obj: JObject) -> ast.AdapterDecl | None:
         m = self.members(obj, "an adapter", _ADAPTER)

@@ -254,6 +254,7 @@ class Primitive:
     actions: Code | None = None
     frame: FrameUse | None = None
     timeout: float | None = None
+    retries: int = 0
     checked: tuple[str, ...] = ()
     expect: Code | None = None
     lines: Code | None = None
@@ -281,6 +282,9 @@ class Call:
     _: KW_ONLY
     direct: bool = False
     when: Code | None = None
+    until: Code | None = None
+    every: float = 0.0
+    within: float = 0.0
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -412,6 +416,7 @@ class _Lowering:
         plan = Primitive(
             p.name, p.connection, _params(p.params), values, None if p.encoding is None else encoding(p.encoding),
             frame=self.frame_use(p.frame, p.params), timeout=None if p.timeout_ms is None else p.timeout_ms / 1000.0,
+            retries=p.retries,
             expect=None if p.expect is None else _condition(_OVER_REPLY, local, p.expect), lines=lines,
         )
         plan = self.reply(plan, p, local)
@@ -481,6 +486,9 @@ class _Lowering:
                 call = self.call(c, iface.params, primitives[c.primitive])
             if c.when is not None:
                 call = dataclasses.replace(call, when=_condition(_OVER_ARGS, iface.params, c.when))
+            if c.until is not None:
+                call = dataclasses.replace(call, until=_condition(_OVER_ARGS, iface.params, c.until),
+                                           every=c.every_ms / 1000.0, within=c.within_ms / 1000.0)
             calls.append(call)
         return Interface(iface.name, _params(iface.params), tuple(calls),
                          outputs=tuple(outputs[o] for o in iface.triggers))
@@ -652,7 +660,8 @@ def _written_at_once(interface: Interface) -> bool:
         return False
     call = interface.calls[0]
     prim = call.target
-    if not isinstance(prim, Primitive) or not call.direct or call.delay or call.when is not None:
+    if not isinstance(prim, Primitive) or not call.direct or call.delay or call.when is not None \
+            or call.until is not None:
         return False
     return (plain(None if prim.encoder is None else prim.encoder.value) and isinstance(prim.reply, NoReply)
             and prim.frame is None

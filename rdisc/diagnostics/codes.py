@@ -159,7 +159,13 @@ of its type; a default is a constant, and the parameters after one with a defaul
 have defaults too. A loop's range counts up: `for i in 5..0` is empty. A reply
 count (`replies N`) is a constant int from 2 to 1024, and `replies { ... }` lists 2
 to 1024 replies. Wrong: `replies { unpack "<BBi" }` (one reply: say it with `unpack`
-alone). Right: `replies { unpack "<BBi"  unpack "<BBB" }`."""),
+alone). Right: `replies { unpack "<BBi"  unpack "<BBB" }`. A retry count (`retry N`)
+is a constant int from 1 to 10, of a primitive that writes a request and reads a
+reply: a resend needs both. Wrong: `primitive go() on link pack "B" (1) retry 2`.
+Right: `primitive ping() on link pack "B" (1) unpack "B" retry 2`. A poll (`until
+COND every P within T` on a call) has an interval P above zero and at most its
+limit T, and makes at most 100000 calls (T / P + 1). Wrong: `status() until done
+every 2 s within 1 s`. Right: `status() until done every 10 ms within 2 s`."""),
     ("E205", "periodic-with-parameters", """
 A periodic interface runs on every tick of its connection's thread, where nobody
 supplies arguments, so it cannot take parameters."""),

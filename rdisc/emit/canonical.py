@@ -168,6 +168,7 @@ def _primitive(x: m.Primitive) -> JsonObject:
                                                  "arguments": [_embedded(a) for a in x.frame.args]}),
         ("skipUnmatched", x.skip_unmatched or None),
         ("timeout", None if x.timeout_ms is None else _number(x.timeout_ms)),
+        ("retry", x.retries or None),
         ("replies", x.replies or None),
         ("replyFrames", [{"name": use.frame, "arguments": [_embedded(a) for a in use.args]}
                          for use in x.reply_frames] or None),
@@ -279,6 +280,8 @@ def _interface(i: m.Interface) -> JsonObject:
             "delay": _number(c.delay_ms),
             "priority": c.priority,
             **({"when": _embedded(c.when)} if c.when is not None else {}),
+            **({"until": _embedded(c.until), "every": _number(c.every_ms), "within": _number(c.within_ms)}
+               if c.until is not None else {}),
         }
         for c in i.calls
     ]

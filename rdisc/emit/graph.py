@@ -134,6 +134,7 @@ def _edges(model: m.Model) -> Iterator[tuple[str, str, str]]:
             label = [f"delay {call.delay_ms:g} ms"] if call.delay_ms else []
             label += [f"priority {call.priority}"] if call.priority else []
             label += ["when ..."] if call.when is not None else []
+            label += ["until ..."] if call.until is not None else []
             yield f"interface:{i.name}", f"{kind}:{call.primitive}", ", ".join(label) or "calls"
         for output in i.triggers:
             yield f"interface:{i.name}", f"output:{output}", "triggers"

@@ -646,11 +646,15 @@ class _Driver:
             said = [f"priority {c.priority}"] if c.priority else []
             said += [f"delay {c.delay_ms:g} ms"] if c.delay_ms else []
             said += ["when ..."] if c.when is not None else []
+            said += [f"until ... every {c.every_ms:g} ms within {c.within_ms:g} ms"] if c.until is not None else []
             self.comment(w, c.span, ", ".join([f"call {'interface ' if c.interface else ''}{c.primitive}", *said]))
             self.code(w, function, call.args)
             if call.when is not None:
                 w.blank(2)
                 self.code(w, f"{function}_when", call.when)
+            if call.until is not None:
+                w.blank(2)
+                self.code(w, f"{function}_until", call.until)
         if plan.calls:
             w.blank(2)
         self.constant(w, self.plan["interface", iface.name], plan)

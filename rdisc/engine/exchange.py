@@ -143,7 +143,8 @@ class Exchange:
 
     def _exchange(self, plan: Primitive, values: Args, local: Args) -> None:
         """Encode and frame the request; under the port's lock write it and read the reply;
-        then show the I/O callbacks every byte written and read, and run the post-actions.
+        then show the I/O callbacks every byte written and read, and run the post-actions. After
+        a timeout or a reply that does not match, the same request again, `retry N` more times.
 
         `local` is the primitive's parameters' values (a direct call passes its values)."""
         if self._sim is not None:
@@ -155,6 +156,21 @@ class Exchange:
             if plan.actions is not None:
                 self._assign(plan, local, ())
             return
+        tries = plan.retries + 1 if request else 1  # a listener has nothing to resend
+        for tried in range(1, tries + 1):  # `retry N`: the same bytes again, as published drivers resend
+            try:
+                self._exchange_once(plan, request, fields, levels, local)
+                return
+            except (RdisTimeout, RdisProtocolError) as err:
+                if tried == tries:
+                    if tries == 1:
+                        raise
+                    raise type(err)(f"{err} ({tries} tries)") from None
+
+    def _exchange_once(self, plan: Primitive, request: bytes, fields: list[Any], levels: dict[str, Value] | None,
+                       local: Args) -> None:
+        """One try: under the port's lock write the request and read the reply; then show the
+        I/O callbacks every byte written and read, and run the post-actions."""
         link = self._links.get(plan.connection)
         if link is None:
             raise RdisConnectionError(f"{plan.connection}: not open")

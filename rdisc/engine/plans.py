@@ -190,6 +190,7 @@ class Primitive:
     actions: Callable[[StateValues, Args, Sequence[Any]], dict[str, Value]] | None = None
     frame: FrameUse | None = None
     timeout: float | None = None  # seconds its reply may take, instead of the robot's
+    retries: int = 0  # resends after a reply that timed out or did not match (`retry N`)
     checked: tuple[str, ...] = ()  # state variables its post-actions may make too wide (checked as they are set)
     request: Request | None = None  # its parameters' values to the bytes, when it is only written (`_sent_at_once`)
     expect: Callable[[StateValues, Args, Sequence[Any]], object] | None = None  # a condition its decoded reply meets
@@ -277,6 +278,9 @@ class Call:
     delay: float = 0.0  # seconds
     direct: bool = False
     when: Callable[[StateValues, Args], object] | None = None  # the call is made only when this holds
+    until: Callable[[StateValues, Args], object] | None = None  # made again every `every` s until this holds
+    every: float = 0.0
+    within: float = 0.0  # seconds: at most within / every more calls, else an RdisTimeout
 
 
 @dataclass(frozen=True, slots=True)
@@ -324,14 +328,14 @@ class Input:
 
 def _written_at_once(interface: Interface) -> Call | None:
     """The interface's one call, when running it is only packing its values and writing them:
-    no delay, range, output, frame, reply, post-action, modem line or string in the way."""
+    no delay, condition, poll, range, output, frame, reply, post-action, modem line or string in the way."""
     if len(interface.calls) != 1 or interface.ranged or interface.outputs:
         return None
     call = interface.calls[0]
     prim = call.target
     if not isinstance(prim, Primitive):
         return None
-    if not call.direct or call.delay or call.when or not _plain(prim.encoder) or not isinstance(prim.reply, NoReply) \
+    if not call.direct or call.delay or call.when or call.until or not _plain(prim.encoder) or not isinstance(prim.reply, NoReply) \
             or prim.frame is not None:
         return None
     return call if prim.actions is None and prim.lines is None and not prim.ranged else None

@@ -14,10 +14,10 @@ from collections.abc import Callable, Iterator, Mapping
 from typing import Any
 
 from rdisc.engine.arguments import _accept_param, _accepted, _bind, _check_ranges, _widen, bind_settings
-from rdisc.engine.errors import RdisConnectionError, RdisValueError
+from rdisc.engine.errors import RdisConnectionError, RdisTimeout, RdisValueError
 from rdisc.engine.exchange import Exchange
 from rdisc.engine.operations import EVAL_ERRORS
-from rdisc.engine.plans import Device, Hook, Input, Interface, KeyedReply, Primitive
+from rdisc.engine.plans import Call, Device, Hook, Input, Interface, KeyedReply, Primitive
 from rdisc.engine.ports import PortSpec, Simulator, _Link, _open_port, _Port
 from rdisc.engine.schedule import _Worker
 from rdisc.engine.values import (
@@ -471,17 +471,45 @@ class Robot(Exchange):
                 values = call.args(self._state, args)
             except EVAL_ERRORS as err:
                 raise RdisValueError(f"{plan.name}: {err}") from None
-            target = call.target
-            if isinstance(target, Interface):
-                self._interface(target, values)
-            elif call.direct:  # the call's values are the primitive's format values
-                self._exchange(target, values, values)
-            else:
-                self._primitive(target, values)
+            self._make(call, values)
+            if call.until is not None:
+                self._poll(plan, call, args)
             if call.delay:
                 self._sleep(call.delay)
         for output in plan.outputs:
             self._deliver(output)
+
+    def _make(self, call: Call, values: Args) -> None:
+        """One call of an interface, with its arguments' values."""
+        target = call.target
+        if isinstance(target, Interface):
+            self._interface(target, values)
+        elif call.direct:  # the call's values are the primitive's format values
+            self._exchange(target, values, values)
+        else:
+            self._primitive(target, values)
+
+    def _poll(self, plan: Interface, call: Call, args: Args) -> None:
+        """`until COND every P within T`, after the call's first making: while COND does not
+        hold, wait P and make the call again (its arguments evaluated again), at most T / P
+        more times; then an RdisTimeout saying how many calls were made."""
+        assert call.until is not None
+        most = int(call.within / call.every + 1e-9) + 1
+        made = 1
+        while True:
+            try:
+                if call.until(self._state, args):
+                    return
+                if made == most:
+                    break
+                self._sleep(call.every)
+                values = call.args(self._state, args)
+            except EVAL_ERRORS as err:
+                raise RdisValueError(f"{plan.name}: {err}") from None
+            self._make(call, values)
+            made += 1
+        raise RdisTimeout(f"{plan.name}: {call.target.name}() did not meet its `until` within {call.within:g} s "
+                          f"({made} calls, every {call.every:g} s)")
 
     def _primitive(self, plan: Primitive, args: Args) -> None:
         """Run a primitive with its parameters' values: its reply table's entry, if it has

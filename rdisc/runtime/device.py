@@ -145,6 +145,7 @@ class _Engine:
         return engine.Primitive(
             p.name, p.connection, built(p.params), self.closure(p.values), built(p.encoder), reply=self.reply(p.reply),
             actions=self.closure(p.actions), frame=None if p.frame is None else self.use(p.frame), timeout=p.timeout,
+            retries=p.retries,
             checked=p.checked, expect=self.closure(p.expect), lines=self.closure(p.lines),
             request=None if p.request is None else self.written(p.request, built(p.params)),
         )
@@ -223,7 +224,8 @@ class _Engine:
 
     def call(self, c: plans.Call) -> engine.Call:
         target = self.primitive(c.target) if isinstance(c.target, plans.Primitive) else self.interface(c.target)
-        return engine.Call(target, self.closure(c.args), c.delay, c.direct, self.closure(c.when))
+        return engine.Call(target, self.closure(c.args), c.delay, c.direct, self.closure(c.when),
+                           self.closure(c.until), c.every, c.within)
 
     def input(self, i: plans.Input) -> engine.Input:
         made = engine.Input(i.name, i.adapter, built(i.fields), self.interface(i.interface), self.closure(i.args))

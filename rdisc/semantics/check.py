@@ -42,6 +42,8 @@ CONNECTION_KINDS = ("serial", "tcp")
 DEFAULT_BAUD = 9600
 DEFAULT_FREQUENCY_HZ = 10.0
 MAX_TERMINATOR = 8
+MAX_POLLS = 100_000  # calls of one `until`: its limit over its interval, plus the first
+MAX_RETRIES = 10  # resends of one request: each may wait a whole timeout
 MAX_TABLE = 4096  # entries of a reply table
 MAX_UNROLLED = 4096  # calls an interface's body makes, its loops written out
 MAX_UNROLLED_ALL = 65_536  # the same for all interfaces: the work loops cause stays bounded
@@ -719,12 +721,37 @@ class _Checker:
                 timeout = None
             elif not replies and not listed and not (frame and self.frames[frame.frame].reply):
                 self.d.report("E204", timeout_clause.span, f"`{name.text}` reads no reply, so it has no timeout")
+        retry = self.once([c for c in decl.clauses if isinstance(c, ast.Retry)], "`retry`", name)
+        replied = bool(replies or listed or (frame and self.frames[frame.frame].reply))
+        writes = encoding is not None and (frame is not None or encoding != m.Format(""))  # `format "" ()` listens
+        retries = self.retries(retry, name, writes, replied) if isinstance(retry, ast.Retry) else 0
         if expect is not None and table is not None:
             self.d.report("E203", expect.span, f"primitive `{name.text}` has a reply table and also `expect`",
                           help="`expect` checks the reply of a primitive with one decoding")
         return m.Primitive(name.text, params, connection, encoding, args, decoding, actions, decl.doc, decl.span,
                            frame, skip is not None, table, timeout, expect, lines, count, reply_frames, records,
-                           listed)
+                           listed, retries)
+
+    def retries(self, clause: ast.Retry, name: ast.Ident, writes: bool, replied: bool) -> int:
+        """`retry N`: resends of a request whose reply timed out or did not match, a constant
+        int from 1 to MAX_RETRIES, of a primitive that writes a request and reads a reply. 0
+        where it is refused."""
+        value = self.setting(clause.count, "a retry count", MAX_RETRIES)
+        if value is None:
+            return 0
+        if not isinstance(value, int) or isinstance(value, bool) or value < 1:
+            self.d.report("E204", clause.count.span,
+                          f"a retry count is a constant int from 1 to {MAX_RETRIES}, not {shown(value)}")
+            return 0
+        if not replied:
+            self.d.report("E204", clause.span, f"`{name.text}` reads no reply, so it has nothing to retry",
+                          help="`retry` resends a request whose reply timed out or did not match")
+            return 0
+        if not writes:
+            self.d.report("E204", clause.span, f"`{name.text}` writes no request, so it has nothing to resend",
+                          help="a primitive that only listens waits for its reply within its `timeout`")
+            return 0
+        return value
 
     def listed_replies(self, clause: ast.ReplyList, decl: ast.PrimitiveDecl, scope: dict[str, tuple[Scope, m.AnyType]],
                        env: Env, encoding: m.Pack | m.Format | None) -> tuple[m.ListedReply, ...]:
@@ -1454,7 +1481,8 @@ class _Checker:
                 call = self.call_stmt(stmt, u.env, u.interface_params, u.primitives)
                 if loops:  # `IDS[i] + 1` of this round is known: the call says its value
                     call = replace(call, args=tuple(self.value_of(a) for a in call.args),
-                                   when=None if call.when is None else self.value_of(call.when))
+                                   when=None if call.when is None else self.value_of(call.when),
+                                   until=None if call.until is None else self.value_of(call.until))
                 u.calls.append(call)
                 self.written += 1
                 continue
@@ -1586,9 +1614,37 @@ class _Checker:
         when = self.typer.expr(stmt.conditions[0], env) if stmt.conditions else None
         if when is not None and when.type is not None and when.type is not Type.BOOL:
             self.d.report("E401", stmt.conditions[0].span, f"`when` takes a bool, but this is {describe(when.type)}")
+        until, every, within = self.poll(stmt, env)
         return m.PrimitiveCall(
-            m.PrimitiveRef(callee), args, delay or 0, int(priority or 0), stmt.span, calls_interface, when
+            m.PrimitiveRef(callee), args, delay or 0, int(priority or 0), stmt.span, calls_interface, when,
+            until, every, within,
         )
+
+    def poll(self, stmt: ast.CallStmt, env: Env) -> tuple[m.Expr | None, float, float]:
+        """`until COND every P within T`: COND a bool over state and the interface's parameters,
+        0 < P <= T, at most MAX_POLLS calls. (None, 0, 0) without one, or where it is refused."""
+        clause = self.once(list(stmt.polls), "`until`", stmt.call.target)
+        if not isinstance(clause, ast.Poll):
+            return None, 0, 0
+        until = self.typer.expr(clause.condition, env)
+        if until.type is not None and until.type is not Type.BOOL:
+            self.d.report("E401", clause.condition.span, f"`until` takes a bool, but this is {describe(until.type)}")
+            return None, 0, 0
+        every = self.duration(clause.every, "a poll's interval")
+        within = self.duration(clause.within, "a poll's limit")
+        if until.type is None or every is None or within is None:
+            return None, 0, 0
+        if not 0 < every <= within:
+            self.d.report("E204", clause.span, f"a poll's interval must be positive and at most its limit, not "
+                          f"every {every:g} ms within {within:g} ms",
+                          help="`until COND every 10 ms within 2 s` calls again every 10 ms, for at most 2 s")
+            return None, 0, 0
+        if within / every >= MAX_POLLS:
+            self.d.report("E204", clause.span, f"a poll makes at most {MAX_POLLS} calls, not "
+                          f"{int(within / every) + 1} (every {every:g} ms within {within:g} ms)",
+                          help="poll less often")
+            return None, 0, 0
+        return until, every, within
 
     def constants_into_pack(self, prim: m.Primitive, args: tuple[m.Expr, ...], exprs: tuple[ast.Expr, ...]) -> None:
         """A constant argument whose parameter goes straight into a pack code must fit it."""

@@ -701,6 +701,7 @@ class Primitive:
     reply_frames: tuple[FrameUse, ...] = ()  # each reply's own frame, when `replies` gives them
     records: str | None = None  # `reply each until`: the marker ending each record of the payload (latin-1)
     listed: tuple[ListedReply, ...] = ()  # `replies { ... }`: replies of different shapes, in order
+    retries: int = 0  # `retry N`: resends after a timeout or a reply that does not match (0: none)
 
     def listed_reply(self, r: ListedReply) -> Primitive:
         """This primitive as it is for one of its listed replies: that reply's frame, decoding,
@@ -772,6 +773,9 @@ class PrimitiveCall:
     span: Span | None = _span
     interface: bool = False
     when: Expr | None = None  # made only when this holds, over state and the interface's parameters
+    until: Expr | None = None  # made again every `every_ms` until this holds, at most within_ms / every_ms more times
+    every_ms: float = 0
+    within_ms: float = 0
 
 
 @dataclass(frozen=True, slots=True)

@@ -1436,6 +1436,7 @@ def _init_Primitive(
     reply_frames: Any = DEFAULT,
     records: Any = DEFAULT,
     listed: Any = DEFAULT,
+    retries: Any = DEFAULT,
 ) -> None:
     _set(self, "name", name)
     _set(self, "params", params)
@@ -1456,10 +1457,11 @@ def _init_Primitive(
     _set(self, "reply_frames", reply_frames)
     _set(self, "records", records)
     _set(self, "listed", listed)
+    _set(self, "retries", retries)
 
 
 def _repr_Primitive(self: Any) -> str:
-    return f"{self.__class__.__qualname__}(name={self.name!r}, params={self.params!r}, connection={self.connection!r}, encoding={self.encoding!r}, args={self.args!r}, decoding={self.decoding!r}, actions={self.actions!r}, doc={self.doc!r}, frame={self.frame!r}, skip_unmatched={self.skip_unmatched!r}, table={self.table!r}, timeout_ms={self.timeout_ms!r}, expect={self.expect!r}, lines={self.lines!r}, replies={self.replies!r}, reply_frames={self.reply_frames!r}, records={self.records!r}, listed={self.listed!r})"
+    return f"{self.__class__.__qualname__}(name={self.name!r}, params={self.params!r}, connection={self.connection!r}, encoding={self.encoding!r}, args={self.args!r}, decoding={self.decoding!r}, actions={self.actions!r}, doc={self.doc!r}, frame={self.frame!r}, skip_unmatched={self.skip_unmatched!r}, table={self.table!r}, timeout_ms={self.timeout_ms!r}, expect={self.expect!r}, lines={self.lines!r}, replies={self.replies!r}, reply_frames={self.reply_frames!r}, records={self.records!r}, listed={self.listed!r}, retries={self.retries!r})"
 
 
 def _eq_Primitive(self: Any, other: Any) -> Any:
@@ -1483,6 +1485,7 @@ def _eq_Primitive(self: Any, other: Any) -> Any:
             self.reply_frames,
             self.records,
             self.listed,
+            self.retries,
         ) == (
             other.name,
             other.params,
@@ -1502,6 +1505,7 @@ def _eq_Primitive(self: Any, other: Any) -> Any:
             other.reply_frames,
             other.records,
             other.listed,
+            other.retries,
         )
     return NotImplemented
 
@@ -1526,6 +1530,7 @@ def _hash_Primitive(self: Any) -> int:
         self.reply_frames,
         self.records,
         self.listed,
+        self.retries,
     ))
 
 
@@ -1538,6 +1543,9 @@ def _init_PrimitiveCall(
     span: Any = DEFAULT,
     interface: Any = DEFAULT,
     when: Any = DEFAULT,
+    until: Any = DEFAULT,
+    every_ms: Any = DEFAULT,
+    within_ms: Any = DEFAULT,
 ) -> None:
     _set(self, "primitive", primitive)
     _set(self, "args", args)
@@ -1546,10 +1554,13 @@ def _init_PrimitiveCall(
     _set(self, "span", span)
     _set(self, "interface", interface)
     _set(self, "when", when)
+    _set(self, "until", until)
+    _set(self, "every_ms", every_ms)
+    _set(self, "within_ms", within_ms)
 
 
 def _repr_PrimitiveCall(self: Any) -> str:
-    return f"{self.__class__.__qualname__}(primitive={self.primitive!r}, args={self.args!r}, delay_ms={self.delay_ms!r}, priority={self.priority!r}, interface={self.interface!r}, when={self.when!r})"
+    return f"{self.__class__.__qualname__}(primitive={self.primitive!r}, args={self.args!r}, delay_ms={self.delay_ms!r}, priority={self.priority!r}, interface={self.interface!r}, when={self.when!r}, until={self.until!r}, every_ms={self.every_ms!r}, within_ms={self.within_ms!r})"
 
 
 def _eq_PrimitiveCall(self: Any, other: Any) -> Any:
@@ -1561,6 +1572,9 @@ def _eq_PrimitiveCall(self: Any, other: Any) -> Any:
             self.priority,
             self.interface,
             self.when,
+            self.until,
+            self.every_ms,
+            self.within_ms,
         ) == (
             other.primitive,
             other.args,
@@ -1568,12 +1582,25 @@ def _eq_PrimitiveCall(self: Any, other: Any) -> Any:
             other.priority,
             other.interface,
             other.when,
+            other.until,
+            other.every_ms,
+            other.within_ms,
         )
     return NotImplemented
 
 
 def _hash_PrimitiveCall(self: Any) -> int:
-    return hash((self.primitive, self.args, self.delay_ms, self.priority, self.interface, self.when))
+    return hash((
+        self.primitive,
+        self.args,
+        self.delay_ms,
+        self.priority,
+        self.interface,
+        self.when,
+        self.until,
+        self.every_ms,
+        self.within_ms,
+    ))
 
 
 def _init_Interface(
@@ -2723,6 +2750,7 @@ WRITTEN: dict[str, Written] = {
             ("reply_frames", DEFAULT),
             ("records", DEFAULT),
             ("listed", DEFAULT),
+            ("retries", DEFAULT),
         ),
         {
             "__init__": _init_Primitive,
@@ -2740,6 +2768,9 @@ WRITTEN: dict[str, Written] = {
             ("span", FieldSpec(None, MISSING, False, False)),
             ("interface", DEFAULT),
             ("when", DEFAULT),
+            ("until", DEFAULT),
+            ("every_ms", DEFAULT),
+            ("within_ms", DEFAULT),
         ),
         {
             "__init__": _init_PrimitiveCall,

@@ -355,6 +355,15 @@ class ReplyTable:
 
 
 @dataclass(frozen=True, slots=True)
+class Retry:
+    """`retry N`: the request sent again, up to N more times, after a timeout or a reply that
+    does not match (as published drivers resend)."""
+
+    count: Expr
+    span: Span = _span
+
+
+@dataclass(frozen=True, slots=True)
 class ReplyTimeout:
     """`timeout D`: how long this primitive's reply may take, instead of the connection's."""
 
@@ -425,7 +434,7 @@ class Lines:
 
 PrimitiveClause = (
     On | Encoding | Decoding | Actions | Framed | SkipUnmatched | ReplyTable | ReplyTimeout | Expect | Lines
-    | Replies | ReplyList | Records
+    | Replies | Retry | ReplyList | Records
 )
 
 
@@ -462,6 +471,18 @@ class CallStmt:
     priorities: tuple[Expr, ...]
     span: Span = _span
     conditions: tuple[Expr, ...] = ()  # `when COND`: the call is made only when COND holds
+    polls: tuple[Poll, ...] = ()  # `until COND every P within T`: made again until COND holds
+
+
+@dataclass(frozen=True, slots=True)
+class Poll:
+    """`until COND every P within T`: the call made again every P until COND holds after it,
+    at most T/P more times."""
+
+    condition: Expr
+    every: Duration
+    within: Duration
+    span: Span = _span
 
 
 @dataclass(frozen=True, slots=True)

@@ -894,6 +894,25 @@ def _hash_ReplyTable(self: Any) -> int:
     return hash((self.key, self.entries, self.tag, self.each, self.length))
 
 
+def _init_Retry(self: Any, count: Any, span: Any = DEFAULT) -> None:
+    _set(self, "count", count)
+    _set(self, "span", span)
+
+
+def _repr_Retry(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(count={self.count!r})"
+
+
+def _eq_Retry(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.count,) == (other.count,)
+    return NotImplemented
+
+
+def _hash_Retry(self: Any) -> int:
+    return hash((self.count,))
+
+
 def _init_ReplyTimeout(self: Any, duration: Any, span: Any = DEFAULT) -> None:
     _set(self, "duration", duration)
     _set(self, "span", span)
@@ -1151,16 +1170,18 @@ def _init_CallStmt(
     priorities: Any,
     span: Any = DEFAULT,
     conditions: Any = DEFAULT,
+    polls: Any = DEFAULT,
 ) -> None:
     _set(self, "call", call)
     _set(self, "delays", delays)
     _set(self, "priorities", priorities)
     _set(self, "span", span)
     _set(self, "conditions", conditions)
+    _set(self, "polls", polls)
 
 
 def _repr_CallStmt(self: Any) -> str:
-    return f"{self.__class__.__qualname__}(call={self.call!r}, delays={self.delays!r}, priorities={self.priorities!r}, conditions={self.conditions!r})"
+    return f"{self.__class__.__qualname__}(call={self.call!r}, delays={self.delays!r}, priorities={self.priorities!r}, conditions={self.conditions!r}, polls={self.polls!r})"
 
 
 def _eq_CallStmt(self: Any, other: Any) -> Any:
@@ -1170,17 +1191,40 @@ def _eq_CallStmt(self: Any, other: Any) -> Any:
             self.delays,
             self.priorities,
             self.conditions,
+            self.polls,
         ) == (
             other.call,
             other.delays,
             other.priorities,
             other.conditions,
+            other.polls,
         )
     return NotImplemented
 
 
 def _hash_CallStmt(self: Any) -> int:
-    return hash((self.call, self.delays, self.priorities, self.conditions))
+    return hash((self.call, self.delays, self.priorities, self.conditions, self.polls))
+
+
+def _init_Poll(self: Any, condition: Any, every: Any, within: Any, span: Any = DEFAULT) -> None:
+    _set(self, "condition", condition)
+    _set(self, "every", every)
+    _set(self, "within", within)
+    _set(self, "span", span)
+
+
+def _repr_Poll(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(condition={self.condition!r}, every={self.every!r}, within={self.within!r})"
+
+
+def _eq_Poll(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.condition, self.every, self.within) == (other.condition, other.every, other.within)
+    return NotImplemented
+
+
+def _hash_Poll(self: Any) -> int:
+    return hash((self.condition, self.every, self.within))
 
 
 def _init_ForStmt(self: Any, var: Any, low: Any, high: Any, body: Any, span: Any = DEFAULT) -> None:
@@ -2461,6 +2505,10 @@ WRITTEN: dict[str, Written] = {
             "__hash__": _hash_ReplyTable,
         },
     ),
+    "Retry": Written(
+        (("count", MISSING), ("span", FieldSpec(None, MISSING, False, False))),
+        {"__init__": _init_Retry, "__repr__": _repr_Retry, "__eq__": _eq_Retry, "__hash__": _hash_Retry},
+    ),
     "ReplyTimeout": Written(
         (("duration", MISSING), ("span", FieldSpec(None, MISSING, False, False))),
         {
@@ -2561,6 +2609,7 @@ WRITTEN: dict[str, Written] = {
             ("priorities", MISSING),
             ("span", FieldSpec(None, MISSING, False, False)),
             ("conditions", DEFAULT),
+            ("polls", DEFAULT),
         ),
         {
             "__init__": _init_CallStmt,
@@ -2568,6 +2617,15 @@ WRITTEN: dict[str, Written] = {
             "__eq__": _eq_CallStmt,
             "__hash__": _hash_CallStmt,
         },
+    ),
+    "Poll": Written(
+        (
+            ("condition", MISSING),
+            ("every", MISSING),
+            ("within", MISSING),
+            ("span", FieldSpec(None, MISSING, False, False)),
+        ),
+        {"__init__": _init_Poll, "__repr__": _repr_Poll, "__eq__": _eq_Poll, "__hash__": _hash_Poll},
     ),
     "ForStmt": Written(
         (

@@ -342,7 +342,8 @@ def _transformer_class() -> Callable[[Builder], Transformer[Token, list[ast.Decl
             delays = tuple(x[1] for x in c[2:] if x[0] == "delay")
             priorities = tuple(x[1] for x in c[2:] if x[0] == "priority")
             conditions = tuple(x[1] for x in c[2:] if x[0] == "when")
-            return ast.CallStmt(call, delays, priorities, self.b.span(meta), conditions)
+            polls = tuple(x[1] for x in c[2:] if x[0] == "until")
+            return ast.CallStmt(call, delays, priorities, self.b.span(meta), conditions, polls)
 
         def for_stmt(self, meta: Any, c: list[Any]) -> ast.ForStmt:
             name, low, high, *body = c
@@ -356,6 +357,9 @@ def _transformer_class() -> Callable[[Builder], Transformer[Token, list[ast.Decl
 
         def when(self, meta: Meta, c: list[ast.Expr]) -> tuple[str, ast.Expr]:
             return ("when", c[0])
+
+        def until(self, meta: Meta, c: list[Any]) -> tuple[str, ast.Poll]:
+            return ("until", ast.Poll(c[0], c[1], c[2], self.b.span(meta)))
 
         def adapter_decl(self, meta: Meta, c: list[Any]) -> ast.AdapterDecl:
             ros = self.b.string(c[1]) if c[1] is not None else None
@@ -395,6 +399,9 @@ def _transformer_class() -> Callable[[Builder], Transformer[Token, list[ast.Decl
 
         def reply_timeout(self, meta: Meta, c: list[Any]) -> ast.ReplyTimeout:
             return ast.ReplyTimeout(c[0], self.b.span(meta))
+
+        def retry(self, meta: Meta, c: list[ast.Expr]) -> ast.Retry:
+            return ast.Retry(c[0], self.b.span(meta))
 
         def replies(self, meta: Meta, c: list[ast.Expr]) -> ast.Replies:
             return ast.Replies(c[0], self.b.span(meta))

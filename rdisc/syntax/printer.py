@@ -300,6 +300,8 @@ def _call_stmt(stmt: ast.CallStmt, column: int) -> list[str]:
     suffix = "".join(f" delay {_duration(d)}" for d in stmt.delays)
     suffix += "".join(f" priority {print_expr(e)}" for e in stmt.priorities)
     suffix += "".join(f" when {print_expr(e)}" for e in stmt.conditions)
+    suffix += "".join(f" until {print_expr(u.condition)} every {_duration(u.every)} within {_duration(u.within)}"
+                      for u in stmt.polls)
     return _call_lines("", stmt.call, suffix, column)
 
 
@@ -344,6 +346,8 @@ def _primitive_clause(c: ast.PrimitiveClause) -> tuple[list[str], bool]:
             return ["skip unmatched"], False
         case ast.ReplyTimeout(duration):
             return [f"timeout {_duration(duration)}"], False
+        case ast.Retry(count):
+            return [f"retry {print_expr(count)}"], False
         case ast.Expect(condition):
             return [f"expect {print_expr(condition)}"], False
         case ast.Replies(over, _, var, high, framed):

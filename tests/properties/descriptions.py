@@ -1155,6 +1155,7 @@ class Primitive:
     skip: bool = False
     timeout_ms: int | None = None
     lasts: tuple[int | None, ...] = ()  # a tag table's entries' last values (`value..last`), None for one value
+    retries: int = 0  # `retry N`: resends after a timeout or a mismatched reply
 
     def text(self) -> str:
         clauses = [f"on {self.connection}"]
@@ -1168,6 +1169,8 @@ class Primitive:
             clauses.append("skip unmatched")
         if self.timeout_ms is not None:
             clauses.append(f"timeout {self.timeout_ms} ms")
+        if self.retries:
+            clauses.append(f"retry {self.retries}")
         if self.key is not None or self.tag is not None:
             head = f"reply {self.key}" if self.key is not None else f'reply tag "{self.tag}"'
             entries = "\n".join(f"    {value}{'' if last == value else f'..{last}'}: {reply.text()}"
@@ -1555,8 +1558,10 @@ def primitives(draw: Draw, name: str, states: Mapping[str, str], scope: Scope,
     skip = (framed_reply or tag is not None) and bool(replies) and sometimes(draw, 4)
     reads = bool(replies) or (frame is not None and frame.acknowledges)
     timeout = draw(st.sampled_from([20, 50, 100])) if reads and sometimes(draw, 3) else None
+    writes = not listener and (frame is not None or template != "")
+    retries = draw(st.integers(1, 2)) if reads and writes and sometimes(draw, 4) else 0
     return Primitive(name, params, draw(st.sampled_from(connections)), encoding, template, args, reply, actions,
-                     key, tag, entries, frame, frame_args, skip, timeout, lasts)
+                     key, tag, entries, frame, frame_args, skip, timeout, lasts, retries)
 
 
 def _call_args(draw: Draw, prim: Primitive, scope: Scope) -> tuple[Expr, ...] | None:

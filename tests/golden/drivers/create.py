@@ -1392,6 +1392,7 @@ class Primitive:
     actions: Callable[[StateValues, Args, Sequence[Any]], dict[str, Value]] | None = None
     frame: FrameUse | None = None
     timeout: float | None = None  # seconds its reply may take, instead of the robot's
+    retries: int = 0  # resends after a reply that timed out or did not match (`retry N`)
     checked: tuple[str, ...] = ()  # state variables its post-actions may make too wide (checked as they are set)
     request: Request | None = None  # its parameters' values to the bytes, when it is only written (`_sent_at_once`)
     expect: Callable[[StateValues, Args, Sequence[Any]], object] | None = None  # a condition its decoded reply meets
@@ -1479,6 +1480,9 @@ class Call:
     delay: float = 0.0  # seconds
     direct: bool = False
     when: Callable[[StateValues, Args], object] | None = None  # the call is made only when this holds
+    until: Callable[[StateValues, Args], object] | None = None  # made again every `every` s until this holds
+    every: float = 0.0
+    within: float = 0.0  # seconds: at most within / every more calls, else an RdisTimeout
 
 
 @dataclass(frozen=True, slots=True)
@@ -1526,14 +1530,14 @@ class Input:
 
 def _written_at_once(interface: Interface) -> Call | None:
     """The interface's one call, when running it is only packing its values and writing them:
-    no delay, range, output, frame, reply, post-action, modem line or string in the way."""
+    no delay, condition, poll, range, output, frame, reply, post-action, modem line or string in the way."""
     if len(interface.calls) != 1 or interface.ranged or interface.outputs:
         return None
     call = interface.calls[0]
     prim = call.target
     if not isinstance(prim, Primitive):
         return None
-    if not call.direct or call.delay or call.when or not _plain(prim.encoder) or not isinstance(prim.reply, NoReply) \
+    if not call.direct or call.delay or call.when or call.until or not _plain(prim.encoder) or not isinstance(prim.reply, NoReply) \
             or prim.frame is not None:
         return None
     return call if prim.actions is None and prim.lines is None and not prim.ranged else None
@@ -2445,7 +2449,8 @@ class Exchange:
 
     def _exchange(self, plan: Primitive, values: Args, local: Args) -> None:
         """Encode and frame the request; under the port's lock write it and read the reply;
-        then show the I/O callbacks every byte written and read, and run the post-actions.
+        then show the I/O callbacks every byte written and read, and run the post-actions. After
+        a timeout or a reply that does not match, the same request again, `retry N` more times.
 
         `local` is the primitive's parameters' values (a direct call passes its values)."""
         if self._sim is not None:
@@ -2457,6 +2462,21 @@ class Exchange:
             if plan.actions is not None:
                 self._assign(plan, local, ())
             return
+        tries = plan.retries + 1 if request else 1  # a listener has nothing to resend
+        for tried in range(1, tries + 1):  # `retry N`: the same bytes again, as published drivers resend
+            try:
+                self._exchange_once(plan, request, fields, levels, local)
+                return
+            except (RdisTimeout, RdisProtocolError) as err:
+                if tried == tries:
+                    if tries == 1:
+                        raise
+                    raise type(err)(f"{err} ({tries} tries)") from None
+
+    def _exchange_once(self, plan: Primitive, request: bytes, fields: list[Any], levels: dict[str, Value] | None,
+                       local: Args) -> None:
+        """One try: under the port's lock write the request and read the reply; then show the
+        I/O callbacks every byte written and read, and run the post-actions."""
         link = self._links.get(plan.connection)
         if link is None:
             raise RdisConnectionError(f"{plan.connection}: not open")
@@ -3373,17 +3393,45 @@ class Robot(Exchange):
                 values = call.args(self._state, args)
             except EVAL_ERRORS as err:
                 raise RdisValueError(f"{plan.name}: {err}") from None
-            target = call.target
-            if isinstance(target, Interface):
-                self._interface(target, values)
-            elif call.direct:  # the call's values are the primitive's format values
-                self._exchange(target, values, values)
-            else:
-                self._primitive(target, values)
+            self._make(call, values)
+            if call.until is not None:
+                self._poll(plan, call, args)
             if call.delay:
                 self._sleep(call.delay)
         for output in plan.outputs:
             self._deliver(output)
+
+    def _make(self, call: Call, values: Args) -> None:
+        """One call of an interface, with its arguments' values."""
+        target = call.target
+        if isinstance(target, Interface):
+            self._interface(target, values)
+        elif call.direct:  # the call's values are the primitive's format values
+            self._exchange(target, values, values)
+        else:
+            self._primitive(target, values)
+
+    def _poll(self, plan: Interface, call: Call, args: Args) -> None:
+        """`until COND every P within T`, after the call's first making: while COND does not
+        hold, wait P and make the call again (its arguments evaluated again), at most T / P
+        more times; then an RdisTimeout saying how many calls were made."""
+        assert call.until is not None
+        most = int(call.within / call.every + 1e-9) + 1
+        made = 1
+        while True:
+            try:
+                if call.until(self._state, args):
+                    return
+                if made == most:
+                    break
+                self._sleep(call.every)
+                values = call.args(self._state, args)
+            except EVAL_ERRORS as err:
+                raise RdisValueError(f"{plan.name}: {err}") from None
+            self._make(call, values)
+            made += 1
+        raise RdisTimeout(f"{plan.name}: {call.target.name}() did not meet its `until` within {call.within:g} s "
+                          f"({made} calls, every {call.every:g} s)")
 
     def _primitive(self, plan: Primitive, args: Args) -> None:
         """Run a primitive with its parameters' values: its reply table's entry, if it has
