@@ -1265,7 +1265,7 @@ class _Importer:
             return None
         var = ast.Ident(next(n for n in ("reply", "reply_", "reply__", "reply_n") if n not in params), v.span)
         args = [column[0] if len({print_expr(a) for a in column}) == 1
-                else ast.Index(ast.ArrayLit(column, v.span), ast.Ref(var.text, v.span), v.span)
+                else _indexed(column, var.text) or ast.Index(ast.ArrayLit(column, v.span), ast.Ref(var.text, v.span), v.span)
                 for column in zip(*rows)]
         framed = ast.Framed(frame, tuple(args), v.span)
         return ast.Replies(ast.IntLit(0, v.span), v.span, var, ast.IntLit(len(rows) - 1, v.span), framed)
@@ -1424,6 +1424,20 @@ _ASSIGNMENT = re.compile(r"\s*([A-Za-z_]\w*)\s*=(?!=)")
 _ELEMENT_ASSIGNMENT = re.compile(r"\s*([A-Za-z_]\w*)\[([^=]*)\]\s*=(?!=)")  # `position[id] = ...`
 # `__out__` as an identifier; string literals are matched (and skipped) so that their text is left alone.
 _OUT = re.compile(r'r?"(?:[^"\\\n]|\\.)*"|(?<![A-Za-z0-9_])(__out__)(?![A-Za-z0-9_])')
+
+
+def _indexed(column: tuple[ast.Expr, ...], var: str) -> ast.Index | None:
+    """`a[0], a[1], ..., a[N-1]` as `a[var]`: a reply frame's argument written from an array
+    parameter as it was written, so that build and import in turn do not grow it."""
+    first = column[0]
+    if not isinstance(first, ast.Index) or not isinstance(first.base, ast.Ref):
+        return None
+    name = first.base.name
+    for number, arg in enumerate(column):
+        if not (isinstance(arg, ast.Index) and isinstance(arg.base, ast.Ref) and arg.base.name == name
+                and isinstance(arg.index, ast.IntLit) and arg.index.value == number):
+            return None
+    return ast.Index(first.base, ast.Ref(var, first.span), first.span)
 
 
 def _present(items: list[Any]) -> tuple[Any, ...]:
