@@ -662,9 +662,11 @@ class _Checker:
             # A count only with scalar values (E401 for arrays): out[i] is the array of the i-th values.
             collected = tuple(m.Array(t, count) if isinstance(t, Type) else t for t in reply) \
                 if count and reply is not None else reply
+            refused = isinstance(replies_clause, ast.Replies) and not count  # reported: `out` unknown, no cascade
             action_env = self.env_with(
                 scope, "in a post-action", "`out`, parameters and state variables",
-                reply=collected if decodings else None, reply_note=note, reply_known=reply is not None,
+                reply=None if refused else collected if decodings else None, reply_note=note,
+                reply_known=reply is not None and not refused,
             )
             actions = self.actions(action_blocks[0], action_env, {p.name for p in params})
         expect = self.expect(decl, scope, reply, bool(decodings))
@@ -1516,9 +1518,14 @@ class _Checker:
                 return None
             if not self.typer.is_constant(over):
                 name = low_expr.name if isinstance(low_expr, ast.Ref) else "values"
+                size = over.type.size or 6  # an open size: any, so one to give it
+                indexed = f"for i in 0..{size - 1} {{ ... {name}[i] ... }}"
+                sized = "" if over.type.size else \
+                    f"its rounds are fixed when the description is checked: give `{name}` a size " \
+                    f"(`{over.type.element.value}[{size}]`), then "
                 self.d.report("E212", low_expr.span, "a loop goes over a constant array or a range, not an array "
-                              "known only when it runs", help="loop over its indexes and read its elements: "
-                              f"`for i in 0..{over.type.size - 1} {{ ... {name}[i] ... }}`")
+                              "known only when it runs", help=f"{sized}loop over its indexes and read its "
+                              f"elements: `{indexed}`")
                 return None
             values = self.typer.constant(over)
             assert isinstance(values, tuple)  # a constant array's value
