@@ -293,8 +293,11 @@ class _Checker:
             return  # an adapter's open array: its size is checked when it runs
         if isinstance(source, m.Array) or isinstance(target, m.Array):
             element = unify(source, target) == target
+            kind = target.element if isinstance(target, m.Array) else target
+            example = f"{kind.value}[{target.size if isinstance(target, m.Array) else 6}]"  # the target's own type
             self.d.report("E401", span, f"{into} takes {describe(target)}, but this is {describe(source)}",
-                          help="an array's size and type are fixed: `int[6]` takes an int[6]"
+                          help=f"an array's size and type are fixed: `{example}` takes "
+                          f"{'an' if kind is Type.INT else 'a'} {example}"
                           if not element and not (isinstance(target, m.Array) and target.size == 0) else None)
             return
         if (source, target) == (Type.FLOAT, Type.INT):
