@@ -485,6 +485,14 @@ triggers any number of outputs, delivered in order after its calls:
 The state variable is never read by any expression and never written by a
 post-action: nothing uses it. (State that post-actions write is the host's to
 read, through `robot.state`, even when no expression reads it.)"""),
+    ("W104", "hidden-state", """
+An input's expressions read the fields of its adapter and the state variables
+and settings; a field with the name of a state variable or a setting hides it, so
+the name there is always the field's value, the framework's, and the state is
+not read. Rename the state variable (or setting), or the field: `adapter Goal {
+target: float }` beside `state position: float`. An adapter of the standard
+library (`JointState`, `Twist`, ...) is not warned of: its fields are a message's,
+and state named after them (a servo's `position`) is read there by design."""),
     ("W201", "nonstandard-baud", """
 The baud rate is not one of the standard rates (300 ... 4000000). Some serial
 adapters round a non-standard rate or refuse it."""),

@@ -1686,11 +1686,34 @@ class _Checker:
                                  (), decl.doc, decl.span)
         scope = {f.name: (Scope.FIELD, f.type) for f in adapter.fields}
         env = self.env_with(scope, "in an input", f"the fields of `{adapter.name}` and state variables")
+        self.hidden_state(decl, adapter, scope)
         target = self.s.interfaces.get(decl.call.target.text)
         args = self.call(decl.call, interface_params.get(decl.call.target.text), env, "interface",
                          target.name if target else None)
         return m.DomainInput(decl.name.text, m.AdapterRef(adapter.name), m.InterfaceRef(decl.call.target.text),
                              args, decl.doc, decl.span)
+
+    def hidden_state(self, decl: ast.InputDecl, adapter: m.Adapter, fields: Names) -> None:
+        """W104 where an input reads a name that is both a field of its adapter and a state
+        variable (or setting): the field hides it, once a name. Not for a standard adapter, whose
+        fields are a message's (JointState's `position`), read by design beside state so named."""
+        declared = self.s.adapters.get(adapter.name)
+        if declared is None or id(declared) in self.s.standard:
+            return
+        seen: set[str] = set()
+        for ref in _refs(decl.call.args):
+            if ref.name not in fields or ref.name in seen:
+                continue
+            hidden = self.s.states.get(ref.name) or self.s.settings.get(ref.name)
+            if hidden is None:
+                continue
+            seen.add(ref.name)
+            kind = "state variable" if isinstance(hidden, ast.StateDecl) else "setting"
+            self.d.report("W104", ref.span, f"`{ref.name}` here is the field of adapter `{adapter.name}`, "
+                          f"which hides {kind} `{ref.name}`",
+                          labels=(Label(hidden.name.span, f"{kind} `{ref.name}`, not read by input "
+                                        f"`{decl.name.text}`"),),
+                          help=f"rename the {kind} to read it in this input, or the field")
 
     def output(self, decl: ast.OutputDecl, adapters: dict[str, m.Adapter]) -> m.DomainOutput:
         adapter = adapters.get(decl.adapter.text)
@@ -1749,6 +1772,18 @@ class _Checker:
             if name not in self.typer.reads and name not in written and known and id(state) in self.main_decls:
                 self.d.report("W103", state.name.span, f"state variable `{name}` is never used",
                               help="read it in an expression, write it in a post-action, or remove it")
+
+
+def _refs(node: object) -> Iterator[ast.Ref]:
+    """The names an expression (or a tuple of them) reads, in order."""
+    if isinstance(node, ast.Ref):
+        yield node
+    elif isinstance(node, tuple):
+        for item in node:
+            yield from _refs(item)
+    elif hasattr(node, "__dataclass_fields__") and not isinstance(node, Span):
+        for name in node.__dataclass_fields__:
+            yield from _refs(getattr(node, name))
 
 
 def _in_range(value: object, low: float, high: float) -> bool:
