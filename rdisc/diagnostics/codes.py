@@ -217,7 +217,10 @@ none is given and which the checks and the link budget use. It is read where sta
 is read (arguments, format values, conditions, post-actions, outputs, inputs), but
 not where a constant is needed (an array's size, a range, a delay, a timeout, a
 frequency, a constant), since its value is not known then; a connection's `baud`
-may be an int setting. Wrong: `setting BAUD: int` (no default), `delay WAIT ms`,
+may be an int setting. A frame's own expressions read only its parameters, as it is
+checked once for every primitive that names it: give the frame a parameter and pass
+the setting where a primitive names it (`frame dxl(id: int)` with `field id "B" = id`,
+then `frame dxl(SERVO_ID)`). Wrong: `setting BAUD: int` (no default), `delay WAIT ms`,
 `setting RATE: float = 57600.0` with `baud RATE`. Right:
 `setting BAUD: int in 9600..1000000 = 57600` with `baud BAUD`, and
 `setting WAIT: int = 20` read as `pack "BH" (0x05, WAIT)`."""),
