@@ -94,6 +94,7 @@ class JObject:
 JValue = JString | JNumber | JBool | JNull | JArray | JObject
 _Kind = TypeVar("_Kind", JString, JNumber, JBool, JNull, JArray, JObject)
 _Built = TypeVar("_Built")
+Declared = TypeVar("Declared", ast.ConstDecl, ast.EnumDecl)
 
 
 def read(path: str, text: str, diagnostics: Diagnostics) -> ast.Module | None:
@@ -306,7 +307,8 @@ def _kind(v: JValue) -> str:
 # ---- the description ----------------------------------------------------------------------
 
 _TOP = (
-    "name", "author", "description", "version", "doc", "constants", "enums", "tables", "settings",
+    "name", "author", "description", "version", "doc", "constants", "enums", "tables", "constantDocs", "enumDocs",
+    "settings",
     "stateVariables", "connections", "frames", "primitives", "interfaces", "domainAdapters", "domainInterfaces", "domainOutputs",
     "links", "joints", "transmissions",
 )  # fmt: skip
@@ -403,8 +405,9 @@ class _Importer:
     def module(self, root: JObject) -> ast.Module:
         top = self.members(root, "the description", _TOP)
         robot = self.robot(root, top)
-        constants = self.constants(top.get("constants")) + self.tables(top.get("tables"))
-        enums = self.enums(top.get("enums"))
+        constants = self.documented(self.constants(top.get("constants")) + self.tables(top.get("tables")),
+                                    top.get("constantDocs"), "`constantDocs`")
+        enums = self.documented(self.enums(top.get("enums")), top.get("enumDocs"), "`enumDocs`")
         frames = self.each(top, "frames", self.frame)
         settings = self.each(top, "settings", self.setting)
         states = self.each(top, "stateVariables", self.state)
@@ -495,6 +498,14 @@ class _Importer:
             if name is not None and expr is not None:
                 built.append(ast.ConstDecl(name, expr, key.span))
         return built
+
+    def documented(self, decls: list[Declared], value: JValue | None, what: str) -> list[Declared]:
+        """The constants or enums with their doc comments from `constantDocs` or `enumDocs`
+        (name: text), which their plain JSON values have no place for."""
+        docs = self.object(value, what) if value is not None else None
+        texts = {key.value: text.value for key, item in docs.members
+                 if (text := self.string(item, "a doc comment")) is not None} if docs else {}
+        return [dataclasses.replace(d, doc=texts[d.name.text]) if d.name.text in texts else d for d in decls]
 
     def enums(self, value: JValue | None) -> list[ast.EnumDecl]:
         obj = self.object(value, "`enums`") if value is not None else None

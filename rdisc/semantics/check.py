@@ -137,6 +137,8 @@ class _Checker:
             constants={n: v for n, v in constants.items() if v is not None},
             tables={n: t for n, t in tables.items() if t is not None},
             enums=enums,
+            constant_docs={n: d.doc for n, d in self.s.constants.items() if d.doc and constants.get(n) is not None},
+            enum_docs={n: d.doc for n, d in self.s.enums.items() if d.doc and n in enums},
             settings=settings,
             links=links,
             joints=joints,
