@@ -1275,11 +1275,21 @@ class _Importer:
             self.error(v.span, "every reply frame of `replyFrames` takes as many arguments")
             return None
         var = ast.Ident(next(n for n in ("reply", "reply_", "reply__", "reply_n") if n not in params), v.span)
-        args = [column[0] if len({print_expr(a) for a in column}) == 1
-                else _indexed(column, var.text) or ast.Index(ast.ArrayLit(column, v.span), ast.Ref(var.text, v.span), v.span)
-                for column in zip(*rows)]
+        ref = ast.Ref(var.text, v.span)
+        columns = list(zip(*rows))
+        varying = [c for c in columns if len({print_expr(a) for a in c}) > 1]
+        # Elements of array parameters, as written (`ids[i]`), so that build and import in turn
+        # do not grow them: the range starts where their indexes do, when they all start at one.
+        indexed = {id(c): found for c in varying if (found := _indexed(c)) is not None}
+        starts = {start for _, start in indexed.values()}
+        start = starts.pop() if len(starts) == 1 and len(indexed) == len(varying) else 0
+        args = [column[0] if column not in varying
+                else ast.Index(indexed[id(column)][0], ref, v.span)
+                if id(column) in indexed and indexed[id(column)][1] == start
+                else ast.Index(ast.ArrayLit(column, v.span), ref, v.span)
+                for column in columns]
         framed = ast.Framed(frame, tuple(args), v.span)
-        return ast.Replies(ast.IntLit(0, v.span), v.span, var, ast.IntLit(len(rows) - 1, v.span), framed)
+        return ast.Replies(ast.IntLit(start, v.span), v.span, var, ast.IntLit(start + len(rows) - 1, v.span), framed)
 
     def reply_expr(self, v: JValue, what: str) -> ast.Expr | None:
         """`"<expr>"` over the reply, called `__out__` as in post-actions."""
@@ -1437,18 +1447,18 @@ _ELEMENT_ASSIGNMENT = re.compile(r"\s*([A-Za-z_]\w*)\[([^=]*)\]\s*=(?!=)")  # `p
 _OUT = re.compile(r'r?"(?:[^"\\\n]|\\.)*"|(?<![A-Za-z0-9_])(__out__)(?![A-Za-z0-9_])')
 
 
-def _indexed(column: tuple[ast.Expr, ...], var: str) -> ast.Index | None:
-    """`a[0], a[1], ..., a[N-1]` as `a[var]`: a reply frame's argument written from an array
-    parameter as it was written, so that build and import in turn do not grow it."""
+def _indexed(column: tuple[ast.Expr, ...]) -> tuple[ast.Ref, int] | None:
+    """`a[K], a[K+1], ..., a[K+N-1]`: (`a`, K), a reply frame's argument written from an array
+    parameter by the loop variable, which import writes back as `a[var]`."""
     first = column[0]
-    if not isinstance(first, ast.Index) or not isinstance(first.base, ast.Ref):
+    if not (isinstance(first, ast.Index) and isinstance(first.base, ast.Ref) and isinstance(first.index, ast.IntLit)):
         return None
-    name = first.base.name
-    for number, arg in enumerate(column):
+    name, start = first.base.name, first.index.value
+    for number, arg in enumerate(column, start):
         if not (isinstance(arg, ast.Index) and isinstance(arg.base, ast.Ref) and arg.base.name == name
                 and isinstance(arg.index, ast.IntLit) and arg.index.value == number):
             return None
-    return ast.Index(first.base, ast.Ref(var, first.span), first.span)
+    return first.base, start
 
 
 def _present(items: list[Any]) -> tuple[Any, ...]:

@@ -241,9 +241,11 @@ robot r { author "tests" }
 connection port: serial { baud 115200 }
 frame g(id: int in 0..9) { header "\\xAA"  field id "B" = id  length "B" = payload  payload }
 primitive varying(ids: int[2]) on port pack "B" (1) replies i in 0..1 frame g(ids[i]) unpack "B"
+primitive later(ids: int[3]) on port pack "B" (1) replies i in 1..2 frame g(ids[i]) unpack "B"
 """
     _, built = through_json(text, tmp_path, "grows")
     imported = print_module(read("grows.json", built, Diagnostics()))
     assert "    replies reply in 0..1 frame g(ids[reply])\n" in imported
+    assert "    replies reply in 1..2 frame g(ids[reply])\n" in imported
     _, again = through_json(imported, tmp_path, "again")
     assert again == built
