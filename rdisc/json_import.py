@@ -406,8 +406,10 @@ class _Importer:
         top = self.members(root, "the description", _TOP)
         robot = self.robot(root, top)
         constants = self.documented(self.constants(top.get("constants")) + self.tables(top.get("tables")),
-                                    top.get("constantDocs"), "`constantDocs`")
-        enums = self.documented(self.enums(top.get("enums")), top.get("enumDocs"), "`enumDocs`")
+                                    top.get("constantDocs"), "`constantDocs`",
+                                    _keys(top.get("constants")) | _keys(top.get("tables")))
+        enums = self.documented(self.enums(top.get("enums")), top.get("enumDocs"), "`enumDocs`",
+                                _keys(top.get("enums")))
         frames = self.each(top, "frames", self.frame)
         settings = self.each(top, "settings", self.setting)
         states = self.each(top, "stateVariables", self.state)
@@ -499,12 +501,16 @@ class _Importer:
                 built.append(ast.ConstDecl(name, expr, key.span))
         return built
 
-    def documented(self, decls: list[Declared], value: JValue | None, what: str) -> list[Declared]:
+    def documented(self, decls: list[Declared], value: JValue | None, what: str, named: set[str]) -> list[Declared]:
         """The constants or enums with their doc comments from `constantDocs` or `enumDocs`
-        (name: text), which their plain JSON values have no place for."""
+        (name: text), which their plain JSON values have no place for; `named`: the names the
+        JSON declares (one in error among them is reported once, as itself)."""
         docs = self.object(value, what) if value is not None else None
         texts = {key.value: text.value for key, item in docs.members
                  if (text := self.string(item, "a doc comment")) is not None} if docs else {}
+        for key, _ in docs.members if docs else ():
+            if key.value not in named:
+                self.error(key.span, f"{what} names `{key.value}`, which the description does not declare")
         return [dataclasses.replace(d, doc=texts[d.name.text]) if d.name.text in texts else d for d in decls]
 
     def enums(self, value: JValue | None) -> list[ast.EnumDecl]:
@@ -1459,6 +1465,11 @@ def _indexed(column: tuple[ast.Expr, ...]) -> tuple[ast.Ref, int] | None:
                 and isinstance(arg.index, ast.IntLit) and arg.index.value == number):
             return None
     return first.base, start
+
+
+def _keys(value: JValue | None) -> set[str]:
+    """The member names of a JSON object; none of anything else."""
+    return {key.value for key, _ in value.members} if isinstance(value, JObject) else set()
 
 
 def _present(items: list[Any]) -> tuple[Any, ...]:

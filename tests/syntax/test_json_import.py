@@ -550,3 +550,7 @@ primitive q() on port pack "BBB" (Cmd.a, IDS[0], BAUD_CODE[9600])
     assert "/// The servo IDs.\nconst IDS = [1, 2]\n" in text
     assert "/// Baud rate codes.\nconst BAUD_CODE = {" in text
     assert "/// The commands.\nenum Cmd {" in text
+    built["enumDocs"]["Nothing"] = "A doc of no enum."
+    module, diagnostics = imported(json.dumps(built))
+    assert [(d.code, d.message) for d in diagnostics.items] == [
+        ("E008", "`enumDocs` names `Nothing`, which the description does not declare")]
