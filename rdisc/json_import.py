@@ -94,6 +94,7 @@ class JObject:
 JValue = JString | JNumber | JBool | JNull | JArray | JObject
 _Kind = TypeVar("_Kind", JString, JNumber, JBool, JNull, JArray, JObject)
 _Built = TypeVar("_Built")
+Declared = TypeVar("Declared", ast.ConstDecl, ast.EnumDecl)
 
 
 def read(path: str, text: str, diagnostics: Diagnostics) -> ast.Module | None:
@@ -306,7 +307,8 @@ def _kind(v: JValue) -> str:
 # ---- the description ----------------------------------------------------------------------
 
 _TOP = (
-    "name", "author", "description", "version", "doc", "constants", "enums", "tables", "settings",
+    "name", "author", "description", "version", "doc", "constants", "enums", "tables", "constantDocs", "enumDocs",
+    "settings",
     "stateVariables", "connections", "frames", "primitives", "interfaces", "domainAdapters", "domainInterfaces", "domainOutputs",
     "links", "joints", "transmissions",
 )  # fmt: skip
@@ -403,8 +405,11 @@ class _Importer:
     def module(self, root: JObject) -> ast.Module:
         top = self.members(root, "the description", _TOP)
         robot = self.robot(root, top)
-        constants = self.constants(top.get("constants")) + self.tables(top.get("tables"))
-        enums = self.enums(top.get("enums"))
+        constants = self.documented(self.constants(top.get("constants")) + self.tables(top.get("tables")),
+                                    top.get("constantDocs"), "`constantDocs`",
+                                    _keys(top.get("constants")) | _keys(top.get("tables")))
+        enums = self.documented(self.enums(top.get("enums")), top.get("enumDocs"), "`enumDocs`",
+                                _keys(top.get("enums")))
         frames = self.each(top, "frames", self.frame)
         settings = self.each(top, "settings", self.setting)
         states = self.each(top, "stateVariables", self.state)
@@ -495,6 +500,18 @@ class _Importer:
             if name is not None and expr is not None:
                 built.append(ast.ConstDecl(name, expr, key.span))
         return built
+
+    def documented(self, decls: list[Declared], value: JValue | None, what: str, named: set[str]) -> list[Declared]:
+        """The constants or enums with their doc comments from `constantDocs` or `enumDocs`
+        (name: text), which their plain JSON values have no place for; `named`: the names the
+        JSON declares (one in error among them is reported once, as itself)."""
+        docs = self.object(value, what) if value is not None else None
+        texts = {key.value: text.value for key, item in docs.members
+                 if (text := self.string(item, "a doc comment")) is not None} if docs else {}
+        for key, _ in docs.members if docs else ():
+            if key.value not in named:
+                self.error(key.span, f"{what} names `{key.value}`, which the description does not declare")
+        return [dataclasses.replace(d, doc=texts[d.name.text]) if d.name.text in texts else d for d in decls]
 
     def enums(self, value: JValue | None) -> list[ast.EnumDecl]:
         obj = self.object(value, "`enums`") if value is not None else None
@@ -1283,11 +1300,21 @@ class _Importer:
             self.error(v.span, "every reply frame of `replyFrames` takes as many arguments")
             return None
         var = ast.Ident(next(n for n in ("reply", "reply_", "reply__", "reply_n") if n not in params), v.span)
-        args = [column[0] if len({print_expr(a) for a in column}) == 1
-                else ast.Index(ast.ArrayLit(column, v.span), ast.Ref(var.text, v.span), v.span)
-                for column in zip(*rows)]
+        ref = ast.Ref(var.text, v.span)
+        columns = list(zip(*rows))
+        varying = [c for c in columns if len({print_expr(a) for a in c}) > 1]
+        # Elements of array parameters, as written (`ids[i]`), so that build and import in turn
+        # do not grow them: the range starts where their indexes do, when they all start at one.
+        indexed = {id(c): found for c in varying if (found := _indexed(c)) is not None}
+        starts = {start for _, start in indexed.values()}
+        start = starts.pop() if len(starts) == 1 and len(indexed) == len(varying) else 0
+        args = [column[0] if column not in varying
+                else ast.Index(indexed[id(column)][0], ref, v.span)
+                if id(column) in indexed and indexed[id(column)][1] == start
+                else ast.Index(ast.ArrayLit(column, v.span), ref, v.span)
+                for column in columns]
         framed = ast.Framed(frame, tuple(args), v.span)
-        return ast.Replies(ast.IntLit(0, v.span), v.span, var, ast.IntLit(len(rows) - 1, v.span), framed)
+        return ast.Replies(ast.IntLit(start, v.span), v.span, var, ast.IntLit(start + len(rows) - 1, v.span), framed)
 
     def reply_expr(self, v: JValue, what: str) -> ast.Expr | None:
         """`"<expr>"` over the reply, called `__out__` as in post-actions."""
@@ -1443,6 +1470,25 @@ _ASSIGNMENT = re.compile(r"\s*([A-Za-z_]\w*)\s*=(?!=)")
 _ELEMENT_ASSIGNMENT = re.compile(r"\s*([A-Za-z_]\w*)\[([^=]*)\]\s*=(?!=)")  # `position[id] = ...`
 # `__out__` as an identifier; string literals are matched (and skipped) so that their text is left alone.
 _OUT = re.compile(r'r?"(?:[^"\\\n]|\\.)*"|(?<![A-Za-z0-9_])(__out__)(?![A-Za-z0-9_])')
+
+
+def _indexed(column: tuple[ast.Expr, ...]) -> tuple[ast.Ref, int] | None:
+    """`a[K], a[K+1], ..., a[K+N-1]`: (`a`, K), a reply frame's argument written from an array
+    parameter by the loop variable, which import writes back as `a[var]`."""
+    first = column[0]
+    if not (isinstance(first, ast.Index) and isinstance(first.base, ast.Ref) and isinstance(first.index, ast.IntLit)):
+        return None
+    name, start = first.base.name, first.index.value
+    for number, arg in enumerate(column, start):
+        if not (isinstance(arg, ast.Index) and isinstance(arg.base, ast.Ref) and arg.base.name == name
+                and isinstance(arg.index, ast.IntLit) and arg.index.value == number):
+            return None
+    return first.base, start
+
+
+def _keys(value: JValue | None) -> set[str]:
+    """The member names of a JSON object; none of anything else."""
+    return {key.value for key, _ in value.members} if isinstance(value, JObject) else set()
 
 
 def _present(items: list[Any]) -> tuple[Any, ...]:

@@ -223,7 +223,10 @@ none is given and which the checks and the link budget use. It is read where sta
 is read (arguments, format values, conditions, post-actions, outputs, inputs), but
 not where a constant is needed (an array's size, a range, a delay, a timeout, a
 frequency, a constant), since its value is not known then; a connection's `baud`
-may be an int setting. Wrong: `setting BAUD: int` (no default), `delay WAIT ms`,
+may be an int setting. A frame's own expressions read only its parameters, as it is
+checked once for every primitive that names it: give the frame a parameter and pass
+the setting where a primitive names it (`frame dxl(id: int)` with `field id "B" = id`,
+then `frame dxl(SERVO_ID)`). Wrong: `setting BAUD: int` (no default), `delay WAIT ms`,
 `setting RATE: float = 57600.0` with `baud RATE`. Right:
 `setting BAUD: int in 9600..1000000 = 57600` with `baud BAUD`, and
 `setting WAIT: int = 20` read as `pack "BH" (0x05, WAIT)`."""),
@@ -495,6 +498,14 @@ triggers any number of outputs, delivered in order after its calls:
 The state variable is never read by any expression and never written by a
 post-action: nothing uses it. (State that post-actions write is the host's to
 read, through `robot.state`, even when no expression reads it.)"""),
+    ("W104", "hidden-state", """
+An input's expressions read the fields of its adapter and the state variables
+and settings; a field with the name of a state variable or a setting hides it, so
+the name there is always the field's value, the framework's, and the state is
+not read. Rename the state variable (or setting), or the field: `adapter Goal {
+target: float }` beside `state position: float`. An adapter of the standard
+library (`JointState`, `Twist`, ...) is not warned of: its fields are a message's,
+and state named after them (a servo's `position`) is read there by design."""),
     ("W201", "nonstandard-baud", """
 The baud rate is not one of the standard rates (300 ... 4000000). Some serial
 adapters round a non-standard rate or refuse it."""),

@@ -51,6 +51,8 @@ def _document(model: m.Model) -> JsonObject:
         ("constants", {name: _value(v) for name, v in model.constants.items()} or None),
         ("enums", dict(model.enums) or None),
         ("tables", {t.name: [[k, _value(v)] for k, v in t.entries] for t in model.tables.values()} or None),
+        ("constantDocs", {**model.constant_docs, **{t.name: t.doc for t in model.tables.values() if t.doc}} or None),
+        ("enumDocs", dict(model.enum_docs) or None),
         ("settings", [_setting(s) for s in model.settings.values()] or None),
         ("stateVariables", [_state(s) for s in model.states.values()]),
         ("connections", connections),

@@ -30,6 +30,7 @@ from rdisc import engine
 from rdisc import lower as lowering
 from rdisc.emit import python_support as support
 from rdisc.emit.python_expr import Chain, Compiler, Paren, Py, lines, literal, quoted, table_name
+from rdisc.emit.python_expr import call as function_call
 from rdisc.emit.writer import Writer, printable
 from rdisc.engine import carry
 from rdisc.lower import lower
@@ -270,7 +271,7 @@ class _Driver:
             if used & {prm.name for prm in params}:
                 targets = [local[prm.name] if prm.name in used else "_" for prm in params]
                 w.line(f"({targets[0]},) = args" if len(targets) == 1 else f"{', '.join(targets)} = args")
-            _emit(w, "return bool(", self.exprs.expr(e, local), ")")
+            _emit(w, "return ", function_call("bool", [self.exprs.expr(e, local)]))  # broken inside its own `(`
 
     # -- the whole module ---------------------------------------------------------------------
 

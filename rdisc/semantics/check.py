@@ -139,6 +139,8 @@ class _Checker:
             constants={n: v for n, v in constants.items() if v is not None},
             tables={n: t for n, t in tables.items() if t is not None},
             enums=enums,
+            constant_docs={n: d.doc for n, d in self.s.constants.items() if d.doc and constants.get(n) is not None},
+            enum_docs={n: d.doc for n, d in self.s.enums.items() if d.doc and n in enums},
             settings=settings,
             links=links,
             joints=joints,
@@ -295,8 +297,11 @@ class _Checker:
             return  # an adapter's open array: its size is checked when it runs
         if isinstance(source, m.Array) or isinstance(target, m.Array):
             element = unify(source, target) == target
+            kind = target.element if isinstance(target, m.Array) else target
+            example = f"{kind.value}[{target.size if isinstance(target, m.Array) else 6}]"  # the target's own type
             self.d.report("E401", span, f"{into} takes {describe(target)}, but this is {describe(source)}",
-                          help="an array's size and type are fixed: `int[6]` takes an int[6]"
+                          help=f"an array's size and type are fixed: `{example}` takes "
+                          f"{'an' if kind is Type.INT else 'a'} {example}"
                           if not element and not (isinstance(target, m.Array) and target.size == 0) else None)
             return
         if (source, target) == (Type.FLOAT, Type.INT):
@@ -664,9 +669,11 @@ class _Checker:
             # A count only with scalar values (E401 for arrays): out[i] is the array of the i-th values.
             collected = tuple(m.Array(t, count) if isinstance(t, Type) else t for t in reply) \
                 if count and reply is not None else reply
+            refused = isinstance(replies_clause, ast.Replies) and not count  # reported: `out` unknown, no cascade
             action_env = self.env_with(
                 scope, "in a post-action", "`out`, parameters and state variables",
-                reply=collected if decodings else None, reply_note=note, reply_known=reply is not None,
+                reply=None if refused else collected if decodings else None, reply_note=note,
+                reply_known=reply is not None and not refused,
             )
             actions = self.actions(action_blocks[0], action_env, {p.name for p in params})
         expect = self.expect(decl, scope, reply, bool(decodings))
@@ -1544,9 +1551,14 @@ class _Checker:
                 return None
             if not self.typer.is_constant(over):
                 name = low_expr.name if isinstance(low_expr, ast.Ref) else "values"
+                size = over.type.size or 6  # an open size: any, so one to give it
+                indexed = f"for i in 0..{size - 1} {{ ... {name}[i] ... }}"
+                sized = "" if over.type.size else \
+                    f"its rounds are fixed when the description is checked: give `{name}` a size " \
+                    f"(`{over.type.element.value}[{size}]`), then "
                 self.d.report("E212", low_expr.span, "a loop goes over a constant array or a range, not an array "
-                              "known only when it runs", help="loop over its indexes and read its elements: "
-                              f"`for i in 0..{over.type.size - 1} {{ ... {name}[i] ... }}`")
+                              "known only when it runs", help=f"{sized}loop over its indexes and read its "
+                              f"elements: `{indexed}`")
                 return None
             values = self.typer.constant(over)
             assert isinstance(values, tuple)  # a constant array's value
@@ -1732,11 +1744,34 @@ class _Checker:
                                  (), decl.doc, decl.span)
         scope = {f.name: (Scope.FIELD, f.type) for f in adapter.fields}
         env = self.env_with(scope, "in an input", f"the fields of `{adapter.name}` and state variables")
+        self.hidden_state(decl, adapter, scope)
         target = self.s.interfaces.get(decl.call.target.text)
         args = self.call(decl.call, interface_params.get(decl.call.target.text), env, "interface",
                          target.name if target else None)
         return m.DomainInput(decl.name.text, m.AdapterRef(adapter.name), m.InterfaceRef(decl.call.target.text),
                              args, decl.doc, decl.span)
+
+    def hidden_state(self, decl: ast.InputDecl, adapter: m.Adapter, fields: Names) -> None:
+        """W104 where an input reads a name that is both a field of its adapter and a state
+        variable (or setting): the field hides it, once a name. Not for a standard adapter, whose
+        fields are a message's (JointState's `position`), read by design beside state so named."""
+        declared = self.s.adapters.get(adapter.name)
+        if declared is None or id(declared) in self.s.standard:
+            return
+        seen: set[str] = set()
+        for ref in _refs(decl.call.args):
+            if ref.name not in fields or ref.name in seen:
+                continue
+            hidden = self.s.states.get(ref.name) or self.s.settings.get(ref.name)
+            if hidden is None:
+                continue
+            seen.add(ref.name)
+            kind = "state variable" if isinstance(hidden, ast.StateDecl) else "setting"
+            self.d.report("W104", ref.span, f"`{ref.name}` here is the field of adapter `{adapter.name}`, "
+                          f"which hides {kind} `{ref.name}`",
+                          labels=(Label(hidden.name.span, f"{kind} `{ref.name}`, not read by input "
+                                        f"`{decl.name.text}`"),),
+                          help=f"rename the {kind} to read it in this input, or the field")
 
     def output(self, decl: ast.OutputDecl, adapters: dict[str, m.Adapter]) -> m.DomainOutput:
         adapter = adapters.get(decl.adapter.text)
@@ -1795,6 +1830,18 @@ class _Checker:
             if name not in self.typer.reads and name not in written and known and id(state) in self.main_decls:
                 self.d.report("W103", state.name.span, f"state variable `{name}` is never used",
                               help="read it in an expression, write it in a post-action, or remove it")
+
+
+def _refs(node: object) -> Iterator[ast.Ref]:
+    """The names an expression (or a tuple of them) reads, in order."""
+    if isinstance(node, ast.Ref):
+        yield node
+    elif isinstance(node, tuple):
+        for item in node:
+            yield from _refs(item)
+    elif hasattr(node, "__dataclass_fields__") and not isinstance(node, Span):
+        for name in node.__dataclass_fields__:
+            yield from _refs(getattr(node, name))
 
 
 def _in_range(value: object, low: float, high: float) -> bool:

@@ -96,7 +96,9 @@ class FrameRules:
 
     def frame(self, decl: ast.FrameDecl, params: tuple[m.Parameter, ...]) -> m.Frame:
         scope = {p.name: (Scope.PARAM, p.type) for p in params if p.type is not None}
-        env = Env(scope, "in a frame", "its parameters")
+        env = Env(scope, "in a frame", "its parameters",
+                  setting_note=f"a frame reads only its parameters: give `{decl.name.text}` one and pass the setting "
+                  f"where a primitive names the frame, `frame {decl.name.text}(SETTING)`")
         direct = tuple(i for i in decl.items if not isinstance(i, (ast.FrameSide, ast.FrameStuff, ast.FrameEscape)))
         stuffs = [i for i in decl.items if isinstance(i, ast.FrameStuff)]
         for extra in stuffs[1:]:

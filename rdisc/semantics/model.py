@@ -974,6 +974,9 @@ class Model:
     constants: dict[str, Value] = field(default_factory=dict)
     enums: dict[str, dict[str, int]] = field(default_factory=dict)
     tables: dict[str, Table] = field(default_factory=dict)
+    # The doc comments of constants and enums, by name: their values are plain, with no place for one.
+    constant_docs: dict[str, str] = field(default_factory=dict)
+    enum_docs: dict[str, str] = field(default_factory=dict)
     settings: dict[str, Setting] = field(default_factory=dict)
     links: dict[str, Link] = field(default_factory=dict)
     joints: dict[str, Joint] = field(default_factory=dict)  # parents before children

@@ -2146,6 +2146,8 @@ def _init_Model(
     constants: Any = DEFAULT,
     enums: Any = DEFAULT,
     tables: Any = DEFAULT,
+    constant_docs: Any = DEFAULT,
+    enum_docs: Any = DEFAULT,
     settings: Any = DEFAULT,
     links: Any = DEFAULT,
     joints: Any = DEFAULT,
@@ -2163,6 +2165,8 @@ def _init_Model(
     _set(self, "constants", {} if constants is FACTORY else constants)
     _set(self, "enums", {} if enums is FACTORY else enums)
     _set(self, "tables", {} if tables is FACTORY else tables)
+    _set(self, "constant_docs", {} if constant_docs is FACTORY else constant_docs)
+    _set(self, "enum_docs", {} if enum_docs is FACTORY else enum_docs)
     _set(self, "settings", {} if settings is FACTORY else settings)
     _set(self, "links", {} if links is FACTORY else links)
     _set(self, "joints", {} if joints is FACTORY else joints)
@@ -2170,7 +2174,7 @@ def _init_Model(
 
 
 def _repr_Model(self: Any) -> str:
-    return f"{self.__class__.__qualname__}(robot={self.robot!r}, states={self.states!r}, connections={self.connections!r}, primitives={self.primitives!r}, interfaces={self.interfaces!r}, adapters={self.adapters!r}, inputs={self.inputs!r}, outputs={self.outputs!r}, frames={self.frames!r}, constants={self.constants!r}, enums={self.enums!r}, tables={self.tables!r}, settings={self.settings!r}, links={self.links!r}, joints={self.joints!r}, transmissions={self.transmissions!r})"
+    return f"{self.__class__.__qualname__}(robot={self.robot!r}, states={self.states!r}, connections={self.connections!r}, primitives={self.primitives!r}, interfaces={self.interfaces!r}, adapters={self.adapters!r}, inputs={self.inputs!r}, outputs={self.outputs!r}, frames={self.frames!r}, constants={self.constants!r}, enums={self.enums!r}, tables={self.tables!r}, constant_docs={self.constant_docs!r}, enum_docs={self.enum_docs!r}, settings={self.settings!r}, links={self.links!r}, joints={self.joints!r}, transmissions={self.transmissions!r})"
 
 
 def _eq_Model(self: Any, other: Any) -> Any:
@@ -2188,6 +2192,8 @@ def _eq_Model(self: Any, other: Any) -> Any:
             self.constants,
             self.enums,
             self.tables,
+            self.constant_docs,
+            self.enum_docs,
             self.settings,
             self.links,
             self.joints,
@@ -2205,6 +2211,8 @@ def _eq_Model(self: Any, other: Any) -> Any:
             other.constants,
             other.enums,
             other.tables,
+            other.constant_docs,
+            other.enum_docs,
             other.settings,
             other.links,
             other.joints,
@@ -2227,6 +2235,8 @@ def _hash_Model(self: Any) -> int:
         self.constants,
         self.enums,
         self.tables,
+        self.constant_docs,
+        self.enum_docs,
         self.settings,
         self.links,
         self.joints,
@@ -2954,6 +2964,8 @@ WRITTEN: dict[str, Written] = {
             ("constants", FieldSpec(MISSING, dict, True, True)),
             ("enums", FieldSpec(MISSING, dict, True, True)),
             ("tables", FieldSpec(MISSING, dict, True, True)),
+            ("constant_docs", FieldSpec(MISSING, dict, True, True)),
+            ("enum_docs", FieldSpec(MISSING, dict, True, True)),
             ("settings", FieldSpec(MISSING, dict, True, True)),
             ("links", FieldSpec(MISSING, dict, True, True)),
             ("joints", FieldSpec(MISSING, dict, True, True)),

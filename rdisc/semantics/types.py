@@ -68,6 +68,7 @@ class Env:
     reply: tuple[AnyType, ...] | None = None  # types of out[i], in post-actions
     reply_note: str | None = None  # why `out` is not available, when it is not
     reply_known: bool = True  # False when the reply's template was already reported
+    setting_note: str | None = None  # how to read a setting here after all, when one is refused (E213)
 
 
 def unify(a: T, b: T) -> T:
@@ -183,8 +184,8 @@ class Typer:
         if found is None and e.name in self.settings:
             self.diagnostics.report(
                 "E213", e.span, f"setting `{e.name}` is given only when connecting, so it cannot stand {env.where}",
-                help="a setting is read where state is: in arguments, format values, conditions, post-actions "
-                "and outputs; a connection's `baud` may be one",
+                help=env.setting_note or "a setting is read where state is: in arguments, format values, "
+                "conditions, post-actions and outputs; a connection's `baud` may be one",
             )
             return m.Var(e.name, Scope.STATE, None, e.span)  # type: ignore[arg-type]
         if found is None:

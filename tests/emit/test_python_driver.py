@@ -25,6 +25,7 @@ from devices.create import DRIVE, FULL, SENSORS, START, STOP, TABLE_4_3
 
 from rdisc.compile import compile_path
 from rdisc.emit.python import to_python
+from tests.support.ports import ScriptedPort
 
 REPO = Path(__file__).resolve().parents[2]
 EXAMPLES = REPO / "examples"
@@ -723,3 +724,32 @@ def test_one_thread_a_connection_and_each_stops_on_close(sink) -> None:
         robot.close()
     assert not any(t.is_alive() for t in threads)
     assert io.items[-1] == ("write", "wire", b"\x00\x00")  # the terminate hook
+
+
+def test_a_long_expect_is_broken_inside_bool_parentheses(tmp_path) -> None:
+    """A condition too long for a line is broken inside `bool(...)`'s own parentheses: no second
+    pair, which ruff calls extraneous (UP034). The driver still holds the reply by it."""
+    source = tmp_path / "long.rdis"
+    source.write_text('robot r { author "tests" }\nconnection port: serial { baud 115200 }\n'
+                      'primitive q() on port pack "B" (1) unpack "BBBBBB" expect out[0] == 0x55 and out[1] == 0x66'
+                      ' and out[2] == 0x77 and out[3] == 0x12 and out[4] == 0x13 and out[5] == 0x14\n',
+                      encoding="utf-8")
+    path = generate(source, tmp_path, "long_expect")
+    assert """\
+    return bool(
+        reply[0] == 85
+        and reply[1] == 102
+        and reply[2] == 119
+        and reply[3] == 18
+        and reply[4] == 19
+        and reply[5] == 20,
+    )
+""" in path.read_text(encoding="utf-8")
+    done = subprocess.run([sys.executable, "-m", "ruff", "check", "--isolated", "--no-cache", "--extend-select", "UP",
+                           str(path)], capture_output=True, text=True, check=False)
+    assert done.returncode == 0, done.stdout
+    driver = load(path)
+    with driver.connect(ScriptedPort(bytes.fromhex("55 66 77 12 13 14 55 66 77 12 13 15")), threads=False) as robot:
+        robot.primitives.q()
+        with pytest.raises(driver.RdisProtocolError):
+            robot.primitives.q()

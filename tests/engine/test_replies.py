@@ -229,3 +229,23 @@ def test_json_printer_dump_and_budget(tmp_path: Path) -> None:
     assert '"replyFrames": [' in built
     printed = print_module(parse("bus.rdis", BUS, Diagnostics()))
     assert "    replies id in IDS frame status(id)\n" in printed
+
+
+def test_build_and_import_in_turn_keep_an_array_parameter_indexed(tmp_path: Path) -> None:
+    """A reply frame's argument read from an array parameter by the loop variable comes back
+    as `ids[reply]`: build, import and build again gave the same JSON, and the source stays."""
+    from rdisc.json_import import read
+
+    text = """\
+robot r { author "tests" }
+connection port: serial { baud 115200 }
+frame g(id: int in 0..9) { header "\\xAA"  field id "B" = id  length "B" = payload  payload }
+primitive varying(ids: int[2]) on port pack "B" (1) replies i in 0..1 frame g(ids[i]) unpack "B"
+primitive later(ids: int[3]) on port pack "B" (1) replies i in 1..2 frame g(ids[i]) unpack "B"
+"""
+    _, built = through_json(text, tmp_path, "grows")
+    imported = print_module(read("grows.json", built, Diagnostics()))
+    assert "    replies reply in 0..1 frame g(ids[reply])\n" in imported
+    assert "    replies reply in 1..2 frame g(ids[reply])\n" in imported
+    _, again = through_json(imported, tmp_path, "again")
+    assert again == built

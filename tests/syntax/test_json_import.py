@@ -521,3 +521,36 @@ def test_appendix_b_checks_and_its_build_keeps_what_it_says(tmp_path: Path) -> N
     assert to_json(again.model) == built
     (velocity,) = json.loads(built)["domainInterfaces"]
     assert velocity["parameters"] == ["angular", "linear"]
+
+
+def test_doc_comments_of_constants_tables_and_enums_survive_build_and_import(tmp_path: Path) -> None:
+    """Their JSON values are plain, so their doc comments travel beside them, by name."""
+    from rdisc.emit.canonical import to_json
+
+    source = tmp_path / "d.rdis"
+    source.write_text("""\
+robot r { author "tests" }
+connection port: serial { baud 115200 }
+/// The servo IDs.
+const IDS = [1, 2]
+/// Baud rate codes.
+const BAUD_CODE = { 9600: 1, 19200: 2 }
+/// The commands.
+enum Cmd { a = 1, b = 2 }
+primitive q() on port pack "BBB" (Cmd.a, IDS[0], BAUD_CODE[9600])
+""", encoding="utf-8")
+    compilation = compile_path(str(source))
+    assert compilation.model is not None
+    built = json.loads(to_json(compilation.model))
+    assert (built["constantDocs"], built["enumDocs"]) == (
+        {"IDS": "The servo IDs.", "BAUD_CODE": "Baud rate codes."}, {"Cmd": "The commands."})
+    module, diagnostics = imported(to_json(compilation.model))
+    assert module is not None and not diagnostics.items
+    text = print_module(module)
+    assert "/// The servo IDs.\nconst IDS = [1, 2]\n" in text
+    assert "/// Baud rate codes.\nconst BAUD_CODE = {" in text
+    assert "/// The commands.\nenum Cmd {" in text
+    built["enumDocs"]["Nothing"] = "A doc of no enum."
+    module, diagnostics = imported(json.dumps(built))
+    assert [(d.code, d.message) for d in diagnostics.items] == [
+        ("E008", "`enumDocs` names `Nothing`, which the description does not declare")]
