@@ -124,7 +124,7 @@ def test_a_bad_crc_in_either_layout_is_refused(kind: str, tmp_path: Path) -> Non
         broken = frame[:-3] + bytes([frame[-3] ^ 1]) + frame[-2:]
         port = ScriptedPort(broken)
         with implementation_of(kind, VESC, tmp_path, "vesc").connect(port, threads=False) as robot:
-            with pytest.raises(Exception, match=r"^firmware: vesc: checksum b'.*' does not match") as raised:
+            with pytest.raises(Exception, match=r"^firmware: vesc: checksum [0-9a-f]{2} [0-9a-f]{2} does not match") as raised:
                 robot.call_primitive("firmware")
             assert type(raised.value).__name__ == "RdisProtocolError"
 
@@ -137,8 +137,8 @@ def test_optional_parts_are_read_when_they_come_and_checked(kind: str, tmp_path:
         robot.call_primitive("gga")
         assert robot.state["talker"] == "GN"
         port.script = b"$GLGGA,2*56\r\n"  # a checksum that came is checked
-        with pytest.raises(Exception, match="^gga: sentence: checksum b'56' does not match the reply, which sums "
-                                            "to b'54'$") as raised:
+        with pytest.raises(Exception, match='^gga: sentence: checksum "56" does not match the reply, which sums '
+                                            'to "54"$') as raised:
             robot.call_primitive("gga")
         assert type(raised.value).__name__ == "RdisProtocolError"
         port.written.clear()
@@ -155,8 +155,8 @@ def test_after_a_sized_payload_one_byte_tells_whether_they_came(kind: str, tmp_p
         assert robot.state["value"] == 0x1234
         robot.call_primitive("read")
         assert robot.state["value"] == 0x5678
-        with pytest.raises(Exception, match="^read: tagged: checksum b'G' does not match the reply, which sums "
-                                            "to b'F'$") as raised:
+        with pytest.raises(Exception, match="^read: tagged: checksum 47 does not match the reply, which sums "
+                                            "to 46$") as raised:
             robot.call_primitive("read")
         assert type(raised.value).__name__ == "RdisProtocolError"
     assert bytes(port.written) == bytes.fromhex("aa 01 07 55 07 0d") * 3

@@ -2156,7 +2156,9 @@ class Frame:
                 expected = part.encode(part.checksum(request + covered if part.with_request else covered))
                 if (chunk if part.struct is not None else chunk.upper()) != expected:
                     error = ChecksumError if measured else FrameError
-                    raise error(f"{self.name}: checksum {chunk!r} does not match the reply, which sums to {expected!r}")
+                    came, summed = (f'"{chunk.decode("latin-1")}"', f'"{expected.decode("latin-1")}"') \
+                        if part.struct is None else (chunk.hex(" "), expected.hex(" "))  # text digits, or bytes in hex
+                    raise error(f"{self.name}: checksum {came} does not match the reply, which sums to {summed}")
         if side.payload < 0:
             return b""
         payload = raw[starts[side.payload] : starts[side.payload + 1]]
