@@ -183,6 +183,17 @@ class Bridge:
                 w.line("),")
         w.line("}")
 
+    def subscriber(self, w: Writer) -> None:
+        """`subscriber(name, read)`: an input's message callback for either ROS, which calls the
+        input with the message's values and reports what fails (the node keeps serving)."""
+        with w.block("def subscriber(name: str, read: Callable[[Any], dict[str, Any]]) -> Callable[[Any], None]:"):
+            with w.block("def received(msg: Any) -> None:"):
+                with w.block("try:"):
+                    w.line("robot.call_input(name, **read(msg))")
+                with w.block("except Exception as err:  # noqa: BLE001 - reported, and the node keeps serving"):
+                    w.line("on_error(err)")
+            w.line("return received")
+
     def on_output(self, w: Writer, now: str, publish: str) -> None:
         """`on_output`: an output as its message, published (`publish` formatted with `publisher`
         and `msg`); a message with a header is stamped here, and only here, for both ROS versions:

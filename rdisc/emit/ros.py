@@ -184,13 +184,7 @@ class _Ros1(Bridge):
                 w.blank()
                 w.line("rospy.Timer(rospy.Duration(1.0 / joint_states_rate), publish_joint_states)")
                 w.blank()
-            with w.block("def subscriber(name: str, read: Callable[[Any], dict[str, Any]]) -> Callable[[Any], None]:"):
-                with w.block("def received(msg: Any) -> None:"):
-                    with w.block("try:"):
-                        w.line("robot.call_input(name, **read(msg))")
-                    with w.block("except Exception as err:  # noqa: BLE001 - reported, and the node keeps serving"):
-                        w.line("on_error(err)")
-                w.line("return received")
+            self.subscriber(w)
             w.blank()
             if self.commanded:
                 w.line('rospy.Subscriber("joint_command", sensor_msgs_msg.JointState,')

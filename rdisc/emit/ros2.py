@@ -221,13 +221,7 @@ class _Ros2(Bridge):
                         w.line("except Exception as err:  # noqa: BLE001 - reported, and the node keeps publishing")
                         w.line("    on_error(err)")
             w.blank()
-            with w.block("def subscriber(name: str, read: Callable[[Any], dict[str, Any]]) -> Callable[[Any], None]:"):
-                with w.block("def received(msg: Any) -> None:"):
-                    with w.block("try:"):
-                        w.line("robot.call_input(name, **read(msg))")
-                    with w.block("except Exception as err:  # noqa: BLE001 - reported, and the node keeps serving"):
-                        w.line("on_error(err)")
-                w.line("return received")
+            self.subscriber(w)
             w.blank()
             with w.block("def opened() -> None:"):
                 w.line('"""The subscriptions, once the startup hooks are done."""')
