@@ -125,21 +125,13 @@ def run_command(args: argparse.Namespace, robot: Robot, prog: str, sim: Simulato
     except _Terminated:
         status = EXIT_SIGTERM
     finally:
-        while not _shutting_down[0]:  # from here on a signal must not cut the terminate hooks short
-            try:
-                _shutting_down[0] = True
-            except KeyboardInterrupt:
-                status = EXIT_SIGINT
-            except _Terminated:
-                status = EXIT_SIGTERM
+        status = _shutting_down_with(status)  # from here on a signal must not cut the terminate hooks short
         try:
             robot.close()
             if recorder is not None:
                 recorder.finish()
         finally:
-            interrupted = status in (EXIT_SIGINT, EXIT_SIGTERM)
-            for signum, handler in previous.items():  # after a signal, later ones are ignored to the exit
-                signal.signal(signum, signal.SIG_IGN if interrupted else handler)
+            _restore_handlers(previous, status)
     return status
 
 
@@ -338,19 +330,32 @@ def command_line(run: Callable[[], int]) -> int:
     except _Terminated:
         status = EXIT_SIGTERM
     finally:
-        while not _shutting_down[0]:  # a signal from here on is too late to end it: it is ignored
-            try:
-                _shutting_down[0] = True
-            except KeyboardInterrupt:
-                status = EXIT_SIGINT
-            except _Terminated:
-                status = EXIT_SIGTERM
-        interrupted = status in (EXIT_SIGINT, EXIT_SIGTERM)
-        for signum, handler in previous.items():
-            signal.signal(signum, signal.SIG_IGN if interrupted else handler)
-        if mask is not None and not interrupted:
+        status = _shutting_down_with(status)  # a signal from here on is too late to end it: it is ignored
+        if not _restore_handlers(previous, status) and mask is not None:
             signal.pthread_sigmask(signal.SIG_SETMASK, mask)
     return status
+
+
+def _shutting_down_with(status: int) -> int:
+    """Mark the shutdown begun, so that later signals are ignored, and the status to end with: a
+    signal that lands before the mark is taken decides it (hence the loop)."""
+    while not _shutting_down[0]:
+        try:
+            _shutting_down[0] = True
+        except KeyboardInterrupt:
+            status = EXIT_SIGINT
+        except _Terminated:
+            status = EXIT_SIGTERM
+    return status
+
+
+def _restore_handlers(previous: dict[int, Any], status: int) -> bool:
+    """The handlers found put back, unless a signal ended the run (then later ones are ignored to
+    the exit); whether one did."""
+    interrupted = status in (EXIT_SIGINT, EXIT_SIGTERM)
+    for signum, handler in previous.items():
+        signal.signal(signum, signal.SIG_IGN if interrupted else handler)
+    return interrupted
 
 
 def _unblock_signals() -> set[int | signal.Signals] | None:
