@@ -616,9 +616,10 @@ class _Driver:
                 tests = []
                 for name, prm in zip(names, written.params):
                     test = f"type({name}) is not {_PY_TYPES[prm.type] if isinstance(prm.type, Type) else 'tuple'}"
-                    if prm.low is not None and prm.high is not None:
-                        test += (f" or not {literal(prm.low, prm.type).text} <= {name} <= "
-                                 f"{literal(prm.high, prm.type).text}")
+                    if prm.low is not None and prm.high is not None:  # bytes: their length
+                        measured, bound = (f"len({name})", Type.INT) if prm.type == Type.BYTES else (name, prm.type)
+                        test += (f" or not {literal(prm.low, bound).text} <= {measured} <= "
+                                 f"{literal(prm.high, bound).text}")
                     tests.append(test)
                 together = f"if {' or '.join(tests)}:"
                 for test in [] if not tests else [together] if len(together) <= w.width() - 8 else [

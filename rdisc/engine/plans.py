@@ -221,14 +221,16 @@ def _sent_at_once(plan: Primitive) -> bool:
 
 def plainly_given(args: Args, kinds: tuple[type, ...], bounds: tuple[tuple[int, Any, Any], ...]) -> bool:
     """Whether a one-step request may take these values: one of each parameter's own type, those
-    with a range within it (anything else goes the general way, which says what is wrong)."""
+    with a range within it, bytes by their length (anything else goes the general way, which says
+    what is wrong)."""
     if len(args) != len(kinds):
         return False
     for value, kind in zip(args, kinds):
         if type(value) is not kind:
             return False
     for i, low, high in bounds:
-        if not low <= args[i] <= high:
+        value = args[i]
+        if not low <= (len(value) if type(value) is bytes else value) <= high:
             return False
     return True
 

@@ -194,3 +194,26 @@ def test_a_primitive_of_no_parameters_and_a_computed_value_is_written_in_one_ste
     with implementation_of(kind, NO_PARAMETERS, tmp_path, f"computed_{kind}").connect(port, threads=False) as robot:
         robot.call_primitive("p1")
     assert port.writes == [b"\x01\xff\xff\x00\x00"]
+
+
+BYTES_RANGE = """\
+robot bytes_range { author "tests" }
+connection c0: serial { baud 9600 }
+primitive p0(a0: int, a1: bytes in 0..2) on c0 pack "<b" (a0)
+"""
+
+
+@pytest.mark.parametrize("kind", ["runtime", "driver"])
+def test_a_bytes_parameters_range_is_of_its_length_in_one_step_too(tmp_path: Path, kind: str) -> None:
+    """Found by the differential test: the runtime's one step compared the range with the bytes
+    themselves (a TypeError), the driver's compared them as bytes; the range is of their length."""
+    from tests.engine.test_one_engine import implementation_of
+
+    port = ScriptedPort()
+    with implementation_of(kind, BYTES_RANGE, tmp_path, f"bytes_range_{kind}").connect(port, threads=False) as robot:
+        robot.call_primitive("p0", 5, b"")
+        robot.call_primitive("p0", 6, b"\xff\xff")
+        with pytest.raises(Exception, match=r"^p0: parameter a1 has 3 bytes, outside 0\.\.2$") as raised:
+            robot.call_primitive("p0", 7, b"abc")
+    assert type(raised.value).__name__ == "RdisValueError"
+    assert port.writes == [b"\x05", b"\x06"]
