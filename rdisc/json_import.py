@@ -335,7 +335,7 @@ _CONNECTION = (
 _PRIMITIVE = (
     "name", "parameters", "parameterTypes", "parameterRanges", "parameterDefaults", "parameterUnits", "connection",
     "lines", "pack", "format", "formatArgs", "unpack", "regex", "recordsUntil", "frame", "skipUnmatched",
-    "replyTable", "timeout", "retry", "replies", "replyFrames", "replyList", "expect", "postActions", "doc",
+    "replyTable", "timeout", "retry", "replies", "replyFrames", "replyList", "error", "expect", "postActions", "doc",
 )  # fmt: skip
 _FRAME = ("name", "parameters", "parameterTypes", "parameterRanges", "parameterDefaults", "parameterUnits",
           "request", "reply", "moreRequests", "moreReplies",
@@ -556,6 +556,23 @@ class _Importer:
         assigns = _present([self.post_action(a) for a in self.array(r.get("postActions"), "`postActions`")])
         actions = ast.Actions(assigns, r["postActions"].span) if assigns else None
         return ast.ListedReply(decoding, obj.span, self.framed(r.get("frame")), expect, actions)
+
+    def error_reply(self, v: JValue) -> ast.ErrorReply | None:
+        """`"error"`: the reply the device may send instead: its frame, marker, `unpack` and `codes`."""
+        obj = self.object(v, "`error`")
+        if obj is None:
+            return None
+        e = self.members(obj, "`error`", ("frame", "marker", "unpack", "codes"))
+        template = self.string(e.get("unpack"), "`unpack`")
+        if template is None:
+            if "unpack" not in e:
+                self.error(obj.span, "an error reply has `unpack`")
+            return None
+        marker = self.string(e.get("marker"), "`marker`")
+        codes = self.ident(e["codes"], "`codes`") if "codes" in e else None
+        decoding = ast.Decoding("unpack", ast.StrLit(template.value, template.span), template.span)
+        return ast.ErrorReply(decoding, obj.span, self.framed(e.get("frame")),
+                              None if marker is None else ast.StrLit(marker.value, marker.span), codes)
 
     def reply_table(self, obj: JObject) -> ast.ReplyTable:
         t = self.members(obj, "`replyTable`", ("key", "tag", "each", "length", "cases"))
@@ -905,6 +922,10 @@ class _Importer:
         if "replyList" in m:
             listed = _present([self.listed_reply(r) for r in self.array(m["replyList"], "`replyList`")])
             clauses.append(ast.ReplyList(tuple(listed), m["replyList"].span))
+        if "error" in m:
+            error = self.error_reply(m["error"])
+            if error is not None:
+                clauses.append(error)
         actions = self.array(m.get("postActions"), "`postActions`")
         if actions:  # none is the default, left unsaid
             assigns = _present([self.post_action(a) for a in actions])

@@ -40,7 +40,7 @@ from rdisc.semantics import model as m
 from rdisc.semantics.evaluate import prepare
 from rdisc.semantics.ros import header_frames
 
-__all__ = ["Call", "Code", "Connection", "Device", "Frame", "FrameUse", "Gives", "Hook", "Input", "Interface",
+__all__ = ["Call", "Code", "Connection", "Device", "ErrorReply", "Frame", "FrameUse", "Gives", "Hook", "Input", "Interface",
            "Output", "Plans", "Primitive", "Written", "frame", "lower"]
 
 Item = tuple[str, m.Expr, m.AnyType | None]
@@ -143,10 +143,23 @@ class LineReply:
 
 
 @dataclass(frozen=True, slots=True, eq=False)
+class ErrorReply:
+    """engine.ErrorReply: the reply that may come instead, raised with its code's name."""
+
+    decoder: Construct[engine.Unpack]
+    marker: bytes = b""
+    frame: FrameUse | None = None
+    codes: str = ""
+    names: dict[int, str] = dataclasses.field(default_factory=dict)
+
+
+@dataclass(frozen=True, slots=True, eq=False)
 class FixedReply:
     """engine.FixedReply: the bytes the decoder takes, no frame."""
 
     decoder: Construct[engine.Unpack]
+    _: KW_ONLY
+    error: ErrorReply | None = None
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -156,6 +169,7 @@ class FramedReply:
     decoder: Construct[engine.Unpack] | Construct[engine.Match] | None = None
     _: KW_ONLY
     skip: bool = False
+    error: ErrorReply | None = None
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -452,11 +466,19 @@ class _Lowering:
             frames = self.reply_frames(p)
             each = _one(decoder, frames[0] if frames else use, p.skip_unmatched, p.records)
             return SeveralReplies(len(frames) or p.replies, each, frames)
+        error = None if p.error is None else self.error(p.error, p.params)
         if decoder is not None:
-            return _one(decoder, use, p.skip_unmatched, p.records)
+            return _one(decoder, use, p.skip_unmatched, p.records, error)
         if use is not None and _acknowledges(use.frame):
-            return FramedReply(skip=p.skip_unmatched)
+            return FramedReply(skip=p.skip_unmatched, error=error)
         return NO_REPLY
+
+    def error(self, e: m.ErrorReply, params: tuple[m.Parameter, ...]) -> ErrorReply:
+        """The reply that may come instead (`error ...`): its enum's members by value."""
+        decoder = decoding(e.decoding)
+        assert decoder is not None and decoder.kind is engine.Unpack  # the checker's
+        names = {} if e.codes is None else {value: member for member, value in self.model.enums[e.codes].items()}
+        return ErrorReply(decoder, e.marker.encode("latin-1"), self.frame_use(e.frame, params), e.codes or "", names)
 
     def reply_frames(self, p: m.Primitive) -> tuple[FrameUse, ...]:
         """`replies N`'s own frames, made once a primitive (its table's entries share them)."""
@@ -611,20 +633,21 @@ def _folded(written: Written, use: FrameUse, size: int) -> Written | None:
 
 
 def _one(decoder: Construct[engine.Unpack] | Construct[engine.Match] | None, use: FrameUse | None, skip: bool,
-         records: str | None) -> Reply:
+         records: str | None, error: ErrorReply | None = None) -> Reply:
     """How one reply is read: through a frame whose reply has parts, its payload (as records,
-    or decoded); with no frame, a line matched or the bytes an `unpack` takes."""
+    or decoded); with no frame, a line matched or the bytes an `unpack` takes. `error`: the
+    reply that may come instead (the checker allows it only where one reply is decoded)."""
     if use is not None and use.frame.reply:
         if records is not None:
             assert decoder is not None and decoder.kind is engine.Unpack  # the checker's
             return Records(records.encode("latin-1"), decoder, skip=skip)
-        return FramedReply(decoder, skip=skip)
+        return FramedReply(decoder, skip=skip, error=error)
     if decoder is None:
         return NO_REPLY
     if decoder.kind is engine.Match:
         return LineReply(decoder)
     assert decoder.kind is engine.Unpack
-    return FixedReply(decoder)
+    return FixedReply(decoder, error=error)
 
 
 def _tagged(table: m.ReplyTable, use: FrameUse | None, skip: bool, entries: tuple[Entry, ...]) -> Reply:

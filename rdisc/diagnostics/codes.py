@@ -77,8 +77,8 @@ by an interface (a call names a primitive of that name, or else an interface), a
 interface called by a hook or an input, an output triggered by an interface, a
 connection, a frame, an adapter, a link joined by a joint or named by an output's
 `frame` (`output detect_bump: Range frame bumper`: the body's link its data belongs
-to, whose name its messages carry as their frame), or a joint a transmission moves
-and the state variable it measures.
+to, whose name its messages carry as their frame), a joint a transmission moves
+and the state variable it measures, or an enum naming an error reply's `code`.
 When a declared name is close, the help line suggests it."""),
     ("E103", "unknown-variable", """
 A name used in an expression is not in scope there. Scopes follow the thesis:
@@ -429,6 +429,21 @@ is; and the primitive reads one reply, so not with `replies` or a reply table.
 Wrong: `primitive caps() on link pack "B" (0x6B) reply each until "\\x7F" unpack
 "<*(BB)"`, no frame. Right: the same with `frame capability`, a frame whose reply is
 `header "\\xF0\\x6C" payload terminator "\\xF7"`."""),
+    ("E511", "error-reply", """
+`error ...` is the reply a device may send instead of the one asked for (a Modbus
+exception: the function code with 0x80 set, then an exception code; a NACK byte),
+raised as an `RdisDeviceError` carrying the device's code and its name. The reader
+must tell it from the reply before reading either, so it is known by its own frame
+(`error frame rtu(unit, 0x83) unpack "B" code Exception`: a field the reply's frame
+has otherwise) or by the bytes it starts with (`error "\\x15" unpack "B"`); known by
+its first bytes inside the primitive's frame, that frame says where a payload ends
+without its decoding (a `length` field or constant bytes after it), and read without a
+frame its size is fixed (no `*`). It is decoded with `unpack`; with `code ENUM`, its
+first value is the device's code, an int, named by the enum's member of that value.
+It stands in for one reply: a primitive decoding one reply with `unpack`, or through a
+frame, not a `regex` line, `replies` or a reply table. Wrong: `primitive ack() on link
+pack "B" (1) unpack "B" error unpack "B"` (which is it?). Right: `primitive ack() on
+link pack "B" (1) unpack "B" error "\\x15" unpack "B" code Nack`."""),
     # -- the body -------------------------------------------------------------
     ("E601", "body-tree", """
 A robot's body is one tree of links: one root (the base, the child of no joint),

@@ -179,8 +179,18 @@ def _primitive(x: m.Primitive) -> JsonObject:
             ("key", x.table.key or None), ("tag", x.table.tag), ("each", x.table.each or None),
             ("length", x.table.length), ("cases", [_case(c) for c in x.table.cases]))),
         ("replyList", [_listed(r) for r in x.listed] or None),
+        ("error", None if x.error is None else _error(x.error)),
         ("postActions", actions or None),
         ("doc", x.doc),
+    )
+
+
+def _error(e: m.ErrorReply) -> JsonObject:
+    """The reply the device may send instead (`error ...`): its own frame (left out: none), the
+    bytes it starts with, its decoding and the enum naming its code."""
+    return _object(
+        ("frame", None if e.frame is None else {"name": e.frame.frame, "arguments": [_embedded(a) for a in e.frame.args]}),
+        ("marker", e.marker or None), ("unpack", e.decoding.format), ("codes", e.codes),
     )
 
 

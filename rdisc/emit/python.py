@@ -452,6 +452,8 @@ class _Driver:
         """A value of a plan as Python: a named plan or Code by its name, another plan or a
         construct as its constructor call, a hook's Code as a lambda, data through repr."""
         match value:
+            case lowering.ErrorReply() if value in self.names:  # written before its primitive
+                return self.names[value]
             case lowering.Code() if value not in self.names:  # a hook's arguments, over state
                 items = ", ".join(self.exprs.expr(e, {}).text for _, e, _ in value.items)
                 return f"lambda state: [{items}]"
@@ -461,7 +463,7 @@ class _Driver:
             case (Construct() | lowering.Call() | lowering.FrameUse() | lowering.Hook() | lowering.NoReply()
                   | lowering.LineReply() | lowering.FixedReply() | lowering.FramedReply() | lowering.TaggedReply()
                   | lowering.TaggedStream() | lowering.SubPayloads() | lowering.Records() | lowering.KeyedReply()
-                  | lowering.SeveralReplies() | lowering.ListedReplies()):
+                  | lowering.SeveralReplies() | lowering.ListedReplies() | lowering.ErrorReply()):
                 args, options = self.arguments(value)
                 return f"{_kind(value)}({', '.join([*args, *(f'{k}={v}' for k, v in options.items())])})"
             case tuple() if value and isinstance(value[0], lowering.Entry):  # a reply table, written before
@@ -526,11 +528,16 @@ class _Driver:
         shape = plan.reply
         functions = [("frame", None if plan.frame is None else plan.frame.args), ("lines", plan.lines),
                      *((f"reply_frame_{n}", use.args) for n, use in enumerate(_reply_frames(shape))),
-                     ("expect", plan.expect)]
+                     ("error_frame", _error_frame(shape)), ("expect", plan.expect)]
         for suffix, code in functions:
             if code is not None:
                 w.blank(2)
                 self.code(w, f"{base}_{suffix}", code)
+        error = _error(shape)
+        if error is not None:
+            w.blank(2)
+            w.line("# the reply that may come instead")
+            self.constant(w, f"{const}_ERROR", error)
         answers = shape.answers if isinstance(shape, lowering.ListedReplies) else ()
         for n, answer in enumerate(answers, 1):  # each its own plan: frame, decoder, expect, post-actions
             own = (("frame", None if answer.frame is None else answer.frame.args), ("expect", answer.expect),
@@ -879,6 +886,17 @@ def _reply_frames(shape: lowering.Reply) -> tuple[lowering.FrameUse, ...]:
     if isinstance(shape, lowering.SeveralReplies):
         return shape.frames
     return next((frames for entry in _table(shape) or () if (frames := _reply_frames(entry.plan.reply))), ())
+
+
+def _error(shape: lowering.Reply) -> lowering.ErrorReply | None:
+    """The reply that may come instead of the shape's, if any."""
+    return shape.error if isinstance(shape, (lowering.FixedReply, lowering.FramedReply)) else None
+
+
+def _error_frame(shape: lowering.Reply) -> lowering.Code | None:
+    """The arguments of the frame of the reply that may come instead, if it has one of its own."""
+    error = _error(shape)
+    return None if error is None or error.frame is None else error.frame.args
 
 
 def _case(case: m.ReplyCase) -> str:

@@ -17,6 +17,19 @@ class RdisProtocolError(RdisError):
     """The device replied, but not as described: short, unterminated or unmatched."""
 
 
+class RdisDeviceError(RdisError):
+    """The device answered, with an error of its own (an `error` reply: Modbus's exception, a
+    NACK): `code`, the device's code (None when it sends none), `name`, the member of the
+    description's enum of that value (None when none has it), `values`, the error decoded."""
+
+    def __init__(self, message: str, code: int | None = None, name: str | None = None,
+                 values: tuple[object, ...] = ()) -> None:
+        super().__init__(message)
+        self.code = code
+        self.name = name
+        self.values = values
+
+
 class RdisConnectionError(RdisError, ConnectionError):
     """A port could not be opened, failed, or disappeared."""
 

@@ -17,6 +17,7 @@ from rdisc.engine.codec import Match, Unpack
 from rdisc.engine.errors import (
     RdisCallbackError,
     RdisConnectionError,
+    RdisDeviceError,
     RdisError,
     RdisProtocolError,
     RdisTimeout,
@@ -24,6 +25,7 @@ from rdisc.engine.errors import (
 )
 from rdisc.engine.operations import EVAL_ERRORS, MAX_ARRAY, MAX_INT, MAX_LINE
 from rdisc.engine.plans import (
+    ErrorReply,
     FixedReply,
     FramedReply,
     FrameUse,
@@ -269,21 +271,32 @@ class Exchange:
                 if end == b"\n" and text.endswith(b"\r"):  # the default takes CR LF as well as LF
                     text = text[:-1]
                 return [(plan, local, self._met(plan, local, decoder.decode(plan.name, text)))]
-            case FixedReply(decoder=unpack):
+            case FixedReply(decoder=unpack, error=error):
+                if error is not None:
+                    self._unframed_error(plan, error, reader, local)
                 data = reader.read(unpack.size)
                 if not data:
                     raise RdisTimeout(f"{plan.name}: no reply within {wait:g} s")
                 return [(plan, local, self._met(plan, local, unpack.decode(plan.name, data)))]
             case TaggedStream():
                 return [self._read_tagged(plan, shape, reader, wait, local)]
-            case FramedReply(decoder=decoding, skip=skip):
+            case FramedReply(decoder=decoding, skip=skip, error=error):
                 # The decoding's size is the payload's, unless stuffing may have lengthened it on
-                # the wire (then the constant after the payload ends it).
+                # the wire (then the constant after the payload ends it), or an error may stand in
+                # the frame (then the frame says where the payload ends).
                 assert use is not None
                 stuffed = use.frame.stuffing is not None and any(side.delimiter for side in use.frame.replies)
-                size = decoding.size if decoding is not None and not stuffed else -1
-                return self._framed(plan, use, reader, fields, request, wait, skip, size, lambda payload: [
-                    (plan, local, self._met(plan, local, decoding.decode(plan.name, payload)) if decoding else ())])
+                inside = error is not None and error.frame is None
+                size = decoding.size if decoding is not None and not stuffed and not inside else -1
+
+                def taken(payload: bytes) -> list[_ReplyPart]:
+                    if inside and error is not None and payload.startswith(error.marker):
+                        raise self._device_error(plan, error, payload[len(error.marker):])
+                    return [(plan, local, self._met(plan, local, decoding.decode(plan.name, payload))
+                             if decoding else ())]
+
+                return self._framed(plan, use, reader, fields, request, wait, skip, size, taken,
+                                    error if error is not None and error.frame is not None else None, local)
             case TaggedReply(skip=skip):
                 return self._framed(plan, use, reader, fields, request, wait, skip, -1,
                                     lambda payload: [self._tagged(plan, shape, payload, local)])
@@ -306,7 +319,8 @@ class Exchange:
                 assert_never(shape)
 
     def _framed(self, plan: Primitive, use: FrameUse | None, reader: Incoming, fields: list[Any], request: bytes,
-                wait: float, skip: bool, size: int, taken: Callable[[bytes], list[_ReplyPart]]) -> list[_ReplyPart]:
+                wait: float, skip: bool, size: int, taken: Callable[[bytes], list[_ReplyPart]],
+                error: ErrorReply | None = None, local: Args | None = None) -> list[_ReplyPart]:
         """A reply frame's payload (`size`: its decoding's, or -1), as `taken` reads it: once, or
         under `skip unmatched` until one is read, within the deadline.
 
@@ -314,12 +328,16 @@ class Exchange:
         not the request's, a tag without an entry, a payload that does not decode or meet the
         `expect`) and bytes that are no frame; it raises for a frame whose checksum is wrong (this
         device's reply, corrupted). The next frame is looked for from the byte after the start of
-        the one read past, unless a checksum vouched for it whole. Each is told to the trace."""
+        the one read past, unless a checksum vouched for it whole. Each is told to the trace.
+
+        `error`: an error reply in a frame of its own, tried first at each frame (`_framed_error`)."""
         assert use is not None
         frame = use.frame
         while True:
             raw = b""
             try:
+                if error is not None:
+                    self._framed_error(plan, error, reader, request, local or [])
                 raw, payload = frame.read(reader, fields, request, size)
                 return taken(payload)
             except (FrameError, RdisProtocolError) as err:
@@ -338,6 +356,62 @@ class Exchange:
                 if isinstance(err, RdisProtocolError):
                     raise
                 raise RdisProtocolError(f"{plan.name}: {err}") from None
+
+    def _framed_error(self, plan: Primitive, error: ErrorReply, reader: Incoming, request: bytes,
+                      local: Args) -> None:
+        """Raise the device's error if the next frame is its error frame (with the bytes it starts
+        with); else give back every byte read, for the reply to be read from its first. Nothing
+        at all is a timeout, and an error frame whose checksum is wrong a FrameError (this
+        device's error reply, corrupted). An error frame no longer than the reply costs nothing;
+        a longer one is read to the deadline before the reply is."""
+        use = error.frame
+        assert use is not None
+        try:
+            fields = use.frame.values(plan.name, use.args(self._state, local))
+        except (struct.error, *EVAL_ERRORS) as err:
+            raise RdisValueError(f"{plan.name}: {err}") from None
+        decoder = error.decoder
+        try:
+            raw, payload = use.frame.read(reader, fields, request, len(error.marker) + decoder.size, whole=True)
+        except ChecksumError:
+            raise
+        except FrameError as err:
+            if err.timeout:
+                raise
+            return
+        if not payload.startswith(error.marker):
+            reader.put_back(raw)
+            return
+        raise self._device_error(plan, error, payload[len(error.marker):])
+
+    def _unframed_error(self, plan: Primitive, error: ErrorReply, reader: Incoming, local: Args) -> None:
+        """Raise the device's error if the reply starts with its bytes (a NACK); else give them
+        back, for the reply to be read from its first."""
+        marker = error.marker
+        head = reader.read(len(marker))
+        if head != marker:
+            reader.put_back(head)
+            return
+        size = error.decoder.size
+        body = reader.read(size)
+        if len(body) < size:
+            raise RdisProtocolError(f"{plan.name}: an error reply {marker.hex(' ')} then {len(body)} bytes, "
+                                    f"where its decoding takes {size}")
+        raise self._device_error(plan, error, body)
+
+    @staticmethod
+    def _device_error(plan: Primitive, error: ErrorReply, body: bytes) -> RdisDeviceError:
+        """The device's error: its bytes decoded, the first value its code, named by the enum."""
+        values = tuple(error.decoder.decode(plan.name, body))
+        code = values[0] if values and type(values[0]) is int else None
+        name = error.names.get(code) if code is not None else None
+        if code is None:
+            said = "an error reply" + (f" {values!r}" if values else "")
+        elif not error.codes:
+            said = f"error {code}"
+        else:
+            said = f"error {code} ({name if name is not None else 'not a member of ' + error.codes})"
+        return RdisDeviceError(f"{plan.name}: the device answered {said}", code, name, values)
 
     def _in_turn(self, plan: Primitive, turns: list[tuple[Primitive, Reply, FrameUse | None]], link: _Link,
                  reader: Incoming, fields: list[Any], request: bytes, wait: float, local: Args) -> list[_ReplyPart]:

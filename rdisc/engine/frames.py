@@ -151,19 +151,23 @@ class Frame:
             chunks.append(part.put(payload, fields, chunks))
         return b"".join(chunks)
 
-    def read(self, port: Reader, fields: Sequence[int], request: bytes, size: int) -> tuple[bytes, bytes]:
+    def read(self, port: Reader, fields: Sequence[int], request: bytes, size: int,
+             whole: bool = False) -> tuple[bytes, bytes]:
         """Read one reply frame from `port`; (the bytes read, the payload).
 
         `size` is the payload's size when the decoding fixes it, else -1. Bytes
         before the header are skipped; every constant, field and checksum is
-        checked. FrameError says what is wrong.
+        checked. FrameError says what is wrong. `whole`: a frame found wrong gives
+        back every byte taken, for another frame to be read from its first (an error
+        reply tried before the reply).
         """
         data = bytearray()
         try:
             return self._read(port, data, fields, request, size)
         except FrameError:
-            if len(data) > 1 and isinstance(port, Incoming):  # look for the next header in what was taken
-                port.put_back(bytes(data[1:]))
+            kept = 0 if whole else 1
+            if len(data) > kept and isinstance(port, Incoming):  # look for the next header in what was taken
+                port.put_back(bytes(data[kept:]))
             raise
 
     def _read(self, port: Reader, data: bytearray, fields: Sequence[int], request: bytes,

@@ -61,20 +61,39 @@ class LineReply:
 
 
 @dataclass(frozen=True, slots=True)
-class FixedReply:
-    """The bytes `decoder` takes, as they come (no frame)."""
+class ErrorReply:
+    """The reply a device may send instead (`error`: Modbus's exception, a NACK), raised as an
+    RdisDeviceError: known by its own frame (`frame`; None: the reply's, or none) or by the bytes
+    it starts with (`marker`), the rest decoded by `decoder`, whose first value is the device's
+    code when `codes` (an enum's name) names it by `names`."""
 
     decoder: Unpack
+    marker: bytes = b""
+    frame: FrameUse | None = None
+    codes: str = ""
+    names: Mapping[int, str] = field(default_factory=dict)
+
+
+@dataclass(frozen=True, slots=True)
+class FixedReply:
+    """The bytes `decoder` takes, as they come (no frame). `error`: the reply that may come
+    instead, known by its first bytes."""
+
+    decoder: Unpack
+    _: KW_ONLY
+    error: ErrorReply | None = None
 
 
 @dataclass(frozen=True, slots=True)
 class FramedReply:
     """A reply frame, its payload decoded by `decoder` (None: the frame is only read, as a frame
-    of constant parts acknowledges). `skip`: frames that do not decode are read past."""
+    of constant parts acknowledges). `skip`: frames that do not decode are read past. `error`:
+    the reply that may come instead, in a frame of its own or this one's."""
 
     decoder: Unpack | Match | None = None
     _: KW_ONLY
     skip: bool = False
+    error: ErrorReply | None = None
 
 
 @dataclass(frozen=True, slots=True)

@@ -13,6 +13,7 @@ from rdisc.runtime.device import Description, load
 from rdisc.runtime.errors import (
     RdisCallbackError,
     RdisConnectionError,
+    RdisDeviceError,
     RdisError,
     RdisLoadError,
     RdisProtocolError,
@@ -25,6 +26,7 @@ __all__ = [
     "Description",
     "RdisCallbackError",
     "RdisConnectionError",
+    "RdisDeviceError",
     "RdisError",
     "RdisLoadError",
     "RdisProtocolError",

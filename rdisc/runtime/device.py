@@ -157,10 +157,10 @@ class _Engine:
                 return engine.NO_REPLY
             case plans.LineReply(decoder=decoder):
                 return engine.LineReply(decoder.value)
-            case plans.FixedReply(decoder=decoder):
-                return engine.FixedReply(decoder.value)
-            case plans.FramedReply(decoder=decoder, skip=skip):
-                return engine.FramedReply(built(decoder), skip=skip)
+            case plans.FixedReply(decoder=decoder, error=error):
+                return engine.FixedReply(decoder.value, error=self.error(error))
+            case plans.FramedReply(decoder=decoder, skip=skip, error=error):
+                return engine.FramedReply(built(decoder), skip=skip, error=self.error(error))
             case plans.TaggedReply(tag=tag, table=table, skip=skip):
                 return engine.TaggedReply(tag, self.table(table), skip=skip)
             case plans.TaggedStream(tag=tag, table=table, skip=skip):
@@ -177,6 +177,13 @@ class _Engine:
                 return engine.ListedReplies(tuple(self.primitive(answer) for answer in answers))
             case _:
                 assert_never(r)
+
+    def error(self, e: plans.ErrorReply | None) -> engine.ErrorReply | None:
+        """The reply that may come instead, as the lowering decided it."""
+        if e is None:
+            return None
+        return engine.ErrorReply(e.decoder.value, e.marker, None if e.frame is None else self.use(e.frame), e.codes,
+                                 dict(e.names))
 
     def table(self, entries: tuple[plans.Entry, ...]) -> dict[int, engine.Primitive]:
         """A reply table: each entry's plan for each of its values (a range entry's plan once)."""

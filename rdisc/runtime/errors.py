@@ -11,11 +11,12 @@ from rdisc.diagnostics.load_error import RdisLoadError
 from rdisc.engine import (
     RdisCallbackError,
     RdisConnectionError,
+    RdisDeviceError,
     RdisError,
     RdisProtocolError,
     RdisTimeout,
     RdisValueError,
 )
 
-__all__ = ["RdisCallbackError", "RdisConnectionError", "RdisError", "RdisLoadError", "RdisProtocolError",
+__all__ = ["RdisCallbackError", "RdisConnectionError", "RdisDeviceError", "RdisError", "RdisLoadError", "RdisProtocolError",
            "RdisTimeout", "RdisValueError"]

@@ -735,9 +735,76 @@ class _Checker:
         if expect is not None and table is not None:
             self.d.report("E203", expect.span, f"primitive `{name.text}` has a reply table and also `expect`",
                           help="`expect` checks the reply of a primitive with one decoding")
+        error_clause = self.once([c for c in decl.clauses if isinstance(c, ast.ErrorReply)], "`error`", name)
+        error = None
+        if isinstance(error_clause, ast.ErrorReply):
+            one = table is None and not count and not listed and records is None
+            error = self.error_reply(error_clause, decl, env, encoding, frame if one else None, decoding, one)
         return m.Primitive(name.text, params, connection, encoding, args, decoding, actions, decl.doc, decl.span,
                            frame, skip is not None, table, timeout, expect, lines, count, reply_frames, records,
-                           listed, retries)
+                           listed, retries, error)
+
+    def error_reply(self, clause: ast.ErrorReply, decl: ast.PrimitiveDecl, env: Env,
+                    encoding: m.Pack | m.Format | None, frame: m.FrameUse | None,
+                    decoding: m.Unpack | m.Regex | None, one: bool) -> m.ErrorReply | None:
+        """`error [frame F(args)] ["MARKER"] unpack FORMAT [code ENUM]`: the reply the device may
+        send instead of the one asked for, of a primitive that reads one reply (decoded, or a
+        frame that acknowledges). It must be told apart from that reply before it is read: by its
+        own frame, or by its first bytes; unframed, it has a fixed size. None where refused."""
+        name = decl.name.text
+        framed_reply = frame is not None and bool(self.frames[frame.frame].reply)
+        if not one or not (framed_reply or isinstance(decoding, m.Unpack)):
+            self.d.report("E511", clause.span, f"`{name}` does not read one reply that an error could stand in for",
+                          help="an `error` reply goes with `unpack` (read with or without a frame) or a frame "
+                          "that acknowledges, not with `regex`, `replies` or a reply table")
+            return None
+        marker = ""
+        if clause.marker is not None:
+            marker = clause.marker.value
+            if not 1 <= len(marker) <= MAX_TERMINATOR or any(ord(ch) > 0xFF for ch in marker):
+                self.d.report("E204", clause.marker.span,
+                              f"an error's marker is 1 to {MAX_TERMINATOR} bytes (characters up to \\xff)")
+                return None
+        if clause.decoding.kind != "unpack":
+            self.d.report("E511", clause.decoding.span, "an error reply is bytes: decode it with `unpack`",
+                          help='such as `unpack "B"`, the device\'s code')
+            return None
+        unpack, values = self.decoding(clause.decoding)
+        if not isinstance(unpack, m.Unpack) or values is None:
+            return None
+        if clause.codes is not None and (not values or values[0] is not Type.INT):
+            self.d.report("E511", clause.decoding.span, f"the first value of an error reply is the device's code, "
+                          f"named by `{clause.codes.text}`, so it is an int",
+                          help='decode it first with an integer code: `unpack "B"`')
+            return None
+        own = None
+        if clause.frame is not None:
+            own = self.frame_use(clause.frame, env, decl, encoding, [unpack], None)
+            if own is None:
+                return None
+            if not any(isinstance(part, m.FramePayload) for part in self.frames[own.frame].reply):
+                self.d.report("E504", clause.frame.span, f"the error reply of `{name}` is read through frame "
+                              f"`{own.frame}`, whose reply has no payload",
+                              help="read it through a frame whose reply has a `payload`")
+                return None
+        elif not marker:
+            self.d.report("E511", clause.span, f"the error reply of `{name}` cannot be told from its reply",
+                          help='give it its own frame (`error frame rtu(unit, 0x83) ...`) or the bytes it starts '
+                          'with (`error "\\x15" ...`)')
+            return None
+        elif framed_reply:
+            assert frame is not None
+            if not payload_end_known(self.frames[frame.frame], False):
+                self.d.report("E511", clause.span, f"the error reply of `{name}` is known by its first bytes, so "
+                              f"frame `{frame.frame}` must say where a payload ends without its decoding",
+                              help="give the frame's reply a `length` field or constant bytes after its payload, "
+                              "or give the error its own frame")
+                return None
+        if own is None and not framed_reply and _open_end(unpack):
+            self.d.report("E511", clause.decoding.span, f"the error reply of `{name}` is read without a frame, "
+                          "so its size is fixed: no `*`")
+            return None
+        return m.ErrorReply(unpack, own, marker, None if clause.codes is None else clause.codes.text)
 
     def retries(self, clause: ast.Retry, name: ast.Ident, writes: bool, replied: bool) -> int:
         """`retry N`: resends of a request whose reply timed out or did not match, a constant

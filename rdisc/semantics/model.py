@@ -665,6 +665,19 @@ class ListedReply:
     actions: tuple[PostAction, ...] = ()
 
 
+@dataclass(frozen=True, slots=True)
+class ErrorReply:
+    """The reply a device may send instead of the one asked for (Modbus's exception, a NACK):
+    known by its own frame (None: the primitive's, or none) or by its first bytes (`marker`,
+    latin-1), decoded, its first value the device's code, named by the enum `codes`. It is
+    raised, never stored: an RdisDeviceError."""
+
+    decoding: Unpack
+    frame: FrameUse | None = None
+    marker: str = ""
+    codes: str | None = None
+
+
 TAG = "tag"  # the name of a tagged reply's tag in its entries' post-actions
 INDEX = "index"  # the name of a record's position in the post-actions of `reply each until`
 
@@ -702,6 +715,7 @@ class Primitive:
     records: str | None = None  # `reply each until`: the marker ending each record of the payload (latin-1)
     listed: tuple[ListedReply, ...] = ()  # `replies { ... }`: replies of different shapes, in order
     retries: int = 0  # `retry N`: resends after a timeout or a reply that does not match (0: none)
+    error: ErrorReply | None = None  # `error ...`: the exception the device may send instead of its reply
 
     def listed_reply(self, r: ListedReply) -> Primitive:
         """This primitive as it is for one of its listed replies: that reply's frame, decoding,

@@ -1370,6 +1370,43 @@ def _hash_ListedReply(self: Any) -> int:
     return hash((self.decoding, self.frame, self.expect, self.actions))
 
 
+def _init_ErrorReply(
+    self: Any,
+    decoding: Any,
+    frame: Any = DEFAULT,
+    marker: Any = DEFAULT,
+    codes: Any = DEFAULT,
+) -> None:
+    _set(self, "decoding", decoding)
+    _set(self, "frame", frame)
+    _set(self, "marker", marker)
+    _set(self, "codes", codes)
+
+
+def _repr_ErrorReply(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(decoding={self.decoding!r}, frame={self.frame!r}, marker={self.marker!r}, codes={self.codes!r})"
+
+
+def _eq_ErrorReply(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.decoding,
+            self.frame,
+            self.marker,
+            self.codes,
+        ) == (
+            other.decoding,
+            other.frame,
+            other.marker,
+            other.codes,
+        )
+    return NotImplemented
+
+
+def _hash_ErrorReply(self: Any) -> int:
+    return hash((self.decoding, self.frame, self.marker, self.codes))
+
+
 def _init_ReplyTable(
     self: Any,
     key: Any,
@@ -1437,6 +1474,7 @@ def _init_Primitive(
     records: Any = DEFAULT,
     listed: Any = DEFAULT,
     retries: Any = DEFAULT,
+    error: Any = DEFAULT,
 ) -> None:
     _set(self, "name", name)
     _set(self, "params", params)
@@ -1458,10 +1496,11 @@ def _init_Primitive(
     _set(self, "records", records)
     _set(self, "listed", listed)
     _set(self, "retries", retries)
+    _set(self, "error", error)
 
 
 def _repr_Primitive(self: Any) -> str:
-    return f"{self.__class__.__qualname__}(name={self.name!r}, params={self.params!r}, connection={self.connection!r}, encoding={self.encoding!r}, args={self.args!r}, decoding={self.decoding!r}, actions={self.actions!r}, doc={self.doc!r}, frame={self.frame!r}, skip_unmatched={self.skip_unmatched!r}, table={self.table!r}, timeout_ms={self.timeout_ms!r}, expect={self.expect!r}, lines={self.lines!r}, replies={self.replies!r}, reply_frames={self.reply_frames!r}, records={self.records!r}, listed={self.listed!r}, retries={self.retries!r})"
+    return f"{self.__class__.__qualname__}(name={self.name!r}, params={self.params!r}, connection={self.connection!r}, encoding={self.encoding!r}, args={self.args!r}, decoding={self.decoding!r}, actions={self.actions!r}, doc={self.doc!r}, frame={self.frame!r}, skip_unmatched={self.skip_unmatched!r}, table={self.table!r}, timeout_ms={self.timeout_ms!r}, expect={self.expect!r}, lines={self.lines!r}, replies={self.replies!r}, reply_frames={self.reply_frames!r}, records={self.records!r}, listed={self.listed!r}, retries={self.retries!r}, error={self.error!r})"
 
 
 def _eq_Primitive(self: Any, other: Any) -> Any:
@@ -1486,6 +1525,7 @@ def _eq_Primitive(self: Any, other: Any) -> Any:
             self.records,
             self.listed,
             self.retries,
+            self.error,
         ) == (
             other.name,
             other.params,
@@ -1506,6 +1546,7 @@ def _eq_Primitive(self: Any, other: Any) -> Any:
             other.records,
             other.listed,
             other.retries,
+            other.error,
         )
     return NotImplemented
 
@@ -1531,6 +1572,7 @@ def _hash_Primitive(self: Any) -> int:
         self.records,
         self.listed,
         self.retries,
+        self.error,
     ))
 
 
@@ -2722,6 +2764,15 @@ WRITTEN: dict[str, Written] = {
             "__hash__": _hash_ListedReply,
         },
     ),
+    "ErrorReply": Written(
+        (("decoding", MISSING), ("frame", DEFAULT), ("marker", DEFAULT), ("codes", DEFAULT)),
+        {
+            "__init__": _init_ErrorReply,
+            "__repr__": _repr_ErrorReply,
+            "__eq__": _eq_ErrorReply,
+            "__hash__": _hash_ErrorReply,
+        },
+    ),
     "ReplyTable": Written(
         (
             ("key", MISSING),
@@ -2761,6 +2812,7 @@ WRITTEN: dict[str, Written] = {
             ("records", DEFAULT),
             ("listed", DEFAULT),
             ("retries", DEFAULT),
+            ("error", DEFAULT),
         ),
         {
             "__init__": _init_Primitive,

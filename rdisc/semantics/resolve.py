@@ -187,6 +187,11 @@ def _bind(decl: ast.Decl, symbols: Symbols, callables: Mapping[str, object], dia
                     need(clause.connection, symbols.connections, "connection")
                 elif isinstance(clause, ast.Framed):
                     need(clause.frame, symbols.frames, "frame")
+                elif isinstance(clause, ast.ErrorReply):
+                    if clause.frame is not None:
+                        need(clause.frame.frame, symbols.frames, "frame")
+                    if clause.codes is not None:
+                        need(clause.codes, symbols.enums, "enum")
         case ast.InterfaceDecl():
             for part in decl.clauses:
                 if isinstance(part, ast.Triggers):

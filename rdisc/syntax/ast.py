@@ -432,9 +432,22 @@ class Lines:
     span: Span = _span
 
 
+@dataclass(frozen=True, slots=True)
+class ErrorReply:
+    """`error frame rtu(UNIT, 0x83) unpack "B" code Exception`: the reply the device may send
+    instead (Modbus's exception, a NACK), known by its own frame or its first bytes (`marker`),
+    decoded, its first value the device's code, named by an enum (`codes`)."""
+
+    decoding: Decoding
+    span: Span = _span
+    frame: Framed | None = None
+    marker: StrLit | None = None
+    codes: Ident | None = None
+
+
 PrimitiveClause = (
     On | Encoding | Decoding | Actions | Framed | SkipUnmatched | ReplyTable | ReplyTimeout | Expect | Lines
-    | Replies | Retry | ReplyList | Records
+    | Replies | Retry | ReplyList | Records | ErrorReply
 )
 
 

@@ -1086,6 +1086,45 @@ def _hash_Lines(self: Any) -> int:
     return hash((self.settings,))
 
 
+def _init_ErrorReply(
+    self: Any,
+    decoding: Any,
+    span: Any = DEFAULT,
+    frame: Any = DEFAULT,
+    marker: Any = DEFAULT,
+    codes: Any = DEFAULT,
+) -> None:
+    _set(self, "decoding", decoding)
+    _set(self, "span", span)
+    _set(self, "frame", frame)
+    _set(self, "marker", marker)
+    _set(self, "codes", codes)
+
+
+def _repr_ErrorReply(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(decoding={self.decoding!r}, frame={self.frame!r}, marker={self.marker!r}, codes={self.codes!r})"
+
+
+def _eq_ErrorReply(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.decoding,
+            self.frame,
+            self.marker,
+            self.codes,
+        ) == (
+            other.decoding,
+            other.frame,
+            other.marker,
+            other.codes,
+        )
+    return NotImplemented
+
+
+def _hash_ErrorReply(self: Any) -> int:
+    return hash((self.decoding, self.frame, self.marker, self.codes))
+
+
 def _init_PrimitiveDecl(
     self: Any,
     name: Any,
@@ -2573,6 +2612,21 @@ WRITTEN: dict[str, Written] = {
     "Lines": Written(
         (("settings", MISSING), ("span", FieldSpec(None, MISSING, False, False))),
         {"__init__": _init_Lines, "__repr__": _repr_Lines, "__eq__": _eq_Lines, "__hash__": _hash_Lines},
+    ),
+    "ErrorReply": Written(
+        (
+            ("decoding", MISSING),
+            ("span", FieldSpec(None, MISSING, False, False)),
+            ("frame", DEFAULT),
+            ("marker", DEFAULT),
+            ("codes", DEFAULT),
+        ),
+        {
+            "__init__": _init_ErrorReply,
+            "__repr__": _repr_ErrorReply,
+            "__eq__": _eq_ErrorReply,
+            "__hash__": _hash_ErrorReply,
+        },
     ),
     "PrimitiveDecl": Written(
         (

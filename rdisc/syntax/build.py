@@ -418,6 +418,13 @@ def _transformer_class() -> Callable[[Builder], Transformer[Token, list[ast.Decl
             actions = ast.Actions(tuple(assigns), span) if assigns else None  # `{}` says nothing more
             return ast.ListedReply(ast.Decoding(kind, self.b.string(template), span), span, framed, condition, actions)
 
+        def error_reply(self, meta: Meta, c: list[Any]) -> ast.ErrorReply:
+            framed, marker, kind, template, codes = c
+            span = self.b.span(meta)
+            return ast.ErrorReply(ast.Decoding(kind, self.b.string(template), span), span, framed,
+                                  None if marker is None else self.b.string(marker),
+                                  None if codes is None else self.b.ident(codes))
+
         def reply_list(self, meta: Meta, c: list[ast.ListedReply]) -> ast.ReplyList:
             return ast.ReplyList(tuple(c), self.b.span(meta))
 

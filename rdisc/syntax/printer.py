@@ -366,6 +366,16 @@ def _primitive_clause(c: ast.PrimitiveClause) -> tuple[list[str], bool]:
                     head += f" expect {print_expr(listed.expect)}"
                 lines.extend(_entry(head, listed.actions))
             return [*lines, "}"], False
+        case ast.ErrorReply(decoding, _, framed, marker, codes):
+            words = ["error"]
+            if framed is not None:
+                words.append(f"frame {framed.frame.text}({_args(framed.args)})")
+            if marker is not None:
+                words.append(p.quote_octets(marker.value))
+            words.append(f"{decoding.kind} {spell_template(decoding.template.value)}")
+            if codes is not None:
+                words.append(f"code {codes.text}")
+            return [" ".join(words)], False
         case ast.Records(marker):
             return [f"reply each until {p.quote_octets(marker.value)}"], False
         case ast.Lines(settings):
