@@ -782,10 +782,12 @@ class _Checker:
             own = self.frame_use(clause.frame, env, decl, encoding, [unpack], None)
             if own is None:
                 return None
-            if not any(isinstance(part, m.FramePayload) for part in self.frames[own.frame].reply):
-                self.d.report("E504", clause.frame.span, f"the error reply of `{name}` is read through frame "
-                              f"`{own.frame}`, whose reply has no payload",
-                              help="read it through a frame whose reply has a `payload`")
+            reply = self.frames[own.frame].reply
+            if not any(isinstance(part, m.FramePayload) for part in reply):
+                if not reply:  # else `frame_use` said so
+                    self.d.report("E504", clause.frame.span, f"the error reply of `{name}` is read through frame "
+                                  f"`{own.frame}`, whose reply is empty",
+                                  help="read it through a frame whose reply has a `payload`")
                 return None
         elif not marker:
             self.d.report("E511", clause.span, f"the error reply of `{name}` cannot be told from its reply",

@@ -54,6 +54,19 @@ class RdisProtocolError(RdisError):
     """The device replied, but not as described: short, unterminated or unmatched."""
 
 
+class RdisDeviceError(RdisError):
+    """The device answered, with an error of its own (an `error` reply: Modbus's exception, a
+    NACK): `code`, the device's code (None when it sends none), `name`, the member of the
+    description's enum of that value (None when none has it), `values`, the error decoded."""
+
+    def __init__(self, message: str, code: int | None = None, name: str | None = None,
+                 values: tuple[object, ...] = ()) -> None:
+        super().__init__(message)
+        self.code = code
+        self.name = name
+        self.values = values
+
+
 class RdisConnectionError(RdisError, ConnectionError):
     """A port could not be opened, failed, or disappeared."""
 
@@ -1263,20 +1276,39 @@ class LineReply:
 
 
 @dataclass(frozen=True, slots=True)
-class FixedReply:
-    """The bytes `decoder` takes, as they come (no frame)."""
+class ErrorReply:
+    """The reply a device may send instead (`error`: Modbus's exception, a NACK), raised as an
+    RdisDeviceError: known by its own frame (`frame`; None: the reply's, or none) or by the bytes
+    it starts with (`marker`), the rest decoded by `decoder`, whose first value is the device's
+    code when `codes` (an enum's name) names it by `names`."""
 
     decoder: Unpack
+    marker: bytes = b""
+    frame: FrameUse | None = None
+    codes: str = ""
+    names: Mapping[int, str] = field(default_factory=dict)
+
+
+@dataclass(frozen=True, slots=True)
+class FixedReply:
+    """The bytes `decoder` takes, as they come (no frame). `error`: the reply that may come
+    instead, known by its first bytes."""
+
+    decoder: Unpack
+    _: KW_ONLY
+    error: ErrorReply | None = None
 
 
 @dataclass(frozen=True, slots=True)
 class FramedReply:
     """A reply frame, its payload decoded by `decoder` (None: the frame is only read, as a frame
-    of constant parts acknowledges). `skip`: frames that do not decode are read past."""
+    of constant parts acknowledges). `skip`: frames that do not decode are read past. `error`:
+    the reply that may come instead, in a frame of its own or this one's."""
 
     decoder: Unpack | Match | None = None
     _: KW_ONLY
     skip: bool = False
+    error: ErrorReply | None = None
 
 
 @dataclass(frozen=True, slots=True)
@@ -2000,19 +2032,23 @@ class Frame:
             chunks.append(part.put(payload, fields, chunks))
         return b"".join(chunks)
 
-    def read(self, port: Reader, fields: Sequence[int], request: bytes, size: int) -> tuple[bytes, bytes]:
+    def read(self, port: Reader, fields: Sequence[int], request: bytes, size: int,
+             whole: bool = False) -> tuple[bytes, bytes]:
         """Read one reply frame from `port`; (the bytes read, the payload).
 
         `size` is the payload's size when the decoding fixes it, else -1. Bytes
         before the header are skipped; every constant, field and checksum is
-        checked. FrameError says what is wrong.
+        checked. FrameError says what is wrong. `whole`: a frame found wrong gives
+        back every byte taken, for another frame to be read from its first (an error
+        reply tried before the reply).
         """
         data = bytearray()
         try:
             return self._read(port, data, fields, request, size)
         except FrameError:
-            if len(data) > 1 and isinstance(port, Incoming):  # look for the next header in what was taken
-                port.put_back(bytes(data[1:]))
+            kept = 0 if whole else 1
+            if len(data) > kept and isinstance(port, Incoming):  # look for the next header in what was taken
+                port.put_back(bytes(data[kept:]))
             raise
 
     def _read(self, port: Reader, data: bytearray, fields: Sequence[int], request: bytes,
@@ -2579,21 +2615,32 @@ class Exchange:
                 if end == b"\n" and text.endswith(b"\r"):  # the default takes CR LF as well as LF
                     text = text[:-1]
                 return [(plan, local, self._met(plan, local, decoder.decode(plan.name, text)))]
-            case FixedReply(decoder=unpack):
+            case FixedReply(decoder=unpack, error=error):
+                if error is not None:
+                    self._unframed_error(plan, error, reader, local)
                 data = reader.read(unpack.size)
                 if not data:
                     raise RdisTimeout(f"{plan.name}: no reply within {wait:g} s")
                 return [(plan, local, self._met(plan, local, unpack.decode(plan.name, data)))]
             case TaggedStream():
                 return [self._read_tagged(plan, shape, reader, wait, local)]
-            case FramedReply(decoder=decoding, skip=skip):
+            case FramedReply(decoder=decoding, skip=skip, error=error):
                 # The decoding's size is the payload's, unless stuffing may have lengthened it on
-                # the wire (then the constant after the payload ends it).
+                # the wire (then the constant after the payload ends it), or an error may stand in
+                # the frame (then the frame says where the payload ends).
                 assert use is not None
                 stuffed = use.frame.stuffing is not None and any(side.delimiter for side in use.frame.replies)
-                size = decoding.size if decoding is not None and not stuffed else -1
-                return self._framed(plan, use, reader, fields, request, wait, skip, size, lambda payload: [
-                    (plan, local, self._met(plan, local, decoding.decode(plan.name, payload)) if decoding else ())])
+                inside = error is not None and error.frame is None
+                size = decoding.size if decoding is not None and not stuffed and not inside else -1
+
+                def taken(payload: bytes) -> list[_ReplyPart]:
+                    if inside and error is not None and payload.startswith(error.marker):
+                        raise self._device_error(plan, error, payload[len(error.marker):])
+                    return [(plan, local, self._met(plan, local, decoding.decode(plan.name, payload))
+                             if decoding else ())]
+
+                return self._framed(plan, use, reader, fields, request, wait, skip, size, taken,
+                                    error if error is not None and error.frame is not None else None, local)
             case TaggedReply(skip=skip):
                 return self._framed(plan, use, reader, fields, request, wait, skip, -1,
                                     lambda payload: [self._tagged(plan, shape, payload, local)])
@@ -2616,7 +2663,8 @@ class Exchange:
                 assert_never(shape)
 
     def _framed(self, plan: Primitive, use: FrameUse | None, reader: Incoming, fields: list[Any], request: bytes,
-                wait: float, skip: bool, size: int, taken: Callable[[bytes], list[_ReplyPart]]) -> list[_ReplyPart]:
+                wait: float, skip: bool, size: int, taken: Callable[[bytes], list[_ReplyPart]],
+                error: ErrorReply | None = None, local: Args | None = None) -> list[_ReplyPart]:
         """A reply frame's payload (`size`: its decoding's, or -1), as `taken` reads it: once, or
         under `skip unmatched` until one is read, within the deadline.
 
@@ -2624,12 +2672,16 @@ class Exchange:
         not the request's, a tag without an entry, a payload that does not decode or meet the
         `expect`) and bytes that are no frame; it raises for a frame whose checksum is wrong (this
         device's reply, corrupted). The next frame is looked for from the byte after the start of
-        the one read past, unless a checksum vouched for it whole. Each is told to the trace."""
+        the one read past, unless a checksum vouched for it whole. Each is told to the trace.
+
+        `error`: an error reply in a frame of its own, tried first at each frame (`_framed_error`)."""
         assert use is not None
         frame = use.frame
         while True:
             raw = b""
             try:
+                if error is not None:
+                    self._framed_error(plan, error, reader, request, local or [])
                 raw, payload = frame.read(reader, fields, request, size)
                 return taken(payload)
             except (FrameError, RdisProtocolError) as err:
@@ -2648,6 +2700,62 @@ class Exchange:
                 if isinstance(err, RdisProtocolError):
                     raise
                 raise RdisProtocolError(f"{plan.name}: {err}") from None
+
+    def _framed_error(self, plan: Primitive, error: ErrorReply, reader: Incoming, request: bytes,
+                      local: Args) -> None:
+        """Raise the device's error if the next frame is its error frame (with the bytes it starts
+        with); else give back every byte read, for the reply to be read from its first. Nothing
+        at all is a timeout, and an error frame whose checksum is wrong a FrameError (this
+        device's error reply, corrupted). An error frame no longer than the reply costs nothing;
+        a longer one is read to the deadline before the reply is."""
+        use = error.frame
+        assert use is not None
+        try:
+            fields = use.frame.values(plan.name, use.args(self._state, local))
+        except (struct.error, *EVAL_ERRORS) as err:
+            raise RdisValueError(f"{plan.name}: {err}") from None
+        decoder = error.decoder
+        try:
+            raw, payload = use.frame.read(reader, fields, request, len(error.marker) + decoder.size, whole=True)
+        except ChecksumError:
+            raise
+        except FrameError as err:
+            if err.timeout:
+                raise
+            return
+        if not payload.startswith(error.marker):
+            reader.put_back(raw)
+            return
+        raise self._device_error(plan, error, payload[len(error.marker):])
+
+    def _unframed_error(self, plan: Primitive, error: ErrorReply, reader: Incoming, local: Args) -> None:
+        """Raise the device's error if the reply starts with its bytes (a NACK); else give them
+        back, for the reply to be read from its first."""
+        marker = error.marker
+        head = reader.read(len(marker))
+        if head != marker:
+            reader.put_back(head)
+            return
+        size = error.decoder.size
+        body = reader.read(size)
+        if len(body) < size:
+            raise RdisProtocolError(f"{plan.name}: an error reply {marker.hex(' ')} then {len(body)} bytes, "
+                                    f"where its decoding takes {size}")
+        raise self._device_error(plan, error, body)
+
+    @staticmethod
+    def _device_error(plan: Primitive, error: ErrorReply, body: bytes) -> RdisDeviceError:
+        """The device's error: its bytes decoded, the first value its code, named by the enum."""
+        values = tuple(error.decoder.decode(plan.name, body))
+        code = values[0] if values and type(values[0]) is int else None
+        name = error.names.get(code) if code is not None else None
+        if code is None:
+            said = "an error reply" + (f" {values!r}" if values else "")
+        elif not error.codes:
+            said = f"error {code}"
+        else:
+            said = f"error {code} ({name if name is not None else 'not a member of ' + error.codes})"
+        return RdisDeviceError(f"{plan.name}: the device answered {said}", code, name, values)
 
     def _in_turn(self, plan: Primitive, turns: list[tuple[Primitive, Reply, FrameUse | None]], link: _Link,
                  reader: Incoming, fields: list[Any], request: bytes, wait: float, local: Args) -> list[_ReplyPart]:
