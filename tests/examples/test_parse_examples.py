@@ -68,6 +68,8 @@ EXPECTED_COUNTS: dict[str, dict[str, int]] = {
                               "RobotDecl": 1, "StateDecl": 11},
     "examples/roboclaw.rdis": {"ConnectionDecl": 1, "FrameDecl": 3, "InterfaceDecl": 1, "PrimitiveDecl": 32,
                                "RobotDecl": 1, "SettingDecl": 1, "StateDecl": 19},
+    "examples/modbus.rdis": {"RobotDecl": 1, "EnumDecl": 1, "SettingDecl": 1, "StateDecl": 3, "ConnectionDecl": 1,
+                             "FrameDecl": 1, "PrimitiveDecl": 3},
 }
 
 SOURCES = [STDLIB, *sorted(EXAMPLES.glob("*.rdis"))]
