@@ -23,6 +23,7 @@ def decode(model: m.Model, device: engine.Device, messages: Sequence[Message]) -
     checks = {name: _checks(model, device, name) for name in model.primitives}
     requests = {name: request_layouts(model, p) for name, p in model.primitives.items()}
     replies = {name: reply_layouts(model, p) for name, p in model.primitives.items()}
+    errors = {name: _error_checks(device, name) for name in model.primitives}
     written: dict[str | None, bytes] = {}  # the last request on each connection (a checksum may cover it)
     carried: dict[str | None, _Fields] = {}  # its frame's fields, which its reply must carry too
     asked: dict[str | None, str] = {}  # the primitive of the last request on each connection
@@ -52,8 +53,9 @@ def decode(model: m.Model, device: engine.Device, messages: Sequence[Message]) -
             found = [(f"{said} of {name}", rows, pattern if isinstance(pattern, str) else None)
                      for name in ordered for said, (table, pattern) in replies[name]
                      if (rows := matched((table, pattern), message.data)) is not None
-                     and _whole(checks[name][1], message.data, request,
-                                carried.get(message.connection) if name == before else None)]
+                     and (_whole(checks[name][1], message.data, request,
+                                 carried.get(message.connection) if name == before else None)
+                          if said != "error" or errors[name] is None else _whole(errors[name], message.data, request))]
             if found and found[0][0].endswith(f" of {before}"):  # the request's own reply: no other is meant
                 found = found[:1]
             elif before in names:  # its shape, but not its request's fields (another servo's status)
@@ -163,6 +165,16 @@ def _checks(model: m.Model, device: engine.Device, name: str) -> tuple[_Check, _
     requests = tuple((engine.Frame(frame.name, side.parts, side.parts), fields) for side in frame.requests)
     framed = frame.reply.parts and not p.reply_frames and not p.listed
     return requests, ((frame, fields),) if framed else ()
+
+
+def _error_checks(device: engine.Device, name: str) -> _Check | None:
+    """The frame of the error reply that may come instead of `name`'s, if it has one of its own
+    (its fields, such as Modbus's function code with 0x80 set, equal to any); None: the reply's."""
+    reply = device.primitives[name].reply
+    error = reply.error if isinstance(reply, (engine.FixedReply, engine.FramedReply)) else None
+    if error is None or error.frame is None:
+        return None
+    return ((error.frame.frame, _Fields()),)
 
 
 def _fixed(frames: _Check) -> bool:

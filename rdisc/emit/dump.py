@@ -86,9 +86,28 @@ def _primitive(model: m.Model, p: m.Primitive) -> str:
             rows.append((len(p.records), "record end", _hex(p.records.encode("latin-1"))))
         said = f"{p.replies} replies{through}, each" if p.replies else "reply"
         lines += _sides("reply: records, each" if p.records is not None else said, framed, rows)
+        if p.error is not None:
+            name, sides, rows = _error_layout(model, p, p.error)
+            lines += _sides(name, sides, rows)
     else:
         lines.append("  reply: none")
     return "\n".join(lines) + "\n"
+
+
+def _error_layout(model: m.Model, p: m.Primitive,
+                  e: m.ErrorReply) -> tuple[str, tuple[tuple[m.FramePart, ...], ...] | None, list[Row]]:
+    """The reply that may come instead (`error`): its name, its frame's layouts (its own, or the
+    primitive's, or none) and its payload's rows, the marker first and the code named."""
+    use = e.frame or p.frame
+    frame = model.frames[use.frame] if use is not None else None
+    through = "" if e.frame is None else f", frame {e.frame.frame}({', '.join(expression_text(a) for a in e.frame.args)})"
+    rows = _reply_rows(e.decoding)
+    if rows and e.codes is not None:
+        size, what, _ = rows[0]
+        rows[0] = (size, what, f"code, named by {e.codes}")
+    if e.marker:
+        rows.insert(0, (len(e.marker), "error marker", _hex(e.marker.encode("latin-1"))))
+    return f"or an error{through}", frame.replies if frame is not None and frame.reply else None, rows
 
 
 Row = tuple[int | None, str, str]  # size (None: varies), what, detail
@@ -433,7 +452,11 @@ def reply_layouts(model: m.Model, p: m.Primitive) -> list[tuple[str, Layout]]:
         return found
     if p.records is not None or not p.expects_reply(model.frames):
         return []
-    return layouts("reply", p.decoding, _reply_rows(p.decoding))
+    found = layouts("reply", p.decoding, _reply_rows(p.decoding))
+    if p.error is not None:
+        _, error_sides, rows = _error_layout(model, p, p.error)
+        found += layouts("error", p.error.decoding, rows, error_sides or (None,))
+    return found
 
 
 _CONSTANT = re.compile(r"([0-9A-F]{2}(?: [0-9A-F]{2})*)(?: \(-?\d+\))?")

@@ -234,3 +234,22 @@ def test_a_capture_of_too_many_messages_is_refused(rdisc, tmp_path: Path, monkey
     capture.write_text("> 8e 07\n< 03\n" * 2)
     result = rdisc("decode", EXAMPLES / "create.rdis", capture)
     assert (result.returncode, result.stdout, result.stderr) == (2, "", f"rdisc decode: {capture}: 4 messages, more than 3\n")
+
+
+def test_a_modbus_exception_is_the_error_reply_of_its_request(rdisc, tmp_path: Path) -> None:
+    """The Modbus specification's exception (`01 83 02 C0 F1`, function 0x83: its own frame's
+    fields, not the request's) is told as the error of the request before it; with its CRC wrong,
+    as nothing."""
+    capture = tmp_path / "modbus.txt"
+    capture.write_text("> 01 03 00 6B 00 02 B5 D7\n< 01 83 02 C0 F1\n< 01 83 02 C0 F2\n")
+    assert decode(rdisc, "modbus.rdis", capture)[8:] == [
+        "< 01 83 02 C0 F1",
+        "  error of read_holding",
+        HEAD,
+        '       0     1  field unit            "B" = unit                    1             01',
+        '       1     1  field function        "B" = function                131           83',
+        "       2     1  payload u8            code, named by Exception      2             02",
+        "       3     2  checksum              crc16-modbus as <H, over unit .. payload                C0 F1",
+        "< 01 83 02 C0 F2",
+        "  unknown: no primitive's reply is these 5 bytes",
+    ]

@@ -37,3 +37,28 @@ primitive at(command: string) on link
   offset  size  kind                  value
        0     n  text                  regex "^OK\\r$"
 """
+
+
+NACK = """\
+robot nack { author "tests" }
+enum Refusal { BUSY = 1 }
+connection link: serial { baud 9600 }
+primitive level() on link pack "B" (0x21) unpack "<BH" error "\\x15" unpack "B" code Refusal
+"""
+
+
+def test_an_error_reply_is_shown_after_the_reply(tmp_path: Path, rdisc) -> None:
+    source = tmp_path / "nack.rdis"
+    source.write_text(NACK, encoding="utf-8")
+    result = rdisc("dump", source)
+    assert (result.returncode, result.stderr) == (0, "")
+    assert result.stdout.split("  reply: ")[1] == """\
+3 bytes
+  offset  size  kind                  value
+       0     1  u8                    out[0]
+       1     2  u16 LE                out[1]
+  or an error: 2 bytes
+  offset  size  kind                  value
+       0     1  error marker          15
+       1     1  u8                    code, named by Refusal
+"""
