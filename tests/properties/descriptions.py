@@ -1156,6 +1156,7 @@ class Primitive:
     timeout_ms: int | None = None
     lasts: tuple[int | None, ...] = ()  # a tag table's entries' last values (`value..last`), None for one value
     retries: int = 0  # `retry N`: resends after a timeout or a mismatched reply
+    error: bytes = b""  # `error "MARKER" unpack "B"`: the bytes an unframed error reply starts with
 
     def text(self) -> str:
         clauses = [f"on {self.connection}"]
@@ -1171,6 +1172,8 @@ class Primitive:
             clauses.append(f"timeout {self.timeout_ms} ms")
         if self.retries:
             clauses.append(f"retry {self.retries}")
+        if self.error:
+            clauses.append(f'error {bytes_literal(self.error)} unpack "B"')
         if self.key is not None or self.tag is not None:
             head = f"reply {self.key}" if self.key is not None else f'reply tag "{self.tag}"'
             entries = "\n".join(f"    {value}{'' if last == value else f'..{last}'}: {reply.text()}"
@@ -1560,8 +1563,12 @@ def primitives(draw: Draw, name: str, states: Mapping[str, str], scope: Scope,
     timeout = draw(st.sampled_from([20, 50, 100])) if reads and sometimes(draw, 3) else None
     writes = not listener and (frame is not None or template != "")
     retries = draw(st.integers(1, 2)) if reads and writes and sometimes(draw, 4) else 0
+    error = b""  # a NACK before an unframed reply of a fixed size
+    if (reply is not None and not framed_reply and reply.decoding.kind == "unpack" and reply.decoding.size is not None
+            and sometimes(draw, 3)):
+        error = draw(st.sampled_from([b"\xee", b"\x15\x15"]))
     return Primitive(name, params, draw(st.sampled_from(connections)), encoding, template, args, reply, actions,
-                     key, tag, entries, frame, frame_args, skip, timeout, lasts, retries)
+                     key, tag, entries, frame, frame_args, skip, timeout, lasts, retries, error)
 
 
 def _call_args(draw: Draw, prim: Primitive, scope: Scope) -> tuple[Expr, ...] | None:
@@ -1755,7 +1762,7 @@ def valid_reply(description: Description, prim: Primitive, values: Mapping[str, 
         end = description.connection(prim.connection).line_end()
         end = b"\r\n" if end == b"\n" and plan.at % 2 else end
         return Wire(payload + end, valid and end not in payload and b"\n" not in payload)
-    return Wire(payload, valid)
+    return Wire(payload, valid and not (prim.error and payload.startswith(prim.error)))  # else the device's error
 
 
 def reply_for(description: Description, prim: Primitive, values: Mapping[str, Any], request: bytes,
@@ -1781,6 +1788,8 @@ def reply_for(description: Description, prim: Primitive, values: Mapping[str, An
         spoilt = valid + plan.material
     elif plan.kind == "nothing":
         spoilt = b""
+    elif plan.kind == "garbage" and prim.error and plan.at % 2:  # the device's error, its code (or none) after it
+        spoilt = prim.error + plan.material
     elif plan.kind == "twice":
         spoilt = valid + valid
     else:

@@ -268,7 +268,7 @@ REPLY_RULE = "a valid reply is decoded"
 RANGE_RULE = "a value outside its parameter's range is refused"
 OUTPUT_RULE = "an interface that completes delivers the output it triggers"
 LOAD_RULE = "a checked description loads"
-CALL_ERRORS = ("RdisTimeout", "RdisProtocolError", "RdisValueError", "TypeError", "KeyError")
+CALL_ERRORS = ("RdisTimeout", "RdisProtocolError", "RdisValueError", "RdisDeviceError", "TypeError", "KeyError")
 
 
 @dataclass(frozen=True)
