@@ -55,7 +55,7 @@ def decode(model: m.Model, device: engine.Device, messages: Sequence[Message]) -
                      if (rows := matched((table, pattern), message.data)) is not None
                      and (_whole(checks[name][1], message.data, request,
                                  carried.get(message.connection) if name == before else None)
-                          if said != "error" or errors[name] is None else _whole(errors[name], message.data, request))]
+                          if said != "error" or errors[name] is None else _whole(errors[name] or (), message.data, request))]
             if found and found[0][0].endswith(f" of {before}"):  # the request's own reply: no other is meant
                 found = found[:1]
             elif before in names:  # its shape, but not its request's fields (another servo's status)
