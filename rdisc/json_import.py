@@ -869,10 +869,16 @@ class _Importer:
         if connection is not None:
             clauses.append(ast.On(connection, connection.span))
         lines = self.object(m.get("lines"), "`lines`")
-        if lines is not None:  # {"dtr": "<not on>", ...}: the lines in the order they are set
-            settings = [(self.ident(line, "a modem line"), self.expr(value, "bool")) for line, value in lines.members]
-            clauses.append(ast.Lines(tuple(ast.Assign(line, value, value.span) for line, value in settings
-                                           if line is not None and value is not None), lines.span))
+        if lines is not None:  # {"dtr": "<not on>", "break": 10, ...}: in the order they are set, a break in ms
+            settings: list[ast.Assign | ast.LineBreak] = []
+            for line_name, value in lines.members:
+                line = self.ident(line_name, "a modem line")
+                level = self.expr(value, "float" if line is not None and line.text == "break" else "bool")
+                if line is None or level is None:
+                    continue
+                settings.append(ast.LineBreak(ast.Duration(level, "ms", level.span), level.span)
+                                if line.text == "break" else ast.Assign(line, level, level.span))
+            clauses.append(ast.Lines(tuple(settings), lines.span))
         encodings = [(kind, s) for kind in ("pack", "format") if (s := self.string(m.get(kind), f"`{kind}`"))]
         slots = _slot_types(*encodings[0]) if encodings else {}
         written = self.array(m.get("formatArgs"), "`formatArgs`")

@@ -196,12 +196,15 @@ that both call."""),
 A primitive's `lines` clause sets the modem lines of a serial port, `dtr` and `rts`,
 to bools before its request is written (True asserts the line, as in pyserial: an
 RPLIDAR A1's motor runs while DTR is cleared, an Arduino resets on a DTR pulse).
-Those two are the only lines a primitive sets, and
-only a `serial` connection has them: a `tcp` connection carries bytes alone. Wrong:
+Those two are the only lines a primitive sets; it may also send a break, `break 10 ms`
+among them (TX held low that long, as pyserial's `send_break`: a LIN or DMX frame's
+start, a device woken or reset), held more than 0 and at most 10000 ms. Only a
+`serial` connection has them: a `tcp` connection carries bytes alone. Wrong:
 `connection net: tcp { address "socket://10.0.0.2:4000" }` with
-`primitive motor(on: bool) on net lines dtr = not on`, or `lines cts = True`. Right:
-`connection link: serial { baud 115200 }` with
-`primitive motor(on: bool) on link lines dtr = not on`."""),
+`primitive motor(on: bool) on net lines dtr = not on`, `lines cts = True`, or
+`lines break 0 ms`. Right: `connection link: serial { baud 115200 }` with
+`primitive motor(on: bool) on link lines dtr = not on`, or
+`primitive wake() on link lines break 10 ms pack "B" (0x55)`."""),
     ("E212", "loop", """
 A loop in an interface's body, `for NAME in LOW..HIGH { ... }` (both ends included)
 or `for NAME in ARRAY { ... }`, runs a number of rounds known when the description

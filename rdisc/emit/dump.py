@@ -37,7 +37,8 @@ def _primitive(model: m.Model, p: m.Primitive) -> str:
         codes = ", ".join(f"{ord(byte):02X} as {escape} {ord(code):02X}" for byte, code in frame.escaping.table)
         lines.append(f"  escaped between the flags: {codes}")
     if p.lines:
-        levels = ", ".join(f"{level.line} = {expression_text(level.value)}" for level in p.lines)
+        levels = ", ".join(f"break {expression_text(level.value)} ms" if level.line == m.BREAK
+                           else f"{level.line} = {expression_text(level.value)}" for level in p.lines)
         lines.append(f"  lines: {levels} (set before the request)" if p.encoding else f"  lines: {levels}")
     if p.encoding is None:
         lines.append("  request: none")

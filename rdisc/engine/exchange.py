@@ -131,17 +131,31 @@ class Exchange:
 
     @staticmethod
     def _set_lines(plan: Primitive, io: Port, levels: dict[str, Value]) -> None:
-        """Set the primitive's modem lines in the order written (pyserial's `dtr` and `rts`). A
-        port that refuses (a pty, a port with no modem lines) is an RdisConnectionError."""
+        """Set the primitive's modem lines and send its break in the order written (pyserial's
+        `dtr`, `rts`, and `break_condition` held `level` ms: its `send_break` rounds a POSIX
+        break to 0.25 s steps, which no short break survives). A port that refuses (a pty, a
+        port with no modem lines) is an RdisConnectionError."""
         for line, level in levels.items():
             try:
                 if line == "dtr":
                     io.dtr = bool(level)
-                else:
+                elif line == "rts":
                     io.rts = bool(level)
+                else:
+                    assert isinstance(level, float)  # the checker's: a constant, in ms
+                    if not hasattr(io, "break_condition"):
+                        raise RdisConnectionError(f"{plan.connection}: {plan.name}: cannot send a break of "
+                                                  f"{level:g} ms: the port has no `break_condition`")
+                    io.break_condition = True
+                    try:
+                        time.sleep(level / 1000.0)
+                    finally:
+                        io.break_condition = False
+            except RdisError:
+                raise
             except Exception as err:  # whatever the port raises, it refused
-                raise RdisConnectionError(f"{plan.connection}: {plan.name}: cannot set {line} = {bool(level)}: "
-                                          f"{err}") from err
+                said = f"send a break of {_ms(level)}" if line == "break" else f"set {line} = {bool(level)}"
+                raise RdisConnectionError(f"{plan.connection}: {plan.name}: cannot {said}: {err}") from err
 
     def _exchange(self, plan: Primitive, values: Args, local: Args) -> None:
         """Encode and frame the request; under the port's lock write it and read the reply;
@@ -714,5 +728,12 @@ def _entry_decoder(entry: Primitive) -> Unpack | Match | None:
 
 
 def _lines_text(levels: Mapping[str, Value]) -> bytes:
-    """The modem lines a primitive set, as the I/O callbacks see them: b"dtr=False rts=True"."""
-    return " ".join(f"{line}={bool(level)}" for line, level in levels.items()).encode("ascii")
+    """The modem lines a primitive set and its break, as the I/O callbacks see them:
+    b"dtr=False rts=True", b"break=10ms"."""
+    return " ".join(f"break={_ms(level).replace(' ', '')}" if line == "break" else f"{line}={bool(level)}"
+                    for line, level in levels.items()).encode("ascii")
+
+
+def _ms(level: Value) -> str:
+    """A break's duration as said: "10 ms"."""
+    return f"{level:g} ms" if isinstance(level, (int, float)) else repr(level)

@@ -42,6 +42,7 @@ CONNECTION_KINDS = ("serial", "tcp")
 DEFAULT_BAUD = 9600
 DEFAULT_FREQUENCY_HZ = 10.0
 MAX_TERMINATOR = 8
+MAX_BREAK_MS = 10_000  # a serial break held longer is a line left low, not a break
 MAX_POLLS = 100_000  # calls of one `until`: its limit over its interval, plus the first
 MAX_RETRIES = 10  # resends of one request: each may wait a whole timeout
 MAX_TABLE = 4096  # entries of a reply table
@@ -974,8 +975,23 @@ class _Checker:
             self.d.report("E211", clause.span, f"`{name.text}` sets modem lines, but connection `{connection}` is "
                           "`tcp`, which has none", help="DTR and RTS are a serial port's: use a `serial` connection")
         levels: list[m.LineLevel] = []
-        seen: dict[str, ast.Assign] = {}
+        seen: dict[str, ast.Assign | ast.LineBreak] = {}
         for setting in clause.settings:
+            if isinstance(setting, ast.LineBreak):
+                if m.BREAK in seen:
+                    self.d.report("E203", setting.span, f"`break` is given twice in `{name.text}`",
+                                  labels=(Label(seen[m.BREAK].span, "first given here"),))
+                    continue
+                seen[m.BREAK] = setting
+                held = self.duration(setting.duration, "a break")
+                if held is not None and not 0 < held <= MAX_BREAK_MS:
+                    self.d.report("E211", setting.duration.span, f"a break is held from more than 0 to "
+                                  f"{MAX_BREAK_MS} ms, not {shown(held)} ms",
+                                  help="a serial break holds TX low for a few character times to a few "
+                                  "hundred ms (pyserial's `send_break` holds it 250 ms)")
+                elif held is not None:
+                    levels.append(m.LineLevel(m.BREAK, m.Const(float(held), Type.FLOAT), setting.span))
+                continue
             line = setting.target.text
             value = self.typer.expr(setting.value, env)
             if line not in m.MODEM_LINES:
@@ -984,7 +1000,7 @@ class _Checker:
                 continue
             if line in seen:
                 self.d.report("E203", setting.target.span, f"`{line}` is given twice in `{name.text}`",
-                              labels=(Label(seen[line].target.span, "first given here"),))
+                              labels=(Label(seen[line].span, "first given here"),))
                 continue
             seen[line] = setting
             if value.type is not None and value.type is not Type.BOOL:

@@ -455,6 +455,7 @@ class PostAction:
 
 
 MODEM_LINES = ("dtr", "rts")
+BREAK = "break"  # a LineLevel's line for a serial break: its value the duration in ms (a float constant)
 """The serial port's modem lines a primitive may set (pyserial's `dtr` and `rts`)."""
 
 
@@ -462,7 +463,7 @@ MODEM_LINES = ("dtr", "rts")
 class LineLevel:
     """A modem line and its level (a bool over state and the primitive's parameters)."""
 
-    line: str  # one of MODEM_LINES
+    line: str  # one of MODEM_LINES, or BREAK
     value: Expr
     span: Span | None = _span
 

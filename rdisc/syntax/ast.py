@@ -425,10 +425,19 @@ class Records:
 
 
 @dataclass(frozen=True, slots=True)
-class Lines:
-    """`lines dtr = COND, rts = COND`: the serial port's modem lines, set before the request."""
+class LineBreak:
+    """`break 10 ms` among a primitive's `lines`: a serial break (TX held low) for that long."""
 
-    settings: tuple[Assign, ...]
+    duration: Duration
+    span: Span = _span
+
+
+@dataclass(frozen=True, slots=True)
+class Lines:
+    """`lines dtr = COND, rts = COND, break 10 ms`: the serial port's modem lines, set before the
+    request, and a break sent, in the order given."""
+
+    settings: tuple[Assign | LineBreak, ...]
     span: Span = _span
 
 

@@ -1067,6 +1067,25 @@ def _hash_Records(self: Any) -> int:
     return hash((self.marker,))
 
 
+def _init_LineBreak(self: Any, duration: Any, span: Any = DEFAULT) -> None:
+    _set(self, "duration", duration)
+    _set(self, "span", span)
+
+
+def _repr_LineBreak(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(duration={self.duration!r})"
+
+
+def _eq_LineBreak(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.duration,) == (other.duration,)
+    return NotImplemented
+
+
+def _hash_LineBreak(self: Any) -> int:
+    return hash((self.duration,))
+
+
 def _init_Lines(self: Any, settings: Any, span: Any = DEFAULT) -> None:
     _set(self, "settings", settings)
     _set(self, "span", span)
@@ -2607,6 +2626,15 @@ WRITTEN: dict[str, Written] = {
             "__repr__": _repr_Records,
             "__eq__": _eq_Records,
             "__hash__": _hash_Records,
+        },
+    ),
+    "LineBreak": Written(
+        (("duration", MISSING), ("span", FieldSpec(None, MISSING, False, False))),
+        {
+            "__init__": _init_LineBreak,
+            "__repr__": _repr_LineBreak,
+            "__eq__": _eq_LineBreak,
+            "__hash__": _hash_LineBreak,
         },
     ),
     "Lines": Written(

@@ -431,8 +431,11 @@ def _transformer_class() -> Callable[[Builder], Transformer[Token, list[ast.Decl
         def expect(self, meta: Meta, c: list[Any]) -> ast.Expect:
             return ast.Expect(c[0], self.b.span(meta))
 
-        def modem_lines(self, meta: Meta, c: list[ast.Assign]) -> ast.Lines:
+        def modem_lines(self, meta: Meta, c: list[ast.Assign | ast.LineBreak]) -> ast.Lines:
             return ast.Lines(tuple(c), self.b.span(meta))
+
+        def line_break(self, meta: Meta, c: list[ast.Duration]) -> ast.LineBreak:
+            return ast.LineBreak(c[0], self.b.span(meta))
 
         def skip_unmatched(self, meta: Meta, c: list[Any]) -> ast.SkipUnmatched:
             return ast.SkipUnmatched(self.b.span(meta))

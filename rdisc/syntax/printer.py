@@ -379,7 +379,8 @@ def _primitive_clause(c: ast.PrimitiveClause) -> tuple[list[str], bool]:
         case ast.Records(marker):
             return [f"reply each until {p.quote_octets(marker.value)}"], False
         case ast.Lines(settings):
-            return ["lines " + ", ".join(_assign(a) for a in settings)], False
+            return ["lines " + ", ".join(f"break {_duration(a.duration)}" if isinstance(a, ast.LineBreak)
+                                         else _assign(a) for a in settings)], False
         case ast.ReplyTable(key, entries, _, tag, each, length):
             if tag is None:
                 lines = [f"reply {key.text} {{"]

@@ -46,7 +46,7 @@ class ScriptedPort:
     """A port in memory whose device is scripted by the test: a script of reply bytes, a `Device`,
     or silence; it can also fail (`fail`: a write raises OSError, as a port that was unplugged).
 
-    `events`: ("write", data), ("dtr", level), ("rts", level), and ("reset input", what was
+    `events`: ("write", data), ("dtr", level), ("rts", level), ("break", held), and ("reset input", what was
     waiting) when `record_resets`. `on_timeout(seconds)` is told of each read that came back short
     after waiting the port's whole timeout (a test's clock can then advance by it)."""
 
@@ -75,6 +75,7 @@ class ScriptedPort:
         self.fail = fail
         self.on_timeout = on_timeout
         self.levels = {"dtr": True, "rts": True}  # as pyserial opens a port
+        self.breaking = False
         self.closed = False
 
     @property
@@ -90,6 +91,18 @@ class ScriptedPort:
         if self.device is not None:
             self.input += self.device.answer(bytes(data))
         return len(data)
+
+    @property
+    def break_condition(self) -> bool:
+        return self.breaking
+
+    @break_condition.setter
+    def break_condition(self, value: bool) -> None:
+        """pyserial's break: TX held low while True; each change recorded among the events."""
+        if self.fail:
+            raise OSError(5, "the device is gone")
+        self.breaking = value
+        self.events.append(("break", value))
 
     def flush(self) -> None:
         pass
