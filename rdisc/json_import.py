@@ -697,8 +697,11 @@ class _Importer:
         if "bits" in keys:
             return self.bits(obj)
         if "payload" in keys:
-            self.members(obj, "a payload part", ("payload",))
-            return ast.FramePayload(obj.span)
+            given = self.members(obj, "a payload part", ("payload",)).get("payload")
+            trimmed = isinstance(given, JString) and given.value == "trimmed"
+            if not trimmed and not isinstance(given, JBool):
+                self.error(obj.span, 'a payload part is `"payload": true` or `"payload": "trimmed"`')
+            return ast.FramePayload(obj.span, trimmed)
         if "checksum" in keys:
             return self.checksum(obj, side)
         self.error(obj.span, "a frame part is one of header, literal, terminator, field, length, bits, payload, "

@@ -602,7 +602,7 @@ def _folded(written: Written, use: FrameUse, size: int) -> Written | None:
                         fields=None if f.fields is None else _evaluated(f.fields))
     side = made.requests[0]
     payload_at = side.payload
-    if payload_at < 0 or size > side.most:
+    if payload_at < 0 or size > side.most or made.trim:  # a trimmed payload's size is not fixed
         return None
     try:
         fields = made.values("", args)

@@ -262,8 +262,8 @@ def _frame_part(part: m.FramePart) -> JsonObject:
             return {"field": name, "format": fmt, "value": _embedded(value)}
         case m.FrameLength(fmt, adjust):
             return {"length": fmt, "adjust": adjust}
-        case m.FramePayload():
-            return {"payload": True}
+        case m.FramePayload(trimmed):
+            return {"payload": "trimmed"} if trimmed else {"payload": True}
         case m.FrameChecksum(a, fmt, first, last, with_request):
             return _object(
                 ("checksum", a.name), ("kind", a.kind), ("width", a.width),

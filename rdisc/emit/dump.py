@@ -123,6 +123,8 @@ def _kind(layout: m.StructLayout, code: str, size: int) -> str:
     order when it has one."""
     if code == "*":
         return "bytes (the rest)"
+    if code.endswith("Z"):
+        return "text, padded"
     kind = _KINDS.get(code[-1], "text")
     if size == 1 or kind == "text":
         return kind
@@ -302,9 +304,11 @@ def _layout_rows(parts: tuple[m.FramePart, ...] | None, payload: list[Row], repl
                     rows.append((layout.size, "length", f'"{fmt}" = payload{sign}'))
                 case m.FrameBits(format=fmt, fields=bits, layout=layout):
                     rows.append((layout.size, "bits", f'"{fmt}": ' + _bit_fields(bits)))
-                case m.FramePayload():
+                case m.FramePayload(trimmed=trimmed):
                     rows += [(size, f"payload {what}", detail) for size, what, detail in payload] or [
                         (0, "payload", "(empty)")]
+                    if trimmed:
+                        rows.append((0, "payload trimmed", "trailing zero bytes dropped; put back when read"))
                 case m.FrameChecksum(algorithm=a, format=fmt, first=first, last=last, with_request=req):
                     size = part.layout.size if part.layout is not None else (a.width + 3) // 4
                     covers = " .. ".join(dict.fromkeys([_name(parts[first]), _name(parts[last])]))

@@ -193,15 +193,18 @@ class Unpack:
     group's values as one array a code. With `varying`, `fixed` is the format before that
     group, repeated as many times as its count field says or as fill the reply. Each integer
     split into `bits` is then given as its fields. With `until`, an unframed tagged reply's
-    entry is read to those bytes (Firmata's sysex end), which are dropped."""
+    entry is read to those bytes (Firmata's sysex end), which are dropped. The strings at
+    `padded` (`NZ`) end at their first NUL byte: the padding is not text."""
 
-    __slots__ = ("bits", "groups", "rest", "size", "splitters", "strings", "struct", "until", "varying",
+    __slots__ = ("bits", "groups", "padded", "rest", "size", "splitters", "strings", "struct", "until", "varying",
                  "varying_sizes")
 
     def __init__(self, fixed: str, strings: tuple[int, ...] = (), rest: bool = False,
                  groups: tuple[Group, ...] = (), varying: Varying | None = None, bits: tuple[Split, ...] = (),
-                 until: bytes | None = None, varying_sizes: tuple[int, int] = (0, 0)) -> None:
+                 until: bytes | None = None, varying_sizes: tuple[int, int] = (0, 0),
+                 padded: tuple[int, ...] = ()) -> None:
         """`varying_sizes`: the bytes of one round of the `varying` group and of the format after it."""
+        self.padded = padded
         self.varying_sizes = varying_sizes
         self.struct = struct.Struct(fixed)
         self.strings = strings
@@ -236,6 +239,8 @@ class Unpack:
             decoded = list(values)
             for i in self.strings:
                 decoded[i] = decoded[i].decode("latin-1")
+            for i in self.padded:
+                decoded[i] = decoded[i].partition("\0")[0]
             return tuple(decoded)
         return values
 

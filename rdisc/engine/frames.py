@@ -25,6 +25,7 @@ from rdisc.engine.wire import (
     Length,
     OptionalParts,
     Part,
+    Payload,
     Reader,
     Side,
     Stuffing,
@@ -96,8 +97,8 @@ class Frame:
     """A request side and a reply side (empty when the device answers nothing framed), and
     the values of its fields over its parameters."""
 
-    __slots__ = ("escaping", "fields", "headers", "name", "params", "quick", "ranged", "replies", "reply", "requests",
-                 "stuffing", "vouched")
+    __slots__ = ("escaping", "fields", "fill", "headers", "name", "params", "quick", "ranged", "replies", "reply",
+                 "requests", "stuffing", "trim", "vouched")
 
     def __init__(self, name: str, request: Sequence[Part], reply: Sequence[Part], stuffing: Stuffing | None = None,
                  params: tuple[Param, ...] = (), fields: Callable[[Args], list[Any]] | None = None,
@@ -119,6 +120,9 @@ class Frame:
         self.ranged = _ranged(params)
         self.fields = fields
         self.quick = tuple(_quick_wrap(side) for side in self.requests)
+        # `payload trimmed` (MAVLink 2): trailing zero bytes dropped when written, put back when read
+        self.trim = any(isinstance(part, Payload) and part.trimmed for side in self.requests for part in side.parts)
+        self.fill = any(isinstance(part, Payload) and part.trimmed for side in self.replies for part in side.parts)
 
     def values(self, owner: str, args: Args) -> list[Any]:
         """The field values for the frame's arguments; an argument outside its parameter's
@@ -130,6 +134,8 @@ class Frame:
     def wrap(self, payload: bytes, fields: Sequence[int]) -> bytes:
         """The request: `payload` framed (stuffed first, when the frame stuffs), with the
         frame's field values; when it escapes, what comes between its flags escaped."""
+        if self.trim:  # its trailing zero bytes dropped, its first byte kept (MAVLink 2)
+            payload = payload.rstrip(b"\0") or payload[:1]
         if self.stuffing is not None:
             payload = self.stuffing.stuff(payload)
         for side, quick in zip(self.requests, self.quick):  # the first layout that can state its size
@@ -163,12 +169,15 @@ class Frame:
         """
         data = bytearray()
         try:
-            return self._read(port, data, fields, request, size)
+            raw, payload = self._read(port, data, fields, request, size)
         except FrameError:
             kept = 0 if whole else 1
             if len(data) > kept and isinstance(port, Incoming):  # look for the next header in what was taken
                 port.put_back(bytes(data[kept:]))
             raise
+        if self.fill and len(payload) < size:  # a trimmed payload's zero bytes put back (MAVLink 2)
+            payload += bytes(size - len(payload))
+        return raw, payload
 
     def _read(self, port: Reader, data: bytearray, fields: Sequence[int], request: bytes,
               size: int) -> tuple[bytes, bytes]:

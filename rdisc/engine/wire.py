@@ -247,7 +247,13 @@ class Bits:
 
 
 class Payload:
-    __slots__ = ()
+    """Where a primitive's bytes go; `trimmed`: without their trailing zero bytes (MAVLink 2), which
+    the frame drops when it writes them and puts back when it reads them (`Frame.wrap`, `read`)."""
+
+    __slots__ = ("trimmed",)
+
+    def __init__(self, trimmed: bool = False) -> None:
+        self.trimmed = trimmed
 
     def put(self, payload: bytes, fields: Sequence[int], chunks: list[bytes]) -> bytes:
         return payload

@@ -158,8 +158,8 @@ def _part(part: m.FramePart, index: Mapping[tuple[str, m.Expr], int]) -> Constru
             return _call(engine.Field, name, layout.order, layout.codes, index[(name, value)])
         case m.FrameLength(adjust=adjust, layout=layout):
             return _call(engine.Length, layout.order, layout.codes, adjust, layout.slots[0].high)
-        case m.FramePayload():
-            return _call(engine.Payload)
+        case m.FramePayload(trimmed=trimmed):
+            return _call(engine.Payload, trimmed=trimmed)
         case m.FrameChecksum():
             return _call(engine.Check, _checksum(part.algorithm), part.format, part.first, part.last,
                          with_request=part.with_request)
@@ -186,5 +186,6 @@ def _struct_codec(kind: type[T], layout: m.StructLayout, until: bytes | None = N
     if kind is engine.Pack:
         return _call(kind, fixed, strings=strings, rest=layout.rest, groups=groups, varying=varying,
                      bits=layout.bits, rooms=layout.rooms)
+    padded = tuple(layout.joined(i) for i, slot in enumerate(layout.slots) if slot.code.endswith("Z"))
     return _call(kind, fixed, strings=strings, rest=layout.rest, groups=groups, varying=varying, bits=layout.bits,
-                 until=until, varying_sizes=None if v is None else (v.unit_size, v.tail_size))
+                 until=until, varying_sizes=None if v is None else (v.unit_size, v.tail_size), padded=padded)

@@ -1438,7 +1438,7 @@ class _Checker:
             self.fits(value, slot, expr.span, "", f"{slot.shown} holds {slot.low} to {slot.high}")
         if slot.code == "c" and isinstance(value, str) and len(value) != 1:
             self.d.report("E403", expr.span, "pack code `c` takes a string of exactly one character")
-        elif slot.code[-1:] in ("s", "p") and isinstance(value, str):
+        elif slot.code[-1:] in ("s", "p", "Z") and isinstance(value, str):
             room = formats.text_room(slot.code)
             if len(value) > room:
                 self.d.report("E403", expr.span, f"{shown(value)} is {len(value)} characters; `{slot.code}` holds "

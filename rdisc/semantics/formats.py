@@ -159,7 +159,7 @@ def struct_layout(fmt: str) -> StructLayout:
             slots.extend([Slot(code, Type.FLOAT)] * n)
         elif code == "?":
             slots.extend([Slot(code, Type.BOOL)] * n)
-        elif code in "sp":
+        elif code in "spZ":  # `Z`: `s` padded with NUL bytes, read back to the first (as Perl's `Z`)
             slots.append(Slot(f"{n}{code}", Type.STRING))
         elif code == "c":
             slots.extend([Slot(code, Type.STRING)] * n)
@@ -167,8 +167,8 @@ def struct_layout(fmt: str) -> StructLayout:
             pass
         else:
             raise TemplateError(f"`{code}` is not a struct format code", code_at)
-        written.append(m.group())
-        wire += 0 if code == "x" else 1 if code in "sp" else n
+        written.append(f"{count_text}s" if code == "Z" else m.group())
+        wire += 0 if code == "x" else 1 if code in "spZ" else n
         pos = m.end()
     if count is not None and varying is None:
         raise TemplateError("a count field `#B` counts a `#(...)` group after it, and there is none", count[2], 2)
@@ -196,19 +196,20 @@ def struct_layout(fmt: str) -> StructLayout:
     sized = tuple(dataclasses.replace(slot, size=_code_size(order, slot.code)) for slot in slots)
     layout = StructLayout(sized, size, native, rest, fixed, tuple(groups), shape, tuple(splits), order)
     rooms = tuple((layout.joined(i), text_room(slot.code)) for i, slot in enumerate(sized)
-                  if slot.code[-1:] in ("s", "p"))
+                  if slot.code[-1:] in ("s", "p", "Z"))
     return dataclasses.replace(layout, rooms=rooms)
 
 
 def _code_size(order: str, code: str) -> int:
     """Bytes of one value of a slot's code (a bit field's: its integer's), in the format's byte order."""
-    return 0 if code == "*" else struct.calcsize(order + code.split("{")[0])
+    code = code.split("{")[0]
+    return 0 if code == "*" else struct.calcsize(order + (code[:-1] + "s" if code.endswith("Z") else code))
 
 
 def text_room(code: str) -> int:
-    """The most bytes of text an `Ns` or `Np` value holds (struct cuts the rest short)."""
+    """The most bytes of text an `Ns`, `NZ` or `Np` value holds (struct cuts the rest short)."""
     count = int(code[:-1] or 1)
-    return count if code.endswith("s") else max(0, min(count - 1, 255))
+    return count if code[-1:] in ("s", "Z") else max(0, min(count - 1, 255))
 
 
 def _bit_widths(split: re.Match[str], order: str, count: str, code: str, at: int) -> tuple[int, ...]:

@@ -317,6 +317,10 @@ class FrameRules:
             f for p in parts if isinstance(p, ast.FrameBits) for f in p.fields if f.name is None]
         for extra in sorted(lengths, key=lambda p: p.span.start)[1:]:
             d.report("E501", extra.span, f"frame `{decl.name.text}` has two length fields")
+        for trimmed in (p for p in payloads if p.trimmed and not lengths):
+            d.report("E503", trimmed.span, f"the {side} of frame `{decl.name.text}` trims its payload, so it "
+                     "needs a `length` field to say how many bytes were kept",
+                     help="add `length FORMAT = payload` before the payload (MAVLink 2's is `length \"B\"`)")
         optionals = [p for p in parts if isinstance(p, ast.FrameOptional)]
         for again in optionals[1:]:
             d.report("E506", again.span, f"frame `{decl.name.text}` has two `optional`s",
@@ -335,7 +339,7 @@ class FrameRules:
                     layout = self.integer_format(part.format, "a length field", d, "E503")
                     out.append(m.FrameLength(part.format.value, part.adjust, layout))
                 case ast.FramePayload():
-                    out.append(m.FramePayload())
+                    out.append(m.FramePayload(part.trimmed))
                 case ast.FrameChecksum():
                     out.append(self.checksum(part, i, parts, names, side, d))
                 case ast.FrameBits():

@@ -543,7 +543,10 @@ class FrameLength:
 
 @dataclass(frozen=True, slots=True)
 class FramePayload:
-    """Where the primitive's own bytes go."""
+    """Where the primitive's own bytes go; `trimmed`: without their trailing zero bytes (a first
+    byte kept), which a reader puts back up to the size its decoding takes (MAVLink 2)."""
+
+    trimmed: bool = False
 
 
 @dataclass(frozen=True, slots=True)

@@ -1059,22 +1059,22 @@ def _hash_FrameLength(self: Any) -> int:
     return hash((self.format, self.adjust))
 
 
-def _init_FramePayload(self: Any) -> None:
-    pass
+def _init_FramePayload(self: Any, trimmed: Any = DEFAULT) -> None:
+    _set(self, "trimmed", trimmed)
 
 
 def _repr_FramePayload(self: Any) -> str:
-    return f"{self.__class__.__qualname__}()"
+    return f"{self.__class__.__qualname__}(trimmed={self.trimmed!r})"
 
 
 def _eq_FramePayload(self: Any, other: Any) -> Any:
     if other.__class__ is self.__class__:
-        return () == ()
+        return (self.trimmed,) == (other.trimmed,)
     return NotImplemented
 
 
 def _hash_FramePayload(self: Any) -> int:
-    return hash(())
+    return hash((self.trimmed,))
 
 
 def _init_FrameChecksum(
@@ -2662,7 +2662,7 @@ WRITTEN: dict[str, Written] = {
         },
     ),
     "FramePayload": Written(
-        (),
+        (("trimmed", DEFAULT),),
         {
             "__init__": _init_FramePayload,
             "__repr__": _repr_FramePayload,

@@ -641,7 +641,11 @@ class FrameLength:
 
 @dataclass(frozen=True, slots=True)
 class FramePayload:
+    """`payload`, or `payload trimmed`: its trailing zero bytes dropped when written and put back
+    when read (MAVLink 2's payload truncation)."""
+
     span: Span = _span
+    trimmed: bool = False
 
 
 @dataclass(frozen=True, slots=True)

@@ -1656,22 +1656,23 @@ def _hash_FrameLength(self: Any) -> int:
     return hash((self.format, self.adjust))
 
 
-def _init_FramePayload(self: Any, span: Any = DEFAULT) -> None:
+def _init_FramePayload(self: Any, span: Any = DEFAULT, trimmed: Any = DEFAULT) -> None:
     _set(self, "span", span)
+    _set(self, "trimmed", trimmed)
 
 
 def _repr_FramePayload(self: Any) -> str:
-    return f"{self.__class__.__qualname__}()"
+    return f"{self.__class__.__qualname__}(trimmed={self.trimmed!r})"
 
 
 def _eq_FramePayload(self: Any, other: Any) -> Any:
     if other.__class__ is self.__class__:
-        return () == ()
+        return (self.trimmed,) == (other.trimmed,)
     return NotImplemented
 
 
 def _hash_FramePayload(self: Any) -> int:
-    return hash(())
+    return hash((self.trimmed,))
 
 
 def _init_ChecksumOption(
@@ -2881,7 +2882,7 @@ WRITTEN: dict[str, Written] = {
         },
     ),
     "FramePayload": Written(
-        (("span", FieldSpec(None, MISSING, False, False)),),
+        (("span", FieldSpec(None, MISSING, False, False)), ("trimmed", DEFAULT)),
         {
             "__init__": _init_FramePayload,
             "__repr__": _repr_FramePayload,

@@ -525,6 +525,9 @@ def _transformer_class() -> Callable[[Builder], Transformer[Token, list[ast.Decl
         def f_payload(self, meta: Meta, c: list[Any]) -> ast.FramePayload:
             return ast.FramePayload(self.b.span(meta))
 
+        def f_payload_trimmed(self, meta: Meta, c: list[Any]) -> ast.FramePayload:
+            return ast.FramePayload(self.b.span(meta), trimmed=True)
+
         def f_checksum(self, meta: Meta, c: list[Any]) -> ast.FrameChecksum:
             algorithm, encoding, *options = c
             fmt = None if encoding == "hex" else self.b.string(encoding)

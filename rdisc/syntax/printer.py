@@ -175,8 +175,8 @@ def _frame_part(part: ast.FramePart) -> str:
         case ast.FrameLength(fmt, adjust):
             return f"length {p.quote(fmt.value)} = payload" + (f" {'-' if adjust < 0 else '+'} {abs(adjust)}"
                                                              if adjust else "")
-        case ast.FramePayload():
-            return "payload"
+        case ast.FramePayload(_, trimmed):
+            return "payload trimmed" if trimmed else "payload"
         case ast.FrameChecksum(algorithm, fmt, options):
             words = [f"checksum {p.quote(algorithm.value)} {'hex' if fmt is None else p.quote(fmt.value)}"]
             for o in options:

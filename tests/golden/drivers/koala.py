@@ -803,7 +803,13 @@ class Bits:
 
 
 class Payload:
-    __slots__ = ()
+    """Where a primitive's bytes go; `trimmed`: without their trailing zero bytes (MAVLink 2), which
+    the frame drops when it writes them and puts back when it reads them (`Frame.wrap`, `read`)."""
+
+    __slots__ = ("trimmed",)
+
+    def __init__(self, trimmed: bool = False) -> None:
+        self.trimmed = trimmed
 
     def put(self, payload: bytes, fields: Sequence[int], chunks: list[bytes]) -> bytes:
         return payload
@@ -1135,15 +1141,18 @@ class Unpack:
     group's values as one array a code. With `varying`, `fixed` is the format before that
     group, repeated as many times as its count field says or as fill the reply. Each integer
     split into `bits` is then given as its fields. With `until`, an unframed tagged reply's
-    entry is read to those bytes (Firmata's sysex end), which are dropped."""
+    entry is read to those bytes (Firmata's sysex end), which are dropped. The strings at
+    `padded` (`NZ`) end at their first NUL byte: the padding is not text."""
 
-    __slots__ = ("bits", "groups", "rest", "size", "splitters", "strings", "struct", "until", "varying",
+    __slots__ = ("bits", "groups", "padded", "rest", "size", "splitters", "strings", "struct", "until", "varying",
                  "varying_sizes")
 
     def __init__(self, fixed: str, strings: tuple[int, ...] = (), rest: bool = False,
                  groups: tuple[Group, ...] = (), varying: Varying | None = None, bits: tuple[Split, ...] = (),
-                 until: bytes | None = None, varying_sizes: tuple[int, int] = (0, 0)) -> None:
+                 until: bytes | None = None, varying_sizes: tuple[int, int] = (0, 0),
+                 padded: tuple[int, ...] = ()) -> None:
         """`varying_sizes`: the bytes of one round of the `varying` group and of the format after it."""
+        self.padded = padded
         self.varying_sizes = varying_sizes
         self.struct = struct.Struct(fixed)
         self.strings = strings
@@ -1178,6 +1187,8 @@ class Unpack:
             decoded = list(values)
             for i in self.strings:
                 decoded[i] = decoded[i].decode("latin-1")
+            for i in self.padded:
+                decoded[i] = decoded[i].partition("\0")[0]
             return tuple(decoded)
         return values
 
@@ -1977,8 +1988,8 @@ class Frame:
     """A request side and a reply side (empty when the device answers nothing framed), and
     the values of its fields over its parameters."""
 
-    __slots__ = ("escaping", "fields", "headers", "name", "params", "quick", "ranged", "replies", "reply", "requests",
-                 "stuffing", "vouched")
+    __slots__ = ("escaping", "fields", "fill", "headers", "name", "params", "quick", "ranged", "replies", "reply",
+                 "requests", "stuffing", "trim", "vouched")
 
     def __init__(self, name: str, request: Sequence[Part], reply: Sequence[Part], stuffing: Stuffing | None = None,
                  params: tuple[Param, ...] = (), fields: Callable[[Args], list[Any]] | None = None,
@@ -2000,6 +2011,9 @@ class Frame:
         self.ranged = _ranged(params)
         self.fields = fields
         self.quick = tuple(_quick_wrap(side) for side in self.requests)
+        # `payload trimmed` (MAVLink 2): trailing zero bytes dropped when written, put back when read
+        self.trim = any(isinstance(part, Payload) and part.trimmed for side in self.requests for part in side.parts)
+        self.fill = any(isinstance(part, Payload) and part.trimmed for side in self.replies for part in side.parts)
 
     def values(self, owner: str, args: Args) -> list[Any]:
         """The field values for the frame's arguments; an argument outside its parameter's
@@ -2011,6 +2025,8 @@ class Frame:
     def wrap(self, payload: bytes, fields: Sequence[int]) -> bytes:
         """The request: `payload` framed (stuffed first, when the frame stuffs), with the
         frame's field values; when it escapes, what comes between its flags escaped."""
+        if self.trim:  # its trailing zero bytes dropped, its first byte kept (MAVLink 2)
+            payload = payload.rstrip(b"\0") or payload[:1]
         if self.stuffing is not None:
             payload = self.stuffing.stuff(payload)
         for side, quick in zip(self.requests, self.quick):  # the first layout that can state its size
@@ -2044,12 +2060,15 @@ class Frame:
         """
         data = bytearray()
         try:
-            return self._read(port, data, fields, request, size)
+            raw, payload = self._read(port, data, fields, request, size)
         except FrameError:
             kept = 0 if whole else 1
             if len(data) > kept and isinstance(port, Incoming):  # look for the next header in what was taken
                 port.put_back(bytes(data[kept:]))
             raise
+        if self.fill and len(payload) < size:  # a trimmed payload's zero bytes put back (MAVLink 2)
+            payload += bytes(size - len(payload))
+        return raw, payload
 
     def _read(self, port: Reader, data: bytearray, fields: Sequence[int], request: bytes,
               size: int) -> tuple[bytes, bytes]:
