@@ -16,7 +16,7 @@ from rdisc.engine.operations import BINARY, FUNCTIONS, UNARY, EvalError, fits
 from rdisc.limits import MAX_ARRAY, MAX_INT
 from rdisc.semantics import model as m
 from rdisc.semantics.model import AnyType, Array, Scope, Type
-from rdisc.semantics.operators import shown
+from rdisc.semantics.operators import FLOAT_BYTES, shown
 from rdisc.semantics.resolve import suggest
 from rdisc.source import Span
 from rdisc.syntax import ast
@@ -55,6 +55,14 @@ ARITY = {
     "pack7": (1, 1),
     "unpack7": (1, 1),
     "bitset": (1, 1),
+    "unhex": (1, 1),
+    "upper": (1, 1),
+    "int_le": (1, 2),
+    "int_be": (1, 2),
+    "nibbles": (2, 2),
+    "from_nibbles": (1, 1),
+    **{name: (1, 1) for name in FLOAT_BYTES},
+    **{"from_" + name: (1, 1) for name in FLOAT_BYTES},
 }
 
 
@@ -485,6 +493,28 @@ class Typer:
                 return Type.BYTES if need("bytes", (Type.BYTES,)) else None
             case "encode":
                 return Type.BYTES if need("a string", (Type.STRING,)) else None
+            case "unhex":
+                return Type.BYTES if need("a string of hex digits", (Type.STRING,)) else None
+            case "upper":
+                return types[0] if need("a string or bytes", (Type.STRING, Type.BYTES)) else None
+            case "int_le" | "int_be":
+                if types[0] is not Type.BYTES or tuple(types[1:]) not in ((), (Type.BOOL,)):
+                    self.diagnostics.report("E404", e.span, f"`{name}` takes bytes and, if signed, `True`: "
+                                            f"`{name}(out[1])`, `{name}(out[1], True)`")
+                    return None
+                return Type.INT
+            case "nibbles":
+                if types != [Type.INT, Type.INT]:
+                    self.diagnostics.report("E404", e.span, "`nibbles` takes an int and a count of nibbles: "
+                                            "`nibbles(position, 4)`")
+                    return None
+                return Type.BYTES
+            case "from_nibbles":
+                return Type.INT if need("bytes", (Type.BYTES,)) else None
+            case _ if name in FLOAT_BYTES:
+                return Type.BYTES if need("a number", NUMERIC) else None
+            case _ if name.startswith("from_"):  # from_f32le and the other floats from bytes
+                return Type.FLOAT if need("bytes", (Type.BYTES,)) else None
             case "bitset" if isinstance(types[0], Array) and types[0].element is Type.INT:
                 return Type.INT
             case "bitset":
