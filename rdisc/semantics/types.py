@@ -20,6 +20,7 @@ from rdisc.semantics.operators import FLOAT_BYTES, shown
 from rdisc.semantics.resolve import suggest
 from rdisc.source import Span
 from rdisc.syntax import ast
+from rdisc.syntax.printer import print_expr
 
 T = AnyType | None  # None: unknown, already reported
 NUMERIC = (Type.INT, Type.FLOAT)
@@ -226,7 +227,7 @@ class Typer:
         return self._const(m.Const(value, Type.INT, e.span))
 
     def _index(self, e: ast.Index, env: Env) -> m.Expr:
-        if isinstance(e.base, ast.ArrayLit):
+        if isinstance(e.base, (ast.ArrayLit, ast.Index)):
             return self._element(e, env)
         if e.base.name in self.tables and e.base.name not in env.names:
             return self._lookup(e, env)
@@ -270,13 +271,19 @@ class Typer:
         """`array[index]`: an int index; a constant one within the array."""
         array = self.expr(e.base, env)
         index = self.expr(e.index, env)
+        if isinstance(e.base, ast.Index) and array.type is not None and not isinstance(array.type, Array):
+            self.diagnostics.report("E404", e.span, f"`{print_expr(e.base)}` is {describe(array.type)}, not an "
+                                    "array, and cannot be indexed", help="a reply's value read by a repeated "
+                                    "group (`unpack \"<B6(Hb)\"`) or by `replies N` is an array, as a table's "
+                                    "array entry is")
         if not isinstance(array.type, Array):  # an array literal in error, already reported
             return m.Element(array, index, None, e.span)  # type: ignore[arg-type]
         node = m.Element(array, index, array.type.element, e.span)
         if index.type is not None and index.type is not Type.INT:
             self.diagnostics.report("E404", e.index.span, f"an index is an int, not {describe(index.type)}")
             return m.Element(array, index, None, e.span)  # type: ignore[arg-type]
-        self.in_array(array.type, index, e.base.name if isinstance(e.base, ast.Ref) else "the array", e.index.span)
+        self.in_array(array.type, index, e.base.name if isinstance(e.base, ast.Ref) else
+                      print_expr(e.base) if isinstance(e.base, ast.Index) else "the array", e.index.span)
         folded = self._fold(node, (array, index), lambda a, i: a[i])
         if self.is_constant(folded) and fits(self.constant(folded)):  # `IDS[2]`: the element itself
             return self._const(m.Const(self.constant(folded), array.type.element, e.span))  # type: ignore[arg-type]
