@@ -39,6 +39,7 @@ from typing import TYPE_CHECKING, Any, TypeVar
 from rdisc.diagnostics import Diagnostics, Label, abbreviate
 from rdisc.limits import MAX_INT
 from rdisc.semantics import formats
+from rdisc.semantics.operators import FLOAT_FUNCTIONS
 from rdisc.source import Span
 from rdisc.syntax import ast
 from rdisc.syntax.build import MAX_INT_DIGITS
@@ -1538,9 +1539,6 @@ def _embedded(value: str) -> bool:
     return len(value) >= 3 and value[0] == "<" and value[-1] == ">"
 
 
-_FLOAT_FUNCTIONS = frozenset(["float", "sqrt", "sin", "cos", "atan2", "hypot"])
-
-
 def _may_be_float(e: ast.Expr, floats: set[str]) -> bool:
     """Whether an expression of thesis JSON, whose float names are `floats`, may be a float
     (the checker decides for sure; this front end only decides what to convert)."""
@@ -1558,7 +1556,7 @@ def _may_be_float(e: ast.Expr, floats: set[str]) -> bool:
         case ast.Conditional(then=then, orelse=orelse):
             return _may_be_float(then, floats) or _may_be_float(orelse, floats)
         case ast.CallExpr(func=func, args=args):
-            if func.text in _FLOAT_FUNCTIONS or (func.text == "round" and len(args) == 2):
+            if func.text in FLOAT_FUNCTIONS or (func.text == "round" and len(args) == 2):
                 return True
             return func.text in ("abs", "min", "max", "clamp") and any(_may_be_float(a, floats) for a in args)
     return False

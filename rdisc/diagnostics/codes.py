@@ -88,7 +88,8 @@ tagged reply's entries its tag, `tag`); interfaces see their parameters; inputs
 see their adapter's fields; hook arguments and outputs see state variables only."""),
     ("E104", "reserved-name", """
 The name is a keyword of the language or the name of a built-in function, and
-cannot name an element, parameter, field or state variable. A primitive whose
+cannot name an element, parameter, field or state variable (a link, joint or
+transmission, which no expression reads, may take a function's name: `link upper`). A primitive whose
 reply is chosen by its tag has no parameter named `tag`: its entries read the
 tag by that name."""),
     ("E105", "unknown-type", """
@@ -102,8 +103,12 @@ int, float, bool, str, clamp, sqrt, sin, cos, atan2, hypot, len (of a string or
 bytes), byte (`byte(data, i)`, the i-th byte of bytes as an int), hex (bytes as
 lowercase hex digits), ascii (ASCII bytes as a string), encode (an ASCII string as
 bytes), pack7 and unpack7 (Firmata's two 7-bit bytes per byte), bitset (an int with
-bit a[i] set for each element of an int array). There is no way
-to reach Python's own functions, attributes or modules."""),
+bit a[i] set for each element of an int array), unhex (hex digits as bytes), upper
+(a string or bytes in upper case), int_le and int_be (an int from up to 8 bytes),
+f32le, f32be, f64le and f64be (a number as the bytes of a float) with from_f32le,
+from_f32be, from_f64le and from_f64be (those bytes as a float), nibbles
+(`nibbles(v, 4)`: an int spread 4 bits a byte) and from_nibbles (back). There is no
+way to reach Python's own functions, attributes or modules."""),
     ("E107", "robot-declaration", """
 A description has exactly one `robot` declaration, in its main file. Imported
 files hold reusable declarations (adapters, primitives, ...) but no robot."""),
@@ -292,13 +297,20 @@ same is an `RdisValueError`, raised before anything is written."""),
 The operator or function does not apply to these types: arithmetic needs
 numbers (`+` also joins two strings or two bytes), bitwise operators and shifts
 need integers, `and`/`or`/`not` and the condition of `x if c else y` need
-booleans, `hex`, `ascii`, `pack7` and `unpack7` take bytes and `encode` a string.
+booleans, `hex`, `ascii`, `pack7`, `unpack7`, `from_nibbles` and `from_f32le` (and
+the other floats from bytes) take bytes, `encode` and `unhex` a string, `upper` a
+string or bytes, `f32le` (and the others) a number, `int_le` and `int_be` bytes and
+an optional `True` for signed, `nibbles` an int and a count of nibbles.
 Wrong: `b"\\x01" + "a"`. Right: `b"\\x01" + encode("a")`."""),
     ("E405", "evaluation-error", """
 A constant expression cannot be evaluated: a division by zero, a power, shift or
 product whose result would pass 4096 bits, a float result too large for a float,
 a string or bytes longer than 1 MiB, `ascii` of bytes or `encode` of a string that
-is not ASCII, `unpack7` of bytes that are not pairs of 7-bit bytes; or the value of a constant or a state variable does not fit the integers rdisc
+is not ASCII, `unpack7` of bytes that are not pairs of 7-bit bytes, `unhex` of
+anything but an even number of hex digits, `int_le` or `int_be` of more than 8
+bytes, `from_f32le` of bytes not 4 long (8 for `from_f64le`), a number too large
+for `f32le`, `nibbles(v, n)` of a v that does not fit in n nibbles (n from 1 to 16)
+or `from_nibbles` of a byte past 0x0f; or the value of a constant or a state variable does not fit the integers rdisc
 keeps: 64 bits and a sign. (Inside an expression a result may pass 64 bits, as
 `2 ** 64 - 1` does on its way; what is kept may not.) Wrong: `const MASK = 1 << 64`.
 Right: `const MASK = (1 << 64) - 1`."""),

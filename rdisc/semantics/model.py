@@ -195,7 +195,10 @@ class Replaced:
 
 
 def array_name(array: Expr) -> str:
-    """How a run-time error names an array: the variable's name, or `array` for a computed one."""
+    """How a run-time error names an array: the variable's name, `out[1]` for a reply's value,
+    or `array` for a computed one."""
+    if isinstance(array, ReplyValue):
+        return f"out[{array.index}]"
     return array.name if isinstance(array, Var) else "array"
 
 

@@ -21,7 +21,10 @@ from rdisc.syntax.precedence import quote_bytes
 _ARITHMETIC = {"+": "_add", "-": "_sub", "*": "_mul", "/": "_div"}
 _DIVIDING = {"//": "_floordiv", "%": "_mod"}
 _PYTHON_FUNCTIONS = frozenset({"abs", "min", "max", "bool", "str", "len"})  # their builtins are the operation
-_FLOAT_FUNCTIONS = frozenset({"float", "sqrt", "sin", "cos", "atan2", "hypot"})  # always a float
+FLOAT_BYTES = ("f32le", "f32be", "f64le", "f64be")
+"""The functions from a number to the bytes of an IEEE 754 float; `from_` and the name is the way back."""
+FLOAT_FUNCTIONS = frozenset({"float", "sqrt", "sin", "cos", "atan2", "hypot", *("from_" + name for name in FLOAT_BYTES)})
+"""The functions whose value is always a float."""
 
 
 def shown(value: object) -> str:
@@ -107,5 +110,5 @@ def surely_float(e: m.Expr) -> bool:
         case m.FuncCall(func="round", args=args):
             return len(args) == 2
         case m.FuncCall(func=func):
-            return func in _FLOAT_FUNCTIONS
+            return func in FLOAT_FUNCTIONS
     return False

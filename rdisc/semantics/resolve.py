@@ -77,6 +77,9 @@ _KINDS = {
     ast.TransmissionDecl: ("transmissions", "transmission"),
 }
 
+_BODY = (ast.LinkDecl, ast.JointDecl, ast.TransmissionDecl)
+"""Elements no expression reads, so a function's name is theirs to take (`link upper`)."""
+
 
 def resolve(units: list[Unit], diagnostics: Diagnostics) -> Symbols:
     symbols = Symbols()
@@ -101,12 +104,12 @@ def resolve(units: list[Unit], diagnostics: Diagnostics) -> Symbols:
     return symbols
 
 
-def check_name(name: ast.Ident, what: str, diagnostics: Diagnostics) -> None:
-    """Report a keyword or built-in function used as a name."""
+def check_name(name: ast.Ident, what: str, diagnostics: Diagnostics, read: bool = True) -> None:
+    """Report a keyword, or a built-in function where an expression could `read` the name, used as a name."""
     if name.text in KEYWORDS:
         diagnostics.report("E104", name.span, f"`{name.text}` is a keyword and cannot name a {what}",
                            help=f"choose another name, e.g. `{name.text}_`")
-    elif name.text in FUNCTIONS:
+    elif name.text in FUNCTIONS and read:
         diagnostics.report("E104", name.span, f"`{name.text}` is a built-in function and cannot name a {what}",
                            help=f"choose another name, e.g. `{name.text}_value`")
 
@@ -146,7 +149,7 @@ def _declare(unit: Unit, symbols: Symbols, diagnostics: Diagnostics) -> None:
             continue
         table_name, what = _KINDS[type(decl)]
         table = getattr(symbols, table_name)
-        check_name(decl.name, what, diagnostics)
+        check_name(decl.name, what, diagnostics, read=not isinstance(decl, _BODY))
         first = table.get(decl.name.text)
         if first is not None:
             diagnostics.report(

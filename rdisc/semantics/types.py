@@ -16,10 +16,11 @@ from rdisc.engine.operations import BINARY, FUNCTIONS, UNARY, EvalError, fits
 from rdisc.limits import MAX_ARRAY, MAX_INT
 from rdisc.semantics import model as m
 from rdisc.semantics.model import AnyType, Array, Scope, Type
-from rdisc.semantics.operators import shown
+from rdisc.semantics.operators import FLOAT_BYTES, shown
 from rdisc.semantics.resolve import suggest
 from rdisc.source import Span
 from rdisc.syntax import ast
+from rdisc.syntax.printer import print_expr
 
 T = AnyType | None  # None: unknown, already reported
 NUMERIC = (Type.INT, Type.FLOAT)
@@ -55,6 +56,14 @@ ARITY = {
     "pack7": (1, 1),
     "unpack7": (1, 1),
     "bitset": (1, 1),
+    "unhex": (1, 1),
+    "upper": (1, 1),
+    "int_le": (1, 2),
+    "int_be": (1, 2),
+    "nibbles": (2, 2),
+    "from_nibbles": (1, 1),
+    **{name: (1, 1) for name in FLOAT_BYTES},
+    **{"from_" + name: (1, 1) for name in FLOAT_BYTES},
 }
 
 
@@ -218,7 +227,7 @@ class Typer:
         return self._const(m.Const(value, Type.INT, e.span))
 
     def _index(self, e: ast.Index, env: Env) -> m.Expr:
-        if isinstance(e.base, ast.ArrayLit):
+        if isinstance(e.base, (ast.ArrayLit, ast.Index)):
             return self._element(e, env)
         if e.base.name in self.tables and e.base.name not in env.names:
             return self._lookup(e, env)
@@ -262,13 +271,19 @@ class Typer:
         """`array[index]`: an int index; a constant one within the array."""
         array = self.expr(e.base, env)
         index = self.expr(e.index, env)
+        if isinstance(e.base, ast.Index) and array.type is not None and not isinstance(array.type, Array):
+            self.diagnostics.report("E404", e.span, f"`{print_expr(e.base)}` is {describe(array.type)}, not an "
+                                    "array, and cannot be indexed", help="a reply's value read by a repeated "
+                                    "group (`unpack \"<B6(Hb)\"`) or by `replies N` is an array, as a table's "
+                                    "array entry is")
         if not isinstance(array.type, Array):  # an array literal in error, already reported
             return m.Element(array, index, None, e.span)  # type: ignore[arg-type]
         node = m.Element(array, index, array.type.element, e.span)
         if index.type is not None and index.type is not Type.INT:
             self.diagnostics.report("E404", e.index.span, f"an index is an int, not {describe(index.type)}")
             return m.Element(array, index, None, e.span)  # type: ignore[arg-type]
-        self.in_array(array.type, index, e.base.name if isinstance(e.base, ast.Ref) else "the array", e.index.span)
+        self.in_array(array.type, index, e.base.name if isinstance(e.base, ast.Ref) else
+                      print_expr(e.base) if isinstance(e.base, ast.Index) else "the array", e.index.span)
         folded = self._fold(node, (array, index), lambda a, i: a[i])
         if self.is_constant(folded) and fits(self.constant(folded)):  # `IDS[2]`: the element itself
             return self._const(m.Const(self.constant(folded), array.type.element, e.span))  # type: ignore[arg-type]
@@ -485,6 +500,28 @@ class Typer:
                 return Type.BYTES if need("bytes", (Type.BYTES,)) else None
             case "encode":
                 return Type.BYTES if need("a string", (Type.STRING,)) else None
+            case "unhex":
+                return Type.BYTES if need("a string of hex digits", (Type.STRING,)) else None
+            case "upper":
+                return types[0] if need("a string or bytes", (Type.STRING, Type.BYTES)) else None
+            case "int_le" | "int_be":
+                if types[0] is not Type.BYTES or tuple(types[1:]) not in ((), (Type.BOOL,)):
+                    self.diagnostics.report("E404", e.span, f"`{name}` takes bytes and, if signed, `True`: "
+                                            f"`{name}(out[1])`, `{name}(out[1], True)`")
+                    return None
+                return Type.INT
+            case "nibbles":
+                if types != [Type.INT, Type.INT]:
+                    self.diagnostics.report("E404", e.span, "`nibbles` takes an int and a count of nibbles: "
+                                            "`nibbles(position, 4)`")
+                    return None
+                return Type.BYTES
+            case "from_nibbles":
+                return Type.INT if need("bytes", (Type.BYTES,)) else None
+            case _ if name in FLOAT_BYTES:
+                return Type.BYTES if need("a number", NUMERIC) else None
+            case _ if name.startswith("from_"):  # from_f32le and the other floats from bytes
+                return Type.FLOAT if need("bytes", (Type.BYTES,)) else None
             case "bitset" if isinstance(types[0], Array) and types[0].element is Type.INT:
                 return Type.INT
             case "bitset":

@@ -72,9 +72,10 @@ class Ref:
 
 @dataclass(frozen=True, slots=True)
 class Index:
-    """`base[index]`: `out[constant]`, an array's element or a lookup table's entry."""
+    """`base[index]`: `out[constant]`, an array's element or a lookup table's entry; `out[1][i]`
+    an element of an array that a reply value or a table's entry is."""
 
-    base: Ref | ArrayLit
+    base: Ref | ArrayLit | Index
     index: Expr
     span: Span = _span
 

@@ -684,6 +684,12 @@ def _transformer_class() -> Callable[[Builder], Transformer[Token, list[ast.Decl
         def index(self, meta: Meta, c: list[Any]) -> ast.Expr:
             return self.b.nested(ast.Index(ast.Ref(str(c[0]), self.b.token_span(c[0])), c[1], self.b.span(meta)), c[1])
 
+        def nested_index(self, meta: Meta, c: list[Any]) -> ast.Expr:
+            name = self.b.token_span(c[0])  # `out[1]` ends at the bracket after its index, as written plainly
+            base = ast.Index(ast.Ref(str(c[0]), name), c[1], Span(name.path, name.start, c[1].span.end + 1))
+            self.b.nested(base, c[1])
+            return self.b.nested(ast.Index(base, c[2], self.b.span(meta)), base, c[2])
+
         def literal_index(self, meta: Meta, c: list[Any]) -> ast.Expr:
             items = c[0] or ()
             array = ast.ArrayLit(items, self.b.span(meta))

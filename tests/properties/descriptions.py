@@ -27,6 +27,7 @@ import re
 import struct
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
+from functools import partial
 from typing import Any
 
 from hypothesis import strategies as st
@@ -255,6 +256,10 @@ class Unary(Expr):
         return not x if self.op == "not" else -x if self.op == "-" else ~x
 
 
+_FLOAT_LAYOUTS = {"f32le": "<f", "f32be": ">f", "f64le": "<d", "f64be": ">d"}
+"""The expression functions from a number to the bytes of a float, by their struct codes."""
+
+
 def _int(x: Any) -> int:
     if isinstance(x, str) and x.strip()[:2].lower() in ("0x", "0b", "0o"):
         return int(x.strip(), 0)
@@ -267,12 +272,35 @@ def _byte(data: bytes, i: int) -> int:
     return data[i]
 
 
+def _from_bytes(order: str) -> Callable[..., int]:
+    def read(data: bytes, signed: bool = False) -> int:
+        if len(data) > 8:
+            raise Unknown("more than 8 bytes")
+        return int.from_bytes(data, order, signed=signed)  # type: ignore[arg-type]
+    return read
+
+
+def _unpacked(layout: struct.Struct, data: bytes) -> float:
+    value: float = layout.unpack(data)[0]
+    return value
+
+
+def _nibbles(value: int, count: int) -> bytes:
+    if not 1 <= count <= 16 or not 0 <= value < 16**count:
+        raise Unknown("nibbles")
+    return bytes.fromhex("".join("0" + digit for digit in f"{value:0{count}x}"))
+
+
 _FUNCTIONS: dict[str, Callable[..., Any]] = {
     "abs": abs, "min": min, "max": max, "int": _int, "float": float, "bool": bool, "str": str,
     "round": lambda x, n=None: round(x) if n is None else round(float(x), n),
     "clamp": lambda x, lo, hi: lo if x < lo else min(x, hi),
     "sqrt": math.sqrt, "sin": math.sin, "cos": math.cos, "atan2": math.atan2, "hypot": math.hypot,
     "len": len, "byte": _byte,
+    "int_le": _from_bytes("little"), "int_be": _from_bytes("big"), "hex": bytes.hex, "upper": str.upper,
+    "nibbles": _nibbles, "from_nibbles": lambda data: int(data.hex()[1::2] or "0", 16),
+    **{name: struct.Struct(code).pack for name, code in _FLOAT_LAYOUTS.items()},
+    **{"from_" + name: partial(_unpacked, struct.Struct(code)) for name, code in _FLOAT_LAYOUTS.items()},
 }
 
 
@@ -426,7 +454,8 @@ def _int_unary(draw: Draw, scope: Scope, depth: int) -> Expr:
 
 
 def _int_call(draw: Draw, scope: Scope, depth: int) -> Expr:
-    which = draw(st.sampled_from(["abs", "min", "max", "clamp", "round", "int", "len"]))
+    which = draw(st.sampled_from(["abs", "min", "max", "clamp", "round", "int", "len", "int_le", "int_be",
+                                  "from_nibbles"]))
     if which == "abs":
         return Call(INT, "abs", (expression(draw, INT, scope, depth),))
     if which in ("min", "max"):
@@ -441,6 +470,11 @@ def _int_call(draw: Draw, scope: Scope, depth: int) -> Expr:
         text = _variable(draw, STRING, scope)
         source = text if text is not None and draw(st.booleans()) else expression(draw, draw(st.sampled_from([FLOAT, BOOL, INT])), scope, depth)
         return Call(INT, "int", (source,))
+    if which in ("int_le", "int_be"):  # a float's bytes read as an int, of either sign
+        return Call(INT, which, (_float_bytes(draw, scope, depth), Lit(BOOL, draw(st.booleans()))))
+    if which == "from_nibbles":
+        spread = Binary(INT, "&", expression(draw, INT, scope, depth), Lit(INT, 0xFFFF))
+        return Call(INT, "from_nibbles", (Call(BYTES, "nibbles", (spread, Lit(INT, 4))),))
     sized = [leaf for leaf in scope if leaf.type in (STRING, BYTES)]
     return Call(INT, "len", (draw(st.sampled_from(sized)) if sized and draw(st.booleans()) else expression(draw, STRING, scope, depth),))
 
@@ -467,8 +501,18 @@ def _float_power(draw: Draw, scope: Scope, depth: int) -> Expr:
     return Binary(FLOAT, "**", expression(draw, FLOAT, scope, depth), exponent)
 
 
+def _float_bytes(draw: Draw, scope: Scope, depth: int) -> Expr:
+    """The bytes of a float (which a float too large for 32 bits makes an error)."""
+    return Call(BYTES, draw(st.sampled_from(list(_FLOAT_LAYOUTS))), (expression(draw, FLOAT, scope, depth),))
+
+
 def _float_call(draw: Draw, scope: Scope, depth: int) -> Expr:
-    which = draw(st.sampled_from(["abs", "min", "max", "float", "sqrt", "sin", "atan2", "hypot", "round", "clamp"]))
+    which = draw(st.sampled_from(["abs", "min", "max", "float", "sqrt", "sin", "atan2", "hypot", "round", "clamp",
+                                  "from_bytes"]))
+    if which == "from_bytes":  # a float through its bytes: those of 32 bits round it
+        spelt = _float_bytes(draw, scope, depth)
+        assert isinstance(spelt, Call)
+        return Call(FLOAT, "from_" + spelt.func, (spelt,))
     if which == "abs":
         return Call(FLOAT, "abs", (expression(draw, FLOAT, scope, depth),))
     if which in ("min", "max"):  # one float among ints: Python may still return the int
@@ -508,6 +552,11 @@ def _str_call(draw: Draw, scope: Scope, depth: int) -> Expr:
     return Call(STRING, "str", (expression(draw, draw(st.sampled_from([INT, FLOAT, BOOL, STRING])), scope, depth),))
 
 
+def _str_hex(draw: Draw, scope: Scope, depth: int) -> Expr:
+    """The hex digits of a float's bytes, in upper case."""
+    return Call(STRING, "upper", (Call(STRING, "hex", (_float_bytes(draw, scope, depth),)),))
+
+
 def _str_concat(draw: Draw, scope: Scope, depth: int) -> Expr:
     return Binary(STRING, "+", expression(draw, STRING, scope, depth), expression(draw, STRING, scope, depth))
 
@@ -516,7 +565,7 @@ _BUILDERS: dict[str, list[Callable[..., Expr]]] = {
     INT: [_int_arith, _int_arith, _int_shift, _int_power, _int_unary, _int_call, _int_call, _if(INT)],
     FLOAT: [_float_arith, _float_arith, _float_power, _float_call, _float_call, _if(FLOAT)],
     BOOL: [_compare, _compare, _logic, _bool_call, _if(BOOL)],
-    STRING: [_str_call, _str_concat, _if(STRING)],
+    STRING: [_str_call, _str_concat, _str_hex, _if(STRING)],
 }
 
 

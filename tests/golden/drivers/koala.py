@@ -37,7 +37,7 @@ import time
 from collections import deque
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from dataclasses import KW_ONLY, dataclass, field
-from typing import Any, NamedTuple, Protocol, assert_never
+from typing import Any, Literal, NamedTuple, Protocol, assert_never
 
 # ---- rdisc engine: errors (rdisc/engine/errors.py), the errors a run raises ----------------------
 
@@ -88,6 +88,8 @@ MAX_SHIFT = 1024  # the longest left shift
 MAX_TEXT = 1 << 20  # characters of a string, or bytes of bytes, that an expression may build
 FLOAT_MAX = sys.float_info.max  # the largest float; a result past it is an error, not inf
 MAX_ARRAY = 1024  # the most elements an array holds, and rounds a group repeated as a message says
+MAX_INT_BYTES = 8  # bytes that int_le and int_be read: a 64-bit int
+MAX_NIBBLES = 16  # nibbles that nibbles() spreads and from_nibbles() gathers: a 64-bit int
 MAX_LINE = 4096
 """Bytes of one reply line, terminator included."""
 
@@ -348,6 +350,95 @@ def _bitset(bits: tuple[int, ...]) -> int:
     return out
 
 
+def _unhex(text: str) -> bytes:
+    """`unhex(s)`: the bytes that hex digits spell, two a byte, either case ("0A1b" is b"\\x0a\\x1b");
+    an odd count or any other character (a space too) is refused."""
+    for i, ch in enumerate(text):
+        if ch not in "0123456789abcdefABCDEF":
+            raise ValueError(f"unhex(): character {i} is {shown(ch)}, not a hex digit")
+    if len(text) % 2:
+        raise ValueError(f"unhex(): an odd number of hex digits ({len(text)})")
+    return bytes.fromhex(text)
+
+
+def _upper(text: Any) -> Any:
+    """`upper(s)`: a string, or bytes (ASCII letters only), in upper case; no longer than MAX_TEXT."""
+    result = text.upper()
+    if len(result) > MAX_TEXT:  # "ß" is "SS": a string may grow
+        raise ValueError(f"upper(): the result is longer than {MAX_TEXT} characters")
+    return result
+
+
+def _integer(order: Literal["little", "big"]) -> Callable[..., int]:
+    """`int_le(b)` or `int_be(b)` (by `order`): the int that bytes of any length up to
+    MAX_INT_BYTES hold, unsigned, or two's complement with `int_le(b, True)`; no bytes are 0."""
+    name = "int_le" if order == "little" else "int_be"
+
+    def integer(data: bytes, signed: bool = False) -> int:
+        if len(data) > MAX_INT_BYTES:
+            raise ValueError(f"{name}(): {len(data)} bytes, more than {MAX_INT_BYTES} (a 64-bit int)")
+        return int.from_bytes(data, order, signed=signed)
+
+    integer.__name__ = name
+    return integer
+
+
+_int_le = _integer("little")
+_int_be = _integer("big")
+
+
+def _float_bytes(code: str, name: str) -> tuple[Callable[[Any], bytes], Callable[[bytes], float]]:
+    """The pair `f32le(x)` (a number as the bytes of an IEEE 754 float, struct's `code`) and
+    `from_f32le(b)` (those bytes back as a float; any other count of bytes is refused)."""
+    layout = struct.Struct(code)
+    size, bits = layout.size, 8 * layout.size
+
+    def encoded(x: Any) -> bytes:
+        try:
+            return layout.pack(x)
+        except (OverflowError, struct.error):
+            raise EvalError(f"{name}({shown(x)}): too large for a {bits}-bit float") from None
+
+    def decoded(data: bytes) -> float:
+        if len(data) != size:
+            raise ValueError(f"from_{name}(): {len(data)} bytes, not {size}")
+        value: float = layout.unpack(data)[0]
+        return value
+
+    encoded.__name__, decoded.__name__ = name, "from_" + name
+    return encoded, decoded
+
+
+_f32le, _from_f32le = _float_bytes("<f", "f32le")
+_f32be, _from_f32be = _float_bytes(">f", "f32be")
+_f64le, _from_f64le = _float_bytes("<d", "f64le")
+_f64be, _from_f64be = _float_bytes(">d", "f64be")
+
+
+def _nibbles(value: int, count: int) -> bytes:
+    """`nibbles(v, n)`: v spread over n bytes, 4 bits in each, the most significant first (VISCA's
+    `0p 0q 0r 0s`): `nibbles(0x1234, 4)` is b"\\x01\\x02\\x03\\x04"; n is 1 to MAX_NIBBLES and v
+    must fit in n nibbles."""
+    if not 1 <= count <= MAX_NIBBLES:
+        raise ValueError(f"nibbles(): {shown(count)} nibbles, not 1 to {MAX_NIBBLES}")
+    if not 0 <= value < 1 << 4 * count:
+        raise ValueError(f"nibbles(): {shown(value)} does not fit in {count} nibble{'s' if count != 1 else ''}")
+    return bytes(value >> 4 * (count - 1 - i) & 0xF for i in range(count))
+
+
+def _from_nibbles(data: bytes) -> int:
+    """`from_nibbles(b)`: the int that bytes of one nibble each hold, the most significant first;
+    a byte past 0x0f, or more than MAX_NIBBLES bytes, is refused."""
+    if len(data) > MAX_NIBBLES:
+        raise ValueError(f"from_nibbles(): {len(data)} bytes, more than {MAX_NIBBLES} nibbles (a 64-bit int)")
+    value = 0
+    for i, byte in enumerate(data):
+        if byte > 0xF:
+            raise ValueError(f"from_nibbles(): byte {i} is 0x{byte:02x}, not a nibble")
+        value = value << 4 | byte
+    return value
+
+
 # ---- by the language's spelling: what the checker folds with and the reference interpreter calls ----
 
 BINARY: dict[str, Callable[[Any, Any], Any]] = {
@@ -401,6 +492,20 @@ FUNCTIONS: dict[str, Callable[..., Any]] = {
     "pack7": _pack7,
     "unpack7": _unpack7,
     "bitset": _bitset,
+    "unhex": _unhex,
+    "upper": _upper,
+    "int_le": _int_le,
+    "int_be": _int_be,
+    "f32le": _f32le,
+    "f32be": _f32be,
+    "f64le": _f64le,
+    "f64be": _f64be,
+    "from_f32le": _from_f32le,
+    "from_f32be": _from_f32be,
+    "from_f64le": _from_f64le,
+    "from_f64be": _from_f64be,
+    "nibbles": _nibbles,
+    "from_nibbles": _from_nibbles,
 }
 
 
