@@ -21,13 +21,7 @@ if TYPE_CHECKING:  # at run time each name is imported when it is first asked fo
     from rdisc.engine.checksums import Checksum
     from rdisc.engine.codec import Format, Group, Match, Pack, Split, Unpack, Varying
     from rdisc.engine.command import (
-        EXIT_ERROR,
-        EXIT_OK,
-        EXIT_SIGINT,
-        EXIT_SIGTERM,
-        EXIT_USAGE,
         add_arguments,
-        command_line,
         made_from,
         make_call,
         named_pairs,
@@ -109,6 +103,14 @@ if TYPE_CHECKING:  # at run time each name is imported when it is first asked fo
         session_topics,
     )
     from rdisc.engine.robot import Calls, Robot, State
+    from rdisc.engine.signals import (
+        EXIT_ERROR,
+        EXIT_OK,
+        EXIT_SIGINT,
+        EXIT_SIGTERM,
+        EXIT_USAGE,
+        command_line,
+    )
     from rdisc.engine.values import (
         Args,
         ErrorCallback,

@@ -1,10 +1,10 @@
-"""The engine package imports its modules when a name of theirs is first asked for: the checker
-needs `rdisc.engine.operations` and no more of the engine, and `rdisc.engine.X` is still
-every public name, the very object its module defines."""
+"""The engine package imports its modules when a name of theirs is first asked for: `rdisc
+check` needs the engine's operations and signal handlers and no more of it, and
+`rdisc.engine.X` is still every public name, the very object its module defines
+(tests/engine/test_carried.py)."""
 
 from __future__ import annotations
 
-import ast
 import subprocess
 import sys
 from pathlib import Path
@@ -14,27 +14,15 @@ import rdisc.engine
 ROOT = Path(__file__).resolve().parents[2]
 
 
-def declared() -> dict[str, str]:
-    """Each public name and the module its `if TYPE_CHECKING:` import names."""
-    tree = ast.parse(Path(rdisc.engine.__file__).read_text(encoding="utf-8"))
-    guard = next(node for node in tree.body if isinstance(node, ast.If))
-    return {alias.name: node.module or "" for node in guard.body if isinstance(node, ast.ImportFrom)
-            for alias in node.names}
-
-
-def test_every_public_name_is_the_object_its_module_defines() -> None:
-    names = declared()
-    assert sorted(names) == sorted(rdisc.engine.__all__)
-    for name, module in names.items():
-        assert getattr(rdisc.engine, name) is getattr(sys.modules[module], name), name
-
-
-def test_checking_a_description_imports_only_the_operations_of_the_engine() -> None:
-    code = ("import sys\nfrom rdisc.compile import compile_path\n"
-            f"assert not compile_path({str(ROOT / 'examples' / 'create.rdis')!r}).diagnostics.has_errors()\n"
-            "print(sorted(name for name in sys.modules if name.startswith('rdisc.engine')))")
+def test_rdisc_check_imports_only_the_operations_and_signals_of_the_engine() -> None:
+    """`rdisc check`, from its entry point: the checker's operations, and the handlers of
+    SIGINT and SIGTERM every verb runs under (not the robot, its ports, recording, ...)."""
+    code = ("import sys\nfrom rdisc.start import main\n"
+            f"sys.argv = ['rdisc', 'check', {str(ROOT / 'examples' / 'create.rdis')!r}]\n"
+            "status = main()\n"
+            "print(status, sorted(name for name in sys.modules if name.startswith('rdisc.engine')))")
     done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True, cwd=ROOT)
-    assert done.stdout.split("\n")[0] == "['rdisc.engine', 'rdisc.engine.operations']"
+    assert done.stdout.split("\n")[0] == "0 ['rdisc.engine', 'rdisc.engine.operations', 'rdisc.engine.signals']"
 
 
 def test_an_unknown_name_is_an_attribute_error() -> None:
