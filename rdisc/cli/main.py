@@ -70,7 +70,7 @@ def main(argv: list[str] | None = None) -> int:
     starting ends it with 130 or 143 and no traceback; the mask found is restored after."""
     held = hold_signals()
     try:
-        from rdisc.engine.command import command_line
+        from rdisc.engine.signals import command_line
 
         return command_line(lambda: _main(argv))
     finally:

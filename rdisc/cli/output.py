@@ -6,7 +6,6 @@ import sys
 from collections.abc import Callable, Iterable
 
 from rdisc.compile import Compilation, compile_path
-from rdisc.engine.command import made_from
 from rdisc.semantics.model import Model
 from rdisc.source import Sources
 
@@ -38,6 +37,8 @@ def write(text: str, path: str | None, inputs: Iterable[str] = ()) -> int:
     if path is None or path == "-":
         sys.stdout.write(text)
         return EXIT_OK
+    from rdisc.engine.command import made_from  # the engine's command line: not for `rdisc check`
+
     source = made_from(path, inputs)
     if source is not None:
         print(f"rdisc: will not write {path}: it is {source}, which this was made from", file=sys.stderr)

@@ -14,129 +14,134 @@ and pyserial to open a port by name; nothing of rdisc outside it. The semantics 
 contract in docs/runtime.md.
 """
 
-from rdisc.engine.arguments import Unbound, bind_named, bind_settings, call_values, read_value
-from rdisc.engine.checksums import Checksum
-from rdisc.engine.codec import Format, Group, Match, Pack, Split, Unpack, Varying
-from rdisc.engine.command import (
-    EXIT_ERROR,
-    EXIT_OK,
-    EXIT_SIGINT,
-    EXIT_SIGTERM,
-    EXIT_USAGE,
-    add_arguments,
-    command_line,
-    made_from,
-    make_call,
-    named_pairs,
-    parse_call,
-    parse_ports,
-    parse_settings,
-    run_command,
-    start_recording,
-)
-from rdisc.engine.errors import (
-    RdisCallbackError,
-    RdisConnectionError,
-    RdisDeviceError,
-    RdisError,
-    RdisProtocolError,
-    RdisTimeout,
-    RdisValueError,
-)
-from rdisc.engine.exchange import Exchange
-from rdisc.engine.frames import Frame, Wrap
-from rdisc.engine.operations import (
-    BINARY,
-    EVAL_ERRORS,
-    FLOAT_MAX,
-    FUNCTIONS,
-    MAX_ARRAY,
-    MAX_INT,
-    MAX_LINE,
-    MAX_RESULT_BITS,
-    MAX_SHIFT,
-    MAX_TEXT,
-    UNARY,
-    EvalError,
-    element,
-    fits,
-    lookup,
-    replaced,
-    shown,
-)
-from rdisc.engine.plans import (
-    NO_REPLY,
-    Call,
-    Connection,
-    Device,
-    ErrorReply,
-    FixedReply,
-    FramedReply,
-    FrameUse,
-    Hook,
-    Input,
-    Interface,
-    KeyedReply,
-    LineReply,
-    ListedReplies,
-    Message,
-    NoReply,
-    Output,
-    Param,
-    Primitive,
-    Records,
-    Reply,
-    Request,
-    SeveralReplies,
-    SubPayloads,
-    TaggedReply,
-    TaggedStream,
-    plainly_given,
-)
-from rdisc.engine.ports import Port, PortSpec, Simulator
-from rdisc.engine.recording import (
-    BYTES_TYPE,
-    LOG_TYPE,
-    RUNS_TOPIC,
-    STATE_TOPIC,
-    TEXT_TYPE,
-    Recorder,
-    Session,
-    Sink,
-    Topic,
-    ros_message,
-    session_topics,
-)
-from rdisc.engine.robot import Calls, Robot, State
-from rdisc.engine.values import (
-    Args,
-    ErrorCallback,
-    IoCallback,
-    OutputCallback,
-    OutputMessage,
-    StateValues,
-    TraceCallback,
-    Value,
-)
-from rdisc.engine.wire import (
-    MAX_FRAME,
-    MAX_SKIP,
-    Bits,
-    Bytes,
-    Check,
-    ChecksumError,
-    Escaping,
-    Field,
-    FrameError,
-    Incoming,
-    Length,
-    OptionalParts,
-    Part,
-    Payload,
-    Reader,
-    Side,
-    Stuffing,
-)
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:  # at run time each name is imported when it is first asked for (__getattr__, below)
+    from rdisc.engine.arguments import Unbound, bind_named, bind_settings, call_values, read_value
+    from rdisc.engine.checksums import Checksum
+    from rdisc.engine.codec import Format, Group, Match, Pack, Split, Unpack, Varying
+    from rdisc.engine.command import (
+        add_arguments,
+        made_from,
+        make_call,
+        named_pairs,
+        parse_call,
+        parse_ports,
+        parse_settings,
+        run_command,
+        start_recording,
+    )
+    from rdisc.engine.errors import (
+        RdisCallbackError,
+        RdisConnectionError,
+        RdisDeviceError,
+        RdisError,
+        RdisProtocolError,
+        RdisTimeout,
+        RdisValueError,
+    )
+    from rdisc.engine.exchange import Exchange
+    from rdisc.engine.frames import Frame, Wrap
+    from rdisc.engine.operations import (
+        BINARY,
+        EVAL_ERRORS,
+        FLOAT_MAX,
+        FUNCTIONS,
+        MAX_ARRAY,
+        MAX_INT,
+        MAX_LINE,
+        MAX_RESULT_BITS,
+        MAX_SHIFT,
+        MAX_TEXT,
+        UNARY,
+        EvalError,
+        element,
+        fits,
+        lookup,
+        replaced,
+        shown,
+    )
+    from rdisc.engine.plans import (
+        NO_REPLY,
+        Call,
+        Connection,
+        Device,
+        ErrorReply,
+        FixedReply,
+        FramedReply,
+        FrameUse,
+        Hook,
+        Input,
+        Interface,
+        KeyedReply,
+        LineReply,
+        ListedReplies,
+        Message,
+        NoReply,
+        Output,
+        Param,
+        Primitive,
+        Records,
+        Reply,
+        Request,
+        SeveralReplies,
+        SubPayloads,
+        TaggedReply,
+        TaggedStream,
+        plainly_given,
+    )
+    from rdisc.engine.ports import Port, PortSpec, Simulator
+    from rdisc.engine.recording import (
+        BYTES_TYPE,
+        LOG_TYPE,
+        RUNS_TOPIC,
+        STATE_TOPIC,
+        TEXT_TYPE,
+        Recorder,
+        Session,
+        Sink,
+        Topic,
+        ros_message,
+        session_topics,
+    )
+    from rdisc.engine.robot import Calls, Robot, State
+    from rdisc.engine.signals import (
+        EXIT_ERROR,
+        EXIT_OK,
+        EXIT_SIGINT,
+        EXIT_SIGTERM,
+        EXIT_USAGE,
+        command_line,
+    )
+    from rdisc.engine.values import (
+        Args,
+        ErrorCallback,
+        IoCallback,
+        OutputCallback,
+        OutputMessage,
+        StateValues,
+        TraceCallback,
+        Value,
+    )
+    from rdisc.engine.wire import (
+        MAX_FRAME,
+        MAX_SKIP,
+        Bits,
+        Bytes,
+        Check,
+        ChecksumError,
+        Escaping,
+        Field,
+        FrameError,
+        Incoming,
+        Length,
+        OptionalParts,
+        Part,
+        Payload,
+        Reader,
+        Side,
+        Stuffing,
+    )
 
 __all__ = [
     "BINARY",
@@ -264,3 +269,24 @@ __all__ = [
     "shown",
     "start_recording",
 ]
+
+
+def __getattr__(name: str) -> object:
+    """A public name, from the first of the engine's modules (in the order a driver carries them,
+    so the one that defines it) that has it, imported now: the checker imports
+    `rdisc.engine.operations`, and with it no more of the engine (start-up time)."""
+    if name not in __all__:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    from importlib import import_module
+
+    from rdisc.engine.carry import MODULES
+
+    for module, _ in MODULES:
+        found = import_module(f"{__name__}.{module}").__dict__.get(name, _MISSING)
+        if found is not _MISSING:
+            globals()[name] = found
+            return found
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+_MISSING = object()

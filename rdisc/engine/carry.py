@@ -31,6 +31,7 @@ MODULES = (
     ("exchange", "writing and reading"),
     ("robot", "lifecycle and public face"),
     ("recording", "sessions in MCAP"),
+    ("signals", "SIGINT, SIGTERM, exit statuses"),
     ("command", "the command line"),
 )
 """The engine's modules in the order a driver carries them, each with what it holds."""

@@ -15,6 +15,7 @@ import string
 import struct
 import warnings
 from dataclasses import dataclass
+from functools import lru_cache
 
 from rdisc.limits import MAX_ARRAY
 from rdisc.semantics import regex_shape
@@ -50,6 +51,7 @@ _COUNT = re.compile(r"\s*#\s*([a-zA-Z?]?)")  # `#B`: the count field of the `#(.
 _SPLIT = re.compile(r"\s*\{([^{}]*)\}")  # `B{1,1,6}`: the integer before it split into bit fields
 
 
+@lru_cache(maxsize=4096)  # a layout is immutable, and a generated description repeats its formats
 def struct_layout(fmt: str) -> StructLayout:
     """The values a struct format packs or unpacks, one slot per value. A final `*`
     stands for the rest of the message: one value of bytes, of any length. One group may be

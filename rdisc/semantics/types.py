@@ -71,7 +71,7 @@ ARITY = {
 class Env:
     """What an expression may read, and how to explain what it may not."""
 
-    names: Names
+    names: Mapping[str, tuple[Scope, AnyType]]  # a layered view where the state variables are shared (Checker.env_with)
     where: str  # "in a hook argument", ...
     sees: str  # "state variables", ...
     reply: tuple[AnyType, ...] | None = None  # types of out[i], in post-actions

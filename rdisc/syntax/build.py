@@ -114,7 +114,7 @@ class Builder:
         self.prefixed.clear()
         self.depth.clear()
         try:
-            return _transformer_class()(self).transform(tree)
+            return transformer_class()(self).transform(tree)
         finally:
             self.prefixed.clear()
             self.depth.clear()
@@ -243,7 +243,7 @@ _EXPRESSIONS = (ast.IntLit, ast.FloatLit, ast.StrLit, ast.BytesLit, ast.BoolLit,
 
 
 @lru_cache(maxsize=1)
-def _transformer_class() -> Callable[[Builder], Transformer[Token, list[ast.Decl]]]:
+def transformer_class() -> Callable[[Builder], Transformer[Token, list[ast.Decl]]]:
     """The transformer, defined when first needed: Lark is imported lazily (start-up time)."""
     import lark
     from lark import v_args

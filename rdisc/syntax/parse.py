@@ -95,6 +95,8 @@ def parse(path: str, text: str, diagnostics: Diagnostics) -> ast.Module:
         return ast.Module(path, (), refused=True)
     import lark
 
+    from rdisc.syntax.reduce import Retry, parse_built
+
     builder = Builder(path, _doc_comments(text), diagnostics)
     decls: list[ast.Decl] = []
     damaged: list[ast.Damaged] = []
@@ -107,6 +109,11 @@ def parse(path: str, text: str, diagnostics: Diagnostics) -> ast.Module:
             diagnostics.report("E005", *too_long)
             damaged.extend(_damaged(path, chunk, start))
             continue
+        try:  # built as it is parsed, where that is clean; else Lark's tree, built after (rdisc.syntax.reduce)
+            decls.extend(parse_built(chunk, builder, start, parser(), MAX_TREE_DEPTH))
+            continue
+        except Retry:
+            pass
         try:
             tree = parser().parse(chunk, start="start", on_error=_keyword_as_name)
         except lark.exceptions.UnexpectedInput as err:

@@ -1,0 +1,120 @@
+"""The parser's fast loop (rdisc.syntax.reduce) builds what Lark's tree and the Builder's walk
+build: the same syntax tree, spans and tokens included, and the same diagnostics; it takes
+the examples' declarations, and leaves to Lark what it does not take."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+from rdisc.diagnostics import Diagnostics
+from rdisc.resources import stdlib_path
+from rdisc.syntax import reduce
+from rdisc.syntax.build import MAX_EXPR_DEPTH
+from rdisc.syntax.parse import MAX_TREE_DEPTH, parse
+
+ROOT = Path(__file__).resolve().parents[2]
+FILES = sorted((ROOT / "examples").glob("*.rdis")) + [stdlib_path()]
+LOOP = reduce.parse_built
+ONE_LINERS = [
+    'robot r { author "a\\qb" description "x\\ud800y" }',  # escapes the Builder reports (E003)
+    'state s: bytes = b"\\q\u00e9"',  # bytes: an unknown escape, a character that is not ASCII (E003, E004)
+    "state s: int = 0x" + "f" * 80,  # an integer literal too long (E004)
+    "state s: int = 1 < 2 < 3",  # a misplaced comparison (E001)
+    "state s: int = " + "-" * (MAX_EXPR_DEPTH + 5) + "1",  # too deep for the Builder: Lark's way (E005)
+    "state s: int = " + "(" * (MAX_TREE_DEPTH + 5) + "1" + ")" * (MAX_TREE_DEPTH + 5),  # too deep a tree (E005)
+    "state mask: int = 0\nstate baud: int = 1",  # keywords as names: Lark's recovery
+    "primitive p() on link pack \"B\" (1) {\n",  # a syntax error
+    "interface i() { p() delay 1 ms priority 2 when x > 1 }\nstate a: float = -1.5e3 if True else 2 ** 3",
+    "const T = { 1: \"a\", 2: \"b\" }\nenum E { A = 1, B }\nstate b: bytes = b\"\\x00ab\"",
+]
+
+
+def dump(value: Any) -> Any:
+    """Everything a value holds, spans and a token's attributes included (an AST node's `==` compares less)."""
+    if value is None or isinstance(value, (bool, int, float, bytes)):
+        return (type(value).__name__, value)
+    if isinstance(value, str):
+        attributes = ("type", "start_pos", "end_pos", "line", "column", "end_line", "end_column")
+        return (type(value).__name__, str(value), tuple(getattr(value, name, None) for name in attributes))
+    if isinstance(value, (list, tuple)):
+        return (type(value).__name__, [dump(item) for item in value])
+    if isinstance(value, dict):
+        return ("dict", [(dump(key), dump(item)) for key, item in value.items()])
+    names: list[str] = []
+    for kind in type(value).__mro__:
+        names += [name for name in getattr(kind, "__slots__", ()) if name not in names]
+    names += [name for name in getattr(value, "__dict__", {}) if name not in names]
+    return (type(value).__name__, [(name, dump(getattr(value, name, None))) for name in names])
+
+
+def both_ways(monkeypatch: pytest.MonkeyPatch, path: str, text: str) -> tuple[Any, Any, int]:
+    """(the loop's tree and diagnostics, Lark's, the declarations the loop left to Lark)."""
+    left = 0
+
+    def counted(*args: Any, **kwargs: Any) -> Any:
+        nonlocal left
+        try:
+            return LOOP(*args, **kwargs)
+        except reduce.Retry:
+            left += 1
+            raise
+
+    def never(*args: Any, **kwargs: Any) -> Any:
+        raise reduce.Retry
+
+    results = []
+    for way in (counted, never):
+        monkeypatch.setattr(reduce, "parse_built", way)
+        diagnostics = Diagnostics()
+        module = parse(path, text, diagnostics)
+        results.append((dump(module), [dump(d) for d in diagnostics.sorted()]))
+    return results[0], results[1], left
+
+
+@pytest.mark.parametrize("path", FILES, ids=lambda path: path.name)
+def test_the_loop_builds_an_example_as_lark_and_the_builder_do(monkeypatch: pytest.MonkeyPatch, path: Path) -> None:
+    fast, general, _ = both_ways(monkeypatch, str(path), path.read_text(encoding="utf-8"))
+    assert fast == general
+
+
+@pytest.mark.parametrize("text", ONE_LINERS)
+def test_the_loop_reports_or_leaves_to_lark_what_the_builder_reports(monkeypatch: pytest.MonkeyPatch,
+                                                                     text: str) -> None:
+    fast, general, _ = both_ways(monkeypatch, "t.rdis", text)
+    assert fast == general
+
+
+def test_the_loop_takes_the_examples_declarations(monkeypatch: pytest.MonkeyPatch) -> None:
+    """All but the three that use a keyword as a name, which Lark's recovery reads."""
+    taken = left = 0
+
+    def counted(*args: Any, **kwargs: Any) -> Any:
+        nonlocal taken, left
+        try:
+            built = LOOP(*args, **kwargs)
+        except reduce.Retry:
+            left += 1
+            raise
+        taken += 1
+        return built
+
+    monkeypatch.setattr(reduce, "parse_built", counted)
+    declarations = sum(len(parse(str(path), path.read_text(encoding="utf-8"), Diagnostics()).decls)
+                       for path in FILES)
+    assert declarations > 400 and taken > 400
+    assert left == 3
+
+
+def test_what_the_loop_leaves_is_reported_once(monkeypatch: pytest.MonkeyPatch) -> None:
+    """A declaration the Builder reports in and then refuses as too deep: its escape is reported
+    once (by Lark's way, as the loop's report is dropped), with the depth."""
+    text = 'state s: string = "\\q" + ' + "-" * (MAX_EXPR_DEPTH + 5) + "1"
+    diagnostics = Diagnostics()
+    module = parse("t.rdis", text, diagnostics)
+    assert module.decls == ()
+    assert [d.code for d in diagnostics.sorted()] == ["E003", "E005"]
+    fast, general, left = both_ways(monkeypatch, "t.rdis", text)
+    assert fast == general and left == 1
