@@ -319,9 +319,11 @@ class Input:
     request: Request | None = None
     primitive: Primitive | None = field(init=False)  # where `request` goes, when there is one
     kinds: tuple[type, ...] = field(init=False)
+    taken: Callable[[Mapping[str, Any]], Args] = field(init=False)  # the fields' values from a call's keywords
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "kinds", tuple(f.kind for f in self.fields))
+        object.__setattr__(self, "taken", _taking(tuple(f.name for f in self.fields)))
         call = _written_at_once(self.interface)
         object.__setattr__(self, "primitive", call.target if call is not None else None)
         request = None if call is None else self.request or _composed(self, call)
@@ -341,6 +343,19 @@ def _written_at_once(interface: Interface) -> Call | None:
             or prim.frame is not None:
         return None
     return call if prim.actions is None and prim.lines is None and not prim.ranged else None
+
+
+def _taking(names: tuple[str, ...]) -> Callable[[Mapping[str, Any]], Args]:
+    """The values of `names` from keywords, in order (a KeyError for one missing): up to three
+    unrolled, the commonest inputs' (`Robot.call_input`) with no loop."""
+    match names:
+        case (one,):
+            return lambda given: [given[one]]
+        case (one, two):
+            return lambda given: [given[one], given[two]]
+        case (one, two, three):
+            return lambda given: [given[one], given[two], given[three]]
+    return lambda given: [given[name] for name in names]
 
 
 def _composed(plan: Input, call: Call) -> Request:

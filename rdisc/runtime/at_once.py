@@ -11,6 +11,7 @@ the engine's general way then runs and says what is wrong, so both ways behave a
 
 from __future__ import annotations
 
+import functools
 import math
 import struct
 from collections.abc import Callable, Mapping
@@ -18,6 +19,7 @@ from typing import Any
 
 from rdisc import engine
 from rdisc import lower as plans
+from rdisc.engine.plans import plainly_given
 from rdisc.runtime.closures import bound, listed, slots
 from rdisc.semantics import model as m
 
@@ -41,51 +43,56 @@ def primitive_request(w: plans.Written, params: tuple[engine.Param, ...],
     checksum: engine.Checksum | None = None if w.checksum is None else w.checksum.value
     pack_check = struct.Struct(w.check_format or "B").pack
     full, flip, mask = _sum_finish(checksum)
-    framed = _framed(pack, constants, values, head, tail, covered, partial, checksum, pack_check, full, flip, mask)
-    return typed(params, framed)
+    summed = checksum is not None and partial is not None
+    folded = partial or 0  # the covered bytes' sum
+    kinds, bounds, one, two, (low, high), (least, most) = _tests(params)
 
+    k, j = (kinds + (object, object))[:2]
+    packed = functools.partial(pack, *constants)  # the leading constants put in by C
 
-def _framed(pack: Callable[..., bytes], constants: tuple[m.Value, ...], values: Values | None, head: bytes,
-            tail: bytes, covered: bytes, partial: int | None, checksum: engine.Checksum | None,
-            pack_check: Callable[..., bytes], full: int, flip: int, mask: int) -> engine.Request:
-    """The values packed and framed, the parameters' values taken as they are (`_generally_given`
-    tests them first)."""
-
-    def framed(state: Mapping[str, m.Value], args: Any) -> bytes | None:
-        try:
-            payload = pack(*constants, *args) if values is None else pack(*values(state, args))
+    def request(state: Mapping[str, m.Value], args: Any) -> bytes | None:
+        try:  # one number or two tested here, any other parameters by the engine's own test
+            if one:
+                (a,) = args
+                if type(a) is not k or not low <= a <= high:
+                    return None
+                payload = packed(a) if values is None else pack(*values(state, args))
+            elif two:
+                a, b = args
+                if type(a) is not k or type(b) is not j or not low <= a <= high or not least <= b <= most:
+                    return None
+                payload = packed(a, b) if values is None else pack(*values(state, args))
+            elif not plainly_given(args, kinds, bounds):
+                return None
+            else:
+                payload = packed(*args) if values is None else pack(*values(state, args))
         except Exception:  # noqa: BLE001 - the general way says what is wrong
             return None
+        if summed:  # the covered bytes' sum is folded: the payload's added
+            checked = head + payload + pack_check((((folded + sum(payload)) & full) ^ flip) & mask)
+            return checked + tail if tail else checked
         if checksum is None:
-            return head + payload + tail
-        if partial is not None:
-            return head + payload + pack_check((((partial + sum(payload)) & full) ^ flip) & mask) + tail
+            return head + payload + tail if head or tail else payload
         return head + payload + pack_check(checksum(covered + payload)) + tail
 
-    return framed
+    return request
 
 
-def typed(params: tuple[engine.Param, ...], then: engine.Request) -> engine.Request:
-    """`then` of values each of its parameter's own type and within its range (else None, and
-    the general way says what is wrong): one or two numbers tested in the closure itself, any
-    other parameters by the engine's own test (`plainly_given`)."""
+_Range = tuple[Any, Any]
+
+
+def _tests(params: tuple[engine.Param, ...]) -> tuple[tuple[type, ...], tuple[tuple[int, Any, Any], ...], bool, bool,
+                                                      _Range, _Range]:
+    """How a one-step request tests its values (each of its parameter's own type and within its
+    range, else the general way says what is wrong): their kinds and ranges for the engine's own
+    test (`plainly_given`), and whether they are one number or two, tested in the closure itself
+    against these two ranges (a number without a range is within -inf..inf)."""
     kinds = tuple(prm.kind for prm in params)
     bounds = tuple((i, prm.low, prm.high) for i, prm in enumerate(params) if prm.low is not None)
-    if len(params) > 2 or any(kind not in (int, float) for kind in kinds):
-        test = engine.plainly_given
-        return lambda state, args: then(state, args) if test(args, kinds, bounds) else None
-    ranges: list[tuple[Any, Any]] = [(-math.inf, math.inf) if prm.low is None else (prm.low, prm.high) for prm in params]
-    match kinds, ranges:
-        case (), _:
-            return lambda state, args: None if args else then(state, args)
-        case (k,), [(low, high)]:
-            return lambda state, args: (
-                then(state, args) if len(args) == 1 and type(args[0]) is k and low <= args[0] <= high else None)
-        case (k, j), [(low, high), (least, most)]:
-            return lambda state, args: (
-                then(state, args) if len(args) == 2 and type(args[0]) is k and type(args[1]) is j
-                and low <= args[0] <= high and least <= args[1] <= most else None)
-    raise AssertionError(kinds)
+    numbers = all(kind in (int, float) for kind in kinds)
+    ranges: list[_Range] = [(-math.inf, math.inf) if prm.low is None else (prm.low, prm.high) for prm in params]
+    ranges += [(-math.inf, math.inf)] * (2 - len(ranges))
+    return kinds, bounds, numbers and len(params) == 1, numbers and len(params) == 2, ranges[0], ranges[1]
 
 
 def input_request(i: plans.Input, fields: tuple[engine.Param, ...],
@@ -104,20 +111,29 @@ def input_request(i: plans.Input, fields: tuple[engine.Param, ...],
             or any(key for code in codes for key, _, _ in code.items):
         return None
     arguments = listed([bound(e, prm.type, slots(i.args)) for (_, e, _), prm in zip(i.args.items, call.args.params)])
-    items, at = call.args.items, 0
-    while at < len(items) and isinstance(items[at][1], m.Const) and items[at][2] is None:
-        at += 1  # the leading constants (an opcode), put in as they are
-    constants = tuple(e.value for _, e, _ in items[:at] if isinstance(e, m.Const))
-    values = listed([bound(e, type_, slots(call.args)) for _, e, type_ in items[at:]])
+    values = listed([bound(e, type_, slots(call.args)) for _, e, type_ in call.args.items])  # an opcode as it is
     pack = encoder.struct.pack
+    kinds, _, one, two, _, _ = _tests(fields)
+
+    k, j = (kinds + (object, object))[:2]
 
     def request(state: Mapping[str, m.Value], given: Any) -> bytes | None:
-        try:
-            return pack(*constants, *values(state, arguments(state, given)))
+        try:  # one number or two tested here, any other fields by their types at once
+            if one:
+                (a,) = given
+                if type(a) is not k:
+                    return None
+            elif two:
+                a, b = given
+                if type(a) is not k or type(b) is not j:
+                    return None
+            elif tuple(map(type, given)) != kinds:
+                return None
+            return pack(*values(state, arguments(state, given)))
         except Exception:  # noqa: BLE001 - the general way says what is wrong
             return None
 
-    return typed(fields, request)
+    return request
 
 
 def leading_constants(code: plans.Code) -> tuple[m.Value, ...] | None:

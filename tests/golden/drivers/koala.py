@@ -1521,9 +1521,11 @@ class Input:
     request: Request | None = None
     primitive: Primitive | None = field(init=False)  # where `request` goes, when there is one
     kinds: tuple[type, ...] = field(init=False)
+    taken: Callable[[Mapping[str, Any]], Args] = field(init=False)  # the fields' values from a call's keywords
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "kinds", tuple(f.kind for f in self.fields))
+        object.__setattr__(self, "taken", _taking(tuple(f.name for f in self.fields)))
         call = _written_at_once(self.interface)
         object.__setattr__(self, "primitive", call.target if call is not None else None)
         request = None if call is None else self.request or _composed(self, call)
@@ -1543,6 +1545,19 @@ def _written_at_once(interface: Interface) -> Call | None:
             or prim.frame is not None:
         return None
     return call if prim.actions is None and prim.lines is None and not prim.ranged else None
+
+
+def _taking(names: tuple[str, ...]) -> Callable[[Mapping[str, Any]], Args]:
+    """The values of `names` from keywords, in order (a KeyError for one missing): up to three
+    unrolled, the commonest inputs' (`Robot.call_input`) with no loop."""
+    match names:
+        case (one,):
+            return lambda given: [given[one]]
+        case (one, two):
+            return lambda given: [given[one], given[two]]
+        case (one, two, three):
+            return lambda given: [given[one], given[two], given[three]]
+    return lambda given: [given[name] for name in names]
 
 
 def _composed(plan: Input, call: Call) -> Request:
@@ -2407,7 +2422,7 @@ class Exchange:
             raise RdisConnectionError(f"{plan.connection}: not open")
         port = link.port
         lock = port.lock
-        watched = bool(self._io_callbacks or self._trace_callbacks)
+        watched = self._io_callbacks or self._trace_callbacks  # (a list: its truth is the answer)
         lock.acquire()  # acquire/release rather than `with`: cheaper, and this is every command's path
         try:
             if self._closed:  # under the lock: a write that got it before the terminate hooks comes before them
@@ -3011,13 +3026,11 @@ class Calls:
         if isinstance(plan, Input):
             method = functools.partial(robot.call_input, name)
         elif isinstance(plan, Interface):
-            interface = plan
-            method = lambda *args, **kwargs: robot._call_interface(
-                interface, _bind(f"interface {name}", interface.params, args, kwargs))
+            interface, what = plan, f"interface {name}"
+            method = lambda *args, **kwargs: robot._call_interface(interface, _bind(what, interface.params, args, kwargs))
         else:
-            primitive = plan
-            method = lambda *args, **kwargs: robot._call_primitive(
-                primitive, _bind(f"primitive {name}", primitive.params, args, kwargs))
+            primitive, what = plan, f"primitive {name}"
+            method = lambda *args, **kwargs: robot._call_primitive(primitive, _bind(what, primitive.params, args, kwargs))
         setattr(self, name, method)
         return method
 
@@ -3132,7 +3145,7 @@ class Robot(Exchange):
         try:
             if len(fields) != len(plan.fields):
                 raise KeyError(name)
-            values = [fields[f.name] for f in plan.fields]
+            values = plan.taken(fields)
         except KeyError:
             expected = ", ".join(f.name for f in plan.fields)
             raise TypeError(f"input {name} takes the fields {expected} ({plan.adapter}); "
