@@ -90,6 +90,8 @@ from rdisc.engine.plans import (
     TaggedReply,
     TaggedStream,
     plainly_given,
+    sent_at_once,
+    written_at_once,
 )
 from rdisc.engine.ports import Port, PortSpec, Simulator
 from rdisc.engine.recording import (
@@ -256,7 +258,9 @@ __all__ = [
     "replaced",
     "ros_message",
     "run_command",
+    "sent_at_once",
     "session_topics",
     "shown",
     "start_recording",
+    "written_at_once",
 ]
