@@ -24,7 +24,6 @@ from typing import Any
 
 from rdisc import engine
 from rdisc.engine.operations import EVAL_ERRORS
-from rdisc.engine.plans import _plain as plain  # the engine's rule of a plain struct pack
 from rdisc.lowering.constructs import (
     Construct,
     decoding,
@@ -566,13 +565,13 @@ def frame(f: m.Frame) -> Frame:
 
 
 def _written(plan: Primitive, params: tuple[m.Parameter, ...]) -> Written | None:
-    """A primitive's request in one step, when it is only written (the engine's `_sent_at_once`)
+    """A primitive's request in one step, when it is only written (`engine.sent_at_once`)
     and its frame, if any, folds into constant bytes around a payload of a fixed size."""
     encoder = None if plan.encoder is None else plan.encoder.value
-    if not plain(encoder) or not isinstance(encoder, engine.Pack) or encoder.groups or encoder.varying:
-        return None
-    if not isinstance(plan.reply, NoReply) or plan.actions is not None or plan.lines is not None or any(key == "*" for key, _, _ in plan.values.items) \
-            or any(isinstance(prm.type, m.Array) for prm in params):
+    sent = engine.sent_at_once(encoder=encoder, replies=not isinstance(plan.reply, NoReply),
+                               acts=plan.actions is not None or plan.lines is not None)
+    if not sent or not isinstance(encoder, engine.Pack) or encoder.groups or encoder.varying \
+            or any(key == "*" for key, _, _ in plan.values.items) or any(isinstance(prm.type, m.Array) for prm in params):
         return None
     written = Written(params, plan.values, encoder.struct.format)
     folded = written if plan.frame is None else _folded(written, plan.frame, encoder.struct.size)
@@ -676,20 +675,17 @@ def _evaluated(code: Code) -> Any:
 
 
 def _written_at_once(interface: Interface) -> bool:
-    """Whether running the interface is one plain write (the engine's `_written_at_once`, which
-    decides at run time): one direct call of a primitive packed with a struct format, no delay,
-    condition, range, output, frame, reply, post-action, modem line or string in the way."""
-    if len(interface.calls) != 1 or interface.outputs or _ranged(interface.params):
+    """Whether running the interface is one plain write: the engine's rule
+    (`engine.written_at_once`), of this plan."""
+    call = interface.calls[0] if len(interface.calls) == 1 else None
+    prim = call.target if call is not None else None
+    if call is None or not isinstance(prim, Primitive):
         return False
-    call = interface.calls[0]
-    prim = call.target
-    if not isinstance(prim, Primitive) or not call.direct or call.delay or call.when is not None \
-            or call.until is not None:
-        return False
-    return (plain(None if prim.encoder is None else prim.encoder.value) and isinstance(prim.reply, NoReply)
-            and prim.frame is None
-            and prim.actions is None and prim.lines is None
-            and not _ranged(prim.params))
+    return engine.written_at_once(
+        calls=len(interface.calls), outputs=len(interface.outputs), ranged=_ranged(interface.params + prim.params),
+        direct=call.direct, waits=bool(call.delay or call.when is not None or call.until is not None),
+        encoder=None if prim.encoder is None else prim.encoder.value, replies=not isinstance(prim.reply, NoReply),
+        framed=prim.frame is not None, acts=prim.actions is not None or prim.lines is not None)
 
 
 def _ranged(params: tuple[Construct[engine.Param], ...]) -> bool:

@@ -89,6 +89,8 @@ if TYPE_CHECKING:  # at run time each name is imported when it is first asked fo
         TaggedReply,
         TaggedStream,
         plainly_given,
+        sent_at_once,
+        written_at_once,
     )
     from rdisc.engine.ports import Port, PortSpec, Simulator
     from rdisc.engine.recording import (
@@ -265,9 +267,11 @@ __all__ = [
     "replaced",
     "ros_message",
     "run_command",
+    "sent_at_once",
     "session_topics",
     "shown",
     "start_recording",
+    "written_at_once",
 ]
 
 

@@ -85,13 +85,11 @@ class Calls:
         if isinstance(plan, Input):
             method = functools.partial(robot.call_input, name)
         elif isinstance(plan, Interface):
-            interface = plan
-            method = lambda *args, **kwargs: robot._call_interface(
-                interface, _bind(f"interface {name}", interface.params, args, kwargs))
+            interface, what = plan, f"interface {name}"
+            method = lambda *args, **kwargs: robot._call_interface(interface, _bind(what, interface.params, args, kwargs))
         else:
-            primitive = plan
-            method = lambda *args, **kwargs: robot._call_primitive(
-                primitive, _bind(f"primitive {name}", primitive.params, args, kwargs))
+            primitive, what = plan, f"primitive {name}"
+            method = lambda *args, **kwargs: robot._call_primitive(primitive, _bind(what, primitive.params, args, kwargs))
         setattr(self, name, method)
         return method
 
@@ -206,7 +204,7 @@ class Robot(Exchange):
         try:
             if len(fields) != len(plan.fields):
                 raise KeyError(name)
-            values = [fields[f.name] for f in plan.fields]
+            values = plan.taken(fields)
         except KeyError:
             expected = ", ".join(f.name for f in plan.fields)
             raise TypeError(f"input {name} takes the fields {expected} ({plan.adapter}); "

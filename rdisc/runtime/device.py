@@ -10,22 +10,19 @@ lowering's, the same plans a generated driver is written from.
 from __future__ import annotations
 
 import os
-import struct
 from collections.abc import Callable, Mapping
-from types import MappingProxyType
 from typing import Any, TypeVar, assert_never
 
 from rdisc import engine
 from rdisc import lower as plans
 from rdisc.diagnostics.load_error import RdisLoadError
-from rdisc.engine.plans import plainly_given
 from rdisc.lowering.constructs import built
+from rdisc.runtime.at_once import input_request, primitive_request
+from rdisc.runtime.closures import closure
 from rdisc.semantics import model as m
-from rdisc.semantics.evaluate import Prepared, coerce, prepare
 
 __all__ = ["Description", "load", "wire_frame"]
 
-_EMPTY: Mapping[str, m.Value] = MappingProxyType({})
 T = TypeVar("T")
 
 
@@ -119,8 +116,7 @@ class _Engine:
         """The function a Code says, made once however many plans share it."""
         if code is None:
             return None
-        made = {plans.Gives.LIST: _list, plans.Gives.DICT: _dict, plans.Gives.BOOL: _predicate}[code.gives]
-        return self.once(code, lambda: made(code))
+        return self.once(code, lambda: closure(code))
 
     def device(self, d: plans.Device) -> engine.Device:
         return engine.Device(
@@ -147,7 +143,7 @@ class _Engine:
             actions=self.closure(p.actions), frame=None if p.frame is None else self.use(p.frame), timeout=p.timeout,
             retries=p.retries,
             checked=p.checked, expect=self.closure(p.expect), lines=self.closure(p.lines),
-            request=None if p.request is None else self.written(p.request, built(p.params)),
+            request=None if p.request is None else primitive_request(p.request, built(p.params), self.closure),
         )
 
     def reply(self, r: plans.Reply) -> engine.Reply:
@@ -189,38 +185,6 @@ class _Engine:
         """A reply table: each entry's plan for each of its values (a range entry's plan once)."""
         return {value: self.primitive(entry.plan) for entry in entries for value in entry.case.values()}
 
-    def written(self, w: plans.Written, params: tuple[engine.Param, ...]) -> engine.Request:
-        """A primitive's request in one step, as its description says (`plans.Written`); what
-        a driver writes as one function."""
-        if w.constant is not None:
-            constant = w.constant
-            return lambda state, args: None if args else constant
-        kinds = tuple(prm.kind for prm in params)
-        bounds = tuple((i, prm.low, prm.high) for i, prm in enumerate(params) if prm.low is not None)
-        leading = _leading_constants(w.values)  # the values: these, then the parameters' in order
-        constants = leading or ()
-        values = None if leading is not None else self.closure(w.values)
-        pack = struct.Struct(w.format).pack
-        head, tail, covered, partial = w.head, w.tail, w.covered, w.partial
-        checksum: engine.Checksum | None = built(w.checksum)
-        pack_check = struct.Struct(w.check_format or "B").pack
-        full, flip, mask = _sum_finish(checksum)
-
-        def request(state: Mapping[str, m.Value], args: Any) -> bytes | None:
-            if not plainly_given(args, kinds, bounds):
-                return None
-            try:
-                payload = pack(*constants, *args) if values is None else pack(*values(state, args))
-            except Exception:  # noqa: BLE001 - the general way says what is wrong
-                return None
-            if checksum is None:
-                return head + payload + tail
-            if partial is not None:  # a sum: the covered bytes' summed once
-                return head + payload + pack_check((((partial + sum(payload)) & full) ^ flip) & mask) + tail
-            return head + payload + pack_check(checksum(covered + payload)) + tail
-
-        return request
-
     def output(self, o: plans.Output) -> engine.Output:
         return self.once(o, lambda: engine.Output(o.name, self.closure(o.fields), o.adapter, o.frame,
                                                                o.child_frame))
@@ -235,7 +199,9 @@ class _Engine:
                            self.closure(c.until), c.every, c.within)
 
     def input(self, i: plans.Input) -> engine.Input:
-        made = engine.Input(i.name, i.adapter, built(i.fields), self.interface(i.interface), self.closure(i.args))
+        interface = self.interface(i.interface)
+        request = input_request(i, built(i.fields), interface.params) if i.request else None
+        made = engine.Input(i.name, i.adapter, built(i.fields), interface, self.closure(i.args), request=request)
         assert (made.request is not None) == i.request, f"{i.name}: the lowering and the engine disagree"
         return made
 
@@ -247,137 +213,3 @@ class _Engine:
             c.name, c.baud, c.address, c.terminator, c.frequency, tuple(self.interface(i) for i in c.periodic),
             hook(c.startup), hook(c.terminate), hook(c.keepalive), c.interval, c.baud_setting,
         )
-
-
-def _leading_constants(code: plans.Code) -> tuple[m.Value, ...] | None:
-    """The constants a primitive's format values start with, when the parameters' values follow
-    them as they are, in order (an opcode and the parameters: `pack(*constants, *args)`)."""
-    count = len(code.items) - len(code.params)
-    if count < 0 or any(not isinstance(e, m.Const) or type_ is not None for _, e, type_ in code.items[:count]):
-        return None
-    for (_, e, type_), prm in zip(code.items[count:], code.params):
-        if not isinstance(e, m.Var) or e.scope is not m.Scope.PARAM or e.name != prm.name or type_ is not None:
-            return None
-    return tuple(e.value for _, e, _ in code.items[:count] if isinstance(e, m.Const))
-
-
-def _sum_finish(checksum: engine.Checksum | None) -> tuple[int, int, int]:
-    """A "sum" checksum's last steps, as masks: kept to its width, inverted (XOR), masked."""
-    if checksum is None:
-        return 0, 0, 0
-    full = (1 << checksum.width) - 1
-    return full, full if checksum.inverted else 0, full if checksum.mask is None else checksum.mask
-
-
-def _slots(code: plans.Code) -> dict[str, int]:
-    return {p.name: i for i, p in enumerate(code.params)}
-
-
-def _list(code: plans.Code) -> Any:
-    """A LIST code as a closure taking what it takes: its items' values, bound to their
-    types, arrays marked "*" given element by element."""
-    slots = _slots(code)
-    values = _values([_bound(e, type_, slots) for _, e, type_ in code.items])
-    values = _spread(values, tuple(i for i, (key, _, _) in enumerate(code.items) if key == "*"))
-    match code.takes:
-        case ("state", "args"):
-            return values
-        case ("args",):
-            return lambda args: values(_EMPTY, args)
-        case ("state",):
-            return lambda state: values(state, _EMPTY)
-    raise AssertionError(code.takes)
-
-
-def _dict(code: plans.Code) -> Any:
-    """A DICT code as a closure: its items' values by key, each coerced to its type if it has one
-    (all have or none has)."""
-    slots = _slots(code)
-    typed = [(key, prepare(e, slots), type_) for key, e, type_ in code.items if type_ is not None]
-    if not typed:
-        plain = [(key, prepare(e, slots)) for key, e, _ in code.items]
-        match code.takes:
-            case ("state", "args"):
-                return lambda s, loc: {key: f(s, loc, ()) for key, f in plain}
-    assert len(typed) == len(code.items), "all typed or none"
-    match code.takes:
-        case ("state", "args", "reply"):
-            return lambda s, loc, r: {key: coerce(f(s, loc, r), t) for key, f, t in typed}
-        case ("state",):
-            return lambda s: {key: coerce(f(s, _EMPTY, ()), t) for key, f, t in typed}
-    raise AssertionError(code.takes)
-
-
-def _predicate(code: plans.Code) -> Any:
-    """A BOOL code as a closure: its one item's value (the engine tests its truth)."""
-    ((_, e, _),) = code.items
-    holds = prepare(e, _slots(code))
-    match code.takes:
-        case ("state", "args", "reply"):
-            return holds
-        case ("state", "args"):
-            return lambda state, local: holds(state, local, ())
-    raise AssertionError(code.takes)
-
-
-def _bound(e: m.Expr, type_: m.AnyType | None, slots: dict[str, int]) -> Prepared | m.Const:
-    """`e` prepared, bound to `type_` as the contract binds values (an int made a float where a
-    float is declared); a constant given as it is, which `_values` puts in as it is."""
-    if type_ is None and isinstance(e, m.Const):
-        return e
-    f = prepare(e, slots)
-    if type_ is m.Type.FLOAT and e.type is m.Type.INT:
-        return _widened(f)
-    if isinstance(type_, m.Array) and type_.element is m.Type.FLOAT and isinstance(e.type, m.Array) \
-            and e.type.element is m.Type.INT:
-        return lambda s, loc, r: coerce(f(s, loc, r), type_)
-    return f
-
-
-def _widened(f: Prepared) -> Prepared:
-    def widened(s: Mapping[str, m.Value], loc: Any, r: Any) -> m.Value:
-        value = f(s, loc, r)
-        return float(value) if type(value) is int else value
-
-    return widened
-
-
-def _spread(values: Callable[[Mapping[str, m.Value], Any], list[m.Value]],
-            arrays: tuple[int, ...]) -> Callable[[Mapping[str, m.Value], Any], list[m.Value]]:
-    """Format values with the arrays among them (at `arrays`) given element by element."""
-    if not arrays:
-        return values
-
-    def spread(s: Mapping[str, m.Value], loc: Any) -> list[m.Value]:
-        flat: list[m.Value] = []
-        for i, v in enumerate(values(s, loc)):
-            flat.extend(v) if i in arrays else flat.append(v)  # type: ignore[arg-type]
-        return flat
-
-    return spread
-
-
-def _values(fs: list[Prepared | m.Const]) -> Callable[[Mapping[str, m.Value], Any], list[m.Value]]:
-    """The prepared expressions (or constants) `fs` evaluated in turn, as a list.
-
-    For speed, up to three are unrolled (a list comprehension costs more than
-    the calls themselves), and a leading constant (an opcode) is put in as it is.
-    """
-    prepared: list[Prepared] = [prepare(f) if isinstance(f, m.Const) else f for f in fs]
-    if fs and isinstance(fs[0], m.Const):
-        c = fs[0].value
-        match prepared:
-            case [_, f]:
-                return lambda s, loc: [c, f(s, loc, ())]
-            case [_, f, g]:
-                return lambda s, loc: [c, f(s, loc, ()), g(s, loc, ())]
-    match prepared:
-        case []:
-            return lambda s, loc: []
-        case [f]:
-            return lambda s, loc: [f(s, loc, ())]
-        case [f, g]:
-            return lambda s, loc: [f(s, loc, ()), g(s, loc, ())]
-        case [f, g, h]:
-            return lambda s, loc: [f(s, loc, ()), g(s, loc, ()), h(s, loc, ())]
-    return lambda s, loc: [f(s, loc, ()) for f in prepared]

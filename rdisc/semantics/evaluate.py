@@ -90,17 +90,13 @@ def prepare(expr: m.Expr, slots: Mapping[str, int] | None = None) -> Prepared:
         case m.UnaryOp(op=op, operand=operand):
             unary, a = _PYTHON_UNARY[op], prepare(operand, slots)  # no unary operation can fail
             return lambda s, loc, r: unary(a(s, loc, r))
-        case m.BinaryOp(op="and", left=left, right=right):
-            a, b = prepare(left, slots), prepare(right, slots)
-            return lambda s, loc, r: a(s, loc, r) and b(s, loc, r)
-        case m.BinaryOp(op="or", left=left, right=right):
-            a, b = prepare(left, slots), prepare(right, slots)
-            return lambda s, loc, r: a(s, loc, r) or b(s, loc, r)
+        case m.BinaryOp(op="and" | "or", left=left, right=right):
+            return _logic(expr.op, left, right, slots)
         case m.BinaryOp(op=op, left=left, right=right):
             left, right = _folded(left), _folded(right)  # `x % (2 + 1)` is `x % 3`: Python's own `%`
             return _binary(_operation(replace(expr, left=left, right=right)), left, right, slots)
         case m.IfElse(cond=cond, then=then, orelse=orelse):
-            return _if_else(prepare(cond, slots), then, orelse, slots)
+            return _if_else(cond, then, orelse, slots)
         case m.FuncCall():
             return _call(expr, slots)
         case m.Lookup(table=table, entries=entries, key=key):
@@ -156,19 +152,54 @@ def _constant(expr: m.Expr) -> bool:
     return all(_constant(o) for o in m.operands(expr))
 
 
-def _if_else(c: Prepared, then: m.Expr, orelse: m.Expr, slots: Mapping[str, int] | None) -> Prepared:
+def _test(expr: m.Expr, slots: Mapping[str, int] | None) -> tuple[Callable[[Any, Any], Any], str | int, Any] | None:
+    """A parameter or field compared with a constant (`linear == 0`), as what compares, where the
+    name is read in `local` and the constant: a test a closure makes with no closure of its own."""
+    if isinstance(expr, m.BinaryOp) and expr.op in _COMPARISONS:
+        right = _folded(expr.right)
+        if isinstance(expr.left, m.Var) and expr.left.scope is not m.Scope.STATE and isinstance(right, m.Const):
+            return _operation(replace(expr, right=right)), _key(expr.left.name, slots), right.value
+    return None
+
+
+def _logic(op: str, left: m.Expr, right: m.Expr, slots: Mapping[str, int] | None) -> Prepared:
+    """`and` or `or`; of two tests (`linear == 0 and angular == 0`), one closure making both."""
+    first, second = _test(left, slots), _test(right, slots)
+    if first is not None and second is not None:
+        (f, j, c), (g, k, d) = first, second
+        if op == "and":
+            return lambda s, loc, r: f(loc[j], c) and g(loc[k], d)
+        return lambda s, loc, r: f(loc[j], c) or g(loc[k], d)
+    a, b = prepare(left, slots), prepare(right, slots)
+    if op == "and":
+        return lambda s, loc, r: a(s, loc, r) and b(s, loc, r)
+    return lambda s, loc, r: a(s, loc, r) or b(s, loc, r)
+
+
+def _if_else(cond: m.Expr, then: m.Expr, orelse: m.Expr, slots: Mapping[str, int] | None) -> Prepared:
+    """A conditional; a constant branch given as it is, a test (`_test`) made in the closure itself."""
     t, o = _fold(then), _fold(orelse)
-    if t is not None and o is not None:
-        tv, ov = t.value, o.value
-        return lambda s, loc, r: tv if c(s, loc, r) else ov
-    if t is not None:
-        tv, of = t.value, prepare(orelse, slots)
-        return lambda s, loc, r: tv if c(s, loc, r) else of(s, loc, r)
-    if o is not None:
-        tf, ov = prepare(then, slots), o.value
-        return lambda s, loc, r: tf(s, loc, r) if c(s, loc, r) else ov
     tf, of = prepare(then, slots), prepare(orelse, slots)
-    return lambda s, loc, r: tf(s, loc, r) if c(s, loc, r) else of(s, loc, r)
+    tv: Any = None if t is None else t.value
+    ov: Any = None if o is None else o.value
+    test = _test(cond, slots)
+    if test is not None:
+        f, k, c = test
+        if t is not None and o is not None:
+            return lambda s, loc, r: tv if f(loc[k], c) else ov
+        if t is not None:
+            return lambda s, loc, r: tv if f(loc[k], c) else of(s, loc, r)
+        if o is not None:
+            return lambda s, loc, r: tf(s, loc, r) if f(loc[k], c) else ov
+        return lambda s, loc, r: tf(s, loc, r) if f(loc[k], c) else of(s, loc, r)
+    holds = prepare(cond, slots)
+    if t is not None and o is not None:
+        return lambda s, loc, r: tv if holds(s, loc, r) else ov
+    if t is not None:
+        return lambda s, loc, r: tv if holds(s, loc, r) else of(s, loc, r)
+    if o is not None:
+        return lambda s, loc, r: tf(s, loc, r) if holds(s, loc, r) else ov
+    return lambda s, loc, r: tf(s, loc, r) if holds(s, loc, r) else of(s, loc, r)
 
 
 def _call(expr: m.FuncCall, slots: Mapping[str, int] | None) -> Prepared:
@@ -247,6 +278,11 @@ def _binary(binary: Callable[[Any, Any], Any], left: m.Expr, right: m.Expr,
             if binary in _LOCAL_COMPARE:
                 return _LOCAL_COMPARE[binary](key, constant)
             return lambda s, loc, r: binary(loc[key], constant)
+        case m.Var(name=one, scope=scope), m.Var(name=other, scope=other_scope) if (
+            scope is not m.Scope.STATE and other_scope is not m.Scope.STATE
+        ):  # two parameters or fields (`linear / angular`)
+            j, k = _key(one, slots), _key(other, slots)
+            return lambda s, loc, r: binary(loc[j], loc[k])
         case _, m.Const(value=constant):
             a = prepare(left, slots)
             return lambda s, loc, r: binary(a(s, loc, r), constant)
@@ -275,4 +311,5 @@ _LOCAL_COMPARE: dict[Callable[[Any, Any], Any], Callable[[Any, Any], Prepared]] 
     operator.gt: lambda key, c: lambda s, loc, r: loc[key] > c,
     operator.ge: lambda key, c: lambda s, loc, r: loc[key] >= c,
 }
+_COMPARISONS = frozenset({"==", "!=", "<", "<=", ">", ">="})
 assert all(_PYTHON[op] in _LOCAL_COMPARE for op in ("==", "!=", "<", "<=", ">", ">="))

@@ -195,7 +195,7 @@ def fast_create(tmp_path_factory: pytest.TempPathFactory) -> dict[str, Any]:
 @pytest.mark.parametrize("kind", ["runtime", "driver"])
 def test_an_input_written_at_once_behaves_as_the_general_way(fast_create, kind) -> None:
     """set_velocity is one plain write, so it goes through `Input.request` (the driver's compiled
-    from the expressions, the runtime's composed by the engine). The general way (ints for the
+    from the expressions, the runtime's a closure of the same plan). The general way (ints for the
     float fields) writes the same bytes, and an error found on the quick way is reported by
     the general way, naming the element at fault."""
     device = fast_create[kind].device if kind == "runtime" else fast_create[kind]._DEVICE

@@ -1564,9 +1564,17 @@ def _plain(encoder: Pack | Format | None) -> bool:
 
 
 def _sent_at_once(plan: Primitive) -> bool:
-    """Whether running the primitive is only packing its values, framing them and writing
-    them: no reply, reply table, post-action, modem line or string in the way."""
-    return _plain(plan.encoder) and isinstance(plan.reply, NoReply) and plan.actions is None and plan.lines is None
+    """`sent_at_once`, of this plan."""
+    return sent_at_once(encoder=plan.encoder, replies=not isinstance(plan.reply, NoReply),
+                        acts=plan.actions is not None or plan.lines is not None)
+
+
+def sent_at_once(*, encoder: Pack | Format | None, replies: bool, acts: bool) -> bool:
+    """Whether running a primitive is only packing its values, framing them and writing them
+    (`Primitive.request`): one plain struct pack (`encoder`), and no reply, reply table,
+    post-action or modem line (`acts`) in the way. The one rule: the engine applies it to its
+    plans, the lowering (`rdisc.lower`) to its own."""
+    return _plain(encoder) and not replies and not acts
 
 
 def plainly_given(args: Args, kinds: tuple[type, ...], bounds: tuple[tuple[int, Any, Any], ...]) -> bool:
@@ -1669,9 +1677,11 @@ class Input:
     request: Request | None = None
     primitive: Primitive | None = field(init=False)  # where `request` goes, when there is one
     kinds: tuple[type, ...] = field(init=False)
+    taken: Callable[[Mapping[str, Any]], Args] = field(init=False)  # the fields' values from a call's keywords
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "kinds", tuple(f.kind for f in self.fields))
+        object.__setattr__(self, "taken", _taking(tuple(f.name for f in self.fields)))
         call = _written_at_once(self.interface)
         object.__setattr__(self, "primitive", call.target if call is not None else None)
         request = None if call is None else self.request or _composed(self, call)
@@ -1679,18 +1689,43 @@ class Input:
 
 
 def _written_at_once(interface: Interface) -> Call | None:
-    """The interface's one call, when running it is only packing its values and writing them:
-    no delay, condition, poll, range, output, frame, reply, post-action, modem line or string in the way."""
-    if len(interface.calls) != 1 or interface.ranged or interface.outputs:
+    """The interface's one call, when running it is only packing its values and writing them
+    (`written_at_once`, of this plan)."""
+    call = interface.calls[0] if len(interface.calls) == 1 else None
+    prim = call.target if call is not None else None
+    if call is None or not isinstance(prim, Primitive):
         return None
-    call = interface.calls[0]
-    prim = call.target
-    if not isinstance(prim, Primitive):
-        return None
-    if not call.direct or call.delay or call.when or call.until or not _plain(prim.encoder) or not isinstance(prim.reply, NoReply) \
-            or prim.frame is not None:
-        return None
-    return call if prim.actions is None and prim.lines is None and not prim.ranged else None
+    plain = written_at_once(
+        calls=len(interface.calls), outputs=len(interface.outputs), ranged=bool(interface.ranged or prim.ranged),
+        direct=call.direct, waits=bool(call.delay or call.when or call.until), encoder=prim.encoder,
+        replies=not isinstance(prim.reply, NoReply), framed=prim.frame is not None,
+        acts=prim.actions is not None or prim.lines is not None)
+    return call if plain else None
+
+
+def written_at_once(*, calls: int, outputs: int, ranged: bool, direct: bool, waits: bool,
+                    encoder: Pack | Format | None, replies: bool, framed: bool, acts: bool) -> bool:
+    """Whether running an interface is one plain write, so that an input of it may go from its
+    fields' values straight to the bytes (`Input.request`): its one call (of `calls`) a direct
+    call of a primitive packed with one plain struct pack (`encoder`), and no delay, condition or
+    poll (`waits`), range (the interface's or the primitive's), output, reply, frame, post-action
+    or modem line (`acts`) in the way. The one rule: the engine applies it to its plans, the
+    lowering (`rdisc.lower`) to its own, so a driver is written with the function this asks for."""
+    return (calls == 1 and not outputs and not ranged and direct and not waits and not framed
+            and sent_at_once(encoder=encoder, replies=replies, acts=acts))
+
+
+def _taking(names: tuple[str, ...]) -> Callable[[Mapping[str, Any]], Args]:
+    """The values of `names` from keywords, in order (a KeyError for one missing): up to three
+    unrolled, the commonest inputs' (`Robot.call_input`) with no loop."""
+    match names:
+        case (one,):
+            return lambda given: [given[one]]
+        case (one, two):
+            return lambda given: [given[one], given[two]]
+        case (one, two, three):
+            return lambda given: [given[one], given[two], given[three]]
+    return lambda given: [given[name] for name in names]
 
 
 def _composed(plan: Input, call: Call) -> Request:
@@ -2567,7 +2602,7 @@ class Exchange:
             raise RdisConnectionError(f"{plan.connection}: not open")
         port = link.port
         lock = port.lock
-        watched = bool(self._io_callbacks or self._trace_callbacks)
+        watched = self._io_callbacks or self._trace_callbacks  # (a list: its truth is the answer)
         lock.acquire()  # acquire/release rather than `with`: cheaper, and this is every command's path
         try:
             if self._closed:  # under the lock: a write that got it before the terminate hooks comes before them
@@ -3264,13 +3299,11 @@ class Calls:
         if isinstance(plan, Input):
             method = functools.partial(robot.call_input, name)
         elif isinstance(plan, Interface):
-            interface = plan
-            method = lambda *args, **kwargs: robot._call_interface(
-                interface, _bind(f"interface {name}", interface.params, args, kwargs))
+            interface, what = plan, f"interface {name}"
+            method = lambda *args, **kwargs: robot._call_interface(interface, _bind(what, interface.params, args, kwargs))
         else:
-            primitive = plan
-            method = lambda *args, **kwargs: robot._call_primitive(
-                primitive, _bind(f"primitive {name}", primitive.params, args, kwargs))
+            primitive, what = plan, f"primitive {name}"
+            method = lambda *args, **kwargs: robot._call_primitive(primitive, _bind(what, primitive.params, args, kwargs))
         setattr(self, name, method)
         return method
 
@@ -3385,7 +3418,7 @@ class Robot(Exchange):
         try:
             if len(fields) != len(plan.fields):
                 raise KeyError(name)
-            values = [fields[f.name] for f in plan.fields]
+            values = plan.taken(fields)
         except KeyError:
             expected = ", ".join(f.name for f in plan.fields)
             raise TypeError(f"input {name} takes the fields {expected} ({plan.adapter}); "
