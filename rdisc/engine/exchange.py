@@ -97,7 +97,7 @@ class Exchange:
             raise RdisConnectionError(f"{plan.connection}: not open")
         port = link.port
         lock = port.lock
-        watched = bool(self._io_callbacks or self._trace_callbacks)
+        watched = self._io_callbacks or self._trace_callbacks  # (a list: its truth is the answer)
         lock.acquire()  # acquire/release rather than `with`: cheaper, and this is every command's path
         try:
             if self._closed:  # under the lock: a write that got it before the terminate hooks comes before them

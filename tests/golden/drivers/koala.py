@@ -2407,7 +2407,7 @@ class Exchange:
             raise RdisConnectionError(f"{plan.connection}: not open")
         port = link.port
         lock = port.lock
-        watched = bool(self._io_callbacks or self._trace_callbacks)
+        watched = self._io_callbacks or self._trace_callbacks  # (a list: its truth is the answer)
         lock.acquire()  # acquire/release rather than `with`: cheaper, and this is every command's path
         try:
             if self._closed:  # under the lock: a write that got it before the terminate hooks comes before them
@@ -3373,6 +3373,22 @@ class Robot(Exchange):
         if not self._running:
             raise self._not_running()
         self._primitive(plan, _accepted(f"primitive {plan.name}", plan.params, values))
+
+    def _send(self, plan: Primitive, request: bytes | None, values: Args) -> None:
+        """A typed method's primitive, its request made by the driver's one-step function
+        (`plan.request`; None: values it does not take): written at once on ports, else the
+        general way, which says what is wrong (every command's path: one call to the write)."""
+        if request is not None and self._direct:
+            self._write(plan, request)
+        else:
+            self._call_primitive(plan, values)
+
+    def _send_input(self, plan: Input, request: bytes | None, values: Args) -> None:
+        """`_send` of a typed method's input: its request in one step (`plan.request`), else the general way."""
+        if request is not None and self._direct and plan.primitive is not None:
+            self._write(plan.primitive, request)
+        else:
+            self._input_in_full(plan, values)
 
     def _hook(self, hook: Hook) -> None:
         try:
