@@ -29,9 +29,9 @@ from types import ModuleType
 from rdisc import engine
 from rdisc import lower as lowering
 from rdisc.emit import python_support as support
-from rdisc.emit.python_expr import Chain, Compiler, Paren, Py, lines, literal, quoted, table_name
+from rdisc.emit.python_expr import Chain, Compiler, Paren, Py, binary, lines, literal, quoted, table_name
 from rdisc.emit.python_expr import call as function_call
-from rdisc.emit.python_frame import WholeFrame, byte_sum, whole_frame
+from rdisc.emit.python_frame import WholeFrame, byte_terms, whole_frame
 from rdisc.emit.writer import Writer, printable
 from rdisc.engine import carry
 from rdisc.lower import lower
@@ -597,7 +597,7 @@ class _Driver:
             check = _constant_name(f"PACK_{prim.name}_CHECKSUM", self.taken)
             w.line(f"{check} = struct.Struct({quoted(written.check_format)}).pack")
             if written.partial is not None:  # a sum: the constant bytes' summed here
-                checked = f"{check}({_summed(written.checksum.value, written.partial, ['sum(payload)'])})"
+                checked = f"{check}({_summed(written.checksum.value, [f'{written.partial:#x}', 'sum(payload)'])})"
             else:
                 function_of = _constant_name(f"CHECKSUM_{prim.name}", self.taken)
                 w.line(f"{function_of} = {self.text(written.checksum)}")
@@ -645,7 +645,7 @@ class _Driver:
               local: Mapping[str, str]) -> None:
         """`return PACK(head, values..., checksum, tail)`: a sum checksum of the values' bytes, each
         value computed once (a name where it is more than a name or a constant)."""
-        sums: list[str] = []
+        sums: list[Py] = []
         taken = set(local.values()) | _body_names()
         if whole.partial is not None:
             for n, ((_, e, _), value, slot) in enumerate(zip(written.values.items, packed, whole.slots), 1):
@@ -656,12 +656,18 @@ class _Driver:
                     taken.add(name)
                     _emit(w, f"{name} = ", value)
                     packed[n - 1] = value = Py(name, p.ATOM)
-                sums.append(byte_sum(value.text, slot))
+                sums += [Py(term, p.ATOM) for term in byte_terms(value.text, slot)]
         values = [Py(quoted(written.head), p.ATOM)] if written.head else []
         values += packed
         if whole.partial is not None and written.checksum is not None:
             checksum = _escape("checksum", taken)
-            w.line(f"{checksum} = {_summed(written.checksum.value, whole.partial, sums)}")
+            terms = [Py(f"{whole.partial:#x}", p.ATOM), *sums]
+            total = _summed(written.checksum.value, [term.text for term in terms])
+            if len(f"{checksum} = {total}") > w.width():  # the sum first, a term a line
+                summed = _escape("summed", taken | {checksum})
+                _emit(w, f"{summed} = ", functools.reduce(lambda a, b: binary("+", a, b), terms))
+                total = _summed(written.checksum.value, [summed])
+            w.line(f"{checksum} = {total}")
             values.append(Py(checksum, p.ATOM))
         if written.tail:
             values.append(Py(quoted(written.tail), p.ATOM))
@@ -934,11 +940,10 @@ def _case(case: m.ReplyCase) -> str:
     return first if case.last is None else f"{first}_{last}"
 
 
-def _summed(checksum: engine.Checksum, partial: int, terms: list[str]) -> str:
-    """A sum checksum's value: `partial` (its constant bytes') plus `terms`, in its width,
-    inverted and masked as it says."""
+def _summed(checksum: engine.Checksum, terms: list[str]) -> str:
+    """A sum checksum's value: the sum of `terms` in its width, inverted and masked as it says."""
     full = (1 << checksum.width) - 1
-    total = f"({' + '.join([f'{partial:#x}', *terms])}) & {full:#x}"
+    total = f"({' + '.join(terms)}) & {full:#x}" if len(terms) > 1 else f"{terms[0]} & {full:#x}"
     if checksum.inverted:
         total = f"({total}) ^ {full:#x}"
     if checksum.mask is not None and checksum.mask != full:

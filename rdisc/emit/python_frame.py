@@ -65,13 +65,14 @@ def whole_frame(encoding: m.Pack | m.Format | None, written: lowering.Written) -
     return WholeFrame(f"{layout.order}{head}{layout.codes}{check}{tail}", partial, layout.slots)
 
 
-def byte_sum(name: str, slot: m.Slot) -> str:
-    """The sum of the bytes the struct code of `slot` packs `name`'s value into (an integer the
-    code takes: a larger one fails the pack), as Python text."""
+def byte_terms(name: str, slot: m.Slot) -> list[str]:
+    """The bytes the struct code of `slot` packs `name`'s value into, as Python terms to sum
+    (for an integer the code takes: a larger one fails the pack): `goal`, or `(goal & 0xff)`
+    and `(goal >> 8)`."""
     size = struct.calcsize(f"<{slot.code}")
     signed = slot.code.islower()
     terms = [name if size == 1 and not signed else f"({name} & 0xff)"]
     for byte in range(1, size):
         last = byte == size - 1 and not signed
         terms.append(f"({name} >> {8 * byte})" if last else f"({name} >> {8 * byte} & 0xff)")
-    return " + ".join(terms)
+    return terms

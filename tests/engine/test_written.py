@@ -41,6 +41,8 @@ frame crc(address: int) {
     terminator "\\r\\n"
 }
 frame xored { header "\\x02"  length "B" = payload  payload  checksum "xor" "B" }
+frame wide { header "\\xAB"  length "B" = payload  payload  checksum "sum" ">H" }
+frame little { header "\\xAC"  payload  checksum "sum" "<H" }
 
 connection link: serial { baud 115200 }
 
@@ -52,9 +54,11 @@ primitive scaled(x: int) on link pack ">BH" (1, x * 3 + 1)
 primitive moded(x: int in 0..9) on link frame summed(1) pack "<BBB" (4, mode, x)
 primitive nothing() on link frame summed(2) pack "B" (6)
 primitive rounded(v: float) on link pack ">Bh" (2, round(v * 1000 + 0.5))
+primitive signed(a: int, b: int in -100..100) on link frame wide pack ">hbIq" (a, b, 70000, a * 3)
+primitive mixed(a: int) on link frame little pack ">H" (a)
 """
 
-NAMES = ("goto", "drive", "speed", "flag", "scaled", "moded", "nothing", "rounded")
+NAMES = ("goto", "drive", "speed", "flag", "scaled", "moded", "nothing", "rounded", "signed", "mixed")
 
 
 @functools.cache
@@ -156,6 +160,11 @@ def test_the_lowering_folds_the_frame_into_constant_bytes() -> None:
     # A value from the state is read once, for the pack and for the sum.
     assert "value_2 = state[\"mode\"]" in text
     assert "checksum = ((0x9 + value_2 + x) & 0xff) ^ 0xff" in text  # ID 1, length 4, the code 4
+    # Signed and wide codes summed byte by byte (70000 folded in), a 16-bit sum in the payload's order;
+    # a checksum in another byte order than the payload's: the payload packed, then summed.
+    assert '_PACK_SIGNED = struct.Struct(">2shbIqH").pack' in text
+    assert "+ (a >> 8 & 0xff)\n" in text and "+ (value_4 >> 56 & 0xff)\n" in text
+    assert 'return b"\\xac" + payload + _PACK_MIXED_CHECKSUM((0x0 + sum(payload)) & 0xffff)' in text
     assert "request=_p_goto_request," in text
     # round() of float arithmetic in Python's operators: a result too large for a float is an
     # infinity, which round() refuses, so the general way then says what is wrong.
