@@ -29,8 +29,9 @@ from types import ModuleType
 from rdisc import engine
 from rdisc import lower as lowering
 from rdisc.emit import python_support as support
-from rdisc.emit.python_expr import Chain, Compiler, Paren, Py, lines, literal, quoted, table_name
+from rdisc.emit.python_expr import Chain, Compiler, Paren, Py, binary, lines, literal, quoted, table_name
 from rdisc.emit.python_expr import call as function_call
+from rdisc.emit.python_frame import WholeFrame, byte_terms, whole_frame
 from rdisc.emit.writer import Writer, printable
 from rdisc.engine import carry
 from rdisc.lower import lower
@@ -219,6 +220,7 @@ class _Driver:
             for name in names
         }
         self.names: dict[object, str] = {}  # each plan and Code written: the name it has in the module
+        self.one_step: dict[tuple[str, str], str] = {}  # ("input" or "primitive", name): its one-step function
         self.input_methods: dict[str, str] = {}
         for name in model.inputs:
             self.input_methods[name] = _escape(name, _robot_members() | set(self.input_methods.values()))
@@ -370,6 +372,8 @@ class _Driver:
             plan = device.inputs[i.name]
             self.code(w, f"_in_{i.name}", plan.args)
             request = {"request": self.request(w, i, plan)} if plan.request else {}
+            if request:
+                self.one_step["input", i.name] = request["request"]
             w.blank(2)
             self.constant(w, self.plan["input", i.name], plan, request)
         for c in model.connections.values():
@@ -514,8 +518,7 @@ class _Driver:
                     targets = [inner[prm.name] if prm.name in used else "_" for prm in iface_params]
                     bound = [self.exprs.bound(e, prm.type, local) for (_, e, _), prm in zip(plan.args.items, iface_params)]
                     _items(w, f"{', '.join(targets)} = ", "(", bound, ")" if len(bound) > 1 else "")
-                packed = [self.exprs.bound(e, t, inner) if t is not None else self.exprs.expr(e, inner)
-                          for _, e, t in call.args.items]
+                packed = [self.exprs.packed(e, t, inner) for _, e, t in call.args.items]
                 _items(w, "return ", f"{pack}(", packed, ")")
             with w.block("except Exception:  # noqa: BLE001 - the general way says what is wrong"):
                 w.line("return None")
@@ -563,7 +566,10 @@ class _Driver:
                 texts.append(f"{case.value}: {name}" if case.last is None
                              else f"**dict.fromkeys({case.values()!r}, {name})")  # a range entry
             if entry.request is not None:
-                self.constant(w, name, entry, {"request": self.written(w, prim, entry.request)})
+                function = self.written(w, prim, entry.request)
+                if case is None:
+                    self.one_step["primitive", prim.name] = function
+                self.constant(w, name, entry, {"request": function})
                 continue
             self.constant(w, name, entry)
         if table is not None:
@@ -589,27 +595,21 @@ class _Driver:
                 w.line(f"return None if args else {quoted(written.constant)}")
             w.blank(2)
             return function
+        local = _params([(prm.name, prm.type) for prm in written.params])
+        whole = whole_frame(prim.encoding, written)
         pack = _constant_name(f"PACK_{prim.name}", self.taken)
-        w.line(f"{pack} = struct.Struct({quoted(written.format)}).pack")
+        w.line(f"{pack} = struct.Struct({quoted(whole.format if whole else written.format)}).pack")
         checked = ""
-        if written.checksum is not None:
+        if whole is None and written.checksum is not None:
             check = _constant_name(f"PACK_{prim.name}_CHECKSUM", self.taken)
             w.line(f"{check} = struct.Struct({quoted(written.check_format)}).pack")
-            checksum: engine.Checksum = written.checksum.value
             if written.partial is not None:  # a sum: the constant bytes' summed here
-                full = (1 << checksum.width) - 1
-                total = f"({written.partial:#x} + sum(payload)) & {full:#x}"
-                if checksum.inverted:
-                    total = f"({total}) ^ {full:#x}"
-                if checksum.mask is not None and checksum.mask != full:
-                    total = f"({total}) & {checksum.mask:#x}"
-                checked = f"{check}({total})"
+                checked = f"{check}({_summed(written.checksum.value, [f'{written.partial:#x}', 'sum(payload)'])})"
             else:
                 function_of = _constant_name(f"CHECKSUM_{prim.name}", self.taken)
                 w.line(f"{function_of} = {self.text(written.checksum)}")
                 covered = f"{quoted(written.covered)} + payload" if written.covered else "payload"
                 checked = f"{check}({function_of}({covered}))"
-        local = _params([(prm.name, prm.type) for prm in written.params])
         w.blank(2)
         with w.block(f"def {function}(state: StateValues, args: Args) -> bytes | None:"):
             w.line(f'"""{prim.name}, only written: its request in one step (None: the general way decides)."""')
@@ -633,10 +633,12 @@ class _Driver:
                         f"if {test}:" for test in tests]:
                     with w.block(test):  # one test, or one a parameter
                         w.line("return None")
-                packed = [self.exprs.bound(e, t, local) if t is not None else self.exprs.expr(e, local)
-                          for _, e, t in written.values.items]
-                framed = bool(written.head or checked or written.tail)
-                _items(w, "payload = " if framed else "return ", f"{pack}(", packed, ")")
+                packed = [self.exprs.packed(e, t, local) for _, e, t in written.values.items]
+                framed = whole is None and bool(written.head or checked or written.tail)
+                if whole is not None:
+                    self.whole(w, pack, written, whole, packed, local)
+                else:
+                    _items(w, "payload = " if framed else "return ", f"{pack}(", packed, ")")
             with w.block("except Exception:  # noqa: BLE001 - the general way says what is wrong"):
                 w.line("return None")
             if framed:
@@ -645,6 +647,38 @@ class _Driver:
                 w.line(f"return {' + '.join(pieces)}")
         w.blank(2)
         return function
+
+    def whole(self, w: Writer, pack: str, written: lowering.Written, whole: WholeFrame, packed: list[Py],
+              local: Mapping[str, str]) -> None:
+        """`return PACK(head, values..., checksum, tail)`: a sum checksum of the values' bytes, each
+        value computed once (a name where it is more than a name or a constant)."""
+        sums: list[Py] = []
+        taken = set(local.values()) | _body_names()
+        if whole.partial is not None:
+            for n, ((_, e, _), value, slot) in enumerate(zip(written.values.items, packed, whole.slots), 1):
+                if isinstance(e, m.Const):
+                    continue  # summed already
+                if not value.text.isidentifier():
+                    name = _escape(f"value_{n}", taken)
+                    taken.add(name)
+                    _emit(w, f"{name} = ", value)
+                    packed[n - 1] = value = Py(name, p.ATOM)
+                sums += [Py(term, p.ATOM) for term in byte_terms(value.text, slot)]
+        values = [Py(quoted(written.head), p.ATOM)] if written.head else []
+        values += packed
+        if whole.partial is not None and written.checksum is not None:
+            checksum = _escape("checksum", taken)
+            terms = [Py(f"{whole.partial:#x}", p.ATOM), *sums]
+            total = _summed(written.checksum.value, [term.text for term in terms])
+            if len(f"{checksum} = {total}") > w.width():  # the sum first, a term a line
+                summed = _escape("summed", taken | {checksum})
+                _emit(w, f"{summed} = ", functools.reduce(lambda a, b: binary("+", a, b), terms))
+                total = _summed(written.checksum.value, [summed])
+            w.line(f"{checksum} = {total}")
+            values.append(Py(checksum, p.ATOM))
+        if written.tail:
+            values.append(Py(quoted(written.tail), p.ATOM))
+        _items(w, "return ", f"{pack}(", values, ")")
 
     def interface(self, w: Writer, iface: m.Interface, plan: lowering.Interface) -> None:
         self.comment(w, iface.span, f"interface {iface.name}" + (" (periodic)" if iface.periodic else ""))
@@ -705,7 +739,7 @@ class _Driver:
                     taken.add(method)
                     w.blank(1)
                     if kind == "input":
-                        self.input_method(w, model.inputs[name], method, "self._robot._input", keywords=True)
+                        self.input_method(w, model.inputs[name], method, "self._robot", keywords=True)
                     else:
                         self.call_method(w, kind, name, method)
         w.blank(2)
@@ -735,7 +769,7 @@ class _Driver:
                     w.line(f"return {body}")
             for i in model.inputs.values():
                 w.blank(1)
-                self.input_method(w, i, self.input_methods[i.name], "self._input", keywords=False)
+                self.input_method(w, i, self.input_methods[i.name], "self", keywords=False)
             w.blank(1)
             with w.block(f"def __enter__(self) -> {cls}:  # noqa: PYI034 - typing.Self needs Python 3.11"):
                 w.line("return self")
@@ -759,7 +793,8 @@ class _Driver:
             w.blank(1)
             w.line("return command_line(run)  # SIGINT and SIGTERM handled from here: 130 or 143, no traceback")
 
-    def input_method(self, w: Writer, i: m.DomainInput, method: str, runs: str, keywords: bool) -> None:
+    def input_method(self, w: Writer, i: m.DomainInput, method: str, robot: str, keywords: bool) -> None:
+        """The typed method of an input, on the robot (`robot` "self") or on its inputs' object."""
         adapter = self.model.adapters[i.adapter]
         local = _params([(f.name, f.type) for f in adapter.fields], frozenset({"self"}))
         star = ", *" if keywords and adapter.fields else ""
@@ -775,7 +810,7 @@ class _Driver:
                     doc.append(f"    {local[f.name]}{unit}{about}")
             w.line(_docstring("\n".join(doc)))
             values = ", ".join(local[f.name] for f in adapter.fields)
-            w.line(f"{runs}({self.plan['input', i.name]}, [{values}])")
+            self.runs(w, "input", i.name, robot, values, set(local.values()))
 
     def call_method(self, w: Writer, kind: str, name: str, method: str) -> None:
         element = self.model.interfaces[name] if kind == "interface" else self.model.primitives[name]
@@ -793,7 +828,25 @@ class _Driver:
                 doc += ["", "Units (as the device takes them):", *units]
             w.line(_docstring("\n".join(doc)))
             values = ", ".join(local[prm.name] for prm in element.params)
-            w.line(f"self._robot._call_{kind}({self.plan[kind, name]}, [{values}])")
+            self.runs(w, kind, name, "self._robot", values, set(local.values()))
+
+    def runs(self, w: Writer, kind: str, name: str, robot: str, values: str, params: set[str]) -> None:
+        """A typed method's body: an input or primitive with a one-step function calls it and hands
+        the robot its request (`Robot._send`: None, and the general way says what is wrong);
+        else the robot runs the element the general way."""
+        plan, function = self.plan[kind, name], self.one_step.get((kind, name))
+        if function is None:
+            w.line(f"{robot}._{'input' if kind == 'input' else f'call_{kind}'}({plan}, [{values}])")
+            return
+        listed = _escape("values", params) if values else "[]"  # (an empty list twice: mypy infers no type of [])
+        if robot != "self":
+            local = _escape("robot", params | {listed})
+            w.line(f"{local}, {listed} = {robot}, [{values}]" if values else f"{local} = {robot}")
+            robot = local
+        elif values:
+            w.line(f"{listed} = [{values}]")
+        sends = "_send_input" if kind == "input" else "_send"
+        w.line(f"{robot}.{sends}({plan}, {function}({robot}._state, {listed}), {listed})")
 
     def connect_function(self, w: Writer) -> None:
         own = ("port", "timeout", "threads", "on_output", "on_error", "on_io", "sim", "robot", self.cls)
@@ -903,6 +956,17 @@ def _case(case: m.ReplyCase) -> str:
     """A reply table entry's value in names: 7, or m7 for -7; 224_239 for a range."""
     first, last = (f"m{-v}" if v < 0 else str(v) for v in (case.value, case.value if case.last is None else case.last))
     return first if case.last is None else f"{first}_{last}"
+
+
+def _summed(checksum: engine.Checksum, terms: list[str]) -> str:
+    """A sum checksum's value: the sum of `terms` in its width, inverted and masked as it says."""
+    full = (1 << checksum.width) - 1
+    total = f"({' + '.join(terms)}) & {full:#x}" if len(terms) > 1 else f"{terms[0]} & {full:#x}"
+    if checksum.inverted:
+        total = f"({total}) ^ {full:#x}"
+    if checksum.mask is not None and checksum.mask != full:
+        total = f"({total}) & {checksum.mask:#x}"
+    return total
 
 
 def _items(w: Writer, prefix: str, opening: str, values: list[Py], closing: str) -> None:

@@ -244,6 +244,27 @@ class Compiler:
             return call("float", [py])
         return py
 
+    def packed(self, e: m.Expr, declared: m.AnyType | None, names: Mapping[str, str]) -> Py:
+        """`e` as a value a one-step request packs (bound to `declared`, if given), where any error
+        sends the call the general way, which says what is wrong: `round(x)` and `int(x)` of float
+        arithmetic take Python's own `+`, `-` and `*`. Where the operations would refuse a result
+        too large for a float, Python's gives an infinity or a NaN, which every later `+`, `-`
+        and `*` keeps, and which round() and int() refuse: an error either way."""
+        match e:
+            case m.FuncCall(func="round" | "int", args=(arg,)) if arg.type is Type.FLOAT:
+                return call(e.func, [self.arithmetic(arg, names)])
+        return self.expr(e, names) if declared is None else self.bound(e, declared, names)
+
+    def arithmetic(self, e: m.Expr, names: Mapping[str, str]) -> Py:
+        """Float `+`, `-`, `*` and negation with Python's operators (see `packed`), the rest as `expr`."""
+        match e:
+            case m.BinaryOp(op="+" | "-" | "*" as op, left=left, right=right, type=Type.FLOAT) \
+                    if left.type in _NUMBERS and right.type in _NUMBERS:
+                return binary(op, self.arithmetic(left, names), self.arithmetic(right, names))
+            case m.UnaryOp(op="-", operand=operand, type=Type.FLOAT):
+                return unary("-", self.arithmetic(operand, names))
+        return self.expr(e, names)
+
     def binary(self, e: m.BinaryOp, names: Mapping[str, str]) -> Py:
         a, b = self.expr(e.left, names), self.expr(e.right, names)
         operation = binary_operation(e)
@@ -253,6 +274,9 @@ class Compiler:
             # A bool against True or False: `is`, as linters want it (both sides are bools).
             return binary(e.op, a, b, "is" if e.op == "==" else "is not")
         return binary(e.op, a, b)
+
+
+_NUMBERS = (Type.INT, Type.FLOAT)
 
 
 def _bool_constant(e: m.Expr) -> bool:

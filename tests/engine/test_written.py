@@ -41,6 +41,8 @@ frame crc(address: int) {
     terminator "\\r\\n"
 }
 frame xored { header "\\x02"  length "B" = payload  payload  checksum "xor" "B" }
+frame wide { header "\\xAB"  length "B" = payload  payload  checksum "sum" ">H" }
+frame little { header "\\xAC"  payload  checksum "sum" "<H" }
 
 connection link: serial { baud 115200 }
 
@@ -51,9 +53,12 @@ primitive flag(on: bool, level: int in 0..200) on link frame xored pack "<B?B" (
 primitive scaled(x: int) on link pack ">BH" (1, x * 3 + 1)
 primitive moded(x: int in 0..9) on link frame summed(1) pack "<BBB" (4, mode, x)
 primitive nothing() on link frame summed(2) pack "B" (6)
+primitive rounded(v: float) on link pack ">Bh" (2, round(v * 1000 + 0.5))
+primitive signed(a: int, b: int in -100..100) on link frame wide pack ">hbIq" (a, b, 70000, a * 3)
+primitive mixed(a: int) on link frame little pack ">H" (a)
 """
 
-NAMES = ("goto", "drive", "speed", "flag", "scaled", "moded", "nothing")
+NAMES = ("goto", "drive", "speed", "flag", "scaled", "moded", "nothing", "rounded", "signed", "mixed")
 
 
 @functools.cache
@@ -148,9 +153,58 @@ def test_the_lowering_folds_the_frame_into_constant_bytes() -> None:
     assert drive is not None and (drive.head, drive.checksum) == (b"", None)
     text = to_python(compilation.model, "written.rdis")
     assert "def _p_goto_request(state: StateValues, args: Args) -> bytes | None:" in text
-    assert 'return b"\\xff\\xff\\xfe\\x05" + payload + _PACK_GOTO_CHECKSUM(((0x103 + sum(payload)) & 0xff) ^ 0xff)' \
-        in text
+    # One struct packs the whole frame, the checksum summed from the values (3 + 30 folded in).
+    assert '_PACK_GOTO = struct.Struct("<4sBBHB").pack' in text
+    assert "checksum = ((0x124 + (goal & 0xff) + (goal >> 8)) & 0xff) ^ 0xff" in text
+    assert 'return _PACK_GOTO(b"\\xff\\xff\\xfe\\x05", 3, 30, goal, checksum)' in text
+    # A value from the state is read once, for the pack and for the sum.
+    assert "value_2 = state[\"mode\"]" in text
+    assert "checksum = ((0x9 + value_2 + x) & 0xff) ^ 0xff" in text  # ID 1, length 4, the code 4
+    # Signed and wide codes summed byte by byte (70000 folded in), a 16-bit sum in the payload's order;
+    # a checksum in another byte order than the payload's: the payload packed, then summed.
+    assert '_PACK_SIGNED = struct.Struct(">2shbIqH").pack' in text
+    assert "+ (a >> 8 & 0xff)\n" in text and "+ (value_4 >> 56 & 0xff)\n" in text
+    assert 'return b"\\xac" + payload + _PACK_MIXED_CHECKSUM((0x0 + sum(payload)) & 0xffff)' in text
     assert "request=_p_goto_request," in text
+    # round() of float arithmetic in Python's operators: a result too large for a float is an
+    # infinity, which round() refuses, so the general way then says what is wrong.
+    assert "return _PACK_ROUNDED(2, round(v * 1000 + 0.5))" in text
+
+
+def test_a_drivers_typed_method_hands_its_one_step_request_to_the_write() -> None:
+    robot, port = _robots()[1]
+    general: list[str] = []
+    robot._call_primitive = lambda plan, values: general.append(plan.name)  # the general way, counted (this instance's)
+    try:
+        before = len(port.written)
+        robot.primitives.goto(512)
+        robot.primitives.moded(3)
+        robot.primitives.nothing()
+        assert bytes(port.written[before:]).hex(" ") == "ff ff fe 05 03 1e 00 02 d9 ff ff 01 04 04 02 03 f1 ff ff 02 02 06 f5"
+        assert general == []
+        robot.primitives.goto(5000)  # outside its range: the general way says what is wrong
+        robot.primitives.rounded(1e306)  # too large for a float once scaled: likewise
+        assert general == ["goto", "rounded"]
+    finally:
+        del robot._call_primitive
+
+
+def test_a_drivers_typed_input_hands_its_one_step_request_to_the_write(tmp_path: Path) -> None:
+    source = Path(__file__).parent.parent / "runtime" / "data" / "fast_create.rdis"
+    port = ScriptedPort()
+    robot = import_driver(source, tmp_path, "fast_create_typed").connect({"btserial": port}, threads=False)
+    general: list[list[Any]] = []
+    robot._input_in_full = lambda plan, values: general.append(values)  # the general way, counted
+    del port.written[:]  # the startup hook's
+    try:
+        robot.inputs.set_velocity(linear=0.2, angular=0.0)
+        robot.set_velocity(linear=-0.2, angular=-0.4)
+        assert bytes(port.written).hex(" ") == "89 00 c8 7f ff 89 ff 38 01 f4"  # thesis Table 4.3
+        assert general == []
+        robot.inputs.set_velocity(linear=0, angular=0.0)  # an int: the general way makes it a float
+        assert general == [[0, 0.0]]
+    finally:
+        del robot._input_in_full
 
 
 def test_a_typed_method_takes_the_one_step_first_and_is_made_once() -> None:

@@ -3660,6 +3660,22 @@ class Robot(Exchange):
             raise self._not_running()
         self._primitive(plan, _accepted(f"primitive {plan.name}", plan.params, values))
 
+    def _send(self, plan: Primitive, request: bytes | None, values: Args) -> None:
+        """A typed method's primitive, its request made by the driver's one-step function
+        (`plan.request`; None: values it does not take): written at once on ports, else the
+        general way, which says what is wrong (every command's path: one call to the write)."""
+        if request is not None and self._direct:
+            self._write(plan, request)
+        else:
+            self._call_primitive(plan, values)
+
+    def _send_input(self, plan: Input, request: bytes | None, values: Args) -> None:
+        """`_send` of a typed method's input: its request in one step (`plan.request`), else the general way."""
+        if request is not None and self._direct and plan.primitive is not None:
+            self._write(plan.primitive, request)
+        else:
+            self._input_in_full(plan, values)
+
     def _hook(self, hook: Hook) -> None:
         try:
             args = hook.args(self._state)
@@ -4757,18 +4773,21 @@ class IrobotCreatePrimitives:
 
     def start(self) -> None:
         """Start (opcode 128): opens the OI; the robot enters passive mode."""
-        self._robot._call_primitive(_P_START, [])
+        robot = self._robot
+        robot._send(_P_START, _p_start_request(robot._state, []), [])
 
     def full(self) -> None:
         """Full (opcode 132): full control of the actuators, safety features off."""
-        self._robot._call_primitive(_P_FULL, [])
+        robot = self._robot
+        robot._send(_P_FULL, _p_full_request(robot._state, []), [])
 
     def drive(self, velocity: int, radius: int) -> None:
         """Drive (opcode 137): velocity in mm/s (-500 to 500) and turn radius in mm
         (-2000 to 2000). Special radii: 32767 drives straight, -1 turns in place
         clockwise, 1 counter-clockwise.
         """
-        self._robot._call_primitive(_P_DRIVE, [velocity, radius])
+        robot, values = self._robot, [velocity, radius]
+        robot._send(_P_DRIVE, _p_drive_request(robot._state, values), values)
 
     def bumpers(self) -> None:
         """Sensors (opcode 142) for packet 7, "Bumps and Wheel Drops": a one-byte reply."""

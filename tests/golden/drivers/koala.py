@@ -3660,6 +3660,22 @@ class Robot(Exchange):
             raise self._not_running()
         self._primitive(plan, _accepted(f"primitive {plan.name}", plan.params, values))
 
+    def _send(self, plan: Primitive, request: bytes | None, values: Args) -> None:
+        """A typed method's primitive, its request made by the driver's one-step function
+        (`plan.request`; None: values it does not take): written at once on ports, else the
+        general way, which says what is wrong (every command's path: one call to the write)."""
+        if request is not None and self._direct:
+            self._write(plan, request)
+        else:
+            self._call_primitive(plan, values)
+
+    def _send_input(self, plan: Input, request: bytes | None, values: Args) -> None:
+        """`_send` of a typed method's input: its request in one step (`plan.request`), else the general way."""
+        if request is not None and self._direct and plan.primitive is not None:
+            self._write(plan.primitive, request)
+        else:
+            self._input_in_full(plan, values)
+
     def _hook(self, hook: Hook) -> None:
         try:
             args = hook.args(self._state)
