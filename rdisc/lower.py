@@ -118,6 +118,7 @@ class Written:
     head: bytes = b""
     checksum: Construct[engine.Checksum] | None = None
     check_format: str = ""  # how the checksum is packed
+    check_size: int = 0  # the bytes it packs into
     covered: bytes = b""
     partial: int | None = None  # a "sum" checksum: the sum of `covered`, to which the payload's is added
     tail: bytes = b""
@@ -628,7 +629,7 @@ def _folded(written: Written, use: FrameUse, size: int) -> Written | None:
     covered = head[sum(side.sizes[:check.first]):]
     partial = sum(covered) if check.checksum.kind == "sum" else None
     return dataclasses.replace(written, head=head, checksum=construct, check_format=check.struct.format,
-                               covered=covered, partial=partial, tail=tail)
+                               check_size=check.struct.size, covered=covered, partial=partial, tail=tail)
 
 
 def _one(decoder: Construct[engine.Unpack] | Construct[engine.Match] | None, use: FrameUse | None, skip: bool,

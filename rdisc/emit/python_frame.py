@@ -51,7 +51,7 @@ def whole_frame(encoding: m.Pack | m.Format | None, written: lowering.Written) -
             return None
         check = written.check_format.lstrip("<>!=@")
         prefix = written.check_format[: len(written.check_format) - len(check)]
-        if check not in _INTEGER_CODES or (struct.calcsize(f"<{check}") > 1 and _STANDARD.get(prefix) != order):
+        if check not in _INTEGER_CODES or (written.check_size > 1 and _STANDARD.get(prefix) != order):
             return None
         partial = written.partial
         for (_, value, _), slot in zip(written.values.items, layout.slots):
@@ -69,7 +69,7 @@ def byte_terms(name: str, slot: m.Slot) -> list[str]:
     """The bytes the struct code of `slot` packs `name`'s value into, as Python terms to sum
     (for an integer the code takes: a larger one fails the pack): `goal`, or `(goal & 0xff)`
     and `(goal >> 8)`."""
-    size = struct.calcsize(f"<{slot.code}")
+    size = slot.size
     signed = slot.code.islower()
     terms = [name if size == 1 and not signed else f"({name} & 0xff)"]
     for byte in range(1, size):
