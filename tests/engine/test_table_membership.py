@@ -11,6 +11,7 @@ import pytest
 
 from rdisc.compile import compile_path
 from rdisc.diagnostics import Diagnostics
+from rdisc.json_import import read
 from rdisc.syntax.parse import parse
 from rdisc.syntax.printer import print_module
 from tests.engine.test_one_engine import ScriptedPort, implementation_of, through_json
@@ -99,5 +100,7 @@ def test_it_goes_through_json_and_the_printer(tmp_path: Path) -> None:
     printed = print_module(module)
     assert "known = out[0] in HEALTH" in printed and 'const NAMED = HEALTH.get(7, "unknown")' in printed
     assert module == parse("t.rdis", printed, Diagnostics())
+    imported = read("health.json", built, Diagnostics())  # `rdisc import`: the JSON back as a description
+    assert imported is not None and 'status = HEALTH.get(out[0], "unknown")' in print_module(imported)
     assert print_module(parse("t.rdis", "const A = (1 in T) == (2 in T)\n", Diagnostics())) == \
         "const A = (1 in T) == (2 in T)\n"
