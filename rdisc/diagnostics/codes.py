@@ -107,8 +107,9 @@ bit a[i] set for each element of an int array), unhex (hex digits as bytes), upp
 (a string or bytes in upper case), int_le and int_be (an int from up to 8 bytes),
 f32le, f32be, f64le and f64be (a number as the bytes of a float) with from_f32le,
 from_f32be, from_f64le and from_f64be (those bytes as a float), nibbles
-(`nibbles(v, 4)`: an int spread 4 bits a byte) and from_nibbles (back). There is no
-way to reach Python's own functions, attributes or modules."""),
+(`nibbles(v, 4)`: an int spread 4 bits a byte) and from_nibbles (back). A lookup
+table has one method, `TABLE.get(key, default)`. There is no way to reach Python's
+own functions, attributes or modules."""),
     ("E107", "robot-declaration", """
 A description has exactly one `robot` declaration, in its main file. Imported
 files hold reusable declarations (adapters, primitives, ...) but no robot."""),
@@ -300,7 +301,9 @@ need integers, `and`/`or`/`not` and the condition of `x if c else y` need
 booleans, `hex`, `ascii`, `pack7`, `unpack7`, `from_nibbles` and `from_f32le` (and
 the other floats from bytes) take bytes, `encode` and `unhex` a string, `upper` a
 string or bytes, `f32le` (and the others) a number, `int_le` and `int_be` bytes and
-an optional `True` for signed, `nibbles` an int and a count of nibbles.
+an optional `True` for signed, `nibbles` an int and a count of nibbles; `key in
+TABLE` and `TABLE.get(key, default)` need a lookup table (`const HEALTH = { 0: "ok" }`),
+not an array or a name of anything else.
 Wrong: `b"\\x01" + "a"`. Right: `b"\\x01" + encode("a")`."""),
     ("E405", "evaluation-error", """
 A constant expression cannot be evaluated: a division by zero, a power, shift or

@@ -455,8 +455,12 @@ def _expr(e: m.Expr) -> p.Printed:
             return p.binary(op, _expr(left), _expr(right))
         case m.IfElse(cond, then, orelse):
             return p.conditional(_expr(then), _expr(cond), _expr(orelse))
+        case m.Lookup(table=table, key=key, default=default) if default is not None:
+            return p.call(f"{table}.get", [_expr(key), _expr(default)])
         case m.Lookup(table=table, key=key):
             return p.Printed(f"{table}[{_expr(key).text}]", p.ATOM)
+        case m.InTable(table=table, key=key):
+            return p.binary("in", _expr(key), p.Printed(table, p.ATOM))
         case m.FuncCall(func, args):
             return p.call(func, [_expr(a) for a in args])
         case m.ArrayValue(items):

@@ -212,6 +212,11 @@ class Compiler:
                 return conditional(self.expr(then, names), self.expr(cond, names), self.expr(orelse, names))
             case m.FuncCall(args=args):
                 return call(call_operation(e), [self.expr(a, names) for a in args])
+            case m.Lookup(table=table, key=key, default=default) if default is not None:
+                return Py(f"{table_name(table)}.get({self.expr(key, names).text}, {self.expr(default, names).text})",
+                          p.ATOM)
+            case m.InTable(table=table, key=key):
+                return binary("in", self.expr(key, names), Py(table_name(table), p.ATOM))
             case m.Lookup(table=table, key=key):
                 return Py(f"lookup({quoted(table)}, {table_name(table)}, {self.expr(key, names).text})", p.ATOM)
             case m.ArrayValue(items=items, type=type_):

@@ -21,7 +21,7 @@ from dataclasses import replace
 from typing import Any
 
 from rdisc.engine import operations
-from rdisc.engine.operations import BINARY, FUNCTIONS, UNARY, EvalError, element, lookup, replaced
+from rdisc.engine.operations import BINARY, FUNCTIONS, UNARY, EvalError, element, lookup, lookup_or, replaced
 from rdisc.semantics import model as m
 from rdisc.semantics.model import coerce
 from rdisc.semantics.operators import binary_operation, call_operation
@@ -50,8 +50,12 @@ def evaluate(expr: m.Expr, names: Mapping[str, m.Value], reply: Sequence[m.Value
             return evaluate(then if evaluate(cond, names, reply) else orelse, names, reply)
         case m.FuncCall(func=func, args=args):
             return FUNCTIONS[func](*(evaluate(a, names, reply) for a in args))  # type: ignore[no-any-return]
+        case m.Lookup(entries=entries, key=key, default=default) if default is not None:
+            return lookup_or(dict(entries), evaluate(key, names, reply), evaluate(default, names, reply))  # type: ignore[no-any-return]
         case m.Lookup(table=table, entries=entries, key=key):
             return lookup(table, dict(entries), evaluate(key, names, reply))  # type: ignore[no-any-return]
+        case m.InTable(keys=keys, key=key):
+            return evaluate(key, names, reply) in keys
         case m.ArrayValue(items=items, type=type_):
             return tuple(coerce(evaluate(i, names, reply), type_.element) for i in items)
         case m.Element(array=array, index=at):
@@ -99,9 +103,15 @@ def prepare(expr: m.Expr, slots: Mapping[str, int] | None = None) -> Prepared:
             return _if_else(cond, then, orelse, slots)
         case m.FuncCall():
             return _call(expr, slots)
+        case m.Lookup(entries=entries, key=key, default=default) if default is not None:
+            found, k, otherwise = dict(entries), prepare(key, slots), prepare(default, slots)
+            return lambda s, loc, r: lookup_or(found, k(s, loc, r), otherwise(s, loc, r))
         case m.Lookup(table=table, entries=entries, key=key):
             found, k = dict(entries), prepare(key, slots)
             return lambda s, loc, r: lookup(table, found, k(s, loc, r))
+        case m.InTable(keys=keys, key=key):
+            present, k = frozenset(keys), prepare(key, slots)
+            return lambda s, loc, r: k(s, loc, r) in present
         case m.ArrayValue(items=items, type=type_):
             floats = type_.element is m.Type.FLOAT
             parts = [prepare(i, slots) for i in items]

@@ -155,10 +155,23 @@ class Table:
 
 @dataclass(frozen=True, slots=True)
 class Lookup:
-    """`TABLE[key]`: the value a lookup table holds for the key; a key it lacks is an error."""
+    """`TABLE[key]`: the value a lookup table holds for the key; a key it lacks is an error,
+    unless a `default` is given (`TABLE.get(key, default)`)."""
 
     table: str
     entries: tuple[tuple[Value, Value], ...]
+    key: Expr
+    type: Type
+    span: Span | None = _span
+    default: Expr | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class InTable:
+    """`key in TABLE`: whether a lookup table has an entry for the key."""
+
+    table: str
+    keys: tuple[Value, ...]
     key: Expr
     type: Type
     span: Span | None = _span
@@ -218,7 +231,9 @@ def spread(args: tuple[Expr, ...]) -> tuple[Expr, ...]:
 def operands(e: Expr) -> tuple[Expr, ...]:
     """The expressions `e` is made of, one level down (none for a name, a constant, `out[i]`)."""
     match e:
-        case UnaryOp(operand=a) | Lookup(key=a):
+        case Lookup(key=a, default=b) if b is not None:
+            return (a, b)
+        case UnaryOp(operand=a) | Lookup(key=a) | InTable(key=a):
             return (a,)
         case BinaryOp(left=a, right=b) | Element(array=a, index=b):
             return (a, b)
@@ -237,7 +252,8 @@ def variables(e: Expr) -> Iterator[Var]:
         yield from variables(operand)
 
 
-Expr = Const | Var | ReplyValue | UnaryOp | BinaryOp | IfElse | FuncCall | Lookup | ArrayValue | Element | Replaced
+Expr = (Const | Var | ReplyValue | UnaryOp | BinaryOp | IfElse | FuncCall | Lookup | InTable | ArrayValue | Element
+        | Replaced)
 
 
 # ---- elements --------------------------------------------------------------------

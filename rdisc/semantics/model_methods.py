@@ -232,16 +232,25 @@ def _hash_Table(self: Any) -> int:
     return hash((self.name, self.key_type, self.value_type, self.entries, self.doc))
 
 
-def _init_Lookup(self: Any, table: Any, entries: Any, key: Any, type: Any, span: Any = DEFAULT) -> None:
+def _init_Lookup(
+    self: Any,
+    table: Any,
+    entries: Any,
+    key: Any,
+    type: Any,
+    span: Any = DEFAULT,
+    default: Any = DEFAULT,
+) -> None:
     _set(self, "table", table)
     _set(self, "entries", entries)
     _set(self, "key", key)
     _set(self, "type", type)
     _set(self, "span", span)
+    _set(self, "default", default)
 
 
 def _repr_Lookup(self: Any) -> str:
-    return f"{self.__class__.__qualname__}(table={self.table!r}, entries={self.entries!r}, key={self.key!r}, type={self.type!r})"
+    return f"{self.__class__.__qualname__}(table={self.table!r}, entries={self.entries!r}, key={self.key!r}, type={self.type!r}, default={self.default!r})"
 
 
 def _eq_Lookup(self: Any, other: Any) -> Any:
@@ -251,17 +260,51 @@ def _eq_Lookup(self: Any, other: Any) -> Any:
             self.entries,
             self.key,
             self.type,
+            self.default,
         ) == (
             other.table,
             other.entries,
+            other.key,
+            other.type,
+            other.default,
+        )
+    return NotImplemented
+
+
+def _hash_Lookup(self: Any) -> int:
+    return hash((self.table, self.entries, self.key, self.type, self.default))
+
+
+def _init_InTable(self: Any, table: Any, keys: Any, key: Any, type: Any, span: Any = DEFAULT) -> None:
+    _set(self, "table", table)
+    _set(self, "keys", keys)
+    _set(self, "key", key)
+    _set(self, "type", type)
+    _set(self, "span", span)
+
+
+def _repr_InTable(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(table={self.table!r}, keys={self.keys!r}, key={self.key!r}, type={self.type!r})"
+
+
+def _eq_InTable(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.table,
+            self.keys,
+            self.key,
+            self.type,
+        ) == (
+            other.table,
+            other.keys,
             other.key,
             other.type,
         )
     return NotImplemented
 
 
-def _hash_Lookup(self: Any) -> int:
-    return hash((self.table, self.entries, self.key, self.type))
+def _hash_InTable(self: Any) -> int:
+    return hash((self.table, self.keys, self.key, self.type))
 
 
 def _init_ArrayValue(self: Any, items: Any, type: Any, span: Any = DEFAULT) -> None:
@@ -2383,8 +2426,24 @@ WRITTEN: dict[str, Written] = {
             ("key", MISSING),
             ("type", MISSING),
             ("span", FieldSpec(None, MISSING, False, False)),
+            ("default", DEFAULT),
         ),
         {"__init__": _init_Lookup, "__repr__": _repr_Lookup, "__eq__": _eq_Lookup, "__hash__": _hash_Lookup},
+    ),
+    "InTable": Written(
+        (
+            ("table", MISSING),
+            ("keys", MISSING),
+            ("key", MISSING),
+            ("type", MISSING),
+            ("span", FieldSpec(None, MISSING, False, False)),
+        ),
+        {
+            "__init__": _init_InTable,
+            "__repr__": _repr_InTable,
+            "__eq__": _eq_InTable,
+            "__hash__": _hash_InTable,
+        },
     ),
     "ArrayValue": Written(
         (("items", MISSING), ("type", MISSING), ("span", FieldSpec(None, MISSING, False, False))),

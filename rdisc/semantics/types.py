@@ -10,9 +10,10 @@ from __future__ import annotations
 
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
+from functools import partial
 
 from rdisc.diagnostics import Diagnostics
-from rdisc.engine.operations import BINARY, FUNCTIONS, UNARY, EvalError, fits
+from rdisc.engine.operations import BINARY, FUNCTIONS, UNARY, EvalError, fits, lookup_or
 from rdisc.limits import MAX_ARRAY, MAX_INT
 from rdisc.semantics import model as m
 from rdisc.semantics.model import AnyType, Array, Scope, Type
@@ -163,6 +164,8 @@ class Typer:
                 return self._call(e, env)
             case ast.Member():
                 return self._member(e)
+            case ast.MethodCall():
+                return self._get(e, env)
         raise AssertionError(f"unknown expression node {e!r}")
 
     def const(self, value: m.Value, type_: AnyType, span: Span | None) -> m.Expr:
@@ -369,7 +372,74 @@ class Typer:
         self.diagnostics.report("E404", e.span, f"{need}, not {describe(t)}")
         return None
 
+    def _table_named(self, name: str, span: Span, env: Env, what: str) -> tuple[Type, AnyType, dict[m.Value, m.Value]] | None:
+        """The lookup table `name` (its key type, value type and entries) that `what` needs;
+        None, reported unless its own fault was, where there is no such table."""
+        if name in self.tables and name not in env.names:
+            return self.tables[name]
+        if name not in self.failed or name in env.names:
+            self.diagnostics.report("E404", span, f"{what} needs a lookup table, and `{name}` is not one",
+                                    help=suggest(name, self.tables) or "a lookup table is a constant such as "
+                                    "`const HEALTH = { 0: \"ok\", 1: \"hot\" }`")
+        return None
+
+    def _keyed(self, table: str, key_type: Type, key: m.Expr, span: Span) -> bool:
+        """Whether `key` is of the table's key type (reported where it is not)."""
+        if key.type is None or key.type is key_type:
+            return key.type is not None
+        self.diagnostics.report("E401", span, f"table `{table}` is keyed by {key_type.value}, but this is "
+                                f"{describe(key.type)}")
+        return False
+
+    def _membership(self, e: ast.BinOp, env: Env) -> m.Expr:
+        """`key in TABLE`: whether the table has an entry for the key (a bool)."""
+        key = self.expr(e.left, env)
+        name = e.right.name if isinstance(e.right, ast.Ref) else None
+        if name is None:
+            self.expr(e.right, env)
+            self.diagnostics.report("E404", e.right.span, "`in` needs a lookup table on its right",
+                                    help="a lookup table is a constant such as `const HEALTH = { 0: \"ok\" }`")
+            return m.InTable("", (), key, None, e.span)  # type: ignore[arg-type]
+        found = self._table_named(name, e.right.span, env, "`in`")
+        if found is None:
+            return m.InTable(name, (), key, None, e.span)  # type: ignore[arg-type]
+        key_type, _, entries = found
+        node = m.InTable(name, tuple(entries), key, Type.BOOL, e.span)
+        if not self._keyed(name, key_type, key, e.left.span):
+            return m.InTable(name, tuple(entries), key, None, e.span)  # type: ignore[arg-type]
+        return self._fold(node, (key,), lambda value: value in entries)
+
+    def _get(self, e: ast.MethodCall, env: Env) -> m.Expr:
+        """`TABLE.get(key, default)`: the table's value for the key, or the default where it has none."""
+        args = tuple(self.expr(a, env) for a in e.args)
+        unknown = m.Lookup(e.base.text, (), args[0] if args else m.Const(0, Type.INT), None, e.span)  # type: ignore[arg-type]
+        if e.method.text != "get":
+            self.diagnostics.report("E106", e.method.span, f"unknown method `{e.method.text}`",
+                                    help="a lookup table has one method: `TABLE.get(key, default)`")
+            return unknown
+        found = self._table_named(e.base.text, e.base.span, env, "`.get`")
+        if found is None:
+            return unknown
+        if len(args) != 2:
+            self.diagnostics.report("E201", e.span, f"`get` takes 2 arguments (a key and a default), but {len(args)} given")
+            return unknown
+        key_type, value_type, entries = found
+        key, default = args
+        if not self._keyed(e.base.text, key_type, key, e.args[0].span):
+            return unknown
+        if default.type is None:
+            return unknown
+        if unify(value_type, default.type) != value_type:
+            self.diagnostics.report("E401", e.args[1].span, f"the default of `{e.base.text}.get` is "
+                                    f"{describe(value_type)}, as the table's values are, not {describe(default.type)}")
+            return unknown
+        # A table's values may be arrays, which m.Lookup.type (a Type) does not say.
+        node = m.Lookup(e.base.text, tuple(entries.items()), key, value_type, e.span, default)  # type: ignore[arg-type]
+        return self._fold(node, (key, default), partial(lookup_or, entries))
+
     def _binary(self, e: ast.BinOp, env: Env) -> m.Expr:
+        if e.op == "in":
+            return self._membership(e, env)
         left = self.expr(e.left, env)
         right = self.expr(e.right, env)
         a, b = left.type, right.type

@@ -131,8 +131,18 @@ class Member:
     span: Span = _span
 
 
+@dataclass(frozen=True, slots=True)
+class MethodCall:
+    """`TABLE.get(key, default)`: a lookup table's value for a key, or the default."""
+
+    base: Ident
+    method: Ident
+    args: tuple[Expr, ...]
+    span: Span = _span
+
+
 Expr = (IntLit | FloatLit | StrLit | BytesLit | BoolLit | Ref | Index | ArrayLit | Unary | BinOp | Conditional
-        | CallExpr | Member)
+        | CallExpr | Member | MethodCall)
 
 
 # ---- pieces shared by declarations ------------------------------------------

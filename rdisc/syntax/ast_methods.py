@@ -289,6 +289,27 @@ def _hash_Member(self: Any) -> int:
     return hash((self.enum, self.member))
 
 
+def _init_MethodCall(self: Any, base: Any, method: Any, args: Any, span: Any = DEFAULT) -> None:
+    _set(self, "base", base)
+    _set(self, "method", method)
+    _set(self, "args", args)
+    _set(self, "span", span)
+
+
+def _repr_MethodCall(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(base={self.base!r}, method={self.method!r}, args={self.args!r})"
+
+
+def _eq_MethodCall(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.base, self.method, self.args) == (other.base, other.method, other.args)
+    return NotImplemented
+
+
+def _hash_MethodCall(self: Any) -> int:
+    return hash((self.base, self.method, self.args))
+
+
 def _init_ArrayOf(self: Any, element: Any, size: Any, span: Any = DEFAULT) -> None:
     _set(self, "element", element)
     _set(self, "size", size)
@@ -2320,6 +2341,20 @@ WRITTEN: dict[str, Written] = {
     "Member": Written(
         (("enum", MISSING), ("member", MISSING), ("span", FieldSpec(None, MISSING, False, False))),
         {"__init__": _init_Member, "__repr__": _repr_Member, "__eq__": _eq_Member, "__hash__": _hash_Member},
+    ),
+    "MethodCall": Written(
+        (
+            ("base", MISSING),
+            ("method", MISSING),
+            ("args", MISSING),
+            ("span", FieldSpec(None, MISSING, False, False)),
+        ),
+        {
+            "__init__": _init_MethodCall,
+            "__repr__": _repr_MethodCall,
+            "__eq__": _eq_MethodCall,
+            "__hash__": _hash_MethodCall,
+        },
     ),
     "ArrayOf": Written(
         (("element", MISSING), ("size", MISSING), ("span", FieldSpec(None, MISSING, False, False))),

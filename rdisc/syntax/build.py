@@ -678,6 +678,10 @@ def transformer_class() -> Callable[[Builder], Transformer[Token, list[ast.Decl]
             self.b.prefixed.pop(id(c[0]), None)
             return c[0]
 
+        def method_call(self, meta: Meta, c: list[Any]) -> ast.Expr:
+            return self.b.nested(ast.MethodCall(self.b.ident(c[0]), self.b.ident(c[1]), c[2] or (), self.b.span(meta)),
+                                 *(c[2] or ()))
+
         def call(self, meta: Meta, c: list[Any]) -> ast.Expr:
             return self.b.nested(ast.CallExpr(self.b.ident(c[0]), c[1] or (), self.b.span(meta)), *(c[1] or ()))
 

@@ -60,7 +60,7 @@ def expected_words(expected: set[str]) -> str:
         names -= _EXPRESSION_START | {"NAME", "LPAR", "LSQB", "ADD_OP"}  # `[`: an array
     if names & _OPERATORS:
         phrases.append("an operator")
-        names -= _OPERATORS
+        names -= _OPERATORS | {"IN"}  # `in` is one too where they are (alone it is `for`'s, and named)
     for name in sorted(names):
         word = _phrase(name)
         if word and word not in phrases:

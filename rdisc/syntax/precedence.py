@@ -47,7 +47,7 @@ BINARY: dict[str, Operator] = {
     "and": _left(AND, "and"),
     # Comparisons do not chain in RDIS (`a < b < c` is a syntax error), so a
     # comparison operand of a comparison is parenthesised on both sides.
-    **{op: Operator(f" {op} ", COMPARISON, (BIT_OR, BIT_OR)) for op in ("==", "!=", "<", "<=", ">", ">=")},
+    **{op: Operator(f" {op} ", COMPARISON, (BIT_OR, BIT_OR)) for op in ("==", "!=", "<", "<=", ">", ">=", "in")},
     "|": _left(BIT_OR, "|"),
     "^": _left(BIT_XOR, "^"),
     "&": _left(BIT_AND, "&"),

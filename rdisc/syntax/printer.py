@@ -53,6 +53,8 @@ def _expr(e: ast.Expr) -> p.Printed:
             return p.call(func.text, [_expr(a) for a in args])
         case ast.Member(enum, member):
             return p.Printed(f"{enum.text}.{member.text}", p.ATOM)
+        case ast.MethodCall(base, method, args):
+            return p.call(f"{base.text}.{method.text}", [_expr(a) for a in args])
         case _:
             _unreachable(e)
 

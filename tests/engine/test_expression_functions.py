@@ -18,6 +18,7 @@ from hypothesis import strategies as st
 from rdisc.compile import compile_path
 from rdisc.diagnostics import Diagnostics
 from rdisc.engine import operations
+from rdisc.json_import import read
 from rdisc.syntax.parse import parse
 from rdisc.syntax.printer import print_module
 from tests.conftest import fuzz_examples
@@ -183,6 +184,9 @@ def test_the_functions_go_through_json_and_the_printer(tmp_path: Path) -> None:
     printed = print_module(module)
     assert "pack \">BB*\" (129, 1, nibbles(p, 4))" in printed and "serial = unhex(out[0])" in printed
     assert module == parse("t.rdis", printed, Diagnostics())
+    imported = read("camera.json", built, Diagnostics())  # `rdisc import`: the JSON back as a description
+    assert imported is not None and "counter = int_le(out[1], True) if out[0] == 1 else int_be(out[1])" in \
+        print_module(imported)
 
 
 def test_a_driver_calls_the_carried_operations(tmp_path: Path) -> None:

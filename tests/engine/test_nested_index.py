@@ -11,6 +11,7 @@ import pytest
 
 from rdisc.compile import compile_path
 from rdisc.diagnostics import Diagnostics
+from rdisc.json_import import read
 from rdisc.syntax.parse import parse
 from rdisc.syntax.printer import print_module
 from tests.engine.test_one_engine import ScriptedPort, implementation_of, through_json
@@ -91,3 +92,5 @@ def test_it_goes_through_json_and_the_printer(tmp_path: Path) -> None:
     printed = print_module(module)
     assert "picked = out[2][which]" in printed and "gain = GAINS[out[0]][1]" in printed
     assert module == parse("t.rdis", printed, Diagnostics())
+    imported = read("groups.json", built, Diagnostics())  # `rdisc import`: the JSON back as a description
+    assert imported is not None and "last = out[0][len(out[0]) - 1]" in print_module(imported)

@@ -520,6 +520,12 @@ def lookup(table: str, entries: Mapping[Any, Any], key: Any) -> Any:
         raise ValueError(f"table {table} has no entry for {key!r}") from None
 
 
+def lookup_or(entries: Mapping[Any, Any], key: Any, default: Any) -> Any:
+    """`TABLE.get(key, default)`: the table's value for the key, or the default where it has none
+    (a driver writes `dict.get`, which computes the same)."""
+    return entries.get(key, default)
+
+
 def element(array: str, values: tuple[Any, ...], index: int) -> Any:
     """`array[index]`: an index outside the array is an error, never wrapped (`a[-1]` too)."""
     if not 0 <= index < len(values):
