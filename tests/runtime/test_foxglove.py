@@ -209,7 +209,8 @@ def test_the_console_serves_its_pages_calls_to_foxglove_too() -> None:
     twists = [(m.linear.x, m.linear.y, m.angular.z) for topic, _, m in found if topic == "/set_velocity"]
     assert twists == [(0.2, 0.0, 0.0)]
     runs = [json.loads(m.data) for topic, _, m in found if topic == "/rdisc/runs"]
-    assert runs == [{"call": "input", "name": "set_velocity", "values": {"linear": 0.2, "angular": 0.0}}]
+    calls = [run for run in runs if "call" in run]  # the bumpers' poll runs there too, as often as it comes
+    assert calls == [{"call": "input", "name": "set_velocity", "values": {"linear": 0.2, "angular": 0.0}}]
     drives = [bytes(m.data) for topic, _, m in found if topic == "/rdisc/btserial/write" and m.data[0] == 0x89]
     assert drives == [bytes.fromhex("89 00 c8 7f ff")]  # Table 4.3: 0.2 m/s straight ahead
 
