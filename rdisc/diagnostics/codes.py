@@ -346,7 +346,10 @@ let the reader find the end of the payload: a length field, a size fixed by the
 decoding, or constant bytes right after the payload. A reply that ends in `*` or
 repeats a group as the message says (`#(BH)`, `*(BH)`) is read through such a
 frame. Wrong: `unpack "<B*(BH)"` without a frame. Right: the same with
-`frame f()` whose reply has a `length` field."""),
+`frame f()` whose reply has a `length` field. A side whose `payload trimmed` drops
+its trailing zero bytes (MAVLink 2) has a length field, the only way a reader knows
+how many bytes were kept: `header "\\xFD"  length "B" = payload  ...  payload
+trimmed`."""),
     ("E504", "frame-use", """
 A primitive's `frame NAME(args)` passes one argument per frame parameter. A
 primitive that decodes a reply needs a frame whose reply has a payload; a frame

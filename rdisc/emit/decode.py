@@ -73,12 +73,29 @@ def decode(model: m.Model, device: engine.Device, messages: Sequence[Message]) -
         others = list(dict.fromkeys(other.rsplit(" ", 1)[-1] for other, _, _ in found[1:]))
         also = f" (also fits: {', '.join(others)})" if others else ""
         lines += [f"  {said}{also}", *held_table(rows, message.data)]
+        if said.startswith("error of "):
+            lines += _code_named(model, model.primitives[said.removeprefix("error of ").split(",")[0]], rows, message.data)
         if regex is not None:  # its groups, as the engine's decoder reads them
             try:
                 lines.append(f"  out = {list(engine.Match(regex).decode(said, message.data))!r}")
             except engine.RdisError:
                 pass
     return "\n".join(lines) + "\n" if lines else ""
+
+
+def _code_named(model: m.Model, p: m.Primitive, rows: list[tuple[int, str, str]], data: bytes) -> list[str]:
+    """An error reply's code and the member of its enum of that value: `  error 2: ILLEGAL_DATA_ADDRESS`."""
+    if p.error is None or p.error.codes is None:
+        return []
+    offset = 0
+    for size, _, detail in rows:
+        if detail.startswith("code, named by"):
+            layout = p.error.decoding.layout
+            code = struct.unpack_from(layout.order + layout.slots[0].code, data, offset)[0]
+            names = {value: member for member, value in model.enums[p.error.codes].items()}
+            return [f"  error {code}: {names.get(code, f'not a member of {p.error.codes}')}"]
+        offset += size
+    return []
 
 
 def _first(layouts: list[Layout], data: bytes) -> list[tuple[int, str, str]] | None:

@@ -514,6 +514,8 @@ def _held(what: str, detail: str, part: bytes) -> str:
         fmt = detail[1 : detail.index('"', 1)]
     elif kind == "text":
         return spell_template(part.decode("latin-1"))
+    elif kind == "text, padded":  # to its first NUL, as an `NZ` is read
+        return spell_template(part.decode("latin-1").partition("\0")[0])
     if fmt is None:
         return ""
     try:

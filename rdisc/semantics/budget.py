@@ -147,7 +147,10 @@ def exchange(model: m.Model, iface: m.Interface, connection: str) -> Exchange:
                     prim = model.primitives[call.primitive]
                     size = message_bytes(prim, model.frames)
                     baud = model.connections[prim.connection].baud
-                    inner = (size if prim.connection == connection else 0, size * BITS_PER_BYTE * 1000.0 / baud, 0.0)
+                    held = sum(level.value.value for level in prim.lines  # a break: time, no byte (ms)
+                               if level.line == m.BREAK and isinstance(level.value, m.Const)
+                               and isinstance(level.value.value, float))
+                    inner = (size if prim.connection == connection else 0, size * BITS_PER_BYTE * 1000.0 / baud, held)
                 count, wire, delays = count + inner[0], wire + inner[1], delays + inner[2] + call.delay_ms
             costs[called.name] = (count, wire, delays)
         return costs[called.name]

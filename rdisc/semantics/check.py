@@ -798,6 +798,11 @@ class _Checker:
             return None
         elif framed_reply:
             assert frame is not None
+            if not any(isinstance(part, m.FramePayload) for part in self.frames[frame.frame].reply):
+                self.d.report("E511", clause.span, f"the error reply of `{name}` is known by its first bytes, but "
+                              f"the reply of frame `{frame.frame}` has no payload to start with them",
+                              help="give the error its own frame (`error frame nak() unpack \"B\"`)")
+                return None
             if not payload_end_known(self.frames[frame.frame], False):
                 self.d.report("E511", clause.span, f"the error reply of `{name}` is known by its first bytes, so "
                               f"frame `{frame.frame}` must say where a payload ends without its decoding",

@@ -238,8 +238,8 @@ def test_a_capture_of_too_many_messages_is_refused(rdisc, tmp_path: Path, monkey
 
 def test_a_modbus_exception_is_the_error_reply_of_its_request(rdisc, tmp_path: Path) -> None:
     """The Modbus specification's exception (`01 83 02 C0 F1`, function 0x83: its own frame's
-    fields, not the request's) is told as the error of the request before it; with its CRC wrong,
-    as nothing."""
+    fields, not the request's) is told as the error of the request before it, its code named by
+    the description's enum; with its CRC wrong, as nothing."""
     capture = tmp_path / "modbus.txt"
     capture.write_text("> 01 03 00 6B 00 02 B5 D7\n< 01 83 02 C0 F1\n< 01 83 02 C0 F2\n")
     assert decode(rdisc, "modbus.rdis", capture)[8:] == [
@@ -250,6 +250,41 @@ def test_a_modbus_exception_is_the_error_reply_of_its_request(rdisc, tmp_path: P
         '       1     1  field function        "B" = function                131           83',
         "       2     1  payload u8            code, named by Exception      2             02",
         "       3     2  checksum              crc16-modbus as <H, over unit .. payload                C0 F1",
+        "  error 2: ILLEGAL_DATA_ADDRESS",
         "< 01 83 02 C0 F2",
         "  unknown: no primitive's reply is these 5 bytes",
+    ]
+
+
+NAMED = """\
+robot named { author "tests" }
+enum Refusal { BUSY = 1, BAD_COMMAND = 3 }
+state name: string = ""
+connection link: serial { baud 9600 }
+primitive name_of() on link pack "B" (0x21) unpack "<6Z" error "\\x15" unpack "B" code Refusal { name = out[0] }
+"""
+
+
+def test_a_nack_is_named_and_a_padded_name_read_to_its_nul(rdisc, tmp_path: Path) -> None:
+    description = tmp_path / "named.rdis"
+    description.write_text(NAMED, encoding="utf-8")
+    capture = tmp_path / "named.txt"
+    capture.write_text("> 21\n< 15 09\n> 21\n< 41 42 00 00 00 00\n")
+    result = rdisc("decode", description, capture)
+    assert (result.returncode, result.stderr) == (0, "")
+    assert result.stdout.splitlines()[4:] == [
+        "< 15 09",
+        "  error of name_of",
+        HEAD,
+        "       0     1  error marker          15                                          15",
+        "       1     1  u8                    code, named by Refusal        9             09",
+        "  error 9: not a member of Refusal",
+        "> 21",
+        "  request name_of",
+        HEAD,
+        "       0     1  u8                    21 (33)                       33            21",
+        "< 41 42 00 00 00 00",
+        "  reply of name_of",
+        HEAD,
+        '       0     6  text, padded          out[0]                        "AB"          41 42 00 00 00 00',
     ]

@@ -208,3 +208,31 @@ def test_rdisc_runtime_exports_the_device_error() -> None:
     from rdisc.runtime import RdisDeviceError, RdisError, RdisProtocolError
 
     assert issubclass(RdisDeviceError, RdisError) and not issubclass(RdisDeviceError, RdisProtocolError)
+
+
+ACK = """\
+robot ack { author "tests" }
+enum Refusal { BUSY = 1, BAD_CHECKSUM = 2 }
+state sent: int = 0
+connection link: serial { baud 9600 }
+frame command { request { header "\\xAA"  length "B" = payload  payload }  reply { header "\\x06" } }
+frame nak { request { payload }  reply { header "\\x15"  payload } }
+/// Acknowledged by 06, refused by 15 and a reason, in a frame of its own.
+primitive go(n: int in 0..255) on link frame command pack "B" (n) error frame nak() unpack "B" code Refusal
+    { sent = n }
+"""
+
+
+@pytest.mark.parametrize("kind", ["runtime", "driver"])
+def test_an_acknowledgement_or_a_refusal_in_its_own_frame(kind: str, tmp_path: Path) -> None:
+    port = ScriptedPort(b"\x06" + b"\x15\x01" + b"\x06")
+    with implementation_of(kind, ACK, tmp_path, "ack").connect(port, threads=False) as robot:
+        robot.call_primitive("go", 1)  # the 06 is not skipped looking for the error's header
+        assert robot.state["sent"] == 1
+        with pytest.raises(Exception) as caught:
+            robot.call_primitive("go", 2)
+        assert str(caught.value) == "go: the device answered error 1 (BUSY)"
+        assert robot.state["sent"] == 1
+        robot.call_primitive("go", 3)
+        assert robot.state["sent"] == 3
+        assert port.writes == [b"\xaa\x01\x01", b"\xaa\x01\x02", b"\xaa\x01\x03"]

@@ -615,7 +615,12 @@ def draw_slot(draw: Draw, type_: str | None = None) -> Slot:
         return Slot(draw(st.sampled_from("efd")), FLOAT)
     if type_ == BOOL:
         return Slot("?", BOOL)
-    return Slot(f"{draw(st.integers(1, 3))}s", STRING)
+    return Slot(f"{draw(st.integers(1, 3))}{draw(st.sampled_from('ssZ'))}", STRING)  # `Z`: read to its first NUL
+
+
+def _struct_module(template: str) -> str:
+    """A struct format as the struct module reads it: `NZ` (text to its first NUL) is `Ns` there."""
+    return re.sub(r"(\d*)Z", r"\1s", template)
 
 
 def struct_text(order: str, slots: Sequence[Slot], pad: int, rest: bool) -> str:
@@ -709,6 +714,7 @@ class Part:
     value: Expr | None = None  # field, over the frame's parameters
     adjust: int = 0  # length
     check: Checksum | None = None
+    trimmed: bool = False  # payload: `payload trimmed`, its trailing zero bytes not sent
 
     def text(self) -> str:
         if self.kind in ("header", "literal", "terminator"):
@@ -720,7 +726,7 @@ class Part:
             adjust = f" + {self.adjust}" if self.adjust > 0 else f" - {-self.adjust}" if self.adjust < 0 else ""
             return f'length "{self.fmt}" = payload{adjust}'
         if self.kind == "payload":
-            return "payload"
+            return "payload trimmed" if self.trimmed else "payload"
         c = self.check
         assert c is not None
         fmt = f'"{self.fmt}"' if self.fmt is not None else "hex"
@@ -833,11 +839,15 @@ def encode_side(frame: Frame, side: tuple[Part, ...], payload: bytes, fields: Ma
     """A side's bytes around `payload` (stuffed first), as a device writes them; valid unless a field
     or the length does not fit its format, or the payload's end would be found too early (the
     constant after it inside it, when no length or fixed size says where it ends)."""
+    valid = True
+    if any(part.kind == "payload" and part.trimmed for part in side):  # MAVLink 2: trailing zeros not sent
+        kept = payload.rstrip(b"\0") or payload[:1]
+        valid = kept == payload or size_known  # else the reader cannot zero-fill it to its decoding's size
+        payload = kept
     if frame.stuffing is not None:
         escape, reserved = frame.stuffing
         payload = payload.replace(reserved, reserved + escape)
     chunks: list[bytes] = []
-    valid = True
     for i, part in enumerate(side):
         if part.kind in ("header", "literal", "terminator"):
             chunks.append(part.data)
@@ -1013,7 +1023,7 @@ def _side(draw: Draw, params: tuple[str, ...], reply_side: bool, payload: bool, 
         if i < before:
             some(["field", "field", "field", "literal", "checksum"], 1)
     if payload:
-        add(Part("payload"))
+        add(Part("payload", trimmed=ending == "length" and sometimes(draw, 4)))
         if ending == "literal":
             add(Part("literal", data=_constant_bytes(draw, 1, 2)))
         if ending != "terminator":
@@ -1091,7 +1101,7 @@ def decodings(draw: Draw, fixed: bool = False, rest: bool | None = None) -> Deco
         if not slots and not tail and not pad:
             slots = [Slot("B", INT)]
         template = struct_text(order, slots, pad, tail)
-        size = struct.calcsize(template.rstrip("*"))
+        size = struct.calcsize(_struct_module(template.rstrip("*")))
         types = tuple(s.type for s in slots) + ((BYTES,) if tail else ())
         return Decoding("unpack", template, types, None if tail else size)
     tokens: list[RegexToken] = []
@@ -1138,7 +1148,7 @@ def payload_for(decoding: Decoding | None, material: bytes) -> bytes:
         return b""
     if decoding.kind == "regex":
         return regex_text(decoding, material)
-    fixed = struct.calcsize(decoding.template.rstrip("*"))
+    fixed = struct.calcsize(_struct_module(decoding.template.rstrip("*")))
     head = (material * (fixed // max(len(material), 1) + 1))[:fixed] if material else b"\x00" * fixed
     return head + (material[fixed:] if decoding.size is None else b"")
 
@@ -1496,7 +1506,7 @@ def _request(draw: Draw, params: tuple[Param, ...], scope: Scope,
                 low, high = ranges[value.name]
                 value = value if low <= r[1] and high >= r[0] else Lit(INT, 0)
             value = fitting(draw, value, lambda v, r=r: isinstance(v, int) and r[0] <= v <= r[1], INT, r[0], min(r[1], 300))
-        elif slot.code.endswith("s") and value.const:  # a constant string no longer than its code holds
+        elif slot.code[-1] in "sZ" and value.const:  # a constant string no longer than its code holds
             room = int(slot.code[:-1] or 1)
             try:
                 text = constant_value(value)
@@ -1511,7 +1521,7 @@ def _request(draw: Draw, params: tuple[Param, ...], scope: Scope,
     template = struct_text(order, slots, 0, bool(rest) and len(args) > len(slots))
     if not slots and not template.endswith("*"):
         template = ""
-    fixed = None if template.endswith("*") else struct.calcsize(template or "<")
+    fixed = None if template.endswith("*") else struct.calcsize(_struct_module(template) or "<")
     return "pack", template, tuple(args), fixed
 
 

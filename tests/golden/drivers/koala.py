@@ -2894,6 +2894,14 @@ class Exchange:
         except (struct.error, *EVAL_ERRORS) as err:
             raise RdisValueError(f"{plan.name}: {err}") from None
         decoder = error.decoder
+        headers = use.frame.headers
+        if all(headers):  # where the reply starts: a frame's reader would skip bytes to find its header
+            head = reader.read(max(len(header) for header in headers))
+            reader.put_back(head)
+            if not head:
+                raise FrameError(f"{use.frame.name}: no reply", timeout=True)
+            if not any(head.startswith(header) for header in headers):
+                return
         try:
             raw, payload = use.frame.read(reader, fields, request, len(error.marker) + decoder.size, whole=True)
         except ChecksumError:
