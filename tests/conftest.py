@@ -17,13 +17,14 @@ from __future__ import annotations
 import contextlib
 import difflib
 import io
+import json
 import os
 import re
 import subprocess
 import sys
 import threading
 import traceback
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from unittest import mock
@@ -40,6 +41,16 @@ def pytest_addoption(parser: pytest.Parser) -> None:
         default=False,
         help="rewrite the golden files under tests/golden/ with the current output (review the diff)",
     )
+
+
+def pytest_configure(config: pytest.Config) -> None:
+    config.addinivalue_line("markers", "long: a file that takes long; the workers start it before the others")
+
+
+def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:
+    """The files marked `long` first, each kept whole and in order: a worker that takes one at the
+    end would run it alone while the other waits (pytest-xdist hands out files in this order)."""
+    items.sort(key=lambda item: item.get_closest_marker("long") is None)
 
 
 @dataclass(frozen=True)
@@ -88,6 +99,13 @@ def _shown(path: Path) -> str:
 @pytest.fixture(scope="session")
 def golden(request: pytest.FixtureRequest) -> Golden:
     return Golden(bool(request.config.getoption("--update-goldens")))
+
+
+@pytest.fixture(scope="session")
+def mypy_cache(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """One mypy cache for a worker's runs of `mypy --strict` over generated code: the standard
+    library's stubs are read once, not once a test (each run still checks its own files)."""
+    return tmp_path_factory.mktemp("mypy-cache")
 
 
 #: RDISC_FUZZ_SCALE=N: the property tests try N times their default number of examples (a deeper
@@ -163,6 +181,28 @@ def run_rdisc_process(
         errors="replace",
         timeout=timeout,
     )
+
+
+_SEEDED = """
+import json, sys
+sys.path.insert(0, sys.argv[1])
+from conftest import run_rdisc_here
+print(json.dumps([(r.returncode, r.stdout, r.stderr) for r in (run_rdisc_here(*argv) for argv in json.loads(sys.argv[2]))]))
+"""
+
+
+def run_rdisc_seeded(
+    runs: Sequence[Sequence[str | os.PathLike[str]]], seed: str, cwd: Path = REPO,
+) -> list[subprocess.CompletedProcess[str]]:
+    """`rdisc ARGS...` for each of `runs`, one after the other (as `run_rdisc_here` runs them) in one
+    new interpreter whose hash seed is `seed`: what a process each would give, for one start-up."""
+    argvs = [[str(a) for a in argv] for argv in runs]
+    done = subprocess.run([sys.executable, "-c", _SEEDED, str(Path(__file__).parent), json.dumps(argvs)], cwd=cwd,
+                          env=cli_env(PYTHONHASHSEED=seed), capture_output=True, text=True, encoding="utf-8",
+                          check=False, timeout=300)
+    assert done.returncode == 0, done.stderr
+    return [subprocess.CompletedProcess([sys.executable, "-m", "rdisc", *argv], status, out, err)
+            for argv, (status, out, err) in zip(argvs, json.loads(done.stdout), strict=True)]
 
 
 class _Pipe(io.TextIOWrapper):

@@ -25,6 +25,8 @@ from rdisc.emit.python import import_driver
 from rdisc.runtime import load
 from tests.support.ports import ScriptedPort
 
+pytestmark = pytest.mark.long  # started before the other files (tests/conftest.py)
+
 ROOT = Path(__file__).resolve().parents[1]
 EXAMPLES = [
     "examples/create.rdis",
@@ -146,7 +148,7 @@ def _drive(make, model, script: bytes, operations) -> tuple[bytes, list[Any], li
     return bytes(port.written), trace, outputs, errors
 
 
-@settings(max_examples=fuzz_examples(200), deadline=None, derandomize=True,
+@settings(max_examples=fuzz_examples(100), deadline=None, derandomize=True,
           suppress_health_check=[HealthCheck.function_scoped_fixture])
 @given(data=st.data())
 def test_runtime_and_generated_driver_agree(pair, data) -> None:

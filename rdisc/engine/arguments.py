@@ -12,8 +12,8 @@ from typing import Any
 
 from rdisc.engine.errors import RdisValueError
 from rdisc.engine.operations import MAX_INT
-from rdisc.engine.plans import Device, Input, Interface, Param, Primitive
-from rdisc.engine.values import Args, Value
+from rdisc.engine.plans import Device, Input, Interface, Primitive
+from rdisc.engine.values import Args, Param, Value, _check_ranges
 
 _KIND_NAMES: dict[type, str] = {int: "int", float: "float", bool: "bool", str: "string", bytes: "bytes"}
 
@@ -97,24 +97,6 @@ def _widen(owner: str, floats: tuple[int, ...], values: Args) -> None:
                 values[i] = tuple(float(v) for v in values[i])
     except OverflowError as err:  # an int too large for a float
         raise RdisValueError(f"{owner}: {err}") from None
-
-
-def _check_ranges(owner: str, params: tuple[Param, ...], ranged: tuple[int, ...], values: Args,
-               role: str = "parameter") -> None:
-    """A value outside its parameter's (or setting's) declared range is refused before anything is sent."""
-    for i in ranged:
-        p, value = params[i], values[i]
-        low, high = p.low, p.high
-        assert low is not None and high is not None  # `ranged` holds the parameters with a range
-        if isinstance(value, bytes):
-            if not low <= len(value) <= high:
-                raise RdisValueError(f"{owner}: {role} {p.name} has {len(value)} bytes, outside {low!r}..{high!r}")
-        elif isinstance(value, tuple):
-            for k, item in enumerate(value):
-                if not low <= item <= high:
-                    raise RdisValueError(f"{owner}: {role} {p.name}[{k}] is {item!r}, outside {low!r}..{high!r}")
-        elif not low <= value <= high:
-            raise RdisValueError(f"{owner}: {role} {p.name} is {value!r}, outside {low!r}..{high!r}")
 
 
 def bind_settings(device: Device, given: Mapping[str, Any] | None) -> dict[str, Value]:

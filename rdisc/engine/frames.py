@@ -8,9 +8,7 @@ import struct
 from collections.abc import Callable, Sequence
 from typing import Any
 
-from rdisc.engine.arguments import _check_ranges
-from rdisc.engine.plans import Param, _ranged
-from rdisc.engine.values import Args
+from rdisc.engine.values import Args, Param, _check_ranges, _ranged
 from rdisc.engine.wire import (
     MAX_FRAME,
     MAX_SKIP,

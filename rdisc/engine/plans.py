@@ -8,25 +8,11 @@ from __future__ import annotations
 import struct
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import KW_ONLY, dataclass, field
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 from rdisc.engine.codec import Format, Match, Pack, Unpack
-from rdisc.engine.values import Args, StateValues, Value
-
-if TYPE_CHECKING:
-    from rdisc.engine.frames import Frame
-
-
-@dataclass(frozen=True, slots=True)
-class Param:
-    """A parameter of an interface or a primitive, or a field of an input's adapter."""
-
-    name: str
-    kind: type  # int, float, bool, str or bytes; an array's elements'
-    low: float | None = None  # the declared range (for bytes, of the length; for an array, of each element)
-    high: float | None = None
-    default: Value | None = None  # the value when a call leaves it out
-    size: int | None = None  # an array's: its number of elements (0: any); None: not an array
+from rdisc.engine.frames import Frame
+from rdisc.engine.values import Args, Param, StateValues, Value, _ranged
 
 
 @dataclass(frozen=True, slots=True)
@@ -475,7 +461,3 @@ class Message:
 
 def _floats(params: tuple[Param, ...]) -> tuple[int, ...]:
     return tuple(i for i, p in enumerate(params) if p.kind is float)
-
-
-def _ranged(params: tuple[Param, ...]) -> tuple[int, ...]:
-    return tuple(i for i, p in enumerate(params) if p.low is not None)

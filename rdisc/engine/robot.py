@@ -13,7 +13,7 @@ from collections import deque
 from collections.abc import Callable, Iterator, Mapping
 from typing import Any
 
-from rdisc.engine.arguments import _accept_param, _accepted, _bind, _check_ranges, _widen, bind_settings
+from rdisc.engine.arguments import _accept_param, _accepted, _bind, _widen, bind_settings
 from rdisc.engine.errors import RdisConnectionError, RdisTimeout, RdisValueError
 from rdisc.engine.exchange import Exchange
 from rdisc.engine.operations import EVAL_ERRORS
@@ -28,6 +28,7 @@ from rdisc.engine.values import (
     StateValues,
     TraceCallback,
     Value,
+    _check_ranges,
 )
 
 

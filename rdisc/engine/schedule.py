@@ -7,13 +7,26 @@ from __future__ import annotations
 import math
 import threading
 import time
-from typing import TYPE_CHECKING
+from collections.abc import Callable
+from typing import Protocol
 
 from rdisc.engine.errors import RdisConnectionError
-from rdisc.engine.plans import Connection
+from rdisc.engine.plans import Connection, Hook, Interface
+from rdisc.engine.values import Args
 
-if TYPE_CHECKING:
-    from rdisc.engine.robot import Robot
+
+class _Owner(Protocol):
+    """What a connection's thread uses of its robot (a `Robot`, whose module comes after this one)."""
+
+    name: str
+    _clock: Callable[[], float]
+    _closed: bool
+    _run_callbacks: list[Callable[[str, str, str], object]]
+
+    def _interface(self, plan: Interface, args: Args) -> None: ...
+    def _hook(self, hook: Hook) -> None: ...
+    def _notify_run(self, connection: str, kind: str, name: str) -> None: ...
+    def _report(self, error: BaseException) -> None: ...
 
 
 class _Worker:
@@ -26,7 +39,7 @@ class _Worker:
     at once when stopped.
     """
 
-    def __init__(self, robot: Robot, connection: Connection) -> None:
+    def __init__(self, robot: _Owner, connection: Connection) -> None:
         self.robot = robot
         self.connection = connection
         self.period = 1.0 / connection.frequency if connection.frequency > 0 else math.inf

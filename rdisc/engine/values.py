@@ -1,11 +1,15 @@
-"""The values plans compute with, as Python types, and the callbacks' signatures: the words
-every other module of the engine speaks.
+"""The values plans compute with, as Python types, the parameters they are given for (and the
+rule of their ranges), and the callbacks' signatures: the words every other module of the
+engine speaks.
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable, Mapping
+from dataclasses import dataclass
 from typing import Any
+
+from rdisc.engine.errors import RdisValueError
 
 Value = int | float | bool | str | bytes | tuple[Any, ...]  # an array is a tuple
 """The value of a state variable, a parameter, a field or an output field."""
@@ -41,3 +45,37 @@ TraceCallback = Callable[[float, str, str, bytes], object]
 """`(time, kind, connection, data)`: what an I/O callback sees, and "skip" with why a reply was
 read past (`skip unmatched`, as UTF-8 text), each stamped when it happened by the robot's clock
 (`time.monotonic`, or a simulation's time)."""
+
+
+@dataclass(frozen=True, slots=True)
+class Param:
+    """A parameter of an interface or a primitive, or a field of an input's adapter."""
+
+    name: str
+    kind: type  # int, float, bool, str or bytes; an array's elements'
+    low: float | None = None  # the declared range (for bytes, of the length; for an array, of each element)
+    high: float | None = None
+    default: Value | None = None  # the value when a call leaves it out
+    size: int | None = None  # an array's: its number of elements (0: any); None: not an array
+
+
+def _ranged(params: tuple[Param, ...]) -> tuple[int, ...]:
+    return tuple(i for i, p in enumerate(params) if p.low is not None)
+
+
+def _check_ranges(owner: str, params: tuple[Param, ...], ranged: tuple[int, ...], values: Args,
+               role: str = "parameter") -> None:
+    """A value outside its parameter's (or setting's) declared range is refused before anything is sent."""
+    for i in ranged:
+        p, value = params[i], values[i]
+        low, high = p.low, p.high
+        assert low is not None and high is not None  # `ranged` holds the parameters with a range
+        if isinstance(value, bytes):
+            if not low <= len(value) <= high:
+                raise RdisValueError(f"{owner}: {role} {p.name} has {len(value)} bytes, outside {low!r}..{high!r}")
+        elif isinstance(value, tuple):
+            for k, item in enumerate(value):
+                if not low <= item <= high:
+                    raise RdisValueError(f"{owner}: {role} {p.name}[{k}] is {item!r}, outside {low!r}..{high!r}")
+        elif not low <= value <= high:
+            raise RdisValueError(f"{owner}: {role} {p.name} is {value!r}, outside {low!r}..{high!r}")

@@ -33,6 +33,8 @@ from devices.create import DRIVE, SENSORS, STOP
 
 from rdisc.console.server import MAX_DEPTH
 
+pytestmark = pytest.mark.long  # started before the other files (tests/conftest.py)
+
 CREATE = REPO / "examples" / "create.rdis"
 GO = {"kind": "input", "name": "set_velocity", "values": {"linear": "0.2", "angular": "0"}}
 GO_BYTES = bytes.fromhex("89 00 c8 7f ff")  # Table 4.3: 0.2 m/s straight ahead

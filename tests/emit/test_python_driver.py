@@ -19,13 +19,15 @@ from pathlib import Path
 from types import ModuleType
 
 import pytest
-from conftest import cli_env, untimed
+from conftest import cli_env, run_rdisc_seeded, untimed
 from devices import CreateEmulator, KoalaEmulator, pty_device
 from devices.create import DRIVE, FULL, SENSORS, START, STOP, TABLE_4_3
 
 from rdisc.compile import compile_path
 from rdisc.emit.python import to_python
 from tests.support.ports import ScriptedPort
+
+pytestmark = pytest.mark.long  # started before the other files (tests/conftest.py)
 
 REPO = Path(__file__).resolve().parents[2]
 EXAMPLES = REPO / "examples"
@@ -103,10 +105,10 @@ def test_ruff_finds_nothing(drivers, example) -> None:
     assert done.returncode == 0, done.stdout + done.stderr
 
 
-def test_mypy_strict_finds_nothing(drivers, tmp_path) -> None:
+def test_mypy_strict_finds_nothing(drivers, tmp_path, mypy_cache) -> None:
     paths = [str(drivers["create"]), str(drivers["koala"]), str(drivers["arm"])]
     done = subprocess.run(
-        [sys.executable, "-m", "mypy", "--strict", "--no-error-summary", "--cache-dir", str(tmp_path / "cache"),
+        [sys.executable, "-m", "mypy", "--strict", "--no-error-summary", "--cache-dir", str(mypy_cache),
          *paths],
         capture_output=True, text=True, check=False, cwd=tmp_path,
     )
@@ -135,15 +137,28 @@ def test_file_line_comments_point_at_the_description(drivers) -> None:
         assert f"# create.rdis:{line}  {comment}" in text
 
 
-@pytest.mark.parametrize("example", ["create", "koala"])
-def test_a_build_is_byte_identical_under_any_hash_seed(tmp_path, example) -> None:
-    outputs = []
+@pytest.fixture(scope="module")
+def seeded_drivers(tmp_path_factory) -> dict[str, list[tuple[subprocess.CompletedProcess[str], Path]]]:
+    """The Create's and the Koala's drivers emitted under each hash seed, one interpreter a seed
+    (the seed is read when Python starts): by example, a (result, driver file) a seed."""
+    folder = tmp_path_factory.mktemp("seeded")
+    names = ["create", "koala"]
+    drivers: dict[str, list[tuple[subprocess.CompletedProcess[str], Path]]] = {name: [] for name in names}
     for seed in ("1", "4242"):
-        out = tmp_path / f"driver_{seed}.py"
-        done = subprocess.run(
-            [sys.executable, "-m", "rdisc", "emit-python", str(EXAMPLES / f"{example}.rdis"), "-o", str(out)],
-            env=cli_env(PYTHONHASHSEED=seed), capture_output=True, text=True, check=False, cwd=REPO,
-        )
+        outs = [folder / f"{name}_{seed}" / f"driver_{seed}.py" for name in names]
+        for out in outs:
+            out.parent.mkdir()
+        results = run_rdisc_seeded([("emit-python", EXAMPLES / f"{name}.rdis", "-o", out)
+                                    for name, out in zip(names, outs)], seed)
+        for name, done, out in zip(names, results, outs):
+            drivers[name].append((done, out))
+    return drivers
+
+
+@pytest.mark.parametrize("example", ["create", "koala"])
+def test_a_build_is_byte_identical_under_any_hash_seed(seeded_drivers, example) -> None:
+    outputs = []
+    for done, out in seeded_drivers[example]:
         assert done.returncode == 0, done.stderr
         outputs.append(out.read_bytes())
     assert outputs[0] == outputs[1]
@@ -618,13 +633,13 @@ def sink(tmp_path_factory):
     return source, generate(source, folder, "sink")
 
 
-def test_every_expression_form_passes_ruff_and_mypy(sink, tmp_path) -> None:
+def test_every_expression_form_passes_ruff_and_mypy(sink, tmp_path, mypy_cache) -> None:
     path = str(sink[1])
     done = subprocess.run([sys.executable, "-m", "ruff", "check", "--isolated", "--no-cache", path],
                           capture_output=True, text=True, check=False)
     assert done.returncode == 0, done.stdout
     done = subprocess.run([sys.executable, "-m", "mypy", "--strict", "--no-error-summary", "--cache-dir",
-                           str(tmp_path / "cache"), path], capture_output=True, text=True, check=False, cwd=tmp_path)
+                           str(mypy_cache), path], capture_output=True, text=True, check=False, cwd=tmp_path)
     assert done.returncode == 0, done.stdout
 
 

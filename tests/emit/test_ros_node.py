@@ -106,19 +106,19 @@ def test_settings_are_read_as_private_parameters(tmp_path: Path) -> None:
 """ in _settings_node(tmp_path)
 
 
-def _ruff_and_mypy_strict_find_nothing(path: Path, tmp_path: Path) -> None:
+def _ruff_and_mypy_strict_find_nothing(path: Path, tmp_path: Path, mypy_cache: Path) -> None:
     for command in (["ruff", "check", "--isolated", "--no-cache"],
-                    ["mypy", "--strict", "--no-error-summary", "--cache-dir", str(tmp_path / "cache")]):
+                    ["mypy", "--strict", "--no-error-summary", "--cache-dir", str(mypy_cache)]):
         done = subprocess.run([sys.executable, "-m", *command, str(path)], capture_output=True, text=True,
                               check=False, cwd=tmp_path)
         assert done.returncode == 0, done.stdout + done.stderr
 
 
 @pytest.mark.parametrize("example", ["create", "servos"])
-def test_ruff_and_mypy_strict_find_nothing(example: str, tmp_path: Path) -> None:
+def test_ruff_and_mypy_strict_find_nothing(example: str, tmp_path: Path, mypy_cache: Path) -> None:
     path = tmp_path / f"{example}_node.py"
     path.write_text(_node(example)[0] if example == "create" else _settings_node(tmp_path), encoding="utf-8")
-    _ruff_and_mypy_strict_find_nothing(path, tmp_path)
+    _ruff_and_mypy_strict_find_nothing(path, tmp_path, mypy_cache)
 
 
 def test_without_ros_the_node_says_what_is_missing(tmp_path: Path) -> None:
@@ -228,9 +228,9 @@ def test_a_body_measuring_nothing_gives_only_the_description(tmp_path: Path) -> 
     assert "joint_states" not in node and "_ros_joint_states" not in node
 
 
-def test_the_node_of_a_body_is_clean_for_ruff_and_mypy_strict(tmp_path: Path) -> None:
+def test_the_node_of_a_body_is_clean_for_ruff_and_mypy_strict(tmp_path: Path, mypy_cache: Path) -> None:
     path = _emitted_node(tmp_path)
-    _ruff_and_mypy_strict_find_nothing(path, tmp_path)
+    _ruff_and_mypy_strict_find_nothing(path, tmp_path, mypy_cache)
 
 
 def test_a_body_s_node_can_simulate_it_from_the_json_it_carries(tmp_path: Path) -> None:

@@ -159,7 +159,7 @@ def test_inputs_interfaces_and_primitives_are_methods_by_name(create, kind) -> N
         robot.close()
 
 
-def test_mypy_strict_rejects_a_misspelt_keyword(create, tmp_path) -> None:
+def test_mypy_strict_rejects_a_misspelt_keyword(create, tmp_path, mypy_cache) -> None:
     folder = Path(create["driver"].__file__).parent
     script = tmp_path / "use_driver.py"
     script.write_text(
@@ -171,7 +171,7 @@ def test_mypy_strict_rejects_a_misspelt_keyword(create, tmp_path) -> None:
         encoding="utf-8",
     )
     done = subprocess.run(
-        [sys.executable, "-m", "mypy", "--strict", "--no-error-summary", "--cache-dir", str(tmp_path / "cache"),
+        [sys.executable, "-m", "mypy", "--strict", "--no-error-summary", "--cache-dir", str(mypy_cache),
          str(script)],
         capture_output=True, text=True, check=False, cwd=tmp_path, env={"MYPYPATH": str(folder), "PATH": ""},
     )

@@ -3,9 +3,11 @@ byte-identical builds whatever the hash seed."""
 
 from __future__ import annotations
 
+import subprocess
 from pathlib import Path
 
 import pytest
+from conftest import run_rdisc_seeded
 
 REPO = Path(__file__).resolve().parents[2]
 JSON = Path(__file__).resolve().parent / "json"
@@ -31,12 +33,25 @@ def test_the_body_golden(rdisc, golden, tmp_path: Path) -> None:
     assert (again.returncode, again.stderr, again.stdout) == (0, "", result.stdout)
 
 
-@pytest.mark.parametrize("name", EXAMPLES)
-def test_build_is_byte_identical_under_different_hash_seeds(name: str, rdisc, tmp_path: Path) -> None:
-    outputs = []
+@pytest.fixture(scope="module")
+def seeded_builds(tmp_path_factory: pytest.TempPathFactory) -> dict[str, list[tuple[subprocess.CompletedProcess[str], Path]]]:
+    """Each example built under each hash seed: one interpreter a seed builds them all (the seed is
+    read when Python starts); by name, a (result, output file) a seed."""
+    folder = tmp_path_factory.mktemp("seeded")
+    builds: dict[str, list[tuple[subprocess.CompletedProcess[str], Path]]] = {name: [] for name in EXAMPLES}
     for seed in ("1", "2"):
-        out = tmp_path / f"{name}-{seed}.json"
-        result = rdisc("build", f"examples/{name}.rdis", "-o", out, env={"PYTHONHASHSEED": seed})
+        outs = [folder / f"{name}-{seed}.json" for name in EXAMPLES]
+        results = run_rdisc_seeded([("build", f"examples/{name}.rdis", "-o", out) for name, out in zip(EXAMPLES, outs)],
+                                   seed)
+        for name, result, out in zip(EXAMPLES, results, outs):
+            builds[name].append((result, out))
+    return builds
+
+
+@pytest.mark.parametrize("name", EXAMPLES)
+def test_build_is_byte_identical_under_different_hash_seeds(name: str, seeded_builds) -> None:
+    outputs = []
+    for result, out in seeded_builds[name]:
         assert (result.returncode, result.stderr) == (0, "")
         outputs.append(out.read_bytes())
     assert outputs[0] == outputs[1]

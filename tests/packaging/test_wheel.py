@@ -21,6 +21,8 @@ from pathlib import Path
 import pytest
 from conftest import cli_env
 
+pytestmark = pytest.mark.long  # started before the other files (tests/conftest.py)
+
 ROOT = Path(__file__).resolve().parents[2]
 CREATE = ROOT / "examples" / "create.rdis"
 ON_CI = os.environ.get("CI", "").lower() in ("1", "true", "yes")

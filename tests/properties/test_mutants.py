@@ -9,7 +9,9 @@ from pathlib import Path
 import pytest
 from mutants import finding, mutants, run_pipeline
 
-COUNT = 240  # the same mutants every run (seeded): a failure here reproduces
+pytestmark = pytest.mark.long  # started before the other files (tests/conftest.py)
+
+COUNT = 120  # the same mutants every run (seeded): a failure here reproduces
 
 
 @pytest.mark.parametrize("batch", range(4))

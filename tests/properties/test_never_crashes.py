@@ -33,6 +33,8 @@ from rdisc.diagnostics.lsp import to_lsp
 from rdisc.diagnostics.text import render_plain
 from rdisc.source import Sources
 
+pytestmark = pytest.mark.long  # started before the other files (tests/conftest.py)
+
 REPO = Path(__file__).resolve().parents[2]
 BODY = REPO / "tests" / "golden" / "json" / "body.rdis"  # every kind of link, joint and transmission
 SEED_PATHS = sorted((REPO / "examples").glob("*.rdis")) + [REPO / "stdlib" / "adapters.rdis", BODY]
@@ -164,7 +166,7 @@ def mutate(text: str, edits) -> str:
     return text
 
 
-@settings(FUZZ, max_examples=fuzz_examples(150))
+@settings(FUZZ, max_examples=fuzz_examples(75))
 @given(seed=st.integers(0, len(SEEDS) - 1), edits=st.lists(edit, min_size=1, max_size=6))
 def test_mutated_descriptions(workdir: Path, seed: int, edits) -> None:
     path = workdir / "mutated.rdis"
@@ -172,7 +174,7 @@ def test_mutated_descriptions(workdir: Path, seed: int, edits) -> None:
     check(path)
 
 
-@settings(FUZZ, max_examples=fuzz_examples(60))
+@settings(FUZZ, max_examples=fuzz_examples(30))
 @given(
     seeds=st.lists(st.integers(0, len(SEEDS) - 1), min_size=2, max_size=3),
     cuts=st.lists(st.tuples(st.floats(0, 1), st.floats(0, 1)), min_size=3, max_size=3),
@@ -189,7 +191,7 @@ def test_spliced_descriptions(workdir: Path, seeds, cuts) -> None:
     check(path)
 
 
-@settings(FUZZ, max_examples=fuzz_examples(100))
+@settings(FUZZ, max_examples=fuzz_examples(50))
 @given(
     seed=st.integers(0, len(SEEDS) - 1),
     flips=st.lists(st.tuples(st.floats(0, 1), st.integers(1, 255)), min_size=1, max_size=4),
@@ -207,7 +209,7 @@ def test_byte_flips(workdir: Path, seed: int, flips, insert: bytes) -> None:
     check(path)
 
 
-@settings(FUZZ, max_examples=fuzz_examples(60))
+@settings(FUZZ, max_examples=fuzz_examples(30))
 @given(seed=st.integers(0, len(SEEDS) - 1), tokens=st.lists(st.sampled_from(TOKENS), min_size=1, max_size=40))
 def test_token_soup_after_a_good_prefix(workdir: Path, seed: int, tokens) -> None:
     """Half a real file, then a stream of tokens in any order."""
@@ -219,11 +221,11 @@ def test_token_soup_after_a_good_prefix(workdir: Path, seed: int, tokens) -> Non
 
 @pytest.mark.parametrize("seed", range(len(SEEDS)), ids=[p.name for p in SEED_PATHS])
 def test_truncated_at_a_sample_of_lengths(workdir: Path, seed: int) -> None:
-    """Truncation at one length in 89 (in 89 / RDISC_FUZZ_SCALE), plus every length of a
+    """Truncation at one length in 179 (in 179 / RDISC_FUZZ_SCALE), plus every length of a
     60-character region."""
     text = SEEDS[seed]
     region = text.index("primitive") if "primitive" in text else len(text) // 2
-    step = max(1, round(89 / FUZZ_SCALE))
+    step = max(1, round(179 / FUZZ_SCALE))
     lengths = sorted(set(range(0, len(text) + 1, step)) | set(range(region, min(region + 60, len(text)))))
     path = workdir / f"truncated-{seed}.rdis"
     for n in lengths:
@@ -253,7 +255,7 @@ expressions = st.recursive(
 _LITERAL = re.compile(r'(?<![\w.])\d+(\.\d+)?(?![\w.])|"[^"\n]*"')
 
 
-@settings(FUZZ, max_examples=fuzz_examples(40))
+@settings(FUZZ, max_examples=fuzz_examples(20))
 @given(seed=st.integers(0, len(SEEDS) - 1),
        swaps=st.lists(st.tuples(st.floats(0, 1), expressions), min_size=1, max_size=2))
 def test_expression_swaps_round_trip(workdir: Path, seed: int, swaps) -> None:
@@ -328,7 +330,7 @@ JSON_TOKENS = [
 ]
 
 
-@settings(FUZZ, max_examples=fuzz_examples(120))
+@settings(FUZZ, max_examples=fuzz_examples(60))
 @given(which=st.integers(0, 2), edits=st.lists(edit, min_size=1, max_size=5), token=st.sampled_from(JSON_TOKENS),
        at=st.floats(0, 1))
 def test_mutated_json(workdir: Path, json_seeds: list[str], which: int, edits, token: str, at: float) -> None:
@@ -365,7 +367,7 @@ def _replace_somewhere(doc, rng: random.Random, value):
         return
 
 
-@settings(FUZZ, max_examples=fuzz_examples(60))
+@settings(FUZZ, max_examples=fuzz_examples(30))
 @given(which=st.integers(0, 2), choice=st.integers(0, 2**32 - 1), values=st.lists(json_values, min_size=1, max_size=3),
        drop=st.booleans())
 def test_structurally_mutated_json(workdir: Path, json_seeds: list[str], which: int, choice: int, values,

@@ -28,11 +28,14 @@ from pathlib import Path
 from typing import Any
 
 import pytest
+from conftest import run_rdisc
 
 from rdisc.compile import compile_path
 from tests.devices import CreateEmulator
 from tests.devices.create import TABLE_4_3
 from tests.devices.dynamixel import IDS, XBus, sync_goals
+
+pytestmark = pytest.mark.long  # started before the other files (tests/conftest.py)
 
 HERE = Path(__file__).resolve().parent
 REPO = HERE.parents[1]
@@ -96,8 +99,7 @@ def ros_env(tmp_path_factory: pytest.TempPathFactory) -> Iterator[dict[str, str]
 @pytest.fixture(scope="module")
 def node_file(tmp_path_factory: pytest.TempPathFactory) -> Path:
     path = tmp_path_factory.mktemp("node") / "irobot_create_node.py"
-    done = subprocess.run(["python", "-m", "rdisc", "emit-ros", str(REPO / "examples" / "create.rdis"), "-o", str(path)],
-                          cwd=REPO, capture_output=True, text=True, check=False)
+    done = run_rdisc("emit-ros", str(REPO / "examples" / "create.rdis"), "-o", str(path))
     assert done.returncode == 0, done.stderr
     return path
 
@@ -151,9 +153,7 @@ def test_a_range_is_stamped_when_its_reply_was_read_and_names_its_frame(ros_env:
     device wrote that reply and before it wrote the next (the node polls again only after reading),
     and at least the poll's 60 ms delay before the Range arrived, which was published after it."""
     node_file = tmp_path / "framed_node.py"
-    done = subprocess.run(["python", "-m", "rdisc", "emit-ros", str(REPO / "tests" / "runtime" / "data" /
-                                                                     "framed_create.rdis"), "-o", str(node_file)],
-                          cwd=REPO, capture_output=True, text=True, check=False)
+    done = run_rdisc("emit-ros", REPO / "tests" / "runtime" / "data" / "framed_create.rdis", "-o", node_file)
     assert done.returncode == 0, done.stderr
     with CreateEmulator(bumpers=0b01) as device:
         node = _start_node(node_file, ros_env, device)
@@ -194,8 +194,7 @@ def test_an_odometry_is_in_odom_with_the_base_as_its_child_frame(ros_env: dict[s
     stamped when the device's reply was read."""
     source, node_file = tmp_path / "travelled.rdis", tmp_path / "travelled_node.py"
     source.write_text(TRAVELLED, encoding="utf-8")
-    done = subprocess.run(["python", "-m", "rdisc", "emit-ros", str(source), "-o", str(node_file)], cwd=REPO,
-                          capture_output=True, text=True, check=False)
+    done = run_rdisc("emit-ros", str(source), "-o", str(node_file))
     assert done.returncode == 0, done.stderr
     with CreateEmulator() as device:
         node = _start_node(node_file, ros_env, device)
@@ -240,8 +239,7 @@ def test_a_description_maps_an_output_to_another_message(ros_env: dict[str, str]
     source = tmp_path / "hit.rdis"
     source.write_text(HIT)
     node_file = tmp_path / "hit_node.py"
-    done = subprocess.run(["python", "-m", "rdisc", "emit-ros", str(source), "-o", str(node_file)], cwd=REPO,
-                          capture_output=True, text=True, check=False)
+    done = run_rdisc("emit-ros", str(source), "-o", str(node_file))
     assert done.returncode == 0, done.stderr
     with CreateEmulator(bumpers=0b10) as device:  # the left bumper
         node = _start_node(node_file, ros_env, device)
@@ -272,8 +270,7 @@ def test_arrays_travel_as_one_joint_state(ros_env: dict[str, str], tmp_path: Pat
     source = tmp_path / "joints.rdis"
     source.write_text(JOINTS)
     node_file = tmp_path / "joints_node.py"
-    done = subprocess.run(["python", "-m", "rdisc", "emit-ros", str(source), "-o", str(node_file)], cwd=REPO,
-                          capture_output=True, text=True, check=False)
+    done = run_rdisc("emit-ros", str(source), "-o", str(node_file))
     assert done.returncode == 0, done.stderr
     with CreateEmulator() as device:  # voltage 15000 mV, charge 2000 mAh
         node = _start_node(node_file, ros_env, device)
@@ -317,9 +314,7 @@ def test_signals_at_any_moment_leave_the_robot_stopped(ros_env: dict[str, str], 
     """However the node is signalled once its port is open, the stop command is the last thing
     written and nothing prints a traceback (rospy shuts down on SIGINT and SIGTERM alike)."""
     node_path = tmp_path / "fast_create_node.py"
-    done = subprocess.run(["python", "-m", "rdisc", "emit-ros", str(REPO / "tests" / "runtime" / "data" /
-                                                                       "fast_create.rdis"), "-o", str(node_path)],
-                          cwd=REPO, capture_output=True, text=True, check=False)
+    done = run_rdisc("emit-ros", REPO / "tests" / "runtime" / "data" / "fast_create.rdis", "-o", node_path)
     assert done.returncode == 0, done.stderr
     with CreateEmulator() as device:
         device.signal_once_open(_start_node(node_path, ros_env, device), after, signals, gap)
@@ -344,8 +339,7 @@ def test_a_signal_during_a_twist_s_call_of_several_commands_leaves_the_stop_last
     assert "-> dance(linear, angular)" in DANCE
     source, node_path = tmp_path / "dance.rdis", tmp_path / "dance_node.py"
     source.write_text(DANCE, encoding="utf-8")
-    done = subprocess.run(["python", "-m", "rdisc", "emit-ros", str(source), "-o", str(node_path)], cwd=REPO,
-                          capture_output=True, text=True, check=False)
+    done = run_rdisc("emit-ros", str(source), "-o", str(node_path))
     assert done.returncode == 0, done.stderr
     with CreateEmulator() as device:
         node = _start_node(node_path, ros_env, device)
@@ -379,8 +373,7 @@ interface hello(id: int) { ping(id) }
 def test_settings_are_the_node_s_private_parameters(ros_env: dict[str, str], tmp_path: Path) -> None:
     source, path = tmp_path / "servos.rdis", tmp_path / "servos_node.py"
     source.write_text(SETTINGS, encoding="utf-8")
-    done = subprocess.run(["python", "-m", "rdisc", "emit-ros", str(source), "-o", str(path)],
-                          cwd=REPO, capture_output=True, text=True, check=False)
+    done = run_rdisc("emit-ros", str(source), "-o", str(path))
     assert done.returncode == 0, done.stderr
     master, slave = os.openpty()
     node = subprocess.Popen([PYTHON3, str(path), f"_port:={os.ttyname(slave)}", "_ID:=9", "_BAUD:=115200"],
@@ -437,8 +430,7 @@ def test_the_arm_s_body_and_joint_states_reach_robot_state_publisher(ros_env: di
                     "python3-tf2-msgs)")
     arm = REPO / "examples" / "arm.rdis"
     node_file = tmp_path / "arm_node.py"
-    done = subprocess.run(["python", "-m", "rdisc", "emit-ros", str(arm), "-o", str(node_file)], cwd=REPO,
-                          capture_output=True, text=True, check=False)
+    done = run_rdisc("emit-ros", str(arm), "-o", str(node_file))
     assert done.returncode == 0, done.stderr
     present = {1: 2048, 2: 1024, 3: 3072, 4: 2560, 5: 0, 6: 4095}  # the centre, -90°, +90°, +45°, -180°, ~+180°
     angles = [(present[i] - 2048) * 2 * math.pi / 4096 for i in IDS]
@@ -463,8 +455,7 @@ def test_the_arm_s_body_and_joint_states_reach_robot_state_publisher(ros_env: di
                                  text=True, check=True, timeout=60)
             urdf = subprocess.run([PYTHON3, "-c", "import sys, yaml; sys.stdout.write(yaml.safe_load(sys.stdin))"],
                                   input=got.stdout, capture_output=True, text=True, check=True).stdout
-            emitted = subprocess.run(["python", "-m", "rdisc", "emit-urdf", str(arm)], cwd=REPO, capture_output=True,
-                                     text=True, check=True).stdout
+            emitted = run_rdisc("emit-urdf", str(arm)).stdout
             assert urdf == emitted
             urchin = pytest.importorskip("urchin")
             (tmp_path / "arm.urdf").write_text(urdf, encoding="utf-8")
@@ -495,8 +486,7 @@ def test_the_arm_s_body_and_joint_states_reach_robot_state_publisher(ros_env: di
 
 def test_a_joint_states_rate_that_is_no_rate_stops_the_node(ros_env: dict[str, str], tmp_path: Path) -> None:
     node_file = tmp_path / "arm_node.py"
-    done = subprocess.run(["python", "-m", "rdisc", "emit-ros", str(REPO / "examples" / "arm.rdis"), "-o",
-                           str(node_file)], cwd=REPO, capture_output=True, text=True, check=False)
+    done = run_rdisc("emit-ros", REPO / "examples" / "arm.rdis", "-o", node_file)
     assert done.returncode == 0, done.stderr
     refused = subprocess.run([PYTHON3, str(node_file), "_port:=/dev/null", "_joint_states_rate:=0"], env=ros_env,
                              capture_output=True, text=True, check=False, timeout=60)
@@ -510,8 +500,7 @@ CREATE2 = REPO / "examples" / "create2.rdis"
 @pytest.fixture(scope="module")
 def create2_node(tmp_path_factory: pytest.TempPathFactory) -> Path:
     path = tmp_path_factory.mktemp("create2") / "create2_node.py"
-    done = subprocess.run(["python", "-m", "rdisc", "emit-ros", str(CREATE2), "-o", str(path)], cwd=REPO,
-                          capture_output=True, text=True, check=False)
+    done = run_rdisc("emit-ros", str(CREATE2), "-o", str(path))
     assert done.returncode == 0, done.stderr
     return path
 
@@ -603,8 +592,7 @@ def test_a_joint_state_on_joint_command_moves_the_arm_s_servos(ros_env: dict[str
     each the transmission's `raw = round(position * UNITS_PER_RAD) + CENTRE`; five joints of the
     six is a line on ~errors, and nothing is written for it."""
     node_file = tmp_path / "arm_node.py"
-    done = subprocess.run(["python", "-m", "rdisc", "emit-ros", str(REPO / "examples" / "arm.rdis"), "-o",
-                           str(node_file)], cwd=REPO, capture_output=True, text=True, check=False)
+    done = run_rdisc("emit-ros", REPO / "examples" / "arm.rdis", "-o", node_file)
     assert done.returncode == 0, done.stderr
     with XBus() as bus:
         # the rate given: a test before may have left a private parameter of the arm's on the master

@@ -27,9 +27,9 @@ def nodes(tmp_path_factory: pytest.TempPathFactory) -> dict[str, Path]:
     return written
 
 
-def test_ruff_and_mypy_strict_find_nothing(nodes: dict[str, Path], tmp_path: Path) -> None:
+def test_ruff_and_mypy_strict_find_nothing(nodes: dict[str, Path], tmp_path: Path, mypy_cache: Path) -> None:
     for command in (["ruff", "check", "--isolated", "--no-cache"],
-                    ["mypy", "--strict", "--no-error-summary", "--cache-dir", str(tmp_path / "cache")]):
+                    ["mypy", "--strict", "--no-error-summary", "--cache-dir", str(mypy_cache)]):
         done = subprocess.run([sys.executable, "-m", *command, *map(str, nodes.values())], capture_output=True,
                               text=True, check=False, cwd=tmp_path)
         assert done.returncode == 0, done.stdout + done.stderr

@@ -23,6 +23,8 @@ from rosbags.typesys import Stores, get_types_from_msg, get_typestore
 from runtime_support import DATA, REPO
 from websockets.sync.client import connect
 
+pytestmark = pytest.mark.long  # started before the other files (tests/conftest.py)
+
 SUBPROTOCOL = "foxglove.sdk.v1"  # foxglove.websocket.v1 as foxglove-sdk names it (the SDK takes no other)
 MESSAGE_DATA = 0x01  # the opcode of a binary frame of message data
 

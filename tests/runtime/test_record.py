@@ -21,6 +21,8 @@ from runtime_support import CREATE, DATA, EXAMPLES
 from websockets.sync.client import connect
 
 CREATE2 = EXAMPLES / "create2.rdis"
+pytestmark = pytest.mark.long  # started before the other files (tests/conftest.py)
+
 CALLS = ("--call", "set_velocity", "linear=0.2", "angular=0",
          "--call", "set_velocity", "linear=-0.2", "angular=-0.4")
 
