@@ -207,6 +207,8 @@ def token_count(text: str, most: int) -> int:
 def _too_long(path: str, chunk: str, start: int) -> tuple[Span, str] | None:
     """Where and why a declaration is too long to parse: a line over the limit (a string
     literal is on one line), or more tokens than a declaration may have."""
+    if len(chunk) <= min(MAX_LINE_CHARS, MAX_DECL_TOKENS):  # a token and a line are a character or more
+        return None
     long_line = _LONG_LINE.search(chunk)
     if long_line is not None:
         return (Span(path, start + long_line.start(), start + long_line.end()),
