@@ -3,8 +3,9 @@
 The file is cut into top-level declarations at lines that begin with a
 declaration keyword in column 0, and each piece is parsed on its own. A syntax
 error therefore costs only the declaration it is in: the rest of the file is
-still parsed and checked. Lark builds a tree (iteratively); its depth is bounded
-before the recursive transformation into AST nodes.
+still parsed and checked. A declaration that parses cleanly is built into AST nodes as
+Lark's tables are run (rdisc.syntax.reduce); any other is parsed by Lark into a tree
+(iteratively), whose depth is bounded before the recursive transformation into AST nodes.
 """
 
 from __future__ import annotations
