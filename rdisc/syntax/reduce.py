@@ -119,6 +119,22 @@ def _rule(rule: Any, callback: Any) -> _Rule:
     return _Rule(rule.origin.name, size, keep, nones_after, single, name, name.startswith("_"), unit)
 
 
+class _Rows(dict[int, dict[str, tuple[Any, Any]]]):
+    """Lark's parse table, each state's row taken when the state is first met (most of the 765 are
+    not, in a small description), with each reduction's _Rule in place of Lark's Rule (whose
+    hash is a Python function)."""
+
+    def __init__(self, states: dict[int, dict[str, tuple[Any, Any]]], rules: dict[Any, _Rule]) -> None:
+        super().__init__()
+        self.states, self.rules = states, rules
+
+    def __missing__(self, state: int) -> dict[str, tuple[Any, Any]]:
+        rules = self.rules
+        row = {kind: (action, arg if action is Shift else rules[arg]) for kind, (action, arg) in self.states[state].items()}
+        self[state] = row
+        return row
+
+
 @dataclass(frozen=True)
 class Tables:
     """What the loop reads: Lark's parse table and lexers, and each rule's shaping."""
@@ -139,10 +155,7 @@ def tables(parser: lark.Lark) -> Tables | None:
         lalr = frontend.parser.parser
         table = lalr.parse_table
         rules = {rule: _rule(rule, callback) for rule, callback in lalr.callbacks.items()}
-        # Lark's table with each reduction's rule in place of Lark's Rule (whose hash is a Python function)
-        states = {state: {kind: (action, arg if action is Shift else rules[arg]) for kind, (action, arg) in actions.items()}
-                  for state, actions in table.states.items()}
-        return Tables(states, table.start_states, table.end_states, frontend.lexer)
+        return Tables(_Rows(table.states, rules), table.start_states, table.end_states, frontend.lexer)
     except (AttributeError, TypeError):
         return None
 
