@@ -76,16 +76,18 @@ def cold_start(runs: int) -> None:
         "rdisc check create.rdis": [*rdisc, "check", str(EXAMPLE)],
     }
     m = medians(commands, runs)
-    (bare, _), (check, check_cpu) = m["python -c pass"], m["rdisc check create.rdis"]
+    (bare, bare_cpu), (check, check_cpu) = m["python -c pass"], m["rdisc check create.rdis"]
     ratio = check / bare
     print(f"1. cold start, whole process, median of {runs} runs (after one warm-up run)")
     print(f"   rdisc: {' '.join(rdisc)}")
     for name, (ms, cpu) in m.items():
-        print(f"   {name:<26}{ms:8.1f} ms  {ms / bare:5.2f}x python -c pass  ({cpu:.1f} ms CPU)")
+        print(f"   {name:<26}{ms:8.1f} ms  {ms / bare:5.2f}x python -c pass  ({cpu:.1f} ms CPU, "
+              f"{cpu / bare_cpu:.2f}x its CPU)")
     target = f"target: within {COLD_TARGET_MS:.0f} ms"
     print(f"   {target:<36}{verdict(check <= COLD_TARGET_MS)} ({check:.1f} ms; {check_cpu:.1f} ms CPU)")
     target = f"target: within {COLD_TARGET_RATIO:.0f}x python -c pass"
-    print(f"   {target:<36}{verdict(ratio <= COLD_TARGET_RATIO)} ({ratio:.2f}x)")
+    print(f"   {target:<36}{verdict(ratio <= COLD_TARGET_RATIO)} ({ratio:.2f}x; in CPU time, which a busy "
+          f"machine stretches less: {check_cpu / bare_cpu:.2f}x)")
     phases()
 
 

@@ -34,7 +34,7 @@ class _Keywords:
         return token
 
 
-class _SharedScanner:
+class SharedScanner:
     """A state's scanner: the root lexer's match when the state accepts its terminal."""
 
     def __init__(self, root: Any, lexer: Any, terminals: list[Any]) -> None:
@@ -92,7 +92,7 @@ class _SharedLexer(lark.lexer.BasicLexer):
         if made is None:
             return super()._build_scanner()
         terminals, self.callback = made
-        return _SharedScanner(self.root.scanner, self, terminals)
+        return SharedScanner(self.root.scanner, self, terminals)
 
 
 def share_scanners(parser: lark.Lark) -> None:

@@ -3,8 +3,9 @@
 The file is cut into top-level declarations at lines that begin with a
 declaration keyword in column 0, and each piece is parsed on its own. A syntax
 error therefore costs only the declaration it is in: the rest of the file is
-still parsed and checked. Lark builds a tree (iteratively); its depth is bounded
-before the recursive transformation into AST nodes.
+still parsed and checked. A declaration that parses cleanly is built into AST nodes as
+Lark's tables are run (rdisc.syntax.reduce); any other is parsed by Lark into a tree
+(iteratively), whose depth is bounded before the recursive transformation into AST nodes.
 """
 
 from __future__ import annotations
@@ -207,6 +208,8 @@ def token_count(text: str, most: int) -> int:
 def _too_long(path: str, chunk: str, start: int) -> tuple[Span, str] | None:
     """Where and why a declaration is too long to parse: a line over the limit (a string
     literal is on one line), or more tokens than a declaration may have."""
+    if len(chunk) <= min(MAX_LINE_CHARS, MAX_DECL_TOKENS):  # a token and a line are a character or more
+        return None
     long_line = _LONG_LINE.search(chunk)
     if long_line is not None:
         return (Span(path, start + long_line.start(), start + long_line.end()),

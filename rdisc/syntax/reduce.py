@@ -34,6 +34,7 @@ from lark.parsers.lalr_analysis import Shift
 
 from rdisc.syntax import ast
 from rdisc.syntax.build import Builder, TooDeep, transformer_class
+from rdisc.syntax.lexing import SharedScanner
 
 
 class Retry(Exception):
@@ -71,6 +72,7 @@ class _Rule:
     single: bool  # a `?rule`: one child left is the value itself
     name: str  # the Builder's method, or the `_rule` spliced into its parent
     spliced: bool  # a `_rule`: its children go into its parent's
+    unit: bool  # a `?rule` of one symbol, kept: it passes its child on as it is (value, span, depth)
 
 
 _NONE = (None, None, False, 0)  # a placeholder of an optional part that is not there
@@ -112,7 +114,25 @@ def _rule(rule: Any, callback: Any) -> _Rule:
     name = rule.alias or rule.options.template_source or rule.origin.name
     if getattr(inner, "func", None) is not lark.Tree or tuple(getattr(inner, "args", ())) != (name,):
         raise TypeError(f"unexpected node builder of {rule}")
-    return _Rule(rule.origin.name, len(rule.expansion), keep, nones_after, single, name, name.startswith("_"))
+    size = len(rule.expansion)
+    unit = single and size == 1 and keep is None
+    return _Rule(rule.origin.name, size, keep, nones_after, single, name, name.startswith("_"), unit)
+
+
+class _Rows(dict[int, dict[str, tuple[Any, Any]]]):
+    """Lark's parse table, each state's row taken when the state is first met (most of the 765 are
+    not, in a small description), with each reduction's _Rule in place of Lark's Rule (whose
+    hash is a Python function)."""
+
+    def __init__(self, states: dict[int, dict[str, tuple[Any, Any]]], rules: dict[Any, _Rule]) -> None:
+        super().__init__()
+        self.states, self.rules = states, rules
+
+    def __missing__(self, state: int) -> dict[str, tuple[Any, Any]]:
+        rules = self.rules
+        row = {kind: (action, arg if action is Shift else rules[arg]) for kind, (action, arg) in self.states[state].items()}
+        self[state] = row
+        return row
 
 
 @dataclass(frozen=True)
@@ -135,10 +155,7 @@ def tables(parser: lark.Lark) -> Tables | None:
         lalr = frontend.parser.parser
         table = lalr.parse_table
         rules = {rule: _rule(rule, callback) for rule, callback in lalr.callbacks.items()}
-        # Lark's table with each reduction's rule in place of Lark's Rule (whose hash is a Python function)
-        states = {state: {kind: (action, arg if action is Shift else rules[arg]) for kind, (action, arg) in actions.items()}
-                  for state, actions in table.states.items()}
-        return Tables(states, table.start_states, table.end_states, frontend.lexer)
+        return Tables(_Rows(table.states, rules), table.start_states, table.end_states, frontend.lexer)
     except (AttributeError, TypeError):
         return None
 
@@ -149,17 +166,30 @@ def _subject(text: str) -> Any:
     return text if slice_type is None else slice_type.cast_from(text)
 
 
-_Scanner = tuple[Callable[[str, int], "tuple[str, str] | None"], frozenset[str], dict[str, Any], frozenset[str]]
+_Match = Callable[..., Any]
+_Scanner = tuple[_Match | None, "frozenset[str] | set[str] | None", _Match, frozenset[str], dict[str, Any],
+                 frozenset[str]]
 
 
 def _scanner(lexer: Any) -> _Scanner:
-    """What the loop reads of a state's lexer (Lark's BasicLexer): its scanner's match, the
-    terminals it skips, its callbacks (keywords read as names), the terminals that may hold a
-    newline. Retry for a lexer whose skipped terminals have callbacks (this loop drops them)."""
+    """What the loop reads of a state's lexer (Lark's BasicLexer): the compiled pattern's match
+    it may call itself (or None) and the terminals whose match it may take from it (None: all),
+    the scanner's match for the rest, the terminals it skips, its callbacks (keywords read as
+    names), the terminals that may hold a newline. Retry for a lexer whose skipped terminals
+    have callbacks (this loop drops them)."""
     scanner = lexer.scanner  # made now, with the callbacks
     if set(lexer.callback) & lexer.ignore_types:
         raise Retry
-    return scanner.match, lexer.ignore_types, lexer.callback, lexer.newline_types
+    pattern: _Match | None = None
+    allowed = None
+    patterns: list[Any]
+    if isinstance(scanner, SharedScanner):  # the root's pattern, where the state takes its terminal
+        patterns, allowed = getattr(scanner.root, "_mres", []), scanner.allowed_types
+    else:
+        patterns = getattr(scanner, "_mres", [])
+    if len(patterns) == 1:
+        pattern = patterns[0].match
+    return pattern, allowed, scanner.match, lexer.ignore_types, lexer.callback, lexer.newline_types
 
 
 def _method(transformer: type, name: str) -> Callable[..., Any]:
@@ -229,11 +259,15 @@ def _run(found: Tables, text: str, start: str, transformer: Any, most_depth: int
             scanner = scanners.get(state)
             if scanner is None:
                 scanner = scanners[state] = _scanner(lexers[state])
-            match, ignored, callbacks, newlines = scanner
-            matched = match(subject, pos)
-            if not matched:
-                raise Retry
-            read, kind = matched
+            pattern, allowed, match, ignored, callbacks, newlines = scanner
+            hit = pattern(text, pos) if pattern is not None else None  # Lark's Scanner.match, inline
+            if hit is not None and (allowed is None or hit.lastgroup in allowed):
+                read, kind = hit.group(0), hit.lastgroup
+            else:
+                matched = match(subject, pos)
+                if not matched:
+                    raise Retry
+                read, kind = matched
             begin, begin_line, column = pos, line, pos - line_start + 1
             pos += len(read)
             if kind in newlines:
@@ -259,6 +293,12 @@ def _run(found: Tables, text: str, start: str, transformer: Any, most_depth: int
                 stack.append((token, (token.start_pos, token.end_pos), False, 0))
                 break
             rule = action[1]
+            if rule.unit:  # a `?rule` over one symbol: its child's value, span and depth are its own
+                del state_stack[-1]
+                state_stack.append(states[state_stack[-1]][rule.origin][1])
+                if end and state_stack[-1] == end_state:
+                    return stack[-1][0]
+                continue
             size = rule.size
             if size:
                 entries = stack[-size:]
@@ -268,7 +308,8 @@ def _run(found: Tables, text: str, start: str, transformer: Any, most_depth: int
             span = None
             depth = 0
             for entry in entries:
-                depth = max(depth, entry[3])
+                if entry[3] > depth:  # noqa: PLR1730  # max() would be a call per child
+                    depth = entry[3]
                 if entry[1] is not None:
                     if span is None:
                         span = entry[1]
