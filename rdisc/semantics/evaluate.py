@@ -162,13 +162,26 @@ def _constant(expr: m.Expr) -> bool:
     return all(_constant(o) for o in m.operands(expr))
 
 
-def _test(expr: m.Expr, slots: Mapping[str, int] | None) -> tuple[Callable[[Any, Any], Any], str | int, Any] | None:
+_Test = tuple[Callable[[Any, Any], Any], str | int, Any]
+"""What compares, where the name is read in `local`, and the constant."""
+
+
+def _test(expr: m.Expr, slots: Mapping[str, int] | None) -> _Test | None:
     """A parameter or field compared with a constant (`linear == 0`), as what compares, where the
     name is read in `local` and the constant: a test a closure makes with no closure of its own."""
     if isinstance(expr, m.BinaryOp) and expr.op in _COMPARISONS:
         right = _folded(expr.right)
         if isinstance(expr.left, m.Var) and expr.left.scope is not m.Scope.STATE and isinstance(right, m.Const):
             return _operation(replace(expr, right=right)), _key(expr.left.name, slots), right.value
+    return None
+
+
+def _tests(expr: m.Expr, slots: Mapping[str, int] | None) -> tuple[str, _Test, _Test] | None:
+    """`and` or `or` of two tests (`_test`), as the operator and the two."""
+    if isinstance(expr, m.BinaryOp) and expr.op in ("and", "or"):
+        first, second = _test(expr.left, slots), _test(expr.right, slots)
+        if first is not None and second is not None:
+            return expr.op, first, second
     return None
 
 
@@ -202,6 +215,17 @@ def _if_else(cond: m.Expr, then: m.Expr, orelse: m.Expr, slots: Mapping[str, int
         if o is not None:
             return lambda s, loc, r: tf(s, loc, r) if f(loc[k], c) else ov
         return lambda s, loc, r: tf(s, loc, r) if f(loc[k], c) else of(s, loc, r)
+    both = _tests(cond, slots)
+    if both is not None and both[0] == "and":  # `linear == 0 and angular == 0`: both made here
+        _, (f, j, c), (g, k, d) = both
+        if t is not None:
+            return lambda s, loc, r: tv if f(loc[j], c) and g(loc[k], d) else of(s, loc, r)
+        return lambda s, loc, r: tf(s, loc, r) if f(loc[j], c) and g(loc[k], d) else of(s, loc, r)
+    if both is not None:
+        _, (f, j, c), (g, k, d) = both
+        if t is not None:
+            return lambda s, loc, r: tv if f(loc[j], c) or g(loc[k], d) else of(s, loc, r)
+        return lambda s, loc, r: tf(s, loc, r) if f(loc[j], c) or g(loc[k], d) else of(s, loc, r)
     holds = prepare(cond, slots)
     if t is not None and o is not None:
         return lambda s, loc, r: tv if holds(s, loc, r) else ov
@@ -228,6 +252,12 @@ def _call(expr: m.FuncCall, slots: Mapping[str, int] | None) -> Prepared:
             if isinstance(args[0], m.Var) and args[0].scope is not m.Scope.STATE:
                 key = _key(args[0].name, slots)
                 return lambda s, loc, r: function(loc[key], low, high)
+            match _folded(args[0]):
+                case m.BinaryOp(left=m.Var(name=one, scope=scope), right=m.Var(name=other, scope=other_scope)) as e if (
+                    e.op not in ("and", "or") and m.Scope.STATE not in (scope, other_scope)
+                ):  # of two parameters or fields (`clamp(linear / angular, -2.0, 2.0)`), read here
+                    binary, j, k = _operation(e), _key(one, slots), _key(other, slots)
+                    return lambda s, loc, r: function(binary(loc[j], loc[k]), low, high)
             return lambda s, loc, r: function(first(s, loc, r), low, high)
         return lambda s, loc, r: function(first(s, loc, r), *constants)
     prepared = tuple(prepare(a, slots) for a in args)
