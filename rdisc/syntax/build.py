@@ -239,7 +239,7 @@ class Builder:
 
 
 _EXPRESSIONS = (ast.IntLit, ast.FloatLit, ast.StrLit, ast.BytesLit, ast.BoolLit, ast.Ref, ast.Index, ast.ArrayLit,
-                ast.Unary, ast.BinOp, ast.Conditional, ast.CallExpr, ast.Member)
+                ast.Unary, ast.BinOp, ast.Conditional, ast.CallExpr, ast.Member, ast.MethodCall)
 
 
 @lru_cache(maxsize=1)

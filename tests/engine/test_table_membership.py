@@ -104,3 +104,20 @@ def test_it_goes_through_json_and_the_printer(tmp_path: Path) -> None:
     assert imported is not None and 'status = HEALTH.get(out[0], "unknown")' in print_module(imported)
     assert print_module(parse("t.rdis", "const A = (1 in T) == (2 in T)\n", Diagnostics())) == \
         "const A = (1 in T) == (2 in T)\n"
+
+
+@pytest.mark.parametrize("kind", ["runtime", "driver"])
+def test_a_request_value_looked_up_with_a_default_reads_back_from_json(kind: str, tmp_path: Path) -> None:
+    text = """\
+robot gears { author "tests" }
+const SPEED = { 1: 10, 2: 20 }
+connection link: serial { baud 9600 }
+primitive go(gear: int) on link pack "B?" (SPEED.get(gear, 0), gear in SPEED)
+"""
+    compilation, built = through_json(text, tmp_path, "gears")  # a whole JSON value that is a `.get` call
+    assert not compilation.diagnostics.items and '"<SPEED.get(gear, 0)>"' in built and '"<gear in SPEED>"' in built
+    port = ScriptedPort()
+    with implementation_of(kind, text, tmp_path, "gears").connect(port, threads=False) as robot:
+        robot.call_primitive("go", 2)
+        robot.call_primitive("go", 3)
+        assert bytes(port.written) == b"\x14\x01\x00\x00"

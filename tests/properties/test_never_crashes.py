@@ -236,11 +236,13 @@ def test_truncated_at_a_sample_of_lengths(workdir: Path, seed: int) -> None:
 # -- expressions in place of literals: checked, and round trips when valid ---------------
 
 ATOMS = ["0", "1", "-1", "2.5", "1e3", "0x10", "True", "False", '"a"', '""', "out", "out[0]", "out[1]",
-         "velocity", "linear", "bumperStates", "x", "1e308", "255", "256", "-32768", "32768", "0.0", "-0.0"]
+         "velocity", "linear", "bumperStates", "x", "1e308", "255", "256", "-32768", "32768", "0.0", "-0.0",
+         'b"\\x01\\x0f"', '"0A"', "out[0][1]", "T", "T.get(1, 2)", "T.keys()"]
 OPERATORS = ["+", "-", "*", "/", "//", "%", "**", "<<", ">>", "&", "|", "^", "==", "!=", "<", "<=", ">", ">=",
-             "and", "or"]
+             "and", "or", "in"]
 FUNCTIONS = ["abs", "min", "max", "round", "int", "float", "bool", "str", "clamp", "sqrt", "sin", "cos", "atan2",
-             "hypot", "frobnicate"]
+             "hypot", "frobnicate", "int_le", "int_be", "f32le", "from_f64be", "nibbles", "from_nibbles", "upper",
+             "unhex"]
 expressions = st.recursive(
     st.sampled_from(ATOMS),
     lambda e: st.one_of(
