@@ -231,7 +231,7 @@ class Exchange:
             if self._closed:
                 self._refuse(plan)
             io.reset_input_buffer()
-            port.input.clear()
+            port.input.pending.clear()  # (the reader's `clear`: no byte put back is the reply's)
             port.write(request)
             if watched:
                 self._happened("write", plan.connection, request)
@@ -254,7 +254,8 @@ class Exchange:
                     self._show()
         if not data:
             raise RdisTimeout(f"{plan.name}: no reply within {plan.timeout or self.timeout:g} s")
-        reply = decoder.decode(plan.name, data)
+        reply = (decoder.struct.unpack(data) if decoder.plain and len(data) == decoder.size
+                 else decoder.decode(plan.name, data))
         if plan.expect is not None:
             self._met(plan, local, reply)
         if plan.actions is not None:

@@ -294,7 +294,15 @@ def _composed_write(plan: Primitive) -> Request:
         except Exception:  # noqa: BLE001 - the general way says what is wrong
             return None
 
-    return request
+    def parameterless(state: StateValues, args: Args) -> bytes | None:  # no parameter to test
+        if args:
+            return None
+        try:
+            return pack(*values_of(state, args))
+        except Exception:  # noqa: BLE001 - the general way says what is wrong
+            return None
+
+    return parameterless if not kinds and use is None else request
 
 
 @dataclass(frozen=True, slots=True)

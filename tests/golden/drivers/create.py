@@ -1255,8 +1255,8 @@ class Unpack:
     entry is read to those bytes (Firmata's sysex end), which are dropped. The strings at
     `padded` (`NZ`) end at their first NUL byte: the padding is not text."""
 
-    __slots__ = ("bits", "groups", "padded", "rest", "size", "splitters", "strings", "struct", "until", "varying",
-                 "varying_sizes")
+    __slots__ = ("bits", "groups", "padded", "plain", "rest", "size", "splitters", "strings", "struct", "until",
+                 "varying", "varying_sizes")
 
     def __init__(self, fixed: str, strings: tuple[int, ...] = (), rest: bool = False,
                  groups: tuple[Group, ...] = (), varying: Varying | None = None, bits: tuple[Split, ...] = (),
@@ -1274,6 +1274,9 @@ class Unpack:
         self.bits = bits
         self.splitters = _splitters(bits)
         self.until = until
+        # Its values are the struct's unpack of exactly `size` bytes, as they come (a plain exchange's
+        # reply is unpacked so at once; anything else, and any error, is `decode`'s).
+        self.plain = not (strings or rest or groups or varying or bits or padded or until)
 
     def decode(self, owner: str, data: bytes) -> tuple[Value, ...]:
         values = self._decode(owner, data)
@@ -1631,7 +1634,15 @@ def _composed_write(plan: Primitive) -> Request:
         except Exception:  # noqa: BLE001 - the general way says what is wrong
             return None
 
-    return request
+    def parameterless(state: StateValues, args: Args) -> bytes | None:  # no parameter to test
+        if args:
+            return None
+        try:
+            return pack(*values_of(state, args))
+        except Exception:  # noqa: BLE001 - the general way says what is wrong
+            return None
+
+    return parameterless if not kinds and use is None else request
 
 
 @dataclass(frozen=True, slots=True)
@@ -2753,7 +2764,7 @@ class Exchange:
             if self._closed:
                 self._refuse(plan)
             io.reset_input_buffer()
-            port.input.clear()
+            port.input.pending.clear()  # (the reader's `clear`: no byte put back is the reply's)
             port.write(request)
             if watched:
                 self._happened("write", plan.connection, request)
@@ -2776,7 +2787,8 @@ class Exchange:
                     self._show()
         if not data:
             raise RdisTimeout(f"{plan.name}: no reply within {plan.timeout or self.timeout:g} s")
-        reply = decoder.decode(plan.name, data)
+        reply = (decoder.struct.unpack(data) if decoder.plain and len(data) == decoder.size
+                 else decoder.decode(plan.name, data))
         if plan.expect is not None:
             self._met(plan, local, reply)
         if plan.actions is not None:
