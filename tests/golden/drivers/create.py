@@ -1590,10 +1590,12 @@ def sent_at_once(*, encoder: Pack | Format | None, replies: bool, acts: bool) ->
 
 def _asked_at_once(plan: Primitive) -> bool:
     """Whether a primitive is a plain exchange (`Exchange._ask`): its request one plain struct pack
-    with no frame and no modem line, its reply a fixed number of bytes with no error reply in
-    their place, read in one try (no `retry`). Such a reply is read from the port in one read."""
+    of some bytes (a listener writes none, and keeps what has arrived) with no frame and no modem
+    line, its reply a fixed number of bytes with no error reply in their place, read in one try
+    (no `retry`). Such a reply is read from the port in one read."""
     reply = plan.reply
-    return (_plain(plan.encoder) and plan.frame is None and plan.lines is None and not plan.retries
+    return (_plain(plan.encoder) and isinstance(plan.encoder, Pack) and plan.encoder.struct.size > 0
+            and plan.frame is None and plan.lines is None and not plan.retries
             and isinstance(reply, FixedReply) and reply.error is None and reply.decoder.size > 0
             and reply.decoder.until is None)
 
