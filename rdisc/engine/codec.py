@@ -196,8 +196,8 @@ class Unpack:
     entry is read to those bytes (Firmata's sysex end), which are dropped. The strings at
     `padded` (`NZ`) end at their first NUL byte: the padding is not text."""
 
-    __slots__ = ("bits", "groups", "padded", "rest", "size", "splitters", "strings", "struct", "until", "varying",
-                 "varying_sizes")
+    __slots__ = ("bits", "groups", "padded", "plain", "rest", "size", "splitters", "strings", "struct", "until",
+                 "varying", "varying_sizes")
 
     def __init__(self, fixed: str, strings: tuple[int, ...] = (), rest: bool = False,
                  groups: tuple[Group, ...] = (), varying: Varying | None = None, bits: tuple[Split, ...] = (),
@@ -215,6 +215,9 @@ class Unpack:
         self.bits = bits
         self.splitters = _splitters(bits)
         self.until = until
+        # Its values are the struct's unpack of exactly `size` bytes, as they come (a plain exchange's
+        # reply is unpacked so at once; anything else, and any error, is `decode`'s).
+        self.plain = not (strings or rest or groups or varying or bits or padded or until)
 
     def decode(self, owner: str, data: bytes) -> tuple[Value, ...]:
         values = self._decode(owner, data)

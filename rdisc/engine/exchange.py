@@ -42,7 +42,7 @@ from rdisc.engine.plans import (
     TaggedReply,
     TaggedStream,
 )
-from rdisc.engine.ports import Port, Simulator, _Link, _write_timed_out
+from rdisc.engine.ports import Port, Simulator, _Link, _Port, _write_timed_out
 from rdisc.engine.values import (
     Args,
     ErrorCallback,
@@ -76,6 +76,7 @@ class Exchange:
     _error_callbacks: list[ErrorCallback]
     _io_callbacks: list[IoCallback]
     _trace_callbacks: list[TraceCallback]
+    _watched: bool  # an I/O or trace callback is registered: the events are queued and shown
     # What crossed the wire (and each reply skipped), stamped and queued as it happens, under the
     # port's lock: the callbacks are shown it in that order, once the port is free (`_show`).
     _events: deque[tuple[float, str, str, bytes]]
@@ -83,6 +84,7 @@ class Exchange:
     _clock: Callable[[], float]
     _run_callbacks: list[Callable[[str, str, str], object]]
     _links: dict[str, _Link]
+    _ports: dict[str, _Port]  # each connection's port, for a plain write to find at once
     # Closing (`Robot.close`): from the moment it begins nothing is written but by the thread that
     # closes (`_closer`: the terminate hooks), and once they are done nothing at all (`_closer` None).
     _closed: bool
@@ -91,25 +93,49 @@ class Exchange:
 
     # ---- writing requests, reading replies, running post-actions ------------------------------------
 
-    def _write(self, plan: Primitive, request: bytes, levels: dict[str, Value] | None = None) -> None:
-        """Under the port's lock set the modem lines, if any, then write a request that has no
-        reply (if the primitive has one); then show the callbacks."""
+    def _write(self, plan: Primitive, request: bytes) -> None:
+        """Under the port's lock write a request that has no reply and sets no modem line (every
+        plain command's path: the port and its lock found once, nothing allocated); then show the
+        callbacks. `_write_lines` is the way of one that sets lines or writes nothing."""
+        try:
+            port = self._ports[plan.connection]
+        except KeyError:
+            raise RdisConnectionError(f"{plan.connection}: not open") from None
+        lock = port.lock
+        lock.acquire()  # acquire/release rather than `with`: cheaper, and this is every command's path
+        try:
+            if self._closed:  # under the lock: a write that got it before the terminate hooks comes before them
+                self._refuse(plan)
+            port.write(request)
+            if self._watched:
+                self._happened("write", plan.connection, request)
+        except RdisError:
+            raise
+        except Exception as err:  # whatever the port raises, it failed
+            raise self._port_error(plan, err) from err
+        finally:
+            lock.release()
+            if self._watched:
+                self._show()
+
+    def _write_lines(self, plan: Primitive, request: bytes, levels: dict[str, Value] | None) -> None:
+        """`_write` of a primitive with no reply that sets modem lines first, or writes nothing
+        (no encoder: only lines)."""
         link = self._links.get(plan.connection)
         if link is None:
             raise RdisConnectionError(f"{plan.connection}: not open")
         port = link.port
-        lock = port.lock
-        watched = self._io_callbacks or self._trace_callbacks  # (a list: its truth is the answer)
-        lock.acquire()  # acquire/release rather than `with`: cheaper, and this is every command's path
+        watched = self._watched
+        port.lock.acquire()
         try:
-            if self._closed:  # under the lock: a write that got it before the terminate hooks comes before them
+            if self._closed:
                 self._refuse(plan)
             if levels is not None:
                 self._set_lines(plan, port.io, levels)
                 if watched:
                     self._happened("lines", plan.connection, _lines_text(levels))
             if plan.encoder is not None:
-                port.io.write(request)
+                port.write(request)
                 if watched:
                     self._happened("write", plan.connection, request)
         except RdisError:
@@ -117,7 +143,7 @@ class Exchange:
         except Exception as err:  # whatever the port raises, it failed
             raise self._port_error(plan, err) from err
         finally:
-            lock.release()
+            port.lock.release()
             if watched:
                 self._show()
 
@@ -168,7 +194,10 @@ class Exchange:
             return
         request, fields, levels = self._request(plan, values, local)
         if isinstance(plan.reply, NoReply):
-            self._write(plan, request, levels)
+            if levels is None and plan.encoder is not None:
+                self._write(plan, request)
+            else:
+                self._write_lines(plan, request, levels)
             if plan.actions is not None:
                 self._assign(plan, local, ())
             return
@@ -182,6 +211,55 @@ class Exchange:
                     if tries == 1:
                         raise
                     raise type(err)(f"{err} ({tries} tries)") from None
+
+    def _ask(self, plan: Primitive, request: bytes, local: Args) -> None:
+        """A plain exchange (`Primitive.asked`) in one step: what `_exchange` does for it, with the
+        reply's known size read from the port in one read and decoded by its precompiled struct.
+        The callbacks see what they see of any exchange, and a failure is the same typed error."""
+        try:
+            port = self._ports[plan.connection]
+        except KeyError:
+            raise RdisConnectionError(f"{plan.connection}: not open") from None
+        io = port.io
+        lock = port.lock
+        shape: FixedReply = plan.reply  # type: ignore[assignment]  # (`_asked_at_once`)
+        decoder = shape.decoder
+        watched = self._watched
+        data = b""
+        lock.acquire()
+        try:
+            if self._closed:
+                self._refuse(plan)
+            io.reset_input_buffer()
+            port.input.pending.clear()  # (the reader's `clear`: no byte put back is the reply's)
+            port.write(request)
+            if watched:
+                self._happened("write", plan.connection, request)
+            if plan.timeout is not None:
+                io.timeout = plan.timeout
+            data = io.read(decoder.size)
+        except RdisError:
+            raise
+        except Exception as err:  # whatever the port raises, it failed
+            raise self._port_error(plan, err) from err
+        finally:
+            try:
+                if data and watched:  # stamped when its last byte came
+                    self._happened("read", plan.connection, data)
+                if plan.timeout is not None:
+                    io.timeout = self.timeout
+            finally:
+                lock.release()
+                if watched:
+                    self._show()
+        if not data:
+            raise RdisTimeout(f"{plan.name}: no reply within {plan.timeout or self.timeout:g} s")
+        reply = (decoder.struct.unpack(data) if decoder.plain and len(data) == decoder.size
+                 else decoder.decode(plan.name, data))
+        if plan.expect is not None:
+            self._met(plan, local, reply)
+        if plan.actions is not None:
+            self._assign(plan, local, reply)
 
     def _exchange_once(self, plan: Primitive, request: bytes, fields: list[Any], levels: dict[str, Value] | None,
                        local: Args) -> None:
@@ -197,7 +275,7 @@ class Exchange:
         wait = plan.timeout or self.timeout
         parts: list[_ReplyPart] = []
         failed: BaseException | None = None
-        watched = bool(self._io_callbacks or self._trace_callbacks)
+        watched = self._watched
         lock.acquire()
         try:
             if self._closed:
@@ -468,7 +546,7 @@ class Exchange:
             self._refuse(plan)
         request, _fields, levels = self._request(plan, values, local)
         sim.exchange(plan, local)
-        if self._io_callbacks or self._trace_callbacks:
+        if self._watched:
             if levels is not None:
                 self._happened("lines", plan.connection, _lines_text(levels))
             if request:
@@ -638,7 +716,20 @@ class Exchange:
 
     def _assign(self, plan: Primitive, local: Args, reply: Sequence[Any]) -> None:
         """The post-actions: all values computed from one snapshot, then published together."""
-        self._assign_each([(plan, local, reply)])
+        lock = self._state_lock
+        lock.acquire()
+        try:
+            state = self._state
+            try:
+                changes = plan.actions(state, local, reply)  # type: ignore[misc]  # the caller's test
+            except EVAL_ERRORS as err:
+                raise RdisValueError(f"{plan.name}: {err}") from None
+            if plan.checked:
+                _check_widths(plan, changes)
+            self._read_ns = time.time_ns()  # the reply just read: an output's `read_ns`
+            self._state = {**state, **changes}
+        finally:
+            lock.release()
 
     def _assign_each(self, parts: Sequence[tuple[Primitive, Args, Sequence[Any]]]) -> None:
         """The post-actions of each part in turn (sub-payloads, records), each part's computed from
@@ -651,11 +742,7 @@ class Exchange:
                     changes = plan.actions(state, local, reply)
                 except EVAL_ERRORS as err:
                     raise RdisValueError(f"{plan.name}: {err}") from None
-                for name in plan.checked:
-                    value = changes[name]
-                    if type(value) is int and not -MAX_INT <= value <= MAX_INT:
-                        raise RdisValueError(f"{plan.name}: {name} would be a {value.bit_length()}-bit integer; "
-                                             "integers are limited to 64 bits and a sign")
+                _check_widths(plan, changes)
                 state = {**state, **changes}
             self._read_ns = time.time_ns()  # the reply just read: an output's `read_ns`
             self._state = state
@@ -726,6 +813,15 @@ class Exchange:
                     callback(error)
                 except Exception:  # noqa: BLE001, S110 - the contract: an error callback's failure is ignored
                     pass
+
+
+def _check_widths(plan: Primitive, changes: Mapping[str, Value]) -> None:
+    """The post-actions' values that may be too wide (`Primitive.checked`) held to 64 bits and a sign."""
+    for name in plan.checked:
+        value = changes[name]
+        if type(value) is int and not -MAX_INT <= value <= MAX_INT:
+            raise RdisValueError(f"{plan.name}: {name} would be a {value.bit_length()}-bit integer; "
+                                 "integers are limited to 64 bits and a sign")
 
 
 def _entry_decoder(entry: Primitive) -> Unpack | Match | None:

@@ -202,6 +202,7 @@ class Primitive:
     lines: Callable[[StateValues, Args], dict[str, Value]] | None = None  # "dtr"/"rts": levels, set before the request
     floats: tuple[int, ...] = field(init=False)
     ranged: tuple[int, ...] = field(init=False)
+    asked: Request | None = field(init=False)  # the request of a plain exchange (`_asked_at_once`), in one step
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "floats", _floats(self.params))
@@ -210,6 +211,7 @@ class Primitive:
             object.__setattr__(self, "request", None)
         elif self.request is None:
             object.__setattr__(self, "request", _composed_write(self))
+        object.__setattr__(self, "asked", _composed_write(self) if _asked_at_once(self) else None)
 
 
 def _plain(encoder: Pack | Format | None) -> bool:
@@ -232,6 +234,18 @@ def sent_at_once(*, encoder: Pack | Format | None, replies: bool, acts: bool) ->
     return _plain(encoder) and not replies and not acts
 
 
+def _asked_at_once(plan: Primitive) -> bool:
+    """Whether a primitive is a plain exchange (`Exchange._ask`): its request one plain struct pack
+    of some bytes (a listener writes none, and keeps what has arrived) with no frame and no modem
+    line, its reply a fixed number of bytes with no error reply in their place, read in one try
+    (no `retry`). Such a reply is read from the port in one read."""
+    reply = plan.reply
+    return (_plain(plan.encoder) and isinstance(plan.encoder, Pack) and plan.encoder.struct.size > 0
+            and plan.frame is None and plan.lines is None and not plan.retries
+            and isinstance(reply, FixedReply) and reply.error is None and reply.decoder.size > 0
+            and reply.decoder.until is None)
+
+
 def plainly_given(args: Args, kinds: tuple[type, ...], bounds: tuple[tuple[int, Any, Any], ...]) -> bool:
     """Whether a one-step request may take these values: one of each parameter's own type, those
     with a range within it, bytes by their length (anything else goes the general way, which says
@@ -249,8 +263,8 @@ def plainly_given(args: Args, kinds: tuple[type, ...], bounds: tuple[tuple[int, 
 
 
 def _composed_write(plan: Primitive) -> Request:
-    """The general way of a primitive only written (`Robot._primitive`), as one function of its
-    parameters' values. Like `Input.request` it returns None for anything but the parameters'
+    """The general way of a primitive only written (`Robot._primitive`), or of a plain exchange's
+    request (`Primitive.asked`), as one function of its parameters' values. Like `Input.request` it returns None for anything but the parameters'
     own types in their ranges, and on any error: the general way then says what is wrong."""
     kinds = tuple(p.kind for p in plan.params)
     bounds = tuple((i, plan.params[i].low, plan.params[i].high) for i in plan.ranged)
@@ -268,7 +282,15 @@ def _composed_write(plan: Primitive) -> Request:
         except Exception:  # noqa: BLE001 - the general way says what is wrong
             return None
 
-    return request
+    def parameterless(state: StateValues, args: Args) -> bytes | None:  # no parameter to test
+        if args:
+            return None
+        try:
+            return pack(*values_of(state, args))
+        except Exception:  # noqa: BLE001 - the general way says what is wrong
+            return None
+
+    return parameterless if not kinds and use is None else request
 
 
 @dataclass(frozen=True, slots=True)

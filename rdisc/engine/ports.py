@@ -65,10 +65,11 @@ class Simulator(Protocol):
 class _Port:
     """One open port, shared by the connections given the same one, with its exchange lock."""
 
-    __slots__ = ("input", "io", "lock", "owned")
+    __slots__ = ("input", "io", "lock", "owned", "write")
 
     def __init__(self, io: Port, owned: bool) -> None:
         self.io = io
+        self.write = io.write  # bound once: a plain command's one call of the port
         self.input = Incoming(io)  # what replies are read from: bytes put back, bytes taken, the deadline
         self.owned = owned  # opened by the robot, so closed by it too
         # Re-entrant: a signal landing between a command's `acquire` and its `try` leaves the lock

@@ -121,10 +121,12 @@ class Robot(Exchange):
         self._error_callbacks: list[ErrorCallback] = []
         self._io_callbacks: list[IoCallback] = []
         self._trace_callbacks: list[TraceCallback] = []
+        self._watched = False  # an I/O or trace callback is registered (they are never removed)
         self._events: deque[tuple[float, str, str, bytes]] = deque()
         self._events_lock = threading.Lock()
         self._run_callbacks: list[Callable[[str, str, str], object]] = []  # a Recorder's: what a thread runs
         self._links: dict[str, _Link] = {}
+        self._ports: dict[str, _Port] = {}
         self._workers: list[_Worker] = []
         self._close_lock = threading.Lock()
         self._calls = {kind: Calls(self, kind) for kind in ("input", "interface", "primitive")}
@@ -159,6 +161,7 @@ class Robot(Exchange):
         modem lines a primitive set, before its write."""
         with self._callback_lock:
             self._io_callbacks.append(callback)
+            self._watched = True
         return callback
 
     def on_trace(self, callback: TraceCallback) -> TraceCallback:
@@ -169,6 +172,7 @@ class Robot(Exchange):
         or a simulation's time). `rdisc run --trace` prints these."""
         with self._callback_lock:
             self._trace_callbacks.append(callback)
+            self._watched = True
         return callback
 
     # ---- what the host can see and call -------------------------------------------------------------
@@ -395,6 +399,7 @@ class Robot(Exchange):
                 io = _open_port(connection, os.fspath(where), self.timeout, baud) if by_name else where
                 opened[key] = _Port(io, owned=by_name)
             self._links[name] = _Link(connections[name], opened[key])
+            self._ports[name] = opened[key]
 
     # ---- running the plans --------------------------------------------------------------------------
 
@@ -442,6 +447,12 @@ class Robot(Exchange):
             data = request(self._state, values)
             if data is not None:
                 self._write(plan, data)
+                return
+        asked = plan.asked
+        if asked is not None and self._direct:  # a plain exchange: a sensor's path
+            data = asked(self._state, values)
+            if data is not None:
+                self._ask(plan, data, values)
                 return
         if not self._running:
             raise self._not_running()
@@ -534,6 +545,12 @@ class Robot(Exchange):
             data = request(self._state, args)
             if data is not None:
                 self._write(plan, data)
+                return
+        asked = plan.asked
+        if asked is not None:  # a plain exchange
+            data = asked(self._state, args)
+            if data is not None:
+                self._ask(plan, data, args)
                 return
         self._primitive_in_full(plan, args)
 

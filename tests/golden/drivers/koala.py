@@ -1289,8 +1289,8 @@ class Unpack:
     entry is read to those bytes (Firmata's sysex end), which are dropped. The strings at
     `padded` (`NZ`) end at their first NUL byte: the padding is not text."""
 
-    __slots__ = ("bits", "groups", "padded", "rest", "size", "splitters", "strings", "struct", "until", "varying",
-                 "varying_sizes")
+    __slots__ = ("bits", "groups", "padded", "plain", "rest", "size", "splitters", "strings", "struct", "until",
+                 "varying", "varying_sizes")
 
     def __init__(self, fixed: str, strings: tuple[int, ...] = (), rest: bool = False,
                  groups: tuple[Group, ...] = (), varying: Varying | None = None, bits: tuple[Split, ...] = (),
@@ -1308,6 +1308,9 @@ class Unpack:
         self.bits = bits
         self.splitters = _splitters(bits)
         self.until = until
+        # Its values are the struct's unpack of exactly `size` bytes, as they come (a plain exchange's
+        # reply is unpacked so at once; anything else, and any error, is `decode`'s).
+        self.plain = not (strings or rest or groups or varying or bits or padded or until)
 
     def decode(self, owner: str, data: bytes) -> tuple[Value, ...]:
         values = self._decode(owner, data)
@@ -1878,6 +1881,7 @@ class Primitive:
     lines: Callable[[StateValues, Args], dict[str, Value]] | None = None  # "dtr"/"rts": levels, set before the request
     floats: tuple[int, ...] = field(init=False)
     ranged: tuple[int, ...] = field(init=False)
+    asked: Request | None = field(init=False)  # the request of a plain exchange (`_asked_at_once`), in one step
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "floats", _floats(self.params))
@@ -1886,6 +1890,7 @@ class Primitive:
             object.__setattr__(self, "request", None)
         elif self.request is None:
             object.__setattr__(self, "request", _composed_write(self))
+        object.__setattr__(self, "asked", _composed_write(self) if _asked_at_once(self) else None)
 
 
 def _plain(encoder: Pack | Format | None) -> bool:
@@ -1908,6 +1913,18 @@ def sent_at_once(*, encoder: Pack | Format | None, replies: bool, acts: bool) ->
     return _plain(encoder) and not replies and not acts
 
 
+def _asked_at_once(plan: Primitive) -> bool:
+    """Whether a primitive is a plain exchange (`Exchange._ask`): its request one plain struct pack
+    of some bytes (a listener writes none, and keeps what has arrived) with no frame and no modem
+    line, its reply a fixed number of bytes with no error reply in their place, read in one try
+    (no `retry`). Such a reply is read from the port in one read."""
+    reply = plan.reply
+    return (_plain(plan.encoder) and isinstance(plan.encoder, Pack) and plan.encoder.struct.size > 0
+            and plan.frame is None and plan.lines is None and not plan.retries
+            and isinstance(reply, FixedReply) and reply.error is None and reply.decoder.size > 0
+            and reply.decoder.until is None)
+
+
 def plainly_given(args: Args, kinds: tuple[type, ...], bounds: tuple[tuple[int, Any, Any], ...]) -> bool:
     """Whether a one-step request may take these values: one of each parameter's own type, those
     with a range within it, bytes by their length (anything else goes the general way, which says
@@ -1925,8 +1942,8 @@ def plainly_given(args: Args, kinds: tuple[type, ...], bounds: tuple[tuple[int, 
 
 
 def _composed_write(plan: Primitive) -> Request:
-    """The general way of a primitive only written (`Robot._primitive`), as one function of its
-    parameters' values. Like `Input.request` it returns None for anything but the parameters'
+    """The general way of a primitive only written (`Robot._primitive`), or of a plain exchange's
+    request (`Primitive.asked`), as one function of its parameters' values. Like `Input.request` it returns None for anything but the parameters'
     own types in their ranges, and on any error: the general way then says what is wrong."""
     kinds = tuple(p.kind for p in plan.params)
     bounds = tuple((i, plan.params[i].low, plan.params[i].high) for i in plan.ranged)
@@ -1944,7 +1961,15 @@ def _composed_write(plan: Primitive) -> Request:
         except Exception:  # noqa: BLE001 - the general way says what is wrong
             return None
 
-    return request
+    def parameterless(state: StateValues, args: Args) -> bytes | None:  # no parameter to test
+        if args:
+            return None
+        try:
+            return pack(*values_of(state, args))
+        except Exception:  # noqa: BLE001 - the general way says what is wrong
+            return None
+
+    return parameterless if not kinds and use is None else request
 
 
 @dataclass(frozen=True, slots=True)
@@ -2420,10 +2445,11 @@ class Simulator(Protocol):
 class _Port:
     """One open port, shared by the connections given the same one, with its exchange lock."""
 
-    __slots__ = ("input", "io", "lock", "owned")
+    __slots__ = ("input", "io", "lock", "owned", "write")
 
     def __init__(self, io: Port, owned: bool) -> None:
         self.io = io
+        self.write = io.write  # bound once: a plain command's one call of the port
         self.input = Incoming(io)  # what replies are read from: bytes put back, bytes taken, the deadline
         self.owned = owned  # opened by the robot, so closed by it too
         # Re-entrant: a signal landing between a command's `acquire` and its `try` leaves the lock
@@ -2599,6 +2625,7 @@ class Exchange:
     _error_callbacks: list[ErrorCallback]
     _io_callbacks: list[IoCallback]
     _trace_callbacks: list[TraceCallback]
+    _watched: bool  # an I/O or trace callback is registered: the events are queued and shown
     # What crossed the wire (and each reply skipped), stamped and queued as it happens, under the
     # port's lock: the callbacks are shown it in that order, once the port is free (`_show`).
     _events: deque[tuple[float, str, str, bytes]]
@@ -2606,6 +2633,7 @@ class Exchange:
     _clock: Callable[[], float]
     _run_callbacks: list[Callable[[str, str, str], object]]
     _links: dict[str, _Link]
+    _ports: dict[str, _Port]  # each connection's port, for a plain write to find at once
     # Closing (`Robot.close`): from the moment it begins nothing is written but by the thread that
     # closes (`_closer`: the terminate hooks), and once they are done nothing at all (`_closer` None).
     _closed: bool
@@ -2614,25 +2642,49 @@ class Exchange:
 
     # ---- writing requests, reading replies, running post-actions ------------------------------------
 
-    def _write(self, plan: Primitive, request: bytes, levels: dict[str, Value] | None = None) -> None:
-        """Under the port's lock set the modem lines, if any, then write a request that has no
-        reply (if the primitive has one); then show the callbacks."""
+    def _write(self, plan: Primitive, request: bytes) -> None:
+        """Under the port's lock write a request that has no reply and sets no modem line (every
+        plain command's path: the port and its lock found once, nothing allocated); then show the
+        callbacks. `_write_lines` is the way of one that sets lines or writes nothing."""
+        try:
+            port = self._ports[plan.connection]
+        except KeyError:
+            raise RdisConnectionError(f"{plan.connection}: not open") from None
+        lock = port.lock
+        lock.acquire()  # acquire/release rather than `with`: cheaper, and this is every command's path
+        try:
+            if self._closed:  # under the lock: a write that got it before the terminate hooks comes before them
+                self._refuse(plan)
+            port.write(request)
+            if self._watched:
+                self._happened("write", plan.connection, request)
+        except RdisError:
+            raise
+        except Exception as err:  # whatever the port raises, it failed
+            raise self._port_error(plan, err) from err
+        finally:
+            lock.release()
+            if self._watched:
+                self._show()
+
+    def _write_lines(self, plan: Primitive, request: bytes, levels: dict[str, Value] | None) -> None:
+        """`_write` of a primitive with no reply that sets modem lines first, or writes nothing
+        (no encoder: only lines)."""
         link = self._links.get(plan.connection)
         if link is None:
             raise RdisConnectionError(f"{plan.connection}: not open")
         port = link.port
-        lock = port.lock
-        watched = self._io_callbacks or self._trace_callbacks  # (a list: its truth is the answer)
-        lock.acquire()  # acquire/release rather than `with`: cheaper, and this is every command's path
+        watched = self._watched
+        port.lock.acquire()
         try:
-            if self._closed:  # under the lock: a write that got it before the terminate hooks comes before them
+            if self._closed:
                 self._refuse(plan)
             if levels is not None:
                 self._set_lines(plan, port.io, levels)
                 if watched:
                     self._happened("lines", plan.connection, _lines_text(levels))
             if plan.encoder is not None:
-                port.io.write(request)
+                port.write(request)
                 if watched:
                     self._happened("write", plan.connection, request)
         except RdisError:
@@ -2640,7 +2692,7 @@ class Exchange:
         except Exception as err:  # whatever the port raises, it failed
             raise self._port_error(plan, err) from err
         finally:
-            lock.release()
+            port.lock.release()
             if watched:
                 self._show()
 
@@ -2691,7 +2743,10 @@ class Exchange:
             return
         request, fields, levels = self._request(plan, values, local)
         if isinstance(plan.reply, NoReply):
-            self._write(plan, request, levels)
+            if levels is None and plan.encoder is not None:
+                self._write(plan, request)
+            else:
+                self._write_lines(plan, request, levels)
             if plan.actions is not None:
                 self._assign(plan, local, ())
             return
@@ -2705,6 +2760,55 @@ class Exchange:
                     if tries == 1:
                         raise
                     raise type(err)(f"{err} ({tries} tries)") from None
+
+    def _ask(self, plan: Primitive, request: bytes, local: Args) -> None:
+        """A plain exchange (`Primitive.asked`) in one step: what `_exchange` does for it, with the
+        reply's known size read from the port in one read and decoded by its precompiled struct.
+        The callbacks see what they see of any exchange, and a failure is the same typed error."""
+        try:
+            port = self._ports[plan.connection]
+        except KeyError:
+            raise RdisConnectionError(f"{plan.connection}: not open") from None
+        io = port.io
+        lock = port.lock
+        shape: FixedReply = plan.reply  # type: ignore[assignment]  # (`_asked_at_once`)
+        decoder = shape.decoder
+        watched = self._watched
+        data = b""
+        lock.acquire()
+        try:
+            if self._closed:
+                self._refuse(plan)
+            io.reset_input_buffer()
+            port.input.pending.clear()  # (the reader's `clear`: no byte put back is the reply's)
+            port.write(request)
+            if watched:
+                self._happened("write", plan.connection, request)
+            if plan.timeout is not None:
+                io.timeout = plan.timeout
+            data = io.read(decoder.size)
+        except RdisError:
+            raise
+        except Exception as err:  # whatever the port raises, it failed
+            raise self._port_error(plan, err) from err
+        finally:
+            try:
+                if data and watched:  # stamped when its last byte came
+                    self._happened("read", plan.connection, data)
+                if plan.timeout is not None:
+                    io.timeout = self.timeout
+            finally:
+                lock.release()
+                if watched:
+                    self._show()
+        if not data:
+            raise RdisTimeout(f"{plan.name}: no reply within {plan.timeout or self.timeout:g} s")
+        reply = (decoder.struct.unpack(data) if decoder.plain and len(data) == decoder.size
+                 else decoder.decode(plan.name, data))
+        if plan.expect is not None:
+            self._met(plan, local, reply)
+        if plan.actions is not None:
+            self._assign(plan, local, reply)
 
     def _exchange_once(self, plan: Primitive, request: bytes, fields: list[Any], levels: dict[str, Value] | None,
                        local: Args) -> None:
@@ -2720,7 +2824,7 @@ class Exchange:
         wait = plan.timeout or self.timeout
         parts: list[_ReplyPart] = []
         failed: BaseException | None = None
-        watched = bool(self._io_callbacks or self._trace_callbacks)
+        watched = self._watched
         lock.acquire()
         try:
             if self._closed:
@@ -2991,7 +3095,7 @@ class Exchange:
             self._refuse(plan)
         request, _fields, levels = self._request(plan, values, local)
         sim.exchange(plan, local)
-        if self._io_callbacks or self._trace_callbacks:
+        if self._watched:
             if levels is not None:
                 self._happened("lines", plan.connection, _lines_text(levels))
             if request:
@@ -3161,7 +3265,20 @@ class Exchange:
 
     def _assign(self, plan: Primitive, local: Args, reply: Sequence[Any]) -> None:
         """The post-actions: all values computed from one snapshot, then published together."""
-        self._assign_each([(plan, local, reply)])
+        lock = self._state_lock
+        lock.acquire()
+        try:
+            state = self._state
+            try:
+                changes = plan.actions(state, local, reply)  # type: ignore[misc]  # the caller's test
+            except EVAL_ERRORS as err:
+                raise RdisValueError(f"{plan.name}: {err}") from None
+            if plan.checked:
+                _check_widths(plan, changes)
+            self._read_ns = time.time_ns()  # the reply just read: an output's `read_ns`
+            self._state = {**state, **changes}
+        finally:
+            lock.release()
 
     def _assign_each(self, parts: Sequence[tuple[Primitive, Args, Sequence[Any]]]) -> None:
         """The post-actions of each part in turn (sub-payloads, records), each part's computed from
@@ -3174,11 +3291,7 @@ class Exchange:
                     changes = plan.actions(state, local, reply)
                 except EVAL_ERRORS as err:
                     raise RdisValueError(f"{plan.name}: {err}") from None
-                for name in plan.checked:
-                    value = changes[name]
-                    if type(value) is int and not -MAX_INT <= value <= MAX_INT:
-                        raise RdisValueError(f"{plan.name}: {name} would be a {value.bit_length()}-bit integer; "
-                                             "integers are limited to 64 bits and a sign")
+                _check_widths(plan, changes)
                 state = {**state, **changes}
             self._read_ns = time.time_ns()  # the reply just read: an output's `read_ns`
             self._state = state
@@ -3249,6 +3362,15 @@ class Exchange:
                     callback(error)
                 except Exception:  # noqa: BLE001, S110 - the contract: an error callback's failure is ignored
                     pass
+
+
+def _check_widths(plan: Primitive, changes: Mapping[str, Value]) -> None:
+    """The post-actions' values that may be too wide (`Primitive.checked`) held to 64 bits and a sign."""
+    for name in plan.checked:
+        value = changes[name]
+        if type(value) is int and not -MAX_INT <= value <= MAX_INT:
+            raise RdisValueError(f"{plan.name}: {name} would be a {value.bit_length()}-bit integer; "
+                                 "integers are limited to 64 bits and a sign")
 
 
 def _entry_decoder(entry: Primitive) -> Unpack | Match | None:
@@ -3362,10 +3484,12 @@ class Robot(Exchange):
         self._error_callbacks: list[ErrorCallback] = []
         self._io_callbacks: list[IoCallback] = []
         self._trace_callbacks: list[TraceCallback] = []
+        self._watched = False  # an I/O or trace callback is registered (they are never removed)
         self._events: deque[tuple[float, str, str, bytes]] = deque()
         self._events_lock = threading.Lock()
         self._run_callbacks: list[Callable[[str, str, str], object]] = []  # a Recorder's: what a thread runs
         self._links: dict[str, _Link] = {}
+        self._ports: dict[str, _Port] = {}
         self._workers: list[_Worker] = []
         self._close_lock = threading.Lock()
         self._calls = {kind: Calls(self, kind) for kind in ("input", "interface", "primitive")}
@@ -3400,6 +3524,7 @@ class Robot(Exchange):
         modem lines a primitive set, before its write."""
         with self._callback_lock:
             self._io_callbacks.append(callback)
+            self._watched = True
         return callback
 
     def on_trace(self, callback: TraceCallback) -> TraceCallback:
@@ -3410,6 +3535,7 @@ class Robot(Exchange):
         or a simulation's time). `rdisc run --trace` prints these."""
         with self._callback_lock:
             self._trace_callbacks.append(callback)
+            self._watched = True
         return callback
 
     # ---- what the host can see and call -------------------------------------------------------------
@@ -3636,6 +3762,7 @@ class Robot(Exchange):
                 io = _open_port(connection, os.fspath(where), self.timeout, baud) if by_name else where
                 opened[key] = _Port(io, owned=by_name)
             self._links[name] = _Link(connections[name], opened[key])
+            self._ports[name] = opened[key]
 
     # ---- running the plans --------------------------------------------------------------------------
 
@@ -3683,6 +3810,12 @@ class Robot(Exchange):
             data = request(self._state, values)
             if data is not None:
                 self._write(plan, data)
+                return
+        asked = plan.asked
+        if asked is not None and self._direct:  # a plain exchange: a sensor's path
+            data = asked(self._state, values)
+            if data is not None:
+                self._ask(plan, data, values)
                 return
         if not self._running:
             raise self._not_running()
@@ -3775,6 +3908,12 @@ class Robot(Exchange):
             data = request(self._state, args)
             if data is not None:
                 self._write(plan, data)
+                return
+        asked = plan.asked
+        if asked is not None:  # a plain exchange
+            data = asked(self._state, args)
+            if data is not None:
+                self._ask(plan, data, args)
                 return
         self._primitive_in_full(plan, args)
 
