@@ -593,9 +593,15 @@ class _Importer:
             case = self.object(item, "a reply table entry")
             if case is None:
                 continue
-            c = self.members(case, "a reply table entry", ("value", "last", "unpack", "regex", "until", "postActions"))
+            c = self.members(case, "a reply table entry", ("value", "last", "unpack", "regex", "until", "postActions",
+                                                            "tag", "cases"))
             value = self.required(case, c, "value", "a reply table entry", lambda v, _: self.expr(v, "int"))
             last = self.expr(c["last"], "int") if "last" in c else None  # a range entry: `value..last`
+            if "tag" in c and value is not None:  # a nested table: the next tag chooses among its entries
+                inner = self.reply_table(JObject(tuple(kv for kv in case.members if kv[0].value in ("tag", "cases")),
+                                                 case.span))
+                entries.append(ast.ReplyEntry(value, None, None, case.span, last, table=inner))
+                continue
             kind = next((k for k in ("unpack", "regex") if k in c), None)
             template = self.string(c.get(kind), f"`{kind}`") if kind else None
             if value is None or kind is None or template is None or ("last" in c and last is None):

@@ -19,7 +19,7 @@ import dataclasses
 import enum
 import struct
 from collections.abc import Mapping
-from dataclasses import KW_ONLY, dataclass
+from dataclasses import KW_ONLY, dataclass, field
 from typing import Any
 
 from rdisc import engine
@@ -184,12 +184,14 @@ class TaggedReply:
 
 @dataclass(frozen=True, slots=True, eq=False)
 class TaggedStream:
-    """engine.TaggedStream: a tag, then its entry's bytes, no frame."""
+    """engine.TaggedStream: a tag, then its entry's bytes, no frame; after a tag of `nested`, a
+    second tag (its struct format) first."""
 
     tag: str
     table: tuple[Entry, ...]
     _: KW_ONLY
     skip: bool = False
+    nested: dict[int, str] = field(default_factory=dict)
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -655,7 +657,8 @@ def _tagged(table: m.ReplyTable, use: FrameUse | None, skip: bool, entries: tupl
     its payload's tag (or its sub-payloads, each with its tag); with no frame, a tag and its bytes."""
     assert table.tag is not None
     if use is None or not use.frame.reply:
-        return TaggedStream(table.tag, entries, skip=skip)
+        nested = {c.under: c.under_tag for c in table.cases if c.under is not None and c.under_tag is not None}
+        return TaggedStream(table.tag, entries, skip=skip, nested=nested)
     if table.each:
         return SubPayloads(table.tag, entries, table.length, skip=skip)
     return TaggedReply(table.tag, entries, skip=skip)

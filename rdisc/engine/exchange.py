@@ -596,10 +596,25 @@ class Exchange:
                     raise RdisTimeout(missed)
                 raise RdisProtocolError(f"{plan.name}: expected {tag.size} bytes, got {len(head)}")
             value = tag.unpack(head)[0]
-            case = shape.table.get(value)
+            inner = shape.nested_structs.get(value)
+            if inner is not None:  # a nested table: the next tag chooses its entry
+                second = reader.read(inner.size)
+                head += second
+                if len(second) < inner.size:
+                    if skip:
+                        raise RdisTimeout(missed)
+                    raise RdisProtocolError(f"{plan.name}: expected {inner.size} bytes after tag {value}, "
+                                            f"got {len(second)}")
+                sub_command = inner.unpack(second)[0]
+                key: int | tuple[int, int] = (value, sub_command)
+                value = sub_command  # the entry's `tag`
+            else:
+                key = value
+            case = shape.table.get(key)
             if case is None:
                 if not skip:
-                    raise RdisProtocolError(f"{plan.name}: no reply entry for tag {value}")
+                    raise RdisProtocolError(f"{plan.name}: no reply entry for tag "
+                                            f"{' then '.join(map(str, key)) if isinstance(key, tuple) else key}")
                 if reader.deadline is not None and time.monotonic() >= reader.deadline:
                     raise RdisTimeout(missed)
                 reader.put_back(head[1:])

@@ -114,16 +114,20 @@ class TaggedReply:
 @dataclass(frozen=True, slots=True)
 class TaggedStream:
     """A tag, then exactly the bytes its entry decodes, with no frame (Firmata's stream). `skip`:
-    a tag without an entry is read past."""
+    a tag without an entry is read past. `nested`: the tags after which a second tag (its struct
+    format) chooses the entry, keyed in `table` by the pair (Firmata's sysex sub-commands)."""
 
     tag: str
-    table: Mapping[int, Primitive]
+    table: Mapping[int | tuple[int, int], Primitive]
     _: KW_ONLY
     skip: bool = False
+    nested: Mapping[int, str] = field(default_factory=dict)
     tag_struct: struct.Struct = field(init=False)
+    nested_structs: Mapping[int, struct.Struct] = field(init=False)
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "tag_struct", struct.Struct(self.tag))
+        object.__setattr__(self, "nested_structs", {value: struct.Struct(fmt) for value, fmt in self.nested.items()})
 
 
 @dataclass(frozen=True, slots=True)

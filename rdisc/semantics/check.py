@@ -1036,7 +1036,7 @@ class _Checker:
                               "and cannot name a parameter of it", help="rename the parameter")
 
     def reply_table(self, clause: ast.ReplyTable, params: tuple[m.Parameter, ...], scope: Names,
-                    name: ast.Ident, unframed: bool) -> m.ReplyTable | None:
+                    name: ast.Ident, unframed: bool, nested: bool = False) -> m.ReplyTable | None:
         """`reply KEY { VALUE: unpack ... }`: one reply per value of an int parameter with a range,
         every value of the range with its entry. `reply tag "fmt" { ... }`: one per tag value; read
         without a frame, each entry's size fixed (the tag says how much follows it)."""
@@ -1092,6 +1092,10 @@ class _Checker:
                               labels=(Label(_values_span(seen[twice]), "first given here"),))
                 continue
             seen.update(dict.fromkeys(range(low, high + 1), entry))
+            if entry.table is not None:
+                cases.extend(self.nested_table(clause, entry, entry.table, low, params, scope, name, unframed, nested))
+                continue
+            assert entry.decoding is not None  # the grammar's: an entry decodes, or has a table
             decoding, reply = self.decoding(entry.decoding)
             if entry.until is not None:
                 decoding = self.until(entry, decoding, name, clause.tag is not None and unframed)
@@ -1125,6 +1129,26 @@ class _Checker:
                               help="give every value of the range its reply, or narrow the range")
         return m.ReplyTable(key, tuple(cases))
 
+    def nested_table(self, clause: ast.ReplyTable, entry: ast.ReplyEntry, table: ast.ReplyTable, value: int,
+                     params: tuple[m.Parameter, ...], scope: Names, name: ast.Ident, unframed: bool,
+                     nested: bool) -> list[m.ReplyCase]:
+        """`VALUE: tag "fmt" { ... }`: after the tag VALUE, the next tag chooses among the nested
+        table's entries (Firmata's sysex: F0, then the sub-command). One level, of a tagged reply
+        read without a frame, for one value; its entries checked as the table's own."""
+        assert table.tag is not None  # the grammar's
+        if clause.tag is None or not unframed or clause.each or nested or entry.last is not None:
+            why = ("a nested table is for one tag value, not a range" if entry.last is not None
+                   else "a nested table holds no nested table" if nested
+                   else f"`{name.text}` reads no tagged reply without a frame")
+            self.d.report("E505", table.tag.span, f"a nested tag table is an entry of a tagged reply read without a "
+                          f"frame, one level deep: {why}",
+                          help='e.g. `0xF0: tag "B" { 0x79: unpack "BB*" until "\\xF7" }`, Firmata\'s sysex')
+            return []
+        inner = self.reply_table(table, params, scope, name, unframed, nested=True)
+        if inner is None:
+            return []
+        return [replace(c, under=value, under_tag=table.tag.value, under_layout=inner.tag_layout) for c in inner.cases]
+
     def sub_payloads(self, clause: ast.ReplyTable, name: ast.Ident, unframed: bool) -> bool:
         """`reply each tag "B" length "B"`: sub-payloads until the framed payload ends, each its
         length an unsigned integer after its tag. Whether the table can be read so."""
@@ -1156,20 +1180,20 @@ class _Checker:
         length field (the size says where the next tag starts), one the length field can state."""
         which = f"tag {low}" if low == high else f"tags {low}..{high}"
         if isinstance(decoding, m.Regex):
-            self.d.report("E505", entry.decoding.span, f"the sub-payload of {which} is bytes: decode it with `unpack`")
+            self.d.report("E505", _decoding_span(entry), f"the sub-payload of {which} is bytes: decode it with `unpack`")
             return
         if not isinstance(decoding, m.Unpack):
             return
         open_end = _open_end(decoding)
         if clause.length is None and open_end:
-            self.d.report("E505", entry.decoding.span, f"the sub-payloads have no length field, so the entry for "
+            self.d.report("E505", _decoding_span(entry), f"the sub-payloads have no length field, so the entry for "
                           f"{which} needs a fixed size, but it {open_end}",
                           help='give each sub-payload its length: `reply each tag "B" length "B" { ... }`')
         elif clause.length is not None and length is not None and not open_end:
             size = decoding.layout.size
             most = length.slots[0].high or 0
             if size > most:
-                self.d.report("E505", entry.decoding.span, f"the entry for {which} decodes {size} bytes, more than "
+                self.d.report("E505", _decoding_span(entry), f"the entry for {which} decodes {size} bytes, more than "
                               f"a sub-payload's length field \"{clause.length.value}\" states ({most})")
 
     def sized_entry(self, entry: ast.ReplyEntry, decoding: m.Unpack | m.Regex | None, name: ast.Ident,
@@ -1182,7 +1206,7 @@ class _Checker:
         else:
             return
         which = f"tag {low}" if low == high else f"tags {low}..{high}"
-        self.d.report("E505", entry.decoding.span, f"`{name.text}` reads its reply without a frame, so its entry for "
+        self.d.report("E505", _decoding_span(entry), f"`{name.text}` reads its reply without a frame, so its entry for "
                       f"{which} needs a fixed size, but {why}",
                       help="decode it with an `unpack` of a fixed size, or read the reply through a frame that says "
                       "where it ends")
@@ -1202,11 +1226,11 @@ class _Checker:
             return None
         if not isinstance(decoding, m.Unpack):
             if decoding is not None:
-                self.d.report("E505", entry.decoding.span, "an entry read `until` its end is decoded by an `unpack`")
+                self.d.report("E505", _decoding_span(entry), "an entry read `until` its end is decoded by an `unpack`")
             return None
         layout = decoding.layout
         if not layout.rest or layout.varying is not None:
-            self.d.report("E505", entry.decoding.span, "an entry read `until` its end takes what comes before the "
+            self.d.report("E505", _decoding_span(entry), "an entry read `until` its end takes what comes before the "
                           "end as bytes: its `unpack` ends in `*`",
                           help='e.g. `0xF0: unpack "B*" until "\\xF7"`, the bytes of a Firmata sysex message')
             return None
@@ -1949,6 +1973,11 @@ def _ranged(value: object) -> str:
 
 def _count(n: int, noun: str) -> str:
     return f"{n} {noun}" if n == 1 else f"{n} {noun}s"
+
+
+def _decoding_span(entry: ast.ReplyEntry) -> Span:
+    """Where an entry's decoding is written (the entry, for a nested table's)."""
+    return entry.span if entry.decoding is None else entry.decoding.span
 
 
 def _values_span(entry: ast.ReplyEntry) -> Span:

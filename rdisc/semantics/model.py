@@ -667,10 +667,18 @@ class ReplyCase:
     decoding: Unpack | Regex
     actions: tuple[PostAction, ...] = ()
     last: int | None = None  # the end of a range entry's values
+    under: int | None = None  # an entry of a nested table: the tag before (Firmata's F0), read first
+    under_tag: str | None = None  # then the nested table's tag (a one-integer struct format)
+    under_layout: StructLayout | None = field(default=None, compare=False, repr=False)  # of `under_tag`
 
     def values(self) -> range:
         """The key or tag values this entry is the reply for (a few thousand at most: checked)."""
         return range(self.value, (self.value if self.last is None else self.last) + 1)
+
+    def table_keys(self) -> list[int | tuple[int, int]]:
+        """Its keys in the engine's table: its values, or under a nested table (tag, its tag) pairs."""
+        under = self.under
+        return list(self.values()) if under is None else [(under, v) for v in self.values()]
 
     def values_text(self) -> str:
         """`7`, or `224..239` for a range entry."""

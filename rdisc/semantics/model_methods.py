@@ -1345,15 +1345,21 @@ def _init_ReplyCase(
     decoding: Any,
     actions: Any = DEFAULT,
     last: Any = DEFAULT,
+    under: Any = DEFAULT,
+    under_tag: Any = DEFAULT,
+    under_layout: Any = DEFAULT,
 ) -> None:
     _set(self, "value", value)
     _set(self, "decoding", decoding)
     _set(self, "actions", actions)
     _set(self, "last", last)
+    _set(self, "under", under)
+    _set(self, "under_tag", under_tag)
+    _set(self, "under_layout", under_layout)
 
 
 def _repr_ReplyCase(self: Any) -> str:
-    return f"{self.__class__.__qualname__}(value={self.value!r}, decoding={self.decoding!r}, actions={self.actions!r}, last={self.last!r})"
+    return f"{self.__class__.__qualname__}(value={self.value!r}, decoding={self.decoding!r}, actions={self.actions!r}, last={self.last!r}, under={self.under!r}, under_tag={self.under_tag!r})"
 
 
 def _eq_ReplyCase(self: Any, other: Any) -> Any:
@@ -1363,17 +1369,21 @@ def _eq_ReplyCase(self: Any, other: Any) -> Any:
             self.decoding,
             self.actions,
             self.last,
+            self.under,
+            self.under_tag,
         ) == (
             other.value,
             other.decoding,
             other.actions,
             other.last,
+            other.under,
+            other.under_tag,
         )
     return NotImplemented
 
 
 def _hash_ReplyCase(self: Any) -> int:
-    return hash((self.value, self.decoding, self.actions, self.last))
+    return hash((self.value, self.decoding, self.actions, self.last, self.under, self.under_tag))
 
 
 def _init_ListedReply(
@@ -2806,7 +2816,15 @@ WRITTEN: dict[str, Written] = {
         },
     ),
     "ReplyCase": Written(
-        (("value", MISSING), ("decoding", MISSING), ("actions", DEFAULT), ("last", DEFAULT)),
+        (
+            ("value", MISSING),
+            ("decoding", MISSING),
+            ("actions", DEFAULT),
+            ("last", DEFAULT),
+            ("under", DEFAULT),
+            ("under_tag", DEFAULT),
+            ("under_layout", FieldSpec(None, MISSING, False, False)),
+        ),
         {
             "__init__": _init_ReplyCase,
             "__repr__": _repr_ReplyCase,

@@ -837,6 +837,7 @@ def _init_ReplyEntry(
     span: Any = DEFAULT,
     last: Any = DEFAULT,
     until: Any = DEFAULT,
+    table: Any = DEFAULT,
 ) -> None:
     _set(self, "value", value)
     _set(self, "decoding", decoding)
@@ -844,10 +845,11 @@ def _init_ReplyEntry(
     _set(self, "span", span)
     _set(self, "last", last)
     _set(self, "until", until)
+    _set(self, "table", table)
 
 
 def _repr_ReplyEntry(self: Any) -> str:
-    return f"{self.__class__.__qualname__}(value={self.value!r}, decoding={self.decoding!r}, actions={self.actions!r}, last={self.last!r}, until={self.until!r})"
+    return f"{self.__class__.__qualname__}(value={self.value!r}, decoding={self.decoding!r}, actions={self.actions!r}, last={self.last!r}, until={self.until!r}, table={self.table!r})"
 
 
 def _eq_ReplyEntry(self: Any, other: Any) -> Any:
@@ -858,18 +860,20 @@ def _eq_ReplyEntry(self: Any, other: Any) -> Any:
             self.actions,
             self.last,
             self.until,
+            self.table,
         ) == (
             other.value,
             other.decoding,
             other.actions,
             other.last,
             other.until,
+            other.table,
         )
     return NotImplemented
 
 
 def _hash_ReplyEntry(self: Any) -> int:
-    return hash((self.value, self.decoding, self.actions, self.last, self.until))
+    return hash((self.value, self.decoding, self.actions, self.last, self.until, self.table))
 
 
 def _init_ReplyTable(
@@ -2575,6 +2579,7 @@ WRITTEN: dict[str, Written] = {
             ("span", FieldSpec(None, MISSING, False, False)),
             ("last", DEFAULT),
             ("until", DEFAULT),
+            ("table", DEFAULT),
         ),
         {
             "__init__": _init_ReplyEntry,

@@ -397,6 +397,11 @@ def transformer_class() -> Callable[[Builder], Transformer[Token, list[ast.Decl]
             return ast.ReplyEntry(value, decoding, actions, self.b.span(meta), last,
                                   None if until is None else self.b.string(until))
 
+        def reply_nested(self, meta: Meta, c: list[Any]) -> ast.ReplyEntry:
+            tag = self.b.string(c[1])
+            table = ast.ReplyTable(ast.Ident("tag", tag.span), tuple(c[2:]), self.b.span(meta), tag)
+            return ast.ReplyEntry(c[0], None, None, self.b.span(meta), table=table)
+
         def reply_timeout(self, meta: Meta, c: list[Any]) -> ast.ReplyTimeout:
             return ast.ReplyTimeout(c[0], self.b.span(meta))
 

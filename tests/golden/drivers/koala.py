@@ -1451,16 +1451,20 @@ class TaggedReply:
 @dataclass(frozen=True, slots=True)
 class TaggedStream:
     """A tag, then exactly the bytes its entry decodes, with no frame (Firmata's stream). `skip`:
-    a tag without an entry is read past."""
+    a tag without an entry is read past. `nested`: the tags after which a second tag (its struct
+    format) chooses the entry, keyed in `table` by the pair (Firmata's sysex sub-commands)."""
 
     tag: str
-    table: Mapping[int, Primitive]
+    table: Mapping[int | tuple[int, int], Primitive]
     _: KW_ONLY
     skip: bool = False
+    nested: Mapping[int, str] = field(default_factory=dict)
     tag_struct: struct.Struct = field(init=False)
+    nested_structs: Mapping[int, struct.Struct] = field(init=False)
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "tag_struct", struct.Struct(self.tag))
+        object.__setattr__(self, "nested_structs", {value: struct.Struct(fmt) for value, fmt in self.nested.items()})
 
 
 @dataclass(frozen=True, slots=True)
@@ -3105,10 +3109,25 @@ class Exchange:
                     raise RdisTimeout(missed)
                 raise RdisProtocolError(f"{plan.name}: expected {tag.size} bytes, got {len(head)}")
             value = tag.unpack(head)[0]
-            case = shape.table.get(value)
+            inner = shape.nested_structs.get(value)
+            if inner is not None:  # a nested table: the next tag chooses its entry
+                second = reader.read(inner.size)
+                head += second
+                if len(second) < inner.size:
+                    if skip:
+                        raise RdisTimeout(missed)
+                    raise RdisProtocolError(f"{plan.name}: expected {inner.size} bytes after tag {value}, "
+                                            f"got {len(second)}")
+                sub_command = inner.unpack(second)[0]
+                key: int | tuple[int, int] = (value, sub_command)
+                value = sub_command  # the entry's `tag`
+            else:
+                key = value
+            case = shape.table.get(key)
             if case is None:
                 if not skip:
-                    raise RdisProtocolError(f"{plan.name}: no reply entry for tag {value}")
+                    raise RdisProtocolError(f"{plan.name}: no reply entry for tag "
+                                            f"{' then '.join(map(str, key)) if isinstance(key, tuple) else key}")
                 if reader.deadline is not None and time.monotonic() >= reader.deadline:
                     raise RdisTimeout(missed)
                 reader.put_back(head[1:])
