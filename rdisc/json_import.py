@@ -1388,8 +1388,15 @@ class _Importer:
             if index is None:
                 return None
         text, offsets = _reply_as_out(text[m.end() :], offsets[m.end() :])
+        when = None
+        split = _WHEN.search(text)  # `value when COND`: the last `when` of the text
+        if split is not None:
+            when = self.parse(text[split.end():], offsets[split.end():])
+            if when is None:
+                return None
+            text, offsets = text[: split.start()], offsets[: split.start() + 1]
         value = self.parse(text, offsets)
-        return None if value is None else ast.Assign(target, value, s.span, index)
+        return None if value is None else ast.Assign(target, value, s.span, index, when)
 
     def offsets(self, s: JString) -> list[int]:
         """The file offset of each character of a decoded string, then of its closing quote."""
@@ -1601,6 +1608,9 @@ def _slot_types(kind: str, template: JString) -> dict[int, str]:
     except formats.TemplateError:  # the checker reports it; nothing to infer from
         return {}
     return {i: "float" if f.spec[-1:] and f.spec[-1] in _FLOAT_SPECS else "int" for i, f in enumerate(specs)}
+
+
+_WHEN = re.compile(r"\s+when\s+(?!.*\swhen\s)", re.DOTALL)
 
 
 def _reply_as_out(text: str, offsets: list[int]) -> tuple[str, list[int]]:

@@ -455,8 +455,9 @@ class _Lowering:
         actions = None
         if p.actions:
             actions = Code(_OVER_REPLY, Gives.DICT, local,
-                           tuple((a.target, a.value, states[a.target].type) for a in p.actions))
-        checked = tuple(a.target for a in p.actions if states[a.target].type is m.Type.INT and m.may_outgrow(a.value))
+                           tuple((a.target, a.stored(), states[a.target].type) for a in p.actions))
+        checked = tuple(a.target for a in p.actions
+                        if states[a.target].type is m.Type.INT and m.may_outgrow(a.stored()))
         return dataclasses.replace(plan, reply=self.read_as(p, plan.frame), actions=actions, checked=checked)
 
     def read_as(self, p: m.Primitive, use: FrameUse | None) -> Reply:

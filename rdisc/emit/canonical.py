@@ -441,11 +441,16 @@ def actions_text(action: m.PostAction) -> list[str]:
     elements: list[str] = []
     value = action.value
     while isinstance(value, m.Replaced):
-        elements.insert(0, f"{action.target}[{_text(value.index)}] = {_text(value.value)}")
+        elements.insert(0, f"{action.target}[{_text(value.index)}] = {_text(value.value)}{_when(value.when)}")
         value = value.array
     if elements and isinstance(value, m.Var) and value.name == action.target:
         return elements
-    return [f"{action.target} = {_text(action.value)}"]
+    return [f"{action.target} = {_text(action.value)}{_when(action.when)}"]
+
+
+def _when(condition: m.Expr | None) -> str:
+    """A post-action's condition as written after it: ` when COND`."""
+    return "" if condition is None else f" when {_text(condition)}"
 
 
 def expression_text(e: m.Expr) -> str:

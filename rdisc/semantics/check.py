@@ -1512,6 +1512,12 @@ class _Checker:
         for assign in block.assigns:
             value = self.typer.expr(assign.value, env)
             target = assign.target.text
+            when = None
+            if assign.when is not None:  # made only if it holds: the state variable is read to keep it
+                when = self.typer.expr(assign.when, env)
+                if when.type is not None and when.type is not Type.BOOL:
+                    self.d.report("E401", assign.when.span, f"`when` takes a bool, but this is {describe(when.type)}")
+                self.typer.reads.add(target)
             state = self.s.states.get(target)
             if state is None and target in self.settings:
                 self.d.report("E207", assign.target.span, f"cannot assign `{target}`: it is a setting, given when "
@@ -1538,7 +1544,7 @@ class _Checker:
                                   "but this array has any size", help=f"declare it `{declared.element.value}[]`")
                     continue
                 self.flow(value, declared, assign.value.span, f"state variable `{target}`")
-                out.append(m.PostAction(m.StateRef(target), value, assign.span))
+                out.append(m.PostAction(m.StateRef(target), value, assign.span, when))
                 continue
             if not isinstance(declared, m.Array):
                 if declared is not None:
@@ -1553,12 +1559,12 @@ class _Checker:
             if first is not None and first.index is not None:  # replace one more element of the same array
                 before = next(k for k, a in enumerate(out) if a.target == target)
                 out[before] = m.PostAction(m.StateRef(target), m.Replaced(out[before].value, index, value, declared,
-                                                                          assign.span), out[before].span)
+                                                                          assign.span, when), out[before].span)
             else:
                 written[target] = assign
                 whole = m.Var(target, Scope.STATE, declared, assign.target.span)
-                out.append(m.PostAction(m.StateRef(target), m.Replaced(whole, index, value, declared, assign.span),
-                                        assign.span))
+                out.append(m.PostAction(m.StateRef(target), m.Replaced(whole, index, value, declared, assign.span,
+                                                                       when), assign.span))
         return tuple(out)
 
     def interface(self, decl: ast.InterfaceDecl, interface_params: dict[str, tuple[m.Parameter, ...]],

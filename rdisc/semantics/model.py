@@ -205,6 +205,7 @@ class Replaced:
     value: Expr
     type: Array
     span: Span | None = _span
+    when: Expr | None = None  # `array[index] = value when COND`: the element kept unless COND holds
 
 
 def array_name(array: Expr) -> str:
@@ -471,6 +472,25 @@ class PostAction:
     target: StateRef
     value: Expr
     span: Span | None = _span
+    when: Expr | None = None  # `target = value when COND`: the state variable kept unless COND holds
+
+    def stored(self) -> Expr:
+        """What the action stores, its conditions spelled out: `value if COND else target`, and
+        for each element `array[index] = value when COND`, the element as it was unless COND holds."""
+        return _kept_unless(self.when, _elements_kept(self.value), Var(self.target, Scope.STATE, self.value.type))
+
+
+def _elements_kept(value: Expr) -> Expr:
+    """`value` with each conditional element replacement spelled out (see PostAction.stored)."""
+    if not isinstance(value, Replaced):
+        return value
+    array = _elements_kept(value.array)
+    element = _kept_unless(value.when, value.value, Element(array, value.index, value.type.element))
+    return Replaced(array, value.index, element, value.type, value.span)
+
+
+def _kept_unless(when: Expr | None, value: Expr, kept: Expr) -> Expr:
+    return value if when is None else IfElse(when, value, kept, value.type, value.span)
 
 
 MODEM_LINES = ("dtr", "rts")

@@ -348,16 +348,25 @@ def _hash_Element(self: Any) -> int:
     return hash((self.array, self.index, self.type))
 
 
-def _init_Replaced(self: Any, array: Any, index: Any, value: Any, type: Any, span: Any = DEFAULT) -> None:
+def _init_Replaced(
+    self: Any,
+    array: Any,
+    index: Any,
+    value: Any,
+    type: Any,
+    span: Any = DEFAULT,
+    when: Any = DEFAULT,
+) -> None:
     _set(self, "array", array)
     _set(self, "index", index)
     _set(self, "value", value)
     _set(self, "type", type)
     _set(self, "span", span)
+    _set(self, "when", when)
 
 
 def _repr_Replaced(self: Any) -> str:
-    return f"{self.__class__.__qualname__}(array={self.array!r}, index={self.index!r}, value={self.value!r}, type={self.type!r})"
+    return f"{self.__class__.__qualname__}(array={self.array!r}, index={self.index!r}, value={self.value!r}, type={self.type!r}, when={self.when!r})"
 
 
 def _eq_Replaced(self: Any, other: Any) -> Any:
@@ -367,17 +376,19 @@ def _eq_Replaced(self: Any, other: Any) -> Any:
             self.index,
             self.value,
             self.type,
+            self.when,
         ) == (
             other.array,
             other.index,
             other.value,
             other.type,
+            other.when,
         )
     return NotImplemented
 
 
 def _hash_Replaced(self: Any) -> int:
-    return hash((self.array, self.index, self.value, self.type))
+    return hash((self.array, self.index, self.value, self.type, self.when))
 
 
 def _init_Parameter(
@@ -930,24 +941,25 @@ def _hash_Regex(self: Any) -> int:
     return hash((self.pattern,))
 
 
-def _init_PostAction(self: Any, target: Any, value: Any, span: Any = DEFAULT) -> None:
+def _init_PostAction(self: Any, target: Any, value: Any, span: Any = DEFAULT, when: Any = DEFAULT) -> None:
     _set(self, "target", target)
     _set(self, "value", value)
     _set(self, "span", span)
+    _set(self, "when", when)
 
 
 def _repr_PostAction(self: Any) -> str:
-    return f"{self.__class__.__qualname__}(target={self.target!r}, value={self.value!r})"
+    return f"{self.__class__.__qualname__}(target={self.target!r}, value={self.value!r}, when={self.when!r})"
 
 
 def _eq_PostAction(self: Any, other: Any) -> Any:
     if other.__class__ is self.__class__:
-        return (self.target, self.value) == (other.target, other.value)
+        return (self.target, self.value, self.when) == (other.target, other.value, other.when)
     return NotImplemented
 
 
 def _hash_PostAction(self: Any) -> int:
-    return hash((self.target, self.value))
+    return hash((self.target, self.value, self.when))
 
 
 def _init_LineLevel(self: Any, line: Any, value: Any, span: Any = DEFAULT) -> None:
@@ -2485,6 +2497,7 @@ WRITTEN: dict[str, Written] = {
             ("value", MISSING),
             ("type", MISSING),
             ("span", FieldSpec(None, MISSING, False, False)),
+            ("when", DEFAULT),
         ),
         {
             "__init__": _init_Replaced,
@@ -2661,7 +2674,12 @@ WRITTEN: dict[str, Written] = {
         {"__init__": _init_Regex, "__repr__": _repr_Regex, "__eq__": _eq_Regex, "__hash__": _hash_Regex},
     ),
     "PostAction": Written(
-        (("target", MISSING), ("value", MISSING), ("span", FieldSpec(None, MISSING, False, False))),
+        (
+            ("target", MISSING),
+            ("value", MISSING),
+            ("span", FieldSpec(None, MISSING, False, False)),
+            ("when", DEFAULT),
+        ),
         {
             "__init__": _init_PostAction,
             "__repr__": _repr_PostAction,

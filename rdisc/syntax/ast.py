@@ -196,6 +196,7 @@ class Assign:
     value: Expr
     span: Span = _span
     index: Expr | None = None  # `target[index] = value`: one element of an array
+    when: Expr | None = None  # `target = value when COND`: a post-action made only if COND holds
 
 
 # ---- declarations -------------------------------------------------------------

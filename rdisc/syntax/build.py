@@ -320,6 +320,9 @@ def transformer_class() -> Callable[[Builder], Transformer[Token, list[ast.Decl]
         def assign(self, meta: Meta, c: list[Any]) -> ast.Assign:
             return ast.Assign(self.b.ident(c[0]), c[2], self.b.span(meta), c[1])
 
+        def post_assign(self, meta: Meta, c: list[Any]) -> ast.Assign:
+            return ast.Assign(self.b.ident(c[0]), c[2], self.b.span(meta), c[1], c[3])
+
         def array_type(self, meta: Meta, c: list[Any]) -> ast.ArrayOf:
             return ast.ArrayOf(self.b.ident(c[0]), c[1], self.b.span(meta))
 

@@ -254,7 +254,8 @@ def _duration(d: ast.Duration) -> str:
 
 def _assign(a: ast.Assign) -> str:
     element = "" if a.index is None else f"[{print_expr(a.index)}]"
-    return f"{a.target.text}{element} = {print_expr(a.value)}"
+    when = "" if a.when is None else f" when {print_expr(a.when)}"
+    return f"{a.target.text}{element} = {print_expr(a.value)}{when}"
 
 
 def _connection_attr(a: ast.ConnectionAttr) -> str:

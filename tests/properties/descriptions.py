@@ -1160,9 +1160,32 @@ def actions_text(actions: tuple[tuple[str, Expr], ...]) -> str:
     return " { " + "  ".join(f"{target} = {value.text()}" for target, value in actions) + " }"
 
 
+@dataclass(frozen=True)
+class When(Expr):
+    """A post-action's value and its condition: `value when COND` (stored only if COND holds)."""
+
+    stored: Expr
+    condition: Expr
+
+    def text(self) -> str:
+        return f"{self.stored.text()} when {self.condition.text()}"
+
+    @property
+    def const(self) -> bool:
+        return False
+
+    def value(self, env: Mapping[str, Any]) -> Any:
+        raise NotImplementedError("a post-action's condition is not an expression")
+
+
 def draw_actions(draw: Draw, states: Mapping[str, str], scope: Scope) -> tuple[tuple[str, Expr], ...]:
     targets = draw(st.lists(st.sampled_from(sorted(states)), max_size=3, unique=True)) if states else []
-    return tuple((t, expression(draw, states[t], scope, 2)) for t in targets)
+    return tuple((t, _conditioned(draw, expression(draw, states[t], scope, 2), scope)) for t in targets)
+
+
+def _conditioned(draw: Draw, value: Expr, scope: Scope) -> Expr:
+    """A post-action's value, sometimes made only when a condition holds (`when COND`)."""
+    return When(value.type, value, expression(draw, BOOL, scope, 1)) if sometimes(draw, 4) else value
 
 
 # ---- the elements of a description ------------------------------------------------------------------
