@@ -275,6 +275,7 @@ class Primitive:
     expect: Code | None = None
     lines: Code | None = None
     request: Written | None = None
+    looks_up: bool = False
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -458,7 +459,8 @@ class _Lowering:
                            tuple((a.target, a.stored(), states[a.target].type) for a in p.actions))
         checked = tuple(a.target for a in p.actions
                         if states[a.target].type is m.Type.INT and m.may_outgrow(a.stored()))
-        return dataclasses.replace(plan, reply=self.read_as(p, plan.frame), actions=actions, checked=checked)
+        return dataclasses.replace(plan, reply=self.read_as(p, plan.frame), actions=actions, checked=checked,
+                                   looks_up=any(m.looks_up(a.value) for a in p.actions))
 
     def read_as(self, p: m.Primitive, use: FrameUse | None) -> Reply:
         """How `p`'s reply is read through `use` (a primitive without a reply table or listed

@@ -23,7 +23,7 @@ from rdisc.engine.errors import (
     RdisTimeout,
     RdisValueError,
 )
-from rdisc.engine.operations import EVAL_ERRORS, MAX_ARRAY, MAX_INT, MAX_LINE
+from rdisc.engine.operations import EVAL_ERRORS, MAX_ARRAY, MAX_INT, MAX_LINE, LookupMiss
 from rdisc.engine.plans import (
     ErrorReply,
     FixedReply,
@@ -491,8 +491,16 @@ class Exchange:
                 assert_never(shape)
 
     def _met(self, plan: Primitive, local: Args, reply: Sequence[Any]) -> Sequence[Any]:
-        """The reply, when it meets the primitive's `expect` (else, like a reply that does not
-        decode, an RdisProtocolError, which `skip unmatched` reads past)."""
+        """The reply, when it meets the primitive's `expect` and its post-actions find each key
+        they look up (else, like a reply that does not decode, an RdisProtocolError, which
+        `skip unmatched` reads past)."""
+        if plan.looks_up and plan.actions is not None:
+            try:
+                plan.actions(self._state, local, reply)
+            except LookupMiss as err:
+                raise RdisProtocolError(f"{plan.name}: reply {tuple(reply)!r}: {err}") from None
+            except EVAL_ERRORS:
+                pass  # raised as it is stored
         if plan.expect is None:
             return reply
         try:
@@ -656,6 +664,8 @@ class Exchange:
                 assert plan.actions is not None
                 try:
                     changes = plan.actions(state, local, reply)
+                except LookupMiss as err:  # a reply this primitive cannot read
+                    raise RdisProtocolError(f"{plan.name}: reply {tuple(reply)!r}: {err}") from None
                 except EVAL_ERRORS as err:
                     raise RdisValueError(f"{plan.name}: {err}") from None
                 for name in plan.checked:

@@ -142,7 +142,7 @@ class _Engine:
             p.name, p.connection, built(p.params), self.closure(p.values), built(p.encoder), reply=self.reply(p.reply),
             actions=self.closure(p.actions), frame=None if p.frame is None else self.use(p.frame), timeout=p.timeout,
             retries=p.retries,
-            checked=p.checked, expect=self.closure(p.expect), lines=self.closure(p.lines),
+            checked=p.checked, expect=self.closure(p.expect), lines=self.closure(p.lines), looks_up=p.looks_up,
             request=None if p.request is None else primitive_request(p.request, built(p.params), self.closure),
         )
 

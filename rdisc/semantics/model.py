@@ -532,6 +532,17 @@ def may_outgrow(e: Expr) -> bool:
     return True
 
 
+def looks_up(e: object) -> bool:
+    """Whether an expression looks a key up in a table without a default (`HEALTH[out[0]]`),
+    which a key the table lacks makes fail."""
+    if isinstance(e, Lookup) and e.default is None:
+        return True
+    if isinstance(e, tuple):
+        return any(looks_up(item) for item in e)
+    return dataclasses.is_dataclass(e) and any(looks_up(getattr(e, f.name)) for f in dataclasses.fields(e)
+                                               if f.name != "span")
+
+
 # ---- frames: the bytes around a payload ---------------------------------------------
 
 

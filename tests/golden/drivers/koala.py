@@ -512,12 +512,16 @@ FUNCTIONS: dict[str, Callable[..., Any]] = {
 # ---- arrays and tables ----------------------------------------------------------------------------
 
 
+class LookupMiss(ValueError):
+    """A key a lookup table lacks: in a reply's post-actions, a reply the primitive cannot read."""
+
+
 def lookup(table: str, entries: Mapping[Any, Any], key: Any) -> Any:
     """`table[key]` of a description's lookup table: a key it lacks is an error, never a default."""
     try:
         return entries[key]
     except (KeyError, TypeError):
-        raise ValueError(f"table {table} has no entry for {key!r}") from None
+        raise LookupMiss(f"table {table} has no entry for {key!r}") from None
 
 
 def lookup_or(entries: Mapping[Any, Any], key: Any, default: Any) -> Any:
@@ -1555,6 +1559,7 @@ class Primitive:
     request: Request | None = None  # its parameters' values to the bytes, when it is only written (`_sent_at_once`)
     expect: Callable[[StateValues, Args, Sequence[Any]], object] | None = None  # a condition its decoded reply meets
     lines: Callable[[StateValues, Args], dict[str, Value]] | None = None  # "dtr"/"rts": levels, set before the request
+    looks_up: bool = False  # its post-actions look a key up in a table: a miss is a reply it cannot read
     floats: tuple[int, ...] = field(init=False)
     ranged: tuple[int, ...] = field(init=False)
 
@@ -3004,8 +3009,16 @@ class Exchange:
                 assert_never(shape)
 
     def _met(self, plan: Primitive, local: Args, reply: Sequence[Any]) -> Sequence[Any]:
-        """The reply, when it meets the primitive's `expect` (else, like a reply that does not
-        decode, an RdisProtocolError, which `skip unmatched` reads past)."""
+        """The reply, when it meets the primitive's `expect` and its post-actions find each key
+        they look up (else, like a reply that does not decode, an RdisProtocolError, which
+        `skip unmatched` reads past)."""
+        if plan.looks_up and plan.actions is not None:
+            try:
+                plan.actions(self._state, local, reply)
+            except LookupMiss as err:
+                raise RdisProtocolError(f"{plan.name}: reply {tuple(reply)!r}: {err}") from None
+            except EVAL_ERRORS:
+                pass  # raised as it is stored
         if plan.expect is None:
             return reply
         try:
@@ -3169,6 +3182,8 @@ class Exchange:
                 assert plan.actions is not None
                 try:
                     changes = plan.actions(state, local, reply)
+                except LookupMiss as err:  # a reply this primitive cannot read
+                    raise RdisProtocolError(f"{plan.name}: reply {tuple(reply)!r}: {err}") from None
                 except EVAL_ERRORS as err:
                     raise RdisValueError(f"{plan.name}: {err}") from None
                 for name in plan.checked:
