@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import re
 import struct
+import sys
 from collections.abc import Callable
 
 from rdisc.emit.canonical import expression_text
@@ -473,6 +474,7 @@ def reply_layouts(model: m.Model, p: m.Primitive) -> list[tuple[str, Layout]]:
     return found
 
 
+_TAG = re.compile(r"tag ([su])\d+( LE| native| BE)? (?:= |in )(-?\d+)(?:\.\.(-?\d+))?")
 _CONSTANT = re.compile(r"([0-9A-F]{2}(?: [0-9A-F]{2})*)(?: \(-?\d+\))?")
 
 
@@ -493,10 +495,17 @@ def matched(layout: Layout, data: bytes) -> list[tuple[int, str, str]] | None:
     if sized is None:
         return None
     offset = 0
-    for size, _what, detail in sized:
+    for size, what, detail in sized:
         constant = _CONSTANT.fullmatch(detail)
         if constant is not None and data[offset : offset + size] != bytes.fromhex(constant.group(1)):
             return None
+        tag = _TAG.fullmatch(f"{what} {detail}")
+        if tag is not None:  # a reply table's tag: its value, or one of its range
+            order = {" LE": "little", " native": sys.byteorder}.get(tag.group(2) or "", "big")
+            value = int.from_bytes(data[offset : offset + size], order, signed=tag.group(1) == "s")
+            low, high = int(tag.group(3)), int(tag.group(4) or tag.group(3))
+            if not low <= value <= high:
+                return None
         offset += size
     return sized
 

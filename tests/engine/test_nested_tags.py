@@ -17,6 +17,7 @@ from rdisc.emit.dump import dump
 from rdisc.semantics.budget import message_bytes
 from rdisc.syntax.parse import parse
 from rdisc.syntax.printer import print_module
+from tests.conftest import run_rdisc
 from tests.engine.test_one_engine import ScriptedPort, implementation_of, through_json
 
 SYSEX = """\
@@ -137,4 +138,25 @@ primitive wide() on link format "" () reply tag "B" { 1: tag "B" { 300: unpack "
         ("E505", f"{NESTED}a nested table holds no nested table"),
         ("E203", "2 has two entries in the reply table"),
         ("E403", "300 does not fit the tag's `B`"),
+    ]
+
+
+def test_rdisc_decode_tells_sub_commands_apart(tmp_path: Path) -> None:
+    """Both tags are checked: F0 71 is the STRING_DATA entry, not REPORT_FIRMWARE's."""
+    source = tmp_path / "sysex.rdis"
+    source.write_text(SYSEX, encoding="utf-8")
+    capture = tmp_path / "capture.txt"
+    capture.write_text("< f0 71 68 00 f7\n< f0 6a 01 f7\n")
+    result = run_rdisc("decode", str(source), str(capture))
+    assert (result.returncode, result.stderr) == (0, "")
+    assert result.stdout.splitlines() == [
+        "< F0 71 68 00 F7",
+        "  reply when  = 113 of listen",
+        "  offset  size  kind                  value                         holds         bytes",
+        "       0     1  tag u8                = 240                                       F0",
+        "       1     1  tag u8                = 113                                       71",
+        "       2     2  bytes (the rest)      out[0]                                      68 00",
+        "       4     1  end (dropped)         F7                                          F7",
+        "< F0 6A 01 F7",
+        "  unknown: no primitive's reply is these 4 bytes",
     ]
