@@ -494,13 +494,9 @@ class Exchange:
         """The reply, when it meets the primitive's `expect` and its post-actions find each key
         they look up (else, like a reply that does not decode, an RdisProtocolError, which
         `skip unmatched` reads past)."""
-        if plan.looks_up and plan.actions is not None:
-            try:
-                plan.actions(self._state, local, reply)
-            except LookupMiss as err:
-                raise RdisProtocolError(f"{plan.name}: reply {tuple(reply)!r}: {err}") from None
-            except EVAL_ERRORS:
-                pass  # raised as it is stored
+        miss = self._missed_lookup(plan, local, reply)
+        if miss is not None:
+            raise RdisProtocolError(miss)
         if plan.expect is None:
             return reply
         try:
@@ -510,6 +506,19 @@ class Exchange:
         if not met:
             raise RdisProtocolError(f"{plan.name}: reply {tuple(reply)!r} does not meet its `expect`")
         return reply
+
+    def _missed_lookup(self, plan: Primitive, local: Args, reply: Sequence[Any]) -> str | None:
+        """Why the reply is one the primitive cannot read, when its post-actions look up a key
+        their table lacks (tried before the reply is taken, so `skip unmatched` reads past it)."""
+        if not plan.looks_up or plan.actions is None:
+            return None
+        try:
+            plan.actions(self._state, local, reply)
+        except LookupMiss as err:
+            return f"{plan.name}: reply {tuple(reply)!r}: {err}"
+        except EVAL_ERRORS:
+            pass  # raised as the reply is stored
+        return None
 
     @staticmethod
     def _tagged(plan: Primitive, shape: TaggedReply, payload: bytes, local: Args) -> _ReplyPart:
@@ -588,8 +597,8 @@ class Exchange:
             parts.append((case, [*local, value], decoder.decode(plan.name, payload[start:at])))
         return parts
 
-    @staticmethod
-    def _read_tagged(plan: Primitive, shape: TaggedStream, reader: Incoming, wait: float, local: Args) -> _ReplyPart:
+    def _read_tagged(self, plan: Primitive, shape: TaggedStream, reader: Incoming, wait: float,
+                     local: Args) -> _ReplyPart:
         """A tagged reply without a frame (Firmata's stream): the tag, then exactly the bytes its
         entry decodes (a fixed size: checked). Under `skip unmatched` a tag without an entry is
         read past one byte at a time, the next tag looked for from the byte after its first,
@@ -636,14 +645,23 @@ class Exchange:
                         raise RdisTimeout(missed)
                     raise RdisProtocolError(f"{plan.name}: no end {decoder.until.hex(' ')} after tag {value} "
                                             f"within {wait:g} s")
-                return case, [*local, value], decoder.decode(plan.name, body[: -len(decoder.until)])
-            body = reader.read(decoder.size)
-            if len(body) < decoder.size:
-                if skip:
-                    raise RdisTimeout(missed)
-                raise RdisProtocolError(f"{plan.name}: expected {decoder.size} bytes after tag {value}, "
-                                        f"got {len(body)}")
-            return case, [*local, value], decoder.decode(plan.name, body)
+                decoded = decoder.decode(plan.name, body[: -len(decoder.until)])
+            else:
+                body = reader.read(decoder.size)
+                if len(body) < decoder.size:
+                    if skip:
+                        raise RdisTimeout(missed)
+                    raise RdisProtocolError(f"{plan.name}: expected {decoder.size} bytes after tag {value}, "
+                                            f"got {len(body)}")
+                decoded = decoder.decode(plan.name, body)
+            miss = self._missed_lookup(case, [*local, value], decoded)
+            if miss is None:
+                return case, [*local, value], decoded
+            if not skip:
+                raise RdisProtocolError(miss)
+            if reader.deadline is not None and time.monotonic() >= reader.deadline:
+                raise RdisTimeout(missed)
+            reader.put_back((head + body)[1:])  # a message of another kind: looked for from the byte after its tag
 
     def _port_error(self, plan: Primitive, err: BaseException) -> RdisError:
         """The typed error for what a port raised: a write that timed out, or a failed port."""

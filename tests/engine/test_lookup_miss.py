@@ -21,6 +21,11 @@ frame packet { header "\\xAA"  payload }
 primitive listen() on link frame packet format "" () skip unmatched unpack "BB" { mode = MODE[out[0]]  raw = out[1] }
 /// The same, where a code without a name is an error.
 primitive read() on link frame packet pack "B" (0x4D) unpack "BB" { mode = MODE[out[0]]  raw = out[1] }
+/// Without a frame: A0 and the mode's code, among other messages.
+primitive stream() on link format "" () skip unmatched reply tag "B" {
+    0xA0: unpack "B" { mode = MODE[out[0]] }
+    0xB0: unpack "B" { raw = out[0] }
+}
 """
 
 
@@ -46,3 +51,14 @@ def test_a_lookup_miss_is_a_protocol_error_that_changes_no_state(kind: str, tmp_
             "RdisProtocolError", "read: reply (7, 1): table MODE has no entry for 7")
         assert (robot.state["mode"], robot.state["raw"]) == ("", 0)
     assert bytes(port.written) == bytes.fromhex("aa 4d")
+
+
+@pytest.mark.parametrize("kind", ["runtime", "driver"])
+def test_a_tagged_message_whose_lookup_misses_is_read_past(kind: str, tmp_path: Path) -> None:
+    port = ScriptedPort(bytes.fromhex("a0 07  b0 a0  a0 02"))  # A0 07: no name; then B0's A0, then A0 02
+    implementation = implementation_of(kind, MODES, tmp_path, "modes")
+    with implementation.connect(port, threads=False) as robot:
+        robot.call_primitive("stream")
+        assert (robot.state["mode"], robot.state["raw"]) == ("", 0xA0)
+        robot.call_primitive("stream")
+        assert (robot.state["mode"], robot.state["raw"]) == ("run", 0xA0)
