@@ -493,18 +493,17 @@ class Exchange:
     def _met(self, plan: Primitive, local: Args, reply: Sequence[Any]) -> Sequence[Any]:
         """The reply, when it meets the primitive's `expect` and its post-actions find each key
         they look up (else, like a reply that does not decode, an RdisProtocolError, which
-        `skip unmatched` reads past)."""
+        `skip unmatched` reads past). The `expect` first: it may guard a lookup (`out[0] in T`)."""
+        if plan.expect is not None:
+            try:
+                met = plan.expect(self._state, local, reply)
+            except EVAL_ERRORS as err:
+                raise RdisProtocolError(f"{plan.name}: reply {tuple(reply)!r}: its `expect` failed: {err}") from None
+            if not met:
+                raise RdisProtocolError(f"{plan.name}: reply {tuple(reply)!r} does not meet its `expect`")
         miss = self._missed_lookup(plan, local, reply)
         if miss is not None:
             raise RdisProtocolError(miss)
-        if plan.expect is None:
-            return reply
-        try:
-            met = plan.expect(self._state, local, reply)
-        except EVAL_ERRORS as err:
-            raise RdisProtocolError(f"{plan.name}: reply {tuple(reply)!r}: its `expect` failed: {err}") from None
-        if not met:
-            raise RdisProtocolError(f"{plan.name}: reply {tuple(reply)!r} does not meet its `expect`")
         return reply
 
     def _missed_lookup(self, plan: Primitive, local: Args, reply: Sequence[Any]) -> str | None:
