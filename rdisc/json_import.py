@@ -593,9 +593,15 @@ class _Importer:
             case = self.object(item, "a reply table entry")
             if case is None:
                 continue
-            c = self.members(case, "a reply table entry", ("value", "last", "unpack", "regex", "until", "postActions"))
+            c = self.members(case, "a reply table entry", ("value", "last", "unpack", "regex", "until", "postActions",
+                                                            "tag", "cases"))
             value = self.required(case, c, "value", "a reply table entry", lambda v, _: self.expr(v, "int"))
             last = self.expr(c["last"], "int") if "last" in c else None  # a range entry: `value..last`
+            if "tag" in c and value is not None:  # a nested table: the next tag chooses among its entries
+                inner = self.reply_table(JObject(tuple(kv for kv in case.members if kv[0].value in ("tag", "cases")),
+                                                 case.span))
+                entries.append(ast.ReplyEntry(value, None, None, case.span, last, table=inner))
+                continue
             kind = next((k for k in ("unpack", "regex") if k in c), None)
             template = self.string(c.get(kind), f"`{kind}`") if kind else None
             if value is None or kind is None or template is None or ("last" in c and last is None):
@@ -1382,8 +1388,15 @@ class _Importer:
             if index is None:
                 return None
         text, offsets = _reply_as_out(text[m.end() :], offsets[m.end() :])
+        when = None
+        split = _WHEN.search(text)  # `value when COND`: the last `when` of the text
+        if split is not None:
+            when = self.parse(text[split.end():], offsets[split.end():])
+            if when is None:
+                return None
+            text, offsets = text[: split.start()], offsets[: split.start() + 1]
         value = self.parse(text, offsets)
-        return None if value is None else ast.Assign(target, value, s.span, index)
+        return None if value is None else ast.Assign(target, value, s.span, index, when)
 
     def offsets(self, s: JString) -> list[int]:
         """The file offset of each character of a decoded string, then of its closing quote."""
@@ -1595,6 +1608,9 @@ def _slot_types(kind: str, template: JString) -> dict[int, str]:
     except formats.TemplateError:  # the checker reports it; nothing to infer from
         return {}
     return {i: "float" if f.spec[-1:] and f.spec[-1] in _FLOAT_SPECS else "int" for i, f in enumerate(specs)}
+
+
+_WHEN = re.compile(r"\s+when\s+(?!.*\swhen\s)", re.DOTALL)
 
 
 def _reply_as_out(text: str, offsets: list[int]) -> tuple[str, list[int]]:

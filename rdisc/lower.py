@@ -19,7 +19,7 @@ import dataclasses
 import enum
 import struct
 from collections.abc import Mapping
-from dataclasses import KW_ONLY, dataclass
+from dataclasses import KW_ONLY, dataclass, field
 from typing import Any
 
 from rdisc import engine
@@ -184,12 +184,14 @@ class TaggedReply:
 
 @dataclass(frozen=True, slots=True, eq=False)
 class TaggedStream:
-    """engine.TaggedStream: a tag, then its entry's bytes, no frame."""
+    """engine.TaggedStream: a tag, then its entry's bytes, no frame; after a tag of `nested`, a
+    second tag (its struct format) first."""
 
     tag: str
     table: tuple[Entry, ...]
     _: KW_ONLY
     skip: bool = False
+    nested: dict[int, str] = field(default_factory=dict)
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -273,6 +275,7 @@ class Primitive:
     expect: Code | None = None
     lines: Code | None = None
     request: Written | None = None
+    looks_up: bool = False
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -453,9 +456,11 @@ class _Lowering:
         actions = None
         if p.actions:
             actions = Code(_OVER_REPLY, Gives.DICT, local,
-                           tuple((a.target, a.value, states[a.target].type) for a in p.actions))
-        checked = tuple(a.target for a in p.actions if states[a.target].type is m.Type.INT and m.may_outgrow(a.value))
-        return dataclasses.replace(plan, reply=self.read_as(p, plan.frame), actions=actions, checked=checked)
+                           tuple((a.target, a.stored(), states[a.target].type) for a in p.actions))
+        checked = tuple(a.target for a in p.actions
+                        if states[a.target].type is m.Type.INT and m.may_outgrow(a.stored()))
+        return dataclasses.replace(plan, reply=self.read_as(p, plan.frame), actions=actions, checked=checked,
+                                   looks_up=any(m.looks_up(a.value) for a in p.actions))
 
     def read_as(self, p: m.Primitive, use: FrameUse | None) -> Reply:
         """How `p`'s reply is read through `use` (a primitive without a reply table or listed
@@ -655,7 +660,8 @@ def _tagged(table: m.ReplyTable, use: FrameUse | None, skip: bool, entries: tupl
     its payload's tag (or its sub-payloads, each with its tag); with no frame, a tag and its bytes."""
     assert table.tag is not None
     if use is None or not use.frame.reply:
-        return TaggedStream(table.tag, entries, skip=skip)
+        nested = {c.under: c.under_tag for c in table.cases if c.under is not None and c.under_tag is not None}
+        return TaggedStream(table.tag, entries, skip=skip, nested=nested)
     if table.each:
         return SubPayloads(table.tag, entries, table.length, skip=skip)
     return TaggedReply(table.tag, entries, skip=skip)

@@ -431,6 +431,11 @@ Wrong: `0xF0: unpack "B*"`. Right: `0xE0..0xEF: unpack "BB" { pin = tag & 0x0F }
 two bytes after any tag from 0xE0 to 0xEF, whose value the entry reads as `tag`;
 `0xF0: unpack "B*" until "\\xF7"`, a Firmata sysex message.
 
+An entry of such a table may be a table of its own, chosen by the tag after its
+own (`0xF0: tag "B" { 0x79: unpack "BB*" until "\\xF7" }`, Firmata's sysex
+sub-commands): it is for one value, one level deep, and only in a tagged reply
+read without a frame. Wrong: `0xF0..0xF1: tag "B" { ... }`.
+
 A reply of sub-payloads (`reply each tag "B" length "B" { ... }`, Kobuki's feedback)
 is read through a frame that says where its payload ends, as the sub-payloads run
 to that end. Each entry decodes bytes with an `unpack`, not a `regex`. Without

@@ -177,7 +177,7 @@ def _primitive(x: m.Primitive) -> JsonObject:
         ("expect", None if x.expect is None else _embedded(x.expect)),
         ("replyTable", None if x.table is None else _object(
             ("key", x.table.key or None), ("tag", x.table.tag), ("each", x.table.each or None),
-            ("length", x.table.length), ("cases", [_case(c) for c in x.table.cases]))),
+            ("length", x.table.length), ("cases", _cases(x.table.cases)))),
         ("replyList", [_listed(r) for r in x.listed] or None),
         ("error", None if x.error is None else _error(x.error)),
         ("postActions", actions or None),
@@ -205,6 +205,21 @@ def _listed(r: m.ListedReply) -> JsonObject:
         (kind, template), ("expect", None if r.expect is None else _embedded(r.expect)),
         ("postActions", actions or None),
     )
+
+
+def _cases(cases: tuple[m.ReplyCase, ...]) -> list[JsonObject]:
+    """A table's entries in order; a nested table's as one entry, its value, `tag` and `cases`."""
+    out: list[JsonObject] = []
+    nested: dict[int, list[JsonObject]] = {}
+    for c in cases:
+        if c.under is None:
+            out.append(_case(c))
+            continue
+        if c.under not in nested:
+            nested[c.under] = []
+            out.append({"value": c.under, "tag": c.under_tag, "cases": nested[c.under]})
+        nested[c.under].append(_case(c))
+    return out
 
 
 def _case(c: m.ReplyCase) -> JsonObject:
@@ -426,11 +441,16 @@ def actions_text(action: m.PostAction) -> list[str]:
     elements: list[str] = []
     value = action.value
     while isinstance(value, m.Replaced):
-        elements.insert(0, f"{action.target}[{_text(value.index)}] = {_text(value.value)}")
+        elements.insert(0, f"{action.target}[{_text(value.index)}] = {_text(value.value)}{_when(value.when)}")
         value = value.array
     if elements and isinstance(value, m.Var) and value.name == action.target:
         return elements
-    return [f"{action.target} = {_text(action.value)}"]
+    return [f"{action.target} = {_text(action.value)}{_when(action.when)}"]
+
+
+def _when(condition: m.Expr | None) -> str:
+    """A post-action's condition as written after it: ` when COND`."""
+    return "" if condition is None else f" when {_text(condition)}"
 
 
 def expression_text(e: m.Expr) -> str:

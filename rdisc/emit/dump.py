@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import re
 import struct
+import sys
 from collections.abc import Callable
 
 from rdisc.emit.canonical import expression_text
@@ -53,10 +54,8 @@ def _primitive(model: m.Model, p: m.Primitive) -> str:
             if p.table.tag is None:
                 lines += _sides(f"reply when {p.table.key} = {said}", framed, _reply_rows(case.decoding))
             else:
-                assert p.table.tag_layout is not None
-                tag = (p.table.tag_layout.size, f"tag {_integer_kind(p.table.tag_layout)}",
-                       f"= {said}" if case.last is None else f"in {said}")
-                rows = [tag, *_reply_rows(case.decoding)]
+                rows = [*_tag_rows(p.table, case), *_reply_rows(case.decoding)]
+                said = said if case.under is None else f"{case.under} then {said}"
                 if p.table.each:  # one sub-payload; the frame is shown around the first alone
                     if p.table.length_layout is not None:
                         assert isinstance(case.decoding, m.Unpack)  # sub-payloads are bytes (E505)
@@ -129,6 +128,19 @@ def _kind(layout: m.StructLayout, code: str, size: int) -> str:
     if size == 1 or kind == "text":
         return kind
     return kind + {">": " BE", "!": " BE", "<": " LE"}.get(layout.order, " native")
+
+
+def _tag_rows(table: m.ReplyTable, case: m.ReplyCase) -> list[tuple[int | None, str, str]]:
+    """The tag choosing an entry, and a nested table's tag after it (Firmata's F0, then 79)."""
+    assert table.tag_layout is not None
+    said = case.values_text()
+    if case.under is None:
+        return [(table.tag_layout.size, f"tag {_integer_kind(table.tag_layout)}",
+                 f"= {said}" if case.last is None else f"in {said}")]
+    inner = case.under_layout
+    assert inner is not None
+    return [(table.tag_layout.size, f"tag {_integer_kind(table.tag_layout)}", f"= {case.under}"),
+            (inner.size, f"tag {_integer_kind(inner)}", f"= {said}" if case.last is None else f"in {said}")]
 
 
 def _integer_kind(layout: m.StructLayout) -> str:
@@ -442,9 +454,7 @@ def reply_layouts(model: m.Model, p: m.Primitive) -> list[tuple[str, Layout]]:
         for case in p.table.cases:
             rows = _reply_rows(case.decoding)
             if p.table.tag is not None:
-                assert p.table.tag_layout is not None
-                rows = [(p.table.tag_layout.size, f"tag {_integer_kind(p.table.tag_layout)}",
-                         f"= {case.values_text()}"), *rows]
+                rows = [*_tag_rows(p.table, case), *rows]
             found += layouts(f"reply when {p.table.key} = {case.values_text()}", case.decoding, rows)
         return found
     if p.listed:
@@ -464,6 +474,7 @@ def reply_layouts(model: m.Model, p: m.Primitive) -> list[tuple[str, Layout]]:
     return found
 
 
+_TAG = re.compile(r"tag ([su])\d+( LE| native| BE)? (?:= |in )(-?\d+)(?:\.\.(-?\d+))?")
 _CONSTANT = re.compile(r"([0-9A-F]{2}(?: [0-9A-F]{2})*)(?: \(-?\d+\))?")
 
 
@@ -484,10 +495,17 @@ def matched(layout: Layout, data: bytes) -> list[tuple[int, str, str]] | None:
     if sized is None:
         return None
     offset = 0
-    for size, _what, detail in sized:
+    for size, what, detail in sized:
         constant = _CONSTANT.fullmatch(detail)
         if constant is not None and data[offset : offset + size] != bytes.fromhex(constant.group(1)):
             return None
+        tag = _TAG.fullmatch(f"{what} {detail}")
+        if tag is not None:  # a reply table's tag: its value, or one of its range
+            order = {" LE": "little", " native": sys.byteorder}.get(tag.group(2) or "", "big")
+            value = int.from_bytes(data[offset : offset + size], order, signed=tag.group(1) == "s")
+            low, high = int(tag.group(3)), int(tag.group(4) or tag.group(3))
+            if not low <= value <= high:
+                return None
         offset += size
     return sized
 

@@ -562,9 +562,14 @@ class _Driver:
                 self.code(w, f"{base}_actions" if case is None else f"{base}_{_case(case)}_actions", entry.actions)
             w.blank(2)
             if case is not None:
-                w.line(f"# reply {case.values_text()}")
-                texts.append(f"{case.value}: {name}" if case.last is None
-                             else f"**dict.fromkeys({case.values()!r}, {name})")  # a range entry
+                w.line(f"# reply {case.values_text()}" if case.under is None
+                       else f"# reply {case.under}, then {case.values_text()}")
+                if case.last is None:
+                    texts.append(f"{case.table_keys()[0]!r}: {name}")
+                elif case.under is None:
+                    texts.append(f"**dict.fromkeys({case.values()!r}, {name})")  # a range entry
+                else:
+                    texts.append(f"**{{({case.under}, tag): {name} for tag in {case.values()!r}}}")
             if entry.request is not None:
                 function = self.written(w, prim, entry.request)
                 if case is None:
@@ -955,7 +960,8 @@ def _error_frame(shape: lowering.Reply) -> lowering.Code | None:
 def _case(case: m.ReplyCase) -> str:
     """A reply table entry's value in names: 7, or m7 for -7; 224_239 for a range."""
     first, last = (f"m{-v}" if v < 0 else str(v) for v in (case.value, case.value if case.last is None else case.last))
-    return first if case.last is None else f"{first}_{last}"
+    under = "" if case.under is None else f"{case.under}_"  # a nested table's entry: 240_121
+    return under + (first if case.last is None else f"{first}_{last}")
 
 
 def _summed(checksum: engine.Checksum, terms: list[str]) -> str:

@@ -23,7 +23,7 @@ from rdisc.engine.errors import (
     RdisTimeout,
     RdisValueError,
 )
-from rdisc.engine.operations import EVAL_ERRORS, MAX_ARRAY, MAX_INT, MAX_LINE
+from rdisc.engine.operations import EVAL_ERRORS, MAX_ARRAY, MAX_INT, MAX_LINE, LookupMiss
 from rdisc.engine.plans import (
     ErrorReply,
     FixedReply,
@@ -577,17 +577,33 @@ class Exchange:
                 assert_never(shape)
 
     def _met(self, plan: Primitive, local: Args, reply: Sequence[Any]) -> Sequence[Any]:
-        """The reply, when it meets the primitive's `expect` (else, like a reply that does not
-        decode, an RdisProtocolError, which `skip unmatched` reads past)."""
-        if plan.expect is None:
-            return reply
-        try:
-            met = plan.expect(self._state, local, reply)
-        except EVAL_ERRORS as err:
-            raise RdisProtocolError(f"{plan.name}: reply {tuple(reply)!r}: its `expect` failed: {err}") from None
-        if not met:
-            raise RdisProtocolError(f"{plan.name}: reply {tuple(reply)!r} does not meet its `expect`")
+        """The reply, when it meets the primitive's `expect` and its post-actions find each key
+        they look up (else, like a reply that does not decode, an RdisProtocolError, which
+        `skip unmatched` reads past). The `expect` first: it may guard a lookup (`out[0] in T`)."""
+        if plan.expect is not None:
+            try:
+                met = plan.expect(self._state, local, reply)
+            except EVAL_ERRORS as err:
+                raise RdisProtocolError(f"{plan.name}: reply {tuple(reply)!r}: its `expect` failed: {err}") from None
+            if not met:
+                raise RdisProtocolError(f"{plan.name}: reply {tuple(reply)!r} does not meet its `expect`")
+        miss = self._missed_lookup(plan, local, reply)
+        if miss is not None:
+            raise RdisProtocolError(miss)
         return reply
+
+    def _missed_lookup(self, plan: Primitive, local: Args, reply: Sequence[Any]) -> str | None:
+        """Why the reply is one the primitive cannot read, when its post-actions look up a key
+        their table lacks (tried before the reply is taken, so `skip unmatched` reads past it)."""
+        if not plan.looks_up or plan.actions is None:
+            return None
+        try:
+            plan.actions(self._state, local, reply)
+        except LookupMiss as err:
+            return f"{plan.name}: reply {tuple(reply)!r}: {err}"
+        except EVAL_ERRORS:
+            pass  # raised as the reply is stored
+        return None
 
     @staticmethod
     def _tagged(plan: Primitive, shape: TaggedReply, payload: bytes, local: Args) -> _ReplyPart:
@@ -666,8 +682,8 @@ class Exchange:
             parts.append((case, [*local, value], decoder.decode(plan.name, payload[start:at])))
         return parts
 
-    @staticmethod
-    def _read_tagged(plan: Primitive, shape: TaggedStream, reader: Incoming, wait: float, local: Args) -> _ReplyPart:
+    def _read_tagged(self, plan: Primitive, shape: TaggedStream, reader: Incoming, wait: float,
+                     local: Args) -> _ReplyPart:
         """A tagged reply without a frame (Firmata's stream): the tag, then exactly the bytes its
         entry decodes (a fixed size: checked). Under `skip unmatched` a tag without an entry is
         read past one byte at a time, the next tag looked for from the byte after its first,
@@ -682,10 +698,25 @@ class Exchange:
                     raise RdisTimeout(missed)
                 raise RdisProtocolError(f"{plan.name}: expected {tag.size} bytes, got {len(head)}")
             value = tag.unpack(head)[0]
-            case = shape.table.get(value)
+            inner = shape.nested_structs.get(value)
+            if inner is not None:  # a nested table: the next tag chooses its entry
+                second = reader.read(inner.size)
+                head += second
+                if len(second) < inner.size:
+                    if skip:
+                        raise RdisTimeout(missed)
+                    raise RdisProtocolError(f"{plan.name}: expected {inner.size} bytes after tag {value}, "
+                                            f"got {len(second)}")
+                sub_command = inner.unpack(second)[0]
+                key: int | tuple[int, int] = (value, sub_command)
+                value = sub_command  # the entry's `tag`
+            else:
+                key = value
+            case = shape.table.get(key)
             if case is None:
                 if not skip:
-                    raise RdisProtocolError(f"{plan.name}: no reply entry for tag {value}")
+                    raise RdisProtocolError(f"{plan.name}: no reply entry for tag "
+                                            f"{' then '.join(map(str, key)) if isinstance(key, tuple) else key}")
                 if reader.deadline is not None and time.monotonic() >= reader.deadline:
                     raise RdisTimeout(missed)
                 reader.put_back(head[1:])
@@ -699,14 +730,23 @@ class Exchange:
                         raise RdisTimeout(missed)
                     raise RdisProtocolError(f"{plan.name}: no end {decoder.until.hex(' ')} after tag {value} "
                                             f"within {wait:g} s")
-                return case, [*local, value], decoder.decode(plan.name, body[: -len(decoder.until)])
-            body = reader.read(decoder.size)
-            if len(body) < decoder.size:
-                if skip:
-                    raise RdisTimeout(missed)
-                raise RdisProtocolError(f"{plan.name}: expected {decoder.size} bytes after tag {value}, "
-                                        f"got {len(body)}")
-            return case, [*local, value], decoder.decode(plan.name, body)
+                decoded = decoder.decode(plan.name, body[: -len(decoder.until)])
+            else:
+                body = reader.read(decoder.size)
+                if len(body) < decoder.size:
+                    if skip:
+                        raise RdisTimeout(missed)
+                    raise RdisProtocolError(f"{plan.name}: expected {decoder.size} bytes after tag {value}, "
+                                            f"got {len(body)}")
+                decoded = decoder.decode(plan.name, body)
+            miss = self._missed_lookup(case, [*local, value], decoded)
+            if miss is None:
+                return case, [*local, value], decoded
+            if not skip:
+                raise RdisProtocolError(miss)
+            if reader.deadline is not None and time.monotonic() >= reader.deadline:
+                raise RdisTimeout(missed)
+            reader.put_back((head + body)[1:])  # a message of another kind: looked for from the byte after its tag
 
     def _port_error(self, plan: Primitive, err: BaseException) -> RdisError:
         """The typed error for what a port raised: a write that timed out, or a failed port."""
@@ -740,6 +780,8 @@ class Exchange:
                 assert plan.actions is not None
                 try:
                     changes = plan.actions(state, local, reply)
+                except LookupMiss as err:  # a reply this primitive cannot read
+                    raise RdisProtocolError(f"{plan.name}: reply {tuple(reply)!r}: {err}") from None
                 except EVAL_ERRORS as err:
                     raise RdisValueError(f"{plan.name}: {err}") from None
                 _check_widths(plan, changes)

@@ -455,12 +455,16 @@ FUNCTIONS: dict[str, Callable[..., Any]] = {
 # ---- arrays and tables ----------------------------------------------------------------------------
 
 
+class LookupMiss(ValueError):
+    """A key a lookup table lacks: in a reply's post-actions, a reply the primitive cannot read."""
+
+
 def lookup(table: str, entries: Mapping[Any, Any], key: Any) -> Any:
     """`table[key]` of a description's lookup table: a key it lacks is an error, never a default."""
     try:
         return entries[key]
     except (KeyError, TypeError):
-        raise ValueError(f"table {table} has no entry for {key!r}") from None
+        raise LookupMiss(f"table {table} has no entry for {key!r}") from None
 
 
 def lookup_or(entries: Mapping[Any, Any], key: Any, default: Any) -> Any:

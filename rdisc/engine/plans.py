@@ -100,16 +100,20 @@ class TaggedReply:
 @dataclass(frozen=True, slots=True)
 class TaggedStream:
     """A tag, then exactly the bytes its entry decodes, with no frame (Firmata's stream). `skip`:
-    a tag without an entry is read past."""
+    a tag without an entry is read past. `nested`: the tags after which a second tag (its struct
+    format) chooses the entry, keyed in `table` by the pair (Firmata's sysex sub-commands)."""
 
     tag: str
-    table: Mapping[int, Primitive]
+    table: Mapping[int | tuple[int, int], Primitive]
     _: KW_ONLY
     skip: bool = False
+    nested: Mapping[int, str] = field(default_factory=dict)
     tag_struct: struct.Struct = field(init=False)
+    nested_structs: Mapping[int, struct.Struct] = field(init=False)
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "tag_struct", struct.Struct(self.tag))
+        object.__setattr__(self, "nested_structs", {value: struct.Struct(fmt) for value, fmt in self.nested.items()})
 
 
 @dataclass(frozen=True, slots=True)
@@ -200,6 +204,7 @@ class Primitive:
     request: Request | None = None  # its parameters' values to the bytes, when it is only written (`_sent_at_once`)
     expect: Callable[[StateValues, Args, Sequence[Any]], object] | None = None  # a condition its decoded reply meets
     lines: Callable[[StateValues, Args], dict[str, Value]] | None = None  # "dtr"/"rts": levels, set before the request
+    looks_up: bool = False  # its post-actions look a key up in a table: a miss is a reply it cannot read
     floats: tuple[int, ...] = field(init=False)
     ranged: tuple[int, ...] = field(init=False)
     asked: Request | None = field(init=False)  # the request of a plain exchange (`_asked_at_once`), in one step

@@ -142,7 +142,7 @@ class _Engine:
             p.name, p.connection, built(p.params), self.closure(p.values), built(p.encoder), reply=self.reply(p.reply),
             actions=self.closure(p.actions), frame=None if p.frame is None else self.use(p.frame), timeout=p.timeout,
             retries=p.retries,
-            checked=p.checked, expect=self.closure(p.expect), lines=self.closure(p.lines),
+            checked=p.checked, expect=self.closure(p.expect), lines=self.closure(p.lines), looks_up=p.looks_up,
             request=None if p.request is None else primitive_request(p.request, built(p.params), self.closure),
         )
 
@@ -159,8 +159,8 @@ class _Engine:
                 return engine.FramedReply(built(decoder), skip=skip, error=self.error(error))
             case plans.TaggedReply(tag=tag, table=table, skip=skip):
                 return engine.TaggedReply(tag, self.table(table), skip=skip)
-            case plans.TaggedStream(tag=tag, table=table, skip=skip):
-                return engine.TaggedStream(tag, self.table(table), skip=skip)
+            case plans.TaggedStream(tag=tag, table=table, skip=skip, nested=nested):
+                return engine.TaggedStream(tag, self.table(table), skip=skip, nested=nested)
             case plans.SubPayloads(tag=tag, table=table, length=length, skip=skip):
                 return engine.SubPayloads(tag, self.table(table), length, skip=skip)
             case plans.Records(marker=marker, decoder=decoder, skip=skip):
@@ -181,9 +181,9 @@ class _Engine:
         return engine.ErrorReply(e.decoder.value, e.marker, None if e.frame is None else self.use(e.frame), e.codes,
                                  dict(e.names))
 
-    def table(self, entries: tuple[plans.Entry, ...]) -> dict[int, engine.Primitive]:
-        """A reply table: each entry's plan for each of its values (a range entry's plan once)."""
-        return {value: self.primitive(entry.plan) for entry in entries for value in entry.case.values()}
+    def table(self, entries: tuple[plans.Entry, ...]) -> dict[Any, engine.Primitive]:
+        """A reply table: each entry's plan for each of its keys (a range entry's plan once)."""
+        return {key: self.primitive(entry.plan) for entry in entries for key in entry.case.table_keys()}
 
     def output(self, o: plans.Output) -> engine.Output:
         return self.once(o, lambda: engine.Output(o.name, self.closure(o.fields), o.adapter, o.frame,

@@ -219,7 +219,8 @@ def _reply_bytes(prim: m.Primitive, frames: dict[str, m.Frame] | None, request: 
         case None if prim.table is not None:  # each entry's reply after its tag (and its length)
             t = prim.table
             head = sum(layout.size for layout in (t.tag_layout, t.length_layout) if layout is not None)
-            sizes = [message_bytes(prim.case(c), frames, False) - request - framing - answer + head for c in t.cases]
+            sizes = [message_bytes(prim.case(c), frames, False) - request - framing - answer + head
+                     + (0 if c.under_layout is None else c.under_layout.size) for c in t.cases]
             reply = sum(sizes) if t.each else max(sizes, default=0)  # sub-payloads: each entry's once
         case None:
             reply = 0

@@ -1041,7 +1041,7 @@ class _Checker:
                               "and cannot name a parameter of it", help="rename the parameter")
 
     def reply_table(self, clause: ast.ReplyTable, params: tuple[m.Parameter, ...], scope: Names,
-                    name: ast.Ident, unframed: bool) -> m.ReplyTable | None:
+                    name: ast.Ident, unframed: bool, nested: bool = False) -> m.ReplyTable | None:
         """`reply KEY { VALUE: unpack ... }`: one reply per value of an int parameter with a range,
         every value of the range with its entry. `reply tag "fmt" { ... }`: one per tag value; read
         without a frame, each entry's size fixed (the tag says how much follows it)."""
@@ -1097,6 +1097,10 @@ class _Checker:
                               labels=(Label(_values_span(seen[twice]), "first given here"),))
                 continue
             seen.update(dict.fromkeys(range(low, high + 1), entry))
+            if entry.table is not None:
+                cases.extend(self.nested_table(clause, entry, entry.table, low, params, scope, name, unframed, nested))
+                continue
+            assert entry.decoding is not None  # the grammar's: an entry decodes, or has a table
             decoding, reply = self.decoding(entry.decoding)
             if entry.until is not None:
                 decoding = self.until(entry, decoding, name, clause.tag is not None and unframed)
@@ -1130,6 +1134,26 @@ class _Checker:
                               help="give every value of the range its reply, or narrow the range")
         return m.ReplyTable(key, tuple(cases))
 
+    def nested_table(self, clause: ast.ReplyTable, entry: ast.ReplyEntry, table: ast.ReplyTable, value: int,
+                     params: tuple[m.Parameter, ...], scope: Names, name: ast.Ident, unframed: bool,
+                     nested: bool) -> list[m.ReplyCase]:
+        """`VALUE: tag "fmt" { ... }`: after the tag VALUE, the next tag chooses among the nested
+        table's entries (Firmata's sysex: F0, then the sub-command). One level, of a tagged reply
+        read without a frame, for one value; its entries checked as the table's own."""
+        assert table.tag is not None  # the grammar's
+        if clause.tag is None or not unframed or clause.each or nested or entry.last is not None:
+            why = ("a nested table is for one tag value, not a range" if entry.last is not None
+                   else "a nested table holds no nested table" if nested
+                   else f"`{name.text}` reads no tagged reply without a frame")
+            self.d.report("E505", table.tag.span, f"a nested tag table is an entry of a tagged reply read without a "
+                          f"frame, one level deep: {why}",
+                          help='e.g. `0xF0: tag "B" { 0x79: unpack "BB*" until "\\xF7" }`, Firmata\'s sysex')
+            return []
+        inner = self.reply_table(table, params, scope, name, unframed, nested=True)
+        if inner is None:
+            return []
+        return [replace(c, under=value, under_tag=table.tag.value, under_layout=inner.tag_layout) for c in inner.cases]
+
     def sub_payloads(self, clause: ast.ReplyTable, name: ast.Ident, unframed: bool) -> bool:
         """`reply each tag "B" length "B"`: sub-payloads until the framed payload ends, each its
         length an unsigned integer after its tag. Whether the table can be read so."""
@@ -1161,20 +1185,20 @@ class _Checker:
         length field (the size says where the next tag starts), one the length field can state."""
         which = f"tag {low}" if low == high else f"tags {low}..{high}"
         if isinstance(decoding, m.Regex):
-            self.d.report("E505", entry.decoding.span, f"the sub-payload of {which} is bytes: decode it with `unpack`")
+            self.d.report("E505", _decoding_span(entry), f"the sub-payload of {which} is bytes: decode it with `unpack`")
             return
         if not isinstance(decoding, m.Unpack):
             return
         open_end = _open_end(decoding)
         if clause.length is None and open_end:
-            self.d.report("E505", entry.decoding.span, f"the sub-payloads have no length field, so the entry for "
+            self.d.report("E505", _decoding_span(entry), f"the sub-payloads have no length field, so the entry for "
                           f"{which} needs a fixed size, but it {open_end}",
                           help='give each sub-payload its length: `reply each tag "B" length "B" { ... }`')
         elif clause.length is not None and length is not None and not open_end:
             size = decoding.layout.size
             most = length.slots[0].high or 0
             if size > most:
-                self.d.report("E505", entry.decoding.span, f"the entry for {which} decodes {size} bytes, more than "
+                self.d.report("E505", _decoding_span(entry), f"the entry for {which} decodes {size} bytes, more than "
                               f"a sub-payload's length field \"{clause.length.value}\" states ({most})")
 
     def sized_entry(self, entry: ast.ReplyEntry, decoding: m.Unpack | m.Regex | None, name: ast.Ident,
@@ -1187,7 +1211,7 @@ class _Checker:
         else:
             return
         which = f"tag {low}" if low == high else f"tags {low}..{high}"
-        self.d.report("E505", entry.decoding.span, f"`{name.text}` reads its reply without a frame, so its entry for "
+        self.d.report("E505", _decoding_span(entry), f"`{name.text}` reads its reply without a frame, so its entry for "
                       f"{which} needs a fixed size, but {why}",
                       help="decode it with an `unpack` of a fixed size, or read the reply through a frame that says "
                       "where it ends")
@@ -1207,11 +1231,11 @@ class _Checker:
             return None
         if not isinstance(decoding, m.Unpack):
             if decoding is not None:
-                self.d.report("E505", entry.decoding.span, "an entry read `until` its end is decoded by an `unpack`")
+                self.d.report("E505", _decoding_span(entry), "an entry read `until` its end is decoded by an `unpack`")
             return None
         layout = decoding.layout
         if not layout.rest or layout.varying is not None:
-            self.d.report("E505", entry.decoding.span, "an entry read `until` its end takes what comes before the "
+            self.d.report("E505", _decoding_span(entry), "an entry read `until` its end takes what comes before the "
                           "end as bytes: its `unpack` ends in `*`",
                           help='e.g. `0xF0: unpack "B*" until "\\xF7"`, the bytes of a Firmata sysex message')
             return None
@@ -1493,6 +1517,12 @@ class _Checker:
         for assign in block.assigns:
             value = self.typer.expr(assign.value, env)
             target = assign.target.text
+            when = None
+            if assign.when is not None:  # made only if it holds: the state variable is read to keep it
+                when = self.typer.expr(assign.when, env)
+                if when.type is not None and when.type is not Type.BOOL:
+                    self.d.report("E401", assign.when.span, f"`when` takes a bool, but this is {describe(when.type)}")
+                self.typer.reads.add(target)
             state = self.s.states.get(target)
             if state is None and target in self.settings:
                 self.d.report("E207", assign.target.span, f"cannot assign `{target}`: it is a setting, given when "
@@ -1519,7 +1549,7 @@ class _Checker:
                                   "but this array has any size", help=f"declare it `{declared.element.value}[]`")
                     continue
                 self.flow(value, declared, assign.value.span, f"state variable `{target}`")
-                out.append(m.PostAction(m.StateRef(target), value, assign.span))
+                out.append(m.PostAction(m.StateRef(target), value, assign.span, when))
                 continue
             if not isinstance(declared, m.Array):
                 if declared is not None:
@@ -1534,12 +1564,12 @@ class _Checker:
             if first is not None and first.index is not None:  # replace one more element of the same array
                 before = next(k for k, a in enumerate(out) if a.target == target)
                 out[before] = m.PostAction(m.StateRef(target), m.Replaced(out[before].value, index, value, declared,
-                                                                          assign.span), out[before].span)
+                                                                          assign.span, when), out[before].span)
             else:
                 written[target] = assign
                 whole = m.Var(target, Scope.STATE, declared, assign.target.span)
-                out.append(m.PostAction(m.StateRef(target), m.Replaced(whole, index, value, declared, assign.span),
-                                        assign.span))
+                out.append(m.PostAction(m.StateRef(target), m.Replaced(whole, index, value, declared, assign.span,
+                                                                       when), assign.span))
         return tuple(out)
 
     def interface(self, decl: ast.InterfaceDecl, interface_params: dict[str, tuple[m.Parameter, ...]],
@@ -1954,6 +1984,11 @@ def _ranged(value: object) -> str:
 
 def _count(n: int, noun: str) -> str:
     return f"{n} {noun}" if n == 1 else f"{n} {noun}s"
+
+
+def _decoding_span(entry: ast.ReplyEntry) -> Span:
+    """Where an entry's decoding is written (the entry, for a nested table's)."""
+    return entry.span if entry.decoding is None else entry.decoding.span
 
 
 def _values_span(entry: ast.ReplyEntry) -> Span:

@@ -205,6 +205,7 @@ class Replaced:
     value: Expr
     type: Array
     span: Span | None = _span
+    when: Expr | None = None  # `array[index] = value when COND`: the element kept unless COND holds
 
 
 def array_name(array: Expr) -> str:
@@ -471,6 +472,25 @@ class PostAction:
     target: StateRef
     value: Expr
     span: Span | None = _span
+    when: Expr | None = None  # `target = value when COND`: the state variable kept unless COND holds
+
+    def stored(self) -> Expr:
+        """What the action stores, its conditions spelled out: `value if COND else target`, and
+        for each element `array[index] = value when COND`, the element as it was unless COND holds."""
+        return _kept_unless(self.when, _elements_kept(self.value), Var(self.target, Scope.STATE, self.value.type))
+
+
+def _elements_kept(value: Expr) -> Expr:
+    """`value` with each conditional element replacement spelled out (see PostAction.stored)."""
+    if not isinstance(value, Replaced):
+        return value
+    array = _elements_kept(value.array)
+    element = _kept_unless(value.when, value.value, Element(array, value.index, value.type.element))
+    return Replaced(array, value.index, element, value.type, value.span)
+
+
+def _kept_unless(when: Expr | None, value: Expr, kept: Expr) -> Expr:
+    return value if when is None else IfElse(when, value, kept, value.type, value.span)
 
 
 MODEM_LINES = ("dtr", "rts")
@@ -510,6 +530,17 @@ def may_outgrow(e: Expr) -> bool:
         case FuncCall(func="len" | "byte" | "bool") | Replaced():
             return False  # a replaced element is checked as it is stored
     return True
+
+
+def looks_up(e: object) -> bool:
+    """Whether an expression looks a key up in a table without a default (`HEALTH[out[0]]`),
+    which a key the table lacks makes fail."""
+    if isinstance(e, Lookup) and e.default is None:
+        return True
+    if isinstance(e, tuple):
+        return any(looks_up(item) for item in e)
+    return dataclasses.is_dataclass(e) and any(looks_up(getattr(e, f.name)) for f in dataclasses.fields(e)
+                                               if f.name != "span")
 
 
 # ---- frames: the bytes around a payload ---------------------------------------------
@@ -667,10 +698,18 @@ class ReplyCase:
     decoding: Unpack | Regex
     actions: tuple[PostAction, ...] = ()
     last: int | None = None  # the end of a range entry's values
+    under: int | None = None  # an entry of a nested table: the tag before (Firmata's F0), read first
+    under_tag: str | None = None  # then the nested table's tag (a one-integer struct format)
+    under_layout: StructLayout | None = field(default=None, compare=False, repr=False)  # of `under_tag`
 
     def values(self) -> range:
         """The key or tag values this entry is the reply for (a few thousand at most: checked)."""
         return range(self.value, (self.value if self.last is None else self.last) + 1)
+
+    def table_keys(self) -> list[int | tuple[int, int]]:
+        """Its keys in the engine's table: its values, or under a nested table (tag, its tag) pairs."""
+        under = self.under
+        return list(self.values()) if under is None else [(under, v) for v in self.values()]
 
     def values_text(self) -> str:
         """`7`, or `224..239` for a range entry."""

@@ -348,16 +348,25 @@ def _hash_Element(self: Any) -> int:
     return hash((self.array, self.index, self.type))
 
 
-def _init_Replaced(self: Any, array: Any, index: Any, value: Any, type: Any, span: Any = DEFAULT) -> None:
+def _init_Replaced(
+    self: Any,
+    array: Any,
+    index: Any,
+    value: Any,
+    type: Any,
+    span: Any = DEFAULT,
+    when: Any = DEFAULT,
+) -> None:
     _set(self, "array", array)
     _set(self, "index", index)
     _set(self, "value", value)
     _set(self, "type", type)
     _set(self, "span", span)
+    _set(self, "when", when)
 
 
 def _repr_Replaced(self: Any) -> str:
-    return f"{self.__class__.__qualname__}(array={self.array!r}, index={self.index!r}, value={self.value!r}, type={self.type!r})"
+    return f"{self.__class__.__qualname__}(array={self.array!r}, index={self.index!r}, value={self.value!r}, type={self.type!r}, when={self.when!r})"
 
 
 def _eq_Replaced(self: Any, other: Any) -> Any:
@@ -367,17 +376,19 @@ def _eq_Replaced(self: Any, other: Any) -> Any:
             self.index,
             self.value,
             self.type,
+            self.when,
         ) == (
             other.array,
             other.index,
             other.value,
             other.type,
+            other.when,
         )
     return NotImplemented
 
 
 def _hash_Replaced(self: Any) -> int:
-    return hash((self.array, self.index, self.value, self.type))
+    return hash((self.array, self.index, self.value, self.type, self.when))
 
 
 def _init_Parameter(
@@ -930,24 +941,25 @@ def _hash_Regex(self: Any) -> int:
     return hash((self.pattern,))
 
 
-def _init_PostAction(self: Any, target: Any, value: Any, span: Any = DEFAULT) -> None:
+def _init_PostAction(self: Any, target: Any, value: Any, span: Any = DEFAULT, when: Any = DEFAULT) -> None:
     _set(self, "target", target)
     _set(self, "value", value)
     _set(self, "span", span)
+    _set(self, "when", when)
 
 
 def _repr_PostAction(self: Any) -> str:
-    return f"{self.__class__.__qualname__}(target={self.target!r}, value={self.value!r})"
+    return f"{self.__class__.__qualname__}(target={self.target!r}, value={self.value!r}, when={self.when!r})"
 
 
 def _eq_PostAction(self: Any, other: Any) -> Any:
     if other.__class__ is self.__class__:
-        return (self.target, self.value) == (other.target, other.value)
+        return (self.target, self.value, self.when) == (other.target, other.value, other.when)
     return NotImplemented
 
 
 def _hash_PostAction(self: Any) -> int:
-    return hash((self.target, self.value))
+    return hash((self.target, self.value, self.when))
 
 
 def _init_LineLevel(self: Any, line: Any, value: Any, span: Any = DEFAULT) -> None:
@@ -1345,15 +1357,21 @@ def _init_ReplyCase(
     decoding: Any,
     actions: Any = DEFAULT,
     last: Any = DEFAULT,
+    under: Any = DEFAULT,
+    under_tag: Any = DEFAULT,
+    under_layout: Any = DEFAULT,
 ) -> None:
     _set(self, "value", value)
     _set(self, "decoding", decoding)
     _set(self, "actions", actions)
     _set(self, "last", last)
+    _set(self, "under", under)
+    _set(self, "under_tag", under_tag)
+    _set(self, "under_layout", under_layout)
 
 
 def _repr_ReplyCase(self: Any) -> str:
-    return f"{self.__class__.__qualname__}(value={self.value!r}, decoding={self.decoding!r}, actions={self.actions!r}, last={self.last!r})"
+    return f"{self.__class__.__qualname__}(value={self.value!r}, decoding={self.decoding!r}, actions={self.actions!r}, last={self.last!r}, under={self.under!r}, under_tag={self.under_tag!r})"
 
 
 def _eq_ReplyCase(self: Any, other: Any) -> Any:
@@ -1363,17 +1381,21 @@ def _eq_ReplyCase(self: Any, other: Any) -> Any:
             self.decoding,
             self.actions,
             self.last,
+            self.under,
+            self.under_tag,
         ) == (
             other.value,
             other.decoding,
             other.actions,
             other.last,
+            other.under,
+            other.under_tag,
         )
     return NotImplemented
 
 
 def _hash_ReplyCase(self: Any) -> int:
-    return hash((self.value, self.decoding, self.actions, self.last))
+    return hash((self.value, self.decoding, self.actions, self.last, self.under, self.under_tag))
 
 
 def _init_ListedReply(
@@ -2475,6 +2497,7 @@ WRITTEN: dict[str, Written] = {
             ("value", MISSING),
             ("type", MISSING),
             ("span", FieldSpec(None, MISSING, False, False)),
+            ("when", DEFAULT),
         ),
         {
             "__init__": _init_Replaced,
@@ -2651,7 +2674,12 @@ WRITTEN: dict[str, Written] = {
         {"__init__": _init_Regex, "__repr__": _repr_Regex, "__eq__": _eq_Regex, "__hash__": _hash_Regex},
     ),
     "PostAction": Written(
-        (("target", MISSING), ("value", MISSING), ("span", FieldSpec(None, MISSING, False, False))),
+        (
+            ("target", MISSING),
+            ("value", MISSING),
+            ("span", FieldSpec(None, MISSING, False, False)),
+            ("when", DEFAULT),
+        ),
         {
             "__init__": _init_PostAction,
             "__repr__": _repr_PostAction,
@@ -2806,7 +2834,15 @@ WRITTEN: dict[str, Written] = {
         },
     ),
     "ReplyCase": Written(
-        (("value", MISSING), ("decoding", MISSING), ("actions", DEFAULT), ("last", DEFAULT)),
+        (
+            ("value", MISSING),
+            ("decoding", MISSING),
+            ("actions", DEFAULT),
+            ("last", DEFAULT),
+            ("under", DEFAULT),
+            ("under_tag", DEFAULT),
+            ("under_layout", FieldSpec(None, MISSING, False, False)),
+        ),
         {
             "__init__": _init_ReplyCase,
             "__repr__": _repr_ReplyCase,

@@ -196,6 +196,7 @@ class Assign:
     value: Expr
     span: Span = _span
     index: Expr | None = None  # `target[index] = value`: one element of an array
+    when: Expr | None = None  # `target = value when COND`: a post-action made only if COND holds
 
 
 # ---- declarations -------------------------------------------------------------
@@ -340,14 +341,17 @@ class SkipUnmatched:
 @dataclass(frozen=True, slots=True)
 class ReplyEntry:
     """`VALUE: unpack "fmt" { post-actions }`: the reply when the key is VALUE; or
-    `LOW..HIGH: ...`: when it is any of them (Firmata's 0xE0..0xEF, a channel in the tag)."""
+    `LOW..HIGH: ...`: when it is any of them (Firmata's 0xE0..0xEF, a channel in the tag); or
+    `VALUE: tag "fmt" { ... }`: a table of its own, chosen by the tag after this one (Firmata's
+    sysex sub-commands), then without a decoding of its own."""
 
     value: Expr
-    decoding: Decoding
+    decoding: Decoding | None
     actions: Actions | None
     span: Span = _span
     last: Expr | None = None  # HIGH of a range entry
     until: StrLit | None = None  # `until "\xF7"`: read to these bytes (an unframed tagged reply's entry)
+    table: ReplyTable | None = None  # `tag "fmt" { ... }`: the next tag chooses among its entries
 
 
 @dataclass(frozen=True, slots=True)

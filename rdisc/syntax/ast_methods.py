@@ -417,25 +417,43 @@ def _hash_Duration(self: Any) -> int:
     return hash((self.value, self.unit))
 
 
-def _init_Assign(self: Any, target: Any, value: Any, span: Any = DEFAULT, index: Any = DEFAULT) -> None:
+def _init_Assign(
+    self: Any,
+    target: Any,
+    value: Any,
+    span: Any = DEFAULT,
+    index: Any = DEFAULT,
+    when: Any = DEFAULT,
+) -> None:
     _set(self, "target", target)
     _set(self, "value", value)
     _set(self, "span", span)
     _set(self, "index", index)
+    _set(self, "when", when)
 
 
 def _repr_Assign(self: Any) -> str:
-    return f"{self.__class__.__qualname__}(target={self.target!r}, value={self.value!r}, index={self.index!r})"
+    return f"{self.__class__.__qualname__}(target={self.target!r}, value={self.value!r}, index={self.index!r}, when={self.when!r})"
 
 
 def _eq_Assign(self: Any, other: Any) -> Any:
     if other.__class__ is self.__class__:
-        return (self.target, self.value, self.index) == (other.target, other.value, other.index)
+        return (
+            self.target,
+            self.value,
+            self.index,
+            self.when,
+        ) == (
+            other.target,
+            other.value,
+            other.index,
+            other.when,
+        )
     return NotImplemented
 
 
 def _hash_Assign(self: Any) -> int:
-    return hash((self.target, self.value, self.index))
+    return hash((self.target, self.value, self.index, self.when))
 
 
 def _init_ImportDecl(self: Any, path: Any, span: Any = DEFAULT, doc: Any = DEFAULT) -> None:
@@ -837,6 +855,7 @@ def _init_ReplyEntry(
     span: Any = DEFAULT,
     last: Any = DEFAULT,
     until: Any = DEFAULT,
+    table: Any = DEFAULT,
 ) -> None:
     _set(self, "value", value)
     _set(self, "decoding", decoding)
@@ -844,10 +863,11 @@ def _init_ReplyEntry(
     _set(self, "span", span)
     _set(self, "last", last)
     _set(self, "until", until)
+    _set(self, "table", table)
 
 
 def _repr_ReplyEntry(self: Any) -> str:
-    return f"{self.__class__.__qualname__}(value={self.value!r}, decoding={self.decoding!r}, actions={self.actions!r}, last={self.last!r}, until={self.until!r})"
+    return f"{self.__class__.__qualname__}(value={self.value!r}, decoding={self.decoding!r}, actions={self.actions!r}, last={self.last!r}, until={self.until!r}, table={self.table!r})"
 
 
 def _eq_ReplyEntry(self: Any, other: Any) -> Any:
@@ -858,18 +878,20 @@ def _eq_ReplyEntry(self: Any, other: Any) -> Any:
             self.actions,
             self.last,
             self.until,
+            self.table,
         ) == (
             other.value,
             other.decoding,
             other.actions,
             other.last,
             other.until,
+            other.table,
         )
     return NotImplemented
 
 
 def _hash_ReplyEntry(self: Any) -> int:
-    return hash((self.value, self.decoding, self.actions, self.last, self.until))
+    return hash((self.value, self.decoding, self.actions, self.last, self.until, self.table))
 
 
 def _init_ReplyTable(
@@ -2396,6 +2418,7 @@ WRITTEN: dict[str, Written] = {
             ("value", MISSING),
             ("span", FieldSpec(None, MISSING, False, False)),
             ("index", DEFAULT),
+            ("when", DEFAULT),
         ),
         {"__init__": _init_Assign, "__repr__": _repr_Assign, "__eq__": _eq_Assign, "__hash__": _hash_Assign},
     ),
@@ -2575,6 +2598,7 @@ WRITTEN: dict[str, Written] = {
             ("span", FieldSpec(None, MISSING, False, False)),
             ("last", DEFAULT),
             ("until", DEFAULT),
+            ("table", DEFAULT),
         ),
         {
             "__init__": _init_ReplyEntry,

@@ -320,6 +320,9 @@ def transformer_class() -> Callable[[Builder], Transformer[Token, list[ast.Decl]
         def assign(self, meta: Meta, c: list[Any]) -> ast.Assign:
             return ast.Assign(self.b.ident(c[0]), c[2], self.b.span(meta), c[1])
 
+        def post_assign(self, meta: Meta, c: list[Any]) -> ast.Assign:
+            return ast.Assign(self.b.ident(c[0]), c[2], self.b.span(meta), c[1], c[3])
+
         def array_type(self, meta: Meta, c: list[Any]) -> ast.ArrayOf:
             return ast.ArrayOf(self.b.ident(c[0]), c[1], self.b.span(meta))
 
@@ -396,6 +399,11 @@ def transformer_class() -> Callable[[Builder], Transformer[Token, list[ast.Decl]
             actions = None if assigns == [None] else ast.Actions(tuple(assigns), self.b.span(meta))
             return ast.ReplyEntry(value, decoding, actions, self.b.span(meta), last,
                                   None if until is None else self.b.string(until))
+
+        def reply_nested(self, meta: Meta, c: list[Any]) -> ast.ReplyEntry:
+            tag = self.b.string(c[1])
+            table = ast.ReplyTable(ast.Ident("tag", tag.span), tuple(c[2:]), self.b.span(meta), tag)
+            return ast.ReplyEntry(c[0], None, None, self.b.span(meta), table=table)
 
         def reply_timeout(self, meta: Meta, c: list[Any]) -> ast.ReplyTimeout:
             return ast.ReplyTimeout(c[0], self.b.span(meta))

@@ -254,7 +254,8 @@ def _duration(d: ast.Duration) -> str:
 
 def _assign(a: ast.Assign) -> str:
     element = "" if a.index is None else f"[{print_expr(a.index)}]"
-    return f"{a.target.text}{element} = {print_expr(a.value)}"
+    when = "" if a.when is None else f" when {print_expr(a.when)}"
+    return f"{a.target.text}{element} = {print_expr(a.value)}{when}"
 
 
 def _connection_attr(a: ast.ConnectionAttr) -> str:
@@ -391,6 +392,12 @@ def _primitive_clause(c: ast.PrimitiveClause) -> tuple[list[str], bool]:
                 lines = [f"reply {'each ' if each else ''}tag {p.quote(tag.value)}{sized} {{"]
             for entry in entries:
                 values = print_expr(entry.value) + ("" if entry.last is None else f"..{print_expr(entry.last)}")
+                if entry.table is not None:  # a nested table, printed as a table is
+                    inner, _ = _primitive_clause(entry.table)
+                    lines.extend([f"{INDENT}{values}: {inner[0].removeprefix('reply ')}",
+                                  *(INDENT + line for line in inner[1:])])
+                    continue
+                assert entry.decoding is not None
                 head = f"{values}: {entry.decoding.kind} {spell_template(entry.decoding.template.value)}"
                 if entry.until is not None:
                     head += f" until {p.quote_octets(entry.until.value)}"

@@ -1170,9 +1170,32 @@ def actions_text(actions: tuple[tuple[str, Expr], ...]) -> str:
     return " { " + "  ".join(f"{target} = {value.text()}" for target, value in actions) + " }"
 
 
+@dataclass(frozen=True)
+class When(Expr):
+    """A post-action's value and its condition: `value when COND` (stored only if COND holds)."""
+
+    stored: Expr
+    condition: Expr
+
+    def text(self) -> str:
+        return f"{self.stored.text()} when {self.condition.text()}"
+
+    @property
+    def const(self) -> bool:
+        return False
+
+    def value(self, env: Mapping[str, Any]) -> Any:
+        raise NotImplementedError("a post-action's condition is not an expression")
+
+
 def draw_actions(draw: Draw, states: Mapping[str, str], scope: Scope) -> tuple[tuple[str, Expr], ...]:
     targets = draw(st.lists(st.sampled_from(sorted(states)), max_size=3, unique=True)) if states else []
-    return tuple((t, expression(draw, states[t], scope, 2)) for t in targets)
+    return tuple((t, _conditioned(draw, expression(draw, states[t], scope, 2), scope)) for t in targets)
+
+
+def _conditioned(draw: Draw, value: Expr, scope: Scope) -> Expr:
+    """A post-action's value, sometimes made only when a condition holds (`when COND`)."""
+    return When(value.type, value, expression(draw, BOOL, scope, 1)) if sometimes(draw, 4) else value
 
 
 # ---- the elements of a description ------------------------------------------------------------------
@@ -1216,6 +1239,7 @@ class Primitive:
     lasts: tuple[int | None, ...] = ()  # a tag table's entries' last values (`value..last`), None for one value
     retries: int = 0  # `retry N`: resends after a timeout or a mismatched reply
     error: bytes = b""  # `error "MARKER" unpack "B"`: the bytes an unframed error reply starts with
+    nested: tuple[int, int] | None = None  # (an entry, a sub-tag): that entry a nested table `tag "B" { SUB: ... }`
 
     def text(self) -> str:
         clauses = [f"on {self.connection}"]
@@ -1235,12 +1259,18 @@ class Primitive:
             clauses.append(f'error {bytes_literal(self.error)} unpack "B"')
         if self.key is not None or self.tag is not None:
             head = f"reply {self.key}" if self.key is not None else f'reply tag "{self.tag}"'
-            entries = "\n".join(f"    {value}{'' if last == value else f'..{last}'}: {reply.text()}"
-                                for (value, last), (_, reply) in zip(self.values(), self.entries))
+            entries = "\n".join(f"    {value}{'' if last == value else f'..{last}'}: {self.entry_text(at, reply)}"
+                                for at, ((value, last), (_, reply)) in enumerate(zip(self.values(), self.entries)))
             clauses.append(f"{head} {{\n{entries}\n}}")
         actions = self.reply.actions if self.reply is not None else self.actions
         params = ", ".join(p.text() for p in self.params)
         return f"primitive {self.name}({params}) " + " ".join(clauses) + actions_text(actions)
+
+    def entry_text(self, at: int, reply: Reply) -> str:
+        """A table entry's reply, or its nested table of one entry."""
+        if self.nested is None or self.nested[0] != at:
+            return reply.text()
+        return f'tag "B" {{\n        {self.nested[1]}: {reply.text()}\n    }}'
 
     @property
     def framed_reply(self) -> bool:
@@ -1275,6 +1305,8 @@ class Primitive:
                 return None, _pack_int(self.tag, max(last for _, last in values) + 1)[0]
             (value, last), (_, reply) = values[at], self.entries[at]
             value += choice // (len(self.entries) + 1) % (last - value + 1)  # one of a range's
+            if self.nested is not None and self.nested[0] == at:  # then the nested table's tag
+                return reply.decoding, struct.pack(self.tag, value) + bytes([self.nested[1]])
             return reply.decoding, struct.pack(self.tag, value)
         return (self.reply.decoding if self.reply is not None else None), b""
 
@@ -1626,8 +1658,12 @@ def primitives(draw: Draw, name: str, states: Mapping[str, str], scope: Scope,
     if (reply is not None and not framed_reply and reply.decoding.kind == "unpack" and reply.decoding.size is not None
             and sometimes(draw, 3)):
         error = draw(st.sampled_from([b"\xee", b"\x15\x15"]))
+    nested = None  # an entry of one value of a table read unframed: dispatching again on the next byte
+    single = [at for at, last in enumerate(lasts or (None,) * len(entries)) if last is None]
+    if tag is not None and (frame is None or not frame.reply) and single and sometimes(draw, 3):
+        nested = (draw(st.sampled_from(single)), draw(st.integers(0, 0x7F)))
     return Primitive(name, params, draw(st.sampled_from(connections)), encoding, template, args, reply, actions,
-                     key, tag, entries, frame, frame_args, skip, timeout, lasts, retries, error)
+                     key, tag, entries, frame, frame_args, skip, timeout, lasts, retries, error, nested)
 
 
 def _call_args(draw: Draw, prim: Primitive, scope: Scope) -> tuple[Expr, ...] | None:
