@@ -512,12 +512,16 @@ FUNCTIONS: dict[str, Callable[..., Any]] = {
 # ---- arrays and tables ----------------------------------------------------------------------------
 
 
+class LookupMiss(ValueError):
+    """A key a lookup table lacks: in a reply's post-actions, a reply the primitive cannot read."""
+
+
 def lookup(table: str, entries: Mapping[Any, Any], key: Any) -> Any:
     """`table[key]` of a description's lookup table: a key it lacks is an error, never a default."""
     try:
         return entries[key]
     except (KeyError, TypeError):
-        raise ValueError(f"table {table} has no entry for {key!r}") from None
+        raise LookupMiss(f"table {table} has no entry for {key!r}") from None
 
 
 def lookup_or(entries: Mapping[Any, Any], key: Any, default: Any) -> Any:
@@ -1779,16 +1783,20 @@ class TaggedReply:
 @dataclass(frozen=True, slots=True)
 class TaggedStream:
     """A tag, then exactly the bytes its entry decodes, with no frame (Firmata's stream). `skip`:
-    a tag without an entry is read past."""
+    a tag without an entry is read past. `nested`: the tags after which a second tag (its struct
+    format) chooses the entry, keyed in `table` by the pair (Firmata's sysex sub-commands)."""
 
     tag: str
-    table: Mapping[int, Primitive]
+    table: Mapping[int | tuple[int, int], Primitive]
     _: KW_ONLY
     skip: bool = False
+    nested: Mapping[int, str] = field(default_factory=dict)
     tag_struct: struct.Struct = field(init=False)
+    nested_structs: Mapping[int, struct.Struct] = field(init=False)
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "tag_struct", struct.Struct(self.tag))
+        object.__setattr__(self, "nested_structs", {value: struct.Struct(fmt) for value, fmt in self.nested.items()})
 
 
 @dataclass(frozen=True, slots=True)
@@ -1879,6 +1887,7 @@ class Primitive:
     request: Request | None = None  # its parameters' values to the bytes, when it is only written (`_sent_at_once`)
     expect: Callable[[StateValues, Args, Sequence[Any]], object] | None = None  # a condition its decoded reply meets
     lines: Callable[[StateValues, Args], dict[str, Value]] | None = None  # "dtr"/"rts": levels, set before the request
+    looks_up: bool = False  # its post-actions look a key up in a table: a miss is a reply it cannot read
     floats: tuple[int, ...] = field(init=False)
     ranged: tuple[int, ...] = field(init=False)
     asked: Request | None = field(init=False)  # the request of a plain exchange (`_asked_at_once`), in one step
@@ -3126,17 +3135,33 @@ class Exchange:
                 assert_never(shape)
 
     def _met(self, plan: Primitive, local: Args, reply: Sequence[Any]) -> Sequence[Any]:
-        """The reply, when it meets the primitive's `expect` (else, like a reply that does not
-        decode, an RdisProtocolError, which `skip unmatched` reads past)."""
-        if plan.expect is None:
-            return reply
-        try:
-            met = plan.expect(self._state, local, reply)
-        except EVAL_ERRORS as err:
-            raise RdisProtocolError(f"{plan.name}: reply {tuple(reply)!r}: its `expect` failed: {err}") from None
-        if not met:
-            raise RdisProtocolError(f"{plan.name}: reply {tuple(reply)!r} does not meet its `expect`")
+        """The reply, when it meets the primitive's `expect` and its post-actions find each key
+        they look up (else, like a reply that does not decode, an RdisProtocolError, which
+        `skip unmatched` reads past). The `expect` first: it may guard a lookup (`out[0] in T`)."""
+        if plan.expect is not None:
+            try:
+                met = plan.expect(self._state, local, reply)
+            except EVAL_ERRORS as err:
+                raise RdisProtocolError(f"{plan.name}: reply {tuple(reply)!r}: its `expect` failed: {err}") from None
+            if not met:
+                raise RdisProtocolError(f"{plan.name}: reply {tuple(reply)!r} does not meet its `expect`")
+        miss = self._missed_lookup(plan, local, reply)
+        if miss is not None:
+            raise RdisProtocolError(miss)
         return reply
+
+    def _missed_lookup(self, plan: Primitive, local: Args, reply: Sequence[Any]) -> str | None:
+        """Why the reply is one the primitive cannot read, when its post-actions look up a key
+        their table lacks (tried before the reply is taken, so `skip unmatched` reads past it)."""
+        if not plan.looks_up or plan.actions is None:
+            return None
+        try:
+            plan.actions(self._state, local, reply)
+        except LookupMiss as err:
+            return f"{plan.name}: reply {tuple(reply)!r}: {err}"
+        except EVAL_ERRORS:
+            pass  # raised as the reply is stored
+        return None
 
     @staticmethod
     def _tagged(plan: Primitive, shape: TaggedReply, payload: bytes, local: Args) -> _ReplyPart:
@@ -3215,8 +3240,8 @@ class Exchange:
             parts.append((case, [*local, value], decoder.decode(plan.name, payload[start:at])))
         return parts
 
-    @staticmethod
-    def _read_tagged(plan: Primitive, shape: TaggedStream, reader: Incoming, wait: float, local: Args) -> _ReplyPart:
+    def _read_tagged(self, plan: Primitive, shape: TaggedStream, reader: Incoming, wait: float,
+                     local: Args) -> _ReplyPart:
         """A tagged reply without a frame (Firmata's stream): the tag, then exactly the bytes its
         entry decodes (a fixed size: checked). Under `skip unmatched` a tag without an entry is
         read past one byte at a time, the next tag looked for from the byte after its first,
@@ -3231,10 +3256,25 @@ class Exchange:
                     raise RdisTimeout(missed)
                 raise RdisProtocolError(f"{plan.name}: expected {tag.size} bytes, got {len(head)}")
             value = tag.unpack(head)[0]
-            case = shape.table.get(value)
+            inner = shape.nested_structs.get(value)
+            if inner is not None:  # a nested table: the next tag chooses its entry
+                second = reader.read(inner.size)
+                head += second
+                if len(second) < inner.size:
+                    if skip:
+                        raise RdisTimeout(missed)
+                    raise RdisProtocolError(f"{plan.name}: expected {inner.size} bytes after tag {value}, "
+                                            f"got {len(second)}")
+                sub_command = inner.unpack(second)[0]
+                key: int | tuple[int, int] = (value, sub_command)
+                value = sub_command  # the entry's `tag`
+            else:
+                key = value
+            case = shape.table.get(key)
             if case is None:
                 if not skip:
-                    raise RdisProtocolError(f"{plan.name}: no reply entry for tag {value}")
+                    raise RdisProtocolError(f"{plan.name}: no reply entry for tag "
+                                            f"{' then '.join(map(str, key)) if isinstance(key, tuple) else key}")
                 if reader.deadline is not None and time.monotonic() >= reader.deadline:
                     raise RdisTimeout(missed)
                 reader.put_back(head[1:])
@@ -3248,14 +3288,23 @@ class Exchange:
                         raise RdisTimeout(missed)
                     raise RdisProtocolError(f"{plan.name}: no end {decoder.until.hex(' ')} after tag {value} "
                                             f"within {wait:g} s")
-                return case, [*local, value], decoder.decode(plan.name, body[: -len(decoder.until)])
-            body = reader.read(decoder.size)
-            if len(body) < decoder.size:
-                if skip:
-                    raise RdisTimeout(missed)
-                raise RdisProtocolError(f"{plan.name}: expected {decoder.size} bytes after tag {value}, "
-                                        f"got {len(body)}")
-            return case, [*local, value], decoder.decode(plan.name, body)
+                decoded = decoder.decode(plan.name, body[: -len(decoder.until)])
+            else:
+                body = reader.read(decoder.size)
+                if len(body) < decoder.size:
+                    if skip:
+                        raise RdisTimeout(missed)
+                    raise RdisProtocolError(f"{plan.name}: expected {decoder.size} bytes after tag {value}, "
+                                            f"got {len(body)}")
+                decoded = decoder.decode(plan.name, body)
+            miss = self._missed_lookup(case, [*local, value], decoded)
+            if miss is None:
+                return case, [*local, value], decoded
+            if not skip:
+                raise RdisProtocolError(miss)
+            if reader.deadline is not None and time.monotonic() >= reader.deadline:
+                raise RdisTimeout(missed)
+            reader.put_back((head + body)[1:])  # a message of another kind: looked for from the byte after its tag
 
     def _port_error(self, plan: Primitive, err: BaseException) -> RdisError:
         """The typed error for what a port raised: a write that timed out, or a failed port."""
@@ -3289,6 +3338,8 @@ class Exchange:
                 assert plan.actions is not None
                 try:
                     changes = plan.actions(state, local, reply)
+                except LookupMiss as err:  # a reply this primitive cannot read
+                    raise RdisProtocolError(f"{plan.name}: reply {tuple(reply)!r}: {err}") from None
                 except EVAL_ERRORS as err:
                     raise RdisValueError(f"{plan.name}: {err}") from None
                 _check_widths(plan, changes)
