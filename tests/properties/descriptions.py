@@ -588,6 +588,7 @@ def fitting(draw: Draw, e: Expr, ok: Callable[[Any], bool], type_: str,
 # ---- struct formats ---------------------------------------------------------------------------------
 
 _INT_CODES = "bBhHiIqQ"
+_FLOAT_HOLDS = {"e": 65504.0, "f": 3.4028234663852886e38}  # the largest finite half and single floats
 
 
 def code_range(code: str) -> tuple[int, int] | None:
@@ -1538,6 +1539,13 @@ def _request(draw: Draw, params: tuple[Param, ...], scope: Scope,
                 low, high = ranges[value.name]
                 value = value if low <= r[1] and high >= r[0] else Lit(INT, 0)
             value = fitting(draw, value, lambda v, r=r: isinstance(v, int) and r[0] <= v <= r[1], INT, r[0], min(r[1], 300))
+        elif slot.code in _FLOAT_HOLDS and value.const:  # a constant float the half or single code holds
+            try:
+                number = constant_value(value)
+            except Unknown:
+                number = math.inf
+            if not isinstance(number, float) or not abs(number) <= _FLOAT_HOLDS[slot.code]:
+                value = Lit(FLOAT, 1.5)
         elif slot.code[-1] in "sZ" and value.const:  # a constant string no longer than its code holds
             room = int(slot.code[:-1] or 1)
             try:
