@@ -32,6 +32,20 @@ frame tagged(id: int in 0..255) {
 }
 primitive send(message: int in 0..255, value: int in 0..255) on link frame tagged(message) pack "B" (value)
     unpack "B" { echoed = out[0] }
+primitive first(value: int in 0..255) on link frame tagged(1) pack "B" (value)
+"""
+
+
+HEARTBEAT = """\
+robot heartbeat { author "tests" }
+connection serial0: serial { baud 57600 }
+/// MAVLink 2's COMMAND_LONG (76, CRC_EXTRA 152) and HEARTBEAT (0, CRC_EXTRA 50).
+const CRC_EXTRA = { 0: 50, 76: 152 }
+frame mavlink(message: int in 0..65535) {
+    header "\\xFD"  length "B" = payload  literal "\\x00\\x00\\x00\\xFF\\xBE"  field message "<H" = message
+    literal "\\x00"  payload trimmed  checksum "CRC-16/MCRF4XX" "<H" seed CRC_EXTRA[message]
+}
+primitive heartbeat() on serial0 frame mavlink(0) pack "<IBBBBB" (0, 6, 8, 0, 0, 3)
 """
 
 
@@ -56,6 +70,23 @@ def test_the_seed_of_the_fields_value_is_summed_and_not_sent(seeded: Any, messag
         robot.call_primitive("send", message, 7)
         assert bytes(port.written) == b"\xFD" + bytes([message, 7]) + crc_mcrf4xx(bytes([message, 7, seed]))
         assert robot.state["echoed"] == 9
+
+
+@pytest.mark.parametrize("kind", ["runtime", "driver"])
+def test_a_constant_request_is_seeded_too(kind: str, tmp_path: Path) -> None:
+    """docs/language.md's HEARTBEAT: no parameters, so the whole request is worked out once;
+    the bytes are pymavlink 2.4.41's for MAVLink_heartbeat_message(6, 8, 0, 0, 0, 3) from 255/190."""
+    port = ScriptedPort(b"")
+    with implementation_of(kind, HEARTBEAT, tmp_path, "heartbeat").connect(port, threads=False) as robot:
+        robot.call_primitive("heartbeat")
+    assert bytes(port.written).hex(" ").upper() == "FD 09 00 00 00 FF BE 00 00 00 00 00 00 00 06 08 00 00 03 5C 2B"
+
+
+def test_a_request_framed_once_with_constant_arguments_is_seeded(seeded: Any) -> None:
+    port = ScriptedPort(b"\xFD\x01\x09" + crc_mcrf4xx(bytes([1, 9, 50])))
+    with seeded.connect(port, threads=False) as robot:
+        robot.call_primitive("first", 7)
+    assert bytes(port.written) == b"\xFD\x01\x07" + crc_mcrf4xx(bytes([1, 7, 50]))
 
 
 def test_a_value_the_table_lacks_is_refused_before_anything_is_sent(seeded: Any) -> None:
