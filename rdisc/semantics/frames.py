@@ -564,9 +564,13 @@ class FrameRules:
         if key_type is not Type.INT:
             d.report("E512", table.span, f"`{table.text}` is keyed by {key_type.value}s, not by a field's integers")
             return None
+        if any(isinstance(value, bool) or not isinstance(value, int) for value in entries.values()):
+            d.report("E512", table.span, f"`{table.text}` holds values that are not integers: a seed is one byte, "
+                     "0 to 255")
+            return None
         for entry_key, value in entries.items():
-            if isinstance(value, bool) or not isinstance(value, int) or not 0 <= value <= 255:
-                d.report("E512", table.span, f"`{table.text}[{entry_key!s}]` is {value!s}: a seed is one byte, 0 to 255")
+            if not 0 <= value <= 255:  # type: ignore[operator]
+                d.report("E512", table.span, f"`{table.text}[{entry_key!r}]` is {value!r}: a seed is one byte, 0 to 255")
                 return None
         return m.FrameSeed(table.text, key.text, at, tuple((int(k), int(v)) for k, v in entries.items()))  # type: ignore[arg-type]
 

@@ -12,7 +12,7 @@ from typing import Any
 
 import pytest
 
-from rdisc.compile import compile_text
+from rdisc.compile import compile_path, compile_text
 from rdisc.diagnostics import Diagnostics
 from rdisc.diagnostics.codes import CODES
 from rdisc.syntax.parse import parse
@@ -105,6 +105,21 @@ def test_the_json_reads_back_to_the_same_model(tmp_path: Path) -> None:
         {"table": "EXTRAS", "field": "id"}] * 2
 
 
+@pytest.mark.parametrize(("seed", "expected"), [
+    ({"table": "EXTRAS"}, [("E008", 'a checksum\'s `seed` is {"table": NAME, "field": NAME}')]),
+    ("EXTRAS[id]", [("E008", 'a checksum\'s `seed` is {"table": NAME, "field": NAME}')]),
+    ({"table": "EXTRAS", "field": "id", "byte": 1}, [("E008", "unknown member `byte` in a checksum's seed")]),
+    ({"table": "EXTRA", "field": "id"}, [("E512", "`EXTRA` is no lookup table")]),
+])
+def test_a_wrong_seed_in_json_is_a_diagnostic(tmp_path: Path, seed: Any, expected: list[tuple[str, str]]) -> None:
+    _, built = through_json(DESCRIPTION, tmp_path, "seeded")
+    document = json.loads(built)
+    document["frames"][0]["request"][-1]["seed"] = seed
+    (tmp_path / "wrong.json").write_text(json.dumps(document), encoding="utf-8")
+    found = compile_path(str(tmp_path / "wrong.json")).diagnostics.items
+    assert [(d.code, d.message) for d in found] == expected
+
+
 def test_the_printer_writes_the_seed_back() -> None:
     module = parse("seeded.rdis", DESCRIPTION, Diagnostics())
     printed = print_module(module)
@@ -135,6 +150,8 @@ def _check(table: str, seed: str) -> list[tuple[str, str, str, str | None]]:
          "did you mean `id`?")]),
     ("EXTRAS = { 1: 256 }", "seed EXTRAS[id]", [
         ("E512", "EXTRAS", "`EXTRAS[1]` is 256: a seed is one byte, 0 to 255", None)]),
+    ("EXTRAS = { 1: 0.5 }", "seed EXTRAS[id]", [
+        ("E512", "EXTRAS", "`EXTRAS` holds values that are not integers: a seed is one byte, 0 to 255", None)]),
     ("EXTRAS = { 1: 50 }", "seed NAMES[id]", [
         ("E512", "NAMES", "`NAMES` is keyed by strings, not by a field's integers", None)]),
 ])
