@@ -133,6 +133,18 @@ def test_dump_shows_the_seed(tmp_path: Path) -> None:
     assert "crc16-mcrf4xx as <H, over id .. payload, then EXTRAS[id] (not sent)" in run_rdisc("dump", source).stdout
 
 
+def test_decode_knows_a_seeded_frame_and_not_one_without_its_seed(tmp_path: Path) -> None:
+    source, capture = tmp_path / "heartbeat.rdis", tmp_path / "capture.txt"
+    source.write_text(HEARTBEAT, encoding="utf-8")
+    frame = "FD 09 00 00 00 FF BE 00 00 00 00 00 00 00 06 08 00 00 03"
+    unseeded = crc_mcrf4xx(bytes.fromhex(frame)[1:]).hex(" ").upper()
+    capture.write_text(f"> {frame} 5C 2B\n> {frame} {unseeded}\n", encoding="utf-8")
+    shown = run_rdisc("decode", source, capture).stdout.splitlines()
+    assert [line.strip() for line in shown if not line.startswith("   ")] == [
+        f"> {frame} 5C 2B", "request heartbeat", "offset  size  kind                  value                         holds"
+        "         bytes", f"> {frame} {unseeded}", "unknown: no primitive's request is these 21 bytes"]
+
+
 def _check(table: str, seed: str) -> list[tuple[str, str, str, str | None]]:
     text = ('robot t { author "tests" }\nconnection link: serial { baud 9600 }\n'
             f"const NAMES = {{ \"a\": 1 }}\nconst {table}\n"
