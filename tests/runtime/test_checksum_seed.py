@@ -141,8 +141,8 @@ def test_decode_knows_a_seeded_frame_and_not_one_without_its_seed(tmp_path: Path
     capture.write_text(f"> {frame} 5C 2B\n> {frame} {unseeded}\n", encoding="utf-8")
     shown = run_rdisc("decode", source, capture).stdout.splitlines()
     assert [line.strip() for line in shown if not line.startswith("   ")] == [
-        f"> {frame} 5C 2B", "request heartbeat", "offset  size  kind                  value                         holds"
-        "         bytes", f"> {frame} {unseeded}", "unknown: no primitive's request is these 21 bytes"]
+        f"> {frame} 5C 2B", "request heartbeat", "offset  size  kind" + " " * 18 + "value" + " " * 25 + "holds"
+        + " " * 9 + "bytes", f"> {frame} {unseeded}", "unknown: no primitive's request is these 21 bytes"]
 
 
 def _check(table: str, seed: str) -> list[tuple[str, str, str, str | None]]:
