@@ -343,7 +343,7 @@ _FRAME = ("name", "parameters", "parameterTypes", "parameterRanges", "parameterD
           "stuffing", "escaping", "doc")
 _CHECKSUM = (
     "checksum", "kind", "width", "poly", "init", "reflectIn", "reflectOut", "xorOut", "inverted", "mask", "format",
-    "covers", "withRequest",
+    "covers", "withRequest", "seed",
 )  # fmt: skip
 _BYTES_ROLES = ("header", "literal", "terminator")
 _INTERFACE = (
@@ -782,6 +782,15 @@ class _Importer:
                         [ast.Ident(names[first], m["covers"].span)])
                 over.append(ast.Ident(names[last], m["covers"].span))
                 options.append(ast.ChecksumOption("over", over=tuple(over), span=m["covers"].span))
+        if "seed" in m:
+            seed = self.members(m["seed"], "a checksum's seed", ("table", "field")) \
+                if isinstance(m["seed"], JObject) else {}
+            table, field = (self.string(seed.get(word), f"the seed's `{word}`") for word in ("table", "field"))
+            if table is None or field is None:
+                self.d.report("E008", m["seed"].span, 'a checksum\'s `seed` is {"table": NAME, "field": NAME}')
+            else:
+                options.append(ast.ChecksumOption("seed", over=(ast.Ident(table.value, table.span),
+                                                                ast.Ident(field.value, field.span)), span=m["seed"].span))
         encoding = None if fmt.value == "hex" else ast.StrLit(fmt.value, fmt.span)
         return ast.FrameChecksum(ast.StrLit(name.value, name.span), encoding, tuple(options), obj.span)
 

@@ -413,6 +413,17 @@ and it is not also stuffed (`stuff`). Wrong: `frame slip { payload terminator
 "\\xC0"  escape "\\xDB" { "\\xC0": "\\xDC" } }` (a DB in the data reads as an
 escape). Right: `frame slip { payload terminator "\\xC0"  escape "\\xDB" {
 "\\xC0": "\\xDC", "\\xDB": "\\xDD" } }`."""),
+    ("E512", "checksum-seed", """
+`seed TABLE[FIELD]` on a checksum sums one more byte after the bytes it covers and
+never sends it: the value a lookup table holds for the value of a `field` of the
+same side (MAVLink 2's CRC_EXTRA, a byte per message id, makes a reader that knows
+another version of a message refuse it). TABLE is a lookup table declared with
+`const`, keyed by integers, each of its values a byte (0 to 255); FIELD names a
+`field` of the side the checksum is on (a reply is checked with the seed of its
+own field's value). A field's value the table lacks is an `RdisValueError` when
+a request is framed. Wrong: `checksum "crc16-mcrf4xx" "<H" seed EXTRAS[id]` with
+`const EXTRAS = { 0: 300 }`. Right: `const EXTRAS = { 0: 50, 23: 168 }` and a
+`field id "<H" = id` in the frame."""),
     ("E505", "reply-table", """
 A reply table (`reply KEY { VALUE: unpack ... }`) chooses a primitive's reply by
 the value of one of its int parameters, so that parameter needs a range

@@ -279,7 +279,7 @@ def _frame_part(part: m.FramePart) -> JsonObject:
             return {"length": fmt, "adjust": adjust}
         case m.FramePayload(trimmed):
             return {"payload": "trimmed"} if trimmed else {"payload": True}
-        case m.FrameChecksum(a, fmt, first, last, with_request):
+        case m.FrameChecksum(a, fmt, first, last, with_request, _, seed):
             return _object(
                 ("checksum", a.name), ("kind", a.kind), ("width", a.width),
                 ("poly", a.poly if a.kind == "crc" else None), ("init", a.init if a.kind == "crc" else None),
@@ -288,6 +288,7 @@ def _frame_part(part: m.FramePart) -> JsonObject:
                 ("xorOut", a.xorout if a.kind == "crc" else None), ("inverted", a.inverted or None),
                 ("mask", a.mask), ("format", fmt if fmt is not None else "hex"), ("covers", [first, last]),
                 ("withRequest", with_request or None),
+                ("seed", None if seed is None else {"table": seed.table, "field": seed.field}),
             )
         case m.FrameOptional(count):
             return {"optional": count}

@@ -328,7 +328,8 @@ def _layout_rows(parts: tuple[m.FramePart, ...] | None, payload: list[Row], repl
                     extras = _crc_parameters(a) if a.kind == "crc" and a.name.strip().lower() == "crc" else ""
                     extras += " inverted" if a.inverted else ""
                     extras += f" mask {a.mask:#x}" if a.mask is not None else ""
-                    rows.append((size, "checksum", f"{a.name}{extras} as {fmt or 'hex'}, over {covers}"))
+                    seed = "" if part.seed is None else f", then {part.seed.table}[{part.seed.field}] (not sent)"
+                    rows.append((size, "checksum", f"{a.name}{extras} as {fmt or 'hex'}, over {covers}{seed}"))
     return rows, optional
 
 

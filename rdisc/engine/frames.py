@@ -65,7 +65,7 @@ def _quick_wrap(side: Side) -> Wrap | None:
     after = side.payload + 1  # the first part whose start counts from the payload's end
     tail: list[tuple[bytes, Check | None, int, int]] = []  # a constant, or a checksum of [start, stop)
     for at, part in enumerate(side.parts[after:], after):
-        if isinstance(part, Check) and part.last < at and not part.with_request:
+        if isinstance(part, Check) and part.last < at and not part.with_request and part.seed < 0:
             first, stop = part.first, part.last + 1
             tail.append((b"", part, ~starts[first] if first >= after else starts[first],
                          ~starts[stop] if stop >= after else starts[stop]))
@@ -317,7 +317,7 @@ class Frame:
                 raise FrameError(f"{self.name}: {wrong}")
             elif isinstance(part, Check):
                 covered = raw[starts[part.first] : starts[part.last + 1]]
-                expected = part.encode(part.checksum(request + covered if part.with_request else covered))
+                expected = part.encode(part.summed(request + covered if part.with_request else covered, fields))
                 if (chunk if part.struct is not None else chunk.upper()) != expected:
                     error = ChecksumError if measured else FrameError
                     came, summed = (f'"{chunk.decode("latin-1")}"', f'"{expected.decode("latin-1")}"') \

@@ -261,21 +261,36 @@ class Payload:
 
 class Check:
     """A checksum of the parts `first` to `last` (indexes into its side), packed
-    with a struct format or written as upper-case hex digits (`fmt` None)."""
+    with a struct format or written as upper-case hex digits (`fmt` None); `seed`: (the
+    index of a frame field, (value, byte) pairs): the byte for the field's value summed after
+    the parts, never sent (MAVLink 2's CRC_EXTRA)."""
 
-    __slots__ = ("checksum", "digits", "first", "last", "struct", "with_request")
+    __slots__ = ("checksum", "digits", "first", "last", "seed", "seeds", "struct", "with_request")
 
     def __init__(self, checksum: Checksum, fmt: str | None, first: int, last: int,
-                 with_request: bool = False) -> None:
+                 with_request: bool = False, seed: tuple[int, Sequence[tuple[int, int]]] | None = None) -> None:
         self.checksum = checksum
         self.struct = struct.Struct(fmt) if fmt is not None else None
         self.digits = (checksum.width + 3) // 4
         self.first = first
         self.last = last
         self.with_request = with_request
+        self.seed = -1 if seed is None else seed[0]
+        self.seeds = {} if seed is None else {key: bytes((byte,)) for key, byte in seed[1]}
 
     def put(self, payload: bytes, fields: Sequence[int], chunks: list[bytes]) -> bytes:
-        return self.encode(self.checksum(b"".join(chunks[self.first : self.last + 1])))
+        return self.encode(self.summed(b"".join(chunks[self.first : self.last + 1]), fields))
+
+    def summed(self, covered: bytes, fields: Sequence[int]) -> int:
+        """The checksum of `covered`, then of the seed for the frame's `fields` (a value the
+        table lacks: a ValueError)."""
+        if self.seed < 0:
+            return self.checksum(covered)
+        key = fields[self.seed]
+        seed = self.seeds.get(key)
+        if seed is None:
+            raise ValueError(f"the checksum's seed table has no entry for {key}")
+        return self.checksum(covered + seed)
 
     def encode(self, value: int) -> bytes:
         if self.struct is not None:

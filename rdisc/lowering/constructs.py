@@ -118,7 +118,13 @@ def frame_fields(frame: m.Frame) -> tuple[tuple[str, m.Expr], ...]:
 def parts(frame: m.Frame, layout: tuple[m.FramePart, ...]) -> list[Construct[Any]]:
     """One layout of a frame's side as the engine's parts."""
     index = {key: i for i, key in enumerate(frame_fields(frame))}
-    return [_part(part, index) for part in layout]
+    return [_part(part, index, layout) for part in layout]
+
+
+def _field_key(part: m.FramePart) -> tuple[str, m.Expr]:
+    """A `field` part's key among the frame's fields (the checker made sure a seed's is one)."""
+    assert isinstance(part, m.FrameField)
+    return part.name, part.value
 
 
 def stuffing(frame: m.Frame) -> Construct[engine.Stuffing] | None:
@@ -150,7 +156,8 @@ def _checksum(a: m.ChecksumAlgorithm) -> Construct[engine.Checksum]:
                  inverted=a.inverted, mask=a.mask)
 
 
-def _part(part: m.FramePart, index: Mapping[tuple[str, m.Expr], int]) -> Construct[Any]:
+def _part(part: m.FramePart, index: Mapping[tuple[str, m.Expr], int],
+          side: tuple[m.FramePart, ...]) -> Construct[Any]:
     match part:
         case m.FrameBytes(role=role, data=data):
             return _call(engine.Bytes, role, data.encode("latin-1"))
@@ -161,8 +168,9 @@ def _part(part: m.FramePart, index: Mapping[tuple[str, m.Expr], int]) -> Constru
         case m.FramePayload(trimmed=trimmed):
             return _call(engine.Payload, trimmed=trimmed)
         case m.FrameChecksum():
+            seed = None if part.seed is None else (index[_field_key(side[part.seed.part])], part.seed.entries)
             return _call(engine.Check, _checksum(part.algorithm), part.format, part.first, part.last,
-                         with_request=part.with_request)
+                         with_request=part.with_request, seed=seed)
         case m.FrameOptional(count=count):
             return _call(engine.OptionalParts, count)
         case m.FrameBits(format=fmt, fields=bits):

@@ -543,7 +543,36 @@ class FrameRules:
                      f"a {algorithm.width}-bit checksum does not fit \"{part.format.value}\" ({size_bits} bits)")
         first, last, with_request = self.span_of(part, options.get("over"), i, parts, names, side, d)
         fmt = part.format.value if part.format else None
-        return m.FrameChecksum(algorithm, fmt, first, last, with_request, layout)
+        seed = self.seed(options["seed"], parts, d) if "seed" in options else None
+        return m.FrameChecksum(algorithm, fmt, first, last, with_request, layout, seed)
+
+    def seed(self, option: ast.ChecksumOption, parts: tuple[ast.FramePart, ...], d: Diagnostics) -> m.FrameSeed | None:
+        """`seed TABLE[FIELD]`: a lookup table of bytes, keyed by a `field` of the checksum's side (E512)."""
+        table, key = option.over
+        found = self.typer.tables.get(table.text)
+        if found is None:
+            d.report("E512", table.span, f"`{table.text}` is no lookup table",
+                     help=suggest(table.text, self.typer.tables) or "declare it: `const EXTRAS = { 0: 50, 23: 168 }`")
+            return None
+        at = next((i for i, p in enumerate(parts) if isinstance(p, ast.FrameField) and p.name.text == key.text), None)
+        if at is None:
+            fields = {p.name.text: 0 for p in parts if isinstance(p, ast.FrameField)}
+            d.report("E512", key.span, f"`{key.text}` is no `field` of this side of the frame: a seed is keyed "
+                     "by a field the frame carries", help=suggest(key.text, fields))
+            return None
+        key_type, _, entries = found
+        if key_type is not Type.INT:
+            d.report("E512", table.span, f"`{table.text}` is keyed by {key_type.value}s, not by a field's integers")
+            return None
+        if any(isinstance(value, bool) or not isinstance(value, int) for value in entries.values()):
+            d.report("E512", table.span, f"`{table.text}` holds values that are not integers: a seed is one byte, "
+                     "0 to 255")
+            return None
+        for entry_key, value in entries.items():
+            if not 0 <= value <= 255:  # type: ignore[operator]
+                d.report("E512", table.span, f"`{table.text}[{entry_key!r}]` is {value!r}: a seed is one byte, 0 to 255")
+                return None
+        return m.FrameSeed(table.text, key.text, at, tuple((int(k), int(v)) for k, v in entries.items()))  # type: ignore[arg-type]
 
     def span_of(self, part: ast.FrameChecksum, over: ast.ChecksumOption | None, i: int,
                 parts: tuple[ast.FramePart, ...], names: dict[str, int], side: str,

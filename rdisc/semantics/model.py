@@ -600,9 +600,21 @@ class FramePayload:
 
 
 @dataclass(frozen=True, slots=True)
+class FrameSeed:
+    """`seed TABLE[FIELD]`: the byte the lookup table holds for the value of the field (the part
+    `part` of the checksum's side), summed after the bytes covered and never sent (MAVLink 2's
+    CRC_EXTRA); `entries`, the table's (key, byte) pairs."""
+
+    table: str
+    field: str
+    part: int
+    entries: tuple[tuple[int, int], ...]
+
+
+@dataclass(frozen=True, slots=True)
 class FrameChecksum:
     """A checksum over the parts `first` to `last` of its side (indexes); in a reply,
-    `with_request` puts the request's bytes, as sent, before them."""
+    `with_request` puts the request's bytes, as sent, before them; `seed`, a byte summed after them."""
 
     algorithm: ChecksumAlgorithm
     format: str | None  # a one-integer struct format; None: ASCII hex digits
@@ -610,6 +622,7 @@ class FrameChecksum:
     last: int
     with_request: bool = False
     layout: StructLayout | None = field(default=None, compare=False, repr=False)  # of `format`
+    seed: FrameSeed | None = None
 
 
 @dataclass(frozen=True, slots=True)

@@ -1132,6 +1132,37 @@ def _hash_FramePayload(self: Any) -> int:
     return hash((self.trimmed,))
 
 
+def _init_FrameSeed(self: Any, table: Any, field: Any, part: Any, entries: Any) -> None:
+    _set(self, "table", table)
+    _set(self, "field", field)
+    _set(self, "part", part)
+    _set(self, "entries", entries)
+
+
+def _repr_FrameSeed(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(table={self.table!r}, field={self.field!r}, part={self.part!r}, entries={self.entries!r})"
+
+
+def _eq_FrameSeed(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.table,
+            self.field,
+            self.part,
+            self.entries,
+        ) == (
+            other.table,
+            other.field,
+            other.part,
+            other.entries,
+        )
+    return NotImplemented
+
+
+def _hash_FrameSeed(self: Any) -> int:
+    return hash((self.table, self.field, self.part, self.entries))
+
+
 def _init_FrameChecksum(
     self: Any,
     algorithm: Any,
@@ -1140,6 +1171,7 @@ def _init_FrameChecksum(
     last: Any,
     with_request: Any = DEFAULT,
     layout: Any = DEFAULT,
+    seed: Any = DEFAULT,
 ) -> None:
     _set(self, "algorithm", algorithm)
     _set(self, "format", format)
@@ -1147,10 +1179,11 @@ def _init_FrameChecksum(
     _set(self, "last", last)
     _set(self, "with_request", with_request)
     _set(self, "layout", layout)
+    _set(self, "seed", seed)
 
 
 def _repr_FrameChecksum(self: Any) -> str:
-    return f"{self.__class__.__qualname__}(algorithm={self.algorithm!r}, format={self.format!r}, first={self.first!r}, last={self.last!r}, with_request={self.with_request!r})"
+    return f"{self.__class__.__qualname__}(algorithm={self.algorithm!r}, format={self.format!r}, first={self.first!r}, last={self.last!r}, with_request={self.with_request!r}, seed={self.seed!r})"
 
 
 def _eq_FrameChecksum(self: Any, other: Any) -> Any:
@@ -1161,18 +1194,20 @@ def _eq_FrameChecksum(self: Any, other: Any) -> Any:
             self.first,
             self.last,
             self.with_request,
+            self.seed,
         ) == (
             other.algorithm,
             other.format,
             other.first,
             other.last,
             other.with_request,
+            other.seed,
         )
     return NotImplemented
 
 
 def _hash_FrameChecksum(self: Any) -> int:
-    return hash((self.algorithm, self.format, self.first, self.last, self.with_request))
+    return hash((self.algorithm, self.format, self.first, self.last, self.with_request, self.seed))
 
 
 def _init_FrameOptional(self: Any, count: Any) -> None:
@@ -2757,6 +2792,15 @@ WRITTEN: dict[str, Written] = {
             "__hash__": _hash_FramePayload,
         },
     ),
+    "FrameSeed": Written(
+        (("table", MISSING), ("field", MISSING), ("part", MISSING), ("entries", MISSING)),
+        {
+            "__init__": _init_FrameSeed,
+            "__repr__": _repr_FrameSeed,
+            "__eq__": _eq_FrameSeed,
+            "__hash__": _hash_FrameSeed,
+        },
+    ),
     "FrameChecksum": Written(
         (
             ("algorithm", MISSING),
@@ -2765,6 +2809,7 @@ WRITTEN: dict[str, Written] = {
             ("last", MISSING),
             ("with_request", DEFAULT),
             ("layout", FieldSpec(None, MISSING, False, False)),
+            ("seed", DEFAULT),
         ),
         {
             "__init__": _init_FrameChecksum,

@@ -665,8 +665,8 @@ class FramePayload:
 
 @dataclass(frozen=True, slots=True)
 class ChecksumOption:
-    """`inverted`, `reflect` (`reflect in`, `reflect out`: one way only), `mask/poly/init/xorout/width EXPR`
-    or `over A .. B`."""
+    """`inverted`, `reflect` (`reflect in`, `reflect out`: one way only), `mask/poly/init/xorout/width EXPR`,
+    `over A .. B` or `seed TABLE[FIELD]` (`over` holds the table's name and the field's)."""
 
     word: str
     value: Expr | None = None

@@ -558,6 +558,9 @@ def transformer_class() -> Callable[[Builder], Transformer[Token, list[ast.Decl]
             names = tuple(self.b.ident(t) for t in c if t is not None)
             return ast.ChecksumOption("over", over=names, span=self.b.span(meta))
 
+        def c_seed(self, meta: Meta, c: list[Any]) -> ast.ChecksumOption:
+            return ast.ChecksumOption("seed", over=(self.b.ident(c[0]), self.b.ident(c[1])), span=self.b.span(meta))
+
         def member(self, meta: Meta, c: list[Any]) -> ast.Member:
             return ast.Member(self.b.ident(c[0]), self.b.ident(c[1]), self.b.span(meta))
 

@@ -184,6 +184,8 @@ def _frame_part(part: ast.FramePart) -> str:
             for o in options:
                 if o.word == "over":
                     words.append("over " + " .. ".join(i.text for i in o.over))
+                elif o.word == "seed":
+                    words.append(f"seed {o.over[0].text}[{o.over[1].text}]")
                 else:
                     words.append(o.word if o.value is None else f"{o.word} {print_expr(o.value)}")
             return " ".join(words)

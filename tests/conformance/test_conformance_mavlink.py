@@ -1,12 +1,10 @@
 """MAVLink 2's payload truncation and its NUL-padded `char[16]` names, against pymavlink (2.4.41),
 the published MAVLink library: a request rdisc frames is the one pymavlink packs (its trailing
 zero bytes dropped, the first kept), and a reply pymavlink packs, trimmed, is read back whole
-(zero-filled to its decoding's size), its name read as text without its padding. The runtime
-and the generated driver alike.
-
-What this does not cover: MAVLink 2's CRC seeds each message's CRC with its CRC_EXTRA byte, never
-sent, which `payload trimmed` is not about; the frames here are compared up to the CRC (their
-last two bytes), and the replies are given a CRC-16/MCRF4XX of their bytes alone.
+(zero-filled to its decoding's size), its name read as text without its padding; each CRC seeded
+with its message's CRC_EXTRA byte (`seed EXTRAS[sent]`), never sent, so that frames are compared
+whole, CRC included, and a reply whose CRC lacks its seed is refused. The runtime and the
+generated driver alike.
 """
 
 from __future__ import annotations
@@ -28,17 +26,19 @@ state count: int = 0
 state index: int = 0
 state name: string = ""
 state kind: int = 0
+/// CRC_EXTRA by message id: PARAM_REQUEST_READ, PARAM_VALUE, PARAM_SET.
+const EXTRAS = { 20: 214, 22: 220, 23: 168 }
 connection link: serial { baud 57600 }
 /// MAVLink 2 from system 1, component 1, sequence 0: FD, LEN, flags, SEQ, SYSID, COMPID, MSGID
-/// (24 bits), the payload without its trailing zero bytes, CRC-16/MCRF4XX (here without CRC_EXTRA).
+/// (24 bits), the payload without its trailing zero bytes, CRC-16/MCRF4XX seeded with CRC_EXTRA.
 frame mav2(sent: int in 0..65535, answer: int in 0..65535) {
     request {
         header "\\xFD"  length "B" = payload  literal "\\x00\\x00\\x00\\x01\\x01"  field sent "<H" = sent  literal "\\x00"
-        payload trimmed  checksum "crc16-mcrf4xx" "<H"
+        payload trimmed  checksum "crc16-mcrf4xx" "<H" seed EXTRAS[sent]
     }
     reply {
         header "\\xFD"  length "B" = payload  literal "\\x00\\x00\\x00\\x01\\x01"  field answer "<H" = answer
-        literal "\\x00"  payload trimmed  checksum "crc16-mcrf4xx" "<H"
+        literal "\\x00"  payload trimmed  checksum "crc16-mcrf4xx" "<H" seed EXTRAS[answer]
     }
 }
 /// PARAM_SET (23), answered by PARAM_VALUE (22).
@@ -67,7 +67,12 @@ def packed(message: Any) -> bytes:
 
 
 def reply(message: Any) -> bytes:
-    """pymavlink's frame with the CRC of its bytes alone (see the module's docstring)."""
+    """pymavlink's frame, whole: its CRC seeded with the message's CRC_EXTRA."""
+    return packed(message)
+
+
+def unseeded(message: Any) -> bytes:
+    """pymavlink's frame with the CRC of its bytes alone, without the seed."""
     frame = packed(message)[:-2]
     return frame + crc_mcrf4xx(frame[1:])
 
@@ -97,8 +102,7 @@ def test_a_request_is_trimmed_as_pymavlink_trims_it(mav: Any, system: int, compo
     port = ScriptedPort(reply(VALUE))
     with mav.connect(port, threads=False) as robot:
         robot.call_primitive("param_set", system, component, name.decode(), value, kind)
-        assert bytes(port.written)[:-2] == expected[:-2]
-        assert bytes(port.written)[-2:] == crc_mcrf4xx(expected[1:-2])
+        assert bytes(port.written) == expected
 
 
 @pytest.mark.parametrize("message", [
@@ -112,9 +116,25 @@ def test_a_trimmed_reply_is_read_whole_and_its_name_without_padding(mav: Any, me
     port = ScriptedPort(data)
     with mav.connect(port, threads=False) as robot:
         robot.call_primitive("param_read", -1, message.param_id)
-        assert bytes(port.written)[:-2] == packed(
-            mavlink.MAVLink_param_request_read_message(1, 1, message.param_id.encode(), -1))[:-2]
+        assert bytes(port.written) == packed(
+            mavlink.MAVLink_param_request_read_message(1, 1, message.param_id.encode(), -1))
         decoded = mavlink.MAVLink(io.BytesIO()).decode(bytearray(packed(message)))  # pymavlink's own reading
         assert robot.state["name"] == decoded.param_id == message.param_id
         assert (robot.state["value"], robot.state["count"], robot.state["index"], robot.state["kind"]) == (
             decoded.param_value, decoded.param_count, decoded.param_index, decoded.param_type)
+
+
+def test_the_seeds_are_pymavlinks_crc_extras() -> None:
+    assert [mavlink.MAVLink_param_request_read_message.crc_extra, mavlink.MAVLink_param_value_message.crc_extra,
+            mavlink.MAVLink_param_set_message.crc_extra] == [214, 220, 168]
+
+
+def test_a_reply_whose_crc_lacks_its_seed_is_refused(mav: Any) -> None:
+    data = unseeded(VALUE)
+    port = ScriptedPort(data)
+    with mav.connect(port, threads=False) as robot, pytest.raises(Exception) as caught:
+        robot.call_primitive("param_read", -1, VALUE.param_id)
+    seeded = packed(VALUE)[-2:]
+    assert type(caught.value).__name__ == "RdisProtocolError"  # the runtime's or the driver's own class
+    assert str(caught.value) == (f"param_read: mav2: checksum {data[-2:].hex(' ')} does not match the reply, "
+                                 f"which sums to {seeded.hex(' ')}")

@@ -674,6 +674,7 @@ class Checksum:
     inverted: bool = False
     mask: int | None = None
     reflect_out: bool | None = None  # None: as `reflect`
+    seed: int = -1  # `seed SEEDS[FIELD]`: the index of the field in the side, whose value's byte is summed last
 
     def compute(self, data: bytes) -> int:
         full = (1 << self.width) - 1
@@ -875,6 +876,15 @@ def encode_side(frame: Frame, side: tuple[Part, ...], payload: bytes, fields: Ma
             c = part.check
             assert c is not None
             covered = b"".join(chunks[c.first : c.last + 1])
+            if c.seed >= 0:  # a byte summed after the parts, never sent; a field value without one is refused
+                keyed = side[c.seed].value
+                assert keyed is not None
+                try:
+                    key = keyed.value(fields)
+                except Unknown:
+                    key = None
+                valid = valid and key in SEEDS
+                covered += bytes([SEEDS[key]]) if key in SEEDS else b""
             value = c.compute(request + covered if c.with_request else covered)
             if part.fmt is not None:
                 chunks.append(_pack_int(part.fmt, value)[0])
@@ -971,10 +981,16 @@ def _checksum(draw: Draw, index: int, side: list[Part], names: dict[str, int],
         check = Checksum(kind, kind, width, (), (), 0, 0, False)
     options += ["inverted"] if inverted else []
     options += [f"mask {mask:#x}"] if mask is not None else []
+    keyed = [i for i, part in enumerate(side) if part.kind == "field"]
+    seed = draw(st.sampled_from(keyed)) if keyed and sometimes(draw, 5) else -1
+    options += [f"seed SEEDS[{side[seed].name}]"] if seed >= 0 else []
     order = draw(st.permutations(options))
     check = Checksum(check.algorithm, check.kind, check.width, tuple(order), over, first, last, with_request,
-                     check.poly, check.init, check.reflect, check.xorout, inverted, mask, check.reflect_out)
+                     check.poly, check.init, check.reflect, check.xorout, inverted, mask, check.reflect_out, seed)
     return Part("checksum", fmt=fmt, check=check)
+
+
+SEEDS = {key: (key * 37 + 11) & 0xFF for key in range(256)}  # a checksum's seeds (MAVLink 2's CRC_EXTRA)
 
 
 def _formats_holding(width: int) -> list[str]:
@@ -1431,6 +1447,8 @@ class Description:
             lines.append("enum E0 { " + ", ".join(f"{m.name.split('.')[1]} = {m.v}" for m in members) + " }")
         for name, type_, initial in self.states:
             lines.append(f"state {name}: {type_} = {Lit(type_, initial).text()}")
+        if any(" seed SEEDS[" in frame.text() for frame in self.frames):
+            lines.append("const SEEDS = { " + ", ".join(f"{key}: {byte}" for key, byte in SEEDS.items()) + " }")
         sections = [self.frames, self.connections, self.primitives, self.interfaces, self.outputs, self.inputs]
         for section in sections:
             lines.append("")

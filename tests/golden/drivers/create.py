@@ -966,21 +966,36 @@ class Payload:
 
 class Check:
     """A checksum of the parts `first` to `last` (indexes into its side), packed
-    with a struct format or written as upper-case hex digits (`fmt` None)."""
+    with a struct format or written as upper-case hex digits (`fmt` None); `seed`: (the
+    index of a frame field, (value, byte) pairs): the byte for the field's value summed after
+    the parts, never sent (MAVLink 2's CRC_EXTRA)."""
 
-    __slots__ = ("checksum", "digits", "first", "last", "struct", "with_request")
+    __slots__ = ("checksum", "digits", "first", "last", "seed", "seeds", "struct", "with_request")
 
     def __init__(self, checksum: Checksum, fmt: str | None, first: int, last: int,
-                 with_request: bool = False) -> None:
+                 with_request: bool = False, seed: tuple[int, Sequence[tuple[int, int]]] | None = None) -> None:
         self.checksum = checksum
         self.struct = struct.Struct(fmt) if fmt is not None else None
         self.digits = (checksum.width + 3) // 4
         self.first = first
         self.last = last
         self.with_request = with_request
+        self.seed = -1 if seed is None else seed[0]
+        self.seeds = {} if seed is None else {key: bytes((byte,)) for key, byte in seed[1]}
 
     def put(self, payload: bytes, fields: Sequence[int], chunks: list[bytes]) -> bytes:
-        return self.encode(self.checksum(b"".join(chunks[self.first : self.last + 1])))
+        return self.encode(self.summed(b"".join(chunks[self.first : self.last + 1]), fields))
+
+    def summed(self, covered: bytes, fields: Sequence[int]) -> int:
+        """The checksum of `covered`, then of the seed for the frame's `fields` (a value the
+        table lacks: a ValueError)."""
+        if self.seed < 0:
+            return self.checksum(covered)
+        key = fields[self.seed]
+        seed = self.seeds.get(key)
+        if seed is None:
+            raise ValueError(f"the checksum's seed table has no entry for {key}")
+        return self.checksum(covered + seed)
 
     def encode(self, value: int) -> bytes:
         if self.struct is not None:
@@ -1431,7 +1446,7 @@ def _quick_wrap(side: Side) -> Wrap | None:
     after = side.payload + 1  # the first part whose start counts from the payload's end
     tail: list[tuple[bytes, Check | None, int, int]] = []  # a constant, or a checksum of [start, stop)
     for at, part in enumerate(side.parts[after:], after):
-        if isinstance(part, Check) and part.last < at and not part.with_request:
+        if isinstance(part, Check) and part.last < at and not part.with_request and part.seed < 0:
             first, stop = part.first, part.last + 1
             tail.append((b"", part, ~starts[first] if first >= after else starts[first],
                          ~starts[stop] if stop >= after else starts[stop]))
@@ -1683,7 +1698,7 @@ class Frame:
                 raise FrameError(f"{self.name}: {wrong}")
             elif isinstance(part, Check):
                 covered = raw[starts[part.first] : starts[part.last + 1]]
-                expected = part.encode(part.checksum(request + covered if part.with_request else covered))
+                expected = part.encode(part.summed(request + covered if part.with_request else covered, fields))
                 if (chunk if part.struct is not None else chunk.upper()) != expected:
                     error = ChecksumError if measured else FrameError
                     came, summed = (f'"{chunk.decode("latin-1")}"', f'"{expected.decode("latin-1")}"') \
