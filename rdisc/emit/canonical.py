@@ -440,6 +440,13 @@ def actions_text(action: m.PostAction) -> list[str]:
     return [f"{action.target} = {_text(action.value)}"]
 
 
+def range_written(p: m.Parameter) -> str:
+    """A parameter's range as written: `0..count - 1` for bounds that read earlier parameters."""
+    if p.limits is None:
+        return p.range_text()
+    return f"{expression_text(p.limits[0])}..{expression_text(p.limits[1])}"
+
+
 def expression_text(e: m.Expr) -> str:
     """An expression of the Model as RDIS source text."""
     return _expr(e).text

@@ -100,3 +100,13 @@ def test_the_widest_range_is_what_the_checks_use(tmp_path: Path) -> None:
     assert result.returncode == 1
     assert "error[E403]: 8 is outside the range of parameter `channel`" in result.stderr
     assert result.stderr.count("error[") == 1  # `select(2, 7)` is refused when it runs, not here
+
+
+def test_the_driver_and_dump_show_the_bounds_as_written(tmp_path: Path) -> None:
+    driver = implementation_of("driver", MUX, tmp_path, "mux")
+    method = next(getattr(driver, name) for name in dir(driver)
+                  if isinstance(getattr(driver, name), type) and hasattr(getattr(driver, name), "select"))
+    assert "    count: 1..8\n            channel: 0..count - 1\n" in method.select.__doc__
+    result = run_rdisc("dump", str(tmp_path / "mux.rdis"))
+    assert result.returncode == 0
+    assert "primitive read(offset: int in 0..15, length: int in 1..16 - offset) on link\n" in result.stdout
