@@ -575,7 +575,8 @@ def _written(plan: Primitive, params: tuple[m.Parameter, ...]) -> Written | None
     and its frame, if any, folds into constant bytes around a payload of a fixed size."""
     encoder = None if plan.encoder is None else plan.encoder.value
     sent = engine.sent_at_once(encoder=encoder, replies=not isinstance(plan.reply, NoReply),
-                               acts=plan.actions is not None or plan.lines is not None)
+                               acts=plan.actions is not None or plan.lines is not None,
+                               dependent=any(prm.limits is not None for prm in params))
     if not sent or not isinstance(encoder, engine.Pack) or encoder.groups or encoder.varying \
             or any(key == "*" for key, _, _ in plan.values.items) or any(isinstance(prm.type, m.Array) for prm in params):
         return None
@@ -700,7 +701,7 @@ def _ranged(params: tuple[Construct[engine.Param], ...]) -> bool:
 
 
 def _params(params: tuple[m.Parameter, ...]) -> tuple[Construct[engine.Param], ...]:
-    return tuple(param(p.name, p.type, p.low, p.high, p.default) for p in params)
+    return tuple(param(p.name, p.type, p.low, p.high, p.default, params[:i], p.limits) for i, p in enumerate(params))
 
 
 def _field_type(adapter: m.Adapter, name: str, expr: m.Expr) -> m.AnyType:

@@ -239,6 +239,16 @@ then `frame dxl(SERVO_ID)`). Wrong: `setting BAUD: int` (no default), `delay WAI
 `setting RATE: float = 57600.0` with `baud RATE`. Right:
 `setting BAUD: int in 9600..1000000 = 57600` with `baud BAUD`, and
 `setting WAIT: int = 20` read as `pack "BH" (0x05, WAIT)`."""),
+    ("E214", "dependent-range", """
+A range may depend on the parameters before it: `channel: int in 0..count - 1`,
+`length: int in 0..MAX - offset`. Each bound is then a sum of constants and earlier
+int parameters that have ranges, each added or taken away; the value is checked at
+each call against the bounds those parameters give (`RdisValueError`, nothing
+written), and the widest range they can give is what the checks and the link budget
+use. Only an int parameter (or an int array, each element) has such a range. Wrong:
+`count: int, channel: int in 0..count - 1` (`count` has no range), `channel: int in
+0..count * 2` (another operator), `data: bytes in 0..count`. Right: `count: int in
+1..8, channel: int in 0..count - 1`."""),
     # -- message formats -------------------------------------------------------
     ("E301", "invalid-pack-format", """
 `pack` and `unpack` take Python struct format strings: an optional byte order

@@ -230,11 +230,18 @@ def _case(c: m.ReplyCase) -> JsonObject:
                    ("postActions", actions or None))
 
 
-def _ranges(params: tuple[m.Parameter, ...]) -> list[list[int | float] | None] | None:
-    """Each parameter's `[low, high]` (null without a range); left out when none has one."""
+def _ranges(params: tuple[m.Parameter, ...]) -> list[list[int | float | str] | None] | None:
+    """Each parameter's `[low, high]` (null without a range; `"<count - 1>"` for a bound that
+    reads earlier parameters); left out when none has one."""
     if all(p.low is None for p in params):
         return None
-    return [None if p.low is None or p.high is None else [p.low, p.high] for p in params]  # both, or neither
+    return [None if p.low is None or p.high is None else [p.low, p.high] if p.limits is None  # both, or neither
+            else [_bound(p.limits[0]), _bound(p.limits[1])] for p in params]
+
+
+def _bound(e: m.Expr) -> int | float | str:
+    """A bound of a range that reads earlier parameters: a number as one, else `"<count - 1>"`."""
+    return e.value if isinstance(e, m.Const) and isinstance(e.value, (int, float)) else _embedded(e)
 
 
 def _defaults(params: tuple[m.Parameter, ...]) -> list[str | None] | None:
@@ -452,6 +459,13 @@ def actions_text(action: m.PostAction) -> list[str]:
 def _when(condition: m.Expr | None) -> str:
     """A post-action's condition as written after it: ` when COND`."""
     return "" if condition is None else f" when {_text(condition)}"
+
+
+def range_written(p: m.Parameter) -> str:
+    """A parameter's range as written: `0..count - 1` for bounds that read earlier parameters."""
+    if p.limits is None:
+        return p.range_text()
+    return f"{expression_text(p.limits[0])}..{expression_text(p.limits[1])}"
 
 
 def expression_text(e: m.Expr) -> str:

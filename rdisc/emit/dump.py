@@ -12,7 +12,7 @@ import struct
 import sys
 from collections.abc import Callable
 
-from rdisc.emit.canonical import expression_text
+from rdisc.emit.canonical import expression_text, range_written
 from rdisc.semantics import model as m
 from rdisc.syntax.printer import spell_template
 
@@ -23,7 +23,7 @@ def dump(model: m.Model) -> str:
 
 
 def _primitive(model: m.Model, p: m.Primitive) -> str:
-    params = ", ".join(f"{x.name}: {x.type.value}" + (f" in {x.range_text()}" if x.low is not None else "")
+    params = ", ".join(f"{x.name}: {x.type.value}" + (f" in {range_written(x)}" if x.low is not None else "")
                        for x in p.params)
     head = f"primitive {p.name}({params}) on {p.connection}"
     frame = model.frames[p.frame.frame] if p.frame is not None else None

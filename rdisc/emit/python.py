@@ -29,6 +29,7 @@ from types import ModuleType
 from rdisc import engine
 from rdisc import lower as lowering
 from rdisc.emit import python_support as support
+from rdisc.emit.canonical import range_written
 from rdisc.emit.python_expr import Chain, Compiler, Paren, Py, binary, lines, literal, quoted, table_name
 from rdisc.emit.python_expr import call as function_call
 from rdisc.emit.python_frame import WholeFrame, byte_terms, whole_frame
@@ -825,7 +826,7 @@ class _Driver:
                             for prm in element.params)
         with w.block(f"def {method}(self{signature}) -> None:"):
             doc = [element.doc or f"The {kind} `{name}`."]
-            ranged = [f"    {local[prm.name]}: {prm.range_text()}" for prm in element.params if prm.low is not None]
+            ranged = [f"    {local[prm.name]}: {range_written(prm)}" for prm in element.params if prm.low is not None]
             if ranged:
                 doc += ["", "Ranges (a value outside is refused before anything is written):", *ranged]
             units = [f"    {local[prm.name]}: {prm.unit}" for prm in element.params if prm.unit is not None]

@@ -228,15 +228,20 @@ def _plain(encoder: Pack | Format | None) -> bool:
 def _sent_at_once(plan: Primitive) -> bool:
     """`sent_at_once`, of this plan."""
     return sent_at_once(encoder=plan.encoder, replies=not isinstance(plan.reply, NoReply),
-                        acts=plan.actions is not None or plan.lines is not None)
+                        acts=plan.actions is not None or plan.lines is not None, dependent=_dependent(plan.params))
 
 
-def sent_at_once(*, encoder: Pack | Format | None, replies: bool, acts: bool) -> bool:
+def _dependent(params: tuple[Param, ...]) -> bool:
+    return any(p.low_terms or p.high_terms for p in params)
+
+
+def sent_at_once(*, encoder: Pack | Format | None, replies: bool, acts: bool, dependent: bool = False) -> bool:
     """Whether running a primitive is only packing its values, framing them and writing them
     (`Primitive.request`): one plain struct pack (`encoder`), and no reply, reply table,
-    post-action or modem line (`acts`) in the way. The one rule: the engine applies it to its
-    plans, the lowering (`rdisc.lower`) to its own."""
-    return _plain(encoder) and not replies and not acts
+    post-action, modem line (`acts`) or range that reads another parameter (`dependent`, checked
+    the general way) in the way. The one rule: the engine applies it to its plans, the lowering
+    (`rdisc.lower`) to its own."""
+    return _plain(encoder) and not replies and not acts and not dependent
 
 
 def _asked_at_once(plan: Primitive) -> bool:

@@ -57,6 +57,8 @@ class Param:
     high: float | None = None
     default: Value | None = None  # the value when a call leaves it out
     size: int | None = None  # an array's: its number of elements (0: any); None: not an array
+    low_terms: tuple[tuple[int, int], ...] = ()  # a bound that reads earlier parameters (`0..count - 1`):
+    high_terms: tuple[tuple[int, int], ...] = ()  # (their index, +1 or -1), each added to `low` or `high`
 
 
 def _ranged(params: tuple[Param, ...]) -> tuple[int, ...]:
@@ -70,6 +72,9 @@ def _check_ranges(owner: str, params: tuple[Param, ...], ranged: tuple[int, ...]
         p, value = params[i], values[i]
         low, high = p.low, p.high
         assert low is not None and high is not None  # `ranged` holds the parameters with a range
+        if p.low_terms or p.high_terms:  # checked at each call, over the earlier parameters' values
+            low += sum(values[k] * sign for k, sign in p.low_terms)
+            high += sum(values[k] * sign for k, sign in p.high_terms)
         if isinstance(value, bytes):
             if not low <= len(value) <= high:
                 raise RdisValueError(f"{owner}: {role} {p.name} has {len(value)} bytes, outside {low!r}..{high!r}")

@@ -14,6 +14,7 @@ from dataclasses import dataclass, field
 from typing import Any, Generic, TypeVar
 
 from rdisc import engine
+from rdisc.semantics import bounds
 from rdisc.semantics import model as m
 
 __all__ = ["Construct", "Hex", "built", "checksum", "decoder", "decoding", "encoder", "encoding", "escaping",
@@ -94,13 +95,25 @@ def decoder(decoding_: m.Unpack | m.Regex | None) -> engine.Unpack | engine.Matc
 
 
 def param(name: str, type_: m.AnyType, low: float | None = None, high: float | None = None,
-          default: m.Value | None = None) -> Construct[engine.Param]:
-    """A parameter, field or setting as the engine takes it; its default of its declared type."""
-    bounds = (low, high) if low is not None else ()
-    options = () if default is None else (("default", m.coerce(default, type_)),)  # False is a default too
+          default: m.Value | None = None, earlier: tuple[m.Parameter, ...] = (),
+          limits: tuple[m.Expr, m.Expr] | None = None) -> Construct[engine.Param]:
+    """A parameter, field or setting as the engine takes it; its default of its declared type;
+    a range that reads `earlier` parameters as constants and terms (`rdisc.semantics.bounds`)."""
+    options: tuple[tuple[str, Any], ...] = () if default is None else (("default", m.coerce(default, type_)),)
+    if limits is not None:  # the checker made each bound a sum of constants and earlier parameters
+        (low, low_terms), (high, high_terms) = (_linear(bound, earlier) for bound in limits)
+        options += tuple((key, terms) for key, terms in (("low_terms", low_terms), ("high_terms", high_terms))
+                         if terms)
+    given = (low, high) if low is not None else ()
     if isinstance(type_, m.Array):
-        return Construct(engine.Param, (name, _KINDS[type_.element], *bounds), (*options, ("size", type_.size)))
-    return Construct(engine.Param, (name, _KINDS[type_], *bounds), options)
+        return Construct(engine.Param, (name, _KINDS[type_.element], *given), (*options, ("size", type_.size)))
+    return Construct(engine.Param, (name, _KINDS[type_], *given), options)
+
+
+def _linear(bound: m.Expr, earlier: tuple[m.Parameter, ...]) -> tuple[int, bounds.Terms]:
+    form = bounds.linear(bound, earlier)
+    assert form is not None  # the checker refuses any other bound (E214)
+    return form
 
 
 def frame_fields(frame: m.Frame) -> tuple[tuple[str, m.Expr], ...]:

@@ -16,7 +16,7 @@ from typing import Protocol, TypeVar
 
 from rdisc.diagnostics import Diagnostics, Label, abbreviate
 from rdisc.limits import MAX_ARRAY, MAX_INT
-from rdisc.semantics import formats, ros
+from rdisc.semantics import bounds, formats, ros
 from rdisc.semantics import model as m
 from rdisc.semantics.body import BodyRules
 from rdisc.semantics.frames import FrameRules, length_part, length_range, length_words, payload_end_known
@@ -207,13 +207,16 @@ class _Checker:
                 )
             seen[p.name.text] = p
             type_ = self.type_name(p.type, open_size=owner in ("primitive", "interface"))
-            low, high = self.param_range(p, type_.element if isinstance(type_, m.Array) else type_)
+            element = type_.element if isinstance(type_, m.Array) else type_
+            dependent = self.dependent_range(p, element, tuple(out))
+            low, high = self.param_range(p, element) if dependent is None else dependent[:2]
+            limits = None if dependent is None else dependent[2]
             default = self.param_default(p, type_, low, high)
             if default is None and p.default is None and any(q.default is not None for q in params[: len(out)]):
                 self.d.report("E204", p.name.span, f"parameter `{p.name.text}` needs a default: it follows one "
                               "that has one", help="put the parameters with defaults last")
             out.append(m.Parameter(p.name.text, type_, low, high, default,  # type: ignore[arg-type]
-                                   self.param_unit(p, type_)))
+                                   self.param_unit(p, type_), limits))
         return tuple(out)
 
     def param_unit(self, p: ast.Param, type_: m.AnyType | None) -> str | None:
@@ -255,6 +258,51 @@ class _Checker:
                               f"`{p.name.text}`", label=f"in {low!r}..{high!r}")
                 return None
         return constant
+
+    def dependent_range(self, p: ast.Param, type_: Type | None, earlier: tuple[m.Parameter, ...]
+                        ) -> tuple[int | None, int | None, tuple[m.Expr, m.Expr] | None] | None:
+        """`in 0..count - 1`: bounds that read earlier parameters, each a sum of constants and
+        earlier int parameters with ranges (`rdisc.semantics.bounds`), checked at each call; the
+        range is then the widest they give. None when both bounds are constants (`param_range`)."""
+        if p.low is None or p.high is None or type_ is None or not earlier:
+            return None
+        names = {q.name: (Scope.PARAM, q.type) for q in earlier if q.type is not None}
+        env = Env(names, "in a range", "constants and the parameters before it")
+        errors = self.d.error_count
+        nodes = self.typer.expr(p.low, env), self.typer.expr(p.high, env)
+        if self.d.error_count > errors:
+            return None, None, None
+        if all(self.typer.constant(node) is not None for node in nodes):
+            return None
+        span = p.low.span.to(p.high.span)
+        if type_ is not Type.INT:
+            self.d.report("E214", span, f"only an int parameter has a range that reads another parameter, "
+                          f"not {describe(type_)}", help="give it constant bounds")
+            return None, None, None
+        widest: list[int] = []
+        for node, bound, high in ((nodes[0], p.low, False), (nodes[1], p.high, True)):
+            form = bounds.linear(node, earlier)
+            if form is None:
+                self.d.report("E214", bound.span, "a range's bound is a sum of constants and the int parameters "
+                              "before it, each added or taken away",
+                              help="write it as `count - 1` or `MAX - offset`")
+                return None, None, None
+            for i, _ in form[1]:
+                read = earlier[i]
+                if read.type is not Type.INT or read.low is None:
+                    why = f"is {describe(read.type)}" if read.type is not Type.INT else "has no range"
+                    self.d.report("E214", bound.span, f"parameter `{read.name}` {why}, so the range of "
+                                  f"`{p.name.text}` cannot be bounded by it",
+                                  help=f"a range reads int parameters with ranges: `{read.name}: int in 0..255`")
+                    return None, None, None
+            found = bounds.widest(*form, earlier, high)
+            assert found is not None  # each term's parameter has a range
+            widest.append(found)
+        if widest[0] > widest[1]:
+            self.d.report("E204", span, f"the range {widest[0]}..{widest[1]} is empty for every value of the "
+                          "parameters it reads")
+            return None, None, None
+        return widest[0], widest[1], nodes
 
     def param_range(self, p: ast.Param, type_: Type | None,
                     what: str = "parameter") -> tuple[float | None, float | None]:

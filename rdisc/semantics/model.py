@@ -268,6 +268,8 @@ class Parameter:
     high: int | float | None = None
     default: Value | None = None  # the value when a call leaves it out (the parameters after it have one too)
     unit: str | None = None  # one of rdisc.semantics.units.UNITS, when declared
+    limits: tuple[Expr, Expr] | None = None  # bounds that read earlier parameters (`0..count - 1`),
+    # checked at each call (rdisc.semantics.bounds); `low` and `high` are then the widest range they give
 
     def range_text(self) -> str:
         return f"{self.low!r}..{self.high!r}"

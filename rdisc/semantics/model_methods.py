@@ -399,6 +399,7 @@ def _init_Parameter(
     high: Any = DEFAULT,
     default: Any = DEFAULT,
     unit: Any = DEFAULT,
+    limits: Any = DEFAULT,
 ) -> None:
     _set(self, "name", name)
     _set(self, "type", type)
@@ -406,10 +407,11 @@ def _init_Parameter(
     _set(self, "high", high)
     _set(self, "default", default)
     _set(self, "unit", unit)
+    _set(self, "limits", limits)
 
 
 def _repr_Parameter(self: Any) -> str:
-    return f"{self.__class__.__qualname__}(name={self.name!r}, type={self.type!r}, low={self.low!r}, high={self.high!r}, default={self.default!r}, unit={self.unit!r})"
+    return f"{self.__class__.__qualname__}(name={self.name!r}, type={self.type!r}, low={self.low!r}, high={self.high!r}, default={self.default!r}, unit={self.unit!r}, limits={self.limits!r})"
 
 
 def _eq_Parameter(self: Any, other: Any) -> Any:
@@ -421,6 +423,7 @@ def _eq_Parameter(self: Any, other: Any) -> Any:
             self.high,
             self.default,
             self.unit,
+            self.limits,
         ) == (
             other.name,
             other.type,
@@ -428,12 +431,13 @@ def _eq_Parameter(self: Any, other: Any) -> Any:
             other.high,
             other.default,
             other.unit,
+            other.limits,
         )
     return NotImplemented
 
 
 def _hash_Parameter(self: Any) -> int:
-    return hash((self.name, self.type, self.low, self.high, self.default, self.unit))
+    return hash((self.name, self.type, self.low, self.high, self.default, self.unit, self.limits))
 
 
 def _init_Robot(
@@ -2549,6 +2553,7 @@ WRITTEN: dict[str, Written] = {
             ("high", DEFAULT),
             ("default", DEFAULT),
             ("unit", DEFAULT),
+            ("limits", DEFAULT),
         ),
         {
             "__init__": _init_Parameter,

@@ -595,6 +595,8 @@ class Param:
     high: float | None = None
     default: Value | None = None  # the value when a call leaves it out
     size: int | None = None  # an array's: its number of elements (0: any); None: not an array
+    low_terms: tuple[tuple[int, int], ...] = ()  # a bound that reads earlier parameters (`0..count - 1`):
+    high_terms: tuple[tuple[int, int], ...] = ()  # (their index, +1 or -1), each added to `low` or `high`
 
 
 def _ranged(params: tuple[Param, ...]) -> tuple[int, ...]:
@@ -608,6 +610,9 @@ def _check_ranges(owner: str, params: tuple[Param, ...], ranged: tuple[int, ...]
         p, value = params[i], values[i]
         low, high = p.low, p.high
         assert low is not None and high is not None  # `ranged` holds the parameters with a range
+        if p.low_terms or p.high_terms:  # checked at each call, over the earlier parameters' values
+            low += sum(values[k] * sign for k, sign in p.low_terms)
+            high += sum(values[k] * sign for k, sign in p.high_terms)
         if isinstance(value, bytes):
             if not low <= len(value) <= high:
                 raise RdisValueError(f"{owner}: {role} {p.name} has {len(value)} bytes, outside {low!r}..{high!r}")
@@ -1926,15 +1931,20 @@ def _plain(encoder: Pack | Format | None) -> bool:
 def _sent_at_once(plan: Primitive) -> bool:
     """`sent_at_once`, of this plan."""
     return sent_at_once(encoder=plan.encoder, replies=not isinstance(plan.reply, NoReply),
-                        acts=plan.actions is not None or plan.lines is not None)
+                        acts=plan.actions is not None or plan.lines is not None, dependent=_dependent(plan.params))
 
 
-def sent_at_once(*, encoder: Pack | Format | None, replies: bool, acts: bool) -> bool:
+def _dependent(params: tuple[Param, ...]) -> bool:
+    return any(p.low_terms or p.high_terms for p in params)
+
+
+def sent_at_once(*, encoder: Pack | Format | None, replies: bool, acts: bool, dependent: bool = False) -> bool:
     """Whether running a primitive is only packing its values, framing them and writing them
     (`Primitive.request`): one plain struct pack (`encoder`), and no reply, reply table,
-    post-action or modem line (`acts`) in the way. The one rule: the engine applies it to its
-    plans, the lowering (`rdisc.lower`) to its own."""
-    return _plain(encoder) and not replies and not acts
+    post-action, modem line (`acts`) or range that reads another parameter (`dependent`, checked
+    the general way) in the way. The one rule: the engine applies it to its plans, the lowering
+    (`rdisc.lower`) to its own."""
+    return _plain(encoder) and not replies and not acts and not dependent
 
 
 def _asked_at_once(plan: Primitive) -> bool:
