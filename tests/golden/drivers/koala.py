@@ -3170,8 +3170,7 @@ class Exchange:
                 raise RdisProtocolError(f"{plan.name}: reply {tuple(reply)!r}: its `expect` failed: {err}") from None
             if not met:
                 raise RdisProtocolError(f"{plan.name}: reply {tuple(reply)!r} does not meet its `expect`")
-        miss = self._missed_lookup(plan, local, reply)
-        if miss is not None:
+        if plan.looks_up and (miss := self._missed_lookup(plan, local, reply)) is not None:
             raise RdisProtocolError(miss)
         return reply
 
