@@ -23,6 +23,7 @@ import subprocess
 import sysconfig
 import termios
 import time
+import xmlrpc.client
 from collections.abc import Callable, Iterator
 from pathlib import Path
 from typing import Any
@@ -577,11 +578,30 @@ def test_a_sim_that_is_no_bool_stops_the_node(ros_env: dict[str, str], create2_n
         2, [f"{PROG}: ~sim is 1: give true (simulate the body) or false (the device)"]), refused.stderr
 
 
-def _publish_joints(env: dict[str, str], names: list[str], quantity: str, values: list[float]) -> None:
-    """One JointState on joint_command, latched for the node to take (`rostopic pub -1`)."""
+def _publish_joints(env: dict[str, str], names: list[str], quantity: str, values: list[float]) -> subprocess.Popen:
+    """One JointState on joint_command, latched for the node to take (`rostopic pub -1`); the
+    process stays 3 s for late subscribers, so it is returned to be waited for at the end."""
     message = json.dumps({"name": names, quantity: values})
-    subprocess.run(["rostopic", "pub", "-1", "/joint_command", "sensor_msgs/JointState", message], env=env,
-                   capture_output=True, text=True, check=True, timeout=60)
+    return subprocess.Popen(["rostopic", "pub", "-1", "/joint_command", "sensor_msgs/JointState", message], env=env,
+                            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+
+
+def _published(publisher: subprocess.Popen) -> None:
+    """`rostopic pub -1` ended by itself, successfully."""
+    output = publisher.communicate(timeout=60)[0]
+    assert publisher.returncode == 0, output
+
+
+def _until_subscribed(env: dict[str, str], topic: str) -> None:
+    """Until the master lists a subscriber of `topic` (a message published before would be lost
+    to it); asked over the master's XML-RPC, in process. Bounded: a caller retries on a miss."""
+    master = xmlrpc.client.ServerProxy(env["ROS_MASTER_URI"])
+    deadline = time.monotonic() + 20
+    while time.monotonic() < deadline:
+        _, _, (_, subscribed, _) = master.getSystemState("/test_ros_bridge")
+        if any(name == topic and nodes for name, nodes in subscribed):
+            return
+        time.sleep(0.05)
 
 
 ARM_JOINTS = ["waist", "shoulder", "elbow", "wrist_pitch", "wrist_roll", "gripper"]
@@ -599,15 +619,17 @@ def test_a_joint_state_on_joint_command_moves_the_arm_s_servos(ros_env: dict[str
         node = subprocess.Popen([PYTHON3, str(node_file), f"_port:={bus.port}", "_joint_states_rate:=20"], env=ros_env,
                                 stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
         listener = _listen(ros_env, "joint_states")
+        publishers: list[subprocess.Popen] = []
         try:
             _until(listener, lambda m: True)  # the node is up
             shown = ""
-            for _ in range(5):  # the echo may subscribe after a message was published
+            for _ in range(5):  # the echo may still subscribe after a message was published
                 echo = subprocess.Popen(["rostopic", "echo", "-n", "1", "/arm/errors"], env=ros_env,
                                         stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-                _publish_joints(ros_env, ARM_JOINTS[:5], "position", [0.0] * 5)
+                _until_subscribed(ros_env, "/arm/errors")
+                publishers.append(_publish_joints(ros_env, ARM_JOINTS[:5], "position", [0.0] * 5))
                 try:
-                    shown = echo.communicate(timeout=5)[0].split("---")[0]
+                    shown = echo.communicate(timeout=10)[0].split("---")[0]
                     break
                 except subprocess.TimeoutExpired:
                     _stop(echo)
@@ -616,10 +638,13 @@ def test_a_joint_state_on_joint_command_moves_the_arm_s_servos(ros_env: dict[str
             assert error == ("RdisValueError: joint_command: sync_goal takes waist, shoulder, elbow, wrist_pitch, "
                              "wrist_roll, gripper together; missing: gripper")
             assert sync_goals(bus.received) == []
-            _publish_joints(ros_env, ARM_JOINTS, "position", [0.0, -math.pi / 2, math.pi / 2, math.pi / 4, 0.1, -0.1])
+            publishers.append(_publish_joints(ros_env, ARM_JOINTS, "position",
+                                              [0.0, -math.pi / 2, math.pi / 2, math.pi / 4, 0.1, -0.1]))
             bus.wait_until(lambda: bool(sync_goals(bus.received)), 15, "a sync write of goals")
             assert sync_goals(bus.received) == [[2048, 1024, 3072, 2560, 2048 + 65, 2048 - 65]]
         finally:
             _stop(listener)
             output = _stop(node)
         assert node.returncode == 0, output
+        for publisher in publishers:
+            _published(publisher)
