@@ -13,6 +13,7 @@ from pathlib import Path
 from typing import Any
 
 import pytest
+from conftest import fuzz_examples
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -103,7 +104,7 @@ INTS = st.one_of(st.integers(-2000, 2000), st.integers(-2**70, 2**70))
 VALUES = st.one_of(INTS, st.floats(allow_nan=True, allow_infinity=True), st.booleans(), st.just("7"))
 
 
-@settings(max_examples=120, deadline=None)
+@settings(max_examples=fuzz_examples(60), deadline=None)
 @given(name=st.sampled_from(NAMES), values=st.lists(VALUES, min_size=0, max_size=3))
 def test_one_step_gives_the_general_ways_bytes_or_leaves_it_to_the_general_way(name: str, values: list[Any]) -> None:
     for robot, port in _robots():

@@ -6,6 +6,7 @@ carries the same module (tests/engine/test_carried.py), so this holds for it too
 
 from __future__ import annotations
 
+from conftest import fuzz_examples
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -24,7 +25,7 @@ def parameters(draw: st.DrawFn) -> tuple[int, int, int, bool, bool, int]:
             draw(st.booleans()), draw(st.integers(0, full)))
 
 
-@settings(max_examples=300, deadline=None, derandomize=True, database=None)
+@settings(max_examples=fuzz_examples(120), deadline=None, derandomize=True, database=None)
 @given(parameters(), st.binary(max_size=40))
 def test_a_table_driven_crc_is_the_bitwise_one(given: tuple[int, int, int, bool, bool, int], data: bytes) -> None:
     width, poly, init, reflect_in, reflect_out, xorout = given

@@ -11,6 +11,7 @@ import struct
 from collections.abc import Callable, Sequence
 from pathlib import Path
 
+from conftest import fuzz_examples
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -79,7 +80,7 @@ _BYTE_SOUP = st.lists(st.one_of(st.binary(max_size=6), st.sampled_from(
      b"\xc0", b"\xdb\xdc", b"\xdb", b"\x7e", b"\x7d\x5e", b"\x7d"])), max_size=30)
 
 
-@settings(max_examples=600, deadline=None)
+@settings(max_examples=fuzz_examples(200), deadline=None)
 @given(name=st.sampled_from(NAMES), chunks=_BYTE_SOUP, size=st.sampled_from([-1, 0, 1, 2, 4]),
        fields=st.lists(st.integers(0, 255), min_size=4, max_size=4))
 def test_reading_any_bytes_gives_a_frame_or_a_frame_error(name: str, chunks: list[bytes], size: int,
@@ -98,7 +99,7 @@ SYMMETRIC = [n for n in NAMES if [type(p) for p in FRAMES[n][0].requests[0].part
              == [type(p) for p in FRAMES[n][0].reply.parts] and FRAMES[n][0].reply.parts]
 
 
-@settings(max_examples=400, deadline=None)
+@settings(max_examples=fuzz_examples(150), deadline=None)
 @given(name=st.sampled_from(SYMMETRIC), payload=st.binary(min_size=1, max_size=40),
        noise=st.binary(max_size=8), ident=st.integers(0, 253))
 def test_a_frame_written_is_read_back(name: str, payload: bytes, noise: bytes, ident: int) -> None:
@@ -151,7 +152,7 @@ def _request_sides(draw: st.DrawFn) -> list[Part]:
     return parts
 
 
-@settings(max_examples=500, deadline=None)
+@settings(max_examples=fuzz_examples(200), deadline=None)
 @given(parts=_request_sides(), payload=st.binary(max_size=20),
        fields=st.lists(st.integers(-1, 300), min_size=2, max_size=2))
 def test_the_quick_wrap_writes_what_the_parts_write(parts: list[Part], payload: bytes, fields: list[int]) -> None:

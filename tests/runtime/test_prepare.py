@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import math
 
+from conftest import fuzz_examples
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from runtime_support import CREATE, DATA, KOALA
@@ -98,7 +99,7 @@ def _outcome(f):
     return ("nan",) if isinstance(value, float) and math.isnan(value) else ("value", value, type(value))
 
 
-@settings(max_examples=400, deadline=None)
+@settings(max_examples=fuzz_examples(150), deadline=None)
 @given(expressions, st.integers(-50, 50), st.floats(-100, 100), st.booleans(),
        st.integers(-50, 50), st.floats(-100, 100), st.integers(-9, 9), st.floats(-9, 9))
 def test_prepare_agrees_with_evaluate(expr, a, b, flag, x, y, r0, r1) -> None:
