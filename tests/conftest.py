@@ -102,10 +102,13 @@ def golden(request: pytest.FixtureRequest) -> Golden:
 
 
 @pytest.fixture(scope="session")
-def mypy_cache(tmp_path_factory: pytest.TempPathFactory) -> Path:
-    """One mypy cache for a worker's runs of `mypy --strict` over generated code: the standard
-    library's stubs are read once, not once a test (each run still checks its own files)."""
-    return tmp_path_factory.mktemp("mypy-cache")
+def mypy_cache(request: pytest.FixtureRequest, tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """One mypy cache for a worker's runs of `mypy --strict` over generated code, in pytest's cache
+    (kept between runs, one a worker): the standard library's stubs are read once, not once a test
+    or a run (each run still checks its own files)."""
+    if request.config.cache is None:
+        return tmp_path_factory.mktemp("mypy-cache")
+    return request.config.cache.mkdir(f"mypy-generated-{os.environ.get('PYTEST_XDIST_WORKER', 'main')}")
 
 
 #: RDISC_FUZZ_SCALE=N: the property tests try N times their default number of examples (a deeper
