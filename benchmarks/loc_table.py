@@ -33,6 +33,8 @@ DEVICES = [
                                    "dynamixel_sdk.group_sync_write", "dynamixel_sdk.group_sync_read",
                                    "dynamixel_sdk.group_bulk_read", "dynamixel_sdk.robotis_def"]),
     ("firmata.rdis", "pyFirmata2", ["pyfirmata2.pyfirmata2", "pyfirmata2.util", "pyfirmata2.boards"]),
+    ("tmcl.rdis", "pytrinamic", ["pytrinamic.tmcl", "pytrinamic.connections.tmcl_interface",
+                                 "pytrinamic.connections.serial_tmcl_interface", "pytrinamic.helpers"]),
 ]
 
 
