@@ -35,6 +35,8 @@ DEVICES = [
     ("firmata.rdis", "pyFirmata2", ["pyfirmata2.pyfirmata2", "pyfirmata2.util", "pyfirmata2.boards"]),
     ("tmcl.rdis", "pytrinamic", ["pytrinamic.tmcl", "pytrinamic.connections.tmcl_interface",
                                  "pytrinamic.connections.serial_tmcl_interface", "pytrinamic.helpers"]),
+    ("um7.rdis", "um7py", ["um7py.um7_serial", "um7py.um7_registers", "um7py.um7_broadcast_packets",
+                           "um7py.rsl_xml_svd.rsl_svd_parser"]),
 ]
 
 
