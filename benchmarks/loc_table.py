@@ -37,6 +37,7 @@ DEVICES = [
                                  "pytrinamic.connections.serial_tmcl_interface", "pytrinamic.helpers"]),
     ("um7.rdis", "um7py", ["um7py.um7_serial", "um7py.um7_registers", "um7py.um7_broadcast_packets",
                            "um7py.rsl_xml_svd.rsl_svd_parser"]),
+    ("tfmini.rdis", "tfmini", ["tfmini.tfmini"]),
 ]
 
 
