@@ -38,6 +38,7 @@ DEVICES = [
     ("um7.rdis", "um7py", ["um7py.um7_serial", "um7py.um7_registers", "um7py.um7_broadcast_packets",
                            "um7py.rsl_xml_svd.rsl_svd_parser"]),
     ("tfmini.rdis", "tfmini", ["tfmini.tfmini"]),
+    ("sabertooth.rdis", "pysabertooth", ["pysabertooth.PySabertooth"]),
 ]
 
 
