@@ -7,7 +7,6 @@ not resolve is reported here once, and later passes skip it silently.
 
 from __future__ import annotations
 
-import difflib
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
 
@@ -116,6 +115,8 @@ def check_name(name: ast.Ident, what: str, diagnostics: Diagnostics, read: bool 
 
 def closest(name: str, candidates: Iterable[str]) -> str | None:
     """The declared name closest to a misspelt one, if any is close."""
+    import difflib  # only for an unknown name: start-up time matters for `rdisc check`
+
     close = difflib.get_close_matches(name, list(candidates), n=1, cutoff=0.6)
     return close[0] if close else None
 
