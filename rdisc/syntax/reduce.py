@@ -77,20 +77,20 @@ RULES = tuple(Rule(*rule) for rule in tables.RULES)
 _NONE = (None, None, False, 0)  # a placeholder of an optional part that is not there
 
 
-def _kept(rule: Rule, entries: list[Any]) -> list[Any]:
+def _kept(keep: tuple[tuple[int, bool, int], ...], entries: list[Any], nones_after: int = 0) -> list[Any]:
     """The entries of the children a rule keeps, as Lark's ChildFilterLALR keeps them: tokens
     filtered out, placeholders of absent optional parts put in, a `_rule`'s entries (its value)
     spliced in its place."""
     kept: list[Any] = []
-    for i, spliced, nones in rule.keep or ():
+    for i, spliced, nones in keep:
         if nones:
             kept += [_NONE] * nones
         if spliced:
             kept += entries[i][0]
         else:
             kept.append(entries[i])
-    if rule.nones_after:
-        kept += [_NONE] * rule.nones_after
+    if nones_after:
+        kept += [_NONE] * nones_after
     return kept
 
 
@@ -132,6 +132,20 @@ _METHODS: dict[str, Callable[..., Any]] = {name: value for name, value in vars(R
                                            if not name.startswith("__") and callable(value)}
 
 
+def _step(rule: Rule) -> tuple[Any, ...]:
+    """What the loop reads of a rule, in one tuple: (origin, size, keep, nones after, the kept
+    children's indices where it keeps them without placeholders or splicing (else None), single,
+    spliced, unit, the Builder's method or None)."""
+    picked = None
+    if rule.keep is not None and not rule.nones_after and not any(spliced or nones for _, spliced, nones in rule.keep):
+        picked = tuple(i for i, _, _ in rule.keep)
+    return (rule.origin, rule.size, rule.keep, rule.nones_after, picked, rule.single, rule.spliced, rule.unit,
+            None if rule.spliced else _METHODS.get(rule.name))
+
+
+STEPS = tuple(_step(rule) for rule in RULES)
+
+
 class _Deferred:
     """What the Builder reports while a declaration is built by the loop, kept until it is done."""
 
@@ -168,7 +182,7 @@ def _run(text: str, start: str, rules: Rules, most_depth: int) -> Any:
     """The LALR loop (Lark's `ParserState.feed_token`) over Lark's contextual lexer's tokens
     (`ContextualLexer.lex`), each reduction shaped as Lark's tree builder shapes it
     (`PropagatePositions`, `ChildFilterLALR`, `ExpandSingleChild`)."""
-    actions, all_rules, lexers, ignored, methods = tables.ACTIONS, RULES, STATE_LEXERS, tables.IGNORED, _METHODS
+    actions, steps, lexers, ignored = tables.ACTIONS, STEPS, STATE_LEXERS, tables.IGNORED
     if not _root:
         _root.append(_pattern(tables.ROOT).match)
     root = _root[0]
@@ -186,8 +200,11 @@ def _run(text: str, start: str, rules: Rules, most_depth: int) -> Any:
             if pos >= length:
                 kind, token, end = "$END", None, True
                 break
-            lexer = lexers[state_stack[-1]]
             hit = root(text, pos)
+            if hit is not None and hit.lastgroup in ignored:  # every state's lexer skips what the root's does
+                pos = hit.end()
+                continue
+            lexer = lexers[state_stack[-1]]
             if hit is None or hit.lastgroup not in lexer.allowed:
                 hit = lexer.own(text, pos)
                 if hit is None:
@@ -212,41 +229,46 @@ def _run(text: str, start: str, rules: Rules, most_depth: int) -> Any:
                 state_stack.append(action)
                 stack.append((token, (token.start_pos, token.end_pos), False, 0))
                 break
-            rule = all_rules[~action]
-            if rule.unit:  # a `?rule` over one symbol: its child's value, span and depth are its own
-                del state_stack[-1]
-                state_stack.append(actions[state_stack[-1]][rule.origin])
+            origin, size, keep, nones_after, picked, single, spliced, unit, method = steps[~action]
+            if unit:  # a `?rule` over one symbol: its child's value, span and depth are its own
+                state_stack[-1] = actions[state_stack[-2]][origin]
                 if end and state_stack[-1] == end_state:
                     return stack[-1][0]
                 continue
-            size = rule.size
-            if size:
-                entries = stack[-size:]
-                del stack[-size:], state_stack[-size:]
+            if size == 1:
+                entry = stack.pop()
+                del state_stack[-1]
+                entries = [entry]
+                span, depth = entry[1], entry[3]
             else:
-                entries = []
-            span = None
-            depth = 0
-            for entry in entries:
-                if entry[3] > depth:  # noqa: PLR1730  # max() would be a call per child
-                    depth = entry[3]
-                if entry[1] is not None:
-                    if span is None:
-                        span = entry[1]
-                    else:
-                        span = (span[0], entry[1][1])
-            if rule.keep is not None:
-                entries = _kept(rule, entries)
-            if rule.single and len(entries) == 1:
+                if size:
+                    entries = stack[-size:]
+                    del stack[-size:], state_stack[-size:]
+                else:
+                    entries = []
+                first = last = None
+                depth = 0
+                for entry in entries:
+                    if entry[3] > depth:  # noqa: PLR1730  # max() would be a call per child
+                        depth = entry[3]
+                    if entry[1] is not None:
+                        if first is None:
+                            first = entry[1]
+                        last = entry[1]
+                span = None if first is None or last is None else (first[0], last[1])
+            if picked is not None:
+                entries = [entries[i] for i in picked]
+            elif keep is not None:
+                entries = _kept(keep, entries, nones_after)
+            if single and len(entries) == 1:
                 value, child_span, tree, _ = entries[0]
                 if tree and child_span is None and span is not None:
                     raise Retry  # Lark would give the empty child this rule's positions after it was built
                 if not tree or span is None:
                     span = child_span
-            elif rule.spliced:
+            elif spliced:
                 value, tree = entries, True
             else:
-                method = methods.get(rule.name)
                 if method is None:
                     raise Retry  # Lark's tree would keep the node
                 depth += 1
@@ -254,7 +276,7 @@ def _run(text: str, start: str, rules: Rules, most_depth: int) -> Any:
                     raise Retry
                 value = method(rules, _EMPTY if span is None else _Meta(span), [entry[0] for entry in entries])
                 tree = True
-            state_stack.append(actions[state_stack[-1]][rule.origin])
+            state_stack.append(actions[state_stack[-1]][origin])
             stack.append((value, span, tree, depth))
             if end and state_stack[-1] == end_state:
                 return value

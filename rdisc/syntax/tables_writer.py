@@ -99,6 +99,8 @@ def write() -> str:
     state_lexers = []
     for state in range(len(table.states)):
         terminals, keywords = _lexer(contextual.lexers[state])
+        if not set(ignored) <= set(terminals):  # the loop skips what the root's lexer skips, in every state
+            raise TypeError(f"state {state} does not skip {', '.join(ignored)}")
         key = (terminals, tuple(sorted(keywords.items())))
         state_lexers.append(lexers.setdefault(key, len(lexers)))
 
