@@ -8,12 +8,17 @@ not resolve is reported here once, and later passes skip it silently.
 from __future__ import annotations
 
 from collections.abc import Iterable, Mapping
-from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 from rdisc.diagnostics import Diagnostics, Label
 from rdisc.engine.operations import FUNCTIONS
 from rdisc.source import Span
 from rdisc.syntax import ast
+
+if TYPE_CHECKING:
+    from dataclasses import dataclass, field
+else:  # the same classes, their methods written out ahead of time: rdisc/frozen.py
+    from rdisc.semantics.resolve_methods import dataclass, field
 
 # Words that would be read as keywords where a name can stand. Other keywords of
 # the language only occur in places no name can, so they stay usable as names
