@@ -14,7 +14,6 @@ from collections.abc import Iterator
 from contextlib import contextmanager
 from contextvars import ContextVar
 from dataclasses import dataclass, field
-from pathlib import Path
 
 from rdisc.diagnostics import Diagnostics, abbreviate
 from rdisc.semantics.budget import ConnectionBudget, budget
@@ -161,16 +160,16 @@ def _add_unit(main: ast.Module, is_main: bool, diagnostics: Diagnostics, sources
     The stdlib comes first, so a user's adapter that repeats a standard name is the
     one reported as the duplicate.
     """
-    from rdisc.resources import stdlib_path
+    from rdisc.resources import stdlib_file
 
-    stdlib = str(stdlib_path())
-    is_stdlib = Path(main.path).resolve() == Path(stdlib).resolve()
+    stdlib = stdlib_file()
+    is_stdlib = os.path.realpath(main.path) == os.path.realpath(stdlib)
     text = None if is_stdlib else read_text(stdlib, diagnostics)
     if text is not None:
         sources.add(stdlib, text)
         units.append(Unit(parse(stdlib, text, diagnostics), standard=True))
-    root = Path(main.path).resolve().parent
-    seen = {str(Path(main.path).resolve()), str(Path(stdlib).resolve())}
+    root = os.path.dirname(os.path.realpath(main.path))
+    seen = {os.path.realpath(main.path), os.path.realpath(stdlib)}
     units.append(Unit(main, main=is_main))
     queue = [main]
     while queue:
@@ -178,6 +177,8 @@ def _add_unit(main: ast.Module, is_main: bool, diagnostics: Diagnostics, sources
         for decl in module.decls:
             if not isinstance(decl, ast.ImportDecl):
                 continue
+            from pathlib import Path  # only for a description that imports: start-up time
+
             target = Path(module.path).parent / decl.path
             try:
                 resolved = target.resolve()
@@ -188,7 +189,7 @@ def _add_unit(main: ast.Module, is_main: bool, diagnostics: Diagnostics, sources
                 diagnostics.report("E007", decl.span, f"cannot import `{abbreviate(decl.path)}`: "
                                    f"{getattr(err, 'strerror', None) or err}")
                 continue
-            if Path(decl.path).is_absolute() or not decl.path.endswith(".rdis") or not resolved.is_relative_to(root):
+            if Path(decl.path).is_absolute() or not decl.path.endswith(".rdis") or not resolved.is_relative_to(Path(root)):
                 # A description may come from a device or a network: it reads no other files.
                 diagnostics.report("E007", decl.span, f"cannot import `{decl.path}`",
                                    label="not a relative path to an .rdis file in the description's folder")

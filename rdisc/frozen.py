@@ -93,6 +93,21 @@ def _field(name: str, type_: object, given: object) -> dataclasses.Field[Any]:
     return made
 
 
+class _Fields:
+    """A class's `__dataclass_fields__`, made when first read (by `dataclasses.fields`, `replace`,
+    `is_dataclass`): the 650 fields of the syntax tree's and the Model's classes cost a tenth of
+    a cold `rdisc check`, which reads few of them."""
+
+    def __init__(self, given: list[tuple[str, object]], annotations: dict[str, object]) -> None:
+        self.given, self.annotations = given, annotations
+        self.made: dict[str, dataclasses.Field[Any]] | None = None
+
+    def __get__(self, instance: object, owner: type | None = None) -> dict[str, dataclasses.Field[Any]]:
+        if self.made is None:
+            self.made = {name: _field(name, self.annotations[name], value) for name, value in self.given}
+        return self.made
+
+
 def _default(given: object) -> object:
     """The default of a field's parameter in `__init__`."""
     if not isinstance(given, FieldSpec):
@@ -131,7 +146,7 @@ def classes(written: dict[str, Written]) -> Callable[..., Callable[[_Class], _Cl
                 namespace[key] = method
             namespace.update(
                 __slots__=tuple(annotations), __match_args__=tuple(annotations),
-                __dataclass_fields__={name: _field(name, annotations[name], value) for name, value in given},
+                __dataclass_fields__=_Fields(given, annotations),
                 __setattr__=_frozen_setattr, __delattr__=_frozen_delattr,
                 __getstate__=_getstate, __setstate__=_setstate,
             )

@@ -24,6 +24,15 @@ PACKAGE = Path(__file__).resolve().parent
 MODULES = {
     "syntax/ast.py": "syntax/ast_methods.py",
     "semantics/model.py": "semantics/model_methods.py",
+    "source.py": "source_methods.py",
+    "diagnostics/core.py": "diagnostics/core_methods.py",
+    "diagnostics/codes.py": "diagnostics/codes_methods.py",
+    "semantics/budget.py": "semantics/budget_methods.py",
+    "semantics/check.py": "semantics/check_methods.py",
+    "semantics/formats.py": "semantics/formats_methods.py",
+    "semantics/resolve.py": "semantics/resolve_methods.py",
+    "semantics/types.py": "semantics/types_methods.py",
+    "syntax/precedence.py": "syntax/precedence_methods.py",
 }
 LINE = 110
 EMPTY = {"dict": "{}", "list": "[]", "set": "set()"}  # the default factories handled, and what they make

@@ -1,26 +1,40 @@
 """Where the grammar and the standard library are, installed or not.
 
 In a wheel they are shipped inside the package (`rdisc/grammar`, `rdisc/stdlib`);
-in a source checkout they sit at the top level beside the package.
+in a source checkout they sit at the top level beside the package. Found with `os.path`:
+`rdisc check` does not import pathlib to start (the `Path`s are made on request).
 """
 
 from __future__ import annotations
 
-from pathlib import Path
+import os
+from typing import TYPE_CHECKING
 
-_HERE = Path(__file__).resolve().parent
+if TYPE_CHECKING:
+    from pathlib import Path
+
+_HERE = os.path.dirname(os.path.realpath(__file__))
 
 
-def _find(folder: str, name: str) -> Path:
-    for base in (_HERE / folder, _HERE.parent / folder):
-        if (base / name).is_file():
-            return base / name
+def _find(folder: str, name: str) -> str:
+    for base in (os.path.join(_HERE, folder), os.path.join(os.path.dirname(_HERE), folder)):
+        if os.path.isfile(os.path.join(base, name)):
+            return os.path.join(base, name)
     raise FileNotFoundError(f"rdisc is installed without its {folder}/{name}")
 
 
 def grammar_path() -> Path:
-    return _find("grammar", "rdis.lark")
+    from pathlib import Path
+
+    return Path(_find("grammar", "rdis.lark"))
+
+
+def stdlib_file() -> str:
+    """The standard library's file, as a string."""
+    return _find("stdlib", "adapters.rdis")
 
 
 def stdlib_path() -> Path:
-    return _find("stdlib", "adapters.rdis")
+    from pathlib import Path
+
+    return Path(stdlib_file())

@@ -10,7 +10,12 @@ import bisect
 import os
 import posixpath
 from collections.abc import Mapping
-from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from dataclasses import dataclass, field
+else:  # the same classes, their methods written out ahead of time: rdisc/frozen.py
+    from rdisc.source_methods import dataclass, field
 
 
 @dataclass(frozen=True, slots=True)

@@ -4,7 +4,6 @@ directory stands for the descriptions in it (.rdis and .json, in sorted order)."
 from __future__ import annotations
 
 import argparse
-import json
 import os
 import sys
 
@@ -37,6 +36,8 @@ def run(args: argparse.Namespace) -> int:
         paths += found
     compilations = [compile_path(path) for path in paths]
     if args.format == "json":
+        import json
+
         from rdisc.diagnostics.lsp import to_lsp
 
         items = [d for c in compilations for d in to_lsp(c.diagnostics.sorted(), c.sources)]

@@ -6,7 +6,13 @@ E-codes are errors, W-codes warnings.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from dataclasses import dataclass
+else:  # the same classes, their methods written out ahead of time: rdisc/frozen.py
+    from rdisc.diagnostics.codes_methods import dataclass
+
 
 
 @dataclass(frozen=True, slots=True)

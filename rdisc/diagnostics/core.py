@@ -3,10 +3,15 @@
 from __future__ import annotations
 
 import enum
-from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 from rdisc.diagnostics.codes import CODES
 from rdisc.source import Span
+
+if TYPE_CHECKING:
+    from dataclasses import dataclass
+else:  # the same classes, their methods written out ahead of time: rdisc/frozen.py
+    from rdisc.diagnostics.core_methods import dataclass
 
 
 def abbreviate(text: str, limit: int = 24) -> str:

@@ -9,12 +9,17 @@ ASCII messages are counted at their shortest, so a warning is never a false alar
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 from rdisc.diagnostics import Diagnostics
 from rdisc.semantics import formats
 from rdisc.semantics import model as m
 from rdisc.semantics.frames import length_part, length_range
+
+if TYPE_CHECKING:
+    from dataclasses import dataclass
+else:  # the same classes, their methods written out ahead of time: rdisc/frozen.py
+    from rdisc.semantics.budget_methods import dataclass
 
 BITS_PER_BYTE = 10  # 8N1: start bit, 8 data bits, stop bit
 _SAMPLE: dict[m.AnyType, m.Value] = {m.Type.INT: 0, m.Type.FLOAT: 0.0, m.Type.BOOL: False, m.Type.STRING: ""}

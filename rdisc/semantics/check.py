@@ -11,8 +11,8 @@ from __future__ import annotations
 import math
 from collections import ChainMap
 from collections.abc import Iterator, Sequence
-from dataclasses import dataclass, replace
-from typing import Protocol, TypeVar
+from dataclasses import replace
+from typing import TYPE_CHECKING, Protocol, TypeVar
 
 from rdisc.diagnostics import Diagnostics, Label, abbreviate
 from rdisc.limits import MAX_ARRAY, MAX_INT
@@ -28,6 +28,11 @@ from rdisc.semantics.units import UNITS
 from rdisc.source import Span
 from rdisc.syntax import ast
 from rdisc.syntax.printer import print_type
+
+if TYPE_CHECKING:
+    from dataclasses import dataclass
+else:  # the same classes, their methods written out ahead of time: rdisc/frozen.py
+    from rdisc.semantics.check_methods import dataclass
 
 FLOAT_LIMITS = {"e": 65504.0, "f": 3.4028234663852886e38}  # the largest finite half and single floats
 MAX_BAUD = 100_000_000  # bit/s: no serial line is faster

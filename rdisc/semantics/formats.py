@@ -14,12 +14,17 @@ import re
 import string
 import struct
 import warnings
-from dataclasses import dataclass
 from functools import lru_cache
+from typing import TYPE_CHECKING
 
 from rdisc.limits import MAX_ARRAY
 from rdisc.semantics import regex_shape
 from rdisc.semantics.model import AnyType, Array, Slot, StructLayout, Type, Varying, bit_span
+
+if TYPE_CHECKING:
+    from dataclasses import dataclass
+else:  # the same classes, their methods written out ahead of time: rdisc/frozen.py
+    from rdisc.semantics.formats_methods import dataclass
 
 __all__ = ["MAX_MESSAGE", "MAX_REPEAT", "FormatField", "Slot", "StructLayout", "TemplateError", "Varying",
            "bit_span", "format_fields", "format_width", "most_rounds", "regex_groups", "regex_min_length", "spec_accepts",

@@ -38,10 +38,17 @@ _CATEGORIES = {
     c.CATEGORY_DIGIT: r"\d", c.CATEGORY_NOT_DIGIT: r"\D", c.CATEGORY_SPACE: r"\s",
     c.CATEGORY_NOT_SPACE: r"\S", c.CATEGORY_WORD: r"\w", c.CATEGORY_NOT_WORD: r"\W",
 }
-_CATEGORY_SETS = {
-    category: frozenset(i for i in range(256) if re.fullmatch(pattern, chr(i)))
-    for category, pattern in _CATEGORIES.items()
-}
+_CATEGORY_SETS: dict[Any, frozenset[int]] = {}  # each category's bytes, once asked for (start-up time)
+
+
+def _category(category: Any) -> frozenset[int]:
+    """The bytes a category (`\\d`, `\\s`, ...) matches; ALL for one this does not know."""
+    found = _CATEGORY_SETS.get(category)
+    if found is None:
+        pattern = _CATEGORIES.get(category)
+        found = ALL if pattern is None else frozenset(i for i in range(256) if re.fullmatch(pattern, chr(i)))
+        _CATEGORY_SETS[category] = found
+    return found
 
 
 class Risky(Exception):
@@ -237,7 +244,7 @@ def _in(items: Any) -> frozenset[int]:
             for code in range(low, min(high, 255) + 1):
                 out |= _cased(code)
         elif op is c.CATEGORY:
-            out |= _CATEGORY_SETS.get(av, ALL)
+            out |= _category(av)
         else:
             out |= ALL
     return ALL - out if negate else frozenset(out)

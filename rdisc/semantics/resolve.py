@@ -7,14 +7,18 @@ not resolve is reported here once, and later passes skip it silently.
 
 from __future__ import annotations
 
-import difflib
 from collections.abc import Iterable, Mapping
-from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 from rdisc.diagnostics import Diagnostics, Label
 from rdisc.engine.operations import FUNCTIONS
 from rdisc.source import Span
 from rdisc.syntax import ast
+
+if TYPE_CHECKING:
+    from dataclasses import dataclass, field
+else:  # the same classes, their methods written out ahead of time: rdisc/frozen.py
+    from rdisc.semantics.resolve_methods import dataclass, field
 
 # Words that would be read as keywords where a name can stand. Other keywords of
 # the language only occur in places no name can, so they stay usable as names
@@ -116,6 +120,8 @@ def check_name(name: ast.Ident, what: str, diagnostics: Diagnostics, read: bool 
 
 def closest(name: str, candidates: Iterable[str]) -> str | None:
     """The declared name closest to a misspelt one, if any is close."""
+    import difflib  # only for an unknown name: start-up time matters for `rdisc check`
+
     close = difflib.get_close_matches(name, list(candidates), n=1, cutoff=0.6)
     return close[0] if close else None
 

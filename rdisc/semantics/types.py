@@ -9,8 +9,8 @@ Constant subexpressions are evaluated as they are typed, so a resource bomb
 from __future__ import annotations
 
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass
 from functools import partial
+from typing import TYPE_CHECKING
 
 from rdisc.diagnostics import Diagnostics
 from rdisc.engine.operations import BINARY, FUNCTIONS, UNARY, EvalError, fits, lookup_or
@@ -22,6 +22,11 @@ from rdisc.semantics.resolve import suggest
 from rdisc.source import Span
 from rdisc.syntax import ast
 from rdisc.syntax.printer import print_expr
+
+if TYPE_CHECKING:
+    from dataclasses import dataclass
+else:  # the same classes, their methods written out ahead of time: rdisc/frozen.py
+    from rdisc.semantics.types_methods import dataclass
 
 T = AnyType | None  # None: unknown, already reported
 NUMERIC = (Type.INT, Type.FLOAT)

@@ -94,8 +94,6 @@ def parse(path: str, text: str, diagnostics: Diagnostics) -> ast.Module:
             f"file is too large ({len(text)} characters; the limit is {MAX_FILE_CHARS})",
         )
         return ast.Module(path, (), refused=True)
-    import lark
-
     from rdisc.syntax.reduce import Retry, parse_built
 
     builder = Builder(path, _doc_comments(text), diagnostics)
@@ -111,10 +109,12 @@ def parse(path: str, text: str, diagnostics: Diagnostics) -> ast.Module:
             damaged.extend(_damaged(path, chunk, start))
             continue
         try:  # built as it is parsed, where that is clean; else Lark's tree, built after (rdisc.syntax.reduce)
-            decls.extend(parse_built(chunk, builder, start, parser(), MAX_TREE_DEPTH))
+            decls.extend(parse_built(chunk, builder, start, MAX_TREE_DEPTH))
             continue
         except Retry:
             pass
+        import lark  # only for a declaration the loop leaves: start-up time matters for `rdisc check`
+
         try:
             tree = parser().parse(chunk, start="start", on_error=_keyword_as_name)
         except lark.exceptions.UnexpectedInput as err:

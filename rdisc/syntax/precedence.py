@@ -10,7 +10,12 @@ where the grammar would otherwise read a different tree.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from dataclasses import dataclass
+else:  # the same classes, their methods written out ahead of time: rdisc/frozen.py
+    from rdisc.syntax.precedence_methods import dataclass
 
 # Levels, loosest first; an operand printed at a level below what its place in
 # the grammar accepts gets parentheses.

@@ -1,0 +1,109 @@
+"""The methods of the frozen dataclasses of rdisc/diagnostics/core.py, written out ahead of time (why: rdisc/frozen.py).
+
+Written by `python -m rdisc.frozen_writer` from the declarations: do not edit; rerun it after
+changing a class's fields (a test holds this file equal to what it writes).
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from rdisc.frozen import DEFAULT, MISSING, Written, classes, field
+
+__all__ = ["dataclass", "field"]
+
+_set = object.__setattr__
+
+
+def _init_Label(self: Any, span: Any, message: Any) -> None:
+    _set(self, "span", span)
+    _set(self, "message", message)
+
+
+def _repr_Label(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(span={self.span!r}, message={self.message!r})"
+
+
+def _eq_Label(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.span, self.message) == (other.span, other.message)
+    return NotImplemented
+
+
+def _hash_Label(self: Any) -> int:
+    return hash((self.span, self.message))
+
+
+def _init_Diagnostic(
+    self: Any,
+    code: Any,
+    severity: Any,
+    message: Any,
+    span: Any,
+    label: Any = DEFAULT,
+    labels: Any = DEFAULT,
+    help: Any = DEFAULT,
+) -> None:
+    _set(self, "code", code)
+    _set(self, "severity", severity)
+    _set(self, "message", message)
+    _set(self, "span", span)
+    _set(self, "label", label)
+    _set(self, "labels", labels)
+    _set(self, "help", help)
+
+
+def _repr_Diagnostic(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(code={self.code!r}, severity={self.severity!r}, message={self.message!r}, span={self.span!r}, label={self.label!r}, labels={self.labels!r}, help={self.help!r})"
+
+
+def _eq_Diagnostic(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.code,
+            self.severity,
+            self.message,
+            self.span,
+            self.label,
+            self.labels,
+            self.help,
+        ) == (
+            other.code,
+            other.severity,
+            other.message,
+            other.span,
+            other.label,
+            other.labels,
+            other.help,
+        )
+    return NotImplemented
+
+
+def _hash_Diagnostic(self: Any) -> int:
+    return hash((self.code, self.severity, self.message, self.span, self.label, self.labels, self.help))
+
+
+WRITTEN: dict[str, Written] = {
+    "Label": Written(
+        (("span", MISSING), ("message", MISSING)),
+        {"__init__": _init_Label, "__repr__": _repr_Label, "__eq__": _eq_Label, "__hash__": _hash_Label},
+    ),
+    "Diagnostic": Written(
+        (
+            ("code", MISSING),
+            ("severity", MISSING),
+            ("message", MISSING),
+            ("span", MISSING),
+            ("label", DEFAULT),
+            ("labels", DEFAULT),
+            ("help", DEFAULT),
+        ),
+        {
+            "__init__": _init_Diagnostic,
+            "__repr__": _repr_Diagnostic,
+            "__eq__": _eq_Diagnostic,
+            "__hash__": _hash_Diagnostic,
+        },
+    ),
+}
+dataclass = classes(WRITTEN)

@@ -1,0 +1,134 @@
+"""The methods of the frozen dataclasses of rdisc/semantics/budget.py, written out ahead of time (why: rdisc/frozen.py).
+
+Written by `python -m rdisc.frozen_writer` from the declarations: do not edit; rerun it after
+changing a class's fields (a test holds this file equal to what it writes).
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from rdisc.frozen import DEFAULT, MISSING, Written, classes, field
+
+__all__ = ["dataclass", "field"]
+
+_set = object.__setattr__
+
+
+def _init_Exchange(self: Any, interface: Any, bytes: Any, wire_ms: Any, delay_ms: Any) -> None:
+    _set(self, "interface", interface)
+    _set(self, "bytes", bytes)
+    _set(self, "wire_ms", wire_ms)
+    _set(self, "delay_ms", delay_ms)
+
+
+def _repr_Exchange(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(interface={self.interface!r}, bytes={self.bytes!r}, wire_ms={self.wire_ms!r}, delay_ms={self.delay_ms!r})"
+
+
+def _eq_Exchange(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.interface,
+            self.bytes,
+            self.wire_ms,
+            self.delay_ms,
+        ) == (
+            other.interface,
+            other.bytes,
+            other.wire_ms,
+            other.delay_ms,
+        )
+    return NotImplemented
+
+
+def _hash_Exchange(self: Any) -> int:
+    return hash((self.interface, self.bytes, self.wire_ms, self.delay_ms))
+
+
+def _init_ConnectionBudget(
+    self: Any,
+    connection: Any,
+    baud: Any,
+    frequency_hz: Any,
+    periodic: Any,
+    keepalive: Any,
+    keepalive_interval_ms: Any,
+    baud_setting: Any = DEFAULT,
+) -> None:
+    _set(self, "connection", connection)
+    _set(self, "baud", baud)
+    _set(self, "frequency_hz", frequency_hz)
+    _set(self, "periodic", periodic)
+    _set(self, "keepalive", keepalive)
+    _set(self, "keepalive_interval_ms", keepalive_interval_ms)
+    _set(self, "baud_setting", baud_setting)
+
+
+def _repr_ConnectionBudget(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(connection={self.connection!r}, baud={self.baud!r}, frequency_hz={self.frequency_hz!r}, periodic={self.periodic!r}, keepalive={self.keepalive!r}, keepalive_interval_ms={self.keepalive_interval_ms!r}, baud_setting={self.baud_setting!r})"
+
+
+def _eq_ConnectionBudget(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.connection,
+            self.baud,
+            self.frequency_hz,
+            self.periodic,
+            self.keepalive,
+            self.keepalive_interval_ms,
+            self.baud_setting,
+        ) == (
+            other.connection,
+            other.baud,
+            other.frequency_hz,
+            other.periodic,
+            other.keepalive,
+            other.keepalive_interval_ms,
+            other.baud_setting,
+        )
+    return NotImplemented
+
+
+def _hash_ConnectionBudget(self: Any) -> int:
+    return hash((
+        self.connection,
+        self.baud,
+        self.frequency_hz,
+        self.periodic,
+        self.keepalive,
+        self.keepalive_interval_ms,
+        self.baud_setting,
+    ))
+
+
+WRITTEN: dict[str, Written] = {
+    "Exchange": Written(
+        (("interface", MISSING), ("bytes", MISSING), ("wire_ms", MISSING), ("delay_ms", MISSING)),
+        {
+            "__init__": _init_Exchange,
+            "__repr__": _repr_Exchange,
+            "__eq__": _eq_Exchange,
+            "__hash__": _hash_Exchange,
+        },
+    ),
+    "ConnectionBudget": Written(
+        (
+            ("connection", MISSING),
+            ("baud", MISSING),
+            ("frequency_hz", MISSING),
+            ("periodic", MISSING),
+            ("keepalive", MISSING),
+            ("keepalive_interval_ms", MISSING),
+            ("baud_setting", DEFAULT),
+        ),
+        {
+            "__init__": _init_ConnectionBudget,
+            "__repr__": _repr_ConnectionBudget,
+            "__eq__": _eq_ConnectionBudget,
+            "__hash__": _hash_ConnectionBudget,
+        },
+    ),
+}
+dataclass = classes(WRITTEN)

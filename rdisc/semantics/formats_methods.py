@@ -1,0 +1,48 @@
+"""The methods of the frozen dataclasses of rdisc/semantics/formats.py, written out ahead of time (why: rdisc/frozen.py).
+
+Written by `python -m rdisc.frozen_writer` from the declarations: do not edit; rerun it after
+changing a class's fields (a test holds this file equal to what it writes).
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from rdisc.frozen import MISSING, Written, classes, field
+
+__all__ = ["dataclass", "field"]
+
+_set = object.__setattr__
+
+
+def _init_FormatField(self: Any, spec: Any, offset: Any) -> None:
+    _set(self, "spec", spec)
+    _set(self, "offset", offset)
+
+
+def _repr_FormatField(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(spec={self.spec!r}, offset={self.offset!r})"
+
+
+def _eq_FormatField(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.spec, self.offset) == (other.spec, other.offset)
+    return NotImplemented
+
+
+def _hash_FormatField(self: Any) -> int:
+    return hash((self.spec, self.offset))
+
+
+WRITTEN: dict[str, Written] = {
+    "FormatField": Written(
+        (("spec", MISSING), ("offset", MISSING)),
+        {
+            "__init__": _init_FormatField,
+            "__repr__": _repr_FormatField,
+            "__eq__": _eq_FormatField,
+            "__hash__": _hash_FormatField,
+        },
+    ),
+}
+dataclass = classes(WRITTEN)

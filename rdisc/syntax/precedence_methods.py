@@ -1,0 +1,77 @@
+"""The methods of the frozen dataclasses of rdisc/syntax/precedence.py, written out ahead of time (why: rdisc/frozen.py).
+
+Written by `python -m rdisc.frozen_writer` from the declarations: do not edit; rerun it after
+changing a class's fields (a test holds this file equal to what it writes).
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from rdisc.frozen import MISSING, Written, classes, field
+
+__all__ = ["dataclass", "field"]
+
+_set = object.__setattr__
+
+
+def _init_Operator(self: Any, spelling: Any, level: Any, operands: Any) -> None:
+    _set(self, "spelling", spelling)
+    _set(self, "level", level)
+    _set(self, "operands", operands)
+
+
+def _repr_Operator(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(spelling={self.spelling!r}, level={self.level!r}, operands={self.operands!r})"
+
+
+def _eq_Operator(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.spelling, self.level, self.operands) == (other.spelling, other.level, other.operands)
+    return NotImplemented
+
+
+def _hash_Operator(self: Any) -> int:
+    return hash((self.spelling, self.level, self.operands))
+
+
+def _init_Printed(self: Any, text: Any, level: Any) -> None:
+    _set(self, "text", text)
+    _set(self, "level", level)
+
+
+def _repr_Printed(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(text={self.text!r}, level={self.level!r})"
+
+
+def _eq_Printed(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.text, self.level) == (other.text, other.level)
+    return NotImplemented
+
+
+def _hash_Printed(self: Any) -> int:
+    return hash((self.text, self.level))
+
+
+WRITTEN: dict[str, Written] = {
+    "Operator": Written(
+        (("spelling", MISSING), ("level", MISSING), ("operands", MISSING)),
+        {
+            "__init__": _init_Operator,
+            "__repr__": _repr_Operator,
+            "__eq__": _eq_Operator,
+            "__hash__": _hash_Operator,
+        },
+    ),
+    "Printed": Written(
+        (("text", MISSING), ("level", MISSING)),
+        {
+            "__init__": _init_Printed,
+            "__repr__": _repr_Printed,
+            "__eq__": _eq_Printed,
+            "__hash__": _hash_Printed,
+        },
+    ),
+}
+dataclass = classes(WRITTEN)
