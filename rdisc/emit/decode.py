@@ -20,51 +20,12 @@ from rdisc.semantics import model as m
 def decode(model: m.Model, device: engine.Device, messages: Sequence[Message]) -> str:
     """Each message and what it is (`device`: the model's plans, whose frames check a message
     whole: its length, fields and checksum)."""
-    checks = {name: _checks(model, device, name) for name in model.primitives}
-    requests = {name: request_layouts(model, p) for name, p in model.primitives.items()}
-    replies = {name: reply_layouts(model, p) for name, p in model.primitives.items()}
-    errors = {name: _error_checks(device, name) for name in model.primitives}
-    written: dict[str | None, bytes] = {}  # the last request on each connection (a checksum may cover it)
-    carried: dict[str | None, _Fields] = {}  # its frame's fields, which its reply must carry too
-    asked: dict[str | None, str] = {}  # the primitive of the last request on each connection
+    teller = Teller(model, device)
     lines: list[str] = []
     for message in messages:
         on = f"{message.connection} " if message.connection is not None else ""
         lines.append(f"{on}{'>' if message.write else '<'} {message.data.hex(' ').upper()}".rstrip())
-        names = [name for name, p in model.primitives.items()
-                 if message.connection is None or p.connection == message.connection]
-        found: list[tuple[str, list[tuple[int, str, str]], str | None]] = []  # name, rows, a reply's regex
-        if message.write:
-            written[message.connection] = message.data
-            found = [(f"request {name}", rows, None) for name in names
-                     if (rows := _first(requests[name], message.data)) is not None
-                     and _whole(checks[name][0], message.data, b"")]
-            found.sort(key=lambda one: not _fixed(checks[one[0].removeprefix("request ")][0]))  # broadcast: *_all
-            if found:
-                name = found[0][0].removeprefix("request ")
-                asked[message.connection] = name
-                carried[message.connection] = _fields_of(checks[name][0], message.data)
-            else:
-                asked.pop(message.connection, None)
-        else:
-            before = asked.get(message.connection)
-            ordered = ([before] if before in names else []) + [name for name in names if name != before]
-            request = written.get(message.connection, b"")
-            found = [(f"{said} of {name}", rows, pattern if isinstance(pattern, str) else None)
-                     for name in ordered for said, (table, pattern) in replies[name]
-                     if (rows := matched((table, pattern), message.data)) is not None
-                     and (_whole(checks[name][1], message.data, request,
-                                 carried.get(message.connection) if name == before else None)
-                          if said != "error" or errors[name] is None else _whole(errors[name] or (), message.data, request))]
-            if found and found[0][0].endswith(f" of {before}"):  # the request's own reply: no other is meant
-                found = found[:1]
-            elif before in names:  # its shape, but not its request's fields (another servo's status)
-                for said, (table, pattern) in replies[before]:
-                    rows = matched((table, pattern), message.data)
-                    if rows is not None and _whole(checks[before][1], message.data, request):
-                        wrong = _misread(checks[before][1], message.data, request, carried.get(message.connection))
-                        found = [(f"{said} of {before}, but {wrong}", rows, None)]
-                        break
+        found = teller.tell(message)
         if not found:
             side = "request" if message.write else "reply"
             lines.append(f"  unknown: no primitive's {side} is these {len(message.data)} bytes")
@@ -81,6 +42,71 @@ def decode(model: m.Model, device: engine.Device, messages: Sequence[Message]) -
             except engine.RdisError:
                 pass
     return "\n".join(lines) + "\n" if lines else ""
+
+
+_Told = tuple[str, list[tuple[int, str, str]], str | None]
+"""What a message was told to be (`request drive`, `reply of status`), its rows, a reply's regex."""
+
+
+class Teller:
+    """Tells messages one at a time, in the order they crossed the wire: a reply is held against
+    the reply tables of the request before it on its connection first (`decode`; the console
+    names the primitive of each line of its byte trace with it)."""
+
+    def __init__(self, model: m.Model, device: engine.Device) -> None:
+        self.model = model
+        self.checks = {name: _checks(model, device, name) for name in model.primitives}
+        self.requests = {name: request_layouts(model, p) for name, p in model.primitives.items()}
+        self.replies = {name: reply_layouts(model, p) for name, p in model.primitives.items()}
+        self.errors = {name: _error_checks(device, name) for name in model.primitives}
+        self.written: dict[str | None, bytes] = {}  # the last request on each connection (a checksum may cover it)
+        self.carried: dict[str | None, _Fields] = {}  # its frame's fields, which its reply must carry too
+        self.asked: dict[str | None, str] = {}  # the primitive of the last request on each connection
+
+    def primitive(self, message: Message) -> str | None:
+        """The primitive whose request or reply the message is, if one's is."""
+        found = self.tell(message)
+        return found[0][0].split(",")[0].rsplit(" ", 1)[-1] if found else None
+
+    def tell(self, message: Message) -> list[_Told]:
+        """What the message may be, the likeliest first (none: unknown)."""
+        model, checks, replies = self.model, self.checks, self.replies
+        names = [name for name, p in model.primitives.items()
+                 if message.connection is None or p.connection == message.connection]
+        found: list[_Told] = []
+        if message.write:
+            self.written[message.connection] = message.data
+            found = [(f"request {name}", rows, None) for name in names
+                     if (rows := _first(self.requests[name], message.data)) is not None
+                     and _whole(checks[name][0], message.data, b"")]
+            found.sort(key=lambda one: not _fixed(checks[one[0].removeprefix("request ")][0]))  # broadcast: *_all
+            if found:
+                name = found[0][0].removeprefix("request ")
+                self.asked[message.connection] = name
+                self.carried[message.connection] = _fields_of(checks[name][0], message.data)
+            else:
+                self.asked.pop(message.connection, None)
+            return found
+        before = self.asked.get(message.connection)
+        ordered = ([before] if before in names else []) + [name for name in names if name != before]
+        request = self.written.get(message.connection, b"")
+        carried = self.carried.get(message.connection)
+        found = [(f"{said} of {name}", rows, pattern if isinstance(pattern, str) else None)
+                 for name in ordered for said, (table, pattern) in replies[name]
+                 if (rows := matched((table, pattern), message.data)) is not None
+                 and (_whole(checks[name][1], message.data, request, carried if name == before else None)
+                      if said != "error" or self.errors[name] is None
+                      else _whole(self.errors[name] or (), message.data, request))]
+        if found and found[0][0].endswith(f" of {before}"):  # the request's own reply: no other is meant
+            return found[:1]
+        if before in names:  # its shape, but not its request's fields (another servo's status)
+            assert before is not None
+            for said, (table, pattern) in replies[before]:
+                rows = matched((table, pattern), message.data)
+                if rows is not None and _whole(checks[before][1], message.data, request):
+                    wrong = _misread(checks[before][1], message.data, request, carried)
+                    return [(f"{said} of {before}, but {wrong}", rows, None)]
+        return found
 
 
 def _code_named(model: m.Model, p: m.Primitive, rows: list[tuple[int, str, str]], data: bytes) -> list[str]:
