@@ -97,6 +97,7 @@ def run(args: argparse.Namespace) -> int:
         return exit_code([compilation]) or EXIT_ERRORS
     from rdisc.console.page import render
     from rdisc.console.server import Console
+    from rdisc.emit.decode import Teller
     from rdisc.runtime.device import Description
     from rdisc.source import place
 
@@ -131,7 +132,7 @@ def run(args: argparse.Namespace) -> int:
     if isinstance(live, int):
         return live
     console = Console(robot, page, session, sim, tell=lambda text: print(text, file=sys.stderr, flush=True),
-                      ping=args.ping)
+                      ping=args.ping, teller=Teller(model, device))
     robot.on_error(lambda error: print(f"rdisc console: {type(error).__name__}: {error}", file=sys.stderr, flush=True))
 
     def listening(bound: int) -> None:

@@ -34,6 +34,9 @@ def add_parser(verbs: argparse._SubParsersAction[argparse.ArgumentParser]) -> No
     p.add_argument("file", metavar="FILE", help=".rdis or thesis-style .json description")
     engine.add_arguments(p, ports=False)
     add_seed_argument(p)
+    p.add_argument("--error", action="append", default=[], metavar="PRIMITIVE=CODE",
+                   help="answer PRIMITIVE with its declared `error` reply, CODE a number or a member of its enum "
+                        "(ILLEGAL_DATA_ADDRESS): its call raises RdisDeviceError as the device's would")
     p.add_argument("--realtime", action="store_true", help="run on the wall clock instead of simulated time")
     p.set_defaults(run=run)
 
@@ -72,7 +75,24 @@ def run(args: argparse.Namespace) -> int:
     simulated = simulation(model, args.file, "rdisc sim", seed=args.seed, realtime=args.realtime)
     if simulated is None:
         return EXIT_USAGE
+    for given in args.error:
+        primitive, _, code = given.partition("=")
+        try:
+            if not code:
+                raise ValueError("give it as PRIMITIVE=CODE")
+            simulated.answer_error(primitive, _code(code))
+        except ValueError as err:
+            print(f"rdisc sim: --error {given}: {err}", file=sys.stderr)
+            return EXIT_USAGE
     from rdisc.runtime.device import Description
 
     robot = engine.Robot(Description(model).device, timeout=args.timeout)
     return engine.run_command(args, robot, "rdisc sim", sim=simulated, inputs=list(compilation.sources))
+
+
+def _code(text: str) -> int | str:
+    """An --error code: a number as a description writes one (2, 0x02), else a member's name."""
+    try:
+        return int(text, 0)
+    except ValueError:
+        return text

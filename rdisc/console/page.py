@@ -57,9 +57,13 @@ def render(model: m.Model, where: Callable[[Span | None], str | None], *, simula
 {''.join(_call_form("interface", i.name, i.params, i.doc) for i in model.interfaces.values()) or _none}
 <h2>Primitives</h2>
 {''.join(_call_form("primitive", p.name, p.params, p.doc) for p in model.primitives.values()) or _none}</section>
+{_raw_terminal(model)}
 <section class="trace"><h2>Byte trace</h2>
-<table data-rdis-trace><thead><tr><th>time (s)</th><th>connection</th><th></th><th>bytes (hex)</th></tr></thead>
-<tbody></tbody></table></section>
+<p class="controls"><button type="button" data-rdis-trace-pause>Pause</button>
+<span class="held" data-rdis-trace-held></span>
+<label>primitive <select data-rdis-trace-filter><option value="">all</option>{_primitive_options(model)}</select></label></p>
+<table data-rdis-trace><thead><tr><th>time (s)</th><th>connection</th><th></th><th>bytes (hex)</th><th>primitive</th></tr>
+</thead><tbody></tbody></table></section>
 </main>
 <script type="application/json" id="rdis-details">{details}</script>
 {shapes}<script src="/console.js"></script>
@@ -69,6 +73,22 @@ def render(model: m.Model, where: Callable[[Span | None], str | None], *, simula
 
 
 _none = '<p class="note">none</p>'
+
+
+def _raw_terminal(model: m.Model) -> str:
+    """The raw terminal, as miniterm's: bytes typed as hex sent on a connection (through its
+    port's lock, as a call), and each send and the device's answer, in hex and ASCII."""
+    options = "".join(f'<option value="{escape(c)}">{escape(c)}</option>' for c in model.connections)
+    return (f'<section class="raw"><h2>Raw terminal <span class="type">bytes as typed, the answer as it '
+            f'came</span></h2><form data-rdis-raw><label><span class="name">connection</span> '
+            f'<select name="connection">{options}</select></label><label><span class="name">bytes</span> '
+            f'<input type="text" name="hex" placeholder="hex: 8e 16" required></label>'
+            f'<button type="submit">Send</button> <span class="result"></span></form>'
+            f'<ol class="raw-log" data-rdis-raw-log></ol></section>')
+
+
+def _primitive_options(model: m.Model) -> str:
+    return "".join(f'<option value="{escape(p)}">{escape(p)}</option>' for p in model.primitives)
 
 
 def _json(value: object) -> str:

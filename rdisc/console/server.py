@@ -40,9 +40,11 @@ from websockets.exceptions import ConnectionClosed
 from websockets.http11 import Request, Response
 
 from rdisc import engine
+from rdisc.capture import Message
 from rdisc.console import PING_S
 
 if TYPE_CHECKING:
+    from rdisc.emit.decode import Teller
     from rdisc.sim import Simulation
 
 ASSETS = {"/console.js": "text/javascript; charset=utf-8", "/console.css": "text/css; charset=utf-8"}
@@ -51,6 +53,7 @@ LOOPBACK = ("127.0.0.1", "localhost", "[::1]")
 BODY_HZ = 10  # how often a simulated body is pushed to the open pages
 MAX_DEPTH = 32  # how deep a page's call may nest its JSON (a call is an object of texts)
 STOPPING = "the console is stopping: no more calls are made"
+MAX_RAW = 4096  # bytes one raw send may write
 
 
 def origins_for(host: str, port: int, extra: Iterable[str] = ()) -> set[str]:
@@ -81,12 +84,15 @@ class Console:
     (what `--record` records and `--foxglove` serves), each call a page makes is told to it as
     the host's call, as `rdisc run` tells its --call calls (the robot's bytes, outputs and errors
     the session takes from the robot);
-    with the `body` it drives (`--sim`), the body as it is now is pushed BODY_HZ times a second."""
+    with the `body` it drives (`--sim`), the body as it is now is pushed BODY_HZ times a second;
+    with a `teller` (`rdisc decode`'s), each line of the byte trace names the primitive whose
+    request or reply it is, for the page to filter by."""
 
     def __init__(self, robot: engine.Robot, page: str, session: engine.Session | None = None,
                  body: Simulation | None = None, tell: Callable[[str], None] | None = None,
-                 ping: float = PING_S) -> None:
+                 ping: float = PING_S, teller: Teller | None = None) -> None:
         self.robot = robot
+        self.teller = teller
         self.ping = ping  # seconds: how often a page is pinged, and how long it has to answer, or to close
         self.session = session
         self.body = body
@@ -132,7 +138,11 @@ class Console:
 
     def _io(self, direction: str, connection: str, data: bytes) -> None:
         shown = data.decode("ascii") if direction == "lines" else data.hex(" ")
-        event = {"type": "io", "t": self._now(), "direction": direction, "connection": connection, "data": shown}
+        primitive = None
+        if self.teller is not None and direction != "lines":  # told in the order of the wire (`_show`)
+            primitive = self.teller.primitive(Message(direction == "write", data, connection))
+        event = {"type": "io", "t": self._now(), "direction": direction, "connection": connection, "data": shown,
+                 "primitive": primitive}
         with self._lock:
             self._trace.append(event)
         self._push(event)
@@ -294,7 +304,10 @@ class Console:
     # ---- calls from a page ---------------------------------------------------------------------------
 
     def call(self, text: str | bytes) -> dict[str, Any]:
-        """One call a page asked for, `{"id", "kind", "name", "values": {NAME: text}}`; its result."""
+        """One call a page asked for, `{"id", "kind", "name", "values": {NAME: text}}`, or raw bytes
+        to send, `{"id", "kind": "raw", "connection": C, "hex": TEXT}`; its result (a raw send's
+        with the bytes written, `"sent"` in hex and `"sent_text"` in ASCII, and the device's answer,
+        `"answer"` and `"text"`; `.` for a byte that is no printable character)."""
         if self.stopping:
             return _refused(text)
         ident: Any = None
@@ -305,6 +318,12 @@ class Console:
                 raise TypeError("a call is a JSON object")
             ident = request.get("id")
             kind, name, values = request.get("kind"), request.get("name"), request.get("values", {})
+            if kind == "raw":
+                connection, data = self._raw_request(request)  # not a call: the session records only its bytes
+                answer = self.robot.send_raw(connection, data)
+                self._push_state()
+                return {"type": "result", "id": ident, "ok": True, "sent": data.hex(" "), "sent_text": printable(data),
+                        "answer": answer.hex(" "), "text": printable(answer)}
             if not isinstance(name, str) or not isinstance(values, dict):
                 raise TypeError("a call names what it calls and gives its values by name")
             given = _read(self.robot.device, kind, name, values)
@@ -321,6 +340,41 @@ class Console:
             return {"type": "result", "id": ident, "ok": False, "error": type(err).__name__, "message": str(message)}
         self._push_state()
         return {"type": "result", "id": ident, "ok": True}
+
+    def _raw_request(self, request: dict[str, Any]) -> tuple[str, bytes]:
+        """A raw send's connection (the only one when not named) and its bytes."""
+        connections = self.robot.device.connections
+        connection = request.get("connection") or (next(iter(connections)) if len(connections) == 1 else None)
+        if not isinstance(connection, str):
+            raise TypeError(f"raw: name the connection to send on ({', '.join(connections)})")
+        if connection not in connections:
+            raise KeyError(f"{self.robot.name} has no connection named {connection!r}")
+        return connection, raw_bytes(request.get("hex"))
+
+
+def raw_bytes(text: object) -> bytes:
+    """The bytes of a raw send, typed as hex: pairs of digits, spaces (or commas) between bytes
+    allowed, each byte may be written `0x..`; anything else a ValueError that says what."""
+    if not isinstance(text, str):
+        raise TypeError("raw: the bytes are given as hex text")
+    words = text.replace(",", " ").split()
+    if not words:
+        raise ValueError("raw: no bytes given (type them as hex: 8e 16)")
+    digits = "".join(word[2:] if word[:2].lower() == "0x" else word for word in words)
+    bad = next((c for c in digits if c not in "0123456789abcdefABCDEF"), None)
+    if bad is not None:
+        raise ValueError(f"raw: {bad!r} is not a hex digit (type the bytes as hex: 8e 16)")
+    if len(digits) % 2:
+        raise ValueError(f"raw: {len(digits)} hex digits are not whole bytes (two digits a byte: 0e, not e)")
+    if len(digits) // 2 > MAX_RAW:
+        raise ValueError(f"raw: {len(digits) // 2} bytes; a raw send writes at most {MAX_RAW}")
+    return bytes.fromhex(digits)
+
+
+def printable(data: bytes) -> str:
+    """Bytes as ASCII, as miniterm's hex view shows them beside the hex: `.` for a byte that is no
+    printable character."""
+    return "".join(chr(b) if 0x20 <= b < 0x7F else "." for b in data)
 
 
 def _parse(text: str | bytes) -> Any:

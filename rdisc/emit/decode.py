@@ -20,67 +20,153 @@ from rdisc.semantics import model as m
 def decode(model: m.Model, device: engine.Device, messages: Sequence[Message]) -> str:
     """Each message and what it is (`device`: the model's plans, whose frames check a message
     whole: its length, fields and checksum)."""
-    checks = {name: _checks(model, device, name) for name in model.primitives}
-    requests = {name: request_layouts(model, p) for name, p in model.primitives.items()}
-    replies = {name: reply_layouts(model, p) for name, p in model.primitives.items()}
-    errors = {name: _error_checks(device, name) for name in model.primitives}
-    written: dict[str | None, bytes] = {}  # the last request on each connection (a checksum may cover it)
-    carried: dict[str | None, _Fields] = {}  # its frame's fields, which its reply must carry too
-    asked: dict[str | None, str] = {}  # the primitive of the last request on each connection
+    teller = Teller(model, device)
     lines: list[str] = []
     for message in messages:
         on = f"{message.connection} " if message.connection is not None else ""
         lines.append(f"{on}{'>' if message.write else '<'} {message.data.hex(' ').upper()}".rstrip())
-        names = [name for name, p in model.primitives.items()
-                 if message.connection is None or p.connection == message.connection]
-        found: list[tuple[str, list[tuple[int, str, str]], str | None]] = []  # name, rows, a reply's regex
-        if message.write:
-            written[message.connection] = message.data
-            found = [(f"request {name}", rows, None) for name in names
-                     if (rows := _first(requests[name], message.data)) is not None
-                     and _whole(checks[name][0], message.data, b"")]
-            found.sort(key=lambda one: not _fixed(checks[one[0].removeprefix("request ")][0]))  # broadcast: *_all
-            if found:
-                name = found[0][0].removeprefix("request ")
-                asked[message.connection] = name
-                carried[message.connection] = _fields_of(checks[name][0], message.data)
-            else:
-                asked.pop(message.connection, None)
-        else:
-            before = asked.get(message.connection)
-            ordered = ([before] if before in names else []) + [name for name in names if name != before]
-            request = written.get(message.connection, b"")
-            found = [(f"{said} of {name}", rows, pattern if isinstance(pattern, str) else None)
-                     for name in ordered for said, (table, pattern) in replies[name]
-                     if (rows := matched((table, pattern), message.data)) is not None
-                     and (_whole(checks[name][1], message.data, request,
-                                 carried.get(message.connection) if name == before else None)
-                          if said != "error" or errors[name] is None else _whole(errors[name] or (), message.data, request))]
-            if found and found[0][0].endswith(f" of {before}"):  # the request's own reply: no other is meant
-                found = found[:1]
-            elif before in names:  # its shape, but not its request's fields (another servo's status)
-                for said, (table, pattern) in replies[before]:
-                    rows = matched((table, pattern), message.data)
-                    if rows is not None and _whole(checks[before][1], message.data, request):
-                        wrong = _misread(checks[before][1], message.data, request, carried.get(message.connection))
-                        found = [(f"{said} of {before}, but {wrong}", rows, None)]
-                        break
+        found = teller.tell(message)
         if not found:
             side = "request" if message.write else "reply"
             lines.append(f"  unknown: no primitive's {side} is these {len(message.data)} bytes")
             continue
-        said, rows, regex = found[0]
-        others = list(dict.fromkeys(other.rsplit(" ", 1)[-1] for other, _, _ in found[1:]))
+        said, rows, regex, data = found[0]
+        others = list(dict.fromkeys(other.rsplit(" ", 1)[-1] for other, _, _, _ in found[1:]))
         also = f" (also fits: {', '.join(others)})" if others else ""
-        lines += [f"  {said}{also}", *held_table(rows, message.data)]
+        lines.append(f"  {said}{also}")
+        if data != message.data:  # unescaped, unstuffed or zero-filled: the table holds what the engine reads
+            lines.append(f"  read as {len(data)} bytes ({_changed(teller, said, message.data, data)}): "
+                         f"{data.hex(' ').upper()}")
+        lines += held_table(rows, data)
         if said.startswith("error of "):
-            lines += _code_named(model, model.primitives[said.removeprefix("error of ").split(",")[0]], rows, message.data)
+            lines += _code_named(model, model.primitives[said.removeprefix("error of ").split(",")[0]], rows, data)
         if regex is not None:  # its groups, as the engine's decoder reads them
             try:
-                lines.append(f"  out = {list(engine.Match(regex).decode(said, message.data))!r}")
+                lines.append(f"  out = {list(engine.Match(regex).decode(said, data))!r}")
             except engine.RdisError:
                 pass
     return "\n".join(lines) + "\n" if lines else ""
+
+
+_Told = tuple[str, list[tuple[int, str, str]], str | None, bytes]
+"""What a message was told to be (`request drive`, `reply of status`), its rows, a reply's regex,
+and its bytes as the engine's reader takes them (unescaped, unstuffed, zero-filled), which the
+rows hold."""
+
+
+class Teller:
+    """Tells messages one at a time, in the order they crossed the wire: a reply is held against
+    the reply tables of the request before it on its connection first (`decode`; the console
+    names the primitive of each line of its byte trace with it)."""
+
+    def __init__(self, model: m.Model, device: engine.Device) -> None:
+        self.model = model
+        self.checks = {name: _checks(model, device, name) for name in model.primitives}
+        self.requests = {name: request_layouts(model, p, as_read=True) for name, p in model.primitives.items()}
+        self.replies = {name: reply_layouts(model, p, as_read=True) for name, p in model.primitives.items()}
+        self.errors = {name: _error_checks(device, name) for name in model.primitives}
+        self.sizes = {name: _sizes(device.primitives[name]) for name in model.primitives}
+        self.written: dict[str | None, bytes] = {}  # the last request on each connection (a checksum may cover it)
+        self.carried: dict[str | None, _Fields] = {}  # its frame's fields, which its reply must carry too
+        self.asked: dict[str | None, str] = {}  # the primitive of the last request on each connection
+
+    def primitive(self, message: Message) -> str | None:
+        """The primitive whose request or reply the message is, if one's is."""
+        found = self.tell(message)
+        return found[0][0].split(",")[0].rsplit(" ", 1)[-1] if found else None
+
+    def tell(self, message: Message) -> list[_Told]:
+        """What the message may be, the likeliest first (none: unknown)."""
+        model, checks, replies = self.model, self.checks, self.replies
+        names = [name for name, p in model.primitives.items()
+                 if message.connection is None or p.connection == message.connection]
+        found: list[_Told] = []
+        if message.write:
+            self.written[message.connection] = message.data
+            for name in names:
+                data = _as_read(checks[name][0], message.data, b"", self.sizes[name][0])
+                rows = _first(self.requests[name], data)
+                if rows is not None and _whole(checks[name][0], message.data, b""):
+                    found.append((f"request {name}", rows, None, data))
+            found.sort(key=lambda one: not _fixed(checks[one[0].removeprefix("request ")][0]))  # broadcast: *_all
+            if found:
+                name = found[0][0].removeprefix("request ")
+                self.asked[message.connection] = name
+                self.carried[message.connection] = _fields_of(checks[name][0], found[0][3])
+            else:
+                self.asked.pop(message.connection, None)
+            return found
+        before = self.asked.get(message.connection)
+        ordered = ([before] if before in names else []) + [name for name in names if name != before]
+        request = self.written.get(message.connection, b"")
+        # the request's frame fields, which its reply carries when it comes in the same frame
+        carried = self.carried.get(message.connection) if before and not model.primitives[before].reply_frames else None
+        for name in ordered:
+            for said, (table, pattern) in replies[name]:
+                frames = checks[name][1] if said != "error" or self.errors[name] is None else self.errors[name] or ()
+                data = _as_read(frames, message.data, request, self.sizes[name][1])
+                rows = matched((table, pattern), data)
+                if rows is not None and _whole(frames, message.data, request,
+                                               carried if name == before and frames is checks[name][1] else None):
+                    found.append((f"{said} of {name}", rows, pattern if isinstance(pattern, str) else None, data))
+        if found and found[0][0].endswith(f" of {before}"):  # the request's own reply: no other is meant
+            return found[:1]
+        if before in names:  # its shape, but not its request's fields (another servo's status)
+            assert before is not None
+            data = _as_read(checks[before][1], message.data, request, self.sizes[before][1])
+            for said, (table, pattern) in replies[before]:
+                rows = matched((table, pattern), data)
+                if rows is not None and _whole(checks[before][1], message.data, request):
+                    wrong = _misread(checks[before][1], message.data, request, carried)
+                    return [(f"{said} of {before}, but {wrong}", rows, None, data)]
+        return found
+
+
+def _sizes(plan: engine.Primitive) -> tuple[int, int]:
+    """The sizes of a request's and a reply's payload as packed and decoded (-1: not fixed): what a
+    trimmed payload is zero-filled to."""
+    encoder = plan.encoder
+    request = (encoder.struct.size if isinstance(encoder, engine.Pack) and not encoder.rest
+               and encoder.varying is None and not encoder.groups else -1)
+    reply = plan.reply.each if isinstance(plan.reply, engine.SeveralReplies) else plan.reply
+    decoder = reply.decoder if isinstance(reply, engine.FramedReply) else None
+    return request, decoder.size if decoder is not None else -1
+
+
+def _as_read(frames: _Check, data: bytes, request: bytes, size: int) -> bytes:
+    """`data` as the engine's reader takes it when its frame escapes, stuffs or trims (`Frame.read`:
+    unescaped, unstuffed, its payload zero-filled to `size`), for the frame's table to hold it;
+    else, or when no frame reads it whole, `data` itself."""
+    for frame, fields in frames:
+        side = frame.reply
+        if (frame.escaping is None and frame.stuffing is None and not frame.fill) or side.group or side.payload < 0:
+            return data
+        port = _Bytes(data)
+        try:
+            raw, payload = frame.read(port, fields, request, size)
+        except (FrameError, engine.RdisError, struct.error, ValueError, IndexError, TypeError):
+            continue
+        if port.at != len(data):
+            continue
+        if frame.escaping is not None:  # the packet between its flags, as `Frame._read_escaped` unescapes it
+            end = len(raw) - len(side.terminator)
+            raw = raw[: len(side.header)] + frame.escaping.unescaped(raw[len(side.header) : end], frame.name) + raw[end:]
+        before = sum(side.sizes[: side.payload])
+        sent = len(raw) - sum(n for i, n in enumerate(side.sizes) if i != side.payload)  # the payload's bytes
+        return raw[:before] + payload + raw[before + sent :]
+    return data
+
+
+def _changed(teller: Teller, said: str, sent: bytes, data: bytes) -> str:
+    """What the engine's reader did to a message: "unescaped", "unstuffed", "zero-filled"."""
+    name = said.split(",")[0].rsplit(" ", 1)[-1]
+    frames = teller.checks[name][0 if said.startswith("request ") else 1] or teller.errors[name] or ()
+    frame = frames[0][0] if frames else None
+    done = [word for word, applies in (("unescaped", frame is not None and frame.escaping is not None),
+                                       ("unstuffed", frame is not None and frame.stuffing is not None),
+                                       ("payload zero-filled", frame is not None and frame.fill))
+            if applies]
+    return ", ".join(done) or "as the engine reads it"
 
 
 def _code_named(model: m.Model, p: m.Primitive, rows: list[tuple[int, str, str]], data: bytes) -> list[str]:
@@ -179,8 +265,12 @@ def _checks(model: m.Model, device: engine.Device, name: str) -> tuple[_Check, _
             fields = frame.values(name, use.args(device.state, [None] * len(p.params)))
         except (engine.RdisError, *engine.EVAL_ERRORS):
             pass
-    requests = tuple((engine.Frame(frame.name, side.parts, side.parts), fields) for side in frame.requests)
+    requests = tuple((engine.Frame(frame.name, side.parts, side.parts, frame.stuffing, escaping=frame.escaping), fields)
+                     for side in frame.requests)
     framed = frame.reply.parts and not p.reply_frames and not p.listed
+    reply = device.primitives[name].reply
+    if isinstance(reply, engine.SeveralReplies) and reply.frames:  # `replies id in ids frame status(id)`: any id
+        return requests, ((reply.frames[0].frame, _Fields()),)
     return requests, ((frame, fields),) if framed else ()
 
 

@@ -417,13 +417,14 @@ Layout = tuple[list[Row], str | tuple[str, ...] | None]
 format's literal pieces (in order, the values between them)."""
 
 
-def request_layouts(model: m.Model, p: m.Primitive) -> list[Layout]:
+def request_layouts(model: m.Model, p: m.Primitive, as_read: bool = False) -> list[Layout]:
     """The byte tables a request of `p` can have (a frame's alternatives); none when it writes
-    nothing, or when its frame stuffs or escapes (its table is not its bytes)."""
+    nothing, or when its frame stuffs or escapes (its table is not its bytes) unless `as_read`
+    (the table held against its bytes as the engine reads them, unescaped and unstuffed)."""
     if p.encoding is None:
         return []
     frame = model.frames[p.frame.frame] if p.frame is not None else None
-    if frame is not None and (frame.stuffing is not None or frame.escaping is not None):
+    if frame is not None and not as_read and (frame.stuffing is not None or frame.escaping is not None):
         return []
     pattern = None
     if isinstance(p.encoding, m.Format):  # a text: its literal pieces, any text for each `{}`
@@ -433,13 +434,13 @@ def request_layouts(model: m.Model, p: m.Primitive) -> list[Layout]:
             for parts in (frame.requests if frame is not None else (None,))]
 
 
-def reply_layouts(model: m.Model, p: m.Primitive) -> list[tuple[str, Layout]]:
+def reply_layouts(model: m.Model, p: m.Primitive, as_read: bool = False) -> list[tuple[str, Layout]]:
     """The byte tables a reply of `p` can have, each with a name (`reply`, `reply when k = 1`,
     `reply 2 of 3`); none for what dump shows as records or sub-payloads, or a stuffed or
-    escaped frame, whose tables are not their bytes."""
+    escaped frame, whose tables are not their bytes (unless `as_read`, as `request_layouts`)."""
     use = p.reply_frames[0] if p.reply_frames else p.frame
     frame = model.frames[use.frame] if use is not None else None
-    if frame is not None and (frame.stuffing is not None or frame.escaping is not None):
+    if frame is not None and not as_read and (frame.stuffing is not None or frame.escaping is not None):
         return []
     sides = frame.replies if frame is not None and frame.reply else (None,)
 

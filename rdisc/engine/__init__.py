@@ -40,7 +40,7 @@ if TYPE_CHECKING:  # at run time each name is imported when it is first asked fo
         RdisTimeout,
         RdisValueError,
     )
-    from rdisc.engine.exchange import Exchange
+    from rdisc.engine.exchange import Exchange, device_error
     from rdisc.engine.frames import Frame, Wrap
     from rdisc.engine.operations import (
         BINARY,
@@ -260,6 +260,7 @@ __all__ = [
     "bind_settings",
     "call_values",
     "command_line",
+    "device_error",
     "element",
     "fits",
     "lookup",

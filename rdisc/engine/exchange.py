@@ -502,16 +502,7 @@ class Exchange:
     @staticmethod
     def _device_error(plan: Primitive, error: ErrorReply, body: bytes) -> RdisDeviceError:
         """The device's error: its bytes decoded, the first value its code, named by the enum."""
-        values = tuple(error.decoder.decode(plan.name, body))
-        code = values[0] if values and type(values[0]) is int else None
-        name = error.names.get(code) if code is not None else None
-        if code is None:
-            said = "an error reply" + (f" {values!r}" if values else "")
-        elif not error.codes:
-            said = f"error {code}"
-        else:
-            said = f"error {code} ({name if name is not None else 'not a member of ' + error.codes})"
-        return RdisDeviceError(f"{plan.name}: the device answered {said}", code, name, values)
+        return device_error(plan, error, tuple(error.decoder.decode(plan.name, body)))
 
     def _in_turn(self, plan: Primitive, turns: list[tuple[Primitive, Reply, FrameUse | None]], link: _Link,
                  reader: Incoming, fields: list[Any], request: bytes, wait: float, local: Args) -> list[_ReplyPart]:
@@ -561,6 +552,11 @@ class Exchange:
         match shape:
             case NoReply():
                 return [(plan, local, ())]
+            case FixedReply(error=error) | FramedReply(error=error) if error is not None:
+                failing = sim.error(plan, local)  # the device's error reply in place of its reply
+                if failing is not None:
+                    raise device_error(plan, error, tuple(failing))
+                return [(plan, local, self._met(plan, local, sim.reply(plan, local, None)))]
             case LineReply() | FixedReply() | FramedReply() | TaggedReply() | TaggedStream():
                 return [(plan, local, self._met(plan, local, sim.reply(plan, local, None)))]
             case SubPayloads() | Records():  # a simulator reports none
@@ -854,6 +850,20 @@ class Exchange:
                     callback(error)
                 except Exception:  # noqa: BLE001, S110 - the contract: an error callback's failure is ignored
                     pass
+
+
+def device_error(plan: Primitive, error: ErrorReply, values: tuple[Any, ...]) -> RdisDeviceError:
+    """The error a device answered instead of `plan`'s reply, as `error` decodes it (`values`): the
+    first value its code, named by the enum (a simulated device's too: `Simulator.reply`)."""
+    code = values[0] if values and type(values[0]) is int else None
+    name = error.names.get(code) if code is not None else None
+    if code is None:
+        said = "an error reply" + (f" {values!r}" if values else "")
+    elif not error.codes:
+        said = f"error {code}"
+    else:
+        said = f"error {code} ({name if name is not None else 'not a member of ' + error.codes})"
+    return RdisDeviceError(f"{plan.name}: the device answered {said}", code, name, values)
 
 
 def _check_widths(plan: Primitive, changes: Mapping[str, Value]) -> None:

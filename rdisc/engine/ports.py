@@ -45,7 +45,8 @@ class Simulator(Protocol):
     over MuJoCo): it takes what the host commands, by primitive and interface with their
     parameters' values (`interface`, `exchange`), and answers each reply a primitive reads with
     its values (`reply`; `place`, the reply's among `replies N` or `replies { }`, None for a
-    primitive's one reply), the reply's shape (`Primitive.reply`) saying which it reads. In
+    primitive's one reply), the reply's shape (`Primitive.reply`) saying which it reads, or, for
+    a primitive with an `error` reply, that reply's values in its place (`error`; None: none). In
     simulated time (`realtime` False) the robot runs no threads: its schedule and delays advance
     the simulation."""
 
@@ -56,6 +57,8 @@ class Simulator(Protocol):
     def exchange(self, plan: Primitive, local: Args, /) -> None: ...
 
     def reply(self, plan: Primitive, local: Args, place: int | None, /) -> Sequence[Any]: ...
+
+    def error(self, plan: Primitive, local: Args, /) -> Sequence[Any] | None: ...
 
     def advance(self, seconds: float, /) -> None: ...
 

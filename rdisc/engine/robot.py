@@ -14,11 +14,11 @@ from collections.abc import Callable, Iterator, Mapping
 from typing import Any
 
 from rdisc.engine.arguments import _accept_param, _accepted, _bind, _widen, bind_settings
-from rdisc.engine.errors import RdisConnectionError, RdisTimeout, RdisValueError
+from rdisc.engine.errors import RdisConnectionError, RdisError, RdisTimeout, RdisValueError
 from rdisc.engine.exchange import Exchange
 from rdisc.engine.operations import EVAL_ERRORS
 from rdisc.engine.plans import Call, Device, Hook, Input, Interface, KeyedReply, Primitive
-from rdisc.engine.ports import PortSpec, Simulator, _Link, _open_port, _Port
+from rdisc.engine.ports import PortSpec, Simulator, _Link, _open_port, _Port, _write_timed_out
 from rdisc.engine.schedule import _Worker
 from rdisc.engine.values import (
     Args,
@@ -30,6 +30,10 @@ from rdisc.engine.values import (
     Value,
     _check_ranges,
 )
+from rdisc.engine.wire import MAX_FRAME
+
+_RAW_QUIET = 0.05  # seconds without a byte that end a raw answer (`Robot.send_raw`)
+_RAW_CHUNK = 256  # bytes asked of the port at a time while a raw answer comes
 
 
 class State(Mapping[str, Value]):
@@ -240,6 +244,63 @@ class Robot(Exchange):
             raise KeyError(f"{self.name} has no primitive named {name!r}")
         plan, values, local = self._planned(plan, _accepted(f"primitive {plan.name}", plan.params, list(args)))
         return self._request(plan, values, local)[0]
+
+    def send_raw(self, connection: str, data: bytes, /, *, quiet: float = _RAW_QUIET) -> bytes:
+        """Write `data` as it is on `connection`'s port and return what the device answers, as a
+        terminal (pyserial's miniterm) shows it: under the port's lock, as a call's request, so no
+        call's bytes come between; input waiting before it is discarded; the answer's first byte
+        waited for up to the robot's timeout, then more until none has come for `quiet` seconds,
+        the whole answer within the timeout and at most MAX_FRAME bytes. b"": no answer. The I/O
+        and trace callbacks see both as a call's bytes."""
+        link = self._links.get(connection)
+        if link is None:
+            if connection not in self.device.connections:
+                raise KeyError(f"{self.name} has no connection named {connection!r}")
+            why = "the device is simulated: there is no port" if self._sim is not None else "not open"
+            raise RdisConnectionError(f"{connection}: {why}")
+        port = link.port
+        io = port.io
+        answer = bytearray()
+        watched = self._watched
+        timeout = io.timeout  # the port's own: the first byte's wait, as a reply's (`Incoming`)
+        port.lock.acquire()
+        try:
+            if self._closed:
+                raise RdisConnectionError(f"{self.name}: raw bytes not sent: the robot is "
+                                          f"{'closing' if self._closer is not None else 'closed'}")
+            io.reset_input_buffer()
+            port.input.clear()
+            if data:
+                io.write(data)
+                if watched:
+                    self._happened("write", connection, data)
+            deadline = time.monotonic() + (self.timeout if timeout is None else timeout)
+            chunk = io.read(1)
+            while chunk:
+                answer += chunk
+                left = deadline - time.monotonic()
+                if left <= 0 or len(answer) >= MAX_FRAME:
+                    break
+                io.timeout = min(quiet, left)
+                chunk = io.read(min(_RAW_CHUNK, MAX_FRAME - len(answer)))
+        except RdisError:
+            raise
+        except Exception as err:  # whatever the port raises, it failed
+            if _write_timed_out(err):
+                raise RdisTimeout(f"{connection}: raw bytes: write not completed within {self.timeout:g} s") from err
+            raise RdisConnectionError(f"{connection}: {err}") from err
+        finally:
+            try:
+                if io.timeout != timeout:
+                    io.timeout = timeout
+            except Exception:  # noqa: BLE001, S110 - a port gone mid-answer: its read's failure is the one to tell
+                pass
+            if answer and watched:
+                self._happened("read", connection, bytes(answer))
+            port.lock.release()
+            if watched:
+                self._show()
+        return bytes(answer)
 
     # ---- lifecycle ----------------------------------------------------------------------------------
 

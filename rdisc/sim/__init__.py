@@ -15,7 +15,10 @@ would answer, comes from the transmissions:
   empty string, a "0" group of a regex).
 
 Then `expect` and the post-actions run on that reply as on a real one, so state,
-outputs and inputs are unchanged. Time is simulated (a fixed timestep, advanced by the
+outputs and inputs are unchanged. A primitive told to fail (`answer_error`, `rdisc sim
+--error P=CODE`) is answered with its declared `error` reply instead, raised as a device's
+is: an RdisDeviceError with the code and its name from the enum, so a driver's error path
+runs without hardware. Time is simulated (a fixed timestep, advanced by the
 robot's schedule and delays: the same run gives the same figures), or the wall clock's
 with `realtime`. MuJoCo is imported when a simulation is made, not before.
 """
@@ -26,6 +29,7 @@ import math
 import os
 import random
 import re
+import struct
 import threading
 import time
 from collections.abc import Callable, Sequence
@@ -134,6 +138,7 @@ class Simulation:
         self._keys = {p.name: [q.name for q in p.params].index(p.table.key)
                       for p in model.primitives.values() if p.table is not None and p.table.key}
         self._listed = {p.name for p in model.primitives.values() if p.listed}  # replies by their place
+        self._errors: dict[str, tuple[Any, ...]] = {}  # the error reply each primitive told to fail answers
         if seed is not None:
             jitter = random.Random(seed)
             for joint in model.joints.values():
@@ -167,6 +172,40 @@ class Simulation:
     def reply(self, plan: engine.Primitive, local: engine.Args, place: int | None) -> Sequence[Any]:
         with self._lock:
             return self._reply(plan, local, place)
+
+    def error(self, plan: engine.Primitive, local: engine.Args) -> Sequence[Any] | None:
+        return self._errors.get(plan.name)  # (`answer_error`)
+
+    def answer_error(self, primitive: str, code: int | str | None) -> None:
+        """Answer every call of `primitive` from now on with its declared `error` reply, the code
+        `code` (an int, or a member of the reply's enum by name: "ILLEGAL_DATA_ADDRESS"), its
+        other values zero; None answers its reply again. A primitive without an `error` reply, or
+        a name its enum lacks, is a ValueError that says so."""
+        p = self.model.primitives.get(primitive)
+        if p is None:
+            raise ValueError(f"{self.model.robot.name} has no primitive named {primitive!r}")
+        if code is None:
+            self._errors.pop(primitive, None)
+            return
+        if p.error is None:
+            raise ValueError(f"{primitive} declares no `error` reply to answer with")
+        if isinstance(code, str):
+            members = self.model.enums.get(p.error.codes or "", {})
+            if code not in members:
+                listed = ", ".join(members) if members else "none: its `error` names no enum, give a number"
+                raise ValueError(f"{primitive}: {code!r} is no code of its error reply (its codes: {listed})")
+            code = members[code]
+        values = list(_zeros(p.error.decoding))
+        if not values or not isinstance(values[0], int):
+            raise ValueError(f"{primitive}: its error reply's first value is no code")
+        layout = p.error.decoding.layout
+        try:
+            struct.pack(layout.order + layout.slots[0].code, code)
+        except struct.error:
+            raise ValueError(f"{primitive}: code {code} does not fit its error reply's first value "
+                             f"({layout.slots[0].code})") from None
+        values[0] = code
+        self._errors[primitive] = tuple(values)
 
     def advance(self, seconds: float) -> None:
         """Step the physics `seconds` further (to the nearest whole timestep)."""

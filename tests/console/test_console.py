@@ -278,3 +278,73 @@ def test_the_page_opens_only_through_the_printed_address(browser, console: Runni
         opened.context.close()
     finally:
         context.close()
+
+
+def _raw(page, hex_text: str) -> None:
+    """Type bytes into the raw terminal and send them; wait until the console answers."""
+    form = page.locator("form[data-rdis-raw]")
+    form.locator('input[name="hex"]').fill(hex_text)
+    form.locator("button[type=submit]").click()
+    playwright_api.expect(form.locator(".result")).not_to_have_text("…", timeout=WAIT_MS)
+
+
+def _sensor_requests(dev: CreateEmulator, packet: int) -> list[bytes]:
+    with dev._cond:
+        return [c for _, c in dev.commands if c == bytes([142, packet])]
+
+
+def test_the_raw_terminal_sends_typed_bytes_and_shows_the_answer(page, console: Running) -> None:
+    """Sensors packet 22 (the voltage, 15000 mV), typed as hex: the device receives exactly those
+    bytes once, and the page shows its two-byte answer in hex and ASCII, as miniterm does."""
+    assert _sensor_requests(console.dev, 22) == []
+    _raw(page, "8e 16")
+    playwright_api.expect(page.locator("form[data-rdis-raw] .result")).to_have_text("done", timeout=WAIT_MS)
+    assert _sensor_requests(console.dev, 22) == [b"\x8e\x16"]
+    log = page.locator("[data-rdis-raw-log] li")
+    assert log.all_inner_texts() == ["btserial > 8e 16..", "btserial < 3a 98:."]
+    assert log.nth(1).locator(".hex").inner_text() == "3a 98" and log.nth(1).locator(".ascii").inner_text() == ":."
+    trace = page.locator("[data-rdis-trace] tbody")  # the trace shows them as it shows a call's bytes
+    playwright_api.expect(trace.locator("tr.write", has_text="8e 16")).to_have_count(1, timeout=WAIT_MS)
+    playwright_api.expect(trace.locator("tr.read", has_text="3a 98")).to_have_count(1, timeout=WAIT_MS)
+
+
+def test_bad_hex_in_the_raw_terminal_is_a_message(page, console: Running) -> None:
+    before = len(console.dev.commands)
+    _raw(page, "8e zz")
+    playwright_api.expect(page.locator("form[data-rdis-raw] .result")).to_have_text(
+        "ValueError: raw: 'z' is not a hex digit (type the bytes as hex: 8e 16)", timeout=WAIT_MS)
+    with console.dev._cond:
+        assert all(c == b"\x8e\x07" for _, c in console.dev.commands[before:])  # only the bumper polls
+    assert page.locator("[data-rdis-raw-log] li").count() == 0
+
+
+def test_the_paused_trace_holds_what_comes_and_shows_it_when_resumed(page, console: Running) -> None:
+    rows = page.locator("[data-rdis-trace] tbody tr")
+    playwright_api.expect(rows.first).to_be_attached(timeout=WAIT_MS)
+    page.locator("[data-rdis-trace-pause]").click()
+    frozen = rows.all_inner_texts()
+    _raw(page, "8e 13")  # the distance, packet 19: 00 00
+    console.dev.wait_until(lambda: bool(_sensor_requests(console.dev, 19)), 30, "the raw request")
+    held = page.locator("[data-rdis-trace-held]")
+    playwright_api.expect(held).not_to_have_text("0 held", timeout=WAIT_MS)
+    assert rows.all_inner_texts() == frozen  # the display is frozen while bytes keep coming
+    page.locator("[data-rdis-trace-pause]").click()
+    playwright_api.expect(held).to_have_text("", timeout=WAIT_MS)
+    playwright_api.expect(page.locator("[data-rdis-trace] tbody tr.write", has_text="8e 13")).to_have_count(
+        1, timeout=WAIT_MS)
+    assert rows.first.inner_text() != frozen[0]
+
+
+def test_the_trace_filtered_by_primitive_shows_only_its_lines(page, console: Running) -> None:
+    _raw(page, "8e 1a")  # the capacity, packet 26: no primitive's request
+    trace = page.locator("[data-rdis-trace] tbody")
+    playwright_api.expect(trace.locator("tr.write", has_text="8e 1a")).to_be_visible(timeout=WAIT_MS)
+    rows = """() => Array.from(document.querySelectorAll('[data-rdis-trace] tbody tr')).map(
+        (row) => [row.hidden, row.className, row.cells[3].textContent, row.cells[4].textContent])"""
+    page.locator("[data-rdis-trace-filter]").select_option("bumpers")
+    filtered = page.evaluate(rows)
+    assert ["write", "8e 1a", ""] in [row[1:] for row in filtered if row[0]]  # hidden
+    shown = {tuple(row[1:]) for row in filtered if not row[0]}
+    assert shown == {("write", "8e 07", "bumpers"), ("read", "00", "bumpers")}  # the bumper polls, not a raw send
+    page.locator("[data-rdis-trace-filter]").select_option("")
+    assert not any(row[0] for row in page.evaluate(rows))

@@ -145,3 +145,52 @@ def test_the_body_message_is_the_simulated_links_frames_and_joints_positions() -
                   "gripper": [0.0, 0.02, 0.585, *unturned]},
         "joints": dict.fromkeys(["waist", "shoulder", "elbow", "wrist_pitch", "wrist_roll", "gripper"], 0.0),
     }
+
+
+class _Answers:
+    """A device that answers every write with the same bytes."""
+
+    def __init__(self, answer: bytes) -> None:
+        self.answer_bytes = answer
+
+    def answer(self, request: bytes) -> bytes:
+        return self.answer_bytes
+
+    def listen(self) -> bytes:
+        return b""
+
+
+def test_a_raw_send_writes_the_typed_bytes_and_answers_with_the_device_s(console) -> None:
+    robot_console, port, events = console
+    port.device = _Answers(b"\x3a\x98OK\n")
+    sent = robot_console.call(json.dumps({"id": 4, "kind": "raw", "connection": "link", "hex": "8E 16, 0x41 42"}))
+    assert sent == {"type": "result", "id": 4, "ok": True, "sent": "8e 16 41 42", "sent_text": "..AB",
+                    "answer": "3a 98 4f 4b 0a", "text": ":.OK."}
+    assert port.writes == [b"\x8e\x16\x41\x42"]
+    assert [(e["direction"], e["data"]) for e in events if e["type"] == "io"] == [
+        ("write", "8e 16 41 42"), ("read", "3a 98 4f 4b 0a")]
+    # the only connection need not be named; no answer is an empty one
+    port.device = None
+    assert robot_console.call(json.dumps({"id": 5, "kind": "raw", "hex": "01"}))["answer"] == ""
+
+
+@pytest.mark.parametrize(("given", "error", "message"), [
+    ("8e zz", "ValueError", "raw: 'z' is not a hex digit (type the bytes as hex: 8e 16)"),
+    ("8e 1", "ValueError", "raw: 3 hex digits are not whole bytes (two digits a byte: 0e, not e)"),
+    ("  ", "ValueError", "raw: no bytes given (type them as hex: 8e 16)"),
+    ("00" * 4097, "ValueError", "raw: 4097 bytes; a raw send writes at most 4096"),
+    (7, "TypeError", "raw: the bytes are given as hex text"),
+])
+def test_bad_hex_is_a_message_and_nothing_is_written(console, given, error, message) -> None:
+    robot_console, port, events = console
+    assert robot_console.call(json.dumps({"id": 6, "kind": "raw", "connection": "link", "hex": given})) == {
+        "type": "result", "id": 6, "ok": False, "error": error, "message": message}
+    assert bytes(port.written) == b""
+    assert [(e["error"], e["message"]) for e in events if e["type"] == "error"] == [(error, message)]
+
+
+def test_a_raw_send_on_no_such_connection_is_refused(console) -> None:
+    robot_console, port, _ = console
+    assert robot_console.call(json.dumps({"id": 8, "kind": "raw", "connection": "elsewhere", "hex": "01"})) == {
+        "type": "result", "id": 8, "ok": False, "error": "KeyError", "message": "t has no connection named 'elsewhere'"}
+    assert bytes(port.written) == b""

@@ -86,6 +86,43 @@ function answered(message) {
   const result = form.querySelector(".result");
   result.textContent = message.ok ? "done" : message.error + ": " + message.message;
   result.className = "result " + (message.ok ? "done" : "failed");
+  if (message.ok && form.hasAttribute("data-rdis-raw")) showRaw(form, message);
+}
+
+// ---- the raw terminal: bytes typed as hex, sent as they are; the device's answer as it came ---------
+
+const rawForm = document.querySelector("form[data-rdis-raw]");
+if (rawForm) {
+  rawForm.addEventListener("submit", (ev) => {
+    ev.preventDefault();
+    const result = rawForm.querySelector(".result");
+    if (!socket || socket.readyState !== WebSocket.OPEN) {
+      result.textContent = "not connected";
+      result.className = "result failed";
+      return;
+    }
+    const id = nextId++;
+    pending.set(id, rawForm);
+    result.textContent = "…";
+    result.className = "result";
+    const connection = rawForm.querySelector("select[name=connection]").value;
+    socket.send(JSON.stringify({ id, kind: "raw", connection, hex: rawForm.querySelector("input[name=hex]").value }));
+  });
+}
+
+// One line a way: `> 8e 16  |..|` what was written, `< 3a 98  |:.|` what came back (or that nothing did).
+function showRaw(form, message) {
+  const log = document.querySelector("[data-rdis-raw-log]");
+  const connection = form.querySelector("select[name=connection]").value;
+  const line = (direction, hex, text) => {
+    const item = element("li", undefined, direction);
+    item.append(element("span", connection + " " + (direction === "write" ? ">" : "<") + " ", "type"),
+                element("span", hex, "hex"), element("span", text, "ascii"));
+    log.append(item);
+  };
+  line("write", message.sent, message.sent_text);
+  if (message.answer) line("read", message.answer, message.text);
+  else log.append(element("li", "no answer", "note"));
 }
 
 // ---- what the server pushes ------------------------------------------------------------------------
@@ -169,15 +206,53 @@ function showError(message) {
   list.prepend(item);
 }
 
+// The byte trace: paused, the lines that come are held (the console records them all the same) and
+// shown when it is resumed; filtered, only the lines of one primitive's requests and replies show.
+const tracePause = document.querySelector("[data-rdis-trace-pause]");
+const traceHeld = document.querySelector("[data-rdis-trace-held]");
+const traceFilter = document.querySelector("[data-rdis-trace-filter]");
+let held = null;  // while paused: the lines that came, in order
+
 function showIo(message) {
+  if (held) {
+    held.push(message);
+    if (held.length > TRACE_ROWS) held.shift();
+    traceHeld.textContent = `${held.length} held`;
+    return;
+  }
   const body = document.querySelector("[data-rdis-trace] tbody");
   const row = element("tr", undefined, message.direction);
   const arrow = { write: ">", read: "<", lines: "lines" }[message.direction];
   row.append(element("td", message.t.toFixed(3)), element("td", message.connection),
-             element("td", arrow), element("td", message.data, "hex"));
+             element("td", arrow), element("td", message.data, "hex"), element("td", message.primitive || "", "type"));
   row.title = `${message.connection} ${arrow} ${message.data}`;  // as rdisc run --trace prints it
+  row.dataset.primitive = message.primitive || "";
+  row.hidden = !shownBy(row);
   body.prepend(row);
   while (body.rows.length > TRACE_ROWS) body.deleteRow(-1);
+}
+
+function shownBy(row) {
+  return !traceFilter || !traceFilter.value || row.dataset.primitive === traceFilter.value;
+}
+
+if (tracePause) {
+  tracePause.addEventListener("click", () => {
+    if (held) {
+      const waiting = held;
+      held = null;
+      traceHeld.textContent = "";
+      tracePause.textContent = "Pause";
+      waiting.forEach(showIo);
+    } else {
+      held = [];
+      traceHeld.textContent = "0 held";
+      tracePause.textContent = "Resume";
+    }
+  });
+  traceFilter.addEventListener("change", () => {
+    for (const row of document.querySelectorAll("[data-rdis-trace] tbody tr")) row.hidden = !shownBy(row);
+  });
 }
 
 // ---- the simulated body: a top (x-y) and a side (x-z) view of the pushed link frames ----------------

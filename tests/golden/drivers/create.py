@@ -2459,7 +2459,8 @@ class Simulator(Protocol):
     over MuJoCo): it takes what the host commands, by primitive and interface with their
     parameters' values (`interface`, `exchange`), and answers each reply a primitive reads with
     its values (`reply`; `place`, the reply's among `replies N` or `replies { }`, None for a
-    primitive's one reply), the reply's shape (`Primitive.reply`) saying which it reads. In
+    primitive's one reply), the reply's shape (`Primitive.reply`) saying which it reads, or, for
+    a primitive with an `error` reply, that reply's values in its place (`error`; None: none). In
     simulated time (`realtime` False) the robot runs no threads: its schedule and delays advance
     the simulation."""
 
@@ -2470,6 +2471,8 @@ class Simulator(Protocol):
     def exchange(self, plan: Primitive, local: Args, /) -> None: ...
 
     def reply(self, plan: Primitive, local: Args, place: int | None, /) -> Sequence[Any]: ...
+
+    def error(self, plan: Primitive, local: Args, /) -> Sequence[Any] | None: ...
 
     def advance(self, seconds: float, /) -> None: ...
 
@@ -3085,16 +3088,7 @@ class Exchange:
     @staticmethod
     def _device_error(plan: Primitive, error: ErrorReply, body: bytes) -> RdisDeviceError:
         """The device's error: its bytes decoded, the first value its code, named by the enum."""
-        values = tuple(error.decoder.decode(plan.name, body))
-        code = values[0] if values and type(values[0]) is int else None
-        name = error.names.get(code) if code is not None else None
-        if code is None:
-            said = "an error reply" + (f" {values!r}" if values else "")
-        elif not error.codes:
-            said = f"error {code}"
-        else:
-            said = f"error {code} ({name if name is not None else 'not a member of ' + error.codes})"
-        return RdisDeviceError(f"{plan.name}: the device answered {said}", code, name, values)
+        return device_error(plan, error, tuple(error.decoder.decode(plan.name, body)))
 
     def _in_turn(self, plan: Primitive, turns: list[tuple[Primitive, Reply, FrameUse | None]], link: _Link,
                  reader: Incoming, fields: list[Any], request: bytes, wait: float, local: Args) -> list[_ReplyPart]:
@@ -3144,6 +3138,11 @@ class Exchange:
         match shape:
             case NoReply():
                 return [(plan, local, ())]
+            case FixedReply(error=error) | FramedReply(error=error) if error is not None:
+                failing = sim.error(plan, local)  # the device's error reply in place of its reply
+                if failing is not None:
+                    raise device_error(plan, error, tuple(failing))
+                return [(plan, local, self._met(plan, local, sim.reply(plan, local, None)))]
             case LineReply() | FixedReply() | FramedReply() | TaggedReply() | TaggedStream():
                 return [(plan, local, self._met(plan, local, sim.reply(plan, local, None)))]
             case SubPayloads() | Records():  # a simulator reports none
@@ -3439,6 +3438,20 @@ class Exchange:
                     pass
 
 
+def device_error(plan: Primitive, error: ErrorReply, values: tuple[Any, ...]) -> RdisDeviceError:
+    """The error a device answered instead of `plan`'s reply, as `error` decodes it (`values`): the
+    first value its code, named by the enum (a simulated device's too: `Simulator.reply`)."""
+    code = values[0] if values and type(values[0]) is int else None
+    name = error.names.get(code) if code is not None else None
+    if code is None:
+        said = "an error reply" + (f" {values!r}" if values else "")
+    elif not error.codes:
+        said = f"error {code}"
+    else:
+        said = f"error {code} ({name if name is not None else 'not a member of ' + error.codes})"
+    return RdisDeviceError(f"{plan.name}: the device answered {said}", code, name, values)
+
+
 def _check_widths(plan: Primitive, changes: Mapping[str, Value]) -> None:
     """The post-actions' values that may be too wide (`Primitive.checked`) held to 64 bits and a sign."""
     for name in plan.checked:
@@ -3468,6 +3481,10 @@ def _ms(level: Value) -> str:
 
 
 # ---- rdisc engine: robot (rdisc/engine/robot.py), lifecycle and public face ----------------------
+
+
+_RAW_QUIET = 0.05  # seconds without a byte that end a raw answer (`Robot.send_raw`)
+_RAW_CHUNK = 256  # bytes asked of the port at a time while a raw answer comes
 
 
 class State(Mapping[str, Value]):
@@ -3678,6 +3695,63 @@ class Robot(Exchange):
             raise KeyError(f"{self.name} has no primitive named {name!r}")
         plan, values, local = self._planned(plan, _accepted(f"primitive {plan.name}", plan.params, list(args)))
         return self._request(plan, values, local)[0]
+
+    def send_raw(self, connection: str, data: bytes, /, *, quiet: float = _RAW_QUIET) -> bytes:
+        """Write `data` as it is on `connection`'s port and return what the device answers, as a
+        terminal (pyserial's miniterm) shows it: under the port's lock, as a call's request, so no
+        call's bytes come between; input waiting before it is discarded; the answer's first byte
+        waited for up to the robot's timeout, then more until none has come for `quiet` seconds,
+        the whole answer within the timeout and at most MAX_FRAME bytes. b"": no answer. The I/O
+        and trace callbacks see both as a call's bytes."""
+        link = self._links.get(connection)
+        if link is None:
+            if connection not in self.device.connections:
+                raise KeyError(f"{self.name} has no connection named {connection!r}")
+            why = "the device is simulated: there is no port" if self._sim is not None else "not open"
+            raise RdisConnectionError(f"{connection}: {why}")
+        port = link.port
+        io = port.io
+        answer = bytearray()
+        watched = self._watched
+        timeout = io.timeout  # the port's own: the first byte's wait, as a reply's (`Incoming`)
+        port.lock.acquire()
+        try:
+            if self._closed:
+                raise RdisConnectionError(f"{self.name}: raw bytes not sent: the robot is "
+                                          f"{'closing' if self._closer is not None else 'closed'}")
+            io.reset_input_buffer()
+            port.input.clear()
+            if data:
+                io.write(data)
+                if watched:
+                    self._happened("write", connection, data)
+            deadline = time.monotonic() + (self.timeout if timeout is None else timeout)
+            chunk = io.read(1)
+            while chunk:
+                answer += chunk
+                left = deadline - time.monotonic()
+                if left <= 0 or len(answer) >= MAX_FRAME:
+                    break
+                io.timeout = min(quiet, left)
+                chunk = io.read(min(_RAW_CHUNK, MAX_FRAME - len(answer)))
+        except RdisError:
+            raise
+        except Exception as err:  # whatever the port raises, it failed
+            if _write_timed_out(err):
+                raise RdisTimeout(f"{connection}: raw bytes: write not completed within {self.timeout:g} s") from err
+            raise RdisConnectionError(f"{connection}: {err}") from err
+        finally:
+            try:
+                if io.timeout != timeout:
+                    io.timeout = timeout
+            except Exception:  # noqa: BLE001, S110 - a port gone mid-answer: its read's failure is the one to tell
+                pass
+            if answer and watched:
+                self._happened("read", connection, bytes(answer))
+            port.lock.release()
+            if watched:
+                self._show()
+        return bytes(answer)
 
     # ---- lifecycle ----------------------------------------------------------------------------------
 
