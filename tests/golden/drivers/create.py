@@ -1864,11 +1864,14 @@ class KeyedReply:
 class SeveralReplies:
     """`replies N`: `count` replies to one request, each read as `each`, through its own frame
     where `frames` gives one (else the primitive's); their values collected value by value into
-    arrays for the primitive's post-actions."""
+    arrays for the primitive's post-actions. `replies id in ids` over an array parameter (at
+    position `over`): a reply for each of its elements, through the one frame of `frames`,
+    whose arguments read the element after the parameters."""
 
     count: int
     each: Reply
     frames: tuple[FrameUse, ...] = ()
+    over: int = -1
 
 
 @dataclass(frozen=True, slots=True)
@@ -2908,7 +2911,12 @@ class Exchange:
 
     def _request(self, plan: Primitive, values: Args,
                  local: Args) -> tuple[bytes, list[Any], dict[str, Value] | None]:
-        """The request encoded and framed, the frame's fields, and the modem lines' levels."""
+        """The request encoded and framed, the frame's fields, and the modem lines' levels. A
+        reply for each element of an empty array is none to read: refused before anything is written."""
+        shape = plan.reply
+        if type(shape) is SeveralReplies and shape.over >= 0 and not local[shape.over]:
+            raise RdisValueError(f"{plan.name}: parameter {plan.params[shape.over].name} is empty: "
+                                 "a reply for each of its elements is none to read")
         request = plan.encoder.encode(plan.name, values) if plan.encoder is not None else b""
         use = plan.frame
         fields: list[Any] = []
@@ -2981,13 +2989,18 @@ class Exchange:
             case Records(skip=skip):
                 return self._framed(plan, use, reader, fields, request, wait, skip, -1,
                                     lambda payload: self._records(plan, shape, payload, local))
-            case SeveralReplies(count=count, each=each, frames=frames):  # value i of them all, as one array
-                turns = [(plan, each, frames[n] if frames else use) for n in range(count)]
+            case SeveralReplies(count=count, each=each, frames=frames, over=over):  # value i of them all, as one array
+                turns: list[tuple[Primitive, Reply, FrameUse | None, Args]]
+                if over >= 0:  # a reply for each element, its frame's arguments reading it after the parameters
+                    given = local[: len(plan.params)]
+                    turns = [(plan, each, frames[0], [*given, element]) for element in local[over]]
+                else:
+                    turns = [(plan, each, frames[n] if frames else use, local) for n in range(count)]
                 got = self._in_turn(plan, turns, link, reader, fields, request, wait, local)
                 return [(plan, local, tuple(zip(*(values for _, _, values in got))))]
             case ListedReplies(answers=answers):
-                turns = [(answer, answer.reply, answer.frame) for answer in answers]
-                return self._in_turn(plan, turns, link, reader, fields, request, wait, local)
+                listed = [(answer, answer.reply, answer.frame, local) for answer in answers]
+                return self._in_turn(plan, listed, link, reader, fields, request, wait, local)
             case KeyedReply():  # `Robot._primitive_in_full` runs the entry its key chooses
                 raise AssertionError(f"{plan.name}: a reply table's entry is chosen before the exchange")
             case _:
@@ -3096,17 +3109,18 @@ class Exchange:
             said = f"error {code} ({name if name is not None else 'not a member of ' + error.codes})"
         return RdisDeviceError(f"{plan.name}: the device answered {said}", code, name, values)
 
-    def _in_turn(self, plan: Primitive, turns: list[tuple[Primitive, Reply, FrameUse | None]], link: _Link,
+    def _in_turn(self, plan: Primitive, turns: list[tuple[Primitive, Reply, FrameUse | None, Args]], link: _Link,
                  reader: Incoming, fields: list[Any], request: bytes, wait: float, local: Args) -> list[_ReplyPart]:
         """`replies N` and `replies { }`: a reply for each turn, read in turn as one is (each as
         its plan and shape say, meeting its `expect`; through its own frame, with its own field
-        values, where it has one), all within the one deadline, in the order they came."""
+        values over the turn's arguments, where it has one), all within the one deadline, in the
+        order they came."""
         got: list[_ReplyPart] = []
         count = len(turns)
-        for n, (own, shape, use) in enumerate(turns):
+        for n, (own, shape, use, framed) in enumerate(turns):
             if use is not None and use is not plan.frame:
                 try:
-                    fields = use.frame.values(plan.name, use.args(self._state, local))
+                    fields = use.frame.values(plan.name, use.args(self._state, framed))
                 except (struct.error, *EVAL_ERRORS) as err:
                     raise RdisValueError(f"{plan.name}: {err}") from None
             try:
@@ -3148,7 +3162,8 @@ class Exchange:
                 return [(plan, local, self._met(plan, local, sim.reply(plan, local, None)))]
             case SubPayloads() | Records():  # a simulator reports none
                 return []
-            case SeveralReplies(count=count):
+            case SeveralReplies(count=count, over=over):
+                count = len(local[over]) if over >= 0 else count
                 replies = [self._met(plan, local, sim.reply(plan, local, n)) for n in range(count)]
                 return [(plan, local, tuple(zip(*replies)))]
             case ListedReplies(answers=answers):
