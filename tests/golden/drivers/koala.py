@@ -3202,10 +3202,10 @@ class Exchange:
             pass  # raised as the reply is stored
         return None
 
-    @staticmethod
-    def _tagged(plan: Primitive, shape: TaggedReply, payload: bytes, local: Args) -> _ReplyPart:
+    def _tagged(self, plan: Primitive, shape: TaggedReply, payload: bytes, local: Args) -> _ReplyPart:
         """The entry a framed reply's tag chooses, the tag after the parameters' values, and
-        the rest of the payload decoded by the entry."""
+        the rest of the payload decoded by the entry; one whose post-actions look up a key their
+        table lacks is a reply this primitive cannot read (`skip unmatched` reads past it)."""
         tag = shape.tag_struct
         if len(payload) < tag.size:
             raise RdisProtocolError(f"{plan.name}: expected {tag.size} bytes or more, got {len(payload)}")
@@ -3214,7 +3214,10 @@ class Exchange:
         if case is None:
             raise RdisProtocolError(f"{plan.name}: no reply entry for tag {value}")
         decoder = _entry_decoder(case)
-        return case, [*local, value], decoder.decode(plan.name, payload[tag.size :]) if decoder is not None else ()
+        decoded = decoder.decode(plan.name, payload[tag.size :]) if decoder is not None else ()
+        if case.looks_up and (miss := self._missed_lookup(case, [*local, value], decoded)) is not None:
+            raise RdisProtocolError(miss)
+        return case, [*local, value], decoded
 
     def _records(self, plan: Primitive, shape: Records, payload: bytes, local: Args) -> list[_ReplyPart]:
         """A payload of records, each ended by the marker where it first comes (Firmata's capability
@@ -3239,14 +3242,15 @@ class Exchange:
             at = end + len(marker)
         return parts
 
-    @staticmethod
-    def _sub_payloads(plan: Primitive, shape: SubPayloads, payload: bytes, local: Args) -> list[_ReplyPart]:
+    def _sub_payloads(self, plan: Primitive, shape: SubPayloads, payload: bytes, local: Args) -> list[_ReplyPart]:
         """A payload of sub-payloads (Kobuki's feedback), in any order and any subset, until it
         ends: each its tag, its length when the table gives one, and its bytes, decoded by the
         entry the tag chooses (its plan, the tag after the parameters' values, its values). With
         a length, a tag without an entry is skipped (a newer firmware's) and a length that is
         not its entry's size refused; without one, the entry's size says where the next starts.
-        All are decoded before any post-action runs, so a bad one changes no state."""
+        All are decoded before any post-action runs, so a bad one changes no state; one whose
+        post-actions look up a key their table lacks makes the reply one this primitive cannot
+        read (`skip unmatched` reads past it)."""
         tag = shape.tag_struct
         size = shape.length_struct
         head = tag.size + (size.size if size is not None else 0)
@@ -3276,7 +3280,10 @@ class Exchange:
             if size is not None and decoder.size >= 0 and length != decoder.size:
                 raise RdisProtocolError(f"{plan.name}: the sub-payload of tag {value} at offset {start - head} "
                                         f"is {length} bytes; its entry decodes {decoder.size}")
-            parts.append((case, [*local, value], decoder.decode(plan.name, payload[start:at])))
+            decoded = decoder.decode(plan.name, payload[start:at])
+            if case.looks_up and (miss := self._missed_lookup(case, [*local, value], decoded)) is not None:
+                raise RdisProtocolError(miss)
+            parts.append((case, [*local, value], decoded))
         return parts
 
     def _read_tagged(self, plan: Primitive, shape: TaggedStream, reader: Incoming, wait: float,
