@@ -333,10 +333,11 @@ Right: `const MASK = (1 << 64) - 1`."""),
     # -- frames ----------------------------------------------------------------
     ("E501", "frame-structure", """
 A frame is a sequence of parts: `header`, `literal` and `terminator` bytes,
-`field`s, one `length`, one `payload` and `checksum`s, either one sequence for
-both directions or a `request { }` and a `reply { }`. A request frame has exactly
-one payload, a header comes first and a terminator last, and constant bytes are
-1 to 64 bytes (characters up to \\xff)."""),
+`field`s, one `length` (or two: a packet's length and its sub-payload's, each
+stating the payload with its own adjustment, neither in a `bits`), one `payload`
+and `checksum`s, either one sequence for both directions or a `request { }` and a
+`reply { }`. A request frame has exactly one payload, a header comes first and a
+terminator last, and constant bytes are 1 to 64 bytes (characters up to \\xff)."""),
     ("E502", "checksum", """
 A checksum names its algorithm: "sum", "xor", "lrc" (the two's complement of the
 sum, Modbus ASCII's), "fletcher8" (UBX's CK_A, CK_B: 16 bits, CK_A the low byte),
