@@ -336,7 +336,7 @@ _CONNECTION = (
 _PRIMITIVE = (
     "name", "parameters", "parameterTypes", "parameterRanges", "parameterDefaults", "parameterUnits", "connection",
     "lines", "pack", "format", "formatArgs", "unpack", "regex", "recordsUntil", "frame", "skipUnmatched",
-    "replyTable", "timeout", "retry", "replies", "replyFrames", "replyList", "error", "expect", "postActions", "doc",
+    "replyTable", "timeout", "retry", "replies", "repliesEach", "replyFrames", "replyList", "error", "expect", "postActions", "doc",
 )  # fmt: skip
 _FRAME = ("name", "parameters", "parameterTypes", "parameterRanges", "parameterDefaults", "parameterUnits",
           "request", "reply", "moreRequests", "moreReplies",
@@ -927,7 +927,11 @@ class _Importer:
             count = self.expr(m["retry"], "int")
             if count is not None:
                 clauses.append(ast.Retry(count, count.span))
-        if "replyFrames" in m:
+        if "repliesEach" in m:
+            each = self.replies_each(m["repliesEach"], m.get("replyFrames"))
+            if each is not None:
+                clauses.append(each)
+        elif "replyFrames" in m:
             given = m.get("parameters")
             each = self.reply_frames(m["replyFrames"], {item.value for item in given.items if isinstance(item, JString)}
                                      if isinstance(given, JArray) else set())
@@ -1329,6 +1333,23 @@ class _Importer:
                 return ast.ArrayLit(built, span) if len(built) == len(values) else None
         self.error(v.span, f"expected an expression (a number, true/false, a string or an array), found {_kind(v)}")
         return None
+
+    def replies_each(self, v: JValue, frames: JValue | None) -> ast.Replies | None:
+        """`"repliesEach": {"variable": "id", "over": "ids"}` with its one reply frame in
+        `"replyFrames"`, its arguments reading the variable: `replies id in ids frame status(id)`."""
+        obj = self.object(v, "`repliesEach`")
+        if obj is None:
+            return None
+        given = self.members(obj, "`repliesEach`", ("variable", "over"))
+        var, over = (self.required(obj, given, key, "`repliesEach`", self.ident) for key in ("variable", "over"))
+        listed = self.array(frames, "`replyFrames`") if frames is not None else []
+        if len(listed) != 1:
+            self.error(obj.span, "`repliesEach` reads every reply through one frame: `replyFrames` lists it alone")
+            return None
+        framed = self.framed(listed[0])
+        if var is None or over is None or framed is None:
+            return None
+        return ast.Replies(ast.Ref(over.text, over.span), obj.span, var, None, framed)
 
     def reply_frames(self, v: JValue, params: set[str]) -> ast.Replies | None:
         """`"replyFrames"`, each reply's frame written out, as `replies reply in 0..N-1 frame

@@ -230,6 +230,7 @@ class SeveralReplies:
     count: int
     each: Reply
     frames: tuple[FrameUse, ...] = ()
+    over: int = -1  # `replies id in ids`: the array parameter's position, a reply for each element
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -418,8 +419,7 @@ class _Lowering:
             return dataclasses.replace(plain, reply=KeyedReply(key, table))
         frames = self.reply_frames(p)
         tagged = _tagged(p.table, frames[0] if frames else plain.frame, p.skip_unmatched, table)
-        return dataclasses.replace(plain, reply=SeveralReplies(len(frames) or p.replies, tagged, frames)
-                                   if p.replies else tagged)
+        return dataclasses.replace(plain, reply=self.several(p, tagged) if p.replies else tagged)
 
     def single(self, p: m.Primitive, local: tuple[m.Parameter, ...]) -> Primitive:
         """The plan of a primitive without a reply table, its listed replies each its own plan;
@@ -469,8 +469,7 @@ class _Lowering:
         decoder = decoding(p.decoding)
         if p.replies:
             frames = self.reply_frames(p)
-            each = _one(decoder, frames[0] if frames else use, p.skip_unmatched, p.records)
-            return SeveralReplies(len(frames) or p.replies, each, frames)
+            return self.several(p, _one(decoder, frames[0] if frames else use, p.skip_unmatched, p.records))
         error = None if p.error is None else self.error(p.error, p.params)
         if decoder is not None:
             return _one(decoder, use, p.skip_unmatched, p.records, error)
@@ -485,10 +484,21 @@ class _Lowering:
         names = {} if e.codes is None else {value: member for member, value in self.model.enums[e.codes].items()}
         return ErrorReply(decoder, e.marker.encode("latin-1"), self.frame_use(e.frame, params), e.codes or "", names)
 
+    def several(self, p: m.Primitive, each: Reply) -> SeveralReplies:
+        """`replies N`, each reply read as `each`: N of them, or one for each element of an
+        array parameter (`replies id in ids`)."""
+        frames = self.reply_frames(p)
+        if p.each is None:
+            return SeveralReplies(len(frames) or p.replies, each, frames)
+        over = next(i for i, prm in enumerate(p.params) if prm.name == p.each.over)
+        return SeveralReplies(0, each, frames, over)
+
     def reply_frames(self, p: m.Primitive) -> tuple[FrameUse, ...]:
-        """`replies N`'s own frames, made once a primitive (its table's entries share them)."""
+        """`replies N`'s own frames, made once a primitive (its table's entries share them); over
+        an array parameter, the one frame whose arguments read the element after the parameters."""
         if p.name not in self.own_frames:
-            self.own_frames[p.name] = tuple(FrameUse(self.frames[use.frame], _values(p.params, use.args))
+            local = p.params if p.each is None else p.each.local(p.params)
+            self.own_frames[p.name] = tuple(FrameUse(self.frames[use.frame], _values(local, use.args))
                                             for use in p.reply_frames)
         return self.own_frames[p.name]
 

@@ -228,8 +228,11 @@ interface's loops write out at most 4096 of them (65536 for all interfaces).
 Wrong: `interface all(n: int) { for i in 0..n { torque(i, True) } }`. Right:
 `const IDS = [1, 2, 3]` with `interface all() { for id in IDS { torque(id, True) } }`,
 or `interface move(p: int[3]) { for i in 0..2 { goal(IDS[i], p[i]) } }`. A
-primitive's `replies id in IDS frame status(id)` goes over the same: a constant
-array or a range of constant ints, a reply a value."""),
+primitive's `replies id in IDS frame status(id)` goes over the same, a reply a
+value, or over an array parameter of the primitive, a reply an element, as many as
+the caller gives (`primitive read(ids: int[]) ... replies id in ids frame
+status(id)`); not over a state array, known only when it runs: pass it as a
+parameter."""),
     ("E213", "connect-setting", """
 A `setting` is a value given when connecting (`rdisc run --set BAUD=1000000`, a
 driver's `connect(port, BAUD=1000000)`, a ROS node's `_BAUD:=1000000`), such as a
@@ -336,10 +339,11 @@ Right: `const MASK = (1 << 64) - 1`."""),
     # -- frames ----------------------------------------------------------------
     ("E501", "frame-structure", """
 A frame is a sequence of parts: `header`, `literal` and `terminator` bytes,
-`field`s, one `length`, one `payload` and `checksum`s, either one sequence for
-both directions or a `request { }` and a `reply { }`. A request frame has exactly
-one payload, a header comes first and a terminator last, and constant bytes are
-1 to 64 bytes (characters up to \\xff)."""),
+`field`s, one `length` (or two: a packet's length and its sub-payload's, each
+stating the payload with its own adjustment, neither in a `bits`), one `payload`
+and `checksum`s, either one sequence for both directions or a `request { }` and a
+`reply { }`. A request frame has exactly one payload, a header comes first and a
+terminator last, and constant bytes are 1 to 64 bytes (characters up to \\xff)."""),
     ("E502", "checksum", """
 A checksum names its algorithm: "sum", "xor", "lrc" (the two's complement of the
 sum, Modbus ASCII's), "fletcher8" (UBX's CK_A, CK_B: 16 bits, CK_A the low byte),

@@ -171,7 +171,8 @@ def _primitive(x: m.Primitive) -> JsonObject:
         ("skipUnmatched", x.skip_unmatched or None),
         ("timeout", None if x.timeout_ms is None else _number(x.timeout_ms)),
         ("retry", x.retries or None),
-        ("replies", x.replies or None),
+        ("replies", None if x.each is not None else x.replies or None),
+        ("repliesEach", None if x.each is None else {"variable": x.each.var, "over": x.each.over}),
         ("replyFrames", [{"name": use.frame, "arguments": [_embedded(a) for a in use.args]}
                          for use in x.reply_frames] or None),
         ("expect", None if x.expect is None else _embedded(x.expect)),

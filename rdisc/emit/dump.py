@@ -85,6 +85,9 @@ def _primitive(model: m.Model, p: m.Primitive) -> str:
         if p.records is not None:  # one record; the frame is shown around it
             rows.append((len(p.records), "record end", _hex(p.records.encode("latin-1"))))
         said = f"{p.replies} replies{through}, each" if p.replies else "reply"
+        if p.each is not None:  # one frame, its arguments reading each element
+            sized = "a reply" if not p.each.array(p.params).size else f"{p.replies} replies, one"
+            said = f"{sized} for each of {p.each.over}, frame {uses[0]}, each"
         lines += _sides("reply: records, each" if p.records is not None else said, framed, rows)
         if p.error is not None:
             name, sides, rows = _error_layout(model, p, p.error)

@@ -325,7 +325,12 @@ class Exchange:
 
     def _request(self, plan: Primitive, values: Args,
                  local: Args) -> tuple[bytes, list[Any], dict[str, Value] | None]:
-        """The request encoded and framed, the frame's fields, and the modem lines' levels."""
+        """The request encoded and framed, the frame's fields, and the modem lines' levels. A
+        reply for each element of an empty array is none to read: refused before anything is written."""
+        shape = plan.reply
+        if type(shape) is SeveralReplies and shape.over >= 0 and not local[shape.over]:
+            raise RdisValueError(f"{plan.name}: parameter {plan.params[shape.over].name} is empty: "
+                                 "a reply for each of its elements is none to read")
         request = plan.encoder.encode(plan.name, values) if plan.encoder is not None else b""
         use = plan.frame
         fields: list[Any] = []
@@ -398,13 +403,18 @@ class Exchange:
             case Records(skip=skip):
                 return self._framed(plan, use, reader, fields, request, wait, skip, -1,
                                     lambda payload: self._records(plan, shape, payload, local))
-            case SeveralReplies(count=count, each=each, frames=frames):  # value i of them all, as one array
-                turns = [(plan, each, frames[n] if frames else use) for n in range(count)]
+            case SeveralReplies(count=count, each=each, frames=frames, over=over):  # value i of them all, as one array
+                turns: list[tuple[Primitive, Reply, FrameUse | None, Args]]
+                if over >= 0:  # a reply for each element, its frame's arguments reading it after the parameters
+                    given = local[: len(plan.params)]
+                    turns = [(plan, each, frames[0], [*given, element]) for element in local[over]]
+                else:
+                    turns = [(plan, each, frames[n] if frames else use, local) for n in range(count)]
                 got = self._in_turn(plan, turns, link, reader, fields, request, wait, local)
                 return [(plan, local, tuple(zip(*(values for _, _, values in got))))]
             case ListedReplies(answers=answers):
-                turns = [(answer, answer.reply, answer.frame) for answer in answers]
-                return self._in_turn(plan, turns, link, reader, fields, request, wait, local)
+                listed = [(answer, answer.reply, answer.frame, local) for answer in answers]
+                return self._in_turn(plan, listed, link, reader, fields, request, wait, local)
             case KeyedReply():  # `Robot._primitive_in_full` runs the entry its key chooses
                 raise AssertionError(f"{plan.name}: a reply table's entry is chosen before the exchange")
             case _:
@@ -504,17 +514,18 @@ class Exchange:
         """The device's error: its bytes decoded, the first value its code, named by the enum."""
         return device_error(plan, error, tuple(error.decoder.decode(plan.name, body)))
 
-    def _in_turn(self, plan: Primitive, turns: list[tuple[Primitive, Reply, FrameUse | None]], link: _Link,
+    def _in_turn(self, plan: Primitive, turns: list[tuple[Primitive, Reply, FrameUse | None, Args]], link: _Link,
                  reader: Incoming, fields: list[Any], request: bytes, wait: float, local: Args) -> list[_ReplyPart]:
         """`replies N` and `replies { }`: a reply for each turn, read in turn as one is (each as
         its plan and shape say, meeting its `expect`; through its own frame, with its own field
-        values, where it has one), all within the one deadline, in the order they came."""
+        values over the turn's arguments, where it has one), all within the one deadline, in the
+        order they came."""
         got: list[_ReplyPart] = []
         count = len(turns)
-        for n, (own, shape, use) in enumerate(turns):
+        for n, (own, shape, use, framed) in enumerate(turns):
             if use is not None and use is not plan.frame:
                 try:
-                    fields = use.frame.values(plan.name, use.args(self._state, local))
+                    fields = use.frame.values(plan.name, use.args(self._state, framed))
                 except (struct.error, *EVAL_ERRORS) as err:
                     raise RdisValueError(f"{plan.name}: {err}") from None
             try:
@@ -561,7 +572,8 @@ class Exchange:
                 return [(plan, local, self._met(plan, local, sim.reply(plan, local, None)))]
             case SubPayloads() | Records():  # a simulator reports none
                 return []
-            case SeveralReplies(count=count):
+            case SeveralReplies(count=count, over=over):
+                count = len(local[over]) if over >= 0 else count
                 replies = [self._met(plan, local, sim.reply(plan, local, n)) for n in range(count)]
                 return [(plan, local, tuple(zip(*replies)))]
             case ListedReplies(answers=answers):
@@ -600,10 +612,10 @@ class Exchange:
             pass  # raised as the reply is stored
         return None
 
-    @staticmethod
-    def _tagged(plan: Primitive, shape: TaggedReply, payload: bytes, local: Args) -> _ReplyPart:
+    def _tagged(self, plan: Primitive, shape: TaggedReply, payload: bytes, local: Args) -> _ReplyPart:
         """The entry a framed reply's tag chooses, the tag after the parameters' values, and
-        the rest of the payload decoded by the entry."""
+        the rest of the payload decoded by the entry; one whose post-actions look up a key their
+        table lacks is a reply this primitive cannot read (`skip unmatched` reads past it)."""
         tag = shape.tag_struct
         if len(payload) < tag.size:
             raise RdisProtocolError(f"{plan.name}: expected {tag.size} bytes or more, got {len(payload)}")
@@ -612,7 +624,10 @@ class Exchange:
         if case is None:
             raise RdisProtocolError(f"{plan.name}: no reply entry for tag {value}")
         decoder = _entry_decoder(case)
-        return case, [*local, value], decoder.decode(plan.name, payload[tag.size :]) if decoder is not None else ()
+        decoded = decoder.decode(plan.name, payload[tag.size :]) if decoder is not None else ()
+        if case.looks_up and (miss := self._missed_lookup(case, [*local, value], decoded)) is not None:
+            raise RdisProtocolError(miss)
+        return case, [*local, value], decoded
 
     def _records(self, plan: Primitive, shape: Records, payload: bytes, local: Args) -> list[_ReplyPart]:
         """A payload of records, each ended by the marker where it first comes (Firmata's capability
@@ -637,14 +652,15 @@ class Exchange:
             at = end + len(marker)
         return parts
 
-    @staticmethod
-    def _sub_payloads(plan: Primitive, shape: SubPayloads, payload: bytes, local: Args) -> list[_ReplyPart]:
+    def _sub_payloads(self, plan: Primitive, shape: SubPayloads, payload: bytes, local: Args) -> list[_ReplyPart]:
         """A payload of sub-payloads (Kobuki's feedback), in any order and any subset, until it
         ends: each its tag, its length when the table gives one, and its bytes, decoded by the
         entry the tag chooses (its plan, the tag after the parameters' values, its values). With
         a length, a tag without an entry is skipped (a newer firmware's) and a length that is
         not its entry's size refused; without one, the entry's size says where the next starts.
-        All are decoded before any post-action runs, so a bad one changes no state."""
+        All are decoded before any post-action runs, so a bad one changes no state; one whose
+        post-actions look up a key their table lacks makes the reply one this primitive cannot
+        read (`skip unmatched` reads past it)."""
         tag = shape.tag_struct
         size = shape.length_struct
         head = tag.size + (size.size if size is not None else 0)
@@ -674,7 +690,10 @@ class Exchange:
             if size is not None and decoder.size >= 0 and length != decoder.size:
                 raise RdisProtocolError(f"{plan.name}: the sub-payload of tag {value} at offset {start - head} "
                                         f"is {length} bytes; its entry decodes {decoder.size}")
-            parts.append((case, [*local, value], decoder.decode(plan.name, payload[start:at])))
+            decoded = decoder.decode(plan.name, payload[start:at])
+            if case.looks_up and (miss := self._missed_lookup(case, [*local, value], decoded)) is not None:
+                raise RdisProtocolError(miss)
+            parts.append((case, [*local, value], decoded))
         return parts
 
     def _read_tagged(self, plan: Primitive, shape: TaggedStream, reader: Incoming, wait: float,

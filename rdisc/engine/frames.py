@@ -315,6 +315,9 @@ class Frame:
                     raise FrameError(f"{self.name}: reply {part.name} is {value}, expected {fields[part.index]}")
             elif isinstance(part, Bits) and (wrong := part.wrong(chunk, fields)) is not None:
                 raise FrameError(f"{self.name}: {wrong}")
+            elif i == side.again and isinstance(part, Length) and (stated := part.stated(chunk, 0)) != size:
+                raise FrameError(f"{self.name}: the second length field says {stated + part.adjust}, but the "
+                                 f"payload is {size} bytes")
             elif isinstance(part, Check):
                 covered = raw[starts[part.first] : starts[part.last + 1]]
                 expected = part.encode(part.summed(request + covered if part.with_request else covered, fields))

@@ -161,11 +161,14 @@ class KeyedReply:
 class SeveralReplies:
     """`replies N`: `count` replies to one request, each read as `each`, through its own frame
     where `frames` gives one (else the primitive's); their values collected value by value into
-    arrays for the primitive's post-actions."""
+    arrays for the primitive's post-actions. `replies id in ids` over an array parameter (at
+    position `over`): a reply for each of its elements, through the one frame of `frames`,
+    whose arguments read the element after the parameters."""
 
     count: int
     each: Reply
     frames: tuple[FrameUse, ...] = ()
+    over: int = -1
 
 
 @dataclass(frozen=True, slots=True)

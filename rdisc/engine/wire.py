@@ -328,8 +328,8 @@ def _size(part: Part) -> int:
 class Side:
     """The parts of one direction, with their sizes worked out once."""
 
-    __slots__ = ("checked", "delimiter", "extra", "group", "header", "length", "marker", "most", "parts", "payload",
-                 "prefix", "sizes", "suffix", "terminator")
+    __slots__ = ("again", "checked", "delimiter", "extra", "group", "header", "length", "marker", "most", "parts",
+                 "payload", "prefix", "sizes", "suffix", "terminator")
 
     def __init__(self, parts: Sequence[Part]) -> None:
         self.parts = tuple(parts)
@@ -348,6 +348,8 @@ class Side:
                             if isinstance(p, Length) or (isinstance(p, Bits) and p.has_length)), -1)
         length = self.parts[self.length] if self.length >= 0 else None
         self.most = length.most if isinstance(length, (Length, Bits)) else math.inf  # the largest payload it carries
+        # a second length field (a sub-payload's): it states the payload again, checked against the first
+        self.again = next((i for i, p in enumerate(self.parts) if isinstance(p, Length) and i > self.length), -1)
         after = self.payload + 1
         group = self.parts[after] if 0 <= self.payload and after < len(self.parts) else None
         self.group = range(after + 1, after + 1 + group.count) if isinstance(group, OptionalParts) else range(0)

@@ -167,8 +167,8 @@ class _Engine:
                 return engine.Records(marker, decoder.value, skip=skip)
             case plans.KeyedReply(key=key, table=table):
                 return engine.KeyedReply(key, self.table(table))
-            case plans.SeveralReplies(count=count, each=each, frames=frames):
-                return engine.SeveralReplies(count, self.reply(each), tuple(self.use(u) for u in frames))
+            case plans.SeveralReplies(count=count, each=each, frames=frames, over=over):
+                return engine.SeveralReplies(count, self.reply(each), tuple(self.use(u) for u in frames), over)
             case plans.ListedReplies(answers=answers):
                 return engine.ListedReplies(tuple(self.primitive(answer) for answer in answers))
             case _:

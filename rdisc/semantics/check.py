@@ -722,7 +722,9 @@ class _Checker:
         if action_blocks:
             note = None if decodings else f"primitive `{name.text}` reads no reply: add `unpack` or `regex`"
             # A count only with scalar values (E401 for arrays): out[i] is the array of the i-th values.
-            collected = tuple(m.Array(t, count) if isinstance(t, Type) else t for t in reply) \
+            each_array = self.array_parameter(replies_clause, env) if isinstance(replies_clause, ast.Replies) else None
+            size = count if each_array is None else each_array.size
+            collected = tuple(m.Array(t, size) if isinstance(t, Type) else t for t in reply) \
                 if count and reply is not None else reply
             refused = isinstance(replies_clause, ast.Replies) and not count  # reported: `out` unknown, no cascade
             action_env = self.env_with(
@@ -797,7 +799,14 @@ class _Checker:
             error = self.error_reply(error_clause, decl, env, encoding, frame if one else None, decoding, one)
         return m.Primitive(name.text, params, connection, encoding, args, decoding, actions, decl.doc, decl.span,
                            frame, skip is not None, table, timeout, expect, lines, count, reply_frames, records,
-                           listed, retries, error)
+                           listed, retries, error, self.replies_each(replies_clause, env, count))
+
+    def replies_each(self, clause: object, env: Env, count: int) -> m.RepliesEach | None:
+        """`replies id in ids` over an array parameter, when it was taken (`count`)."""
+        if not count or not isinstance(clause, ast.Replies) or self.array_parameter(clause, env) is None:
+            return None
+        assert clause.var is not None and isinstance(clause.over, ast.Ref)  # array_parameter's
+        return m.RepliesEach(clause.var.text, clause.over.name)
 
     def error_reply(self, clause: ast.ErrorReply, decl: ast.PrimitiveDecl, env: Env,
                     encoding: m.Pack | m.Format | None, frame: m.FrameUse | None,
@@ -974,16 +983,22 @@ class _Checker:
         are not arrays (each value of the replies is one, of N). (0, ()) where it is refused."""
         name = decl.name.text
         frames: tuple[m.FrameUse, ...] = ()
+        array = self.array_parameter(clause, env)
         if clause.var is None:
             value = self.setting(clause.over, "a reply count", MAX_ARRAY)
-        else:
-            found = self.reply_frames(clause, decl, decoding, env, encoding)
+        elif array is not None:  # as many as the caller gives: the most, for the link budget
+            found = self.reply_frame_each(clause, decl, decoding, env, encoding, array)
             if found is None:
                 return 0, ()
-            value, frames = len(found), found
+            value, frames = array.size or MAX_ARRAY, (found,)
+        else:
+            found_all = self.reply_frames(clause, decl, decoding, env, encoding)
+            if found_all is None:
+                return 0, ()
+            value, frames = len(found_all), found_all
         if value is None:
             return 0, ()
-        if not isinstance(value, int) or isinstance(value, bool) or not 2 <= value <= MAX_ARRAY:
+        if array is None and (not isinstance(value, int) or isinstance(value, bool) or not 2 <= value <= MAX_ARRAY):
             said = f"a reply count is a constant int from 2 to {MAX_ARRAY}, not {shown(value)}" \
                 if clause.var is None else f"a primitive reads 2 to {MAX_ARRAY} replies, not {value}"
             self.d.report("E204", clause.over.span if clause.var is None else clause.span, said)
@@ -997,7 +1012,28 @@ class _Checker:
                           "each value of the replies would be an array of arrays",
                           help="read a reply of single values, or one reply with a repeated group")
             return 0, ()
+        assert isinstance(value, int)  # a constant int from 2 to MAX_ARRAY, or an array's size
         return value, frames
+
+    @staticmethod
+    def array_parameter(clause: ast.Replies, env: Env) -> m.Array | None:
+        """The type of the array parameter `replies id in ids` goes over, if it goes over one."""
+        if clause.var is None or clause.high is not None or not isinstance(clause.over, ast.Ref):
+            return None
+        scope, type_ = env.names.get(clause.over.name, (None, None))
+        return type_ if scope is Scope.PARAM and isinstance(type_, m.Array) else None
+
+    def reply_frame_each(self, clause: ast.Replies, decl: ast.PrimitiveDecl, decoding: m.Unpack | m.Regex | None,
+                         env: Env, encoding: m.Pack | m.Format | None, array: m.Array) -> m.FrameUse | None:
+        """`replies id in ids frame status(id)` over an array parameter: the one reply frame, its
+        arguments over the parameters and the element, `id`, known when it runs; None in error."""
+        assert clause.var is not None and clause.frame is not None
+        if not self.loop_variable(clause.var, decl.params, {}):
+            return None
+        own = replace(env, names={**env.names, clause.var.text: (Scope.PARAM, array.element)})
+        errors = self.d.error_count
+        use = self.frame_use(clause.frame, own, decl, encoding, [decoding] if decoding else [], None)
+        return None if use is None or self.d.error_count > errors else use
 
     def reply_frames(self, clause: ast.Replies, decl: ast.PrimitiveDecl, decoding: m.Unpack | m.Regex | None,
                      env: Env, encoding: m.Pack | m.Format | None) -> tuple[m.FrameUse, ...] | None:
@@ -1006,7 +1042,7 @@ class _Checker:
         assert clause.var is not None and clause.frame is not None
         if not self.loop_variable(clause.var, decl.params, {}):
             return None
-        found = self.constant_values(clause.over, clause.high, env)
+        found = self.constant_values(clause.over, clause.high, env, replies=True)
         if found is None:
             return None
         type_, values = found
@@ -1711,8 +1747,8 @@ class _Checker:
             return None
         return type_, values
 
-    def constant_values(self, low_expr: ast.Expr, high_expr: ast.Expr | None,
-                        env: Env) -> tuple[Type, Sequence[m.Value]] | None:
+    def constant_values(self, low_expr: ast.Expr, high_expr: ast.Expr | None, env: Env,
+                        replies: bool = False) -> tuple[Type, Sequence[m.Value]] | None:
         """The values of a loop's (or a `replies`') variable: a constant array's, or those of a
         range of constant ints, both ends included; None when they are in error (reported)."""
         if high_expr is None:
@@ -1722,6 +1758,12 @@ class _Checker:
             if not isinstance(over.type, m.Array):
                 self.d.report("E212", low_expr.span, "a loop goes over a constant array or a range, not "
                               f"{describe(over.type)}", help="write a range: `for i in 0..5`")
+                return None
+            if not self.typer.is_constant(over) and replies:  # an array parameter is taken: not this one
+                self.d.report("E212", low_expr.span, "`replies` goes over a constant array, a range or an array "
+                              "parameter, not an array known only when it runs",
+                              help="pass the array to the primitive as a parameter: `replies id in ids` over "
+                              "`ids: int[]` reads a reply for each element the caller gives")
                 return None
             if not self.typer.is_constant(over):
                 name = low_expr.name if isinstance(low_expr, ast.Ref) else "values"

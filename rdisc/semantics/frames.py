@@ -315,8 +315,14 @@ class FrameRules:
             d.report("E501", payloads[1].span, f"the reply of frame `{decl.name.text}` has two payloads")
         lengths = [p for p in parts if isinstance(p, ast.FrameLength)] + [
             f for p in parts if isinstance(p, ast.FrameBits) for f in p.fields if f.name is None]
-        for extra in sorted(lengths, key=lambda p: p.span.start)[1:]:
-            d.report("E501", extra.span, f"frame `{decl.name.text}` has two length fields")
+        # Two `length` fields (Kobuki's packet length, then its sub-payload's): each states the
+        # payload with its own adjustment, the second checked against the first when read.
+        ordered = sorted(lengths, key=lambda p: p.span.start)
+        plain = all(isinstance(p, ast.FrameLength) for p in ordered)
+        for extra in ordered[2 if plain else 1 :]:
+            d.report("E501", extra.span, f"frame `{decl.name.text}` has {'more than two' if plain else 'two'} "
+                     "length fields", help="a frame states its payload twice at most" if plain else "two `length` "
+                     "fields may each state the payload (a packet's length and its sub-payload's), not in a `bits`")
         for trimmed in (p for p in payloads if p.trimmed and not lengths):
             d.report("E503", trimmed.span, f"the {side} of frame `{decl.name.text}` trims its payload, so it "
                      "needs a `length` field to say how many bytes were kept",
@@ -356,6 +362,15 @@ class FrameRules:
             if isinstance(part, (ast.FrameBytes, ast.FrameLength, ast.FramePayload)):
                 names.setdefault(part.role if isinstance(part, ast.FrameBytes) else
                                  "length" if isinstance(part, ast.FrameLength) else "payload", i)
+        stated = [(p, written) for p, written in zip(out, parts) if isinstance(p, m.FrameLength)]
+        if len(stated) == 2 and all(p.layout.slots for p, _ in stated):  # the second states what the first does
+            (first, _), (second, written) = stated
+            (low, high), (second_low, second_high) = length_range(first), length_range(second)
+            if not second_low <= low or not high <= second_high:
+                d.report("E503", written.span, f"the second length field of frame `{decl.name.text}` states "
+                         f"payloads of {second_low} to {second_high} bytes, but the first {low} to {high}",
+                         help="each length field states the same payload: give the second a format and an "
+                         "adjustment that hold every size the first states")
         return tuple(out)
 
     def optional(self, part: ast.FrameOptional, before: ast.FramePart | None, inner: tuple[ast.FramePart, ...],

@@ -743,6 +743,26 @@ class ListedReply:
 
 
 @dataclass(frozen=True, slots=True)
+class RepliesEach:
+    """`replies id in ids frame status(id)` over an array parameter `ids`: a reply for each of
+    its elements, as many as the caller gives, each read through the one reply frame (`reply_frames`)
+    whose arguments read that element as `var`."""
+
+    var: str
+    over: str  # the array parameter
+
+    def array(self, params: tuple[Parameter, ...]) -> Array:
+        """The type of the array parameter (of size 0 when open: as many replies as it has)."""
+        array = next(p.type for p in params if p.name == self.over)
+        assert isinstance(array, Array)  # the checker's
+        return array
+
+    def local(self, params: tuple[Parameter, ...]) -> tuple[Parameter, ...]:
+        """What the reply frame's arguments read: the parameters, then the element as `var`."""
+        return (*params, Parameter(self.var, self.array(params).element))
+
+
+@dataclass(frozen=True, slots=True)
 class ErrorReply:
     """The reply a device may send instead of the one asked for (Modbus's exception, a NACK):
     known by its own frame (None: the primitive's, or none) or by its first bytes (`marker`,
@@ -793,6 +813,7 @@ class Primitive:
     listed: tuple[ListedReply, ...] = ()  # `replies { ... }`: replies of different shapes, in order
     retries: int = 0  # `retry N`: resends after a timeout or a reply that does not match (0: none)
     error: ErrorReply | None = None  # `error ...`: the exception the device may send instead of its reply
+    each: RepliesEach | None = None  # `replies id in ids`: a reply for each element of an array parameter
 
     def listed_reply(self, r: ListedReply) -> Primitive:
         """This primitive as it is for one of its listed replies: that reply's frame, decoding,

@@ -1474,6 +1474,25 @@ def _hash_ListedReply(self: Any) -> int:
     return hash((self.decoding, self.frame, self.expect, self.actions))
 
 
+def _init_RepliesEach(self: Any, var: Any, over: Any) -> None:
+    _set(self, "var", var)
+    _set(self, "over", over)
+
+
+def _repr_RepliesEach(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(var={self.var!r}, over={self.over!r})"
+
+
+def _eq_RepliesEach(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.var, self.over) == (other.var, other.over)
+    return NotImplemented
+
+
+def _hash_RepliesEach(self: Any) -> int:
+    return hash((self.var, self.over))
+
+
 def _init_ErrorReply(
     self: Any,
     decoding: Any,
@@ -1579,6 +1598,7 @@ def _init_Primitive(
     listed: Any = DEFAULT,
     retries: Any = DEFAULT,
     error: Any = DEFAULT,
+    each: Any = DEFAULT,
 ) -> None:
     _set(self, "name", name)
     _set(self, "params", params)
@@ -1601,10 +1621,11 @@ def _init_Primitive(
     _set(self, "listed", listed)
     _set(self, "retries", retries)
     _set(self, "error", error)
+    _set(self, "each", each)
 
 
 def _repr_Primitive(self: Any) -> str:
-    return f"{self.__class__.__qualname__}(name={self.name!r}, params={self.params!r}, connection={self.connection!r}, encoding={self.encoding!r}, args={self.args!r}, decoding={self.decoding!r}, actions={self.actions!r}, doc={self.doc!r}, frame={self.frame!r}, skip_unmatched={self.skip_unmatched!r}, table={self.table!r}, timeout_ms={self.timeout_ms!r}, expect={self.expect!r}, lines={self.lines!r}, replies={self.replies!r}, reply_frames={self.reply_frames!r}, records={self.records!r}, listed={self.listed!r}, retries={self.retries!r}, error={self.error!r})"
+    return f"{self.__class__.__qualname__}(name={self.name!r}, params={self.params!r}, connection={self.connection!r}, encoding={self.encoding!r}, args={self.args!r}, decoding={self.decoding!r}, actions={self.actions!r}, doc={self.doc!r}, frame={self.frame!r}, skip_unmatched={self.skip_unmatched!r}, table={self.table!r}, timeout_ms={self.timeout_ms!r}, expect={self.expect!r}, lines={self.lines!r}, replies={self.replies!r}, reply_frames={self.reply_frames!r}, records={self.records!r}, listed={self.listed!r}, retries={self.retries!r}, error={self.error!r}, each={self.each!r})"
 
 
 def _eq_Primitive(self: Any, other: Any) -> Any:
@@ -1630,6 +1651,7 @@ def _eq_Primitive(self: Any, other: Any) -> Any:
             self.listed,
             self.retries,
             self.error,
+            self.each,
         ) == (
             other.name,
             other.params,
@@ -1651,6 +1673,7 @@ def _eq_Primitive(self: Any, other: Any) -> Any:
             other.listed,
             other.retries,
             other.error,
+            other.each,
         )
     return NotImplemented
 
@@ -1677,6 +1700,7 @@ def _hash_Primitive(self: Any) -> int:
         self.listed,
         self.retries,
         self.error,
+        self.each,
     ))
 
 
@@ -2909,6 +2933,15 @@ WRITTEN: dict[str, Written] = {
             "__hash__": _hash_ListedReply,
         },
     ),
+    "RepliesEach": Written(
+        (("var", MISSING), ("over", MISSING)),
+        {
+            "__init__": _init_RepliesEach,
+            "__repr__": _repr_RepliesEach,
+            "__eq__": _eq_RepliesEach,
+            "__hash__": _hash_RepliesEach,
+        },
+    ),
     "ErrorReply": Written(
         (("decoding", MISSING), ("frame", DEFAULT), ("marker", DEFAULT), ("codes", DEFAULT)),
         {
@@ -2958,6 +2991,7 @@ WRITTEN: dict[str, Written] = {
             ("listed", DEFAULT),
             ("retries", DEFAULT),
             ("error", DEFAULT),
+            ("each", DEFAULT),
         ),
         {
             "__init__": _init_Primitive,

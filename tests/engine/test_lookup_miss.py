@@ -26,6 +26,22 @@ primitive stream() on link format "" () skip unmatched reply tag "B" {
     0xA0: unpack "B" { mode = MODE[out[0]] }
     0xB0: unpack "B" { raw = out[0] }
 }
+frame sized { header "\\xAA"  length "B" = payload  payload }
+/// A framed reply chosen by its tag: a message whose code has no name is another's, read past.
+primitive framed() on link frame sized pack "B" (0x4D) skip unmatched reply tag "B" {
+    0xA0: unpack "B" { mode = MODE[out[0]] }
+    0xB0: unpack "B" { raw = out[0] }
+}
+/// The same without `skip unmatched`: a code without a name is an error.
+primitive framed_strict() on link frame sized pack "B" (0x4D) reply tag "B" {
+    0xA0: unpack "B" { mode = MODE[out[0]] }
+    0xB0: unpack "B" { raw = out[0] }
+}
+/// Sub-payloads, each a tag and its length: a frame with a code without a name is read past whole.
+primitive feedback() on link frame sized pack "B" (0x46) skip unmatched reply each tag "B" length "B" {
+    0xA0: unpack "B" { mode = MODE[out[0]] }
+    0xB0: unpack "B" { raw = out[0] }
+}
 """
 
 
@@ -62,3 +78,24 @@ def test_a_tagged_message_whose_lookup_misses_is_read_past(kind: str, tmp_path: 
         assert (robot.state["mode"], robot.state["raw"]) == ("", 0xA0)
         robot.call_primitive("stream")
         assert (robot.state["mode"], robot.state["raw"]) == ("run", 0xA0)
+
+
+@pytest.mark.parametrize("kind", ["runtime", "driver"])
+def test_a_framed_tagged_reply_whose_lookup_misses_is_read_past(kind: str, tmp_path: Path) -> None:
+    """A framed reply table under `skip unmatched` reads past a frame whose lookup misses, as it
+    reads past one that does not decode; without it, the miss is an RdisProtocolError."""
+    port = ScriptedPort(bytes.fromhex("aa 02 a0 07  aa 02 a0 02"  # A0 07: no name, read past; then A0 02
+                                      "aa 02 a0 09"  # framed_strict: an error, no state changed
+                                      "aa 06 b0 01 06 a0 01 07  aa 06 b0 01 06 a0 01 01"))  # feedback: the second
+    implementation = implementation_of(kind, MODES, tmp_path, "modes")
+    with implementation.connect(port, threads=False) as robot:
+        robot.call_primitive("framed")
+        assert (robot.state["mode"], robot.state["raw"]) == ("run", 0)
+        with pytest.raises(Exception) as caught:
+            robot.call_primitive("framed_strict")
+        assert (type(caught.value).__name__, str(caught.value)) == (
+            "RdisProtocolError", "framed_strict: reply (9,): table MODE has no entry for 9")
+        assert robot.state["mode"] == "run"
+        robot.call_primitive("feedback")
+        assert (robot.state["mode"], robot.state["raw"]) == ("idle", 6)
+    assert bytes(port.written) == bytes.fromhex("aa 01 4d  aa 01 4d  aa 01 46")

@@ -120,7 +120,7 @@ primitive many() on port pack "B" (1) replies 1025 unpack "B"
 primitive fine() on port pack "B" (1) replies 2 unpack "B" { two = out[0] }
 frame g(id: int in 0..9) { header "\\xAA"  field id "B" = id  length "B" = payload  payload }
 primitive hidden(one: int) on port pack "B" (1) replies one in 0..1 frame g(one) unpack "B"
-primitive varying(ids: int[2]) on port pack "B" (1) replies id in ids frame g(id) unpack "B"
+primitive varying() on port pack "B" (1) replies id in two frame g(id) unpack "B"
 primitive wide() on port pack "B" (1) replies id in [1, 20] frame g(id) unpack "B"
 primitive lone() on port pack "B" (1) replies id in 3..3 frame g(id) unpack "B"
 """
@@ -174,13 +174,13 @@ error[E101]: loop variable `one` has the name of a parameter
    |
    = help: give the loop variable a name of its own
 
-error[E212]: a loop goes over a constant array or a range, not an array known only when it runs
-  --> d.rdis:14:67
+error[E212]: `replies` goes over a constant array, a range or an array parameter, not an array known only when it runs
+  --> d.rdis:14:56
    |
-14 | primitive varying(ids: int[2]) on port pack "B" (1) replies id in ids frame g(id) unpack "B"
-   |                                                                   ^^^
+14 | primitive varying() on port pack "B" (1) replies id in two frame g(id) unpack "B"
+   |                                                        ^^^
    |
-   = help: loop over its indexes and read its elements: `for i in 0..1 { ... ids[i] ... }`
+   = help: pass the array to the primitive as a parameter: `replies id in ids` over `ids: int[]` reads a reply for each element the caller gives
 
 error[E403]: 20 is outside the range of parameter `id` of frame `g`
   --> d.rdis:15:69
@@ -249,3 +249,98 @@ primitive later(ids: int[3]) on port pack "B" (1) replies i in 1..2 frame g(ids[
     assert "    replies reply in 1..2 frame g(ids[reply])\n" in imported
     _, again = through_json(imported, tmp_path, "again")
     assert again == built
+
+
+EACH = """\
+robot bus { author "tests" }
+connection port: serial { baud 115200 }
+frame f { header "\\xFF"  length "<H" = payload  payload  checksum "sum" "B" over length .. payload }
+frame status(id: int in 0..253) { request { payload }  reply { header "\\xFE"  field id "B" = id  payload } }
+state present: int[]
+state errors: int[3]
+/// A sync read of the servos asked for, as many as given, each status packet carrying its ID.
+primitive read_each(ids: int[] in 0..253) on port frame f() pack "<B*(B)" (0x82, ids)
+    replies id in ids frame status(id) unpack "<Bh" { present = out[1] }
+/// Three servos, each asked for by the caller.
+primitive read_three(ids: int[3] in 0..253) on port frame f() pack "<B3B" (0x82, ids)
+    replies id in ids frame status(id) unpack "<Bh" { errors = out[0] }
+"""
+
+
+@pytest.fixture(scope="module", params=["runtime", "driver"])
+def each_implementation(request: pytest.FixtureRequest, tmp_path_factory: pytest.TempPathFactory) -> Any:
+    return implementation_of(request.param, EACH, tmp_path_factory.mktemp("each"), "each")
+
+
+def test_a_reply_for_each_element_of_an_array_parameter(each_implementation: Any) -> None:
+    """`replies id in ids` over `ids: int[]`: as many replies as the caller gives ids, each
+    through the frame of its own id, in the order asked."""
+    port = ScriptedPort(bytes.fromhex("FE 05 00 0a00" "FE 07 04 0b00"
+                                      "FE 01 00 0100" "FE 02 00 0200" "FE 03 00 0300" "FE 04 09 0400"))
+    with each_implementation.connect(port, threads=False) as robot:
+        robot.primitives.read_each([5, 7])
+        assert bytes(port.written).hex(" ") == "ff 03 00 82 05 07 91"
+        assert robot.state.present == (10, 11)
+        robot.primitives.read_each([1, 2, 3, 4])
+        assert bytes(port.written).hex(" ").endswith("ff 05 00 82 01 02 03 04 91")
+        assert robot.state.present == (1, 2, 3, 4)
+
+
+def test_each_reply_is_held_to_its_element_and_an_empty_array_writes_nothing(each_implementation: Any) -> None:
+    port = ScriptedPort(bytes.fromhex("FE 01 00 0100" "FE 03 00 0300" "FE 02 00 0200"))
+    with each_implementation.connect(port, threads=False) as robot:
+        with pytest.raises(Exception, match=r"^read_three: reply 2 of 3: status: reply id is 3, expected 2$") as raised:
+            robot.primitives.read_three([1, 2, 3])
+        assert type(raised.value).__name__ == "RdisProtocolError"
+        assert robot.state.errors == (0, 0, 0)
+        written = bytes(port.written)
+        with pytest.raises(Exception, match=r"^read_each: parameter ids is empty: a reply for each of its "
+                           r"elements is none to read$") as raised:
+            robot.primitives.read_each([])
+        assert type(raised.value).__name__ == "RdisValueError"
+        assert bytes(port.written) == written
+        with pytest.raises(Exception, match=r"^read_each: 1 of 2 replies within"):
+            robot.primitives.read_each([2, 9])
+
+
+def test_replies_over_an_array_parameter_in_json_printer_dump_and_budget(tmp_path: Path) -> None:
+    """Canonical JSON names the variable and the array, the one frame written as it is: build,
+    import and build again give the same JSON and the same source line (nothing grows)."""
+    from rdisc.json_import import read
+
+    compilation, built = through_json(EACH, tmp_path, "each")
+    assert """\
+      "repliesEach": {
+        "variable": "id",
+        "over": "ids"
+      },
+      "replyFrames": [
+        {
+          "name": "status",
+          "arguments": [
+            "<id>"
+          ]
+        }
+      ],""" in built
+    assert '"replies": 3' not in built
+    imported = print_module(read("each.json", built, Diagnostics()))
+    assert imported.count("\n    replies id in ids frame status(id) {") == 2
+    _, again = through_json(imported, tmp_path, "again")
+    assert again == built
+    printed = print_module(parse("each.rdis", EACH, Diagnostics()))
+    assert printed.count("\n    replies id in ids frame status(id)") == 2
+    model = compilation.model
+    assert model is not None
+    shown = dump.dump(model)
+    assert "  a reply for each of ids, frame status(id), each: 5 bytes\n" in shown
+    assert "  3 replies, one for each of ids, frame status(id), each: 5 bytes\n" in shown
+    sizes = {name: budget.message_bytes(prim, model.frames) for name, prim in model.primitives.items()}
+    assert sizes["read_three"] == 8 + 3 * 5
+
+
+def test_the_variable_of_replies_over_an_array_parameter_is_its_own(tmp_path: Path) -> None:
+    text = EACH.replace("replies id in ids frame status(id) unpack \"<Bh\" { errors",
+                        "replies ids in ids frame status(ids) unpack \"<Bh\" { errors")
+    _, result = check_text(tmp_path, text)
+    assert [line for line in result.stderr.splitlines() if line.startswith("error")] == [
+        "error[E101]: loop variable `ids` has the name of a parameter"]

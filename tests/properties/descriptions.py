@@ -1039,6 +1039,9 @@ def _side(draw: Draw, params: tuple[str, ...], reply_side: bool, payload: bool, 
                      adjust=draw(st.sampled_from([0, 0, 1, 2, -1]))))
         if i < before:
             some(["field", "field", "field", "literal", "checksum"], 1)
+    if length_at >= 0 and sometimes(draw, 4):  # a sub-payload's length too (Kobuki): it states what the first does
+        first = next(p for p in parts if p.kind == "length")
+        add(draw(st.sampled_from([first, Part("length", fmt="<I")])))
     if payload:
         add(Part("payload", trimmed=ending == "length" and sometimes(draw, 4)))
         if ending == "literal":

@@ -1038,8 +1038,8 @@ def _size(part: Part) -> int:
 class Side:
     """The parts of one direction, with their sizes worked out once."""
 
-    __slots__ = ("checked", "delimiter", "extra", "group", "header", "length", "marker", "most", "parts", "payload",
-                 "prefix", "sizes", "suffix", "terminator")
+    __slots__ = ("again", "checked", "delimiter", "extra", "group", "header", "length", "marker", "most", "parts",
+                 "payload", "prefix", "sizes", "suffix", "terminator")
 
     def __init__(self, parts: Sequence[Part]) -> None:
         self.parts = tuple(parts)
@@ -1058,6 +1058,8 @@ class Side:
                             if isinstance(p, Length) or (isinstance(p, Bits) and p.has_length)), -1)
         length = self.parts[self.length] if self.length >= 0 else None
         self.most = length.most if isinstance(length, (Length, Bits)) else math.inf  # the largest payload it carries
+        # a second length field (a sub-payload's): it states the payload again, checked against the first
+        self.again = next((i for i, p in enumerate(self.parts) if isinstance(p, Length) and i > self.length), -1)
         after = self.payload + 1
         group = self.parts[after] if 0 <= self.payload and after < len(self.parts) else None
         self.group = range(after + 1, after + 1 + group.count) if isinstance(group, OptionalParts) else range(0)
@@ -1701,6 +1703,9 @@ class Frame:
                     raise FrameError(f"{self.name}: reply {part.name} is {value}, expected {fields[part.index]}")
             elif isinstance(part, Bits) and (wrong := part.wrong(chunk, fields)) is not None:
                 raise FrameError(f"{self.name}: {wrong}")
+            elif i == side.again and isinstance(part, Length) and (stated := part.stated(chunk, 0)) != size:
+                raise FrameError(f"{self.name}: the second length field says {stated + part.adjust}, but the "
+                                 f"payload is {size} bytes")
             elif isinstance(part, Check):
                 covered = raw[starts[part.first] : starts[part.last + 1]]
                 expected = part.encode(part.summed(request + covered if part.with_request else covered, fields))
@@ -1864,11 +1869,14 @@ class KeyedReply:
 class SeveralReplies:
     """`replies N`: `count` replies to one request, each read as `each`, through its own frame
     where `frames` gives one (else the primitive's); their values collected value by value into
-    arrays for the primitive's post-actions."""
+    arrays for the primitive's post-actions. `replies id in ids` over an array parameter (at
+    position `over`): a reply for each of its elements, through the one frame of `frames`,
+    whose arguments read the element after the parameters."""
 
     count: int
     each: Reply
     frames: tuple[FrameUse, ...] = ()
+    over: int = -1
 
 
 @dataclass(frozen=True, slots=True)
@@ -2911,7 +2919,12 @@ class Exchange:
 
     def _request(self, plan: Primitive, values: Args,
                  local: Args) -> tuple[bytes, list[Any], dict[str, Value] | None]:
-        """The request encoded and framed, the frame's fields, and the modem lines' levels."""
+        """The request encoded and framed, the frame's fields, and the modem lines' levels. A
+        reply for each element of an empty array is none to read: refused before anything is written."""
+        shape = plan.reply
+        if type(shape) is SeveralReplies and shape.over >= 0 and not local[shape.over]:
+            raise RdisValueError(f"{plan.name}: parameter {plan.params[shape.over].name} is empty: "
+                                 "a reply for each of its elements is none to read")
         request = plan.encoder.encode(plan.name, values) if plan.encoder is not None else b""
         use = plan.frame
         fields: list[Any] = []
@@ -2984,13 +2997,18 @@ class Exchange:
             case Records(skip=skip):
                 return self._framed(plan, use, reader, fields, request, wait, skip, -1,
                                     lambda payload: self._records(plan, shape, payload, local))
-            case SeveralReplies(count=count, each=each, frames=frames):  # value i of them all, as one array
-                turns = [(plan, each, frames[n] if frames else use) for n in range(count)]
+            case SeveralReplies(count=count, each=each, frames=frames, over=over):  # value i of them all, as one array
+                turns: list[tuple[Primitive, Reply, FrameUse | None, Args]]
+                if over >= 0:  # a reply for each element, its frame's arguments reading it after the parameters
+                    given = local[: len(plan.params)]
+                    turns = [(plan, each, frames[0], [*given, element]) for element in local[over]]
+                else:
+                    turns = [(plan, each, frames[n] if frames else use, local) for n in range(count)]
                 got = self._in_turn(plan, turns, link, reader, fields, request, wait, local)
                 return [(plan, local, tuple(zip(*(values for _, _, values in got))))]
             case ListedReplies(answers=answers):
-                turns = [(answer, answer.reply, answer.frame) for answer in answers]
-                return self._in_turn(plan, turns, link, reader, fields, request, wait, local)
+                listed = [(answer, answer.reply, answer.frame, local) for answer in answers]
+                return self._in_turn(plan, listed, link, reader, fields, request, wait, local)
             case KeyedReply():  # `Robot._primitive_in_full` runs the entry its key chooses
                 raise AssertionError(f"{plan.name}: a reply table's entry is chosen before the exchange")
             case _:
@@ -3090,17 +3108,18 @@ class Exchange:
         """The device's error: its bytes decoded, the first value its code, named by the enum."""
         return device_error(plan, error, tuple(error.decoder.decode(plan.name, body)))
 
-    def _in_turn(self, plan: Primitive, turns: list[tuple[Primitive, Reply, FrameUse | None]], link: _Link,
+    def _in_turn(self, plan: Primitive, turns: list[tuple[Primitive, Reply, FrameUse | None, Args]], link: _Link,
                  reader: Incoming, fields: list[Any], request: bytes, wait: float, local: Args) -> list[_ReplyPart]:
         """`replies N` and `replies { }`: a reply for each turn, read in turn as one is (each as
         its plan and shape say, meeting its `expect`; through its own frame, with its own field
-        values, where it has one), all within the one deadline, in the order they came."""
+        values over the turn's arguments, where it has one), all within the one deadline, in the
+        order they came."""
         got: list[_ReplyPart] = []
         count = len(turns)
-        for n, (own, shape, use) in enumerate(turns):
+        for n, (own, shape, use, framed) in enumerate(turns):
             if use is not None and use is not plan.frame:
                 try:
-                    fields = use.frame.values(plan.name, use.args(self._state, local))
+                    fields = use.frame.values(plan.name, use.args(self._state, framed))
                 except (struct.error, *EVAL_ERRORS) as err:
                     raise RdisValueError(f"{plan.name}: {err}") from None
             try:
@@ -3147,7 +3166,8 @@ class Exchange:
                 return [(plan, local, self._met(plan, local, sim.reply(plan, local, None)))]
             case SubPayloads() | Records():  # a simulator reports none
                 return []
-            case SeveralReplies(count=count):
+            case SeveralReplies(count=count, over=over):
+                count = len(local[over]) if over >= 0 else count
                 replies = [self._met(plan, local, sim.reply(plan, local, n)) for n in range(count)]
                 return [(plan, local, tuple(zip(*replies)))]
             case ListedReplies(answers=answers):
@@ -3186,10 +3206,10 @@ class Exchange:
             pass  # raised as the reply is stored
         return None
 
-    @staticmethod
-    def _tagged(plan: Primitive, shape: TaggedReply, payload: bytes, local: Args) -> _ReplyPart:
+    def _tagged(self, plan: Primitive, shape: TaggedReply, payload: bytes, local: Args) -> _ReplyPart:
         """The entry a framed reply's tag chooses, the tag after the parameters' values, and
-        the rest of the payload decoded by the entry."""
+        the rest of the payload decoded by the entry; one whose post-actions look up a key their
+        table lacks is a reply this primitive cannot read (`skip unmatched` reads past it)."""
         tag = shape.tag_struct
         if len(payload) < tag.size:
             raise RdisProtocolError(f"{plan.name}: expected {tag.size} bytes or more, got {len(payload)}")
@@ -3198,7 +3218,10 @@ class Exchange:
         if case is None:
             raise RdisProtocolError(f"{plan.name}: no reply entry for tag {value}")
         decoder = _entry_decoder(case)
-        return case, [*local, value], decoder.decode(plan.name, payload[tag.size :]) if decoder is not None else ()
+        decoded = decoder.decode(plan.name, payload[tag.size :]) if decoder is not None else ()
+        if case.looks_up and (miss := self._missed_lookup(case, [*local, value], decoded)) is not None:
+            raise RdisProtocolError(miss)
+        return case, [*local, value], decoded
 
     def _records(self, plan: Primitive, shape: Records, payload: bytes, local: Args) -> list[_ReplyPart]:
         """A payload of records, each ended by the marker where it first comes (Firmata's capability
@@ -3223,14 +3246,15 @@ class Exchange:
             at = end + len(marker)
         return parts
 
-    @staticmethod
-    def _sub_payloads(plan: Primitive, shape: SubPayloads, payload: bytes, local: Args) -> list[_ReplyPart]:
+    def _sub_payloads(self, plan: Primitive, shape: SubPayloads, payload: bytes, local: Args) -> list[_ReplyPart]:
         """A payload of sub-payloads (Kobuki's feedback), in any order and any subset, until it
         ends: each its tag, its length when the table gives one, and its bytes, decoded by the
         entry the tag chooses (its plan, the tag after the parameters' values, its values). With
         a length, a tag without an entry is skipped (a newer firmware's) and a length that is
         not its entry's size refused; without one, the entry's size says where the next starts.
-        All are decoded before any post-action runs, so a bad one changes no state."""
+        All are decoded before any post-action runs, so a bad one changes no state; one whose
+        post-actions look up a key their table lacks makes the reply one this primitive cannot
+        read (`skip unmatched` reads past it)."""
         tag = shape.tag_struct
         size = shape.length_struct
         head = tag.size + (size.size if size is not None else 0)
@@ -3260,7 +3284,10 @@ class Exchange:
             if size is not None and decoder.size >= 0 and length != decoder.size:
                 raise RdisProtocolError(f"{plan.name}: the sub-payload of tag {value} at offset {start - head} "
                                         f"is {length} bytes; its entry decodes {decoder.size}")
-            parts.append((case, [*local, value], decoder.decode(plan.name, payload[start:at])))
+            decoded = decoder.decode(plan.name, payload[start:at])
+            if case.looks_up and (miss := self._missed_lookup(case, [*local, value], decoded)) is not None:
+                raise RdisProtocolError(miss)
+            parts.append((case, [*local, value], decoded))
         return parts
 
     def _read_tagged(self, plan: Primitive, shape: TaggedStream, reader: Incoming, wait: float,
