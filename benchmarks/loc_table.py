@@ -33,6 +33,7 @@ DEVICES = [
                                    "dynamixel_sdk.group_sync_write", "dynamixel_sdk.group_sync_read",
                                    "dynamixel_sdk.group_bulk_read", "dynamixel_sdk.robotis_def"]),
     ("firmata.rdis", "pyFirmata2", ["pyfirmata2.pyfirmata2", "pyfirmata2.util", "pyfirmata2.boards"]),
+    ("slcan.rdis", "python-can", ["can.interfaces.slcan"]),
 ]
 
 
