@@ -70,6 +70,8 @@ EXPECTED_COUNTS: dict[str, dict[str, int]] = {
                                "RobotDecl": 1, "SettingDecl": 1, "StateDecl": 19},
     "examples/modbus.rdis": {"RobotDecl": 1, "EnumDecl": 1, "SettingDecl": 1, "StateDecl": 3, "ConnectionDecl": 1,
                              "FrameDecl": 1, "PrimitiveDecl": 3},
+    "examples/crsf.rdis": {"RobotDecl": 1, "StateDecl": 15, "ConnectionDecl": 1, "FrameDecl": 2, "PrimitiveDecl": 4,
+                           "InterfaceDecl": 1},
     "examples/slcan.rdis": {"RobotDecl": 1, "ConstDecl": 2, "StateDecl": 8, "ConnectionDecl": 1, "FrameDecl": 1,
                             "PrimitiveDecl": 12, "InterfaceDecl": 1},
 }
