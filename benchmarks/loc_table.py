@@ -39,6 +39,10 @@ DEVICES = [
                            "um7py.rsl_xml_svd.rsl_svd_parser"]),
     ("tfmini.rdis", "tfmini", ["tfmini.tfmini"]),
     ("sabertooth.rdis", "pysabertooth", ["pysabertooth.PySabertooth"]),
+    ("slcan.rdis", "python-can", ["can.interfaces.slcan"]),
+    ("crsf.rdis", "rpycrsf", ["rpycrsf.protocol", "rpycrsf.drone"]),  # its channels, sticks and switches
+    ("crsf.rdis", "crsf-parser", ["crsf_parser", "crsf_parser.frames", "crsf_parser.handling",
+                                  "crsf_parser.payloads"]),  # its telemetry (a CRC table of 256 lines)
 ]
 
 

@@ -269,10 +269,13 @@ says: `#(BH)`, counted by one unsigned count field `#B` (or `#H`, ...) before it
 or `*(BH)`, until the message ends, last. One such group a message, with a byte
 order (`<`, `>` or `!`). An unsigned integer code (`B`, `H`, `I`, `L`, `Q`, without
 a count, outside groups) may be split into two bit fields or more, from its lowest bit
-up, whose widths add up to its bits: `B{1,1,6}`, one value each. Wrong: `unpack
-"<B#(BH)"` (no count field), `unpack "<*(BH)B"` (not last), `unpack "<B{1,6}"` (7 of
-8 bits), `pack "<h{8,8}"` (signed). Right: `unpack "<#B#(BH)B"`, `unpack "<B*(BH)"`,
-`unpack "<B{1,1,6}H{1,15}H"`."""),
+up, whose widths add up to its bits: `B{1,1,6}`, one value each; `Ns{...}` splits
+the integer N bytes hold in the format's byte order (`<` or `>`), into one field or
+more of 1 to 64 bits (`<22s{11*16}`: sixteen fields of 11 bits; `>3s{24}`: a 3-byte
+integer). Wrong: `unpack "<B#(BH)"` (no count field), `unpack "<*(BH)B"` (not last),
+`unpack "<B{1,6}"` (7 of 8 bits), `pack "<h{8,8}"` (signed), `pack "22s{11*16}"` (no
+byte order). Right: `unpack "<#B#(BH)B"`, `unpack "<B*(BH)"`, `unpack
+"<B{1,1,6}H{1,15}H"`, `pack "<B22s{11*16}BB"`."""),
     ("E302", "format-argument-count", """
 The number of format arguments differs from the number of values the `pack` or
 `format` string takes. `pack ">Bhh"` takes three values; `format "D,{},{}"` two."""),

@@ -127,7 +127,7 @@ def _kind(layout: m.StructLayout, code: str, size: int) -> str:
         return "bytes (the rest)"
     if code.endswith("Z"):
         return "text, padded"
-    kind = _KINDS.get(code[-1], "text")
+    kind = f"u{8 * size}" if code == "s{" else _KINDS.get(code[-1], "text")  # `s{`: bytes split into bits
     if size == 1 or kind == "text":
         return kind
     return kind + {">": " BE", "!": " BE", "<": " LE"}.get(layout.order, " native")
@@ -176,7 +176,8 @@ def _rows(layout: m.StructLayout, text: Callable[[int, int | None], str],
     once, its fields with their bits; `given`, a value's own row where it has one."""
     slots = layout.slots
     groups = {first: (codes, count) for first, codes, count in layout.groups}
-    splits = {first: (code[-1], len(widths)) for first, code, widths in layout.bits}
+    splits = {first: (code[-1] + "{" if code.endswith("s") else code[-1], len(widths))
+              for first, code, widths in layout.bits}
     varying = layout.varying
     rows: list[Row] = []
     at = 0

@@ -49,7 +49,7 @@ def _joined(values: Sequence[Any], splitters: tuple[tuple[int, Bits], ...]) -> l
     out = list(values)
     for first, bits in reversed(splitters):
         end = first + len(bits.fields)
-        out[first:end] = [bits.join(out[first:end])]
+        out[first:end] = [bits.word(out[first:end])]
     return out
 
 

@@ -67,7 +67,7 @@ def struct_layout(fmt: str) -> StructLayout:
     for at, ch in enumerate(fmt):  # struct reads only ASCII (its digits, not `١`), and no line breaks
         if not ch.isascii() or ch in "\n\r\x0b\x0c":
             raise TemplateError(f"{ch!r} is not a struct format code (they are ASCII letters and digits)", at)
-    star = re.search(r"\*(?!\s*\()", fmt)
+    star = re.search(r"\*(?!\s*\()(?![^{}]*\})", fmt)  # not a group's `*(...)`, nor a width's `{11*16}`
     if star is not None:
         raise TemplateError("`*` (the rest of the message) comes last", star.start())
     order = fmt[:1] if fmt[:1] in "@=<>!" else ""
@@ -148,6 +148,7 @@ def struct_layout(fmt: str) -> StructLayout:
         if split is not None:
             widths = _bit_widths(split, order, count_text, code, len(order))
             low = 0
+            code = count_text + code  # `22s`: bytes, one integer
             splits.append((len(slots), order + code, widths))
             for width in widths:
                 slots.append(Slot(f"{code}{{{','.join(map(str, widths))}}}", Type.INT, 0, (1 << width) - 1,
@@ -221,24 +222,38 @@ def text_room(code: str) -> int:
 
 def _bit_widths(split: re.Match[str], order: str, count: str, code: str, at: int) -> tuple[int, ...]:
     """The widths of an integer code's bit fields `B{1,1,6}`: an unsigned code without a
-    count, two fields or more, every bit of the integer in one of them."""
+    count, two fields or more, every bit of the integer in one of them. `Ns{...}` splits the
+    integer that N bytes hold in the format's byte order (SBUS's and CRSF's sixteen 11-bit
+    channels in 22 bytes, least significant first: `<22s{11,...}`), into one field or more
+    (`>3s{24}`: a 3-byte integer), each of at most 64 bits, as the state keeps."""
     offset = at + split.start(1) - 1
-    if count:
+    wide = code == "s"
+    if count and not wide:
         raise TemplateError(f"a code split into bit fields has no count: `{code}{{...}}`, not `{count}{code}{{...}}`",
                             at + split.start() - len(count) - 1, len(count))
-    if code not in "BHILQ":
+    if code not in "BHILQs":
         hint = f" (signed): use `{code.upper()}`" if code in "bhilq" else ""
         raise TemplateError(f"bit fields split an unsigned integer code (`B`, `H`, `I`, `L` or `Q`), not `{code}`"
                             f"{hint}", offset - 1)
-    words = split.group(1).replace(",", " ").split()
-    if not all(word.isdigit() for word in words) or len(words) < 2:
+    if wide and order not in ("<", ">", "!"):
+        raise TemplateError("bytes split into bit fields are one integer in the format's byte order: `<` (least "
+                            "significant byte first) or `>`", offset - 1 - len(count), len(count) + 1)
+    words = re.sub(r"\s*\*\s*", "*", split.group(1)).replace(",", " ").split()
+    repeated = [word.partition("*") for word in words]  # `11*16`: sixteen fields of 11 bits, as Python's `[11] * 16`
+    if not all(width.isdigit() and (not star or times.isdigit() and 1 <= int(times) <= MAX_REPEAT)
+               for width, star, times in repeated):
         raise TemplateError("bit fields are two widths or more, from the lowest bit up: `B{1,1,6}`", offset,
                             len(split.group(1)) + 2)
-    widths = tuple(int(word) for word in words)
-    size = 8 * struct.calcsize(order + code)
-    if 0 in widths or sum(widths) != size:
-        said = "a bit field is 1 bit wide or more" if 0 in widths else \
-            f"the bit fields of `{code}` take {sum(widths)} of its {size} bits: every bit is in one field " \
+    widths = tuple(int(width) for width, star, times in repeated for _ in range(int(times) if star else 1))
+    if len(widths) < (1 if wide else 2):
+        raise TemplateError("bit fields are two widths or more, from the lowest bit up: `B{1,1,6}`" if not wide else
+                            "bytes split into bit fields take one width or more: `>3s{24}`", offset,
+                            len(split.group(1)) + 2)
+    size = 8 * struct.calcsize(order + count + code)
+    if 0 in widths or max(widths) > 64 or sum(widths) != size:
+        said = "a bit field is 1 bit wide or more" if 0 in widths else "a bit field is at most 64 bits wide" \
+            if max(widths) > 64 else \
+            f"the bit fields of `{count}{code}` take {sum(widths)} of its {size} bits: every bit is in one field " \
             "(a reserved bit too)"
         raise TemplateError(said, offset, len(split.group(1)) + 2)
     return widths

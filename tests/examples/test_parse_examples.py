@@ -78,6 +78,10 @@ EXPECTED_COUNTS: dict[str, dict[str, int]] = {
                              "PrimitiveDecl": 3, "InterfaceDecl": 2},
     "examples/sabertooth.rdis": {"RobotDecl": 1, "SettingDecl": 1, "StateDecl": 1, "ConnectionDecl": 1,
                                  "FrameDecl": 1, "PrimitiveDecl": 3, "InterfaceDecl": 3},
+    "examples/crsf.rdis": {"RobotDecl": 1, "StateDecl": 15, "ConnectionDecl": 1, "FrameDecl": 2, "PrimitiveDecl": 4,
+                           "InterfaceDecl": 1},
+    "examples/slcan.rdis": {"RobotDecl": 1, "ConstDecl": 2, "StateDecl": 8, "ConnectionDecl": 1, "FrameDecl": 1,
+                            "PrimitiveDecl": 12, "InterfaceDecl": 1},
 }
 
 SOURCES = [STDLIB, *sorted(EXAMPLES.glob("*.rdis"))]

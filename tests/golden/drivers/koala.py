@@ -909,11 +909,14 @@ class Bits:
     whose value is the payload's size plus `adjust`). A frame's `bits` part, and an integer of
     a primitive's struct format split into bit fields (`Split`)."""
 
-    __slots__ = ("adjust", "fields", "has_length", "most", "struct")
+    __slots__ = ("adjust", "fields", "has_length", "most", "order", "struct")
 
     def __init__(self, fmt: str, fields: Sequence[tuple[str, int, int]], adjust: int = 0) -> None:
-        """`fields`: (name, width, index) from the lowest bits up."""
+        """`fields`: (name, width, index) from the lowest bits up. A format of bytes (`<22s`) holds
+        the integer those bytes make in its byte order (`order`)."""
         self.struct = struct.Struct(fmt)
+        self.order: Literal["little", "big"] | None = (
+            ("big" if fmt.startswith((">", "!")) else "little") if fmt.endswith("s") else None)
         self.adjust = adjust
         out = []
         shift = 0
@@ -926,8 +929,13 @@ class Bits:
         self.most = (1 << widths[0]) - 1 - adjust if widths else math.inf
 
     def put(self, payload: bytes, fields: Sequence[int], chunks: list[bytes]) -> bytes:
-        return self.struct.pack(self.join([len(payload) + self.adjust if index < 0 else fields[index]
+        return self.struct.pack(self.word([len(payload) + self.adjust if index < 0 else fields[index]
                                            for _, _, _, index in self.fields]))
+
+    def word(self, values: Sequence[int]) -> int | bytes:
+        """What the struct module packs for these fields: their integer, or its bytes."""
+        joined = self.join(values)
+        return joined if self.order is None else joined.to_bytes(self.struct.size, self.order)
 
     def join(self, values: Sequence[int]) -> int:
         """The integer holding `values`, one a field from the lowest bits up; a value that does
@@ -939,8 +947,10 @@ class Bits:
             joined |= value << shift
         return joined
 
-    def split(self, value: int) -> list[int]:
+    def split(self, value: int | bytes) -> list[int]:
         """The integer's fields, from its lowest bits up."""
+        if not isinstance(value, int):
+            value = int.from_bytes(value, self.order or "little")
         return [(value >> shift) & ((1 << width) - 1) for _, shift, width, _ in self.fields]
 
     def stated(self, data: bytes | bytearray, at: int) -> int:
@@ -1168,7 +1178,7 @@ def _joined(values: Sequence[Any], splitters: tuple[tuple[int, Bits], ...]) -> l
     out = list(values)
     for first, bits in reversed(splitters):
         end = first + len(bits.fields)
-        out[first:end] = [bits.join(out[first:end])]
+        out[first:end] = [bits.word(out[first:end])]
     return out
 
 
