@@ -43,6 +43,13 @@ in this process and this run (the targets are issue 21's):
    - the generated driver's `robot.primitives.sensors()` (target: within 1.2x of the baseline,
      and faster than pycreate2) and the runtime's; the values they store are the baseline's.
 
+What the ways do besides the baseline is printed under each title: the typed method tests each
+value's type (an int for a float field goes the general way, which widens it), and the engine
+writes under the port's lock (with its closed and I/O-callback tests), resets the input before
+an exchange and stores a reply's values as a new state snapshot under the state lock. The row
+"the engine's own part" is that alone: `robot._write` (or `robot._ask`) of the request made
+beforehand, the least any way through the engine costs.
+
 Every way is called as the others are, through one function call per command.
 Each figure is the best of --repeat runs of --calls calls, the ways interleaved so
 that drift hits them alike; a run is timed by this process's CPU time, so that other
@@ -55,10 +62,12 @@ other bytes than the manual's, which is a bug).
 from __future__ import annotations
 
 import argparse
+import itertools
 import re
 import struct
 import sys
 import tempfile
+import textwrap
 import time
 import timeit
 from collections.abc import Callable, Sequence
@@ -222,6 +231,25 @@ class Bench:
     title: str
     rows: Sequence[tuple[Any, ...]]  # the arguments of each call, in turn
     ways: list[Way]  # the baseline first
+    fair: str = ""  # what the baseline does, and what the other ways do besides
+
+
+def engine_part(robot: Any, port: DiscardingPort, primitive: str, baseline: Way,
+                rows: Sequence[tuple[Any, ...]]) -> Way:
+    """The engine's own part of a command: `robot`'s write (into `port`) of the request the
+    baseline makes for a row, made beforehand (the port's lock, the closed and I/O-callback tests,
+    the port's write): the least any way through the engine costs."""
+    made = []
+    for row in rows:
+        baseline.call(*row)
+        made.append(baseline.port.last)
+    requests, plan, write = itertools.cycle(made), robot.device.primitives[primitive], robot._write
+    return Way("the engine's own part, robot._write(plan, bytes)", lambda *row: write(plan, next(requests)), port,
+               None)  # the rows are called in turn, and so are their requests
+
+
+LOCKED = ("the generated driver besides: each value's type tested, the write under the port's lock "
+          "(and its closed and I/O-callback tests)")
 
 
 def zero_delay_copy(folder: Path) -> Path:
@@ -235,18 +263,21 @@ def create_bench(folder: Path) -> Bench:
     port, driver_port, runtime_port = DiscardingPort(), DiscardingPort(), DiscardingPort()
     driver = import_driver(source, folder, "create_driver").connect(driver_port, threads=False)
     runtime = load(source).connect(runtime_port, threads=False)
+    baseline = Way("baseline (hand-written struct.pack + write)",
+                   lambda linear, angular: set_velocity(port, linear=linear, angular=angular), port, None)
     return Bench(
         "set_velocity (Table 4.3 inputs in turn, zero delays)",
         TABLE_4_3,
         [
-            Way("baseline (hand-written struct.pack + write)",
-                lambda linear, angular: set_velocity(port, linear=linear, angular=angular), port, None),
+            baseline,
             Way("generated driver, robot.set_velocity(...)",
                 lambda linear, angular: driver.set_velocity(linear=linear, angular=angular), driver_port, 1.2),
+            engine_part(driver, driver_port, "drive", baseline, TABLE_4_3),
             Way("rdisc runtime, robot.call_input(...)",
                 lambda linear, angular: runtime.call_input("set_velocity", linear=linear, angular=angular),
                 runtime_port, 3.0),
         ],
+        "the baseline: the input's arithmetic, one struct.pack, the port's write (no type test, no lock); " + LOCKED,
     )
 
 
@@ -254,20 +285,23 @@ def ax12_bench(folder: Path) -> Bench:
     port, driver_port, runtime_port = DiscardingPort(), DiscardingPort(), DiscardingPort()
     driver = import_driver(AX12, folder, "ax12_driver").connect(driver_port, threads=False)
     runtime = load(AX12).connect(runtime_port, threads=False)
+    baseline = Way("baseline (hand-written struct.pack + checksum)", lambda goal: goto_all(port, goal), port, None)
     return Bench(
         "AX-12 goto_all, a framed broadcast write (goals 0, 512, 1023 in turn)",
         GOALS,
         [
-            Way("baseline (hand-written struct.pack + checksum)", lambda goal: goto_all(port, goal), port, None),
+            baseline,
             Way("generated driver, robot.call_primitive(...)",
                 lambda goal: driver.call_primitive("goto_all", goal), driver_port, 1.5),
             Way("generated driver, robot.primitives.goto_all(...)",
                 lambda goal: driver.primitives.goto_all(goal), driver_port, 1.5),
+            engine_part(driver, driver_port, "goto_all", baseline, GOALS),
             Way("rdisc runtime, robot.call_primitive(...)",
                 lambda goal: runtime.call_primitive("goto_all", goal), runtime_port, 3.0),
             Way("rdisc runtime, robot.primitives.goto_all(...)",
                 lambda goal: runtime.primitives.goto_all(goal), runtime_port, 3.0),
         ],
+        "the baseline: the goal's range test, one struct.pack, the port's write (no type test, no lock); " + LOCKED,
     )
 
 
@@ -290,18 +324,22 @@ def create2_bench(folder: Path) -> Bench:
     port, theirs, driver_port, runtime_port = DiscardingPort(), DiscardingPort(), DiscardingPort(), DiscardingPort()
     driver = import_driver(CREATE2, folder, "create2_driver").connect(driver_port, threads=False)
     runtime = load(CREATE2).connect(runtime_port, threads=False)
-    ways = [Way("baseline (hand-written struct.pack + write)",
-                lambda right, left: drive_direct(port, right, left), port, None)]
+    baseline = Way("baseline (hand-written struct.pack + write)", lambda right, left: drive_direct(port, right, left),
+                   port, None)
+    ways = [baseline]
     bot = pycreate2_robot(theirs)
     if bot is not None:
         ways.append(Way("pycreate2, Create2.drive_direct(...)", bot.drive_direct, theirs, None))
     ways += [
         Way("generated driver, robot.primitives.drive_direct(...)", driver.primitives.drive_direct, driver_port,
             1.0 if bot is not None else None, "pycreate2, Create2.drive_direct(...)" if bot is not None else None),
+        engine_part(driver, driver_port, "drive_direct", baseline, WHEELS),
         Way("rdisc runtime, robot.primitives.drive_direct(...)", runtime.primitives.drive_direct, runtime_port,
             None),
     ]
-    return Bench("Create 2 drive_direct, two wheel speeds (three pairs in turn)", WHEELS, ways)
+    return Bench("Create 2 drive_direct, two wheel speeds (three pairs in turn)", WHEELS, ways,
+                 "the baseline: both speeds' range test, one struct.pack, the port's write (no type test, no lock); "
+                 "pycreate2: a clamp, no lock; " + LOCKED)
 
 
 def sensors_bench(folder: Path) -> Bench | None:
@@ -323,12 +361,19 @@ def sensors_bench(folder: Path) -> Bench | None:
 
         api.time = type("NoSleep", (), {"sleep": staticmethod(lambda seconds: None)})  # its 15 ms wait
         ways.append(Way("pycreate2, Create2.get_sensors()", bot.get_sensors, theirs, None))
+    plan = driver.device.primitives["sensors"]
     ways += [
         Way("generated driver, robot.primitives.sensors()", driver.primitives.sensors, driver_port, 1.2,
             beats="pycreate2, Create2.get_sensors()" if bot is not None else None),
+        Way("the engine's own part, robot._ask(plan, bytes, [])", lambda: driver._ask(plan, b"\x8e\x64", []),
+            driver_port, None),
         Way("rdisc runtime, robot.primitives.sensors()", runtime.primitives.sensors, runtime_port, None),
     ]
-    return Bench("Create 2 sensors, packet 100 (80 bytes read and decoded)", [()], ways)
+    return Bench("Create 2 sensors, packet 100 (80 bytes read and decoded)", [()], ways,
+                 "the baseline: the write, one read, the length test, one struct.unpack, a dict of the values "
+                 "returned (no lock); pycreate2: no test of the length, namedtuples; the generated driver besides: "
+                 "the exchange under the port's lock, the input reset before the write, the values stored as a "
+                 "new state snapshot under the state lock")
 
 
 def same_bytes(bench: Bench) -> bool:
@@ -363,6 +408,8 @@ def report(bench: Bench, calls: int, repeat: int) -> None:
             best[way.label] = min(best[way.label], per_call_ns(way.call, bench.rows, calls))
     base = best[bench.ways[0].label]
     print(f"{bench.title}:")
+    if bench.fair:
+        print("\n".join(textwrap.wrap(f"({bench.fair})", 108, initial_indent="  ", subsequent_indent="   ")))
     for way in bench.ways:
         line = f"  {way.label:<54}{best[way.label]:8.0f} ns   {best[way.label] / base:5.2f}x baseline"
         if way.target is not None:

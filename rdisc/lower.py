@@ -42,6 +42,9 @@ from rdisc.semantics.ros import header_frames
 __all__ = ["Call", "Code", "Connection", "Device", "ErrorReply", "Frame", "FrameUse", "Gives", "Hook", "Input", "Interface",
            "Output", "Plans", "Primitive", "Written", "frame", "lower"]
 
+LOWERED_ONLY = "lowered only"
+"""The metadata key of a plan's field that its engine counterpart does not take."""
+
 Item = tuple[str, m.Expr, m.AnyType | None]
 """What a Code returns, one item: its key (a dict's key; in a list, "*" for an array given
 element by element, else ""), the expression, the type its value is bound to (None: as it is)."""
@@ -105,7 +108,8 @@ class FrameUse:
 
 @dataclass(frozen=True, slots=True, eq=False)
 class Written:
-    """A primitive only written, in one step (the engine's `Primitive.request`): its parameters
+    """A primitive's request in one step, when it is only written (the engine's `Primitive.request`)
+    or a plain exchange's (`Primitive.asked`, no frame): its parameters
     each of its own type and in its range, its format values packed with `format`, between the
     frame's constant bytes (its arguments constants, the payload's size fixed): `head`, the
     checksum after the payload (if any) over `covered` (the head's bytes it covers) and the
@@ -277,6 +281,9 @@ class Primitive:
     lines: Code | None = None
     request: Written | None = None
     looks_up: bool = False
+    # A plain exchange's request in one step (`engine.asked_at_once`): the engine makes its own,
+    # and a driver's typed method compiles this one (`LOWERED_ONLY`: no argument of engine.Primitive).
+    asked: Written | None = field(default=None, metadata={LOWERED_ONLY: True})
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -411,7 +418,7 @@ class _Lowering:
         entry's once, for each of its values), chosen by a parameter or by the reply's tag."""
         if p.table is None:
             plan = self.single(p, p.reply_locals())
-            return dataclasses.replace(plan, request=_written(plan, p.params))
+            return dataclasses.replace(plan, request=_written(plan, p.params), asked=_asked(plan, p.params))
         plain = self.single(dataclasses.replace(p, table=None), p.reply_locals())
         table = tuple(Entry(c, self.reply(plain, p.case(c), p.reply_locals())) for c in p.table.cases)
         if p.table.tag is None:
@@ -587,15 +594,42 @@ def _written(plan: Primitive, params: tuple[m.Parameter, ...]) -> Written | None
     sent = engine.sent_at_once(encoder=encoder, replies=not isinstance(plan.reply, NoReply),
                                acts=plan.actions is not None or plan.lines is not None,
                                dependent=any(prm.limits is not None for prm in params))
-    if not sent or not isinstance(encoder, engine.Pack) or encoder.groups or encoder.varying \
+    if not sent:
+        return None
+    written = _packed(plan, params)
+    assert isinstance(encoder, engine.Pack)  # `sent`
+    folded = written if plan.frame is None or written is None else _folded(written, plan.frame, encoder.struct.size)
+    return None if folded is None else _constant(folded, encoder)
+
+
+def _asked(plan: Primitive, params: tuple[m.Parameter, ...]) -> Written | None:
+    """A plain exchange's request in one step (`engine.asked_at_once`), when its values are packed
+    as they are, its parameters' ranges not reading each other."""
+    encoder = None if plan.encoder is None else plan.encoder.value
+    reply = plan.reply
+    decoder = reply.decoder.value if isinstance(reply, FixedReply) and reply.error is None else None
+    asked = engine.asked_at_once(encoder=encoder, framed=plan.frame is not None, lines=plan.lines is not None,
+                                 retries=plan.retries, decoder=decoder)
+    written = _packed(plan, params) if asked and not any(prm.limits is not None for prm in params) else None
+    return None if written is None or encoder is None else _constant(written, encoder)
+
+
+def _packed(plan: Primitive, params: tuple[m.Parameter, ...]) -> Written | None:
+    """A request whose values one struct packs as they are (no groups, varying counts, arrays)."""
+    encoder = None if plan.encoder is None else plan.encoder.value
+    if not isinstance(encoder, engine.Pack) or encoder.groups or encoder.varying \
             or any(key == "*" for key, _, _ in plan.values.items) or any(isinstance(prm.type, m.Array) for prm in params):
         return None
-    written = Written(params, plan.values, encoder.struct.format)
-    folded = written if plan.frame is None else _folded(written, plan.frame, encoder.struct.size)
-    if folded is None or params or not all(isinstance(e, m.Const) for _, e, _ in plan.values.items):
+    return Written(params, plan.values, encoder.struct.format)
+
+
+def _constant(folded: Written, encoder: engine.Pack | engine.Format) -> Written:
+    """`folded` with its whole request, when that is always the same bytes (no parameters, constant values)."""
+    assert isinstance(encoder, engine.Pack)
+    if folded.params or not all(isinstance(e, m.Const) for _, e, _ in folded.values.items):
         return folded
     try:
-        payload = encoder.struct.pack(*(e.value for _, e, _ in plan.values.items if isinstance(e, m.Const)))
+        payload = encoder.struct.pack(*(e.value for _, e, _ in folded.values.items if isinstance(e, m.Const)))
     except struct.error:
         return folded  # the general way says what is wrong, each time
     check = b""

@@ -32,7 +32,7 @@ from rdisc.emit import python_support as support
 from rdisc.emit.canonical import range_written
 from rdisc.emit.python_expr import Chain, Compiler, Paren, Py, binary, lines, literal, quoted, table_name
 from rdisc.emit.python_expr import call as function_call
-from rdisc.emit.python_frame import WholeFrame, byte_terms, whole_frame
+from rdisc.emit.python_frame import OneStep, byte_terms, reads_state, type_tests, whole_frame
 from rdisc.emit.writer import Writer, printable
 from rdisc.engine import carry
 from rdisc.lower import lower
@@ -221,7 +221,8 @@ class _Driver:
             for name in names
         }
         self.names: dict[object, str] = {}  # each plan and Code written: the name it has in the module
-        self.one_step: dict[tuple[str, str], str] = {}  # ("input" or "primitive", name): its one-step function
+        self.one_step: dict[tuple[str, str], OneStep] = {}  # ("input" or "primitive", name): its request in one step
+        self.slots: dict[tuple[str, str], str] = {}  # ("input" or "primitive", name): the engine's one-step function
         self.input_methods: dict[str, str] = {}
         for name in model.inputs:
             self.input_methods[name] = _escape(name, _robot_members() | set(self.input_methods.values()))
@@ -374,7 +375,7 @@ class _Driver:
             self.code(w, f"_in_{i.name}", plan.args)
             request = {"request": self.request(w, i, plan)} if plan.request else {}
             if request:
-                self.one_step["input", i.name] = request["request"]
+                self.slots["input", i.name] = request["request"]
             w.blank(2)
             self.constant(w, self.plan["input", i.name], plan, request)
         for c in model.connections.values():
@@ -442,6 +443,8 @@ class _Driver:
         positional: list[tuple[str, bool]] = []
         options: dict[str, str] = {}
         for f in dataclasses.fields(made):  # type: ignore[arg-type]
+            if f.metadata.get(lowering.LOWERED_ONLY):
+                continue
             value = getattr(made, f.name)
             default = f.default_factory() if f.default_factory is not dataclasses.MISSING else f.default
             text = given.get(f.name) or self.text(value)
@@ -499,10 +502,11 @@ class _Driver:
         pack = _constant_name(f"PACK_{i.name}", self.taken)
         w.blank(2)
         w.line(f"{pack} = struct.Struct({quoted(call.target.encoder.args[0])}).pack")
-        fields, iface_params = plan.args.params, call.args.params
+        fields = plan.args.params
+        step = OneStep("_write", self.names[call.target], "_input_in_full", self.plan["input", i.name], fields,
+                       pack, input=plan)
+        self.one_step["input", i.name] = step
         local = _params([(f.name, f.type) for f in fields])
-        inner = _params([(prm.name, prm.type) for prm in iface_params], _body_names() | set(local.values()))
-        used = set().union(*(_names(e) for _, e, _ in call.args.items))
         function = f"_request_{i.name}"
         w.blank(2)
         w.line(f"# input {i.name}, written at once")
@@ -510,17 +514,10 @@ class _Driver:
             names = [local[f.name] for f in fields]
             if names:
                 w.line(f"({names[0]},) = args" if len(names) == 1 else f"{', '.join(names)} = args")
-                checks = " or ".join(f"type({n}) is not {_PY_TYPES[f.type] if isinstance(f.type, Type) else 'tuple'}"
-                                    for n, f in zip(names, fields))
-                with w.block(f"if {checks}:"):
+                with w.block(f"if {' or '.join(type_tests(names, fields, refused=True))}:"):
                     w.line("return None")
             with w.block("try:"):
-                if iface_params:
-                    targets = [inner[prm.name] if prm.name in used else "_" for prm in iface_params]
-                    bound = [self.exprs.bound(e, prm.type, local) for (_, e, _), prm in zip(plan.args.items, iface_params)]
-                    _items(w, f"{', '.join(targets)} = ", "(", bound, ")" if len(bound) > 1 else "")
-                packed = [self.exprs.packed(e, t, inner) for _, e, t in call.args.items]
-                _items(w, "return ", f"{pack}(", packed, ")")
+                self.packing(w, step, local, "return ")
             with w.block("except Exception:  # noqa: BLE001 - the general way says what is wrong"):
                 w.line("return None")
         return function
@@ -572,11 +569,13 @@ class _Driver:
                 else:
                     texts.append(f"**{{({case.under}, tag): {name} for tag in {case.values()!r}}}")
             if entry.request is not None:
-                function = self.written(w, prim, entry.request)
+                step = self.written(w, prim, entry.request, "_write")
                 if case is None:
-                    self.one_step["primitive", prim.name] = function
-                self.constant(w, name, entry, {"request": function})
+                    self.one_step["primitive", prim.name] = step
+                self.constant(w, name, entry, {"request": f"_p_{prim.name}_request"})
                 continue
+            if case is None and entry.asked is not None:  # a plain exchange: its typed method packs its request
+                self.one_step["primitive", prim.name] = self.written(w, prim, entry.asked, "_ask")
             self.constant(w, name, entry)
         if table is not None:
             self.names[table] = "{" + ", ".join(texts) + "}"
@@ -590,33 +589,43 @@ class _Driver:
             w.blank(2)
             self.constant(w, const, plan)
 
-    def written(self, w: Writer, prim: m.Primitive, written: lowering.Written) -> str:
-        """The primitive's request in one step (the engine's `Primitive.request`), as the lowering
-        describes it: its parameters checked, its values packed between the frame's constant
-        bytes, the checksum added to. Returns the function's name (the blank lines after it written)."""
-        function = f"_p_{prim.name}_request"
+    def written(self, w: Writer, prim: m.Primitive, written: lowering.Written, way: str) -> OneStep:
+        """The primitive's request in one step, as the lowering describes it: its parameters
+        checked, its values packed between the frame's constant bytes, the checksum added to.
+        Only written (`way` "_write"), also the engine's `Primitive.request` (`_p_NAME_request`);
+        a plain exchange (`way` "_ask") only its typed method's. Blank lines written after."""
+        plan = self.plan["primitive", prim.name]
         if written.constant is not None:
-            with w.block(f"def {function}(state: StateValues, args: Args) -> bytes | None:"):
-                w.line(f'"""{prim.name}, only written: always these bytes (given arguments, the general way decides)."""')
-                w.line(f"return None if args else {quoted(written.constant)}")
-            w.blank(2)
-            return function
-        local = _params([(prm.name, prm.type) for prm in written.params])
+            step = OneStep(way, plan, "_call_primitive", plan, written.params, written=written)
+            if way == "_write":
+                self.slots["primitive", prim.name] = function = f"_p_{prim.name}_request"
+                with w.block(f"def {function}(state: StateValues, args: Args) -> bytes | None:"):
+                    w.line(f'"""{prim.name}, only written: always these bytes (given arguments, the general way '
+                           'decides)."""')
+                    w.line(f"return None if args else {quoted(written.constant)}")
+                w.blank(2)
+            return step
         whole = whole_frame(prim.encoding, written)
         pack = _constant_name(f"PACK_{prim.name}", self.taken)
         w.line(f"{pack} = struct.Struct({quoted(whole.format if whole else written.format)}).pack")
-        checked = ""
+        checked = ("", "")
         if whole is None and written.checksum is not None:
             check = _constant_name(f"PACK_{prim.name}_CHECKSUM", self.taken)
             w.line(f"{check} = struct.Struct({quoted(written.check_format)}).pack")
             if written.partial is not None:  # a sum: the constant bytes' summed here
-                checked = f"{check}({_summed(written.checksum.value, [f'{written.partial:#x}', 'sum(payload)'])})"
+                before, after = _summed(written.checksum.value, [f"{written.partial:#x}", "sum(\0)"]).split("\0")
+                checked = (f"{check}({before}", f"{after})")
             else:
                 function_of = _constant_name(f"CHECKSUM_{prim.name}", self.taken)
                 w.line(f"{function_of} = {self.text(written.checksum)}")
-                covered = f"{quoted(written.covered)} + payload" if written.covered else "payload"
-                checked = f"{check}({function_of}({covered}))"
+                covered = f"{quoted(written.covered)} + " if written.covered else ""
+                checked = (f"{check}({function_of}({covered}", "))")
         w.blank(2)
+        step = OneStep(way, plan, "_call_primitive", plan, written.params, pack, written, whole, checked)
+        if way != "_write":
+            return step
+        self.slots["primitive", prim.name] = function = f"_p_{prim.name}_request"
+        local = _params([(prm.name, prm.type) for prm in written.params])
         with w.block(f"def {function}(state: StateValues, args: Args) -> bytes | None:"):
             w.line(f'"""{prim.name}, only written: its request in one step (None: the general way decides)."""')
             with w.block("try:"):
@@ -626,40 +635,57 @@ class _Driver:
                         w.line("return None")
                 else:
                     w.line(f"({names[0]},) = args" if len(names) == 1 else f"{', '.join(names)} = args")
-                tests = []
-                for name, prm in zip(names, written.params):
-                    test = f"type({name}) is not {_PY_TYPES[prm.type] if isinstance(prm.type, Type) else 'tuple'}"
-                    if prm.low is not None and prm.high is not None:  # bytes: their length
-                        measured, bound = (f"len({name})", Type.INT) if prm.type == Type.BYTES else (name, prm.type)
-                        test += (f" or not {literal(prm.low, bound).text} <= {measured} <= "
-                                 f"{literal(prm.high, bound).text}")
-                    tests.append(test)
+                tests = type_tests(names, written.params, refused=True)
                 together = f"if {' or '.join(tests)}:"
                 for test in [] if not tests else [together] if len(together) <= w.width() - 8 else [
                         f"if {test}:" for test in tests]:
                     with w.block(test):  # one test, or one a parameter
                         w.line("return None")
-                packed = [self.exprs.packed(e, t, local) for _, e, t in written.values.items]
-                framed = whole is None and bool(written.head or checked or written.tail)
-                if whole is not None:
-                    self.whole(w, pack, written, whole, packed, local)
-                else:
-                    _items(w, "payload = " if framed else "return ", f"{pack}(", packed, ")")
+                self.packing(w, step, local, "return ")
             with w.block("except Exception:  # noqa: BLE001 - the general way says what is wrong"):
                 w.line("return None")
-            if framed:
-                pieces = [quoted(written.head)] if written.head else []
-                pieces += ["payload"] + ([checked] if checked else []) + ([quoted(written.tail)] if written.tail else [])
-                w.line(f"return {' + '.join(pieces)}")
         w.blank(2)
-        return function
+        return step
 
-    def whole(self, w: Writer, pack: str, written: lowering.Written, whole: WholeFrame, packed: list[Py],
-              local: Mapping[str, str]) -> None:
-        """`return PACK(head, values..., checksum, tail)`: a sum checksum of the values' bytes, each
-        value computed once (a name where it is more than a name or a constant)."""
-        sums: list[Py] = []
+    def packing(self, w: Writer, step: OneStep, local: Mapping[str, str], target: str) -> None:
+        """The statements of a one-step request, the values already tested: the last one `target`
+        (`return ` or `request = `) the bytes. `local`: the parameters' (or fields') names."""
         taken = set(local.values()) | _body_names()
+        if step.input is not None:
+            (call,) = step.input.interface.calls
+            iface_params = call.args.params
+            inner = _params([(prm.name, prm.type) for prm in iface_params], frozenset(taken | {"request"}))
+            used = set().union(*(_names(e) for _, e, _ in call.args.items))
+            if iface_params:
+                targets = [inner[prm.name] if prm.name in used else "_" for prm in iface_params]
+                bound = [self.exprs.bound(e, prm.type, local) for (_, e, _), prm in zip(step.input.args.items, iface_params)]
+                _items(w, f"{', '.join(targets)} = ", "(", bound, ")" if len(bound) > 1 else "")
+            packed = [self.exprs.packed(e, t, inner) for _, e, t in call.args.items]
+            _items(w, target, f"{step.pack}(", packed, ")")
+            return
+        written = step.written
+        assert written is not None
+        packed = [self.exprs.packed(e, t, local) for _, e, t in written.values.items]
+        if step.whole is not None:
+            self.whole(w, step, packed, taken, target)
+            return
+        if not (written.head or step.checked[0] or written.tail):
+            _items(w, target, f"{step.pack}(", packed, ")")
+            return
+        payload = _escape("payload", taken)
+        _items(w, f"{payload} = ", f"{step.pack}(", packed, ")")
+        pieces = [quoted(written.head)] if written.head else []
+        pieces += [payload] + ([payload.join(step.checked)] if step.checked[0] else [])
+        pieces += [quoted(written.tail)] if written.tail else []
+        w.line(f"{target}{' + '.join(pieces)}")
+
+    def whole(self, w: Writer, step: OneStep, packed: list[Py], taken: set[str], target: str) -> None:
+        """`target PACK(head, values..., checksum, tail)`: a sum checksum of the values' bytes, each
+        value computed once (a name where it is more than a name or a constant)."""
+        written, whole = step.written, step.whole
+        assert written is not None and whole is not None
+        sums: list[Py] = []
+        taken = taken | {"request"}
         if whole.partial is not None:
             for n, ((_, e, _), value, slot) in enumerate(zip(written.values.items, packed, whole.slots), 1):
                 if isinstance(e, m.Const):
@@ -684,7 +710,7 @@ class _Driver:
             values.append(Py(checksum, p.ATOM))
         if written.tail:
             values.append(Py(quoted(written.tail), p.ATOM))
-        _items(w, "return ", f"{pack}(", values, ")")
+        _items(w, target, f"{step.pack}(", values, ")")
 
     def interface(self, w: Writer, iface: m.Interface, plan: lowering.Interface) -> None:
         self.comment(w, iface.span, f"interface {iface.name}" + (" (periodic)" if iface.periodic else ""))
@@ -761,15 +787,15 @@ class _Driver:
             with w.block("def __init__(self, *, timeout: float = 1.0) -> None:"):
                 w.line('"""A robot not connected yet: `open()` connects it. `timeout`: seconds a reply may take."""')
                 w.line("super().__init__(_DEVICE, timeout=timeout)")
-                w.line(f"self._typed = ({cls}Inputs(self), {cls}Interfaces(self), {cls}Primitives(self))")
             for member, returns, body, doc_ in (
                 ("state", f"{cls}State", f"{cls}State(self._state)", "The state variables now: an immutable snapshot."),
-                ("inputs", f"{cls}Inputs", "self._typed[0]", "The domain inputs, as typed methods."),
-                ("interfaces", f"{cls}Interfaces", "self._typed[1]", "The interfaces, as typed methods."),
-                ("primitives", f"{cls}Primitives", "self._typed[2]", "The primitives, as typed methods."),
+                ("inputs", f"{cls}Inputs", f"{cls}Inputs(self)", "The domain inputs, as typed methods."),
+                ("interfaces", f"{cls}Interfaces", f"{cls}Interfaces(self)", "The interfaces, as typed methods."),
+                ("primitives", f"{cls}Primitives", f"{cls}Primitives(self)", "The primitives, as typed methods."),
             ):
                 w.blank(1)
-                w.line("@property")
+                # made once, then an attribute of the robot's: read by every typed call
+                w.line("@property" if member == "state" else "@functools.cached_property")
                 with w.block(f"def {member}(self) -> {returns}:"):
                     w.line(f'"""{doc_}"""')
                     w.line(f"return {body}")
@@ -815,8 +841,11 @@ class _Driver:
                     about = f": {f.doc.splitlines()[0]}" if f.doc else ""
                     doc.append(f"    {local[f.name]}{unit}{about}")
             w.line(_docstring("\n".join(doc)))
-            values = ", ".join(local[f.name] for f in adapter.fields)
-            self.runs(w, "input", i.name, robot, values, set(local.values()))
+            if robot != "self" and self.inline(self.one_step.get(("input", i.name)), local):
+                # the robot's method of the same input: the request in one step is written there
+                w.line(f"{robot}.{self.input_methods[i.name]}({', '.join(local[f.name] for f in adapter.fields)})")
+                return
+            self.runs(w, "input", i.name, robot, local)
 
     def call_method(self, w: Writer, kind: str, name: str, method: str) -> None:
         element = self.model.interfaces[name] if kind == "interface" else self.model.primitives[name]
@@ -833,26 +862,80 @@ class _Driver:
             if units:
                 doc += ["", "Units (as the device takes them):", *units]
             w.line(_docstring("\n".join(doc)))
-            values = ", ".join(local[prm.name] for prm in element.params)
-            self.runs(w, kind, name, "self._robot", values, set(local.values()))
+            self.runs(w, kind, name, "self._robot", local)
 
-    def runs(self, w: Writer, kind: str, name: str, robot: str, values: str, params: set[str]) -> None:
-        """A typed method's body: an input or primitive with a one-step function calls it and hands
-        the robot its request (`Robot._send`: None, and the general way says what is wrong);
-        else the robot runs the element the general way."""
-        plan, function = self.plan[kind, name], self.one_step.get((kind, name))
+    def runs(self, w: Writer, kind: str, name: str, robot: str, local: Mapping[str, str]) -> None:
+        """A typed method's body: an input or primitive with a request in one step makes it here
+        (its values tested, packed by its struct) and hands it to the robot's write or plain
+        exchange, else (values it does not take, or not on ports) the robot runs it the general
+        way, which says what is wrong; any other element the general way."""
+        plan, step = self.plan[kind, name], self.one_step.get((kind, name))
+        values = ", ".join(local.values())
+        if step is not None and self.inline(step, local):
+            self.inline_body(w, step, robot, local)
+            return
+        function = self.slots.get((kind, name))
         if function is None:
             w.line(f"{robot}._{'input' if kind == 'input' else f'call_{kind}'}({plan}, [{values}])")
             return
+        params = set(local.values())
         listed = _escape("values", params) if values else "[]"  # (an empty list twice: mypy infers no type of [])
         if robot != "self":
-            local = _escape("robot", params | {listed})
-            w.line(f"{local}, {listed} = {robot}, [{values}]" if values else f"{local} = {robot}")
-            robot = local
+            named = _escape("robot", params | {listed})
+            w.line(f"{named}, {listed} = {robot}, [{values}]" if values else f"{named} = {robot}")
+            robot = named
         elif values:
             w.line(f"{listed} = [{values}]")
         sends = "_send_input" if kind == "input" else "_send"
         w.line(f"{robot}.{sends}({plan}, {function}({robot}._state, {listed}), {listed})")
+
+    @staticmethod
+    def inline(step: OneStep | None, local: Mapping[str, str]) -> bool:
+        """Whether a typed method makes its request itself: none of its parameters' names hides
+        a name the request's statements use (`_body_names()`, the module's `_` names, `robot`...)."""
+        hidden = _body_names() | {"robot", "request", "tuple", "sum"}
+        return step is not None and not any(name in hidden or name.startswith("_") for name in local.values())
+
+    def inline_body(self, w: Writer, step: OneStep, robot: str, local: Mapping[str, str]) -> None:
+        """The statements of a typed method that makes its request in one step (`OneStep`)."""
+        values = ", ".join(local.values())
+        asked = f", [{values}]" if step.way == "_ask" else ""  # the plain exchange's post-actions read them
+        if robot != "self":
+            w.line(f"robot = {robot}")
+            robot = "robot"
+        general = f"{robot}.{step.general}({step.plan}, [{values}])"
+        constant = step.written.constant if step.written is not None else None
+        if constant is not None:
+            with w.block(f"if {robot}._direct:"):
+                w.line(f"{robot}.{step.way}({step.target}, {quoted(constant)}{asked})")
+            with w.block("else:"):
+                w.line(general)
+            return
+        if step.input is not None:
+            exprs = [e for _, e, _ in (*step.input.args.items, *step.input.interface.calls[0].args.items)]
+        else:
+            assert step.written is not None
+            exprs = [e for _, e, _ in step.written.values.items]
+        if reads_state(exprs):
+            w.line(f"state = {robot}._state")
+        tests = [f"{robot}._direct", *type_tests([local[prm.name] for prm in step.params], step.params, refused=False)]
+        condition = f"if {' and '.join(tests)}:"
+        if len(condition) > w.width():
+            w.line("if (")
+            with w.indented():
+                w.lines([tests[0], *(f"and {test}" for test in tests[1:])])
+            w.line("):")
+        else:
+            w.line(condition)
+        with w.indented():
+            with w.block("try:"):
+                self.packing(w, step, local, "request = ")
+            with w.block("except Exception:  # noqa: BLE001, S110 - not taken here: the general way says why"):
+                w.line("pass")
+            with w.block("else:"):
+                w.line(f"{robot}.{step.way}({step.target}, request{asked})")
+                w.line("return")
+        w.line(general)
 
     def connect_function(self, w: Writer) -> None:
         own = ("port", "timeout", "threads", "on_output", "on_error", "on_io", "sim", "robot", self.cls)

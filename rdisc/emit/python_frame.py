@@ -17,7 +17,9 @@ import struct
 from dataclasses import dataclass
 
 from rdisc import lower as lowering
+from rdisc.emit.python_expr import literal
 from rdisc.semantics import model as m
+from rdisc.semantics.model import Type
 
 _INTEGER_CODES = frozenset("bBhHiIlLqQ")
 _STANDARD = {"<": "<", ">": ">", "!": ">", "=": "="}  # byte orders with standard sizes and no alignment
@@ -76,3 +78,46 @@ def byte_terms(name: str, slot: m.Slot) -> list[str]:
         last = byte == size - 1 and not signed
         terms.append(f"({name} >> {8 * byte})" if last else f"({name} >> {8 * byte} & 0xff)")
     return terms
+
+
+@dataclass(frozen=True, slots=True)
+class OneStep:
+    """A request a typed method makes in one step and hands to the engine's write (`Robot._write`)
+    or plain exchange (`Robot._ask`), as the lowering planned it: a primitive's (`written`, with
+    its struct constants) or an input's (`input`, its interface's one call packed by `pack`).
+    Values it does not take go the general way (`general`, with the values as a list), which says
+    what is wrong."""
+
+    way: str  # "_write" or "_ask": the robot's method the request goes to
+    target: str  # the constant of the primitive written
+    general: str  # the robot's method of the general way: "_call_primitive" or "_input_in_full"
+    plan: str  # the constant of the plan the general way takes
+    params: tuple[m.Parameter, ...]  # the values' parameters (or fields), each tested for its type and range
+    pack: str = ""  # the precompiled struct's `pack`
+    written: lowering.Written | None = None
+    whole: WholeFrame | None = None
+    checked: tuple[str, str] = ("", "")  # a checksum not in the whole struct: its value, around the payload's name
+    input: lowering.Input | None = None
+
+
+_TYPES = {Type.INT: "int", Type.FLOAT: "float", Type.BOOL: "bool", Type.STRING: "str", Type.BYTES: "bytes"}
+
+
+def type_tests(names: list[str], params: tuple[m.Parameter, ...], *, refused: bool) -> list[str]:
+    """The test of each value the one step takes: of its parameter's own type (an array a tuple),
+    within its range (bytes by their length); `refused`, the test of a value it does not take."""
+    tests = []
+    for name, prm in zip(names, params):
+        kind = _TYPES[prm.type] if isinstance(prm.type, Type) else "tuple"
+        test = f"type({name}) is {'not ' if refused else ''}{kind}"
+        if prm.low is not None and prm.high is not None:
+            measured, bound = (f"len({name})", Type.INT) if prm.type == Type.BYTES else (name, prm.type)
+            test += f" {'or not' if refused else 'and'} {literal(prm.low, bound).text} <= {measured} <= " \
+                    f"{literal(prm.high, bound).text}"
+        tests.append(test)
+    return tests
+
+
+def reads_state(exprs: list[m.Expr]) -> bool:
+    """Whether any of the expressions reads a state variable (`state["name"]`)."""
+    return any(v.scope is m.Scope.STATE for e in exprs for v in m.variables(e))

@@ -248,15 +248,22 @@ def sent_at_once(*, encoder: Pack | Format | None, replies: bool, acts: bool, de
 
 
 def _asked_at_once(plan: Primitive) -> bool:
+    """`asked_at_once`, of this plan."""
+    reply = plan.reply
+    return asked_at_once(encoder=plan.encoder, framed=plan.frame is not None, lines=plan.lines is not None,
+                         retries=plan.retries,
+                         decoder=reply.decoder if isinstance(reply, FixedReply) and reply.error is None else None)
+
+
+def asked_at_once(*, encoder: Pack | Format | None, framed: bool, lines: bool, retries: int,
+                  decoder: Unpack | None) -> bool:
     """Whether a primitive is a plain exchange (`Exchange._ask`): its request one plain struct pack
     of some bytes (a listener writes none, and keeps what has arrived) with no frame and no modem
-    line, its reply a fixed number of bytes with no error reply in their place, read in one try
-    (no `retry`). Such a reply is read from the port in one read."""
-    reply = plan.reply
-    return (_plain(plan.encoder) and isinstance(plan.encoder, Pack) and plan.encoder.struct.size > 0
-            and plan.frame is None and plan.lines is None and not plan.retries
-            and isinstance(reply, FixedReply) and reply.error is None and reply.decoder.size > 0
-            and reply.decoder.until is None)
+    line, its reply a fixed number of bytes (`decoder`: a reply's with no error reply in its
+    place, else None), read in one try (no `retry`). Such a reply is read from the port in one
+    read. The one rule: the engine applies it to its plans, the lowering (`rdisc.lower`) to its own."""
+    return (_plain(encoder) and isinstance(encoder, Pack) and encoder.struct.size > 0 and not framed
+            and not lines and not retries and decoder is not None and decoder.size > 0 and decoder.until is None)
 
 
 def plainly_given(args: Args, kinds: tuple[type, ...], bounds: tuple[tuple[int, Any, Any], ...]) -> bool:

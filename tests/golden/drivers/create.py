@@ -1966,15 +1966,22 @@ def sent_at_once(*, encoder: Pack | Format | None, replies: bool, acts: bool, de
 
 
 def _asked_at_once(plan: Primitive) -> bool:
+    """`asked_at_once`, of this plan."""
+    reply = plan.reply
+    return asked_at_once(encoder=plan.encoder, framed=plan.frame is not None, lines=plan.lines is not None,
+                         retries=plan.retries,
+                         decoder=reply.decoder if isinstance(reply, FixedReply) and reply.error is None else None)
+
+
+def asked_at_once(*, encoder: Pack | Format | None, framed: bool, lines: bool, retries: int,
+                  decoder: Unpack | None) -> bool:
     """Whether a primitive is a plain exchange (`Exchange._ask`): its request one plain struct pack
     of some bytes (a listener writes none, and keeps what has arrived) with no frame and no modem
-    line, its reply a fixed number of bytes with no error reply in their place, read in one try
-    (no `retry`). Such a reply is read from the port in one read."""
-    reply = plan.reply
-    return (_plain(plan.encoder) and isinstance(plan.encoder, Pack) and plan.encoder.struct.size > 0
-            and plan.frame is None and plan.lines is None and not plan.retries
-            and isinstance(reply, FixedReply) and reply.error is None and reply.decoder.size > 0
-            and reply.decoder.until is None)
+    line, its reply a fixed number of bytes (`decoder`: a reply's with no error reply in its
+    place, else None), read in one try (no `retry`). Such a reply is read from the port in one
+    read. The one rule: the engine applies it to its plans, the lowering (`rdisc.lower`) to its own."""
+    return (_plain(encoder) and isinstance(encoder, Pack) and encoder.struct.size > 0 and not framed
+            and not lines and not retries and decoder is not None and decoder.size > 0 and decoder.until is None)
 
 
 def plainly_given(args: Args, kinds: tuple[type, ...], bounds: tuple[tuple[int, Any, Any], ...]) -> bool:
@@ -5127,24 +5134,42 @@ class IrobotCreatePrimitives:
     def start(self) -> None:
         """Start (opcode 128): opens the OI; the robot enters passive mode."""
         robot = self._robot
-        robot._send(_P_START, _p_start_request(robot._state, []), [])
+        if robot._direct:
+            robot._write(_P_START, b"\x80")
+        else:
+            robot._call_primitive(_P_START, [])
 
     def full(self) -> None:
         """Full (opcode 132): full control of the actuators, safety features off."""
         robot = self._robot
-        robot._send(_P_FULL, _p_full_request(robot._state, []), [])
+        if robot._direct:
+            robot._write(_P_FULL, b"\x84")
+        else:
+            robot._call_primitive(_P_FULL, [])
 
     def drive(self, velocity: int, radius: int) -> None:
         """Drive (opcode 137): velocity in mm/s (-500 to 500) and turn radius in mm
         (-2000 to 2000). Special radii: 32767 drives straight, -1 turns in place
         clockwise, 1 counter-clockwise.
         """
-        robot, values = self._robot, [velocity, radius]
-        robot._send(_P_DRIVE, _p_drive_request(robot._state, values), values)
+        robot = self._robot
+        if robot._direct and type(velocity) is int and type(radius) is int:
+            try:
+                request = _PACK_DRIVE(137, velocity, radius)
+            except Exception:  # noqa: BLE001, S110 - not taken here: the general way says why
+                pass
+            else:
+                robot._write(_P_DRIVE, request)
+                return
+        robot._call_primitive(_P_DRIVE, [velocity, radius])
 
     def bumpers(self) -> None:
         """Sensors (opcode 142) for packet 7, "Bumps and Wheel Drops": a one-byte reply."""
-        self._robot._call_primitive(_P_BUMPERS, [])
+        robot = self._robot
+        if robot._direct:
+            robot._ask(_P_BUMPERS, b"\x8e\x07", [])
+        else:
+            robot._call_primitive(_P_BUMPERS, [])
 
 
 class IrobotCreate(Robot):
@@ -5157,27 +5182,26 @@ class IrobotCreate(Robot):
     def __init__(self, *, timeout: float = 1.0) -> None:
         """A robot not connected yet: `open()` connects it. `timeout`: seconds a reply may take."""
         super().__init__(_DEVICE, timeout=timeout)
-        self._typed = (IrobotCreateInputs(self), IrobotCreateInterfaces(self), IrobotCreatePrimitives(self))
 
     @property
     def state(self) -> IrobotCreateState:
         """The state variables now: an immutable snapshot."""
         return IrobotCreateState(self._state)
 
-    @property
+    @functools.cached_property
     def inputs(self) -> IrobotCreateInputs:
         """The domain inputs, as typed methods."""
-        return self._typed[0]
+        return IrobotCreateInputs(self)
 
-    @property
+    @functools.cached_property
     def interfaces(self) -> IrobotCreateInterfaces:
         """The interfaces, as typed methods."""
-        return self._typed[1]
+        return IrobotCreateInterfaces(self)
 
-    @property
+    @functools.cached_property
     def primitives(self) -> IrobotCreatePrimitives:
         """The primitives, as typed methods."""
-        return self._typed[2]
+        return IrobotCreatePrimitives(self)
 
     def set_velocity(self, linear: float, angular: float) -> None:
         """A Twist from the framework: `linear` m/s along the heading, `angular` rad/s
