@@ -34,6 +34,7 @@ DEVICES = [
                                    "dynamixel_sdk.group_bulk_read", "dynamixel_sdk.robotis_def"]),
     ("firmata.rdis", "pyFirmata2", ["pyfirmata2.pyfirmata2", "pyfirmata2.util", "pyfirmata2.boards"]),
     ("slcan.rdis", "python-can", ["can.interfaces.slcan"]),
+    ("sbus.rdis", "rfrx", ["rfrx.sbus"]),
     ("crsf.rdis", "rpycrsf", ["rpycrsf.protocol", "rpycrsf.drone"]),  # its channels, sticks and switches
     ("crsf.rdis", "crsf-parser", ["crsf_parser", "crsf_parser.frames", "crsf_parser.handling",
                                   "crsf_parser.payloads"]),  # its telemetry (a CRC table of 256 lines)
