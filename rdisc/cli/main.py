@@ -56,7 +56,7 @@ def parser(argv: list[str] | None = None) -> argparse.ArgumentParser:
     p.add_argument("--version", action="version", version=f"rdisc {__version__}")
     p.add_argument("--debug", action="store_true", help="show the Python traceback of an internal error")
     verbs = p.add_subparsers(dest="verb", metavar="VERB", required=True)
-    named = verb_named(argv or ())
+    named = verb_named(argv or [])
     for verb in [named] if named in VERBS else VERBS:
         _module(verb).add_parser(verbs)
         if verb != "explain":  # every other verb reads a description (and has imported rdisc.compile)

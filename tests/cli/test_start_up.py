@@ -49,3 +49,13 @@ def test_check_ends_its_process_at_once_with_its_output_written(tmp_path: Path) 
 def test_other_verbs_are_torn_down_as_usual() -> None:
     done = entry("explain", "E103")
     assert done.returncode == 0 and done.stderr == "torn down\n"
+
+
+def test_a_clean_check_does_not_import_dataclasses() -> None:
+    """`dataclasses` imports `inspect` (with `dis`, `ast` and `tokenize`): the classes a check
+    makes take their methods from modules written ahead of time (rdisc/frozen.py)."""
+    probe = ("import sys; from rdisc.cli.main import main; main(sys.argv[1:]); "
+             "print(sorted(name for name in ('dataclasses', 'inspect') if name in sys.modules))")
+    done = subprocess.run([sys.executable, "-c", probe, "check", str(ROOT / "examples" / "create.rdis")],
+                          capture_output=True, text=True, check=True)
+    assert done.stdout == "[]\n"
