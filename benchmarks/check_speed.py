@@ -96,11 +96,9 @@ import sys, time
 t0 = time.perf_counter()
 import rdisc.cli.main
 from rdisc.compile import compile_path
-from rdisc.syntax.parse import parser
 t1 = time.perf_counter()
-import lark
+import rdisc.syntax.reduce
 t2 = time.perf_counter()
-parser()
 t3 = time.perf_counter()
 compile_path(sys.argv[1])
 t4 = time.perf_counter()
@@ -115,10 +113,10 @@ def phases(runs: int = 5) -> None:
     cmd = [sys.executable, "-c", PHASES, str(EXAMPLE)]
     rows = [subprocess.run(cmd, check=True, capture_output=True, text=True, cwd=NEUTRAL,
                            env=ENVIRONMENT).stdout.split() for _ in range(runs)]
-    imports, lark, grammar, first, again = (statistics.median(float(r[i]) for r in rows) for i in range(5))
+    imports, tables, _, first, again = (statistics.median(float(r[i]) for r in rows) for i in range(5))
     print(f"   where it goes, in one process (median of {runs}): importing rdisc's CLI and pipeline"
           f" {imports:.1f} ms,")
-    print(f"   importing lark {lark:.1f} ms, loading the grammar from Lark's cache {grammar:.1f} ms, checking"
+    print(f"   importing the parser's tables (rdisc/syntax/tables.py, no Lark) {tables:.1f} ms, checking"
           f" create.rdis")
     print(f"   (and the stdlib) {first:.1f} ms; a second check in the same process {again:.1f} ms")
 

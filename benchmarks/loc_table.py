@@ -40,6 +40,7 @@ DEVICES = [
     ("tfmini.rdis", "tfmini", ["tfmini.tfmini"]),
     ("sabertooth.rdis", "pysabertooth", ["pysabertooth.PySabertooth"]),
     ("slcan.rdis", "python-can", ["can.interfaces.slcan"]),
+    ("sbus.rdis", "rfrx", ["rfrx.sbus"]),
     ("crsf.rdis", "rpycrsf", ["rpycrsf.protocol", "rpycrsf.drone"]),  # its channels, sticks and switches
     ("crsf.rdis", "crsf-parser", ["crsf_parser", "crsf_parser.frames", "crsf_parser.handling",
                                   "crsf_parser.payloads"]),  # its telemetry (a CRC table of 256 lines)

@@ -13,7 +13,6 @@ import stat
 from collections.abc import Iterator
 from contextlib import contextmanager
 from contextvars import ContextVar
-from dataclasses import dataclass, field
 
 from rdisc.diagnostics import Diagnostics, abbreviate
 from rdisc.semantics.budget import ConnectionBudget, budget
@@ -41,13 +40,18 @@ def token_budget(tokens: int) -> Iterator[None]:
         _max_tokens.reset(reset)
 
 
-@dataclass
 class Compilation:
-    model: Model | None
-    diagnostics: Diagnostics
-    sources: Sources
-    budgets: list[ConnectionBudget] = field(default_factory=list)
-    main: ast.Module | None = None  # the main file's syntax tree (for `rdisc import`)
+    """What checking a description gave (a plain class: `rdisc check` need not import `dataclasses`)."""
+
+    __slots__ = ("budgets", "diagnostics", "main", "model", "sources")
+
+    def __init__(self, model: Model | None, diagnostics: Diagnostics, sources: Sources,
+                 budgets: list[ConnectionBudget] | None = None, main: ast.Module | None = None) -> None:
+        self.model = model
+        self.diagnostics = diagnostics
+        self.sources = sources
+        self.budgets = [] if budgets is None else budgets
+        self.main = main  # the main file's syntax tree (for `rdisc import`)
 
 
 def read_text(path: str, diagnostics: Diagnostics, at: Span | None = None) -> str | None:

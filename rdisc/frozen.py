@@ -17,12 +17,25 @@ the written modules equal to what the writer writes now.
 
 from __future__ import annotations
 
-import dataclasses
 from collections.abc import Callable
-from typing import Any, NamedTuple, TypeVar, cast
+from typing import TYPE_CHECKING, Any, NamedTuple, TypeVar, cast
 
-MISSING: Any = dataclasses.MISSING
+if TYPE_CHECKING:
+    import dataclasses
+
 _Class = TypeVar("_Class", bound=type)
+_Value = TypeVar("_Value")
+
+
+class _Missing:
+    """No default given (`dataclasses.MISSING` where `dataclasses` is asked: it is imported only
+    then, as it imports `inspect`, a tenth of a cold `rdisc check`)."""
+
+    def __repr__(self) -> str:
+        return "MISSING"
+
+
+MISSING: Any = _Missing()
 
 
 class _Factory:
@@ -68,11 +81,28 @@ class Written(NamedTuple):
 
 
 def _frozen_setattr(self: object, name: str, value: object) -> None:
+    import dataclasses
+
     raise dataclasses.FrozenInstanceError(f"cannot assign to field {name!r}")
 
 
 def _frozen_delattr(self: object, name: str) -> None:
+    import dataclasses
+
     raise dataclasses.FrozenInstanceError(f"cannot delete field {name!r}")
+
+
+def _standard_field(spec: FieldSpec) -> dataclasses.Field[Any]:
+    """The `dataclasses.field(...)` that `spec` stands for."""
+    import dataclasses
+
+    def given(value: object) -> Any:
+        return dataclasses.MISSING if value is MISSING else value
+
+    made: dataclasses.Field[Any] = dataclasses.field(
+        default=given(spec.default), default_factory=given(spec.default_factory), compare=spec.compare,
+        repr=spec.repr)
+    return made
 
 
 def _getstate(self: Any) -> list[Any]:
@@ -85,9 +115,9 @@ def _setstate(self: Any, state: list[Any]) -> None:
 
 
 def _field(name: str, type_: object, given: object) -> dataclasses.Field[Any]:
-    spec = given if isinstance(given, FieldSpec) else FieldSpec(default=given)
-    made: dataclasses.Field[Any] = dataclasses.field(default=spec.default, default_factory=spec.default_factory,
-                                                     compare=spec.compare, repr=spec.repr)
+    import dataclasses
+
+    made = _standard_field(given if isinstance(given, FieldSpec) else FieldSpec(default=given))
     made.name, made.type, made.kw_only = name, type_, False
     made._field_type = dataclasses._FIELD  # type: ignore[attr-defined]  # what `fields()` and `replace()` read
     return made
@@ -117,10 +147,11 @@ def _default(given: object) -> object:
 
 def _standard(cls: _Class, frozen: bool, slots: bool) -> _Class:
     """The class made by `dataclasses`, its `field(...)` markers made standard fields first."""
+    import dataclasses
+
     for name, given in list(vars(cls).items()):
         if isinstance(given, FieldSpec):
-            setattr(cls, name, dataclasses.field(default=given.default, default_factory=given.default_factory,
-                                                 compare=given.compare, repr=given.repr))
+            setattr(cls, name, _standard_field(given))
     return cast(_Class, dataclasses.dataclass(frozen=frozen, slots=slots)(cls))
 
 
@@ -157,3 +188,30 @@ def classes(written: dict[str, Written]) -> Callable[..., Callable[[_Class], _Cl
         return make
 
     return dataclass
+
+
+def _written(cls: type) -> bool:
+    return isinstance(vars(cls).get("__dataclass_fields__"), _Fields)
+
+
+def replace(value: _Value, /, **changes: Any) -> _Value:
+    """`dataclasses.replace`: a copy of `value` with `changes`; for a written class, without
+    importing `dataclasses` (all of its fields are parameters of its `__init__`)."""
+    cls = type(value)
+    if _written(cls):
+        given = {name: getattr(value, name) for name in cls.__match_args__}  # type: ignore[attr-defined]
+        given.update(changes)
+        return cls(**given)
+    import dataclasses
+
+    return dataclasses.replace(value, **changes)  # type: ignore[type-var]
+
+
+def field_names(value: object) -> tuple[str, ...]:
+    """The fields of a dataclass's instance in order, as `dataclasses.fields` names them; () for
+    any other value."""
+    cls = type(value)
+    if _written(cls):
+        return cast(tuple[str, ...], cls.__match_args__)  # type: ignore[attr-defined]
+    made = getattr(cls, "__dataclass_fields__", None)
+    return tuple(made) if isinstance(made, dict) else ()

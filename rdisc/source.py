@@ -13,9 +13,9 @@ from collections.abc import Mapping
 from typing import TYPE_CHECKING
 
 if TYPE_CHECKING:
-    from dataclasses import dataclass, field
+    from dataclasses import dataclass
 else:  # the same classes, their methods written out ahead of time: rdisc/frozen.py
-    from rdisc.source_methods import dataclass, field
+    from rdisc.source_methods import dataclass
 
 
 @dataclass(frozen=True, slots=True)
@@ -38,11 +38,15 @@ class Position:
     utf16_column: int  # 0-based, in UTF-16 code units (what LSP counts)
 
 
-@dataclass(slots=True)
 class SourceFile:
-    path: str
-    text: str
-    _line_starts: list[int] = field(default_factory=list, repr=False)
+    """One file's text, and where its lines start (found when first asked)."""
+
+    __slots__ = ("_line_starts", "path", "text")
+
+    def __init__(self, path: str, text: str) -> None:
+        self.path = path
+        self.text = text
+        self._line_starts: list[int] = []
 
     def line_starts(self) -> list[int]:
         if not self._line_starts:

@@ -10,8 +10,33 @@ if hasattr(_signal, "pthread_sigmask"):
     _signal.pthread_sigmask(_signal.SIG_BLOCK, (_signal.SIGINT, _signal.SIGTERM))
 
 
+# Verbs that only read files and write their output: their process ends without the interpreter's
+# teardown, as mypy's does. Freeing every module, class and object one by one is about a fifth of a
+# cold `rdisc check`; the system takes the memory back at once, and they leave nothing to close.
+ENDED_AT_ONCE = frozenset({"check"})
+
+
 def main() -> int:
     """Run the command line (which installs the handlers, then lets the held signals through)."""
-    from rdisc.cli.main import main as command_line
+    import sys
 
-    return command_line()
+    from rdisc.cli.main import main as command_line
+    from rdisc.cli.main import verb_named
+
+    status = command_line()
+    if verb_named(sys.argv[1:]) in ENDED_AT_ONCE:
+        end_at_once(status)
+    return status
+
+
+def end_at_once(status: int) -> None:
+    """Flush what was written and end the process with `status`, skipping the teardown."""
+    import os
+    import sys
+
+    for stream in (sys.stdout, sys.stderr):
+        try:
+            stream.flush()
+        except (OSError, ValueError):  # a closed pipe, or a closed stream: nothing more can be written
+            pass
+    os._exit(status)

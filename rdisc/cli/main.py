@@ -42,6 +42,11 @@ def _tokens(text: str) -> int:
     return value
 
 
+def verb_named(argv: list[str]) -> str | None:
+    """The verb `argv` names: its first word that is not an option."""
+    return next((a for a in argv if not a.startswith("-")), None)
+
+
 def parser(argv: list[str] | None = None) -> argparse.ArgumentParser:
     """The command line's parser: of the verb `argv` names, or of every verb."""
     p = argparse.ArgumentParser(
@@ -51,7 +56,7 @@ def parser(argv: list[str] | None = None) -> argparse.ArgumentParser:
     p.add_argument("--version", action="version", version=f"rdisc {__version__}")
     p.add_argument("--debug", action="store_true", help="show the Python traceback of an internal error")
     verbs = p.add_subparsers(dest="verb", metavar="VERB", required=True)
-    named = next((a for a in argv or () if not a.startswith("-")), None)
+    named = verb_named(argv or [])
     for verb in [named] if named in VERBS else VERBS:
         _module(verb).add_parser(verbs)
         if verb != "explain":  # every other verb reads a description (and has imported rdisc.compile)

@@ -11,10 +11,10 @@ from __future__ import annotations
 import math
 from collections import ChainMap
 from collections.abc import Iterator, Sequence
-from dataclasses import replace
 from typing import TYPE_CHECKING, Protocol, TypeVar
 
 from rdisc.diagnostics import Diagnostics, Label, abbreviate
+from rdisc.frozen import field_names, replace
 from rdisc.limits import MAX_ARRAY, MAX_INT
 from rdisc.semantics import bounds, formats, ros
 from rdisc.semantics import model as m
@@ -2055,8 +2055,8 @@ def _refs(node: object) -> Iterator[ast.Ref]:
     elif isinstance(node, tuple):
         for item in node:
             yield from _refs(item)
-    elif hasattr(node, "__dataclass_fields__") and not isinstance(node, Span):
-        for name in node.__dataclass_fields__:
+    elif not isinstance(node, Span):
+        for name in field_names(node):
             yield from _refs(getattr(node, name))
 
 

@@ -9,7 +9,6 @@ lowering, emitters and the engine read that layout, never the format's text.
 
 from __future__ import annotations
 
-import dataclasses
 import re
 import string
 import struct
@@ -17,6 +16,7 @@ import warnings
 from functools import lru_cache
 from typing import TYPE_CHECKING
 
+from rdisc.frozen import replace
 from rdisc.limits import MAX_ARRAY
 from rdisc.semantics import regex_shape
 from rdisc.semantics.model import AnyType, Array, Slot, StructLayout, Type, Varying, bit_span
@@ -201,11 +201,11 @@ def struct_layout(fmt: str) -> StructLayout:
         shape = Varying(order + "".join(written[:at]), codes, tail, count_at, high, count_code, count_slot,
                         unit_size=struct.calcsize(order + codes), tail_size=struct.calcsize(order + tail),
                         count_size=struct.calcsize(order + count_code) if count_code else 0)
-    sized = tuple(dataclasses.replace(slot, size=_code_size(order, slot.code)) for slot in slots)
+    sized = tuple(replace(slot, size=_code_size(order, slot.code)) for slot in slots)
     layout = StructLayout(sized, size, native, rest, fixed, tuple(groups), shape, tuple(splits), order)
     rooms = tuple((layout.joined(i), text_room(slot.code)) for i, slot in enumerate(sized)
                   if slot.code[-1:] in ("s", "p", "Z"))
-    return dataclasses.replace(layout, rooms=rooms)
+    return replace(layout, rooms=rooms)
 
 
 def _code_size(order: str, code: str) -> int:
@@ -280,7 +280,7 @@ def _group(group: re.Match[str], at: int, slots: list[Slot], groups: list[tuple[
         if inner_layout is None or len(inner_layout.slots) != 1 or inner_layout.slots[0].type is Type.STRING:
             raise TemplateError(f"`{ch}` cannot be repeated in a group: a group holds int, float and bool codes, "
                                 "without counts", offset + i)
-        slots.append(dataclasses.replace(inner_layout.slots[0], repeat=-1 if varying else count))
+        slots.append(replace(inner_layout.slots[0], repeat=-1 if varying else count))
     groups.append((first, len(codes), count))
     return "".join(ch for _, ch in codes)
 
@@ -411,15 +411,16 @@ def regex_groups(pattern: str) -> int:
     try:
         with warnings.catch_warnings():  # Python's hints about future syntax (`[[`) are not the user's to see
             warnings.simplefilter("ignore", FutureWarning)
-            compiled = re.compile(pattern)
-            risky = regex_shape.risk(pattern)
+            parsed = regex_shape.parse_tree(pattern)
+            groups = regex_shape.groups(parsed)
+            risky = regex_shape.risk(parsed)
     except re.error as err:
         raise TemplateError(f"invalid regular expression: {err.msg}", err.pos or 0) from None
     except (OverflowError, RecursionError, MemoryError):
         raise TemplateError("regular expression is too complex", 0, len(pattern)) from None
     if risky is not None:
         raise TemplateError(risky, 0, len(pattern))
-    return compiled.groups
+    return groups
 
 
 def regex_min_length(pattern: str) -> int:

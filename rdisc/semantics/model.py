@@ -5,7 +5,6 @@ names an element that exists (references are typed keys into per-kind maps).
 
 from __future__ import annotations
 
-import dataclasses
 import enum
 from collections.abc import Iterator
 from typing import TYPE_CHECKING, Any, NewType
@@ -15,6 +14,7 @@ if TYPE_CHECKING:
 else:  # the same classes, their methods written out ahead of time: rdisc/frozen.py
     from rdisc.semantics.model_methods import dataclass, field
 
+from rdisc.frozen import field_names, replace
 from rdisc.source import Span
 
 _span = field(compare=False, repr=False, default=None)
@@ -541,8 +541,7 @@ def looks_up(e: object) -> bool:
         return True
     if isinstance(e, tuple):
         return any(looks_up(item) for item in e)
-    return dataclasses.is_dataclass(e) and any(looks_up(getattr(e, f.name)) for f in dataclasses.fields(e)
-                                               if f.name != "span")
+    return any(looks_up(getattr(e, name)) for name in field_names(e) if name != "span")
 
 
 # ---- frames: the bytes around a payload ---------------------------------------------
@@ -818,7 +817,7 @@ class Primitive:
     def listed_reply(self, r: ListedReply) -> Primitive:
         """This primitive as it is for one of its listed replies: that reply's frame, decoding,
         `expect` and post-actions, as if it were its only one."""
-        return dataclasses.replace(self, decoding=r.decoding, frame=r.frame or self.frame, expect=r.expect,
+        return replace(self, decoding=r.decoding, frame=r.frame or self.frame, expect=r.expect,
                                    actions=r.actions, listed=())
 
     def post_actions(self) -> tuple[PostAction, ...]:
@@ -828,7 +827,7 @@ class Primitive:
 
     def case(self, c: ReplyCase) -> Primitive:
         """This primitive as it is when its table's key (or its reply's tag) has c.value: one decoding."""
-        return dataclasses.replace(self, decoding=c.decoding, actions=c.actions, table=None)
+        return replace(self, decoding=c.decoding, actions=c.actions, table=None)
 
     def reply_locals(self) -> tuple[Parameter, ...]:
         """What its post-actions read besides state and `out`: its parameters, and after

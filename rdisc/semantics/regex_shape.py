@@ -19,7 +19,6 @@ from __future__ import annotations
 
 import re
 import sys
-from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING or sys.version_info < (3, 11):  # typeshed describes the parser under its old names
@@ -55,12 +54,17 @@ class Risky(Exception):
     """A shape that can backtrack without bound; the message says which."""
 
 
-@dataclass(frozen=True)
 class _Shape:
-    chars: frozenset[int]  # what the part can match, anywhere in it
-    first: frozenset[int]  # what its match can start with
-    spread: int  # the ways it can match one text (lengths, branches), 1 for a fixed part
-    nullable: bool  # it can match the empty text
+    """What the walk knows of a part of a pattern (a plain class: `rdisc check` need not import
+    `dataclasses`)."""
+
+    __slots__ = ("chars", "first", "nullable", "spread")
+
+    def __init__(self, chars: frozenset[int], first: frozenset[int], spread: int, nullable: bool) -> None:
+        self.chars = chars  # what the part can match, anywhere in it
+        self.first = first  # what its match can start with
+        self.spread = spread  # the ways it can match one text (lengths, branches), 1 for a fixed part
+        self.nullable = nullable  # it can match the empty text
 
     @property
     def variable(self) -> bool:
@@ -72,9 +76,22 @@ def parse_tree(pattern: str) -> _parser.SubPattern:
     return _parser.parse(pattern)
 
 
-def risk(pattern: str) -> str | None:
-    """Why `pattern` can take more than linear time on some line, or None (it cannot)."""
-    parsed = parse_tree(pattern)
+def groups(parsed: _parser.SubPattern) -> int:
+    """The groups of a parsed pattern, once it is compiled as `re.compile` compiles it (raises
+    re.error for what only compiling finds, as a look-behind of varying width): the pattern is
+    parsed once for both this and `risk`."""
+    if TYPE_CHECKING or sys.version_info < (3, 11):  # as the parser, above
+        import sre_compile as compiler
+    else:
+        from re import _compiler as compiler
+
+    compiled: re.Pattern[str] = compiler.compile(parsed)
+    return compiled.groups
+
+
+def risk(pattern: str | _parser.SubPattern) -> str | None:
+    """Why `pattern` (or its parse tree) can take more than linear time on some line, or None (it cannot)."""
+    parsed = parse_tree(pattern) if isinstance(pattern, str) else pattern
     try:
         _Walk(parsed.state).sequence(list(parsed.data), [], 0)
     except Risky as err:

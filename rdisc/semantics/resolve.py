@@ -16,9 +16,9 @@ from rdisc.source import Span
 from rdisc.syntax import ast
 
 if TYPE_CHECKING:
-    from dataclasses import dataclass, field
+    from dataclasses import dataclass
 else:  # the same classes, their methods written out ahead of time: rdisc/frozen.py
-    from rdisc.semantics.resolve_methods import dataclass, field
+    from rdisc.semantics.resolve_methods import dataclass
 
 # Words that would be read as keywords where a name can stand. Other keywords of
 # the language only occur in places no name can, so they stay usable as names
@@ -35,30 +35,36 @@ class Unit:
     standard: bool = False  # stdlib/adapters.rdis
 
 
-@dataclass(slots=True)
 class Symbols:
-    """Every declared element by kind and name (the first declaration wins)."""
+    """Every declared element by kind and name (the first declaration wins); a plain class:
+    `rdisc check` need not import `dataclasses`."""
 
-    robot: ast.RobotDecl | None = None
-    states: dict[str, ast.StateDecl] = field(default_factory=dict)
-    settings: dict[str, ast.SettingDecl] = field(default_factory=dict)
-    connections: dict[str, ast.ConnectionDecl] = field(default_factory=dict)
-    primitives: dict[str, ast.PrimitiveDecl] = field(default_factory=dict)
-    interfaces: dict[str, ast.InterfaceDecl] = field(default_factory=dict)
-    adapters: dict[str, ast.AdapterDecl] = field(default_factory=dict)
-    inputs: dict[str, ast.InputDecl] = field(default_factory=dict)
-    outputs: dict[str, ast.OutputDecl] = field(default_factory=dict)
-    constants: dict[str, ast.ConstDecl] = field(default_factory=dict)
-    enums: dict[str, ast.EnumDecl] = field(default_factory=dict)
-    frames: dict[str, ast.FrameDecl] = field(default_factory=dict)
-    links: dict[str, ast.LinkDecl] = field(default_factory=dict)
-    joints: dict[str, ast.JointDecl] = field(default_factory=dict)
-    transmissions: dict[str, ast.TransmissionDecl] = field(default_factory=dict)
-    standard: set[int] = field(default_factory=set)  # id() of declarations from the stdlib
-    damaged: set[tuple[str, str]] = field(default_factory=set)  # (keyword, name) lost to syntax errors
-    # (kind, name) offered as "did you mean" for an unknown reference: probably used,
-    # so not reported as unused as well.
-    suggested: set[tuple[str, str]] = field(default_factory=set)
+    __slots__ = (
+        "adapters", "connections", "constants", "damaged", "enums", "frames", "inputs", "interfaces", "joints",
+        "links", "outputs", "primitives", "robot", "settings", "standard", "states", "suggested", "transmissions",
+    )
+
+    def __init__(self) -> None:
+        self.robot: ast.RobotDecl | None = None
+        self.states: dict[str, ast.StateDecl] = {}
+        self.settings: dict[str, ast.SettingDecl] = {}
+        self.connections: dict[str, ast.ConnectionDecl] = {}
+        self.primitives: dict[str, ast.PrimitiveDecl] = {}
+        self.interfaces: dict[str, ast.InterfaceDecl] = {}
+        self.adapters: dict[str, ast.AdapterDecl] = {}
+        self.inputs: dict[str, ast.InputDecl] = {}
+        self.outputs: dict[str, ast.OutputDecl] = {}
+        self.constants: dict[str, ast.ConstDecl] = {}
+        self.enums: dict[str, ast.EnumDecl] = {}
+        self.frames: dict[str, ast.FrameDecl] = {}
+        self.links: dict[str, ast.LinkDecl] = {}
+        self.joints: dict[str, ast.JointDecl] = {}
+        self.transmissions: dict[str, ast.TransmissionDecl] = {}
+        self.standard: set[int] = set()  # id() of declarations from the stdlib
+        self.damaged: set[tuple[str, str]] = set()  # (keyword, name) lost to syntax errors
+        # (kind, name) offered as "did you mean" for an unknown reference: probably used,
+        # so not reported as unused as well.
+        self.suggested: set[tuple[str, str]] = set()
 
     def is_damaged(self, keyword: str, name: str) -> bool:
         return (keyword, name) in self.damaged

@@ -27,3 +27,35 @@ def test_a_clean_check_imports_neither_lark_nor_what_only_other_paths_need() -> 
 def test_a_check_in_json_imports_json() -> None:
     status, names = imported_by_check("check", "--format", "json", str(ROOT / "examples" / "create.rdis"))
     assert status == "0" and "'json'" in names
+
+
+def entry(*args: str) -> subprocess.CompletedProcess[str]:
+    """The `rdisc` entry (rdisc.start) run with `args`, in a process with an exit handler of its own."""
+    probe = ("import atexit, sys; atexit.register(lambda: print('torn down', file=sys.stderr)); "
+             "sys.argv = ['rdisc', *sys.argv[1:]]; from rdisc.start import main; sys.exit(main())")
+    return subprocess.run([sys.executable, "-c", probe, *args], capture_output=True, text=True, check=False)
+
+
+def test_check_ends_its_process_at_once_with_its_output_written(tmp_path: Path) -> None:
+    clean = entry("check", str(ROOT / "examples" / "create.rdis"))
+    assert (clean.returncode, clean.stdout, clean.stderr) == (0, "", "")
+    bad = tmp_path / "bad.rdis"
+    bad.write_text("state x: int = y\n", encoding="utf-8")
+    found = entry("check", "--format", "json", str(bad))
+    assert found.returncode == 1 and found.stderr == ""
+    assert found.stdout.rstrip().endswith("]") and '"E103"' in found.stdout  # all of it written
+
+
+def test_other_verbs_are_torn_down_as_usual() -> None:
+    done = entry("explain", "E103")
+    assert done.returncode == 0 and done.stderr == "torn down\n"
+
+
+def test_a_clean_check_does_not_import_dataclasses() -> None:
+    """`dataclasses` imports `inspect` (with `dis`, `ast` and `tokenize`): the classes a check
+    makes take their methods from modules written ahead of time (rdisc/frozen.py)."""
+    probe = ("import sys; from rdisc.cli.main import main; main(sys.argv[1:]); "
+             "print(sorted(name for name in ('dataclasses', 'inspect') if name in sys.modules))")
+    done = subprocess.run([sys.executable, "-c", probe, "check", str(ROOT / "examples" / "create.rdis")],
+                          capture_output=True, text=True, check=True)
+    assert done.stdout == "[]\n"

@@ -80,14 +80,36 @@ MESSAGES = [
 ]
 
 
+FD_MESSAGES = [  # CAN FD: (id, extended, switched, data), of every length a DLC states
+    *((0x123, False, False, bytes(range(n))) for n in (0, 1, 8, 12, 16, 20, 24, 32, 48, 64)),
+    (0x7FF, False, True, bytes.fromhex("0102030405060708090A0B0C")),
+    (0x1ABCDEF0, True, False, bytes(range(200, 216))),
+    (0x1FFFFFFF, True, True, bytes(range(64))),
+]
+
+
 def _message(id_: int, extended: bool, remote: bool, data: Any) -> Any:
     if remote:
         return can.Message(arbitration_id=id_, is_extended_id=extended, is_remote_frame=True, dlc=data)
     return can.Message(arbitration_id=id_, is_extended_id=extended, data=data)
 
 
+def _fd_message(id_: int, extended: bool, switched: bool, data: bytes) -> Any:
+    return can.Message(arbitration_id=id_, is_extended_id=extended, is_fd=True, bitrate_switch=switched, data=data)
+
+
 def _primitive(extended: bool, remote: bool) -> str:
     return ("request" if remote else "send") + ("_extended" if extended else "")
+
+
+def _received(adapter: Adapter, data: bytes) -> Any:
+    """What python-can's recv() makes of the lines, the first frame of them."""
+    adapter.send(data)
+    for _ in range(4):  # one line a call: acknowledgements give None
+        received = adapter.bus.recv(0.5)
+        if received is not None:
+            return received
+    raise AssertionError("python-can received no frame")
 
 
 @pytest.mark.parametrize("message", MESSAGES)
@@ -144,13 +166,7 @@ def test_a_received_frame_is_read_as_python_can_reads_it(described: Any, adapter
     adapter.bus.send(_message(*message))
     line = adapter.written()  # an adapter receiving this frame sends the line python-can sends it with
     noise = b"\rz\r\a"  # acknowledgements of commands, and an error, before it: read past by both
-    adapter.send(noise + line)
-    received = None
-    for _ in range(4):  # one line a call: the acknowledgements give None
-        received = adapter.bus.recv(0.5)
-        if received is not None:
-            break
-    assert received is not None
+    received = _received(adapter, noise + line)
     port = ScriptedPort(noise + line)
     with described.connect(port, threads=False) as robot:
         robot.call_primitive("receive")
@@ -159,6 +175,7 @@ def test_a_received_frame_is_read_as_python_can_reads_it(described: Any, adapter
             received.arbitration_id, received.is_extended_id, received.is_remote_frame, received.dlc) == message[:3] + (
             message[3] if message[2] else len(message[3]),)
         assert state["data"] == (b"" if received.is_remote_frame else bytes(received.data))
+        assert (state["fd"], state["switched"]) == (received.is_fd, received.bitrate_switch) == (False, False)
 
 
 @pytest.mark.parametrize(("reply", "versions"), [(b"V1013\r", (10, 13)), (b"V0107\r", (1, 7))])
@@ -184,3 +201,35 @@ def test_the_serial_number_is_read_as_python_can_reads_it(described: Any, adapte
         robot.call_primitive("serial")
         assert bytes(port.written) == adapter.written() == b"N\r"
         assert robot.state["serial_number"] == number
+
+
+@pytest.mark.parametrize("message", FD_MESSAGES)
+def test_a_can_fd_frame_is_sent_as_python_can_sends_it(described: Any, adapter: Adapter,
+                                                        message: tuple[Any, ...]) -> None:
+    adapter.bus.send(_fd_message(*message))
+    id_, extended, switched, data = message
+    assert _ours(described, "send_fd_extended" if extended else "send_fd", id_, data, switched) == adapter.written()
+
+
+@pytest.mark.parametrize("message", FD_MESSAGES)
+def test_a_received_can_fd_frame_is_read_as_python_can_reads_it(described: Any, adapter: Adapter,
+                                                                message: tuple[Any, ...]) -> None:
+    adapter.bus.send(_fd_message(*message))
+    line = adapter.written()
+    received = _received(adapter, b"\r" + line)
+    port = ScriptedPort(b"\r" + line)
+    with described.connect(port, threads=False) as robot:
+        robot.call_primitive("receive")
+        state = robot.state
+        assert (state["id"], state["extended"], state["fd"], state["switched"], state["dlc"], state["data"]) == (
+            received.arbitration_id, received.is_extended_id, received.is_fd, received.bitrate_switch, received.dlc,
+            bytes(received.data)) == (message[0], message[1], True, message[2], len(message[3]), message[3])
+
+
+def test_a_can_fd_length_no_dlc_states_is_refused(described: Any, adapter: Adapter) -> None:
+    adapter.bus.send(_fd_message(0x123, False, False, bytes(10)))
+    assert adapter.written() == b"d1239" + b"00" * 10 + b"\r"  # python-can: DLC 9 (12 bytes) before 10 bytes
+    port = ScriptedPort()
+    with described.connect(port, threads=False) as robot, pytest.raises(Exception) as caught:
+        robot.call_primitive("send_fd", 0x123, bytes(10), False)
+    assert type(caught.value).__name__ == "RdisValueError" and port.written == b""

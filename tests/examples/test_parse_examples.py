@@ -80,8 +80,9 @@ EXPECTED_COUNTS: dict[str, dict[str, int]] = {
                                  "FrameDecl": 1, "PrimitiveDecl": 3, "InterfaceDecl": 3},
     "examples/crsf.rdis": {"RobotDecl": 1, "StateDecl": 15, "ConnectionDecl": 1, "FrameDecl": 2, "PrimitiveDecl": 4,
                            "InterfaceDecl": 1},
-    "examples/slcan.rdis": {"RobotDecl": 1, "ConstDecl": 2, "StateDecl": 8, "ConnectionDecl": 1, "FrameDecl": 1,
-                            "PrimitiveDecl": 12, "InterfaceDecl": 1},
+    "examples/sbus.rdis": {"RobotDecl": 1, "StateDecl": 5, "ConnectionDecl": 1, "FrameDecl": 2, "PrimitiveDecl": 2},
+    "examples/slcan.rdis": {"RobotDecl": 1, "ConstDecl": 3, "StateDecl": 10, "ConnectionDecl": 1, "FrameDecl": 1,
+                            "PrimitiveDecl": 14, "InterfaceDecl": 1},
 }
 
 SOURCES = [STDLIB, *sorted(EXAMPLES.glob("*.rdis"))]

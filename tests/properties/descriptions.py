@@ -592,7 +592,10 @@ _FLOAT_HOLDS = {"e": 65504.0, "f": 3.4028234663852886e38}  # the largest finite 
 
 
 def code_range(code: str) -> tuple[int, int] | None:
-    """The integers a struct code holds (None: not an integer code)."""
+    """The integers a struct code holds (None: not an integer code); `3s{24}`, bytes as one integer, its field's."""
+    wide = re.fullmatch(r"\d+s\{(\d+)\}", code)
+    if wide:
+        return 0, (1 << int(wide.group(1))) - 1
     if code not in _INT_CODES:
         return None
     bits = 8 * struct.calcsize("<" + code)
@@ -607,9 +610,14 @@ class Slot:
     type: str
 
 
-def draw_slot(draw: Draw, type_: str | None = None) -> Slot:
+def draw_slot(draw: Draw, type_: str | None = None, order: str = "=") -> Slot:
+    """A value's code; in a format with a byte order, an integer may be bytes of a size struct lacks
+    taken as one integer (`5s{40}`)."""
     if type_ is None:
         type_ = draw(st.sampled_from([INT, INT, INT, FLOAT, BOOL, STRING]))
+    if type_ == INT and order in "<>!" and sometimes(draw, 8):
+        size = draw(st.sampled_from([3, 5, 6, 7]))
+        return Slot(f"{size}s{{{8 * size}}}", INT)
     if type_ == INT:
         return Slot(draw(st.sampled_from(_INT_CODES)), INT)
     if type_ == FLOAT:
@@ -620,8 +628,9 @@ def draw_slot(draw: Draw, type_: str | None = None) -> Slot:
 
 
 def _struct_module(template: str) -> str:
-    """A struct format as the struct module reads it: `NZ` (text to its first NUL) is `Ns` there."""
-    return re.sub(r"(\d*)Z", r"\1s", template)
+    """A struct format as the struct module reads it: `NZ` (text to its first NUL) is `Ns` there, and
+    bytes split into bit fields (`3s{24}`) their bytes."""
+    return re.sub(r"\{[^{}]*\}", "", re.sub(r"(\d*)Z", r"\1s", template))
 
 
 def struct_text(order: str, slots: Sequence[Slot], pad: int, rest: bool) -> str:
@@ -1115,7 +1124,7 @@ def decodings(draw: Draw, fixed: bool = False, rest: bool | None = None) -> Deco
     """An `unpack` (fixed size when `fixed`; ending in `*` when `rest`) or a `regex`."""
     if fixed or draw(st.integers(0, 3)):
         order = draw(st.sampled_from(["<", ">", "!", "="]))
-        slots = [draw_slot(draw) for _ in range(draw(st.integers(0 if not fixed else 1, 3)))]
+        slots = [draw_slot(draw, order=order) for _ in range(draw(st.integers(0 if not fixed else 1, 3)))]
         pad = draw(st.integers(0, 1)) if sometimes(draw, 6) else 0
         tail = False if fixed else (sometimes(draw, 4) if rest is None else rest)
         if not slots and not tail and not pad:
@@ -1543,7 +1552,7 @@ def _request(draw: Draw, params: tuple[Param, ...], scope: Scope,
     for p in params:
         if p.type == BYTES or sometimes(draw, 4):
             continue
-        slot = draw_slot(draw, p.type)
+        slot = draw_slot(draw, p.type, order)
         r = code_range(slot.code)
         if r is not None and p.low is not None and (p.high < r[0] or p.low > r[1]):
             slot = Slot("i", INT)  # a code that holds some of the range, so a constant argument can fit both
@@ -1551,7 +1560,7 @@ def _request(draw: Draw, params: tuple[Param, ...], scope: Scope,
         args.append(Name(p.type, p.name))
     ranges = {p.name: (p.low, p.high) for p in params if p.type == INT and p.low is not None}
     for _ in range(draw(st.integers(0, 2))):
-        slot = draw_slot(draw)
+        slot = draw_slot(draw, order=order)
         slots.append(slot)
         value = expression(draw, slot.type, scope, 1)
         r = code_range(slot.code)
@@ -1699,8 +1708,8 @@ def _call_args(draw: Draw, prim: Primitive, scope: Scope) -> tuple[Expr, ...] | 
     """Arguments for a call of `prim` from `scope`; None if `scope` has no bytes for its bytes parameters."""
     direct: dict[str, tuple[int, int]] = {}
     if prim.encoding == "pack":
-        codes = re.findall(r"(\d*)([a-zA-Z?])", prim.template)
-        slot_codes = [c for n, c in codes if c != "x"]
+        codes = re.findall(r"(\d*)([a-zA-Z?])(\{\d+\})?", prim.template)
+        slot_codes = [n + c + bits if bits else c for n, c, bits in codes if c != "x"]  # `3s{24}`: one integer
         for code, arg in zip(slot_codes, prim.args):
             r = code_range(code)
             if r is not None and isinstance(arg, Name) and any(p.name == arg.name for p in prim.params):
