@@ -358,9 +358,9 @@ def raw_bytes(text: object) -> bytes:
     if not isinstance(text, str):
         raise TypeError("raw: the bytes are given as hex text")
     words = text.replace(",", " ").split()
-    if not words:
-        raise ValueError("raw: no bytes given (type them as hex: 8e 16)")
     digits = "".join(word[2:] if word[:2].lower() == "0x" else word for word in words)
+    if not digits:
+        raise ValueError("raw: no bytes given (type them as hex: 8e 16)")
     bad = next((c for c in digits if c not in "0123456789abcdefABCDEF"), None)
     if bad is not None:
         raise ValueError(f"raw: {bad!r} is not a hex digit (type the bytes as hex: 8e 16)")

@@ -581,6 +581,14 @@ not read. Rename the state variable (or setting), or the field: `adapter Goal {
 target: float }` beside `state position: float`. An adapter of the standard
 library (`JointState`, `Twist`, ...) is not warned of: its fields are a message's,
 and state named after them (a servo's `position`) is read there by design."""),
+    ("W501", "unseeded-message", """
+A frame whose checksum takes a `seed TABLE[FIELD]` (MAVLink 2's CRC_EXTRA) sums the
+table's byte for the field's value; a primitive that frames a message whose value
+the table lacks cannot be written (its request is an `RdisValueError` when framed),
+and a reply carrying it can never be checked. The check runs where the frame's
+arguments are constants (`frame mav2(23, 22)`), so the field's value is known; a
+value given at run time is checked then. Wrong: `const EXTRAS = { 20: 214 }` with
+`frame mav2(23, 22)`. Right: `const EXTRAS = { 20: 214, 22: 220, 23: 168 }`."""),
     ("W201", "nonstandard-baud", """
 The baud rate is not one of the standard rates (300 ... 4000000). Some serial
 adapters round a non-standard rate or refuse it."""),

@@ -19,7 +19,14 @@ from rdisc.limits import MAX_ARRAY, MAX_INT
 from rdisc.semantics import bounds, formats, ros
 from rdisc.semantics import model as m
 from rdisc.semantics.body import BodyRules
-from rdisc.semantics.frames import FrameRules, length_part, length_range, length_words, payload_end_known
+from rdisc.semantics.frames import (
+    FrameRules,
+    length_part,
+    length_range,
+    length_words,
+    payload_end_known,
+    unseeded,
+)
 from rdisc.semantics.model import Scope, Type
 from rdisc.semantics.operators import shown
 from rdisc.semantics.resolve import Symbols, Unit, check_name, suggest
@@ -131,6 +138,7 @@ class _Checker:
                          for name, decl in self.s.transmissions.items()}
         robot = self.robot()
         self.unused(interfaces)
+        unseeded(self.frames, primitives, self.s.primitives, self.d)
         if self.d.has_errors() or robot is None:
             return None
         return m.Model(

@@ -178,6 +178,8 @@ def test_a_raw_send_writes_the_typed_bytes_and_answers_with_the_device_s(console
     ("8e zz", "ValueError", "raw: 'z' is not a hex digit (type the bytes as hex: 8e 16)"),
     ("8e 1", "ValueError", "raw: 3 hex digits are not whole bytes (two digits a byte: 0e, not e)"),
     ("  ", "ValueError", "raw: no bytes given (type them as hex: 8e 16)"),
+    ("0x", "ValueError", "raw: no bytes given (type them as hex: 8e 16)"),
+    ("٣٣", "ValueError", "raw: '٣' is not a hex digit (type the bytes as hex: 8e 16)"),
     ("00" * 4097, "ValueError", "raw: 4097 bytes; a raw send writes at most 4096"),
     (7, "TypeError", "raw: the bytes are given as hex text"),
 ])

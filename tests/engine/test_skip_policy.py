@@ -116,3 +116,23 @@ def test_nothing_that_matches_is_still_a_timeout(traced) -> None:
         b"servo: summed: reply id is 2, expected 1",
         b"servo: summed: no header b'\\xff\\xff' in the reply (after 3 bytes)",
     ]
+
+
+@pytest.mark.parametrize("kind", ["runtime", "driver"])
+def test_an_unframed_tagged_message_read_past_is_traced_with_why(kind: str, tmp_path) -> None:
+    """Without a frame (Firmata's stream): a tag without an entry, then a message whose lookup
+    misses, are read past, each told to the trace with why, before the one that is read."""
+    from tests.engine.test_lookup_miss import MODES
+
+    port = ScriptedPort(bytes.fromhex("c3  a0 07  a0 02"))
+    events: list[tuple[str, str, bytes]] = []
+    with implementation_of(kind, MODES, tmp_path, "modes").connect(port, threads=False) as robot:
+        robot.on_trace(lambda when, *event: events.append(event))
+        robot.call_primitive("stream")
+        assert robot.state["mode"] == "run"
+    assert events == [
+        ("skip", "link", b"stream: no reply entry for tag 195"),
+        ("skip", "link", b"stream: reply (7,): table MODE has no entry for 7"),
+        ("skip", "link", b"stream: no reply entry for tag 7"),  # looked for from the byte after its tag
+        ("read", "link", bytes.fromhex("c3 a0 07 a0 02")),
+    ]

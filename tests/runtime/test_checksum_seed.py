@@ -176,3 +176,17 @@ def test_e512_explains_the_rules_the_checker_applies() -> None:
     for words in ("a lookup table declared with `const`, keyed by integers", "0 to 255",
                   "names a `field` of the side the checksum is on", "`RdisValueError`"):
         assert words in explain
+
+
+def test_w501_warns_of_a_message_the_seed_table_lacks() -> None:
+    """A frame argument that is a constant gives the seed field a value known when checking: a
+    table without it is warned of (the request would be an RdisValueError when framed)."""
+    assert _check("EXTRAS = { 2: 50 }", "seed EXTRAS[id]") == [
+        ("W501", "frame f(1)", ("`p` frames id 1 with `f`, but its seed table `EXTRAS` has no entry for 1: its request "
+         "cannot be framed (an RdisValueError)"), "add the message's byte to the table: `1: ...` in `EXTRAS`")]
+    assert CODES["W501"].name == "unseeded-message"
+
+
+def test_w501_is_silent_where_the_value_is_known_only_at_run_time() -> None:
+    """`send`'s message id is its parameter (checked when framed); `first`'s, 1, is in the table."""
+    assert [d.code for d in compile_text("seeded.rdis", DESCRIPTION).diagnostics.items] == []

@@ -3339,9 +3339,12 @@ class Exchange:
                 key = value
             case = shape.table.get(key)
             if case is None:
+                said = (f"{plan.name}: no reply entry for tag "
+                        f"{' then '.join(map(str, key)) if isinstance(key, tuple) else key}")
                 if not skip:
-                    raise RdisProtocolError(f"{plan.name}: no reply entry for tag "
-                                            f"{' then '.join(map(str, key)) if isinstance(key, tuple) else key}")
+                    raise RdisProtocolError(said)
+                if self._trace_callbacks:  # another message's tag: read past, and the trace says why
+                    self._happened("skip", plan.connection, said.encode("utf-8"))
                 if reader.deadline is not None and time.monotonic() >= reader.deadline:
                     raise RdisTimeout(missed)
                 reader.put_back(head[1:])
@@ -3369,6 +3372,8 @@ class Exchange:
                 return case, [*local, value], decoded
             if not skip:
                 raise RdisProtocolError(miss)
+            if self._trace_callbacks:
+                self._happened("skip", plan.connection, miss.encode("utf-8"))
             if reader.deadline is not None and time.monotonic() >= reader.deadline:
                 raise RdisTimeout(missed)
             reader.put_back((head + body)[1:])  # a message of another kind: looked for from the byte after its tag
