@@ -116,7 +116,8 @@ def _edges(model: m.Model) -> Iterator[tuple[str, str, str]]:
         if p.frame is not None:
             yield f"primitive:{p.name}", f"frame:{p.frame.frame}", "frame"
         if p.reply_frames:
-            yield f"primitive:{p.name}", f"frame:{p.reply_frames[0].frame}", f"{p.replies} replies"
+            said = f"{p.replies} replies" if p.each is None else f"a reply each of {p.each.over}"
+            yield f"primitive:{p.name}", f"frame:{p.reply_frames[0].frame}", said
         listed = [r.frame for r in p.listed if r.frame is not None]
         for frame in dict.fromkeys(use.frame for use in listed):
             yield f"primitive:{p.name}", f"frame:{frame}", f"{len(p.listed)} replies"

@@ -119,3 +119,17 @@ def test_an_output_s_frame_is_an_edge_to_its_link(rdisc) -> None:
     dot = rdisc("graph", "tests/runtime/data/framed_create.rdis").stdout
     assert [line.strip() for line in dot.splitlines() if '"link:' in line and "output:" in line] == [
         '"output:detect_bump" -> "link:bumper" [label="in frame"];']
+
+
+def test_replies_over_an_array_parameter_are_one_edge_named_by_it(rdisc, tmp_path: Path) -> None:
+    source = tmp_path / "each.rdis"
+    source.write_text("""\
+robot r { author "tests" }
+connection bus: serial { baud 115200 }
+frame status(id: int in 0..253) { request { payload }  reply { header "\\xFE"  field id "B" = id  payload } }
+state present: int[]
+primitive read_each(ids: int[] in 0..253) on bus pack "<B*(B)" (0x82, ids)
+    replies id in ids frame status(id) unpack "<H" { present = out[0] }
+""", encoding="utf-8")
+    dot = rdisc("graph", source).stdout
+    assert '"primitive:read_each" -> "frame:status" [label="a reply each of ids"];' in dot

@@ -36,6 +36,8 @@ from rdisc.semantics.frames import CATALOGUE
 
 INT, FLOAT, BOOL, STRING, BYTES = "int", "float", "bool", "string", "bytes"
 NUMBERS = (INT, FLOAT)
+INTS = "int[]"  # an array parameter of any size: `replies eid in ids` goes over its elements
+EACH_VAR = "eid"  # the variable of `replies eid in ids`: each element, in the reply frame's arguments
 
 # The standard adapters (stdlib/adapters.rdis): field names and types, in order.
 ADAPTERS: dict[str, tuple[tuple[str, str], ...]] = {
@@ -1269,6 +1271,7 @@ class Primitive:
     retries: int = 0  # `retry N`: resends after a timeout or a mismatched reply
     error: bytes = b""  # `error "MARKER" unpack "B"`: the bytes an unframed error reply starts with
     nested: tuple[int, int] | None = None  # (an entry, a sub-tag): that entry a nested table `tag "B" { SUB: ... }`
+    each_args: tuple[Expr, ...] = ()  # `replies eid in ids frame F(each_args)`: a reply for each element of `ids`
 
     def text(self) -> str:
         clauses = [f"on {self.connection}"]
@@ -1284,6 +1287,10 @@ class Primitive:
             clauses.append(f"timeout {self.timeout_ms} ms")
         if self.retries:
             clauses.append(f"retry {self.retries}")
+        if self.each_args:
+            assert self.frame is not None
+            clauses.append(f"replies {EACH_VAR} in {self.params[-1].name} frame {self.frame.name}"
+                           f"({', '.join(a.text() for a in self.each_args)})")
         if self.error:
             clauses.append(f'error {bytes_literal(self.error)} unpack "B"')
         if self.key is not None or self.tag is not None:
@@ -1700,8 +1707,15 @@ def primitives(draw: Draw, name: str, states: Mapping[str, str], scope: Scope,
     single = [at for at, last in enumerate(lasts or (None,) * len(entries)) if last is None]
     if tag is not None and (frame is None or not frame.reply) and single and sometimes(draw, 3):
         nested = (draw(st.sampled_from(single)), draw(st.integers(0, 0x7F)))
+    each_args: tuple[Expr, ...] = ()  # a sync read: a reply for each element of an array parameter, each its own id
+    if (reply is not None and framed_reply and frame is not None and frame.params and not error and not listener
+            and sometimes(draw, 2)):
+        at = draw(st.integers(0, len(frame_args) - 1))
+        each_args = tuple(Name(INT, EACH_VAR) if i == at else a for i, a in enumerate(frame_args))
+        params += (Param("ids", INTS),)
+        reply = Reply(reply.decoding, ())  # its values are arrays of any size: none of them is stored
     return Primitive(name, params, draw(st.sampled_from(connections)), encoding, template, args, reply, actions,
-                     key, tag, entries, frame, frame_args, skip, timeout, lasts, retries, error, nested)
+                     key, tag, entries, frame, frame_args, skip, timeout, lasts, retries, error, nested, each_args)
 
 
 def _call_args(draw: Draw, prim: Primitive, scope: Scope) -> tuple[Expr, ...] | None:
@@ -1742,10 +1756,10 @@ def interfaces(draw: Draw, name: str, states: Mapping[str, str], scope: Scope,
     periodic = sometimes(draw, 4)
     params = () if periodic else _params(draw, "b", states, 3, [INT, FLOAT, FLOAT, BOOL, STRING, BYTES])
     local = _shadowed(scope, {p.name: p.type for p in params})
-    candidates = list(prims)
-    if periodic and prims:
-        connection = draw(st.sampled_from(prims)).connection
-        candidates = [p for p in prims if p.connection == connection]
+    candidates = [p for p in prims if not p.each_args]  # an array argument: the host's alone
+    if periodic and candidates:
+        connection = draw(st.sampled_from(candidates)).connection
+        candidates = [p for p in candidates if p.connection == connection]
     calls = []
     for _ in range(draw(st.integers(0 if periodic else 1, 3))):
         if not candidates:
@@ -1866,7 +1880,7 @@ def frame_fields_env(prim: Primitive, values: Mapping[str, Any]) -> dict[str, An
     """The frame's parameters' values for a call of `prim` with these parameter values (and state)."""
     assert prim.frame is not None
     env: dict[str, Any] = {}
-    for q, arg in zip(prim.frame.params, prim.frame_args):
+    for q, arg in zip(prim.frame.params, prim.each_args if EACH_VAR in values else prim.frame_args):
         try:
             env[q] = arg.value(values)
         except Unknown:
@@ -1904,6 +1918,11 @@ def reply_for(description: Description, prim: Primitive, values: Mapping[str, An
     if not prim.reads:
         return Wire(plan.material if plan.kind == "garbage" else b"", False)  # it talks unasked, sometimes
     right = valid_reply(description, prim, values, request, plan)
+    if prim.each_args:  # a reply for each element, through the frame of its own id
+        elements = values.get(prim.params[-1].name)
+        answers = [valid_reply(description, prim, {**values, EACH_VAR: e}, request, plan)
+                   for e in elements or ()] if isinstance(elements, (list, tuple)) else []
+        right = Wire(b"".join(w.data for w in answers), bool(answers) and all(w.valid for w in answers))
     valid = right.data
     if plan.kind in ("valid", "lower"):
         return right
@@ -1979,7 +1998,7 @@ def _plans_text(plans: Sequence[ReplyPlan]) -> str:
 _EXTREME = {INT: [255, 256, -1, 65535, 65536, 2**31, -2**31 - 1, 2**63, 2**70, 2**1030],  # 2**1030: no float holds it
             FLOAT: [-0.0, 255, -1, 1e300, -1e300, math.inf, math.nan]}
 _WRONG = {INT: [1.5, "7", True, None], FLOAT: ["x", True, None], BOOL: [1, "True"], STRING: [5, b"ab"],
-          BYTES: ["zz", 3.5, [256], None]}
+          BYTES: ["zz", 3.5, [256], None], INTS: [3, [1.5], "12", None]}
 
 
 @st.composite
@@ -1993,6 +2012,8 @@ def value_for(draw: Draw, type_: str, low: float | None = None, high: float | No
         return draw(st.sampled_from([low - 1, high + 1] if type_ == INT else [low - 0.5, high + 0.5, math.nan]))
     if type_ in NUMBERS and not ranged and sometimes(draw, 5):
         return draw(st.sampled_from(_EXTREME[type_]))
+    if type_ == INTS:  # each element often a frame field's value, sometimes none at all
+        return draw(st.lists(st.integers(-2, 300) | st.sampled_from([0, 1, 2]), max_size=3))
     if type_ == INT:
         return draw(st.integers(int(low), int(high)) if ranged else st.integers(-5, 300))
     if type_ == FLOAT:

@@ -220,7 +220,8 @@ def error_key(err: BaseException) -> tuple[str, str]:
 
 def _plainly(param: Any, value: Any) -> bool:
     """Whether a value is plainly of its parameter's type (no conversion the contract allows)."""
-    kinds = {"int": (int,), "float": (int, float), "bool": (bool,), "string": (str,), "bytes": (bytes, bytearray)}
+    kinds = {"int": (int,), "float": (int, float), "bool": (bool,), "string": (str,), "bytes": (bytes, bytearray),
+             "int[]": (list, tuple)}
     return isinstance(value, kinds[param.type]) and (param.type == "bool" or not isinstance(value, bool))
 
 

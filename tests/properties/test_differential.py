@@ -2,9 +2,10 @@
 
 tests/test_one_semantics.py drives both implementations of a few fixed
 descriptions; here hypothesis draws the descriptions too (tests/properties/
-descriptions.py): frames with every kind of part, stuffing, reply tables and
+descriptions.py): frames with every kind of part (two length fields too), stuffing, reply tables and
 tagged replies, acknowledgements, listeners, `skip unmatched`, ASCII formats and
-regexes, ranges, bytes, reply timeouts, post-actions, interfaces, hooks, inputs
+regexes, ranges, bytes, a reply for each element of an array parameter (`replies
+eid in ids`), reply timeouts, post-actions, interfaces, hooks, inputs
 and outputs. Each is compiled, loaded by the runtime and imported as a generated
 driver, then both run the same sessions against a device that answers validly or
 not (tests/properties/differential_support.py). Bytes written, input resets,
