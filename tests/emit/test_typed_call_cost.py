@@ -65,6 +65,20 @@ def test_set_velocity_is_the_method_the_write_and_the_port(drivers: dict[str, An
     assert made == ([6] + [4] * 5 if way == "robot" else [7] + [5] * 5), made
 
 
+def test_an_interface_of_one_plain_write_is_the_method_the_write_and_the_port(drivers: dict[str, Any]) -> None:
+    """`robot.interfaces.drive(0.2, 32.767)`: its one call's values packed in the method (`round` of
+    Python's `*`), the robot's write, the port's write; given ints (not floats), the general way
+    writes the same bytes. 16 calls before (the interface run the general way)."""
+    port = ScriptedPort()
+    with drivers["create"].connect({"btserial": port}, threads=False) as robot:
+        robot.interfaces  # noqa: B018 - made once
+        del port.written[:]
+        made = calls_made(lambda: robot.interfaces.drive(0.2, 32.767))
+        robot.interfaces.drive(0, -1)
+        assert bytes(port.written) == bytes.fromhex("89 00c8 7fff 89 0000 fc18")
+    assert made == 3, made
+
+
 def test_a_typed_input_given_ints_goes_the_general_way_to_the_same_bytes(drivers: dict[str, Any]) -> None:
     """An int for a float field is not the one step's (its type is tested): the general way makes
     it a float and writes what the floats write."""
