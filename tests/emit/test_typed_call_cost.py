@@ -172,3 +172,20 @@ def test_parameters_named_as_the_step_s_own_names_take_the_general_way(tmp_path:
         with pytest.raises(driver.RdisValueError):
             robot.primitives.put(type=256, robot=2, request=-3)
     assert port.writes == [bytes.fromhex("07 01 02 fffd")]
+
+
+@pytest.mark.parametrize("example", sorted(path.name for path in (ROOT / "examples").glob("*.rdis")))
+def test_the_lowering_plans_a_plain_exchange_only_where_the_engine_makes_one(example: str) -> None:
+    """A typed method hands a request to the engine's plain exchange (`_ask`) where the lowering
+    planned one (`Primitive.asked`): the engine's plan of that primitive is one too, by the same
+    rule (`asked_at_once`); and it plans one for every plain exchange of parameters without a
+    range reading another's."""
+    from rdisc.compile import compile_path
+    from rdisc.lower import lower
+    from rdisc.runtime import load
+
+    model = compile_path(str(ROOT / "examples" / example)).model
+    assert model is not None
+    planned = {name: plan.asked is not None for name, plan in lower(model).device.primitives.items()}
+    made = {name: plan.asked is not None for name, plan in load(model).device.primitives.items()}
+    assert planned == made
