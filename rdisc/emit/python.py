@@ -794,21 +794,26 @@ class _Driver:
                     "`robot.primitives` hold a typed method for each element of the description."]
             w.line(_docstring("\n".join(doc)))
             w.blank(1)
+            typed = (("inputs", "The domain inputs, as typed methods."),
+                     ("interfaces", "The interfaces, as typed methods."),
+                     ("primitives", "The primitives, as typed methods."))
+            # slots, not properties: every typed call reads one, and a slot is read without a call
+            w.line(f"__slots__ = {_tuple([quoted(member) for member, _ in typed])}")
+            for member, doc_ in typed:
+                w.blank(1)
+                w.line(f"{member}: {cls}{member.capitalize()}")
+                w.line(f'"""{doc_}"""')
+            w.blank(1)
             with w.block("def __init__(self, *, timeout: float = 1.0) -> None:"):
                 w.line('"""A robot not connected yet: `open()` connects it. `timeout`: seconds a reply may take."""')
                 w.line("super().__init__(_DEVICE, timeout=timeout)")
-            for member, returns, body, doc_ in (
-                ("state", f"{cls}State", f"{cls}State(self._state)", "The state variables now: an immutable snapshot."),
-                ("inputs", f"{cls}Inputs", f"{cls}Inputs(self)", "The domain inputs, as typed methods."),
-                ("interfaces", f"{cls}Interfaces", f"{cls}Interfaces(self)", "The interfaces, as typed methods."),
-                ("primitives", f"{cls}Primitives", f"{cls}Primitives(self)", "The primitives, as typed methods."),
-            ):
-                w.blank(1)
-                # made once, then an attribute of the robot's: read by every typed call
-                w.line("@property" if member == "state" else "@functools.cached_property")
-                with w.block(f"def {member}(self) -> {returns}:"):
-                    w.line(f'"""{doc_}"""')
-                    w.line(f"return {body}")
+                for member, _ in typed:
+                    w.line(f"self.{member} = {cls}{member.capitalize()}(self)")
+            w.blank(1)
+            w.line("@property")
+            with w.block(f"def state(self) -> {cls}State:"):
+                w.line('"""The state variables now: an immutable snapshot."""')
+                w.line(f"return {cls}State(self._state)")
             for i in model.inputs.values():
                 w.blank(1)
                 self.input_method(w, i, self.input_methods[i.name], "self", keywords=False)

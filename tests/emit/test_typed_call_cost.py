@@ -71,7 +71,6 @@ def test_an_interface_of_one_plain_write_is_the_method_the_write_and_the_port(dr
     writes the same bytes. 16 calls before (the interface run the general way)."""
     port = ScriptedPort()
     with drivers["create"].connect({"btserial": port}, threads=False) as robot:
-        robot.interfaces  # noqa: B018 - made once
         del port.written[:]
         made = calls_made(lambda: robot.interfaces.drive(0.2, 32.767))
         robot.interfaces.drive(0, -1)
@@ -98,10 +97,10 @@ def test_a_typed_write_is_the_method_the_write_and_the_port(drivers: dict[str, A
                                                             primitive: str, args: tuple[int, ...], expected: str) -> None:
     """AX-12 goto_all(512), a framed broadcast write with its checksum summed inline, and the
     Create 2's drive_direct: the method (its range tested inline), the robot's write and the
-    port's write. 6 calls before (the `primitives` property, the request's function, `_send`)."""
+    port's write (`robot.primitives` a slot of the robot's). 6 calls before (the `primitives`
+    property, the request's function, `_send`)."""
     port = ScriptedPort()
     with drivers[driver].connect({connection: port}, threads=False) as robot:
-        robot.primitives  # noqa: B018 - made once
         del port.written[:]
         assert calls_made(lambda: getattr(robot.primitives, primitive)(*args)) == 3
         assert bytes(port.written) == bytes.fromhex(expected)
@@ -136,21 +135,21 @@ class Create2:
 
 def test_the_sensor_exchange_is_one_plain_exchange_from_the_method(drivers: dict[str, Any]) -> None:
     """`robot.primitives.sensors()`: the method hands its constant request to the plain exchange
-    (`_ask`: one read, one unpack), whose post-actions store the 69 values. The port's own calls
-    are 6 of them (its reset, its write and the device's answer, its read of the 80 bytes). 12
-    calls before (the `primitives` property, `_call_primitive`, the engine's composed request and
-    its values' function)."""
+    (`_ask`: one read, one unpack), whose post-actions (`_assign`, the actions' function) store
+    the 69 values. The port's own calls are 6 of them (its reset, its write and the device's
+    answer, its read of the 80 bytes). 14 calls before (the `primitives` property,
+    `_call_primitive`, the engine's composed request and its values' function)."""
     port = ScriptedPort(device=Create2())
     with drivers["create2"].connect({"oi": port}, threads=False) as robot:
         robot.primitives.sensors()
-        made = calls_made(robot.primitives.sensors)
+        made = calls_made(lambda: robot.primitives.sensors())
         state = robot.state
         assert (state["bump_right"], state["bump_left"], state["wheel_drop_left"], state["wall"]) == (
             True, False, False, True)
         assert (state["voltage"], state["current"], state["left_encoder"], state["stasis_disabled"]) == (
             15412, -1285, 31204, True)
     assert port.writes[-2:] == [b"\x8e\x64", b"\x8e\x64"]
-    assert made == 9, made
+    assert made == 10, made
 
 
 PARAMETERS_NAMED_AS_THE_STEP = """\
