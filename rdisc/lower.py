@@ -40,7 +40,7 @@ from rdisc.semantics.evaluate import prepare
 from rdisc.semantics.ros import header_frames
 
 __all__ = ["Call", "Code", "Connection", "Device", "ErrorReply", "Frame", "FrameUse", "Gives", "Hook", "Input", "Interface",
-           "Output", "Plans", "Primitive", "Written", "frame", "lower"]
+           "Output", "Plans", "Primitive", "Written", "frame", "lower", "written_at_once"]
 
 LOWERED_ONLY = "lowered only"
 """The metadata key of a plan's field that its engine counterpart does not take."""
@@ -561,7 +561,7 @@ class _Lowering:
         fields = tuple(m.Parameter(f.name, f.type) for f in adapter.fields)
         interface = interfaces[i.interface]
         plan = Input(i.name, i.adapter, _params(fields), interface, _values(fields, i.args))
-        return dataclasses.replace(plan, request=_written_at_once(interface))
+        return dataclasses.replace(plan, request=written_at_once(interface))
 
     def connection(self, c: m.Connection, interfaces: Mapping[str, Interface]) -> Connection:
         def hook(call: m.HookCall | None) -> Hook | None:
@@ -726,7 +726,7 @@ def _evaluated(code: Code) -> Any:
     return lambda args: [f(_NO_STATE, args, ()) for f in fs]
 
 
-def _written_at_once(interface: Interface) -> bool:
+def written_at_once(interface: Interface) -> bool:
     """Whether running the interface is one plain write: the engine's rule
     (`engine.written_at_once`), of this plan."""
     call = interface.calls[0] if len(interface.calls) == 1 else None

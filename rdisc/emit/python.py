@@ -504,7 +504,7 @@ class _Driver:
         w.line(f"{pack} = struct.Struct({quoted(call.target.encoder.args[0])}).pack")
         fields = plan.args.params
         step = OneStep("_write", self.names[call.target], "_input_in_full", self.plan["input", i.name], fields,
-                       pack, input=plan)
+                       pack, call=call, binding=plan.args)
         self.one_step["input", i.name] = step
         local = _params([(f.name, f.type) for f in fields])
         function = f"_request_{i.name}"
@@ -651,15 +651,16 @@ class _Driver:
         """The statements of a one-step request, the values already tested: the last one `target`
         (`return ` or `request = `) the bytes. `local`: the parameters' (or fields') names."""
         taken = set(local.values()) | _body_names()
-        if step.input is not None:
-            (call,) = step.input.interface.calls
+        if step.call is not None:  # an interface's one call: an input's fields bound to its parameters first
+            call, inner = step.call, local
             iface_params = call.args.params
-            inner = _params([(prm.name, prm.type) for prm in iface_params], frozenset(taken | {"request"}))
-            used = set().union(*(_names(e) for _, e, _ in call.args.items))
-            if iface_params:
-                targets = [inner[prm.name] if prm.name in used else "_" for prm in iface_params]
-                bound = [self.exprs.bound(e, prm.type, local) for (_, e, _), prm in zip(step.input.args.items, iface_params)]
-                _items(w, f"{', '.join(targets)} = ", "(", bound, ")" if len(bound) > 1 else "")
+            if step.binding is not None:
+                inner = _params([(prm.name, prm.type) for prm in iface_params], frozenset(taken | {"request"}))
+                used = set().union(*(_names(e) for _, e, _ in call.args.items))
+                if iface_params:
+                    targets = [inner[prm.name] if prm.name in used else "_" for prm in iface_params]
+                    bound = [self.exprs.bound(e, prm.type, local) for (_, e, _), prm in zip(step.binding.items, iface_params)]
+                    _items(w, f"{', '.join(targets)} = ", "(", bound, ")" if len(bound) > 1 else "")
             packed = [self.exprs.packed(e, t, inner) for _, e, t in call.args.items]
             _items(w, target, f"{step.pack}(", packed, ")")
             return
@@ -733,6 +734,15 @@ class _Driver:
         if plan.calls:
             w.blank(2)
         self.constant(w, self.plan["interface", iface.name], plan)
+        if lowering.written_at_once(plan):  # its typed method packs its one call's values and writes them
+            (call,) = plan.calls
+            assert isinstance(call.target, lowering.Primitive) and call.target.encoder is not None
+            pack = _constant_name(f"PACK_{iface.name}_CALL", self.taken)
+            w.blank(2)
+            w.line(f"{pack} = struct.Struct({quoted(call.target.encoder.args[0])}).pack")
+            self.one_step["interface", iface.name] = OneStep(
+                "_write", self.names[call.target], "_call_interface", self.plan["interface", iface.name],
+                call.args.params, pack, call=call)
 
     # -- the typed face --------------------------------------------------------------------------
 
@@ -784,21 +794,26 @@ class _Driver:
                     "`robot.primitives` hold a typed method for each element of the description."]
             w.line(_docstring("\n".join(doc)))
             w.blank(1)
+            typed = (("inputs", "The domain inputs, as typed methods."),
+                     ("interfaces", "The interfaces, as typed methods."),
+                     ("primitives", "The primitives, as typed methods."))
+            # slots, not properties: every typed call reads one, and a slot is read without a call
+            w.line(f"__slots__ = {_tuple([quoted(member) for member, _ in typed])}")
+            for member, doc_ in typed:
+                w.blank(1)
+                w.line(f"{member}: {cls}{member.capitalize()}")
+                w.line(f'"""{doc_}"""')
+            w.blank(1)
             with w.block("def __init__(self, *, timeout: float = 1.0) -> None:"):
                 w.line('"""A robot not connected yet: `open()` connects it. `timeout`: seconds a reply may take."""')
                 w.line("super().__init__(_DEVICE, timeout=timeout)")
-            for member, returns, body, doc_ in (
-                ("state", f"{cls}State", f"{cls}State(self._state)", "The state variables now: an immutable snapshot."),
-                ("inputs", f"{cls}Inputs", f"{cls}Inputs(self)", "The domain inputs, as typed methods."),
-                ("interfaces", f"{cls}Interfaces", f"{cls}Interfaces(self)", "The interfaces, as typed methods."),
-                ("primitives", f"{cls}Primitives", f"{cls}Primitives(self)", "The primitives, as typed methods."),
-            ):
-                w.blank(1)
-                # made once, then an attribute of the robot's: read by every typed call
-                w.line("@property" if member == "state" else "@functools.cached_property")
-                with w.block(f"def {member}(self) -> {returns}:"):
-                    w.line(f'"""{doc_}"""')
-                    w.line(f"return {body}")
+                for member, _ in typed:
+                    w.line(f"self.{member} = {cls}{member.capitalize()}(self)")
+            w.blank(1)
+            w.line("@property")
+            with w.block(f"def state(self) -> {cls}State:"):
+                w.line('"""The state variables now: an immutable snapshot."""')
+                w.line(f"return {cls}State(self._state)")
             for i in model.inputs.values():
                 w.blank(1)
                 self.input_method(w, i, self.input_methods[i.name], "self", keywords=False)
@@ -911,8 +926,8 @@ class _Driver:
             with w.block("else:"):
                 w.line(general)
             return
-        if step.input is not None:
-            exprs = [e for _, e, _ in (*step.input.args.items, *step.input.interface.calls[0].args.items)]
+        if step.call is not None:
+            exprs = [e for _, e, _ in (*(step.binding.items if step.binding else ()), *step.call.args.items)]
         else:
             assert step.written is not None
             exprs = [e for _, e, _ in step.written.values.items]

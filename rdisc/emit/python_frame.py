@@ -84,7 +84,8 @@ def byte_terms(name: str, slot: m.Slot) -> list[str]:
 class OneStep:
     """A request a typed method makes in one step and hands to the engine's write (`Robot._write`)
     or plain exchange (`Robot._ask`), as the lowering planned it: a primitive's (`written`, with
-    its struct constants) or an input's (`input`, its interface's one call packed by `pack`).
+    its struct constants), or an interface's that is one plain write (`call`, its one call packed
+    by `pack`), or an input's of such an interface (`binding` besides).
     Values it does not take go the general way (`general`, with the values as a list), which says
     what is wrong."""
 
@@ -97,7 +98,8 @@ class OneStep:
     written: lowering.Written | None = None
     whole: WholeFrame | None = None
     checked: tuple[str, str] = ("", "")  # a checksum not in the whole struct: its value, around the payload's name
-    input: lowering.Input | None = None
+    call: lowering.Call | None = None  # an interface's one call, its arguments packed by `pack`
+    binding: lowering.Code | None = None  # an input's: its fields to the interface's parameters
 
 
 _TYPES = {Type.INT: "int", Type.FLOAT: "float", Type.BOOL: "bool", Type.STRING: "str", Type.BYTES: "bytes"}

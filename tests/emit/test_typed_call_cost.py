@@ -65,6 +65,19 @@ def test_set_velocity_is_the_method_the_write_and_the_port(drivers: dict[str, An
     assert made == ([6] + [4] * 5 if way == "robot" else [7] + [5] * 5), made
 
 
+def test_an_interface_of_one_plain_write_is_the_method_the_write_and_the_port(drivers: dict[str, Any]) -> None:
+    """`robot.interfaces.drive(0.2, 32.767)`: its one call's values packed in the method (`round` of
+    Python's `*`), the robot's write, the port's write; given ints (not floats), the general way
+    writes the same bytes. 16 calls before (the interface run the general way)."""
+    port = ScriptedPort()
+    with drivers["create"].connect({"btserial": port}, threads=False) as robot:
+        del port.written[:]
+        made = calls_made(lambda: robot.interfaces.drive(0.2, 32.767))
+        robot.interfaces.drive(0, -1)
+        assert bytes(port.written) == bytes.fromhex("89 00c8 7fff 89 0000 fc18")
+    assert made == 3, made
+
+
 def test_a_typed_input_given_ints_goes_the_general_way_to_the_same_bytes(drivers: dict[str, Any]) -> None:
     """An int for a float field is not the one step's (its type is tested): the general way makes
     it a float and writes what the floats write."""
@@ -84,10 +97,10 @@ def test_a_typed_write_is_the_method_the_write_and_the_port(drivers: dict[str, A
                                                             primitive: str, args: tuple[int, ...], expected: str) -> None:
     """AX-12 goto_all(512), a framed broadcast write with its checksum summed inline, and the
     Create 2's drive_direct: the method (its range tested inline), the robot's write and the
-    port's write. 6 calls before (the `primitives` property, the request's function, `_send`)."""
+    port's write (`robot.primitives` a slot of the robot's). 6 calls before (the `primitives`
+    property, the request's function, `_send`)."""
     port = ScriptedPort()
     with drivers[driver].connect({connection: port}, threads=False) as robot:
-        robot.primitives  # noqa: B018 - made once
         del port.written[:]
         assert calls_made(lambda: getattr(robot.primitives, primitive)(*args)) == 3
         assert bytes(port.written) == bytes.fromhex(expected)
@@ -122,21 +135,21 @@ class Create2:
 
 def test_the_sensor_exchange_is_one_plain_exchange_from_the_method(drivers: dict[str, Any]) -> None:
     """`robot.primitives.sensors()`: the method hands its constant request to the plain exchange
-    (`_ask`: one read, one unpack), whose post-actions store the 69 values. The port's own calls
-    are 6 of them (its reset, its write and the device's answer, its read of the 80 bytes). 12
-    calls before (the `primitives` property, `_call_primitive`, the engine's composed request and
-    its values' function)."""
+    (`_ask`: one read, one unpack), whose post-actions (`_assign`, the actions' function) store
+    the 69 values. The port's own calls are 6 of them (its reset, its write and the device's
+    answer, its read of the 80 bytes). 14 calls before (the `primitives` property,
+    `_call_primitive`, the engine's composed request and its values' function)."""
     port = ScriptedPort(device=Create2())
     with drivers["create2"].connect({"oi": port}, threads=False) as robot:
         robot.primitives.sensors()
-        made = calls_made(robot.primitives.sensors)
+        made = calls_made(lambda: robot.primitives.sensors())
         state = robot.state
         assert (state["bump_right"], state["bump_left"], state["wheel_drop_left"], state["wall"]) == (
             True, False, False, True)
         assert (state["voltage"], state["current"], state["left_encoder"], state["stasis_disabled"]) == (
             15412, -1285, 31204, True)
     assert port.writes[-2:] == [b"\x8e\x64", b"\x8e\x64"]
-    assert made == 9, made
+    assert made == 10, made
 
 
 PARAMETERS_NAMED_AS_THE_STEP = """\
@@ -158,3 +171,20 @@ def test_parameters_named_as_the_step_s_own_names_take_the_general_way(tmp_path:
         with pytest.raises(driver.RdisValueError):
             robot.primitives.put(type=256, robot=2, request=-3)
     assert port.writes == [bytes.fromhex("07 01 02 fffd")]
+
+
+@pytest.mark.parametrize("example", sorted(path.name for path in (ROOT / "examples").glob("*.rdis")))
+def test_the_lowering_plans_a_plain_exchange_only_where_the_engine_makes_one(example: str) -> None:
+    """A typed method hands a request to the engine's plain exchange (`_ask`) where the lowering
+    planned one (`Primitive.asked`): the engine's plan of that primitive is one too, by the same
+    rule (`asked_at_once`); and it plans one for every plain exchange of parameters without a
+    range reading another's."""
+    from rdisc.compile import compile_path
+    from rdisc.lower import lower
+    from rdisc.runtime import load
+
+    model = compile_path(str(ROOT / "examples" / example)).model
+    assert model is not None
+    planned = {name: plan.asked is not None for name, plan in lower(model).device.primitives.items()}
+    made = {name: plan.asked is not None for name, plan in load(model).device.primitives.items()}
+    assert planned == made

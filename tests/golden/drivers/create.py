@@ -5184,29 +5184,28 @@ class IrobotCreate(Robot):
     `robot.primitives` hold a typed method for each element of the description.
     """
 
+    __slots__ = ("inputs", "interfaces", "primitives")
+
+    inputs: IrobotCreateInputs
+    """The domain inputs, as typed methods."""
+
+    interfaces: IrobotCreateInterfaces
+    """The interfaces, as typed methods."""
+
+    primitives: IrobotCreatePrimitives
+    """The primitives, as typed methods."""
+
     def __init__(self, *, timeout: float = 1.0) -> None:
         """A robot not connected yet: `open()` connects it. `timeout`: seconds a reply may take."""
         super().__init__(_DEVICE, timeout=timeout)
+        self.inputs = IrobotCreateInputs(self)
+        self.interfaces = IrobotCreateInterfaces(self)
+        self.primitives = IrobotCreatePrimitives(self)
 
     @property
     def state(self) -> IrobotCreateState:
         """The state variables now: an immutable snapshot."""
         return IrobotCreateState(self._state)
-
-    @functools.cached_property
-    def inputs(self) -> IrobotCreateInputs:
-        """The domain inputs, as typed methods."""
-        return IrobotCreateInputs(self)
-
-    @functools.cached_property
-    def interfaces(self) -> IrobotCreateInterfaces:
-        """The interfaces, as typed methods."""
-        return IrobotCreateInterfaces(self)
-
-    @functools.cached_property
-    def primitives(self) -> IrobotCreatePrimitives:
-        """The primitives, as typed methods."""
-        return IrobotCreatePrimitives(self)
 
     def set_velocity(self, linear: float, angular: float) -> None:
         """A Twist from the framework: `linear` m/s along the heading, `angular` rad/s

@@ -5414,29 +5414,28 @@ class Koala(Robot):
     `robot.primitives` hold a typed method for each element of the description.
     """
 
+    __slots__ = ("inputs", "interfaces", "primitives")
+
+    inputs: KoalaInputs
+    """The domain inputs, as typed methods."""
+
+    interfaces: KoalaInterfaces
+    """The interfaces, as typed methods."""
+
+    primitives: KoalaPrimitives
+    """The primitives, as typed methods."""
+
     def __init__(self, *, timeout: float = 1.0) -> None:
         """A robot not connected yet: `open()` connects it. `timeout`: seconds a reply may take."""
         super().__init__(_DEVICE, timeout=timeout)
+        self.inputs = KoalaInputs(self)
+        self.interfaces = KoalaInterfaces(self)
+        self.primitives = KoalaPrimitives(self)
 
     @property
     def state(self) -> KoalaState:
         """The state variables now: an immutable snapshot."""
         return KoalaState(self._state)
-
-    @functools.cached_property
-    def inputs(self) -> KoalaInputs:
-        """The domain inputs, as typed methods."""
-        return KoalaInputs(self)
-
-    @functools.cached_property
-    def interfaces(self) -> KoalaInterfaces:
-        """The interfaces, as typed methods."""
-        return KoalaInterfaces(self)
-
-    @functools.cached_property
-    def primitives(self) -> KoalaPrimitives:
-        """The primitives, as typed methods."""
-        return KoalaPrimitives(self)
 
     def set_velocity(self, linear: float, angular: float) -> None:
         """A Twist from the framework, as wheel speeds: for a wheel base b, the left
