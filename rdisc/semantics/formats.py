@@ -411,16 +411,15 @@ def regex_groups(pattern: str) -> int:
     try:
         with warnings.catch_warnings():  # Python's hints about future syntax (`[[`) are not the user's to see
             warnings.simplefilter("ignore", FutureWarning)
-            parsed = regex_shape.parse_tree(pattern)
-            groups = regex_shape.groups(parsed)
-            risky = regex_shape.risk(parsed)
+            compiled = re.compile(pattern)
+            risky = regex_shape.risk(pattern)
     except re.error as err:
         raise TemplateError(f"invalid regular expression: {err.msg}", err.pos or 0) from None
     except (OverflowError, RecursionError, MemoryError):
         raise TemplateError("regular expression is too complex", 0, len(pattern)) from None
     if risky is not None:
         raise TemplateError(risky, 0, len(pattern))
-    return groups
+    return compiled.groups
 
 
 def regex_min_length(pattern: str) -> int:

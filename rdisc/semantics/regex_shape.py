@@ -76,22 +76,9 @@ def parse_tree(pattern: str) -> _parser.SubPattern:
     return _parser.parse(pattern)
 
 
-def groups(parsed: _parser.SubPattern) -> int:
-    """The groups of a parsed pattern, once it is compiled as `re.compile` compiles it (raises
-    re.error for what only compiling finds, as a look-behind of varying width): the pattern is
-    parsed once for both this and `risk`."""
-    if TYPE_CHECKING or sys.version_info < (3, 11):  # as the parser, above
-        import sre_compile as compiler
-    else:
-        from re import _compiler as compiler
-
-    compiled: re.Pattern[str] = compiler.compile(parsed)
-    return compiled.groups
-
-
-def risk(pattern: str | _parser.SubPattern) -> str | None:
-    """Why `pattern` (or its parse tree) can take more than linear time on some line, or None (it cannot)."""
-    parsed = parse_tree(pattern) if isinstance(pattern, str) else pattern
+def risk(pattern: str) -> str | None:
+    """Why `pattern` can take more than linear time on some line, or None (it cannot)."""
+    parsed = parse_tree(pattern)
     try:
         _Walk(parsed.state).sequence(list(parsed.data), [], 0)
     except Risky as err:

@@ -3,8 +3,6 @@ shapes real devices use are not."""
 
 from __future__ import annotations
 
-from typing import Any
-
 import pytest
 from conftest import run_rdisc
 
@@ -82,19 +80,3 @@ def test_the_checker_reports_them_at_the_regex(tmp_path) -> None:
         "(`*+`, `++`)\n --> " in result.stderr
     )
     assert " --> " + str(source) + ":4:42\n" in result.stderr
-
-
-def test_a_reply_regex_is_parsed_once_for_its_groups_and_its_risk(monkeypatch: pytest.MonkeyPatch) -> None:
-    """Its groups (as `re.compile` counts them) and its shape are read from one parse tree."""
-    from rdisc.semantics import formats, regex_shape
-
-    parses: list[str] = []
-    parse = regex_shape._parser.parse
-
-    def counted(*args: Any, **kwargs: Any) -> Any:
-        parses.append(args[0])
-        return parse(*args, **kwargs)
-
-    monkeypatch.setattr(regex_shape._parser, "parse", counted)
-    assert formats.regex_groups(r"^once,(-?\d+),(\d+)\s*$") == 2
-    assert parses == [r"^once,(-?\d+),(\d+)\s*$"]
