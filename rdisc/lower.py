@@ -35,6 +35,7 @@ from rdisc.lowering.constructs import (
     stuffing,
 )
 from rdisc.lowering.messages import recorded_messages
+from rdisc.lowering.whole_frame import WholeFrame, whole_frame
 from rdisc.semantics import model as m
 from rdisc.semantics.evaluate import prepare
 from rdisc.semantics.ros import header_frames
@@ -123,6 +124,7 @@ class Written:
     partial: int | None = None  # a "sum" checksum: the sum of `covered`, to which the payload's is added
     tail: bytes = b""
     constant: bytes | None = None  # no parameters and constant values: the whole request, always
+    whole: WholeFrame | None = None  # head, payload, checksum and tail packed by one struct, where they can be
 
 
 # ---- the shapes of a reply: the engine's (`rdisc.engine.plans`), a table's entries each with its values
@@ -410,7 +412,7 @@ class _Lowering:
         entry's once, for each of its values), chosen by a parameter or by the reply's tag."""
         if p.table is None:
             plan = self.single(p, p.reply_locals())
-            return dataclasses.replace(plan, request=_written(plan, p.params))
+            return dataclasses.replace(plan, request=_written(plan, p.params, p.encoding))
         plain = self.single(dataclasses.replace(p, table=None), p.reply_locals())
         table = tuple(Entry(c, self.reply(plain, p.case(c), p.reply_locals())) for c in p.table.cases)
         if p.table.tag is None:
@@ -570,9 +572,10 @@ def frame(f: m.Frame) -> Frame:
                  more_replies=[parts(f, layout) for layout in f.more_replies], escaping=escaping(f))
 
 
-def _written(plan: Primitive, params: tuple[m.Parameter, ...]) -> Written | None:
+def _written(plan: Primitive, params: tuple[m.Parameter, ...], encoding: m.Pack | m.Format | None) -> Written | None:
     """A primitive's request in one step, when it is only written (`engine.sent_at_once`)
-    and its frame, if any, folds into constant bytes around a payload of a fixed size."""
+    and its frame, if any, folds into constant bytes around a payload of a fixed size (then packed
+    by one struct with them, `whole_frame`, where it can be)."""
     encoder = None if plan.encoder is None else plan.encoder.value
     sent = engine.sent_at_once(encoder=encoder, replies=not isinstance(plan.reply, NoReply),
                                acts=plan.actions is not None or plan.lines is not None,
@@ -582,6 +585,8 @@ def _written(plan: Primitive, params: tuple[m.Parameter, ...]) -> Written | None
         return None
     written = Written(params, plan.values, encoder.struct.format)
     folded = written if plan.frame is None else _folded(written, plan.frame, encoder.struct.size)
+    if folded is not None:
+        folded = dataclasses.replace(folded, whole=whole_frame(encoding, folded))
     if folded is None or params or not all(isinstance(e, m.Const) for _, e, _ in plan.values.items):
         return folded
     try:
