@@ -201,17 +201,17 @@ class Robot(Exchange):
     def closed(self) -> bool:
         return self._closed
 
-    @property
+    @functools.cached_property  # kept on the instance: a typed method's call looks it up as an attribute
     def inputs(self) -> Any:  # a Calls; a generated driver gives a class of typed methods
         """The domain inputs, by name: `robot.inputs.NAME(field=value, ...)`."""
         return self._calls["input"]
 
-    @property
+    @functools.cached_property  # kept on the instance: a typed method's call looks it up as an attribute
     def interfaces(self) -> Any:  # a Calls, or a driver's typed methods
         """The interfaces, by name: `robot.interfaces.NAME(param, ...)`."""
         return self._calls["interface"]
 
-    @property
+    @functools.cached_property  # kept on the instance: a typed method's call looks it up as an attribute
     def primitives(self) -> Any:  # a Calls, or a driver's typed methods
         """The primitives (device commands), by name: `robot.primitives.NAME(param, ...)`."""
         return self._calls["primitive"]

@@ -190,6 +190,19 @@ def _fused(kinds: tuple[type, ...], one: bool, two: bool, arguments: list[Prepar
     if two and len(arguments) == 2 and len(rest) == 2 and None not in scales:
         x, y = arguments
         (fa, ka, ca), (fb, kb, cb) = scales  # type: ignore[misc]  # none is None
+        if read is not None and (ka, kb) == (0, 1):  # each value its own argument's, in order
+            fx, kx, lx, hx = read
+
+            def two_read_scaled(state: Mapping[str, m.Value], given: Any) -> bytes | None:
+                try:
+                    a, b = given
+                    if type(a) is not k or type(b) is not j:
+                        return None
+                    return pack(fa(fx(given[kx], lx, hx) * ca), fb(y(state, given, ()) * cb))
+                except Exception:  # noqa: BLE001 - the general way says what is wrong
+                    return None
+
+            return two_read_scaled
         if read is not None:
             fx, kx, lx, hx = read
 

@@ -210,6 +210,8 @@ def _if_else(cond: m.Expr, then: m.Expr, orelse: m.Expr, slots: Mapping[str, int
         f, k, c = test
         if t is not None and f in _LOCAL_CHOSEN:  # the comparison made in the closure itself
             return _LOCAL_CHOSEN[f](k, c, tv, (lambda s, loc, r: ov) if o is not None else of, o is not None, ov)
+        if f is operator.eq and o is None:  # `(...) if linear == 0 else (...)`: the test made here too
+            return lambda s, loc, r: tf(s, loc, r) if loc[k] == c else of(s, loc, r)
         if t is not None and o is not None:
             return lambda s, loc, r: tv if f(loc[k], c) else ov
         if t is not None:
