@@ -203,20 +203,6 @@ def _fused(kinds: tuple[type, ...], one: bool, two: bool, arguments: list[Prepar
                     return None
 
             return two_read_scaled
-        if read is not None:
-            fx, kx, lx, hx = read
-
-            def two_read_scaled(state: Mapping[str, m.Value], given: Any) -> bytes | None:
-                try:
-                    a, b = given
-                    if type(a) is not k or type(b) is not j:
-                        return None
-                    inner = (fx(given[kx], lx, hx), y(state, given, ()))
-                    return pack(fa(inner[ka] * ca), fb(inner[kb] * cb))
-                except Exception:  # noqa: BLE001 - the general way says what is wrong
-                    return None
-
-            return two_read_scaled
 
         def two_scaled(state: Mapping[str, m.Value], given: Any) -> bytes | None:
             try:
