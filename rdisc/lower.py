@@ -35,6 +35,7 @@ from rdisc.lowering.constructs import (
     stuffing,
 )
 from rdisc.lowering.messages import recorded_messages
+from rdisc.lowering.whole_frame import WholeFrame, whole_frame
 from rdisc.semantics import model as m
 from rdisc.semantics.evaluate import prepare
 from rdisc.semantics.ros import header_frames
@@ -127,6 +128,7 @@ class Written:
     partial: int | None = None  # a "sum" checksum: the sum of `covered`, to which the payload's is added
     tail: bytes = b""
     constant: bytes | None = None  # no parameters and constant values: the whole request, always
+    whole: WholeFrame | None = None  # head, payload, checksum and tail packed by one struct, where they can be
 
 
 # ---- the shapes of a reply: the engine's (`rdisc.engine.plans`), a table's entries each with its values
@@ -418,7 +420,8 @@ class _Lowering:
         entry's once, for each of its values), chosen by a parameter or by the reply's tag."""
         if p.table is None:
             plan = self.single(p, p.reply_locals())
-            return dataclasses.replace(plan, request=_written(plan, p.params), asked=_asked(plan, p.params))
+            return dataclasses.replace(plan, request=_written(plan, p.params, p.encoding),
+                                       asked=_asked(plan, p.params))
         plain = self.single(dataclasses.replace(p, table=None), p.reply_locals())
         table = tuple(Entry(c, self.reply(plain, p.case(c), p.reply_locals())) for c in p.table.cases)
         if p.table.tag is None:
@@ -587,9 +590,10 @@ def frame(f: m.Frame) -> Frame:
                  more_replies=[parts(f, layout) for layout in f.more_replies], escaping=escaping(f))
 
 
-def _written(plan: Primitive, params: tuple[m.Parameter, ...]) -> Written | None:
+def _written(plan: Primitive, params: tuple[m.Parameter, ...], encoding: m.Pack | m.Format | None) -> Written | None:
     """A primitive's request in one step, when it is only written (`engine.sent_at_once`)
-    and its frame, if any, folds into constant bytes around a payload of a fixed size."""
+    and its frame, if any, folds into constant bytes around a payload of a fixed size (then packed
+    by one struct with them, `whole_frame`, where it can be)."""
     encoder = None if plan.encoder is None else plan.encoder.value
     sent = engine.sent_at_once(encoder=encoder, replies=not isinstance(plan.reply, NoReply),
                                acts=plan.actions is not None or plan.lines is not None,
@@ -599,7 +603,9 @@ def _written(plan: Primitive, params: tuple[m.Parameter, ...]) -> Written | None
     written = _packed(plan, params)
     assert isinstance(encoder, engine.Pack)  # `sent`
     folded = written if plan.frame is None or written is None else _folded(written, plan.frame, encoder.struct.size)
-    return None if folded is None else _constant(folded, encoder)
+    if folded is None:
+        return None
+    return _constant(dataclasses.replace(folded, whole=whole_frame(encoding, folded)), encoder)
 
 
 def _asked(plan: Primitive, params: tuple[m.Parameter, ...]) -> Written | None:

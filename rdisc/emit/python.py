@@ -32,7 +32,7 @@ from rdisc.emit import python_support as support
 from rdisc.emit.canonical import range_written
 from rdisc.emit.python_expr import Chain, Compiler, Paren, Py, binary, lines, literal, quoted, table_name
 from rdisc.emit.python_expr import call as function_call
-from rdisc.emit.python_frame import OneStep, byte_terms, reads_state, type_tests, whole_frame
+from rdisc.emit.python_frame import OneStep, byte_terms, reads_state, type_tests
 from rdisc.emit.writer import Writer, printable
 from rdisc.engine import carry
 from rdisc.lower import lower
@@ -605,7 +605,7 @@ class _Driver:
                     w.line(f"return None if args else {quoted(written.constant)}")
                 w.blank(2)
             return step
-        whole = whole_frame(prim.encoding, written)
+        whole = written.whole  # decided by the lowering
         pack = _constant_name(f"PACK_{prim.name}", self.taken)
         w.line(f"{pack} = struct.Struct({quoted(whole.format if whole else written.format)}).pack")
         checked = ("", "")

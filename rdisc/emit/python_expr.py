@@ -22,7 +22,13 @@ from typing import NoReturn
 
 from rdisc.semantics import model as m
 from rdisc.semantics.model import Scope, Type
-from rdisc.semantics.operators import binary_operation, call_operation, surely_float
+from rdisc.semantics.operators import (
+    binary_operation,
+    call_operation,
+    surely_float,
+    unchecked,
+    unchecked_operand,
+)
 from rdisc.syntax import precedence as p
 
 INDENT = "    "
@@ -255,19 +261,19 @@ class Compiler:
         arithmetic take Python's own `+`, `-` and `*`. Where the operations would refuse a result
         too large for a float, Python's gives an infinity or a NaN, which every later `+`, `-`
         and `*` keeps, and which round() and int() refuse: an error either way."""
-        match e:
-            case m.FuncCall(func="round" | "int", args=(arg,)) if arg.type is Type.FLOAT:
-                return call(e.func, [self.arithmetic(arg, names)])
+        arg = unchecked_operand(e)  # the rule, `rdisc.semantics.operators`'s: the runtime's too
+        if arg is not None and isinstance(e, m.FuncCall):
+            return call(e.func, [self.arithmetic(arg, names)])
         return self.expr(e, names) if declared is None else self.bound(e, declared, names)
 
     def arithmetic(self, e: m.Expr, names: Mapping[str, str]) -> Py:
         """Float `+`, `-`, `*` and negation with Python's operators (see `packed`), the rest as `expr`."""
-        match e:
-            case m.BinaryOp(op="+" | "-" | "*" as op, left=left, right=right, type=Type.FLOAT) \
-                    if left.type in _NUMBERS and right.type in _NUMBERS:
-                return binary(op, self.arithmetic(left, names), self.arithmetic(right, names))
-            case m.UnaryOp(op="-", operand=operand, type=Type.FLOAT):
-                return unary("-", self.arithmetic(operand, names))
+        if unchecked(e):
+            match e:
+                case m.BinaryOp(op=op, left=left, right=right):
+                    return binary(op, self.arithmetic(left, names), self.arithmetic(right, names))
+                case m.UnaryOp(operand=operand):
+                    return unary("-", self.arithmetic(operand, names))
         return self.expr(e, names)
 
     def binary(self, e: m.BinaryOp, names: Mapping[str, str]) -> Py:
@@ -279,9 +285,6 @@ class Compiler:
             # A bool against True or False: `is`, as linters want it (both sides are bools).
             return binary(e.op, a, b, "is" if e.op == "==" else "is not")
         return binary(e.op, a, b)
-
-
-_NUMBERS = (Type.INT, Type.FLOAT)
 
 
 def _bool_constant(e: m.Expr) -> bool:

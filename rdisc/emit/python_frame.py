@@ -1,6 +1,7 @@
-"""A one-step request's frame as one struct, for the generated driver: the frame's constant head,
-the payload, a sum checksum and the constant tail packed by one precompiled `struct.Struct`,
-the checksum summed from the values themselves (not from packed bytes), its constant part folded.
+"""A one-step request's frame as one struct (`rdisc.lowering.whole_frame`), written for the generated
+driver: the frame's constant head, the payload, a sum checksum and the constant tail packed by one
+precompiled `struct.Struct`, the checksum summed from the values themselves (not from packed
+bytes), its constant part folded.
 
 `goto_all(512)` of the AX-12 (`FF FF FE 05 | 03 1E 00 02 | D9`) becomes one call:
 
@@ -13,58 +14,15 @@ written for the values the pack takes only (`(goal >> 8)`, unmasked, is a byte w
 
 from __future__ import annotations
 
-import struct
 from dataclasses import dataclass
 
 from rdisc import lower as lowering
 from rdisc.emit.python_expr import literal
+from rdisc.lowering.whole_frame import WholeFrame, whole_frame
 from rdisc.semantics import model as m
 from rdisc.semantics.model import Type
 
-_INTEGER_CODES = frozenset("bBhHiIlLqQ")
-_STANDARD = {"<": "<", ">": ">", "!": ">", "=": "="}  # byte orders with standard sizes and no alignment
-
-
-@dataclass(frozen=True, slots=True)
-class WholeFrame:
-    """How one struct packs a one-step request whole."""
-
-    format: str  # the struct module's format: head (`Ns`), the payload's codes, the checksum's, tail (`Ns`)
-    partial: int | None  # a sum checksum's constant part: the bytes it covers of the head and of constant values
-    slots: tuple[m.Slot, ...]  # the payload's values' codes, in order
-
-
-def whole_frame(encoding: m.Pack | m.Format | None, written: lowering.Written) -> WholeFrame | None:
-    """The one struct of `written`'s head, payload, checksum and tail; None where its payload's
-    layout has host order, groups, bit fields or a code not an integer's (with a checksum), or
-    where the checksum is not a sum or not packed in the payload's byte order."""
-    if not isinstance(encoding, m.Pack) or (written.checksum is None and not written.head and not written.tail):
-        return None
-    layout = encoding.layout
-    order = _STANDARD.get(layout.order)
-    if order is None or layout.bits or layout.groups or layout.rest or layout.varying is not None:
-        return None
-    if len(layout.slots) != len(written.values.items):
-        return None
-    check = ""
-    partial = None
-    if written.checksum is not None:
-        if written.partial is None or not all(slot.code in _INTEGER_CODES for slot in layout.slots):
-            return None
-        check = written.check_format.lstrip("<>!=@")
-        prefix = written.check_format[: len(written.check_format) - len(check)]
-        if check not in _INTEGER_CODES or (written.check_size > 1 and _STANDARD.get(prefix) != order):
-            return None
-        partial = written.partial
-        for (_, value, _), slot in zip(written.values.items, layout.slots):
-            if isinstance(value, m.Const):
-                try:
-                    partial += sum(struct.pack(layout.order + slot.code, value.value))
-                except struct.error:
-                    return None  # the general way says what is wrong, each time
-    head = f"{len(written.head)}s" if written.head else ""
-    tail = f"{len(written.tail)}s" if written.tail else ""
-    return WholeFrame(f"{layout.order}{head}{layout.codes}{check}{tail}", partial, layout.slots)
+__all__ = ["WholeFrame", "byte_terms", "whole_frame"]  # the struct decided by the lowering; its terms written here
 
 
 def byte_terms(name: str, slot: m.Slot) -> list[str]:

@@ -93,13 +93,28 @@ class Calls:
             interface, what = plan, f"interface {name}"
             method = lambda *args, **kwargs: robot._call_interface(interface, _bind(what, interface.params, args, kwargs))
         else:
-            primitive, what = plan, f"primitive {name}"
-            method = lambda *args, **kwargs: robot._call_primitive(primitive, _bind(what, primitive.params, args, kwargs))
+            method = _primitive_method(robot, plan)
         setattr(self, name, method)
         return method
 
     def __dir__(self) -> list[str]:
         return sorted(self._plans())
+
+
+def _primitive_method(robot: Robot, plan: Primitive) -> Callable[..., None]:
+    """`robot.primitives.NAME`: its one plain write made here when it can be (`Robot.call_primitive`'s
+    path, inline: every command's), else the general way, with its arguments bound."""
+    request, what = plan.request, f"primitive {plan.name}"
+
+    def method(*args: Any, **kwargs: Any) -> None:
+        if request is not None and not kwargs and robot._direct:
+            data = request(robot._state, args)  # type: ignore[arg-type]  # a request takes any sequence of values
+            if data is not None:
+                robot._write(plan, data)
+                return
+        robot._call_primitive(plan, _bind(what, plan.params, args, kwargs))
+
+    return method
 
 
 class Robot(Exchange):
@@ -190,17 +205,17 @@ class Robot(Exchange):
     def closed(self) -> bool:
         return self._closed
 
-    @property
+    @functools.cached_property  # kept on the instance: a typed method's call looks it up as an attribute
     def inputs(self) -> Any:  # a Calls; a generated driver gives a class of typed methods
         """The domain inputs, by name: `robot.inputs.NAME(field=value, ...)`."""
         return self._calls["input"]
 
-    @property
+    @functools.cached_property  # kept on the instance: a typed method's call looks it up as an attribute
     def interfaces(self) -> Any:  # a Calls, or a driver's typed methods
         """The interfaces, by name: `robot.interfaces.NAME(param, ...)`."""
         return self._calls["interface"]
 
-    @property
+    @functools.cached_property  # kept on the instance: a typed method's call looks it up as an attribute
     def primitives(self) -> Any:  # a Calls, or a driver's typed methods
         """The primitives (device commands), by name: `robot.primitives.NAME(param, ...)`."""
         return self._calls["primitive"]
@@ -218,6 +233,15 @@ class Robot(Exchange):
             expected = ", ".join(f.name for f in plan.fields)
             raise TypeError(f"input {name} takes the fields {expected} ({plan.adapter}); "
                             f"given: {', '.join(fields) or 'none'}") from None
+        request = plan.request
+        if request is not None and self._direct:  # `_input`'s one plain write, inline: every command's path
+            data = request(self._state, values)
+            if data is not None:
+                assert plan.primitive is not None  # set with `request`
+                self._write(plan.primitive, data)
+                return
+            self._input_in_full(plan, values)
+            return
         self._input(plan, values)
 
     def call_interface(self, name: str, /, *args: Any) -> None:
@@ -233,6 +257,12 @@ class Robot(Exchange):
         plan = self.device.primitives.get(name)
         if plan is None:
             raise KeyError(f"{self.name} has no primitive named {name!r}")
+        request = plan.request
+        if request is not None and self._direct:  # `_call_primitive`'s one plain write, inline: every command's path
+            data = request(self._state, args)  # type: ignore[arg-type]  # a request takes any sequence of values
+            if data is not None:
+                self._write(plan, data)
+                return
         self._call_primitive(plan, list(args))
 
     def request(self, name: str, /, *args: Any) -> bytes:

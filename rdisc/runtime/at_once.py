@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import functools
 import math
+import operator
 import struct
 from collections.abc import Callable, Mapping
 from typing import Any
@@ -20,8 +21,11 @@ from typing import Any
 from rdisc import engine
 from rdisc import lower as plans
 from rdisc.engine.plans import plainly_given
+from rdisc.lowering.whole_frame import WholeFrame
 from rdisc.runtime.closures import bound, listed, slots
 from rdisc.semantics import model as m
+from rdisc.semantics.evaluate import Prepared, clamped, prepare
+from rdisc.semantics.operators import surely_float, unchecked, unchecked_operand
 
 __all__ = ["input_request", "primitive_request"]
 
@@ -48,6 +52,10 @@ def primitive_request(w: plans.Written, params: tuple[engine.Param, ...],
     kinds, bounds, one, two, (low, high), (least, most) = _tests(params)
 
     k, j = (kinds + (object, object))[:2]
+    if leading is not None and w.whole is not None and w.whole.partial is not None and checksum is not None:
+        whole = _whole(w, w.whole, constants, checksum, kinds, (low, high), (least, most), one, two)
+        if whole is not None:
+            return whole
     packed = functools.partial(pack, *constants)  # the leading constants put in by C
 
     def request(state: Mapping[str, m.Value], args: Any) -> bytes | None:
@@ -76,6 +84,48 @@ def primitive_request(w: plans.Written, params: tuple[engine.Param, ...],
         return head + payload + pack_check(checksum(covered + payload)) + tail
 
     return request
+
+
+def _whole(w: plans.Written, whole: WholeFrame, constants: tuple[m.Value, ...], checksum: engine.Checksum,
+           kinds: tuple[type, ...], first: _Range, second: _Range, one: bool, two: bool) -> engine.Request | None:
+    """A framed request with a sum checksum packed whole by one struct (`Written.whole`): head,
+    constants, the parameters' values, the checksum summed from the constant part and the values'
+    own bytes (`(goal & 0xff) + (goal >> 8 & 0xff)`), tail. For one or two parameters of one or two
+    bytes each; None for any other (the request is then packed, then framed)."""
+    sizes = [slot.size for slot in whole.slots[len(constants):]]
+    if not (one or two) or any(size > 2 for size in sizes):
+        return None
+    pack = functools.partial(struct.Struct(whole.format).pack, *((w.head,) if w.head else ()), *constants)
+    tail = w.tail
+    full, flip, mask = _sum_finish(checksum)
+    partial = whole.partial or 0
+    k: Any
+    j: Any
+    k, j = (kinds + (object, object))[:2]
+    (low, high), (least, most) = first, second
+    upper, other = [0xff if size == 2 else 0 for size in sizes + [1]][:2]  # a value's second byte, if it has one
+
+    def one_value(state: Mapping[str, m.Value], args: Any) -> bytes | None:
+        try:
+            (a,) = args
+            if type(a) is not k or not low <= a <= high:
+                return None
+            check = (((partial + (a & 0xff) + (a >> 8 & upper)) & full) ^ flip) & mask
+            return pack(a, check, tail) if tail else pack(a, check)
+        except Exception:  # noqa: BLE001 - the general way says what is wrong
+            return None
+
+    def two_values(state: Mapping[str, m.Value], args: Any) -> bytes | None:
+        try:
+            a, b = args
+            if type(a) is not k or type(b) is not j or not low <= a <= high or not least <= b <= most:
+                return None
+            check = (((partial + (a & 0xff) + (a >> 8 & upper) + (b & 0xff) + (b >> 8 & other)) & full) ^ flip) & mask
+            return pack(a, b, check, tail) if tail else pack(a, b, check)
+        except Exception:  # noqa: BLE001 - the general way says what is wrong
+            return None
+
+    return one_value if one else two_values
 
 
 _Range = tuple[Any, Any]
@@ -110,12 +160,89 @@ def input_request(i: plans.Input, fields: tuple[engine.Param, ...],
     if any(prm.size is not None or prm.low is not None for prm in (*fields, *params)) \
             or any(key for code in codes for key, _, _ in code.items):
         return None
-    arguments = listed([bound(e, prm.type, slots(i.args)) for (_, e, _), prm in zip(i.args.items, call.args.params)])
-    values = listed([bound(e, type_, slots(call.args)) for _, e, type_ in call.args.items])  # an opcode as it is
-    pack = encoder.struct.pack
+    arguments = [_prepared(bound(e, prm.type, slots(i.args))) for (_, e, _), prm in zip(i.args.items, call.args.params)]
+    leading = 0  # the call's values: its leading constants (an opcode) put in by C, then the rest
+    while leading < len(call.args.items) and _constant(call.args.items[leading]) is not None:
+        leading += 1
+    constants = tuple(_constant(item) for item in call.args.items[:leading])
+    where = slots(call.args)
+    rest = [_prepared(packed(e, type_, where)) for _, e, type_ in call.args.items[leading:]]
+    scales = [scaled(e, where) for _, e, _ in call.args.items[leading:]]
+    pack = functools.partial(encoder.struct.pack, *constants) if constants else encoder.struct.pack
     kinds, _, one, two, _, _ = _tests(fields)
+    first = i.args.items[0][1] if i.args.items else None
+    unwidened = bool(call.args.params) and (call.args.params[0].type is not m.Type.FLOAT or
+                                            (first is not None and surely_float(first)))
+    read = clamped(first, slots(i.args)) if first is not None and unwidened else None
+    return _fused(kinds, one, two, arguments, rest, scales, pack, read)
 
+
+def _fused(kinds: tuple[type, ...], one: bool, two: bool, arguments: list[Prepared], rest: list[Prepared],
+           scales: list[Scaled | None], pack: Callable[..., bytes],
+           read: tuple[Callable[..., Any], Any, Any, Any] | None) -> engine.Request:
+    """An input's request as one closure: its fields' types compared, the interface's arguments
+    computed into a tuple, the call's values from them packed; the commonest shapes (two fields
+    or one, two values or one, two values each an argument scaled) unrolled, since each call of a
+    closure made costs as much as the arithmetic it does; a first argument that is a function of
+    a field and two constants (`clamp(linear, -0.5, 0.5)`: `read`) called here."""
     k, j = (kinds + (object, object))[:2]
+    values = listed(rest)  # the general shape's
+    if two and len(arguments) == 2 and len(rest) == 2 and None not in scales:
+        x, y = arguments
+        (fa, ka, ca), (fb, kb, cb) = scales  # type: ignore[misc]  # none is None
+        if read is not None and (ka, kb) == (0, 1):  # each value its own argument's, in order
+            fx, kx, lx, hx = read
+
+            def two_read_scaled(state: Mapping[str, m.Value], given: Any) -> bytes | None:
+                try:
+                    a, b = given
+                    if type(a) is not k or type(b) is not j:
+                        return None
+                    return pack(fa(fx(given[kx], lx, hx) * ca), fb(y(state, given, ()) * cb))
+                except Exception:  # noqa: BLE001 - the general way says what is wrong
+                    return None
+
+            return two_read_scaled
+
+        def two_scaled(state: Mapping[str, m.Value], given: Any) -> bytes | None:
+            try:
+                a, b = given
+                if type(a) is not k or type(b) is not j:
+                    return None
+                inner = (x(state, given, ()), y(state, given, ()))
+                return pack(fa(inner[ka] * ca), fb(inner[kb] * cb))
+            except Exception:  # noqa: BLE001 - the general way says what is wrong
+                return None
+
+        return two_scaled
+    if two and len(arguments) == 2 and len(rest) == 2:
+        x, y = arguments
+        f, g = rest
+
+        def two_two(state: Mapping[str, m.Value], given: Any) -> bytes | None:
+            try:
+                a, b = given
+                if type(a) is not k or type(b) is not j:
+                    return None
+                inner = (x(state, given, ()), y(state, given, ()))
+                return pack(f(state, inner, ()), g(state, inner, ()))
+            except Exception:  # noqa: BLE001 - the general way says what is wrong
+                return None
+
+        return two_two
+    if one and len(arguments) == 1 and len(rest) == 1:
+        (x,), (f,) = arguments, rest
+
+        def one_one(state: Mapping[str, m.Value], given: Any) -> bytes | None:
+            try:
+                (a,) = given
+                if type(a) is not k:
+                    return None
+                return pack(f(state, (x(state, given, ()),), ()))
+            except Exception:  # noqa: BLE001 - the general way says what is wrong
+                return None
+
+        return one_one
 
     def request(state: Mapping[str, m.Value], given: Any) -> bytes | None:
         try:  # one number or two tested here, any other fields by their types at once
@@ -129,11 +256,79 @@ def input_request(i: plans.Input, fields: tuple[engine.Param, ...],
                     return None
             elif tuple(map(type, given)) != kinds:
                 return None
-            return pack(*values(state, arguments(state, given)))
+            return pack(*values(state, tuple([x(state, given, ()) for x in arguments])))
         except Exception:  # noqa: BLE001 - the general way says what is wrong
             return None
 
     return request
+
+
+def _constant(item: tuple[str, m.Expr, m.AnyType | None]) -> m.Value | None:
+    """A call's value that is a constant put in as it is (an opcode), else None."""
+    _, e, type_ = item
+    return e.value if isinstance(e, m.Const) and type_ is None and e.value is not None else None
+
+
+def _prepared(f: Prepared | m.Const) -> Prepared:
+    """A bound value as a closure (a constant one too)."""
+    return prepare(f) if isinstance(f, m.Const) else f
+
+
+def packed(e: m.Expr, declared: m.AnyType | None, where: dict[str, int]) -> Prepared | m.Const:
+    """`e` as a value a one-step request packs (bound to `declared`, if given): `round(x)` and
+    `int(x)` of float arithmetic with Python's own operators (`unchecked_operand`), as the
+    generated driver's request computes it; `round(velocity * 1000)` one closure, calling nothing."""
+    arg = unchecked_operand(e)
+    if arg is None or not unchecked(arg):
+        return bound(e, declared, where)
+    assert isinstance(e, m.FuncCall)
+    function: Callable[[Any], Any] = round if e.func == "round" else int
+    scale = scaled(e, where)
+    if scale is not None:
+        _, key, c = scale
+        return lambda s, loc, r: function(loc[key] * c)
+    a = _arithmetic(arg, where)
+    return lambda s, loc, r: function(a(s, loc, r))
+
+
+Scaled = tuple[Callable[[Any], Any], int, Any]
+"""`round(x * c)` (or `int`) of a parameter: the function, where the parameter is read, the constant."""
+
+
+def scaled(e: m.Expr, where: dict[str, int]) -> Scaled | None:
+    """A packed value (`packed`) that is a parameter times a constant, rounded or made an int
+    with Python's own `*` (`round(velocity * 1000)`: a unit's scale), as what its closure computes."""
+    arg = unchecked_operand(e)
+    if arg is None or not unchecked(arg) or not isinstance(e, m.FuncCall):
+        return None
+    function: Callable[[Any], Any] = round if e.func == "round" else int
+    match arg:
+        case m.BinaryOp(op="*", left=m.Var(name=name, scope=scope), right=m.Const(value=c)) \
+                | m.BinaryOp(op="*", left=m.Const(value=c), right=m.Var(name=name, scope=scope)) \
+                if scope is not m.Scope.STATE:
+            return function, where[name], c
+    return None
+
+
+def _arithmetic(e: m.Expr, where: dict[str, int]) -> Prepared:
+    """Float `+`, `-`, `*` and negation with Python's operators (`packed`), the rest prepared."""
+    if not unchecked(e):
+        return prepare(e, where)
+    if isinstance(e, m.UnaryOp):
+        a = _arithmetic(e.operand, where)
+
+        def negated(s: Mapping[str, m.Value], loc: Any, r: Any) -> m.Value:
+            value: Any = a(s, loc, r)
+            return -value  # type: ignore[no-any-return]
+
+        return negated
+    assert isinstance(e, m.BinaryOp)
+    operation = _OPERATORS[e.op]
+    a, b = _arithmetic(e.left, where), _arithmetic(e.right, where)
+    return lambda s, loc, r: operation(a(s, loc, r), b(s, loc, r))
+
+
+_OPERATORS: dict[str, Callable[[Any, Any], Any]] = {"+": operator.add, "-": operator.sub, "*": operator.mul}
 
 
 def leading_constants(code: plans.Code) -> tuple[m.Value, ...] | None:

@@ -5,7 +5,7 @@ writes a function.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Mapping, Sequence
 from types import MappingProxyType
 from typing import Any
 
@@ -118,7 +118,7 @@ def _spread(values: Callable[[Mapping[str, m.Value], Any], list[m.Value]],
     return spread
 
 
-def listed(fs: list[Prepared | m.Const]) -> Callable[[Mapping[str, m.Value], Any], list[m.Value]]:
+def listed(fs: Sequence[Prepared | m.Const]) -> Callable[[Mapping[str, m.Value], Any], list[m.Value]]:
     """The prepared expressions (or constants) `fs` evaluated in turn, as a list.
 
     For speed, up to three are unrolled (a list comprehension costs more than

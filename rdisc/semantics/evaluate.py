@@ -208,6 +208,10 @@ def _if_else(cond: m.Expr, then: m.Expr, orelse: m.Expr, slots: Mapping[str, int
     test = _test(cond, slots)
     if test is not None:
         f, k, c = test
+        if t is not None and f in _LOCAL_CHOSEN:  # the comparison made in the closure itself
+            return _LOCAL_CHOSEN[f](k, c, tv, (lambda s, loc, r: ov) if o is not None else of, o is not None, ov)
+        if f is operator.eq and o is None:  # `(...) if linear == 0 else (...)`: the test made here too
+            return lambda s, loc, r: tf(s, loc, r) if loc[k] == c else of(s, loc, r)
         if t is not None and o is not None:
             return lambda s, loc, r: tv if f(loc[k], c) else ov
         if t is not None:
@@ -218,6 +222,8 @@ def _if_else(cond: m.Expr, then: m.Expr, orelse: m.Expr, slots: Mapping[str, int
     both = _tests(cond, slots)
     if both is not None and both[0] == "and":  # `linear == 0 and angular == 0`: both made here
         _, (f, j, c), (g, k, d) = both
+        if t is not None and f is operator.eq and g is operator.eq:  # the comparisons too
+            return lambda s, loc, r: tv if loc[j] == c and loc[k] == d else of(s, loc, r)
         if t is not None:
             return lambda s, loc, r: tv if f(loc[j], c) and g(loc[k], d) else of(s, loc, r)
         return lambda s, loc, r: tf(s, loc, r) if f(loc[j], c) and g(loc[k], d) else of(s, loc, r)
@@ -236,10 +242,27 @@ def _if_else(cond: m.Expr, then: m.Expr, orelse: m.Expr, slots: Mapping[str, int
     return lambda s, loc, r: tf(s, loc, r) if holds(s, loc, r) else of(s, loc, r)
 
 
+def clamped(expr: m.Expr, slots: Mapping[str, int] | None) -> tuple[Callable[..., Any], str | int, Any, Any] | None:
+    """A call of a function of a parameter or field and two constants (`clamp(linear, -0.5, 0.5)`),
+    as the function, where the name is read in `local`, and the two constants; else None."""
+    if not isinstance(expr, m.FuncCall) or len(expr.args) != 3:
+        return None
+    first, low, high = expr.args[0], _fold(expr.args[1]), _fold(expr.args[2])
+    if not isinstance(first, m.Var) or first.scope is m.Scope.STATE or low is None or high is None:
+        return None
+    return _function(expr), _key(first.name, slots), low.value, high.value
+
+
+def _function(expr: m.FuncCall) -> Callable[..., Any]:
+    """What computes a call: its function of rdisc.engine.operations, or Python's builtin."""
+    name = call_operation(expr)
+    function: Callable[..., Any] = getattr(operations if name.startswith("_") else builtins, name)
+    return function
+
+
 def _call(expr: m.FuncCall, slots: Mapping[str, int] | None) -> Prepared:
     """A function call; constant arguments after the first are passed as they are."""
-    name = call_operation(expr)
-    function = getattr(operations if name.startswith("_") else builtins, name)
+    function = _function(expr)
     args = expr.args
     rest = [_fold(a) for a in args[1:]]
     if args and all(c is not None for c in rest):
@@ -350,6 +373,31 @@ _LOCAL_COMPARE: dict[Callable[[Any, Any], Any], Callable[[Any, Any], Prepared]] 
     operator.le: lambda key, c: lambda s, loc, r: loc[key] <= c,
     operator.gt: lambda key, c: lambda s, loc, r: loc[key] > c,
     operator.ge: lambda key, c: lambda s, loc, r: loc[key] >= c,
+}
+# A conditional whose test is a name compared with a constant and whose `then` is a constant
+# (`-0.001 if angular > 0 else 0.001`), for speed: the comparison made in the closure. Given
+# where the name is read, the constant compared with, the `then` value, the `else` closure, and
+# whether the `else` is the constant `ov` (given as it is then).
+_Chosen = Callable[[Any, Any, Any, Prepared, bool, Any], Prepared]
+_LOCAL_CHOSEN: dict[Callable[[Any, Any], Any], _Chosen] = {
+    operator.eq: lambda k, c, tv, of, constant, ov: (
+        (lambda s, loc, r: tv if loc[k] == c else ov) if constant else
+        (lambda s, loc, r: tv if loc[k] == c else of(s, loc, r))),
+    operator.ne: lambda k, c, tv, of, constant, ov: (
+        (lambda s, loc, r: tv if loc[k] != c else ov) if constant else
+        (lambda s, loc, r: tv if loc[k] != c else of(s, loc, r))),
+    operator.lt: lambda k, c, tv, of, constant, ov: (
+        (lambda s, loc, r: tv if loc[k] < c else ov) if constant else
+        (lambda s, loc, r: tv if loc[k] < c else of(s, loc, r))),
+    operator.le: lambda k, c, tv, of, constant, ov: (
+        (lambda s, loc, r: tv if loc[k] <= c else ov) if constant else
+        (lambda s, loc, r: tv if loc[k] <= c else of(s, loc, r))),
+    operator.gt: lambda k, c, tv, of, constant, ov: (
+        (lambda s, loc, r: tv if loc[k] > c else ov) if constant else
+        (lambda s, loc, r: tv if loc[k] > c else of(s, loc, r))),
+    operator.ge: lambda k, c, tv, of, constant, ov: (
+        (lambda s, loc, r: tv if loc[k] >= c else ov) if constant else
+        (lambda s, loc, r: tv if loc[k] >= c else of(s, loc, r))),
 }
 _COMPARISONS = frozenset({"==", "!=", "<", "<=", ">", ">="})
 assert all(_PYTHON[op] in _LOCAL_COMPARE for op in ("==", "!=", "<", "<=", ">", ">="))

@@ -112,3 +112,28 @@ def surely_float(e: m.Expr) -> bool:
         case m.FuncCall(func=func):
             return func in FLOAT_FUNCTIONS
     return False
+
+
+def unchecked_operand(e: m.Expr) -> m.Expr | None:
+    """The float argument of `round(x)` or `int(x)`, which a one-step request (one that sends the
+    call the general way on any error, which then says what is wrong) may compute with Python's own
+    `+`, `-`, `*` and negation (`unchecked`). Where the operations would refuse a result too large
+    for a float, Python's gives an infinity or a NaN, which every later `+`, `-` and `*` keeps, and
+    which round() and int() refuse: an error either way. None for any other expression."""
+    match e:
+        case m.FuncCall(func="round" | "int", args=(arg,)) if arg.type is Type.FLOAT:
+            return arg
+    return None
+
+
+def unchecked(e: m.Expr) -> bool:
+    """Whether `e`, within an `unchecked_operand`, is float arithmetic Python's own operator computes."""
+    match e:
+        case m.BinaryOp(op="+" | "-" | "*", left=left, right=right, type=Type.FLOAT):
+            return left.type in _NUMBERS and right.type in _NUMBERS
+        case m.UnaryOp(op="-", type=Type.FLOAT):
+            return True
+    return False
+
+
+_NUMBERS = (Type.INT, Type.FLOAT)
