@@ -326,3 +326,25 @@ def test_a_frames_bits_part_shows_its_fields(rdisc, tmp_path: Path) -> None:
         "       8     2  payload bits u16 LE   out[3] (bit 0), out[4] (bits 1..15)  1, 1921       03 0F",
         "      10     2  payload u16 LE        out[5]                        4128          20 10",
     ]
+
+
+def test_lines_read_together_are_cut_as_the_engine_reads_them(rdisc, tmp_path: Path) -> None:
+    """SLCAN's replies end in CR: an acknowledgement (a CR alone), a frame and another CR that came
+    in one read are three lines, as the engine's reader takes them; the first CR is no part of the
+    frame after it."""
+    capture = tmp_path / "slcan.txt"
+    capture.write_text("< 0D 74 31 32 33 32 41 42 0D 0D\n")
+    assert decode(rdisc, "slcan.rdis", capture) == [
+        "< 0D",
+        "  unknown: no primitive's reply is these 1 bytes",
+        "< 74 31 32 33 32 41 42 0D",
+        "  reply when  = 116 of receive (also fits: receive)",
+        HEAD,
+        "       0     1  payload tag u8        = 116                                       74",
+        '       1     3  payload text          out[0]                        "123"         31 32 33',
+        "       4     1  payload char          out[1]                                      32",
+        "       5     2  payload bytes (the rest)  out[2]                                      41 42",
+        "       7     1  terminator            0D                                          0D",
+        "< 0D",
+        "  unknown: no primitive's reply is these 1 bytes",
+    ]
