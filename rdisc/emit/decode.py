@@ -13,7 +13,7 @@ from typing import Any
 from rdisc import engine
 from rdisc.capture import Message
 from rdisc.emit.dump import Layout, held_table, matched, reply_layouts, request_layouts
-from rdisc.engine.wire import Field, FrameError
+from rdisc.engine.wire import Field, FrameError, Incoming
 from rdisc.semantics import model as m
 
 
@@ -60,8 +60,8 @@ def _as_lines(model: m.Model, device: engine.Device, messages: Sequence[Message]
         if message.write or end is None:
             out.append(message)
             continue
-        port = _Bytes(message.data)
-        while line := port.read_until(end):  # as the engine reads each reply
+        port = Incoming(_Bytes(message.data))  # the engine's reader, over the message
+        while line := port.read_until(end):
             out.append(Message(False, line, message.connection))
     return out
 
