@@ -506,7 +506,7 @@ def matched(layout: Layout, data: bytes) -> list[tuple[int, str, str]] | None:
         constant = _CONSTANT.fullmatch(detail)
         if constant is not None and data[offset : offset + size] != bytes.fromhex(constant.group(1)):
             return None
-        tag = _TAG.fullmatch(f"{what} {detail}")
+        tag = _TAG.fullmatch(f"{what.removeprefix('payload ')} {detail}")
         if tag is not None:  # a reply table's tag: its value, or one of its range
             order = {" LE": "little", " native": sys.byteorder}.get(tag.group(2) or "", "big")
             value = int.from_bytes(data[offset : offset + size], order, signed=tag.group(1) == "s")

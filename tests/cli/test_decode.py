@@ -329,16 +329,16 @@ def test_a_frames_bits_part_shows_its_fields(rdisc, tmp_path: Path) -> None:
 
 
 def test_lines_read_together_are_cut_as_the_engine_reads_them(rdisc, tmp_path: Path) -> None:
-    """SLCAN's replies end in CR: an acknowledgement (a CR alone), a frame and another CR that came
-    in one read are three lines, as the engine's reader takes them; the first CR is no part of the
-    frame after it."""
+    """SLCAN's replies end in CR: an acknowledgement (a CR alone), a frame, another CR and the
+    version that came in one read are four lines, as the engine's reader takes them; the first CR
+    is no part of the frame after it. A framed reply table's tag is held to its entry's value."""
     capture = tmp_path / "slcan.txt"
-    capture.write_text("< 0D 74 31 32 33 32 41 42 0D 0D\n")
+    capture.write_text("< 0D 74 31 32 33 32 41 42 0D 0D 56 31 30 31 33 0D\n")
     assert decode(rdisc, "slcan.rdis", capture) == [
         "< 0D",
         "  unknown: no primitive's reply is these 1 bytes",
         "< 74 31 32 33 32 41 42 0D",
-        "  reply when  = 116 of receive (also fits: receive)",
+        "  reply when  = 116 of receive",  # its tag: no other entry's
         HEAD,
         "       0     1  payload tag u8        = 116                                       74",
         '       1     3  payload text          out[0]                        "123"         31 32 33',
@@ -347,4 +347,10 @@ def test_lines_read_together_are_cut_as_the_engine_reads_them(rdisc, tmp_path: P
         "       7     1  terminator            0D                                          0D",
         "< 0D",
         "  unknown: no primitive's reply is these 1 bytes",
+        "< 56 31 30 31 33 0D",  # the version, no CAN frame: its tag V is none of receive's
+        "  reply of version",
+        HEAD,
+        '       0     5  payload text          regex r"^V(\\d\\d)(\\d\\d)"       "V1013"       56 31 30 31 33',
+        "       5     1  terminator            0D                                          0D",
+        "  out = ['10', '13']",
     ]
