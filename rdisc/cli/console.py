@@ -1,4 +1,4 @@
-"""`rdisc console FILE (--port P | --sim [--seed N]) [--http HOST:PORT [--allow-remote]] [--record FILE.mcap]
+"""`rdisc console FILE (--port P | --sim [--seed N] [--error PRIMITIVE=CODE]...) [--http HOST:PORT [--allow-remote]] [--record FILE.mcap]
 [--foxglove [HOST:PORT]]`: a
 local web page to bring up and exercise a device (thesis ch. 5), or a simulation of its body.
 
@@ -7,12 +7,13 @@ http://HOST:PORT/?token=TOKEN (127.0.0.1:8765 unless asked; the token is the cre
 each run) until Ctrl-C or SIGTERM, and ends by running the terminate hooks; they also run
 whenever the last page closes. An --http beyond loopback needs --allow-remote. With --sim the robot drives the MuJoCo simulation `rdisc sim --realtime` drives (its
 time the wall clock's, so what the page commands moves as a device would), and the page
-says so and shows the simulated body as it moves. With --record, the session is recorded as `rdisc run --record` records it, the
+says so and shows the simulated body as it moves; --error answers a primitive with its declared
+`error` reply, as `rdisc sim --error` does. With --record, the session is recorded as `rdisc run --record` records it, the
 page's calls as the host's; with --foxglove, it is served live to Foxglove as `rdisc run --foxglove`
 serves it. Only pages of this console's own address may drive the robot (see rdisc.console).
 
 Exit status: 1 the description has errors or the device failed to connect; 2 a usage error
-(a bad --port, --set or --http, an --http beyond loopback without --allow-remote, --port with --sim, --sim without a body or MuJoCo, an address
+(a bad --port, --set or --http, an --http beyond loopback without --allow-remote, --port with --sim, --seed or --error without --sim, a bad --error, --sim without a body or MuJoCo, an address
 in use, a --record file that cannot be written, or a bad --foxglove); 130 after SIGINT, 143 after SIGTERM.
 """
 
@@ -29,7 +30,7 @@ from rdisc import engine
 from rdisc.cli import foxglove
 from rdisc.cli.address import is_loopback, parse_address
 from rdisc.cli.output import EXIT_ERRORS, EXIT_USAGE, exit_code, show
-from rdisc.cli.sim import add_seed_argument, simulation
+from rdisc.cli.sim import add_error_argument, add_seed_argument, answer_errors, simulation
 from rdisc.compile import compile_path
 from rdisc.console import PING_S
 
@@ -52,6 +53,7 @@ def add_parser(verbs: argparse._SubParsersAction[argparse.ArgumentParser]) -> No
                    help="drive a MuJoCo simulation of the description's body on the wall clock, as "
                         "`rdisc sim --realtime` does, in place of the device (no --port)")
     add_seed_argument(p)
+    add_error_argument(p)
     p.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
                    help="give a setting of the description its value; repeat for several")
     p.add_argument("--timeout", type=float, default=1.0, metavar="S", help="reply timeout in seconds (default 1)")
@@ -111,6 +113,8 @@ def run(args: argparse.Namespace) -> int:
             raise ValueError("--sim drives a simulation in place of the device: give --port or --sim, not both")
         if args.seed is not None and not args.sim:
             raise ValueError("--seed is for --sim")
+        if args.error and not args.sim:
+            raise ValueError("--error is for --sim")
         port = None if args.sim else engine.parse_ports(args.port, device)
         settings = engine.bind_settings(device, engine.parse_settings(args.set, device))
     except ValueError as err:
@@ -120,7 +124,7 @@ def run(args: argparse.Namespace) -> int:
     page = render(model, lambda span: place(span, compilation.sources, main, os.path.basename(args.file)),
                   simulated=args.sim)
     sim = simulation(model, args.file, "rdisc console", seed=args.seed, realtime=True) if args.sim else None
-    if args.sim and sim is None:
+    if args.sim and (sim is None or not answer_errors(sim, args.error, "rdisc console")):
         return EXIT_USAGE
     robot = engine.Robot(device, timeout=args.timeout)
     session = engine.Session(robot) if args.record or args.foxglove is not None else None

@@ -34,9 +34,7 @@ def add_parser(verbs: argparse._SubParsersAction[argparse.ArgumentParser]) -> No
     p.add_argument("file", metavar="FILE", help=".rdis or thesis-style .json description")
     engine.add_arguments(p, ports=False)
     add_seed_argument(p)
-    p.add_argument("--error", action="append", default=[], metavar="PRIMITIVE=CODE",
-                   help="answer PRIMITIVE with its declared `error` reply, CODE a number or a member of its enum "
-                        "(ILLEGAL_DATA_ADDRESS): its call raises RdisDeviceError as the device's would")
+    add_error_argument(p)
     p.add_argument("--realtime", action="store_true", help="run on the wall clock instead of simulated time")
     p.set_defaults(run=run)
 
@@ -45,6 +43,28 @@ def add_seed_argument(parser: argparse.ArgumentParser) -> None:
     """`--seed N`, of `rdisc sim` and `rdisc console --sim`."""
     parser.add_argument("--seed", type=int, metavar="N",
                         help="start each joint up to 0.01 rad (m) away from zero, the same way for the same N")
+
+
+def add_error_argument(parser: argparse.ArgumentParser) -> None:
+    """`--error PRIMITIVE=CODE`, of `rdisc sim` and `rdisc console --sim`."""
+    parser.add_argument("--error", action="append", default=[], metavar="PRIMITIVE=CODE",
+                        help="answer PRIMITIVE with its declared `error` reply, CODE a number or a member of its enum "
+                             "(ILLEGAL_DATA_ADDRESS): its call raises RdisDeviceError as the device's would")
+
+
+def answer_errors(simulated: Simulation, given: list[str], prog: str) -> bool:
+    """Tell the simulation to answer each `--error PRIMITIVE=CODE` with its error reply; False once
+    stderr says why one cannot be (a usage error)."""
+    for one in given:
+        primitive, _, code = one.partition("=")
+        try:
+            if not code:
+                raise ValueError("give it as PRIMITIVE=CODE")
+            simulated.answer_error(primitive, _code(code))
+        except ValueError as err:
+            print(f"{prog}: --error {one}: {err}", file=sys.stderr)
+            return False
+    return True
 
 
 def simulation(model: Model, path: str, prog: str, *, seed: int | None, realtime: bool) -> Simulation | None:
@@ -73,17 +93,8 @@ def run(args: argparse.Namespace) -> int:
     model = compilation.model
     assert model is not None
     simulated = simulation(model, args.file, "rdisc sim", seed=args.seed, realtime=args.realtime)
-    if simulated is None:
+    if simulated is None or not answer_errors(simulated, args.error, "rdisc sim"):
         return EXIT_USAGE
-    for given in args.error:
-        primitive, _, code = given.partition("=")
-        try:
-            if not code:
-                raise ValueError("give it as PRIMITIVE=CODE")
-            simulated.answer_error(primitive, _code(code))
-        except ValueError as err:
-            print(f"rdisc sim: --error {given}: {err}", file=sys.stderr)
-            return EXIT_USAGE
     from rdisc.runtime.device import Description
 
     robot = engine.Robot(Description(model).device, timeout=args.timeout)

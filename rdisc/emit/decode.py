@@ -13,7 +13,7 @@ from typing import Any
 from rdisc import engine
 from rdisc.capture import Message
 from rdisc.emit.dump import Layout, held_table, matched, reply_layouts, request_layouts
-from rdisc.engine.wire import Field, FrameError
+from rdisc.engine.wire import Field, FrameError, Incoming
 from rdisc.semantics import model as m
 
 
@@ -22,7 +22,7 @@ def decode(model: m.Model, device: engine.Device, messages: Sequence[Message]) -
     whole: its length, fields and checksum)."""
     teller = Teller(model, device)
     lines: list[str] = []
-    for message in messages:
+    for message in _as_lines(model, device, messages):
         on = f"{message.connection} " if message.connection is not None else ""
         lines.append(f"{on}{'>' if message.write else '<'} {message.data.hex(' ').upper()}".rstrip())
         found = teller.tell(message)
@@ -46,6 +46,43 @@ def decode(model: m.Model, device: engine.Device, messages: Sequence[Message]) -
             except engine.RdisError:
                 pass
     return "\n".join(lines) + "\n" if lines else ""
+
+
+def _as_lines(model: m.Model, device: engine.Device, messages: Sequence[Message]) -> list[Message]:
+    """The messages, each read on a connection of lines cut into the lines the engine's reader
+    takes from it, one reply a line (`CR`, then `V1013 CR`: an empty line, then a reply); a
+    capture joins what came in a row (a spy log's rows, a recording's exchange)."""
+    ends = _line_ends(model, device)
+    out: list[Message] = []
+    for message in messages:
+        end = ends.get(message.connection) if message.connection is not None or len(model.connections) != 1 \
+            else ends.get(next(iter(model.connections)))
+        if message.write or end is None:
+            out.append(message)
+            continue
+        port = Incoming(_Bytes(message.data))  # the engine's reader, over the message
+        while line := port.read_until(end):
+            out.append(Message(False, line, message.connection))
+    return out
+
+
+def _line_ends(model: m.Model, device: engine.Device) -> dict[str | None, bytes]:
+    """Each connection every reply on which is a line (up to the connection's terminator, or a
+    frame's delimiter with nothing before its payload), and that line's end."""
+    ends: dict[str, set[bytes]] = {}
+    for plan in device.primitives.values():
+        reply, use = plan.reply, plan.frame
+        end = b""
+        if isinstance(reply, engine.NoReply):
+            continue
+        if isinstance(reply, engine.LineReply):
+            end = model.connections[plan.connection].terminator_bytes()
+        elif use is not None and isinstance(reply, (engine.FramedReply, engine.TaggedReply)) \
+                and len(use.frame.replies) == 1 and use.frame.escaping is None and use.frame.stuffing is None:
+            side = use.frame.reply
+            end = side.delimiter if side.payload >= 0 and not side.prefix and not side.header else b""
+        ends.setdefault(plan.connection, set()).add(end)
+    return {name: found.pop() for name, found in ends.items() if len(found) == 1 and b"" not in found}
 
 
 _Told = tuple[str, list[tuple[int, str, str]], str | None, bytes]

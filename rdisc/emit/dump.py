@@ -13,6 +13,7 @@ import sys
 from collections.abc import Callable
 
 from rdisc.emit.canonical import expression_text, range_written
+from rdisc.engine.wire import Bits
 from rdisc.semantics import model as m
 from rdisc.syntax.printer import spell_template
 
@@ -505,7 +506,7 @@ def matched(layout: Layout, data: bytes) -> list[tuple[int, str, str]] | None:
         constant = _CONSTANT.fullmatch(detail)
         if constant is not None and data[offset : offset + size] != bytes.fromhex(constant.group(1)):
             return None
-        tag = _TAG.fullmatch(f"{what} {detail}")
+        tag = _TAG.fullmatch(f"{what.removeprefix('payload ')} {detail}")
         if tag is not None:  # a reply table's tag: its value, or one of its range
             order = {" LE": "little", " native": sys.byteorder}.get(tag.group(2) or "", "big")
             value = int.from_bytes(data[offset : offset + size], order, signed=tag.group(1) == "s")
@@ -531,6 +532,8 @@ def _held(what: str, detail: str, part: bytes) -> str:
     format); text as RDIS spells it; "" for bytes and checksums, shown in hex only."""
     kind = what.removeprefix("payload ")
     fmt = None
+    if kind == "bits" or kind.startswith("bits "):
+        return _bits_held(kind, detail, part)
     if kind in _FORMATS or kind.rsplit(" ", 1)[0] in _FORMATS:
         base, _, order = kind.partition(" ")
         fmt = {"BE": ">", "LE": "<"}.get(order, "=") + _FORMATS[base]
@@ -546,6 +549,25 @@ def _held(what: str, detail: str, part: bytes) -> str:
         return repr(struct.unpack(fmt, part)[0])
     except struct.error:  # a format that is not one number's
         return ""
+
+
+_SPAN = re.compile(r"\((?:bit (\d+)|bits (\d+)\.\.(\d+))\)")
+"""A bit field's bits as a row says them (`m.bit_span`): `(bit 4)`, `(bits 0..10)`."""
+
+
+def _bits_held(kind: str, detail: str, part: bytes) -> str:
+    """The fields an integer split into bits holds (`22s{11*16}`, `B{4,1,1,1,1}`, a frame's `bits`
+    part), in the row's order, split as the engine splits them; "" when the bytes are short."""
+    if kind == "bits":  # a frame's part: its format first, `"<H": ...`
+        written = detail[1 : detail.index('"', 1)]
+        order = written[0] if written[:1] in ("<", ">", "!") else "<" if sys.byteorder == "little" else ">"
+    else:
+        order = {"LE": "<", "BE": ">", "native": "<" if sys.byteorder == "little" else ">"}.get(kind.split(" ")[-1], "<")
+    widths = [1 if bit else int(last) - int(first) + 1 for bit, first, last in _SPAN.findall(detail)]
+    bits = Bits(f"{order}{len(part)}s", [(str(k), width, k) for k, width in enumerate(widths)])
+    if not part or len(part) * 8 < sum(widths):
+        return ""
+    return ", ".join(str(value) for value in bits.split(part))
 
 
 def _pieces_in_order(pieces: tuple[str, ...], text: str) -> bool:

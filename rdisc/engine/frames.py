@@ -21,6 +21,7 @@ from rdisc.engine.wire import (
     FrameError,
     Incoming,
     Length,
+    MissingSeed,
     OptionalParts,
     Part,
     Payload,
@@ -320,7 +321,12 @@ class Frame:
                                  f"payload is {size} bytes")
             elif isinstance(part, Check):
                 covered = raw[starts[part.first] : starts[part.last + 1]]
-                expected = part.encode(part.summed(request + covered if part.with_request else covered, fields))
+                try:
+                    expected = part.encode(part.summed(request + covered if part.with_request else covered, fields))
+                except MissingSeed:  # a message this description does not know: another frame
+                    table, field = part.seeded
+                    raise FrameError(f"{self.name}: reply {field} is {fields[part.seed]}, which seed table "
+                                     f"{table} lacks") from None
                 if (chunk if part.struct is not None else chunk.upper()) != expected:
                     error = ChecksumError if measured else FrameError
                     came, summed = (f'"{chunk.decode("latin-1")}"', f'"{expected.decode("latin-1")}"') \

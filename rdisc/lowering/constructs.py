@@ -181,7 +181,8 @@ def _part(part: m.FramePart, index: Mapping[tuple[str, m.Expr], int],
         case m.FramePayload(trimmed=trimmed):
             return _call(engine.Payload, trimmed=trimmed)
         case m.FrameChecksum():
-            seed = None if part.seed is None else (index[_field_key(side[part.seed.part])], part.seed.entries)
+            seed = None if part.seed is None else (index[_field_key(side[part.seed.part])], part.seed.entries,
+                                                   part.seed.table, part.seed.field)
             return _call(engine.Check, _checksum(part.algorithm), part.format, part.first, part.last,
                          with_request=part.with_request, seed=seed)
         case m.FrameOptional(count=count):

@@ -288,3 +288,69 @@ def test_a_nack_is_named_and_a_padded_name_read_to_its_nul(rdisc, tmp_path: Path
         HEAD,
         '       0     6  text, padded          out[0]                        "AB"          41 42 00 00 00 00',
     ]
+
+
+def test_bit_fields_show_the_values_they_hold(rdisc, tmp_path: Path) -> None:
+    """S.BUS's sixteen 11-bit channels in 22 bytes (`22s{11*16}`, the first in the lowest bits)
+    and its flags byte (`B{4,1,1,1,1}`): each field's value, in the row's order."""
+    channels = [172, 992, 1811, 0, 2047, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11]
+    packed = sum(value << (11 * i) for i, value in enumerate(channels)).to_bytes(22, "little")
+    frame = b"\x0f" + packed + b"\x13\x00"  # flags: 3 in the low nibble, failsafe (bit 4) set
+    capture = tmp_path / "sbus.txt"
+    capture.write_text(f"< {frame.hex(' ')}\n")
+    result = rdisc("decode", EXAMPLES / "sbus.rdis", capture)  # warned of its baud rate, 100000
+    assert (result.returncode, result.stderr.splitlines()[0]) == (0, "warning[W201]: 100000 is not a standard baud rate")
+    lines = result.stdout.splitlines()
+    spans = ", ".join(f"out[{i}] (bits {11 * i}..{11 * i + 10})" for i in range(16))
+    assert lines[4:7] == [
+        f"       1    22  payload bits u176 LE  {spans}  {', '.join(map(str, channels))}  {packed.hex(' ').upper()}",
+        ("      23     1  payload bits u8       out[16] (bits 0..3), out[17] (bit 4), out[18] (bit 5), out[19] (bit 6), "
+        "out[20] (bit 7)  3, 1, 0, 0, 0  13"),
+        "      24     1  literal               00                                          00",
+    ]
+
+
+def test_a_frames_bits_part_shows_its_fields(rdisc, tmp_path: Path) -> None:
+    """RPLIDAR's descriptor: a 30-bit length and a 2-bit mode in one `<I`; a scan's bit fields."""
+    capture = tmp_path / "rplidar.txt"
+    capture.write_text("> A5 20\n< A5 5A 05 00 00 40 81 3E 03 0F 20 10\n")
+    assert decode(rdisc, "rplidar.rdis", capture)[5:] == [
+        "< A5 5A 05 00 00 40 81 3E 03 0F 20 10",
+        "  reply of scan",
+        HEAD,
+        "       0     2  header                A5 5A                                       A5 5A",
+        ('       2     4  bits                  "<I": length = payload (bits 0..29), mode = mode (bits 30..31)  5, 1'
+        "          05 00 00 40"),
+        '       6     1  field type            "B" = type                    129           81',
+        "       7     1  payload bits u8       out[0] (bit 0), out[1] (bit 1), out[2] (bits 2..7)  0, 1, 15      3E",
+        "       8     2  payload bits u16 LE   out[3] (bit 0), out[4] (bits 1..15)  1, 1921       03 0F",
+        "      10     2  payload u16 LE        out[5]                        4128          20 10",
+    ]
+
+
+def test_lines_read_together_are_cut_as_the_engine_reads_them(rdisc, tmp_path: Path) -> None:
+    """SLCAN's replies end in CR: an acknowledgement (a CR alone), a frame, another CR and the
+    version that came in one read are four lines, as the engine's reader takes them; the first CR
+    is no part of the frame after it. A framed reply table's tag is held to its entry's value."""
+    capture = tmp_path / "slcan.txt"
+    capture.write_text("< 0D 74 31 32 33 32 41 42 0D 0D 56 31 30 31 33 0D\n")
+    assert decode(rdisc, "slcan.rdis", capture) == [
+        "< 0D",
+        "  unknown: no primitive's reply is these 1 bytes",
+        "< 74 31 32 33 32 41 42 0D",
+        "  reply when  = 116 of receive",  # its tag: no other entry's
+        HEAD,
+        "       0     1  payload tag u8        = 116                                       74",
+        '       1     3  payload text          out[0]                        "123"         31 32 33',
+        "       4     1  payload char          out[1]                                      32",
+        "       5     2  payload bytes (the rest)  out[2]                                      41 42",
+        "       7     1  terminator            0D                                          0D",
+        "< 0D",
+        "  unknown: no primitive's reply is these 1 bytes",
+        "< 56 31 30 31 33 0D",  # the version, no CAN frame: its tag V is none of receive's
+        "  reply of version",
+        HEAD,
+        '       0     5  payload text          regex r"^V(\\d\\d)(\\d\\d)"       "V1013"       56 31 30 31 33',
+        "       5     1  terminator            0D                                          0D",
+        "  out = ['10', '13']",
+    ]

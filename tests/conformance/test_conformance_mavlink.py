@@ -48,6 +48,13 @@ primitive param_set(system: int in 0..255, component: int in 0..255, id: string,
 /// PARAM_REQUEST_READ (20), by index (-1: by name), answered by PARAM_VALUE (22).
 primitive param_read(at: int in -1..32767, id: string) on link frame mav2(20, 22) pack "<hBB16Z" (at, 1, 1, id)
     unpack "<fHH16ZB" { value = out[0]  count = out[1]  index = out[2]  name = out[3]  kind = out[4] }
+/// PARAM_REQUEST_READ under message ids given at run time, which EXTRAS may lack; once, then read past.
+primitive read_as(sent: int in 0..65535, answer: int in 0..65535, at: int in -1..32767, id: string)
+    on link frame mav2(sent, answer) pack "<hBB16Z" (at, 1, 1, id)
+    unpack "<fHH16ZB" { value = out[0]  count = out[1]  index = out[2]  name = out[3]  kind = out[4] }
+primitive read_past(sent: int in 0..65535, answer: int in 0..65535, at: int in -1..32767, id: string)
+    on link frame mav2(sent, answer) pack "<hBB16Z" (at, 1, 1, id) skip unmatched
+    unpack "<fHH16ZB" { value = out[0]  count = out[1]  index = out[2]  name = out[3]  kind = out[4] }
 """
 
 
@@ -138,3 +145,45 @@ def test_a_reply_whose_crc_lacks_its_seed_is_refused(mav: Any) -> None:
     assert type(caught.value).__name__ == "RdisProtocolError"  # the runtime's or the driver's own class
     assert str(caught.value) == (f"param_read: mav2: checksum {data[-2:].hex(' ')} does not match the reply, "
                                  f"which sums to {seeded.hex(' ')}")
+
+
+def unknown(message: Any, message_id: int) -> bytes:
+    """pymavlink's frame of `message` under another message id, its CRC of its bytes alone."""
+    frame = bytearray(packed(message)[:-2])
+    frame[7:10] = message_id.to_bytes(3, "little")
+    return bytes(frame) + crc_mcrf4xx(bytes(frame[1:]))
+
+
+def test_a_request_whose_seed_the_table_lacks_is_refused_before_it_is_sent(mav: Any) -> None:
+    port = ScriptedPort(reply(VALUE))
+    with mav.connect(port, threads=False) as robot, pytest.raises(Exception) as caught:
+        robot.call_primitive("read_as", 99, 22, -1, "X")
+    assert type(caught.value).__name__ == "RdisValueError"
+    assert str(caught.value) == "read_as: the checksum's seed table has no entry for 99"
+    assert bytes(port.written) == b""
+
+
+def test_a_reply_whose_seed_the_table_lacks_is_a_protocol_error(mav: Any) -> None:
+    """A reply of message 99, which EXTRAS lacks: another message, not a failed port."""
+    port = ScriptedPort(unknown(VALUE, 99))
+    with mav.connect(port, threads=False) as robot, pytest.raises(Exception) as caught:
+        robot.call_primitive("read_as", 20, 99, -1, "X")
+    assert type(caught.value).__name__ == "RdisProtocolError"
+    assert str(caught.value) == "read_as: mav2: reply answer is 99, which seed table EXTRAS lacks"
+    assert bytes(port.written) == packed(mavlink.MAVLink_param_request_read_message(1, 1, b"X", -1))
+
+
+def test_a_reply_whose_seed_the_table_lacks_is_read_past_under_skip_unmatched(mav: Any) -> None:
+    data = unknown(VALUE, 99)
+    port = ScriptedPort(data)
+    events: list[tuple[str, str, bytes]] = []
+    with mav.connect(port, threads=False) as robot, pytest.raises(Exception) as caught:
+        robot.on_trace(lambda when, *event: events.append(event))
+        robot.call_primitive("read_past", 20, 99, -1, "X")
+    assert type(caught.value).__name__ == "RdisTimeout"
+    assert events == [
+        ("write", "link", packed(mavlink.MAVLink_param_request_read_message(1, 1, b"X", -1))),
+        ("skip", "link", b"read_past: mav2: reply answer is 99, which seed table EXTRAS lacks"),
+        ("skip", "link", b"read_past: mav2: no header b'\\xfd' in the reply (after 28 bytes)"),  # its other bytes
+        ("read", "link", data),
+    ]

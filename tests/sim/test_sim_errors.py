@@ -89,3 +89,48 @@ def test_rdisc_sim_error_answers_the_call_with_the_device_error(tmp_path: Path) 
     assert (done.returncode, done.stderr) == (2, "rdisc sim: --error read_holding: give it as PRIMITIVE=CODE\n")
     done = run_rdisc("sim", str(source), "--error", "read_holding=0x1", "--call", "read_input", "address=1")
     assert (done.returncode, done.stderr) == (0, "")  # only read_holding fails
+
+
+def test_rdisc_console_sim_error_answers_the_pages_call_with_the_device_error(tmp_path: Path) -> None:
+    """`rdisc console --sim --error P=CODE`, parsed as `rdisc sim` parses it: a page's call of P is
+    answered with the device's error, another primitive's as ever."""
+    import json
+    import signal
+
+    from websockets.sync.client import connect
+
+    from tests.conftest import console_origin, console_ws, start_console, stop_process
+
+    source = tmp_path / "modbus_body.rdis"
+    source.write_text(MODBUS, encoding="utf-8")
+    process, line, url = start_console(source, "--sim", "--error", "read_holding=ILLEGAL_DATA_ADDRESS")
+    try:
+        assert line.startswith("rdisc console: modbus, simulated, on "), line
+        with connect(console_ws(url), origin=console_origin(url)) as ws:
+            assert json.loads(ws.recv(timeout=30))["type"] == "hello"
+            results = []
+            for ident, name, values in [(1, "read_holding", {"start": "3"}), (2, "read_input", {"address": "1"})]:
+                ws.send(json.dumps({"id": ident, "kind": "primitive", "name": name, "values": values}))
+                while (message := json.loads(ws.recv(timeout=30)))["type"] != "result":
+                    pass
+                results.append(message)
+        assert results == [
+            {"type": "result", "id": 1, "ok": False, "error": "RdisDeviceError",
+             "message": "read_holding: the device answered error 2 (ILLEGAL_DATA_ADDRESS)"},
+            {"type": "result", "id": 2, "ok": True},
+        ]
+    finally:
+        status, stderr = stop_process(process, signal.SIGTERM)
+    assert status == 143 and "Traceback" not in stderr, stderr
+
+
+@pytest.mark.parametrize(("args", "message"), [
+    (["--sim", "--error", "read_holding"], "rdisc console: --error read_holding: give it as PRIMITIVE=CODE\n"),
+    (["--sim", "--error", "nothing=2"], "rdisc console: --error nothing=2: modbus has no primitive named 'nothing'\n"),
+    (["--port", "loop://", "--error", "read_holding=2"], "rdisc console: --error is for --sim\n"),
+])
+def test_rdisc_console_refuses_an_error_it_cannot_answer(tmp_path: Path, args: list[str], message: str) -> None:
+    source = tmp_path / "modbus_body.rdis"
+    source.write_text(MODBUS, encoding="utf-8")
+    done = run_rdisc("console", str(source), *args, "--http", "127.0.0.1:0")
+    assert (done.returncode, done.stderr) == (2, message)

@@ -748,6 +748,11 @@ class ChecksumError(FrameError):
     device's reply, corrupted. An error even under `skip unmatched`, as drivers report it."""
 
 
+class MissingSeed(ValueError):
+    """A frame field's value that its checksum's seed table lacks (known only at run time): a
+    request that cannot be framed, or a reply of a message this description does not know."""
+
+
 class Reader(Protocol):
     timeout: float | None
 
@@ -982,13 +987,13 @@ class Payload:
 class Check:
     """A checksum of the parts `first` to `last` (indexes into its side), packed
     with a struct format or written as upper-case hex digits (`fmt` None); `seed`: (the
-    index of a frame field, (value, byte) pairs): the byte for the field's value summed after
-    the parts, never sent (MAVLink 2's CRC_EXTRA)."""
+    index of a frame field, (value, byte) pairs, the table's name, the field's name): the byte
+    for the field's value summed after the parts, never sent (MAVLink 2's CRC_EXTRA)."""
 
-    __slots__ = ("checksum", "digits", "first", "last", "seed", "seeds", "struct", "with_request")
+    __slots__ = ("checksum", "digits", "first", "last", "seed", "seeded", "seeds", "struct", "with_request")
 
-    def __init__(self, checksum: Checksum, fmt: str | None, first: int, last: int,
-                 with_request: bool = False, seed: tuple[int, Sequence[tuple[int, int]]] | None = None) -> None:
+    def __init__(self, checksum: Checksum, fmt: str | None, first: int, last: int, with_request: bool = False,
+                 seed: tuple[int, Sequence[tuple[int, int]], str, str] | None = None) -> None:
         self.checksum = checksum
         self.struct = struct.Struct(fmt) if fmt is not None else None
         self.digits = (checksum.width + 3) // 4
@@ -997,19 +1002,20 @@ class Check:
         self.with_request = with_request
         self.seed = -1 if seed is None else seed[0]
         self.seeds = {} if seed is None else {key: bytes((byte,)) for key, byte in seed[1]}
+        self.seeded = ("", "") if seed is None else (seed[2], seed[3])  # the table's name, the field's
 
     def put(self, payload: bytes, fields: Sequence[int], chunks: list[bytes]) -> bytes:
         return self.encode(self.summed(b"".join(chunks[self.first : self.last + 1]), fields))
 
     def summed(self, covered: bytes, fields: Sequence[int]) -> int:
         """The checksum of `covered`, then of the seed for the frame's `fields` (a value the
-        table lacks: a ValueError)."""
+        table lacks: MissingSeed)."""
         if self.seed < 0:
             return self.checksum(covered)
         key = fields[self.seed]
         seed = self.seeds.get(key)
         if seed is None:
-            raise ValueError(f"the checksum's seed table has no entry for {key}")
+            raise MissingSeed(f"the checksum's seed table has no entry for {key}")
         return self.checksum(covered + seed)
 
     def encode(self, value: int) -> bytes:
@@ -1718,7 +1724,12 @@ class Frame:
                                  f"payload is {size} bytes")
             elif isinstance(part, Check):
                 covered = raw[starts[part.first] : starts[part.last + 1]]
-                expected = part.encode(part.summed(request + covered if part.with_request else covered, fields))
+                try:
+                    expected = part.encode(part.summed(request + covered if part.with_request else covered, fields))
+                except MissingSeed:  # a message this description does not know: another frame
+                    table, field = part.seeded
+                    raise FrameError(f"{self.name}: reply {field} is {fields[part.seed]}, which seed table "
+                                     f"{table} lacks") from None
                 if (chunk if part.struct is not None else chunk.upper()) != expected:
                     error = ChecksumError if measured else FrameError
                     came, summed = (f'"{chunk.decode("latin-1")}"', f'"{expected.decode("latin-1")}"') \
