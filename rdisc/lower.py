@@ -144,13 +144,15 @@ class LineReply:
 
 @dataclass(frozen=True, slots=True, eq=False)
 class ErrorReply:
-    """engine.ErrorReply: the reply that may come instead, raised with its code's name."""
+    """engine.ErrorReply: the reply that may come instead, raised with its code's name; or,
+    `when`, the reply itself when the condition over it holds."""
 
     decoder: Construct[engine.Unpack]
     marker: bytes = b""
     frame: FrameUse | None = None
     codes: str = ""
     names: dict[int, str] = dataclasses.field(default_factory=dict)
+    when: Code | None = None
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -471,7 +473,7 @@ class _Lowering:
             frames = self.reply_frames(p)
             each = _one(decoder, frames[0] if frames else use, p.skip_unmatched, p.records)
             return SeveralReplies(len(frames) or p.replies, each, frames)
-        error = None if p.error is None else self.error(p.error, p.params)
+        error = None if p.error is None else self.error(p.error, p.reply_locals())
         if decoder is not None:
             return _one(decoder, use, p.skip_unmatched, p.records, error)
         if use is not None and _acknowledges(use.frame):
@@ -483,7 +485,9 @@ class _Lowering:
         decoder = decoding(e.decoding)
         assert decoder is not None and decoder.kind is engine.Unpack  # the checker's
         names = {} if e.codes is None else {value: member for member, value in self.model.enums[e.codes].items()}
-        return ErrorReply(decoder, e.marker.encode("latin-1"), self.frame_use(e.frame, params), e.codes or "", names)
+        when = None if e.when is None else _condition(_OVER_REPLY, params, e.when)
+        return ErrorReply(decoder, e.marker.encode("latin-1"), self.frame_use(e.frame, params), e.codes or "", names,
+                          when)
 
     def reply_frames(self, p: m.Primitive) -> tuple[FrameUse, ...]:
         """`replies N`'s own frames, made once a primitive (its table's entries share them)."""

@@ -86,7 +86,11 @@ def _primitive(model: m.Model, p: m.Primitive) -> str:
             rows.append((len(p.records), "record end", _hex(p.records.encode("latin-1"))))
         said = f"{p.replies} replies{through}, each" if p.replies else "reply"
         lines += _sides("reply: records, each" if p.records is not None else said, framed, rows)
-        if p.error is not None:
+        if p.error is not None and p.error.when is not None:  # the reply itself says no
+            named = "" if p.error.codes is None else f", named by {p.error.codes}"
+            condition = expression_text(p.error.when).replace("__out__[", "out[")  # JSON's name for the reply
+            lines.append(f"  or an error when {condition}: out[0] its code{named}")
+        elif p.error is not None:
             name, sides, rows = _error_layout(model, p, p.error)
             lines += _sides(name, sides, rows)
     else:

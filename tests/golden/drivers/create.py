@@ -1754,13 +1754,15 @@ class ErrorReply:
     """The reply a device may send instead (`error`: Modbus's exception, a NACK), raised as an
     RdisDeviceError: known by its own frame (`frame`; None: the reply's, or none) or by the bytes
     it starts with (`marker`), the rest decoded by `decoder`, whose first value is the device's
-    code when `codes` (an enum's name) names it by `names`."""
+    code when `codes` (an enum's name) names it by `names`. With `when` (`error when COND`), it
+    is the reply itself, decoded as ever, when the condition over it holds."""
 
     decoder: Unpack
     marker: bytes = b""
     frame: FrameUse | None = None
     codes: str = ""
     names: Mapping[int, str] = field(default_factory=dict)
+    when: Callable[[StateValues, Args, Sequence[Any]], object] | None = None
 
 
 @dataclass(frozen=True, slots=True)
@@ -2947,12 +2949,13 @@ class Exchange:
                     text = text[:-1]
                 return [(plan, local, self._met(plan, local, decoder.decode(plan.name, text)))]
             case FixedReply(decoder=unpack, error=error):
-                if error is not None:
+                if error is not None and error.when is None:
                     self._unframed_error(plan, error, reader, local)
                 data = reader.read(unpack.size)
                 if not data:
                     raise RdisTimeout(f"{plan.name}: no reply within {wait:g} s")
-                return [(plan, local, self._met(plan, local, unpack.decode(plan.name, data)))]
+                return [(plan, local, self._met(plan, local, self._refused(plan, error, local,
+                                                                            unpack.decode(plan.name, data))))]
             case TaggedStream():
                 return [self._read_tagged(plan, shape, reader, wait, local)]
             case FramedReply(decoder=decoding, skip=skip, error=error):
@@ -2961,13 +2964,14 @@ class Exchange:
                 # the frame (then the frame says where the payload ends).
                 assert use is not None
                 stuffed = use.frame.stuffing is not None and any(side.delimiter for side in use.frame.replies)
-                inside = error is not None and error.frame is None
+                inside = error is not None and error.frame is None and error.when is None
                 size = decoding.size if decoding is not None and not stuffed and not inside else -1
 
                 def taken(payload: bytes) -> list[_ReplyPart]:
                     if inside and error is not None and payload.startswith(error.marker):
                         raise self._device_error(plan, error, payload[len(error.marker):])
-                    return [(plan, local, self._met(plan, local, decoding.decode(plan.name, payload))
+                    return [(plan, local, self._met(plan, local, self._refused(
+                        plan, error, local, decoding.decode(plan.name, payload)))
                              if decoding else ())]
 
                 return self._framed(plan, use, reader, fields, request, wait, skip, size, taken,
@@ -3082,10 +3086,27 @@ class Exchange:
                                     f"where its decoding takes {size}")
         raise self._device_error(plan, error, body)
 
+    def _refused(self, plan: Primitive, error: ErrorReply | None, local: Args, reply: Sequence[Any]) -> Sequence[Any]:
+        """The decoded reply, unless it is the device's error (`error when COND`: the condition
+        over it holds), raised before its `expect` and post-actions, as an error reply is."""
+        if error is None or error.when is None:
+            return reply
+        try:
+            refused = error.when(self._state, local, reply)
+        except EVAL_ERRORS as err:
+            raise RdisProtocolError(f"{plan.name}: reply {tuple(reply)!r}: its `error when` failed: {err}") from None
+        if refused:
+            raise self._device_error_of(plan, error, tuple(reply))
+        return reply
+
     @staticmethod
     def _device_error(plan: Primitive, error: ErrorReply, body: bytes) -> RdisDeviceError:
         """The device's error: its bytes decoded, the first value its code, named by the enum."""
-        values = tuple(error.decoder.decode(plan.name, body))
+        return Exchange._device_error_of(plan, error, tuple(error.decoder.decode(plan.name, body)))
+
+    @staticmethod
+    def _device_error_of(plan: Primitive, error: ErrorReply, values: tuple[Any, ...]) -> RdisDeviceError:
+        """The device's error from its decoded values: the first its code, named by the enum."""
         code = values[0] if values and type(values[0]) is int else None
         name = error.names.get(code) if code is not None else None
         if code is None:
