@@ -179,9 +179,12 @@ def _rows(layout: m.StructLayout, text: Callable[[int, int | None], str],
     groups = {first: (codes, count) for first, codes, count in layout.groups}
     splits = {first: (code[-1], len(widths)) for first, code, widths in layout.bits}
     varying = layout.varying
+    pads = _pads(layout)
     rows: list[Row] = []
     at = 0
     while at <= len(slots):
+        if at in pads:
+            rows.append((pads[at], "pad", "zero bytes, skipped when read"))
         if varying is not None and at == varying.count_slot:
             size = varying.count_size
             kind = _kind(layout, varying.count_code, size)
@@ -213,6 +216,26 @@ def _rows(layout: m.StructLayout, text: Callable[[int, int | None], str],
                     or (_slot_size(slot), _kind(layout, slot.code, slot.size), text(at, None)))
         at += 1
     return rows
+
+
+def _pads(layout: m.StructLayout) -> dict[int, int]:
+    """The pad bytes (`x`) of a format without repeated groups, by the slot they come before
+    (the number of slots: after the last): a value's row after them starts where it is read."""
+    if layout.groups or layout.varying is not None:
+        return {}
+    fields = {first: len(widths) for first, _, widths in layout.bits}
+    pads: dict[int, int] = {}
+    at = 0
+    for count, code in re.findall(r"(\d*)([a-zA-Z?])", layout.codes):
+        n = int(count) if count else 1
+        if code == "x":
+            pads[at] = pads.get(at, 0) + n
+        elif code in "sp":  # one value, whatever its count
+            at += 1
+        else:
+            for _ in range(n):
+                at += fields.get(at, 1)
+    return pads
 
 
 def _value_text(value: m.Expr, element: int | None, fmt: str) -> str:
