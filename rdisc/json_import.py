@@ -563,14 +563,20 @@ class _Importer:
         obj = self.object(v, "`error`")
         if obj is None:
             return None
-        e = self.members(obj, "`error`", ("frame", "marker", "unpack", "codes"))
+        e = self.members(obj, "`error`", ("frame", "marker", "unpack", "codes", "when"))
+        codes = self.ident(e["codes"], "`codes`") if "codes" in e else None
+        if "when" in e:  # `error when COND`: the reply itself, decoded as ever
+            if "unpack" in e or "frame" in e or "marker" in e:
+                self.error(obj.span, "an error reply `when` a condition holds has no `frame`, `marker` or `unpack`")
+                return None
+            condition = self.reply_expr(e["when"], "`when`")
+            return None if condition is None else ast.ErrorReply(None, obj.span, codes=codes, when=condition)
         template = self.string(e.get("unpack"), "`unpack`")
         if template is None:
             if "unpack" not in e:
-                self.error(obj.span, "an error reply has `unpack`")
+                self.error(obj.span, "an error reply has `unpack` (or `when`)")
             return None
         marker = self.string(e.get("marker"), "`marker`")
-        codes = self.ident(e["codes"], "`codes`") if "codes" in e else None
         decoding = ast.Decoding("unpack", ast.StrLit(template.value, template.span), template.span)
         return ast.ErrorReply(decoding, obj.span, self.framed(e.get("frame")),
                               None if marker is None else ast.StrLit(marker.value, marker.span), codes)

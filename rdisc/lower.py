@@ -150,13 +150,15 @@ class LineReply:
 
 @dataclass(frozen=True, slots=True, eq=False)
 class ErrorReply:
-    """engine.ErrorReply: the reply that may come instead, raised with its code's name."""
+    """engine.ErrorReply: the reply that may come instead, raised with its code's name; or,
+    `when`, the reply itself when the condition over it holds."""
 
     decoder: Construct[engine.Unpack]
     marker: bytes = b""
     frame: FrameUse | None = None
     codes: str = ""
     names: dict[int, str] = dataclasses.field(default_factory=dict)
+    when: Code | None = None
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -480,7 +482,7 @@ class _Lowering:
         if p.replies:
             frames = self.reply_frames(p)
             return self.several(p, _one(decoder, frames[0] if frames else use, p.skip_unmatched, p.records))
-        error = None if p.error is None else self.error(p.error, p.params)
+        error = None if p.error is None else self.error(p.error, p.reply_locals())
         if decoder is not None:
             return _one(decoder, use, p.skip_unmatched, p.records, error)
         if use is not None and _acknowledges(use.frame):
@@ -492,7 +494,9 @@ class _Lowering:
         decoder = decoding(e.decoding)
         assert decoder is not None and decoder.kind is engine.Unpack  # the checker's
         names = {} if e.codes is None else {value: member for member, value in self.model.enums[e.codes].items()}
-        return ErrorReply(decoder, e.marker.encode("latin-1"), self.frame_use(e.frame, params), e.codes or "", names)
+        when = None if e.when is None else _condition(_OVER_REPLY, params, e.when)
+        return ErrorReply(decoder, e.marker.encode("latin-1"), self.frame_use(e.frame, params), e.codes or "", names,
+                          when)
 
     def several(self, p: m.Primitive, each: Reply) -> SeveralReplies:
         """`replies N`, each reply read as `each`: N of them, or one for each element of an

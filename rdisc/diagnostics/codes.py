@@ -503,7 +503,11 @@ first value is the device's code, an int, named by the enum's member of that val
 It stands in for one reply: a primitive decoding one reply with `unpack`, or through a
 frame, not a `regex` line, `replies` or a reply table. Wrong: `primitive ack() on link
 pack "B" (1) unpack "B" error unpack "B"` (which is it?). Right: `primitive ack() on
-link pack "B" (1) unpack "B" error "\\x15" unpack "B" code Nack`."""),
+link pack "B" (1) unpack "B" error "\\x15" unpack "B" code Nack`. A device whose every
+reply carries a status (a TMCL module's: below 100, a refusal) says no in the reply
+itself: `error when COND [code ENUM]` takes the reply decoded by the primitive's own
+`unpack` as the device's error when COND, a bool over `out`, holds, its first value the
+code (an int when `code` names it): `unpack ">BBi" error when out[0] < 100 code Status`."""),
     # -- the body -------------------------------------------------------------
     ("E601", "body-tree", """
 A robot's body is one tree of links: one root (the base, the child of no joint),

@@ -188,7 +188,10 @@ def _primitive(x: m.Primitive) -> JsonObject:
 
 def _error(e: m.ErrorReply) -> JsonObject:
     """The reply the device may send instead (`error ...`): its own frame (left out: none), the
-    bytes it starts with, its decoding and the enum naming its code."""
+    bytes it starts with, its decoding and the enum naming its code; or (`error when`) the
+    condition over the reply that makes it the device's error, and the enum."""
+    if e.when is not None:
+        return _object(("when", _embedded(e.when)), ("codes", e.codes))
     return _object(
         ("frame", None if e.frame is None else {"name": e.frame.frame, "arguments": [_embedded(a) for a in e.frame.args]}),
         ("marker", e.marker or None), ("unpack", e.decoding.format), ("codes", e.codes),

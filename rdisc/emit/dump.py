@@ -90,7 +90,11 @@ def _primitive(model: m.Model, p: m.Primitive) -> str:
             sized = "a reply" if not p.each.array(p.params).size else f"{p.replies} replies, one"
             said = f"{sized} for each of {p.each.over}, frame {uses[0]}, each"
         lines += _sides("reply: records, each" if p.records is not None else said, framed, rows)
-        if p.error is not None:
+        if p.error is not None and p.error.when is not None:  # the reply itself says no
+            named = "" if p.error.codes is None else f", named by {p.error.codes}"
+            condition = expression_text(p.error.when).replace("__out__[", "out[")  # JSON's name for the reply
+            lines.append(f"  or an error when {condition}: out[0] its code{named}")
+        elif p.error is not None:
             name, sides, rows = _error_layout(model, p, p.error)
             lines += _sides(name, sides, rows)
     else:
@@ -180,9 +184,12 @@ def _rows(layout: m.StructLayout, text: Callable[[int, int | None], str],
     splits = {first: (code[-1] + "{" if code.endswith("s") else code[-1], len(widths))
               for first, code, widths in layout.bits}
     varying = layout.varying
+    pads = _pads(layout)
     rows: list[Row] = []
     at = 0
     while at <= len(slots):
+        if at in pads:
+            rows.append((pads[at], "pad", "zero bytes, skipped when read"))
         if varying is not None and at == varying.count_slot:
             size = varying.count_size
             kind = _kind(layout, varying.count_code, size)
@@ -214,6 +221,26 @@ def _rows(layout: m.StructLayout, text: Callable[[int, int | None], str],
                     or (_slot_size(slot), _kind(layout, slot.code, slot.size), text(at, None)))
         at += 1
     return rows
+
+
+def _pads(layout: m.StructLayout) -> dict[int, int]:
+    """The pad bytes (`x`) of a format without repeated groups, by the slot they come before
+    (the number of slots: after the last): a value's row after them starts where it is read."""
+    if layout.groups or layout.varying is not None:
+        return {}
+    fields = {first: len(widths) for first, _, widths in layout.bits}
+    pads: dict[int, int] = {}
+    at = 0
+    for count, code in re.findall(r"(\d*)([a-zA-Z?])", layout.codes):
+        n = int(count) if count else 1
+        if code == "x":
+            pads[at] = pads.get(at, 0) + n
+        elif code in "sp":  # one value, whatever its count
+            at += 1
+        else:
+            for _ in range(n):
+                at += fields.get(at, 1)
+    return pads
 
 
 def _value_text(value: m.Expr, element: int | None, fmt: str) -> str:

@@ -529,7 +529,7 @@ class _Driver:
         shape = plan.reply
         functions = [("frame", None if plan.frame is None else plan.frame.args), ("lines", plan.lines),
                      *((f"reply_frame_{n}", use.args) for n, use in enumerate(_reply_frames(shape))),
-                     ("error_frame", _error_frame(shape)), ("expect", plan.expect)]
+                     ("error_frame", _error_frame(shape)), ("error_when", _error_when(shape)), ("expect", plan.expect)]
         for suffix, code in functions:
             if code is not None:
                 w.blank(2)
@@ -1054,6 +1054,12 @@ def _error_frame(shape: lowering.Reply) -> lowering.Code | None:
     """The arguments of the frame of the reply that may come instead, if it has one of its own."""
     error = _error(shape)
     return None if error is None or error.frame is None else error.frame.args
+
+
+def _error_when(shape: lowering.Reply) -> lowering.Code | None:
+    """The condition that makes the reply itself the device's error (`error when`), if any."""
+    error = _error(shape)
+    return None if error is None else error.when
 
 
 def _case(case: m.ReplyCase) -> str:

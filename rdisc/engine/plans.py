@@ -51,13 +51,15 @@ class ErrorReply:
     """The reply a device may send instead (`error`: Modbus's exception, a NACK), raised as an
     RdisDeviceError: known by its own frame (`frame`; None: the reply's, or none) or by the bytes
     it starts with (`marker`), the rest decoded by `decoder`, whose first value is the device's
-    code when `codes` (an enum's name) names it by `names`."""
+    code when `codes` (an enum's name) names it by `names`. With `when` (`error when COND`), it
+    is the reply itself, decoded as ever, when the condition over it holds."""
 
     decoder: Unpack
     marker: bytes = b""
     frame: FrameUse | None = None
     codes: str = ""
     names: Mapping[int, str] = field(default_factory=dict)
+    when: Callable[[StateValues, Args, Sequence[Any]], object] | None = None
 
 
 @dataclass(frozen=True, slots=True)

@@ -179,7 +179,7 @@ class _Engine:
         if e is None:
             return None
         return engine.ErrorReply(e.decoder.value, e.marker, None if e.frame is None else self.use(e.frame), e.codes,
-                                 dict(e.names))
+                                 dict(e.names), self.closure(e.when))
 
     def table(self, entries: tuple[plans.Entry, ...]) -> dict[Any, engine.Primitive]:
         """A reply table: each entry's plan for each of its keys (a range entry's plan once)."""

@@ -804,7 +804,9 @@ class _Checker:
         error = None
         if isinstance(error_clause, ast.ErrorReply):
             one = table is None and not count and not listed and records is None
-            error = self.error_reply(error_clause, decl, env, encoding, frame if one else None, decoding, one)
+            error = (self.error_when(error_clause, error_clause.when, decl, scope, reply, decoding, one)
+                     if error_clause.when is not None else
+                     self.error_reply(error_clause, decl, env, encoding, frame if one else None, decoding, one))
         return m.Primitive(name.text, params, connection, encoding, args, decoding, actions, decl.doc, decl.span,
                            frame, skip is not None, table, timeout, expect, lines, count, reply_frames, records,
                            listed, retries, error, self.replies_each(replies_clause, env, count))
@@ -837,6 +839,7 @@ class _Checker:
                 self.d.report("E204", clause.marker.span,
                               f"an error's marker is 1 to {MAX_TERMINATOR} bytes (characters up to \\xff)")
                 return None
+        assert clause.decoding is not None  # `error when` has none: `error_when`
         if clause.decoding.kind != "unpack":
             self.d.report("E511", clause.decoding.span, "an error reply is bytes: decode it with `unpack`",
                           help='such as `unpack "B"`, the device\'s code')
@@ -884,6 +887,31 @@ class _Checker:
                           "so its size is fixed: no `*`")
             return None
         return m.ErrorReply(unpack, own, marker, None if clause.codes is None else clause.codes.text)
+
+    def error_when(self, clause: ast.ErrorReply, when: ast.Expr, decl: ast.PrimitiveDecl, scope: Names,
+                   reply: tuple[m.AnyType, ...] | None, decoding: m.Unpack | m.Regex | None,
+                   one: bool) -> m.ErrorReply | None:
+        """`error when COND [code ENUM]`: the reply itself, decoded by the primitive's `unpack`, is
+        the device's error when COND (a bool over `out`, the parameters and state) holds, its first
+        value the code (a TMCL status below 100). None where refused."""
+        name = decl.name.text
+        if not one or not isinstance(decoding, m.Unpack):
+            self.d.report("E511", clause.span, f"`{name}` does not decode one reply that could say it is an error",
+                          help="`error when` goes with `unpack` (read with or without a frame), not with `regex`, "
+                          "`replies` or a reply table")
+            return None
+        env = self.env_with(scope, "in an `error when`", "`out`, parameters and state variables", reply=reply,
+                            reply_known=reply is not None)
+        condition = self.typer.expr(when, env)
+        if condition.type is not None and condition.type is not Type.BOOL:
+            self.d.report("E401", when.span, f"`error when` takes a bool, but this is {describe(condition.type)}")
+            return None
+        if clause.codes is not None and reply is not None and (not reply or reply[0] is not Type.INT):
+            self.d.report("E511", clause.span, f"the first value of `{name}`'s reply is the device's code when it "
+                          f"is an error, named by `{clause.codes.text}`, so it is an int",
+                          help='decode it first with an integer code: `unpack ">BBi"`')
+            return None
+        return m.ErrorReply(decoding, codes=None if clause.codes is None else clause.codes.text, when=condition)
 
     def retries(self, clause: ast.Retry, name: ast.Ident, writes: bool, replied: bool) -> int:
         """`retry N`: resends of a request whose reply timed out or did not match, a constant

@@ -766,12 +766,14 @@ class ErrorReply:
     """The reply a device may send instead of the one asked for (Modbus's exception, a NACK):
     known by its own frame (None: the primitive's, or none) or by its first bytes (`marker`,
     latin-1), decoded, its first value the device's code, named by the enum `codes`. It is
-    raised, never stored: an RdisDeviceError."""
+    raised, never stored: an RdisDeviceError. With `when` (`error when COND`), it is the reply
+    itself, decoded by the primitive's `decoding`, when the condition over `out` holds."""
 
     decoding: Unpack
     frame: FrameUse | None = None
     marker: str = ""
     codes: str | None = None
+    when: Expr | None = None
 
 
 TAG = "tag"  # the name of a tagged reply's tag in its entries' post-actions

@@ -1499,15 +1499,17 @@ def _init_ErrorReply(
     frame: Any = DEFAULT,
     marker: Any = DEFAULT,
     codes: Any = DEFAULT,
+    when: Any = DEFAULT,
 ) -> None:
     _set(self, "decoding", decoding)
     _set(self, "frame", frame)
     _set(self, "marker", marker)
     _set(self, "codes", codes)
+    _set(self, "when", when)
 
 
 def _repr_ErrorReply(self: Any) -> str:
-    return f"{self.__class__.__qualname__}(decoding={self.decoding!r}, frame={self.frame!r}, marker={self.marker!r}, codes={self.codes!r})"
+    return f"{self.__class__.__qualname__}(decoding={self.decoding!r}, frame={self.frame!r}, marker={self.marker!r}, codes={self.codes!r}, when={self.when!r})"
 
 
 def _eq_ErrorReply(self: Any, other: Any) -> Any:
@@ -1517,17 +1519,19 @@ def _eq_ErrorReply(self: Any, other: Any) -> Any:
             self.frame,
             self.marker,
             self.codes,
+            self.when,
         ) == (
             other.decoding,
             other.frame,
             other.marker,
             other.codes,
+            other.when,
         )
     return NotImplemented
 
 
 def _hash_ErrorReply(self: Any) -> int:
-    return hash((self.decoding, self.frame, self.marker, self.codes))
+    return hash((self.decoding, self.frame, self.marker, self.codes, self.when))
 
 
 def _init_ReplyTable(
@@ -2943,7 +2947,13 @@ WRITTEN: dict[str, Written] = {
         },
     ),
     "ErrorReply": Written(
-        (("decoding", MISSING), ("frame", DEFAULT), ("marker", DEFAULT), ("codes", DEFAULT)),
+        (
+            ("decoding", MISSING),
+            ("frame", DEFAULT),
+            ("marker", DEFAULT),
+            ("codes", DEFAULT),
+            ("when", DEFAULT),
+        ),
         {
             "__init__": _init_ErrorReply,
             "__repr__": _repr_ErrorReply,

@@ -460,13 +460,16 @@ class Lines:
 class ErrorReply:
     """`error frame rtu(UNIT, 0x83) unpack "B" code Exception`: the reply the device may send
     instead (Modbus's exception, a NACK), known by its own frame or its first bytes (`marker`),
-    decoded, its first value the device's code, named by an enum (`codes`)."""
+    decoded, its first value the device's code, named by an enum (`codes`). `error when COND
+    code Status` (no decoding of its own): the reply itself, decoded as ever, is the device's
+    error when COND holds (a TMCL status below 100), its first value the code."""
 
-    decoding: Decoding
+    decoding: Decoding | None
     span: Span = _span
     frame: Framed | None = None
     marker: StrLit | None = None
     codes: Ident | None = None
+    when: Expr | None = None
 
 
 PrimitiveClause = (

@@ -1155,16 +1155,18 @@ def _init_ErrorReply(
     frame: Any = DEFAULT,
     marker: Any = DEFAULT,
     codes: Any = DEFAULT,
+    when: Any = DEFAULT,
 ) -> None:
     _set(self, "decoding", decoding)
     _set(self, "span", span)
     _set(self, "frame", frame)
     _set(self, "marker", marker)
     _set(self, "codes", codes)
+    _set(self, "when", when)
 
 
 def _repr_ErrorReply(self: Any) -> str:
-    return f"{self.__class__.__qualname__}(decoding={self.decoding!r}, frame={self.frame!r}, marker={self.marker!r}, codes={self.codes!r})"
+    return f"{self.__class__.__qualname__}(decoding={self.decoding!r}, frame={self.frame!r}, marker={self.marker!r}, codes={self.codes!r}, when={self.when!r})"
 
 
 def _eq_ErrorReply(self: Any, other: Any) -> Any:
@@ -1174,17 +1176,19 @@ def _eq_ErrorReply(self: Any, other: Any) -> Any:
             self.frame,
             self.marker,
             self.codes,
+            self.when,
         ) == (
             other.decoding,
             other.frame,
             other.marker,
             other.codes,
+            other.when,
         )
     return NotImplemented
 
 
 def _hash_ErrorReply(self: Any) -> int:
-    return hash((self.decoding, self.frame, self.marker, self.codes))
+    return hash((self.decoding, self.frame, self.marker, self.codes, self.when))
 
 
 def _init_PrimitiveDecl(
@@ -2708,6 +2712,7 @@ WRITTEN: dict[str, Written] = {
             ("frame", DEFAULT),
             ("marker", DEFAULT),
             ("codes", DEFAULT),
+            ("when", DEFAULT),
         ),
         {
             "__init__": _init_ErrorReply,

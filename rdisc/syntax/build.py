@@ -428,6 +428,11 @@ class Rules:
                               None if marker is None else self.b.string(marker),
                               None if codes is None else self.b.ident(codes))
 
+    def error_when(self, meta: Meta, c: list[Any]) -> ast.ErrorReply:
+        condition, codes = c
+        return ast.ErrorReply(None, self.b.span(meta), codes=None if codes is None else self.b.ident(codes),
+                              when=condition)
+
     def reply_list(self, meta: Meta, c: list[ast.ListedReply]) -> ast.ReplyList:
         return ast.ReplyList(tuple(c), self.b.span(meta))
 

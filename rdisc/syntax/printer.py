@@ -371,13 +371,16 @@ def _primitive_clause(c: ast.PrimitiveClause) -> tuple[list[str], bool]:
                     head += f" expect {print_expr(listed.expect)}"
                 lines.extend(_entry(head, listed.actions))
             return [*lines, "}"], False
-        case ast.ErrorReply(decoding, _, framed, marker, codes):
+        case ast.ErrorReply(decoding, _, framed, marker, codes, when):
             words = ["error"]
             if framed is not None:
                 words.append(f"frame {framed.frame.text}({_args(framed.args)})")
             if marker is not None:
                 words.append(p.quote_octets(marker.value))
-            words.append(f"{decoding.kind} {spell_template(decoding.template.value)}")
+            if when is not None:
+                words.append(f"when {print_expr(when)}")
+            if decoding is not None:
+                words.append(f"{decoding.kind} {spell_template(decoding.template.value)}")
             if codes is not None:
                 words.append(f"code {codes.text}")
             return [" ".join(words)], False

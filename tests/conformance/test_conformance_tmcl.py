@@ -1,9 +1,10 @@
 """examples/tmcl.rdis against pytrinamic (0.2.26), Trinamic's own TMCL library, byte for byte:
 pytrinamic's SerialTmclInterface is driven over a port that records what it writes and answers
 with replies pytrinamic's TMCLReply builds; rdisc must write the same nine bytes for the same
-call, and read the same value from the same reply. A reply whose checksum pytrinamic refuses
-(TMCLReplyChecksumError), or whose status is an error (TMCLReplyStatusError), is refused by rdisc
-too. The runtime and the generated driver alike.
+call, and read the same value from the same reply. A reply whose status is a refusal, which
+pytrinamic raises as a TMCLReplyStatusError, is an RdisDeviceError with the same status and its
+name; a reply whose checksum pytrinamic refuses (TMCLReplyChecksumError) is an RdisProtocolError.
+The runtime and the generated driver alike.
 """
 
 from __future__ import annotations
@@ -114,14 +115,18 @@ def test_a_call_is_the_datagram_pytrinamic_sends_and_its_reply_is_read_alike(
 
 
 @pytest.mark.parametrize("status", sorted(set(tmcl.TMCLStatus.messages) - {100, 101}))
-def test_a_refusal_pytrinamic_raises_is_refused(trinamic: tuple[str, Any], status: int) -> None:
+def test_a_refusal_is_the_devices_error_with_pytrinamics_status(trinamic: tuple[str, Any], status: int) -> None:
     answer = reply(6, 0, status)
-    with pytest.raises(tmcl.TMCLReplyStatusError):
+    with pytest.raises(tmcl.TMCLReplyStatusError) as theirs:
         pytrinamic("get_axis_parameter", (1, 0), answer)
     port = ScriptedPort(answer)
     with _connect(trinamic, port) as robot, pytest.raises(Exception) as caught:
         robot.call_primitive("get_axis_parameter", 1, 0)
-    assert type(caught.value).__name__ == "RdisProtocolError"
+    assert type(caught.value).__name__ == "RdisDeviceError"
+    assert caught.value.code == theirs.value.status_code == status
+    constants = {value: name for name, value in vars(tmcl.TMCLStatus).items() if isinstance(value, int)}
+    named = constants.get(status) or theirs.value.error_description.upper().replace(" ", "_")  # 9: no constant
+    assert caught.value.name == named
     assert robot.state["parameter"] == 0
 
 

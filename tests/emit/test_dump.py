@@ -62,3 +62,36 @@ def test_an_error_reply_is_shown_after_the_reply(tmp_path: Path, rdisc) -> None:
        0     1  error marker          15
        1     1  u8                    code, named by Refusal
 """
+
+
+PADDED = """\
+robot padded { author "tests" }
+connection link: serial { baud 9600 }
+primitive yaw() on link pack ">Bxx" (0x71) unpack ">hxxB{1,7}2xf"
+"""
+
+
+def test_pad_bytes_have_rows_so_the_offsets_after_them_are_where_values_are_read(tmp_path: Path, rdisc) -> None:
+    source = tmp_path / "padded.rdis"
+    source.write_text(PADDED, encoding="utf-8")
+    result = rdisc("dump", source)
+    assert (result.returncode, result.stderr) == (0, "")
+    assert result.stdout == """\
+primitive yaw() on link
+  request: 3 bytes
+  offset  size  kind                  value
+       0     1  u8                    71 (113)
+       1     2  pad                   zero bytes, skipped when read
+  reply: 11 bytes
+  offset  size  kind                  value
+       0     2  s16 BE                out[0]
+       2     2  pad                   zero bytes, skipped when read
+       4     1  bits u8               out[1] (bit 0), out[2] (bits 1..7)
+       5     2  pad                   zero bytes, skipped when read
+       7     4  f32 BE                out[3]
+"""
+    capture = tmp_path / "capture.txt"
+    capture.write_text("> 71 00 00\n< FF 38 00 00 03 00 00 41 20 00 00\n", encoding="utf-8")
+    decoded = rdisc("decode", source, capture)
+    assert (decoded.returncode, decoded.stderr) == (0, "")
+    assert "  reply of yaw" in decoded.stdout and "10.0" in decoded.stdout

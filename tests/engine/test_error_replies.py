@@ -193,9 +193,9 @@ def test_the_error_goes_through_json_and_the_printer(tmp_path: Path) -> None:
     for text, name in ((MODBUS, "modbus"), (NACK, "nack")):
         compilation, built = through_json(text, tmp_path, name)
         assert compilation.model is not None
-        module = parse(text, "x.rdis", Diagnostics())
+        module = parse("x.rdis", text, Diagnostics())
         printed = print_module(module)
-        assert print_module(parse(printed, "x.rdis", Diagnostics())) == printed
+        assert print_module(parse("x.rdis", printed, Diagnostics())) == printed
     _, built = through_json(MODBUS, tmp_path, "modbus")
     assert json.loads(built)["primitives"][0]["error"] == {
         "frame": {"name": "rtu", "arguments": ["<17>", "<131>"]}, "unpack": "B", "codes": "Exception"}
@@ -236,3 +236,84 @@ def test_an_acknowledgement_or_a_refusal_in_its_own_frame(kind: str, tmp_path: P
         robot.call_primitive("go", 3)
         assert robot.state["sent"] == 3
         assert port.writes == [b"\xaa\x01\x01", b"\xaa\x01\x02", b"\xaa\x01\x03"]
+
+
+STATUS = """\
+robot status { author "tests" }
+/// TMCL's refusals: a status below 100.
+enum Status { WRONG_CHECKSUM = 1, INVALID_COMMAND = 2, WRONG_TYPE = 3, INVALID_VALUE = 4 }
+state value: int = 0
+state level: int = 0
+connection link: serial { baud 9600 }
+/// A TMCL datagram: host, module, then the payload and the low byte of the sum.
+frame tmcl(module: int in 0..255) {
+    request { field module "B" = module  payload  checksum "sum" "B" }
+    reply { field host "B" = 2  field module "B" = module  payload  checksum "sum" "B" }
+}
+/// GAP: the reply's status says whether it is the value or the module's refusal.
+primitive get(index: int in 0..255, limit: int in 0..255) on link frame tmcl(1) pack ">BBBi" (6, index, 0, 0)
+    unpack ">BBi" error when out[0] < limit code Status expect out[1] == 6 { value = out[2] }
+/// Unframed, unnamed: a nonzero first byte is an error.
+primitive read_level() on link pack "B" (0x21) unpack "BB" error when out[0] != 0 retry 2 { level = out[1] }
+"""
+
+
+def _datagram(status: int, command: int, value: int) -> bytes:
+    body = bytes([2, 1, status, command]) + value.to_bytes(4, "big", signed=True)
+    return body + bytes([sum(body) & 0xFF])
+
+
+@pytest.mark.parametrize("kind", ["runtime", "driver"])
+def test_a_reply_whose_status_says_no_is_the_devices_error(kind: str, tmp_path: Path) -> None:
+    port = ScriptedPort(_datagram(100, 6, -7) + _datagram(2, 6, 0) + _datagram(9, 6, 0) + _datagram(50, 6, 5)
+                        + _datagram(99, 7, 0))
+    with implementation_of(kind, STATUS, tmp_path, "status").connect(port, threads=False) as robot:
+        robot.call_primitive("get", 1, 100)
+        assert robot.state["value"] == -7
+        for said, code, name in (("error 2 (INVALID_COMMAND)", 2, "INVALID_COMMAND"),
+                                 ("error 9 (not a member of Status)", 9, None)):
+            with pytest.raises(Exception) as caught:
+                robot.call_primitive("get", 1, 100)
+            assert type(caught.value).__name__ == "RdisDeviceError"
+            assert str(caught.value) == f"get: the device answered {said}"
+            assert (caught.value.code, caught.value.name, caught.value.values) == (code, name, (code, 6, 0))
+        robot.call_primitive("get", 1, 50)  # the condition reads the parameters: 50 is not below 50
+        assert robot.state["value"] == 5
+        with pytest.raises(Exception) as caught:  # the error is told before the `expect` is held
+            robot.call_primitive("get", 1, 100)
+        assert type(caught.value).__name__ == "RdisDeviceError" and robot.state["value"] == 5
+
+
+@pytest.mark.parametrize("kind", ["runtime", "driver"])
+def test_an_unframed_reply_that_says_no_is_not_retried(kind: str, tmp_path: Path) -> None:
+    port = ScriptedPort(b"\x03\x09" + b"\x00\x2a")
+    with implementation_of(kind, STATUS, tmp_path, "status").connect(port, threads=False) as robot:
+        with pytest.raises(Exception) as caught:
+            robot.call_primitive("read_level")
+        assert str(caught.value) == "read_level: the device answered error 3"
+        assert port.writes == [b"\x21"]
+        robot.call_primitive("read_level")
+        assert robot.state["level"] == 42
+
+
+def test_an_error_when_goes_through_json_and_the_printer(tmp_path: Path) -> None:
+    module = parse("x.rdis", STATUS, Diagnostics())
+    printed = print_module(module)
+    assert "error when out[0] < limit code Status" in printed
+    assert print_module(parse("x.rdis", printed, Diagnostics())) == printed
+    _, built = through_json(STATUS, tmp_path, "status")
+    assert [p["error"] for p in json.loads(built)["primitives"]] == [
+        {"when": "<__out__[0] < limit>", "codes": "Status"}, {"when": "<__out__[0] != 0>"}]
+
+
+def test_the_languages_error_when_example_writes_and_reads_what_it_says(tmp_path: Path) -> None:
+    doc = (Path(__file__).resolve().parents[2] / "docs" / "language.md").read_text(encoding="utf-8")
+    (block,) = [b for b in doc.split("```rdis\n") if "primitive actual_position" in b]
+    text = 'robot doc { author "tests" }\nconnection serial0: serial { baud 115200 }\n' + block.split("```")[0]
+    port = ScriptedPort(bytes.fromhex("02 01 64 06 00 00 03 E8 58") + bytes.fromhex("02 01 03 06 00 00 00 00 0C"))
+    with implementation_of("runtime", text, tmp_path, "doc").connect(port, threads=False) as robot:
+        robot.call_primitive("actual_position", 0)
+        assert port.writes == [bytes.fromhex("01 06 01 00 00 00 00 00 08")] and robot.state["actual"] == 1000
+        with pytest.raises(Exception) as caught:
+            robot.call_primitive("actual_position", 0)
+        assert str(caught.value) == "actual_position: the device answered error 3 (WRONG_TYPE)"

@@ -70,7 +70,7 @@ EXPECTED_COUNTS: dict[str, dict[str, int]] = {
                                "RobotDecl": 1, "SettingDecl": 1, "StateDecl": 19},
     "examples/modbus.rdis": {"RobotDecl": 1, "EnumDecl": 1, "SettingDecl": 1, "StateDecl": 3, "ConnectionDecl": 1,
                              "FrameDecl": 1, "PrimitiveDecl": 3},
-    "examples/tmcl.rdis": {"RobotDecl": 1, "EnumDecl": 1, "SettingDecl": 2, "StateDecl": 4, "ConnectionDecl": 1,
+    "examples/tmcl.rdis": {"RobotDecl": 1, "EnumDecl": 2, "SettingDecl": 2, "StateDecl": 4, "ConnectionDecl": 1,
                            "FrameDecl": 1, "PrimitiveDecl": 10, "InterfaceDecl": 2},
     "examples/um7.rdis": {"RobotDecl": 1, "ConstDecl": 2, "StateDecl": 11, "ConnectionDecl": 1, "FrameDecl": 2,
                           "PrimitiveDecl": 9},

@@ -1272,6 +1272,7 @@ class Primitive:
     error: bytes = b""  # `error "MARKER" unpack "B"`: the bytes an unframed error reply starts with
     nested: tuple[int, int] | None = None  # (an entry, a sub-tag): that entry a nested table `tag "B" { SUB: ... }`
     each_args: tuple[Expr, ...] = ()  # `replies eid in ids frame F(each_args)`: a reply for each element of `ids`
+    refused: int | None = None  # `error when out[0] == N`: a reply whose first byte is N is the device's error
 
     def text(self) -> str:
         clauses = [f"on {self.connection}"]
@@ -1293,6 +1294,8 @@ class Primitive:
                            f"({', '.join(a.text() for a in self.each_args)})")
         if self.error:
             clauses.append(f'error {bytes_literal(self.error)} unpack "B"')
+        if self.refused is not None:
+            clauses.append(f"error when out[0] == {self.refused}")
         if self.key is not None or self.tag is not None:
             head = f"reply {self.key}" if self.key is not None else f'reply tag "{self.tag}"'
             entries = "\n".join(f"    {value}{'' if last == value else f'..{last}'}: {self.entry_text(at, reply)}"
@@ -1703,6 +1706,10 @@ def primitives(draw: Draw, name: str, states: Mapping[str, str], scope: Scope,
     if (reply is not None and not framed_reply and reply.decoding.kind == "unpack" and reply.decoding.size is not None
             and sometimes(draw, 3)):
         error = draw(st.sampled_from([b"\xee", b"\x15\x15"]))
+    refused = None  # a reply whose first byte (`B`) says no: `error when out[0] == N`
+    if (reply is not None and not error and reply.decoding.kind == "unpack"
+            and re.match(r"[<>!=@]?B(?![{\d])", reply.decoding.template) and sometimes(draw, 4)):
+        refused = draw(st.sampled_from([0, 1, 0x7F]))
     nested = None  # an entry of one value of a table read unframed: dispatching again on the next byte
     single = [at for at, last in enumerate(lasts or (None,) * len(entries)) if last is None]
     if tag is not None and (frame is None or not frame.reply) and single and sometimes(draw, 3):
@@ -1715,7 +1722,8 @@ def primitives(draw: Draw, name: str, states: Mapping[str, str], scope: Scope,
         params += (Param("ids", INTS),)
         reply = Reply(reply.decoding, ())  # its values are arrays of any size: none of them is stored
     return Primitive(name, params, draw(st.sampled_from(connections)), encoding, template, args, reply, actions,
-                     key, tag, entries, frame, frame_args, skip, timeout, lasts, retries, error, nested, each_args)
+                     key, tag, entries, frame, frame_args, skip, timeout, lasts, retries, error, nested, each_args,
+                     refused)
 
 
 def _call_args(draw: Draw, prim: Primitive, scope: Scope) -> tuple[Expr, ...] | None:
@@ -1897,6 +1905,8 @@ def valid_reply(description: Description, prim: Primitive, values: Mapping[str, 
     material = spice(prim, plan.material) if plan.spiced else plan.material
     payload = tag + payload_for(decoding, material) + (b"\0" if shift_fields else b"")
     valid = decoding is not None or not (prim.reply or prim.entries)
+    if prim.refused is not None and payload[:1] == bytes([prim.refused]):
+        valid = False  # the device's error (`error when`)
     if decoding is not None and decoding.kind == "regex":
         valid = valid and re.match(decoding.template, payload[len(tag) :].decode("latin-1")) is not None
     if prim.framed_reply:
