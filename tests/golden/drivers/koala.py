@@ -1780,13 +1780,15 @@ class ErrorReply:
     """The reply a device may send instead (`error`: Modbus's exception, a NACK), raised as an
     RdisDeviceError: known by its own frame (`frame`; None: the reply's, or none) or by the bytes
     it starts with (`marker`), the rest decoded by `decoder`, whose first value is the device's
-    code when `codes` (an enum's name) names it by `names`."""
+    code when `codes` (an enum's name) names it by `names`. With `when` (`error when COND`), it
+    is the reply itself, decoded as ever, when the condition over it holds."""
 
     decoder: Unpack
     marker: bytes = b""
     frame: FrameUse | None = None
     codes: str = ""
     names: Mapping[int, str] = field(default_factory=dict)
+    when: Callable[[StateValues, Args, Sequence[Any]], object] | None = None
 
 
 @dataclass(frozen=True, slots=True)
@@ -2991,12 +2993,13 @@ class Exchange:
                     text = text[:-1]
                 return [(plan, local, self._met(plan, local, decoder.decode(plan.name, text)))]
             case FixedReply(decoder=unpack, error=error):
-                if error is not None:
+                if error is not None and error.when is None:
                     self._unframed_error(plan, error, reader, local)
                 data = reader.read(unpack.size)
                 if not data:
                     raise RdisTimeout(f"{plan.name}: no reply within {wait:g} s")
-                return [(plan, local, self._met(plan, local, unpack.decode(plan.name, data)))]
+                return [(plan, local, self._met(plan, local, self._refused(plan, error, local,
+                                                                            unpack.decode(plan.name, data))))]
             case TaggedStream():
                 return [self._read_tagged(plan, shape, reader, wait, local)]
             case FramedReply(decoder=decoding, skip=skip, error=error):
@@ -3005,13 +3008,14 @@ class Exchange:
                 # the frame (then the frame says where the payload ends).
                 assert use is not None
                 stuffed = use.frame.stuffing is not None and any(side.delimiter for side in use.frame.replies)
-                inside = error is not None and error.frame is None
+                inside = error is not None and error.frame is None and error.when is None
                 size = decoding.size if decoding is not None and not stuffed and not inside else -1
 
                 def taken(payload: bytes) -> list[_ReplyPart]:
                     if inside and error is not None and payload.startswith(error.marker):
                         raise self._device_error(plan, error, payload[len(error.marker):])
-                    return [(plan, local, self._met(plan, local, decoding.decode(plan.name, payload))
+                    return [(plan, local, self._met(plan, local, self._refused(
+                        plan, error, local, decoding.decode(plan.name, payload)))
                              if decoding else ())]
 
                 return self._framed(plan, use, reader, fields, request, wait, skip, size, taken,
@@ -3130,6 +3134,19 @@ class Exchange:
             raise RdisProtocolError(f"{plan.name}: an error reply {marker.hex(' ')} then {len(body)} bytes, "
                                     f"where its decoding takes {size}")
         raise self._device_error(plan, error, body)
+
+    def _refused(self, plan: Primitive, error: ErrorReply | None, local: Args, reply: Sequence[Any]) -> Sequence[Any]:
+        """The decoded reply, unless it is the device's error (`error when COND`: the condition
+        over it holds), raised before its `expect` and post-actions, as an error reply is."""
+        if error is None or error.when is None:
+            return reply
+        try:
+            refused = error.when(self._state, local, reply)
+        except EVAL_ERRORS as err:
+            raise RdisProtocolError(f"{plan.name}: reply {tuple(reply)!r}: its `error when` failed: {err}") from None
+        if refused:
+            raise device_error(plan, error, tuple(reply))
+        return reply
 
     @staticmethod
     def _device_error(plan: Primitive, error: ErrorReply, body: bytes) -> RdisDeviceError:
