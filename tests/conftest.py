@@ -124,6 +124,23 @@ settings.register_profile("rdisc", deadline=None, suppress_health_check=[HealthC
 settings.load_profile("rdisc")
 
 
+def _constants_read_from_the_checkout_only() -> None:
+    """Hypothesis (6.131 on) draws some inputs from the constants in the source of each module
+    imported, read anew whenever sys.modules grows: every generated driver or node a worker
+    imported from a temporary folder (200 KB each) was parsed by the next example drawn, 30 s in
+    one draw on a fresh checkout. Only modules under the checkout are read (the drivers carry the
+    engine's modules, whose constants are read there). Private to Hypothesis: left as it is if gone."""
+    from hypothesis.internal.conjecture import providers
+
+    local = getattr(providers, "is_local_module_file", None)
+    if callable(local):
+        checkout = str(REPO) + os.sep
+        providers.is_local_module_file = lambda path: path.startswith(checkout) and local(path)
+
+
+_constants_read_from_the_checkout_only()
+
+
 def fuzz_examples(n: int) -> int:
     """A property test's number of examples: `n`, times RDISC_FUZZ_SCALE."""
     return max(1, round(n * FUZZ_SCALE))
