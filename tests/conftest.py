@@ -8,8 +8,9 @@ reviewed in the diff rather than accepted silently. Nothing else writes them.
 `run_rdisc` runs a verb that only reads and writes files (check, build, dump, ...) in this
 process, through the command's entry function, as a subprocess would see it (a pipe, no
 colour, 200 columns): about 5 ms where starting Python costs a second; `replay` too, which reads
-a recording and a description and opens nothing. Verbs that open devices, handle signals or
-serve (run, sim, console) and runs that set interpreter
+a recording and a description and opens nothing, and `sim`, whose device is a simulation in this
+process (its signal handlers are put back as a run ends). Verbs that open devices or serve (run,
+console) and runs that set interpreter
 variables (PYTHONHASHSEED) start a real process; `run_rdisc_process` always does.
 """
 
@@ -170,7 +171,7 @@ def untimed(stderr: str) -> list[str]:
 
 
 #: verbs that only read and write files: run in this process by `run_rdisc`
-IN_PROCESS_VERBS = frozenset({"check", "build", "import", "explain", "dump", "decode", "graph", "replay",
+IN_PROCESS_VERBS = frozenset({"check", "build", "import", "explain", "dump", "decode", "graph", "replay", "sim",
                               "emit-python", "emit-ros", "emit-urdf", "emit-sdf", "emit-mjcf"})
 
 
