@@ -7,10 +7,10 @@ reviewed in the diff rather than accepted silently. Nothing else writes them.
 
 `run_rdisc` runs a verb that only reads and writes files (check, build, dump, ...) in this
 process, through the command's entry function, as a subprocess would see it (a pipe, no
-colour, 200 columns): about 5 ms where starting Python costs a second; `replay` too, which reads
-a recording and a description and opens nothing, and `sim`, whose device is a simulation in this
-process (its signal handlers are put back as a run ends). Verbs that open devices or serve (run,
-console) and runs that set interpreter
+colour, 200 columns): about 5 ms where starting Python costs a second. `run`, `sim` and `replay`
+too: their ports (loop://, a pseudo-terminal, a socket) and simulations are closed and their signal
+handlers put back as a run ends; a test that signals a run starts its own process. The console
+(it serves until stopped) and runs that set interpreter
 variables (PYTHONHASHSEED) start a real process; `run_rdisc_process` always does.
 """
 
@@ -171,7 +171,7 @@ def untimed(stderr: str) -> list[str]:
 
 
 #: verbs that only read and write files: run in this process by `run_rdisc`
-IN_PROCESS_VERBS = frozenset({"check", "build", "import", "explain", "dump", "decode", "graph", "replay", "sim",
+IN_PROCESS_VERBS = frozenset({"check", "build", "import", "explain", "dump", "decode", "graph", "replay", "sim", "run",
                               "emit-python", "emit-ros", "emit-urdf", "emit-sdf", "emit-mjcf"})
 
 
