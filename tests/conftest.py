@@ -170,9 +170,9 @@ def untimed(stderr: str) -> list[str]:
     return lines
 
 
-#: verbs that only read and write files: run in this process by `run_rdisc`
-IN_PROCESS_VERBS = frozenset({"check", "build", "import", "explain", "dump", "decode", "graph", "replay", "sim", "run",
-                              "emit-python", "emit-ros", "emit-urdf", "emit-sdf", "emit-mjcf"})
+#: verbs run in this process by `run_rdisc` (each ends closing what it opened; the console serves on)
+IN_PROCESS_VERBS = frozenset({"check", "build", "import", "explain", "dump", "decode", "graph", "replay", "sim",
+                              "run", "emit-python", "emit-ros", "emit-urdf", "emit-sdf", "emit-mjcf"})
 
 
 def run_rdisc(
