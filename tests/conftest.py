@@ -29,6 +29,7 @@ import traceback
 from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Any
 from unittest import mock
 
 import pytest
@@ -272,7 +273,35 @@ def run_rdisc_here(
     status 1, as the interpreter makes it)."""
     from rdisc.cli.main import main
 
-    argv = [str(a) for a in args]
+    return _entry_here(main, [sys.executable, "-m", "rdisc"], [str(a) for a in args], cwd, env)
+
+
+def run_driver_here(
+    driver: Path, *args: str | os.PathLike[str], cwd: Path = REPO, env: dict[str, str] | None = None,
+) -> subprocess.CompletedProcess[str]:
+    """`python DRIVER ARGS...` through the generated driver's `main`, in this process (imported once
+    a file and version): its exit status, stdout and stderr, as `run_rdisc_here` gives rdisc's."""
+    stat = driver.stat()
+    module = _drivers.get((str(driver), stat.st_mtime_ns, stat.st_size))
+    if module is None:
+        import importlib.util
+
+        name = f"_command_line_{len(_drivers)}_{driver.stem}"
+        spec = importlib.util.spec_from_file_location(name, driver)
+        assert spec is not None and spec.loader is not None
+        module = importlib.util.module_from_spec(spec)
+        sys.modules[name] = module  # dataclasses look their module up by name
+        spec.loader.exec_module(module)
+        _drivers[(str(driver), stat.st_mtime_ns, stat.st_size)] = module
+    with mock.patch.object(sys, "argv", [str(driver)]):  # argparse's prog: the driver's file name
+        return _entry_here(module.main, [sys.executable, str(driver)], [str(a) for a in args], cwd, env)
+
+
+_drivers: dict[tuple[str, int, int], Any] = {}
+
+
+def _entry_here(main: Callable[[list[str]], int], command: list[str], argv: list[str], cwd: Path,
+                env: dict[str, str] | None) -> subprocess.CompletedProcess[str]:
     with _ONE_AT_A_TIME, _as_a_subprocess(cwd, cli_env(**(env or {}))) as (stdout, stderr):
         try:
             status = main(argv)
@@ -285,8 +314,7 @@ def run_rdisc_here(
         except Exception:  # noqa: BLE001 - the interpreter would print it and exit 1
             traceback.print_exc(file=sys.stderr)
             status = 1
-    return subprocess.CompletedProcess([sys.executable, "-m", "rdisc", *argv], status,
-                                       stdout.captured(), stderr.captured())
+    return subprocess.CompletedProcess([*command, *argv], status, stdout.captured(), stderr.captured())
 
 
 def start_console(*args: str | os.PathLike[str]) -> tuple[subprocess.Popen[str], str, str]:
