@@ -300,6 +300,18 @@ def run_driver_here(
 _drivers: dict[tuple[str, int, int], Any] = {}
 
 
+def run_command_here(
+    command: Sequence[str | os.PathLike[str]], cwd: Path = REPO, env: dict[str, str] | None = None,
+) -> subprocess.CompletedProcess[str]:
+    """A command line of rdisc (`python -m rdisc ARGS`) or of a generated driver (`python DRIVER ARGS`)
+    run in this process, by `run_rdisc_here` or `run_driver_here`."""
+    argv = [str(word) for word in command]
+    assert argv[0] == sys.executable, argv
+    if argv[1:3] == ["-m", "rdisc"]:
+        return run_rdisc_here(*argv[3:], cwd=cwd, env=env)
+    return run_driver_here(Path(argv[1]), *argv[2:], cwd=cwd, env=env)
+
+
 def _entry_here(main: Callable[[list[str]], int], command: list[str], argv: list[str], cwd: Path,
                 env: dict[str, str] | None) -> subprocess.CompletedProcess[str]:
     with _ONE_AT_A_TIME, _as_a_subprocess(cwd, cli_env(**(env or {}))) as (stdout, stderr):

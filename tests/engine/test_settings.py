@@ -13,7 +13,7 @@ from pathlib import Path
 from typing import Any
 
 import pytest
-from conftest import untimed
+from conftest import run_command_here, untimed
 
 from rdisc import engine
 from rdisc.compile import compile_path
@@ -140,9 +140,7 @@ def _run(command: list[str], tmp_path: Path) -> tuple[subprocess.CompletedProces
     """A command run against a real pty: its result, the bytes the device got, the port's speed."""
     master, slave = os.openpty()
     try:
-        env = {**os.environ, "PYTHONPATH": str(Path(__file__).resolve().parents[2])}
-        result = subprocess.run([*command, "--port", os.ttyname(slave)], capture_output=True, text=True,
-                                cwd=tmp_path, env=env, check=False)
+        result = run_command_here([*command, "--port", os.ttyname(slave)], cwd=tmp_path)
         os.set_blocking(master, False)
         try:
             received = os.read(master, 4096)
