@@ -6,6 +6,7 @@ nothing writes them; the baud rate may be one. Exact bytes, errors, diagnostics 
 from __future__ import annotations
 
 import os
+import select
 import subprocess
 import sys
 import termios
@@ -141,11 +142,15 @@ def _run(command: list[str], tmp_path: Path) -> tuple[subprocess.CompletedProces
     master, slave = os.openpty()
     try:
         result = run_command_here([*command, "--port", os.ttyname(slave)], cwd=tmp_path)
-        os.set_blocking(master, False)
-        try:
-            received = os.read(master, 4096)
-        except BlockingIOError:
-            received = b""
+        received = b""  # all the run wrote: a pty hands it over a write at a time
+        while select.select([master], [], [], 0.2)[0]:
+            try:
+                chunk = os.read(master, 4096)
+            except OSError:  # no writer left: everything was read
+                break
+            if not chunk:
+                break
+            received += chunk
         speed = termios.tcgetattr(slave)[5]  # ospeed
     finally:
         os.close(master)
