@@ -7,8 +7,10 @@ reviewed in the diff rather than accepted silently. Nothing else writes them.
 
 `run_rdisc` runs a verb that only reads and writes files (check, build, dump, ...) in this
 process, through the command's entry function, as a subprocess would see it (a pipe, no
-colour, 200 columns): about 5 ms where starting Python costs a second. Verbs that open
-devices, handle signals or serve (run, replay, sim, console) and runs that set interpreter
+colour, 200 columns): about 5 ms where starting Python costs a second. `run`, `sim` and `replay`
+too: their ports (loop://, a pseudo-terminal, a socket) and simulations are closed and their signal
+handlers put back as a run ends; a test that signals a run starts its own process. The console
+(it serves until stopped) and runs that set interpreter
 variables (PYTHONHASHSEED) start a real process; `run_rdisc_process` always does.
 """
 
@@ -27,9 +29,11 @@ import traceback
 from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Any
 from unittest import mock
 
 import pytest
+from hypothesis import HealthCheck, settings
 
 REPO = Path(__file__).resolve().parent.parent
 
@@ -116,6 +120,30 @@ def mypy_cache(request: pytest.FixtureRequest, tmp_path_factory: pytest.TempPath
 FUZZ_SCALE = float(os.environ.get("RDISC_FUZZ_SCALE", "1"))
 
 
+# Hypothesis's "too slow" health check times the generation of inputs by the wall clock, so on busy
+# cores (seven others' tests besides the suite's) it failed tests whose inputs are right: the suite's
+# property tests are bounded by their counts of examples, never by time (no deadlines either).
+settings.register_profile("rdisc", deadline=None, suppress_health_check=[HealthCheck.too_slow])
+settings.load_profile("rdisc")
+
+
+def _constants_read_from_the_checkout_only() -> None:
+    """Hypothesis (6.131 on) draws some inputs from the constants in the source of each module
+    imported, read anew whenever sys.modules grows: every generated driver or node a worker
+    imported from a temporary folder (200 KB each) was parsed by the next example drawn, 30 s in
+    one draw on a fresh checkout. Only modules under the checkout are read (the drivers carry the
+    engine's modules, whose constants are read there). Private to Hypothesis: left as it is if gone."""
+    from hypothesis.internal.conjecture import providers
+
+    local = getattr(providers, "is_local_module_file", None)
+    if callable(local):
+        checkout = str(REPO) + os.sep
+        providers.is_local_module_file = lambda path: path.startswith(checkout) and local(path)
+
+
+_constants_read_from_the_checkout_only()
+
+
 def fuzz_examples(n: int) -> int:
     """A property test's number of examples: `n`, times RDISC_FUZZ_SCALE."""
     return max(1, round(n * FUZZ_SCALE))
@@ -143,9 +171,9 @@ def untimed(stderr: str) -> list[str]:
     return lines
 
 
-#: verbs that only read and write files: run in this process by `run_rdisc`
-IN_PROCESS_VERBS = frozenset({"check", "build", "import", "explain", "dump", "decode", "graph",
-                              "emit-python", "emit-ros", "emit-urdf", "emit-sdf", "emit-mjcf"})
+#: verbs run in this process by `run_rdisc` (each ends closing what it opened; the console serves on)
+IN_PROCESS_VERBS = frozenset({"check", "build", "import", "explain", "dump", "decode", "graph", "replay", "sim",
+                              "run", "emit-python", "emit-ros", "emit-urdf", "emit-sdf", "emit-mjcf"})
 
 
 def run_rdisc(
@@ -245,7 +273,47 @@ def run_rdisc_here(
     status 1, as the interpreter makes it)."""
     from rdisc.cli.main import main
 
-    argv = [str(a) for a in args]
+    return _entry_here(main, [sys.executable, "-m", "rdisc"], [str(a) for a in args], cwd, env)
+
+
+def run_driver_here(
+    driver: Path, *args: str | os.PathLike[str], cwd: Path = REPO, env: dict[str, str] | None = None,
+) -> subprocess.CompletedProcess[str]:
+    """`python DRIVER ARGS...` through the generated driver's `main`, in this process (imported once
+    a file and version): its exit status, stdout and stderr, as `run_rdisc_here` gives rdisc's."""
+    stat = driver.stat()
+    module = _drivers.get((str(driver), stat.st_mtime_ns, stat.st_size))
+    if module is None:
+        import importlib.util
+
+        name = f"_command_line_{len(_drivers)}_{driver.stem}"
+        spec = importlib.util.spec_from_file_location(name, driver)
+        assert spec is not None and spec.loader is not None
+        module = importlib.util.module_from_spec(spec)
+        sys.modules[name] = module  # dataclasses look their module up by name
+        spec.loader.exec_module(module)
+        _drivers[(str(driver), stat.st_mtime_ns, stat.st_size)] = module
+    with mock.patch.object(sys, "argv", [str(driver)]):  # argparse's prog: the driver's file name
+        return _entry_here(module.main, [sys.executable, str(driver)], [str(a) for a in args], cwd, env)
+
+
+_drivers: dict[tuple[str, int, int], Any] = {}
+
+
+def run_command_here(
+    command: Sequence[str | os.PathLike[str]], cwd: Path = REPO, env: dict[str, str] | None = None,
+) -> subprocess.CompletedProcess[str]:
+    """A command line of rdisc (`python -m rdisc ARGS`) or of a generated driver (`python DRIVER ARGS`)
+    run in this process, by `run_rdisc_here` or `run_driver_here`."""
+    argv = [str(word) for word in command]
+    assert argv[0] == sys.executable, argv
+    if argv[1:3] == ["-m", "rdisc"]:
+        return run_rdisc_here(*argv[3:], cwd=cwd, env=env)
+    return run_driver_here(Path(argv[1]), *argv[2:], cwd=cwd, env=env)
+
+
+def _entry_here(main: Callable[[list[str]], int], command: list[str], argv: list[str], cwd: Path,
+                env: dict[str, str] | None) -> subprocess.CompletedProcess[str]:
     with _ONE_AT_A_TIME, _as_a_subprocess(cwd, cli_env(**(env or {}))) as (stdout, stderr):
         try:
             status = main(argv)
@@ -258,8 +326,7 @@ def run_rdisc_here(
         except Exception:  # noqa: BLE001 - the interpreter would print it and exit 1
             traceback.print_exc(file=sys.stderr)
             status = 1
-    return subprocess.CompletedProcess([sys.executable, "-m", "rdisc", *argv], status,
-                                       stdout.captured(), stderr.captured())
+    return subprocess.CompletedProcess([*command, *argv], status, stdout.captured(), stderr.captured())
 
 
 def start_console(*args: str | os.PathLike[str]) -> tuple[subprocess.Popen[str], str, str]:

@@ -9,11 +9,10 @@ from __future__ import annotations
 import ast
 import importlib
 import re
-import subprocess
 import sys
 
 import pytest
-from conftest import cli_env, run_rdisc, untimed
+from conftest import run_command_here, run_rdisc, untimed
 
 from rdisc.compile import compile_path
 from rdisc.emit.python import class_name, import_driver, to_python
@@ -64,8 +63,7 @@ def test_a_robot_named_as_an_engine_class_gets_a_driver_that_runs(name, tmp_path
             if command is None:
                 done = run_rdisc("run", source, "--port", device.port, *calls)
             else:
-                done = subprocess.run([*command, "--port", device.port, *calls], capture_output=True, text=True,
-                                      check=False, env=cli_env(), timeout=60)
+                done = run_command_here([*command, "--port", device.port, *calls])
             assert done.returncode == 0, done.stderr
             assert untimed(done.stderr) == ["link > 41 05", "link < 06", "link > 41 09", "link < 0a"]
             assert device.received == bytes.fromhex("41 05 41 09")

@@ -6,6 +6,7 @@ nothing writes them; the baud rate may be one. Exact bytes, errors, diagnostics 
 from __future__ import annotations
 
 import os
+import select
 import subprocess
 import sys
 import termios
@@ -13,7 +14,7 @@ from pathlib import Path
 from typing import Any
 
 import pytest
-from conftest import untimed
+from conftest import run_command_here, untimed
 
 from rdisc import engine
 from rdisc.compile import compile_path
@@ -140,14 +141,16 @@ def _run(command: list[str], tmp_path: Path) -> tuple[subprocess.CompletedProces
     """A command run against a real pty: its result, the bytes the device got, the port's speed."""
     master, slave = os.openpty()
     try:
-        env = {**os.environ, "PYTHONPATH": str(Path(__file__).resolve().parents[2])}
-        result = subprocess.run([*command, "--port", os.ttyname(slave)], capture_output=True, text=True,
-                                cwd=tmp_path, env=env, check=False)
-        os.set_blocking(master, False)
-        try:
-            received = os.read(master, 4096)
-        except BlockingIOError:
-            received = b""
+        result = run_command_here([*command, "--port", os.ttyname(slave)], cwd=tmp_path)
+        received = b""  # all the run wrote: a pty hands it over a write at a time
+        while select.select([master], [], [], 0.2)[0]:
+            try:
+                chunk = os.read(master, 4096)
+            except OSError:  # no writer left: everything was read
+                break
+            if not chunk:
+                break
+            received += chunk
         speed = termios.tcgetattr(slave)[5]  # ospeed
     finally:
         os.close(master)

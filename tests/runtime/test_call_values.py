@@ -10,13 +10,12 @@ from __future__ import annotations
 import json
 import struct
 import subprocess
-import sys
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
 import pytest
-from conftest import cli_env, untimed
+from conftest import run_driver_here, untimed
 
 from rdisc import engine
 from rdisc.console.server import Console
@@ -223,8 +222,7 @@ def test_a_drivers_command_line_reads_each_value_alike(driver: Path) -> None:
 
 
 def _run_driver(driver: Path, *args: str) -> subprocess.CompletedProcess[str]:
-    return subprocess.run([sys.executable, str(driver), "--port", "loop://", *args], capture_output=True, text=True,
-                          check=False, timeout=60, env=cli_env())
+    return run_driver_here(driver, "--port", "loop://", *args)
 
 
 @pytest.mark.parametrize(("name", "values", "outcome"), [

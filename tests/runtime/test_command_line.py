@@ -10,7 +10,7 @@ import sys
 from pathlib import Path
 
 import pytest
-from conftest import cli_env, untimed
+from conftest import run_command_here, untimed
 
 from tests.engine.test_one_engine import implementation_of
 
@@ -45,8 +45,7 @@ def _command(kind: str, text: str, folder: Path, name: str) -> list[str]:
 
 
 def _run(command: list[str], *args: str) -> subprocess.CompletedProcess[str]:
-    return subprocess.run([*command, "--port", "loop://", *args], capture_output=True, text=True, check=False,
-                          timeout=60, env=cli_env())
+    return run_command_here([*command, "--port", "loop://", *args])
 
 
 @pytest.mark.parametrize("kind", ["rdisc run", "driver"])

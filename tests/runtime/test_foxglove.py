@@ -103,7 +103,7 @@ def test_a_client_subscribes_to_outputs_state_and_bytes_and_decodes_them_with_th
             said = _line(process)
             assert said.startswith("rdisc run: Foxglove on ws://127.0.0.1:"), said
             port = int(said.split("ws://127.0.0.1:")[1].split()[0])
-            with connect(f"ws://127.0.0.1:{port}", subprotocols=[SUBPROTOCOL], open_timeout=10) as socket:
+            with connect(f"ws://127.0.0.1:{port}", subprotocols=[SUBPROTOCOL], open_timeout=10, max_queue=None) as socket:
                 client = Client(socket)
                 assert client.info["op"] == "serverInfo" and client.info["name"] == "fast_create"
                 assert {topic: (c["schemaName"], c["encoding"]) for topic, c in client.channels.items()} == {
@@ -195,11 +195,11 @@ def test_the_console_serves_its_pages_calls_to_foxglove_too() -> None:
             port = int(said.split("ws://127.0.0.1:")[1].split()[0])
             page = re.search(r"http://127\.0\.0\.1:\d+/\?token=[A-Za-z0-9_-]+", _line(process))
             assert page is not None
-            with connect(f"ws://127.0.0.1:{port}", subprotocols=[SUBPROTOCOL], open_timeout=10) as socket:
+            with connect(f"ws://127.0.0.1:{port}", subprotocols=[SUBPROTOCOL], open_timeout=10, max_queue=None) as socket:
                 client = Client(socket)
                 client.subscribe("/detect_bump", "/set_velocity", "/rdisc/runs", "/rdisc/btserial/write")
                 client.receive(lambda found: len(found) > 0)  # subscribed: the bumpers' poll is arriving
-                with connect(console_ws(page.group(0)), origin=console_origin(page.group(0))) as ws:
+                with connect(console_ws(page.group(0)), origin=console_origin(page.group(0)), max_queue=None) as ws:
                     assert json.loads(ws.recv(timeout=30))["type"] == "hello"
                     ws.send(json.dumps({"id": 1, "kind": "input", "name": "set_velocity",
                                         "values": {"linear": "0.2", "angular": "0"}}))

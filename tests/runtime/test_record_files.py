@@ -10,7 +10,7 @@ import sys
 from pathlib import Path
 
 import pytest
-from conftest import REPO, cli_env, run_rdisc, run_rdisc_here
+from conftest import REPO, cli_env, run_command_here, run_rdisc
 from mcap.reader import make_reader
 from runtime_support import CREATE, EXAMPLES
 
@@ -34,10 +34,10 @@ def surface(kind: str, tmp_path: Path) -> tuple[list[str], str, Path | None]:
 
 
 def start(command: list[str], *more: str | Path) -> subprocess.CompletedProcess[str]:
-    """The command with `more`: `rdisc run` and `rdisc sim` in this process (they refuse before they
-    open anything), the console (which would serve) and a driver in a process of their own."""
-    if command[1:3] == ["-m", "rdisc"] and command[3] in ("run", "sim"):
-        return run_rdisc_here(*command[3:], *more)
+    """The command with `more`: `rdisc run`, `rdisc sim` and a driver in this process (they refuse
+    before they open anything), the console (which would serve) in a process of its own."""
+    if command[1:3] != ["-m", "rdisc"] or command[3] in ("run", "sim"):
+        return run_command_here([*command, *more])
     return subprocess.run([*command, *map(str, more)], env=cli_env(), capture_output=True, text=True,
                           check=False, timeout=120)
 
