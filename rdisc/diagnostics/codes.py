@@ -272,10 +272,14 @@ a count, outside groups) may be split into two bit fields or more, from its lowe
 up, whose widths add up to its bits: `B{1,1,6}`, one value each; `Ns{...}` splits
 the integer N bytes hold in the format's byte order (`<` or `>`), into one field or
 more of 1 to 64 bits (`<22s{11*16}`: sixteen fields of 11 bits; `>3s{24}`: a 3-byte
-integer). Wrong: `unpack "<B#(BH)"` (no count field), `unpack "<*(BH)B"` (not last),
-`unpack "<B{1,6}"` (7 of 8 bits), `pack "<h{8,8}"` (signed), `pack "22s{11*16}"` (no
-byte order). Right: `unpack "<#B#(BH)B"`, `unpack "<B*(BH)"`, `unpack
-"<B{1,1,6}H{1,15}H"`, `pack "<B22s{11*16}BB"`."""),
+integer). In a request's groups, `%` is an unsigned integer of as many bytes (1 to 8)
+as one width field `%B` (or `%H`, ...) before the groups states, in the format's
+byte order (`<` or `>`): Dynamixel's sync write of N bytes a servo is `pack
+"<BH%H*(B%)"`; a reply reads such bytes as a `*` rest. Wrong: `unpack "<B#(BH)"` (no
+count field), `unpack "<*(BH)B"` (not last), `unpack "<B{1,6}"` (7 of 8 bits), `pack
+"<h{8,8}"` (signed), `pack "22s{11*16}"` (no byte order), `pack "<B*(B%)"` (no width
+field). Right: `unpack "<#B#(BH)B"`, `unpack "<B*(BH)"`, `unpack "<B{1,1,6}H{1,15}H"`,
+`pack "<B22s{11*16}BB"`, `pack "<BH%H*(B%)"`."""),
     ("E302", "format-argument-count", """
 The number of format arguments differs from the number of values the `pack` or
 `format` string takes. `pack ">Bhh"` takes three values; `format "D,{},{}"` two."""),

@@ -132,6 +132,8 @@ def _kind(layout: m.StructLayout, code: str, size: int) -> str:
         return "bytes (the rest)"
     if code.endswith("Z"):
         return "text, padded"
+    if code == "%":  # as many bytes as the width field states
+        return "uint, width" + {">": " BE", "!": " BE", "<": " LE"}[layout.order]
     kind = f"u{8 * size}" if code == "s{" else _KINDS.get(code[-1], "text")  # `s{`: bytes split into bits
     if size == 1 or kind == "text":
         return kind
@@ -157,8 +159,9 @@ def _integer_kind(layout: m.StructLayout) -> str:
 
 
 def _slot_size(slot: m.Slot) -> int | None:
-    """Bytes of one value of a slot; None for `*`, the rest of the message."""
-    return None if slot.code == "*" else slot.size
+    """Bytes of one value of a slot; None for `*`, the rest of the message, and `%`, as many as
+    the width field states."""
+    return None if slot.code in ("*", "%") else slot.size
 
 
 def _payload_rows(encoding: m.Pack | m.Format, args: tuple[m.Expr, ...]) -> list[Row]:
@@ -212,7 +215,7 @@ def _rows(layout: m.StructLayout, text: Callable[[int, int | None], str],
         if at in groups:
             codes, count = groups[at]
             for element in range(count):
-                rows += [(slots[j].size, _kind(layout, slots[j].code, slots[j].size), text(j, element))
+                rows += [(_slot_size(slots[j]), _kind(layout, slots[j].code, slots[j].size), text(j, element))
                          for j in range(at, at + codes)]
             at += codes
             continue

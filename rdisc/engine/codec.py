@@ -106,15 +106,19 @@ class Pack:
     the last value, bytes, appended as it is. With `varying`, `fixed` is the format before
     that group, repeated as many times as its arrays hold values, and its count field
     computed. The fields of each integer split into `bits` are joined into it first; the
-    other indexes count it as one value."""
+    other indexes count it as one value. With `width`, the index of a width field (`%H`) and of
+    the groups' arrays of `%` codes: each of their ints is packed unsigned in as many bytes as
+    the width field's value, 1 to 8 (a Dynamixel sync write of N bytes a servo)."""
 
-    __slots__ = ("bits", "groups", "rest", "sizes", "splitters", "strings", "struct", "varying")
+    __slots__ = ("bits", "fixed", "groups", "rest", "sizes", "splitters", "strings", "struct", "varying", "width")
 
     def __init__(self, fixed: str, strings: tuple[int, ...] = (), rest: bool = False,
                  groups: tuple[Group, ...] = (), varying: Varying | None = None, bits: tuple[Split, ...] = (),
-                 rooms: tuple[tuple[int, int], ...] = ()) -> None:
+                 rooms: tuple[tuple[int, int], ...] = (), width: tuple[int, tuple[int, ...]] | None = None) -> None:
         """`rooms`: each `Ns` or `Np` value's index among the values, and the most bytes it holds."""
-        self.struct = struct.Struct(fixed)
+        self.fixed = fixed
+        self.struct = struct.Struct(fixed.replace("%", "Q"))  # a `%` code at its widest
+        self.width = width
         self.strings = strings
         self.rest = rest
         self.sizes = dict(rooms)
@@ -129,20 +133,24 @@ class Pack:
                 values = _joined(values, self.splitters)
             except (ValueError, TypeError) as err:  # a value too wide for its bits
                 raise RdisValueError(f"{owner}: {err}") from None
+        layout, code = self.struct, ""
+        if self.width is not None:
+            values, code = self._widths(owner, values, self.width)
+            layout = struct.Struct(self.fixed.replace("%", code))
         try:
             if self.varying is not None:
-                return self._varying(owner, values, self.varying)
+                return self._varying(owner, values, self.varying, code)
             if self.groups:
                 values = _interleaved(owner, values, self.groups)
             if not self.strings and not self.rest:
-                return self.struct.pack(*values)
+                return layout.pack(*values)
             packed = list(values[:-1] if self.rest else values)
             for i in self.strings:
                 packed[i] = data = _latin1(owner, packed[i])
                 if len(data) > self.sizes.get(i, len(data)):
                     raise RdisValueError(f"{owner}: {len(data)} bytes of text do not fit the {self.sizes[i]} "
                                          f"that value {i} is packed in")
-            fixed = self.struct.pack(*packed)
+            fixed = layout.pack(*packed)
         except (struct.error, OverflowError) as err:  # OverflowError: a float too large for `e` or `f`
             raise RdisValueError(f"{owner}: {err}") from None
         if self.rest:
@@ -151,7 +159,26 @@ class Pack:
             return fixed + tail
         return fixed
 
-    def _varying(self, owner: str, values: Sequence[Value], varying: Varying) -> bytes:
+    def _widths(self, owner: str, values: Sequence[Value], width: tuple[int, tuple[int, ...]]) -> tuple[list[Any], str]:
+        """The values with each `%` code's ints as the bytes the width field states, and the
+        struct code (`4s`) that writes them."""
+        width_at, sized = width
+        bytes_each = values[width_at]
+        assert isinstance(bytes_each, int)
+        if not 1 <= bytes_each <= 8:
+            raise RdisValueError(f"{owner}: a width field states 1 to 8 bytes, not {bytes_each}")
+        order = "big" if self.fixed[:1] in ">!" else "little"
+        out: list[Any] = list(values)
+        for i in sized:
+            array: Sequence[Any] = out[i]
+            for number in array:
+                if not 0 <= number < 1 << 8 * bytes_each:
+                    raise RdisValueError(f"{owner}: {number} is not an unsigned integer of {bytes_each} bytes "
+                                         f"(value {i}, sized by value {width_at})")
+            out[i] = [number.to_bytes(bytes_each, order) for number in array]
+        return out, f"{bytes_each}s"
+
+    def _varying(self, owner: str, values: Sequence[Value], varying: Varying, code: str = "") -> bytes:
         """The arrays of the varying group, all of one length, give its rounds and its count."""
         unit, tail, count_at = varying
         first, codes = next((first, codes) for first, codes, count in self.groups if not count)
@@ -166,7 +193,9 @@ class Pack:
         if count_at >= 0:
             flat.insert(count_at, rounds)
         try:
-            return struct.pack(self.struct.format + unit * rounds + tail, *flat)
+            layout = (self.fixed + unit * rounds + tail).replace("%", code) if code else \
+                self.struct.format + unit * rounds + tail
+            return struct.pack(layout, *flat)
         except struct.error as err:  # a value out of its code's range, the count field's among them
             raise RdisValueError(f"{owner}: {err} ({rounds} groups)") from None
 

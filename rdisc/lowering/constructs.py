@@ -199,15 +199,17 @@ def _struct_codec(kind: type[T], layout: m.StructLayout, until: bytes | None = N
     (with a group repeated as the message says, the format before it), the indexes of its
     strings and its groups among the struct module's values (an integer split into bit fields
     one value), whether it ends in the rest, that group, the integers split into bits; a
-    request's, the most bytes each `Ns` and `Np` holds; a reply's, the sizes of that group's
+    request's, the most bytes each `Ns` and `Np` holds and its width field with the `%` codes it sizes; a reply's, the sizes of that group's
     round and of what follows it."""
     v = layout.varying
     fixed, varying = (layout.fixed, None) if v is None else (v.head, (v.unit, v.tail, v.count_at))
     strings = tuple(layout.joined(i) for i, slot in enumerate(layout.slots) if slot.type is m.Type.STRING)
     groups = tuple((layout.joined(first), codes, count) for first, codes, count in layout.groups)
     if kind is engine.Pack:
+        widths = tuple(layout.joined(i) for i, slot in enumerate(layout.slots) if slot.code == "%")
         return _call(kind, fixed, strings=strings, rest=layout.rest, groups=groups, varying=varying,
-                     bits=layout.bits, rooms=layout.rooms)
+                     bits=layout.bits, rooms=layout.rooms,
+                     width=None if layout.width < 0 else (layout.joined(layout.width), widths))
     padded = tuple(layout.joined(i) for i, slot in enumerate(layout.slots) if slot.code.endswith("Z"))
     return _call(kind, fixed, strings=strings, rest=layout.rest, groups=groups, varying=varying, bits=layout.bits,
                  until=until, varying_sizes=None if v is None else (v.unit_size, v.tail_size), padded=padded)

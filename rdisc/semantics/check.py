@@ -1548,11 +1548,26 @@ class _Checker:
                 self.group_value(arg, expr, slot)
             else:
                 self.pack_value(self.typer.folded(arg), expr, slot)
+        if layout is not None and layout.width >= 0:
+            self.widths_fit(layout, values, exprs)
         if layout is not None and layout.varying is not None:
             self.rounds_fit(layout, [(args[i], enc.args[i]) for i in formats.varying_args(layout, tuple(grouped))])
         if layout is not None:
             return m.Pack(template, layout, tuple(grouped)), args
         return m.Format(template), args
+
+    def widths_fit(self, layout: formats.StructLayout, values: list[m.Expr], exprs: list[ast.Expr]) -> None:
+        """A constant given to a `%` code fits the bytes a constant width field states (the run
+        refuses one that does not, where either is known only then)."""
+        width = self.typer.constant(values[layout.width])
+        if not isinstance(width, int) or isinstance(width, bool) or not 1 <= width <= formats.MOST_WIDTH:
+            return
+        sized = replace(layout.slots[layout.width], code="%", low=0, high=(1 << 8 * width) - 1)
+        for value, expr, slot in zip(values, exprs, layout.slots):
+            constant = self.typer.constant(value) if slot.code == "%" else None
+            for item in constant if isinstance(constant, tuple) else ():
+                self.fits(item, sized, expr.span, "", f"the width field `{layout.slots[layout.width].code}` states "
+                          f"{width} bytes: 0 to {sized.high}")
 
     def rounds_fit(self, layout: formats.StructLayout, arrays: list[tuple[m.Expr, ast.Expr]]) -> None:
         """The arrays of a group repeated as the message says: of one size where their sizes are
@@ -1623,6 +1638,9 @@ class _Checker:
         try:
             if dec.kind == "unpack":
                 layout = formats.struct_layout(template)
+                if layout.width >= 0:
+                    raise formats.TemplateError("a width field `%H` and its `%` codes are for requests (`pack`): "
+                                                "a reply's are read as `*` bytes", template.index("%"))
                 if layout.native:
                     self.native_warning(dec.template)
                 types = tuple(m.Array(s.type, max(s.repeat, 0)) if s.repeat else s.type for s in layout.slots)

@@ -26,9 +26,9 @@ if TYPE_CHECKING:
 else:  # the same classes, their methods written out ahead of time: rdisc/frozen.py
     from rdisc.semantics.formats_methods import dataclass
 
-__all__ = ["MAX_MESSAGE", "MAX_REPEAT", "FormatField", "Slot", "StructLayout", "TemplateError", "Varying",
+__all__ = ["MAX_MESSAGE", "MAX_REPEAT", "MOST_WIDTH", "FormatField", "Slot", "StructLayout", "TemplateError", "Varying",
            "bit_span", "format_fields", "format_width", "most_rounds", "regex_groups", "regex_min_length", "spec_accepts",
-           "split_rest", "struct_layout", "text_room", "varying_args"]
+           "split_rest", "struct_layout", "text_room", "varying_args", "widest"]
 
 MAX_REPEAT = 4096
 MAX_MESSAGE = 65536  # bytes of one request or reply
@@ -54,6 +54,14 @@ _STRUCT_ITEM = re.compile(r"\s*(\d*)\s*([a-zA-Z?])")
 _GROUP = re.compile(r"\s*(\d+|#|\*)\s*\(([^()]*)\)")  # `6(BH)`: a repeated group; `#(BH)`, `*(BH)`: as the message says
 _COUNT = re.compile(r"\s*#\s*([a-zA-Z?]?)")  # `#B`: the count field of the `#(...)` group
 _SPLIT = re.compile(r"\s*\{([^{}]*)\}")  # `B{1,1,6}`: the integer before it split into bit fields
+_WIDTH = re.compile(r"\s*%\s*([a-zA-Z?]?)")  # `%H`: the width field of the `%` codes of its groups
+MOST_WIDTH = 8  # bytes of the widest `%` code: an int holds 64 bits
+
+
+def widest(fmt: str) -> str:
+    """A struct format with each `%` code (an unsigned integer of the width its width field
+    states) at its widest, `Q`: the most bytes the message takes."""
+    return fmt.replace("%", "Q")
 
 
 @lru_cache(maxsize=4096)  # a layout is immutable, and a generated description repeats its formats
@@ -79,6 +87,7 @@ def struct_layout(fmt: str) -> StructLayout:
     count: tuple[int, str, int, int] | None = None  # the count field `#B`: its value's index, code, offset, slot
     splits: list[tuple[int, str, tuple[int, ...]]] = []  # `StructLayout.bits`
     varying: tuple[int, str, int] | None = None  # the varying group: its place in `written`, its codes, its offset
+    sizer: tuple[int, int] | None = None  # the width field `%H`: its slot, its offset
     pos = 0
     while pos < len(body):
         if body[pos].isspace():
@@ -88,6 +97,9 @@ def struct_layout(fmt: str) -> StructLayout:
         group = _GROUP.match(body, pos)
         if group is not None:
             codes = _group(group, len(order), slots, groups)
+            if "%" in codes and sizer is None:
+                raise TemplateError("a `%` code is an unsigned integer of as many bytes as a width field before it "
+                                    "states: `<%H 6(B%)`", offset + group.group().index("%"))
             kind = group.group(1)
             if kind in "#*":
                 if varying is not None:
@@ -112,6 +124,28 @@ def struct_layout(fmt: str) -> StructLayout:
                 written.append(codes * groups[-1][2])
                 wire += len(codes) * groups[-1][2]
             pos = group.end()
+            continue
+        width_field = _WIDTH.match(body, pos)
+        if width_field is not None:
+            code = width_field.group(1)
+            if not code:
+                raise TemplateError("a `%` code is in a repeated group, as wide as a width field before it says: "
+                                    "`<%H 6(B%)`", offset)
+            if code not in "BHILQ":
+                raise TemplateError("a width field is `%` and an unsigned integer code: `%B`, `%H`, `%I`, `%L` or "
+                                    "`%Q`", offset, len(width_field.group().strip()))
+            if sizer is not None:
+                raise TemplateError("a message has one width field `%H`, for its `%` codes", offset, 2)
+            if groups:
+                raise TemplateError("a width field `%H` comes before the groups whose `%` codes it sizes", offset, 2)
+            if order not in ("<", ">", "!"):
+                raise TemplateError("a width field `%H` needs a byte order (`<` or `>`): its `%` codes are integers "
+                                    "in it", offset, 2)
+            sizer = (len(slots), offset)
+            slots.append(Slot(f"%{code}", Type.INT, 1, MOST_WIDTH))
+            written.append(code)
+            wire += 1
+            pos = width_field.end()
             continue
         counted = _COUNT.match(body, pos)
         if counted is not None:
@@ -180,11 +214,14 @@ def struct_layout(fmt: str) -> StructLayout:
         pos = m.end()
     if count is not None and varying is None:
         raise TemplateError("a count field `#B` counts a `#(...)` group after it, and there is none", count[2], 2)
+    if sizer is not None and not any(slot.code == "%" for slot in slots):
+        raise TemplateError("a width field `%H` states the bytes of the `%` codes in the groups after it, and there "
+                            "is none", sizer[1], 2)
     if groups and any(s.type is Type.STRING for s in slots):
         raise TemplateError("a format with a repeated group holds numbers and bools only", 0, len(fmt))
     fixed = order + "".join(written)
     try:
-        size = struct.calcsize(fixed)
+        size = struct.calcsize(widest(fixed))
     except struct.error as err:
         raise TemplateError(f"invalid struct format: {err}", 0, len(fmt)) from None
     if size > MAX_MESSAGE:
@@ -199,10 +236,11 @@ def struct_layout(fmt: str) -> StructLayout:
         tail = "".join(written[at:])
         count_at, count_code, count_slot = (-1, "", -1) if count is None else (count[0], count[1], count[3])
         shape = Varying(order + "".join(written[:at]), codes, tail, count_at, high, count_code, count_slot,
-                        unit_size=struct.calcsize(order + codes), tail_size=struct.calcsize(order + tail),
+                        unit_size=struct.calcsize(widest(order + codes)), tail_size=struct.calcsize(order + tail),
                         count_size=struct.calcsize(order + count_code) if count_code else 0)
     sized = tuple(replace(slot, size=_code_size(order, slot.code)) for slot in slots)
-    layout = StructLayout(sized, size, native, rest, fixed, tuple(groups), shape, tuple(splits), order)
+    layout = StructLayout(sized, size, native, rest, fixed, tuple(groups), shape, tuple(splits), order,
+                          width=-1 if sizer is None else sizer[0])
     rooms = tuple((layout.joined(i), text_room(slot.code)) for i, slot in enumerate(sized)
                   if slot.code[-1:] in ("s", "p", "Z"))
     return replace(layout, rooms=rooms)
@@ -211,7 +249,9 @@ def struct_layout(fmt: str) -> StructLayout:
 def _code_size(order: str, code: str) -> int:
     """Bytes of one value of a slot's code (a bit field's: its integer's), in the format's byte order."""
     code = code.split("{")[0]
-    return 0 if code == "*" else struct.calcsize(order + (code[:-1] + "s" if code.endswith("Z") else code))
+    code = code.lstrip("%")  # a width field's code; a `%` code at its widest
+    return 0 if code == "*" else MOST_WIDTH if code == "" else \
+        struct.calcsize(order + (code[:-1] + "s" if code.endswith("Z") else code))
 
 
 def text_room(code: str) -> int:
@@ -276,6 +316,9 @@ def _group(group: re.Match[str], at: int, slots: list[Slot], groups: list[tuple[
     for i, ch in codes:
         if ch in "{}":
             raise TemplateError("a repeated group holds no bit fields", offset + i)
+        if ch == "%":  # an unsigned integer of the bytes the width field states
+            slots.append(Slot("%", Type.INT, 0, (1 << 8 * MOST_WIDTH) - 1, repeat=-1 if varying else count))
+            continue
         inner_layout = struct_layout("<" + ch) if ch.isascii() and ch.isalpha() or ch == "?" else None
         if inner_layout is None or len(inner_layout.slots) != 1 or inner_layout.slots[0].type is Type.STRING:
             raise TemplateError(f"`{ch}` cannot be repeated in a group: a group holds int, float and bool codes, "

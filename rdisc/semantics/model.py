@@ -411,6 +411,8 @@ class StructLayout:
     order: str = ""  # the byte-order prefix as written (`<`, `>`, `!`, `=`, `@`), "" when none
     rooms: tuple[tuple[int, int], ...] = ()  # each `Ns` or `Np` value: its index among the struct module's
     # values, the most bytes of text it holds
+    width: int = -1  # the slot of the width field `%H` that states the bytes of its groups' `%` codes (-1: none);
+    # `size` counts each `%` code at its widest, 8 bytes
 
     @property
     def codes(self) -> str:
@@ -425,7 +427,7 @@ class StructLayout:
     @property
     def open_end(self) -> bool:
         """Whether the message's size is not the format's: something must say where it ends."""
-        return self.rest or self.varying is not None
+        return self.rest or self.varying is not None or self.width >= 0
 
     def most(self, count: int) -> int:
         """The size of the message with `count` rounds of its varying group (its size without one)."""

@@ -809,6 +809,7 @@ def _init_StructLayout(
     bits: Any = DEFAULT,
     order: Any = DEFAULT,
     rooms: Any = DEFAULT,
+    width: Any = DEFAULT,
 ) -> None:
     _set(self, "slots", slots)
     _set(self, "size", size)
@@ -820,10 +821,11 @@ def _init_StructLayout(
     _set(self, "bits", bits)
     _set(self, "order", order)
     _set(self, "rooms", rooms)
+    _set(self, "width", width)
 
 
 def _repr_StructLayout(self: Any) -> str:
-    return f"{self.__class__.__qualname__}(slots={self.slots!r}, size={self.size!r}, native={self.native!r}, rest={self.rest!r}, fixed={self.fixed!r}, groups={self.groups!r}, varying={self.varying!r}, bits={self.bits!r}, order={self.order!r}, rooms={self.rooms!r})"
+    return f"{self.__class__.__qualname__}(slots={self.slots!r}, size={self.size!r}, native={self.native!r}, rest={self.rest!r}, fixed={self.fixed!r}, groups={self.groups!r}, varying={self.varying!r}, bits={self.bits!r}, order={self.order!r}, rooms={self.rooms!r}, width={self.width!r})"
 
 
 def _eq_StructLayout(self: Any, other: Any) -> Any:
@@ -839,6 +841,7 @@ def _eq_StructLayout(self: Any, other: Any) -> Any:
             self.bits,
             self.order,
             self.rooms,
+            self.width,
         ) == (
             other.slots,
             other.size,
@@ -850,6 +853,7 @@ def _eq_StructLayout(self: Any, other: Any) -> Any:
             other.bits,
             other.order,
             other.rooms,
+            other.width,
         )
     return NotImplemented
 
@@ -866,6 +870,7 @@ def _hash_StructLayout(self: Any) -> int:
         self.bits,
         self.order,
         self.rooms,
+        self.width,
     ))
 
 
@@ -2717,6 +2722,7 @@ WRITTEN: dict[str, Written] = {
             ("bits", DEFAULT),
             ("order", DEFAULT),
             ("rooms", DEFAULT),
+            ("width", DEFAULT),
         ),
         {
             "__init__": _init_StructLayout,
