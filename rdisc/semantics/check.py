@@ -702,7 +702,7 @@ class _Checker:
             if value is not None and value not in STOP_BITS:
                 self.d.report("E215", stop.value.span, f"a character ends with 1, 1.5 or 2 stop bits, not {value:g}")
             elif value is not None:
-                stop_bits = float(value)
+                stop_bits = value  # 2 stays an int: the driver says `stop_bits=2`
         if stop_bits == 1.5 and data_bits != 5:
             assert isinstance(stop, ast.StopBits)  # 1.5 is only ever stated
             self.d.report("E215", stop.value.span, f"1.5 stop bits go with 5 data bits, not {data_bits}",

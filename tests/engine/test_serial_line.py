@@ -104,6 +104,10 @@ def test_the_port_opens_with_the_stated_line(kind: str, text: str, settings: tup
         assert _character(termios.tcgetattr(slave)[2])[3] == character[3]  # the pty keeps the stop bits
         robot.primitives.send(0x0F)
         assert os.read(master, 16) == b"\x0f"
+    if kind == "driver" and text == SBUS:
+        driver = Path(implementation.__file__).read_text(encoding="utf-8")
+        assert "  connection rc: serial, 100000 baud, 8E2\n" in driver
+        assert '_C_RC = Connection("rc", 100000, frequency=10.0, parity="even", stop_bits=2)\n' in driver
 
 
 def diagnostics_of(tmp_path: Path, text: str) -> list[tuple[str, str]]:
@@ -136,7 +140,7 @@ primitive p() on a pack "B" (1)
 def test_the_rates_of_radio_control_buses_are_standard(tmp_path: Path) -> None:
     assert diagnostics_of(tmp_path, """\
 robot rc { author "tests" }
-connection sbus: serial { baud 100000  parity even  stopbits 2 }
+connection sbus: serial { baud 100000 }
 connection crsf: serial { baud 420000 }
 connection odd: serial { baud 100001 }
 """) == [("W201", "100001 is not a standard baud rate")]
