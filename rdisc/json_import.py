@@ -331,7 +331,8 @@ _SECTIONS = {  # list member: (its elements in words, the RDIS keyword declaring
 _STATE = ("name", "type", "value", "doc")
 _SETTING = ("name", "type", "range", "value", "doc")
 _CONNECTION = (
-    "name", "baud", "singleThreading", "startup", "terminate", "keepalive", "terminator", "address", "doc",
+    "name", "baud", "dataBits", "parity", "stopBits", "singleThreading", "startup", "terminate", "keepalive",
+    "terminator", "address", "doc",
 )  # fmt: skip
 _PRIMITIVE = (
     "name", "parameters", "parameterTypes", "parameterRanges", "parameterDefaults", "parameterUnits", "connection",
@@ -846,6 +847,15 @@ class _Importer:
         brace = self.opening(obj)
         baud = ast.IntLit(DEFAULT_BAUD, brace) if "baud" not in m else self.expr(m["baud"], "int")
         attrs: list[ast.ConnectionAttr | None] = [None if baud is None else ast.Baud(baud, baud.span)]
+        if "dataBits" in m:
+            bits = self.expr(m["dataBits"], "int")
+            attrs.append(None if bits is None else ast.DataBits(bits, bits.span))
+        if "parity" in m:
+            parity = self.ident(m["parity"], "`parity`")
+            attrs.append(None if parity is None else ast.Parity(parity, parity.span))
+        if "stopBits" in m:
+            bits = self.expr(m["stopBits"], "float")
+            attrs.append(None if bits is None else ast.StopBits(bits, bits.span))
         threading = self.object(m.get("singleThreading"), "`singleThreading`")
         if threading is None:
             attrs.append(

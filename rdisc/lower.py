@@ -364,6 +364,9 @@ class Connection:
     keepalive: Hook | None = None
     interval: float = 0.0
     baud_setting: str | None = None
+    data_bits: int = 8
+    parity: str = "none"
+    stop_bits: float = 1
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -582,6 +585,7 @@ class _Lowering:
             periodic=periodic, startup=hook(c.startup), terminate=hook(c.terminate),
             keepalive=hook(keepalive.call if keepalive else None),
             interval=keepalive.interval_ms / 1000.0 if keepalive else 0.0, baud_setting=c.baud_setting,
+            data_bits=c.data_bits, parity=c.parity, stop_bits=c.stop_bits,
         )
 
 

@@ -258,6 +258,18 @@ use. Only an int parameter (or an int array, each element) has such a range. Wro
 `count: int, channel: int in 0..count - 1` (`count` has no range), `channel: int in
 0..count * 2` (another operator), `data: bytes in 0..count`. Right: `count: int in
 1..8, channel: int in 0..count - 1`."""),
+    ("E215", "serial-line", """
+A serial connection's character is 8 data bits, no parity and 1 stop bit (8N1) unless
+its declaration says otherwise: `databits 5` to `8`, `parity none`, `even`, `odd`,
+`mark` or `space`, `stopbits 1`, `1.5` or `2`, each a constant and each given once (E203 for a repeat).
+The port opens with them (pyserial's `bytesize`, `parity` and `stopbits`), and the link
+budget counts each byte's bits with them (a start bit, the data bits, a parity bit,
+the stop bits). A UART sends 1.5 stop bits only after 5 data bits. A `tcp` connection
+carries bytes alone, with no serial line to set. Wrong: `connection bus: serial {
+parity evn }`, `stopbits 3`, `databits 9`, `databits 8 stopbits 1.5`, or
+`connection net: tcp { address "socket://10.0.0.2:502" parity even }`. Right: S.BUS's
+`connection sbus: serial { baud 100000 parity even stopbits 2 }`, or Modbus RTU's
+`connection bus: serial { baud 19200 parity even }`."""),
     # -- message formats -------------------------------------------------------
     ("E301", "invalid-pack-format", """
 `pack` and `unpack` take Python struct format strings: an optional byte order
@@ -598,8 +610,9 @@ arguments are constants (`frame mav2(23, 22)`), so the field's value is known; a
 value given at run time is checked then. Wrong: `const EXTRAS = { 20: 214 }` with
 `frame mav2(23, 22)`. Right: `const EXTRAS = { 20: 214, 22: 220, 23: 168 }`."""),
     ("W201", "nonstandard-baud", """
-The baud rate is not one of the standard rates (300 ... 4000000). Some serial
-adapters round a non-standard rate or refuse it."""),
+The baud rate is not one of the standard rates (50 ... 4000000, and the rates of
+radio-control buses: S.BUS's 100000, CRSF's 420000). Some serial adapters round a
+non-standard rate or refuse it."""),
     ("W301", "native-byte-order", """
 The struct format has no byte-order prefix, so it uses the host's native byte
 order and alignment (padding between fields). Devices have a fixed order: write
@@ -613,7 +626,8 @@ parameter: `"<velocity * 1000>"` into `drive(velocity: int, ...)` is imported as
 `round(...)` instead where the device wants the nearest integer."""),
     ("W401", "link-budget", """
 The traffic this connection schedules (periodic interfaces every tick, keepalive
-every interval; 10 bits a byte at 8N1) needs more bytes per second than the baud
+every interval; 10 bits a byte at 8N1, 12 at 8E2: a start bit and the connection's
+serial line) needs more bytes per second than the baud
 rate carries. `rdisc check --verbose` prints each connection's budget."""),
     ("W402", "period-too-short", """
 A schedule's period is shorter than the exchange it runs: the bytes on the wire

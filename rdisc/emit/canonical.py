@@ -121,6 +121,9 @@ def _connection(c: m.Connection) -> JsonObject:
     return _object(
         ("name", c.name),
         ("baud", c.baud if c.baud_setting is None else f"<{c.baud_setting}>"),
+        ("dataBits", None if c.data_bits == 8 else c.data_bits),
+        ("parity", None if c.parity == "none" else c.parity),
+        ("stopBits", None if c.stop_bits == 1 else _number(c.stop_bits)),
         ("singleThreading", {"freqHz": _number(c.frequency_hz)}),
         ("startup", _hook(c.startup)),
         ("terminate", _hook(c.terminate)),

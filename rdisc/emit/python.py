@@ -381,7 +381,8 @@ class _Driver:
         for c in model.connections.values():
             w.blank(2)
             baud = f"{c.baud} baud" if c.baud_setting is None else f"baud {c.baud_setting} ({c.baud} unless given)"
-            self.comment(w, c.span, f"connection {c.name}: {c.kind}, {baud}")
+            line = "" if c.line_text() == "8N1" else f", {c.line_text()}"
+            self.comment(w, c.span, f"connection {c.name}: {c.kind}, {baud}{line}")
             self.constant(w, self.plan["connection", c.name], device.connections[c.name])
         w.blank(2)
         named = {"name": "ROBOT"}

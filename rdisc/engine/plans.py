@@ -474,6 +474,9 @@ class Connection:
     keepalive: Hook | None = None
     interval: float = 0.0  # seconds between keepalives
     baud_setting: str | None = None  # the setting that gives the baud rate (`baud` is its default)
+    data_bits: int = 8  # the serial line's character: 8N1 unless the description says otherwise
+    parity: str = "none"  # none, even, odd, mark or space
+    stop_bits: float = 1  # 1, 1.5 or 2
 
 
 @dataclass(frozen=True, slots=True)

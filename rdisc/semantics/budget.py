@@ -1,6 +1,6 @@
 """The link budget: can each connection carry what the description schedules on it?
 
-From the baud rate (10 bits a byte at 8N1), each primitive's bytes on the wire
+From the baud rate (10 bits a byte at 8N1, 12 at 8E2: the connection's serial line), each primitive's bytes on the wire
 (request and reply), the periodic interfaces run every tick, the keepalive run
 every interval and the declared delays, warn when the scheduled traffic exceeds
 the link (W401) or a schedule's period is shorter than its exchange (W402).
@@ -21,7 +21,6 @@ if TYPE_CHECKING:
 else:  # the same classes, their methods written out ahead of time: rdisc/frozen.py
     from rdisc.semantics.budget_methods import dataclass
 
-BITS_PER_BYTE = 10  # 8N1: start bit, 8 data bits, stop bit
 _SAMPLE: dict[m.AnyType, m.Value] = {m.Type.INT: 0, m.Type.FLOAT: 0.0, m.Type.BOOL: False, m.Type.STRING: ""}
 
 
@@ -48,6 +47,7 @@ class ConnectionBudget:
     keepalive: Exchange | None
     keepalive_interval_ms: float | None
     baud_setting: str | None = None  # the setting giving the baud rate: `baud` is its default
+    bits_per_byte: float = 10  # on the wire, a start bit and the serial line's character
 
     @property
     def baud_text(self) -> str:
@@ -57,7 +57,7 @@ class ConnectionBudget:
     @property
     def capacity(self) -> float:
         """Bytes per second the link carries."""
-        return self.baud / BITS_PER_BYTE
+        return self.baud / self.bits_per_byte
 
     @property
     def tick_ms(self) -> float:
@@ -106,7 +106,8 @@ def budget(model: m.Model, diagnostics: Diagnostics) -> list[ConnectionBudget]:
         )
         keepalive = exchange(model, model.interfaces[conn.keepalive.call.interface], conn.name) if conn.keepalive else None
         b = ConnectionBudget(conn.name, conn.baud, conn.frequency_hz, periodic, keepalive,
-                             conn.keepalive.interval_ms if conn.keepalive else None, conn.baud_setting)
+                             conn.keepalive.interval_ms if conn.keepalive else None, conn.baud_setting,
+                             conn.bits_per_byte())
         _warn(model, conn, b, diagnostics)
         budgets.append(b)
     return budgets
@@ -151,11 +152,11 @@ def exchange(model: m.Model, iface: m.Interface, connection: str) -> Exchange:
                 else:
                     prim = model.primitives[call.primitive]
                     size = message_bytes(prim, model.frames)
-                    baud = model.connections[prim.connection].baud
+                    line = model.connections[prim.connection]
                     held = sum(level.value.value for level in prim.lines  # a break: time, no byte (ms)
                                if level.line == m.BREAK and isinstance(level.value, m.Const)
                                and isinstance(level.value.value, float))
-                    inner = (size if prim.connection == connection else 0, size * BITS_PER_BYTE * 1000.0 / baud, held)
+                    inner = (size if prim.connection == connection else 0, size * line.bits_per_byte() * 1000.0 / line.baud, held)
                 count, wire, delays = count + inner[0], wire + inner[1], delays + inner[2] + call.delay_ms
             costs[called.name] = (count, wire, delays)
         return costs[called.name]

@@ -55,6 +55,7 @@ def _init_ConnectionBudget(
     keepalive: Any,
     keepalive_interval_ms: Any,
     baud_setting: Any = DEFAULT,
+    bits_per_byte: Any = DEFAULT,
 ) -> None:
     _set(self, "connection", connection)
     _set(self, "baud", baud)
@@ -63,10 +64,11 @@ def _init_ConnectionBudget(
     _set(self, "keepalive", keepalive)
     _set(self, "keepalive_interval_ms", keepalive_interval_ms)
     _set(self, "baud_setting", baud_setting)
+    _set(self, "bits_per_byte", bits_per_byte)
 
 
 def _repr_ConnectionBudget(self: Any) -> str:
-    return f"{self.__class__.__qualname__}(connection={self.connection!r}, baud={self.baud!r}, frequency_hz={self.frequency_hz!r}, periodic={self.periodic!r}, keepalive={self.keepalive!r}, keepalive_interval_ms={self.keepalive_interval_ms!r}, baud_setting={self.baud_setting!r})"
+    return f"{self.__class__.__qualname__}(connection={self.connection!r}, baud={self.baud!r}, frequency_hz={self.frequency_hz!r}, periodic={self.periodic!r}, keepalive={self.keepalive!r}, keepalive_interval_ms={self.keepalive_interval_ms!r}, baud_setting={self.baud_setting!r}, bits_per_byte={self.bits_per_byte!r})"
 
 
 def _eq_ConnectionBudget(self: Any, other: Any) -> Any:
@@ -79,6 +81,7 @@ def _eq_ConnectionBudget(self: Any, other: Any) -> Any:
             self.keepalive,
             self.keepalive_interval_ms,
             self.baud_setting,
+            self.bits_per_byte,
         ) == (
             other.connection,
             other.baud,
@@ -87,6 +90,7 @@ def _eq_ConnectionBudget(self: Any, other: Any) -> Any:
             other.keepalive,
             other.keepalive_interval_ms,
             other.baud_setting,
+            other.bits_per_byte,
         )
     return NotImplemented
 
@@ -100,6 +104,7 @@ def _hash_ConnectionBudget(self: Any) -> int:
         self.keepalive,
         self.keepalive_interval_ms,
         self.baud_setting,
+        self.bits_per_byte,
     ))
 
 
@@ -122,6 +127,7 @@ WRITTEN: dict[str, Written] = {
             ("keepalive", MISSING),
             ("keepalive_interval_ms", MISSING),
             ("baud_setting", DEFAULT),
+            ("bits_per_byte", DEFAULT),
         ),
         {
             "__init__": _init_ConnectionBudget,

@@ -49,9 +49,13 @@ MAX_PRIORITY = 1_000_000  # either way; priorities only order the calls of one i
 STANDARD_BAUDS = frozenset(
     (50, 75, 110, 134, 150, 200, 300, 600, 1200, 1800, 2400, 4800, 9600, 14400, 19200, 28800, 38400, 57600,
      76800, 115200, 230400, 250000, 460800, 500000, 576000, 921600, 1000000, 1152000, 1500000, 2000000,
-     2500000, 3000000, 3500000, 4000000)
+     2500000, 3000000, 3500000, 4000000,
+     100000, 420000)  # S.BUS's and CRSF's own rates
 )
 CONNECTION_KINDS = ("serial", "tcp")
+PARITIES = ("none", "even", "odd", "mark", "space")  # pyserial's, each its first letter there
+DATA_BITS = (5, 6, 7, 8)
+STOP_BITS = (1, 1.5, 2)
 DEFAULT_BAUD = 9600
 DEFAULT_FREQUENCY_HZ = 10.0
 MAX_TERMINATOR = 8
@@ -670,10 +674,48 @@ class _Checker:
         address = address_clause.value.value if isinstance(address_clause, ast.Address) else None
         if decl.kind.text == "tcp" and address_clause is not None and not address_clause.value.value.startswith("socket://"):
             self.d.report("E204", address_clause.value.span, "a tcp connection's address is `socket://HOST:PORT`")
+        data_bits, parity, stop_bits = self.serial_line(decl)
         return m.Connection(
             name.text, decl.kind.text, int(baud or 0), float(frequency or 0), hooks["startup"], hooks["terminate"],
-            keepalive, decl.doc, decl.span, terminator, address, baud_setting,
+            keepalive, decl.doc, decl.span, terminator, address, baud_setting, data_bits, parity, stop_bits,
         )
+
+    def serial_line(self, decl: ast.ConnectionDecl) -> tuple[int, str, float]:
+        """A serial line's character, `databits`, `parity` and `stopbits` (8N1 unless said): the
+        settings a UART has, stated only on a `serial` connection (E215)."""
+        name = decl.name
+        data = self.once([a for a in decl.attrs if isinstance(a, ast.DataBits)], "`databits`", name)
+        parity = self.once([a for a in decl.attrs if isinstance(a, ast.Parity)], "`parity`", name)
+        stop = self.once([a for a in decl.attrs if isinstance(a, ast.StopBits)], "`stopbits`", name)
+        if decl.kind.text == "tcp":
+            for clause in (data, parity, stop):
+                if clause is not None:
+                    self.d.report("E215", clause.span, f"`{name.text}` is a tcp connection, which has no serial line "
+                                  "to set", help="data bits, parity and stop bits are a `serial` connection's")
+        data_bits, parity_name, stop_bits = 8, "none", 1.0
+        if isinstance(data, ast.DataBits):
+            value = self.setting(data.value, "the data bits")
+            if value is not None and value not in DATA_BITS:
+                self.d.report("E215", data.value.span, f"a character has 5, 6, 7 or 8 data bits, not {value:g}")
+            elif value is not None:
+                data_bits = int(value)
+        if isinstance(parity, ast.Parity):
+            if parity.value.text not in PARITIES:
+                self.d.report("E215", parity.value.span, f"unknown parity `{parity.value.text}`",
+                              help="parity is none, even, odd, mark or space")
+            else:
+                parity_name = parity.value.text
+        if isinstance(stop, ast.StopBits):
+            value = self.setting(stop.value, "the stop bits")
+            if value is not None and value not in STOP_BITS:
+                self.d.report("E215", stop.value.span, f"a character ends with 1, 1.5 or 2 stop bits, not {value:g}")
+            elif value is not None:
+                stop_bits = value  # 2 stays an int: the driver says `stop_bits=2`
+        if stop_bits == 1.5 and data_bits != 5:
+            assert isinstance(stop, ast.StopBits)  # 1.5 is only ever stated
+            self.d.report("E215", stop.value.span, f"1.5 stop bits go with 5 data bits, not {data_bits}",
+                          help="a UART sends 1.5 stop bits only after 5 data bits: say `stopbits 1` or `2`")
+        return data_bits, parity_name, stop_bits
 
     def duration(self, d: ast.Duration, what: str) -> float | None:
         """A duration in ms: at most an hour (a longer one could only hang)."""

@@ -340,9 +340,20 @@ class Connection:
     terminator: str = "\n"  # ends a reply line; "\n" also takes a "\r" before it
     address: str | None = None  # the port opened when none is given (path or URL)
     baud_setting: str | None = None  # the setting that gives the baud rate (`baud` is then its default)
+    data_bits: int = 8  # a serial line's character: data bits, parity, stop bits (8N1 unless said)
+    parity: str = "none"  # none, even, odd, mark or space
+    stop_bits: float = 1  # 1, 1.5 or 2
 
     def terminator_bytes(self) -> bytes:
         return self.terminator.encode("latin-1")
+
+    def line_text(self) -> str:
+        """The serial line's character as it is usually written: `8N1`, `8E2`, `5N1.5`."""
+        return f"{self.data_bits}{self.parity[0].upper()}{self.stop_bits:g}"
+
+    def bits_per_byte(self) -> float:
+        """A byte's bits on the wire: a start bit, the data bits, a parity bit, the stop bits."""
+        return 1 + self.data_bits + (self.parity != "none") + self.stop_bits
 
 
 # ---- struct layouts: a struct format parsed once, by the checker (rdisc.semantics.formats) -------------

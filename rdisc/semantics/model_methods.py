@@ -622,6 +622,9 @@ def _init_Connection(
     terminator: Any = DEFAULT,
     address: Any = DEFAULT,
     baud_setting: Any = DEFAULT,
+    data_bits: Any = DEFAULT,
+    parity: Any = DEFAULT,
+    stop_bits: Any = DEFAULT,
 ) -> None:
     _set(self, "name", name)
     _set(self, "kind", kind)
@@ -635,10 +638,13 @@ def _init_Connection(
     _set(self, "terminator", terminator)
     _set(self, "address", address)
     _set(self, "baud_setting", baud_setting)
+    _set(self, "data_bits", data_bits)
+    _set(self, "parity", parity)
+    _set(self, "stop_bits", stop_bits)
 
 
 def _repr_Connection(self: Any) -> str:
-    return f"{self.__class__.__qualname__}(name={self.name!r}, kind={self.kind!r}, baud={self.baud!r}, frequency_hz={self.frequency_hz!r}, startup={self.startup!r}, terminate={self.terminate!r}, keepalive={self.keepalive!r}, doc={self.doc!r}, terminator={self.terminator!r}, address={self.address!r}, baud_setting={self.baud_setting!r})"
+    return f"{self.__class__.__qualname__}(name={self.name!r}, kind={self.kind!r}, baud={self.baud!r}, frequency_hz={self.frequency_hz!r}, startup={self.startup!r}, terminate={self.terminate!r}, keepalive={self.keepalive!r}, doc={self.doc!r}, terminator={self.terminator!r}, address={self.address!r}, baud_setting={self.baud_setting!r}, data_bits={self.data_bits!r}, parity={self.parity!r}, stop_bits={self.stop_bits!r})"
 
 
 def _eq_Connection(self: Any, other: Any) -> Any:
@@ -655,6 +661,9 @@ def _eq_Connection(self: Any, other: Any) -> Any:
             self.terminator,
             self.address,
             self.baud_setting,
+            self.data_bits,
+            self.parity,
+            self.stop_bits,
         ) == (
             other.name,
             other.kind,
@@ -667,6 +676,9 @@ def _eq_Connection(self: Any, other: Any) -> Any:
             other.terminator,
             other.address,
             other.baud_setting,
+            other.data_bits,
+            other.parity,
+            other.stop_bits,
         )
     return NotImplemented
 
@@ -684,6 +696,9 @@ def _hash_Connection(self: Any) -> int:
         self.terminator,
         self.address,
         self.baud_setting,
+        self.data_bits,
+        self.parity,
+        self.stop_bits,
     ))
 
 
@@ -2670,6 +2685,9 @@ WRITTEN: dict[str, Written] = {
             ("terminator", DEFAULT),
             ("address", DEFAULT),
             ("baud_setting", DEFAULT),
+            ("data_bits", DEFAULT),
+            ("parity", DEFAULT),
+            ("stop_bits", DEFAULT),
         ),
         {
             "__init__": _init_Connection,

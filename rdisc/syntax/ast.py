@@ -283,7 +283,31 @@ class Address:
     span: Span = _span
 
 
-ConnectionAttr = Baud | Threading | Hook | Terminator | Address
+@dataclass(frozen=True, slots=True)
+class DataBits:
+    """A serial line's data bits a character (`databits 7`): 8 unless said."""
+
+    value: Expr
+    span: Span = _span
+
+
+@dataclass(frozen=True, slots=True)
+class Parity:
+    """A serial line's parity bit (`parity even`): `none` unless said."""
+
+    value: Ident
+    span: Span = _span
+
+
+@dataclass(frozen=True, slots=True)
+class StopBits:
+    """A serial line's stop bits a character (`stopbits 2`): 1 unless said."""
+
+    value: Expr
+    span: Span = _span
+
+
+ConnectionAttr = Baud | Threading | Hook | Terminator | Address | DataBits | Parity | StopBits
 
 
 @dataclass(frozen=True, slots=True)

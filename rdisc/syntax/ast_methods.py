@@ -691,6 +691,63 @@ def _hash_Address(self: Any) -> int:
     return hash((self.value,))
 
 
+def _init_DataBits(self: Any, value: Any, span: Any = DEFAULT) -> None:
+    _set(self, "value", value)
+    _set(self, "span", span)
+
+
+def _repr_DataBits(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(value={self.value!r})"
+
+
+def _eq_DataBits(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.value,) == (other.value,)
+    return NotImplemented
+
+
+def _hash_DataBits(self: Any) -> int:
+    return hash((self.value,))
+
+
+def _init_Parity(self: Any, value: Any, span: Any = DEFAULT) -> None:
+    _set(self, "value", value)
+    _set(self, "span", span)
+
+
+def _repr_Parity(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(value={self.value!r})"
+
+
+def _eq_Parity(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.value,) == (other.value,)
+    return NotImplemented
+
+
+def _hash_Parity(self: Any) -> int:
+    return hash((self.value,))
+
+
+def _init_StopBits(self: Any, value: Any, span: Any = DEFAULT) -> None:
+    _set(self, "value", value)
+    _set(self, "span", span)
+
+
+def _repr_StopBits(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(value={self.value!r})"
+
+
+def _eq_StopBits(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.value,) == (other.value,)
+    return NotImplemented
+
+
+def _hash_StopBits(self: Any) -> int:
+    return hash((self.value,))
+
+
 def _init_ConnectionDecl(
     self: Any,
     name: Any,
@@ -2528,6 +2585,28 @@ WRITTEN: dict[str, Written] = {
             "__repr__": _repr_Address,
             "__eq__": _eq_Address,
             "__hash__": _hash_Address,
+        },
+    ),
+    "DataBits": Written(
+        (("value", MISSING), ("span", FieldSpec(None, MISSING, False, False))),
+        {
+            "__init__": _init_DataBits,
+            "__repr__": _repr_DataBits,
+            "__eq__": _eq_DataBits,
+            "__hash__": _hash_DataBits,
+        },
+    ),
+    "Parity": Written(
+        (("value", MISSING), ("span", FieldSpec(None, MISSING, False, False))),
+        {"__init__": _init_Parity, "__repr__": _repr_Parity, "__eq__": _eq_Parity, "__hash__": _hash_Parity},
+    ),
+    "StopBits": Written(
+        (("value", MISSING), ("span", FieldSpec(None, MISSING, False, False))),
+        {
+            "__init__": _init_StopBits,
+            "__repr__": _repr_StopBits,
+            "__eq__": _eq_StopBits,
+            "__hash__": _hash_StopBits,
         },
     ),
     "ConnectionDecl": Written(

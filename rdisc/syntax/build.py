@@ -373,6 +373,15 @@ class Rules:
     def address(self, meta: Meta, c: list[Any]) -> ast.Address:
         return ast.Address(self.b.string(c[0]), self.b.span(meta))
 
+    def data_bits(self, meta: Meta, c: list[Any]) -> ast.DataBits:
+        return ast.DataBits(c[0], self.b.span(meta))
+
+    def parity(self, meta: Meta, c: list[Any]) -> ast.Parity:
+        return ast.Parity(self.b.ident(c[0]), self.b.span(meta))
+
+    def stop_bits(self, meta: Meta, c: list[Any]) -> ast.StopBits:
+        return ast.StopBits(c[0], self.b.span(meta))
+
     def reply_table(self, meta: Meta, c: list[Any]) -> ast.ReplyTable:
         return ast.ReplyTable(self.b.ident(c[0]), tuple(c[1:]), self.b.span(meta))
 

@@ -272,6 +272,12 @@ def _connection_attr(a: ast.ConnectionAttr) -> str:
             return f"terminator {p.quote_octets(value.value)}"
         case ast.Address(value):
             return f"address {p.quote(value.value)}"
+        case ast.DataBits(value):
+            return f"databits {print_expr(value)}"
+        case ast.Parity(value):
+            return f"parity {value.text}"
+        case ast.StopBits(value):
+            return f"stopbits {print_expr(value)}"
         case _:
             _unreachable(a)
 

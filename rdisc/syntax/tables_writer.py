@@ -66,7 +66,9 @@ def _rule(rule: Any, callback: Any) -> tuple[Any, ...]:
         raise TypeError(f"unexpected node builder of {rule}")
     size = len(rule.expansion)
     unit = single and size == 1 and keep is None
-    return (rule.origin.name, size, keep, nones_after, single, name, name.startswith("_"), unit)
+    # Lark's names are Tokens when it builds the grammar afresh, str when it loads its cache: written as str
+    origin, name = str(rule.origin.name), str(name)
+    return (origin, size, keep, nones_after, single, name, name.startswith("_"), unit)
 
 
 def _lexer(lexer: Any) -> tuple[tuple[str, ...], dict[str, str]]:
@@ -125,7 +127,7 @@ def write() -> str:
     out.append("# Each parser state's actions: on a terminal or a rule's origin, shift to state n (n >= 0),\n"
                "# or reduce by rule ~n (n < 0).\nACTIONS: tuple[dict[str, int], ...] = (\n")
     for state in range(len(table.states)):
-        row = {kind: (arg if action is Shift else ~rules[arg]) for kind, (action, arg) in table.states[state].items()}
+        row = {str(kind): (arg if action is Shift else ~rules[arg]) for kind, (action, arg) in table.states[state].items()}
         out.append(f"    {row!r},\n")
     out.append(")\n\n")
     out.append(f"START = {dict(table.start_states)!r}\n")

@@ -82,7 +82,7 @@ def test_a_syntax_error_costs_only_its_declaration() -> None:
 
 def test_errors_say_what_was_expected_in_words() -> None:
     assert rendered("connection c: serial { baud 9600 speed 3 }\n") == """\
-error[E001]: expected `address`, `baud`, `keepalive`, a closing `}`, `startup`, `terminate`, `terminator` or `threading`, found `speed`
+error[E001]: expected `address`, `baud`, `databits`, `keepalive`, `parity`, a closing `}`, `startup`, `stopbits`, `terminate`, `terminator` or `threading`, found `speed`
  --> t.rdis:1:34
   |
 1 | connection c: serial { baud 9600 speed 3 }

@@ -2232,6 +2232,9 @@ class Connection:
     keepalive: Hook | None = None
     interval: float = 0.0  # seconds between keepalives
     baud_setting: str | None = None  # the setting that gives the baud rate (`baud` is its default)
+    data_bits: int = 8  # the serial line's character: 8N1 unless the description says otherwise
+    parity: str = "none"  # none, even, odd, mark or space
+    stop_bits: float = 1  # 1, 1.5 or 2
 
 
 @dataclass(frozen=True, slots=True)
@@ -2572,13 +2575,16 @@ class _Link:
 
 
 def _open_port(connection: Connection, url: str, timeout: float, baud: int) -> Port:
-    """A port opened with pyserial (any port name or URL it knows) at `baud`, 8N1."""
+    """A port opened with pyserial (any port name or URL it knows) at `baud`, its character the
+    connection's serial line (8N1 unless the description says otherwise: S.BUS is 8E2)."""
     try:
         import serial  # type: ignore[import-untyped, import-not-found, unused-ignore]
     except ImportError as err:
         raise RdisConnectionError(f"{connection.name}: opening {url} needs pyserial (pip install pyserial)") from err
     try:
-        port: Port = serial.serial_for_url(url, baudrate=baud, bytesize=8, parity="N", stopbits=1,
+        port: Port = serial.serial_for_url(url, baudrate=baud, bytesize=connection.data_bits,
+                                           parity=connection.parity[0].upper(),  # pyserial's "N", "E", ...
+                                           stopbits=connection.stop_bits,
                                            timeout=timeout, write_timeout=timeout)
     except (serial.SerialException, OSError, ValueError) as err:
         raise RdisConnectionError(f"{connection.name}: cannot open {url}: {err}") from err
