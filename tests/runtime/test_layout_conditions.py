@@ -197,3 +197,14 @@ def test_the_budget_counts_the_longest_layout_a_setting_may_choose() -> None:
     model = compile_text("maestro.rdis", DESCRIPTION).model
     assert model is not None
     assert message_bytes(model.primitives["set_target"], model.frames) == 7  # AA 0C 04, 3 bytes, the CRC-7
+
+
+def test_decode_knows_a_request_in_each_layout(tmp_path: Path) -> None:
+    source, capture = tmp_path / "maestro.rdis", tmp_path / "capture.txt"
+    source.write_text(DESCRIPTION, encoding="utf-8")
+    capture.write_text("> 84 02 70 2E\n> AA 0C 04 02 70 2E\n> AA 0C 04 02 70 2E 11\n", encoding="utf-8")
+    shown = [line.strip() for line in run_rdisc("decode", source, capture).stdout.splitlines()]
+    assert [line for line in shown if line.startswith((">", "request", "unknown"))] == [
+        "> 84 02 70 2E", "request set_target", "> AA 0C 04 02 70 2E", "request set_target",
+        "> AA 0C 04 02 70 2E 11", "request set_target"]
+    assert "6     1  checksum              crc width 7 poly 0x9 reflect as B, over header .. payload                11" in shown
