@@ -639,6 +639,11 @@ class _Importer:
             if side == "request" and "requestWhen" in m:  # `either when`: a condition (or null) per layout
                 when = tuple(None if isinstance(v, JNull) else self.expr(v, "bool")
                              for v in self.array(m["requestWhen"], "`requestWhen`"))
+                if len(when) != len(layouts) or len(layouts) < 2:
+                    self.error(m["requestWhen"].span, f"`requestWhen` has {len(when)} condition{'' if len(when) == 1 else 's'} for "
+                               f"{len(layouts)} request layout{'' if len(layouts) == 1 else 's'}",
+                               help="give a condition (or null, the last only) for `request` and each of `moreRequests`")
+                    when = ()
             sides[side] = layouts[0] if len(layouts) == 1 and not when else (
                 ast.FrameEither(tuple(layouts), m[more].span if more in m else m[side].span, when),)
         if name is None:

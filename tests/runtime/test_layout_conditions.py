@@ -151,14 +151,30 @@ def test_json_without_request_when_chooses_by_size(tmp_path: Path) -> None:
                   "carries every payload"))]
 
 
-def test_a_wrong_request_when_in_json_is_a_diagnostic(tmp_path: Path) -> None:
+@pytest.mark.parametrize(("when", "expected"), [
+    ([None, "<mode == 1>", None], [
+        ("E513", "alternative 1 has no `when`, but alternatives chosen by size and by a condition cannot be mixed")]),
+    (["<mode == 0>", None], [("E008", "`requestWhen` has 2 conditions for 3 request layouts")]),
+    (["<mode == 0>", "<mode == 1>", "<mode == 2>", None], [
+        ("E008", "`requestWhen` has 4 conditions for 3 request layouts")]),
+])
+def test_a_wrong_request_when_in_json_is_a_diagnostic(tmp_path: Path, when: Any, expected: Any) -> None:
     _, built = through_json(DESCRIPTION, tmp_path, "maestro")
     document = json.loads(built)
-    document["frames"][0]["requestWhen"] = [None, "<mode == 1>", None]
-    (tmp_path / "mixed.json").write_text(json.dumps(document), encoding="utf-8")
-    found = compile_path(str(tmp_path / "mixed.json")).diagnostics.items
-    assert [(d.code, d.message) for d in found] == [
-        ("E513", "alternative 1 has no `when`, but alternatives chosen by size and by a condition cannot be mixed")]
+    document["frames"][0]["requestWhen"] = when
+    (tmp_path / "wrong.json").write_text(json.dumps(document), encoding="utf-8")
+    found = compile_path(str(tmp_path / "wrong.json")).diagnostics.items
+    assert [(d.code, d.message) for d in found] == expected
+
+
+def test_request_when_for_one_layout_is_a_diagnostic(tmp_path: Path) -> None:
+    _, built = through_json(DESCRIPTION, tmp_path, "maestro")
+    document = json.loads(built)
+    del document["frames"][0]["moreRequests"]
+    document["frames"][0]["requestWhen"] = ["<mode == 0>"]
+    (tmp_path / "one.json").write_text(json.dumps(document), encoding="utf-8")
+    found = compile_path(str(tmp_path / "one.json")).diagnostics.items
+    assert [(d.code, d.message) for d in found] == [("E008", "`requestWhen` has 1 condition for 1 request layout")]
 
 
 def test_the_printer_writes_the_conditions_back() -> None:
