@@ -340,7 +340,7 @@ _PRIMITIVE = (
     "replyTable", "timeout", "retry", "replies", "repliesEach", "replyFrames", "replyList", "error", "expect", "postActions", "doc",
 )  # fmt: skip
 _FRAME = ("name", "parameters", "parameterTypes", "parameterRanges", "parameterDefaults", "parameterUnits",
-          "request", "reply", "moreRequests", "moreReplies",
+          "request", "reply", "moreRequests", "moreReplies", "requestWhen",
           "stuffing", "escaping", "doc")
 _CHECKSUM = (
     "checksum", "kind", "width", "poly", "init", "reflectIn", "reflectOut", "xorOut", "inverted", "mask", "format",
@@ -635,7 +635,17 @@ class _Importer:
         for side, more in (("request", "moreRequests"), ("reply", "moreReplies")):
             layouts = [self.frame_parts(m.get(side), f"`{side}`"),
                        *(self.frame_parts(v, "a layout") for v in self.array(m.get(more), f"`{more}`"))]
-            sides[side] = layouts[0] if len(layouts) == 1 else (ast.FrameEither(tuple(layouts), m[more].span),)
+            when: tuple[ast.Expr | None, ...] = ()
+            if side == "request" and "requestWhen" in m:  # `either when`: a condition (or null) per layout
+                when = tuple(None if isinstance(v, JNull) else self.expr(v, "bool")
+                             for v in self.array(m["requestWhen"], "`requestWhen`"))
+                if len(when) != len(layouts) or len(layouts) < 2:
+                    self.error(m["requestWhen"].span, f"`requestWhen` has {len(when)} condition{'' if len(when) == 1 else 's'} for "
+                               f"{len(layouts)} request layout{'' if len(layouts) == 1 else 's'}",
+                               help="give a condition (or null, the last only) for `request` and each of `moreRequests`")
+                    when = ()
+            sides[side] = layouts[0] if len(layouts) == 1 and not when else (
+                ast.FrameEither(tuple(layouts), m[more].span if more in m else m[side].span, when),)
         if name is None:
             return None
         self.frame_types[name.text] = tuple(_type_text(p.type) for p in params)

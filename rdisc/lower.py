@@ -97,6 +97,7 @@ class Frame:
     more_requests: list[list[Construct[Any]]] = dataclasses.field(default_factory=list)
     more_replies: list[list[Construct[Any]]] = dataclasses.field(default_factory=list)
     escaping: Construct[engine.Escaping] | None = None
+    choose: Code | None = None  # `either when`: each request layout's condition over the args
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -595,7 +596,9 @@ def frame(f: m.Frame) -> Frame:
     fields = _values(f.params, tuple(e for _, e in values), ("args",)) if values else None
     return Frame(f.name, parts(f, f.request), parts(f, f.reply), stuffing=stuffing(f), params=_params(f.params),
                  fields=fields, more_requests=[parts(f, layout) for layout in f.more_requests],
-                 more_replies=[parts(f, layout) for layout in f.more_replies], escaping=escaping(f))
+                 more_replies=[parts(f, layout) for layout in f.more_replies], escaping=escaping(f),
+                 choose=_values(f.params, tuple(e for e in f.request_when if e is not None), ("args",))
+                 if f.request_when else None)
 
 
 def _written(plan: Primitive, params: tuple[m.Parameter, ...], encoding: m.Pack | m.Format | None) -> Written | None:

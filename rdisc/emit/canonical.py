@@ -275,6 +275,7 @@ def _frame(f: m.Frame) -> JsonObject:
         ("parameterUnits", _units(f.params)),
         ("request", [_frame_part(part) for part in f.request]),
         ("moreRequests", [[_frame_part(part) for part in parts] for parts in f.more_requests] or None),
+        ("requestWhen", [None if e is None else _embedded(e) for e in f.request_when] or None),
         ("reply", [_frame_part(part) for part in f.reply]),
         ("moreReplies", [[_frame_part(part) for part in parts] for parts in f.more_replies] or None),
         ("stuffing", None if f.stuffing is None else {"after": f.stuffing[0], "insert": f.stuffing[1]}),

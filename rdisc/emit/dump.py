@@ -45,7 +45,8 @@ def _primitive(model: m.Model, p: m.Primitive) -> str:
     if p.encoding is None:
         lines.append("  request: none")
     else:
-        lines += _sides("request", frame.requests if frame else None, _payload_rows(p.encoding, p.args), False)
+        lines += _sides("request", frame.requests if frame else None, _payload_rows(p.encoding, p.args), False,
+                        frame.request_when if frame else ())
     if p.reply_frames:  # each reply through its own frame, all of one frame
         frame = model.frames[p.reply_frames[0].frame]
     framed = frame.replies if frame and frame.reply else None
@@ -305,12 +306,14 @@ def _reply_rows(decoding: m.Unpack | m.Regex | None) -> list[Row]:
 
 
 def _sides(name: str, layouts: tuple[tuple[m.FramePart, ...], ...] | None, payload: list[Row],
-           reply: bool = True) -> list[str]:
-    """A side's table, or one per layout (`either`): the request's in the order the writer tries them."""
+           reply: bool = True, when: tuple[m.Expr | None, ...] = ()) -> list[str]:
+    """A side's table, or one per layout (`either`): the request's in the order the writer tries them,
+    each after the condition that chooses it (`either when`)."""
     if layouts is None or len(layouts) == 1:
         return _side(name, layouts[0] if layouts else None, payload, reply)
+    heads = [f", when {expression_text(e)}" if e is not None else ", when none holds" for e in when]
     return [line for n, parts in enumerate(layouts, 1)
-            for line in _side(f"{name}, alternative {n}", parts, payload, reply)]
+            for line in _side(f"{name}, alternative {n}{heads[n - 1] if heads else ''}", parts, payload, reply)]
 
 
 def _side(name: str, parts: tuple[m.FramePart, ...] | None, payload: list[Row], reply: bool) -> list[str]:

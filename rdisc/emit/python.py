@@ -354,6 +354,9 @@ class _Driver:
             if framed.fields is not None:
                 self.code(w, f"_f_{frame.name}", framed.fields)
                 w.blank(2)
+            if framed.choose is not None:
+                self.code(w, f"_choose_{frame.name}", framed.choose)
+                w.blank(2)
             self.constant(w, self.plan["frame", frame.name], framed)
         for prim in model.primitives.values():
             w.blank(2)

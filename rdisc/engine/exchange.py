@@ -336,8 +336,9 @@ class Exchange:
         fields: list[Any] = []
         if use is not None:
             try:
-                fields = use.frame.values(plan.name, use.args(self._state, local))
-                request = use.frame.wrap(request, fields)
+                given = use.args(self._state, local)
+                fields = use.frame.values(plan.name, given)
+                request = use.frame.wrap(request, fields, use.frame.layout(plan.name, given))
             except RdisError:
                 raise
             except (struct.error, *EVAL_ERRORS) as err:

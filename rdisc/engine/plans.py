@@ -300,7 +300,10 @@ def _composed_write(plan: Primitive) -> Request:
             return None
         try:
             payload = pack(*values_of(state, args))
-            return payload if use is None else use.frame.wrap(payload, use.frame.values("", use.args(state, args)))
+            if use is None:
+                return payload
+            given = use.args(state, args)
+            return use.frame.wrap(payload, use.frame.values("", given), use.frame.layout("", given))
         except Exception:  # noqa: BLE001 - the general way says what is wrong
             return None
 

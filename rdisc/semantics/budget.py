@@ -185,8 +185,9 @@ def message_bytes(prim: m.Primitive, frames: dict[str, m.Frame] | None = None, e
             request = 0
     framing = 0  # the request's framing
     sent = request
-    if frame is not None:  # the request's layout is the one its size picks
-        written = _written(frame.requests, request)
+    if frame is not None:  # the request's layout: the one its size picks
+        written = (_written(frame.requests, request) if not frame.request_when  # else the longest a setting may pick
+                   else max(frame.requests, key=frame_bytes))
         framing = frame_bytes(written)
         sent = _worst(frame, written, request + framing) if escaped else request + framing
     if prim.listed:  # each listed reply once, through its own frame or the primitive's

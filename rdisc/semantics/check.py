@@ -1472,14 +1472,19 @@ class _Checker:
             self.d.report("E503", clause.span, f"the reply of frame `{frame.name}` gives no way to find where the "
                           f"payload of `{decl.name.text}` ends",
                           help="add a `length` field, constant bytes after the payload, or decode with `unpack`")
-        sizes = [(frame.requests, request), *((frame.replies, None if n is None else (n, n, "")) for n in reply_sizes)]
-        for layouts, payload in sizes:
+        sizes = [(frame.requests, request, bool(frame.request_when)),
+                 *((frame.replies, None if n is None else (n, n, ""), False) for n in reply_sizes)]
+        for layouts, payload, chosen in sizes:
             found = [length_part(parts) for parts in layouts]
+            if chosen:  # `either when`: any layout with a length field may be the one written
+                found = [length for length in found if length is not None]
             if not found or None in found or payload is None:  # a layout without a length field carries any payload
                 continue
             lengths = [length for length in found if length is not None]
             ranges = [length_range(length) for length in lengths]
             low, high = min(r[0] for r in ranges), max(r[1] for r in ranges)  # the writer takes the first that fits
+            if chosen:
+                low, high = max(r[0] for r in ranges), min(r[1] for r in ranges)
             fewest, most, by = payload
             if low <= fewest and most <= high:
                 continue

@@ -15,7 +15,7 @@ from rdisc.semantics import formats
 from rdisc.semantics import model as m
 from rdisc.semantics.model import Scope, Type
 from rdisc.semantics.resolve import suggest
-from rdisc.semantics.types import Env, Typer
+from rdisc.semantics.types import Env, Typer, describe
 from rdisc.syntax import ast
 
 MAX_BYTES = 64  # of one constant part
@@ -143,8 +143,10 @@ class FrameRules:
         else:
             request = self.layouts(direct, "request", decl, env, fields)
             reply = self.layouts(direct, "reply", decl, env, fields, quiet=True)
+        chosen = self.chooser(sides["request"].parts, env) if "request" in sides else ()
+        self.chooser(sides["reply"].parts if "reply" in sides else direct, env, "reply")  # refused there
         frame = m.Frame(decl.name.text, params, request[0], reply[0], decl.doc, decl.span, stuffing, request[1:],
-                        reply[1:], escaping)
+                        reply[1:], escaping, chosen)
         if escaping is not None:
             self.escaped(frame, escapes[0], decl)
         return frame
@@ -257,7 +259,7 @@ class FrameRules:
         runs = [(*parts[:at], *alt, *parts[at + 1 :]) for alt in either.alternatives]
         layouts = tuple(self.side(self.flat(run), side, decl, env, fields, quiet) for run in runs)
         name = decl.name.text
-        if side == "request":
+        if side == "request" and not either.conditions:
             for n, layout in enumerate(layouts[:-1], 1):
                 if length_part(layout) is None:
                     self.d.report("E507", either.span, f"alternative {n + 1} of frame `{name}` is never written: "
@@ -265,6 +267,7 @@ class FrameRules:
                                   help="the writer takes the first alternative whose length field can state the "
                                   "payload: put the one without a length field last")
                     break
+        if side == "request":
             return layouts
         heads = []
         for n, layout in enumerate(layouts, 1):
@@ -285,6 +288,31 @@ class FrameRules:
             self.d.report("E507", either.span, f"some alternatives of frame `{name}` have a `payload` and some not",
                           help="give every alternative of a reply a payload, or none")
         return layouts
+
+    def chooser(self, parts: tuple[ast.FramePart, ...], env: Env, side: str = "request") -> tuple[m.Expr | None, ...]:
+        """The conditions of a side's `either when`, typed over the frame's parameters: a plain
+        alternative only last (taken when none holds); () when its `either` is chosen by size."""
+        either = next((p for p in parts if isinstance(p, ast.FrameEither)), None)
+        if either is None or not either.conditions:
+            return ()
+        if side == "reply":
+            self.d.report("E513", either.span, "a reply's layout is known by the header that comes, not by `when`",
+                          help="write `either when` in the frame's `request { }`; give each reply layout its own header")
+            return ()
+        out: list[m.Expr | None] = []
+        for n, condition in enumerate(either.conditions, 1):
+            if condition is None:
+                if n < len(either.conditions):
+                    self.d.report("E513", either.span, f"alternative {n} has no `when`, but alternatives chosen by "
+                                  "size and by a condition cannot be mixed",
+                                  help="give every alternative a `when`, except a plain last one, taken when none holds")
+                out.append(None)
+                continue
+            typed = self.typer.expr(condition, env)
+            if typed.type is not None and typed.type is not Type.BOOL:
+                self.d.report("E513", condition.span, f"`when` takes a bool, but this is {describe(typed.type)}")
+            out.append(typed)
+        return tuple(out)
 
     def flat(self, parts: tuple[ast.FramePart, ...]) -> tuple[ast.FramePart, ...]:
         """The parts in a row, an `optional`'s own right after it (it says how many follow)."""

@@ -699,6 +699,7 @@ class Frame:
     more_requests: tuple[tuple[FramePart, ...], ...] = ()  # the other layouts, in order
     more_replies: tuple[tuple[FramePart, ...], ...] = ()
     escaping: Escaping | None = None
+    request_when: tuple[Expr | None, ...] = ()  # `either when`: each request layout's condition (None: plain)
 
     @property
     def requests(self) -> tuple[tuple[FramePart, ...], ...]:

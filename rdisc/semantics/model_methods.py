@@ -1334,6 +1334,7 @@ def _init_Frame(
     more_requests: Any = DEFAULT,
     more_replies: Any = DEFAULT,
     escaping: Any = DEFAULT,
+    request_when: Any = DEFAULT,
 ) -> None:
     _set(self, "name", name)
     _set(self, "params", params)
@@ -1345,10 +1346,11 @@ def _init_Frame(
     _set(self, "more_requests", more_requests)
     _set(self, "more_replies", more_replies)
     _set(self, "escaping", escaping)
+    _set(self, "request_when", request_when)
 
 
 def _repr_Frame(self: Any) -> str:
-    return f"{self.__class__.__qualname__}(name={self.name!r}, params={self.params!r}, request={self.request!r}, reply={self.reply!r}, doc={self.doc!r}, stuffing={self.stuffing!r}, more_requests={self.more_requests!r}, more_replies={self.more_replies!r}, escaping={self.escaping!r})"
+    return f"{self.__class__.__qualname__}(name={self.name!r}, params={self.params!r}, request={self.request!r}, reply={self.reply!r}, doc={self.doc!r}, stuffing={self.stuffing!r}, more_requests={self.more_requests!r}, more_replies={self.more_replies!r}, escaping={self.escaping!r}, request_when={self.request_when!r})"
 
 
 def _eq_Frame(self: Any, other: Any) -> Any:
@@ -1363,6 +1365,7 @@ def _eq_Frame(self: Any, other: Any) -> Any:
             self.more_requests,
             self.more_replies,
             self.escaping,
+            self.request_when,
         ) == (
             other.name,
             other.params,
@@ -1373,6 +1376,7 @@ def _eq_Frame(self: Any, other: Any) -> Any:
             other.more_requests,
             other.more_replies,
             other.escaping,
+            other.request_when,
         )
     return NotImplemented
 
@@ -1388,6 +1392,7 @@ def _hash_Frame(self: Any) -> int:
         self.more_requests,
         self.more_replies,
         self.escaping,
+        self.request_when,
     ))
 
 
@@ -2923,6 +2928,7 @@ WRITTEN: dict[str, Written] = {
             ("more_requests", DEFAULT),
             ("more_replies", DEFAULT),
             ("escaping", DEFAULT),
+            ("request_when", DEFAULT),
         ),
         {"__init__": _init_Frame, "__repr__": _repr_Frame, "__eq__": _eq_Frame, "__hash__": _hash_Frame},
     ),

@@ -720,10 +720,13 @@ class FrameOptional:
 @dataclass(frozen=True, slots=True)
 class FrameEither:
     """`either { ... } or { ... }`: alternative runs of parts. A request is written with the
-    first whose length field can state its payload; a reply is read by the one whose header came."""
+    first whose length field can state its payload; a reply is read by the one whose header came.
+    `either when COND { ... } or ... or { ... }`: a request's alternative chosen by a condition over
+    the frame's parameters, the first that holds (a plain last one when none does)."""
 
     alternatives: tuple[tuple[FramePart, ...], ...]
     span: Span = _span
+    conditions: tuple[Expr | None, ...] = ()  # one per alternative (None: plain) when any has `when`
 
 
 @dataclass(frozen=True, slots=True)

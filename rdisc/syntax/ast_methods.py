@@ -1846,23 +1846,24 @@ def _hash_FrameOptional(self: Any) -> int:
     return hash((self.parts,))
 
 
-def _init_FrameEither(self: Any, alternatives: Any, span: Any = DEFAULT) -> None:
+def _init_FrameEither(self: Any, alternatives: Any, span: Any = DEFAULT, conditions: Any = DEFAULT) -> None:
     _set(self, "alternatives", alternatives)
     _set(self, "span", span)
+    _set(self, "conditions", conditions)
 
 
 def _repr_FrameEither(self: Any) -> str:
-    return f"{self.__class__.__qualname__}(alternatives={self.alternatives!r})"
+    return f"{self.__class__.__qualname__}(alternatives={self.alternatives!r}, conditions={self.conditions!r})"
 
 
 def _eq_FrameEither(self: Any, other: Any) -> Any:
     if other.__class__ is self.__class__:
-        return (self.alternatives,) == (other.alternatives,)
+        return (self.alternatives, self.conditions) == (other.alternatives, other.conditions)
     return NotImplemented
 
 
 def _hash_FrameEither(self: Any) -> int:
-    return hash((self.alternatives,))
+    return hash((self.alternatives, self.conditions))
 
 
 def _init_FrameBitField(
@@ -3071,7 +3072,11 @@ WRITTEN: dict[str, Written] = {
         },
     ),
     "FrameEither": Written(
-        (("alternatives", MISSING), ("span", FieldSpec(None, MISSING, False, False))),
+        (
+            ("alternatives", MISSING),
+            ("span", FieldSpec(None, MISSING, False, False)),
+            ("conditions", DEFAULT),
+        ),
         {
             "__init__": _init_FrameEither,
             "__repr__": _repr_FrameEither,

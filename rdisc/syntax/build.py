@@ -5,6 +5,7 @@ from __future__ import annotations
 import math
 import re
 from collections.abc import Callable
+from dataclasses import dataclass
 from functools import lru_cache
 from typing import TYPE_CHECKING, Any
 
@@ -20,6 +21,14 @@ if TYPE_CHECKING:
 
 MAX_INT_DIGITS = 64
 MAX_EXPR_DEPTH = 100
+
+
+@dataclass(frozen=True, slots=True)
+class _Guarded:
+    """`when COND { parts }`: one alternative of an `either`, before FrameEither takes it apart."""
+
+    condition: ast.Expr
+    parts: tuple[ast.FramePart, ...]
 
 
 class TooDeep(Exception):
@@ -536,8 +545,15 @@ class Rules:
     def part_run(self, meta: Meta, c: list[ast.FramePart]) -> tuple[ast.FramePart, ...]:
         return tuple(c)
 
+    def when_run(self, meta: Meta, c: list[Any]) -> _Guarded:
+        condition, *parts = c
+        return _Guarded(condition, tuple(parts))
+
     def f_either(self, meta: Meta, c: list[object]) -> ast.FrameEither:
-        return ast.FrameEither(tuple(run for run in c if isinstance(run, tuple)), self.b.span(meta))
+        runs = [run for run in c if isinstance(run, (tuple, _Guarded))]
+        conditions = tuple(run.condition if isinstance(run, _Guarded) else None for run in runs)
+        return ast.FrameEither(tuple(run.parts if isinstance(run, _Guarded) else run for run in runs),
+                               self.b.span(meta), conditions if any(c is not None for c in conditions) else ())
 
     def f_payload(self, meta: Meta, c: list[Any]) -> ast.FramePayload:
         return ast.FramePayload(self.b.span(meta))

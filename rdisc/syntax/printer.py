@@ -193,8 +193,10 @@ def _frame_part(part: ast.FramePart) -> str:
             return _run("optional", parts)
         case ast.FrameBits(fmt, fields):
             return f"bits {p.quote(fmt.value)} {{ " + "  ".join(_bit_field(f) for f in fields) + " }"
-        case ast.FrameEither(alternatives):
-            return " or ".join(_run("either" if i == 0 else "", run).lstrip() for i, run in enumerate(alternatives))
+        case ast.FrameEither(alternatives, _, conditions):
+            heads = [f"when {print_expr(c)}" if c is not None else "" for c in conditions] or [""] * len(alternatives)
+            return " or ".join(_run(f"{'either' if i == 0 else ''} {head}".strip(), run).lstrip()
+                               for i, (head, run) in enumerate(zip(heads, alternatives)))
         case _:
             _unreachable(part)
 

@@ -1528,16 +1528,18 @@ class Frame:
     """A request side and a reply side (empty when the device answers nothing framed), and
     the values of its fields over its parameters."""
 
-    __slots__ = ("escaping", "fields", "fill", "headers", "name", "params", "quick", "ranged", "replies", "reply",
-                 "requests", "stuffing", "trim", "vouched")
+    __slots__ = ("choose", "escaping", "fields", "fill", "headers", "name", "params", "quick", "ranged", "replies",
+                 "reply", "requests", "stuffing", "trim", "vouched")
 
     def __init__(self, name: str, request: Sequence[Part], reply: Sequence[Part], stuffing: Stuffing | None = None,
                  params: tuple[Param, ...] = (), fields: Callable[[Args], list[Any]] | None = None,
                  more_requests: Sequence[Sequence[Part]] = (), more_replies: Sequence[Sequence[Part]] = (),
-                 escaping: Escaping | None = None) -> None:
+                 escaping: Escaping | None = None, choose: Callable[[Args], list[Any]] | None = None) -> None:
         """`more_requests` and `more_replies`: the other layouts of a side (`either`), in order;
-        `escaping`: the bytes between the header and the terminator escaped (one layout each way)."""
+        `escaping`: the bytes between the header and the terminator escaped (one layout each way);
+        `choose`: the truth of each request layout's condition (`either when`) over the arguments."""
         self.name = name
+        self.choose = choose
         self.requests = tuple(Side(parts) for parts in (request, *more_requests))
         self.replies = tuple(Side(parts) for parts in (reply, *more_replies))
         self.reply = self.replies[0]
@@ -1562,14 +1564,29 @@ class Frame:
             _check_ranges(f"{owner}: frame {self.name}", self.params, self.ranged, args)
         return [] if self.fields is None else self.fields(args)
 
-    def wrap(self, payload: bytes, fields: Sequence[int]) -> bytes:
+    def layout(self, owner: str, args: Args) -> int:
+        """The request layout the arguments choose (`either when`): the first whose condition
+        holds, else a plain last one; -1 when the frame chooses by the payload's size."""
+        if self.choose is None:
+            return -1
+        conditions = self.choose(args)
+        for index, holds in enumerate(conditions):
+            if holds:
+                return index
+        if len(self.requests) > len(conditions):
+            return len(conditions)
+        raise RdisValueError(f"{owner}: frame {self.name}: no layout's condition holds")
+
+    def wrap(self, payload: bytes, fields: Sequence[int], layout: int = -1) -> bytes:
         """The request: `payload` framed (stuffed first, when the frame stuffs), with the
-        frame's field values; when it escapes, what comes between its flags escaped."""
+        frame's field values; when it escapes, what comes between its flags escaped. `layout`:
+        the one `layout` chose, else the first that can state the payload's size."""
         if self.trim:  # its trailing zero bytes dropped, its first byte kept (MAVLink 2)
             payload = payload.rstrip(b"\0") or payload[:1]
         if self.stuffing is not None:
             payload = self.stuffing.stuff(payload)
-        for side, quick in zip(self.requests, self.quick):  # the first layout that can state its size
+        chosen = zip(self.requests, self.quick) if layout < 0 else ((self.requests[layout], self.quick[layout]),)
+        for side, quick in chosen:  # the first layout that can state its size
             if len(payload) <= side.most:
                 out = quick(payload, fields) if quick is not None else self.wrap_parts(side, payload, fields)
                 if self.escaping is None:
@@ -2058,7 +2075,10 @@ def _composed_write(plan: Primitive) -> Request:
             return None
         try:
             payload = pack(*values_of(state, args))
-            return payload if use is None else use.frame.wrap(payload, use.frame.values("", use.args(state, args)))
+            if use is None:
+                return payload
+            given = use.args(state, args)
+            return use.frame.wrap(payload, use.frame.values("", given), use.frame.layout("", given))
         except Exception:  # noqa: BLE001 - the general way says what is wrong
             return None
 
@@ -2995,8 +3015,9 @@ class Exchange:
         fields: list[Any] = []
         if use is not None:
             try:
-                fields = use.frame.values(plan.name, use.args(self._state, local))
-                request = use.frame.wrap(request, fields)
+                given = use.args(self._state, local)
+                fields = use.frame.values(plan.name, given)
+                request = use.frame.wrap(request, fields, use.frame.layout(plan.name, given))
             except RdisError:
                 raise
             except (struct.error, *EVAL_ERRORS) as err:
