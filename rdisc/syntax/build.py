@@ -5,7 +5,6 @@ from __future__ import annotations
 import math
 import re
 from collections.abc import Callable
-from dataclasses import dataclass
 from functools import lru_cache
 from typing import TYPE_CHECKING, Any
 
@@ -23,12 +22,15 @@ MAX_INT_DIGITS = 64
 MAX_EXPR_DEPTH = 100
 
 
-@dataclass(frozen=True, slots=True)
 class _Guarded:
-    """`when COND { parts }`: one alternative of an `either`, before FrameEither takes it apart."""
+    """`when COND { parts }`: one alternative of an `either`, before FrameEither takes it apart
+    (a plain class: a clean check imports no dataclasses)."""
 
-    condition: ast.Expr
-    parts: tuple[ast.FramePart, ...]
+    __slots__ = ("condition", "parts")
+
+    def __init__(self, condition: ast.Expr, parts: tuple[ast.FramePart, ...]) -> None:
+        self.condition = condition
+        self.parts = parts
 
 
 class TooDeep(Exception):
