@@ -12,7 +12,7 @@ import importlib
 import signal
 import sys
 from types import ModuleType
-from typing import cast
+from typing import Any, cast
 
 from rdisc import __version__
 
@@ -47,15 +47,37 @@ def verb_named(argv: list[str]) -> str | None:
     return next((a for a in argv if not a.startswith("-")), None)
 
 
+class _Formatter(argparse.HelpFormatter):
+    """argparse's help, laid out to the terminal's width, asked when help or usage is written:
+    argparse makes a formatter for each argument added (to test its metavar), and its own asks
+    the width each time, importing shutil (with bz2 and lzma), about 4 ms of a cold check."""
+
+    def __init__(self, prog: str) -> None:
+        super().__init__(prog, width=80)  # the metavar test reads no width
+
+    def format_help(self) -> str:
+        measured = argparse.HelpFormatter(self._prog)  # the width and help column argparse would use
+        self._width, self._max_help_position = measured._width, measured._max_help_position
+        return super().format_help()
+
+
+class _Parser(argparse.ArgumentParser):
+    """A parser whose help is `_Formatter`'s; the verbs' parsers are made of this class too."""
+
+    def __init__(self, **options: Any) -> None:
+        options.setdefault("formatter_class", _Formatter)
+        super().__init__(**options)
+
+
 def parser(argv: list[str] | None = None) -> argparse.ArgumentParser:
     """The command line's parser: of the verb `argv` names, or of every verb."""
-    p = argparse.ArgumentParser(
+    p = _Parser(
         prog="rdisc",
         description="The RDIS toolchain: check robot device descriptions and turn them into what frameworks use.",
     )
     p.add_argument("--version", action="version", version=f"rdisc {__version__}")
     p.add_argument("--debug", action="store_true", help="show the Python traceback of an internal error")
-    verbs = p.add_subparsers(dest="verb", metavar="VERB", required=True)
+    verbs = p.add_subparsers(dest="verb", metavar="VERB", required=True, prog="rdisc")  # not laid out: no width asked
     named = verb_named(argv or [])
     for verb in [named] if named in VERBS else VERBS:
         _module(verb).add_parser(verbs)

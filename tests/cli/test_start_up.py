@@ -4,9 +4,14 @@ nor pathlib, json or difflib, which only imports, `--format json` and misspellin
 
 from __future__ import annotations
 
+import argparse
 import subprocess
 import sys
 from pathlib import Path
+
+import pytest
+
+from rdisc.cli.main import parser
 
 ROOT = Path(__file__).resolve().parents[2]
 NOT_NEEDED = ("lark", "pathlib", "json", "difflib")
@@ -59,3 +64,27 @@ def test_a_clean_check_does_not_import_dataclasses() -> None:
     done = subprocess.run([sys.executable, "-c", probe, "check", str(ROOT / "examples" / "create.rdis")],
                           capture_output=True, text=True, check=True)
     assert done.stdout == "[]\n"
+
+
+def test_a_clean_check_does_not_ask_the_terminal_s_width() -> None:
+    """argparse's own formatter asks the width (importing shutil, with bz2 and lzma) for each
+    argument added; rdisc's asks it only when help or usage is written."""
+    probe = ("import sys; from rdisc.cli.main import main; main(sys.argv[1:]); "
+             "print(sorted(name for name in ('shutil', 'bz2', 'lzma') if name in sys.modules))")
+    done = subprocess.run([sys.executable, "-c", probe, "check", str(ROOT / "examples" / "create.rdis")],
+                          capture_output=True, text=True, check=True)
+    assert done.stdout == "[]\n"
+
+
+@pytest.mark.parametrize("columns", ["40", "72", "150"])
+@pytest.mark.parametrize("verb", [None, "check", "run", "dump"])
+def test_help_is_laid_out_as_argparse_lays_it_out(monkeypatch: pytest.MonkeyPatch, columns: str,
+                                                   verb: str | None) -> None:
+    """The help and usage rdisc writes are argparse's own, to the terminal's width (COLUMNS)."""
+    monkeypatch.setenv("COLUMNS", columns)
+    top = parser([] if verb is None else [verb])
+    verbs = next(a for a in top._actions if isinstance(a, argparse._SubParsersAction))
+    shown = top if verb is None else verbs.choices[verb]
+    ours = (shown.format_help(), shown.format_usage())
+    shown.formatter_class = argparse.HelpFormatter
+    assert ours == (shown.format_help(), shown.format_usage())
