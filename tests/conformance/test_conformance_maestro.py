@@ -9,7 +9,8 @@ are held against the guide (section 5.e): its examples as literals, and an emula
 on a pty that reads each command as the guide states it (a command byte with bit 7 set, data
 bytes without; a 14-bit value as its low 7 bits, then bits 7-13; replies low byte first),
 with its own decoding, not rdisc's. The rdisc runtime and the driver `rdisc emit-python`
-generates both go through it.
+generates both go through it. The Pololu protocol and its CRC-7 byte (section 5.c-d) are held
+as the guide's bytes on a scripted port.
 """
 
 from __future__ import annotations
@@ -25,6 +26,7 @@ from devices import PtyDevice
 
 from rdisc.emit.python import import_driver
 from rdisc.runtime import errors, load
+from tests.support.ports import ScriptedPort
 
 ROOT = Path(__file__).resolve().parents[2]
 DESCRIPTION = ROOT / "examples" / "maestro.rdis"
@@ -314,7 +316,6 @@ def test_the_reference_crc7_gives_the_guides_example() -> None:
 ])
 def test_the_protocol_setting_chooses_the_framing(implementation: tuple[Any, type[Exception]],
                                                   settings: dict[str, int], expected: bytes) -> None:
-    from tests.support.ports import ScriptedPort
     described = implementation[0]
     given = settings if hasattr(described, "RdisValueError") else {"settings": settings}
     port = ScriptedPort(bytes([0x70, 0x17]))  # Get Position's reply, the same in every protocol
