@@ -9,7 +9,8 @@ are held against the guide (section 5.e): its examples as literals, and an emula
 on a pty that reads each command as the guide states it (a command byte with bit 7 set, data
 bytes without; a 14-bit value as its low 7 bits, then bits 7-13; replies low byte first),
 with its own decoding, not rdisc's. The rdisc runtime and the driver `rdisc emit-python`
-generates both go through it.
+generates both go through it. The Pololu protocol and its CRC-7 byte (section 5.c-d) are held
+as the guide's bytes on a scripted port.
 """
 
 from __future__ import annotations
@@ -25,6 +26,7 @@ from devices import PtyDevice
 
 from rdisc.emit.python import import_driver
 from rdisc.runtime import errors, load
+from tests.support.ports import ScriptedPort
 
 ROOT = Path(__file__).resolve().parents[2]
 DESCRIPTION = ROOT / "examples" / "maestro.rdis"
@@ -285,3 +287,45 @@ def test_set_multiple_targets_on_a_mini_maestro(implementation: tuple[Any, type[
         robot.primitives.get_errors()
         assert robot.state.errors & PROTOCOL_ERROR
         assert micro.target == [6000] * 6
+
+
+# The guide's Pololu protocol (section 5.c): 0xAA, the device number, the command byte with bit 7
+# cleared, the same data bytes; "Pololu protocol, device number 12" for the example above.
+GUIDE_POLOLU_SET_TARGET_2_1500US = bytes([0xAA, 0x0C, 0x04, 0x02, 0x70, 0x2E])
+
+
+def crc7(data: bytes) -> int:
+    """The guide's CRC-7 in C (section 5.d): polynomial 0x91, least significant bit first."""
+    crc = 0
+    for byte in data:
+        crc ^= byte
+        for _ in range(8):
+            crc = (crc ^ 0x91) >> 1 if crc & 1 else crc >> 1
+    return crc
+
+
+def test_the_reference_crc7_gives_the_guides_example() -> None:
+    assert crc7(bytes([0x83, 0x01])) == 0x17  # "the CRC-7 of 0x83, 0x01 is 0x17"
+
+
+@pytest.mark.parametrize(("settings", "expected"), [
+    ({}, GUIDE_SET_TARGET_2_1500US),
+    ({"protocol": 1}, GUIDE_POLOLU_SET_TARGET_2_1500US),
+    ({"protocol": 2}, GUIDE_POLOLU_SET_TARGET_2_1500US + bytes([crc7(GUIDE_POLOLU_SET_TARGET_2_1500US)])),
+    ({"protocol": 1, "device": 3}, bytes([0xAA, 0x03, 0x04, 0x02, 0x70, 0x2E])),
+])
+def test_the_protocol_setting_chooses_the_framing(implementation: tuple[Any, type[Exception]],
+                                                  settings: dict[str, int], expected: bytes) -> None:
+    described = implementation[0]
+    given = settings if hasattr(described, "RdisValueError") else {"settings": settings}
+    port = ScriptedPort(bytes([0x70, 0x17]))  # Get Position's reply, the same in every protocol
+    with described.connect(port, threads=False, **given) as robot:
+        robot.primitives.set_target(2, 6000)
+        robot.primitives.get_position(1)
+        assert robot.state["position"][1] == 0x1770
+    get_position = bytes([GET_POSITION, 1])
+    if settings.get("protocol", 0):
+        get_position = bytes([0xAA, settings.get("device", 12), GET_POSITION & 0x7F, 1])
+        if settings["protocol"] == 2:
+            get_position += bytes([crc7(get_position)])
+    assert bytes(port.written) == expected + get_position
