@@ -347,6 +347,23 @@ class IfElse(Expr):
         return self.then.value(env) if self.cond.value(env) else self.orelse.value(env)
 
 
+@dataclass(frozen=True)
+class Elements(Expr):
+    """An array literal `[a, b]`: a repeated group's values (its type is the element's)."""
+
+    items: tuple[Expr, ...] = ()
+
+    def text(self) -> str:
+        return "[" + ", ".join(i.text() for i in self.items) + "]"
+
+    @property
+    def const(self) -> bool:
+        return all(i.const for i in self.items)
+
+    def value(self, env: Mapping[str, Any]) -> Any:
+        return [i.value(env) for i in self.items]
+
+
 def constant_value(e: Expr) -> Any:
     """The value the checker folds `e` to; Unknown if it would refuse to (a diagnostic)."""
     try:
@@ -1601,8 +1618,36 @@ def _request(draw: Draw, params: tuple[Param, ...], scope: Scope,
     template = struct_text(order, slots, 0, bool(rest) and len(args) > len(slots))
     if not slots and not template.endswith("*"):
         template = ""
+    numbers = all(s.code in _INT_CODES + "efd?" for s in slots)  # a format with a group holds no text
+    if order in "<>" and numbers and not template.endswith("*") and sometimes(draw, 8):
+        group, group_args = _sized_group(draw, order, scope)
+        return "pack", (template or order) + group, (*args, *group_args), None
     fixed = None if template.endswith("*") else struct.calcsize(_struct_module(template) or "<")
     return "pack", template, tuple(args), fixed
+
+
+def _sized_group(draw: Draw, order: str, scope: Scope) -> tuple[str, tuple[Expr, ...]]:
+    """A width field and a repeated group with `%` codes (`%H*(B%)`): each `%` an unsigned integer of
+    as many bytes as the width states; a run-time width outside 1..8, or a value it cannot hold, is
+    an error both implementations must raise alike."""
+    width: Expr = Lit(INT, draw(st.integers(1, 8)))
+    if sometimes(draw, 3):
+        width = fitting(draw, expression(draw, INT, scope, 1), lambda v: isinstance(v, int) and 1 <= v <= 8, INT, 1, 8)
+    code = draw(st.sampled_from("BHIQ"))
+    members = draw(st.sampled_from(["B%", "%", "%B", "H%%"]))
+    count = draw(st.integers(1, 3))
+    bound = (1 << (8 * constant_value(width))) - 1 if width.const else (1 << 64) - 1
+    columns: list[Expr] = []
+    for member in members:
+        if member == "%":
+            items = tuple(fitting(draw, expression(draw, INT, scope, 1),
+                                  lambda v, b=bound: isinstance(v, int) and 0 <= v <= b, INT, 0, min(bound, 300))
+                          for _ in range(count))
+        else:
+            high = code_range(member)[1]  # type: ignore[index]
+            items = tuple(Lit(INT, draw(st.integers(0, high))) for _ in range(count))
+        columns.append(Elements(INT, items))
+    return f"%{code}*({members})", (width, *columns)
 
 
 def _frame_args(draw: Draw, frame: Frame, params: tuple[Param, ...]) -> tuple[Expr, ...]:
