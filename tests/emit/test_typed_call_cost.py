@@ -8,13 +8,13 @@ count does not depend on the machine. Whatever the step, the bytes and errors ar
 from __future__ import annotations
 
 import struct
-import sys
 from pathlib import Path
 from typing import Any
 
 import pytest
 
 from rdisc.emit.python import import_driver
+from tests.support.calls import calls_made
 from tests.support.ports import ScriptedPort
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -23,22 +23,6 @@ TABLE_4_3 = [((-0.2, -0.4), "89 ff38 01f4"), ((0.0, 0.0), "89 0000 0000"), ((0.0
              ((0.0, -0.2), "89 0000 0001"), ((0.2, 0.0), "89 00c8 7fff"), ((-0.2, 0.0), "89 ff38 7fff")]
 PACKET_100 = struct.Struct(">B6?BBxBBhhBHhbHHH4H3xBBB?B6hB6HBB4hB")  # as examples/create2.rdis reads it
 
-
-def calls_made(command: Any) -> int:
-    """How many Python functions `command()` enters (itself not counted)."""
-    entered = 0
-
-    def count(frame: Any, event: str, arg: Any) -> None:
-        nonlocal entered
-        if event == "call":
-            entered += 1
-
-    sys.setprofile(count)
-    try:
-        command()
-    finally:
-        sys.setprofile(None)
-    return entered - 1  # the lambda given
 
 
 @pytest.fixture(scope="module")

@@ -6,7 +6,6 @@ what the general way shows them. Alike in the runtime and a generated driver."""
 
 from __future__ import annotations
 
-import sys
 from pathlib import Path
 from types import ModuleType
 from typing import Any
@@ -15,6 +14,7 @@ import pytest
 
 from rdisc.emit.python import import_driver
 from tests.engine.test_one_engine import implementation_of
+from tests.support.calls import calls_made
 from tests.support.ports import ScriptedPort
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
@@ -42,22 +42,6 @@ class Servo:
     def listen(self) -> bytes:
         return b""
 
-
-def calls_made(command: Any) -> int:
-    """How many Python functions `command()` enters (itself not counted)."""
-    entered = 0
-
-    def count(frame: Any, event: str, arg: Any) -> None:
-        nonlocal entered
-        if event == "call":
-            entered += 1
-
-    sys.setprofile(count)
-    try:
-        command()
-    finally:
-        sys.setprofile(None)
-    return entered - 1
 
 
 @pytest.fixture(scope="module", params=["runtime", "driver"])

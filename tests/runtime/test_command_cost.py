@@ -7,35 +7,18 @@ the port's `write`; the bytes are the thesis's and the AX-12 manual's.
 
 from __future__ import annotations
 
-import sys
-from collections.abc import Callable
 from typing import Any
 
 import pytest
 from runtime_support import DATA, EXAMPLES
 
 from rdisc.runtime import load
+from tests.support.calls import calls_made
 from tests.support.ports import ScriptedPort
 
 TABLE_4_3 = [((-0.2, -0.4), "89 ff38 01f4"), ((0.0, 0.0), "89 0000 0000"), ((0.0, 0.2), "89 0000 ffff"),
              ((0.0, -0.2), "89 0000 0001"), ((0.2, 0.0), "89 00c8 7fff"), ((-0.2, 0.0), "89 ff38 7fff")]
 
-
-def calls_made(command: Callable[[], Any]) -> int:
-    """How many Python functions `command()` enters (itself not counted)."""
-    entered = 0
-
-    def count(frame: Any, event: str, arg: Any) -> None:
-        nonlocal entered
-        if event == "call":
-            entered += 1
-
-    sys.setprofile(count)
-    try:
-        command()
-    finally:
-        sys.setprofile(None)
-    return entered - 1  # the lambda given
 
 
 @pytest.fixture(scope="module")
