@@ -46,7 +46,7 @@ STRUCT_WORDS = ("pack", "unpack", "length", "tag", "bits")
 
 _BEGIN_QUOTE = {"name": "punctuation.definition.string.begin.rdis"}
 _END_QUOTE = {"1": {"name": "punctuation.definition.string.end.rdis"}}
-_ESCAPE = {"name": "constant.character.escape.rdis", "match": r"\\(?:x[0-9A-Fa-f]{2}|[^\n])"}
+_ESCAPE: dict[str, Any] = {"name": "constant.character.escape.rdis", "match": r"\\(?:x[0-9A-Fa-f]{2}|[^\n])"}
 _STRING_END = '(")|$'  # strings do not span lines
 
 
