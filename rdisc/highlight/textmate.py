@@ -155,3 +155,27 @@ def grammar(words: Mapping[str, tuple[str, ...]], patterns: Mapping[str, str],
         "patterns": [{"include": f"#{rule}"} for rule in rules],
         "repository": rules,
     }
+
+
+def language_configuration(patterns: Mapping[str, str], punctuation: tuple[str, ...]) -> dict[str, Any]:
+    """VS Code's language configuration: `#` comments (Toggle Line Comment), the grammar's
+    brackets, quotes closed as typed, a line ending in an open bracket indenting the next, a
+    doc comment continued on Enter, and a word is a name of the grammar."""
+    brackets = [[o, c] for o, c in ("{}", "[]", "()") if o in punctuation and c in punctuation]
+    closing = "".join(re.escape(c) for _, c in brackets)
+    opening = "".join(re.escape(o) for o, _ in brackets)
+    if not patterns["comment"].startswith("#"):
+        raise TypeError(f"a comment no longer starts with #: {patterns['comment']}")
+    return {
+        "comments": {"lineComment": "#"},
+        "brackets": brackets,
+        "autoClosingPairs": [*({"open": o, "close": c} for o, c in brackets),
+                             {"open": '"', "close": '"', "notIn": ["string", "comment"]}],
+        "surroundingPairs": [*brackets, ['"', '"'], ["`", "`"]],
+        "wordPattern": patterns["name"],
+        "indentationRules": {
+            "increaseIndentPattern": rf"^.*[{opening}]\s*(#.*)?$",
+            "decreaseIndentPattern": rf"^\s*[{closing}]",
+        },
+        "onEnterRules": [{"beforeText": r"^\s*///", "action": {"indent": "none", "appendText": "/// "}}],
+    }

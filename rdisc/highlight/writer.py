@@ -1,12 +1,13 @@
-"""Writes the highlighting vocabulary (rdisc/highlight/vocabulary.py) and the TextMate grammar
-(editors/vscode/syntaxes/rdis.tmLanguage.json) from the grammar, so neither drifts from it.
+"""Writes the highlighting vocabulary (rdisc/highlight/vocabulary.py), the TextMate grammar
+(editors/vscode/syntaxes/rdis.tmLanguage.json) and VS Code's language configuration
+(editors/vscode/language-configuration.json) from the grammar, so none drifts from it.
 
 The words are read from Lark's grammar (grammar/rdis.lark): every keyword, sorted into kinds by
 the rules that use it (the first word of each declaration, the operators of expressions, the
 boolean literals, the words of a conditional and a `for`, the time units); the number, name,
 comment and operator patterns are the grammar's terminals. The type names are the Model's, the
 built-in functions the engine's, the struct codes those Python's `struct` accepts.
-`python -m rdisc.highlight.writer --check` (and a test) hold both files equal to what this writes.
+`python -m rdisc.highlight.writer --check` (and a test) hold the files equal to what this writes.
 """
 
 from __future__ import annotations
@@ -23,7 +24,9 @@ from typing import Any
 from rdisc.highlight import textmate
 
 VOCABULARY = Path(__file__).resolve().parent / "vocabulary.py"
-TEXTMATE = Path(__file__).resolve().parents[2] / "editors" / "vscode" / "syntaxes" / "rdis.tmLanguage.json"
+VSCODE = Path(__file__).resolve().parents[2] / "editors" / "vscode"
+TEXTMATE = VSCODE / "syntaxes" / "rdis.tmLanguage.json"
+LANGUAGE_CONFIGURATION = VSCODE / "language-configuration.json"
 
 Words = dict[str, tuple[str, ...]]
 
@@ -135,6 +138,11 @@ def write_textmate(words: Words, patterns: dict[str, str], punctuation: tuple[st
     return json.dumps(textmate.grammar(words, patterns, punctuation), indent=2, ensure_ascii=False) + "\n"
 
 
+def write_language_configuration(words: Words, patterns: dict[str, str], punctuation: tuple[str, ...]) -> str:
+    """The text of editors/vscode/language-configuration.json."""
+    return json.dumps(textmate.language_configuration(patterns, punctuation), indent=2, ensure_ascii=False) + "\n"
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(prog="python -m rdisc.highlight.writer",
                                      description=(__doc__ or "").split("\n\n")[0])
@@ -142,7 +150,9 @@ def main(argv: list[str] | None = None) -> int:
     args = parser.parse_args(argv)
     made = derive()
     stale = 0
-    for target, text in ((VOCABULARY, write_vocabulary(*made)), (TEXTMATE, write_textmate(*made))):
+    written = ((VOCABULARY, write_vocabulary(*made)), (TEXTMATE, write_textmate(*made)),
+               (LANGUAGE_CONFIGURATION, write_language_configuration(*made)))
+    for target, text in written:
         if target.is_file() and target.read_text(encoding="utf-8") == text:
             continue
         if args.check:
