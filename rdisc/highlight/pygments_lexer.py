@@ -54,7 +54,6 @@ class RdisLexer(RegexLexer):
     aliases: ClassVar[list[str]] = ["rdis"]
     filenames: ClassVar[list[str]] = ["*.rdis"]
     mimetypes: ClassVar[list[str]] = ["text/x-rdis"]
-    url = "https://github.com/rdisc/rdisc"
 
     tokens: ClassVar[dict[str, list[Any]]] = {
         "root": [

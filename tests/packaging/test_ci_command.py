@@ -27,3 +27,9 @@ def test_the_readme_test_command_installs_the_drivers_without_their_dependencies
 def test_ci_runs_the_readme_test_command_verbatim() -> None:
     ci = (ROOT / ".ci" / "run").read_text(encoding="utf-8")
     assert f"\n{readme_test_command()} || status=$?\n" in ci
+
+
+def test_ci_installs_the_npm_packages_the_textmate_grammars_tests_run_on() -> None:
+    ci = (ROOT / ".ci" / "run").read_text(encoding="utf-8")
+    assert "\nnpm ci --prefix tests/editor --no-audit --no-fund\n" in ci
+    assert (ROOT / "tests" / "editor" / "package-lock.json").is_file()  # what `npm ci` installs, exactly

@@ -162,3 +162,11 @@ def test_build_matches_the_checkout(installed: Installed) -> None:
     done = installed.run("build", CREATE, "-o", wheel)
     assert (done.returncode, done.stderr) == (0, "")
     assert wheel.read_bytes() == here.read_bytes()
+
+
+def test_pygmentize_knows_rdis_installed(installed: Installed) -> None:
+    """The entry point `pygments.lexers: rdis`: Pygments finds the lexer by its name, with no path."""
+    done = installed.run("-l", "rdis", "-f", "raw", CREATE, program="pygmentize")
+    assert (done.returncode, done.stderr) == (0, "")
+    assert "Token.Keyword.Declaration\t'robot'\nToken.Text.Whitespace\t' '\nToken.Name.Class\t'irobot_create'\n" in done.stdout
+    assert "Token.Error" not in done.stdout
