@@ -3,7 +3,7 @@ as the entry point `pygments.lexers: rdis`.
 
 Its words and patterns are the grammar's (rdisc.highlight.vocabulary, written from grammar/rdis.lark)
 and its rules follow the TextMate grammar's (rdisc.highlight.textmate): a declaration's keyword in
-column 0 and its name, struct codes in the strings after `pack`, `unpack` and the frame words,
+column 0 and its name, the places where any word is a name, struct codes in the strings after `pack`, `unpack` and the frame words,
 placeholders after `format`, a regular expression after `regex`. Text a description could not
 hold (a stray `$`) is an Error token; no valid description has one.
 """
@@ -30,6 +30,7 @@ from rdisc.highlight.textmate import NAME_KINDS, STRUCT_WORDS
 from rdisc.highlight.vocabulary import PATTERNS, PUNCTUATION, WORDS
 
 _NAME = PATTERNS["name"]
+_NOT_CONSTANT = rf"(?!(?:{'|'.join(WORDS['constant'])})\b)"
 _NAMES: dict[str, _TokenType] = {"function": Name.Function, "variable": Name.Variable, "constant": Name.Constant,
                                   "type": Name.Class}
 _STRING_BODY = r'[^"\\\n]+'
@@ -86,6 +87,9 @@ class RdisLexer(RegexLexer):
             (rf"(:)(\s*)({'|'.join(WORDS['type'])})\b", bygroups(Punctuation, Whitespace, Keyword.Type)),
             (words(WORDS["function"], prefix=r"\b", suffix=r"(?=\s*\()"), Name.Builtin),
             (rf"\b{_NAME}(?=\s*(?:\[[^\]\n]*\])?\s*=(?!=))", Name.Variable),
+            (rf"([(,])(\s*)({_NOT_CONSTANT}{_NAME})(?=\s*:)", bygroups(Punctuation, Whitespace, Name.Variable)),
+            (rf"([(,])(\s*)({_NOT_CONSTANT}{_NAME})(?=\s*[,)])", bygroups(Punctuation, Whitespace, Name)),
+            (rf"{_NAME}(?=\[|\.[A-Za-z])", Name),
             (words(WORDS["constant"], prefix=r"\b", suffix=r"\b"), Keyword.Constant),
             (words(WORDS["operator"], prefix=r"\b", suffix=r"\b"), Operator.Word),
             (words(WORDS["unit"], prefix=r"\b", suffix=r"\b"), Keyword.Pseudo),

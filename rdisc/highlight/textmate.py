@@ -3,7 +3,8 @@
 TextMate grammars match line by line with regular expressions, so a word the contextual parser
 reads as a name where it stands (`state error`, `error = out[1]`) is a keyword here unless a rule
 sees its place: a declaration's name after its keyword in column 0 (where the parser cuts
-declarations), an assignment's target, a built-in function's call, a type after `:`. The
+declarations), an assignment's target, a parameter, an argument alone, an indexed name or a
+member's owner, a built-in function's call, a type after `:`. The
 language server's semantic tokens refine the rest. Strings after `pack`, `unpack` and the frame
 words that take a struct format show its codes; after `format` its placeholders; after `regex`
 a regular expression.
@@ -64,6 +65,7 @@ def grammar(words: Mapping[str, tuple[str, ...]], patterns: Mapping[str, str],
     if missing:
         raise TypeError(f"the grammar no longer has the keywords {missing}")
     name = patterns["name"]
+    not_constant = f"(?!{alternatives(words['constant'])})"
 
     def declaration(word: str) -> dict[str, Any]:
         kind = NAME_KINDS.get(word, "type")
@@ -126,6 +128,13 @@ def grammar(words: Mapping[str, tuple[str, ...]], patterns: Mapping[str, str],
             {"name": "support.function.builtin.rdis", "match": alternatives(words["function"]) + r"(?=\s*\()"},
             {"name": "variable.other.assignment.rdis",
              "match": rf"\b{name}(?=\s*(?:\[[^\]\n]*\])?\s*=(?!=))"},
+            # Where the parser reads any word as a name: a parameter (`(on: bool`), an argument alone
+            # (`(137, velocity)`), an indexed or a member's owner (`out[0]`, `Op.read`).
+            {"match": rf"([(,])\s*{not_constant}({name})(?=\s*:)",
+             "captures": {"1": {"patterns": [{"include": "#operators"}]}, "2": {"name": "variable.parameter.rdis"}}},
+            {"match": rf"([(,])\s*{not_constant}({name})(?=\s*[,)])",
+             "captures": {"1": {"patterns": [{"include": "#operators"}]}}},
+            {"match": rf"\b{name}(?=\[|\.[A-Za-z])"},
             *({"name": WORD_SCOPES[kind], "match": alternatives(words[kind])}
               for kind in ("constant", "operator", "control", "unit")),
             {"name": WORD_SCOPES["keyword"], "match": alternatives(words["keyword"] + words["declaration"])},

@@ -73,7 +73,7 @@ def test_state_names_types_assignments_and_calls() -> None:
         (Punctuation, "["), (Number.Integer, "6"), (Punctuation, "]"), (Operator, "="), (Punctuation, "["),
         (Number.Integer, "0"), (Punctuation, "]"), (Operator, "*"), (Number.Integer, "6")]
     assert kinds("    error = hex(out[1]) and not x in 0..3") == [
-        (Name.Variable, "error"), (Operator, "="), (Name.Builtin, "hex"), (Punctuation, "("), (Keyword, "out"),
+        (Name.Variable, "error"), (Operator, "="), (Name.Builtin, "hex"), (Punctuation, "("), (Name, "out"),
         (Punctuation, "["), (Number.Integer, "1"), (Punctuation, "]"), (Punctuation, ")"), (Operator.Word, "and"),
         (Operator.Word, "not"), (Name, "x"), (Operator.Word, "in"), (Number.Integer, "0"), (Operator, ".."),
         (Number.Integer, "3")]
@@ -81,7 +81,7 @@ def test_state_names_types_assignments_and_calls() -> None:
 
 def test_strings_bytes_struct_codes_placeholders_and_regexes() -> None:
     assert kinds('primitive p(d: bytes) on bus pack "<B%H 3(Bh)" (b"\\x01", r"a\\d") unpack "B{1,7}"') == [
-        (Keyword.Declaration, "primitive"), (Name.Function, "p"), (Punctuation, "("), (Name, "d"), (Punctuation, ":"),
+        (Keyword.Declaration, "primitive"), (Name.Function, "p"), (Punctuation, "("), (Name.Variable, "d"), (Punctuation, ":"),
         (Keyword.Type, "bytes"), (Punctuation, ")"), (Keyword, "on"), (Name, "bus"), (Keyword, "pack"),
         (String.Double, '"'), (Operator, "<"), (String.Interpol, "B"), (Operator, "%"), (String.Interpol, "H"),
         (Number.Integer, "3"), (Punctuation, "("), (String.Interpol, "B"), (String.Interpol, "h"), (Punctuation, ")"),

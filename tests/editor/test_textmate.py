@@ -151,6 +151,12 @@ def test_chosen_places_have_exact_scopes(scoped: dict[str, Lines]) -> None:
                                                 "punctuation.section.group.struct.rdis"])
     assert at("arm.rdis", 74, "I)") == ("I", ["string.quoted.double.struct.rdis", "constant.character.format.struct.rdis"])
     assert at("arm.rdis", 85, "error") == ("error", ["variable.other.assignment.rdis"])  # a name here, not `error`
+    assert at("arm.rdis", 85, "out") == ("out", [])  # the reply's values, a name where it is indexed
+    assert at("arm.rdis", 104, "on: bool") == ("on", ["variable.parameter.rdis"])  # a parameter, not `on`
+    assert at("arm.rdis", 104, ") on bus") == (")", ["punctuation.section.parens.end.rdis"])
+    assert at("arm.rdis", 104, "on bus") == ("on", ["keyword.other.rdis"])
+    assert at("ax12.rdis", 158, "limit)") == (" limit", [])  # an argument alone is a name
+    assert at("ax12.rdis", 158, ", limit)") == (",", ["punctuation.separator.comma.rdis"])
     assert at("arm.rdis", 84, "==") == ("==", ["keyword.operator.rdis"])
     assert at("arm.rdis", 104, "if") == ("if", ["keyword.control.rdis"])
     assert at("arm.rdis", 104, "..") == ("..", ["keyword.operator.range.rdis"])
