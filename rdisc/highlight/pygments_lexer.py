@@ -26,7 +26,7 @@ from pygments.token import (
     _TokenType,
 )
 
-from rdisc.highlight.textmate import NAME_KINDS, STRUCT_WORDS
+from rdisc.highlight.textmate import ALONE, ASSIGNED, CALLED, NAME_KINDS, OWNER, PARAMETER, STRUCT_WORDS
 from rdisc.highlight.vocabulary import PATTERNS, PUNCTUATION, WORDS
 
 _NAME = PATTERNS["name"]
@@ -85,11 +85,11 @@ class RdisLexer(RegexLexer):
         ],
         "names": [
             (rf"(:)(\s*)({'|'.join(WORDS['type'])})\b", bygroups(Punctuation, Whitespace, Keyword.Type)),
-            (words(WORDS["function"], prefix=r"\b", suffix=r"(?=\s*\()"), Name.Builtin),
-            (rf"\b{_NAME}(?=\s*(?:\[[^\]\n]*\])?\s*=(?!=))", Name.Variable),
-            (rf"([(,])(\s*)({_NOT_CONSTANT}{_NAME})(?=\s*:)", bygroups(Punctuation, Whitespace, Name.Variable)),
-            (rf"([(,])(\s*)({_NOT_CONSTANT}{_NAME})(?=\s*[,)])", bygroups(Punctuation, Whitespace, Name)),
-            (rf"{_NAME}(?=\[|\.[A-Za-z])", Name),
+            (words(WORDS["function"], prefix=r"\b", suffix=CALLED), Name.Builtin),
+            (rf"\b{_NAME}{ASSIGNED}", Name.Variable),
+            (rf"([(,])(\s*)({_NOT_CONSTANT}{_NAME}){PARAMETER}", bygroups(Punctuation, Whitespace, Name.Variable)),
+            (rf"([(,])(\s*)({_NOT_CONSTANT}{_NAME}){ALONE}", bygroups(Punctuation, Whitespace, Name)),
+            (rf"{_NAME}{OWNER}", Name),
             (words(WORDS["constant"], prefix=r"\b", suffix=r"\b"), Keyword.Constant),
             (words(WORDS["operator"], prefix=r"\b", suffix=r"\b"), Operator.Word),
             (words(WORDS["unit"], prefix=r"\b", suffix=r"\b"), Keyword.Pseudo),

@@ -42,6 +42,14 @@ PUNCTUATION_SCOPES = {
     "{": "punctuation.section.braces.begin.rdis",
     "}": "punctuation.section.braces.end.rdis",
 }
+# What follows a name where the parser reads any word as a name (lookaheads, shared with the
+# Pygments lexer): an assignment's target (`x =`, `x[i] =`, not `x ==`), a parameter or a table's
+# key (`(on: bool`), an argument alone (`(137, velocity)`), an indexed name or a member's owner.
+ASSIGNED = r"(?=\s*(?:\[[^\]\n]{0,200}\])?\s*=(?!=))"
+PARAMETER = r"(?=\s*:)"
+ALONE = r"(?=\s*[,)])"
+OWNER = r"(?=\[|\.[A-Za-z])"
+CALLED = r"(?=\s*\()"
 # Clause words followed by a struct format (`pack "<BH"`, `length "<H" = payload`, `tag "B"`).
 STRUCT_WORDS = ("pack", "unpack", "length", "tag", "bits")
 
@@ -125,16 +133,16 @@ def grammar(words: Mapping[str, tuple[str, ...]], patterns: Mapping[str, str],
         "names": {"patterns": [
             {"match": rf"(:)\s*({alternatives(words['type'])})",
              "captures": {"1": {"name": PUNCTUATION_SCOPES[":"]}, "2": {"name": "support.type.rdis"}}},
-            {"name": "support.function.builtin.rdis", "match": alternatives(words["function"]) + r"(?=\s*\()"},
+            {"name": "support.function.builtin.rdis", "match": alternatives(words["function"]) + CALLED},
             {"name": "variable.other.assignment.rdis",
-             "match": rf"\b{name}(?=\s*(?:\[[^\]\n]*\])?\s*=(?!=))"},
+             "match": rf"\b{name}{ASSIGNED}"},
             # Where the parser reads any word as a name: a parameter (`(on: bool`), an argument alone
             # (`(137, velocity)`), an indexed or a member's owner (`out[0]`, `Op.read`).
-            {"match": rf"([(,])\s*{not_constant}({name})(?=\s*:)",
+            {"match": rf"([(,])\s*{not_constant}({name}){PARAMETER}",
              "captures": {"1": {"patterns": [{"include": "#operators"}]}, "2": {"name": "variable.parameter.rdis"}}},
-            {"match": rf"([(,])\s*{not_constant}({name})(?=\s*[,)])",
+            {"match": rf"([(,])\s*{not_constant}({name}){ALONE}",
              "captures": {"1": {"patterns": [{"include": "#operators"}]}}},
-            {"match": rf"\b{name}(?=\[|\.[A-Za-z])"},
+            {"match": rf"\b{name}{OWNER}"},
             *({"name": WORD_SCOPES[kind], "match": alternatives(words[kind])}
               for kind in ("constant", "operator", "control", "unit")),
             {"name": WORD_SCOPES["keyword"], "match": alternatives(words["keyword"] + words["declaration"])},

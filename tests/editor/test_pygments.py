@@ -5,6 +5,8 @@ and chosen places have exact ones."""
 from __future__ import annotations
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 from pygments.token import Comment, Error, Keyword, Name, Number, Operator, Punctuation, String, _TokenType
 
 from rdisc.highlight.pygments_lexer import RdisLexer
@@ -102,3 +104,15 @@ def test_an_unterminated_string_ends_with_its_line() -> None:
         (Keyword.Declaration, "const"), (Name.Constant, "S"), (Operator, "="), (String.Double, '"'),
         (String.Double, "open"), (Keyword.Declaration, "const"), (Name.Constant, "T"), (Operator, "="),
         (Number.Integer, "1")]
+
+
+# Pieces of RDIS and of what breaks it: unterminated strings and escapes, stray symbols, deep brackets.
+_PIECES = st.sampled_from(['"', 'b"', 'r"', "\\", "\n", " ", "///", "#", "{", "}", "(", ")", "[", "]", ",", ":", "=",
+                           "==", "..", "->", ".", "0x", "1.5e3", "_", "$", "@", "`", "é", "pack", "unpack", "format",
+                           "regex", "field", "checksum", "state", "robot", "out", "True", "x", "<B%H", "{11*16}"])
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.lists(_PIECES, max_size=40).map("".join))
+def test_any_text_lexes_into_tokens_that_give_it_back(text: str) -> None:
+    assert "".join(value for _, _, value in LEXER.get_tokens_unprocessed(text)) == text
