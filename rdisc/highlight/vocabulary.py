@@ -1,5 +1,5 @@
 """The words and token patterns of RDIS, read from grammar/rdis.lark (and the Model's types, the
-engine's functions, `struct`'s codes), for the TextMate grammar and the Pygments lexer.
+engine's functions, the struct codes of rdisc's formats), for the TextMate grammar and the Pygments lexer.
 
 Written by `python -m rdisc.highlight.writer`: do not edit; rerun it after changing the grammar
 (a test holds this file equal to what it writes).
@@ -16,7 +16,7 @@ WORDS: dict[str, tuple[str, ...]] = {
     'keyword': ('address', 'adhoc', 'after', 'at', 'author', 'axis', 'baud', 'bits', 'break', 'centre', 'checksum', 'code', 'collision', 'command', 'damping', 'databits', 'delay', 'description', 'each', 'effort', 'either', 'error', 'escape', 'every', 'expect', 'field', 'format', 'friction', 'from', 'header', 'hex', 'inertia', 'init', 'inverted', 'keepalive', 'length', 'limit', 'lines', 'literal', 'mask', 'mass', 'measure', 'on', 'optional', 'out', 'over', 'pack', 'parity', 'payload', 'periodic', 'poly', 'priority', 'reflect', 'regex', 'replies', 'reply', 'request', 'retry', 'ros', 'rpy', 'seed', 'skip', 'startup', 'stopbits', 'stuff', 'tag', 'terminate', 'terminator', 'threading', 'timeout', 'to', 'triggers', 'trimmed', 'unit', 'unmatched', 'unpack', 'until', 'velocity', 'version', 'visual', 'when', 'width', 'within', 'xor', 'xorout'),
     'type': ('int', 'float', 'bool', 'string', 'bytes'),
     'function': ('abs', 'ascii', 'atan2', 'bitset', 'bool', 'byte', 'clamp', 'cos', 'encode', 'f32be', 'f32le', 'f64be', 'f64le', 'float', 'from_f32be', 'from_f32le', 'from_f64be', 'from_f64le', 'from_nibbles', 'hex', 'hypot', 'int', 'int_be', 'int_le', 'len', 'max', 'min', 'nibbles', 'pack7', 'round', 'sin', 'sqrt', 'str', 'unhex', 'unpack7', 'upper'),
-    'struct_code': ('b', 'c', 'd', 'e', 'f', 'h', 'i', 'l', 'n', 'p', 'q', 's', 'x', 'B', 'H', 'I', 'L', 'N', 'P', 'Q', '?'),
+    'struct_code': ('b', 'c', 'd', 'e', 'f', 'h', 'i', 'l', 'n', 'p', 'q', 's', 'x', 'B', 'H', 'I', 'L', 'N', 'Q', 'Z', '?'),
 }
 
 # The grammar's terminals, as regular expressions.

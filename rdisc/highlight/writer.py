@@ -6,7 +6,7 @@ The words are read from Lark's grammar (grammar/rdis.lark): every keyword, sorte
 the rules that use it (the first word of each declaration, the operators of expressions, the
 boolean literals, the words of a conditional and a `for`, the time units); the number, name,
 comment and operator patterns are the grammar's terminals. The type names are the Model's, the
-built-in functions the engine's, the struct codes those Python's `struct` accepts.
+built-in functions the engine's, the struct codes those the checker's struct formats read.
 `python -m rdisc.highlight.writer --check` (and a test) hold the files equal to what this writes.
 """
 
@@ -15,8 +15,6 @@ from __future__ import annotations
 import argparse
 import json
 import re
-import string
-import struct
 import sys
 from pathlib import Path
 from typing import Any
@@ -32,7 +30,7 @@ Words = dict[str, tuple[str, ...]]
 
 HEADER = '''\
 """The words and token patterns of RDIS, read from grammar/rdis.lark (and the Model's types, the
-engine's functions, `struct`'s codes), for the TextMate grammar and the Pygments lexer.
+engine's functions, the struct codes of rdisc's formats), for the TextMate grammar and the Pygments lexer.
 
 Written by `python -m rdisc.highlight.writer`: do not edit; rerun it after changing the grammar
 (a test holds this file equal to what it writes).
@@ -49,6 +47,7 @@ def _unique(items: list[str]) -> tuple[str, ...]:
 def derive() -> tuple[Words, dict[str, str], tuple[str, ...]]:
     """The grammar's words by kind, its token patterns, and its punctuation (longest first)."""
     from rdisc.engine.operations import FUNCTIONS
+    from rdisc.semantics.formats import struct_codes
     from rdisc.semantics.model import Type
     from rdisc.syntax.parse import lark_parser
 
@@ -87,7 +86,7 @@ def derive() -> tuple[Words, dict[str, str], tuple[str, ...]]:
         "keyword": tuple(w for w in every if w not in sorted_out),
         "type": tuple(t.value for t in Type),
         "function": tuple(sorted(FUNCTIONS)),
-        "struct_code": tuple(c for c in string.ascii_letters + "?" if _struct_code(c)),
+        "struct_code": tuple(struct_codes()),
     }
 
     integer = terminals["INT"].pattern.to_regexp().split("|")  # hexadecimal, binary, octal, decimal
@@ -111,14 +110,6 @@ def derive() -> tuple[Words, dict[str, str], tuple[str, ...]]:
                           if t.pattern.type == "str" and t.name not in {s.name for s in symbols}
                           and not name.fullmatch(str(t.pattern.value))}, key=lambda s: (-len(s), s))
     return words, patterns, tuple(punctuation)
-
-
-def _struct_code(code: str) -> bool:
-    try:
-        struct.calcsize(code)
-    except struct.error:
-        return False
-    return True
 
 
 def write_vocabulary(words: Words, patterns: dict[str, str], punctuation: tuple[str, ...]) -> str:

@@ -28,7 +28,7 @@ else:  # the same classes, their methods written out ahead of time: rdisc/frozen
 
 __all__ = ["MAX_MESSAGE", "MAX_REPEAT", "MOST_WIDTH", "FormatField", "Slot", "StructLayout", "TemplateError", "Varying",
            "bit_span", "format_fields", "format_width", "most_rounds", "regex_groups", "regex_min_length", "spec_accepts",
-           "split_rest", "struct_layout", "text_room", "varying_args", "widest"]
+           "split_rest", "struct_codes", "struct_layout", "text_room", "varying_args", "widest"]
 
 MAX_REPEAT = 4096
 MAX_MESSAGE = 65536  # bytes of one request or reply
@@ -252,6 +252,19 @@ def _code_size(order: str, code: str) -> int:
     code = code.lstrip("%")  # a width field's code; a `%` code at its widest
     return 0 if code == "*" else MOST_WIDTH if code == "" else \
         struct.calcsize(order + (code[:-1] + "s" if code.endswith("Z") else code))
+
+
+def struct_codes() -> str:
+    """The letters a struct format may hold, each a value or a pad byte (`Z` included, `P` not), as
+    `struct_layout` reads them: for the highlighters' colours (rdisc.highlight.writer)."""
+    codes = []
+    for code in string.ascii_letters + "?":
+        try:
+            struct_layout(code)
+        except TemplateError:
+            continue
+        codes.append(code)
+    return "".join(codes)
 
 
 def text_room(code: str) -> int:
