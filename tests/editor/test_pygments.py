@@ -1,8 +1,12 @@
 """The Pygments lexer (`pygmentize -l rdis`) over every example and the standard library: no
 Error token, every keyword, number, string and bytes literal the parser reads has its token type,
-and chosen places have exact ones."""
+and chosen places have exact ones; no Error token in the docs' RDIS blocks either, and any text
+at all lexes into tokens that give it back."""
 
 from __future__ import annotations
+
+import re
+from pathlib import Path
 
 import pytest
 from hypothesis import given, settings
@@ -10,7 +14,7 @@ from hypothesis import strategies as st
 from pygments.token import Comment, Error, Keyword, Name, Number, Operator, Punctuation, String, _TokenType
 
 from rdisc.highlight.pygments_lexer import RdisLexer
-from tests.editor.parsed_tokens import FILES, keyword_kinds, tokens
+from tests.editor.parsed_tokens import FILES, ROOT, keyword_kinds, tokens
 
 LEXER = RdisLexer()
 
@@ -30,7 +34,7 @@ def lexed(text: str) -> dict[tuple[int, int], tuple[_TokenType, str]]:
 
 
 @pytest.mark.parametrize("path", FILES, ids=lambda p: p.name)
-def test_no_error_token_and_every_parsed_token_has_its_type(path) -> None:  # type: ignore[no-untyped-def]
+def test_no_error_token_and_every_parsed_token_has_its_type(path: Path) -> None:
     text = path.read_text(encoding="utf-8")
     assert [value for _, kind, value in LEXER.get_tokens_unprocessed(text) if kind in Error] == []
     found = lexed(text)
@@ -116,3 +120,12 @@ _PIECES = st.sampled_from(['"', 'b"', 'r"', "\\", "\n", " ", "///", "#", "{", "}
 @given(st.lists(_PIECES, max_size=40).map("".join))
 def test_any_text_lexes_into_tokens_that_give_it_back(text: str) -> None:
     assert "".join(value for _, _, value in LEXER.get_tokens_unprocessed(text)) == text
+
+
+def test_the_rdis_blocks_of_the_readme_and_the_docs_have_no_error_token() -> None:
+    """What Sphinx or MkDocs colours: each ```rdis block of the README and docs/."""
+    blocks = [block for doc in (ROOT / "README.md", *sorted((ROOT / "docs").glob("*.md")))
+              for block in re.findall(r"```rdis\n(.*?)```", doc.read_text(encoding="utf-8"), re.DOTALL)]
+    assert len(blocks) > 40
+    assert [(block[:40], value) for block in blocks for _, kind, value in LEXER.get_tokens_unprocessed(block)
+            if kind in Error] == []
