@@ -1,16 +1,24 @@
 """docs/language.md is true where a machine can tell: its examples, put together with the
-few declarations they refer to, check without a diagnostic, and it names every
-diagnostic code, built-in function and catalogue CRC that the checker knows."""
+few declarations they refer to, check without a diagnostic; each complete one (a whole
+description) checks alone and does what the session under it says, byte for byte; and it names
+every diagnostic code, built-in function and catalogue CRC that the checker knows."""
 
 from __future__ import annotations
 
+import ast
 import re
 from pathlib import Path
+from typing import Any
+
+import pytest
 
 from rdisc.compile import compile_path
 from rdisc.diagnostics.codes import CODES
+from rdisc.engine import RdisError
 from rdisc.engine.operations import FUNCTIONS
+from rdisc.runtime import load
 from rdisc.semantics.frames import CATALOGUE
+from tests.support.ports import ScriptedPort
 
 DOC = Path(__file__).resolve().parents[2] / "docs" / "language.md"
 
@@ -49,3 +57,65 @@ def test_it_names_every_code_function_and_catalogue_crc() -> None:
     assert sorted(c for c in CODES if c not in words) == []
     assert sorted(f for f in FUNCTIONS if f not in words) == []
     assert sorted(c for c in CATALOGUE if c not in words) == []
+
+
+# -- complete examples, run ------------------------------------------------------------------------
+
+SESSION = re.compile(r"```rdis complete\n(.*?)```\n(?:\n?```session\n(.*?)```)?", re.DOTALL)
+CALL = re.compile(r"(\w+)\((.*)\)")
+
+
+def complete_examples() -> list[tuple[str, str, str]]:
+    """Each example marked complete (```` ```rdis complete ````): its name (its robot's), its
+    text, and the session under it (```` ```session ````), if any."""
+    found = []
+    for text, session in SESSION.findall(DOC.read_text(encoding="utf-8")):
+        name = re.search(r"^robot (\w+)", text, re.MULTILINE)
+        assert name is not None, f"a complete example declares its robot:\n{text}"
+        found.append((name.group(1), text, session))
+    return found
+
+
+def run_session(robot: Any, port: ScriptedPort, session: str) -> None:
+    """A session's calls, each as its lines say: `name(args)` a primitive or interface called with
+    these literal arguments, `> HEX` what it writes, `< HEX` what the device answers it, then
+    `NAME == VALUE` a state variable after it, or `! ErrorType: message` what it raises."""
+    lines = [line.strip() for line in session.splitlines() if line.strip()]
+    at = 0
+    while at < len(lines):
+        call = CALL.fullmatch(lines[at])
+        assert call is not None, f"a session's line {lines[at]!r} is no call"
+        at += 1
+        said: list[str] = []
+        while at < len(lines) and CALL.fullmatch(lines[at]) is None:
+            said.append(lines[at])
+            at += 1
+        writes = "".join(line[1:] for line in said if line.startswith(">")).split()
+        port.script = bytes.fromhex("".join(line[1:] for line in said if line.startswith("<")))
+        before = len(port.written)
+        name, args = call.group(1), ast.literal_eval(f"({call.group(2)},)") if call.group(2) else ()
+        run = robot.call_primitive if name in robot.device.primitives else robot.call_interface
+        raised = next((line[1:].strip() for line in said if line.startswith("!")), None)
+        try:
+            run(name, *args)
+        except RdisError as err:  # the session says what it raises
+            assert f"{type(err).__name__}: {err}" == raised, f"{lines[at - len(said) - 1]}: {err!r}"
+        else:
+            assert raised is None, f"{call.group(0)} raised nothing, where the session says {raised}"
+        assert port.written[before:].hex(" ").upper().split() == writes, call.group(0)
+        for line in said:
+            if "==" in line:
+                variable, value = (part.strip() for part in line.split("==", 1))
+                assert robot.state[variable] == ast.literal_eval(value), line
+
+
+@pytest.mark.parametrize(("name", "text", "session"), complete_examples(), ids=[n for n, _, _ in complete_examples()])
+def test_a_complete_example_checks_alone_and_runs_its_session(tmp_path: Path, name: str, text: str,
+                                                              session: str) -> None:
+    source = tmp_path / f"{name}.rdis"
+    source.write_text(text, encoding="utf-8")
+    compilation = compile_path(str(source))
+    assert [(d.code, d.message) for d in compilation.diagnostics.items] == []
+    port = ScriptedPort()
+    with load(source).connect(port, threads=False) as robot:
+        run_session(robot, port, session)
