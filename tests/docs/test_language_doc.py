@@ -119,3 +119,63 @@ def test_a_complete_example_checks_alone_and_runs_its_session(tmp_path: Path, na
     port = ScriptedPort()
     with load(source).connect(port, threads=False) as robot:
         run_session(robot, port, session)
+
+
+# -- the operator table, held to the parser --------------------------------------------------------
+
+
+def _binary_rows() -> list[list[str]]:
+    """The binary operators of the table's rows, loosest first (`a if c else b`, `not`, unary
+    operators and `**` left out)."""
+    text = DOC.read_text(encoding="utf-8")
+    table = text[text.index("| operators (loosest first) |") :].split("\n\n", 1)[0]
+    rows = []
+    for line in table.splitlines()[2:]:
+        cell = line.split(" | ")[0].removeprefix("| ")
+        operators = [op.replace("\\|", "|") for op in re.findall(r"`((?:[^`\\]|\\.)+)`", cell)]
+        if operators and all(re.fullmatch(r"[=!<>|^&+\-*/%]+|or|and", op) for op in operators) and operators != ["**"]:
+            rows.append(operators)
+    return rows
+
+
+def _tree(text: str) -> object:
+    """An expression's shape: ("op", left, right) for each binary operation, names as they are."""
+    from rdisc.diagnostics import Diagnostics
+    from rdisc.syntax import ast as syntax
+    from rdisc.syntax.parse import parse_expression
+
+    def shape(e: syntax.Expr) -> object:
+        return (e.op, shape(e.left), shape(e.right)) if isinstance(e, syntax.BinOp) else getattr(e, "name", e)
+
+    parsed = parse_expression("doc", text, 0, Diagnostics())
+    assert parsed is not None, text
+    return shape(parsed)
+
+
+def test_the_operator_table_is_the_parsers_precedence() -> None:
+    """Each row binds tighter than every row above it, and each row's operators group to the
+    left, as the parser reads them (`a | b & c` is `a | (b & c)`, `x & 0x0F == 3` is
+    `(x & 0x0F) == 3`)."""
+    rows = _binary_rows()
+    assert rows[:3] == [["or"], ["and"], ["==", "!=", "<", "<=", ">", ">="]] and len(rows) == 9
+    for i, looser in enumerate(rows):
+        for tighter in rows[i + 1 :]:
+            for a in looser:
+                for b in tighter:
+                    assert _tree(f"x {a} y {b} z") == (a, "x", (b, "y", "z"))
+                    assert _tree(f"x {b} y {a} z") == (a, (b, "x", "y"), "z")
+        for a in looser:
+            for b in looser:
+                assert _tree(f"x {a} y {b} z") == (b, (a, "x", "y"), "z")
+
+
+def test_the_standard_adapter_lists_name_every_standard_adapter() -> None:
+    """README's and this page's lists of the standard adapters are stdlib/adapters.rdis's, each
+    in its order (JointState was missing from both)."""
+    root = DOC.parents[1]
+    declared = re.findall(r"^adapter (\w+)", (root / "stdlib" / "adapters.rdis").read_text(encoding="utf-8"),
+                          re.MULTILINE)
+    for text in (DOC.read_text(encoding="utf-8"), (root / "README.md").read_text(encoding="utf-8")):
+        listed = re.search(r"\(`(?:stdlib/adapters\.rdis`: `)?(DifferentialSpeed`[^)]*)\)", text)
+        assert listed is not None
+        assert re.findall(r"\w+", listed.group(1)) == declared
