@@ -76,37 +76,57 @@ def complete_examples() -> list[tuple[str, str, str]]:
     return found
 
 
-def run_session(robot: Any, port: ScriptedPort, session: str) -> None:
+SETTING = re.compile(r"setting (\w+) = (.+)")
+
+
+def run_session(description: Any, session: str) -> None:
     """A session's calls, each as its lines say: `name(args)` a primitive or interface called with
     these literal arguments, `> HEX` what it writes, `< HEX` what the device answers it, then
-    `NAME == VALUE` a state variable after it, or `! ErrorType: message` what it raises."""
+    `NAME == VALUE` a state variable after it, or `! ErrorType: message` what it raises. Lines
+    `setting NAME = VALUE` connect anew, with those settings, for the calls after them."""
     lines = [line.strip() for line in session.splitlines() if line.strip()]
-    at = 0
-    while at < len(lines):
-        call = CALL.fullmatch(lines[at])
-        assert call is not None, f"a session's line {lines[at]!r} is no call"
-        at += 1
-        said: list[str] = []
-        while at < len(lines) and CALL.fullmatch(lines[at]) is None:
-            said.append(lines[at])
-            at += 1
-        writes = "".join(line[1:] for line in said if line.startswith(">")).split()
-        port.script = bytes.fromhex("".join(line[1:] for line in said if line.startswith("<")))
-        before = len(port.written)
-        name, args = call.group(1), ast.literal_eval(f"({call.group(2)},)") if call.group(2) else ()
-        run = robot.call_primitive if name in robot.device.primitives else robot.call_interface
-        raised = next((line[1:].strip() for line in said if line.startswith("!")), None)
-        try:
-            run(name, *args)
-        except RdisError as err:  # the session says what it raises
-            assert f"{type(err).__name__}: {err}" == raised, f"{lines[at - len(said) - 1]}: {err!r}"
+    runs: list[tuple[dict[str, Any], list[list[str]]]] = [({}, [])]
+    for line in lines:
+        setting = SETTING.fullmatch(line)
+        if setting is not None:
+            if runs[-1][1]:
+                runs.append(({}, []))
+            runs[-1][0][setting.group(1)] = ast.literal_eval(setting.group(2))
+        elif CALL.fullmatch(line) is not None:
+            runs[-1][1].append([line])
         else:
-            assert raised is None, f"{call.group(0)} raised nothing, where the session says {raised}"
-        assert port.written[before:].hex(" ").upper().split() == writes, call.group(0)
-        for line in said:
-            if "==" in line:
-                variable, value = (part.strip() for part in line.split("==", 1))
-                assert robot.state[variable] == ast.literal_eval(value), line
+            assert runs[-1][1], f"a session's line {line!r} comes before any call"
+            runs[-1][1][-1].append(line)
+    for settings, calls in runs:
+        port = ScriptedPort()
+        with description.connect(port, threads=False, settings=settings) as robot:
+            for call, *said in calls:
+                _call(robot, port, call, said)
+
+
+def _call(robot: Any, port: ScriptedPort, call: str, said: list[str]) -> None:
+    """One call of a session, and what its lines say of it."""
+    matched = CALL.fullmatch(call)
+    assert matched is not None
+    writes = "".join(line[1:] for line in said if line.startswith(">")).split()
+    port.script = bytes.fromhex("".join(line[1:] for line in said if line.startswith("<")))
+    before = len(port.written)
+    name, args = matched.group(1), ast.literal_eval(f"({matched.group(2)},)") if matched.group(2) else ()
+    run = robot.call_primitive if name in robot.device.primitives else robot.call_interface
+    raised = next((line[1:].strip() for line in said if line.startswith("!")), None)
+    try:
+        run(name, *args)
+    except RdisError as err:  # the session says what it raises
+        assert f"{type(err).__name__}: {err}" == raised, f"{call}: {err!r}"
+    else:
+        assert raised is None, f"{call} raised nothing, where the session says {raised}"
+    assert port.written[before:].hex(" ").upper().split() == writes, call
+    for line in said:
+        if "==" in line:
+            variable, value = (part.strip() for part in line.split("==", 1))
+            assert robot.state[variable] == ast.literal_eval(value), line
+        else:
+            assert line[:1] in ("<", ">", "!"), f"{call}: a session's line {line!r} says nothing it knows"
 
 
 @pytest.mark.parametrize(("name", "text", "session"), complete_examples(), ids=[n for n, _, _ in complete_examples()])
@@ -116,9 +136,7 @@ def test_a_complete_example_checks_alone_and_runs_its_session(tmp_path: Path, na
     source.write_text(text, encoding="utf-8")
     compilation = compile_path(str(source))
     assert [(d.code, d.message) for d in compilation.diagnostics.items] == []
-    port = ScriptedPort()
-    with load(source).connect(port, threads=False) as robot:
-        run_session(robot, port, session)
+    run_session(load(source), session)
 
 
 # -- the operator table, held to the parser --------------------------------------------------------
