@@ -12,7 +12,7 @@ from typing import Any
 
 from rdisc import engine
 from rdisc.capture import Message
-from rdisc.emit.dump import Layout, held_table, matched, reply_layouts, request_layouts
+from rdisc.emit.dump import Layout, Written, held_table, matched, reply_layouts, request_layouts
 from rdisc.engine.wire import Field, FrameError, Incoming
 from rdisc.semantics import model as m
 
@@ -40,9 +40,9 @@ def decode(model: m.Model, device: engine.Device, messages: Sequence[Message]) -
         lines += held_table(rows, data)
         if said.startswith("error of "):
             lines += _code_named(model, model.primitives[said.removeprefix("error of ").split(",")[0]], rows, data)
-        if regex is not None:  # its groups, as the engine's decoder reads them
+        if regex is not None:  # its groups, as the engine's decoder reads the payload's text
             try:
-                lines.append(f"  out = {list(engine.Match(regex).decode(said, data))!r}")
+                lines.append(f"  out = {list(engine.Match(regex).decode(said, _text_of(rows, data)))!r}")
             except engine.RdisError:
                 pass
     return "\n".join(lines) + "\n" if lines else ""
@@ -97,7 +97,7 @@ class Teller:
     names the primitive of each line of its byte trace with it)."""
 
     def __init__(self, model: m.Model, device: engine.Device) -> None:
-        self.model = model
+        self.model, self.device = model, device
         self.checks = {name: _checks(model, device, name) for name in model.primitives}
         self.requests = {name: request_layouts(model, p, as_read=True) for name, p in model.primitives.items()}
         self.replies = {name: reply_layouts(model, p, as_read=True) for name, p in model.primitives.items()}
@@ -120,12 +120,18 @@ class Teller:
         found: list[_Told] = []
         if message.write:
             self.written[message.connection] = message.data
+            fixes: dict[str, int] = {}  # how much of its text each fitting request's format fixes
             for name in names:
                 data = _as_read(checks[name][0], message.data, b"", self.sizes[name][0])
-                rows = _first(self.requests[name], data)
-                if rows is not None and _whole(checks[name][0], message.data, b""):
-                    found.append((f"request {name}", rows, None, data))
-            found.sort(key=lambda one: not _fixed(checks[one[0].removeprefix("request ")][0]))  # broadcast: *_all
+                first = _first(self.requests[name], data)
+                if first is not None and _whole(checks[name][0], message.data, b""):
+                    fixes[name] = first[1].literal if isinstance(first[1], Written) else 0
+                    found.append((f"request {name}", first[0], None, data))
+            # the most specific first: a format fixing more text ("V" before "{}", which any text fits),
+            # those fixing less not listed; then one whose frame's fields are constants (broadcast: *_all)
+            most = max(fixes.values(), default=0)
+            found = [one for one in found if fixes[one[0].removeprefix("request ")] == most]
+            found.sort(key=lambda one: not _fixed(checks[one[0].removeprefix("request ")][0]))
             if found:
                 name = found[0][0].removeprefix("request ")
                 self.asked[message.connection] = name
@@ -144,7 +150,8 @@ class Teller:
                 data = _as_read(frames, message.data, request, self.sizes[name][1])
                 rows = matched((table, pattern), data)
                 if rows is not None and _whole(frames, message.data, request,
-                                               carried if name == before and frames is checks[name][1] else None):
+                                               carried if name == before and frames is checks[name][1] else None) \
+                        and self._as_said(name, said, message.data, request):
                     found.append((f"{said} of {name}", rows, pattern if isinstance(pattern, str) else None, data))
         if found and found[0][0].endswith(f" of {before}"):  # the request's own reply: no other is meant
             return found[:1]
@@ -153,10 +160,38 @@ class Teller:
             data = _as_read(checks[before][1], message.data, request, self.sizes[before][1])
             for said, (table, pattern) in replies[before]:
                 rows = matched((table, pattern), data)
-                if rows is not None and _whole(checks[before][1], message.data, request):
+                if rows is not None and _whole(checks[before][1], message.data, request) \
+                        and self._as_said(before, said, message.data, request):
                     wrong = _misread(checks[before][1], message.data, request, carried)
                     return [(f"{said} of {before}, but {wrong}", rows, None, data)]
         return found
+
+    def _as_said(self, name: str, said: str, sent: bytes, request: bytes) -> bool:
+        """Whether a reply of `name` that fits the table `said` is what it says: under `error when
+        COND`, the reply is its `error` when the condition holds over its values as the engine
+        decodes them (the call's arguments unknown: a condition over them is not held), else its
+        `reply`; any other table, as it fits."""
+        plan = self.device.primitives[name]
+        reply = plan.reply
+        if said not in ("reply", "error") or not isinstance(reply, (engine.FixedReply, engine.FramedReply)) \
+                or reply.error is None or reply.error.when is None:
+            return True
+        when, refused = reply.error.when, False
+        if isinstance(reply.decoder, engine.Unpack):
+            payload = sent
+            any_fields: Any = _Fields()
+            for frame, _ in self.checks[name][1]:  # the payload, as the frame reads it
+                try:
+                    payload = frame.read(_Bytes(sent), any_fields, request, self.sizes[name][1])[1]
+                    break
+                except (FrameError, engine.RdisError, struct.error, ValueError, IndexError, TypeError):
+                    continue
+            try:
+                values = reply.decoder.decode(name, payload)
+                refused = bool(when(self.device.state, [None] * len(plan.params), values))
+            except (engine.RdisError, struct.error, *engine.EVAL_ERRORS):
+                pass
+        return refused == (said == "error")
 
 
 def _sizes(plan: engine.Primitive) -> tuple[int, int]:
@@ -221,8 +256,19 @@ def _code_named(model: m.Model, p: m.Primitive, rows: list[tuple[int, str, str]]
     return []
 
 
-def _first(layouts: list[Layout], data: bytes) -> list[tuple[int, str, str]] | None:
-    return next((rows for layout in layouts if (rows := matched(layout, data)) is not None), None)
+def _text_of(rows: list[tuple[int, str, str]], data: bytes) -> bytes:
+    """The bytes of a message's text (its payload's, without a frame's header and terminator)."""
+    offset = 0
+    for size, what, _ in rows:
+        if what in ("text", "payload text"):
+            return data[offset : offset + size]
+        offset += size
+    return data
+
+
+def _first(layouts: list[Layout], data: bytes) -> tuple[list[tuple[int, str, str]], str | Written | None] | None:
+    """The rows of the first layout that fits `data`, and that layout's pattern."""
+    return next(((rows, layout[1]) for layout in layouts if (rows := matched(layout, data)) is not None), None)
 
 
 class _Whatever:

@@ -8,13 +8,16 @@ decimal value after it: `84 (132)`), text as RDIS spells it (`"\\r\\n"` escaped)
 from __future__ import annotations
 
 import re
+import string
 import struct
 import sys
 from collections.abc import Callable
+from dataclasses import dataclass
 
 from rdisc.emit.canonical import expression_text, range_written
 from rdisc.engine.wire import Bits
 from rdisc.semantics import model as m
+from rdisc.semantics.formats import format_width
 from rdisc.syntax.printer import spell_template
 
 
@@ -450,9 +453,37 @@ def held_table(rows: list[tuple[int, str, str]], data: bytes) -> list[str]:
     return lines
 
 
-Layout = tuple[list[Row], str | tuple[str, ...] | None]
-"""A message's rows, and what its text must be: a reply's regular expression, or a request
-format's literal pieces (in order, the values between them)."""
+@dataclass(frozen=True, slots=True)
+class Written:
+    """What a request's `format` can write, as decode holds a text against it: its literal
+    pieces in order (the fields' text between them) and the fewest characters its fields write
+    (their widths: `{:03X}` at least 3)."""
+
+    pieces: tuple[str, ...]
+    least: int
+
+    @classmethod
+    def of(cls, template: str) -> Written:
+        pieces, least = [""], 0
+        for literal, name, spec, _ in string.Formatter().parse(template):  # checked: it parses
+            pieces[-1] += literal
+            if name is not None:
+                least += format_width(spec or "")
+                pieces.append("")
+        return cls(tuple(pieces), least)
+
+    @property
+    def literal(self) -> int:
+        """How many characters of a text it fixes: the more, the more specific (`"V"` before `"{}"`)."""
+        return sum(len(piece) for piece in self.pieces)
+
+    def holds(self, text: str) -> bool:
+        return len(text) >= self.literal + self.least and _pieces_in_order(self.pieces, text)
+
+
+Layout = tuple[list[Row], str | Written | None]
+"""A message's rows, and what its text must be: a reply's regular expression, or what a
+request's format can write."""
 
 
 def request_layouts(model: m.Model, p: m.Primitive, as_read: bool = False) -> list[Layout]:
@@ -466,7 +497,7 @@ def request_layouts(model: m.Model, p: m.Primitive, as_read: bool = False) -> li
         return []
     pattern = None
     if isinstance(p.encoding, m.Format):  # a text: its literal pieces, any text for each `{}`
-        pattern = tuple(re.split(r"\{[^{}]*\}", p.encoding.template))
+        pattern = Written.of(p.encoding.template)
     payload = _payload_rows(p.encoding, p.args)
     return [(_layout_rows(parts, payload, False)[0], pattern)
             for parts in (frame.requests if frame is not None else (None,))]
@@ -520,22 +551,23 @@ _CONSTANT = re.compile(r"([0-9A-F]{2}(?: [0-9A-F]{2})*)(?: \(-?\d+\))?")
 
 def matched(layout: Layout, data: bytes) -> list[tuple[int, str, str]] | None:
     """The layout's rows sized to `data` when its bytes can be that message: every constant
-    (header, constant values) the bytes it says, a text matching its pattern; else None."""
+    (header, constant values) the bytes it says, its text (the payload's, without the frame's
+    header and terminator) one its pattern matches; else None."""
     rows, pattern = layout
-    text = data.decode("latin-1")
-    if isinstance(pattern, tuple) and not _pieces_in_order(pattern, text):
-        return None
-    if isinstance(pattern, str):
-        try:
-            if re.match(pattern, text, re.DOTALL) is None:  # a regex as the engine's `Match` reads it
-                return None
-        except re.error:
-            return None
     sized = _sized(rows, len(data))
     if sized is None:
         return None
     offset = 0
     for size, what, detail in sized:
+        if what in ("text", "payload text") and pattern is not None:
+            text = data[offset : offset + size].decode("latin-1")
+            if isinstance(pattern, Written) and not pattern.holds(text):
+                return None
+            try:
+                if isinstance(pattern, str) and re.match(pattern, text, re.DOTALL) is None:  # as `Match` reads it
+                    return None
+            except re.error:
+                return None
         constant = _CONSTANT.fullmatch(detail)
         if constant is not None and data[offset : offset + size] != bytes.fromhex(constant.group(1)):
             return None

@@ -354,3 +354,72 @@ def test_lines_read_together_are_cut_as_the_engine_reads_them(rdisc, tmp_path: P
         "       5     1  terminator            0D                                          0D",
         "  out = ['10', '13']",
     ]
+
+
+def test_slcan_commands_are_named_by_the_format_that_fixes_most_of_their_text(rdisc, tmp_path: Path) -> None:
+    """`V` is the version request, `O` the open, though `rate`'s `"{}"` (any text) fits them too:
+    the format fixing more of a text names it, one fixing less is not listed; `S6` fits two `"{}"`
+    formats alike (no CAN FD frame: `{:03X}` writes three digits at least), both named."""
+    capture = tmp_path / "slcan.txt"
+    capture.write_text("> 56 0D\n< 56 31 30 31 33 0D\n> 4F 0D\n> 53 36 0D\n")
+    assert decode(rdisc, "slcan.rdis", capture) == [
+        "> 56 0D",
+        "  request version",
+        HEAD,
+        '       0     1  payload text          "V"                           "V"           56',
+        "       1     1  terminator            0D                                          0D",
+        "< 56 31 30 31 33 0D",
+        "  reply of version",
+        HEAD,
+        '       0     5  payload text          regex r"^V(\\d\\d)(\\d\\d)"       "V1013"       56 31 30 31 33',
+        "       5     1  terminator            0D                                          0D",
+        "  out = ['10', '13']",
+        "> 4F 0D",
+        "  request open",
+        HEAD,
+        '       0     1  payload text          "O"                           "O"           4F',
+        "       1     1  terminator            0D                                          0D",
+        "> 53 36 0D",
+        "  request rate (also fits: data_rate)",
+        HEAD,
+        '       0     2  payload text          "{}" (BITRATES[bitrate])      "S6"          53 36',
+        "       2     1  terminator            0D                                          0D",
+    ]
+
+
+def test_a_tmcl_refusal_is_the_error_of_its_request(rdisc, tmp_path: Path) -> None:
+    """TMCL's `error when out[0] < 100 code Status`: a reply of status 100 is the reply; one of
+    status 4 is the device's error, its code named as the runtime's RdisDeviceError names it."""
+    capture = tmp_path / "tmcl.txt"
+    capture.write_text("> 01 05 01 00 00 00 00 00 07\n< 02 01 64 05 00 00 00 00 6C\n< 02 01 04 05 00 00 00 00 0C\n")
+    host, module = ('       0     1  field host            "B" = host                    2             02',
+                    '       1     1  field module          "B" = module                  1             01')
+    rest = ["       3     1  payload u8            out[1]                        5             05",
+            "       4     4  payload s32 BE        out[2]                        0             00 00 00 00"]
+    assert decode(rdisc, "tmcl.rdis", capture)[9:] == [
+        "< 02 01 64 05 00 00 00 00 6C",
+        "  reply of set_axis_parameter",
+        HEAD, host, module,
+        "       2     1  payload u8            out[0]                        100           64",
+        *rest,
+        "       8     1  checksum              sum as B, over host .. payload                6C",
+        "< 02 01 04 05 00 00 00 00 0C",
+        "  error of set_axis_parameter",
+        HEAD, host, module,
+        "       2     1  payload u8            code, named by Status         4             04",
+        *rest,
+        "       8     1  checksum              sum as B, over host .. payload                0C",
+        "  error 4: INVALID_VALUE",
+    ]
+
+
+def test_an_nmea_sentence_is_held_against_its_regex_between_dollar_and_star(rdisc, tmp_path: Path) -> None:
+    """A framed text reply's regex is the payload's (as the engine's `Match` reads it), not the
+    whole frame's: the `$` header and the `*47` checksum are the frame's."""
+    sentence = b"$GPGGA,123519,4807.038,N,01131.000,E,1,08,0.9,545.4,M,46.9,M,,*47\r\n"
+    capture = tmp_path / "nmea.txt"
+    capture.write_text(f"< {sentence.hex(' ')}\n")
+    lines = decode(rdisc, "nmea.rdis", capture)
+    assert lines[1] == "  reply of gga"
+    assert lines[-1] == ("  out = ['GP', '123519', '4807.038', 'N', '01131.000', 'E', '1', '08', '0.9', '545.4', "
+                         "'46.9', '', '']")

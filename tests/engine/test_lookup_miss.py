@@ -99,3 +99,28 @@ def test_a_framed_tagged_reply_whose_lookup_misses_is_read_past(kind: str, tmp_p
         robot.call_primitive("feedback")
         assert (robot.state["mode"], robot.state["raw"]) == ("idle", 6)
     assert bytes(port.written) == bytes.fromhex("aa 01 4d  aa 01 4d  aa 01 46")
+
+
+PLAIN = """\
+robot plain { author "tests" }
+connection link: serial { baud 9600 }
+const MODE = { 1: "idle", 2: "run" }
+state mode: string = ""
+/// No frame, no retry: a plain exchange, read and decoded in one step.
+primitive read() on link pack "B" (0x4D) unpack "B" { mode = MODE[out[0]] }
+"""
+
+
+@pytest.mark.parametrize("kind", ["runtime", "driver"])
+def test_a_lookup_miss_in_a_plain_exchange_is_a_protocol_error_too(kind: str, tmp_path: Path) -> None:
+    """The one-step read of a plain exchange (no frame, a fixed size) says a miss as the general
+    way does (it said an RdisValueError, as if a value the host computed were wrong)."""
+    port = ScriptedPort(bytes.fromhex("02 07"))
+    with implementation_of(kind, PLAIN, tmp_path, "plain").connect(port, threads=False) as robot:
+        robot.call_primitive("read")
+        assert robot.state["mode"] == "run"
+        with pytest.raises(Exception) as caught:
+            robot.call_primitive("read")
+        assert (type(caught.value).__name__, str(caught.value)) == (
+            "RdisProtocolError", "read: reply (7,): table MODE has no entry for 7")
+        assert robot.state["mode"] == "run"

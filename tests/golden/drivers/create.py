@@ -3476,6 +3476,8 @@ class Exchange:
             state = self._state
             try:
                 changes = plan.actions(state, local, reply)  # type: ignore[misc]  # the caller's test
+            except LookupMiss as err:  # a reply this primitive cannot read (a plain exchange's: `_ask`)
+                raise RdisProtocolError(f"{plan.name}: reply {tuple(reply)!r}: {err}") from None
             except EVAL_ERRORS as err:
                 raise RdisValueError(f"{plan.name}: {err}") from None
             if plan.checked:
