@@ -136,7 +136,9 @@ def make_server() -> RdisServer:
     @server.feature(types.TEXT_DOCUMENT_COMPLETION,
                     types.CompletionOptions(trigger_characters=[".", '"', "(", " ", ","]))
     def complete(ls: RdisServer, params: types.CompletionParams) -> types.CompletionList:
-        return completion.complete(ls.analysis(params.text_document.uri), params.position)
+        document = ls.documents.documents.get(params.text_document.uri)
+        return completion.complete(ls.analysis(params.text_document.uri), params.position,
+                                   document.good if document else None)
 
     return server
 
