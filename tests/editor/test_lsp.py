@@ -231,3 +231,18 @@ async def test_hostile_documents_leave_the_server_answering(client: LanguageClie
             text_document=types.TextDocumentIdentifier(uri=uri), position=types.Position(line=1, character=10)))
     uri = await opened(client, tmp_path, "after.rdis", BOT)
     assert list(client.diagnostics[uri]) == []
+
+
+async def test_a_change_to_an_imported_file_rechecks_the_open_files_importing_it(
+        client: LanguageClient, tmp_path: Path) -> None:
+    library = 'connection link: serial { baud 9600 }\nprimitive ping() on link pack "B" (1)\n'
+    lib = await opened(client, tmp_path, "lib.rdis", library)
+    main = await opened(client, tmp_path, "main.rdis",
+                        'import "lib.rdis"\nrobot r { author "me" }\ninterface hello() { ping() }\n')
+    assert list(client.diagnostics[main]) == []
+    client.diagnostics.pop(main)
+    await changed(client, lib, library.replace("ping", "pong"), 2)  # not saved: the editor's text is read
+    while main not in client.diagnostics:
+        await client.wait_for_notification(types.TEXT_DOCUMENT_PUBLISH_DIAGNOSTICS)
+    assert [(d.code, d.range.start.line, d.message) for d in client.diagnostics[main]] == [
+        ("E102", 2, "unknown primitive or interface `ping`")]
