@@ -74,11 +74,13 @@ class Workspace:
         return document.analysis
 
     def check(self, uri: str) -> list[Document]:
-        """Check the document and every open document that imports it: those to publish."""
+        """Check the document (unless a question since its change did) and every open document
+        that imports it: those to publish."""
         document = self.documents.get(uri)
         if document is None:
             return []
-        self._check(document)
+        if document.analysis is None:
+            self._check(document)
         changed = document.real_path
         importers = [d for d in self.documents.values()
                      if d is not document and d.analysis is not None and changed in d.analysis.files]

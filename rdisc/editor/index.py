@@ -267,35 +267,44 @@ class _Uses:
         """Every use of a name inside `node` (a node, a tuple of them, or None), iteratively:
         expressions are as deep as the parser allows."""
         stack = [node]
+        pop, push = stack.pop, stack.extend
         while stack:
-            item = stack.pop()
-            if item is None or isinstance(item, (str, int, float, bytes, Span, ast.Ident)):
+            item = pop()
+            kind = type(item)
+            if kind in _LEAVES:
                 continue
-            if isinstance(item, tuple):
-                stack.extend(item)
+            if kind is tuple:
+                push(item)  # type: ignore[arg-type]
                 continue
-            match item:
-                case ast.Ref(name=name):
-                    symbol = scope.get(name) or self.index.lookup(READ, name)
-                    if symbol is not None:
-                        self.index.add(item.span, symbol)
-                    continue
-                case ast.Member():
-                    self.member_of(self.use(item.enum, ("enum",)), item.member)
-                    continue
-                case ast.MethodCall():
-                    self.use(item.base, ("constant",))
-                    stack.extend(item.args)
-                    continue
-                case ast.Framed():
-                    self.use(item.frame, ("frame",))
-                    stack.extend(item.args)
-                    continue
-                case ast.ErrorReply():
-                    self.use(item.codes, ("enum",))
-                case ast.Assign():  # a post-action's target: a state variable
-                    self.use(item.target, ("state variable",))
-            stack.extend(getattr(item, slot) for slot in _slots(type(item)))
+            if kind is ast.Ref:
+                assert isinstance(item, ast.Ref)
+                symbol = scope.get(item.name) or self.index.lookup(READ, item.name)
+                if symbol is not None:
+                    self.index.add(item.span, symbol)
+                continue
+            if kind is ast.Member:
+                assert isinstance(item, ast.Member)
+                self.member_of(self.use(item.enum, ("enum",)), item.member)
+                continue
+            if kind is ast.MethodCall:
+                assert isinstance(item, ast.MethodCall)
+                self.use(item.base, ("constant",))
+            elif kind is ast.Framed:
+                assert isinstance(item, ast.Framed)
+                self.use(item.frame, ("frame",))
+            elif kind is ast.ErrorReply:
+                assert isinstance(item, ast.ErrorReply)
+                self.use(item.codes, ("enum",))
+            elif kind is ast.Assign:  # a post-action's target: a state variable
+                assert isinstance(item, ast.Assign)
+                self.use(item.target, ("state variable",))
+            slots = _SLOTS.get(kind) or _slots(kind)
+            push([getattr(item, slot) for slot in slots])
+
+
+_LEAVES = frozenset([type(None), str, int, float, bool, bytes, Span, ast.Ident, ast.IntLit, ast.FloatLit, ast.StrLit,
+                     ast.BytesLit, ast.BoolLit])
+"""What holds no name: skipped by the walk."""
 
 
 _SLOTS: dict[type, tuple[str, ...]] = {}

@@ -74,7 +74,7 @@ def make_server() -> RdisServer:
 
     @server.feature(types.TEXT_DOCUMENT_DID_SAVE)
     def did_save(ls: RdisServer, params: types.DidSaveTextDocumentParams) -> None:
-        if params.text_document.uri in ls.documents.documents:
+        if params.text_document.uri in ls.documents.documents:  # no wait: the change is done
             ls.refresh(params.text_document.uri)
 
     @server.feature(types.TEXT_DOCUMENT_DID_CLOSE)
