@@ -1,0 +1,75 @@
+"""The language server's answering modules in process (no client): semantic tokens, folding,
+references and highlights, an adapter's hover, and a quick fix inside a string."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from lsprotocol import types
+
+from rdisc.editor import actions, hover, navigation, symbols
+from rdisc.editor.diagnostics import published
+from rdisc.editor.documents import Analysis, Workspace
+from tests.editor.test_lsp import BOT, at
+
+
+def analysed(tmp_path: Path, text: str) -> tuple[Workspace, str, Analysis]:
+    path = tmp_path / "bot.rdis"
+    workspace = Workspace()
+    workspace.open(path.as_uri(), str(path), text, 1)
+    found = workspace.analysis(path.as_uri())
+    assert found is not None
+    return workspace, path.as_uri(), found
+
+
+def test_semantic_tokens_say_what_each_name_is(tmp_path: Path) -> None:
+    _, _, analysis = analysed(tmp_path, BOT)
+    data, lines = symbols.semantic_tokens(analysis).data, BOT.splitlines()
+    tokens, line, column = [], 0, 0
+    for i in range(0, len(data), 5):
+        down, across, length, kind, modifiers = data[i : i + 5]
+        line, column = line + down, across if down else column + across
+        tokens.append((lines[line][column : column + length], symbols.TOKEN_TYPES[kind], modifiers))
+    declaration, standard = 1, 4
+    assert tokens[:4] == [("bot", "namespace", declaration), ("speed", "variable", declaration),
+                          ("link", "namespace", declaration), ("pkt", "type", declaration)]
+    assert ("set_speed", "function", 0) in tokens and ("velocity", "parameter", 0) in tokens
+    assert tokens[-7:] == [("DifferentialSpeed", "struct", standard), ("drive", "method", 0),
+                           ("linear", "property", standard), ("reported", "event", declaration),
+                           ("Range", "struct", standard), ("distance", "property", standard), ("speed", "variable", 0)]
+
+
+def test_folding_references_and_highlights(tmp_path: Path) -> None:
+    _, uri, analysis = analysed(tmp_path, BOT)
+    assert [(f.start_line, f.end_line) for f in symbols.folding_ranges(analysis)] == [
+        (5, 7), (10, 16), (19, 22), (24, 26), (30, 32)]
+    place = at(BOT, "state speed", "speed")
+    uses = [(p.uri, p.range.start.line) for p in navigation.references(analysis, place, True, [])]
+    assert uses == [(uri, 3), (uri, 21), (uri, 31)]
+    assert [p.range.start.line for p in navigation.references(analysis, place, False, [])] == [21, 31]
+    marks = navigation.highlights(analysis, at(BOT, "set_speed(round", "set_speed"))
+    assert [(m.range.start.line, m.kind) for m in marks] == [
+        (19, types.DocumentHighlightKind.Write), (25, types.DocumentHighlightKind.Read)]
+
+
+def test_hover_on_an_adapter_lists_its_fields(tmp_path: Path) -> None:
+    _, _, analysis = analysed(tmp_path, BOT)
+    found = hover.hover(analysis, None, at(BOT, "output reported: Range", "Range"))
+    assert found is not None and isinstance(found.contents, types.MarkupContent)
+    assert found.contents.value.startswith("```rdis\nadapter Range\n```\n\n"
+                                           "declared in the standard library (stdlib/adapters.rdis)\n\n")
+    assert found.contents.value.endswith('fields:\n\n- `distance: float unit "m" ros "range"`: '
+                                         "Distance from the sensor to the obstacle.")
+
+
+def test_a_misspelt_unit_is_fixed_inside_its_quotes(tmp_path: Path) -> None:
+    bad = BOT.replace('unit "mm/s"', 'unit "mm/z"')
+    workspace, uri, analysis = analysed(tmp_path, bad)
+    document = workspace.documents[uri]
+    [diagnostic] = published(document, analysis)
+    assert diagnostic.code == "E109"
+    [fix] = actions.quick_fixes(uri, analysis.source, [diagnostic])
+    assert fix.edit is not None and fix.edit.changes is not None
+    [edit] = fix.edit.changes[uri]
+    start = at(bad, '"mm/z"', "mm/z")
+    assert (edit.range.start, edit.range.end.character, edit.new_text) == (start, start.character + 4, "mm/s")
