@@ -97,6 +97,8 @@ def _names(analysis: Analysis, good: Analysis | None, index: Index, accepted: se
         return _expression_names(index, owner, keyword, good)
     if keyword == "interface" and last in ("LBRACE", "RBRACE", "RPAR", "INT", "NAME", "FLOAT", "MS", "S"):
         return _globals(index, ("primitive", "interface"))
+    if keyword == "primitive":  # a post-action's target (or a reply table's key)
+        return _globals(index, ("state variable",)) + [_item(s) for s in _members(owner)]
     if keyword == "output" and owner is not None:
         return [_item(s) for s in _members(_adapter_of(index, good, owner))]
     if last == "COLON":  # a parameter's or variable's type

@@ -1,13 +1,15 @@
 """The language server's answering modules in process (no client): semantic tokens, folding,
-references and highlights, an adapter's hover, and a quick fix inside a string."""
+references and highlights, an adapter's hover, a quick fix inside a string, and what completion
+offers where."""
 
 from __future__ import annotations
 
 from pathlib import Path
 
+import pytest
 from lsprotocol import types
 
-from rdisc.editor import actions, hover, navigation, symbols
+from rdisc.editor import actions, completion, hover, navigation, symbols
 from rdisc.editor.diagnostics import published
 from rdisc.editor.documents import Analysis, Workspace
 from tests.editor.test_lsp import BOT, at
@@ -73,3 +75,29 @@ def test_a_misspelt_unit_is_fixed_inside_its_quotes(tmp_path: Path) -> None:
     [edit] = fix.edit.changes[uri]
     start = at(bad, '"mm/z"', "mm/z")
     assert (edit.range.start, edit.range.end.character, edit.new_text) == (start, start.character + 4, "mm/s")
+
+
+@pytest.mark.parametrize(("written", "offered", "not_offered"), [
+    ("input cmd: DifferentialSpeed -> drive(|linear)", {"linear", "angular", "speed"}, {"set_speed"}),
+    ('value: int in -500..500 unit "m|m/s"', {"mm/s", "rad/s"}, {"speed"}),
+    ('checksum "x|or"', {"xor", "crc16-modbus", "crc32"}, {"B"}),
+    ('pack "<|h" (value)', {"<", "h", "B"}, {"xor"}),
+    ("on link| frame", {"link"}, {"pkt", "speed"}),
+    ("frame p|kt(1)", {"pkt"}, {"link"}),
+    ("    dist|ance = speed", {"distance"}, {"linear"}),
+    ("    set_sp|eed(round", {"set_speed", "drive"}, {"speed"}),
+    ("(value) unpack \"<h\" {\n    sp|eed = out[0]", {"speed"}, {"set_speed"}),
+    ('on link frame pkt(1)\n    p|ack "<h"', {"pack", "unpack", "format", "reply", "expect"}, {"baud", "speed"}),
+    ("\n\ninput| cmd", {"input", "output", "primitive", "frame"}, {"baud", "speed"}),
+])
+def test_completion_offers_what_the_place_takes(tmp_path: Path, written: str, offered: set[str],
+                                                not_offered: set[str]) -> None:
+    text = BOT.replace(written.replace("|", ""), written)
+    assert text.count("|") == 1, written
+    cursor = text.index("|")
+    text = text[:cursor] + text[cursor + 1 :]
+    _, _, analysis = analysed(tmp_path, text)
+    before = text[:cursor]
+    place = types.Position(line=before.count("\n"), character=cursor - (before.rfind("\n") + 1))
+    labels = {item.label for item in completion.complete(analysis, place).items}
+    assert offered <= labels and not labels & not_offered, sorted(labels)
