@@ -46,7 +46,8 @@ def definition(analysis: Analysis, at: types.Position) -> list[types.Location]:
 
 
 def _everywhere(analysis: Analysis, symbol: Symbol, others: list[Analysis]) -> list[tuple[Analysis, Occurrence]]:
-    """The symbol's occurrences in this document's compilation and in the others', each place once."""
+    """The symbol's occurrences in this document's compilation and in the others', each place once,
+    by file and place."""
     seen: set[tuple[str, int]] = set()
     found = []
     for each in [analysis, *others]:
@@ -57,7 +58,7 @@ def _everywhere(analysis: Analysis, symbol: Symbol, others: list[Analysis]) -> l
             if place not in seen:
                 seen.add(place)
                 found.append((each, occurrence))
-    return found
+    return sorted(found, key=lambda pair: (pair[1].span.path, pair[1].span.start))
 
 
 def references(analysis: Analysis, at: types.Position, declaration: bool,

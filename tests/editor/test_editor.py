@@ -101,3 +101,22 @@ def test_completion_offers_what_the_place_takes(tmp_path: Path, written: str, of
     place = types.Position(line=before.count("\n"), character=cursor - (before.rfind("\n") + 1))
     labels = {item.label for item in completion.complete(analysis, place).items}
     assert offered <= labels and not labels & not_offered, sorted(labels)
+
+
+def test_references_and_rename_reach_across_imports(tmp_path: Path) -> None:
+    library = 'connection link: serial { baud 9600 }\nprimitive ping() on link pack "B" (1)\n'
+    main = 'import "lib.rdis"\nrobot r { author "me" }\ninterface hello() { ping() }\n'
+    (tmp_path / "lib.rdis").write_text(library, encoding="utf-8")
+    workspace = Workspace()
+    for name, text in (("lib.rdis", library), ("main.rdis", main)):
+        workspace.open((tmp_path / name).as_uri(), str(tmp_path / name), text, 1)
+    lib_uri, main_uri = (tmp_path / "lib.rdis").as_uri(), (tmp_path / "main.rdis").as_uri()
+    analysis, other = workspace.analysis(main_uri), workspace.analysis(lib_uri)
+    assert analysis is not None and other is not None
+    place = at(main, "hello", "ping")
+    assert [(p.uri, p.range.start.line) for p in navigation.references(analysis, place, True, [other])] == [
+        (lib_uri, 1), (main_uri, 2)]
+    edit = navigation.rename(analysis, place, "pong", [other])
+    assert edit.changes is not None
+    assert {uri: [(e.range.start.line, e.range.start.character, e.new_text) for e in edits]
+            for uri, edits in edit.changes.items()} == {lib_uri: [(1, 10, "pong")], main_uri: [(2, 20, "pong")]}
