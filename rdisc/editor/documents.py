@@ -61,8 +61,17 @@ class Workspace:
             document.text, document.version, document.analysis = text, version, None
         return document
 
-    def close(self, uri: str) -> None:
-        self.documents.pop(uri, None)
+    def close(self, uri: str) -> list[Document]:
+        """Forget a document; the open documents importing it, checked again (its file is read
+        now, not its text): those to publish."""
+        document = self.documents.pop(uri, None)
+        if document is None:
+            return []
+        importers = [d for d in self.documents.values() if d.analysis is not None
+                     and document.real_path in d.analysis.files]
+        for importer in importers:
+            self._check(importer)
+        return importers
 
     def analysis(self, uri: str) -> Analysis | None:
         """The check of the document's text as it is now (made now if it changed since)."""

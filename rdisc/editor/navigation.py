@@ -10,6 +10,7 @@ renamed name would then be confused with; and for a name of the stdlib, which no
 from __future__ import annotations
 
 import re
+from pathlib import Path
 
 from lsprotocol import types
 
@@ -40,9 +41,23 @@ def _location(analysis: Analysis, occurrence: Occurrence | Symbol) -> types.Loca
 
 
 def definition(analysis: Analysis, at: types.Position) -> list[types.Location]:
+    """Where the name at `at` is declared; on an `import`, the file it imports."""
     found = found_at(analysis, at)
-    place = _location(analysis, found.symbol) if found is not None else None
+    if found is None:
+        return _imported(analysis, positions.offset(analysis.source, at))
+    place = _location(analysis, found.symbol)
     return [place] if place is not None else []
+
+
+def _imported(analysis: Analysis, offset: int) -> list[types.Location]:
+    main = analysis.compilation.main
+    for decl in main.decls if main is not None else ():
+        if isinstance(decl, ast.ImportDecl) and decl.span.start <= offset <= decl.span.end:
+            path = str(Path(decl.span.path).parent / decl.path)
+            if path in analysis.compilation.sources:  # read, so allowed and there
+                start = types.Position(line=0, character=0)
+                return [types.Location(uri=positions.uri_of(path), range=types.Range(start=start, end=start))]
+    return []
 
 
 def _everywhere(analysis: Analysis, symbol: Symbol, others: list[Analysis]) -> list[tuple[Analysis, Occurrence]]:

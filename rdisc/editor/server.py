@@ -19,7 +19,7 @@ from pygls.lsp.server import LanguageServer
 from rdisc import __version__
 from rdisc.editor import actions, completion, hover, navigation, positions, symbols
 from rdisc.editor.diagnostics import published
-from rdisc.editor.documents import Analysis, Workspace
+from rdisc.editor.documents import Analysis, Document, Workspace
 
 DEBOUNCE_S = 0.15  # a pause in typing this long, and the document is checked
 T = TypeVar("T")
@@ -37,7 +37,10 @@ class RdisServer(LanguageServer):
         pending = self.pending.pop(uri, None)
         if pending is not None:
             pending.cancel()
-        for document in self.documents.check(uri):
+        self.publish(self.documents.check(uri))
+
+    def publish(self, documents: list[Document]) -> None:
+        for document in documents:
             assert document.analysis is not None
             self.text_document_publish_diagnostics(types.PublishDiagnosticsParams(
                 uri=document.uri, version=document.version, diagnostics=published(document, document.analysis)))
@@ -83,8 +86,8 @@ def make_server() -> RdisServer:
         pending = ls.pending.pop(uri, None)
         if pending is not None:
             pending.cancel()
-        ls.documents.close(uri)
         ls.text_document_publish_diagnostics(types.PublishDiagnosticsParams(uri=uri, diagnostics=[]))
+        ls.publish(ls.documents.close(uri))
 
     @server.feature(types.TEXT_DOCUMENT_CODE_ACTION,
                     types.CodeActionOptions(code_action_kinds=[types.CodeActionKind.QuickFix]))

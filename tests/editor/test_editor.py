@@ -120,3 +120,17 @@ def test_references_and_rename_reach_across_imports(tmp_path: Path) -> None:
     assert edit.changes is not None
     assert {uri: [(e.range.start.line, e.range.start.character, e.new_text) for e in edits]
             for uri, edits in edit.changes.items()} == {lib_uri: [(1, 10, "pong")], main_uri: [(2, 20, "pong")]}
+    assert [p.uri for p in navigation.definition(analysis, at(main, "import", "lib.rdis"))] == [lib_uri]
+    workspace.change(lib_uri, library.replace("ping", "pong"), 2)
+    workspace.check(lib_uri)
+    changed = workspace.documents[main_uri].analysis
+    assert changed is not None and [d.code for d in changed.compilation.diagnostics.items] == ["E102"]
+    assert [d.uri for d in workspace.close(lib_uri)] == [main_uri]  # read from its file again
+    again = workspace.documents[main_uri].analysis
+    assert again is not None and again.compilation.diagnostics.items == []
+
+
+def test_a_name_of_the_stdlib_is_not_renamed(tmp_path: Path) -> None:
+    _, _, analysis = analysed(tmp_path, BOT)
+    with pytest.raises(navigation.Refused, match=r"^`Range` is declared in the standard library"):
+        navigation.rename(analysis, at(BOT, "output reported: Range", "Range"), "Distance", [])
