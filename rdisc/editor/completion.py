@@ -204,6 +204,13 @@ def _in_string(before: str) -> list[types.CompletionItem]:
     return []
 
 
+def warm() -> None:
+    """Make the grammar's parser (Lark's, about a tenth of a second) before the first completion needs it."""
+    from rdisc.syntax.parse import parser
+
+    parser()
+
+
 def _state(chunk: str) -> tuple[set[str], str | None] | None:
     """The terminals the grammar accepts after `chunk` (a declaration's start), by their keyword
     for keywords, and the last terminal read; None when the chunk has a syntax error."""

@@ -62,6 +62,10 @@ class RdisServer(LanguageServer):
 def make_server() -> RdisServer:
     server = RdisServer()
 
+    @server.feature(types.INITIALIZED)
+    def initialized(ls: RdisServer, params: types.InitializedParams) -> None:
+        asyncio.get_running_loop().call_soon(completion.warm)
+
     @server.feature(types.TEXT_DOCUMENT_DID_OPEN)
     def did_open(ls: RdisServer, params: types.DidOpenTextDocumentParams) -> None:
         item = params.text_document
