@@ -19,13 +19,20 @@ class Analysis:
     """One check of a document's text: the compilation, the index of its names, and the real
     paths of the files it read (its own, its imports', the stdlib's)."""
 
-    __slots__ = ("compilation", "files", "index", "source")
+    __slots__ = ("_index", "compilation", "files", "source")
 
     def __init__(self, compilation: Compilation, source: SourceFile) -> None:
         self.compilation = compilation
         self.source = source
-        self.index: Index = build_index(compilation.units)
         self.files = {os.path.realpath(path) for path in compilation.sources}
+        self._index: Index | None = None
+
+    @property
+    def index(self) -> Index:
+        """Made when first asked: publishing diagnostics needs none."""
+        if self._index is None:
+            self._index = build_index(self.compilation.units)
+        return self._index
 
     def source_of(self, path: str) -> SourceFile | None:
         return self.compilation.sources.get(path)
