@@ -4,7 +4,8 @@ frame after `frame`, an adapter after `input NAME:`), in an expression the param
 declaration and what expressions read, an enum's members after `Enum.`, and inside a string the
 units, struct codes or checksum algorithms it may hold.
 
-Work is bounded by the declaration: one longer than MAX_CHARS gets names, not keywords.
+Work is bounded: by the line (its last MAX_LINE characters are read) and by the declaration (one
+longer than MAX_CHARS gets names, not keywords); nothing is matched by a pattern that backtracks.
 """
 
 from __future__ import annotations
@@ -21,8 +22,7 @@ from rdisc.syntax.parse import DECL_KEYWORDS
 
 MAX_CHARS = 20_000  # of the declaration before the cursor that the parser is run over
 _DECL_START = re.compile(r"^(?:{})\b".format("|".join(DECL_KEYWORDS)), re.MULTILINE)
-_WORD = re.compile(r"[A-Za-z_][A-Za-z0-9_]*$")
-_MEMBER = re.compile(r"([A-Za-z][A-Za-z0-9_]*)\.$")
+MAX_LINE = 4096  # of the line before the cursor that is read (a longer line is refused by the parser)
 _KEYWORD = re.compile(r"[a-z]+|True|False")
 _EXPRESSION = {"INT", "FLOAT", "STRING", "True", "not", "LPAR"}  # accepted where an expression starts
 # What follows a name in a struct format (`pack`, `unpack`, a frame's fields): Python's struct
@@ -45,19 +45,17 @@ def complete(analysis: Analysis, at: types.Position, good: Analysis | None = Non
     source = analysis.source
     offset = positions.offset(source, at)
     text = source.text
-    line_start = text.rfind("\n", 0, offset) + 1
+    line_start = max(text.rfind("\n", 0, offset) + 1, offset - MAX_LINE)
     line = text[line_start:offset]
-    word = _WORD.search(line)
-    before = line[: len(line) - len(word.group(0))] if word else line
+    before = line[: len(line) - _name_before(line, len(line))]
     items: list[types.CompletionItem] = []
     opened = _open_string(line)
     if opened is not None:
-        return types.CompletionList(is_incomplete=False, items=_in_string(line[:opened]))
+        return types.CompletionList(is_incomplete=False, items=_in_string(line[max(0, opened - 100) : opened]))
     index = analysis.index
-    member = _MEMBER.search(before)
-    if member is not None:
-        owner = _lookup(analysis, good, ("enum",), member.group(1))
-        items = [_item(s) for s in _members(owner)]
+    if before.endswith("."):  # `Enum.`: its members
+        name = before[len(before) - 1 - _name_before(before, len(before) - 1) : -1]
+        items = [_item(s) for s in _members(_lookup(analysis, good, ("enum",), name))]
         return types.CompletionList(is_incomplete=False, items=items)
     starts = [m.start() for m in _DECL_START.finditer(text, max(0, line_start - MAX_CHARS), offset - len(line) + len(before))]
     start = starts[-1] if starts else None
@@ -169,6 +167,15 @@ def _item(symbol: Symbol) -> types.CompletionItem:
 
 def _keyword(word: str) -> types.CompletionItem:
     return types.CompletionItem(label=word, kind=types.CompletionItemKind.Keyword)
+
+
+def _name_before(text: str, end: int) -> int:
+    """The length of the name (letters, digits, `_`) that ends at `end` of `text`: read backwards,
+    in time linear in it."""
+    start = end
+    while start > 0 and (text[start - 1].isascii() and (text[start - 1].isalnum() or text[start - 1] == "_")):
+        start -= 1
+    return end - start
 
 
 def _open_string(line: str) -> int | None:

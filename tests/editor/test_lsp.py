@@ -227,8 +227,11 @@ async def test_hostile_documents_leave_the_server_answering(client: LanguageClie
         found = await client.text_document_document_symbol_async(types.DocumentSymbolParams(
             text_document=types.TextDocumentIdentifier(uri=uri)))
         assert found is not None
-        await client.text_document_completion_async(types.CompletionParams(
-            text_document=types.TextDocumentIdentifier(uri=uri), position=types.Position(line=1, character=10)))
+        last = text.splitlines()[-1]
+        for place in (types.Position(line=1, character=10), types.Position(line=text.count("\n") - 1,
+                                                                           character=len(last))):
+            await client.text_document_completion_async(types.CompletionParams(
+                text_document=types.TextDocumentIdentifier(uri=uri), position=place))
     uri = await opened(client, tmp_path, "after.rdis", BOT)
     assert list(client.diagnostics[uri]) == []
 
