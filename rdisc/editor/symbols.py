@@ -4,6 +4,8 @@ with one still has the rest of its outline."""
 
 from __future__ import annotations
 
+import bisect
+
 from lsprotocol import types
 
 from rdisc.editor import positions
@@ -93,21 +95,26 @@ def semantic_tokens(analysis: Analysis) -> types.SemanticTokens:
     """Every declared name in the document, by what it names (keywords and literals are the
     TextMate grammar's to colour)."""
     source = analysis.source
+    text, starts = source.text, source.line_starts()
     data: list[int] = []
     line = column = 0
     last: Occurrence | None = None
     for occurrence in analysis.index.by_path.get(source.path, []):
-        if last is not None and occurrence.span.start < last.span.end:
+        span = occurrence.span
+        if last is not None and span.start < last.span.end:
             continue  # tokens may not overlap
-        start, end = source.position(occurrence.span.start), source.position(occurrence.span.end)
-        if end.line != start.line:
-            continue
+        here = bisect.bisect_right(starts, span.start) - 1
+        if here + 1 < len(starts) and span.end >= starts[here + 1]:
+            continue  # one line each
+        if here == line and last is not None:  # from the last token on: linear in a long line
+            start = column + positions.utf16_length(text[last.span.start : span.start])
+        else:
+            start = positions.utf16_length(text[starts[here] : span.start])
         symbol = occurrence.symbol
         modifiers = (1 if occurrence.declaration else 0) | (2 if symbol.kind in _READONLY else 0) | (
             4 if symbol.standard else 0)
-        delta_line = start.line - line
-        delta_column = start.utf16_column - column if delta_line == 0 else start.utf16_column
-        data += [delta_line, delta_column, end.utf16_column - start.utf16_column,
+        data += [here - line, start - column if here == line else start,
+                 positions.utf16_length(text[span.start : span.end]),
                  TOKEN_TYPES.index(_TOKEN_OF_KIND[symbol.kind]), modifiers]
-        line, column, last = start.line, start.utf16_column, occurrence
+        line, column, last = here, start, occurrence
     return types.SemanticTokens(data=data)

@@ -217,6 +217,8 @@ HOSTILE = {  # each with the code of its diagnostic: refused within the compiler
     "nested.rdis": ("robot nested { author \"x\" }\nconst C = " + "(" * 1000 + "1" + ")" * 1000 + "\n", "E005"),
     "redos.rdis": ('robot redos { author "x" }\nconnection c: serial { baud 9600 }\n'
                    'primitive p() on c format "x" () regex "(a+)+$"\n' + "# " + "a" * 60000 + "!\n", "E304"),
+    "wide.rdis": ('robot wide { author "x" }\nconst Bee = 1\nconst A = [' + ", ".join(["Bee"] * 6000) + "]\n",
+                  "E404"),  # one line of many names: each one's column
 }
 
 
@@ -227,6 +229,9 @@ async def test_hostile_documents_leave_the_server_answering(client: LanguageClie
         found = await client.text_document_document_symbol_async(types.DocumentSymbolParams(
             text_document=types.TextDocumentIdentifier(uri=uri)))
         assert found is not None
+        colours = await client.text_document_semantic_tokens_full_async(types.SemanticTokensParams(
+            text_document=types.TextDocumentIdentifier(uri=uri)))
+        assert colours is not None and (len(colours.data) == 5 * 6003 or name != "wide.rdis")
         last = text.splitlines()[-1]
         for place in (types.Position(line=1, character=10), types.Position(line=text.count("\n") - 1,
                                                                            character=len(last))):
