@@ -8,12 +8,11 @@ hostile document costs what checking it costs, within the compiler's token and s
 from __future__ import annotations
 
 import asyncio
-import logging
 from collections.abc import Callable
 from typing import TypeVar
 
 from lsprotocol import types
-from pygls.exceptions import JsonRpcInvalidParams
+from pygls.exceptions import JsonRpcException, JsonRpcInvalidParams
 from pygls.lsp.server import LanguageServer
 
 from rdisc import __version__
@@ -23,7 +22,6 @@ from rdisc.editor.documents import Analysis, Document, Workspace
 
 DEBOUNCE_S = 0.15  # a pause in typing this long, and the document is checked
 T = TypeVar("T")
-log = logging.getLogger(__name__)
 
 
 class RdisServer(LanguageServer):
@@ -34,10 +32,14 @@ class RdisServer(LanguageServer):
 
     def refresh(self, uri: str) -> None:
         """Check a document and those importing it now, and publish their diagnostics."""
+        self.cancel(uri)
+        self.publish(self.documents.check(uri))
+
+    def cancel(self, uri: str) -> None:
+        """Forget the check a change of the document scheduled."""
         pending = self.pending.pop(uri, None)
         if pending is not None:
             pending.cancel()
-        self.publish(self.documents.check(uri))
 
     def publish(self, documents: list[Document]) -> None:
         for document in documents:
@@ -47,10 +49,13 @@ class RdisServer(LanguageServer):
 
     def later(self, uri: str) -> None:
         """Check a document once typing pauses (each change restarts the wait)."""
-        pending = self.pending.pop(uri, None)
-        if pending is not None:
-            pending.cancel()
+        self.cancel(uri)
         self.pending[uri] = asyncio.get_running_loop().call_later(DEBOUNCE_S, self.refresh, uri)
+
+    def good(self, uri: str) -> Analysis | None:
+        """The document's last check without errors, if any."""
+        document = self.documents.documents.get(uri)
+        return document.good if document is not None else None
 
     def analysis(self, uri: str) -> Analysis:
         found = self.documents.analysis(uri)
@@ -87,9 +92,7 @@ def make_server() -> RdisServer:
     @server.feature(types.TEXT_DOCUMENT_DID_CLOSE)
     def did_close(ls: RdisServer, params: types.DidCloseTextDocumentParams) -> None:
         uri = params.text_document.uri
-        pending = ls.pending.pop(uri, None)
-        if pending is not None:
-            pending.cancel()
+        ls.cancel(uri)
         ls.text_document_publish_diagnostics(types.PublishDiagnosticsParams(uri=uri, diagnostics=[]))
         ls.publish(ls.documents.close(uri))
 
@@ -101,9 +104,8 @@ def make_server() -> RdisServer:
 
     @server.feature(types.TEXT_DOCUMENT_HOVER)
     def on_hover(ls: RdisServer, params: types.HoverParams) -> types.Hover | None:
-        document = ls.documents.documents.get(params.text_document.uri)
         analysis = ls.analysis(params.text_document.uri)
-        return hover.hover(analysis, document.good if document else None, params.position)
+        return hover.hover(analysis, ls.good(params.text_document.uri), params.position)
 
     @server.feature(types.TEXT_DOCUMENT_DEFINITION)
     def definition(ls: RdisServer, params: types.DefinitionParams) -> list[types.Location]:
@@ -143,9 +145,8 @@ def make_server() -> RdisServer:
     @server.feature(types.TEXT_DOCUMENT_COMPLETION,
                     types.CompletionOptions(trigger_characters=[".", '"', "(", " ", ","]))
     def complete(ls: RdisServer, params: types.CompletionParams) -> types.CompletionList:
-        document = ls.documents.documents.get(params.text_document.uri)
-        return completion.complete(ls.analysis(params.text_document.uri), params.position,
-                                   document.good if document else None)
+        analysis = ls.analysis(params.text_document.uri)
+        return completion.complete(analysis, params.position, ls.good(params.text_document.uri))
 
     return server
 
@@ -160,8 +161,8 @@ def _refused(answer: Callable[[], T]) -> T:
     """The answer, or an LSP error response saying why a rename is refused."""
     try:
         return answer()
-    except navigation.Refused as refused:
-        raise JsonRpcInvalidParams(str(refused)) from None
+    except navigation.Refused as refused:  # LSP's RequestFailed: the request was right, the rename is not
+        raise JsonRpcException(str(refused), code=types.LSPErrorCodes.RequestFailed) from None
 
 
 def serve() -> None:
