@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import bisect
 import pathlib
-from urllib.parse import unquote, urlparse
 
 from lsprotocol import types
 
@@ -51,7 +50,6 @@ def uri_of(path: str) -> str:
 
 def path_of(uri: str) -> str:
     """The file a `file:` URI names (another scheme's URI stands for itself, as a name)."""
-    parsed = urlparse(uri)
-    if parsed.scheme != "file":
-        return uri
-    return str(pathlib.Path(unquote(parsed.path)))
+    from pygls.uris import to_fs_path
+
+    return (to_fs_path(uri) if uri.startswith("file:") else None) or uri
