@@ -134,3 +134,18 @@ def test_a_name_of_the_stdlib_is_not_renamed(tmp_path: Path) -> None:
     _, _, analysis = analysed(tmp_path, BOT)
     with pytest.raises(navigation.Refused, match=r"^`Range` is declared in the standard library"):
         navigation.rename(analysis, at(BOT, "output reported: Range", "Range"), "Distance", [])
+
+
+def test_while_a_document_has_errors_a_primitive_shows_its_last_good_layout(tmp_path: Path) -> None:
+    workspace, uri, _ = analysed(tmp_path, BOT)
+    broken = BOT.replace("interface drive(velocity: float)", "interface drive(velocity float)")
+    workspace.change(uri, broken, 2)
+    analysis = workspace.analysis(uri)
+    assert analysis is not None and analysis.compilation.model is None
+    found = hover.hover(analysis, workspace.documents[uri].good, at(broken, "primitive set_speed", "set_speed"))
+    assert found is not None and isinstance(found.contents, types.MarkupContent)
+    assert "wire layout (from the last check without errors):\n\n```\nprimitive set_speed(value: int in -500..500) " \
+           "on link, frame pkt(1)\n  request: 6 bytes\n" in found.contents.value
+    alone = hover.hover(analysis, None, at(broken, "primitive set_speed", "set_speed"))
+    assert alone is not None and isinstance(alone.contents, types.MarkupContent)
+    assert alone.contents.value.endswith("*the wire layout is shown once the description checks without errors*")
