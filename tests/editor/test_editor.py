@@ -64,17 +64,27 @@ def test_hover_on_an_adapter_lists_its_fields(tmp_path: Path) -> None:
                                          "Distance from the sensor to the obstacle.")
 
 
-def test_a_misspelt_unit_is_fixed_inside_its_quotes(tmp_path: Path) -> None:
-    bad = BOT.replace('unit "mm/s"', 'unit "mm/z"')
+@pytest.mark.parametrize(("written", "misspelt", "code"), [
+    ('unit "mm/s"', 'unit "mm/z"', "E109"),  # inside its quotes
+    ('checksum "xor"', 'checksum "xro"', "E502"),
+    ('    pack "<h"', '    pakc "<h"', "E001"),  # a keyword: the parser's did-you-mean
+    ("distance = speed", "distance = sped", "E103"),
+])
+def test_each_did_you_mean_is_a_quick_fix_that_clears_it(tmp_path: Path, written: str, misspelt: str,
+                                                          code: str) -> None:
+    bad = BOT.replace(written, misspelt)
     workspace, uri, analysis = analysed(tmp_path, bad)
     document = workspace.documents[uri]
     [diagnostic] = published(document, analysis)
-    assert diagnostic.code == "E109"
+    assert diagnostic.code == code
     [fix] = actions.quick_fixes(uri, analysis.source, [diagnostic])
     assert fix.edit is not None and fix.edit.changes is not None
     [edit] = fix.edit.changes[uri]
-    start = at(bad, '"mm/z"', "mm/z")
-    assert (edit.range.start, edit.range.end.character, edit.new_text) == (start, start.character + 4, "mm/s")
+    lines = bad.splitlines(keepends=True)
+    line = lines[edit.range.start.line]
+    lines[edit.range.start.line] = line[: edit.range.start.character] + edit.new_text + line[edit.range.end.character :]
+    assert "".join(lines) == BOT
+
 
 
 @pytest.mark.parametrize(("written", "offered", "not_offered"), [
