@@ -10,7 +10,7 @@ from __future__ import annotations
 import gc
 import os
 import stat
-from collections.abc import Iterator
+from collections.abc import Iterator, Mapping
 from contextlib import contextmanager
 from contextvars import ContextVar
 
@@ -27,6 +27,8 @@ MAX_IMPORTS = 256
 MAX_TOKENS = 200_000  # of a description and its imports: about seventy times the largest example's
 # The budget of descriptions compiled in this context: the command line's --max-tokens (token_budget).
 _max_tokens: ContextVar[int] = ContextVar("max_tokens", default=MAX_TOKENS)
+# Texts read instead of the files at these real paths: an editor's unsaved documents (open_texts).
+_open_texts: ContextVar[Mapping[str, str] | None] = ContextVar("open_texts", default=None)
 
 
 @contextmanager
@@ -40,18 +42,31 @@ def token_budget(tokens: int) -> Iterator[None]:
         _max_tokens.reset(reset)
 
 
+@contextmanager
+def open_texts(texts: Mapping[str, str]) -> Iterator[None]:
+    """Imports of descriptions compiled inside read `texts[real path]` instead of the file, when
+    given: what the language server has in its editor's buffers, saved or not."""
+    reset = _open_texts.set(texts)
+    try:
+        yield
+    finally:
+        _open_texts.reset(reset)
+
+
 class Compilation:
     """What checking a description gave (a plain class: `rdisc check` need not import `dataclasses`)."""
 
-    __slots__ = ("budgets", "diagnostics", "main", "model", "sources")
+    __slots__ = ("budgets", "diagnostics", "main", "model", "sources", "units")
 
     def __init__(self, model: Model | None, diagnostics: Diagnostics, sources: Sources,
-                 budgets: list[ConnectionBudget] | None = None, main: ast.Module | None = None) -> None:
+                 budgets: list[ConnectionBudget] | None = None, main: ast.Module | None = None,
+                 units: list[Unit] | None = None) -> None:
         self.model = model
         self.diagnostics = diagnostics
         self.sources = sources
         self.budgets = [] if budgets is None else budgets
         self.main = main  # the main file's syntax tree (for `rdisc import`)
+        self.units = [] if units is None else units  # every file's syntax tree, the stdlib's too (the editor's index)
 
 
 def read_text(path: str, diagnostics: Diagnostics, at: Span | None = None) -> str | None:
@@ -154,7 +169,7 @@ def _analyse(units: list[Unit], diagnostics: Diagnostics, sources: Sources, main
     symbols = resolve(units, diagnostics)
     model = check(units, symbols, diagnostics)
     budgets = budget(model, diagnostics) if model is not None else []
-    return Compilation(model, diagnostics, sources, budgets, main)
+    return Compilation(model, diagnostics, sources, budgets, main, units)
 
 
 def _add_unit(main: ast.Module, is_main: bool, diagnostics: Diagnostics, sources: Sources, units: list[Unit],
@@ -209,7 +224,9 @@ def _add_unit(main: ast.Module, is_main: bool, diagnostics: Diagnostics, sources
                 diagnostics.report("E007", decl.span, f"imported file `{decl.path}` does not exist",
                                    label=f"looked for {target}")
                 continue
-            text = read_text(str(target), diagnostics, decl.span)
+            text = (_open_texts.get() or {}).get(key)
+            if text is None:
+                text = read_text(str(target), diagnostics, decl.span)
             if text is None:
                 continue
             sources.add(str(target), text)

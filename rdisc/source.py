@@ -64,7 +64,8 @@ class SourceFile:
         starts = self.line_starts()
         line = bisect.bisect_right(starts, offset) - 1
         prefix = self.text[starts[line] : offset]
-        utf16 = len(prefix) + sum(1 for ch in prefix if ord(ch) > 0xFFFF)
+        # Counted by C code, not a loop over the line: a long line's many diagnostics are many positions.
+        utf16 = len(prefix) if prefix.isascii() else len(prefix.encode("utf-16-le")) // 2
         return Position(line, len(prefix), utf16)
 
     def line_text(self, line: int) -> str:

@@ -26,6 +26,20 @@ def dump(model: m.Model) -> str:
     return "\n".join(blocks)
 
 
+def primitive_layout(model: m.Model, name: str) -> str:
+    """One primitive's block of the dump (an editor's hover shows it)."""
+    return _primitive(model, model.primitives[name])
+
+
+def frame_layout(frame: m.Frame) -> str:
+    """A frame's request and reply tables around a payload of any size (an editor's hover)."""
+    payload: list[Row] = [(None, "bytes", "the primitive's")]
+    lines = _sides("request", frame.requests, payload, False, frame.request_when)
+    if frame.reply:
+        lines += _sides("reply", frame.replies, payload)
+    return "\n".join(lines) + "\n"
+
+
 def _primitive(model: m.Model, p: m.Primitive) -> str:
     params = ", ".join(f"{x.name}: {x.type.value}" + (f" in {range_written(x)}" if x.low is not None else "")
                        for x in p.params)

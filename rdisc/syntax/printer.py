@@ -90,11 +90,11 @@ def _code(d: ast.Decl) -> list[str]:
             return _primitive(d)
         case ast.InterfaceDecl(name, params, clauses, body):
             words = "".join(" " + _interface_clause(c) for c in clauses)
-            head = f"interface {name.text}({_params(params)}){words}"
+            head = f"interface {name.text}({print_params(params)}){words}"
             return _block(head, _body(body, len(INDENT)))
         case ast.AdapterDecl(name, ros, fields):
             head = f"adapter {name.text}" + ("" if ros is None else f" ros {p.quote(ros.value)}")
-            return _block(head, [line for f in fields for line in _doc(f.doc) + [_field(f)]])
+            return _block(head, [line for f in fields for line in _doc(f.doc) + [print_field(f)]])
         case ast.InputDecl(name, adapter, call):
             return _call_lines(f"input {name.text}: {adapter.text} -> ", call, "", 0)
         case ast.OutputDecl(name, adapter, fields, frame=frame):
@@ -107,7 +107,7 @@ def _code(d: ast.Decl) -> list[str]:
         case ast.EnumDecl(name, members):
             return _block(f"enum {name.text}", [f"{m.name.text} = {print_expr(m.value)}," for m in members])
         case ast.FrameDecl(name, params, items):
-            head = f"frame {name.text}" + (f"({_params(params)})" if params else "")
+            head = f"frame {name.text}" + (f"({print_params(params)})" if params else "")
             lines: list[str] = []
             for item in items:
                 if isinstance(item, ast.FrameSide):
@@ -218,7 +218,7 @@ def _block(head: str, lines: list[str]) -> list[str]:
     return [f"{head} {{", *(INDENT + line for line in lines), "}"]
 
 
-def _params(params: tuple[ast.Param, ...]) -> str:
+def print_params(params: tuple[ast.Param, ...]) -> str:
     return ", ".join(f"{param.name.text}: {print_type(param.type)}" + _range(param)
                      + (f" unit {p.quote(param.unit.value)}" if param.unit is not None else "")
                      + (f" = {print_expr(param.default)}" if param.default is not None else "") for param in params)
@@ -318,7 +318,7 @@ def _call_stmt(stmt: ast.CallStmt, column: int) -> list[str]:
     return _call_lines("", stmt.call, suffix, column)
 
 
-def _field(f: ast.FieldDecl) -> str:
+def print_field(f: ast.FieldDecl) -> str:
     unit = "" if f.unit is None else f" unit {p.quote(f.unit)}"
     ros = "" if f.ros is None else f" ros {p.quote(f.ros.value)}"
     return f"{f.name.text}: {print_type(f.type)}{unit}{ros}"
@@ -330,7 +330,7 @@ def _field(f: ast.FieldDecl) -> str:
 def _primitive(d: ast.PrimitiveDecl) -> list[str]:
     """On one line when it fits, else one clause a line; post-actions always follow
     the clause before them, inline when there is one, as a block when there are more."""
-    head = f"primitive {d.name.text}({_params(d.params)})"
+    head = f"primitive {d.name.text}({print_params(d.params)})"
     pieces = [_primitive_clause(c) for c in d.clauses]
     lines = _lay_out(head, pieces, wrapped=False)
     if max(len(line) for line in lines) <= WIDTH:

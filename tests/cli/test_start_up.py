@@ -1,6 +1,7 @@
 """`rdisc check` of a clean description imports only what checking needs (start-up time is
 most of a check of a small file): not Lark (the parser's tables are written ahead of time),
-nor pathlib, json or difflib, which only imports, `--format json` and misspellings need."""
+nor pathlib, json or difflib, which only imports, `--format json` and misspellings need, nor
+pygls and lsprotocol, which only `rdisc lsp` needs."""
 
 from __future__ import annotations
 
@@ -14,7 +15,7 @@ import pytest
 from rdisc.cli.main import parser
 
 ROOT = Path(__file__).resolve().parents[2]
-NOT_NEEDED = ("lark", "pathlib", "json", "difflib")
+NOT_NEEDED = ("lark", "pathlib", "json", "difflib", "pygls", "lsprotocol")
 
 
 def imported_by_check(*args: str) -> list[str]:
