@@ -1,4 +1,4 @@
-"""The methods of the frozen dataclasses of rdisc/semantics/check.py, written out ahead of time (why: rdisc/frozen.py).
+"""The methods of the frozen dataclasses of rdisc/semantics/check/interfaces.py, written out ahead of time (why: rdisc/frozen.py).
 
 Written by `python -m rdisc.frozen_writer` from the declarations: do not edit; rerun it after
 changing a class's fields (a test holds this file equal to what it writes).
