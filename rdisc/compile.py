@@ -16,7 +16,7 @@ from contextvars import ContextVar
 
 from rdisc.diagnostics import Diagnostics, abbreviate
 from rdisc.semantics.budget import ConnectionBudget, budget
-from rdisc.semantics.check.description import check
+from rdisc.semantics.check import check
 from rdisc.semantics.model import Model
 from rdisc.semantics.resolve import Unit, resolve
 from rdisc.source import Sources, Span

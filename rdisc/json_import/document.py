@@ -30,6 +30,7 @@ def read(path: str, text: str, diagnostics: Diagnostics) -> ast.Module | None:
         return None
     return Importer(path, diagnostics).module(root)
 
+
 _TOP = (
     "name", "author", "description", "version", "doc", "constants", "enums", "tables", "constantDocs", "enumDocs",
     "settings",

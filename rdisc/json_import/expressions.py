@@ -52,35 +52,36 @@ class Expressions(Reader):
             return ()
         return tuple(ast.Param(n, t, n.span, *r, d, u) for n, t, r, d, u in zip(names, types, ranges, defaults, units))
 
+    def per_parameter(self, m: Members, key: str, count: int) -> tuple[JValue, ...] | None:
+        """A member with an entry for each parameter (`parameterUnits`, ...); None when it is
+        left out, or has another number of entries (reported)."""
+        if key not in m:
+            return None
+        items = self.array(m[key], f"`{key}`")
+        if len(items) != count:
+            self.error(m[key].span, f"`{key}` has {len(items)} entries for {count} parameters")
+            return None
+        return items
+
     def units(self, m: Members, count: int) -> list[ast.StrLit | None]:
         """`parameterUnits`: a unit or null for each parameter."""
-        if "parameterUnits" not in m:
-            return [None] * count
-        items = self.array(m["parameterUnits"], "`parameterUnits`")
-        if len(items) != count:
-            self.error(m["parameterUnits"].span, f"`parameterUnits` has {len(items)} entries for {count} parameters")
+        items = self.per_parameter(m, "parameterUnits", count)
+        if items is None:
             return [None] * count
         return [None if isinstance(item, JNull) else str_lit(self.string(item, "a parameter's unit")) for item in items]
 
     def defaults(self, m: Members, count: int) -> list[ast.Expr | None]:
         """`parameterDefaults`: a value or null for each parameter."""
-        if "parameterDefaults" not in m:
-            return [None] * count
-        items = self.array(m["parameterDefaults"], "`parameterDefaults`")
-        if len(items) != count:
-            self.error(m["parameterDefaults"].span,
-                       f"`parameterDefaults` has {len(items)} entries for {count} parameters")
+        items = self.per_parameter(m, "parameterDefaults", count)
+        if items is None:
             return [None] * count
         return [None if isinstance(item, JNull) else self.expr(item, None) for item in items]
 
     def ranges(self, m: Members, count: int) -> list[tuple[ast.Expr | None, ast.Expr | None]]:
         """`parameterRanges`: `[low, high]` or null for each parameter."""
         none: tuple[ast.Expr | None, ast.Expr | None] = (None, None)
-        if "parameterRanges" not in m:
-            return [none] * count
-        items = self.array(m["parameterRanges"], "`parameterRanges`")
-        if len(items) != count:
-            self.error(m["parameterRanges"].span, f"`parameterRanges` has {len(items)} entries for {count} parameters")
+        items = self.per_parameter(m, "parameterRanges", count)
+        if items is None:
             return [none] * count
         built = []
         for item in items:

@@ -28,7 +28,6 @@ def type_text(t: ast.TypeRef) -> str:
     return f"{t.element.text}[]" if isinstance(t, ast.ArrayOf) else t.text
 
 
-
 @lru_cache(maxsize=1)
 def _standard_adapters() -> dict[str, ast.AdapterDecl]:
     """The standard adapters (stdlib/adapters.rdis), by name."""
@@ -37,7 +36,6 @@ def _standard_adapters() -> dict[str, ast.AdapterDecl]:
     path = stdlib_path()
     module = parse(str(path), path.read_text(encoding="utf-8"), Diagnostics())
     return {d.name.text: d for d in module.decls if isinstance(d, ast.AdapterDecl)}
-
 
 
 class Reader:
@@ -137,7 +135,6 @@ class Reader:
 def present(items: list[Any]) -> tuple[Any, ...]:
     """The items built; a missing one was reported, and `each` leaves its element out."""
     return tuple(x for x in items if x is not None)
-
 
 
 def str_lit(s: JString | None) -> ast.StrLit | None:

@@ -32,12 +32,10 @@ class JString:
     span: Span
 
 
-
 @dataclass(frozen=True, slots=True)
 class JNumber:
     value: float  # or int
     span: Span
-
 
 
 @dataclass(frozen=True, slots=True)
@@ -46,11 +44,9 @@ class JBool:
     span: Span
 
 
-
 @dataclass(frozen=True, slots=True)
 class JNull:
     span: Span
-
 
 
 @dataclass(frozen=True, slots=True)
@@ -59,11 +55,11 @@ class JArray:
     span: Span
 
 
-
 @dataclass(frozen=True, slots=True)
 class JObject:
     members: tuple[tuple[JString, JValue], ...]  # duplicates already reported and dropped
     span: Span
+
 
 JValue = JString | JNumber | JBool | JNull | JArray | JObject
 
@@ -89,7 +85,6 @@ def read_json(path: str, text: str, diagnostics: Diagnostics) -> JValue | None:
     return _Values(path, diagnostics).value(tree)
 
 
-
 @lru_cache(maxsize=1)
 def _json_parser() -> Lark:  # imported lazily like the RDIS parser
     import lark
@@ -103,6 +98,7 @@ def _json_parser() -> Lark:  # imported lazily like the RDIS parser
         propagate_positions=True,
         cache=True,
     )
+
 
 # A string (closed or not: each is scanned once), a bracket or a comma.
 _STRUCTURE = re.compile(r'"(?:[^"\\\n]|\\.)*"?|[\[\]{},]')
@@ -129,6 +125,7 @@ def _bounded(path: str, text: str, diagnostics: Diagnostics) -> bool:
         elif c in "]}":
             depth -= 1
     return True
+
 
 _TOKEN_WORDS = {
     "STRING": "a string",
@@ -176,7 +173,6 @@ def _report_json_error(err: UnexpectedInput, path: str, text: str, diagnostics: 
     diagnostics.report("E008", span, f"invalid JSON: expected {wanted}, found {found}", help=help)
 
 
-
 def _character_error(text: str, at: int) -> tuple[int, int, str]:
     """Where and why no token starts at `at`: in a string, the character that ends it."""
     if text[at] != '"':
@@ -194,7 +190,6 @@ def _character_error(text: str, at: int) -> tuple[int, int, str]:
         bad + 1,
         f"invalid JSON: control character U+{ord(char):04X} in a string (write it as an escape)",
     )
-
 
 
 class _Values:
@@ -256,10 +251,10 @@ class _Values:
             return 0.0
         return value
 
+
 _KINDS = {JString: "a string", JNumber: "a number", JBool: "true/false", JNull: "null", JArray: "an array",
           JObject: "an object"}  # fmt: skip
 
 
 def kind_of(v: JValue) -> str:
     return _KINDS[type(v)]
-

@@ -11,7 +11,7 @@ from collections.abc import Callable
 from rdisc.compile import compile_text
 from rdisc.diagnostics import Diagnostics
 from rdisc.resources import stdlib_path
-from rdisc.semantics.check.description import check
+from rdisc.semantics.check import check
 from rdisc.semantics.resolve import Unit, resolve
 from rdisc.source import Span
 from rdisc.syntax import ast

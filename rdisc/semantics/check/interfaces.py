@@ -5,7 +5,6 @@ in a cycle, a periodic interface's one connection, and inputs' and outputs' adap
 from __future__ import annotations
 
 from collections.abc import Iterator, Sequence
-from typing import TYPE_CHECKING
 
 from rdisc.diagnostics import Label
 from rdisc.frozen import field_names, replace
@@ -17,26 +16,26 @@ from rdisc.semantics.types import Env, Names, describe
 from rdisc.source import Span
 from rdisc.syntax import ast
 
-if TYPE_CHECKING:
-    from dataclasses import dataclass
-else:  # the same classes, their methods written out ahead of time: rdisc/frozen.py
-    from rdisc.semantics.check.interfaces_methods import dataclass
-
 MAX_POLLS = 100_000  # calls of one `until`: its limit over its interval, plus the first
 MAX_PRIORITY = 1_000_000  # either way; priorities only order the calls of one interface
 MAX_UNROLLED = 4096  # calls an interface's body makes, its loops written out
 MAX_UNROLLED_ALL = 65_536  # the same for all interfaces: the work loops cause stays bounded
 
 
-@dataclass(frozen=True, slots=True)
 class _Unrolling:
-    """What the statements of one interface's body are checked against, and the calls made."""
+    """What the statements of one interface's body are checked against, and the calls made (a
+    plain class: a frozen one would need a module of written methods, and this one is never
+    compared or shown)."""
 
-    decl: ast.InterfaceDecl
-    env: Env
-    interface_params: dict[str, tuple[m.Parameter, ...]]
-    primitives: dict[str, m.Primitive]
-    calls: list[m.PrimitiveCall]
+    __slots__ = ("calls", "decl", "env", "interface_params", "primitives")
+
+    def __init__(self, decl: ast.InterfaceDecl, env: Env, interface_params: dict[str, tuple[m.Parameter, ...]],
+                 primitives: dict[str, m.Primitive], calls: list[m.PrimitiveCall]) -> None:
+        self.decl = decl
+        self.env = env
+        self.interface_params = interface_params
+        self.primitives = primitives
+        self.calls = calls
 
 
 class Interfaces(Layouts):

@@ -11,13 +11,11 @@ from typing import Protocol, TypeVar
 
 from rdisc.diagnostics import Diagnostics, Label
 from rdisc.limits import MAX_ARRAY, MAX_INT
-from rdisc.semantics import bounds
 from rdisc.semantics import model as m
 from rdisc.semantics.model import Scope, Type
 from rdisc.semantics.operators import shown
 from rdisc.semantics.resolve import Symbols, Unit, check_name, suggest
 from rdisc.semantics.types import Env, Names, Typer, describe, unify
-from rdisc.semantics.units import UNITS
 from rdisc.source import Span
 from rdisc.syntax import ast
 
@@ -122,6 +120,9 @@ class Pieces:
         """`unit "mm/s"`: one of the table's units, on a number (or an array of numbers)."""
         if p.unit is None:
             return None
+        # Imported here: most descriptions give no unit, and a check starts cold.
+        from rdisc.semantics.units import UNITS
+
         if p.unit.value not in UNITS:
             self.d.report("E109", p.unit.span, f"unknown unit `{p.unit.value}`",
                           help=suggest(p.unit.value, UNITS) or f"the units are {', '.join(UNITS)}")
@@ -178,6 +179,9 @@ class Pieces:
             self.d.report("E214", span, f"only an int parameter has a range that reads another parameter, "
                           f"not {describe(type_)}", help="give it constant bounds")
             return None, None, None
+        # Imported here: most descriptions have no such range, and a check starts cold.
+        from rdisc.semantics import bounds
+
         widest: list[int] = []
         for node, bound, high in ((nodes[0], p.low, False), (nodes[1], p.high, True)):
             form = bounds.linear(node, earlier)
