@@ -144,7 +144,7 @@ def compile_text(path: str, text: str, diagnostics: Diagnostics | None = None,
     sources.add(path, text)
     tokens = _Tokens(max_tokens)
     if path.endswith(".json"):
-        from rdisc.json_import import read
+        from rdisc.json_import.document import read
 
         main = read(path, text, diagnostics)
     else:

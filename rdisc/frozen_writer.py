@@ -28,7 +28,6 @@ MODULES = {
     "diagnostics/core.py": "diagnostics/core_methods.py",
     "diagnostics/codes.py": "diagnostics/codes_methods.py",
     "semantics/budget.py": "semantics/budget_methods.py",
-    "semantics/check.py": "semantics/check_methods.py",
     "semantics/formats.py": "semantics/formats_methods.py",
     "semantics/resolve.py": "semantics/resolve_methods.py",
     "semantics/types.py": "semantics/types_methods.py",

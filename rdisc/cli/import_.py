@@ -24,7 +24,7 @@ def add_parser(verbs: argparse._SubParsersAction[argparse.ArgumentParser]) -> No
 
 
 def run(args: argparse.Namespace) -> int:
-    from rdisc.json_import import read
+    from rdisc.json_import.document import read
     from rdisc.syntax.printer import print_module
 
     diagnostics = Diagnostics()

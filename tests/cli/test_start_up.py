@@ -67,6 +67,16 @@ def test_a_clean_check_does_not_import_dataclasses() -> None:
     assert done.stdout == "[]\n"
 
 
+def test_a_check_imports_the_body_s_rules_only_for_a_description_with_a_body() -> None:
+    """Most descriptions have no links, joints or transmissions: their check does without
+    rdisc.semantics.body (640 lines), which a description with a body (arm.rdis) still gets."""
+    probe = ("import sys; from rdisc.cli.main import main; status = main(sys.argv[1:]); "
+             "print(status, 'rdisc.semantics.body' in sys.modules)")
+    found = [subprocess.run([sys.executable, "-c", probe, "check", str(ROOT / "examples" / name)],
+                            capture_output=True, text=True, check=True).stdout for name in ("create.rdis", "arm.rdis")]
+    assert found == ["0 False\n", "0 True\n"]
+
+
 def test_a_clean_check_does_not_ask_the_terminal_s_width() -> None:
     """argparse's own formatter asks the width (importing shutil, with bz2 and lzma) for each
     argument added; rdisc's asks it only when help or usage is written."""

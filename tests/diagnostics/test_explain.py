@@ -9,7 +9,7 @@ import pytest
 
 from rdisc.diagnostics.codes import CODES
 from rdisc.engine.operations import FUNCTIONS
-from rdisc.semantics import check
+from rdisc.semantics.check import declarations
 from rdisc.semantics.model import Type
 
 
@@ -20,7 +20,7 @@ def _words(text: str) -> set[str]:
 @pytest.mark.parametrize(("code", "accepted"), [
     ("E105", [t.value for t in Type]),
     ("E106", list(FUNCTIONS)),
-    ("E209", list(check.CONNECTION_KINDS)),
+    ("E209", list(declarations.CONNECTION_KINDS)),
 ])
 def test_a_text_names_everything_the_checker_accepts(code: str, accepted: list[str]) -> None:
     assert sorted(set(accepted) - _words(CODES[code].explanation)) == []

@@ -12,7 +12,7 @@ from pathlib import Path
 import pytest
 
 from rdisc.diagnostics import Diagnostics
-from rdisc.json_import import read
+from rdisc.json_import.document import read
 from rdisc.syntax.parse import parse
 from rdisc.syntax.printer import print_module
 from tests.conftest import run_rdisc

@@ -18,7 +18,7 @@ from hypothesis import strategies as st
 from rdisc.compile import compile_path
 from rdisc.diagnostics import Diagnostics
 from rdisc.engine import operations
-from rdisc.json_import import read
+from rdisc.json_import.document import read
 from rdisc.syntax.parse import parse
 from rdisc.syntax.printer import print_module
 from tests.conftest import fuzz_examples

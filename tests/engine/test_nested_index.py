@@ -11,7 +11,7 @@ import pytest
 
 from rdisc.compile import compile_path
 from rdisc.diagnostics import Diagnostics
-from rdisc.json_import import read
+from rdisc.json_import.document import read
 from rdisc.syntax.parse import parse
 from rdisc.syntax.printer import print_module
 from tests.engine.test_one_engine import ScriptedPort, implementation_of, through_json

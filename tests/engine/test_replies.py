@@ -234,7 +234,7 @@ def test_json_printer_dump_and_budget(tmp_path: Path) -> None:
 def test_build_and_import_in_turn_keep_an_array_parameter_indexed(tmp_path: Path) -> None:
     """A reply frame's argument read from an array parameter by the loop variable comes back
     as `ids[reply]`: build, import and build again gave the same JSON, and the source stays."""
-    from rdisc.json_import import read
+    from rdisc.json_import.document import read
 
     text = """\
 robot r { author "tests" }
@@ -306,7 +306,7 @@ def test_each_reply_is_held_to_its_element_and_an_empty_array_writes_nothing(eac
 def test_replies_over_an_array_parameter_in_json_printer_dump_and_budget(tmp_path: Path) -> None:
     """Canonical JSON names the variable and the array, the one frame written as it is: build,
     import and build again give the same JSON and the same source line (nothing grows)."""
-    from rdisc.json_import import read
+    from rdisc.json_import.document import read
 
     compilation, built = through_json(EACH, tmp_path, "each")
     assert """\

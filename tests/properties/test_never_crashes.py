@@ -111,7 +111,7 @@ def check(path: Path, *, tolerate_known: bool = False) -> Compilation:
 def check_import(path: Path) -> None:
     """What `rdisc import` does in-process: read the JSON, check it, print the source
     (written whenever the JSON could be read, errors or not)."""
-    from rdisc.json_import import read
+    from rdisc.json_import.document import read
     from rdisc.syntax.printer import print_module
 
     diagnostics, sources = Diagnostics(), Sources()
@@ -264,7 +264,7 @@ def test_expression_swaps_round_trip(workdir: Path, seed: int, swaps) -> None:
     """Numbers and strings replaced by arbitrary expressions: diagnostics, never an exception; and
     what checks clean builds, imports back and prints to source that builds to the same JSON."""
     from rdisc.emit.canonical import to_json
-    from rdisc.json_import import read
+    from rdisc.json_import.document import read
     from rdisc.syntax.printer import print_module
 
     text = SEEDS[seed]

@@ -141,8 +141,9 @@ def test_the_layout_is_derived_data() -> None:
 
 PACKAGE = Path(rdisc.__file__).parent
 PARSES = re.compile(r"\bstruct_layout\(|\bcalcsize\(|\bsplit_rest\(")
-CHECKER = {"semantics/formats.py", "semantics/check.py", "semantics/frames.py"}  # where the Model is made
-IMPORTER = "json_import.py"  # infers the types of thesis JSON's arguments, before there is a Model
+CHECKER = {"semantics/formats.py", "semantics/check/layouts.py", "semantics/check/replies.py",  # where the Model is made
+           "semantics/frames.py"}
+IMPORTER = "json_import/primitives.py"  # infers the types of thesis JSON's arguments, before there is a Model
 
 
 def test_no_module_after_the_checker_parses_a_format() -> None:

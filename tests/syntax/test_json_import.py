@@ -11,7 +11,8 @@ from hypothesis import strategies as st
 
 from rdisc.compile import compile_path
 from rdisc.diagnostics import Diagnostics
-from rdisc.json_import import MAX_DEPTH, MAX_VALUES, read
+from rdisc.json_import.document import read
+from rdisc.json_import.values import MAX_DEPTH, MAX_VALUES
 from rdisc.source import SourceFile
 from rdisc.syntax import ast
 from rdisc.syntax.printer import print_module
