@@ -20,7 +20,7 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass, field
 from functools import lru_cache
-from typing import TYPE_CHECKING, Union
+from typing import TYPE_CHECKING
 
 if TYPE_CHECKING:
     import lark
@@ -68,7 +68,7 @@ class Node:
         return found
 
 
-Child = Union[Node, Leaf]
+Child = Node | Leaf
 
 
 @dataclass(slots=True)
@@ -96,8 +96,8 @@ def read_tokens(text: str, chunks: list[tuple[int, int]]) -> Tokens:
 
     decls: list[Node] = []
     leaves: list[Leaf] = []
-    for start, end in chunks:
-        tree = _parser().parse(text[start:end], on_error=_keyword_as_name)
+    for start, stop in chunks:
+        tree = _parser().parse(text[start:stop], on_error=_keyword_as_name)
         for child in tree.children:
             made = _convert(child, "start", start, leaves)
             assert isinstance(made, Node), "a declaration is a rule"
