@@ -201,9 +201,10 @@ def _fit(w: Writer, item: Node) -> None:
     a list's item) with no block in it, longer than WIDTH, is written with its first bracketed list
     of two items or more (else of one) whose spreading leaves the line's head and tail within WIDTH
     spread one item a line; each item is then such a line of its own."""
-    if any(leaf.text == "{" for leaf in item.leaves()):
-        return
+    leaves = item.leaves()
     column = w.column()
+    if column + sum(len(leaf.text) + 1 for leaf in leaves) <= WIDTH or any(leaf.text == "{" for leaf in leaves):
+        return  # fits, even with a space before each token; or holds a block
     scratch = Writer(comments=False)
     scratch.begin(0)
     emit(scratch, item)
@@ -246,7 +247,7 @@ def _braced(w: Writer, opening: Child, items: list[Child], closing: Child, style
     assert isinstance(opening, Leaf) and isinstance(closing, Leaf)
     inner = _inner_comments([opening, *_leaves(items), closing])
     assignments = [i for i in items if isinstance(i, Node)]
-    if style == _ACTIONS and not inner and len(assignments) <= 1:
+    if style == _ACTIONS and not inner and len(assignments) == 1:
         style = _INLINE
     elif style == _INLINE and inner:
         style = _LIST if any(isinstance(i, Leaf) and i.text == "," for i in items) else _BLOCK

@@ -81,13 +81,17 @@ class Tokens:
 
 @lru_cache(maxsize=1)
 def _parser() -> lark.Lark:
-    """The grammar's parser keeping every token (keywords and punctuation too)."""
+    """The grammar's parser keeping every token (keywords and punctuation too), its states' lexers
+    sharing one pattern as `rdisc check`'s do."""
     import lark
 
     from rdisc.resources import grammar_path
+    from rdisc.syntax.lexing import share_scanners
 
-    return lark.Lark.open(str(grammar_path()), parser="lalr", lexer="contextual", start="start",
+    made = lark.Lark.open(str(grammar_path()), parser="lalr", lexer="contextual", start="start",
                           keep_all_tokens=True, maybe_placeholders=False, cache=True)
+    share_scanners(made)
+    return made
 
 
 def read_tokens(text: str, chunks: list[tuple[int, int]]) -> Tokens:
