@@ -68,7 +68,7 @@ class Writer:
         self.pending: str | None = None  # a comment ending the current line
         self.last: Leaf | None = None
         self.space: int | None = None  # the spaces before the next token, where the rule is not wanted
-        self.columns: dict[int, int] = {}  # where each token starts on its line, by id
+        self.columns: dict[int, int] = {}  # where each token starts on its line, by id (when measuring)
         self.spread: set[int] = set()  # the lists `_fit` chose to lay out one item a line, by id
 
     def begin(self, level: int) -> None:
@@ -97,7 +97,8 @@ class Writer:
             space = self.space if self.space is not None else int(spaced(self.last, leaf))
             self.text += " " * space + leaf.text
         self.space = None
-        self.columns[id(leaf)] = len(self.text) - len(leaf.text)
+        if not self.comments:
+            self.columns[id(leaf)] = len(self.text) - len(leaf.text)
         if self.comments and leaf.trailing is not None:
             if self.pending is not None:
                 self._line(self.level + 1, False)
@@ -136,36 +137,36 @@ class Writer:
 
 
 def lay_out(decls: list[Node], end: Leaf) -> str:
-    w = Writer()
+    out = Writer()
     for decl in decls:
-        w.begin(0)
-        emit(w, decl)
-    lines = w.finish(end)
+        out.begin(0)
+        emit(out, decl)
+    lines = out.finish(end)
     while lines and not lines[0]:
         lines.pop(0)
     return "\n".join(lines) + "\n" if lines else ""
 
 
-def emit(w: Writer, item: Child) -> None:
+def emit(out: Writer, item: Child) -> None:
     if isinstance(item, Leaf):
-        w.put(item)
+        out.put(item)
         return
-    if w.fresh is not None and w.comments and item.rule not in _RULES:
-        _fit(w, item)
+    if out.fresh is not None and out.comments and item.rule not in _RULES:
+        _fit(out, item)
     special = _RULES.get(item.rule)
     if special is not None:
-        special(w, item)
+        special(out, item)
         return
     children = item.children
     braces = [i for i, c in enumerate(children) if isinstance(c, Leaf) and c.text in ("{", "}")]
     first, last = (braces[0], braces[-1]) if braces else (len(children), len(children))
-    _in_line(w, children[:first])
+    _in_line(out, children[:first])
     if braces:
-        _braced(w, children[first], children[first + 1:last], children[last], _STYLE.get(item.rule, _BLOCK))
-        _in_line(w, children[last + 1:])
+        _braced(out, children[first], children[first + 1:last], children[last], _STYLE.get(item.rule, _BLOCK))
+        _in_line(out, children[last + 1:])
 
 
-def _in_line(w: Writer, children: list[Child]) -> None:
+def _in_line(out: Writer, children: list[Child]) -> None:
     """Children one after another; a list between brackets one item a line where `_fit` chose it
     or a comment stands in it."""
     skip = False
@@ -173,36 +174,37 @@ def _in_line(w: Writer, children: list[Child]) -> None:
         if skip:
             skip = False
             continue
-        if isinstance(child, Node) and child.rule in _LISTS and 0 < i < len(children) - 1 and w.comments:
+        if isinstance(child, Node) and child.rule in _LISTS and 0 < i < len(children) - 1 and out.comments:
             opening, closing = children[i - 1], children[i + 1]
             assert isinstance(opening, Leaf) and isinstance(closing, Leaf)
-            if id(child) in w.spread or _inner_comments([opening, *child.leaves(), closing]):
-                _spread(w, child, closing)
+            if id(child) in out.spread or _inner_comments([opening, *child.leaves(), closing]):
+                _spread(out, child, closing)
                 skip = True
                 continue
-        emit(w, child)
+        emit(out, child)
 
 
-def _spread(w: Writer, items: Node, closing: Leaf) -> None:
-    level = w.level
+def _spread(out: Writer, items: Node, closing: Leaf) -> None:
+    level = out.level
     for group, comma in _split(items.children):
-        w.begin(level + 1)
+        out.begin(level + 1)
         for child in group:
-            emit(w, child)
+            emit(out, child)
         if comma is None:
-            w.comma()
+            out.comma()
         else:
-            w.put(comma)
-    w.close(closing, level)
+            out.put(comma)
+    out.close(closing, level)
 
 
-def _fit(w: Writer, item: Node) -> None:
+def _fit(out: Writer, item: Node) -> None:
     """The one wrapping rule. A line of the layout (a declaration, a block's item, a wrapped clause,
     a list's item) with no block in it, longer than WIDTH, is written with its first bracketed list
     of two items or more (else of one) whose spreading leaves the line's head and tail within WIDTH
-    spread one item a line; each item is then such a line of its own."""
+    spread one item a line; each item is then such a line of its own. (First: whose bracket opens
+    leftmost, so the outermost of nested lists.)"""
     leaves = item.leaves()
-    column = w.column()
+    column = out.column()
     if column + sum(len(leaf.text) + 1 for leaf in leaves) <= WIDTH or any(leaf.text == "{" for leaf in leaves):
         return  # fits, even with a space before each token; or holds a block
     scratch = Writer(comments=False)
@@ -211,7 +213,7 @@ def _fit(w: Writer, item: Node) -> None:
     line = scratch.finish(_END)[-1]
     if column + len(line) <= WIDTH:
         return
-    found: list[tuple[int, int]] = []  # (the list's item count, its id)
+    found: list[tuple[int, int, int]] = []  # (where the list opens, its item count, its id)
     stack: list[Child] = [item]
     while stack:
         node = stack.pop()
@@ -222,12 +224,13 @@ def _fit(w: Writer, item: Node) -> None:
                 opening, closing = node.children[i - 1], node.children[i + 1]
                 head = column + scratch.columns[id(opening)] + 1
                 tail = column + len(line) - scratch.columns[id(closing)]
-                if head <= WIDTH and tail + len(INDENT) <= WIDTH:
-                    found.append((len(_split(child.children)), id(child)))
-        stack.extend(reversed(node.children))
-    chosen = next((key for count, key in found if count >= 2), found[0][1] if found else None)
+                if head <= WIDTH and tail <= WIDTH:
+                    found.append((head, len(_split(child.children)), id(child)))
+        stack.extend(node.children)
+    found.sort()
+    chosen = next((key for _, count, key in found if count >= 2), found[0][2] if found else None)
     if chosen is not None:
-        w.spread.add(chosen)
+        out.spread.add(chosen)
 
 
 _END = Leaf("", "$END", "", 0, 0)
@@ -243,45 +246,44 @@ def _leaves(items: list[Child]) -> list[Leaf]:
     return [leaf for item in items for leaf in ([item] if isinstance(item, Leaf) else item.leaves())]
 
 
-def _braced(w: Writer, opening: Child, items: list[Child], closing: Child, style: str) -> None:
+def _braced(out: Writer, opening: Child, items: list[Child], closing: Child, style: str) -> None:
     assert isinstance(opening, Leaf) and isinstance(closing, Leaf)
     inner = _inner_comments([opening, *_leaves(items), closing])
-    assignments = [i for i in items if isinstance(i, Node)]
-    if style == _ACTIONS and not inner and len(assignments) == 1:
+    if style == _ACTIONS and not inner and sum(isinstance(i, Node) for i in items) == 1:
         style = _INLINE
     elif style == _INLINE and inner:
         style = _LIST if any(isinstance(i, Leaf) and i.text == "," for i in items) else _BLOCK
     elif style == _ACTIONS:
         style = _BLOCK
     if style == _INLINE:
-        w.put(opening)
+        out.put(opening)
         for i, item in enumerate(items):
-            if i and isinstance(item, Node) and not (isinstance(items[i - 1], Leaf)):
-                w.space = 2  # parts of a run, one after another
-            emit(w, item)
-        w.put(closing)
+            if i and isinstance(item, Node) and isinstance(items[i - 1], Node):
+                out.space = 2  # parts of a run, one after another
+            emit(out, item)
+        out.put(closing)
         return
     if not items and not inner:
-        w.put(opening)
-        w.space = 0
-        w.put(closing)
+        out.put(opening)
+        out.space = 0
+        out.put(closing)
         return
-    w.put(opening)
-    level = w.level
+    out.put(opening)
+    level = out.level
     if style == _LIST:
         for group, comma in _split(items):
-            w.begin(level + 1)
+            out.begin(level + 1)
             for child in group:
-                emit(w, child)
+                emit(out, child)
             if comma is None:
-                w.comma()
+                out.comma()
             else:
-                w.put(comma)
+                out.put(comma)
     else:
         for item in items:
-            w.begin(level + 1)
-            emit(w, item)
-    w.close(closing, level)
+            out.begin(level + 1)
+            emit(out, item)
+    out.close(closing, level)
 
 
 def _split(items: list[Child]) -> list[tuple[list[Child], Leaf | None]]:
@@ -301,28 +303,30 @@ def _split(items: list[Child]) -> list[tuple[list[Child], Leaf | None]]:
 
 def _widest(item: Node, level: int, lay: Callable[[Writer, Node], None]) -> int:
     """The longest line of `item` laid out by `lay` at `level`, its comments left out."""
-    w = Writer(comments=False)
-    w.begin(level)
-    lay(w, item)
-    return max(len(line) for line in w.finish(_END))
+    out = Writer(comments=False)
+    out.begin(level)
+    lay(out, item)
+    return max(len(line) for line in out.finish(_END))
 
 
-def _primitive(w: Writer, node: Node) -> None:
+def _primitive(out: Writer, node: Node) -> None:
     """On one line when it fits (blocks inside spread as usual), else one clause a line."""
     head = next(i for i, c in enumerate(node.children) if isinstance(c, Leaf) and c.text == ")") + 1
-    wrapped = w.comments and (_inner_comments(node.leaves())
-                              or _widest(node, w.fresh or 0, lambda m, n: _clauses(m, n, head, False)) > WIDTH)
-    _clauses(w, node, head, wrapped)
+    def flat(scratch: Writer, primitive: Node) -> None:
+        _clauses(scratch, primitive, head, False)
+
+    wrapped = out.comments and (_inner_comments(node.leaves()) or _widest(node, out.fresh or 0, flat) > WIDTH)
+    _clauses(out, node, head, wrapped)
 
 
-def _clauses(w: Writer, node: Node, head: int, wrapped: bool) -> None:
+def _clauses(out: Writer, node: Node, head: int, wrapped: bool) -> None:
     for child in node.children[:head]:
-        emit(w, child)
-    level = w.level
+        emit(out, child)
+    level = out.level
     for clause in node.children[head:]:
         if wrapped and not (isinstance(clause, Node) and clause.rule == "actions"):
-            w.begin(level + 1)
-        emit(w, clause)
+            out.begin(level + 1)
+        emit(out, clause)
 
 
 _RULES: dict[str, Callable[[Writer, Node], None]] = {
