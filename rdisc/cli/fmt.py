@@ -39,20 +39,15 @@ def run(args: argparse.Namespace) -> int:
             print(f"rdisc fmt: no .rdis description in {given}", file=sys.stderr)
             return EXIT_USAGE
         paths += found
-    status = EXIT_OK
-    changed = 0
-    for path in paths:
-        outcome = _one(path, dry=args.check or args.diff)
-        if outcome is None:
-            status = EXIT_USAGE
-        elif outcome:
-            changed += 1
-    if args.check and changed and status == EXIT_OK:
-        status = EXIT_ERRORS
+    outcomes = [_one(path, dry=args.check or args.diff) for path in paths]
+    changed, failed = outcomes.count(True), outcomes.count(None)
     if not args.check and not args.diff and "-" not in paths:
         files = "file" if changed == 1 else "files"
-        print(f"rdisc fmt: {changed} {files} reformatted, {len(paths) - changed} unchanged", file=sys.stderr)
-    return status
+        left = f", {failed} not formatted" if failed else ""
+        print(f"rdisc fmt: {changed} {files} reformatted, {outcomes.count(False)} unchanged{left}", file=sys.stderr)
+    if failed:
+        return EXIT_USAGE
+    return EXIT_ERRORS if args.check and changed else EXIT_OK
 
 
 def _one(path: str, dry: bool) -> bool | None:
@@ -61,6 +56,9 @@ def _one(path: str, dry: bool) -> bool | None:
     from rdisc.format import FormatError, format_text
 
     name = "<stdin>" if path == "-" else path
+    if path.endswith(".json"):
+        print(f"rdisc fmt: {path} is JSON; only .rdis descriptions are formatted", file=sys.stderr)
+        return None
     try:
         if path == "-":
             text = sys.stdin.read()

@@ -57,6 +57,7 @@ def test_a_file_that_does_not_parse_gets_its_diagnostics_and_exit_2(tmp_path: Pa
     assert result.returncode == 2
     assert "error[E001]" in result.stderr and f"{bad}:2:1" in result.stderr
     assert "Traceback" not in result.stderr
+    assert result.stderr.endswith("rdisc fmt: 1 file reformatted, 0 unchanged, 1 not formatted\n")
     assert bad.read_text() == "state x: int =\n"
     assert messy.read_text() == TIDY  # the others are still formatted
 
@@ -86,3 +87,12 @@ def test_a_clean_check_does_not_import_the_formatter() -> None:
     result = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True,
                             cwd=Path(__file__).resolve().parents[2], check=False)
     assert result.stdout == "[]\n", result.stderr
+
+
+def test_a_json_description_is_not_formatted(tmp_path: Path) -> None:
+    described = tmp_path / "robot.json"
+    described.write_text("{}")
+    result = run_rdisc("fmt", described)
+    assert (result.returncode, result.stderr) == (2, f"rdisc fmt: {described} is JSON; only .rdis descriptions are "
+                                                     "formatted\nrdisc fmt: 0 files reformatted, 0 unchanged, 1 not formatted\n")
+    assert described.read_text() == "{}"

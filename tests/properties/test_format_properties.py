@@ -11,7 +11,7 @@ from rdisc.emit.canonical import to_json
 from rdisc.format import format_text
 
 
-@settings(max_examples=fuzz_examples(20), deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=fuzz_examples(15), deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(descriptions())
 def test_a_generated_description_formats_idempotently_to_the_same_model(description: Description) -> None:
     formatted = format_text(description.text, "generated.rdis")
