@@ -93,6 +93,6 @@ def test_a_json_description_is_not_formatted(tmp_path: Path) -> None:
     described = tmp_path / "robot.json"
     described.write_text("{}")
     result = run_rdisc("fmt", described)
-    assert (result.returncode, result.stderr) == (2, f"rdisc fmt: {described} is JSON; only .rdis descriptions are "
-                                                     "formatted\nrdisc fmt: 0 files reformatted, 0 unchanged, 1 not formatted\n")
+    said = f"rdisc fmt: {described} is JSON; only .rdis descriptions are formatted\n"
+    assert (result.returncode, result.stderr) == (2, said + "rdisc fmt: 0 files reformatted, 0 unchanged, 1 not formatted\n")
     assert described.read_text() == "{}"

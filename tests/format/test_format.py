@@ -193,5 +193,5 @@ def test_comments_anywhere_are_kept_and_the_result_is_stable(path: Path, data: s
 
 
 def test_the_example_of_docs_format_md_is_what_fmt_gives() -> None:
-    before, after = re.findall(r"```rdis\n(.*?)```", (ROOT / "docs" / "format.md").read_text(), re.S)
+    before, after = re.findall(r"```rdis\n(.*?)```", (ROOT / "docs" / "format.md").read_text(), re.DOTALL)
     assert format_text(before) == after
