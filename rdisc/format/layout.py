@@ -151,8 +151,6 @@ def emit(out: Writer, item: Child) -> None:
     if isinstance(item, Leaf):
         out.put(item)
         return
-    if out.fresh is not None and out.comments and item.rule not in _RULES:
-        _fit(out, item)
     special = _RULES.get(item.rule)
     if special is not None:
         special(out, item)
@@ -160,6 +158,8 @@ def emit(out: Writer, item: Child) -> None:
     children = item.children
     braces = [i for i, c in enumerate(children) if isinstance(c, Leaf) and c.text in ("{", "}")]
     first, last = (braces[0], braces[-1]) if braces else (len(children), len(children))
+    if out.fresh is not None and out.comments:
+        _fit(out, children[:first])
     _in_line(out, children[:first])
     if braces:
         _braced(out, children[first], children[first + 1:last], children[last], _STYLE.get(item.rule, _BLOCK))
@@ -197,24 +197,26 @@ def _spread(out: Writer, items: Node, closing: Leaf) -> None:
     out.close(closing, level)
 
 
-def _fit(out: Writer, item: Node) -> None:
+def _fit(out: Writer, children: list[Child]) -> None:
     """The one wrapping rule. A line of the layout (a declaration, a block's item, a wrapped clause,
-    a list's item) with no block in it, longer than WIDTH, is written with its first bracketed list
-    of two items or more (else of one) whose spreading leaves the line's head and tail within WIDTH
-    spread one item a line; each item is then such a line of its own. (First: whose bracket opens
-    leftmost, so the outermost of nested lists.)"""
-    leaves = item.leaves()
+    a list's item, or the head of a block or of a primitive before its first clause) with no block
+    in it, longer than WIDTH, is written with its first bracketed list of two items or more (else
+    of one) whose spreading leaves the line's head and tail within WIDTH spread one item a line;
+    each item is then such a line of its own. (First: whose bracket opens leftmost, so the
+    outermost of nested lists.)"""
+    leaves = _leaves(children)
     column = out.column()
     if column + sum(len(leaf.text) + 1 for leaf in leaves) <= WIDTH or any(leaf.text == "{" for leaf in leaves):
         return  # fits, even with a space before each token; or holds a block
     scratch = Writer(comments=False)
     scratch.begin(0)
-    emit(scratch, item)
+    for child in children:
+        emit(scratch, child)
     line = scratch.finish(_END)[-1]
     if column + len(line) <= WIDTH:
         return
     found: list[tuple[int, int, int]] = []  # (where the list opens, its item count, its id)
-    stack: list[Child] = [item]
+    stack: list[Child] = [Node("", children)]
     while stack:
         node = stack.pop()
         if isinstance(node, Leaf):
@@ -316,12 +318,13 @@ def _primitive(out: Writer, node: Node) -> None:
         _clauses(scratch, primitive, head, False)
 
     wrapped = out.comments and (_inner_comments(node.leaves()) or _widest(node, out.fresh or 0, flat) > WIDTH)
+    if wrapped:
+        _fit(out, node.children[:head])
     _clauses(out, node, head, wrapped)
 
 
 def _clauses(out: Writer, node: Node, head: int, wrapped: bool) -> None:
-    for child in node.children[:head]:
-        emit(out, child)
+    _in_line(out, node.children[:head])
     level = out.level
     for clause in node.children[head:]:
         if wrapped and not (isinstance(clause, Node) and clause.rule == "actions"):
