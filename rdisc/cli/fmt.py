@@ -53,20 +53,18 @@ def run(args: argparse.Namespace) -> int:
 def _one(path: str, dry: bool) -> bool | None:
     """Format one file (or stdin): whether it changed (or would); None when it cannot be read,
     does not parse, or cannot be written (said on stderr)."""
+    from rdisc.compile import read_text
+    from rdisc.diagnostics import Diagnostics
     from rdisc.format import FormatError, format_text
 
     name = "<stdin>" if path == "-" else path
     if path.endswith(".json"):
         print(f"rdisc fmt: {path} is JSON; only .rdis descriptions are formatted", file=sys.stderr)
         return None
-    try:
-        if path == "-":
-            text = sys.stdin.read()
-        else:
-            with open(path, encoding="utf-8", newline="") as f:
-                text = f.read()
-    except (OSError, UnicodeDecodeError) as err:
-        print(f"rdisc fmt: cannot read {name}: {getattr(err, 'strerror', None) or err}", file=sys.stderr)
+    unread = Diagnostics()  # read as `rdisc check` reads it: not a FIFO or a device, UTF-8
+    text = sys.stdin.read() if path == "-" else read_text(path, unread)
+    if text is None:
+        _show(FormatError(name, "", tuple(unread.items)), with_text=False)
         return None
     try:
         formatted = format_text(text, name)
@@ -94,12 +92,13 @@ def _one(path: str, dry: bool) -> bool | None:
     return True
 
 
-def _show(err: FormatError) -> None:
+def _show(err: FormatError, with_text: bool = True) -> None:
     from rich.console import Console
 
     from rdisc.diagnostics.text import render
     from rdisc.source import Sources
 
     sources = Sources()
-    sources.add(err.name, err.text)
+    if with_text:
+        sources.add(err.name, err.text)
     Console(stderr=True, highlight=False).print(render(list(err.diagnostics), sources), soft_wrap=True)

@@ -35,12 +35,13 @@ class FormatError(Exception):
 def format_text(text: str, name: str = "<text>") -> str:
     """`text` (a description called `name` in diagnostics) in the canonical layout; FormatError
     when it does not parse."""
+    from rdisc.compile import _Tokens
     from rdisc.format.layout import lay_out
     from rdisc.format.tokens import read_tokens
-    from rdisc.syntax.parse import _chunks, parse
+    from rdisc.syntax.parse import _chunks
 
     diagnostics = Diagnostics()
-    parse(name, text, diagnostics)
+    _Tokens().parse(name, text, diagnostics)  # refused past `rdisc check`'s token budget, as check refuses it
     if diagnostics.has_errors():
         raise FormatError(name, text, tuple(d for d in diagnostics.sorted() if d.severity is Severity.ERROR))
     tokens = read_tokens(text, _chunks(text))

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import io
+import os
 from pathlib import Path
 
 import pytest
@@ -62,10 +63,10 @@ def test_a_file_that_does_not_parse_gets_its_diagnostics_and_exit_2(tmp_path: Pa
     assert messy.read_text() == TIDY  # the others are still formatted
 
 
-def test_a_missing_file_is_said_in_a_line(tmp_path: Path) -> None:
+def test_a_missing_file_is_said_as_check_says_it(tmp_path: Path) -> None:
     result = run_rdisc("fmt", tmp_path / "none.rdis")
     assert result.returncode == 2
-    assert result.stderr.startswith(f"rdisc fmt: cannot read {tmp_path / 'none.rdis'}: ")
+    assert result.stderr.startswith(f"error[E006]: cannot read {tmp_path / 'none.rdis'}: No such file or directory\n")
 
 
 def test_a_dash_formats_standard_input_to_standard_output(monkeypatch: pytest.MonkeyPatch,
@@ -96,3 +97,20 @@ def test_a_json_description_is_not_formatted(tmp_path: Path) -> None:
     said = f"rdisc fmt: {described} is JSON; only .rdis descriptions are formatted\n"
     assert (result.returncode, result.stderr) == (2, said + "rdisc fmt: 0 files reformatted, 0 unchanged, 1 not formatted\n")
     assert described.read_text() == "{}"
+
+
+def test_a_fifo_is_refused_unread_as_check_refuses_it(tmp_path: Path) -> None:
+    fifo = tmp_path / "pipe.rdis"
+    os.mkfifo(fifo)
+    result = run_rdisc("fmt", fifo)
+    assert result.returncode == 2
+    assert result.stderr.startswith(f"error[E006]: cannot read {fifo}: not a regular file\n")
+
+
+def test_a_description_past_the_token_budget_is_refused_as_check_refuses_it(tmp_path: Path) -> None:
+    messy = tmp_path / "messy.rdis"
+    messy.write_text(MESSY)
+    result = run_rdisc("fmt", "--max-tokens", "5", messy)
+    assert result.returncode == 2
+    assert result.stderr.startswith("error[E005]: the description has more than 5 tokens, with its imports")
+    assert messy.read_text() == MESSY
