@@ -200,10 +200,11 @@ def _spread(out: Writer, items: Node, closing: Leaf) -> None:
 def _fit(out: Writer, children: list[Child]) -> None:
     """The one wrapping rule. A line of the layout (a declaration, a block's item, a wrapped clause,
     a list's item, or the head of a block or of a primitive before its first clause) with no block
-    in it, longer than WIDTH, is written with its first bracketed list of two items or more (else
-    of one) whose spreading leaves the line's head and tail within WIDTH spread one item a line;
-    each item is then such a line of its own. (First: whose bracket opens leftmost, so the
-    outermost of nested lists.)"""
+    in it, longer than WIDTH, is written with one bracketed list spread one item a line; each item
+    is then such a line of its own. The list: of those that hold more of the line than the text
+    before and after them together, and whose spreading leaves that text within WIDTH, the first
+    of two items or more, else the first (first: whose bracket opens leftmost, so the outermost
+    of nested lists). None such: the line stays as it is."""
     leaves = _leaves(children)
     column = out.column()
     if column + sum(len(leaf.text) + 1 for leaf in leaves) <= WIDTH or any(leaf.text == "{" for leaf in leaves):
@@ -224,9 +225,10 @@ def _fit(out: Writer, children: list[Child]) -> None:
         for i, child in enumerate(node.children):
             if isinstance(child, Node) and child.rule in _LISTS and 0 < i < len(node.children) - 1:
                 opening, closing = node.children[i - 1], node.children[i + 1]
-                head = column + scratch.columns[id(opening)] + 1
-                tail = column + len(line) - scratch.columns[id(closing)]
-                if head <= WIDTH and tail <= WIDTH:
+                head = scratch.columns[id(opening)] + 1
+                tail = len(line) - scratch.columns[id(closing)]
+                inside = len(line) - head - tail
+                if column + head <= WIDTH and column + tail <= WIDTH and inside > head + tail:
                     found.append((head, len(_split(child.children)), id(child)))
         stack.extend(node.children)
     found.sort()

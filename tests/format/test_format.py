@@ -143,6 +143,12 @@ def test_a_long_array_is_spread_one_item_a_line_inside_its_call() -> None:
     assert format_text(text) == f"interface go() {{\n    send([\n{spread}    ])\n}}\n"
 
 
+def test_a_long_line_whose_lists_hold_little_of_it_stays_as_it_is() -> None:
+    line = "    total = " + " + ".join(f"weight_{i} * int(reading_{i})" for i in range(4))
+    text = f"output o: A {{\n{line}\n}}\n"
+    assert len(line) > 100 and format_text(text) == text
+
+
 def test_text_that_does_not_parse_raises_with_the_syntax_errors() -> None:
     with pytest.raises(FormatError) as caught:
         format_text("state x: int =\nstate y: int\n", "bad.rdis")
