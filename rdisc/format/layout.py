@@ -4,9 +4,9 @@ The layout of each construct is the printer's: 4-space indents; a block (`robot`
 `frame`, `interface`, an enum, a table, a reply table, ...) one item a line, `head {}` when empty;
 a primitive on one line when it fits in `WIDTH` columns, else one clause a line; post-actions
 `{ a = 1 }` inline when there is one, as a block when there are more; the parts inside `optional`,
-`either` and `bits` on one line, two spaces apart. The one wrapping rule: a call statement (and an
-`input`'s call) longer than `WIDTH` is written one argument a line, each with its comma, `)` on a
-line of its own; an enum's members and a table's entries always end with a comma.
+`either` and `bits` on one line, two spaces apart; an enum's members and a table's entries one a
+line, each with its comma. The one wrapping rule (`_fit`) generalises the printer's for a call
+statement: a line longer than `WIDTH` has one bracketed list spread one item a line.
 
 Comments decide only where lines break: a construct with a comment inside takes its several-line
 form; an own-line comment is written on its own line before its token; a trailing comment ends
