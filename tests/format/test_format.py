@@ -12,8 +12,11 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from rdisc.compile import compile_text
+from rdisc.diagnostics import Diagnostics
 from rdisc.emit.canonical import to_json
 from rdisc.format import FormatError, format_text
+from rdisc.syntax.parse import parse
+from rdisc.syntax.printer import WIDTH, print_module
 
 ROOT = Path(__file__).resolve().parents[2]
 FILES = sorted((ROOT / "examples").glob("*.rdis")) + [ROOT / "stdlib" / "adapters.rdis"]
@@ -201,3 +204,15 @@ def test_comments_anywhere_are_kept_and_the_result_is_stable(path: Path, data: s
 def test_the_example_of_docs_format_md_is_what_fmt_gives() -> None:
     before, after = re.findall(r"```rdis\n(.*?)```", (ROOT / "docs" / "format.md").read_text(), re.DOTALL)
     assert format_text(before) == after
+
+
+def test_the_printers_text_is_already_formatted_where_no_line_passes_the_width() -> None:
+    """`rdisc import`'s printer and `rdisc fmt` lay out alike: the printer's text of an example is
+    left as it is when all its lines fit (only a longer line is wrapped, by `rdisc fmt` alone)."""
+    fitting = 0
+    for path in FILES:
+        printed = print_module(parse(str(path), path.read_text(encoding="utf-8"), Diagnostics()))
+        if all(len(line) <= WIDTH for line in printed.splitlines()):
+            fitting += 1
+            assert format_text(printed) == printed, path.name
+    assert fitting >= 5
