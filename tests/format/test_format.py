@@ -216,3 +216,17 @@ def test_the_printers_text_is_already_formatted_where_no_line_passes_the_width()
             fitting += 1
             assert format_text(printed) == printed, path.name
     assert fitting >= 5
+
+
+@pytest.mark.parametrize(("written", "formatted"), [
+    ("- ( 1 )+~ 2", "-(1) + ~2"),
+    ("not  x  and y", "not x and y"),
+    ("a [ 1 ] [ 2 ]", "a[1][2]"),
+    ("T . m", "T.m"),
+    ("f ( a , b , )", "f(a, b)"),
+    ("[ 1 , 2 ] [ i ]", "[1, 2][i]"),
+    ("x if c else - y ** - 2", "x if c else -y ** -2"),
+    ("T . get ( k , 0 )", "T.get(k, 0)"),
+])
+def test_spacing_around_operators_brackets_and_commas(written: str, formatted: str) -> None:
+    assert format_text(f"state s: int = {written}\n") == f"state s: int = {formatted}\n"
