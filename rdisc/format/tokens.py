@@ -55,8 +55,11 @@ class Leaf:
 class Node:
     rule: str
     children: list[Child]
+    known: list[Leaf] | None = None  # the leaves, once asked
 
     def leaves(self) -> list[Leaf]:
+        if self.known is not None:
+            return self.known
         found: list[Leaf] = []
         stack: list[Child] = [self]
         while stack:
@@ -65,6 +68,7 @@ class Node:
                 found.append(item)
             else:
                 stack.extend(reversed(item.children))
+        self.known = found
         return found
 
 
