@@ -1,0 +1,48 @@
+"""`format_text`: a description in the canonical layout, every comment kept where it was written.
+
+Why a token-stream formatter, not the AST printer with comments attached: the formatter re-emits
+the tokens the parser read, in their order and spelled as written (`0xFE` stays `0xFE`, a string
+keeps its escapes, parentheses stay), and changes only the white space between them (and a list's
+trailing comma). Every comment lies between two tokens, so it is attached to one of them and
+written next to it: none can be lost, wherever it stands, and the formatted file parses to the
+same declarations, by construction. The AST printer (rdisc/syntax/printer.py) respells literals
+and has no place for a comment inside an expression or between a clause and its post-actions.
+The *layout*, though, is the printer's: the tokens are grouped by the grammar's own parse tree,
+and each construct is laid out as the printer lays it out (rdisc/format/layout.py).
+
+Pure and fast enough for an editor: no files read or written, no state kept between calls (the
+grammar's parser is made once, as `rdisc check`'s is).
+"""
+
+from __future__ import annotations
+
+from rdisc.diagnostics import Diagnostic, Diagnostics, Severity
+
+__all__ = ["FormatError", "format_text"]
+
+
+class FormatError(Exception):
+    """The text does not parse: its syntax errors (`diagnostics`), as `rdisc check` reports them."""
+
+    def __init__(self, name: str, text: str, diagnostics: tuple[Diagnostic, ...]) -> None:
+        first = diagnostics[0].message if diagnostics else "it does not parse"
+        super().__init__(f"{name}: cannot be formatted: {first}")
+        self.name = name
+        self.text = text
+        self.diagnostics = diagnostics
+
+
+def format_text(text: str, name: str = "<text>") -> str:
+    """`text` (a description called `name` in diagnostics) in the canonical layout; FormatError
+    when it does not parse."""
+    from rdisc.compile import _Tokens
+    from rdisc.format.layout import lay_out
+    from rdisc.format.tokens import read_tokens
+    from rdisc.syntax.parse import _chunks
+
+    diagnostics = Diagnostics()
+    _Tokens().parse(name, text, diagnostics)  # refused past `rdisc check`'s token budget, as check refuses it
+    if diagnostics.has_errors():
+        raise FormatError(name, text, tuple(d for d in diagnostics.sorted() if d.severity is Severity.ERROR))
+    tokens = read_tokens(text, _chunks(text))
+    return lay_out(tokens.decls, tokens.end)

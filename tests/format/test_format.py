@@ -1,0 +1,232 @@
+"""`format_text`: the canonical layout, every comment kept; idempotent; the same Model after."""
+
+from __future__ import annotations
+
+import re
+from collections import Counter
+from pathlib import Path
+
+import pytest
+from conftest import fuzz_examples
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from rdisc.compile import compile_text
+from rdisc.diagnostics import Diagnostics
+from rdisc.emit.canonical import to_json
+from rdisc.format import FormatError, format_text
+from rdisc.syntax.parse import parse
+from rdisc.syntax.printer import WIDTH, print_module
+
+ROOT = Path(__file__).resolve().parents[2]
+FILES = sorted((ROOT / "examples").glob("*.rdis")) + [ROOT / "stdlib" / "adapters.rdis"]
+# Comments as the lexer finds them: outside strings (a string has no newline and its quotes paired).
+_LEXED_COMMENT = re.compile(r'r?b?"(?:[^"\\\n]|\\.)*"|(///[^\n]*|#[^\n]*)')
+
+
+def comments(text: str) -> Counter[str]:
+    return Counter(m.group(1).rstrip() for m in _LEXED_COMMENT.finditer(text) if m.group(1))
+
+
+def same_meaning(path: Path, before: str, after: str) -> None:
+    """`after` checks as `before` does: the same canonical JSON, the same diagnostic codes."""
+    first, second = compile_text(str(path), before), compile_text(str(path), after)
+    assert sorted(d.code for d in second.diagnostics.items) == sorted(d.code for d in first.diagnostics.items)
+    assert (first.model is None) == (second.model is None)
+    if first.model is not None and second.model is not None:
+        assert to_json(second.model) == to_json(first.model)
+
+
+MESSY = '''\
+# A header comment, then two blank lines.
+
+
+import   "../stdlib/adapters.rdis"
+robot r { author "me"  version "1" }
+enum Op { ping = 0x01, read = 0x02 }   # trailing, after the enum
+const T = { 1: 2, 3: 4, }
+state   count:int=0
+state flag: bool = not   True
+
+
+
+/// The link.
+connection bus : serial { baud 9600
+    startup   hello()  # said first
+}
+primitive hello() on bus pack "B" (1)
+primitive read_it(id: int) on bus pack "BB" ( 2, id ) unpack "<h" { count = - out[0] }
+primitive two() on bus pack "B" (3) unpack "<hh" { count = out[0]  flag = out[1] == 1 }
+primitive noted() on bus  # why this bus
+    pack "B" (4)
+primitive a_primitive_with_a_long_name(first_parameter: int) on bus pack ">Bh" (137, first_parameter) unpack ">h"
+frame f { header "\\xAA" checksum "crc16" "<H" over header .. payload  optional { literal "x"  payload } }
+interface go(a: int) {
+    read_it(a)  delay 10 ms
+
+    # the second call
+    read_it(a + 1,
+            # one more
+            2 * a)
+    read_it(a_very_long_argument_name_number_one + 100000, a_very_long_argument_name_number_two * 300000)
+}
+# the end
+'''
+
+FORMATTED = '''\
+# A header comment, then two blank lines.
+
+import "../stdlib/adapters.rdis"
+robot r {
+    author "me"
+    version "1"
+}
+enum Op {
+    ping = 0x01,
+    read = 0x02,
+}  # trailing, after the enum
+const T = {
+    1: 2,
+    3: 4,
+}
+state count: int = 0
+state flag: bool = not True
+
+/// The link.
+connection bus: serial {
+    baud 9600
+    startup hello()  # said first
+}
+primitive hello() on bus pack "B" (1)
+primitive read_it(id: int) on bus pack "BB" (2, id) unpack "<h" { count = -out[0] }
+primitive two() on bus pack "B" (3) unpack "<hh" {
+    count = out[0]
+    flag = out[1] == 1
+}
+primitive noted()
+    on bus  # why this bus
+    pack "B" (4)
+primitive a_primitive_with_a_long_name(first_parameter: int)
+    on bus
+    pack ">Bh" (137, first_parameter)
+    unpack ">h"
+frame f {
+    header "\\xAA"
+    checksum "crc16" "<H" over header .. payload
+    optional { literal "x"  payload }
+}
+interface go(a: int) {
+    read_it(a) delay 10 ms
+
+    # the second call
+    read_it(
+        a + 1,
+        # one more
+        2 * a,
+    )
+    read_it(
+        a_very_long_argument_name_number_one + 100000,
+        a_very_long_argument_name_number_two * 300000,
+    )
+}
+# the end
+'''
+
+
+def test_a_messy_description_takes_the_canonical_layout_with_its_comments_where_they_were() -> None:
+    assert format_text(MESSY) == FORMATTED
+    assert format_text(FORMATTED) == FORMATTED
+    same_meaning(ROOT / "examples" / "t.rdis", MESSY, FORMATTED)
+
+
+def test_a_long_array_is_spread_one_item_a_line_inside_its_call() -> None:
+    items = ", ".join(f"position_number_{i} * 1000" for i in range(5))
+    text = f"interface go() {{\n    send([{items}])\n}}\n"
+    spread = "".join(f"        position_number_{i} * 1000,\n" for i in range(5))
+    assert format_text(text) == f"interface go() {{\n    send([\n{spread}    ])\n}}\n"
+
+
+def test_a_long_line_whose_lists_hold_little_of_it_stays_as_it_is() -> None:
+    line = "    total = " + " + ".join(f"weight_{i} * int(reading_{i})" for i in range(4))
+    text = f"output o: A {{\n{line}\n}}\n"
+    assert len(line) > 100 and format_text(text) == text
+
+
+def test_text_that_does_not_parse_raises_with_the_syntax_errors() -> None:
+    with pytest.raises(FormatError) as caught:
+        format_text("state x: int =\nstate y: int\n", "bad.rdis")
+    assert [(d.code, d.span.start if d.span else None) for d in caught.value.diagnostics] == [("E001", 15)]
+    assert str(caught.value).startswith("bad.rdis: cannot be formatted: ")
+
+
+def test_empty_text_and_only_comments() -> None:
+    assert format_text("") == ""
+    assert format_text("\n\n# just a note  \n\n\n/// and a doc\n") == "# just a note\n\n/// and a doc\n"
+
+
+@pytest.mark.parametrize("path", FILES, ids=lambda p: p.name)
+def test_every_example_formats_idempotently_to_the_same_model_with_every_comment(path: Path) -> None:
+    text = path.read_text(encoding="utf-8")
+    formatted = format_text(text, str(path))
+    assert format_text(formatted, str(path)) == formatted
+    assert comments(formatted) == comments(text)
+    same_meaning(path, text, formatted)
+    assert all(not line.endswith(" ") for line in formatted.splitlines())
+
+
+def _gaps(text: str) -> list[int]:
+    """Offsets where a comment may go: after each token (before the white space following it)."""
+    return [m.end() for m in re.finditer(r'r?b?"(?:[^"\\\n]|\\.)*"|///[^\n]*|#[^\n]*|[^\s]+?(?=[\s]|$)', text)]
+
+
+SMALL = [path for path in FILES if path.name in ("sabertooth.rdis", "sbus.rdis", "tfmini.rdis", "modbus.rdis")]
+
+
+@settings(max_examples=fuzz_examples(25), deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.sampled_from(SMALL), st.data())
+def test_comments_anywhere_are_kept_and_the_result_is_stable(path: Path, data: st.DataObject) -> None:
+    text = path.read_text(encoding="utf-8")
+    gaps = _gaps(text)
+    chosen = sorted(data.draw(st.lists(st.sampled_from(gaps), min_size=1, max_size=6, unique=True)), reverse=True)
+    for i, at in enumerate(chosen):
+        own_line = data.draw(st.booleans())
+        note = f"# note {i}" if i % 2 else f"/// doc {i}"
+        text = text[:at] + (f"\n{note}\n" if own_line else f"  {note}\n") + text[at:]
+    try:
+        formatted = format_text(text, str(path))
+    except FormatError:  # a comment in mid-string or mid-token: it did not parse, and that was said
+        return
+    assert format_text(formatted, str(path)) == formatted
+    assert comments(formatted) == comments(text)
+    same_meaning(path, text, formatted)
+
+
+def test_the_example_of_docs_format_md_is_what_fmt_gives() -> None:
+    before, after = re.findall(r"```rdis\n(.*?)```", (ROOT / "docs" / "format.md").read_text(), re.DOTALL)
+    assert format_text(before) == after
+
+
+def test_the_printers_text_is_already_formatted_where_no_line_passes_the_width() -> None:
+    """`rdisc import`'s printer and `rdisc fmt` lay out alike: the printer's text of an example is
+    left as it is when all its lines fit (only a longer line is wrapped, by `rdisc fmt` alone)."""
+    fitting = 0
+    for path in FILES:
+        printed = print_module(parse(str(path), path.read_text(encoding="utf-8"), Diagnostics()))
+        if all(len(line) <= WIDTH for line in printed.splitlines()):
+            fitting += 1
+            assert format_text(printed) == printed, path.name
+    assert fitting >= 5
+
+
+@pytest.mark.parametrize(("written", "formatted"), [
+    ("- ( 1 )+~ 2", "-(1) + ~2"),
+    ("not  x  and y", "not x and y"),
+    ("a [ 1 ] [ 2 ]", "a[1][2]"),
+    ("T . m", "T.m"),
+    ("f ( a , b , )", "f(a, b)"),
+    ("[ 1 , 2 ] [ i ]", "[1, 2][i]"),
+    ("x if c else - y ** - 2", "x if c else -y ** -2"),
+    ("T . get ( k , 0 )", "T.get(k, 0)"),
+])
+def test_spacing_around_operators_brackets_and_commas(written: str, formatted: str) -> None:
+    assert format_text(f"state s: int = {written}\n") == f"state s: int = {formatted}\n"
