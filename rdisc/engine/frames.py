@@ -137,7 +137,7 @@ class Frame:
             _check_ranges(f"{owner}: frame {self.name}", self.params, self.ranged, args)
         fields = [] if self.fields is None else self.fields(args)
         if self.answer is not None:
-            fields.append(self._chosen(owner, "reply ", self.answer(args), len(self.replies)))
+            fields.append(self._chosen(owner, "reply layout", self.answer(args), len(self.replies)))
         return fields
 
     def layout(self, owner: str, args: Args) -> int:
@@ -145,17 +145,17 @@ class Frame:
         holds, else a plain last one; -1 when the frame chooses by the payload's size."""
         if self.choose is None:
             return -1
-        return self._chosen(owner, "", self.choose(args), len(self.requests))
+        return self._chosen(owner, "layout", self.choose(args), len(self.requests))
 
-    def _chosen(self, owner: str, side: str, conditions: Sequence[Any], count: int) -> int:
-        """The first layout of `count` whose condition holds, else a plain last one (no more conditions
-        than layouts); none is an RdisValueError of `owner`. `side`: "reply " for a reply's layouts."""
+    def _chosen(self, owner: str, what: str, conditions: Sequence[Any], count: int) -> int:
+        """The first of `count` layouts (`what`: "layout", "reply layout") whose condition holds, else a
+        plain last one (no more conditions than layouts); none is an RdisValueError of `owner`."""
         for index, holds in enumerate(conditions):
             if holds:
                 return index
         if count > len(conditions):
             return len(conditions)
-        raise RdisValueError(f"{owner}: frame {self.name}: no {side}layout's condition holds")
+        raise RdisValueError(f"{owner}: frame {self.name}: no {what}'s condition holds")
 
     def wrap(self, payload: bytes, fields: Sequence[int], layout: int = -1) -> bytes:
         """The request: `payload` framed (stuffed first, when the frame stuffs), with the
