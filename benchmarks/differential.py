@@ -13,7 +13,9 @@ ranges, outputs). Each is shrunk, printed and remembered by its signature (what 
 first, or the rule and how), and the search goes on, failing only on signatures not
 seen yet, until the budget of descriptions is spent; a bug listed in KNOWN is printed
 as first seen, unshrunk. Also printed: the calls' outcomes, apart those of calls whose
-every reply was valid (a check on the strategies as much as on rdisc). Exit status 1
+every reply was valid, and how many descriptions exercised each rarer construct (layouts
+a setting chooses, lookups in framed replies): a check on the strategies as much as on
+rdisc. Exit status 1
 if anything was found. Leave rdisc alone while it runs (see `fingerprint`).
 """
 
@@ -37,7 +39,7 @@ sys.path.insert(0, str(ROOT / "tests" / "properties"))
 if importlib.util.find_spec("rdisc") is None:
     sys.path.append(str(ROOT))  # this checkout's rdisc, when none is installed (PYTHONPATH may give another)
 
-from descriptions import Description, Script, descriptions, scripts
+from descriptions import Description, Script, constructs, descriptions, scripts
 from differential_support import Outcome, Pairs, compare
 from hypothesis import HealthCheck, Phase, given, seed, settings
 from hypothesis import strategies as st
@@ -61,6 +63,7 @@ class Tally:
     calls: int = 0
     outcomes: Counter[str] = field(default_factory=Counter)  # call outcomes, runtime side
     valid: Counter[str] = field(default_factory=Counter)  # the same, of calls every reply of which is valid
+    constructs: Counter[str] = field(default_factory=Counter)  # descriptions exercising each rarer construct
     findings: dict[tuple[Any, ...], Finding] = field(default_factory=dict)
     seconds: float = 0.0
 
@@ -106,6 +109,7 @@ def search(budget: int, first_seed: int, sessions: int, shrink: bool) -> Tally:
                 tally.shrink_runs += 1
             else:
                 tally.descriptions += 1
+                tally.constructs.update(constructs(description))
             pair = pairs(description)
             for _ in range(sessions):
                 script = data.draw(scripts(description))
@@ -144,6 +148,7 @@ def merge(tallies: list[Tally]) -> Tally:
         total.calls += t.calls
         total.outcomes.update(t.outcomes)
         total.valid.update(t.valid)
+        total.constructs.update(t.constructs)
         for signature, finding in t.findings.items():
             total.findings.setdefault(signature, finding)
         total.seconds = max(total.seconds, t.seconds)
@@ -191,6 +196,8 @@ def main() -> int:
     print(f"call outcomes (runtime): {outcomes}")
     valid = ", ".join(f"{kind} {count}" for kind, count in total.valid.most_common())
     print(f"  of calls whose every reply was valid: {valid}")
+    drawn = ", ".join(f"{kind} {count}" for kind, count in sorted(total.constructs.items()))
+    print(f"descriptions with: {drawn or 'none of the rarer constructs'}")
     if not total.findings:
         print("no problem found: the implementations agree and keep the contract")
         return 0

@@ -98,6 +98,7 @@ class Frame:
     more_replies: list[list[Construct[Any]]] = dataclasses.field(default_factory=list)
     escaping: Construct[engine.Escaping] | None = None
     choose: Code | None = None  # `either when`: each request layout's condition over the args
+    answer: Code | None = None  # and each reply layout's
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -597,8 +598,12 @@ def frame(f: m.Frame) -> Frame:
     return Frame(f.name, parts(f, f.request), parts(f, f.reply), stuffing=stuffing(f), params=_params(f.params),
                  fields=fields, more_requests=[parts(f, layout) for layout in f.more_requests],
                  more_replies=[parts(f, layout) for layout in f.more_replies], escaping=escaping(f),
-                 choose=_values(f.params, tuple(e for e in f.request_when if e is not None), ("args",))
-                 if f.request_when else None)
+                 choose=_conditions(f.params, f.request_when), answer=_conditions(f.params, f.reply_when))
+
+
+def _conditions(params: tuple[m.Parameter, ...], when: tuple[m.Expr | None, ...]) -> Code | None:
+    """The conditions of a side's `either when` over the frame's arguments (a plain last layout has none)."""
+    return _values(params, tuple(e for e in when if e is not None), ("args",)) if when else None
 
 
 def _written(plan: Primitive, params: tuple[m.Parameter, ...], encoding: m.Pack | m.Format | None) -> Written | None:

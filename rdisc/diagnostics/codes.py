@@ -454,16 +454,20 @@ escape). Right: `frame slip { payload terminator "\\xC0"  escape "\\xDB" {
 "\\xC0": "\\xDC", "\\xDB": "\\xDD" } }`."""),
     ("E513", "layout-condition", """
 `either when COND { ... } or when COND { ... } or { ... }` in a frame's `request
-{ }` chooses the request's layout by conditions over the frame's parameters (a
-setting passed as the frame's argument picks the framing): the first alternative
-whose condition holds is written, a plain last alternative when none does (with
-none, a call where no condition holds is a value error). Each COND is a bool. Only
-the last alternative may go without `when`: alternatives chosen by a payload's
-size and by a condition are not mixed. A reply's layout is known by the header
-that comes, so `when` is refused in a `reply { }` and in a frame's parts for both
-directions. Wrong: `request { either { payload } or when mode == 1 { header
-"\xAA" payload } }`. Right: `request { either when mode == 1 { header "\xAA"
-payload } or { payload } }`."""),
+{ }` or `reply { }` chooses that side's layout by conditions over the frame's
+parameters (a setting passed as the frame's argument picks the framing): the
+first alternative whose condition holds is the one written or read, a plain last
+alternative when none does (with none, a call where no condition holds is a value
+error, before anything is sent). Each COND is a bool. Only the last alternative
+may go without `when`: alternatives chosen by a payload's size (a request) or by
+their header (a reply) and by a condition are not mixed. A reply's layout is the
+device's configuration, known when connecting: the argument of each parameter a
+reply's `when` reads is a setting or a constant, not a primitive's parameter or
+state. One condition cannot choose for both directions, so `when` is refused in a
+frame's parts written for both. Wrong: `request { either { payload } or when
+mode == 1 { header "\\xAA" payload } }`. Right: `request { either when mode == 1 {
+header "\\xAA" payload } or { payload } }`, and `reply { either when crc { payload
+checksum "crc" "B" width 7 poly 0x09 reflect over payload } or { payload } }`."""),
     ("E512", "checksum-seed", """
 `seed TABLE[FIELD]` on a checksum sums one more byte after the bytes it covers and
 never sends it: the value a lookup table holds for the value of a `field` of the

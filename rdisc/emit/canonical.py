@@ -278,6 +278,7 @@ def _frame(f: m.Frame) -> JsonObject:
         ("requestWhen", [None if e is None else _embedded(e) for e in f.request_when] or None),
         ("reply", [_frame_part(part) for part in f.reply]),
         ("moreReplies", [[_frame_part(part) for part in parts] for parts in f.more_replies] or None),
+        ("replyWhen", [None if e is None else _embedded(e) for e in f.reply_when] or None),
         ("stuffing", None if f.stuffing is None else {"after": f.stuffing[0], "insert": f.stuffing[1]}),
         ("escaping", None if f.escaping is None else {"escape": f.escaping.escape, "codes": dict(f.escaping.table)}),
         ("doc", f.doc),

@@ -102,10 +102,19 @@ class Teller:
         self.requests = {name: request_layouts(model, p, as_read=True) for name, p in model.primitives.items()}
         self.replies = {name: reply_layouts(model, p, as_read=True) for name, p in model.primitives.items()}
         self.errors = {name: _error_checks(device, name) for name in model.primitives}
+        self.answered = {name for name, plan in device.primitives.items()  # settings chose the reply's layout
+                         if plan.frame is not None and plan.frame.frame.answer is not None and len(self.checks[name][1]) > 1}
         self.sizes = {name: _sizes(device.primitives[name]) for name in model.primitives}
         self.written: dict[str | None, bytes] = {}  # the last request on each connection (a checksum may cover it)
         self.carried: dict[str | None, _Fields] = {}  # its frame's fields, which its reply must carry too
         self.asked: dict[str | None, str] = {}  # the primitive of the last request on each connection
+
+    def held(self, name: str, n: int, said: str, frames: _Check) -> _Check:
+        """The frames that hold the `n`-th reply table of `name`: when settings chose the reply's
+        layout (`either when`), the one of its layout (the tables come a layout each, in order)."""
+        if name not in self.answered or said == "error":
+            return frames
+        return (frames[n % len(frames)],)
 
     def primitive(self, message: Message) -> str | None:
         """The primitive whose request or reply the message is, if one's is."""
@@ -145,24 +154,27 @@ class Teller:
         # the request's frame fields, which its reply carries when it comes in the same frame
         carried = self.carried.get(message.connection) if before and not model.primitives[before].reply_frames else None
         for name in ordered:
-            for said, (table, pattern) in replies[name]:
+            for n, (said, (table, pattern)) in enumerate(replies[name]):
                 frames = checks[name][1] if said != "error" or self.errors[name] is None else self.errors[name] or ()
+                own = frames is checks[name][1]
+                frames = self.held(name, n, said, frames)
                 data = _as_read(frames, message.data, request, self.sizes[name][1])
                 rows = matched((table, pattern), data)
                 if rows is not None and _whole(frames, message.data, request,
-                                               carried if name == before and frames is checks[name][1] else None) \
+                                               carried if name == before and own else None) \
                         and self._as_said(name, said, message.data, request):
                     found.append((f"{said} of {name}", rows, pattern if isinstance(pattern, str) else None, data))
         if found and found[0][0].endswith(f" of {before}"):  # the request's own reply: no other is meant
             return found[:1]
         if before in names:  # its shape, but not its request's fields (another servo's status)
             assert before is not None
-            data = _as_read(checks[before][1], message.data, request, self.sizes[before][1])
-            for said, (table, pattern) in replies[before]:
+            for n, (said, (table, pattern)) in enumerate(replies[before]):
+                frames = self.held(before, n, said, checks[before][1])
+                data = _as_read(frames, message.data, request, self.sizes[before][1])
                 rows = matched((table, pattern), data)
-                if rows is not None and _whole(checks[before][1], message.data, request) \
+                if rows is not None and _whole(frames, message.data, request) \
                         and self._as_said(before, said, message.data, request):
-                    wrong = _misread(checks[before][1], message.data, request, carried)
+                    wrong = _misread(frames, message.data, request, carried)
                     return [(f"{said} of {before}, but {wrong}", rows, None, data)]
         return found
 
@@ -354,6 +366,9 @@ def _checks(model: m.Model, device: engine.Device, name: str) -> tuple[_Check, _
     reply = device.primitives[name].reply
     if isinstance(reply, engine.SeveralReplies) and reply.frames:  # `replies id in ids frame status(id)`: any id
         return requests, ((reply.frames[0].frame, _Fields()),)
+    if framed and frame.answer is not None:  # settings chose the reply's layout (`either when`): any may come
+        return requests, tuple((engine.Frame(frame.name, side.parts, side.parts, frame.stuffing,
+                                             escaping=frame.escaping), fields) for side in frame.replies)
     return requests, ((frame, fields),) if framed else ()
 
 

@@ -67,11 +67,12 @@ def _primitive(model: m.Model, p: m.Primitive) -> str:
     if p.reply_frames:  # each reply through its own frame, all of one frame
         frame = model.frames[p.reply_frames[0].frame]
     framed = frame.replies if frame and frame.reply else None
+    answered = frame.reply_when if frame and frame.reply else ()  # `either when`: each layout's condition
     if p.table is not None:
         for case in p.table.cases:
             said = case.values_text()
             if p.table.tag is None:
-                lines += _sides(f"reply when {p.table.key} = {said}", framed, _reply_rows(case.decoding))
+                lines += _sides(f"reply when {p.table.key} = {said}", framed, _reply_rows(case.decoding), True, answered)
             else:
                 rows = [*_tag_rows(p.table, case), *_reply_rows(case.decoding)]
                 said = said if case.under is None else f"{case.under} then {said}"
@@ -85,10 +86,11 @@ def _primitive(model: m.Model, p: m.Primitive) -> str:
                                         "of what follows" if size is None else f"= {size}"))
                     if case is p.table.cases[0]:
                         skipped = " (an unknown tag skipped by its length)" if p.table.length else ""
-                        lines += _sides("reply", framed, [(None, "sub-payloads", f"each a tag and its bytes{skipped}")])
+                        lines += _sides("reply", framed, [(None, "sub-payloads", f"each a tag and its bytes{skipped}")], True,
+                                        answered)
                     lines += _sides(f"sub-payload tagged {said}", None, rows)
                     continue
-                lines += _sides(f"reply tagged {said}", framed, rows)
+                lines += _sides(f"reply tagged {said}", framed, rows, True, answered)
     elif p.listed:  # each reply its own shape, through its own frame or the primitive's
         for n, r in enumerate(p.listed, 1):
             use = r.frame or p.frame
@@ -96,7 +98,7 @@ def _primitive(model: m.Model, p: m.Primitive) -> str:
             through = "" if r.frame is None else \
                 f", frame {r.frame.frame}({', '.join(expression_text(a) for a in r.frame.args)})"
             lines += _sides(f"reply {n} of {len(p.listed)}{through}", own.replies if own and own.reply else None,
-                            _reply_rows(r.decoding))
+                            _reply_rows(r.decoding), True, own.reply_when if own else ())
     elif p.expects_reply(model.frames):
         uses = [f"{use.frame}({', '.join(expression_text(a) for a in use.args)})" for use in p.reply_frames]
         through = f", frame {uses[0]} .. {uses[-1]}" if uses else ""
@@ -107,7 +109,7 @@ def _primitive(model: m.Model, p: m.Primitive) -> str:
         if p.each is not None:  # one frame, its arguments reading each element
             sized = "a reply" if not p.each.array(p.params).size else f"{p.replies} replies, one"
             said = f"{sized} for each of {p.each.over}, frame {uses[0]}, each"
-        lines += _sides("reply: records, each" if p.records is not None else said, framed, rows)
+        lines += _sides("reply: records, each" if p.records is not None else said, framed, rows, True, answered)
         if p.error is not None and p.error.when is not None:  # the reply itself says no
             named = "" if p.error.codes is None else f", named by {p.error.codes}"
             condition = expression_text(p.error.when).replace("__out__[", "out[")  # JSON's name for the reply

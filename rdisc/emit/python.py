@@ -357,6 +357,9 @@ class _Driver:
             if framed.choose is not None:
                 self.code(w, f"_choose_{frame.name}", framed.choose)
                 w.blank(2)
+            if framed.answer is not None:
+                self.code(w, f"_answer_{frame.name}", framed.answer)
+                w.blank(2)
             self.constant(w, self.plan["frame", frame.name], framed)
         for prim in model.primitives.values():
             w.blank(2)

@@ -9,7 +9,7 @@ from rdisc.json_import.values import JArray, JBool, JNull, JNumber, JObject, JSt
 from rdisc.syntax import ast
 
 _FRAME = ("name", "parameters", "parameterTypes", "parameterRanges", "parameterDefaults", "parameterUnits",
-          "request", "reply", "moreRequests", "moreReplies", "requestWhen",
+          "request", "reply", "moreRequests", "moreReplies", "requestWhen", "replyWhen",
           "stuffing", "escaping", "doc")
 _CHECKSUM = (
     "checksum", "kind", "width", "poly", "init", "reflectIn", "reflectOut", "xorOut", "inverted", "mask", "format",
@@ -41,13 +41,14 @@ class Frames(Expressions):
             layouts = [self.frame_parts(m.get(side), f"`{side}`"),
                        *(self.frame_parts(v, "a layout") for v in self.array(m.get(more), f"`{more}`"))]
             when: tuple[ast.Expr | None, ...] = ()
-            if side == "request" and "requestWhen" in m:  # `either when`: a condition (or null) per layout
+            when_key = f"{side}When"
+            if when_key in m:  # `either when`: a condition (or null) per layout
                 when = tuple(None if isinstance(v, JNull) else self.expr(v, "bool")
-                             for v in self.array(m["requestWhen"], "`requestWhen`"))
+                             for v in self.array(m[when_key], f"`{when_key}`"))
                 if len(when) != len(layouts) or len(layouts) < 2:
-                    self.error(m["requestWhen"].span, f"`requestWhen` has {len(when)} condition{'' if len(when) == 1 else 's'} for "
-                               f"{len(layouts)} request layout{'' if len(layouts) == 1 else 's'}",
-                               help="give a condition (or null, the last only) for `request` and each of `moreRequests`")
+                    self.error(m[when_key].span, f"`{when_key}` has {len(when)} condition{'' if len(when) == 1 else 's'} for "
+                               f"{len(layouts)} {side} layout{'' if len(layouts) == 1 else 's'}",
+                               help=f"give a condition (or null, the last only) for `{side}` and each of `{more}`")
                     when = ()
             sides[side] = layouts[0] if len(layouts) == 1 and not when else (
                 ast.FrameEither(tuple(layouts), m[more].span if more in m else m[side].span, when),)
@@ -55,7 +56,8 @@ class Frames(Expressions):
             return None
         self.frame_types[name.text] = tuple(type_text(p.type) for p in params)
         written = {side: m[side] for side in ("request", "reply") if side in m}
-        if sides["request"] == sides["reply"]:  # one sequence for both directions
+        chosen = any(isinstance(p, ast.FrameEither) and p.conditions for parts in sides.values() for p in parts)
+        if sides["request"] == sides["reply"] and not chosen:  # one sequence for both directions
             items: tuple[ast.FramePart | ast.FrameSide | ast.FrameStuff | ast.FrameEscape, ...] = sides["request"]
         else:
             items = tuple(ast.FrameSide(side, parts, written[side].span if side in written else obj.span)

@@ -129,7 +129,8 @@ class _Engine:
     def frame(self, f: plans.Frame) -> engine.Frame:
         return self.once(f, lambda: engine.Frame(
             f.name, built(f.request), built(f.reply), built(f.stuffing), built(f.params), self.closure(f.fields),
-            built(f.more_requests), built(f.more_replies), built(f.escaping), self.closure(f.choose)))
+            built(f.more_requests), built(f.more_replies), built(f.escaping), self.closure(f.choose),
+            self.closure(f.answer)))
 
     def use(self, use: plans.FrameUse) -> engine.FrameUse:
         return engine.FrameUse(self.frame(use.frame), self.closure(use.args))

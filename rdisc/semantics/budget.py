@@ -206,13 +206,15 @@ def _worst(frame: m.Frame, layout: tuple[m.FramePart, ...], size: int) -> int:
 
 def _reply_bytes(prim: m.Primitive, frames: dict[str, m.Frame] | None, request: int, framing: int,
                  escaped: bool = True) -> int:
-    """Bytes of one reply, its frame's shortest reply layout (without optional parts) included;
+    """Bytes of one reply, its frame's shortest reply layout (without optional parts; the longest
+    when a setting chooses it, `either when`) included;
     `request` and `framing`, the request's, which a table's entries are counted without."""
     use = prim.reply_frames[0] if prim.reply_frames else prim.frame  # replies through their own frames: all of one
     frame = (frames or {}).get(use.frame) if use is not None else None
     answer = 0
     if frame is not None and prim.expects_reply(frames or {}):
-        answer = min((frame_bytes(parts, shortest=True) for parts in frame.replies), default=0)
+        counted = max if frame.reply_when else min  # the longest a setting may choose, else the shortest to come
+        answer = counted((frame_bytes(parts, shortest=True) for parts in frame.replies), default=0)
     match prim.decoding:
         case m.Unpack(layout=layout, until=until):
             reply = layout.most(formats.most_rounds(layout, [])) + len(until or "")  # and its end marker

@@ -144,9 +144,10 @@ class FrameRules:
             request = self.layouts(direct, "request", decl, env, fields)
             reply = self.layouts(direct, "reply", decl, env, fields, quiet=True)
         chosen = self.chooser(sides["request"].parts, env) if "request" in sides else ()
-        self.chooser(sides["reply"].parts if "reply" in sides else direct, env, "reply")  # refused there
+        answered = self.chooser(sides["reply"].parts, env) if "reply" in sides else ()
+        self.chooser(direct, env, both=True)  # refused there
         frame = m.Frame(decl.name.text, params, request[0], reply[0], decl.doc, decl.span, stuffing, request[1:],
-                        reply[1:], escaping, chosen)
+                        reply[1:], escaping, chosen, answered)
         if escaping is not None:
             self.escaped(frame, escapes[0], decl)
         return frame
@@ -270,7 +271,7 @@ class FrameRules:
         if side == "request":
             return layouts
         heads = []
-        for n, layout in enumerate(layouts, 1):
+        for n, layout in enumerate(layouts if not either.conditions else (), 1):  # else chosen by a condition
             first = layout[0] if layout else None
             if not isinstance(first, m.FrameBytes) or first.role != "header":
                 self.d.report("E507", either.span, f"alternative {n} of frame `{name}` starts with no `header`",
@@ -289,15 +290,17 @@ class FrameRules:
                           help="give every alternative of a reply a payload, or none")
         return layouts
 
-    def chooser(self, parts: tuple[ast.FramePart, ...], env: Env, side: str = "request") -> tuple[m.Expr | None, ...]:
+    def chooser(self, parts: tuple[ast.FramePart, ...], env: Env, both: bool = False) -> tuple[m.Expr | None, ...]:
         """The conditions of a side's `either when`, typed over the frame's parameters: a plain
-        alternative only last (taken when none holds); () when its `either` is chosen by size."""
+        alternative only last (taken when none holds); () when its `either` is chosen by size
+        (a request) or by its header (a reply). `both`: parts written for both directions, where
+        one condition cannot choose for both sides."""
         either = next((p for p in parts if isinstance(p, ast.FrameEither)), None)
         if either is None or not either.conditions:
             return ()
-        if side == "reply":
-            self.d.report("E513", either.span, "a reply's layout is known by the header that comes, not by `when`",
-                          help="write `either when` in the frame's `request { }`; give each reply layout its own header")
+        if both:
+            self.d.report("E513", either.span, "parts written for both directions cannot be chosen by `when`",
+                          help="give the frame a `request { }` and a `reply { }`, each with its own `either when`")
             return ()
         out: list[m.Expr | None] = []
         for n, condition in enumerate(either.conditions, 1):

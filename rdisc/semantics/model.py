@@ -700,6 +700,7 @@ class Frame:
     more_replies: tuple[tuple[FramePart, ...], ...] = ()
     escaping: Escaping | None = None
     request_when: tuple[Expr | None, ...] = ()  # `either when`: each request layout's condition (None: plain)
+    reply_when: tuple[Expr | None, ...] = ()  # each reply layout's, over parameters given settings only
 
     @property
     def requests(self) -> tuple[tuple[FramePart, ...], ...]:

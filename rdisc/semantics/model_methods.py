@@ -1335,6 +1335,7 @@ def _init_Frame(
     more_replies: Any = DEFAULT,
     escaping: Any = DEFAULT,
     request_when: Any = DEFAULT,
+    reply_when: Any = DEFAULT,
 ) -> None:
     _set(self, "name", name)
     _set(self, "params", params)
@@ -1347,10 +1348,11 @@ def _init_Frame(
     _set(self, "more_replies", more_replies)
     _set(self, "escaping", escaping)
     _set(self, "request_when", request_when)
+    _set(self, "reply_when", reply_when)
 
 
 def _repr_Frame(self: Any) -> str:
-    return f"{self.__class__.__qualname__}(name={self.name!r}, params={self.params!r}, request={self.request!r}, reply={self.reply!r}, doc={self.doc!r}, stuffing={self.stuffing!r}, more_requests={self.more_requests!r}, more_replies={self.more_replies!r}, escaping={self.escaping!r}, request_when={self.request_when!r})"
+    return f"{self.__class__.__qualname__}(name={self.name!r}, params={self.params!r}, request={self.request!r}, reply={self.reply!r}, doc={self.doc!r}, stuffing={self.stuffing!r}, more_requests={self.more_requests!r}, more_replies={self.more_replies!r}, escaping={self.escaping!r}, request_when={self.request_when!r}, reply_when={self.reply_when!r})"
 
 
 def _eq_Frame(self: Any, other: Any) -> Any:
@@ -1366,6 +1368,7 @@ def _eq_Frame(self: Any, other: Any) -> Any:
             self.more_replies,
             self.escaping,
             self.request_when,
+            self.reply_when,
         ) == (
             other.name,
             other.params,
@@ -1377,6 +1380,7 @@ def _eq_Frame(self: Any, other: Any) -> Any:
             other.more_replies,
             other.escaping,
             other.request_when,
+            other.reply_when,
         )
     return NotImplemented
 
@@ -1393,6 +1397,7 @@ def _hash_Frame(self: Any) -> int:
         self.more_replies,
         self.escaping,
         self.request_when,
+        self.reply_when,
     ))
 
 
@@ -2929,6 +2934,7 @@ WRITTEN: dict[str, Written] = {
             ("more_replies", DEFAULT),
             ("escaping", DEFAULT),
             ("request_when", DEFAULT),
+            ("reply_when", DEFAULT),
         ),
         {"__init__": _init_Frame, "__repr__": _repr_Frame, "__eq__": _eq_Frame, "__hash__": _hash_Frame},
     ),

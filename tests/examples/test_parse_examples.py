@@ -59,6 +59,8 @@ EXPECTED_COUNTS: dict[str, dict[str, int]] = {
     "examples/maestro.rdis": {"ConnectionDecl": 1, "ConstDecl": 7, "EnumDecl": 1, "FrameDecl": 1, "InputDecl": 1,
                               "InterfaceDecl": 5, "OutputDecl": 1, "PrimitiveDecl": 8, "RobotDecl": 1,
                               "SettingDecl": 2, "StateDecl": 3},
+    "examples/motoron.rdis": {"ConnectionDecl": 1, "ConstDecl": 1, "EnumDecl": 1, "FrameDecl": 1, "InterfaceDecl": 3,
+                              "PrimitiveDecl": 6, "RobotDecl": 1, "SettingDecl": 4, "StateDecl": 2},
     "examples/nmea.rdis": {"ConnectionDecl": 1, "ConstDecl": 2, "FrameDecl": 3, "InterfaceDecl": 2,
                            "PrimitiveDecl": 6, "RobotDecl": 1, "StateDecl": 20},
     "examples/firmata.rdis": {"ConnectionDecl": 1, "EnumDecl": 1, "FrameDecl": 4, "InterfaceDecl": 3,

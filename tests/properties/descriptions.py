@@ -182,6 +182,43 @@ class Out(Expr):
         raise Unknown("out")
 
 
+MODE = ("MODE", 1)  # a setting (`setting MODE: int in 0..3 = 1`) that chooses frames' layouts (`either when`)
+LOOK = {key: key + 1 for key in range(0x80)}  # `const LOOK`, which post-actions look a reply's byte up in
+
+
+@dataclass(frozen=True)
+class Setting(Expr):
+    """MODE, as a frame's argument: its default, since sessions connect without settings."""
+
+    def text(self) -> str:
+        return MODE[0]
+
+    @property
+    def const(self) -> bool:
+        return False
+
+    def value(self, env: Mapping[str, Any]) -> Any:
+        return MODE[1]
+
+
+@dataclass(frozen=True)
+class Looked(Expr):
+    """`LOOK[out[i]]` in post-actions, out[i] a reply's last byte: one the table lacks is a lookup miss,
+    a protocol error (`skip unmatched` reads past it)."""
+
+    index: int = 0
+
+    def text(self) -> str:
+        return f"LOOK[out[{self.index}]]"
+
+    @property
+    def const(self) -> bool:
+        return False
+
+    def value(self, env: Mapping[str, Any]) -> Any:
+        raise Unknown("out")
+
+
 def _checked(result: Any) -> Any:
     """Python's result where rdisc's operators refuse it: infinities, huge ints, long strings."""
     if isinstance(result, float) and not math.isfinite(result):
@@ -783,6 +820,12 @@ class Frame:
     reply: tuple[Part, ...]
     shared: bool  # one list of parts for both directions
     stuffing: tuple[bytes, bytes] | None = None  # (escape, reserved)
+    # `either when WHEN { } or { }` over its last parameter, to which primitives pass MODE: `request` and
+    # `reply` are the layouts MODE chooses (the first alternatives when WHEN `holds`), the others the rest
+    when: str = ""
+    holds: bool = True
+    other_request: tuple[Part, ...] = ()
+    other_reply: tuple[Part, ...] = ()
 
     def text(self) -> str:
         params = f"({', '.join(f'{p}: int' for p in self.params)})" if self.params else ""
@@ -793,10 +836,17 @@ class Frame:
         if self.shared:
             lines += [f"    {p.text()}" for p in self.request]
         else:
-            lines.append("    request { " + "  ".join(p.text() for p in self.request) + " }")
+            lines.append("    request { " + self._either(self.request, self.other_request) + " }")
             if self.reply:
-                lines.append("    reply { " + "  ".join(p.text() for p in self.reply) + " }")
+                lines.append("    reply { " + self._either(self.reply, self.other_reply) + " }")
         return "\n".join(lines + ["}"])
+
+    def _either(self, chosen: tuple[Part, ...], other: tuple[Part, ...]) -> str:
+        if not other:
+            return "  ".join(p.text() for p in chosen)
+        first, second = (chosen, other) if self.holds else (other, chosen)
+        return (f"either when {self.when} {{ " + "  ".join(p.text() for p in first) + " } or { "
+                + "  ".join(p.text() for p in second) + " }")
 
     @property
     def acknowledges(self) -> bool:
@@ -1103,7 +1153,25 @@ def frames(draw: Draw, name: str) -> Frame:
     # a reply's fields often have the request's names, with the same value or another
     names = tuple(sorted({p.name for p in request if p.kind == "field"})) or ("d0", "d1")
     reply = () if reply_kind == "none" else _side(draw, params, True, reply_kind == "payload", False, names, stuffed)
-    return Frame(name, params, request, reply, False, stuffing)
+    if listener or not sometimes(draw, 4) or (stuffing is not None and stuffing[1] in _OTHER_HEADER):
+        return Frame(name, params, request, reply, False, stuffing)
+    # layouts chosen by a setting: the other alternative, another header before the same parts
+    sides = draw(st.sampled_from(["request", "reply", "both"] if reply else ["request"]))
+    holds, op = draw(st.booleans()), draw(st.sampled_from(["==", "!="]))
+    other = draw(st.sampled_from([k for k in range(4) if (k == MODE[1]) == (holds == (op == "=="))]))
+    return Frame(name, (*params, "qm"), request, reply, False, stuffing, f"qm {op} {other}", holds,
+                 _other_layout(request) if sides != "reply" else (), _other_layout(reply) if sides != "request" else ())
+
+
+_OTHER_HEADER = b"\xa5\x5a"
+
+
+def _other_layout(side: tuple[Part, ...]) -> tuple[Part, ...]:
+    """An alternative to `side` that MODE does not choose: another header, then the same parts (so the
+    same payloads fit it, and its reader would refuse the chosen layout's bytes)."""
+    if side and side[0].kind == "header":
+        return (Part("header", _OTHER_HEADER if side[0].data != _OTHER_HEADER else b"\x5a\xa5"), *side[1:])
+    return (Part("header", _OTHER_HEADER), *side)
 
 
 # ---- replies: decodings, tables, post-actions ----------------------------------------------------------------
@@ -1486,6 +1554,10 @@ class Description:
             lines.append("enum E0 { " + ", ".join(f"{m.name.split('.')[1]} = {m.v}" for m in members) + " }")
         for name, type_, initial in self.states:
             lines.append(f"state {name}: {type_} = {Lit(type_, initial).text()}")
+        if any(frame.when for frame in self.frames):
+            lines.append(f"setting {MODE[0]}: int in 0..3 = {MODE[1]}")
+        if any(isinstance(e, Looked) for p in self.primitives if p.reply is not None for _, e in p.reply.actions):
+            lines.append("const LOOK = { " + ", ".join(f"{key}: {value}" for key, value in LOOK.items()) + " }")
         if any(" seed SEEDS[" in frame.text() for frame in self.frames):
             lines.append("const SEEDS = { " + ", ".join(f"{key}: {byte}" for key, byte in SEEDS.items()) + " }")
         sections = [self.frames, self.connections, self.primitives, self.interfaces, self.outputs, self.inputs]
@@ -1515,6 +1587,27 @@ class Description:
         first = self.connections[0].name
         return [i for c in self.connections for i in self.interfaces
                 if i.periodic and (i.connection or first) == c.name]
+
+
+def constructs(description: Description) -> set[str]:
+    """The rarer constructs a description's primitives exercise: layouts a setting chooses (`either
+    when`, each side), a framed reply's byte looked up in a table (a miss: a protocol error), that
+    under `skip unmatched`. The search reports how many descriptions had each."""
+    return {construct for p in description.primitives for construct in primitive_constructs(p)}
+
+
+def primitive_constructs(p: Primitive) -> set[str]:
+    """`constructs`, of one primitive."""
+    found: set[str] = set()
+    if p.frame is not None and p.frame.other_request:
+        found.add("either when (request)")
+    if p.frame is not None and p.frame.other_reply and p.reads:
+        found.add("either when (reply)")
+    if p.reply is not None and any(isinstance(e, Looked) for _, e in p.reply.actions):
+        found.add("lookup in a framed reply")
+        if p.skip:
+            found.add("lookup under skip unmatched")
+    return found
 
 
 # ---- drawing a whole description -----------------------------------------------------------------------
@@ -1656,7 +1749,9 @@ def _frame_args(draw: Draw, frame: Frame, params: tuple[Param, ...]) -> tuple[Ex
     args: list[Expr] = []
     for q in frame.params:
         low, high = ranges.get(q, (0, 255))
-        if ints and draw(st.integers(0, 2)):
+        if q == "qm":  # the parameter `either when` reads: the setting, known when connecting
+            args.append(Setting(INT))
+        elif ints and draw(st.integers(0, 2)):
             name = Name(INT, draw(st.sampled_from(ints)))
             args.append(name if draw(st.integers(0, 3)) else Binary(INT, "+", name, Lit(INT, 1)))
         else:
@@ -1755,20 +1850,41 @@ def primitives(draw: Draw, name: str, states: Mapping[str, str], scope: Scope,
     if (reply is not None and not error and reply.decoding.kind == "unpack"
             and re.match(r"[<>!=@]?B(?![{\d])", reply.decoding.template) and sometimes(draw, 4)):
         refused = draw(st.sampled_from([0, 1, 0x7F]))
+    looked = looked_up(draw, reply, frame, states) if reply is not None and framed_reply and frame is not None else None
+    if looked is not None:
+        reply = looked
+        skip = skip or sometimes(draw, 2)  # a miss read past, or raised
     nested = None  # an entry of one value of a table read unframed: dispatching again on the next byte
     single = [at for at, last in enumerate(lasts or (None,) * len(entries)) if last is None]
     if tag is not None and (frame is None or not frame.reply) and single and sometimes(draw, 3):
         nested = (draw(st.sampled_from(single)), draw(st.integers(0, 0x7F)))
     each_args: tuple[Expr, ...] = ()  # a sync read: a reply for each element of an array parameter, each its own id
-    if (reply is not None and framed_reply and frame is not None and frame.params and not error and not listener
-            and sometimes(draw, 2)):
-        at = draw(st.integers(0, len(frame_args) - 1))
+    eachable = [i for i, q in enumerate(frame.params) if q != "qm"] if frame is not None else []
+    if (reply is not None and framed_reply and frame is not None and eachable and not error and not listener
+            and refused is None and sometimes(draw, 2)):  # `error when` reads one reply (E511)
+        at = draw(st.sampled_from(eachable))
         each_args = tuple(Name(INT, EACH_VAR) if i == at else a for i, a in enumerate(frame_args))
         params += (Param("ids", INTS),)
         reply = Reply(reply.decoding, ())  # its values are arrays of any size: none of them is stored
     return Primitive(name, params, draw(st.sampled_from(connections)), encoding, template, args, reply, actions,
                      key, tag, entries, frame, frame_args, skip, timeout, lasts, retries, error, nested, each_args,
                      refused)
+
+
+def looked_up(draw: Draw, reply: Reply, frame: Frame, states: Mapping[str, str]) -> Reply | None:
+    """Sometimes, a framed reply of a fixed size with one more byte ("B"), which a post-action looks up
+    in LOOK (`s0 = LOOK[out[i]]`): a byte LOOK lacks is a lookup miss, a protocol error."""
+    ints = sorted(name for name, type_ in states.items() if type_ == INT)
+    size = reply.decoding.size
+    if (not ints or reply.decoding.kind != "unpack" or size is None or "%" in reply.decoding.template
+            or not all(frame.length_states(side, size + 1) for side in (frame.reply, frame.other_reply))
+            or not sometimes(draw, 2)):
+        return None
+    decoding = dataclasses.replace(reply.decoding, template=reply.decoding.template + "B",
+                                   types=(*reply.decoding.types, INT), size=size + 1)
+    target = draw(st.sampled_from(ints))
+    kept = tuple(action for action in reply.actions if action[0] != target)
+    return Reply(decoding, (*kept, (target, Looked(INT, len(decoding.types) - 1))))
 
 
 def _call_args(draw: Draw, prim: Primitive, scope: Scope) -> tuple[Expr, ...] | None:
@@ -1952,6 +2068,9 @@ def valid_reply(description: Description, prim: Primitive, values: Mapping[str, 
     valid = decoding is not None or not (prim.reply or prim.entries)
     if prim.refused is not None and payload[:1] == bytes([prim.refused]):
         valid = False  # the device's error (`error when`)
+    looked = prim.reply is not None and any(isinstance(e, Looked) for _, e in prim.reply.actions)
+    if looked and decoding is not None and decoding.size is not None and payload[decoding.size - 1] not in LOOK:
+        valid = False  # a lookup miss: a protocol error, read past under `skip unmatched`
     if decoding is not None and decoding.kind == "regex":
         valid = valid and re.match(decoding.template, payload[len(tag) :].decode("latin-1")) is not None
     if prim.framed_reply:

@@ -28,9 +28,24 @@ from typing import Any
 
 import pytest
 from conftest import fuzz_examples
-from descriptions import CATALOGUE, Description, crc, descriptions, scripts
+from descriptions import (
+    CATALOGUE,
+    INT,
+    STRING,
+    Decoding,
+    Description,
+    Frame,
+    Name,
+    Part,
+    Reply,
+    crc,
+    descriptions,
+    frames,
+    looked_up,
+    scripts,
+)
 from differential_support import Pairs, compare
-from hypothesis import HealthCheck, given, settings
+from hypothesis import HealthCheck, Phase, find, given, settings
 from hypothesis import strategies as st
 
 from rdisc.compile import compile_path
@@ -68,6 +83,50 @@ def test_every_generated_description_compiles(tmp_path: Path, description: Descr
     path.write_text(description.text, encoding="utf-8")
     errors = [f"{d.code} {d.message}" for d in compile_path(str(path)).diagnostics.items if d.severity.name == "ERROR"]
     assert not errors, f"\n{description.text}\n{errors}"
+
+
+QUICK = settings(max_examples=500, database=None, derandomize=True, phases=[Phase.generate],
+                suppress_health_check=list(HealthCheck))
+
+
+def test_the_strategies_draw_layouts_a_setting_chooses() -> None:
+    """Frames whose request or reply layout MODE chooses (`either when`), the chosen one first or not:
+    the differential search holds runtime and driver to the same choice (`constructs` counts them)."""
+    seen: dict[tuple[str, bool], Frame] = {}
+
+    def complete(frame: Frame) -> bool:
+        for side in ("request", "reply"):
+            if getattr(frame, f"other_{side}"):
+                seen.setdefault((side, frame.holds), frame)
+        return {side for side, _ in seen} == {"request", "reply"} and {holds for _, holds in seen} == {True, False}
+
+    find(frames("f0"), complete, settings=QUICK)
+    for (side, holds), frame in seen.items():
+        chosen, other = getattr(frame, side), getattr(frame, f"other_{side}")
+        assert frame.params[-1] == "qm" and re.fullmatch(r"qm (==|!=) [0-3]", frame.when)
+        assert (frame.when in ("qm == 1", "qm != 0", "qm != 2", "qm != 3")) == holds  # MODE is 1
+        assert other[0].kind == "header" and other[0].data != (chosen[0].data if chosen[0].kind == "header" else b"")
+        first, second = (chosen, other) if holds else (other, chosen)
+        text = frame.text()
+        assert f"{side} {{ either when {frame.when} {{ {first[0].text()}" in text
+        assert f" }} or {{ {second[0].text()}" in text
+
+
+def test_the_strategies_draw_lookups_in_framed_replies() -> None:
+    """A framed reply of a fixed size, one more byte looked up in LOOK by a post-action: the device model
+    calls a reply whose byte LOOK lacks invalid (a lookup miss: a protocol error, read past under `skip
+    unmatched`)."""
+    reply = Reply(Decoding("unpack", "<H", (INT, ), 2), (("s0", Name(INT, "s0")),))
+    frame = Frame("f0", (), (Part("payload"),), (Part("header", b"\x02"), Part("length", fmt="B"), Part("payload")),
+                  False)
+
+    @st.composite
+    def looked(draw: st.DrawFn) -> Reply | None:
+        return looked_up(draw, reply, frame, {"s0": INT, "s1": STRING})
+
+    made = find(looked(), lambda made: made is not None, settings=QUICK)
+    assert made is not None and made.decoding == Decoding("unpack", "<HB", (INT, INT), 3)
+    assert [(target, e.text()) for target, e in made.actions] == [("s0", "LOOK[out[1]]")]
 
 
 @pytest.mark.parametrize("name, check", [

@@ -2,6 +2,7 @@
 frame's parameters, so a setting passed as the frame's argument picks the framing (Pololu's Maestro
 speaks its compact protocol, the Pololu protocol, or that with a CRC-7 byte). Here: exact bytes in
 the runtime and the generated driver for each setting, E513, the JSON both ways, the printer, dump.
+A reply's layout so chosen: tests/runtime/test_reply_layout_conditions.py.
 """
 
 from __future__ import annotations
@@ -114,10 +115,10 @@ def test_a_plain_last_alternative_is_taken_when_none_holds_and_without_one_a_cal
         ("E513", "mode", "`when` takes a bool, but this is an int", None)]),
     ('request { either when speed == 1 { payload } or { header "\\xAA"  payload } }', [
         ("E103", "speed", "unknown name `speed` in a frame", None)]),
-    ('request { payload }  reply { either when mode == 1 { header "\\x01"  payload } or { header "\\x02"  payload } }', [
+    ('either when mode == 1 { header "\\x01"  payload } or { header "\\x02"  payload }', [
         ("E513", 'either when mode == 1 { header "\\x01"  payload } or { header "\\x02"  payload }',
-         "a reply's layout is known by the header that comes, not by `when`",
-         "write `either when` in the frame's `request { }`; give each reply layout its own header")]),
+         "parts written for both directions cannot be chosen by `when`",
+         "give the frame a `request { }` and a `reply { }`, each with its own `either when`")]),
 ])
 def test_e513_refuses_a_condition_at_its_words(layouts: str, expected: list[Any]) -> None:
     assert _check(_alone(layouts)) == expected
@@ -127,7 +128,7 @@ def test_e513_explains_the_rules_the_checker_applies() -> None:
     assert CODES["E513"].name == "layout-condition"
     explain = " ".join(CODES["E513"].explanation.split())
     for words in ("the first alternative whose condition holds", "Each COND is a bool",
-                  "Only the last alternative may go without `when`", "`when` is refused in a `reply { }`"):
+                  "Only the last alternative may go without `when`", "`when` is refused in a frame's parts written for both"):
         assert words in explain
 
 

@@ -73,8 +73,9 @@ class Layouts(Pieces):
             self.d.report("E503", clause.span, f"the reply of frame `{frame.name}` gives no way to find where the "
                           f"payload of `{decl.name.text}` ends",
                           help="add a `length` field, constant bytes after the payload, or decode with `unpack`")
+        self.answered_by_settings(frame, clause, args)
         sizes = [(frame.requests, request, bool(frame.request_when)),
-                 *((frame.replies, None if n is None else (n, n, ""), False) for n in reply_sizes)]
+                 *((frame.replies, None if n is None else (n, n, ""), bool(frame.reply_when)) for n in reply_sizes)]
         for layouts, payload, chosen in sizes:
             found = [length_part(parts) for parts in layouts]
             if chosen:  # `either when`: any layout with a length field may be the one written
@@ -101,6 +102,20 @@ class Layouts(Pieces):
                               f"{by} allows", help=f"{states}; " + (f"narrow the range of {by}" if "parameter" in by else
                                                                    "give the group's arrays a fixed size, or fewer"))
         return m.FrameUse(m.FrameRef(frame.name), args)
+
+    def answered_by_settings(self, frame: m.Frame, clause: ast.Framed, args: tuple[m.Expr, ...]) -> None:
+        """A reply's layout chosen by `either when` is the device's configuration, known when
+        connecting: each argument its conditions read is a setting or a constant (E513)."""
+        read = {v.name for e in frame.reply_when if e is not None for v in m.variables(e)}
+        for param, arg, given in zip(frame.params, args, clause.args):
+            wrong = next((v for v in m.variables(arg) if param.name in read
+                          and (v.scope is not Scope.STATE or v.name not in self.s.settings)), None)
+            if wrong is not None:
+                what = "parameter" if wrong.scope is Scope.PARAM else "state variable"
+                self.d.report("E513", given.span, f"the reply's layout is chosen by `{param.name}` of frame "
+                              f"`{frame.name}`, so it is a setting or a constant, but this reads {what} "
+                              f"`{wrong.name}`", help="pass a setting: the device answers as it is configured, "
+                              "which is known when connecting")
 
     def frame_fields_fit(self, frame: m.Frame, clause: ast.Framed, args: tuple[m.Expr, ...]) -> None:
         """Each field of a frame over its parameters, computed from the constant arguments of

@@ -1528,18 +1528,21 @@ class Frame:
     """A request side and a reply side (empty when the device answers nothing framed), and
     the values of its fields over its parameters."""
 
-    __slots__ = ("choose", "escaping", "fields", "fill", "headers", "name", "params", "quick", "ranged", "replies",
-                 "reply", "requests", "stuffing", "trim", "vouched")
+    __slots__ = ("answer", "choose", "escaping", "fields", "fill", "headers", "name", "params", "quick", "ranged",
+                 "replies", "reply", "requests", "stuffing", "trim", "vouched")
 
     def __init__(self, name: str, request: Sequence[Part], reply: Sequence[Part], stuffing: Stuffing | None = None,
                  params: tuple[Param, ...] = (), fields: Callable[[Args], list[Any]] | None = None,
                  more_requests: Sequence[Sequence[Part]] = (), more_replies: Sequence[Sequence[Part]] = (),
-                 escaping: Escaping | None = None, choose: Callable[[Args], list[Any]] | None = None) -> None:
+                 escaping: Escaping | None = None, choose: Callable[[Args], list[Any]] | None = None,
+                 answer: Callable[[Args], list[Any]] | None = None) -> None:
         """`more_requests` and `more_replies`: the other layouts of a side (`either`), in order;
         `escaping`: the bytes between the header and the terminator escaped (one layout each way);
-        `choose`: the truth of each request layout's condition (`either when`) over the arguments."""
+        `choose`: the truth of each request layout's condition (`either when`) over the arguments;
+        `answer`: each reply layout's (the reply is then read with the one chosen, not by its header)."""
         self.name = name
         self.choose = choose
+        self.answer = answer
         self.requests = tuple(Side(parts) for parts in (request, *more_requests))
         self.replies = tuple(Side(parts) for parts in (reply, *more_replies))
         self.reply = self.replies[0]
@@ -1559,23 +1562,31 @@ class Frame:
 
     def values(self, owner: str, args: Args) -> list[Any]:
         """The field values for the frame's arguments; an argument outside its parameter's
-        range is an RdisValueError of `owner`, before anything is sent."""
+        range is an RdisValueError of `owner`, before anything is sent. When settings choose the
+        reply's layout (`either when`), the index of the one chosen comes last, for `read`."""
         if self.ranged:
             _check_ranges(f"{owner}: frame {self.name}", self.params, self.ranged, args)
-        return [] if self.fields is None else self.fields(args)
+        fields = [] if self.fields is None else self.fields(args)
+        if self.answer is not None:
+            fields.append(self._chosen(owner, "reply layout", self.answer(args), len(self.replies)))
+        return fields
 
     def layout(self, owner: str, args: Args) -> int:
         """The request layout the arguments choose (`either when`): the first whose condition
         holds, else a plain last one; -1 when the frame chooses by the payload's size."""
         if self.choose is None:
             return -1
-        conditions = self.choose(args)
+        return self._chosen(owner, "layout", self.choose(args), len(self.requests))
+
+    def _chosen(self, owner: str, what: str, conditions: Sequence[Any], count: int) -> int:
+        """The first of `count` layouts (`what`: "layout", "reply layout") whose condition holds, else a
+        plain last one (no more conditions than layouts); none is an RdisValueError of `owner`."""
         for index, holds in enumerate(conditions):
             if holds:
                 return index
-        if len(self.requests) > len(conditions):
+        if count > len(conditions):
             return len(conditions)
-        raise RdisValueError(f"{owner}: frame {self.name}: no layout's condition holds")
+        raise RdisValueError(f"{owner}: frame {self.name}: no {what}'s condition holds")
 
     def wrap(self, payload: bytes, fields: Sequence[int], layout: int = -1) -> bytes:
         """The request: `payload` framed (stuffed first, when the frame stuffs), with the
@@ -1632,7 +1643,11 @@ class Frame:
         if self.escaping is not None:
             return self._read_escaped(port, data, fields, request)
         side = self.reply
-        if len(self.replies) > 1:  # the header that comes says which layout
+        if self.answer is not None:  # the settings chose the layout (`values` put its index last)
+            side = self.replies[fields[-1]]
+            if side.header:
+                data += self._sync(port, (side.header,))
+        elif len(self.replies) > 1:  # the header that comes says which layout
             head = self._sync(port, self.headers)
             data += head
             side = self.replies[self.headers.index(head)]
