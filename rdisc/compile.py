@@ -10,7 +10,7 @@ from __future__ import annotations
 import gc
 import os
 import stat
-from collections.abc import Iterator, Mapping
+from collections.abc import Callable, Iterator, Mapping
 from contextlib import contextmanager
 from contextvars import ContextVar
 
@@ -23,6 +23,7 @@ from rdisc.source import Sources, Span
 from rdisc.syntax import ast
 from rdisc.syntax.parse import MAX_FILE_CHARS, parse, token_count
 
+Parser = Callable[[str, str, Diagnostics], ast.Module]  # `parse`, or one as good
 MAX_IMPORTS = 256
 MAX_TOKENS = 200_000  # of a description and its imports: about seventy times the largest example's
 # The budget of descriptions compiled in this context: the command line's --max-tokens (token_budget).
@@ -98,7 +99,7 @@ class _Tokens:
         self.most = _max_tokens.get() if most is None else most
         self.left = self.most
 
-    def parse(self, path: str, text: str, diagnostics: Diagnostics) -> ast.Module:
+    def parse(self, path: str, text: str, diagnostics: Diagnostics, parser: Parser = parse) -> ast.Module:
         count = token_count(text, self.left)
         if count > self.left:
             diagnostics.report("E005", Span(path, 0, 0), f"the description has more than {self.most} tokens, "
@@ -107,7 +108,7 @@ class _Tokens:
             self.left = 0
             return ast.Module(path, (), refused=True)
         self.left -= count
-        return parse(path, text, diagnostics)
+        return parser(path, text, diagnostics)
 
 
 @contextmanager
@@ -136,9 +137,10 @@ def compile_path(path: str, max_tokens: int | None = None) -> Compilation:
 
 @_without_collections()
 def compile_text(path: str, text: str, diagnostics: Diagnostics | None = None,
-                 max_tokens: int | None = None) -> Compilation:
+                 max_tokens: int | None = None, parser: Parser = parse) -> Compilation:
     """Check a description given as text, named `path` (.json for the JSON importer): a ROS
-    node rebuilds its Model for `~sim` from the canonical JSON it embeds, with no file."""
+    node rebuilds its Model for `~sim` from the canonical JSON it embeds, with no file. The
+    editor's `parser` reuses what did not change since its last check (rdisc.syntax.incremental)."""
     diagnostics = diagnostics if diagnostics is not None else Diagnostics()
     sources = Sources()
     sources.add(path, text)
@@ -148,7 +150,7 @@ def compile_text(path: str, text: str, diagnostics: Diagnostics | None = None,
 
         main = read(path, text, diagnostics)
     else:
-        main = tokens.parse(path, text, diagnostics)
+        main = tokens.parse(path, text, diagnostics, parser)
     if main is None:
         return Compilation(None, diagnostics, sources)
     units: list[Unit] = []

@@ -5,7 +5,8 @@ question about a document whose text changed since its check waits for (or makes
 its text, so every answer is about the text the editor shows. Imports read the open documents'
 texts, saved or not (rdisc.compile.open_texts). A check is a `Job`: what it reads is taken when it
 is made, so it may run in a thread of its own (rdisc.editor.checks) while the editor types on;
-its result is kept only if the document's text is still the one it checked.
+its result is kept only if the document's text is still the one it checked. Each check parses
+only the declarations changed since the last (rdisc.syntax.incremental).
 """
 
 from __future__ import annotations
@@ -15,6 +16,7 @@ import os
 from rdisc.compile import Compilation, compile_text, open_texts
 from rdisc.editor.index import Index, build_index
 from rdisc.source import SourceFile
+from rdisc.syntax.incremental import Reparser
 
 
 class Analysis:
@@ -41,7 +43,7 @@ class Analysis:
 
 
 class Document:
-    __slots__ = ("analysis", "good", "path", "text", "uri", "version")
+    __slots__ = ("analysis", "good", "parser", "path", "text", "uri", "version")
 
     def __init__(self, uri: str, path: str, text: str, version: int | None) -> None:
         self.uri = uri
@@ -50,6 +52,7 @@ class Document:
         self.version = version
         self.analysis: Analysis | None = None  # of `text`; None until checked after a change
         self.good: Analysis | None = None  # the last check that built a Model
+        self.parser = Reparser()  # its declarations as last parsed, reused by the next check
 
     @property
     def real_path(self) -> str:
@@ -70,7 +73,7 @@ class Job:
     def run(self) -> Analysis:
         path = self.document.path
         with open_texts(self.texts):
-            compilation = compile_text(path, self.text)
+            compilation = compile_text(path, self.text, parser=self.document.parser.parse)
         source = compilation.sources.get(path) or SourceFile(path, self.text)
         return Analysis(compilation, source)
 
