@@ -95,11 +95,12 @@ class _Tokens:
     """The tokens a description and its imports may still have. Parsing costs time in
     proportion to them (about 10 us each in Lark), so a file past them is refused before."""
 
-    def __init__(self, most: int | None = None) -> None:
+    def __init__(self, most: int | None = None, parser: Parser = parse) -> None:
         self.most = _max_tokens.get() if most is None else most
         self.left = self.most
+        self.parser = parser
 
-    def parse(self, path: str, text: str, diagnostics: Diagnostics, parser: Parser = parse) -> ast.Module:
+    def parse(self, path: str, text: str, diagnostics: Diagnostics) -> ast.Module:
         count = token_count(text, self.left)
         if count > self.left:
             diagnostics.report("E005", Span(path, 0, 0), f"the description has more than {self.most} tokens, "
@@ -108,7 +109,7 @@ class _Tokens:
             self.left = 0
             return ast.Module(path, (), refused=True)
         self.left -= count
-        return parser(path, text, diagnostics)
+        return self.parser(path, text, diagnostics)
 
 
 @contextmanager
@@ -140,17 +141,18 @@ def compile_text(path: str, text: str, diagnostics: Diagnostics | None = None,
                  max_tokens: int | None = None, parser: Parser = parse) -> Compilation:
     """Check a description given as text, named `path` (.json for the JSON importer): a ROS
     node rebuilds its Model for `~sim` from the canonical JSON it embeds, with no file. The
-    editor's `parser` reuses what did not change since its last check (rdisc.syntax.incremental)."""
+    editor's `parser` (of every file read) reuses what did not change since its last check
+    (rdisc.syntax.incremental)."""
     diagnostics = diagnostics if diagnostics is not None else Diagnostics()
     sources = Sources()
     sources.add(path, text)
-    tokens = _Tokens(max_tokens)
+    tokens = _Tokens(max_tokens, parser)
     if path.endswith(".json"):
         from rdisc.json_import.document import read
 
         main = read(path, text, diagnostics)
     else:
-        main = tokens.parse(path, text, diagnostics, parser)
+        main = tokens.parse(path, text, diagnostics)
     if main is None:
         return Compilation(None, diagnostics, sources)
     units: list[Unit] = []
@@ -188,7 +190,7 @@ def _add_unit(main: ast.Module, is_main: bool, diagnostics: Diagnostics, sources
     text = None if is_stdlib else read_text(stdlib, diagnostics)
     if text is not None:
         sources.add(stdlib, text)
-        units.append(Unit(parse(stdlib, text, diagnostics), standard=True))
+        units.append(Unit(tokens.parser(stdlib, text, diagnostics), standard=True))
     root = os.path.dirname(os.path.realpath(main.path))
     seen = {os.path.realpath(main.path), os.path.realpath(stdlib)}
     units.append(Unit(main, main=is_main))

@@ -23,21 +23,19 @@ _setattr = object.__setattr__
 
 
 class Reparser:
-    """One file's declarations as last parsed, by (text, doc comment): where each started and
-    what it gave."""
+    """Each file's declarations as last parsed (a check reads a document, its imports and the
+    stdlib), by (text, doc comment): where each started and what it gave."""
 
     def __init__(self) -> None:
-        self.path: str | None = None
-        self.kept: dict[tuple[str, str | None], tuple[int, tuple[ast.Decl, ...]]] = {}
-        self.reused = 0  # declarations taken from the last parse, by the last parse (for tests)
+        self.files: dict[str, dict[tuple[str, str | None], tuple[int, tuple[ast.Decl, ...]]]] = {}
+        self.reused = 0  # declarations taken from the file's last parse, by the last parse (for tests)
 
     def parse(self, path: str, text: str, diagnostics: Diagnostics) -> ast.Module:
         """What `parse(path, text, diagnostics)` gives, reusing the declarations kept."""
-        if path != self.path:
-            self.path, self.kept = path, {}
         if len(text) > MAX_FILE_CHARS:
-            self.kept = {}
+            self.files.pop(path, None)
             return parse(path, text, diagnostics)
+        last = self.files.get(path, {})
         bounds, docs = pieces(text)
         builder = Builder(path, docs, diagnostics)
         decls: list[ast.Decl] = []
@@ -46,7 +44,7 @@ class Reparser:
         kept: dict[tuple[str, str | None], tuple[int, tuple[ast.Decl, ...]]] = {}
         for i, (start, end) in enumerate(bounds):
             key = (text[start:end], docs.get(start))
-            found = self.kept.get(key)
+            found = last.get(key)
             if found is not None:
                 at, made = found
                 if at != start:
@@ -61,7 +59,7 @@ class Reparser:
                 errors += 1
             elif len(diagnostics.items) == reported and len(damaged) == first_damaged:
                 kept[key] = (start, tuple(decls[first:]))
-        self.kept, self.reused = kept, reused
+        self.files[path], self.reused = kept, reused
         return ast.Module(path, tuple(decls), tuple(damaged))
 
 

@@ -51,7 +51,7 @@ def test_every_example_edited_above_each_declaration_parses_as_a_fresh_parse(nam
     assert parser.reused == 0 and fresh.decls
     moved = "# a comment, so that every declaration moves\n\n" + text
     same_as_fresh(parser, moved)
-    assert parser.reused == len(parser.kept) - 1 > 0  # all but the first piece, which the comment went into
+    assert parser.reused == len(parser.files["bot.rdis"]) - 1 > 0  # all but the first piece, which the comment went into
     same_as_fresh(parser, text)  # and back
     broken = text.replace("{", "{ )", 1)  # a syntax error in one declaration, reported anew each time
     same_as_fresh(parser, broken)
