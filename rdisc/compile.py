@@ -95,10 +95,10 @@ class _Tokens:
     """The tokens a description and its imports may still have. Parsing costs time in
     proportion to them (about 10 us each in Lark), so a file past them is refused before."""
 
-    def __init__(self, most: int | None = None, parser: Parser = parse) -> None:
+    def __init__(self, most: int | None = None, parser: Parser | None = None) -> None:
         self.most = _max_tokens.get() if most is None else most
         self.left = self.most
-        self.parser = parser
+        self.parser = parse if parser is None else parser
 
     def parse(self, path: str, text: str, diagnostics: Diagnostics) -> ast.Module:
         count = token_count(text, self.left)
@@ -138,7 +138,7 @@ def compile_path(path: str, max_tokens: int | None = None) -> Compilation:
 
 @_without_collections()
 def compile_text(path: str, text: str, diagnostics: Diagnostics | None = None,
-                 max_tokens: int | None = None, parser: Parser = parse) -> Compilation:
+                 max_tokens: int | None = None, parser: Parser | None = None) -> Compilation:
     """Check a description given as text, named `path` (.json for the JSON importer): a ROS
     node rebuilds its Model for `~sim` from the canonical JSON it embeds, with no file. The
     editor's `parser` (of every file read) reuses what did not change since its last check
