@@ -10,7 +10,7 @@ from __future__ import annotations
 import gc
 import os
 import stat
-from collections.abc import Iterator, Mapping
+from collections.abc import Callable, Iterator, Mapping
 from contextlib import contextmanager
 from contextvars import ContextVar
 
@@ -23,6 +23,7 @@ from rdisc.source import Sources, Span
 from rdisc.syntax import ast
 from rdisc.syntax.parse import MAX_FILE_CHARS, parse, token_count
 
+Parser = Callable[[str, str, Diagnostics], ast.Module]  # `parse`, or one as good
 MAX_IMPORTS = 256
 MAX_TOKENS = 200_000  # of a description and its imports: about seventy times the largest example's
 # The budget of descriptions compiled in this context: the command line's --max-tokens (token_budget).
@@ -94,9 +95,10 @@ class _Tokens:
     """The tokens a description and its imports may still have. Parsing costs time in
     proportion to them (about 10 us each in Lark), so a file past them is refused before."""
 
-    def __init__(self, most: int | None = None) -> None:
+    def __init__(self, most: int | None = None, parser: Parser | None = None) -> None:
         self.most = _max_tokens.get() if most is None else most
         self.left = self.most
+        self.parser = parse if parser is None else parser
 
     def parse(self, path: str, text: str, diagnostics: Diagnostics) -> ast.Module:
         count = token_count(text, self.left)
@@ -107,7 +109,7 @@ class _Tokens:
             self.left = 0
             return ast.Module(path, (), refused=True)
         self.left -= count
-        return parse(path, text, diagnostics)
+        return self.parser(path, text, diagnostics)
 
 
 @contextmanager
@@ -136,13 +138,15 @@ def compile_path(path: str, max_tokens: int | None = None) -> Compilation:
 
 @_without_collections()
 def compile_text(path: str, text: str, diagnostics: Diagnostics | None = None,
-                 max_tokens: int | None = None) -> Compilation:
+                 max_tokens: int | None = None, parser: Parser | None = None) -> Compilation:
     """Check a description given as text, named `path` (.json for the JSON importer): a ROS
-    node rebuilds its Model for `~sim` from the canonical JSON it embeds, with no file."""
+    node rebuilds its Model for `~sim` from the canonical JSON it embeds, with no file. The
+    editor's `parser` (of every file read) reuses what did not change since its last check
+    (rdisc.syntax.incremental)."""
     diagnostics = diagnostics if diagnostics is not None else Diagnostics()
     sources = Sources()
     sources.add(path, text)
-    tokens = _Tokens(max_tokens)
+    tokens = _Tokens(max_tokens, parser)
     if path.endswith(".json"):
         from rdisc.json_import.document import read
 
@@ -186,7 +190,7 @@ def _add_unit(main: ast.Module, is_main: bool, diagnostics: Diagnostics, sources
     text = None if is_stdlib else read_text(stdlib, diagnostics)
     if text is not None:
         sources.add(stdlib, text)
-        units.append(Unit(parse(stdlib, text, diagnostics), standard=True))
+        units.append(Unit(tokens.parser(stdlib, text, diagnostics), standard=True))
     root = os.path.dirname(os.path.realpath(main.path))
     seen = {os.path.realpath(main.path), os.path.realpath(stdlib)}
     units.append(Unit(main, main=is_main))

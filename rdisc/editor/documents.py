@@ -1,9 +1,12 @@
 """The documents an editor has open, each with its latest check and its last good one.
 
-A document is checked when it opens, when it changes (the server debounces) and when a file it
-imports changes; a question about a document whose text changed since its check checks it first,
-so every answer is about the text the editor shows. Imports read the open documents' texts, saved
-or not (rdisc.compile.open_texts).
+A document is checked when it opens, when it changes and when a file it imports changes; a
+question about a document whose text changed since its check waits for (or makes) the check of
+its text, so every answer is about the text the editor shows. Imports read the open documents'
+texts, saved or not (rdisc.compile.open_texts). A check is a `Job`: what it reads is taken when it
+is made, so it may run in a thread of its own (rdisc.editor.checks) while the editor types on;
+its result is kept only if the document's text is still the one it checked. Each check parses
+only the declarations changed since the last (rdisc.syntax.incremental).
 """
 
 from __future__ import annotations
@@ -13,6 +16,7 @@ import os
 from rdisc.compile import Compilation, compile_text, open_texts
 from rdisc.editor.index import Index, build_index
 from rdisc.source import SourceFile
+from rdisc.syntax.incremental import Reparser
 
 
 class Analysis:
@@ -39,7 +43,7 @@ class Analysis:
 
 
 class Document:
-    __slots__ = ("analysis", "good", "path", "text", "uri", "version")
+    __slots__ = ("analysis", "good", "parser", "path", "text", "uri", "version")
 
     def __init__(self, uri: str, path: str, text: str, version: int | None) -> None:
         self.uri = uri
@@ -48,10 +52,30 @@ class Document:
         self.version = version
         self.analysis: Analysis | None = None  # of `text`; None until checked after a change
         self.good: Analysis | None = None  # the last check that built a Model
+        self.parser = Reparser()  # its declarations as last parsed, reused by the next check
 
     @property
     def real_path(self) -> str:
         return os.path.realpath(self.path)
+
+
+class Job:
+    """One check to make: a document's text as it was when it was made, and the other open
+    documents' texts (its imports read them). Running it touches nothing shared."""
+
+    __slots__ = ("document", "text", "texts")
+
+    def __init__(self, document: Document, texts: dict[str, str]) -> None:
+        self.document = document
+        self.text = document.text
+        self.texts = texts
+
+    def run(self) -> Analysis:
+        path = self.document.path
+        with open_texts(self.texts):
+            compilation = compile_text(path, self.text, parser=self.document.parser.parse)
+        source = compilation.sources.get(path) or SourceFile(path, self.text)
+        return Analysis(compilation, source)
 
 
 class Workspace:
@@ -71,13 +95,20 @@ class Workspace:
     def close(self, uri: str) -> list[Document]:
         """Forget a document; the open documents importing it, checked again (its file is read
         now, not its text): those to publish."""
+        importers = self.forget(uri)
+        for importer in importers:
+            self._check(importer)
+        return importers
+
+    def forget(self, uri: str) -> list[Document]:
+        """Forget a document: the open documents importing it, their checks dropped (its file is
+        read now, not its text), to check again."""
         document = self.documents.pop(uri, None)
         if document is None:
             return []
-        importers = [d for d in self.documents.values() if d.analysis is not None
-                     and document.real_path in d.analysis.files]
+        importers = self.importers(document)
         for importer in importers:
-            self._check(importer)
+            importer.analysis = None
         return importers
 
     def analysis(self, uri: str) -> Analysis | None:
@@ -97,18 +128,31 @@ class Workspace:
             return []
         if document.analysis is None:
             self._check(document)
-        changed = document.real_path
-        importers = [d for d in self.documents.values()
-                     if d is not document and d.analysis is not None and changed in d.analysis.files]
+        importers = self.importers(document)
         for importer in importers:
             self._check(importer)
         return [document, *importers]
 
+    def importers(self, document: Document) -> list[Document]:
+        """The other open documents whose last check read the document's file."""
+        changed = document.real_path
+        return [d for d in self.documents.values()
+                if d is not document and d.analysis is not None and changed in d.analysis.files]
+
+    def job(self, document: Document) -> Job:
+        return Job(document, {d.real_path: d.text for d in self.documents.values() if d is not document})
+
+    def settle(self, job: Job, analysis: Analysis) -> bool:
+        """Keep a check's result if its document is open and its text is still the one checked
+        (a stale result is dropped: a newer check follows); whether it was kept."""
+        document = job.document
+        if self.documents.get(document.uri) is not document or document.text != job.text:
+            return False
+        document.analysis = analysis
+        if analysis.compilation.model is not None:
+            document.good = analysis
+        return True
+
     def _check(self, document: Document) -> None:
-        texts = {d.real_path: d.text for d in self.documents.values() if d is not document}
-        with open_texts(texts):
-            compilation = compile_text(document.path, document.text)
-        source = compilation.sources.get(document.path) or SourceFile(document.path, document.text)
-        document.analysis = Analysis(compilation, source)
-        if compilation.model is not None:
-            document.good = document.analysis
+        job = self.job(document)
+        self.settle(job, job.run())

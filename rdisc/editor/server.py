@@ -1,13 +1,12 @@
 """The language server: pygls's protocol wired to the workspace and the answering modules.
 
-Each handler finds the document's analysis (checking it first if its text changed) and hands it
+Each handler finds the document's analysis (waiting for its check if its text changed) and hands it
 to the module that answers; none of them does work beyond a walk of one compilation's names, so a
 hostile document costs what checking it costs, within the compiler's token and size limits.
 """
 
 from __future__ import annotations
 
-import asyncio
 from collections.abc import Callable
 from typing import TypeVar
 
@@ -17,10 +16,10 @@ from pygls.lsp.server import LanguageServer
 
 from rdisc import __version__
 from rdisc.editor import actions, completion, hover, navigation, positions, symbols
+from rdisc.editor.checks import Checker
 from rdisc.editor.diagnostics import published
 from rdisc.editor.documents import Analysis, Document, Workspace
 
-DEBOUNCE_S = 0.15  # a pause in typing this long, and the document is checked
 T = TypeVar("T")
 
 
@@ -28,37 +27,20 @@ class RdisServer(LanguageServer):
     def __init__(self) -> None:
         super().__init__("rdisc", __version__, text_document_sync_kind=types.TextDocumentSyncKind.Incremental)
         self.documents = Workspace()
-        self.pending: dict[str, asyncio.TimerHandle] = {}
+        self.checks = Checker(self.documents, self.publish)
 
-    def refresh(self, uri: str) -> None:
-        """Check a document and those importing it now, and publish their diagnostics."""
-        self.cancel(uri)
-        self.publish(self.documents.check(uri))
-
-    def cancel(self, uri: str) -> None:
-        """Forget the check a change of the document scheduled."""
-        pending = self.pending.pop(uri, None)
-        if pending is not None:
-            pending.cancel()
-
-    def publish(self, documents: list[Document]) -> None:
-        for document in documents:
-            assert document.analysis is not None
-            self.text_document_publish_diagnostics(types.PublishDiagnosticsParams(
-                uri=document.uri, version=document.version, diagnostics=published(document, document.analysis)))
-
-    def later(self, uri: str) -> None:
-        """Check a document once typing pauses (each change restarts the wait)."""
-        self.cancel(uri)
-        self.pending[uri] = asyncio.get_running_loop().call_later(DEBOUNCE_S, self.refresh, uri)
+    def publish(self, document: Document) -> None:
+        assert document.analysis is not None
+        self.text_document_publish_diagnostics(types.PublishDiagnosticsParams(
+            uri=document.uri, version=document.version, diagnostics=published(document, document.analysis)))
 
     def good(self, uri: str) -> Analysis | None:
         """The document's last check without errors, if any."""
         document = self.documents.documents.get(uri)
         return document.good if document is not None else None
 
-    def analysis(self, uri: str) -> Analysis:
-        found = self.documents.analysis(uri)
+    async def analysis(self, uri: str) -> Analysis:
+        found = await self.checks.analysis(uri)
         if found is None:
             raise JsonRpcInvalidParams(f"{uri} is not open")
         return found
@@ -69,92 +51,87 @@ def make_server() -> RdisServer:
 
     @server.feature(types.INITIALIZED)
     def initialized(ls: RdisServer, params: types.InitializedParams) -> None:
-        asyncio.get_running_loop().call_soon(completion.warm)
+        ls.checks.executor.submit(completion.warm)  # in the checks' thread: the parser is made once
 
     @server.feature(types.TEXT_DOCUMENT_DID_OPEN)
     def did_open(ls: RdisServer, params: types.DidOpenTextDocumentParams) -> None:
         item = params.text_document
         ls.documents.open(item.uri, positions.path_of(item.uri), item.text, item.version)
-        ls.refresh(item.uri)
+        ls.checks.request(item.uri)
 
     @server.feature(types.TEXT_DOCUMENT_DID_CHANGE)
     def did_change(ls: RdisServer, params: types.DidChangeTextDocumentParams) -> None:
         uri = params.text_document.uri
         text = ls.workspace.get_text_document(uri).source  # pygls applied the changes
         if ls.documents.change(uri, text, params.text_document.version) is not None:
-            ls.later(uri)
-
-    @server.feature(types.TEXT_DOCUMENT_DID_SAVE)
-    def did_save(ls: RdisServer, params: types.DidSaveTextDocumentParams) -> None:
-        if params.text_document.uri in ls.documents.documents:  # no wait: the change is done
-            ls.refresh(params.text_document.uri)
+            ls.checks.request(uri)
 
     @server.feature(types.TEXT_DOCUMENT_DID_CLOSE)
     def did_close(ls: RdisServer, params: types.DidCloseTextDocumentParams) -> None:
         uri = params.text_document.uri
-        ls.cancel(uri)
         ls.text_document_publish_diagnostics(types.PublishDiagnosticsParams(uri=uri, diagnostics=[]))
-        ls.publish(ls.documents.close(uri))
+        for importer in ls.documents.forget(uri):
+            ls.checks.request(importer.uri)
 
     @server.feature(types.TEXT_DOCUMENT_CODE_ACTION,
                     types.CodeActionOptions(code_action_kinds=[types.CodeActionKind.QuickFix]))
-    def code_action(ls: RdisServer, params: types.CodeActionParams) -> list[types.CodeAction]:
-        analysis = ls.analysis(params.text_document.uri)
+    async def code_action(ls: RdisServer, params: types.CodeActionParams) -> list[types.CodeAction]:
+        analysis = await ls.analysis(params.text_document.uri)
         return actions.quick_fixes(params.text_document.uri, analysis.source, list(params.context.diagnostics))
 
     @server.feature(types.TEXT_DOCUMENT_HOVER)
-    def on_hover(ls: RdisServer, params: types.HoverParams) -> types.Hover | None:
-        analysis = ls.analysis(params.text_document.uri)
+    async def on_hover(ls: RdisServer, params: types.HoverParams) -> types.Hover | None:
+        analysis = await ls.analysis(params.text_document.uri)
         return hover.hover(analysis, ls.good(params.text_document.uri), params.position)
 
     @server.feature(types.TEXT_DOCUMENT_DEFINITION)
-    def definition(ls: RdisServer, params: types.DefinitionParams) -> list[types.Location]:
-        return navigation.definition(ls.analysis(params.text_document.uri), params.position)
+    async def definition(ls: RdisServer, params: types.DefinitionParams) -> list[types.Location]:
+        return navigation.definition(await ls.analysis(params.text_document.uri), params.position)
 
     @server.feature(types.TEXT_DOCUMENT_REFERENCES)
-    def references(ls: RdisServer, params: types.ReferenceParams) -> list[types.Location]:
-        return navigation.references(ls.analysis(params.text_document.uri), params.position,
-                                     params.context.include_declaration, _others(ls, params.text_document.uri))
+    async def references(ls: RdisServer, params: types.ReferenceParams) -> list[types.Location]:
+        analysis, others = await ls.analysis(params.text_document.uri), await _others(ls, params.text_document.uri)
+        return navigation.references(analysis, params.position, params.context.include_declaration, others)
 
     @server.feature(types.TEXT_DOCUMENT_DOCUMENT_HIGHLIGHT)
-    def highlight(ls: RdisServer, params: types.DocumentHighlightParams) -> list[types.DocumentHighlight]:
-        return navigation.highlights(ls.analysis(params.text_document.uri), params.position)
+    async def highlight(ls: RdisServer, params: types.DocumentHighlightParams) -> list[types.DocumentHighlight]:
+        return navigation.highlights(await ls.analysis(params.text_document.uri), params.position)
 
     @server.feature(types.TEXT_DOCUMENT_PREPARE_RENAME)
-    def prepare_rename(ls: RdisServer, params: types.PrepareRenameParams) -> types.Range | None:
-        return _refused(lambda: navigation.prepare_rename(ls.analysis(params.text_document.uri), params.position))
+    async def prepare_rename(ls: RdisServer, params: types.PrepareRenameParams) -> types.Range | None:
+        analysis = await ls.analysis(params.text_document.uri)
+        return _refused(lambda: navigation.prepare_rename(analysis, params.position))
 
     @server.feature(types.TEXT_DOCUMENT_RENAME)
-    def rename(ls: RdisServer, params: types.RenameParams) -> types.WorkspaceEdit | None:
-        analysis = ls.analysis(params.text_document.uri)
-        return _refused(lambda: navigation.rename(analysis, params.position, params.new_name,
-                                                  _others(ls, params.text_document.uri)))
+    async def rename(ls: RdisServer, params: types.RenameParams) -> types.WorkspaceEdit | None:
+        analysis, others = await ls.analysis(params.text_document.uri), await _others(ls, params.text_document.uri)
+        return _refused(lambda: navigation.rename(analysis, params.position, params.new_name, others))
 
     @server.feature(types.TEXT_DOCUMENT_DOCUMENT_SYMBOL)
-    def document_symbols(ls: RdisServer, params: types.DocumentSymbolParams) -> list[types.DocumentSymbol]:
-        return symbols.document_symbols(ls.analysis(params.text_document.uri))
+    async def document_symbols(ls: RdisServer, params: types.DocumentSymbolParams) -> list[types.DocumentSymbol]:
+        return symbols.document_symbols(await ls.analysis(params.text_document.uri))
 
     @server.feature(types.TEXT_DOCUMENT_FOLDING_RANGE)
-    def folding(ls: RdisServer, params: types.FoldingRangeParams) -> list[types.FoldingRange]:
-        return symbols.folding_ranges(ls.analysis(params.text_document.uri))
+    async def folding(ls: RdisServer, params: types.FoldingRangeParams) -> list[types.FoldingRange]:
+        return symbols.folding_ranges(await ls.analysis(params.text_document.uri))
 
     @server.feature(types.TEXT_DOCUMENT_SEMANTIC_TOKENS_FULL, symbols.LEGEND)
-    def semantic_tokens(ls: RdisServer, params: types.SemanticTokensParams) -> types.SemanticTokens:
-        return symbols.semantic_tokens(ls.analysis(params.text_document.uri))
+    async def semantic_tokens(ls: RdisServer, params: types.SemanticTokensParams) -> types.SemanticTokens:
+        return symbols.semantic_tokens(await ls.analysis(params.text_document.uri))
 
     @server.feature(types.TEXT_DOCUMENT_COMPLETION,
                     types.CompletionOptions(trigger_characters=[".", '"', "(", " ", ","]))
-    def complete(ls: RdisServer, params: types.CompletionParams) -> types.CompletionList:
-        analysis = ls.analysis(params.text_document.uri)
+    async def complete(ls: RdisServer, params: types.CompletionParams) -> types.CompletionList:
+        analysis = await ls.analysis(params.text_document.uri)
         return completion.complete(analysis, params.position, ls.good(params.text_document.uri))
 
     return server
 
 
-def _others(ls: RdisServer, uri: str) -> list[Analysis]:
+async def _others(ls: RdisServer, uri: str) -> list[Analysis]:
     """The other open documents' analyses: a name of a shared import is used in each."""
     return [found for other in list(ls.documents.documents)
-            if other != uri and (found := ls.documents.analysis(other)) is not None]
+            if other != uri and (found := await ls.checks.analysis(other)) is not None]
 
 
 def _refused(answer: Callable[[], T]) -> T:

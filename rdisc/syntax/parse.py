@@ -94,54 +94,71 @@ def parse(path: str, text: str, diagnostics: Diagnostics) -> ast.Module:
             f"file is too large ({len(text)} characters; the limit is {MAX_FILE_CHARS})",
         )
         return ast.Module(path, (), refused=True)
-    from rdisc.syntax.reduce import Retry, parse_built
-
     builder = Builder(path, _doc_comments(text), diagnostics)
     decls: list[ast.Decl] = []
     damaged: list[ast.Damaged] = []
     errors = 0
     bounds = _chunks(text)
     for i, (start, end) in enumerate(bounds):
-        chunk = text[start:end]
-        too_long = _too_long(path, chunk, start)
-        if too_long is not None:  # refused before the parser, whose time and memory would grow with it
-            diagnostics.report("E005", *too_long)
-            damaged.extend(_damaged(path, chunk, start))
-            continue
-        try:  # built as it is parsed, where that is clean; else Lark's tree, built after (rdisc.syntax.reduce)
-            decls.extend(parse_built(chunk, builder, start, MAX_TREE_DEPTH))
-            continue
-        except Retry:
-            pass
-        import lark  # only for a declaration the loop leaves: start-up time matters for `rdisc check`
-
-        try:
-            tree = parser().parse(chunk, start="start", on_error=_keyword_as_name)
-        except lark.exceptions.UnexpectedInput as err:
-            damaged.extend(_damaged(path, chunk, start))
+        if parse_declaration(text, start, end, builder, decls, damaged, errors < MAX_SYNTAX_ERRORS,
+                             i == len(bounds) - 1):
             errors += 1
-            if errors <= MAX_SYNTAX_ERRORS:
-                last = i == len(bounds) - 1
-                _report_syntax_error(err, path, text, start, end, last, diagnostics)
-            continue
-        depth, deepest = _depth(tree)
-        too_deep = None
-        if depth > MAX_TREE_DEPTH:
-            meta = deepest.meta
-            too_deep = Span(path, start + meta.start_pos, start + meta.end_pos)
-        else:
-            try:
-                decls.extend(builder.build(tree, start))
-            except lark.exceptions.VisitError as err:
-                if not isinstance(err.orig_exc, TooDeep):
-                    raise
-                too_deep = err.orig_exc.span
-        if too_deep is not None:
-            diagnostics.report(
-                "E005", too_deep, f"expression is nested too deeply (the limit is {MAX_EXPR_DEPTH} levels)"
-            )
-            damaged.extend(_damaged(path, chunk, start))
     return ast.Module(path, tuple(decls), tuple(damaged))
+
+
+def pieces(text: str) -> tuple[list[tuple[int, int]], dict[int, str]]:
+    """Where `parse` cuts a file into top-level declarations, and its doc comments by the offset
+    of what each documents."""
+    return _chunks(text), _doc_comments(text)
+
+
+def parse_declaration(text: str, start: int, end: int, builder: Builder, decls: list[ast.Decl],
+                      damaged: list[ast.Damaged], report: bool, last: bool) -> bool:
+    """Parse the top-level declaration `text[start:end]` (one piece `parse` cut the file into)
+    with the file's builder, adding what it gives to `decls` and `damaged`; whether it had a
+    syntax error (reported if `report`). What it gives depends on the piece's text, where it
+    starts and the doc comment before it only (rdisc.syntax.incremental reuses it)."""
+    from rdisc.syntax.reduce import Retry, parse_built
+
+    path, diagnostics = builder.path, builder.diagnostics
+    chunk = text[start:end]
+    too_long = _too_long(path, chunk, start)
+    if too_long is not None:  # refused before the parser, whose time and memory would grow with it
+        diagnostics.report("E005", *too_long)
+        damaged.extend(_damaged(path, chunk, start))
+        return False
+    try:  # built as it is parsed, where that is clean; else Lark's tree, built after (rdisc.syntax.reduce)
+        decls.extend(parse_built(chunk, builder, start, MAX_TREE_DEPTH))
+        return False
+    except Retry:
+        pass
+    import lark  # only for a declaration the loop leaves: start-up time matters for `rdisc check`
+
+    try:
+        tree = parser().parse(chunk, start="start", on_error=_keyword_as_name)
+    except lark.exceptions.UnexpectedInput as err:
+        damaged.extend(_damaged(path, chunk, start))
+        if report:
+            _report_syntax_error(err, path, text, start, end, last, diagnostics)
+        return True
+    depth, deepest = _depth(tree)
+    too_deep = None
+    if depth > MAX_TREE_DEPTH:
+        meta = deepest.meta
+        too_deep = Span(path, start + meta.start_pos, start + meta.end_pos)
+    else:
+        try:
+            decls.extend(builder.build(tree, start))
+        except lark.exceptions.VisitError as err:
+            if not isinstance(err.orig_exc, TooDeep):
+                raise
+            too_deep = err.orig_exc.span
+    if too_deep is not None:
+        diagnostics.report(
+            "E005", too_deep, f"expression is nested too deeply (the limit is {MAX_EXPR_DEPTH} levels)"
+        )
+        damaged.extend(_damaged(path, chunk, start))
+    return False
 
 
 _NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*")

@@ -3,6 +3,7 @@ one server for the module, each test on documents of its own."""
 
 from __future__ import annotations
 
+import asyncio
 import os
 import sys
 from collections.abc import AsyncIterator
@@ -254,3 +255,21 @@ async def test_a_change_to_an_imported_file_rechecks_the_open_files_importing_it
         await client.wait_for_notification(types.TEXT_DOCUMENT_PUBLISH_DIAGNOSTICS)
     assert [(d.code, d.range.start.line, d.message) for d in client.diagnostics[main]] == [
         ("E102", 2, "unknown primitive or interface `ping`")]
+
+
+async def test_rapid_changes_end_with_the_diagnostics_of_the_last_text(client: LanguageClient, tmp_path: Path) -> None:
+    uri = await opened(client, tmp_path, "rapid.rdis", BOT)
+    client.diagnostics.pop(uri)
+    texts = {version: BOT.replace("set_speed(round", f"set_speed{version}(round") for version in range(2, 12)}
+    for version, text in texts.items():  # sent at once: the server is checking the first while the rest arrive
+        client.text_document_did_change(types.DidChangeTextDocumentParams(
+            text_document=types.VersionedTextDocumentIdentifier(uri=uri, version=version),
+            content_changes=[types.TextDocumentContentChangeWholeDocument(text=text)]))
+    seen: list[int] = []  # the versions whose diagnostics were published, in order
+    while not seen or seen[-1] != 11:
+        while uri not in client.diagnostics:
+            await asyncio.wait_for(client.wait_for_notification(types.TEXT_DOCUMENT_PUBLISH_DIAGNOSTICS), 60)
+        (found,) = client.diagnostics.pop(uri)
+        seen.append(int(found.message.removeprefix("unknown primitive or interface `set_speed").rstrip("`")))
+        assert (found.code, found.range.start.line) == ("E102", at(texts[11], "set_speed11(", "set_speed").line)
+    assert seen == sorted(set(seen))  # a stale check's diagnostics never come after a newer one's

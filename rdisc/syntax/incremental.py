@@ -1,0 +1,92 @@
+"""Parsing a file again after an edit, reusing the declarations the edit left alone (the editor's).
+
+`parse` (rdisc.syntax.parse) cuts a file into its top-level declarations and parses each alone,
+and what one gives depends only on its text, the doc comment written before it and where it
+starts. A `Reparser` keeps each declaration's nodes by its text and doc comment: an unchanged
+declaration is taken from the last parse, its spans shifted by how far it moved, and only the
+others are parsed. A declaration that reported anything, or was damaged, is not kept (its
+messages are made again by parsing it again). The module equals `parse`'s, spans included.
+"""
+
+from __future__ import annotations
+
+from typing import Any, TypeVar
+
+from rdisc.diagnostics import Diagnostics
+from rdisc.source import Span
+from rdisc.syntax import ast
+from rdisc.syntax.build import Builder
+from rdisc.syntax.parse import MAX_FILE_CHARS, MAX_SYNTAX_ERRORS, parse, parse_declaration, pieces
+
+Node = TypeVar("Node")
+_setattr = object.__setattr__
+
+
+class Reparser:
+    """Each file's declarations as last parsed (a check reads a document, its imports and the
+    stdlib), by (text, doc comment): where each started and what it gave."""
+
+    def __init__(self) -> None:
+        self.files: dict[str, dict[tuple[str, str | None], tuple[int, tuple[ast.Decl, ...]]]] = {}
+        self.reused = 0  # declarations taken from the file's last parse, by the last parse (for tests)
+
+    def parse(self, path: str, text: str, diagnostics: Diagnostics) -> ast.Module:
+        """What `parse(path, text, diagnostics)` gives, reusing the declarations kept."""
+        if len(text) > MAX_FILE_CHARS:
+            self.files.pop(path, None)
+            return parse(path, text, diagnostics)
+        last = self.files.get(path, {})
+        bounds, docs = pieces(text)
+        builder = Builder(path, docs, diagnostics)
+        decls: list[ast.Decl] = []
+        damaged: list[ast.Damaged] = []
+        errors = reused = 0
+        kept: dict[tuple[str, str | None], tuple[int, tuple[ast.Decl, ...]]] = {}
+        for i, (start, end) in enumerate(bounds):
+            key = (text[start:end], docs.get(start))
+            found = last.get(key)
+            if found is not None:
+                at, made = found
+                if at != start:
+                    made = tuple(shifted(decl, start - at) for decl in made)
+                decls.extend(made)
+                kept[key] = (start, made)
+                reused += 1
+                continue
+            reported, first, first_damaged = len(diagnostics.items), len(decls), len(damaged)
+            if parse_declaration(text, start, end, builder, decls, damaged, errors < MAX_SYNTAX_ERRORS,
+                                 i == len(bounds) - 1):
+                errors += 1
+            elif len(diagnostics.items) == reported and len(damaged) == first_damaged:
+                kept[key] = (start, tuple(decls[first:]))
+        self.files[path], self.reused = kept, reused
+        return ast.Module(path, tuple(decls), tuple(damaged))
+
+
+_FIELDS: dict[type, tuple[str, ...]] = {}
+_ATOMS = frozenset({str, int, float, bytes, bool, type(None)})
+
+
+def shifted(node: Node, by: int) -> Node:
+    """A copy of a syntax tree with each span `by` characters later (earlier if negative)."""
+    cls: Any = node.__class__
+    if cls is tuple:
+        return tuple([_shifted(item, by) for item in node])  # type: ignore[attr-defined,return-value]
+    return _shifted(node, by)  # type: ignore[no-any-return]
+
+
+def _shifted(node: Any, by: int) -> Any:
+    cls = node.__class__
+    if cls in _ATOMS:
+        return node
+    if cls is Span:
+        return Span(node.path, node.start + by, node.end + by)
+    if cls is tuple:
+        return tuple([_shifted(item, by) for item in node])
+    names = _FIELDS.get(cls)
+    if names is None:
+        names = _FIELDS[cls] = tuple(cls.__dataclass_fields__)  # a node of rdisc.syntax.ast
+    made = object.__new__(cls)
+    for name in names:
+        _setattr(made, name, _shifted(getattr(node, name), by))
+    return made
