@@ -39,6 +39,7 @@ from rdisc.lower import lower
 from rdisc.lowering.constructs import Construct
 from rdisc.semantics import model as m
 from rdisc.semantics.model import Type
+from rdisc.semantics.operators import surely_float
 from rdisc.source import SourceFile, Span, place
 from rdisc.syntax import precedence as p
 
@@ -259,12 +260,14 @@ class _Driver:
             for key, e, type_ in items:
                 py = self.exprs.bound(e, type_, local) if type_ is not None else self.exprs.expr(e, local)
                 rendered.append((f"{quoted(key)}: " if keyed else key, py))  # key "*": an array given element by element
-            if whole:
-                named = _params([(key, m.Type.INT) for key, _, _ in items], _body_names() | frozenset(local.values()))
-                for (key, _, _), (_, py) in zip(items, rendered):
-                    _emit(w, f"{named[key]} = ", py)
-                rendered = [(f"{quoted(key)}: ", Py(named[key] if key in named else f"state[{quoted(key)}]", p.ATOM))
-                            for key in whole]
+            if whole:  # each value computed first, in the items' order (the first to fail fails), unless none can
+                given = {key: py for (key, _, _), (_, py) in zip(items, rendered)}
+                if not all(_cannot_fail(e, type_) for _, e, type_ in items):
+                    named = _params([(key, m.Type.INT) for key in given], _body_names() | frozenset(local.values()))
+                    for key, py in given.items():
+                        _emit(w, f"{named[key]} = ", py)
+                    given = {key: Py(name, p.ATOM) for key, name in named.items()}
+                rendered = [(f"{quoted(key)}: ", given.get(key) or Py(f"state[{quoted(key)}]", p.ATOM)) for key in whole]
             flat = "return " + opening + ", ".join(prefix + py.text for prefix, py in rendered) + closing
             if len(flat) <= w.width() and "\n" not in flat:
                 w.line(flat)
@@ -1037,6 +1040,23 @@ class _Driver:
 
 
 # ---- small pieces ------------------------------------------------------------------------------
+
+
+def _cannot_fail(e: m.Expr, declared: m.AnyType | None = None) -> bool:
+    """Whether computing `e` (bound to `declared`) raises nothing, whatever the values: a constant,
+    a variable, a reply's value, `&`, `|`, `^`, `==` and `!=` of those that are ints or bools, and
+    `bool` of a number (what post-actions that only take a reply's values apart are made of)."""
+    if declared is m.Type.FLOAT and not surely_float(e):
+        return False  # made a float: a huge int cannot be
+    match e:
+        case m.Const() | m.Var() | m.ReplyValue():
+            return True
+        case m.BinaryOp(op="&" | "|" | "^" | "==" | "!=", left=left, right=right):
+            return (left.type in (m.Type.INT, m.Type.BOOL) and right.type in (m.Type.INT, m.Type.BOOL)
+                    and _cannot_fail(left) and _cannot_fail(right))
+        case m.FuncCall(func="bool", args=(number,)):
+            return number.type in (m.Type.INT, m.Type.BOOL) and _cannot_fail(number)
+    return False
 
 
 def _names(e: m.Expr) -> set[str]:

@@ -100,8 +100,11 @@ class Exchange:
     _write: Callable[[Primitive, bytes], None]
 
     def _choose_write(self) -> None:
-        """Put the write that fits in place: the plain one on open ports no callback watches."""
-        self._write = self._write_watched if self._watched or not self._ports else _unwatched_write(self, self._ports)
+        """Put the write that fits in place: the plain one on open ports no callback watches. Under
+        the callback lock, which a callback's registration holds: the last choice sees the last callback."""
+        with self._callback_lock:
+            self._write = (self._write_watched if self._watched or not self._ports
+                           else _unwatched_write(self, self._ports))
 
     def _write_watched(self, plan: Primitive, request: bytes) -> None:
         """Under the port's lock write a request that has no reply and sets no modem line (the

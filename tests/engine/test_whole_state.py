@@ -7,6 +7,7 @@ state changed by a reply whose post-actions fail."""
 
 from __future__ import annotations
 
+import struct
 from pathlib import Path
 from types import ModuleType
 from typing import Any
@@ -18,6 +19,7 @@ from tests.engine.test_one_engine import implementation_of
 from tests.support.ports import ScriptedPort
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
+PACKET_100 = struct.Struct(">B6?BBxBBhhBHhbHHH4H3xBBB?B6hB6HBB4hB")  # as examples/create2.rdis reads it
 WHOLE = """\
 robot whole { author "tests" }
 setting LIMIT: int in 0..100 = 5
@@ -66,8 +68,9 @@ def test_only_a_driver_s_post_actions_that_set_most_of_the_state_give_it_whole(t
     assert (plans["read"].renews, plans["poke"].renews) == (True, False)
     given = driver._p_read_actions({"LIMIT": 7, "a": 0, "b": 1, "c": 0.0, "d": 9, "e": 8}, [], (4, 3))
     assert list(given.items()) == [("LIMIT", 7), ("a", 2), ("b", 10), ("c", 2.5), ("d", 3), ("e", 8)]
-    sensors = import_driver(EXAMPLES / "create2.rdis", tmp_path, "create2_whole")._DEVICE.primitives["sensors"]
-    assert sensors.renews  # packet 100: 69 of the 75 variables
+    create2 = import_driver(EXAMPLES / "create2.rdis", tmp_path, "create2_whole")._DEVICE
+    sensors = create2.primitives["sensors"]  # packet 100: 69 of the 75 variables, none of which can fail
+    assert sensors.renews and list(sensors.actions(create2.state, [], PACKET_100.unpack(bytes(80)))) == list(create2.state)
     assert not implementation_of("runtime", WHOLE, tmp_path, "whole_runtime").device.primitives["read"].renews
 
 
