@@ -39,6 +39,7 @@ from rdisc.lower import lower
 from rdisc.lowering.constructs import Construct
 from rdisc.semantics import model as m
 from rdisc.semantics.model import Type
+from rdisc.semantics.operators import surely_float
 from rdisc.source import SourceFile, Span, place
 from rdisc.syntax import precedence as p
 
@@ -221,6 +222,8 @@ class _Driver:
             for name in names
         }
         self.names: dict[object, str] = {}  # each plan and Code written: the name it has in the module
+        self.state_order: tuple[str, ...] = ()  # the state variables, in the order of the robot's state
+        self.renewing: set[lowering.Code] = set()  # post-actions written to give the whole new state
         self.one_step: dict[tuple[str, str], OneStep] = {}  # ("input" or "primitive", name): its request in one step
         self.slots: dict[tuple[str, str], str] = {}  # ("input" or "primitive", name): the engine's one-step function
         self.input_methods: dict[str, str] = {}
@@ -239,10 +242,11 @@ class _Driver:
             w.comment(f"{where}" + (f"  {what}" if what else ""))
 
     def function(self, w: Writer, name: str, signature: str, params: tuple[m.Parameter, ...] | None,
-                 values: Iterable[lowering.Item], returns: str) -> None:
+                 values: Iterable[lowering.Item], returns: str, whole: tuple[str, ...] = ()) -> None:
         """`def name(signature) -> returns:` whose body unpacks `args` into the parameters'
         names and returns a list (keys None) or a dict of the expressions' values, each bound
-        to its type where one is given."""
+        to its type where one is given. `whole`, a dict's keys: every one in that order, those
+        of no item read from `state` (the items computed first, in their order, each its name)."""
         local = _params([(prm.name, prm.type) for prm in params or ()])
         items = list(values)
         with w.block(f"def {name}({signature}) -> {returns}:"):
@@ -256,6 +260,14 @@ class _Driver:
             for key, e, type_ in items:
                 py = self.exprs.bound(e, type_, local) if type_ is not None else self.exprs.expr(e, local)
                 rendered.append((f"{quoted(key)}: " if keyed else key, py))  # key "*": an array given element by element
+            if whole:  # each value computed first, in the items' order (the first to fail fails), unless none can
+                given = {key: py for (key, _, _), (_, py) in zip(items, rendered)}
+                if not all(_cannot_fail(e, type_) for _, e, type_ in items):
+                    named = _params([(key, m.Type.INT) for key in given], _body_names() | frozenset(local.values()))
+                    for key, py in given.items():
+                        _emit(w, f"{named[key]} = ", py)
+                    given = {key: Py(name, p.ATOM) for key, name in named.items()}
+                rendered = [(f"{quoted(key)}: ", given.get(key) or Py(f"state[{quoted(key)}]", p.ATOM)) for key in whole]
             flat = "return " + opening + ", ".join(prefix + py.text for prefix, py in rendered) + closing
             if len(flat) <= w.width() and "\n" not in flat:
                 w.line(flat)
@@ -340,6 +352,7 @@ class _Driver:
         model = self.model
         lowered = lower(model)
         device = lowered.device
+        self.state_order = tuple(device.state)
         for table in model.tables.values():
             w.blank(2)
             entries = ", ".join(f"{literal(k, table.key_type).text}: {literal(v, table.value_type).text}"
@@ -435,10 +448,25 @@ class _Driver:
             returns = "Args" if code.gives is lowering.Gives.LIST else "dict[str, Value]"
             self.function(w, name, signature, code.params, code.items, returns)
 
+    def actions(self, w: Writer, name: str, code: lowering.Code) -> None:
+        """Post-actions as `code` does, or, where they set at least two thirds of the state
+        variables (each once), as a function giving the whole new state, which the engine
+        publishes as it is (`Primitive.renews`): cheaper than merging so many changes into it."""
+        keys = [key for key, _, _ in code.items]
+        if len(set(keys)) != len(keys) or 3 * len(keys) < 2 * len(self.state_order):
+            self.code(w, name, code)
+            return
+        self.names[code] = name
+        self.renewing.add(code)
+        signature = ", ".join(_SIGNATURE[taken] for taken in code.takes)
+        self.function(w, name, signature, code.params, code.items, "dict[str, Value]", self.state_order)
+
     def constant(self, w: Writer, name: str, plan: object, given: Mapping[str, str] = {}) -> None:
         """`name = Plan(...)`, one argument a line when long; `given`: fields written as these names."""
         self.names[plan] = name
         args, options = self.arguments(plan, given)
+        if isinstance(plan, lowering.Primitive) and plan.actions in self.renewing:
+            options["renews"] = "True"
         _construct(w, f"{name} = ", type(plan).__name__, args, options)
 
     def arguments(self, made: object, given: Mapping[str, str] = {}) -> tuple[list[str], dict[str, str]]:
@@ -553,7 +581,7 @@ class _Driver:
             for suffix, code in own:
                 if code is not None and code not in self.names:
                     w.blank(2)
-                    self.code(w, f"{base}_reply_{n}_{suffix}", code)
+                    (self.actions if suffix == "actions" else self.code)(w, f"{base}_reply_{n}_{suffix}", code)
             w.blank(2)
             w.line(f"# reply {n} of {len(answers)}")
             self.constant(w, f"{const}_REPLY_{n}", answer)
@@ -564,7 +592,7 @@ class _Driver:
             name = const if case is None else f"{const}_{_case(case).upper()}"
             if entry.actions is not None and entry.actions not in self.names:
                 w.blank(2)
-                self.code(w, f"{base}_actions" if case is None else f"{base}_{_case(case)}_actions", entry.actions)
+                self.actions(w, f"{base}_actions" if case is None else f"{base}_{_case(case)}_actions", entry.actions)
             w.blank(2)
             if case is not None:
                 w.line(f"# reply {case.values_text()}" if case.under is None
@@ -1015,6 +1043,23 @@ class _Driver:
 
 
 # ---- small pieces ------------------------------------------------------------------------------
+
+
+def _cannot_fail(e: m.Expr, declared: m.AnyType | None = None) -> bool:
+    """Whether computing `e` (bound to `declared`) raises nothing, whatever the values: a constant,
+    a variable, a reply's value, `&`, `|`, `^`, `==` and `!=` of those that are ints or bools, and
+    `bool` of a number (what post-actions that only take a reply's values apart are made of)."""
+    if declared is m.Type.FLOAT and not surely_float(e):
+        return False  # made a float: a huge int cannot be
+    match e:
+        case m.Const() | m.Var() | m.ReplyValue():
+            return True
+        case m.BinaryOp(op="&" | "|" | "^" | "==" | "!=", left=left, right=right):
+            return (left.type in (m.Type.INT, m.Type.BOOL) and right.type in (m.Type.INT, m.Type.BOOL)
+                    and _cannot_fail(left) and _cannot_fail(right))
+        case m.FuncCall(func="bool", args=(number,)):
+            return number.type in (m.Type.INT, m.Type.BOOL) and _cannot_fail(number)
+    return False
 
 
 def _names(e: m.Expr) -> set[str]:

@@ -216,6 +216,15 @@ class Compiler:
                 return self.binary(e, names)
             case m.IfElse(cond=cond, then=then, orelse=orelse):
                 return conditional(self.expr(then, names), self.expr(cond, names), self.expr(orelse, names))
+            case m.FuncCall(func="clamp", args=(m.Var(scope=scope) as x, low, high)) if (
+                    scope is not Scope.STATE and _signed_constant(low) and _signed_constant(high)):
+                # `_clamp`'s own test, its value a local name read twice: what it computes, without the
+                # call (`not x > high`, which a NaN passes as it does there, rather than what linters offer, min())
+                clamped, least, most = self.expr(x, names), self.expr(low, names), self.expr(high, names)
+                return conditional(least, binary("<", clamped, least),
+                                   conditional(clamped, unary("not", binary(">", clamped, most)), most))
+            case m.FuncCall(func="bool", args=(number,)) if number.type in (Type.INT, Type.FLOAT):
+                return binary("!=", self.expr(number, names), Py("0", p.ATOM))  # bool() of a number, without the call
             case m.FuncCall(args=args):
                 return call(call_operation(e), [self.expr(a, names) for a in args])
             case m.Lookup(table=table, key=key, default=default) if default is not None:
@@ -285,6 +294,11 @@ class Compiler:
             # A bool against True or False: `is`, as linters want it (both sides are bools).
             return binary(e.op, a, b, "is" if e.op == "==" else "is not")
         return binary(e.op, a, b)
+
+
+def _signed_constant(e: m.Expr) -> bool:
+    """Whether `e` is a constant, or a negated one (`-0.5`)."""
+    return isinstance(e, m.Const) or (isinstance(e, m.UnaryOp) and e.op == "-" and isinstance(e.operand, m.Const))
 
 
 def _bool_constant(e: m.Expr) -> bool:

@@ -93,10 +93,23 @@ class Exchange:
 
     # ---- writing requests, reading replies, running post-actions ------------------------------------
 
-    def _write(self, plan: Primitive, request: bytes) -> None:
-        """Under the port's lock write a request that has no reply and sets no modem line (every
-        plain command's path: the port and its lock found once, nothing allocated); then show the
-        callbacks. `_write_lines` is the way of one that sets lines or writes nothing."""
+    # The write of a request that has no reply and sets no modem line (every plain command's path):
+    # `_write_watched`, or on ports no I/O or trace callback watches `_unwatched_write`'s, which
+    # does the same but tell the callbacks. Chosen when the ports open and when a callback comes
+    # (`_choose_write`), not tested at each write.
+    _write: Callable[[Primitive, bytes], None]
+
+    def _choose_write(self) -> None:
+        """Put the write that fits in place: the plain one on open ports no callback watches. Under
+        the callback lock, which a callback's registration holds: the last choice sees the last callback."""
+        with self._callback_lock:
+            self._write = (self._write_watched if self._watched or not self._ports
+                           else _unwatched_write(self, self._ports))
+
+    def _write_watched(self, plan: Primitive, request: bytes) -> None:
+        """Under the port's lock write a request that has no reply and sets no modem line (the
+        port and its lock found once, nothing allocated); then show the callbacks.
+        `_write_lines` is the way of one that sets lines or writes nothing."""
         try:
             port = self._ports[plan.connection]
         except KeyError:
@@ -804,7 +817,7 @@ class Exchange:
             if plan.checked:
                 _check_widths(plan, changes)
             self._read_ns = time.time_ns()  # the reply just read: an output's `read_ns`
-            self._state = {**state, **changes}
+            self._state = changes if plan.renews else {**state, **changes}
         finally:
             lock.release()
 
@@ -822,7 +835,7 @@ class Exchange:
                 except EVAL_ERRORS as err:
                     raise RdisValueError(f"{plan.name}: {err}") from None
                 _check_widths(plan, changes)
-                state = {**state, **changes}
+                state = changes if plan.renews else {**state, **changes}
             self._read_ns = time.time_ns()  # the reply just read: an output's `read_ns`
             self._state = state
 
@@ -892,6 +905,48 @@ class Exchange:
                     callback(error)
                 except Exception:  # noqa: BLE001, S110 - the contract: an error callback's failure is ignored
                     pass
+
+
+def _unwatched_write(robot: Exchange, ports: Mapping[str, _Port]) -> Callable[[Primitive, bytes], None]:
+    """`Exchange._write_watched` on ports no callback watches, as one closure over what it needs
+    (the port's lock and write bound once, the port itself when every connection shares one):
+    the same lock around the write, the same refusal while closing, the same typed errors."""
+    shared = {id(port): port for port in ports.values()}
+    if len(shared) == 1:
+        (port,) = shared.values()
+        acquire, release, write = port.lock.acquire, port.lock.release, port.write
+
+        def write_one(plan: Primitive, request: bytes) -> None:
+            acquire()  # acquire/release rather than `with`: cheaper, and this is every command's path
+            try:
+                if robot._closed:  # under the lock: a write that got it before the terminate hooks comes before them
+                    robot._refuse(plan)
+                write(request)
+            except RdisError:
+                raise
+            except Exception as err:  # whatever the port raises, it failed
+                raise robot._port_error(plan, err) from err
+            finally:
+                release()
+
+        return write_one
+
+    def write_any(plan: Primitive, request: bytes) -> None:
+        port = ports[plan.connection]  # every connection has its port once they are open
+        lock = port.lock
+        lock.acquire()
+        try:
+            if robot._closed:
+                robot._refuse(plan)
+            port.write(request)
+        except RdisError:
+            raise
+        except Exception as err:  # whatever the port raises, it failed
+            raise robot._port_error(plan, err) from err
+        finally:
+            lock.release()
+
+    return write_any
 
 
 def device_error(plan: Primitive, error: ErrorReply, values: tuple[Any, ...]) -> RdisDeviceError:

@@ -210,6 +210,7 @@ class Primitive:
     expect: Callable[[StateValues, Args, Sequence[Any]], object] | None = None  # a condition its decoded reply meets
     lines: Callable[[StateValues, Args], dict[str, Value]] | None = None  # "dtr"/"rts": levels, set before the request
     looks_up: bool = False  # its post-actions look a key up in a table: a miss is a reply it cannot read
+    renews: bool = False  # its post-actions give every state variable in the state's order: the new state, published whole
     floats: tuple[int, ...] = field(init=False)
     ranged: tuple[int, ...] = field(init=False)
     asked: Request | None = field(init=False)  # the request of a plain exchange (`_asked_at_once`), in one step

@@ -17,7 +17,7 @@ from rdisc.engine.arguments import _accept_param, _accepted, _bind, _widen, bind
 from rdisc.engine.errors import RdisConnectionError, RdisError, RdisTimeout, RdisValueError
 from rdisc.engine.exchange import Exchange
 from rdisc.engine.operations import EVAL_ERRORS
-from rdisc.engine.plans import Call, Device, Hook, Input, Interface, KeyedReply, Primitive
+from rdisc.engine.plans import Call, Device, Hook, Input, Interface, KeyedReply, Primitive, Request
 from rdisc.engine.ports import PortSpec, Simulator, _Link, _open_port, _Port, _write_timed_out
 from rdisc.engine.schedule import _Worker
 from rdisc.engine.values import (
@@ -151,12 +151,16 @@ class Robot(Exchange):
         self._calls = {kind: Calls(self, kind) for kind in ("input", "interface", "primitive")}
         self._running = False
         self._direct = False  # running on ports: a plain write may skip the general way
+        # While `_direct`, the primitives only written, by name, with their one-step requests: what
+        # `call_primitive` looks up first (empty otherwise, so that one look-up decides both).
+        self._written: dict[str, tuple[Primitive, Request]] = {}
         self._closed = False  # closing or closed: writes are refused (`_refuse`) but by the `_closer`
         self._closer: int | None = None
         self._closing = threading.Event()  # set when closing begins: it ends the other threads' delays
         self._sim: Simulator | None = None
         self._clock: Callable[[], float] = time.monotonic  # the schedule's time, and the delays'
         self._sleep: Callable[[float], None] = self._delay
+        self._choose_write()
 
     # ---- callbacks --------------------------------------------------------------------------------
 
@@ -181,6 +185,7 @@ class Robot(Exchange):
         with self._callback_lock:
             self._io_callbacks.append(callback)
             self._watched = True
+            self._choose_write()
         return callback
 
     def on_trace(self, callback: TraceCallback) -> TraceCallback:
@@ -192,6 +197,7 @@ class Robot(Exchange):
         with self._callback_lock:
             self._trace_callbacks.append(callback)
             self._watched = True
+            self._choose_write()
         return callback
 
     # ---- what the host can see and call -------------------------------------------------------------
@@ -254,15 +260,18 @@ class Robot(Exchange):
     def call_primitive(self, name: str, /, *args: Any) -> None:
         """Send one device command (a primitive) with positional arguments, read its reply and
         run its post-actions, on this thread; errors are raised."""
-        plan = self.device.primitives.get(name)
-        if plan is None:
-            raise KeyError(f"{self.name} has no primitive named {name!r}")
-        request = plan.request
-        if request is not None and self._direct:  # `_call_primitive`'s one plain write, inline: every command's path
+        written = self._written.get(name)
+        if written is not None:  # `_call_primitive`'s one plain write, inline: every command's path
+            plan, request = written
             data = request(self._state, args)  # type: ignore[arg-type]  # a request takes any sequence of values
             if data is not None:
                 self._write(plan, data)
                 return
+        else:
+            found = self.device.primitives.get(name)
+            if found is None:
+                raise KeyError(f"{self.name} has no primitive named {name!r}")
+            plan = found
         self._call_primitive(plan, list(args))
 
     def request(self, name: str, /, *args: Any) -> bytes:
@@ -359,6 +368,9 @@ class Robot(Exchange):
                 threads = threads and sim.realtime
             self._running = True
             self._direct = sim is None
+            if self._direct:
+                self._written = {name: (plan, plan.request) for name, plan in self.device.primitives.items()
+                                 if plan.request is not None}
             self.startup()
             self._workers = [_Worker(self, c) for c in self.device.connections.values()]
             for worker in self._workers:
@@ -429,6 +441,7 @@ class Robot(Exchange):
             self._closed = True
             self._running = False
             self._direct = False
+            self._written = {}
         self._closing.set()
         try:
             for worker in self._workers:
@@ -491,6 +504,7 @@ class Robot(Exchange):
                 opened[key] = _Port(io, owned=by_name)
             self._links[name] = _Link(connections[name], opened[key])
             self._ports[name] = opened[key]
+        self._choose_write()
 
     # ---- running the plans --------------------------------------------------------------------------
 

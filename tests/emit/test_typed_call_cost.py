@@ -34,10 +34,11 @@ def drivers(tmp_path_factory: pytest.TempPathFactory) -> dict[str, Any]:
 
 @pytest.mark.parametrize("way", ["robot", "inputs"])
 def test_set_velocity_is_the_method_the_write_and_the_port(drivers: dict[str, Any], way: str) -> None:
-    """The six rows of Table 4.3: the method, the speed's clamp (`_clamp`), the robot's write, the
-    port's write; the first row divides (`_div`, which refuses a zero) and clamps the quotient
-    besides. `robot.inputs.set_velocity` calls the robot's method. 38 calls either way before
-    (the input's function and `_send_input` besides)."""
+    """The six rows of Table 4.3: the method (the speed's clamp inline: `_clamp`'s test of a name),
+    the robot's write, the port's write; the first row divides (`_div`, which refuses a zero) and
+    clamps the quotient (`_clamp`) besides. `robot.inputs.set_velocity` calls the robot's method.
+    38 calls either way before (the input's function and `_send_input` besides), one more a row
+    before the clamp was inline."""
     port = ScriptedPort()
     with drivers["create"].connect({"btserial": port}, threads=False) as robot:
         send = robot.set_velocity if way == "robot" else robot.inputs.set_velocity
@@ -46,7 +47,7 @@ def test_set_velocity_is_the_method_the_write_and_the_port(drivers: dict[str, An
             del port.written[:]
             made.append(calls_made(lambda v=linear, w=angular: send(linear=v, angular=w)))
             assert bytes(port.written) == bytes.fromhex(expected)
-    assert made == ([6] + [4] * 5 if way == "robot" else [7] + [5] * 5), made
+    assert made == ([5] + [3] * 5 if way == "robot" else [6] + [4] * 5), made
 
 
 def test_an_interface_of_one_plain_write_is_the_method_the_write_and_the_port(drivers: dict[str, Any]) -> None:

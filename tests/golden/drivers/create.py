@@ -2000,6 +2000,7 @@ class Primitive:
     expect: Callable[[StateValues, Args, Sequence[Any]], object] | None = None  # a condition its decoded reply meets
     lines: Callable[[StateValues, Args], dict[str, Value]] | None = None  # "dtr"/"rts": levels, set before the request
     looks_up: bool = False  # its post-actions look a key up in a table: a miss is a reply it cannot read
+    renews: bool = False  # its post-actions give every state variable in the state's order: the new state, published whole
     floats: tuple[int, ...] = field(init=False)
     ranged: tuple[int, ...] = field(init=False)
     asked: Request | None = field(init=False)  # the request of a plain exchange (`_asked_at_once`), in one step
@@ -2787,10 +2788,23 @@ class Exchange:
 
     # ---- writing requests, reading replies, running post-actions ------------------------------------
 
-    def _write(self, plan: Primitive, request: bytes) -> None:
-        """Under the port's lock write a request that has no reply and sets no modem line (every
-        plain command's path: the port and its lock found once, nothing allocated); then show the
-        callbacks. `_write_lines` is the way of one that sets lines or writes nothing."""
+    # The write of a request that has no reply and sets no modem line (every plain command's path):
+    # `_write_watched`, or on ports no I/O or trace callback watches `_unwatched_write`'s, which
+    # does the same but tell the callbacks. Chosen when the ports open and when a callback comes
+    # (`_choose_write`), not tested at each write.
+    _write: Callable[[Primitive, bytes], None]
+
+    def _choose_write(self) -> None:
+        """Put the write that fits in place: the plain one on open ports no callback watches. Under
+        the callback lock, which a callback's registration holds: the last choice sees the last callback."""
+        with self._callback_lock:
+            self._write = (self._write_watched if self._watched or not self._ports
+                           else _unwatched_write(self, self._ports))
+
+    def _write_watched(self, plan: Primitive, request: bytes) -> None:
+        """Under the port's lock write a request that has no reply and sets no modem line (the
+        port and its lock found once, nothing allocated); then show the callbacks.
+        `_write_lines` is the way of one that sets lines or writes nothing."""
         try:
             port = self._ports[plan.connection]
         except KeyError:
@@ -3498,7 +3512,7 @@ class Exchange:
             if plan.checked:
                 _check_widths(plan, changes)
             self._read_ns = time.time_ns()  # the reply just read: an output's `read_ns`
-            self._state = {**state, **changes}
+            self._state = changes if plan.renews else {**state, **changes}
         finally:
             lock.release()
 
@@ -3516,7 +3530,7 @@ class Exchange:
                 except EVAL_ERRORS as err:
                     raise RdisValueError(f"{plan.name}: {err}") from None
                 _check_widths(plan, changes)
-                state = {**state, **changes}
+                state = changes if plan.renews else {**state, **changes}
             self._read_ns = time.time_ns()  # the reply just read: an output's `read_ns`
             self._state = state
 
@@ -3586,6 +3600,48 @@ class Exchange:
                     callback(error)
                 except Exception:  # noqa: BLE001, S110 - the contract: an error callback's failure is ignored
                     pass
+
+
+def _unwatched_write(robot: Exchange, ports: Mapping[str, _Port]) -> Callable[[Primitive, bytes], None]:
+    """`Exchange._write_watched` on ports no callback watches, as one closure over what it needs
+    (the port's lock and write bound once, the port itself when every connection shares one):
+    the same lock around the write, the same refusal while closing, the same typed errors."""
+    shared = {id(port): port for port in ports.values()}
+    if len(shared) == 1:
+        (port,) = shared.values()
+        acquire, release, write = port.lock.acquire, port.lock.release, port.write
+
+        def write_one(plan: Primitive, request: bytes) -> None:
+            acquire()  # acquire/release rather than `with`: cheaper, and this is every command's path
+            try:
+                if robot._closed:  # under the lock: a write that got it before the terminate hooks comes before them
+                    robot._refuse(plan)
+                write(request)
+            except RdisError:
+                raise
+            except Exception as err:  # whatever the port raises, it failed
+                raise robot._port_error(plan, err) from err
+            finally:
+                release()
+
+        return write_one
+
+    def write_any(plan: Primitive, request: bytes) -> None:
+        port = ports[plan.connection]  # every connection has its port once they are open
+        lock = port.lock
+        lock.acquire()
+        try:
+            if robot._closed:
+                robot._refuse(plan)
+            port.write(request)
+        except RdisError:
+            raise
+        except Exception as err:  # whatever the port raises, it failed
+            raise robot._port_error(plan, err) from err
+        finally:
+            lock.release()
+
+    return write_any
 
 
 def device_error(plan: Primitive, error: ErrorReply, values: tuple[Any, ...]) -> RdisDeviceError:
@@ -3752,12 +3808,16 @@ class Robot(Exchange):
         self._calls = {kind: Calls(self, kind) for kind in ("input", "interface", "primitive")}
         self._running = False
         self._direct = False  # running on ports: a plain write may skip the general way
+        # While `_direct`, the primitives only written, by name, with their one-step requests: what
+        # `call_primitive` looks up first (empty otherwise, so that one look-up decides both).
+        self._written: dict[str, tuple[Primitive, Request]] = {}
         self._closed = False  # closing or closed: writes are refused (`_refuse`) but by the `_closer`
         self._closer: int | None = None
         self._closing = threading.Event()  # set when closing begins: it ends the other threads' delays
         self._sim: Simulator | None = None
         self._clock: Callable[[], float] = time.monotonic  # the schedule's time, and the delays'
         self._sleep: Callable[[float], None] = self._delay
+        self._choose_write()
 
     # ---- callbacks --------------------------------------------------------------------------------
 
@@ -3782,6 +3842,7 @@ class Robot(Exchange):
         with self._callback_lock:
             self._io_callbacks.append(callback)
             self._watched = True
+            self._choose_write()
         return callback
 
     def on_trace(self, callback: TraceCallback) -> TraceCallback:
@@ -3793,6 +3854,7 @@ class Robot(Exchange):
         with self._callback_lock:
             self._trace_callbacks.append(callback)
             self._watched = True
+            self._choose_write()
         return callback
 
     # ---- what the host can see and call -------------------------------------------------------------
@@ -3855,15 +3917,18 @@ class Robot(Exchange):
     def call_primitive(self, name: str, /, *args: Any) -> None:
         """Send one device command (a primitive) with positional arguments, read its reply and
         run its post-actions, on this thread; errors are raised."""
-        plan = self.device.primitives.get(name)
-        if plan is None:
-            raise KeyError(f"{self.name} has no primitive named {name!r}")
-        request = plan.request
-        if request is not None and self._direct:  # `_call_primitive`'s one plain write, inline: every command's path
+        written = self._written.get(name)
+        if written is not None:  # `_call_primitive`'s one plain write, inline: every command's path
+            plan, request = written
             data = request(self._state, args)  # type: ignore[arg-type]  # a request takes any sequence of values
             if data is not None:
                 self._write(plan, data)
                 return
+        else:
+            found = self.device.primitives.get(name)
+            if found is None:
+                raise KeyError(f"{self.name} has no primitive named {name!r}")
+            plan = found
         self._call_primitive(plan, list(args))
 
     def request(self, name: str, /, *args: Any) -> bytes:
@@ -3960,6 +4025,9 @@ class Robot(Exchange):
                 threads = threads and sim.realtime
             self._running = True
             self._direct = sim is None
+            if self._direct:
+                self._written = {name: (plan, plan.request) for name, plan in self.device.primitives.items()
+                                 if plan.request is not None}
             self.startup()
             self._workers = [_Worker(self, c) for c in self.device.connections.values()]
             for worker in self._workers:
@@ -4030,6 +4098,7 @@ class Robot(Exchange):
             self._closed = True
             self._running = False
             self._direct = False
+            self._written = {}
         self._closing.set()
         try:
             for worker in self._workers:
@@ -4092,6 +4161,7 @@ class Robot(Exchange):
                 opened[key] = _Port(io, owned=by_name)
             self._links[name] = _Link(connections[name], opened[key])
             self._ports[name] = opened[key]
+        self._choose_write()
 
     # ---- running the plans --------------------------------------------------------------------------
 
@@ -5022,6 +5092,7 @@ _P_BUMPERS = Primitive(
     Pack("BB"),
     reply=FixedReply(Unpack("B")),
     actions=_p_bumpers_actions,
+    renews=True,
 )
 
 
@@ -5092,7 +5163,7 @@ _I_GET_BUMPERS = Interface(
 def _in_set_velocity(state: StateValues, args: Args) -> Args:
     linear, angular = args
     return [
-        _clamp(linear, -0.5, 0.5),
+        -0.5 if linear < -0.5 else linear if not linear > 0.5 else 0.5,
         (
             0.0 if linear == 0 and angular == 0
             else (-0.001 if angular > 0 else 0.001) if linear == 0
