@@ -720,6 +720,135 @@ def _crc_table(width: int, poly: int, reflected: bool, bits: int) -> tuple[int, 
     return tuple(table)
 
 
+# ---- rdisc engine: matrices (rdisc/engine/matrices.py), small matrices, for filters --------------
+
+
+Matrix = tuple[tuple[float, ...], ...]
+"""A matrix as its rows, each a tuple of floats; a column vector is a matrix of one column."""
+
+
+def as_matrix(rows: Sequence[Sequence[float]]) -> Matrix:
+    """A matrix of the given rows (ValueError if they are not all as long as the first)."""
+    result = tuple(tuple(float(value) for value in row) for row in rows)
+    if result and any(len(row) != len(result[0]) for row in result):
+        raise ValueError("a matrix's rows differ in length")
+    return result
+
+
+def as_column(values: Sequence[float]) -> Matrix:
+    """A column vector of `values`."""
+    return tuple((float(value),) for value in values)
+
+
+def matrix_identity(size: int) -> Matrix:
+    """The identity of `size` rows."""
+    return tuple(tuple(1.0 if row == place else 0.0 for place in range(size)) for row in range(size))
+
+
+def matrix_shape(of: Matrix) -> tuple[int, int]:
+    """Rows and columns."""
+    return len(of), len(of[0]) if of else 0
+
+
+def matrix_transpose(of: Matrix) -> Matrix:
+    """Rows as columns."""
+    return tuple(zip(*of)) if of else ()
+
+
+def matrix_product(left: Matrix, right: Matrix) -> Matrix:
+    """`left` times `right` (ValueError if `left`'s columns are not `right`'s rows)."""
+    if matrix_shape(left)[1] != len(right):
+        raise ValueError(f"cannot multiply {matrix_shape(left)} by {matrix_shape(right)}")
+    columns = matrix_transpose(right)
+    return tuple(tuple(sum(a * b for a, b in zip(row, each)) for each in columns) for row in left)
+
+
+def matrix_sum(left: Matrix, right: Matrix, sign: float = 1.0) -> Matrix:
+    """`left` plus `sign` times `right`, element by element (ValueError if their shapes differ)."""
+    if matrix_shape(left) != matrix_shape(right):
+        raise ValueError(f"cannot add {matrix_shape(left)} and {matrix_shape(right)}")
+    return tuple(tuple(a + sign * b for a, b in zip(one, other)) for one, other in zip(left, right))
+
+
+def matrix_inverse(of: Matrix) -> Matrix:
+    """The inverse of a square matrix (ValueError if it is not square or is singular)."""
+    size, columns = matrix_shape(of)
+    if size != columns:
+        raise ValueError(f"cannot invert {matrix_shape(of)}")
+    work = [list(row) + list(unit) for row, unit in zip(of, matrix_identity(size))]
+    for place in range(size):
+        pivot = max(range(place, size), key=lambda row: abs(work[row][place]))
+        if work[pivot][place] == 0.0:
+            raise ValueError("a singular matrix has no inverse")
+        work[place], work[pivot] = work[pivot], work[place]
+        lead = work[place][place]
+        work[place] = [value / lead for value in work[place]]
+        for row in range(size):
+            if row != place and work[row][place] != 0.0:
+                factor = work[row][place]
+                work[row] = [value - factor * other for value, other in zip(work[row], work[place])]
+    return tuple(tuple(row[size:]) for row in work)
+
+
+# ---- rdisc engine: kalman (rdisc/engine/kalman.py), the Kalman filter ----------------------------
+
+
+class KalmanFilter:
+    """One filter's matrices and its current state (`state`, a column; `covariance`). Shapes are
+    checked once here (ValueError), as the checker checks a description's."""
+
+    __slots__ = ("covariance", "measurement", "noise", "process", "state", "transition")
+
+    def __init__(self, state: Sequence[float], covariance: Sequence[Sequence[float]],
+                 transition: Sequence[Sequence[float]], process: Sequence[Sequence[float]],
+                 measurement: Sequence[Sequence[float]], noise: Sequence[Sequence[float]]) -> None:
+        self.state = as_column(state)
+        self.covariance = as_matrix(covariance)
+        self.transition = as_matrix(transition)
+        self.process = as_matrix(process)
+        self.measurement = as_matrix(measurement)
+        self.noise = as_matrix(noise)
+        states = len(self.state)
+        measured = len(self.measurement)
+        for name, of, expected in (("covariance", self.covariance, (states, states)),
+                                   ("transition", self.transition, (states, states)),
+                                   ("process", self.process, (states, states)),
+                                   ("measurement", self.measurement, (measured, states)),
+                                   ("noise", self.noise, (measured, measured))):
+            if matrix_shape(of) != expected:
+                raise ValueError(f"a Kalman filter's {name} is {matrix_shape(of)}, not {expected}")
+
+    def predict(self) -> None:
+        """x = F x; P = F P F' + Q."""
+        self.state = matrix_product(self.transition, self.state)
+        moved = matrix_product(matrix_product(self.transition, self.covariance), matrix_transpose(self.transition))
+        self.covariance = matrix_sum(moved, self.process)
+
+    def update(self, measured: Sequence[float]) -> None:
+        """Corrects the state by one measurement (as many values as the measurement's rows)."""
+        z = as_column(measured)
+        if len(z) != len(self.measurement):
+            raise ValueError(f"a Kalman filter measures {len(self.measurement)} values, not {len(z)}")
+        h = self.measurement
+        residual = matrix_sum(z, matrix_product(h, self.state), -1.0)
+        spread = matrix_product(self.covariance, matrix_transpose(h))
+        gain = matrix_product(spread, matrix_inverse(matrix_sum(matrix_product(h, spread), self.noise)))
+        self.state = matrix_sum(self.state, matrix_product(gain, residual))
+        kept = matrix_sum(matrix_identity(len(self.state)), matrix_product(gain, h), -1.0)
+        self.covariance = matrix_sum(matrix_product(matrix_product(kept, self.covariance), matrix_transpose(kept)),
+                                matrix_product(matrix_product(gain, self.noise), matrix_transpose(gain)))
+
+    def step(self, measured: Sequence[float]) -> tuple[float, ...]:
+        """Predicts, then updates by `measured`: the estimate of what is measured (H x)."""
+        self.predict()
+        self.update(measured)
+        return self.estimate()
+
+    def estimate(self) -> tuple[float, ...]:
+        """What the measurement would read in the state estimated (H x)."""
+        return tuple(row[0] for row in matrix_product(self.measurement, self.state))
+
+
 # ---- rdisc engine: wire (rdisc/engine/wire.py), a port's input, frames' parts --------------------
 
 
