@@ -42,7 +42,7 @@ if TYPE_CHECKING:  # at run time each name is imported when it is first asked fo
     )
     from rdisc.engine.exchange import Exchange, device_error
     from rdisc.engine.frames import Frame, Wrap
-    from rdisc.engine.kalman import KalmanFilter
+    from rdisc.engine.kalman import FilterPlan, KalmanFilter
     from rdisc.engine.matrices import (
         Matrix,
         as_column,
@@ -206,6 +206,7 @@ __all__ = [
     "EvalError",
     "Exchange",
     "Field",
+    "FilterPlan",
     "FixedReply",
     "Format",
     "Frame",

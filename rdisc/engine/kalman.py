@@ -7,8 +7,10 @@ P = (I - KH) P (I - KH)' + K R K', which stays symmetric for any gain.
 from __future__ import annotations
 
 from collections.abc import Sequence
+from dataclasses import dataclass
 
 from rdisc.engine.matrices import (
+    Matrix,
     as_column,
     as_matrix,
     matrix_identity,
@@ -74,3 +76,20 @@ class KalmanFilter:
     def estimate(self) -> tuple[float, ...]:
         """What the measurement would read in the state estimated (H x)."""
         return tuple(row[0] for row in matrix_product(self.measurement, self.state))
+
+
+@dataclass(frozen=True, slots=True)
+class FilterPlan:
+    """What a description states of a field's Kalman filter (`filter FIELD kalman { ... }`): the
+    field, and the matrices each robot starts its own running filter from."""
+
+    field: str
+    state: tuple[float, ...]
+    covariance: Matrix
+    transition: Matrix
+    process: Matrix
+    measurement: Matrix
+    noise: Matrix
+
+    def start(self) -> KalmanFilter:
+        return KalmanFilter(self.state, self.covariance, self.transition, self.process, self.measurement, self.noise)

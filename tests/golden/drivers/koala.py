@@ -849,6 +849,23 @@ class KalmanFilter:
         return tuple(row[0] for row in matrix_product(self.measurement, self.state))
 
 
+@dataclass(frozen=True, slots=True)
+class FilterPlan:
+    """What a description states of a field's Kalman filter (`filter FIELD kalman { ... }`): the
+    field, and the matrices each robot starts its own running filter from."""
+
+    field: str
+    state: tuple[float, ...]
+    covariance: Matrix
+    transition: Matrix
+    process: Matrix
+    measurement: Matrix
+    noise: Matrix
+
+    def start(self) -> KalmanFilter:
+        return KalmanFilter(self.state, self.covariance, self.transition, self.process, self.measurement, self.noise)
+
+
 # ---- rdisc engine: wire (rdisc/engine/wire.py), a port's input, frames' parts --------------------
 
 
@@ -2231,6 +2248,7 @@ class Output:
     adapter: str = ""
     frame: str = ""  # its stamped messages' frame id and child frame id (`semantics.ros.header_frames`)
     child_frame: str = ""
+    filters: tuple[FilterPlan, ...] = ()  # fields published as a Kalman filter's estimate
 
 
 @dataclass(frozen=True, slots=True)
@@ -2880,6 +2898,7 @@ class Exchange:
     _read_ns: int | None  # when a reply last changed the state (ns since the epoch); None: none has
     _state_lock: threading.Lock
     _callback_lock: threading.RLock
+    _filters: dict[tuple[str, str], KalmanFilter]  # (output, field): its running filter, made when first delivered
     _output_callbacks: list[OutputCallback]
     _error_callbacks: list[ErrorCallback]
     _io_callbacks: list[IoCallback]
@@ -3645,6 +3664,8 @@ class Exchange:
             raise RdisValueError(f"{plan.name}: {err}") from None
         message = OutputMessage(plan.name, contents, time.time_ns() if read_ns is None else read_ns)
         with self._callback_lock:
+            if plan.filters:
+                message = OutputMessage(plan.name, self._filtered(plan, contents), message.read_ns)
             for callback in list(self._output_callbacks):
                 try:
                     callback(message)
@@ -3652,6 +3673,20 @@ class Exchange:
                     error = RdisCallbackError(f"{plan.name}: output callback raised {type(err).__name__}: {err}")
                     error.__cause__ = err
                     self._report(error)
+
+    def _filtered(self, plan: Output, contents: dict[str, Value]) -> dict[str, Value]:
+        """The fields a Kalman filter estimates, each filter stepped once by the value delivered
+        (a number, or an array's values); under the callback lock, so deliveries step in turn."""
+        for given in plan.filters:
+            running = self._filters.get((plan.name, given.field))
+            if running is None:
+                running = self._filters[(plan.name, given.field)] = given.start()
+            value = contents[given.field]
+            if isinstance(value, (tuple, list)):
+                contents = {**contents, given.field: type(value)(running.step(value))}
+            else:
+                contents = {**contents, given.field: running.step((float(value),))[0]}
+        return contents
 
     def _happened(self, kind: str, connection: str, data: bytes) -> None:
         """An event as it happens, under the port's lock: stamped by the robot's clock and queued
@@ -3851,6 +3886,7 @@ class Robot(Exchange):
         self._state_lock = threading.Lock()
         self._callback_lock = threading.RLock()  # callbacks run one at a time
         self._output_callbacks: list[OutputCallback] = []
+        self._filters = {}
         self._read_ns: int | None = None  # when a reply last changed the state
         self._error_callbacks: list[ErrorCallback] = []
         self._io_callbacks: list[IoCallback] = []
