@@ -301,6 +301,7 @@ class Output:
     adapter: str = ""
     frame: str = ""
     child_frame: str = ""
+    filters: tuple[Construct[engine.FilterPlan], ...] = ()
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -529,7 +530,10 @@ class _Lowering:
     def output(self, o: m.DomainOutput) -> Output:
         adapter = self.model.adapters[o.adapter]
         fields = tuple((name, e, _field_type(adapter, name, e)) for name, e in o.fields)
-        return Output(o.name, Code(("state",), Gives.DICT, (), fields), o.adapter, *header_frames(self.model, o))
+        filters = tuple(Construct(engine.FilterPlan, (k.field, k.state, k.covariance, k.transition, k.process,
+                                                       k.measurement, k.noise)) for k in o.filters)
+        return Output(o.name, Code(("state",), Gives.DICT, (), fields), o.adapter, *header_frames(self.model, o),
+                      filters)
 
     def interface(self, iface: m.Interface, primitives: Mapping[str, Primitive], outputs: Mapping[str, Output],
                   callees: Mapping[str, Interface]) -> Interface:

@@ -600,6 +600,24 @@ joint and back is itself, to one step of an int. Both are checked at 33 points o
 the joint's range with the interpreter the runtime uses. Wrong: a servo's `goal:
 int in 0..1023` with `limit -3.2..3.2` through `raw = round(position * 195.3) +
 512`. Right: `limit -2.6..2.6`."""),
+    ("E731", "noise", """
+An output's `noise FIELD ...` states a field's error model (thesis section 7.2.3):
+a standard deviation and its unit (`noise distance 0.01 "m"`, the variance its
+square), or a covariance over an array's values (`noise position [0.0001, 0; 0,
+0.0001]`, rows apart by `;`). The field is one of the adapter's number fields,
+given noise once; a deviation is not negative and its unit is the field's; a
+covariance is square, as large as the field's values, symmetric, and no variance
+on its diagonal is negative. Wrong: `noise distance 0.01 "mm"` for a field in
+"m". Right: `noise distance 0.00001 "m"`."""),
+    ("E732", "kalman-filter", """
+`filter FIELD kalman { ... }` publishes a field as a linear Kalman filter's
+estimate: each delivery predicts (x = F x, P = F P F' + Q) and updates with the
+field's value. With n states (`state`, one row of n numbers) and k values measured
+(the field's: one for a number), `transition` (F) and `process` (Q) are n by n,
+`covariance` (P, the identity when not given) n by n, `measurement` (H) k by n and
+`noise` (R) k by k; covariances (P, Q, R) are symmetric and not negative on their
+diagonals. Each word is given once. Wrong: `measurement [1, 0; 0, 1]` for a
+number field. Right: `measurement [1, 0]`."""),
     # -- warnings --------------------------------------------------------------
     ("W102", "untriggered-output", """
 No interface triggers this output, so it is never delivered. An interface

@@ -367,8 +367,27 @@ def _output(o: m.DomainOutput) -> JsonObject:
         ("adapter", o.adapter),
         ("frame", o.frame),
         ("returns", {name: _embedded(value) for name, value in o.fields}),
+        ("noise", [_noise(n) for n in o.noise] or None),
+        ("filters", [_kalman(k) for k in o.filters] or None),
         ("doc", o.doc),
     )
+
+
+def _rows(rows: m.Rows) -> list[list[float | int]]:
+    return [[_number(x) for x in row] for row in rows]
+
+
+def _noise(n: m.Noise) -> JsonObject:
+    if n.deviation is not None:
+        return _object(("field", n.field), ("deviation", _number(n.deviation)), ("unit", n.unit))
+    return _object(("field", n.field), ("covariance", _rows(n.covariance)), ("unit", n.unit))
+
+
+def _kalman(k: m.Kalman) -> JsonObject:
+    matrices = (("covariance", k.covariance), ("transition", k.transition), ("process", k.process),
+                ("measurement", k.measurement), ("noise", k.noise))
+    return {"field": k.field, "kalman": {"state": [_number(x) for x in k.state],
+                                         **{word: _rows(rows) for word, rows in matrices}}}
 
 
 # ---- the body --------------------------------------------------------------------------

@@ -42,6 +42,18 @@ if TYPE_CHECKING:  # at run time each name is imported when it is first asked fo
     )
     from rdisc.engine.exchange import Exchange, device_error
     from rdisc.engine.frames import Frame, Wrap
+    from rdisc.engine.kalman import FilterPlan, KalmanFilter
+    from rdisc.engine.matrices import (
+        Matrix,
+        as_column,
+        as_matrix,
+        matrix_identity,
+        matrix_inverse,
+        matrix_product,
+        matrix_shape,
+        matrix_sum,
+        matrix_transpose,
+    )
     from rdisc.engine.operations import (
         BINARY,
         EVAL_ERRORS,
@@ -194,6 +206,7 @@ __all__ = [
     "EvalError",
     "Exchange",
     "Field",
+    "FilterPlan",
     "FixedReply",
     "Format",
     "Frame",
@@ -206,12 +219,14 @@ __all__ = [
     "Input",
     "Interface",
     "IoCallback",
+    "KalmanFilter",
     "KeyedReply",
     "Length",
     "LineReply",
     "ListedReplies",
     "LookupMiss",
     "Match",
+    "Matrix",
     "Message",
     "MissingSeed",
     "NoReply",
@@ -259,6 +274,8 @@ __all__ = [
     "Varying",
     "Wrap",
     "add_arguments",
+    "as_column",
+    "as_matrix",
     "asked_at_once",
     "bind_named",
     "bind_settings",
@@ -271,6 +288,12 @@ __all__ = [
     "lookup_or",
     "made_from",
     "make_call",
+    "matrix_identity",
+    "matrix_inverse",
+    "matrix_product",
+    "matrix_shape",
+    "matrix_sum",
+    "matrix_transpose",
     "named_pairs",
     "parse_call",
     "parse_ports",

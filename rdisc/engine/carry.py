@@ -21,6 +21,8 @@ MODULES = (
     ("operations", "values' operations, limits"),
     ("values", "types of values, callbacks"),
     ("checksums", "sums, XORs and CRCs"),
+    ("matrices", "small matrices, for filters"),
+    ("kalman", "the Kalman filter"),
     ("wire", "a port's input, frames' parts"),
     ("codec", "encoding and decoding"),
     ("frames", "frames written and read"),

@@ -23,6 +23,7 @@ from rdisc.engine.errors import (
     RdisTimeout,
     RdisValueError,
 )
+from rdisc.engine.kalman import KalmanFilter
 from rdisc.engine.operations import EVAL_ERRORS, MAX_ARRAY, MAX_INT, MAX_LINE, LookupMiss
 from rdisc.engine.plans import (
     ErrorReply,
@@ -72,6 +73,7 @@ class Exchange:
     _read_ns: int | None  # when a reply last changed the state (ns since the epoch); None: none has
     _state_lock: threading.Lock
     _callback_lock: threading.RLock
+    _filters: dict[tuple[str, str], KalmanFilter]  # (output, field): its running filter, made when first delivered
     _output_callbacks: list[OutputCallback]
     _error_callbacks: list[ErrorCallback]
     _io_callbacks: list[IoCallback]
@@ -850,6 +852,8 @@ class Exchange:
             raise RdisValueError(f"{plan.name}: {err}") from None
         message = OutputMessage(plan.name, contents, time.time_ns() if read_ns is None else read_ns)
         with self._callback_lock:
+            if plan.filters:
+                message = OutputMessage(plan.name, self._filtered(plan, contents), message.read_ns)
             for callback in list(self._output_callbacks):
                 try:
                     callback(message)
@@ -857,6 +861,20 @@ class Exchange:
                     error = RdisCallbackError(f"{plan.name}: output callback raised {type(err).__name__}: {err}")
                     error.__cause__ = err
                     self._report(error)
+
+    def _filtered(self, plan: Output, contents: dict[str, Value]) -> dict[str, Value]:
+        """The fields a Kalman filter estimates, each filter stepped once by the value delivered
+        (a number, or an array's values); under the callback lock, so deliveries step in turn."""
+        for given in plan.filters:
+            running = self._filters.get((plan.name, given.field))
+            if running is None:
+                running = self._filters[(plan.name, given.field)] = given.start()
+            value = contents[given.field]
+            if isinstance(value, (tuple, list)):
+                contents = {**contents, given.field: type(value)(running.step(value))}
+            else:
+                contents = {**contents, given.field: running.step((float(value),))[0]}
+        return contents
 
     def _happened(self, kind: str, connection: str, data: bytes) -> None:
         """An event as it happens, under the port's lock: stamped by the robot's clock and queued

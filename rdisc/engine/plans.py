@@ -12,6 +12,7 @@ from typing import Any
 
 from rdisc.engine.codec import Format, Match, Pack, Unpack
 from rdisc.engine.frames import Frame
+from rdisc.engine.kalman import FilterPlan
 from rdisc.engine.values import Args, Param, StateValues, Value, _ranged
 
 
@@ -328,6 +329,7 @@ class Output:
     adapter: str = ""
     frame: str = ""  # its stamped messages' frame id and child frame id (`semantics.ros.header_frames`)
     child_frame: str = ""
+    filters: tuple[FilterPlan, ...] = ()  # fields published as a Kalman filter's estimate
 
 
 @dataclass(frozen=True, slots=True)

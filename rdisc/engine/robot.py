@@ -136,6 +136,7 @@ class Robot(Exchange):
         self._state_lock = threading.Lock()
         self._callback_lock = threading.RLock()  # callbacks run one at a time
         self._output_callbacks: list[OutputCallback] = []
+        self._filters = {}
         self._read_ns: int | None = None  # when a reply last changed the state
         self._error_callbacks: list[ErrorCallback] = []
         self._io_callbacks: list[IoCallback] = []

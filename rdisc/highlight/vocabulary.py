@@ -13,7 +13,7 @@ WORDS: dict[str, tuple[str, ...]] = {
     'operator': ('or', 'and', 'in', 'not'),
     'control': ('for', 'if', 'else'),
     'unit': ('ms', 's', 'Hz'),
-    'keyword': ('address', 'adhoc', 'after', 'at', 'author', 'axis', 'baud', 'bits', 'break', 'centre', 'checksum', 'code', 'collision', 'command', 'damping', 'databits', 'delay', 'description', 'each', 'effort', 'either', 'error', 'escape', 'every', 'expect', 'field', 'format', 'friction', 'from', 'header', 'hex', 'inertia', 'init', 'inverted', 'keepalive', 'length', 'limit', 'lines', 'literal', 'mask', 'mass', 'measure', 'on', 'optional', 'out', 'over', 'pack', 'parity', 'payload', 'periodic', 'poly', 'priority', 'reflect', 'regex', 'replies', 'reply', 'request', 'retry', 'ros', 'rpy', 'seed', 'skip', 'startup', 'stopbits', 'stuff', 'tag', 'terminate', 'terminator', 'threading', 'timeout', 'to', 'triggers', 'trimmed', 'unit', 'unmatched', 'unpack', 'until', 'velocity', 'version', 'visual', 'when', 'width', 'within', 'xor', 'xorout'),
+    'keyword': ('address', 'adhoc', 'after', 'at', 'author', 'axis', 'baud', 'bits', 'break', 'centre', 'checksum', 'code', 'collision', 'command', 'covariance', 'damping', 'databits', 'delay', 'description', 'each', 'effort', 'either', 'error', 'escape', 'every', 'expect', 'field', 'filter', 'format', 'friction', 'from', 'header', 'hex', 'inertia', 'init', 'inverted', 'kalman', 'keepalive', 'length', 'limit', 'lines', 'literal', 'mask', 'mass', 'measure', 'measurement', 'noise', 'on', 'optional', 'out', 'over', 'pack', 'parity', 'payload', 'periodic', 'poly', 'priority', 'process', 'reflect', 'regex', 'replies', 'reply', 'request', 'retry', 'ros', 'rpy', 'seed', 'skip', 'startup', 'stopbits', 'stuff', 'tag', 'terminate', 'terminator', 'threading', 'timeout', 'to', 'transition', 'triggers', 'trimmed', 'unit', 'unmatched', 'unpack', 'until', 'velocity', 'version', 'visual', 'when', 'width', 'within', 'xor', 'xorout'),
     'type': ('int', 'float', 'bool', 'string', 'bytes'),
     'function': ('abs', 'ascii', 'atan2', 'bitset', 'bool', 'byte', 'clamp', 'cos', 'encode', 'f32be', 'f32le', 'f64be', 'f64le', 'float', 'from_f32be', 'from_f32le', 'from_f64be', 'from_f64le', 'from_nibbles', 'hex', 'hypot', 'int', 'int_be', 'int_le', 'len', 'max', 'min', 'nibbles', 'pack7', 'round', 'sin', 'sqrt', 'str', 'unhex', 'unpack7', 'upper'),
     'struct_code': ('b', 'c', 'd', 'e', 'f', 'h', 'i', 'l', 'n', 'p', 'q', 's', 'x', 'B', 'H', 'I', 'L', 'N', 'Q', 'Z', '?'),
@@ -33,4 +33,4 @@ PATTERNS: dict[str, str] = {
 }
 
 # The grammar's punctuation, longest first.
-PUNCTUATION: tuple[str, ...] = ('->', '..', '(', ')', ',', '.', ':', '=', '[', ']', '{', '}')
+PUNCTUATION: tuple[str, ...] = ('->', '..', '(', ')', ',', '.', ':', ';', '=', '[', ']', '{', '}')

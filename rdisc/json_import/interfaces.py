@@ -7,6 +7,7 @@ from __future__ import annotations
 import dataclasses
 
 from rdisc.json_import.expressions import Expressions
+from rdisc.json_import.noise import ErrorModels
 from rdisc.json_import.reader import Members, present, str_lit, type_text
 from rdisc.json_import.values import JArray, JNumber, JObject, JString, JValue
 from rdisc.semantics.operators import FLOAT_FUNCTIONS
@@ -21,10 +22,10 @@ _CALL = ("name", "arguments", "delay", "priority", "when", "until", "every", "wi
 _ADAPTER = ("name", "ros", "fields", "doc")
 _FIELD = ("name", "type", "unit", "ros", "doc")
 _INPUT = ("name", "adapter", "parameters", "calls", "doc")
-_OUTPUT = ("name", "adapter", "frame", "returns", "doc")
+_OUTPUT = ("name", "adapter", "frame", "returns", "noise", "filters", "doc")
 
 
-class Interfaces(Expressions):
+class Interfaces(Expressions, ErrorModels):
     """The reading of interfaces, adapters, inputs and outputs."""
 
     def interface(self, obj: JObject) -> ast.InterfaceDecl | None:
@@ -164,7 +165,8 @@ class Interfaces(Expressions):
             expr = self.expr(value, types.get(field_.text))
             assigns.append(None if expr is None else ast.Assign(field_, expr, value.span))
         frame = None if "frame" not in m else self.ident(m["frame"], "`frame`")
-        return ast.OutputDecl(name, adapter, present(assigns), obj.span, self.doc(m), frame)
+        return ast.OutputDecl(name, adapter, present(assigns), obj.span, self.doc(m), frame, self.noises(m),
+                              self.filters(m))
 
     def adapter_of(self, obj: JObject, m: Members, element: ast.Ident, names: list[ast.Ident],
                    ordered: bool = False) -> ast.Ident:

@@ -188,7 +188,7 @@ class _Engine:
 
     def output(self, o: plans.Output) -> engine.Output:
         return self.once(o, lambda: engine.Output(o.name, self.closure(o.fields), o.adapter, o.frame,
-                                                               o.child_frame))
+                                                               o.child_frame, built(o.filters)))
 
     def interface(self, i: plans.Interface) -> engine.Interface:
         return self.once(i, lambda: engine.Interface(i.name, built(i.params), tuple(self.call(c) for c in i.calls),

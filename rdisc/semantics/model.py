@@ -953,6 +953,37 @@ class DomainInput:
     span: Span | None = _span
 
 
+Rows = tuple[tuple[float, ...], ...]
+"""A matrix as its rows."""
+
+
+@dataclass(frozen=True, slots=True)
+class Noise:
+    """A field's error model (thesis §7.2.3): its covariance, a deviation's square when it was
+    written as one (`deviation`, in `unit`)."""
+
+    field: str
+    covariance: Rows
+    deviation: float | None = None
+    unit: str | None = None
+    span: Span | None = _span
+
+
+@dataclass(frozen=True, slots=True)
+class Kalman:
+    """A field published as a linear Kalman filter's estimate (H x): the filter's start state and
+    covariance, its transition and process noise, its measurement and measurement noise."""
+
+    field: str
+    state: tuple[float, ...]
+    covariance: Rows
+    transition: Rows
+    process: Rows
+    measurement: Rows
+    noise: Rows
+    span: Span | None = _span
+
+
 @dataclass(frozen=True, slots=True)
 class DomainOutput:
     name: str
@@ -961,6 +992,8 @@ class DomainOutput:
     doc: str | None = None
     span: Span | None = _span
     frame: str | None = None  # the link its data belongs to, as written (`Model.frame_id` when not)
+    noise: tuple[Noise, ...] = ()  # its fields' error models, as written
+    filters: tuple[Kalman, ...] = ()
 
 
 # ---- the body (thesis ch. 6) -------------------------------------------------------

@@ -1981,6 +1981,104 @@ def _hash_DomainInput(self: Any) -> int:
     return hash((self.name, self.adapter, self.interface, self.args, self.doc))
 
 
+def _init_Noise(
+    self: Any,
+    field: Any,
+    covariance: Any,
+    deviation: Any = DEFAULT,
+    unit: Any = DEFAULT,
+    span: Any = DEFAULT,
+) -> None:
+    _set(self, "field", field)
+    _set(self, "covariance", covariance)
+    _set(self, "deviation", deviation)
+    _set(self, "unit", unit)
+    _set(self, "span", span)
+
+
+def _repr_Noise(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(field={self.field!r}, covariance={self.covariance!r}, deviation={self.deviation!r}, unit={self.unit!r})"
+
+
+def _eq_Noise(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.field,
+            self.covariance,
+            self.deviation,
+            self.unit,
+        ) == (
+            other.field,
+            other.covariance,
+            other.deviation,
+            other.unit,
+        )
+    return NotImplemented
+
+
+def _hash_Noise(self: Any) -> int:
+    return hash((self.field, self.covariance, self.deviation, self.unit))
+
+
+def _init_Kalman(
+    self: Any,
+    field: Any,
+    state: Any,
+    covariance: Any,
+    transition: Any,
+    process: Any,
+    measurement: Any,
+    noise: Any,
+    span: Any = DEFAULT,
+) -> None:
+    _set(self, "field", field)
+    _set(self, "state", state)
+    _set(self, "covariance", covariance)
+    _set(self, "transition", transition)
+    _set(self, "process", process)
+    _set(self, "measurement", measurement)
+    _set(self, "noise", noise)
+    _set(self, "span", span)
+
+
+def _repr_Kalman(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(field={self.field!r}, state={self.state!r}, covariance={self.covariance!r}, transition={self.transition!r}, process={self.process!r}, measurement={self.measurement!r}, noise={self.noise!r})"
+
+
+def _eq_Kalman(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.field,
+            self.state,
+            self.covariance,
+            self.transition,
+            self.process,
+            self.measurement,
+            self.noise,
+        ) == (
+            other.field,
+            other.state,
+            other.covariance,
+            other.transition,
+            other.process,
+            other.measurement,
+            other.noise,
+        )
+    return NotImplemented
+
+
+def _hash_Kalman(self: Any) -> int:
+    return hash((
+        self.field,
+        self.state,
+        self.covariance,
+        self.transition,
+        self.process,
+        self.measurement,
+        self.noise,
+    ))
+
+
 def _init_DomainOutput(
     self: Any,
     name: Any,
@@ -1989,6 +2087,8 @@ def _init_DomainOutput(
     doc: Any = DEFAULT,
     span: Any = DEFAULT,
     frame: Any = DEFAULT,
+    noise: Any = DEFAULT,
+    filters: Any = DEFAULT,
 ) -> None:
     _set(self, "name", name)
     _set(self, "adapter", adapter)
@@ -1996,10 +2096,12 @@ def _init_DomainOutput(
     _set(self, "doc", doc)
     _set(self, "span", span)
     _set(self, "frame", frame)
+    _set(self, "noise", noise)
+    _set(self, "filters", filters)
 
 
 def _repr_DomainOutput(self: Any) -> str:
-    return f"{self.__class__.__qualname__}(name={self.name!r}, adapter={self.adapter!r}, fields={self.fields!r}, doc={self.doc!r}, frame={self.frame!r})"
+    return f"{self.__class__.__qualname__}(name={self.name!r}, adapter={self.adapter!r}, fields={self.fields!r}, doc={self.doc!r}, frame={self.frame!r}, noise={self.noise!r}, filters={self.filters!r})"
 
 
 def _eq_DomainOutput(self: Any, other: Any) -> Any:
@@ -2010,18 +2112,22 @@ def _eq_DomainOutput(self: Any, other: Any) -> Any:
             self.fields,
             self.doc,
             self.frame,
+            self.noise,
+            self.filters,
         ) == (
             other.name,
             other.adapter,
             other.fields,
             other.doc,
             other.frame,
+            other.noise,
+            other.filters,
         )
     return NotImplemented
 
 
 def _hash_DomainOutput(self: Any) -> int:
-    return hash((self.name, self.adapter, self.fields, self.doc, self.frame))
+    return hash((self.name, self.adapter, self.fields, self.doc, self.frame, self.noise, self.filters))
 
 
 def _init_Pose(self: Any, xyz: Any = DEFAULT, rpy: Any = DEFAULT) -> None:
@@ -3124,6 +3230,29 @@ WRITTEN: dict[str, Written] = {
             "__hash__": _hash_DomainInput,
         },
     ),
+    "Noise": Written(
+        (
+            ("field", MISSING),
+            ("covariance", MISSING),
+            ("deviation", DEFAULT),
+            ("unit", DEFAULT),
+            ("span", FieldSpec(None, MISSING, False, False)),
+        ),
+        {"__init__": _init_Noise, "__repr__": _repr_Noise, "__eq__": _eq_Noise, "__hash__": _hash_Noise},
+    ),
+    "Kalman": Written(
+        (
+            ("field", MISSING),
+            ("state", MISSING),
+            ("covariance", MISSING),
+            ("transition", MISSING),
+            ("process", MISSING),
+            ("measurement", MISSING),
+            ("noise", MISSING),
+            ("span", FieldSpec(None, MISSING, False, False)),
+        ),
+        {"__init__": _init_Kalman, "__repr__": _repr_Kalman, "__eq__": _eq_Kalman, "__hash__": _hash_Kalman},
+    ),
     "DomainOutput": Written(
         (
             ("name", MISSING),
@@ -3132,6 +3261,8 @@ WRITTEN: dict[str, Written] = {
             ("doc", DEFAULT),
             ("span", FieldSpec(None, MISSING, False, False)),
             ("frame", DEFAULT),
+            ("noise", DEFAULT),
+            ("filters", DEFAULT),
         ),
         {
             "__init__": _init_DomainOutput,

@@ -608,8 +608,37 @@ class InputDecl:
 
 
 @dataclass(frozen=True, slots=True)
+class NumberRows:
+    """`[1, 0; 0, 1]`: constant numbers in rows apart by `;` (a vector is one row)."""
+
+    rows: tuple[tuple[float, ...], ...]
+    span: Span = _span
+
+
+@dataclass(frozen=True, slots=True)
+class FieldNoise:
+    """`noise FIELD 0.01 "m"`: a field's standard deviation in a unit, or `noise FIELD [a, b; c, d]`,
+    its covariance (error models, thesis §7.2.3)."""
+
+    field: Ident
+    value: float | NumberRows
+    unit: StrLit | None
+    span: Span = _span
+
+
+@dataclass(frozen=True, slots=True)
+class FieldFilter:
+    """`filter FIELD kalman { state [..] transition [..] ... }`: the field published as a Kalman
+    filter's estimate, each matrix under its word."""
+
+    field: Ident
+    items: tuple[tuple[Ident, float | NumberRows], ...]
+    span: Span = _span
+
+
+@dataclass(frozen=True, slots=True)
 class OutputDecl:
-    """`output NAME: ADAPTER [frame LINK] { field = expr ... }`."""
+    """`output NAME: ADAPTER [frame LINK] { field = expr ... noise ... filter ... }`."""
 
     name: Ident
     adapter: Ident
@@ -617,6 +646,8 @@ class OutputDecl:
     span: Span = _span
     doc: str | None = None
     frame: Ident | None = None  # the body's link its data belongs to (its base when not given)
+    noises: tuple[FieldNoise, ...] = ()  # its fields' error models
+    filters: tuple[FieldFilter, ...] = ()  # fields published as a Kalman filter's estimate
 
 
 @dataclass(frozen=True, slots=True)

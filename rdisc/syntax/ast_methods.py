@@ -1575,6 +1575,66 @@ def _hash_InputDecl(self: Any) -> int:
     return hash((self.name, self.adapter, self.call, self.doc))
 
 
+def _init_NumberRows(self: Any, rows: Any, span: Any = DEFAULT) -> None:
+    _set(self, "rows", rows)
+    _set(self, "span", span)
+
+
+def _repr_NumberRows(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(rows={self.rows!r})"
+
+
+def _eq_NumberRows(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.rows,) == (other.rows,)
+    return NotImplemented
+
+
+def _hash_NumberRows(self: Any) -> int:
+    return hash((self.rows,))
+
+
+def _init_FieldNoise(self: Any, field: Any, value: Any, unit: Any, span: Any = DEFAULT) -> None:
+    _set(self, "field", field)
+    _set(self, "value", value)
+    _set(self, "unit", unit)
+    _set(self, "span", span)
+
+
+def _repr_FieldNoise(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(field={self.field!r}, value={self.value!r}, unit={self.unit!r})"
+
+
+def _eq_FieldNoise(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.field, self.value, self.unit) == (other.field, other.value, other.unit)
+    return NotImplemented
+
+
+def _hash_FieldNoise(self: Any) -> int:
+    return hash((self.field, self.value, self.unit))
+
+
+def _init_FieldFilter(self: Any, field: Any, items: Any, span: Any = DEFAULT) -> None:
+    _set(self, "field", field)
+    _set(self, "items", items)
+    _set(self, "span", span)
+
+
+def _repr_FieldFilter(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(field={self.field!r}, items={self.items!r})"
+
+
+def _eq_FieldFilter(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.field, self.items) == (other.field, other.items)
+    return NotImplemented
+
+
+def _hash_FieldFilter(self: Any) -> int:
+    return hash((self.field, self.items))
+
+
 def _init_OutputDecl(
     self: Any,
     name: Any,
@@ -1583,6 +1643,8 @@ def _init_OutputDecl(
     span: Any = DEFAULT,
     doc: Any = DEFAULT,
     frame: Any = DEFAULT,
+    noises: Any = DEFAULT,
+    filters: Any = DEFAULT,
 ) -> None:
     _set(self, "name", name)
     _set(self, "adapter", adapter)
@@ -1590,10 +1652,12 @@ def _init_OutputDecl(
     _set(self, "span", span)
     _set(self, "doc", doc)
     _set(self, "frame", frame)
+    _set(self, "noises", noises)
+    _set(self, "filters", filters)
 
 
 def _repr_OutputDecl(self: Any) -> str:
-    return f"{self.__class__.__qualname__}(name={self.name!r}, adapter={self.adapter!r}, fields={self.fields!r}, doc={self.doc!r}, frame={self.frame!r})"
+    return f"{self.__class__.__qualname__}(name={self.name!r}, adapter={self.adapter!r}, fields={self.fields!r}, doc={self.doc!r}, frame={self.frame!r}, noises={self.noises!r}, filters={self.filters!r})"
 
 
 def _eq_OutputDecl(self: Any, other: Any) -> Any:
@@ -1604,18 +1668,22 @@ def _eq_OutputDecl(self: Any, other: Any) -> Any:
             self.fields,
             self.doc,
             self.frame,
+            self.noises,
+            self.filters,
         ) == (
             other.name,
             other.adapter,
             other.fields,
             other.doc,
             other.frame,
+            other.noises,
+            other.filters,
         )
     return NotImplemented
 
 
 def _hash_OutputDecl(self: Any) -> int:
-    return hash((self.name, self.adapter, self.fields, self.doc, self.frame))
+    return hash((self.name, self.adapter, self.fields, self.doc, self.frame, self.noises, self.filters))
 
 
 def _init_TableLit(self: Any, entries: Any, span: Any = DEFAULT) -> None:
@@ -2931,6 +2999,38 @@ WRITTEN: dict[str, Written] = {
             "__hash__": _hash_InputDecl,
         },
     ),
+    "NumberRows": Written(
+        (("rows", MISSING), ("span", FieldSpec(None, MISSING, False, False))),
+        {
+            "__init__": _init_NumberRows,
+            "__repr__": _repr_NumberRows,
+            "__eq__": _eq_NumberRows,
+            "__hash__": _hash_NumberRows,
+        },
+    ),
+    "FieldNoise": Written(
+        (
+            ("field", MISSING),
+            ("value", MISSING),
+            ("unit", MISSING),
+            ("span", FieldSpec(None, MISSING, False, False)),
+        ),
+        {
+            "__init__": _init_FieldNoise,
+            "__repr__": _repr_FieldNoise,
+            "__eq__": _eq_FieldNoise,
+            "__hash__": _hash_FieldNoise,
+        },
+    ),
+    "FieldFilter": Written(
+        (("field", MISSING), ("items", MISSING), ("span", FieldSpec(None, MISSING, False, False))),
+        {
+            "__init__": _init_FieldFilter,
+            "__repr__": _repr_FieldFilter,
+            "__eq__": _eq_FieldFilter,
+            "__hash__": _hash_FieldFilter,
+        },
+    ),
     "OutputDecl": Written(
         (
             ("name", MISSING),
@@ -2939,6 +3039,8 @@ WRITTEN: dict[str, Written] = {
             ("span", FieldSpec(None, MISSING, False, False)),
             ("doc", DEFAULT),
             ("frame", DEFAULT),
+            ("noises", DEFAULT),
+            ("filters", DEFAULT),
         ),
         {
             "__init__": _init_OutputDecl,

@@ -669,9 +669,36 @@ class Rules:
 
     def output_decl(self, meta: Meta, c: list[Any]) -> ast.OutputDecl:
         frame = None if c[2] is None else self.b.ident(c[2])
+        items = c[3:]
         return ast.OutputDecl(
-            self.b.ident(c[0]), self.b.ident(c[1]), tuple(c[3:]), self.b.span(meta), self.b.doc(meta), frame
+            self.b.ident(c[0]), self.b.ident(c[1]), tuple(i for i in items if isinstance(i, ast.Assign)),
+            self.b.span(meta), self.b.doc(meta), frame, tuple(i for i in items if isinstance(i, ast.FieldNoise)),
+            tuple(i for i in items if isinstance(i, ast.FieldFilter)),
         )
+
+    def field_noise(self, meta: Meta, c: list[Any]) -> ast.FieldNoise:
+        unit = None if c[2] is None else self.b.string(c[2])
+        return ast.FieldNoise(self.b.ident(c[0]), c[1], unit, self.b.span(meta))
+
+    def field_filter(self, meta: Meta, c: list[Any]) -> ast.FieldFilter:
+        return ast.FieldFilter(self.b.ident(c[0]), tuple(c[1:]), self.b.span(meta))
+
+    def kalman_item(self, meta: Meta, c: list[Any]) -> tuple[ast.Ident, float | ast.NumberRows]:
+        return c[0], c[1]
+
+    def kalman_word(self, meta: Meta, c: list[Any]) -> ast.Ident:
+        return self.b.ident(c[0])
+
+    def number_rows(self, meta: Meta, c: list[Any]) -> ast.NumberRows:
+        return ast.NumberRows(tuple(c), self.b.span(meta))
+
+    def number_row(self, meta: Meta, c: list[Any]) -> tuple[float, ...]:
+        return tuple(c)
+
+    def number(self, meta: Meta, c: list[Any]) -> float:
+        value = float(str(c[1]).replace("_", "")) if str(c[1])[:2].lower() not in ("0x", "0b", "0o") else float(
+            int(str(c[1]).replace("_", ""), 0))
+        return -value if c[0] is not None and str(c[0]) == "-" else value
 
     def params(self, meta: Meta, c: list[ast.Param | None]) -> tuple[ast.Param, ...]:
         return tuple(x for x in c if x is not None)

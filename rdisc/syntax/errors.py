@@ -39,6 +39,10 @@ _OPERATORS = {"POW", "SHIFT_OP", "COMP_OP", "MUL_OP", "ADD_OP", "BAR", "CARET", 
 _EXPRESSION_START = {"INT", "FLOAT", "STRING", "RAW_STRING", "BYTES_STRING", "TRUE", "FALSE", "NOT",
                      "UNARY_OP"}
 
+# An output's optional `noise` and `filter` clauses: where a field's name or the closing `}` may
+# come, they are left unnamed (the message says what an output's body needs, not all it may hold).
+_OPTIONAL_CLAUSES = {"NOISE", "FILTER"}
+
 
 def _phrase(terminal: str) -> str | None:
     if terminal in _WORDS:
@@ -54,6 +58,8 @@ def expected_words(expected: set[str]) -> str:
     """'a name, `,` or a closing `)`' for a set of terminal names."""
     phrases: list[str] = []
     names = set(expected)
+    if {"NAME", "RBRACE"} <= names:
+        names -= _OPTIONAL_CLAUSES
     if "NAME" in names and names & _EXPRESSION_START:
         phrases.append("an expression")
         names -= _EXPRESSION_START | {"NAME", "LPAR", "LSQB", "ADD_OP"}  # `[`: an array

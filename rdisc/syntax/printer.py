@@ -97,9 +97,10 @@ def _code(d: ast.Decl) -> list[str]:
             return _block(head, [line for f in fields for line in _doc(f.doc) + [print_field(f)]])
         case ast.InputDecl(name, adapter, call):
             return _call_lines(f"input {name.text}: {adapter.text} -> ", call, "", 0)
-        case ast.OutputDecl(name, adapter, fields, frame=frame):
+        case ast.OutputDecl(name, adapter, fields, frame=frame, noises=noises, filters=filters):
             at = "" if frame is None else f" frame {frame.text}"
-            return _block(f"output {name.text}: {adapter.text}{at}", [_assign(a) for a in fields])
+            return _block(f"output {name.text}: {adapter.text}{at}", [_assign(a) for a in fields]
+                          + [_noise(n) for n in noises] + [line for f in filters for line in _filter(f)])
         case ast.ConstDecl(name, value):
             if isinstance(value, ast.TableLit):
                 return _block(f"const {name.text} =", [f"{print_expr(k)}: {print_expr(v)}," for k, v in value.entries])
@@ -210,6 +211,22 @@ def _doc(doc: str | None) -> list[str]:
     if doc is None:
         return []
     return ["///" + (f" {line}" if line else "") for line in doc.split("\n")]
+
+
+def _numbers(value: float | ast.NumberRows) -> str:
+    """A number, or rows of numbers as `[1.0, 0.0; 0.0, 1.0]`."""
+    if isinstance(value, float):
+        return repr(value)
+    return "[" + "; ".join(", ".join(repr(number) for number in row) for row in value.rows) + "]"
+
+
+def _noise(noise: ast.FieldNoise) -> str:
+    unit = "" if noise.unit is None else " " + p.quote(noise.unit.value)
+    return f"noise {noise.field.text} {_numbers(noise.value)}{unit}"
+
+
+def _filter(given: ast.FieldFilter) -> list[str]:
+    return _block(f"filter {given.field.text} kalman", [f"{word.text} {_numbers(value)}" for word, value in given.items])
 
 
 def _block(head: str, lines: list[str]) -> list[str]:

@@ -10,6 +10,7 @@ from rdisc.diagnostics import Label
 from rdisc.frozen import field_names, replace
 from rdisc.semantics import model as m
 from rdisc.semantics.check.layouts import Layouts
+from rdisc.semantics.check.noise import errors
 from rdisc.semantics.model import Scope, Type
 from rdisc.semantics.resolve import suggest
 from rdisc.semantics.types import Env, Names, describe
@@ -308,7 +309,9 @@ class Interfaces(Layouts):
                 help="an output defines every field of its adapter",
             )
         fields = tuple((f.name, values[f.name]) for f in adapter.fields if f.name in values)
-        return m.DomainOutput(decl.name.text, m.AdapterRef(adapter.name), fields, decl.doc, decl.span, frame)
+        noise, filters = errors(self.d, decl, adapter)
+        return m.DomainOutput(decl.name.text, m.AdapterRef(adapter.name), fields, decl.doc, decl.span, frame,
+                              noise, filters)
 
 
 def _refs(node: object) -> Iterator[ast.Ref]:

@@ -720,6 +720,152 @@ def _crc_table(width: int, poly: int, reflected: bool, bits: int) -> tuple[int, 
     return tuple(table)
 
 
+# ---- rdisc engine: matrices (rdisc/engine/matrices.py), small matrices, for filters --------------
+
+
+Matrix = tuple[tuple[float, ...], ...]
+"""A matrix as its rows, each a tuple of floats; a column vector is a matrix of one column."""
+
+
+def as_matrix(rows: Sequence[Sequence[float]]) -> Matrix:
+    """A matrix of the given rows (ValueError if they are not all as long as the first)."""
+    result = tuple(tuple(float(value) for value in row) for row in rows)
+    if result and any(len(row) != len(result[0]) for row in result):
+        raise ValueError("a matrix's rows differ in length")
+    return result
+
+
+def as_column(values: Sequence[float]) -> Matrix:
+    """A column vector of `values`."""
+    return tuple((float(value),) for value in values)
+
+
+def matrix_identity(size: int) -> Matrix:
+    """The identity of `size` rows."""
+    return tuple(tuple(1.0 if row == place else 0.0 for place in range(size)) for row in range(size))
+
+
+def matrix_shape(of: Matrix) -> tuple[int, int]:
+    """Rows and columns."""
+    return len(of), len(of[0]) if of else 0
+
+
+def matrix_transpose(of: Matrix) -> Matrix:
+    """Rows as columns."""
+    return tuple(zip(*of)) if of else ()
+
+
+def matrix_product(left: Matrix, right: Matrix) -> Matrix:
+    """`left` times `right` (ValueError if `left`'s columns are not `right`'s rows)."""
+    if matrix_shape(left)[1] != len(right):
+        raise ValueError(f"cannot multiply {matrix_shape(left)} by {matrix_shape(right)}")
+    columns = matrix_transpose(right)
+    return tuple(tuple(sum(a * b for a, b in zip(row, each)) for each in columns) for row in left)
+
+
+def matrix_sum(left: Matrix, right: Matrix, sign: float = 1.0) -> Matrix:
+    """`left` plus `sign` times `right`, element by element (ValueError if their shapes differ)."""
+    if matrix_shape(left) != matrix_shape(right):
+        raise ValueError(f"cannot add {matrix_shape(left)} and {matrix_shape(right)}")
+    return tuple(tuple(a + sign * b for a, b in zip(one, other)) for one, other in zip(left, right))
+
+
+def matrix_inverse(of: Matrix) -> Matrix:
+    """The inverse of a square matrix (ValueError if it is not square or is singular)."""
+    size, columns = matrix_shape(of)
+    if size != columns:
+        raise ValueError(f"cannot invert {matrix_shape(of)}")
+    work = [list(row) + list(unit) for row, unit in zip(of, matrix_identity(size))]
+    for place in range(size):
+        pivot = max(range(place, size), key=lambda row: abs(work[row][place]))
+        if work[pivot][place] == 0.0:
+            raise ValueError("a singular matrix has no inverse")
+        work[place], work[pivot] = work[pivot], work[place]
+        lead = work[place][place]
+        work[place] = [value / lead for value in work[place]]
+        for row in range(size):
+            if row != place and work[row][place] != 0.0:
+                factor = work[row][place]
+                work[row] = [value - factor * other for value, other in zip(work[row], work[place])]
+    return tuple(tuple(row[size:]) for row in work)
+
+
+# ---- rdisc engine: kalman (rdisc/engine/kalman.py), the Kalman filter ----------------------------
+
+
+class KalmanFilter:
+    """One filter's matrices and its current state (`state`, a column; `covariance`). Shapes are
+    checked once here (ValueError), as the checker checks a description's."""
+
+    __slots__ = ("covariance", "measurement", "noise", "process", "state", "transition")
+
+    def __init__(self, state: Sequence[float], covariance: Sequence[Sequence[float]],
+                 transition: Sequence[Sequence[float]], process: Sequence[Sequence[float]],
+                 measurement: Sequence[Sequence[float]], noise: Sequence[Sequence[float]]) -> None:
+        self.state = as_column(state)
+        self.covariance = as_matrix(covariance)
+        self.transition = as_matrix(transition)
+        self.process = as_matrix(process)
+        self.measurement = as_matrix(measurement)
+        self.noise = as_matrix(noise)
+        states = len(self.state)
+        measured = len(self.measurement)
+        for name, of, expected in (("covariance", self.covariance, (states, states)),
+                                   ("transition", self.transition, (states, states)),
+                                   ("process", self.process, (states, states)),
+                                   ("measurement", self.measurement, (measured, states)),
+                                   ("noise", self.noise, (measured, measured))):
+            if matrix_shape(of) != expected:
+                raise ValueError(f"a Kalman filter's {name} is {matrix_shape(of)}, not {expected}")
+
+    def predict(self) -> None:
+        """x = F x; P = F P F' + Q."""
+        self.state = matrix_product(self.transition, self.state)
+        moved = matrix_product(matrix_product(self.transition, self.covariance), matrix_transpose(self.transition))
+        self.covariance = matrix_sum(moved, self.process)
+
+    def update(self, measured: Sequence[float]) -> None:
+        """Corrects the state by one measurement (as many values as the measurement's rows)."""
+        z = as_column(measured)
+        if len(z) != len(self.measurement):
+            raise ValueError(f"a Kalman filter measures {len(self.measurement)} values, not {len(z)}")
+        h = self.measurement
+        residual = matrix_sum(z, matrix_product(h, self.state), -1.0)
+        spread = matrix_product(self.covariance, matrix_transpose(h))
+        gain = matrix_product(spread, matrix_inverse(matrix_sum(matrix_product(h, spread), self.noise)))
+        self.state = matrix_sum(self.state, matrix_product(gain, residual))
+        kept = matrix_sum(matrix_identity(len(self.state)), matrix_product(gain, h), -1.0)
+        self.covariance = matrix_sum(matrix_product(matrix_product(kept, self.covariance), matrix_transpose(kept)),
+                                matrix_product(matrix_product(gain, self.noise), matrix_transpose(gain)))
+
+    def step(self, measured: Sequence[float]) -> tuple[float, ...]:
+        """Predicts, then updates by `measured`: the estimate of what is measured (H x)."""
+        self.predict()
+        self.update(measured)
+        return self.estimate()
+
+    def estimate(self) -> tuple[float, ...]:
+        """What the measurement would read in the state estimated (H x)."""
+        return tuple(row[0] for row in matrix_product(self.measurement, self.state))
+
+
+@dataclass(frozen=True, slots=True)
+class FilterPlan:
+    """What a description states of a field's Kalman filter (`filter FIELD kalman { ... }`): the
+    field, and the matrices each robot starts its own running filter from."""
+
+    field: str
+    state: tuple[float, ...]
+    covariance: Matrix
+    transition: Matrix
+    process: Matrix
+    measurement: Matrix
+    noise: Matrix
+
+    def start(self) -> KalmanFilter:
+        return KalmanFilter(self.state, self.covariance, self.transition, self.process, self.measurement, self.noise)
+
+
 # ---- rdisc engine: wire (rdisc/engine/wire.py), a port's input, frames' parts --------------------
 
 
@@ -2118,6 +2264,7 @@ class Output:
     adapter: str = ""
     frame: str = ""  # its stamped messages' frame id and child frame id (`semantics.ros.header_frames`)
     child_frame: str = ""
+    filters: tuple[FilterPlan, ...] = ()  # fields published as a Kalman filter's estimate
 
 
 @dataclass(frozen=True, slots=True)
@@ -2767,6 +2914,7 @@ class Exchange:
     _read_ns: int | None  # when a reply last changed the state (ns since the epoch); None: none has
     _state_lock: threading.Lock
     _callback_lock: threading.RLock
+    _filters: dict[tuple[str, str], KalmanFilter]  # (output, field): its running filter, made when first delivered
     _output_callbacks: list[OutputCallback]
     _error_callbacks: list[ErrorCallback]
     _io_callbacks: list[IoCallback]
@@ -3545,6 +3693,8 @@ class Exchange:
             raise RdisValueError(f"{plan.name}: {err}") from None
         message = OutputMessage(plan.name, contents, time.time_ns() if read_ns is None else read_ns)
         with self._callback_lock:
+            if plan.filters:
+                message = OutputMessage(plan.name, self._filtered(plan, contents), message.read_ns)
             for callback in list(self._output_callbacks):
                 try:
                     callback(message)
@@ -3552,6 +3702,20 @@ class Exchange:
                     error = RdisCallbackError(f"{plan.name}: output callback raised {type(err).__name__}: {err}")
                     error.__cause__ = err
                     self._report(error)
+
+    def _filtered(self, plan: Output, contents: dict[str, Value]) -> dict[str, Value]:
+        """The fields a Kalman filter estimates, each filter stepped once by the value delivered
+        (a number, or an array's values); under the callback lock, so deliveries step in turn."""
+        for given in plan.filters:
+            running = self._filters.get((plan.name, given.field))
+            if running is None:
+                running = self._filters[(plan.name, given.field)] = given.start()
+            value = contents[given.field]
+            if isinstance(value, (tuple, list)):
+                contents = {**contents, given.field: type(value)(running.step(value))}
+            else:
+                contents = {**contents, given.field: running.step((float(value),))[0]}
+        return contents
 
     def _happened(self, kind: str, connection: str, data: bytes) -> None:
         """An event as it happens, under the port's lock: stamped by the robot's clock and queued
@@ -3793,6 +3957,7 @@ class Robot(Exchange):
         self._state_lock = threading.Lock()
         self._callback_lock = threading.RLock()  # callbacks run one at a time
         self._output_callbacks: list[OutputCallback] = []
+        self._filters = {}
         self._read_ns: int | None = None  # when a reply last changed the state
         self._error_callbacks: list[ErrorCallback] = []
         self._io_callbacks: list[IoCallback] = []

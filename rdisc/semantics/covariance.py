@@ -1,0 +1,38 @@
+"""Where an output's declared noise goes in a ROS message (thesis §7.2.3): a field's variance on
+the diagonal of the covariance its message keeps beside it, found by the field's `ros` path
+(stdlib/adapters.rdis), one table for both ROS versions. A message without such a field
+(`Range`, `JointState`) carries no covariance; fields the description gives no noise leave 0."""
+
+from __future__ import annotations
+
+from rdisc.semantics import model as m
+
+# A field's path → the covariance beside it, that square matrix's side, the field's place on its diagonal.
+# nav_msgs/Odometry and geometry_msgs/*WithCovariance: x, y, z, rotation about x, y, z (REP 103);
+# sensor_msgs/Imu: its three vectors' x, y, z, the orientation's roll, pitch, yaw.
+_AXES = {"x": 0, "y": 1, "z": 2}
+DIAGONALS: dict[str, tuple[str, int, int]] = {
+    **{f"pose.pose.position.{axis}": ("pose.covariance", 6, at) for axis, at in _AXES.items()},
+    "pose.pose.orientation:yaw": ("pose.covariance", 6, 5),
+    **{f"twist.twist.linear.{axis}": ("twist.covariance", 6, at) for axis, at in _AXES.items()},
+    **{f"twist.twist.angular.{axis}": ("twist.covariance", 6, 3 + at) for axis, at in _AXES.items()},
+    "orientation:yaw": ("orientation_covariance", 3, 2),
+    **{f"angular_velocity.{axis}": ("angular_velocity_covariance", 3, at) for axis, at in _AXES.items()},
+    **{f"linear_acceleration.{axis}": ("linear_acceleration_covariance", 3, at) for axis, at in _AXES.items()},
+}
+
+
+def covariances(adapter: m.Adapter, noise: tuple[m.Noise, ...]) -> tuple[tuple[str, m.Rows], ...]:
+    """Each covariance of an output's message its noise fills (its path, its rows), in the order
+    the table names them; a field's noise of one value only (a number's), on the diagonal."""
+    found: dict[str, list[list[float]]] = {}
+    for given in noise:
+        field = adapter.field(given.field)
+        place = None if field is None else DIAGONALS.get(field.ros or field.name)
+        if place is None or len(given.covariance) != 1:
+            continue
+        path, side, at = place
+        rows = found.setdefault(path, [[0.0] * side for _ in range(side)])
+        rows[at][at] = given.covariance[0][0]
+    ordered = list(dict.fromkeys(path for path, _, _ in DIAGONALS.values()))
+    return tuple((path, tuple(tuple(row) for row in found[path])) for path in ordered if path in found)

@@ -1,0 +1,105 @@
+"""The declared noise in ROS messages (rdisc/semantics/covariance.py): an Odometry's and an
+Imu's covariances filled by the ROS 1 and ROS 2 nodes' one filling of each output, the variance
+(a deviation's square) on the diagonal at the field's place; run in process on the generated
+module, with a message of plain namespaces."""
+
+from __future__ import annotations
+
+import importlib.util
+import sys
+from pathlib import Path
+from types import ModuleType, SimpleNamespace
+
+import pytest
+
+from rdisc.compile import compile_path
+from rdisc.emit.ros import to_ros
+from rdisc.emit.ros2 import to_ros2
+
+ODOMETRY = '''robot wheels { author "t" }
+state x: float = 0.0
+state speed: float = 0.0
+connection port: serial { baud 9600 }
+primitive read() on port pack "B" (1) unpack "<hh" { x = out[0] / 1000.0  speed = out[1] / 1000.0 }
+interface poll() triggers odom { read() }
+output odom: Odometry {
+    x = x
+    y = 0.0
+    theta = 0.0
+    linear = speed
+    angular = 0.0
+    noise x 0.02 "m"
+    noise theta 0.5 "rad"
+    noise angular 0.25
+}
+'''
+IMU = '''interface turn() triggers imu { read() }
+adapter Turning ros "sensor_msgs/Imu" {
+    rate: float unit "rad/s" ros "angular_velocity.z"
+    heading: float unit "rad" ros "orientation:yaw"
+}
+output imu: Turning {
+    rate = speed
+    heading = x
+    noise rate 0.5 "rad/s"
+    noise heading [0.125]
+}
+'''
+
+
+def _node(kind: str, tmp_path: Path) -> ModuleType:
+    source = tmp_path / "wheels.rdis"
+    source.write_text(ODOMETRY + IMU * (kind == "ros1"), encoding="utf-8")  # no Imu in rdisc's ROS 2 messages
+    compilation = compile_path(str(source))
+    assert compilation.model is not None and not compilation.diagnostics.has_errors()
+    model = compilation.model
+    text = to_ros(model, "wheels.rdis") if kind == "ros1" else to_ros2(model, "wheels.rdis")
+    path = tmp_path / f"wheels_{kind}.py"
+    path.write_text(text, encoding="utf-8")
+    spec = importlib.util.spec_from_file_location(f"wheels_{kind}", path)
+    assert spec is not None and spec.loader is not None
+    module = importlib.util.module_from_spec(spec)
+    sys.modules[spec.name] = module  # its dataclasses look their module up
+    spec.loader.exec_module(module)
+    return module
+
+
+def _vector() -> SimpleNamespace:
+    return SimpleNamespace(x=0.0, y=0.0, z=0.0)
+
+
+def _quaternion() -> SimpleNamespace:
+    return SimpleNamespace(x=0.0, y=0.0, z=0.0, w=1.0)
+
+
+def _diagonal(side: int, **at: float) -> list[float]:
+    values = [0.0] * side * side
+    for place, value in at.items():
+        index = int(place.removeprefix("d"))
+        values[index * side + index] = value
+    return values
+
+
+@pytest.mark.parametrize("kind", ["ros1", "ros2"])
+def test_an_odometry_carries_its_fields_variances(kind: str, tmp_path: Path) -> None:
+    node = _node(kind, tmp_path)
+    msg = SimpleNamespace(
+        pose=SimpleNamespace(pose=SimpleNamespace(position=_vector(), orientation=_quaternion()), covariance=[0.0] * 36),
+        twist=SimpleNamespace(twist=SimpleNamespace(linear=_vector(), angular=_vector()), covariance=[0.0] * 36))
+    node._ros_fill_odom(msg, {"x": 1.5, "y": 0.0, "theta": 0.0, "linear": 0.25, "angular": 0.0})
+    assert msg.pose.pose.position.x == 1.5
+    assert msg.pose.covariance == _diagonal(6, d0=0.02 * 0.02, d5=0.25)  # x, then yaw
+    assert msg.twist.covariance == _diagonal(6, d5=0.0625)  # the turn rate: angular z
+
+
+@pytest.mark.parametrize("kind", ["ros1"])  # rdisc has no ROS 2 definition of sensor_msgs/Imu (yet)
+def test_an_imu_carries_its_fields_variances(kind: str, tmp_path: Path) -> None:
+    node = _node(kind, tmp_path)
+    msg = SimpleNamespace(orientation=_quaternion(), angular_velocity=_vector(), linear_acceleration=_vector(),
+                          orientation_covariance=[0.0] * 9, angular_velocity_covariance=[0.0] * 9,
+                          linear_acceleration_covariance=[0.0] * 9)
+    node._ros_fill_imu(msg, {"rate": 0.5, "heading": 0.0})
+    assert msg.angular_velocity.z == 0.5
+    assert msg.orientation_covariance == _diagonal(3, d2=0.125)  # a covariance given as written
+    assert msg.angular_velocity_covariance == _diagonal(3, d2=0.25)
+    assert msg.linear_acceleration_covariance == [0.0] * 9  # no noise declared: left as it was
