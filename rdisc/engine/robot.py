@@ -19,7 +19,7 @@ from rdisc.engine.exchange import Exchange
 from rdisc.engine.operations import EVAL_ERRORS
 from rdisc.engine.plans import Call, Device, Hook, Input, Interface, KeyedReply, Primitive
 from rdisc.engine.ports import PortSpec, Simulator, _Link, _open_port, _Port, _write_timed_out
-from rdisc.engine.schedule import _Worker
+from rdisc.engine.schedule import _Worker, connection_workers
 from rdisc.engine.values import (
     Args,
     ErrorCallback,
@@ -360,7 +360,7 @@ class Robot(Exchange):
             self._running = True
             self._direct = sim is None
             self.startup()
-            self._workers = [_Worker(self, c) for c in self.device.connections.values()]
+            self._workers = [w for c in self.device.connections.values() for w in connection_workers(self, c)]
             for worker in self._workers:
                 if threads:
                     worker.start()
@@ -402,7 +402,7 @@ class Robot(Exchange):
         end = math.inf if seconds is None else sim.now() + seconds
         ticks = dict.fromkeys(self._workers, 0)  # each periodic connection's next tick
         while True:
-            due = {w: w._start + k * w.period if w.connection.periodic else w._keepalive_due if w.interval else math.inf
+            due = {w: w._start + k * w.period if w.periodic else w._keepalive_due if w.interval else math.inf
                    for w, k in ticks.items()}
             wake = min(due.values(), default=math.inf)
             if wake > end:
@@ -412,7 +412,7 @@ class Robot(Exchange):
             for worker, when in due.items():
                 if when <= wake:
                     worker.tick()  # as the thread's loop: a tick already past is skipped
-                    if worker.connection.periodic:
+                    if worker.periodic:
                         late = math.ceil((sim.now() - worker._start) / worker.period - 1e-9)
                         ticks[worker] = max(ticks[worker] + 1, late)
 

@@ -343,6 +343,7 @@ class Connection:
     data_bits: int = 8  # a serial line's character: data bits, parity, stop bits (8N1 unless said)
     parity: str = "none"  # none, even, odd, mark or space
     stop_bits: float = 1  # 1, 1.5 or 2
+    threading: str = "single"  # single, dual or multiple (rdisc.engine.schedule)
 
     def terminator_bytes(self) -> bytes:
         return self.terminator.encode("latin-1")
@@ -914,6 +915,7 @@ class Interface:
     triggers: tuple[OutputRef, ...] = ()  # delivered in this order after the calls
     doc: str | None = None
     span: Span | None = _span
+    rate_hz: float | None = None  # its own rate (`periodic 10 Hz`), under `threading multiple`
 
     def run_order(self) -> tuple[PrimitiveCall, ...]:
         """Calls by priority, then as written (a stable sort)."""
