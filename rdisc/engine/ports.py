@@ -65,6 +65,13 @@ class Simulator(Protocol):
     def now(self) -> float: ...
 
 
+class _Lock(Protocol):
+    """A port's exchange lock: re-entrant (a `threading.RLock`, or `schedule._FairLock`)."""
+
+    def acquire(self) -> bool: ...
+    def release(self) -> None: ...
+
+
 class _Port:
     """One open port, shared by the connections given the same one, with its exchange lock."""
 
@@ -77,7 +84,7 @@ class _Port:
         self.owned = owned  # opened by the robot, so closed by it too
         # Re-entrant: a signal landing between a command's `acquire` and its `try` leaves the lock
         # held by the interrupted thread, which must still write the terminate hook's stop command.
-        self.lock = threading.RLock()
+        self.lock: _Lock = threading.RLock()
 
 
 class _Link:
