@@ -98,7 +98,7 @@ def driver(source: Path, folder: Path) -> ModuleType:
     return module
 
 
-def connect(way: str, source: Path, port: str, tmp_path: Path):  # noqa: ANN201 - a Robot of either kind
+def connect(way: str, source: Path, port: str, tmp_path: Path):  # a Robot of either kind
     """The robot of `source` on `port`: by the runtime, or by a driver generated from it."""
     if way == "runtime":
         return load(source).connect(port)
