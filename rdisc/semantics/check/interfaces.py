@@ -220,7 +220,7 @@ class Interfaces(Layouts):
         conn = self.s.connections.get(connection) if connection is not None else None
         threading = next((a for a in conn.attrs if isinstance(a, ast.Threading)), None) if conn is not None else None
         model = threading.model.text if threading is not None else "single"
-        if conn is not None and model != "multiple":
+        if conn is not None and model in ("single", "dual"):  # another is E209
             self.d.report("W230", rate.span, f"`{decl.name.text}` states its own rate, but `{conn.name.text}` is "
                           f"`threading {model}`: it runs at the connection's frequency",
                           help=f"write `threading multiple` on `{conn.name.text}`, or leave the rate out")
