@@ -19,7 +19,7 @@ from rdisc.engine.exchange import Exchange
 from rdisc.engine.operations import EVAL_ERRORS
 from rdisc.engine.plans import Call, Device, Hook, Input, Interface, KeyedReply, Primitive
 from rdisc.engine.ports import PortSpec, Simulator, _Link, _open_port, _Port, _write_timed_out
-from rdisc.engine.schedule import _Worker, connection_workers
+from rdisc.engine.schedule import _connection_workers, _Worker
 from rdisc.engine.values import (
     Args,
     ErrorCallback,
@@ -360,7 +360,7 @@ class Robot(Exchange):
             self._running = True
             self._direct = sim is None
             self.startup()
-            self._workers = [w for c in self.device.connections.values() for w in connection_workers(self, c)]
+            self._workers = [w for c in self.device.connections.values() for w in _connection_workers(self, c)]
             for worker in self._workers:
                 if threads:
                     worker.start()

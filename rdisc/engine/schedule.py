@@ -30,7 +30,6 @@ class _Owner(Protocol):
     _clock: Callable[[], float]
     _closed: bool
     _run_callbacks: list[Callable[[str, str, str], object]]
-    _callback_lock: threading.RLock
 
     @property
     def _ports(self) -> Mapping[str, _Port]: ...
@@ -94,7 +93,7 @@ class _FairLock:
         gate.release()
 
 
-def connection_workers(robot: _Owner, connection: Connection) -> list[_Worker]:
+def _connection_workers(robot: _Owner, connection: Connection) -> list[_Worker]:
     """The threads' work of a connection by its threading model: one worker under `single` and
     `dual`; under `multiple` one for each periodic interface, at its rate (0: the connection's),
     and one for the keepalive. Under `dual` and `multiple` the port's lock becomes a fair one,
@@ -145,21 +144,17 @@ class _Worker:
     def tick(self) -> None:
         """One iteration: each periodic interface, then the keepalive if it is due. Errors go
         to the error callbacks, and the schedule goes on. Under `single` the tick holds the
-        port (re-entrant: its exchanges take it again), and the callbacks' lock before it, the
-        order of every thread that holds both (a callback that calls the robot)."""
-        if not self.whole:
+        port (re-entrant: its exchanges take it again), so another thread's command waits for
+        the whole tick; one made by a callback on this thread goes in between."""
+        port = self.robot._ports.get(self.connection.name) if self.whole else None
+        if port is None:  # dual, multiple, or a simulated device: no port to hold
             self._tick()
             return
-        port = self.robot._ports.get(self.connection.name)
-        with self.robot._callback_lock:
-            if port is None:  # a simulated device: no port to hold
-                self._tick()
-                return
-            port.lock.acquire()
-            try:
-                self._tick()
-            finally:
-                port.lock.release()
+        port.lock.acquire()
+        try:
+            self._tick()
+        finally:
+            port.lock.release()
 
     def _tick(self) -> None:
         robot = self.robot

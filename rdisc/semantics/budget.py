@@ -50,12 +50,11 @@ class ConnectionBudget:
     baud_setting: str | None = None  # the setting giving the baud rate: `baud` is its default
     bits_per_byte: float = 10  # on the wire, a start bit and the serial line's character
     threading: str = "single"  # single and dual: one thread runs every periodic exchange each tick
-    rates: tuple[float, ...] = ()  # under `multiple`: each periodic exchange's own rate (0: `frequency_hz`)
+    rates: tuple[float, ...] = ()  # each periodic exchange's runs a second (`Connection.rate_of`)
 
     def rate(self, index: int) -> float:
-        """Runs a second of the periodic exchange `index`: its own rate under `multiple`, else the tick's."""
-        own = self.rates[index] if self.threading == "multiple" and index < len(self.rates) else 0.0
-        return own or self.frequency_hz
+        """Runs a second of the periodic exchange `index`."""
+        return self.rates[index] if index < len(self.rates) else self.frequency_hz
 
     @property
     def baud_text(self) -> str:
@@ -120,8 +119,8 @@ def budget(model: m.Model, diagnostics: Diagnostics) -> list[ConnectionBudget]:
             if iface.periodic and model.owner(iface) == conn.name
         )
         keepalive = exchange(model, model.interfaces[conn.keepalive.call.interface], conn.name) if conn.keepalive else None
-        rates = tuple(iface.rate_hz or 0.0 for iface in model.interfaces.values()
-                      if iface.periodic and model.owner(iface) == conn.name) if conn.threading == "multiple" else ()
+        rates = tuple(conn.rate_of(iface) for iface in model.interfaces.values()
+                      if iface.periodic and model.owner(iface) == conn.name)
         b = ConnectionBudget(conn.name, conn.baud, conn.frequency_hz, periodic, keepalive,
                              conn.keepalive.interval_ms if conn.keepalive else None, conn.baud_setting,
                              conn.bits_per_byte(), conn.threading, rates)

@@ -348,6 +348,12 @@ class Connection:
     def terminator_bytes(self) -> bytes:
         return self.terminator.encode("latin-1")
 
+    def rate_of(self, interface: Interface) -> float:
+        """Runs a second of a periodic interface of this connection: its own rate under
+        `threading multiple` when it states one, else the connection's frequency."""
+        own = interface.rate_hz if self.threading == "multiple" else None
+        return own or self.frequency_hz
+
     def line_text(self) -> str:
         """The serial line's character as it is usually written: `8N1`, `8E2`, `5N1.5`."""
         return f"{self.data_bits}{self.parity[0].upper()}{self.stop_bits:g}"
