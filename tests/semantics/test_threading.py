@@ -115,3 +115,12 @@ def test_the_budget_holds_each_thread_to_its_own_period(rdisc, tmp_path) -> None
         "  scheduled: 80.0 bytes/s, 8.3% of the link",
     ]
     assert "W402" not in done.stderr
+
+
+def test_the_graph_labels_each_periodic_interface_with_its_rate(rdisc, tmp_path) -> None:
+    path = tmp_path / "threads.rdis"
+    for model, slow in (("multiple", "5 Hz"), ("single", "20 Hz")):
+        path.write_text(SOURCE.format(model=model, rate="5", delay=0), encoding="utf-8")
+        dot = rdisc("graph", path).stdout
+        assert '"connection:link" -> "interface:fast" [label="every tick (20 Hz)"];' in dot
+        assert f'"connection:link" -> "interface:slow" [label="every tick ({slow})"];' in dot
