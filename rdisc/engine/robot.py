@@ -479,6 +479,8 @@ class Robot(Exchange):
                 if connection.address is None:
                     raise ValueError(f"no port given for connection {name!r}, which has no `address`")
                 given[name] = connection.address
+        fair = {os.fspath(where) if isinstance(where, (str, os.PathLike)) else id(where)  # ports handed over in turn
+                for name, where in given.items() if connections[name].threading != "single"}
         opened: dict[object, _Port] = {}
         for name, where in given.items():
             by_name = isinstance(where, (str, os.PathLike))
@@ -488,7 +490,7 @@ class Robot(Exchange):
                 setting = connection.baud_setting  # an int setting: the checker holds it to that type
                 baud: Any = self._state[setting] if setting is not None else connection.baud
                 io = _open_port(connection, os.fspath(where), self.timeout, baud) if by_name else where
-                opened[key] = _Port(io, owned=by_name)
+                opened[key] = _Port(io, owned=by_name, fair=key in fair)
             self._links[name] = _Link(connections[name], opened[key])
             self._ports[name] = opened[key]
 

@@ -59,12 +59,15 @@ interface slow() periodic 5 Hz {{ ask_s() }}
 
 class LineDevice(PtyDevice):
     """Answers each request line `X` with `x` after `delay` seconds (`C`, a command: no answer),
-    and keeps the request lines in the order they came."""
+    and keeps the request lines in the order they came. It answers from a timer, reading on
+    meanwhile, so it sees a command written while an exchange waits for its answer (`cut_in`)."""
 
     def __init__(self, delay: float) -> None:
         super().__init__()
         self.delay = delay
         self.lines: list[str] = []
+        self.cut_in: list[str] = []  # the requests that came while an answer was pending
+        self._pending = 0
         self._partial = b""
 
     def handle(self, data: bytes) -> None:
@@ -74,10 +77,23 @@ class LineDevice(PtyDevice):
             request = line.decode("ascii")
             with self._cond:
                 self.lines.append(request)
+                if self._pending:
+                    self.cut_in.append(request)
                 self._cond.notify_all()
-            if request != "C":
-                self.reply_delay = self.delay if request in "AB" else 0.0
-                self.send(request.lower().encode("ascii") + b"\n")
+            if request == "C":
+                continue
+            answer = request.lower().encode("ascii") + b"\n"
+            if not (self.delay and request in "AB"):
+                self.send(answer)
+                continue
+            with self._cond:
+                self._pending += 1
+            threading.Timer(self.delay, self._answer, (answer,)).start()
+
+    def _answer(self, answer: bytes) -> None:
+        with self._cond:
+            self._pending -= 1
+        self.send(answer)
 
     def count(self, request: str) -> int:
         with self._cond:
@@ -121,6 +137,7 @@ def test_a_command_waits_for_the_tick_under_single_and_one_exchange_otherwise(wa
             dev.wait_until(lambda: "A" in dev.lines, 5.0, "the first tick")
             robot.call_interface("command")  # during the first tick's first exchange (it lasts 0.6 s)
             lines = dev.wait_until(lambda: "C" in dev.lines, 5.0, "the command") and list(dev.lines)
+            cut_in = list(dev.cut_in)
         finally:
             robot.close()
     periodic = [line for line in lines[:lines.index("C")] if line in "AB"]
@@ -128,6 +145,7 @@ def test_a_command_waits_for_the_tick_under_single_and_one_exchange_otherwise(wa
     # single: the whole tick in flight first (4 requests; 8 had the call come in the next tick);
     # dual, multiple: the exchange in flight only, so the command comes within a tick (1 to 3)
     assert periodic and (len(periodic) % len(TICK) == 0) == whole_ticks, lines
+    assert cut_in == [], lines  # never written while an exchange waits for its answer
 
 
 @pytest.mark.parametrize("way", ["runtime", "driver"])
@@ -182,7 +200,7 @@ def test_close_ends_every_thread_of_the_model(way, model, names, tmp_path) -> No
 def test_the_port_lock_of_dual_goes_to_the_waiting_thread_before_its_holder_takes_it_again() -> None:
     """The periodic thread releases the port after an exchange and asks for it at once for the
     next: a command already waiting gets it first (a plain lock lets the holder take it back)."""
-    from rdisc.engine.schedule import _FairLock
+    from rdisc.engine.ports import _FairLock
 
     lock, order = _FairLock(), []
     lock.acquire()

@@ -2578,19 +2578,74 @@ class _Lock(Protocol):
     def release(self) -> None: ...
 
 
+class _FairLock:
+    """A port's lock under `dual` and `multiple` (`fair`): re-entrant as the port's own, and handed over in
+    the order it was asked for. A plain lock lets the thread that releases it take it straight
+    back, so a periodic thread going from one exchange to the next could keep a waiting command
+    out for ever; this one gives the port to the command when the exchange in flight ends."""
+
+    __slots__ = ("_depth", "_guard", "_owner", "_queue")
+
+    def __init__(self) -> None:
+        self._guard = threading.Lock()
+        self._owner: int | None = None  # None only while nobody waits: a release hands it over
+        self._depth = 0
+        self._queue: deque[tuple[int, threading.Lock]] = deque()
+
+    def acquire(self) -> bool:
+        me = threading.get_ident()
+        with self._guard:
+            if self._owner == me:
+                self._depth += 1
+                return True
+            if self._owner is None:
+                self._owner, self._depth = me, 1
+                return True
+            gate = threading.Lock()
+            gate.acquire()
+            self._queue.append((me, gate))
+        try:
+            gate.acquire()  # released when the lock is handed to this thread
+        except BaseException:  # a signal's exception while waiting: leave the queue, or give it on
+            with self._guard:
+                if self._owner != me:
+                    self._queue.remove((me, gate))
+                    raise
+                self._depth = 1
+            self.release()
+            raise
+        return True
+
+    def release(self) -> None:
+        with self._guard:
+            if self._owner != threading.get_ident():
+                raise RuntimeError("cannot release a lock this thread does not hold")
+            self._depth -= 1
+            if self._depth:
+                return
+            if not self._queue:
+                self._owner = None
+                return
+            self._owner, gate = self._queue.popleft()
+            self._depth = 1
+        gate.release()
+
+
 class _Port:
     """One open port, shared by the connections given the same one, with its exchange lock."""
 
     __slots__ = ("input", "io", "lock", "owned", "write")
 
-    def __init__(self, io: Port, owned: bool) -> None:
+    def __init__(self, io: Port, owned: bool, fair: bool = False) -> None:
         self.io = io
         self.write = io.write  # bound once: a plain command's one call of the port
         self.input = Incoming(io)  # what replies are read from: bytes put back, bytes taken, the deadline
         self.owned = owned  # opened by the robot, so closed by it too
         # Re-entrant: a signal landing between a command's `acquire` and its `try` leaves the lock
         # held by the interrupted thread, which must still write the terminate hook's stop command.
-        self.lock: _Lock = threading.RLock()
+        # Fair when a connection on it is `threading dual` or `multiple`: made so here, before any
+        # write binds the lock.
+        self.lock: _Lock = _FairLock() if fair else threading.RLock()
 
 
 class _Link:
@@ -2647,67 +2702,10 @@ class _Owner(Protocol):
     def _report(self, error: BaseException) -> None: ...
 
 
-class _FairLock:
-    """A port's lock under `dual` and `multiple`: re-entrant as the port's own, and handed over in
-    the order it was asked for. A plain lock lets the thread that releases it take it straight
-    back, so a periodic thread going from one exchange to the next could keep a waiting command
-    out for ever; this one gives the port to the command when the exchange in flight ends."""
-
-    __slots__ = ("_depth", "_guard", "_owner", "_queue")
-
-    def __init__(self) -> None:
-        self._guard = threading.Lock()
-        self._owner: int | None = None  # None only while nobody waits: a release hands it over
-        self._depth = 0
-        self._queue: deque[tuple[int, threading.Lock]] = deque()
-
-    def acquire(self) -> bool:
-        me = threading.get_ident()
-        with self._guard:
-            if self._owner == me:
-                self._depth += 1
-                return True
-            if self._owner is None:
-                self._owner, self._depth = me, 1
-                return True
-            gate = threading.Lock()
-            gate.acquire()
-            self._queue.append((me, gate))
-        try:
-            gate.acquire()  # released when the lock is handed to this thread
-        except BaseException:  # a signal's exception while waiting: leave the queue, or give it on
-            with self._guard:
-                if self._owner != me:
-                    self._queue.remove((me, gate))
-                    raise
-                self._depth = 1
-            self.release()
-            raise
-        return True
-
-    def release(self) -> None:
-        with self._guard:
-            if self._owner != threading.get_ident():
-                raise RuntimeError("cannot release a lock this thread does not hold")
-            self._depth -= 1
-            if self._depth:
-                return
-            if not self._queue:
-                self._owner = None
-                return
-            self._owner, gate = self._queue.popleft()
-            self._depth = 1
-        gate.release()
-
-
 def _connection_workers(robot: _Owner, connection: Connection) -> list[_Worker]:
     """The threads' work of a connection by its threading model: one worker under `single` and
     `dual`; under `multiple` one for each periodic interface, at its rate (0: the connection's),
-    and one for the keepalive. Under `dual` and `multiple` the port's lock becomes a fair one,
-    taken before any thread starts."""
-    port = robot._ports.get(connection.name)
-    if connection.threading != "single" and port is not None and not isinstance(port.lock, _FairLock):
-        port.lock = _FairLock()
+    and one for the keepalive. Under `dual` and `multiple` the port's lock is a fair one (`ports._FairLock`)."""
     if connection.threading != "multiple":
         return [_Worker(robot, connection)]
     rates = connection.rates or (0.0,) * len(connection.periodic)
@@ -4167,6 +4165,8 @@ class Robot(Exchange):
                 if connection.address is None:
                     raise ValueError(f"no port given for connection {name!r}, which has no `address`")
                 given[name] = connection.address
+        fair = {os.fspath(where) if isinstance(where, (str, os.PathLike)) else id(where)  # ports handed over in turn
+                for name, where in given.items() if connections[name].threading != "single"}
         opened: dict[object, _Port] = {}
         for name, where in given.items():
             by_name = isinstance(where, (str, os.PathLike))
@@ -4176,7 +4176,7 @@ class Robot(Exchange):
                 setting = connection.baud_setting  # an int setting: the checker holds it to that type
                 baud: Any = self._state[setting] if setting is not None else connection.baud
                 io = _open_port(connection, os.fspath(where), self.timeout, baud) if by_name else where
-                opened[key] = _Port(io, owned=by_name)
+                opened[key] = _Port(io, owned=by_name, fair=key in fair)
             self._links[name] = _Link(connections[name], opened[key])
             self._ports[name] = opened[key]
 
