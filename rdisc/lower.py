@@ -370,6 +370,8 @@ class Connection:
     data_bits: int = 8
     parity: str = "none"
     stop_bits: float = 1
+    threading: str = "single"
+    rates: tuple[float, ...] = ()
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -583,15 +585,17 @@ class _Lowering:
         def hook(call: m.HookCall | None) -> Hook | None:
             return None if call is None else Hook(interfaces[call.interface], _values((), call.args, ("state",)))
 
-        periodic = tuple(interfaces[i.name] for i in self.model.interfaces.values()
-                         if i.periodic and self.model.owner(i) == c.name)
+        owned = [i for i in self.model.interfaces.values() if i.periodic and self.model.owner(i) == c.name]
+        periodic = tuple(interfaces[i.name] for i in owned)
+        rates = tuple(i.rate_hz or 0.0 for i in owned) if c.threading == "multiple" else ()
         keepalive = c.keepalive
         return Connection(
             c.name, c.baud, address=c.address, terminator=c.terminator_bytes(), frequency=float(c.frequency_hz or 0),
             periodic=periodic, startup=hook(c.startup), terminate=hook(c.terminate),
             keepalive=hook(keepalive.call if keepalive else None),
             interval=keepalive.interval_ms / 1000.0 if keepalive else 0.0, baud_setting=c.baud_setting,
-            data_bits=c.data_bits, parity=c.parity, stop_bits=c.stop_bits,
+            data_bits=c.data_bits, parity=c.parity, stop_bits=c.stop_bits, threading=c.threading,
+            rates=rates if any(rates) else (),
         )
 
 

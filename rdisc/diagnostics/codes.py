@@ -197,7 +197,10 @@ have a single connection)."""),
     ("E209", "unsupported-kind", """
 The connection kind or threading model is not supported. Connections are
 `serial` (a serial port, or any pyserial URL) or `tcp` (a `socket://host:port`
-address); threading is `single`: one thread per connection."""),
+address); threading is `single` (a tick holds the port: a command waits for the
+whole tick), `dual` (the periodic thread holds the port for one exchange at a time:
+a command waits for at most the exchange in flight) or `multiple` (a thread for each
+periodic interface, each at its own rate)."""),
     ("E210", "interface-cycle", """
 An interface may call other interfaces (a call names a primitive of that name, or
 else an interface), but the calls must not lead back to the interface that makes
@@ -647,6 +650,12 @@ value given at run time is checked then. Wrong: `const EXTRAS = { 20: 214 }` wit
 The baud rate is not one of the standard rates (50 ... 4000000, and the rates of
 radio-control buses: S.BUS's 100000, CRSF's 420000). Some serial adapters round a
 non-standard rate or refuse it."""),
+    ("W230", "unused-rate", """
+A periodic interface states its own rate (`periodic 10 Hz`), but its connection is
+not `threading multiple`: under `single` and `dual` one thread runs every periodic
+interface of the connection at the connection's frequency, so the rate is not used.
+Wrong: `threading single at 40 Hz` with `interface bumpers() periodic 10 Hz`. Right:
+`threading multiple at 40 Hz` (each interface without a rate runs at 40 Hz)."""),
     ("W301", "native-byte-order", """
 The struct format has no byte-order prefix, so it uses the host's native byte
 order and alignment (padding between fields). Devices have a fixed order: write

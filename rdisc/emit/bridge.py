@@ -384,8 +384,9 @@ def _commanded(model: m.Model) -> list[_Commanded]:
 def rate(model: m.Model) -> float:
     """The default of `~joint_states_rate`: the fastest schedule that runs periodic interfaces
     (the state changes no faster), else joint_state_publisher's 10 Hz."""
-    owners = {model.owner(i) for i in model.interfaces.values() if i.periodic}
-    rates = [c.frequency_hz for name, c in model.connections.items() if name in owners and c.frequency_hz > 0]
+    rates = [model.connections[owner].rate_of(i) for i in model.interfaces.values()
+             if i.periodic and (owner := model.owner(i)) in model.connections]
+    rates = [r for r in rates if r > 0]
     return float(max(rates, default=10.0))
 
 

@@ -124,7 +124,7 @@ def _connection(c: m.Connection) -> JsonObject:
         ("dataBits", None if c.data_bits == 8 else c.data_bits),
         ("parity", None if c.parity == "none" else c.parity),
         ("stopBits", None if c.stop_bits == 1 else _number(c.stop_bits)),
-        ("singleThreading", {"freqHz": _number(c.frequency_hz)}),
+        (f"{c.threading}Threading", {"freqHz": _number(c.frequency_hz)}),  # the thesis's SingleThreading, ...
         ("startup", _hook(c.startup)),
         ("terminate", _hook(c.terminate)),
         ("keepalive", keepalive),
@@ -332,6 +332,7 @@ def _interface(i: m.Interface) -> JsonObject:
     return _object(
         ("name", i.name),
         ("type", "periodic" if i.periodic else "adhoc"),
+        ("rateHz", None if i.rate_hz is None else _number(i.rate_hz)),
         ("parameters", [param.name for param in i.params] or None),
         ("parameterTypes", [param.type.value for param in i.params] or None),
         ("parameterRanges", _ranges(i.params)),

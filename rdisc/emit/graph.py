@@ -110,7 +110,7 @@ def _edges(model: m.Model) -> Iterator[tuple[str, str, str]]:
                 yield f"connection:{c.name}", f"interface:{hook.interface}", event
         for i in model.interfaces.values():
             if i.periodic and model.owner(i) == c.name:
-                yield f"connection:{c.name}", f"interface:{i.name}", f"every tick ({c.frequency_hz:g} Hz)"
+                yield f"connection:{c.name}", f"interface:{i.name}", f"every tick ({c.rate_of(i):g} Hz)"
     for p in model.primitives.values():
         yield f"primitive:{p.name}", f"connection:{p.connection}", "on"
         if p.frame is not None:

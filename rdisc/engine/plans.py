@@ -483,6 +483,8 @@ class Connection:
     data_bits: int = 8  # the serial line's character: 8N1 unless the description says otherwise
     parity: str = "none"  # none, even, odd, mark or space
     stop_bits: float = 1  # 1, 1.5 or 2
+    threading: str = "single"  # single: a tick holds the port; dual: each exchange does; multiple: a thread each
+    rates: tuple[float, ...] = ()  # under `multiple`, each periodic interface's ticks a second (0: `frequency`)
 
 
 @dataclass(frozen=True, slots=True)

@@ -7,6 +7,7 @@ from __future__ import annotations
 import os
 import sys
 import threading
+from collections import deque
 from collections.abc import Mapping, Sequence
 from typing import Any, Protocol
 
@@ -65,19 +66,81 @@ class Simulator(Protocol):
     def now(self) -> float: ...
 
 
+class _Lock(Protocol):
+    """A port's exchange lock: re-entrant (a `threading.RLock`, or `schedule._FairLock`)."""
+
+    def acquire(self) -> bool: ...
+    def release(self) -> None: ...
+
+
+class _FairLock:
+    """A port's lock under `dual` and `multiple` (`fair`): re-entrant as the port's own, and handed over in
+    the order it was asked for. A plain lock lets the thread that releases it take it straight
+    back, so a periodic thread going from one exchange to the next could keep a waiting command
+    out for ever; this one gives the port to the command when the exchange in flight ends."""
+
+    __slots__ = ("_depth", "_guard", "_owner", "_queue")
+
+    def __init__(self) -> None:
+        self._guard = threading.Lock()
+        self._owner: int | None = None  # None only while nobody waits: a release hands it over
+        self._depth = 0
+        self._queue: deque[tuple[int, threading.Lock]] = deque()
+
+    def acquire(self) -> bool:
+        me = threading.get_ident()
+        with self._guard:
+            if self._owner == me:
+                self._depth += 1
+                return True
+            if self._owner is None:
+                self._owner, self._depth = me, 1
+                return True
+            gate = threading.Lock()
+            gate.acquire()
+            self._queue.append((me, gate))
+        try:
+            gate.acquire()  # released when the lock is handed to this thread
+        except BaseException:  # a signal's exception while waiting: leave the queue, or give it on
+            with self._guard:
+                if self._owner != me:
+                    self._queue.remove((me, gate))
+                    raise
+                self._depth = 1
+            self.release()
+            raise
+        return True
+
+    def release(self) -> None:
+        with self._guard:
+            if self._owner != threading.get_ident():
+                raise RuntimeError("cannot release a lock this thread does not hold")
+            self._depth -= 1
+            if self._depth:
+                return
+            if not self._queue:
+                self._owner = None
+                return
+            self._owner, gate = self._queue.popleft()
+            self._depth = 1
+        gate.release()
+
+
 class _Port:
     """One open port, shared by the connections given the same one, with its exchange lock."""
 
     __slots__ = ("input", "io", "lock", "owned", "write")
 
-    def __init__(self, io: Port, owned: bool) -> None:
+    def __init__(self, io: Port, owned: bool, fair: bool = False) -> None:
         self.io = io
         self.write = io.write  # bound once: a plain command's one call of the port
         self.input = Incoming(io)  # what replies are read from: bytes put back, bytes taken, the deadline
         self.owned = owned  # opened by the robot, so closed by it too
         # Re-entrant: a signal landing between a command's `acquire` and its `try` leaves the lock
         # held by the interrupted thread, which must still write the terminate hook's stop command.
-        self.lock = threading.RLock()
+        # Fair when a connection on it is `threading dual` or `multiple`: made so here, before any
+        # write binds the lock.
+        self.lock: _Lock = _FairLock() if fair else threading.RLock()
 
 
 class _Link:

@@ -19,7 +19,7 @@ from rdisc.engine.exchange import Exchange
 from rdisc.engine.operations import EVAL_ERRORS
 from rdisc.engine.plans import Call, Device, Hook, Input, Interface, KeyedReply, Primitive, Request
 from rdisc.engine.ports import PortSpec, Simulator, _Link, _open_port, _Port, _write_timed_out
-from rdisc.engine.schedule import _Worker
+from rdisc.engine.schedule import _connection_workers, _Worker
 from rdisc.engine.values import (
     Args,
     ErrorCallback,
@@ -373,7 +373,7 @@ class Robot(Exchange):
                 self._written = {name: (plan, plan.request) for name, plan in self.device.primitives.items()
                                  if plan.request is not None}
             self.startup()
-            self._workers = [_Worker(self, c) for c in self.device.connections.values()]
+            self._workers = [w for c in self.device.connections.values() for w in _connection_workers(self, c)]
             for worker in self._workers:
                 if threads:
                     worker.start()
@@ -415,7 +415,7 @@ class Robot(Exchange):
         end = math.inf if seconds is None else sim.now() + seconds
         ticks = dict.fromkeys(self._workers, 0)  # each periodic connection's next tick
         while True:
-            due = {w: w._start + k * w.period if w.connection.periodic else w._keepalive_due if w.interval else math.inf
+            due = {w: w._start + k * w.period if w.periodic else w._keepalive_due if w.interval else math.inf
                    for w, k in ticks.items()}
             wake = min(due.values(), default=math.inf)
             if wake > end:
@@ -425,7 +425,7 @@ class Robot(Exchange):
             for worker, when in due.items():
                 if when <= wake:
                     worker.tick()  # as the thread's loop: a tick already past is skipped
-                    if worker.connection.periodic:
+                    if worker.periodic:
                         late = math.ceil((sim.now() - worker._start) / worker.period - 1e-9)
                         ticks[worker] = max(ticks[worker] + 1, late)
 
@@ -493,6 +493,8 @@ class Robot(Exchange):
                 if connection.address is None:
                     raise ValueError(f"no port given for connection {name!r}, which has no `address`")
                 given[name] = connection.address
+        fair = {os.fspath(where) if isinstance(where, (str, os.PathLike)) else id(where)  # ports handed over in turn
+                for name, where in given.items() if connections[name].threading != "single"}
         opened: dict[object, _Port] = {}
         for name, where in given.items():
             by_name = isinstance(where, (str, os.PathLike))
@@ -502,7 +504,7 @@ class Robot(Exchange):
                 setting = connection.baud_setting  # an int setting: the checker holds it to that type
                 baud: Any = self._state[setting] if setting is not None else connection.baud
                 io = _open_port(connection, os.fspath(where), self.timeout, baud) if by_name else where
-                opened[key] = _Port(io, owned=by_name)
+                opened[key] = _Port(io, owned=by_name, fair=key in fair)
             self._links[name] = _Link(connections[name], opened[key])
             self._ports[name] = opened[key]
         self._choose_write()

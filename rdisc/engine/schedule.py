@@ -1,5 +1,11 @@
-"""The schedule of a connection: its periodic interfaces and keepalive, each run on the
-connection's own thread when due, never in a burst.
+"""The schedule of a connection: its periodic interfaces and keepalive, each run on a
+thread of the connection when due, never in a burst, by its threading model.
+
+`single`: one thread, and a tick holds the port, so a host's command waits for the whole
+tick. `dual`: one thread for the periodic work, which takes the port for each exchange
+only, so a command waits for at most the exchange in flight. `multiple`: a thread for each
+periodic interface at its own rate (and one for the keepalive), each taking the port for
+each exchange.
 """
 
 from __future__ import annotations
@@ -7,11 +13,12 @@ from __future__ import annotations
 import math
 import threading
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from typing import Protocol
 
 from rdisc.engine.errors import RdisConnectionError
 from rdisc.engine.plans import Connection, Hook, Interface
+from rdisc.engine.ports import _Port
 from rdisc.engine.values import Args
 
 
@@ -23,14 +30,31 @@ class _Owner(Protocol):
     _closed: bool
     _run_callbacks: list[Callable[[str, str, str], object]]
 
+    @property
+    def _ports(self) -> Mapping[str, _Port]: ...
+
     def _interface(self, plan: Interface, args: Args) -> None: ...
     def _hook(self, hook: Hook) -> None: ...
     def _notify_run(self, connection: str, kind: str, name: str) -> None: ...
     def _report(self, error: BaseException) -> None: ...
 
 
+def _connection_workers(robot: _Owner, connection: Connection) -> list[_Worker]:
+    """The threads' work of a connection by its threading model: one worker under `single` and
+    `dual`; under `multiple` one for each periodic interface, at its rate (0: the connection's),
+    and one for the keepalive. Under `dual` and `multiple` the port's lock is a fair one (`ports._FairLock`)."""
+    if connection.threading != "multiple":
+        return [_Worker(robot, connection)]
+    rates = connection.rates or (0.0,) * len(connection.periodic)
+    made = [_Worker(robot, connection, (interface,), rate or connection.frequency, keepalive=False)
+            for interface, rate in zip(connection.periodic, rates)]
+    if connection.keepalive is not None and connection.interval:
+        made.append(_Worker(robot, connection, (), 0.0))
+    return made or [_Worker(robot, connection, (), 0.0)]
+
+
 class _Worker:
-    """One connection's own work (its periodic interfaces, its keepalive) and when it is due.
+    """A thread's work on a connection (periodic interfaces, the keepalive) and when it is due.
 
     Tick k is due at start + k / frequency; a tick already past when the previous one
     ends is skipped, not run in a burst. The keepalive is due one interval after start,
@@ -39,11 +63,15 @@ class _Worker:
     at once when stopped.
     """
 
-    def __init__(self, robot: _Owner, connection: Connection) -> None:
+    def __init__(self, robot: _Owner, connection: Connection, periodic: tuple[Interface, ...] | None = None,
+                 frequency: float | None = None, *, keepalive: bool = True) -> None:
         self.robot = robot
         self.connection = connection
-        self.period = 1.0 / connection.frequency if connection.frequency > 0 else math.inf
-        self.interval = connection.interval if connection.keepalive is not None else 0.0
+        self.periodic = connection.periodic if periodic is None else periodic
+        frequency = connection.frequency if frequency is None else frequency
+        self.period = 1.0 / frequency if frequency > 0 else math.inf
+        self.interval = connection.interval if keepalive and connection.keepalive is not None else 0.0
+        self.whole = connection.threading == "single"  # a tick holds the port
         self._lock = threading.Lock()
         self._stop = threading.Event()
         self._thread: threading.Thread | None = None
@@ -57,9 +85,22 @@ class _Worker:
 
     def tick(self) -> None:
         """One iteration: each periodic interface, then the keepalive if it is due. Errors go
-        to the error callbacks, and the schedule goes on."""
+        to the error callbacks, and the schedule goes on. Under `single` the tick holds the
+        port (re-entrant: its exchanges take it again), so another thread's command waits for
+        the whole tick; one made by a callback on this thread goes in between."""
+        port = self.robot._ports.get(self.connection.name) if self.whole else None
+        if port is None:  # dual, multiple, or a simulated device: no port to hold
+            self._tick()
+            return
+        port.lock.acquire()
+        try:
+            self._tick()
+        finally:
+            port.lock.release()
+
+    def _tick(self) -> None:
         robot = self.robot
-        for interface in self.connection.periodic:
+        for interface in self.periodic:
             if self._stop.is_set():
                 return
             if robot._run_callbacks:
@@ -92,8 +133,10 @@ class _Worker:
     def start(self) -> None:
         self.restart_clock()
         # Kept before it starts: a signal may interrupt `start()` once the thread exists.
-        self._thread = threading.Thread(target=self._loop, name=f"{self.robot.name} {self.connection.name}",
-                                        daemon=True)
+        name = f"{self.robot.name} {self.connection.name}"
+        if self.connection.threading == "multiple":
+            name += f" {self.periodic[0].name if self.periodic else 'keepalive'}"
+        self._thread = threading.Thread(target=self._loop, name=name, daemon=True)
         self._thread.start()
 
     def stop(self) -> None:
@@ -107,7 +150,7 @@ class _Worker:
                 pass
 
     def _loop(self) -> None:
-        periodic = bool(self.connection.periodic)
+        periodic = bool(self.periodic)
         if not periodic and not self.interval:
             self._stop.wait()
             return

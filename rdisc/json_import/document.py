@@ -54,8 +54,9 @@ _SECTIONS = {  # list member: (its elements in words, the RDIS keyword declaring
 }
 _STATE = ("name", "type", "value", "doc")
 _SETTING = ("name", "type", "range", "value", "doc")
+THREADINGS = ("singleThreading", "dualThreading", "multipleThreading")  # the threading models, one a connection
 _CONNECTION = (
-    "name", "baud", "dataBits", "parity", "stopBits", "singleThreading", "startup", "terminate", "keepalive",
+    "name", "baud", "dataBits", "parity", "stopBits", *THREADINGS, "startup", "terminate", "keepalive",
     "terminator", "address", "doc",
 )  # fmt: skip
 DEFAULT_BAUD = 9600  # thesis Appendix A; written out, so the .rdis says what the robot gets
@@ -244,18 +245,23 @@ class Importer(Primitives, Interfaces, Body):
         if "stopBits" in m:
             bits = self.expr(m["stopBits"], "float")
             attrs.append(None if bits is None else ast.StopBits(bits, bits.span))
-        threading = self.object(m.get("singleThreading"), "`singleThreading`")
+        given = [key for key in THREADINGS if key in m]
+        for extra in given[1:]:
+            self.error(m[extra].span, f"a connection has one threading model: `{given[0]}` or `{extra}`")
+        key = given[0] if given else "singleThreading"
+        threading = self.object(m.get(key), f"`{key}`")
+        model = key.removesuffix("Threading")
         if threading is None:
             attrs.append(
                 ast.Threading(ast.Ident("single", brace), ast.IntLit(DEFAULT_FREQUENCY_HZ, brace), brace)
             )
         else:
-            t = self.members(threading, "`singleThreading`", ("freqHz",))
+            t = self.members(threading, f"`{key}`", ("freqHz",))
             hz = self.required(
-                threading, t, "freqHz", "`singleThreading`", lambda v, _: self.expr(v, "float")
+                threading, t, "freqHz", f"`{key}`", lambda v, _: self.expr(v, "float")
             )
             attrs.append(
-                None if hz is None else ast.Threading(ast.Ident("single", threading.span), hz, threading.span)
+                None if hz is None else ast.Threading(ast.Ident(model, threading.span), hz, threading.span)
             )
         for event in ("startup", "terminate", "keepalive"):
             hook = self.object(m.get(event), f"`{event}`")

@@ -15,7 +15,7 @@ from rdisc.syntax import ast
 from rdisc.syntax.printer import print_expr
 
 _INTERFACE = (
-    "name", "type", "parameters", "parameterTypes", "parameterRanges", "parameterDefaults", "parameterUnits",
+    "name", "type", "rateHz", "parameters", "parameterTypes", "parameterRanges", "parameterDefaults", "parameterUnits",
     "primitiveCalls", "triggers", "doc",
 )  # fmt: skip
 _CALL = ("name", "arguments", "delay", "priority", "when", "until", "every", "within")
@@ -36,7 +36,10 @@ class Interfaces(Expressions, ErrorModels):
         if kind is not None and kind.value not in ("adhoc", "periodic"):
             self.error(kind.span, f"an interface's `type` is `adhoc` or `periodic`, not {kind.raw}")
         elif kind is not None and kind.value == "periodic":  # adhoc is the default, left unsaid
-            clauses.append(ast.Kind("periodic", kind.span))
+            rate = self.expr(m["rateHz"], "float") if "rateHz" in m else None
+            clauses.append(ast.Kind("periodic", kind.span, rate))
+        if "rateHz" in m and (kind is None or kind.value != "periodic"):
+            self.error(m["rateHz"].span, "`rateHz` is a periodic interface's own rate: its `type` is `periodic`")
         if "triggers" in m:  # an output's name, as in the thesis, or a list of them
             value = m["triggers"]
             items = self.array(value, "`triggers`") if isinstance(value, JArray) else [value]

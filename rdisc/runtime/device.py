@@ -213,5 +213,5 @@ class _Engine:
         return engine.Connection(
             c.name, c.baud, c.address, c.terminator, c.frequency, tuple(self.interface(i) for i in c.periodic),
             hook(c.startup), hook(c.terminate), hook(c.keepalive), c.interval, c.baud_setting,
-            c.data_bits, c.parity, c.stop_bits,
+            c.data_bits, c.parity, c.stop_bits, c.threading, c.rates,
         )

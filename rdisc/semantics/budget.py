@@ -3,7 +3,8 @@
 From the baud rate (10 bits a byte at 8N1, 12 at 8E2: the connection's serial line), each primitive's bytes on the wire
 (request and reply), the periodic interfaces run every tick, the keepalive run
 every interval and the declared delays, warn when the scheduled traffic exceeds
-the link (W401) or a schedule's period is shorter than its exchange (W402).
+the link (W401) or a schedule's period is shorter than its exchange (W402). Under `threading
+multiple` each periodic interface is its own thread: its work is held to its own period.
 ASCII messages are counted at their shortest, so a warning is never a false alarm.
 """
 
@@ -48,6 +49,12 @@ class ConnectionBudget:
     keepalive_interval_ms: float | None
     baud_setting: str | None = None  # the setting giving the baud rate: `baud` is its default
     bits_per_byte: float = 10  # on the wire, a start bit and the serial line's character
+    threading: str = "single"  # single and dual: one thread runs every periodic exchange each tick
+    rates: tuple[float, ...] = ()  # each periodic exchange's runs a second (`Connection.rate_of`)
+
+    def rate(self, index: int) -> float:
+        """Runs a second of the periodic exchange `index`."""
+        return self.rates[index] if index < len(self.rates) else self.frequency_hz
 
     @property
     def baud_text(self) -> str:
@@ -70,7 +77,7 @@ class ConnectionBudget:
     @property
     def load(self) -> float:
         """Bytes per second scheduled on the link."""
-        per_tick = sum(e.bytes for e in self.periodic) * self.frequency_hz
+        per_tick = sum(e.bytes * self.rate(i) for i, e in enumerate(self.periodic))
         if self.keepalive and self.keepalive_interval_ms:
             per_tick += self.keepalive.bytes * 1000.0 / self.keepalive_interval_ms
         return per_tick
@@ -78,8 +85,15 @@ class ConnectionBudget:
     def lines(self) -> list[str]:
         """The budget in words, for `rdisc check --verbose`."""
         out = [f"connection `{self.connection}`: {self.baud_text}, {self.capacity:g} bytes/s"]
-        if self.periodic:
-            out.append(f"  every tick ({self.frequency_hz:g} Hz, {self.tick_ms:.1f} ms):")
+        if self.periodic and self.threading == "multiple":
+            for i, e in enumerate(self.periodic):  # a thread each, held to its own period
+                hz = self.rate(i)
+                out.append(f"  thread `{e.interface}` ({hz:g} Hz, {1000.0 / hz:.1f} ms):")
+                out.append(f"    {_exchange(e)}")
+                out.append(f"    {e.total_ms:.2f} ms of {1000.0 / hz:.1f} ms per run")
+        elif self.periodic:
+            dual = " on the periodic thread (a command waits for one exchange at most)" if self.threading == "dual" else ""
+            out.append(f"  every tick ({self.frequency_hz:g} Hz, {self.tick_ms:.1f} ms){dual}:")
             out += [f"    {_exchange(e)}" for e in self.periodic]
             out.append(f"    {self.tick_ms_needed:.2f} ms of {self.tick_ms:.1f} ms per tick")
         if self.keepalive and self.keepalive_interval_ms:
@@ -105,16 +119,27 @@ def budget(model: m.Model, diagnostics: Diagnostics) -> list[ConnectionBudget]:
             if iface.periodic and model.owner(iface) == conn.name
         )
         keepalive = exchange(model, model.interfaces[conn.keepalive.call.interface], conn.name) if conn.keepalive else None
+        rates = tuple(conn.rate_of(iface) for iface in model.interfaces.values()
+                      if iface.periodic and model.owner(iface) == conn.name)
         b = ConnectionBudget(conn.name, conn.baud, conn.frequency_hz, periodic, keepalive,
                              conn.keepalive.interval_ms if conn.keepalive else None, conn.baud_setting,
-                             conn.bits_per_byte())
+                             conn.bits_per_byte(), conn.threading, rates)
         _warn(model, conn, b, diagnostics)
         budgets.append(b)
     return budgets
 
 
 def _warn(model: m.Model, conn: m.Connection, b: ConnectionBudget, diagnostics: Diagnostics) -> None:
-    if b.periodic and b.tick_ms_needed > b.tick_ms:
+    for i, e in enumerate(b.periodic if b.threading == "multiple" else ()):  # each thread its own period
+        hz = b.rate(i)
+        if e.total_ms > 1000.0 / hz:
+            diagnostics.report(
+                "W402", model.interfaces[e.interface].span,
+                f"the periodic work of `{e.interface}` (its own thread on `{conn.name}`) takes {e.total_ms:.2f} ms "
+                f"per run, longer than its {1000.0 / hz:.1f} ms period ({hz:g} Hz)",
+                help="lower its rate, shorten the delays, or read less per run",
+            )
+    if b.threading != "multiple" and b.periodic and b.tick_ms_needed > b.tick_ms:
         first = model.interfaces[b.periodic[0].interface]
         diagnostics.report(
             "W402", first.span,

@@ -56,6 +56,8 @@ def _init_ConnectionBudget(
     keepalive_interval_ms: Any,
     baud_setting: Any = DEFAULT,
     bits_per_byte: Any = DEFAULT,
+    threading: Any = DEFAULT,
+    rates: Any = DEFAULT,
 ) -> None:
     _set(self, "connection", connection)
     _set(self, "baud", baud)
@@ -65,10 +67,12 @@ def _init_ConnectionBudget(
     _set(self, "keepalive_interval_ms", keepalive_interval_ms)
     _set(self, "baud_setting", baud_setting)
     _set(self, "bits_per_byte", bits_per_byte)
+    _set(self, "threading", threading)
+    _set(self, "rates", rates)
 
 
 def _repr_ConnectionBudget(self: Any) -> str:
-    return f"{self.__class__.__qualname__}(connection={self.connection!r}, baud={self.baud!r}, frequency_hz={self.frequency_hz!r}, periodic={self.periodic!r}, keepalive={self.keepalive!r}, keepalive_interval_ms={self.keepalive_interval_ms!r}, baud_setting={self.baud_setting!r}, bits_per_byte={self.bits_per_byte!r})"
+    return f"{self.__class__.__qualname__}(connection={self.connection!r}, baud={self.baud!r}, frequency_hz={self.frequency_hz!r}, periodic={self.periodic!r}, keepalive={self.keepalive!r}, keepalive_interval_ms={self.keepalive_interval_ms!r}, baud_setting={self.baud_setting!r}, bits_per_byte={self.bits_per_byte!r}, threading={self.threading!r}, rates={self.rates!r})"
 
 
 def _eq_ConnectionBudget(self: Any, other: Any) -> Any:
@@ -82,6 +86,8 @@ def _eq_ConnectionBudget(self: Any, other: Any) -> Any:
             self.keepalive_interval_ms,
             self.baud_setting,
             self.bits_per_byte,
+            self.threading,
+            self.rates,
         ) == (
             other.connection,
             other.baud,
@@ -91,6 +97,8 @@ def _eq_ConnectionBudget(self: Any, other: Any) -> Any:
             other.keepalive_interval_ms,
             other.baud_setting,
             other.bits_per_byte,
+            other.threading,
+            other.rates,
         )
     return NotImplemented
 
@@ -105,6 +113,8 @@ def _hash_ConnectionBudget(self: Any) -> int:
         self.keepalive_interval_ms,
         self.baud_setting,
         self.bits_per_byte,
+        self.threading,
+        self.rates,
     ))
 
 
@@ -128,6 +138,8 @@ WRITTEN: dict[str, Written] = {
             ("keepalive_interval_ms", MISSING),
             ("baud_setting", DEFAULT),
             ("bits_per_byte", DEFAULT),
+            ("threading", DEFAULT),
+            ("rates", DEFAULT),
         ),
         {
             "__init__": _init_ConnectionBudget,

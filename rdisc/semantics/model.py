@@ -343,9 +343,16 @@ class Connection:
     data_bits: int = 8  # a serial line's character: data bits, parity, stop bits (8N1 unless said)
     parity: str = "none"  # none, even, odd, mark or space
     stop_bits: float = 1  # 1, 1.5 or 2
+    threading: str = "single"  # single, dual or multiple (rdisc.engine.schedule)
 
     def terminator_bytes(self) -> bytes:
         return self.terminator.encode("latin-1")
+
+    def rate_of(self, interface: Interface) -> float:
+        """Runs a second of a periodic interface of this connection: its own rate under
+        `threading multiple` when it states one, else the connection's frequency."""
+        own = interface.rate_hz if self.threading == "multiple" else None
+        return own or self.frequency_hz
 
     def line_text(self) -> str:
         """The serial line's character as it is usually written: `8N1`, `8E2`, `5N1.5`."""
@@ -915,6 +922,7 @@ class Interface:
     triggers: tuple[OutputRef, ...] = ()  # delivered in this order after the calls
     doc: str | None = None
     span: Span | None = _span
+    rate_hz: float | None = None  # its own rate (`periodic 10 Hz`), under `threading multiple`
 
     def run_order(self) -> tuple[PrimitiveCall, ...]:
         """Calls by priority, then as written (a stable sort)."""

@@ -625,6 +625,7 @@ def _init_Connection(
     data_bits: Any = DEFAULT,
     parity: Any = DEFAULT,
     stop_bits: Any = DEFAULT,
+    threading: Any = DEFAULT,
 ) -> None:
     _set(self, "name", name)
     _set(self, "kind", kind)
@@ -641,10 +642,11 @@ def _init_Connection(
     _set(self, "data_bits", data_bits)
     _set(self, "parity", parity)
     _set(self, "stop_bits", stop_bits)
+    _set(self, "threading", threading)
 
 
 def _repr_Connection(self: Any) -> str:
-    return f"{self.__class__.__qualname__}(name={self.name!r}, kind={self.kind!r}, baud={self.baud!r}, frequency_hz={self.frequency_hz!r}, startup={self.startup!r}, terminate={self.terminate!r}, keepalive={self.keepalive!r}, doc={self.doc!r}, terminator={self.terminator!r}, address={self.address!r}, baud_setting={self.baud_setting!r}, data_bits={self.data_bits!r}, parity={self.parity!r}, stop_bits={self.stop_bits!r})"
+    return f"{self.__class__.__qualname__}(name={self.name!r}, kind={self.kind!r}, baud={self.baud!r}, frequency_hz={self.frequency_hz!r}, startup={self.startup!r}, terminate={self.terminate!r}, keepalive={self.keepalive!r}, doc={self.doc!r}, terminator={self.terminator!r}, address={self.address!r}, baud_setting={self.baud_setting!r}, data_bits={self.data_bits!r}, parity={self.parity!r}, stop_bits={self.stop_bits!r}, threading={self.threading!r})"
 
 
 def _eq_Connection(self: Any, other: Any) -> Any:
@@ -664,6 +666,7 @@ def _eq_Connection(self: Any, other: Any) -> Any:
             self.data_bits,
             self.parity,
             self.stop_bits,
+            self.threading,
         ) == (
             other.name,
             other.kind,
@@ -679,6 +682,7 @@ def _eq_Connection(self: Any, other: Any) -> Any:
             other.data_bits,
             other.parity,
             other.stop_bits,
+            other.threading,
         )
     return NotImplemented
 
@@ -699,6 +703,7 @@ def _hash_Connection(self: Any) -> int:
         self.data_bits,
         self.parity,
         self.stop_bits,
+        self.threading,
     ))
 
 
@@ -1816,6 +1821,7 @@ def _init_Interface(
     triggers: Any = DEFAULT,
     doc: Any = DEFAULT,
     span: Any = DEFAULT,
+    rate_hz: Any = DEFAULT,
 ) -> None:
     _set(self, "name", name)
     _set(self, "params", params)
@@ -1824,10 +1830,11 @@ def _init_Interface(
     _set(self, "triggers", triggers)
     _set(self, "doc", doc)
     _set(self, "span", span)
+    _set(self, "rate_hz", rate_hz)
 
 
 def _repr_Interface(self: Any) -> str:
-    return f"{self.__class__.__qualname__}(name={self.name!r}, params={self.params!r}, periodic={self.periodic!r}, calls={self.calls!r}, triggers={self.triggers!r}, doc={self.doc!r})"
+    return f"{self.__class__.__qualname__}(name={self.name!r}, params={self.params!r}, periodic={self.periodic!r}, calls={self.calls!r}, triggers={self.triggers!r}, doc={self.doc!r}, rate_hz={self.rate_hz!r})"
 
 
 def _eq_Interface(self: Any, other: Any) -> Any:
@@ -1839,6 +1846,7 @@ def _eq_Interface(self: Any, other: Any) -> Any:
             self.calls,
             self.triggers,
             self.doc,
+            self.rate_hz,
         ) == (
             other.name,
             other.params,
@@ -1846,12 +1854,13 @@ def _eq_Interface(self: Any, other: Any) -> Any:
             other.calls,
             other.triggers,
             other.doc,
+            other.rate_hz,
         )
     return NotImplemented
 
 
 def _hash_Interface(self: Any) -> int:
-    return hash((self.name, self.params, self.periodic, self.calls, self.triggers, self.doc))
+    return hash((self.name, self.params, self.periodic, self.calls, self.triggers, self.doc, self.rate_hz))
 
 
 def _init_AdapterField(
@@ -2804,6 +2813,7 @@ WRITTEN: dict[str, Written] = {
             ("data_bits", DEFAULT),
             ("parity", DEFAULT),
             ("stop_bits", DEFAULT),
+            ("threading", DEFAULT),
         ),
         {
             "__init__": _init_Connection,
@@ -3181,6 +3191,7 @@ WRITTEN: dict[str, Written] = {
             ("triggers", DEFAULT),
             ("doc", DEFAULT),
             ("span", FieldSpec(None, MISSING, False, False)),
+            ("rate_hz", DEFAULT),
         ),
         {
             "__init__": _init_Interface,

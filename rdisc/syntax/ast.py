@@ -515,6 +515,7 @@ class PrimitiveDecl:
 class Kind:
     word: str  # "periodic" | "adhoc"
     span: Span = _span
+    rate: Expr | None = None  # `periodic 10 Hz`: its own rate (Hz), under `threading multiple`
 
 
 @dataclass(frozen=True, slots=True)

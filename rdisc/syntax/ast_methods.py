@@ -1287,23 +1287,24 @@ def _hash_PrimitiveDecl(self: Any) -> int:
     return hash((self.name, self.params, self.clauses, self.doc))
 
 
-def _init_Kind(self: Any, word: Any, span: Any = DEFAULT) -> None:
+def _init_Kind(self: Any, word: Any, span: Any = DEFAULT, rate: Any = DEFAULT) -> None:
     _set(self, "word", word)
     _set(self, "span", span)
+    _set(self, "rate", rate)
 
 
 def _repr_Kind(self: Any) -> str:
-    return f"{self.__class__.__qualname__}(word={self.word!r})"
+    return f"{self.__class__.__qualname__}(word={self.word!r}, rate={self.rate!r})"
 
 
 def _eq_Kind(self: Any, other: Any) -> Any:
     if other.__class__ is self.__class__:
-        return (self.word,) == (other.word,)
+        return (self.word, self.rate) == (other.word, other.rate)
     return NotImplemented
 
 
 def _hash_Kind(self: Any) -> int:
-    return hash((self.word,))
+    return hash((self.word, self.rate))
 
 
 def _init_Triggers(self: Any, outputs: Any, span: Any = DEFAULT) -> None:
@@ -2885,7 +2886,7 @@ WRITTEN: dict[str, Written] = {
         },
     ),
     "Kind": Written(
-        (("word", MISSING), ("span", FieldSpec(None, MISSING, False, False))),
+        (("word", MISSING), ("span", FieldSpec(None, MISSING, False, False)), ("rate", DEFAULT)),
         {"__init__": _init_Kind, "__repr__": _repr_Kind, "__eq__": _eq_Kind, "__hash__": _hash_Kind},
     ),
     "Triggers": Written(

@@ -343,6 +343,9 @@ class Rules:
     def kind(self, meta: Meta, c: list[Any]) -> ast.Kind:
         return ast.Kind(c[0], self.b.span(meta))
 
+    def periodic_rate(self, meta: Meta, c: list[Any]) -> ast.Kind:
+        return ast.Kind("periodic", self.b.span(meta), c[0])
+
     def triggers(self, meta: Meta, c: list[Any]) -> ast.Triggers:
         return ast.Triggers(tuple(self.b.ident(n) for n in c), self.b.span(meta))
 

@@ -303,8 +303,8 @@ def _connection_attr(a: ast.ConnectionAttr) -> str:
 
 def _interface_clause(c: ast.InterfaceClause) -> str:
     match c:
-        case ast.Kind(word):
-            return word
+        case ast.Kind(word, _, rate):
+            return word if rate is None else f"{word} {print_expr(rate)} Hz"
         case ast.Triggers(outputs):
             return "triggers " + ", ".join(o.text for o in outputs)
         case _:

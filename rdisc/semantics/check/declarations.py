@@ -32,6 +32,7 @@ DATA_BITS = (5, 6, 7, 8)
 STOP_BITS = (1, 1.5, 2)
 DEFAULT_BAUD = 9600
 DEFAULT_FREQUENCY_HZ = 10.0
+THREADING_MODELS = ("single", "dual", "multiple")  # a tick holds the port; each exchange does; a thread each
 
 
 class Declarations(Pieces):
@@ -240,9 +241,9 @@ class Declarations(Pieces):
         threading = self.once([a for a in decl.attrs if isinstance(a, ast.Threading)], "`threading`", name)
         frequency: float | None = DEFAULT_FREQUENCY_HZ
         if isinstance(threading, ast.Threading):
-            if threading.model.text != "single":
+            if threading.model.text not in THREADING_MODELS:
                 self.d.report("E209", threading.model.span, f"unknown threading model `{threading.model.text}`",
-                              help="threading is `single`: one thread per connection")
+                              help="threading is `single`, `dual` or `multiple`")
             frequency = self.setting(threading.frequency, "the frequency", MAX_FREQUENCY_HZ, " Hz")
             if frequency is not None and frequency <= 0:
                 self.d.report("E204", threading.frequency.span, f"the frequency must be positive, not {frequency:g} Hz")
@@ -280,6 +281,7 @@ class Declarations(Pieces):
         return m.Connection(
             name.text, decl.kind.text, int(baud or 0), float(frequency or 0), hooks["startup"], hooks["terminate"],
             keepalive, decl.doc, decl.span, terminator, address, baud_setting, data_bits, parity, stop_bits,
+            threading.model.text if isinstance(threading, ast.Threading) else "single",
         )
 
     def serial_line(self, decl: ast.ConnectionDecl) -> tuple[int, str, float]:

@@ -9,6 +9,7 @@ from collections.abc import Iterator, Sequence
 from rdisc.diagnostics import Label
 from rdisc.frozen import field_names, replace
 from rdisc.semantics import model as m
+from rdisc.semantics.check.declarations import MAX_FREQUENCY_HZ
 from rdisc.semantics.check.layouts import Layouts
 from rdisc.semantics.check.noise import errors
 from rdisc.semantics.model import Scope, Type
@@ -59,8 +60,11 @@ class Interfaces(Layouts):
         env = self.env_with(scope, "in an interface", "its parameters and state variables")
         calls: list[m.PrimitiveCall] = []
         self.body(decl.body, _Unrolling(decl, env, interface_params, primitives, calls), {})
+        rate = None
         if periodic:
-            self.periodic_connection(decl)
+            connection = self.periodic_connection(decl)
+            if isinstance(kind, ast.Kind) and kind.rate is not None:
+                rate = self.periodic_rate(decl, kind.rate, connection)
         outputs: dict[str, ast.Ident] = {}
         for output in triggers.outputs if isinstance(triggers, ast.Triggers) else ():
             if output.text in outputs:
@@ -68,7 +72,7 @@ class Interfaces(Layouts):
                               labels=(Label(outputs[output.text].span, "first given here"),))
             outputs.setdefault(output.text, output)
         out_ref = tuple(m.OutputRef(o) for o in outputs)
-        return m.Interface(name.text, params, periodic, tuple(calls), out_ref, decl.doc, decl.span)
+        return m.Interface(name.text, params, periodic, tuple(calls), out_ref, decl.doc, decl.span, rate)
 
     def body(self, stmts: tuple[ast.BodyStmt, ...], u: _Unrolling, loops: dict[str, ast.Ident]) -> None:
         """An interface's statements as plain calls: each loop written out, its variable a constant
@@ -205,7 +209,26 @@ class Interfaces(Layouts):
         for name in interfaces:
             visit(name, [])
 
-    def periodic_connection(self, decl: ast.InterfaceDecl) -> None:
+    def periodic_rate(self, decl: ast.InterfaceDecl, rate: ast.Expr, connection: str | None) -> float | None:
+        """A periodic interface's own rate (`periodic 10 Hz`): positive, bounded as a connection's
+        frequency, and used only on a connection of `threading multiple` (W230 elsewhere)."""
+        value = self.setting(rate, "the rate", MAX_FREQUENCY_HZ, " Hz")
+        if value is None:
+            return None
+        if value <= 0:
+            self.d.report("E204", rate.span, f"the rate must be positive, not {value:g} Hz")
+            return None
+        conn = self.s.connections.get(connection) if connection is not None else None
+        threading = next((a for a in conn.attrs if isinstance(a, ast.Threading)), None) if conn is not None else None
+        model = threading.model.text if threading is not None else "single"
+        if conn is not None and model in ("single", "dual"):  # another is E209
+            self.d.report("W230", rate.span, f"`{decl.name.text}` states its own rate, but `{conn.name.text}` is "
+                          f"`threading {model}`: it runs at the connection's frequency",
+                          help=f"write `threading multiple` on `{conn.name.text}`, or leave the rate out")
+        return value
+
+    def periodic_connection(self, decl: ast.InterfaceDecl) -> str | None:
+        """The connection a periodic interface runs on (None: unknown, or in error: reported)."""
         used: dict[str, ast.Ident] = {}
         for stmt, prim in self.primitives_called(decl, set()):
             on = next((c for c in prim.clauses if isinstance(c, ast.On)), None)
@@ -221,6 +244,9 @@ class Interfaces(Layouts):
         elif not used and len(self.s.connections) > 1 and not decl.body:
             self.d.report("E208", decl.name.span,
                           f"periodic interface `{decl.name.text}` calls no primitive, so its connection is unknown")
+        if len(used) == 1:
+            return next(iter(used))
+        return next(iter(self.s.connections)) if len(self.s.connections) == 1 and not used else None
 
     def primitives_called(self, decl: ast.InterfaceDecl,
                           seen: set[str]) -> Iterator[tuple[ast.CallStmt, ast.PrimitiveDecl]]:

@@ -2418,6 +2418,8 @@ class Connection:
     data_bits: int = 8  # the serial line's character: 8N1 unless the description says otherwise
     parity: str = "none"  # none, even, odd, mark or space
     stop_bits: float = 1  # 1, 1.5 or 2
+    threading: str = "single"  # single: a tick holds the port; dual: each exchange does; multiple: a thread each
+    rates: tuple[float, ...] = ()  # under `multiple`, each periodic interface's ticks a second (0: `frequency`)
 
 
 @dataclass(frozen=True, slots=True)
@@ -2732,19 +2734,81 @@ class Simulator(Protocol):
     def now(self) -> float: ...
 
 
+class _Lock(Protocol):
+    """A port's exchange lock: re-entrant (a `threading.RLock`, or `schedule._FairLock`)."""
+
+    def acquire(self) -> bool: ...
+    def release(self) -> None: ...
+
+
+class _FairLock:
+    """A port's lock under `dual` and `multiple` (`fair`): re-entrant as the port's own, and handed over in
+    the order it was asked for. A plain lock lets the thread that releases it take it straight
+    back, so a periodic thread going from one exchange to the next could keep a waiting command
+    out for ever; this one gives the port to the command when the exchange in flight ends."""
+
+    __slots__ = ("_depth", "_guard", "_owner", "_queue")
+
+    def __init__(self) -> None:
+        self._guard = threading.Lock()
+        self._owner: int | None = None  # None only while nobody waits: a release hands it over
+        self._depth = 0
+        self._queue: deque[tuple[int, threading.Lock]] = deque()
+
+    def acquire(self) -> bool:
+        me = threading.get_ident()
+        with self._guard:
+            if self._owner == me:
+                self._depth += 1
+                return True
+            if self._owner is None:
+                self._owner, self._depth = me, 1
+                return True
+            gate = threading.Lock()
+            gate.acquire()
+            self._queue.append((me, gate))
+        try:
+            gate.acquire()  # released when the lock is handed to this thread
+        except BaseException:  # a signal's exception while waiting: leave the queue, or give it on
+            with self._guard:
+                if self._owner != me:
+                    self._queue.remove((me, gate))
+                    raise
+                self._depth = 1
+            self.release()
+            raise
+        return True
+
+    def release(self) -> None:
+        with self._guard:
+            if self._owner != threading.get_ident():
+                raise RuntimeError("cannot release a lock this thread does not hold")
+            self._depth -= 1
+            if self._depth:
+                return
+            if not self._queue:
+                self._owner = None
+                return
+            self._owner, gate = self._queue.popleft()
+            self._depth = 1
+        gate.release()
+
+
 class _Port:
     """One open port, shared by the connections given the same one, with its exchange lock."""
 
     __slots__ = ("input", "io", "lock", "owned", "write")
 
-    def __init__(self, io: Port, owned: bool) -> None:
+    def __init__(self, io: Port, owned: bool, fair: bool = False) -> None:
         self.io = io
         self.write = io.write  # bound once: a plain command's one call of the port
         self.input = Incoming(io)  # what replies are read from: bytes put back, bytes taken, the deadline
         self.owned = owned  # opened by the robot, so closed by it too
         # Re-entrant: a signal landing between a command's `acquire` and its `try` leaves the lock
         # held by the interrupted thread, which must still write the terminate hook's stop command.
-        self.lock = threading.RLock()
+        # Fair when a connection on it is `threading dual` or `multiple`: made so here, before any
+        # write binds the lock.
+        self.lock: _Lock = _FairLock() if fair else threading.RLock()
 
 
 class _Link:
@@ -2792,14 +2856,31 @@ class _Owner(Protocol):
     _closed: bool
     _run_callbacks: list[Callable[[str, str, str], object]]
 
+    @property
+    def _ports(self) -> Mapping[str, _Port]: ...
+
     def _interface(self, plan: Interface, args: Args) -> None: ...
     def _hook(self, hook: Hook) -> None: ...
     def _notify_run(self, connection: str, kind: str, name: str) -> None: ...
     def _report(self, error: BaseException) -> None: ...
 
 
+def _connection_workers(robot: _Owner, connection: Connection) -> list[_Worker]:
+    """The threads' work of a connection by its threading model: one worker under `single` and
+    `dual`; under `multiple` one for each periodic interface, at its rate (0: the connection's),
+    and one for the keepalive. Under `dual` and `multiple` the port's lock is a fair one (`ports._FairLock`)."""
+    if connection.threading != "multiple":
+        return [_Worker(robot, connection)]
+    rates = connection.rates or (0.0,) * len(connection.periodic)
+    made = [_Worker(robot, connection, (interface,), rate or connection.frequency, keepalive=False)
+            for interface, rate in zip(connection.periodic, rates)]
+    if connection.keepalive is not None and connection.interval:
+        made.append(_Worker(robot, connection, (), 0.0))
+    return made or [_Worker(robot, connection, (), 0.0)]
+
+
 class _Worker:
-    """One connection's own work (its periodic interfaces, its keepalive) and when it is due.
+    """A thread's work on a connection (periodic interfaces, the keepalive) and when it is due.
 
     Tick k is due at start + k / frequency; a tick already past when the previous one
     ends is skipped, not run in a burst. The keepalive is due one interval after start,
@@ -2808,11 +2889,15 @@ class _Worker:
     at once when stopped.
     """
 
-    def __init__(self, robot: _Owner, connection: Connection) -> None:
+    def __init__(self, robot: _Owner, connection: Connection, periodic: tuple[Interface, ...] | None = None,
+                 frequency: float | None = None, *, keepalive: bool = True) -> None:
         self.robot = robot
         self.connection = connection
-        self.period = 1.0 / connection.frequency if connection.frequency > 0 else math.inf
-        self.interval = connection.interval if connection.keepalive is not None else 0.0
+        self.periodic = connection.periodic if periodic is None else periodic
+        frequency = connection.frequency if frequency is None else frequency
+        self.period = 1.0 / frequency if frequency > 0 else math.inf
+        self.interval = connection.interval if keepalive and connection.keepalive is not None else 0.0
+        self.whole = connection.threading == "single"  # a tick holds the port
         self._lock = threading.Lock()
         self._stop = threading.Event()
         self._thread: threading.Thread | None = None
@@ -2826,9 +2911,22 @@ class _Worker:
 
     def tick(self) -> None:
         """One iteration: each periodic interface, then the keepalive if it is due. Errors go
-        to the error callbacks, and the schedule goes on."""
+        to the error callbacks, and the schedule goes on. Under `single` the tick holds the
+        port (re-entrant: its exchanges take it again), so another thread's command waits for
+        the whole tick; one made by a callback on this thread goes in between."""
+        port = self.robot._ports.get(self.connection.name) if self.whole else None
+        if port is None:  # dual, multiple, or a simulated device: no port to hold
+            self._tick()
+            return
+        port.lock.acquire()
+        try:
+            self._tick()
+        finally:
+            port.lock.release()
+
+    def _tick(self) -> None:
         robot = self.robot
-        for interface in self.connection.periodic:
+        for interface in self.periodic:
             if self._stop.is_set():
                 return
             if robot._run_callbacks:
@@ -2861,8 +2959,10 @@ class _Worker:
     def start(self) -> None:
         self.restart_clock()
         # Kept before it starts: a signal may interrupt `start()` once the thread exists.
-        self._thread = threading.Thread(target=self._loop, name=f"{self.robot.name} {self.connection.name}",
-                                        daemon=True)
+        name = f"{self.robot.name} {self.connection.name}"
+        if self.connection.threading == "multiple":
+            name += f" {self.periodic[0].name if self.periodic else 'keepalive'}"
+        self._thread = threading.Thread(target=self._loop, name=name, daemon=True)
         self._thread.start()
 
     def stop(self) -> None:
@@ -2876,7 +2976,7 @@ class _Worker:
                 pass
 
     def _loop(self) -> None:
-        periodic = bool(self.connection.periodic)
+        periodic = bool(self.periodic)
         if not periodic and not self.interval:
             self._stop.wait()
             return
@@ -4194,7 +4294,7 @@ class Robot(Exchange):
                 self._written = {name: (plan, plan.request) for name, plan in self.device.primitives.items()
                                  if plan.request is not None}
             self.startup()
-            self._workers = [_Worker(self, c) for c in self.device.connections.values()]
+            self._workers = [w for c in self.device.connections.values() for w in _connection_workers(self, c)]
             for worker in self._workers:
                 if threads:
                     worker.start()
@@ -4236,7 +4336,7 @@ class Robot(Exchange):
         end = math.inf if seconds is None else sim.now() + seconds
         ticks = dict.fromkeys(self._workers, 0)  # each periodic connection's next tick
         while True:
-            due = {w: w._start + k * w.period if w.connection.periodic else w._keepalive_due if w.interval else math.inf
+            due = {w: w._start + k * w.period if w.periodic else w._keepalive_due if w.interval else math.inf
                    for w, k in ticks.items()}
             wake = min(due.values(), default=math.inf)
             if wake > end:
@@ -4246,7 +4346,7 @@ class Robot(Exchange):
             for worker, when in due.items():
                 if when <= wake:
                     worker.tick()  # as the thread's loop: a tick already past is skipped
-                    if worker.connection.periodic:
+                    if worker.periodic:
                         late = math.ceil((sim.now() - worker._start) / worker.period - 1e-9)
                         ticks[worker] = max(ticks[worker] + 1, late)
 
@@ -4314,6 +4414,8 @@ class Robot(Exchange):
                 if connection.address is None:
                     raise ValueError(f"no port given for connection {name!r}, which has no `address`")
                 given[name] = connection.address
+        fair = {os.fspath(where) if isinstance(where, (str, os.PathLike)) else id(where)  # ports handed over in turn
+                for name, where in given.items() if connections[name].threading != "single"}
         opened: dict[object, _Port] = {}
         for name, where in given.items():
             by_name = isinstance(where, (str, os.PathLike))
@@ -4323,7 +4425,7 @@ class Robot(Exchange):
                 setting = connection.baud_setting  # an int setting: the checker holds it to that type
                 baud: Any = self._state[setting] if setting is not None else connection.baud
                 io = _open_port(connection, os.fspath(where), self.timeout, baud) if by_name else where
-                opened[key] = _Port(io, owned=by_name)
+                opened[key] = _Port(io, owned=by_name, fair=key in fair)
             self._links[name] = _Link(connections[name], opened[key])
             self._ports[name] = opened[key]
         self._choose_write()
