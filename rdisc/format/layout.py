@@ -5,7 +5,9 @@ The layout of each construct is the printer's: 4-space indents; a block (`robot`
 a primitive on one line when it fits in `WIDTH` columns, else one clause a line; post-actions
 `{ a = 1 }` inline when there is one, as a block when there are more; the parts inside `optional`,
 `either` and `bits` on one line, two spaces apart; an enum's members and a table's entries one a
-line, each with its comma. The one wrapping rule (`_fit`) generalises the printer's for a call
+line, each with its comma. The one-line rule (`_one_line`): a block, an enum or a table written
+on one line, no comment inside, stays on one line when it fits (the writer's choice, which
+formatting again keeps). The one wrapping rule (`_fit`) generalises the printer's for a call
 statement: a line longer than `WIDTH` has one bracketed list spread one item a line.
 
 Comments decide only where lines break: a construct with a comment inside takes its several-line
@@ -253,6 +255,7 @@ def _leaves(items: list[Child]) -> list[Leaf]:
 def _braced(out: Writer, opening: Child, items: list[Child], closing: Child, style: str) -> None:
     assert isinstance(opening, Leaf) and isinstance(closing, Leaf)
     inner = _inner_comments([opening, *_leaves(items), closing])
+    written = style
     if style == _ACTIONS and not inner and sum(isinstance(i, Node) for i in items) == 1:
         style = _INLINE
     elif style == _INLINE and inner:
@@ -272,6 +275,9 @@ def _braced(out: Writer, opening: Child, items: list[Child], closing: Child, sty
         out.space = 0
         out.put(closing)
         return
+    if written in (_BLOCK, _LIST) and not inner and _one_line(out, opening, items, closing, style):
+        _flat(out, opening, items, closing, style)
+        return
     out.put(opening)
     level = out.level
     if style == _LIST:
@@ -288,6 +294,31 @@ def _braced(out: Writer, opening: Child, items: list[Child], closing: Child, sty
             out.begin(level + 1)
             emit(out, item)
     out.close(closing, level)
+
+
+def _one_line(out: Writer, opening: Leaf, items: list[Child], closing: Leaf, style: str) -> bool:
+    """Whether a block or list stays on one line: it was written on one line (no line break
+    between its braces) and, on one line, its line fits in WIDTH columns."""
+    leaves = [*_leaves(items), closing]
+    if any(leaf.broken for leaf in leaves):
+        return False
+    scratch = Writer(comments=False)
+    scratch.started, scratch.last = True, out.last
+    scratch.text = " " * out.column() if out.fresh is not None else out.text
+    _flat(scratch, opening, items, closing, style)
+    lines = scratch.finish(_END)
+    return len(lines) == 1 and len(lines[0]) <= WIDTH
+
+
+def _flat(out: Writer, opening: Leaf, items: list[Child], closing: Leaf, style: str) -> None:
+    """A block on one line: `{ a = 1, b = 2 }`, `{ at [0, 0, 1]  axis [0, 1, 0] }` (its items two
+    spaces apart, as the parts of a run)."""
+    out.put(opening)
+    for i, item in enumerate(items):
+        if style != _LIST and i and isinstance(item, Node):
+            out.space = 2  # a block's items, as the parts of a run
+        emit(out, item)
+    out.put(closing)
 
 
 def _split(items: list[Child]) -> list[tuple[list[Child], Leaf | None]]:

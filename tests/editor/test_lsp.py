@@ -282,7 +282,8 @@ async def test_formatting_returns_edits_of_only_the_changed_lines_that_produce_r
         "    baud 115200", "  baud   115200")
     uri = await opened(client, tmp_path, "messy.rdis", messy)
     edits = await formatted_by(client, uri)
-    assert lines_of(edits) == [(5, 6), (8, 9)]  # the two changed lines, each replaced alone
+    state, baud = (canonical.splitlines().index(line) for line in ("state speed: int = 0", "    baud 115200"))
+    assert lines_of(edits) == [(state, state + 1), (baud, baud + 1)]  # the two changed lines, each alone
     assert applied(messy, edits) == canonical
     uri = await opened(client, tmp_path, "whole.rdis", BOT)
     assert applied(BOT, await formatted_by(client, uri)) == canonical
@@ -291,15 +292,16 @@ async def test_formatting_returns_edits_of_only_the_changed_lines_that_produce_r
 
 async def test_range_formatting_touches_only_the_declarations_in_the_range(
         client: LanguageClient, tmp_path: Path) -> None:
-    messy = "enum Op { ping = 1, read = 2 }\nconst   BROADCAST=0xFE\n\nconst   OTHER=0xFF   # kept\n"
+    messy = "enum Op { ping = 1,\n read = 2 }\nconst   BROADCAST=0xFE\n\nconst   OTHER=0xFF   # kept\n"
     uri = await opened(client, tmp_path, "range.rdis", messy)
-    inside_other = types.Range(start=types.Position(line=3, character=2), end=types.Position(line=3, character=4))
+    inside_other = types.Range(start=types.Position(line=4, character=2), end=types.Position(line=4, character=4))
     edits = await formatted_by(client, uri, inside_other)
-    assert applied(messy, edits) == "enum Op { ping = 1, read = 2 }\nconst   BROADCAST=0xFE\n\nconst OTHER = 0xFF  # kept\n"
-    enum_to_const = types.Range(start=types.Position(line=0, character=5), end=types.Position(line=1, character=0))
+    assert applied(messy, edits) == (
+        "enum Op { ping = 1,\n read = 2 }\nconst   BROADCAST=0xFE\n\nconst OTHER = 0xFF  # kept\n")
+    enum_to_const = types.Range(start=types.Position(line=1, character=5), end=types.Position(line=2, character=0))
     assert applied(messy, await formatted_by(client, uri, enum_to_const)) == (
         "enum Op {\n    ping = 1,\n    read = 2,\n}\nconst BROADCAST = 0xFE\n\nconst   OTHER=0xFF   # kept\n")
-    blank_line = types.Range(start=types.Position(line=2, character=0), end=types.Position(line=2, character=0))
+    blank_line = types.Range(start=types.Position(line=3, character=0), end=types.Position(line=3, character=0))
     assert await formatted_by(client, uri, blank_line) == []
 
 
