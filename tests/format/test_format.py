@@ -245,3 +245,17 @@ def test_a_block_written_on_one_line_stays_on_one_line_when_it_fits_and_spreads_
     assert len(wide) > 101
     assert format_text(wide) == "enum Op {\n" + "".join(f"    member_{n} = {n},\n" for n in range(8)) + "}\n"
     assert format_text("enum Op { ping = 1,  # one\n read = 2 }\n") == "enum Op {\n    ping = 1,  # one\n    read = 2,\n}\n"
+
+
+def test_a_long_expression_with_no_list_to_spread_breaks_before_its_lowest_precedence_operators() -> None:
+    chain = ("const A = 1 if some_long_name == 0 else 2 if another_long_name and yet_another_long_name or w\n"
+             "  else 3 if zzzzz else 4\n")
+    broken = ("const A = 1 if some_long_name == 0\n    else 2 if another_long_name and yet_another_long_name or w\n"
+              "    else 3 if zzzzz\n    else 4\n")
+    assert format_text(chain) == broken
+    assert format_text(broken) == broken
+    logic = "state ready: bool = " + " and ".join(f"(flag_{n} or other_{n})" for n in range(6)) + "\n"
+    assert format_text(logic) == "state ready: bool = (flag_0 or other_0)\n" + "".join(
+        f"    and (flag_{n} or other_{n})\n" for n in range(1, 6))
+    short = "const B = 1 if a else 2 if b else 3\n"
+    assert format_text(short) == short
