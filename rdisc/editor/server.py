@@ -15,7 +15,7 @@ from pygls.exceptions import JsonRpcException, JsonRpcInvalidParams
 from pygls.lsp.server import LanguageServer
 
 from rdisc import __version__
-from rdisc.editor import actions, completion, hover, navigation, positions, symbols
+from rdisc.editor import actions, completion, formatting, hover, navigation, positions, symbols
 from rdisc.editor.checks import Checker
 from rdisc.editor.diagnostics import published
 from rdisc.editor.documents import Analysis, Document, Workspace
@@ -124,6 +124,16 @@ def make_server() -> RdisServer:
     async def complete(ls: RdisServer, params: types.CompletionParams) -> types.CompletionList:
         analysis = await ls.analysis(params.text_document.uri)
         return completion.complete(analysis, params.position, ls.good(params.text_document.uri))
+
+    @server.feature(types.TEXT_DOCUMENT_FORMATTING)
+    def format_document(ls: RdisServer, params: types.DocumentFormattingParams) -> list[types.TextEdit]:
+        document = ls.workspace.get_text_document(params.text_document.uri)
+        return formatting.format_document(positions.path_of(document.uri), document.source)
+
+    @server.feature(types.TEXT_DOCUMENT_RANGE_FORMATTING)
+    def format_range(ls: RdisServer, params: types.DocumentRangeFormattingParams) -> list[types.TextEdit]:
+        document = ls.workspace.get_text_document(params.text_document.uri)
+        return formatting.format_range(positions.path_of(document.uri), document.source, params.range)
 
     return server
 

@@ -18,7 +18,7 @@ from __future__ import annotations
 
 from rdisc.diagnostics import Diagnostic, Diagnostics, Severity
 
-__all__ = ["FormatError", "format_text"]
+__all__ = ["FormatError", "declarations", "format_text"]
 
 
 class FormatError(Exception):
@@ -46,3 +46,21 @@ def format_text(text: str, name: str = "<text>") -> str:
         raise FormatError(name, text, tuple(d for d in diagnostics.sorted() if d.severity is Severity.ERROR))
     tokens = read_tokens(text, _chunks(text))
     return lay_out(tokens.decls, tokens.end)
+
+
+def declarations(text: str) -> list[tuple[int, int]]:
+    """Where each declaration of `text` starts and ends (its first token's start, its last token's
+    end, as character offsets), for formatting a part of a file; [] when it does not parse."""
+    from rdisc.compile import _Tokens
+    from rdisc.format.tokens import read_tokens
+    from rdisc.syntax.parse import _chunks
+
+    diagnostics = Diagnostics()
+    _Tokens().parse("<text>", text, diagnostics)
+    if diagnostics.has_errors():
+        return []
+    spans = []
+    for decl in read_tokens(text, _chunks(text)).decls:
+        leaves = decl.leaves()
+        spans.append((leaves[0].start, leaves[-1].end))
+    return spans

@@ -5,8 +5,11 @@ The layout of each construct is the printer's: 4-space indents; a block (`robot`
 a primitive on one line when it fits in `WIDTH` columns, else one clause a line; post-actions
 `{ a = 1 }` inline when there is one, as a block when there are more; the parts inside `optional`,
 `either` and `bits` on one line, two spaces apart; an enum's members and a table's entries one a
-line, each with its comma. The one wrapping rule (`_fit`) generalises the printer's for a call
-statement: a line longer than `WIDTH` has one bracketed list spread one item a line.
+line, each with its comma. The one-line rule (`_one_line`): a block, an enum or a table written
+on one line, no comment inside, stays on one line when it fits (the writer's choice, which
+formatting again keeps). The one wrapping rule (`_fit`) generalises the printer's for a call
+statement: a line longer than `WIDTH` has one bracketed list spread one item a line, or, with
+none to spread, breaks before the `else`s, `or`s or `and`s of its outermost expression.
 
 Comments decide only where lines break: a construct with a comment inside takes its several-line
 form; an own-line comment is written on its own line before its token; a trailing comment ends
@@ -70,6 +73,7 @@ class Writer:
         self.space: int | None = None  # the spaces before the next token, where the rule is not wanted
         self.columns: dict[int, int] = {}  # where each token starts on its line, by id (when measuring)
         self.spread: set[int] = set()  # the lists `_fit` chose to lay out one item a line, by id
+        self.breaks: dict[int, int] = {}  # the operators `_fit` chose to start a line with: their level
 
     def begin(self, level: int) -> None:
         self.fresh = level
@@ -78,6 +82,8 @@ class Writer:
         return len(INDENT) * self.fresh if self.fresh is not None else len(self.text)
 
     def put(self, leaf: Leaf, own_comments: bool = True) -> None:
+        if id(leaf) in self.breaks and self.fresh is None:
+            self.begin(self.breaks[id(leaf)])
         leading = leaf.leading if self.comments and own_comments else []
         if self.fresh is not None:
             level, self.fresh = self.fresh, None
@@ -159,7 +165,7 @@ def emit(out: Writer, item: Child) -> None:
     braces = [i for i, c in enumerate(children) if isinstance(c, Leaf) and c.text in ("{", "}")]
     first, last = (braces[0], braces[-1]) if braces else (len(children), len(children))
     if out.fresh is not None and out.comments:
-        _fit(out, children[:first])
+        _fit(out, children[:first], item.rule if first == len(children) else "")
     _in_line(out, children[:first])
     if braces:
         _braced(out, children[first], children[first + 1:last], children[last], _STYLE.get(item.rule, _BLOCK))
@@ -197,14 +203,15 @@ def _spread(out: Writer, items: Node, closing: Leaf) -> None:
     out.close(closing, level)
 
 
-def _fit(out: Writer, children: list[Child]) -> None:
+def _fit(out: Writer, children: list[Child], rule: str = "") -> None:
     """The one wrapping rule. A line of the layout (a declaration, a block's item, a wrapped clause,
     a list's item, or the head of a block or of a primitive before its first clause) with no block
     in it, longer than WIDTH, is written with one bracketed list spread one item a line; each item
     is then such a line of its own. The list: of those that hold more of the line than the text
     before and after them together, and whose spreading leaves that text within WIDTH, the first
     of two items or more, else the first (first: whose bracket opens leftmost, so the outermost
-    of nested lists). None such: the line stays as it is."""
+    of nested lists). None such: the line breaks before its lowest-precedence operators
+    (`_operators`), or stays as it is when it has none of them."""
     leaves = _leaves(children)
     column = out.column()
     if column + sum(len(leaf.text) + 1 for leaf in leaves) <= WIDTH or any(leaf.text == "{" for leaf in leaves):
@@ -235,6 +242,39 @@ def _fit(out: Writer, children: list[Child]) -> None:
     chosen = next((key for _, count, key in found if count >= 2), found[0][2] if found else None)
     if chosen is not None:
         out.spread.add(chosen)
+        return
+    level = (out.fresh if out.fresh is not None else out.level) + 1
+    for leaf in _operators(Node(rule, children)):
+        out.breaks[id(leaf)] = level
+
+
+_LOWEST = (("conditional", "ELSE"), ("chain", "OR"), ("chain", "AND"))  # arithmetic stays on its line
+
+
+def _operators(line: Node) -> list[Leaf]:
+    """Where a long expression with no list to spread breaks: before each of its lowest-precedence
+    operators (`else` of an `if ... else` chain, then `or`, then `and`), in the outermost
+    expression that has any; the continuation lines one level in."""
+    nodes: list[Node] = []
+    stack: list[Child] = [line]
+    while stack:  # pre-order: the outermost first
+        item = stack.pop()
+        if isinstance(item, Node):
+            nodes.append(item)
+            stack.extend(reversed(item.children))
+    for node in nodes:
+        for rule, kind in _LOWEST:
+            if node.rule != rule:
+                continue
+            found = [c for c in node.children if isinstance(c, Leaf) and c.kind == kind]
+            if rule == "conditional":  # the chain goes on in the `else` branch
+                branch = node.children[-1]
+                while isinstance(branch, Node) and branch.rule == "conditional":
+                    found += [c for c in branch.children if isinstance(c, Leaf) and c.kind == kind]
+                    branch = branch.children[-1]
+            if found:
+                return found
+    return []
 
 
 _END = Leaf("", "$END", "", 0, 0)
@@ -253,6 +293,7 @@ def _leaves(items: list[Child]) -> list[Leaf]:
 def _braced(out: Writer, opening: Child, items: list[Child], closing: Child, style: str) -> None:
     assert isinstance(opening, Leaf) and isinstance(closing, Leaf)
     inner = _inner_comments([opening, *_leaves(items), closing])
+    written = style
     if style == _ACTIONS and not inner and sum(isinstance(i, Node) for i in items) == 1:
         style = _INLINE
     elif style == _INLINE and inner:
@@ -272,6 +313,9 @@ def _braced(out: Writer, opening: Child, items: list[Child], closing: Child, sty
         out.space = 0
         out.put(closing)
         return
+    if written in (_BLOCK, _LIST) and not inner and _one_line(out, opening, items, closing, style):
+        _flat(out, opening, items, closing, style)
+        return
     out.put(opening)
     level = out.level
     if style == _LIST:
@@ -288,6 +332,31 @@ def _braced(out: Writer, opening: Child, items: list[Child], closing: Child, sty
             out.begin(level + 1)
             emit(out, item)
     out.close(closing, level)
+
+
+def _one_line(out: Writer, opening: Leaf, items: list[Child], closing: Leaf, style: str) -> bool:
+    """Whether a block or list stays on one line: it was written on one line (no line break
+    between its braces) and, on one line, its line fits in WIDTH columns."""
+    leaves = [*_leaves(items), closing]
+    if any(leaf.broken for leaf in leaves):
+        return False
+    scratch = Writer(comments=False)
+    scratch.started, scratch.last = True, out.last
+    scratch.text = " " * out.column() if out.fresh is not None else out.text
+    _flat(scratch, opening, items, closing, style)
+    lines = scratch.finish(_END)
+    return len(lines) == 1 and len(lines[0]) <= WIDTH
+
+
+def _flat(out: Writer, opening: Leaf, items: list[Child], closing: Leaf, style: str) -> None:
+    """A block on one line: `{ a = 1, b = 2 }`, `{ at [0, 0, 1]  axis [0, 1, 0] }` (its items two
+    spaces apart, as the parts of a run)."""
+    out.put(opening)
+    for i, item in enumerate(items):
+        if style != _LIST and i and isinstance(item, Node):
+            out.space = 2  # a block's items, as the parts of a run
+        emit(out, item)
+    out.put(closing)
 
 
 def _split(items: list[Child]) -> list[tuple[list[Child], Leaf | None]]:

@@ -48,6 +48,7 @@ class Leaf:
     leading: list[Comment] = field(default_factory=list)
     trailing: str | None = None
     blank: bool = False  # a blank line comes before it (after its leading comments)
+    broken: bool = False  # a line break comes before it (a block's layout keeps a one-line block)
     dropped: bool = False  # a trailing comma: not laid out
 
 
@@ -152,6 +153,7 @@ def _attach(text: str, leaves: list[Leaf]) -> None:
                     leaf.leading.append(Comment(comment, before.count("\n") >= 2))
                 at = m.end()
         leaf.blank = gap[at:].count("\n") >= 2
+        leaf.broken = "\n" in gap
         previous, gap_start = leaf, leaf.end
 
 

@@ -273,3 +273,61 @@ async def test_rapid_changes_end_with_the_diagnostics_of_the_last_text(client: L
         seen.append(int(found.message.removeprefix("unknown primitive or interface `set_speed").rstrip("`")))
         assert (found.code, found.range.start.line) == ("E102", at(texts[11], "set_speed11(", "set_speed").line)
     assert seen == sorted(set(seen))  # a stale check's diagnostics never come after a newer one's
+
+
+async def formatted_by(client: LanguageClient, uri: str, where: types.Range | None = None) -> list[types.TextEdit]:
+    document = types.TextDocumentIdentifier(uri=uri)
+    options = types.FormattingOptions(tab_size=4, insert_spaces=True)
+    if where is None:
+        edits = await client.text_document_formatting_async(
+            types.DocumentFormattingParams(text_document=document, options=options))
+    else:
+        edits = await client.text_document_range_formatting_async(
+            types.DocumentRangeFormattingParams(text_document=document, range=where, options=options))
+    assert edits is not None
+    return list(edits)
+
+
+def lines_of(edits: list[types.TextEdit]) -> list[tuple[int, int]]:
+    return [(edit.range.start.line, edit.range.end.line) for edit in edits]
+
+
+async def test_formatting_returns_edits_of_only_the_changed_lines_that_produce_rdisc_fmts_text(
+        client: LanguageClient, tmp_path: Path) -> None:
+    from rdisc.format import format_text
+
+    canonical = format_text(BOT)
+    messy = canonical.replace("state speed: int = 0", "state   speed:int=0").replace(
+        "    baud 115200", "  baud   115200")
+    uri = await opened(client, tmp_path, "messy.rdis", messy)
+    edits = await formatted_by(client, uri)
+    state, baud = (canonical.splitlines().index(line) for line in ("state speed: int = 0", "    baud 115200"))
+    assert lines_of(edits) == [(state, state + 1), (baud, baud + 1)]  # the two changed lines, each alone
+    assert applied(messy, edits) == canonical
+    uri = await opened(client, tmp_path, "whole.rdis", BOT)
+    assert applied(BOT, await formatted_by(client, uri)) == canonical
+    assert await formatted_by(client, await opened(client, tmp_path, "done.rdis", canonical)) == []
+
+
+async def test_range_formatting_touches_only_the_declarations_in_the_range(
+        client: LanguageClient, tmp_path: Path) -> None:
+    messy = "enum Op { ping = 1,\n read = 2 }\nconst   BROADCAST=0xFE\n\nconst   OTHER=0xFF   # kept\n"
+    uri = await opened(client, tmp_path, "range.rdis", messy)
+    inside_other = types.Range(start=types.Position(line=4, character=2), end=types.Position(line=4, character=4))
+    edits = await formatted_by(client, uri, inside_other)
+    assert applied(messy, edits) == (
+        "enum Op { ping = 1,\n read = 2 }\nconst   BROADCAST=0xFE\n\nconst OTHER = 0xFF  # kept\n")
+    enum_to_const = types.Range(start=types.Position(line=1, character=5), end=types.Position(line=2, character=0))
+    assert applied(messy, await formatted_by(client, uri, enum_to_const)) == (
+        "enum Op {\n    ping = 1,\n    read = 2,\n}\nconst BROADCAST = 0xFE\n\nconst   OTHER=0xFF   # kept\n")
+    blank_line = types.Range(start=types.Position(line=3, character=0), end=types.Position(line=3, character=0))
+    assert await formatted_by(client, uri, blank_line) == []
+
+
+async def test_a_document_that_does_not_parse_gets_no_formatting_edits_and_no_error(
+        client: LanguageClient, tmp_path: Path) -> None:
+    broken = "const   A=1\nenum Op { ping = \n"
+    uri = await opened(client, tmp_path, "broken.rdis", broken)
+    assert await formatted_by(client, uri) == []
+    whole = types.Range(start=types.Position(line=0, character=0), end=types.Position(line=2, character=0))
+    assert await formatted_by(client, uri, whole) == []

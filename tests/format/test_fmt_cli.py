@@ -11,7 +11,7 @@ from conftest import run_rdisc
 
 from rdisc.cli.main import main
 
-MESSY = 'state   count:int=0  # how many\nconnection bus: serial { baud 9600 }\n'
+MESSY = 'state   count:int=0  # how many\nconnection bus: serial {\n baud 9600 }\n'
 TIDY = 'state count: int = 0  # how many\nconnection bus: serial {\n    baud 9600\n}\n'
 
 
@@ -33,9 +33,9 @@ def test_check_exits_1_with_a_unified_diff_and_writes_nothing(tmp_path: Path) ->
     result = run_rdisc("fmt", "--check", tmp_path)
     assert result.returncode == 1
     assert result.stdout == (
-        f"--- {messy}\n+++ {messy}\n@@ -1,2 +1,4 @@\n"
-        "-state   count:int=0  # how many\n-connection bus: serial { baud 9600 }\n"
-        "+state count: int = 0  # how many\n+connection bus: serial {\n+    baud 9600\n+}\n"
+        f"--- {messy}\n+++ {messy}\n@@ -1,3 +1,4 @@\n"
+        "-state   count:int=0  # how many\n+state count: int = 0  # how many\n connection bus: serial {\n"
+        "- baud 9600 }\n+    baud 9600\n+}\n"
     )
     assert messy.read_text() == MESSY
     messy.write_text(TIDY)

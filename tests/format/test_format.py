@@ -42,9 +42,12 @@ MESSY = '''\
 
 
 import   "../stdlib/adapters.rdis"
-robot r { author "me"  version "1" }
-enum Op { ping = 0x01, read = 0x02 }   # trailing, after the enum
-const T = { 1: 2, 3: 4, }
+robot r { author "me"
+  version "1" }
+enum Op { ping = 0x01,
+  read = 0x02 }   # trailing, after the enum
+const T = { 1: 2,
+  3: 4, }
 state   count:int=0
 state flag: bool = not   True
 
@@ -230,3 +233,29 @@ def test_the_printers_text_is_already_formatted_where_no_line_passes_the_width()
 ])
 def test_spacing_around_operators_brackets_and_commas(written: str, formatted: str) -> None:
     assert format_text(f"state s: int = {written}\n") == f"state s: int = {formatted}\n"
+
+
+def test_a_block_written_on_one_line_stays_on_one_line_when_it_fits_and_spreads_otherwise() -> None:
+    one_line = 'robot r { author "me"  version "1" }\nenum Op { ping = 1, read = 2 }\nconst T = { 1: 2, 3: 4 }\n'
+    assert format_text('robot r {author "me"  version "1"}\nenum Op {ping = 1, read = 2,}\nconst T = {1: 2, 3: 4}\n') == (
+        one_line)
+    assert format_text(one_line) == one_line
+    assert format_text("enum Op { ping = 1,\n    read = 2 }\n") == "enum Op {\n    ping = 1,\n    read = 2,\n}\n"
+    wide = "enum Op { " + ", ".join(f"member_{n} = {n}" for n in range(8)) + " }\n"
+    assert len(wide) > 101
+    assert format_text(wide) == "enum Op {\n" + "".join(f"    member_{n} = {n},\n" for n in range(8)) + "}\n"
+    assert format_text("enum Op { ping = 1,  # one\n read = 2 }\n") == "enum Op {\n    ping = 1,  # one\n    read = 2,\n}\n"
+
+
+def test_a_long_expression_with_no_list_to_spread_breaks_before_its_lowest_precedence_operators() -> None:
+    chain = ("const A = 1 if some_long_name == 0 else 2 if another_long_name and yet_another_long_name or w\n"
+             "  else 3 if zzzzz else 4\n")
+    broken = ("const A = 1 if some_long_name == 0\n    else 2 if another_long_name and yet_another_long_name or w\n"
+              "    else 3 if zzzzz\n    else 4\n")
+    assert format_text(chain) == broken
+    assert format_text(broken) == broken
+    logic = "state ready: bool = " + " and ".join(f"(flag_{n} or other_{n})" for n in range(6)) + "\n"
+    assert format_text(logic) == "state ready: bool = (flag_0 or other_0)\n" + "".join(
+        f"    and (flag_{n} or other_{n})\n" for n in range(1, 6))
+    short = "const B = 1 if a else 2 if b else 3\n"
+    assert format_text(short) == short
