@@ -300,6 +300,7 @@ class Output:
     adapter: str = ""
     frame: str = ""
     child_frame: str = ""
+    sensors: tuple[str, ...] = ()
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -326,6 +327,7 @@ class Interface:
     calls: tuple[Call, ...]
     _: KW_ONLY
     outputs: tuple[Output, ...] = ()
+    sensors: tuple[str, ...] = ()
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -371,6 +373,15 @@ class Connection:
 
 
 @dataclass(frozen=True, slots=True, eq=False)
+class Sensor:
+    """engine.Sensor: its primitive's plan stores its value (`_Lowering.sensed`)."""
+
+    name: str
+    primitive: Primitive
+    cache: float
+
+
+@dataclass(frozen=True, slots=True, eq=False)
 class Device:
     """engine.Device."""
 
@@ -383,6 +394,7 @@ class Device:
     _: KW_ONLY
     settings: tuple[Construct[engine.Param], ...] = ()
     messages: Mapping[str, engine.Message] = dataclasses.field(default_factory=dict)
+    sensors: Mapping[str, Sensor] = dataclasses.field(default_factory=dict)
 
 
 @dataclass(frozen=True, slots=True)
@@ -404,7 +416,7 @@ class _Lowering:
         self.model = model
         self.frames = {f.name: frame(f) for f in model.frames.values()}
         self.own_frames: dict[str, tuple[FrameUse, ...]] = {}
-        primitives = {p.name: self.primitive(p) for p in model.primitives.values()}
+        primitives = {p.name: self.primitive(self.sensed(p)) for p in model.primitives.values()}
         outputs = {o.name: self.output(o) for o in model.outputs.values()}
         planned: dict[str, Interface] = {}
         for iface in model.callees_first():
@@ -415,11 +427,26 @@ class _Lowering:
         state = ({s.name: m.coerce(s.default, s.type) for s in model.settings.values()}
                  | {s.name: m.coerce(s.initial, s.type) for s in model.states.values()})
         settings = tuple(param(s.name, s.type, s.low, s.high, s.default) for s in model.settings.values())
+        sensors = {s.name: Sensor(s.name, primitives[s.primitive], s.cache_ms / 1000.0) for s in model.sensors.values()}
         device = Device(model.robot.name, state, connections, primitives, interfaces, inputs, settings=settings,
-                        messages=recorded_messages(model))
+                        messages=recorded_messages(model), sensors=sensors)
         self.plans = Plans(device, self.frames, outputs)
 
     # ---- primitives -----------------------------------------------------------------------------
+
+    def sensed(self, p: m.Primitive) -> m.Primitive:
+        """`p`, and when sensors read it, a post-action storing its one reply value as each
+        sensor's (`rdisc.semantics.check.sensors`): reading the sensor runs this plan."""
+        decoding = p.decoding
+        stores = tuple(m.PostAction(m.StateRef(s.name), m.ReplyValue(0, decoding.layout.slots[0].type))
+                       for s in self.model.sensors.values() if s.primitive == p.name and isinstance(decoding, m.Unpack))
+        return dataclasses.replace(p, actions=p.actions + stores) if stores else p
+
+    def sensors(self, *exprs: m.Expr | None) -> tuple[str, ...]:
+        """The sensors the expressions read, each once, in order."""
+        sensors = self.model.sensors
+        read = (v.name for e in exprs if e is not None for v in m.variables(e) if v.scope is m.Scope.STATE)
+        return tuple(dict.fromkeys(name for name in read if name in sensors))
 
     def primitive(self, p: m.Primitive) -> Primitive:
         """A primitive's plan; with a reply table, one plan for each entry besides (a range
@@ -468,7 +495,7 @@ class _Lowering:
     def reply(self, plan: Primitive, p: m.Primitive, local: tuple[m.Parameter, ...]) -> Primitive:
         """`plan` reading `p`'s reply (`read_as`): and its post-actions over `local` (besides
         state and the reply), with the state variables they may make too wide."""
-        states = self.model.states
+        states: Mapping[str, m.StateVariable | m.Sensor] = {**self.model.states, **self.model.sensors}
         actions = None
         if p.actions:
             actions = Code(_OVER_REPLY, Gives.DICT, local,
@@ -528,7 +555,8 @@ class _Lowering:
     def output(self, o: m.DomainOutput) -> Output:
         adapter = self.model.adapters[o.adapter]
         fields = tuple((name, e, _field_type(adapter, name, e)) for name, e in o.fields)
-        return Output(o.name, Code(("state",), Gives.DICT, (), fields), o.adapter, *header_frames(self.model, o))
+        return Output(o.name, Code(("state",), Gives.DICT, (), fields), o.adapter, *header_frames(self.model, o),
+                      self.sensors(*(e for _, e in o.fields)))
 
     def interface(self, iface: m.Interface, primitives: Mapping[str, Primitive], outputs: Mapping[str, Output],
                   callees: Mapping[str, Interface]) -> Interface:
@@ -545,8 +573,9 @@ class _Lowering:
                 call = dataclasses.replace(call, until=_condition(_OVER_ARGS, iface.params, c.until),
                                            every=c.every_ms / 1000.0, within=c.within_ms / 1000.0)
             calls.append(call)
+        read = self.sensors(*(e for c in iface.run_order() for e in (*c.args, c.when, c.until)))
         return Interface(iface.name, _params(iface.params), tuple(calls),
-                         outputs=tuple(outputs[o] for o in iface.triggers))
+                         outputs=tuple(outputs[o] for o in iface.triggers), sensors=read)
 
     def call(self, call: m.PrimitiveCall, params: tuple[m.Parameter, ...], plan: Primitive) -> Call:
         """A call of a primitive, with its format arguments substituted where that changes

@@ -475,7 +475,7 @@ class _Driver:
             case (Construct() | lowering.Call() | lowering.FrameUse() | lowering.Hook() | lowering.NoReply()
                   | lowering.LineReply() | lowering.FixedReply() | lowering.FramedReply() | lowering.TaggedReply()
                   | lowering.TaggedStream() | lowering.SubPayloads() | lowering.Records() | lowering.KeyedReply()
-                  | lowering.SeveralReplies() | lowering.ListedReplies() | lowering.ErrorReply()):
+                  | lowering.SeveralReplies() | lowering.ListedReplies() | lowering.ErrorReply() | lowering.Sensor()):
                 args, options = self.arguments(value)
                 return f"{_kind(value)}({', '.join([*args, *(f'{k}={v}' for k, v in options.items())])})"
             case tuple() if value and isinstance(value[0], lowering.Entry):  # a reply table, written before
