@@ -46,6 +46,37 @@ def _hash_Exchange(self: Any) -> int:
     return hash((self.interface, self.bytes, self.wire_ms, self.delay_ms))
 
 
+def _init_SensorLoad(self: Any, sensor: Any, bytes: Any, wire_ms: Any, rate_hz: Any) -> None:
+    _set(self, "sensor", sensor)
+    _set(self, "bytes", bytes)
+    _set(self, "wire_ms", wire_ms)
+    _set(self, "rate_hz", rate_hz)
+
+
+def _repr_SensorLoad(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(sensor={self.sensor!r}, bytes={self.bytes!r}, wire_ms={self.wire_ms!r}, rate_hz={self.rate_hz!r})"
+
+
+def _eq_SensorLoad(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.sensor,
+            self.bytes,
+            self.wire_ms,
+            self.rate_hz,
+        ) == (
+            other.sensor,
+            other.bytes,
+            other.wire_ms,
+            other.rate_hz,
+        )
+    return NotImplemented
+
+
+def _hash_SensorLoad(self: Any) -> int:
+    return hash((self.sensor, self.bytes, self.wire_ms, self.rate_hz))
+
+
 def _init_ConnectionBudget(
     self: Any,
     connection: Any,
@@ -56,6 +87,7 @@ def _init_ConnectionBudget(
     keepalive_interval_ms: Any,
     baud_setting: Any = DEFAULT,
     bits_per_byte: Any = DEFAULT,
+    sensed: Any = DEFAULT,
 ) -> None:
     _set(self, "connection", connection)
     _set(self, "baud", baud)
@@ -65,10 +97,11 @@ def _init_ConnectionBudget(
     _set(self, "keepalive_interval_ms", keepalive_interval_ms)
     _set(self, "baud_setting", baud_setting)
     _set(self, "bits_per_byte", bits_per_byte)
+    _set(self, "sensed", sensed)
 
 
 def _repr_ConnectionBudget(self: Any) -> str:
-    return f"{self.__class__.__qualname__}(connection={self.connection!r}, baud={self.baud!r}, frequency_hz={self.frequency_hz!r}, periodic={self.periodic!r}, keepalive={self.keepalive!r}, keepalive_interval_ms={self.keepalive_interval_ms!r}, baud_setting={self.baud_setting!r}, bits_per_byte={self.bits_per_byte!r})"
+    return f"{self.__class__.__qualname__}(connection={self.connection!r}, baud={self.baud!r}, frequency_hz={self.frequency_hz!r}, periodic={self.periodic!r}, keepalive={self.keepalive!r}, keepalive_interval_ms={self.keepalive_interval_ms!r}, baud_setting={self.baud_setting!r}, bits_per_byte={self.bits_per_byte!r}, sensed={self.sensed!r})"
 
 
 def _eq_ConnectionBudget(self: Any, other: Any) -> Any:
@@ -82,6 +115,7 @@ def _eq_ConnectionBudget(self: Any, other: Any) -> Any:
             self.keepalive_interval_ms,
             self.baud_setting,
             self.bits_per_byte,
+            self.sensed,
         ) == (
             other.connection,
             other.baud,
@@ -91,6 +125,7 @@ def _eq_ConnectionBudget(self: Any, other: Any) -> Any:
             other.keepalive_interval_ms,
             other.baud_setting,
             other.bits_per_byte,
+            other.sensed,
         )
     return NotImplemented
 
@@ -105,6 +140,7 @@ def _hash_ConnectionBudget(self: Any) -> int:
         self.keepalive_interval_ms,
         self.baud_setting,
         self.bits_per_byte,
+        self.sensed,
     ))
 
 
@@ -118,6 +154,15 @@ WRITTEN: dict[str, Written] = {
             "__hash__": _hash_Exchange,
         },
     ),
+    "SensorLoad": Written(
+        (("sensor", MISSING), ("bytes", MISSING), ("wire_ms", MISSING), ("rate_hz", MISSING)),
+        {
+            "__init__": _init_SensorLoad,
+            "__repr__": _repr_SensorLoad,
+            "__eq__": _eq_SensorLoad,
+            "__hash__": _hash_SensorLoad,
+        },
+    ),
     "ConnectionBudget": Written(
         (
             ("connection", MISSING),
@@ -128,6 +173,7 @@ WRITTEN: dict[str, Written] = {
             ("keepalive_interval_ms", MISSING),
             ("baud_setting", DEFAULT),
             ("bits_per_byte", DEFAULT),
+            ("sensed", DEFAULT),
         ),
         {
             "__init__": _init_ConnectionBudget,

@@ -6,7 +6,7 @@ from __future__ import annotations
 
 from rdisc.diagnostics import Label
 from rdisc.semantics import model as m
-from rdisc.semantics.check.pieces import Pieces
+from rdisc.semantics.check.pieces import Pieces, counted
 from rdisc.syntax import ast
 
 
@@ -30,7 +30,7 @@ class Sensors(Pieces):
         slot = _one_value(primitive)
         if primitive.params:
             self.d.report("E230", decl.primitive.span, f"sensor `{name}` reads primitive `{primitive.name}`, "
-                          f"which takes {len(primitive.params)} parameter(s)",
+                          f"which takes {counted(len(primitive.params), 'parameter')}",
                           help="a sensor's primitive takes no arguments: declare one that reads this value alone")
         elif slot is None:
             self.d.report("E230", decl.primitive.span, f"sensor `{name}` reads primitive `{primitive.name}`, "
