@@ -103,6 +103,7 @@ def test_the_output_at_40_hz_reads_the_bumpers_once_per_100_ms(make_robot, devic
     finally:
         robot.close()
     # the startup's Start and Full, then ten reads of the bumpers (one per 100 ms), and the terminate's Drive
+    device.wait_for(2 + 10 * 2 + 5, timeout=5.0)
     assert device.received[:2] == bytes([128, 132])
     assert _requests(device.received) == 10
     assert device.received[2:].replace(BUMPERS, b"") == bytes([137, 0, 0, 0, 0])
@@ -122,7 +123,7 @@ def test_a_reader_within_the_cache_time_sends_nothing(make_robot, device) -> Non
         assert robot.sensors.bumperStates == 0b01
         assert robot.sensor_age("bumperStates") == 0.0
         assert _requests(device.received) == 2
-        assert dir(robot.sensors) == ["bumperStates"]
+        assert "bumperStates" in dir(robot.sensors)
         with pytest.raises(AttributeError, match="no sensor named 'bumpers'"):
             robot.sensors.bumpers  # noqa: B018
     finally:

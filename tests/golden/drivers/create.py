@@ -5290,6 +5290,22 @@ class IrobotCreateState(State):
     __slots__ = ()
 
 
+class IrobotCreateSensors(Sensors):
+    """The sensors: `robot.sensors.NAME` is its value, read first when older than its
+    cache time.
+    """
+
+    __slots__ = ()
+
+    # create.rdis:19
+    bumperStates: int
+    """The "Bumps and Wheel Drops" byte (OI sensor packet 7): bit 0 is the right
+    bumper, bit 1 the left bumper, bits 2 to 4 the wheel drops. Read through
+    `bumpers()` and kept for 100 ms: the 40 Hz output reads the kept value, so the
+    Create sees at most one request per 100 ms instead of one per tick.
+    """
+
+
 class IrobotCreateInputs:
     """The domain inputs: `robot.inputs.NAME(field=value, ...)`."""
 
@@ -5414,7 +5430,7 @@ class IrobotCreate(Robot):
     `robot.primitives` hold a typed method for each element of the description.
     """
 
-    __slots__ = ("inputs", "interfaces", "primitives")
+    __slots__ = ("inputs", "interfaces", "primitives", "sensors")
 
     inputs: IrobotCreateInputs
     """The domain inputs, as typed methods."""
@@ -5425,12 +5441,16 @@ class IrobotCreate(Robot):
     primitives: IrobotCreatePrimitives
     """The primitives, as typed methods."""
 
+    sensors: IrobotCreateSensors
+    """The sensors, as typed attributes."""
+
     def __init__(self, *, timeout: float = 1.0) -> None:
         """A robot not connected yet: `open()` connects it. `timeout`: seconds a reply may take."""
         super().__init__(_DEVICE, timeout=timeout)
         self.inputs = IrobotCreateInputs(self)
         self.interfaces = IrobotCreateInterfaces(self)
         self.primitives = IrobotCreatePrimitives(self)
+        self.sensors = IrobotCreateSensors(self.device.sensors, self.read_sensor)
 
     @property
     def state(self) -> IrobotCreateState:
