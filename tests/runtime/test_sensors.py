@@ -9,6 +9,7 @@ do not depend on how fast the machine is: requests are counted on a pseudo-termi
 from __future__ import annotations
 
 import importlib.util
+import json
 import sys
 import threading
 from collections.abc import Callable, Iterator
@@ -180,3 +181,27 @@ def test_a_failed_read_raises_and_never_serves_the_old_value(make_robot) -> None
             assert _requests(dev.received) == 4
         finally:
             robot.close()
+
+
+BUMPING = """\
+robot bumping { author "tests" }
+connection oi: serial { baud 57600  threading single at 40 Hz }
+primitive bumpers() on oi pack "BB" (142, 7) unpack "B"
+sensor bumps: int from bumpers() cache 100 ms
+interface report() periodic triggers bumped {}
+output bumped: Range { distance = 1.0 if (bumps & 3) == 0 else 0.0 }
+"""
+
+
+def test_watch_shows_each_sensors_age(rdisc, tmp_path: Path) -> None:
+    source = tmp_path / "bumping.rdis"
+    source.write_text(BUMPING, encoding="utf-8")
+    with pty_device(_answering(0b10)) as dev:
+        result = rdisc("run", source, "--port", dev.port, "--watch", "--duration", "0.5")
+    assert result.returncode == 0, result.stderr
+    messages = [json.loads(line) for line in result.stdout.splitlines()]
+    assert len(messages) >= 3
+    assert {(m["name"], m["contents"]["distance"]) for m in messages} == {("bumped", 0.0)}
+    ages = [m["sensor_ages"]["bumps"] for m in messages]
+    assert all(0.0 <= age < 1.0 for age in ages), ages  # read within the cache time, or just now
+    assert _requests(dev.received) < len(messages)  # the 40 Hz output read the kept value
