@@ -205,3 +205,32 @@ def test_watch_shows_each_sensors_age(rdisc, tmp_path: Path) -> None:
     ages = [m["sensor_ages"]["bumps"] for m in messages]
     assert all(0.0 <= age < 1.0 for age in ages), ages  # read within the cache time, or just now
     assert _requests(dev.received) < len(messages)  # the 40 Hz output read the kept value
+
+
+def test_a_sensor_goes_to_json_and_back(rdisc, tmp_path: Path) -> None:
+    source = tmp_path / "bumping.rdis"
+    source.write_text(BUMPING, encoding="utf-8")
+    built, back = tmp_path / "bumping.json", tmp_path / "back.rdis"
+    assert rdisc("build", source, "-o", built).returncode == 0
+    document = json.loads(built.read_text(encoding="utf-8"))
+    assert document["sensors"] == [{"name": "bumps", "type": "int", "primitive": "bumpers", "cache": 100}]
+    result = rdisc("import", built, "-o", back)
+    assert result.returncode == 0, result.stderr
+    assert "sensor bumps: int from bumpers() cache 100 ms\n" in back.read_text(encoding="utf-8")
+    assert rdisc("build", back, "-o", tmp_path / "again.json").returncode == 0
+    assert json.loads((tmp_path / "again.json").read_text(encoding="utf-8")) == document
+
+
+def test_the_checker_names_an_unknown_primitive_and_a_sensor_read_where_it_is_not_refreshed(
+        rdisc, tmp_path: Path) -> None:
+    source = tmp_path / "wrong.rdis"
+    source.write_text(BUMPING + """\
+sensor lost: int from bumper() cache 100 ms
+primitive drive(speed: int) on oi pack ">Bh" (137, speed)
+interface go(speed: int) { drive(speed) }
+input set_velocity: DifferentialSpeed -> go(bumps)
+""", encoding="utf-8")
+    result = rdisc("check", "--format", "json", source)
+    assert result.returncode == 1
+    found = [(d["code"], d["message"]) for d in json.loads(result.stdout)]
+    assert found == [("E102", "unknown primitive `bumper`"), ("E103", "unknown name `bumps` in an input")]
