@@ -149,7 +149,7 @@ def test_explain_lists_every_code(rdisc) -> None:
 
 
 def test_verbose_prints_the_budget_of_create_polled(rdisc) -> None:
-    polled = "tests/runtime/data/create_polled.rdis"  # examples/create.rdis before its bumpers became a sensor
+    polled = "tests/runtime/data/polled/create.rdis"  # examples/create.rdis before its bumpers became a sensor
     result = rdisc("check", "-v", polled)
     assert result.returncode == 0
     assert result.stderr == ""

@@ -22,7 +22,7 @@ from websockets.sync.client import connect
 
 CREATE2 = EXAMPLES / "create2.rdis"
 # The bumpers polled every tick: a sensor (examples/create.rdis) reads by the clock, which a replay does not follow.
-CREATE = DATA / "create_polled.rdis"
+CREATE = DATA / "polled" / "create.rdis"
 pytestmark = pytest.mark.long  # started before the other files (tests/conftest.py)
 
 CALLS = ("--call", "set_velocity", "linear=0.2", "angular=0",

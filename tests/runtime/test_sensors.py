@@ -234,3 +234,38 @@ input set_velocity: DifferentialSpeed -> go(bumps)
     assert result.returncode == 1
     found = [(d["code"], d["message"]) for d in json.loads(result.stdout)]
     assert found == [("E102", "unknown primitive `bumper`"), ("E103", "unknown name `bumps` in an input")]
+
+
+def test_the_console_page_lists_a_sensor_with_its_cache_time() -> None:
+    from rdisc.console.page import render
+
+    compilation = compile_path(str(CREATE))
+    assert compilation.model is not None
+    page = render(compilation.model, lambda span: None)
+    assert ('<tr data-name="bumperStates"><th>bumperStates</th><td data-value></td>'
+            '<td class="type">int sensor, kept 100 ms</td></tr>') in page
+
+
+def test_the_editor_knows_a_sensor(tmp_path: Path) -> None:
+    """The language server indexes a sensor: a variable where it is declared and read, its
+    primitive a reference, and a hover that shows the declaration."""
+    from lsprotocol import types
+
+    from rdisc.editor import hover, navigation, symbols
+    from rdisc.editor.documents import Workspace
+
+    path = tmp_path / "bumping.rdis"
+    workspace = Workspace()
+    workspace.open(path.as_uri(), str(path), BUMPING, 1)
+    analysis = workspace.analysis(path.as_uri())
+    assert analysis is not None
+    lines = BUMPING.splitlines()
+    line = next(i for i, text in enumerate(lines) if text.startswith("sensor"))
+    where = types.Position(line=line, character=len("sensor b"))
+    found = hover.hover(analysis, None, where)
+    assert found is not None and isinstance(found.contents, types.MarkupContent)
+    assert found.contents.value.startswith("```rdis\nsensor bumps: int from bumpers() cache 100 ms\n```")
+    assert [p.range.start.line for p in navigation.references(analysis, where, False, [])] == [5]  # the output
+    data = symbols.semantic_tokens(analysis).data
+    kinds = {symbols.TOKEN_TYPES[data[i + 3]] for i in range(0, len(data), 5)}
+    assert "variable" in kinds
