@@ -269,3 +269,10 @@ def test_the_editor_knows_a_sensor(tmp_path: Path) -> None:
     data = symbols.semantic_tokens(analysis).data
     kinds = {symbols.TOKEN_TYPES[data[i + 3]] for i in range(0, len(data), 5)}
     assert "variable" in kinds
+
+
+def test_dump_names_the_sensor_a_primitive_reads(rdisc) -> None:
+    result = rdisc("dump", CREATE)
+    assert result.returncode == 0, result.stderr
+    bumpers = result.stdout[result.stdout.index("primitive bumpers() on btserial"):]
+    assert bumpers.splitlines()[-1] == "  out[0] is sensor bumperStates, kept 100 ms"
