@@ -302,6 +302,7 @@ class Output:
     frame: str = ""
     child_frame: str = ""
     filters: tuple[Construct[engine.FilterPlan], ...] = ()
+    sensors: tuple[str, ...] = ()
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -328,6 +329,7 @@ class Interface:
     calls: tuple[Call, ...]
     _: KW_ONLY
     outputs: tuple[Output, ...] = ()
+    sensors: tuple[str, ...] = ()
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -375,6 +377,15 @@ class Connection:
 
 
 @dataclass(frozen=True, slots=True, eq=False)
+class Sensor:
+    """engine.Sensor: its primitive's plan stores its value (`_Lowering.sensed`)."""
+
+    name: str
+    primitive: Primitive
+    cache: float
+
+
+@dataclass(frozen=True, slots=True, eq=False)
 class Device:
     """engine.Device."""
 
@@ -387,6 +398,7 @@ class Device:
     _: KW_ONLY
     settings: tuple[Construct[engine.Param], ...] = ()
     messages: Mapping[str, engine.Message] = dataclasses.field(default_factory=dict)
+    sensors: Mapping[str, Sensor] = dataclasses.field(default_factory=dict)
 
 
 @dataclass(frozen=True, slots=True)
@@ -408,7 +420,7 @@ class _Lowering:
         self.model = model
         self.frames = {f.name: frame(f) for f in model.frames.values()}
         self.own_frames: dict[str, tuple[FrameUse, ...]] = {}
-        primitives = {p.name: self.primitive(p) for p in model.primitives.values()}
+        primitives = {p.name: self.primitive(self.sensed(p)) for p in model.primitives.values()}
         outputs = {o.name: self.output(o) for o in model.outputs.values()}
         planned: dict[str, Interface] = {}
         for iface in model.callees_first():
@@ -419,11 +431,26 @@ class _Lowering:
         state = ({s.name: m.coerce(s.default, s.type) for s in model.settings.values()}
                  | {s.name: m.coerce(s.initial, s.type) for s in model.states.values()})
         settings = tuple(param(s.name, s.type, s.low, s.high, s.default) for s in model.settings.values())
+        sensors = {s.name: Sensor(s.name, primitives[s.primitive], s.cache_ms / 1000.0) for s in model.sensors.values()}
         device = Device(model.robot.name, state, connections, primitives, interfaces, inputs, settings=settings,
-                        messages=recorded_messages(model))
+                        messages=recorded_messages(model), sensors=sensors)
         self.plans = Plans(device, self.frames, outputs)
 
     # ---- primitives -----------------------------------------------------------------------------
+
+    def sensed(self, p: m.Primitive) -> m.Primitive:
+        """`p`, and when sensors read it, a post-action storing its one reply value as each
+        sensor's (`rdisc.semantics.check.sensors`): reading the sensor runs this plan."""
+        decoding = p.decoding
+        stores = tuple(m.PostAction(m.StateRef(s.name), m.ReplyValue(0, decoding.layout.slots[0].type))
+                       for s in self.model.sensors.values() if s.primitive == p.name and isinstance(decoding, m.Unpack))
+        return dataclasses.replace(p, actions=p.actions + stores) if stores else p
+
+    def sensors(self, *exprs: m.Expr | None) -> tuple[str, ...]:
+        """The sensors the expressions read, each once, in order."""
+        sensors = self.model.sensors
+        read = (v.name for e in exprs if e is not None for v in m.variables(e) if v.scope is m.Scope.STATE)
+        return tuple(dict.fromkeys(name for name in read if name in sensors))
 
     def primitive(self, p: m.Primitive) -> Primitive:
         """A primitive's plan; with a reply table, one plan for each entry besides (a range
@@ -472,7 +499,7 @@ class _Lowering:
     def reply(self, plan: Primitive, p: m.Primitive, local: tuple[m.Parameter, ...]) -> Primitive:
         """`plan` reading `p`'s reply (`read_as`): and its post-actions over `local` (besides
         state and the reply), with the state variables they may make too wide."""
-        states = self.model.states
+        states: Mapping[str, m.StateVariable | m.Sensor] = {**self.model.states, **self.model.sensors}
         actions = None
         if p.actions:
             actions = Code(_OVER_REPLY, Gives.DICT, local,
@@ -535,7 +562,7 @@ class _Lowering:
         filters = tuple(Construct(engine.FilterPlan, (k.field, k.state, k.covariance, k.transition, k.process,
                                                        k.measurement, k.noise)) for k in o.filters)
         return Output(o.name, Code(("state",), Gives.DICT, (), fields), o.adapter, *header_frames(self.model, o),
-                      filters)
+                      filters, self.sensors(*(e for _, e in o.fields)))
 
     def interface(self, iface: m.Interface, primitives: Mapping[str, Primitive], outputs: Mapping[str, Output],
                   callees: Mapping[str, Interface]) -> Interface:
@@ -552,8 +579,9 @@ class _Lowering:
                 call = dataclasses.replace(call, until=_condition(_OVER_ARGS, iface.params, c.until),
                                            every=c.every_ms / 1000.0, within=c.within_ms / 1000.0)
             calls.append(call)
+        read = self.sensors(*(e for c in iface.run_order() for e in (*c.args, c.when, c.until)))
         return Interface(iface.name, _params(iface.params), tuple(calls),
-                         outputs=tuple(outputs[o] for o in iface.triggers))
+                         outputs=tuple(outputs[o] for o in iface.triggers), sensors=read)
 
     def call(self, call: m.PrimitiveCall, params: tuple[m.Parameter, ...], plan: Primitive) -> Call:
         """A call of a primitive, with its format arguments substituted where that changes

@@ -213,6 +213,7 @@ def _output_panel(model: m.Model, o: m.DomainOutput) -> str:
 def _state_table(model: m.Model) -> str:
     rows = [(s.name, s.type, "setting") for s in model.settings.values()]
     rows += [(s.name, s.type, "state") for s in model.states.values() if s.name not in model.settings]
+    rows += [(s.name, s.type, f"sensor, kept {s.cache_ms:g} ms") for s in model.sensors.values()]
     if not rows:
         return _none
     body = "".join(f'<tr data-name="{escape(n)}"><th>{escape(n)}</th><td data-value></td>'

@@ -273,6 +273,17 @@ parity evn }`, `stopbits 3`, `databits 9`, `databits 8 stopbits 1.5`, or
 `connection net: tcp { address "socket://10.0.0.2:502" parity even }`. Right: S.BUS's
 `connection sbus: serial { baud 100000 parity even stopbits 2 }`, or Modbus RTU's
 `connection bus: serial { baud 19200 parity even }`."""),
+    ("E230", "sensor", """
+A `sensor NAME: TYPE from PRIMITIVE() cache N ms` holds the one value its primitive's
+reply decodes, and keeps it for the cache time: a reader within that time gets the kept
+value and sends nothing; a reader after it makes the primitive's exchange again. So the
+primitive takes no parameters, and its reply is one value read as it is (`unpack "B"`,
+not a reply table, listed or repeated replies, records, or a repeated group); that
+value's type flows into the sensor's (E401, E402 otherwise). The cache time is a
+positive constant: a time of 0 would read on every use, which a primitive call already
+does. An unknown primitive is E102. Wrong: `sensor bumps: int from bumpers() cache 0 ms`,
+or a `bumpers(packet: int)` with a parameter. Right: `primitive bumpers() on oi pack "BB"
+(142, 7) unpack "B"` and `sensor bumps: int from bumpers() cache 100 ms`."""),
     # -- message formats -------------------------------------------------------
     ("E301", "invalid-pack-format", """
 `pack` and `unpack` take Python struct format strings: an optional byte order

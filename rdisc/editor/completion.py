@@ -151,6 +151,7 @@ def _globals(index: Index, kinds: tuple[str, ...]) -> list[types.CompletionItem]
 _ITEM_KINDS = {
     "primitive": types.CompletionItemKind.Function, "interface": types.CompletionItemKind.Method,
     "state variable": types.CompletionItemKind.Variable, "setting": types.CompletionItemKind.Property,
+    "sensor": types.CompletionItemKind.Variable,
     "constant": types.CompletionItemKind.Constant, "enum": types.CompletionItemKind.Enum,
     "enum member": types.CompletionItemKind.EnumMember, "adapter": types.CompletionItemKind.Struct,
     "field": types.CompletionItemKind.Field, "parameter": types.CompletionItemKind.Variable,

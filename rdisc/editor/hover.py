@@ -61,6 +61,9 @@ def _signature(symbol: Symbol) -> str:
         case ast.StateDecl():
             return f"state {symbol.name}: {print_type(node.type)}" + (
                 f" = {print_expr(node.init)}" if node.init is not None else "")
+        case ast.SensorDecl():
+            return f"sensor {symbol.name}: {print_type(node.type)} from {node.primitive.text}() cache " + (
+                f"{print_expr(node.cache.value)} {node.cache.unit}")
         case ast.SettingDecl():
             bounds = f" in {print_expr(node.low)}..{print_expr(node.high)}" if node.low and node.high else ""
             return f"setting {symbol.name}: {print_type(node.type)}{bounds}" + (

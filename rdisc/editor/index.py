@@ -57,9 +57,9 @@ KINDS: dict[type, str] = {
     ast.PrimitiveDecl: "primitive", ast.InterfaceDecl: "interface", ast.AdapterDecl: "adapter",
     ast.InputDecl: "input", ast.OutputDecl: "output", ast.ConstDecl: "constant", ast.EnumDecl: "enum",
     ast.FrameDecl: "frame", ast.LinkDecl: "link", ast.JointDecl: "joint", ast.TransmissionDecl: "transmission",
-    ast.RobotDecl: "robot",
+    ast.RobotDecl: "robot", ast.SensorDecl: "sensor",
 }
-READ = ("state variable", "setting", "constant")
+READ = ("state variable", "setting", "constant", "sensor")
 """The declarations an expression reads by name, after its own names, in this order."""
 
 
@@ -184,6 +184,9 @@ class _Uses:
                         self.call(attr.call, ("interface",), scope)
                     else:
                         self.walk(attr, scope)
+            case ast.SensorDecl():
+                self.use(decl.primitive, ("primitive",))
+                self.walk(decl.cache, scope)
             case ast.PrimitiveDecl():
                 owner = self.index.globals["primitive"].get(decl.name.text)
                 for clause in decl.clauses:

@@ -55,6 +55,7 @@ def _document(model: m.Model) -> JsonObject:
         ("enumDocs", dict(model.enum_docs) or None),
         ("settings", [_setting(s) for s in model.settings.values()] or None),
         ("stateVariables", [_state(s) for s in model.states.values()]),
+        ("sensors", [_sensor(s) for s in model.sensors.values()] or None),
         ("connections", connections),
         ("frames", [_frame(f) for f in model.frames.values()] or None),
         ("primitives", [_primitive(x) for x in model.primitives.values()]),
@@ -91,6 +92,11 @@ def _state(s: m.StateVariable) -> JsonObject:
         ("value", _embedded(m.Const(s.initial, s.type)) if s.initial != () else None),  # an open array starts empty
         ("doc", s.doc),
     )
+
+
+def _sensor(s: m.Sensor) -> JsonObject:
+    return _object(("name", s.name), ("type", s.type.value), ("primitive", s.primitive), ("cache", _number(s.cache_ms)),
+                   ("doc", s.doc))
 
 
 def _setting(s: m.Setting) -> JsonObject:

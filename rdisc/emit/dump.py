@@ -119,6 +119,7 @@ def _primitive(model: m.Model, p: m.Primitive) -> str:
             lines += _sides(name, sides, rows)
     else:
         lines.append("  reply: none")
+    lines += [f"  out[0] is sensor {s.name}, kept {s.cache_ms:g} ms" for s in model.sensors.values() if s.primitive == p.name]
     return "\n".join(lines) + "\n"
 
 

@@ -30,6 +30,7 @@ _STYLE = {
     "output": ("cds", "#f6dce8"),
     "adapter": ("note", "#ffffff"),
     "state": ("ellipse", "#ffffff"),
+    "sensor": ("ellipse", "#fff4d6"),
     "setting": ("ellipse", "#f0f0f0"),
     "constant": ("plaintext", "#ffffff"),
     "table": ("plaintext", "#ffffff"),
@@ -91,6 +92,7 @@ def nodes(model: m.Model) -> Iterator[tuple[str, str, Span | None]]:
     yield from (("adapter", a.name, a.span) for a in model.adapters.values() if a.name in used or not a.standard)
     yield from (("setting", s.name, s.span) for s in model.settings.values())
     yield from (("state", s.name, s.span) for s in model.states.values() if s.name not in model.settings)
+    yield from (("sensor", s.name, s.span) for s in model.sensors.values())
     yield from (("link", link.name, link.span) for link in model.links.values())
     yield from (("joint", j.name, j.span) for j in model.joints.values())
     yield from (("transmission", t.name, t.span) for t in model.transmissions.values())
@@ -101,8 +103,12 @@ def nodes(model: m.Model) -> Iterator[tuple[str, str, Span | None]]:
 def _edges(model: m.Model) -> Iterator[tuple[str, str, str]]:
     """(from, to, label): what each element refers to."""
     def variable(name: str) -> str:
+        if name in model.sensors:
+            return f"sensor:{name}"
         return f"setting:{name}" if name in model.settings else f"state:{name}"
 
+    for s in model.sensors.values():
+        yield f"sensor:{s.name}", f"primitive:{s.primitive}", f"reads, kept {s.cache_ms:g} ms"
     for c in model.connections.values():
         for event, hook in (("startup", c.startup), ("terminate", c.terminate),
                             ("keepalive", c.keepalive.call if c.keepalive else None)):

@@ -75,7 +75,7 @@ _BODY_NAMES = frozenset((
 # Members of State besides the state variables (it is a Mapping).
 _STATE_MEMBERS = frozenset(("keys", "items", "values", "get"))
 # The classes a driver defines for its robot, by their names' endings after the robot's class name.
-_CLASS_ENDINGS = ("", "State", "Inputs", "Interfaces", "Primitives")
+_CLASS_ENDINGS = ("", "State", "Inputs", "Interfaces", "Primitives", "Sensors")
 
 
 def to_python(model: m.Model, source_name: str, *, sources: Mapping[str, SourceFile] | None = None) -> str:
@@ -506,7 +506,7 @@ class _Driver:
             case (Construct() | lowering.Call() | lowering.FrameUse() | lowering.Hook() | lowering.NoReply()
                   | lowering.LineReply() | lowering.FixedReply() | lowering.FramedReply() | lowering.TaggedReply()
                   | lowering.TaggedStream() | lowering.SubPayloads() | lowering.Records() | lowering.KeyedReply()
-                  | lowering.SeveralReplies() | lowering.ListedReplies() | lowering.ErrorReply()):
+                  | lowering.SeveralReplies() | lowering.ListedReplies() | lowering.ErrorReply() | lowering.Sensor()):
                 args, options = self.arguments(value)
                 return f"{_kind(value)}({', '.join([*args, *(f'{k}={v}' for k, v in options.items())])})"
             case tuple() if value and isinstance(value[0], lowering.Entry):  # a reply table, written before
@@ -797,6 +797,21 @@ class _Driver:
                 w.line(f"{s.name}: {_py_type(s.type)}")
                 if s.doc:
                     w.line(_docstring(s.doc))
+        if model.sensors:
+            w.blank(2)
+            with w.block(f"class {cls}Sensors(Sensors):"):
+                w.line(_docstring("The sensors: `robot.sensors.NAME` is its value, read first when older than its\n"
+                                  "cache time."))
+                w.blank(1)
+                w.line("__slots__ = ()")
+                for sensor in model.sensors.values():
+                    if sensor.name.startswith("_") or keyword.iskeyword(sensor.name):
+                        continue  # by name only
+                    w.blank(1)
+                    self.comment(w, sensor.span)
+                    w.line(f"{sensor.name}: {_py_type(sensor.type)}")
+                    if sensor.doc:
+                        w.line(_docstring(sensor.doc))
         for kind, title, elements in (
             ("input", "domain inputs: `robot.inputs.NAME(field=value, ...)`", model.inputs),
             ("interface", "interfaces: `robot.interfaces.NAME(...)`", model.interfaces),
@@ -829,9 +844,11 @@ class _Driver:
                     "`robot.primitives` hold a typed method for each element of the description."]
             w.line(_docstring("\n".join(doc)))
             w.blank(1)
-            typed = (("inputs", "The domain inputs, as typed methods."),
-                     ("interfaces", "The interfaces, as typed methods."),
-                     ("primitives", "The primitives, as typed methods."))
+            typed: tuple[tuple[str, str], ...] = (("inputs", "The domain inputs, as typed methods."),
+                                                  ("interfaces", "The interfaces, as typed methods."),
+                                                  ("primitives", "The primitives, as typed methods."))
+            if model.sensors:
+                typed += (("sensors", "The sensors, as typed attributes."),)
             # slots, not properties: every typed call reads one, and a slot is read without a call
             w.line(f"__slots__ = {_tuple([quoted(member) for member, _ in typed])}")
             for member, doc_ in typed:
@@ -843,7 +860,8 @@ class _Driver:
                 w.line('"""A robot not connected yet: `open()` connects it. `timeout`: seconds a reply may take."""')
                 w.line("super().__init__(_DEVICE, timeout=timeout)")
                 for member, _ in typed:
-                    w.line(f"self.{member} = {cls}{member.capitalize()}(self)")
+                    made = "self.device.sensors, self.read_sensor" if member == "sensors" else "self"
+                    w.line(f"self.{member} = {cls}{member.capitalize()}({made})")
             w.blank(1)
             w.line("@property")
             with w.block(f"def state(self) -> {cls}State:"):

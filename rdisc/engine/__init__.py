@@ -99,6 +99,7 @@ if TYPE_CHECKING:  # at run time each name is imported when it is first asked fo
         Records,
         Reply,
         Request,
+        Sensor,
         SeveralReplies,
         SubPayloads,
         TaggedReply,
@@ -123,6 +124,7 @@ if TYPE_CHECKING:  # at run time each name is imported when it is first asked fo
         session_topics,
     )
     from rdisc.engine.robot import Calls, Robot, State
+    from rdisc.engine.sensing import SensorCache, Sensors
     from rdisc.engine.signals import (
         EXIT_ERROR,
         EXIT_OK,
@@ -254,6 +256,9 @@ __all__ = [
     "Reply",
     "Request",
     "Robot",
+    "Sensor",
+    "SensorCache",
+    "Sensors",
     "Session",
     "SeveralReplies",
     "Side",

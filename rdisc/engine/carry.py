@@ -31,6 +31,7 @@ MODULES = (
     ("ports", "ports, a simulated device"),
     ("schedule", "a connection's thread"),
     ("exchange", "writing and reading"),
+    ("sensing", "sensors' cached values"),
     ("robot", "lifecycle and public face"),
     ("recording", "sessions in MCAP"),
     ("signals", "SIGINT, SIGTERM, exit statuses"),

@@ -96,7 +96,7 @@ def run_command(args: argparse.Namespace, robot: Robot, prog: str, sim: Simulato
     session = recorder.session if recorder is not None else session
     robot.on_error(_print_error)
     if args.watch:
-        robot.on_output(_print_output)
+        robot.on_output(_watcher(robot))
     if args.trace:
         robot.on_trace(lambda when, kind, connection, data: _print_io(when - began, kind, connection, data))
     previous = _install_signal_handlers()
@@ -273,6 +273,23 @@ def make_call(robot: Robot, kind: str, name: str, values: Mapping[str, Value]) -
         robot.call_interface(name, *values.values())
     else:
         robot.call_primitive(name, *values.values())
+
+
+def _watcher(robot: Robot) -> Callable[[dict[str, Any]], None]:
+    """`--watch`'s printer: an output that reads sensors also says how old each one's value is
+    (`"sensor_ages"`, seconds by the robot's clock), the rest as they are."""
+    read = {o.name: o.sensors for i in robot.device.interfaces.values() for o in i.outputs if o.sensors}
+    if not read:
+        return _print_output
+
+    def watched(message: dict[str, Any]) -> None:
+        sensors = read.get(message["name"], ())
+        if sensors:
+            ages = {name: robot.sensor_age(name) for name in sensors}
+            message = {**message, "sensor_ages": {n: None if a is None else round(a, 6) for n, a in ages.items()}}
+        _print_output(message)
+
+    return watched
 
 
 def _print_output(message: dict[str, Any]) -> None:

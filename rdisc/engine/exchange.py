@@ -843,7 +843,13 @@ class Exchange:
 
     # ---- delivering to callbacks: one at a time, a failing one reported -----------------------------
 
+    def _sense(self, names: tuple[str, ...]) -> None:
+        """Make each named sensor fresh before it is read (the Robot's: `rdisc.engine.sensing`)."""
+        raise NotImplementedError
+
     def _deliver(self, plan: Output) -> None:
+        if plan.sensors:
+            self._sense(plan.sensors)
         with self._state_lock:  # the snapshot and when it was read, together
             state, read_ns = self._state, self._read_ns
         try:

@@ -330,6 +330,7 @@ class Output:
     frame: str = ""  # its stamped messages' frame id and child frame id (`semantics.ros.header_frames`)
     child_frame: str = ""
     filters: tuple[FilterPlan, ...] = ()  # fields published as a Kalman filter's estimate
+    sensors: tuple[str, ...] = ()  # the sensors its fields read: each read first, when stale
 
 
 @dataclass(frozen=True, slots=True)
@@ -356,6 +357,7 @@ class Interface:
     params: tuple[Param, ...]
     calls: tuple[Call, ...]
     outputs: tuple[Output, ...] = ()
+    sensors: tuple[str, ...] = ()  # the sensors its calls read: each read first, when stale
     floats: tuple[int, ...] = field(init=False)
     ranged: tuple[int, ...] = field(init=False)
 
@@ -488,6 +490,16 @@ class Connection:
 
 
 @dataclass(frozen=True, slots=True)
+class Sensor:
+    """A sensor (`rdisc.engine.sensing`): the primitive whose post-actions store its value as
+    state, and how long a value read is kept (seconds)."""
+
+    name: str
+    primitive: Primitive
+    cache: float
+
+
+@dataclass(frozen=True, slots=True)
 class Device:
     """A whole description, planned: what a Robot runs."""
 
@@ -499,6 +511,7 @@ class Device:
     inputs: Mapping[str, Input]
     settings: tuple[Param, ...] = ()  # given when connecting; read as state is, never written
     messages: Mapping[str, Message] = field(default_factory=dict)  # by adapter: how a recording carries it
+    sensors: Mapping[str, Sensor] = field(default_factory=dict)
 
 
 @dataclass(frozen=True, slots=True)

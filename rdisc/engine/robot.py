@@ -20,6 +20,7 @@ from rdisc.engine.operations import EVAL_ERRORS
 from rdisc.engine.plans import Call, Device, Hook, Input, Interface, KeyedReply, Primitive, Request
 from rdisc.engine.ports import PortSpec, Simulator, _Link, _open_port, _Port, _write_timed_out
 from rdisc.engine.schedule import _connection_workers, _Worker
+from rdisc.engine.sensing import SensorCache, Sensors
 from rdisc.engine.values import (
     Args,
     ErrorCallback,
@@ -161,6 +162,7 @@ class Robot(Exchange):
         self._sim: Simulator | None = None
         self._clock: Callable[[], float] = time.monotonic  # the schedule's time, and the delays'
         self._sleep: Callable[[float], None] = self._delay
+        self._sensed = SensorCache()
         self._choose_write()
 
     # ---- callbacks --------------------------------------------------------------------------------
@@ -207,6 +209,33 @@ class Robot(Exchange):
     def state(self) -> State:
         """The state variables now: an immutable snapshot, `robot.state["name"]` or `.name`."""
         return State(self._state)
+
+    @functools.cached_property
+    def sensors(self) -> Any:  # a Sensors, or a driver's typed properties
+        """The sensors, by name: `robot.sensors.NAME` is its value, read first when older than its cache time."""
+        return Sensors(self.device.sensors, self.read_sensor)
+
+    def read_sensor(self, name: str, /) -> Value:
+        """A sensor's value, read through its primitive first when older than its cache time."""
+        self._sense((name,))
+        return self._state[name]
+
+    def sensor_age(self, name: str, /) -> float | None:
+        """Seconds since the sensor's value was read, by the robot's clock; None: never read."""
+        return self._sensed.age(name, self._clock())
+
+    def _sense(self, names: tuple[str, ...]) -> None:
+        sensors = self.device.sensors
+        for name in names:
+            sensor = sensors.get(name)
+            if sensor is None:
+                raise KeyError(f"{self.name} has no sensor named {name!r}")
+            self._sensed.refresh(sensor, self._clock(), self._read_sensor)
+
+    def _read_sensor(self, plan: Primitive) -> None:
+        if not self._running:
+            raise self._not_running()
+        self._primitive(plan, [])
 
     @property
     def closed(self) -> bool:
@@ -598,6 +627,8 @@ class Robot(Exchange):
                 break
         if plan.ranged:
             _check_ranges(plan.name, plan.params, plan.ranged, args)
+        if plan.sensors:
+            self._sense(plan.sensors)
         for call in plan.calls:
             try:
                 if call.when is not None and not call.when(self._state, args):

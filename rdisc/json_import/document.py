@@ -34,12 +34,13 @@ def read(path: str, text: str, diagnostics: Diagnostics) -> ast.Module | None:
 _TOP = (
     "name", "author", "description", "version", "doc", "constants", "enums", "tables", "constantDocs", "enumDocs",
     "settings",
-    "stateVariables", "connections", "frames", "primitives", "interfaces", "domainAdapters", "domainInterfaces", "domainOutputs",
+    "stateVariables", "sensors", "connections", "frames", "primitives", "interfaces", "domainAdapters", "domainInterfaces", "domainOutputs",
     "links", "joints", "transmissions",
 )  # fmt: skip
 _SECTIONS = {  # list member: (its elements in words, the RDIS keyword declaring one)
     "settings": ("a setting", "setting"),
     "stateVariables": ("a state variable", "state"),
+    "sensors": ("a sensor", "sensor"),
     "spp": ("a connection", "connection"),
     "tcp": ("a connection", "connection"),
     "frames": ("a frame", "frame"),
@@ -53,6 +54,7 @@ _SECTIONS = {  # list member: (its elements in words, the RDIS keyword declaring
     "transmissions": ("a transmission", "transmission"),
 }
 _STATE = ("name", "type", "value", "doc")
+_SENSOR = ("name", "type", "primitive", "cache", "doc")
 _SETTING = ("name", "type", "range", "value", "doc")
 THREADINGS = ("singleThreading", "dualThreading", "multipleThreading")  # the threading models, one a connection
 _CONNECTION = (
@@ -77,6 +79,7 @@ class Importer(Primitives, Interfaces, Body):
         frames = self.each(top, "frames", self.frame)
         settings = self.each(top, "settings", self.setting)
         states = self.each(top, "stateVariables", self.state)
+        sensors = self.each(top, "sensors", self.sensor)
         primitives = self.each(top, "primitives", self.primitive)
         interfaces = self.each(top, "interfaces", self.interface)
         connections = self.connections(top.get("connections"))
@@ -92,6 +95,7 @@ class Importer(Primitives, Interfaces, Body):
             *enums,
             *settings,
             *states,
+            *sensors,
             *connections,
             *frames,
             *primitives,
@@ -198,6 +202,17 @@ class Importer(Primitives, Interfaces, Body):
         if name is None or type_ is None:
             return None
         return ast.StateDecl(name, type_, init, obj.span, self.doc(m))
+
+    def sensor(self, obj: JObject) -> ast.SensorDecl | None:
+        """`{"name", "type", "primitive", "cache"}`: the cache time in ms."""
+        m = self.members(obj, "a sensor", _SENSOR)
+        name = self.name(obj, m, "a sensor")
+        type_ = self.required(obj, m, "type", "a sensor", self.type_ref)
+        primitive = self.required(obj, m, "primitive", "a sensor", self.ident)
+        cache = self.required(obj, m, "cache", "a sensor", lambda v, _: self.expr(v, "float"))
+        if name is None or type_ is None or primitive is None or cache is None:
+            return None
+        return ast.SensorDecl(name, type_, primitive, ast.Duration(cache, "ms", cache.span), obj.span, self.doc(m))
 
     def setting(self, obj: JObject) -> ast.SettingDecl | None:
         m = self.members(obj, "a setting", _SETTING)

@@ -124,6 +124,7 @@ class _Engine:
             {name: self.primitive(p) for name, p in d.primitives.items()},
             {name: self.interface(i) for name, i in d.interfaces.items()},
             {name: self.input(i) for name, i in d.inputs.items()}, built(d.settings), dict(d.messages),
+            {name: engine.Sensor(name, self.primitive(s.primitive), s.cache) for name, s in d.sensors.items()},
         )
 
     def frame(self, f: plans.Frame) -> engine.Frame:
@@ -188,11 +189,11 @@ class _Engine:
 
     def output(self, o: plans.Output) -> engine.Output:
         return self.once(o, lambda: engine.Output(o.name, self.closure(o.fields), o.adapter, o.frame,
-                                                               o.child_frame, built(o.filters)))
+                                                               o.child_frame, built(o.filters), o.sensors))
 
     def interface(self, i: plans.Interface) -> engine.Interface:
         return self.once(i, lambda: engine.Interface(i.name, built(i.params), tuple(self.call(c) for c in i.calls),
-                                                     tuple(self.output(o) for o in i.outputs)))
+                                                     tuple(self.output(o) for o in i.outputs), i.sensors))
 
     def call(self, c: plans.Call) -> engine.Call:
         target = self.primitive(c.target) if isinstance(c.target, plans.Primitive) else self.interface(c.target)

@@ -10,6 +10,7 @@ ASCII messages are counted at their shortest, so a warning is never a false alar
 
 from __future__ import annotations
 
+from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
 from rdisc.diagnostics import Diagnostics
@@ -40,6 +41,17 @@ class Exchange:
 
 
 @dataclass(frozen=True, slots=True)
+class SensorLoad:
+    """A sensor read on this connection: its exchange's bytes and time on the wire, and how
+    often it is read (at most once per cache time: rdisc.semantics.sensed)."""
+
+    sensor: str
+    bytes: int
+    wire_ms: float
+    rate_hz: float
+
+
+@dataclass(frozen=True, slots=True)
 class ConnectionBudget:
     connection: str
     baud: int
@@ -55,6 +67,7 @@ class ConnectionBudget:
     def rate(self, index: int) -> float:
         """Runs a second of the periodic exchange `index`."""
         return self.rates[index] if index < len(self.rates) else self.frequency_hz
+    sensed: tuple[SensorLoad, ...] = ()
 
     @property
     def baud_text(self) -> str:
@@ -72,7 +85,8 @@ class ConnectionBudget:
 
     @property
     def tick_ms_needed(self) -> float:
-        return sum(e.total_ms for e in self.periodic)
+        """The longest tick: its periodic work, and each sensor read in it."""
+        return sum(e.total_ms for e in self.periodic) + sum(s.wire_ms for s in self.sensed)
 
     @property
     def load(self) -> float:
@@ -80,7 +94,7 @@ class ConnectionBudget:
         per_tick = sum(e.bytes * self.rate(i) for i, e in enumerate(self.periodic))
         if self.keepalive and self.keepalive_interval_ms:
             per_tick += self.keepalive.bytes * 1000.0 / self.keepalive_interval_ms
-        return per_tick
+        return per_tick + sum(s.bytes * s.rate_hz for s in self.sensed)
 
     def lines(self) -> list[str]:
         """The budget in words, for `rdisc check --verbose`."""
@@ -99,6 +113,8 @@ class ConnectionBudget:
         if self.keepalive and self.keepalive_interval_ms:
             out.append(f"  keepalive every {self.keepalive_interval_ms:g} ms:")
             out.append(f"    {_exchange(self.keepalive)}")
+        for s in self.sensed:
+            out.append(f"  sensor {s.sensor}: {s.bytes} bytes, {s.wire_ms:.2f} ms on the wire, read at {s.rate_hz:g} Hz")
         share = 100.0 * self.load / self.capacity if self.capacity else 0.0
         out.append(f"  scheduled: {self.load:.1f} bytes/s, {share:.1f}% of the link")
         return out
@@ -123,10 +139,21 @@ def budget(model: m.Model, diagnostics: Diagnostics) -> list[ConnectionBudget]:
                       if iface.periodic and model.owner(iface) == conn.name)
         b = ConnectionBudget(conn.name, conn.baud, conn.frequency_hz, periodic, keepalive,
                              conn.keepalive.interval_ms if conn.keepalive else None, conn.baud_setting,
-                             conn.bits_per_byte(), conn.threading, rates)
+                             conn.bits_per_byte(), conn.threading, rates, tuple(_sensed(model, conn)))
         _warn(model, conn, b, diagnostics)
         budgets.append(b)
     return budgets
+
+
+def _sensed(model: m.Model, conn: m.Connection) -> Iterator[SensorLoad]:
+    """The sensors read on this connection, each at the rate it is read."""
+    from rdisc.semantics.sensed import read_rates
+
+    for sensor, rate in read_rates(model):
+        prim = model.primitives[sensor.primitive]
+        if prim.connection == conn.name:
+            size = message_bytes(prim, model.frames)
+            yield SensorLoad(sensor.name, size, size * conn.bits_per_byte() * 1000.0 / conn.baud, rate)
 
 
 def _warn(model: m.Model, conn: m.Connection, b: ConnectionBudget, diagnostics: Diagnostics) -> None:

@@ -46,6 +46,37 @@ def _hash_Exchange(self: Any) -> int:
     return hash((self.interface, self.bytes, self.wire_ms, self.delay_ms))
 
 
+def _init_SensorLoad(self: Any, sensor: Any, bytes: Any, wire_ms: Any, rate_hz: Any) -> None:
+    _set(self, "sensor", sensor)
+    _set(self, "bytes", bytes)
+    _set(self, "wire_ms", wire_ms)
+    _set(self, "rate_hz", rate_hz)
+
+
+def _repr_SensorLoad(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(sensor={self.sensor!r}, bytes={self.bytes!r}, wire_ms={self.wire_ms!r}, rate_hz={self.rate_hz!r})"
+
+
+def _eq_SensorLoad(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.sensor,
+            self.bytes,
+            self.wire_ms,
+            self.rate_hz,
+        ) == (
+            other.sensor,
+            other.bytes,
+            other.wire_ms,
+            other.rate_hz,
+        )
+    return NotImplemented
+
+
+def _hash_SensorLoad(self: Any) -> int:
+    return hash((self.sensor, self.bytes, self.wire_ms, self.rate_hz))
+
+
 def _init_ConnectionBudget(
     self: Any,
     connection: Any,
@@ -58,6 +89,7 @@ def _init_ConnectionBudget(
     bits_per_byte: Any = DEFAULT,
     threading: Any = DEFAULT,
     rates: Any = DEFAULT,
+    sensed: Any = DEFAULT,
 ) -> None:
     _set(self, "connection", connection)
     _set(self, "baud", baud)
@@ -69,10 +101,11 @@ def _init_ConnectionBudget(
     _set(self, "bits_per_byte", bits_per_byte)
     _set(self, "threading", threading)
     _set(self, "rates", rates)
+    _set(self, "sensed", sensed)
 
 
 def _repr_ConnectionBudget(self: Any) -> str:
-    return f"{self.__class__.__qualname__}(connection={self.connection!r}, baud={self.baud!r}, frequency_hz={self.frequency_hz!r}, periodic={self.periodic!r}, keepalive={self.keepalive!r}, keepalive_interval_ms={self.keepalive_interval_ms!r}, baud_setting={self.baud_setting!r}, bits_per_byte={self.bits_per_byte!r}, threading={self.threading!r}, rates={self.rates!r})"
+    return f"{self.__class__.__qualname__}(connection={self.connection!r}, baud={self.baud!r}, frequency_hz={self.frequency_hz!r}, periodic={self.periodic!r}, keepalive={self.keepalive!r}, keepalive_interval_ms={self.keepalive_interval_ms!r}, baud_setting={self.baud_setting!r}, bits_per_byte={self.bits_per_byte!r}, threading={self.threading!r}, rates={self.rates!r}, sensed={self.sensed!r})"
 
 
 def _eq_ConnectionBudget(self: Any, other: Any) -> Any:
@@ -88,6 +121,7 @@ def _eq_ConnectionBudget(self: Any, other: Any) -> Any:
             self.bits_per_byte,
             self.threading,
             self.rates,
+            self.sensed,
         ) == (
             other.connection,
             other.baud,
@@ -99,6 +133,7 @@ def _eq_ConnectionBudget(self: Any, other: Any) -> Any:
             other.bits_per_byte,
             other.threading,
             other.rates,
+            other.sensed,
         )
     return NotImplemented
 
@@ -115,6 +150,7 @@ def _hash_ConnectionBudget(self: Any) -> int:
         self.bits_per_byte,
         self.threading,
         self.rates,
+        self.sensed,
     ))
 
 
@@ -126,6 +162,15 @@ WRITTEN: dict[str, Written] = {
             "__repr__": _repr_Exchange,
             "__eq__": _eq_Exchange,
             "__hash__": _hash_Exchange,
+        },
+    ),
+    "SensorLoad": Written(
+        (("sensor", MISSING), ("bytes", MISSING), ("wire_ms", MISSING), ("rate_hz", MISSING)),
+        {
+            "__init__": _init_SensorLoad,
+            "__repr__": _repr_SensorLoad,
+            "__eq__": _eq_SensorLoad,
+            "__hash__": _hash_SensorLoad,
         },
     ),
     "ConnectionBudget": Written(
@@ -140,6 +185,7 @@ WRITTEN: dict[str, Written] = {
             ("bits_per_byte", DEFAULT),
             ("threading", DEFAULT),
             ("rates", DEFAULT),
+            ("sensed", DEFAULT),
         ),
         {
             "__init__": _init_ConnectionBudget,

@@ -295,6 +295,19 @@ class StateVariable:
 
 
 @dataclass(frozen=True, slots=True)
+class Sensor:
+    """`sensor NAME: TYPE from PRIMITIVE() cache N ms`: the primitive's one reply value, read
+    when a reader finds it older than the cache time and kept until then (thesis §7.2.4)."""
+
+    name: str
+    type: AnyType
+    primitive: PrimitiveRef
+    cache_ms: float
+    doc: str | None = None
+    span: Span | None = _span
+
+
+@dataclass(frozen=True, slots=True)
 class Setting:
     """A value given when connecting (a baud rate, a servo's ID, a wheel base): read-only,
     read by expressions as state is; `default` when none is given, and what the checks use."""
@@ -1150,6 +1163,7 @@ class Model:
     links: dict[str, Link] = field(default_factory=dict)
     joints: dict[str, Joint] = field(default_factory=dict)  # parents before children
     transmissions: dict[str, Transmission] = field(default_factory=dict)
+    sensors: dict[str, Sensor] = field(default_factory=dict)
 
     def root_link(self) -> Link | None:
         """The link no joint moves: the checker allows exactly one when there are links."""

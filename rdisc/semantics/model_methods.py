@@ -522,6 +522,49 @@ def _hash_StateVariable(self: Any) -> int:
     return hash((self.name, self.type, self.initial, self.doc))
 
 
+def _init_Sensor(
+    self: Any,
+    name: Any,
+    type: Any,
+    primitive: Any,
+    cache_ms: Any,
+    doc: Any = DEFAULT,
+    span: Any = DEFAULT,
+) -> None:
+    _set(self, "name", name)
+    _set(self, "type", type)
+    _set(self, "primitive", primitive)
+    _set(self, "cache_ms", cache_ms)
+    _set(self, "doc", doc)
+    _set(self, "span", span)
+
+
+def _repr_Sensor(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(name={self.name!r}, type={self.type!r}, primitive={self.primitive!r}, cache_ms={self.cache_ms!r}, doc={self.doc!r})"
+
+
+def _eq_Sensor(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.name,
+            self.type,
+            self.primitive,
+            self.cache_ms,
+            self.doc,
+        ) == (
+            other.name,
+            other.type,
+            other.primitive,
+            other.cache_ms,
+            other.doc,
+        )
+    return NotImplemented
+
+
+def _hash_Sensor(self: Any) -> int:
+    return hash((self.name, self.type, self.primitive, self.cache_ms, self.doc))
+
+
 def _init_Setting(
     self: Any,
     name: Any,
@@ -2471,6 +2514,7 @@ def _init_Model(
     links: Any = DEFAULT,
     joints: Any = DEFAULT,
     transmissions: Any = DEFAULT,
+    sensors: Any = DEFAULT,
 ) -> None:
     _set(self, "robot", robot)
     _set(self, "states", states)
@@ -2490,10 +2534,11 @@ def _init_Model(
     _set(self, "links", {} if links is FACTORY else links)
     _set(self, "joints", {} if joints is FACTORY else joints)
     _set(self, "transmissions", {} if transmissions is FACTORY else transmissions)
+    _set(self, "sensors", {} if sensors is FACTORY else sensors)
 
 
 def _repr_Model(self: Any) -> str:
-    return f"{self.__class__.__qualname__}(robot={self.robot!r}, states={self.states!r}, connections={self.connections!r}, primitives={self.primitives!r}, interfaces={self.interfaces!r}, adapters={self.adapters!r}, inputs={self.inputs!r}, outputs={self.outputs!r}, frames={self.frames!r}, constants={self.constants!r}, enums={self.enums!r}, tables={self.tables!r}, constant_docs={self.constant_docs!r}, enum_docs={self.enum_docs!r}, settings={self.settings!r}, links={self.links!r}, joints={self.joints!r}, transmissions={self.transmissions!r})"
+    return f"{self.__class__.__qualname__}(robot={self.robot!r}, states={self.states!r}, connections={self.connections!r}, primitives={self.primitives!r}, interfaces={self.interfaces!r}, adapters={self.adapters!r}, inputs={self.inputs!r}, outputs={self.outputs!r}, frames={self.frames!r}, constants={self.constants!r}, enums={self.enums!r}, tables={self.tables!r}, constant_docs={self.constant_docs!r}, enum_docs={self.enum_docs!r}, settings={self.settings!r}, links={self.links!r}, joints={self.joints!r}, transmissions={self.transmissions!r}, sensors={self.sensors!r})"
 
 
 def _eq_Model(self: Any, other: Any) -> Any:
@@ -2517,6 +2562,7 @@ def _eq_Model(self: Any, other: Any) -> Any:
             self.links,
             self.joints,
             self.transmissions,
+            self.sensors,
         ) == (
             other.robot,
             other.states,
@@ -2536,6 +2582,7 @@ def _eq_Model(self: Any, other: Any) -> Any:
             other.links,
             other.joints,
             other.transmissions,
+            other.sensors,
         )
     return NotImplemented
 
@@ -2560,6 +2607,7 @@ def _hash_Model(self: Any) -> int:
         self.links,
         self.joints,
         self.transmissions,
+        self.sensors,
     ))
 
 
@@ -2760,6 +2808,17 @@ WRITTEN: dict[str, Written] = {
             "__eq__": _eq_StateVariable,
             "__hash__": _hash_StateVariable,
         },
+    ),
+    "Sensor": Written(
+        (
+            ("name", MISSING),
+            ("type", MISSING),
+            ("primitive", MISSING),
+            ("cache_ms", MISSING),
+            ("doc", DEFAULT),
+            ("span", FieldSpec(None, MISSING, False, False)),
+        ),
+        {"__init__": _init_Sensor, "__repr__": _repr_Sensor, "__eq__": _eq_Sensor, "__hash__": _hash_Sensor},
     ),
     "Setting": Written(
         (
@@ -3389,6 +3448,7 @@ WRITTEN: dict[str, Written] = {
             ("links", FieldSpec(MISSING, dict, True, True)),
             ("joints", FieldSpec(MISSING, dict, True, True)),
             ("transmissions", FieldSpec(MISSING, dict, True, True)),
+            ("sensors", FieldSpec(MISSING, dict, True, True)),
         ),
         {"__init__": _init_Model, "__repr__": _repr_Model, "__eq__": _eq_Model, "__hash__": _hash_Model},
     ),

@@ -41,13 +41,14 @@ class Symbols:
 
     __slots__ = (
         "adapters", "connections", "constants", "damaged", "enums", "frames", "inputs", "interfaces", "joints",
-        "links", "outputs", "primitives", "robot", "settings", "standard", "states", "suggested", "transmissions",
+        "links", "outputs", "primitives", "robot", "sensors", "settings", "standard", "states", "suggested", "transmissions",
     )
 
     def __init__(self) -> None:
         self.robot: ast.RobotDecl | None = None
         self.states: dict[str, ast.StateDecl] = {}
         self.settings: dict[str, ast.SettingDecl] = {}
+        self.sensors: dict[str, ast.SensorDecl] = {}
         self.connections: dict[str, ast.ConnectionDecl] = {}
         self.primitives: dict[str, ast.PrimitiveDecl] = {}
         self.interfaces: dict[str, ast.InterfaceDecl] = {}
@@ -73,6 +74,7 @@ class Symbols:
 _KINDS = {
     ast.StateDecl: ("states", "state variable"),
     ast.SettingDecl: ("settings", "setting"),
+    ast.SensorDecl: ("sensors", "sensor"),
     ast.ConnectionDecl: ("connections", "connection"),
     ast.PrimitiveDecl: ("primitives", "primitive"),
     ast.InterfaceDecl: ("interfaces", "interface"),
@@ -216,6 +218,8 @@ def _bind(decl: ast.Decl, symbols: Symbols, callables: Mapping[str, object], dia
                 name = stmt.call.target.text
                 if not symbols.is_damaged("primitive", name) and not symbols.is_damaged("interface", name):
                     need(stmt.call.target, callables, "primitive or interface")
+        case ast.SensorDecl():
+            need(decl.primitive, symbols.primitives, "primitive")
         case ast.InputDecl():
             need(decl.adapter, symbols.adapters, "adapter")
             need(decl.call.target, symbols.interfaces, "interface")

@@ -234,6 +234,19 @@ class StateDecl:
 
 
 @dataclass(frozen=True, slots=True)
+class SensorDecl:
+    """`sensor NAME: TYPE from PRIMITIVE() cache DURATION`: the primitive's reply value, kept
+    for the cache time (thesis §7.2.4)."""
+
+    name: Ident
+    type: TypeRef
+    primitive: Ident
+    cache: Duration
+    span: Span = _span
+    doc: str | None = None
+
+
+@dataclass(frozen=True, slots=True)
 class SettingDecl:
     """`setting NAME: TYPE in LOW..HIGH = DEFAULT`: a value the user gives when connecting."""
 
@@ -913,7 +926,7 @@ class TransmissionDecl:
 
 
 Decl = (
-    ImportDecl | RobotDecl | StateDecl | SettingDecl | ConnectionDecl | PrimitiveDecl | InterfaceDecl | AdapterDecl | InputDecl
+    ImportDecl | RobotDecl | StateDecl | SensorDecl | SettingDecl | ConnectionDecl | PrimitiveDecl | InterfaceDecl | AdapterDecl | InputDecl
     | OutputDecl | ConstDecl | EnumDecl | FrameDecl | LinkDecl | JointDecl | TransmissionDecl
 )
 

@@ -546,6 +546,49 @@ def _hash_StateDecl(self: Any) -> int:
     return hash((self.name, self.type, self.init, self.doc))
 
 
+def _init_SensorDecl(
+    self: Any,
+    name: Any,
+    type: Any,
+    primitive: Any,
+    cache: Any,
+    span: Any = DEFAULT,
+    doc: Any = DEFAULT,
+) -> None:
+    _set(self, "name", name)
+    _set(self, "type", type)
+    _set(self, "primitive", primitive)
+    _set(self, "cache", cache)
+    _set(self, "span", span)
+    _set(self, "doc", doc)
+
+
+def _repr_SensorDecl(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(name={self.name!r}, type={self.type!r}, primitive={self.primitive!r}, cache={self.cache!r}, doc={self.doc!r})"
+
+
+def _eq_SensorDecl(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.name,
+            self.type,
+            self.primitive,
+            self.cache,
+            self.doc,
+        ) == (
+            other.name,
+            other.type,
+            other.primitive,
+            other.cache,
+            other.doc,
+        )
+    return NotImplemented
+
+
+def _hash_SensorDecl(self: Any) -> int:
+    return hash((self.name, self.type, self.primitive, self.cache, self.doc))
+
+
 def _init_SettingDecl(
     self: Any,
     name: Any,
@@ -2598,6 +2641,22 @@ WRITTEN: dict[str, Written] = {
             "__repr__": _repr_StateDecl,
             "__eq__": _eq_StateDecl,
             "__hash__": _hash_StateDecl,
+        },
+    ),
+    "SensorDecl": Written(
+        (
+            ("name", MISSING),
+            ("type", MISSING),
+            ("primitive", MISSING),
+            ("cache", MISSING),
+            ("span", FieldSpec(None, MISSING, False, False)),
+            ("doc", DEFAULT),
+        ),
+        {
+            "__init__": _init_SensorDecl,
+            "__repr__": _repr_SensorDecl,
+            "__eq__": _eq_SensorDecl,
+            "__hash__": _hash_SensorDecl,
         },
     ),
     "SettingDecl": Written(

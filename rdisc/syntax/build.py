@@ -278,6 +278,11 @@ class Rules:
         name, type_, init = c
         return ast.StateDecl(self.b.ident(name), self.b.type_ref(type_), init, self.b.span(meta), self.b.doc(meta))
 
+    def sensor_decl(self, meta: Meta, c: list[Any]) -> ast.SensorDecl:
+        name, type_, primitive, cache = c
+        return ast.SensorDecl(self.b.ident(name), self.b.type_ref(type_), self.b.ident(primitive), cache,
+                              self.b.span(meta), self.b.doc(meta))
+
     def setting_decl(self, meta: Meta, c: list[Any]) -> ast.SettingDecl:
         name, type_, low, high, default = c
         return ast.SettingDecl(self.b.ident(name), self.b.type_ref(type_), default, self.b.span(meta),

@@ -36,6 +36,7 @@ DECL_KEYWORDS = (
     "import",
     "robot",
     "state",
+    "sensor",
     "setting",
     "connection",
     "primitive",

@@ -80,6 +80,8 @@ def _code(d: ast.Decl) -> list[str]:
         case ast.StateDecl(name, type_, init):
             value = "" if init is None else f" = {print_expr(init)}"
             return [f"state {name.text}: {print_type(type_)}{value}"]
+        case ast.SensorDecl(name, type_, primitive, cache):
+            return [f"sensor {name.text}: {print_type(type_)} from {primitive.text}() cache {_duration(cache)}"]
         case ast.SettingDecl(name, type_, default, _, _, low, high):
             bounds = "" if low is None or high is None else f" in {print_expr(low)}..{print_expr(high)}"
             value = "" if default is None else f" = {print_expr(default)}"

@@ -148,18 +148,37 @@ def test_explain_lists_every_code(rdisc) -> None:
 # -- verbose budget, JSON diagnostics ----------------------------------------------
 
 
-def test_verbose_prints_the_budget_of_create(rdisc) -> None:
-    result = rdisc("check", "-v", CREATE)
+def test_verbose_prints_the_budget_of_create_polled(rdisc) -> None:
+    polled = "tests/runtime/data/polled/create.rdis"  # examples/create.rdis before its bumpers became a sensor
+    result = rdisc("check", "-v", polled)
     assert result.returncode == 0
     assert result.stderr == ""
     assert result.stdout.splitlines() == [
-        "examples/create.rdis: connection `btserial`: 57600 baud, 5760 bytes/s",
+        f"{polled}: connection `btserial`: 57600 baud, 5760 bytes/s",
         "  every tick (40 Hz, 25.0 ms):",
         "    get_bumpers: 3 bytes, 0.52 ms on the wire + 15 ms of delays = 15.52 ms",
         "    15.52 ms of 25.0 ms per tick",
         "  keepalive every 1000 ms:",
         "    get_bumpers: 3 bytes, 0.52 ms on the wire + 15 ms of delays = 15.52 ms",
         "  scheduled: 123.0 bytes/s, 2.1% of the link",
+    ]
+
+
+def test_verbose_prints_the_budget_of_create_with_its_sensor(rdisc) -> None:
+    """The bumpers, a sensor kept for 100 ms, are counted at the rate they are read (10 Hz), not
+    at the 40 Hz of the output that reads them; the tick that reads them carries their exchange."""
+    result = rdisc("check", "-v", CREATE)
+    assert result.returncode == 0
+    assert result.stderr == ""
+    assert result.stdout.splitlines() == [
+        "examples/create.rdis: connection `btserial`: 57600 baud, 5760 bytes/s",
+        "  every tick (40 Hz, 25.0 ms):",
+        "    get_bumpers: 0 bytes, 0.00 ms on the wire + 0 ms of delays = 0.00 ms",
+        "    0.52 ms of 25.0 ms per tick",
+        "  keepalive every 1000 ms:",
+        "    get_bumpers: 0 bytes, 0.00 ms on the wire + 0 ms of delays = 0.00 ms",
+        "  sensor bumperStates: 3 bytes, 0.52 ms on the wire, read at 10 Hz",
+        "  scheduled: 30.0 bytes/s, 0.5% of the link",
     ]
 
 

@@ -23,7 +23,8 @@ from devices import CreateEmulator
 from devices.create import DRIVE, STOP, TABLE_4_3
 
 CHROMIUM = Path("/usr/bin/chromium")
-CREATE = REPO / "examples" / "create.rdis"
+# The bumpers polled every tick (as before they became a sensor): the trace test counts on polls
+CREATE = REPO / "tests" / "runtime" / "data" / "polled" / "create.rdis"
 WAIT_MS = 30_000  # a generous limit for any one condition (never a measure of speed)
 ON_CI = os.environ.get("CI", "").lower() in ("1", "true", "yes")
 

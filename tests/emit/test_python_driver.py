@@ -31,6 +31,7 @@ pytestmark = pytest.mark.long  # started before the other files (tests/conftest.
 
 REPO = Path(__file__).resolve().parents[2]
 EXAMPLES = REPO / "examples"
+POLLED = REPO / "tests" / "runtime" / "data" / "polled" / "create.rdis"  # examples/create.rdis before its sensor
 GOLDEN = REPO / "tests" / "golden" / "drivers"
 
 
@@ -82,11 +83,14 @@ class Recorder:
 def drivers(tmp_path_factory) -> dict[str, Path]:
     folder = tmp_path_factory.mktemp("drivers")
     fast = tmp_path_factory.mktemp("fast")
+    polled = tmp_path_factory.mktemp("polled")
     return {
         "create": generate(EXAMPLES / "create.rdis", folder, "irobot_create"),
         "koala": generate(EXAMPLES / "koala.rdis", folder, "koala"),
         "arm": generate(EXAMPLES / "arm.rdis", folder, "arm"),  # replies, expect, groups, a body
         "fast_create": generate(without_delays(EXAMPLES / "create.rdis", fast), fast, "fast_create"),
+        # the bumpers polled, not a sensor: `--watch` prints its outputs with no sensor's age
+        "fast_polled": generate(without_delays(POLLED, polled), polled, "fast_polled"),
     }
 
 
@@ -441,7 +445,7 @@ def test_command_line_call_writes_the_bytes_and_stops_at_exit(drivers) -> None:
 def test_command_line_stops_the_robot_on_a_signal(drivers, signum, status) -> None:
     with CreateEmulator(bumpers=1) as dev:
         process = subprocess.Popen(
-            [sys.executable, str(drivers["fast_create"]), "--port", dev.port, "--watch"],
+            [sys.executable, str(drivers["fast_polled"]), "--port", dev.port, "--watch"],
             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=cli_env(),
         )
         try:

@@ -27,7 +27,7 @@ EXPECTED_COUNTS: dict[str, dict[str, int]] = {
     "stdlib/adapters.rdis": {"AdapterDecl": 9},
     "examples/create.rdis": {
         "RobotDecl": 1,
-        "StateDecl": 1,
+        "SensorDecl": 1,
         "ConnectionDecl": 1,
         "PrimitiveDecl": 4,
         "InterfaceDecl": 4,

@@ -25,6 +25,7 @@ pytestmark = pytest.mark.long  # started before the other files (tests/conftest.
 
 ROOT = Path(__file__).resolve().parents[2]
 CREATE = ROOT / "examples" / "create.rdis"
+POLLED = ROOT / "tests" / "runtime" / "data" / "polled" / "create.rdis"  # its bumpers a call, not a sensor
 ON_CI = os.environ.get("CI", "").lower() in ("1", "true", "yes")
 INDEX = "https://pypi.org/simple/"
 
@@ -136,7 +137,7 @@ def test_check_example_is_clean(installed: Installed) -> None:
 
 def test_check_broken_copy_reports_a_diagnostic(installed: Installed) -> None:
     broken = installed.outside / "broken.rdis"
-    text = CREATE.read_text(encoding="utf-8")
+    text = POLLED.read_text(encoding="utf-8")
     assert text.count("    bumpers() delay") == 1
     broken.write_text(text.replace("    bumpers() delay", "    bumpres() delay"), encoding="utf-8")
     done = installed.run("check", broken)

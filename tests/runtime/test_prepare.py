@@ -143,6 +143,7 @@ def test_every_expression_of_the_examples() -> None:
         state.update({s.name: s.default for s in model.settings.values()})  # read where state is
         state.update({name: 3 if s.type is INT else 0.5 for name, s in model.states.items()
                       if s.type in (INT, FLOAT) and s.initial == 0})
+        state.update({s.name: 3 if s.type is INT else 0.5 for s in model.sensors.values()})  # read where state is
         for expr in _expressions(model):
             local = {"linear": 0.3, "angular": -0.2, "velocity": 0.25, "radius": -1.5, "left": 12, "right": -7}
             reply = ("120", "-40") + ("5",) * 14 if path == KOALA else (3, 7)

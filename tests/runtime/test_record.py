@@ -17,10 +17,12 @@ from conftest import cli_env, console_origin, console_ws, start_console, stop_pr
 from devices import CreateEmulator
 from mcap.reader import make_reader
 from mcap_ros2.decoder import DecoderFactory
-from runtime_support import CREATE, DATA, EXAMPLES
+from runtime_support import DATA, EXAMPLES
 from websockets.sync.client import connect
 
 CREATE2 = EXAMPLES / "create2.rdis"
+# The bumpers polled every tick: a sensor (examples/create.rdis) reads by the clock, which a replay does not follow.
+CREATE = DATA / "polled" / "create.rdis"
 pytestmark = pytest.mark.long  # started before the other files (tests/conftest.py)
 
 CALLS = ("--call", "set_velocity", "linear=0.2", "angular=0",

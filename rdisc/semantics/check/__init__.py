@@ -15,6 +15,7 @@ from rdisc.semantics import model as m
 from rdisc.semantics.check.declarations import Declarations
 from rdisc.semantics.check.interfaces import Interfaces
 from rdisc.semantics.check.primitives import Primitives
+from rdisc.semantics.check.sensors import Sensors
 from rdisc.semantics.frames import FrameRules, unseeded
 from rdisc.semantics.model import Scope
 from rdisc.semantics.resolve import Symbols, Unit
@@ -25,7 +26,7 @@ def check(units: list[Unit], symbols: Symbols, diagnostics: Diagnostics) -> m.Mo
     return Checker(units, symbols, diagnostics).run()
 
 
-class Checker(Declarations, Primitives, Interfaces):
+class Checker(Declarations, Primitives, Interfaces, Sensors):
     """Each kind of declaration by its own rules, the Model built from them."""
 
     def run(self) -> m.Model | None:
@@ -49,11 +50,18 @@ class Checker(Declarations, Primitives, Interfaces):
         interface_params = {name: self.params(decl.params, "interface") for name, decl in self.s.interfaces.items()}
         primitives = self.primitives = {name: self.primitive(decl) for name, decl in self.s.primitives.items()}
         connections = {name: self.connection(decl, interface_params) for name, decl in self.s.connections.items()}
+        sensor_types = {name: self.type_name(decl.type) for name, decl in self.s.sensors.items()}
+        sensors = {name: self.sensor(decl, sensor_types[name]) for name, decl in self.s.sensors.items()}
+        readable = {n: (Scope.STATE, t) for n, t in sensor_types.items() if n not in self.state_env and t is not None}
+        self.state_env.update(readable)  # interfaces and outputs read sensors, each read refreshed when stale
         interfaces = {
             name: self.interface(decl, interface_params, primitives) for name, decl in self.s.interfaces.items()
         }
         self.interface_cycles(interfaces)
+        for name in readable:  # an input's arguments are not refreshed: they read no sensor
+            del self.state_env[name]
         inputs = {name: self.input(decl, adapters, interface_params) for name, decl in self.s.inputs.items()}
+        self.state_env.update(readable)
         outputs = {name: self.output(decl, adapters) for name, decl in self.s.outputs.items()}
         links, joints, transmissions = self.robot_body(primitives, interface_params, states)
         robot = self.robot()
@@ -80,6 +88,7 @@ class Checker(Declarations, Primitives, Interfaces):
             links=links,
             joints=joints,
             transmissions=transmissions,
+            sensors={n: s for n, s in sensors.items() if s is not None},
         )
 
     def robot_body(self, primitives: dict[str, m.Primitive], interface_params: dict[str, tuple[m.Parameter, ...]],

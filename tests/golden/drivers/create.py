@@ -21,6 +21,7 @@ or as a program (`--help` for its options):
 from __future__ import annotations
 
 import argparse
+import copy
 import difflib
 import functools
 import json
@@ -2265,6 +2266,7 @@ class Output:
     frame: str = ""  # its stamped messages' frame id and child frame id (`semantics.ros.header_frames`)
     child_frame: str = ""
     filters: tuple[FilterPlan, ...] = ()  # fields published as a Kalman filter's estimate
+    sensors: tuple[str, ...] = ()  # the sensors its fields read: each read first, when stale
 
 
 @dataclass(frozen=True, slots=True)
@@ -2291,6 +2293,7 @@ class Interface:
     params: tuple[Param, ...]
     calls: tuple[Call, ...]
     outputs: tuple[Output, ...] = ()
+    sensors: tuple[str, ...] = ()  # the sensors its calls read: each read first, when stale
     floats: tuple[int, ...] = field(init=False)
     ranged: tuple[int, ...] = field(init=False)
 
@@ -2423,6 +2426,16 @@ class Connection:
 
 
 @dataclass(frozen=True, slots=True)
+class Sensor:
+    """A sensor (`rdisc.engine.sensing`): the primitive whose post-actions store its value as
+    state, and how long a value read is kept (seconds)."""
+
+    name: str
+    primitive: Primitive
+    cache: float
+
+
+@dataclass(frozen=True, slots=True)
 class Device:
     """A whole description, planned: what a Robot runs."""
 
@@ -2434,6 +2447,7 @@ class Device:
     inputs: Mapping[str, Input]
     settings: tuple[Param, ...] = ()  # given when connecting; read as state is, never written
     messages: Mapping[str, Message] = field(default_factory=dict)  # by adapter: how a recording carries it
+    sensors: Mapping[str, Sensor] = field(default_factory=dict)
 
 
 @dataclass(frozen=True, slots=True)
@@ -3784,7 +3798,13 @@ class Exchange:
 
     # ---- delivering to callbacks: one at a time, a failing one reported -----------------------------
 
+    def _sense(self, names: tuple[str, ...]) -> None:
+        """Make each named sensor fresh before it is read (the Robot's: `rdisc.engine.sensing`)."""
+        raise NotImplementedError
+
     def _deliver(self, plan: Output) -> None:
+        if plan.sensors:
+            self._sense(plan.sensors)
         with self._state_lock:  # the snapshot and when it was read, together
             state, read_ns = self._state, self._read_ns
         try:
@@ -3950,6 +3970,86 @@ def _ms(level: Value) -> str:
     return f"{level:g} ms" if isinstance(level, (int, float)) else repr(level)
 
 
+# ---- rdisc engine: sensing (rdisc/engine/sensing.py), sensors' cached values ---------------------
+
+
+class _Flight:
+    """A read in flight: set when it is done; `error`, what it raised."""
+
+    __slots__ = ("done", "error")
+
+    def __init__(self) -> None:
+        self.done = threading.Event()
+        self.error: BaseException | None = None
+
+
+class SensorCache:
+    """When each sensor was last read (by the robot's clock), and the reads in flight."""
+
+    def __init__(self) -> None:
+        self._lock = threading.Lock()
+        self._read_at: dict[str, float] = {}
+        self._flights: dict[str, _Flight] = {}
+
+    def age(self, name: str, now: float) -> float | None:
+        """Seconds since the sensor's value was read; None: never read."""
+        at = self._read_at.get(name)
+        return None if at is None else now - at
+
+    def refresh(self, sensor: Sensor, now: float, read: Callable[[Primitive], None]) -> None:
+        """Make `sensor` fresh at `now`: nothing when its value is younger than its cache time;
+        else wait for the read in flight, or make one (`read` of its primitive)."""
+        name = sensor.name
+        with self._lock:
+            at = self._read_at.get(name)
+            if at is not None and now - at < sensor.cache:
+                return
+            flight = self._flights.get(name)
+            if flight is not None:
+                leader = False
+            else:
+                leader, flight = True, _Flight()
+                self._flights[name] = flight
+        if not leader:
+            flight.done.wait()
+            if flight.error is not None:
+                raise copy.copy(flight.error) from flight.error  # each reader its own
+            return
+        try:
+            read(sensor.primitive)
+        except BaseException as err:
+            flight.error = err
+            raise
+        else:
+            with self._lock:
+                self._read_at[name] = now  # its request began no earlier than this
+        finally:
+            with self._lock:
+                del self._flights[name]
+            flight.done.set()
+
+
+class Sensors:
+    """`robot.sensors`: each sensor's value as an attribute of its name, read first when stale."""
+
+    def __init__(self, sensors: Mapping[str, Sensor], read: Callable[[str], Value]) -> None:
+        self._sensors = sensors
+        self._read = read
+
+    def __getattr__(self, name: str) -> Value:
+        if name.startswith("_") or name not in self._sensors:
+            raise AttributeError(f"no sensor named {name!r}")
+        return self._read(name)
+
+    def __getitem__(self, name: str) -> Value:
+        if name not in self._sensors:
+            raise KeyError(name)
+        return self._read(name)
+
+    def __dir__(self) -> list[str]:
+        return sorted(self._sensors)
+
+
 # ---- rdisc engine: robot (rdisc/engine/robot.py), lifecycle and public face ----------------------
 
 
@@ -4082,6 +4182,7 @@ class Robot(Exchange):
         self._sim: Simulator | None = None
         self._clock: Callable[[], float] = time.monotonic  # the schedule's time, and the delays'
         self._sleep: Callable[[float], None] = self._delay
+        self._sensed = SensorCache()
         self._choose_write()
 
     # ---- callbacks --------------------------------------------------------------------------------
@@ -4128,6 +4229,33 @@ class Robot(Exchange):
     def state(self) -> State:
         """The state variables now: an immutable snapshot, `robot.state["name"]` or `.name`."""
         return State(self._state)
+
+    @functools.cached_property
+    def sensors(self) -> Any:  # a Sensors, or a driver's typed properties
+        """The sensors, by name: `robot.sensors.NAME` is its value, read first when older than its cache time."""
+        return Sensors(self.device.sensors, self.read_sensor)
+
+    def read_sensor(self, name: str, /) -> Value:
+        """A sensor's value, read through its primitive first when older than its cache time."""
+        self._sense((name,))
+        return self._state[name]
+
+    def sensor_age(self, name: str, /) -> float | None:
+        """Seconds since the sensor's value was read, by the robot's clock; None: never read."""
+        return self._sensed.age(name, self._clock())
+
+    def _sense(self, names: tuple[str, ...]) -> None:
+        sensors = self.device.sensors
+        for name in names:
+            sensor = sensors.get(name)
+            if sensor is None:
+                raise KeyError(f"{self.name} has no sensor named {name!r}")
+            self._sensed.refresh(sensor, self._clock(), self._read_sensor)
+
+    def _read_sensor(self, plan: Primitive) -> None:
+        if not self._running:
+            raise self._not_running()
+        self._primitive(plan, [])
 
     @property
     def closed(self) -> bool:
@@ -4519,6 +4647,8 @@ class Robot(Exchange):
                 break
         if plan.ranged:
             _check_ranges(plan.name, plan.params, plan.ranged, args)
+        if plan.sensors:
+            self._sense(plan.sensors)
         for call in plan.calls:
             try:
                 if call.when is not None and not call.when(self._state, args):
@@ -5073,7 +5203,7 @@ def run_command(args: argparse.Namespace, robot: Robot, prog: str, sim: Simulato
     session = recorder.session if recorder is not None else session
     robot.on_error(_print_error)
     if args.watch:
-        robot.on_output(_print_output)
+        robot.on_output(_watcher(robot))
     if args.trace:
         robot.on_trace(lambda when, kind, connection, data: _print_io(when - began, kind, connection, data))
     previous = _install_signal_handlers()
@@ -5252,6 +5382,23 @@ def make_call(robot: Robot, kind: str, name: str, values: Mapping[str, Value]) -
         robot.call_primitive(name, *values.values())
 
 
+def _watcher(robot: Robot) -> Callable[[dict[str, Any]], None]:
+    """`--watch`'s printer: an output that reads sensors also says how old each one's value is
+    (`"sensor_ages"`, seconds by the robot's clock), the rest as they are."""
+    read = {o.name: o.sensors for i in robot.device.interfaces.values() for o in i.outputs if o.sensors}
+    if not read:
+        return _print_output
+
+    def watched(message: dict[str, Any]) -> None:
+        sensors = read.get(message["name"], ())
+        if sensors:
+            ages = {name: robot.sensor_age(name) for name in sensors}
+            message = {**message, "sensor_ages": {n: None if a is None else round(a, 6) for n, a in ages.items()}}
+        _print_output(message)
+
+    return watched
+
+
 def _print_output(message: dict[str, Any]) -> None:
     sys.stdout.write(json.dumps(message) + "\n")
     sys.stdout.flush()
@@ -5286,7 +5433,7 @@ def _sleep(seconds: float | None) -> None:
 ROBOT = "irobot_create"
 
 
-# create.rdis:29  primitive start
+# create.rdis:32  primitive start
 def _p_start_values(state: StateValues, args: Args) -> Args:
     return [128]
 
@@ -5299,7 +5446,7 @@ def _p_start_request(state: StateValues, args: Args) -> bytes | None:
 _P_START = Primitive("start", "btserial", (), _p_start_values, Pack("B"), request=_p_start_request)
 
 
-# create.rdis:32  primitive full
+# create.rdis:35  primitive full
 def _p_full_values(state: StateValues, args: Args) -> Args:
     return [132]
 
@@ -5312,7 +5459,7 @@ def _p_full_request(state: StateValues, args: Args) -> bytes | None:
 _P_FULL = Primitive("full", "btserial", (), _p_full_values, Pack("B"), request=_p_full_request)
 
 
-# create.rdis:37  primitive drive
+# create.rdis:40  primitive drive
 def _p_drive_values(state: StateValues, args: Args) -> Args:
     velocity, radius = args
     return [137, velocity, radius]
@@ -5342,7 +5489,7 @@ _P_DRIVE = Primitive(
 )
 
 
-# create.rdis:40  primitive bumpers
+# create.rdis:43  primitive bumpers
 def _p_bumpers_values(state: StateValues, args: Args) -> Args:
     return [142, 7]
 
@@ -5363,21 +5510,21 @@ _P_BUMPERS = Primitive(
 )
 
 
-# create.rdis:98  output detect_bump: Range
+# create.rdis:96  output detect_bump: Range
 def _o_detect_bump(state: StateValues) -> dict[str, Value]:
     return {"distance": 1.0 if (state["bumperStates"] & 3) == 0 else 0.0}
 
 
-_O_DETECT_BUMP = Output("detect_bump", _o_detect_bump, "Range")
+_O_DETECT_BUMP = Output("detect_bump", _o_detect_bump, "Range", "", "", (), ("bumperStates",))
 
 
-# create.rdis:46  interface startup
-# create.rdis:47  call start, delay 1000 ms
+# create.rdis:47  interface startup
+# create.rdis:48  call start, delay 1000 ms
 def _i_startup_1(state: StateValues, args: Args) -> Args:
     return [128]
 
 
-# create.rdis:48  call full, priority 1, delay 1000 ms
+# create.rdis:49  call full, priority 1, delay 1000 ms
 def _i_startup_2(state: StateValues, args: Args) -> Args:
     return [132]
 
@@ -5389,8 +5536,8 @@ _I_STARTUP = Interface(
 )
 
 
-# create.rdis:52  interface shutdown
-# create.rdis:53  call drive, delay 100 ms
+# create.rdis:53  interface shutdown
+# create.rdis:54  call drive, delay 100 ms
 def _i_shutdown_1(state: StateValues, args: Args) -> Args:
     return [137, 0, 0]
 
@@ -5398,8 +5545,8 @@ def _i_shutdown_1(state: StateValues, args: Args) -> Args:
 _I_SHUTDOWN = Interface("shutdown", (), (Call(_P_DRIVE, _i_shutdown_1, 0.1, direct=True),))
 
 
-# create.rdis:59  interface drive
-# create.rdis:60  call drive, delay 100 ms
+# create.rdis:60  interface drive
+# create.rdis:61  call drive, delay 100 ms
 def _i_drive_1(state: StateValues, args: Args) -> Args:
     velocity, radius = args
     return [137, _round(_mul(velocity, 1000)), _round(_mul(radius, 1000))]
@@ -5413,20 +5560,10 @@ _I_DRIVE = Interface(
 
 
 # create.rdis:68  interface get_bumpers (periodic)
-# create.rdis:69  call bumpers, delay 15 ms
-def _i_get_bumpers_1(state: StateValues, args: Args) -> Args:
-    return []
+_I_GET_BUMPERS = Interface("get_bumpers", (), (), outputs=(_O_DETECT_BUMP,))
 
 
-_I_GET_BUMPERS = Interface(
-    "get_bumpers",
-    (),
-    (Call(_P_BUMPERS, _i_get_bumpers_1, 0.015),),
-    outputs=(_O_DETECT_BUMP,),
-)
-
-
-# create.rdis:87  input set_velocity: DifferentialSpeed -> drive
+# create.rdis:85  input set_velocity: DifferentialSpeed -> drive
 def _in_set_velocity(state: StateValues, args: Args) -> Args:
     linear, angular = args
     return [
@@ -5449,7 +5586,7 @@ _IN_SET_VELOCITY = Input(
 )
 
 
-# create.rdis:20  connection btserial: serial, 57600 baud
+# create.rdis:23  connection btserial: serial, 57600 baud
 _C_BTSERIAL = Connection(
     "btserial",
     57600,
@@ -5502,12 +5639,13 @@ _MESSAGES = {
 
 _DEVICE = Device(
     ROBOT,
-    {"bumperStates": 0},
+    {},
     {"btserial": _C_BTSERIAL},
     {"start": _P_START, "full": _P_FULL, "drive": _P_DRIVE, "bumpers": _P_BUMPERS},
     {"startup": _I_STARTUP, "shutdown": _I_SHUTDOWN, "drive": _I_DRIVE, "get_bumpers": _I_GET_BUMPERS},
     {"set_velocity": _IN_SET_VELOCITY},
     messages=_MESSAGES,
+    sensors={"bumperStates": Sensor("bumperStates", _P_BUMPERS, 0.1)},
 )
 """The whole description, planned: what the robot runs."""
 
@@ -5521,10 +5659,20 @@ class IrobotCreateState(State):
 
     __slots__ = ()
 
-    # create.rdis:16
+
+class IrobotCreateSensors(Sensors):
+    """The sensors: `robot.sensors.NAME` is its value, read first when older than its
+    cache time.
+    """
+
+    __slots__ = ()
+
+    # create.rdis:19
     bumperStates: int
-    """The last "Bumps and Wheel Drops" byte (OI sensor packet 7): bit 0 is the
-    right bumper, bit 1 the left bumper, bits 2 to 4 the wheel drops.
+    """The "Bumps and Wheel Drops" byte (OI sensor packet 7): bit 0 is the right
+    bumper, bit 1 the left bumper, bits 2 to 4 the wheel drops. Read through
+    `bumpers()` and kept for 100 ms: the 40 Hz output reads the kept value, so the
+    Create sees at most one request per 100 ms instead of one per tick.
     """
 
 
@@ -5588,11 +5736,10 @@ class IrobotCreateInterfaces:
         self._robot._call_interface(_I_DRIVE, [velocity, radius])
 
     def get_bumpers(self) -> None:
-        """Read the bumpers on every tick of the 40 Hz thread and report them.
-        A tick lasts 25 ms. The thesis waited 100 ms after each read, so the poll
-        could never keep its period. The Create refreshes its sensors every 15 ms,
-        so waiting 15 ms gives every read fresh data. 15 ms plus the wire time of
-        the exchange (3 bytes, about 0.5 ms at 57600 baud) fits in one tick.
+        """Report the bumpers on every tick of the 40 Hz thread. The output reads the
+        sensor `bumperStates`, which reads the Create only when its value is older
+        than 100 ms (the thesis read them on every tick and waited 100 ms after each
+        read, so the poll could never keep its 25 ms period).
         """
         self._robot._call_interface(_I_GET_BUMPERS, [])
 
@@ -5653,7 +5800,7 @@ class IrobotCreate(Robot):
     `robot.primitives` hold a typed method for each element of the description.
     """
 
-    __slots__ = ("inputs", "interfaces", "primitives")
+    __slots__ = ("inputs", "interfaces", "primitives", "sensors")
 
     inputs: IrobotCreateInputs
     """The domain inputs, as typed methods."""
@@ -5664,12 +5811,16 @@ class IrobotCreate(Robot):
     primitives: IrobotCreatePrimitives
     """The primitives, as typed methods."""
 
+    sensors: IrobotCreateSensors
+    """The sensors, as typed attributes."""
+
     def __init__(self, *, timeout: float = 1.0) -> None:
         """A robot not connected yet: `open()` connects it. `timeout`: seconds a reply may take."""
         super().__init__(_DEVICE, timeout=timeout)
         self.inputs = IrobotCreateInputs(self)
         self.interfaces = IrobotCreateInterfaces(self)
         self.primitives = IrobotCreatePrimitives(self)
+        self.sensors = IrobotCreateSensors(self.device.sensors, self.read_sensor)
 
     @property
     def state(self) -> IrobotCreateState:
