@@ -18,13 +18,17 @@ ENDED_AT_ONCE = frozenset({"check"})
 
 def main() -> int:
     """Run the command line (which installs the handlers, then lets the held signals through)."""
+    import gc
     import sys
 
     from rdisc.cli.main import main as command_line
     from rdisc.cli.main import verb_named
 
+    ended_at_once = verb_named(sys.argv[1:]) in ENDED_AT_ONCE
+    if ended_at_once:  # nothing is freed at the end: the collector's first pass after a check (over
+        gc.disable()  # every object the check made, a tenth of it at 100,000 lines) would be for nothing
     status = command_line()
-    if verb_named(sys.argv[1:]) in ENDED_AT_ONCE:
+    if ended_at_once:
         end_at_once(status)
     return status
 

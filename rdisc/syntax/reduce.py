@@ -125,7 +125,28 @@ def _pattern(terminals: tuple[str, ...]) -> re.Pattern[str]:
 
 _LEXERS = [Lexer(terminals, keywords) for terminals, keywords in tables.LEXERS]
 STATE_LEXERS = tuple(_LEXERS[i] for i in tables.STATE_LEXERS)
-_root: list[Callable[[str, int], re.Match[str] | None]] = []  # the whole grammar's pattern's match, once made
+_STATE_ALLOWED = tuple(lexer.allowed for lexer in STATE_LEXERS)
+_STATE_KEYWORDS = tuple(lexer.keywords for lexer in STATE_LEXERS)
+_STOP = "_STOP"  # the scanner's last alternative: nothing else matches (the end of the text, or no token)
+_scanners: list[Callable[[str, int], re.Match[str]]] = []  # the scanner's match, once made
+
+
+def _scanner() -> Callable[[str, int], re.Match[str]]:
+    """The match of one pattern that skips what every lexer skips and then reads the whole
+    grammar's next token: the root lexer's terminals in its order, each in a group named after it,
+    and last an empty `_STOP`.
+
+    The skipped terminals (comments, white space) can begin where no other terminal can (a test
+    holds that), so skipping them all at once skips what the root lexer, tried again after each,
+    would. The empty last alternative makes the match never fail after the skip, so the pattern
+    never backtracks into what it skipped (a `///` comment is never read back as `//`)."""
+    if not _scanners:
+        skipped = "|".join(tables.TERMINALS[name] for name in tables.ROOT if name in tables.IGNORED)
+        read = "|".join(f"(?P<{name}>{tables.TERMINALS[name]})" for name in tables.ROOT if name not in tables.IGNORED)
+        _scanners.append(re.compile(f"(?:{skipped})*(?:{read}|(?P<{_STOP}>))").match)  # type: ignore[arg-type]
+    return _scanners[0]
+
+
 # The Builder's method for each rule name that has one (under `v_args(meta=True)`: it takes the
 # Rules, the meta and the children).
 _METHODS: dict[str, Callable[..., Any]] = {name: value for name, value in vars(Rules).items()
@@ -183,67 +204,64 @@ def _run(text: str, start: str, rules: Rules, most_depth: int) -> Any:
     (`ContextualLexer.lex`), each reduction shaped as Lark's tree builder shapes it
     (`PropagatePositions`, `ChildFilterLALR`, `ExpandSingleChild`)."""
     actions, steps, lexers, ignored = tables.ACTIONS, STEPS, STATE_LEXERS, tables.IGNORED
-    if not _root:
-        _root.append(_pattern(tables.ROOT).match)
-    root = _root[0]
+    allowed, keywords = _STATE_ALLOWED, _STATE_KEYWORDS
+    scan = _scanner()
     end_state = tables.END[start]
     pos, length = 0, len(text)
-    state_stack = [tables.START[start]]
+    state = tables.START[start]
+    states = [state]
     # Per value on the stack: (the value, its span as its parent sees it (Lark's container
     # positions) or None, whether Lark's value would be a Tree, its depth in Lark's tree).
     stack: list[tuple[Any, tuple[int, int] | None, bool, int]] = []
     end = False
     token: Any = None
-    kind = ""
+    kind: str | Any = ""
+    begin = 0
     while True:
-        while not end:  # the next token, as Lark's lexer of this state reads it (BasicLexer.next_token)
-            if pos >= length:
+        if not end:  # the next token, as Lark's lexer of this state reads it (BasicLexer.next_token)
+            hit = scan(text, pos)
+            kind = hit.lastgroup
+            if kind == _STOP:
+                if hit.end() < length:
+                    raise Retry  # no terminal matches here: neither does the state's lexer
                 kind, token, end = "$END", None, True
-                break
-            hit = root(text, pos)
-            if hit is not None and hit.lastgroup in ignored:  # every state's lexer skips what the root's does
-                pos = hit.end()
-                continue
-            lexer = lexers[state_stack[-1]]
-            if hit is None or hit.lastgroup not in lexer.allowed:
-                hit = lexer.own(text, pos)
-                if hit is None:
-                    raise Retry
-            kind = hit.lastgroup  # type: ignore[assignment]  # every alternative is a named group
-            begin, pos = pos, hit.end()
-            if kind in ignored:
-                continue
-            read = hit.group()
-            if kind == "NAME":
-                kind = lexer.keywords.get(read, kind)
-            token = Token(read)
-            token.type, token.start_pos, token.end_pos = kind, begin, pos
-            break
+            else:
+                begin, pos = hit.span(kind)
+                if kind not in allowed[state]:  # the state's own lexer reads something else here
+                    own = lexers[state].own(text, begin)
+                    if own is None or own.lastgroup in ignored:
+                        raise Retry
+                    kind, pos = own.lastgroup, own.end()
+                token = Token(text[begin:pos])
+                if kind == "NAME":
+                    kind = keywords[state].get(token, kind)
+                token.type, token.start_pos, token.end_pos = kind, begin, pos
         while True:
-            action = actions[state_stack[-1]].get(kind)
+            action = actions[state].get(kind)
             if action is None:
                 raise Retry
             if action >= 0:  # shift
                 if end:
                     raise Retry
-                state_stack.append(action)
-                stack.append((token, (token.start_pos, token.end_pos), False, 0))
+                states.append(action)
+                state = action
+                stack.append((token, (begin, pos), False, 0))
                 break
             origin, size, keep, nones_after, picked, single, spliced, unit, method = steps[~action]
             if unit:  # a `?rule` over one symbol: its child's value, span and depth are its own
-                state_stack[-1] = actions[state_stack[-2]][origin]
-                if end and state_stack[-1] == end_state:
+                state = states[-1] = actions[states[-2]][origin]
+                if end and state == end_state:
                     return stack[-1][0]
                 continue
             if size == 1:
                 entry = stack.pop()
-                del state_stack[-1]
+                del states[-1]
                 entries = [entry]
                 span, depth = entry[1], entry[3]
             else:
                 if size:
                     entries = stack[-size:]
-                    del stack[-size:], state_stack[-size:]
+                    del stack[-size:], states[-size:]
                 else:
                     entries = []
                 first = last = None
@@ -276,9 +294,10 @@ def _run(text: str, start: str, rules: Rules, most_depth: int) -> Any:
                     raise Retry
                 value = method(rules, _EMPTY if span is None else _Meta(span), [entry[0] for entry in entries])
                 tree = True
-            state_stack.append(actions[state_stack[-1]][origin])
+            state = actions[states[-1]][origin]
+            states.append(state)
             stack.append((value, span, tree, depth))
-            if end and state_stack[-1] == end_state:
+            if end and state == end_state:
                 return value
 
 
