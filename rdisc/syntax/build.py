@@ -147,7 +147,10 @@ class Builder:
 
     # -- helpers used by the transformer --
 
-    def span(self, meta: Meta) -> Span:
+    def span(self, meta: Meta | tuple[int, int]) -> Span:
+        if meta.__class__ is tuple:  # the fast loop's (start, end) (rdisc.syntax.reduce)
+            start, end = meta  # type: ignore[misc]
+            return Span(self.path, self.base + start, self.base + end)
         if getattr(meta, "empty", False):
             return Span(self.path, self.base, self.base)
         return Span(self.path, self.base + meta.start_pos, self.base + meta.end_pos)
@@ -164,8 +167,8 @@ class Builder:
         """A declared type: a NAME token, or an array type already built."""
         return node if isinstance(node, ast.ArrayOf) else self.ident(node)
 
-    def doc(self, meta: Meta) -> str | None:
-        return self.docs.get(self.base + meta.start_pos)
+    def doc(self, meta: Meta | tuple[int, int]) -> str | None:
+        return self.docs.get(self.base + (meta[0] if isinstance(meta, tuple) else meta.start_pos))
 
     def resolve(self, items: list[ast.Expr | Token]) -> ast.Expr:
         """Operators and operands of a flat chain → a tree, by precedence climbing.

@@ -31,18 +31,9 @@ class Retry(Exception):
     """This declaration is not for the fast loop: Lark parses it, and the Builder walks its tree."""
 
 
-class _Meta:
-    """The positions of a rule's node, as Lark's Meta holds them for the Builder."""
-
-    __slots__ = ("end_pos", "start_pos")
-    empty = False
-
-    def __init__(self, span: tuple[int, int]) -> None:
-        self.start_pos, self.end_pos = span
-
-
 class _Empty:
-    """The Meta of a node with no tokens (an empty optional part): Lark's has no positions."""
+    """The Meta of a node with no tokens (an empty optional part): Lark's has no positions. (A node
+    with tokens gets its (start, end) in place of a Meta: Builder.span reads either.)"""
 
     __slots__ = ()
     empty = True
@@ -156,12 +147,19 @@ _METHODS: dict[str, Callable[..., Any]] = {name: value for name, value in vars(R
 def _step(rule: Rule) -> tuple[Any, ...]:
     """What the loop reads of a rule, in one tuple: (origin, size, keep, nones after, the kept
     children's indices where it keeps them without placeholders or splicing (else None), single,
-    spliced, unit, the Builder's method or None)."""
+    spliced, unit, the Builder's method or None, and those indices again where the rule is
+    simply the method called with those children (else None))."""
     picked = None
-    if rule.keep is not None and not rule.nones_after and not any(spliced or nones for _, spliced, nones in rule.keep):
+    if rule.keep is None:
+        picked = tuple(range(rule.size))
+    elif not rule.nones_after and not any(spliced or nones for _, spliced, nones in rule.keep):
         picked = tuple(i for i, _, _ in rule.keep)
+    method = None if rule.spliced else _METHODS.get(rule.name)
+    direct = None
+    if method is not None and picked is not None and not (rule.single and len(picked) == 1):
+        direct = picked
     return (rule.origin, rule.size, rule.keep, rule.nones_after, picked, rule.single, rule.spliced, rule.unit,
-            None if rule.spliced else _METHODS.get(rule.name))
+            method, direct)
 
 
 STEPS = tuple(_step(rule) for rule in RULES)
@@ -247,7 +245,7 @@ def _run(text: str, start: str, rules: Rules, most_depth: int) -> Any:
                 state = action
                 stack.append((token, (begin, pos), False, 0))
                 break
-            origin, size, keep, nones_after, picked, single, spliced, unit, method = steps[~action]
+            origin, size, keep, nones_after, picked, single, spliced, unit, method, direct = steps[~action]
             if unit:  # a `?rule` over one symbol: its child's value, span and depth are its own
                 state = states[-1] = actions[states[-2]][origin]
                 if end and state == end_state:
@@ -274,26 +272,33 @@ def _run(text: str, start: str, rules: Rules, most_depth: int) -> Any:
                             first = entry[1]
                         last = entry[1]
                 span = None if first is None or last is None else (first[0], last[1])
-            if picked is not None:
-                entries = [entries[i] for i in picked]
-            elif keep is not None:
-                entries = _kept(keep, entries, nones_after)
-            if single and len(entries) == 1:
-                value, child_span, tree, _ = entries[0]
-                if tree and child_span is None and span is not None:
-                    raise Retry  # Lark would give the empty child this rule's positions after it was built
-                if not tree or span is None:
-                    span = child_span
-            elif spliced:
-                value, tree = entries, True
-            else:
-                if method is None:
-                    raise Retry  # Lark's tree would keep the node
+            if direct is not None:  # the common case: the Builder's node of some of the children
                 depth += 1
                 if depth > most_depth:
                     raise Retry
-                value = method(rules, _EMPTY if span is None else _Meta(span), [entry[0] for entry in entries])
+                value = method(rules, _EMPTY if span is None else span, [entries[i][0] for i in direct])
                 tree = True
+            else:
+                if keep is not None and picked is not None:
+                    entries = [entries[i] for i in picked]
+                elif keep is not None:
+                    entries = _kept(keep, entries, nones_after)
+                if single and len(entries) == 1:
+                    value, child_span, tree, _ = entries[0]
+                    if tree and child_span is None and span is not None:
+                        raise Retry  # Lark would give the empty child this rule's positions after it was built
+                    if not tree or span is None:
+                        span = child_span
+                elif spliced:
+                    value, tree = entries, True
+                else:
+                    if method is None:
+                        raise Retry  # Lark's tree would keep the node
+                    depth += 1
+                    if depth > most_depth:
+                        raise Retry
+                    value = method(rules, _EMPTY if span is None else span, [entry[0] for entry in entries])
+                    tree = True
             state = actions[states[-1]][origin]
             states.append(state)
             stack.append((value, span, tree, depth))
