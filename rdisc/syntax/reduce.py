@@ -186,7 +186,7 @@ def build(text: str, start: str, builder: Builder, base: int, most_depth: int) -
     builder.depth.clear()
     try:
         value = _run(text, start, Rules(builder), most_depth)
-    except TooDeep:
+    except (TooDeep, KeyError):  # KeyError: a token the state has no action for (a syntax error)
         raise Retry from None
     finally:
         builder.diagnostics = diagnostics
@@ -211,6 +211,7 @@ def _run(text: str, start: str, rules: Rules, most_depth: int) -> Any:
     # Per value on the stack: (the value, its span as its parent sees it (Lark's container
     # positions) or None, whether Lark's value would be a Tree, its depth in Lark's tree).
     stack: list[tuple[Any, tuple[int, int] | None, bool, int]] = []
+    push, push_state = stack.append, states.append
     end = False
     token: Any = None
     kind: str | Any = ""
@@ -235,15 +236,13 @@ def _run(text: str, start: str, rules: Rules, most_depth: int) -> Any:
                     kind = keywords[state].get(token, kind)
                 token.type, token.start_pos, token.end_pos = kind, begin, pos
         while True:
-            action = actions[state].get(kind)
-            if action is None:
-                raise Retry
+            action = actions[state][kind]  # KeyError: a syntax error, Retry (build)
             if action >= 0:  # shift
                 if end:
                     raise Retry
-                states.append(action)
+                push_state(action)
                 state = action
-                stack.append((token, (begin, pos), False, 0))
+                push((token, (begin, pos), False, 0))
                 break
             origin, size, keep, nones_after, picked, single, spliced, unit, method, direct = steps[~action]
             if unit:  # a `?rule` over one symbol: its child's value, span and depth are its own
@@ -300,8 +299,8 @@ def _run(text: str, start: str, rules: Rules, most_depth: int) -> Any:
                     value = method(rules, _EMPTY if span is None else span, [entry[0] for entry in entries])
                     tree = True
             state = actions[states[-1]][origin]
-            states.append(state)
-            stack.append((value, span, tree, depth))
+            push_state(state)
+            push((value, span, tree, depth))
             if end and state == end_state:
                 return value
 
