@@ -148,9 +148,8 @@ class Builder:
     # -- helpers used by the transformer --
 
     def span(self, meta: Meta | tuple[int, int]) -> Span:
-        if meta.__class__ is tuple:  # the fast loop's (start, end) (rdisc.syntax.reduce)
-            start, end = meta  # type: ignore[misc]
-            return Span(self.path, self.base + start, self.base + end)
+        if isinstance(meta, tuple):  # the fast loop's (start, end) (rdisc.syntax.reduce)
+            return Span(self.path, self.base + meta[0], self.base + meta[1])
         if getattr(meta, "empty", False):
             return Span(self.path, self.base, self.base)
         return Span(self.path, self.base + meta.start_pos, self.base + meta.end_pos)

@@ -225,7 +225,7 @@ def _run(text: str, start: str, rules: Rules, most_depth: int) -> Any:
                     raise Retry  # no terminal matches here: neither does the state's lexer
                 kind, token, end = "$END", None, True
             else:
-                begin, pos = hit.span(kind)
+                begin, pos = hit.span(kind)  # type: ignore[arg-type]  # not None: a group matched
                 if kind not in allowed[state]:  # the state's own lexer reads something else here
                     own = lexers[state].own(text, begin)
                     if own is None or own.lastgroup in ignored:
