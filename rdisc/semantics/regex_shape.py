@@ -26,9 +26,8 @@ if TYPE_CHECKING or sys.version_info < (3, 11):  # typeshed describes the parser
     import sre_constants as c
     import sre_parse as _parser
 else:  # where Python 3.11 moved them (the old names warn)
-    from re import _compiler
+    from re import _compiler, _parser
     from re import _constants as c
-    from re import _parser
 
 ALL = frozenset(range(256))
 MAX_NESTING = 6  # repeats within repeats: deeper is refused as too complex to judge
