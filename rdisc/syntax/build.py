@@ -139,7 +139,13 @@ class Builder:
 
     def nested(self, node: ast.Expr, *children: ast.Expr) -> ast.Expr:
         """Record the depth of a new expression node; refuse one nested too deeply."""
-        depth = 1 + max((self.depth.get(id(c), (c, 1))[1] for c in children), default=0)
+        deepest = 0  # a child not recorded is a leaf, of depth 1
+        for child in children:
+            found = self.depth.get(id(child))
+            below = 1 if found is None else found[1]
+            if below > deepest:  # noqa: PLR1730  # max() of a generator costs more than the node
+                deepest = below
+        depth = 1 + deepest
         if depth > MAX_EXPR_DEPTH:
             raise TooDeep(node.span)
         self.depth[id(node)] = (node, depth)
