@@ -145,7 +145,7 @@ def _scanned_tokens(text: str) -> list[tuple[str, int, int]]:
         hit = scan(text, pos)
         if hit.lastgroup == "_STOP":
             return tokens if hit.end() == len(text) else [*tokens, ("", hit.end(), hit.end())]
-        begin, pos = hit.span(hit.lastgroup)
+        begin, pos = hit.end(1), hit.end()
         tokens.append((str(hit.lastgroup), begin, pos))
 
 
