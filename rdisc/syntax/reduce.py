@@ -257,8 +257,17 @@ def _run(text: str, start: str, rules: Rules, most_depth: int) -> Any:
             if size == 1:
                 entry = stack.pop()
                 del states[-1]
-                entries = [entry]
                 span, depth = entry[1], entry[3]
+                if direct is not None:  # the Builder's node of one child (a literal, a name)
+                    if depth >= most_depth:
+                        raise Retry
+                    state = actions[states[-1]][origin]
+                    push_state(state)
+                    push((method(rules, _EMPTY if span is None else span, [entry[0]]), span, True, depth + 1))
+                    if end and state == end_state:
+                        return stack[-1][0]
+                    continue
+                entries = [entry]
             else:
                 if size:
                     entries = stack[-size:]
