@@ -22,12 +22,13 @@ import sys
 from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING or sys.version_info < (3, 11):  # typeshed describes the parser under its old names
-    import sre_compile as _compiler
     import sre_constants as c
     import sre_parse as _parser
+    from sre_compile import compile as _compile_parsed
 else:  # where Python 3.11 moved them (the old names warn)
-    from re import _compiler, _parser
     from re import _constants as c
+    from re import _parser
+    from re._compiler import compile as _compile_parsed
 
 ALL = frozenset(range(256))
 MAX_NESTING = 6  # repeats within repeats: deeper is refused as too complex to judge
@@ -79,7 +80,7 @@ def parse_tree(pattern: str) -> _parser.SubPattern:
 
 def compiled(parsed: _parser.SubPattern) -> re.Pattern[str]:
     """The pattern `re.compile` makes of the text `parsed` was parsed from (without parsing it again)."""
-    made: re.Pattern[str] = _compiler.compile(parsed)
+    made: re.Pattern[str] = _compile_parsed(parsed)
     return made
 
 
