@@ -467,8 +467,9 @@ def regex_groups(pattern: str) -> int:
     try:
         with warnings.catch_warnings():  # Python's hints about future syntax (`[[`) are not the user's to see
             warnings.simplefilter("ignore", FutureWarning)
-            compiled = re.compile(pattern)
-            risky = regex_shape.risk(pattern)
+            parsed = regex_shape.parse_tree(pattern)  # once for both: `re.compile` parses, and so would `risk`
+            compiled = regex_shape.compiled(parsed)
+            risky = regex_shape.risk(parsed)
     except re.error as err:
         raise TemplateError(f"invalid regular expression: {err.msg}", err.pos or 0) from None
     except (OverflowError, RecursionError, MemoryError):

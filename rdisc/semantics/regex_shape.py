@@ -24,9 +24,11 @@ from typing import TYPE_CHECKING, Any
 if TYPE_CHECKING or sys.version_info < (3, 11):  # typeshed describes the parser under its old names
     import sre_constants as c
     import sre_parse as _parser
+    from sre_compile import compile as _compile_parsed
 else:  # where Python 3.11 moved them (the old names warn)
     from re import _constants as c
     from re import _parser
+    from re._compiler import compile as _compile_parsed
 
 ALL = frozenset(range(256))
 MAX_NESTING = 6  # repeats within repeats: deeper is refused as too complex to judge
@@ -76,9 +78,16 @@ def parse_tree(pattern: str) -> _parser.SubPattern:
     return _parser.parse(pattern)
 
 
-def risk(pattern: str) -> str | None:
-    """Why `pattern` can take more than linear time on some line, or None (it cannot)."""
-    parsed = parse_tree(pattern)
+def compiled(parsed: _parser.SubPattern) -> re.Pattern[str]:
+    """The pattern `re.compile` makes of the text `parsed` was parsed from (without parsing it again)."""
+    made: re.Pattern[str] = _compile_parsed(parsed)
+    return made
+
+
+def risk(pattern: str | _parser.SubPattern) -> str | None:
+    """Why `pattern` (its text, or its parse tree) can take more than linear time on some line, or
+    None (it cannot)."""
+    parsed = parse_tree(pattern) if isinstance(pattern, str) else pattern
     try:
         _Walk(parsed.state).sequence(list(parsed.data), [], 0)
     except Risky as err:
@@ -228,11 +237,17 @@ class _Walk:
         return frozenset(out)
 
 
-def _cased(code: int) -> set[int]:
-    if code > 255:
-        return set()
-    ch = chr(code)
-    return {ord(x) for x in (ch, ch.lower(), ch.upper()) if len(x) == 1 and ord(x) < 256}
+_CASED: dict[int, frozenset[int]] = {}  # a character's code → it and its other cases, once asked for
+
+
+def _cased(code: int) -> frozenset[int]:
+    found = _CASED.get(code)
+    if found is None:
+        ch = chr(code)
+        found = frozenset() if code > 255 else \
+            frozenset(ord(x) for x in (ch, ch.lower(), ch.upper()) if len(x) == 1 and ord(x) < 256)
+        _CASED[code] = found
+    return found
 
 
 def _in(items: Any) -> frozenset[int]:

@@ -139,7 +139,13 @@ class Builder:
 
     def nested(self, node: ast.Expr, *children: ast.Expr) -> ast.Expr:
         """Record the depth of a new expression node; refuse one nested too deeply."""
-        depth = 1 + max((self.depth.get(id(c), (c, 1))[1] for c in children), default=0)
+        deepest = 0  # a child not recorded is a leaf, of depth 1
+        for child in children:
+            found = self.depth.get(id(child))
+            below = 1 if found is None else found[1]
+            if below > deepest:  # noqa: PLR1730  # max() of a generator costs more than the node
+                deepest = below
+        depth = 1 + deepest
         if depth > MAX_EXPR_DEPTH:
             raise TooDeep(node.span)
         self.depth[id(node)] = (node, depth)
@@ -147,7 +153,9 @@ class Builder:
 
     # -- helpers used by the transformer --
 
-    def span(self, meta: Meta) -> Span:
+    def span(self, meta: Meta | tuple[int, int]) -> Span:
+        if isinstance(meta, tuple):  # the fast loop's (start, end) (rdisc.syntax.reduce)
+            return Span(self.path, self.base + meta[0], self.base + meta[1])
         if getattr(meta, "empty", False):
             return Span(self.path, self.base, self.base)
         return Span(self.path, self.base + meta.start_pos, self.base + meta.end_pos)
@@ -164,8 +172,8 @@ class Builder:
         """A declared type: a NAME token, or an array type already built."""
         return node if isinstance(node, ast.ArrayOf) else self.ident(node)
 
-    def doc(self, meta: Meta) -> str | None:
-        return self.docs.get(self.base + meta.start_pos)
+    def doc(self, meta: Meta | tuple[int, int]) -> str | None:
+        return self.docs.get(self.base + (meta[0] if isinstance(meta, tuple) else meta.start_pos))
 
     def resolve(self, items: list[ast.Expr | Token]) -> ast.Expr:
         """Operators and operands of a flat chain → a tree, by precedence climbing.

@@ -11,6 +11,7 @@ Lark's tables are run (rdisc.syntax.reduce); any other is parsed by Lark into a 
 from __future__ import annotations
 
 import re
+from collections.abc import Iterator
 from functools import lru_cache
 from typing import TYPE_CHECKING, cast
 
@@ -30,6 +31,7 @@ MAX_LINE_CHARS = 65536  # of one line, and so of a string literal (strings do no
 MAX_DECL_TOKENS = 20000  # of one declaration: more is not a description a person wrote
 # The tokens of RDIS, roughly (a string is cut at an escaped quote): enough to count them in linear time.
 _TOKEN = re.compile(r'r?"[^"\n]*"?|[A-Za-z_][A-Za-z0-9_]*|\d[\w.]*|#[^\n]*|\S')
+_TOKEN_BLOCK = 1 << 14  # characters of text whose tokens token_count finds at once (then to the line's end)
 _LONG_LINE = re.compile(rf"[^\n]{{{MAX_LINE_CHARS + 1},}}")
 
 DECL_KEYWORDS = (
@@ -215,12 +217,16 @@ def parse_expression(path: str, text: str, base_offset: int, diagnostics: Diagno
 
 
 def token_count(text: str, most: int) -> int:
-    """The tokens of `text`, counted up to `most + 1` (so in time bounded by `most`)."""
-    count = 0
-    for count, _ in enumerate(_TOKEN.finditer(text), 1):
-        if count > most:
-            break
-    return count
+    """The tokens of `text`, counted up to `most + 1` (so in time bounded by `most`, and by the
+    longest line): found a block of lines at a time, as no token spans a line."""
+    count, pos, length = 0, 0, len(text)
+    find = _TOKEN.findall
+    while pos < length and count <= most:
+        cut = text.find("\n", pos + _TOKEN_BLOCK)
+        cut = length if cut < 0 else cut + 1
+        count += len(find(text, pos, cut))
+        pos = cut
+    return min(count, most + 1)
 
 
 def _too_long(path: str, chunk: str, start: int) -> tuple[Span, str] | None:
@@ -251,12 +257,27 @@ def _doc_comments(text: str) -> dict[int, str]:
     docs: dict[int, str] = {}
     if "///" not in text:
         return docs
-    for run in _DOC_RUN.finditer(text):
+    for run in _doc_runs(text):
         lines = _DOC_LINE.findall(run.group())
         after = _BLANK_OR_COMMENT.match(text, run.end())
         target = after.end() if after else run.end()
         docs[target] = "\n".join(line.rstrip() for line in lines).strip()
     return docs
+
+
+def _doc_runs(text: str) -> Iterator[re.Match[str]]:
+    """What `_DOC_RUN.finditer(text)` finds, found from each `///` (a search for a pattern that
+    begins with `^` tries every character of the text)."""
+    pos = 0
+    while (at := text.find("///", pos)) >= 0:
+        line = text.rfind("\n", 0, at) + 1
+        if text[line:at].strip(" \t"):  # not at the start of its line
+            pos = at + 3
+            continue
+        run = _DOC_RUN.match(text, line)
+        assert run is not None  # a line of blanks, then `///`
+        yield run
+        pos = run.end()
 
 
 def _depth(tree: lark.Tree[lark.Token]) -> tuple[int, lark.Tree[lark.Token]]:

@@ -31,18 +31,9 @@ class Retry(Exception):
     """This declaration is not for the fast loop: Lark parses it, and the Builder walks its tree."""
 
 
-class _Meta:
-    """The positions of a rule's node, as Lark's Meta holds them for the Builder."""
-
-    __slots__ = ("end_pos", "start_pos")
-    empty = False
-
-    def __init__(self, span: tuple[int, int]) -> None:
-        self.start_pos, self.end_pos = span
-
-
 class _Empty:
-    """The Meta of a node with no tokens (an empty optional part): Lark's has no positions."""
+    """The Meta of a node with no tokens (an empty optional part): Lark's has no positions. (A node
+    with tokens gets its (start, end) in place of a Meta: Builder.span reads either.)"""
 
     __slots__ = ()
     empty = True
@@ -125,7 +116,32 @@ def _pattern(terminals: tuple[str, ...]) -> re.Pattern[str]:
 
 _LEXERS = [Lexer(terminals, keywords) for terminals, keywords in tables.LEXERS]
 STATE_LEXERS = tuple(_LEXERS[i] for i in tables.STATE_LEXERS)
-_root: list[Callable[[str, int], re.Match[str] | None]] = []  # the whole grammar's pattern's match, once made
+_STATE_ALLOWED = tuple(lexer.allowed for lexer in STATE_LEXERS)
+_STATE_KEYWORDS = tuple(lexer.keywords for lexer in STATE_LEXERS)
+_STOP = "_STOP"  # the scanner's last alternative: nothing else matches (the end of the text, or no token)
+_scanners: list[Callable[[str, int], re.Match[str]]] = []  # the scanner's match, once made
+
+
+def _scanner() -> Callable[[str, int], re.Match[str]]:
+    """The match of one pattern that skips what every lexer skips (group 1) and then reads the
+    whole grammar's next token: the root lexer's terminals in its order, each followed by an empty
+    group named after it (the last group a match closes, so its `lastgroup`), and last an empty
+    `_STOP`.
+
+    The skipped terminals (comments, white space) can begin where no terminal tried before them
+    can (a test holds that), so skipping them all at once skips what the root lexer, tried again
+    after each, would. The empty last alternative makes the match never fail after the skip, so
+    the pattern never backtracks into what it skipped (a `///` comment is never read back as `//`).
+    A terminal's name goes after it, not around it, so that an alternative begins with its first
+    character, which `re` checks before it tries the alternative (a quarter of the lexer's time)."""
+    if not _scanners:
+        skipped = "|".join(tables.TERMINALS[name] for name in tables.ROOT if name in tables.IGNORED)
+        read = "|".join(f"(?:{tables.TERMINALS[name]})(?P<{name}>)" for name in tables.ROOT
+                        if name not in tables.IGNORED)
+        _scanners.append(re.compile(f"((?:{skipped})*)(?:{read}|(?P<{_STOP}>))").match)  # type: ignore[arg-type]
+    return _scanners[0]
+
+
 # The Builder's method for each rule name that has one (under `v_args(meta=True)`: it takes the
 # Rules, the meta and the children).
 _METHODS: dict[str, Callable[..., Any]] = {name: value for name, value in vars(Rules).items()
@@ -135,12 +151,19 @@ _METHODS: dict[str, Callable[..., Any]] = {name: value for name, value in vars(R
 def _step(rule: Rule) -> tuple[Any, ...]:
     """What the loop reads of a rule, in one tuple: (origin, size, keep, nones after, the kept
     children's indices where it keeps them without placeholders or splicing (else None), single,
-    spliced, unit, the Builder's method or None)."""
+    spliced, unit, the Builder's method or None, and those indices again where the rule is
+    simply the method called with those children (else None))."""
     picked = None
-    if rule.keep is not None and not rule.nones_after and not any(spliced or nones for _, spliced, nones in rule.keep):
+    if rule.keep is None:
+        picked = tuple(range(rule.size))
+    elif not rule.nones_after and not any(spliced or nones for _, spliced, nones in rule.keep):
         picked = tuple(i for i, _, _ in rule.keep)
+    method = None if rule.spliced else _METHODS.get(rule.name)
+    direct = None
+    if method is not None and picked is not None and not (rule.single and len(picked) == 1):
+        direct = picked
     return (rule.origin, rule.size, rule.keep, rule.nones_after, picked, rule.single, rule.spliced, rule.unit,
-            None if rule.spliced else _METHODS.get(rule.name))
+            method, direct)
 
 
 STEPS = tuple(_step(rule) for rule in RULES)
@@ -167,7 +190,7 @@ def build(text: str, start: str, builder: Builder, base: int, most_depth: int) -
     builder.depth.clear()
     try:
         value = _run(text, start, Rules(builder), most_depth)
-    except TooDeep:
+    except (TooDeep, KeyError):  # KeyError: a token the state has no action for (a syntax error)
         raise Retry from None
     finally:
         builder.diagnostics = diagnostics
@@ -183,67 +206,72 @@ def _run(text: str, start: str, rules: Rules, most_depth: int) -> Any:
     (`ContextualLexer.lex`), each reduction shaped as Lark's tree builder shapes it
     (`PropagatePositions`, `ChildFilterLALR`, `ExpandSingleChild`)."""
     actions, steps, lexers, ignored = tables.ACTIONS, STEPS, STATE_LEXERS, tables.IGNORED
-    if not _root:
-        _root.append(_pattern(tables.ROOT).match)
-    root = _root[0]
+    allowed, keywords = _STATE_ALLOWED, _STATE_KEYWORDS
+    scan = _scanner()
     end_state = tables.END[start]
     pos, length = 0, len(text)
-    state_stack = [tables.START[start]]
+    state = tables.START[start]
+    states = [state]
     # Per value on the stack: (the value, its span as its parent sees it (Lark's container
     # positions) or None, whether Lark's value would be a Tree, its depth in Lark's tree).
     stack: list[tuple[Any, tuple[int, int] | None, bool, int]] = []
+    push, push_state = stack.append, states.append
     end = False
     token: Any = None
-    kind = ""
+    kind: str | Any = ""
+    begin = 0
     while True:
-        while not end:  # the next token, as Lark's lexer of this state reads it (BasicLexer.next_token)
-            if pos >= length:
+        if not end:  # the next token, as Lark's lexer of this state reads it (BasicLexer.next_token)
+            hit = scan(text, pos)
+            kind = hit.lastgroup
+            if kind == _STOP:
+                if hit.end() < length:
+                    raise Retry  # no terminal matches here: neither does the state's lexer
                 kind, token, end = "$END", None, True
-                break
-            hit = root(text, pos)
-            if hit is not None and hit.lastgroup in ignored:  # every state's lexer skips what the root's does
-                pos = hit.end()
-                continue
-            lexer = lexers[state_stack[-1]]
-            if hit is None or hit.lastgroup not in lexer.allowed:
-                hit = lexer.own(text, pos)
-                if hit is None:
-                    raise Retry
-            kind = hit.lastgroup  # type: ignore[assignment]  # every alternative is a named group
-            begin, pos = pos, hit.end()
-            if kind in ignored:
-                continue
-            read = hit.group()
-            if kind == "NAME":
-                kind = lexer.keywords.get(read, kind)
-            token = Token(read)
-            token.type, token.start_pos, token.end_pos = kind, begin, pos
-            break
+            else:
+                begin, pos = hit.end(1), hit.end()
+                if kind not in allowed[state]:  # the state's own lexer reads something else here
+                    own = lexers[state].own(text, begin)
+                    if own is None or own.lastgroup in ignored:
+                        raise Retry
+                    kind, pos = own.lastgroup, own.end()
+                token = Token(text[begin:pos])
+                if kind == "NAME":
+                    kind = keywords[state].get(token, kind)
+                token.type, token.start_pos, token.end_pos = kind, begin, pos
         while True:
-            action = actions[state_stack[-1]].get(kind)
-            if action is None:
-                raise Retry
+            action = actions[state][kind]  # KeyError: a syntax error, Retry (build)
             if action >= 0:  # shift
                 if end:
                     raise Retry
-                state_stack.append(action)
-                stack.append((token, (token.start_pos, token.end_pos), False, 0))
+                push_state(action)
+                state = action
+                push((token, (begin, pos), False, 0))
                 break
-            origin, size, keep, nones_after, picked, single, spliced, unit, method = steps[~action]
+            origin, size, keep, nones_after, picked, single, spliced, unit, method, direct = steps[~action]
             if unit:  # a `?rule` over one symbol: its child's value, span and depth are its own
-                state_stack[-1] = actions[state_stack[-2]][origin]
-                if end and state_stack[-1] == end_state:
+                state = states[-1] = actions[states[-2]][origin]
+                if end and state == end_state:
                     return stack[-1][0]
                 continue
             if size == 1:
                 entry = stack.pop()
-                del state_stack[-1]
-                entries = [entry]
+                del states[-1]
                 span, depth = entry[1], entry[3]
+                if direct is not None:  # the Builder's node of one child (a literal, a name)
+                    if depth >= most_depth:
+                        raise Retry
+                    state = actions[states[-1]][origin]
+                    push_state(state)
+                    push((method(rules, _EMPTY if span is None else span, [entry[0]]), span, True, depth + 1))
+                    if end and state == end_state:
+                        return stack[-1][0]
+                    continue
+                entries = [entry]
             else:
                 if size:
                     entries = stack[-size:]
-                    del stack[-size:], state_stack[-size:]
+                    del stack[-size:], states[-size:]
                 else:
                     entries = []
                 first = last = None
@@ -256,29 +284,37 @@ def _run(text: str, start: str, rules: Rules, most_depth: int) -> Any:
                             first = entry[1]
                         last = entry[1]
                 span = None if first is None or last is None else (first[0], last[1])
-            if picked is not None:
-                entries = [entries[i] for i in picked]
-            elif keep is not None:
-                entries = _kept(keep, entries, nones_after)
-            if single and len(entries) == 1:
-                value, child_span, tree, _ = entries[0]
-                if tree and child_span is None and span is not None:
-                    raise Retry  # Lark would give the empty child this rule's positions after it was built
-                if not tree or span is None:
-                    span = child_span
-            elif spliced:
-                value, tree = entries, True
-            else:
-                if method is None:
-                    raise Retry  # Lark's tree would keep the node
+            if direct is not None:  # the common case: the Builder's node of some of the children
                 depth += 1
                 if depth > most_depth:
                     raise Retry
-                value = method(rules, _EMPTY if span is None else _Meta(span), [entry[0] for entry in entries])
+                value = method(rules, _EMPTY if span is None else span, [entries[i][0] for i in direct])
                 tree = True
-            state_stack.append(actions[state_stack[-1]][origin])
-            stack.append((value, span, tree, depth))
-            if end and state_stack[-1] == end_state:
+            else:
+                if keep is not None and picked is not None:
+                    entries = [entries[i] for i in picked]
+                elif keep is not None:
+                    entries = _kept(keep, entries, nones_after)
+                if single and len(entries) == 1:
+                    value, child_span, tree, _ = entries[0]
+                    if tree and child_span is None and span is not None:
+                        raise Retry  # Lark would give the empty child this rule's positions after it was built
+                    if not tree or span is None:
+                        span = child_span
+                elif spliced:
+                    value, tree = entries, True
+                else:
+                    if method is None:
+                        raise Retry  # Lark's tree would keep the node
+                    depth += 1
+                    if depth > most_depth:
+                        raise Retry
+                    value = method(rules, _EMPTY if span is None else span, [entry[0] for entry in entries])
+                    tree = True
+            state = actions[states[-1]][origin]
+            push_state(state)
+            push((value, span, tree, depth))
+            if end and state == end_state:
                 return value
 
 

@@ -52,6 +52,17 @@ def test_check_ends_its_process_at_once_with_its_output_written(tmp_path: Path) 
     assert found.stdout.rstrip().endswith("]") and '"E103"' in found.stdout  # all of it written
 
 
+def test_check_runs_without_the_cyclic_collector() -> None:
+    """Its process ends at once: a collection would walk every object the check made, for nothing."""
+    probe = ("import gc, sys; import rdisc.start; passes = []; "
+             "gc.callbacks.append(lambda phase, info: passes.append(info) if phase == 'start' else None); "
+             "rdisc.start.end_at_once = lambda status: print(len(passes), gc.isenabled(), file=sys.stderr); "
+             "sys.argv = ['rdisc', *sys.argv[1:]]; rdisc.start.main()")
+    done = subprocess.run([sys.executable, "-c", probe, "check", str(ROOT / "examples" / "create.rdis")],
+                          capture_output=True, text=True, check=True)
+    assert done.stderr == "0 False\n"
+
+
 def test_other_verbs_are_torn_down_as_usual() -> None:
     done = entry("explain", "E103")
     assert done.returncode == 0 and done.stderr == "torn down\n"

@@ -8,6 +8,7 @@ from rdisc.diagnostics import Diagnostics
 from rdisc.diagnostics.text import render_plain
 from rdisc.source import Sources
 from rdisc.syntax import ast
+from rdisc.syntax import parse as parse_module
 from rdisc.syntax.build import MAX_EXPR_DEPTH
 from rdisc.syntax.parse import parse
 
@@ -174,3 +175,23 @@ def test_an_expression_tree_builds_the_expression_an_embedded_one_parses_to() ->
         expected = parse_expression("t.json", text, 10, Diagnostics())
         assert expected is not None
         assert built == expected and built.span == expected.span, (built, expected)
+
+
+def test_tokens_are_counted_across_blocks_of_lines_as_one_at_a_time() -> None:
+    """token_count finds a block of lines' tokens at once: the count is the one-at-a-time count,
+    and it stops past `most`."""
+    line = 'primitive p_1(a: int) on link format "M{},{}\\n" (a, 0x1F) # note\n'
+    text = line * (3 * parse_module._TOKEN_BLOCK // len(line) + 7) + "x"
+    one_at_a_time = sum(1 for _ in parse_module._TOKEN.finditer(text))
+    assert one_at_a_time > 3 * parse_module._TOKEN_BLOCK // len(line) * 10
+    assert parse_module.token_count(text, 10**9) == one_at_a_time
+    assert parse_module.token_count(text, one_at_a_time) == one_at_a_time
+    assert parse_module.token_count(text, one_at_a_time - 1) == one_at_a_time
+    assert parse_module.token_count(text, 5) == 6
+
+
+@pytest.mark.parametrize("text", ["/// a\nx", "  /// a\n\t/// b\n\ny /// not\n", "a /// b\n/// c", "//// d",
+                                  "x\n   ///", "/ // ///", "#/// a\n///b\r\n///c"])
+def test_doc_comment_runs_are_found_as_the_pattern_finds_them(text: str) -> None:
+    assert [m.span() for m in parse_module._doc_runs(text)] == \
+        [m.span() for m in parse_module._DOC_RUN.finditer(text)]

@@ -4,6 +4,7 @@ the examples' declarations, and leaves to Lark what it does not take."""
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
 from typing import Any
 
@@ -11,7 +12,8 @@ import pytest
 
 from rdisc.diagnostics import Diagnostics
 from rdisc.resources import stdlib_path
-from rdisc.syntax import reduce
+from rdisc.semantics import regex_shape
+from rdisc.syntax import reduce, tables
 from rdisc.syntax.build import MAX_EXPR_DEPTH
 from rdisc.syntax.parse import MAX_TREE_DEPTH, parse
 
@@ -118,3 +120,61 @@ def test_what_the_loop_leaves_is_reported_once(monkeypatch: pytest.MonkeyPatch) 
     assert [d.code for d in diagnostics.sorted()] == ["E003", "E005"]
     fast, general, left = both_ways(monkeypatch, "t.rdis", text)
     assert fast == general and left == 1
+
+
+def _root_tokens(text: str) -> list[tuple[str, int, int]]:
+    """The tokens the whole grammar's lexer reads, one terminal at a time as Lark's does: an ignored
+    one is skipped and the pattern tried again after it; ("", pos, pos) where nothing matches."""
+    root = re.compile("|".join(f"(?P<{name}>{tables.TERMINALS[name]})" for name in tables.ROOT))
+    tokens, pos = [], 0
+    while pos < len(text):
+        hit = root.match(text, pos)
+        if hit is None:
+            return [*tokens, ("", pos, pos)]
+        if hit.lastgroup not in tables.IGNORED:
+            tokens.append((str(hit.lastgroup), pos, hit.end()))
+        pos = hit.end()
+    return tokens
+
+
+def _scanned_tokens(text: str) -> list[tuple[str, int, int]]:
+    """The tokens the fast loop's one pattern reads, each after what it skips."""
+    scan = reduce._scanner()
+    tokens, pos = [], 0
+    while True:
+        hit = scan(text, pos)
+        if hit.lastgroup == "_STOP":
+            return tokens if hit.end() == len(text) else [*tokens, ("", hit.end(), hit.end())]
+        begin, pos = hit.end(1), hit.end()
+        tokens.append((str(hit.lastgroup), begin, pos))
+
+
+SCANNED = [
+    "state s: int = 1 // 2 /// a doc comment at the end",  # never read back as `//` and `/`
+    "x /// doc\n/// more\n",
+    "x # a comment at the end",
+    "a\n  # comment\n\t/// doc\n  b //c",
+    "x $ y",  # no terminal reads `$`
+    "r\"a\\\"b\" b\"\\x00\" \"s\" 1.5e3 0x1F 3 .5 ** // <= ->",
+    "",
+    "   \n# only a comment",
+]
+
+
+@pytest.mark.parametrize("text", [*SCANNED, *(path.read_text(encoding="utf-8") for path in FILES)],
+                         ids=[*(repr(text)[:30] for text in SCANNED), *(path.name for path in FILES)])
+def test_the_loop_scans_what_the_root_lexer_reads(text: str) -> None:
+    assert _scanned_tokens(text) == _root_tokens(text)
+
+
+def test_a_skipped_terminal_begins_where_no_terminal_tried_before_it_can() -> None:
+    """What the loop's pattern relies on to skip them all at once (rdisc.syntax.reduce._scanner)."""
+    def first(name: str) -> frozenset[int]:
+        parsed = regex_shape.parse_tree(tables.TERMINALS[name])
+        return regex_shape._Walk(parsed.state).first(list(parsed.data))
+
+    for i, name in enumerate(tables.ROOT):
+        if name in tables.IGNORED:
+            assert first(name)
+            for earlier in tables.ROOT[:i]:
+                assert earlier in tables.IGNORED or not first(name) & first(earlier), (name, earlier)
