@@ -731,7 +731,8 @@ def _folded(written: Written, use: FrameUse, size: int) -> Written | None:
     tail = b"".join(part.data for part in after[1 if check else 0:] if isinstance(part, engine.Bytes))
     if check is None:
         return dataclasses.replace(written, head=head, tail=tail)
-    if check.last != payload_at or check.struct is None or check.with_request or check.seed >= 0:
+    if check.last != payload_at or check.struct is None or check.order is not None or check.with_request \
+            or check.seed >= 0:
         return None
     construct = f.request[payload_at + 1].args[0]
     covered = head[sum(side.sizes[:check.first]):]

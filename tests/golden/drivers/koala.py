@@ -1133,15 +1133,21 @@ class Payload:
 
 class Check:
     """A checksum of the parts `first` to `last` (indexes into its side), packed
-    with a struct format or written as upper-case hex digits (`fmt` None); `seed`: (the
+    with a struct format (`>3s{24}`: the integer three bytes hold, in the format's byte order,
+    as RTCM 3 sends its CRC-24Q) or written as upper-case hex digits (`fmt` None); `seed`: (the
     index of a frame field, (value, byte) pairs, the table's name, the field's name): the byte
     for the field's value summed after the parts, never sent (MAVLink 2's CRC_EXTRA)."""
 
-    __slots__ = ("checksum", "digits", "first", "last", "seed", "seeded", "seeds", "struct", "with_request")
+    __slots__ = ("checksum", "digits", "first", "last", "order", "seed", "seeded", "seeds", "struct", "with_request")
 
     def __init__(self, checksum: Checksum, fmt: str | None, first: int, last: int, with_request: bool = False,
                  seed: tuple[int, Sequence[tuple[int, int]], str, str] | None = None) -> None:
         self.checksum = checksum
+        # bytes holding one integer (`>3s{24}`): packed as bytes, in their byte order
+        self.order: Literal["little", "big"] | None = None
+        if fmt is not None and fmt.endswith("}"):
+            fmt = fmt[: fmt.index("{")]
+            self.order = "big" if fmt.startswith((">", "!")) else "little"
         self.struct = struct.Struct(fmt) if fmt is not None else None
         self.digits = (checksum.width + 3) // 4
         self.first = first
@@ -1166,6 +1172,8 @@ class Check:
         return self.checksum(covered + seed)
 
     def encode(self, value: int) -> bytes:
+        if self.order is not None and self.struct is not None:
+            return value.to_bytes(self.struct.size, self.order)
         if self.struct is not None:
             return self.struct.pack(value)
         return b"%0*X" % (self.digits, value)
