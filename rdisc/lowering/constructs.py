@@ -183,6 +183,10 @@ def _part(part: m.FramePart, index: Mapping[tuple[str, m.Expr], int],
         case m.FrameChecksum():
             seed = None if part.seed is None else (index[_field_key(side[part.seed.part])], part.seed.entries,
                                                    part.seed.table, part.seed.field)
+            if part.layout is not None and part.layout.bits:  # bytes holding one integer (`>3s{24}`)
+                order = "big" if part.layout.order in (">", "!") else "little"
+                return _call(engine.Check, _checksum(part.algorithm), part.layout.fixed, part.first, part.last,
+                             with_request=part.with_request, seed=seed, byte_order=order)
             return _call(engine.Check, _checksum(part.algorithm), part.format, part.first, part.last,
                          with_request=part.with_request, seed=seed)
         case m.FrameOptional(count=count):

@@ -36,6 +36,9 @@ from rdisc.console.server import MAX_DEPTH
 pytestmark = pytest.mark.long  # started before the other files (tests/conftest.py)
 
 CREATE = REPO / "examples" / "create.rdis"
+# The bumpers polled every tick: `rdisc replay` does not yet follow a recording's clock for a
+# sensor's cache, so a recording of the sensor Create may replay a bumper read more or fewer.
+POLLED_CREATE = REPO / "tests" / "runtime" / "data" / "polled" / "create.rdis"
 GO = {"kind": "input", "name": "set_velocity", "values": {"linear": "0.2", "angular": "0"}}
 GO_BYTES = bytes.fromhex("89 00 c8 7f ff")  # Table 4.3: 0.2 m/s straight ahead
 
@@ -315,7 +318,7 @@ def test_a_recorded_session_replays_the_stop_of_the_last_page_closing(tmp_path) 
     pytest.importorskip("mcap")
     path = tmp_path / "console.mcap"
     with CreateEmulator() as dev:
-        process, _, url = start_console(CREATE, "--port", dev.port, "--record", path)
+        process, _, url = start_console(POLLED_CREATE, "--port", dev.port, "--record", path)
         try:
             with connect(console_ws(url), origin=console_origin(url)) as ws:
                 assert json.loads(ws.recv(timeout=30))["type"] == "hello"
@@ -325,5 +328,5 @@ def test_a_recorded_session_replays_the_stop_of_the_last_page_closing(tmp_path) 
         finally:
             status, stderr = stop_process(process, signal.SIGINT)
     assert status == 130 and "Traceback" not in stderr, stderr
-    replayed = run_rdisc_here("replay", path, CREATE)
+    replayed = run_rdisc_here("replay", path, POLLED_CREATE)
     assert replayed.returncode == 0, replayed.stdout + replayed.stderr

@@ -78,13 +78,15 @@ class Declarations(Pieces):
                                   f"{describe(value.type)}, the ones before are {describe(value_type)}")
                 value_type = joined or value_type
             k = self.typer.constant(key)
+            if k is not None and not self.typer.kept(k, key_expr.span):  # ints kept in 64 bits and a sign
+                continue
             if k in spans:
                 self.d.report("E101", key_expr.span, f"key {shown(k)} is in table `{name}` twice",
                               labels=(Label(spans[k], "first given here"),))
             elif k is not None:
                 spans[k] = key_expr.span
                 known = self.typer.constant(value)
-                if known is not None:  # else reported
+                if known is not None and self.typer.kept(known, value_expr.span):  # else reported
                     entries[k] = known
         if len(key_types) > 1:
             self.d.report("E401", decl.value.span, f"the keys of table `{name}` are of one type")
@@ -312,7 +314,8 @@ class Declarations(Pieces):
         if isinstance(stop, ast.StopBits):
             value = self.setting(stop.value, "the stop bits")
             if value is not None and value not in STOP_BITS:
-                self.d.report("E215", stop.value.span, f"a character ends with 1, 1.5 or 2 stop bits, not {value:g}")
+                shown = value if isinstance(value, int) else format(value, "g")  # an int may be too big for a float
+                self.d.report("E215", stop.value.span, f"a character ends with 1, 1.5 or 2 stop bits, not {shown}")
             elif value is not None:
                 stop_bits = value  # 2 stays an int: the driver says `stop_bits=2`
         if stop_bits == 1.5 and data_bits != 5:
