@@ -1141,13 +1141,11 @@ class Check:
     __slots__ = ("checksum", "digits", "first", "last", "order", "seed", "seeded", "seeds", "struct", "with_request")
 
     def __init__(self, checksum: Checksum, fmt: str | None, first: int, last: int, with_request: bool = False,
-                 seed: tuple[int, Sequence[tuple[int, int]], str, str] | None = None) -> None:
+                 seed: tuple[int, Sequence[tuple[int, int]], str, str] | None = None,
+                 byte_order: Literal["little", "big"] | None = None) -> None:
         self.checksum = checksum
-        # bytes holding one integer (`>3s{24}`): packed as bytes, in their byte order
-        self.order: Literal["little", "big"] | None = None
-        if fmt is not None and fmt.endswith("}"):
-            fmt = fmt[: fmt.index("{")]
-            self.order = "big" if fmt.startswith((">", "!")) else "little"
+        # bytes holding one integer (`>3s{24}`, stored as `>3s`): packed as bytes, in their byte order
+        self.order = byte_order
         self.struct = struct.Struct(fmt) if fmt is not None else None
         self.digits = (checksum.width + 3) // 4
         self.first = first
