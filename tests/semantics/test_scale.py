@@ -90,5 +90,5 @@ def test_a_format_templates_fields_are_checked_in_linear_time() -> None:
 
     small, large = "{},x" * 2_000, "{},x" * 8_000
     assert len(format_fields(large)) == 8_000
-    ratio = least_cpu(lambda: format_fields(large)) / least_cpu(lambda: format_fields(small))
-    assert ratio < 8, ratio
+    ratio = least_cpu(lambda: format_fields(large), 5) / least_cpu(lambda: format_fields(small), 5)
+    assert ratio < 10, ratio  # linear is 4, the quadratic scan was 16; 8.9 was seen on a machine at load 8
