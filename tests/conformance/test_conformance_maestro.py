@@ -26,6 +26,7 @@ from devices import PtyDevice
 
 from rdisc.emit.python import import_driver
 from rdisc.runtime import errors, load
+from tests.support.pololu import crc7
 from tests.support.ports import ScriptedPort
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -293,15 +294,6 @@ def test_set_multiple_targets_on_a_mini_maestro(implementation: tuple[Any, type[
 # cleared, the same data bytes; "Pololu protocol, device number 12" for the example above.
 GUIDE_POLOLU_SET_TARGET_2_1500US = bytes([0xAA, 0x0C, 0x04, 0x02, 0x70, 0x2E])
 
-
-def crc7(data: bytes) -> int:
-    """The guide's CRC-7 in C (section 5.d): polynomial 0x91, least significant bit first."""
-    crc = 0
-    for byte in data:
-        crc ^= byte
-        for _ in range(8):
-            crc = (crc ^ 0x91) >> 1 if crc & 1 else crc >> 1
-    return crc
 
 
 def test_the_reference_crc7_gives_the_guides_example() -> None:

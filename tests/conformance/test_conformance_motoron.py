@@ -23,6 +23,7 @@ from devices import PtyDevice
 
 from rdisc.emit.python import import_driver
 from rdisc.runtime import load
+from tests.support.pololu import crc7
 
 ROOT = Path(__file__).resolve().parents[2]
 DESCRIPTION = ROOT / "examples" / "motoron.rdis"
@@ -34,17 +35,6 @@ CRC_ERROR, RESET = 1 << 1, 1 << 9  # status flags
 GUIDE_SET_SPEED_1_100 = bytes([0xD1, 0x01, 0x64, 0x00, 0x68])  # section 11: "Set speed" of motor 1 to 100, CRC
 GUIDE_CLEAR_RESET_FLAG = bytes([0xA9, 0x00, 0x04])  # the guide's initialization sequence, CRC disabled
 
-
-def crc7(message: bytes) -> int:
-    """The guide's C code (section 11): polynomial 0x91, least significant bit first."""
-    crc = 0
-    for byte in message:
-        crc ^= byte
-        for _ in range(8):
-            if crc & 1:
-                crc ^= 0x91
-            crc >>= 1
-    return crc
 
 
 class Motoron(PtyDevice):

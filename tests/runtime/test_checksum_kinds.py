@@ -18,6 +18,7 @@ from rdisc.syntax.parse import parse
 from rdisc.syntax.printer import print_module
 from tests.conftest import run_rdisc
 from tests.engine.test_one_engine import ScriptedPort, implementation_of, through_json
+from tests.support.pololu import crc7
 
 DESCRIPTION = """\
 robot checks { author "tests" }
@@ -39,17 +40,6 @@ primitive echo() on link frame pololu pack "B" (0x9A) unpack "<h" { speed = out[
 """
 
 
-def _pololu_crc(message: bytes) -> int:
-    """The routine printed in Pololu's guides (Motoron, section "Cyclic redundancy check")."""
-    crc = 0
-    for byte in message:
-        crc ^= byte
-        for _ in range(8):
-            if crc & 1:
-                crc ^= 0x91
-            crc >>= 1
-    return crc
-
 
 def test_the_engine_gives_the_published_values() -> None:
     pololu = Checksum("crc", 7, 0x09, reflect_in=True, reflect_out=True)
@@ -69,14 +59,14 @@ def test_pololu_crc7_is_the_guides(kind: str, tmp_path: Path) -> None:
             port.written.clear()
             robot.call_primitive("set_speed", motor, value)
             body = bytes([0xD1, motor, value & 0x7F, (value >> 7) & 0x7F])
-            assert bytes(port.written) == body + bytes([_pololu_crc(body)])
+            assert bytes(port.written) == body + bytes([crc7(body)])
 
 
 @pytest.mark.parametrize("kind", ["runtime", "driver"])
 def test_a_reply_with_a_crc7_is_checked(kind: str, tmp_path: Path) -> None:
     good = (-300).to_bytes(2, "little", signed=True)
     bad = (5).to_bytes(2, "little")
-    port = ScriptedPort(good + bytes([_pololu_crc(good)]) + bad + bytes([_pololu_crc(bad) ^ 0x40]))
+    port = ScriptedPort(good + bytes([crc7(good)]) + bad + bytes([crc7(bad) ^ 0x40]))
     with implementation_of(kind, DESCRIPTION, tmp_path, "checks").connect(port, threads=False) as robot:
         robot.call_primitive("echo")
         assert robot.state["speed"] == -300

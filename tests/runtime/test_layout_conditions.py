@@ -21,6 +21,7 @@ from rdisc.syntax.parse import parse
 from rdisc.syntax.printer import print_module
 from tests.conftest import run_rdisc
 from tests.engine.test_one_engine import implementation_of, through_json
+from tests.support.pololu import crc7
 from tests.support.ports import ScriptedPort
 
 DESCRIPTION = """\
@@ -41,15 +42,6 @@ primitive set_target(channel: int in 0..23, target: int in 0..16383) on link
     frame pololu(PROTOCOL, DEVICE, 0x84) pack "BBB" (channel, target & 0x7F, target >> 7)
 """
 
-
-def crc7(data: bytes) -> int:
-    """Pololu's CRC-7 as its Maestro guide writes it in C (polynomial 0x91, least significant bit first)."""
-    crc = 0
-    for byte in data:
-        crc ^= byte
-        for _ in range(8):
-            crc = (crc ^ 0x91) >> 1 if crc & 1 else crc >> 1
-    return crc
 
 
 def test_the_reference_crc7_gives_the_guides_example() -> None:
