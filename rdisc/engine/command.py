@@ -11,7 +11,8 @@ import math
 import os
 import sys
 import time
-from collections.abc import Callable, Iterable, Mapping
+from collections.abc import Callable, Iterable, Iterator, Mapping
+from contextlib import contextmanager
 from typing import Any
 
 from rdisc.engine.arguments import Unbound, bind_settings, call_values, read_value
@@ -33,6 +34,20 @@ from rdisc.engine.signals import (
 )
 from rdisc.engine.values import Value
 
+
+@contextmanager
+def _ports_held(robot: Robot) -> Iterator[None]:
+    """A host's call is recorded while it holds its robot's ports: a tick that holds a port
+    (`threading single`) then runs wholly before or after it, so a recording's order of runs is
+    the wire's, which `rdisc replay` follows. Each port once, in the order of connection names."""
+    locks = list({id(port): port.lock for _, port in sorted(robot._ports.items())}.values())
+    for lock in locks:
+        lock.acquire()
+    try:
+        yield
+    finally:
+        for lock in reversed(locks):
+            lock.release()
 
 def add_arguments(parser: argparse.ArgumentParser, device: Device | None = None, *, ports: bool = True) -> None:
     """The options of `rdisc run` (and of a driver's command line), on `parser`; without
@@ -107,9 +122,10 @@ def run_command(args: argparse.Namespace, robot: Robot, prog: str, sim: Simulato
         if opened is not None:
             opened()
         for name, kind, values in calls:
-            if session is not None:
-                session.call(kind, name, values)
-            make_call(robot, kind, name, values)
+            with _ports_held(robot):
+                if session is not None:
+                    session.call(kind, name, values)
+                make_call(robot, kind, name, values)
         if simulated and (args.duration is not None or args.watch):
             robot.run_for(None if args.duration is None else args.duration - (clock() - started))
         elif args.duration is not None:

@@ -37,6 +37,7 @@ import threading
 import time
 from collections import deque
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
+from contextlib import contextmanager
 from dataclasses import KW_ONLY, dataclass, field
 from typing import Any, Literal, NamedTuple, Protocol, assert_never
 
@@ -5147,6 +5148,20 @@ def _unblock_signals() -> set[int | signal.Signals] | None:
 # ---- rdisc engine: command (rdisc/engine/command.py), the command line ---------------------------
 
 
+@contextmanager
+def _ports_held(robot: Robot) -> Iterator[None]:
+    """A host's call is recorded while it holds its robot's ports: a tick that holds a port
+    (`threading single`) then runs wholly before or after it, so a recording's order of runs is
+    the wire's, which `rdisc replay` follows. Each port once, in the order of connection names."""
+    locks = list({id(port): port.lock for _, port in sorted(robot._ports.items())}.values())
+    for lock in locks:
+        lock.acquire()
+    try:
+        yield
+    finally:
+        for lock in reversed(locks):
+            lock.release()
+
 def add_arguments(parser: argparse.ArgumentParser, device: Device | None = None, *, ports: bool = True) -> None:
     """The options of `rdisc run` (and of a driver's command line), on `parser`; without
     `--port` for a simulated device (`rdisc sim`)."""
@@ -5220,9 +5235,10 @@ def run_command(args: argparse.Namespace, robot: Robot, prog: str, sim: Simulato
         if opened is not None:
             opened()
         for name, kind, values in calls:
-            if session is not None:
-                session.call(kind, name, values)
-            make_call(robot, kind, name, values)
+            with _ports_held(robot):
+                if session is not None:
+                    session.call(kind, name, values)
+                make_call(robot, kind, name, values)
         if simulated and (args.duration is not None or args.watch):
             robot.run_for(None if args.duration is None else args.duration - (clock() - started))
         elif args.duration is not None:
