@@ -18,10 +18,9 @@ from rdisc.editor import positions
 from rdisc.editor.documents import Analysis
 from rdisc.editor.index import READ, Index, Symbol
 from rdisc.syntax import ast
-from rdisc.syntax.parse import DECL_KEYWORDS
+from rdisc.syntax.parse import DECL_KEYWORDS, DECL_START
 
 MAX_CHARS = 20_000  # of the declaration before the cursor that the parser is run over
-_DECL_START = re.compile(r"^(?:{})\b".format("|".join(DECL_KEYWORDS)), re.MULTILINE)
 MAX_LINE = 4096  # of the line before the cursor that is read (a longer line is refused by the parser)
 _KEYWORD = re.compile(r"[a-z]+|True|False")
 _EXPRESSION = {"INT", "FLOAT", "STRING", "True", "not", "LPAR"}  # accepted where an expression starts
@@ -57,7 +56,7 @@ def complete(analysis: Analysis, at: types.Position, good: Analysis | None = Non
         name = before[len(before) - 1 - _name_before(before, len(before) - 1) : -1]
         items = [_item(s) for s in _members(_lookup(analysis, good, ("enum",), name))]
         return types.CompletionList(is_incomplete=False, items=items)
-    starts = [m.start() for m in _DECL_START.finditer(text, max(0, line_start - MAX_CHARS), offset - len(line) + len(before))]
+    starts = [m.start() for m in DECL_START.finditer(text, max(0, line_start - MAX_CHARS), offset - len(line) + len(before))]
     start = starts[-1] if starts else None
     head = re.match(r"([a-z]+)\s+([A-Za-z]\w*)?", text[start:offset]) if start is not None else None
     keyword = head.group(1) if head else None

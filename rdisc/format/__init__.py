@@ -16,7 +16,12 @@ grammar's parser is made once, as `rdisc check`'s is).
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from rdisc.diagnostics import Diagnostic, Diagnostics, Severity
+
+if TYPE_CHECKING:
+    from rdisc.format.tokens import Tokens
 
 __all__ = ["FormatError", "declarations", "format_text"]
 
@@ -35,32 +40,36 @@ class FormatError(Exception):
 def format_text(text: str, name: str = "<text>") -> str:
     """`text` (a description called `name` in diagnostics) in the canonical layout; FormatError
     when it does not parse."""
-    from rdisc.compile import _Tokens
     from rdisc.format.layout import lay_out
-    from rdisc.format.tokens import read_tokens
-    from rdisc.syntax.parse import _chunks
 
-    diagnostics = Diagnostics()
-    _Tokens().parse(name, text, diagnostics)  # refused past `rdisc check`'s token budget, as check refuses it
-    if diagnostics.has_errors():
-        raise FormatError(name, text, tuple(d for d in diagnostics.sorted() if d.severity is Severity.ERROR))
-    tokens = read_tokens(text, _chunks(text))
+    tokens, errors = _read(text, name)
+    if tokens is None:
+        raise FormatError(name, text, errors)
     return lay_out(tokens.decls, tokens.end)
 
 
 def declarations(text: str) -> list[tuple[int, int]]:
     """Where each declaration of `text` starts and ends (its first token's start, its last token's
     end, as character offsets), for formatting a part of a file; [] when it does not parse."""
-    from rdisc.compile import _Tokens
-    from rdisc.format.tokens import read_tokens
-    from rdisc.syntax.parse import _chunks
-
-    diagnostics = Diagnostics()
-    _Tokens().parse("<text>", text, diagnostics)
-    if diagnostics.has_errors():
+    tokens, _ = _read(text, "<text>")
+    if tokens is None:
         return []
     spans = []
-    for decl in read_tokens(text, _chunks(text)).decls:
+    for decl in tokens.decls:
         leaves = decl.leaves()
         spans.append((leaves[0].start, leaves[-1].end))
     return spans
+
+
+def _read(text: str, name: str) -> tuple[Tokens | None, tuple[Diagnostic, ...]]:
+    """The text's tokens by declaration, or None and its syntax errors: parsed as `rdisc check`
+    parses it, refused past the same token budget."""
+    from rdisc.compile import _Tokens
+    from rdisc.format.tokens import read_tokens
+    from rdisc.syntax.parse import declaration_bounds
+
+    diagnostics = Diagnostics()
+    _Tokens().parse(name, text, diagnostics)
+    if diagnostics.has_errors():
+        return None, tuple(d for d in diagnostics.sorted() if d.severity is Severity.ERROR)
+    return read_tokens(text, declaration_bounds(text)), ()

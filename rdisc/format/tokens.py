@@ -101,12 +101,12 @@ def _parser() -> lark.Lark:
 
 def read_tokens(text: str, chunks: list[tuple[int, int]]) -> Tokens:
     """The token trees of `text`, which parses without errors in the chunks `chunks`."""
-    from rdisc.syntax.parse import _keyword_as_name
+    from rdisc.syntax.parse import keyword_as_name
 
     decls: list[Node] = []
     leaves: list[Leaf] = []
     for start, stop in chunks:
-        tree = _parser().parse(text[start:stop], on_error=_keyword_as_name)
+        tree = _parser().parse(text[start:stop], on_error=keyword_as_name)
         for child in tree.children:
             made = _convert(child, "start", start, leaves)
             assert isinstance(made, Node), "a declaration is a rule"

@@ -53,7 +53,7 @@ DECL_KEYWORDS = (
     "joint",
     "transmission",
 )
-_DECL_START = re.compile(r"^(?:{})\b".format("|".join(DECL_KEYWORDS)), re.MULTILINE)
+DECL_START = re.compile(r"^(?:{})\b".format("|".join(DECL_KEYWORDS)), re.MULTILINE)
 _DOC_RUN = re.compile(r"(?:^[ \t]*///[^\n]*\n?)+", re.MULTILINE)
 _DOC_LINE = re.compile(r"^[ \t]*/// ?([^\n]*)$", re.MULTILINE)
 _BLANK_OR_COMMENT = re.compile(r"(?:\s+|#[^\n]*)*")
@@ -101,7 +101,7 @@ def parse(path: str, text: str, diagnostics: Diagnostics) -> ast.Module:
     decls: list[ast.Decl] = []
     damaged: list[ast.Damaged] = []
     errors = 0
-    bounds = _chunks(text)
+    bounds = declaration_bounds(text)
     for i, (start, end) in enumerate(bounds):
         if parse_declaration(text, start, end, builder, decls, damaged, errors < MAX_SYNTAX_ERRORS,
                              i == len(bounds) - 1):
@@ -112,7 +112,7 @@ def parse(path: str, text: str, diagnostics: Diagnostics) -> ast.Module:
 def pieces(text: str) -> tuple[list[tuple[int, int]], dict[int, str]]:
     """Where `parse` cuts a file into top-level declarations, and its doc comments by the offset
     of what each documents."""
-    return _chunks(text), _doc_comments(text)
+    return declaration_bounds(text), _doc_comments(text)
 
 
 def parse_declaration(text: str, start: int, end: int, builder: Builder, decls: list[ast.Decl],
@@ -138,7 +138,7 @@ def parse_declaration(text: str, start: int, end: int, builder: Builder, decls: 
     import lark  # only for a declaration the loop leaves: start-up time matters for `rdisc check`
 
     try:
-        tree = parser().parse(chunk, start="start", on_error=_keyword_as_name)
+        tree = parser().parse(chunk, start="start", on_error=keyword_as_name)
     except lark.exceptions.UnexpectedInput as err:
         damaged.extend(_damaged(path, chunk, start))
         if report:
@@ -167,7 +167,7 @@ def parse_declaration(text: str, start: int, end: int, builder: Builder, decls: 
 _NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
 
 
-def _keyword_as_name(err: lark.exceptions.UnexpectedInput) -> bool:
+def keyword_as_name(err: lark.exceptions.UnexpectedInput) -> bool:
     """Keywords are contextual: a clause keyword (`baud`, `length`, `mask`, ...) where the
     parser wants a name is that name. LALR merges the states after an expression, so the
     lexer offers every keyword that may follow an expression anywhere; this undoes that."""
@@ -194,7 +194,7 @@ def parse_expression(path: str, text: str, base_offset: int, diagnostics: Diagno
     import lark
 
     try:
-        tree = parser().parse(text, start="expr_start", on_error=_keyword_as_name)
+        tree = parser().parse(text, start="expr_start", on_error=keyword_as_name)
     except lark.exceptions.UnexpectedInput as err:
         code, offset, length, message, label, help = describe_unexpected(err, text, True)
         at = base_offset + offset
@@ -244,8 +244,10 @@ def _too_long(path: str, chunk: str, start: int) -> tuple[Span, str] | None:
     return None
 
 
-def _chunks(text: str) -> list[tuple[int, int]]:
-    starts = [m.start() for m in _DECL_START.finditer(text)]
+def declaration_bounds(text: str) -> list[tuple[int, int]]:
+    """Where `parse` cuts `text` into top-level declarations: at each declaration keyword that
+    starts a line (the formatter and the editor cut it the same way)."""
+    starts = [m.start() for m in DECL_START.finditer(text)]
     if not starts or starts[0] != 0:
         starts.insert(0, 0)
     ends = starts[1:] + [len(text)]

@@ -1,7 +1,7 @@
 """The tokens of a description as rdisc's parser reads them: the ground truth the highlighters
 are held to. Keywords are contextual (`state error: int`, `error = out[1]`): Lark's contextual
 lexer offers every keyword that may follow an expression, and the parser reads one where it
-wants a name as that name (rdisc.syntax.parse._keyword_as_name); this does the same, token by
+wants a name as that name (rdisc.syntax.parse.keyword_as_name); this does the same, token by
 token, so a word is a keyword here exactly where the parser takes it as one."""
 
 from __future__ import annotations

@@ -10,7 +10,7 @@ from pathlib import Path
 import lark
 
 from rdisc.syntax import lexing
-from rdisc.syntax.parse import _chunks, _keyword_as_name, lark_parser, parser
+from rdisc.syntax.parse import declaration_bounds, keyword_as_name, lark_parser, parser
 
 REPO = Path(__file__).resolve().parents[2]
 
@@ -18,9 +18,9 @@ REPO = Path(__file__).resolve().parents[2]
 def outcomes(made: lark.Lark, texts: list[str]) -> list[tuple[str, ...]]:
     found: list[tuple[str, ...]] = []
     for text in texts:
-        for start, end in _chunks(text):
+        for start, end in declaration_bounds(text):
             try:
-                found.append(("tree", str(made.parse(text[start:end], start="start", on_error=_keyword_as_name))))
+                found.append(("tree", str(made.parse(text[start:end], start="start", on_error=keyword_as_name))))
             except lark.exceptions.UnexpectedInput as err:
                 found.append(("error", type(err).__name__, str(err)))
     return found
