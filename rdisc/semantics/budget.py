@@ -147,6 +147,8 @@ def budget(model: m.Model, diagnostics: Diagnostics) -> list[ConnectionBudget]:
 
 def _sensed(model: m.Model, conn: m.Connection) -> Iterator[SensorLoad]:
     """The sensors read on this connection, each at the rate it is read."""
+    if not model.sensors:  # their rates' rules imported only then
+        return
     from rdisc.semantics.sensed import read_rates
 
     for sensor, rate in read_rates(model):

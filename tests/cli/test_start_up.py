@@ -88,6 +88,31 @@ def test_a_check_imports_the_body_s_rules_only_for_a_description_with_a_body() -
     assert found == ["0 False\n", "0 True\n"]
 
 
+NOISY = """robot ranger { author "tests" }
+state level: int = 0
+connection port: serial { baud 9600 }
+primitive level() on port pack "B" (1) unpack "B" { level = out[0] }
+interface watch() triggers range { level() }
+output range: Range {
+    distance = level / 1000.0
+    noise distance 0.01 "m"
+}
+"""
+
+
+def test_a_check_imports_the_rules_of_sensors_and_noise_only_for_a_description_that_has_them(tmp_path) -> None:
+    """A description without sensors (koala.rdis) does without rdisc.semantics.sensed, one without
+    noise or filters (create.rdis) without rdisc.semantics.check.noise."""
+    noisy = tmp_path / "noisy.rdis"
+    noisy.write_text(NOISY, encoding="utf-8")
+    probe = ("import sys; from rdisc.cli.main import main; status = main(sys.argv[1:]); "
+             "print(status, *(name in sys.modules for name in ('rdisc.semantics.sensed', 'rdisc.semantics.check.noise')))")
+    found = [subprocess.run([sys.executable, "-c", probe, "check", str(path)], capture_output=True, text=True,
+                            check=True).stdout
+             for path in (ROOT / "examples" / "koala.rdis", ROOT / "examples" / "create.rdis", noisy)]
+    assert found == ["0 False False\n", "0 True False\n", "0 False True\n"]
+
+
 def test_a_clean_check_does_not_ask_the_terminal_s_width() -> None:
     """argparse's own formatter asks the width (importing shutil, with bz2 and lzma) for each
     argument added; rdisc's asks it only when help or usage is written."""

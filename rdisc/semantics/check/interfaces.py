@@ -11,7 +11,6 @@ from rdisc.frozen import field_names, replace
 from rdisc.semantics import model as m
 from rdisc.semantics.check.declarations import MAX_FREQUENCY_HZ
 from rdisc.semantics.check.layouts import Layouts
-from rdisc.semantics.check.noise import errors
 from rdisc.semantics.model import Scope, Type
 from rdisc.semantics.resolve import suggest
 from rdisc.semantics.types import Env, Names, describe
@@ -335,7 +334,12 @@ class Interfaces(Layouts):
                 help="an output defines every field of its adapter",
             )
         fields = tuple((f.name, values[f.name]) for f in adapter.fields if f.name in values)
-        noise, filters = errors(self.d, decl, adapter)
+        noise: tuple[m.Noise, ...] = ()
+        filters: tuple[m.Kalman, ...] = ()
+        if decl.noises or decl.filters:  # their rules imported only then: most outputs state none, and a check starts cold
+            from rdisc.semantics.check.noise import errors
+
+            noise, filters = errors(self.d, decl, adapter)
         return m.DomainOutput(decl.name.text, m.AdapterRef(adapter.name), fields, decl.doc, decl.span, frame,
                               noise, filters)
 
