@@ -507,8 +507,11 @@ class FrameRules:
             d.report("E301", lit.span, err.message)
             return m.REFUSED
         if len(layout.slots) != 1 or layout.slots[0].type is not Type.INT:
+            bytes_only = len(layout.slots) == 1 and layout.slots[0].code.endswith("s") and layout.slots[0].bits is None
             d.report(code, lit.span, f"{what} is one integer: a struct format such as \"B\", \">H\" or \"<I\", "
-                     f"not \"{abbreviate(lit.value)}\"")
+                     f"not \"{abbreviate(lit.value)}\"",
+                     help=f"for the one integer {layout.size} bytes hold, write \"{lit.value}{{{8 * layout.size}}}\""
+                     if bytes_only and 0 < layout.size <= 8 else None)
             return m.REFUSED
         return layout
 

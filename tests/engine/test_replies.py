@@ -135,7 +135,7 @@ error[E401]: state variable `one` takes an int, but this is an array int[2]
 6 | primitive scalar() on port pack "B" (1) replies 2 unpack "B" { one = out[0] }
   |                                                                      ^^^^^^
   |
-  = help: an array's size and type are fixed: `int[6]` takes an int[6]
+  = help: take one of its values (`[0]`), or declare the target `int[2]` to keep them all
 
 error[E204]: a reply count is a constant int from 2 to 1024, not 1
  --> d.rdis:7:49

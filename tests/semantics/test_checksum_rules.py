@@ -61,6 +61,9 @@ def test_widths_beside_8_16_and_32_are_accepted(part: str, width: int) -> None:
                                 "`reflect out` for one"), None)]),
     ('checksum "crc24-lte-a" "B"', [
         ("E502", '"B"', 'a 24-bit checksum does not fit "B" (8 bits)', None)]),
+    ('checksum "crc24-lte-a" ">3s"', [
+        ("E502", '">3s"', 'a checksum is one integer: a struct format such as "B", ">H" or "<I", not ">3s"',
+         'for the one integer 3 bytes hold, write ">3s{24}"')]),
 ])
 def test_a_bad_width_or_parameter_is_e502_at_its_words(part: str, expected: list[tuple[str, str, str, str | None]],
                                                         ) -> None:

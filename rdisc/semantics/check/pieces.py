@@ -249,13 +249,8 @@ class Pieces:
                 and unify(source.element, target.element) == target.element:
             return  # an adapter's open array: its size is checked when it runs
         if isinstance(source, m.Array) or isinstance(target, m.Array):
-            element = unify(source, target) == target
-            kind = target.element if isinstance(target, m.Array) else target
-            example = f"{kind.value}[{target.size if isinstance(target, m.Array) else 6}]"  # the target's own type
             self.d.report("E401", span, f"{into} takes {describe(target)}, but this is {describe(source)}",
-                          help=f"an array's size and type are fixed: `{example}` takes "
-                          f"{'an' if kind is Type.INT else 'a'} {example}"
-                          if not element and not (isinstance(target, m.Array) and target.size == 0) else None)
+                          help=_array_help(source, target))
             return
         if (source, target) == (Type.FLOAT, Type.INT):
             self.d.report(
@@ -417,3 +412,15 @@ def ranged(value: object) -> str:
 
 def counted(n: int, noun: str) -> str:
     return f"{n} {noun}" if n == 1 else f"{n} {noun}s"
+
+
+def _array_help(source: m.AnyType, target: m.AnyType) -> str | None:
+    """What to write when an array meets a scalar, or an array of another size or type."""
+    if unify(source, target) == target or isinstance(target, m.Array) and target.size == 0:
+        return None
+    if isinstance(target, m.Array):
+        example = f"{target.element.value}[{target.size}]"
+        return f"an array's size and type are fixed: `{example}` takes {'an' if target.element is Type.INT else 'a'} {example}"
+    assert isinstance(source, m.Array)
+    whole = f"{source.element.value}[{source.size}]" if source.size else f"{source.element.value}[]"
+    return f"take one of its values (`[0]`), or declare the target `{whole}` to keep them all"
