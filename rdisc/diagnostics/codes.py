@@ -614,6 +614,14 @@ joint and back is itself, to one step of an int. Both are checked at 33 points o
 the joint's range with the interpreter the runtime uses. Wrong: a servo's `goal:
 int in 0..1023` with `limit -3.2..3.2` through `raw = round(position * 195.3) +
 512`. Right: `limit -2.6..2.6`."""),
+    ("E607", "portable-names", """
+Every name of the body is one that every model format carries as written, so that
+URDF, SDF, MJCF, ros2_control and the ROS JointState name each joint alike. SDF
+(and so Gazebo, `ign sdf -k`) gives links and joints one namespace: a joint never
+takes a link's name. SDF also keeps `world` for itself (and `__...__`, which no
+RDIS name can be), so neither a link nor a joint is named `world`. Wrong: `link shoulder { ... }`
+beside `joint shoulder: revolute shoulder -> upper_arm { ... }`. Right: `link
+turret { ... }` and `joint shoulder: revolute turret -> upper_arm { ... }`."""),
     ("E731", "noise", """
 An output's `noise FIELD ...` states a field's error model (thesis section 7.2.3):
 a standard deviation and its unit (`noise distance 0.01 "m"`, the variance its

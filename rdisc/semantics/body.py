@@ -291,6 +291,23 @@ class BodyRules:
                        bounds["velocity"], bounds["effort"], bounds["damping"] or 0.0, bounds["friction"] or 0.0,
                        decl.doc, decl.span)
 
+    def portable_names(self) -> None:
+        """Names every model format can carry as written, so URDF, SDF, MJCF, ros2_control and a
+        JointState name a joint alike: SDF gives links and joints one namespace, where a joint named
+        like a link is refused (`ign sdf -k`), and reserves `world`."""
+        for kind, decls in (("link", self.s.links), ("joint", self.s.joints)):
+            for name, decl in decls.items():
+                if reserved_name(name):
+                    self.d.report("E607", decl.name.span, f"`{name}` is reserved by SDF: a {kind} cannot take it",
+                                  help=f"name the {kind} `{name}_{kind}`")
+        for name, decl in self.s.joints.items():
+            link = self.s.links.get(name)
+            if link is not None and not reserved_name(name):
+                self.d.report("E607", decl.name.span, f"joint `{name}` is named like a link",
+                              labels=(Label(link.name.span, f"link `{name}`"),),
+                              help=f"SDF and Gazebo give links and joints one namespace: name the joint "
+                              f"`{name}_joint`, or the link `{name}_link`")
+
     def tree(self, links: dict[str, m.Link], joints: dict[str, m.Joint]) -> dict[str, m.Joint]:
         """One tree with one root: every link moved by at most one joint, reachable from the root,
         no cycle. The joints come back parents first. A link is reported detached only when every
@@ -573,6 +590,11 @@ class BodyRules:
         if p is None or p.low is None or p.high is None:
             return ()
         return (Label(p.low.span.to(p.high.span), "the range the device accepts"),)
+
+
+def reserved_name(name: str) -> bool:
+    """A name SDF keeps for itself (`__...__` ones too, which RDIS names cannot be)."""
+    return name == "world"
 
 
 def joint_range(joint: m.Joint, quantity: m.Quantity) -> tuple[float | None, float | None, str]:

@@ -20,7 +20,7 @@ from console.test_console import WAIT_MS, opened_page, playwright_api
 pytest.importorskip("mujoco")
 
 ARM = REPO / "examples" / "arm.rdis"
-LINKS = ["base", "shoulder", "upper_arm", "forearm", "wrist", "hand", "gripper"]
+LINKS = ["base", "turret", "upper_arm", "forearm", "wrist", "hand", "jaw"]
 JOINTS = ["waist", "shoulder", "elbow", "wrist_pitch", "wrist_roll", "gripper"]
 TARGET = [0.5, -0.3, 0.8, -0.6, 1.0, 0.2]
 POLLS = 400  # reads of the view, 50 ms apart: the servos need some 20 of them to get there
@@ -69,14 +69,14 @@ def test_the_view_has_each_link_joint_and_shape_of_the_body(page) -> None:
         assert [len(points.split()) for points in outlines] == [4] * 7  # unturned boxes: rectangles
     rows = view.locator("[data-rdis-joints] tr[data-name]")
     assert rows.evaluate_all("es => es.map(e => e.dataset.name)") == JOINTS
-    assert rows.first.inner_text().split("\t") == ["waist", "0.0000", "rad", "revolute, base → shoulder"]
-    at, _ = _drawn(page, "side", "gripper")
+    assert rows.first.inner_text().split("\t") == ["waist", "0.0000", "rad", "revolute, base → turret"]
+    at, _ = _drawn(page, "side", "jaw")
     assert at == (0.0, 0.02, 0.585)  # straight up: the joints' origins added up
 
 
 def test_a_joint_state_from_the_form_moves_the_links_in_the_side_view(page) -> None:
     page.wait_for_selector("[data-rdis-body][data-t]", timeout=WAIT_MS)
-    start, (start_x, start_y) = _drawn(page, "side", "gripper")
+    start, (start_x, start_y) = _drawn(page, "side", "jaw")
     form = page.locator('form[data-rdis-input="command"]')
     form.locator('input[name="name"]').fill("[]")
     form.locator('input[name="position"]').fill(str(TARGET))
@@ -88,7 +88,7 @@ def test_a_joint_state_from_the_form_moves_the_links_in_the_side_view(page) -> N
             break
         page.wait_for_timeout(50)
     assert all(abs(got - want) < 0.01 for got, want in zip(joints, TARGET, strict=True)), joints
-    at, (x, y) = _drawn(page, "side", "gripper")
+    at, (x, y) = _drawn(page, "side", "jaw")
     assert start[2] - at[2] > 0.02  # bent over: lower than straight up
     assert (x, y) != (start_x, start_y) and y > start_y  # and drawn lower (the page's y grows downwards)
     base, _ = _drawn(page, "side", "base")

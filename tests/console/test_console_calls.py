@@ -138,11 +138,11 @@ def test_the_body_message_is_the_simulated_links_frames_and_joints_positions() -
         robot.close()
     assert isinstance(event.pop("t"), float)
     unturned = [1.0, 0.0, 0.0, 0.0]
-    heights = {"base": 0.0, "shoulder": 0.045, "upper_arm": 0.095, "forearm": 0.295, "wrist": 0.475, "hand": 0.525}
+    heights = {"base": 0.0, "turret": 0.045, "upper_arm": 0.095, "forearm": 0.295, "wrist": 0.475, "hand": 0.525}
     assert json.loads(json.dumps(event)) == {
         "type": "body",
         "links": {**{link: [0.0, 0.0, z, *unturned] for link, z in heights.items()},
-                  "gripper": [0.0, 0.02, 0.585, *unturned]},
+                  "jaw": [0.0, 0.02, 0.585, *unturned]},
         "joints": dict.fromkeys(["waist", "shoulder", "elbow", "wrist_pitch", "wrist_roll", "gripper"], 0.0),
     }
 

@@ -55,7 +55,7 @@ def test_the_model_is_the_description_s(body) -> None:
         read = joints[joint.child]
         assert (read.get("type"), read.findtext("parent")) == (joint.kind.value, joint.parent)
         assert read.find("pose").get("relative_to") == joint.parent  # type: ignore[union-attr]
-        assert read.get("name") == (joint.name if joint.name not in model.links else f"{joint.name}_joint")
+        assert read.get("name") == joint.name
         if joint.moves():
             axis = read.find("axis")
             assert [float(v) for v in axis.findtext("xyz").split()] == pytest.approx(unit(joint.axis))  # type: ignore[union-attr]
@@ -98,24 +98,17 @@ def test_every_link_is_where_urchin_puts_it_from_the_urdf(body) -> None:
         np.testing.assert_allclose(placed(name), fk[name], atol=1e-12)
 
 
-def test_a_joint_named_like_a_link_is_renamed_where_sdf_needs_it(tmp_path: Path, rdisc) -> None:
-    """SDF gives links and joints one namespace: the arm's joint `shoulder` moves link `shoulder`'s
-    child, and libsdformat refuses two frames of one name."""
-    result = rdisc("emit-sdf", "examples/arm.rdis")
-    assert ("    <!-- joint shoulder of the description: SDF gives links and joints one namespace -->\n"
-            '    <joint name="shoulder_joint" type="revolute">\n') in result.stdout
-    assert '    <link name="upper_arm">\n      <pose relative_to="shoulder_joint">0 0 0 0 0 0</pose>\n' in result.stdout
-    source = tmp_path / "d.rdis"
-    source.write_text('robot r { description "x" }\nlink world { }\nlink base { }\nlink base_joint { }\n'
-                      "joint base: fixed world -> base { }\njoint base_joint: fixed base -> base_joint { }\n",
-                      encoding="utf-8")
-    out = tmp_path / "d.sdf"
-    assert rdisc("emit-sdf", source, "-o", out).returncode == 0
-    model = ET.parse(out).getroot().find("model")
-    assert [(e.tag, e.get("name")) for e in model if e.tag != ET.Comment] == [  # type: ignore[union-attr]
-        ("link", "world_link"), ("link", "base"), ("link", "base_joint"),
-        ("joint", "base_joint_2"), ("joint", "base_joint_joint")]
-    assert ign_sdf_check(out) == (0, "Valid.")
+def test_ign_sdf_says_the_urdf_is_valid_too(body) -> None:
+    """Gazebo loads a robot from its URDF (`robot_description`), so libsdformat must take that too:
+    the arm's joints `shoulder` and `gripper` were once named like links, which it refuses."""
+    _, _, urdf = body
+    assert ign_sdf_check(urdf) == (0, "Valid.")
+
+
+def test_urdf_and_sdf_name_the_joints_alike(body) -> None:
+    model, sdf, urdf = body
+    names = [j.get("name") for j in ET.parse(sdf).getroot().iter("joint")]
+    assert names == [j.get("name") for j in ET.parse(urdf).getroot().findall("joint")] == list(model.joints)
 
 
 def test_the_arm_s_sdf_golden(rdisc, golden) -> None:

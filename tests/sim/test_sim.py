@@ -244,11 +244,11 @@ def _quaternion_matrix(q: tuple[float, ...]) -> numpy.ndarray:
 def test_link_poses_at_zero_are_the_joints_origins_added_up() -> None:
     """The example arm straight up: each link's origin is its joints' `at` summed by hand, unturned."""
     poses = Simulation(_model(EXAMPLE_ARM)).link_poses()
-    heights = {"base": 0, "shoulder": 0.045, "upper_arm": 0.095, "forearm": 0.295, "wrist": 0.475, "hand": 0.525,
-               "gripper": 0.585}
+    heights = {"base": 0, "turret": 0.045, "upper_arm": 0.095, "forearm": 0.295, "wrist": 0.475, "hand": 0.525,
+               "jaw": 0.585}
     assert set(poses) == set(heights)
     for link, z in heights.items():
-        y = 0.02 if link == "gripper" else 0
+        y = 0.02 if link == "jaw" else 0
         numpy.testing.assert_allclose(poses[link], (0, y, z, 1, 0, 0, 0), atol=1e-12)
 
 
@@ -275,7 +275,7 @@ def test_link_poses_are_urchins_forward_kinematics_of_the_urdf(tmp_path: Path) -
         numpy.testing.assert_allclose(pose[:3], fk[name][:3, 3], atol=1e-6)
         numpy.testing.assert_allclose(_quaternion_matrix(pose[3:]), fk[name][:3, :3], atol=1e-6)
         assert abs(numpy.linalg.norm(pose[3:]) - 1) < 1e-9
-    assert poses["gripper"][2] < 0.55  # it is bent: 0.585 m straight up
+    assert poses["jaw"][2] < 0.55  # it is bent: 0.585 m straight up
 
 
 def test_the_create2_base_drives_forward_in_link_poses() -> None:
