@@ -589,6 +589,15 @@ together). Wrong: `mass 1  inertia [0.1, 0.1, 0.3]`. Right: `mass 1  inertia [0.
 0.1, 0.15]`. A simulator integrates a mass of at most 1,000,000 kg and an inertia
 whose elements are at most 1,000,000 kg m²; larger (a mass of 1e308) is refused here
 rather than met as a simulation that never ends."""),
+    ("W604", "massless-moving-link", """
+A link that a moving joint carries (the child of a revolute, continuous or
+prismatic joint) states its `mass` and `inertia`. Without them libsdformat gives
+the link 1 kg without a word when Gazebo loads the URDF (`ign sdf -p` drops the
+link), and no simulator can move it as the real one moves. It is a warning, not an
+error, because a body drawn only (RViz, the console's view) needs no masses; `rdisc
+sim` and Gazebo do. Wrong: `link arm { visual box(0.03, 0.05, 0.2) }` under `joint
+lift: revolute base -> arm { ... }`. Right: `link arm { visual box(0.03, 0.05, 0.2)
+mass 0.13  inertia [0.00046, 0.000443, 0.0000368] }`."""),
     ("E605", "transmission", """
 A transmission binds a moving joint to the device: `command QUANTITY to
 TARGET.PARAM { ... }` names a numeric parameter of a primitive or interface that

@@ -291,6 +291,25 @@ class BodyRules:
                        bounds["velocity"], bounds["effort"], bounds["damping"] or 0.0, bounds["friction"] or 0.0,
                        decl.doc, decl.span)
 
+    def carried_masses(self, links: dict[str, m.Link], joints: dict[str, m.Joint]) -> None:
+        """Every link a moving joint carries has its mass and inertia: without them libsdformat gives
+        the link 1 kg unsaid (`ign sdf -p` drops it), and a simulator cannot move it truly. A
+        warning: a body drawn only (RViz) needs no masses."""
+        for joint in joints.values():
+            link = links.get(joint.child)
+            if link is not None and joint.moves() and link.inertial is None and not self.inertial_refused(link.name):
+                decl = self.s.links[link.name]
+                self.d.report("W604", decl.name.span, f"link `{link.name}` is moved by {joint.kind.value} joint "
+                              f"`{joint.name}` but has no mass",
+                              labels=(Label(self.s.joints[joint.name].name.span, f"joint `{joint.name}`"),),
+                              help="give its `mass` (kg) and `inertia` (kg m²): without them libsdformat gives it "
+                              "1 kg unsaid and Gazebo drops it")
+
+    def inertial_refused(self, link: str) -> bool:
+        """Whether the link states an inertial that was refused (already reported)."""
+        return any(isinstance(i, ast.BodyValue) and i.key in ("mass", "inertia", "centre")
+                   for i in self.s.links[link].items)
+
     def portable_names(self) -> None:
         """Names every model format can carry as written, so URDF, SDF, MJCF, ros2_control and a
         JointState name a joint alike: SDF gives links and joints one namespace, where a joint named
