@@ -417,6 +417,7 @@ def _shape(s: m.Shape) -> JsonObject:
         ("path", s.path),
         ("scale" if mesh else "size", _vector(s.size)),
         *_pose(s.origin),
+        ("color", None if s.color is None else _vector(s.color)),
     )
 
 

@@ -148,6 +148,8 @@ def _geom(body: ET.Element, name: str, shape: m.Shape, meshes: dict[int, str]) -
             geom.set("type", "mesh")
             geom.set("mesh", meshes[id(shape)])
     _place(geom, shape.origin)
+    if shape.color is not None:
+        geom.set("rgba", _vec(shape.color))
     return geom
 
 

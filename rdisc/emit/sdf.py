@@ -70,6 +70,10 @@ def _link(model: ET.Element, link: m.Link, joint: str | None) -> None:
             use = child(element, role, name=f"{role}_{i}")
             _pose(use, shape.origin)
             _geometry(child(use, "geometry"), shape)
+            if shape.color is not None:
+                material = child(use, "material")
+                for light in ("ambient", "diffuse"):
+                    child(material, light, numbers(shape.color))
 
 
 def _geometry(geometry: ET.Element, shape: m.Shape) -> None:

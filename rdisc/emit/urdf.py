@@ -62,10 +62,12 @@ def _link(robot: ET.Element, link: m.Link) -> None:
     comment(robot, link.doc)
     element = child(robot, "link", name=link.name)
     for role, shapes in (("visual", link.visuals), ("collision", link.collisions)):
-        for shape in shapes:
+        for n, shape in enumerate(shapes):
             use = child(element, role)
             _origin(use, shape.origin)
             _geometry(child(use, "geometry"), shape)
+            if shape.color is not None:  # named for its link and place: a name given twice must mean one colour
+                child(child(use, "material", name=f"{link.name}_{role}_{n}"), "color", rgba=numbers(shape.color))
     inertial = link.inertial
     if inertial is not None:
         part = child(element, "inertial")

@@ -9,7 +9,7 @@ from rdisc.json_import.values import JArray, JObject
 from rdisc.syntax import ast
 
 _LINK = ("name", "visuals", "collisions", "inertial", "doc")
-_SHAPE = ("shape", "path", "size", "scale", "xyz", "rpy")
+_SHAPE = ("shape", "path", "size", "scale", "xyz", "rpy", "color")
 _INERTIAL = ("mass", "centre", "inertia")
 _JOINT = ("name", "type", "parent", "child", "xyz", "rpy", "axis", "limit", "velocity", "effort", "damping",
           "friction", "doc")
@@ -49,9 +49,10 @@ class Body(Expressions):
             args.append(self.expr(s["scale"], "float"))
         at = self.expr(s["xyz"], "float") if "xyz" in s else None
         rpy = self.expr(s["rpy"], "float") if "rpy" in s else None
+        color = self.expr(s["color"], "float") if "color" in s else None
         if kind is None:
             return None
-        return ast.ShapeUse(role, ast.Shape(kind, present(args), obj.span), at, rpy, obj.span)
+        return ast.ShapeUse(role, ast.Shape(kind, present(args), obj.span), at, rpy, obj.span, color)
 
     def body_value(self, m: Members, key: str, word: str) -> ast.BodyValue | None:
         """The member `key`, when given, as the clause `word VALUE`."""

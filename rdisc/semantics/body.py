@@ -8,6 +8,7 @@ URDF, a simulation and the serial device cannot silently disagree.
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from collections import deque
 from collections.abc import Callable, Iterable
@@ -120,6 +121,26 @@ class BodyRules:
         return m.Link(decl.name.text, visuals, collisions, self.inertial(decl), decl.doc, decl.span)
 
     def shape(self, use: ast.ShapeUse) -> m.Shape | None:
+        shape = self.sized_shape(use)
+        if shape is None or use.color is None:
+            return shape
+        color = self.color(use.color)
+        return None if color is None else dataclasses.replace(shape, color=color)
+
+    def color(self, expr: ast.Expr) -> tuple[float, float, float, float] | None:
+        """`[r, g, b]` or `[r, g, b, a]`, each 0 to 1 (alpha 1 when not given), as URDF, SDF and
+        MuJoCo write colours."""
+        values = self.numbers(expr, "a colour")
+        if values is None:
+            return None
+        if len(values) not in (3, 4) or not all(0 <= v <= 1 for v in values):
+            self.d.report("E602", expr.span, "a colour is `[red, green, blue]` or `[red, green, blue, alpha]`, "
+                          "each from 0 to 1", help="`color [0.8, 0.1, 0.1]` is red; `[0, 0, 1, 0.5]` a see-through blue")
+            return None
+        red, green, blue, *alpha = values
+        return (red, green, blue, alpha[0] if alpha else 1.0)
+
+    def sized_shape(self, use: ast.ShapeUse) -> m.Shape | None:
         origin = self.pose(use.at, use.rpy)
         kind_name = use.shape.kind.text
         kind = next((k for k in m.ShapeKind if k.value == kind_name), None)

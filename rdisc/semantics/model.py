@@ -1051,6 +1051,7 @@ class Shape:
     origin: Pose = Pose()
     path: str | None = None
     span: Span | None = _span
+    color: tuple[float, float, float, float] | None = None  # red, green, blue, alpha: each 0 to 1
 
 
 @dataclass(frozen=True, slots=True)

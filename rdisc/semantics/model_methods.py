@@ -2208,16 +2208,18 @@ def _init_Shape(
     origin: Any = DEFAULT,
     path: Any = DEFAULT,
     span: Any = DEFAULT,
+    color: Any = DEFAULT,
 ) -> None:
     _set(self, "kind", kind)
     _set(self, "size", size)
     _set(self, "origin", origin)
     _set(self, "path", path)
     _set(self, "span", span)
+    _set(self, "color", color)
 
 
 def _repr_Shape(self: Any) -> str:
-    return f"{self.__class__.__qualname__}(kind={self.kind!r}, size={self.size!r}, origin={self.origin!r}, path={self.path!r})"
+    return f"{self.__class__.__qualname__}(kind={self.kind!r}, size={self.size!r}, origin={self.origin!r}, path={self.path!r}, color={self.color!r})"
 
 
 def _eq_Shape(self: Any, other: Any) -> Any:
@@ -2227,17 +2229,19 @@ def _eq_Shape(self: Any, other: Any) -> Any:
             self.size,
             self.origin,
             self.path,
+            self.color,
         ) == (
             other.kind,
             other.size,
             other.origin,
             other.path,
+            other.color,
         )
     return NotImplemented
 
 
 def _hash_Shape(self: Any) -> int:
-    return hash((self.kind, self.size, self.origin, self.path))
+    return hash((self.kind, self.size, self.origin, self.path, self.color))
 
 
 def _init_Inertial(self: Any, mass: Any, centre: Any, inertia: Any) -> None:
@@ -3352,6 +3356,7 @@ WRITTEN: dict[str, Written] = {
             ("origin", DEFAULT),
             ("path", DEFAULT),
             ("span", FieldSpec(None, MISSING, False, False)),
+            ("color", DEFAULT),
         ),
         {"__init__": _init_Shape, "__repr__": _repr_Shape, "__eq__": _eq_Shape, "__hash__": _hash_Shape},
     ),

@@ -852,13 +852,14 @@ class Shape:
 
 @dataclass(frozen=True, slots=True)
 class ShapeUse:
-    """`visual SHAPE at XYZ rpy RPY` or `collision ...`: a shape placed in its link's frame."""
+    """`visual SHAPE at XYZ rpy RPY color RGBA` or `collision ...`: a shape placed in its link's frame."""
 
     role: str  # "visual" | "collision"
     shape: Shape
     at: Expr | None
     rpy: Expr | None
     span: Span = _span
+    color: Expr | None = None  # a visual's `[r, g, b]` or `[r, g, b, a]`, each 0 to 1
 
 
 @dataclass(frozen=True, slots=True)

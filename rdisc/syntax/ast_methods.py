@@ -2175,26 +2175,47 @@ def _hash_Shape(self: Any) -> int:
     return hash((self.kind, self.args))
 
 
-def _init_ShapeUse(self: Any, role: Any, shape: Any, at: Any, rpy: Any, span: Any = DEFAULT) -> None:
+def _init_ShapeUse(
+    self: Any,
+    role: Any,
+    shape: Any,
+    at: Any,
+    rpy: Any,
+    span: Any = DEFAULT,
+    color: Any = DEFAULT,
+) -> None:
     _set(self, "role", role)
     _set(self, "shape", shape)
     _set(self, "at", at)
     _set(self, "rpy", rpy)
     _set(self, "span", span)
+    _set(self, "color", color)
 
 
 def _repr_ShapeUse(self: Any) -> str:
-    return f"{self.__class__.__qualname__}(role={self.role!r}, shape={self.shape!r}, at={self.at!r}, rpy={self.rpy!r})"
+    return f"{self.__class__.__qualname__}(role={self.role!r}, shape={self.shape!r}, at={self.at!r}, rpy={self.rpy!r}, color={self.color!r})"
 
 
 def _eq_ShapeUse(self: Any, other: Any) -> Any:
     if other.__class__ is self.__class__:
-        return (self.role, self.shape, self.at, self.rpy) == (other.role, other.shape, other.at, other.rpy)
+        return (
+            self.role,
+            self.shape,
+            self.at,
+            self.rpy,
+            self.color,
+        ) == (
+            other.role,
+            other.shape,
+            other.at,
+            other.rpy,
+            other.color,
+        )
     return NotImplemented
 
 
 def _hash_ShapeUse(self: Any) -> int:
-    return hash((self.role, self.shape, self.at, self.rpy))
+    return hash((self.role, self.shape, self.at, self.rpy, self.color))
 
 
 def _init_BodyValue(self: Any, key: Any, value: Any, span: Any = DEFAULT) -> None:
@@ -3329,6 +3350,7 @@ WRITTEN: dict[str, Written] = {
             ("at", MISSING),
             ("rpy", MISSING),
             ("span", FieldSpec(None, MISSING, False, False)),
+            ("color", DEFAULT),
         ),
         {
             "__init__": _init_ShapeUse,

@@ -612,7 +612,7 @@ class Rules:
 
     def visual(self, meta: Meta, c: list[Any]) -> ast.ShapeUse:
         at, rpy = c[1]
-        return ast.ShapeUse("visual", c[0], at, rpy, self.b.span(meta))
+        return ast.ShapeUse("visual", c[0], at, rpy, self.b.span(meta), c[2])
 
     def collision(self, meta: Meta, c: list[Any]) -> ast.ShapeUse:
         at, rpy = c[1]

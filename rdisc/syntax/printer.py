@@ -147,8 +147,8 @@ def _link_item(item: ast.ShapeUse | ast.BodyValue) -> str:
     if isinstance(item, ast.BodyValue):
         return f"{item.key} {print_expr(item.value)}"
     shape = f"{item.role} {item.shape.kind.text}({_args(item.shape.args)})"
-    return shape + "".join(f" {word} {print_expr(e)}" for word, e in (("at", item.at), ("rpy", item.rpy))
-                           if e is not None)
+    return shape + "".join(f" {word} {print_expr(e)}" for word, e in
+                           (("at", item.at), ("rpy", item.rpy), ("color", item.color)) if e is not None)
 
 
 def _joint_item(item: ast.BodyValue | ast.JointLimit) -> str:
