@@ -576,9 +576,11 @@ the parent's; `axis` (not zero) is what it turns about or slides along;
 `limit LOW..HIGH` (LOW < HIGH) bounds a revolute or prismatic joint's position,
 and those two also need `velocity` and `effort` (more than 0; URDF requires
 them); a continuous joint has no `limit`; a fixed joint has only `at` and `rpy`;
-`damping` and `friction` are 0 or more. Wrong: `joint j: revolute a -> b { axis
-[0, 0, 0] }`. Right: `joint j: revolute a -> b { axis [0, 0, 1]  limit -1.5..1.5
-velocity 2  effort 1 }`."""),
+`damping` and `friction` are 0 or more. `mimic JOINT multiplier M offset O` makes
+a moving joint follow another (M times its position, plus O; M not 0): the one it
+follows is another moving joint of the body that mimics none itself. Wrong: `joint
+j: revolute a -> b { axis [0, 0, 0] }`. Right: `joint j: revolute a -> b { axis [0,
+0, 1]  limit -1.5..1.5  velocity 2  effort 1 }`."""),
     ("E604", "inertial", """
 A link's inertial is its `mass` (kg, more than 0), its `centre` of mass (m, in the
 link's frame; the link's origin when not given) and its `inertia` about that

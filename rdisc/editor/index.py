@@ -215,7 +215,12 @@ class _Uses:
             case ast.JointDecl():
                 self.use(decl.parent, ("link",))
                 self.use(decl.child, ("link",))
-                self.walk(decl.items, scope)
+                for item in decl.items:
+                    if isinstance(item, ast.JointMimic):
+                        self.use(item.joint, ("joint",))
+                        self.walk((item.multiplier, item.offset), scope)
+                    else:
+                        self.walk(item, scope)
             case ast.TransmissionDecl():
                 self.use(decl.joint, ("joint",))
                 for binding in decl.bindings:

@@ -446,6 +446,8 @@ def _joint(j: m.Joint) -> JsonObject:
         ("effort", None if j.effort is None else _number(j.effort)),
         ("damping", _number(j.damping) or None),
         ("friction", _number(j.friction) or None),
+        ("mimic", None if j.mimic is None else {"joint": j.mimic.joint, "multiplier": _number(j.mimic.multiplier),
+                                                 "offset": _number(j.mimic.offset)}),
         ("doc", j.doc),
     )
 

@@ -54,6 +54,13 @@ def to_mjcf(model: m.Model, mesh_folder: str | None = None) -> str:
     if base is not None:
         mesh_names = {id(shape): f"{link.name}_mesh{n}" for n, (link, shape) in enumerate(meshes)}
         _body(model, world, base, None, rolls(model), mesh_names)
+    mimics = [j for j in model.joints.values() if j.mimic is not None]
+    if mimics:  # a follower held to its leader: position = offset + multiplier * leader's
+        equality = ET.SubElement(root, "equality")
+        for joint in mimics:
+            assert joint.mimic is not None
+            ET.SubElement(equality, "joint", name=f"{joint.name}_mimic", joint1=joint.name, joint2=joint.mimic.joint,
+                          polycoef=f"{_num(joint.mimic.offset)} {_num(joint.mimic.multiplier)} 0 0 0")
     actuators = [(t, b) for t in model.transmissions.values() for b in t.commands]
     if actuators:
         act = ET.SubElement(root, "actuator")

@@ -102,6 +102,9 @@ def _joint(model: ET.Element, joint: m.Joint, transmissions: list[m.Transmission
             comment(element, binding_words(binding, "commands"))
         for binding in transmission.measures:
             comment(element, binding_words(binding, "measures"))
+    if joint.mimic is not None:  # SDF 1.9 has no place for it (1.11's <mimic> does)
+        comment(element, f"mimics {joint.mimic.joint}: position = {number(joint.mimic.multiplier)} * "
+                f"{joint.mimic.joint} + {number(joint.mimic.offset)}")
     _pose(element, joint.origin, relative_to=joint.parent)
     child(element, "parent", joint.parent)
     child(element, "child", joint.child)

@@ -110,6 +110,9 @@ def _joint(robot: ET.Element, joint: m.Joint) -> None:
         child(element, "limit", **limit)
     if joint.damping or joint.friction:
         child(element, "dynamics", damping=number(joint.damping), friction=number(joint.friction))
+    if joint.mimic is not None:
+        child(element, "mimic", joint=joint.mimic.joint, multiplier=number(joint.mimic.multiplier),
+              offset=number(joint.mimic.offset))
 
 
 def _transmission(robot: ET.Element, transmission: m.Transmission) -> None:

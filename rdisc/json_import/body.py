@@ -12,7 +12,8 @@ _LINK = ("name", "visuals", "collisions", "inertial", "doc")
 _SHAPE = ("shape", "path", "size", "scale", "xyz", "rpy", "color")
 _INERTIAL = ("mass", "centre", "inertia")
 _JOINT = ("name", "type", "parent", "child", "xyz", "rpy", "axis", "limit", "velocity", "effort", "damping",
-          "friction", "doc")
+          "friction", "mimic", "doc")
+_MIMIC = ("joint", "multiplier", "offset")
 _TRANSMISSION = ("name", "joint", "commands", "measures", "doc")
 _COMMAND = ("quantity", "primitive", "interface", "parameter", "index", "toDevice", "toJoint")
 _MEASURE = ("quantity", "state", "index", "toDevice", "toJoint")
@@ -65,7 +66,7 @@ class Body(Expressions):
         kind = self.required(obj, m, "type", "a joint", self.ident)
         parent = self.required(obj, m, "parent", "a joint", self.ident)
         child = self.required(obj, m, "child", "a joint", self.ident)
-        items: list[ast.BodyValue | ast.JointLimit | None] = [
+        items: list[ast.BodyValue | ast.JointLimit | ast.JointMimic | None] = [
             self.body_value(m, "xyz", "at"), self.body_value(m, "rpy", "rpy"), self.body_value(m, "axis", "axis")]
         if "limit" in m:
             bounds = self.array(m["limit"], "a joint's limit")
@@ -75,6 +76,13 @@ class Body(Expressions):
             elif isinstance(m["limit"], JArray):
                 self.error(m["limit"].span, "a joint's limit is `[low, high]`")
         items += [self.body_value(m, key, key) for key in ("velocity", "effort", "damping", "friction")]
+        mimic = self.object(m.get("mimic"), "`mimic`")
+        if mimic is not None:
+            follows = self.members(mimic, "`mimic`", _MIMIC)
+            leader = self.required(mimic, follows, "joint", "`mimic`", self.ident)
+            multiplier, offset = (self.expr(follows[key], "float") if key in follows else None
+                                  for key in ("multiplier", "offset"))
+            items.append(None if leader is None else ast.JointMimic(leader, multiplier, offset, mimic.span))
         if name is None or kind is None or parent is None or child is None:
             return None
         return ast.JointDecl(name, kind, parent, child, present(items), obj.span, self.doc(m))

@@ -104,7 +104,8 @@ class BodyRules:
             return None
         return float(value)
 
-    def once(self, items: Iterable[ast.BodyValue | ast.JointLimit], key: str, owner: ast.Ident) -> ast.Expr | None:
+    def once(self, items: Iterable[ast.BodyValue | ast.JointLimit | ast.JointMimic], key: str,
+             owner: ast.Ident) -> ast.Expr | None:
         """The value of a clause given at most once; a repeat is reported where it is."""
         found = [i for i in items if isinstance(i, ast.BodyValue) and i.key == key]
         for extra in found[1:]:
@@ -268,8 +269,9 @@ class BodyRules:
         moving = {"axis", "velocity", "effort", "damping", "friction"}
         if kind is m.JointKind.FIXED:
             for item in items:
-                if isinstance(item, ast.JointLimit) or item.key in moving:
-                    key = "limit" if isinstance(item, ast.JointLimit) else item.key
+                if not isinstance(item, ast.BodyValue) or item.key in moving:
+                    key = item.key if isinstance(item, ast.BodyValue) else \
+                        "limit" if isinstance(item, ast.JointLimit) else "mimic"
                     self.d.report("E603", item.span, f"a fixed joint does not move: it has no `{key}`")
             return None if origin is None else m.Joint(decl.name.text, kind, decl.parent.text, decl.child.text,
                                                        origin, doc=decl.doc, span=decl.span)
@@ -306,11 +308,49 @@ class BodyRules:
             if expr is None and key in ("velocity", "effort") and kind in _LIMITED:
                 self.d.report("E603", decl.name.span, f"{kind.value} joint `{decl.name.text}` has no `{key}`",
                               help="URDF needs a moving joint's largest velocity and effort")
-        if origin is None:
+        mimic = self.mimic(decl)
+        if origin is None or mimic is False:
             return None
         return m.Joint(decl.name.text, kind, decl.parent.text, decl.child.text, origin, axis, lower, upper,
                        bounds["velocity"], bounds["effort"], bounds["damping"] or 0.0, bounds["friction"] or 0.0,
-                       decl.doc, decl.span)
+                       decl.doc, decl.span, mimic)
+
+    def mimic(self, decl: ast.JointDecl) -> m.Mimic | None | bool:
+        """`mimic JOINT multiplier M offset O` (1 and 0 when left out): None without one, False when
+        refused (reported). The joint it names is checked with the tree (`mimics`)."""
+        given = [i for i in decl.items if isinstance(i, ast.JointMimic)]
+        for extra in given[1:]:
+            self.d.report("E203", extra.span, f"`mimic` is given twice in `{decl.name.text}`",
+                          labels=(Label(given[0].span, "first given here"),))
+        if not given:
+            return None
+        multiplier = 1.0 if given[0].multiplier is None else self.number(given[0].multiplier, "a mimic's multiplier")
+        offset = 0.0 if given[0].offset is None else self.number(given[0].offset, "a mimic's offset")
+        if multiplier is None or offset is None:
+            return False
+        if multiplier == 0:
+            self.d.report("E603", given[0].multiplier.span if given[0].multiplier else given[0].span,
+                          "a mimic's multiplier is not 0", help="a joint that does not follow is a `fixed` one")
+            return False
+        return m.Mimic(given[0].joint.text, multiplier, offset)
+
+    def mimics(self, joints: dict[str, m.Joint]) -> None:
+        """Each mimic follows a moving joint of the body that is not itself a mimic: URDF's tools
+        and MuJoCo's equalities follow one leader, never a chain or a loop."""
+        for joint in joints.values():
+            if joint.mimic is None:
+                continue
+            span = next(i.joint.span for i in self.s.joints[joint.name].items if isinstance(i, ast.JointMimic))
+            leader = joints.get(joint.mimic.joint)
+            if joint.mimic.joint == joint.name:
+                self.d.report("E603", span, f"joint `{joint.name}` cannot mimic itself")
+            elif leader is None:
+                continue  # unknown (E102) or refused: reported where it is
+            elif not leader.moves():
+                self.d.report("E603", span, f"joint `{leader.name}` is fixed: there is nothing to mimic")
+            elif leader.mimic is not None:
+                self.d.report("E603", span, f"joint `{leader.name}` mimics `{leader.mimic.joint}` itself",
+                              help=f"mimic `{leader.mimic.joint}` (with the multipliers multiplied)")
 
     def carried_masses(self, links: dict[str, m.Link], joints: dict[str, m.Joint]) -> None:
         """Every link a moving joint carries has its mass and inertia: without them libsdformat gives

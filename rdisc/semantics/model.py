@@ -1082,6 +1082,16 @@ class JointKind(enum.Enum):
 
 
 @dataclass(frozen=True, slots=True)
+class Mimic:
+    """A joint that follows another: its position is `multiplier` times `joint`'s, plus `offset`
+    (URDF's `<mimic>`, MuJoCo's joint equality)."""
+
+    joint: str
+    multiplier: float = 1.0
+    offset: float = 0.0
+
+
+@dataclass(frozen=True, slots=True)
 class Joint:
     """`child`'s frame is `origin` in `parent`'s, then moved about or along the unit `axis`."""
 
@@ -1099,6 +1109,7 @@ class Joint:
     friction: float = 0.0
     doc: str | None = None
     span: Span | None = _span
+    mimic: Mimic | None = None  # another joint this one follows
 
     def moves(self) -> bool:
         return self.kind is not JointKind.FIXED

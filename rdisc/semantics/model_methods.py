@@ -2307,6 +2307,26 @@ def _hash_Link(self: Any) -> int:
     return hash((self.name, self.visuals, self.collisions, self.inertial, self.doc))
 
 
+def _init_Mimic(self: Any, joint: Any, multiplier: Any = DEFAULT, offset: Any = DEFAULT) -> None:
+    _set(self, "joint", joint)
+    _set(self, "multiplier", multiplier)
+    _set(self, "offset", offset)
+
+
+def _repr_Mimic(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(joint={self.joint!r}, multiplier={self.multiplier!r}, offset={self.offset!r})"
+
+
+def _eq_Mimic(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.joint, self.multiplier, self.offset) == (other.joint, other.multiplier, other.offset)
+    return NotImplemented
+
+
+def _hash_Mimic(self: Any) -> int:
+    return hash((self.joint, self.multiplier, self.offset))
+
+
 def _init_Joint(
     self: Any,
     name: Any,
@@ -2323,6 +2343,7 @@ def _init_Joint(
     friction: Any = DEFAULT,
     doc: Any = DEFAULT,
     span: Any = DEFAULT,
+    mimic: Any = DEFAULT,
 ) -> None:
     _set(self, "name", name)
     _set(self, "kind", kind)
@@ -2338,10 +2359,11 @@ def _init_Joint(
     _set(self, "friction", friction)
     _set(self, "doc", doc)
     _set(self, "span", span)
+    _set(self, "mimic", mimic)
 
 
 def _repr_Joint(self: Any) -> str:
-    return f"{self.__class__.__qualname__}(name={self.name!r}, kind={self.kind!r}, parent={self.parent!r}, child={self.child!r}, origin={self.origin!r}, axis={self.axis!r}, lower={self.lower!r}, upper={self.upper!r}, velocity={self.velocity!r}, effort={self.effort!r}, damping={self.damping!r}, friction={self.friction!r}, doc={self.doc!r})"
+    return f"{self.__class__.__qualname__}(name={self.name!r}, kind={self.kind!r}, parent={self.parent!r}, child={self.child!r}, origin={self.origin!r}, axis={self.axis!r}, lower={self.lower!r}, upper={self.upper!r}, velocity={self.velocity!r}, effort={self.effort!r}, damping={self.damping!r}, friction={self.friction!r}, doc={self.doc!r}, mimic={self.mimic!r})"
 
 
 def _eq_Joint(self: Any, other: Any) -> Any:
@@ -2360,6 +2382,7 @@ def _eq_Joint(self: Any, other: Any) -> Any:
             self.damping,
             self.friction,
             self.doc,
+            self.mimic,
         ) == (
             other.name,
             other.kind,
@@ -2374,6 +2397,7 @@ def _eq_Joint(self: Any, other: Any) -> Any:
             other.damping,
             other.friction,
             other.doc,
+            other.mimic,
         )
     return NotImplemented
 
@@ -2393,6 +2417,7 @@ def _hash_Joint(self: Any) -> int:
         self.damping,
         self.friction,
         self.doc,
+        self.mimic,
     ))
 
 
@@ -3380,6 +3405,10 @@ WRITTEN: dict[str, Written] = {
         ),
         {"__init__": _init_Link, "__repr__": _repr_Link, "__eq__": _eq_Link, "__hash__": _hash_Link},
     ),
+    "Mimic": Written(
+        (("joint", MISSING), ("multiplier", DEFAULT), ("offset", DEFAULT)),
+        {"__init__": _init_Mimic, "__repr__": _repr_Mimic, "__eq__": _eq_Mimic, "__hash__": _hash_Mimic},
+    ),
     "Joint": Written(
         (
             ("name", MISSING),
@@ -3396,6 +3425,7 @@ WRITTEN: dict[str, Written] = {
             ("friction", DEFAULT),
             ("doc", DEFAULT),
             ("span", FieldSpec(None, MISSING, False, False)),
+            ("mimic", DEFAULT),
         ),
         {"__init__": _init_Joint, "__repr__": _repr_Joint, "__eq__": _eq_Joint, "__hash__": _hash_Joint},
     ),

@@ -230,6 +230,9 @@ def _bind(decl: ast.Decl, symbols: Symbols, callables: Mapping[str, object], dia
         case ast.JointDecl():
             need(decl.parent, symbols.links, "link")
             need(decl.child, symbols.links, "link")
+            for item in decl.items:
+                if isinstance(item, ast.JointMimic):
+                    need(item.joint, symbols.joints, "joint")
         case ast.TransmissionDecl():
             need(decl.joint, symbols.joints, "joint")
             for binding in decl.bindings:

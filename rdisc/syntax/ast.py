@@ -881,6 +881,16 @@ class JointLimit:
 
 
 @dataclass(frozen=True, slots=True)
+class JointMimic:
+    """`mimic JOINT multiplier M offset O`: this joint's position is M times JOINT's, plus O."""
+
+    joint: Ident
+    multiplier: Expr | None
+    offset: Expr | None
+    span: Span = _span
+
+
+@dataclass(frozen=True, slots=True)
 class LinkDecl:
     name: Ident
     items: tuple[ShapeUse | BodyValue, ...]
@@ -896,7 +906,7 @@ class JointDecl:
     kind: Ident
     parent: Ident
     child: Ident
-    items: tuple[BodyValue | JointLimit, ...]
+    items: tuple[BodyValue | JointLimit | JointMimic, ...]
     span: Span = _span
     doc: str | None = None
 

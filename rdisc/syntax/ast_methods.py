@@ -2258,6 +2258,27 @@ def _hash_JointLimit(self: Any) -> int:
     return hash((self.low, self.high))
 
 
+def _init_JointMimic(self: Any, joint: Any, multiplier: Any, offset: Any, span: Any = DEFAULT) -> None:
+    _set(self, "joint", joint)
+    _set(self, "multiplier", multiplier)
+    _set(self, "offset", offset)
+    _set(self, "span", span)
+
+
+def _repr_JointMimic(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(joint={self.joint!r}, multiplier={self.multiplier!r}, offset={self.offset!r})"
+
+
+def _eq_JointMimic(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.joint, self.multiplier, self.offset) == (other.joint, other.multiplier, other.offset)
+    return NotImplemented
+
+
+def _hash_JointMimic(self: Any) -> int:
+    return hash((self.joint, self.multiplier, self.offset))
+
+
 def _init_LinkDecl(self: Any, name: Any, items: Any, span: Any = DEFAULT, doc: Any = DEFAULT) -> None:
     _set(self, "name", name)
     _set(self, "items", items)
@@ -3375,6 +3396,20 @@ WRITTEN: dict[str, Written] = {
             "__repr__": _repr_JointLimit,
             "__eq__": _eq_JointLimit,
             "__hash__": _hash_JointLimit,
+        },
+    ),
+    "JointMimic": Written(
+        (
+            ("joint", MISSING),
+            ("multiplier", MISSING),
+            ("offset", MISSING),
+            ("span", FieldSpec(None, MISSING, False, False)),
+        ),
+        {
+            "__init__": _init_JointMimic,
+            "__repr__": _repr_JointMimic,
+            "__eq__": _eq_JointMimic,
+            "__hash__": _hash_JointMimic,
         },
     ),
     "LinkDecl": Written(

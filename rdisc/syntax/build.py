@@ -662,6 +662,9 @@ class Rules:
     def limit(self, meta: Meta, c: list[Any]) -> ast.JointLimit:
         return ast.JointLimit(c[0], c[1], self.b.span(meta))
 
+    def mimic(self, meta: Meta, c: list[Any]) -> ast.JointMimic:
+        return ast.JointMimic(self.b.ident(c[0]), c[1], c[2], self.b.span(meta))
+
     def transmission_decl(self, meta: Meta, c: list[Any]) -> ast.TransmissionDecl:
         return ast.TransmissionDecl(self.b.ident(c[0]), self.b.ident(c[1]), tuple(c[2:]), self.b.span(meta),
                                     self.b.doc(meta))

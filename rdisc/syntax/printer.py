@@ -151,9 +151,13 @@ def _link_item(item: ast.ShapeUse | ast.BodyValue) -> str:
                            (("at", item.at), ("rpy", item.rpy), ("color", item.color)) if e is not None)
 
 
-def _joint_item(item: ast.BodyValue | ast.JointLimit) -> str:
+def _joint_item(item: ast.BodyValue | ast.JointLimit | ast.JointMimic) -> str:
     if isinstance(item, ast.JointLimit):
         return f"limit {print_expr(item.low)}..{print_expr(item.high)}"
+    if isinstance(item, ast.JointMimic):
+        return f"mimic {item.joint.text}" + "".join(f" {word} {print_expr(e)}" for word, e in
+                                                    (("multiplier", item.multiplier), ("offset", item.offset))
+                                                    if e is not None)
     return f"{item.key} {print_expr(item.value)}"
 
 
