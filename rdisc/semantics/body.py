@@ -309,13 +309,13 @@ class BodyRules:
                 self.d.report("E603", decl.name.span, f"{kind.value} joint `{decl.name.text}` has no `{key}`",
                               help="URDF needs a moving joint's largest velocity and effort")
         mimic = self.mimic(decl)
-        if origin is None or mimic is False:
+        if origin is None or isinstance(mimic, bool):
             return None
         return m.Joint(decl.name.text, kind, decl.parent.text, decl.child.text, origin, axis, lower, upper,
                        bounds["velocity"], bounds["effort"], bounds["damping"] or 0.0, bounds["friction"] or 0.0,
                        decl.doc, decl.span, mimic)
 
-    def mimic(self, decl: ast.JointDecl) -> m.Mimic | None | bool:
+    def mimic(self, decl: ast.JointDecl) -> m.Mimic | None | bool:  # False: refused
         """`mimic JOINT multiplier M offset O` (1 and 0 when left out): None without one, False when
         refused (reported). The joint it names is checked with the tree (`mimics`)."""
         given = [i for i in decl.items if isinstance(i, ast.JointMimic)]
