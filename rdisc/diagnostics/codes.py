@@ -559,9 +559,10 @@ code (an int when `code` names it): `unpack ">BBi" error when out[0] < 100 code 
 A robot's body is one tree of links: one root (the base, the child of no joint),
 every other link the child of exactly one joint, every link reachable from the
 root, no cycle, no joint joining a link to itself. Tools reading URDF silently drop
-links they cannot reach, so rdisc refuses them before any tool sees them. Wrong:
-`joint a: fixed base -> arm {}` with `joint b: revolute hand -> arm {...}` (two
-parents). Right: `joint b: revolute arm -> hand {...}`."""),
+links they cannot reach, so rdisc refuses them before any tool sees them. Only the
+root meets the world, so only it may say `spawn floating` or `spawn fixed` (no
+other word). Wrong: `joint a: fixed base -> arm {}` with `joint b: revolute hand ->
+arm {...}` (two parents). Right: `joint b: revolute arm -> hand {...}`."""),
     ("E602", "body-shape", """
 A link's `visual` and `collision` shapes are `box(x, y, z)` (full lengths),
 `cylinder(radius, length)` (along its z axis), `sphere(radius)` or

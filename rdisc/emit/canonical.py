@@ -429,6 +429,7 @@ def _link(link: m.Link) -> JsonObject:
         ("collisions", [_shape(s) for s in link.collisions] or None),
         ("inertial", None if inertial is None else {
             "mass": _number(inertial.mass), "centre": _vector(inertial.centre), "inertia": _vector(inertial.inertia)}),
+        ("spawn", None if link.spawn is None else _object(("floating", link.spawn.floating), *_pose(link.spawn.pose))),
         ("doc", link.doc),
     )
 

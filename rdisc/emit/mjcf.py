@@ -3,8 +3,9 @@
 The links become bodies nested as the joints nest them, each placed by its joint's
 origin (roll, pitch, yaw composed as URDF composes them); visual shapes are geoms that
 never collide, collision shapes geoms that do; a link's inertial is its body's. The root
-link is a free body on a floor when the body rolls (a continuous joint turns a link with a
-round collision shape: a wheel), else it is welded to the world (an arm). Each
+link is a free body on a floor when it is spawned `floating`, or, without a `spawn`, when
+the body rolls (a continuous joint turns a link with a round collision shape: a wheel),
+else it is welded to the world (an arm); a `spawn` places it. Each
 transmission's command becomes an actuator of its joint: a position command a servo
 (`<position>`), a velocity command a `<velocity>` actuator, an effort a `<motor>`, with
 the joint's limits as the control's range and its effort as the force's. A ball fixed
@@ -53,7 +54,8 @@ def to_mjcf(model: m.Model, mesh_folder: str | None = None) -> str:
                         f"and rdisc writes at most {MAX_DEPTH}")
     if base is not None:
         mesh_names = {id(shape): f"{link.name}_mesh{n}" for n, (link, shape) in enumerate(meshes)}
-        _body(model, world, base, None, rolls(model), mesh_names)
+        free = rolls(model) if base.spawn is None else base.spawn.floating
+        _body(model, world, base, None, free, mesh_names)
     mimics = [j for j in model.joints.values() if j.mimic is not None]
     if mimics:  # a follower held to its leader: position = offset + multiplier * leader's
         equality = ET.SubElement(root, "equality")
@@ -107,8 +109,11 @@ def _body(model: m.Model, parent: ET.Element, link: m.Link, joint: m.Joint | Non
         _place(body, joint.origin)
         if joint.moves():
             _joint(body, joint)
-    elif free:
-        ET.SubElement(body, "freejoint", name=f"{link.name}_free")
+    else:
+        if link.spawn is not None:
+            _place(body, link.spawn.pose)
+        if free:
+            ET.SubElement(body, "freejoint", name=f"{link.name}_free")
     if link.inertial is not None:
         i = link.inertial
         ET.SubElement(body, "inertial", pos=_vec(i.centre), mass=_num(i.mass), fullinertia=_vec(i.inertia))

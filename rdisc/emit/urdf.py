@@ -47,6 +47,7 @@ def to_urdf(model: m.Model, source: str, *, ros2_control_hardware: str | None = 
         _link(robot, link)
     for joint in model.joints.values():
         _joint(robot, joint)
+    _world(robot, model)
     for transmission in model.transmissions.values():
         _transmission(robot, transmission)
     if ros2_control_hardware is not None:
@@ -88,6 +89,19 @@ def _geometry(geometry: ET.Element, shape: m.Shape) -> None:
             child(geometry, "sphere", radius=number(size[0]))
         case m.ShapeKind.MESH:
             child(geometry, "mesh", filename=shape.path or "", scale=numbers(size))
+
+
+def _world(robot: ET.Element, model: m.Model) -> None:
+    """A root link spawned `fixed` is welded to the world as Gazebo reads URDF: a `world` link
+    and a fixed joint at the spawn pose. A floating one is placed by whoever spawns it."""
+    root = model.root_link()
+    if root is None or root.spawn is None or root.spawn.floating:
+        return
+    child(robot, "link", name="world")
+    element = child(robot, "joint", name=m.world_joint(root.name), type="fixed")
+    child(element, "parent", link="world")
+    child(element, "child", link=root.name)
+    _origin(element, root.spawn.pose)
 
 
 def _joint(robot: ET.Element, joint: m.Joint) -> None:

@@ -5,10 +5,11 @@ from __future__ import annotations
 
 from rdisc.json_import.expressions import Expressions
 from rdisc.json_import.reader import Members, present
-from rdisc.json_import.values import JArray, JObject
+from rdisc.json_import.values import JArray, JBool, JObject
 from rdisc.syntax import ast
 
-_LINK = ("name", "visuals", "collisions", "inertial", "doc")
+_LINK = ("name", "visuals", "collisions", "inertial", "spawn", "doc")
+_SPAWN = ("floating", "xyz", "rpy")
 _SHAPE = ("shape", "path", "size", "scale", "xyz", "rpy", "color")
 _INERTIAL = ("mass", "centre", "inertia")
 _JOINT = ("name", "type", "parent", "child", "xyz", "rpy", "axis", "limit", "velocity", "effort", "damping",
@@ -25,7 +26,7 @@ class Body(Expressions):
     def link(self, obj: JObject) -> ast.LinkDecl | None:
         m = self.members(obj, "a link", _LINK)
         name = self.name(obj, m, "a link")
-        items: list[ast.ShapeUse | ast.BodyValue | None] = []
+        items: list[ast.ShapeUse | ast.BodyValue | ast.LinkSpawn | None] = []
         for role, key in (("visual", "visuals"), ("collision", "collisions")):
             shapes = [self.object(item, f"a {role} shape") for item in self.array(m.get(key), f"`{key}`")]
             items += [None if o is None else self.shape_use(o, role) for o in shapes]
@@ -33,6 +34,15 @@ class Body(Expressions):
         if inertial is not None:
             i = self.members(inertial, "`inertial`", _INERTIAL)
             items += [self.body_value(i, key, key) for key in _INERTIAL]
+        spawn = self.object(m.get("spawn"), "`spawn`")
+        if spawn is not None:
+            s = self.members(spawn, "`spawn`", _SPAWN)
+            floating = self.required(spawn, s, "floating", "`spawn`",
+                                     lambda v, what: self.expect(v, JBool, what, "true or false"))
+            at = self.expr(s["xyz"], "float") if "xyz" in s else None
+            rpy = self.expr(s["rpy"], "float") if "rpy" in s else None
+            kind = None if floating is None else ast.Ident("floating" if floating.value else "fixed", spawn.span)
+            items.append(None if kind is None else ast.LinkSpawn(kind, at, rpy, spawn.span))
         if name is None:
             return None
         return ast.LinkDecl(name, present(items), obj.span, self.doc(m))

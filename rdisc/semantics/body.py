@@ -119,7 +119,42 @@ class BodyRules:
         uses = [i for i in decl.items if isinstance(i, ast.ShapeUse)]
         visuals = tuple(s for s in (self.shape(u) for u in uses if u.role == "visual") if s is not None)
         collisions = tuple(s for s in (self.shape(u) for u in uses if u.role == "collision") if s is not None)
-        return m.Link(decl.name.text, visuals, collisions, self.inertial(decl), decl.doc, decl.span)
+        return m.Link(decl.name.text, visuals, collisions, self.inertial(decl), decl.doc, decl.span, self.spawn(decl))
+
+    def spawn(self, decl: ast.LinkDecl) -> m.Spawn | None:
+        """`spawn floating|fixed at XYZ rpy RPY`, given once (that it is the root's: `spawned`)."""
+        given = [i for i in decl.items if isinstance(i, ast.LinkSpawn)]
+        for extra in given[1:]:
+            self.d.report("E203", extra.span, f"`spawn` is given twice in `{decl.name.text}`",
+                          labels=(Label(given[0].span, "first given here"),))
+        if not given:
+            return None
+        kind = given[0].kind.text
+        if kind not in ("floating", "fixed"):
+            self.d.report("E601", given[0].kind.span, f"a link is spawned `floating` or `fixed`, not `{kind}`",
+                          help=suggest(kind, ("floating", "fixed")) or "`floating` for a mobile base, `fixed` for an "
+                          "arm bolted to the world")
+            return None
+        pose = self.pose(given[0].at, given[0].rpy)
+        return None if pose is None else m.Spawn(kind == "floating", pose)
+
+    def spawned(self, links: dict[str, m.Link], joints: dict[str, m.Joint]) -> None:
+        """Only the root link meets the world: every other hangs from its joint."""
+        children = {j.child: j for j in joints.values()}
+        for link in links.values():
+            welded = m.world_joint(link.name)
+            if link.spawn is not None and not link.spawn.floating and welded in self.s.joints:
+                self.d.report("E607", self.s.joints[welded].name.span, f"joint `{welded}` takes the name of the "
+                              f"joint that fixes `{link.name}` to the world in the URDF and SDF",
+                              help=f"name it otherwise, e.g. `{welded}_2`")
+        for name, decl in self.s.links.items():
+            spawn = next((i for i in decl.items if isinstance(i, ast.LinkSpawn)), None)
+            joint = children.get(name)
+            if spawn is not None and joint is not None:
+                self.d.report("E601", spawn.span, f"link `{name}` hangs from joint `{joint.name}`: only the root "
+                              "link is spawned", labels=(Label(self.s.joints[joint.name].child.span,
+                                                               f"joint `{joint.name}`"),),
+                              help="give `spawn` to the link no joint moves")
 
     def shape(self, use: ast.ShapeUse) -> m.Shape | None:
         shape = self.sized_shape(use)

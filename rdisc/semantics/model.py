@@ -1072,6 +1072,21 @@ class Link:
     inertial: Inertial | None = None
     doc: str | None = None
     span: Span | None = _span
+    spawn: Spawn | None = None  # the root link's: how and where it meets the world
+
+
+def world_joint(root: str) -> str:
+    """The fixed joint the URDF and SDF add between the world and a root link spawned `fixed`."""
+    return f"world_to_{root}"
+
+
+@dataclass(frozen=True, slots=True)
+class Spawn:
+    """The root link `floating` (free on the floor: a mobile base) or `fixed` to the world (an arm
+    bolted down), its frame at `pose` in the world's when the simulation starts."""
+
+    floating: bool
+    pose: Pose = Pose()
 
 
 class JointKind(enum.Enum):

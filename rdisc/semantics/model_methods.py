@@ -2272,6 +2272,7 @@ def _init_Link(
     inertial: Any = DEFAULT,
     doc: Any = DEFAULT,
     span: Any = DEFAULT,
+    spawn: Any = DEFAULT,
 ) -> None:
     _set(self, "name", name)
     _set(self, "visuals", visuals)
@@ -2279,10 +2280,11 @@ def _init_Link(
     _set(self, "inertial", inertial)
     _set(self, "doc", doc)
     _set(self, "span", span)
+    _set(self, "spawn", spawn)
 
 
 def _repr_Link(self: Any) -> str:
-    return f"{self.__class__.__qualname__}(name={self.name!r}, visuals={self.visuals!r}, collisions={self.collisions!r}, inertial={self.inertial!r}, doc={self.doc!r})"
+    return f"{self.__class__.__qualname__}(name={self.name!r}, visuals={self.visuals!r}, collisions={self.collisions!r}, inertial={self.inertial!r}, doc={self.doc!r}, spawn={self.spawn!r})"
 
 
 def _eq_Link(self: Any, other: Any) -> Any:
@@ -2293,18 +2295,39 @@ def _eq_Link(self: Any, other: Any) -> Any:
             self.collisions,
             self.inertial,
             self.doc,
+            self.spawn,
         ) == (
             other.name,
             other.visuals,
             other.collisions,
             other.inertial,
             other.doc,
+            other.spawn,
         )
     return NotImplemented
 
 
 def _hash_Link(self: Any) -> int:
-    return hash((self.name, self.visuals, self.collisions, self.inertial, self.doc))
+    return hash((self.name, self.visuals, self.collisions, self.inertial, self.doc, self.spawn))
+
+
+def _init_Spawn(self: Any, floating: Any, pose: Any = DEFAULT) -> None:
+    _set(self, "floating", floating)
+    _set(self, "pose", pose)
+
+
+def _repr_Spawn(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(floating={self.floating!r}, pose={self.pose!r})"
+
+
+def _eq_Spawn(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.floating, self.pose) == (other.floating, other.pose)
+    return NotImplemented
+
+
+def _hash_Spawn(self: Any) -> int:
+    return hash((self.floating, self.pose))
 
 
 def _init_Mimic(self: Any, joint: Any, multiplier: Any = DEFAULT, offset: Any = DEFAULT) -> None:
@@ -3402,8 +3425,13 @@ WRITTEN: dict[str, Written] = {
             ("inertial", DEFAULT),
             ("doc", DEFAULT),
             ("span", FieldSpec(None, MISSING, False, False)),
+            ("spawn", DEFAULT),
         ),
         {"__init__": _init_Link, "__repr__": _repr_Link, "__eq__": _eq_Link, "__hash__": _hash_Link},
+    ),
+    "Spawn": Written(
+        (("floating", MISSING), ("pose", DEFAULT)),
+        {"__init__": _init_Spawn, "__repr__": _repr_Spawn, "__eq__": _eq_Spawn, "__hash__": _hash_Spawn},
     ),
     "Mimic": Written(
         (("joint", MISSING), ("multiplier", DEFAULT), ("offset", DEFAULT)),

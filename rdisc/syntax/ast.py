@@ -863,6 +863,16 @@ class ShapeUse:
 
 
 @dataclass(frozen=True, slots=True)
+class LinkSpawn:
+    """`spawn floating at XYZ rpy RPY` (or `fixed`): how and where the root link meets the world."""
+
+    kind: Ident
+    at: Expr | None
+    rpy: Expr | None
+    span: Span = _span
+
+
+@dataclass(frozen=True, slots=True)
 class BodyValue:
     """One `KEY value` clause of a link or joint: `mass 3.6`, `axis [0, 1, 0]`, `at [...]`."""
 
@@ -893,7 +903,7 @@ class JointMimic:
 @dataclass(frozen=True, slots=True)
 class LinkDecl:
     name: Ident
-    items: tuple[ShapeUse | BodyValue, ...]
+    items: tuple[ShapeUse | BodyValue | LinkSpawn, ...]
     span: Span = _span
     doc: str | None = None
 

@@ -2218,6 +2218,27 @@ def _hash_ShapeUse(self: Any) -> int:
     return hash((self.role, self.shape, self.at, self.rpy, self.color))
 
 
+def _init_LinkSpawn(self: Any, kind: Any, at: Any, rpy: Any, span: Any = DEFAULT) -> None:
+    _set(self, "kind", kind)
+    _set(self, "at", at)
+    _set(self, "rpy", rpy)
+    _set(self, "span", span)
+
+
+def _repr_LinkSpawn(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(kind={self.kind!r}, at={self.at!r}, rpy={self.rpy!r})"
+
+
+def _eq_LinkSpawn(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (self.kind, self.at, self.rpy) == (other.kind, other.at, other.rpy)
+    return NotImplemented
+
+
+def _hash_LinkSpawn(self: Any) -> int:
+    return hash((self.kind, self.at, self.rpy))
+
+
 def _init_BodyValue(self: Any, key: Any, value: Any, span: Any = DEFAULT) -> None:
     _set(self, "key", key)
     _set(self, "value", value)
@@ -3378,6 +3399,20 @@ WRITTEN: dict[str, Written] = {
             "__repr__": _repr_ShapeUse,
             "__eq__": _eq_ShapeUse,
             "__hash__": _hash_ShapeUse,
+        },
+    ),
+    "LinkSpawn": Written(
+        (
+            ("kind", MISSING),
+            ("at", MISSING),
+            ("rpy", MISSING),
+            ("span", FieldSpec(None, MISSING, False, False)),
+        ),
+        {
+            "__init__": _init_LinkSpawn,
+            "__repr__": _repr_LinkSpawn,
+            "__eq__": _eq_LinkSpawn,
+            "__hash__": _hash_LinkSpawn,
         },
     ),
     "BodyValue": Written(

@@ -618,6 +618,10 @@ class Rules:
         at, rpy = c[1]
         return ast.ShapeUse("collision", c[0], at, rpy, self.b.span(meta))
 
+    def spawn(self, meta: Meta, c: list[Any]) -> ast.LinkSpawn:
+        at, rpy = c[1]
+        return ast.LinkSpawn(self.b.ident(c[0]), at, rpy, self.b.span(meta))
+
     def shape(self, meta: Meta, c: list[Any]) -> ast.Shape:
         return ast.Shape(self.b.ident(c[0]), c[1] or (), self.b.span(meta))
 

@@ -143,9 +143,12 @@ def _escape(item: ast.FrameEscape) -> str:
 # ---- the body -------------------------------------------------------------------------
 
 
-def _link_item(item: ast.ShapeUse | ast.BodyValue) -> str:
+def _link_item(item: ast.ShapeUse | ast.BodyValue | ast.LinkSpawn) -> str:
     if isinstance(item, ast.BodyValue):
         return f"{item.key} {print_expr(item.value)}"
+    if isinstance(item, ast.LinkSpawn):
+        return f"spawn {item.kind.text}" + "".join(f" {word} {print_expr(e)}" for word, e in
+                                                   (("at", item.at), ("rpy", item.rpy)) if e is not None)
     shape = f"{item.role} {item.shape.kind.text}({_args(item.shape.args)})"
     return shape + "".join(f" {word} {print_expr(e)}" for word, e in
                            (("at", item.at), ("rpy", item.rpy), ("color", item.color)) if e is not None)

@@ -105,6 +105,7 @@ class Checker(Declarations, Primitives, Interfaces, Sensors):
         joints = {j.name: j for j in (body.joint(decl) for decl in self.s.joints.values()) if j is not None}
         joints = body.tree(links, joints)
         body.portable_names()
+        body.spawned(links, joints)
         body.mimics(joints)
         body.carried_masses(links, joints)
         transmissions = {name: body.transmission(decl, joints, primitives, interface_params, states)
