@@ -58,10 +58,11 @@ def to_mjcf(model: m.Model, mesh_folder: str | None = None) -> str:
     actuators = [(t, b) for t in model.transmissions.values() for b in t.commands]
     if actuators:
         act = ET.SubElement(root, "actuator")
-        inertia = joint_inertia(model)
+        inertia = joint_inertia(model.links, model.joints)
         for transmission, binding in actuators:
             joint = model.joints[transmission.joint]
-            _actuator(act, joint, transmission, binding, inertia.get(joint.name, 0.0))
+            motor = model.actuators.get(transmission.actuator) if transmission.actuator else None
+            _actuator(act, joint, transmission, binding, inertia.get(joint.name, 0.0), motor)
     ET.indent(root)
     return ET.tostring(root, encoding="unicode") + "\n"
 
@@ -162,14 +163,20 @@ def _place(element: ET.Element, pose: m.Pose) -> None:
 
 
 def _actuator(parent: ET.Element, joint: m.Joint, transmission: m.Transmission, binding: m.Binding,
-              inertia: float) -> None:
-    """A position servo's gain comes from its effort and the inertia it moves (rdisc.semantics.reflected)."""
+              inertia: float, motor: m.Actuator | None) -> None:
+    """A position servo's gain is its actuator's, else derived from its effort and the inertia it
+    moves (rdisc.semantics.reflected); an actuator's effort is the force's range."""
     name = actuator_name(transmission, binding)
-    effort = joint.effort
+    effort = motor.effort if motor is not None and motor.effort is not None else joint.effort
     match binding.quantity:
         case m.Quantity.POSITION:
-            kp = position_gain(effort, inertia, TIMESTEP)
-            element = ET.SubElement(parent, "position", name=name, joint=joint.name, kp=_num(kp), dampratio="1")
+            stated = motor.gain if motor is not None else None
+            kp = stated if stated is not None else position_gain(effort, inertia, TIMESTEP)
+            element = ET.SubElement(parent, "position", name=name, joint=joint.name, kp=_num(kp))
+            if motor is not None and motor.damping is not None:
+                element.set("kv", _num(motor.damping))
+            else:
+                element.set("dampratio", "1")
             if joint.lower is not None and joint.upper is not None:
                 element.set("ctrlrange", f"{_num(joint.lower)} {_num(joint.upper)}")
         case m.Quantity.VELOCITY:

@@ -3,7 +3,8 @@ the description's transmissions, read by `check_urdf`, urchin and every urdfdom-
 
 URDF has no place for how a device is driven, so each transmission says it in a comment (the
 commanded target and both conversions); its `hardwareInterface` follows the commanded
-quantity, its actuator is named after the commanded target, and where that conversion is a
+quantity, its actuator is the one it names (`actuator NAME`, one transmission each), else
+named after the commanded target, and where that conversion is a
 gear ratio (`raw = round(position * 651.9) + 2048`: rdisc.semantics.linear) its
 `mechanicalReduction` and the joint's `offset` say it, as ros_control's SimpleTransmission reads
 them; otherwise the reduction is 1 and the comment is the whole story.
@@ -126,5 +127,5 @@ def _transmission(robot: ET.Element, transmission: m.Transmission) -> None:
     gear = ratio(driver)
     if gear is not None and gear.offset:
         child(joint, "offset", number(gear.offset))
-    actuator = child(element, "actuator", name=driver.place())
+    actuator = child(element, "actuator", name=transmission.actuator or driver.place())
     child(actuator, "mechanicalReduction", "1" if gear is None else number(gear.reduction))

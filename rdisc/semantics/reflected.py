@@ -48,11 +48,12 @@ def _apply(a: Matrix, v: m.Vector) -> m.Vector:
             sum(a[2][k] * v[k] for k in range(3)))
 
 
-def _frames(model: m.Model) -> dict[str, tuple[Matrix, m.Vector]]:
+def _frames(links: dict[str, m.Link], joints: dict[str, m.Joint]) -> dict[str, tuple[Matrix, m.Vector]]:
     """Each link's rotation and origin in the root link's frame, every joint at zero (joints come parents first)."""
-    root = model.root_link()
-    frames: dict[str, tuple[Matrix, m.Vector]] = {} if root is None else {root.name: (_IDENTITY, (0.0, 0.0, 0.0))}
-    for joint in model.joints.values():
+    children = {j.child for j in joints.values()}
+    root = next((name for name in links if name not in children), None)
+    frames: dict[str, tuple[Matrix, m.Vector]] = {} if root is None else {root: (_IDENTITY, (0.0, 0.0, 0.0))}
+    for joint in joints.values():
         if joint.parent not in frames:
             continue
         rotation, origin = frames[joint.parent]
@@ -62,23 +63,23 @@ def _frames(model: m.Model) -> dict[str, tuple[Matrix, m.Vector]]:
     return frames
 
 
-def joint_inertia(model: m.Model) -> dict[str, float]:
+def joint_inertia(links: dict[str, m.Link], joints: dict[str, m.Joint]) -> dict[str, float]:
     """Each moving joint's reflected inertia (kg m², or kg for a prismatic joint): of every link it
     carries, about (along) its axis at the zero pose. Links without an inertial count nothing."""
-    frames = _frames(model)
+    frames = _frames(links, joints)
     carried: dict[str, list[str]] = {}
-    for joint in reversed(list(model.joints.values())):  # children before parents
-        carried[joint.name] = [joint.child] + [link for j in model.joints.values()
+    for joint in reversed(list(joints.values())):  # children before parents
+        carried[joint.name] = [joint.child] + [link for j in joints.values()
                                                if j.parent == joint.child for link in carried.get(j.name, ())]
     found: dict[str, float] = {}
-    for joint in model.joints.values():
+    for joint in joints.values():
         if not joint.moves() or joint.child not in frames:
             continue
         rotation, at = frames[joint.child]
         axis = _apply(rotation, joint.axis)
         total = 0.0
         for name in carried[joint.name]:
-            inertial = model.links[name].inertial
+            inertial = links[name].inertial
             if inertial is None or name not in frames:
                 continue
             if joint.kind is m.JointKind.PRISMATIC:

@@ -45,7 +45,7 @@ def test_the_inertia_a_joint_moves_is_mujocos() -> None:
     model = compile_path(str(EXAMPLE_ARM)).model
     assert model is not None
     physics = Simulation(model).physics
-    found = joint_inertia(model)
+    found = joint_inertia(model.links, model.joints)
     for joint in model.joints.values():
         want = float(physics.dof_M0[physics.joint(joint.name).dofadr[0]])
         assert found[joint.name] == pytest.approx(want, rel=0.01, abs=1e-6)
@@ -55,7 +55,7 @@ def test_a_5_g_horn_holds_its_commanded_angle(tmp_path: Path) -> None:
     """Through the arm's JointState input, in the runtime: the horn goes to 0.5 rad and stays."""
     text = _horn_arm()
     model = _model(text)
-    horn = joint_inertia(model)["gripper"]
+    horn = joint_inertia(model.links, model.joints)["gripper"]
     stall = 4.1 / 0.05  # the gain the servo's stall torque alone would give
     assert steps_per_period(stall, horn, TIMESTEP) > STABLE_STEP  # that gain could not be integrated
     sim = Simulation(model)
