@@ -102,9 +102,10 @@ def test_mjcf_takes_a_stated_gain_and_damping_and_derives_the_others() -> None:
 
 
 def test_two_transmissions_on_one_parameter_name_two_urdf_actuators() -> None:
-    """Before actuators both were named after the parameter they command, `servo.goal`."""
+    """Before, both were named after the parameter they command, `servo.goal`; without actuators
+    each is named after its transmission."""
     robot = ET.fromstring(to_urdf(_model(), "lift.rdis"))
     assert [a.get("name") for a in robot.iter("actuator")] == ["lift_motor", "tilt_motor"]
     plain = _model(BODY.replace(" actuator lift_motor", "").replace(" actuator tilt_motor", ""))
     robot = ET.fromstring(to_urdf(plain, "lift.rdis"))
-    assert [a.get("name") for a in robot.iter("actuator")] == ["servo.goal", "servo.goal"]
+    assert [a.get("name") for a in robot.iter("actuator")] == ["lifter_actuator", "tilter_actuator"]
