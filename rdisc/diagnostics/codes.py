@@ -634,6 +634,17 @@ takes a link's name. SDF also keeps `world` for itself (and `__...__`, which no
 RDIS name can be), so neither a link nor a joint is named `world`. Wrong: `link shoulder { ... }`
 beside `joint shoulder: revolute shoulder -> upper_arm { ... }`. Right: `link
 turret { ... }` and `joint shoulder: revolute turret -> upper_arm { ... }`."""),
+    ("E620", "actuator", """
+An actuator is what drives a joint between the device's command and the joint
+(thesis section 7.2.6): `actuator NAME: servo { ... }` a position servo, `actuator
+NAME: wheel { ... }` a velocity-controlled motor. Its items, each at most once and
+each a constant number more than 0: `velocity` (rad/s or m/s) and `acceleration`
+(rad/s² or m/s²), the limits its commands are shaped to, `effort` (N m or N), and
+for a servo its simulated `gain` (N m/rad) and `damping` (N m s/rad). A
+transmission names it, `transmission T: JOINT actuator NAME { ... }`; one actuator
+drives one joint, and a servo is commanded a `position`, a wheel a `velocity`.
+Wrong: `actuator m: wheel { gain 5 }`, or one actuator named by two transmissions.
+Right: `actuator m: servo { velocity 4.8  effort 4.1 }`."""),
     ("E731", "noise", """
 An output's `noise FIELD ...` states a field's error model (thesis section 7.2.3):
 a standard deviation and its unit (`noise distance 0.01 "m"`, the variance its
@@ -703,6 +714,14 @@ The traffic this connection schedules (periodic interfaces every tick, keepalive
 every interval; 10 bits a byte at 8N1, 12 at 8E2: a start bit and the connection's
 serial line) needs more bytes per second than the baud
 rate carries. `rdisc check --verbose` prints each connection's budget."""),
+    ("W621", "unstable-gain", """
+A servo's stated `gain` is more than the simulation can integrate for the inertia
+its joint carries. A position servo of gain kp on an inertia I rings at
+sqrt(kp / I) rad/s; stepped every 2 ms with its damping taken implicitly, as the
+MuJoCo twin steps it, it diverges once that is more than 2 + 2 sqrt(2) rad a step:
+the link chatters and reads nonsense. A 5 g servo horn (2e-6 kg m²) follows a gain
+of at most 12 N m/rad. Wrong: `gain 82` on that horn. Right: leave `gain` out, and
+the simulation derives one from the actuator's effort and the link's inertia."""),
     ("W402", "period-too-short", """
 A schedule's period is shorter than the exchange it runs: the bytes on the wire
 plus the declared delays of the periodic interfaces (per tick) or of the

@@ -57,7 +57,7 @@ KINDS: dict[type, str] = {
     ast.PrimitiveDecl: "primitive", ast.InterfaceDecl: "interface", ast.AdapterDecl: "adapter",
     ast.InputDecl: "input", ast.OutputDecl: "output", ast.ConstDecl: "constant", ast.EnumDecl: "enum",
     ast.FrameDecl: "frame", ast.LinkDecl: "link", ast.JointDecl: "joint", ast.TransmissionDecl: "transmission",
-    ast.RobotDecl: "robot", ast.SensorDecl: "sensor",
+    ast.RobotDecl: "robot", ast.SensorDecl: "sensor", ast.ActuatorDecl: "actuator",
 }
 READ = ("state variable", "setting", "constant", "sensor")
 """The declarations an expression reads by name, after its own names, in this order."""
@@ -223,6 +223,8 @@ class _Uses:
                         self.walk(item, scope)
             case ast.TransmissionDecl():
                 self.use(decl.joint, ("joint",))
+                if decl.actuator is not None:
+                    self.use(decl.actuator, ("actuator",))
                 for binding in decl.bindings:
                     if binding.role == "command":
                         target = self.use(binding.target, ("primitive", "interface"))

@@ -134,7 +134,7 @@ def _check_new_name(analysis: Analysis, symbol: Symbol, new_name: str) -> None:
     if not _NAME.fullmatch(new_name):
         raise Refused(f"`{new_name}` is not a name: a name is a letter, then letters, digits and `_`")
     said = Diagnostics()
-    read = symbol.kind not in ("link", "joint", "transmission")  # as the resolver names them
+    read = symbol.kind not in ("link", "joint", "transmission", "actuator")  # as the resolver names them
     check_name(ast.Ident(new_name), symbol.kind, said, read=read)
     if said.items:
         raise Refused(said.items[0].message)

@@ -23,6 +23,7 @@ _SYMBOL_KINDS = {
     "link": types.SymbolKind.Object, "joint": types.SymbolKind.Object, "transmission": types.SymbolKind.Object,
     "parameter": types.SymbolKind.TypeParameter, "field": types.SymbolKind.Field,
     "enum member": types.SymbolKind.EnumMember, "sensor": types.SymbolKind.Variable,
+    "actuator": types.SymbolKind.Object,
 }
 
 # Semantic token types and modifiers, in the legend's order (their index is what is sent).
@@ -35,7 +36,7 @@ _TOKEN_OF_KIND = {
     "constant": "variable", "loop variable": "variable", "parameter": "parameter", "field": "property",
     "enum": "enum", "enum member": "enumMember", "adapter": "struct", "frame": "type", "connection": "namespace",
     "input": "event", "output": "event", "link": "class", "joint": "class", "transmission": "class", "robot": "namespace",
-    "sensor": "variable",
+    "sensor": "variable", "actuator": "class",
 }
 _READONLY = {"setting", "constant", "enum member"}
 

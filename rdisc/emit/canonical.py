@@ -66,6 +66,7 @@ def _document(model: m.Model) -> JsonObject:
         ("links", [_link(link) for link in model.links.values()] or None),
         ("joints", [_joint(j) for j in model.joints.values()] or None),
         ("transmissions", [_transmission(t) for t in model.transmissions.values()] or None),
+        ("actuators", [_actuator(a) for a in model.actuators.values()] or None),
     )
 
 
@@ -471,7 +472,21 @@ def _transmission(t: m.Transmission) -> JsonObject:
         ("joint", t.joint),
         ("commands", [_binding(b) for b in t.commands] or None),
         ("measures", [_binding(b) for b in t.measures] or None),
+        ("actuator", t.actuator),
         ("doc", t.doc),
+    )
+
+
+def _actuator(a: m.Actuator) -> JsonObject:
+    return _object(
+        ("name", a.name),
+        ("kind", a.kind.value),
+        ("velocity", a.velocity),
+        ("acceleration", a.acceleration),
+        ("effort", a.effort),
+        ("gain", a.gain),
+        ("damping", a.damping),
+        ("doc", a.doc),
     )
 
 

@@ -8,7 +8,8 @@ the body rolls (a continuous joint turns a link with a round collision shape: a 
 else it is welded to the world (an arm); a `spawn` places it. Each
 transmission's command becomes an actuator of its joint: a position command a servo
 (`<position>`), a velocity command a `<velocity>` actuator, an effort a `<motor>`, with
-the joint's limits as the control's range and its effort as the force's. A ball fixed
+the joint's limits as the control's range and its effort as the force's; a servo's gain is
+no stiffer than the links it carries can follow within a timestep. A ball fixed
 to its parent (a sphere collision on a fixed joint) is a caster: it slides, so it gets
 almost no friction. `rdisc sim` runs the same model.
 """
@@ -20,10 +21,10 @@ import xml.etree.ElementTree as ET
 
 from rdisc.emit.body_xml import BodyError
 from rdisc.semantics import model as m
+from rdisc.semantics.reflected import joint_inertia, position_gain
 
 TIMESTEP = 0.002  # s: MuJoCo's default, fixed so that a simulation repeats exactly
 CASTER_FRICTION = "0.01 0.005 0.0001"  # sliding, torsional, rolling: a ball caster's
-POSITION_ERROR = 0.05  # rad (m): a position actuator gives the joint's whole effort this far from its target
 MAX_DEPTH = 256  # joints from the root: Python's XML writer recurses a level a body, and so does MuJoCo's parser
 VELOCITY_ERROR = 0.01  # a velocity actuator gives the whole effort this fraction of the speed limit away
 
@@ -66,8 +67,11 @@ def to_mjcf(model: m.Model, mesh_folder: str | None = None) -> str:
     actuators = [(t, b) for t in model.transmissions.values() for b in t.commands]
     if actuators:
         act = ET.SubElement(root, "actuator")
+        inertia = joint_inertia(model.links, model.joints)
         for transmission, binding in actuators:
-            _actuator(act, model.joints[transmission.joint], transmission, binding)
+            joint = model.joints[transmission.joint]
+            motor = model.actuators.get(transmission.actuator) if transmission.actuator else None
+            _actuator(act, joint, transmission, binding, inertia.get(joint.name, 0.0), motor)
     ET.indent(root)
     return ET.tostring(root, encoding="unicode") + "\n"
 
@@ -172,13 +176,21 @@ def _place(element: ET.Element, pose: m.Pose) -> None:
         element.set("quat", _vec(quaternion(pose.rpy)))
 
 
-def _actuator(parent: ET.Element, joint: m.Joint, transmission: m.Transmission, binding: m.Binding) -> None:
+def _actuator(parent: ET.Element, joint: m.Joint, transmission: m.Transmission, binding: m.Binding,
+              inertia: float, motor: m.Actuator | None) -> None:
+    """A position servo's gain is its actuator's, else derived from its effort and the inertia it
+    moves (rdisc.semantics.reflected); an actuator's effort is the force's range."""
     name = actuator_name(transmission, binding)
-    effort = joint.effort
+    effort = motor.effort if motor is not None and motor.effort is not None else joint.effort
     match binding.quantity:
         case m.Quantity.POSITION:
-            kp = effort / POSITION_ERROR if effort else 10.0
-            element = ET.SubElement(parent, "position", name=name, joint=joint.name, kp=_num(kp), dampratio="1")
+            stated = motor.gain if motor is not None else None
+            kp = stated if stated is not None else position_gain(effort, inertia, TIMESTEP)
+            element = ET.SubElement(parent, "position", name=name, joint=joint.name, kp=_num(kp))
+            if motor is not None and motor.damping is not None:
+                element.set("kv", _num(motor.damping))
+            else:
+                element.set("dampratio", "1")
             if joint.lower is not None and joint.upper is not None:
                 element.set("ctrlrange", f"{_num(joint.lower)} {_num(joint.upper)}")
         case m.Quantity.VELOCITY:

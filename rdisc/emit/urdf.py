@@ -3,7 +3,9 @@ the description's transmissions, read by `check_urdf`, urchin and every urdfdom-
 
 URDF has no place for how a device is driven, so each transmission says it in a comment (the
 commanded target and both conversions); its `hardwareInterface` follows the commanded
-quantity, its actuator is named after the commanded target, and where that conversion is a
+quantity, its actuator is the one it names (`actuator NAME`, one transmission each), else
+named after the commanded target (after the transmission, `T_actuator`, when two
+command one), and where that conversion is a
 gear ratio (`raw = round(position * 651.9) + 2048`: rdisc.semantics.linear) its
 `mechanicalReduction` and the joint's `offset` say it, as ros_control's SimpleTransmission reads
 them; otherwise the reduction is 1 and the comment is the whole story.
@@ -48,8 +50,9 @@ def to_urdf(model: m.Model, source: str, *, ros2_control_hardware: str | None = 
     for joint in model.joints.values():
         _joint(robot, joint)
     _world(robot, model)
+    drivers = [(t.commands or t.measures)[0].place() for t in model.transmissions.values() if t.actuator is None]
     for transmission in model.transmissions.values():
-        _transmission(robot, transmission)
+        _transmission(robot, transmission, drivers)
     if ros2_control_hardware is not None:
         ros2_control(robot, model, ros2_control_hardware)
     return document(robot)
@@ -129,7 +132,9 @@ def _joint(robot: ET.Element, joint: m.Joint) -> None:
               offset=number(joint.mimic.offset))
 
 
-def _transmission(robot: ET.Element, transmission: m.Transmission) -> None:
+def _transmission(robot: ET.Element, transmission: m.Transmission, drivers: list[str]) -> None:
+    """`drivers`: the commanded targets of the transmissions naming no actuator, which name theirs
+    (one that two share is named after each transmission instead: URDF's actuators are one each)."""
     comment(robot, transmission.doc)
     element = child(robot, "transmission", name=transmission.name)
     for binding in transmission.commands:
@@ -145,5 +150,8 @@ def _transmission(robot: ET.Element, transmission: m.Transmission) -> None:
     gear = ratio(driver)
     if gear is not None and gear.offset:
         child(joint, "offset", number(gear.offset))
-    actuator = child(element, "actuator", name=driver.place())
+    name = transmission.actuator or driver.place()
+    if transmission.actuator is None and drivers.count(name) > 1:
+        name = f"{transmission.name}_actuator"
+    actuator = child(element, "actuator", name=name)
     child(actuator, "mechanicalReduction", "1" if gear is None else number(gear.reduction))

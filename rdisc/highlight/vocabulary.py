@@ -8,7 +8,7 @@ Written by `python -m rdisc.highlight.writer`: do not edit; rerun it after chang
 # fmt: off
 # The grammar's keywords by kind, and the other words a description reads.
 WORDS: dict[str, tuple[str, ...]] = {
-    'declaration': ('import', 'robot', 'state', 'sensor', 'setting', 'connection', 'primitive', 'interface', 'adapter', 'input', 'output', 'const', 'enum', 'frame', 'link', 'joint', 'transmission'),
+    'declaration': ('import', 'robot', 'state', 'sensor', 'setting', 'connection', 'primitive', 'interface', 'adapter', 'input', 'output', 'const', 'enum', 'frame', 'link', 'joint', 'transmission', 'actuator'),
     'constant': ('True', 'False'),
     'operator': ('or', 'and', 'in', 'not'),
     'control': ('for', 'if', 'else'),

@@ -15,7 +15,8 @@ _INERTIAL = ("mass", "centre", "inertia")
 _JOINT = ("name", "type", "parent", "child", "xyz", "rpy", "axis", "limit", "velocity", "effort", "damping",
           "friction", "mimic", "doc")
 _MIMIC = ("joint", "multiplier", "offset")
-_TRANSMISSION = ("name", "joint", "commands", "measures", "doc")
+_TRANSMISSION = ("name", "joint", "commands", "measures", "actuator", "doc")
+_ACTUATOR = ("name", "kind", "velocity", "acceleration", "effort", "gain", "damping", "doc")
 _COMMAND = ("quantity", "primitive", "interface", "parameter", "index", "toDevice", "toJoint")
 _MEASURE = ("quantity", "state", "index", "toDevice", "toJoint")
 
@@ -105,9 +106,20 @@ class Body(Expressions):
         for role, key in (("command", "commands"), ("measure", "measures")):
             objects = [self.object(item, f"a {role}") for item in self.array(m.get(key), f"`{key}`")]
             bindings += [None if o is None else self.binding(o, role) for o in objects]
-        if name is None or joint is None:
+        actuator = self.ident(m["actuator"], "`actuator`") if "actuator" in m else None
+        if name is None or joint is None or ("actuator" in m and actuator is None):
             return None
-        return ast.TransmissionDecl(name, joint, present(bindings), obj.span, self.doc(m))
+        return ast.TransmissionDecl(name, joint, present(bindings), obj.span, self.doc(m), actuator)
+
+    def actuator(self, obj: JObject) -> ast.ActuatorDecl | None:
+        """`{"name": "horn", "kind": "servo", "velocity": 4.8, ...}`: the clauses of `actuator horn: servo { }`."""
+        m = self.members(obj, "an actuator", _ACTUATOR)
+        name = self.name(obj, m, "an actuator")
+        kind = self.required(obj, m, "kind", "an actuator", self.ident)
+        items = [self.body_value(m, key, key) for key in _ACTUATOR[2:-1]]
+        if name is None or kind is None:
+            return None
+        return ast.ActuatorDecl(name, kind, present(items), obj.span, self.doc(m))
 
     def binding(self, obj: JObject, role: str) -> ast.Binding | None:
         """A command names its `primitive` or its `interface` and the `parameter`; a measure its `state`.

@@ -35,7 +35,7 @@ _TOP = (
     "name", "author", "description", "version", "doc", "constants", "enums", "tables", "constantDocs", "enumDocs",
     "settings",
     "stateVariables", "sensors", "connections", "frames", "primitives", "interfaces", "domainAdapters", "domainInterfaces", "domainOutputs",
-    "links", "joints", "transmissions",
+    "links", "joints", "transmissions", "actuators",
 )  # fmt: skip
 _SECTIONS = {  # list member: (its elements in words, the RDIS keyword declaring one)
     "settings": ("a setting", "setting"),
@@ -52,6 +52,7 @@ _SECTIONS = {  # list member: (its elements in words, the RDIS keyword declaring
     "links": ("a link", "link"),
     "joints": ("a joint", "joint"),
     "transmissions": ("a transmission", "transmission"),
+    "actuators": ("an actuator", "actuator"),
 }
 _STATE = ("name", "type", "value", "doc")
 _SENSOR = ("name", "type", "primitive", "cache", "doc")
@@ -89,6 +90,7 @@ class Importer(Primitives, Interfaces, Body):
         links = self.each(top, "links", self.link)
         joints = self.each(top, "joints", self.joint)
         transmissions = self.each(top, "transmissions", self.transmission)
+        actuators = self.each(top, "actuators", self.actuator)
         decls: list[ast.Decl] = [] if robot is None else [robot]
         decls += [
             *constants,
@@ -107,6 +109,7 @@ class Importer(Primitives, Interfaces, Body):
             *links,
             *joints,
             *transmissions,
+            *actuators,
         ]
         return ast.Module(self.path, tuple(decls), tuple(self.damaged))
 

@@ -514,7 +514,9 @@ class BodyRules:
             checked = self.binding(binding, joint, primitives, interfaces, states)
             if checked is not None:
                 (commands if binding.role == "command" else measures).append(checked)
-        return m.Transmission(decl.name.text, joint.name, tuple(commands), tuple(measures), decl.doc, decl.span)
+        actuator = decl.actuator.text if decl.actuator is not None and decl.actuator.text in self.s.actuators else None
+        return m.Transmission(decl.name.text, joint.name, tuple(commands), tuple(measures), decl.doc, decl.span,
+                              actuator)
 
     def binding(self, b: ast.Binding, joint: m.Joint, primitives: dict[str, m.Primitive],
                 interfaces: dict[str, tuple[m.Parameter, ...]],

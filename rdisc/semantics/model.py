@@ -1167,6 +1167,29 @@ class Transmission:
     measures: tuple[Binding, ...] = ()
     doc: str | None = None
     span: Span | None = _span
+    actuator: str | None = None  # the actuator between its command and the joint
+
+
+class ActuatorKind(enum.Enum):
+    SERVO = "servo"  # a position servo: the command is a position it moves to
+    WHEEL = "wheel"  # a velocity-controlled motor: the command is a speed it holds
+
+
+@dataclass(frozen=True, slots=True)
+class Actuator:
+    """What drives a joint (thesis §7.2.6): its limits, which shape the commands a joint is given
+    (a position moves at most `velocity`, a speed changes by at most `acceleration` a second), and
+    the gains the simulation gives it (`gain` N m/rad, `damping` N m s/rad; None: derived)."""
+
+    name: str
+    kind: ActuatorKind
+    velocity: float | None = None  # rad/s (m/s)
+    acceleration: float | None = None  # rad/s² (m/s²)
+    effort: float | None = None  # N m (N)
+    gain: float | None = None
+    damping: float | None = None
+    doc: str | None = None
+    span: Span | None = _span
 
 
 @dataclass(frozen=True, slots=True)
@@ -1191,6 +1214,7 @@ class Model:
     joints: dict[str, Joint] = field(default_factory=dict)  # parents before children
     transmissions: dict[str, Transmission] = field(default_factory=dict)
     sensors: dict[str, Sensor] = field(default_factory=dict)
+    actuators: dict[str, Actuator] = field(default_factory=dict)
 
     def root_link(self) -> Link | None:
         """The link no joint moves: the checker allows exactly one when there are links."""

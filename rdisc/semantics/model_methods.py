@@ -2511,6 +2511,7 @@ def _init_Transmission(
     measures: Any = DEFAULT,
     doc: Any = DEFAULT,
     span: Any = DEFAULT,
+    actuator: Any = DEFAULT,
 ) -> None:
     _set(self, "name", name)
     _set(self, "joint", joint)
@@ -2518,10 +2519,11 @@ def _init_Transmission(
     _set(self, "measures", measures)
     _set(self, "doc", doc)
     _set(self, "span", span)
+    _set(self, "actuator", actuator)
 
 
 def _repr_Transmission(self: Any) -> str:
-    return f"{self.__class__.__qualname__}(name={self.name!r}, joint={self.joint!r}, commands={self.commands!r}, measures={self.measures!r}, doc={self.doc!r})"
+    return f"{self.__class__.__qualname__}(name={self.name!r}, joint={self.joint!r}, commands={self.commands!r}, measures={self.measures!r}, doc={self.doc!r}, actuator={self.actuator!r})"
 
 
 def _eq_Transmission(self: Any, other: Any) -> Any:
@@ -2532,18 +2534,84 @@ def _eq_Transmission(self: Any, other: Any) -> Any:
             self.commands,
             self.measures,
             self.doc,
+            self.actuator,
         ) == (
             other.name,
             other.joint,
             other.commands,
             other.measures,
             other.doc,
+            other.actuator,
         )
     return NotImplemented
 
 
 def _hash_Transmission(self: Any) -> int:
-    return hash((self.name, self.joint, self.commands, self.measures, self.doc))
+    return hash((self.name, self.joint, self.commands, self.measures, self.doc, self.actuator))
+
+
+def _init_Actuator(
+    self: Any,
+    name: Any,
+    kind: Any,
+    velocity: Any = DEFAULT,
+    acceleration: Any = DEFAULT,
+    effort: Any = DEFAULT,
+    gain: Any = DEFAULT,
+    damping: Any = DEFAULT,
+    doc: Any = DEFAULT,
+    span: Any = DEFAULT,
+) -> None:
+    _set(self, "name", name)
+    _set(self, "kind", kind)
+    _set(self, "velocity", velocity)
+    _set(self, "acceleration", acceleration)
+    _set(self, "effort", effort)
+    _set(self, "gain", gain)
+    _set(self, "damping", damping)
+    _set(self, "doc", doc)
+    _set(self, "span", span)
+
+
+def _repr_Actuator(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(name={self.name!r}, kind={self.kind!r}, velocity={self.velocity!r}, acceleration={self.acceleration!r}, effort={self.effort!r}, gain={self.gain!r}, damping={self.damping!r}, doc={self.doc!r})"
+
+
+def _eq_Actuator(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.name,
+            self.kind,
+            self.velocity,
+            self.acceleration,
+            self.effort,
+            self.gain,
+            self.damping,
+            self.doc,
+        ) == (
+            other.name,
+            other.kind,
+            other.velocity,
+            other.acceleration,
+            other.effort,
+            other.gain,
+            other.damping,
+            other.doc,
+        )
+    return NotImplemented
+
+
+def _hash_Actuator(self: Any) -> int:
+    return hash((
+        self.name,
+        self.kind,
+        self.velocity,
+        self.acceleration,
+        self.effort,
+        self.gain,
+        self.damping,
+        self.doc,
+    ))
 
 
 def _init_Model(
@@ -2567,6 +2635,7 @@ def _init_Model(
     joints: Any = DEFAULT,
     transmissions: Any = DEFAULT,
     sensors: Any = DEFAULT,
+    actuators: Any = DEFAULT,
 ) -> None:
     _set(self, "robot", robot)
     _set(self, "states", states)
@@ -2587,10 +2656,11 @@ def _init_Model(
     _set(self, "joints", {} if joints is FACTORY else joints)
     _set(self, "transmissions", {} if transmissions is FACTORY else transmissions)
     _set(self, "sensors", {} if sensors is FACTORY else sensors)
+    _set(self, "actuators", {} if actuators is FACTORY else actuators)
 
 
 def _repr_Model(self: Any) -> str:
-    return f"{self.__class__.__qualname__}(robot={self.robot!r}, states={self.states!r}, connections={self.connections!r}, primitives={self.primitives!r}, interfaces={self.interfaces!r}, adapters={self.adapters!r}, inputs={self.inputs!r}, outputs={self.outputs!r}, frames={self.frames!r}, constants={self.constants!r}, enums={self.enums!r}, tables={self.tables!r}, constant_docs={self.constant_docs!r}, enum_docs={self.enum_docs!r}, settings={self.settings!r}, links={self.links!r}, joints={self.joints!r}, transmissions={self.transmissions!r}, sensors={self.sensors!r})"
+    return f"{self.__class__.__qualname__}(robot={self.robot!r}, states={self.states!r}, connections={self.connections!r}, primitives={self.primitives!r}, interfaces={self.interfaces!r}, adapters={self.adapters!r}, inputs={self.inputs!r}, outputs={self.outputs!r}, frames={self.frames!r}, constants={self.constants!r}, enums={self.enums!r}, tables={self.tables!r}, constant_docs={self.constant_docs!r}, enum_docs={self.enum_docs!r}, settings={self.settings!r}, links={self.links!r}, joints={self.joints!r}, transmissions={self.transmissions!r}, sensors={self.sensors!r}, actuators={self.actuators!r})"
 
 
 def _eq_Model(self: Any, other: Any) -> Any:
@@ -2615,6 +2685,7 @@ def _eq_Model(self: Any, other: Any) -> Any:
             self.joints,
             self.transmissions,
             self.sensors,
+            self.actuators,
         ) == (
             other.robot,
             other.states,
@@ -2635,6 +2706,7 @@ def _eq_Model(self: Any, other: Any) -> Any:
             other.joints,
             other.transmissions,
             other.sensors,
+            other.actuators,
         )
     return NotImplemented
 
@@ -2660,6 +2732,7 @@ def _hash_Model(self: Any) -> int:
         self.joints,
         self.transmissions,
         self.sensors,
+        self.actuators,
     ))
 
 
@@ -3483,12 +3556,32 @@ WRITTEN: dict[str, Written] = {
             ("measures", DEFAULT),
             ("doc", DEFAULT),
             ("span", FieldSpec(None, MISSING, False, False)),
+            ("actuator", DEFAULT),
         ),
         {
             "__init__": _init_Transmission,
             "__repr__": _repr_Transmission,
             "__eq__": _eq_Transmission,
             "__hash__": _hash_Transmission,
+        },
+    ),
+    "Actuator": Written(
+        (
+            ("name", MISSING),
+            ("kind", MISSING),
+            ("velocity", DEFAULT),
+            ("acceleration", DEFAULT),
+            ("effort", DEFAULT),
+            ("gain", DEFAULT),
+            ("damping", DEFAULT),
+            ("doc", DEFAULT),
+            ("span", FieldSpec(None, MISSING, False, False)),
+        ),
+        {
+            "__init__": _init_Actuator,
+            "__repr__": _repr_Actuator,
+            "__eq__": _eq_Actuator,
+            "__hash__": _hash_Actuator,
         },
     ),
     "Model": Written(
@@ -3512,6 +3605,7 @@ WRITTEN: dict[str, Written] = {
             ("joints", FieldSpec(MISSING, dict, True, True)),
             ("transmissions", FieldSpec(MISSING, dict, True, True)),
             ("sensors", FieldSpec(MISSING, dict, True, True)),
+            ("actuators", FieldSpec(MISSING, dict, True, True)),
         ),
         {"__init__": _init_Model, "__repr__": _repr_Model, "__eq__": _eq_Model, "__hash__": _hash_Model},
     ),

@@ -40,7 +40,7 @@ class Symbols:
     `rdisc check` need not import `dataclasses`."""
 
     __slots__ = (
-        "adapters", "connections", "constants", "damaged", "enums", "frames", "inputs", "interfaces", "joints",
+        "actuators", "adapters", "connections", "constants", "damaged", "enums", "frames", "inputs", "interfaces", "joints",
         "links", "outputs", "primitives", "robot", "sensors", "settings", "standard", "states", "suggested", "transmissions",
     )
 
@@ -61,6 +61,7 @@ class Symbols:
         self.links: dict[str, ast.LinkDecl] = {}
         self.joints: dict[str, ast.JointDecl] = {}
         self.transmissions: dict[str, ast.TransmissionDecl] = {}
+        self.actuators: dict[str, ast.ActuatorDecl] = {}
         self.standard: set[int] = set()  # id() of declarations from the stdlib
         self.damaged: set[tuple[str, str]] = set()  # (keyword, name) lost to syntax errors
         # (kind, name) offered as "did you mean" for an unknown reference: probably used,
@@ -87,9 +88,10 @@ _KINDS = {
     ast.LinkDecl: ("links", "link"),
     ast.JointDecl: ("joints", "joint"),
     ast.TransmissionDecl: ("transmissions", "transmission"),
+    ast.ActuatorDecl: ("actuators", "actuator"),
 }
 
-_BODY = (ast.LinkDecl, ast.JointDecl, ast.TransmissionDecl)
+_BODY = (ast.LinkDecl, ast.JointDecl, ast.TransmissionDecl, ast.ActuatorDecl)
 """Elements no expression reads, so a function's name is theirs to take (`link upper`)."""
 
 
@@ -235,6 +237,8 @@ def _bind(decl: ast.Decl, symbols: Symbols, callables: Mapping[str, object], dia
                     need(item.joint, symbols.joints, "joint")
         case ast.TransmissionDecl():
             need(decl.joint, symbols.joints, "joint")
+            if decl.actuator is not None:
+                need(decl.actuator, symbols.actuators, "actuator")
             for binding in decl.bindings:
                 if binding.role == "command":
                     need(binding.target, callables, "primitive or interface")

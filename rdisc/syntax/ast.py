@@ -944,11 +944,24 @@ class TransmissionDecl:
     bindings: tuple[Binding, ...]
     span: Span = _span
     doc: str | None = None
+    actuator: Ident | None = None  # `transmission NAME: JOINT actuator ACTUATOR { ... }`
+
+
+@dataclass(frozen=True, slots=True)
+class ActuatorDecl:
+    """`actuator NAME: KIND { velocity ...  acceleration ...  effort ...  gain ...  damping ... }`."""
+
+    name: Ident
+    kind: Ident
+    items: tuple[BodyValue, ...]
+    span: Span = _span
+    doc: str | None = None
 
 
 Decl = (
     ImportDecl | RobotDecl | StateDecl | SensorDecl | SettingDecl | ConnectionDecl | PrimitiveDecl | InterfaceDecl | AdapterDecl | InputDecl
     | OutputDecl | ConstDecl | EnumDecl | FrameDecl | LinkDecl | JointDecl | TransmissionDecl
+    | ActuatorDecl
 )
 
 

@@ -2422,16 +2422,18 @@ def _init_TransmissionDecl(
     bindings: Any,
     span: Any = DEFAULT,
     doc: Any = DEFAULT,
+    actuator: Any = DEFAULT,
 ) -> None:
     _set(self, "name", name)
     _set(self, "joint", joint)
     _set(self, "bindings", bindings)
     _set(self, "span", span)
     _set(self, "doc", doc)
+    _set(self, "actuator", actuator)
 
 
 def _repr_TransmissionDecl(self: Any) -> str:
-    return f"{self.__class__.__qualname__}(name={self.name!r}, joint={self.joint!r}, bindings={self.bindings!r}, doc={self.doc!r})"
+    return f"{self.__class__.__qualname__}(name={self.name!r}, joint={self.joint!r}, bindings={self.bindings!r}, doc={self.doc!r}, actuator={self.actuator!r})"
 
 
 def _eq_TransmissionDecl(self: Any, other: Any) -> Any:
@@ -2441,17 +2443,58 @@ def _eq_TransmissionDecl(self: Any, other: Any) -> Any:
             self.joint,
             self.bindings,
             self.doc,
+            self.actuator,
         ) == (
             other.name,
             other.joint,
             other.bindings,
             other.doc,
+            other.actuator,
         )
     return NotImplemented
 
 
 def _hash_TransmissionDecl(self: Any) -> int:
-    return hash((self.name, self.joint, self.bindings, self.doc))
+    return hash((self.name, self.joint, self.bindings, self.doc, self.actuator))
+
+
+def _init_ActuatorDecl(
+    self: Any,
+    name: Any,
+    kind: Any,
+    items: Any,
+    span: Any = DEFAULT,
+    doc: Any = DEFAULT,
+) -> None:
+    _set(self, "name", name)
+    _set(self, "kind", kind)
+    _set(self, "items", items)
+    _set(self, "span", span)
+    _set(self, "doc", doc)
+
+
+def _repr_ActuatorDecl(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(name={self.name!r}, kind={self.kind!r}, items={self.items!r}, doc={self.doc!r})"
+
+
+def _eq_ActuatorDecl(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.name,
+            self.kind,
+            self.items,
+            self.doc,
+        ) == (
+            other.name,
+            other.kind,
+            other.items,
+            other.doc,
+        )
+    return NotImplemented
+
+
+def _hash_ActuatorDecl(self: Any) -> int:
+    return hash((self.name, self.kind, self.items, self.doc))
 
 
 def _init_Damaged(self: Any, keyword: Any, name: Any) -> None:
@@ -3502,12 +3545,28 @@ WRITTEN: dict[str, Written] = {
             ("bindings", MISSING),
             ("span", FieldSpec(None, MISSING, False, False)),
             ("doc", DEFAULT),
+            ("actuator", DEFAULT),
         ),
         {
             "__init__": _init_TransmissionDecl,
             "__repr__": _repr_TransmissionDecl,
             "__eq__": _eq_TransmissionDecl,
             "__hash__": _hash_TransmissionDecl,
+        },
+    ),
+    "ActuatorDecl": Written(
+        (
+            ("name", MISSING),
+            ("kind", MISSING),
+            ("items", MISSING),
+            ("span", FieldSpec(None, MISSING, False, False)),
+            ("doc", DEFAULT),
+        ),
+        {
+            "__init__": _init_ActuatorDecl,
+            "__repr__": _repr_ActuatorDecl,
+            "__eq__": _eq_ActuatorDecl,
+            "__hash__": _hash_ActuatorDecl,
         },
     ),
     "Damaged": Written(

@@ -670,8 +670,16 @@ class Rules:
         return ast.JointMimic(self.b.ident(c[0]), c[1], c[2], self.b.span(meta))
 
     def transmission_decl(self, meta: Meta, c: list[Any]) -> ast.TransmissionDecl:
-        return ast.TransmissionDecl(self.b.ident(c[0]), self.b.ident(c[1]), tuple(c[2:]), self.b.span(meta),
-                                    self.b.doc(meta))
+        actuator = None if c[2] is None else self.b.ident(c[2])
+        return ast.TransmissionDecl(self.b.ident(c[0]), self.b.ident(c[1]), tuple(c[3:]), self.b.span(meta),
+                                    self.b.doc(meta), actuator)
+
+    def actuator_decl(self, meta: Meta, c: list[Any]) -> ast.ActuatorDecl:
+        return ast.ActuatorDecl(self.b.ident(c[0]), self.b.ident(c[1]), tuple(c[2:]), self.b.span(meta),
+                                self.b.doc(meta))
+
+    def actuator_item(self, meta: Meta, c: list[Any]) -> ast.BodyValue:
+        return ast.BodyValue(str(c[0]), c[1], self.b.span(meta))
 
     def command(self, meta: Meta, c: list[Any]) -> ast.Binding:
         quantity, target, member, index, *conversions = c
@@ -742,7 +750,7 @@ class Rules:
         return str(c[0])
 
     robot_key = hook_event = encoding_kind = decoding_kind = kind_word = time_unit = _word
-    check_word = hex_word = _word
+    check_word = hex_word = actuator_key = _word
 
     # -- expressions --
 

@@ -52,6 +52,7 @@ DECL_KEYWORDS = (
     "link",
     "joint",
     "transmission",
+    "actuator",
 )
 DECL_START = re.compile(r"^(?:{})\b".format("|".join(DECL_KEYWORDS)), re.MULTILINE)
 _DOC_RUN = re.compile(r"(?:^[ \t]*///[^\n]*\n?)+", re.MULTILINE)

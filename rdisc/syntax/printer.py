@@ -128,7 +128,10 @@ def _code(d: ast.Decl) -> list[str]:
             return _block(f"joint {name.text}: {kind.text} {parent.text} -> {child.text}",
                           [_joint_item(i) for i in items])
         case ast.TransmissionDecl(name, joint, bindings):
-            return _block(f"transmission {name.text}: {joint.text}", [line for b in bindings for line in _binding(b)])
+            head = f"transmission {name.text}: {joint.text}" + ("" if d.actuator is None else f" actuator {d.actuator.text}")
+            return _block(head, [line for b in bindings for line in _binding(b)])
+        case ast.ActuatorDecl(name, kind, items):
+            return _block(f"actuator {name.text}: {kind.text}", [f"{i.key} {print_expr(i.value)}" for i in items])
         case _:
             _unreachable(d)
 

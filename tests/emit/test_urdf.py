@@ -78,7 +78,8 @@ def test_urchin_reads_the_links_joints_and_transmissions_back(body) -> None:
         interfaces = [INTERFACES[q] for q in dict.fromkeys(quantities)] or ["hardware_interface/JointStateInterface"]
         assert [(j.name, j.hardwareInterfaces) for j in t.joints] == [(want.joint, interfaces)]
         first = (want.commands or want.measures)[0]
-        assert [(a.name, a.mechanicalReduction) for a in t.actuators] == [(first.place(), REDUCTIONS[name])]
+        actuator = want.actuator or first.place()  # the actuator it names, else its commanded target
+        assert [(a.name, a.mechanicalReduction) for a in t.actuators] == [(actuator, REDUCTIONS[name])]
 
 
 # Each body's transmissions' gear ratios, from the descriptions' own numbers: the actuator's value

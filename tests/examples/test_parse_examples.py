@@ -48,7 +48,7 @@ EXPECTED_COUNTS: dict[str, dict[str, int]] = {
     # the protocol examples, each checked byte for byte against a published driver (tests/conformance)
     "examples/arm.rdis": {"ConnectionDecl": 1, "ConstDecl": 7, "EnumDecl": 2, "FrameDecl": 2, "InputDecl": 1,
                           "InterfaceDecl": 3, "OutputDecl": 1, "PrimitiveDecl": 5, "RobotDecl": 1, "StateDecl": 3,
-                          "LinkDecl": 7, "JointDecl": 6, "TransmissionDecl": 6},
+                          "LinkDecl": 7, "JointDecl": 6, "TransmissionDecl": 6, "ActuatorDecl": 6},
     "examples/ax12.rdis": {"ConnectionDecl": 1, "ConstDecl": 2, "EnumDecl": 2, "FrameDecl": 1, "InterfaceDecl": 5,
                            "PrimitiveDecl": 38, "RobotDecl": 1, "SettingDecl": 1, "StateDecl": 25},
     "examples/create2.rdis": {"ConnectionDecl": 1, "ConstDecl": 5, "InputDecl": 1, "InterfaceDecl": 4,

@@ -64,6 +64,7 @@ class Checker(Declarations, Primitives, Interfaces, Sensors):
         self.state_env.update(readable)
         outputs = {name: self.output(decl, adapters) for name, decl in self.s.outputs.items()}
         links, joints, transmissions = self.robot_body(primitives, interface_params, states)
+        actuators = self.robot_actuators(links, joints, transmissions)
         robot = self.robot()
         self.unused(interfaces)
         unseeded(self.frames, primitives, self.s.primitives, self.d)
@@ -89,6 +90,7 @@ class Checker(Declarations, Primitives, Interfaces, Sensors):
             joints=joints,
             transmissions=transmissions,
             sensors={n: s for n, s in sensors.items() if s is not None},
+            actuators=actuators,
         )
 
     def robot_body(self, primitives: dict[str, m.Primitive], interface_params: dict[str, tuple[m.Parameter, ...]],
@@ -111,6 +113,21 @@ class Checker(Declarations, Primitives, Interfaces, Sensors):
         transmissions = {name: body.transmission(decl, joints, primitives, interface_params, states)
                          for name, decl in self.s.transmissions.items()}
         return links, joints, {n: t for n, t in transmissions.items() if t is not None}
+
+    def robot_actuators(self, links: dict[str, m.Link], joints: dict[str, m.Joint],
+                        transmissions: dict[str, m.Transmission]) -> dict[str, m.Actuator]:
+        """The actuators and the transmissions naming them (rdisc.semantics.actuators), imported only
+        for a description that declares one."""
+        if not self.s.actuators:
+            return {}
+        from rdisc.semantics import actuators as rules
+        from rdisc.semantics.body import BodyRules
+
+        body = BodyRules(self.d, self.typer, self.s, self.setting)
+        found = {name: rules.actuator(self.d, body, decl) for name, decl in self.s.actuators.items()}
+        actuators = {n: a for n, a in found.items() if a is not None}
+        rules.bind(self.d, self.s.transmissions, actuators, transmissions, links, joints)
+        return actuators
 
     def unused(self, interfaces: dict[str, m.Interface]) -> None:
         """Outputs never delivered and state nothing uses. (Primitives and interfaces are the

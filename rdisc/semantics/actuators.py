@@ -1,0 +1,93 @@
+"""The actuator's rules (thesis §7.2.6): what drives a joint between the device's command and the
+joint, checked into the Model. An actuator is one motor: a transmission names it (`transmission
+T: JOINT actuator A { ... }`), at most one transmission each, so that every model written from
+the body (URDF's `<actuator>`, MJCF's) has one actuator of that name. A servo is commanded a
+position, a wheel a velocity; the limits are positive numbers; the gain a description states is
+held against the inertia its joint carries (W621), as the simulation will integrate it.
+"""
+
+from __future__ import annotations
+
+from rdisc.diagnostics import Diagnostics, Label
+from rdisc.emit.mjcf import TIMESTEP
+from rdisc.semantics import model as m
+from rdisc.semantics.body import BodyRules
+from rdisc.semantics.reflected import STABLE_STEP, joint_inertia, steps_per_period
+from rdisc.syntax import ast
+
+_KINDS = {k.value: k for k in m.ActuatorKind}
+KEYS = ("velocity", "acceleration", "effort", "gain", "damping")
+_COMMANDED = {m.ActuatorKind.SERVO: m.Quantity.POSITION, m.ActuatorKind.WHEEL: m.Quantity.VELOCITY}
+
+
+def actuator(d: Diagnostics, body: BodyRules, decl: ast.ActuatorDecl) -> m.Actuator | None:
+    """One `actuator NAME: KIND { ... }`: a known kind, known keys each at most once, positive numbers."""
+    from rdisc.semantics.resolve import suggest
+
+    kind = _KINDS.get(decl.kind.text)
+    if kind is None:
+        d.report("E620", decl.kind.span, f"unknown actuator kind `{decl.kind.text}`",
+                 help=suggest(decl.kind.text, _KINDS) or "actuators are " + ", ".join(_KINDS))
+    for item in decl.items:
+        if item.key not in KEYS:
+            d.report("E620", item.span, f"an actuator has no `{item.key}`",
+                     help=suggest(item.key, KEYS) or "its items are " + ", ".join(KEYS))
+    values: dict[str, float | None] = {}
+    for key in KEYS:
+        expr = body.once(decl.items, key, decl.name)
+        value = None if expr is None else body.number(expr, f"an actuator's {key}")
+        if value is not None and value <= 0:
+            d.report("E620", expr.span if expr is not None else decl.name.span,
+                     f"an actuator's {key} is more than 0, not {value:g}")
+            value = None
+        values[key] = value
+    if kind is m.ActuatorKind.WHEEL:
+        for item in decl.items:
+            if item.key in ("gain", "damping"):
+                key = item.key
+                d.report("E620", item.span, f"a wheel has no `{key}`: it holds a speed, not a position",
+                         help="its simulated motor pushes with its whole effort when its speed is off by 1% "
+                              "of its `velocity`")
+    if kind is None:
+        return None
+    return m.Actuator(decl.name.text, kind, values["velocity"], values["acceleration"], values["effort"],
+                      values["gain"], values["damping"], decl.doc, decl.span)
+
+
+def bind(d: Diagnostics, decls: dict[str, ast.TransmissionDecl], actuators: dict[str, m.Actuator],
+         transmissions: dict[str, m.Transmission], links: dict[str, m.Link], joints: dict[str, m.Joint]) -> None:
+    """Each actuator named by at most one transmission, whose command is the actuator's quantity;
+    a stated servo gain the joint's inertia can follow within a simulated step (W621)."""
+    named: dict[str, ast.TransmissionDecl] = {}
+    inertia: dict[str, float] | None = None
+    for name, decl in decls.items():
+        if decl.actuator is None or decl.actuator.text not in actuators:
+            continue
+        motor = actuators[decl.actuator.text]
+        first = named.setdefault(motor.name, decl)
+        if first is not decl:
+            d.report("E620", decl.actuator.span, f"actuator `{motor.name}` already drives transmission "
+                     f"`{first.name.text}`", labels=(Label(first.actuator.span if first.actuator else first.span,
+                                                           "named here first"),),
+                     help="an actuator is one motor: declare one for each joint it drives")
+            continue
+        transmission = transmissions.get(name)
+        if transmission is None:
+            continue
+        want = _COMMANDED[motor.kind]
+        wrong = next((b for b in transmission.commands if b.quantity is not want), None)
+        if wrong is not None:
+            d.report("E620", decl.actuator.span, f"a {motor.kind.value} is commanded a {want.value}, but "
+                     f"transmission `{name}` commands its {wrong.quantity.value}",
+                     help=f"`command {want.value} to ...`, or an actuator of another kind")
+        if motor.kind is m.ActuatorKind.SERVO and motor.gain is not None:
+            if inertia is None:
+                inertia = joint_inertia(links, joints)
+            carried = inertia.get(transmission.joint, 0.0)
+            steps = steps_per_period(motor.gain, carried, TIMESTEP)
+            if steps > STABLE_STEP:
+                d.report("W621", decl.actuator.span,
+                         f"actuator `{motor.name}`'s gain of {motor.gain:g} N m/rad on joint `{transmission.joint}`, "
+                         f"which carries {carried:.3g} kg m², rings at {steps:.3g} rad a simulated step: the "
+                         "simulation will be unstable", help="leave `gain` out (it is then derived from the effort "
+                         f"and the inertia), or give at most {carried * (STABLE_STEP / TIMESTEP) ** 2:.3g}")
