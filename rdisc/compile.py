@@ -17,6 +17,7 @@ from contextvars import ContextVar
 from rdisc.diagnostics import Diagnostics, abbreviate
 from rdisc.semantics.budget import ConnectionBudget, budget
 from rdisc.semantics.check import check
+from rdisc.semantics.check.memo import Memo
 from rdisc.semantics.model import Model
 from rdisc.semantics.resolve import Unit, resolve
 from rdisc.source import Sources, Span
@@ -138,7 +139,7 @@ def compile_path(path: str, max_tokens: int | None = None) -> Compilation:
 
 @_without_collections()
 def compile_text(path: str, text: str, diagnostics: Diagnostics | None = None,
-                 max_tokens: int | None = None, parser: Parser | None = None) -> Compilation:
+                 max_tokens: int | None = None, parser: Parser | None = None, memo: Memo | None = None) -> Compilation:
     """Check a description given as text, named `path` (.json for the JSON importer): a ROS
     node rebuilds its Model for `~sim` from the canonical JSON it embeds, with no file. The
     editor's `parser` (of every file read) reuses what did not change since its last check
@@ -157,7 +158,7 @@ def compile_text(path: str, text: str, diagnostics: Diagnostics | None = None,
         return Compilation(None, diagnostics, sources)
     units: list[Unit] = []
     _add_unit(main, True, diagnostics, sources, units, tokens)
-    return _analyse(units, diagnostics, sources, main)
+    return _analyse(units, diagnostics, sources, main, memo)
 
 
 @_without_collections()
@@ -169,9 +170,10 @@ def compile_module(main: ast.Module, diagnostics: Diagnostics, sources: Sources,
     return _analyse(units, diagnostics, sources, main)
 
 
-def _analyse(units: list[Unit], diagnostics: Diagnostics, sources: Sources, main: ast.Module) -> Compilation:
+def _analyse(units: list[Unit], diagnostics: Diagnostics, sources: Sources, main: ast.Module,
+             memo: Memo | None = None) -> Compilation:
     symbols = resolve(units, diagnostics)
-    model = check(units, symbols, diagnostics)
+    model = check(units, symbols, diagnostics, memo)
     budgets = budget(model, diagnostics) if model is not None else []
     return Compilation(model, diagnostics, sources, budgets, main, units)
 
