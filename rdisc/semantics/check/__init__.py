@@ -56,7 +56,8 @@ class Checker(Declarations, Primitives, Interfaces, Sensors, Remembering):
         rules = FrameRules(self.d, self.typer, self.setting)
         self.frames = {name: rules.frame(decl, self.params(decl.params, "frame"))
                        for name, decl in self.s.frames.items()}
-        interface_params = {name: self.params(decl.params, "interface") for name, decl in self.s.interfaces.items()}
+        interface_params = {name: self.recall(decl, (), partial(self.params, decl.params, "interface"), "params")
+                            for name, decl in self.s.interfaces.items()}
         primitives = self.primitives = {name: self.recall(decl, (), partial(self.primitive, decl))
                                         for name, decl in self.s.primitives.items()}
         connections = {name: self.connection(decl, interface_params) for name, decl in self.s.connections.items()}

@@ -15,6 +15,7 @@ what one without gives, diagnostics and Model alike (tests/semantics/test_memo.p
 from __future__ import annotations
 
 from collections.abc import Callable
+from operator import is_
 from typing import Any, TypeVar
 
 from rdisc.diagnostics import Diagnostic, Label
@@ -50,7 +51,7 @@ class Kept:
 
     __slots__ = ("constants", "decl", "depends", "failed_reads", "reads", "reports", "result", "written")
 
-    def __init__(self, decl: object, depends: object, result: object, reports: list[Diagnostic],
+    def __init__(self, decl: object, depends: tuple[object, ...], result: object, reports: list[Diagnostic],
                  constants: list[tuple[int, Any]], reads: set[str], failed_reads: int, written: int) -> None:
         self.decl = decl
         self.depends = depends
@@ -67,8 +68,8 @@ class Memo:
 
     def __init__(self) -> None:
         self.context: object = None
-        self.kept: dict[int, Kept] = {}  # of the last check
-        self.made: dict[int, Kept] = {}  # of the check running
+        self.kept: dict[tuple[int, str], Kept] = {}  # of the last check
+        self.made: dict[tuple[int, str], Kept] = {}  # of the check running
         self.reused = 0  # checks taken again by the last check (for tests)
 
     def begin(self, context: object) -> None:
@@ -118,28 +119,31 @@ class Remembering(Pieces):
         if self.memo is not None:
             self.memo.end()
 
-    def recall(self, decl: object, depends: object, check: Callable[[], Result]) -> Result:
-        """`check()`, or what it gave last time, for `decl` reading `depends` besides the context."""
+    def recall(self, decl: object, depends: tuple[object, ...], check: Callable[[], Result], part: str = "") -> Result:
+        """`check()`, or what it gave last time, for `decl` (its `part`: an interface's parameters are
+        made apart from its body) reading `depends` (nodes and Models, by identity) besides the context."""
         memo = self.memo
         if memo is None:
             return check()
-        kept = memo.kept.get(id(decl))
-        if kept is not None and kept.decl is decl and same(kept.depends, depends) and self._again(kept):
-            memo.made[id(decl)] = kept
-            memo.reused += 1
+        key = (id(decl), part)
+        kept = memo.kept.get(key)
+        if kept is not None and kept.decl is decl and len(kept.depends) == len(depends) \
+                and all(map(is_, kept.depends, depends)) and self._again(kept):
+            memo.made[key] = kept
+            memo.reused += not part
             return kept.result  # type: ignore[return-value]
         made = self._made(decl, depends, check)
         if made is not None:
-            memo.made[id(decl)] = made
+            memo.made[key] = made
             return made.result  # type: ignore[return-value]
         return check()  # its course touched what others reported: made again each time
 
-    def interface_reads(self, decl: ast.InterfaceDecl, primitives: dict[str, m.Primitive]) -> object:
+    def interface_reads(self, decl: ast.InterfaceDecl, primitives: dict[str, m.Primitive]) -> tuple[object, ...]:
         """What an interface's check reads besides its declaration and the context: each primitive
         or interface it calls, through the interfaces it calls (declaration, Model; the parameters
         are made from the declaration and the context). None without a memo: nothing is kept."""
         if self.memo is None:
-            return None
+            return ()
         names: dict[str, None] = {}
         bodies = [decl.body]
         while bodies:
@@ -150,8 +154,8 @@ class Remembering(Pieces):
                     called = self.s.interfaces.get(name)
                     if called is not None:
                         bodies.append(called.body)
-        return tuple((name, self.s.primitives.get(name), self.s.interfaces.get(name), primitives.get(name))
-                     for name in names)
+        return tuple(found for name in names for found in
+                     (self.s.primitives.get(name), self.s.interfaces.get(name), primitives.get(name)))
 
     def _again(self, kept: Kept) -> bool:
         """Do to the checker what the kept check did, if that is what making it again would do."""
@@ -175,7 +179,7 @@ class Remembering(Pieces):
         self.written += kept.written
         return True
 
-    def _made(self, decl: object, depends: object, check: Callable[[], Any]) -> Kept | None:
+    def _made(self, decl: object, depends: tuple[object, ...], check: Callable[[], Any]) -> Kept | None:
         """Make the check, writing down what it does; None when it cannot be taken again (a report
         of it was a repeat of another's, or its loops came near the description's bound)."""
         d, typer = self.d, self.typer
