@@ -77,7 +77,7 @@ class Job:
     def run(self) -> Analysis:
         path = self.document.path
         with open_texts(self.texts):
-            compilation = compile_text(path, self.text, parser=self.document.parser.parse, memo=self.document.memo)
+            compilation = compile_text(path, self.text, parser=self.document.parser, memo=self.document.memo)
         source = compilation.sources.get(path) or SourceFile(path, self.text)
         return Analysis(compilation, source)
 

@@ -12,7 +12,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from rdisc.compile import Compilation, compile_text
+from rdisc.compile import Compilation, compile_text, token_budget
 from rdisc.semantics.check.memo import Memo
 from rdisc.source import Span
 from rdisc.syntax.incremental import Reparser
@@ -46,7 +46,7 @@ class Editor:
         self.path, self.parser, self.memo = path, Reparser(), Memo()
 
     def check(self, text: str) -> Compilation:
-        return compile_text(self.path, text, parser=self.parser.parse, memo=self.memo)
+        return compile_text(self.path, text, parser=self.parser, memo=self.memo)
 
 
 def same_as_fresh(editor: Editor, text: str) -> None:
@@ -132,3 +132,12 @@ def test_what_a_reused_check_read_still_counts_as_used(tmp_path: Path) -> None:
     same_as_fresh(editor, text)
     same_as_fresh(editor, text.replace("0..1000", "0..1001", 1))  # move_9 kept: `speed` is still read (no W103)
     assert editor.memo.reused == 2 * 165 - 2
+
+
+def test_a_description_over_the_token_budget_is_refused_as_by_a_fresh_check(tmp_path: Path) -> None:
+    editor = Editor(str(tmp_path / "big.rdis"))
+    same_as_fresh(editor, BIG)
+    with token_budget(5000):  # the description has about 8,000
+        same_as_fresh(editor, BIG)
+        assert [d.code for d in editor.check(BIG).diagnostics.items] == ["E005"]
+    same_as_fresh(editor, BIG)
