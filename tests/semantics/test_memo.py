@@ -141,3 +141,19 @@ def test_a_description_over_the_token_budget_is_refused_as_by_a_fresh_check(tmp_
         same_as_fresh(editor, BIG)
         assert [d.code for d in editor.check(BIG).diagnostics.items] == ["E005"]
     same_as_fresh(editor, BIG)
+
+
+def test_interfaces_near_the_bound_of_all_calls_are_checked_each_time_and_once(tmp_path: Path,
+                                                                              monkeypatch: pytest.MonkeyPatch) -> None:
+    from rdisc.semantics.check import interfaces, memo
+
+    for module in (interfaces, memo):
+        monkeypatch.setattr(module, "MAX_UNROLLED_ALL", 5000)
+    text = BIG.replace("interface move_1(value: float) {", "interface move_1(value: float) {\n    for i in 0..499 { set_0(1) }") \
+        .replace("interface move_2(value: float) {", "interface move_2(value: float) {\n    for i in 0..499 { set_0(1) }") \
+        .replace("interface move_3(value: float) {", "interface move_3(value: float) {\n    for i in 0..3999 { set_0(1) }")
+    editor = Editor(str(tmp_path / "big.rdis"))
+    same_as_fresh(editor, text)
+    assert [d.code for d in editor.check(text).diagnostics.items] == ["E212"]  # move_3: 5,000 and more
+    same_as_fresh(editor, text.replace("0..3999", "0..3900"))  # 4,999 in all, with the calls after it
+    assert [d.code for d in editor.check(text.replace("0..3999", "0..3900")).diagnostics.items] == []

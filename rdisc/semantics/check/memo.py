@@ -132,11 +132,10 @@ class Remembering(Pieces):
             memo.made[key] = kept
             memo.reused += not part
             return kept.result  # type: ignore[return-value]
-        made = self._made(decl, depends, check)
-        if made is not None:
+        made, again = self._made(decl, depends, check)
+        if again:  # else its course touched what others reported, or a bound of them all: made each time
             memo.made[key] = made
-            return made.result  # type: ignore[return-value]
-        return check()  # its course touched what others reported: made again each time
+        return made.result  # type: ignore[return-value]
 
     def interface_reads(self, decl: ast.InterfaceDecl, primitives: dict[str, m.Primitive]) -> tuple[object, ...]:
         """What an interface's check reads besides its declaration and the context: each primitive
@@ -179,9 +178,9 @@ class Remembering(Pieces):
         self.written += kept.written
         return True
 
-    def _made(self, decl: object, depends: tuple[object, ...], check: Callable[[], Any]) -> Kept | None:
-        """Make the check, writing down what it does; None when it cannot be taken again (a report
-        of it was a repeat of another's, or its loops came near the description's bound)."""
+    def _made(self, decl: object, depends: tuple[object, ...], check: Callable[[], Any]) -> tuple[Kept, bool]:
+        """Make the check, writing down what it does; and whether it may be taken again (not when a
+        report of it was a repeat of another's, or its loops came near the description's bound)."""
         d, typer = self.d, self.typer
         constants = typer._constants
         assert isinstance(constants, Logged)
@@ -210,7 +209,6 @@ class Remembering(Pieces):
             own, typer.reads = typer.reads, reads
             reads.update(own)
         wrote = self.written - written
-        if repeated or written + wrote + MAX_UNROLLED > MAX_UNROLLED_ALL:
-            return None
-        return Kept(decl, depends, result, d.items[first:], log, own, typer.failed_reads - failed_reads, wrote)
+        kept = Kept(decl, depends, result, d.items[first:], log, own, typer.failed_reads - failed_reads, wrote)
+        return kept, not repeated and written + wrote + MAX_UNROLLED <= MAX_UNROLLED_ALL
 
