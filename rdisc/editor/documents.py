@@ -6,7 +6,9 @@ its text, so every answer is about the text the editor shows. Imports read the o
 texts, saved or not (rdisc.compile.open_texts). A check is a `Job`: what it reads is taken when it
 is made, so it may run in a thread of its own (rdisc.editor.checks) while the editor types on;
 its result is kept only if the document's text is still the one it checked. Each check parses
-only the declarations changed since the last (rdisc.syntax.incremental).
+only the declarations changed since the last (rdisc.syntax.incremental), and checks again only
+the primitives and interfaces whose declarations, or what they read, changed
+(rdisc.semantics.check.memo).
 """
 
 from __future__ import annotations
@@ -15,6 +17,7 @@ import os
 
 from rdisc.compile import Compilation, compile_text, open_texts
 from rdisc.editor.index import Index, build_index
+from rdisc.semantics.check.memo import Memo
 from rdisc.source import SourceFile
 from rdisc.syntax.incremental import Reparser
 
@@ -43,7 +46,7 @@ class Analysis:
 
 
 class Document:
-    __slots__ = ("analysis", "good", "parser", "path", "text", "uri", "version")
+    __slots__ = ("analysis", "good", "memo", "parser", "path", "text", "uri", "version")
 
     def __init__(self, uri: str, path: str, text: str, version: int | None) -> None:
         self.uri = uri
@@ -53,6 +56,7 @@ class Document:
         self.analysis: Analysis | None = None  # of `text`; None until checked after a change
         self.good: Analysis | None = None  # the last check that built a Model
         self.parser = Reparser()  # its declarations as last parsed, reused by the next check
+        self.memo = Memo()  # its primitives' and interfaces' checks, reused by the next check
 
     @property
     def real_path(self) -> str:
@@ -73,7 +77,7 @@ class Job:
     def run(self) -> Analysis:
         path = self.document.path
         with open_texts(self.texts):
-            compilation = compile_text(path, self.text, parser=self.document.parser.parse)
+            compilation = compile_text(path, self.text, parser=self.document.parser, memo=self.document.memo)
         source = compilation.sources.get(path) or SourceFile(path, self.text)
         return Analysis(compilation, source)
 

@@ -16,7 +16,14 @@ from rdisc.diagnostics import Diagnostics
 from rdisc.source import Span
 from rdisc.syntax import ast
 from rdisc.syntax.build import Builder
-from rdisc.syntax.parse import MAX_FILE_CHARS, MAX_SYNTAX_ERRORS, parse, parse_declaration, pieces
+from rdisc.syntax.parse import (
+    MAX_FILE_CHARS,
+    MAX_SYNTAX_ERRORS,
+    parse,
+    parse_declaration,
+    pieces,
+    token_count,
+)
 
 Node = TypeVar("Node")
 _setattr = object.__setattr__
@@ -29,6 +36,38 @@ class Reparser:
     def __init__(self) -> None:
         self.files: dict[str, dict[tuple[str, str | None], tuple[int, tuple[ast.Decl, ...]]]] = {}
         self.reused = 0  # declarations taken from the file's last parse, by the last parse (for tests)
+        self.counted: dict[str, int] = {}  # the tokens of each declaration's text, as counted
+        self.cut: tuple[str, tuple[list[tuple[int, int]], dict[int, str]]] | None = None  # the last text's pieces
+
+    def __call__(self, path: str, text: str, diagnostics: Diagnostics) -> ast.Module:
+        return self.parse(path, text, diagnostics)
+
+    def tokens(self, text: str, most: int) -> int:
+        """What `token_count(text, most)` gives, each declaration's tokens kept by its text: no
+        token spans a line, and a file is cut into declarations at the starts of lines."""
+        if len(text) > MAX_FILE_CHARS:
+            return token_count(text, most)
+        bounds, _ = self.pieces(text)
+        counted, total = self.counted, 0
+        if len(counted) > 4 * len(bounds) + 1024:  # of files and texts gone: a check counts a few files
+            counted.clear()
+        for start, end in bounds:
+            piece = text[start:end]
+            found = counted.get(piece)
+            if found is None:
+                found = token_count(piece, most)
+                if found <= most:  # exact: a count cut short is not kept
+                    counted[piece] = found
+            total += found
+            if total > most:
+                break
+        return min(total, most + 1)
+
+    def pieces(self, text: str) -> tuple[list[tuple[int, int]], dict[int, str]]:
+        """`pieces(text)`, made once for a text counted and then parsed."""
+        if self.cut is None or self.cut[0] != text:
+            self.cut = (text, pieces(text))
+        return self.cut[1]
 
     def parse(self, path: str, text: str, diagnostics: Diagnostics) -> ast.Module:
         """What `parse(path, text, diagnostics)` gives, reusing the declarations kept."""
@@ -36,7 +75,7 @@ class Reparser:
             self.files.pop(path, None)
             return parse(path, text, diagnostics)
         last = self.files.get(path, {})
-        bounds, docs = pieces(text)
+        bounds, docs = self.pieces(text)
         builder = Builder(path, docs, diagnostics)
         decls: list[ast.Decl] = []
         damaged: list[ast.Damaged] = []

@@ -14,7 +14,7 @@ from hypothesis import strategies as st
 from rdisc.diagnostics import Diagnostics
 from rdisc.source import Span
 from rdisc.syntax.incremental import Reparser, shifted
-from rdisc.syntax.parse import parse
+from rdisc.syntax.parse import parse, token_count
 from tests.conftest import fuzz_examples
 
 EXAMPLES = sorted((Path(__file__).resolve().parents[2] / "examples").glob("*.rdis"))
@@ -96,3 +96,18 @@ def test_a_shifted_tree_has_every_span_moved_and_equals_the_original() -> None:
 
     pairs(module.decls, moved)
     assert len(spans) > 1000 and all((b.start, b.end) == (a.start + 7, a.end + 7) for a, b in spans)
+
+
+@settings(max_examples=fuzz_examples(60), deadline=None)
+@given(name=st.sampled_from(sorted(TEXTS)), data=st.data())
+def test_the_tokens_of_any_edit_of_an_example_are_counted_as_token_count_counts_them(name: str,
+                                                                                       data: st.DataObject) -> None:
+    text = TEXTS[name]
+    start = data.draw(st.integers(0, len(text)))
+    end = data.draw(st.integers(start, min(len(text), start + 400)))
+    edited = text[:start] + "".join(data.draw(st.lists(PIECES, max_size=4))) + text[end:]
+    most = data.draw(st.sampled_from([10, 500, 200_000]))
+    parser = Reparser()
+    assert parser.tokens(text, most) == token_count(text, most)
+    assert parser.tokens(edited, most) == token_count(edited, most)
+    assert parser.tokens(text, 200_000) == token_count(text, 200_000)

@@ -10,10 +10,13 @@ over the pieces they share (types, parameters, calls). Then what is declared and
 
 from __future__ import annotations
 
+from functools import partial
+
 from rdisc.diagnostics import Diagnostics
 from rdisc.semantics import model as m
 from rdisc.semantics.check.declarations import Declarations
 from rdisc.semantics.check.interfaces import Interfaces
+from rdisc.semantics.check.memo import Memo, Remembering
 from rdisc.semantics.check.primitives import Primitives
 from rdisc.semantics.check.sensors import Sensors
 from rdisc.semantics.frames import FrameRules, unseeded
@@ -22,11 +25,17 @@ from rdisc.semantics.resolve import Symbols, Unit
 from rdisc.syntax import ast
 
 
-def check(units: list[Unit], symbols: Symbols, diagnostics: Diagnostics) -> m.Model | None:
-    return Checker(units, symbols, diagnostics).run()
+def check(units: list[Unit], symbols: Symbols, diagnostics: Diagnostics, memo: Memo | None = None) -> m.Model | None:
+    """The Model, or None; `memo`: the primitives' and interfaces' checks kept from the last check
+    of the same document, reused where what they read did not change (the editor's)."""
+    checker = Checker(units, symbols, diagnostics)
+    checker.remember(memo)
+    model = checker.run()
+    checker.forget_rest()
+    return model
 
 
-class Checker(Declarations, Primitives, Interfaces, Sensors):
+class Checker(Declarations, Primitives, Interfaces, Sensors, Remembering):
     """Each kind of declaration by its own rules, the Model built from them."""
 
     def run(self) -> m.Model | None:
@@ -47,15 +56,19 @@ class Checker(Declarations, Primitives, Interfaces, Sensors):
         rules = FrameRules(self.d, self.typer, self.setting)
         self.frames = {name: rules.frame(decl, self.params(decl.params, "frame"))
                        for name, decl in self.s.frames.items()}
-        interface_params = {name: self.params(decl.params, "interface") for name, decl in self.s.interfaces.items()}
-        primitives = self.primitives = {name: self.primitive(decl) for name, decl in self.s.primitives.items()}
+        interface_params = {name: self.recall(decl, (), partial(self.params, decl.params, "interface"), "params")
+                            for name, decl in self.s.interfaces.items()}
+        primitives = self.primitives = {name: self.recall(decl, (), partial(self.primitive, decl))
+                                        for name, decl in self.s.primitives.items()}
         connections = {name: self.connection(decl, interface_params) for name, decl in self.s.connections.items()}
         sensor_types = {name: self.type_name(decl.type) for name, decl in self.s.sensors.items()}
         sensors = {name: self.sensor(decl, sensor_types[name]) for name, decl in self.s.sensors.items()}
         readable = {n: (Scope.STATE, t) for n, t in sensor_types.items() if n not in self.state_env and t is not None}
         self.state_env.update(readable)  # interfaces and outputs read sensors, each read refreshed when stale
         interfaces = {
-            name: self.interface(decl, interface_params, primitives) for name, decl in self.s.interfaces.items()
+            name: self.recall(decl, self.interface_reads(decl, primitives),
+                              partial(self.interface, decl, interface_params, primitives))
+            for name, decl in self.s.interfaces.items()
         }
         self.interface_cycles(interfaces)
         for name in readable:  # an input's arguments are not refreshed: they read no sensor

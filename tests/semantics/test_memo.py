@@ -1,0 +1,160 @@
+"""The editor's check (a Reparser and a Memo kept from one check of a document to the next) gives
+what a fresh check gives, diagnostics and Model with every span, however the text was edited
+since; and it checks again only the primitives and interfaces the edit touched."""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+from typing import Any
+
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from rdisc.compile import Compilation, compile_text, token_budget
+from rdisc.semantics.check.memo import Memo
+from rdisc.source import Span
+from rdisc.syntax.incremental import Reparser
+from tests.conftest import fuzz_examples
+
+ROOT = Path(__file__).resolve().parents[2]
+EXAMPLES = {path.name: path.read_text(encoding="utf-8") for path in sorted((ROOT / "examples").glob("*.rdis"))}
+sys.path.insert(0, str(ROOT / "benchmarks"))
+from lsp_speed import description
+
+BIG = description()
+
+
+def whole(node: Any) -> Any:
+    """A value as nested tuples of its class and every field, spans too (`==` leaves them out)."""
+    if isinstance(node, (tuple, list)):
+        return tuple(whole(item) for item in node)
+    if isinstance(node, dict):
+        return tuple((key, whole(value)) for key, value in node.items())
+    if isinstance(node, Span):
+        return (node.path, node.start, node.end)
+    if hasattr(node, "__dataclass_fields__"):
+        return (type(node).__name__, *(whole(getattr(node, name)) for name in node.__dataclass_fields__))
+    return node
+
+
+class Editor:
+    """One document as the language server checks it."""
+
+    def __init__(self, path: str) -> None:
+        self.path, self.parser, self.memo = path, Reparser(), Memo()
+
+    def check(self, text: str) -> Compilation:
+        return compile_text(self.path, text, parser=self.parser, memo=self.memo)
+
+
+def same_as_fresh(editor: Editor, text: str) -> None:
+    kept, fresh = editor.check(text), compile_text(editor.path, text)
+    assert whole(kept.diagnostics.items) == whole(fresh.diagnostics.items)
+    assert whole(kept.model) == whole(fresh.model)
+    assert whole(kept.budgets) == whole(fresh.budgets)
+
+
+def test_a_change_to_one_primitive_checks_only_it_and_the_interface_calling_it(tmp_path: Path) -> None:
+    editor = Editor(str(tmp_path / "big.rdis"))
+    same_as_fresh(editor, BIG)
+    assert editor.memo.reused == 0
+    same_as_fresh(editor, BIG.replace("0..1000", "0..1001", 1))  # set_0's range: set_0 and move_0 again
+    assert editor.memo.reused == 2 * 165 - 2
+    same_as_fresh(editor, BIG.replace('unit "mm"', 'unit "mx"', 1))  # an unknown unit, reported
+    assert editor.memo.reused == 2 * 165 - 2
+    same_as_fresh(editor, BIG.replace("0..1000", "0..99999", 1))  # the declarations after it move: checked again
+    same_as_fresh(editor, BIG.replace("state last: int = 0", "state last: float = 0"))  # the context: all again
+    assert editor.memo.reused == 0
+
+
+def test_a_reused_check_reports_its_faults_again(tmp_path: Path) -> None:
+    editor = Editor(str(tmp_path / "big.rdis"))
+    broken = BIG.replace("set_7(round(value * 1000))", "set_7(value * 1000)").replace('unit "mm"', 'unit "mmm"', 1)
+    same_as_fresh(editor, broken)
+    edited = broken.replace("0..1000", "0..1001", 2)  # two primitives' ranges (one with the fault), the others kept
+    same_as_fresh(editor, edited)
+    assert editor.memo.reused == 2 * 165 - 4
+    codes = sorted(d.code for d in editor.check(edited).diagnostics.items)
+    assert codes == ["E109", "E402"]
+
+
+@pytest.mark.parametrize("name", sorted(EXAMPLES))
+def test_every_example_checked_again_after_edits_as_a_fresh_check(name: str, tmp_path: Path) -> None:
+    text = EXAMPLES[name]
+    editor = Editor(str(ROOT / "examples" / name))
+    same_as_fresh(editor, text)
+    same_as_fresh(editor, text)
+    assert editor.memo.reused == sum(not part for _, part in editor.memo.kept) > 0 or "primitive" not in text
+    same_as_fresh(editor, "# every declaration moves\n" + text)
+    same_as_fresh(editor, text.replace("{", "{ )", 1))
+    same_as_fresh(editor, text)
+
+
+PIECES = st.sampled_from(["", "\n", " ", "{", "}", "(", ")", "///doc\n", "# c\n", "x", "1", '"', "..", ".0",
+                          "\nconst k = 3\n", "\nstate s: int = 0\n", "unit \"mm\" ", " + 1", "round(", "float",
+                          "int", "primitive p() on link pack \"B\" (1)\n", "interface i() { p() }\n", "set_1(2)"])
+
+
+def edits(data: st.DataObject, text: str) -> str:
+    start = data.draw(st.integers(0, len(text)))
+    end = data.draw(st.integers(start, min(len(text), start + 200)))
+    return text[:start] + "".join(data.draw(st.lists(PIECES, max_size=4))) + text[end:]
+
+
+@settings(max_examples=fuzz_examples(20), deadline=None)
+@given(name=st.sampled_from(sorted(EXAMPLES)), data=st.data())
+def test_any_edits_of_an_example_check_as_a_fresh_check(name: str, data: st.DataObject) -> None:
+    editor = Editor(str(ROOT / "examples" / name))
+    text = EXAMPLES[name]
+    same_as_fresh(editor, text)
+    for _ in range(data.draw(st.integers(1, 3))):
+        text = edits(data, text)
+        same_as_fresh(editor, text)
+
+
+@settings(max_examples=fuzz_examples(3), deadline=None)
+@given(data=st.data())
+def test_any_edits_of_the_large_description_check_as_a_fresh_check(data: st.DataObject) -> None:
+    editor = Editor("/nonexistent/big.rdis")
+    text = BIG
+    same_as_fresh(editor, text)
+    for _ in range(data.draw(st.integers(1, 3))):
+        text = edits(data, text)
+        same_as_fresh(editor, text)
+
+
+def test_what_a_reused_check_read_still_counts_as_used(tmp_path: Path) -> None:
+    editor = Editor(str(tmp_path / "big.rdis"))
+    text = BIG.replace("state last: int = 0", "state last: int = 0\nstate speed: int = 0").replace(
+        "set_9(round(value * 1000))", "set_9(speed)")  # `speed` read by move_9 only
+    same_as_fresh(editor, text)
+    same_as_fresh(editor, text.replace("0..1000", "0..1001", 1))  # move_9 kept: `speed` is still read (no W103)
+    assert editor.memo.reused == 2 * 165 - 2
+
+
+def test_a_description_over_the_token_budget_is_refused_as_by_a_fresh_check(tmp_path: Path) -> None:
+    editor = Editor(str(tmp_path / "big.rdis"))
+    same_as_fresh(editor, BIG)
+    with token_budget(5000):  # the description has about 8,000
+        same_as_fresh(editor, BIG)
+        assert [d.code for d in editor.check(BIG).diagnostics.items] == ["E005"]
+    same_as_fresh(editor, BIG)
+
+
+def test_interfaces_near_the_bound_of_all_calls_are_checked_each_time_and_once(tmp_path: Path,
+                                                                              monkeypatch: pytest.MonkeyPatch) -> None:
+    from rdisc.semantics.check import interfaces, memo
+
+    for module in (interfaces, memo):  # bounds made small, so the test is quick
+        monkeypatch.setattr(module, "MAX_UNROLLED", 300)
+        monkeypatch.setattr(module, "MAX_UNROLLED_ALL", 700)
+    text = BIG.replace("interface move_1(value: float) {", "interface move_1(value: float) {\n    for i in 0..249 { set_0(1) }") \
+        .replace("interface move_2(value: float) {", "interface move_2(value: float) {\n    for i in 0..249 { set_0(1) }") \
+        .replace("interface move_3(value: float) {", "interface move_3(value: float) {\n    for i in 0..198 { set_0(1) }")
+    editor = Editor(str(tmp_path / "big.rdis"))
+    same_as_fresh(editor, text)
+    assert [d.code for d in editor.check(text).diagnostics.items] == ["E212"]  # move_3: 503 calls before it, 199 in its loop
+    same_as_fresh(editor, text.replace("0..198", "0..189"))  # 693: within the bound
+    assert [d.code for d in editor.check(text.replace("0..198", "0..189")).diagnostics.items] == []
