@@ -185,7 +185,9 @@ def test_signals_leave_the_robot_stopped(node_file: Path, dds_env: dict[str, str
     with CreateEmulator() as device:
         node = _start_node(node_file, dds_env, device)
         printed = device.signal_once_open(node, after, signals, 0.01)
-        assert node.returncode == status, printed
+    # On a loaded machine both signals may be pending when the interpreter looks, and CPython then
+    # handles them in the order of their numbers (SIGINT first), as tests/runtime/test_signals.py says.
+    assert node.returncode in {status, *(130 for s in signals[1:] if s == signal.SIGINT)}, printed
 
 
 ARM_JOINTS = ["waist", "shoulder", "elbow", "wrist_pitch", "wrist_roll", "gripper"]
