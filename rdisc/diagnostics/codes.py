@@ -632,6 +632,14 @@ field's value. With n states (`state`, one row of n numbers) and k values measur
 `noise` (R) k by k; covariances (P, Q, R) are symmetric and not negative on their
 diagonals. Each word is given once. Wrong: `measurement [1, 0; 0, 1]` for a
 number field. Right: `measurement [1, 0]`."""),
+    ("E733", "covariance-not-semidefinite", """
+A covariance (an output's `noise FIELD [ ... ]`, a Kalman filter's `covariance`,
+`process` or `noise`) must be positive semi-definite: no combination of the
+values it describes may have a negative variance. A square, symmetric matrix with
+no negative variance on its diagonal can still fail: an off-diagonal value larger
+than the square root of the product of its row's and column's variances. Wrong:
+`noise position [1, 2; 2, 1]` (x - y would have variance -2). Right: `noise
+position [1, 0.5; 0.5, 1]`."""),
     # -- warnings --------------------------------------------------------------
     ("W102", "untriggered-output", """
 No interface triggers this output, so it is never delivered. An interface

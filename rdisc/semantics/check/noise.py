@@ -44,8 +44,31 @@ def _size(found: m.AdapterField) -> int | None:
     return (found.type.size or None) if isinstance(found.type, m.Array) else 1
 
 
+def _semidefinite(rows: m.Rows) -> bool:
+    """Whether a symmetric matrix is positive semi-definite: its LDL' factors' pivots are none
+    negative (to a tolerance relative to its largest value), and a zero pivot's column is zero."""
+    size = len(rows)
+    scale = max((abs(v) for row in rows for v in row), default=0.0) or 1.0
+    tolerance = 1e-12 * scale * size
+    a = [list(row) for row in rows]
+    for k in range(size):
+        pivot = a[k][k]
+        if pivot < -tolerance:
+            return False
+        if pivot <= tolerance:
+            if any(abs(a[i][k]) > tolerance for i in range(k + 1, size)):
+                return False
+            continue
+        for i in range(k + 1, size):
+            factor = a[i][k] / pivot
+            for j in range(k + 1, size):
+                a[i][j] -= factor * a[k][j]
+    return True
+
+
 def _covariance(d: Diagnostics, code: str, rows: m.Rows, span: Span | None, what: str) -> bool:
-    """Whether rows are a covariance: square, symmetric, none negative on the diagonal."""
+    """Whether rows are a covariance: square, symmetric, none negative on the diagonal, and
+    positive semi-definite (E733: no direction of the values has a negative variance)."""
     size = len(rows)
     if any(len(row) != size for row in rows):
         d.report(code, span, f"{what} is not square: {size} rows of {', '.join(str(len(r)) for r in rows)}")
@@ -59,6 +82,11 @@ def _covariance(d: Diagnostics, code: str, rows: m.Rows, span: Span | None, what
                 d.report(code, span, f"{what} is not symmetric: row {i + 1}, column {j + 1} is {rows[i][j]!r}, "
                          f"row {j + 1}, column {i + 1} {rows[j][i]!r}")
                 return False
+    if not _semidefinite(rows):
+        d.report("E733", span, f"{what} is not positive semi-definite: some combination of its values "
+                 "would have a negative variance", help="each off-diagonal value is at most the square root "
+                 "of the product of its row's and its column's variances")
+        return False
     return True
 
 
