@@ -90,6 +90,7 @@ def _state(s: m.StateVariable) -> JsonObject:
         ("name", s.name),
         ("type", s.type.value),
         ("value", _embedded(m.Const(s.initial, s.type)) if s.initial != () else None),  # an open array starts empty
+        ("noise", None if s.noise is None else {k: v for k, v in _noise(s.noise).items() if k != "field"}),
         ("doc", s.doc),
     )
 

@@ -53,7 +53,7 @@ _SECTIONS = {  # list member: (its elements in words, the RDIS keyword declaring
     "joints": ("a joint", "joint"),
     "transmissions": ("a transmission", "transmission"),
 }
-_STATE = ("name", "type", "value", "doc")
+_STATE = ("name", "type", "value", "noise", "doc")
 _SENSOR = ("name", "type", "primitive", "cache", "doc")
 _SETTING = ("name", "type", "range", "value", "doc")
 THREADINGS = ("singleThreading", "dualThreading", "multipleThreading")  # the threading models, one a connection
@@ -201,7 +201,7 @@ class Importer(Primitives, Interfaces, Body):
         init = None if "value" not in m else self.expr(m["value"], type_text(type_) if type_ else None)
         if name is None or type_ is None:
             return None
-        return ast.StateDecl(name, type_, init, obj.span, self.doc(m))
+        return ast.StateDecl(name, type_, init, obj.span, self.doc(m), self.state_noise(m.get("noise"), name))
 
     def sensor(self, obj: JObject) -> ast.SensorDecl | None:
         """`{"name", "type", "primitive", "cache"}`: the cache time in ms."""

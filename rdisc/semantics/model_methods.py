@@ -490,16 +490,18 @@ def _init_StateVariable(
     initial: Any,
     doc: Any = DEFAULT,
     span: Any = DEFAULT,
+    noise: Any = DEFAULT,
 ) -> None:
     _set(self, "name", name)
     _set(self, "type", type)
     _set(self, "initial", initial)
     _set(self, "doc", doc)
     _set(self, "span", span)
+    _set(self, "noise", noise)
 
 
 def _repr_StateVariable(self: Any) -> str:
-    return f"{self.__class__.__qualname__}(name={self.name!r}, type={self.type!r}, initial={self.initial!r}, doc={self.doc!r})"
+    return f"{self.__class__.__qualname__}(name={self.name!r}, type={self.type!r}, initial={self.initial!r}, doc={self.doc!r}, noise={self.noise!r})"
 
 
 def _eq_StateVariable(self: Any, other: Any) -> Any:
@@ -509,17 +511,19 @@ def _eq_StateVariable(self: Any, other: Any) -> Any:
             self.type,
             self.initial,
             self.doc,
+            self.noise,
         ) == (
             other.name,
             other.type,
             other.initial,
             other.doc,
+            other.noise,
         )
     return NotImplemented
 
 
 def _hash_StateVariable(self: Any) -> int:
-    return hash((self.name, self.type, self.initial, self.doc))
+    return hash((self.name, self.type, self.initial, self.doc, self.noise))
 
 
 def _init_Sensor(
@@ -2801,6 +2805,7 @@ WRITTEN: dict[str, Written] = {
             ("initial", MISSING),
             ("doc", DEFAULT),
             ("span", FieldSpec(None, MISSING, False, False)),
+            ("noise", DEFAULT),
         ),
         {
             "__init__": _init_StateVariable,

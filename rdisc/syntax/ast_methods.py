@@ -524,26 +524,40 @@ def _init_StateDecl(
     init: Any,
     span: Any = DEFAULT,
     doc: Any = DEFAULT,
+    noise: Any = DEFAULT,
 ) -> None:
     _set(self, "name", name)
     _set(self, "type", type)
     _set(self, "init", init)
     _set(self, "span", span)
     _set(self, "doc", doc)
+    _set(self, "noise", noise)
 
 
 def _repr_StateDecl(self: Any) -> str:
-    return f"{self.__class__.__qualname__}(name={self.name!r}, type={self.type!r}, init={self.init!r}, doc={self.doc!r})"
+    return f"{self.__class__.__qualname__}(name={self.name!r}, type={self.type!r}, init={self.init!r}, doc={self.doc!r}, noise={self.noise!r})"
 
 
 def _eq_StateDecl(self: Any, other: Any) -> Any:
     if other.__class__ is self.__class__:
-        return (self.name, self.type, self.init, self.doc) == (other.name, other.type, other.init, other.doc)
+        return (
+            self.name,
+            self.type,
+            self.init,
+            self.doc,
+            self.noise,
+        ) == (
+            other.name,
+            other.type,
+            other.init,
+            other.doc,
+            other.noise,
+        )
     return NotImplemented
 
 
 def _hash_StateDecl(self: Any) -> int:
-    return hash((self.name, self.type, self.init, self.doc))
+    return hash((self.name, self.type, self.init, self.doc, self.noise))
 
 
 def _init_SensorDecl(
@@ -2635,6 +2649,7 @@ WRITTEN: dict[str, Written] = {
             ("init", MISSING),
             ("span", FieldSpec(None, MISSING, False, False)),
             ("doc", DEFAULT),
+            ("noise", DEFAULT),
         ),
         {
             "__init__": _init_StateDecl,

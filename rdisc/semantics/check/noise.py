@@ -93,28 +93,41 @@ def _covariance(d: Diagnostics, code: str, rows: m.Rows, span: Span | None, what
 def noise(d: Diagnostics, given: ast.FieldNoise, adapter: m.Adapter) -> m.Noise | None:
     """A field's noise: a deviation (its square the variance) in the field's unit, or a covariance."""
     found = _field(d, "E731", given.field, adapter)
-    if found is None:
+    return None if found is None else _error(d, given, found.name, found.type, found.unit, "field")
+
+
+def state_noise(d: Diagnostics, given: ast.FieldNoise, variable: m.StateVariable) -> m.Noise | None:
+    """A state variable's noise: the error of the values a device reports into it, in its units."""
+    type_ = variable.type
+    if (type_.element if isinstance(type_, m.Array) else type_) not in (Type.INT, Type.FLOAT):
+        d.report("E731", given.span, f"state variable `{variable.name}` is {type_.value}, not numbers: it has no noise")
         return None
+    return _error(d, given, variable.name, type_, None, "state variable")
+
+
+def _error(d: Diagnostics, given: ast.FieldNoise, name: str, type_: m.AnyType, expected: str | None,
+           what: str) -> m.Noise | None:
+    """A noise of the values named `name`: a deviation in their unit (`expected`), or a covariance."""
     unit = None if given.unit is None else given.unit.value
-    if unit is not None and found.unit is not None and unit != found.unit:
+    if unit is not None and expected is not None and unit != expected:
         d.report("E731", given.unit.span if given.unit else given.span,
-                 f"noise of `{found.name}` is in \"{unit}\", the field in \"{found.unit}\"",
-                 help=f"write the deviation in \"{found.unit}\"")
+                 f"noise of `{name}` is in \"{unit}\", the {what} in \"{expected}\"",
+                 help=f"write the deviation in \"{expected}\"")
         return None
     if isinstance(given.value, float):
         if given.value < 0:
-            d.report("E731", given.span, f"noise of `{found.name}` is a deviation of {given.value!r}: not negative")
+            d.report("E731", given.span, f"noise of `{name}` is a deviation of {given.value!r}: not negative")
             return None
-        return m.Noise(found.name, ((given.value * given.value,),), given.value, unit, given.span)
+        return m.Noise(name, ((given.value * given.value,),), given.value, unit, given.span)
     rows = given.value.rows
-    if not _covariance(d, "E731", rows, given.value.span, f"the covariance of `{found.name}`"):
+    if not _covariance(d, "E731", rows, given.value.span, f"the covariance of `{name}`"):
         return None
-    size = _size(found)
+    size = (type_.size or None) if isinstance(type_, m.Array) else 1
     if size is not None and size != len(rows):
-        d.report("E731", given.value.span, f"the covariance of `{found.name}` is {len(rows)} by {len(rows)}, "
-                 f"the field {size} value{'s' * (size != 1)}")
+        d.report("E731", given.value.span, f"the covariance of `{name}` is {len(rows)} by {len(rows)}, "
+                 f"the {what} {size} value{'s' * (size != 1)}")
         return None
-    return m.Noise(found.name, rows, None, unit, given.span)
+    return m.Noise(name, rows, None, unit, given.span)
 
 
 def kalman(d: Diagnostics, given: ast.FieldFilter, adapter: m.Adapter) -> m.Kalman | None:
