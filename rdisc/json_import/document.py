@@ -54,7 +54,7 @@ _SECTIONS = {  # list member: (its elements in words, the RDIS keyword declaring
     "transmissions": ("a transmission", "transmission"),
 }
 _STATE = ("name", "type", "value", "noise", "doc")
-_SENSOR = ("name", "type", "primitive", "cache", "doc")
+_SENSOR = ("name", "type", "primitive", "cache", "noise", "doc")
 _SETTING = ("name", "type", "range", "value", "doc")
 THREADINGS = ("singleThreading", "dualThreading", "multipleThreading")  # the threading models, one a connection
 _CONNECTION = (
@@ -212,7 +212,8 @@ class Importer(Primitives, Interfaces, Body):
         cache = self.required(obj, m, "cache", "a sensor", lambda v, _: self.expr(v, "float"))
         if name is None or type_ is None or primitive is None or cache is None:
             return None
-        return ast.SensorDecl(name, type_, primitive, ast.Duration(cache, "ms", cache.span), obj.span, self.doc(m))
+        return ast.SensorDecl(name, type_, primitive, ast.Duration(cache, "ms", cache.span), obj.span, self.doc(m),
+                              self.state_noise(m.get("noise"), name))
 
     def setting(self, obj: JObject) -> ast.SettingDecl | None:
         m = self.members(obj, "a setting", _SETTING)

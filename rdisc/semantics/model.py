@@ -306,6 +306,7 @@ class Sensor:
     cache_ms: float
     doc: str | None = None
     span: Span | None = _span
+    noise: Noise | None = None  # the error of the value it reads (thesis §7.2.3)
 
 
 @dataclass(frozen=True, slots=True)

@@ -16,7 +16,7 @@ would answer, comes from the transmissions:
 
 A state variable that declares noise (`state present: int[2] = [512, 512] noise 3`) has
 seeded Gaussian noise of its deviation (each element's, for a covariance) added to each such
-value, rounded where the reply holds an int: the same seed gives the same replies, and a
+value, and a sensor that does to the one value its primitive's reply holds, rounded where the reply holds an int: the same seed gives the same replies, and a
 simulated run scatters as a real one does.
 
 Then `expect` and the post-actions run on that reply as on a real one, so state,
@@ -148,6 +148,8 @@ class Simulation:
         self._noise = random.Random(0 if seed is None else seed)  # the declared noise's draws, one per value
         self._deviations = {s.name: [math.sqrt(row[i]) for i, row in enumerate(s.noise.covariance)]
                             for s in model.states.values() if s.noise is not None}
+        self._read_noise: dict[str, float] = {s.primitive: math.sqrt(s.noise.covariance[0][0])  # a sensor's one value
+                            for s in model.sensors.values() if s.noise is not None}
         if seed is not None:
             jitter = random.Random(seed)
             for joint in model.joints.values():
@@ -330,6 +332,9 @@ class Simulation:
             if deviations is not None:
                 element = index if isinstance(index, int) and 0 <= index < len(deviations) else 0
                 values[s.out] = self._noisy(values[s.out], deviations[element])
+        read = self._read_noise.get(plan.name)
+        if read is not None and values:
+            values[0] = self._noisy(values[0], read)
         return values
 
     def _noisy(self, value: Any, deviation: float) -> Any:

@@ -292,9 +292,10 @@ class Rules:
         return c[0], None if c[1] is None else self.b.string(c[1]), self.b.span(meta)
 
     def sensor_decl(self, meta: Meta, c: list[Any]) -> ast.SensorDecl:
-        name, type_, primitive, cache = c
+        name, type_, primitive, cache, noise = c
+        made = None if noise is None else ast.FieldNoise(self.b.ident(name), noise[0], noise[1], noise[2])
         return ast.SensorDecl(self.b.ident(name), self.b.type_ref(type_), self.b.ident(primitive), cache,
-                              self.b.span(meta), self.b.doc(meta))
+                              self.b.span(meta), self.b.doc(meta), made)
 
     def setting_decl(self, meta: Meta, c: list[Any]) -> ast.SettingDecl:
         name, type_, low, high, default = c

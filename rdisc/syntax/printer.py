@@ -82,7 +82,8 @@ def _code(d: ast.Decl) -> list[str]:
             noise = "" if d.noise is None else f" noise {_error(d.noise)}"
             return [f"state {name.text}: {print_type(type_)}{value}{noise}"]
         case ast.SensorDecl(name, type_, primitive, cache):
-            return [f"sensor {name.text}: {print_type(type_)} from {primitive.text}() cache {_duration(cache)}"]
+            noise = "" if d.noise is None else f" noise {_error(d.noise)}"
+            return [f"sensor {name.text}: {print_type(type_)} from {primitive.text}() cache {_duration(cache)}{noise}"]
         case ast.SettingDecl(name, type_, default, _, _, low, high):
             bounds = "" if low is None or high is None else f" in {print_expr(low)}..{print_expr(high)}"
             value = "" if default is None else f" = {print_expr(default)}"

@@ -77,3 +77,27 @@ def test_state_noise_goes_through_json_and_back(tmp_path: Path) -> None:
     assert states["level"]["noise"] == {"deviation": 0.5, "unit": "mm"}
     assert states["pair"]["noise"] == {"covariance": [[1, 0.5], [0.5, 1]]}
     assert "noise" not in states["plain"]
+
+
+SENSOR = '''robot ranger { author "t" }
+connection port: serial { baud 9600 }
+primitive distance() on port pack "B" (1) unpack "<f"
+sensor range_m: float from distance() cache 100 ms noise 0.01 "m"
+output range: Range { distance = range_m }
+interface watch() triggers range {}
+'''
+
+
+def test_a_sensor_declares_noise_checked_printed_and_through_json(tmp_path: Path) -> None:
+    compilation, built = through_json(SENSOR, tmp_path, "ranger")
+    assert compilation.model is not None
+    noise = compilation.model.sensors["range_m"].noise
+    assert noise is not None and (noise.deviation, noise.unit, noise.covariance) == (0.01, "m", ((0.0001,),))
+    (sensor,) = json.loads(built)["sensors"]
+    assert sensor["noise"] == {"deviation": 0.01, "unit": "m"}
+    first = parse("a.rdis", SENSOR, Diagnostics())
+    printed = print_module(first)
+    assert 'sensor range_m: float from distance() cache 100 ms noise 0.01 "m"\n' in printed
+    assert parse("b.rdis", printed, Diagnostics()).decls == first.decls
+    assert errors(tmp_path, SENSOR.replace("noise 0.01", "noise -0.01")) == [
+        ("E731", 'noise -0.01 "m"', "noise of `range_m` is a deviation of -0.01: not negative")]

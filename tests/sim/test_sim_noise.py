@@ -80,3 +80,23 @@ def test_the_same_seed_gives_the_same_replies(tmp_path: Path) -> None:
 def test_without_noise_the_replies_do_not_scatter(tmp_path: Path) -> None:
     readings = _readings("runtime", ARM.read_text(encoding="utf-8"), tmp_path, seed=None)
     assert set(readings) == {(512, 512)}  # no seed: every joint at zero
+
+
+SENSOR = '''
+primitive temperature() on bus pack ">BB" (3, 0) unpack ">H"
+sensor warmth: int from temperature() cache 1 ms noise 2
+'''
+
+
+def test_a_sensors_reads_scatter_by_its_declared_deviation(tmp_path: Path) -> None:
+    text = ARM.read_text(encoding="utf-8") + SENSOR
+    impl = implementation_of("runtime", text, tmp_path, "warm_arm")
+    robot = impl.connect(sim=Simulation(_model(text, tmp_path), seed=2))
+    try:
+        values = []
+        for _ in range(READS):
+            robot.run_for(0.002)  # older than its cache time: each read asks the simulation
+            values.append(robot.sensors.warmth)
+    finally:
+        robot.close()
+    assert abs(_deviation(values) - math.sqrt(4 + 1 / 12)) < 0.3

@@ -179,9 +179,9 @@ class Declarations(Pieces):
                     initial = m.coerce(value, type_)
         made = m.StateVariable(decl.name.text, type_, initial, decl.doc, decl.span)  # type: ignore[arg-type]
         if decl.noise is not None and type_ is not None:
-            from rdisc.semantics.check.noise import state_noise  # only for a description that states noise
+            from rdisc.semantics.check.noise import value_noise  # only for a description that states noise
             made = m.StateVariable(made.name, made.type, made.initial, made.doc, made.span,
-                                   state_noise(self.d, decl.noise, made))
+                                   value_noise(self.d, decl.noise, made.name, made.type, "state variable"))
         return made
 
     def user_setting(self, decl: ast.SettingDecl) -> m.Setting:

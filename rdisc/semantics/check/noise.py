@@ -96,13 +96,12 @@ def noise(d: Diagnostics, given: ast.FieldNoise, adapter: m.Adapter) -> m.Noise 
     return None if found is None else _error(d, given, found.name, found.type, found.unit, "field")
 
 
-def state_noise(d: Diagnostics, given: ast.FieldNoise, variable: m.StateVariable) -> m.Noise | None:
-    """A state variable's noise: the error of the values a device reports into it, in its units."""
-    type_ = variable.type
+def value_noise(d: Diagnostics, given: ast.FieldNoise, name: str, type_: m.AnyType, what: str) -> m.Noise | None:
+    """A state variable's or a sensor's noise: the error of the values a device reports into it."""
     if (type_.element if isinstance(type_, m.Array) else type_) not in (Type.INT, Type.FLOAT):
-        d.report("E731", given.span, f"state variable `{variable.name}` is {type_.value}, not numbers: it has no noise")
+        d.report("E731", given.span, f"{what} `{name}` is {type_.value}, not numbers: it has no noise")
         return None
-    return _error(d, given, variable.name, type_, None, "state variable")
+    return _error(d, given, name, type_, None, what)
 
 
 def _error(d: Diagnostics, given: ast.FieldNoise, name: str, type_: m.AnyType, expected: str | None,
