@@ -621,8 +621,10 @@ square), or a covariance over an array's values (`noise position [0.0001, 0; 0,
 0.0001]`, rows apart by `;`). The field is one of the adapter's number fields,
 given noise once; a deviation is not negative and its unit is the field's; a
 covariance is square, as large as the field's values, symmetric, and no variance
-on its diagonal is negative. Wrong: `noise distance 0.01 "mm"` for a field in
-"m". Right: `noise distance 0.00001 "m"`."""),
+on its diagonal is negative. A state variable or a sensor of numbers states its
+own the same way after its declaration (`state level: float = 0.0 noise 0.5 "mm"`,
+`sensor gyro: float from read_gyro() cache 20 ms noise 0.01`). Wrong: `noise
+distance 0.01 "mm"` for a field in "m". Right: `noise distance 0.00001 "m"`."""),
     ("E732", "kalman-filter", """
 `filter FIELD kalman { ... }` publishes a field as a linear Kalman filter's
 estimate: each delivery predicts (x = F x, P = F P F' + Q) and updates with the
