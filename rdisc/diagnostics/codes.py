@@ -652,8 +652,10 @@ square), or a covariance over an array's values (`noise position [0.0001, 0; 0,
 0.0001]`, rows apart by `;`). The field is one of the adapter's number fields,
 given noise once; a deviation is not negative and its unit is the field's; a
 covariance is square, as large as the field's values, symmetric, and no variance
-on its diagonal is negative. Wrong: `noise distance 0.01 "mm"` for a field in
-"m". Right: `noise distance 0.00001 "m"`."""),
+on its diagonal is negative. A state variable or a sensor of numbers states its
+own the same way after its declaration (`state level: float = 0.0 noise 0.5 "mm"`,
+`sensor gyro: float from read_gyro() cache 20 ms noise 0.01`). Wrong: `noise
+distance 0.01 "mm"` for a field in "m". Right: `noise distance 0.00001 "m"`."""),
     ("E732", "kalman-filter", """
 `filter FIELD kalman { ... }` publishes a field as a linear Kalman filter's
 estimate: each delivery predicts (x = F x, P = F P F' + Q) and updates with the
@@ -663,6 +665,14 @@ field's value. With n states (`state`, one row of n numbers) and k values measur
 `noise` (R) k by k; covariances (P, Q, R) are symmetric and not negative on their
 diagonals. Each word is given once. Wrong: `measurement [1, 0; 0, 1]` for a
 number field. Right: `measurement [1, 0]`."""),
+    ("E733", "covariance-not-semidefinite", """
+A covariance (an output's `noise FIELD [ ... ]`, a Kalman filter's `covariance`,
+`process` or `noise`) must be positive semi-definite: no combination of the
+values it describes may have a negative variance. A square, symmetric matrix with
+no negative variance on its diagonal can still fail: an off-diagonal value larger
+than the square root of the product of its row's and column's variances. Wrong:
+`noise position [1, 2; 2, 1]` (x - y would have variance -2). Right: `noise
+position [1, 0.5; 0.5, 1]`."""),
     # -- warnings --------------------------------------------------------------
     ("W102", "untriggered-output", """
 No interface triggers this output, so it is never delivered. An interface

@@ -28,7 +28,7 @@ from rdisc.emit.writer import Writer
 from rdisc.lowering import messages
 from rdisc.semantics import model as m
 from rdisc.semantics import ros
-from rdisc.semantics.covariance import covariances
+from rdisc.semantics.covariance import carried, covariances
 from rdisc.semantics.model import Type
 
 IGNORE = "  # type: ignore[import-not-found, import-untyped, unused-ignore]"  # Debian's ROS (and rdisc) have no types
@@ -154,7 +154,7 @@ class Bridge:
                 w.line(f'"""A {adapter.ros} filled with the fields of output {o.name}."""')
                 for f in adapter.fields:
                     w.line(_write("msg", f.ros or f.name, f"contents[{quoted(f.name)}]"))
-                for path, rows in covariances(adapter, o.noise):  # the declared noise, row by row
+                for path, rows in covariances(adapter, carried(self.model, o)):  # the declared noise, row by row
                     w.line(f"msg.{path} = [")
                     with w.indented():
                         w.lines([", ".join(literal(value, Type.FLOAT).text for value in row) + "," for row in rows])

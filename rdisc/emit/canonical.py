@@ -91,13 +91,14 @@ def _state(s: m.StateVariable) -> JsonObject:
         ("name", s.name),
         ("type", s.type.value),
         ("value", _embedded(m.Const(s.initial, s.type)) if s.initial != () else None),  # an open array starts empty
+        ("noise", _value_noise(s.noise)),
         ("doc", s.doc),
     )
 
 
 def _sensor(s: m.Sensor) -> JsonObject:
     return _object(("name", s.name), ("type", s.type.value), ("primitive", s.primitive), ("cache", _number(s.cache_ms)),
-                   ("doc", s.doc))
+                   ("noise", _value_noise(s.noise)), ("doc", s.doc))
 
 
 def _setting(s: m.Setting) -> JsonObject:
@@ -389,6 +390,11 @@ def _noise(n: m.Noise) -> JsonObject:
     if n.deviation is not None:
         return _object(("field", n.field), ("deviation", _number(n.deviation)), ("unit", n.unit))
     return _object(("field", n.field), ("covariance", _rows(n.covariance)), ("unit", n.unit))
+
+
+def _value_noise(n: m.Noise | None) -> JsonObject | None:
+    """A state variable's or a sensor's noise: an output field's without the field, which is its name."""
+    return None if n is None else {k: v for k, v in _noise(n).items() if k != "field"}
 
 
 def _kalman(k: m.Kalman) -> JsonObject:

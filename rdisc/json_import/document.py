@@ -54,8 +54,8 @@ _SECTIONS = {  # list member: (its elements in words, the RDIS keyword declaring
     "transmissions": ("a transmission", "transmission"),
     "actuators": ("an actuator", "actuator"),
 }
-_STATE = ("name", "type", "value", "doc")
-_SENSOR = ("name", "type", "primitive", "cache", "doc")
+_STATE = ("name", "type", "value", "noise", "doc")
+_SENSOR = ("name", "type", "primitive", "cache", "noise", "doc")
 _SETTING = ("name", "type", "range", "value", "doc")
 THREADINGS = ("singleThreading", "dualThreading", "multipleThreading")  # the threading models, one a connection
 _CONNECTION = (
@@ -204,7 +204,7 @@ class Importer(Primitives, Interfaces, Body):
         init = None if "value" not in m else self.expr(m["value"], type_text(type_) if type_ else None)
         if name is None or type_ is None:
             return None
-        return ast.StateDecl(name, type_, init, obj.span, self.doc(m))
+        return ast.StateDecl(name, type_, init, obj.span, self.doc(m), self.state_noise(m.get("noise"), name))
 
     def sensor(self, obj: JObject) -> ast.SensorDecl | None:
         """`{"name", "type", "primitive", "cache"}`: the cache time in ms."""
@@ -215,7 +215,8 @@ class Importer(Primitives, Interfaces, Body):
         cache = self.required(obj, m, "cache", "a sensor", lambda v, _: self.expr(v, "float"))
         if name is None or type_ is None or primitive is None or cache is None:
             return None
-        return ast.SensorDecl(name, type_, primitive, ast.Duration(cache, "ms", cache.span), obj.span, self.doc(m))
+        return ast.SensorDecl(name, type_, primitive, ast.Duration(cache, "ms", cache.span), obj.span, self.doc(m),
+                              self.state_noise(m.get("noise"), name))
 
     def setting(self, obj: JObject) -> ast.SettingDecl | None:
         m = self.members(obj, "a setting", _SETTING)

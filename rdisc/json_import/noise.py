@@ -8,7 +8,7 @@ from __future__ import annotations
 import math
 
 from rdisc.json_import.reader import Members, Reader, present
-from rdisc.json_import.values import JNumber, JValue
+from rdisc.json_import.values import JNumber, JObject, JValue
 from rdisc.semantics.check.noise import WORDS
 from rdisc.syntax import ast
 
@@ -47,17 +47,25 @@ class ErrorModels(Reader):
                 continue
             given = self.members(obj, "a noise", _NOISE)
             field = self.required(obj, given, "field", "a noise", self.ident)
-            unit = self.string(given.get("unit"), "`unit`")
-            value: float | ast.NumberRows | None = None
-            if ("deviation" in given) == ("covariance" in given):
-                self.error(self.opening(obj), "a noise has either a `deviation` or a `covariance`")
-            elif "deviation" in given:
-                value = self.number(given["deviation"], "`deviation`")
-            else:
-                value = self.rows(given["covariance"], "`covariance`")
-            strings = None if unit is None else ast.StrLit(unit.value, unit.span)
-            found.append(None if field is None or value is None else ast.FieldNoise(field, value, strings, obj.span))
+            found.append(None if field is None else self._error(obj, given, field))
         return present(found)
+
+    def state_noise(self, v: JValue | None, name: ast.Ident) -> ast.FieldNoise | None:
+        """A state variable's `"noise": {"deviation", "unit"}` (or `"covariance"`), its field its name."""
+        obj = None if v is None else self.object(v, "a noise")
+        return None if obj is None else self._error(obj, self.members(obj, "a noise", _NOISE[1:]), name)
+
+    def _error(self, obj: JObject, given: Members, field: ast.Ident) -> ast.FieldNoise | None:
+        unit = self.string(given.get("unit"), "`unit`")
+        value: float | ast.NumberRows | None = None
+        if ("deviation" in given) == ("covariance" in given):
+            self.error(self.opening(obj), "a noise has either a `deviation` or a `covariance`")
+        elif "deviation" in given:
+            value = self.number(given["deviation"], "`deviation`")
+        else:
+            value = self.rows(given["covariance"], "`covariance`")
+        strings = None if unit is None else ast.StrLit(unit.value, unit.span)
+        return None if value is None else ast.FieldNoise(field, value, strings, obj.span)
 
     def filters(self, m: Members) -> tuple[ast.FieldFilter, ...]:
         found: list[ast.FieldFilter | None] = []

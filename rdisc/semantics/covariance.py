@@ -22,6 +22,20 @@ DIAGONALS: dict[str, tuple[str, int, int]] = {
 }
 
 
+def carried(model: m.Model, output: m.DomainOutput) -> tuple[m.Noise, ...]:
+    """An output's noise, and for each field given none that is a state variable or a sensor
+    read as it is (`distance = range_m`, no conversion to change its variance), that one's."""
+    given = {n.field for n in output.noise}
+    found = list(output.noise)
+    for field, expr in output.fields:
+        if field in given or not isinstance(expr, m.Var) or expr.scope is not m.Scope.STATE:
+            continue
+        source = model.states.get(expr.name) or model.sensors.get(expr.name)
+        if source is not None and source.noise is not None:
+            found.append(m.Noise(field, source.noise.covariance, source.noise.deviation, source.noise.unit))
+    return tuple(found)
+
+
 def covariances(adapter: m.Adapter, noise: tuple[m.Noise, ...]) -> tuple[tuple[str, m.Rows], ...]:
     """Each covariance of an output's message its noise fills (its path, its rows), in the order
     the table names them; a field's noise of one value only (a number's), on the diagonal."""

@@ -292,6 +292,7 @@ class StateVariable:
     initial: Value
     doc: str | None = None
     span: Span | None = _span
+    noise: Noise | None = None  # the error of the values a device reports into it (thesis §7.2.3)
 
 
 @dataclass(frozen=True, slots=True)
@@ -305,6 +306,7 @@ class Sensor:
     cache_ms: float
     doc: str | None = None
     span: Span | None = _span
+    noise: Noise | None = None  # the error of the value it reads (thesis §7.2.3)
 
 
 @dataclass(frozen=True, slots=True)

@@ -490,16 +490,18 @@ def _init_StateVariable(
     initial: Any,
     doc: Any = DEFAULT,
     span: Any = DEFAULT,
+    noise: Any = DEFAULT,
 ) -> None:
     _set(self, "name", name)
     _set(self, "type", type)
     _set(self, "initial", initial)
     _set(self, "doc", doc)
     _set(self, "span", span)
+    _set(self, "noise", noise)
 
 
 def _repr_StateVariable(self: Any) -> str:
-    return f"{self.__class__.__qualname__}(name={self.name!r}, type={self.type!r}, initial={self.initial!r}, doc={self.doc!r})"
+    return f"{self.__class__.__qualname__}(name={self.name!r}, type={self.type!r}, initial={self.initial!r}, doc={self.doc!r}, noise={self.noise!r})"
 
 
 def _eq_StateVariable(self: Any, other: Any) -> Any:
@@ -509,17 +511,19 @@ def _eq_StateVariable(self: Any, other: Any) -> Any:
             self.type,
             self.initial,
             self.doc,
+            self.noise,
         ) == (
             other.name,
             other.type,
             other.initial,
             other.doc,
+            other.noise,
         )
     return NotImplemented
 
 
 def _hash_StateVariable(self: Any) -> int:
-    return hash((self.name, self.type, self.initial, self.doc))
+    return hash((self.name, self.type, self.initial, self.doc, self.noise))
 
 
 def _init_Sensor(
@@ -530,6 +534,7 @@ def _init_Sensor(
     cache_ms: Any,
     doc: Any = DEFAULT,
     span: Any = DEFAULT,
+    noise: Any = DEFAULT,
 ) -> None:
     _set(self, "name", name)
     _set(self, "type", type)
@@ -537,10 +542,11 @@ def _init_Sensor(
     _set(self, "cache_ms", cache_ms)
     _set(self, "doc", doc)
     _set(self, "span", span)
+    _set(self, "noise", noise)
 
 
 def _repr_Sensor(self: Any) -> str:
-    return f"{self.__class__.__qualname__}(name={self.name!r}, type={self.type!r}, primitive={self.primitive!r}, cache_ms={self.cache_ms!r}, doc={self.doc!r})"
+    return f"{self.__class__.__qualname__}(name={self.name!r}, type={self.type!r}, primitive={self.primitive!r}, cache_ms={self.cache_ms!r}, doc={self.doc!r}, noise={self.noise!r})"
 
 
 def _eq_Sensor(self: Any, other: Any) -> Any:
@@ -551,18 +557,20 @@ def _eq_Sensor(self: Any, other: Any) -> Any:
             self.primitive,
             self.cache_ms,
             self.doc,
+            self.noise,
         ) == (
             other.name,
             other.type,
             other.primitive,
             other.cache_ms,
             other.doc,
+            other.noise,
         )
     return NotImplemented
 
 
 def _hash_Sensor(self: Any) -> int:
-    return hash((self.name, self.type, self.primitive, self.cache_ms, self.doc))
+    return hash((self.name, self.type, self.primitive, self.cache_ms, self.doc, self.noise))
 
 
 def _init_Setting(
@@ -2926,6 +2934,7 @@ WRITTEN: dict[str, Written] = {
             ("initial", MISSING),
             ("doc", DEFAULT),
             ("span", FieldSpec(None, MISSING, False, False)),
+            ("noise", DEFAULT),
         ),
         {
             "__init__": _init_StateVariable,
@@ -2942,6 +2951,7 @@ WRITTEN: dict[str, Written] = {
             ("cache_ms", MISSING),
             ("doc", DEFAULT),
             ("span", FieldSpec(None, MISSING, False, False)),
+            ("noise", DEFAULT),
         ),
         {"__init__": _init_Sensor, "__repr__": _repr_Sensor, "__eq__": _eq_Sensor, "__hash__": _hash_Sensor},
     ),

@@ -14,6 +14,11 @@ would answer, comes from the transmissions:
   primitive's `expect` pins (`out[0] == 0x55`) is that value; any other is zero (an
   empty string, a "0" group of a regex).
 
+A state variable that declares noise (`state present: int[2] = [512, 512] noise 3`) has
+seeded Gaussian noise of its deviation (each element's, for a covariance) added to each such
+value, and a sensor that does to the one value its primitive's reply holds, rounded where the reply holds an int: the same seed gives the same replies, and a
+simulated run scatters as a real one does.
+
 Then `expect` and the post-actions run on that reply as on a real one, so state,
 outputs and inputs are unchanged. A primitive told to fail (`answer_error`, `rdisc sim
 --error P=CODE`) is answered with its declared `error` reply instead, raised as a device's
@@ -97,7 +102,8 @@ class Simulation:
     """The MuJoCo twin of a description's body, answering as its device would (`engine.Simulator`).
 
     `seed` moves each joint's starting position by up to JITTER, the same for the same seed
-    (None: every joint starts at zero); `realtime` runs the physics on the wall clock."""
+    (None: every joint starts at zero), and seeds the noise of state variables that declare it
+    (None: seed 0); `realtime` runs the physics on the wall clock."""
 
     def __init__(self, model: m.Model, *, seed: int | None = None, realtime: bool = False) -> None:
         import mujoco
@@ -139,6 +145,11 @@ class Simulation:
                       for p in model.primitives.values() if p.table is not None and p.table.key}
         self._listed = {p.name for p in model.primitives.values() if p.listed}  # replies by their place
         self._errors: dict[str, tuple[Any, ...]] = {}  # the error reply each primitive told to fail answers
+        self._noise = random.Random(0 if seed is None else seed)  # the declared noise's draws, one per value
+        self._deviations = {s.name: [math.sqrt(row[i]) for i, row in enumerate(s.noise.covariance)]
+                            for s in model.states.values() if s.noise is not None}
+        self._read_noise: dict[str, float] = {s.primitive: math.sqrt(s.noise.covariance[0][0])  # a sensor's one value
+                            for s in model.sensors.values() if s.noise is not None}
         if seed is not None:
             jitter = random.Random(seed)
             for joint in model.joints.values():
@@ -317,7 +328,21 @@ class Simulation:
             if measure is not None:
                 joint, quantity, to_device = measure
                 values[s.out] = to_device(self._quantity(joint, quantity))
+            deviations = self._deviations.get(s.state)
+            if deviations is not None:
+                element = index if isinstance(index, int) and 0 <= index < len(deviations) else 0
+                values[s.out] = self._noisy(values[s.out], deviations[element])
+        read = self._read_noise.get(plan.name)
+        if read is not None and values:
+            values[0] = self._noisy(values[0], read)
         return values
+
+    def _noisy(self, value: Any, deviation: float) -> Any:
+        """A reply value with the declared noise added (one draw), an int's rounded; others as they are."""
+        if isinstance(value, bool) or not isinstance(value, (int, float)):
+            return value
+        noisy = value + self._noise.gauss(0.0, deviation)
+        return round(noisy) if isinstance(value, int) else noisy
 
 
 def _replies(p: m.Primitive) -> dict[int | None, _Reply]:

@@ -231,6 +231,7 @@ class StateDecl:
     init: Expr | None
     span: Span = _span
     doc: str | None = None
+    noise: FieldNoise | None = None  # `noise 0.01 "m"`: the error of the values a device reports into it
 
 
 @dataclass(frozen=True, slots=True)
@@ -244,6 +245,7 @@ class SensorDecl:
     cache: Duration
     span: Span = _span
     doc: str | None = None
+    noise: FieldNoise | None = None  # `noise 0.01 "m"`: the error of the value it reads
 
 
 @dataclass(frozen=True, slots=True)

@@ -524,26 +524,40 @@ def _init_StateDecl(
     init: Any,
     span: Any = DEFAULT,
     doc: Any = DEFAULT,
+    noise: Any = DEFAULT,
 ) -> None:
     _set(self, "name", name)
     _set(self, "type", type)
     _set(self, "init", init)
     _set(self, "span", span)
     _set(self, "doc", doc)
+    _set(self, "noise", noise)
 
 
 def _repr_StateDecl(self: Any) -> str:
-    return f"{self.__class__.__qualname__}(name={self.name!r}, type={self.type!r}, init={self.init!r}, doc={self.doc!r})"
+    return f"{self.__class__.__qualname__}(name={self.name!r}, type={self.type!r}, init={self.init!r}, doc={self.doc!r}, noise={self.noise!r})"
 
 
 def _eq_StateDecl(self: Any, other: Any) -> Any:
     if other.__class__ is self.__class__:
-        return (self.name, self.type, self.init, self.doc) == (other.name, other.type, other.init, other.doc)
+        return (
+            self.name,
+            self.type,
+            self.init,
+            self.doc,
+            self.noise,
+        ) == (
+            other.name,
+            other.type,
+            other.init,
+            other.doc,
+            other.noise,
+        )
     return NotImplemented
 
 
 def _hash_StateDecl(self: Any) -> int:
-    return hash((self.name, self.type, self.init, self.doc))
+    return hash((self.name, self.type, self.init, self.doc, self.noise))
 
 
 def _init_SensorDecl(
@@ -554,6 +568,7 @@ def _init_SensorDecl(
     cache: Any,
     span: Any = DEFAULT,
     doc: Any = DEFAULT,
+    noise: Any = DEFAULT,
 ) -> None:
     _set(self, "name", name)
     _set(self, "type", type)
@@ -561,10 +576,11 @@ def _init_SensorDecl(
     _set(self, "cache", cache)
     _set(self, "span", span)
     _set(self, "doc", doc)
+    _set(self, "noise", noise)
 
 
 def _repr_SensorDecl(self: Any) -> str:
-    return f"{self.__class__.__qualname__}(name={self.name!r}, type={self.type!r}, primitive={self.primitive!r}, cache={self.cache!r}, doc={self.doc!r})"
+    return f"{self.__class__.__qualname__}(name={self.name!r}, type={self.type!r}, primitive={self.primitive!r}, cache={self.cache!r}, doc={self.doc!r}, noise={self.noise!r})"
 
 
 def _eq_SensorDecl(self: Any, other: Any) -> Any:
@@ -575,18 +591,20 @@ def _eq_SensorDecl(self: Any, other: Any) -> Any:
             self.primitive,
             self.cache,
             self.doc,
+            self.noise,
         ) == (
             other.name,
             other.type,
             other.primitive,
             other.cache,
             other.doc,
+            other.noise,
         )
     return NotImplemented
 
 
 def _hash_SensorDecl(self: Any) -> int:
-    return hash((self.name, self.type, self.primitive, self.cache, self.doc))
+    return hash((self.name, self.type, self.primitive, self.cache, self.doc, self.noise))
 
 
 def _init_SettingDecl(
@@ -2741,6 +2759,7 @@ WRITTEN: dict[str, Written] = {
             ("init", MISSING),
             ("span", FieldSpec(None, MISSING, False, False)),
             ("doc", DEFAULT),
+            ("noise", DEFAULT),
         ),
         {
             "__init__": _init_StateDecl,
@@ -2757,6 +2776,7 @@ WRITTEN: dict[str, Written] = {
             ("cache", MISSING),
             ("span", FieldSpec(None, MISSING, False, False)),
             ("doc", DEFAULT),
+            ("noise", DEFAULT),
         ),
         {
             "__init__": _init_SensorDecl,

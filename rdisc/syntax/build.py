@@ -283,13 +283,19 @@ class Rules:
         return ast.RobotAttr(c[0], self.b.string(c[1]).value, self.b.span(meta))
 
     def state_decl(self, meta: Meta, c: list[Any]) -> ast.StateDecl:
-        name, type_, init = c
-        return ast.StateDecl(self.b.ident(name), self.b.type_ref(type_), init, self.b.span(meta), self.b.doc(meta))
+        name, type_, init, noise = c
+        made = None if noise is None else ast.FieldNoise(self.b.ident(name), noise[0], noise[1], noise[2])
+        return ast.StateDecl(self.b.ident(name), self.b.type_ref(type_), init, self.b.span(meta), self.b.doc(meta),
+                             made)
+
+    def state_noise(self, meta: Meta, c: list[Any]) -> tuple[float | ast.NumberRows, ast.StrLit | None, Span]:
+        return c[0], None if c[1] is None else self.b.string(c[1]), self.b.span(meta)
 
     def sensor_decl(self, meta: Meta, c: list[Any]) -> ast.SensorDecl:
-        name, type_, primitive, cache = c
+        name, type_, primitive, cache, noise = c
+        made = None if noise is None else ast.FieldNoise(self.b.ident(name), noise[0], noise[1], noise[2])
         return ast.SensorDecl(self.b.ident(name), self.b.type_ref(type_), self.b.ident(primitive), cache,
-                              self.b.span(meta), self.b.doc(meta))
+                              self.b.span(meta), self.b.doc(meta), made)
 
     def setting_decl(self, meta: Meta, c: list[Any]) -> ast.SettingDecl:
         name, type_, low, high, default = c

@@ -79,9 +79,11 @@ def _code(d: ast.Decl) -> list[str]:
             return _block(f"robot {name.text}", [f"{a.key} {p.quote(a.value)}" for a in attrs])
         case ast.StateDecl(name, type_, init):
             value = "" if init is None else f" = {print_expr(init)}"
-            return [f"state {name.text}: {print_type(type_)}{value}"]
+            noise = "" if d.noise is None else f" noise {_error(d.noise)}"
+            return [f"state {name.text}: {print_type(type_)}{value}{noise}"]
         case ast.SensorDecl(name, type_, primitive, cache):
-            return [f"sensor {name.text}: {print_type(type_)} from {primitive.text}() cache {_duration(cache)}"]
+            noise = "" if d.noise is None else f" noise {_error(d.noise)}"
+            return [f"sensor {name.text}: {print_type(type_)} from {primitive.text}() cache {_duration(cache)}{noise}"]
         case ast.SettingDecl(name, type_, default, _, _, low, high):
             bounds = "" if low is None or high is None else f" in {print_expr(low)}..{print_expr(high)}"
             value = "" if default is None else f" = {print_expr(default)}"
@@ -232,9 +234,14 @@ def _numbers(value: float | ast.NumberRows) -> str:
     return "[" + "; ".join(", ".join(repr(number) for number in row) for row in value.rows) + "]"
 
 
-def _noise(noise: ast.FieldNoise) -> str:
+def _error(noise: ast.FieldNoise) -> str:
+    """A noise's deviation (or covariance) and its unit, as written after its field or state."""
     unit = "" if noise.unit is None else " " + p.quote(noise.unit.value)
-    return f"noise {noise.field.text} {_numbers(noise.value)}{unit}"
+    return f"{_numbers(noise.value)}{unit}"
+
+
+def _noise(noise: ast.FieldNoise) -> str:
+    return f"noise {noise.field.text} {_error(noise)}"
 
 
 def _filter(given: ast.FieldFilter) -> list[str]:

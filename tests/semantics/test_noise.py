@@ -100,3 +100,23 @@ def test_noise_and_filters_go_through_json_and_back(tmp_path: Path) -> None:
     assert output["filters"] == [{"field": "distance", "kalman": {
         "state": [0, 0], "covariance": [[1, 0], [0, 1]], "transition": [[1, 0.05], [0, 1]],
         "process": [[1e-06, 0], [0, 0.0001]], "measurement": [[1, 0]], "noise": [[0.0001]]}}]
+
+
+NOT_SEMIDEFINITE = ("the filter's `process` is not positive semi-definite: some combination of its values "
+                    "would have a negative variance")
+
+
+@pytest.mark.parametrize(("change", "found"), [
+    (("process [0.000001, 0; 0, 0.0001]", "process [1, 2; 2, 1]"),
+     ("E733", "[1, 2; 2, 1]", NOT_SEMIDEFINITE)),
+    (("process [0.000001, 0; 0, 0.0001]", "process [0, 1; 1, 0.5]"),  # a zero variance with a covariance
+     ("E733", "[0, 1; 1, 0.5]", NOT_SEMIDEFINITE)),
+])
+def test_a_covariance_that_is_not_semidefinite_is_refused(tmp_path: Path, change: tuple[str, str],
+                                                          found: tuple[str, str, str]) -> None:
+    assert errors(tmp_path, RANGE.replace(change[0], change[1])) == [found]
+
+
+@pytest.mark.parametrize("matrix", ["[1, 1; 1, 1]", "[0, 0; 0, 0.0001]", "[4, 1.9; 1.9, 1]"])
+def test_a_semidefinite_covariance_checks(tmp_path: Path, matrix: str) -> None:
+    assert errors(tmp_path, RANGE.replace("process [0.000001, 0; 0, 0.0001]", f"process {matrix}")) == []

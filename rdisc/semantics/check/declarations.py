@@ -177,7 +177,12 @@ class Declarations(Pieces):
                 self.flow(node, type_, decl.init.span, f"state variable `{decl.name.text}`")
                 if self.d.error_count == before:
                     initial = m.coerce(value, type_)
-        return m.StateVariable(decl.name.text, type_, initial, decl.doc, decl.span)  # type: ignore[arg-type]
+        made = m.StateVariable(decl.name.text, type_, initial, decl.doc, decl.span)  # type: ignore[arg-type]
+        if decl.noise is not None and type_ is not None:
+            from rdisc.semantics.check.noise import value_noise  # only for a description that states noise
+            made = m.StateVariable(made.name, made.type, made.initial, made.doc, made.span,
+                                   value_noise(self.d, decl.noise, made.name, made.type, "state variable"))
+        return made
 
     def user_setting(self, decl: ast.SettingDecl) -> m.Setting:
         """`setting NAME: TYPE in LOW..HIGH = DEFAULT`: a parameter of the whole description, given

@@ -44,8 +44,31 @@ def _size(found: m.AdapterField) -> int | None:
     return (found.type.size or None) if isinstance(found.type, m.Array) else 1
 
 
+def _semidefinite(rows: m.Rows) -> bool:
+    """Whether a symmetric matrix is positive semi-definite: its LDL' factors' pivots are none
+    negative (to a tolerance relative to its largest value), and a zero pivot's column is zero."""
+    size = len(rows)
+    scale = max((abs(v) for row in rows for v in row), default=0.0) or 1.0
+    tolerance = 1e-12 * scale * size
+    a = [list(row) for row in rows]
+    for k in range(size):
+        pivot = a[k][k]
+        if pivot < -tolerance:
+            return False
+        if pivot <= tolerance:
+            if any(abs(a[i][k]) > tolerance for i in range(k + 1, size)):
+                return False
+            continue
+        for i in range(k + 1, size):
+            factor = a[i][k] / pivot
+            for j in range(k + 1, size):
+                a[i][j] -= factor * a[k][j]
+    return True
+
+
 def _covariance(d: Diagnostics, code: str, rows: m.Rows, span: Span | None, what: str) -> bool:
-    """Whether rows are a covariance: square, symmetric, none negative on the diagonal."""
+    """Whether rows are a covariance: square, symmetric, none negative on the diagonal, and
+    positive semi-definite (E733: no direction of the values has a negative variance)."""
     size = len(rows)
     if any(len(row) != size for row in rows):
         d.report(code, span, f"{what} is not square: {size} rows of {', '.join(str(len(r)) for r in rows)}")
@@ -59,34 +82,51 @@ def _covariance(d: Diagnostics, code: str, rows: m.Rows, span: Span | None, what
                 d.report(code, span, f"{what} is not symmetric: row {i + 1}, column {j + 1} is {rows[i][j]!r}, "
                          f"row {j + 1}, column {i + 1} {rows[j][i]!r}")
                 return False
+    if not _semidefinite(rows):
+        d.report("E733", span, f"{what} is not positive semi-definite: some combination of its values "
+                 "would have a negative variance", help="each off-diagonal value is at most the square root "
+                 "of the product of its row's and its column's variances")
+        return False
     return True
 
 
 def noise(d: Diagnostics, given: ast.FieldNoise, adapter: m.Adapter) -> m.Noise | None:
     """A field's noise: a deviation (its square the variance) in the field's unit, or a covariance."""
     found = _field(d, "E731", given.field, adapter)
-    if found is None:
+    return None if found is None else _error(d, given, found.name, found.type, found.unit, "field")
+
+
+def value_noise(d: Diagnostics, given: ast.FieldNoise, name: str, type_: m.AnyType, what: str) -> m.Noise | None:
+    """A state variable's or a sensor's noise: the error of the values a device reports into it."""
+    if (type_.element if isinstance(type_, m.Array) else type_) not in (Type.INT, Type.FLOAT):
+        d.report("E731", given.span, f"{what} `{name}` is {type_.value}, not numbers: it has no noise")
         return None
+    return _error(d, given, name, type_, None, what)
+
+
+def _error(d: Diagnostics, given: ast.FieldNoise, name: str, type_: m.AnyType, expected: str | None,
+           what: str) -> m.Noise | None:
+    """A noise of the values named `name`: a deviation in their unit (`expected`), or a covariance."""
     unit = None if given.unit is None else given.unit.value
-    if unit is not None and found.unit is not None and unit != found.unit:
+    if unit is not None and expected is not None and unit != expected:
         d.report("E731", given.unit.span if given.unit else given.span,
-                 f"noise of `{found.name}` is in \"{unit}\", the field in \"{found.unit}\"",
-                 help=f"write the deviation in \"{found.unit}\"")
+                 f"noise of `{name}` is in \"{unit}\", the {what} in \"{expected}\"",
+                 help=f"write the deviation in \"{expected}\"")
         return None
     if isinstance(given.value, float):
         if given.value < 0:
-            d.report("E731", given.span, f"noise of `{found.name}` is a deviation of {given.value!r}: not negative")
+            d.report("E731", given.span, f"noise of `{name}` is a deviation of {given.value!r}: not negative")
             return None
-        return m.Noise(found.name, ((given.value * given.value,),), given.value, unit, given.span)
+        return m.Noise(name, ((given.value * given.value,),), given.value, unit, given.span)
     rows = given.value.rows
-    if not _covariance(d, "E731", rows, given.value.span, f"the covariance of `{found.name}`"):
+    if not _covariance(d, "E731", rows, given.value.span, f"the covariance of `{name}`"):
         return None
-    size = _size(found)
+    size = (type_.size or None) if isinstance(type_, m.Array) else 1
     if size is not None and size != len(rows):
-        d.report("E731", given.value.span, f"the covariance of `{found.name}` is {len(rows)} by {len(rows)}, "
-                 f"the field {size} value{'s' * (size != 1)}")
+        d.report("E731", given.value.span, f"the covariance of `{name}` is {len(rows)} by {len(rows)}, "
+                 f"the {what} {size} value{'s' * (size != 1)}")
         return None
-    return m.Noise(found.name, rows, None, unit, given.span)
+    return m.Noise(name, rows, None, unit, given.span)
 
 
 def kalman(d: Diagnostics, given: ast.FieldFilter, adapter: m.Adapter) -> m.Kalman | None:

@@ -40,7 +40,12 @@ class Sensors(Pieces):
             before = self.d.error_count
             self.flow(m.ReplyValue(0, slot.type), type_, decl.type.span, f"sensor `{name}`")
             if self.d.error_count == before and type_ is not None and cache is not None:
-                return m.Sensor(name, type_, m.PrimitiveRef(primitive.name), cache, decl.doc, decl.span)
+                noise = None
+                if decl.noise is not None:  # its rules imported only for a description that states noise
+                    from rdisc.semantics.check.noise import value_noise
+
+                    noise = value_noise(self.d, decl.noise, name, type_, "sensor")
+                return m.Sensor(name, type_, m.PrimitiveRef(primitive.name), cache, decl.doc, decl.span, noise)
         return None
 
 
