@@ -614,6 +614,14 @@ joint and back is itself, to one step of an int. Both are checked at 33 points o
 the joint's range with the interpreter the runtime uses. Wrong: a servo's `goal:
 int in 0..1023` with `limit -3.2..3.2` through `raw = round(position * 195.3) +
 512`. Right: `limit -2.6..2.6`."""),
+    ("E611", "massless-moving-link", """
+Every link a moving joint (revolute, continuous, prismatic) carries has its own
+`mass` and `inertia`: a simulator cannot move a body with none, and the tools
+reading the URDF do not say so (libsdformat silently gives such a link 1 kg, and
+`ign sdf -p` drops it from the SDF). A link fixed to the base, or fixed below a
+moving link that has a mass, may go without. Wrong: `link arm { visual box(0.1,
+0.1, 0.3) }` moved by `joint lift: revolute base -> arm { ... }`. Right: `link arm
+{ visual box(0.1, 0.1, 0.3)  mass 0.2  inertia [0.0016, 0.0016, 0.0003] }`."""),
     ("E731", "noise", """
 An output's `noise FIELD ...` states a field's error model (thesis section 7.2.3):
 a standard deviation and its unit (`noise distance 0.01 "m"`, the variance its

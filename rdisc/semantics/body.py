@@ -339,6 +339,21 @@ class BodyRules:
                     roots[0])
         return order
 
+    def carried(self, links: dict[str, m.Link], joints: dict[str, m.Joint]) -> None:
+        """Every link a moving joint carries has a mass and an inertia: libsdformat gives a link
+        without them 1 kg, and `ign sdf -p` drops it, so the simulated body is not this one."""
+        for joint in joints.values():
+            link = links.get(joint.child)
+            if not joint.moves() or link is None or link.inertial is not None:
+                continue
+            decl = self.s.links[link.name]
+            if any(isinstance(i, ast.BodyValue) and i.key in ("mass", "inertia") for i in decl.items):
+                continue  # given but refused: reported where it is
+            self.d.report("E611", decl.name.span, f"link `{link.name}` is moved by joint `{joint.name}` but has no "
+                          "mass and inertia", labels=(Label(self.s.joints[joint.name].child.span, "moved here"),),
+                          help="give it `mass` (kg) and `inertia` (kg m²): a simulator needs them to move it, "
+                          "and libsdformat silently gives a link without them 1 kg")
+
     def cycles(self, unreached: dict[str, m.Joint], root: str) -> None:
         """Report each cycle among links no root reaches, once, at its first joint declared: each such
         link hangs from its parent, so following parents ends on a cycle or on an unknown link."""

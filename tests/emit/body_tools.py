@@ -136,7 +136,7 @@ link base {
     mass 3.6  centre [0, 0, 0.03]  inertia [0.02, 0.02, 0.035, 0.001, -0.002, 0.0005]
 }
 link wheel { visual sphere(0.036)  collision mesh("meshes/wheel.stl", 0.001)  mass 0.1  inertia [0.001, 0.001, 0.001] }
-link arm { visual mesh("meshes/arm.dae", [1, 2, 3]) at [0.05, 0, 0] }
+link arm { visual mesh("meshes/arm.dae", [1, 2, 3]) at [0.05, 0, 0]  mass 0.2  inertia [0.001, 0.001, 0.001] }
 link slider { mass 0.05  centre [0.01, 0.02, 0.03]  inertia [0.0001, 0.0001, 0.0001] }
 link camera { }
 /// Turns the wheel -- forever.

@@ -12,7 +12,7 @@ from rdisc.compile import compile_path
 HEAD = 'robot r { author "t" }\nconnection c: serial { baud 9600 }\n'
 # A servo arm's device: a goal in 0..1023, a float speed, a string label; state read back.
 DEVICE = (
-    "link base {}\nlink arm {}\n"
+    "link base {}\nlink arm { mass 1  inertia [0.1, 0.1, 0.1] }\n"
     "joint lift: revolute base -> arm { limit -1.5..1.5 velocity 2 effort 1 axis [0, 0, 1] }\n"
     "state pos: int\nstate many: int[3]\nstate name: string\nsetting gain: float = 1.0\n"
     'primitive servo(goal: int in 0..1023, speed: float, label: string) on c pack ">Hf" (goal, speed)\n'
@@ -105,6 +105,10 @@ INERTIALS = [
        "the inertia breaks the triangle inequality: its principal moments 0.1 + 0.1 < 0.3")]),
     ("link base { mass 1 inertia [0.1, 0.1] }\n",
      [("E604", "[0.1, 0.1]", "an inertia is [ixx, iyy, izz] or [ixx, iyy, izz, ixy, ixz, iyz], not 2 numbers")]),
+    # issue 26: libsdformat gives a moving link without a mass 1 kg; one fixed to the base may go without
+    ("link base {}\nlink arm { visual box(0.1, 0.1, 0.3) }\nlink plate {}\njoint fix: fixed base -> plate {}\n"
+     "joint lift: continuous base -> arm { axis [0, 1, 0] }\n",
+     [("E611", "arm", "link `arm` is moved by joint `lift` but has no mass and inertia")]),
 ]
 
 

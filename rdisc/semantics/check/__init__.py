@@ -100,12 +100,15 @@ class Checker(Declarations, Primitives, Interfaces, Sensors):
             return {}, {}, {}
         from rdisc.semantics.body import BodyRules
 
+        errors = self.d.error_count
         body = BodyRules(self.d, self.typer, self.s, self.setting)
         links = {name: body.link(decl) for name, decl in self.s.links.items()}
         joints = {j.name: j for j in (body.joint(decl) for decl in self.s.joints.values()) if j is not None}
         joints = body.tree(links, joints)
         transmissions = {name: body.transmission(decl, joints, primitives, interface_params, states)
                          for name, decl in self.s.transmissions.items()}
+        if self.d.error_count == errors:  # a body refused otherwise is not yet one to simulate
+            body.carried(links, joints)
         return links, joints, {n: t for n, t in transmissions.items() if t is not None}
 
     def unused(self, interfaces: dict[str, m.Interface]) -> None:
