@@ -622,6 +622,31 @@ reading the URDF do not say so (libsdformat silently gives such a link 1 kg, and
 moving link that has a mass, may go without. Wrong: `link arm { visual box(0.1,
 0.1, 0.3) }` moved by `joint lift: revolute base -> arm { ... }`. Right: `link arm
 { visual box(0.1, 0.1, 0.3)  mass 0.2  inertia [0.0016, 0.0016, 0.0003] }`."""),
+    ("E612", "drive-direction", """
+A differential drive's body must move the way the input that drives it commands
+(both halves together; no URDF tool can see this). For an input of a Twist
+(`DifferentialSpeed`) and a body whose velocity transmissions turn two wheels
+(continuous or revolute joints, fixed to the base, each child with a cylinder or
+sphere), the checker evaluates the input's arguments, the interface's calls and the
+transmissions' `velocity = ...` conversions for a forward command (linear 0.1 m/s)
+and a counter-clockwise one (angular 0.5 rad/s), and rolls each wheel on the floor
+below it about its joint's axis (in the base's frame, through the joints' `rpy`). A
+forward command must roll both wheels forward (+x), and a positive angular command
+must turn the base counter-clockwise seen from above (+z). Nothing is simulated.
+Wrong: a right wheel with `axis [0, -1, 0]` beside a left one with `axis [0, 1, 0]`,
+both commanded by the same conversion (the base spins in place). Right: `axis [0, 1,
+0]` on both, or the right one's conversion negated."""),
+    ("E613", "drive-scale", """
+A differential drive's body must move at the speed its input commands: a forward
+command of 0.1 m/s, evaluated through the input, the interface and the
+transmissions' conversions as for E612, must move the base at 0.1 m/s (within 5%, the
+device's steps) when its wheels roll at their shapes' radius, without turning it; and
+a counter-clockwise command of 0.5 rad/s must turn it at 0.5 rad/s about the wheels'
+places (their joints' `at`). So the wheel radius and the wheel base the conversions
+and the input use are the body's: where they differ, a ROS odometry computed with the
+same constants says one distance while the base travels another. Wrong: `const R =
+0.036` in the conversions with `collision cylinder(0.044, 0.02)` on the wheels.
+Right: `collision cylinder(R, 0.02)`."""),
     ("E731", "noise", """
 An output's `noise FIELD ...` states a field's error model (thesis section 7.2.3):
 a standard deviation and its unit (`noise distance 0.01 "m"`, the variance its

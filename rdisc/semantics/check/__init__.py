@@ -69,7 +69,7 @@ class Checker(Declarations, Primitives, Interfaces, Sensors):
         unseeded(self.frames, primitives, self.s.primitives, self.d)
         if self.d.has_errors() or robot is None:
             return None
-        return m.Model(
+        model = m.Model(
             robot=robot,
             states=states,
             connections=connections,
@@ -90,6 +90,11 @@ class Checker(Declarations, Primitives, Interfaces, Sensors):
             transmissions=transmissions,
             sensors={n: s for n, s in sensors.items() if s is not None},
         )
+        if transmissions and inputs:  # the body against the inputs that drive it
+            from rdisc.semantics.drive import check_drives
+
+            check_drives(model, self.d, self.s)
+        return None if self.d.has_errors() else model
 
     def robot_body(self, primitives: dict[str, m.Primitive], interface_params: dict[str, tuple[m.Parameter, ...]],
                    states: dict[str, m.StateVariable],
