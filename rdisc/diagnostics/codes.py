@@ -647,6 +647,17 @@ and the input use are the body's: where they differ, a ROS odometry computed wit
 same constants says one distance while the base travels another. Wrong: `const R =
 0.036` in the conversions with `collision cylinder(0.044, 0.02)` on the wheels.
 Right: `collision cylinder(R, 0.02)`."""),
+    ("E614", "mesh-file", """
+A mesh's file must exist, found as the checker, the emitters and the simulation all
+find it: a relative path (`mesh("meshes/base.stl")`) starts at the folder of the
+description file that declares the link, never at the current folder;
+`package://NAME/PATH` is PATH in the package NAME, whose root is the nearest folder
+named NAME holding the description, else NAME in a folder of `ROS_PACKAGE_PATH` (or
+that folder itself); `file:///PATH` and an absolute path are that file. Without it
+MuJoCo refuses the model and a URDF tool shows nothing. A URDF, SDF or MJCF written
+with `-o` carries a relative path rewritten to start at its own folder (MJCF a
+package's file, as MuJoCo knows no packages). Wrong: `mesh("base.stl")` with
+base.stl in the current folder only. Right: base.stl beside the description."""),
     ("E731", "noise", """
 An output's `noise FIELD ...` states a field's error model (thesis section 7.2.3):
 a standard deviation and its unit (`noise distance 0.01 "m"`, the variance its

@@ -9,12 +9,14 @@ URDF, a simulation and the serial device cannot silently disagree.
 from __future__ import annotations
 
 import math
+import os
 from collections import deque
 from collections.abc import Callable, Iterable
 
 from rdisc.diagnostics import Diagnostics, Label, abbreviate
 from rdisc.engine.operations import EvalError
 from rdisc.semantics import model as m
+from rdisc.semantics.meshes import located
 from rdisc.semantics.model import Scope, Type
 from rdisc.semantics.resolve import Symbols, suggest
 from rdisc.semantics.types import Env, Typer, describe
@@ -169,6 +171,14 @@ class BodyRules:
         if not all(v > 0 for v in scale):
             self.d.report("E602", args[1].span, "a mesh's scale must be more than 0")
             return None
+        described = path.span.path
+        if os.path.isfile(described):  # a description read from a file: its meshes are beside it
+            found, why = located(path.value, described)
+            if found is None or not os.path.isfile(found):
+                self.d.report("E614", path.span, f"mesh `{path.value}` is not found: {why}",
+                              help="a relative path starts at the description's folder; `package://NAME/PATH` at "
+                              "the folder NAME that holds the description, or NAME in ROS_PACKAGE_PATH")
+                return None
         return m.Shape(m.ShapeKind.MESH, scale, origin, path.value, use.span)
 
     def pose(self, at: ast.Expr | None, rpy: ast.Expr | None) -> m.Pose | None:
