@@ -611,7 +611,12 @@ must be a finite number in the range the commanded parameter accepts (`goal: int
 in 0..4095`), and converting it must not fail (no division by zero);
 and the two conversions must undo each other: a device value converted to the
 joint and back is itself, to one step of an int. Both are checked at 33 points of
-the joint's range with the interpreter the runtime uses. Wrong: a servo's `goal:
+the joint's range with the interpreter the runtime uses; the range is then checked
+whole by interval arithmetic over `raw = ...` (bounds of `+ - * /`, `round`, `min`,
+`max`, `clamp`, `abs` and `if`/`else` over comparisons), and where its bounds leave the
+device's range, the joint's values there are halved down until one that truly
+converts outside is found (reported "between the 33 values sampled"); a conversion
+with another operator is checked at its samples only. Wrong: a servo's `goal:
 int in 0..1023` with `limit -3.2..3.2` through `raw = round(position * 195.3) +
 512`. Right: `limit -2.6..2.6`."""),
     ("E611", "massless-moving-link", """

@@ -21,6 +21,7 @@ from rdisc.semantics.model import Scope, Type
 from rdisc.semantics.resolve import Symbols, suggest
 from rdisc.semantics.types import Env, Typer, describe
 from rdisc.semantics.units import CARRIERS, UNITS, carries, dimension_of
+from rdisc.source import Span
 from rdisc.syntax import ast
 
 # Sizes a shape takes, in order, and what they are called in diagnostics.
@@ -589,6 +590,34 @@ class BodyRules:
                               f"{_shown(again)}",
                               help=f"`{name} = ...` must invert `raw = ...`")
                 return
+        if param is not None and param.low is not None and param.high is not None:
+            self.between(b, binding, joint, (low, high), (float(param.low), float(param.high)), span, text)
+
+    def between(self, b: ast.Binding, binding: m.Binding, joint: m.Joint, joint_range: tuple[float, float],
+                accepted: tuple[float, float], span: Span, text: str) -> None:
+        """The whole range, not only its samples: where the conversion's bounds (rdisc.semantics.intervals)
+        leave the device's range, a value of the joint that truly converts outside it is looked for."""
+        from rdisc.semantics.evaluate import prepare
+        from rdisc.semantics.intervals import witness
+
+        name = binding.quantity.value
+        to_device = prepare(binding.to_device)
+
+        def value(x: float) -> float:
+            try:
+                raw = to_device({}, {name: x}, ())
+            except (EvalError, ArithmeticError, ValueError, OverflowError):
+                return math.nan
+            return float(raw) if type(raw) in (int, float) else math.nan  # type: ignore[arg-type]
+
+        x = witness(binding.to_device, name, joint_range[0], joint_range[1], accepted, value)
+        if x is not None:
+            self.d.report("E606", b.span, f"joint `{joint.name}`'s {name} {x:.6g} becomes {value(x):.10g} at "
+                          f"{binding.place()}, outside its range {accepted[0]:g}..{accepted[1]:g}, between the "
+                          f"{SAMPLES} values sampled",
+                          labels=(Label(span, f"the joint's {text}"), *self.range_label(binding)),
+                          help="every value of the joint's range is converted, not only its samples: correct the "
+                               "conversion")
 
     def range_label(self, binding: m.Binding) -> tuple[Label, ...]:
         decl = self.s.primitives.get(binding.target) or self.s.interfaces.get(binding.target)
