@@ -296,13 +296,13 @@ def test_a_differential_drive_moves_as_its_input_commands(tmp_path: Path, old: s
 # issue 26: the 33 samples of -1.5..1.5 are 0.09375 apart; a step between two of them (0.5625 and
 # 0.65625) is found by interval arithmetic over the whole range.
 BETWEEN = [
-    ("command position to servo.goal { raw = round(position * 300) + 512 + (2000 if 0.6 < position and position < 0.61 else 0)"
-     "  position = (raw - 512) / 300 }",
-     [("E606", "joint `lift`'s position 0.609375 becomes 2695 at servo.goal, outside its range 0..1023, between the "
-       "33 values sampled")]),
+    (("command position to servo.goal { raw = round(position * 300) + 512 + (2000 if 0.6 < position and position "
+      "< 0.61 else 0)  position = (raw - 512) / 300 }"),
+     [("E606", ("joint `lift`'s position 0.609375 becomes 2695 at servo.goal, outside its range 0..1023, between the "
+                "33 values sampled"))]),
     # bounds wider than the values (position - position): nothing outside is reported
-    ("command position to servo.goal { raw = round(position * 300 + (position - position) * 1000) + 512"
-     "  position = (raw - 512) / 300 }", []),
+    (("command position to servo.goal { raw = round(position * 300 + (position - position) * 1000) + 512"
+      "  position = (raw - 512) / 300 }"), []),
 ]
 
 
