@@ -87,9 +87,15 @@ def emit_body(verb: str, path: str, output: str | None, render: Callable[[Model,
     """`compile_and_write` for the body's formats: a description with no body (or one the format
     cannot hold) is an error of its own, said in a line, exit 1, nothing written."""
     from rdisc.emit.body_xml import BodyError
+    from rdisc.semantics.meshes import rebased
+
+    files = verb == "emit-mjcf"  # MuJoCo knows no packages: it is given their files
+
+    def render_rebased(model: Model, sources: Sources) -> str:
+        return render(rebased(model, output, files=files), sources)  # its meshes' paths from where it is written
 
     try:
-        return compile_and_write(path, output, render)
+        return compile_and_write(path, output, render_rebased)
     except BodyError as err:
         print(f"rdisc {verb}: {path}: {err}", file=sys.stderr)
         return EXIT_ERRORS

@@ -592,15 +592,6 @@ together). Wrong: `mass 1  inertia [0.1, 0.1, 0.3]`. Right: `mass 1  inertia [0.
 0.1, 0.15]`. A simulator integrates a mass of at most 1,000,000 kg and an inertia
 whose elements are at most 1,000,000 kg m²; larger (a mass of 1e308) is refused here
 rather than met as a simulation that never ends."""),
-    ("W604", "massless-moving-link", """
-A link that a moving joint carries (the child of a revolute, continuous or
-prismatic joint) states its `mass` and `inertia`. Without them libsdformat gives
-the link 1 kg without a word when Gazebo loads the URDF (`ign sdf -p` drops the
-link), and no simulator can move it as the real one moves. It is a warning, not an
-error, because a body drawn only (RViz, the console's view) needs no masses; `rdisc
-sim` and Gazebo do. Wrong: `link arm { visual box(0.03, 0.05, 0.2) }` under `joint
-lift: revolute base -> arm { ... }`. Right: `link arm { visual box(0.03, 0.05, 0.2)
-mass 0.13  inertia [0.00046, 0.000443, 0.0000368] }`."""),
     ("E605", "transmission", """
 A transmission binds a moving joint to the device: `command QUANTITY to
 TARGET.PARAM { ... }` names a numeric parameter of a primitive or interface that
@@ -623,7 +614,12 @@ must be a finite number in the range the commanded parameter accepts (`goal: int
 in 0..4095`), and converting it must not fail (no division by zero);
 and the two conversions must undo each other: a device value converted to the
 joint and back is itself, to one step of an int. Both are checked at 33 points of
-the joint's range with the interpreter the runtime uses. Wrong: a servo's `goal:
+the joint's range with the interpreter the runtime uses; the range is then checked
+whole by interval arithmetic over `raw = ...` (bounds of `+ - * /`, `round`, `min`,
+`max`, `clamp`, `abs` and `if`/`else` over comparisons), and where its bounds leave the
+device's range, the joint's values there are halved down until one that truly
+converts outside is found (reported "between the 33 values sampled"); a conversion
+with another operator is checked at its samples only. Wrong: a servo's `goal:
 int in 0..1023` with `limit -3.2..3.2` through `raw = round(position * 195.3) +
 512`. Right: `limit -2.6..2.6`."""),
     ("E607", "portable-names", """
@@ -634,6 +630,50 @@ takes a link's name. SDF also keeps `world` for itself (and `__...__`, which no
 RDIS name can be), so neither a link nor a joint is named `world`. Wrong: `link shoulder { ... }`
 beside `joint shoulder: revolute shoulder -> upper_arm { ... }`. Right: `link
 turret { ... }` and `joint shoulder: revolute turret -> upper_arm { ... }`."""),
+    ("E611", "massless-moving-link", """
+Every link a moving joint (revolute, continuous, prismatic) carries has its own
+`mass` and `inertia`: a simulator cannot move a body with none, and the tools
+reading the URDF do not say so (libsdformat silently gives such a link 1 kg, and
+`ign sdf -p` drops it from the SDF). A link fixed to the base, or fixed below a
+moving link that has a mass, may go without. Wrong: `link arm { visual box(0.1,
+0.1, 0.3) }` moved by `joint lift: revolute base -> arm { ... }`. Right: `link arm
+{ visual box(0.1, 0.1, 0.3)  mass 0.2  inertia [0.0016, 0.0016, 0.0003] }`."""),
+    ("E612", "drive-direction", """
+A differential drive's body must move the way the input that drives it commands
+(both halves together; no URDF tool can see this). For an input of a Twist
+(`DifferentialSpeed`) and a body whose velocity transmissions turn two wheels
+(continuous or revolute joints, fixed to the base, each child with a cylinder or
+sphere), the checker evaluates the input's arguments, the interface's calls and the
+transmissions' `velocity = ...` conversions for a forward command (linear 0.1 m/s)
+and a counter-clockwise one (angular 0.5 rad/s), and rolls each wheel on the floor
+below it about its joint's axis (in the base's frame, through the joints' `rpy`). A
+forward command must roll both wheels forward (+x), and a positive angular command
+must turn the base counter-clockwise seen from above (+z). Nothing is simulated.
+Wrong: a right wheel with `axis [0, -1, 0]` beside a left one with `axis [0, 1, 0]`,
+both commanded by the same conversion (the base spins in place). Right: `axis [0, 1,
+0]` on both, or the right one's conversion negated."""),
+    ("E613", "drive-scale", """
+A differential drive's body must move at the speed its input commands: a forward
+command of 0.1 m/s, evaluated through the input, the interface and the
+transmissions' conversions as for E612, must move the base at 0.1 m/s (within 5%, the
+device's steps) when its wheels roll at their shapes' radius, without turning it; and
+a counter-clockwise command of 0.5 rad/s must turn it at 0.5 rad/s about the wheels'
+places (their joints' `at`). So the wheel radius and the wheel base the conversions
+and the input use are the body's: where they differ, a ROS odometry computed with the
+same constants says one distance while the base travels another. Wrong: `const R =
+0.036` in the conversions with `collision cylinder(0.044, 0.02)` on the wheels.
+Right: `collision cylinder(R, 0.02)`."""),
+    ("E614", "mesh-file", """
+A mesh's file must exist, found as the checker, the emitters and the simulation all
+find it: a relative path (`mesh("meshes/base.stl")`) starts at the folder of the
+description file that declares the link, never at the current folder;
+`package://NAME/PATH` is PATH in the package NAME, whose root is the nearest folder
+named NAME holding the description, else NAME in a folder of `ROS_PACKAGE_PATH` (or
+that folder itself); `file:///PATH` and an absolute path are that file. Without it
+MuJoCo refuses the model and a URDF tool shows nothing. A URDF, SDF or MJCF written
+with `-o` carries a relative path rewritten to start at its own folder (MJCF a
+package's file, as MuJoCo knows no packages). Wrong: `mesh("base.stl")` with
+base.stl in the current folder only. Right: base.stl beside the description."""),
     ("E620", "actuator", """
 An actuator is what drives a joint between the device's command and the joint
 (thesis section 7.2.6): `actuator NAME: servo { ... }` a position servo, `actuator

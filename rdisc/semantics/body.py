@@ -10,16 +10,19 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import os
 from collections import deque
 from collections.abc import Callable, Iterable
 
 from rdisc.diagnostics import Diagnostics, Label, abbreviate
 from rdisc.engine.operations import EvalError
 from rdisc.semantics import model as m
+from rdisc.semantics.meshes import located
 from rdisc.semantics.model import Scope, Type
 from rdisc.semantics.resolve import Symbols, suggest
 from rdisc.semantics.types import Env, Typer, describe
 from rdisc.semantics.units import CARRIERS, UNITS, carries, dimension_of
+from rdisc.source import Span
 from rdisc.syntax import ast
 
 # Sizes a shape takes, in order, and what they are called in diagnostics.
@@ -226,6 +229,14 @@ class BodyRules:
         if not all(v > 0 for v in scale):
             self.d.report("E602", args[1].span, "a mesh's scale must be more than 0")
             return None
+        described = path.span.path
+        if os.path.isfile(described):  # a description read from a file: its meshes are beside it
+            found, why = located(path.value, described)
+            if found is None or not os.path.isfile(found):
+                self.d.report("E614", path.span, f"mesh `{path.value}` is not found: {why}",
+                              help="a relative path starts at the description's folder; `package://NAME/PATH` at "
+                              "the folder NAME that holds the description, or NAME in ROS_PACKAGE_PATH")
+                return None
         return m.Shape(m.ShapeKind.MESH, scale, origin, path.value, use.span)
 
     def pose(self, at: ast.Expr | None, rpy: ast.Expr | None) -> m.Pose | None:
@@ -387,25 +398,6 @@ class BodyRules:
                 self.d.report("E603", span, f"joint `{leader.name}` mimics `{leader.mimic.joint}` itself",
                               help=f"mimic `{leader.mimic.joint}` (with the multipliers multiplied)")
 
-    def carried_masses(self, links: dict[str, m.Link], joints: dict[str, m.Joint]) -> None:
-        """Every link a moving joint carries has its mass and inertia: without them libsdformat gives
-        the link 1 kg unsaid (`ign sdf -p` drops it), and a simulator cannot move it truly. A
-        warning: a body drawn only (RViz) needs no masses."""
-        for joint in joints.values():
-            link = links.get(joint.child)
-            if link is not None and joint.moves() and link.inertial is None and not self.inertial_refused(link.name):
-                decl = self.s.links[link.name]
-                self.d.report("W604", decl.name.span, f"link `{link.name}` is moved by {joint.kind.value} joint "
-                              f"`{joint.name}` but has no mass",
-                              labels=(Label(self.s.joints[joint.name].name.span, f"joint `{joint.name}`"),),
-                              help="give its `mass` (kg) and `inertia` (kg m²): without them libsdformat gives it "
-                              "1 kg unsaid and Gazebo drops it")
-
-    def inertial_refused(self, link: str) -> bool:
-        """Whether the link states an inertial that was refused (already reported)."""
-        return any(isinstance(i, ast.BodyValue) and i.key in ("mass", "inertia", "centre")
-                   for i in self.s.links[link].items)
-
     def portable_names(self) -> None:
         """Names every model format can carry as written, so URDF, SDF, MJCF, ros2_control and a
         JointState name a joint alike: SDF gives links and joints one namespace, where a joint named
@@ -470,6 +462,21 @@ class BodyRules:
         self.cycles({link: joint for link, joint in moved_by.items() if link not in reached and link in links},
                     roots[0])
         return order
+
+    def carried(self, links: dict[str, m.Link], joints: dict[str, m.Joint]) -> None:
+        """Every link a moving joint carries has a mass and an inertia: libsdformat gives a link
+        without them 1 kg, and `ign sdf -p` drops it, so the simulated body is not this one."""
+        for joint in joints.values():
+            link = links.get(joint.child)
+            if not joint.moves() or link is None or link.inertial is not None:
+                continue
+            decl = self.s.links[link.name]
+            if any(isinstance(i, ast.BodyValue) and i.key in ("mass", "inertia") for i in decl.items):
+                continue  # given but refused: reported where it is
+            self.d.report("E611", decl.name.span, f"link `{link.name}` is moved by joint `{joint.name}` but has no "
+                          "mass and inertia", labels=(Label(self.s.joints[joint.name].child.span, "moved here"),),
+                          help="give it `mass` (kg) and `inertia` (kg m²): a simulator needs them to move it, "
+                          "and libsdformat silently gives a link without them 1 kg")
 
     def cycles(self, unreached: dict[str, m.Joint], root: str) -> None:
         """Report each cycle among links no root reaches, once, at its first joint declared: each such
@@ -698,6 +705,34 @@ class BodyRules:
                               f"{_shown(again)}",
                               help=f"`{name} = ...` must invert `raw = ...`")
                 return
+        if param is not None and param.low is not None and param.high is not None:
+            self.between(b, binding, joint, (low, high), (float(param.low), float(param.high)), span, text)
+
+    def between(self, b: ast.Binding, binding: m.Binding, joint: m.Joint, joint_range: tuple[float, float],
+                accepted: tuple[float, float], span: Span, text: str) -> None:
+        """The whole range, not only its samples: where the conversion's bounds (rdisc.semantics.intervals)
+        leave the device's range, a value of the joint that truly converts outside it is looked for."""
+        from rdisc.semantics.evaluate import prepare
+        from rdisc.semantics.intervals import witness
+
+        name = binding.quantity.value
+        to_device = prepare(binding.to_device)
+
+        def value(x: float) -> float:
+            try:
+                raw = to_device({}, {name: x}, ())
+            except (EvalError, ArithmeticError, ValueError, OverflowError):
+                return math.nan
+            return float(raw) if type(raw) in (int, float) else math.nan  # type: ignore[arg-type]
+
+        x = witness(binding.to_device, name, joint_range[0], joint_range[1], accepted, value)
+        if x is not None:
+            self.d.report("E606", b.span, f"joint `{joint.name}`'s {name} {x:.6g} becomes {value(x):.10g} at "
+                          f"{binding.place()}, outside its range {accepted[0]:g}..{accepted[1]:g}, between the "
+                          f"{SAMPLES} values sampled",
+                          labels=(Label(span, f"the joint's {text}"), *self.range_label(binding)),
+                          help="every value of the joint's range is converted, not only its samples: correct the "
+                               "conversion")
 
     def range_label(self, binding: m.Binding) -> tuple[Label, ...]:
         decl = self.s.primitives.get(binding.target) or self.s.interfaces.get(binding.target)

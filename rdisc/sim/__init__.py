@@ -46,6 +46,7 @@ from rdisc.emit.mjcf import actuator_name, to_mjcf
 from rdisc.lowering.constructs import decoder
 from rdisc.semantics import model as m
 from rdisc.semantics.evaluate import Prepared, prepare
+from rdisc.semantics.meshes import rebased
 
 __all__ = ["Simulation", "SimulationError"]
 
@@ -117,7 +118,7 @@ class Simulation:
         try:
             described = model.robot.span.path if model.robot.span is not None else None
             folder = os.path.dirname(os.path.abspath(described)) if described else None  # a mesh's path starts there
-            self.physics = mujoco.MjModel.from_xml_string(to_mjcf(model, folder))
+            self.physics = mujoco.MjModel.from_xml_string(to_mjcf(rebased(model, None, files=True), folder))
             self.data = mujoco.MjData(self.physics)
         except (ValueError, mujoco.FatalError) as err:  # a mesh it cannot read, a body it cannot hold
             raise SimulationError(f"{model.robot.name}: MuJoCo cannot simulate this body: "

@@ -45,6 +45,8 @@ def test_the_examples_check_clean(tmp_path: Path) -> None:
     assert len(blocks) >= 10
     (tmp_path / "servos").mkdir()
     (tmp_path / "servos" / "common.rdis").write_text("const COMMON = 1\n", encoding="utf-8")
+    (tmp_path / "meshes").mkdir()
+    (tmp_path / "meshes" / "upper.stl").write_bytes(b"")  # the mesh the body's example names (E614)
     source = tmp_path / "language.rdis"
     source.write_text("\n".join(blocks) + PRELUDE, encoding="utf-8")
     compilation = compile_path(str(source))

@@ -156,3 +156,11 @@ transmission lifter: lift {
     command position to servo.goal { raw = round(position * 195.3) + 512  position = (raw - 512) / 195.3 }
 }
 """
+
+
+def write_twisty(source: Path, text: str = TWISTY) -> None:
+    """TWISTY at `source`, with the mesh files it names beside it (the checker finds them there)."""
+    source.write_text(text, encoding="utf-8")
+    (source.parent / "meshes").mkdir(exist_ok=True)
+    for name in ("wheel.stl", "arm.dae"):
+        (source.parent / "meshes" / name).write_bytes(b"")

@@ -363,6 +363,8 @@ def test_reads_back_to_the_same_model(path: Path, tmp_path: Path) -> None:
     first = compile_path(str(path))
     assert first.model is not None, first.diagnostics.items
     text = to_json(first.model)
+    (tmp_path / "meshes").mkdir()
+    (tmp_path / "meshes" / "base.stl").write_bytes(b"")  # the mesh body.rdis names, beside the copy
     copy = tmp_path / (path.stem + ".json")
     copy.write_text(text, encoding="utf-8")
     second = compile_path(str(copy))

@@ -11,7 +11,7 @@ from pathlib import Path
 import pytest
 
 from rdisc.semantics import model as m
-from tests.emit.body_tools import EXAMPLES, TWISTY, Tree, check_urdf, model_of
+from tests.emit.body_tools import EXAMPLES, Tree, check_urdf, model_of, write_twisty
 
 REPO = Path(__file__).resolve().parents[2]
 ARM = REPO / "examples" / "arm.rdis"
@@ -70,7 +70,7 @@ def body(request, tmp_path: Path, rdisc) -> tuple[m.Model, Path]:
     source = request.param
     if source == "twisty":
         source = tmp_path / "twisty.rdis"
-        source.write_text(TWISTY, encoding="utf-8")
+        write_twisty(source)
     out = tmp_path / "out.urdf"
     result = rdisc("emit-urdf", source, "-o", out, "--ros2-control")
     assert (result.returncode, result.stdout, result.stderr) == (0, "", "")

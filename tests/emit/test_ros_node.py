@@ -175,9 +175,9 @@ state torque: int[2]
 connection c: serial { baud 9600 }
 primitive poll() on c pack "B" (1) unpack ">hfhh" { ticks = out[0]  speed = out[1]  torque = [out[2], out[3]] }
 link base {}
-link wheel {}
-link arm {}
-link idle {}
+link wheel { mass 1  inertia [0.1, 0.1, 0.1] }
+link arm { mass 1  inertia [0.1, 0.1, 0.1] }
+link idle { mass 1  inertia [0.1, 0.1, 0.1] }
 joint spin: continuous base -> wheel { axis [0, 1, 0] velocity 10 effort 1 }
 joint lift: revolute base -> arm { limit -1..1 velocity 2 effort 3 }
 joint rest: revolute base -> idle { limit -1..1 velocity 2 effort 3 }
@@ -275,8 +275,8 @@ connection c: serial { baud 9600 }
 primitive move(speed: int in -100..100 unit "count", gain: int = 3) on c pack ">bB" (speed, gain)
 primitive both(a: int unit "count", b: int) on c pack ">bb" (a, b)
 link base {}
-link wheel {}
-link arm {}
+link wheel { mass 1  inertia [0.1, 0.1, 0.1] }
+link arm { mass 1  inertia [0.1, 0.1, 0.1] }
 joint spin: continuous base -> wheel { axis [0, 1, 0] velocity 10 effort 1 }
 joint lift: revolute base -> arm { limit -1..1 velocity 2 effort 3 }
 transmission drive: spin { command velocity to move.speed { raw = round(velocity * 10)  velocity = raw / 10 } }

@@ -11,7 +11,15 @@ from pathlib import Path
 import pytest
 
 from rdisc.semantics import model as m
-from tests.emit.body_tools import EXAMPLES, TWISTY, ign_sdf_check, matrix, model_of, require_module, unit
+from tests.emit.body_tools import (
+    EXAMPLES,
+    ign_sdf_check,
+    matrix,
+    model_of,
+    require_module,
+    unit,
+    write_twisty,
+)
 
 REPO = Path(__file__).resolve().parents[2]
 GOLDEN = REPO / "tests" / "golden" / "bodies"
@@ -23,7 +31,7 @@ def body(request, tmp_path: Path, rdisc) -> tuple[m.Model, Path, Path]:
     source = request.param
     if source == "twisty":
         source = tmp_path / "twisty.rdis"
-        source.write_text(TWISTY, encoding="utf-8")
+        write_twisty(source)
     sdf, urdf = tmp_path / "out.sdf", tmp_path / "out.urdf"
     for verb, out in (("emit-sdf", sdf), ("emit-urdf", urdf)):
         result = rdisc(verb, source, "-o", out)

@@ -10,7 +10,17 @@ from pathlib import Path
 import pytest
 
 from rdisc.semantics import model as m
-from tests.emit.body_tools import EXAMPLES, TWISTY, Tree, check_urdf, matrix, model_of, require_module, unit
+from tests.emit.body_tools import (
+    EXAMPLES,
+    TWISTY,
+    Tree,
+    check_urdf,
+    matrix,
+    model_of,
+    require_module,
+    unit,
+    write_twisty,
+)
 
 REPO = Path(__file__).resolve().parents[2]
 GOLDEN = REPO / "tests" / "golden" / "bodies"
@@ -29,7 +39,7 @@ def body(request, tmp_path: Path, rdisc) -> tuple[m.Model, Path]:
     source = request.param
     if source == "twisty":
         source = tmp_path / "twisty.rdis"
-        source.write_text(TWISTY, encoding="utf-8")
+        write_twisty(source)
     out = tmp_path / "out.urdf"
     result = rdisc("emit-urdf", source, "-o", out)
     assert (result.returncode, result.stdout, result.stderr) == (0, "", "")
@@ -144,7 +154,7 @@ def test_the_device_a_transmission_drives_is_said_in_a_comment(rdisc) -> None:
 
 def test_a_doc_with_two_dashes_is_still_an_xml_comment(tmp_path: Path, rdisc) -> None:
     source = tmp_path / "twisty.rdis"
-    source.write_text(TWISTY, encoding="utf-8")
+    write_twisty(source)
     result = rdisc("emit-urdf", source)
     assert "  <!-- The base - - a plate. -->\n  <link name=\"base\">\n" in result.stdout
 
@@ -152,7 +162,7 @@ def test_a_doc_with_two_dashes_is_still_an_xml_comment(tmp_path: Path, rdisc) ->
 def test_words_xml_cannot_carry_are_escaped_in_their_comment(tmp_path: Path, rdisc) -> None:
     """Found by the fuzzer (seed 41): a description of "\\0" made the URDF writer fail."""
     source = tmp_path / "twisty.rdis"
-    source.write_text(TWISTY.replace('"A test body -- every', '"A test\\0body\\x01 -- every'), encoding="utf-8")
+    write_twisty(source, TWISTY.replace('"A test body -- every', '"A test\\0body\\x01 -- every'))
     result = rdisc("emit-urdf", source, "-o", tmp_path / "twisty.urdf")
     urdf = (tmp_path / "twisty.urdf").read_text(encoding="utf-8")
     assert result.returncode == 0 and "<!-- A test\\x00body\\x01 - - every kind" in urdf
@@ -172,7 +182,7 @@ def test_a_description_without_links_is_an_error(tmp_path: Path, rdisc) -> None:
 
 def test_output_is_never_written_over_the_description(tmp_path: Path, rdisc) -> None:
     source = tmp_path / "twisty.rdis"
-    source.write_text(TWISTY, encoding="utf-8")
+    write_twisty(source)
     result = rdisc("emit-urdf", source, "-o", source)
     assert result.returncode == 2 and "will not write" in result.stderr
     assert source.read_text(encoding="utf-8") == TWISTY

@@ -28,6 +28,8 @@ def test_the_body_golden(rdisc, golden, tmp_path: Path) -> None:
     result = rdisc("build", JSON / "body.rdis")
     assert (result.returncode, result.stderr) == (0, "")
     golden.check(JSON / "body.json", result.stdout)
+    (tmp_path / "meshes").mkdir()
+    (tmp_path / "meshes" / "base.stl").write_bytes(b"")  # the mesh body.rdis names, beside the copy
     (tmp_path / "body.json").write_text(result.stdout, encoding="utf-8")
     again = rdisc("build", tmp_path / "body.json")
     assert (again.returncode, again.stderr, again.stdout) == (0, "", result.stdout)

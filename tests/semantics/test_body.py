@@ -12,7 +12,7 @@ from rdisc.compile import compile_path
 HEAD = 'robot r { author "t" }\nconnection c: serial { baud 9600 }\n'
 # A servo arm's device: a goal in 0..1023, a float speed, a string label; state read back.
 DEVICE = (
-    "link base {}\nlink arm {}\n"
+    "link base {}\nlink arm { mass 1  inertia [0.1, 0.1, 0.1] }\n"
     "joint lift: revolute base -> arm { limit -1.5..1.5 velocity 2 effort 1 axis [0, 0, 1] }\n"
     "state pos: int\nstate many: int[3]\nstate name: string\nsetting gain: float = 1.0\n"
     'primitive servo(goal: int in 0..1023, speed: float, label: string) on c pack ">Hf" (goal, speed)\n'
@@ -105,6 +105,10 @@ INERTIALS = [
        "the inertia breaks the triangle inequality: its principal moments 0.1 + 0.1 < 0.3")]),
     ("link base { mass 1 inertia [0.1, 0.1] }\n",
      [("E604", "[0.1, 0.1]", "an inertia is [ixx, iyy, izz] or [ixx, iyy, izz, ixy, ixz, iyz], not 2 numbers")]),
+    # issue 26: libsdformat gives a moving link without a mass 1 kg; one fixed to the base may go without
+    (("link base {}\nlink arm { visual box(0.1, 0.1, 0.3) }\nlink plate {}\njoint fix: fixed base -> plate {}\n"
+      "joint lift: continuous base -> arm { axis [0, 1, 0] }\n"),
+     [("E611", "arm", "link `arm` is moved by joint `lift` but has no mass and inertia")]),
 ]
 
 
@@ -239,3 +243,69 @@ def test_a_body_that_agrees_checks_clean(tmp_path: Path) -> None:
 ])
 def test_values_no_output_can_hold_are_refused_not_crashed_on(tmp_path: Path, body: str, expected: list[Found]) -> None:
     assert errors(tmp_path, body) == expected
+
+
+# issue 26: a differential drive, its body against the input that drives it. Each wheel's speed
+# is in mm/s at the rim (`raw = round(velocity * R * 1000)`), the input maps a Twist to them.
+DRIVE = """\
+const R = 0.036
+const TRACK = 0.235
+primitive wheels(right: int in -500..500 unit "mm/s", left: int in -500..500 unit "mm/s") on c pack ">hh" (right, left)
+interface drive(right: float, left: float) { wheels(round(right * 1000), round(left * 1000)) }
+input go: DifferentialSpeed -> drive(linear + angular * TRACK / 2, linear - angular * TRACK / 2)
+link base { mass 3  inertia [0.02, 0.02, 0.04] }
+link left { collision cylinder(R, 0.02) rpy [1.5707963267948966, 0, 0]  mass 0.1  inertia [0.001, 0.001, 0.001] }
+link right { collision cylinder(R, 0.02) rpy [1.5707963267948966, 0, 0]  mass 0.1  inertia [0.001, 0.001, 0.001] }
+joint left_joint: continuous base -> left { at [0, TRACK / 2, R] axis [0, 1, 0] }
+joint right_joint: continuous base -> right { at [0, -TRACK / 2, R] axis [0, 1, 0] }
+transmission l: left_joint { command velocity to wheels.left { raw = round(velocity * R * 1000)  velocity = raw / 1000 / R } }
+transmission r: right_joint { command velocity to wheels.right { raw = round(velocity * R * 1000)  velocity = raw / 1000 / R } }
+"""
+
+
+@pytest.mark.parametrize(("old", "new", "expected"), [
+    ("", "", []),
+    # the issue's case: a right wheel whose axis is flipped spins the base in place
+    ("at [0, -TRACK / 2, R] axis [0, 1, 0]", "at [0, -TRACK / 2, R] axis [0, -1, 0]",
+     [("E612", "axis [0, -1, 0]", ("a forward command of 0.1 m/s to input `go` turns joint `right_joint` so that its "
+       "wheel rolls backward (-0.1 m/s)"))]),
+    # the same wheel turned round by its joint's frame instead (yaw of half a turn): the axis is right
+    ("at [0, -TRACK / 2, R] axis [0, 1, 0]", "at [0, -TRACK / 2, R] rpy [0, 0, 3.141592653589793] axis [0, -1, 0]",
+     []),
+    ("drive(linear + angular * TRACK / 2, linear - angular * TRACK / 2)",
+     "drive(linear - angular * TRACK / 2, linear + angular * TRACK / 2)",
+     [("E612", "go", ("a counter-clockwise command of 0.5 rad/s to input `go` turns the base clockwise "
+       "(-0.5021 rad/s)"))]),
+    # the issue's case: wheels larger than the conversions say; then the odometry of 0.1 m/s is short of the base's
+    ("collision cylinder(R,", "collision cylinder(0.044,",
+     [("E613", "go", ("a forward command of 0.1 m/s to input `go` moves the body's base at 0.1222 m/s: the conversions "
+       "turn the wheels as if their radius were 0.036 m, the body's wheels are 0.044 m"))]),
+    ("link right { collision cylinder(R,", "link right { collision cylinder(0.044,",
+     [("E613", "go", ("a forward command of 0.1 m/s to input `go` also turns the body's base, at 0.09456 rad/s: its "
+       "wheels roll at 0.1 and 0.1222 m/s"))]),
+    ("linear + angular * TRACK / 2, linear - angular * TRACK / 2", "linear + angular * 0.15, linear - angular * 0.15",
+     [("E613", "go", ("a counter-clockwise command of 0.5 rad/s to input `go` turns the body's base at 0.6383 rad/s: "
+       "the input gives the wheels' speeds as if they were 0.3 m apart, the body's wheel joints are 0.235 m apart"))]),
+])
+def test_a_differential_drive_moves_as_its_input_commands(tmp_path: Path, old: str, new: str,
+                                                          expected: list[Found]) -> None:
+    assert old in DRIVE
+    assert errors(tmp_path, DRIVE.replace(old, new)) == expected
+
+
+# issue 26: the 33 samples of -1.5..1.5 are 0.09375 apart; a step between two of them (0.5625 and
+# 0.65625) is found by interval arithmetic over the whole range.
+BETWEEN = [
+    (("command position to servo.goal { raw = round(position * 300) + 512 + (2000 if 0.6 < position and position "
+      "< 0.61 else 0)  position = (raw - 512) / 300 }"),
+     [("E606", ("joint `lift`'s position 0.609375 becomes 2695 at servo.goal, outside its range 0..1023, between the "
+                "33 values sampled"))]),
+    # bounds wider than the values (position - position): nothing outside is reported
+    (("command position to servo.goal { raw = round(position * 300 + (position - position) * 1000) + 512"
+      "  position = (raw - 512) / 300 }"), []),
+]
+
+
+@pytest.mark.parametrize(("binding", "expected"), BETWEEN)
+def test_a_conversion_is_checked_between_its_samples(tmp_path: Path, binding: str, expected: list[Found]) -> None:
+    assert [found[0::2] for found in errors(tmp_path, conversion(binding))] == expected

@@ -99,10 +99,12 @@ def test_a_mesh_is_found_beside_the_description_and_a_missing_one_is_a_message(t
     text = ('robot meshy { author "tests" }\n'
             'link base { mass 1 inertia [0.1, 0.1, 0.1] collision mesh("base.stl") }\n')
     (folder / "meshy.rdis").write_text(text, encoding="utf-8")
+    (tmp_path / "base.stl").write_bytes(b"")  # in the current folder only: not the description's mesh
     result = run_rdisc("sim", folder / "meshy.rdis", "--duration", "0.01", cwd=tmp_path)
-    assert result.returncode == 2
-    assert result.stderr.startswith("rdisc sim: meshy: MuJoCo cannot simulate this body:"), result.stderr
-    assert "base.stl" in result.stderr
+    # issue 26: the checker's diagnostic, before MuJoCo is asked
+    assert result.returncode == 1
+    assert result.stderr.startswith("error[E614]: mesh `base.stl` is not found: there is no file `base.stl` in the "
+                                    "folder of meshy.rdis\n"), result.stderr
     # A cube of 12 triangles, binary STL, beside the description (not in the current folder).
     corners = [(x, y, z) for x in (0, 1) for y in (0, 1) for z in (0, 1)]
     faces = [(0, 1, 3), (0, 3, 2), (4, 6, 7), (4, 7, 5), (0, 4, 5), (0, 5, 1), (2, 3, 7), (2, 7, 6), (0, 2, 6),

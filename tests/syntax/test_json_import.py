@@ -407,6 +407,8 @@ def test_the_body_checked_from_json_points_into_the_json(tmp_path: Path) -> None
     document["joints"][1]["child"] = "upper"
     document["transmissions"][1]["commands"][0]["primitive"] = document["transmissions"][1]["commands"][0].pop(
         "interface")
+    (tmp_path / "meshes").mkdir()
+    (tmp_path / "meshes" / "base.stl").write_bytes(b"")  # the mesh body.rdis names, beside the copy
     path = tmp_path / "body.json"
     text = json.dumps(document, indent=1)
     path.write_text(text, encoding="utf-8")

@@ -83,7 +83,7 @@ class Checker(Declarations, Primitives, Interfaces, Sensors, Remembering):
         unseeded(self.frames, primitives, self.s.primitives, self.d)
         if self.d.has_errors() or robot is None:
             return None
-        return m.Model(
+        model = m.Model(
             robot=robot,
             states=states,
             connections=connections,
@@ -105,6 +105,11 @@ class Checker(Declarations, Primitives, Interfaces, Sensors, Remembering):
             sensors={n: s for n, s in sensors.items() if s is not None},
             actuators=actuators,
         )
+        if transmissions and inputs:  # the body against the inputs that drive it
+            from rdisc.semantics.drive import check_drives
+
+            check_drives(model, self.d, self.s)
+        return None if self.d.has_errors() else model
 
     def robot_body(self, primitives: dict[str, m.Primitive], interface_params: dict[str, tuple[m.Parameter, ...]],
                    states: dict[str, m.StateVariable],
@@ -115,6 +120,7 @@ class Checker(Declarations, Primitives, Interfaces, Sensors, Remembering):
             return {}, {}, {}
         from rdisc.semantics.body import BodyRules
 
+        errors = self.d.error_count
         body = BodyRules(self.d, self.typer, self.s, self.setting)
         links = {name: body.link(decl) for name, decl in self.s.links.items()}
         joints = {j.name: j for j in (body.joint(decl) for decl in self.s.joints.values()) if j is not None}
@@ -122,9 +128,10 @@ class Checker(Declarations, Primitives, Interfaces, Sensors, Remembering):
         body.portable_names()
         body.spawned(links, joints)
         body.mimics(joints)
-        body.carried_masses(links, joints)
         transmissions = {name: body.transmission(decl, joints, primitives, interface_params, states)
                          for name, decl in self.s.transmissions.items()}
+        if self.d.error_count == errors:  # a body refused otherwise is not yet one to simulate
+            body.carried(links, joints)
         return links, joints, {n: t for n, t in transmissions.items() if t is not None}
 
     def robot_actuators(self, links: dict[str, m.Link], joints: dict[str, m.Joint],
