@@ -327,10 +327,11 @@ class Console:
             if not isinstance(name, str) or not isinstance(values, dict):
                 raise TypeError("a call names what it calls and gives its values by name")
             given = _read(self.robot.device, kind, name, values)
-            if self.session is not None:  # told before it is made, as `rdisc run` does
-                self.session.call(str(kind), name, given)
-            made = True
-            engine.make_call(self.robot, str(kind), name, given)
+            with engine.ports_held(self.robot):  # recorded in the wire's order, as `rdisc run` does
+                if self.session is not None:  # told before it is made
+                    self.session.call(str(kind), name, given)
+                made = True
+                engine.make_call(self.robot, str(kind), name, given)
         except (engine.RdisError, TypeError, ValueError, KeyError) as err:
             if self.session is not None and made and isinstance(err, engine.RdisError):
                 self.session.error(err)

@@ -28,6 +28,7 @@ if TYPE_CHECKING:  # at run time each name is imported when it is first asked fo
         parse_call,
         parse_ports,
         parse_settings,
+        ports_held,
         run_command,
         start_recording,
     )
@@ -304,6 +305,7 @@ __all__ = [
     "parse_ports",
     "parse_settings",
     "plainly_given",
+    "ports_held",
     "read_value",
     "replaced",
     "ros_message",

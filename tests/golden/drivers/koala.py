@@ -5149,10 +5149,11 @@ def _unblock_signals() -> set[int | signal.Signals] | None:
 
 
 @contextmanager
-def _ports_held(robot: Robot) -> Iterator[None]:
+def ports_held(robot: Robot) -> Iterator[None]:
     """A host's call is recorded while it holds its robot's ports: a tick that holds a port
     (`threading single`) then runs wholly before or after it, so a recording's order of runs is
-    the wire's, which `rdisc replay` follows. Each port once, in the order of connection names."""
+    the wire's, which `rdisc replay` follows (`--call`, and the console's calls). Each port once,
+    in the order of connection names."""
     locks = list({id(port): port.lock for _, port in sorted(robot._ports.items())}.values())
     for lock in locks:
         lock.acquire()
@@ -5235,7 +5236,7 @@ def run_command(args: argparse.Namespace, robot: Robot, prog: str, sim: Simulato
         if opened is not None:
             opened()
         for name, kind, values in calls:
-            with _ports_held(robot):
+            with ports_held(robot):
                 if session is not None:
                     session.call(kind, name, values)
                 make_call(robot, kind, name, values)
