@@ -69,6 +69,8 @@ class _Command:
     element: int | None
     actuator: int
     to_joint: Callable[[Any], float]
+    joint: str = ""
+    quantity: m.Quantity = m.Quantity.POSITION
 
 
 @dataclass(frozen=True, slots=True)
@@ -129,7 +131,7 @@ class Simulation:
                 param = next(i for i, p in enumerate(owner.params) if p.name == b.parameter)
                 actuator = mujoco.mj_name2id(self.physics, mujoco.mjtObj.mjOBJ_ACTUATOR, actuator_name(t, b))
                 self._commands.setdefault((b.interface, b.target), []).append(
-                    _Command(param, b.index, actuator, _conversion(b.to_joint, "raw")))
+                    _Command(param, b.index, actuator, _conversion(b.to_joint, "raw"), joint.name, b.quantity))
             for b in t.measures:
                 self._measures[b.target, b.index] = (joint, b.quantity, _conversion(b.to_device, b.quantity.value))
         self._bodies = {name: mujoco.mj_name2id(self.physics, mujoco.mjtObj.mjOBJ_BODY, name) for name in model.links}
@@ -139,6 +141,8 @@ class Simulation:
                       for p in model.primitives.values() if p.table is not None and p.table.key}
         self._listed = {p.name for p in model.primitives.values() if p.listed}  # replies by their place
         self._errors: dict[str, tuple[Any, ...]] = {}  # the error reply each primitive told to fail answers
+        self.warnings: list[str] = []  # what the simulation does that the device would not, in order
+        self._clipped: set[int] = set()  # actuators whose last command lay beyond their joint's range
         if seed is not None:
             jitter = random.Random(seed)
             for joint in model.joints.values():
@@ -283,7 +287,26 @@ class Simulation:
     def _command(self, commands: list[_Command], values: Sequence[Any]) -> None:
         for c in commands:
             value = values[c.param] if c.element is None else values[c.param][c.element]
-            self.data.ctrl[c.actuator] = c.to_joint(value)
+            target = c.to_joint(value)
+            self.data.ctrl[c.actuator] = target
+            self._clip(c, float(target))
+
+    def _clip(self, command: _Command, target: float) -> None:
+        """Warn when a command lies beyond its joint's range (MuJoCo holds the actuator at the limit, a
+        real servo would go on): once as it crosses, again only after a command within the range."""
+        if not self.physics.actuator_ctrllimited[command.actuator]:
+            return
+        low, high = (float(v) for v in self.physics.actuator_ctrlrange[command.actuator])
+        if low <= target <= high:
+            self._clipped.discard(command.actuator)
+            return
+        if command.actuator in self._clipped:
+            return
+        self._clipped.add(command.actuator)
+        held = min(max(target, low), high)
+        self.warnings.append(f"joint `{command.joint}`: a {command.quantity.value} command of {target:.4g} is "
+                             f"beyond its range {low:g}..{high:g}; the simulation holds it at {held:g}, "
+                             "where the device would go on")
 
     def _quantity(self, joint: m.Joint, quantity: m.Quantity) -> float:
         j = self._joint(joint.name)
