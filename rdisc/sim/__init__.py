@@ -143,6 +143,7 @@ class Simulation:
         self._errors: dict[str, tuple[Any, ...]] = {}  # the error reply each primitive told to fail answers
         self.warnings: list[str] = []  # what the simulation does that the device would not, in order
         self._clipped: set[int] = set()  # actuators whose last command lay beyond their joint's range
+        self._rest_on_ground()
         if seed is not None:
             jitter = random.Random(seed)
             for joint in model.joints.values():
@@ -281,6 +282,22 @@ class Simulation:
                                           "out of proportion to the others?)")
             raise self.failed
 
+    def _rest_on_ground(self) -> None:
+        """A free base with no `spawn` pose starts with its lowest collision shape on the floor, wherever
+        its origin is (a base whose origin is its chassis's centre would start inside the floor and be
+        thrown up)."""
+        mujoco = self._mujoco
+        root = self.model.root_link()
+        free = [j for j in range(self.physics.njnt) if self.physics.jnt_type[j] == mujoco.mjtJoint.mjJNT_FREE]
+        if root is None or root.spawn is not None or not free:
+            return
+        mujoco.mj_kinematics(self.physics, self.data)
+        bottoms = [_bottom(self.physics, self.data, g) for g in range(self.physics.ngeom)
+                   if self.physics.geom_bodyid[g] != 0
+                   and (self.physics.geom_contype[g] or self.physics.geom_conaffinity[g])]
+        if bottoms:
+            self.data.qpos[self.physics.jnt_qposadr[free[0]] + 2] -= min(bottoms)
+
     def _joint(self, name: str) -> Any:
         return self.physics.joint(name)
 
@@ -341,6 +358,26 @@ class Simulation:
                 joint, quantity, to_device = measure
                 values[s.out] = to_device(self._quantity(joint, quantity))
         return values
+
+
+def _bottom(physics: Any, data: Any, geom: int) -> float:
+    """The height of a geom's lowest point, as placed: a sphere's, a box's and a cylinder's exactly, a
+    mesh's its bounding sphere's."""
+    import mujoco
+
+    z = float(data.geom_xpos[geom][2])
+    up = data.geom_xmat[geom][6:9]  # the world's z in the geom's frame: the rotation's last row
+    size = physics.geom_size[geom]
+    match physics.geom_type[geom]:
+        case mujoco.mjtGeom.mjGEOM_SPHERE:
+            return z - float(size[0])
+        case mujoco.mjtGeom.mjGEOM_BOX:
+            return z - sum(abs(float(up[i])) * float(size[i]) for i in range(3))
+        case mujoco.mjtGeom.mjGEOM_CYLINDER:
+            tilt = abs(float(up[2]))
+            return z - tilt * float(size[1]) - float(size[0]) * math.sqrt(max(0.0, 1 - tilt * tilt))
+        case _:
+            return z - float(physics.geom_rbound[geom])
 
 
 def _replies(p: m.Primitive) -> dict[int | None, _Reply]:

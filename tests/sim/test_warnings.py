@@ -1,6 +1,6 @@
-"""What the simulation does that the device would not is said, never done quietly (issue 26, part 3):
-a command beyond its joint's range, which MuJoCo holds at the limit where the real servo would go on,
-is one warning as it crosses, not one a command."""
+"""A simulation that never lies quietly (issue 26, part 3): a command beyond its joint's range, which
+MuJoCo holds at the limit where the real servo would go on, is one warning as it crosses, not one a
+command; and a free base starts resting on the floor, whatever its origin."""
 
 from __future__ import annotations
 
@@ -10,7 +10,7 @@ import pytest
 
 pytest.importorskip("mujoco")
 
-from rdisc.compile import compile_path
+from rdisc.compile import compile_path, compile_text
 from rdisc.runtime import load
 from rdisc.sim import Simulation
 from tests.conftest import run_rdisc
@@ -42,3 +42,23 @@ def test_rdisc_sim_says_each_clipped_command_on_stderr() -> None:
     done = run_rdisc("sim", str(ARM), "--call", "move", "angle=[0, 2.5, 0, 0, 0, 0]", "--duration", "0.1")
     assert done.returncode == 0
     assert done.stderr.splitlines()[-1] == f"rdisc sim: warning: {CLIPPED}"
+
+
+BASE_IN_THE_MIDDLE = """\
+robot cart { author "tests" }
+link base { collision box(0.3, 0.2, 0.16)  mass 2  inertia [0.01, 0.02, 0.02] }
+link left { collision cylinder(0.05, 0.02)  mass 0.1  inertia [0.0001, 0.0001, 0.0001] }
+link right { collision cylinder(0.05, 0.02)  mass 0.1  inertia [0.0001, 0.0001, 0.0001] }
+joint left_wheel: continuous base -> left { at [0, 0.12, -0.03]  rpy [-1.5707963267948966, 0, 0]  axis [0, 0, 1] }
+joint right_wheel: continuous base -> right { at [0, -0.12, -0.03]  rpy [-1.5707963267948966, 0, 0]  axis [0, 0, 1] }
+"""
+
+
+def test_a_base_whose_origin_is_its_centre_starts_resting_on_the_floor() -> None:
+    """Its box reaches 8 cm below its origin, its wheels 3 + 5 cm: it starts 8 cm up, not inside the floor."""
+    compilation = compile_text("cart.rdis", BASE_IN_THE_MIDDLE)
+    assert compilation.model is not None, [d.message for d in compilation.diagnostics.items]
+    sim = Simulation(compilation.model)
+    assert abs(sim.link_poses()["base"][2] - 0.08) < 1e-12
+    sim.advance(0.5)
+    assert abs(sim.link_poses()["base"][2] - 0.08) < 1e-3  # and stays there: nothing threw it up
