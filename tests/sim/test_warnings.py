@@ -62,3 +62,17 @@ def test_a_base_whose_origin_is_its_centre_starts_resting_on_the_floor() -> None
     assert abs(sim.link_poses()["base"][2] - 0.08) < 1e-12
     sim.advance(0.5)
     assert abs(sim.link_poses()["base"][2] - 0.08) < 1e-3  # and stays there: nothing threw it up
+
+
+def test_a_link_never_touches_its_parent_even_one_welded_to_the_world() -> None:
+    """The arm's turret sits on its base plate, which is welded to the world (where MuJoCo's own
+    parent filter does not reach): the MJCF excludes each joint's two links from colliding."""
+    model = compile_path(str(ARM)).model
+    assert model is not None
+    sim = Simulation(model)
+    sim.advance(0.2)
+    physics, data = sim.physics, sim.data
+    touching = {(physics.body(physics.geom_bodyid[c.geom1]).name, physics.body(physics.geom_bodyid[c.geom2]).name)
+                for c in data.contact[:data.ncon]}
+    joined = {(j.parent, j.child) for j in model.joints.values()}
+    assert not touching & (joined | {(b, a) for a, b in joined}), touching
