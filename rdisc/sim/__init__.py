@@ -45,6 +45,7 @@ from rdisc.semantics.evaluate import Prepared, prepare
 __all__ = ["Simulation", "SimulationError"]
 
 JITTER = 0.01  # rad (m): how far `seed` moves each joint from where it starts
+OVERSPEED = 2  # a joint faster than this many times its `velocity` is warned of: no command asks that
 
 
 class SimulationError(engine.RdisError):
@@ -143,6 +144,7 @@ class Simulation:
         self._errors: dict[str, tuple[Any, ...]] = {}  # the error reply each primitive told to fail answers
         self.warnings: list[str] = []  # what the simulation does that the device would not, in order
         self._clipped: set[int] = set()  # actuators whose last command lay beyond their joint's range
+        self._fast: set[str] = set()  # joints warned of moving faster than OVERSPEED times their velocity
         self._rest_on_ground()
         if seed is not None:
             jitter = random.Random(seed)
@@ -274,6 +276,7 @@ class Simulation:
         except self._mujoco.FatalError as err:  # its memory for contacts overflowed, say
             _warnings.insert(0, str(err).strip().splitlines()[0])
         self._time = max(self._time, target)
+        self._overspeed()
         if _warnings or not (math.isfinite(float(self.data.qpos.sum())) and math.isfinite(float(self.data.qvel.sum()))):
             said = _warnings[0] if _warnings else "its state is no longer finite"
             _warnings.clear()
@@ -281,6 +284,20 @@ class Simulation:
                                           f"t = {began:.4f} s: {said} (is a mass, an inertia or a gain "
                                           "out of proportion to the others?)")
             raise self.failed
+
+    def _overspeed(self) -> None:
+        """Warn when a joint moves faster than OVERSPEED times its `velocity` (the physics going unstable,
+        or a simulated servo doing what the device's could not): once a joint, as a servo's overshoot swings
+        above and below it."""
+        for joint in self.model.joints.values():
+            if joint.velocity is None or not joint.moves() or joint.name in self._fast:
+                continue
+            speed = abs(float(self.data.qvel[self._joint(joint.name).dofadr[0]]))
+            if speed > OVERSPEED * joint.velocity and math.isfinite(speed):
+                self._fast.add(joint.name)
+                self.warnings.append(f"joint `{joint.name}` moves at {speed:.3g}, more than {OVERSPEED:g} times its "
+                                     f"velocity {joint.velocity:g}: the physics is unstable, or the simulated "
+                                     "servo does what the device's could not")
 
     def _rest_on_ground(self) -> None:
         """A free base with no `spawn` pose starts with its lowest collision shape on the floor, wherever

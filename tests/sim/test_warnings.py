@@ -4,6 +4,7 @@ command; and a free base starts resting on the floor, whatever its origin."""
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
 
 import pytest
@@ -76,3 +77,25 @@ def test_a_link_never_touches_its_parent_even_one_welded_to_the_world() -> None:
                 for c in data.contact[:data.ncon]}
     joined = {(j.parent, j.child) for j in model.joints.values()}
     assert not touching & (joined | {(b, a) for a, b in joined}), touching
+
+
+def test_a_joint_faster_than_its_velocity_is_one_warning() -> None:
+    """The arm's shoulder said to move at 0.05 rad/s: its simulated servo swings it to 1 rad far faster."""
+    text = ARM.read_text(encoding="utf-8")
+    line = next(x for x in text.splitlines() if x.startswith("joint shoulder:"))
+    text = text.replace(line, line.replace("velocity SPEED", "velocity 0.05"), 1)
+    compilation = compile_text("slow.rdis", text)
+    assert compilation.model is not None, [d.message for d in compilation.diagnostics.items]
+    sim = Simulation(compilation.model)
+    robot = load(compilation.model).connect(sim=sim, threads=False)
+    try:
+        robot.call_interface("move", [0.0, 0.0, 0.0, 0.0, 0.0, 0.0])
+        robot.run_for(0.5)
+        assert sim.warnings == []
+        robot.call_interface("move", [0.0, 1.0, 0.0, 0.0, 0.0, 0.0])
+        robot.run_for(1.0)
+    finally:
+        robot.close()
+    assert len(sim.warnings) == 1
+    assert re.fullmatch(r"joint `shoulder` moves at [\d.]+, more than 2 times its velocity 0\.05: the physics is "
+                        r"unstable, or the simulated servo does what the device's could not", sim.warnings[0])
