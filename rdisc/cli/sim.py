@@ -98,7 +98,10 @@ def run(args: argparse.Namespace) -> int:
     from rdisc.runtime.device import Description
 
     robot = engine.Robot(Description(model).device, timeout=args.timeout)
-    return engine.run_command(args, robot, "rdisc sim", sim=simulated, inputs=list(compilation.sources))
+    status = engine.run_command(args, robot, "rdisc sim", sim=simulated, inputs=list(compilation.sources))
+    for warning in simulated.warnings if status == 0 else ():  # what the physics did that the device would not
+        print(f"rdisc sim: warning: {warning}", file=sys.stderr)  # (a run that failed says its error alone)
+    return status
 
 
 def _code(text: str) -> int | str:

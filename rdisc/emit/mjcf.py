@@ -11,7 +11,9 @@ transmission's command becomes an actuator of its joint: a position command a se
 the joint's limits as the control's range and its effort as the force's; a servo's gain is
 no stiffer than the links it carries can follow within a timestep. A ball fixed
 to its parent (a sphere collision on a fixed joint) is a caster: it slides, so it gets
-almost no friction. `rdisc sim` runs the same model.
+almost no friction. Each joint's two links never collide (a `<contact><exclude>`: MuJoCo keeps a body from its
+parent itself, but not from one welded to the world, so an arm's turret stuck to its base plate).
+`rdisc sim` runs the same model.
 """
 
 from __future__ import annotations
@@ -64,6 +66,10 @@ def to_mjcf(model: m.Model, mesh_folder: str | None = None) -> str:
             assert joint.mimic is not None
             ET.SubElement(equality, "joint", name=f"{joint.name}_mimic", joint1=joint.name, joint2=joint.mimic.joint,
                           polycoef=f"{_num(joint.mimic.offset)} {_num(joint.mimic.multiplier)} 0 0 0")
+    if model.joints:  # a link never collides with its parent (MuJoCo keeps them apart only off the world)
+        contact = ET.SubElement(root, "contact")
+        for joint in model.joints.values():
+            ET.SubElement(contact, "exclude", body1=joint.parent, body2=joint.child)
     actuators = [(t, b) for t in model.transmissions.values() for b in t.commands]
     if actuators:
         act = ET.SubElement(root, "actuator")

@@ -51,6 +51,7 @@ from rdisc.semantics.meshes import rebased
 __all__ = ["Simulation", "SimulationError"]
 
 JITTER = 0.01  # rad (m): how far `seed` moves each joint from where it starts
+OVERSPEED = 2  # a joint faster than this many times its `velocity` is warned of: no command asks that
 
 
 class SimulationError(engine.RdisError):
@@ -75,6 +76,8 @@ class _Command:
     element: int | None
     actuator: int
     to_joint: Callable[[Any], float]
+    joint: str = ""
+    quantity: m.Quantity = m.Quantity.POSITION
 
 
 @dataclass(frozen=True, slots=True)
@@ -136,7 +139,7 @@ class Simulation:
                 param = next(i for i, p in enumerate(owner.params) if p.name == b.parameter)
                 actuator = mujoco.mj_name2id(self.physics, mujoco.mjtObj.mjOBJ_ACTUATOR, actuator_name(t, b))
                 self._commands.setdefault((b.interface, b.target), []).append(
-                    _Command(param, b.index, actuator, _conversion(b.to_joint, "raw")))
+                    _Command(param, b.index, actuator, _conversion(b.to_joint, "raw"), joint.name, b.quantity))
             for b in t.measures:
                 self._measures[b.target, b.index] = (joint, b.quantity, _conversion(b.to_device, b.quantity.value))
         self._bodies = {name: mujoco.mj_name2id(self.physics, mujoco.mjtObj.mjOBJ_BODY, name) for name in model.links}
@@ -151,6 +154,10 @@ class Simulation:
                             for s in model.states.values() if s.noise is not None}
         self._read_noise: dict[str, float] = {s.primitive: math.sqrt(s.noise.covariance[0][0])  # a sensor's one value
                             for s in model.sensors.values() if s.noise is not None}
+        self.warnings: list[str] = []  # what the simulation does that the device would not, in order
+        self._clipped: set[int] = set()  # actuators whose last command lay beyond their joint's range
+        self._fast: set[str] = set()  # joints warned of moving faster than OVERSPEED times their velocity
+        self._rest_on_ground()
         if seed is not None:
             jitter = random.Random(seed)
             for joint in model.joints.values():
@@ -281,6 +288,7 @@ class Simulation:
         except self._mujoco.FatalError as err:  # its memory for contacts overflowed, say
             _warnings.insert(0, str(err).strip().splitlines()[0])
         self._time = max(self._time, target)
+        self._overspeed()
         if _warnings or not (math.isfinite(float(self.data.qpos.sum())) and math.isfinite(float(self.data.qvel.sum()))):
             said = _warnings[0] if _warnings else "its state is no longer finite"
             _warnings.clear()
@@ -289,13 +297,62 @@ class Simulation:
                                           "out of proportion to the others?)")
             raise self.failed
 
+    def _overspeed(self) -> None:
+        """Warn when a joint moves faster than OVERSPEED times its `velocity` (the physics going unstable,
+        or a simulated servo doing what the device's could not): once a joint, as a servo's overshoot swings
+        above and below it."""
+        for joint in self.model.joints.values():
+            if joint.velocity is None or not joint.moves() or joint.name in self._fast:
+                continue
+            speed = abs(float(self.data.qvel[self._joint(joint.name).dofadr[0]]))
+            if speed > OVERSPEED * joint.velocity and math.isfinite(speed):
+                self._fast.add(joint.name)
+                self.warnings.append(f"joint `{joint.name}` moves at {speed:.3g}, more than {OVERSPEED:g} times its "
+                                     f"velocity {joint.velocity:g}: the physics is unstable, or the simulated "
+                                     "servo does what the device's could not")
+
+    def _rest_on_ground(self) -> None:
+        """A free base with no `spawn` pose starts with its lowest collision shape on the floor, wherever
+        its origin is (a base whose origin is its chassis's centre would start inside the floor and be
+        thrown up)."""
+        mujoco = self._mujoco
+        root = self.model.root_link()
+        free = [j for j in range(self.physics.njnt) if self.physics.jnt_type[j] == mujoco.mjtJoint.mjJNT_FREE]
+        if root is None or root.spawn is not None or not free:
+            return
+        mujoco.mj_kinematics(self.physics, self.data)
+        bottoms = [_bottom(self.physics, self.data, g) for g in range(self.physics.ngeom)
+                   if self.physics.geom_bodyid[g] != 0
+                   and (self.physics.geom_contype[g] or self.physics.geom_conaffinity[g])]
+        if bottoms:
+            self.data.qpos[self.physics.jnt_qposadr[free[0]] + 2] -= min(bottoms)
+
     def _joint(self, name: str) -> Any:
         return self.physics.joint(name)
 
     def _command(self, commands: list[_Command], values: Sequence[Any]) -> None:
         for c in commands:
             value = values[c.param] if c.element is None else values[c.param][c.element]
-            self.data.ctrl[c.actuator] = c.to_joint(value)
+            target = c.to_joint(value)
+            self.data.ctrl[c.actuator] = target
+            self._clip(c, float(target))
+
+    def _clip(self, command: _Command, target: float) -> None:
+        """Warn when a command lies beyond its joint's range (MuJoCo holds the actuator at the limit, a
+        real servo would go on): once as it crosses, again only after a command within the range."""
+        if not self.physics.actuator_ctrllimited[command.actuator]:
+            return
+        low, high = (float(v) for v in self.physics.actuator_ctrlrange[command.actuator])
+        if low <= target <= high:
+            self._clipped.discard(command.actuator)
+            return
+        if command.actuator in self._clipped:
+            return
+        self._clipped.add(command.actuator)
+        held = min(max(target, low), high)
+        self.warnings.append(f"joint `{command.joint}`: a {command.quantity.value} command of {target:.4g} is "
+                             f"beyond its range {low:g}..{high:g}; the simulation holds it at {held:g}, "
+                             "where the device would go on")
 
     def _quantity(self, joint: m.Joint, quantity: m.Quantity) -> float:
         j = self._joint(joint.name)
@@ -344,6 +401,26 @@ class Simulation:
             return value
         noisy = value + self._noise.gauss(0.0, deviation)
         return round(noisy) if isinstance(value, int) else noisy
+
+
+def _bottom(physics: Any, data: Any, geom: int) -> float:
+    """The height of a geom's lowest point, as placed: a sphere's, a box's and a cylinder's exactly, a
+    mesh's its bounding sphere's."""
+    import mujoco
+
+    z = float(data.geom_xpos[geom][2])
+    up = data.geom_xmat[geom][6:9]  # the world's z in the geom's frame: the rotation's last row
+    size = physics.geom_size[geom]
+    match physics.geom_type[geom]:
+        case mujoco.mjtGeom.mjGEOM_SPHERE:
+            return z - float(size[0])
+        case mujoco.mjtGeom.mjGEOM_BOX:
+            return z - sum(abs(float(up[i])) * float(size[i]) for i in range(3))
+        case mujoco.mjtGeom.mjGEOM_CYLINDER:
+            tilt = abs(float(up[2]))
+            return z - tilt * float(size[1]) - float(size[0]) * math.sqrt(max(0.0, 1 - tilt * tilt))
+        case _:
+            return z - float(physics.geom_rbound[geom])
 
 
 def _replies(p: m.Primitive) -> dict[int | None, _Reply]:
