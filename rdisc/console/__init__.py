@@ -4,10 +4,10 @@
 (assets/console.js and console.css, shipped in the package: nothing comes from the
 internet) and pushes to every open page, over a WebSocket, what happens as it happens:
 
-    {"type": "hello", "state": {...}, "trace": [io...], "errors": [error...], "outputs": [output...]}
+    {"type": "hello", "state": {...}, "sensor_ages": {...}, "trace": [io...], "errors": [error...], "outputs": [output...]}
     {"type": "output", "t": S, "name": O, "contents": {FIELD: value}}
     {"type": "io", "t": S, "direction": "write" | "read" | "lines", "connection": C, "data": "89 00 c8"}
-    {"type": "state", "state": {NAME: value}}
+    {"type": "state", "state": {NAME: value}, "sensor_ages": {SENSOR: seconds | null}}
     {"type": "error", "t": S, "error": TYPE, "message": TEXT}
     {"type": "result", "id": N, "ok": true} / {..., "ok": false, "error": TYPE, "message": TEXT}
     {"type": "body", "t": S, "links": {LINK: [x, y, z, qw, qx, qy, qz]}, "joints": {JOINT: position}}
