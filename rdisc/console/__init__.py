@@ -16,7 +16,9 @@ the last (`--sim` only) ten times a second while a page is open: each link's fra
 world (m, and a unit quaternion) and each moving joint's position (rad or m), as the
 simulation has them (`rdisc.sim.Simulation.link_poses`); the page draws the body from them. The server takes the page's calls, `{"id": N, "kind": "input" | "interface" | "primitive",
 "name": NAME, "values": {NAME: text}}`, each value the text of its form field (a checkbox's
-a bool), made the parameter's type here. `t` is seconds since the console started;
+a bool), made the parameter's type here. `sensor_ages` (only for a description with sensors): seconds since
+each sensor's value was read, by the robot's clock, null before its first read; the state is
+pushed again when a sensor is read anew. `t` is seconds since the console started;
 bytes are hex, as `rdisc run --trace` prints them.
 """
 
