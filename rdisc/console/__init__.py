@@ -4,10 +4,10 @@
 (assets/console.js and console.css, shipped in the package: nothing comes from the
 internet) and pushes to every open page, over a WebSocket, what happens as it happens:
 
-    {"type": "hello", "state": {...}, "trace": [io...], "errors": [error...], "outputs": [output...]}
+    {"type": "hello", "state": {...}, "sensor_ages": {...}, "trace": [io...], "errors": [error...], "outputs": [output...]}
     {"type": "output", "t": S, "name": O, "contents": {FIELD: value}}
     {"type": "io", "t": S, "direction": "write" | "read" | "lines", "connection": C, "data": "89 00 c8"}
-    {"type": "state", "state": {NAME: value}}
+    {"type": "state", "state": {NAME: value}, "sensor_ages": {SENSOR: seconds | null}}
     {"type": "error", "t": S, "error": TYPE, "message": TEXT}
     {"type": "result", "id": N, "ok": true} / {..., "ok": false, "error": TYPE, "message": TEXT}
     {"type": "body", "t": S, "links": {LINK: [x, y, z, qw, qx, qy, qz]}, "joints": {JOINT: position}}
@@ -16,7 +16,9 @@ the last (`--sim` only) ten times a second while a page is open: each link's fra
 world (m, and a unit quaternion) and each moving joint's position (rad or m), as the
 simulation has them (`rdisc.sim.Simulation.link_poses`); the page draws the body from them. The server takes the page's calls, `{"id": N, "kind": "input" | "interface" | "primitive",
 "name": NAME, "values": {NAME: text}}`, each value the text of its form field (a checkbox's
-a bool), made the parameter's type here. `t` is seconds since the console started;
+a bool), made the parameter's type here. `sensor_ages` (only for a description with sensors): seconds since
+each sensor's value was read, by the robot's clock, null before its first read; the state is
+pushed again when a sensor is read anew. `t` is seconds since the console started;
 bytes are hex, as `rdisc run --trace` prints them.
 """
 

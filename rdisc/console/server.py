@@ -108,6 +108,7 @@ class Console:
         self._errors: deque[dict[str, Any]] = deque(maxlen=ERRORS_KEPT)
         self._outputs: dict[str, dict[str, Any]] = {}
         self._state: dict[str, Any] = {}
+        self._ages: dict[str, float | None] = {}  # each sensor's age when the state was last pushed
         self._loop: asyncio.AbstractEventLoop | None = None
         self._pages: set[ServerConnection] = set()
         robot.on_output(self._output)
@@ -149,12 +150,22 @@ class Console:
         self._push_state()
 
     def _push_state(self) -> None:
+        """The state, when it changed or a sensor was read anew, with each sensor's age then."""
         state = jsonable(dict(self.robot.state))
+        ages = self._sensor_ages()
         with self._lock:
-            if state == self._state:
+            fresh = any(a is not None and ((was := self._ages.get(n)) is None or a < was) for n, a in ages.items())
+            if state == self._state and not fresh:
                 return
-            self._state = state
-        self._push({"type": "state", "state": state})
+            self._state, self._ages = state, ages
+        event: dict[str, Any] = {"type": "state", "state": state}
+        if ages:
+            event["sensor_ages"] = ages
+        self._push(event)
+
+    def _sensor_ages(self) -> dict[str, float | None]:
+        """Seconds since each sensor's value was read (None: never), by the robot's clock."""
+        return {n: None if (a := self.robot.sensor_age(n)) is None else round(a, 3) for n in self.robot.device.sensors}
 
     def _push(self, event: dict[str, Any]) -> None:
         loop = self._loop
@@ -266,6 +277,8 @@ class Console:
             self._state = jsonable(dict(self.robot.state))
             hello = {"type": "hello", "t": self._now(), "state": self._state, "trace": list(self._trace),
                      "errors": list(self._errors), "outputs": list(self._outputs.values())}
+        if self.robot.device.sensors:
+            hello["sensor_ages"] = self._sensor_ages()
         self._pages.add(page)
         loop = asyncio.get_running_loop()
         try:

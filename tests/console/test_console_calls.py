@@ -196,3 +196,45 @@ def test_a_raw_send_on_no_such_connection_is_refused(console) -> None:
     assert robot_console.call(json.dumps({"id": 8, "kind": "raw", "connection": "elsewhere", "hex": "01"})) == {
         "type": "result", "id": 8, "ok": False, "error": "KeyError", "message": "t has no connection named 'elsewhere'"}
     assert bytes(port.written) == b""
+
+
+SENSED = """
+robot s { }
+connection link: serial { baud 9600 }
+primitive heat() on link pack "B" (7) unpack "b"
+sensor temperature: int from heat() cache 100 ms
+primitive leds(level: int in 0..255) on link pack "BB" (139, level)
+interface show() { leds(temperature) }
+"""
+
+
+def test_the_state_event_says_how_old_each_sensor_is(tmp_path) -> None:
+    """A sensor's age by the robot's clock in the state pushed to the pages (null before its
+    first read); the state is pushed again when the sensor is read anew, not while it is kept."""
+    path = tmp_path / "s.rdis"
+    path.write_text(SENSED)
+    port = ScriptedPort(b"\x21\x22")
+    robot = load(path).connect(port, threads=False)
+    now = [10.0]
+    robot._clock = lambda: now[0]
+    events: list[dict] = []
+    console = Console(robot, "<p>page</p>")
+    console._push = events.append
+    try:
+        assert console._sensor_ages() == {"temperature": None}  # as a new page's hello says
+        assert call(console, "interface", "show") == {"type": "result", "id": 1, "ok": True}
+        assert bytes(port.written) == b"\x07\x8b\x21"
+        assert [e for e in events if e["type"] == "state"][-1] == {
+            "type": "state", "state": {"temperature": 33}, "sensor_ages": {"temperature": 0.0}}
+        now[0] = 10.05  # kept: nothing read, and no new state to push
+        pushed = len(events)
+        assert call(console, "interface", "show") == {"type": "result", "id": 1, "ok": True}
+        assert bytes(port.written) == b"\x07\x8b\x21\x8b\x21"
+        assert [e for e in events[pushed:] if e["type"] == "state"] == []
+        now[0] = 10.25  # stale: read anew, and its age starts again
+        assert call(console, "interface", "show") == {"type": "result", "id": 1, "ok": True}
+        assert bytes(port.written) == b"\x07\x8b\x21\x8b\x21\x07\x8b\x22"
+        assert [e for e in events if e["type"] == "state"][-1] == {
+            "type": "state", "state": {"temperature": 34}, "sensor_ages": {"temperature": 0.0}}
+    finally:
+        robot.close()

@@ -192,9 +192,19 @@ function plot(canvas, fields) {
   });
 }
 
-function showState(state) {
+function showState(state, ages) {
   for (const row of document.querySelectorAll("[data-rdis-state] tr[data-name]")) {
     if (row.dataset.name in state) row.querySelector("[data-value]").textContent = shown(state[row.dataset.name]);
+    if (ages && row.dataset.name in ages) {  // a sensor's: how old its value was when the state was pushed
+      let age = row.querySelector("[data-age]");
+      if (!age) {
+        age = element("td");
+        age.dataset.age = "";
+        row.append(age);
+      }
+      const seconds = ages[row.dataset.name];
+      age.textContent = seconds === null ? "never read" : `read ${seconds.toFixed(3)} s before`;
+    }
   }
 }
 
@@ -379,14 +389,14 @@ function showBody(message) {
 function receive(message) {
   switch (message.type) {
     case "hello":
-      showState(message.state);
+      showState(message.state, message.sensor_ages);
       message.trace.forEach(showIo);
       message.errors.forEach(showError);
       message.outputs.forEach(showOutput);
       break;
     case "output": showOutput(message); break;
     case "io": showIo(message); break;
-    case "state": showState(message.state); break;
+    case "state": showState(message.state, message.sensor_ages); break;
     case "error": showError(message); break;
     case "result": answered(message); break;
     case "body": showBody(message); break;
