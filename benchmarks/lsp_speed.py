@@ -103,7 +103,7 @@ async def measure(runs: int) -> dict[str, float]:
     from rdisc.semantics.check.memo import Memo
     from rdisc.syntax.incremental import Reparser
 
-    checks, edited_checks = [], []
+    checks, edited_checks, moved_checks = [], [], []
     reparser, memo = Reparser(), Memo()
     compile_text(str(path), text, parser=reparser, memo=memo)
     for run in range(runs):
@@ -114,7 +114,12 @@ async def measure(runs: int) -> dict[str, float]:
         start = time.perf_counter()
         compile_text(str(path), edited, parser=reparser, memo=memo)
         edited_checks.append(time.perf_counter() - start)
-    return {"change": median_ms(changes), "hover": median_ms(hovers), "completion": median_ms(completions),
+        longer = text.replace("0..1000", f"0..{10001 + run}", 1)  # one character more: the rest moves
+        start = time.perf_counter()
+        compile_text(str(path), longer, parser=reparser, memo=memo)
+        moved_checks.append(time.perf_counter() - start)
+        compile_text(str(path), text, parser=reparser, memo=memo)
+    return {"moved": median_ms(moved_checks),"change": median_ms(changes), "hover": median_ms(hovers), "completion": median_ms(completions),
             "check": median_ms(checks), "edited": median_ms(edited_checks), "lines": float(len(lines))}
 
 
@@ -129,6 +134,8 @@ def main() -> None:
           f"(target {CHANGE_TARGET_MS:.0f} ms)")
     print(f"{'    the check alone (in process), whole file':47}{figures['check']:8.1f} ms")
     print(f"{'    the same, the changed part only':47}{figures['edited']:8.1f} ms")
+    print(f"{'    a character more at the top (the rest moves)':47}{figures['moved']:8.1f} ms  "
+          "(declarations that move are checked again)")
     print(f"  hover on a call of a primitive               {figures['hover']:8.1f} ms  "
           f"(target {ANSWER_TARGET_MS:.0f} ms)")
     print(f"  completion inside a pack list                {figures['completion']:8.1f} ms  "
