@@ -172,7 +172,7 @@ def untimed(stderr: str) -> list[str]:
 
 
 #: verbs run in this process by `run_rdisc` (each ends closing what it opened; the console serves on)
-IN_PROCESS_VERBS = frozenset({"check", "build", "import", "explain", "dump", "decode", "graph", "replay", "sim",
+IN_PROCESS_VERBS = frozenset({"check", "build", "import", "explain", "adapters", "dump", "decode", "graph", "replay", "sim",
                               "run", "emit-python", "emit-ros", "emit-urdf", "emit-sdf", "emit-mjcf", "fmt"})
 
 

@@ -23,7 +23,7 @@ VERBS = {
     "replay": "replay", "console": "console", "emit-python": "emit_python", "emit-ros": "emit_ros",
     "emit-ros2": "emit_ros2",
     "emit-urdf": "emit_urdf", "emit-sdf": "emit_sdf", "emit-mjcf": "emit_mjcf", "dump": "dump", "graph": "graph",
-    "decode": "decode", "lsp": "lsp", "fmt": "fmt",
+    "decode": "decode", "lsp": "lsp", "fmt": "fmt", "adapters": "adapters",
 }  # fmt: skip
 EXIT_INTERNAL = 3
 

@@ -1,0 +1,88 @@
+"""`rdisc adapters [NAME...]`: the domain adapters (thesis §4.11, §7.2.5) with their fields, units
+and what each is in every framework rdisc speaks: the ROS 1 message, the ROS 2 message, and the
+schema a Foxglove session or an MCAP recording names (ROS 2's, `ros2msg`, its messages CDR).
+
+The standard adapters come from stdlib/adapters.rdis; `--description FILE` adds those a
+description declares. The ROS columns are the adapter's own `ros` annotations, the one table
+every emitter reads; ROS 2's name is ROS 1's with `/msg/` (rdisc.lowering.messages.ros2_name)."""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+from typing import Any
+
+from rdisc.cli.output import EXIT_ERRORS, EXIT_OK, EXIT_USAGE
+from rdisc.semantics import model as m
+
+_EMPTY = 'robot adapters { author "rdisc" }\n'  # a description of nothing: only the standard adapters
+
+
+def add_parser(verbs: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
+    p = verbs.add_parser("adapters", help="list the domain adapters: fields, units, ROS 1, ROS 2 and Foxglove types")
+    p.add_argument("names", nargs="*", metavar="NAME", help="only these adapters (default: all)")
+    p.add_argument("--description", metavar="FILE", help="also the adapters this description declares")
+    p.add_argument("--format", choices=("text", "json"), default="text")
+    p.set_defaults(run=run)
+
+
+def run(args: argparse.Namespace) -> int:
+    from rdisc.compile import compile_path, compile_text
+
+    compilation = compile_text("adapters.rdis", _EMPTY) if args.description is None else compile_path(args.description)
+    if compilation.model is None or compilation.diagnostics.has_errors():
+        print(f"rdisc: {args.description} does not check: `rdisc check {args.description}` says why", file=sys.stderr)
+        return EXIT_ERRORS
+    adapters = compilation.model.adapters
+    unknown = [name for name in args.names if name not in adapters]
+    if unknown:
+        print(f"rdisc: no adapter {', '.join(f'`{n}`' for n in unknown)}; `rdisc adapters` lists them",
+              file=sys.stderr)
+        return EXIT_USAGE
+    chosen = [adapters[name] for name in args.names] if args.names else list(adapters.values())
+    if args.format == "json":
+        print(json.dumps([_json(a) for a in chosen], indent=2, ensure_ascii=False))
+    else:
+        print("\n\n".join(_text(a) for a in chosen))
+    return EXIT_OK
+
+
+def frameworks(adapter: m.Adapter) -> dict[str, Any]:
+    """What the adapter is in each framework: a column each (None where it has no message)."""
+    from rdisc.lowering.messages import ros2_name
+
+    if adapter.ros is None:
+        return {"ros1": None, "ros2": None, "foxglove": None}
+    ros2 = ros2_name(adapter.ros)
+    return {"ros1": adapter.ros, "ros2": ros2, "foxglove": {"schema": ros2, "schemaEncoding": "ros2msg",
+                                                            "messageEncoding": "cdr"}}
+
+
+def _type(type_: m.AnyType) -> str:
+    if isinstance(type_, m.Array):
+        return f"{type_.element.value}[{type_.size or ''}]"
+    return type_.value
+
+
+def _json(adapter: m.Adapter) -> dict[str, Any]:
+    return {"name": adapter.name, "standard": adapter.standard, "doc": adapter.doc, **frameworks(adapter),
+            "fields": [{"name": f.name, "type": _type(f.type), "unit": f.unit, "ros": f.ros, "doc": f.doc}
+                       for f in adapter.fields]}
+
+
+def _text(adapter: m.Adapter) -> str:
+    columns = frameworks(adapter)
+    head = adapter.name + ("" if adapter.standard else "  (declared by the description)")
+    lines = [head]
+    if adapter.doc:
+        lines.append("  " + adapter.doc.split("\n\n")[0].replace("\n", " "))
+    if columns["ros1"] is None:
+        lines.append("  no framework message")
+    else:
+        lines.append(f"  ROS 1 {columns['ros1']}   ROS 2 {columns['ros2']}   Foxglove {columns['ros2']} (ros2msg, CDR)")
+    rows = [(f.name, _type(f.type), f.unit or "-", f.ros or "-") for f in adapter.fields]
+    widths = [max(len(row[i]) for row in rows) for i in range(3)] if rows else [0, 0, 0]
+    lines += ["  " + "  ".join(cell.ljust(widths[i]) if i < 3 else cell for i, cell in enumerate(row)).rstrip()
+              for row in rows]
+    return "\n".join(lines)
