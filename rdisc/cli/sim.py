@@ -98,6 +98,11 @@ def run(args: argparse.Namespace) -> int:
     from rdisc.runtime.device import Description
 
     robot = engine.Robot(Description(model).device, timeout=args.timeout)
+    from rdisc.sim.odometry import OdometryWatch
+
+    watch = OdometryWatch(model, simulated)
+    if watch.errors:
+        robot.on_output(watch)
     status = engine.run_command(args, robot, "rdisc sim", sim=simulated, inputs=list(compilation.sources))
     for warning in simulated.warnings if status == 0 else ():  # what the physics did that the device would not
         print(f"rdisc sim: warning: {warning}", file=sys.stderr)  # (a run that failed says its error alone)

@@ -258,6 +258,15 @@ class Simulation:
             return {j.name: float(self.data.qpos[self._joint(j.name).qposadr[0]])
                     for j in self.model.joints.values() if j.moves()}
 
+    def base_pose(self) -> tuple[float, float, float]:
+        """The root link's x, y (m) and heading (rad) in the world now (the physics brought up to now)."""
+        root = self.model.root_link()
+        if root is None:
+            return (0.0, 0.0, 0.0)
+        with self._lock:
+            self._catch_up()
+            return self.pose(root.name)
+
     def pose(self, link: str) -> tuple[float, float, float]:
         """A link's x, y (m) and heading (rad, about z) in the world now."""
         body = self.data.body(link)
