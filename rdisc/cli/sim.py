@@ -100,7 +100,7 @@ def run(args: argparse.Namespace) -> int:
     robot = engine.Robot(Description(model).device, timeout=args.timeout)
     from rdisc.sim.odometry import OdometryWatch
 
-    watch = OdometryWatch(model, simulated)
+    watch = OdometryWatch(model, simulated, show=args.watch)
     if watch.errors:
         robot.on_output(watch)
     status = engine.run_command(args, robot, "rdisc sim", sim=simulated, inputs=list(compilation.sources))

@@ -7,6 +7,7 @@ declaring that much noise on x and y says the drift is expected."""
 
 from __future__ import annotations
 
+import json
 import re
 from pathlib import Path
 
@@ -54,3 +55,15 @@ def test_declared_noise_widens_what_counts_as_agreeing(tmp_path: Path) -> None:
                                                  '    noise x 0.05 "m"  noise y 0.05 "m" }')))
     done = run_rdisc("sim", noisy, *DRIVE)
     assert (done.returncode, done.stderr) == (0, "")
+
+
+def test_watch_prints_the_physics_pose_beside_each_odometry() -> None:
+    done = run_rdisc("sim", CREATE2, *DRIVE, "--watch")
+    assert done.returncode == 0, done.stderr
+    lines = [json.loads(line) for line in done.stdout.splitlines()]
+    said = [line["contents"] for line in lines if line.get("name") == "odom"]
+    true = [line["contents"] for line in lines if line.get("simulated") == "odom"]
+    assert len(said) == len(true) == 41  # the 20 Hz poll over 2 s, each with the physics' pose just before it
+    assert set(true[-1]) == {"x", "y", "theta"}
+    assert 0.36 <= true[-1]["x"] <= 0.44 and abs(said[-1]["x"] - true[-1]["x"]) < 0.02
+    assert abs(true[-1]["y"]) < 0.005 and abs(true[-1]["theta"]) < 0.01
