@@ -343,6 +343,7 @@ class Input:
     args: Code
     _: KW_ONLY
     request: bool = False
+    sensors: tuple[str, ...] = ()
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -606,8 +607,9 @@ class _Lowering:
         adapter = self.model.adapters[i.adapter]
         fields = tuple(m.Parameter(f.name, f.type) for f in adapter.fields)
         interface = interfaces[i.interface]
-        plan = Input(i.name, i.adapter, _params(fields), interface, _values(fields, i.args))
-        return dataclasses.replace(plan, request=written_at_once(interface))
+        read = self.sensors(*i.args)  # read first, the general way: no one-step request
+        plan = Input(i.name, i.adapter, _params(fields), interface, _values(fields, i.args), sensors=read)
+        return dataclasses.replace(plan, request=written_at_once(interface) and not read)
 
     def connection(self, c: m.Connection, interfaces: Mapping[str, Interface]) -> Connection:
         def hook(call: m.HookCall | None) -> Hook | None:

@@ -560,6 +560,8 @@ class Robot(Exchange):
         for i, param in enumerate(plan.fields):
             if type(values[i]) is not param.kind or param.size is not None:
                 values[i] = _accept_param(values[i], param, f"input {plan.name}: field {param.name}")
+        if plan.sensors:
+            self._sense(plan.sensors)
         try:
             args = plan.args(self._state, values)
         except EVAL_ERRORS as err:

@@ -203,7 +203,8 @@ class _Engine:
     def input(self, i: plans.Input) -> engine.Input:
         interface = self.interface(i.interface)
         request = input_request(i, built(i.fields), interface.params) if i.request else None
-        made = engine.Input(i.name, i.adapter, built(i.fields), interface, self.closure(i.args), request=request)
+        made = engine.Input(i.name, i.adapter, built(i.fields), interface, self.closure(i.args), request=request,
+                            sensors=i.sensors)
         assert (made.request is not None) == i.request, f"{i.name}: the lowering and the engine disagree"
         return made
 

@@ -71,10 +71,7 @@ class Checker(Declarations, Primitives, Interfaces, Sensors, Remembering):
             for name, decl in self.s.interfaces.items()
         }
         self.interface_cycles(interfaces)
-        for name in readable:  # an input's arguments are not refreshed: they read no sensor
-            del self.state_env[name]
         inputs = {name: self.input(decl, adapters, interface_params) for name, decl in self.s.inputs.items()}
-        self.state_env.update(readable)
         outputs = {name: self.output(decl, adapters) for name, decl in self.s.outputs.items()}
         links, joints, transmissions = self.robot_body(primitives, interface_params, states)
         actuators = self.robot_actuators(links, joints, transmissions)

@@ -2325,6 +2325,7 @@ class Input:
     interface: Interface
     args: Callable[[StateValues, Args], Args]
     request: Request | None = None
+    sensors: tuple[str, ...] = ()  # the sensors its arguments read: each read first, when stale
     primitive: Primitive | None = field(init=False)  # where `request` goes, when there is one
     kinds: tuple[type, ...] = field(init=False)
     taken: Callable[[Mapping[str, Any]], Args] = field(init=False)  # the fields' values from a call's keywords
@@ -2332,7 +2333,7 @@ class Input:
     def __post_init__(self) -> None:
         object.__setattr__(self, "kinds", tuple(f.kind for f in self.fields))
         object.__setattr__(self, "taken", _taking(tuple(f.name for f in self.fields)))
-        call = _written_at_once(self.interface)
+        call = None if self.sensors else _written_at_once(self.interface)  # a sensor is read the general way
         object.__setattr__(self, "primitive", call.target if call is not None else None)
         request = None if call is None else self.request or _composed(self, call)
         object.__setattr__(self, "request", request)
@@ -4587,6 +4588,8 @@ class Robot(Exchange):
         for i, param in enumerate(plan.fields):
             if type(values[i]) is not param.kind or param.size is not None:
                 values[i] = _accept_param(values[i], param, f"input {plan.name}: field {param.name}")
+        if plan.sensors:
+            self._sense(plan.sensors)
         try:
             args = plan.args(self._state, values)
         except EVAL_ERRORS as err:
