@@ -139,7 +139,11 @@ class _Ros1(Bridge):
             w.blank()
             with w.block("def on_error(error: BaseException) -> None:"):
                 w.line('rospy.logerr("%s: %s", type(error).__name__, error)')
-                w.line('errors.publish(std_msgs_msg.String(data=f"{type(error).__name__}: {error}"))')
+                with w.block("try:"):
+                    w.line('errors.publish(std_msgs_msg.String(data=f"{type(error).__name__}: {error}"))')
+                with w.block("except rospy.ROSException:"):
+                    w.line("if not rospy.is_shutdown():  # a publisher closed by the shutdown is no error: logged above")
+                    w.line("    raise")
             w.blank()
             with w.block("def on_io(direction: str, connection: str, data: bytes) -> None:"):
                 w.line('shown = data.decode("ascii") if direction == "lines" else data.hex(" ")')
