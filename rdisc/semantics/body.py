@@ -12,7 +12,8 @@ import dataclasses
 import math
 import os
 from collections import deque
-from collections.abc import Callable, Iterable
+from collections.abc import Callable, Iterable, Sequence
+from typing import Protocol, TypeVar
 
 from rdisc.diagnostics import Diagnostics, Label, abbreviate
 from rdisc.engine.operations import EvalError
@@ -42,6 +43,13 @@ MAX_MASS = 1e6  # kg: a link heavier is out of what a simulator integrates (a ma
 MAX_INERTIA = 1e6  # kg m², each element of an inertia
 MAX_LENGTH = 1e4  # m, each size of a shape
 _CONSTANTS = Env({}, "in the body", "constants")
+
+class _Spanned(Protocol):
+    @property
+    def span(self) -> Span: ...
+
+
+_Clause = TypeVar("_Clause", bound=_Spanned)
 
 Number = Callable[[ast.Expr, str], "float | None"]
 
@@ -110,11 +118,16 @@ class BodyRules:
     def once(self, items: Iterable[ast.BodyValue | ast.JointLimit | ast.JointMimic], key: str,
              owner: ast.Ident) -> ast.Expr | None:
         """The value of a clause given at most once; a repeat is reported where it is."""
-        found = [i for i in items if isinstance(i, ast.BodyValue) and i.key == key]
+        found = self.first([i for i in items if isinstance(i, ast.BodyValue) and i.key == key], key, owner)
+        return found.value if found is not None else None
+
+    def first(self, found: Sequence[_Clause], word: str, owner: ast.Ident) -> _Clause | None:
+        """The first of the clauses `word` a declaration gives (a link's `spawn`, a joint's `limit`),
+        each repeat reported where it is (E203)."""
         for extra in found[1:]:
-            self.d.report("E203", extra.span, f"`{key}` is given twice in `{owner.text}`",
+            self.d.report("E203", extra.span, f"`{word}` is given twice in `{owner.text}`",
                           labels=(Label(found[0].span, "first given here"),))
-        return found[0].value if found else None
+        return found[0] if found else None
 
     # -- links ---------------------------------------------------------------------------
 
@@ -126,19 +139,16 @@ class BodyRules:
 
     def spawn(self, decl: ast.LinkDecl) -> m.Spawn | None:
         """`spawn floating|fixed at XYZ rpy RPY`, given once (that it is the root's: `spawned`)."""
-        given = [i for i in decl.items if isinstance(i, ast.LinkSpawn)]
-        for extra in given[1:]:
-            self.d.report("E203", extra.span, f"`spawn` is given twice in `{decl.name.text}`",
-                          labels=(Label(given[0].span, "first given here"),))
-        if not given:
+        given = self.first([i for i in decl.items if isinstance(i, ast.LinkSpawn)], "spawn", decl.name)
+        if given is None:
             return None
-        kind = given[0].kind.text
+        kind = given.kind.text
         if kind not in ("floating", "fixed"):
-            self.d.report("E601", given[0].kind.span, f"a link is spawned `floating` or `fixed`, not `{kind}`",
+            self.d.report("E601", given.kind.span, f"a link is spawned `floating` or `fixed`, not `{kind}`",
                           help=suggest(kind, ("floating", "fixed")) or "`floating` for a mobile base, `fixed` for an "
                           "arm bolted to the world")
             return None
-        pose = self.pose(given[0].at, given[0].rpy)
+        pose = self.pose(given.at, given.rpy)
         return None if pose is None else m.Spawn(kind == "floating", pose)
 
     def spawned(self, links: dict[str, m.Link], joints: dict[str, m.Joint]) -> None:
@@ -308,10 +318,7 @@ class BodyRules:
         items = decl.items
         at, rpy = self.once(items, "at", decl.name), self.once(items, "rpy", decl.name)
         origin = self.pose(at, rpy)
-        limits = [i for i in items if isinstance(i, ast.JointLimit)]
-        for extra in limits[1:]:
-            self.d.report("E203", extra.span, f"`limit` is given twice in `{decl.name.text}`",
-                          labels=(Label(limits[0].span, "first given here"),))
+        limit = self.first([i for i in items if isinstance(i, ast.JointLimit)], "limit", decl.name)
         moving = {"axis", "velocity", "effort", "damping", "friction"}
         if kind is m.JointKind.FIXED:
             for item in items:
@@ -331,8 +338,7 @@ class BodyRules:
                 given = None
             axis = given or axis
         lower = upper = None
-        if limits:
-            limit = limits[0]
+        if limit is not None:
             if kind not in _LIMITED:
                 self.d.report("E603", limit.span, f"a {kind.value} joint has no position limit",
                               help="a joint that turns within limits is `revolute`" if kind is m.JointKind.CONTINUOUS
@@ -364,21 +370,18 @@ class BodyRules:
     def mimic(self, decl: ast.JointDecl) -> m.Mimic | None | bool:  # False: refused
         """`mimic JOINT multiplier M offset O` (1 and 0 when left out): None without one, False when
         refused (reported). The joint it names is checked with the tree (`mimics`)."""
-        given = [i for i in decl.items if isinstance(i, ast.JointMimic)]
-        for extra in given[1:]:
-            self.d.report("E203", extra.span, f"`mimic` is given twice in `{decl.name.text}`",
-                          labels=(Label(given[0].span, "first given here"),))
-        if not given:
+        given = self.first([i for i in decl.items if isinstance(i, ast.JointMimic)], "mimic", decl.name)
+        if given is None:
             return None
-        multiplier = 1.0 if given[0].multiplier is None else self.number(given[0].multiplier, "a mimic's multiplier")
-        offset = 0.0 if given[0].offset is None else self.number(given[0].offset, "a mimic's offset")
+        multiplier = 1.0 if given.multiplier is None else self.number(given.multiplier, "a mimic's multiplier")
+        offset = 0.0 if given.offset is None else self.number(given.offset, "a mimic's offset")
         if multiplier is None or offset is None:
             return False
         if multiplier == 0:
-            self.d.report("E603", given[0].multiplier.span if given[0].multiplier else given[0].span,
+            self.d.report("E603", given.multiplier.span if given.multiplier else given.span,
                           "a mimic's multiplier is not 0", help="a joint that does not follow is a `fixed` one")
             return False
-        return m.Mimic(given[0].joint.text, multiplier, offset)
+        return m.Mimic(given.joint.text, multiplier, offset)
 
     def mimics(self, joints: dict[str, m.Joint]) -> None:
         """Each mimic follows a moving joint of the body that is not itself a mimic: URDF's tools
