@@ -29,12 +29,12 @@ MODULES = (
     ("plans", "what a description specialises"),
     ("arguments", "values given by the host"),
     ("ports", "ports, a simulated device"),
+    ("signals", "SIGINT, SIGTERM, exit statuses"),
     ("schedule", "a connection's thread"),
     ("exchange", "writing and reading"),
     ("sensing", "sensors' cached values"),
     ("robot", "lifecycle and public face"),
     ("recording", "sessions in MCAP"),
-    ("signals", "SIGINT, SIGTERM, exit statuses"),
     ("command", "the command line"),
 )
 """The engine's modules in the order a driver carries them, each with what it holds."""
