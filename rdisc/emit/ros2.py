@@ -232,7 +232,8 @@ class _Ros2(Bridge):
                     w.line(f"node.subscription({quoted(i.name)}, {self.message(adapter)},")
                     w.line(f"                  subscriber({quoted(i.name)}, _ros_read_{bridge.name(i.name)}))")
                 if self.measured:
-                    w.line('threading.Thread(target=publish_joint_states, name="joint_states", daemon=True).start()')
+                    w.line('publisher = threading.Thread(target=publish_joint_states, name="joint_states", daemon=True)')
+                    w.line("without_signals(publisher.start)  # signals are the main thread's")
                 if not (self.commanded or self.inputs or self.measured):
                     w.line("return")
             w.blank()

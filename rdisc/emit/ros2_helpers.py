@@ -137,13 +137,15 @@ class _Ros2Node:
         self.sensor_data = Qos(Policy.Reliability.BestEffort, Policy.History.KeepLast(5),
                                Policy.Durability.Volatile, xcdr1)
         self.latched = Qos(reliable, Policy.History.KeepLast(1), Policy.Durability.TransientLocal, xcdr1)
-        self.participant = DomainParticipant(int(domain), qos=Qos(Policy.Userdata(b"enclave=/;")))
+        # Made with the signals blocked, so Cyclone's threads leave SIGINT and SIGTERM to the main thread.
+        enclave = Qos(Policy.Userdata(b"enclave=/;"))
+        self.participant = without_signals(lambda: DomainParticipant(int(domain), qos=enclave))
         self.readers: list[Any] = []
         self.writers: list[Any] = []
         self.errors: Any = None
         self.received: queue.SimpleQueue[tuple[Callable[[Any], None], Any] | None] = queue.SimpleQueue()
         self.handler = threading.Thread(target=self.handle, name="ros2 subscriptions", daemon=True)
-        self.handler.start()
+        without_signals(self.handler.start)
         self.publisher("ros_discovery_info", self.types.ParticipantEntitiesInfo, self.latched)  # writers[0]
         self.errors = self.publisher("~/errors", self.string, self.default)
 

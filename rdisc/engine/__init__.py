@@ -133,7 +133,7 @@ if TYPE_CHECKING:  # at run time each name is imported when it is first asked fo
         EXIT_SIGTERM,
         EXIT_USAGE,
         command_line,
-        start_without_signals,
+        without_signals,
     )
     from rdisc.engine.values import (
         Args,
@@ -315,7 +315,7 @@ __all__ = [
     "session_topics",
     "shown",
     "start_recording",
-    "start_without_signals",
+    "without_signals",
     "written_at_once",
 ]
 

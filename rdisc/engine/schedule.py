@@ -19,7 +19,7 @@ from typing import Protocol
 from rdisc.engine.errors import RdisConnectionError
 from rdisc.engine.plans import Connection, Hook, Interface
 from rdisc.engine.ports import _Port
-from rdisc.engine.signals import start_without_signals
+from rdisc.engine.signals import without_signals
 from rdisc.engine.values import Args
 
 
@@ -138,7 +138,7 @@ class _Worker:
         if self.connection.threading == "multiple":
             name += f" {self.periodic[0].name if self.periodic else 'keepalive'}"
         self._thread = threading.Thread(target=self._loop, name=name, daemon=True)
-        start_without_signals(self._thread)
+        without_signals(self._thread.start)
 
     def stop(self) -> None:
         """Stop the thread; it finishes the interface it is running first."""

@@ -30,6 +30,7 @@ from tests.devices import CreateEmulator
 from tests.devices.create import TABLE_4_3
 from tests.devices.dynamixel import XBus, sync_goals
 from tests.ros2.loopback import LOOPBACK
+from tests.support import threads
 
 pytest.importorskip("cyclonedds")
 typesys = pytest.importorskip("rosbags.typesys")
@@ -165,6 +166,8 @@ def test_twists_bumpers_qos_and_shutdown(node_file: Path, dds_env: dict[str, str
             assert (entry.node_namespace, entry.node_name) == ("/", "irobot_create")
             assert (len(entry.reader_gid_seq), len(entry.writer_gid_seq)) == (1, 2)  # set_velocity; errors, detect_bump
             assert bytes(info.gid.data[:12]) == bytes(entry.writer_gid_seq[0].data[:12])  # one participant's GUIDs
+            # Cyclone's threads and the node's own leave SIGINT and SIGTERM to the main thread.
+            assert not threads.READABLE or threads.interrupts_reach_only_the_main_thread(node.pid)
         finally:
             _, stderr = _stop(node, signal.SIGINT)
         assert node.returncode == 130, stderr
@@ -218,6 +221,7 @@ def test_the_arm_s_joints_over_ros_2(dds_env: dict[str, str], tmp_path: Path) ->
             state = decoded(arm.wait(lambda e: "joint_states" in e and list(decoded(e).position) == pytest.approx(
                 angles, abs=1e-12), "the servos' positions"))
             assert list(state.name) == ARM_JOINTS and state.header.stamp.sec > 0
+            assert not threads.READABLE or threads.interrupts_reach_only_the_main_thread(node.pid)  # joint_states' too
             arm.send({"name": ARM_JOINTS[:5], "position": [0.0] * 5})
             arm.wait(lambda e: e.get("error") == ("RdisValueError: joint_command: sync_goal takes waist, shoulder, "
                                                   "elbow, wrist_pitch, wrist_roll, gripper together; missing: "

@@ -39,7 +39,7 @@ from collections import deque
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from contextlib import contextmanager
 from dataclasses import KW_ONLY, dataclass, field
-from typing import Any, Literal, NamedTuple, Protocol, assert_never
+from typing import Any, Literal, NamedTuple, Protocol, TypeVar, assert_never
 
 # ---- rdisc engine: errors (rdisc/engine/errors.py), the errors a run raises ----------------------
 
@@ -2870,6 +2870,8 @@ def _write_timed_out(err: BaseException) -> bool:
 # ---- rdisc engine: signals (rdisc/engine/signals.py), SIGINT, SIGTERM, exit statuses -------------
 
 
+_Started = TypeVar("_Started")
+
 EXIT_OK, EXIT_ERROR, EXIT_USAGE, EXIT_SIGINT, EXIT_SIGTERM = 0, 1, 2, 130, 143
 
 
@@ -2944,17 +2946,17 @@ def _restore_handlers(previous: dict[int, Any], status: int) -> bool:
     return interrupted
 
 
-def start_without_signals(thread: threading.Thread) -> None:
-    """Start `thread` with SIGINT and SIGTERM blocked in it, so that the kernel gives them to
-    the main thread. A signal given to another thread only marks Python's handler as due: the
-    main thread, asleep in a system call (`--watch` waits in `time.sleep`), is not woken, and
-    the robot runs on as if nothing had come (seen once in 400 interrupted runs)."""
+def without_signals(start: Callable[[], _Started]) -> _Started:
+    """`start()` with SIGINT and SIGTERM blocked on this thread, so that every thread it starts
+    (Python's, or a library's in C, as Cyclone DDS's) inherits the block and the kernel gives
+    them to the main thread. A signal given to another thread only marks Python's handler as
+    due: the main thread, asleep in a system call (`--watch` waits in `time.sleep`), is not
+    woken, and the robot runs on as if nothing had come (seen once in 400 interrupted runs)."""
     if not hasattr(signal, "pthread_sigmask"):  # Windows: signals go to the main thread anyway
-        thread.start()
-        return
-    mask = signal.pthread_sigmask(signal.SIG_BLOCK, (signal.SIGINT, signal.SIGTERM))  # the thread inherits it
+        return start()
+    mask = signal.pthread_sigmask(signal.SIG_BLOCK, (signal.SIGINT, signal.SIGTERM))
     try:
-        thread.start()
+        return start()
     finally:
         signal.pthread_sigmask(signal.SIG_SETMASK, mask)  # one that came meanwhile is handled here
 
@@ -3085,7 +3087,7 @@ class _Worker:
         if self.connection.threading == "multiple":
             name += f" {self.periodic[0].name if self.periodic else 'keepalive'}"
         self._thread = threading.Thread(target=self._loop, name=name, daemon=True)
-        start_without_signals(self._thread)
+        without_signals(self._thread.start)
 
     def stop(self) -> None:
         """Stop the thread; it finishes the interface it is running first."""
