@@ -18,6 +18,7 @@ from dataclasses import dataclass
 
 from rdisc import engine
 from rdisc.semantics import model as m
+from rdisc.semantics import ros
 
 DEFINITIONS: dict[str, str] = {
     "builtin_interfaces/Time": "int32 sec\nuint32 nanosec\n",
@@ -176,16 +177,22 @@ def definition(name: str) -> str:
     return "".join(parts)
 
 
+RECORDED = "foxglove"
+"""The column of the table of frameworks (stdlib/frameworks.txt) a recording and the live
+Foxglove session carry each adapter as: its schema, `ros2msg`, and where each field goes."""
+
+
 def adapter_message(adapter: m.Adapter) -> engine.Message | None:
-    """The ROS 2 message an adapter is recorded as, when it names one that is defined here and
-    every field has a path; else None (a recording carries it as JSON text)."""
-    if adapter.ros is None or adapter.ros not in DEFINITIONS:
+    """The message an adapter is recorded as (its Foxglove schema), when it is a `ros2msg` one
+    defined here and every field has a path; else None (a recording carries it as JSON text)."""
+    mapping = adapter.mapping(RECORDED)
+    if mapping is None or mapping.schema_encoding != "ros2msg":
         return None
-    paths = tuple(f.ros for f in adapter.fields)
-    if any(path is None for path in paths):
+    package, message = ros.message_parts(mapping.type)
+    if f"{package}/{message}" not in DEFINITIONS or any(path is None for path in mapping.paths):
         return None
-    return engine.Message(ros2_name(adapter.ros), definition(adapter.ros), tuple(f.name for f in adapter.fields),
-                          tuple(p for p in paths if p is not None))
+    return engine.Message(mapping.type, definition(f"{package}/{message}"), tuple(f.name for f in adapter.fields),
+                          tuple(p for p in mapping.paths if p is not None))
 
 
 def recorded_messages(model: m.Model) -> dict[str, engine.Message]:

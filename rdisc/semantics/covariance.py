@@ -1,7 +1,8 @@
 """Where an output's declared noise goes in a ROS message (thesis §7.2.3): a field's variance on
-the diagonal of the covariance its message keeps beside it, found by the field's `ros` path
-(stdlib/adapters.rdis), one table for both ROS versions. A message without such a field
-(`Range`, `JointState`) carries no covariance; fields the description gives no noise leave 0."""
+the diagonal of the covariance its message keeps beside it, found by the field's path in the
+framework's message (stdlib/frameworks.txt, or the `ros` shorthand), one table for both ROS
+versions. A message without such a field (`Range`, `JointState`) carries no covariance; fields
+the description gives no noise leave 0."""
 
 from __future__ import annotations
 
@@ -36,13 +37,14 @@ def carried(model: m.Model, output: m.DomainOutput) -> tuple[m.Noise, ...]:
     return tuple(found)
 
 
-def covariances(adapter: m.Adapter, noise: tuple[m.Noise, ...]) -> tuple[tuple[str, m.Rows], ...]:
+def covariances(paths: list[tuple[m.AdapterField, str]], noise: tuple[m.Noise, ...]) -> tuple[tuple[str, m.Rows], ...]:
     """Each covariance of an output's message its noise fills (its path, its rows), in the order
-    the table names them; a field's noise of one value only (a number's), on the diagonal."""
+    the table names them, given each field's path in the message (its adapter's in a framework);
+    a field's noise of one value only (a number's), on the diagonal."""
     found: dict[str, list[list[float]]] = {}
+    where = {f.name: path for f, path in paths}
     for given in noise:
-        field = adapter.field(given.field)
-        place = None if field is None else DIAGONALS.get(field.ros or field.name)
+        place = DIAGONALS.get(where.get(given.field, ""))
         if place is None or len(given.covariance) != 1:
             continue
         path, side, at = place
