@@ -94,7 +94,6 @@ def _path(adapter: m.Adapter, at: int) -> str:
 
 
 def _text(adapter: m.Adapter) -> str:
-    columns = frameworks(adapter)
     head = adapter.name + ("" if adapter.standard else "  (declared by the description)")
     lines = [head]
     if adapter.doc:

@@ -9,8 +9,8 @@ from collections.abc import Callable
 from rdisc.diagnostics import Label
 from rdisc.semantics import model as m
 from rdisc.semantics import ros
-from rdisc.semantics.frameworks import with_frameworks
 from rdisc.semantics.check.pieces import MAX_TERMINATOR, Pieces
+from rdisc.semantics.frameworks import with_frameworks
 from rdisc.semantics.model import Type
 from rdisc.semantics.operators import shown
 from rdisc.semantics.resolve import check_name
