@@ -188,14 +188,10 @@ class Interfaces(Expressions, ErrorModels):
         while made in self.adapter_fields:
             made, n = f"{base}{n}", n + 1
         if standard is not None:
-            from rdisc.semantics.frameworks import standard as frameworks
-
-            ros, paths = frameworks().as_shorthand(standard.name.text) or (None, {})
             by_name = {f.name.text: f for f in standard.fields}
-            decl_fields = tuple(dataclasses.replace(by_name[f.text], span=f.span, ros=_written(paths.get(f.text), f))
-                                for f in names)
+            decl_fields = tuple(dataclasses.replace(by_name[f.text], span=f.span) for f in names)
             doc = f"{standard.name.text}, with its fields in the order of `{element.text}`."
-            decl = ast.AdapterDecl(ast.Ident(made, element.span), _written(ros, element), decl_fields, obj.span, doc)
+            decl = ast.AdapterDecl(ast.Ident(made, element.span), standard.ros, decl_fields, obj.span, doc)
         else:
             decl_fields = tuple(ast.FieldDecl(f, ast.Ident("float", f.span), None, None, f.span) for f in names)
             decl = ast.AdapterDecl(ast.Ident(made, element.span), None, decl_fields, obj.span)
@@ -233,8 +229,3 @@ def _is_zero(v: JValue) -> bool:
 
 def _text(s: JString | None) -> str | None:
     return None if s is None else s.value
-
-
-def _written(value: str | None, at: ast.Ident) -> ast.StrLit | None:
-    """A standard adapter's ROS type or path (stdlib/frameworks.txt) as its copy writes it."""
-    return None if value is None else ast.StrLit(value, at.span)

@@ -26,7 +26,7 @@ DIAGONALS: dict[str, tuple[str, int, int]] = {
 def carried(model: m.Model, output: m.DomainOutput) -> tuple[m.Noise, ...]:
     """An output's noise, and for each field given none that is a state variable or a sensor
     read as it is (`distance = range_m`, no conversion to change its variance), that one's."""
-    given = {n.field for n in output.noise}
+    given = {field for n in output.noise for field in n.fields}
     found = list(output.noise)
     for field, expr in output.fields:
         if field in given or not isinstance(expr, m.Var) or expr.scope is not m.Scope.STATE:
@@ -40,15 +40,21 @@ def carried(model: m.Model, output: m.DomainOutput) -> tuple[m.Noise, ...]:
 def covariances(paths: list[tuple[m.AdapterField, str]], noise: tuple[m.Noise, ...]) -> tuple[tuple[str, m.Rows], ...]:
     """Each covariance of an output's message its noise fills (its path, its rows), in the order
     the table names them, given each field's path in the message (its adapter's in a framework);
-    a field's noise of one value only (a number's), on the diagonal."""
+    a field's noise of one value (a number's) on the diagonal, and a covariance over several
+    fields (`noise (x, y, theta) [...]`) at their places, where two of them share a covariance of the
+    message (the pose's x and y; not the pose's x and the twist's speed, which no member holds)."""
     found: dict[str, list[list[float]]] = {}
     where = {f.name: path for f, path in paths}
     for given in noise:
-        place = DIAGONALS.get(where.get(given.field, ""))
-        if place is None or len(given.covariance) != 1:
-            continue
-        path, side, at = place
-        rows = found.setdefault(path, [[0.0] * side for _ in range(side)])
-        rows[at][at] = given.covariance[0][0]
+        if len(given.covariance) != len(given.fields):
+            continue  # an array's: its values have no places of their own
+        places = [DIAGONALS.get(where.get(field, "")) for field in given.fields]
+        for i, row_place in enumerate(places):
+            for j, column_place in enumerate(places):
+                if row_place is None or column_place is None or row_place[0] != column_place[0]:
+                    continue
+                path, side, at = row_place
+                rows = found.setdefault(path, [[0.0] * side for _ in range(side)])
+                rows[at][column_place[2]] = given.covariance[i][j]
     ordered = list(dict.fromkeys(path for path, _, _ in DIAGONALS.values()))
     return tuple((path, tuple(tuple(row) for row in found[path])) for path in ordered if path in found)

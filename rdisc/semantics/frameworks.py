@@ -5,7 +5,8 @@ A framework is one more column of the table.
 
 A standard adapter is what its rows say; an adapter a description declares with the `ros
 "pkg/Msg"` shorthand is what each column's `shorthand` row makes of that type, its fields'
-`ros` paths unchanged. Read with str.split, not json: `rdisc check` imports neither.
+`ros` paths unchanged. The standard adapters keep their `ros` annotations (what a description's
+copy of one writes, and what the editor shows): they must say what the table's ROS 1 column says. Read with str.split, not json: `rdisc check` imports neither.
 """
 
 from __future__ import annotations
@@ -14,6 +15,8 @@ from rdisc.semantics import model as m
 
 HEAD = ("framework", "title", "schema", "message", "shorthand")
 """The head's rows, in order: each framework's name, title, schema and message encodings, shorthand."""
+SAME = "{package}/{message}"
+"""The shorthand of a framework whose type is the `ros` annotation as written (ROS 1's)."""
 
 
 class TableError(ValueError):
@@ -39,6 +42,10 @@ class Table:
                      for k, (framework, title, schema, message, _) in enumerate(self.frameworks)
                      if (type_ := types[k]) is not None)
 
+    def column(self, framework: str) -> tuple[str, str, str | None, str | None, str | None]:
+        """A framework's head: its name, title, encodings and shorthand."""
+        return next(each for each in self.frameworks if each[0] == framework)
+
     def shorthand(self, ros: str | None, paths: tuple[str | None, ...]) -> tuple[m.FrameworkMapping, ...]:
         """What an adapter declared `ros "pkg/Msg"` is in each framework: none without it."""
         if ros is None:
@@ -47,15 +54,6 @@ class Table:
         return tuple(m.FrameworkMapping(framework, title, pattern.replace("{package}", package)
                                         .replace("{message}", message), paths, schema, encoding)
                      for framework, title, schema, encoding, pattern in self.frameworks if pattern is not None)
-
-    def as_shorthand(self, name: str) -> tuple[str, dict[str, str | None]] | None:
-        """A standard adapter as the `ros` shorthand writes it (a copy of it in a description): its
-        type and fields' paths in the column whose shorthand is the type as written; None: none."""
-        row = self.adapters.get(name)
-        column = next((k for k, each in enumerate(self.frameworks) if each[4] == "{package}/{message}"), None)
-        if row is None or column is None or row[0][column] is None:
-            return None
-        return row[0][column], {field: paths[column] for field, paths in row[1].items()}  # type: ignore[return-value]
 
 
 def parse(text: str, name: str = "frameworks.txt") -> Table:
@@ -110,17 +108,21 @@ def standard() -> Table:
 
 
 def with_frameworks(adapter: m.Adapter, table: Table | None = None) -> m.Adapter:
-    """An adapter with what it is in each framework: a standard one's rows of the table (its
-    `ros` and its fields' the ROS 1 column's, for what reads them), else its `ros` shorthand's."""
+    """An adapter with what it is in each framework: a standard one's rows of the table, else
+    its `ros` shorthand's. A standard adapter's own `ros` annotations (stdlib/adapters.rdis) must
+    be what the table's shorthand makes of its rows: TableError says where they disagree."""
     table = table or standard()
+    paths = tuple(f.ros for f in adapter.fields)
+    mappings = table.shorthand(adapter.ros, paths)
     if adapter.standard:
-        mappings = table.standard(adapter.name, tuple(f.name for f in adapter.fields))
-        if mappings is None:
+        rows = table.standard(adapter.name, tuple(f.name for f in adapter.fields))
+        if rows is None:
             raise TableError(f"frameworks.txt: no rows for adapter {adapter.name} and each of its fields")
-        ros1 = next((each for each in mappings if each.framework == "ros1"), None)
-        if ros1 is None:
-            return m.Adapter(adapter.name, adapter.fields, None, True, adapter.doc, adapter.span, mappings)
-        fields = tuple(m.AdapterField(f.name, f.type, f.unit, path, f.doc) for f, path in zip(adapter.fields, ros1.paths))
-        return m.Adapter(adapter.name, fields, ros1.type, True, adapter.doc, adapter.span, mappings)
-    mappings = table.shorthand(adapter.ros, tuple(f.ros for f in adapter.fields))
-    return m.Adapter(adapter.name, adapter.fields, adapter.ros, False, adapter.doc, adapter.span, mappings)
+        written = {(each.framework, each.type, each.paths) for each in mappings}
+        if any((row.framework, row.type, row.paths) not in written for row in rows
+               if table.column(row.framework)[4] == SAME):
+            raise TableError(f"frameworks.txt: adapter {adapter.name} is not what its `ros` annotations in "
+                             "adapters.rdis say")
+        mappings = rows
+    return m.Adapter(adapter.name, adapter.fields, adapter.ros, adapter.standard, adapter.doc, adapter.span,
+                     mappings)

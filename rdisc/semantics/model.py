@@ -972,7 +972,7 @@ class FrameworkMapping:
 class Adapter:
     name: str
     fields: tuple[AdapterField, ...]
-    ros: str | None = None  # the ROS 1 message: the `ros` shorthand, or the table's (frameworks)
+    ros: str | None = None  # the `ros` shorthand as written; what it is in each framework: `frameworks`
     standard: bool = False  # declared in stdlib/adapters.rdis
     doc: str | None = None
     span: Span | None = _span
@@ -1010,6 +1010,12 @@ class Noise:
     deviation: float | None = None
     unit: str | None = None
     span: Span | None = _span
+    others: tuple[str, ...] = ()  # the fields after `field` one covariance spans (`noise (x, y) [...]`)
+
+    @property
+    def fields(self) -> tuple[str, ...]:
+        """The fields the covariance is over, in its order."""
+        return (self.field, *self.others)
 
 
 @dataclass(frozen=True, slots=True)

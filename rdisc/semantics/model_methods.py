@@ -2104,16 +2104,18 @@ def _init_Noise(
     deviation: Any = DEFAULT,
     unit: Any = DEFAULT,
     span: Any = DEFAULT,
+    others: Any = DEFAULT,
 ) -> None:
     _set(self, "field", field)
     _set(self, "covariance", covariance)
     _set(self, "deviation", deviation)
     _set(self, "unit", unit)
     _set(self, "span", span)
+    _set(self, "others", others)
 
 
 def _repr_Noise(self: Any) -> str:
-    return f"{self.__class__.__qualname__}(field={self.field!r}, covariance={self.covariance!r}, deviation={self.deviation!r}, unit={self.unit!r})"
+    return f"{self.__class__.__qualname__}(field={self.field!r}, covariance={self.covariance!r}, deviation={self.deviation!r}, unit={self.unit!r}, others={self.others!r})"
 
 
 def _eq_Noise(self: Any, other: Any) -> Any:
@@ -2123,17 +2125,19 @@ def _eq_Noise(self: Any, other: Any) -> Any:
             self.covariance,
             self.deviation,
             self.unit,
+            self.others,
         ) == (
             other.field,
             other.covariance,
             other.deviation,
             other.unit,
+            other.others,
         )
     return NotImplemented
 
 
 def _hash_Noise(self: Any) -> int:
-    return hash((self.field, self.covariance, self.deviation, self.unit))
+    return hash((self.field, self.covariance, self.deviation, self.unit, self.others))
 
 
 def _init_Kalman(
@@ -3515,6 +3519,7 @@ WRITTEN: dict[str, Written] = {
             ("deviation", DEFAULT),
             ("unit", DEFAULT),
             ("span", FieldSpec(None, MISSING, False, False)),
+            ("others", DEFAULT),
         ),
         {"__init__": _init_Noise, "__repr__": _repr_Noise, "__eq__": _eq_Noise, "__hash__": _hash_Noise},
     ),

@@ -160,3 +160,13 @@ def test_a_table_that_does_not_say_what_each_adapter_is_is_refused_with_its_line
     with pytest.raises(frameworks.TableError) as raised:
         frameworks.parse(text, "t.txt")
     assert str(raised.value) == message
+
+
+def test_a_table_whose_ros_1_column_is_not_what_adapters_rdis_says_is_refused(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The standard adapters' `ros` annotations are the shorthand a description writes: the table
+    may not say otherwise in the column that shorthand is (ROS 1's)."""
+    _use(monkeypatch, _edit("    distance       range                range                    range",
+                            "    distance       min_range            range                    range"))
+    with pytest.raises(frameworks.TableError) as raised:
+        compile_text("d.rdis", 'robot d { author "t" }\n')
+    assert str(raised.value) == "frameworks.txt: adapter Range is not what its `ros` annotations in adapters.rdis say"
