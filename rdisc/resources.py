@@ -34,6 +34,11 @@ def stdlib_file() -> str:
     return _find("stdlib", "adapters.rdis")
 
 
+def frameworks_file() -> str:
+    """The table of what each standard adapter is in each framework (rdisc.semantics.frameworks)."""
+    return _find("stdlib", "frameworks.txt")
+
+
 def stdlib_path() -> Path:
     from pathlib import Path
 

@@ -3,8 +3,9 @@ and what each is in every framework rdisc speaks: the ROS 1 message, the ROS 2 m
 schema a Foxglove session or an MCAP recording names (ROS 2's, `ros2msg`, its messages CDR).
 
 The standard adapters come from stdlib/adapters.rdis; `--description FILE` adds those a
-description declares. The ROS columns are the adapter's own `ros` annotations, the one table
-every emitter reads; ROS 2's name is ROS 1's with `/msg/` (rdisc.lowering.messages.ros2_name)."""
+description declares. The columns are the Model's `Adapter.frameworks`: for a standard adapter the
+table stdlib/frameworks.txt, every emitter's one table, for a description's own its `ros`
+shorthand as each column of the table makes it (rdisc.semantics.frameworks)."""
 
 from __future__ import annotations
 
@@ -49,14 +50,22 @@ def run(args: argparse.Namespace) -> int:
 
 
 def frameworks(adapter: m.Adapter) -> dict[str, Any]:
-    """What the adapter is in each framework: a column each (None where it has no message)."""
-    from rdisc.lowering.messages import ros2_name
+    """What the adapter is in each framework of the table, a column each (None: nothing): its type,
+    or where the framework names its encodings (Foxglove's), its schema with them."""
+    from rdisc.semantics.frameworks import standard
 
-    if adapter.ros is None:
-        return {"ros1": None, "ros2": None, "foxglove": None}
-    ros2 = ros2_name(adapter.ros)
-    return {"ros1": adapter.ros, "ros2": ros2, "foxglove": {"schema": ros2, "schemaEncoding": "ros2msg",
-                                                            "messageEncoding": "cdr"}}
+    columns: dict[str, Any] = {}
+    for name, *_ in standard().frameworks:
+        mapping = adapter.mapping(name)
+        columns[name] = None if mapping is None else mapping.type if mapping.schema_encoding is None else {
+            "schema": mapping.type, "schemaEncoding": mapping.schema_encoding,
+            "messageEncoding": mapping.message_encoding}
+    return columns
+
+
+def _paths(adapter: m.Adapter, at: int) -> dict[str, str | None]:
+    """A field's path in each framework the adapter is in."""
+    return {mapping.framework: mapping.paths[at] for mapping in adapter.frameworks}
 
 
 def _type(type_: m.AnyType) -> str:
@@ -66,22 +75,36 @@ def _type(type_: m.AnyType) -> str:
 
 
 def _json(adapter: m.Adapter) -> dict[str, Any]:
+    """An adapter; a field's `ros` is its ROS path, and `paths` by framework only where they differ."""
+    fields = []
+    for at, f in enumerate(adapter.fields):
+        paths = _paths(adapter, at)
+        fields.append({"name": f.name, "type": _type(f.type), "unit": f.unit, "ros": f.ros, "doc": f.doc,
+                       **({"paths": paths} if len(set(paths.values())) > 1 else {})})
     return {"name": adapter.name, "standard": adapter.standard, "doc": adapter.doc, **frameworks(adapter),
-            "fields": [{"name": f.name, "type": _type(f.type), "unit": f.unit, "ros": f.ros, "doc": f.doc}
-                       for f in adapter.fields]}
+            "fields": fields}
+
+
+def _path(adapter: m.Adapter, at: int) -> str:
+    """A field's path: the one every framework gives it, else each framework's after its title."""
+    paths = _paths(adapter, at)
+    if len(set(paths.values())) <= 1:
+        return next(iter(paths.values()), None) or adapter.fields[at].ros or "-"
+    return ", ".join(f"{m.title} {paths[m.framework] or '-'}" for m in adapter.frameworks)
 
 
 def _text(adapter: m.Adapter) -> str:
-    columns = frameworks(adapter)
     head = adapter.name + ("" if adapter.standard else "  (declared by the description)")
     lines = [head]
     if adapter.doc:
         lines.append("  " + adapter.doc.split("\n\n")[0].replace("\n", " "))
-    if columns["ros1"] is None:
+    if not adapter.frameworks:
         lines.append("  no framework message")
     else:
-        lines.append(f"  ROS 1 {columns['ros1']}   ROS 2 {columns['ros2']}   Foxglove {columns['ros2']} (ros2msg, CDR)")
-    rows = [(f.name, _type(f.type), f.unit or "-", f.ros or "-") for f in adapter.fields]
+        lines.append("  " + "   ".join(
+            f"{each.title} {each.type}" + (f" ({each.schema_encoding}, {(each.message_encoding or '-').upper()})"
+                                           if each.schema_encoding else "") for each in adapter.frameworks))
+    rows = [(f.name, _type(f.type), f.unit or "-", _path(adapter, at)) for at, f in enumerate(adapter.fields)]
     widths = [max(len(row[i]) for row in rows) for i in range(3)] if rows else [0, 0, 0]
     lines += ["  " + "  ".join(cell.ljust(widths[i]) if i < 3 else cell for i, cell in enumerate(row)).rstrip()
               for row in rows]

@@ -692,7 +692,9 @@ square), or a covariance over an array's values (`noise position [0.0001, 0; 0,
 0.0001]`, rows apart by `;`). The field is one of the adapter's number fields,
 given noise once; a deviation is not negative and its unit is the field's; a
 covariance is square, as large as the field's values, symmetric, and no variance
-on its diagonal is negative. A state variable or a sensor of numbers states its
+on its diagonal is negative. One covariance may span several number fields,
+`noise (x, y) [0.04, 0.01; 0.01, 0.09]`, n by n for n fields, each field given
+noise once in all. A state variable or a sensor of numbers states its
 own the same way after its declaration (`state level: float = 0.0 noise 0.5 "mm"`,
 `sensor gyro: float from read_gyro() cache 20 ms noise 0.01`). Wrong: `noise
 distance 0.01 "mm"` for a field in "m". Right: `noise distance 0.00001 "m"`."""),

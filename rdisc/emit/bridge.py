@@ -4,8 +4,9 @@ are this bridge with a transport each.
 
 A node is the generated Python driver (`rdisc.emit.python`) with the bridge in place of its
 command line: one subscription per domain input and one publication per domain output, named
-after them, the adapters' ROS messages and field paths taken from their `ros` annotations
-(stdlib/adapters.rdis). Those are checked names (rdisc.semantics.ros), resolved here: the node
+after them, the adapters' messages and field paths taken from their mapping to the transport's
+framework (`framework`: the column of stdlib/frameworks.txt, or the `ros` shorthand; the Model's
+`Adapter.frameworks`). Those are checked names (rdisc.semantics.ros), resolved here: the node
 reads and writes each field by name in its own code, and nothing it does at run time looks a
 name up from text. The semantics are the driver's: one implementation, not a third copy.
 
@@ -104,6 +105,9 @@ class Bridge:
     private = "~"
     """How a parameter of the node is written in what it says: ROS 1's `~sim`, ROS 2's `sim`."""
 
+    framework = "ros1"
+    """The column of the table of frameworks the node speaks: its adapters' messages and paths."""
+
     def __init__(self, model: m.Model, source_name: str) -> None:
         self.model = model
         self.source_name = source_name
@@ -111,14 +115,29 @@ class Bridge:
         self.measured = _measured(model)
         self.commanded = _commanded(model)
         self.inputs = [(i, model.adapters[i.adapter]) for i in model.inputs.values()
-                       if model.adapters[i.adapter].ros is not None]
+                       if model.adapters[i.adapter].mapping(self.framework) is not None]
         self.outputs = [(o, model.adapters[o.adapter]) for o in model.outputs.values()
-                        if model.adapters[o.adapter].ros is not None]
+                        if model.adapters[o.adapter].mapping(self.framework) is not None]
+
+    def mapping(self, adapter: m.Adapter) -> m.FrameworkMapping:
+        """What an adapter of the node's inputs or outputs is in its framework."""
+        found = adapter.mapping(self.framework)
+        assert found is not None, adapter.name
+        return found
+
+    def type(self, adapter: m.Adapter) -> str:
+        """An adapter's message, `pkg/Type` (as the table of message definitions names it)."""
+        package, message = ros.message_parts(self.mapping(adapter).type)
+        return f"{package}/{message}"
+
+    def paths(self, adapter: m.Adapter) -> list[tuple[m.AdapterField, str]]:
+        """Each field of an adapter with its path in the node's message (else its own name)."""
+        return [(f, path or f.name) for f, path in zip(adapter.fields, self.mapping(adapter).paths)]
 
     def message(self, adapter: m.Adapter) -> str:
         """The message class, as ros_main names it: `geometry_msgs_msg.Twist`."""
-        assert adapter.ros is not None and ros.message_problem(adapter.ros) is None
-        package, _, message = adapter.ros.partition("/")
+        package, message = ros.message_parts(self.mapping(adapter).type)
+        assert ros.message_problem(f"{package}/{message}") is None
         return f"{package}_msg.{message}"
 
     def node(self, driver: str, helpers: str) -> str:
@@ -138,8 +157,8 @@ class Bridge:
         for i, adapter in self.inputs:
             w.blank(2)
             with w.block(f"def _ros_read_{name(i.name)}(msg: Any) -> dict[str, Any]:"):
-                w.line(f'"""The fields of input {i.name} from a {adapter.ros}."""')
-                items = [f"{quoted(f.name)}: {_read('msg', f.ros or f.name)}" for f in adapter.fields]
+                w.line(f'"""The fields of input {i.name} from a {self.type(adapter)}."""')
+                items = [f"{quoted(f.name)}: {_read('msg', path)}" for f, path in self.paths(adapter)]
                 flat = "return {" + ", ".join(items) + "}"
                 if len(flat) <= w.width():
                     w.line(flat)
@@ -151,10 +170,10 @@ class Bridge:
         for o, adapter in self.outputs:
             w.blank(2)
             with w.block(f"def _ros_fill_{name(o.name)}(msg: Any, contents: dict[str, Any]) -> None:"):
-                w.line(f'"""A {adapter.ros} filled with the fields of output {o.name}."""')
-                for f in adapter.fields:
-                    w.line(_write("msg", f.ros or f.name, f"contents[{quoted(f.name)}]"))
-                for path, rows in covariances(adapter, carried(self.model, o)):  # the declared noise, row by row
+                w.line(f'"""A {self.type(adapter)} filled with the fields of output {o.name}."""')
+                for f, path in self.paths(adapter):
+                    w.line(_write("msg", path, f"contents[{quoted(f.name)}]"))
+                for path, rows in covariances(self.paths(adapter), carried(self.model, o)):  # the noise, row by row
                     w.line(f"msg.{path} = [")
                     with w.indented():
                         w.lines([", ".join(literal(value, Type.FLOAT).text for value in row) + "," for row in rows])
@@ -168,8 +187,8 @@ class Bridge:
     def stamped(self, adapter: m.Adapter) -> bool:
         """Whether an adapter's message has a `std_msgs/Header header` to stamp (as the table of
         messages defines it; a message not in it is published as filled)."""
-        return adapter.ros in messages.DEFINITIONS and any(
-            f.name == "header" and f.type == "std_msgs/Header" for f in messages.fields(adapter.ros))
+        return self.type(adapter) in messages.DEFINITIONS and any(
+            f.name == "header" and f.type == "std_msgs/Header" for f in messages.fields(self.type(adapter)))
 
     def publishers(self, w: Writer, publisher: str) -> None:
         """`publishers`: each output's publisher (`publisher` formatted with `topic` and `message`),

@@ -387,6 +387,8 @@ def _rows(rows: m.Rows) -> list[list[float | int]]:
 
 
 def _noise(n: m.Noise) -> JsonObject:
+    if n.others:
+        return _object(("fields", list(n.fields)), ("covariance", _rows(n.covariance)))
     if n.deviation is not None:
         return _object(("field", n.field), ("deviation", _number(n.deviation)), ("unit", n.unit))
     return _object(("field", n.field), ("covariance", _rows(n.covariance)), ("unit", n.unit))

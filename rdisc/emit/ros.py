@@ -30,6 +30,7 @@ from rdisc.emit.python import class_name, to_python
 from rdisc.emit.python_expr import quoted
 from rdisc.emit.writer import Writer
 from rdisc.semantics import model as m
+from rdisc.semantics import ros
 from rdisc.source import SourceFile
 
 ROS1_HELPERS = '''\
@@ -70,7 +71,7 @@ class _Ros1(Bridge):
 
     def main(self, w: Writer) -> None:
         adapters = [a for _, a in self.inputs] + [a for _, a in self.outputs]
-        named = [(package, message) for package, _, message in (a.ros.partition("/") for a in adapters if a.ros)]
+        named = [ros.message_parts(self.mapping(a).type) for a in adapters]
         if self.measured or self.commanded:
             named.append(("sensor_msgs", "JointState"))
         messages = list(dict.fromkeys([*named, ("std_msgs", "String")]))  # as first named; ~errors' last

@@ -73,13 +73,14 @@ class _Ros2(Bridge):
     """The bridge over DDS."""
 
     private = ""
+    framework = "ros2"
 
     def __init__(self, model: m.Model, source_name: str, distro: str) -> None:
         super().__init__(model, source_name)
         self.distro = distro
         self.table = messages.definitions(distro)
         adapters = [a for _, a in self.inputs] + [a for _, a in self.outputs]
-        named = [a.ros for a in adapters if a.ros is not None]
+        named = [self.type(a) for a in adapters]
         if self.measured or self.commanded:
             named.append("sensor_msgs/JointState")
         base = ["builtin_interfaces/Time", "std_msgs/String", "rmw_dds_common/ParticipantEntitiesInfo"]  # the node's
@@ -89,14 +90,13 @@ class _Ros2(Bridge):
         """What the node cannot speak: each message not in the table, each field path not in its message."""
         found = []
         for adapter in dict.fromkeys(a for _, a in self.inputs + self.outputs):
-            assert adapter.ros is not None
-            if adapter.ros not in self.table:
+            if self.type(adapter) not in self.table:
                 known = ", ".join(sorted(n for n in self.table if not n.startswith("rmw_dds_common/")))
-                found.append(f"adapter {adapter.name}: rdisc has no ROS 2 definition of {adapter.ros} "
+                found.append(f"adapter {adapter.name}: rdisc has no ROS 2 definition of {self.type(adapter)} "
                              f"(it has {known})")
                 continue
-            for f in adapter.fields:
-                problem = _member_problem(adapter.ros, f.ros or f.name, self.distro)
+            for f, path in self.paths(adapter):
+                problem = _member_problem(self.type(adapter), path, self.distro)
                 if problem is not None:
                     found.append(f"adapter {adapter.name}, field {f.name}: {problem}")
         return found

@@ -1,5 +1,5 @@
 """An output's error models in JSON: `"noise": [{"field", "deviation", "unit"} or {"field",
-"covariance"}]` and `"filters": [{"field", "kalman": {"state", "covariance", ...}}]`, read as
+"covariance"} or {"fields": [...], "covariance"}]` and `"filters": [{"field", "kalman": {"state", "covariance", ...}}]`, read as
 the clauses the text writes (`noise FIELD ...`, `filter FIELD kalman { ... }`), so the checker
 holds both alike."""
 
@@ -12,7 +12,7 @@ from rdisc.json_import.values import JNumber, JObject, JValue
 from rdisc.semantics.check.noise import WORDS
 from rdisc.syntax import ast
 
-_NOISE = ("field", "deviation", "covariance", "unit")
+_NOISE = ("field", "fields", "deviation", "covariance", "unit")
 _FILTER = ("field", "kalman")
 
 
@@ -46,14 +46,30 @@ class ErrorModels(Reader):
             if obj is None:
                 continue
             given = self.members(obj, "a noise", _NOISE)
+            if "fields" in given:
+                found.append(self._joint(obj, given))
+                continue
             field = self.required(obj, given, "field", "a noise", self.ident)
             found.append(None if field is None else self._error(obj, given, field))
         return present(found)
 
+    def _joint(self, obj: JObject, given: Members) -> ast.FieldNoise | None:
+        """`{"fields": [F, G, ...], "covariance": [...]}`: one covariance over several fields."""
+        names = [self.ident(item, "a field of `fields`") for item in self.array(given["fields"], "`fields`")]
+        if "field" in given or "deviation" in given or "unit" in given or "covariance" not in given \
+                or len(names) < 2:
+            self.error(self.opening(obj), "a noise over `fields` (two or more) has a `covariance` only")
+            return None
+        rows = self.rows(given["covariance"], "`covariance`")
+        if rows is None or any(n is None for n in names):
+            return None  # reported
+        first, *others = present(names)
+        return ast.FieldNoise(first, rows, None, obj.span, tuple(others))
+
     def state_noise(self, v: JValue | None, name: ast.Ident) -> ast.FieldNoise | None:
         """A state variable's `"noise": {"deviation", "unit"}` (or `"covariance"`), its field its name."""
         obj = None if v is None else self.object(v, "a noise")
-        return None if obj is None else self._error(obj, self.members(obj, "a noise", _NOISE[1:]), name)
+        return None if obj is None else self._error(obj, self.members(obj, "a noise", _NOISE[2:]), name)
 
     def _error(self, obj: JObject, given: Members, field: ast.Ident) -> ast.FieldNoise | None:
         unit = self.string(given.get("unit"), "`unit`")

@@ -5,10 +5,10 @@ schemas; the ROS 2 node (`rdisc emit-ros2`) builds its DDS types from them, per 
 An MCAP channel of ROS 2 messages names its schema `pkg/msg/Type` and carries the `.msg`
 text with every message it uses after it, each under a line of `=` and `MSG: pkg/Type`
 (the `ros2msg` encoding that `mcap-ros2-support`, Foxglove and `ros2 bag` read). The
-standard adapters name ROS 1 types (`geometry_msgs/Twist`); the ROS 2 type is the same
-package and name with `msg` between them, and these are the definitions of the ones the
-standard adapters use (the engine has those of a recording's own channels: bytes, text,
-log lines).
+table of frameworks (stdlib/frameworks.txt) names each adapter's types (`geometry_msgs/Twist`
+in ROS 1, `geometry_msgs/msg/Twist` in ROS 2 and Foxglove); these are the definitions of the
+ones the standard adapters use, by the ROS 1 style name (the engine has those of a
+recording's own channels: bytes, text, log lines).
 """
 
 from __future__ import annotations
@@ -18,6 +18,7 @@ from dataclasses import dataclass
 
 from rdisc import engine
 from rdisc.semantics import model as m
+from rdisc.semantics import ros
 
 DEFINITIONS: dict[str, str] = {
     "builtin_interfaces/Time": "int32 sec\nuint32 nanosec\n",
@@ -176,16 +177,22 @@ def definition(name: str) -> str:
     return "".join(parts)
 
 
+RECORDED = "foxglove"
+"""The column of the table of frameworks (stdlib/frameworks.txt) a recording and the live
+Foxglove session carry each adapter as: its schema, `ros2msg`, and where each field goes."""
+
+
 def adapter_message(adapter: m.Adapter) -> engine.Message | None:
-    """The ROS 2 message an adapter is recorded as, when it names one that is defined here and
-    every field has a path; else None (a recording carries it as JSON text)."""
-    if adapter.ros is None or adapter.ros not in DEFINITIONS:
+    """The message an adapter is recorded as (its Foxglove schema), when it is a `ros2msg` one
+    defined here and every field has a path; else None (a recording carries it as JSON text)."""
+    mapping = adapter.mapping(RECORDED)
+    if mapping is None or mapping.schema_encoding != "ros2msg":
         return None
-    paths = tuple(f.ros for f in adapter.fields)
-    if any(path is None for path in paths):
+    package, message = ros.message_parts(mapping.type)
+    if f"{package}/{message}" not in DEFINITIONS or any(path is None for path in mapping.paths):
         return None
-    return engine.Message(ros2_name(adapter.ros), definition(adapter.ros), tuple(f.name for f in adapter.fields),
-                          tuple(p for p in paths if p is not None))
+    return engine.Message(mapping.type, definition(f"{package}/{message}"), tuple(f.name for f in adapter.fields),
+                          tuple(p for p in mapping.paths if p is not None))
 
 
 def recorded_messages(model: m.Model) -> dict[str, engine.Message]:

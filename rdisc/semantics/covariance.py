@@ -1,7 +1,8 @@
 """Where an output's declared noise goes in a ROS message (thesis §7.2.3): a field's variance on
-the diagonal of the covariance its message keeps beside it, found by the field's `ros` path
-(stdlib/adapters.rdis), one table for both ROS versions. A message without such a field
-(`Range`, `JointState`) carries no covariance; fields the description gives no noise leave 0."""
+the diagonal of the covariance its message keeps beside it, found by the field's path in the
+framework's message (stdlib/frameworks.txt, or the `ros` shorthand), one table for both ROS
+versions. A message without such a field (`Range`, `JointState`) carries no covariance; fields
+the description gives no noise leave 0."""
 
 from __future__ import annotations
 
@@ -25,7 +26,7 @@ DIAGONALS: dict[str, tuple[str, int, int]] = {
 def carried(model: m.Model, output: m.DomainOutput) -> tuple[m.Noise, ...]:
     """An output's noise, and for each field given none that is a state variable or a sensor
     read as it is (`distance = range_m`, no conversion to change its variance), that one's."""
-    given = {n.field for n in output.noise}
+    given = {field for n in output.noise for field in n.fields}
     found = list(output.noise)
     for field, expr in output.fields:
         if field in given or not isinstance(expr, m.Var) or expr.scope is not m.Scope.STATE:
@@ -36,17 +37,24 @@ def carried(model: m.Model, output: m.DomainOutput) -> tuple[m.Noise, ...]:
     return tuple(found)
 
 
-def covariances(adapter: m.Adapter, noise: tuple[m.Noise, ...]) -> tuple[tuple[str, m.Rows], ...]:
+def covariances(paths: list[tuple[m.AdapterField, str]], noise: tuple[m.Noise, ...]) -> tuple[tuple[str, m.Rows], ...]:
     """Each covariance of an output's message its noise fills (its path, its rows), in the order
-    the table names them; a field's noise of one value only (a number's), on the diagonal."""
+    the table names them, given each field's path in the message (its adapter's in a framework);
+    a field's noise of one value (a number's) on the diagonal, and a covariance over several
+    fields (`noise (x, y, theta) [...]`) at their places, where two of them share a covariance of the
+    message (the pose's x and y; not the pose's x and the twist's speed, which no member holds)."""
     found: dict[str, list[list[float]]] = {}
+    where = {f.name: path for f, path in paths}
     for given in noise:
-        field = adapter.field(given.field)
-        place = None if field is None else DIAGONALS.get(field.ros or field.name)
-        if place is None or len(given.covariance) != 1:
-            continue
-        path, side, at = place
-        rows = found.setdefault(path, [[0.0] * side for _ in range(side)])
-        rows[at][at] = given.covariance[0][0]
+        if len(given.covariance) != len(given.fields):
+            continue  # an array's: its values have no places of their own
+        places = [DIAGONALS.get(where.get(field, "")) for field in given.fields]
+        for i, row_place in enumerate(places):
+            for j, column_place in enumerate(places):
+                if row_place is None or column_place is None or row_place[0] != column_place[0]:
+                    continue
+                path, side, at = row_place
+                rows = found.setdefault(path, [[0.0] * side for _ in range(side)])
+                rows[at][column_place[2]] = given.covariance[i][j]
     ordered = list(dict.fromkeys(path for path, _, _ in DIAGONALS.values()))
     return tuple((path, tuple(tuple(row) for row in found[path])) for path in ordered if path in found)

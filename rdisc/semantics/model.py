@@ -954,16 +954,36 @@ class AdapterField:
 
 
 @dataclass(frozen=True, slots=True)
+class FrameworkMapping:
+    """What an adapter is in one framework (thesis §7.2.5; rdisc.semantics.frameworks): the
+    framework (`ros2`) and its title (`ROS 2`), the adapter's message or schema type there, each
+    field's path in it in the adapter's field order (None: no `ros` path given), and the encodings
+    of the framework's schemas and messages (None: the framework's own)."""
+
+    framework: str
+    title: str
+    type: str
+    paths: tuple[str | None, ...]
+    schema_encoding: str | None = None
+    message_encoding: str | None = None
+
+
+@dataclass(frozen=True, slots=True)
 class Adapter:
     name: str
     fields: tuple[AdapterField, ...]
-    ros: str | None = None
+    ros: str | None = None  # the `ros` shorthand as written; what it is in each framework: `frameworks`
     standard: bool = False  # declared in stdlib/adapters.rdis
     doc: str | None = None
     span: Span | None = _span
+    frameworks: tuple[FrameworkMapping, ...] = ()  # in the table's order of frameworks
 
     def field(self, name: str) -> AdapterField | None:
         return next((f for f in self.fields if f.name == name), None)
+
+    def mapping(self, framework: str) -> FrameworkMapping | None:
+        """What the adapter is in `framework` (`ros1`, `ros2`, `foxglove`), or None: nothing."""
+        return next((f for f in self.frameworks if f.framework == framework), None)
 
 
 @dataclass(frozen=True, slots=True)
@@ -990,6 +1010,12 @@ class Noise:
     deviation: float | None = None
     unit: str | None = None
     span: Span | None = _span
+    others: tuple[str, ...] = ()  # the fields after `field` one covariance spans (`noise (x, y) [...]`)
+
+    @property
+    def fields(self) -> tuple[str, ...]:
+        """The fields the covariance is over, in its order."""
+        return (self.field, *self.others)
 
 
 @dataclass(frozen=True, slots=True)

@@ -1955,6 +1955,58 @@ def _hash_AdapterField(self: Any) -> int:
     return hash((self.name, self.type, self.unit, self.ros, self.doc))
 
 
+def _init_FrameworkMapping(
+    self: Any,
+    framework: Any,
+    title: Any,
+    type: Any,
+    paths: Any,
+    schema_encoding: Any = DEFAULT,
+    message_encoding: Any = DEFAULT,
+) -> None:
+    _set(self, "framework", framework)
+    _set(self, "title", title)
+    _set(self, "type", type)
+    _set(self, "paths", paths)
+    _set(self, "schema_encoding", schema_encoding)
+    _set(self, "message_encoding", message_encoding)
+
+
+def _repr_FrameworkMapping(self: Any) -> str:
+    return f"{self.__class__.__qualname__}(framework={self.framework!r}, title={self.title!r}, type={self.type!r}, paths={self.paths!r}, schema_encoding={self.schema_encoding!r}, message_encoding={self.message_encoding!r})"
+
+
+def _eq_FrameworkMapping(self: Any, other: Any) -> Any:
+    if other.__class__ is self.__class__:
+        return (
+            self.framework,
+            self.title,
+            self.type,
+            self.paths,
+            self.schema_encoding,
+            self.message_encoding,
+        ) == (
+            other.framework,
+            other.title,
+            other.type,
+            other.paths,
+            other.schema_encoding,
+            other.message_encoding,
+        )
+    return NotImplemented
+
+
+def _hash_FrameworkMapping(self: Any) -> int:
+    return hash((
+        self.framework,
+        self.title,
+        self.type,
+        self.paths,
+        self.schema_encoding,
+        self.message_encoding,
+    ))
+
+
 def _init_Adapter(
     self: Any,
     name: Any,
@@ -1963,6 +2015,7 @@ def _init_Adapter(
     standard: Any = DEFAULT,
     doc: Any = DEFAULT,
     span: Any = DEFAULT,
+    frameworks: Any = DEFAULT,
 ) -> None:
     _set(self, "name", name)
     _set(self, "fields", fields)
@@ -1970,10 +2023,11 @@ def _init_Adapter(
     _set(self, "standard", standard)
     _set(self, "doc", doc)
     _set(self, "span", span)
+    _set(self, "frameworks", frameworks)
 
 
 def _repr_Adapter(self: Any) -> str:
-    return f"{self.__class__.__qualname__}(name={self.name!r}, fields={self.fields!r}, ros={self.ros!r}, standard={self.standard!r}, doc={self.doc!r})"
+    return f"{self.__class__.__qualname__}(name={self.name!r}, fields={self.fields!r}, ros={self.ros!r}, standard={self.standard!r}, doc={self.doc!r}, frameworks={self.frameworks!r})"
 
 
 def _eq_Adapter(self: Any, other: Any) -> Any:
@@ -1984,18 +2038,20 @@ def _eq_Adapter(self: Any, other: Any) -> Any:
             self.ros,
             self.standard,
             self.doc,
+            self.frameworks,
         ) == (
             other.name,
             other.fields,
             other.ros,
             other.standard,
             other.doc,
+            other.frameworks,
         )
     return NotImplemented
 
 
 def _hash_Adapter(self: Any) -> int:
-    return hash((self.name, self.fields, self.ros, self.standard, self.doc))
+    return hash((self.name, self.fields, self.ros, self.standard, self.doc, self.frameworks))
 
 
 def _init_DomainInput(
@@ -2048,16 +2104,18 @@ def _init_Noise(
     deviation: Any = DEFAULT,
     unit: Any = DEFAULT,
     span: Any = DEFAULT,
+    others: Any = DEFAULT,
 ) -> None:
     _set(self, "field", field)
     _set(self, "covariance", covariance)
     _set(self, "deviation", deviation)
     _set(self, "unit", unit)
     _set(self, "span", span)
+    _set(self, "others", others)
 
 
 def _repr_Noise(self: Any) -> str:
-    return f"{self.__class__.__qualname__}(field={self.field!r}, covariance={self.covariance!r}, deviation={self.deviation!r}, unit={self.unit!r})"
+    return f"{self.__class__.__qualname__}(field={self.field!r}, covariance={self.covariance!r}, deviation={self.deviation!r}, unit={self.unit!r}, others={self.others!r})"
 
 
 def _eq_Noise(self: Any, other: Any) -> Any:
@@ -2067,17 +2125,19 @@ def _eq_Noise(self: Any, other: Any) -> Any:
             self.covariance,
             self.deviation,
             self.unit,
+            self.others,
         ) == (
             other.field,
             other.covariance,
             other.deviation,
             other.unit,
+            other.others,
         )
     return NotImplemented
 
 
 def _hash_Noise(self: Any) -> int:
-    return hash((self.field, self.covariance, self.deviation, self.unit))
+    return hash((self.field, self.covariance, self.deviation, self.unit, self.others))
 
 
 def _init_Kalman(
@@ -3403,6 +3463,22 @@ WRITTEN: dict[str, Written] = {
             "__hash__": _hash_AdapterField,
         },
     ),
+    "FrameworkMapping": Written(
+        (
+            ("framework", MISSING),
+            ("title", MISSING),
+            ("type", MISSING),
+            ("paths", MISSING),
+            ("schema_encoding", DEFAULT),
+            ("message_encoding", DEFAULT),
+        ),
+        {
+            "__init__": _init_FrameworkMapping,
+            "__repr__": _repr_FrameworkMapping,
+            "__eq__": _eq_FrameworkMapping,
+            "__hash__": _hash_FrameworkMapping,
+        },
+    ),
     "Adapter": Written(
         (
             ("name", MISSING),
@@ -3411,6 +3487,7 @@ WRITTEN: dict[str, Written] = {
             ("standard", DEFAULT),
             ("doc", DEFAULT),
             ("span", FieldSpec(None, MISSING, False, False)),
+            ("frameworks", DEFAULT),
         ),
         {
             "__init__": _init_Adapter,
@@ -3442,6 +3519,7 @@ WRITTEN: dict[str, Written] = {
             ("deviation", DEFAULT),
             ("unit", DEFAULT),
             ("span", FieldSpec(None, MISSING, False, False)),
+            ("others", DEFAULT),
         ),
         {"__init__": _init_Noise, "__repr__": _repr_Noise, "__eq__": _eq_Noise, "__hash__": _hash_Noise},
     ),

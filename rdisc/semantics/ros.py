@@ -34,6 +34,12 @@ def message_problem(name: str) -> str | None:
     return None
 
 
+def message_parts(name: str) -> tuple[str, str]:
+    """A message type's package and name: ROS 1's `pkg/Type`, ROS 2's `pkg/msg/Type`."""
+    package, _, rest = name.partition("/")
+    return package, rest.rpartition("/")[2]
+
+
 def path_problem(path: str) -> str | None:
     """What is wrong with a field path in a ROS message, or None."""
     fields, colon, conversion = path.partition(":")

@@ -63,7 +63,8 @@ class OdometryWatch:
 def _error(output: m.DomainOutput) -> float:
     """How far the output's x and y may be from the truth: three of their declared deviations
     together, or DEFAULT_ERROR."""
-    variances = [n.covariance[0][0] for n in output.noise if n.field in ("x", "y") and n.covariance]
+    variances = [n.covariance[at][at] for n in output.noise for at, field in enumerate(n.fields)
+                 if field in ("x", "y") and len(n.covariance) == len(n.fields)]
     if len(variances) != 2:
         return DEFAULT_ERROR
     return DEVIATIONS * math.sqrt(sum(variances))

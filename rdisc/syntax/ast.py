@@ -634,12 +634,14 @@ class NumberRows:
 @dataclass(frozen=True, slots=True)
 class FieldNoise:
     """`noise FIELD 0.01 "m"`: a field's standard deviation in a unit, or `noise FIELD [a, b; c, d]`,
-    its covariance (error models, thesis §7.2.3)."""
+    its covariance (error models, thesis §7.2.3); `noise (F, G) [a, b; c, d]` one covariance over
+    several number fields, `others` those after the first."""
 
     field: Ident
     value: float | NumberRows
     unit: StrLit | None
     span: Span = _span
+    others: tuple[Ident, ...] = ()
 
 
 @dataclass(frozen=True, slots=True)

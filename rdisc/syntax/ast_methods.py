@@ -1656,25 +1656,43 @@ def _hash_NumberRows(self: Any) -> int:
     return hash((self.rows,))
 
 
-def _init_FieldNoise(self: Any, field: Any, value: Any, unit: Any, span: Any = DEFAULT) -> None:
+def _init_FieldNoise(
+    self: Any,
+    field: Any,
+    value: Any,
+    unit: Any,
+    span: Any = DEFAULT,
+    others: Any = DEFAULT,
+) -> None:
     _set(self, "field", field)
     _set(self, "value", value)
     _set(self, "unit", unit)
     _set(self, "span", span)
+    _set(self, "others", others)
 
 
 def _repr_FieldNoise(self: Any) -> str:
-    return f"{self.__class__.__qualname__}(field={self.field!r}, value={self.value!r}, unit={self.unit!r})"
+    return f"{self.__class__.__qualname__}(field={self.field!r}, value={self.value!r}, unit={self.unit!r}, others={self.others!r})"
 
 
 def _eq_FieldNoise(self: Any, other: Any) -> Any:
     if other.__class__ is self.__class__:
-        return (self.field, self.value, self.unit) == (other.field, other.value, other.unit)
+        return (
+            self.field,
+            self.value,
+            self.unit,
+            self.others,
+        ) == (
+            other.field,
+            other.value,
+            other.unit,
+            other.others,
+        )
     return NotImplemented
 
 
 def _hash_FieldNoise(self: Any) -> int:
-    return hash((self.field, self.value, self.unit))
+    return hash((self.field, self.value, self.unit, self.others))
 
 
 def _init_FieldFilter(self: Any, field: Any, items: Any, span: Any = DEFAULT) -> None:
@@ -3200,6 +3218,7 @@ WRITTEN: dict[str, Written] = {
             ("value", MISSING),
             ("unit", MISSING),
             ("span", FieldSpec(None, MISSING, False, False)),
+            ("others", DEFAULT),
         ),
         {
             "__init__": _init_FieldNoise,

@@ -717,6 +717,11 @@ class Rules:
         unit = None if c[2] is None else self.b.string(c[2])
         return ast.FieldNoise(self.b.ident(c[0]), c[1], unit, self.b.span(meta))
 
+    def fields_noise(self, meta: Meta, c: list[Any]) -> ast.FieldNoise:
+        *names, value = c
+        return ast.FieldNoise(self.b.ident(names[0]), value, None, self.b.span(meta),
+                              tuple(self.b.ident(n) for n in names[1:]))
+
     def field_filter(self, meta: Meta, c: list[Any]) -> ast.FieldFilter:
         return ast.FieldFilter(self.b.ident(c[0]), tuple(c[1:]), self.b.span(meta))
 

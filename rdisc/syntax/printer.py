@@ -241,6 +241,8 @@ def _error(noise: ast.FieldNoise) -> str:
 
 
 def _noise(noise: ast.FieldNoise) -> str:
+    if noise.others:
+        return f"noise ({', '.join(f.text for f in (noise.field, *noise.others))}) {_error(noise)}"
     return f"noise {noise.field.text} {_error(noise)}"
 
 

@@ -1,11 +1,11 @@
 """Print each message on `joint_states` (`listen.py joint_states`), `/tf` (`listen.py tf`),
-`odom` (`listen.py odom`) or a sensor_msgs/Range topic (`listen.py range TOPIC`) as one JSON
+`odom` (`listen.py odom`), `imu` (`listen.py imu`) or a sensor_msgs/Range topic (`listen.py range TOPIC`) as one JSON
 line, for the body's tests. Run by the system python3.
 
 A JointState is its names, position, velocity and effort (NaN, which JSON lacks, as null)
 and its stamp in seconds; a TFMessage is one line per transform: parent and child frame,
 translation and rotation (x, y, z, w); an Odometry is its position's x and y, its frames and
-stamp (ns); a Range is its
+stamp (ns) and its pose's and twist's covariances; an Imu is its three covariances; a Range is its
 range, its header's stamp (ns) and frame id, and when it was received (ns, the host's clock). It ends by itself after a minute, so a test reading it
 until some message never waits longer."""
 
@@ -16,7 +16,7 @@ import time
 
 import rospy
 from nav_msgs.msg import Odometry
-from sensor_msgs.msg import JointState, Range
+from sensor_msgs.msg import Imu, JointState, Range
 from tf2_msgs.msg import TFMessage
 
 
@@ -40,7 +40,14 @@ def transforms(msg: TFMessage) -> None:
 def odometry(msg: Odometry) -> None:
     where = msg.pose.pose.position
     print(json.dumps({"x": where.x, "y": where.y, "frame_id": msg.header.frame_id, "child_frame_id": msg.child_frame_id,
-                      "stamp": msg.header.stamp.to_nsec()}), flush=True)
+                      "stamp": msg.header.stamp.to_nsec(), "pose_covariance": list(msg.pose.covariance),
+                      "twist_covariance": list(msg.twist.covariance)}), flush=True)
+
+
+def imu(msg: Imu) -> None:
+    print(json.dumps({"yaw_rate": msg.angular_velocity.z, "orientation": list(msg.orientation_covariance),
+                      "angular_velocity": list(msg.angular_velocity_covariance),
+                      "linear_acceleration": list(msg.linear_acceleration_covariance)}), flush=True)
 
 
 def ranged(msg: Range) -> None:
@@ -55,6 +62,8 @@ if sys.argv[1] == "tf":
     rospy.Subscriber("/tf", TFMessage, transforms, queue_size=100)
 elif sys.argv[1] == "range":
     rospy.Subscriber(sys.argv[2], Range, ranged, queue_size=100)
+elif sys.argv[1] == "imu":
+    rospy.Subscriber("imu", Imu, imu, queue_size=100)
 elif sys.argv[1] == "odom":
     rospy.Subscriber("odom", Odometry, odometry, queue_size=100)
 else:

@@ -210,6 +210,70 @@ def test_an_odometry_is_in_odom_with_the_base_as_its_child_frame(ros_env: dict[s
     assert any(at <= odometry["stamp"] for at in replies)
 
 
+# An Odometry's pose and twist errors, and an Imu's rates', each one covariance over several fields.
+COVARIANT = """\
+robot covariant { author "tests" }
+state x: float = 0.0
+connection link: serial { baud 57600  threading single at 20 Hz }
+primitive voltage() on link pack "BB" (142, 22) unpack ">H" { x = out[0] / 1000 }
+interface poll() periodic triggers odom, imu { voltage() }
+output odom: Odometry {
+    x = x  y = 0.0  theta = 0.0  linear = 0.0  angular = 0.0
+    noise (x, y, theta) [0.04, 0.01, 0.002; 0.01, 0.09, 0; 0.002, 0, 0.25]
+    noise (linear, angular) [0.0625, 0.015625; 0.015625, 0.125]
+}
+adapter Turning ros "sensor_msgs/Imu" {
+    roll_rate: float unit "rad/s" ros "angular_velocity.x"
+    yaw_rate: float unit "rad/s" ros "angular_velocity.z"
+    heading: float unit "rad" ros "orientation:yaw"
+}
+output imu: Turning {
+    roll_rate = 0.0  yaw_rate = x  heading = 0.0
+    noise (yaw_rate, roll_rate) [0.5, 0.25; 0.25, 0.75]
+    noise heading 0.125
+}
+"""
+
+
+def test_covariances_over_several_fields_reach_an_odometry_and_an_imu(ros_env: dict[str, str],
+                                                                      tmp_path: Path) -> None:
+    """`noise (x, y, theta) [...]`: the 3x3 covariance at x, y and the yaw of the pose's 6x6, off the
+    diagonal too; the twist's at its linear x and angular z; an Imu's rates at their axes of its 3x3."""
+    source, node_file = tmp_path / "covariant.rdis", tmp_path / "covariant_node.py"
+    source.write_text(COVARIANT, encoding="utf-8")
+    done = run_rdisc("emit-ros", str(source), "-o", str(node_file))
+    assert done.returncode == 0, done.stderr
+    with CreateEmulator() as device:
+        node = _start_node(node_file, ros_env, device)
+        odometry_listener, imu_listener = _listen(ros_env, "odom"), _listen(ros_env, "imu")
+        try:
+            odometry = _until(odometry_listener, lambda m: m["x"] == 15.0)[-1]
+            imu = _until(imu_listener, lambda m: m["yaw_rate"] == 15.0)[-1]
+        finally:
+            _stop(odometry_listener)
+            _stop(imu_listener)
+            _stop(node)
+    assert odometry["pose_covariance"] == [
+        0.04, 0.01, 0.0, 0.0, 0.0, 0.002,
+        0.01, 0.09, 0.0, 0.0, 0.0, 0.0,
+        0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
+        0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
+        0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
+        0.002, 0.0, 0.0, 0.0, 0.0, 0.25,
+    ]  # fmt: skip
+    assert odometry["twist_covariance"] == [
+        0.0625, 0.0, 0.0, 0.0, 0.0, 0.015625,
+        0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
+        0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
+        0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
+        0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
+        0.015625, 0.0, 0.0, 0.0, 0.0, 0.125,
+    ]  # fmt: skip
+    assert imu["angular_velocity"] == [0.75, 0.0, 0.25, 0.0, 0.0, 0.0, 0.25, 0.0, 0.5]
+    assert imu["orientation"] == [0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.015625]
+    assert imu["linear_acceleration"] == [0.0] * 9
+
+
 # Appendix C's mapping: the bumpers published as a std_msgs/Bool "hit", by an adapter of the description's own.
 HIT = """\
 robot hit_create { author "tests" }

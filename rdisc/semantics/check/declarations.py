@@ -10,6 +10,7 @@ from rdisc.diagnostics import Label
 from rdisc.semantics import model as m
 from rdisc.semantics import ros
 from rdisc.semantics.check.pieces import MAX_TERMINATOR, Pieces
+from rdisc.semantics.frameworks import with_frameworks
 from rdisc.semantics.model import Type
 from rdisc.semantics.operators import shown
 from rdisc.semantics.resolve import check_name
@@ -151,7 +152,8 @@ class Declarations(Pieces):
             field_type = self.type_name(f.type, "an adapter field", True)  # None: reported
             fields.append(m.AdapterField(f.name.text, field_type, f.unit, path, f.doc))  # type: ignore[arg-type]
         message = self.ros_name(decl.ros, ros.message_problem)
-        return m.Adapter(decl.name.text, tuple(fields), message, id(decl) in self.s.standard, decl.doc, decl.span)
+        made = m.Adapter(decl.name.text, tuple(fields), message, id(decl) in self.s.standard, decl.doc, decl.span)
+        return with_frameworks(made)
 
     def ros_name(self, given: ast.StrLit | None, problem: Callable[[str], str | None]) -> str | None:
         """A ROS name as written (an adapter's message type, a field's path), its fault reported (E108)."""

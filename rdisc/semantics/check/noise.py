@@ -92,8 +92,36 @@ def _covariance(d: Diagnostics, code: str, rows: m.Rows, span: Span | None, what
 
 def noise(d: Diagnostics, given: ast.FieldNoise, adapter: m.Adapter) -> m.Noise | None:
     """A field's noise: a deviation (its square the variance) in the field's unit, or a covariance."""
+    if given.others:
+        return _joint(d, given, adapter)
     found = _field(d, "E731", given.field, adapter)
     return None if found is None else _error(d, given, found.name, found.type, found.unit, "field")
+
+
+def _joint(d: Diagnostics, given: ast.FieldNoise, adapter: m.Adapter) -> m.Noise | None:
+    """One covariance over several number fields (`noise (x, y) [...]`), each named once, in its
+    order: it says how their errors go together (a pose's x and y), which separate deviations cannot."""
+    names: list[str] = []
+    for ident in (given.field, *given.others):
+        found = _field(d, "E731", ident, adapter)
+        if found is None:
+            return None
+        if isinstance(found.type, m.Array):
+            d.report("E731", ident.span, f"field `{found.name}` is {found.type.value}: a covariance over several "
+                     "fields is over numbers, one value each")
+            return None
+        if found.name in names:
+            d.report("E731", ident.span, f"field `{found.name}` is named twice in one noise")
+            return None
+        names.append(found.name)
+    what = f"the covariance of ({', '.join(names)})"
+    rows, span = _rows(given.value), _span(given.value, given.span)
+    if not _covariance(d, "E731", rows, span, what):
+        return None
+    if len(rows) != len(names):
+        d.report("E731", span, f"{what} is {len(rows)} by {len(rows)}, over {len(names)} fields")
+        return None
+    return m.Noise(names[0], rows, None, None, given.span, tuple(names[1:]))
 
 
 def value_noise(d: Diagnostics, given: ast.FieldNoise, name: str, type_: m.AnyType, what: str) -> m.Noise | None:
@@ -187,10 +215,12 @@ def errors(d: Diagnostics, decl: ast.OutputDecl, adapter: m.Adapter) -> tuple[tu
     noises: dict[str, m.Noise] = {}
     for given in decl.noises:
         made = noise(d, given, adapter)
-        if made is not None and made.field in noises:
-            d.report("E731", given.field.span, f"the noise of `{made.field}` is given twice")
+        again = None if made is None else next((f for f in made.fields if f in noises), None)
+        if made is not None and again is not None:
+            at = next(i for i in (given.field, *given.others) if i.text == again)
+            d.report("E731", at.span, f"the noise of `{again}` is given twice")
         elif made is not None:
-            noises[made.field] = made
+            noises.update(dict.fromkeys(made.fields, made))
     filters: dict[str, m.Kalman] = {}
     for each in decl.filters:
         filtered = kalman(d, each, adapter)
@@ -198,4 +228,4 @@ def errors(d: Diagnostics, decl: ast.OutputDecl, adapter: m.Adapter) -> tuple[tu
             d.report("E732", each.field.span, f"field `{filtered.field}` has two filters")
         elif filtered is not None:
             filters[filtered.field] = filtered
-    return tuple(noises.values()), tuple(filters.values())
+    return tuple(dict.fromkeys(noises.values())), tuple(filters.values())
