@@ -244,7 +244,9 @@ none is given and which the checks and the link budget use. It is read where sta
 is read (arguments, format values, conditions, post-actions, outputs, inputs), but
 not where a constant is needed (an array's size, a range, a delay, a timeout, a
 frequency, a constant), since its value is not known then; a connection's `baud`
-may be an int setting. A frame's own expressions read only its parameters, as it is
+may be an int setting, and the body's sizes, places and limits number settings (the
+body is built with the value given: `rdisc emit-urdf --set TRACK=0.3`), never a bool or
+string one. A frame's own expressions read only its parameters, as it is
 checked once for every primitive that names it: give the frame a parameter and pass
 the setting where a primitive names it (`frame dxl(id: int)` with `field id "B" = id`,
 then `frame dxl(SERVO_ID)`). Wrong: `setting BAUD: int` (no default), `delay WAIT ms`,
