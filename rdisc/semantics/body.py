@@ -78,7 +78,7 @@ class BodyRules:
         value = self.typer.constant(node)
         if value is not None:
             return value
-        read = sorted(_names(node))
+        read = sorted({v.name for v in m.variables(node)})
         for name in read:
             setting = self.settings[name]
             scalar = setting.type.element if isinstance(setting.type, m.Array) else setting.type
@@ -790,17 +790,6 @@ def joint_range(joint: m.Joint, quantity: m.Quantity) -> tuple[float | None, flo
         return joint.lower, joint.upper, "limit"
     bound = joint.velocity if quantity is m.Quantity.VELOCITY else joint.effort
     return (None, None, "") if bound is None else (-bound, bound, quantity.value)
-
-
-def _names(expr: m.Expr) -> set[str]:
-    """The names an expression reads."""
-    found, pending = set(), [expr]
-    while pending:
-        node = pending.pop()
-        if isinstance(node, m.Var):
-            found.add(node.name)
-        pending.extend(m.operands(node))
-    return found
 
 
 def size(expr: m.Expr) -> int:

@@ -110,6 +110,10 @@ class Checker(Declarations, Primitives, Interfaces, Sensors, Remembering):
             from rdisc.semantics.drive import check_drives
 
             check_drives(model, self.d, self.s)
+        if transmissions and outputs:  # the body against the odometry its encoders give
+            from rdisc.semantics.odometry import check_odometry
+
+            check_odometry(model, self.d, self.s)
         return None if self.d.has_errors() else model
 
     def robot_body(self, primitives: dict[str, m.Primitive], interface_params: dict[str, tuple[m.Parameter, ...]],
