@@ -70,7 +70,8 @@ class BodyRules:
 
     def value(self, expr: ast.Expr, what: str) -> m.Value | None:
         """The value of a body's expression: folded from constants, or computed from the
-        settings it reads at their values (none of a bool or string: reported, E213)."""
+        settings it reads at their values (none of a bool or string: reported, E213); None once
+        reported, here or where what it reads is declared."""
         errors = self.d.error_count
         node = self.typer.expr(expr, self.env)
         if self.d.error_count > errors or node.type is None:
@@ -87,6 +88,8 @@ class BodyRules:
                               labels=() if setting.span is None else (Label(setting.span, "declared here"),),
                               help="a body's sizes, places and masses may read number settings")
                 return None
+        if any(self.settings[name].default is None for name in read):
+            return None  # a setting without a default, reported where it is declared (E213)
         from rdisc.semantics.evaluate import evaluate
 
         try:
@@ -120,9 +123,8 @@ class BodyRules:
         return values[0], values[1], values[2]
 
     def numbers(self, expr: ast.Expr, what: str) -> tuple[float, ...] | None:
-        errors = self.d.error_count
         value = self.value(expr, what)
-        if self.d.error_count > errors:
+        if value is None:  # reported
             return None
         items = value if isinstance(value, tuple) else None
         floats = [_finite(v) if type(v) in (int, float) else None for v in items or ()]

@@ -113,3 +113,9 @@ def test_a_value_given_that_does_not_fit_is_a_usage_error(tmp_path: Path) -> Non
         assert (done.returncode, done.stdout, done.stderr.strip()) == (2, "", said)
     done = run_rdisc("sim", path, "--set", "TRACK=3")
     assert (done.returncode, done.stderr.strip()) == (2, "rdisc sim: rover: setting TRACK is 3.0, outside 0.1..1.0")
+
+
+def test_a_setting_without_a_default_is_reported_once_where_it_is_declared(tmp_path: Path) -> None:
+    """Before, the body computed with no value: an internal error."""
+    path = _write(tmp_path, DRIVE.replace("setting TRACK: float in 0.1..1.0 = 0.235", "setting TRACK: float"))
+    assert [(code, text) for code, text, _ in _errors(path)] == [("E213", "TRACK")]
