@@ -134,8 +134,8 @@ def _judge(model: m.Model, d: Diagnostics, s: Symbols, name: str, wheels: list[W
         except (EvalError, ArithmeticError, ValueError, TypeError, KeyError, IndexError):
             return  # a step the interpreter cannot take is not judged (the runtime would say why)
         roll = sum(abs(r) for r in rolled) / 2
-        if roll == 0:
-            return
+        if roll == 0 or not all(math.isfinite(v) for v in (said, said_turn, roll)):
+            return  # wheels that do not roll, or a step to no number: nothing to hold it to
         went, turned = base_motion(rolled, wheels[0].centre[1], wheels[1].centre[1])
         if abs(said - went) <= TOLERANCE * roll and abs(said_turn - turned) * track / 2 <= TOLERANCE * roll:
             continue
