@@ -18,7 +18,7 @@ from rdisc.diagnostics import Diagnostics, abbreviate
 from rdisc.semantics.budget import ConnectionBudget, budget
 from rdisc.semantics.check import check
 from rdisc.semantics.check.memo import Memo
-from rdisc.semantics.model import Model
+from rdisc.semantics.model import Model, Value
 from rdisc.semantics.resolve import Unit, resolve
 from rdisc.source import Sources, Span
 from rdisc.syntax import ast
@@ -129,19 +129,23 @@ def _without_collections() -> Iterator[None]:
             gc.enable()
 
 
-def compile_path(path: str, max_tokens: int | None = None) -> Compilation:
+def compile_path(path: str, max_tokens: int | None = None,
+                 settings: Mapping[str, Value] | None = None) -> Compilation:
     """Check one description (.rdis or .json) and build its Model. `max_tokens`: the token
-    budget of the description with its imports (default: the context's, MAX_TOKENS)."""
+    budget of the description with its imports (default: the context's, MAX_TOKENS).
+    `settings`: values given when connecting (each already of its setting's type and range,
+    `engine.bind_settings`), which stand for the defaults: the body is built and checked with them."""
     diagnostics = Diagnostics()
     text = read_text(path, diagnostics)
     if text is None:
         return Compilation(None, diagnostics, Sources())
-    return compile_text(path, text, diagnostics, max_tokens)
+    return compile_text(path, text, diagnostics, max_tokens, settings=settings)
 
 
 @_without_collections()
 def compile_text(path: str, text: str, diagnostics: Diagnostics | None = None,
-                 max_tokens: int | None = None, parser: Parser | None = None, memo: Memo | None = None) -> Compilation:
+                 max_tokens: int | None = None, parser: Parser | None = None, memo: Memo | None = None,
+                 settings: Mapping[str, Value] | None = None) -> Compilation:
     """Check a description given as text, named `path` (.json for the JSON importer): a ROS
     node rebuilds its Model for `~sim` from the canonical JSON it embeds, with no file. The
     editor's `parser` (of every file read) reuses what did not change since its last check
@@ -160,7 +164,7 @@ def compile_text(path: str, text: str, diagnostics: Diagnostics | None = None,
         return Compilation(None, diagnostics, sources)
     units: list[Unit] = []
     _add_unit(main, True, diagnostics, sources, units, tokens)
-    return _analyse(units, diagnostics, sources, main, memo)
+    return _analyse(units, diagnostics, sources, main, memo, settings)
 
 
 @_without_collections()
@@ -173,9 +177,9 @@ def compile_module(main: ast.Module, diagnostics: Diagnostics, sources: Sources,
 
 
 def _analyse(units: list[Unit], diagnostics: Diagnostics, sources: Sources, main: ast.Module,
-             memo: Memo | None = None) -> Compilation:
+             memo: Memo | None = None, settings: Mapping[str, Value] | None = None) -> Compilation:
     symbols = resolve(units, diagnostics)
-    model = check(units, symbols, diagnostics, memo)
+    model = check(units, symbols, diagnostics, memo, settings)
     budgets = budget(model, diagnostics) if model is not None else []
     return Compilation(model, diagnostics, sources, budgets, main, units)
 

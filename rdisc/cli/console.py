@@ -29,9 +29,8 @@ import sys
 from rdisc import engine
 from rdisc.cli import foxglove
 from rdisc.cli.address import is_loopback, parse_address
-from rdisc.cli.output import EXIT_ERRORS, EXIT_USAGE, exit_code, show
+from rdisc.cli.output import EXIT_USAGE, checked
 from rdisc.cli.sim import add_error_argument, add_seed_argument, answer_errors, simulation
-from rdisc.compile import compile_path
 from rdisc.console import PING_S
 
 DEFAULT_HTTP = "127.0.0.1:8765"
@@ -92,11 +91,11 @@ def _seconds(text: str) -> float:
 
 
 def run(args: argparse.Namespace) -> int:
-    compilation = compile_path(args.file)
-    show([compilation])
+    compilation = checked(args.file, args.set, "rdisc console")  # its body as the settings given make it
+    if isinstance(compilation, int):
+        return compilation
     model = compilation.model
-    if model is None or compilation.diagnostics.has_errors():
-        return exit_code([compilation]) or EXIT_ERRORS
+    assert model is not None
     from rdisc.console.page import render
     from rdisc.console.server import Console
     from rdisc.emit.decode import Teller

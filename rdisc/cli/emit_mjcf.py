@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import argparse
 
-from rdisc.cli.output import emit_body
+from rdisc.cli.output import add_settings_argument, emit_body
 
 
 def add_parser(verbs: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
@@ -19,10 +19,11 @@ def add_parser(verbs: argparse._SubParsersAction[argparse.ArgumentParser]) -> No
     )
     p.add_argument("file", metavar="FILE", help="an .rdis (or thesis-style .json) description")
     p.add_argument("-o", "--output", metavar="OUT.xml", help="where to write the model (default: stdout)")
+    add_settings_argument(p)
     p.set_defaults(run=run)
 
 
 def run(args: argparse.Namespace) -> int:
     from rdisc.emit.mjcf import to_mjcf
 
-    return emit_body("emit-mjcf", args.file, args.output, lambda model, _: to_mjcf(model))
+    return emit_body("emit-mjcf", args.file, args.output, lambda model, _: to_mjcf(model), given=args.set)

@@ -6,7 +6,7 @@ from __future__ import annotations
 import argparse
 import os
 
-from rdisc.cli.output import emit_body
+from rdisc.cli.output import add_settings_argument, emit_body
 
 
 def add_parser(verbs: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
@@ -15,6 +15,7 @@ def add_parser(verbs: argparse._SubParsersAction[argparse.ArgumentParser]) -> No
                                      "(what `ign sdf` and Gazebo read).")
     p.add_argument("file", metavar="FILE", help="an .rdis (or .json) description with links")
     p.add_argument("-o", "--output", metavar="OUT.sdf", help="where to write it (default: stdout)")
+    add_settings_argument(p)
     p.set_defaults(run=run)
 
 
@@ -22,4 +23,4 @@ def run(args: argparse.Namespace) -> int:
     from rdisc.emit.sdf import to_sdf
 
     name = os.path.basename(args.file)
-    return emit_body("emit-sdf", args.file, args.output, lambda model, _: to_sdf(model, name))
+    return emit_body("emit-sdf", args.file, args.output, lambda model, _: to_sdf(model, name), given=args.set)

@@ -7,7 +7,7 @@ from __future__ import annotations
 import argparse
 import os
 
-from rdisc.cli.output import emit_body
+from rdisc.cli.output import add_settings_argument, emit_body
 
 
 def add_parser(verbs: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
@@ -20,6 +20,7 @@ def add_parser(verbs: argparse._SubParsersAction[argparse.ArgumentParser]) -> No
                    help="add a <ros2_control> block for the transmissions' joints: through the ROS 2 node's "
                         "joint_command and joint_states topics (joint_state_topic_hardware_interface), or "
                         "with `mock`, mock_components/GenericSystem")
+    add_settings_argument(p)
     p.set_defaults(run=run)
 
 
@@ -29,4 +30,4 @@ def run(args: argparse.Namespace) -> int:
     name = os.path.basename(args.file)
     hardware = args.ros2_control
     return emit_body("emit-urdf", args.file, args.output,
-                     lambda model, _: to_urdf(model, name, ros2_control_hardware=hardware))
+                     lambda model, _: to_urdf(model, name, ros2_control_hardware=hardware), given=args.set)

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import argparse
 import sys
 from collections.abc import Callable, Iterable
 
@@ -62,30 +63,65 @@ def checked_model(path: str) -> Model | int:
     return compilation.model
 
 
-def checked(path: str) -> Compilation | int:
+def checked(path: str, given: list[str] | None = None, prog: str = "rdisc") -> Compilation | int:
     """`checked_model`'s compilation, for a verb that needs the files read too (`list(.sources)`),
-    its model not None."""
-    compilation = compile_path(path)
+    its model not None; with `given` settings (`--set NAME=VALUE`), built and checked with them."""
+    compilation = with_settings(path, given, prog)
+    if isinstance(compilation, int):
+        return compilation
     show([compilation])
     if compilation.model is None or compilation.diagnostics.has_errors():
         return exit_code([compilation]) or EXIT_ERRORS
     return compilation
 
 
-def compile_and_write(path: str, output: str | None, render: Callable[[Model, Sources], str]) -> int:
-    """Check a description, show its diagnostics, and write what `render` makes of its model
-    (and the files read) when it has no errors: the shape of every verb that turns a
-    description into a file."""
+def with_settings(path: str, given: list[str] | None, prog: str) -> Compilation | int:
+    """The compilation of a description with the settings `--set NAME=VALUE` gives (`given`), which
+    stand for their defaults: its body is built, checked and written with them. Each value is read
+    and held to its setting as `rdisc run` does (`engine.bind_settings`); one that does not fit is a
+    usage error, said on stderr."""
     compilation = compile_path(path)
+    if not given or compilation.model is None or compilation.diagnostics.has_errors():
+        return compilation
+    from rdisc import engine
+    from rdisc.runtime.device import Description
+
+    device = Description(compilation.model).device
+    try:
+        values = engine.parse_settings(given, device)
+        bound = engine.bind_settings(device, values)
+    except (TypeError, ValueError) as err:
+        print(f"{prog}: {err}", file=sys.stderr)
+        return EXIT_USAGE
+    return compile_path(path, settings={name: bound[name] for name in values})
+
+
+def compile_and_write(path: str, output: str | None, render: Callable[[Model, Sources], str],
+                      given: list[str] | None = None, prog: str = "rdisc") -> int:
+    """Check a description (with the settings `given`), show its diagnostics, and write what
+    `render` makes of its model (and the files read) when it has no errors: the shape of every
+    verb that turns a description into a file."""
+    compilation = with_settings(path, given, prog)
+    if isinstance(compilation, int):
+        return compilation
     show([compilation])
     if compilation.model is None or compilation.diagnostics.has_errors():
         return exit_code([compilation]) or EXIT_ERRORS
     return write(render(compilation.model, compilation.sources), output, list(compilation.sources))
 
 
-def emit_body(verb: str, path: str, output: str | None, render: Callable[[Model, Sources], str]) -> int:
-    """`compile_and_write` for the body's formats: a description with no body (or one the format
-    cannot hold) is an error of its own, said in a line, exit 1, nothing written."""
+def add_settings_argument(parser: argparse.ArgumentParser) -> None:
+    """`--set NAME=VALUE`, repeated, of the verbs that write the body: as `rdisc run`'s."""
+    parser.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
+                        help="give a setting of the description its value (a wheel base the body reads); repeat "
+                             "for several; the others keep their defaults")
+
+
+def emit_body(verb: str, path: str, output: str | None, render: Callable[[Model, Sources], str],
+              given: list[str] | None = None) -> int:
+    """`compile_and_write` for the body's formats, with the settings `given` (`--set`): a description
+    with no body (or one the format cannot hold) is an error of its own, said in a line, exit 1,
+    nothing written."""
     from rdisc.emit.body_xml import BodyError
     from rdisc.semantics.meshes import rebased
 
@@ -95,7 +131,7 @@ def emit_body(verb: str, path: str, output: str | None, render: Callable[[Model,
         return render(rebased(model, output, files=files), sources)  # its meshes' paths from where it is written
 
     try:
-        return compile_and_write(path, output, render_rebased)
+        return compile_and_write(path, output, render_rebased, given, f"rdisc {verb}")
     except BodyError as err:
         print(f"rdisc {verb}: {path}: {err}", file=sys.stderr)
         return EXIT_ERRORS

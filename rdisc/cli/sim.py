@@ -87,7 +87,7 @@ def simulation(model: Model, path: str, prog: str, *, seed: int | None, realtime
 
 
 def run(args: argparse.Namespace) -> int:
-    compilation = checked(args.file)
+    compilation = checked(args.file, args.set, "rdisc sim")  # its body as the settings given make it
     if isinstance(compilation, int):
         return compilation
     model = compilation.model

@@ -244,7 +244,9 @@ none is given and which the checks and the link budget use. It is read where sta
 is read (arguments, format values, conditions, post-actions, outputs, inputs), but
 not where a constant is needed (an array's size, a range, a delay, a timeout, a
 frequency, a constant), since its value is not known then; a connection's `baud`
-may be an int setting. A frame's own expressions read only its parameters, as it is
+may be an int setting, and the body's sizes, places and limits number settings (the
+body is built with the value given: `rdisc emit-urdf --set TRACK=0.3`), never a bool or
+string one. A frame's own expressions read only its parameters, as it is
 checked once for every primitive that names it: give the frame a parameter and pass
 the setting where a primitive names it (`frame dxl(id: int)` with `field id "B" = id`,
 then `frame dxl(SERVO_ID)`). Wrong: `setting BAUD: int` (no default), `delay WAIT ms`,
@@ -660,9 +662,16 @@ device's steps) when its wheels roll at their shapes' radius, without turning it
 a counter-clockwise command of 0.5 rad/s must turn it at 0.5 rad/s about the wheels'
 places (their joints' `at`). So the wheel radius and the wheel base the conversions
 and the input use are the body's: where they differ, a ROS odometry computed with the
-same constants says one distance while the base travels another. Wrong: `const R =
-0.036` in the conversions with `collision cylinder(0.044, 0.02)` on the wheels.
-Right: `collision cylinder(R, 0.02)`."""),
+same constants says one distance while the base travels another. The odometry is
+held to the body too: an `Odometry` output whose pose a primitive's post-actions
+integrate from the two wheels' encoders (each measured by a `measure position`
+transmission, stored as `ENCODER = out[i]`) is stepped twice, as two replies would
+step it, and must move as the body's wheels roll for those counts: 100 counts of each
+wheel forward, then of the right forward and the left back, within 5% of the roll.
+Wrong: `const R = 0.036` in the conversions or the odometry's metres per count with
+`collision cylinder(0.044, 0.02)` on the wheels (the odometry says 0.396 m where the
+base went 0.485 m). Right: `collision cylinder(R, 0.02)`. An odometry whose step reads
+state the device sets elsewhere is not judged: `rdisc sim` holds it to the physics."""),
     ("E614", "mesh-file", """
 A mesh's file must exist, found as the checker, the emitters and the simulation all
 find it: a relative path (`mesh("meshes/base.stl")`) starts at the folder of the

@@ -12,7 +12,7 @@ import dataclasses
 import math
 import os
 from collections import deque
-from collections.abc import Callable, Iterable, Sequence
+from collections.abc import Iterable, Mapping, Sequence
 from typing import Protocol, TypeVar
 
 from rdisc.diagnostics import Diagnostics, Label, abbreviate
@@ -42,7 +42,6 @@ MAX_CONVERSION_NODES = 50_000
 MAX_MASS = 1e6  # kg: a link heavier is out of what a simulator integrates (a mass of 1e308 makes MuJoCo's NaN)
 MAX_INERTIA = 1e6  # kg m², each element of an inertia
 MAX_LENGTH = 1e4  # m, each size of a shape
-_CONSTANTS = Env({}, "in the body", "constants")
 
 class _Spanned(Protocol):
     @property
@@ -51,27 +50,64 @@ class _Spanned(Protocol):
 
 _Clause = TypeVar("_Clause", bound=_Spanned)
 
-Number = Callable[[ast.Expr, str], "float | None"]
-
-
 class BodyRules:
-    """Checks the body's declarations; `number` reads a constant number (reported if not)."""
+    """Checks the body's declarations. Its numbers are constants, or read the description's
+    `settings` (a wheel base given when connecting): each has its default, or the value the
+    description is compiled with (`compile_path(..., settings=...)`, `--set` of the verbs that
+    write or simulate the body)."""
 
-    def __init__(self, d: Diagnostics, typer: Typer, symbols: Symbols, number: Number) -> None:
+    def __init__(self, d: Diagnostics, typer: Typer, symbols: Symbols,
+                 settings: Mapping[str, m.Setting] | None = None) -> None:
         self.d = d
         self.typer = typer
         self.s = symbols
-        self.constant = number
+        self.settings = dict(settings or {})
+        self.env = Env({n: (Scope.STATE, s.type) for n, s in self.settings.items()}, "in the body",
+                       "constants and settings")
         self.work = 0  # operations of the conversions sampled so far
 
     # -- constants of the body ---------------------------------------------------------
 
+    def value(self, expr: ast.Expr, what: str) -> m.Value | None:
+        """The value of a body's expression: folded from constants, or computed from the
+        settings it reads at their values (none of a bool or string: reported, E213); None once
+        reported, here or where what it reads is declared."""
+        errors = self.d.error_count
+        node = self.typer.expr(expr, self.env)
+        if self.d.error_count > errors or node.type is None:
+            return None
+        value = self.typer.constant(node)
+        if value is not None:
+            return value
+        read = sorted({v.name for v in m.variables(node)})
+        for name in read:
+            setting = self.settings[name]
+            scalar = setting.type.element if isinstance(setting.type, m.Array) else setting.type
+            if scalar not in (Type.INT, Type.FLOAT):
+                self.d.report("E213", expr.span, f"setting `{name}` is {describe(setting.type)}: {what} is a number",
+                              labels=() if setting.span is None else (Label(setting.span, "declared here"),),
+                              help="a body's sizes, places and masses may read number settings")
+                return None
+        if any(self.settings[name].default is None for name in read):
+            return None  # a setting without a default, reported where it is declared (E213)
+        from rdisc.semantics.evaluate import evaluate
+
+        try:
+            return evaluate(node, {name: self.settings[name].default for name in read})
+        except (EvalError, ArithmeticError, ValueError) as err:
+            given = ", ".join(f"`{n}` = {self.settings[n].default!r}" for n in read)
+            self.d.report("E204", expr.span, f"{what} cannot be computed with {given}: {err}")
+            return None
+
     def number(self, expr: ast.Expr, what: str) -> float | None:
-        """A constant number as a finite float (`2 ** 1100` is an int no float holds)."""
-        value = self.constant(expr, what)
+        """A number as a finite float (`2 ** 1100` is an int no float holds)."""
+        value = self.value(expr, what)
         if value is None:
             return None
-        finite = _finite(value)
+        if type(value) not in (int, float):
+            self.d.report("E204", expr.span, f"{what} must be a constant number")
+            return None
+        finite = _finite(value)  # type: ignore[arg-type]
         if finite is None:
             self.d.report("E204", expr.span, f"{what} must be a finite number")
         return finite
@@ -87,11 +123,9 @@ class BodyRules:
         return values[0], values[1], values[2]
 
     def numbers(self, expr: ast.Expr, what: str) -> tuple[float, ...] | None:
-        errors = self.d.error_count
-        node = self.typer.expr(expr, _CONSTANTS)
-        if self.d.error_count > errors:
+        value = self.value(expr, what)
+        if value is None:  # reported
             return None
-        value = self.typer.constant(node)
         items = value if isinstance(value, tuple) else None
         floats = [_finite(v) if type(v) in (int, float) else None for v in items or ()]
         finite = tuple(f for f in floats if f is not None)

@@ -12,6 +12,7 @@ round shape) is not judged.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
 
 from rdisc.diagnostics import Diagnostics, Label
@@ -53,7 +54,7 @@ def check_drives(model: m.Model, d: Diagnostics, symbols: Symbols) -> None:
         adapter = model.adapters.get(inp.adapter)
         if adapter is None or not adapter.standard or adapter.name not in ADAPTERS:
             continue
-        wheels = _wheels(model)
+        wheels = find_wheels(model, commanded)
         if wheels is None:
             continue
         forward = _turning(model, inp, wheels, {"linear": LINEAR, "angular": 0.0})
@@ -83,9 +84,9 @@ def _judge(model: m.Model, d: Diagnostics, s: Symbols, decl: ast.InputDecl, whee
     (y1, y2) = (wheels[0].centre[1], wheels[1].centre[1])
     radius = sum(w.radius for w in wheels) / 2
     track = abs(y1 - y2)
-    linear, veer = _base(rolled, y1, y2)
+    linear, veer = base_motion(rolled, y1, y2)
     spun = [w.forward(t) for w, t in zip(wheels, turning, strict=True)]
-    _, angular = _base(spun, y1, y2)
+    _, angular = base_motion(spun, y1, y2)
     if angular <= 0:
         d.report("E612", decl.name.span,
                  f"a counter-clockwise command of {ANGULAR:g} rad/s to input `{name}` turns the base "
@@ -121,7 +122,7 @@ def _judge(model: m.Model, d: Diagnostics, s: Symbols, decl: ast.InputDecl, whee
                  help="the input's wheel base and the wheel joints' places are one number: a constant both use")
 
 
-def _base(speeds: list[float], y1: float, y2: float) -> tuple[float, float]:
+def base_motion(speeds: list[float], y1: float, y2: float) -> tuple[float, float]:
     """The base's forward and angular speed from its wheels' forward speeds at y1 and y2."""
     angular = (speeds[1] - speeds[0]) / (y1 - y2)
     return speeds[0] + angular * y1, angular
@@ -131,12 +132,18 @@ def _speed(value: float) -> str:
     return f"{value:.4g}"
 
 
-def _wheels(model: m.Model) -> list[Wheel] | None:
-    """The two wheels a velocity command turns, each on a joint whose parents are fixed to the
-    base and with a round shape; None when the body is not such a drive."""
+def commanded(t: m.Transmission) -> bool:
+    """A wheel's transmission that commands its speed."""
+    return any(b.quantity is m.Quantity.VELOCITY for b in t.commands)
+
+
+def find_wheels(model: m.Model, turned: Callable[[m.Transmission], bool]) -> list[Wheel] | None:
+    """The two wheels of the transmissions `turned` picks (`commanded`: a velocity command turns
+    them), each on a joint whose parents are fixed to the base and with a round shape; None when
+    the body is not such a drive."""
     wheels: list[Wheel] = []
     for t in model.transmissions.values():
-        if not any(b.quantity is m.Quantity.VELOCITY for b in t.commands):
+        if not turned(t):
             continue
         joint = model.joints[t.joint]
         if joint.kind not in (m.JointKind.CONTINUOUS, m.JointKind.REVOLUTE):

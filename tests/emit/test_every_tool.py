@@ -8,6 +8,7 @@ one test, one subprocess at most, so the whole costs seconds."""
 from __future__ import annotations
 
 import random
+import xml.etree.ElementTree as ET
 from collections.abc import Callable
 from pathlib import Path
 
@@ -145,3 +146,38 @@ def test_the_generated_bodies_use_every_joint_kind_and_shape(tmp_path: Path) -> 
     kinds = {j.kind for b in bodies for j in b.joints.values()}
     shapes = {s.kind for b in bodies for link in b.links.values() for s in link.collisions}
     assert kinds == set(m.JointKind) and shapes == {m.ShapeKind.BOX, m.ShapeKind.CYLINDER, m.ShapeKind.SPHERE}
+
+
+# Two transmissions commanding one parameter (a servo bus's goal for two joints), no actuators
+# named: the URDF names each transmission's actuator after it (`lifter_actuator`, `tilter_actuator`),
+# never twice one name; every tool reads that model, its ros2_control block too.
+SHARED = """robot lift { author "tests" }
+connection link: serial { baud 115200 }
+primitive servo(goal: int in 0..1023) on link pack ">BH" (2, goal)
+link base { mass 1  inertia [0.001, 0.001, 0.001] }
+link arm { mass 0.2  centre [0.1, 0, 0]  inertia [0.0001, 0.0007, 0.0007] }
+link tilt_arm { mass 0.2  centre [0.1, 0, 0]  inertia [0.0001, 0.0007, 0.0007] }
+joint lift: revolute base -> arm { limit -1.5..1.5 velocity 2 effort 1 axis [0, 0, 1] }
+joint tilt: revolute base -> tilt_arm { limit -1.5..1.5 velocity 2 effort 1 axis [0, 1, 0] at [0, 0, 0.1] }
+transmission lifter: lift {
+    command position to servo.goal { raw = round(position * 195.3) + 512  position = (raw - 512) / 195.3 }
+}
+transmission tilter: tilt {
+    command position to servo.goal { raw = round(position * 195.3) + 512  position = (raw - 512) / 195.3 }
+}
+"""
+
+
+@pytest.mark.parametrize("tool", TOOLS)
+def test_every_tool_accepts_two_transmissions_on_one_parameter(tool: str, tmp_path: Path) -> None:
+    path = tmp_path / "lift.rdis"
+    path.write_text(SHARED, encoding="utf-8")
+    compilation = compile_path(str(path))
+    assert compilation.model is not None, [d.message for d in compilation.diagnostics.items]
+    actuators = [a.get("name") for a in ET.fromstring(to_urdf(compilation.model, "lift.rdis")).iter("actuator")]
+    assert actuators == ["lifter_actuator", "tilter_actuator"]
+    TOOLS[tool](compilation.model, tmp_path)
+    if tool == "check_urdf":  # and with its ros2_control block
+        with_block = to_urdf(compilation.model, "lift.rdis", ros2_control_hardware="topic")
+        tree = check_urdf(_written(tmp_path, with_block, ".urdf"))
+        assert isinstance(tree, Tree) and sorted(tree.edges) == [("base", "arm"), ("base", "tilt_arm")], tree

@@ -10,6 +10,7 @@ over the pieces they share (types, parameters, calls). Then what is declared and
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from functools import partial
 
 from rdisc.diagnostics import Diagnostics
@@ -25,10 +26,13 @@ from rdisc.semantics.resolve import Symbols, Unit
 from rdisc.syntax import ast
 
 
-def check(units: list[Unit], symbols: Symbols, diagnostics: Diagnostics, memo: Memo | None = None) -> m.Model | None:
+def check(units: list[Unit], symbols: Symbols, diagnostics: Diagnostics, memo: Memo | None = None,
+          settings: Mapping[str, m.Value] | None = None) -> m.Model | None:
     """The Model, or None; `memo`: the primitives' and interfaces' checks kept from the last check
-    of the same document, reused where what they read did not change (the editor's)."""
+    of the same document, reused where what they read did not change (the editor's); `settings`:
+    values given when connecting, which stand for those settings' defaults (compile_path's)."""
     checker = Checker(units, symbols, diagnostics)
+    checker.given = dict(settings or {})
     checker.remember(memo)
     model = checker.run()
     checker.forget_rest()
@@ -106,6 +110,10 @@ class Checker(Declarations, Primitives, Interfaces, Sensors, Remembering):
             from rdisc.semantics.drive import check_drives
 
             check_drives(model, self.d, self.s)
+        if transmissions and outputs:  # the body against the odometry its encoders give
+            from rdisc.semantics.odometry import check_odometry
+
+            check_odometry(model, self.d, self.s)
         return None if self.d.has_errors() else model
 
     def robot_body(self, primitives: dict[str, m.Primitive], interface_params: dict[str, tuple[m.Parameter, ...]],
@@ -118,7 +126,7 @@ class Checker(Declarations, Primitives, Interfaces, Sensors, Remembering):
         from rdisc.semantics.body import BodyRules
 
         errors = self.d.error_count
-        body = BodyRules(self.d, self.typer, self.s, self.setting)
+        body = BodyRules(self.d, self.typer, self.s, self.settings)
         links = {name: body.link(decl) for name, decl in self.s.links.items()}
         joints = {j.name: j for j in (body.joint(decl) for decl in self.s.joints.values()) if j is not None}
         joints = body.tree(links, joints)
@@ -140,7 +148,7 @@ class Checker(Declarations, Primitives, Interfaces, Sensors, Remembering):
         from rdisc.semantics import actuators as rules
         from rdisc.semantics.body import BodyRules
 
-        body = BodyRules(self.d, self.typer, self.s, self.setting)
+        body = BodyRules(self.d, self.typer, self.s, self.settings)
         found = {name: rules.actuator(self.d, body, decl) for name, decl in self.s.actuators.items()}
         actuators = {n: a for n, a in found.items() if a is not None}
         rules.bind(self.d, self.s.transmissions, actuators, transmissions, links, joints)

@@ -199,6 +199,7 @@ class Declarations(Pieces):
         param = ast.Param(decl.name, decl.type, decl.span, decl.low, decl.high, decl.default)
         low, high = self.param_range(param, type_.element if isinstance(type_, m.Array) else type_, "setting")
         default = self.param_default(param, type_, low, high, "setting")
+        default = self.given.get(decl.name.text, default)  # the value given when connecting stands for it
         if decl.default is None:
             self.d.report("E213", decl.name.span, f"setting `{decl.name.text}` has no default",
                           help=f"give the value it has when none is given: `setting {decl.name.text}: "

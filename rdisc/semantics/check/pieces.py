@@ -47,6 +47,7 @@ class Pieces:
         self.primitives: dict[str, m.Primitive] = {}
         self.written = 0  # calls in the interfaces' bodies, loops written out
         self.settings: dict[str, m.Setting] = {}
+        self.given: dict[str, m.Value] = {}  # settings' values given when connecting, for their defaults
 
     def type_name(self, ref: ast.TypeRef, what: str = "", open_size: bool = False) -> m.AnyType | None:
         """A type by name; `what` names a place that crosses to a framework (an adapter's
