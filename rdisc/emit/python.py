@@ -73,6 +73,9 @@ _BODY_NAMES = frozenset((
     "Any", "Args", "StateValues", "Sequence", "Value",
 ))
 # Members of State besides the state variables (it is a Mapping).
+# The most items a dict display is built from at its full size (CPython's BUILD_CONST_KEY_MAP); a larger
+# one grows an item at a time, and a copy of its keys, filled in, costs half as much.
+_DISPLAYED = 16
 _STATE_MEMBERS = frozenset(("keys", "items", "values", "get"))
 # The classes a driver defines for its robot, by their names' endings after the robot's class name.
 _CLASS_ENDINGS = ("", "State", "Inputs", "Interfaces", "Primitives", "Sensors")
@@ -246,20 +249,41 @@ class _Driver:
         """`def name(signature) -> returns:` whose body unpacks `args` into the parameters'
         names and returns a list (keys None) or a dict of the expressions' values, each bound
         to its type where one is given. `whole`, a dict's keys: every one in that order, those
-        of no item read from `state` (the items computed first, in their order, each its name)."""
+        of no item read from `state` (the items computed first, in their order, each its name).
+        A dict of more than `_DISPLAYED` keys is a copy of them, filled in (in the items' order)."""
         local = _params([(prm.name, prm.type) for prm in params or ()])
         items = list(values)
+        keyed = returns.startswith("dict")
+        given_keys = dict.fromkeys(key for key, _, _ in items)
+        keys = list(whole or given_keys)
+        filled = _constant_name(f"{name.lstrip('_')}_keys", self.taken) if keyed and len(keys) > _DISPLAYED else None
+        if filled is not None:
+            w.line(f"{filled}: dict[str, Value] = dict.fromkeys((")
+            with w.indented():
+                w.lines(_wrapped([f"{quoted(key)}," for key in keys], w.width()))
+            w.line("), 0)")
+            w.line(f'"""The keys of what {name} gives, in order: a copy filled in is made quicker than a display."""')
+            w.blank(2)
         with w.block(f"def {name}({signature}) -> {returns}:"):
             used = set().union(*(_names(e) for _, e, _ in items))
             if used & {prm.name for prm in params or ()}:
                 targets = [local[prm.name] if prm.name in used else "_" for prm in params or ()]
                 w.line(f"({targets[0]},) = args" if len(targets) == 1 else f"{', '.join(targets)} = args")
-            keyed = returns.startswith("dict")
             opening, closing = ("{", "}") if keyed else ("[", "]")
             rendered = []
             for key, e, type_ in items:
                 py = self.exprs.bound(e, type_, local) if type_ is not None else self.exprs.expr(e, local)
                 rendered.append((f"{quoted(key)}: " if keyed else key, py))  # key "*": an array given element by element
+            if filled is not None:  # the keys' order is the copy's: the values are computed in the items' order
+                made = _escape("changes", _body_names() | set(local.values()))
+                w.line(f"{made} = {filled}.copy()")
+                for (key, _, _), (_, py) in zip(items, rendered):
+                    _emit(w, f"{made}[{quoted(key)}] = ", py)
+                for key in whole:
+                    if key not in given_keys:
+                        w.line(f"{made}[{quoted(key)}] = state[{quoted(key)}]")
+                w.line(f"return {made}")
+                return
             if whole:  # each value computed first, in the items' order (the first to fail fails), unless none can
                 given = {key: py for (key, _, _), (_, py) in zip(items, rendered)}
                 if not all(_cannot_fail(e, type_) for _, e, type_ in items):
@@ -1187,6 +1211,17 @@ def _section(w: Writer, title: str) -> None:
 
 def _a(noun: str) -> str:
     return f"{'an' if noun[:1].lower() in 'aeiou' else 'a'} {noun}"
+
+
+def _wrapped(items: list[str], width: int) -> list[str]:
+    """`items` joined by spaces into lines of at most `width` characters (one item a line where it is longer)."""
+    out: list[str] = []
+    for item in items:
+        if out and len(out[-1]) + 1 + len(item) <= width:
+            out[-1] += " " + item
+        else:
+            out.append(item)
+    return out
 
 
 def _tuple(items: list[str]) -> str:

@@ -156,6 +156,12 @@ class Robot(Exchange):
         # While `_direct`, the primitives only written, by name, with their one-step requests: what
         # `call_primitive` looks up first (empty otherwise, so that one look-up decides both).
         self._written: dict[str, tuple[Primitive, Request]] = {}
+        # Each input by name with what `call_input` reads of it on every call, read once here: its
+        # fields' count, how they are taken from keywords, its one-step request and where that goes.
+        self._inputs: dict[str, tuple[Input, int, Callable[[Mapping[str, Any]], Args], Request | None,
+                                      Primitive | None]] = {
+            name: (plan, len(plan.fields), plan.taken, plan.request, plan.primitive)
+            for name, plan in device.inputs.items()}
         self._closed = False  # closing or closed: writes are refused (`_refuse`) but by the `_closer`
         self._closer: int | None = None
         self._closing = threading.Event()  # set when closing begins: it ends the other threads' delays
@@ -258,23 +264,23 @@ class Robot(Exchange):
 
     def call_input(self, name: str, /, **fields: Any) -> None:
         """Run a domain input with its adapter's fields by name, on this thread; errors are raised."""
-        plan = self.device.inputs.get(name)
-        if plan is None:
+        found = self._inputs.get(name)
+        if found is None:
             raise KeyError(f"{self.name} has no input named {name!r}")
+        plan, count, taken, request, primitive = found
         try:
-            if len(fields) != len(plan.fields):
+            if len(fields) != count:
                 raise KeyError(name)
-            values = plan.taken(fields)
+            values = taken(fields)
         except KeyError:
             expected = ", ".join(f.name for f in plan.fields)
             raise TypeError(f"input {name} takes the fields {expected} ({plan.adapter}); "
                             f"given: {', '.join(fields) or 'none'}") from None
-        request = plan.request
         if request is not None and self._direct:  # `_input`'s one plain write, inline: every command's path
             data = request(self._state, values)
             if data is not None:
-                assert plan.primitive is not None  # set with `request`
-                self._write(plan.primitive, data)
+                assert primitive is not None  # set with `request`
+                self._write(primitive, data)
                 return
             self._input_in_full(plan, values)
             return

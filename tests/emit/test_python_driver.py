@@ -772,3 +772,53 @@ def test_a_long_expect_is_broken_inside_bool_parentheses(tmp_path) -> None:
         robot.primitives.q()
         with pytest.raises(driver.RdisProtocolError):
             robot.primitives.q()
+
+
+MANY = """robot many { author "tests" }
+connection port: serial { baud 115200 }
+state first: int = 0
+state kept: float = 2.5
+""" + "".join(f"state v{i}: int = 0\nstate b{i}: bool\n" for i in range(9)) + "".join(
+    f"state e{i}: int = {i}\n" for i in range(6)) + """
+/// 19 of the 26 state variables from the reply: the whole new state (the engine renews it).
+primitive all() on port pack "B" (1) unpack "B9B" {
+    first = out[0] + 1
+""" + "".join(f"    v{i} = out[{i + 1}]  b{i} = bool(out[{i + 1}] & 1)\n" for i in range(9)) + """}
+/// 17 of the 26, merged into the state.
+primitive some() on port pack "B" (2) unpack "9B" {
+""" + "".join(f"    v{i} = out[{i}] * 2\n" for i in range(9)) + "".join(
+    f"    b{i} = out[{i}] == 0\n" for i in range(8)) + "}\n"
+
+
+def test_a_dict_of_more_than_sixteen_values_is_a_copy_filled_in(tmp_path, mypy_cache) -> None:
+    """Post-actions setting more values than CPython builds a dict display of at its full size
+    give a copy of their keys filled in (half the time of a display that grows); the state they
+    leave is the display's, in the variables' order, and the driver passes ruff and mypy --strict."""
+    source = tmp_path / "many.rdis"
+    source.write_text(MANY, encoding="utf-8")
+    path = generate(source, tmp_path, "many")
+    text = path.read_text(encoding="utf-8")
+    assert '    changes = _P_ALL_ACTIONS_KEYS.copy()\n    changes["first"] = reply[0] + 1\n    changes["v0"] = reply[1]\n' in text
+    assert '    changes["b8"] = (reply[9] & 1) != 0\n    changes["kept"] = state["kept"]\n' in text  # those not set, kept
+    assert '    changes = _P_SOME_ACTIONS_KEYS.copy()\n    changes["v0"] = _mul(reply[0], 2)\n' in text
+    assert ('_P_SOME_ACTIONS_KEYS: dict[str, Value] = dict.fromkeys((\n'
+            '    "v0", "v1", "v2", "v3", "v4", "v5", "v6", "v7", "v8", "b0", "b1", "b2", "b3", "b4", "b5", "b6",\n'
+            '    "b7",\n'
+            '), 0)\n') in text
+    for tool in (["ruff", "check", "--isolated", "--no-cache"],
+                 ["mypy", "--strict", "--no-error-summary", "--cache-dir", str(mypy_cache)]):
+        done = subprocess.run([sys.executable, "-m", *tool, str(path)], capture_output=True, text=True, check=False,
+                              cwd=tmp_path)
+        assert done.returncode == 0, done.stdout + done.stderr
+    driver = load(path)
+    reply = bytes([7, 1, 2, 3, 4, 5, 6, 7, 8, 9])
+    with driver.connect(ScriptedPort(reply + bytes([0, 1, 0, 1, 0, 1, 0, 1, 5])), threads=False) as robot:
+        robot.primitives.all()
+        names = ["first", "kept"] + [f"{kind}{i}" for i in range(9) for kind in "vb"] + [f"e{i}" for i in range(6)]
+        assert list(robot.state) == names
+        assert dict(robot.state) == {"first": 8, "kept": 2.5, **{f"v{i}": i + 1 for i in range(9)},
+                                     **{f"b{i}": (i + 1) % 2 == 1 for i in range(9)}, **{f"e{i}": i for i in range(6)}}
+        robot.primitives.some()
+        assert list(robot.state) == names
+        assert dict(robot.state) == {"first": 8, "kept": 2.5, **{f"v{i}": 2 * (i % 2) for i in range(8)}, "v8": 10,
+                                     **{f"b{i}": i % 2 == 0 for i in range(8)}, "b8": True, **{f"e{i}": i for i in range(6)}}
