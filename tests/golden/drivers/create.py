@@ -5532,7 +5532,6 @@ _P_BUMPERS = Primitive(
     Pack("BB"),
     reply=FixedReply(Unpack("B")),
     actions=_p_bumpers_actions,
-    renews=True,
 )
 
 
