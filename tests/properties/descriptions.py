@@ -2096,7 +2096,7 @@ def _output(draw: Draw, name: str, adapter: str, scope: Scope) -> Output:
     fields = tuple((f, expression(draw, t, scope, 2)) for f, t in ADAPTERS[adapter])
     floats = [f for f, t in ADAPTERS[adapter] if t == FLOAT]
     noise = tuple((f, draw(st.sampled_from([0.01, 0.5, 2.0]))) for f in floats if sometimes(draw, 4))
-    filters = tuple(_kalman(draw, f) for f in floats if sometimes(draw, 4))
+    filters = tuple(_kalman(draw, f) for f in floats if sometimes(draw, 3))
     return Output(name, adapter, fields, noise, filters)
 
 
@@ -2161,7 +2161,7 @@ def descriptions(draw: Draw) -> Description:
     reading = scope + tuple(Name(s.type, s.name) for s in sensors)
     state_noise = tuple((name, draw(st.sampled_from([0.5, 3, 0.01])), draw(st.sampled_from(["", "", "mm"])))
                         for name, type_, _ in states if type_ in NUMBERS and sometimes(draw, 4))
-    threading = {name: draw(st.sampled_from(["single", "single", "dual", "multiple"])) for name in connection_names}
+    threading = {name: draw(st.sampled_from(["single", "dual", "multiple"])) for name in connection_names}
     output_specs = []
     output_names = tuple(f"o{i}" for i in range(draw(st.integers(0, 2))))
     for name in output_names:

@@ -37,6 +37,7 @@ from descriptions import (
     Decoding,
     Description,
     Frame,
+    Interface,
     Lit,
     Name,
     Operation,
@@ -46,6 +47,7 @@ from descriptions import (
     ReplyPlan,
     Script,
     Sensor,
+    _own_rate,
     constructs,
     crc,
     descriptions,
@@ -56,6 +58,7 @@ from descriptions import (
 from differential_support import Clock, Pairs, compare, normal
 from hypothesis import HealthCheck, Phase, find, given, settings
 from hypothesis import strategies as st
+from hypothesis.errors import NoSuchExample
 
 from rdisc.compile import compile_path
 from rdisc.emit.python import import_driver
@@ -276,7 +279,6 @@ def test_a_sensor_keeps_its_value_in_the_driver_as_in_the_runtime(robot_of) -> N
 @pytest.mark.parametrize("construct, written", [
     ("sensor", r"\nsensor r0: \w+ from p\d+\(\) cache \d+ ms"),
     ("threading dual or multiple", r"threading (dual|multiple) at 50 Hz"),
-    ("an interface's own rate", r"\ninterface i\d+\(\) periodic \d+ Hz"),
     ("noise", r" noise "),
     ("kalman filter", r" filter \w+ kalman \{ state .+  transition .+  process .+  measurement .+  noise "),
 ])
@@ -286,6 +288,20 @@ def test_the_strategies_draw_chapter_7_constructs(construct: str, written: str) 
     estimates (`constructs` counts them)."""
     found = find(descriptions(), lambda d: construct in constructs(d), settings=QUICK)
     assert re.search(written, found.text), found.text
+
+
+def test_a_periodic_interface_under_threading_multiple_is_drawn_a_rate_of_its_own() -> None:
+    """`periodic N Hz` (its own thread's rate), on a `threading multiple` connection only."""
+    periodic = Interface("i0", (), (), periodic=True)
+
+    @st.composite
+    def rated(draw: st.DrawFn, threading: str) -> Interface:
+        return _own_rate(draw, periodic, {"c0": threading}, ("c0",))
+
+    found = find(rated("multiple"), lambda i: i.rate is not None, settings=QUICK)
+    assert re.fullmatch(r"interface i0\(\) periodic (2|20|100) Hz \{\n\n\}", found.text())
+    with pytest.raises(NoSuchExample):
+        find(rated("dual"), lambda i: i.rate is not None, settings=QUICK)
 
 
 def test_a_sensor_read_within_its_cache_time_is_seen_by_the_device_model(pairs: Pairs) -> None:
