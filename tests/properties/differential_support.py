@@ -15,8 +15,9 @@ Each run is also held against rules of the contract that both could break alike,
 which a comparison alone would miss: every byte the port gave is shown to on_io;
 a call answered with a reply the device model knows to be valid decodes it; calls
 raise only the contract's error types; a value outside its range is refused; an
-interface that completes delivers its output. Time is the wire's (`Clock`), so
-no deadline depends on how fast the machine runs the test.
+interface that completes delivers its output; the terminate hooks run while the robot
+closes (a sensor they read too). Time is the wire's (`Clock`), so no deadline and no
+sensor's age depends on how fast the machine runs the test; a `wait` moves it on.
 """
 
 from __future__ import annotations
@@ -310,6 +311,7 @@ REPLY_RULE = "a valid reply is decoded"
 RANGE_RULE = "a value outside its parameter's range is refused"
 OUTPUT_RULE = "an interface that completes delivers the output it triggers"
 LOAD_RULE = "a checked description loads"
+TERMINATE_RULE = "a terminate hook runs while the robot closes"
 CALL_ERRORS = ("RdisTimeout", "RdisProtocolError", "RdisValueError", "RdisDeviceError", "TypeError", "KeyError")
 
 
@@ -400,8 +402,13 @@ def _run(result: Run, connect: Connect, description: Description, script: Script
                         and device.answers[answered:] == [True]:
                     result.broke(REPLY_RULE, op.label(), f"it raised {kind}: {err}")
         device.expect(hook_exchanges(description, "terminate", script.terminate, dict(robot.state)))
+        closing, failures = len(log), device.failures
         robot.close()
         log.append(("closed", snapshot(robot)))
+        refused = [result.messages[i] for i in range(closing, len(log)) if i in result.messages
+                   and result.messages[i] == f"RdisConnectionError: {robot.name}: closed"]
+        if refused and device.failures == failures:
+            result.broke(TERMINATE_RULE, "close", f"it reported {refused[0]}")
         if script.after_close is not None:
             try:
                 _perform(robot, script.after_close, clock)

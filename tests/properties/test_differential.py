@@ -323,3 +323,20 @@ def test_a_sensor_read_within_its_cache_time_is_seen_by_the_device_model(pairs: 
     assert reads == [0x0201, 0x0201, 0x0403]
     ages = [entry[3][1][0][1] for entry in log if entry[0] in ("sensors.r0", "wait(60 ms)")]
     assert ages == [normal(0.0), normal(0.0), normal((Clock().now + 0.06) - Clock().now), normal(0.0)]
+
+
+def test_a_terminate_hook_reads_a_sensor(robot_of) -> None:
+    """Found beside the differential test over sensors (both implementations alike, so no disagreement):
+    a terminate hook whose interface read a stale sensor was refused, 'closed', and wrote nothing; it
+    reads it, as the hook's own commands are written, and its command is the last written."""
+    text = ('connection arm: serial { baud 9600  terminate park() }\n'
+            'primitive level() on arm pack "B" (4) unpack "B"\n'
+            'sensor height: int from level() cache 100 ms\n'
+            'primitive show(value: int) on arm pack "BB" (2, value)\n'
+            'interface park() { show(height) }\n')
+    port = ScriptedPort(b"\x07")
+    robot, _ = robot_of(text, port)
+    errors: list[BaseException] = []
+    robot.on_error(errors.append)
+    robot.close()
+    assert (bytes(port.written), errors) == (b"\x04\x02\x07", [])
