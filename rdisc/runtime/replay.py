@@ -23,7 +23,7 @@ import math
 import os
 import struct
 from collections import deque
-from collections.abc import Iterable, Mapping
+from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -329,8 +329,18 @@ class RecordedClock:
         self.now = max(self.now, stamp_ns / 1e9)
 
     def advance(self, seconds: float) -> None:
-        """A delay, not waited for: the recording's time passes as it did."""
+        """A delay: the recording's time passes as it did."""
         self.now += seconds
+
+    def advancing(self, wait: Callable[[float], None] | None) -> Callable[[float], None]:
+        """A robot's way to wait out a delay: `wait` for it (None: not waited for), then `advance`."""
+        if wait is None:
+            return self.advance
+
+        def waited(seconds: float) -> None:
+            wait(seconds)
+            self.advance(seconds)
+        return waited
 
 
 class ReplayPort:
@@ -404,8 +414,7 @@ def replay(recording: Recording, device: engine.Device, *, realtime: bool = Fals
     robot = engine.Robot(device, timeout=recording.timeout or 0.05)
     clock = RecordedClock()
     robot._clock = clock  # the schedule's and the sensors' time (a simulation's takes it too)
-    if not realtime:
-        robot._sleep = clock.advance  # the robot's one way to wait out a delay
+    robot._sleep = clock.advancing(robot._sleep if realtime else None)  # the robot's one way to wait out a delay
     output = io.BytesIO()
     recorder = engine.Recorder(robot, output, recording.settings)
     ports = {name: ReplayPort(recording.exchanges.get(name, ()), recording.exchange_times.get(name, ()), clock)
