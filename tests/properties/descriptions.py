@@ -1575,6 +1575,33 @@ class Output:
 
 
 @dataclass(frozen=True)
+class Actuated:
+    """A joint of the body driven by an actuator (thesis §7.2.6): a servo's position or a wheel's
+    velocity, commanded through a primitive of its own (`pN(a0: int in LOW..HIGH)`, 100 counts a unit)."""
+
+    index: int
+    kind: str  # servo | wheel
+    primitive: Primitive
+    items: tuple[tuple[str, float], ...]  # velocity, acceleration, effort
+
+    def text(self) -> str:
+        i, servo = self.index, self.kind == "servo"
+        joint = (f"joint j{i}: revolute base -> l{i} {{ axis [0, 0, 1]  limit -1..1  velocity 2  effort 1 }}" if servo
+                 else f"joint j{i}: continuous base -> l{i} {{ axis [0, 1, 0]  velocity 10  effort 1 }}")
+        quantity, offset = ("position", 500) if servo else ("velocity", 0)
+        items = "  ".join(f"{name} {number_text(value)}" for name, value in self.items)
+        return "\n".join([
+            f"link l{i} {{ mass 0.1  inertia [0.001, 0.001, 0.001] }}", joint,
+            f"actuator m{i}: {self.kind} {{ {items} }}",
+            f"transmission t{i}: j{i} actuator m{i} {{",
+            f"    command {quantity} to {self.primitive.name}.a0 {{",
+            f"        raw = round({quantity} * 100) + {offset}",
+            f"        {quantity} = (raw - {offset}) / 100.0",
+            "    }",
+            "}"])
+
+
+@dataclass(frozen=True)
 class Sensor:
     """`sensor NAME: TYPE from PRIMITIVE() cache N ms [noise D]` (thesis §7.2.4): the primitive's one value."""
 
@@ -1617,6 +1644,7 @@ class Description:
     inputs: tuple[Input, ...]
     sensors: tuple[Sensor, ...] = ()
     state_noise: tuple[tuple[str, float, str], ...] = ()  # a state variable's noise: its deviation, its unit
+    actuated: tuple[Actuated, ...] = ()  # the body: a base link, and a joint driven by an actuator each
     text: str = field(default="", compare=False)
 
     def _repr_pretty_(self, printer: Any, cycle: bool) -> None:  # how hypothesis shows a failing example
@@ -1649,6 +1677,8 @@ class Description:
         for section in sections:
             lines.append("")
             lines += [element.text() for element in section]  # type: ignore[attr-defined]
+        if self.actuated:
+            lines += ["", "link base { }"] + [a.text() for a in self.actuated]
         return "\n".join(lines) + "\n"
 
     @property
@@ -1709,6 +1739,8 @@ def constructs(description: Description) -> set[str]:
         found.add("noise")
     if any(o.filters for o in description.outputs):
         found.add("kalman filter")
+    if description.actuated:
+        found.add("actuator")
     return found
 
 
@@ -2159,6 +2191,17 @@ def descriptions(draw: Draw) -> Description:
             noise = draw(st.sampled_from([0.5, 0.01, 2])) if type_ in NUMBERS and sometimes(draw, 3) else None
             sensors.append(Sensor(f"r{i}", type_, prim, draw(st.sampled_from([10, 50, 100])), noise))
     reading = scope + tuple(Name(s.type, s.name) for s in sensors)
+    actuated: list[Actuated] = []
+    for i in range(draw(st.integers(1, 2)) if sometimes(draw, 4) else 0):  # actuators, each a joint's
+        kind = draw(st.sampled_from(["servo", "wheel"]))
+        low, high, code = (0, 1000, "<H") if kind == "servo" else (-1000, 1000, "<h")
+        prim = Primitive(f"p{len(prims)}", (Param("a0", INT, low, high),), draw(st.sampled_from(connection_names)),
+                         "pack", code, (Name(INT, "a0"),))
+        prims += (prim,)
+        items = [("velocity", draw(st.sampled_from([0.5, 4.8, 12.0])))]
+        items += [("acceleration", draw(st.sampled_from([2.0, 30.0])))] if draw(st.booleans()) else []
+        items += [("effort", draw(st.sampled_from([0.5, 4.1])))] if draw(st.booleans()) else []
+        actuated.append(Actuated(i, kind, prim, tuple(items)))
     state_noise = tuple((name, draw(st.sampled_from([0.5, 3, 0.01])), draw(st.sampled_from(["", "", "mm"])))
                         for name, type_, _ in states if type_ in NUMBERS and sometimes(draw, 4))
     threading = {name: draw(st.sampled_from(["single", "dual", "multiple"])) for name in connection_names}
@@ -2191,7 +2234,7 @@ def descriptions(draw: Draw) -> Description:
         connections.append(Connection(name, terminator, _hook(draw, quiet, scope), _hook(draw, ifaces, scope), keepalive,
                                       threading[name]))
     description = Description(tuple(states), tuple(constants), frames_, tuple(connections), prims, ifaces,
-                              tuple(output_specs), tuple(inputs), tuple(sensors), state_noise)
+                              tuple(output_specs), tuple(inputs), tuple(sensors), state_noise, tuple(actuated))
     return dataclasses.replace(description, text=description.render())
 
 

@@ -280,12 +280,13 @@ def test_a_sensor_keeps_its_value_in_the_driver_as_in_the_runtime(robot_of) -> N
     ("sensor", r"\nsensor r0: \w+ from p\d+\(\) cache \d+ ms"),
     ("threading dual or multiple", r"threading (dual|multiple) at 50 Hz"),
     ("noise", r" noise "),
+    ("actuator", r"\nactuator m0: (servo|wheel) \{ velocity [\d.]+.*\ntransmission t0: j0 actuator m0 \{\n    command "),
     ("kalman filter", r" filter \w+ kalman \{ state .+  transition .+  process .+  measurement .+  noise "),
 ])
 def test_the_strategies_draw_chapter_7_constructs(construct: str, written: str) -> None:
-    """Sensors (read by outputs, interfaces and inputs), threading models, noise and Kalman filters
-    (thesis ch. 7): the differential search holds runtime and driver to the same reads, cache ages and
-    estimates (`constructs` counts them)."""
+    """Sensors (read by outputs, interfaces and inputs), threading models, noise, Kalman filters and
+    actuators (thesis ch. 7): the differential search holds runtime and driver to the same reads, cache
+    ages, estimates and commands (`constructs` counts them)."""
     found = find(descriptions(), lambda d: construct in constructs(d), settings=QUICK)
     assert re.search(written, found.text), found.text
 
