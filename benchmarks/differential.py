@@ -9,7 +9,7 @@ It uses the test suite's strategies and harness (tests/properties/descriptions.p
 differential_support.py; tests/properties/test_differential.py runs a few dozen).
 Hypothesis generates descriptions and sessions. A problem is a disagreement, or a rule
 of the contract broken by either implementation (on_io, valid replies, error types,
-ranges, outputs). Each is shrunk, printed and remembered by its signature (what differs
+ranges, outputs, terminate hooks). Each is shrunk, printed and remembered by its signature (what differs
 first, or the rule and how), and the search goes on, failing only on signatures not
 seen yet, until the budget of descriptions is spent; a bug listed in KNOWN is printed
 as first seen, unshrunk. Also printed: the calls' outcomes, apart those of calls whose

@@ -475,9 +475,10 @@ class _Driver:
     def actions(self, w: Writer, name: str, code: lowering.Code) -> None:
         """Post-actions as `code` does, or, where they set at least two thirds of the state
         variables (each once), as a function giving the whole new state, which the engine
-        publishes as it is (`Primitive.renews`): cheaper than merging so many changes into it."""
+        publishes as it is (`Primitive.renews`): cheaper than merging so many changes into it.
+        Never with sensors: their values are state that a whole new state would drop."""
         keys = [key for key, _, _ in code.items]
-        if len(set(keys)) != len(keys) or 3 * len(keys) < 2 * len(self.state_order):
+        if self.model.sensors or len(set(keys)) != len(keys) or 3 * len(keys) < 2 * len(self.state_order):
             self.code(w, name, code)
             return
         self.names[code] = name

@@ -239,7 +239,7 @@ class Robot(Exchange):
             self._sensed.refresh(sensor, self._clock(), self._read_sensor)
 
     def _read_sensor(self, plan: Primitive) -> None:
-        if not self._running:
+        if not self._running and self._closer != threading.get_ident():  # a terminate hook reads too
             raise self._not_running()
         self._primitive(plan, [])
 

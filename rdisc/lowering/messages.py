@@ -61,6 +61,11 @@ DEFINITIONS: dict[str, str] = {
         "std_msgs/Header header\nstring[] name\nfloat64[] position\nfloat64[] velocity\nfloat64[] effort\n"
     ),
     "sensor_msgs/Temperature": "std_msgs/Header header\nfloat64 temperature\nfloat64 variance\n",
+    "sensor_msgs/Imu": (  # no standard adapter's: a description's own adapter names it, for its covariances
+        "std_msgs/Header header\ngeometry_msgs/Quaternion orientation\nfloat64[9] orientation_covariance\n"
+        "geometry_msgs/Vector3 angular_velocity\nfloat64[9] angular_velocity_covariance\n"
+        "geometry_msgs/Vector3 linear_acceleration\nfloat64[9] linear_acceleration_covariance\n"
+    ),
     "std_msgs/String": "string data\n",
     # What a ROS 2 node announces itself with, on `ros_discovery_info` (`ros2 node list` reads it).
     "rmw_dds_common/Gid": "char[24] data\n",

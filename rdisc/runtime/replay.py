@@ -5,6 +5,9 @@ The recording (`rdisc run --record`, `engine.Recorder`) holds what ran, in order
 each way on every connection. The replay opens the description on ports that give back the
 recorded replies, without threads, makes the recorded calls and runs the periodic interfaces and
 keepalives where the recording ran them, and records all of it again with the same Recorder.
+The robot's clock is the recording's (`RecordedClock`): a sensor's value grows old as it did in
+the recorded session, so the replay reads it where that session read it and serves the kept
+value where that one did, however fast the replay runs.
 Then the two recordings are compared, topic by topic: each input and output message field by
 field (a header's stamp aside), the bytes written on each connection, and the errors (a refused
 reply, a timeout) of one and not the other. Delays are not slept unless asked (`realtime`).
@@ -20,7 +23,7 @@ import math
 import os
 import struct
 from collections import deque
-from collections.abc import Iterable, Mapping
+from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -43,6 +46,8 @@ class Recording:
     timeout: float | None = None  # the reply timeout of the session; None in a recording older than it
     runs: list[dict[str, Any]] = field(default_factory=list)  # in order
     exchanges: dict[str, list[tuple[bytes | None, bytes]]] = field(default_factory=dict)  # by connection
+    run_times: list[int] = field(default_factory=list)  # when each run began (ns, the recording's clock)
+    exchange_times: dict[str, list[int]] = field(default_factory=dict)  # when each exchange ended, likewise
     writes: dict[str, list[bytes]] = field(default_factory=dict)  # by connection
     messages: dict[str, list[dict[str, Any]]] = field(default_factory=dict)  # by input or output, flattened
     errors: list[str] = field(default_factory=list)  # `Type: message`, in order
@@ -78,11 +83,11 @@ def read_recording(source: str | os.PathLike[str] | io.BytesIO) -> Recording:
             messages.sort(key=lambda m: m[0])  # stable: the file's order among equal times
             factory = DecoderFactory()
             decoders: dict[int, tuple[str, str, Any]] = {}
-            for _, channel_id, data in messages:
+            for log_time, channel_id, data in messages:
                 if channel_id not in decoders:
                     decoders[channel_id] = _decoder(factory, channel_id, channels, schemas)
                 topic, schema_name, decode = decoders[channel_id]
-                _take(recording, topic, schema_name, decode(data))
+                _take(recording, topic, schema_name, decode(data), log_time)
     except RecordingError:
         raise
     except OSError as err:
@@ -224,11 +229,12 @@ def _decoder(factory: Any, channel_id: int, channels: Mapping[int, Any],
 _SCHEMAS = {"write": BYTES_TYPE, "read": BYTES_TYPE, "lines": TEXT_TYPE}
 
 
-def _take(recording: Recording, topic: str, schema: str, message: Any) -> None:
-    """One message of the recording, in order, of the type rdisc writes on its topic."""
+def _take(recording: Recording, topic: str, schema: str, message: Any, log_time: int = 0) -> None:
+    """One message of the recording, in order, of the type rdisc writes on its topic, recorded at `log_time`."""
     parts = topic.split("/")
     if topic == engine.RUNS_TOPIC:
         recording.runs.append(_run_of(_field(topic, schema, TEXT_TYPE, message, "data", str)))
+        recording.run_times.append(log_time)
     elif len(parts) == 4 and parts[1] == "rdisc" and parts[3] in _SCHEMAS:
         if parts[3] == "lines":
             _field(topic, schema, TEXT_TYPE, message, "data", str)
@@ -236,13 +242,17 @@ def _take(recording: Recording, topic: str, schema: str, message: Any) -> None:
         data = _field(topic, schema, BYTES_TYPE, message, "data", (bytes, list))
         connection, data = parts[2], bytes(data)
         exchanges = recording.exchanges.setdefault(connection, [])
+        times = recording.exchange_times.setdefault(connection, [])
         if parts[3] == "write":
             recording.writes.setdefault(connection, []).append(data)
             exchanges.append((data, b""))
+            times.append(log_time)
         elif exchanges and exchanges[-1][0] is not None and not exchanges[-1][1]:
             exchanges[-1] = (exchanges[-1][0], data)  # the reply to that write
+            times[-1] = log_time
         else:
             exchanges.append((None, data))  # read with nothing written: a listener's
+            times.append(log_time)
     elif topic == "/rosout":
         recording.errors.append(_field(topic, schema, LOG_TYPE, message, "msg", str))
     elif len(parts) == 2 and parts[1]:
@@ -303,15 +313,49 @@ def _flat(value: Any, prefix: str = "") -> Iterable[tuple[str, Any]]:
         yield from _flat(member, f"{prefix}.{name}" if prefix else name)
 
 
+class RecordedClock:
+    """The replay's time, in seconds: the recording's timestamps as the replay reaches them (each
+    run where it began, each exchange where it ended), and the description's delays between them,
+    never the wall clock's. A robot's clock (`Robot._clock`): what a sensor's age is measured on."""
+
+    def __init__(self) -> None:
+        self.now = 0.0
+
+    def __call__(self) -> float:
+        return self.now
+
+    def reach(self, stamp_ns: int) -> None:
+        """The recording has come to this time (it never goes back)."""
+        self.now = max(self.now, stamp_ns / 1e9)
+
+    def advance(self, seconds: float) -> None:
+        """A delay: the recording's time passes as it did."""
+        self.now += seconds
+
+    def advancing(self, wait: Callable[[float], None] | None) -> Callable[[float], None]:
+        """A robot's way to wait out a delay: `wait` for it (None: not waited for), then `advance`."""
+        if wait is None:
+            return self.advance
+
+        def waited(seconds: float) -> None:
+            wait(seconds)
+            self.advance(seconds)
+        return waited
+
+
 class ReplayPort:
     """A port that answers each write with the bytes the recording read after the same write.
 
     Bytes a description leaves unread are dropped when it next clears the input, as a real
     port's are; a read with nothing recorded for it returns nothing, as a read that times out.
+    Each recorded exchange given brings `clock` to the time it ended (`times`, in ns).
     """
 
-    def __init__(self, exchanges: Iterable[tuple[bytes | None, bytes]]) -> None:
+    def __init__(self, exchanges: Iterable[tuple[bytes | None, bytes]], times: Iterable[int] = (),
+                 clock: RecordedClock | None = None) -> None:
         self._exchanges = deque(exchanges)
+        self._times = deque(times)
+        self._clock = clock
         self._available = bytearray()
         self.timeout: float | None = 0.0
         self.dtr = self.rts = False  # the modem lines a primitive sets are recorded, nothing more
@@ -319,6 +363,7 @@ class ReplayPort:
     def write(self, data: bytes, /) -> int:
         while self._exchanges:  # a listener's bytes recorded before the write come first
             written, read = self._exchanges.popleft()
+            self._reached()
             self._available += read
             if written is not None:
                 break
@@ -350,23 +395,36 @@ class ReplayPort:
         """With nothing left to read, the bytes a listener read next, if those come next."""
         if not self._available and self._exchanges and self._exchanges[0][0] is None:
             self._available += self._exchanges.popleft()[1]
+            self._reached()
+
+    def _reached(self) -> None:
+        """The clock at the end of the exchange just given."""
+        if self._times:
+            stamp = self._times.popleft()
+            if self._clock is not None:
+                self._clock.reach(stamp)
 
 
 def replay(recording: Recording, device: engine.Device, *, realtime: bool = False) -> Recording:
     """Run the recording's runs through a device on ports that answer as the recording did,
     and give the recording of that. The reply timeout is the session's, so that a timeout's
     error reads as it did; it is never waited for, as a reply is there at once, or never. The
-    description's delays are slept only with `realtime`."""
+    description's delays are slept only with `realtime`. The robot's clock is the recording's
+    (`RecordedClock`), so its sensors are read where the recorded session read them."""
     robot = engine.Robot(device, timeout=recording.timeout or 0.05)
-    if not realtime:
-        robot._sleep = _no_sleep  # the robot's one way to wait out a delay (a simulation's takes it too)
+    clock = RecordedClock()
+    robot._clock = clock  # the schedule's and the sensors' time (a simulation's takes it too)
+    robot._sleep = clock.advancing(robot._sleep if realtime else None)  # the robot's one way to wait out a delay
     output = io.BytesIO()
     recorder = engine.Recorder(robot, output, recording.settings)
-    ports = {name: ReplayPort(recording.exchanges.get(name, ())) for name in device.connections}
+    ports = {name: ReplayPort(recording.exchanges.get(name, ()), recording.exchange_times.get(name, ()), clock)
+             for name in device.connections}
     given: dict[str, engine.Port] = dict(ports)
     robot.open(given, threads=False, settings=_settings(recording.settings))
     try:
-        for run in recording.runs:
+        for at, run in enumerate(recording.runs):
+            if at < len(recording.run_times):
+                clock.reach(recording.run_times[at])
             try:
                 _run(robot, recorder, run)
             except engine.RdisError as err:
@@ -375,10 +433,6 @@ def replay(recording: Recording, device: engine.Device, *, realtime: bool = Fals
         robot.close()
         recorder.finish()
     return read_recording(io.BytesIO(output.getvalue()))
-
-
-def _no_sleep(seconds: float) -> None:
-    """A delay not waited for."""
 
 
 def _settings(values: Mapping[str, Any]) -> dict[str, Any]:

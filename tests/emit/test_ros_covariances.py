@@ -49,7 +49,7 @@ output imu: Turning {
 
 def _node(kind: str, tmp_path: Path) -> ModuleType:
     source = tmp_path / "wheels.rdis"
-    source.write_text(ODOMETRY + IMU * (kind == "ros1"), encoding="utf-8")  # no Imu in rdisc's ROS 2 messages
+    source.write_text(ODOMETRY + IMU, encoding="utf-8")
     compilation = compile_path(str(source))
     assert compilation.model is not None and not compilation.diagnostics.has_errors()
     model = compilation.model
@@ -92,7 +92,7 @@ def test_an_odometry_carries_its_fields_variances(kind: str, tmp_path: Path) -> 
     assert msg.twist.covariance == _diagonal(6, d5=0.0625)  # the turn rate: angular z
 
 
-@pytest.mark.parametrize("kind", ["ros1"])  # rdisc has no ROS 2 definition of sensor_msgs/Imu (yet)
+@pytest.mark.parametrize("kind", ["ros1", "ros2"])
 def test_an_imu_carries_its_fields_variances(kind: str, tmp_path: Path) -> None:
     node = _node(kind, tmp_path)
     msg = SimpleNamespace(orientation=_quaternion(), angular_velocity=_vector(), linear_acceleration=_vector(),

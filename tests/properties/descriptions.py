@@ -401,6 +401,19 @@ class Elements(Expr):
         return [i.value(env) for i in self.items]
 
 
+def names_read(e: Expr) -> list[str]:
+    """The names `e` reads, in the order the model's `variables` gives them (operands left to right)."""
+    if isinstance(e, Name):
+        return [e.name]
+    found: list[str] = []
+    for f in dataclasses.fields(e):
+        value = getattr(e, f.name)
+        for item in value if isinstance(value, tuple) else (value,):
+            if isinstance(item, Expr):
+                found += names_read(item)
+    return found
+
+
 def constant_value(e: Expr) -> Any:
     """The value the checker folds `e` to; Unknown if it would refuse to (a diagnostic)."""
     try:
@@ -1454,9 +1467,11 @@ class Interface:
     periodic: bool = False
     triggers: str | None = None
     adhoc_word: bool = False  # `adhoc` written out (the default)
+    rate: int | None = None  # `periodic N Hz`: its own thread's rate, under `threading multiple`
 
     def text(self) -> str:
         kind = " periodic" if self.periodic else (" adhoc" if self.adhoc_word else "")
+        kind += f" {self.rate} Hz" if self.rate is not None else ""
         triggers = f" triggers {self.triggers}" if self.triggers else ""
         body = "\n".join(f"    {c.text()}" for c in self.calls)
         params = ", ".join(p.text() for p in self.params)
@@ -1464,6 +1479,10 @@ class Interface:
 
     def run_order(self) -> tuple[CallStmt, ...]:
         return tuple(sorted(self.calls, key=lambda c: c.priority))
+
+    def read_names(self) -> list[str]:
+        """The names its calls' arguments read, in the order it runs them."""
+        return [n for c in self.run_order() for a in c.args for n in names_read(a)]
 
     @property
     def connection(self) -> str | None:
@@ -1487,9 +1506,10 @@ class Connection:
     startup: Hook | None = None
     terminate: Hook | None = None
     keepalive: Hook | None = None
+    threading: str = "single"  # single | dual | multiple
 
     def text(self) -> str:
-        lines = ["baud 9600", "threading single at 50 Hz"]
+        lines = ["baud 9600", f"threading {self.threading} at 50 Hz"]
         if self.terminator is not None:
             lines.append(f"terminator {string_literal(self.terminator)}")
         if self.startup is not None:
@@ -1504,15 +1524,96 @@ class Connection:
         return (self.terminator or "\n").encode("latin-1")
 
 
+def matrix_text(rows: Sequence[Sequence[float]]) -> str:
+    """A number or a matrix as RDIS writes them: `0.5`, `[1, 0.05; 0, 1]`."""
+    if len(rows) == 1 and len(rows[0]) == 1:
+        return number_text(rows[0][0]).strip("()")
+    return "[" + "; ".join(", ".join(repr(x) for x in row) for row in rows) + "]"
+
+
+Matrix = tuple[tuple[float, ...], ...]
+
+
+@dataclass(frozen=True)
+class Kalman:
+    """`filter FIELD kalman { ... }`: a linear filter of n states over a float field (one value)."""
+
+    field: str
+    state: tuple[float, ...]
+    transition: Matrix
+    process: Matrix
+    measurement: Matrix
+    noise: float
+    covariance: Matrix | None = None
+
+    def text(self) -> str:
+        items = [f"state {matrix_text((self.state,))}"]
+        if self.covariance is not None:
+            items.append(f"covariance {matrix_text(self.covariance)}")
+        items += [f"transition {matrix_text(self.transition)}", f"process {matrix_text(self.process)}",
+                  f"measurement {matrix_text(self.measurement)}", f"noise {matrix_text(((self.noise,),))}"]
+        return f"filter {self.field} kalman {{ {'  '.join(items)} }}"
+
+
 @dataclass(frozen=True)
 class Output:
     name: str
     adapter: str
     fields: tuple[tuple[str, Expr], ...]
+    noise: tuple[tuple[str, float], ...] = ()  # `noise FIELD DEVIATION` (thesis §7.2.3)
+    filters: tuple[Kalman, ...] = ()
 
     def text(self) -> str:
-        body = "  ".join(f"{n} = {v.text()}" for n, v in self.fields)
-        return f"output {self.name}: {self.adapter} {{ {body} }}"
+        items = [f"{n} = {v.text()}" for n, v in self.fields]
+        items += [f"noise {n} {matrix_text(((d,),))}" for n, d in self.noise]
+        items += [k.text() for k in self.filters]
+        return f"output {self.name}: {self.adapter} {{ {'  '.join(items)} }}"
+
+    def read_names(self) -> list[str]:
+        """The names its fields read, in order."""
+        return [n for _, e in self.fields for n in names_read(e)]
+
+
+@dataclass(frozen=True)
+class Actuated:
+    """A joint of the body driven by an actuator (thesis §7.2.6): a servo's position or a wheel's
+    velocity, commanded through a primitive of its own (`pN(a0: int in LOW..HIGH)`, 100 counts a unit)."""
+
+    index: int
+    kind: str  # servo | wheel
+    primitive: Primitive
+    items: tuple[tuple[str, float], ...]  # velocity, acceleration, effort
+
+    def text(self) -> str:
+        i, servo = self.index, self.kind == "servo"
+        joint = (f"joint j{i}: revolute base -> l{i} {{ axis [0, 0, 1]  limit -1..1  velocity 2  effort 1 }}" if servo
+                 else f"joint j{i}: continuous base -> l{i} {{ axis [0, 1, 0]  velocity 10  effort 1 }}")
+        quantity, offset = ("position", 500) if servo else ("velocity", 0)
+        items = "  ".join(f"{name} {number_text(value)}" for name, value in self.items)
+        return "\n".join([
+            f"link l{i} {{ mass 0.1  inertia [0.001, 0.001, 0.001] }}", joint,
+            f"actuator m{i}: {self.kind} {{ {items} }}",
+            f"transmission t{i}: j{i} actuator m{i} {{",
+            f"    command {quantity} to {self.primitive.name}.a0 {{",
+            f"        raw = round({quantity} * 100) + {offset}",
+            f"        {quantity} = (raw - {offset}) / 100.0",
+            "    }",
+            "}"])
+
+
+@dataclass(frozen=True)
+class Sensor:
+    """`sensor NAME: TYPE from PRIMITIVE() cache N ms [noise D]` (thesis §7.2.4): the primitive's one value."""
+
+    name: str
+    type: str
+    primitive: Primitive
+    cache_ms: int
+    noise: float | None = None
+
+    def text(self) -> str:
+        noise = f" noise {matrix_text(((self.noise,),))}" if self.noise is not None else ""
+        return f"sensor {self.name}: {self.type} from {self.primitive.name}() cache {self.cache_ms} ms{noise}"
 
 
 @dataclass(frozen=True)
@@ -1524,6 +1625,9 @@ class Input:
 
     def text(self) -> str:
         return f"input {self.name}: {self.adapter} -> {self.interface.name}({', '.join(a.text() for a in self.args)})"
+
+    def read_names(self) -> list[str]:
+        return [n for a in self.args for n in names_read(a)]
 
 
 @dataclass(frozen=True)
@@ -1538,6 +1642,9 @@ class Description:
     interfaces: tuple[Interface, ...]
     outputs: tuple[Output, ...]
     inputs: tuple[Input, ...]
+    sensors: tuple[Sensor, ...] = ()
+    state_noise: tuple[tuple[str, float, str], ...] = ()  # a state variable's noise: its deviation, its unit
+    actuated: tuple[Actuated, ...] = ()  # the body: a base link, and a joint driven by an actuator each
     text: str = field(default="", compare=False)
 
     def _repr_pretty_(self, printer: Any, cycle: bool) -> None:  # how hypothesis shows a failing example
@@ -1552,18 +1659,26 @@ class Description:
         members = [c for c in self.constants if "." in c.name]
         if members:
             lines.append("enum E0 { " + ", ".join(f"{m.name.split('.')[1]} = {m.v}" for m in members) + " }")
+        noise = {name: (deviation, unit) for name, deviation, unit in self.state_noise}
         for name, type_, initial in self.states:
-            lines.append(f"state {name}: {type_} = {Lit(type_, initial).text()}")
+            said = ""
+            if name in noise:
+                deviation, unit = noise[name]
+                said = f" noise {matrix_text(((deviation,),))}" + (f" {string_literal(unit)}" if unit else "")
+            lines.append(f"state {name}: {type_} = {Lit(type_, initial).text()}{said}")
         if any(frame.when for frame in self.frames):
             lines.append(f"setting {MODE[0]}: int in 0..3 = {MODE[1]}")
         if any(isinstance(e, Looked) for p in self.primitives if p.reply is not None for _, e in p.reply.actions):
             lines.append("const LOOK = { " + ", ".join(f"{key}: {value}" for key, value in LOOK.items()) + " }")
         if any(" seed SEEDS[" in frame.text() for frame in self.frames):
             lines.append("const SEEDS = { " + ", ".join(f"{key}: {byte}" for key, byte in SEEDS.items()) + " }")
-        sections = [self.frames, self.connections, self.primitives, self.interfaces, self.outputs, self.inputs]
+        sections = [self.frames, self.connections, self.primitives, self.sensors, self.interfaces, self.outputs,
+                    self.inputs]
         for section in sections:
             lines.append("")
             lines += [element.text() for element in section]  # type: ignore[attr-defined]
+        if self.actuated:
+            lines += ["", "link base { }"] + [a.text() for a in self.actuated]
         return "\n".join(lines) + "\n"
 
     @property
@@ -1582,6 +1697,24 @@ class Description:
     def connection(self, name: str) -> Connection:
         return next(c for c in self.connections if c.name == name)
 
+    def output(self, name: str) -> Output:
+        return next(o for o in self.outputs if o.name == name)
+
+    def sensor(self, name: str) -> Sensor:
+        return next(s for s in self.sensors if s.name == name)
+
+    def sensors_read(self, names: Sequence[str]) -> list[Sensor]:
+        """The sensors among `names`, each once, in order: those a reader makes fresh before it runs."""
+        known = {s.name: s for s in self.sensors}
+        return [known[n] for n in dict.fromkeys(names) if n in known]
+
+    def runs(self, iface: Interface) -> list[Sensor | CallStmt]:
+        """What running an interface may exchange, in order: its sensors (each read only when stale),
+        its calls, then each sensor the output it triggers reads."""
+        outputs = [self.output(iface.triggers)] if iface.triggers else []
+        return [*self.sensors_read(iface.read_names()), *iface.run_order(),
+                *(s for o in outputs for s in self.sensors_read(o.read_names()))]
+
     def periodic(self) -> list[Interface]:
         """Periodic interfaces in the order a tick runs them: by connection, then as declared."""
         first = self.connections[0].name
@@ -1590,10 +1723,25 @@ class Description:
 
 
 def constructs(description: Description) -> set[str]:
-    """The rarer constructs a description's primitives exercise: layouts a setting chooses (`either
-    when`, each side), a framed reply's byte looked up in a table (a miss: a protocol error), that
-    under `skip unmatched`. The search reports how many descriptions had each."""
-    return {construct for p in description.primitives for construct in primitive_constructs(p)}
+    """The rarer constructs a description exercises: layouts a setting chooses (`either when`, each
+    side), a framed reply's byte looked up in a table (a miss: a protocol error), that under `skip
+    unmatched`; and chapter 7's: sensors, threading models, noise, Kalman filters. The search reports
+    how many descriptions had each."""
+    found = {construct for p in description.primitives for construct in primitive_constructs(p)}
+    if description.sensors:
+        found.add("sensor")
+    if any(c.threading != "single" for c in description.connections):
+        found.add("threading dual or multiple")
+    if any(i.rate is not None for i in description.interfaces):
+        found.add("an interface's own rate")
+    if description.state_noise or any(o.noise for o in description.outputs) or any(
+            s.noise is not None for s in description.sensors):
+        found.add("noise")
+    if any(o.filters for o in description.outputs):
+        found.add("kalman filter")
+    if description.actuated:
+        found.add("actuator")
+    return found
 
 
 def primitive_constructs(p: Primitive) -> set[str]:
@@ -1957,6 +2105,59 @@ def _hook(draw: Draw, interfaces_: Sequence[Interface], scope: Scope) -> Hook | 
     return Hook(iface, tuple(args))
 
 
+def _senses(p: Primitive) -> bool:
+    """Whether a sensor can read `p`: no parameters, and a reply of one value of a fixed size read as it is."""
+    if p.params or p.reply is None or p.key is not None or p.tag is not None or p.each_args:
+        return False
+    decoding = p.reply.decoding
+    return decoding.kind == "unpack" and decoding.size is not None and len(decoding.types) == 1 \
+        and decoding.types[0] != BYTES
+
+
+def _sensor_primitive(draw: Draw, name: str, connections: tuple[str, ...]) -> Primitive:
+    """A primitive made to be a sensor's: an opcode, and one value back."""
+    slot = draw_slot(draw, order="<")
+    template = "<" + slot.code
+    decoding = Decoding("unpack", template, (slot.type,), struct.calcsize(_struct_module(template)))
+    return Primitive(name, (), draw(st.sampled_from(connections)), "pack", "B", (Lit(INT, draw(st.integers(0x40, 0x4F))),),
+                     Reply(decoding), timeout_ms=draw(st.sampled_from([None, 20])))
+
+
+def _output(draw: Draw, name: str, adapter: str, scope: Scope) -> Output:
+    """An output of `adapter`, sometimes with noise on its float fields and a Kalman filter over one (§7.2.3)."""
+    fields = tuple((f, expression(draw, t, scope, 2)) for f, t in ADAPTERS[adapter])
+    floats = [f for f, t in ADAPTERS[adapter] if t == FLOAT]
+    noise = tuple((f, draw(st.sampled_from([0.01, 0.5, 2.0]))) for f in floats if sometimes(draw, 4))
+    filters = tuple(_kalman(draw, f) for f in floats if sometimes(draw, 3))
+    return Output(name, adapter, fields, noise, filters)
+
+
+def _kalman(draw: Draw, field_: str) -> Kalman:
+    """A filter of one or two states (a constant, or a constant velocity), its covariances diagonal."""
+    small = st.sampled_from([1e-6, 1e-4, 0.01, 0.5, 1.0])
+    if draw(st.booleans()):
+        return Kalman(field_, (draw(st.sampled_from([0.0, 1.0, -2.5])),), ((draw(st.sampled_from([1.0, 0.9])),),),
+                      ((draw(small),),), ((1.0,),), draw(small),
+                      ((draw(small),),) if draw(st.booleans()) else None)
+    step = draw(st.sampled_from([0.05, 0.1, 1.0]))
+    return Kalman(field_, (0.0, draw(st.sampled_from([0.0, 1.0]))), ((1.0, step), (0.0, 1.0)),
+                  ((draw(small), 0.0), (0.0, draw(small))), ((1.0, 0.0),), draw(small),
+                  ((1.0, 0.5), (0.5, 1.0)) if draw(st.booleans()) else None)
+
+
+def _own_rate(draw: Draw, iface: Interface, threading: Mapping[str, str], connections: tuple[str, ...]) -> Interface:
+    """A periodic interface on a `threading multiple` connection, sometimes at a rate of its own."""
+    if iface.periodic and threading[iface.connection or connections[0]] == "multiple" and not sometimes(draw, 3):
+        return dataclasses.replace(iface, rate=draw(st.sampled_from([2, 20, 100])))
+    return iface
+
+
+def _reads_sensors(iface: Interface, sensors: Sequence[Sensor], outputs: Sequence[Output]) -> bool:
+    names = {s.name for s in sensors}
+    read = iface.read_names() + [n for o in outputs if o.name == iface.triggers for n in o.read_names()]
+    return any(n in names for n in read)
+
+
 @st.composite
 def descriptions(draw: Draw) -> Description:
     """A random description that compiles without errors."""
@@ -1977,19 +2178,47 @@ def descriptions(draw: Draw) -> Description:
     frames_ = tuple(draw(frames(f"f{i}")) for i in range(draw(st.integers(0, 3))))
     prims = tuple(draw(primitives(f"p{i}", state_types, scope, frames_, connection_names))
                   for i in range(draw(st.integers(1, 5))))
+    sensors: list[Sensor] = []
+    if sometimes(draw, 2):  # sensors (thesis §7.2.4), read by outputs, interfaces and inputs, never by hooks
+        for i in range(draw(st.integers(1, 2))):
+            fitting_ = [p for p in prims if _senses(p)]
+            if not fitting_ or sometimes(draw, 3):
+                prims += (_sensor_primitive(draw, f"p{len(prims)}", connection_names),)
+                fitting_ = [prims[-1]]
+            prim = draw(st.sampled_from(fitting_))
+            assert prim.reply is not None
+            type_ = prim.reply.decoding.types[0]
+            noise = draw(st.sampled_from([0.5, 0.01, 2])) if type_ in NUMBERS and sometimes(draw, 3) else None
+            sensors.append(Sensor(f"r{i}", type_, prim, draw(st.sampled_from([10, 50, 100])), noise))
+    reading = scope + tuple(Name(s.type, s.name) for s in sensors)
+    actuated: list[Actuated] = []
+    for i in range(draw(st.integers(1, 2)) if sometimes(draw, 4) else 0):  # actuators, each a joint's
+        kind = draw(st.sampled_from(["servo", "wheel"]))
+        low, high, code = (0, 1000, "<H") if kind == "servo" else (-1000, 1000, "<h")
+        prim = Primitive(f"p{len(prims)}", (Param("a0", INT, low, high),), draw(st.sampled_from(connection_names)),
+                         "pack", code, (Name(INT, "a0"),))
+        prims += (prim,)
+        items = [("velocity", draw(st.sampled_from([0.5, 4.8, 12.0])))]
+        items += [("acceleration", draw(st.sampled_from([2.0, 30.0])))] if draw(st.booleans()) else []
+        items += [("effort", draw(st.sampled_from([0.5, 4.1])))] if draw(st.booleans()) else []
+        actuated.append(Actuated(i, kind, prim, tuple(items)))
+    state_noise = tuple((name, draw(st.sampled_from([0.5, 3, 0.01])), draw(st.sampled_from(["", "", "mm"])))
+                        for name, type_, _ in states if type_ in NUMBERS and sometimes(draw, 4))
+    threading = {name: draw(st.sampled_from(["single", "dual", "multiple"])) for name in connection_names}
     output_specs = []
     output_names = tuple(f"o{i}" for i in range(draw(st.integers(0, 2))))
     for name in output_names:
         adapter = draw(st.sampled_from(sorted(ADAPTERS)))
-        output_specs.append(Output(name, adapter, tuple((f, expression(draw, t, scope, 2)) for f, t in ADAPTERS[adapter])))
-    ifaces = tuple(draw(interfaces(f"i{i}", state_types, scope, prims, output_names, len(connection_names)))
+        output_specs.append(_output(draw, name, adapter, reading))
+    ifaces = tuple(_own_rate(draw, draw(interfaces(f"i{i}", state_types, reading, prims, output_names,
+                                                   len(connection_names))), threading, connection_names)
                    for i in range(draw(st.integers(0, 4))))
     inputs = []
     usable = [i for i in ifaces if not any(p.type == BYTES for p in i.params)]
     for n in range(draw(st.integers(0, 2)) if usable else 0):
         iface = draw(st.sampled_from(usable))
         adapter = draw(st.sampled_from(sorted(ADAPTERS)))
-        local = _shadowed(scope, dict(ADAPTERS[adapter]))
+        local = _shadowed(reading, dict(ADAPTERS[adapter]))
         args = []
         for p in iface.params:
             value = expression(draw, p.type, local, 2)
@@ -2001,9 +2230,11 @@ def descriptions(draw: Draw) -> Description:
     for name in connection_names:
         terminator = draw(st.sampled_from([None, None, "\r", "\r\n", ";"]))
         keepalive = _hook(draw, [i for i in ifaces if not i.params], scope) if sometimes(draw, 5) else None
-        connections.append(Connection(name, terminator, _hook(draw, ifaces, scope), _hook(draw, ifaces, scope), keepalive))
+        quiet = [i for i in ifaces if not _reads_sensors(i, sensors, output_specs)]  # none read before connect returns
+        connections.append(Connection(name, terminator, _hook(draw, quiet, scope), _hook(draw, ifaces, scope), keepalive,
+                                      threading[name]))
     description = Description(tuple(states), tuple(constants), frames_, tuple(connections), prims, ifaces,
-                              tuple(output_specs), tuple(inputs))
+                              tuple(output_specs), tuple(inputs), tuple(sensors), state_noise, tuple(actuated))
     return dataclasses.replace(description, text=description.render())
 
 
@@ -2130,7 +2361,7 @@ def reply_for(description: Description, prim: Primitive, values: Mapping[str, An
 class Operation:
     """One thing the host does, and how the device answers each exchange it is expected to make."""
 
-    kind: str  # primitive | interface | input | tick
+    kind: str  # primitive | interface | input | tick | sensor (robot.sensors.NAME) | wait (the clock moves on)
     name: str = ""
     args: tuple[Any, ...] = ()  # positional; for an input, (field, value) pairs
     plans: tuple[ReplyPlan, ...] = ()
@@ -2138,6 +2369,10 @@ class Operation:
     def label(self) -> str:
         if self.kind == "tick":
             return "tick()"
+        if self.kind == "wait":
+            return f"wait({self.args[0]} ms)"
+        if self.kind == "sensor":
+            return f"sensors.{self.name}"
         if self.kind == "input":
             return f"call_input({self.name!r}, {', '.join(f'{k}={v!r}' for k, v in self.args)})"
         return f"call_{self.kind}({', '.join(map(repr, (self.name, *self.args)))})"
@@ -2202,14 +2437,18 @@ def value_for(draw: Draw, type_: str, low: float | None = None, high: float | No
 
 
 def exchanges_of(description: Description, kind: str, name: str) -> int:
-    """How many exchanges an operation makes at most, each needing a reply plan."""
-    if kind == "primitive":
+    """How many exchanges an operation makes at most, each needing a reply plan (a sensor's read
+    counted once for each reader that may make it)."""
+    if kind in ("primitive", "sensor"):
         return 1
+    if kind == "wait":
+        return 0
     if kind == "interface":
-        return len(description.interface(name).calls)
+        return len(description.runs(description.interface(name)))
     if kind == "input":
-        return len(description.input(name).interface.calls)
-    return sum(len(i.calls) for i in description.periodic())
+        spec = description.input(name)
+        return len(description.sensors_read(spec.read_names())) + len(description.runs(spec.interface))
+    return sum(len(description.runs(i)) for i in description.periodic())
 
 
 def _plans(count: int) -> st.SearchStrategy[tuple[ReplyPlan, ...]]:
@@ -2221,9 +2460,15 @@ def operations(draw: Draw, description: Description) -> Operation:
     kinds = ["primitive", "primitive", "tick"]
     kinds += ["interface", "interface"] if description.interfaces else []
     kinds += ["input"] if description.inputs else []
+    kinds += ["sensor", "wait", "wait"] if description.sensors else []
     kind = draw(st.sampled_from(kinds))
     if kind == "tick":
         return Operation("tick", plans=draw(_plans(exchanges_of(description, "tick", ""))))
+    if kind == "wait":  # the wire's clock moves on: a sensor's value grows old
+        return Operation("wait", args=(draw(st.sampled_from([5, 10, 50, 100, 150])),))
+    if kind == "sensor":
+        sensor = draw(st.sampled_from(description.sensors))
+        return Operation("sensor", sensor.name, plans=draw(_plans(1)))
     if kind == "input":
         spec = draw(st.sampled_from(description.inputs))
         fields = tuple((f, draw(value_for(t))) for f, t in ADAPTERS[spec.adapter])

@@ -15,8 +15,9 @@ Each run is also held against rules of the contract that both could break alike,
 which a comparison alone would miss: every byte the port gave is shown to on_io;
 a call answered with a reply the device model knows to be valid decodes it; calls
 raise only the contract's error types; a value outside its range is refused; an
-interface that completes delivers its output. Time is the wire's (`Clock`), so
-no deadline depends on how fast the machine runs the test.
+interface that completes delivers its output; the terminate hooks run while the robot
+closes (a sensor they read too). Time is the wire's (`Clock`), so no deadline and no
+sensor's age depends on how fast the machine runs the test; a `wait` moves it on.
 """
 
 from __future__ import annotations
@@ -36,12 +37,14 @@ from types import ModuleType
 from typing import Any
 
 from descriptions import (
+    CallStmt,
     Description,
     Interface,
     Operation,
     Primitive,
     ReplyPlan,
     Script,
+    Sensor,
     Unknown,
     reply_for,
 )
@@ -64,6 +67,7 @@ class Exchange:
     primitive: Primitive
     values: Callable[[dict[str, Any]], dict[str, Any]]
     plan: ReplyPlan
+    sensor: Sensor | None = None  # a sensor's read: made only when its value is older than its cache time
 
 
 class Clock:
@@ -98,6 +102,10 @@ class PlannedDevice:
         self.answers: list[bool] = []  # per exchange answered: whether its reply was valid
         self.failures = 0  # times the port raised
         self.state: Callable[[], dict[str, Any]] = lambda: {n: v for n, _, v in description.states}
+        # A sensor's age as the robot tells it (`robot.sensor_age`): which of the reads an operation may
+        # make it makes. A read in flight has no age yet or one past the cache time (the clock stands
+        # still but while a read waits), so a sensor younger than its cache time is one not read now.
+        self.age: Callable[[str], float | None] = lambda name: None
 
     def expect(self, exchanges: Iterable[Exchange]) -> None:
         """The exchanges of the next operation, in the order they are expected."""
@@ -106,6 +114,7 @@ class PlannedDevice:
     def answer(self, request: bytes, listening: bool = False) -> bytes:
         """The next exchange's reply, made now; a listener's is not checked for validity, since bytes
         the robot put back after an earlier reply come before it."""
+        self._pass_fresh()
         if not self.queue:
             return b""
         exchange = self.queue.popleft()
@@ -121,8 +130,18 @@ class PlannedDevice:
         self.answers.append(wire.valid and not listening)
         return wire.data
 
+    def _pass_fresh(self) -> None:
+        """Drop the reads of sensors still fresh: the robot makes none of them."""
+        while self.queue and self.queue[0].sensor is not None:
+            sensor = self.queue[0].sensor
+            age = self.age(sensor.name)
+            if age is None or age >= sensor.cache_ms / 1000.0:
+                return
+            self.queue.popleft()
+
     def listen(self) -> bytes:
         """A listener's reply, when the robot reads with nothing waiting."""
+        self._pass_fresh()
         if self.queue and self.queue[0].primitive.listens:
             return self.answer(b"", listening=True)
         return b""
@@ -141,15 +160,24 @@ def _evaluate(args: tuple[Any, ...], names: Iterable[str], env: dict[str, Any]) 
     return values
 
 
-def _calls(iface: Interface, arguments: Callable[[dict[str, Any]], dict[str, Any]],
+def _sensed(sensor: Sensor, plan: ReplyPlan) -> Exchange:
+    return Exchange(sensor.primitive, lambda live: live, plan, sensor)
+
+
+def _calls(description: Description, iface: Interface, arguments: Callable[[dict[str, Any]], dict[str, Any]],
            plans: Iterable[ReplyPlan]) -> list[Exchange]:
-    """The exchanges of an interface's calls, in the order it makes them."""
+    """The exchanges of an interface, in the order it makes them: its sensors' reads, its calls, the
+    reads of the sensors its output reads."""
     out = []
-    for call, plan in zip(iface.run_order(), plans):
-        def values(state: dict[str, Any], call: Any = call) -> dict[str, Any]:
+    for run, plan in zip(description.runs(iface), plans):
+        if not isinstance(run, CallStmt):
+            out.append(_sensed(run, plan))
+            continue
+
+        def values(state: dict[str, Any], call: CallStmt = run) -> dict[str, Any]:
             env = {**state, **arguments(state)}
             return _evaluate(call.args, [p.name for p in call.primitive.params], env)
-        out.append(Exchange(call.primitive, values, plan))
+        out.append(Exchange(run.primitive, values, plan))
     return out
 
 
@@ -164,15 +192,23 @@ def exchanges(description: Description, op: Operation, state: dict[str, Any]) ->
         iface = description.interface(op.name)
         given = {p.name: (float(v) if p.type == "float" and isinstance(v, int) else v)
                  for p, v in zip(iface.params, op.args)}
-        return _calls(iface, lambda live: given, plans)
+        return _calls(description, iface, lambda live: given, plans)
     if op.kind == "input":
         spec = description.input(op.name)
-        fixed = _evaluate(spec.args, [p.name for p in spec.interface.params], {**state, **dict(op.args)})
-        given = {p.name: fixed[p.name] for p in spec.interface.params if p.name in fixed}
-        return _calls(spec.interface, lambda live: given, plans)
+        read = [_sensed(sensor, plan) for sensor, plan in zip(description.sensors_read(spec.read_names()), plans)]
+
+        def given_by(live: dict[str, Any]) -> dict[str, Any]:  # its arguments read the sensors just read
+            fixed = _evaluate(spec.args, [p.name for p in spec.interface.params], {**live, **dict(op.args)})
+            return {p.name: fixed[p.name] for p in spec.interface.params if p.name in fixed}
+        if not read:  # its arguments as they are when it is called
+            fixed_now = given_by(state)
+            return _calls(description, spec.interface, lambda live: fixed_now, plans)
+        return read + _calls(description, spec.interface, given_by, plans)
+    if op.kind == "sensor":
+        return [_sensed(description.sensor(op.name), plan) for plan in plans]
     out: list[Exchange] = []
     for iface in description.periodic():
-        out += _calls(iface, lambda live: {}, plans)
+        out += _calls(description, iface, lambda live: {}, plans)
     return out
 
 
@@ -185,7 +221,7 @@ def hook_exchanges(description: Description, hook: str, plans: Iterable[ReplyPla
         h = getattr(connection, hook)
         if h is not None:
             given = _evaluate(h.args, [p.name for p in h.interface.params], state)
-            out += _calls(h.interface, lambda live, given=given: given, plans)
+            out += _calls(description, h.interface, lambda live, given=given: given, plans)
     return out
 
 
@@ -209,8 +245,9 @@ def normal(value: Any) -> Any:
 
 
 def snapshot(robot: Any) -> Any:
-    """The robot's state, by name (the contract fixes no order)."""
-    return normal(dict(sorted(dict(robot.state).items())))
+    """The robot's state, by name (the contract fixes no order), and each sensor's age (a sensor is state too)."""
+    ages = {name: robot.sensor_age(name) for name in sorted(robot.device.sensors)}
+    return normal(dict(sorted(dict(robot.state).items()))), normal(ages)
 
 
 def error_key(err: BaseException) -> tuple[str, str]:
@@ -249,8 +286,13 @@ def _triggered(description: Description, op: Operation) -> str:
     return ""
 
 
-def _perform(robot: Any, op: Operation) -> None:
-    if op.kind == "tick":
+def _perform(robot: Any, op: Operation, clock: Clock) -> Any:
+    """Do what the operation says; a sensor's value is returned."""
+    if op.kind == "wait":
+        clock.now += op.args[0] / 1000.0
+    elif op.kind == "sensor":
+        return getattr(robot.sensors, op.name)
+    elif op.kind == "tick":
         robot.tick()
     elif op.kind == "input":
         robot.call_input(op.name, **dict(op.args))
@@ -269,6 +311,7 @@ REPLY_RULE = "a valid reply is decoded"
 RANGE_RULE = "a value outside its parameter's range is refused"
 OUTPUT_RULE = "an interface that completes delivers the output it triggers"
 LOAD_RULE = "a checked description loads"
+TERMINATE_RULE = "a terminate hook runs while the robot closes"
 CALL_ERRORS = ("RdisTimeout", "RdisProtocolError", "RdisValueError", "RdisDeviceError", "TypeError", "KeyError")
 
 
@@ -334,14 +377,15 @@ def _run(result: Run, connect: Connect, description: Description, script: Script
         result.error(("connect",), err)
     else:
         device.state = lambda: dict(robot.state)
+        device.age = robot.sensor_age
         log.append(("connected", snapshot(robot)))
         for op in script.operations:
             device.expect(exchanges(description, op, dict(robot.state)))
             answered, failures, start = len(device.answers), device.failures, len(log)
             refused = _refusing(description, op)
             try:
-                _perform(robot, op)
-                log.append((op.label(), "ok", snapshot(robot)))
+                value = _perform(robot, op, clock)
+                log.append((op.label(), "ok", normal(value), snapshot(robot)))
                 if refused:
                     result.broke(RANGE_RULE, op.label(), f"{refused} accepted it")
                 triggers = _triggered(description, op)
@@ -358,11 +402,16 @@ def _run(result: Run, connect: Connect, description: Description, script: Script
                         and device.answers[answered:] == [True]:
                     result.broke(REPLY_RULE, op.label(), f"it raised {kind}: {err}")
         device.expect(hook_exchanges(description, "terminate", script.terminate, dict(robot.state)))
+        closing, failures = len(log), device.failures
         robot.close()
         log.append(("closed", snapshot(robot)))
+        refused = [result.messages[i] for i in range(closing, len(log)) if i in result.messages
+                   and result.messages[i] == f"RdisConnectionError: {robot.name}: closed"]
+        if refused and device.failures == failures:
+            result.broke(TERMINATE_RULE, "close", f"it reported {refused[0]}")
         if script.after_close is not None:
             try:
-                _perform(robot, script.after_close)
+                _perform(robot, script.after_close, clock)
                 log.append((script.after_close.label(), "ok"))
             except Exception as err:  # noqa: BLE001 - compared
                 result.error((script.after_close.label(),), err)

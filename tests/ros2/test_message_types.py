@@ -22,13 +22,14 @@ from rosbags.typesys.store import Nodetype
 
 STORES = {"humble": typesys.Stores.ROS2_HUMBLE, "jazzy": typesys.Stores.ROS2_JAZZY}
 
-# Every standard adapter, as an output (and one as an input): the node speaks each one's message.
+# Every standard adapter, as an output (and one as an input): the node speaks each one's message; and an
+# Imu, which no standard adapter is, for the covariances a description's own adapter may carry.
 EVERY_ADAPTER = """\
 robot every_adapter { author "tests" }
 state v: float = 0.5
 connection c: serial { baud 9600 }
 primitive poll() on c pack "B" (1)
-interface tick() periodic triggers twist, range, contact, battery, odometry, pose, joint, joints, temperature {
+interface tick() periodic triggers twist, range, contact, battery, odometry, pose, joint, joints, temperature, imu {
     poll()
 }
 interface go(a: float, b: float) { poll() }
@@ -41,6 +42,8 @@ output pose: Pose2D { x = v  y = v  theta = v }
 output joint: JointPosition { name = "j"  position = v }
 output joints: JointState { name = ["a"]  position = [v] }
 output temperature: Temperature { temperature = v  variance = v }
+adapter Turning ros "sensor_msgs/Imu" { rate: float unit "rad/s" ros "angular_velocity.z" }
+output imu: Turning { rate = v }
 input drive: DifferentialSpeed -> go(linear, angular)
 """
 

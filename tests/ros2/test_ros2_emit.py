@@ -83,6 +83,7 @@ def test_a_message_without_a_ros_2_definition_is_refused(tmp_path: Path) -> None
         "builtin_interfaces/Time, geometry_msgs/Point, geometry_msgs/Pose, geometry_msgs/Pose2D, "
         "geometry_msgs/PoseWithCovariance, geometry_msgs/Quaternion, geometry_msgs/Twist, "
         "geometry_msgs/TwistWithCovariance, geometry_msgs/Vector3, nav_msgs/Odometry, sensor_msgs/BatteryState, "
-        "sensor_msgs/JointState, sensor_msgs/Range, sensor_msgs/Temperature, std_msgs/Bool, std_msgs/Header, "
+        "sensor_msgs/Imu, sensor_msgs/JointState, sensor_msgs/Range, sensor_msgs/Temperature, std_msgs/Bool, "
+        "std_msgs/Header, "
         "std_msgs/String); adapter Far, field far: sensor_msgs/Range has no member `ranges` (`ranges[0]`)")
     assert not (tmp_path / "odd_node.py").exists()

@@ -21,7 +21,9 @@ from runtime_support import DATA, EXAMPLES
 from websockets.sync.client import connect
 
 CREATE2 = EXAMPLES / "create2.rdis"
-# The bumpers polled every tick: a sensor (examples/create.rdis) reads by the clock, which a replay does not follow.
+# The bumpers polled every tick: a sensor (examples/create.rdis) reads by the clock; a replay follows the recorded
+# timestamps (tests/runtime/test_replay_sensors.py), but its 40 Hz ticks come exactly at its 100 ms cache time,
+# where microseconds between a run's stamp and the live decision could decide a read the other way.
 CREATE = DATA / "polled" / "create.rdis"
 pytestmark = pytest.mark.long  # started before the other files (tests/conftest.py)
 

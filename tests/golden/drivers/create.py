@@ -4369,7 +4369,7 @@ class Robot(Exchange):
             self._sensed.refresh(sensor, self._clock(), self._read_sensor)
 
     def _read_sensor(self, plan: Primitive) -> None:
-        if not self._running:
+        if not self._running and self._closer != threading.get_ident():  # a terminate hook reads too
             raise self._not_running()
         self._primitive(plan, [])
 
@@ -5555,7 +5555,6 @@ _P_BUMPERS = Primitive(
     Pack("BB"),
     reply=FixedReply(Unpack("B")),
     actions=_p_bumpers_actions,
-    renews=True,
 )
 
 
