@@ -92,26 +92,56 @@ class Lexer:
     The whole grammar's pattern tries the same terminals in the same order, so where the terminal
     it finds is one the state accepts, the state's own pattern would have found that terminal and
     that text too (the first alternative to match is the first of any subset that contains it);
-    only where it is not is the state's own pattern compiled and asked (rdisc/syntax/lexing.py
-    does the same inside Lark)."""
+    only where it is not is the state's own lexer asked (rdisc/syntax/lexing.py does the same
+    inside Lark)."""
 
-    __slots__ = ("_own", "allowed", "keywords", "terminals")
+    __slots__ = ("_tries", "allowed", "keywords", "terminals")
 
     def __init__(self, terminals: tuple[str, ...], keywords: dict[str, str]) -> None:
         self.terminals, self.keywords = terminals, keywords
         self.allowed = frozenset(terminals)
-        self._own: Callable[[str, int], re.Match[str] | None] | None = None
+        self._tries: tuple[tuple[str, str | None, Callable[[str, int], re.Match[str] | None]], ...] = ()
 
-    def own(self, text: str, pos: int) -> re.Match[str] | None:
-        """The state's own pattern's match at `pos`."""
-        if self._own is None:
-            self._own = _pattern(self.terminals).match
-        return self._own(text, pos)
+    def own(self, text: str, pos: int) -> tuple[str, int] | None:
+        """The terminal the state's own pattern (its terminals' alternation, in order) reads at
+        `pos`, and where it ends: the first terminal that matches there, as an alternation's
+        first matching alternative is. Each terminal is tried alone (a literal as a string), so no
+        state's alternation is compiled: that was a third of a cold check of a small file, where
+        the states met, each once, were a dozen."""
+        if not self._tries:
+            self._tries = tuple((name, *_terminal(name)) for name in self.terminals)
+        for name, literal, match in self._tries:
+            if literal is not None:
+                if text.startswith(literal, pos):
+                    return name, pos + len(literal)
+            else:
+                hit = match(text, pos)
+                if hit is not None:
+                    return name, hit.end()
+        return None
 
 
-def _pattern(terminals: tuple[str, ...]) -> re.Pattern[str]:
-    """The alternation of `terminals`' patterns, each in a group named after it (as Lark's Scanner)."""
-    return re.compile("|".join(f"(?P<{name}>{tables.TERMINALS[name]})" for name in terminals))
+_TERMINAL_MATCHES: dict[str, tuple[str | None, Callable[[str, int], re.Match[str] | None]]] = {}
+
+
+def _terminal(name: str) -> tuple[str | None, Callable[[str, int], re.Match[str] | None]]:
+    """How a terminal is tried alone: its text where its pattern is a literal (Lark writes a
+    string terminal as its escaped text), else its pattern's match (compiled once, for every
+    state)."""
+    made = _TERMINAL_MATCHES.get(name)
+    if made is None:
+        pattern = tables.TERMINALS[name]
+        text = re.sub(r"\\(.)", r"\1", pattern, flags=re.DOTALL)
+        if re.escape(text) == pattern:
+            made = (text, _never)
+        else:
+            made = (None, re.compile(pattern).match)
+        _TERMINAL_MATCHES[name] = made
+    return made
+
+
+def _never(text: str, pos: int) -> None:
+    """The match of a literal terminal, never asked (it is compared as a string)."""
 
 
 _LEXERS = [Lexer(terminals, keywords) for terminals, keywords in tables.LEXERS]
@@ -232,9 +262,9 @@ def _run(text: str, start: str, rules: Rules, most_depth: int) -> Any:
                 begin, pos = hit.end(1), hit.end()
                 if kind not in allowed[state]:  # the state's own lexer reads something else here
                     own = lexers[state].own(text, begin)
-                    if own is None or own.lastgroup in ignored:
+                    if own is None or own[0] in ignored:
                         raise Retry
-                    kind, pos = own.lastgroup, own.end()
+                    kind, pos = own
                 token = Token(text[begin:pos])
                 if kind == "NAME":
                     kind = keywords[state].get(token, kind)

@@ -178,3 +178,53 @@ def test_a_skipped_terminal_begins_where_no_terminal_tried_before_it_can() -> No
             assert first(name)
             for earlier in tables.ROOT[:i]:
                 assert earlier in tables.IGNORED or not first(name) & first(earlier), (name, earlier)
+
+
+def _alternation(lexer: reduce.Lexer) -> re.Pattern[str]:
+    """A state's own pattern as Lark's contextual lexer compiles it: its terminals' alternation."""
+    return re.compile("|".join(f"(?P<{name}>{tables.TERMINALS[name]})" for name in lexer.terminals))
+
+
+def test_a_state_s_lexer_reads_what_its_alternation_reads() -> None:
+    """Each terminal tried alone, in order (a literal compared as a string), finds the terminal and
+    the end its state's alternation finds, at each token of the examples and a few texts more."""
+    texts = [*SCANNED, "inputs input in 1..2 0x1F_ 1e5 b\"x\" r\"y\" <<= >>",
+             *(path.read_text(encoding="utf-8") for path in (ROOT / "examples" / "create.rdis", stdlib_path()))]
+    # Each token and the two characters after it, once each.
+    rests = sorted({text[begin:end + 2] for text in texts for _, begin, end in _root_tokens(text)})
+    assert len(rests) > 250
+    for lexer in reduce._LEXERS:
+        match = _alternation(lexer).match
+        for rest in rests:
+            hit = match(rest)
+            assert lexer.own(rest, 0) == (None if hit is None else (hit.lastgroup, hit.end())), rest
+
+
+def test_parsing_compiles_no_state_s_alternation(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Compiling the states' patterns was a third of a cold check of a small file: only single
+    terminals' patterns are compiled, once each, whichever states are met."""
+    compiled: list[str] = []
+    original = re.compile
+
+    def counted(pattern: Any, flags: int = 0) -> Any:
+        compiled.append(pattern)
+        return original(pattern, flags)
+
+    monkeypatch.setattr(reduce, "_TERMINAL_MATCHES", {})
+    for lexer in reduce._LEXERS:
+        monkeypatch.setattr(lexer, "_tries", ())
+    monkeypatch.setattr(re, "compile", counted)
+    met = 0
+
+    def own(lexer: reduce.Lexer, text: str, pos: int) -> tuple[str, int] | None:
+        nonlocal met
+        met += 1
+        return original_own(lexer, text, pos)
+
+    original_own = reduce.Lexer.own
+    monkeypatch.setattr(reduce.Lexer, "own", own)
+    for path in FILES:
+        parse(str(path), path.read_text(encoding="utf-8"), Diagnostics())
+    assert met > 100
+    singles = set(tables.TERMINALS.values())
+    assert [p for p in compiled if p not in singles] == [] and len(compiled) == len(set(compiled))
