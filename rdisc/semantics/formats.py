@@ -10,7 +10,6 @@ lowering, emitters and the engine read that layout, never the format's text.
 from __future__ import annotations
 
 import re
-import string
 import struct
 import warnings
 from functools import lru_cache
@@ -257,6 +256,8 @@ def _code_size(order: str, code: str) -> int:
 def struct_codes() -> str:
     """The letters a struct format may hold, each a value or a pad byte (`Z` included, `P` not), as
     `struct_layout` reads them: for the highlighters' colours (rdisc.highlight.writer)."""
+    import string
+
     codes = []
     for code in string.ascii_letters + "?":
         try:
@@ -376,6 +377,8 @@ def format_fields(template: str) -> tuple[FormatField, ...]:
     fields: list[tuple[int, FormatField]] = []
     auto = 0
     manual = False
+    import string  # only for a `format` primitive: its import is a millisecond of a cold `rdisc check`
+
     try:
         parsed = list(string.Formatter().parse(template))
     except ValueError as err:
