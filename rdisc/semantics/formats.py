@@ -15,6 +15,7 @@ import warnings
 from functools import lru_cache
 from typing import TYPE_CHECKING
 
+from rdisc import patterns
 from rdisc.frozen import replace
 from rdisc.limits import MAX_ARRAY
 from rdisc.semantics import regex_shape
@@ -442,7 +443,7 @@ def _field_offsets(template: str) -> list[int]:
     return offsets
 
 
-_SPEC_WIDTH = re.compile(r"(?:.?[<>=^])?[+\- ]?z?#?0?(\d+)?")
+_SPEC_WIDTH = r"(?:.?[<>=^])?[+\- ]?z?#?0?(\d+)?"  # compiled when first used (rdisc.patterns)
 _SAMPLES = {Type.INT: 0, Type.FLOAT: 0.0, Type.BOOL: False, Type.STRING: ""}
 
 
@@ -460,7 +461,7 @@ def spec_accepts(spec: str, type_: AnyType) -> bool:
 
 def format_width(spec: str) -> int:
     """The minimum width a spec asks for (0 if none): a lower bound on bytes."""
-    m = _SPEC_WIDTH.match(spec)
+    m = patterns.pattern(_SPEC_WIDTH).match(spec)
     return int(m.group(1)) if m and m.group(1) else 0
 
 
