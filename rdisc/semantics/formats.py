@@ -18,7 +18,6 @@ from typing import TYPE_CHECKING
 from rdisc import patterns
 from rdisc.frozen import replace
 from rdisc.limits import MAX_ARRAY
-from rdisc.semantics import regex_shape
 from rdisc.semantics.model import AnyType, Array, Slot, StructLayout, Type, Varying, bit_span
 
 if TYPE_CHECKING:
@@ -468,6 +467,8 @@ def format_width(spec: str) -> int:
 def regex_groups(pattern: str) -> int:
     """Number of groups of a regex; raises TemplateError where it does not compile
     or could take more than linear time on a reply line (see `regex_shape`)."""
+    from rdisc.semantics import regex_shape  # for a `regex` primitive only: start-up time
+
     try:
         with warnings.catch_warnings():  # Python's hints about future syntax (`[[`) are not the user's to see
             warnings.simplefilter("ignore", FutureWarning)
@@ -485,6 +486,8 @@ def regex_groups(pattern: str) -> int:
 
 def regex_min_length(pattern: str) -> int:
     """The fewest characters the regex can match (a lower bound on a reply)."""
+    from rdisc.semantics import regex_shape  # for a `regex` primitive only: start-up time
+
     try:
         return min(regex_shape.parse_tree(pattern).getwidth()[0], 1 << 16)
     except Exception:  # noqa: BLE001 - a lower bound of 0 is always safe

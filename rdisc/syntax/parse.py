@@ -20,7 +20,6 @@ from rdisc.diagnostics import Diagnostics
 from rdisc.source import Span
 from rdisc.syntax import ast
 from rdisc.syntax.build import MAX_EXPR_DEPTH, Builder, TooDeep
-from rdisc.syntax.errors import describe_unexpected
 
 if TYPE_CHECKING:
     import lark
@@ -199,6 +198,8 @@ def parse_expression(path: str, text: str, base_offset: int, diagnostics: Diagno
     try:
         tree = parser().parse(text, start="expr_start", on_error=keyword_as_name)
     except lark.exceptions.UnexpectedInput as err:
+        from rdisc.syntax.errors import describe_unexpected  # for a syntax error only: start-up time
+
         code, offset, length, message, label, help = describe_unexpected(err, text, True)
         at = base_offset + offset
         message = message.replace("the end of the file", "the end of the expression")
@@ -303,6 +304,8 @@ def _depth(tree: lark.Tree[lark.Token]) -> tuple[int, lark.Tree[lark.Token]]:
 
 def _report_syntax_error(err: lark.exceptions.UnexpectedInput, path: str, text: str, start: int, end: int,
                          last: bool, diagnostics: Diagnostics) -> None:
+    from rdisc.syntax.errors import describe_unexpected  # for a syntax error only: start-up time
+
     code, offset, length, message, label, help = describe_unexpected(err, text[start:end], last)
     at = start + offset
     diagnostics.report(code, Span(path, at, min(at + length, len(text))), message, label=label, help=help)
