@@ -89,19 +89,32 @@ class Lexer:
     only where it is not is the state's own lexer asked (rdisc/syntax/lexing.py does the same
     inside Lark)."""
 
-    __slots__ = ("_tries", "allowed", "keywords", "terminals")
+    __slots__ = ("_asked", "_match", "_tries", "allowed", "keywords", "terminals")
 
     def __init__(self, terminals: tuple[str, ...], keywords: dict[str, str]) -> None:
         self.terminals, self.keywords = terminals, keywords
         self.allowed = frozenset(terminals)
         self._tries: tuple[tuple[str, str | None, Callable[[str, int], re.Match[str] | None]], ...] = ()
+        self._asked = 0
+        self._match: Callable[[str, int], re.Match[str] | None] | None = None
 
     def own(self, text: str, pos: int) -> tuple[str, int] | None:
         """The terminal the state's own pattern (its terminals' alternation, in order) reads at
         `pos`, and where it ends: the first terminal that matches there, as an alternation's
-        first matching alternative is. Each terminal is tried alone (a literal as a string), so no
-        state's alternation is compiled: that was a third of a cold check of a small file, where
-        the states met, each once, were a dozen."""
+        first matching alternative is. The first ALONE times, each terminal is tried alone (a
+        literal as a string): compiling the alternations of the dozen states a small file meets
+        was a third of its cold check. A state asked more (a large description asks a few states
+        thousands of times) has its alternation compiled, which reads the same faster."""
+        if self._match is None:
+            self._asked += 1
+            if self._asked <= ALONE:
+                return self._alone(text, pos)
+            self._match = re.compile("|".join(f"(?P<{name}>{tables.TERMINALS[name]})" for name in self.terminals)).match
+        hit = self._match(text, pos)
+        return None if hit is None else (str(hit.lastgroup), hit.end())
+
+    def _alone(self, text: str, pos: int) -> tuple[str, int] | None:
+        """`own`, each terminal tried alone, in order."""
         if not self._tries:
             self._tries = tuple((name, *_terminal(name)) for name in self.terminals)
         for name, literal, match in self._tries:
@@ -115,6 +128,7 @@ class Lexer:
         return None
 
 
+ALONE = 32  # times a state's lexer tries its terminals one at a time before it compiles their alternation
 _TERMINAL_MATCHES: dict[str, tuple[str | None, Callable[[str, int], re.Match[str] | None]]] = {}
 
 
