@@ -5,7 +5,6 @@ from __future__ import annotations
 import enum
 from typing import TYPE_CHECKING
 
-from rdisc.diagnostics.codes import CODES
 from rdisc.source import Span
 
 if TYPE_CHECKING:
@@ -49,6 +48,10 @@ class Diagnostic:
 
     @property
     def name(self) -> str:
+        # The table of codes (each with its explanation) is imported when a diagnostic is shown: a
+        # clean `rdisc check` never reads it, and importing it is a millisecond of one.
+        from rdisc.diagnostics.codes import CODES
+
         return CODES[self.code].name
 
 

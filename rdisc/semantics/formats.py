@@ -10,15 +10,14 @@ lowering, emitters and the engine read that layout, never the format's text.
 from __future__ import annotations
 
 import re
-import string
 import struct
 import warnings
 from functools import lru_cache
 from typing import TYPE_CHECKING
 
+from rdisc import patterns
 from rdisc.frozen import replace
 from rdisc.limits import MAX_ARRAY
-from rdisc.semantics import regex_shape
 from rdisc.semantics.model import AnyType, Array, Slot, StructLayout, Type, Varying, bit_span
 
 if TYPE_CHECKING:
@@ -257,6 +256,8 @@ def _code_size(order: str, code: str) -> int:
 def struct_codes() -> str:
     """The letters a struct format may hold, each a value or a pad byte (`Z` included, `P` not), as
     `struct_layout` reads them: for the highlighters' colours (rdisc.highlight.writer)."""
+    import string
+
     codes = []
     for code in string.ascii_letters + "?":
         try:
@@ -376,6 +377,8 @@ def format_fields(template: str) -> tuple[FormatField, ...]:
     fields: list[tuple[int, FormatField]] = []
     auto = 0
     manual = False
+    import string  # only for a `format` primitive: its import is a millisecond of a cold `rdisc check`
+
     try:
         parsed = list(string.Formatter().parse(template))
     except ValueError as err:
@@ -439,7 +442,7 @@ def _field_offsets(template: str) -> list[int]:
     return offsets
 
 
-_SPEC_WIDTH = re.compile(r"(?:.?[<>=^])?[+\- ]?z?#?0?(\d+)?")
+_SPEC_WIDTH = r"(?:.?[<>=^])?[+\- ]?z?#?0?(\d+)?"  # compiled when first used (rdisc.patterns)
 _SAMPLES = {Type.INT: 0, Type.FLOAT: 0.0, Type.BOOL: False, Type.STRING: ""}
 
 
@@ -457,13 +460,15 @@ def spec_accepts(spec: str, type_: AnyType) -> bool:
 
 def format_width(spec: str) -> int:
     """The minimum width a spec asks for (0 if none): a lower bound on bytes."""
-    m = _SPEC_WIDTH.match(spec)
+    m = patterns.pattern(_SPEC_WIDTH).match(spec)
     return int(m.group(1)) if m and m.group(1) else 0
 
 
 def regex_groups(pattern: str) -> int:
     """Number of groups of a regex; raises TemplateError where it does not compile
     or could take more than linear time on a reply line (see `regex_shape`)."""
+    from rdisc.semantics import regex_shape  # for a `regex` primitive only: start-up time
+
     try:
         with warnings.catch_warnings():  # Python's hints about future syntax (`[[`) are not the user's to see
             warnings.simplefilter("ignore", FutureWarning)
@@ -481,6 +486,8 @@ def regex_groups(pattern: str) -> int:
 
 def regex_min_length(pattern: str) -> int:
     """The fewest characters the regex can match (a lower bound on a reply)."""
+    from rdisc.semantics import regex_shape  # for a `regex` primitive only: start-up time
+
     try:
         return min(regex_shape.parse_tree(pattern).getwidth()[0], 1 << 16)
     except Exception:  # noqa: BLE001 - a lower bound of 0 is always safe

@@ -21,7 +21,6 @@ from rdisc.semantics.operators import FLOAT_BYTES, shown
 from rdisc.semantics.resolve import suggest
 from rdisc.source import Span
 from rdisc.syntax import ast
-from rdisc.syntax.printer import print_expr
 
 if TYPE_CHECKING:
     from dataclasses import dataclass
@@ -277,6 +276,9 @@ class Typer:
 
     def _element(self, e: ast.Index, env: Env) -> m.Expr:
         """`array[index]`: an int index; a constant one within the array."""
+        # The printer, for a nested index only: a clean check rarely needs it (start-up time).
+        from rdisc.syntax.printer import print_expr
+
         array = self.expr(e.base, env)
         index = self.expr(e.index, env)
         if isinstance(e.base, ast.Index) and array.type is not None and not isinstance(array.type, Array):

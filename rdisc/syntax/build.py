@@ -8,6 +8,7 @@ from collections.abc import Callable
 from functools import lru_cache
 from typing import TYPE_CHECKING, Any
 
+from rdisc import patterns
 from rdisc.diagnostics import Diagnostics, abbreviate
 from rdisc.limits import MAX_INT
 from rdisc.source import Span
@@ -39,7 +40,8 @@ class TooDeep(Exception):
     def __init__(self, span: Span) -> None:
         super().__init__("expression is nested too deeply")
         self.span = span
-_ESCAPE = re.compile(r"\\(x[0-9a-fA-F]{2}|u[0-9a-fA-F]{4}|.)", re.DOTALL)
+# Patterns compiled when first used (rdisc.patterns): most descriptions have no escape and no bytes.
+_ESCAPE = r"\\(x[0-9a-fA-F]{2}|u[0-9a-fA-F]{4}|.)"
 _SIMPLE_ESCAPES = {"n": "\n", "r": "\r", "t": "\t", "0": "\0", "\\": "\\", '"': '"', "'": "'"}
 
 
@@ -68,10 +70,10 @@ def decode_string(raw: str, report: Callable[[int, int, str, str | None], None] 
             report(1 + m.start(), len(m.group()), m.group(), None)
         return m.group()
 
-    return _ESCAPE.sub(replace, body)
+    return patterns.pattern(_ESCAPE, re.DOTALL).sub(replace, body)
 
 
-_BYTES_PART = re.compile(r"\\(x[0-9a-fA-F]{2}|u[0-9a-fA-F]{4}|.)|[^\x00-\x7f]", re.DOTALL)
+_BYTES_PART = r"\\(x[0-9a-fA-F]{2}|u[0-9a-fA-F]{4}|.)|[^\x00-\x7f]"
 
 
 def decode_bytes(raw: str, report: Callable[[int, int, str, bool], None] | None = None) -> bytes:
@@ -93,7 +95,7 @@ def decode_bytes(raw: str, report: Callable[[int, int, str, bool], None] | None 
             report(2 + m.start(), len(m.group()), m.group(), True)
         return ""
 
-    return _BYTES_PART.sub(replace, raw[2:-1]).encode("latin-1")
+    return patterns.pattern(_BYTES_PART, re.DOTALL).sub(replace, raw[2:-1]).encode("latin-1")
 
 
 def _int_value(text: str) -> int | None:

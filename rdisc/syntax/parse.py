@@ -15,11 +15,11 @@ from collections.abc import Iterator
 from functools import lru_cache
 from typing import TYPE_CHECKING, cast
 
+from rdisc import patterns
 from rdisc.diagnostics import Diagnostics
 from rdisc.source import Span
 from rdisc.syntax import ast
 from rdisc.syntax.build import MAX_EXPR_DEPTH, Builder, TooDeep
-from rdisc.syntax.errors import describe_unexpected
 
 if TYPE_CHECKING:
     import lark
@@ -32,7 +32,8 @@ MAX_DECL_TOKENS = 20000  # of one declaration: more is not a description a perso
 # The tokens of RDIS, roughly (a string is cut at an escaped quote): enough to count them in linear time.
 _TOKEN = re.compile(r'r?"[^"\n]*"?|[A-Za-z_][A-Za-z0-9_]*|\d[\w.]*|#[^\n]*|\S')
 _TOKEN_BLOCK = 1 << 14  # characters of text whose tokens token_count finds at once (then to the line's end)
-_LONG_LINE = re.compile(rf"[^\n]{{{MAX_LINE_CHARS + 1},}}")
+# Patterns only a long, damaged or misread declaration needs, compiled when first used (rdisc.patterns).
+_LONG_LINE = rf"[^\n]{{{MAX_LINE_CHARS + 1},}}"
 
 DECL_KEYWORDS = (
     "import",
@@ -58,7 +59,7 @@ DECL_START = re.compile(r"^(?:{})\b".format("|".join(DECL_KEYWORDS)), re.MULTILI
 _DOC_RUN = re.compile(r"(?:^[ \t]*///[^\n]*\n?)+", re.MULTILINE)
 _DOC_LINE = re.compile(r"^[ \t]*/// ?([^\n]*)$", re.MULTILINE)
 _BLANK_OR_COMMENT = re.compile(r"(?:\s+|#[^\n]*)*")
-_DECL_NAME = re.compile(r"({})\s+([A-Za-z][A-Za-z0-9_]*)".format("|".join(DECL_KEYWORDS)))
+_DECL_NAME = r"({})\s+([A-Za-z][A-Za-z0-9_]*)".format("|".join(DECL_KEYWORDS))
 
 
 @lru_cache(maxsize=1)
@@ -165,7 +166,7 @@ def parse_declaration(text: str, start: int, end: int, builder: Builder, decls: 
     return False
 
 
-_NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
+_NAME = r"[A-Za-z][A-Za-z0-9_]*"
 
 
 def keyword_as_name(err: lark.exceptions.UnexpectedInput) -> bool:
@@ -176,14 +177,14 @@ def keyword_as_name(err: lark.exceptions.UnexpectedInput) -> bool:
 
     token = getattr(err, "token", None)
     if (not isinstance(err, lark.exceptions.UnexpectedToken) or token is None or token.type == "NAME"
-            or "NAME" not in err.accepts or not _NAME.fullmatch(str(token))):
+            or "NAME" not in err.accepts or not patterns.pattern(_NAME).fullmatch(str(token))):
         return False
     err.interactive_parser.feed_token(lark.Token.new_borrow_pos("NAME", str(token), token))
     return True
 
 
 def _damaged(path: str, chunk: str, start: int) -> list[ast.Damaged]:
-    m = _DECL_NAME.match(chunk)
+    m = patterns.pattern(_DECL_NAME).match(chunk)
     if not m:
         return []
     return [ast.Damaged(m.group(1), ast.Ident(m.group(2), Span(path, start + m.start(2), start + m.end(2))))]
@@ -197,6 +198,8 @@ def parse_expression(path: str, text: str, base_offset: int, diagnostics: Diagno
     try:
         tree = parser().parse(text, start="expr_start", on_error=keyword_as_name)
     except lark.exceptions.UnexpectedInput as err:
+        from rdisc.syntax.errors import describe_unexpected  # for a syntax error only: start-up time
+
         code, offset, length, message, label, help = describe_unexpected(err, text, True)
         at = base_offset + offset
         message = message.replace("the end of the file", "the end of the expression")
@@ -235,7 +238,7 @@ def _too_long(path: str, chunk: str, start: int) -> tuple[Span, str] | None:
     literal is on one line), or more tokens than a declaration may have."""
     if len(chunk) <= min(MAX_LINE_CHARS, MAX_DECL_TOKENS):  # a token and a line are a character or more
         return None
-    long_line = _LONG_LINE.search(chunk)
+    long_line = patterns.pattern(_LONG_LINE).search(chunk)
     if long_line is not None:
         return (Span(path, start + long_line.start(), start + long_line.end()),
                 f"line of {len(long_line.group())} characters; the limit is {MAX_LINE_CHARS}")
@@ -301,6 +304,8 @@ def _depth(tree: lark.Tree[lark.Token]) -> tuple[int, lark.Tree[lark.Token]]:
 
 def _report_syntax_error(err: lark.exceptions.UnexpectedInput, path: str, text: str, start: int, end: int,
                          last: bool, diagnostics: Diagnostics) -> None:
+    from rdisc.syntax.errors import describe_unexpected  # for a syntax error only: start-up time
+
     code, offset, length, message, label, help = describe_unexpected(err, text[start:end], last)
     at = start + offset
     diagnostics.report(code, Span(path, at, min(at + length, len(text))), message, label=label, help=help)

@@ -21,7 +21,7 @@ from __future__ import annotations
 
 import re
 from collections.abc import Callable
-from typing import Any, NamedTuple
+from typing import Any
 
 from rdisc.syntax import ast, tables
 from rdisc.syntax.build import Builder, Rules, TooDeep
@@ -51,20 +51,14 @@ class Token(str):
     end_pos: int
 
 
-class Rule(NamedTuple):
-    """How one grammar rule's children become its value, as Lark's wrappers of the rule shape them."""
-
-    origin: str  # the nonterminal it reduces to
-    size: int  # symbols on its right-hand side
-    keep: tuple[tuple[int, bool, int], ...] | None  # kept children: (index, spliced, Nones before); None: all
-    nones_after: int
-    single: bool  # a `?rule`: one child left is the value itself
-    name: str  # the Builder's method, or the `_rule` spliced into its parent
-    spliced: bool  # a `_rule`: its children go into its parent's
-    unit: bool  # a `?rule` of one symbol, kept: it passes its child on as it is (value, span, depth)
-
-
-RULES = tuple(Rule(*rule) for rule in tables.RULES)
+# One rule of tables.RULES: how its children become its value, as Lark's wrappers of the rule shape
+# them: (origin: the nonterminal it reduces to; size: the symbols on its right-hand side; keep: the
+# kept children, each (index, spliced, Nones before), or None for all; Nones after; single: a
+# `?rule`, one child left is the value itself; name: the Builder's method, or the `_rule` spliced
+# into its parent; spliced: a `_rule`, its children go into its parent's; unit: a `?rule` of one
+# symbol, kept, which passes its child on as it is (value, span, depth)). Plain tuples, as written:
+# a cold check makes no object of its ~450 rules.
+Rule = tuple[str, int, tuple[tuple[int, bool, int], ...] | None, int, bool, str, bool, bool]
 _NONE = (None, None, False, 0)  # a placeholder of an optional part that is not there
 
 
@@ -92,26 +86,70 @@ class Lexer:
     The whole grammar's pattern tries the same terminals in the same order, so where the terminal
     it finds is one the state accepts, the state's own pattern would have found that terminal and
     that text too (the first alternative to match is the first of any subset that contains it);
-    only where it is not is the state's own pattern compiled and asked (rdisc/syntax/lexing.py
-    does the same inside Lark)."""
+    only where it is not is the state's own lexer asked (rdisc/syntax/lexing.py does the same
+    inside Lark)."""
 
-    __slots__ = ("_own", "allowed", "keywords", "terminals")
+    __slots__ = ("_asked", "_match", "_tries", "allowed", "keywords", "terminals")
 
     def __init__(self, terminals: tuple[str, ...], keywords: dict[str, str]) -> None:
         self.terminals, self.keywords = terminals, keywords
         self.allowed = frozenset(terminals)
-        self._own: Callable[[str, int], re.Match[str] | None] | None = None
+        self._tries: tuple[tuple[str, str | None, Callable[[str, int], re.Match[str] | None]], ...] = ()
+        self._asked = 0
+        self._match: Callable[[str, int], re.Match[str] | None] | None = None
 
-    def own(self, text: str, pos: int) -> re.Match[str] | None:
-        """The state's own pattern's match at `pos`."""
-        if self._own is None:
-            self._own = _pattern(self.terminals).match
-        return self._own(text, pos)
+    def own(self, text: str, pos: int) -> tuple[str, int] | None:
+        """The terminal the state's own pattern (its terminals' alternation, in order) reads at
+        `pos`, and where it ends: the first terminal that matches there, as an alternation's
+        first matching alternative is. The first ALONE times, each terminal is tried alone (a
+        literal as a string): compiling the alternations of the dozen states a small file meets
+        was a third of its cold check. A state asked more (a large description asks a few states
+        thousands of times) has its alternation compiled, which reads the same faster."""
+        if self._match is None:
+            self._asked += 1
+            if self._asked <= ALONE:
+                return self._alone(text, pos)
+            self._match = re.compile("|".join(f"(?P<{name}>{tables.TERMINALS[name]})" for name in self.terminals)).match
+        hit = self._match(text, pos)
+        return None if hit is None else (str(hit.lastgroup), hit.end())
+
+    def _alone(self, text: str, pos: int) -> tuple[str, int] | None:
+        """`own`, each terminal tried alone, in order."""
+        if not self._tries:
+            self._tries = tuple((name, *_terminal(name)) for name in self.terminals)
+        for name, literal, match in self._tries:
+            if literal is not None:
+                if text.startswith(literal, pos):
+                    return name, pos + len(literal)
+            else:
+                hit = match(text, pos)
+                if hit is not None:
+                    return name, hit.end()
+        return None
 
 
-def _pattern(terminals: tuple[str, ...]) -> re.Pattern[str]:
-    """The alternation of `terminals`' patterns, each in a group named after it (as Lark's Scanner)."""
-    return re.compile("|".join(f"(?P<{name}>{tables.TERMINALS[name]})" for name in terminals))
+ALONE = 32  # times a state's lexer tries its terminals one at a time before it compiles their alternation
+_TERMINAL_MATCHES: dict[str, tuple[str | None, Callable[[str, int], re.Match[str] | None]]] = {}
+
+
+def _terminal(name: str) -> tuple[str | None, Callable[[str, int], re.Match[str] | None]]:
+    """How a terminal is tried alone: its text where its pattern is a literal (Lark writes a
+    string terminal as its escaped text), else its pattern's match (compiled once, for every
+    state)."""
+    made = _TERMINAL_MATCHES.get(name)
+    if made is None:
+        pattern = tables.TERMINALS[name]
+        text = re.sub(r"\\(.)", r"\1", pattern, flags=re.DOTALL)
+        if re.escape(text) == pattern:
+            made = (text, _never)
+        else:
+            made = (None, re.compile(pattern).match)
+        _TERMINAL_MATCHES[name] = made
+    return made
+
+
+def _never(text: str, pos: int) -> None:
+    """The match of a literal terminal, never asked (it is compared as a string)."""
 
 
 _LEXERS = [Lexer(terminals, keywords) for terminals, keywords in tables.LEXERS]
@@ -149,24 +187,27 @@ _METHODS: dict[str, Callable[..., Any]] = {name: value for name, value in vars(R
 
 
 def _step(rule: Rule) -> tuple[Any, ...]:
-    """What the loop reads of a rule, in one tuple: (origin, size, keep, nones after, the kept
-    children's indices where it keeps them without placeholders or splicing (else None), single,
-    spliced, unit, the Builder's method or None, and those indices again where the rule is
-    simply the method called with those children (else None))."""
+    """What the loop reads of a rule that is not a unit (`UNITS`), in one tuple: (origin, size,
+    keep, nones after, the kept children's indices where it keeps them without placeholders or
+    splicing (else None), single, spliced, the Builder's method or None, and those indices again
+    where the rule is simply the method called with those children (else None))."""
+    origin, size, keep, nones_after, single, name, spliced, _ = rule
     picked = None
-    if rule.keep is None:
-        picked = tuple(range(rule.size))
-    elif not rule.nones_after and not any(spliced or nones for _, spliced, nones in rule.keep):
-        picked = tuple(i for i, _, _ in rule.keep)
-    method = None if rule.spliced else _METHODS.get(rule.name)
+    if keep is None:
+        picked = tuple(range(size))
+    elif not nones_after and not any(spliced or nones for _, spliced, nones in keep):
+        picked = tuple(i for i, _, _ in keep)
+    method = None if spliced else _METHODS.get(name)
     direct = None
-    if method is not None and picked is not None and not (rule.single and len(picked) == 1):
+    if method is not None and picked is not None and not (single and len(picked) == 1):
         direct = picked
-    return (rule.origin, rule.size, rule.keep, rule.nones_after, picked, rule.single, rule.spliced, rule.unit,
-            method, direct)
+    return (origin, size, keep, nones_after, picked, single, spliced, method, direct)
 
 
-STEPS = tuple(_step(rule) for rule in RULES)
+STEPS = tuple(_step(rule) for rule in tables.RULES)
+# Each rule's origin where it is a unit (a `?rule` of one symbol, kept), else None: the loop's most
+# frequent reduction (an operand passed on as an expression) needs nothing else of its rule.
+UNITS = tuple(rule[0] if rule[7] else None for rule in tables.RULES)
 
 
 class _Deferred:
@@ -205,7 +246,7 @@ def _run(text: str, start: str, rules: Rules, most_depth: int) -> Any:
     """The LALR loop (Lark's `ParserState.feed_token`) over Lark's contextual lexer's tokens
     (`ContextualLexer.lex`), each reduction shaped as Lark's tree builder shapes it
     (`PropagatePositions`, `ChildFilterLALR`, `ExpandSingleChild`)."""
-    actions, steps, lexers, ignored = tables.ACTIONS, STEPS, STATE_LEXERS, tables.IGNORED
+    actions, steps, units, lexers, ignored = tables.ACTIONS, STEPS, UNITS, STATE_LEXERS, tables.IGNORED
     allowed, keywords = _STATE_ALLOWED, _STATE_KEYWORDS
     scan = _scanner()
     end_state = tables.END[start]
@@ -232,9 +273,9 @@ def _run(text: str, start: str, rules: Rules, most_depth: int) -> Any:
                 begin, pos = hit.end(1), hit.end()
                 if kind not in allowed[state]:  # the state's own lexer reads something else here
                     own = lexers[state].own(text, begin)
-                    if own is None or own.lastgroup in ignored:
+                    if own is None or own[0] in ignored:
                         raise Retry
-                    kind, pos = own.lastgroup, own.end()
+                    kind, pos = own
                 token = Token(text[begin:pos])
                 if kind == "NAME":
                     kind = keywords[state].get(token, kind)
@@ -248,12 +289,13 @@ def _run(text: str, start: str, rules: Rules, most_depth: int) -> Any:
                 state = action
                 push((token, (begin, pos), False, 0))
                 break
-            origin, size, keep, nones_after, picked, single, spliced, unit, method, direct = steps[~action]
-            if unit:  # a `?rule` over one symbol: its child's value, span and depth are its own
+            origin = units[~action]
+            if origin is not None:  # a `?rule` over one symbol: its child's value, span and depth are its own
                 state = states[-1] = actions[states[-2]][origin]
                 if end and state == end_state:
                     return stack[-1][0]
                 continue
+            origin, size, keep, nones_after, picked, single, spliced, method, direct = steps[~action]
             if size == 1:
                 entry = stack.pop()
                 del states[-1]

@@ -59,3 +59,33 @@ def test_a_budget_that_is_not_a_positive_number_is_a_usage_error(
     with pytest.raises(SystemExit) as exit_:
         main(["check", "--max-tokens", given, "examples/create.rdis"])
     assert exit_.value.code == 2 and "--max-tokens" in capsys.readouterr().err
+
+
+def test_a_file_within_the_tokens_left_is_counted_only_when_a_file_after_it_is_read(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """A token is a character or more: a description shorter than the budget is parsed without
+    counting its tokens, which an import after it needs counted (what it may still have), exactly."""
+    from rdisc import compile as compiling
+
+    counted: list[int] = []
+
+    def count(text: str, most: int) -> int:
+        counted.append(len(text))
+        return token_count(text, most)
+
+    monkeypatch.setattr(compiling, "token_count", count)
+    alone = tmp_path / "alone.rdis"
+    alone.write_text(HEAD, encoding="utf-8")
+    assert not compile_path(str(alone)).diagnostics.has_errors() and counted == []
+    (tmp_path / "more.rdis").write_text("const extra = 1\n", encoding="utf-8")
+    main_text = 'import "more.rdis"\n' + HEAD
+    importing = tmp_path / "importing.rdis"
+    importing.write_text(main_text, encoding="utf-8")
+    assert not compile_path(str(importing), max_tokens=1000).diagnostics.has_errors()
+    assert counted == [len(main_text)]  # when the import was read; the import, read last, never
+    counted.clear()
+    budget = token_count(main_text, 10**9) + token_count("const extra = 1\n", 10**9)  # both longer than it
+    assert not compile_path(str(importing), max_tokens=budget).diagnostics.has_errors()
+    refused = compile_path(str(importing), max_tokens=budget - 1).diagnostics
+    assert [d.code for d in refused.items] == ["E005"] and "more.rdis" in refused.items[0].span.path
+    assert counted == [len(main_text), len("const extra = 1\n")] * 2

@@ -135,3 +135,16 @@ def test_help_is_laid_out_as_argparse_lays_it_out(monkeypatch: pytest.MonkeyPatc
     ours = (shown.format_help(), shown.format_usage())
     shown.formatter_class = argparse.HelpFormatter
     assert ours == (shown.format_help(), shown.format_usage())
+
+
+def test_a_clean_check_imports_only_what_its_description_needs() -> None:
+    """`string` (a `format` primitive's fields), the printer (an expression in a message), the
+    table of codes (a diagnostic shown), the regex rules (a `regex` primitive) and the syntax
+    errors' descriptions are imported when first needed: together some milliseconds of a cold
+    check of create.rdis."""
+    probe = ("import sys; from rdisc.cli.main import main; status = main(sys.argv[1:]); print(status, "
+             "[name for name in ('string', 'rdisc.syntax.printer', 'rdisc.diagnostics.codes', "
+             "'rdisc.semantics.regex_shape', 'rdisc.syntax.errors') if name in sys.modules])")
+    found = [subprocess.run([sys.executable, "-c", probe, "check", str(ROOT / "examples" / name)],
+                            capture_output=True, text=True, check=True).stdout for name in ("create.rdis", "koala.rdis")]
+    assert found == ["0 []\n", "0 ['string', 'rdisc.semantics.regex_shape']\n"]

@@ -195,3 +195,18 @@ def test_tokens_are_counted_across_blocks_of_lines_as_one_at_a_time() -> None:
 def test_doc_comment_runs_are_found_as_the_pattern_finds_them(text: str) -> None:
     assert [m.span() for m in parse_module._doc_runs(text)] == \
         [m.span() for m in parse_module._DOC_RUN.finditer(text)]
+
+
+def test_patterns_only_some_descriptions_need_are_compiled_when_first_needed() -> None:
+    """A string's escapes, bytes, a damaged declaration's name: their patterns are compiled for the
+    first description that has them (rdisc.patterns), not when rdisc is imported, and then kept."""
+    from rdisc import patterns
+    from rdisc.compile import compile_text
+
+    patterns.pattern.cache_clear()
+    compile_text("plain.rdis", 'robot r { author "a" }\nstate s: int = 1\n')
+    assert patterns.pattern.cache_info().currsize == 0
+    for _ in range(2):
+        compile_text("odd.rdis", 'robot r { author "a\\tb" }\nstate b: bytes = b"\\x01"\nstate s: int = \n')
+    # Escapes, bytes, and for the damaged `s` its name and a keyword read as a name (Lark's recovery): once each.
+    assert patterns.pattern.cache_info().currsize == 4

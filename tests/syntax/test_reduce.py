@@ -178,3 +178,81 @@ def test_a_skipped_terminal_begins_where_no_terminal_tried_before_it_can() -> No
             assert first(name)
             for earlier in tables.ROOT[:i]:
                 assert earlier in tables.IGNORED or not first(name) & first(earlier), (name, earlier)
+
+
+def _alternation(lexer: reduce.Lexer) -> re.Pattern[str]:
+    """A state's own pattern as Lark's contextual lexer compiles it: its terminals' alternation."""
+    return re.compile("|".join(f"(?P<{name}>{tables.TERMINALS[name]})" for name in lexer.terminals))
+
+
+def _fresh_lexers(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Every state's lexer as the first check of a process finds it: nothing compiled, never asked."""
+    monkeypatch.setattr(reduce, "_TERMINAL_MATCHES", {})
+    for lexer in reduce._LEXERS:
+        monkeypatch.setattr(lexer, "_tries", ())
+        monkeypatch.setattr(lexer, "_asked", 0)
+        monkeypatch.setattr(lexer, "_match", None)
+
+
+@pytest.mark.parametrize("alone", [10**9, 0], ids=["terminals-alone", "alternation"])
+def test_a_state_s_lexer_reads_what_its_alternation_reads(monkeypatch: pytest.MonkeyPatch, alone: int) -> None:
+    """Each terminal tried alone, in order (a literal compared as a string), and the alternation a
+    state compiles once asked often, find the terminal and the end Lark's alternation finds, at
+    each token of the examples and a few texts more."""
+    _fresh_lexers(monkeypatch)
+    monkeypatch.setattr(reduce, "ALONE", alone)
+    texts = [*SCANNED, "inputs input in 1..2 0x1F_ 1e5 b\"x\" r\"y\" <<= >>",
+             *(path.read_text(encoding="utf-8") for path in (ROOT / "examples" / "create.rdis", stdlib_path()))]
+    # Each token and the two characters after it, once each.
+    rests = sorted({text[begin:end + 2] for text in texts for _, begin, end in _root_tokens(text)})
+    assert len(rests) > 250
+    for lexer in reduce._LEXERS:
+        match = _alternation(lexer).match
+        for rest in rests:
+            hit = match(rest)
+            assert lexer.own(rest, 0) == (None if hit is None else (hit.lastgroup, hit.end())), rest
+
+
+def _compiled_patterns(monkeypatch: pytest.MonkeyPatch) -> list[str]:
+    """The patterns `re.compile` is asked for from now on (in this test)."""
+    compiled: list[str] = []
+    original = re.compile
+
+    def counted(pattern: Any, flags: int = 0) -> Any:
+        compiled.append(pattern)
+        return original(pattern, flags)
+
+    monkeypatch.setattr(re, "compile", counted)
+    return compiled
+
+
+def test_a_check_of_a_small_file_compiles_no_state_s_alternation(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Compiling the states' patterns was a third of a cold check of create.rdis: only single
+    terminals' patterns are compiled, once each, whichever states are met."""
+    _fresh_lexers(monkeypatch)
+    compiled = _compiled_patterns(monkeypatch)
+    asked = 0
+    original_own = reduce.Lexer.own
+
+    def own(lexer: reduce.Lexer, text: str, pos: int) -> tuple[str, int] | None:
+        nonlocal asked
+        asked += 1
+        return original_own(lexer, text, pos)
+
+    monkeypatch.setattr(reduce.Lexer, "own", own)
+    for path in (ROOT / "examples" / "create.rdis", stdlib_path()):
+        parse(str(path), path.read_text(encoding="utf-8"), Diagnostics())
+    assert asked > 30
+    singles = set(tables.TERMINALS.values())
+    assert [p for p in compiled if p not in singles] == [] and len(compiled) == len(set(compiled))
+
+
+def test_a_state_s_lexer_asked_often_compiles_its_alternation_once(monkeypatch: pytest.MonkeyPatch) -> None:
+    """A large description asks a few states thousands of times: past ALONE, a state's lexer reads
+    with its alternation, compiled once."""
+    _fresh_lexers(monkeypatch)
+    compiled = _compiled_patterns(monkeypatch)
+    lexer = next(lexer for lexer in reduce._LEXERS if "ADAPTER" in lexer.terminals and "NAME" not in lexer.terminals)
+    found = {lexer.own("adapter x", 0) for _ in range(reduce.ALONE * 3)}
+    assert found == {("ADAPTER", 7)}
+    assert [p for p in compiled if "|" in p and "(?P<ADAPTER>" in p] == [_alternation(lexer).pattern]

@@ -17,7 +17,6 @@ from rdisc.semantics.resolve import check_name
 from rdisc.semantics.types import Env, describe, unify
 from rdisc.source import Span
 from rdisc.syntax import ast
-from rdisc.syntax.printer import print_type
 
 MAX_BAUD = 100_000_000  # bit/s: no serial line is faster
 MAX_FREQUENCY_HZ = 10_000  # ticks a second of a connection's thread
@@ -201,6 +200,8 @@ class Declarations(Pieces):
         default = self.param_default(param, type_, low, high, "setting")
         default = self.given.get(decl.name.text, default)  # the value given when connecting stands for it
         if decl.default is None:
+            from rdisc.syntax.printer import print_type  # for the message: a clean check needs none
+
             self.d.report("E213", decl.name.span, f"setting `{decl.name.text}` has no default",
                           help=f"give the value it has when none is given: `setting {decl.name.text}: "
                           f"{print_type(decl.type)} = ...`; the checks and the link budget use it")
