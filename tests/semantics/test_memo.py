@@ -207,3 +207,24 @@ def test_interfaces_near_the_bound_of_all_calls_are_checked_each_time_and_once(t
     assert [d.code for d in editor.check(text).diagnostics.items] == ["E212"]  # move_3: 503 calls before it, 199 in its loop
     same_as_fresh(editor, text.replace("0..198", "0..189"))  # 693: within the bound
     assert [d.code for d in editor.check(text.replace("0..198", "0..189")).diagnostics.items] == []
+
+
+def test_what_a_check_made_goes_to_the_oldest_generation_without_a_collection(tmp_path: Path) -> None:
+    """The first young collection after a check would pass over everything it made (a third of
+    an editor's check when most declarations moved): it is put in the oldest generation at once."""
+    import gc
+
+    passes: list[int] = []
+
+    def watch(phase: str, info: dict[str, int]) -> None:
+        if phase == "start":
+            passes.append(info["generation"])
+
+    assert gc.isenabled()
+    gc.callbacks.append(watch)
+    try:
+        compile_text(str(tmp_path / "big.rdis"), BIG)
+        young = gc.get_count()[0]
+    finally:
+        gc.callbacks.remove(watch)
+    assert passes == [] and young < 50 and gc.isenabled()
