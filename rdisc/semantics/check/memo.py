@@ -118,7 +118,8 @@ class Unmoved(Exception):
     """A span of a kept check lies in text not kept: the check is made again."""
 
 
-_ATOMS = frozenset({str, int, float, bytes, bool, type(None), frozenset})
+# Taken as they are: values, and the classes found to be no node (enums, patterns), added as found.
+_ATOMS = {str, int, float, bytes, bool, type(None), frozenset}
 _FIELDS: dict[type, tuple[str, ...] | None] = {}
 _setattr = object.__setattr__
 _new = object.__new__
@@ -134,6 +135,9 @@ class Shift:
         # id(old) → new; the old nodes are held by the parser's pairs and the Memo's kept checks.
         self.now: dict[int, object] = {id(old): new for file in moved.values() for old, new in file.pairs}
         self.before: dict[int, object] = {id(new): old for file in moved.values() for old, new in file.pairs}
+        self.spans: dict[int, Span] = {}  # id(old span) → new, of the declarations the parser moved
+        for file in moved.values():
+            self.spans.update(file.spans)
 
     def is_now(self, new: object, old: object) -> bool:
         return new is old or self.now.get(id(old)) is new
@@ -151,9 +155,6 @@ class Shift:
         moved = self.moved.get(span.path)
         if moved is None:
             raise Unmoved
-        found = moved.spans.get(id(span))
-        if found is not None:  # a span of a declaration's syntax tree, as the parser moved it
-            return found
         starts, start, end = moved.starts, span.start, span.end
         i = bisect_right(starts, start) - 1
         if i < 0 or end > moved.ends[i] or (start == end == starts[i] and i > 0 and moved.ends[i - 1] == start
@@ -174,8 +175,8 @@ class Shift:
         cls = node.__class__
         if cls in _ATOMS:
             return node
-        if cls is Span:
-            return self.span(node)  # not kept in `now`: the same span is often made twice, and is a value
+        if cls is Span:  # not kept in `now`: a value; most are a moved syntax tree's (`spans`)
+            return self.spans.get(id(node)) or self.span(node)
         now = self.now
         found = now.get(id(node))
         if found is not None:
@@ -192,11 +193,19 @@ class Shift:
             if names == ():
                 names = _FIELDS[cls] = tuple(getattr(cls, "__dataclass_fields__", ())) or None
             if names is None:  # not a node: an enum member, a compiled pattern
+                _ATOMS.add(cls)
                 return node
             made = _new(cls)
+            spans = self.spans
             for name in names:
                 value = getattr(node, name)
-                _setattr(made, name, value if value.__class__ in _ATOMS else copy(value))
+                kind = value.__class__
+                if kind in _ATOMS:
+                    _setattr(made, name, value)
+                elif kind is Span:
+                    _setattr(made, name, spans.get(id(value)) or self.span(value))
+                else:
+                    _setattr(made, name, copy(value))
         now[id(node)] = made
         return made
 
