@@ -26,6 +26,7 @@ from operator import is_
 from typing import TYPE_CHECKING, Any, TypeVar
 
 from rdisc.diagnostics import Diagnostic, Label
+from rdisc.frozen import field_names
 from rdisc.semantics import model as m
 from rdisc.semantics.check.interfaces import MAX_UNROLLED, MAX_UNROLLED_ALL
 from rdisc.semantics.check.pieces import Pieces
@@ -177,8 +178,8 @@ class Shift:
             return node
         if cls is Span:  # not kept in `now`: a value; most are a moved syntax tree's (`spans`)
             return self.spans.get(id(node)) or self.span(node)
-        now = self.now
-        found = now.get(id(node))
+        now, key = self.now, id(node)
+        found = now.get(key)
         if found is not None:
             return found
         copy = self.copy
@@ -191,7 +192,7 @@ class Shift:
         else:
             names = _FIELDS.get(cls, ())
             if names == ():
-                names = _FIELDS[cls] = tuple(getattr(cls, "__dataclass_fields__", ())) or None
+                names = _FIELDS[cls] = field_names(node) or None
             if names is None:  # not a node: an enum member, a compiled pattern
                 _ATOMS.add(cls)
                 return node
@@ -206,7 +207,7 @@ class Shift:
                     _setattr(made, name, spans.get(id(value)) or self.span(value))
                 else:
                     _setattr(made, name, copy(value))
-        now[id(node)] = made
+        now[key] = made
         return made
 
     def kept(self, kept: Kept, decl: object, depends: tuple[object, ...]) -> Kept | None:
