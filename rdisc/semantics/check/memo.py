@@ -217,19 +217,20 @@ class Shift:
         for new, old in zip(depends, kept.depends):  # what it read, as it is now (itself, where it did not move)
             now.setdefault(id(old), new)
         now.setdefault(id(kept.decl), decl)
-        constants: list[tuple[int, Any]] = []
         try:
             result = self.copy(kept.result)
             reports = [self.copy(report) for report in kept.reports]
-            for key, value in kept.constants:
-                if value is _POPPED:
-                    found = now.get(key)
-                    constants.append((key if found is None else id(found), _POPPED))
-                else:
-                    made = self.copy(value[0])
-                    constants.append((id(made), (made, value[1])))
         except Unmoved:
             return None
+        # The constants it folded, each of a node now copied by its copy; one in neither its result
+        # nor its reports is held by no one else, and nothing asks about it: it stays.
+        constants: list[tuple[int, Any]] = []
+        for key, value in kept.constants:
+            found = now.get(key)
+            if found is None:
+                constants.append((key, value))
+            else:
+                constants.append((id(found), value if value is _POPPED else (found, value[1])))
         return Kept(decl, depends, result, reports, constants, kept.reads, kept.failed_reads, kept.written)
 
 
