@@ -17,6 +17,7 @@ from collections import Counter
 from typing import Any, TypeVar
 
 from rdisc.diagnostics import Diagnostics
+from rdisc.frozen import field_names
 from rdisc.source import Span
 from rdisc.syntax import ast
 from rdisc.syntax.build import Builder
@@ -157,7 +158,7 @@ def _shifted(node: Any, by: int, spans: dict[int, Span]) -> Any:
         return made
     names = _FIELDS.get(cls)
     if names is None:
-        names = _FIELDS[cls] = tuple(cls.__dataclass_fields__)  # a node of rdisc.syntax.ast
+        names = _FIELDS[cls] = field_names(node)  # a node of rdisc.syntax.ast
     made = _new(cls)
     for name in names:
         value = getattr(node, name)
