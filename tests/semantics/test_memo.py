@@ -96,6 +96,20 @@ def test_a_moved_check_reports_its_faults_where_they_now_are(tmp_path: Path) -> 
     assert [moved[label.span.start:label.span.end] for label in call.labels] == ["set_7"]
 
 
+def test_a_declaration_written_twice_checks_as_a_fresh_check_where_it_moves(tmp_path: Path) -> None:
+    """Two declarations of the same text came from one old one: where its spans went is not one
+    place, so neither is taken from it shifted."""
+    editor = Editor(str(tmp_path / "big.rdis"))
+    start = BIG.index("/// Set register 5.")
+    block = BIG[start:BIG.index("/// Set register 6.")]
+    twice = BIG + block
+    same_as_fresh(editor, BIG)
+    same_as_fresh(editor, twice)
+    same_as_fresh(editor, "# moved\n" + twice)
+    same_as_fresh(editor, "# moved\n" + BIG[:start] + block + BIG[start:])
+    assert sorted({d.code for d in editor.check("# moved\n" + twice).diagnostics.items}) == ["E101"]  # declared twice
+
+
 def test_a_reused_check_reports_its_faults_again(tmp_path: Path) -> None:
     editor = Editor(str(tmp_path / "big.rdis"))
     broken = BIG.replace("set_7(round(value * 1000))", "set_7(value * 1000)").replace('unit "mm"', 'unit "mmm"', 1)
