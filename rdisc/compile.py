@@ -155,6 +155,8 @@ def compile_text(path: str, text: str, diagnostics: Diagnostics | None = None,
     diagnostics = diagnostics if diagnostics is not None else Diagnostics()
     sources = Sources()
     sources.add(path, text)
+    if memo is not None:  # how each file the parser reads moved since its last parse, for the checks kept
+        memo.moved = getattr(parser, "moved", {})
     tokens = _Tokens(max_tokens, parser)
     if path.endswith(".json"):
         from rdisc.json_import.document import read
@@ -166,8 +168,6 @@ def compile_text(path: str, text: str, diagnostics: Diagnostics | None = None,
         return Compilation(None, diagnostics, sources)
     units: list[Unit] = []
     _add_unit(main, True, diagnostics, sources, units, tokens)
-    if memo is not None:  # what moved since the parser's last parse, for the checks kept
-        memo.moved = getattr(parser, "moved", {})
     return _analyse(units, diagnostics, sources, main, memo)
 
 
