@@ -6,13 +6,18 @@ starts. A `Reparser` keeps each declaration's nodes by its text and doc comment:
 declaration is taken from the last parse, its spans shifted by how far it moved, and only the
 others are parsed. A declaration that reported anything, or was damaged, is not kept (its
 messages are made again by parsing it again). The module equals `parse`'s, spans included.
+
+What moved is written down (`Moved`), so the checks kept of a declaration that only moved are
+taken again with their spans shifted the same way (rdisc.semantics.check.memo).
 """
 
 from __future__ import annotations
 
+from collections import Counter
 from typing import Any, TypeVar
 
 from rdisc.diagnostics import Diagnostics
+from rdisc.frozen import field_names
 from rdisc.source import Span
 from rdisc.syntax import ast
 from rdisc.syntax.build import Builder
@@ -27,6 +32,27 @@ from rdisc.syntax.parse import (
 
 Node = TypeVar("Node")
 _setattr = object.__setattr__
+_new = object.__new__
+
+
+class Moved:
+    """How the last parse of a file took its declarations from the parse before: each one taken
+    (old node, new node) where it moved, each old span of those to its new span (`spans`, by id;
+    the old nodes held by `pairs`), and every text kept, as the old offsets it covered (`starts`,
+    `ends`, in order) and how far it moved (`deltas`). A text found twice is left out: where its
+    old spans went is not one place."""
+
+    __slots__ = ("deltas", "ends", "pairs", "spans", "starts")
+
+    def __init__(self, taken: list[tuple[int, int, int, tuple[ast.Decl, ...], tuple[ast.Decl, ...]]],
+                 spans: dict[int, Span]) -> None:
+        twice = {at for at, count in Counter(item[0] for item in taken).items() if count > 1}
+        once = sorted((item for item in taken if item[0] not in twice), key=lambda item: item[0])
+        self.starts = [at for at, _, _, _, _ in once]
+        self.ends = [at + length for at, length, _, _, _ in once]
+        self.deltas = [start - at for at, _, start, _, _ in once]
+        self.pairs = [pair for at, _, start, old, new in once if at != start for pair in zip(old, new)]
+        self.spans = spans if not twice else {}
 
 
 class Reparser:
@@ -38,6 +64,7 @@ class Reparser:
         self.reused = 0  # declarations taken from the file's last parse, by the last parse (for tests)
         self.counted: dict[str, int] = {}  # the tokens of each declaration's text, as counted
         self.cut: tuple[str, tuple[list[tuple[int, int]], dict[int, str]]] | None = None  # the last text's pieces
+        self.moved: dict[str, Moved] = {}  # of each file's last parse, by path
 
     def __call__(self, path: str, text: str, diagnostics: Diagnostics) -> ast.Module:
         return self.parse(path, text, diagnostics)
@@ -73,6 +100,7 @@ class Reparser:
         """What `parse(path, text, diagnostics)` gives, reusing the declarations kept."""
         if len(text) > MAX_FILE_CHARS:
             self.files.pop(path, None)
+            self.moved.pop(path, None)
             return parse(path, text, diagnostics)
         last = self.files.get(path, {})
         bounds, docs = self.pieces(text)
@@ -81,13 +109,15 @@ class Reparser:
         damaged: list[ast.Damaged] = []
         errors = reused = 0
         kept: dict[tuple[str, str | None], tuple[int, tuple[ast.Decl, ...]]] = {}
+        taken: list[tuple[int, int, int, tuple[ast.Decl, ...], tuple[ast.Decl, ...]]] = []
+        spans: dict[int, Span] = {}
         for i, (start, end) in enumerate(bounds):
             key = (text[start:end], docs.get(start))
             found = last.get(key)
             if found is not None:
-                at, made = found
-                if at != start:
-                    made = tuple(shifted(decl, start - at) for decl in made)
+                at, old = found
+                made = old if at == start else tuple([_shifted(decl, start - at, spans) for decl in old])
+                taken.append((at, end - start, start, old, made))
                 decls.extend(made)
                 kept[key] = (start, made)
                 reused += 1
@@ -98,7 +128,7 @@ class Reparser:
                 errors += 1
             elif len(diagnostics.items) == reported and len(damaged) == first_damaged:
                 kept[key] = (start, tuple(decls[first:]))
-        self.files[path], self.reused = kept, reused
+        self.files[path], self.reused, self.moved[path] = kept, reused, Moved(taken, spans)
         return ast.Module(path, tuple(decls), tuple(damaged))
 
 
@@ -108,24 +138,40 @@ _ATOMS = frozenset({str, int, float, bytes, bool, type(None)})
 
 def shifted(node: Node, by: int) -> Node:
     """A copy of a syntax tree with each span `by` characters later (earlier if negative)."""
-    cls: Any = node.__class__
-    if cls is tuple:
-        return tuple([_shifted(item, by) for item in node])  # type: ignore[attr-defined,return-value]
-    return _shifted(node, by)  # type: ignore[no-any-return]
-
-
-def _shifted(node: Any, by: int) -> Any:
-    cls = node.__class__
-    if cls in _ATOMS:
+    if node.__class__ in _ATOMS:
         return node
-    if cls is Span:
-        return Span(node.path, node.start + by, node.end + by)
+    return _shifted(node, by, {})  # type: ignore[no-any-return]
+
+
+def _shifted(node: Any, by: int, spans: dict[int, Span]) -> Any:
+    """`shifted`, writing each new span in `spans` by its old span's id (a span made here, not by
+    a call: a third of the nodes are spans)."""
+    cls = node.__class__
     if cls is tuple:
-        return tuple([_shifted(item, by) for item in node])
+        return tuple([item if item.__class__ in _ATOMS else _shifted(item, by, spans) for item in node])
+    if cls is Span:
+        made = _new(Span)
+        _setattr(made, "path", node.path)
+        _setattr(made, "start", node.start + by)
+        _setattr(made, "end", node.end + by)
+        spans[id(node)] = made
+        return made
     names = _FIELDS.get(cls)
     if names is None:
-        names = _FIELDS[cls] = tuple(cls.__dataclass_fields__)  # a node of rdisc.syntax.ast
-    made = object.__new__(cls)
+        names = _FIELDS[cls] = field_names(node)  # a node of rdisc.syntax.ast
+    made = _new(cls)
     for name in names:
-        _setattr(made, name, _shifted(getattr(node, name), by))
+        value = getattr(node, name)
+        kind = value.__class__
+        if kind is Span:
+            span = _new(Span)
+            _setattr(span, "path", value.path)
+            _setattr(span, "start", value.start + by)
+            _setattr(span, "end", value.end + by)
+            spans[id(value)] = span
+            _setattr(made, name, span)
+        elif kind in _ATOMS:
+            _setattr(made, name, value)
+        else:
+            _setattr(made, name, _shifted(value, by, spans))
     return made
