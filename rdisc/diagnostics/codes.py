@@ -680,8 +680,9 @@ An actuator is what drives a joint between the device's command and the joint
 NAME: wheel { ... }` a velocity-controlled motor. Its items, each at most once and
 each a constant number more than 0: `velocity` (rad/s or m/s) and `acceleration`
 (rad/s² or m/s²), the limits its commands are shaped to, `effort` (N m or N), and
-for a servo its simulated `gain` (N m/rad) and `damping` (N m s/rad). A
-transmission names it, `transmission T: JOINT actuator NAME { ... }`; one actuator
+for a servo its simulated `gain` (N m/rad) and `damping` (N m s/rad); and `limit
+shape` (the default: a command beyond a limit is slowed to it) or `limit refuse`
+(it is refused, nothing written), a word. A transmission names it, `transmission T: JOINT actuator NAME { ... }`; one actuator
 drives one joint, and a servo is commanded a `position`, a wheel a `velocity`.
 Wrong: `actuator m: wheel { gain 5 }`, or one actuator named by two transmissions.
 Right: `actuator m: servo { velocity 4.8  effort 4.1 }`."""),

@@ -13,6 +13,7 @@ from collections import deque
 from collections.abc import Callable, Iterator, Mapping
 from typing import Any
 
+from rdisc.engine.actuation import Actuated
 from rdisc.engine.arguments import _accept_param, _accepted, _bind, _widen, bind_settings
 from rdisc.engine.errors import RdisConnectionError, RdisError, RdisTimeout, RdisValueError
 from rdisc.engine.exchange import Exchange
@@ -163,6 +164,7 @@ class Robot(Exchange):
         self._clock: Callable[[], float] = time.monotonic  # the schedule's time, and the delays'
         self._sleep: Callable[[float], None] = self._delay
         self._sensed = SensorCache()
+        self._actuated = Actuated()  # what each actuator was last given, by the robot's clock
         self._choose_write()
 
     # ---- callbacks --------------------------------------------------------------------------------
@@ -700,14 +702,16 @@ class Robot(Exchange):
         self._exchange(*self._planned(plan, args))
 
     def _planned(self, plan: Primitive, args: Args) -> tuple[Primitive, Args, Args]:
-        """A primitive's parameters checked (ints made floats, ranges), its reply table's entry
-        chosen: that plan, its format values and the parameters' values."""
+        """A primitive's parameters checked (ints made floats, ranges) and held to its actuators'
+        limits, its reply table's entry chosen: that plan, its format values and the parameters' values."""
         for i in plan.floats:
             if type(args[i]) is int:
                 _widen(plan.name, plan.floats, args)
                 break
         if plan.ranged:
             _check_ranges(plan.name, plan.params, plan.ranged, args)
+        if plan.actuators:  # shaped to the actuators' limits, or refused (`actuation`)
+            args = self._actuated.limited(plan.actuators, args, self._clock())
         if isinstance(plan.reply, KeyedReply):
             plan = plan.reply.entry(args)
         try:

@@ -17,6 +17,7 @@ from rdisc.syntax import ast
 
 _KINDS = {k.value: k for k in m.ActuatorKind}
 KEYS = ("velocity", "acceleration", "effort", "gain", "damping")
+LIMITS = ("shape", "refuse")  # `limit shape` (the default) or `limit refuse`: what a command beyond a limit meets
 _COMMANDED = {m.ActuatorKind.SERVO: m.Quantity.POSITION, m.ActuatorKind.WHEEL: m.Quantity.VELOCITY}
 
 
@@ -29,9 +30,10 @@ def actuator(d: Diagnostics, body: BodyRules, decl: ast.ActuatorDecl) -> m.Actua
         d.report("E620", decl.kind.span, f"unknown actuator kind `{decl.kind.text}`",
                  help=suggest(decl.kind.text, _KINDS) or "actuators are " + ", ".join(_KINDS))
     for item in decl.items:
-        if item.key not in KEYS:
+        if item.key not in KEYS and item.key != "limit":
             d.report("E620", item.span, f"an actuator has no `{item.key}`",
-                     help=suggest(item.key, KEYS) or "its items are " + ", ".join(KEYS))
+                     help=suggest(item.key, (*KEYS, "limit")) or "its items are " + ", ".join((*KEYS, "limit")))
+    refuse = limit(d, body, decl) == "refuse"
     values: dict[str, float | None] = {}
     for key in KEYS:
         expr = body.once(decl.items, key, decl.name)
@@ -51,7 +53,24 @@ def actuator(d: Diagnostics, body: BodyRules, decl: ast.ActuatorDecl) -> m.Actua
     if kind is None:
         return None
     return m.Actuator(decl.name.text, kind, values["velocity"], values["acceleration"], values["effort"],
-                      values["gain"], values["damping"], decl.doc, decl.span)
+                      values["gain"], values["damping"], decl.doc, decl.span, refuse)
+
+
+def limit(d: Diagnostics, body: BodyRules, decl: ast.ActuatorDecl) -> str:
+    """`limit shape` or `limit refuse`, a word, not a value: what a command beyond the limits meets."""
+    from rdisc.semantics.resolve import suggest
+
+    expr = body.once(decl.items, "limit", decl.name)
+    if expr is None:
+        return "shape"
+    word = expr.name if isinstance(expr, ast.Ref) else None
+    if word not in LIMITS:
+        shown = f"`{word}`" if word is not None else "a value"
+        d.report("E620", expr.span, f"an actuator's limit is `shape` or `refuse`, not {shown}",
+                 help=(suggest(word, LIMITS) if word is not None else None)
+                 or "`limit shape` slows a command to the limits, `limit refuse` refuses it")
+        return "shape"
+    return word
 
 
 def bind(d: Diagnostics, decls: dict[str, ast.TransmissionDecl], actuators: dict[str, m.Actuator],
