@@ -309,11 +309,14 @@ class Robot(Exchange):
     def request(self, name: str, /, *args: Any) -> bytes:
         """The bytes primitive `name` would write for these arguments (framed, after every check
         a call makes), neither written nor needing a port: what `rdisc dump --args` shows. b""
-        for a primitive that writes nothing (a listener). Errors are raised as a call's."""
+        for a primitive that writes nothing (a listener). Errors are raised as a call's. Its
+        actuators' limits hold it as the first command they are given (a wheel's speed within its
+        velocity), and the commands after it are held to the ones written, not to it."""
         plan = self.device.primitives.get(name)
         if plan is None:
             raise KeyError(f"{self.name} has no primitive named {name!r}")
-        plan, values, local = self._planned(plan, _accepted(f"primitive {plan.name}", plan.params, list(args)))
+        given = _accepted(f"primitive {plan.name}", plan.params, list(args))
+        plan, values, local = self._planned(plan, given, Actuated())  # as a first command: no actuator moved
         return self._request(plan, values, local)[0]
 
     def send_raw(self, connection: str, data: bytes, /, *, quiet: float = _RAW_QUIET) -> bytes:
@@ -701,9 +704,10 @@ class Robot(Exchange):
         """A primitive the general way: its parameters checked, its reply table's entry chosen."""
         self._exchange(*self._planned(plan, args))
 
-    def _planned(self, plan: Primitive, args: Args) -> tuple[Primitive, Args, Args]:
+    def _planned(self, plan: Primitive, args: Args, actuated: Actuated | None = None) -> tuple[Primitive, Args, Args]:
         """A primitive's parameters checked (ints made floats, ranges) and held to its actuators'
-        limits, its reply table's entry chosen: that plan, its format values and the parameters' values."""
+        limits (`actuated`: what they were last given, else the robot's), its reply table's entry
+        chosen: that plan, its format values and the parameters' values."""
         for i in plan.floats:
             if type(args[i]) is int:
                 _widen(plan.name, plan.floats, args)
@@ -711,7 +715,7 @@ class Robot(Exchange):
         if plan.ranged:
             _check_ranges(plan.name, plan.params, plan.ranged, args)
         if plan.actuators:  # shaped to the actuators' limits, or refused (`actuation`)
-            args = self._actuated.limited(plan.actuators, args, self._clock())
+            args = (actuated or self._actuated).limited(plan.actuators, args, self._clock())
         if isinstance(plan.reply, KeyedReply):
             plan = plan.reply.entry(args)
         try:
