@@ -773,6 +773,15 @@ MuJoCo twin steps it, it diverges once that is more than 2 + 2 sqrt(2) rad a ste
 the link chatters and reads nonsense. A 5 g servo horn (2e-6 kg m²) follows a gain
 of at most 12 N m/rad. Wrong: `gain 82` on that horn. Right: leave `gain` out, and
 the simulation derives one from the actuator's effort and the link's inertia."""),
+    ("W622", "unlimited-command", """
+An actuator's `velocity` and `acceleration` hold the commands its transmission
+gives (`limit shape` slows them, `limit refuse` refuses them) where the engine can
+put them in the device's units: a primitive's parameter, through a conversion that
+is a ratio (`raw = round(position * K) + C`). A command through an interface's
+parameter, or through any other conversion (a wrap with `%`, a condition, a table),
+is written as it is given, however fast. Wrong: `command position to move.angle`
+(an interface) with `actuator m: servo { velocity 2 }`. Right: `command position to
+servo.goal { raw = round(position * 651.9) + 2048 ... }`."""),
     ("W402", "period-too-short", """
 A schedule's period is shorter than the exchange it runs: the bytes on the wire
 plus the declared delays of the periodic interfaces (per tick) or of the

@@ -9,15 +9,7 @@ from __future__ import annotations
 from rdisc import engine
 from rdisc.lowering.constructs import Construct
 from rdisc.semantics import model as m
-from rdisc.semantics.linear import ratio
-
-_LIMITED = (m.Quantity.POSITION, m.Quantity.VELOCITY)
-
-
-def limited(model: m.Model, binding: m.Binding) -> bool:
-    """Whether the engine holds this command to its actuator's limits: a primitive's parameter,
-    a position or a velocity, converted by a ratio."""
-    return not binding.interface and binding.quantity in _LIMITED and ratio(binding) is not None
+from rdisc.semantics.linear import limited, ratio
 
 
 def actuator_limits(model: m.Model) -> dict[str, tuple[Construct[engine.ActuatorLimit], ...]]:
@@ -31,7 +23,7 @@ def actuator_limits(model: m.Model) -> dict[str, tuple[Construct[engine.Actuator
         unit = "m" if joint is not None and joint.kind is m.JointKind.PRISMATIC else "rad"
         for binding in transmission.commands:
             line = ratio(binding)
-            if line is None or not limited(model, binding):
+            if line is None or not limited(binding):
                 continue
             params = [p.name for p in model.primitives[binding.target].params]
             param = params.index(binding.parameter) if binding.parameter in params else 0

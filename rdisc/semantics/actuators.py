@@ -12,6 +12,7 @@ from rdisc.diagnostics import Diagnostics, Label
 from rdisc.emit.mjcf import TIMESTEP
 from rdisc.semantics import model as m
 from rdisc.semantics.body import BodyRules
+from rdisc.semantics.linear import limited
 from rdisc.semantics.reflected import STABLE_STEP, joint_inertia, steps_per_period
 from rdisc.syntax import ast
 
@@ -54,6 +55,19 @@ def actuator(d: Diagnostics, body: BodyRules, decl: ast.ActuatorDecl) -> m.Actua
         return None
     return m.Actuator(decl.name.text, kind, values["velocity"], values["acceleration"], values["effort"],
                       values["gain"], values["damping"], decl.doc, decl.span, refuse)
+
+
+def _unlimited(d: Diagnostics, decl: ast.TransmissionDecl, motor: m.Actuator, transmission: m.Transmission) -> None:
+    """W622: a command of the transmission the engine cannot hold to its actuator's limits."""
+    for binding in transmission.commands:
+        if binding.quantity is not _COMMANDED[motor.kind] or limited(binding):
+            continue  # another quantity is E620
+        why = ("it gives an interface's parameter" if binding.interface
+               else "its conversion is not a ratio (`raw = round(position * K) + C`)")
+        d.report("W622", binding.span or decl.span,
+                 f"actuator `{motor.name}`'s limits do not hold transmission `{transmission.name}`'s command of "
+                 f"`{binding.place()}`: {why}", help="commands beyond its `velocity` or `acceleration` are written "
+                 "as they are: command a primitive's parameter, through a ratio")
 
 
 def limit(d: Diagnostics, body: BodyRules, decl: ast.ActuatorDecl) -> str:
@@ -99,6 +113,8 @@ def bind(d: Diagnostics, decls: dict[str, ast.TransmissionDecl], actuators: dict
             d.report("E620", decl.actuator.span, f"a {motor.kind.value} is commanded a {want.value}, but "
                      f"transmission `{name}` commands its {wrong.quantity.value}",
                      help=f"`command {want.value} to ...`, or an actuator of another kind")
+        if motor.velocity is not None or motor.acceleration is not None:
+            _unlimited(d, decl, motor, transmission)
         if motor.kind is m.ActuatorKind.SERVO and motor.gain is not None:
             if inertia is None:
                 inertia = joint_inertia(links, joints)

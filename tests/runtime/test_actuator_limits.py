@@ -9,12 +9,15 @@ the test's; what is written is read on a pseudo-terminal, byte for byte.
 from __future__ import annotations
 
 import importlib.util
+import re
+import subprocess
 import sys
 from collections.abc import Callable, Iterator
 from pathlib import Path
 from typing import Any
 
 import pytest
+from conftest import cli_env, run_rdisc
 from devices import pty_device
 from runtime_support import DATA, REPO
 
@@ -185,3 +188,29 @@ def test_the_arm_s_joint_state_input_is_shaped_joint_by_joint(way, device, tmp_p
     moved = oracle.request("sync_goal", [2048 + 313, 2048, 2048, 2048, 2048, 2048 - 65])  # 0.48 rad; 0.1 rad
     off = oracle.request("sync_torque", [0] * 6)
     _written(device, torque + still + moved + off)
+
+
+REFUSED = re.compile(r"(.+): RdisLimitError: actuator guard_motor: a position of 4\.88 rad [0-9.e-]+ s after 0 rad "
+                     r"moves at [0-9.e+]+ rad/s, over its velocity limit of 2 rad/s: not written \(`limit refuse`\)")
+
+
+def test_rdisc_run_and_the_driver_s_command_line_stop_at_a_refused_call(device, tmp_path) -> None:
+    """`rdisc run` and the driver's own command line: a call beyond the limits ends the run (exit 1)
+    with the refusal, after the call before it was written and before the call after it."""
+    calls = ("--call", "guard", "goal=512", "--call", "guard", "goal=1000", "--call", "wheel", "speed=40")
+    compilation = compile_path(str(LIMITS))
+    assert compilation.model is not None
+    driver = tmp_path / "limits_driver.py"
+    driver.write_text(to_python(compilation.model, LIMITS.name), encoding="utf-8")
+    ran = run_rdisc("run", LIMITS, "--port", device.port, *calls)
+    assert ran.returncode == 1
+    said = REFUSED.fullmatch(ran.stderr.strip())
+    assert said is not None and said[1] == "rdisc run", ran.stderr
+    assert device.wait_for(3, timeout=5.0) == bytes.fromhex("04 0200")
+    device.clear()
+    done = subprocess.run([sys.executable, str(driver), "--port", device.port, *calls], capture_output=True, text=True,
+                          env=cli_env(), timeout=60, check=False)
+    assert done.returncode == 1
+    said = REFUSED.fullmatch(done.stderr.strip())
+    assert said is not None, done.stderr
+    assert device.wait_for(3, timeout=5.0) == bytes.fromhex("04 0200")
