@@ -137,6 +137,7 @@ class Robot(Exchange):
         self._state: dict[str, Value] = dict(device.state)
         self._state_lock = threading.Lock()
         self._callback_lock = threading.RLock()  # callbacks run one at a time
+        self._ticking = threading.local()  # `.port`: what this thread's tick holds whole (`threading single`)
         self._output_callbacks: list[OutputCallback] = []
         self._filters = {}
         self._read_ns: int | None = None  # when a reply last changed the state

@@ -3040,6 +3040,7 @@ class _Owner(Protocol):
     _clock: Callable[[], float]
     _closed: bool
     _run_callbacks: list[Callable[[str, str, str], object]]
+    _ticking: threading.local
 
     @property
     def _ports(self) -> Mapping[str, _Port]: ...
@@ -3098,15 +3099,20 @@ class _Worker:
         """One iteration: each periodic interface, then the keepalive if it is due. Errors go
         to the error callbacks, and the schedule goes on. Under `single` the tick holds the
         port (re-entrant: its exchanges take it again), so another thread's command waits for
-        the whole tick; one made by a callback on this thread goes in between."""
+        the whole tick; one made by a callback on this thread goes in between. Only while it
+        waits for the callbacks' turn, which a callback on another thread may hold while it
+        commands the robot, does the tick let the port go."""
         port = self.robot._ports.get(self.connection.name) if self.whole else None
         if port is None:  # dual, multiple, or a simulated device: no port to hold
             self._tick()
             return
         port.lock.acquire()
+        ticking = self.robot._ticking
+        ticking.port = port  # the callbacks' turn lets it go while it waits (`Exchange._take_turn`)
         try:
             self._tick()
         finally:
+            ticking.port = None
             port.lock.release()
 
     def _tick(self) -> None:
@@ -3199,6 +3205,7 @@ class Exchange:
     _read_ns: int | None  # when a reply last changed the state (ns since the epoch); None: none has
     _state_lock: threading.Lock
     _callback_lock: threading.RLock
+    _ticking: threading.local  # `.port`: the port this thread's tick holds whole (`threading single`), else None
     _filters: dict[tuple[str, str], KalmanFilter]  # (output, field): its running filter, made when first delivered
     _output_callbacks: list[OutputCallback]
     _error_callbacks: list[ErrorCallback]
@@ -3983,7 +3990,8 @@ class Exchange:
         except EVAL_ERRORS as err:
             raise RdisValueError(f"{plan.name}: {err}") from None
         message = OutputMessage(plan.name, contents, time.time_ns() if read_ns is None else read_ns)
-        with self._callback_lock:
+        port = self._take_turn()
+        try:
             if plan.filters:
                 message = OutputMessage(plan.name, self._filtered(plan, contents), message.read_ns)
             for callback in list(self._output_callbacks):
@@ -3993,6 +4001,29 @@ class Exchange:
                     error = RdisCallbackError(f"{plan.name}: output callback raised {type(err).__name__}: {err}")
                     error.__cause__ = err
                     self._report(error)
+        finally:
+            self._end_turn(port)
+
+    def _take_turn(self) -> _Port | None:
+        """The callbacks' turn (they run one at a time, under the callback lock). A tick that holds
+        its port whole (`threading single`) and finds the turn taken lets the port go while it
+        waits and runs the callbacks: the turn may be a callback's on another thread that is
+        commanding the robot, which waits for the port. Returns that port, to take back after."""
+        lock = self._callback_lock
+        if lock.acquire(blocking=False):
+            return None
+        port: _Port | None = getattr(self._ticking, "port", None)
+        if port is not None:
+            port.lock.release()
+        lock.acquire()
+        return port
+
+    def _end_turn(self, port: _Port | None) -> None:
+        """The turn's end: the callback lock let go, then the tick's port taken back (never the
+        port while holding the turn: a host's call holding its port may wait for the turn)."""
+        self._callback_lock.release()
+        if port is not None:
+            port.lock.acquire()
 
     def _filtered(self, plan: Output, contents: dict[str, Value]) -> dict[str, Value]:
         """The fields a Kalman filter estimates, each filter stepped once by the value delivered
@@ -4020,7 +4051,8 @@ class Exchange:
         """The events queued, in order, to the callbacks, one at a time: the I/O callbacks every
         one but "skip", the trace callbacks every one with its stamp. A thread shows another's
         events that came before its own and are not shown yet (so a line never jumps the queue)."""
-        with self._callback_lock:
+        port = self._take_turn()
+        try:
             while True:
                 with self._events_lock:
                     if not self._events:
@@ -4029,6 +4061,8 @@ class Exchange:
                 if kind != "skip":
                     self._notify(self._io_callbacks, connection, kind, connection, data)
                 self._notify(self._trace_callbacks, connection, when, kind, connection, data)
+        finally:
+            self._end_turn(port)
 
     def _notify(self, callbacks: Sequence[Callable[..., object]], connection: str, *event: Any) -> None:
         for callback in list(callbacks):
@@ -4041,12 +4075,16 @@ class Exchange:
 
     def _notify_run(self, connection: str, kind: str, name: str) -> None:
         """Tell a recorder that a connection's thread starts a periodic interface or its keepalive."""
-        with self._callback_lock:
+        port = self._take_turn()
+        try:
             for callback in list(self._run_callbacks):
                 callback(connection, kind, name)
+        finally:
+            self._end_turn(port)
 
     def _report(self, error: BaseException) -> None:
-        with self._callback_lock:
+        port = self._take_turn()
+        try:
             callbacks = list(self._error_callbacks)
             if not callbacks:
                 _log.warning("%s: %s: %s", self.name, type(error).__name__, error)
@@ -4055,6 +4093,8 @@ class Exchange:
                     callback(error)
                 except Exception:  # noqa: BLE001, S110 - the contract: an error callback's failure is ignored
                     pass
+        finally:
+            self._end_turn(port)
 
 
 def _unwatched_write(robot: Exchange, ports: Mapping[str, _Port]) -> Callable[[Primitive, bytes], None]:
@@ -4327,6 +4367,7 @@ class Robot(Exchange):
         self._state: dict[str, Value] = dict(device.state)
         self._state_lock = threading.Lock()
         self._callback_lock = threading.RLock()  # callbacks run one at a time
+        self._ticking = threading.local()  # `.port`: what this thread's tick holds whole (`threading single`)
         self._output_callbacks: list[OutputCallback] = []
         self._filters = {}
         self._read_ns: int | None = None  # when a reply last changed the state
@@ -4499,11 +4540,14 @@ class Robot(Exchange):
     def request(self, name: str, /, *args: Any) -> bytes:
         """The bytes primitive `name` would write for these arguments (framed, after every check
         a call makes), neither written nor needing a port: what `rdisc dump --args` shows. b""
-        for a primitive that writes nothing (a listener). Errors are raised as a call's."""
+        for a primitive that writes nothing (a listener). Errors are raised as a call's. Its
+        actuators' limits hold it as the first command they are given (a wheel's speed within its
+        velocity), and the commands after it are held to the ones written, not to it."""
         plan = self.device.primitives.get(name)
         if plan is None:
             raise KeyError(f"{self.name} has no primitive named {name!r}")
-        plan, values, local = self._planned(plan, _accepted(f"primitive {plan.name}", plan.params, list(args)))
+        given = _accepted(f"primitive {plan.name}", plan.params, list(args))
+        plan, values, local = self._planned(plan, given, Actuated())  # as a first command: no actuator moved
         return self._request(plan, values, local)[0]
 
     def send_raw(self, connection: str, data: bytes, /, *, quiet: float = _RAW_QUIET) -> bytes:
@@ -4891,9 +4935,10 @@ class Robot(Exchange):
         """A primitive the general way: its parameters checked, its reply table's entry chosen."""
         self._exchange(*self._planned(plan, args))
 
-    def _planned(self, plan: Primitive, args: Args) -> tuple[Primitive, Args, Args]:
+    def _planned(self, plan: Primitive, args: Args, actuated: Actuated | None = None) -> tuple[Primitive, Args, Args]:
         """A primitive's parameters checked (ints made floats, ranges) and held to its actuators'
-        limits, its reply table's entry chosen: that plan, its format values and the parameters' values."""
+        limits (`actuated`: what they were last given, else the robot's), its reply table's entry
+        chosen: that plan, its format values and the parameters' values."""
         for i in plan.floats:
             if type(args[i]) is int:
                 _widen(plan.name, plan.floats, args)
@@ -4901,7 +4946,7 @@ class Robot(Exchange):
         if plan.ranged:
             _check_ranges(plan.name, plan.params, plan.ranged, args)
         if plan.actuators:  # shaped to the actuators' limits, or refused (`actuation`)
-            args = self._actuated.limited(plan.actuators, args, self._clock())
+            args = (actuated or self._actuated).limited(plan.actuators, args, self._clock())
         if isinstance(plan.reply, KeyedReply):
             plan = plan.reply.entry(args)
         try:
