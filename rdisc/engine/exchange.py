@@ -881,9 +881,15 @@ class Exchange:
         if lock.acquire(blocking=False):
             return None
         port: _Port | None = getattr(self._ticking, "port", None)
-        if port is not None:
-            port.lock.release()
-        lock.acquire()
+        if port is None:
+            lock.acquire()
+            return None
+        port.lock.release()
+        try:
+            lock.acquire()
+        except BaseException:  # a signal's exception while waiting: the tick holds its port again
+            port.lock.acquire()
+            raise
         return port
 
     def _end_turn(self, port: _Port | None) -> None:
