@@ -24,6 +24,7 @@ from typing import Any
 
 from rdisc import engine
 from rdisc.engine.operations import EVAL_ERRORS
+from rdisc.lowering.actuators import actuator_limits
 from rdisc.lowering.constructs import (
     Construct,
     decoding,
@@ -287,6 +288,7 @@ class Primitive:
     lines: Code | None = None
     request: Written | None = None
     looks_up: bool = False
+    actuators: tuple[Construct[engine.ActuatorLimit], ...] = ()  # the actuators' limits on its parameters
     # A plain exchange's request in one step (`engine.asked_at_once`): the engine makes its own,
     # and a driver's typed method compiles this one (`LOWERED_ONLY`: no argument of engine.Primitive).
     asked: Written | None = field(default=None, metadata={LOWERED_ONLY: True})
@@ -421,6 +423,7 @@ class _Lowering:
         self.model = model
         self.frames = {f.name: frame(f) for f in model.frames.values()}
         self.own_frames: dict[str, tuple[FrameUse, ...]] = {}
+        self.limits = actuator_limits(model)
         primitives = {p.name: self.primitive(self.sensed(p)) for p in model.primitives.values()}
         outputs = {o.name: self.output(o) for o in model.outputs.values()}
         planned: dict[str, Interface] = {}
@@ -456,11 +459,12 @@ class _Lowering:
     def primitive(self, p: m.Primitive) -> Primitive:
         """A primitive's plan; with a reply table, one plan for each entry besides (a range
         entry's once, for each of its values), chosen by a parameter or by the reply's tag."""
+        limits = self.limits.get(p.name, ())
         if p.table is None:
-            plan = self.single(p, p.reply_locals())
+            plan = dataclasses.replace(self.single(p, p.reply_locals()), actuators=limits)
             return dataclasses.replace(plan, request=_written(plan, p.params, p.encoding),
                                        asked=_asked(plan, p.params))
-        plain = self.single(dataclasses.replace(p, table=None), p.reply_locals())
+        plain = dataclasses.replace(self.single(dataclasses.replace(p, table=None), p.reply_locals()), actuators=limits)
         table = tuple(Entry(c, self.reply(plain, p.case(c), p.reply_locals())) for c in p.table.cases)
         if p.table.tag is None:
             key = next(i for i, prm in enumerate(p.params) if prm.name == p.table.key)
@@ -591,7 +595,7 @@ class _Lowering:
         its parameter's type."""
         primitive = self.model.primitives[call.primitive]
         delay = call.delay_ms / 1000.0
-        if not primitive.formats_its_params():
+        if not primitive.formats_its_params() or plan.actuators:  # an actuator's limits hold its parameters
             return Call(plan, _values(params, call.args), delay)
         by_param = {prm.name: (prm, arg) for prm, arg in zip(primitive.params, call.args)}
         direct: list[Item] = []
@@ -651,7 +655,8 @@ def _written(plan: Primitive, params: tuple[m.Parameter, ...], encoding: m.Pack 
     encoder = None if plan.encoder is None else plan.encoder.value
     sent = engine.sent_at_once(encoder=encoder, replies=not isinstance(plan.reply, NoReply),
                                acts=plan.actions is not None or plan.lines is not None,
-                               dependent=any(prm.limits is not None for prm in params))
+                               dependent=any(prm.limits is not None for prm in params),
+                               actuated=bool(plan.actuators))
     if not sent:
         return None
     written = _packed(plan, params)
@@ -669,7 +674,7 @@ def _asked(plan: Primitive, params: tuple[m.Parameter, ...]) -> Written | None:
     reply = plan.reply
     decoder = reply.decoder.value if isinstance(reply, FixedReply) and reply.error is None else None
     asked = engine.asked_at_once(encoder=encoder, framed=plan.frame is not None, lines=plan.lines is not None,
-                                 retries=plan.retries, decoder=decoder)
+                                 retries=plan.retries, decoder=decoder, actuated=bool(plan.actuators))
     written = _packed(plan, params) if asked and not any(prm.limits is not None for prm in params) else None
     return None if written is None or encoder is None else _constant(written, encoder)
 

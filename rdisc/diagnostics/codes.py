@@ -689,8 +689,9 @@ An actuator is what drives a joint between the device's command and the joint
 NAME: wheel { ... }` a velocity-controlled motor. Its items, each at most once and
 each a constant number more than 0: `velocity` (rad/s or m/s) and `acceleration`
 (rad/s² or m/s²), the limits its commands are shaped to, `effort` (N m or N), and
-for a servo its simulated `gain` (N m/rad) and `damping` (N m s/rad). A
-transmission names it, `transmission T: JOINT actuator NAME { ... }`; one actuator
+for a servo its simulated `gain` (N m/rad) and `damping` (N m s/rad); and `limit
+shape` (the default: a command beyond a limit is slowed to it) or `limit refuse`
+(it is refused, nothing written), a word. A transmission names it, `transmission T: JOINT actuator NAME { ... }`; one actuator
 drives one joint, and a servo is commanded a `position`, a wheel a `velocity`.
 Wrong: `actuator m: wheel { gain 5 }`, or one actuator named by two transmissions.
 Right: `actuator m: servo { velocity 4.8  effort 4.1 }`."""),
@@ -783,6 +784,15 @@ MuJoCo twin steps it, it diverges once that is more than 2 + 2 sqrt(2) rad a ste
 the link chatters and reads nonsense. A 5 g servo horn (2e-6 kg m²) follows a gain
 of at most 12 N m/rad. Wrong: `gain 82` on that horn. Right: leave `gain` out, and
 the simulation derives one from the actuator's effort and the link's inertia."""),
+    ("W622", "unlimited-command", """
+An actuator's `velocity` and `acceleration` hold the commands its transmission
+gives (`limit shape` slows them, `limit refuse` refuses them) where the engine can
+put them in the device's units: a primitive's parameter, through a conversion that
+is a ratio (`raw = round(position * K) + C`). A command through an interface's
+parameter, or through any other conversion (a wrap with `%`, a condition, a table),
+is written as it is given, however fast. Wrong: `command position to move.angle`
+(an interface) with `actuator m: servo { velocity 2 }`. Right: `command position to
+servo.goal { raw = round(position * 651.9) + 2048 ... }`."""),
     ("W402", "period-too-short", """
 A schedule's period is shorter than the exchange it runs: the bytes on the wire
 plus the declared delays of the periodic interfaces (per tick) or of the

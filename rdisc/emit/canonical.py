@@ -494,6 +494,7 @@ def _actuator(a: m.Actuator) -> JsonObject:
         ("effort", a.effort),
         ("gain", a.gain),
         ("damping", a.damping),
+        ("limit", "refuse" if a.refuse else None),
         ("doc", a.doc),
     )
 

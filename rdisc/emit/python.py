@@ -489,6 +489,9 @@ class _Driver:
     def constant(self, w: Writer, name: str, plan: object, given: Mapping[str, str] = {}) -> None:
         """`name = Plan(...)`, one argument a line when long; `given`: fields written as these names."""
         self.names[plan] = name
+        if isinstance(plan, lowering.Primitive) and len(plan.actuators) > 1 and "actuators" not in given:
+            limits = "".join(f"\n    {self.text(limit)}," for limit in plan.actuators)  # one an actuator, a line each
+            given = {**given, "actuators": f"({limits}\n)"}
         args, options = self.arguments(plan, given)
         if isinstance(plan, lowering.Primitive) and plan.actions in self.renewing:
             options["renews"] = "True"

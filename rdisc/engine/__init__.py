@@ -17,6 +17,7 @@ contract in docs/runtime.md.
 from typing import TYPE_CHECKING
 
 if TYPE_CHECKING:  # at run time each name is imported when it is first asked for (__getattr__, below)
+    from rdisc.engine.actuation import Actuated, ActuatorLimit
     from rdisc.engine.arguments import Unbound, bind_named, bind_settings, call_values, read_value
     from rdisc.engine.checksums import Checksum
     from rdisc.engine.codec import Format, Group, Match, Pack, Split, Unpack, Varying
@@ -37,6 +38,7 @@ if TYPE_CHECKING:  # at run time each name is imported when it is first asked fo
         RdisConnectionError,
         RdisDeviceError,
         RdisError,
+        RdisLimitError,
         RdisProtocolError,
         RdisTimeout,
         RdisValueError,
@@ -194,6 +196,8 @@ __all__ = [
     "STATE_TOPIC",
     "TEXT_TYPE",
     "UNARY",
+    "Actuated",
+    "ActuatorLimit",
     "Args",
     "Bits",
     "Bytes",
@@ -249,6 +253,7 @@ __all__ = [
     "RdisConnectionError",
     "RdisDeviceError",
     "RdisError",
+    "RdisLimitError",
     "RdisProtocolError",
     "RdisTimeout",
     "RdisValueError",

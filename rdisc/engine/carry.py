@@ -26,6 +26,7 @@ MODULES = (
     ("wire", "a port's input, frames' parts"),
     ("codec", "encoding and decoding"),
     ("frames", "frames written and read"),
+    ("actuation", "actuators' limits on commands"),
     ("plans", "what a description specialises"),
     ("arguments", "values given by the host"),
     ("ports", "ports, a simulated device"),

@@ -38,5 +38,17 @@ class RdisValueError(RdisError, ValueError):
     """A value could not be computed or encoded (division by zero, out of range for its code)."""
 
 
+class RdisLimitError(RdisValueError):
+    """A command beyond its actuator's limit, refused (`limit refuse`): nothing was written.
+    `actuator`, its name; `limit`, "velocity" or "acceleration"; `most`, the limit (the joint's
+    units a second, or a second squared)."""
+
+    def __init__(self, message: str, actuator: str, limit: str, most: float) -> None:
+        super().__init__(message)
+        self.actuator = actuator
+        self.limit = limit
+        self.most = most
+
+
 class RdisCallbackError(RdisError):
     """A user callback raised; the exception is the cause."""

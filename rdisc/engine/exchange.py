@@ -73,6 +73,7 @@ class Exchange:
     _read_ns: int | None  # when a reply last changed the state (ns since the epoch); None: none has
     _state_lock: threading.Lock
     _callback_lock: threading.RLock
+    _ticking: threading.local  # `.port`: the port this thread's tick holds whole (`threading single`), else None
     _filters: dict[tuple[str, str], KalmanFilter]  # (output, field): its running filter, made when first delivered
     _output_callbacks: list[OutputCallback]
     _error_callbacks: list[ErrorCallback]
@@ -857,7 +858,8 @@ class Exchange:
         except EVAL_ERRORS as err:
             raise RdisValueError(f"{plan.name}: {err}") from None
         message = OutputMessage(plan.name, contents, time.time_ns() if read_ns is None else read_ns)
-        with self._callback_lock:
+        port = self._take_turn()
+        try:
             if plan.filters:
                 message = OutputMessage(plan.name, self._filtered(plan, contents), message.read_ns)
             for callback in list(self._output_callbacks):
@@ -867,6 +869,35 @@ class Exchange:
                     error = RdisCallbackError(f"{plan.name}: output callback raised {type(err).__name__}: {err}")
                     error.__cause__ = err
                     self._report(error)
+        finally:
+            self._end_turn(port)
+
+    def _take_turn(self) -> _Port | None:
+        """The callbacks' turn (they run one at a time, under the callback lock). A tick that holds
+        its port whole (`threading single`) and finds the turn taken lets the port go while it
+        waits and runs the callbacks: the turn may be a callback's on another thread that is
+        commanding the robot, which waits for the port. Returns that port, to take back after."""
+        lock = self._callback_lock
+        if lock.acquire(blocking=False):
+            return None
+        port: _Port | None = getattr(self._ticking, "port", None)
+        if port is None:
+            lock.acquire()
+            return None
+        port.lock.release()
+        try:
+            lock.acquire()
+        except BaseException:  # a signal's exception while waiting: the tick holds its port again
+            port.lock.acquire()
+            raise
+        return port
+
+    def _end_turn(self, port: _Port | None) -> None:
+        """The turn's end: the callback lock let go, then the tick's port taken back (never the
+        port while holding the turn: a host's call holding its port may wait for the turn)."""
+        self._callback_lock.release()
+        if port is not None:
+            port.lock.acquire()
 
     def _filtered(self, plan: Output, contents: dict[str, Value]) -> dict[str, Value]:
         """The fields a Kalman filter estimates, each filter stepped once by the value delivered
@@ -894,7 +925,8 @@ class Exchange:
         """The events queued, in order, to the callbacks, one at a time: the I/O callbacks every
         one but "skip", the trace callbacks every one with its stamp. A thread shows another's
         events that came before its own and are not shown yet (so a line never jumps the queue)."""
-        with self._callback_lock:
+        port = self._take_turn()
+        try:
             while True:
                 with self._events_lock:
                     if not self._events:
@@ -903,6 +935,8 @@ class Exchange:
                 if kind != "skip":
                     self._notify(self._io_callbacks, connection, kind, connection, data)
                 self._notify(self._trace_callbacks, connection, when, kind, connection, data)
+        finally:
+            self._end_turn(port)
 
     def _notify(self, callbacks: Sequence[Callable[..., object]], connection: str, *event: Any) -> None:
         for callback in list(callbacks):
@@ -915,12 +949,16 @@ class Exchange:
 
     def _notify_run(self, connection: str, kind: str, name: str) -> None:
         """Tell a recorder that a connection's thread starts a periodic interface or its keepalive."""
-        with self._callback_lock:
+        port = self._take_turn()
+        try:
             for callback in list(self._run_callbacks):
                 callback(connection, kind, name)
+        finally:
+            self._end_turn(port)
 
     def _report(self, error: BaseException) -> None:
-        with self._callback_lock:
+        port = self._take_turn()
+        try:
             callbacks = list(self._error_callbacks)
             if not callbacks:
                 _log.warning("%s: %s: %s", self.name, type(error).__name__, error)
@@ -929,6 +967,8 @@ class Exchange:
                     callback(error)
                 except Exception:  # noqa: BLE001, S110 - the contract: an error callback's failure is ignored
                     pass
+        finally:
+            self._end_turn(port)
 
 
 def _unwatched_write(robot: Exchange, ports: Mapping[str, _Port]) -> Callable[[Primitive, bytes], None]:

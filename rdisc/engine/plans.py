@@ -10,6 +10,7 @@ from collections.abc import Callable, Mapping, Sequence
 from dataclasses import KW_ONLY, dataclass, field
 from typing import Any
 
+from rdisc.engine.actuation import ActuatorLimit
 from rdisc.engine.codec import Format, Match, Pack, Unpack
 from rdisc.engine.frames import Frame
 from rdisc.engine.kalman import FilterPlan
@@ -212,6 +213,7 @@ class Primitive:
     lines: Callable[[StateValues, Args], dict[str, Value]] | None = None  # "dtr"/"rts": levels, set before the request
     looks_up: bool = False  # its post-actions look a key up in a table: a miss is a reply it cannot read
     renews: bool = False  # its post-actions give every state variable in the state's order: the new state, published whole
+    actuators: tuple[ActuatorLimit, ...] = ()  # actuators' limits on its parameters: shaped or refused first
     floats: tuple[int, ...] = field(init=False)
     ranged: tuple[int, ...] = field(init=False)
     asked: Request | None = field(init=False)  # the request of a plain exchange (`_asked_at_once`), in one step
@@ -235,39 +237,43 @@ def _plain(encoder: Pack | Format | None) -> bool:
 def _sent_at_once(plan: Primitive) -> bool:
     """`sent_at_once`, of this plan."""
     return sent_at_once(encoder=plan.encoder, replies=not isinstance(plan.reply, NoReply),
-                        acts=plan.actions is not None or plan.lines is not None, dependent=_dependent(plan.params))
+                        acts=plan.actions is not None or plan.lines is not None, dependent=_dependent(plan.params),
+                        actuated=bool(plan.actuators))
 
 
 def _dependent(params: tuple[Param, ...]) -> bool:
     return any(p.low_terms or p.high_terms for p in params)
 
 
-def sent_at_once(*, encoder: Pack | Format | None, replies: bool, acts: bool, dependent: bool = False) -> bool:
+def sent_at_once(*, encoder: Pack | Format | None, replies: bool, acts: bool, dependent: bool = False,
+                 actuated: bool = False) -> bool:
     """Whether running a primitive is only packing its values, framing them and writing them
     (`Primitive.request`): one plain struct pack (`encoder`), and no reply, reply table,
-    post-action, modem line (`acts`) or range that reads another parameter (`dependent`, checked
-    the general way) in the way. The one rule: the engine applies it to its plans, the lowering
-    (`rdisc.lower`) to its own."""
-    return _plain(encoder) and not replies and not acts and not dependent
+    post-action, modem line (`acts`), range that reads another parameter (`dependent`, checked
+    the general way) or actuator's limit (`actuated`, applied the general way) in the way. The
+    one rule: the engine applies it to its plans, the lowering (`rdisc.lower`) to its own."""
+    return _plain(encoder) and not replies and not acts and not dependent and not actuated
 
 
 def _asked_at_once(plan: Primitive) -> bool:
     """`asked_at_once`, of this plan."""
     reply = plan.reply
     return asked_at_once(encoder=plan.encoder, framed=plan.frame is not None, lines=plan.lines is not None,
-                         retries=plan.retries,
+                         retries=plan.retries, actuated=bool(plan.actuators),
                          decoder=reply.decoder if isinstance(reply, FixedReply) and reply.error is None else None)
 
 
 def asked_at_once(*, encoder: Pack | Format | None, framed: bool, lines: bool, retries: int,
-                  decoder: Unpack | None) -> bool:
+                  decoder: Unpack | None, actuated: bool = False) -> bool:
     """Whether a primitive is a plain exchange (`Exchange._ask`): its request one plain struct pack
     of some bytes (a listener writes none, and keeps what has arrived) with no frame and no modem
     line, its reply a fixed number of bytes (`decoder`: a reply's with no error reply in its
     place, else None), read in one try (no `retry`). Such a reply is read from the port in one
-    read. The one rule: the engine applies it to its plans, the lowering (`rdisc.lower`) to its own."""
+    read, and no actuator's limit on its parameters (`actuated`). The one rule: the engine applies it
+    to its plans, the lowering (`rdisc.lower`) to its own."""
     return (_plain(encoder) and isinstance(encoder, Pack) and encoder.struct.size > 0 and not framed
-            and not lines and not retries and decoder is not None and decoder.size > 0 and decoder.until is None)
+            and not lines and not retries and decoder is not None and decoder.size > 0 and decoder.until is None
+            and not actuated)
 
 
 def plainly_given(args: Args, kinds: tuple[type, ...], bounds: tuple[tuple[int, Any, Any], ...]) -> bool:

@@ -13,6 +13,7 @@ from collections import deque
 from collections.abc import Callable, Iterator, Mapping
 from typing import Any
 
+from rdisc.engine.actuation import Actuated
 from rdisc.engine.arguments import _accept_param, _accepted, _bind, _widen, bind_settings
 from rdisc.engine.errors import RdisConnectionError, RdisError, RdisTimeout, RdisValueError
 from rdisc.engine.exchange import Exchange
@@ -136,6 +137,7 @@ class Robot(Exchange):
         self._state: dict[str, Value] = dict(device.state)
         self._state_lock = threading.Lock()
         self._callback_lock = threading.RLock()  # callbacks run one at a time
+        self._ticking = threading.local()  # `.port`: what this thread's tick holds whole (`threading single`)
         self._output_callbacks: list[OutputCallback] = []
         self._filters = {}
         self._read_ns: int | None = None  # when a reply last changed the state
@@ -169,6 +171,7 @@ class Robot(Exchange):
         self._clock: Callable[[], float] = time.monotonic  # the schedule's time, and the delays'
         self._sleep: Callable[[float], None] = self._delay
         self._sensed = SensorCache()
+        self._actuated = Actuated()  # what each actuator was last given, by the robot's clock
         self._choose_write()
 
     # ---- callbacks --------------------------------------------------------------------------------
@@ -313,11 +316,14 @@ class Robot(Exchange):
     def request(self, name: str, /, *args: Any) -> bytes:
         """The bytes primitive `name` would write for these arguments (framed, after every check
         a call makes), neither written nor needing a port: what `rdisc dump --args` shows. b""
-        for a primitive that writes nothing (a listener). Errors are raised as a call's."""
+        for a primitive that writes nothing (a listener). Errors are raised as a call's. Its
+        actuators' limits hold it as the first command they are given (a wheel's speed within its
+        velocity), and the commands after it are held to the ones written, not to it."""
         plan = self.device.primitives.get(name)
         if plan is None:
             raise KeyError(f"{self.name} has no primitive named {name!r}")
-        plan, values, local = self._planned(plan, _accepted(f"primitive {plan.name}", plan.params, list(args)))
+        given = _accepted(f"primitive {plan.name}", plan.params, list(args))
+        plan, values, local = self._planned(plan, given, Actuated())  # as a first command: no actuator moved
         return self._request(plan, values, local)[0]
 
     def send_raw(self, connection: str, data: bytes, /, *, quiet: float = _RAW_QUIET) -> bytes:
@@ -705,8 +711,9 @@ class Robot(Exchange):
         """A primitive the general way: its parameters checked, its reply table's entry chosen."""
         self._exchange(*self._planned(plan, args))
 
-    def _planned(self, plan: Primitive, args: Args) -> tuple[Primitive, Args, Args]:
-        """A primitive's parameters checked (ints made floats, ranges), its reply table's entry
+    def _planned(self, plan: Primitive, args: Args, actuated: Actuated | None = None) -> tuple[Primitive, Args, Args]:
+        """A primitive's parameters checked (ints made floats, ranges) and held to its actuators'
+        limits (`actuated`: what they were last given, else the robot's), its reply table's entry
         chosen: that plan, its format values and the parameters' values."""
         for i in plan.floats:
             if type(args[i]) is int:
@@ -714,6 +721,8 @@ class Robot(Exchange):
                 break
         if plan.ranged:
             _check_ranges(plan.name, plan.params, plan.ranged, args)
+        if plan.actuators:  # shaped to the actuators' limits, or refused (`actuation`)
+            args = (actuated or self._actuated).limited(plan.actuators, args, self._clock())
         if isinstance(plan.reply, KeyedReply):
             plan = plan.reply.entry(args)
         try:

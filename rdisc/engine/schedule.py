@@ -30,6 +30,7 @@ class _Owner(Protocol):
     _clock: Callable[[], float]
     _closed: bool
     _run_callbacks: list[Callable[[str, str, str], object]]
+    _ticking: threading.local
 
     @property
     def _ports(self) -> Mapping[str, _Port]: ...
@@ -88,15 +89,20 @@ class _Worker:
         """One iteration: each periodic interface, then the keepalive if it is due. Errors go
         to the error callbacks, and the schedule goes on. Under `single` the tick holds the
         port (re-entrant: its exchanges take it again), so another thread's command waits for
-        the whole tick; one made by a callback on this thread goes in between."""
+        the whole tick; one made by a callback on this thread goes in between. Only while it
+        waits for the callbacks' turn, which a callback on another thread may hold while it
+        commands the robot, does the tick let the port go."""
         port = self.robot._ports.get(self.connection.name) if self.whole else None
         if port is None:  # dual, multiple, or a simulated device: no port to hold
             self._tick()
             return
         port.lock.acquire()
+        ticking = self.robot._ticking
+        ticking.port = port  # the callbacks' turn lets it go while it waits (`Exchange._take_turn`)
         try:
             self._tick()
         finally:
+            ticking.port = None
             port.lock.release()
 
     def _tick(self) -> None:

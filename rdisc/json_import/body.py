@@ -16,7 +16,7 @@ _JOINT = ("name", "type", "parent", "child", "xyz", "rpy", "axis", "limit", "vel
           "friction", "mimic", "doc")
 _MIMIC = ("joint", "multiplier", "offset")
 _TRANSMISSION = ("name", "joint", "commands", "measures", "actuator", "doc")
-_ACTUATOR = ("name", "kind", "velocity", "acceleration", "effort", "gain", "damping", "doc")
+_ACTUATOR = ("name", "kind", "velocity", "acceleration", "effort", "gain", "damping", "limit", "doc")
 _COMMAND = ("quantity", "primitive", "interface", "parameter", "index", "toDevice", "toJoint")
 _MEASURE = ("quantity", "state", "index", "toDevice", "toJoint")
 
@@ -116,7 +116,9 @@ class Body(Expressions):
         m = self.members(obj, "an actuator", _ACTUATOR)
         name = self.name(obj, m, "an actuator")
         kind = self.required(obj, m, "kind", "an actuator", self.ident)
-        items = [self.body_value(m, key, key) for key in _ACTUATOR[2:-1]]
+        items = [self.body_value(m, key, key) for key in _ACTUATOR[2:-2]]
+        limit = self.ident(m["limit"], "`limit`") if "limit" in m else None  # "shape" or "refuse": a word
+        items.append(None if limit is None else ast.BodyValue("limit", ast.Ref(limit.text, limit.span), limit.span))
         if name is None or kind is None:
             return None
         return ast.ActuatorDecl(name, kind, present(items), obj.span, self.doc(m))

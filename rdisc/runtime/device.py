@@ -145,6 +145,7 @@ class _Engine:
             actions=self.closure(p.actions), frame=None if p.frame is None else self.use(p.frame), timeout=p.timeout,
             retries=p.retries,
             checked=p.checked, expect=self.closure(p.expect), lines=self.closure(p.lines), looks_up=p.looks_up,
+            actuators=built(p.actuators),
             request=None if p.request is None else primitive_request(p.request, built(p.params), self.closure),
         )
 

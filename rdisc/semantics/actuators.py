@@ -12,11 +12,13 @@ from rdisc.diagnostics import Diagnostics, Label
 from rdisc.emit.mjcf import TIMESTEP
 from rdisc.semantics import model as m
 from rdisc.semantics.body import BodyRules
+from rdisc.semantics.linear import limited
 from rdisc.semantics.reflected import STABLE_STEP, joint_inertia, steps_per_period
 from rdisc.syntax import ast
 
 _KINDS = {k.value: k for k in m.ActuatorKind}
 KEYS = ("velocity", "acceleration", "effort", "gain", "damping")
+LIMITS = ("shape", "refuse")  # `limit shape` (the default) or `limit refuse`: what a command beyond a limit meets
 _COMMANDED = {m.ActuatorKind.SERVO: m.Quantity.POSITION, m.ActuatorKind.WHEEL: m.Quantity.VELOCITY}
 
 
@@ -29,9 +31,10 @@ def actuator(d: Diagnostics, body: BodyRules, decl: ast.ActuatorDecl) -> m.Actua
         d.report("E620", decl.kind.span, f"unknown actuator kind `{decl.kind.text}`",
                  help=suggest(decl.kind.text, _KINDS) or "actuators are " + ", ".join(_KINDS))
     for item in decl.items:
-        if item.key not in KEYS:
+        if item.key not in KEYS and item.key != "limit":
             d.report("E620", item.span, f"an actuator has no `{item.key}`",
-                     help=suggest(item.key, KEYS) or "its items are " + ", ".join(KEYS))
+                     help=suggest(item.key, (*KEYS, "limit")) or "its items are " + ", ".join((*KEYS, "limit")))
+    refuse = limit(d, body, decl) == "refuse"
     values: dict[str, float | None] = {}
     for key in KEYS:
         expr = body.once(decl.items, key, decl.name)
@@ -51,7 +54,37 @@ def actuator(d: Diagnostics, body: BodyRules, decl: ast.ActuatorDecl) -> m.Actua
     if kind is None:
         return None
     return m.Actuator(decl.name.text, kind, values["velocity"], values["acceleration"], values["effort"],
-                      values["gain"], values["damping"], decl.doc, decl.span)
+                      values["gain"], values["damping"], decl.doc, decl.span, refuse)
+
+
+def _unlimited(d: Diagnostics, decl: ast.TransmissionDecl, motor: m.Actuator, transmission: m.Transmission) -> None:
+    """W622: a command of the transmission the engine cannot hold to its actuator's limits."""
+    for binding in transmission.commands:
+        if binding.quantity is not _COMMANDED[motor.kind] or limited(binding):
+            continue  # another quantity is E620
+        why = ("it gives an interface's parameter" if binding.interface
+               else "its conversion is not a ratio (`raw = round(position * K) + C`)")
+        d.report("W622", binding.span or decl.span,
+                 f"actuator `{motor.name}`'s limits do not hold transmission `{transmission.name}`'s command of "
+                 f"`{binding.place()}`: {why}", help="commands beyond its `velocity` or `acceleration` are written "
+                 "as they are: command a primitive's parameter, through a ratio")
+
+
+def limit(d: Diagnostics, body: BodyRules, decl: ast.ActuatorDecl) -> str:
+    """`limit shape` or `limit refuse`, a word, not a value: what a command beyond the limits meets."""
+    from rdisc.semantics.resolve import suggest
+
+    expr = body.once(decl.items, "limit", decl.name)
+    if expr is None:
+        return "shape"
+    word = expr.name if isinstance(expr, ast.Ref) else None
+    if word not in LIMITS:
+        shown = f"`{word}`" if word is not None else "a value"
+        d.report("E620", expr.span, f"an actuator's limit is `shape` or `refuse`, not {shown}",
+                 help=(suggest(word, LIMITS) if word is not None else None)
+                 or "`limit shape` slows a command to the limits, `limit refuse` refuses it")
+        return "shape"
+    return word
 
 
 def bind(d: Diagnostics, decls: dict[str, ast.TransmissionDecl], actuators: dict[str, m.Actuator],
@@ -80,6 +113,8 @@ def bind(d: Diagnostics, decls: dict[str, ast.TransmissionDecl], actuators: dict
             d.report("E620", decl.actuator.span, f"a {motor.kind.value} is commanded a {want.value}, but "
                      f"transmission `{name}` commands its {wrong.quantity.value}",
                      help=f"`command {want.value} to ...`, or an actuator of another kind")
+        if motor.velocity is not None or motor.acceleration is not None:
+            _unlimited(d, decl, motor, transmission)
         if motor.kind is m.ActuatorKind.SERVO and motor.gain is not None:
             if inertia is None:
                 inertia = joint_inertia(links, joints)

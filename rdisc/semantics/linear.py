@@ -44,6 +44,14 @@ def ratio(binding: m.Binding) -> Ratio | None:
             return Ratio(1 / scale) if shift == 0 else None
 
 
+def limited(binding: m.Binding) -> bool:
+    """Whether the engine can hold this command to its actuator's limits (`rdisc.engine.actuation`):
+    a position or velocity given a primitive's parameter through a ratio, so that the limits in the
+    joint's units are the device value's."""
+    quantity = binding.quantity in (m.Quantity.POSITION, m.Quantity.VELOCITY)
+    return quantity and not binding.interface and ratio(binding) is not None
+
+
 def _affine(expr: m.Expr, name: str) -> tuple[float, float] | None:
     """`expr` as `scale * name + shift`, each a number; None when it is not of that form."""
     match expr:

@@ -1205,8 +1205,8 @@ class ActuatorKind(enum.Enum):
 
 @dataclass(frozen=True, slots=True)
 class Actuator:
-    """What drives a joint (thesis §7.2.6): its limits, which shape the commands a joint is given
-    (a position moves at most `velocity`, a speed changes by at most `acceleration` a second), and
+    """What drives a joint (thesis §7.2.6): its limits, which shape (or, `refuse`, refuse) the commands
+    a joint is given (a position moves at most `velocity`, a speed changes by at most `acceleration` a second), and
     the gains the simulation gives it (`gain` N m/rad, `damping` N m s/rad; None: derived)."""
 
     name: str
@@ -1218,6 +1218,7 @@ class Actuator:
     damping: float | None = None
     doc: str | None = None
     span: Span | None = _span
+    refuse: bool = False  # `limit refuse`: a command beyond a limit is refused, not shaped (`limit shape`)
 
 
 @dataclass(frozen=True, slots=True)

@@ -2629,6 +2629,7 @@ def _init_Actuator(
     damping: Any = DEFAULT,
     doc: Any = DEFAULT,
     span: Any = DEFAULT,
+    refuse: Any = DEFAULT,
 ) -> None:
     _set(self, "name", name)
     _set(self, "kind", kind)
@@ -2639,10 +2640,11 @@ def _init_Actuator(
     _set(self, "damping", damping)
     _set(self, "doc", doc)
     _set(self, "span", span)
+    _set(self, "refuse", refuse)
 
 
 def _repr_Actuator(self: Any) -> str:
-    return f"{self.__class__.__qualname__}(name={self.name!r}, kind={self.kind!r}, velocity={self.velocity!r}, acceleration={self.acceleration!r}, effort={self.effort!r}, gain={self.gain!r}, damping={self.damping!r}, doc={self.doc!r})"
+    return f"{self.__class__.__qualname__}(name={self.name!r}, kind={self.kind!r}, velocity={self.velocity!r}, acceleration={self.acceleration!r}, effort={self.effort!r}, gain={self.gain!r}, damping={self.damping!r}, doc={self.doc!r}, refuse={self.refuse!r})"
 
 
 def _eq_Actuator(self: Any, other: Any) -> Any:
@@ -2656,6 +2658,7 @@ def _eq_Actuator(self: Any, other: Any) -> Any:
             self.gain,
             self.damping,
             self.doc,
+            self.refuse,
         ) == (
             other.name,
             other.kind,
@@ -2665,6 +2668,7 @@ def _eq_Actuator(self: Any, other: Any) -> Any:
             other.gain,
             other.damping,
             other.doc,
+            other.refuse,
         )
     return NotImplemented
 
@@ -2679,6 +2683,7 @@ def _hash_Actuator(self: Any) -> int:
         self.gain,
         self.damping,
         self.doc,
+        self.refuse,
     ))
 
 
@@ -3664,6 +3669,7 @@ WRITTEN: dict[str, Written] = {
             ("damping", DEFAULT),
             ("doc", DEFAULT),
             ("span", FieldSpec(None, MISSING, False, False)),
+            ("refuse", DEFAULT),
         ),
         {
             "__init__": _init_Actuator,

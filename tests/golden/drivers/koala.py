@@ -77,6 +77,18 @@ class RdisValueError(RdisError, ValueError):
     """A value could not be computed or encoded (division by zero, out of range for its code)."""
 
 
+class RdisLimitError(RdisValueError):
+    """A command beyond its actuator's limit, refused (`limit refuse`): nothing was written.
+    `actuator`, its name; `limit`, "velocity" or "acceleration"; `most`, the limit (the joint's
+    units a second, or a second squared)."""
+
+    def __init__(self, message: str, actuator: str, limit: str, most: float) -> None:
+        super().__init__(message)
+        self.actuator = actuator
+        self.limit = limit
+        self.most = most
+
+
 class RdisCallbackError(RdisError):
     """A user callback raised; the exception is the cause."""
 
@@ -1956,6 +1968,152 @@ class Frame:
         return self.stuffing.unstuff(payload, self.name) if self.stuffing is not None else payload
 
 
+# ---- rdisc engine: actuation (rdisc/engine/actuation.py), actuators' limits on commands ----------
+
+
+_SLACK = 1e-9  # relative: a command exactly at a limit, as floats compute it, is within it
+
+
+@dataclass(frozen=True, slots=True)
+class ActuatorLimit:
+    """One actuator's limits on a primitive's parameter (`param`, its position; `index`, the
+    element of an array it is). `quantity` is "position" (a servo) or "velocity" (a wheel); the
+    joint's value is `device / reduction + offset`. `velocity` and `acceleration` are in the
+    joint's `unit` a second (and a second squared); None: no such limit. `refuse`: a command
+    beyond them is refused, else shaped."""
+
+    actuator: str
+    param: int
+    index: int | None
+    quantity: str
+    reduction: float
+    offset: float = 0.0
+    velocity: float | None = None
+    acceleration: float | None = None
+    refuse: bool = False
+    unit: str = "rad"
+
+
+@dataclass(frozen=True, slots=True)
+class _Given:
+    """What an actuator was last given: the device's value (unrounded), when, and its speed then
+    (device units a second: a position's change over the time since the one before)."""
+
+    value: float
+    time: float
+    speed: float
+
+
+class Actuated:
+    """Each actuator's last command, by name: what the limits are measured from."""
+
+    def __init__(self) -> None:
+        self._given: dict[str, _Given] = {}
+        self._lock = threading.Lock()  # the host's calls and the periodic work's command alike
+
+    def limited(self, limits: Sequence[ActuatorLimit], args: list[Any], now: float) -> list[Any]:
+        """`args` with each limited value shaped (a new list, arrays copied), or an RdisLimitError for
+        the first refused; what each actuator was given is kept only when every value passed."""
+        shaped = list(args)
+        copied: set[int] = set()
+        given: dict[str, _Given] = {}
+        with self._lock:
+            for limit in limits:
+                if limit.index is not None and limit.param not in copied:
+                    shaped[limit.param] = list(shaped[limit.param])
+                    copied.add(limit.param)
+                holder = shaped[limit.param] if limit.index is not None else shaped
+                at = limit.index if limit.index is not None else limit.param
+                value = holder[at]
+                before = self._given.get(limit.actuator)
+                if limit.quantity == "position":
+                    kept = _position(limit, float(value), before, now)
+                else:
+                    kept = _velocity(limit, float(value), before, now)
+                given[limit.actuator] = kept
+                holder[at] = round(kept.value) if type(value) is int else kept.value
+            self._given.update(given)
+        return shaped
+
+
+def _position(limit: ActuatorLimit, value: float, before: _Given | None, now: float) -> _Given:
+    """A position command: moved toward no faster than the limits allow since the one before."""
+    if before is None:
+        return _Given(value, now, 0.0)
+    scale = abs(limit.reduction)
+    fastest = math.inf if limit.velocity is None else limit.velocity * scale
+    steepest = math.inf if limit.acceleration is None else limit.acceleration * scale
+    elapsed = max(now - before.time, 0.0)
+    change = value - before.value
+    if change == 0:
+        return _Given(value, now, 0.0)
+    if limit.refuse:
+        speed = math.inf if elapsed == 0 else change / elapsed
+        moved = (f"a position of {_joint(limit, value):.6g} {limit.unit} {_after(elapsed)} "
+                 f"{_joint(limit, before.value):.6g} {limit.unit}")
+        if abs(speed) > fastest * (1 + _SLACK):
+            raise _refused(limit, "velocity", f"{moved} moves {_rate(abs(speed) / scale, limit.unit + '/s')}")
+        rate = math.inf if elapsed == 0 else abs(speed - before.speed) / elapsed
+        if rate > steepest * (1 + _SLACK):
+            raise _refused(limit, "acceleration", f"{moved} changes its speed from "
+                           f"{before.speed / limit.reduction:.6g} to {speed / limit.reduction:.6g} {limit.unit}/s, "
+                           f"{_rate(rate / scale, limit.unit + '/s²')}")
+        return _Given(value, now, speed)
+    if elapsed == 0:
+        return _Given(before.value, now, before.speed)  # no time: no move
+    wanted = change / elapsed
+    most = min(fastest, math.sqrt(2 * steepest * abs(change)))  # at most a speed it can stop from in time
+    speed = math.copysign(min(abs(wanted), most), wanted)
+    speed = min(max(speed, before.speed - steepest * elapsed), before.speed + steepest * elapsed)
+    if speed == wanted:
+        return _Given(value, now, speed)
+    return _Given(before.value + speed * elapsed, now, speed)
+
+
+def _velocity(limit: ActuatorLimit, value: float, before: _Given | None, now: float) -> _Given:
+    """A speed command: within the velocity limit, changed by at most the acceleration since the one before."""
+    scale = abs(limit.reduction)
+    fastest = math.inf if limit.velocity is None else limit.velocity * scale
+    if abs(value) > fastest * (1 + _SLACK):
+        if limit.refuse:
+            raise _refused(limit, "velocity", f"a velocity of {value / limit.reduction:.6g} {limit.unit}/s")
+        value = math.copysign(fastest, value)
+    if before is None or limit.acceleration is None:
+        return _Given(value, now, value)
+    steepest = limit.acceleration * scale
+    elapsed = max(now - before.time, 0.0)
+    change = value - before.value
+    rate = math.inf if elapsed == 0 and change else 0.0 if change == 0 else abs(change) / elapsed
+    if rate > steepest * (1 + _SLACK):
+        if limit.refuse:
+            raise _refused(limit, "acceleration", f"a velocity of {value / limit.reduction:.6g} {limit.unit}/s "
+                           f"{_after(elapsed)} {before.value / limit.reduction:.6g} {limit.unit}/s changes "
+                           f"{_rate(rate / scale, limit.unit + '/s²')}")
+        value = before.value + math.copysign(steepest * elapsed, change)
+    return _Given(value, now, value)
+
+
+def _joint(limit: ActuatorLimit, value: float) -> float:
+    return value / limit.reduction + limit.offset
+
+
+def _after(elapsed: float) -> str:
+    return "at the same moment as" if elapsed == 0 else f"{elapsed:.6g} s after"
+
+
+def _rate(value: float, unit: str) -> str:
+    return "in no time" if math.isinf(value) else f"at {value:.6g} {unit}"
+
+
+def _refused(limit: ActuatorLimit, which: str, what: str) -> RdisLimitError:
+    """The error of a command beyond a limit, naming the actuator, the limit and the value."""
+    most = limit.velocity if which == "velocity" else limit.acceleration
+    assert most is not None  # a limit exceeded is one stated
+    unit = f"{limit.unit}/s" if which == "velocity" else f"{limit.unit}/s²"
+    return RdisLimitError(f"actuator {limit.actuator}: {what}, over its {which} limit of {most:g} {unit}: "
+                          "not written (`limit refuse`)", limit.actuator, which, most)
+
+
 # ---- rdisc engine: plans (rdisc/engine/plans.py), what a description specialises -----------------
 
 
@@ -2155,6 +2313,7 @@ class Primitive:
     lines: Callable[[StateValues, Args], dict[str, Value]] | None = None  # "dtr"/"rts": levels, set before the request
     looks_up: bool = False  # its post-actions look a key up in a table: a miss is a reply it cannot read
     renews: bool = False  # its post-actions give every state variable in the state's order: the new state, published whole
+    actuators: tuple[ActuatorLimit, ...] = ()  # actuators' limits on its parameters: shaped or refused first
     floats: tuple[int, ...] = field(init=False)
     ranged: tuple[int, ...] = field(init=False)
     asked: Request | None = field(init=False)  # the request of a plain exchange (`_asked_at_once`), in one step
@@ -2178,39 +2337,43 @@ def _plain(encoder: Pack | Format | None) -> bool:
 def _sent_at_once(plan: Primitive) -> bool:
     """`sent_at_once`, of this plan."""
     return sent_at_once(encoder=plan.encoder, replies=not isinstance(plan.reply, NoReply),
-                        acts=plan.actions is not None or plan.lines is not None, dependent=_dependent(plan.params))
+                        acts=plan.actions is not None or plan.lines is not None, dependent=_dependent(plan.params),
+                        actuated=bool(plan.actuators))
 
 
 def _dependent(params: tuple[Param, ...]) -> bool:
     return any(p.low_terms or p.high_terms for p in params)
 
 
-def sent_at_once(*, encoder: Pack | Format | None, replies: bool, acts: bool, dependent: bool = False) -> bool:
+def sent_at_once(*, encoder: Pack | Format | None, replies: bool, acts: bool, dependent: bool = False,
+                 actuated: bool = False) -> bool:
     """Whether running a primitive is only packing its values, framing them and writing them
     (`Primitive.request`): one plain struct pack (`encoder`), and no reply, reply table,
-    post-action, modem line (`acts`) or range that reads another parameter (`dependent`, checked
-    the general way) in the way. The one rule: the engine applies it to its plans, the lowering
-    (`rdisc.lower`) to its own."""
-    return _plain(encoder) and not replies and not acts and not dependent
+    post-action, modem line (`acts`), range that reads another parameter (`dependent`, checked
+    the general way) or actuator's limit (`actuated`, applied the general way) in the way. The
+    one rule: the engine applies it to its plans, the lowering (`rdisc.lower`) to its own."""
+    return _plain(encoder) and not replies and not acts and not dependent and not actuated
 
 
 def _asked_at_once(plan: Primitive) -> bool:
     """`asked_at_once`, of this plan."""
     reply = plan.reply
     return asked_at_once(encoder=plan.encoder, framed=plan.frame is not None, lines=plan.lines is not None,
-                         retries=plan.retries,
+                         retries=plan.retries, actuated=bool(plan.actuators),
                          decoder=reply.decoder if isinstance(reply, FixedReply) and reply.error is None else None)
 
 
 def asked_at_once(*, encoder: Pack | Format | None, framed: bool, lines: bool, retries: int,
-                  decoder: Unpack | None) -> bool:
+                  decoder: Unpack | None, actuated: bool = False) -> bool:
     """Whether a primitive is a plain exchange (`Exchange._ask`): its request one plain struct pack
     of some bytes (a listener writes none, and keeps what has arrived) with no frame and no modem
     line, its reply a fixed number of bytes (`decoder`: a reply's with no error reply in its
     place, else None), read in one try (no `retry`). Such a reply is read from the port in one
-    read. The one rule: the engine applies it to its plans, the lowering (`rdisc.lower`) to its own."""
+    read, and no actuator's limit on its parameters (`actuated`). The one rule: the engine applies it
+    to its plans, the lowering (`rdisc.lower`) to its own."""
     return (_plain(encoder) and isinstance(encoder, Pack) and encoder.struct.size > 0 and not framed
-            and not lines and not retries and decoder is not None and decoder.size > 0 and decoder.until is None)
+            and not lines and not retries and decoder is not None and decoder.size > 0 and decoder.until is None
+            and not actuated)
 
 
 def plainly_given(args: Args, kinds: tuple[type, ...], bounds: tuple[tuple[int, Any, Any], ...]) -> bool:
@@ -2979,6 +3142,7 @@ class _Owner(Protocol):
     _clock: Callable[[], float]
     _closed: bool
     _run_callbacks: list[Callable[[str, str, str], object]]
+    _ticking: threading.local
 
     @property
     def _ports(self) -> Mapping[str, _Port]: ...
@@ -3037,15 +3201,20 @@ class _Worker:
         """One iteration: each periodic interface, then the keepalive if it is due. Errors go
         to the error callbacks, and the schedule goes on. Under `single` the tick holds the
         port (re-entrant: its exchanges take it again), so another thread's command waits for
-        the whole tick; one made by a callback on this thread goes in between."""
+        the whole tick; one made by a callback on this thread goes in between. Only while it
+        waits for the callbacks' turn, which a callback on another thread may hold while it
+        commands the robot, does the tick let the port go."""
         port = self.robot._ports.get(self.connection.name) if self.whole else None
         if port is None:  # dual, multiple, or a simulated device: no port to hold
             self._tick()
             return
         port.lock.acquire()
+        ticking = self.robot._ticking
+        ticking.port = port  # the callbacks' turn lets it go while it waits (`Exchange._take_turn`)
         try:
             self._tick()
         finally:
+            ticking.port = None
             port.lock.release()
 
     def _tick(self) -> None:
@@ -3138,6 +3307,7 @@ class Exchange:
     _read_ns: int | None  # when a reply last changed the state (ns since the epoch); None: none has
     _state_lock: threading.Lock
     _callback_lock: threading.RLock
+    _ticking: threading.local  # `.port`: the port this thread's tick holds whole (`threading single`), else None
     _filters: dict[tuple[str, str], KalmanFilter]  # (output, field): its running filter, made when first delivered
     _output_callbacks: list[OutputCallback]
     _error_callbacks: list[ErrorCallback]
@@ -3922,7 +4092,8 @@ class Exchange:
         except EVAL_ERRORS as err:
             raise RdisValueError(f"{plan.name}: {err}") from None
         message = OutputMessage(plan.name, contents, time.time_ns() if read_ns is None else read_ns)
-        with self._callback_lock:
+        port = self._take_turn()
+        try:
             if plan.filters:
                 message = OutputMessage(plan.name, self._filtered(plan, contents), message.read_ns)
             for callback in list(self._output_callbacks):
@@ -3932,6 +4103,35 @@ class Exchange:
                     error = RdisCallbackError(f"{plan.name}: output callback raised {type(err).__name__}: {err}")
                     error.__cause__ = err
                     self._report(error)
+        finally:
+            self._end_turn(port)
+
+    def _take_turn(self) -> _Port | None:
+        """The callbacks' turn (they run one at a time, under the callback lock). A tick that holds
+        its port whole (`threading single`) and finds the turn taken lets the port go while it
+        waits and runs the callbacks: the turn may be a callback's on another thread that is
+        commanding the robot, which waits for the port. Returns that port, to take back after."""
+        lock = self._callback_lock
+        if lock.acquire(blocking=False):
+            return None
+        port: _Port | None = getattr(self._ticking, "port", None)
+        if port is None:
+            lock.acquire()
+            return None
+        port.lock.release()
+        try:
+            lock.acquire()
+        except BaseException:  # a signal's exception while waiting: the tick holds its port again
+            port.lock.acquire()
+            raise
+        return port
+
+    def _end_turn(self, port: _Port | None) -> None:
+        """The turn's end: the callback lock let go, then the tick's port taken back (never the
+        port while holding the turn: a host's call holding its port may wait for the turn)."""
+        self._callback_lock.release()
+        if port is not None:
+            port.lock.acquire()
 
     def _filtered(self, plan: Output, contents: dict[str, Value]) -> dict[str, Value]:
         """The fields a Kalman filter estimates, each filter stepped once by the value delivered
@@ -3959,7 +4159,8 @@ class Exchange:
         """The events queued, in order, to the callbacks, one at a time: the I/O callbacks every
         one but "skip", the trace callbacks every one with its stamp. A thread shows another's
         events that came before its own and are not shown yet (so a line never jumps the queue)."""
-        with self._callback_lock:
+        port = self._take_turn()
+        try:
             while True:
                 with self._events_lock:
                     if not self._events:
@@ -3968,6 +4169,8 @@ class Exchange:
                 if kind != "skip":
                     self._notify(self._io_callbacks, connection, kind, connection, data)
                 self._notify(self._trace_callbacks, connection, when, kind, connection, data)
+        finally:
+            self._end_turn(port)
 
     def _notify(self, callbacks: Sequence[Callable[..., object]], connection: str, *event: Any) -> None:
         for callback in list(callbacks):
@@ -3980,12 +4183,16 @@ class Exchange:
 
     def _notify_run(self, connection: str, kind: str, name: str) -> None:
         """Tell a recorder that a connection's thread starts a periodic interface or its keepalive."""
-        with self._callback_lock:
+        port = self._take_turn()
+        try:
             for callback in list(self._run_callbacks):
                 callback(connection, kind, name)
+        finally:
+            self._end_turn(port)
 
     def _report(self, error: BaseException) -> None:
-        with self._callback_lock:
+        port = self._take_turn()
+        try:
             callbacks = list(self._error_callbacks)
             if not callbacks:
                 _log.warning("%s: %s: %s", self.name, type(error).__name__, error)
@@ -3994,6 +4201,8 @@ class Exchange:
                     callback(error)
                 except Exception:  # noqa: BLE001, S110 - the contract: an error callback's failure is ignored
                     pass
+        finally:
+            self._end_turn(port)
 
 
 def _unwatched_write(robot: Exchange, ports: Mapping[str, _Port]) -> Callable[[Primitive, bytes], None]:
@@ -4266,6 +4475,7 @@ class Robot(Exchange):
         self._state: dict[str, Value] = dict(device.state)
         self._state_lock = threading.Lock()
         self._callback_lock = threading.RLock()  # callbacks run one at a time
+        self._ticking = threading.local()  # `.port`: what this thread's tick holds whole (`threading single`)
         self._output_callbacks: list[OutputCallback] = []
         self._filters = {}
         self._read_ns: int | None = None  # when a reply last changed the state
@@ -4299,6 +4509,7 @@ class Robot(Exchange):
         self._clock: Callable[[], float] = time.monotonic  # the schedule's time, and the delays'
         self._sleep: Callable[[float], None] = self._delay
         self._sensed = SensorCache()
+        self._actuated = Actuated()  # what each actuator was last given, by the robot's clock
         self._choose_write()
 
     # ---- callbacks --------------------------------------------------------------------------------
@@ -4443,11 +4654,14 @@ class Robot(Exchange):
     def request(self, name: str, /, *args: Any) -> bytes:
         """The bytes primitive `name` would write for these arguments (framed, after every check
         a call makes), neither written nor needing a port: what `rdisc dump --args` shows. b""
-        for a primitive that writes nothing (a listener). Errors are raised as a call's."""
+        for a primitive that writes nothing (a listener). Errors are raised as a call's. Its
+        actuators' limits hold it as the first command they are given (a wheel's speed within its
+        velocity), and the commands after it are held to the ones written, not to it."""
         plan = self.device.primitives.get(name)
         if plan is None:
             raise KeyError(f"{self.name} has no primitive named {name!r}")
-        plan, values, local = self._planned(plan, _accepted(f"primitive {plan.name}", plan.params, list(args)))
+        given = _accepted(f"primitive {plan.name}", plan.params, list(args))
+        plan, values, local = self._planned(plan, given, Actuated())  # as a first command: no actuator moved
         return self._request(plan, values, local)[0]
 
     def send_raw(self, connection: str, data: bytes, /, *, quiet: float = _RAW_QUIET) -> bytes:
@@ -4835,8 +5049,9 @@ class Robot(Exchange):
         """A primitive the general way: its parameters checked, its reply table's entry chosen."""
         self._exchange(*self._planned(plan, args))
 
-    def _planned(self, plan: Primitive, args: Args) -> tuple[Primitive, Args, Args]:
-        """A primitive's parameters checked (ints made floats, ranges), its reply table's entry
+    def _planned(self, plan: Primitive, args: Args, actuated: Actuated | None = None) -> tuple[Primitive, Args, Args]:
+        """A primitive's parameters checked (ints made floats, ranges) and held to its actuators'
+        limits (`actuated`: what they were last given, else the robot's), its reply table's entry
         chosen: that plan, its format values and the parameters' values."""
         for i in plan.floats:
             if type(args[i]) is int:
@@ -4844,6 +5059,8 @@ class Robot(Exchange):
                 break
         if plan.ranged:
             _check_ranges(plan.name, plan.params, plan.ranged, args)
+        if plan.actuators:  # shaped to the actuators' limits, or refused (`actuation`)
+            args = (actuated or self._actuated).limited(plan.actuators, args, self._clock())
         if isinstance(plan.reply, KeyedReply):
             plan = plan.reply.entry(args)
         try:
