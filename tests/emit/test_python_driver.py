@@ -446,13 +446,17 @@ def test_command_line_stops_the_robot_on_a_signal(drivers, signum, status) -> No
     with CreateEmulator(bumpers=1) as dev:
         process = subprocess.Popen(
             [sys.executable, str(drivers["fast_polled"]), "--port", dev.port, "--watch"],
-            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=cli_env(),
+            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=cli_env(PYTHONFAULTHANDLER="1"),
         )
         try:
             first = process.stdout.readline()  # the first output: the robot runs
             assert json.loads(first) == {"name": "detect_bump", "contents": {"distance": 0.0}}
             process.send_signal(signum)
-            assert process.wait(timeout=10) == status
+            try:
+                assert process.wait(timeout=30) == status
+            except subprocess.TimeoutExpired:  # seen once in a full run: say where each thread stood
+                process.send_signal(signal.SIGABRT)
+                raise AssertionError(f"still running 30 s after the signal: {process.communicate()[1]}") from None
         finally:
             if process.poll() is None:
                 process.kill()
