@@ -5,16 +5,12 @@ module, with a message of plain namespaces."""
 
 from __future__ import annotations
 
-import importlib.util
-import sys
 from pathlib import Path
 from types import ModuleType, SimpleNamespace
 
 import pytest
 
-from rdisc.compile import compile_path
-from rdisc.emit.ros import to_ros
-from rdisc.emit.ros2 import to_ros2
+from tests.support.nodes import node_of, quaternion, vector
 
 ODOMETRY = '''robot wheels { author "t" }
 state x: float = 0.0
@@ -48,28 +44,7 @@ output imu: Turning {
 
 
 def _node(kind: str, tmp_path: Path) -> ModuleType:
-    source = tmp_path / "wheels.rdis"
-    source.write_text(ODOMETRY + IMU, encoding="utf-8")
-    compilation = compile_path(str(source))
-    assert compilation.model is not None and not compilation.diagnostics.has_errors()
-    model = compilation.model
-    text = to_ros(model, "wheels.rdis") if kind == "ros1" else to_ros2(model, "wheels.rdis")
-    path = tmp_path / f"wheels_{kind}.py"
-    path.write_text(text, encoding="utf-8")
-    spec = importlib.util.spec_from_file_location(f"wheels_{kind}", path)
-    assert spec is not None and spec.loader is not None
-    module = importlib.util.module_from_spec(spec)
-    sys.modules[spec.name] = module  # its dataclasses look their module up
-    spec.loader.exec_module(module)
-    return module
-
-
-def _vector() -> SimpleNamespace:
-    return SimpleNamespace(x=0.0, y=0.0, z=0.0)
-
-
-def _quaternion() -> SimpleNamespace:
-    return SimpleNamespace(x=0.0, y=0.0, z=0.0, w=1.0)
+    return node_of(ODOMETRY + IMU, kind, tmp_path, "wheels")
 
 
 def _diagonal(side: int, **at: float) -> list[float]:
@@ -84,8 +59,8 @@ def _diagonal(side: int, **at: float) -> list[float]:
 def test_an_odometry_carries_its_fields_variances(kind: str, tmp_path: Path) -> None:
     node = _node(kind, tmp_path)
     msg = SimpleNamespace(
-        pose=SimpleNamespace(pose=SimpleNamespace(position=_vector(), orientation=_quaternion()), covariance=[0.0] * 36),
-        twist=SimpleNamespace(twist=SimpleNamespace(linear=_vector(), angular=_vector()), covariance=[0.0] * 36))
+        pose=SimpleNamespace(pose=SimpleNamespace(position=vector(), orientation=quaternion()), covariance=[0.0] * 36),
+        twist=SimpleNamespace(twist=SimpleNamespace(linear=vector(), angular=vector()), covariance=[0.0] * 36))
     node._ros_fill_odom(msg, {"x": 1.5, "y": 0.0, "theta": 0.0, "linear": 0.25, "angular": 0.0})
     assert msg.pose.pose.position.x == 1.5
     assert msg.pose.covariance == _diagonal(6, d0=0.02 * 0.02, d5=0.25)  # x, then yaw
@@ -95,7 +70,7 @@ def test_an_odometry_carries_its_fields_variances(kind: str, tmp_path: Path) -> 
 @pytest.mark.parametrize("kind", ["ros1", "ros2"])
 def test_an_imu_carries_its_fields_variances(kind: str, tmp_path: Path) -> None:
     node = _node(kind, tmp_path)
-    msg = SimpleNamespace(orientation=_quaternion(), angular_velocity=_vector(), linear_acceleration=_vector(),
+    msg = SimpleNamespace(orientation=quaternion(), angular_velocity=vector(), linear_acceleration=vector(),
                           orientation_covariance=[0.0] * 9, angular_velocity_covariance=[0.0] * 9,
                           linear_acceleration_covariance=[0.0] * 9)
     node._ros_fill_imu(msg, {"rate": 0.5, "heading": 0.0})

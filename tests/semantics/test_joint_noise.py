@@ -6,9 +6,7 @@ fields' places, the off-diagonal values included (an Odometry's 6x6 pose and twi
 
 from __future__ import annotations
 
-import importlib.util
 import json
-import sys
 from pathlib import Path
 from types import ModuleType, SimpleNamespace
 
@@ -16,11 +14,10 @@ import pytest
 
 from rdisc.compile import compile_path
 from rdisc.diagnostics import Diagnostics
-from rdisc.emit.ros import to_ros
-from rdisc.emit.ros2 import to_ros2
 from rdisc.syntax.parse import parse
 from rdisc.syntax.printer import print_module
 from tests.engine.test_one_engine import through_json
+from tests.support.nodes import node_of, quaternion, vector
 
 HEAD = '''robot wheels { author "t" }
 state x: float = 0.0
@@ -123,27 +120,7 @@ def test_json_that_mixes_a_field_and_fields_is_refused(tmp_path: Path) -> None:
 
 
 def _node(kind: str, tmp_path: Path) -> ModuleType:
-    source = tmp_path / "wheels.rdis"
-    source.write_text(HEAD + ODOMETRY + IMU * (kind == "ros1"), encoding="utf-8")  # no Imu in rdisc's ROS 2 messages
-    compilation = compile_path(str(source))
-    assert compilation.model is not None and not compilation.diagnostics.has_errors()
-    text = to_ros(compilation.model, "wheels.rdis") if kind == "ros1" else to_ros2(compilation.model, "wheels.rdis")
-    path = tmp_path / f"joint_{kind}.py"
-    path.write_text(text, encoding="utf-8")
-    spec = importlib.util.spec_from_file_location(f"joint_{kind}", path)
-    assert spec is not None and spec.loader is not None
-    module = importlib.util.module_from_spec(spec)
-    sys.modules[spec.name] = module  # its dataclasses look their module up
-    spec.loader.exec_module(module)
-    return module
-
-
-def _vector() -> SimpleNamespace:
-    return SimpleNamespace(x=0.0, y=0.0, z=0.0)
-
-
-def _quaternion() -> SimpleNamespace:
-    return SimpleNamespace(x=0.0, y=0.0, z=0.0, w=1.0)
+    return node_of(HEAD + ODOMETRY + IMU, kind, tmp_path, "joint")
 
 
 # An Odometry's covariances, row by row: x, y, z, rotation about x, y, z (REP 103).
@@ -169,15 +146,16 @@ TWIST_COVARIANCE = [
 def test_an_odometry_carries_its_pose_s_and_twist_s_covariances_whole(kind: str, tmp_path: Path) -> None:
     node = _node(kind, tmp_path)
     msg = SimpleNamespace(
-        pose=SimpleNamespace(pose=SimpleNamespace(position=_vector(), orientation=_quaternion()), covariance=[0.0] * 36),
-        twist=SimpleNamespace(twist=SimpleNamespace(linear=_vector(), angular=_vector()), covariance=[0.0] * 36))
+        pose=SimpleNamespace(pose=SimpleNamespace(position=vector(), orientation=quaternion()), covariance=[0.0] * 36),
+        twist=SimpleNamespace(twist=SimpleNamespace(linear=vector(), angular=vector()), covariance=[0.0] * 36))
     node._ros_fill_odom(msg, {"x": 1.5, "y": 0.0, "theta": 0.0, "linear": 0.25, "angular": 0.0})
     assert (msg.pose.covariance, msg.twist.covariance) == (POSE_COVARIANCE, TWIST_COVARIANCE)
 
 
-def test_an_imu_carries_its_rates_covariance_at_their_axes(tmp_path: Path) -> None:
-    node = _node("ros1", tmp_path)
-    msg = SimpleNamespace(orientation=_quaternion(), angular_velocity=_vector(), linear_acceleration=_vector(),
+@pytest.mark.parametrize("kind", ["ros1", "ros2"])
+def test_an_imu_carries_its_rates_covariance_at_their_axes(kind: str, tmp_path: Path) -> None:
+    node = _node(kind, tmp_path)
+    msg = SimpleNamespace(orientation=quaternion(), angular_velocity=vector(), linear_acceleration=vector(),
                           orientation_covariance=[0.0] * 9, angular_velocity_covariance=[0.0] * 9,
                           linear_acceleration_covariance=[0.0] * 9)
     node._ros_fill_imu(msg, {"roll_rate": 0.0, "yaw_rate": 0.5, "heading": 0.0})
