@@ -4,17 +4,13 @@ noisy state variable, or a sensor, carries its variance where the field's own no
 
 from __future__ import annotations
 
-import importlib.util
-import sys
 from pathlib import Path
 from types import ModuleType, SimpleNamespace
 
 import pytest
 
-from rdisc.compile import compile_path
-from rdisc.emit.ros import to_ros
-from rdisc.emit.ros2 import to_ros2
-from tests.emit.test_ros_covariances import _diagonal, _quaternion, _vector
+from tests.emit.test_ros_covariances import _diagonal
+from tests.support.nodes import node_of, quaternion, vector
 
 TEXT = '''robot wheels { author "t" }
 state x: float = 0.0 noise 0.5 "m"
@@ -37,27 +33,15 @@ output odom: Odometry {
 
 
 def _node(kind: str, tmp_path: Path) -> ModuleType:
-    source = tmp_path / "carried.rdis"
-    source.write_text(TEXT, encoding="utf-8")
-    compilation = compile_path(str(source))
-    assert compilation.model is not None and not compilation.diagnostics.has_errors()
-    text = (to_ros if kind == "ros1" else to_ros2)(compilation.model, "carried.rdis")
-    path = tmp_path / f"carried_{kind}.py"
-    path.write_text(text, encoding="utf-8")
-    spec = importlib.util.spec_from_file_location(f"carried_{kind}", path)
-    assert spec is not None and spec.loader is not None
-    module = importlib.util.module_from_spec(spec)
-    sys.modules[spec.name] = module
-    spec.loader.exec_module(module)
-    return module
+    return node_of(TEXT, kind, tmp_path, "carried")
 
 
 @pytest.mark.parametrize("kind", ["ros1", "ros2"])
 def test_a_state_variables_and_a_sensors_noise_reach_the_odometry(kind: str, tmp_path: Path) -> None:
     node = _node(kind, tmp_path)
     msg = SimpleNamespace(
-        pose=SimpleNamespace(pose=SimpleNamespace(position=_vector(), orientation=_quaternion()), covariance=[0.0] * 36),
-        twist=SimpleNamespace(twist=SimpleNamespace(linear=_vector(), angular=_vector()), covariance=[0.0] * 36))
+        pose=SimpleNamespace(pose=SimpleNamespace(position=vector(), orientation=quaternion()), covariance=[0.0] * 36),
+        twist=SimpleNamespace(twist=SimpleNamespace(linear=vector(), angular=vector()), covariance=[0.0] * 36))
     node._ros_fill_odom(msg, {"x": 1.0, "y": 0.0, "theta": 0.0, "linear": 0.0, "angular": 0.0})
     # x as it is: its variance; y converted (/ 1000): none carried, 0.
     assert msg.pose.covariance == _diagonal(6, d0=0.25)
