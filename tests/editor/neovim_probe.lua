@@ -1,8 +1,8 @@
 -- Run by tests/editor/test_neovim.py after the README's lines and the file opened, as a user
 -- would press the keys of Neovim's LSP client: waits for the buffer's diagnostics (polled every
 -- 100 ms, at most 600 times), applies the quick fix of the first, waits for them to clear, asks
--- for a hover and a definition and reads the semantic token at $RDISC_PROBE_AT's positions, formats
--- the buffer, then writes what it saw as JSON to $RDISC_PROBE_OUT and quits.
+-- for a hover and a definition, renames the primitive, reads the semantic token at $RDISC_PROBE_AT's
+-- positions, formats the buffer, then writes what it saw as JSON to $RDISC_PROBE_OUT and quits.
 local at = vim.json.decode(os.getenv("RDISC_PROBE_AT"))
 local uri = vim.uri_from_bufnr(0)
 local arrived = vim.wait(60000, function() return #vim.diagnostic.get(0) > 0 end, 100)
@@ -49,6 +49,13 @@ local hover = ask("textDocument/hover", at_position("hover"))
 local definition = ask("textDocument/definition", at_position("definition"))
 if definition ~= vim.NIL and definition.uri == nil then definition = definition[1] end
 
+-- Rename the call's primitive, as `vim.lsp.buf.rename` does from the cursor; every use follows.
+vim.api.nvim_win_set_cursor(0, { at.rename[1] + 1, at.rename[2] })
+vim.lsp.buf.rename(at.rename[3])
+local renamed = vim.wait(60000, function()
+  return table.concat(vim.api.nvim_buf_get_lines(0, 0, -1, false), "\n"):find(at.rename[3], 1, true) ~= nil
+end, 100)
+
 local function token_at(name)
   local tokens = vim.lsp.semantic_tokens.get_at_pos(0, at[name][1], at[name][2]) or {}
   return tokens[1] and tokens[1].type or nil
@@ -62,7 +69,7 @@ local formatted = table.concat(vim.api.nvim_buf_get_lines(0, 0, -1, false), "\n"
 local out = assert(io.open(os.getenv("RDISC_PROBE_OUT"), "w"))
 out:write(vim.json.encode({
   arrived = arrived, filetype = vim.bo.filetype, clients = clients, diagnostics = diagnostics,
-  fixes = fixes, cleared = cleared,
+  fixes = fixes, cleared = cleared, renamed = renamed,
   hover = hover ~= vim.NIL and hover.contents.value or vim.NIL,
   definition = definition ~= vim.NIL and { uri = definition.uri, line = definition.range.start.line } or vim.NIL,
   token = token, formatted = formatted,

