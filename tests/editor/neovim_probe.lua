@@ -1,7 +1,7 @@
 -- Run by tests/editor/test_neovim.py after the README's lines and the file opened, as a user
 -- would press the keys of Neovim's LSP client: waits for the buffer's diagnostics (polled every
 -- 100 ms, at most 600 times), applies the quick fix of the first, waits for them to clear, asks
--- for a hover and a definition, renames the primitive, reads the semantic token at $RDISC_PROBE_AT's
+-- for a hover, a definition and completions, renames the primitive, reads the semantic token at $RDISC_PROBE_AT's
 -- positions, formats the buffer, then writes what it saw as JSON to $RDISC_PROBE_OUT and quits.
 local at = vim.json.decode(os.getenv("RDISC_PROBE_AT"))
 local uri = vim.uri_from_bufnr(0)
@@ -49,6 +49,13 @@ local hover = ask("textDocument/hover", at_position("hover"))
 local definition = ask("textDocument/definition", at_position("definition"))
 if definition ~= vim.NIL and definition.uri == nil then definition = definition[1] end
 
+-- Completion where the call's name is typed: the names the place takes.
+local completion = ask("textDocument/completion", at_position("completion"))
+local offered = {}
+for _, item in ipairs(completion ~= vim.NIL and (completion.items or completion) or {}) do
+  offered[item.label] = true
+end
+
 -- Rename the call's primitive, as `vim.lsp.buf.rename` does from the cursor; every use follows.
 vim.api.nvim_win_set_cursor(0, { at.rename[1] + 1, at.rename[2] })
 vim.lsp.buf.rename(at.rename[3])
@@ -70,6 +77,7 @@ local out = assert(io.open(os.getenv("RDISC_PROBE_OUT"), "w"))
 out:write(vim.json.encode({
   arrived = arrived, filetype = vim.bo.filetype, clients = clients, diagnostics = diagnostics,
   fixes = fixes, cleared = cleared, renamed = renamed,
+  completed = offered[at.completion[3]] == true,
   hover = hover ~= vim.NIL and hover.contents.value or vim.NIL,
   definition = definition ~= vim.NIL and { uri = definition.uri, line = definition.range.start.line } or vim.NIL,
   token = token, formatted = formatted,

