@@ -55,13 +55,18 @@ def check_odometry(model: m.Model, d: Diagnostics, symbols: Symbols) -> None:
 
 def _measured(t: m.Transmission) -> bool:
     """A wheel's transmission that measures its angle from a state variable (an encoder)."""
-    return any(b.quantity is m.Quantity.POSITION and b.index is None for b in t.measures)
+    return any(_is_encoder(b) for b in t.measures)
 
 
 def _encoder(model: m.Model, wheel: Wheel) -> m.Binding | None:
     found = [b for t in model.transmissions.values() if t.joint == wheel.joint.name for b in t.measures
-             if b.quantity is m.Quantity.POSITION and b.index is None]
+             if _is_encoder(b)]
     return found[0] if len(found) == 1 else None
+
+
+def _is_encoder(binding: m.Binding) -> bool:
+    """A measure of a joint's angle from one state variable, not an array's item."""
+    return binding.quantity is m.Quantity.POSITION and binding.index is None
 
 
 class _Step:
