@@ -23,9 +23,8 @@ import xml.etree.ElementTree as ET
 
 from rdisc.emit.body_xml import BodyError
 from rdisc.semantics import model as m
-from rdisc.semantics.reflected import joint_inertia, position_gain
+from rdisc.semantics.reflected import TIMESTEP, joint_inertia, position_gain
 
-TIMESTEP = 0.002  # s: MuJoCo's default, fixed so that a simulation repeats exactly
 CASTER_FRICTION = "0.01 0.005 0.0001"  # sliding, torsional, rolling: a ball caster's
 MAX_DEPTH = 256  # joints from the root: Python's XML writer recurses a level a body, and so does MuJoCo's parser
 VELOCITY_ERROR = 0.01  # a velocity actuator gives the whole effort this fraction of the speed limit away

@@ -12,13 +12,11 @@ computed for the values the pack takes only (`(goal >> 8)`, unmasked, is a byte 
 from __future__ import annotations
 
 import struct
+from collections.abc import Sequence
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
+from typing import Any, Protocol
 
 from rdisc.semantics import model as m
-
-if TYPE_CHECKING:
-    from rdisc.lower import Written
 
 __all__ = ["WholeFrame", "whole_frame"]
 
@@ -35,7 +33,32 @@ class WholeFrame:
     slots: tuple[m.Slot, ...]  # the payload's values' codes, in order
 
 
-def whole_frame(encoding: m.Pack | m.Format | None, written: Written) -> WholeFrame | None:
+class _Values(Protocol):
+    @property
+    def items(self) -> Sequence[tuple[str, m.Expr, Any]]: ...
+
+
+class Request(Protocol):
+    """What of a one-step request (the lowering's `Written`) its one struct is made from: the
+    lowering's plans are above this module, so it names only the parts it reads."""
+
+    @property
+    def values(self) -> _Values: ...
+    @property
+    def checksum(self) -> object | None: ...
+    @property
+    def check_format(self) -> str: ...
+    @property
+    def check_size(self) -> int: ...
+    @property
+    def partial(self) -> int | None: ...
+    @property
+    def head(self) -> bytes: ...
+    @property
+    def tail(self) -> bytes: ...
+
+
+def whole_frame(encoding: m.Pack | m.Format | None, written: Request) -> WholeFrame | None:
     """The one struct of `written`'s head, payload, checksum and tail; None where its payload's
     layout has host order, groups, bit fields or a code not an integer's (with a checksum), or
     where the checksum is not a sum or not packed in the payload's byte order."""

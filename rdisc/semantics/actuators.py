@@ -9,11 +9,10 @@ held against the inertia its joint carries (W621), as the simulation will integr
 from __future__ import annotations
 
 from rdisc.diagnostics import Diagnostics, Label
-from rdisc.emit.mjcf import TIMESTEP
 from rdisc.semantics import model as m
 from rdisc.semantics.body import BodyRules
 from rdisc.semantics.linear import limited
-from rdisc.semantics.reflected import STABLE_STEP, joint_inertia, steps_per_period
+from rdisc.semantics.reflected import STABLE_STEP, TIMESTEP, joint_inertia, steps_per_period
 from rdisc.syntax import ast
 
 _KINDS = {k.value: k for k in m.ActuatorKind}

@@ -20,6 +20,7 @@ POSITION_ERROR = 0.05  # rad (m): a derived position servo gives its whole effor
 CAPPED_STEP = 4.0  # ω·dt past which the servo's own gain is too near the limit to keep
 DERIVED_STEP = 1.0  # ω·dt of a gain brought down: well inside the limit, settled within a few steps
 STABLE_STEP = 2 + 2 * math.sqrt(2)  # ω·dt beyond which an implicitly damped servo's steps grow
+TIMESTEP = 0.002  # s: the simulation's step, MuJoCo's default, fixed so that a simulation repeats exactly
 
 Matrix = tuple[tuple[float, float, float], ...]
 _IDENTITY: Matrix = ((1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, 0.0, 1.0))

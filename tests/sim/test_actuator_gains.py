@@ -12,9 +12,8 @@ import pytest
 mujoco = pytest.importorskip("mujoco")
 
 from rdisc.compile import compile_path, compile_text
-from rdisc.emit.mjcf import TIMESTEP
 from rdisc.semantics import model as m
-from rdisc.semantics.reflected import STABLE_STEP, joint_inertia, position_gain, steps_per_period
+from rdisc.semantics.reflected import STABLE_STEP, TIMESTEP, joint_inertia, position_gain, steps_per_period
 from rdisc.sim import Simulation
 from tests.engine.test_one_engine import implementation_of
 
