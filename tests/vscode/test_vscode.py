@@ -119,7 +119,8 @@ def code_server(tmp_path: Path) -> Iterator[tuple[str, Path]]:
 
 def test_vscode_with_the_readme_install_shows_a_misspelt_primitive(code_server: tuple[str, Path]) -> None:
     playwright_api = pytest.importorskip("playwright.sync_api")
-    expect = playwright_api.expect
+    expect = playwright_api.Expect()  # one of its own: its timeout is not every other test's
+    expect.set_options(timeout=WAIT_MS)
     url, document = code_server
     arm = (ROOT / "examples" / "arm.rdis").read_text(encoding="utf-8")
     lines = arm.splitlines()
@@ -136,7 +137,6 @@ def test_vscode_with_the_readme_install_shows_a_misspelt_primitive(code_server: 
         try:
             page = browser.new_page(viewport={"width": 1600, "height": 1000})
             page.set_default_timeout(WAIT_MS)
-            expect.set_options(timeout=WAIT_MS)
             page.goto(url)
             page.get_by_role("treeitem", name="arm.rdis").click()
             editor = page.locator(".editor-instance .monaco-editor").first
