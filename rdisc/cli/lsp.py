@@ -13,6 +13,9 @@ def add_parser(verbs: argparse._SubParsersAction[argparse.ArgumentParser]) -> No
     p = verbs.add_parser("lsp", help="run the language server over stdio (for an editor to start)",
                          description="Serve the Language Server Protocol on stdin and stdout until the editor "
                                      "asks it to exit: start it from an editor, not by hand.")
+    # vscode-languageclient adds `--stdio` to the command of a server it starts over stdio, as the
+    # servers it starts expect (editors/vscode's extension is one); stdio is the only transport here.
+    p.add_argument("--stdio", action="store_true", help="serve on stdin and stdout (what it does anyway)")
     p.set_defaults(run=run)
 
 

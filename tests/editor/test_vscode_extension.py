@@ -10,6 +10,7 @@ import os
 import re
 import shutil
 import subprocess
+import sys
 from pathlib import Path
 from typing import Any
 
@@ -85,3 +86,20 @@ def test_the_language_configuration_comments_brackets_and_indents() -> None:
     assert [bool(decrease.match(line)) for line in ("}", "    ])", "    }  # end", "x = {}")] == [True] * 3 + [False]
     assert re.fullmatch(made["wordPattern"], "sync_read_present") and not re.fullmatch(made["wordPattern"], "_x")
     assert made["onEnterRules"] == [{"beforeText": r"^\s*///", "action": {"indent": "none", "appendText": "/// "}}]
+
+
+def test_rdisc_lsp_takes_the_stdio_flag_vscode_languageclient_adds() -> None:
+    """vscode-languageclient starts a server it talks to over stdio as COMMAND ARGS --stdio: `rdisc
+    lsp --stdio` serves (initialize answered, shutdown and exit obeyed), as `rdisc lsp` does."""
+    messages = [{"jsonrpc": "2.0", "id": 1, "method": "initialize", "params": {"processId": None, "rootUri": None,
+                                                                              "capabilities": {}}},
+                {"jsonrpc": "2.0", "method": "initialized", "params": {}},
+                {"jsonrpc": "2.0", "id": 2, "method": "shutdown"}, {"jsonrpc": "2.0", "method": "exit"}]
+    framed = b"".join(b"Content-Length: %d\r\n\r\n%s" % (len(body), body)
+                      for body in (json.dumps(message).encode("utf-8") for message in messages))
+    done = subprocess.run([sys.executable, "-m", "rdisc", "lsp", "--stdio"], input=framed, capture_output=True,
+                          check=False, timeout=60)
+    assert done.returncode == 0, done.stderr.decode("utf-8", "replace")
+    replies = [json.loads(body) for body in re.split(rb"Content-Length: \d+\r\n(?:[^\r\n]+\r\n)*\r\n", done.stdout) if body]
+    assert [reply["id"] for reply in replies] == [1, 2]
+    assert replies[0]["result"]["serverInfo"]["name"] == "rdisc" and replies[1]["result"] is None

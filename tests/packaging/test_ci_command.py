@@ -33,3 +33,13 @@ def test_ci_installs_the_npm_packages_the_textmate_grammars_tests_run_on() -> No
     ci = (ROOT / ".ci" / "run").read_text(encoding="utf-8")
     assert "\nnpm ci --prefix tests/editor --no-audit --no-fund\n" in ci
     assert (ROOT / "tests" / "editor" / "package-lock.json").is_file()  # what `npm ci` installs, exactly
+
+
+def test_ci_installs_code_server_and_the_extensions_client_the_vscode_test_runs() -> None:
+    ci = (ROOT / ".ci" / "run").read_text(encoding="utf-8")
+    assert ("\nnpm ci --prefix tests/vscode --ignore-scripts --no-audit --no-fund\n"
+            "npm run --prefix tests/vscode natives\n"
+            "npm ci --prefix editors/vscode --omit=dev --no-audit --no-fund\n") in ci
+    for folder in ("tests/vscode", "editors/vscode"):
+        assert (ROOT / folder / "package-lock.json").is_file()  # what `npm ci` installs, exactly
+    assert (ROOT / "tests" / "vscode" / "natives.sh").is_file()
