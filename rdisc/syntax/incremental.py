@@ -72,11 +72,17 @@ class Moved:
         self.moving = any(self.deltas)
 
     def shift(self, spans: list[Span], by: int) -> None:
-        """Move the spans of one declaration's text, which moved `by` characters (none moved yet):
-        each a call from C, not a line of Python (a 1,000-line file has 6,000)."""
+        """Move spans of texts that moved `by` characters (none moved yet): each a call from C,
+        not a line of Python (a 1,000-line file has 6,000)."""
         _exhaust(map(_set_start, spans, map(add, map(_start, spans), repeat(by))))
         _exhaust(map(_set_end, spans, map(add, map(_end, spans), repeat(by))))
         self.shifted.append(spans)
+
+    def shift_all(self, moves: dict[int, list[Span]]) -> None:
+        """`shift` each list of spans by how far it moved (its key), emptying `moves`."""
+        for by, spans in moves.items():
+            self.shift(spans, by)
+        moves.clear()
 
     def place(self, span: Span) -> None:
         """Move a span of the last text (if not moved yet) to where its text went; Unmoved if
@@ -198,13 +204,14 @@ class Reparser:
         kept: dict[tuple[str, str | None], Kept] = {}
         taken: list[tuple[int, int, int]] = []
         moved = Moved()
+        moves: dict[int, list[Span]] = {}  # the spans of the declarations that moved, by how far
         for i, (start, end) in enumerate(bounds):
             key = (text[start:end], docs.get(start))
             found = last.pop(key, None)
             if found is not None:  # its nodes, moved if its text moved
                 taken.append((found.start, end - start, start))
-                if found.start != start:
-                    moved.shift(found.spans(), start - found.start)
+                if found.start != start:  # moved after the loop, those moving as far at once
+                    moves.setdefault(start - found.start, []).extend(found.spans())
                     found.start = start
                 decls.extend(found.decls)
                 kept[key] = found
@@ -212,6 +219,7 @@ class Reparser:
                 continue
             again = kept.get(key)
             if again is not None:  # the same text again: a copy of the first's nodes, where it is
+                moved.shift_all(moves)
                 decls.extend(shifted(again.decls, start - again.start))
                 reused += 1
                 continue
@@ -221,6 +229,7 @@ class Reparser:
                 errors += 1
             elif len(diagnostics.items) == reported and len(damaged) == first_damaged:
                 kept[key] = Kept(start, tuple(decls[first:]))
+        moved.shift_all(moves)
         moved.kept(taken)
         self.files[path], self.reused, self.moved[path] = kept, reused, moved
         return ast.Module(path, tuple(decls), tuple(damaged))
