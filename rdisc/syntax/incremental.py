@@ -77,6 +77,8 @@ class Moved:
         _exhaust(map(_set_start, spans, map(add, map(_start, spans), repeat(by))))
         _exhaust(map(_set_end, spans, map(add, map(_end, spans), repeat(by))))
         self.shifted.append(spans)
+        if self._done is not None:
+            self._done.update(map(id, spans))
 
     def shift_all(self, moves: dict[int, list[Span]]) -> None:
         """`shift` each list of spans by how far it moved (its key), emptying `moves`."""
@@ -154,7 +156,7 @@ class Reparser:
     it first moves)."""
 
     def __init__(self) -> None:
-        self.files: dict[str, dict[tuple[str, str | None], Kept]] = {}
+        self.files: dict[str, dict[tuple[str, str | None], Parsed]] = {}
         self.reused = 0  # declarations taken from the file's last parse, by the last parse (for tests)
         self.counted: dict[str, int] = {}  # the tokens of each declaration's text, as counted
         self.cut: tuple[str, tuple[list[tuple[int, int]], dict[int, str]]] | None = None  # the last text's pieces
@@ -201,7 +203,7 @@ class Reparser:
         decls: list[ast.Decl] = []
         damaged: list[ast.Damaged] = []
         errors = reused = 0
-        kept: dict[tuple[str, str | None], Kept] = {}
+        kept: dict[tuple[str, str | None], Parsed] = {}
         taken: list[tuple[int, int, int]] = []
         moved = Moved()
         moves: dict[int, list[Span]] = {}  # the spans of the declarations that moved, by how far
@@ -228,14 +230,14 @@ class Reparser:
                                  i == len(bounds) - 1):
                 errors += 1
             elif len(diagnostics.items) == reported and len(damaged) == first_damaged:
-                kept[key] = Kept(start, tuple(decls[first:]))
+                kept[key] = Parsed(start, tuple(decls[first:]))
         moved.shift_all(moves)
         moved.kept(taken)
         self.files[path], self.reused, self.moved[path] = kept, reused, moved
         return ast.Module(path, tuple(decls), tuple(damaged))
 
 
-class Kept:
+class Parsed:
     """One declaration's text as last parsed: where it started, what it gave, and its spans."""
 
     __slots__ = ("_spans", "decls", "start")
