@@ -5,8 +5,8 @@ A primitive's check reads its declaration and what the declarations other than p
 interfaces made (state, settings, constants, frames, connections: the context); an interface's
 reads also the primitives and interfaces it calls, through the interfaces it calls. A kept check is
 taken again when its declaration is the same node (rdisc.syntax.incremental gives an unchanged
-declaration's node again only where it did not move), the context the same nodes, and what it
-reads of the others equal. Taking it again does what making it did to the checker: its reports
+declaration's node again, moved or not), the context the same nodes, and what it reads of the
+others equal. Taking it again does what making it did to the checker: its reports
 (made again only if none would be a repeat, whose absence could have changed its course), the
 constants it folded, the state it read, the calls it wrote out. So a check with a `Memo` gives
 what one without gives, diagnostics and Model alike (tests/semantics/test_memo.py holds them equal).
