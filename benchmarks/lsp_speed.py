@@ -10,7 +10,7 @@ and, in this process, what the check alone costs (rdisc.compile.compile_text), t
 compiler's share from the server's: of the whole file, and after the change as the editor checks
 it, parsing again only the declaration changed (rdisc.syntax.incremental) and checking again only
 the primitives and interfaces it touched (rdisc.semantics.check.memo); and after a character more
-near the top, where every declaration after it moves and is taken again with its spans shifted.
+near the top, where every declaration after it moves and is taken again as it was, its spans moved in place.
 
     python benchmarks/lsp_speed.py [--runs N]
 """
@@ -151,7 +151,7 @@ def main() -> None:
     print(f"{'    the check alone (in process), whole file':47}{figures['check']:8.1f} ms")
     print(f"{'    the same, the changed part only':47}{figures['edited']:8.1f} ms")
     print(f"{'    a character more at the top (the rest moves)':47}{figures['moved']:8.1f} ms  "
-          f"(target {CHANGE_TARGET_MS:.0f} ms; what only moved is taken again, its spans shifted)")
+          f"(target {CHANGE_TARGET_MS:.0f} ms; what only moved is taken again, its spans moved in place)")
     print(f"  hover on a call of a primitive               {figures['hover']:8.1f} ms  "
           f"(target {ANSWER_TARGET_MS:.0f} ms)")
     print(f"  completion inside a pack list                {figures['completion']:8.1f} ms  "

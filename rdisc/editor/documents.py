@@ -54,7 +54,8 @@ class Document:
         self.text = text
         self.version = version
         self.analysis: Analysis | None = None  # of `text`; None until checked after a change
-        self.good: Analysis | None = None  # the last check that built a Model
+        self.good: Analysis | None = None  # the last check that built a Model (read for names and layouts:
+        # a later check may have moved its spans with the declarations it kept, rdisc.syntax.incremental)
         self.parser = Reparser()  # its declarations as last parsed, reused by the next check
         self.memo = Memo()  # its primitives' and interfaces' checks, reused by the next check
 

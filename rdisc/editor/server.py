@@ -3,6 +3,10 @@
 Each handler finds the document's analysis (waiting for its check if its text changed) and hands it
 to the module that answers; none of them does work beyond a walk of one compilation's names, so a
 hostile document costs what checking it costs, within the compiler's token and size limits.
+
+A handler waits for its document's analysis last and then answers at once: the next check of
+that document moves the spans of what it kept in place (rdisc.syntax.incremental), so an analysis
+is read before its document's next check starts.
 """
 
 from __future__ import annotations
@@ -90,7 +94,7 @@ def make_server() -> RdisServer:
 
     @server.feature(types.TEXT_DOCUMENT_REFERENCES)
     async def references(ls: RdisServer, params: types.ReferenceParams) -> list[types.Location]:
-        analysis, others = await ls.analysis(params.text_document.uri), await _others(ls, params.text_document.uri)
+        others, analysis = await _others(ls, params.text_document.uri), await ls.analysis(params.text_document.uri)
         return navigation.references(analysis, params.position, params.context.include_declaration, others)
 
     @server.feature(types.TEXT_DOCUMENT_DOCUMENT_HIGHLIGHT)
@@ -104,7 +108,7 @@ def make_server() -> RdisServer:
 
     @server.feature(types.TEXT_DOCUMENT_RENAME)
     async def rename(ls: RdisServer, params: types.RenameParams) -> types.WorkspaceEdit | None:
-        analysis, others = await ls.analysis(params.text_document.uri), await _others(ls, params.text_document.uri)
+        others, analysis = await _others(ls, params.text_document.uri), await ls.analysis(params.text_document.uri)
         return _refused(lambda: navigation.rename(analysis, params.position, params.new_name, others))
 
     @server.feature(types.TEXT_DOCUMENT_DOCUMENT_SYMBOL)

@@ -159,3 +159,31 @@ def test_while_a_document_has_errors_a_primitive_shows_its_last_good_layout(tmp_
     alone = hover.hover(analysis, None, at(broken, "primitive set_speed", "set_speed"))
     assert alone is not None and isinstance(alone.contents, types.MarkupContent)
     assert alone.contents.value.endswith("*the wire layout is shown once the description checks without errors*")
+
+
+def test_after_typing_at_the_top_every_answer_is_where_a_fresh_check_puts_it(tmp_path: Path) -> None:
+    """What only moved is kept, its spans moved in place: the diagnostics, names, references, rename
+    and definitions of the moved text are a fresh workspace's, each place exact."""
+    misspelt = BOT.replace("set_speed(round", "set_sped(round")
+    workspace, uri, _ = analysed(tmp_path, misspelt)
+    for version, text in enumerate(("# moved\n" + misspelt, "\n\n# moved again\n" + misspelt, misspelt), start=2):
+        workspace.change(uri, text, version)
+        kept = workspace.analysis(uri)
+        fresh = Workspace()
+        fresh.open(uri, str(tmp_path / "bot.rdis"), text, version)
+        made = fresh.analysis(uri)
+        assert kept is not None and made is not None
+        document = workspace.documents[uri]
+        assert document.parser.reused > 5 and document.memo.reused > 0  # moved, and kept
+        assert published(document, kept) == published(fresh.documents[uri], made)
+        assert [d.code for d in published(document, kept)] == ["E102"]
+        assert symbols.semantic_tokens(kept) == symbols.semantic_tokens(made)
+        assert symbols.document_symbols(kept) == symbols.document_symbols(made)
+        for place in (at(text, "state speed", "speed"), at(text, "set_sped(round", "velocity"),
+                      at(text, "output reported: Range", "Range"), at(text, "primitive set_speed", "set_speed")):
+            assert navigation.references(kept, place, True, []) == navigation.references(made, place, True, [])
+            assert navigation.highlights(kept, place) == navigation.highlights(made, place)
+            assert navigation.definition(kept, place) == navigation.definition(made, place)
+        place = at(text, "state speed", "speed")
+        assert navigation.rename(kept, place, "pace", []) == navigation.rename(made, place, "pace", [])
+        assert navigation.references(kept, place, True, [])[0].range.start.line == text[:text.index("state speed")].count("\n")

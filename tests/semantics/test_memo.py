@@ -96,6 +96,29 @@ def test_a_moved_check_reports_its_faults_where_they_now_are(tmp_path: Path) -> 
     assert [moved[label.span.start:label.span.end] for label in call.labels] == ["set_7"]
 
 
+def test_a_moved_check_is_taken_again_as_it_was_its_spans_moved_once_each(tmp_path: Path) -> None:
+    """Nothing that only moved is made again: the moved declarations' nodes, Model parts and
+    diagnostics are the last check's, their spans moved where they are; a span a kept check holds
+    of another declaration that moved too (a label on the primitive called) is moved once."""
+    editor = Editor(str(tmp_path / "big.rdis"))
+    broken = BIG.replace("set_100(round(value * 1000))", "set_7(1, 2)")
+    same_as_fresh(editor, broken)
+    before = editor.check(broken)
+    moved = "# everything moves\n" + broken
+    same_as_fresh(editor, moved)
+    after = editor.check(moved)
+    assert editor.memo.reused == 2 * 165
+    assert all(a is b for a, b in zip(after.main.decls, before.main.decls, strict=True))
+    call = next(d for d in after.diagnostics.items if d.code == "E201")
+    assert call is next(d for d in before.diagnostics.items if d.code == "E201")
+    assert moved[call.span.start:call.span.end] == "set_7(1, 2)"
+    assert [moved[label.span.start:label.span.end] for label in call.labels] == ["set_7"]
+    good = "# everything moves\n" + BIG
+    kept = editor.check(good).model
+    same_as_fresh(editor, "\n" + good)
+    assert kept is not None and editor.check("\n" + good).model.primitives["set_9"] is kept.primitives["set_9"]
+
+
 def test_a_declaration_written_twice_checks_as_a_fresh_check_where_it_moves(tmp_path: Path) -> None:
     """Two declarations of the same text came from one old one: where its spans went is not one
     place, so neither is taken from it shifted."""

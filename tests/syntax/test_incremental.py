@@ -59,6 +59,17 @@ def test_every_example_edited_above_each_declaration_parses_as_a_fresh_parse(nam
     same_as_fresh(parser, text)
 
 
+def test_a_moved_declaration_is_the_last_parses_nodes_with_their_spans_moved() -> None:
+    """Moving costs no node: the declarations after the edit are the very nodes of the last parse."""
+    text = TEXTS["arm.rdis"]
+    parser = Reparser()
+    before = parser.parse("bot.rdis", text, Diagnostics()).decls
+    moved = "# every declaration moves\n" + text
+    same_as_fresh(parser, moved)
+    after = parser.parse("bot.rdis", moved, Diagnostics()).decls
+    assert len(after) == len(before) > 10 and all(a is b for a, b in zip(after[1:], before[1:], strict=True))
+
+
 PIECES = st.sampled_from(["", "\n", " ", "{", "}", "(", ")", "///doc\n", "/// x\n", "# c\n", "primitive ", "state ",
                           "frame ", "enum ", "x", "1", '"', "..", "\nconst k = 3\n", "\n\n", "robot r { author \"a\" }\n"])
 

@@ -5,28 +5,26 @@ A primitive's check reads its declaration and what the declarations other than p
 interfaces made (state, settings, constants, frames, connections: the context); an interface's
 reads also the primitives and interfaces it calls, through the interfaces it calls. A kept check is
 taken again when its declaration is the same node (rdisc.syntax.incremental gives an unchanged
-declaration's node again only where it did not move), the context the same nodes, and what it
-reads of the others equal. Taking it again does what making it did to the checker: its reports
+declaration's node again, moved or not), the context the same nodes, and what it reads of the
+others equal. Taking it again does what making it did to the checker: its reports
 (made again only if none would be a repeat, whose absence could have changed its course), the
 constants it folded, the state it read, the calls it wrote out. So a check with a `Memo` gives
 what one without gives, diagnostics and Model alike (tests/semantics/test_memo.py holds them equal).
 
-A declaration that only moved (text added or taken away before it) is a new node, as is each
-declaration of the context that moved: the parser writes down which old node each is
-(rdisc.syntax.incremental.Moved). A kept check whose declaration, depends and context are the same
-nodes or those old nodes moved is taken again as a copy whose every span is shifted as the text it
-lies in moved (`Shift`); one with a span in text not kept is made again.
+A declaration that only moved (text added or taken away before it) is the same node, its spans
+moved where they are by the parser (rdisc.syntax.incremental); so are those of the context. The
+spans a kept check holds besides its declaration's (those it made, those of what it read) are
+moved the same way when it is taken again, each once, as the text it lies in moved (`Moved.place`);
+one with a span in text not kept is made again.
 """
 
 from __future__ import annotations
 
-from bisect import bisect_right
 from collections.abc import Callable
 from operator import is_
 from typing import TYPE_CHECKING, Any, TypeVar
 
 from rdisc.diagnostics import Diagnostic, Label
-from rdisc.frozen import field_names
 from rdisc.semantics import model as m
 from rdisc.semantics.check.interfaces import MAX_UNROLLED, MAX_UNROLLED_ALL
 from rdisc.semantics.check.pieces import Pieces
@@ -60,11 +58,13 @@ class Logged(dict[int, Any]):
 class Kept:
     """One declaration's check: what it read, what it gave and what it did to the checker."""
 
-    __slots__ = ("constants", "decl", "depends", "failed_reads", "reads", "reports", "result", "written")
+    __slots__ = ("constants", "decl", "depends", "failed_reads", "reads", "reports", "result", "spans", "written")
 
     def __init__(self, decl: object, depends: tuple[object, ...], result: object, reports: list[Diagnostic],
-                 constants: list[tuple[int, Any]], reads: set[str], failed_reads: int, written: int) -> None:
+                 constants: list[tuple[int, Any]], reads: set[str], failed_reads: int, written: int,
+                 spans: list[Span]) -> None:
         self.decl = decl
+        self.spans = spans  # of its result and reports, but not of its declaration
         self.depends = depends
         self.result = result
         self.reports = reports
@@ -83,23 +83,34 @@ class Memo:
         self.made: dict[tuple[int, str], Kept] = {}  # of the check running
         self.reused = 0  # checks taken again by the last check (for tests)
         self.moved: dict[str, Moved] = {}  # how each file's last parse moved its declarations (the parser's)
-        self.shift: Shift | None = None  # of the check running, when something moved
-        self.context_moved = False  # the check running's context is the last's, moved
+        self.moving = False  # something moved since the last check
 
     def begin(self, context: object) -> None:
-        """A check starts: what it keeps of the last depends on its context being the same, or
-        the same moved."""
-        shift = Shift(self.moved) if any(moved.pairs for moved in self.moved.values()) else None
-        self.context_moved = False
+        """A check starts: what it keeps of the last depends on its context being the same."""
         if not same(context, self.context):
-            if shift is not None and shift.same(context, self.context):
-                self.context_moved = True
-            else:
-                self.kept = {}
-        self.context, self.made, self.reused, self.shift = context, {}, 0, shift
+            self.kept = {}
+        self.context, self.made, self.reused = context, {}, 0
+        self.moving = any(moved.moving for moved in self.moved.values())
 
     def end(self) -> None:
-        self.kept, self.made, self.shift = self.made, {}, None
+        self.kept, self.made = self.made, {}
+
+    def placed(self, kept: Kept) -> bool:
+        """Move the spans of a kept check to where their texts went (its declaration's are moved
+        with its nodes); False if one lies in text not kept."""
+        from rdisc.syntax.incremental import Unmoved  # the editor's alone: `rdisc check` keeps nothing
+
+        moved = self.moved
+        try:
+            for span in kept.spans:
+                found = moved.get(span.path)
+                if found is None:
+                    return False
+                if found.moving:
+                    found.place(span)
+        except Unmoved:
+            return False
+        return True
 
 
 _VALUES = (str, int, bool, type(None), frozenset)
@@ -113,125 +124,6 @@ def same(a: object, b: object) -> bool:
     if type(a) is tuple and type(b) is tuple:
         return len(a) == len(b) and all(same(x, y) for x, y in zip(a, b))
     return type(a) is type(b) and type(a) in _VALUES and a == b
-
-
-class Unmoved(Exception):
-    """A span of a kept check lies in text not kept: the check is made again."""
-
-
-# Taken as they are: values, and the classes found to be no node (enums, patterns), added as found.
-_ATOMS = {str, int, float, bytes, bool, type(None), frozenset}
-_FIELDS: dict[type, tuple[str, ...] | None] = {}
-_setattr = object.__setattr__
-_new = object.__new__
-
-
-class Shift:
-    """Where the old nodes of one check are in the next, after the text moved: each old node
-    (declaration, or part of a kept check copied) by its id to its new node, and each old span
-    to where its text went."""
-
-    def __init__(self, moved: dict[str, Moved]) -> None:
-        self.moved = moved
-        # id(old) → new; the old nodes are held by the parser's pairs and the Memo's kept checks.
-        self.now: dict[int, object] = {id(old): new for file in moved.values() for old, new in file.pairs}
-        self.before: dict[int, object] = {id(new): old for file in moved.values() for old, new in file.pairs}
-        self.spans: dict[int, Span] = {}  # id(old span) → new, of the declarations the parser moved
-        for file in moved.values():
-            self.spans.update(file.spans)
-
-    def is_now(self, new: object, old: object) -> bool:
-        return new is old or self.now.get(id(old)) is new
-
-    def same(self, new: object, old: object) -> bool:
-        """`same`, with an old node also the same as its new node (moved)."""
-        if new is old or self.now.get(id(old)) is new:
-            return True
-        if type(new) is tuple and type(old) is tuple:
-            return len(new) == len(old) and all(self.same(x, y) for x, y in zip(new, old))
-        return type(new) is type(old) and type(new) in _VALUES and new == old
-
-    def span(self, span: Span) -> Span:
-        """Where an old span's text is now; Unmoved if that text was not kept."""
-        moved = self.moved.get(span.path)
-        if moved is None:
-            raise Unmoved
-        starts, start, end = moved.starts, span.start, span.end
-        i = bisect_right(starts, start) - 1
-        if i < 0 or end > moved.ends[i] or (start == end == starts[i] and i > 0 and moved.ends[i - 1] == start
-                                             and moved.deltas[i - 1] != moved.deltas[i]):
-            raise Unmoved  # outside what was kept, or at the edge of two texts kept that moved apart
-        delta = moved.deltas[i]
-        if delta == 0:
-            return span
-        made = _new(Span)
-        _setattr(made, "path", span.path)
-        _setattr(made, "start", start + delta)
-        _setattr(made, "end", end + delta)
-        return made
-
-    def copy(self, node: Any) -> Any:
-        """`node` (of a kept check) as it is now: a node already copied or moved, its copy; a
-        span, shifted; else a copy of its parts (nodes by their fields, tuples, lists, dicts)."""
-        cls = node.__class__
-        if cls in _ATOMS:
-            return node
-        if cls is Span:  # not kept in `now`: a value; most are a moved syntax tree's (`spans`)
-            return self.spans.get(id(node)) or self.span(node)
-        now, key = self.now, id(node)
-        found = now.get(key)
-        if found is not None:
-            return found
-        copy = self.copy
-        if cls is tuple:
-            made: Any = tuple([item if item.__class__ in _ATOMS else copy(item) for item in node])
-        elif cls is list:
-            made = [copy(item) for item in node]
-        elif cls is dict:
-            made = {key: copy(value) for key, value in node.items()}
-        else:
-            names = _FIELDS.get(cls, ())
-            if names == ():
-                names = _FIELDS[cls] = field_names(node) or None
-            if names is None:  # not a node: an enum member, a compiled pattern
-                _ATOMS.add(cls)
-                return node
-            made = _new(cls)
-            spans = self.spans
-            for name in names:
-                value = getattr(node, name)
-                kind = value.__class__
-                if kind in _ATOMS:
-                    _setattr(made, name, value)
-                elif kind is Span:
-                    _setattr(made, name, spans.get(id(value)) or self.span(value))
-                else:
-                    _setattr(made, name, copy(value))
-        now[key] = made
-        return made
-
-    def kept(self, kept: Kept, decl: object, depends: tuple[object, ...]) -> Kept | None:
-        """A kept check copied to where its declaration and what it read are now; None if some
-        span of it lies in text not kept."""
-        now = self.now
-        for new, old in zip(depends, kept.depends):  # what it read, as it is now (itself, where it did not move)
-            now.setdefault(id(old), new)
-        now.setdefault(id(kept.decl), decl)
-        try:
-            result = self.copy(kept.result)
-            reports = [self.copy(report) for report in kept.reports]
-        except Unmoved:
-            return None
-        # The constants it folded, each of a node now copied by its copy; one in neither its result
-        # nor its reports is held by no one else, and nothing asks about it: it stays.
-        constants: list[tuple[int, Any]] = []
-        for key, value in kept.constants:
-            found = now.get(key)
-            if found is None:
-                constants.append((key, value))
-            else:
-                constants.append((id(found), value if value is _POPPED else (found, value[1])))
-        return Kept(decl, depends, result, reports, constants, kept.reads, kept.failed_reads, kept.written)
 
 
 def context_of(units: list[Any], damaged: set[tuple[str, str]]) -> object:
@@ -264,24 +156,14 @@ class Remembering(Pieces):
         memo = self.memo
         if memo is None:
             return check()
-        key, shift = (id(decl), part), memo.shift
+        key = (id(decl), part)
         kept = memo.kept.get(key)
-        if kept is not None and kept.decl is not decl:
-            kept = None
-        if kept is None and shift is not None:  # the declaration moved: kept by its old node
-            old = shift.before.get(id(decl))
-            kept = None if old is None else memo.kept.get((id(old), part))
-        if kept is not None and len(kept.depends) == len(depends):
-            if kept.decl is decl and not memo.context_moved and all(map(is_, kept.depends, depends)):
-                taken: Kept | None = kept
-            elif shift is not None and shift.is_now(decl, kept.decl) and all(map(shift.is_now, depends, kept.depends)):
-                taken = shift.kept(kept, decl, depends)  # it, or what it read, moved
-            else:
-                taken = None
-            if taken is not None and self._again(taken):
-                memo.made[key] = taken
-                memo.reused += not part
-                return taken.result  # type: ignore[return-value]
+        if (kept is not None and kept.decl is decl and len(kept.depends) == len(depends)
+                and all(map(is_, kept.depends, depends)) and (not (memo.moving and kept.spans) or memo.placed(kept))
+                and self._again(kept)):
+            memo.made[key] = kept
+            memo.reused += not part
+            return kept.result  # type: ignore[return-value]
         made, again = self._made(decl, depends, check)
         if again:  # else its course touched what others reported, or a bound of them all: made each time
             memo.made[key] = made
@@ -359,6 +241,21 @@ class Remembering(Pieces):
             own, typer.reads = typer.reads, reads
             reads.update(own)
         wrote = self.written - written
-        kept = Kept(decl, depends, result, d.items[first:], log, own, typer.failed_reads - failed_reads, wrote)
+        reports = d.items[first:]
+        kept = Kept(decl, depends, result, reports, log, own, typer.failed_reads - failed_reads, wrote,
+                    spans_made(decl, result, reports))
         return kept, not repeated and written + wrote + MAX_UNROLLED <= MAX_UNROLLED_ALL
 
+
+
+def spans_made(decl: object, result: object, reports: list[Diagnostic]) -> list[Span]:
+    """The spans of a check's result and reports that are not its declaration's, once each."""
+    from rdisc.syntax.incremental import spans_in  # the editor's alone: `rdisc check` keeps nothing
+
+    own: list[Span] = []
+    seen: set[int] = set()
+    spans_in(decl, own, seen)
+    spans: list[Span] = []
+    spans_in(result, spans, seen)
+    spans_in(reports, spans, seen)
+    return spans
