@@ -567,7 +567,7 @@ class _Driver:
         w.line(f"{pack} = struct.Struct({quoted(call.target.encoder.args[0])}).pack")
         fields = plan.args.params
         step = OneStep("_write", self.names[call.target], "_input_in_full", self.plan["input", i.name], fields,
-                       pack, call=call, binding=plan.args)
+                       pack, call=call, binding=plan.args, connection=call.target.connection)
         self.one_step["input", i.name] = step
         local = _params([(f.name, f.type) for f in fields])
         function = f"_request_{i.name}"
@@ -659,7 +659,8 @@ class _Driver:
         a plain exchange (`way` "_ask") only its typed method's. Blank lines written after."""
         plan = self.plan["primitive", prim.name]
         if written.constant is not None:
-            step = OneStep(way, plan, "_call_primitive", plan, written.params, written=written)
+            step = OneStep(way, plan, "_call_primitive", plan, written.params, written=written,
+                           connection=prim.connection)
             if way == "_write":
                 self.slots["primitive", prim.name] = function = f"_p_{prim.name}_request"
                 with w.block(f"def {function}(state: StateValues, args: Args) -> bytes | None:"):
@@ -684,7 +685,8 @@ class _Driver:
                 covered = f"{quoted(written.covered)} + " if written.covered else ""
                 checked = (f"{check}({function_of}({covered}", "))")
         w.blank(2)
-        step = OneStep(way, plan, "_call_primitive", plan, written.params, pack, written, whole, checked)
+        step = OneStep(way, plan, "_call_primitive", plan, written.params, pack, written, whole, checked,
+                       connection=prim.connection)
         if way != "_write":
             return step
         self.slots["primitive", prim.name] = function = f"_p_{prim.name}_request"
@@ -805,7 +807,7 @@ class _Driver:
             w.line(f"{pack} = struct.Struct({quoted(call.target.encoder.args[0])}).pack")
             self.one_step["interface", iface.name] = OneStep(
                 "_write", self.names[call.target], "_call_interface", self.plan["interface", iface.name],
-                call.args.params, pack, call=call)
+                call.args.params, pack, call=call, connection=call.target.connection)
 
     # -- the typed face --------------------------------------------------------------------------
 
@@ -989,7 +991,7 @@ class _Driver:
     def inline(step: OneStep | None, local: Mapping[str, str]) -> bool:
         """Whether a typed method makes its request itself: none of its parameters' names hides
         a name the request's statements use (`_body_names()`, the module's `_` names, `robot`...)."""
-        hidden = _body_names() | {"robot", "request", "tuple", "sum"}
+        hidden = _body_names() | {"robot", "request", "tuple", "sum", "lane", "acquire", "release", "write", "err"}
         return step is not None and not any(name in hidden or name.startswith("_") for name in local.values())
 
     def inline_body(self, w: Writer, step: OneStep, robot: str, local: Mapping[str, str]) -> None:
@@ -1014,7 +1016,12 @@ class _Driver:
             exprs = [e for _, e, _ in step.written.values.items]
         if reads_state(exprs):
             w.line(f"state = {robot}._state")
-        tests = [f"{robot}._direct", *type_tests([local[prm.name] for prm in step.params], step.params, refused=False)]
+        lane = step.way == "_write"  # written through the connection's lane, in the method
+        if lane:
+            at = list(self.model.connections).index(step.connection)  # the engine's lanes: in this order
+            w.line(f"lane = {robot}._lanes[{at}]  # {step.connection}: its port's lock and write (None: the general way)")
+        tests = [f"{robot}._direct" if not lane else "lane is not None",
+                 *type_tests([local[prm.name] for prm in step.params], step.params, refused=False)]
         condition = f"if {' and '.join(tests)}:"
         if len(condition) > w.width():
             w.line("if (")
@@ -1029,9 +1036,29 @@ class _Driver:
             with w.block("except Exception:  # noqa: BLE001, S110 - not taken here: the general way says why"):
                 w.line("pass")
             with w.block("else:"):
-                w.line(f"{robot}.{step.way}({step.target}, request{asked})")
+                if lane:
+                    self.through_lane(w, step, robot)
+                else:
+                    w.line(f"{robot}.{step.way}({step.target}, request{asked})")
                 w.line("return")
         w.line(general)
+
+    @staticmethod
+    def through_lane(w: Writer, step: OneStep, robot: str) -> None:
+        """`request` written as the engine's plain write writes it (`exchange._unwatched_write`): under
+        the port's lock, refused while the robot closes, a port's failure a typed error."""
+        w.line("acquire, release, write = lane")
+        w.line("acquire()  # no `with`: cheaper; a signal before the `try` leaves it to this thread, re-entrant")
+        with w.block("try:"):
+            with w.block(f"if {robot}._closed:  # under the lock: a write that got it first precedes the stop"):
+                w.line(f"{robot}._refuse({step.target})")
+            w.line("write(request)")
+        with w.block("except RdisError:"):
+            w.line("raise")
+        with w.block("except Exception as err:  # whatever the port raises, it failed"):
+            w.line(f"raise {robot}._port_error({step.target}, err) from err")
+        with w.block("finally:"):
+            w.line("release()")
 
     def connect_function(self, w: Writer) -> None:
         own = ("port", "timeout", "threads", "on_output", "on_error", "on_io", "sim", "robot", self.cls)

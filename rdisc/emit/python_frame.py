@@ -58,6 +58,7 @@ class OneStep:
     checked: tuple[str, str] = ("", "")  # a checksum not in the whole struct: its value, around the payload's name
     call: lowering.Call | None = None  # an interface's one call, its arguments packed by `pack`
     binding: lowering.Code | None = None  # an input's: its fields to the interface's parameters
+    connection: str = ""  # the written primitive's connection: whose lane a write goes through
 
 
 _TYPES = {Type.INT: "int", Type.FLOAT: "float", Type.BOOL: "bool", Type.STRING: "str", Type.BYTES: "bytes"}

@@ -8,7 +8,7 @@ import os
 import sys
 import threading
 from collections import deque
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from typing import Any, Protocol
 
 from rdisc.engine.errors import RdisConnectionError
@@ -126,6 +126,11 @@ class _FairLock:
         gate.release()
 
 
+_Lane = tuple[Callable[[], bool], Callable[[], None], Callable[[bytes], "int | None"]]
+"""A port's lock taken and let go, and its write, bound once (`_Port.lane`): what a driver's
+typed method writes a plain command through itself, inline (`Exchange._lanes`)."""
+
+
 class _Port:
     """One open port, shared by the connections given the same one, with its exchange lock."""
 
@@ -141,6 +146,9 @@ class _Port:
         # Fair when a connection on it is `threading dual` or `multiple`: made so here, before any
         # write binds the lock.
         self.lock: _Lock = _FairLock() if fair else threading.RLock()
+
+    def lane(self) -> _Lane:
+        return self.lock.acquire, self.lock.release, self.write
 
 
 class _Link:

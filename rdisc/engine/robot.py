@@ -410,6 +410,7 @@ class Robot(Exchange):
                 threads = threads and sim.realtime
             self._running = True
             self._direct = sim is None
+            self._choose_write()  # the lanes, now that a plain write may skip the general way
             if self._direct:
                 self._written = {name: (plan, plan.request) for name, plan in self.device.primitives.items()
                                  if plan.request is not None}
@@ -483,6 +484,7 @@ class Robot(Exchange):
             self._closed = True
             self._running = False
             self._direct = False
+            self._lanes = (None,) * len(self._lanes)  # a typed method's write goes the general way, refused
             self._written = {}
         self._closing.set()
         try:

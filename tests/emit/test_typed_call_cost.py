@@ -1,7 +1,7 @@
 """What a typed call costs a generated driver, in Python calls (counted, not timed): its method
 makes the request in one step (its values tested, packed by one precompiled struct, constants
-folded) and hands it to the engine's write or plain exchange, so that a command is the method,
-the robot's write and the port's write. benchmarks/driver_speed.py's figures depend on it, and a
+folded) and writes it itself through its connection's lane (the port's lock and write), or hands
+it to the engine's plain exchange, so that a command is the method and the port's write. benchmarks/driver_speed.py's figures depend on it, and a
 count does not depend on the machine. Whatever the step, the bytes and errors are the general way's.
 """
 
@@ -33,12 +33,13 @@ def drivers(tmp_path_factory: pytest.TempPathFactory) -> dict[str, Any]:
 
 
 @pytest.mark.parametrize("way", ["robot", "inputs"])
-def test_set_velocity_is_the_method_the_write_and_the_port(drivers: dict[str, Any], way: str) -> None:
-    """The six rows of Table 4.3: the method (the speed's clamp inline: `_clamp`'s test of a name),
-    the robot's write, the port's write; the first row divides (`_div`, which refuses a zero) and
-    clamps the quotient (`_clamp`) besides. `robot.inputs.set_velocity` calls the robot's method.
-    38 calls either way before (the input's function and `_send_input` besides), one more a row
-    before the clamp was inline."""
+def test_set_velocity_is_the_method_and_the_port(drivers: dict[str, Any], way: str) -> None:
+    """The six rows of Table 4.3: the method (the speed's clamp inline: `_clamp`'s test of a name,
+    the port's lock and write through its lane), the port's write; the first row divides (`_div`,
+    which refuses a zero) and clamps the quotient (`_clamp`) besides. `robot.inputs.set_velocity`
+    calls the robot's method. 38 calls either way before (the input's function and `_send_input`
+    besides), one more a row before the clamp was inline, one more (the robot's write) before the
+    method wrote through the lane."""
     port = ScriptedPort()
     with drivers["create"].connect({"btserial": port}, threads=False) as robot:
         send = robot.set_velocity if way == "robot" else robot.inputs.set_velocity
@@ -47,20 +48,21 @@ def test_set_velocity_is_the_method_the_write_and_the_port(drivers: dict[str, An
             del port.written[:]
             made.append(calls_made(lambda v=linear, w=angular: send(linear=v, angular=w)))
             assert bytes(port.written) == bytes.fromhex(expected)
-    assert made == ([5] + [3] * 5 if way == "robot" else [6] + [4] * 5), made
+    assert made == ([4] + [2] * 5 if way == "robot" else [5] + [3] * 5), made
 
 
-def test_an_interface_of_one_plain_write_is_the_method_the_write_and_the_port(drivers: dict[str, Any]) -> None:
+def test_an_interface_of_one_plain_write_is_the_method_and_the_port(drivers: dict[str, Any]) -> None:
     """`robot.interfaces.drive(0.2, 32.767)`: its one call's values packed in the method (`round` of
-    Python's `*`), the robot's write, the port's write; given ints (not floats), the general way
-    writes the same bytes. 16 calls before (the interface run the general way)."""
+    Python's `*`) and written through the lane, the port's write; given ints (not floats), the
+    general way writes the same bytes. 16 calls before (the interface run the general way), 3 with
+    the robot's write."""
     port = ScriptedPort()
     with drivers["create"].connect({"btserial": port}, threads=False) as robot:
         del port.written[:]
         made = calls_made(lambda: robot.interfaces.drive(0.2, 32.767))
         robot.interfaces.drive(0, -1)
         assert bytes(port.written) == bytes.fromhex("89 00c8 7fff 89 0000 fc18")
-    assert made == 3, made
+    assert made == 2, made
 
 
 def test_a_typed_input_given_ints_goes_the_general_way_to_the_same_bytes(drivers: dict[str, Any]) -> None:
@@ -78,16 +80,16 @@ def test_a_typed_input_given_ints_goes_the_general_way_to_the_same_bytes(drivers
     ("ax12", "bus", "goto_all", (512,), "FF FF FE 05 03 1E 00 02 D9"),
     ("create2", "oi", "drive_direct", (-500, 123), "91 fe0c 007b"),
 ])
-def test_a_typed_write_is_the_method_the_write_and_the_port(drivers: dict[str, Any], driver: str, connection: str,
-                                                            primitive: str, args: tuple[int, ...], expected: str) -> None:
+def test_a_typed_write_is_the_method_and_the_port(drivers: dict[str, Any], driver: str, connection: str,
+                                                  primitive: str, args: tuple[int, ...], expected: str) -> None:
     """AX-12 goto_all(512), a framed broadcast write with its checksum summed inline, and the
-    Create 2's drive_direct: the method (its range tested inline), the robot's write and the
-    port's write (`robot.primitives` a slot of the robot's). 6 calls before (the `primitives`
-    property, the request's function, `_send`)."""
+    Create 2's drive_direct: the method (its range tested inline, the port's lock and write
+    through its lane) and the port's write (`robot.primitives` a slot of the robot's). 6 calls
+    before (the `primitives` property, the request's function, `_send`), 3 with the robot's write."""
     port = ScriptedPort()
     with drivers[driver].connect({connection: port}, threads=False) as robot:
         del port.written[:]
-        assert calls_made(lambda: getattr(robot.primitives, primitive)(*args)) == 3
+        assert calls_made(lambda: getattr(robot.primitives, primitive)(*args)) == 2
         assert bytes(port.written) == bytes.fromhex(expected)
 
 

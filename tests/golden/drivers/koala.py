@@ -2979,6 +2979,11 @@ class _FairLock:
         gate.release()
 
 
+_Lane = tuple[Callable[[], bool], Callable[[], None], Callable[[bytes], "int | None"]]
+"""A port's lock taken and let go, and its write, bound once (`_Port.lane`): what a driver's
+typed method writes a plain command through itself, inline (`Exchange._lanes`)."""
+
+
 class _Port:
     """One open port, shared by the connections given the same one, with its exchange lock."""
 
@@ -2994,6 +2999,9 @@ class _Port:
         # Fair when a connection on it is `threading dual` or `multiple`: made so here, before any
         # write binds the lock.
         self.lock: _Lock = _FairLock() if fair else threading.RLock()
+
+    def lane(self) -> _Lane:
+        return self.lock.acquire, self.lock.release, self.write
 
 
 class _Link:
@@ -3301,6 +3309,7 @@ class Exchange:
     decodes them, runs their post-actions, and tells the callbacks what happened (one at a
     time, a failing one reported). `Robot` is the rest of it, and sets what is declared here."""
 
+    device: Device
     name: str
     timeout: float
     _state: dict[str, Value]
@@ -3335,13 +3344,24 @@ class Exchange:
     # does the same but tell the callbacks. Chosen when the ports open and when a callback comes
     # (`_choose_write`), not tested at each write.
     _write: Callable[[Primitive, bytes], None]
+    # Each connection's lane (`_Port.lane`: its port's lock and write), in the order of the
+    # connections, through which a driver's typed method writes a plain command itself:
+    # `_unwatched_write`'s statements in the method, one call fewer on every command's path
+    # (by position: a tuple's item is found faster than a dict's). None while the robot is not
+    # running on ports (`_direct`) or a callback watches the writes: the method then goes the
+    # general way.
+    _lanes: tuple[_Lane | None, ...]
+    _direct: bool
 
     def _choose_write(self) -> None:
-        """Put the write that fits in place: the plain one on open ports no callback watches. Under
-        the callback lock, which a callback's registration holds: the last choice sees the last callback."""
+        """Put the write that fits in place: the plain one on open ports no callback watches, and
+        the lanes to them. Under the callback lock, which a callback's registration holds: the
+        last choice sees the last callback."""
         with self._callback_lock:
-            self._write = (self._write_watched if self._watched or not self._ports
-                           else _unwatched_write(self, self._ports))
+            plain = not self._watched and bool(self._ports)
+            self._write = _unwatched_write(self, self._ports) if plain else self._write_watched
+            ports = self._ports if plain and self._direct else {}
+            self._lanes = tuple(ports[name].lane() if name in ports else None for name in self.device.connections)
 
     def _write_watched(self, plan: Primitive, request: bytes) -> None:
         """Under the port's lock write a request that has no reply and sets no modem line (the
@@ -4748,6 +4768,7 @@ class Robot(Exchange):
                 threads = threads and sim.realtime
             self._running = True
             self._direct = sim is None
+            self._choose_write()  # the lanes, now that a plain write may skip the general way
             if self._direct:
                 self._written = {name: (plan, plan.request) for name, plan in self.device.primitives.items()
                                  if plan.request is not None}
@@ -4821,6 +4842,7 @@ class Robot(Exchange):
             self._closed = True
             self._running = False
             self._direct = False
+            self._lanes = (None,) * len(self._lanes)  # a typed method's write goes the general way, refused
             self._written = {}
         self._closing.set()
         try:
