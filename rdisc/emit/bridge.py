@@ -5,8 +5,8 @@ are this bridge with a transport each.
 A node is the generated Python driver (`rdisc.emit.python`) with the bridge in place of its
 command line: one subscription per domain input and one publication per domain output, named
 after them, the adapters' messages and field paths taken from their mapping to the transport's
-framework (`framework`: the column of stdlib/frameworks.txt, or the `ros` shorthand; the Model's
-`Adapter.frameworks`). Those are checked names (rdisc.semantics.ros), resolved here: the node
+framework (`framework`: a column of stdlib/frameworks.txt, which makes them of the adapter's `ros`
+annotations; the Model's `Adapter.frameworks`). Those are checked names (rdisc.semantics.ros), resolved here: the node
 reads and writes each field by name in its own code, and nothing it does at run time looks a
 name up from text. The semantics are the driver's: one implementation, not a third copy.
 
