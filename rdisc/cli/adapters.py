@@ -3,9 +3,9 @@ and what each is in every framework rdisc speaks: the ROS 1 message, the ROS 2 m
 schema a Foxglove session or an MCAP recording names (ROS 2's, `ros2msg`, its messages CDR).
 
 The standard adapters come from stdlib/adapters.rdis; `--description FILE` adds those a
-description declares. The columns are the Model's `Adapter.frameworks`: for a standard adapter the
-table stdlib/frameworks.txt, every emitter's one table, for a description's own its `ros`
-shorthand as each column of the table makes it (rdisc.semantics.frameworks)."""
+description declares. The columns are the Model's `Adapter.frameworks`, every emitter's one source:
+each adapter's `ros` annotations as each column of stdlib/frameworks.txt makes them, or a row of
+that table where a framework names a standard adapter otherwise (rdisc.semantics.frameworks)."""
 
 from __future__ import annotations
 

@@ -5,15 +5,15 @@ are this bridge with a transport each.
 A node is the generated Python driver (`rdisc.emit.python`) with the bridge in place of its
 command line: one subscription per domain input and one publication per domain output, named
 after them, the adapters' messages and field paths taken from their mapping to the transport's
-framework (`framework`: the column of stdlib/frameworks.txt, or the `ros` shorthand; the Model's
-`Adapter.frameworks`). Those are checked names (rdisc.semantics.ros), resolved here: the node
+framework (`framework`: a column of stdlib/frameworks.txt, which makes them of the adapter's `ros`
+annotations; the Model's `Adapter.frameworks`). Those are checked names (rdisc.semantics.ros), resolved here: the node
 reads and writes each field by name in its own code, and nothing it does at run time looks a
 name up from text. The semantics are the driver's: one implementation, not a third copy.
 
 What the bridge writes for both: each input's reading of its message and each output's filling
 of one (`_ros_read_NAME`, `_ros_fill_NAME`), the stamping of outputs whose message has a header
 (`on_output`, the one place: the time the data was read, and the frame), and for a body its
-URDF, its measured joints' conversion to a JointState, its joint commands through the
+URDF (at the node's settings where the body reads some: rdisc builds it again then), its measured joints' conversion to a JointState, its joint commands through the
 transmissions and the simulation of `sim`. A transport (a subclass) writes the program: how it
 is started, its parameters, its publishers and subscriptions, and how it stops.
 """
@@ -114,6 +114,7 @@ class Bridge:
         self.exprs = Compiler()
         self.measured = _measured(model)
         self.commanded = _commanded(model)
+        self.reads = body_settings(model)
         self.inputs = [(i, model.adapters[i.adapter]) for i in model.inputs.values()
                        if model.adapters[i.adapter].mapping(self.framework) is not None]
         self.outputs = [(o, model.adapters[o.adapter]) for o in model.outputs.values()
@@ -243,6 +244,9 @@ class Bridge:
             w.lines([quoted(line) for line in to_urdf(self.model, self.source_name).splitlines(keepends=True)])
         w.line(")")
         self.simulation(w)
+        if self.reads:
+            w.blank(2)
+            self.described(w)
         if self.commanded:
             w.blank(2)
             self.commands(w)
@@ -318,6 +322,46 @@ class Bridge:
             return ["(", *(f"    {converted(i, element)}," for i in range(param.type.size)), "),"]
         return [converted(None, param.type) + ","]
 
+    def settings(self, given: str) -> str:
+        """The settings given to the node, for its body: `given` (a Python expression), or none."""
+        return given if self.model.settings else ""
+
+    def description(self, given: str) -> str:
+        """What the node publishes as robot_description, given the settings `given` (a Python expression)."""
+        return f"_ros_description({given})" if self.reads else "_ROS_DESCRIPTION"
+
+    def described(self, w: Writer) -> None:
+        """For a body that reads settings: the URDF at the values the node is given, as `rdisc emit-urdf
+        --set` writes it, so that robot_description is the body the device drives."""
+        publish = f"{self.private}publish_description"
+        w.line(f"_ROS_BODY_SETTINGS = {literal(tuple(self.reads), m.Array(Type.STRING, len(self.reads))).text}")
+        w.blank(2)
+        with w.block("def _ros_description(given: Mapping[str, Any]) -> str:"):
+            w.line('"""The URDF of the body at the settings given: _ROS_DESCRIPTION while those it reads keep their')
+            w.line("defaults, else the body rdisc builds again from _ROS_CANONICAL at their values and checks")
+            w.line(f"(`rdisc emit-urdf {self.source_name} --set NAME=VALUE`'s). Only then is rdisc imported; without")
+            w.line('it, or where the body refuses a value, the node says why and publishes no other body."""')
+            w.lines([
+                "settings = _ros_settings(given)",
+                "changed = [name for name in _ROS_BODY_SETTINGS if settings[name] != _DEVICE.state[name]]",
+                "if not changed:",
+                "    return _ROS_DESCRIPTION",
+                'at = ", ".join(f"{name} = {settings[name]!r}" for name in changed)',
+                "try:",
+                *(f"    {line}{IGNORE}" for line in ("from rdisc.compile import compile_text",
+                                                  "from rdisc.diagnostics import Severity",
+                                                  "from rdisc.emit.urdf import to_urdf")),
+                "except ImportError as err:",
+                '    raise _ros_refuse([(f"robot_description at {at} is the body built again by rdisc, which "',
+                '                        f"{sys.executable} cannot import ({err}): put rdisc on PYTHONPATH, "',
+                f'                        "or give {publish} false")]) from None',
+                f"compilation = compile_text({quoted(_json_name(self.source_name))}, _ROS_CANONICAL, settings=settings)",
+                "errors = [f\"{d.code} {d.message}\" for d in compilation.diagnostics.sorted() if d.severity == Severity.ERROR]",
+                "if compilation.model is None or errors:",
+                '    raise _ros_refuse([f"robot_description at {at}: {error}" for error in errors or ["no model"]])',
+                f"return str(to_urdf(compilation.model, {quoted(self.source_name)}))",
+            ])
+
     def simulation(self, w: Writer) -> None:
         """The description as canonical JSON, and the simulation `~sim` (ROS 2: `sim`) builds from
         it: the node carries no .rdis file, and rdisc and MuJoCo are needed only when it simulates."""
@@ -329,13 +373,24 @@ class Bridge:
             w.lines([quoted(line) for line in to_json(self.model).splitlines(keepends=True)])
         w.line(")")
         w.blank(2)
-        with w.block("def _ros_simulation() -> Simulator:"):
+        with w.block("def _ros_settings(given: Mapping[str, Any]) -> dict[str, Any]:"):
+            w.line('"""The settings given to the node, each its type and in its range, the others their defaults:')
+            w.line('a value that does not fit is said, and the node ends with exit status 2."""')
+            w.lines([
+                "try:",
+                "    return bind_settings(_DEVICE, given)",
+                "except (TypeError, ValueError) as err:",
+                "    raise _ros_refuse([str(err)]) from None",
+            ])
+        w.blank(2)
+        with w.block("def _ros_simulation(given: Mapping[str, Any] | None = None) -> Simulator:"):
             w.line('"""The MuJoCo simulation of the body on the wall clock (`rdisc sim --realtime`\'s), in place of')
-            w.line(f"the device (`{sim}`): rdisc rebuilds the Model from _ROS_CANONICAL. Only here are rdisc and")
-            w.line('MuJoCo imported; without either the node says which, and ends with exit status 2."""')
+            w.line(f"the device (`{sim}`): rdisc rebuilds the Model from _ROS_CANONICAL at the settings given. Only")
+            w.line('here are rdisc and MuJoCo imported; without either the node says which, and ends with exit status 2."""')
             w.line("import importlib.util")
             w.blank()
             w.lines([line.replace("~sim", sim) for line in [
+                "settings = _ros_settings(given or {})",
                 "missing = [f\"~sim needs {name}, which {sys.executable} cannot import: {hint}\" for name, module, hint in (",
                 "    (\"rdisc\", \"rdisc\", \"put rdisc on PYTHONPATH, or pip install 'rdisc[sim]'\"),",
                 '    ("MuJoCo", "mujoco", "pip install mujoco"),',
@@ -348,7 +403,7 @@ class Bridge:
                                                       "from rdisc.sim import Simulation")),
                 "except ImportError as err:",
                 '    raise _ros_refuse([f"~sim: rdisc does not load here: {err}"]) from None',
-                f"compilation = compile_text({quoted(_json_name(self.source_name))}, _ROS_CANONICAL)",
+                f"compilation = compile_text({quoted(_json_name(self.source_name))}, _ROS_CANONICAL, settings=settings)",
                 "errors = [f\"{d.code} {d.message}\" for d in compilation.diagnostics.sorted() if d.severity == Severity.ERROR]",
                 "if compilation.model is None or errors:",
                 '    raise _ros_refuse([f"~sim: this rdisc does not take the description the node was made from: {error}"',
@@ -359,6 +414,18 @@ class Bridge:
                 '    raise _ros_refuse([f"~sim: MuJoCo does not simulate the body: {err}"]) from None',
                 "return simulation",
             ]])
+
+def body_settings(model: m.Model) -> list[str]:
+    """The settings the body reads (its elements' `expressions`), in the order they are declared."""
+    elements: list[m.Shape | m.Inertial | m.Spawn | m.Joint | m.Binding | m.Actuator] = [
+        *model.joints.values(), *model.actuators.values()]
+    for link in model.links.values():
+        elements += [*link.visuals, *link.collisions, *(e for e in (link.inertial, link.spawn) if e is not None)]
+    for transmission in model.transmissions.values():
+        elements += [*transmission.commands, *transmission.measures]
+    read = {v.name for e in elements for _, expr in e.expressions for v in m.variables(expr)}
+    return [name for name in model.settings if name in read]
+
 
 def _measured(model: m.Model) -> list[tuple[str, dict[m.Quantity, m.Binding]]]:
     """Each joint a transmission measures, in the body's order, with the first measure of each quantity."""

@@ -12,7 +12,9 @@ RDIS and URDF: lengths and positions in m, angles in rad (`rpy`, a revolute join
 `limit`), masses in kg, inertia in kg m² about the centre of mass, velocities in rad/s
 or m/s, efforts in N m or N. A shape or a joint is placed by `xyz` and `rpy` (left out
 when zero); a transmission's conversions are `toDevice` (from the joint's quantity, by
-its name, to the device's value) and `toJoint` (from `raw` back).
+its name, to the device's value) and `toJoint` (from `raw` back). A value that reads a setting
+is written as its expression (`"<TRACK / 2>"`, an array's items each so), so that a value given
+later moves the body read from the JSON as it does the .rdis.
 
 Deterministic: keys in a fixed logical order, elements in model order, 2-space
 indentation, no timestamp: the same Model always gives byte-identical text.
@@ -413,10 +415,25 @@ def _vector(v: tuple[float, ...]) -> list[float | int]:
     return [_number(x) for x in v]
 
 
-def _pose(pose: m.Pose) -> tuple[tuple[str, Any], tuple[str, Any]]:
-    """`xyz` and `rpy` members, each left out when zero."""
-    return (("xyz", None if pose.xyz == m.ORIGIN else _vector(pose.xyz)),
-            ("rpy", None if pose.rpy == m.ORIGIN else _vector(pose.rpy)))
+def _written(expressions: m.Written, word: str, value: Any) -> Any:
+    """A member as its clause `word` is written where that reads settings, so that a value given
+    later (`--set`) moves the body as it does the .rdis: `"<TRACK / 2>"`, or an array's items so
+    where they read one (`[0, "<TRACK / 2>", 0.036]`), the rest at their values; else its value."""
+    expr = next((e for w, e in expressions if w == word), None)
+    if expr is None:
+        return value
+    if isinstance(expr, m.ArrayValue) and isinstance(value, list):
+        return [_embedded(item) if next(m.variables(item), None) else value[k] for k, item in enumerate(expr.items)]
+    return _embedded(expr)
+
+
+def _pose(pose: m.Pose, expressions: m.Written = ()) -> tuple[tuple[str, Any], tuple[str, Any]]:
+    """`xyz` and `rpy` members, each left out when zero and reading no setting."""
+    written = {word for word, _ in expressions}
+    return (("xyz", _written(expressions, "at", _vector(pose.xyz)) if pose.xyz != m.ORIGIN or "at" in written
+             else None),
+            ("rpy", _written(expressions, "rpy", _vector(pose.rpy)) if pose.rpy != m.ORIGIN or "rpy" in written
+             else None))
 
 
 def _shape(s: m.Shape) -> JsonObject:
@@ -424,9 +441,9 @@ def _shape(s: m.Shape) -> JsonObject:
     return _object(
         ("shape", s.kind.value),
         ("path", s.path),
-        ("scale" if mesh else "size", _vector(s.size)),
-        *_pose(s.origin),
-        ("color", None if s.color is None else _vector(s.color)),
+        ("scale" if mesh else "size", _written(s.expressions, "scale" if mesh else "size", _vector(s.size))),
+        *_pose(s.origin, s.expressions),
+        ("color", None if s.color is None else _written(s.expressions, "color", _vector(s.color))),
     )
 
 
@@ -437,27 +454,35 @@ def _link(link: m.Link) -> JsonObject:
         ("visuals", [_shape(s) for s in link.visuals] or None),
         ("collisions", [_shape(s) for s in link.collisions] or None),
         ("inertial", None if inertial is None else {
-            "mass": _number(inertial.mass), "centre": _vector(inertial.centre), "inertia": _vector(inertial.inertia)}),
-        ("spawn", None if link.spawn is None else _object(("floating", link.spawn.floating), *_pose(link.spawn.pose))),
+            "mass": _written(inertial.expressions, "mass", _number(inertial.mass)),
+            "centre": _written(inertial.expressions, "centre", _vector(inertial.centre)),
+            "inertia": _written(inertial.expressions, "inertia", _vector(inertial.inertia))}),
+        ("spawn", None if link.spawn is None else _object(("floating", link.spawn.floating),
+                                                          *_pose(link.spawn.pose, link.spawn.expressions))),
         ("doc", link.doc),
     )
 
 
 def _joint(j: m.Joint) -> JsonObject:
+    read = j.expressions
+    written = {word for word, _ in read}
     return _object(
         ("name", j.name),
         ("type", j.kind.value),
         ("parent", j.parent),
         ("child", j.child),
-        *_pose(j.origin),
-        ("axis", _vector(j.axis) if j.moves() else None),
-        ("limit", None if j.lower is None or j.upper is None else [_number(j.lower), _number(j.upper)]),
-        ("velocity", None if j.velocity is None else _number(j.velocity)),
-        ("effort", None if j.effort is None else _number(j.effort)),
-        ("damping", _number(j.damping) or None),
-        ("friction", _number(j.friction) or None),
-        ("mimic", None if j.mimic is None else {"joint": j.mimic.joint, "multiplier": _number(j.mimic.multiplier),
-                                                 "offset": _number(j.mimic.offset)}),
+        *_pose(j.origin, read),
+        ("axis", _written(read, "axis", _vector(j.axis)) if j.moves() else None),
+        ("limit", None if j.lower is None or j.upper is None
+         else _written(read, "limit", [_number(j.lower), _number(j.upper)])),
+        ("velocity", None if j.velocity is None else _written(read, "velocity", _number(j.velocity))),
+        ("effort", None if j.effort is None else _written(read, "effort", _number(j.effort))),
+        ("damping", _written(read, "damping", _number(j.damping)) if j.damping or "damping" in written else None),
+        ("friction", _written(read, "friction", _number(j.friction)) if j.friction or "friction" in written
+         else None),
+        ("mimic", None if j.mimic is None else {"joint": j.mimic.joint,
+                                                 "multiplier": _written(read, "multiplier", _number(j.mimic.multiplier)),
+                                                 "offset": _written(read, "offset", _number(j.mimic.offset))}),
         ("doc", j.doc),
     )
 
@@ -468,7 +493,7 @@ def _binding(b: m.Binding) -> JsonObject:
         ("quantity", b.quantity.value),
         (target, b.target),
         ("parameter", b.parameter),
-        ("index", b.index),
+        ("index", None if b.index is None else _written(b.expressions, "index", b.index)),
         ("toDevice", _embedded(b.to_device)),
         ("toJoint", _embedded(b.to_joint)),
     )
@@ -489,11 +514,9 @@ def _actuator(a: m.Actuator) -> JsonObject:
     return _object(
         ("name", a.name),
         ("kind", a.kind.value),
-        ("velocity", a.velocity),
-        ("acceleration", a.acceleration),
-        ("effort", a.effort),
-        ("gain", a.gain),
-        ("damping", a.damping),
+        *((key, None if value is None else _written(a.expressions, key, value)) for key, value in (
+            ("velocity", a.velocity), ("acceleration", a.acceleration), ("effort", a.effort), ("gain", a.gain),
+            ("damping", a.damping))),
         ("limit", "refuse" if a.refuse else None),
         ("doc", a.doc),
     )

@@ -88,11 +88,17 @@ class _Ros1(Bridge):
                 w.line('raise _ros_refuse([f"ROS 1 does not load here: {err}"]) from None')
             w.blank()
             w.line("rospy.init_node(ROBOT)")
-            if self.model.links:
+            reading = [  # each setting given as the private parameter of its name, `_BAUD:=1000000`
+                'given = (p.name for p in _DEVICE.settings if rospy.has_param(f"~{p.name}"))',
+                'settings = {name: rospy.get_param(f"~{name}") for name in given}',
+            ] if self.model.settings else []
+            if self.model.links:  # read before the body, which may follow them
                 w.lines([
+                    *reading,
                     'if rospy.get_param("~publish_description", True):',
-                    '    rospy.set_param("robot_description", _ROS_DESCRIPTION)',
+                    f'    rospy.set_param("robot_description", {self.description("settings")})',
                 ])
+                reading = []
             if self.measured:
                 w.lines([
                     f'joint_states_rate = rospy.get_param("~joint_states_rate", {bridge.rate(self.model)!r})',
@@ -105,7 +111,7 @@ class _Ros1(Bridge):
                     'sim = rospy.get_param("~sim", False)',
                     "if not isinstance(sim, bool):",
                     '    raise _ros_refuse([f"~sim is {sim!r}: give true (simulate the body) or false (the device)"])',
-                    "simulation = _ros_simulation() if sim else None",
+                    f"simulation = _ros_simulation({self.settings('settings')}) if sim else None",
                 ])
             w.line("ros_signal = signal.getsignal(signal.SIGINT)  # rospy's: shuts the node down, logging as it goes")
             w.blank()
@@ -151,10 +157,9 @@ class _Ros1(Bridge):
                 w.line('arrow = {"write": ">", "read": "<"}.get(direction, direction)')
                 w.line('rospy.loginfo("%s %s %s", connection, arrow, shown)')
             w.blank()
-            if self.model.settings:  # each given as the private parameter of its name, `_BAUD:=1000000`
+            if self.model.settings:
                 w.lines([
-                    'given = (p.name for p in _DEVICE.settings if rospy.has_param(f"~{p.name}"))',
-                    'settings = {name: rospy.get_param(f"~{name}") for name in given}',
+                    *reading,
                     f'robot = {class_name(self.model.robot.name)}(timeout=float(rospy.get_param("~timeout", 1.0)))',
                     "robot.on_output(on_output)",
                     "robot.on_error(on_error)",

@@ -183,8 +183,15 @@ class _Ros2(Bridge):
             w.line(f'parser = argparse.ArgumentParser(prog=prog, description="{self.model.robot.name} as a ROS 2 node")')
             w.line("add_arguments(parser, _DEVICE)")
             w.line('args = parser.parse_args([*words, "--duration", "inf"])')
+            if self.model.links and self.model.settings:
+                with w.block("try:  # the settings as `rdisc run --set` reads them, for the body they move"):
+                    w.line("given = parse_settings(args.set, _DEVICE)")
+                with w.block("except ValueError as err:"):
+                    w.line("raise _ros_refuse([str(err)]) from None")
             if self.model.links:
-                w.line("simulation = _ros_simulation() if sim else None")
+                w.line(f"simulation = _ros_simulation({self.settings('given')}) if sim else None")
+            if self.reads:
+                w.line(f"description = {self.description('given')} if publish_description else _ROS_DESCRIPTION")
             w.line("_ros2_check_installed()")
             w.line("messages = _ros2_messages()")
             w.lines([f"{package}_msg = messages.{package}" for package in packages])
@@ -203,7 +210,7 @@ class _Ros2(Bridge):
             if self.model.links:
                 with w.block("if publish_description:"):
                     w.line('node.publisher("robot_description", std_msgs_msg.String, node.latched).write(')
-                    w.line("    std_msgs_msg.String(data=_ROS_DESCRIPTION))")
+                    w.line(f"    std_msgs_msg.String(data={'description' if self.reads else '_ROS_DESCRIPTION'}))")
             if self.measured:
                 w.line('joint_states = node.publisher("joint_states", sensor_msgs_msg.JointState, node.default)')
                 w.line("stopped = threading.Event()")

@@ -5,8 +5,8 @@ schemas; the ROS 2 node (`rdisc emit-ros2`) builds its DDS types from them, per 
 An MCAP channel of ROS 2 messages names its schema `pkg/msg/Type` and carries the `.msg`
 text with every message it uses after it, each under a line of `=` and `MSG: pkg/Type`
 (the `ros2msg` encoding that `mcap-ros2-support`, Foxglove and `ros2 bag` read). The
-table of frameworks (stdlib/frameworks.txt) names each adapter's types (`geometry_msgs/Twist`
-in ROS 1, `geometry_msgs/msg/Twist` in ROS 2 and Foxglove); these are the definitions of the
+table of frameworks (stdlib/frameworks.txt) makes each adapter's types of its `ros` annotation
+(`geometry_msgs/Twist` in ROS 1, `geometry_msgs/msg/Twist` in ROS 2 and Foxglove); these are the definitions of the
 ones the standard adapters use, by the ROS 1 style name (the engine has those of a
 recording's own channels: bytes, text, log lines).
 """

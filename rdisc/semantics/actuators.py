@@ -35,8 +35,9 @@ def actuator(d: Diagnostics, body: BodyRules, decl: ast.ActuatorDecl) -> m.Actua
                      help=suggest(item.key, (*KEYS, "limit")) or "its items are " + ", ".join((*KEYS, "limit")))
     refuse = limit(d, body, decl) == "refuse"
     values: dict[str, float | None] = {}
+    clauses: dict[str, ast.Expr | None] = {}
     for key in KEYS:
-        expr = body.once(decl.items, key, decl.name)
+        expr = clauses[key] = body.once(decl.items, key, decl.name)
         value = None if expr is None else body.number(expr, f"an actuator's {key}")
         if value is not None and value <= 0:
             d.report("E620", expr.span if expr is not None else decl.name.span,
@@ -53,7 +54,7 @@ def actuator(d: Diagnostics, body: BodyRules, decl: ast.ActuatorDecl) -> m.Actua
     if kind is None:
         return None
     return m.Actuator(decl.name.text, kind, values["velocity"], values["acceleration"], values["effort"],
-                      values["gain"], values["damping"], decl.doc, decl.span, refuse)
+                      values["gain"], values["damping"], decl.doc, decl.span, refuse, body.written(**clauses))
 
 
 def _unlimited(d: Diagnostics, decl: ast.TransmissionDecl, motor: m.Actuator, transmission: m.Transmission) -> None:

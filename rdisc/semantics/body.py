@@ -65,6 +65,23 @@ class BodyRules:
         self.env = Env({n: (Scope.STATE, s.type) for n, s in self.settings.items()}, "in the body",
                        "constants and settings")
         self.work = 0  # operations of the conversions sampled so far
+        self.typed: dict[int, tuple[ast.Expr, m.Expr]] = {}  # by id: each expression valued, typed
+
+    def written(self, **clauses: ast.Expr | Sequence[ast.Expr] | None) -> m.Written:
+        """The clauses given that read settings, each as written (typed), for the Model's
+        `expressions`: a list of separate values (a shape's sizes, a joint's limits) as an array."""
+        found: list[tuple[str, m.Expr]] = []
+        for word, given in clauses.items():
+            items = [] if given is None else [given] if isinstance(given, ast.Expr) else list(given)
+            nodes = [node for e in items if (kept := self.typed.get(id(e))) is not None and kept[0] is e
+                     for node in (kept[1],)]
+            if not items or len(nodes) != len(items) or not any(next(m.variables(node), None) for node in nodes):
+                continue
+            if isinstance(given, ast.Expr):
+                found.append((word, nodes[0]))
+            else:
+                found.append((word, m.ArrayValue(tuple(nodes), m.Array(Type.FLOAT, len(nodes)))))
+        return tuple(found)
 
     # -- constants of the body ---------------------------------------------------------
 
@@ -76,6 +93,7 @@ class BodyRules:
         node = self.typer.expr(expr, self.env)
         if self.d.error_count > errors or node.type is None:
             return None
+        self.typed[id(expr)] = (expr, node)
         value = self.typer.constant(node)
         if value is not None:
             return value
@@ -183,7 +201,7 @@ class BodyRules:
                           "arm bolted to the world")
             return None
         pose = self.pose(given.at, given.rpy)
-        return None if pose is None else m.Spawn(kind == "floating", pose)
+        return None if pose is None else m.Spawn(kind == "floating", pose, self.written(at=given.at, rpy=given.rpy))
 
     def spawned(self, links: dict[str, m.Link], joints: dict[str, m.Joint]) -> None:
         """Only the root link meets the world: every other hangs from its joint."""
@@ -208,7 +226,8 @@ class BodyRules:
         if shape is None or use.color is None:
             return shape
         color = self.color(use.color)
-        return None if color is None else dataclasses.replace(shape, color=color)
+        return None if color is None else dataclasses.replace(
+            shape, color=color, expressions=shape.expressions + self.written(color=use.color))
 
     def color(self, expr: ast.Expr) -> tuple[float, float, float, float] | None:
         """`[r, g, b]` or `[r, g, b, a]`, each 0 to 1 (alpha 1 when not given), as URDF, SDF and
@@ -246,7 +265,7 @@ class BodyRules:
         sizes = tuple(v for v in size if v is not None)
         if origin is None or len(sizes) != len(size):
             return None
-        return m.Shape(kind, sizes, origin, None, use.span)
+        return m.Shape(kind, sizes, origin, None, use.span, expressions=self.written(size=args, at=use.at, rpy=use.rpy))
 
     def mesh(self, use: ast.ShapeUse, origin: m.Pose | None) -> m.Shape | None:
         """`mesh("file.stl")` or `mesh("file.stl", scale)`, the scale one number or three."""
@@ -281,7 +300,8 @@ class BodyRules:
                               help="a relative path starts at the description's folder; `package://NAME/PATH` at "
                               "the folder NAME that holds the description, or NAME in ROS_PACKAGE_PATH")
                 return None
-        return m.Shape(m.ShapeKind.MESH, scale, origin, path.value, use.span)
+        return m.Shape(m.ShapeKind.MESH, scale, origin, path.value, use.span, expressions=self.written(
+            scale=args[1] if len(args) == 2 else None, at=use.at, rpy=use.rpy))
 
     def pose(self, at: ast.Expr | None, rpy: ast.Expr | None) -> m.Pose | None:
         xyz = m.ORIGIN if at is None else self.vector(at, "a position")
@@ -310,7 +330,7 @@ class BodyRules:
         inertia = self.inertia(inertia_expr)
         if mass is None or centre is None or inertia is None:
             return None
-        return m.Inertial(mass, centre, inertia)
+        return m.Inertial(mass, centre, inertia, self.written(mass=mass_expr, centre=centre_expr, inertia=inertia_expr))
 
     def inertia(self, expr: ast.Expr) -> tuple[float, float, float, float, float, float] | None:
         """`[ixx, iyy, izz]` or `[ixx, iyy, izz, ixy, ixz, iyz]`: a physical tensor is positive
@@ -361,7 +381,8 @@ class BodyRules:
                         "limit" if isinstance(item, ast.JointLimit) else "mimic"
                     self.d.report("E603", item.span, f"a fixed joint does not move: it has no `{key}`")
             return None if origin is None else m.Joint(decl.name.text, kind, decl.parent.text, decl.child.text,
-                                                       origin, doc=decl.doc, span=decl.span)
+                                                       origin, doc=decl.doc, span=decl.span,
+                                                       expressions=self.written(at=at, rpy=rpy))
         axis = (1.0, 0.0, 0.0)
         axis_expr = self.once(items, "axis", decl.name)
         if axis_expr is not None:
@@ -388,8 +409,9 @@ class BodyRules:
                           help="a continuous joint turns without limits" if kind is m.JointKind.REVOLUTE
                           else "the range it slides over, in metres")
         bounds: dict[str, float | None] = {}
+        clauses: dict[str, ast.Expr | None] = {}
         for key, zero in (("velocity", False), ("effort", False), ("damping", True), ("friction", True)):
-            expr = self.once(items, key, decl.name)
+            expr = clauses[key] = self.once(items, key, decl.name)
             bounds[key] = None if expr is None else self.positive(expr, f"a joint's {key}", "E603", zero)
             if expr is None and key in ("velocity", "effort") and kind in _LIMITED:
                 self.d.report("E603", decl.name.span, f"{kind.value} joint `{decl.name.text}` has no `{key}`",
@@ -397,9 +419,14 @@ class BodyRules:
         mimic = self.mimic(decl)
         if origin is None or isinstance(mimic, bool):
             return None
+        follows = next((i for i in items if isinstance(i, ast.JointMimic)), None) if mimic else None
+        written = self.written(at=at, rpy=rpy, axis=axis_expr, limit=None if limit is None or lower is None
+                               else (limit.low, limit.high), **clauses,
+                               multiplier=None if follows is None else follows.multiplier,
+                               offset=None if follows is None else follows.offset)
         return m.Joint(decl.name.text, kind, decl.parent.text, decl.child.text, origin, axis, lower, upper,
                        bounds["velocity"], bounds["effort"], bounds["damping"] or 0.0, bounds["friction"] or 0.0,
-                       decl.doc, decl.span, mimic)
+                       decl.doc, decl.span, mimic, written)
 
     def mimic(self, decl: ast.JointDecl) -> m.Mimic | None | bool:  # False: refused
         """`mimic JOINT multiplier M offset O` (1 and 0 when left out): None without one, False when
@@ -626,7 +653,7 @@ class BodyRules:
         if conversions is None:
             return None
         binding = m.Binding(quantity, target, param.name if param is not None else None, index, *conversions,
-                            interface=is_interface, span=b.span)
+                            interface=is_interface, span=b.span, expressions=self.written(index=b.index))
         self.agree(b, binding, joint, scalar, param)
         return binding
 

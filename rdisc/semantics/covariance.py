@@ -1,7 +1,7 @@
 """Where an output's declared noise goes in a ROS message (thesis §7.2.3): a field's variance on
 the diagonal of the covariance its message keeps beside it, found by the field's path in the
-framework's message (stdlib/frameworks.txt, or the `ros` shorthand), one table for both ROS
-versions. A message without such a field (`Range`, `JointState`) carries no covariance; fields
+framework's message (the adapter's `ros` paths as stdlib/frameworks.txt's column makes them),
+one table for both ROS versions. A message without such a field (`Range`, `JointState`) carries no covariance; fields
 the description gives no noise leave 0."""
 
 from __future__ import annotations

@@ -1,12 +1,14 @@
-"""The one table of what each adapter is in each framework (thesis §7.2.5): stdlib/frameworks.txt,
-read into the Model as each adapter's `frameworks` (m.FrameworkMapping), which every emitter
-reads: the ROS 1 and ROS 2 nodes, recordings and the live Foxglove session, `rdisc adapters`.
-A framework is one more column of the table.
+"""What each adapter is in each framework (thesis §7.2.5), read into the Model as each adapter's
+`frameworks` (m.FrameworkMapping), which every emitter reads: the ROS 1 and ROS 2 nodes,
+recordings and the live Foxglove session, `rdisc adapters`. The frameworks are the columns of
+stdlib/frameworks.txt: a framework is one more column.
 
-A standard adapter is what its rows say; an adapter a description declares with the `ros
-"pkg/Msg"` shorthand is what each column's `shorthand` row makes of that type, its fields'
-`ros` paths unchanged. The standard adapters keep their `ros` annotations (what a description's
-copy of one writes, and what the editor shows): they must say what the table's ROS 1 column says. Read with str.split, not json: `rdisc check` imports neither.
+Every adapter, standard or a description's own, is what each column's `shorthand` row makes of
+its `ros "pkg/Msg"` annotation, its fields' `ros` paths unchanged: the annotations are the one
+writing of an adapter's types and paths (what the editor shows, what a copy of one writes). The
+table has a row for a standard adapter only where a framework names it otherwise; such a row
+agrees with the annotations in the column that is the annotation as written (ROS 1's) and may
+not repeat what the shorthand says. Read with str.split, not json: `rdisc check` imports neither.
 """
 
 from __future__ import annotations
@@ -32,11 +34,13 @@ class Table:
         self.adapters = adapters
 
     def standard(self, name: str, fields: tuple[str, ...]) -> tuple[m.FrameworkMapping, ...] | None:
-        """A standard adapter's mappings, or None where the table has no row for it or for one of
-        its fields (a table that does not match stdlib/adapters.rdis; a test holds them equal)."""
+        """A standard adapter's mappings where the table has a row for it, else None (its shorthand
+        says it); TableError where the row's fields are not the adapter's."""
         row = self.adapters.get(name)
-        if row is None or set(row[1]) != set(fields):
+        if row is None:
             return None
+        if set(row[1]) != set(fields):
+            raise TableError(f"frameworks.txt: the rows of adapter {name} are not one for each of its fields")
         types, paths = row
         return tuple(m.FrameworkMapping(framework, title, type_, tuple(paths[f][k] for f in fields), schema, message)
                      for k, (framework, title, schema, message, _) in enumerate(self.frameworks)
@@ -108,21 +112,22 @@ def standard() -> Table:
 
 
 def with_frameworks(adapter: m.Adapter, table: Table | None = None) -> m.Adapter:
-    """An adapter with what it is in each framework: a standard one's rows of the table, else
-    its `ros` shorthand's. A standard adapter's own `ros` annotations (stdlib/adapters.rdis) must
-    be what the table's shorthand makes of its rows: TableError says where they disagree."""
+    """An adapter with what it is in each framework: its `ros` shorthand's, or a standard one's
+    rows of the table where it has some. TableError where those rows disagree with the adapter's
+    own `ros` annotations (stdlib/adapters.rdis) or only repeat what the shorthand says."""
     table = table or standard()
     paths = tuple(f.ros for f in adapter.fields)
     mappings = table.shorthand(adapter.ros, paths)
-    if adapter.standard:
-        rows = table.standard(adapter.name, tuple(f.name for f in adapter.fields))
-        if rows is None:
-            raise TableError(f"frameworks.txt: no rows for adapter {adapter.name} and each of its fields")
+    rows = table.standard(adapter.name, tuple(f.name for f in adapter.fields)) if adapter.standard else None
+    if rows is not None:
         written = {(each.framework, each.type, each.paths) for each in mappings}
         if any((row.framework, row.type, row.paths) not in written for row in rows
                if table.column(row.framework)[4] == SAME):
             raise TableError(f"frameworks.txt: adapter {adapter.name} is not what its `ros` annotations in "
                              "adapters.rdis say")
+        if rows == mappings:
+            raise TableError(f"frameworks.txt: the rows of adapter {adapter.name} say what its `ros` shorthand "
+                             "does: only a framework that names it otherwise needs a row")
         mappings = rows
     return m.Adapter(adapter.name, adapter.fields, adapter.ros, adapter.standard, adapter.doc, adapter.span,
                      mappings)

@@ -1051,6 +1051,12 @@ Vector = tuple[float, float, float]
 ORIGIN: Vector = (0.0, 0.0, 0.0)
 
 
+Written = tuple[tuple[str, Expr], ...]
+"""A body element's clauses that read settings, by their word (`at`, `size`, `mass`, `limit`, ...): each
+as written, typed (a list of separate values, a shape's sizes or a joint's limits, an array of them).
+The element's numbers are at the settings' values; these let canonical JSON carry what they follow."""
+
+
 @dataclass(frozen=True, slots=True)
 class Pose:
     """A frame relative to its parent's: a translation (m), then roll, pitch, yaw (rad) about
@@ -1080,6 +1086,7 @@ class Shape:
     path: str | None = None
     span: Span | None = _span
     color: tuple[float, float, float, float] | None = None  # red, green, blue, alpha: each 0 to 1
+    expressions: Written = ()  # the clauses that read settings (rdisc.semantics.body)
 
 
 @dataclass(frozen=True, slots=True)
@@ -1090,6 +1097,7 @@ class Inertial:
     mass: float
     centre: Vector
     inertia: tuple[float, float, float, float, float, float]
+    expressions: Written = ()  # the clauses that read settings (rdisc.semantics.body)
 
 
 @dataclass(frozen=True, slots=True)
@@ -1115,6 +1123,7 @@ class Spawn:
 
     floating: bool
     pose: Pose = Pose()
+    expressions: Written = ()  # the clauses that read settings (rdisc.semantics.body)
 
 
 class JointKind(enum.Enum):
@@ -1153,6 +1162,7 @@ class Joint:
     doc: str | None = None
     span: Span | None = _span
     mimic: Mimic | None = None  # another joint this one follows
+    expressions: Written = ()  # the clauses that read settings (rdisc.semantics.body)
 
     def moves(self) -> bool:
         return self.kind is not JointKind.FIXED
@@ -1179,6 +1189,7 @@ class Binding:
     to_joint: Expr
     interface: bool = False  # the target is an interface, not a primitive
     span: Span | None = _span
+    expressions: Written = ()  # the clauses that read settings (rdisc.semantics.body)
 
     def place(self) -> str:
         where = self.target if self.parameter is None else f"{self.target}.{self.parameter}"
@@ -1219,6 +1230,7 @@ class Actuator:
     doc: str | None = None
     span: Span | None = _span
     refuse: bool = False  # `limit refuse`: a command beyond a limit is refused, not shaped (`limit shape`)
+    expressions: Written = ()  # the clauses that read settings (rdisc.semantics.body)
 
 
 @dataclass(frozen=True, slots=True)

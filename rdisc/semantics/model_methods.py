@@ -2277,6 +2277,7 @@ def _init_Shape(
     path: Any = DEFAULT,
     span: Any = DEFAULT,
     color: Any = DEFAULT,
+    expressions: Any = DEFAULT,
 ) -> None:
     _set(self, "kind", kind)
     _set(self, "size", size)
@@ -2284,10 +2285,11 @@ def _init_Shape(
     _set(self, "path", path)
     _set(self, "span", span)
     _set(self, "color", color)
+    _set(self, "expressions", expressions)
 
 
 def _repr_Shape(self: Any) -> str:
-    return f"{self.__class__.__qualname__}(kind={self.kind!r}, size={self.size!r}, origin={self.origin!r}, path={self.path!r}, color={self.color!r})"
+    return f"{self.__class__.__qualname__}(kind={self.kind!r}, size={self.size!r}, origin={self.origin!r}, path={self.path!r}, color={self.color!r}, expressions={self.expressions!r})"
 
 
 def _eq_Shape(self: Any, other: Any) -> Any:
@@ -2298,38 +2300,51 @@ def _eq_Shape(self: Any, other: Any) -> Any:
             self.origin,
             self.path,
             self.color,
+            self.expressions,
         ) == (
             other.kind,
             other.size,
             other.origin,
             other.path,
             other.color,
+            other.expressions,
         )
     return NotImplemented
 
 
 def _hash_Shape(self: Any) -> int:
-    return hash((self.kind, self.size, self.origin, self.path, self.color))
+    return hash((self.kind, self.size, self.origin, self.path, self.color, self.expressions))
 
 
-def _init_Inertial(self: Any, mass: Any, centre: Any, inertia: Any) -> None:
+def _init_Inertial(self: Any, mass: Any, centre: Any, inertia: Any, expressions: Any = DEFAULT) -> None:
     _set(self, "mass", mass)
     _set(self, "centre", centre)
     _set(self, "inertia", inertia)
+    _set(self, "expressions", expressions)
 
 
 def _repr_Inertial(self: Any) -> str:
-    return f"{self.__class__.__qualname__}(mass={self.mass!r}, centre={self.centre!r}, inertia={self.inertia!r})"
+    return f"{self.__class__.__qualname__}(mass={self.mass!r}, centre={self.centre!r}, inertia={self.inertia!r}, expressions={self.expressions!r})"
 
 
 def _eq_Inertial(self: Any, other: Any) -> Any:
     if other.__class__ is self.__class__:
-        return (self.mass, self.centre, self.inertia) == (other.mass, other.centre, other.inertia)
+        return (
+            self.mass,
+            self.centre,
+            self.inertia,
+            self.expressions,
+        ) == (
+            other.mass,
+            other.centre,
+            other.inertia,
+            other.expressions,
+        )
     return NotImplemented
 
 
 def _hash_Inertial(self: Any) -> int:
-    return hash((self.mass, self.centre, self.inertia))
+    return hash((self.mass, self.centre, self.inertia, self.expressions))
 
 
 def _init_Link(
@@ -2379,23 +2394,24 @@ def _hash_Link(self: Any) -> int:
     return hash((self.name, self.visuals, self.collisions, self.inertial, self.doc, self.spawn))
 
 
-def _init_Spawn(self: Any, floating: Any, pose: Any = DEFAULT) -> None:
+def _init_Spawn(self: Any, floating: Any, pose: Any = DEFAULT, expressions: Any = DEFAULT) -> None:
     _set(self, "floating", floating)
     _set(self, "pose", pose)
+    _set(self, "expressions", expressions)
 
 
 def _repr_Spawn(self: Any) -> str:
-    return f"{self.__class__.__qualname__}(floating={self.floating!r}, pose={self.pose!r})"
+    return f"{self.__class__.__qualname__}(floating={self.floating!r}, pose={self.pose!r}, expressions={self.expressions!r})"
 
 
 def _eq_Spawn(self: Any, other: Any) -> Any:
     if other.__class__ is self.__class__:
-        return (self.floating, self.pose) == (other.floating, other.pose)
+        return (self.floating, self.pose, self.expressions) == (other.floating, other.pose, other.expressions)
     return NotImplemented
 
 
 def _hash_Spawn(self: Any) -> int:
-    return hash((self.floating, self.pose))
+    return hash((self.floating, self.pose, self.expressions))
 
 
 def _init_Mimic(self: Any, joint: Any, multiplier: Any = DEFAULT, offset: Any = DEFAULT) -> None:
@@ -2435,6 +2451,7 @@ def _init_Joint(
     doc: Any = DEFAULT,
     span: Any = DEFAULT,
     mimic: Any = DEFAULT,
+    expressions: Any = DEFAULT,
 ) -> None:
     _set(self, "name", name)
     _set(self, "kind", kind)
@@ -2451,10 +2468,11 @@ def _init_Joint(
     _set(self, "doc", doc)
     _set(self, "span", span)
     _set(self, "mimic", mimic)
+    _set(self, "expressions", expressions)
 
 
 def _repr_Joint(self: Any) -> str:
-    return f"{self.__class__.__qualname__}(name={self.name!r}, kind={self.kind!r}, parent={self.parent!r}, child={self.child!r}, origin={self.origin!r}, axis={self.axis!r}, lower={self.lower!r}, upper={self.upper!r}, velocity={self.velocity!r}, effort={self.effort!r}, damping={self.damping!r}, friction={self.friction!r}, doc={self.doc!r}, mimic={self.mimic!r})"
+    return f"{self.__class__.__qualname__}(name={self.name!r}, kind={self.kind!r}, parent={self.parent!r}, child={self.child!r}, origin={self.origin!r}, axis={self.axis!r}, lower={self.lower!r}, upper={self.upper!r}, velocity={self.velocity!r}, effort={self.effort!r}, damping={self.damping!r}, friction={self.friction!r}, doc={self.doc!r}, mimic={self.mimic!r}, expressions={self.expressions!r})"
 
 
 def _eq_Joint(self: Any, other: Any) -> Any:
@@ -2474,6 +2492,7 @@ def _eq_Joint(self: Any, other: Any) -> Any:
             self.friction,
             self.doc,
             self.mimic,
+            self.expressions,
         ) == (
             other.name,
             other.kind,
@@ -2489,6 +2508,7 @@ def _eq_Joint(self: Any, other: Any) -> Any:
             other.friction,
             other.doc,
             other.mimic,
+            other.expressions,
         )
     return NotImplemented
 
@@ -2509,6 +2529,7 @@ def _hash_Joint(self: Any) -> int:
         self.friction,
         self.doc,
         self.mimic,
+        self.expressions,
     ))
 
 
@@ -2522,6 +2543,7 @@ def _init_Binding(
     to_joint: Any,
     interface: Any = DEFAULT,
     span: Any = DEFAULT,
+    expressions: Any = DEFAULT,
 ) -> None:
     _set(self, "quantity", quantity)
     _set(self, "target", target)
@@ -2531,10 +2553,11 @@ def _init_Binding(
     _set(self, "to_joint", to_joint)
     _set(self, "interface", interface)
     _set(self, "span", span)
+    _set(self, "expressions", expressions)
 
 
 def _repr_Binding(self: Any) -> str:
-    return f"{self.__class__.__qualname__}(quantity={self.quantity!r}, target={self.target!r}, parameter={self.parameter!r}, index={self.index!r}, to_device={self.to_device!r}, to_joint={self.to_joint!r}, interface={self.interface!r})"
+    return f"{self.__class__.__qualname__}(quantity={self.quantity!r}, target={self.target!r}, parameter={self.parameter!r}, index={self.index!r}, to_device={self.to_device!r}, to_joint={self.to_joint!r}, interface={self.interface!r}, expressions={self.expressions!r})"
 
 
 def _eq_Binding(self: Any, other: Any) -> Any:
@@ -2547,6 +2570,7 @@ def _eq_Binding(self: Any, other: Any) -> Any:
             self.to_device,
             self.to_joint,
             self.interface,
+            self.expressions,
         ) == (
             other.quantity,
             other.target,
@@ -2555,6 +2579,7 @@ def _eq_Binding(self: Any, other: Any) -> Any:
             other.to_device,
             other.to_joint,
             other.interface,
+            other.expressions,
         )
     return NotImplemented
 
@@ -2568,6 +2593,7 @@ def _hash_Binding(self: Any) -> int:
         self.to_device,
         self.to_joint,
         self.interface,
+        self.expressions,
     ))
 
 
@@ -2630,6 +2656,7 @@ def _init_Actuator(
     doc: Any = DEFAULT,
     span: Any = DEFAULT,
     refuse: Any = DEFAULT,
+    expressions: Any = DEFAULT,
 ) -> None:
     _set(self, "name", name)
     _set(self, "kind", kind)
@@ -2641,10 +2668,11 @@ def _init_Actuator(
     _set(self, "doc", doc)
     _set(self, "span", span)
     _set(self, "refuse", refuse)
+    _set(self, "expressions", expressions)
 
 
 def _repr_Actuator(self: Any) -> str:
-    return f"{self.__class__.__qualname__}(name={self.name!r}, kind={self.kind!r}, velocity={self.velocity!r}, acceleration={self.acceleration!r}, effort={self.effort!r}, gain={self.gain!r}, damping={self.damping!r}, doc={self.doc!r}, refuse={self.refuse!r})"
+    return f"{self.__class__.__qualname__}(name={self.name!r}, kind={self.kind!r}, velocity={self.velocity!r}, acceleration={self.acceleration!r}, effort={self.effort!r}, gain={self.gain!r}, damping={self.damping!r}, doc={self.doc!r}, refuse={self.refuse!r}, expressions={self.expressions!r})"
 
 
 def _eq_Actuator(self: Any, other: Any) -> Any:
@@ -2659,6 +2687,7 @@ def _eq_Actuator(self: Any, other: Any) -> Any:
             self.damping,
             self.doc,
             self.refuse,
+            self.expressions,
         ) == (
             other.name,
             other.kind,
@@ -2669,6 +2698,7 @@ def _eq_Actuator(self: Any, other: Any) -> Any:
             other.damping,
             other.doc,
             other.refuse,
+            other.expressions,
         )
     return NotImplemented
 
@@ -2684,6 +2714,7 @@ def _hash_Actuator(self: Any) -> int:
         self.damping,
         self.doc,
         self.refuse,
+        self.expressions,
     ))
 
 
@@ -3571,11 +3602,12 @@ WRITTEN: dict[str, Written] = {
             ("path", DEFAULT),
             ("span", FieldSpec(None, MISSING, False, False)),
             ("color", DEFAULT),
+            ("expressions", DEFAULT),
         ),
         {"__init__": _init_Shape, "__repr__": _repr_Shape, "__eq__": _eq_Shape, "__hash__": _hash_Shape},
     ),
     "Inertial": Written(
-        (("mass", MISSING), ("centre", MISSING), ("inertia", MISSING)),
+        (("mass", MISSING), ("centre", MISSING), ("inertia", MISSING), ("expressions", DEFAULT)),
         {
             "__init__": _init_Inertial,
             "__repr__": _repr_Inertial,
@@ -3596,7 +3628,7 @@ WRITTEN: dict[str, Written] = {
         {"__init__": _init_Link, "__repr__": _repr_Link, "__eq__": _eq_Link, "__hash__": _hash_Link},
     ),
     "Spawn": Written(
-        (("floating", MISSING), ("pose", DEFAULT)),
+        (("floating", MISSING), ("pose", DEFAULT), ("expressions", DEFAULT)),
         {"__init__": _init_Spawn, "__repr__": _repr_Spawn, "__eq__": _eq_Spawn, "__hash__": _hash_Spawn},
     ),
     "Mimic": Written(
@@ -3620,6 +3652,7 @@ WRITTEN: dict[str, Written] = {
             ("doc", DEFAULT),
             ("span", FieldSpec(None, MISSING, False, False)),
             ("mimic", DEFAULT),
+            ("expressions", DEFAULT),
         ),
         {"__init__": _init_Joint, "__repr__": _repr_Joint, "__eq__": _eq_Joint, "__hash__": _hash_Joint},
     ),
@@ -3633,6 +3666,7 @@ WRITTEN: dict[str, Written] = {
             ("to_joint", MISSING),
             ("interface", DEFAULT),
             ("span", FieldSpec(None, MISSING, False, False)),
+            ("expressions", DEFAULT),
         ),
         {
             "__init__": _init_Binding,
@@ -3670,6 +3704,7 @@ WRITTEN: dict[str, Written] = {
             ("doc", DEFAULT),
             ("span", FieldSpec(None, MISSING, False, False)),
             ("refuse", DEFAULT),
+            ("expressions", DEFAULT),
         ),
         {
             "__init__": _init_Actuator,

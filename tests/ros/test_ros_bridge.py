@@ -35,6 +35,7 @@ from rdisc.compile import compile_path
 from tests.devices import CreateEmulator
 from tests.devices.create import TABLE_4_3
 from tests.devices.dynamixel import IDS, XBus, sync_goals
+from tests.semantics.test_body_settings import DRIVE
 from tests.semantics.test_joint_noise import POSE_COVARIANCE, TWIST_COVARIANCE
 
 pytestmark = pytest.mark.long  # started before the other files (tests/conftest.py)
@@ -561,6 +562,39 @@ def create2_node(tmp_path_factory: pytest.TempPathFactory) -> Path:
 def _with_rdisc(ros_env: dict[str, str], *places: str) -> dict[str, str]:
     """ros_env with `places` first on the system python3's path (Debian's rospy and messages still found after)."""
     return dict(ros_env, PYTHONPATH=os.pathsep.join(places))
+
+
+def test_robot_description_is_the_body_at_the_settings_given(ros_env: dict[str, str], tmp_path: Path) -> None:
+    """`_TRACK:=0.3` on a body that reads TRACK: robot_description is what `rdisc emit-urdf --set
+    TRACK=0.3` writes (the node has rdisc build the body again: the work tree and this python's
+    site-packages on the system python3's PYTHONPATH, as for `_sim:=true`), asked of the master over
+    its XML-RPC, in process."""
+    source, node_file = tmp_path / "rover.rdis", tmp_path / "rover_node.py"
+    source.write_text(DRIVE, encoding="utf-8")
+    done = run_rdisc("emit-ros", str(source), "-o", str(node_file))
+    assert done.returncode == 0, done.stderr
+    parameters = xmlrpc.client.ServerProxy(ros_env["ROS_MASTER_URI"])
+    if parameters.hasParam("/test_ros_bridge", "/robot_description")[2]:  # another test's node's
+        parameters.deleteParam("/test_ros_bridge", "/robot_description")
+    master, slave = os.openpty()
+    node = subprocess.Popen([PYTHON3, str(node_file), f"_port:={os.ttyname(slave)}", "_TRACK:=0.3"],
+                            env=_with_rdisc(ros_env, str(REPO), sysconfig.get_paths()["purelib"]), stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                            text=True)
+    try:
+        deadline = time.monotonic() + 30
+        while not parameters.hasParam("/test_ros_bridge", "/robot_description")[2]:
+            assert time.monotonic() < deadline and node.poll() is None, _stop(node)
+            time.sleep(0.05)
+        urdf = parameters.getParam("/test_ros_bridge", "/robot_description")[2]
+        _until_subscribed(ros_env, "/go")  # the node is up, its signal handlers too
+    finally:
+        output = _stop(node)
+        os.close(master)
+        os.close(slave)
+        parameters.deleteParam("/test_ros_bridge", "/robot_description")
+    assert node.returncode == 0, output
+    assert urdf == run_rdisc("emit-urdf", str(source), "--set", "TRACK=0.3").stdout
+    assert '<origin xyz="0 0.15 0.036" rpy="0 0 0" />' in urdf
 
 
 def test_sim_true_drives_the_simulated_body_from_a_twist(ros_env: dict[str, str], create2_node: Path) -> None:

@@ -5,6 +5,7 @@ run` holds it: a usage error else); a setting of another type is E213, an unknow
 
 from __future__ import annotations
 
+import json
 import xml.etree.ElementTree as ET
 from pathlib import Path
 
@@ -119,3 +120,42 @@ def test_a_setting_without_a_default_is_reported_once_where_it_is_declared(tmp_p
     """Before, the body computed with no value: an internal error."""
     path = _write(tmp_path, DRIVE.replace("setting TRACK: float in 0.1..1.0 = 0.235", "setting TRACK: float"))
     assert [(code, text) for code, text, _ in _errors(path)] == [("E213", "TRACK")]
+
+
+# DRIVE with a setting in a colour, a mass, a mimic and an actuator's velocity too.
+LINKED = (DRIVE.replace("link base { collision", "link base { visual box(0.3, 0.2, 0.05) color [TRACK, 0, 0]  collision")
+          .replace("mass 3 ", "mass 10 * TRACK ")
+          .replace("velocity TOP effort 0.5 }\njoint right", "velocity TOP effort 0.5 mimic right_joint multiplier "
+                   "TOP / 13.8 }\njoint right")
+          .replace("transmission l: left_joint {", "actuator motor: wheel { velocity TOP }\n"
+                   "transmission l: left_joint actuator motor {"))
+
+
+def test_canonical_json_carries_what_the_body_reads_so_a_value_given_moves_it_as_in_the_rdis(tmp_path: Path) -> None:
+    """Before, the JSON had the body's numbers at the defaults: `--set` on it moved nothing."""
+    path = _write(tmp_path, LINKED)
+    built = run_rdisc("build", path)
+    assert (built.returncode, built.stderr) == (0, "")
+    document = json.loads(built.stdout)
+    base, left, _ = document["links"]
+    assert base["visuals"][0]["color"] == ["<TRACK>", 0, 0]  # as written: alpha 1 left out
+    assert base["collisions"][0] == {"shape": "box", "size": [0.3, "<TRACK>", 0.05], "xyz": [0, 0, 0.05]}
+    assert base["inertial"]["mass"] == "<10 * TRACK>"
+    assert left["collisions"][0]["size"] == [0.036, 0.02]  # reads no setting: its numbers
+    joint = document["joints"][0]
+    assert (joint["xyz"], joint["velocity"], joint["mimic"]) == (
+        [0, "<TRACK / 2>", 0.036], "<TOP>", {"joint": "right_joint", "multiplier": "<TOP / 13.8>", "offset": 0})
+    assert document["joints"][1]["xyz"] == [0, "<-TRACK / 2>", 0.036]
+    assert document["actuators"][0]["velocity"] == "<TOP>"
+    described = tmp_path / "rover.json"
+    described.write_text(built.stdout, encoding="utf-8")
+    for verb in ("emit-urdf", "emit-sdf", "emit-mjcf"):
+        given = [run_rdisc(verb, source, "--set", "TRACK=0.3", "--set", "TOP=10") for source in (path, described)]
+        assert [(each.returncode, each.stderr) for each in given] == [(0, ""), (0, "")]
+        assert given[1].stdout == given[0].stdout.replace("rover.rdis", "rover.json")
+        assert given[1].stdout != run_rdisc(verb, described).stdout.replace("rover.rdis", "rover.json")
+    imported = tmp_path / "imported.rdis"
+    assert run_rdisc("import", described, "-o", imported).returncode == 0
+    assert "    at [0, TRACK / 2, 0.036]\n" in imported.read_text(encoding="utf-8")
+    again = run_rdisc("build", imported)
+    assert (again.returncode, again.stderr, again.stdout) == (0, "", built.stdout)

@@ -1,8 +1,9 @@
-"""The one table of what each adapter is in each framework (stdlib/frameworks.txt, thesis §7.2.5),
-read into the Model as `Adapter.frameworks`: it matches the standard adapters, names only ROS
-types and paths rdisc can speak, and drives every output. A test-local copy of the table, one path
-or schema changed, changes the ROS 2 node, the recording's (and the live Foxglove session's) schema
-and `rdisc adapters`, and nothing else; a fifth column is one more framework everywhere."""
+"""What each adapter is in each framework (thesis §7.2.5), read into the Model as
+`Adapter.frameworks`: each column of stdlib/frameworks.txt makes it of the adapter's `ros`
+annotations, standard adapters included, naming only ROS types and paths rdisc can speak, and it
+drives every output. A test-local copy of the table with a row for one adapter, one path or schema
+otherwise, changes the ROS 2 node, the recording's (and the live Foxglove session's) schema and
+`rdisc adapters`, and nothing else; a fifth column is one more framework everywhere."""
 
 from __future__ import annotations
 
@@ -41,11 +42,18 @@ def _edit(old: str, new: str) -> str:
     return TABLE.replace(old, new)
 
 
-def test_the_table_has_a_row_for_each_standard_adapter_and_field_and_only_speakable_names() -> None:
+def _row(*lines: str) -> str:
+    """The table with a row for one adapter (and its fields') below the head."""
+    return TABLE + "\n" + "".join(line + "\n" for line in lines)
+
+
+def test_each_standard_adapter_is_what_its_annotations_make_it_in_each_column_and_speakable() -> None:
     model = _model()
     table = frameworks.standard()
     standard = {a.name: a for a in model.adapters.values() if a.standard}
-    assert list(table.adapters) == list(standard)
+    assert table.adapters == {}  # no framework names a standard adapter otherwise than its shorthand
+    assert list(standard) == ["DifferentialSpeed", "Range", "Contact", "Battery", "Odometry", "Pose2D",
+                              "JointPosition", "JointState", "Temperature"]
     assert [f[:4] for f in table.frameworks] == [("ros1", "ROS 1", None, None), ("ros2", "ROS 2", None, None),
                                                  ("foxglove", "Foxglove", "ros2msg", "cdr")]
     for adapter in standard.values():
@@ -75,8 +83,9 @@ def test_a_description_s_ros_shorthand_is_each_column_s_shorthand() -> None:
 def test_a_changed_ros2_path_changes_the_ros2_node_only(monkeypatch: pytest.MonkeyPatch) -> None:
     ros1, ros2 = to_ros(_model(), "create.rdis"), to_ros2(_model(), "create.rdis")
     recorded = lower(_model()).device.messages
-    _use(monkeypatch, _edit("    angular        angular.z            angular.z                angular.z",
-                            "    angular        angular.z            angular.y                angular.z"))
+    _use(monkeypatch, _row("DifferentialSpeed  geometry_msgs/Twist  geometry_msgs/msg/Twist  geometry_msgs/msg/Twist",
+                           "    linear         linear.x             linear.x                 linear.x",
+                           "    angular        angular.z            angular.y                angular.z"))
     changed = to_ros2(_model(), "create.rdis")
     assert changed == ros2.replace('return {"linear": msg.linear.x, "angular": msg.angular.z}',
                                    'return {"linear": msg.linear.x, "angular": msg.angular.y}')
@@ -88,11 +97,8 @@ def test_a_changed_ros2_path_changes_the_ros2_node_only(monkeypatch: pytest.Monk
 def test_a_changed_foxglove_schema_and_path_change_the_recording_and_the_live_session_only(
         monkeypatch: pytest.MonkeyPatch) -> None:
     ros2 = to_ros2(_model(), "create.rdis")
-    _use(monkeypatch, _edit(
-        "Range              sensor_msgs/Range    sensor_msgs/msg/Range    sensor_msgs/msg/Range\n"
-        "    distance       range                range                    range\n",
-        "Range              sensor_msgs/Range    sensor_msgs/msg/Range    sensor_msgs/msg/Temperature\n"
-        "    distance       range                range                    temperature\n"))
+    _use(monkeypatch, _row("Range              sensor_msgs/Range    sensor_msgs/msg/Range    sensor_msgs/msg/Temperature",
+                           "    distance       range                range                    temperature"))
     device = lower(_model()).device
     assert device.messages["Range"].type == "sensor_msgs/msg/Temperature"
     assert device.messages["Range"].paths == ("temperature",)
@@ -114,19 +120,12 @@ FIFTH = _edit("framework  ros1                      ros2                        
               "schema     -                         -                             ros2msg                  json\n"
               "message    -                         -                             cdr                      json\n"
               "shorthand  {package}/{message}       {package}/msg/{message}       {package}/msg/{message}  -\n"
-              ).replace("    contact        data                 data                     data\n",
-                        "    contact        data                 data                     data  pressed\n"
-              ).replace("std_msgs/Bool        std_msgs/msg/Bool        std_msgs/msg/Bool",
-                        "std_msgs/Bool        std_msgs/msg/Bool        std_msgs/msg/Bool  viewer.Contact")
+              ) + ("\nContact  std_msgs/Bool  std_msgs/msg/Bool  std_msgs/msg/Bool  viewer.Contact\n"
+                   "    contact  data  data  data  pressed\n")
 
 
 def test_one_more_column_is_one_more_framework_in_rdisc_adapters(monkeypatch: pytest.MonkeyPatch) -> None:
-    lines = FIFTH.splitlines(keepends=True)
-    for at, line in enumerate(lines):  # every other adapter is nothing in the viewer
-        words = line.split()
-        if words and not line.startswith("#") and len(words) == 4:
-            lines[at] = line.rstrip("\n") + "  -\n"
-    _use(monkeypatch, "".join(lines))
+    _use(monkeypatch, FIFTH)  # every other adapter is nothing in the viewer: its shorthand there is `-`
     result = run_rdisc("adapters", "Contact", "Range")
     assert (result.returncode, result.stderr) == (0, "")
     assert result.stdout == """\
@@ -165,8 +164,28 @@ def test_a_table_that_does_not_say_what_each_adapter_is_is_refused_with_its_line
 def test_a_table_whose_ros_1_column_is_not_what_adapters_rdis_says_is_refused(monkeypatch: pytest.MonkeyPatch) -> None:
     """The standard adapters' `ros` annotations are the shorthand a description writes: the table
     may not say otherwise in the column that shorthand is (ROS 1's)."""
-    _use(monkeypatch, _edit("    distance       range                range                    range",
-                            "    distance       min_range            range                    range"))
+    _use(monkeypatch, _row("Range              sensor_msgs/Range    sensor_msgs/msg/Range    sensor_msgs/msg/Range",
+                           "    distance       min_range            range                    range"))
     with pytest.raises(frameworks.TableError) as raised:
         compile_text("d.rdis", 'robot d { author "t" }\n')
     assert str(raised.value) == "frameworks.txt: adapter Range is not what its `ros` annotations in adapters.rdis say"
+
+
+def test_a_row_that_says_what_the_shorthand_says_is_refused_as_a_second_writing(
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    """A standard adapter's types and paths are written once, as its `ros` annotations: the table
+    may not write them again."""
+    _use(monkeypatch, _row("Range              sensor_msgs/Range    sensor_msgs/msg/Range    sensor_msgs/msg/Range",
+                           "    distance       range                range                    range"))
+    with pytest.raises(frameworks.TableError) as raised:
+        compile_text("d.rdis", 'robot d { author "t" }\n')
+    assert str(raised.value) == ("frameworks.txt: the rows of adapter Range say what its `ros` shorthand does: "
+                                 "only a framework that names it otherwise needs a row")
+
+
+def test_a_row_without_one_for_each_field_is_refused(monkeypatch: pytest.MonkeyPatch) -> None:
+    _use(monkeypatch, _row("Contact  std_msgs/Bool  std_msgs/msg/Bool  std_msgs/msg/Int8",
+                           "    pressed  data  data  data"))
+    with pytest.raises(frameworks.TableError) as raised:
+        compile_text("d.rdis", 'robot d { author "t" }\n')
+    assert str(raised.value) == "frameworks.txt: the rows of adapter Contact are not one for each of its fields"
