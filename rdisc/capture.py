@@ -100,8 +100,8 @@ def _spy(lines: list[str], name: str) -> list[Message]:
 def read_recording(path: str) -> list[Message]:
     """An rdisc recording's bytes (`/rdisc/CONN/write` and `/read`), each connection's in order,
     read by the replay's bounded reader."""
-    from rdisc.runtime.replay import RecordingError
-    from rdisc.runtime.replay import read_recording as read
+    from rdisc.recordings import RecordingError
+    from rdisc.recordings import read_recording as read
 
     try:
         recording = read(path)

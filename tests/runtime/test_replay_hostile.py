@@ -20,7 +20,7 @@ from mcap_ros2.writer import Writer
 from runtime_support import CREATE
 
 from rdisc.engine.recording import _BYTES_SCHEMA, _LOG_SCHEMA, _TEXT_SCHEMA
-from rdisc.runtime import replay as replay_module
+from rdisc import recordings
 
 TEXT = ("std_msgs/msg/String", _TEXT_SCHEMA)
 BYTES = ("std_msgs/msg/UInt8MultiArray", _BYTES_SCHEMA)
@@ -114,14 +114,14 @@ def test_millions_of_messages_are_refused_by_their_count_before_any_is_decoded(t
     """Four chunks of a million identical messages each, a few KiB of zstd apiece: counted as
     they are read, and refused at MAX_MESSAGES, before a single one is decoded."""
     each = 1_000_000
-    assert replay_module.MAX_MESSAGES < 4 * each
+    assert recordings.MAX_MESSAGES < 4 * each
     builder = RecordBuilder()
     Schema(id=1, name="std_msgs/msg/String", encoding="ros2msg", data=_TEXT_SCHEMA.encode()).write(builder)
     Channel(id=1, schema_id=1, topic="/detect_bump", message_encoding="cdr", metadata={}).write(builder)
     head = builder.end()
     Message(channel_id=1, sequence=0, log_time=1, publish_time=1, data=b"\x00\x01\x00\x00\x03\x00\x00\x00{}\x00").write(builder)
     body = head + builder.end() * each
-    assert len(body) < replay_module.MAX_CHUNK and 4 * len(body) < replay_module.MAX_BYTES
+    assert len(body) < recordings.MAX_CHUNK and 4 * len(body) < recordings.MAX_BYTES
     compressed = zstandard.ZstdCompressor().compress(body)
     path = tmp_path / "millions.mcap"
     with path.open("wb") as f:
@@ -140,11 +140,11 @@ def test_millions_of_messages_are_refused_by_their_count_before_any_is_decoded(t
     path.write_bytes(data[:end] + chunks + data[end:])
     assert path.stat().st_size < 200_000
     decoded: list[Any] = []
-    taken = replay_module._take
-    monkeypatch.setattr(replay_module, "_take", lambda *args: decoded.append(args) or taken(*args))
+    taken = recordings._take
+    monkeypatch.setattr(recordings, "_take", lambda *args: decoded.append(args) or taken(*args))
     status, stderr = replay(path)
     assert status == 2, stderr
-    assert stderr == f"rdisc replay: {path}: too many messages: more than {replay_module.MAX_MESSAGES}\n"
+    assert stderr == f"rdisc replay: {path}: too many messages: more than {recordings.MAX_MESSAGES}\n"
     assert decoded == []
 
 
