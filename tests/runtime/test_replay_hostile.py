@@ -19,8 +19,8 @@ from mcap.writer import Writer as McapWriter
 from mcap_ros2.writer import Writer
 from runtime_support import CREATE
 
-from rdisc.engine.recording import _BYTES_SCHEMA, _LOG_SCHEMA, _TEXT_SCHEMA
 from rdisc import recordings
+from rdisc.engine.recording import _BYTES_SCHEMA, _LOG_SCHEMA, _TEXT_SCHEMA
 
 TEXT = ("std_msgs/msg/String", _TEXT_SCHEMA)
 BYTES = ("std_msgs/msg/UInt8MultiArray", _BYTES_SCHEMA)
