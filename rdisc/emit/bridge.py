@@ -148,7 +148,8 @@ class Bridge:
         w = Writer()
         self.write(w)
         return (driver[: -len(MAIN)] + helpers + "\n\n\n" + w.text().lstrip("\n") + "\n\n"
-                + 'if __name__ == "__main__":\n    sys.exit(ros_main())\n')
+                + 'if __name__ == "__main__":\n'
+                + '    sys.exit(command_line(ros_main))  # SIGINT and SIGTERM handled from here: 130 or 143, no traceback\n')
 
     def main(self, w: Writer) -> None:
         """`ros_main`, the node's program: the transport's."""

@@ -38,7 +38,8 @@ def test_the_node_is_the_driver_with_a_ros_main() -> None:
     node, driver = _node("create")
     body = driver.removesuffix('if __name__ == "__main__":\n    sys.exit(main())\n')
     assert node.startswith(body)
-    assert node.endswith('if __name__ == "__main__":\n    sys.exit(ros_main())\n')
+    assert node.endswith('if __name__ == "__main__":\n    sys.exit(command_line(ros_main))  # SIGINT and SIGTERM '
+                         'handled from here: 130 or 143, no traceback\n')
     assert "import geometry_msgs.msg as geometry_msgs_msg  # type: ignore" in node
     assert ('def _ros_read_set_velocity(msg: Any) -> dict[str, Any]:\n'
             '    """The fields of input set_velocity from a geometry_msgs/Twist."""\n'

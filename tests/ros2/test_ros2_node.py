@@ -235,3 +235,25 @@ def test_the_arm_s_joints_over_ros_2(dds_env: dict[str, str], tmp_path: Path) ->
             arm.stop()
             _, stderr = _stop(node, signal.SIGINT)
         assert node.returncode == 130, stderr
+
+
+_SIGNAL_AT_FIRST_CALL = """\
+import os, runpy, signal, sys
+target, sys.argv = sys.argv[1], sys.argv[2:]  # the node's own command line
+def profile(frame, event, arg):
+    if event == "call" and frame.f_code.co_name == target:
+        sys.setprofile(None)
+        os.kill(os.getpid(), signal.SIGINT)
+sys.setprofile(profile)
+runpy.run_path(sys.argv[0], run_name="__main__")
+"""
+
+
+@pytest.mark.parametrize("target", ["_ros2_command_line", "_ros2_check_installed"])
+def test_a_signal_before_the_robot_runs_ends_the_node_with_130_and_no_traceback(node_file: Path, dds_env: dict[str, str],
+                                                                               target: str) -> None:
+    """SIGINT as the node reads its command line, or as it looks for Cyclone DDS (before its
+    robot is made and `run_command` handles signals): 130, one process, no traceback."""
+    done = subprocess.run([sys.executable, "-c", _SIGNAL_AT_FIRST_CALL, target, str(node_file), "--ros-args", "-p",
+                           "port:=loop://"], env=dds_env, capture_output=True, text=True, timeout=120)
+    assert (done.returncode, done.stderr) == (130, "")
