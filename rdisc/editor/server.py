@@ -7,11 +7,15 @@ hostile document costs what checking it costs, within the compiler's token and s
 
 from __future__ import annotations
 
+import asyncio
+import sys
+import threading
 from collections.abc import Callable
-from typing import TypeVar
+from typing import BinaryIO, TypeVar
 
 from lsprotocol import types
 from pygls.exceptions import JsonRpcException, JsonRpcInvalidParams
+from pygls.io_ import StdoutWriter
 from pygls.lsp.server import LanguageServer
 
 from rdisc import __version__
@@ -19,6 +23,7 @@ from rdisc.editor import actions, completion, formatting, hover, navigation, pos
 from rdisc.editor.checks import Checker
 from rdisc.editor.diagnostics import published
 from rdisc.editor.documents import Analysis, Document, Workspace
+from rdisc.editor.transport import Session
 
 T = TypeVar("T")
 
@@ -38,6 +43,19 @@ class RdisServer(LanguageServer):
         """The document's last check without errors, if any."""
         document = self.documents.documents.get(uri)
         return document.good if document is not None else None
+
+    def start_io(self, stdin: BinaryIO | None = None, stdout: BinaryIO | None = None) -> None:
+        """pygls's stdio server, reading through rdisc.editor.transport: bounded, and answering
+        every message it cannot handle."""
+        output = stdout or sys.stdout.buffer
+        self._stop_event = stop = threading.Event()  # set by pygls's shutdown
+        self.protocol.set_writer(StdoutWriter(output))
+        try:
+            asyncio.run(Session(self, stdin or sys.stdin.buffer, output).run(stop))
+        except (BrokenPipeError, KeyboardInterrupt, SystemExit):  # the client went, or said exit
+            pass
+        finally:
+            self.shutdown()  # type: ignore[no-untyped-call]
 
     async def analysis(self, uri: str) -> Analysis:
         found = await self.checks.analysis(uri)
