@@ -57,6 +57,14 @@ class RdisServer(LanguageServer):
         finally:
             self.shutdown()  # type: ignore[no-untyped-call]
 
+    def open_document(self, uri: str) -> Document:
+        """An open document's text, never a file read for a URI the editor has not opened (pygls's
+        `get_text_document` reads one: `file:///dev/zero` grew without end)."""
+        found = self.documents.documents.get(uri)
+        if found is None:
+            raise JsonRpcInvalidParams(f"{uri} is not open")
+        return found
+
     async def analysis(self, uri: str) -> Analysis:
         found = await self.checks.analysis(uri)
         if found is None:
@@ -145,13 +153,13 @@ def make_server() -> RdisServer:
 
     @server.feature(types.TEXT_DOCUMENT_FORMATTING)
     def format_document(ls: RdisServer, params: types.DocumentFormattingParams) -> list[types.TextEdit]:
-        document = ls.workspace.get_text_document(params.text_document.uri)
-        return formatting.format_document(positions.path_of(document.uri), document.source)
+        document = ls.open_document(params.text_document.uri)
+        return formatting.format_document(document.path, document.text)
 
     @server.feature(types.TEXT_DOCUMENT_RANGE_FORMATTING)
     def format_range(ls: RdisServer, params: types.DocumentRangeFormattingParams) -> list[types.TextEdit]:
-        document = ls.workspace.get_text_document(params.text_document.uri)
-        return formatting.format_range(positions.path_of(document.uri), document.source, params.range)
+        document = ls.open_document(params.text_document.uri)
+        return formatting.format_range(document.path, document.text, params.range)
 
     return server
 

@@ -160,3 +160,12 @@ def test_a_declared_length_past_the_limit_is_read_past_without_holding_it() -> N
     lone.process.stdin.close()  # the 10**17 bytes never come: the server reads to the end and stops
     assert lone.process.wait(timeout=60) == 0
     assert b"MemoryError" not in lone.logged()
+
+
+def test_formatting_a_uri_that_is_not_open_reads_no_file(client: Client) -> None:
+    for uri in ("file:///dev/zero", "file:///etc/hostname"):  # /dev/zero grew the server without end
+        for method, extra in (("textDocument/formatting", {}), ("textDocument/rangeFormatting", {"range": {
+                "start": {"line": 0, "character": 0}, "end": {"line": 1, "character": 0}}})):
+            params = {"textDocument": {"uri": uri}, "options": {"tabSize": 4, "insertSpaces": True}, **extra}
+            assert error_of(client.ask(method, params)) == {"code": -32602, "message": f"{uri} is not open"}
+    client.still_answers()
