@@ -10,13 +10,15 @@ from __future__ import annotations
 import asyncio
 import sys
 import threading
-from collections.abc import Callable
-from typing import BinaryIO, TypeVar
+from collections.abc import Callable, Generator
+from typing import Any, BinaryIO, TypeVar
+from urllib.parse import unquote
 
 from lsprotocol import types
 from pygls.exceptions import JsonRpcException, JsonRpcInvalidParams
 from pygls.io_ import StdoutWriter
 from pygls.lsp.server import LanguageServer
+from pygls.protocol import LanguageServerProtocol, lsp_method
 
 from rdisc import __version__
 from rdisc.editor import actions, completion, formatting, hover, navigation, positions, symbols
@@ -28,9 +30,24 @@ from rdisc.editor.transport import Session
 T = TypeVar("T")
 
 
+class Protocol(LanguageServerProtocol):
+    """pygls's protocol, ignoring (with a line in the client's log) a change to a document that is
+    not open, where pygls's KeyError reached the editor as a server error."""
+
+    @lsp_method(types.TEXT_DOCUMENT_DID_CHANGE)
+    def lsp_text_document__did_change(self, params: types.DidChangeTextDocumentParams) -> Generator[Any, Any, None]:
+        uri = params.text_document.uri
+        if unquote(uri) not in self.workspace.text_documents:
+            self._server.window_log_message(types.LogMessageParams(
+                type=types.MessageType.Error, message=f"textDocument/didChange ignored: {uri} is not open"))
+            return
+        yield from super().lsp_text_document__did_change(params)
+
+
 class RdisServer(LanguageServer):
     def __init__(self) -> None:
-        super().__init__("rdisc", __version__, text_document_sync_kind=types.TextDocumentSyncKind.Incremental)
+        super().__init__("rdisc", __version__, text_document_sync_kind=types.TextDocumentSyncKind.Incremental,
+                         protocol_cls=Protocol)
         self.documents = Workspace()
         self.checks = Checker(self.documents, self.publish)
 

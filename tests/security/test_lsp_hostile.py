@@ -169,3 +169,20 @@ def test_formatting_a_uri_that_is_not_open_reads_no_file(client: Client) -> None
             params = {"textDocument": {"uri": uri}, "options": {"tabSize": 4, "insertSpaces": True}, **extra}
             assert error_of(client.ask(method, params)) == {"code": -32602, "message": f"{uri} is not open"}
     client.still_answers()
+
+
+def test_a_change_to_a_document_that_is_not_open_is_ignored_with_a_log_line(client: Client) -> None:
+    client.notify("textDocument/didChange", {"textDocument": {"uri": "file:///not/open.rdis", "version": 2},
+                                             "contentChanges": [{"text": "robot r {}"}]})
+    client.notify("textDocument/didChange", {"textDocument": {"uri": "file:///x.rdis", "version": 2},
+                                             "contentChanges": [{"range": {"start": {"line": -1, "character": 0},
+                                                                           "end": {"line": 0, "character": 0}},
+                                                                 "text": ""}]})
+    client.ids += 1
+    client.send({"jsonrpc": "2.0", "id": client.ids, "method": "shutdown!", "params": None})
+    seen = client.answers(client.ids)
+    assert [(m.get("method"), m.get("params", {}).get("message")) for m in seen[:2]] == [
+        ("window/logMessage", "textDocument/didChange ignored: file:///not/open.rdis is not open"),
+        ("window/logMessage", ("textDocument/didChange ignored: Position.line should be in range [0:2147483647], "
+                              "but was -1. @ $.params.content_changes[0].range.start"))]
+    client.still_answers()
