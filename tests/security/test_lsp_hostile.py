@@ -186,3 +186,19 @@ def test_a_change_to_a_document_that_is_not_open_is_ignored_with_a_log_line(clie
         ("window/logMessage", ("textDocument/didChange ignored: Position.line should be in range [0:2147483647], "
                               "but was -1. @ $.params.content_changes[0].range.start"))]
     client.still_answers()
+
+
+def test_a_document_of_lone_surrogates_or_a_nul_in_its_uri_is_answered(client: Client, tmp_path: Path) -> None:
+    surrogates = tmp_path.as_uri() + "/lone.rdis"
+    client.notify("textDocument/didOpen", {"textDocument": {
+        "uri": surrogates, "languageId": "rdis", "version": 1,
+        "text": 'robot bot { author "\ud800" }\nstate \udc00speed: int = 0\n'}})
+    (symbols,) = [m for m in client.ask("textDocument/documentSymbol", {"textDocument": {"uri": surrogates}})
+                  if "id" in m]
+    assert [(s["name"], s["range"]["end"]) for s in symbols["result"]] == [("bot", {"line": 0, "character": 24})]
+    nul = tmp_path.as_uri() + "/%00.rdis"  # the path a file cannot have: the URI is the document's name
+    client.notify("textDocument/didOpen", {"textDocument": {"uri": nul, "languageId": "rdis", "version": 1,
+                                                            "text": BOT}})
+    (hover,) = [m for m in client.ask("textDocument/hover", {"textDocument": {"uri": nul},
+                                                             "position": {"line": 1, "character": 7}}) if "id" in m]
+    assert hover["result"]["contents"]["value"] == "```rdis\nstate speed: int = 0\n```"
