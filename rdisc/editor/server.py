@@ -26,13 +26,23 @@ from rdisc.editor.checks import Checker
 from rdisc.editor.diagnostics import published
 from rdisc.editor.documents import Analysis, Document, Workspace
 from rdisc.editor.transport import Session
+from rdisc.syntax.parse import MAX_FILE_CHARS
 
 T = TypeVar("T")
+
+MAX_OPEN_CHARS = 4 * MAX_FILE_CHARS  # of all the open documents together: four at the parser's limit
 
 
 class Protocol(LanguageServerProtocol):
     """pygls's protocol, ignoring (with a line in the client's log) a change to a document that is
-    not open, where pygls's KeyError reached the editor as a server error."""
+    not open, where pygls's KeyError reached the editor as a server error, and following no
+    document past what the open documents may hold together (`MAX_OPEN_CHARS`)."""
+
+    @lsp_method(types.TEXT_DOCUMENT_DID_OPEN)
+    def lsp_text_document__did_open(self, params: types.DidOpenTextDocumentParams) -> Generator[Any, Any, None]:
+        self.workspace.put_text_document(params.text_document)
+        if not self._too_much(params.text_document.uri):
+            yield from self._handled(types.TEXT_DOCUMENT_DID_OPEN, params)
 
     @lsp_method(types.TEXT_DOCUMENT_DID_CHANGE)
     def lsp_text_document__did_change(self, params: types.DidChangeTextDocumentParams) -> Generator[Any, Any, None]:
@@ -41,7 +51,29 @@ class Protocol(LanguageServerProtocol):
             self._server.window_log_message(types.LogMessageParams(
                 type=types.MessageType.Error, message=f"textDocument/didChange ignored: {uri} is not open"))
             return
-        yield from super().lsp_text_document__did_change(params)
+        for change in params.content_changes:
+            self.workspace.update_text_document(params.text_document, change)
+        if not self._too_much(uri):
+            yield from self._handled(types.TEXT_DOCUMENT_DID_CHANGE, params)
+
+    def _handled(self, method: str, params: Any) -> Generator[Any, Any, None]:
+        if (handler := self.fm.features.get(method)) is not None:
+            yield handler, (params,), None
+
+    def _too_much(self, uri: str) -> bool:
+        """Whether the open texts now hold more than MAX_OPEN_CHARS: then this document is
+        followed no longer, and the editor is told so."""
+        held = sum(len(document.source) for document in self.workspace.text_documents.values())
+        if held <= MAX_OPEN_CHARS:
+            return False
+        self.workspace.remove_text_document(uri)
+        server = self._server
+        assert isinstance(server, RdisServer)
+        server.forget(uri)
+        server.window_show_message(types.ShowMessageParams(type=types.MessageType.Warning, message=(
+            f"{uri} is not followed: the open documents would hold {held} characters, past the limit of "
+            f"{MAX_OPEN_CHARS}; close some and open it again")))
+        return True
 
 
 class RdisServer(LanguageServer):
@@ -73,6 +105,13 @@ class RdisServer(LanguageServer):
             pass
         finally:
             self.shutdown()  # type: ignore[no-untyped-call]
+
+    def forget(self, uri: str) -> None:
+        """Follow the document no longer: its diagnostics cleared, the documents importing it checked
+        again (its file is read now)."""
+        self.text_document_publish_diagnostics(types.PublishDiagnosticsParams(uri=uri, diagnostics=[]))
+        for importer in self.documents.forget(uri):
+            self.checks.request(importer.uri)
 
     def open_document(self, uri: str) -> Document:
         """An open document's text, never a file read for a URI the editor has not opened (pygls's
@@ -111,10 +150,7 @@ def make_server() -> RdisServer:
 
     @server.feature(types.TEXT_DOCUMENT_DID_CLOSE)
     def did_close(ls: RdisServer, params: types.DidCloseTextDocumentParams) -> None:
-        uri = params.text_document.uri
-        ls.text_document_publish_diagnostics(types.PublishDiagnosticsParams(uri=uri, diagnostics=[]))
-        for importer in ls.documents.forget(uri):
-            ls.checks.request(importer.uri)
+        ls.forget(params.text_document.uri)
 
     @server.feature(types.TEXT_DOCUMENT_CODE_ACTION,
                     types.CodeActionOptions(code_action_kinds=[types.CodeActionKind.QuickFix]))

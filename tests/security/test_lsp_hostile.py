@@ -202,3 +202,36 @@ def test_a_document_of_lone_surrogates_or_a_nul_in_its_uri_is_answered(client: C
     (hover,) = [m for m in client.ask("textDocument/hover", {"textDocument": {"uri": nul},
                                                              "position": {"line": 1, "character": 7}}) if "id" in m]
     assert hover["result"]["contents"]["value"] == "```rdis\nstate speed: int = 0\n```"
+
+
+def not_followed(uri: str, held: int, limit: int) -> str:
+    return (f"{uri} is not followed: the open documents would hold {held} characters, past the limit of {limit}; "
+            "close some and open it again")
+
+
+def test_the_open_documents_hold_a_bounded_number_of_characters_together(tmp_path: Path) -> None:
+    from rdisc.editor.server import MAX_OPEN_CHARS
+
+    lone = Client()
+    lone.ask("initialize", {"capabilities": {}})
+    big = 'robot bot { author "me" }\n#' + "x" * (MAX_OPEN_CHARS // 3) + "\n"  # a third of the bound, and more
+    uris = [tmp_path.as_uri() + f"/big{number}.rdis" for number in range(3)]
+    for uri in uris:  # each is past the parser's limit, so its check is a quick refusal
+        lone.notify("textDocument/didOpen", {"textDocument": {"uri": uri, "languageId": "rdis", "version": 1,
+                                                              "text": big}})
+    held = 3 * len(big)
+    seen = lone.ask("textDocument/documentSymbol", {"textDocument": {"uri": uris[2]}})
+    assert [m["params"]["message"] for m in seen if m.get("method") == "window/showMessage"] == [
+        not_followed(uris[2], held, MAX_OPEN_CHARS)]
+    assert error_of(seen) == {"code": -32602, "message": f"{uris[2]} is not open"}
+    (kept,) = [m for m in lone.ask("textDocument/documentSymbol", {"textDocument": {"uri": uris[0]}}) if "id" in m]
+    assert "result" in kept
+    lone.notify("textDocument/didChange", {"textDocument": {"uri": uris[0], "version": 2}, "contentChanges": [
+        {"range": {"start": {"line": 0, "character": 0}, "end": {"line": 0, "character": 0}}, "text": big}]})
+    seen = lone.ask("textDocument/documentSymbol", {"textDocument": {"uri": uris[0]}})
+    assert [m["params"]["message"] for m in seen if m.get("method") == "window/showMessage"] == [
+        not_followed(uris[0], held, MAX_OPEN_CHARS)]
+    assert error_of(seen) == {"code": -32602, "message": f"{uris[0]} is not open"}
+    lone.still_answers()
+    lone.process.kill()
+    lone.process.wait()
