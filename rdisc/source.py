@@ -65,7 +65,7 @@ class SourceFile:
         line = bisect.bisect_right(starts, offset) - 1
         prefix = self.text[starts[line] : offset]
         # Counted by C code, not a loop over the line: a long line's many diagnostics are many positions.
-        utf16 = len(prefix) if prefix.isascii() else len(prefix.encode("utf-16-le")) // 2
+        utf16 = len(prefix) if prefix.isascii() else len(prefix.encode("utf-16-le", "surrogatepass")) // 2
         return Position(line, len(prefix), utf16)
 
     def line_text(self, line: int) -> str:

@@ -28,7 +28,7 @@ def offset(source: SourceFile, position: types.Position) -> int:
 
 def utf16_length(text: str) -> int:
     """How many UTF-16 code units `text` is (what LSP columns count), in time the C code takes."""
-    return len(text) if text.isascii() else len(text.encode("utf-16-le")) // 2
+    return len(text) if text.isascii() else len(text.encode("utf-16-le", "surrogatepass")) // 2
 
 
 def position(source: SourceFile, at: int) -> types.Position:
@@ -49,7 +49,9 @@ def uri_of(path: str) -> str:
 
 
 def path_of(uri: str) -> str:
-    """The file a `file:` URI names (another scheme's URI stands for itself, as a name)."""
+    """The file a `file:` URI names (another scheme's URI, or one naming no path a file can have,
+    a NUL in it, stands for itself, as a name)."""
     from pygls.uris import to_fs_path
 
-    return (to_fs_path(uri) if uri.startswith("file:") else None) or uri
+    path = to_fs_path(uri) if uri.startswith("file:") else None
+    return path if path and "\0" not in path else uri

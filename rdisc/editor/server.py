@@ -11,25 +11,79 @@ is read before its document's next check starts.
 
 from __future__ import annotations
 
-from collections.abc import Callable
-from typing import TypeVar
+import asyncio
+import sys
+import threading
+from collections.abc import Callable, Generator
+from typing import Any, BinaryIO, TypeVar
+from urllib.parse import unquote
 
 from lsprotocol import types
 from pygls.exceptions import JsonRpcException, JsonRpcInvalidParams
+from pygls.io_ import StdoutWriter
 from pygls.lsp.server import LanguageServer
+from pygls.protocol import LanguageServerProtocol, lsp_method
 
 from rdisc import __version__
 from rdisc.editor import actions, completion, formatting, hover, navigation, positions, symbols
 from rdisc.editor.checks import Checker
 from rdisc.editor.diagnostics import published
 from rdisc.editor.documents import Analysis, Document, Workspace
+from rdisc.editor.transport import Session
+from rdisc.syntax.parse import MAX_FILE_CHARS
 
 T = TypeVar("T")
+
+MAX_OPEN_CHARS = 4 * MAX_FILE_CHARS  # of all the open documents together: four at the parser's limit
+
+
+class Protocol(LanguageServerProtocol):
+    """pygls's protocol, ignoring (with a line in the client's log) a change to a document that is
+    not open, where pygls's KeyError reached the editor as a server error, and following no
+    document past what the open documents may hold together (`MAX_OPEN_CHARS`)."""
+
+    @lsp_method(types.TEXT_DOCUMENT_DID_OPEN)
+    def lsp_text_document__did_open(self, params: types.DidOpenTextDocumentParams) -> Generator[Any, Any, None]:
+        self.workspace.put_text_document(params.text_document)
+        if not self._too_much(params.text_document.uri):
+            yield from self._handled(types.TEXT_DOCUMENT_DID_OPEN, params)
+
+    @lsp_method(types.TEXT_DOCUMENT_DID_CHANGE)
+    def lsp_text_document__did_change(self, params: types.DidChangeTextDocumentParams) -> Generator[Any, Any, None]:
+        uri = params.text_document.uri
+        if unquote(uri) not in self.workspace.text_documents:
+            self._server.window_log_message(types.LogMessageParams(
+                type=types.MessageType.Error, message=f"textDocument/didChange ignored: {uri} is not open"))
+            return
+        for change in params.content_changes:
+            self.workspace.update_text_document(params.text_document, change)
+        if not self._too_much(uri):
+            yield from self._handled(types.TEXT_DOCUMENT_DID_CHANGE, params)
+
+    def _handled(self, method: str, params: Any) -> Generator[Any, Any, None]:
+        if (handler := self.fm.features.get(method)) is not None:
+            yield handler, (params,), None
+
+    def _too_much(self, uri: str) -> bool:
+        """Whether the open texts now hold more than MAX_OPEN_CHARS: then this document is
+        followed no longer, and the editor is told so."""
+        held = sum(len(document.source) for document in self.workspace.text_documents.values())
+        if held <= MAX_OPEN_CHARS:
+            return False
+        self.workspace.remove_text_document(uri)
+        server = self._server
+        assert isinstance(server, RdisServer)
+        server.forget(uri)
+        server.window_show_message(types.ShowMessageParams(type=types.MessageType.Warning, message=(
+            f"{uri} is not followed: the open documents would hold {held} characters, past the limit of "
+            f"{MAX_OPEN_CHARS}; close some and open it again")))
+        return True
 
 
 class RdisServer(LanguageServer):
     def __init__(self) -> None:
-        super().__init__("rdisc", __version__, text_document_sync_kind=types.TextDocumentSyncKind.Incremental)
+        super().__init__("rdisc", __version__, text_document_sync_kind=types.TextDocumentSyncKind.Incremental,
+                         protocol_cls=Protocol)
         self.documents = Workspace()
         self.checks = Checker(self.documents, self.publish)
 
@@ -42,6 +96,34 @@ class RdisServer(LanguageServer):
         """The document's last check without errors, if any."""
         document = self.documents.documents.get(uri)
         return document.good if document is not None else None
+
+    def start_io(self, stdin: BinaryIO | None = None, stdout: BinaryIO | None = None) -> None:
+        """pygls's stdio server, reading through rdisc.editor.transport: bounded, and answering
+        every message it cannot handle."""
+        output = stdout or sys.stdout.buffer
+        self._stop_event = stop = threading.Event()  # set by pygls's shutdown
+        self.protocol.set_writer(StdoutWriter(output))
+        try:
+            asyncio.run(Session(self, stdin or sys.stdin.buffer, output).run(stop))
+        except (BrokenPipeError, KeyboardInterrupt, SystemExit):  # the client went, or said exit
+            pass
+        finally:
+            self.shutdown()  # type: ignore[no-untyped-call]
+
+    def forget(self, uri: str) -> None:
+        """Follow the document no longer: its diagnostics cleared, the documents importing it checked
+        again (its file is read now)."""
+        self.text_document_publish_diagnostics(types.PublishDiagnosticsParams(uri=uri, diagnostics=[]))
+        for importer in self.documents.forget(uri):
+            self.checks.request(importer.uri)
+
+    def open_document(self, uri: str) -> Document:
+        """An open document's text, never a file read for a URI the editor has not opened (pygls's
+        `get_text_document` reads one: `file:///dev/zero` grew without end)."""
+        found = self.documents.documents.get(uri)
+        if found is None:
+            raise JsonRpcInvalidParams(f"{uri} is not open")
+        return found
 
     async def analysis(self, uri: str) -> Analysis:
         found = await self.checks.analysis(uri)
@@ -72,10 +154,7 @@ def make_server() -> RdisServer:
 
     @server.feature(types.TEXT_DOCUMENT_DID_CLOSE)
     def did_close(ls: RdisServer, params: types.DidCloseTextDocumentParams) -> None:
-        uri = params.text_document.uri
-        ls.text_document_publish_diagnostics(types.PublishDiagnosticsParams(uri=uri, diagnostics=[]))
-        for importer in ls.documents.forget(uri):
-            ls.checks.request(importer.uri)
+        ls.forget(params.text_document.uri)
 
     @server.feature(types.TEXT_DOCUMENT_CODE_ACTION,
                     types.CodeActionOptions(code_action_kinds=[types.CodeActionKind.QuickFix]))
@@ -131,13 +210,13 @@ def make_server() -> RdisServer:
 
     @server.feature(types.TEXT_DOCUMENT_FORMATTING)
     def format_document(ls: RdisServer, params: types.DocumentFormattingParams) -> list[types.TextEdit]:
-        document = ls.workspace.get_text_document(params.text_document.uri)
-        return formatting.format_document(positions.path_of(document.uri), document.source)
+        document = ls.open_document(params.text_document.uri)
+        return formatting.format_document(document.path, document.text)
 
     @server.feature(types.TEXT_DOCUMENT_RANGE_FORMATTING)
     def format_range(ls: RdisServer, params: types.DocumentRangeFormattingParams) -> list[types.TextEdit]:
-        document = ls.workspace.get_text_document(params.text_document.uri)
-        return formatting.format_range(positions.path_of(document.uri), document.source, params.range)
+        document = ls.open_document(params.text_document.uri)
+        return formatting.format_range(document.path, document.text, params.range)
 
     return server
 

@@ -1,11 +1,14 @@
 """A linear Kalman filter, the estimate a `filter kalman` gives an output or state variable:
 state x and covariance P, moved by the transition F with process noise Q, corrected by a
 measurement z through H with noise R. The update keeps P in Joseph's form,
-P = (I - KH) P (I - KH)' + K R K', which stays symmetric for any gain.
+P = (I - KH) P (I - KH)' + K R K', which stays symmetric for any gain. An update whose state
+or covariance would not be finite (a NaN or infinite reading, a jump past a float) is not made:
+one bad reply from a device would otherwise make every later estimate NaN.
 """
 
 from __future__ import annotations
 
+import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 
@@ -54,7 +57,8 @@ class KalmanFilter:
         self.covariance = matrix_sum(moved, self.process)
 
     def update(self, measured: Sequence[float]) -> None:
-        """Corrects the state by one measurement (as many values as the measurement's rows)."""
+        """Corrects the state by one measurement (as many values as the measurement's rows), unless
+        the correction is not finite."""
         z = as_column(measured)
         if len(z) != len(self.measurement):
             raise ValueError(f"a Kalman filter measures {len(self.measurement)} values, not {len(z)}")
@@ -62,10 +66,12 @@ class KalmanFilter:
         residual = matrix_sum(z, matrix_product(h, self.state), -1.0)
         spread = matrix_product(self.covariance, matrix_transpose(h))
         gain = matrix_product(spread, matrix_inverse(matrix_sum(matrix_product(h, spread), self.noise)))
-        self.state = matrix_sum(self.state, matrix_product(gain, residual))
+        state = matrix_sum(self.state, matrix_product(gain, residual))
         kept = matrix_sum(matrix_identity(len(self.state)), matrix_product(gain, h), -1.0)
-        self.covariance = matrix_sum(matrix_product(matrix_product(kept, self.covariance), matrix_transpose(kept)),
+        covariance = matrix_sum(matrix_product(matrix_product(kept, self.covariance), matrix_transpose(kept)),
                                 matrix_product(matrix_product(gain, self.noise), matrix_transpose(gain)))
+        if all(math.isfinite(value) for row in (*state, *covariance) for value in row):
+            self.state, self.covariance = state, covariance
 
     def step(self, measured: Sequence[float]) -> tuple[float, ...]:
         """Predicts, then updates by `measured`: the estimate of what is measured (H x)."""

@@ -4,6 +4,7 @@ model over a few hundred random measurements, a 1-D model, and small random matr
 
 from __future__ import annotations
 
+import math
 import random
 
 import numpy
@@ -115,3 +116,17 @@ def test_inverse_undoes_a_product() -> None:
     given_matrix = ((4.0, 7.0, 2.0), (3.0, 6.0, 1.0), (2.0, 5.0, 3.0))
     assert numpy.allclose(numpy.array(matrices.matrix_product(given_matrix, matrices.matrix_inverse(given_matrix))),
                           numpy.eye(3), rtol=0, atol=1e-12)
+
+
+def test_a_reading_that_is_not_finite_leaves_the_filter_as_a_prediction_would() -> None:
+    matrices_given = ([0.0], [[1.0]], [[1.0]], [[1e-4]], [[1.0]], [[0.01]])
+    skipped, never = KalmanFilter(*matrices_given), KalmanFilter(*matrices_given)
+    for bad in (float("nan"), float("inf"), -float("inf")):  # a reply's float as the device sent it
+        skipped.step((bad,))
+        never.predict()
+    assert skipped.step((1.0,)) == never.step((1.0,))
+    assert (skipped.state, skipped.covariance) == (never.state, never.covariance)
+    jumped = KalmanFilter(*matrices_given)
+    jumped.step((1e308,))
+    jumped.step((-1e308,))  # a residual past a float: -inf
+    assert math.isfinite(jumped.state[0][0]) and math.isfinite(jumped.step((0.5,))[0])

@@ -839,7 +839,8 @@ class KalmanFilter:
         self.covariance = matrix_sum(moved, self.process)
 
     def update(self, measured: Sequence[float]) -> None:
-        """Corrects the state by one measurement (as many values as the measurement's rows)."""
+        """Corrects the state by one measurement (as many values as the measurement's rows), unless
+        the correction is not finite."""
         z = as_column(measured)
         if len(z) != len(self.measurement):
             raise ValueError(f"a Kalman filter measures {len(self.measurement)} values, not {len(z)}")
@@ -847,10 +848,12 @@ class KalmanFilter:
         residual = matrix_sum(z, matrix_product(h, self.state), -1.0)
         spread = matrix_product(self.covariance, matrix_transpose(h))
         gain = matrix_product(spread, matrix_inverse(matrix_sum(matrix_product(h, spread), self.noise)))
-        self.state = matrix_sum(self.state, matrix_product(gain, residual))
+        state = matrix_sum(self.state, matrix_product(gain, residual))
         kept = matrix_sum(matrix_identity(len(self.state)), matrix_product(gain, h), -1.0)
-        self.covariance = matrix_sum(matrix_product(matrix_product(kept, self.covariance), matrix_transpose(kept)),
+        covariance = matrix_sum(matrix_product(matrix_product(kept, self.covariance), matrix_transpose(kept)),
                                 matrix_product(matrix_product(gain, self.noise), matrix_transpose(gain)))
+        if all(math.isfinite(value) for row in (*state, *covariance) for value in row):
+            self.state, self.covariance = state, covariance
 
     def step(self, measured: Sequence[float]) -> tuple[float, ...]:
         """Predicts, then updates by `measured`: the estimate of what is measured (H x)."""
