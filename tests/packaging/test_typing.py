@@ -13,6 +13,10 @@ import pytest
 
 ROOT = Path(__file__).resolve().parents[2]
 
+# One test but the suite's longest on a fresh checkout (mypy's cache is cold): started before the other
+# files (tests/conftest.py), so that it does not run alone at the end.
+pytestmark = pytest.mark.long
+
 
 def test_mypy_strict_finds_nothing_in_rdisc(request: pytest.FixtureRequest) -> None:
     cache = request.config.cache.mkdir("mypy-rdisc") if request.config.cache is not None else ROOT / ".mypy_cache"
