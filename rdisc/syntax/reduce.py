@@ -199,8 +199,9 @@ _METHODS: dict[str, Callable[..., Any]] = {name: value for name, value in vars(R
 def _step(rule: Rule) -> tuple[Any, ...]:
     """What the loop reads of a rule that is not a unit (`UNITS`), in one tuple: (origin, size,
     keep, nones after, the kept children's indices where it keeps them without placeholders or
-    splicing (else None), single, spliced, the Builder's method or None, and those indices again
-    where the rule is simply the method called with those children (else None))."""
+    splicing (else None), single, spliced, the Builder's method or None, those indices again
+    where the rule is simply the method called with those children (else None), and whether the
+    method reads only the text of a token child (Rules.TEXT_ONLY))."""
     origin, size, keep, nones_after, single, name, spliced, _ = rule
     picked = None
     if keep is None:
@@ -211,7 +212,7 @@ def _step(rule: Rule) -> tuple[Any, ...]:
     direct = None
     if method is not None and picked is not None and not (single and len(picked) == 1):
         direct = picked
-    return (origin, size, keep, nones_after, picked, single, spliced, method, direct)
+    return (origin, size, keep, nones_after, picked, single, spliced, method, direct, name in Rules.TEXT_ONLY)
 
 
 STEPS = tuple(_step(rule) for rule in tables.RULES)
@@ -305,7 +306,7 @@ def _run(text: str, start: str, rules: Rules, most_depth: int) -> Any:
                 if end and state == end_state:
                     return stack[-1][0]
                 continue
-            origin, size, keep, nones_after, picked, single, spliced, method, direct = steps[~action]
+            origin, size, keep, nones_after, picked, single, spliced, method, direct, text_only = steps[~action]
             if size == 1:
                 entry = stack.pop()
                 del states[-1]
@@ -315,7 +316,7 @@ def _run(text: str, start: str, rules: Rules, most_depth: int) -> Any:
                         raise Retry
                     state = actions[states[-1]][origin]
                     push_state(state)
-                    child = entry[0] if entry[2] else _token(entry)
+                    child = entry[0] if entry[2] or text_only else _token(entry)
                     push((method(rules, _EMPTY if span is None else span, [child]), span, True, depth + 1))
                     if end and state == end_state:
                         return stack[-1][0]
