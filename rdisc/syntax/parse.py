@@ -56,6 +56,9 @@ DECL_KEYWORDS = (
     "actuator",
 )
 DECL_START = re.compile(r"^(?:{})\b".format("|".join(DECL_KEYWORDS)), re.MULTILINE)
+# The same starts after the first line, found from each line break (a search for a pattern that begins
+# with `^` tries every character of the text; one that begins with `\n` skips to the next).
+_LATER_DECL_START = re.compile(r"\n(?:{})\b".format("|".join(DECL_KEYWORDS)))
 _DOC_RUN = re.compile(r"(?:^[ \t]*///[^\n]*\n?)+", re.MULTILINE)
 _DOC_LINE = re.compile(r"^[ \t]*/// ?([^\n]*)$", re.MULTILINE)
 _BLANK_OR_COMMENT = re.compile(r"(?:\s+|#[^\n]*)*")
@@ -251,9 +254,8 @@ def _too_long(path: str, chunk: str, start: int) -> tuple[Span, str] | None:
 def declaration_bounds(text: str) -> list[tuple[int, int]]:
     """Where `parse` cuts `text` into top-level declarations: at each declaration keyword that
     starts a line (the formatter and the editor cut it the same way)."""
-    starts = [m.start() for m in DECL_START.finditer(text)]
-    if not starts or starts[0] != 0:
-        starts.insert(0, 0)
+    starts = [m.start() + 1 for m in _LATER_DECL_START.finditer(text)]
+    starts.insert(0, 0)  # a declaration at 0 starts the first piece, as does anything else there
     ends = starts[1:] + [len(text)]
     return list(zip(starts, ends))
 
