@@ -22,6 +22,8 @@ from rdisc.syntax import ast
 from rdisc.syntax.build import MAX_EXPR_DEPTH, Builder, TooDeep
 
 if TYPE_CHECKING:
+    from types import ModuleType
+
     import lark
 
 MAX_FILE_CHARS = 8 * 1024 * 1024
@@ -120,14 +122,22 @@ def pieces(text: str) -> tuple[list[tuple[int, int]], dict[int, str]]:
     return declaration_bounds(text), _doc_comments(text)
 
 
+# rdisc.syntax.reduce, the fast loop, once imported (when first used: what only cuts a file into its
+# declarations, the formatter and the editor's completion, does not load the parser's tables).
+_FAST_LOOP: list[ModuleType] = []
+
+
 def parse_declaration(text: str, start: int, end: int, builder: Builder, decls: list[ast.Decl],
                       damaged: list[ast.Damaged], report: bool, last: bool) -> bool:
     """Parse the top-level declaration `text[start:end]` (one piece `parse` cut the file into)
     with the file's builder, adding what it gives to `decls` and `damaged`; whether it had a
     syntax error (reported if `report`). What it gives depends on the piece's text, where it
     starts and the doc comment before it only (rdisc.syntax.incremental reuses it)."""
-    from rdisc.syntax.reduce import Retry, parse_built
+    if not _FAST_LOOP:  # imported once, not at each declaration (a `from ... import` each time was 1% of a check)
+        from rdisc.syntax import reduce
 
+        _FAST_LOOP.append(reduce)
+    loop = _FAST_LOOP[0]
     path, diagnostics = builder.path, builder.diagnostics
     chunk = text[start:end]
     too_long = _too_long(path, chunk, start)
@@ -136,9 +146,9 @@ def parse_declaration(text: str, start: int, end: int, builder: Builder, decls: 
         damaged.extend(_damaged(path, chunk, start))
         return False
     try:  # built as it is parsed, where that is clean; else Lark's tree, built after (rdisc.syntax.reduce)
-        decls.extend(parse_built(chunk, builder, start, MAX_TREE_DEPTH))
+        decls.extend(loop.parse_built(chunk, builder, start, MAX_TREE_DEPTH))
         return False
-    except Retry:
+    except loop.Retry:
         pass
     import lark  # only for a declaration the loop leaves: start-up time matters for `rdisc check`
 
