@@ -57,10 +57,20 @@ DECL_KEYWORDS = (
     "transmission",
     "actuator",
 )
-DECL_START = re.compile(r"^(?:{})\b".format("|".join(DECL_KEYWORDS)), re.MULTILINE)
+# A declaration keyword at the start of a line: DECL_START, compiled when first asked for (`__getattr__`:
+# the editor's completion reads it, a check does not).
+_DECL_START = r"^(?:{})\b".format("|".join(DECL_KEYWORDS))
+if TYPE_CHECKING:
+    DECL_START: re.Pattern[str]
 # The same starts after the first line, found from each line break (a search for a pattern that begins
 # with `^` tries every character of the text; one that begins with `\n` skips to the next).
 _LATER_DECL_START = re.compile(r"\n(?:{})\b".format("|".join(DECL_KEYWORDS)))
+
+
+def __getattr__(name: str) -> re.Pattern[str]:
+    if name == "DECL_START":
+        return patterns.pattern(_DECL_START, re.MULTILINE)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 _DOC_RUN = re.compile(r"(?:^[ \t]*///[^\n]*\n?)+", re.MULTILINE)
 _DOC_LINE = re.compile(r"^[ \t]*/// ?([^\n]*)$", re.MULTILINE)
 _BLANK_OR_COMMENT = re.compile(r"(?:\s+|#[^\n]*)*")
