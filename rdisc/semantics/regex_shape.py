@@ -105,6 +105,11 @@ class _Walk:
         """Walk parts in order. `live`: the character sets and spreads of earlier variable parts
         that could still take characters from the part at hand; returned as they are after."""
         for item in items:
+            if item[0] is c.LITERAL:  # the commonest part, a fence: what `part` would make of it, made directly
+                if live:
+                    cased = _cased(item[1])
+                    live = [(chars, spread) for chars, spread in live if chars & cased]
+                continue
             shape, live = self.part(item, live, depth)
             if shape is None:
                 continue

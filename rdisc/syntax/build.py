@@ -267,6 +267,11 @@ class Rules:
     and its children): Lark's Transformer walks a tree with them (`transformer_class`), and the
     fast loop (rdisc.syntax.reduce) calls them as it reduces, without Lark."""
 
+    # The methods that read only the text of their one child where it is a token (`str(c[0])`), never
+    # its positions: the fast loop gives them the text, without making a Token.
+    TEXT_ONLY = frozenset({"name", "int_lit", "float_lit", "bool_lit", "robot_key", "hook_event", "encoding_kind",
+                           "decoding_kind", "kind_word", "time_unit", "check_word", "hex_word", "actuator_key"})
+
     def __init__(self, builder: Builder) -> None:
         self.b = builder
 

@@ -22,6 +22,8 @@ from rdisc.syntax import ast
 from rdisc.syntax.build import MAX_EXPR_DEPTH, Builder, TooDeep
 
 if TYPE_CHECKING:
+    from types import ModuleType
+
     import lark
 
 MAX_FILE_CHARS = 8 * 1024 * 1024
@@ -55,7 +57,20 @@ DECL_KEYWORDS = (
     "transmission",
     "actuator",
 )
-DECL_START = re.compile(r"^(?:{})\b".format("|".join(DECL_KEYWORDS)), re.MULTILINE)
+# A declaration keyword at the start of a line: DECL_START, compiled when first asked for (`__getattr__`:
+# the editor's completion reads it, a check does not).
+_DECL_START = r"^(?:{})\b".format("|".join(DECL_KEYWORDS))
+if TYPE_CHECKING:
+    DECL_START: re.Pattern[str]
+# The same starts after the first line, found from each line break (a search for a pattern that begins
+# with `^` tries every character of the text; one that begins with `\n` skips to the next).
+_LATER_DECL_START = re.compile(r"\n(?:{})\b".format("|".join(DECL_KEYWORDS)))
+
+
+def __getattr__(name: str) -> re.Pattern[str]:
+    if name == "DECL_START":
+        return patterns.pattern(_DECL_START, re.MULTILINE)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 _DOC_RUN = re.compile(r"(?:^[ \t]*///[^\n]*\n?)+", re.MULTILINE)
 _DOC_LINE = re.compile(r"^[ \t]*/// ?([^\n]*)$", re.MULTILINE)
 _BLANK_OR_COMMENT = re.compile(r"(?:\s+|#[^\n]*)*")
@@ -117,14 +132,22 @@ def pieces(text: str) -> tuple[list[tuple[int, int]], dict[int, str]]:
     return declaration_bounds(text), _doc_comments(text)
 
 
+# rdisc.syntax.reduce, the fast loop, once imported (when first used: what only cuts a file into its
+# declarations, the formatter and the editor's completion, does not load the parser's tables).
+_FAST_LOOP: list[ModuleType] = []
+
+
 def parse_declaration(text: str, start: int, end: int, builder: Builder, decls: list[ast.Decl],
                       damaged: list[ast.Damaged], report: bool, last: bool) -> bool:
     """Parse the top-level declaration `text[start:end]` (one piece `parse` cut the file into)
     with the file's builder, adding what it gives to `decls` and `damaged`; whether it had a
     syntax error (reported if `report`). What it gives depends on the piece's text, where it
     starts and the doc comment before it only (rdisc.syntax.incremental reuses it)."""
-    from rdisc.syntax.reduce import Retry, parse_built
+    if not _FAST_LOOP:  # imported once, not at each declaration (a `from ... import` each time was 1% of a check)
+        from rdisc.syntax import reduce
 
+        _FAST_LOOP.append(reduce)
+    loop = _FAST_LOOP[0]
     path, diagnostics = builder.path, builder.diagnostics
     chunk = text[start:end]
     too_long = _too_long(path, chunk, start)
@@ -133,9 +156,9 @@ def parse_declaration(text: str, start: int, end: int, builder: Builder, decls: 
         damaged.extend(_damaged(path, chunk, start))
         return False
     try:  # built as it is parsed, where that is clean; else Lark's tree, built after (rdisc.syntax.reduce)
-        decls.extend(parse_built(chunk, builder, start, MAX_TREE_DEPTH))
+        decls.extend(loop.parse_built(chunk, builder, start, MAX_TREE_DEPTH))
         return False
-    except Retry:
+    except loop.Retry:
         pass
     import lark  # only for a declaration the loop leaves: start-up time matters for `rdisc check`
 
@@ -251,9 +274,8 @@ def _too_long(path: str, chunk: str, start: int) -> tuple[Span, str] | None:
 def declaration_bounds(text: str) -> list[tuple[int, int]]:
     """Where `parse` cuts `text` into top-level declarations: at each declaration keyword that
     starts a line (the formatter and the editor cut it the same way)."""
-    starts = [m.start() for m in DECL_START.finditer(text)]
-    if not starts or starts[0] != 0:
-        starts.insert(0, 0)
+    starts = [m.start() + 1 for m in _LATER_DECL_START.finditer(text)]
+    starts.insert(0, 0)  # a declaration at 0 starts the first piece, as does anything else there
     ends = starts[1:] + [len(text)]
     return list(zip(starts, ends))
 

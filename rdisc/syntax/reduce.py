@@ -43,12 +43,22 @@ _EMPTY = _Empty()
 
 
 class Token(str):
-    """A token as the Builder reads it, Lark's Token made lighter: its text, its terminal, and
-    where it starts and ends in the chunk."""
+    """A token as the Builder reads it, Lark's Token made lighter: its text, and where it starts
+    and ends in the chunk."""
 
-    type: str
     start_pos: int
     end_pos: int
+
+
+def _token(entry: tuple[Any, tuple[int, int] | None, bool, int]) -> Token | None:
+    """The Token of a token's stack entry (None for the placeholder of an absent optional part),
+    made only when the Builder takes it: most tokens (keywords, punctuation) are filtered out, and
+    making one for each was a tenth of the loop."""
+    if entry[1] is None:
+        return None
+    token = Token(entry[0])
+    token.start_pos, token.end_pos = entry[1]
+    return token
 
 
 # One rule of tables.RULES: how its children become its value, as Lark's wrappers of the rule shape
@@ -189,8 +199,9 @@ _METHODS: dict[str, Callable[..., Any]] = {name: value for name, value in vars(R
 def _step(rule: Rule) -> tuple[Any, ...]:
     """What the loop reads of a rule that is not a unit (`UNITS`), in one tuple: (origin, size,
     keep, nones after, the kept children's indices where it keeps them without placeholders or
-    splicing (else None), single, spliced, the Builder's method or None, and those indices again
-    where the rule is simply the method called with those children (else None))."""
+    splicing (else None), single, spliced, the Builder's method or None, those indices again
+    where the rule is simply the method called with those children (else None), and whether the
+    method reads only the text of a token child (Rules.TEXT_ONLY))."""
     origin, size, keep, nones_after, single, name, spliced, _ = rule
     picked = None
     if keep is None:
@@ -201,7 +212,7 @@ def _step(rule: Rule) -> tuple[Any, ...]:
     direct = None
     if method is not None and picked is not None and not (single and len(picked) == 1):
         direct = picked
-    return (origin, size, keep, nones_after, picked, single, spliced, method, direct)
+    return (origin, size, keep, nones_after, picked, single, spliced, method, direct, name in Rules.TEXT_ONLY)
 
 
 STEPS = tuple(_step(rule) for rule in tables.RULES)
@@ -254,7 +265,8 @@ def _run(text: str, start: str, rules: Rules, most_depth: int) -> Any:
     state = tables.START[start]
     states = [state]
     # Per value on the stack: (the value, its span as its parent sees it (Lark's container
-    # positions) or None, whether Lark's value would be a Tree, its depth in Lark's tree).
+    # positions) or None, whether Lark's value would be a Tree (else it is a token's text, and the
+    # span its own), its depth in Lark's tree).
     stack: list[tuple[Any, tuple[int, int] | None, bool, int]] = []
     push, push_state = stack.append, states.append
     end = False
@@ -276,10 +288,9 @@ def _run(text: str, start: str, rules: Rules, most_depth: int) -> Any:
                     if own is None or own[0] in ignored:
                         raise Retry
                     kind, pos = own
-                token = Token(text[begin:pos])
+                token = text[begin:pos]  # a plain str on the stack until the Builder takes it (_token)
                 if kind == "NAME":
                     kind = keywords[state].get(token, kind)
-                token.type, token.start_pos, token.end_pos = kind, begin, pos
         while True:
             action = actions[state][kind]  # KeyError: a syntax error, Retry (build)
             if action >= 0:  # shift
@@ -295,7 +306,7 @@ def _run(text: str, start: str, rules: Rules, most_depth: int) -> Any:
                 if end and state == end_state:
                     return stack[-1][0]
                 continue
-            origin, size, keep, nones_after, picked, single, spliced, method, direct = steps[~action]
+            origin, size, keep, nones_after, picked, single, spliced, method, direct, text_only = steps[~action]
             if size == 1:
                 entry = stack.pop()
                 del states[-1]
@@ -305,7 +316,8 @@ def _run(text: str, start: str, rules: Rules, most_depth: int) -> Any:
                         raise Retry
                     state = actions[states[-1]][origin]
                     push_state(state)
-                    push((method(rules, _EMPTY if span is None else span, [entry[0]]), span, True, depth + 1))
+                    child = entry[0] if entry[2] or text_only else _token(entry)
+                    push((method(rules, _EMPTY if span is None else span, [child]), span, True, depth + 1))
                     if end and state == end_state:
                         return stack[-1][0]
                     continue
@@ -330,7 +342,8 @@ def _run(text: str, start: str, rules: Rules, most_depth: int) -> Any:
                 depth += 1
                 if depth > most_depth:
                     raise Retry
-                value = method(rules, _EMPTY if span is None else span, [entries[i][0] for i in direct])
+                value = method(rules, _EMPTY if span is None else span,
+                               [entry[0] if entry[2] else _token(entry) for entry in map(entries.__getitem__, direct)])
                 tree = True
             else:
                 if keep is not None and picked is not None:
@@ -351,7 +364,8 @@ def _run(text: str, start: str, rules: Rules, most_depth: int) -> Any:
                     depth += 1
                     if depth > most_depth:
                         raise Retry
-                    value = method(rules, _EMPTY if span is None else span, [entry[0] for entry in entries])
+                    value = method(rules, _EMPTY if span is None else span,
+                                   [entry[0] if entry[2] else _token(entry) for entry in entries])
                     tree = True
             state = actions[states[-1]][origin]
             push_state(state)

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import pytest
 
 from rdisc.diagnostics import Diagnostics
@@ -11,6 +13,8 @@ from rdisc.syntax import ast
 from rdisc.syntax import parse as parse_module
 from rdisc.syntax.build import MAX_EXPR_DEPTH
 from rdisc.syntax.parse import parse
+
+EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
 
 def parsed(text: str) -> tuple[ast.Module, Diagnostics]:
@@ -210,3 +214,15 @@ def test_patterns_only_some_descriptions_need_are_compiled_when_first_needed() -
         compile_text("odd.rdis", 'robot r { author "a\\tb" }\nstate b: bytes = b"\\x01"\nstate s: int = \n')
     # Escapes, bytes, and for the damaged `s` its name and a keyword read as a name (Lark's recovery): once each.
     assert patterns.pattern.cache_info().currsize == 4
+
+
+def test_declarations_are_cut_at_each_keyword_that_starts_a_line() -> None:
+    """`declaration_bounds` cuts where DECL_START (the editor's pattern) finds a keyword at a line's start,
+    and at 0 whatever is there."""
+    from rdisc.syntax.parse import DECL_START, declaration_bounds
+
+    texts = ["", "state a: int = 0", "\n\nstate a: int = 0\n", "# c\nstate a: int\n state b\nstates c\nprimitive\n",
+             "robot r {}\r\nconst C = 1\n\n\nenum E { A }\ninput", *(p.read_text(encoding="utf-8") for p in sorted(EXAMPLES.glob("*.rdis")))]
+    for text in texts:
+        starts = sorted({0, *(m.start() for m in DECL_START.finditer(text))})
+        assert declaration_bounds(text) == list(zip(starts, [*starts[1:], len(text)]))

@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import re
 from pathlib import Path
-from typing import Any
+from typing import Any, Self
 
 import pytest
 
@@ -256,3 +256,21 @@ def test_a_state_s_lexer_asked_often_compiles_its_alternation_once(monkeypatch: 
     found = {lexer.own("adapter x", 0) for _ in range(reduce.ALONE * 3)}
     assert found == {("ADAPTER", 7)}
     assert [p for p in compiled if "|" in p and "(?P<ADAPTER>" in p] == [_alternation(lexer).pattern]
+
+
+def test_the_loop_makes_a_token_only_where_the_builder_reads_its_place(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Keywords and punctuation are filtered out, and a name, number or word kept for its text alone
+    (Rules.TEXT_ONLY) is given as its text: a Token (its text and place) is made only for the rest."""
+    made: list[str] = []
+
+    class Counted(reduce.Token):
+        def __new__(cls, text: str) -> Self:
+            made.append(text)
+            return super().__new__(cls, text)
+
+    monkeypatch.setattr(reduce, "Token", Counted)
+    text = 'primitive move(speed: int) on link pack ">Bh" (0x89, speed * 2 + 1) timeout 20 ms\n'
+    module = parse("t.rdis", text, Diagnostics())
+    assert not module.damaged and len(module.decls) == 1
+    # The names the Builder makes Idents of (with their spans), the string it decodes, the operators.
+    assert sorted(made) == sorted(["move", "speed", "int", "link", '">Bh"', "*", "+"])

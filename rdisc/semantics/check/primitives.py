@@ -3,6 +3,8 @@
 
 from __future__ import annotations
 
+from typing import Any, TypeVar
+
 from rdisc.diagnostics import Label
 from rdisc.semantics import model as m
 from rdisc.semantics.check.pieces import MAX_TERMINATOR
@@ -15,6 +17,15 @@ from rdisc.semantics.operators import shown
 from rdisc.semantics.types import Env, Names, describe
 from rdisc.syntax import ast
 
+_Clause = TypeVar("_Clause")
+
+
+def _of(clauses: dict[type, list[Any]], kind: type[_Clause]) -> list[_Clause]:
+    """The clauses of one class, of a declaration's clauses grouped by their class."""
+    found: list[_Clause] = clauses.get(kind, [])
+    return found
+
+
 MAX_RETRIES = 10  # resends of one request: each may wait a whole timeout
 MAX_BREAK_MS = 10_000  # a serial break held longer is a line left low, not a break
 
@@ -24,16 +35,21 @@ class Primitives(Replies):
 
     def primitive(self, decl: ast.PrimitiveDecl) -> m.Primitive:
         name = decl.name
+        # Its clauses by their class (each AST class is final: no clause is of a subclass), found
+        # once where each kind's list was a pass over them (a tenth of checking a primitive).
+        clauses: dict[type, list[Any]] = {}
+        for clause in decl.clauses:
+            clauses.setdefault(type(clause), []).append(clause)
         params = self.params(decl.params, "primitive")
-        on = self.once([c for c in decl.clauses if isinstance(c, ast.On)], "`on`", name)
+        on = self.once(_of(clauses, ast.On), "`on`", name)
         if on is None:
             self.d.report("E202", name.span, f"primitive `{name.text}` has no connection",
                           help=f"add `on CONNECTION` after `{name.text}(...)`")
-        encodings = [c for c in decl.clauses if isinstance(c, ast.Encoding)]
-        decodings = [c for c in decl.clauses if isinstance(c, ast.Decoding)]
-        action_blocks = [c for c in decl.clauses if isinstance(c, ast.Actions)]
-        lines_clause = self.once([c for c in decl.clauses if isinstance(c, ast.Lines)], "`lines`", name)
-        replied = any(isinstance(c, ast.Decoding | ast.Framed | ast.ReplyTable | ast.ReplyList) for c in decl.clauses)
+        encodings = _of(clauses, ast.Encoding)
+        decodings = _of(clauses, ast.Decoding)
+        action_blocks = _of(clauses, ast.Actions)
+        lines_clause = self.once(_of(clauses, ast.Lines), "`lines`", name)
+        replied = any(kind in clauses for kind in (ast.Decoding, ast.Framed, ast.ReplyTable, ast.ReplyList))
         if not encodings and (lines_clause is None or replied):
             self.d.report("E202", name.span, f"primitive `{name.text}` has neither `pack` nor `format`",
                           help='say how the request is written: `pack ">Bhh" (...)` or `format "D,{},{}\\n" (...)`'
@@ -59,14 +75,14 @@ class Primitives(Replies):
         reply: tuple[m.AnyType, ...] | None = ()
         if decodings:
             decoding, reply = self.decoding(decodings[0])
-        records_clause = self.once([c for c in decl.clauses if isinstance(c, ast.Records)], "`reply each until`", name)
+        records_clause = self.once(_of(clauses, ast.Records), "`reply each until`", name)
         if isinstance(records_clause, ast.Records):  # each record's post-actions read its position as `index`
             self.not_a_param(decl, m.INDEX, "the position of a record of the reply")
             scope = {**scope, m.INDEX: (Scope.PARAM, Type.INT)}
-        replies_clause = self.once([c for c in decl.clauses if isinstance(c, ast.Replies)], "`replies`", name)
+        replies_clause = self.once(_of(clauses, ast.Replies), "`replies`", name)
         count, reply_frames = self.reply_count(replies_clause, decl, reply, decoding, env, encoding) \
             if isinstance(replies_clause, ast.Replies) else (0, ())
-        list_clause = self.once([c for c in decl.clauses if isinstance(c, ast.ReplyList)], "`replies { }`", name)
+        list_clause = self.once(_of(clauses, ast.ReplyList), "`replies { }`", name)
         listed = self.listed_replies(list_clause, decl, scope, env, encoding) \
             if isinstance(list_clause, ast.ReplyList) else ()
         actions: tuple[m.PostAction, ...] = ()
@@ -86,12 +102,12 @@ class Primitives(Replies):
             actions = self.actions(action_blocks[0], action_env, {p.name for p in params})
         expect = self.expect(decl, scope, reply, bool(decodings))
         connection = m.ConnectionRef(on.connection.text) if isinstance(on, ast.On) else m.ConnectionRef("")
-        framed = self.once([c for c in decl.clauses if isinstance(c, ast.Framed)], "`frame`", name)
+        framed = self.once(_of(clauses, ast.Framed), "`frame`", name)
         # Read without a frame: none, or one whose reply is empty (a frame in error: neither)
         unframed = framed is None or (isinstance(framed, ast.Framed) and framed.frame.text in self.frames
                                       and not self.frames[framed.frame.text].reply)
         lines = self.modem_lines(lines_clause, env, name, connection) if isinstance(lines_clause, ast.Lines) else ()
-        table_clause = self.once([c for c in decl.clauses if isinstance(c, ast.ReplyTable)], "a reply table", name)
+        table_clause = self.once(_of(clauses, ast.ReplyTable), "a reply table", name)
         table = None
         if isinstance(table_clause, ast.ReplyTable):
             if decodings or action_blocks:
@@ -119,7 +135,7 @@ class Primitives(Replies):
                           "must say where the reply ends",
                           help="give the frame's reply a `length` field or constant bytes after its payload, "
                           "or read the reply without a frame")
-        skip = self.once([c for c in decl.clauses if isinstance(c, ast.SkipUnmatched)], "`skip unmatched`", name)
+        skip = self.once(_of(clauses, ast.SkipUnmatched), "`skip unmatched`", name)
         framed_all = bool(listed) and all(r.frame is not None or (frame and self.frames[frame.frame].reply)
                                           for r in listed)
         if skip is not None and not (tagged and unframed) and not framed_all and (
@@ -127,7 +143,7 @@ class Primitives(Replies):
             self.d.report("E504", skip.span, f"`skip unmatched` reads past frames that do not decode, but "
                           f"`{name.text}` does not decode a framed reply",
                           help="give it a frame with a reply, and `unpack` or `regex`")
-        timeout_clause = self.once([c for c in decl.clauses if isinstance(c, ast.ReplyTimeout)], "`timeout`", name)
+        timeout_clause = self.once(_of(clauses, ast.ReplyTimeout), "`timeout`", name)
         timeout = None
         if isinstance(timeout_clause, ast.ReplyTimeout):
             timeout = self.duration(timeout_clause.duration, "a timeout")
@@ -136,14 +152,14 @@ class Primitives(Replies):
                 timeout = None
             elif not replies and not listed and not (frame and self.frames[frame.frame].reply):
                 self.d.report("E204", timeout_clause.span, f"`{name.text}` reads no reply, so it has no timeout")
-        retry = self.once([c for c in decl.clauses if isinstance(c, ast.Retry)], "`retry`", name)
+        retry = self.once(_of(clauses, ast.Retry), "`retry`", name)
         replied = bool(replies or listed or (frame and self.frames[frame.frame].reply))
         writes = encoding is not None and (frame is not None or encoding != m.Format(""))  # `format "" ()` listens
         retries = self.retries(retry, name, writes, replied) if isinstance(retry, ast.Retry) else 0
         if expect is not None and table is not None:
             self.d.report("E203", expect.span, f"primitive `{name.text}` has a reply table and also `expect`",
                           help="`expect` checks the reply of a primitive with one decoding")
-        error_clause = self.once([c for c in decl.clauses if isinstance(c, ast.ErrorReply)], "`error`", name)
+        error_clause = self.once(_of(clauses, ast.ErrorReply), "`error`", name)
         error = None
         if isinstance(error_clause, ast.ErrorReply):
             one = table is None and not count and not listed and records is None
