@@ -7,9 +7,6 @@ never a robot_description at other values than the device's. The device is pyser
 from __future__ import annotations
 
 import importlib.util
-import json
-import os
-import signal
 import subprocess
 import sys
 from pathlib import Path
@@ -17,7 +14,7 @@ from pathlib import Path
 import pytest
 from conftest import run_rdisc
 
-from tests.ros2.loopback import LOOPBACK
+from tests.ros2.loopback import first_messages
 from tests.semantics.test_body_settings import DRIVE
 
 HERE = Path(__file__).resolve().parent
@@ -43,28 +40,10 @@ def test_robot_description_is_the_body_at_the_settings_given(rover: tuple[Path, 
     source, node_file = rover
     urdf = run_rdisc("emit-urdf", source, "--set", "TRACK=0.3")
     assert (urdf.returncode, urdf.stderr) == (0, "")
-    env = dict(os.environ, ROS_DOMAIN_ID=str(10 + (os.getpid() + 131) % 200), CYCLONEDDS_URI=LOOPBACK)
-    reader = subprocess.Popen([sys.executable, str(HERE / "reader.py"), "jazzy",
-                               "robot_description=std_msgs/msg/String"], env=env, stdin=subprocess.PIPE,
-                              stdout=subprocess.PIPE, text=True)
-    node = None
-    try:
-        assert reader.stdout is not None
-        assert json.loads(reader.stdout.readline()) == {"ready": True}
-        node = subprocess.Popen([sys.executable, str(node_file), "--ros-args", "-p", "port:=loop://", "-p",
-                                 "TRACK:=0.3"], env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-        event = json.loads(reader.stdout.readline())
-    finally:
-        if node is not None:
-            node.send_signal(signal.SIGINT)
-            _, stderr = node.communicate(timeout=15)
-            assert node.returncode == 130, stderr
-        assert reader.stdin is not None
-        reader.stdin.close()
-        reader.wait(timeout=15)
-    assert event["topic"] == "robot_description"
+    cdr = first_messages(node_file, ["port:=loop://", "TRACK:=0.3"], {"robot_description": "std_msgs/msg/String"},
+                         seed=131)["robot_description"]
     store = typesys.get_typestore(typesys.Stores.ROS2_JAZZY)
-    published = store.deserialize_cdr(bytes.fromhex(event["cdr"]), "std_msgs/msg/String").data
+    published = store.deserialize_cdr(bytes.fromhex(cdr), "std_msgs/msg/String").data
     assert published == urdf.stdout
     assert '<origin xyz="0 0.15 0.036" rpy="0 0 0" />' in published
 

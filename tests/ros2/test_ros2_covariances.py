@@ -8,20 +8,12 @@ element is 0, exactly. The device is pyserial's `loop://`: each request comes ba
 
 from __future__ import annotations
 
-import json
-import os
-import queue
-import signal
-import subprocess
-import sys
-import threading
 from pathlib import Path
-from typing import Any
 
 import pytest
 from conftest import run_rdisc
 
-from tests.ros2.loopback import LOOPBACK
+from tests.ros2.loopback import first_messages
 
 pytest.importorskip("cyclonedds")
 typesys = pytest.importorskip("rosbags.typesys")
@@ -57,40 +49,13 @@ def _diagonal(side: int, **at: float) -> list[float]:
     return rows
 
 
-def _read(process: subprocess.Popen[str], lines: queue.Queue[dict[str, Any]]) -> None:
-    assert process.stdout is not None
-    for line in process.stdout:
-        lines.put(json.loads(line))
-
-
 def test_the_declared_covariances_arrive_over_dds(tmp_path: Path) -> None:
     source, node_file = tmp_path / "wheels.rdis", tmp_path / "wheels_node.py"
     source.write_text(DESCRIPTION, encoding="utf-8")
     done = run_rdisc("emit-ros2", source, "-o", node_file)
     assert done.returncode == 0, done.stderr
-    env = dict(os.environ, ROS_DOMAIN_ID=str(10 + (os.getpid() + 97) % 200), CYCLONEDDS_URI=LOOPBACK)
-    reader = subprocess.Popen([sys.executable, str(HERE / "reader.py"), "jazzy", "odom=nav_msgs/msg/Odometry",
-                               "imu=sensor_msgs/msg/Imu"], env=env, stdin=subprocess.PIPE, stdout=subprocess.PIPE,
-                              text=True)
-    lines: queue.Queue[dict[str, Any]] = queue.Queue()
-    threading.Thread(target=_read, args=(reader, lines), daemon=True).start()
-    node = None
-    got: dict[str, str] = {}
-    try:
-        assert lines.get(timeout=30) == {"ready": True}
-        node = subprocess.Popen([sys.executable, str(node_file), "--ros-args", "-p", "port:=loop://"], env=env,
-                                stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-        while len(got) < 2:  # the first message of each topic whose values were read
-            event = lines.get(timeout=30)
-            got.setdefault(event["topic"], event["cdr"])
-    finally:
-        if node is not None:
-            node.send_signal(signal.SIGINT)
-            _, stderr = node.communicate(timeout=15)
-            assert node.returncode == 130, stderr
-        assert reader.stdin is not None
-        reader.stdin.close()
-        reader.wait(timeout=15)
+    got = first_messages(node_file, ["port:=loop://"],
+                         {"odom": "nav_msgs/msg/Odometry", "imu": "sensor_msgs/msg/Imu"}, seed=97)
     store = typesys.get_typestore(typesys.Stores.ROS2_JAZZY)
     odom = store.deserialize_cdr(bytes.fromhex(got["odom"]), "nav_msgs/msg/Odometry")
     assert (odom.pose.pose.position.x, odom.twist.twist.linear.x) == (1.5, 0.25)
