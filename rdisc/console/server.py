@@ -301,15 +301,16 @@ class Console:
         hooks = [c.terminate for c in self.robot.device.connections.values() if c.terminate is not None]
         if not hooks:
             return
-        if self.session is not None:  # told as the host's calls, so a replay writes the same stop
-            state = dict(self.robot.state)
-            for hook in hooks:
-                try:
-                    values = dict(zip((p.name for p in hook.interface.params), hook.args(state), strict=True))
-                except Exception:  # noqa: BLE001, S112 - the hook's own run reports it
-                    continue
-                self.session.call("interface", hook.interface.name, values)
-        self.robot.terminate()  # its errors are reported, as the robot's are
+        with engine.ports_held(self.robot):  # recorded in the wire's order: no tick between telling and writing
+            if self.session is not None:  # told as the host's calls, so a replay writes the same stop
+                state = dict(self.robot.state)
+                for hook in hooks:
+                    try:
+                        values = dict(zip((p.name for p in hook.interface.params), hook.args(state), strict=True))
+                    except Exception:  # noqa: BLE001, S112 - the hook's own run reports it
+                        continue
+                    self.session.call("interface", hook.interface.name, values)
+            self.robot.terminate()  # its errors are reported, as the robot's are
         names = ", ".join(f"{hook.interface.name}()" for hook in hooks)
         self.tell(f"rdisc console: the last page closed: {names} ran (the terminate hook); "
                   "the robot stays open for the next page")
