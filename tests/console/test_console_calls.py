@@ -12,6 +12,7 @@ import pytest
 from conftest import REPO, cli_env
 from engine.test_one_engine import ScriptedPort
 
+from rdisc import engine
 from rdisc.console.server import Console, origins_for
 from rdisc.runtime import load
 
@@ -236,5 +237,32 @@ def test_the_state_event_says_how_old_each_sensor_is(tmp_path) -> None:
         assert bytes(port.written) == b"\x07\x8b\x21\x8b\x21\x07\x8b\x22"
         assert [e for e in events if e["type"] == "state"][-1] == {
             "type": "state", "state": {"temperature": 34}, "sensor_ages": {"temperature": 0.0}}
+    finally:
+        robot.close()
+
+
+def test_the_stop_of_the_last_page_closing_is_told_while_the_console_holds_the_ports(tmp_path) -> None:
+    """When the last page closes, the terminate hook's call is told to the session and written
+    with every port held, as a page's calls are: a tick of a `threading single` connection cannot
+    write between the two, so a recording's order of runs is the wire's (what `rdisc replay` follows)."""
+    path = tmp_path / "t.rdis"
+    path.write_text(DESCRIPTION.replace("connection link: serial { baud 9600 }",
+                                        "connection link: serial { baud 9600\n    terminate go(0, False) }"))
+    port = ScriptedPort()
+    robot = load(path).connect(port, threads=False)
+    try:
+        session = engine.Session(robot)
+        console = Console(robot, "<p>page</p>", session=session)
+        held: list[tuple[str, bool]] = []
+        told = session.call
+
+        def call(kind: str, name: str, values: dict) -> None:
+            held.extend((connection, opened.lock._is_owned()) for connection, opened in robot._ports.items())
+            told(kind, name, values)
+
+        session.call = call  # type: ignore[method-assign]
+        console._last_page_closed()
+        assert held == [("link", True)]
+        assert bytes(port.written) == b"\x00\x01"
     finally:
         robot.close()
