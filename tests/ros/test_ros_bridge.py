@@ -581,12 +581,8 @@ def test_robot_description_is_the_body_at_the_settings_given(ros_env: dict[str, 
                             env=_with_rdisc(ros_env, str(REPO), sysconfig.get_paths()["purelib"]), stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                             text=True)
     try:
-        deadline = time.monotonic() + 30
-        while not parameters.hasParam("/test_ros_bridge", "/robot_description")[2]:
-            assert time.monotonic() < deadline and node.poll() is None, _stop(node)
-            time.sleep(0.05)
+        _until_subscribed(ros_env, "/go")  # the node is up (robot_description set before), its signal handlers too
         urdf = parameters.getParam("/test_ros_bridge", "/robot_description")[2]
-        _until_subscribed(ros_env, "/go")  # the node is up, its signal handlers too
     finally:
         output = _stop(node)
         os.close(master)
