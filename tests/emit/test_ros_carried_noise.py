@@ -5,12 +5,12 @@ noisy state variable, or a sensor, carries its variance where the field's own no
 from __future__ import annotations
 
 from pathlib import Path
-from types import ModuleType, SimpleNamespace
+from types import ModuleType
 
 import pytest
 
 from tests.emit.test_ros_covariances import _diagonal
-from tests.support.nodes import node_of, quaternion, vector
+from tests.support.nodes import node_of, odometry
 
 TEXT = '''robot wheels { author "t" }
 state x: float = 0.0 noise 0.5 "m"
@@ -39,9 +39,7 @@ def _node(kind: str, tmp_path: Path) -> ModuleType:
 @pytest.mark.parametrize("kind", ["ros1", "ros2"])
 def test_a_state_variables_and_a_sensors_noise_reach_the_odometry(kind: str, tmp_path: Path) -> None:
     node = _node(kind, tmp_path)
-    msg = SimpleNamespace(
-        pose=SimpleNamespace(pose=SimpleNamespace(position=vector(), orientation=quaternion()), covariance=[0.0] * 36),
-        twist=SimpleNamespace(twist=SimpleNamespace(linear=vector(), angular=vector()), covariance=[0.0] * 36))
+    msg = odometry()
     node._ros_fill_odom(msg, {"x": 1.0, "y": 0.0, "theta": 0.0, "linear": 0.0, "angular": 0.0})
     # x as it is: its variance; y converted (/ 1000): none carried, 0.
     assert msg.pose.covariance == _diagonal(6, d0=0.25)

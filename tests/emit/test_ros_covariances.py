@@ -10,7 +10,7 @@ from types import ModuleType, SimpleNamespace
 
 import pytest
 
-from tests.support.nodes import node_of, quaternion, vector
+from tests.support.nodes import node_of, odometry, quaternion, vector
 
 ODOMETRY = '''robot wheels { author "t" }
 state x: float = 0.0
@@ -58,9 +58,7 @@ def _diagonal(side: int, **at: float) -> list[float]:
 @pytest.mark.parametrize("kind", ["ros1", "ros2"])
 def test_an_odometry_carries_its_fields_variances(kind: str, tmp_path: Path) -> None:
     node = _node(kind, tmp_path)
-    msg = SimpleNamespace(
-        pose=SimpleNamespace(pose=SimpleNamespace(position=vector(), orientation=quaternion()), covariance=[0.0] * 36),
-        twist=SimpleNamespace(twist=SimpleNamespace(linear=vector(), angular=vector()), covariance=[0.0] * 36))
+    msg = odometry()
     node._ros_fill_odom(msg, {"x": 1.5, "y": 0.0, "theta": 0.0, "linear": 0.25, "angular": 0.0})
     assert msg.pose.pose.position.x == 1.5
     assert msg.pose.covariance == _diagonal(6, d0=0.02 * 0.02, d5=0.25)  # x, then yaw

@@ -17,7 +17,7 @@ from rdisc.diagnostics import Diagnostics
 from rdisc.syntax.parse import parse
 from rdisc.syntax.printer import print_module
 from tests.engine.test_one_engine import through_json
-from tests.support.nodes import node_of, quaternion, vector
+from tests.support.nodes import node_of, odometry, quaternion, vector
 
 HEAD = '''robot wheels { author "t" }
 state x: float = 0.0
@@ -145,9 +145,7 @@ TWIST_COVARIANCE = [
 @pytest.mark.parametrize("kind", ["ros1", "ros2"])
 def test_an_odometry_carries_its_pose_s_and_twist_s_covariances_whole(kind: str, tmp_path: Path) -> None:
     node = _node(kind, tmp_path)
-    msg = SimpleNamespace(
-        pose=SimpleNamespace(pose=SimpleNamespace(position=vector(), orientation=quaternion()), covariance=[0.0] * 36),
-        twist=SimpleNamespace(twist=SimpleNamespace(linear=vector(), angular=vector()), covariance=[0.0] * 36))
+    msg = odometry()
     node._ros_fill_odom(msg, {"x": 1.5, "y": 0.0, "theta": 0.0, "linear": 0.25, "angular": 0.0})
     assert (msg.pose.covariance, msg.twist.covariance) == (POSE_COVARIANCE, TWIST_COVARIANCE)
 

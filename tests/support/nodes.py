@@ -39,3 +39,10 @@ def vector() -> SimpleNamespace:
 def quaternion() -> SimpleNamespace:
     """A geometry_msgs Quaternion, no rotation."""
     return SimpleNamespace(x=0.0, y=0.0, z=0.0, w=1.0)
+
+
+def odometry() -> SimpleNamespace:
+    """An empty nav_msgs/Odometry: pose and twist at zero, each covariance 36 zeros."""
+    return SimpleNamespace(
+        pose=SimpleNamespace(pose=SimpleNamespace(position=vector(), orientation=quaternion()), covariance=[0.0] * 36),
+        twist=SimpleNamespace(twist=SimpleNamespace(linear=vector(), angular=vector()), covariance=[0.0] * 36))
