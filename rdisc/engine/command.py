@@ -5,7 +5,6 @@
 from __future__ import annotations
 
 import argparse
-import difflib
 import json
 import math
 import os
@@ -16,7 +15,7 @@ from contextlib import contextmanager
 from typing import Any
 
 from rdisc.engine.arguments import Unbound, bind_settings, call_values, read_value
-from rdisc.engine.errors import RdisError, RdisValueError
+from rdisc.engine.errors import RdisError, RdisValueError, nearest
 from rdisc.engine.plans import Device, Input, Interface, Primitive
 from rdisc.engine.ports import Simulator
 from rdisc.engine.recording import Recorder, Session
@@ -269,8 +268,8 @@ def parse_call(words: list[str], device: Device) -> tuple[str, str, dict[str, Va
             break
     else:
         known = list(dict.fromkeys([*device.inputs, *device.interfaces, *device.primitives]))
-        near = difflib.get_close_matches(name, known, n=1)
-        hint = f"did you mean `{near[0]}`?" if near else f"there are: {', '.join(known) or 'none'}"
+        near = nearest(name, known)
+        hint = f"did you mean `{near}`?" if near else f"there are: {', '.join(known) or 'none'}"
         raise ValueError(f"{device.name} has no input, interface or primitive `{name}`; {hint}")
     given = named_pairs(pairs, f"--call {name}: ", "KEY", "`{}`")
     try:

@@ -4,13 +4,13 @@ E008 error at the offending value; and the importer's state, shared by every kin
 
 from __future__ import annotations
 
-import difflib
 import re
 from collections.abc import Callable
 from functools import lru_cache
 from typing import Any, TypeVar
 
 from rdisc.diagnostics import Diagnostics
+from rdisc.engine.errors import nearest
 from rdisc.json_import.values import JArray, JBool, JNull, JNumber, JObject, JString, JValue, kind_of
 from rdisc.source import Span
 from rdisc.syntax import ast
@@ -65,9 +65,9 @@ class Reader:
             if key.value in known:
                 found[key.value] = value
                 continue
-            close = difflib.get_close_matches(key.value, known, n=1)
+            close = nearest(key.value, known)
             hint = (
-                f"did you mean `{close[0]}`?"
+                f"did you mean `{close}`?"
                 if close
                 else "known members: " + ", ".join(f"`{k}`" for k in known)
             )

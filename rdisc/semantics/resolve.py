@@ -11,6 +11,7 @@ from collections.abc import Iterable, Mapping
 from typing import TYPE_CHECKING
 
 from rdisc.diagnostics import Diagnostics, Label
+from rdisc.engine.errors import nearest
 from rdisc.engine.operations import FUNCTIONS
 from rdisc.source import Span
 from rdisc.syntax import ast
@@ -128,17 +129,9 @@ def check_name(name: ast.Ident, what: str, diagnostics: Diagnostics, read: bool 
                            help=f"choose another name, e.g. `{name.text}_value`")
 
 
-def closest(name: str, candidates: Iterable[str]) -> str | None:
-    """The declared name closest to a misspelt one, if any is close."""
-    import difflib  # only for an unknown name: start-up time matters for `rdisc check`
-
-    close = difflib.get_close_matches(name, list(candidates), n=1, cutoff=0.6)
-    return close[0] if close else None
-
-
 def suggest(name: str, candidates: Iterable[str]) -> str | None:
     """A 'did you mean' help line when a declared name is close."""
-    close = closest(name, candidates)
+    close = nearest(name, candidates)
     return f"did you mean `{close}`?" if close else None
 
 
@@ -184,7 +177,7 @@ def _declare(unit: Unit, symbols: Symbols, diagnostics: Diagnostics) -> None:
 def _bind(decl: ast.Decl, symbols: Symbols, callables: Mapping[str, object], diagnostics: Diagnostics) -> None:
     def need(ident: ast.Ident, table: Mapping[str, object], what: str) -> None:
         if ident.text not in table and not symbols.is_damaged(what, ident.text):
-            close = closest(ident.text, table)
+            close = nearest(ident.text, table)
             if close:
                 symbols.suggested.add((what, close))
             diagnostics.report(

@@ -5,6 +5,8 @@ from __future__ import annotations
 import re
 from typing import TYPE_CHECKING
 
+from rdisc.engine.errors import nearest
+
 if TYPE_CHECKING:
     from lark import Token
     from lark.exceptions import UnexpectedInput
@@ -101,10 +103,8 @@ def _hint(token: object, accepted: set[str], after: str) -> str | None:
     keywords = {t.lower() for t in accepted if re.fullmatch(r"[A-Z]+", t) and t not in _WORDS}
     if "DECLARATION" in accepted:
         keywords |= {t.lower() for t in _DECLARATIONS}
-    import difflib
-
-    close = difflib.get_close_matches(text, sorted(keywords), n=1, cutoff=0.6)
-    return f"did you mean `{close[0]}`?" if close and close[0] != text else None
+    close = nearest(text, sorted(keywords))
+    return f"did you mean `{close}`?" if close else None
 
 
 def describe_unexpected(err: UnexpectedInput, chunk: str,
