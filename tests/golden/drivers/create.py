@@ -5888,9 +5888,9 @@ def _in_set_velocity(state: StateValues, args: Args) -> Args:
     return [
         -0.5 if linear < -0.5 else linear if not linear > 0.5 else 0.5,
         (
-            0.0 if linear == 0 and angular == 0
-            else (-0.001 if angular > 0 else 0.001) if linear == 0
-            else 32.767 if angular == 0
+            0.0 if linear == 0.0 and angular == 0.0
+            else (-0.001 if angular > 0.0 else 0.001) if linear == 0.0
+            else 32.767 if angular == 0.0
             else _clamp(_div(linear, angular), -2.0, 2.0)
         ),
     ]

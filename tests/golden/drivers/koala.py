@@ -5829,7 +5829,7 @@ def _p_read_position_actions(state: StateValues, args: Args, reply: Sequence[Any
                     - state["leftCount"]
                     + (_int(reply[1]) - state["rightCount"])
                 )
-                / 2,
+                / 2.0,
                 _cos(
                     _add(
                         state["odomTheta"],
@@ -5855,7 +5855,7 @@ def _p_read_position_actions(state: StateValues, args: Args, reply: Sequence[Any
                     - state["leftCount"]
                     + (_int(reply[1]) - state["rightCount"])
                 )
-                / 2,
+                / 2.0,
                 _sin(
                     _add(
                         state["odomTheta"],
@@ -5969,7 +5969,7 @@ def _o_odometry(state: StateValues) -> dict[str, Value]:
         "x": state["odomX"],
         "y": state["odomY"],
         "theta": state["odomTheta"],
-        "linear": (state["leftSpeed"] + state["rightSpeed"]) * 0.0045 / 2,
+        "linear": (state["leftSpeed"] + state["rightSpeed"]) * 0.0045 / 2.0,
         "angular": _div((state["rightSpeed"] - state["leftSpeed"]) * 0.0045, state["wheelBase"]),
     }
 
@@ -6066,8 +6066,8 @@ _I_UPDATE_PROXIMITY = Interface(
 def _in_set_velocity(state: StateValues, args: Args) -> Args:
     linear, angular = args
     return [
-        _sub(linear, _mul(angular, state["wheelBase"]) / 2),
-        _add(linear, _mul(angular, state["wheelBase"]) / 2),
+        _sub(linear, _mul(angular, state["wheelBase"]) / 2.0),
+        _add(linear, _mul(angular, state["wheelBase"]) / 2.0),
     ]
 
 
