@@ -33,6 +33,8 @@ from rdisc.emit.canonical import range_written
 from rdisc.emit.python_expr import Chain, Compiler, Paren, Py, binary, lines, literal, quoted, table_name
 from rdisc.emit.python_expr import call as function_call
 from rdisc.emit.python_frame import OneStep, byte_terms, reads_state, type_tests
+from rdisc.emit.python_lane import lane_statements
+from rdisc.emit.python_lane import names as lane_names
 from rdisc.emit.writer import Writer, printable
 from rdisc.engine import carry
 from rdisc.lower import lower
@@ -991,7 +993,7 @@ class _Driver:
     def inline(step: OneStep | None, local: Mapping[str, str]) -> bool:
         """Whether a typed method makes its request itself: none of its parameters' names hides
         a name the request's statements use (`_body_names()`, the module's `_` names, `robot`...)."""
-        hidden = _body_names() | {"robot", "request", "tuple", "sum", "lane", "acquire", "release", "write", "err"}
+        hidden = _body_names() | {"robot", "request", "tuple", "sum", "lane"} | lane_names()
         return step is not None and not any(name in hidden or name.startswith("_") for name in local.values())
 
     def inline_body(self, w: Writer, step: OneStep, robot: str, local: Mapping[str, str]) -> None:
@@ -1045,20 +1047,11 @@ class _Driver:
 
     @staticmethod
     def through_lane(w: Writer, step: OneStep, robot: str) -> None:
-        """`request` written as the engine's plain write writes it (`exchange._unwatched_write`): under
-        the port's lock, refused while the robot closes, a port's failure a typed error."""
+        """`request` written as the engine's plain write writes it, with its statements
+        (`python_lane`): under the port's lock, refused while the robot closes, a port's failure a
+        typed error."""
         w.line("acquire, release, write = lane")
-        w.line("acquire()  # no `with`: cheaper; a signal before the `try` leaves it to this thread, re-entrant")
-        with w.block("try:"):
-            with w.block(f"if {robot}._closed:  # under the lock: a write that got it first precedes the stop"):
-                w.line(f"{robot}._refuse({step.target})")
-            w.line("write(request)")
-        with w.block("except RdisError:"):
-            w.line("raise")
-        with w.block("except Exception as err:  # whatever the port raises, it failed"):
-            w.line(f"raise {robot}._port_error({step.target}, err) from err")
-        with w.block("finally:"):
-            w.line("release()")
+        w.lines(lane_statements(robot, step.target))
 
     def connect_function(self, w: Writer) -> None:
         own = ("port", "timeout", "threads", "on_output", "on_error", "on_io", "sim", "robot", self.cls)

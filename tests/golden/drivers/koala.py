@@ -3378,7 +3378,7 @@ class Exchange:
     _write: Callable[[Primitive, bytes], None]
     # Each connection's lane (`_Port.lane`: its port's lock and write), in the order of the
     # connections, through which a driver's typed method writes a plain command itself:
-    # `_unwatched_write`'s statements in the method, one call fewer on every command's path
+    # `_lane_write`'s statements in the method, one call fewer on every command's path
     # (by position: a tuple's item is found faster than a dict's). None while the robot is not
     # running on ports (`_direct`) or a callback watches the writes: the method then goes the
     # general way.
@@ -4258,45 +4258,42 @@ class Exchange:
 
 
 def _unwatched_write(robot: Exchange, ports: Mapping[str, _Port]) -> Callable[[Primitive, bytes], None]:
-    """`Exchange._write_watched` on ports no callback watches, as one closure over what it needs
-    (the port's lock and write bound once, the port itself when every connection shares one):
-    the same lock around the write, the same refusal while closing, the same typed errors."""
-    shared = {id(port): port for port in ports.values()}
-    if len(shared) == 1:
-        (port,) = shared.values()
-        acquire, release, write = port.lock.acquire, port.lock.release, port.write
-
-        def write_one(plan: Primitive, request: bytes) -> None:
-            acquire()  # acquire/release rather than `with`: cheaper, and this is every command's path
-            try:
-                if robot._closed:  # under the lock: a write that got it before the terminate hooks comes before them
-                    robot._refuse(plan)
-                write(request)
-            except RdisError:
-                raise
-            except Exception as err:  # whatever the port raises, it failed
-                raise robot._port_error(plan, err) from err
-            finally:
-                release()
-
+    """`Exchange._write_watched` on ports no callback watches: each port's `_lane_write`, the one
+    itself when every connection shares one port."""
+    writes = {id(port): _lane_write(robot, port) for port in ports.values()}
+    if len(writes) == 1:
+        (write_one,) = writes.values()
         return write_one
+    by_connection = {name: writes[id(port)] for name, port in ports.items()}
 
     def write_any(plan: Primitive, request: bytes) -> None:
-        port = ports[plan.connection]  # every connection has its port once they are open
-        lock = port.lock
-        lock.acquire()
+        by_connection[plan.connection](plan, request)  # every connection has its port once they are open
+
+    return write_any
+
+
+def _lane_write(robot: Exchange, port: _Port) -> Callable[[Primitive, bytes], None]:
+    """The plain write on one port, as one closure over its lane (the port's lock and write,
+    bound once): the lock around the write, the refusal while closing, the typed errors of
+    `_write_watched`. A driver's typed method writes a plain command with `write_one`'s
+    statements, which the emitter takes from this text (rdisc.emit.python_lane): the rule is
+    written here only."""
+    acquire, release, write = port.lane()
+
+    def write_one(plan: Primitive, request: bytes) -> None:
+        acquire()  # no `with`: cheaper; a signal before the `try` leaves the lock to this thread, re-entrant
         try:
-            if robot._closed:
+            if robot._closed:  # under the lock: a write that got it first precedes the terminate hooks' stop
                 robot._refuse(plan)
-            port.write(request)
+            write(request)
         except RdisError:
             raise
         except Exception as err:  # whatever the port raises, it failed
             raise robot._port_error(plan, err) from err
         finally:
-            lock.release()
+            release()
 
-    return write_any
+    return write_one
 
 
 def device_error(plan: Primitive, error: ErrorReply, values: tuple[Any, ...]) -> RdisDeviceError:
