@@ -232,6 +232,7 @@ class _Driver:
         self.one_step: dict[tuple[str, str], OneStep] = {}  # ("input" or "primitive", name): its request in one step
         self.slots: dict[tuple[str, str], str] = {}  # ("input" or "primitive", name): the engine's one-step function
         self.input_methods: dict[str, str] = {}
+        self.dispatched: dict[str, tuple[str, int]] = {}  # primitive: its typed method making its request, its arity
         for name in model.inputs:
             self.input_methods[name] = _escape(name, _robot_members() | set(self.input_methods.values()))
 
@@ -894,6 +895,12 @@ class _Driver:
                 for member, _ in typed:
                     made = "self.device.sensors, self.read_sensor" if member == "sensors" else "self"
                     w.line(f"self.{member} = {cls}{member.capitalize()}({made})")
+                if self.dispatched:  # `call_primitive` goes to the typed method, which makes the request itself
+                    w.line("self._one_step = {")
+                    with w.indented():
+                        w.lines([f"{quoted(name)}: (self.primitives.{method}, {count}),"
+                                 for name, (method, count) in self.dispatched.items()])
+                    w.line("}")
             w.blank(1)
             w.line("@property")
             with w.block(f"def state(self) -> {cls}State:"):
@@ -963,6 +970,8 @@ class _Driver:
                 doc += ["", "Units (as the device takes them):", *units]
             w.line(_docstring("\n".join(doc)))
             self.runs(w, kind, name, "self._robot", local)
+        if kind == "primitive" and self.inline(self.one_step.get((kind, name)), local):
+            self.dispatched[name] = (method, len(element.params))
 
     def runs(self, w: Writer, kind: str, name: str, robot: str, local: Mapping[str, str]) -> None:
         """A typed method's body: an input or primitive with a request in one step makes it here

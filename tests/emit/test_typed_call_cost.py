@@ -175,3 +175,23 @@ def test_the_lowering_plans_a_plain_exchange_only_where_the_engine_makes_one(exa
     planned = {name: plan.asked is not None for name, plan in lower(model).device.primitives.items()}
     made = {name: plan.asked is not None for name, plan in load(model).device.primitives.items()}
     assert planned == made
+
+
+def test_call_primitive_goes_to_the_typed_method(drivers: dict[str, Any]) -> None:
+    """`robot.call_primitive("goto_all", 512)` on a generated driver: one look-up, then the typed
+    method (the same specialised function as `robot.primitives.goto_all`), the port's write: 3 calls, 4
+    before (the engine's one-step request and its write besides the port's). Other counts of values,
+    other types and values out of range go the general way, which says what is wrong."""
+    port = ScriptedPort()
+    driver = drivers["ax12"]
+    with driver.connect({"bus": port}, threads=False) as robot:
+        del port.written[:]
+        assert calls_made(lambda: robot.call_primitive("goto_all", 512)) == 3
+        assert bytes(port.written) == bytes.fromhex("FF FF FE 05 03 1E 00 02 D9")
+        for args in [(), (512, 1), (512.0,), (1024,)]:
+            with pytest.raises((TypeError, driver.RdisValueError)) as typed:
+                robot.call_primitive("goto_all", *args)
+            with pytest.raises(type(typed.value)) as general:
+                robot._call_primitive(robot.device.primitives["goto_all"], list(args))
+            assert str(typed.value) == str(general.value)
+        assert bytes(port.written) == bytes.fromhex("FF FF FE 05 03 1E 00 02 D9")

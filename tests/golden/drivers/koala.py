@@ -4545,6 +4545,10 @@ class Robot(Exchange):
         # While `_direct`, the primitives only written, by name, with their one-step requests: what
         # `call_primitive` looks up first (empty otherwise, so that one look-up decides both).
         self._written: dict[str, tuple[Primitive, Request]] = {}
+        # A generated driver's typed methods that make their primitive's request in one step, by
+        # name, with their parameters' count (set by the driver's robot): what `call_primitive`
+        # looks up first, the same specialised function as `robot.primitives.NAME`.
+        self._one_step: dict[str, tuple[Callable[..., None], int]] = {}
         # Each input by name with what `call_input` reads of it on every call, read once here: its
         # fields' count, how they are taken from keywords, its one-step request and where that goes.
         self._inputs: dict[str, tuple[Input, int, Callable[[Mapping[str, Any]], Args], Request | None,
@@ -4686,6 +4690,10 @@ class Robot(Exchange):
     def call_primitive(self, name: str, /, *args: Any) -> None:
         """Send one device command (a primitive) with positional arguments, read its reply and
         run its post-actions, on this thread; errors are raised."""
+        typed = self._one_step.get(name)
+        if typed is not None and len(args) == typed[1]:  # a driver's typed method: every command's path
+            typed[0](*args)
+            return
         written = self._written.get(name)
         if written is not None:  # `_call_primitive`'s one plain write, inline: every command's path
             plan, request = written
