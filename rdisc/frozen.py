@@ -206,6 +206,9 @@ def classes(written: dict[str, Written]) -> Callable[..., Callable[[_Class], _Cl
             )
             made: _Class = type(cls)(cls.__name__, cls.__bases__, namespace)
             made.__qualname__ = cls.__qualname__
+            written_module = init.__globals__  # its `_set_<class>_<field>`: object.__setattr__ until now
+            for name in annotations:
+                written_module[f"_set_{cls.__name__}_{name}"] = vars(made)[name].__set__
             return made
 
         return make

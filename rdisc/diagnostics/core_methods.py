@@ -12,12 +12,17 @@ from rdisc.frozen import DEFAULT, MISSING, Written, classes, field
 
 __all__ = ["dataclass", "field"]
 
+# Each field's setter: object.__setattr__, made the field's slot's own (a third faster) when
+# rdisc.frozen makes the class.
 _set = object.__setattr__
 
 
+_set_Label_span = _set_Label_message = _set
+
+
 def _init_Label(self: Any, span: Any, message: Any) -> None:
-    _set(self, "span", span)
-    _set(self, "message", message)
+    _set_Label_span(self, span)
+    _set_Label_message(self, message)
 
 
 def _repr_Label(self: Any) -> str:
@@ -34,6 +39,15 @@ def _hash_Label(self: Any) -> int:
     return hash((self.span, self.message))
 
 
+_set_Diagnostic_code = _set
+_set_Diagnostic_severity = _set
+_set_Diagnostic_message = _set
+_set_Diagnostic_span = _set
+_set_Diagnostic_label = _set
+_set_Diagnostic_labels = _set
+_set_Diagnostic_help = _set
+
+
 def _init_Diagnostic(
     self: Any,
     code: Any,
@@ -44,13 +58,13 @@ def _init_Diagnostic(
     labels: Any = DEFAULT,
     help: Any = DEFAULT,
 ) -> None:
-    _set(self, "code", code)
-    _set(self, "severity", severity)
-    _set(self, "message", message)
-    _set(self, "span", span)
-    _set(self, "label", label)
-    _set(self, "labels", labels)
-    _set(self, "help", help)
+    _set_Diagnostic_code(self, code)
+    _set_Diagnostic_severity(self, severity)
+    _set_Diagnostic_message(self, message)
+    _set_Diagnostic_span(self, span)
+    _set_Diagnostic_label(self, label)
+    _set_Diagnostic_labels(self, labels)
+    _set_Diagnostic_help(self, help)
 
 
 def _repr_Diagnostic(self: Any) -> str:

