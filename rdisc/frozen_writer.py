@@ -137,8 +137,8 @@ def _methods(cls: str, fields: list[_Field]) -> list[str]:
     params = ["self: Any"] + [f"{f.name}: Any" + (" = DEFAULT" if f.default else "")
                               for f in fields]
     setters = [f"_set_{cls}_{f.name}" for f in fields]
-    chained = " = ".join([*setters, "_set"])
-    lines = ([chained] if len(chained) <= LINE else [f"{setter} = _set" for setter in setters]) if fields else []
+    chained = " = ".join([*setters, "_unbound"])
+    lines = ([chained] if len(chained) <= LINE else [f"{setter} = _unbound" for setter in setters]) if fields else []
     lines += ["", ""] if fields else []
     lines += _wrapped(f"def _init_{cls}(", params, ") -> None:", "")
     for f in fields:
@@ -197,9 +197,9 @@ def write(path: Path) -> str:
         "",
         '__all__ = ["dataclass", "field"]',
         "",
-        "# Each field's setter: object.__setattr__, made the field's slot's own (a third faster) when",
-        "# rdisc.frozen makes the class.",
-        "_set = object.__setattr__",
+        "# Each field's setter, `_set_<class>_<field>(instance, value)`: its slot's own `__set__`, bound by",
+        "# rdisc.frozen when it makes the class (a third faster than object.__setattr__ with the field's name).",
+        "_unbound: Any = None",
     ]
     for name, fields in classes:
         out += ["", "", *_methods(name, fields)]

@@ -12,12 +12,12 @@ from rdisc.frozen import DEFAULT, MISSING, Written, classes, field
 
 __all__ = ["dataclass", "field"]
 
-# Each field's setter: object.__setattr__, made the field's slot's own (a third faster) when
-# rdisc.frozen makes the class.
-_set = object.__setattr__
+# Each field's setter, `_set_<class>_<field>(instance, value)`: its slot's own `__set__`, bound by
+# rdisc.frozen when it makes the class (a third faster than object.__setattr__ with the field's name).
+_unbound: Any = None
 
 
-_set_Label_span = _set_Label_message = _set
+_set_Label_span = _set_Label_message = _unbound
 
 
 def _init_Label(self: Any, span: Any, message: Any) -> None:
@@ -39,13 +39,13 @@ def _hash_Label(self: Any) -> int:
     return hash((self.span, self.message))
 
 
-_set_Diagnostic_code = _set
-_set_Diagnostic_severity = _set
-_set_Diagnostic_message = _set
-_set_Diagnostic_span = _set
-_set_Diagnostic_label = _set
-_set_Diagnostic_labels = _set
-_set_Diagnostic_help = _set
+_set_Diagnostic_code = _unbound
+_set_Diagnostic_severity = _unbound
+_set_Diagnostic_message = _unbound
+_set_Diagnostic_span = _unbound
+_set_Diagnostic_label = _unbound
+_set_Diagnostic_labels = _unbound
+_set_Diagnostic_help = _unbound
 
 
 def _init_Diagnostic(

@@ -12,12 +12,12 @@ from rdisc.frozen import DEFAULT, MISSING, Written, classes, field
 
 __all__ = ["dataclass", "field"]
 
-# Each field's setter: object.__setattr__, made the field's slot's own (a third faster) when
-# rdisc.frozen makes the class.
-_set = object.__setattr__
+# Each field's setter, `_set_<class>_<field>(instance, value)`: its slot's own `__set__`, bound by
+# rdisc.frozen when it makes the class (a third faster than object.__setattr__ with the field's name).
+_unbound: Any = None
 
 
-_set_Exchange_interface = _set_Exchange_bytes = _set_Exchange_wire_ms = _set_Exchange_delay_ms = _set
+_set_Exchange_interface = _set_Exchange_bytes = _set_Exchange_wire_ms = _set_Exchange_delay_ms = _unbound
 
 
 def _init_Exchange(self: Any, interface: Any, bytes: Any, wire_ms: Any, delay_ms: Any) -> None:
@@ -51,7 +51,7 @@ def _hash_Exchange(self: Any) -> int:
     return hash((self.interface, self.bytes, self.wire_ms, self.delay_ms))
 
 
-_set_SensorLoad_sensor = _set_SensorLoad_bytes = _set_SensorLoad_wire_ms = _set_SensorLoad_rate_hz = _set
+_set_SensorLoad_sensor = _set_SensorLoad_bytes = _set_SensorLoad_wire_ms = _set_SensorLoad_rate_hz = _unbound
 
 
 def _init_SensorLoad(self: Any, sensor: Any, bytes: Any, wire_ms: Any, rate_hz: Any) -> None:
@@ -85,17 +85,17 @@ def _hash_SensorLoad(self: Any) -> int:
     return hash((self.sensor, self.bytes, self.wire_ms, self.rate_hz))
 
 
-_set_ConnectionBudget_connection = _set
-_set_ConnectionBudget_baud = _set
-_set_ConnectionBudget_frequency_hz = _set
-_set_ConnectionBudget_periodic = _set
-_set_ConnectionBudget_keepalive = _set
-_set_ConnectionBudget_keepalive_interval_ms = _set
-_set_ConnectionBudget_baud_setting = _set
-_set_ConnectionBudget_bits_per_byte = _set
-_set_ConnectionBudget_threading = _set
-_set_ConnectionBudget_rates = _set
-_set_ConnectionBudget_sensed = _set
+_set_ConnectionBudget_connection = _unbound
+_set_ConnectionBudget_baud = _unbound
+_set_ConnectionBudget_frequency_hz = _unbound
+_set_ConnectionBudget_periodic = _unbound
+_set_ConnectionBudget_keepalive = _unbound
+_set_ConnectionBudget_keepalive_interval_ms = _unbound
+_set_ConnectionBudget_baud_setting = _unbound
+_set_ConnectionBudget_bits_per_byte = _unbound
+_set_ConnectionBudget_threading = _unbound
+_set_ConnectionBudget_rates = _unbound
+_set_ConnectionBudget_sensed = _unbound
 
 
 def _init_ConnectionBudget(

@@ -12,18 +12,18 @@ from rdisc.frozen import DEFAULT, MISSING, Written, classes, field
 
 __all__ = ["dataclass", "field"]
 
-# Each field's setter: object.__setattr__, made the field's slot's own (a third faster) when
-# rdisc.frozen makes the class.
-_set = object.__setattr__
+# Each field's setter, `_set_<class>_<field>(instance, value)`: its slot's own `__set__`, bound by
+# rdisc.frozen when it makes the class (a third faster than object.__setattr__ with the field's name).
+_unbound: Any = None
 
 
-_set_Env_names = _set
-_set_Env_where = _set
-_set_Env_sees = _set
-_set_Env_reply = _set
-_set_Env_reply_note = _set
-_set_Env_reply_known = _set
-_set_Env_setting_note = _set
+_set_Env_names = _unbound
+_set_Env_where = _unbound
+_set_Env_sees = _unbound
+_set_Env_reply = _unbound
+_set_Env_reply_note = _unbound
+_set_Env_reply_known = _unbound
+_set_Env_setting_note = _unbound
 
 
 def _init_Env(
