@@ -206,6 +206,10 @@ def classes(written: dict[str, Written]) -> Callable[..., Callable[[_Class], _Cl
             )
             made: _Class = type(cls)(cls.__name__, cls.__bases__, namespace)
             made.__qualname__ = cls.__qualname__
+            written_module, made_fields = init.__globals__, vars(made)  # its `_set_<class>_<field>`, unbound until now
+            setter = "_set_" + cls.__name__ + "_"
+            for name in annotations:
+                written_module[setter + name] = made_fields[name].__set__
             return made
 
         return make

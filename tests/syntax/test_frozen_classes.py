@@ -4,6 +4,7 @@ the writer writes now, and every class behaves as `dataclasses` would have made 
 from __future__ import annotations
 
 import dataclasses
+import importlib
 import importlib.util
 import pickle
 import sys
@@ -122,3 +123,22 @@ def test_a_class_whose_fields_changed_since_it_was_written_is_made_by_dataclasse
 
     assert Ident.__init__.__module__ != ast_methods.__name__
     assert Ident("x", 1) == Ident("x", 2, False) and repr(Ident("x")).endswith("Ident(text='x', quoted=False)")
+
+
+@pytest.mark.parametrize("source", sorted(frozen_writer.MODULES))
+def test_each_written_init_sets_its_fields_through_their_slots(source: str) -> None:
+    """A written `__init__` calls each field's slot's own setter (a third faster than
+    `object.__setattr__`), bound when the class is made; the class stays frozen."""
+    name = "rdisc." + frozen_writer.MODULES[source].removesuffix(".py").replace("/", ".")
+    methods = importlib.import_module(name)
+    declaring = importlib.import_module(name.removesuffix("_methods"))
+    classes = 0
+    for cls_name in methods.WRITTEN:
+        cls = getattr(declaring, cls_name)
+        for field_name in cls.__slots__:
+            setter = getattr(methods, f"_set_{cls_name}_{field_name}")
+            assert setter == vars(cls)[field_name].__set__, (cls_name, field_name)
+        classes += 1
+    assert classes == len(methods.WRITTEN) > 0
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        ast.Ident("x").text = "y"  # type: ignore[misc]

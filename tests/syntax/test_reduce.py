@@ -274,3 +274,61 @@ def test_the_loop_makes_a_token_only_where_the_builder_reads_its_place(monkeypat
     assert not module.damaged and len(module.decls) == 1
     # The names the Builder makes Idents of (with their spans), the string it decodes, the operators.
     assert sorted(made) == sorted(["move", "speed", "int", "link", '">Bh"', "*", "+"])
+
+
+class _Forgetful(dict[Any, Any]):
+    """A table of unit chains that keeps nothing: each is found again where it is met."""
+
+    def __setitem__(self, key: Any, value: Any) -> None:
+        pass
+
+
+def test_the_loop_passes_an_operand_up_its_units_as_it_would_one_unit_at_a_time(
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    """The loop passes a value up a chain of `?rule`s of one symbol (an operand to an expression)
+    in one step, from a table of where each chain ends found once per (state below, state, token
+    kind): the trees, spans and diagnostics are those of making one unit reduction at a time, the
+    same declarations are left to Lark, and the second parse of the same texts finds no chain again."""
+    texts = [(str(path), path.read_text(encoding="utf-8")) for path in FILES]
+    texts += [("t.rdis", text) for text in ONE_LINERS]
+
+    def built() -> list[Any]:
+        """Each text's tree and diagnostics, and how many of its declarations the loop left to Lark."""
+        results = []
+        for path, text in texts:
+            left = 0
+
+            def counted_retries(*args: Any, **kwargs: Any) -> Any:
+                nonlocal left
+                try:
+                    return LOOP(*args, **kwargs)
+                except reduce.Retry:
+                    left += 1
+                    raise
+
+            monkeypatch.setattr(reduce, "parse_built", counted_retries)
+            diagnostics = Diagnostics()
+            tree = dump(parse(path, text, diagnostics))
+            results.append((tree, [dump(d) for d in diagnostics.sorted()], left))
+        return results
+
+    found = []
+    chain_end = reduce._pass_units
+
+    def counted(below: int, state: int, kind: str) -> int:
+        found.append((below, state, kind))
+        return chain_end(below, state, kind)
+
+    monkeypatch.setattr(reduce, "_CHAINS", {})
+    monkeypatch.setattr(reduce, "_pass_units", counted)
+    in_steps = built()
+    first = len(found)
+    assert built() == in_steps and len(found) == first > 0  # each chain found once, in the first parse
+
+    def one_unit(below: int, state: int, kind: str) -> int:
+        """The state after the first unit reduction only: the loop makes the next ones itself."""
+        return tables.ACTIONS[below][reduce.UNITS[~tables.ACTIONS[state][kind]]]  # type: ignore[index]
+
+    monkeypatch.setattr(reduce, "_CHAINS", _Forgetful())
+    monkeypatch.setattr(reduce, "_pass_units", one_unit)
+    assert built() == in_steps
