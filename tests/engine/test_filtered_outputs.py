@@ -5,21 +5,25 @@ computed, the same values the engine's filter gives and filterpy's to 1e-9."""
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy
 import pytest
-from filterpy.kalman import KalmanFilter as Reference
 
 from rdisc.engine.kalman import KalmanFilter
 from tests.engine.test_one_engine import implementation_of
 from tests.semantics.test_noise import HEAD, RANGE
 from tests.support.ports import ScriptedPort
 
+if TYPE_CHECKING:
+    from filterpy.kalman import KalmanFilter as Reference
+
 LEVELS = [100, 104, 97, 112, 108, 120, 115, 131, 126, 140]
 
 
 def _reference() -> Reference:
+    from filterpy.kalman import KalmanFilter as Reference  # SciPy's 1 s, in the worker that runs this only
+
     reference = Reference(dim_x=2, dim_z=1)
     reference.x = numpy.array([[0.0], [0.0]])
     reference.P = numpy.eye(2)

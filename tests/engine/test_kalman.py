@@ -6,20 +6,25 @@ from __future__ import annotations
 
 import math
 import random
+from typing import TYPE_CHECKING
 
 import numpy
 import pytest
-from filterpy.kalman import KalmanFilter as Reference
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from rdisc.engine import matrices
 from rdisc.engine.kalman import KalmanFilter
 
+if TYPE_CHECKING:
+    from filterpy.kalman import KalmanFilter as Reference
+
 TOLERANCE = 1e-9
 
 
 def _reference(state, covariance, transition, process, measurement, noise) -> Reference:
+    from filterpy.kalman import KalmanFilter as Reference  # SciPy's 1 s, in the worker that runs this only
+
     reference = Reference(dim_x=len(state), dim_z=len(measurement))
     reference.x = numpy.array([[value] for value in state], dtype=float)
     reference.P = numpy.array(covariance, dtype=float)

@@ -24,6 +24,7 @@ sys.path.insert(0, str(ROOT / "benchmarks"))
 from lsp_speed import description
 
 BIG = description()
+BIG_PATH = "/nonexistent/big.rdis"  # no file: the checks read the text given
 
 
 def whole(node: Any) -> Any:
@@ -50,14 +51,32 @@ class Editor:
 
 
 def same_as_fresh(editor: Editor, text: str) -> None:
-    kept, fresh = editor.check(text), compile_text(editor.path, text)
-    assert whole(kept.diagnostics.items) == whole(fresh.diagnostics.items)
-    assert whole(kept.model) == whole(fresh.model)
-    assert whole(kept.budgets) == whole(fresh.budgets)
+    kept, fresh = editor.check(text), fresh_check(editor.path, text)
+    assert whole(kept.diagnostics.items) == fresh[0]
+    assert whole(kept.model) == fresh[1]
+    assert whole(kept.budgets) == fresh[2]
 
 
-def test_a_change_to_one_primitive_checks_only_it_and_the_interface_calling_it(tmp_path: Path) -> None:
-    editor = Editor(str(tmp_path / "big.rdis"))
+_FRESH: dict[tuple[Any, ...], tuple[Any, Any, Any]] = {}
+
+
+def fresh_check(path: str, text: str) -> tuple[Any, Any, Any]:
+    """A fresh check's diagnostics, Model and budgets as `whole` gives them, made once for each path,
+    text and bound that decides them (the token budget, the bounds on unrolled calls): the tests
+    compare many edited checks with the fresh check of a text they met before (an example, BIG)."""
+    from rdisc.compile import _max_tokens
+    from rdisc.semantics.check import interfaces, memo
+
+    key = (path, text, _max_tokens.get(), interfaces.MAX_UNROLLED, interfaces.MAX_UNROLLED_ALL, memo.MAX_UNROLLED,
+           memo.MAX_UNROLLED_ALL)
+    if key not in _FRESH:
+        fresh = compile_text(path, text)
+        _FRESH[key] = (whole(fresh.diagnostics.items), whole(fresh.model), whole(fresh.budgets))
+    return _FRESH[key]
+
+
+def test_a_change_to_one_primitive_checks_only_it_and_the_interface_calling_it() -> None:
+    editor = Editor(BIG_PATH)
     same_as_fresh(editor, BIG)
     assert editor.memo.reused == 0
     same_as_fresh(editor, BIG.replace("0..1000", "0..1001", 1))  # set_0's range: set_0 and move_0 again
@@ -69,8 +88,8 @@ def test_a_change_to_one_primitive_checks_only_it_and_the_interface_calling_it(t
     assert editor.memo.reused == 0
 
 
-def test_declarations_that_only_moved_are_taken_again_with_their_spans_shifted(tmp_path: Path) -> None:
-    editor = Editor(str(tmp_path / "big.rdis"))
+def test_declarations_that_only_moved_are_taken_again_with_their_spans_shifted() -> None:
+    editor = Editor(BIG_PATH)
     same_as_fresh(editor, BIG)
     same_as_fresh(editor, BIG.replace("0..1000", "0..99999", 1))  # set_0 and move_0 again; the rest moved
     assert editor.memo.reused == 2 * 165 - 2
@@ -82,8 +101,8 @@ def test_declarations_that_only_moved_are_taken_again_with_their_spans_shifted(t
     assert editor.memo.reused == 2 * 165 - 1  # move_99 again; those before it stay, those after it move
 
 
-def test_a_moved_check_reports_its_faults_where_they_now_are(tmp_path: Path) -> None:
-    editor = Editor(str(tmp_path / "big.rdis"))
+def test_a_moved_check_reports_its_faults_where_they_now_are() -> None:
+    editor = Editor(BIG_PATH)
     broken = BIG.replace("set_100(round(value * 1000))", "set_7(1, 2)").replace('unit "mm"', 'unit "mmm"', 101)
     same_as_fresh(editor, broken)
     moved = broken.replace("set_50(value: int in 0..1000", "set_50(value: int in 0..1000000")  # after it moves
@@ -96,11 +115,11 @@ def test_a_moved_check_reports_its_faults_where_they_now_are(tmp_path: Path) -> 
     assert [moved[label.span.start:label.span.end] for label in call.labels] == ["set_7"]
 
 
-def test_a_moved_check_is_taken_again_as_it_was_its_spans_moved_once_each(tmp_path: Path) -> None:
+def test_a_moved_check_is_taken_again_as_it_was_its_spans_moved_once_each() -> None:
     """Nothing that only moved is made again: the moved declarations' nodes, Model parts and
     diagnostics are the last check's, their spans moved where they are; a span a kept check holds
     of another declaration that moved too (a label on the primitive called) is moved once."""
-    editor = Editor(str(tmp_path / "big.rdis"))
+    editor = Editor(BIG_PATH)
     broken = BIG.replace("set_100(round(value * 1000))", "set_7(1, 2)")
     same_as_fresh(editor, broken)
     before = editor.check(broken)
@@ -119,10 +138,10 @@ def test_a_moved_check_is_taken_again_as_it_was_its_spans_moved_once_each(tmp_pa
     assert kept is not None and editor.check("\n" + good).model.primitives["set_9"] is kept.primitives["set_9"]
 
 
-def test_a_declaration_written_twice_checks_as_a_fresh_check_where_it_moves(tmp_path: Path) -> None:
+def test_a_declaration_written_twice_checks_as_a_fresh_check_where_it_moves() -> None:
     """Two declarations of the same text came from one old one: where its spans went is not one
     place, so neither is taken from it shifted."""
-    editor = Editor(str(tmp_path / "big.rdis"))
+    editor = Editor(BIG_PATH)
     start = BIG.index("/// Set register 5.")
     block = BIG[start:BIG.index("/// Set register 6.")]
     twice = BIG + block
@@ -133,8 +152,8 @@ def test_a_declaration_written_twice_checks_as_a_fresh_check_where_it_moves(tmp_
     assert sorted({d.code for d in editor.check("# moved\n" + twice).diagnostics.items}) == ["E101"]  # declared twice
 
 
-def test_a_reused_check_reports_its_faults_again(tmp_path: Path) -> None:
-    editor = Editor(str(tmp_path / "big.rdis"))
+def test_a_reused_check_reports_its_faults_again() -> None:
+    editor = Editor(BIG_PATH)
     broken = BIG.replace("set_7(round(value * 1000))", "set_7(value * 1000)").replace('unit "mm"', 'unit "mmm"', 1)
     same_as_fresh(editor, broken)
     edited = broken.replace("0..1000", "0..1001", 2)  # two primitives' ranges (one with the fault), the others kept
@@ -145,7 +164,7 @@ def test_a_reused_check_reports_its_faults_again(tmp_path: Path) -> None:
 
 
 @pytest.mark.parametrize("name", sorted(EXAMPLES))
-def test_every_example_checked_again_after_edits_as_a_fresh_check(name: str, tmp_path: Path) -> None:
+def test_every_example_checked_again_after_edits_as_a_fresh_check(name: str) -> None:
     text = EXAMPLES[name]
     editor = Editor(str(ROOT / "examples" / name))
     same_as_fresh(editor, text)
@@ -203,7 +222,7 @@ def test_lines_added_or_taken_away_check_as_a_fresh_check(name: str, data: st.Da
 @settings(max_examples=fuzz_examples(3), deadline=None)
 @given(data=st.data())
 def test_any_edits_of_the_large_description_check_as_a_fresh_check(data: st.DataObject) -> None:
-    editor = Editor("/nonexistent/big.rdis")
+    editor = Editor(BIG_PATH)
     text = BIG
     same_as_fresh(editor, text)
     for _ in range(data.draw(st.integers(1, 3))):
@@ -211,8 +230,8 @@ def test_any_edits_of_the_large_description_check_as_a_fresh_check(data: st.Data
         same_as_fresh(editor, text)
 
 
-def test_what_a_reused_check_read_still_counts_as_used(tmp_path: Path) -> None:
-    editor = Editor(str(tmp_path / "big.rdis"))
+def test_what_a_reused_check_read_still_counts_as_used() -> None:
+    editor = Editor(BIG_PATH)
     text = BIG.replace("state last: int = 0", "state last: int = 0\nstate speed: int = 0").replace(
         "set_9(round(value * 1000))", "set_9(speed)")  # `speed` read by move_9 only
     same_as_fresh(editor, text)
@@ -220,8 +239,8 @@ def test_what_a_reused_check_read_still_counts_as_used(tmp_path: Path) -> None:
     assert editor.memo.reused == 2 * 165 - 2
 
 
-def test_a_description_over_the_token_budget_is_refused_as_by_a_fresh_check(tmp_path: Path) -> None:
-    editor = Editor(str(tmp_path / "big.rdis"))
+def test_a_description_over_the_token_budget_is_refused_as_by_a_fresh_check() -> None:
+    editor = Editor(BIG_PATH)
     same_as_fresh(editor, BIG)
     with token_budget(5000):  # the description has about 8,000
         same_as_fresh(editor, BIG)
@@ -229,8 +248,7 @@ def test_a_description_over_the_token_budget_is_refused_as_by_a_fresh_check(tmp_
     same_as_fresh(editor, BIG)
 
 
-def test_interfaces_near_the_bound_of_all_calls_are_checked_each_time_and_once(tmp_path: Path,
-                                                                              monkeypatch: pytest.MonkeyPatch) -> None:
+def test_interfaces_near_the_bound_of_all_calls_are_checked_each_time_and_once(monkeypatch: pytest.MonkeyPatch) -> None:
     from rdisc.semantics.check import interfaces, memo
 
     for module in (interfaces, memo):  # bounds made small, so the test is quick
@@ -239,14 +257,14 @@ def test_interfaces_near_the_bound_of_all_calls_are_checked_each_time_and_once(t
     text = BIG.replace("interface move_1(value: float) {", "interface move_1(value: float) {\n    for i in 0..249 { set_0(1) }") \
         .replace("interface move_2(value: float) {", "interface move_2(value: float) {\n    for i in 0..249 { set_0(1) }") \
         .replace("interface move_3(value: float) {", "interface move_3(value: float) {\n    for i in 0..198 { set_0(1) }")
-    editor = Editor(str(tmp_path / "big.rdis"))
+    editor = Editor(BIG_PATH)
     same_as_fresh(editor, text)
     assert [d.code for d in editor.check(text).diagnostics.items] == ["E212"]  # move_3: 503 calls before it, 199 in its loop
     same_as_fresh(editor, text.replace("0..198", "0..189"))  # 693: within the bound
     assert [d.code for d in editor.check(text.replace("0..198", "0..189")).diagnostics.items] == []
 
 
-def test_what_a_check_made_goes_to_the_oldest_generation_without_a_collection(tmp_path: Path) -> None:
+def test_what_a_check_made_goes_to_the_oldest_generation_without_a_collection() -> None:
     """The first young collection after a check would pass over everything it made (a third of
     an editor's check when most declarations moved): it is put in the oldest generation at once."""
     import gc
@@ -260,7 +278,7 @@ def test_what_a_check_made_goes_to_the_oldest_generation_without_a_collection(tm
     assert gc.isenabled()
     gc.callbacks.append(watch)
     try:
-        compile_text(str(tmp_path / "big.rdis"), BIG)
+        compile_text(BIG_PATH, BIG)
         young = gc.get_count()[0]
     finally:
         gc.callbacks.remove(watch)
