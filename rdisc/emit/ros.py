@@ -26,8 +26,9 @@ from collections.abc import Mapping
 
 from rdisc.emit import bridge
 from rdisc.emit.bridge import IGNORE, Bridge
-from rdisc.emit.python import class_name, to_python
+from rdisc.emit.python import to_python
 from rdisc.emit.python_expr import quoted
+from rdisc.emit.python_names import class_name
 from rdisc.emit.writer import Writer
 from rdisc.semantics import model as m
 from rdisc.semantics import ros

@@ -17,8 +17,9 @@ from collections.abc import Mapping
 
 from rdisc.emit import bridge
 from rdisc.emit.bridge import Bridge
-from rdisc.emit.python import class_name, to_python
+from rdisc.emit.python import to_python
 from rdisc.emit.python_expr import quoted
+from rdisc.emit.python_names import class_name
 from rdisc.emit.ros2_helpers import HELPERS
 from rdisc.emit.writer import Writer
 from rdisc.lowering import messages

@@ -724,7 +724,7 @@ def test_the_driver_and_the_runtime_agree_on_any_values(sink_pair, calls) -> Non
 @hypothesis.settings(max_examples=300, deadline=None)
 @hypothesis.given(st.text())
 def test_any_doc_text_becomes_a_docstring_that_reads_back(text) -> None:
-    from rdisc.emit.python import _docstring
+    from rdisc.emit.python_text import _docstring
     from rdisc.emit.writer import printable as _printable
 
     expected = "\n".join(line.rstrip() for line in text.strip("\n").split("\n"))

@@ -15,7 +15,8 @@ import pytest
 from conftest import run_command_here, run_rdisc, untimed
 
 from rdisc.compile import compile_path
-from rdisc.emit.python import class_name, import_driver, to_python
+from rdisc.emit.python import import_driver, to_python
+from rdisc.emit.python_names import class_name
 from rdisc.engine import carry
 from rdisc.runtime import load
 from tests.devices import pty_device
