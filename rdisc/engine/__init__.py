@@ -42,6 +42,7 @@ if TYPE_CHECKING:  # at run time each name is imported when it is first asked fo
         RdisProtocolError,
         RdisTimeout,
         RdisValueError,
+        nearest,
     )
     from rdisc.engine.exchange import Exchange, device_error
     from rdisc.engine.frames import Frame, Wrap
@@ -307,6 +308,7 @@ __all__ = [
     "matrix_sum",
     "matrix_transpose",
     "named_pairs",
+    "nearest",
     "parse_call",
     "parse_ports",
     "parse_settings",

@@ -11,7 +11,6 @@ from collections.abc import Iterable, Mapping
 from typing import TYPE_CHECKING
 
 from rdisc.diagnostics import Diagnostics, Label
-from rdisc.engine.errors import nearest
 from rdisc.engine.operations import FUNCTIONS
 from rdisc.source import Span
 from rdisc.syntax import ast
@@ -131,6 +130,8 @@ def check_name(name: ast.Ident, what: str, diagnostics: Diagnostics, read: bool 
 
 def suggest(name: str, candidates: Iterable[str]) -> str | None:
     """A 'did you mean' help line when a declared name is close."""
+    from rdisc.engine.errors import nearest  # only for an unknown name: `check` imports little of the engine
+
     close = nearest(name, candidates)
     return f"did you mean `{close}`?" if close else None
 
@@ -177,6 +178,8 @@ def _declare(unit: Unit, symbols: Symbols, diagnostics: Diagnostics) -> None:
 def _bind(decl: ast.Decl, symbols: Symbols, callables: Mapping[str, object], diagnostics: Diagnostics) -> None:
     def need(ident: ast.Ident, table: Mapping[str, object], what: str) -> None:
         if ident.text not in table and not symbols.is_damaged(what, ident.text):
+            from rdisc.engine.errors import nearest  # only for an unknown name, as in suggest()
+
             close = nearest(ident.text, table)
             if close:
                 symbols.suggested.add((what, close))

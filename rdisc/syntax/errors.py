@@ -5,8 +5,6 @@ from __future__ import annotations
 import re
 from typing import TYPE_CHECKING
 
-from rdisc.engine.errors import nearest
-
 if TYPE_CHECKING:
     from lark import Token
     from lark.exceptions import UnexpectedInput
@@ -103,6 +101,8 @@ def _hint(token: object, accepted: set[str], after: str) -> str | None:
     keywords = {t.lower() for t in accepted if re.fullmatch(r"[A-Z]+", t) and t not in _WORDS}
     if "DECLARATION" in accepted:
         keywords |= {t.lower() for t in _DECLARATIONS}
+    from rdisc.engine.errors import nearest  # only for a misspelt word: `check` imports little of the engine
+
     close = nearest(text, sorted(keywords))
     return f"did you mean `{close}`?" if close else None
 
