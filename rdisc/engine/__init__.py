@@ -43,7 +43,7 @@ if TYPE_CHECKING:  # at run time each name is imported when it is first asked fo
         RdisTimeout,
         RdisValueError,
     )
-    from rdisc.engine.exchange import Exchange, device_error
+    from rdisc.engine.exchange import Exchange
     from rdisc.engine.frames import Frame, Wrap
     from rdisc.engine.kalman import FilterPlan, KalmanFilter
     from rdisc.engine.matrices import (
@@ -126,6 +126,7 @@ if TYPE_CHECKING:  # at run time each name is imported when it is first asked fo
         ros_message,
         session_topics,
     )
+    from rdisc.engine.replies import Replies, device_error
     from rdisc.engine.robot import Calls, Robot, State
     from rdisc.engine.sensing import SensorCache, Sensors
     from rdisc.engine.signals import (
@@ -137,6 +138,7 @@ if TYPE_CHECKING:  # at run time each name is imported when it is first asked fo
         command_line,
         without_signals,
     )
+    from rdisc.engine.telling import Telling
     from rdisc.engine.values import (
         Args,
         ErrorCallback,
@@ -260,6 +262,7 @@ __all__ = [
     "Reader",
     "Recorder",
     "Records",
+    "Replies",
     "Reply",
     "Request",
     "Robot",
@@ -278,6 +281,7 @@ __all__ = [
     "SubPayloads",
     "TaggedReply",
     "TaggedStream",
+    "Telling",
     "Topic",
     "TraceCallback",
     "Unbound",
