@@ -44,7 +44,7 @@ if TYPE_CHECKING:  # at run time each name is imported when it is first asked fo
         RdisValueError,
         nearest,
     )
-    from rdisc.engine.exchange import Exchange, device_error
+    from rdisc.engine.exchange import Exchange
     from rdisc.engine.frames import Frame, Wrap
     from rdisc.engine.kalman import FilterPlan, KalmanFilter
     from rdisc.engine.matrices import (
@@ -127,6 +127,7 @@ if TYPE_CHECKING:  # at run time each name is imported when it is first asked fo
         ros_message,
         session_topics,
     )
+    from rdisc.engine.replies import Replies, device_error
     from rdisc.engine.robot import Calls, Robot, State
     from rdisc.engine.sensing import SensorCache, Sensors
     from rdisc.engine.signals import (
@@ -138,6 +139,7 @@ if TYPE_CHECKING:  # at run time each name is imported when it is first asked fo
         command_line,
         without_signals,
     )
+    from rdisc.engine.telling import Telling
     from rdisc.engine.values import (
         Args,
         ErrorCallback,
@@ -261,6 +263,7 @@ __all__ = [
     "Reader",
     "Recorder",
     "Records",
+    "Replies",
     "Reply",
     "Request",
     "Robot",
@@ -279,6 +282,7 @@ __all__ = [
     "SubPayloads",
     "TaggedReply",
     "TaggedStream",
+    "Telling",
     "Topic",
     "TraceCallback",
     "Unbound",

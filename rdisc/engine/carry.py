@@ -32,6 +32,8 @@ MODULES = (
     ("ports", "ports, a simulated device"),
     ("signals", "SIGINT, SIGTERM, exit statuses"),
     ("schedule", "a connection's thread"),
+    ("telling", "callbacks told, one at a time"),
+    ("replies", "replies read, post-actions run"),
     ("exchange", "writing and reading"),
     ("sensing", "sensors' cached values"),
     ("robot", "lifecycle and public face"),
