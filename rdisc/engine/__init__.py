@@ -129,6 +129,7 @@ if TYPE_CHECKING:  # at run time each name is imported when it is first asked fo
     )
     from rdisc.engine.replies import Replies, device_error
     from rdisc.engine.robot import Calls, Robot, State
+    from rdisc.engine.running import Running
     from rdisc.engine.sensing import SensorCache, Sensors
     from rdisc.engine.signals import (
         EXIT_ERROR,
@@ -267,6 +268,7 @@ __all__ = [
     "Reply",
     "Request",
     "Robot",
+    "Running",
     "Sensor",
     "SensorCache",
     "Sensors",

@@ -36,6 +36,7 @@ MODULES = (
     ("replies", "replies read, post-actions run"),
     ("exchange", "writing and reading"),
     ("sensing", "sensors' cached values"),
+    ("running", "the plans run"),
     ("robot", "lifecycle and public face"),
     ("recording", "sessions in MCAP"),
     ("command", "the command line"),
