@@ -393,8 +393,9 @@ def printable(data: bytes) -> str:
 
 
 def _parse(text: str | bytes) -> Any:
-    """A page's message as JSON, refused (ValueError) when it nests deeper than MAX_DEPTH: the
-    depth is counted before parsing, so no message can exhaust the parser's recursion."""
+    """A page's message as JSON, refused (ValueError) when it nests deeper than MAX_DEPTH (the
+    depth is counted before parsing, so no message can exhaust the parser's recursion) or holds a
+    number that is not finite."""
     chars = text.decode("utf-8", "replace") if isinstance(text, bytes) else text
     depth, quoted, escaped = 0, False, False
     for char in chars:
@@ -413,7 +414,18 @@ def _parse(text: str | bytes) -> Any:
                 raise ValueError(f"a call nests its values at most {MAX_DEPTH} deep")
         elif char in "]}":
             depth -= 1
-    return json.loads(text)
+    return json.loads(text, parse_constant=_not_finite, parse_float=_finite)
+
+
+def _not_finite(word: str) -> float:
+    """Python's JSON reader takes NaN and Infinity, which are not JSON: echoed as a call's id they
+    made an answer no page can read."""
+    raise ValueError(f"a call's numbers are finite: {word} is not")
+
+
+def _finite(word: str) -> float:
+    number = float(word)
+    return number if math.isfinite(number) else _not_finite(word)
 
 
 def _refused(text: str | bytes) -> dict[str, Any]:

@@ -12,12 +12,15 @@ is read before its document's next check starts.
 from __future__ import annotations
 
 import asyncio
+import logging
 import sys
 import threading
 from collections.abc import Callable, Generator
+from concurrent.futures import Future
 from typing import Any, BinaryIO, TypeVar
 from urllib.parse import unquote
 
+import cattrs
 from lsprotocol import types
 from pygls.exceptions import JsonRpcException, JsonRpcInvalidParams
 from pygls.io_ import StdoutWriter
@@ -34,13 +37,38 @@ from rdisc.syntax.parse import MAX_FILE_CHARS
 
 T = TypeVar("T")
 
+_log = logging.getLogger(__name__)
+
 MAX_OPEN_CHARS = 4 * MAX_FILE_CHARS  # of all the open documents together: four at the parser's limit
 
 
 class Protocol(LanguageServerProtocol):
     """pygls's protocol, ignoring (with a line in the client's log) a change to a document that is
     not open, where pygls's KeyError reached the editor as a server error, and following no
-    document past what the open documents may hold together (`MAX_OPEN_CHARS`)."""
+    document past what the open documents may hold together (`MAX_OPEN_CHARS`). A refusal the
+    server means (a JSON-RPC error: a document that is not open, a rename refused, parameters
+    that do not fit their types) is one line in the server's log: pygls wrote each one's traceback
+    to stderr, as if it were a fault of the server."""
+
+    def structure_message(self, data: Any) -> Any:
+        method = data.get("method") if isinstance(data, dict) else None
+        kind = self.get_message_type(method) if isinstance(method, str) else None
+        if kind is None:
+            return super().structure_message(data)
+        try:  # the transport answers a refusal with where the parameters do not fit
+            return self._converter.structure(data, kind)
+        except cattrs.BaseValidationError as error:
+            _log.warning("%s refused: its parameters do not fit their types", method)
+            raise error from None
+
+    def _send_handler_result(self, future: Future[Any], *, msg_id: Any) -> None:
+        refusal = None if future.cancelled() else future.exception()
+        if not isinstance(refusal, JsonRpcException):
+            super()._send_handler_result(future, msg_id=msg_id)
+            return
+        self._request_futures.pop(msg_id, None)
+        _log.warning("request %s refused: %s", msg_id, refusal.message)
+        self._send_response(msg_id, error=refusal.to_response_error())
 
     @lsp_method(types.TEXT_DOCUMENT_DID_OPEN)
     def lsp_text_document__did_open(self, params: types.DidOpenTextDocumentParams) -> Generator[Any, Any, None]:

@@ -212,11 +212,14 @@ class Bridge:
 
     def subscriber(self, w: Writer) -> None:
         """`subscriber(name, read)`: an input's message callback for either ROS, which calls the
-        input with the message's values and reports what fails (the node keeps serving)."""
+        input with the message's values and reports what fails (the node keeps serving). The values
+        pass the engine's reader of values from outside (`call_values`), as a console's or a
+        recording's do: a NaN or infinite number, an int past 64 bits, an array of the wrong length
+        is refused naming its field, where a Twist of inf drove the robot at full speed."""
         with w.block("def subscriber(name: str, read: Callable[[Any], dict[str, Any]]) -> Callable[[Any], None]:"):
             with w.block("def received(msg: Any) -> None:"):
                 with w.block("try:"):
-                    w.line("robot.call_input(name, **read(msg))")
+                    w.line('robot.call_input(name, **call_values(_DEVICE, "input", name, read(msg)))')
                 with w.block("except Exception as err:  # noqa: BLE001 - reported, and the node keeps serving"):
                     w.line("on_error(err)")
             w.line("return received")

@@ -162,6 +162,7 @@ class _Ros2Node:
         """Cyclone's callbacks for a reader or writer of `topic` (called as it is being made, too):
         QoS mismatches reported, messages queued for `received`."""
         from cyclonedds.core import Listener
+        from cyclonedds.internal import InvalidSample
 
         def mismatch(status: Any, what: str) -> None:
             policy = _ROS2_POLICIES.get(status.last_policy_id, f"QoS policy {status.last_policy_id}")
@@ -171,7 +172,8 @@ class _Ros2Node:
         def available(reader: Any) -> None:
             assert received is not None
             for msg in reader.take(N=100):
-                self.received.put((received, msg))
+                if not isinstance(msg, InvalidSample):  # a writer left or disposed: no message, no data
+                    self.received.put((received, msg))
 
         return Listener(  # type: ignore[no-untyped-call]
             on_offered_incompatible_qos=lambda _writer, status: mismatch(

@@ -266,3 +266,21 @@ def test_the_stop_of_the_last_page_closing_is_told_while_the_console_holds_the_p
         assert bytes(port.written) == b"\x00\x01"
     finally:
         robot.close()
+
+
+@pytest.mark.parametrize("text", [
+    '{"id": NaN, "kind": "interface", "name": "go", "values": {}}',
+    '{"id": 1, "kind": "interface", "name": "go", "values": {"speed": Infinity}}',
+    '{"id": 1e999, "kind": "raw", "hex": "00"}',
+    '{"id": -Infinity, "kind": "raw", "hex": "00"}',
+])
+def test_a_number_json_cannot_hold_is_refused_and_the_answer_is_json(console, text) -> None:
+    """Python's JSON reader takes NaN, Infinity and 1e999 (as inf); echoed as the call's id they
+    made an answer no page can read (`JSON.parse` refuses NaN)."""
+    robot_console, port, _ = console
+    answer = robot_console.call(text)
+    word = next(w for w in ("NaN", "-Infinity", "Infinity", "1e999") if w in text)
+    assert answer == {"type": "result", "id": None, "ok": False, "error": "ValueError",
+                      "message": f"a call's numbers are finite: {word} is not"}
+    json.dumps(answer, allow_nan=False)
+    assert bytes(port.written) == b""

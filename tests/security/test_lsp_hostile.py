@@ -235,3 +235,28 @@ def test_the_open_documents_hold_a_bounded_number_of_characters_together(tmp_pat
     lone.still_answers()
     lone.process.kill()
     lone.process.wait()
+
+
+def test_an_expected_refusal_is_one_line_in_the_servers_log_not_a_traceback(client: Client) -> None:
+    """pygls wrote the traceback of every refusal the server meant (a document that is not open,
+    parameters that do not fit, a rename refused) to stderr: each is one line there now, and the
+    client's error is the same."""
+    client.notify("textDocument/didOpen", {"textDocument": {"uri": "file:///quiet.rdis", "languageId": "rdis",
+                                                            "version": 1, "text": BOT}})
+    options = {"tabSize": 4, "insertSpaces": True}
+    assert error_of(client.ask("textDocument/formatting", {"textDocument": {"uri": "file:///etc/hostname"},
+                                                           "options": options})) == {
+        "code": -32602, "message": "file:///etc/hostname is not open"}
+    assert error_of(client.ask("textDocument/rename", {"textDocument": {"uri": "file:///never/opened"},
+                                                       "position": {"line": 0, "character": 0},
+                                                       "newName": "b"}))["message"] == \
+        "file:///never/opened is not open"
+    assert error_of(client.ask("textDocument/rename", {"textDocument": {"uri": "file:///quiet.rdis"},
+                                                       "position": {"line": 1, "character": 7},
+                                                       "newName": "9"}))["code"] == -32803
+    assert error_of(client.ask("textDocument/hover", {"textDocument": {"uri": "file:///quiet.rdis"},
+                                                      "position": {"line": -1, "character": 0}}))["code"] == -32602
+    client.still_answers()
+    logged = client.logged().decode(errors="replace")
+    assert "Traceback" not in logged
+    assert "file:///etc/hostname is not open" in logged  # one line, to say what was refused
