@@ -39,13 +39,13 @@ _STYLE = {
 
 
 def spaced(before: Leaf | None, after: Leaf) -> bool:
-    """Whether one space separates two tokens on a line: none inside brackets, before `,`, `:`
+    """Whether one space separates two tokens on a line: none inside brackets, before `,`, `;`, `:`
     and after a prefix operator, around `.` and `..` (but `over a .. b`), before the `(` of a call
     and the `[` of an index."""
     if before is None:
         return False
     first, then = before.text, after.text
-    if then in (",", ")", "]", ":") or first in ("(", "[") or "." in (first, then):
+    if then in (",", ";", ")", "]", ":") or first in ("(", "[") or "." in (first, then):
         return False
     if before.rule == "prefixed" and before.kind in ("ADD_OP", "UNARY_OP"):
         return False

@@ -235,6 +235,11 @@ def test_spacing_around_operators_brackets_and_commas(written: str, formatted: s
     assert format_text(f"state s: int = {written}\n") == f"state s: int = {formatted}\n"
 
 
+def test_the_rows_of_a_noise_matrix_are_written_as_the_printer_writes_them() -> None:
+    assert format_text("state p: int[2] = [0, 0] noise [1 , 0.5 ;0.5, 4]\n") == (
+        "state p: int[2] = [0, 0] noise [1, 0.5; 0.5, 4]\n")
+
+
 def test_a_block_written_on_one_line_stays_on_one_line_when_it_fits_and_spreads_otherwise() -> None:
     one_line = 'robot r { author "me"  version "1" }\nenum Op { ping = 1, read = 2 }\nconst T = { 1: 2, 3: 4 }\n'
     assert format_text('robot r {author "me"  version "1"}\nenum Op {ping = 1, read = 2,}\nconst T = {1: 2, 3: 4}\n') == (
