@@ -4,12 +4,14 @@ The layout of each construct is the printer's: 4-space indents; a block (`robot`
 `frame`, `interface`, an enum, a table, a reply table, ...) one item a line, `head {}` when empty;
 a primitive on one line when it fits in `WIDTH` columns, else one clause a line; post-actions
 `{ a = 1 }` inline when there is one, as a block when there are more; the parts inside `optional`,
-`either` and `bits` on one line, two spaces apart; an enum's members and a table's entries one a
-line, each with its comma. The one-line rule (`_one_line`): a block, an enum or a table written
+`either` and `bits` on one line, two spaces apart, as a block when that line is longer than
+`WIDTH` (and an `either` longer than that has each `or` start a line); an enum's members and a
+table's entries one a line, each with its comma. The one-line rule (`_one_line`): a block, an enum or a table written
 on one line, no comment inside, stays on one line when it fits (the writer's choice, which
 formatting again keeps). The one wrapping rule (`_fit`) generalises the printer's for a call
 statement: a line longer than `WIDTH` has one bracketed list spread one item a line, or, with
-none to spread, breaks before the `else`s, `or`s or `and`s of its outermost expression.
+none to spread, breaks before the `else`s, `or`s or `and`s of its outermost expression, or
+where the writer broke it before other operators (a long arithmetic expression).
 
 Comments decide only where lines break: a construct with a comment inside takes its several-line
 form; an own-line comment is written on its own line before its token; a trailing comment ends
@@ -37,13 +39,13 @@ _STYLE = {
 
 
 def spaced(before: Leaf | None, after: Leaf) -> bool:
-    """Whether one space separates two tokens on a line: none inside brackets, before `,`, `:`
+    """Whether one space separates two tokens on a line: none inside brackets, before `,`, `;`, `:`
     and after a prefix operator, around `.` and `..` (but `over a .. b`), before the `(` of a call
     and the `[` of an index."""
     if before is None:
         return False
     first, then = before.text, after.text
-    if then in (",", ")", "]", ":") or first in ("(", "[") or "." in (first, then):
+    if then in (",", ";", ")", "]", ":") or first in ("(", "[") or "." in (first, then):
         return False
     if before.rule == "prefixed" and before.kind in ("ADD_OP", "UNARY_OP"):
         return False
@@ -161,6 +163,12 @@ def emit(out: Writer, item: Child) -> None:
     if special is not None:
         special(out, item)
         return
+    _generic(out, item)
+
+
+def _generic(out: Writer, item: Node) -> None:
+    """A rule's children in the common layout: the text before its braces fitted (`_fit`), the
+    braces' items laid out in the rule's style."""
     children = item.children
     braces = [i for i, c in enumerate(children) if isinstance(c, Leaf) and c.text in ("{", "}")]
     first, last = (braces[0], braces[-1]) if braces else (len(children), len(children))
@@ -244,8 +252,19 @@ def _fit(out: Writer, children: list[Child], rule: str = "") -> None:
         out.spread.add(chosen)
         return
     level = (out.fresh if out.fresh is not None else out.level) + 1
-    for leaf in _operators(Node(rule, children)):
+    for leaf in _breaks(Node(rule, children)):
         out.breaks[id(leaf)] = level
+
+
+def _breaks(line: Node) -> list[Leaf]:
+    """Where a line too long for WIDTH with no list to spread breaks: where the writer broke it when
+    that was before an operator no rule chooses (as in a long arithmetic expression), else before
+    `_operators`' operators and the `else`s, `or`s and `and`s the writer started a line with."""
+    written = [leaf for leaf in line.leaves() if leaf.broken and leaf.rule in ("chain", "conditional")
+               and leaf.kind in _BINARY]
+    if any(leaf.kind not in ("ELSE", "OR", "AND") for leaf in written):
+        return written
+    return _operators(line) + written
 
 
 _LOWEST = (("conditional", "ELSE"), ("chain", "OR"), ("chain", "AND"))  # arithmetic stays on its line
@@ -277,6 +296,7 @@ def _operators(line: Node) -> list[Leaf]:
     return []
 
 
+_BINARY = ("ELSE", "OR", "AND", "COMP_OP", "IN", "BAR", "CARET", "AMP", "SHIFT_OP", "ADD_OP", "MUL_OP", "POW")
 _END = Leaf("", "$END", "", 0, 0)
 _LISTS = ("args", "params")
 
@@ -300,13 +320,10 @@ def _braced(out: Writer, opening: Child, items: list[Child], closing: Child, sty
         style = _LIST if any(isinstance(i, Leaf) and i.text == "," for i in items) else _BLOCK
     elif style == _ACTIONS:
         style = _BLOCK
+    if style == _INLINE and out.comments and not _inline_fits(out, opening, items, closing):
+        style = _BLOCK  # a run too long for its line: one part a line
     if style == _INLINE:
-        out.put(opening)
-        for i, item in enumerate(items):
-            if i and isinstance(item, Node) and isinstance(items[i - 1], Node):
-                out.space = 2  # parts of a run, one after another
-            emit(out, item)
-        out.put(closing)
+        _inline(out, opening, items, closing)
         return
     if not items and not inner:
         out.put(opening)
@@ -332,6 +349,25 @@ def _braced(out: Writer, opening: Child, items: list[Child], closing: Child, sty
             out.begin(level + 1)
             emit(out, item)
     out.close(closing, level)
+
+
+def _inline(out: Writer, opening: Leaf, items: list[Child], closing: Leaf) -> None:
+    out.put(opening)
+    for i, item in enumerate(items):
+        if i and isinstance(item, Node) and isinstance(items[i - 1], Node):
+            out.space = 2  # parts of a run, one after another
+        emit(out, item)
+    out.put(closing)
+
+
+def _inline_fits(out: Writer, opening: Leaf, items: list[Child], closing: Leaf) -> bool:
+    """Whether a run on one line (`{ header "\\xAA"  payload }`) ends within WIDTH columns."""
+    scratch = Writer(comments=False)
+    scratch.started, scratch.last = True, out.last
+    scratch.text = " " * out.column() if out.fresh is not None else out.text
+    _inline(scratch, opening, items, closing)
+    lines = scratch.finish(_END)
+    return len(lines) == 1 and len(lines[0]) <= WIDTH
 
 
 def _one_line(out: Writer, opening: Leaf, items: list[Child], closing: Leaf, style: str) -> bool:
@@ -403,6 +439,20 @@ def _clauses(out: Writer, node: Node, head: int, wrapped: bool) -> None:
         emit(out, clause)
 
 
+def _either(out: Writer, node: Node) -> None:
+    """On one line when it fits, else each `or` starting a line at the `either`'s level (a run
+    still too long for its line then one part a line)."""
+    if out.comments and out.fresh is not None and _widest(node, out.fresh, _generic) > WIDTH:
+        level = out.fresh
+        for child in node.children:
+            if isinstance(child, Leaf) and child.kind == "OR":
+                out.begin(level)
+            emit(out, child)
+        return
+    _generic(out, node)
+
+
 _RULES: dict[str, Callable[[Writer, Node], None]] = {
     "primitive_decl": _primitive,
+    "f_either": _either,
 }

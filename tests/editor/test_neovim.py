@@ -22,6 +22,7 @@ from pathlib import Path
 import pytest
 
 from rdisc.format import format_text
+from tests.support.editors import unformatted_arm
 
 ROOT = Path(__file__).resolve().parents[2]
 HERE = Path(__file__).resolve().parent
@@ -54,7 +55,7 @@ def test_neovim_with_the_readme_lines_shows_a_misspelt_primitive(tmp_path: Path)
         if ON_CI:
             pytest.fail(reason, pytrace=False)
         pytest.skip(reason)
-    arm = (ROOT / "examples" / "arm.rdis").read_text(encoding="utf-8")
+    arm = unformatted_arm()
     assert arm.count("{ sync_read_present() }") == 1
     document = tmp_path / "arm.rdis"
     document.write_text(arm.replace("{ sync_read_present() }", "{ sync_read_presnt() }"), encoding="utf-8")

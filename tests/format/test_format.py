@@ -235,6 +235,11 @@ def test_spacing_around_operators_brackets_and_commas(written: str, formatted: s
     assert format_text(f"state s: int = {written}\n") == f"state s: int = {formatted}\n"
 
 
+def test_the_rows_of_a_noise_matrix_are_written_as_the_printer_writes_them() -> None:
+    assert format_text("state p: int[2] = [0, 0] noise [1 , 0.5 ;0.5, 4]\n") == (
+        "state p: int[2] = [0, 0] noise [1, 0.5; 0.5, 4]\n")
+
+
 def test_a_block_written_on_one_line_stays_on_one_line_when_it_fits_and_spreads_otherwise() -> None:
     one_line = 'robot r { author "me"  version "1" }\nenum Op { ping = 1, read = 2 }\nconst T = { 1: 2, 3: 4 }\n'
     assert format_text('robot r {author "me"  version "1"}\nenum Op {ping = 1, read = 2,}\nconst T = {1: 2, 3: 4}\n') == (
@@ -259,3 +264,62 @@ def test_a_long_expression_with_no_list_to_spread_breaks_before_its_lowest_prece
         f"    and (flag_{n} or other_{n})\n" for n in range(1, 6))
     short = "const B = 1 if a else 2 if b else 3\n"
     assert format_text(short) == short
+
+
+SHIPPED = sorted({*FILES, *(ROOT / "docs").rglob("*.rdis"), *(ROOT / "stdlib").rglob("*.rdis")})
+
+
+def test_every_shipped_description_is_already_in_the_layout() -> None:
+    """An engineer who opens an example and formats it sees nothing move: `rdisc fmt --check`
+    passes on every .rdis the project ships (examples, docs, the standard library)."""
+    unformatted = [path.name for path in SHIPPED if format_text(text := path.read_text(encoding="utf-8"),
+                                                                str(path)) != text]
+    assert len(SHIPPED) >= 22 and unformatted == []
+
+
+FRAME = 'frame f(mode: int in 0..2, code: int in 0x80..0xFF) {{\n    request {{\n        {}\n    }}\n}}\n'
+EITHER = ('either when mode == 0 { field code "B" = code  payload } or when mode == 1 { header "\\xAA"'
+          '  field code "B" = code & 0x7F  payload } or { header "\\xAA"  field code "B" = code & 0x7F  payload'
+          '  checksum "crc" "B" width 7 poly 0x09 reflect over header .. payload }')
+
+
+def test_an_either_too_long_for_its_line_starts_each_or_on_a_line_and_a_long_run_takes_one_part_a_line() -> None:
+    text = FRAME.format(EITHER)
+    formatted = FRAME.format(
+        'either when mode == 0 { field code "B" = code  payload }\n'
+        '        or when mode == 1 { header "\\xAA"  field code "B" = code & 0x7F  payload }\n'
+        '        or {\n'
+        '            header "\\xAA"\n'
+        '            field code "B" = code & 0x7F\n'
+        '            payload\n'
+        '            checksum "crc" "B" width 7 poly 0x09 reflect over header .. payload\n'
+        '        }')
+    assert format_text(text) == formatted
+    assert format_text(formatted) == formatted
+    same_meaning(ROOT / "examples" / "t.rdis", text, formatted)
+    fitting = FRAME.format('either when mode == 0 { payload } or { header "\\xAA"  payload }')
+    assert format_text(fitting) == fitting
+
+
+def test_post_actions_too_long_for_their_line_are_a_block() -> None:
+    values = ", ".join(f"out[{n}]" for n in range(10))
+    text = f'connection link: serial {{}}\nprimitive p() on link pack "B" (1) unpack "<10B" {{ channels = [{values}] }}\n'
+    formatted = ('connection link: serial {}\nprimitive p()\n    on link\n    pack "B" (1)\n'
+                 f'    unpack "<10B" {{\n        channels = [{values}]\n    }}\n')
+    assert format_text(text) == formatted
+    assert format_text(formatted) == formatted
+    same_meaning(ROOT / "examples" / "t.rdis", text, formatted)
+
+
+def test_a_long_arithmetic_expression_keeps_the_line_breaks_its_writer_chose() -> None:
+    products = [f"weight_{i} * int(reading_{i})" for i in range(6)]
+    written = f"output o: A {{\n    total = {products[0]} + {products[1]} + {products[2]}\n" + "".join(
+        f"      + {product}\n" for product in products[3:]) + "}\n"
+    kept = f"output o: A {{\n    total = {products[0]} + {products[1]} + {products[2]}\n" + "".join(
+        f"        + {product}\n" for product in products[3:]) + "}\n"
+    assert format_text(written) == kept
+    assert format_text(kept) == kept
+    one_line = f"output o: A {{\n    total = {' + '.join(products)}\n}}\n"
+    assert format_text(one_line) == one_line
+    short = "output o: A {\n    total = a\n        + b\n}\n"
+    assert format_text(short) == "output o: A {\n    total = a + b\n}\n"

@@ -21,7 +21,9 @@ ROOT = Path(__file__).resolve().parents[2]
 EXAMPLE_ARM = ROOT / "examples" / "arm.rdis"
 JAW = """    visual box(0.02, 0.004, 0.06) at [0, 0, 0.03]
     collision box(0.02, 0.004, 0.06) at [0, 0, 0.03]
-    mass 0.02  centre [0, 0, 0.03]  inertia [0.00000603, 0.00000667, 0.000000693]"""
+    mass 0.02
+    centre [0, 0, 0.03]
+    inertia [0.00000603, 0.00000667, 0.000000693]"""
 HORN = """    visual box(0.004, 0.004, 0.03) at [0, 0, 0.015]
     collision box(0.004, 0.004, 0.03) at [0, 0, 0.015]
     mass 0.005  centre [0, 0, 0.015]  inertia [0.000000381, 0.000000381, 0.0000000133]"""

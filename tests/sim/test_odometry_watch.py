@@ -53,7 +53,7 @@ def test_an_odometry_with_a_wrong_wheel_radius_is_warned_of_once(tmp_path: Path)
 
 
 def test_declared_noise_widens_what_counts_as_agreeing(tmp_path: Path) -> None:
-    noisy = _variant(tmp_path, (RIGHT, WRONG), SCALED, ("angular = odom_angular }", ('angular = odom_angular\n'
+    noisy = _variant(tmp_path, (RIGHT, WRONG), SCALED, ("angular = odom_angular\n}", ('angular = odom_angular\n'
                                                  '    noise x 0.05 "m"  noise y 0.05 "m" }')))
     done = run_rdisc("sim", noisy, *DRIVE)
     assert (done.returncode, done.stderr) == (0, "")

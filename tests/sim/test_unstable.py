@@ -19,8 +19,8 @@ from tests.conftest import run_rdisc
 
 ROOT = Path(__file__).resolve().parents[2]
 CREATE2 = (ROOT / "examples" / "create2.rdis").read_text(encoding="utf-8")
-WHEEL = "mass 0.15  inertia [0.0000536, 0.0000972, 0.0000536]"
-JOINTS = "velocity 13.8 effort 0.5"
+WHEEL = "mass 0.15\n    inertia [0.0000536, 0.0000972, 0.0000536]"
+JOINTS = "velocity 13.8\n    effort 0.5"
 
 
 def _codes(text: str) -> list[tuple[str, str]]:

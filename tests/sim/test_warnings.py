@@ -86,8 +86,9 @@ def test_a_link_never_touches_its_parent_even_one_welded_to_the_world() -> None:
 def test_a_joint_faster_than_its_velocity_is_one_warning() -> None:
     """The arm's shoulder said to move at 0.05 rad/s: its simulated servo swings it to 1 rad far faster."""
     text = ARM.read_text(encoding="utf-8")
-    line = next(x for x in text.splitlines() if x.startswith("joint shoulder:"))
-    text = text.replace(line, line.replace("velocity SPEED", "velocity 0.05"), 1)
+    start = text.index("joint shoulder:")
+    end = text.index("}", start)  # the joint's block
+    text = text[:start] + text[start:end].replace("velocity SPEED", "velocity 0.05", 1) + text[end:]
     compilation = compile_text("slow.rdis", text)
     assert compilation.model is not None, [d.message for d in compilation.diagnostics.items]
     sim = Simulation(compilation.model)

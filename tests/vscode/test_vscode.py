@@ -26,6 +26,7 @@ from typing import Any
 import pytest
 
 from rdisc.format import format_text
+from tests.support.editors import unformatted_arm
 
 ROOT = Path(__file__).resolve().parents[2]
 HERE = Path(__file__).resolve().parent
@@ -105,7 +106,7 @@ def code_server(tmp_path: Path) -> Iterator[tuple[str, Path]]:
         missing("Debian's chromium is not installed (apt-get install chromium)")
     workspace = tmp_path / "workspace"
     workspace.mkdir()
-    arm = (ROOT / "examples" / "arm.rdis").read_text(encoding="utf-8")
+    arm = unformatted_arm()
     assert arm.count("{ sync_read_present() }") == 1
     (workspace / "arm.rdis").write_text(arm.replace("{ sync_read_present() }", "{ sync_read_presnt() }"),
                                         encoding="utf-8")
@@ -122,7 +123,7 @@ def test_vscode_with_the_readme_install_shows_a_misspelt_primitive(code_server: 
     expect = playwright_api.Expect()  # one of its own: its timeout is not every other test's
     expect.set_options(timeout=WAIT_MS)
     url, document = code_server
-    arm = (ROOT / "examples" / "arm.rdis").read_text(encoding="utf-8")
+    arm = unformatted_arm()
     lines = arm.splitlines()
     call = lines.index("interface read_joints() periodic triggers joints { sync_read_present() }")
     column = lines[call].index("sync_read_present")

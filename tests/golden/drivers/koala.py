@@ -5844,7 +5844,7 @@ _P_SET_POSITION = Primitive(
 )
 
 
-# koala.rdis:109  primitive read_position
+# koala.rdis:112  primitive read_position
 def _p_read_position_values(state: StateValues, args: Args) -> Args:
     return []
 
@@ -5950,7 +5950,7 @@ _P_READ_POSITION = Primitive(
 )
 
 
-# koala.rdis:125  primitive read_proximity
+# koala.rdis:135  primitive read_proximity
 def _p_read_proximity_values(state: StateValues, args: Args) -> Args:
     return []
 
@@ -5994,7 +5994,7 @@ _P_READ_PROXIMITY = Primitive(
 )
 
 
-# koala.rdis:179  output odometry: Odometry
+# koala.rdis:209  output odometry: Odometry
 def _o_odometry(state: StateValues) -> dict[str, Value]:
     return {
         "x": state["odomX"],
@@ -6008,7 +6008,7 @@ def _o_odometry(state: StateValues) -> dict[str, Value]:
 _O_ODOMETRY = Output("odometry", _o_odometry, "Odometry")
 
 
-# koala.rdis:190  output obstacle: Range
+# koala.rdis:220  output obstacle: Range
 def _o_obstacle(state: StateValues) -> dict[str, Value]:
     return {"distance": 0.0 if state["proximity"] >= state["obstacleThreshold"] else 1.0}
 
@@ -6016,13 +6016,13 @@ def _o_obstacle(state: StateValues) -> dict[str, Value]:
 _O_OBSTACLE = Output("obstacle", _o_obstacle, "Range")
 
 
-# koala.rdis:139  interface startup
-# koala.rdis:140  call set_speed
+# koala.rdis:167  interface startup
+# koala.rdis:168  call set_speed
 def _i_startup_1(state: StateValues, args: Args) -> Args:
     return [0, 0]
 
 
-# koala.rdis:141  call set_position
+# koala.rdis:169  call set_position
 def _i_startup_2(state: StateValues, args: Args) -> Args:
     return [0, 0]
 
@@ -6034,8 +6034,8 @@ _I_STARTUP = Interface(
 )
 
 
-# koala.rdis:145  interface shutdown
-# koala.rdis:146  call set_speed
+# koala.rdis:173  interface shutdown
+# koala.rdis:174  call set_speed
 def _i_shutdown_1(state: StateValues, args: Args) -> Args:
     return [0, 0]
 
@@ -6043,8 +6043,8 @@ def _i_shutdown_1(state: StateValues, args: Args) -> Args:
 _I_SHUTDOWN = Interface("shutdown", (), (Call(_P_SET_SPEED, _i_shutdown_1, 0.0, direct=True),))
 
 
-# koala.rdis:151  interface drive
-# koala.rdis:152  call set_speed
+# koala.rdis:179  interface drive
+# koala.rdis:180  call set_speed
 def _i_drive_1(state: StateValues, args: Args) -> Args:
     left, right = args
     return [
@@ -6060,13 +6060,13 @@ _I_DRIVE = Interface(
 )
 
 
-# koala.rdis:158  interface update_odometry (periodic)
-# koala.rdis:159  call read_speed
+# koala.rdis:188  interface update_odometry (periodic)
+# koala.rdis:189  call read_speed
 def _i_update_odometry_1(state: StateValues, args: Args) -> Args:
     return []
 
 
-# koala.rdis:160  call read_position
+# koala.rdis:190  call read_position
 def _i_update_odometry_2(state: StateValues, args: Args) -> Args:
     return []
 
@@ -6079,8 +6079,8 @@ _I_UPDATE_ODOMETRY = Interface(
 )
 
 
-# koala.rdis:164  interface update_proximity (periodic)
-# koala.rdis:165  call read_proximity
+# koala.rdis:194  interface update_proximity (periodic)
+# koala.rdis:195  call read_proximity
 def _i_update_proximity_1(state: StateValues, args: Args) -> Args:
     return []
 
@@ -6093,7 +6093,7 @@ _I_UPDATE_PROXIMITY = Interface(
 )
 
 
-# koala.rdis:173  input set_velocity: DifferentialSpeed -> drive
+# koala.rdis:203  input set_velocity: DifferentialSpeed -> drive
 def _in_set_velocity(state: StateValues, args: Args) -> Args:
     linear, angular = args
     return [
