@@ -133,43 +133,43 @@ def test_chosen_places_have_exact_scopes(scoped: dict[str, Lines]) -> None:
     assert at("arm.rdis", 19, "Instructions") == (" Instructions of protocol 2.0.", ["comment.line.documentation.rdis"])
     first = "# A six-joint arm of Dynamixel X-series servos (XL430, XM430: protocol 2.0, ROBOTIS"
     assert at("arm.rdis", 1, "A six-joint") == (first, ["comment.line.number-sign.rdis"])
-    assert at("arm.rdis", 20, "0x82") == ("0x82", ["constant.numeric.integer.hexadecimal.rdis"])
-    assert at("arm.rdis", 26, "BROADCAST") == ("BROADCAST", ["entity.name.constant.const.rdis"])
-    assert at("arm.rdis", 33, "3.141592653589793") == ("3.141592653589793", ["constant.numeric.float.rdis"])
-    assert at("arm.rdis", 36, "present") == ("present", ["entity.name.variable.state.rdis"])
-    assert at("arm.rdis", 36, "int") == ("int", ["support.type.rdis"])
-    assert at("arm.rdis", 44, "Hz") == ("Hz", ["keyword.other.unit.rdis"])
-    assert at("arm.rdis", 45, "True") == ("True", ["constant.language.boolean.rdis"])
-    assert at("arm.rdis", 51, r"\xFD") == (r"\xFD", ["string.quoted.double.rdis", "constant.character.escape.rdis"])
+    assert at("arm.rdis", 24, "0x82") == ("0x82", ["constant.numeric.integer.hexadecimal.rdis"])
+    assert at("arm.rdis", 33, "BROADCAST") == ("BROADCAST", ["entity.name.constant.const.rdis"])
+    assert at("arm.rdis", 40, "3.141592653589793") == ("3.141592653589793", ["constant.numeric.float.rdis"])
+    assert at("arm.rdis", 43, "present") == ("present", ["entity.name.variable.state.rdis"])
+    assert at("arm.rdis", 43, "int") == ("int", ["support.type.rdis"])
+    assert at("arm.rdis", 51, "Hz") == ("Hz", ["keyword.other.unit.rdis"])
+    assert at("arm.rdis", 52, "True") == ("True", ["constant.language.boolean.rdis"])
+    assert at("arm.rdis", 58, r"\xFD") == (r"\xFD", ["string.quoted.double.rdis", "constant.character.escape.rdis"])
     # a struct format: its byte order, its codes and their counts
-    assert at("arm.rdis", 74, "pack") == ("pack", ["keyword.other.rdis"])
-    assert at("arm.rdis", 74, "<BHH6(BI)") == ("<", ["string.quoted.double.struct.rdis",
+    assert at("arm.rdis", 83, "pack") == ("pack", ["keyword.other.rdis"])
+    assert at("arm.rdis", 83, "<BHH6(BI)") == ("<", ["string.quoted.double.struct.rdis",
                                                      "keyword.operator.byte-order.rdis"])
-    assert at("arm.rdis", 74, "6(BI)") == ("6", ["string.quoted.double.struct.rdis",
+    assert at("arm.rdis", 83, "6(BI)") == ("6", ["string.quoted.double.struct.rdis",
                                                  "constant.numeric.integer.decimal.rdis"])
-    assert at("arm.rdis", 74, "(BI)") == ("(", ["string.quoted.double.struct.rdis",
+    assert at("arm.rdis", 83, "(BI)") == ("(", ["string.quoted.double.struct.rdis",
                                                 "punctuation.section.group.struct.rdis"])
-    assert at("arm.rdis", 74, "I)") == ("I", ["string.quoted.double.struct.rdis", "constant.character.format.struct.rdis"])
-    assert at("arm.rdis", 85, "error") == ("error", ["variable.other.assignment.rdis"])  # a name here, not `error`
-    assert at("arm.rdis", 85, "out") == ("out", [])  # the reply's values, a name where it is indexed
-    assert at("arm.rdis", 104, "on: bool") == ("on", ["variable.parameter.rdis"])  # a parameter, not `on`
-    assert at("arm.rdis", 104, ") on bus") == (")", ["punctuation.section.parens.end.rdis"])
-    assert at("arm.rdis", 104, "on bus") == ("on", ["keyword.other.rdis"])
-    assert at("ax12.rdis", 158, "limit)") == (" limit", [])  # an argument alone is a name
-    assert at("ax12.rdis", 158, ", limit)") == (",", ["punctuation.separator.comma.rdis"])
-    assert at("arm.rdis", 84, "==") == ("==", ["keyword.operator.rdis"])
-    assert at("arm.rdis", 104, "if") == ("if", ["keyword.control.rdis"])
-    assert at("arm.rdis", 104, "..") == ("..", ["keyword.operator.range.rdis"])
-    assert at("arm.rdis", 112, "clamp") == ("clamp", ["support.function.builtin.rdis"])
-    assert at("arm.rdis", 135, "->") == ("->", ["keyword.operator.arrow.rdis"])
+    assert at("arm.rdis", 83, "I)") == ("I", ["string.quoted.double.struct.rdis", "constant.character.format.struct.rdis"])
+    assert at("arm.rdis", 100, "error") == ("error", ["variable.other.assignment.rdis"])  # a name here, not `error`
+    assert at("arm.rdis", 100, "out") == ("out", [])  # the reply's values, a name where it is indexed
+    assert at("arm.rdis", 122, "on: bool") == ("on", ["variable.parameter.rdis"])  # a parameter, not `on`
+    assert at("arm.rdis", 122, ")") == (")", ["punctuation.section.parens.end.rdis"])
+    assert at("arm.rdis", 123, "on bus") == ("on", ["keyword.other.rdis"])
+    assert at("ax12.rdis", 339, "limit)") == (" limit", [])  # an argument alone is a name
+    assert at("ax12.rdis", 339, ", limit)") == (",", ["punctuation.separator.comma.rdis"])
+    assert at("arm.rdis", 99, "==") == ("==", ["keyword.operator.rdis"])
+    assert at("arm.rdis", 125, "if") == ("if", ["keyword.control.rdis"])
+    assert at("arm.rdis", 122, "..") == ("..", ["keyword.operator.range.rdis"])
+    assert at("arm.rdis", 134, "clamp") == ("clamp", ["support.function.builtin.rdis"])
+    assert at("arm.rdis", 160, "->") == ("->", ["keyword.operator.arrow.rdis"])
     # bytes literals, a format's placeholders, a regular expression, bit fields of a struct code
-    assert at("slcan.rdis", 37, 'b"') == ("b", ["string.quoted.double.bytes.rdis", "storage.type.string.rdis"])
-    assert at("slcan.rdis", 37, 'b"', 1) == ('"', ["string.quoted.double.bytes.rdis",
+    assert at("slcan.rdis", 63, 'b"') == ("b", ["string.quoted.double.bytes.rdis", "storage.type.string.rdis"])
+    assert at("slcan.rdis", 63, 'b"', 1) == ('"', ["string.quoted.double.bytes.rdis",
                                                    "punctuation.definition.string.begin.rdis"])
-    assert at("slcan.rdis", 68, "{:03X}") == ("{:03X}", ["string.quoted.double.format.rdis",
+    assert at("slcan.rdis", 110, "{:03X}") == ("{:03X}", ["string.quoted.double.format.rdis",
                                                          "constant.other.placeholder.rdis"])
-    assert at("slcan.rdis", 68, "hex") == ("hex", ["support.function.builtin.rdis"])
+    assert at("slcan.rdis", 110, "hex") == ("hex", ["support.function.builtin.rdis"])
     assert at("koala.rdis", 85, r"\s") == (r"\s", ["string.regexp.rdis", "constant.character.escape.regexp.rdis"])
-    assert at("crsf.rdis", 59, "{11*16}", 3) == ("*", ["string.quoted.double.struct.rdis", "keyword.operator.struct.rdis"])
-    assert at("crsf.rdis", 59, "22s") == ("22", ["string.quoted.double.struct.rdis",
+    assert at("crsf.rdis", 100, "{11*16}", 3) == ("*", ["string.quoted.double.struct.rdis", "keyword.operator.struct.rdis"])
+    assert at("crsf.rdis", 100, "22s") == ("22", ["string.quoted.double.struct.rdis",
                                                  "constant.numeric.integer.decimal.rdis"])
