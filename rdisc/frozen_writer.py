@@ -24,6 +24,11 @@ PACKAGE = Path(__file__).resolve().parent
 MODULES = {
     "syntax/ast.py": "syntax/ast_methods.py",
     "semantics/model.py": "semantics/model_methods.py",
+    "semantics/model_expressions.py": "semantics/model_expressions_methods.py",
+    "semantics/model_layouts.py": "semantics/model_layouts_methods.py",
+    "semantics/model_frames.py": "semantics/model_frames_methods.py",
+    "semantics/model_elements.py": "semantics/model_elements_methods.py",
+    "semantics/model_body.py": "semantics/model_body_methods.py",
     "source.py": "source_methods.py",
     "diagnostics/core.py": "diagnostics/core_methods.py",
     "diagnostics/codes.py": "diagnostics/codes_methods.py",
@@ -180,7 +185,7 @@ def write(path: Path) -> str:
     classes = [(c.name, _fields(c, named, relative)) for c in tree.body
                if isinstance(c, ast.ClassDef) and any(_is_frozen(d) for d in c.decorator_list)]
     every = [f for _, fields in classes for f in fields]
-    used = ["DEFAULT"] * any(f.default and not f.factory for f in every) + ["FACTORY"] * any(f.factory for f in every)
+    used = ["DEFAULT"] * any(f.default for f in every) + ["FACTORY"] * any(f.factory for f in every)
     used += ["MISSING"] + ["FieldSpec"] * any(f.declared.startswith("FieldSpec") for f in every)
     out = [
         f'"""The methods of the frozen dataclasses of {relative}, written out ahead of time (why: rdisc/frozen.py).',

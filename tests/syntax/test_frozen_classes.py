@@ -15,7 +15,7 @@ from typing import Any
 import pytest
 
 from rdisc import frozen, frozen_writer
-from rdisc.semantics import model
+from rdisc.semantics import model, model_body, model_elements, model_expressions, model_frames, model_layouts
 from rdisc.syntax import ast
 
 PACKAGE = Path(frozen_writer.__file__).resolve().parent
@@ -42,9 +42,18 @@ def standard(module: types.ModuleType, folder: Path, monkeypatch: pytest.MonkeyP
     return made
 
 
-def frozen_classes(module: types.ModuleType) -> list[str]:
-    return [name for name, value in vars(module).items()
+def frozen_classes(*modules: types.ModuleType) -> list[str]:
+    return [name for module in modules for name, value in vars(module).items()
             if isinstance(value, type) and value.__module__ == module.__name__ and dataclasses.is_dataclass(value)]
+
+
+def declared(modules: list[types.ModuleType]) -> dict[str, Any]:
+    """Each frozen class of the modules, by name, from the module that declares it."""
+    return {name: getattr(module, name) for module in modules for name in frozen_classes(module)}
+
+
+# The Model's classes are declared by concern in the modules it re-exports (rdisc/semantics/model.py).
+MODEL = (model_expressions, model_layouts, model_frames, model_elements, model_body, model)
 
 
 def described(fields: tuple[dataclasses.Field[Any], ...]) -> list[tuple[Any, ...]]:
@@ -59,14 +68,15 @@ def outcome(function: Any, *args: Any) -> Any:
         return type(err), str(err)
 
 
-@pytest.mark.parametrize("module", [ast, model], ids=["ast", "model"])
-def test_classes_behave_as_dataclasses_made_them(module: types.ModuleType, tmp_path: Path,
+@pytest.mark.parametrize("modules", [(ast,), MODEL], ids=["ast", "model"])
+def test_classes_behave_as_dataclasses_made_them(modules: tuple[types.ModuleType, ...], tmp_path: Path,
                                                  monkeypatch: pytest.MonkeyPatch) -> None:
-    before = standard(module, tmp_path, monkeypatch)
-    names = frozen_classes(module)
-    assert names == frozen_classes(before) and len(names) > 40
+    before = [standard(module, tmp_path, monkeypatch) for module in modules]
+    names = frozen_classes(*modules)
+    assert names == frozen_classes(*before) and len(names) > 40
+    made, standard_made = declared(list(modules)), declared(before)
     for name in names:
-        mine, theirs = getattr(module, name), getattr(before, name)
+        mine, theirs = made[name], standard_made[name]
         assert "__init__" in mine.__dict__ and mine.__init__.__module__.endswith("_methods"), name  # written
         assert mine.__slots__ == theirs.__slots__ and mine.__match_args__ == theirs.__match_args__, name
         assert described(dataclasses.fields(mine)) == described(dataclasses.fields(theirs)), name
