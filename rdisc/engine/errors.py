@@ -1,5 +1,6 @@
 """The errors a run raises: RdisError, and one subclass for each way a run fails, so that a
-caller handles what it can (a timeout, a reply not as described, a lost port) and the rest alike.
+caller handles what it can (a timeout, a reply not as described, a lost port) and the rest alike;
+and `nearest`, the known name an error's "did you mean" hint offers for a misspelt one.
 """
 
 from __future__ import annotations

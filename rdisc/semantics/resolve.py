@@ -128,11 +128,16 @@ def check_name(name: ast.Ident, what: str, diagnostics: Diagnostics, read: bool 
                            help=f"choose another name, e.g. `{name.text}_value`")
 
 
-def suggest(name: str, candidates: Iterable[str]) -> str | None:
-    """A 'did you mean' help line when a declared name is close."""
+def closest(name: str, candidates: Iterable[str]) -> str | None:
+    """The declared name closest to a misspelt one (the engine's one rule, `nearest`), if any is close."""
     from rdisc.engine.errors import nearest  # only for an unknown name: `check` imports little of the engine
 
-    close = nearest(name, candidates)
+    return nearest(name, candidates)
+
+
+def suggest(name: str, candidates: Iterable[str]) -> str | None:
+    """A 'did you mean' help line when a declared name is close."""
+    close = closest(name, candidates)
     return f"did you mean `{close}`?" if close else None
 
 
@@ -178,9 +183,7 @@ def _declare(unit: Unit, symbols: Symbols, diagnostics: Diagnostics) -> None:
 def _bind(decl: ast.Decl, symbols: Symbols, callables: Mapping[str, object], diagnostics: Diagnostics) -> None:
     def need(ident: ast.Ident, table: Mapping[str, object], what: str) -> None:
         if ident.text not in table and not symbols.is_damaged(what, ident.text):
-            from rdisc.engine.errors import nearest  # only for an unknown name, as in suggest()
-
-            close = nearest(ident.text, table)
+            close = closest(ident.text, table)
             if close:
                 symbols.suggested.add((what, close))
             diagnostics.report(
