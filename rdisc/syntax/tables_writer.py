@@ -8,6 +8,12 @@ state lexer's terminals in Lark's order with the keywords its names may be. rdis
 runs them; Lark still parses a declaration the fast loop leaves (a syntax error), and stays the
 grammar's one source: `python -m rdisc.syntax.tables_writer --check` (and a test) hold the
 written module equal to what Lark makes of the grammar now.
+
+Lark numbers its LALR states in the order it meets them in sets of objects hashed by identity, so
+each interpreter numbers the same states differently (and Lark's cache keeps whichever numbering a
+machine made first). The states are written in an order of their own: breadth first from the start
+states, each state's moves taken by the names of their symbols. The same grammar gives the same
+text on every machine.
 """
 
 from __future__ import annotations
@@ -80,6 +86,21 @@ def _lexer(lexer: Any) -> tuple[tuple[str, ...], dict[str, str]]:
     return tuple(t.name for t in terminals), dict(callbacks["NAME"].types) if callbacks else {}
 
 
+def _canonical_order(table: Any) -> list[int]:
+    """Lark's states in the order they are written: breadth first from the start states (by name),
+    each state's shifts and gotos followed by the names of their symbols."""
+    order = [state for _, state in sorted(table.start_states.items())]
+    seen = set(order)
+    for state in order:  # grows as it goes
+        for _, (action, arg) in sorted(table.states[state].items(), key=lambda item: str(item[0])):
+            if action is Shift and arg not in seen:
+                seen.add(arg)
+                order.append(arg)
+    if len(order) != len(table.states):
+        raise TypeError("parser states that no start state reaches")
+    return order
+
+
 def write() -> str:
     """The text of rdisc/syntax/tables.py for the grammar as it is now."""
     made = lark_parser()
@@ -95,11 +116,13 @@ def write() -> str:
         raise TypeError("states that skip different terminals")
     if sorted(table.states) != list(range(len(table.states))):
         raise TypeError("parser states are not numbered 0 to n - 1")
+    order = _canonical_order(table)
+    number = {state: i for i, state in enumerate(order)}
 
     rules = {rule: i for i, rule in enumerate(lalr.callbacks)}
     lexers: dict[tuple[tuple[str, ...], tuple[tuple[str, str], ...]], int] = {}
     state_lexers = []
-    for state in range(len(table.states)):
+    for state in order:
         terminals, keywords = _lexer(contextual.lexers[state])
         if not set(ignored) <= set(terminals):  # the loop skips what the root's lexer skips, in every state
             raise TypeError(f"state {state} does not skip {', '.join(ignored)}")
@@ -126,12 +149,13 @@ def write() -> str:
     out.append(")\n\n")
     out.append("# Each parser state's actions: on a terminal or a rule's origin, shift to state n (n >= 0),\n"
                "# or reduce by rule ~n (n < 0).\nACTIONS: tuple[dict[str, int], ...] = (\n")
-    for state in range(len(table.states)):
-        row = {str(kind): (arg if action is Shift else ~rules[arg]) for kind, (action, arg) in table.states[state].items()}
+    for state in order:
+        row = {str(kind): (number[arg] if action is Shift else ~rules[arg])
+               for kind, (action, arg) in sorted(table.states[state].items(), key=lambda item: str(item[0]))}
         out.append(f"    {row!r},\n")
     out.append(")\n\n")
-    out.append(f"START = {dict(table.start_states)!r}\n")
-    out.append(f"END = {dict(table.end_states)!r}\n")
+    out.append(f"START = { {start: number[state] for start, state in sorted(table.start_states.items())}!r}\n")
+    out.append(f"END = { {start: number[state] for start, state in sorted(table.end_states.items())}!r}\n")
     return "".join(out)
 
 

@@ -3,6 +3,7 @@ grammar now, and a check of a clean description runs on them alone: Lark is not 
 
 from __future__ import annotations
 
+import os
 import subprocess
 import sys
 from pathlib import Path
@@ -15,6 +16,21 @@ ROOT = Path(__file__).resolve().parents[2]
 def test_the_written_tables_are_what_lark_makes_of_the_grammar() -> None:
     assert tables_writer.TARGET.read_text(encoding="utf-8") == tables_writer.write()
     assert tables_writer.main(["--check"]) == 0
+
+
+def test_the_written_tables_do_not_depend_on_the_interpreter(tmp_path: Path) -> None:
+    """Lark numbers its states by sets hashed by identity: each interpreter its own way. The writer
+    numbers them itself, so two interpreters with other hash seeds, each building Lark's parser
+    afresh (an empty cache folder each), write the same text: the committed one."""
+    probe = "import sys; from rdisc.syntax import tables_writer; sys.stdout.write(tables_writer.write())"
+    texts = []
+    for seed in ("1", "2"):
+        (tmp_path / seed).mkdir()
+        env = {**os.environ, "PYTHONHASHSEED": seed, "TMPDIR": str(tmp_path / seed)}
+        texts.append(subprocess.run([sys.executable, "-c", probe], env=env, capture_output=True, text=True,
+                                    encoding="utf-8", check=True).stdout)
+        assert [path.name.startswith(".lark_cache") for path in (tmp_path / seed).iterdir()] == [True]
+    assert texts[0] == texts[1] == tables_writer.TARGET.read_text(encoding="utf-8")
 
 
 def test_checking_a_clean_description_imports_neither_lark_nor_the_grammar() -> None:
