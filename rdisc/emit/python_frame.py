@@ -66,15 +66,19 @@ _TYPES = {Type.INT: "int", Type.FLOAT: "float", Type.BOOL: "bool", Type.STRING: 
 
 def type_tests(names: list[str], params: tuple[m.Parameter, ...], *, refused: bool) -> list[str]:
     """The test of each value the one step takes: of its parameter's own type (an array a tuple),
-    within its range (bytes by their length); `refused`, the test of a value it does not take."""
+    within its range (bytes by their length; a float without one finite, as the engine's
+    `held_to` says: NaN and the infinities go the general way, which refuses them);
+    `refused`, the test of a value it does not take."""
     tests = []
     for name, prm in zip(names, params):
         kind = _TYPES[prm.type] if isinstance(prm.type, Type) else "tuple"
         test = f"type({name}) is {'not ' if refused else ''}{kind}"
+        joined = "or not" if refused else "and"
         if prm.low is not None and prm.high is not None:
             measured, bound = (f"len({name})", Type.INT) if prm.type == Type.BYTES else (name, prm.type)
-            test += f" {'or not' if refused else 'and'} {literal(prm.low, bound).text} <= {measured} <= " \
-                    f"{literal(prm.high, bound).text}"
+            test += f" {joined} {literal(prm.low, bound).text} <= {measured} <= {literal(prm.high, bound).text}"
+        elif prm.type == Type.FLOAT:
+            test += f" {joined} isfinite({name})"
         tests.append(test)
     return tests
 

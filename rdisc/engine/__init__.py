@@ -151,6 +151,9 @@ if TYPE_CHECKING:  # at run time each name is imported when it is first asked fo
         StateValues,
         TraceCallback,
         Value,
+        held_to,
+        not_finite,
+        one_step_bounds,
     )
     from rdisc.engine.wire import (
         MAX_FRAME,
@@ -303,6 +306,7 @@ __all__ = [
     "device_error",
     "element",
     "fits",
+    "held_to",
     "lookup",
     "lookup_or",
     "made_from",
@@ -315,6 +319,8 @@ __all__ = [
     "matrix_transpose",
     "named_pairs",
     "nearest",
+    "not_finite",
+    "one_step_bounds",
     "parse_call",
     "parse_ports",
     "parse_settings",

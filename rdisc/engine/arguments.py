@@ -8,12 +8,13 @@ from __future__ import annotations
 import math
 import numbers
 from collections.abc import Callable, Mapping
+from math import isfinite
 from typing import Any
 
 from rdisc.engine.errors import RdisValueError
 from rdisc.engine.operations import MAX_INT
 from rdisc.engine.plans import Device, Input, Interface, Primitive
-from rdisc.engine.values import Args, Param, Value, _check_ranges
+from rdisc.engine.values import Args, Param, Value, _check_ranges, not_finite
 
 _KIND_NAMES: dict[type, str] = {int: "int", float: "float", bool: "bool", str: "string", bytes: "bytes"}
 
@@ -21,12 +22,22 @@ _KIND_NAMES: dict[type, str] = {int: "int", float: "float", bool: "bool", str: "
 def _accept(value: Any, kind: type, what: str) -> Any:
     """A value given for a parameter or field of type `kind`, made that type; else TypeError.
 
-    An int is taken for a float; bytes are bytes, a bytearray, a list of ints 0..255 or
-    hex text ("3c20")."""
+    An int is taken for a float; a float must be finite (else RdisValueError); bytes are bytes, a
+    bytearray, a list of ints 0..255 or hex text ("3c20")."""
+    if kind is float and type(value) is float:
+        if not isfinite(value):
+            raise not_finite(value, what)
+        return value
     if type(value) is kind:
         return value
     if kind is float and isinstance(value, numbers.Real) and not isinstance(value, bool):
-        return float(value)
+        try:
+            made = float(value)
+        except OverflowError:  # an int past the largest float
+            raise not_finite(value, what) from None
+        if not isfinite(made):
+            raise not_finite(value, what)
+        return made
     if kind is int and isinstance(value, numbers.Integral) and not isinstance(value, bool):
         return int(value)
     if kind is str and isinstance(value, str):
@@ -65,7 +76,7 @@ def _accepted(what: str, params: tuple[Param, ...], values: Args) -> Args:
             raise TypeError(f"{what} takes {takes} arguments, {len(values)} given")
         values.extend(p.default for p in left_out)
     for i, param in enumerate(params):
-        if type(values[i]) is not param.kind or param.size is not None:
+        if type(values[i]) is not param.kind or param.size is not None or param.kind is float:
             values[i] = _accept_param(values[i], param, f"{what}: parameter {param.name}")
     return values
 
@@ -84,7 +95,9 @@ def _accept_array(value: Any, param: Param, what: str) -> tuple[Any, ...]:
                         f"{_KIND_NAMES[param.kind]}s, not {type(value).__name__}")
     if param.size and len(value) != param.size:
         raise TypeError(f"{what} must have {param.size} values, not {len(value)}")
-    return tuple(v if type(v) is param.kind else _accept(v, param.kind, f"{what}[{i}]") for i, v in enumerate(value))
+    kind = param.kind
+    return tuple(v if type(v) is kind and kind is not float else _accept(v, kind, f"{what}[{i}]")
+                 for i, v in enumerate(value))
 
 
 def _widen(owner: str, floats: tuple[int, ...], values: Args) -> None:

@@ -8,13 +8,14 @@ from __future__ import annotations
 import struct
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import KW_ONLY, dataclass, field
+from math import isfinite
 from typing import Any
 
 from rdisc.engine.actuation import ActuatorLimit
 from rdisc.engine.codec import Format, Match, Pack, Unpack
 from rdisc.engine.frames import Frame
 from rdisc.engine.kalman import FilterPlan
-from rdisc.engine.values import Args, Param, StateValues, Value, _ranged
+from rdisc.engine.values import Args, Param, StateValues, Value, _ranged, one_step_bounds
 
 
 @dataclass(frozen=True, slots=True)
@@ -297,7 +298,7 @@ def _composed_write(plan: Primitive) -> Request:
     request (`Primitive.asked`), as one function of its parameters' values. Like `Input.request` it returns None for anything but the parameters'
     own types in their ranges, and on any error: the general way then says what is wrong."""
     kinds = tuple(p.kind for p in plan.params)
-    bounds = tuple((i, plan.params[i].low, plan.params[i].high) for i in plan.ranged)
+    bounds = one_step_bounds(plan.params)
     values_of = plan.values
     assert isinstance(plan.encoder, Pack)
     pack = plan.encoder.struct.pack
@@ -444,15 +445,16 @@ def _taking(names: tuple[str, ...]) -> Callable[[Mapping[str, Any]], Args]:
 
 def _composed(plan: Input, call: Call) -> Request:
     """The general way of an input written at once (`Robot._input`), as one function."""
-    kinds, args_of, floats, values_of = plan.kinds, plan.args, plan.interface.floats, call.args
+    args_of, floats, values_of = plan.args, plan.interface.floats, call.args
+    kinds: tuple[Any, ...] = plan.kinds  # (not `type`: a value tested against one is not narrowed to `object`)
     assert isinstance(call.target, Primitive)  # `_written_at_once`
     encoder = call.target.encoder
     assert isinstance(encoder, Pack)
     pack = encoder.struct.pack
 
     def request(state: StateValues, values: Args) -> bytes | None:
-        for value, kind in zip(values, kinds):
-            if type(value) is not kind:
+        for value, kind in zip(values, kinds):  # (inline: every input's path)
+            if type(value) is not kind or kind is float and not isfinite(value):
                 return None
         try:
             args = args_of(state, values)

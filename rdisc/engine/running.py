@@ -46,7 +46,7 @@ class Running(Exchange):
         if not self._running:
             raise self._not_running()
         for i, param in enumerate(plan.fields):
-            if type(values[i]) is not param.kind or param.size is not None:
+            if type(values[i]) is not param.kind or param.size is not None or param.kind is float:
                 values[i] = _accept_param(values[i], param, f"input {plan.name}: field {param.name}")
         if plan.sensors:
             self._sense(plan.sensors)

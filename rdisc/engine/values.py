@@ -10,6 +10,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from rdisc.engine.errors import RdisValueError
+from rdisc.engine.operations import FLOAT_MAX
 
 Value = int | float | bool | str | bytes | tuple[Any, ...]  # an array is a tuple
 """The value of a state variable, a parameter, a field or an output field."""
@@ -63,6 +64,26 @@ class Param:
 
 def _ranged(params: tuple[Param, ...]) -> tuple[int, ...]:
     return tuple(i for i, p in enumerate(params) if p.low is not None)
+
+
+def held_to(param: Param) -> tuple[Any, Any] | None:
+    """The range a one-step request holds a value of `param` to: its declared range; for a float
+    without one, the finite floats (NaN and the infinities fail it, and go the general way, which
+    refuses them); None for any other."""
+    if param.low is not None:
+        return param.low, param.high
+    return (-FLOAT_MAX, FLOAT_MAX) if param.kind is float and param.size is None else None
+
+
+def one_step_bounds(params: tuple[Param, ...]) -> tuple[tuple[int, Any, Any], ...]:
+    """Each parameter a one-step request holds to a range (`held_to`): (its index, low, high)."""
+    return tuple((i, *held) for i, held in ((i, held_to(p)) for i, p in enumerate(params)) if held is not None)
+
+
+def not_finite(value: Any, what: str) -> RdisValueError:
+    """The error of a float given that is NaN or infinite (a clamp or a comparison in a description
+    would make it a valid command: an infinite speed full speed)."""
+    return RdisValueError(f"{what} is {value!r}: a number must be finite")
 
 
 def _check_ranges(owner: str, params: tuple[Param, ...], ranged: tuple[int, ...], values: Args,

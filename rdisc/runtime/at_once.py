@@ -136,11 +136,12 @@ def _tests(params: tuple[engine.Param, ...]) -> tuple[tuple[type, ...], tuple[tu
     """How a one-step request tests its values (each of its parameter's own type and within its
     range, else the general way says what is wrong): their kinds and ranges for the engine's own
     test (`plainly_given`), and whether they are one number or two, tested in the closure itself
-    against these two ranges (a number without a range is within -inf..inf)."""
+    against these two ranges (`held_to`: a float without a range within the finite floats, an int
+    within -inf..inf)."""
     kinds = tuple(prm.kind for prm in params)
-    bounds = tuple((i, prm.low, prm.high) for i, prm in enumerate(params) if prm.low is not None)
+    bounds = engine.one_step_bounds(params)
     numbers = all(kind in (int, float) for kind in kinds)
-    ranges: list[_Range] = [(-math.inf, math.inf) if prm.low is None else (prm.low, prm.high) for prm in params]
+    ranges: list[_Range] = [engine.held_to(prm) or (-math.inf, math.inf) for prm in params]
     ranges += [(-math.inf, math.inf)] * (2 - len(ranges))
     return kinds, bounds, numbers and len(params) == 1, numbers and len(params) == 2, ranges[0], ranges[1]
 
@@ -169,22 +170,24 @@ def input_request(i: plans.Input, fields: tuple[engine.Param, ...],
     rest = [_prepared(packed(e, type_, where)) for _, e, type_ in call.args.items[leading:]]
     scales = [scaled(e, where) for _, e, _ in call.args.items[leading:]]
     pack = functools.partial(encoder.struct.pack, *constants) if constants else encoder.struct.pack
-    kinds, _, one, two, _, _ = _tests(fields)
+    kinds, bounds, one, two, first_range, second_range = _tests(fields)
     first = i.args.items[0][1] if i.args.items else None
     unwidened = bool(call.args.params) and (call.args.params[0].type is not m.Type.FLOAT or
                                             (first is not None and surely_float(first)))
     read = clamped(first, slots(i.args)) if first is not None and unwidened else None
-    return _fused(kinds, one, two, arguments, rest, scales, pack, read)
+    return _fused((kinds, bounds, one, two, first_range, second_range), arguments, rest, scales, pack, read)
 
 
-def _fused(kinds: tuple[type, ...], one: bool, two: bool, arguments: list[Prepared], rest: list[Prepared],
-           scales: list[Scaled | None], pack: Callable[..., bytes],
+def _fused(tests: tuple[tuple[type, ...], tuple[tuple[int, Any, Any], ...], bool, bool, _Range, _Range],
+           arguments: list[Prepared], rest: list[Prepared], scales: list[Scaled | None], pack: Callable[..., bytes],
            read: tuple[Callable[..., Any], Any, Any, Any] | None) -> engine.Request:
     """An input's request as one closure: its fields' types compared, the interface's arguments
     computed into a tuple, the call's values from them packed; the commonest shapes (two fields
     or one, two values or one, two values each an argument scaled) unrolled, since each call of a
     closure made costs as much as the arithmetic it does; a first argument that is a function of
-    a field and two constants (`clamp(linear, -0.5, 0.5)`: `read`) called here."""
+    a field and two constants (`clamp(linear, -0.5, 0.5)`: `read`) called here. The fields are
+    tested as `_tests` says (`tests`): a float's NaN or infinity goes the general way."""
+    kinds, bounds, one, two, (low, high), (least, most) = tests
     k, j = (kinds + (object, object))[:2]
     values = listed(rest)  # the general shape's
     if two and len(arguments) == 2 and len(rest) == 2 and None not in scales:
@@ -196,7 +199,7 @@ def _fused(kinds: tuple[type, ...], one: bool, two: bool, arguments: list[Prepar
             def two_read_scaled(state: Mapping[str, m.Value], given: Any) -> bytes | None:
                 try:
                     a, b = given
-                    if type(a) is not k or type(b) is not j:
+                    if type(a) is not k or type(b) is not j or not low <= a <= high or not least <= b <= most:
                         return None
                     return pack(fa(fx(given[kx], lx, hx) * ca), fb(y(state, given, ()) * cb))
                 except Exception:  # noqa: BLE001 - the general way says what is wrong
@@ -207,7 +210,7 @@ def _fused(kinds: tuple[type, ...], one: bool, two: bool, arguments: list[Prepar
         def two_scaled(state: Mapping[str, m.Value], given: Any) -> bytes | None:
             try:
                 a, b = given
-                if type(a) is not k or type(b) is not j:
+                if type(a) is not k or type(b) is not j or not low <= a <= high or not least <= b <= most:
                     return None
                 inner = (x(state, given, ()), y(state, given, ()))
                 return pack(fa(inner[ka] * ca), fb(inner[kb] * cb))
@@ -222,7 +225,7 @@ def _fused(kinds: tuple[type, ...], one: bool, two: bool, arguments: list[Prepar
         def two_two(state: Mapping[str, m.Value], given: Any) -> bytes | None:
             try:
                 a, b = given
-                if type(a) is not k or type(b) is not j:
+                if type(a) is not k or type(b) is not j or not low <= a <= high or not least <= b <= most:
                     return None
                 inner = (x(state, given, ()), y(state, given, ()))
                 return pack(f(state, inner, ()), g(state, inner, ()))
@@ -236,7 +239,7 @@ def _fused(kinds: tuple[type, ...], one: bool, two: bool, arguments: list[Prepar
         def one_one(state: Mapping[str, m.Value], given: Any) -> bytes | None:
             try:
                 (a,) = given
-                if type(a) is not k:
+                if type(a) is not k or not low <= a <= high:
                     return None
                 return pack(f(state, (x(state, given, ()),), ()))
             except Exception:  # noqa: BLE001 - the general way says what is wrong
@@ -248,13 +251,13 @@ def _fused(kinds: tuple[type, ...], one: bool, two: bool, arguments: list[Prepar
         try:  # one number or two tested here, any other fields by their types at once
             if one:
                 (a,) = given
-                if type(a) is not k:
+                if type(a) is not k or not low <= a <= high:
                     return None
             elif two:
                 a, b = given
-                if type(a) is not k or type(b) is not j:
+                if type(a) is not k or type(b) is not j or not low <= a <= high or not least <= b <= most:
                     return None
-            elif tuple(map(type, given)) != kinds:
+            elif not plainly_given(given, kinds, bounds):
                 return None
             return pack(*values(state, tuple([x(state, given, ()) for x in arguments])))
         except Exception:  # noqa: BLE001 - the general way says what is wrong

@@ -38,6 +38,7 @@ from collections import deque
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from contextlib import contextmanager
 from dataclasses import KW_ONLY, dataclass, field
+from math import isfinite
 from typing import Any, Literal, NamedTuple, Protocol, TypeVar, assert_never
 
 # ---- rdisc engine: errors (rdisc/engine/errors.py), the errors a run raises ----------------------
@@ -644,6 +645,26 @@ class Param:
 
 def _ranged(params: tuple[Param, ...]) -> tuple[int, ...]:
     return tuple(i for i, p in enumerate(params) if p.low is not None)
+
+
+def held_to(param: Param) -> tuple[Any, Any] | None:
+    """The range a one-step request holds a value of `param` to: its declared range; for a float
+    without one, the finite floats (NaN and the infinities fail it, and go the general way, which
+    refuses them); None for any other."""
+    if param.low is not None:
+        return param.low, param.high
+    return (-FLOAT_MAX, FLOAT_MAX) if param.kind is float and param.size is None else None
+
+
+def one_step_bounds(params: tuple[Param, ...]) -> tuple[tuple[int, Any, Any], ...]:
+    """Each parameter a one-step request holds to a range (`held_to`): (its index, low, high)."""
+    return tuple((i, *held) for i, held in ((i, held_to(p)) for i, p in enumerate(params)) if held is not None)
+
+
+def not_finite(value: Any, what: str) -> RdisValueError:
+    """The error of a float given that is NaN or infinite (a clamp or a comparison in a description
+    would make it a valid command: an infinite speed full speed)."""
+    return RdisValueError(f"{what} is {value!r}: a number must be finite")
 
 
 def _check_ranges(owner: str, params: tuple[Param, ...], ranged: tuple[int, ...], values: Args,
@@ -2429,7 +2450,7 @@ def _composed_write(plan: Primitive) -> Request:
     request (`Primitive.asked`), as one function of its parameters' values. Like `Input.request` it returns None for anything but the parameters'
     own types in their ranges, and on any error: the general way then says what is wrong."""
     kinds = tuple(p.kind for p in plan.params)
-    bounds = tuple((i, plan.params[i].low, plan.params[i].high) for i in plan.ranged)
+    bounds = one_step_bounds(plan.params)
     values_of = plan.values
     assert isinstance(plan.encoder, Pack)
     pack = plan.encoder.struct.pack
@@ -2576,15 +2597,16 @@ def _taking(names: tuple[str, ...]) -> Callable[[Mapping[str, Any]], Args]:
 
 def _composed(plan: Input, call: Call) -> Request:
     """The general way of an input written at once (`Robot._input`), as one function."""
-    kinds, args_of, floats, values_of = plan.kinds, plan.args, plan.interface.floats, call.args
+    args_of, floats, values_of = plan.args, plan.interface.floats, call.args
+    kinds: tuple[Any, ...] = plan.kinds  # (not `type`: a value tested against one is not narrowed to `object`)
     assert isinstance(call.target, Primitive)  # `_written_at_once`
     encoder = call.target.encoder
     assert isinstance(encoder, Pack)
     pack = encoder.struct.pack
 
     def request(state: StateValues, values: Args) -> bytes | None:
-        for value, kind in zip(values, kinds):
-            if type(value) is not kind:
+        for value, kind in zip(values, kinds):  # (inline: every input's path)
+            if type(value) is not kind or kind is float and not isfinite(value):
                 return None
         try:
             args = args_of(state, values)
@@ -2679,12 +2701,22 @@ _KIND_NAMES: dict[type, str] = {int: "int", float: "float", bool: "bool", str: "
 def _accept(value: Any, kind: type, what: str) -> Any:
     """A value given for a parameter or field of type `kind`, made that type; else TypeError.
 
-    An int is taken for a float; bytes are bytes, a bytearray, a list of ints 0..255 or
-    hex text ("3c20")."""
+    An int is taken for a float; a float must be finite (else RdisValueError); bytes are bytes, a
+    bytearray, a list of ints 0..255 or hex text ("3c20")."""
+    if kind is float and type(value) is float:
+        if not isfinite(value):
+            raise not_finite(value, what)
+        return value
     if type(value) is kind:
         return value
     if kind is float and isinstance(value, numbers.Real) and not isinstance(value, bool):
-        return float(value)
+        try:
+            made = float(value)
+        except OverflowError:  # an int past the largest float
+            raise not_finite(value, what) from None
+        if not isfinite(made):
+            raise not_finite(value, what)
+        return made
     if kind is int and isinstance(value, numbers.Integral) and not isinstance(value, bool):
         return int(value)
     if kind is str and isinstance(value, str):
@@ -2723,7 +2755,7 @@ def _accepted(what: str, params: tuple[Param, ...], values: Args) -> Args:
             raise TypeError(f"{what} takes {takes} arguments, {len(values)} given")
         values.extend(p.default for p in left_out)
     for i, param in enumerate(params):
-        if type(values[i]) is not param.kind or param.size is not None:
+        if type(values[i]) is not param.kind or param.size is not None or param.kind is float:
             values[i] = _accept_param(values[i], param, f"{what}: parameter {param.name}")
     return values
 
@@ -2742,7 +2774,9 @@ def _accept_array(value: Any, param: Param, what: str) -> tuple[Any, ...]:
                         f"{_KIND_NAMES[param.kind]}s, not {type(value).__name__}")
     if param.size and len(value) != param.size:
         raise TypeError(f"{what} must have {param.size} values, not {len(value)}")
-    return tuple(v if type(v) is param.kind else _accept(v, param.kind, f"{what}[{i}]") for i, v in enumerate(value))
+    kind = param.kind
+    return tuple(v if type(v) is kind and kind is not float else _accept(v, kind, f"{what}[{i}]")
+                 for i, v in enumerate(value))
 
 
 def _widen(owner: str, floats: tuple[int, ...], values: Args) -> None:
@@ -4466,7 +4500,7 @@ class Running(Exchange):
         if not self._running:
             raise self._not_running()
         for i, param in enumerate(plan.fields):
-            if type(values[i]) is not param.kind or param.size is not None:
+            if type(values[i]) is not param.kind or param.size is not None or param.kind is float:
                 values[i] = _accept_param(values[i], param, f"input {plan.name}: field {param.name}")
         if plan.sensors:
             self._sense(plan.sensors)
