@@ -70,9 +70,20 @@ def _ros_set_yaw(q: Any, yaw: float) -> None:
 JOINT_COMMAND = '''def _ros_joint_command(robot: Robot, msg: Any, report: Callable[[BaseException], None]) -> None:
     """Call each of _ROS_COMMANDS whose joints the JointState `msg` names, all of them, with their
     values through the transmissions; what cannot be sent is reported (an RdisValueError), and
-    nothing is sent for that target."""
-    given = {name: at for at, name in enumerate(msg.name)}
+    nothing is sent for that target. A message whose names repeat, or whose positions, velocities
+    or efforts are not one a name (or none), is reported and nothing of it is sent."""
+    given: dict[str, int] = {}
+    for at, name in enumerate(msg.name):
+        if name in given:  # (the first repeat: a message of many names costs no more)
+            report(RdisValueError(f"joint_command: {_ros_names([name])} is named twice"))
+            return
+        given[name] = at
     values = (msg.position, msg.velocity, msg.effort)
+    for quantity, listed in zip(_ROS_QUANTITIES, values):
+        if len(listed) and len(listed) != len(given):
+            report(RdisValueError(f"joint_command: {len(listed)} {quantity} values for {len(given)} joint names "
+                                  "(one for each, or none)"))
+            return
     for kind, target, joints, arguments in _ROS_COMMANDS:
         missing = [joint for joint, _ in joints if joint not in given]
         if len(missing) == len(joints):
@@ -95,7 +106,13 @@ JOINT_COMMAND = '''def _ros_joint_command(robot: Robot, msg: Any, report: Callab
             report(err)
     unknown = [name for name in msg.name if name not in _ROS_COMMANDED]
     if unknown:
-        report(RdisValueError(f"joint_command: no command takes {', '.join(unknown)}"))'''
+        report(RdisValueError(f"joint_command: no command takes {_ros_names(unknown)}"))
+
+
+def _ros_names(names: list[str]) -> str:
+    """Joint names for a message: the first five, each cut at 40 characters, and how many more."""
+    shown = ", ".join(name if len(name) <= 40 else f"{name[:37]}..." for name in names[:5])
+    return shown if len(names) <= 5 else f"{shown} and {len(names) - 5} more"'''
 
 
 class Bridge:

@@ -327,6 +327,30 @@ def test_joint_command_calls_each_target_its_transmissions_bind_fully(tmp_path: 
                         "RdisValueError: joint_command: no command takes lift"]
 
 
+def test_joint_command_refuses_a_message_that_is_not_one_value_a_name(tmp_path: Path) -> None:
+    """A JointState's positions, velocities and efforts are one a name, or none; a name is given
+    once. Anything else is reported and nothing of it sent (the extra velocity was dropped and the
+    last of a repeated name taken). A flood of names costs one report of bounded length."""
+    node = _emitted_node(tmp_path, COMMANDED, "commander")
+    calls, reported = _commands(node, [
+        {"name": ["spin"], "velocity": [1.0, 2.0]},
+        {"name": ["spin", "lift"], "position": [0.5]},
+        {"name": ["spin", "spin"], "velocity": [1.0, 2.0]},
+        {"name": ["spin"] * 12_000, "velocity": [1.0] * 12_000},
+        {"name": [f"j{i}" for i in range(12_000)]},
+        {"name": ["x" * 100_000]},
+    ])
+    assert calls == []
+    assert reported == [
+        "RdisValueError: joint_command: 2 velocity values for 1 joint names (one for each, or none)",
+        "RdisValueError: joint_command: 1 position values for 2 joint names (one for each, or none)",
+        "RdisValueError: joint_command: spin is named twice",
+        "RdisValueError: joint_command: spin is named twice",
+        "RdisValueError: joint_command: no command takes j0, j1, j2, j3, j4 and 11995 more",
+        f"RdisValueError: joint_command: no command takes {'x' * 37}...",
+    ]
+
+
 def test_the_create_2_s_wheels_are_drive_direct(tmp_path: Path) -> None:
     """Both wheels' velocities (rad/s) are one drive_direct of mm/s, right first as it takes them."""
     node = tmp_path / "create2_node.py"
