@@ -9,21 +9,17 @@ closure over `rdisc.semantics.evaluate.prepare`; the emitter (`rdisc.emit.python
 each Code as a function and each plan as its constructor call. Neither decides anything
 about the description's structure.
 
-A plan's fields after `KW_ONLY` are options, written by keyword when they are not at
-their default.
+The plans themselves are declared in `rdisc.lowering.plans` and a primitive's request in one
+step is worked out in `rdisc.lowering.one_step`; this module walks the Model and is the
+namespace both back ends read the plans from (`plans.Primitive`).
 """
 
 from __future__ import annotations
 
 import dataclasses
-import enum
-import struct
 from collections.abc import Mapping
-from dataclasses import KW_ONLY, dataclass, field
-from typing import Any
 
 from rdisc import engine
-from rdisc.engine.operations import EVAL_ERRORS
 from rdisc.lowering.actuators import actuator_limits
 from rdisc.lowering.constructs import (
     Construct,
@@ -36,381 +32,88 @@ from rdisc.lowering.constructs import (
     stuffing,
 )
 from rdisc.lowering.messages import recorded_messages
-from rdisc.lowering.whole_frame import WholeFrame, whole_frame
+from rdisc.lowering.one_step import _acknowledges, _asked, _written, written_at_once
+from rdisc.lowering.plans import (
+    _OVER_ARGS,
+    _OVER_REPLY,
+    LOWERED_ONLY,
+    NO_REPLY,
+    TABLED,
+    Call,
+    Code,
+    Connection,
+    Device,
+    Entry,
+    ErrorReply,
+    FixedReply,
+    Frame,
+    FramedReply,
+    FrameUse,
+    Gives,
+    Hook,
+    Input,
+    Interface,
+    Item,
+    KeyedReply,
+    LineReply,
+    ListedReplies,
+    NoReply,
+    Output,
+    Plans,
+    Primitive,
+    Records,
+    Reply,
+    Sensor,
+    SeveralReplies,
+    SubPayloads,
+    TaggedReply,
+    TaggedStream,
+    Written,
+    _condition,
+    _values,
+)
 from rdisc.semantics import model as m
-from rdisc.semantics.evaluate import prepare
 from rdisc.semantics.ros import header_frames
 
-__all__ = ["Call", "Code", "Connection", "Device", "ErrorReply", "Frame", "FrameUse", "Gives", "Hook", "Input", "Interface",
-           "Output", "Plans", "Primitive", "Written", "frame", "lower", "written_at_once"]
+__all__ = [
+    "LOWERED_ONLY",
+    "NO_REPLY",
+    "TABLED",
+    "Call",
+    "Code",
+    "Connection",
+    "Device",
+    "Entry",
+    "ErrorReply",
+    "FixedReply",
+    "Frame",
+    "FrameUse",
+    "FramedReply",
+    "Gives",
+    "Hook",
+    "Input",
+    "Interface",
+    "Item",
+    "KeyedReply",
+    "LineReply",
+    "ListedReplies",
+    "NoReply",
+    "Output",
+    "Plans",
+    "Primitive",
+    "Records",
+    "Reply",
+    "Sensor",
+    "SeveralReplies",
+    "SubPayloads",
+    "TaggedReply",
+    "TaggedStream",
+    "Written",
+    "frame",
+    "lower",
+    "written_at_once",
+]
 
-LOWERED_ONLY = "lowered only"
-"""The metadata key of a plan's field that its engine counterpart does not take."""
-
-Item = tuple[str, m.Expr, m.AnyType | None]
-"""What a Code returns, one item: its key (a dict's key; in a list, "*" for an array given
-element by element, else ""), the expression, the type its value is bound to (None: as it is)."""
-
-
-class Gives(enum.Enum):
-    """What a Code returns."""
-
-    LIST = "list"  # its items' values, in order
-    DICT = "dict"  # its items' values by key
-    BOOL = "bool"  # its one item's truth
-
-
-@dataclass(frozen=True, slots=True, eq=False)
-class Code:
-    """A function of a plan, as data: given `takes` (of "state", "args", "reply", in this
-    order), `args` unpacked into `params`, it returns its items as `gives` says."""
-
-    takes: tuple[str, ...]
-    gives: Gives
-    params: tuple[m.Parameter, ...]
-    items: tuple[Item, ...]
-
-
-_NO_STATE: Mapping[str, m.Value] = {}
-_OVER_ARGS = ("state", "args")
-_OVER_REPLY = ("state", "args", "reply")
-
-
-def _values(params: tuple[m.Parameter, ...], exprs: tuple[m.Expr, ...], takes: tuple[str, ...] = _OVER_ARGS) -> Code:
-    return Code(takes, Gives.LIST, params, tuple(("", e, None) for e in exprs))
-
-
-def _condition(takes: tuple[str, ...], params: tuple[m.Parameter, ...], e: m.Expr) -> Code:
-    return Code(takes, Gives.BOOL, params, (("", e, None),))
-
-
-@dataclass(frozen=True, slots=True, eq=False)
-class Frame:
-    """engine.Frame: its parts each way as constructs, its fields' values a Code over the args."""
-
-    name: str
-    request: list[Construct[Any]]
-    reply: list[Construct[Any]]
-    _: KW_ONLY
-    stuffing: Construct[engine.Stuffing] | None = None
-    params: tuple[Construct[engine.Param], ...] = ()
-    fields: Code | None = None  # takes the args only
-    more_requests: list[list[Construct[Any]]] = dataclasses.field(default_factory=list)
-    more_replies: list[list[Construct[Any]]] = dataclasses.field(default_factory=list)
-    escaping: Construct[engine.Escaping] | None = None
-    choose: Code | None = None  # `either when`: each request layout's condition over the args
-    answer: Code | None = None  # and each reply layout's
-
-
-@dataclass(frozen=True, slots=True, eq=False)
-class FrameUse:
-    """engine.FrameUse: a frame, and its arguments over the primitive's parameters."""
-
-    frame: Frame
-    args: Code
-
-
-@dataclass(frozen=True, slots=True, eq=False)
-class Written:
-    """A primitive's request in one step, when it is only written (the engine's `Primitive.request`)
-    or a plain exchange's (`Primitive.asked`, no frame): its parameters
-    each of its own type and in its range, its format values packed with `format`, between the
-    frame's constant bytes (its arguments constants, the payload's size fixed): `head`, the
-    checksum after the payload (if any) over `covered` (the head's bytes it covers) and the
-    payload, then `tail`. Anything else, and the general way decides (and says what is wrong)."""
-
-    params: tuple[m.Parameter, ...]
-    values: Code
-    format: str
-    _: KW_ONLY
-    head: bytes = b""
-    checksum: Construct[engine.Checksum] | None = None
-    check_format: str = ""  # how the checksum is packed
-    check_size: int = 0  # the bytes it packs into
-    covered: bytes = b""
-    partial: int | None = None  # a "sum" checksum: the sum of `covered`, to which the payload's is added
-    tail: bytes = b""
-    constant: bytes | None = None  # no parameters and constant values: the whole request, always
-    whole: WholeFrame | None = None  # head, payload, checksum and tail packed by one struct, where they can be
-
-
-# ---- the shapes of a reply: the engine's (`rdisc.engine.plans`), a table's entries each with its values
-
-@dataclass(frozen=True, slots=True)
-class NoReply:
-    """engine.NoReply: nothing is read."""
-
-
-NO_REPLY = NoReply()
-
-
-@dataclass(frozen=True, slots=True, eq=False)
-class LineReply:
-    """engine.LineReply: a line, matched."""
-
-    decoder: Construct[engine.Match]
-
-
-@dataclass(frozen=True, slots=True, eq=False)
-class ErrorReply:
-    """engine.ErrorReply: the reply that may come instead, raised with its code's name; or,
-    `when`, the reply itself when the condition over it holds."""
-
-    decoder: Construct[engine.Unpack]
-    marker: bytes = b""
-    frame: FrameUse | None = None
-    codes: str = ""
-    names: dict[int, str] = dataclasses.field(default_factory=dict)
-    when: Code | None = None
-
-
-@dataclass(frozen=True, slots=True, eq=False)
-class FixedReply:
-    """engine.FixedReply: the bytes the decoder takes, no frame."""
-
-    decoder: Construct[engine.Unpack]
-    _: KW_ONLY
-    error: ErrorReply | None = None
-
-
-@dataclass(frozen=True, slots=True, eq=False)
-class FramedReply:
-    """engine.FramedReply: a reply frame's payload decoded (or the frame only read)."""
-
-    decoder: Construct[engine.Unpack] | Construct[engine.Match] | None = None
-    _: KW_ONLY
-    skip: bool = False
-    error: ErrorReply | None = None
-
-
-@dataclass(frozen=True, slots=True, eq=False)
-class TaggedReply:
-    """engine.TaggedReply: a reply frame's tag, then its entry's bytes."""
-
-    tag: str
-    table: tuple[Entry, ...]
-    _: KW_ONLY
-    skip: bool = False
-
-
-@dataclass(frozen=True, slots=True, eq=False)
-class TaggedStream:
-    """engine.TaggedStream: a tag, then its entry's bytes, no frame; after a tag of `nested`, a
-    second tag (its struct format) first."""
-
-    tag: str
-    table: tuple[Entry, ...]
-    _: KW_ONLY
-    skip: bool = False
-    nested: dict[int, str] = field(default_factory=dict)
-
-
-@dataclass(frozen=True, slots=True, eq=False)
-class SubPayloads:
-    """engine.SubPayloads: a reply frame's payload of tagged sub-payloads."""
-
-    tag: str
-    table: tuple[Entry, ...]
-    length: str | None = None
-    _: KW_ONLY
-    skip: bool = False
-
-
-@dataclass(frozen=True, slots=True, eq=False)
-class Records:
-    """engine.Records: a reply frame's payload of records, each ended by the marker."""
-
-    marker: bytes
-    decoder: Construct[engine.Unpack]
-    _: KW_ONLY
-    skip: bool = False
-
-
-@dataclass(frozen=True, slots=True, eq=False)
-class KeyedReply:
-    """engine.KeyedReply: a reply table chosen by the parameter at `key`."""
-
-    key: int
-    table: tuple[Entry, ...]
-
-
-@dataclass(frozen=True, slots=True, eq=False)
-class SeveralReplies:
-    """engine.SeveralReplies: `replies N`, each reply read as `each`."""
-
-    count: int
-    each: Reply
-    frames: tuple[FrameUse, ...] = ()
-    over: int = -1  # `replies id in ids`: the array parameter's position, a reply for each element
-
-
-@dataclass(frozen=True, slots=True, eq=False)
-class ListedReplies:
-    """engine.ListedReplies: `replies { }`, a plan each."""
-
-    answers: tuple[Primitive, ...]
-
-
-Reply = (NoReply | LineReply | FixedReply | FramedReply | TaggedReply | TaggedStream | SubPayloads | Records
-         | KeyedReply | SeveralReplies | ListedReplies)
-"""How a primitive's reply is read, decided once here (`_Lowering.read_as`)."""
-
-TABLED = (TaggedReply, TaggedStream, SubPayloads, KeyedReply)
-"""The shapes with a reply table."""
-
-
-@dataclass(frozen=True, slots=True, eq=False)
-class Entry:
-    """A reply table's entry: the key or tag values it is for, and its plan."""
-
-    case: m.ReplyCase
-    plan: Primitive
-
-
-@dataclass(frozen=True, slots=True, eq=False)
-class Primitive:
-    """engine.Primitive; `reply`, how its reply is read (a reply table's entries each with the
-    values it is for)."""
-
-    name: str
-    connection: str
-    params: tuple[Construct[engine.Param], ...]
-    values: Code
-    encoder: Construct[engine.Pack] | Construct[engine.Format] | None
-    _: KW_ONLY
-    reply: Reply = NO_REPLY
-    actions: Code | None = None
-    frame: FrameUse | None = None
-    timeout: float | None = None
-    retries: int = 0
-    checked: tuple[str, ...] = ()
-    expect: Code | None = None
-    lines: Code | None = None
-    request: Written | None = None
-    looks_up: bool = False
-    actuators: tuple[Construct[engine.ActuatorLimit], ...] = ()  # the actuators' limits on its parameters
-    # A plain exchange's request in one step (`engine.asked_at_once`): the engine makes its own,
-    # and a driver's typed method compiles this one (`LOWERED_ONLY`: no argument of engine.Primitive).
-    asked: Written | None = field(default=None, metadata={LOWERED_ONLY: True})
-
-
-@dataclass(frozen=True, slots=True, eq=False)
-class Output:
-    """engine.Output."""
-
-    name: str
-    fields: Code
-    adapter: str = ""
-    frame: str = ""
-    child_frame: str = ""
-    filters: tuple[Construct[engine.FilterPlan], ...] = ()
-    sensors: tuple[str, ...] = ()
-
-
-@dataclass(frozen=True, slots=True, eq=False)
-class Call:
-    """engine.Call: `direct`, the arguments are the primitive's format values."""
-
-    target: Primitive | Interface
-    args: Code
-    delay: float = 0.0
-    _: KW_ONLY
-    direct: bool = False
-    when: Code | None = None
-    until: Code | None = None
-    every: float = 0.0
-    within: float = 0.0
-
-
-@dataclass(frozen=True, slots=True, eq=False)
-class Interface:
-    """engine.Interface."""
-
-    name: str
-    params: tuple[Construct[engine.Param], ...]
-    calls: tuple[Call, ...]
-    _: KW_ONLY
-    outputs: tuple[Output, ...] = ()
-    sensors: tuple[str, ...] = ()
-
-
-@dataclass(frozen=True, slots=True, eq=False)
-class Input:
-    """engine.Input; `request`: the engine writes it at once, so a driver compiles that."""
-
-    name: str
-    adapter: str
-    fields: tuple[Construct[engine.Param], ...]
-    interface: Interface
-    args: Code
-    _: KW_ONLY
-    request: bool = False
-    sensors: tuple[str, ...] = ()
-
-
-@dataclass(frozen=True, slots=True, eq=False)
-class Hook:
-    """engine.Hook."""
-
-    interface: Interface
-    args: Code  # takes the state only
-
-
-@dataclass(frozen=True, slots=True, eq=False)
-class Connection:
-    """engine.Connection."""
-
-    name: str
-    baud: int
-    _: KW_ONLY
-    address: str | None = None
-    terminator: bytes = b"\n"
-    frequency: float = 0.0
-    periodic: tuple[Interface, ...] = ()
-    startup: Hook | None = None
-    terminate: Hook | None = None
-    keepalive: Hook | None = None
-    interval: float = 0.0
-    baud_setting: str | None = None
-    data_bits: int = 8
-    parity: str = "none"
-    stop_bits: float = 1
-    threading: str = "single"
-    rates: tuple[float, ...] = ()
-
-
-@dataclass(frozen=True, slots=True, eq=False)
-class Sensor:
-    """engine.Sensor: its primitive's plan stores its value (`_Lowering.sensed`)."""
-
-    name: str
-    primitive: Primitive
-    cache: float
-
-
-@dataclass(frozen=True, slots=True, eq=False)
-class Device:
-    """engine.Device."""
-
-    name: str
-    state: Mapping[str, m.Value]
-    connections: Mapping[str, Connection]
-    primitives: Mapping[str, Primitive]
-    interfaces: Mapping[str, Interface]
-    inputs: Mapping[str, Input]
-    _: KW_ONLY
-    settings: tuple[Construct[engine.Param], ...] = ()
-    messages: Mapping[str, engine.Message] = dataclasses.field(default_factory=dict)
-    sensors: Mapping[str, Sensor] = dataclasses.field(default_factory=dict)
-
-
-@dataclass(frozen=True, slots=True)
-class Plans:
-    """A description lowered: the device, and the frames and outputs its plans use, by name."""
-
-    device: Device
-    frames: Mapping[str, Frame]
-    outputs: Mapping[str, Output]
 
 
 def lower(model: m.Model) -> Plans:
@@ -648,105 +351,6 @@ def _conditions(params: tuple[m.Parameter, ...], when: tuple[m.Expr | None, ...]
     return _values(params, tuple(e for e in when if e is not None), ("args",)) if when else None
 
 
-def _written(plan: Primitive, params: tuple[m.Parameter, ...], encoding: m.Pack | m.Format | None) -> Written | None:
-    """A primitive's request in one step, when it is only written (`engine.sent_at_once`)
-    and its frame, if any, folds into constant bytes around a payload of a fixed size (then packed
-    by one struct with them, `whole_frame`, where it can be)."""
-    encoder = None if plan.encoder is None else plan.encoder.value
-    sent = engine.sent_at_once(encoder=encoder, replies=not isinstance(plan.reply, NoReply),
-                               acts=plan.actions is not None or plan.lines is not None,
-                               dependent=any(prm.limits is not None for prm in params),
-                               actuated=bool(plan.actuators))
-    if not sent:
-        return None
-    written = _packed(plan, params)
-    assert isinstance(encoder, engine.Pack)  # `sent`
-    folded = written if plan.frame is None or written is None else _folded(written, plan.frame, encoder.struct.size)
-    if folded is None:
-        return None
-    return _constant(dataclasses.replace(folded, whole=whole_frame(encoding, folded)), encoder)
-
-
-def _asked(plan: Primitive, params: tuple[m.Parameter, ...]) -> Written | None:
-    """A plain exchange's request in one step (`engine.asked_at_once`), when its values are packed
-    as they are, its parameters' ranges not reading each other."""
-    encoder = None if plan.encoder is None else plan.encoder.value
-    reply = plan.reply
-    decoder = reply.decoder.value if isinstance(reply, FixedReply) and reply.error is None else None
-    asked = engine.asked_at_once(encoder=encoder, framed=plan.frame is not None, lines=plan.lines is not None,
-                                 retries=plan.retries, decoder=decoder, actuated=bool(plan.actuators))
-    written = _packed(plan, params) if asked and not any(prm.limits is not None for prm in params) else None
-    return None if written is None or encoder is None else _constant(written, encoder)
-
-
-def _packed(plan: Primitive, params: tuple[m.Parameter, ...]) -> Written | None:
-    """A request whose values one struct packs as they are (no groups, varying counts, arrays)."""
-    encoder = None if plan.encoder is None else plan.encoder.value
-    if not isinstance(encoder, engine.Pack) or encoder.groups or encoder.varying \
-            or any(key == "*" for key, _, _ in plan.values.items) or any(isinstance(prm.type, m.Array) for prm in params):
-        return None
-    return Written(params, plan.values, encoder.struct.format)
-
-
-def _constant(folded: Written, encoder: engine.Pack | engine.Format) -> Written:
-    """`folded` with its whole request, when that is always the same bytes (no parameters, constant values)."""
-    assert isinstance(encoder, engine.Pack)
-    if folded.params or not all(isinstance(e, m.Const) for _, e, _ in folded.values.items):
-        return folded
-    try:
-        payload = encoder.struct.pack(*(e.value for _, e, _ in folded.values.items if isinstance(e, m.Const)))
-    except struct.error:
-        return folded  # the general way says what is wrong, each time
-    check = b""
-    if folded.checksum is not None:
-        check = struct.pack(folded.check_format, folded.checksum.value(folded.covered + payload))
-    return dataclasses.replace(folded, constant=folded.head + payload + check + folded.tail)
-
-
-def _folded(written: Written, use: FrameUse, size: int) -> Written | None:
-    """`written` with its frame's parts folded around its payload: the frame's arguments
-    constants, nothing escaped or stuffed, one layout, no reply read; before the payload
-    constant bytes, fields and the length only; after it a checksum of parts up to it, then
-    constant bytes."""
-    f = use.frame
-    if f.stuffing is not None or f.escaping is not None or f.more_requests or _acknowledges(f) \
-            or not all(isinstance(e, m.Const) for _, e, _ in use.args.items):
-        return None
-    args = [e.value for _, e, _ in use.args.items if isinstance(e, m.Const)]
-    made = engine.Frame(f.name, [part.value for part in f.request], [], params=tuple(prm.value for prm in f.params),
-                        fields=None if f.fields is None else _evaluated(f.fields))
-    side = made.requests[0]
-    payload_at = side.payload
-    if payload_at < 0 or size > side.most or made.trim:  # a trimmed payload's size is not fixed
-        return None
-    try:
-        fields = made.values("", args)
-    except (engine.RdisValueError, *EVAL_ERRORS):
-        return None
-    before, after = side.parts[:payload_at], side.parts[payload_at + 1:]
-    if not all(isinstance(part, (engine.Bytes, engine.Field, engine.Length)) for part in before):
-        return None
-    head_size = sum(side.sizes[:payload_at])
-    try:
-        framed = made.wrap(bytes(size), fields)
-    except (ValueError, struct.error):
-        return None
-    head = framed[:head_size]
-    check = after[0] if after and isinstance(after[0], engine.Check) else None
-    if not all(isinstance(part, engine.Bytes) for part in after[1 if check else 0:]):
-        return None
-    tail = b"".join(part.data for part in after[1 if check else 0:] if isinstance(part, engine.Bytes))
-    if check is None:
-        return dataclasses.replace(written, head=head, tail=tail)
-    if check.last != payload_at or check.struct is None or check.order is not None or check.with_request \
-            or check.seed >= 0:
-        return None
-    construct = f.request[payload_at + 1].args[0]
-    covered = head[sum(side.sizes[:check.first]):]
-    partial = sum(covered) if check.checksum.kind == "sum" else None
-    return dataclasses.replace(written, head=head, checksum=construct, check_format=check.struct.format,
-                               check_size=check.struct.size, covered=covered, partial=partial, tail=tail)
-
 
 def _one(decoder: Construct[engine.Unpack] | Construct[engine.Match] | None, use: FrameUse | None, skip: bool,
          records: str | None, error: ErrorReply | None = None) -> Reply:
@@ -778,36 +382,6 @@ def _tagged(table: m.ReplyTable, use: FrameUse | None, skip: bool, entries: tupl
     return TaggedReply(table.tag, entries, skip=skip)
 
 
-def _acknowledges(f: Frame) -> bool:
-    """Whether a frame's reply is an acknowledgement: constant parts only, no payload (the
-    engine reads it, and there is nothing to decode)."""
-    reply = engine.Side([part.value for part in f.reply])
-    return bool(reply.parts) and reply.payload < 0
-
-
-def _evaluated(code: Code) -> Any:
-    """A frame's fields' values over its arguments (the runtime's closure of the Code)."""
-    slots = {prm.name: i for i, prm in enumerate(code.params)}
-    fs = [prepare(e, slots) for _, e, _ in code.items]
-    return lambda args: [f(_NO_STATE, args, ()) for f in fs]
-
-
-def written_at_once(interface: Interface) -> bool:
-    """Whether running the interface is one plain write: the engine's rule
-    (`engine.written_at_once`), of this plan."""
-    call = interface.calls[0] if len(interface.calls) == 1 else None
-    prim = call.target if call is not None else None
-    if call is None or not isinstance(prim, Primitive):
-        return False
-    return engine.written_at_once(
-        calls=len(interface.calls), outputs=len(interface.outputs), ranged=_ranged(interface.params + prim.params),
-        direct=call.direct, waits=bool(call.delay or call.when is not None or call.until is not None),
-        encoder=None if prim.encoder is None else prim.encoder.value, replies=not isinstance(prim.reply, NoReply),
-        framed=prim.frame is not None, acts=prim.actions is not None or prim.lines is not None)
-
-
-def _ranged(params: tuple[Construct[engine.Param], ...]) -> bool:
-    return any(prm.value.low is not None for prm in params)
 
 
 def _params(params: tuple[m.Parameter, ...]) -> tuple[Construct[engine.Param], ...]:
