@@ -17,15 +17,15 @@ the written modules equal to what the writer writes now.
 
 from __future__ import annotations
 
-from collections.abc import Callable
-from typing import TYPE_CHECKING, Any, TypeVar, cast
+from rdisc import TYPE_CHECKING
 
 if TYPE_CHECKING:
     import dataclasses
-    from typing import Self
+    from collections.abc import Callable
+    from typing import Any, Self, TypeVar
 
-_Class = TypeVar("_Class", bound=type)
-_Value = TypeVar("_Value")
+    _Class = TypeVar("_Class", bound=type)
+    _Value = TypeVar("_Value")
 
 
 class _Missing:
@@ -59,7 +59,7 @@ class _Default:
 DEFAULT: Any = _Default()
 
 
-class FieldSpec(tuple[Any, Any, bool, bool]):
+class FieldSpec(tuple["Any", "Any", bool, bool]):
     """What `field(...)` says of a field: (default, default_factory, compare, repr); compared with
     what the writer saw. A plain tuple's class: a NamedTuple's is compiled when it is made, a
     fraction of a millisecond of a cold `rdisc check`."""
@@ -171,6 +171,7 @@ def _default(given: object) -> object:
 def _standard(cls: _Class, frozen: bool, slots: bool) -> _Class:
     """The class made by `dataclasses`, its `field(...)` markers made standard fields first."""
     import dataclasses
+    from typing import cast
 
     for name, given in list(vars(cls).items()):
         if isinstance(given, FieldSpec):
@@ -239,6 +240,7 @@ def field_names(value: object) -> tuple[str, ...]:
     any other value."""
     cls = type(value)
     if _written(cls):
-        return cast(tuple[str, ...], cls.__match_args__)  # type: ignore[attr-defined]
+        names: tuple[str, ...] = cls.__match_args__  # type: ignore[attr-defined]
+        return names
     made = getattr(cls, "__dataclass_fields__", None)
     return tuple(made) if isinstance(made, dict) else ()

@@ -10,7 +10,8 @@ import bisect
 import os
 import posixpath
 from collections.abc import Mapping
-from typing import TYPE_CHECKING
+
+from rdisc import TYPE_CHECKING
 
 if TYPE_CHECKING:
     from dataclasses import dataclass

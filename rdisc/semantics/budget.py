@@ -11,8 +11,8 @@ ASCII messages are counted at their shortest, so a warning is never a false alar
 from __future__ import annotations
 
 from collections.abc import Iterator
-from typing import TYPE_CHECKING
 
+from rdisc import TYPE_CHECKING
 from rdisc.diagnostics import Diagnostics
 from rdisc.semantics import formats
 from rdisc.semantics import model as m

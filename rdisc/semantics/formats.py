@@ -13,9 +13,8 @@ import re
 import struct
 import warnings
 from functools import lru_cache
-from typing import TYPE_CHECKING
 
-from rdisc import patterns
+from rdisc import TYPE_CHECKING, patterns
 from rdisc.frozen import replace
 from rdisc.limits import MAX_ARRAY
 from rdisc.semantics.model import AnyType, Array, Slot, StructLayout, Type, Varying, bit_span

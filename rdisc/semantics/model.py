@@ -11,8 +11,7 @@ the elements (`model_elements`) and the body (`model_body`).
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
+from rdisc import TYPE_CHECKING
 from rdisc.semantics.model_body import (
     ORIGIN,
     Actuator,

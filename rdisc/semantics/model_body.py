@@ -3,8 +3,8 @@
 from __future__ import annotations
 
 import enum
-from typing import TYPE_CHECKING
 
+from rdisc import TYPE_CHECKING
 from rdisc.semantics.model_expressions import Expr
 from rdisc.source import Span
 

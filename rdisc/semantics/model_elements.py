@@ -2,8 +2,7 @@
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
+from rdisc import TYPE_CHECKING
 from rdisc.frozen import replace
 from rdisc.semantics.model_expressions import (
     AdapterRef,

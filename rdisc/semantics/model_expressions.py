@@ -4,25 +4,29 @@ from __future__ import annotations
 
 import enum
 from collections.abc import Iterator
-from typing import TYPE_CHECKING, Any, NewType
 
+from rdisc import TYPE_CHECKING
 from rdisc.source import Span
 
 if TYPE_CHECKING:
     from dataclasses import dataclass, field
+    from typing import Any, NewType
 else:  # the same classes, their methods written out ahead of time: rdisc/frozen.py
     from rdisc.semantics.model_expressions_methods import dataclass, field
 
 _span = field(compare=False, repr=False, default=None)
 
 
-ConnectionRef = NewType("ConnectionRef", str)
-PrimitiveRef = NewType("PrimitiveRef", str)
-InterfaceRef = NewType("InterfaceRef", str)
-OutputRef = NewType("OutputRef", str)
-AdapterRef = NewType("AdapterRef", str)
-StateRef = NewType("StateRef", str)
-FrameRef = NewType("FrameRef", str)
+if TYPE_CHECKING:
+    ConnectionRef = NewType("ConnectionRef", str)
+    PrimitiveRef = NewType("PrimitiveRef", str)
+    InterfaceRef = NewType("InterfaceRef", str)
+    OutputRef = NewType("OutputRef", str)
+    AdapterRef = NewType("AdapterRef", str)
+    StateRef = NewType("StateRef", str)
+    FrameRef = NewType("FrameRef", str)
+else:  # what a NewType's call gives back: the name itself (without importing typing)
+    ConnectionRef = PrimitiveRef = InterfaceRef = OutputRef = AdapterRef = StateRef = FrameRef = str
 
 
 class Type(enum.Enum):
@@ -56,7 +60,7 @@ class Array:
 
 
 AnyType = Type | Array
-Value = int | float | bool | str | bytes | tuple[Any, ...]  # an array's value is a tuple of its elements
+Value = int | float | bool | str | bytes | tuple["Any", ...]  # an array's value is a tuple of its elements
 
 
 def coerce(value: Value, type_: AnyType) -> Value:

@@ -2,8 +2,7 @@
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
+from rdisc import TYPE_CHECKING
 from rdisc.semantics.model_expressions import Array, Expr, FrameRef, Parameter
 from rdisc.semantics.model_layouts import PostAction, Regex, StructLayout, Unpack
 from rdisc.source import Span

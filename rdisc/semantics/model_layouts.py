@@ -2,8 +2,7 @@
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
+from rdisc import TYPE_CHECKING
 from rdisc.frozen import field_names
 from rdisc.semantics.model_expressions import (
     BinaryOp,

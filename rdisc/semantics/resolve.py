@@ -8,8 +8,8 @@ not resolve is reported here once, and later passes skip it silently.
 from __future__ import annotations
 
 from collections.abc import Iterable, Mapping
-from typing import TYPE_CHECKING
 
+from rdisc import TYPE_CHECKING
 from rdisc.diagnostics import Diagnostics, Label
 from rdisc.engine.operations import FUNCTIONS
 from rdisc.source import Span

@@ -10,8 +10,8 @@ from __future__ import annotations
 
 from collections.abc import Callable, Mapping
 from functools import partial
-from typing import TYPE_CHECKING
 
+from rdisc import TYPE_CHECKING
 from rdisc.diagnostics import Diagnostics
 from rdisc.engine.operations import BINARY, FUNCTIONS, UNARY, EvalError, fits, lookup_or
 from rdisc.limits import MAX_ARRAY, MAX_INT

@@ -7,7 +7,7 @@ kept as written, repeats included: the checker reports what is missing or double
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
+from rdisc import TYPE_CHECKING
 
 if TYPE_CHECKING:
     from dataclasses import dataclass, field

@@ -10,7 +10,8 @@ where the grammar would otherwise read a different tree.
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING
+
+from rdisc import TYPE_CHECKING
 
 if TYPE_CHECKING:
     from dataclasses import dataclass
