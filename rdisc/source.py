@@ -18,9 +18,11 @@ if TYPE_CHECKING:
 else:  # the same classes, their methods written out ahead of time: rdisc/frozen.py
     from rdisc.source_methods import dataclass
 
+from rdisc.frozen import Frozen
+
 
 @dataclass(frozen=True, slots=True)
-class Span:
+class Span(metaclass=Frozen):
     """A half-open range of character offsets in one source file."""
 
     path: str
@@ -33,7 +35,7 @@ class Span:
 
 
 @dataclass(frozen=True, slots=True)
-class Position:
+class Position(metaclass=Frozen):
     line: int  # 0-based
     column: int  # 0-based, in code points
     utf16_column: int  # 0-based, in UTF-16 code units (what LSP counts)

@@ -12,6 +12,8 @@ if TYPE_CHECKING:
 else:  # the same classes, their methods written out ahead of time: rdisc/frozen.py
     from rdisc.diagnostics.core_methods import dataclass
 
+from rdisc.frozen import Frozen
+
 
 def abbreviate(text: str, limit: int = 24) -> str:
     """Text quoted in a message: escaped to ASCII, long text cut."""
@@ -29,7 +31,7 @@ class Severity(enum.IntEnum):
 
 
 @dataclass(frozen=True, slots=True)
-class Label:
+class Label(metaclass=Frozen):
     """A secondary place that explains the primary one."""
 
     span: Span
@@ -37,7 +39,7 @@ class Label:
 
 
 @dataclass(frozen=True, slots=True)
-class Diagnostic:
+class Diagnostic(metaclass=Frozen):
     code: str
     severity: Severity
     message: str

@@ -15,9 +15,8 @@ contract in docs/runtime.md.
 """
 
 # `typing.TYPE_CHECKING` without importing `typing` (a twentieth of a cold `rdisc check`, which imports
-# this package, `operations` and `signals`); they take it from here, and type checkers read
-# `if TYPE_CHECKING:` by its name as true. (rdisc's own modules have theirs from `rdisc`: the engine
-# imports nothing of rdisc but itself.)
+# this package, `operations` and `signals`, each of which says the same): type checkers read
+# `if TYPE_CHECKING:` by its name as true.
 TYPE_CHECKING = False
 
 if TYPE_CHECKING:  # at run time each name is imported when it is first asked for (__getattr__, below)

@@ -5,8 +5,8 @@ A module is carried from the end of its head to its end. Its head is its docstri
 imports: the standard library's, gathered once above the first section, and the engine's
 own (those it needs only for type checking included), which the sections make needless.
 A module that `rdisc check` imports keeps `typing` out of its run time: its head ends with
-`if TYPE_CHECKING:` over the standard library's imports too (gathered with the others) and over
-type variables, which the driver carries at the start of the module's body.
+`TYPE_CHECKING = False` and `if TYPE_CHECKING:` over the standard library's imports too (gathered
+with the others) and over type variables, which the driver carries at the start of the module's body.
 Each module comes after every module it imports, so the sections one after the other are
 one working module. `names()` is every name that module binds at its top level: the names a
 driver's own code must never take. This module itself is not carried.
@@ -101,6 +101,8 @@ def section(module: str, what: str, text: str) -> Section:
             pass  # the docstring
         elif isinstance(node, (ast.Import, ast.ImportFrom)):
             imports += [_standard(module, node)] if not _own(node) else []
+        elif ast.unparse(node) == "TYPE_CHECKING = False":
+            pass  # typing's, which the driver imports with the rest of typing's names
         elif isinstance(node, ast.If) and _type_checking(node):
             for inner in node.body:
                 if isinstance(inner, (ast.Import, ast.ImportFrom)):

@@ -24,8 +24,7 @@ import struct
 import sys
 from collections.abc import Callable, Mapping
 
-from rdisc.engine import TYPE_CHECKING
-
+TYPE_CHECKING = False  # typing's, without importing typing: `rdisc check` imports this module
 if TYPE_CHECKING:
     from typing import Any, Literal
 

@@ -8,8 +8,7 @@ from __future__ import annotations
 import signal
 from collections.abc import Callable
 
-from rdisc.engine import TYPE_CHECKING
-
+TYPE_CHECKING = False  # typing's, without importing typing: `rdisc check` imports this module
 if TYPE_CHECKING:
     from typing import Any, TypeVar
 

@@ -24,6 +24,8 @@ if TYPE_CHECKING:
 else:  # the same classes, their methods written out ahead of time: rdisc/frozen.py
     from rdisc.semantics.formats_methods import dataclass
 
+from rdisc.frozen import Frozen
+
 __all__ = ["MAX_MESSAGE", "MAX_REPEAT", "MOST_WIDTH", "FormatField", "Slot", "StructLayout", "TemplateError", "Varying",
            "bit_span", "format_fields", "format_width", "most_rounds", "regex_groups", "regex_min_length", "spec_accepts",
            "split_rest", "struct_codes", "struct_layout", "text_room", "varying_args", "widest"]
@@ -362,7 +364,7 @@ def most_rounds(layout: StructLayout, types: list[AnyType | None]) -> int:
 
 
 @dataclass(frozen=True, slots=True)
-class FormatField:
+class FormatField(metaclass=Frozen):
     spec: str
     offset: int  # of the `{` in the template
 

@@ -240,9 +240,11 @@ if TYPE_CHECKING:
 else:  # the same classes, their methods written out ahead of time: rdisc/frozen.py
     from rdisc.semantics.model_methods import dataclass, field
 
+from rdisc.frozen import Frozen
+
 
 @dataclass(frozen=True, slots=True)
-class Model:
+class Model(metaclass=Frozen):
     robot: Robot
     states: dict[str, StateVariable]
     connections: dict[str, Connection]

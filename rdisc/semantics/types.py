@@ -27,6 +27,8 @@ if TYPE_CHECKING:
 else:  # the same classes, their methods written out ahead of time: rdisc/frozen.py
     from rdisc.semantics.types_methods import dataclass
 
+from rdisc.frozen import Frozen
+
 T = AnyType | None  # None: unknown, already reported
 NUMERIC = (Type.INT, Type.FLOAT)
 Names = dict[str, tuple[Scope, AnyType]]  # what an expression may read: its scope and type, by name
@@ -73,7 +75,7 @@ ARITY = {
 
 
 @dataclass(frozen=True, slots=True)
-class Env:
+class Env(metaclass=Frozen):
     """What an expression may read, and how to explain what it may not."""
 
     names: Mapping[str, tuple[Scope, AnyType]]  # a layered view where the state variables are shared (Checker.env_with)

@@ -51,10 +51,10 @@ def _is_type_variable(node: ast.stmt) -> bool:
 
 
 def _is_head(node: ast.stmt, first: bool) -> bool:
-    """A docstring, an import, or `if TYPE_CHECKING:` over imports and type variables."""
+    """A docstring, an import, `TYPE_CHECKING = False`, or `if TYPE_CHECKING:` over imports and type variables."""
     if first and isinstance(node, ast.Expr) and isinstance(node.value, ast.Constant):
         return True
-    if isinstance(node, (ast.Import, ast.ImportFrom)):
+    if isinstance(node, (ast.Import, ast.ImportFrom)) or ast.unparse(node) == "TYPE_CHECKING = False":
         return True
     return _type_checking(node) and all(isinstance(inner, (ast.Import, ast.ImportFrom)) or _is_type_variable(inner)
                                         for inner in node.body)
