@@ -187,12 +187,12 @@ def _made(entry: Written, name: str, qualname: str, bases: tuple[type, ...], bod
     what the writer saw (the written module is stale)."""
     annotations: dict[str, object] = body.get("__annotations__", {})
     given = [(field_name, body.get(field_name, MISSING)) for field_name in annotations]
-    declared = tuple((field_name, value if value is MISSING or isinstance(value, FieldSpec) else DEFAULT)
-                     for field_name, value in given)
+    declared = tuple([(field_name, value if value is MISSING or isinstance(value, FieldSpec) else DEFAULT)
+                      for field_name, value in given])  # (a list made first: a generator is slower)
     if entry.declared != declared:
         return None
     init = entry.methods["__init__"]
-    init.__defaults__ = tuple(_default(value) for _, value in given if value is not MISSING)
+    init.__defaults__ = tuple([_default(value) for _, value in given if value is not MISSING])
     namespace = {key: value for key, value in body.items()
                  if key not in annotations and key not in ("__dict__", "__weakref__")}
     for key, method in entry.methods.items():
