@@ -17,15 +17,17 @@ the written modules equal to what the writer writes now.
 
 from __future__ import annotations
 
-from collections.abc import Callable
-from typing import TYPE_CHECKING, Any, TypeVar, cast
+import sys
+
+from rdisc import TYPE_CHECKING
 
 if TYPE_CHECKING:
     import dataclasses
-    from typing import Self
+    from collections.abc import Callable, Mapping
+    from typing import Any, Self, TypeVar
 
-_Class = TypeVar("_Class", bound=type)
-_Value = TypeVar("_Value")
+    _Class = TypeVar("_Class", bound=type)
+    _Value = TypeVar("_Value")
 
 
 class _Missing:
@@ -59,7 +61,7 @@ class _Default:
 DEFAULT: Any = _Default()
 
 
-class FieldSpec(tuple[Any, Any, bool, bool]):
+class FieldSpec(tuple["Any", "Any", bool, bool]):
     """What `field(...)` says of a field: (default, default_factory, compare, repr); compared with
     what the writer saw. A plain tuple's class: a NamedTuple's is compiled when it is made, a
     fraction of a millisecond of a cold `rdisc check`."""
@@ -171,46 +173,74 @@ def _default(given: object) -> object:
 def _standard(cls: _Class, frozen: bool, slots: bool) -> _Class:
     """The class made by `dataclasses`, its `field(...)` markers made standard fields first."""
     import dataclasses
+    from typing import cast
 
     for name, given in list(vars(cls).items()):
         if isinstance(given, FieldSpec):
             setattr(cls, name, _standard_field(given))
-    return cast(_Class, dataclasses.dataclass(frozen=frozen, slots=slots)(cls))
+    return cast("_Class", dataclasses.dataclass(frozen=frozen, slots=slots)(cls))
+
+
+def _made(entry: Written, name: str, qualname: str, bases: tuple[type, ...], body: Mapping[str, Any]) -> type | None:
+    """The class `body` declares, made once with the methods written for it, its slots and the
+    rest of what `dataclass(frozen=True, slots=True)` gives it; None when its fields differ from
+    what the writer saw (the written module is stale)."""
+    annotations: dict[str, object] = body.get("__annotations__", {})
+    given = [(field_name, body.get(field_name, MISSING)) for field_name in annotations]
+    declared = tuple([(field_name, value if value is MISSING or isinstance(value, FieldSpec) else DEFAULT)
+                      for field_name, value in given])  # (a list made first: a generator is slower)
+    if entry.declared != declared:
+        return None
+    init = entry.methods["__init__"]
+    init.__defaults__ = tuple([_default(value) for _, value in given if value is not MISSING])
+    namespace = {key: value for key, value in body.items()
+                 if key not in annotations and key not in ("__dict__", "__weakref__")}
+    for key, method in entry.methods.items():
+        method.__qualname__ = f"{qualname}.{key}"
+        namespace[key] = method
+    namespace.update(
+        __qualname__=qualname, __slots__=tuple(annotations), __match_args__=tuple(annotations),
+        __dataclass_fields__=_Fields(given, annotations),
+        __setattr__=_frozen_setattr, __delattr__=_frozen_delattr,
+        __getstate__=_getstate, __setstate__=_setstate,
+    )
+    made = type(name, bases, namespace)
+    written_module, made_fields = init.__globals__, vars(made)  # its `_set_<class>_<field>`, unbound until now
+    setter = "_set_" + name + "_"
+    for field_name in annotations:
+        written_module[setter + field_name] = made_fields[field_name].__set__
+    return made
+
+
+class Frozen(type):
+    """The metaclass of a frozen class whose methods were written ahead of time: its class statement
+    makes the finished class (`class Ident(metaclass=Frozen)`), a plain `type` with slots, where
+    without it the class statement makes one class and `dataclass` makes it again with slots (two
+    thirds of the cost of importing the syntax tree's classes). The methods are those written in
+    the declaring module's `<module>_methods`, which it has imported for `dataclass`; a class the
+    writer has not seen (or whose fields changed since) is made as any class and left to `dataclass`.
+    """
+
+    def __new__(mcs, name: str, bases: tuple[type, ...], body: dict[str, Any], /, **options: Any) -> Any:
+        written: dict[str, Written] = getattr(sys.modules.get(f"{body['__module__']}_methods"), "WRITTEN", {})
+        entry = written.get(body["__qualname__"])
+        made = None if entry is None else _made(entry, name, body["__qualname__"], bases, body)
+        return type(name, bases, body, **options) if made is None else made
 
 
 def classes(written: dict[str, Written]) -> Callable[..., Callable[[_Class], _Class]]:
-    """The `dataclass` decorator of one module, given the methods written for its classes."""
+    """The `dataclass` decorator of one module, given the methods written for its classes: a class
+    `Frozen` made is finished; any other is made again with them (or by `dataclasses`)."""
 
     def dataclass(*, frozen: bool = False, slots: bool = False) -> Callable[[_Class], _Class]:
         def make(cls: _Class) -> _Class:
-            body = vars(cls)
-            annotations: dict[str, object] = body.get("__annotations__", {})
-            given = [(name, body.get(name, MISSING)) for name in annotations]
-            declared = tuple((name, value if value is MISSING or isinstance(value, FieldSpec) else DEFAULT)
-                             for name, value in given)
             entry = written.get(cls.__qualname__)
-            if not (frozen and slots) or entry is None or entry.declared != declared:
+            if not (frozen and slots) or entry is None:
                 return _standard(cls, frozen, slots)
-            init = entry.methods["__init__"]
-            init.__defaults__ = tuple(_default(value) for _, value in given if value is not MISSING)
-            namespace = {key: value for key, value in body.items()
-                         if key not in annotations and key not in ("__dict__", "__weakref__")}
-            for key, method in entry.methods.items():
-                method.__qualname__ = f"{cls.__qualname__}.{key}"
-                namespace[key] = method
-            namespace.update(
-                __slots__=tuple(annotations), __match_args__=tuple(annotations),
-                __dataclass_fields__=_Fields(given, annotations),
-                __setattr__=_frozen_setattr, __delattr__=_frozen_delattr,
-                __getstate__=_getstate, __setstate__=_setstate,
-            )
-            made: _Class = type(cls)(cls.__name__, cls.__bases__, namespace)
-            made.__qualname__ = cls.__qualname__
-            written_module, made_fields = init.__globals__, vars(made)  # its `_set_<class>_<field>`, unbound until now
-            setter = "_set_" + cls.__name__ + "_"
-            for name in annotations:
-                written_module[setter + name] = made_fields[name].__set__
-            return made
+            if _written(cls):
+                return cls
+            made = _made(entry, cls.__name__, cls.__qualname__, cls.__bases__, vars(cls))
+            return _standard(cls, frozen, slots) if made is None else made  # type: ignore[return-value]
 
         return make
 
@@ -239,6 +269,7 @@ def field_names(value: object) -> tuple[str, ...]:
     any other value."""
     cls = type(value)
     if _written(cls):
-        return cast(tuple[str, ...], cls.__match_args__)  # type: ignore[attr-defined]
+        names: tuple[str, ...] = cls.__match_args__  # type: ignore[attr-defined]
+        return names
     made = getattr(cls, "__dataclass_fields__", None)
     return tuple(made) if isinstance(made, dict) else ()

@@ -5,7 +5,8 @@
     python -m rdisc.frozen_writer --check  # exit 1 when one of them is stale
 
 The declarations are read as text (Python's `ast`), never imported: each class decorated
-`@dataclass(frozen=True, slots=True)`, its annotated fields in order, and their defaults: a
+`@dataclass(frozen=True, slots=True)` and declared `class Name(metaclass=Frozen)` (so that its
+class statement makes it once, rdisc.frozen.Frozen), its annotated fields in order, and their defaults: a
 value (given to the written `__init__` when the class is made), or `field(default=...,
 default_factory=..., compare=..., repr=...)` written in place or bound to a module-level name (`_span`).
 """
@@ -182,8 +183,13 @@ def write(path: Path) -> str:
             continue
         if isinstance(target, ast.Name):
             named[target.id] = value
-    classes = [(c.name, _fields(c, named, relative)) for c in tree.body
-               if isinstance(c, ast.ClassDef) and any(_is_frozen(d) for d in c.decorator_list)]
+    frozen = [c for c in tree.body if isinstance(c, ast.ClassDef) and any(_is_frozen(d) for d in c.decorator_list)]
+    for c in frozen:
+        if not any(k.arg == "metaclass" and isinstance(k.value, ast.Name) and k.value.id == "Frozen"
+                   for k in c.keywords):
+            raise WriterError(f"{relative}:{c.lineno}: {c.name}: declare it `class {c.name}(metaclass=Frozen)`,"
+                              " so that its class statement makes it once")
+    classes = [(c.name, _fields(c, named, relative)) for c in frozen]
     every = [f for _, fields in classes for f in fields]
     used = ["DEFAULT"] * any(f.default for f in every) + ["FACTORY"] * any(f.factory for f in every)
     used += ["MISSING"] + ["FieldSpec"] * any(f.declared.startswith("FieldSpec") for f in every)
@@ -196,9 +202,11 @@ def write(path: Path) -> str:
         "",
         "from __future__ import annotations",
         "",
-        "from typing import Any",
-        "",
+        "from rdisc import TYPE_CHECKING",
         f"from rdisc.frozen import {', '.join(used)}, Written, classes, field",
+        "",
+        "if TYPE_CHECKING:",
+        "    from typing import Any",
         "",
         '__all__ = ["dataclass", "field"]',
         "",

@@ -8,7 +8,8 @@ in a source checkout they sit at the top level beside the package. Found with `o
 from __future__ import annotations
 
 import os
-from typing import TYPE_CHECKING
+
+from rdisc import TYPE_CHECKING
 
 if TYPE_CHECKING:
     from pathlib import Path

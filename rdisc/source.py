@@ -10,16 +10,19 @@ import bisect
 import os
 import posixpath
 from collections.abc import Mapping
-from typing import TYPE_CHECKING
+
+from rdisc import TYPE_CHECKING
 
 if TYPE_CHECKING:
     from dataclasses import dataclass
 else:  # the same classes, their methods written out ahead of time: rdisc/frozen.py
     from rdisc.source_methods import dataclass
 
+from rdisc.frozen import Frozen
+
 
 @dataclass(frozen=True, slots=True)
-class Span:
+class Span(metaclass=Frozen):
     """A half-open range of character offsets in one source file."""
 
     path: str
@@ -32,7 +35,7 @@ class Span:
 
 
 @dataclass(frozen=True, slots=True)
-class Position:
+class Position(metaclass=Frozen):
     line: int  # 0-based
     column: int  # 0-based, in code points
     utf16_column: int  # 0-based, in UTF-16 code units (what LSP counts)

@@ -30,9 +30,9 @@ LAYERS = [
     "console", "editor",
     "cli", "start", "__main__",
 ]
-"""Bottom first. `frozen_writer` and `__init__` stand apart (no other part imports them); `__version__` is
-the package's own attribute."""
-APART = {"__init__", "__version__", "frozen_writer"}
+"""Bottom first. `frozen_writer` and `__init__` stand apart (no other part imports them); `__version__` and
+`TYPE_CHECKING` (typing's, without importing typing) are the package's own attributes."""
+APART = {"__init__", "__version__", "TYPE_CHECKING", "frozen_writer"}
 
 
 def part_of(path: Path, root: Path) -> str:

@@ -11,9 +11,11 @@ import contextlib
 import signal
 import sys
 from types import ModuleType
-from typing import Any, cast
 
-from rdisc import __version__
+from rdisc import TYPE_CHECKING, __version__
+
+if TYPE_CHECKING:
+    from typing import Any
 
 # Each verb and its module in rdisc.cli, in the order `rdisc --help` lists them. Only these
 # names are ever imported.
@@ -126,7 +128,8 @@ def _main(argv: list[str] | None) -> int:
         budget = token_budget(args.max_tokens)
     try:
         with budget:
-            return cast(int, args.run(args))
+            status: int = args.run(args)
+            return status
     except KeyboardInterrupt:
         return 130
     except BrokenPipeError:

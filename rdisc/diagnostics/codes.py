@@ -13,10 +13,11 @@ if TYPE_CHECKING:
 else:  # the same classes, their methods written out ahead of time: rdisc/frozen.py
     from rdisc.diagnostics.codes_methods import dataclass
 
+from rdisc.frozen import Frozen
 
 
 @dataclass(frozen=True, slots=True)
-class Code:
+class Code(metaclass=Frozen):
     id: str
     name: str
     explanation: str

@@ -3,14 +3,16 @@
 from __future__ import annotations
 
 import enum
-from typing import TYPE_CHECKING
 
+from rdisc import TYPE_CHECKING
 from rdisc.source import Span
 
 if TYPE_CHECKING:
     from dataclasses import dataclass
 else:  # the same classes, their methods written out ahead of time: rdisc/frozen.py
     from rdisc.diagnostics.core_methods import dataclass
+
+from rdisc.frozen import Frozen
 
 
 def abbreviate(text: str, limit: int = 24) -> str:
@@ -29,7 +31,7 @@ class Severity(enum.IntEnum):
 
 
 @dataclass(frozen=True, slots=True)
-class Label:
+class Label(metaclass=Frozen):
     """A secondary place that explains the primary one."""
 
     span: Span
@@ -37,7 +39,7 @@ class Label:
 
 
 @dataclass(frozen=True, slots=True)
-class Diagnostic:
+class Diagnostic(metaclass=Frozen):
     code: str
     severity: Severity
     message: str

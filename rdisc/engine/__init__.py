@@ -14,7 +14,10 @@ and pyserial to open a port by name; nothing of rdisc outside it. The semantics 
 contract in docs/runtime.md.
 """
 
-from typing import TYPE_CHECKING
+# `typing.TYPE_CHECKING` without importing `typing` (a twentieth of a cold `rdisc check`, which imports
+# this package, `operations` and `signals`, each of which says the same): type checkers read
+# `if TYPE_CHECKING:` by its name as true.
+TYPE_CHECKING = False
 
 if TYPE_CHECKING:  # at run time each name is imported when it is first asked for (__getattr__, below)
     from rdisc.engine.actuation import Actuated, ActuatorLimit

@@ -4,6 +4,9 @@ marked sections of one module (the way Lark's standalone tool carries Lark).
 A module is carried from the end of its head to its end. Its head is its docstring and its
 imports: the standard library's, gathered once above the first section, and the engine's
 own (those it needs only for type checking included), which the sections make needless.
+A module that `rdisc check` imports keeps `typing` out of its run time: its head ends with
+`TYPE_CHECKING = False` and `if TYPE_CHECKING:` over the standard library's imports too (gathered
+with the others) and over type variables, which the driver carries at the start of the module's body.
 Each module comes after every module it imports, so the sections one after the other are
 one working module. `names()` is every name that module binds at its top level: the names a
 driver's own code must never take. This module itself is not carried.
@@ -73,9 +76,16 @@ def _own(node: ast.stmt) -> bool:
 
 
 def _type_checking(node: ast.stmt) -> bool:
-    """Whether a statement is `if TYPE_CHECKING:` over imports from the engine itself only."""
+    """Whether a statement is `if TYPE_CHECKING:` over imports and type variables only."""
     return (isinstance(node, ast.If) and isinstance(node.test, ast.Name) and node.test.id == "TYPE_CHECKING"
-            and not node.orelse and all(_own(inner) for inner in node.body))
+            and not node.orelse and all(isinstance(inner, (ast.Import, ast.ImportFrom)) or _type_variable(inner)
+                                        for inner in node.body))
+
+
+def _type_variable(node: ast.stmt) -> bool:
+    """Whether a statement is `Name = TypeVar(...)`."""
+    return (isinstance(node, ast.Assign) and isinstance(node.value, ast.Call)
+            and isinstance(node.value.func, ast.Name) and node.value.func.id == "TypeVar")
 
 
 def section(module: str, what: str, text: str) -> Section:
@@ -85,14 +95,21 @@ def section(module: str, what: str, text: str) -> Section:
     statements = ast.parse(text).body
     end = 0
     imports: list[ast.Import | ast.ImportFrom] = []
+    carried: list[str] = []  # the type variables of the head's `if TYPE_CHECKING:`
     for at, node in enumerate(statements):
-        docstring = at == 0 and isinstance(node, ast.Expr) and isinstance(node.value, ast.Constant)
-        if isinstance(node, (ast.Import, ast.ImportFrom)) and not _own(node):
-            modules = [node.module or ""] if isinstance(node, ast.ImportFrom) else [a.name for a in node.names]
-            if any(name.split(".")[0] == "rdisc" for name in modules):
-                raise ValueError(f"{module}: the engine imports nothing of rdisc but itself")
-            imports.append(node)
-        elif not (docstring or _own(node) or _type_checking(node)):
+        if at == 0 and isinstance(node, ast.Expr) and isinstance(node.value, ast.Constant):
+            pass  # the docstring
+        elif isinstance(node, (ast.Import, ast.ImportFrom)):
+            imports += [_standard(module, node)] if not _own(node) else []
+        elif ast.unparse(node) == "TYPE_CHECKING = False":
+            pass  # typing's, which the driver imports with the rest of typing's names
+        elif isinstance(node, ast.If) and _type_checking(node):
+            for inner in node.body:
+                if isinstance(inner, (ast.Import, ast.ImportFrom)):
+                    imports += [_standard(module, inner)] if not _own(inner) else []
+                else:
+                    carried.append(ast.get_source_segment(text, inner) or "")
+        else:
             break
         end = node.end_lineno or end
     for node in statements:
@@ -100,7 +117,16 @@ def section(module: str, what: str, text: str) -> Section:
                                   or (isinstance(node, ast.If) and ast.unparse(node.test) == "TYPE_CHECKING")):
             raise ValueError(f"{module}: line {node.lineno}: an import after the first definition")
     lines = text.split("\n")
-    return Section(module, what, "\n".join(lines[:end]), "\n".join(lines[end:]).strip("\n"), tuple(imports))
+    body = "\n\n".join([*carried, "\n".join(lines[end:]).strip("\n")])
+    return Section(module, what, "\n".join(lines[:end]), body, tuple(imports))
+
+
+def _standard(module: str, node: ast.Import | ast.ImportFrom) -> ast.Import | ast.ImportFrom:
+    """`node`, an import of the standard library's, or ValueError: a driver would carry it."""
+    modules = [node.module or ""] if isinstance(node, ast.ImportFrom) else [a.name for a in node.names]
+    if any(name.split(".")[0] == "rdisc" for name in modules):
+        raise ValueError(f"{module}: the engine imports nothing of rdisc but itself")
+    return node
 
 
 @functools.cache

@@ -23,7 +23,10 @@ import math
 import struct
 import sys
 from collections.abc import Callable, Mapping
-from typing import Any, Literal
+
+TYPE_CHECKING = False  # typing's, without importing typing: `rdisc check` imports this module
+if TYPE_CHECKING:
+    from typing import Any, Literal
 
 MAX_INT = (1 << 64) - 1  # the largest int a state variable, parameter or field holds; its negation the smallest
 MAX_RESULT_BITS = 4096  # of an int result inside an expression, so that no chain of operations explodes

@@ -7,9 +7,12 @@ from __future__ import annotations
 
 import signal
 from collections.abc import Callable
-from typing import Any, TypeVar
 
-_Started = TypeVar("_Started")
+TYPE_CHECKING = False  # typing's, without importing typing: `rdisc check` imports this module
+if TYPE_CHECKING:
+    from typing import Any, TypeVar
+
+    _Started = TypeVar("_Started")
 
 EXIT_OK, EXIT_ERROR, EXIT_USAGE, EXIT_SIGINT, EXIT_SIGTERM = 0, 1, 2, 130, 143
 

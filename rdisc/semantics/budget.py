@@ -11,8 +11,8 @@ ASCII messages are counted at their shortest, so a warning is never a false alar
 from __future__ import annotations
 
 from collections.abc import Iterator
-from typing import TYPE_CHECKING
 
+from rdisc import TYPE_CHECKING
 from rdisc.diagnostics import Diagnostics
 from rdisc.semantics import formats
 from rdisc.semantics import model as m
@@ -23,11 +23,13 @@ if TYPE_CHECKING:
 else:  # the same classes, their methods written out ahead of time: rdisc/frozen.py
     from rdisc.semantics.budget_methods import dataclass
 
+from rdisc.frozen import Frozen
+
 _SAMPLE: dict[m.AnyType, m.Value] = {m.Type.INT: 0, m.Type.FLOAT: 0.0, m.Type.BOOL: False, m.Type.STRING: ""}
 
 
 @dataclass(frozen=True, slots=True)
-class Exchange:
+class Exchange(metaclass=Frozen):
     """What running one interface costs on the wire."""
 
     interface: str
@@ -41,7 +43,7 @@ class Exchange:
 
 
 @dataclass(frozen=True, slots=True)
-class SensorLoad:
+class SensorLoad(metaclass=Frozen):
     """A sensor read on this connection: its exchange's bytes and time on the wire, and how
     often it is read (at most once per cache time: rdisc.semantics.sensed)."""
 
@@ -52,7 +54,7 @@ class SensorLoad:
 
 
 @dataclass(frozen=True, slots=True)
-class ConnectionBudget:
+class ConnectionBudget(metaclass=Frozen):
     connection: str
     baud: int
     frequency_hz: float

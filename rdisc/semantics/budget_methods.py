@@ -6,9 +6,11 @@ changing a class's fields (a test holds this file equal to what it writes).
 
 from __future__ import annotations
 
-from typing import Any
-
+from rdisc import TYPE_CHECKING
 from rdisc.frozen import DEFAULT, MISSING, Written, classes, field
+
+if TYPE_CHECKING:
+    from typing import Any
 
 __all__ = ["dataclass", "field"]
 

@@ -13,9 +13,8 @@ import re
 import struct
 import warnings
 from functools import lru_cache
-from typing import TYPE_CHECKING
 
-from rdisc import patterns
+from rdisc import TYPE_CHECKING, patterns
 from rdisc.frozen import replace
 from rdisc.limits import MAX_ARRAY
 from rdisc.semantics.model import AnyType, Array, Slot, StructLayout, Type, Varying, bit_span
@@ -24,6 +23,8 @@ if TYPE_CHECKING:
     from dataclasses import dataclass
 else:  # the same classes, their methods written out ahead of time: rdisc/frozen.py
     from rdisc.semantics.formats_methods import dataclass
+
+from rdisc.frozen import Frozen
 
 __all__ = ["MAX_MESSAGE", "MAX_REPEAT", "MOST_WIDTH", "FormatField", "Slot", "StructLayout", "TemplateError", "Varying",
            "bit_span", "format_fields", "format_width", "most_rounds", "regex_groups", "regex_min_length", "spec_accepts",
@@ -363,7 +364,7 @@ def most_rounds(layout: StructLayout, types: list[AnyType | None]) -> int:
 
 
 @dataclass(frozen=True, slots=True)
-class FormatField:
+class FormatField(metaclass=Frozen):
     spec: str
     offset: int  # of the `{` in the template
 

@@ -11,8 +11,7 @@ the elements (`model_elements`) and the body (`model_body`).
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
+from rdisc import TYPE_CHECKING
 from rdisc.semantics.model_body import (
     ORIGIN,
     Actuator,
@@ -241,9 +240,11 @@ if TYPE_CHECKING:
 else:  # the same classes, their methods written out ahead of time: rdisc/frozen.py
     from rdisc.semantics.model_methods import dataclass, field
 
+from rdisc.frozen import Frozen
+
 
 @dataclass(frozen=True, slots=True)
-class Model:
+class Model(metaclass=Frozen):
     robot: Robot
     states: dict[str, StateVariable]
     connections: dict[str, Connection]

@@ -3,8 +3,8 @@
 from __future__ import annotations
 
 import enum
-from typing import TYPE_CHECKING
 
+from rdisc import TYPE_CHECKING
 from rdisc.semantics.model_expressions import Expr
 from rdisc.source import Span
 
@@ -12,6 +12,8 @@ if TYPE_CHECKING:
     from dataclasses import dataclass, field
 else:  # the same classes, their methods written out ahead of time: rdisc/frozen.py
     from rdisc.semantics.model_body_methods import dataclass, field
+
+from rdisc.frozen import Frozen
 
 _span = field(compare=False, repr=False, default=None)
 
@@ -29,7 +31,7 @@ The element's numbers are at the settings' values; these let canonical JSON carr
 
 
 @dataclass(frozen=True, slots=True)
-class Pose:
+class Pose(metaclass=Frozen):
     """A frame relative to its parent's: a translation (m), then roll, pitch, yaw (rad) about
     the parent's fixed x, y, z axes, as URDF's `origin`."""
 
@@ -48,7 +50,7 @@ class ShapeKind(enum.Enum):
 
 
 @dataclass(frozen=True, slots=True)
-class Shape:
+class Shape(metaclass=Frozen):
     """A visual or collision shape placed in its link's frame."""
 
     kind: ShapeKind
@@ -61,7 +63,7 @@ class Shape:
 
 
 @dataclass(frozen=True, slots=True)
-class Inertial:
+class Inertial(metaclass=Frozen):
     """Mass (kg) at `centre` (m, in the link's frame), and the inertia tensor about the centre,
     in the link's axes (kg m²): ixx, iyy, izz, ixy, ixz, iyz."""
 
@@ -72,7 +74,7 @@ class Inertial:
 
 
 @dataclass(frozen=True, slots=True)
-class Link:
+class Link(metaclass=Frozen):
     name: str
     visuals: tuple[Shape, ...] = ()
     collisions: tuple[Shape, ...] = ()
@@ -88,7 +90,7 @@ def world_joint(root: str) -> str:
 
 
 @dataclass(frozen=True, slots=True)
-class Spawn:
+class Spawn(metaclass=Frozen):
     """The root link `floating` (free on the floor: a mobile base) or `fixed` to the world (an arm
     bolted down), its frame at `pose` in the world's when the simulation starts."""
 
@@ -105,7 +107,7 @@ class JointKind(enum.Enum):
 
 
 @dataclass(frozen=True, slots=True)
-class Mimic:
+class Mimic(metaclass=Frozen):
     """A joint that follows another: its position is `multiplier` times `joint`'s, plus `offset`
     (URDF's `<mimic>`, MuJoCo's joint equality)."""
 
@@ -115,7 +117,7 @@ class Mimic:
 
 
 @dataclass(frozen=True, slots=True)
-class Joint:
+class Joint(metaclass=Frozen):
     """`child`'s frame is `origin` in `parent`'s, then moved about or along the unit `axis`."""
 
     name: str
@@ -146,7 +148,7 @@ class Quantity(enum.Enum):
 
 
 @dataclass(frozen=True, slots=True)
-class Binding:
+class Binding(metaclass=Frozen):
     """A joint quantity and a device value, converted both ways. A command drives a parameter
     of a primitive or interface (`target.parameter[index]`); a measure reads a state variable
     (`target[index]`). `to_device` reads the quantity by its name (`position`, ...) and gives the
@@ -168,7 +170,7 @@ class Binding:
 
 
 @dataclass(frozen=True, slots=True)
-class Transmission:
+class Transmission(metaclass=Frozen):
     """How the device moves and senses one joint."""
 
     name: str
@@ -186,7 +188,7 @@ class ActuatorKind(enum.Enum):
 
 
 @dataclass(frozen=True, slots=True)
-class Actuator:
+class Actuator(metaclass=Frozen):
     """What drives a joint (thesis §7.2.6): its limits, which shape (or, `refuse`, refuse) the commands
     a joint is given (a position moves at most `velocity`, a speed changes by at most `acceleration` a second), and
     the gains the simulation gives it (`gain` N m/rad, `damping` N m s/rad; None: derived)."""

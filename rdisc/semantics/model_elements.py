@@ -2,8 +2,7 @@
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
+from rdisc import TYPE_CHECKING
 from rdisc.frozen import replace
 from rdisc.semantics.model_expressions import (
     AdapterRef,
@@ -42,6 +41,8 @@ if TYPE_CHECKING:
 else:  # the same classes, their methods written out ahead of time: rdisc/frozen.py
     from rdisc.semantics.model_elements_methods import dataclass, field
 
+from rdisc.frozen import Frozen
+
 _span = field(compare=False, repr=False, default=None)
 
 
@@ -49,7 +50,7 @@ _span = field(compare=False, repr=False, default=None)
 
 
 @dataclass(frozen=True, slots=True)
-class Robot:
+class Robot(metaclass=Frozen):
     name: str
     author: str | None = None
     description: str | None = None
@@ -59,7 +60,7 @@ class Robot:
 
 
 @dataclass(frozen=True, slots=True)
-class StateVariable:
+class StateVariable(metaclass=Frozen):
     name: str
     type: AnyType
     initial: Value
@@ -69,7 +70,7 @@ class StateVariable:
 
 
 @dataclass(frozen=True, slots=True)
-class Sensor:
+class Sensor(metaclass=Frozen):
     """`sensor NAME: TYPE from PRIMITIVE() cache N ms`: the primitive's one reply value, read
     when a reader finds it older than the cache time and kept until then (thesis §7.2.4)."""
 
@@ -83,7 +84,7 @@ class Sensor:
 
 
 @dataclass(frozen=True, slots=True)
-class Setting:
+class Setting(metaclass=Frozen):
     """A value given when connecting (a baud rate, a servo's ID, a wheel base): read-only,
     read by expressions as state is; `default` when none is given, and what the checks use."""
 
@@ -100,7 +101,7 @@ class Setting:
 
 
 @dataclass(frozen=True, slots=True)
-class HookCall:
+class HookCall(metaclass=Frozen):
     """A connection event calling an interface; arguments see state only."""
 
     interface: InterfaceRef
@@ -109,13 +110,13 @@ class HookCall:
 
 
 @dataclass(frozen=True, slots=True)
-class Keepalive:
+class Keepalive(metaclass=Frozen):
     call: HookCall
     interval_ms: float
 
 
 @dataclass(frozen=True, slots=True)
-class Connection:
+class Connection(metaclass=Frozen):
     name: str
     kind: str  # "serial"
     baud: int
@@ -152,7 +153,7 @@ class Connection:
 
 
 @dataclass(frozen=True, slots=True)
-class Primitive:
+class Primitive(metaclass=Frozen):
     name: str
     params: tuple[Parameter, ...]
     connection: ConnectionRef
@@ -235,7 +236,7 @@ class Primitive:
 
 
 @dataclass(frozen=True, slots=True)
-class PrimitiveCall:
+class PrimitiveCall(metaclass=Frozen):
     """A call in an interface's body: of a primitive, or (`interface`, when no primitive has
     the name) of another interface; the checker keeps the calls between interfaces acyclic."""
 
@@ -252,7 +253,7 @@ class PrimitiveCall:
 
 
 @dataclass(frozen=True, slots=True)
-class Interface:
+class Interface(metaclass=Frozen):
     name: str
     params: tuple[Parameter, ...]
     periodic: bool
@@ -268,7 +269,7 @@ class Interface:
 
 
 @dataclass(frozen=True, slots=True)
-class AdapterField:
+class AdapterField(metaclass=Frozen):
     name: str
     type: AnyType
     unit: str | None = None
@@ -277,7 +278,7 @@ class AdapterField:
 
 
 @dataclass(frozen=True, slots=True)
-class FrameworkMapping:
+class FrameworkMapping(metaclass=Frozen):
     """What an adapter is in one framework (thesis §7.2.5; rdisc.semantics.frameworks): the
     framework (`ros2`) and its title (`ROS 2`), the adapter's message or schema type there, each
     field's path in it in the adapter's field order (None: no `ros` path given), and the encodings
@@ -292,7 +293,7 @@ class FrameworkMapping:
 
 
 @dataclass(frozen=True, slots=True)
-class Adapter:
+class Adapter(metaclass=Frozen):
     name: str
     fields: tuple[AdapterField, ...]
     ros: str | None = None  # the `ros` shorthand as written; what it is in each framework: `frameworks`
@@ -310,7 +311,7 @@ class Adapter:
 
 
 @dataclass(frozen=True, slots=True)
-class DomainInput:
+class DomainInput(metaclass=Frozen):
     name: str
     adapter: AdapterRef
     interface: InterfaceRef
@@ -324,7 +325,7 @@ Rows = tuple[tuple[float, ...], ...]
 
 
 @dataclass(frozen=True, slots=True)
-class Noise:
+class Noise(metaclass=Frozen):
     """A field's error model (thesis §7.2.3): its covariance, a deviation's square when it was
     written as one (`deviation`, in `unit`)."""
 
@@ -342,7 +343,7 @@ class Noise:
 
 
 @dataclass(frozen=True, slots=True)
-class Kalman:
+class Kalman(metaclass=Frozen):
     """A field published as a linear Kalman filter's estimate (H x): the filter's start state and
     covariance, its transition and process noise, its measurement and measurement noise."""
 
@@ -357,7 +358,7 @@ class Kalman:
 
 
 @dataclass(frozen=True, slots=True)
-class DomainOutput:
+class DomainOutput(metaclass=Frozen):
     name: str
     adapter: AdapterRef
     fields: tuple[tuple[str, Expr], ...]  # in the adapter's field order

@@ -4,25 +4,31 @@ from __future__ import annotations
 
 import enum
 from collections.abc import Iterator
-from typing import TYPE_CHECKING, Any, NewType
 
+from rdisc import TYPE_CHECKING
 from rdisc.source import Span
 
 if TYPE_CHECKING:
     from dataclasses import dataclass, field
+    from typing import Any, NewType
 else:  # the same classes, their methods written out ahead of time: rdisc/frozen.py
     from rdisc.semantics.model_expressions_methods import dataclass, field
+
+from rdisc.frozen import Frozen
 
 _span = field(compare=False, repr=False, default=None)
 
 
-ConnectionRef = NewType("ConnectionRef", str)
-PrimitiveRef = NewType("PrimitiveRef", str)
-InterfaceRef = NewType("InterfaceRef", str)
-OutputRef = NewType("OutputRef", str)
-AdapterRef = NewType("AdapterRef", str)
-StateRef = NewType("StateRef", str)
-FrameRef = NewType("FrameRef", str)
+if TYPE_CHECKING:
+    ConnectionRef = NewType("ConnectionRef", str)
+    PrimitiveRef = NewType("PrimitiveRef", str)
+    InterfaceRef = NewType("InterfaceRef", str)
+    OutputRef = NewType("OutputRef", str)
+    AdapterRef = NewType("AdapterRef", str)
+    StateRef = NewType("StateRef", str)
+    FrameRef = NewType("FrameRef", str)
+else:  # what a NewType's call gives back: the name itself (without importing typing)
+    ConnectionRef = PrimitiveRef = InterfaceRef = OutputRef = AdapterRef = StateRef = FrameRef = str
 
 
 class Type(enum.Enum):
@@ -39,7 +45,7 @@ class Type(enum.Enum):
 
 
 @dataclass(frozen=True, slots=True)
-class Array:
+class Array(metaclass=Frozen):
     """A fixed number of values of one scalar type (`int[6]`), held as a tuple. An adapter's
     field leaves the size open (`float[]`, size 0): the description that uses it fixes it."""
 
@@ -56,7 +62,7 @@ class Array:
 
 
 AnyType = Type | Array
-Value = int | float | bool | str | bytes | tuple[Any, ...]  # an array's value is a tuple of its elements
+Value = int | float | bool | str | bytes | tuple["Any", ...]  # an array's value is a tuple of its elements
 
 
 def coerce(value: Value, type_: AnyType) -> Value:
@@ -82,14 +88,14 @@ class Scope(enum.Enum):
 
 
 @dataclass(frozen=True, slots=True)
-class Const:
+class Const(metaclass=Frozen):
     value: Value
     type: AnyType
     span: Span | None = _span
 
 
 @dataclass(frozen=True, slots=True)
-class Var:
+class Var(metaclass=Frozen):
     name: str
     scope: Scope
     type: AnyType
@@ -97,7 +103,7 @@ class Var:
 
 
 @dataclass(frozen=True, slots=True)
-class ReplyValue:
+class ReplyValue(metaclass=Frozen):
     """`out[index]`: one value of the primitive's reply."""
 
     index: int
@@ -106,7 +112,7 @@ class ReplyValue:
 
 
 @dataclass(frozen=True, slots=True)
-class UnaryOp:
+class UnaryOp(metaclass=Frozen):
     op: str  # "-", "+", "~", "not"
     operand: Expr
     type: Type
@@ -114,7 +120,7 @@ class UnaryOp:
 
 
 @dataclass(frozen=True, slots=True)
-class BinaryOp:
+class BinaryOp(metaclass=Frozen):
     op: str
     left: Expr
     right: Expr
@@ -123,7 +129,7 @@ class BinaryOp:
 
 
 @dataclass(frozen=True, slots=True)
-class IfElse:
+class IfElse(metaclass=Frozen):
     cond: Expr
     then: Expr
     orelse: Expr
@@ -132,7 +138,7 @@ class IfElse:
 
 
 @dataclass(frozen=True, slots=True)
-class FuncCall:
+class FuncCall(metaclass=Frozen):
     func: str  # one of rdisc.engine.operations.FUNCTIONS
     args: tuple[Expr, ...]
     type: AnyType
@@ -140,7 +146,7 @@ class FuncCall:
 
 
 @dataclass(frozen=True, slots=True)
-class Table:
+class Table(metaclass=Frozen):
     """A lookup table constant: its keys (ints or strings) and values, each of one type."""
 
     name: str
@@ -151,7 +157,7 @@ class Table:
 
 
 @dataclass(frozen=True, slots=True)
-class Lookup:
+class Lookup(metaclass=Frozen):
     """`TABLE[key]`: the value a lookup table holds for the key; a key it lacks is an error,
     unless a `default` is given (`TABLE.get(key, default)`)."""
 
@@ -164,7 +170,7 @@ class Lookup:
 
 
 @dataclass(frozen=True, slots=True)
-class InTable:
+class InTable(metaclass=Frozen):
     """`key in TABLE`: whether a lookup table has an entry for the key."""
 
     table: str
@@ -175,7 +181,7 @@ class InTable:
 
 
 @dataclass(frozen=True, slots=True)
-class ArrayValue:
+class ArrayValue(metaclass=Frozen):
     """`[a, b, c]`: an array of the items' values."""
 
     items: tuple[Expr, ...]
@@ -184,7 +190,7 @@ class ArrayValue:
 
 
 @dataclass(frozen=True, slots=True)
-class Element:
+class Element(metaclass=Frozen):
     """`array[index]`: one element; an index outside the array is an error, never wrapped."""
 
     array: Expr
@@ -194,7 +200,7 @@ class Element:
 
 
 @dataclass(frozen=True, slots=True)
-class Replaced:
+class Replaced(metaclass=Frozen):
     """The array with one element replaced: what `array[index] = value` in a post-action stores."""
 
     array: Expr
@@ -258,7 +264,7 @@ Expr = (Const | Var | ReplyValue | UnaryOp | BinaryOp | IfElse | FuncCall | Look
 
 
 @dataclass(frozen=True, slots=True)
-class Parameter:
+class Parameter(metaclass=Frozen):
     name: str
     type: AnyType
     low: int | float | None = None  # the range a value must be in, when declared

@@ -2,8 +2,7 @@
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
+from rdisc import TYPE_CHECKING
 from rdisc.semantics.model_expressions import Array, Expr, FrameRef, Parameter
 from rdisc.semantics.model_layouts import PostAction, Regex, StructLayout, Unpack
 from rdisc.source import Span
@@ -13,6 +12,8 @@ if TYPE_CHECKING:
 else:  # the same classes, their methods written out ahead of time: rdisc/frozen.py
     from rdisc.semantics.model_frames_methods import dataclass, field
 
+from rdisc.frozen import Frozen
+
 _span = field(compare=False, repr=False, default=None)
 
 
@@ -20,7 +21,7 @@ _span = field(compare=False, repr=False, default=None)
 
 
 @dataclass(frozen=True, slots=True)
-class ChecksumAlgorithm:
+class ChecksumAlgorithm(metaclass=Frozen):
     """An additive sum, an XOR or a CRC (Rocksoft parameters), then optionally
     inverted (`~value`) and masked, all within `width` bits."""
 
@@ -37,7 +38,7 @@ class ChecksumAlgorithm:
 
 
 @dataclass(frozen=True, slots=True)
-class FrameBytes:
+class FrameBytes(metaclass=Frozen):
     """Constant bytes (latin-1 text): the header, a literal between parts, or the terminator."""
 
     role: str  # "header" | "literal" | "terminator"
@@ -45,7 +46,7 @@ class FrameBytes:
 
 
 @dataclass(frozen=True, slots=True)
-class FrameField:
+class FrameField(metaclass=Frozen):
     """A value computed from the frame's parameters, in a one-integer struct format.
     In a reply it is read and must equal the value the request was framed with."""
 
@@ -56,7 +57,7 @@ class FrameField:
 
 
 @dataclass(frozen=True, slots=True)
-class FrameLength:
+class FrameLength(metaclass=Frozen):
     """The payload's size plus `adjust`, in a one-integer struct format."""
 
     format: str
@@ -65,7 +66,7 @@ class FrameLength:
 
 
 @dataclass(frozen=True, slots=True)
-class FramePayload:
+class FramePayload(metaclass=Frozen):
     """Where the primitive's own bytes go; `trimmed`: without their trailing zero bytes (a first
     byte kept), which a reader puts back up to the size its decoding takes (MAVLink 2)."""
 
@@ -73,7 +74,7 @@ class FramePayload:
 
 
 @dataclass(frozen=True, slots=True)
-class FrameSeed:
+class FrameSeed(metaclass=Frozen):
     """`seed TABLE[FIELD]`: the byte the lookup table holds for the value of the field (the part
     `part` of the checksum's side), summed after the bytes covered and never sent (MAVLink 2's
     CRC_EXTRA); `entries`, the table's (key, byte) pairs."""
@@ -85,7 +86,7 @@ class FrameSeed:
 
 
 @dataclass(frozen=True, slots=True)
-class FrameChecksum:
+class FrameChecksum(metaclass=Frozen):
     """A checksum over the parts `first` to `last` of its side (indexes); in a reply,
     `with_request` puts the request's bytes, as sent, before them; `seed`, a byte summed after them."""
 
@@ -99,7 +100,7 @@ class FrameChecksum:
 
 
 @dataclass(frozen=True, slots=True)
-class FrameOptional:
+class FrameOptional(metaclass=Frozen):
     """The `count` parts after it, which a reply may lack, all together: they are there when
     their first bytes (constant) are. A request writes them."""
 
@@ -107,7 +108,7 @@ class FrameOptional:
 
 
 @dataclass(frozen=True, slots=True)
-class BitField:
+class BitField(metaclass=Frozen):
     """`width` bits of a `FrameBits`: a field's value over the frame's parameters (in a reply
     read and checked like a `FrameField`), or, `value` None, the payload's size plus `adjust`."""
 
@@ -118,7 +119,7 @@ class BitField:
 
 
 @dataclass(frozen=True, slots=True)
-class FrameBits:
+class FrameBits(metaclass=Frozen):
     """One unsigned integer in a one-integer struct format, holding `fields` from its lowest
     bit up (their widths add up to the format's bits)."""
 
@@ -135,7 +136,7 @@ FramePart = FrameBytes | FrameField | FrameLength | FramePayload | FrameChecksum
 
 
 @dataclass(frozen=True, slots=True)
-class Escaping:
+class Escaping(metaclass=Frozen):
     """Escaping between a frame's flags (SLIP, HDLC, PPP): each byte of `table` is sent as
     `escape` and its code (one character up to \\xff each), so no flag comes between them."""
 
@@ -144,7 +145,7 @@ class Escaping:
 
 
 @dataclass(frozen=True, slots=True)
-class Frame:
+class Frame(metaclass=Frozen):
     """A frame's parts each way; with `either`, more than one layout of a side: a request is
     written with the first that can state its payload's size, a reply read by its header."""
 
@@ -172,13 +173,13 @@ class Frame:
 
 
 @dataclass(frozen=True, slots=True)
-class FrameUse:
+class FrameUse(metaclass=Frozen):
     frame: FrameRef
     args: tuple[Expr, ...]  # over the primitive's parameters
 
 
 @dataclass(frozen=True, slots=True)
-class ReplyCase:
+class ReplyCase(metaclass=Frozen):
     """The reply of a primitive when its table's key (or its reply's tag) has `value`, or
     any value from `value` to `last`."""
 
@@ -205,7 +206,7 @@ class ReplyCase:
 
 
 @dataclass(frozen=True, slots=True)
-class ListedReply:
+class ListedReply(metaclass=Frozen):
     """One reply of `replies { ... }`, read in its place among the others: through its own
     frame (None: the primitive's), decoded, held by its own `expect`, then its post-actions."""
 
@@ -216,7 +217,7 @@ class ListedReply:
 
 
 @dataclass(frozen=True, slots=True)
-class RepliesEach:
+class RepliesEach(metaclass=Frozen):
     """`replies id in ids frame status(id)` over an array parameter `ids`: a reply for each of
     its elements, as many as the caller gives, each read through the one reply frame (`reply_frames`)
     whose arguments read that element as `var`."""
@@ -236,7 +237,7 @@ class RepliesEach:
 
 
 @dataclass(frozen=True, slots=True)
-class ErrorReply:
+class ErrorReply(metaclass=Frozen):
     """The reply a device may send instead of the one asked for (Modbus's exception, a NACK):
     known by its own frame (None: the primitive's, or none) or by its first bytes (`marker`,
     latin-1), decoded, its first value the device's code, named by the enum `codes`. It is
@@ -255,7 +256,7 @@ INDEX = "index"  # the name of a record's position in the post-actions of `reply
 
 
 @dataclass(frozen=True, slots=True)
-class ReplyTable:
+class ReplyTable(metaclass=Frozen):
     key: str  # the parameter whose value chooses the reply ("" when a tag does)
     cases: tuple[ReplyCase, ...]
     tag: str | None = None  # a one-integer struct format: the tag starting the payload chooses

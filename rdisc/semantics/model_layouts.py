@@ -2,8 +2,7 @@
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
+from rdisc import TYPE_CHECKING
 from rdisc.frozen import field_names
 from rdisc.semantics.model_expressions import (
     BinaryOp,
@@ -28,6 +27,8 @@ if TYPE_CHECKING:
 else:  # the same classes, their methods written out ahead of time: rdisc/frozen.py
     from rdisc.semantics.model_layouts_methods import dataclass, field
 
+from rdisc.frozen import Frozen
+
 _span = field(compare=False, repr=False, default=None)
 
 
@@ -35,7 +36,7 @@ _span = field(compare=False, repr=False, default=None)
 
 
 @dataclass(frozen=True, slots=True)
-class Slot:
+class Slot(metaclass=Frozen):
     """One value a struct format takes or yields."""
 
     code: str  # the struct code as written: `B`, `3s`, `B{1,1,6}` for a bit field, `*` for the rest
@@ -61,7 +62,7 @@ def bit_span(low: int, width: int) -> str:
 
 
 @dataclass(frozen=True, slots=True)
-class Varying:
+class Varying(metaclass=Frozen):
     """A group repeated as many times as the message says, after `head` (a struct format
     with its byte order) and before `tail`: `#(BH)` as many times as the count field `#B`
     in the head says (its index among the head's values: `count_at`), `*(BH)` until the
@@ -81,7 +82,7 @@ class Varying:
 
 
 @dataclass(frozen=True, slots=True)
-class StructLayout:
+class StructLayout(metaclass=Frozen):
     """A struct format as every stage after the checker reads it: its values, the struct
     module's format and the sizes, worked out once."""
 
@@ -125,7 +126,7 @@ REFUSED = StructLayout((), 0, False)
 
 
 @dataclass(frozen=True, slots=True)
-class Pack:
+class Pack(metaclass=Frozen):
     """Raw-encoded request: a struct format."""
 
     format: str
@@ -134,14 +135,14 @@ class Pack:
 
 
 @dataclass(frozen=True, slots=True)
-class Format:
+class Format(metaclass=Frozen):
     """ASCII request: a PEP 3101 format with positional fields."""
 
     template: str
 
 
 @dataclass(frozen=True, slots=True)
-class Unpack:
+class Unpack(metaclass=Frozen):
     """Fixed-width raw reply: a struct format. With `until`, an unframed tagged reply's entry
     reads to those bytes (Firmata's sysex, ended by 0xF7) and its `*` rest takes what is before."""
 
@@ -151,14 +152,14 @@ class Unpack:
 
 
 @dataclass(frozen=True, slots=True)
-class Regex:
+class Regex(metaclass=Frozen):
     """ASCII reply line, matched by a regular expression; groups are the values."""
 
     pattern: str
 
 
 @dataclass(frozen=True, slots=True)
-class PostAction:
+class PostAction(metaclass=Frozen):
     target: StateRef
     value: Expr
     span: Span | None = _span
@@ -189,7 +190,7 @@ BREAK = "break"  # a LineLevel's line for a serial break: its value the duration
 
 
 @dataclass(frozen=True, slots=True)
-class LineLevel:
+class LineLevel(metaclass=Frozen):
     """A modem line and its level (a bool over state and the primitive's parameters)."""
 
     line: str  # one of MODEM_LINES, or BREAK

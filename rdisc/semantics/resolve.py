@@ -8,8 +8,8 @@ not resolve is reported here once, and later passes skip it silently.
 from __future__ import annotations
 
 from collections.abc import Iterable, Mapping
-from typing import TYPE_CHECKING
 
+from rdisc import TYPE_CHECKING
 from rdisc.diagnostics import Diagnostics, Label
 from rdisc.engine.operations import FUNCTIONS
 from rdisc.source import Span
@@ -20,6 +20,8 @@ if TYPE_CHECKING:
 else:  # the same classes, their methods written out ahead of time: rdisc/frozen.py
     from rdisc.semantics.resolve_methods import dataclass
 
+from rdisc.frozen import Frozen
+
 # Words that would be read as keywords where a name can stand. Other keywords of
 # the language only occur in places no name can, so they stay usable as names
 # (the thesis's Create has interfaces named `startup` and `drive`).
@@ -27,7 +29,7 @@ KEYWORDS = frozenset(["if", "else", "and", "or", "not", "True", "False", "out", 
 
 
 @dataclass(frozen=True, slots=True)
-class Unit:
+class Unit(metaclass=Frozen):
     """One parsed file and its role in the description."""
 
     module: ast.Module

@@ -11,7 +11,8 @@ from __future__ import annotations
 
 import keyword
 import re
-from typing import TYPE_CHECKING
+
+from rdisc import TYPE_CHECKING
 
 if TYPE_CHECKING:
     from rdisc.semantics import model as m

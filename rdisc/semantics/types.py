@@ -10,8 +10,8 @@ from __future__ import annotations
 
 from collections.abc import Callable, Mapping
 from functools import partial
-from typing import TYPE_CHECKING
 
+from rdisc import TYPE_CHECKING
 from rdisc.diagnostics import Diagnostics
 from rdisc.engine.operations import BINARY, FUNCTIONS, UNARY, EvalError, fits, lookup_or
 from rdisc.limits import MAX_ARRAY, MAX_INT
@@ -26,6 +26,8 @@ if TYPE_CHECKING:
     from dataclasses import dataclass
 else:  # the same classes, their methods written out ahead of time: rdisc/frozen.py
     from rdisc.semantics.types_methods import dataclass
+
+from rdisc.frozen import Frozen
 
 T = AnyType | None  # None: unknown, already reported
 NUMERIC = (Type.INT, Type.FLOAT)
@@ -73,7 +75,7 @@ ARITY = {
 
 
 @dataclass(frozen=True, slots=True)
-class Env:
+class Env(metaclass=Frozen):
     """What an expression may read, and how to explain what it may not."""
 
     names: Mapping[str, tuple[Scope, AnyType]]  # a layered view where the state variables are shared (Checker.env_with)

@@ -7,20 +7,21 @@ kept as written, repeats included: the checker reports what is missing or double
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
+from rdisc import TYPE_CHECKING
 
 if TYPE_CHECKING:
     from dataclasses import dataclass, field
 else:  # the same classes, their methods written out ahead of time: rdisc/frozen.py
     from rdisc.syntax.ast_methods import dataclass, field
 
+from rdisc.frozen import Frozen
 from rdisc.source import Span
 
 _span: Span = field(compare=False, repr=False, default=None)  # type: ignore[assignment]
 
 
 @dataclass(frozen=True, slots=True)
-class Ident:
+class Ident(metaclass=Frozen):
     """A name as written, with its place."""
 
     text: str
@@ -31,25 +32,25 @@ class Ident:
 
 
 @dataclass(frozen=True, slots=True)
-class IntLit:
+class IntLit(metaclass=Frozen):
     value: int
     span: Span = _span
 
 
 @dataclass(frozen=True, slots=True)
-class FloatLit:
+class FloatLit(metaclass=Frozen):
     value: float
     span: Span = _span
 
 
 @dataclass(frozen=True, slots=True)
-class StrLit:
+class StrLit(metaclass=Frozen):
     value: str
     span: Span = _span
 
 
 @dataclass(frozen=True, slots=True)
-class BytesLit:
+class BytesLit(metaclass=Frozen):
     """`b"\\x01\\x02"`: constant bytes, written with ASCII characters and escapes."""
 
     value: bytes
@@ -57,13 +58,13 @@ class BytesLit:
 
 
 @dataclass(frozen=True, slots=True)
-class BoolLit:
+class BoolLit(metaclass=Frozen):
     value: bool
     span: Span = _span
 
 
 @dataclass(frozen=True, slots=True)
-class Ref:
+class Ref(metaclass=Frozen):
     """A name read in an expression: a parameter, field, state variable or `out`."""
 
     name: str
@@ -71,7 +72,7 @@ class Ref:
 
 
 @dataclass(frozen=True, slots=True)
-class Index:
+class Index(metaclass=Frozen):
     """`base[index]`: `out[constant]`, an array's element or a lookup table's entry; `out[1][i]`
     an element of an array that a reply value or a table's entry is."""
 
@@ -81,7 +82,7 @@ class Index:
 
 
 @dataclass(frozen=True, slots=True)
-class ArrayLit:
+class ArrayLit(metaclass=Frozen):
     """`[a, b, c]`: the values of an array, in order."""
 
     items: tuple[Expr, ...]
@@ -89,14 +90,14 @@ class ArrayLit:
 
 
 @dataclass(frozen=True, slots=True)
-class Unary:
+class Unary(metaclass=Frozen):
     op: str  # "-", "+", "~", "not"
     operand: Expr
     span: Span = _span
 
 
 @dataclass(frozen=True, slots=True)
-class BinOp:
+class BinOp(metaclass=Frozen):
     op: str  # arithmetic, bitwise, comparison, "and", "or"
     left: Expr
     right: Expr
@@ -104,7 +105,7 @@ class BinOp:
 
 
 @dataclass(frozen=True, slots=True)
-class Conditional:
+class Conditional(metaclass=Frozen):
     """`then if cond else orelse`."""
 
     then: Expr
@@ -114,7 +115,7 @@ class Conditional:
 
 
 @dataclass(frozen=True, slots=True)
-class CallExpr:
+class CallExpr(metaclass=Frozen):
     """A call of a built-in function inside an expression."""
 
     func: Ident
@@ -123,7 +124,7 @@ class CallExpr:
 
 
 @dataclass(frozen=True, slots=True)
-class Member:
+class Member(metaclass=Frozen):
     """`Enum.member`: a member of an enumeration."""
 
     enum: Ident
@@ -132,7 +133,7 @@ class Member:
 
 
 @dataclass(frozen=True, slots=True)
-class MethodCall:
+class MethodCall(metaclass=Frozen):
     """`TABLE.get(key, default)`: a lookup table's value for a key, or the default."""
 
     base: Ident
@@ -149,7 +150,7 @@ Expr = (IntLit | FloatLit | StrLit | BytesLit | BoolLit | Ref | Index | ArrayLit
 
 
 @dataclass(frozen=True, slots=True)
-class ArrayOf:
+class ArrayOf(metaclass=Frozen):
     """`int[6]`: a fixed number of values of one type. The size is a constant expression;
     an adapter's field leaves it out (`float[]`), for the description that uses it to fix."""
 
@@ -162,7 +163,7 @@ TypeRef = Ident | ArrayOf
 
 
 @dataclass(frozen=True, slots=True)
-class Param:
+class Param(metaclass=Frozen):
     name: Ident
     type: TypeRef
     span: Span = _span
@@ -173,7 +174,7 @@ class Param:
 
 
 @dataclass(frozen=True, slots=True)
-class Call:
+class Call(metaclass=Frozen):
     """A call of a declared element: `name(args)` in a hook, interface body or input."""
 
     target: Ident
@@ -182,7 +183,7 @@ class Call:
 
 
 @dataclass(frozen=True, slots=True)
-class Duration:
+class Duration(metaclass=Frozen):
     """`value ms` or `value s`."""
 
     value: Expr
@@ -191,7 +192,7 @@ class Duration:
 
 
 @dataclass(frozen=True, slots=True)
-class Assign:
+class Assign(metaclass=Frozen):
     target: Ident
     value: Expr
     span: Span = _span
@@ -203,21 +204,21 @@ class Assign:
 
 
 @dataclass(frozen=True, slots=True)
-class ImportDecl:
+class ImportDecl(metaclass=Frozen):
     path: str
     span: Span = _span
     doc: str | None = None
 
 
 @dataclass(frozen=True, slots=True)
-class RobotAttr:
+class RobotAttr(metaclass=Frozen):
     key: str  # "author" | "description" | "version"
     value: str
     span: Span = _span
 
 
 @dataclass(frozen=True, slots=True)
-class RobotDecl:
+class RobotDecl(metaclass=Frozen):
     name: Ident
     attrs: tuple[RobotAttr, ...]
     span: Span = _span
@@ -225,7 +226,7 @@ class RobotDecl:
 
 
 @dataclass(frozen=True, slots=True)
-class StateDecl:
+class StateDecl(metaclass=Frozen):
     name: Ident
     type: TypeRef
     init: Expr | None
@@ -235,7 +236,7 @@ class StateDecl:
 
 
 @dataclass(frozen=True, slots=True)
-class SensorDecl:
+class SensorDecl(metaclass=Frozen):
     """`sensor NAME: TYPE from PRIMITIVE() cache DURATION`: the primitive's reply value, kept
     for the cache time (thesis §7.2.4)."""
 
@@ -249,7 +250,7 @@ class SensorDecl:
 
 
 @dataclass(frozen=True, slots=True)
-class SettingDecl:
+class SettingDecl(metaclass=Frozen):
     """`setting NAME: TYPE in LOW..HIGH = DEFAULT`: a value the user gives when connecting."""
 
     name: Ident
@@ -262,20 +263,20 @@ class SettingDecl:
 
 
 @dataclass(frozen=True, slots=True)
-class Baud:
+class Baud(metaclass=Frozen):
     value: Expr
     span: Span = _span
 
 
 @dataclass(frozen=True, slots=True)
-class Threading:
+class Threading(metaclass=Frozen):
     model: Ident  # "single"
     frequency: Expr  # Hz
     span: Span = _span
 
 
 @dataclass(frozen=True, slots=True)
-class Hook:
+class Hook(metaclass=Frozen):
     event: str  # "startup" | "terminate" | "keepalive"
     call: Call
     every: Duration | None  # keepalive only
@@ -283,7 +284,7 @@ class Hook:
 
 
 @dataclass(frozen=True, slots=True)
-class Terminator:
+class Terminator(metaclass=Frozen):
     """The end of a reply line, for `regex` replies."""
 
     value: StrLit
@@ -291,7 +292,7 @@ class Terminator:
 
 
 @dataclass(frozen=True, slots=True)
-class Address:
+class Address(metaclass=Frozen):
     """The port a connection opens when none is given: a device path or a URL."""
 
     value: StrLit
@@ -299,7 +300,7 @@ class Address:
 
 
 @dataclass(frozen=True, slots=True)
-class DataBits:
+class DataBits(metaclass=Frozen):
     """A serial line's data bits a character (`databits 7`): 8 unless said."""
 
     value: Expr
@@ -307,7 +308,7 @@ class DataBits:
 
 
 @dataclass(frozen=True, slots=True)
-class Parity:
+class Parity(metaclass=Frozen):
     """A serial line's parity bit (`parity even`): `none` unless said."""
 
     value: Ident
@@ -315,7 +316,7 @@ class Parity:
 
 
 @dataclass(frozen=True, slots=True)
-class StopBits:
+class StopBits(metaclass=Frozen):
     """A serial line's stop bits a character (`stopbits 2`): 1 unless said."""
 
     value: Expr
@@ -326,7 +327,7 @@ ConnectionAttr = Baud | Threading | Hook | Terminator | Address | DataBits | Par
 
 
 @dataclass(frozen=True, slots=True)
-class ConnectionDecl:
+class ConnectionDecl(metaclass=Frozen):
     name: Ident
     kind: Ident  # "serial"
     attrs: tuple[ConnectionAttr, ...]
@@ -335,13 +336,13 @@ class ConnectionDecl:
 
 
 @dataclass(frozen=True, slots=True)
-class On:
+class On(metaclass=Frozen):
     connection: Ident
     span: Span = _span
 
 
 @dataclass(frozen=True, slots=True)
-class Encoding:
+class Encoding(metaclass=Frozen):
     kind: str  # "pack" | "format"
     template: StrLit
     args: tuple[Expr, ...]
@@ -349,20 +350,20 @@ class Encoding:
 
 
 @dataclass(frozen=True, slots=True)
-class Decoding:
+class Decoding(metaclass=Frozen):
     kind: str  # "unpack" | "regex"
     template: StrLit
     span: Span = _span
 
 
 @dataclass(frozen=True, slots=True)
-class Actions:
+class Actions(metaclass=Frozen):
     assigns: tuple[Assign, ...]
     span: Span = _span
 
 
 @dataclass(frozen=True, slots=True)
-class Framed:
+class Framed(metaclass=Frozen):
     """`frame NAME(args)`: the frame around the primitive's request and reply."""
 
     frame: Ident
@@ -371,14 +372,14 @@ class Framed:
 
 
 @dataclass(frozen=True, slots=True)
-class SkipUnmatched:
+class SkipUnmatched(metaclass=Frozen):
     """`skip unmatched`: frames that do not decode are other traffic, read past."""
 
     span: Span = _span
 
 
 @dataclass(frozen=True, slots=True)
-class ReplyEntry:
+class ReplyEntry(metaclass=Frozen):
     """`VALUE: unpack "fmt" { post-actions }`: the reply when the key is VALUE; or
     `LOW..HIGH: ...`: when it is any of them (Firmata's 0xE0..0xEF, a channel in the tag); or
     `VALUE: tag "fmt" { ... }`: a table of its own, chosen by the tag after this one (Firmata's
@@ -394,7 +395,7 @@ class ReplyEntry:
 
 
 @dataclass(frozen=True, slots=True)
-class ReplyTable:
+class ReplyTable(metaclass=Frozen):
     """`reply KEY { ... }`: the reply's decoding chosen by a parameter's value; or
     `reply tag "fmt" { ... }`: by the tag at the start of the reply's payload; or
     `reply each tag "fmt" length "fmt" { ... }`: the payload a sequence of sub-payloads, each
@@ -409,7 +410,7 @@ class ReplyTable:
 
 
 @dataclass(frozen=True, slots=True)
-class Retry:
+class Retry(metaclass=Frozen):
     """`retry N`: the request sent again, up to N more times, after a timeout or a reply that
     does not match (as published drivers resend)."""
 
@@ -418,7 +419,7 @@ class Retry:
 
 
 @dataclass(frozen=True, slots=True)
-class ReplyTimeout:
+class ReplyTimeout(metaclass=Frozen):
     """`timeout D`: how long this primitive's reply may take, instead of the connection's."""
 
     duration: Duration
@@ -426,7 +427,7 @@ class ReplyTimeout:
 
 
 @dataclass(frozen=True, slots=True)
-class Replies:
+class Replies(metaclass=Frozen):
     """`replies N`: N replies to one request (a sync read's status packets), each read and
     decoded as one reply is; the post-actions read each value of them as an array of N. Or
     `replies id in IDS frame status(id)` (`over` a constant array, or a range `over..high`):
@@ -440,7 +441,7 @@ class Replies:
 
 
 @dataclass(frozen=True, slots=True)
-class ListedReply:
+class ListedReply(metaclass=Frozen):
     """One reply of `replies { ... }`: `frame status(2) unpack "<BB" expect out[0] == 0 { ... }`,
     its frame (None: the primitive's), decoding, condition and post-actions its own."""
 
@@ -452,7 +453,7 @@ class ListedReply:
 
 
 @dataclass(frozen=True, slots=True)
-class ReplyList:
+class ReplyList(metaclass=Frozen):
     """`replies { ... }`: a fixed sequence of replies to one request, each of its own shape (a
     Dynamixel bulk read's status packets, each servo's own data)."""
 
@@ -461,7 +462,7 @@ class ReplyList:
 
 
 @dataclass(frozen=True, slots=True)
-class Expect:
+class Expect(metaclass=Frozen):
     """`expect COND`: a condition on the decoded reply (`out`) that a reply must meet."""
 
     condition: Expr
@@ -469,7 +470,7 @@ class Expect:
 
 
 @dataclass(frozen=True, slots=True)
-class Records:
+class Records(metaclass=Frozen):
     """`reply each until "\x7F"`: the reply's payload is records, each ended by the marker,
     each decoded by the primitive's `unpack` and its post-actions run for it with `index`
     (Firmata's capability report: a pin's modes, then 7F)."""
@@ -479,7 +480,7 @@ class Records:
 
 
 @dataclass(frozen=True, slots=True)
-class LineBreak:
+class LineBreak(metaclass=Frozen):
     """`break 10 ms` among a primitive's `lines`: a serial break (TX held low) for that long."""
 
     duration: Duration
@@ -487,7 +488,7 @@ class LineBreak:
 
 
 @dataclass(frozen=True, slots=True)
-class Lines:
+class Lines(metaclass=Frozen):
     """`lines dtr = COND, rts = COND, break 10 ms`: the serial port's modem lines, set before the
     request, and a break sent, in the order given."""
 
@@ -496,7 +497,7 @@ class Lines:
 
 
 @dataclass(frozen=True, slots=True)
-class ErrorReply:
+class ErrorReply(metaclass=Frozen):
     """`error frame rtu(UNIT, 0x83) unpack "B" code Exception`: the reply the device may send
     instead (Modbus's exception, a NACK), known by its own frame or its first bytes (`marker`),
     decoded, its first value the device's code, named by an enum (`codes`). `error when COND
@@ -518,7 +519,7 @@ PrimitiveClause = (
 
 
 @dataclass(frozen=True, slots=True)
-class PrimitiveDecl:
+class PrimitiveDecl(metaclass=Frozen):
     name: Ident
     params: tuple[Param, ...]
     clauses: tuple[PrimitiveClause, ...]
@@ -527,14 +528,14 @@ class PrimitiveDecl:
 
 
 @dataclass(frozen=True, slots=True)
-class Kind:
+class Kind(metaclass=Frozen):
     word: str  # "periodic" | "adhoc"
     span: Span = _span
     rate: Expr | None = None  # `periodic 10 Hz`: its own rate (Hz), under `threading multiple`
 
 
 @dataclass(frozen=True, slots=True)
-class Triggers:
+class Triggers(metaclass=Frozen):
     outputs: tuple[Ident, ...]
     span: Span = _span
 
@@ -543,7 +544,7 @@ InterfaceClause = Kind | Triggers
 
 
 @dataclass(frozen=True, slots=True)
-class CallStmt:
+class CallStmt(metaclass=Frozen):
     """One primitive call in an interface body, with its options as written."""
 
     call: Call
@@ -555,7 +556,7 @@ class CallStmt:
 
 
 @dataclass(frozen=True, slots=True)
-class Poll:
+class Poll(metaclass=Frozen):
     """`until COND every P within T`: the call made again every P until COND holds after it,
     at most T/P more times."""
 
@@ -566,7 +567,7 @@ class Poll:
 
 
 @dataclass(frozen=True, slots=True)
-class ForStmt:
+class ForStmt(metaclass=Frozen):
     """`for NAME in LOW..HIGH { ... }` or `for NAME in ARRAY { ... }`: the body once per
     value, both ends of a range included; the checker writes the loop out as its calls."""
 
@@ -586,7 +587,7 @@ def call_stmts(body: tuple[BodyStmt, ...]) -> list[CallStmt]:
 
 
 @dataclass(frozen=True, slots=True)
-class InterfaceDecl:
+class InterfaceDecl(metaclass=Frozen):
     name: Ident
     params: tuple[Param, ...]
     clauses: tuple[InterfaceClause, ...]
@@ -596,7 +597,7 @@ class InterfaceDecl:
 
 
 @dataclass(frozen=True, slots=True)
-class FieldDecl:
+class FieldDecl(metaclass=Frozen):
     name: Ident
     type: TypeRef
     unit: str | None
@@ -606,7 +607,7 @@ class FieldDecl:
 
 
 @dataclass(frozen=True, slots=True)
-class AdapterDecl:
+class AdapterDecl(metaclass=Frozen):
     name: Ident
     ros: StrLit | None  # a ROS message type, "package/Message"
     fields: tuple[FieldDecl, ...]
@@ -615,7 +616,7 @@ class AdapterDecl:
 
 
 @dataclass(frozen=True, slots=True)
-class InputDecl:
+class InputDecl(metaclass=Frozen):
     name: Ident
     adapter: Ident
     call: Call
@@ -624,7 +625,7 @@ class InputDecl:
 
 
 @dataclass(frozen=True, slots=True)
-class NumberRows:
+class NumberRows(metaclass=Frozen):
     """`[1, 0; 0, 1]`: constant numbers in rows apart by `;` (a vector is one row)."""
 
     rows: tuple[tuple[float, ...], ...]
@@ -632,7 +633,7 @@ class NumberRows:
 
 
 @dataclass(frozen=True, slots=True)
-class FieldNoise:
+class FieldNoise(metaclass=Frozen):
     """`noise FIELD 0.01 "m"`: a field's standard deviation in a unit, or `noise FIELD [a, b; c, d]`,
     its covariance (error models, thesis §7.2.3); `noise (F, G) [a, b; c, d]` one covariance over
     several number fields, `others` those after the first."""
@@ -645,7 +646,7 @@ class FieldNoise:
 
 
 @dataclass(frozen=True, slots=True)
-class FieldFilter:
+class FieldFilter(metaclass=Frozen):
     """`filter FIELD kalman { state [..] transition [..] ... }`: the field published as a Kalman
     filter's estimate, each matrix under its word."""
 
@@ -655,7 +656,7 @@ class FieldFilter:
 
 
 @dataclass(frozen=True, slots=True)
-class OutputDecl:
+class OutputDecl(metaclass=Frozen):
     """`output NAME: ADAPTER [frame LINK] { field = expr ... noise ... filter ... }`."""
 
     name: Ident
@@ -669,7 +670,7 @@ class OutputDecl:
 
 
 @dataclass(frozen=True, slots=True)
-class TableLit:
+class TableLit(metaclass=Frozen):
     """`{key: value, ...}`: a lookup table, read as `NAME[key]`."""
 
     entries: tuple[tuple[Expr, Expr], ...]
@@ -677,7 +678,7 @@ class TableLit:
 
 
 @dataclass(frozen=True, slots=True)
-class ConstDecl:
+class ConstDecl(metaclass=Frozen):
     name: Ident
     value: Expr | TableLit
     span: Span = _span
@@ -685,14 +686,14 @@ class ConstDecl:
 
 
 @dataclass(frozen=True, slots=True)
-class EnumMember:
+class EnumMember(metaclass=Frozen):
     name: Ident
     value: Expr
     span: Span = _span
 
 
 @dataclass(frozen=True, slots=True)
-class EnumDecl:
+class EnumDecl(metaclass=Frozen):
     name: Ident
     members: tuple[EnumMember, ...]
     span: Span = _span
@@ -703,7 +704,7 @@ class EnumDecl:
 
 
 @dataclass(frozen=True, slots=True)
-class FrameBytes:
+class FrameBytes(metaclass=Frozen):
     """Constant bytes: `header`, `literal` or `terminator`."""
 
     role: str  # "header" | "literal" | "terminator"
@@ -712,7 +713,7 @@ class FrameBytes:
 
 
 @dataclass(frozen=True, slots=True)
-class FrameField:
+class FrameField(metaclass=Frozen):
     """`field NAME "fmt" = expr`: a value of the frame's parameters."""
 
     name: Ident
@@ -722,7 +723,7 @@ class FrameField:
 
 
 @dataclass(frozen=True, slots=True)
-class FrameLength:
+class FrameLength(metaclass=Frozen):
     """`length "fmt" = payload + N`."""
 
     format: StrLit
@@ -731,7 +732,7 @@ class FrameLength:
 
 
 @dataclass(frozen=True, slots=True)
-class FramePayload:
+class FramePayload(metaclass=Frozen):
     """`payload`, or `payload trimmed`: its trailing zero bytes dropped when written and put back
     when read (MAVLink 2's payload truncation)."""
 
@@ -740,7 +741,7 @@ class FramePayload:
 
 
 @dataclass(frozen=True, slots=True)
-class ChecksumOption:
+class ChecksumOption(metaclass=Frozen):
     """`inverted`, `reflect` (`reflect in`, `reflect out`: one way only), `mask/poly/init/xorout/width EXPR`,
     `over A .. B` or `seed TABLE[FIELD]` (`over` holds the table's name and the field's)."""
 
@@ -751,7 +752,7 @@ class ChecksumOption:
 
 
 @dataclass(frozen=True, slots=True)
-class FrameChecksum:
+class FrameChecksum(metaclass=Frozen):
     algorithm: StrLit
     format: StrLit | None  # None: ASCII hex digits
     options: tuple[ChecksumOption, ...]
@@ -759,7 +760,7 @@ class FrameChecksum:
 
 
 @dataclass(frozen=True, slots=True)
-class FrameOptional:
+class FrameOptional(metaclass=Frozen):
     """`optional { ... }`: parts a reply may lack, all together; a request writes them."""
 
     parts: tuple[FramePart, ...]
@@ -767,7 +768,7 @@ class FrameOptional:
 
 
 @dataclass(frozen=True, slots=True)
-class FrameEither:
+class FrameEither(metaclass=Frozen):
     """`either { ... } or { ... }`: alternative runs of parts. A request is written with the
     first whose length field can state its payload; a reply is read by the one whose header came.
     `either when COND { ... } or ... or { ... }`: a request's alternative chosen by a condition over
@@ -779,7 +780,7 @@ class FrameEither:
 
 
 @dataclass(frozen=True, slots=True)
-class FrameBitField:
+class FrameBitField(metaclass=Frozen):
     """`field NAME: WIDTH = expr`, or (no name) `length: WIDTH = payload + N`, in a `bits`."""
 
     name: Ident | None  # None: the length
@@ -790,7 +791,7 @@ class FrameBitField:
 
 
 @dataclass(frozen=True, slots=True)
-class FrameBits:
+class FrameBits(metaclass=Frozen):
     """`bits "<I" { ... }`: one integer of a struct format, split into fields from its lowest bit up."""
 
     format: StrLit
@@ -803,7 +804,7 @@ FramePart = (FrameBytes | FrameField | FrameLength | FramePayload | FrameChecksu
 
 
 @dataclass(frozen=True, slots=True)
-class FrameSide:
+class FrameSide(metaclass=Frozen):
     """`request { ... }` or `reply { ... }`."""
 
     side: str  # "request" | "reply"
@@ -812,7 +813,7 @@ class FrameSide:
 
 
 @dataclass(frozen=True, slots=True)
-class FrameStuff:
+class FrameStuff(metaclass=Frozen):
     """`stuff ESCAPE after RESERVED`: byte stuffing of the payloads, both ways."""
 
     escape: StrLit
@@ -821,7 +822,7 @@ class FrameStuff:
 
 
 @dataclass(frozen=True, slots=True)
-class FrameEscape:
+class FrameEscape(metaclass=Frozen):
     """`escape "\\x7D" xor 0x20 for "\\x7E\\x7D"` (HDLC, PPP) or `escape "\\xDB" { "\\xC0": "\\xDC",
     "\\xDB": "\\xDD" }` (SLIP): each listed byte between the frame's flags sent as ESCAPE and a code,
     its own XOR the mask or the one the table gives."""
@@ -834,7 +835,7 @@ class FrameEscape:
 
 
 @dataclass(frozen=True, slots=True)
-class FrameDecl:
+class FrameDecl(metaclass=Frozen):
     name: Ident
     params: tuple[Param, ...]
     items: tuple[FramePart | FrameSide | FrameStuff | FrameEscape, ...]
@@ -846,7 +847,7 @@ class FrameDecl:
 
 
 @dataclass(frozen=True, slots=True)
-class Shape:
+class Shape(metaclass=Frozen):
     """`box(x, y, z)`, `cylinder(radius, length)`, `sphere(radius)`, `mesh("file.stl", scale)`."""
 
     kind: Ident
@@ -855,7 +856,7 @@ class Shape:
 
 
 @dataclass(frozen=True, slots=True)
-class ShapeUse:
+class ShapeUse(metaclass=Frozen):
     """`visual SHAPE at XYZ rpy RPY color RGBA` or `collision ...`: a shape placed in its link's frame."""
 
     role: str  # "visual" | "collision"
@@ -867,7 +868,7 @@ class ShapeUse:
 
 
 @dataclass(frozen=True, slots=True)
-class LinkSpawn:
+class LinkSpawn(metaclass=Frozen):
     """`spawn floating at XYZ rpy RPY` (or `fixed`): how and where the root link meets the world."""
 
     kind: Ident
@@ -877,7 +878,7 @@ class LinkSpawn:
 
 
 @dataclass(frozen=True, slots=True)
-class BodyValue:
+class BodyValue(metaclass=Frozen):
     """One `KEY value` clause of a link or joint: `mass 3.6`, `axis [0, 1, 0]`, `at [...]`."""
 
     key: str
@@ -886,7 +887,7 @@ class BodyValue:
 
 
 @dataclass(frozen=True, slots=True)
-class JointLimit:
+class JointLimit(metaclass=Frozen):
     """`limit LOW..HIGH`: the joint's position range (rad, or m for a prismatic joint)."""
 
     low: Expr
@@ -895,7 +896,7 @@ class JointLimit:
 
 
 @dataclass(frozen=True, slots=True)
-class JointMimic:
+class JointMimic(metaclass=Frozen):
     """`mimic JOINT multiplier M offset O`: this joint's position is M times JOINT's, plus O."""
 
     joint: Ident
@@ -905,7 +906,7 @@ class JointMimic:
 
 
 @dataclass(frozen=True, slots=True)
-class LinkDecl:
+class LinkDecl(metaclass=Frozen):
     name: Ident
     items: tuple[ShapeUse | BodyValue | LinkSpawn, ...]
     span: Span = _span
@@ -913,7 +914,7 @@ class LinkDecl:
 
 
 @dataclass(frozen=True, slots=True)
-class JointDecl:
+class JointDecl(metaclass=Frozen):
     """`joint NAME: KIND PARENT -> CHILD { ... }`."""
 
     name: Ident
@@ -926,7 +927,7 @@ class JointDecl:
 
 
 @dataclass(frozen=True, slots=True)
-class Binding:
+class Binding(metaclass=Frozen):
     """`command QUANTITY to TARGET.PARAM[i] { raw = ...  QUANTITY = ... }` or
     `measure QUANTITY from STATE[i] { ... }`: a joint quantity and a device value, both ways."""
 
@@ -940,7 +941,7 @@ class Binding:
 
 
 @dataclass(frozen=True, slots=True)
-class TransmissionDecl:
+class TransmissionDecl(metaclass=Frozen):
     """`transmission NAME: JOINT { command ... measure ... }`."""
 
     name: Ident
@@ -952,7 +953,7 @@ class TransmissionDecl:
 
 
 @dataclass(frozen=True, slots=True)
-class ActuatorDecl:
+class ActuatorDecl(metaclass=Frozen):
     """`actuator NAME: KIND { velocity ...  acceleration ...  effort ...  gain ...  damping ... }`."""
 
     name: Ident
@@ -970,7 +971,7 @@ Decl = (
 
 
 @dataclass(frozen=True, slots=True)
-class Damaged:
+class Damaged(metaclass=Frozen):
     """A declaration lost to a syntax error: its keyword and name, when they could
     be read, so that references to it are not reported again as unknown."""
 
@@ -979,7 +980,7 @@ class Damaged:
 
 
 @dataclass(frozen=True, slots=True)
-class Module:
+class Module(metaclass=Frozen):
     """One parsed file."""
 
     path: str

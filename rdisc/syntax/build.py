@@ -6,9 +6,8 @@ import math
 import re
 from collections.abc import Callable
 from functools import lru_cache
-from typing import TYPE_CHECKING, Any
 
-from rdisc import patterns
+from rdisc import TYPE_CHECKING, patterns
 from rdisc.diagnostics import Diagnostics, abbreviate
 from rdisc.limits import MAX_INT
 from rdisc.source import Span
@@ -16,6 +15,8 @@ from rdisc.syntax import ast
 from rdisc.syntax.precedence import BINARY, COMPARISON, OR, UNARY_OPERATORS
 
 if TYPE_CHECKING:
+    from typing import Any
+
     from lark import Token, Transformer, Tree
     from lark.tree import Meta
 

@@ -13,9 +13,8 @@ from __future__ import annotations
 import re
 from collections.abc import Iterator
 from functools import lru_cache
-from typing import TYPE_CHECKING, cast
 
-from rdisc import patterns
+from rdisc import TYPE_CHECKING, patterns
 from rdisc.diagnostics import Diagnostics
 from rdisc.source import Span
 from rdisc.syntax import ast
@@ -233,6 +232,8 @@ def parse_expression(path: str, text: str, base_offset: int, diagnostics: Diagno
         meta = deepest.meta
         too_deep = Span(path, base_offset + meta.start_pos, base_offset + meta.end_pos)
     else:
+        from typing import cast  # only where Lark builds the tree, which a check does not
+
         try:  # built from the `expr_start` rule: one expression
             return cast(ast.Expr, Builder(path, {}, diagnostics).build(tree, base_offset))
         except lark.exceptions.VisitError as err:

@@ -10,12 +10,15 @@ where the grammar would otherwise read a different tree.
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING
+
+from rdisc import TYPE_CHECKING
 
 if TYPE_CHECKING:
     from dataclasses import dataclass
 else:  # the same classes, their methods written out ahead of time: rdisc/frozen.py
     from rdisc.syntax.precedence_methods import dataclass
+
+from rdisc.frozen import Frozen
 
 # Levels, loosest first; an operand printed at a level below what its place in
 # the grammar accepts gets parentheses.
@@ -36,7 +39,7 @@ ATOM = 13  # literals, names, calls, indexing, parenthesised expressions
 
 
 @dataclass(frozen=True, slots=True)
-class Operator:
+class Operator(metaclass=Frozen):
     spelling: str  # as printed, spaces included
     level: int
     operands: tuple[int, ...]  # the lowest level each operand may have without parentheses
@@ -74,7 +77,7 @@ CONDITIONAL_OPERANDS = (OR, OR, CONDITIONAL)
 
 
 @dataclass(frozen=True, slots=True)
-class Printed:
+class Printed(metaclass=Frozen):
     """Expression text and the level of its outermost operator."""
 
     text: str

@@ -21,10 +21,13 @@ from __future__ import annotations
 
 import re
 from collections.abc import Callable
-from typing import Any
 
+from rdisc import TYPE_CHECKING
 from rdisc.syntax import ast, tables
 from rdisc.syntax.build import Builder, Rules, TooDeep
+
+if TYPE_CHECKING:
+    from typing import Any
 
 
 class Retry(Exception):

@@ -2,7 +2,8 @@
 most of a check of a small file): not Lark (the parser's tables are written ahead of time),
 nor pathlib, json or difflib, which only imports, `--format json` and misspellings need, nor
 pygls and lsprotocol, which only `rdisc lsp` needs, nor the `importlib` package (a verb's module is
-imported with `__import__`)."""
+imported with `__import__`), nor `typing`, which only the type checker needs (`TYPE_CHECKING` comes
+from `rdisc` and `rdisc.engine`)."""
 
 from __future__ import annotations
 
@@ -16,7 +17,7 @@ import pytest
 from rdisc.cli.main import parser
 
 ROOT = Path(__file__).resolve().parents[2]
-NOT_NEEDED = ("lark", "pathlib", "json", "difflib", "pygls", "lsprotocol", "importlib")
+NOT_NEEDED = ("lark", "pathlib", "json", "difflib", "pygls", "lsprotocol", "importlib", "typing")
 
 
 def imported_by_check(*args: str) -> list[str]:

@@ -42,15 +42,28 @@ def _sections(driver: str) -> dict[str, str]:
     return found
 
 
+def _type_checking(node: ast.stmt) -> bool:
+    return isinstance(node, ast.If) and isinstance(node.test, ast.Name) and node.test.id == "TYPE_CHECKING"
+
+
+def _is_type_variable(node: ast.stmt) -> bool:
+    return isinstance(node, ast.Assign) and ast.unparse(node.value).startswith("TypeVar(")
+
+
 def _is_head(node: ast.stmt, first: bool) -> bool:
-    """A docstring, an import, or `if TYPE_CHECKING:` over imports of the engine."""
+    """A docstring, an import, `TYPE_CHECKING = False`, or `if TYPE_CHECKING:` over imports and type variables."""
     if first and isinstance(node, ast.Expr) and isinstance(node.value, ast.Constant):
         return True
-    if isinstance(node, (ast.Import, ast.ImportFrom)):
+    if isinstance(node, (ast.Import, ast.ImportFrom)) or ast.unparse(node) == "TYPE_CHECKING = False":
         return True
-    return (isinstance(node, ast.If) and isinstance(node.test, ast.Name) and node.test.id == "TYPE_CHECKING"
-            and all(isinstance(inner, ast.ImportFrom) and inner.module.startswith("rdisc.engine.")
-                    for inner in node.body))
+    return _type_checking(node) and all(isinstance(inner, (ast.Import, ast.ImportFrom)) or _is_type_variable(inner)
+                                        for inner in node.body)
+
+
+def _head_imports(tree: ast.Module) -> list[ast.stmt]:
+    """The imports at a module's top level and in its `if TYPE_CHECKING:`."""
+    return [inner for node in tree.body for inner in (node.body if _type_checking(node) else [node])
+            if isinstance(inner, (ast.Import, ast.ImportFrom))]
 
 
 def test_each_section_is_its_module_but_the_head_the_carrier_drops(driver) -> None:
@@ -58,6 +71,11 @@ def test_each_section_is_its_module_but_the_head_the_carrier_drops(driver) -> No
     assert list(sections) == MODULES  # in the listed order, each once
     for module, carried in sections.items():
         text = (FOLDER / f"{module}.py").read_text(encoding="utf-8").rstrip("\n")
+        type_variables = [ast.get_source_segment(text, inner) for node in ast.parse(text).body if _type_checking(node)
+                          for inner in node.body if _is_type_variable(inner)]
+        for variable in type_variables:  # the head's, carried first (the driver's type checker needs them)
+            assert carried.startswith(f"{variable}\n\n"), module
+            carried = carried.removeprefix(f"{variable}\n\n")
         assert carried and text.endswith(carried), module
         dropped = text[: len(text) - len(carried)]
         assert dropped.endswith("\n"), module  # whole lines
@@ -72,7 +90,7 @@ def test_the_imports_are_gathered_once_above_the_sections(driver) -> None:
     gathered = {ast.unparse(node) for node in ast.parse(engine).body}
     wanted: dict[str, set[str]] = {}
     for module in MODULES:
-        for node in ast.parse((FOLDER / f"{module}.py").read_text(encoding="utf-8")).body:
+        for node in _head_imports(ast.parse((FOLDER / f"{module}.py").read_text(encoding="utf-8"))):
             if isinstance(node, ast.Import):
                 wanted.setdefault("", set()).update(alias.name for alias in node.names)
             elif isinstance(node, ast.ImportFrom) and not node.module.startswith("rdisc"):

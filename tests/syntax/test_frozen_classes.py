@@ -135,6 +135,50 @@ def test_a_class_whose_fields_changed_since_it_was_written_is_made_by_dataclasse
     assert Ident("x", 1) == Ident("x", 2, False) and repr(Ident("x")).endswith("Ident(text='x', quoted=False)")
 
 
+def test_the_class_statement_makes_the_finished_class_which_dataclass_keeps(monkeypatch: pytest.MonkeyPatch) -> None:
+    """`metaclass=Frozen`: the class statement makes the class with its slots and written methods,
+    a plain `type`, and the decorator gives that class back rather than making it a second time."""
+    from rdisc.syntax import ast_methods
+
+    for name in ("_set_Ident_text", "_set_Ident_span"):  # bound to this class's slots below: put back after
+        monkeypatch.setitem(vars(ast_methods), name, vars(ast_methods)[name])
+    given: list[type] = []
+
+    def dataclass(**options: bool) -> Any:
+        def make(cls: type) -> type:
+            given.append(cls)
+            return ast_methods.dataclass(**options)(cls)
+
+        return make
+
+    @dataclass(frozen=True, slots=True)
+    class Ident(metaclass=frozen.Frozen):
+        __module__ = "rdisc.syntax.ast"  # where the metaclass finds the methods written for it
+        __qualname__ = "Ident"
+        text: str
+        span: object = frozen.field(compare=False, repr=False, default=None)
+
+    assert given == [Ident] and type(Ident) is type and Ident.__slots__ == ("text", "span")
+    assert Ident.__init__ is ast_methods._init_Ident and not hasattr(Ident("x"), "__dict__")
+    assert Ident("x", 1) == Ident("x", 2) and repr(Ident("x")) == "Ident(text='x')"
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        Ident("x").text = "y"  # type: ignore[misc]
+
+
+def test_the_writer_refuses_a_frozen_class_made_twice(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """A frozen class declared without the metaclass would be made by its class statement and
+    again by `dataclass`: the writer says so instead of writing its methods."""
+    monkeypatch.setattr(frozen_writer, "PACKAGE", tmp_path / "rdisc")  # what the writer names paths from
+    declared = tmp_path / "rdisc" / "declared.py"
+    declared.parent.mkdir()
+    declared.write_text("@dataclass(frozen=True, slots=True)\nclass Point:\n    x: int\n", encoding="utf-8")
+    with pytest.raises(frozen_writer.WriterError,
+                       match=r"^rdisc/declared.py:2: Point: declare it `class Point\(metaclass=Frozen\)`"):
+        frozen_writer.write(declared)
+    declared.write_text(declared.read_text(encoding="utf-8").replace("Point:", "Point(metaclass=Frozen):"))
+    assert "def _init_Point(self: Any, x: Any) -> None:" in frozen_writer.write(declared)
+
+
 @pytest.mark.parametrize("source", sorted(frozen_writer.MODULES))
 def test_each_written_init_sets_its_fields_through_their_slots(source: str) -> None:
     """A written `__init__` calls each field's slot's own setter (a third faster than

@@ -22,8 +22,8 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from operator import is_
-from typing import TYPE_CHECKING, Any, TypeVar
 
+from rdisc import TYPE_CHECKING
 from rdisc.diagnostics import Diagnostic, Label
 from rdisc.semantics import model as m
 from rdisc.semantics.check.interfaces import MAX_UNROLLED, MAX_UNROLLED_ALL
@@ -32,13 +32,16 @@ from rdisc.source import Span
 from rdisc.syntax import ast
 
 if TYPE_CHECKING:
+    from typing import Any, TypeVar
+
     from rdisc.syntax.incremental import Moved
 
-Result = TypeVar("Result")
+    Result = TypeVar("Result")
+
 _POPPED = object()
 
 
-class Logged(dict[int, Any]):
+class Logged(dict[int, "Any"]):
     """The typer's folded constants, each entry made or dropped written down while `log` is a list."""
 
     log: list[tuple[int, Any]] | None = None

@@ -7,8 +7,8 @@ from __future__ import annotations
 import math
 from collections import ChainMap
 from collections.abc import Sequence
-from typing import Protocol, TypeVar
 
+from rdisc import TYPE_CHECKING
 from rdisc.diagnostics import Diagnostics, Label
 from rdisc.limits import MAX_ARRAY, MAX_INT
 from rdisc.semantics import model as m
@@ -25,12 +25,14 @@ _TYPES = {t.value: t for t in Type}
 _NOTHING = Env({}, "where a constant is needed", "")
 
 
-class _Spanned(Protocol):
-    @property
-    def span(self) -> Span: ...
+if TYPE_CHECKING:
+    from typing import Protocol, TypeVar
 
+    class _Spanned(Protocol):
+        @property
+        def span(self) -> Span: ...
 
-_Clause = TypeVar("_Clause", bound=_Spanned)
+    _Clause = TypeVar("_Clause", bound=_Spanned)
 
 
 class Pieces:

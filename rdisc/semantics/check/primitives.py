@@ -3,8 +3,7 @@
 
 from __future__ import annotations
 
-from typing import Any, TypeVar
-
+from rdisc import TYPE_CHECKING
 from rdisc.diagnostics import Label
 from rdisc.semantics import model as m
 from rdisc.semantics.check.pieces import MAX_TERMINATOR
@@ -17,7 +16,10 @@ from rdisc.semantics.operators import shown
 from rdisc.semantics.types import Env, Names, describe
 from rdisc.syntax import ast
 
-_Clause = TypeVar("_Clause")
+if TYPE_CHECKING:
+    from typing import Any, TypeVar
+
+    _Clause = TypeVar("_Clause")
 
 
 def _of(clauses: dict[type, list[Any]], kind: type[_Clause]) -> list[_Clause]:
