@@ -201,7 +201,7 @@ def _in_string(before: str) -> list[types.CompletionItem]:
 
         return [types.CompletionItem(label=unit, kind=types.CompletionItemKind.Unit) for unit in UNITS]
     if what == "algorithm":
-        from rdisc.semantics.frames import ALGORITHMS
+        from rdisc.semantics.checksums import ALGORITHMS
 
         return [types.CompletionItem(label=name, kind=types.CompletionItemKind.Value, detail="checksum algorithm")
                 for name in ALGORITHMS]

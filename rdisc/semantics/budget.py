@@ -16,7 +16,7 @@ from rdisc import TYPE_CHECKING
 from rdisc.diagnostics import Diagnostics
 from rdisc.semantics import formats
 from rdisc.semantics import model as m
-from rdisc.semantics.frames import length_part, length_range
+from rdisc.semantics.frame_facts import length_part, length_range
 
 if TYPE_CHECKING:
     from dataclasses import dataclass

@@ -17,7 +17,7 @@ from rdisc.diagnostics.codes import CODES
 from rdisc.engine import RdisError
 from rdisc.engine.operations import FUNCTIONS
 from rdisc.runtime import load
-from rdisc.semantics.frames import CATALOGUE
+from rdisc.semantics.checksums import CATALOGUE
 from tests.support.ports import ScriptedPort
 
 DOC = Path(__file__).resolve().parents[2] / "docs" / "language.md"

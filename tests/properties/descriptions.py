@@ -32,7 +32,7 @@ from typing import Any
 
 from hypothesis import strategies as st
 
-from rdisc.semantics.frames import CATALOGUE
+from rdisc.semantics.checksums import CATALOGUE
 
 INT, FLOAT, BOOL, STRING, BYTES = "int", "float", "bool", "string", "bytes"
 NUMBERS = (INT, FLOAT)

@@ -11,7 +11,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from rdisc.engine import Checksum
-from rdisc.semantics.frames import CATALOGUE
+from rdisc.semantics.checksums import CATALOGUE
 from tests.properties.descriptions import Checksum as Reference
 from tests.properties.descriptions import crc
 from tests.runtime.test_framing import CHECK_VALUES

@@ -19,7 +19,7 @@ from rdisc.engine import (
 )
 from rdisc.lowering.constructs import checksum
 from rdisc.semantics import model as m
-from rdisc.semantics.frames import CATALOGUE
+from rdisc.semantics.checksums import CATALOGUE
 from tests.support.ports import ScriptedPort
 
 # The check value of each catalogue CRC: its result over b"123456789" (CRC RevEng catalogue).

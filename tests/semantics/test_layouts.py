@@ -142,7 +142,7 @@ def test_the_layout_is_derived_data() -> None:
 PACKAGE = Path(rdisc.__file__).parent
 PARSES = re.compile(r"\bstruct_layout\(|\bcalcsize\(|\bsplit_rest\(")
 CHECKER = {"semantics/formats.py", "semantics/check/layouts.py", "semantics/check/replies.py",  # where the Model is made
-           "semantics/frames.py"}
+           "semantics/checksums.py"}  # a frame's one-integer formats (FrameRules takes them from ChecksumRules)
 IMPORTER = "json_import/primitives.py"  # infers the types of thesis JSON's arguments, before there is a Model
 
 

@@ -20,7 +20,8 @@ from rdisc.semantics.check.interfaces import Interfaces
 from rdisc.semantics.check.memo import Memo, Remembering
 from rdisc.semantics.check.primitives import Primitives
 from rdisc.semantics.check.sensors import Sensors
-from rdisc.semantics.frames import FrameRules, unseeded
+from rdisc.semantics.frame_facts import unseeded
+from rdisc.semantics.frames import FrameRules
 from rdisc.semantics.model import Scope
 from rdisc.semantics.resolve import Symbols, Unit
 from rdisc.syntax import ast

@@ -11,7 +11,7 @@ from rdisc.frozen import replace
 from rdisc.semantics import formats
 from rdisc.semantics import model as m
 from rdisc.semantics.check.pieces import Pieces, counted
-from rdisc.semantics.frames import (
+from rdisc.semantics.frame_facts import (
     length_part,
     length_range,
     length_words,

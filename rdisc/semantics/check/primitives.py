@@ -8,7 +8,7 @@ from rdisc.diagnostics import Label
 from rdisc.semantics import model as m
 from rdisc.semantics.check.pieces import MAX_TERMINATOR
 from rdisc.semantics.check.replies import Replies, why_open
-from rdisc.semantics.frames import (
+from rdisc.semantics.frame_facts import (
     payload_end_known,
 )
 from rdisc.semantics.model import Scope, Type

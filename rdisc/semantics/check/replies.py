@@ -10,7 +10,7 @@ from rdisc.semantics import formats
 from rdisc.semantics import model as m
 from rdisc.semantics.check.layouts import Layouts
 from rdisc.semantics.check.pieces import MAX_TERMINATOR
-from rdisc.semantics.frames import (
+from rdisc.semantics.frame_facts import (
     payload_end_known,
 )
 from rdisc.semantics.model import Scope, Type
