@@ -23,7 +23,7 @@ import xml.etree.ElementTree as ET
 
 from rdisc.emit.body_xml import BodyError, child, comment, number
 from rdisc.semantics import model as m
-from rdisc.semantics.body import joint_range
+from rdisc.semantics.body_values import joint_range
 
 TOPIC_PLUGIN = "joint_state_topic_hardware_interface/JointStateTopicSystem"
 MOCK_PLUGIN = "mock_components/GenericSystem"
