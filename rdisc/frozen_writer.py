@@ -24,6 +24,10 @@ PACKAGE = Path(__file__).resolve().parent
 # Each module of frozen dataclasses and the module written for it, relative to the package.
 MODULES = {
     "syntax/ast.py": "syntax/ast_methods.py",
+    "syntax/ast_expressions.py": "syntax/ast_expressions_methods.py",
+    "syntax/ast_primitives.py": "syntax/ast_primitives_methods.py",
+    "syntax/ast_frames.py": "syntax/ast_frames_methods.py",
+    "syntax/ast_body.py": "syntax/ast_body_methods.py",
     "semantics/model.py": "semantics/model_methods.py",
     "semantics/model_expressions.py": "semantics/model_expressions_methods.py",
     "semantics/model_layouts.py": "semantics/model_layouts_methods.py",

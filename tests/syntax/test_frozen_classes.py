@@ -16,7 +16,7 @@ import pytest
 
 from rdisc import frozen, frozen_writer
 from rdisc.semantics import model, model_body, model_elements, model_expressions, model_frames, model_layouts
-from rdisc.syntax import ast
+from rdisc.syntax import ast, ast_body, ast_expressions, ast_frames, ast_primitives
 
 PACKAGE = Path(frozen_writer.__file__).resolve().parent
 
@@ -52,7 +52,9 @@ def declared(modules: list[types.ModuleType]) -> dict[str, Any]:
     return {name: getattr(module, name) for module in modules for name in frozen_classes(module)}
 
 
-# The Model's classes are declared by concern in the modules it re-exports (rdisc/semantics/model.py).
+# The syntax tree's and the Model's classes are declared by concern in the modules their namespaces
+# re-export (rdisc/syntax/ast.py, rdisc/semantics/model.py).
+AST = (ast_expressions, ast_primitives, ast_frames, ast_body, ast)
 MODEL = (model_expressions, model_layouts, model_frames, model_elements, model_body, model)
 
 
@@ -68,7 +70,7 @@ def outcome(function: Any, *args: Any) -> Any:
         return type(err), str(err)
 
 
-@pytest.mark.parametrize("modules", [(ast,), MODEL], ids=["ast", "model"])
+@pytest.mark.parametrize("modules", [AST, MODEL], ids=["ast", "model"])
 def test_classes_behave_as_dataclasses_made_them(modules: tuple[types.ModuleType, ...], tmp_path: Path,
                                                  monkeypatch: pytest.MonkeyPatch) -> None:
     before = [standard(module, tmp_path, monkeypatch) for module in modules]
@@ -138,7 +140,7 @@ def test_a_class_whose_fields_changed_since_it_was_written_is_made_by_dataclasse
 def test_the_class_statement_makes_the_finished_class_which_dataclass_keeps(monkeypatch: pytest.MonkeyPatch) -> None:
     """`metaclass=Frozen`: the class statement makes the class with its slots and written methods,
     a plain `type`, and the decorator gives that class back rather than making it a second time."""
-    from rdisc.syntax import ast_methods
+    from rdisc.syntax import ast_expressions_methods as ast_methods
 
     for name in ("_set_Ident_text", "_set_Ident_span"):  # bound to this class's slots below: put back after
         monkeypatch.setitem(vars(ast_methods), name, vars(ast_methods)[name])
@@ -153,7 +155,7 @@ def test_the_class_statement_makes_the_finished_class_which_dataclass_keeps(monk
 
     @dataclass(frozen=True, slots=True)
     class Ident(metaclass=frozen.Frozen):
-        __module__ = "rdisc.syntax.ast"  # where the metaclass finds the methods written for it
+        __module__ = "rdisc.syntax.ast_expressions"  # where the metaclass finds the methods written for it
         __qualname__ = "Ident"
         text: str
         span: object = frozen.field(compare=False, repr=False, default=None)
