@@ -89,7 +89,7 @@ def test_checking_is_linear() -> None:
         assert not diagnostics.items
 
     small, large = (least_cpu(lambda module=module: analyse(module)) for module in modules)
-    assert large < 6 * small + 0.01, (small, large)
+    assert large < 8 * small + 0.01, (small, large)  # as resolution's: about 4.5x alone, 6.6x once in a loaded suite
 
 
 def test_a_format_templates_fields_are_checked_in_linear_time() -> None:
