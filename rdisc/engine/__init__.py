@@ -46,6 +46,7 @@ if TYPE_CHECKING:  # at run time each name is imported when it is first asked fo
         RdisTimeout,
         RdisValueError,
         nearest,
+        one_edit,
     )
     from rdisc.engine.exchange import Exchange
     from rdisc.engine.frames import Frame, Wrap
@@ -323,6 +324,7 @@ __all__ = [
     "named_pairs",
     "nearest",
     "not_finite",
+    "one_edit",
     "one_step_bounds",
     "parse_call",
     "parse_ports",

@@ -252,24 +252,12 @@ def _algorithm_hint(name: str) -> str:
     """A hint for an unknown algorithm: a known name only when this one is a slip of it (one
     character changed, added, dropped or swapped). A CRC merely near in spelling is another
     CRC: following such a hint would corrupt every packet, so none is offered then."""
+    from rdisc.engine.errors import one_edit  # the rule of every hint; imported only for an unknown name
+
     known = [*ALGORITHMS, *_ALIASES]
-    slips = [k for k in known if _one_slip(name, k)]
+    slips = [k for k in known if k != name and one_edit(name, k)]
     if len(slips) == 1:
         return f"did you mean `{slips[0]}`?"
     return ('algorithms: "sum", "xor", "crc" (with its parameters: width, poly, init, ...), "lrc", "fletcher8" '
             'and the catalogue CRCs: '
             + ", ".join(CATALOGUE))
-
-
-def _one_slip(a: str, b: str) -> bool:
-    """Whether `a` is `b` with one character changed, added or dropped, or two neighbours swapped."""
-    if a == b or abs(len(a) - len(b)) > 1:
-        return False
-    if len(a) == len(b):
-        diff = [i for i, (x, y) in enumerate(zip(a, b)) if x != y]
-        return len(diff) == 1 or (len(diff) == 2 and diff[1] == diff[0] + 1 and a[diff[0]] == b[diff[1]]
-                                  and a[diff[1]] == b[diff[0]])
-    short, long_ = (a, b) if len(a) < len(b) else (b, a)
-    return any(long_[:i] + long_[i + 1:] == short for i in range(len(long_)))
-
-

@@ -101,14 +101,14 @@ def nearest(name: str, known: Iterable[str]) -> str | None:
     import difflib  # only when a name is unknown: start-up time matters
 
     candidates = [word for word in dict.fromkeys(known) if word != name]
-    one_edit = [word for word in candidates if _one_edit(name, word)]
-    if one_edit:
-        return max(one_edit, key=lambda word: difflib.SequenceMatcher(None, name, word).ratio())
+    slips = [word for word in candidates if one_edit(name, word)]
+    if slips:
+        return max(slips, key=lambda word: difflib.SequenceMatcher(None, name, word).ratio())
     close = difflib.get_close_matches(name, candidates, n=1, cutoff=0.6)
     return close[0] if close else None
 
 
-def _one_edit(name: str, word: str) -> bool:
+def one_edit(name: str, word: str) -> bool:
     """Whether `word` is `name` with one letter changed, added or dropped, or two neighbours swapped."""
     if abs(len(name) - len(word)) > 1 or not name or not word:
         return False
