@@ -44,8 +44,9 @@ _EMPTY = _Empty()
 
 class Token(str):
     """A token as the Builder reads it, Lark's Token made lighter: its text, and where it starts
-    and ends in the chunk."""
+    and ends in the chunk (in slots: made and read faster than in a dict)."""
 
+    __slots__ = ("end_pos", "start_pos")
     start_pos: int
     end_pos: int
 
