@@ -47,8 +47,9 @@ _EMPTY = _Empty()
 
 class Token(str):
     """A token as the Builder reads it, Lark's Token made lighter: its text, and where it starts
-    and ends in the chunk."""
+    and ends in the chunk (in slots: made and read faster than in a dict)."""
 
+    __slots__ = ("end_pos", "start_pos")
     start_pos: int
     end_pos: int
 
@@ -102,7 +103,7 @@ class Lexer:
     only where it is not is the state's own lexer asked (rdisc/syntax/lexing.py does the same
     inside Lark)."""
 
-    __slots__ = ("_asked", "_match", "_tries", "allowed", "keywords", "terminals")
+    __slots__ = ("_asked", "_match", "_tries", "_words", "allowed", "keywords", "terminals")
 
     def __init__(self, terminals: tuple[str, ...], keywords: dict[str, str]) -> None:
         self.terminals, self.keywords = terminals, keywords
@@ -110,6 +111,42 @@ class Lexer:
         self._tries: tuple[tuple[str, str | None, Callable[[str, int], re.Match[str] | None]], ...] = ()
         self._asked = 0
         self._match: Callable[[str, int], re.Match[str] | None] | None = None
+        self._words: dict[str, str] | None = None
+
+    def word(self, name: str) -> str | None:
+        """The terminal `own` reads, to the end of `name`, where the whole grammar's pattern read
+        `name` as a NAME and `name` is one of the state's keywords: most of what `own` is asked
+        (`primitive` at the start of a declaration, `on`, `pack`), found without its pattern. None
+        where `own` must be asked."""
+        if self._words is None:
+            self._words = self._keywords_alone()
+        return self._words.get(name)
+
+    def _keywords_alone(self) -> dict[str, str]:
+        """Each keyword of the state and the terminal `own` reads at that keyword when the whole
+        grammar's pattern reads a NAME there, to its end: the first of the state's terminals that
+        can match there, in order. A terminal the whole grammar's pattern tries before NAME did
+        not match there (it would have been read instead); a keyword (a literal of word
+        characters) matches where it begins the name; nor did a skipped one (comments, white space:
+        the pattern skips them all before a token); for any other terminal the text after the name
+        could matter, and `own` is asked."""
+        before_name = set(tables.ROOT[:tables.ROOT.index("NAME")])
+        literals = {name: _terminal(name)[0] for name in self.terminals if name not in tables.ROOT}
+        words: dict[str, str] = {}
+        for keyword in literals.values():
+            if keyword is None or not re.fullmatch(r"\w+", keyword):
+                continue
+            for name in self.terminals:
+                if name in before_name or name in tables.IGNORED:
+                    continue
+                literal = literals.get(name)
+                if literal is None or not re.fullmatch(r"\w+", literal):
+                    break  # `own` must say
+                if keyword.startswith(literal):
+                    if literal == keyword:  # (a shorter one, read first, leaves the rest to `own`)
+                        words[keyword] = name
+                    break
+        return words
 
     def own(self, text: str, pos: int) -> tuple[str, int] | None:
         """The terminal the state's own pattern (its terminals' alternation, in order) reads at
@@ -170,11 +207,16 @@ STATE_LEXERS = tuple(_LEXERS[i] for i in tables.STATE_LEXERS)
 _STATE_ALLOWED = tuple(lexer.allowed for lexer in STATE_LEXERS)
 _STATE_KEYWORDS = tuple(lexer.keywords for lexer in STATE_LEXERS)
 _STOP = "_STOP"  # the scanner's last alternative: nothing else matches (the end of the text, or no token)
-_scanners: list[Callable[[str, int], re.Match[str]]] = []  # the scanner's match, once made
+_scanners: list[re.Pattern[str]] = []  # the scanner's pattern, once made
 
 
 def _scanner() -> Callable[[str, int], re.Match[str]]:
-    """The match of one pattern that skips what every lexer skips (group 1) and then reads the
+    """The match of the scanner's pattern (`_pattern`)."""
+    return _pattern().match  # type: ignore[return-value]  # its last alternative never fails
+
+
+def _pattern() -> re.Pattern[str]:
+    """One pattern that skips what every lexer skips (group 1) and then reads the
     whole grammar's next token: the root lexer's terminals in its order, each followed by an empty
     group named after it (the last group a match closes, so its `lastgroup`), and last an empty
     `_STOP`.
@@ -193,8 +235,7 @@ def _scanner() -> Callable[[str, int], re.Match[str]]:
         spaces = "".join(f"{pattern[:-1]}*+" for pattern in skipped if re.fullmatch(r"\[[^\]]+\]\+", pattern))
         read = "|".join(f"(?:{tables.TERMINALS[name]})(?P<{name}>)" for name in tables.ROOT
                         if name not in tables.IGNORED)
-        _scanners.append(re.compile(  # type: ignore[arg-type]
-            f"({spaces}(?:(?:{'|'.join(skipped)}){spaces})*+)(?:{read}|(?P<{_STOP}>))").match)
+        _scanners.append(re.compile(f"({spaces}(?:(?:{'|'.join(skipped)}){spaces})*+)(?:{read}|(?P<{_STOP}>))"))
     return _scanners[0]
 
 
@@ -206,21 +247,25 @@ _METHODS: dict[str, Callable[..., Any]] = {name: value for name, value in vars(R
 
 def _step(rule: Rule) -> tuple[Any, ...]:
     """What the loop reads of a rule that is not a unit (`UNITS`), in one tuple: (origin, size,
-    keep, nones after, the kept children's indices where it keeps them without placeholders or
-    splicing (else None), single, spliced, the Builder's method or None, those indices again
-    where the rule is simply the method called with those children (else None), and whether the
-    method reads only the text of a token child (Rules.TEXT_ONLY))."""
+    keep, nones after, the kept children's indices where it splices none (else None; `size`
+    stands for a placeholder, which the loop puts after the children), single, spliced, the
+    Builder's method or None, those indices again where the rule is simply the method called with
+    those children (else None), whether the method reads only the text of a token child
+    (Rules.TEXT_ONLY), and whether the rule has placeholders)."""
     origin, size, keep, nones_after, single, name, spliced, _ = rule
-    picked = None
+    picked: tuple[int, ...] | None = None
     if keep is None:
         picked = tuple(range(size))
-    elif not nones_after and not any(spliced or nones for _, spliced, nones in keep):
-        picked = tuple(i for i, _, _ in keep)
+    elif not any(spliced for _, spliced, _ in keep):  # as _kept keeps them, a placeholder at `size`
+        picked = (*(j for i, _, nones in keep for j in (*[size] * nones, i)), *[size] * nones_after)
+    padded = picked is not None and size in picked
     method = None if spliced else _METHODS.get(name)
     direct = None
-    if method is not None and picked is not None and not (single and len(picked) == 1):
+    # (A rule of one symbol with placeholders is not for the loop's path of one child.)
+    if method is not None and picked is not None and not (single and len(picked) == 1) and not (padded and size == 1):
         direct = picked
-    return (origin, size, keep, nones_after, picked, single, spliced, method, direct, name in Rules.TEXT_ONLY)
+    return (origin, size, keep, nones_after, picked, single, spliced, method, direct, name in Rules.TEXT_ONLY,
+            padded)
 
 
 STEPS = tuple(_step(rule) for rule in tables.RULES)
@@ -285,7 +330,13 @@ def _run(text: str, start: str, rules: Rules, most_depth: int) -> Any:
     actions, steps, units, lexers, ignored = tables.ACTIONS, STEPS, UNITS, STATE_LEXERS, tables.IGNORED
     chains = _CHAINS
     allowed, keywords = _STATE_ALLOWED, _STATE_KEYWORDS
-    scan = _scanner()
+    # The pattern's matches one after another, each where the last ended (`_scanner`'s match at that
+    # place: a `re` scanner, which sets up its matching once, not at each token, a tenth of the loop's
+    # lexing); made again where a state's own lexer read a token of another length. (After an empty
+    # match a scanner's next may not be empty: the loop reads none after one, `_STOP`.)
+    # (`Pattern.scanner`, what `re.Scanner` reads with, is left out of the typing stubs.)
+    scanner: Callable[..., Any] = _pattern().scanner  # type: ignore[attr-defined]
+    scan: Callable[[], re.Match[str]] = scanner(text).match
     end_state = tables.END[start]
     pos, length = 0, len(text)
     state = tables.START[start]
@@ -301,7 +352,7 @@ def _run(text: str, start: str, rules: Rules, most_depth: int) -> Any:
     begin = 0
     while True:
         if not end:  # the next token, as Lark's lexer of this state reads it (BasicLexer.next_token)
-            hit = scan(text, pos)
+            hit = scan()
             kind = hit.lastgroup
             if kind == _STOP:
                 if hit.end() < length:
@@ -310,10 +361,18 @@ def _run(text: str, start: str, rules: Rules, most_depth: int) -> Any:
             else:
                 begin, pos = hit.end(1), hit.end()
                 if kind not in allowed[state]:  # the state's own lexer reads something else here
-                    own = lexers[state].own(text, begin)
-                    if own is None or own[0] in ignored:
-                        raise Retry
-                    kind, pos = own
+                    lexer = lexers[state]
+                    word = lexer.word(text[begin:pos]) if kind == "NAME" else None
+                    if word is not None:  # a keyword, read whole
+                        kind = word
+                    else:
+                        own = lexer.own(text, begin)
+                        if own is None or own[0] in ignored:
+                            raise Retry
+                        kind, own_end = own
+                        if own_end != pos:
+                            pos = own_end
+                            scan = scanner(text, pos).match
                 token = text[begin:pos]  # a plain str on the stack until the Builder takes it (_token)
                 if kind == "NAME":
                     kind = keywords[state].get(token, kind)
@@ -341,7 +400,7 @@ def _run(text: str, start: str, rules: Rules, most_depth: int) -> Any:
                     passed = chains[key] = _pass_units(states[-2], state, kind)
                 state = states[-1] = passed
                 continue
-            origin, size, keep, nones_after, picked, single, spliced, method, direct, text_only = steps[~action]
+            origin, size, keep, nones_after, picked, single, spliced, method, direct, text_only, padded = steps[~action]
             if size == 1:
                 entry = stack.pop()
                 del states[-1]
@@ -373,6 +432,8 @@ def _run(text: str, start: str, rules: Rules, most_depth: int) -> Any:
                             first = entry[1]
                         last = entry[1]
                 span = None if first is None or last is None else (first[0], last[1])
+            if padded:  # the placeholder `picked` reads at `size`
+                entries.append(_NONE)
             if direct is not None:  # the common case: the Builder's node of some of the children
                 depth += 1
                 if depth > most_depth:

@@ -213,6 +213,40 @@ def test_a_state_s_lexer_reads_what_its_alternation_reads(monkeypatch: pytest.Mo
             assert lexer.own(rest, 0) == (None if hit is None else (hit.lastgroup, hit.end())), rest
 
 
+def test_a_keyword_a_state_s_lexer_reads_whole_is_what_its_alternation_reads(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Where the whole grammar's pattern reads a NAME that a state does not take, the loop asks
+    the state's lexer for the keyword first (`Lexer.word`, without a pattern): each keyword it
+    gives is the terminal the state's alternation reads there, to the name's end, whatever
+    follows; and the keywords of the examples are found so, most of what the states are asked."""
+    _fresh_lexers(monkeypatch)
+    for lexer in reduce._LEXERS:
+        monkeypatch.setattr(lexer, "_words", None)
+    found = 0
+    for lexer in reduce._LEXERS:
+        match = _alternation(lexer).match
+        for keyword in (tables.TERMINALS[name] for name in lexer.terminals if name not in tables.ROOT):
+            terminal = lexer.word(keyword)
+            if terminal is None:
+                continue
+            found += 1
+            for after in ("", " x", "(", "\n", "#", "///", ".5", "\""):
+                hit = match(keyword + after)
+                assert hit is not None and (hit.lastgroup, hit.end()) == (terminal, len(keyword)), (keyword, after)
+        assert lexer.word("not_a_keyword_x") is None
+    assert found > 300
+    asked = []
+    original_own = reduce.Lexer.own
+
+    def own(lexer: reduce.Lexer, text: str, pos: int) -> tuple[str, int] | None:
+        asked.append(text[pos:pos + 12])
+        return original_own(lexer, text, pos)
+
+    monkeypatch.setattr(reduce.Lexer, "own", own)
+    for path in (ROOT / "examples" / "create.rdis", stdlib_path()):
+        parse(str(path), path.read_text(encoding="utf-8"), Diagnostics())
+    assert asked == []
+
+
 def _compiled_patterns(monkeypatch: pytest.MonkeyPatch) -> list[str]:
     """The patterns `re.compile` is asked for from now on (in this test)."""
     compiled: list[str] = []
@@ -228,18 +262,25 @@ def _compiled_patterns(monkeypatch: pytest.MonkeyPatch) -> list[str]:
 
 def test_a_check_of_a_small_file_compiles_no_state_s_alternation(monkeypatch: pytest.MonkeyPatch) -> None:
     """Compiling the states' patterns was a third of a cold check of create.rdis: only single
-    terminals' patterns are compiled, once each, whichever states are met."""
+    terminals' patterns are compiled, once each, whichever states are met (each state's lexer
+    asked, for a keyword or for what else it reads)."""
     _fresh_lexers(monkeypatch)
     compiled = _compiled_patterns(monkeypatch)
     asked = 0
-    original_own = reduce.Lexer.own
+    original_own, original_word = reduce.Lexer.own, reduce.Lexer.word
 
     def own(lexer: reduce.Lexer, text: str, pos: int) -> tuple[str, int] | None:
         nonlocal asked
         asked += 1
         return original_own(lexer, text, pos)
 
+    def word(lexer: reduce.Lexer, name: str) -> str | None:
+        nonlocal asked
+        asked += 1
+        return original_word(lexer, name)
+
     monkeypatch.setattr(reduce.Lexer, "own", own)
+    monkeypatch.setattr(reduce.Lexer, "word", word)
     for path in (ROOT / "examples" / "create.rdis", stdlib_path()):
         parse(str(path), path.read_text(encoding="utf-8"), Diagnostics())
     assert asked > 30

@@ -5,7 +5,6 @@ call's arguments, and the constant values a loop or a repeated reply runs over."
 from __future__ import annotations
 
 import math
-from collections import ChainMap
 from collections.abc import Sequence
 
 from rdisc import TYPE_CHECKING
@@ -15,7 +14,7 @@ from rdisc.semantics import model as m
 from rdisc.semantics.model import Scope, Type
 from rdisc.semantics.operators import shown
 from rdisc.semantics.resolve import Symbols, Unit, check_name, suggest
-from rdisc.semantics.types import Env, Names, Typer, describe, unify
+from rdisc.semantics.types import Env, Layered, Names, Typer, describe, unify
 from rdisc.source import Span
 from rdisc.syntax import ast
 
@@ -241,7 +240,7 @@ class Pieces:
                  reply_note: str | None = None, reply_known: bool = True) -> Env:
         """`extra` over the state variables, a layered view: a copy of them each would cost time in
         proportion to their number, so a check time in proportion to its square."""
-        return Env(ChainMap(extra, self.state_env), where, sees, reply, reply_note, reply_known)
+        return Env(Layered(extra, self.state_env), where, sees, reply, reply_note, reply_known)
 
     def flow(self, value: m.Expr, target: m.AnyType | None, span: Span, into: str) -> None:
         """A value of value.type goes into something of type `target` (int widens to float)."""
