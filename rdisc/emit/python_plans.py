@@ -379,10 +379,12 @@ class _Plans(_DriverBase):
             if step.binding is not None:
                 inner = _params([(prm.name, prm.type) for prm in iface_params], frozenset(taken | {"request"}))
                 used = set().union(*(_names(e) for _, e, _ in call.args.items))
-                if iface_params:
-                    targets = [inner[prm.name] if prm.name in used else "_" for prm in iface_params]
-                    bound = [self.exprs.bound(e, prm.type, local) for (_, e, _), prm in zip(step.binding.items, iface_params)]
-                    _items(w, f"{', '.join(targets)} = ", "(", bound, ")" if len(bound) > 1 else "")
+                # One assignment a parameter, in order (none reads another: the fields' names are
+                # taken apart from them), not one of a tuple, which is made and taken apart again.
+                # An unused one is still computed: where it fails, the general way says why.
+                for (_, e, _), prm in zip(step.binding.items, iface_params):
+                    _emit(w, f"{inner[prm.name] if prm.name in used else '_'} = ",
+                          self.exprs.bound(e, prm.type, local))
             packed = [self.exprs.packed(e, t, inner) for _, e, t in call.args.items]
             _items(w, target, f"{step.pack}(", packed, ")")
             return
