@@ -34,6 +34,7 @@ ALL = frozenset(range(256))
 MAX_NESTING = 6  # repeats within repeats: deeper is refused as too complex to judge
 LONGEST = 4096  # characters of a reply line (the engine's MAX_LINE): the spread of `*` and `+`
 BUDGET = 16 * LONGEST  # the most ways a run of parts that share characters may split a line
+MOST_CLASSES = 4096  # classes whose characters are kept: a check's memory stays bounded
 
 _CATEGORIES = {
     c.CATEGORY_DIGIT: r"\d", c.CATEGORY_NOT_DIGIT: r"\D", c.CATEGORY_SPACE: r"\s",
@@ -160,6 +161,12 @@ class _Walk:
         if depth >= MAX_NESTING:
             raise Risky(f"repeats are nested more than {MAX_NESTING} deep")
         items = list(body)
+        if len(items) == 1 and items[0][0] in _ONE_CHARACTER:  # `\d+`, `[0-9a-f]*`, ` ?`: the commonest repeat
+            # One character a round: no part of a round, nor of two, varies, so neither walk below
+            # could find a risk; what they leave is its character set, one character wide.
+            chars = self.chars(items)
+            longest = LONGEST if high >= c.MAXREPEAT else min(high, LONGEST)
+            return _Shape(chars, chars, max(1, longest - low + 1), low == 0), live
         self.sequence(items, [], depth + 1)
         if high > 1:  # one round after another must not be able to share characters
             strict, self.strict = self.strict, True
@@ -242,6 +249,8 @@ class _Walk:
         return frozenset(out)
 
 
+# The parts that match one character, whatever it is (sre's own `getwidth` counts each as 1 to 1).
+_ONE_CHARACTER = (c.LITERAL, c.NOT_LITERAL, c.ANY, c.IN)
 _CASED: dict[int, frozenset[int]] = {}  # a character's code → it and its other cases, once asked for
 
 
@@ -255,7 +264,22 @@ def _cased(code: int) -> frozenset[int]:
     return found
 
 
+_IN_SETS: dict[tuple[Any, ...], frozenset[int]] = {}  # a class's parts → its characters, once made (bounded)
+
+
 def _in(items: Any) -> frozenset[int]:
+    """The characters a class (`[...]`, `\\d`) matches: made once for each class, which a
+    description's patterns repeat (`\\d+` in most of them)."""
+    key = tuple(items)
+    found = _IN_SETS.get(key)
+    if found is None:
+        found = _made_in(items)
+        if len(_IN_SETS) < MOST_CLASSES:
+            _IN_SETS[key] = found
+    return found
+
+
+def _made_in(items: Any) -> frozenset[int]:
     out: set[int] = set()
     negate = False
     for op, av in items:

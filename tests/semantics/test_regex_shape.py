@@ -5,7 +5,10 @@ from __future__ import annotations
 
 import pytest
 from conftest import run_rdisc
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
 
+from rdisc.semantics import regex_shape
 from rdisc.semantics.regex_shape import risk
 
 POLYNOMIAL = "parts of variable length in a row can match the same characters"
@@ -80,3 +83,50 @@ def test_the_checker_reports_them_at_the_regex(tmp_path) -> None:
         "(`*+`, `++`)\n --> " in result.stderr
     )
     assert " --> " + str(source) + ":4:42\n" in result.stderr
+
+
+# Parts a pattern is drawn from: one character each (the walk's shortcut for a repeat of one), and
+# groups, alternations and repeats of them.
+_ATOMS = st.sampled_from(["a", "b", "x", ".", r"\d", r"\s", r"\w", "[ab]", "[^a]", "[0-9a-f]", r"\.", ","])
+_QUANTIFIERS = st.sampled_from(["", "?", "*", "+", "{2}", "{0,3}", "{1,64}", "*+", "++", "*?"])
+
+
+def _patterns(depth: int) -> st.SearchStrategy[str]:
+    if depth == 0:
+        part = _ATOMS
+    else:
+        inner = st.lists(_patterns(depth - 1), min_size=1, max_size=3)
+        part = st.one_of(_ATOMS, inner.map(lambda parts: f"({''.join(parts)})"),
+                         inner.map(lambda parts: f"(?:{'|'.join(parts)})"))
+    return st.tuples(part, _QUANTIFIERS).map("".join)
+
+
+@settings(max_examples=300, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.lists(_patterns(2), min_size=1, max_size=5).map("".join))
+def test_a_repeat_of_one_character_is_judged_as_the_whole_walk_judges_it(pattern: str) -> None:
+    """The walk takes a repeat of one character (`\\d+`, `[ab]*`) without walking its rounds, which
+    cannot vary; it finds what the whole walk finds on any pattern, refusal and reason alike."""
+    shortcut = risk(pattern)
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(regex_shape, "_ONE_CHARACTER", ())
+        whole = risk(pattern)
+    assert shortcut == whole, pattern
+
+
+def test_the_shortcut_is_taken() -> None:
+    """The differential test above compares two ways: `\\d+`'s rounds are walked only without the shortcut."""
+    walked: list[object] = []
+    original = regex_shape._Walk.sequence
+
+    def counted(self: regex_shape._Walk, items: list[object], *rest: object) -> object:
+        walked.append(items)
+        return original(self, items, *rest)  # type: ignore[arg-type]
+
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(regex_shape._Walk, "sequence", counted)
+        assert risk(r"^(-?\d+)\s*$") is None
+        short = len(walked)
+        patch.setattr(regex_shape, "_ONE_CHARACTER", ())
+        walked.clear()
+        assert risk(r"^(-?\d+)\s*$") is None
+    assert (short, len(walked)) == (2, 7)
