@@ -38,10 +38,13 @@ class Type(enum.Enum):
     STRING = "string"
     BYTES = "bytes"  # parameters and replies only: variable-length binary data
 
+    # Hashed as any object, by identity, where Enum's hash is a Python call that hashes the name:
+    # types are the keys of the checker's tables, and a member is equal only to itself either way.
+    __hash__ = object.__hash__
+
     def default(self) -> Value:
         """The value `""` stands for in thesis JSON (section 4.3.3)."""
-        defaults: dict[Type, Value] = {Type.INT: 0, Type.FLOAT: 0.0, Type.BOOL: False, Type.STRING: "", Type.BYTES: b""}
-        return defaults[self]
+        return _DEFAULTS[self]
 
 
 @dataclass(frozen=True, slots=True)
@@ -61,6 +64,7 @@ class Array(metaclass=Frozen):
         return (self.element.default(),) * self.size
 
 
+_DEFAULTS: dict[Type, Value] = {Type.INT: 0, Type.FLOAT: 0.0, Type.BOOL: False, Type.STRING: "", Type.BYTES: b""}
 AnyType = Type | Array
 Value = int | float | bool | str | bytes | tuple["Any", ...]  # an array's value is a tuple of its elements
 
@@ -85,6 +89,8 @@ class Scope(enum.Enum):
     STATE = "state"
     PARAM = "param"
     FIELD = "field"
+
+    __hash__ = object.__hash__  # as Type's
 
 
 @dataclass(frozen=True, slots=True)
