@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import ast
 import math
+import struct
 from pathlib import Path
 from typing import Any
 
@@ -34,9 +35,14 @@ CASES: list[tuple[str, str, tuple[Any, ...], str, str]] = [
     ("x: int, y: int", "x >> y", (1, -1), "q", "negative shift count -1"),
     ("x: int, y: int", "x ** 2000 * y ** 2000 > 0", (3, 3), "?",
      "a 3170-bit integer * a 3170-bit integer is too large (results are limited to 4096 bits)"),
-    # (a float parameter given NaN or inf is refused before its expression runs: tests/engine/test_finite_values.py)
-    ("s: string", "round(float(s))", ("inf",), "q", "round(inf): cannot convert float infinity to integer"),
-    ("s: string", "int(float(s))", ("nan",), "q", "int(nan): cannot convert float NaN to integer"),
+    # (a float parameter given NaN or inf is refused before its expression runs: tests/engine/test_finite_values.py;
+    # a string's is refused by float(); the bytes of a float, a device's or a caller's, may still hold one)
+    ("s: string", "float(s)", ("inf",), "d", "float('inf'): not a finite number"),
+    ("s: string", "float(s) * 0.0", ("-1e999",), "d", "float('-1e999'): not a finite number"),
+    ("s: string", "clamp(float(s), 0.0, 1.0)", ("nan",), "d", "float('nan'): not a finite number"),
+    ("b: bytes", "round(from_f64le(b))", (struct.pack("<d", math.inf),), "q",
+     "round(inf): cannot convert float infinity to integer"),
+    ("b: bytes", "int(from_f64be(b))", (struct.pack(">d", math.nan),), "q", "int(nan): cannot convert float NaN to integer"),
     ("s: string", "int(s)", ("0xzz",), "q", "int('0xzz'): invalid literal for int() with base 0: '0xzz'"),
     ("s: string", "float(s)", ("one",), "d", "float('one'): could not convert string to float: 'one'"),
     ("x: float", "sqrt(x)", (-1.0,), "d", "sqrt(-1.0): outside the function's domain"),

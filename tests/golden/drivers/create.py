@@ -285,11 +285,16 @@ def _int(x: Any) -> int:
 
 
 def _float(x: Any) -> float:
-    """`float(x)` of a number, a bool or a string."""
+    """`float(x)` of a number, a bool or a string. A string's infinity or NaN (`"inf"`, `"nan"`,
+    `"1e999"`) is refused, as arithmetic's is: no operation makes one (a clamp would take an
+    infinite speed for full speed)."""
     try:
-        return float(x)
+        value = float(x)
     except (ValueError, OverflowError) as err:
         raise EvalError(f"float({shown(x)}): {_reason(err)}") from None
+    if not -FLOAT_MAX <= value <= FLOAT_MAX:  # (NaN is not within either)
+        raise EvalError(f"float({shown(x)}): not a finite number")
+    return value
 
 
 def _clamp(x: Any, low: Any, high: Any) -> Any:
