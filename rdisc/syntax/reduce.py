@@ -217,7 +217,8 @@ def _scanner() -> Callable[[str, int], re.Match[str]]:
 
 def _pattern() -> re.Pattern[str]:
     """One pattern that skips what every lexer skips (group 1) and then reads the
-    whole grammar's next token: the root lexer's terminals in its order, each followed by an empty
+    whole grammar's next token: the root lexer's terminals (in `tables.SCAN`'s order, which reads
+    what the root lexer's order reads: rdisc.syntax.scan_order), each followed by an empty
     group named after it (the last group a match closes, so its `lastgroup`), and last an empty
     `_STOP`.
 
@@ -229,14 +230,19 @@ def _pattern() -> re.Pattern[str]:
     A terminal's name goes after it, not around it, so that an alternative begins with its first
     character, which `re` checks before it tries the alternative (a quarter of the lexer's time)."""
     if not _scanners:
-        skipped = [tables.TERMINALS[name] for name in tables.ROOT if name in tables.IGNORED]
-        # White space (a character class, repeated) skipped first, by a loop over its characters:
-        # most tokens follow one space, which the general loop over the skipped terminals is slower at.
-        spaces = "".join(f"{pattern[:-1]}*+" for pattern in skipped if re.fullmatch(r"\[[^\]]+\]\+", pattern))
-        read = "|".join(f"(?:{tables.TERMINALS[name]})(?P<{name}>)" for name in tables.ROOT
-                        if name not in tables.IGNORED)
-        _scanners.append(re.compile(f"({spaces}(?:(?:{'|'.join(skipped)}){spaces})*+)(?:{read}|(?P<{_STOP}>))"))
+        _scanners.append(scanner_pattern(tables.SCAN))
     return _scanners[0]
+
+
+def scanner_pattern(read: tuple[str, ...]) -> re.Pattern[str]:
+    """`_pattern` with the terminals read tried in the order `read` (a test compares the root
+    lexer's own order with SCAN's)."""
+    skipped = [tables.TERMINALS[name] for name in tables.ROOT if name in tables.IGNORED]
+    # White space (a character class, repeated) skipped first, by a loop over its characters:
+    # most tokens follow one space, which the general loop over the skipped terminals is slower at.
+    spaces = "".join(f"{pattern[:-1]}*+" for pattern in skipped if re.fullmatch(r"\[[^\]]+\]\+", pattern))
+    alternatives = "|".join(f"(?:{tables.TERMINALS[name]})(?P<{name}>)" for name in read)
+    return re.compile(f"({spaces}(?:(?:{'|'.join(skipped)}){spaces})*+)(?:{alternatives}|(?P<{_STOP}>))")
 
 
 # The Builder's method for each rule name that has one (under `v_args(meta=True)`: it takes the

@@ -34,6 +34,7 @@ from lark.parsers.lalr_analysis import Shift
 
 from rdisc.syntax.lexing import _keywords
 from rdisc.syntax.parse import lark_parser
+from rdisc.syntax.scan_order import scan_order
 
 TARGET = Path(__file__).resolve().parent / "tables.py"
 
@@ -136,6 +137,11 @@ def write() -> str:
     out.append(f"# Terminals read and skipped.\nIGNORED = frozenset({ignored!r})\n\n")
     out.append("# The whole grammar's lexer: its terminals in the order it tries them.\n")
     out.append(f"ROOT = {_lexer(root)[0]!r}\n\n")
+    read = tuple(name for name in _lexer(root)[0] if name not in ignored)
+    patterns = {t.name: t.pattern.to_regexp() for t in root.terminals}
+    out.append("# The order in which the fast loop's scanner tries the terminals it reads: ROOT's where two\n"
+               "# can begin alike, and otherwise those re rejects by one character first (scan_order).\n")
+    out.append(f"SCAN = {scan_order(read, patterns)!r}\n\n")
     out.append("# The lexers of the parser states: the terminals each tries, in order, and the keywords a\n"
                "# NAME it reads may be (the text → the keyword's terminal).\n"
                "LEXERS: tuple[tuple[tuple[str, ...], dict[str, str]], ...] = (\n")
