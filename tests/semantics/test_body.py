@@ -158,6 +158,9 @@ TRANSMISSIONS = [
 ]
 
 SIDES = "command position to servo.goal { raw = round(position * 400) + 512  position = (raw - 512) / 400 }"
+# An infinity in a description: a float's bytes (`float("inf")` of a string is refused).
+INFINITY = 'from_f64le(b"\\x00\\x00\\x00\\x00\\x00\\x00\\xf0\\x7f")'
+
 AGREEMENT = [
     (conversion(SIDES),
      [("E606", SIDES, "joint `lift`'s position -1.5 becomes -88 at servo.goal, outside its range 0..1023")]),
@@ -168,8 +171,8 @@ AGREEMENT = [
     (conversion("command position to servo.goal { raw = round(1 / (position - position))  position = raw }"),
      [("E606", "command position to servo.goal { raw = round(1 / (position - position))  position = raw }",
        "converting position -1.5 of joint `lift` fails: division by zero")]),
-    (conversion('command velocity to servo.speed { raw = velocity * float("inf")  velocity = raw }'),
-     [("E606", 'command velocity to servo.speed { raw = velocity * float("inf")  velocity = raw }',
+    (conversion(f"command velocity to servo.speed {{ raw = velocity * {INFINITY}  velocity = raw }}"),
+     [("E606", f"command velocity to servo.speed {{ raw = velocity * {INFINITY}  velocity = raw }}",
        ("converting velocity -2 of joint `lift` gives raw -inf, which comes back as velocity -inf: not a finite "
        "number"))]),
 ]
