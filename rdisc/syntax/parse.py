@@ -18,7 +18,7 @@ from rdisc import TYPE_CHECKING, patterns
 from rdisc.diagnostics import Diagnostics
 from rdisc.source import Span
 from rdisc.syntax import ast
-from rdisc.syntax.build import MAX_EXPR_DEPTH, Builder, TooDeep
+from rdisc.syntax.build import MAX_EXPR_DEPTH, Builder, TooDeep, build_expression, build_tree
 
 if TYPE_CHECKING:
     from types import ModuleType
@@ -175,7 +175,7 @@ def parse_declaration(text: str, start: int, end: int, builder: Builder, decls: 
         too_deep = Span(path, start + meta.start_pos, start + meta.end_pos)
     else:
         try:
-            decls.extend(builder.build(tree, start))
+            decls.extend(build_tree(builder, tree, start))
         except lark.exceptions.VisitError as err:
             if not isinstance(err.orig_exc, TooDeep):
                 raise
@@ -232,10 +232,8 @@ def parse_expression(path: str, text: str, base_offset: int, diagnostics: Diagno
         meta = deepest.meta
         too_deep = Span(path, base_offset + meta.start_pos, base_offset + meta.end_pos)
     else:
-        from typing import cast  # only where Lark builds the tree, which a check does not
-
         try:  # built from the `expr_start` rule: one expression
-            return cast(ast.Expr, Builder(path, {}, diagnostics).build(tree, base_offset))
+            return build_expression(Builder(path, {}, diagnostics), tree, base_offset)
         except lark.exceptions.VisitError as err:
             if not isinstance(err.orig_exc, TooDeep):
                 raise

@@ -24,7 +24,7 @@ from collections.abc import Callable
 
 from rdisc import TYPE_CHECKING
 from rdisc.syntax import ast, tables
-from rdisc.syntax.build import Builder, Rules, TooDeep
+from rdisc.syntax.build import Builder, Rules, TooDeep, rule_methods
 
 if TYPE_CHECKING:
     from typing import Any
@@ -247,8 +247,7 @@ def scanner_pattern(read: tuple[str, ...]) -> re.Pattern[str]:
 
 # The Builder's method for each rule name that has one (under `v_args(meta=True)`: it takes the
 # Rules, the meta and the children).
-_METHODS: dict[str, Callable[..., Any]] = {name: value for name, value in vars(Rules).items()
-                                           if not name.startswith("__") and callable(value)}
+_METHODS: dict[str, Callable[..., Any]] = rule_methods()
 
 
 def _step(rule: Rule) -> tuple[Any, ...]:

@@ -169,13 +169,13 @@ def test_a_slip_gets_help(text: str, help: str | None) -> None:
 
 
 def test_an_expression_tree_builds_the_expression_an_embedded_one_parses_to() -> None:
-    """`Builder.expression` (an `expr_start` tree, as a JSON string holds one) gives the node, with
+    """`build_expression` (an `expr_start` tree, as a JSON string holds one) gives the node, with
     its spans, that `parse_expression` gives for the same text and offset."""
-    from rdisc.syntax.build import Builder
+    from rdisc.syntax.build import Builder, build_expression
     from rdisc.syntax.parse import parse_expression, parser
 
     for text in ("1 + 2 * -x", "y", "[1, 2][i] if ok else f(3)"):
-        built = Builder("t.json", {}, Diagnostics()).expression(parser().parse(text, start="expr_start"), 10)
+        built = build_expression(Builder("t.json", {}, Diagnostics()), parser().parse(text, start="expr_start"), 10)
         expected = parse_expression("t.json", text, 10, Diagnostics())
         assert expected is not None
         assert built == expected and built.span == expected.span, (built, expected)
