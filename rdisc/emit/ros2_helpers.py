@@ -162,7 +162,6 @@ class _Ros2Node:
         """Cyclone's callbacks for a reader or writer of `topic` (called as it is being made, too):
         QoS mismatches reported, messages queued for `received`."""
         from cyclonedds.core import Listener
-        from cyclonedds.internal import InvalidSample
 
         def mismatch(status: Any, what: str) -> None:
             policy = _ROS2_POLICIES.get(status.last_policy_id, f"QoS policy {status.last_policy_id}")
@@ -171,9 +170,10 @@ class _Ros2Node:
 
         def available(reader: Any) -> None:
             assert received is not None
-            for msg in reader.take(N=100):
-                if not isinstance(msg, InvalidSample):  # a writer left or disposed: no message, no data
-                    self.received.put((received, msg))
+            # None: Cyclone calls while the reader is being made, before Python knows it (what came
+            # then is taken once it is made), or while it goes.
+            if reader is not None:
+                self.take(reader, received)
 
         return Listener(  # type: ignore[no-untyped-call]
             on_offered_incompatible_qos=lambda _writer, status: mismatch(
@@ -194,6 +194,15 @@ class _Ros2Node:
             received, msg = item
             received(msg)
 
+    def take(self, reader: Any, received: Callable[[Any], None]) -> None:
+        """Queue the messages `reader` holds for `received` (Cyclone's listener thread, or the one
+        that made the reader)."""
+        from cyclonedds.internal import InvalidSample
+
+        for msg in reader.take(N=100):
+            if not isinstance(msg, InvalidSample):  # a writer left or disposed: no message, no data
+                self.received.put((received, msg))
+
     def publisher(self, name: str, message: Any, qos: Any) -> Any:
         from cyclonedds.pub import DataWriter
         from cyclonedds.topic import Topic
@@ -213,6 +222,7 @@ class _Ros2Node:
         topic = self.topic(name)
         reader = DataReader(self.participant, Topic(self.participant, topic, message), qos=self.default,
                             listener=self.listener(topic, received))
+        self.take(reader, received)  # what came while it was being made, which its listener could not take
         self.readers.append(reader)
         self.announce()
         return reader
