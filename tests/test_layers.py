@@ -17,6 +17,7 @@ ROOT = Path(__file__).resolve().parents[1] / "rdisc"
 LAYERS = [
     "engine",  # the run-time semantics: the standard library and pyserial only
     "frozen", "patterns", "resources", "limits",
+    "regex_shape",  # what a regex's matches begin with, and which take more than linear time
     "source_methods", "source",
     "recordings", "capture",  # a recording read back; captured traffic
     "diagnostics",

@@ -468,7 +468,7 @@ def format_width(spec: str) -> int:
 def regex_groups(pattern: str) -> int:
     """Number of groups of a regex; raises TemplateError where it does not compile
     or could take more than linear time on a reply line (see `regex_shape`)."""
-    from rdisc.semantics import regex_shape  # for a `regex` primitive only: start-up time
+    from rdisc import regex_shape  # for a `regex` primitive only: start-up time
 
     try:
         with warnings.catch_warnings():  # Python's hints about future syntax (`[[`) are not the user's to see
@@ -487,7 +487,7 @@ def regex_groups(pattern: str) -> int:
 
 def regex_min_length(pattern: str) -> int:
     """The fewest characters the regex can match (a lower bound on a reply)."""
-    from rdisc.semantics import regex_shape  # for a `regex` primitive only: start-up time
+    from rdisc import regex_shape  # for a `regex` primitive only: start-up time
 
     try:
         return min(regex_shape.parse_tree(pattern).getwidth()[0], 1 << 16)

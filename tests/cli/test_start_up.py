@@ -146,7 +146,7 @@ def test_a_clean_check_imports_only_what_its_description_needs() -> None:
     check of create.rdis."""
     probe = ("import sys; from rdisc.cli.main import main; status = main(sys.argv[1:]); print(status, "
              "[name for name in ('string', 'rdisc.syntax.printer', 'rdisc.diagnostics.codes', "
-             "'rdisc.semantics.regex_shape', 'rdisc.syntax.errors') if name in sys.modules])")
+             "'rdisc.regex_shape', 'rdisc.syntax.errors') if name in sys.modules])")
     found = [subprocess.run([sys.executable, "-c", probe, "check", str(ROOT / "examples" / name)],
                             capture_output=True, text=True, check=True).stdout for name in ("create.rdis", "koala.rdis")]
-    assert found == ["0 []\n", "0 ['string', 'rdisc.semantics.regex_shape']\n"]
+    assert found == ["0 []\n", "0 ['string', 'rdisc.regex_shape']\n"]

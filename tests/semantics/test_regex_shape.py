@@ -8,8 +8,8 @@ from conftest import run_rdisc
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from rdisc.semantics import regex_shape
-from rdisc.semantics.regex_shape import risk
+from rdisc import regex_shape
+from rdisc.regex_shape import risk
 
 POLYNOMIAL = "parts of variable length in a row can match the same characters"
 EXPONENTIAL = "a repeated part can split the same text between its rounds"

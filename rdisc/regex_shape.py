@@ -12,7 +12,9 @@ split between its parts in many ways, and each way is tried before the match fai
 `risk` walks the parse tree and reports the first such shape. It is conservative: a
 fixed character between two parts (`(\\d+),(\\d+)`) is a fence only when neither part
 can match it. Possessive repeats and atomic groups give nothing back, so they are safe.
-Reply lines are latin-1 text, so character sets are sets of the 256 code points.
+Reply lines are latin-1 text, so character sets are sets of the 256 code points. The walk
+also tells what a pattern's matches begin with (`first_characters`), by which the parser's
+scanner orders the grammar's terminals.
 """
 
 from __future__ import annotations
@@ -83,6 +85,22 @@ def compiled(parsed: _parser.SubPattern) -> re.Pattern[str]:
     """The pattern `re.compile` makes of the text `parsed` was parsed from (without parsing it again)."""
     made: re.Pattern[str] = _compile_parsed(parsed)
     return made
+
+
+def first_characters(pattern: str) -> frozenset[int]:
+    """The characters a match of `pattern` can begin with (case folded both ways, ALL where any
+    can): the walk's reading, which the parser's scanner orders its terminals by
+    (rdisc.syntax.scan_order). Empty where only characters past 255 can."""
+    parsed = parse_tree(pattern)
+    return _Walk(parsed.state).first(list(parsed.data))
+
+
+def tested_by_one_character(pattern: str) -> bool:
+    """Whether `re` rejects the pattern, as an alternative of an alternation, by testing the one
+    character before it: it begins with a literal or a class (after `re`'s parser has made
+    `(?:a|b)` one); any other it enters."""
+    items = parse_tree(pattern).data
+    return bool(items) and items[0][0] in (c.LITERAL, c.IN)
 
 
 def risk(pattern: str | _parser.SubPattern) -> str | None:
