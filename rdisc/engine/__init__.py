@@ -142,6 +142,7 @@ if TYPE_CHECKING:  # at run time each name is imported when it is first asked fo
         EXIT_SIGTERM,
         EXIT_USAGE,
         command_line,
+        raise_dropped,
         without_signals,
     )
     from rdisc.engine.telling import Telling
@@ -331,6 +332,7 @@ __all__ = [
     "parse_settings",
     "plainly_given",
     "ports_held",
+    "raise_dropped",
     "read_value",
     "replaced",
     "ros_message",

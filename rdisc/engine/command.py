@@ -30,6 +30,7 @@ from rdisc.engine.signals import (
     _restore_handlers,
     _shutting_down_with,
     _Terminated,
+    raise_dropped,
 )
 from rdisc.engine.values import Value
 
@@ -122,6 +123,7 @@ def run_command(args: argparse.Namespace, robot: Robot, prog: str, sim: Simulato
         if opened is not None:
             opened()
         for name, kind, values in calls:
+            raise_dropped()
             with ports_held(robot):
                 if session is not None:
                     session.call(kind, name, values)
@@ -141,9 +143,9 @@ def run_command(args: argparse.Namespace, robot: Robot, prog: str, sim: Simulato
         print(f"{prog}: {err}", file=sys.stderr)
         status = EXIT_USAGE
     except KeyboardInterrupt:
-        status = EXIT_SIGINT
+        status = _shutting_down_with(EXIT_SIGINT)  # marked here, where a later signal is still ignored
     except _Terminated:
-        status = EXIT_SIGTERM
+        status = _shutting_down_with(EXIT_SIGTERM)
     finally:
         status = _shutting_down_with(status)  # from here on a signal must not cut the terminate hooks short
         try:
@@ -329,7 +331,9 @@ def _print_io(elapsed: float, kind: str, connection: str, data: bytes) -> None:
 
 
 def _sleep(seconds: float | None) -> None:
-    """Sleep (forever if None or infinite); a signal ends it through its handler."""
+    """Sleep (forever if None or infinite); a signal ends it through its handler, and one whose
+    exception Python dropped before is raised first."""
+    raise_dropped()
     if seconds is None or seconds == math.inf:
         while True:
             time.sleep(3600)

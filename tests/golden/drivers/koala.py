@@ -3121,25 +3121,88 @@ class _Terminated(BaseException):
     """SIGTERM, turned into an exception so that the terminate hooks run on the way out."""
 
 
-_shutting_down = [False]
+_shutting_down = [False]  # the shutdown began: later signals are ignored
+_raised: list[BaseException | None] = [None]  # the exception the last signal raised, until then
 
 
 def _on_signal(signum: int, frame: object) -> None:
+    """The first signal raises KeyboardInterrupt (SIGINT) or _Terminated (SIGTERM), which ends the
+    run through its `except` and `finally`. A later one is ignored while that exception is on
+    its way (a burst would cut its cleanup short) and once the shutdown began (the terminate
+    hooks run in peace). Python drops an exception raised where it cannot propagate (in a
+    `__del__`, a weakref callback; silently in some of its C paths): then the next signal
+    raises again, and one dropped where Python reports it is raised again by the run's next
+    wait (`_dropped`, `raise_dropped`)."""
     if _shutting_down[0]:
-        return  # the first signal already started the shutdown: the terminate hooks run in peace
-    _shutting_down[0] = True
-    raise KeyboardInterrupt if signum == signal.SIGINT else _Terminated()
+        return
+    raised = _raised[0]
+    if raised is not None and _on_its_way(raised):
+        return
+    error = KeyboardInterrupt() if signum == signal.SIGINT else _Terminated()
+    _raised[0] = error
+    raise error
 
 
-def _install_signal_handlers() -> dict[int, Any]:
+def _on_its_way(error: BaseException) -> bool:
+    """Whether `error` is being handled or propagated on this thread: the exception of an
+    `except` or `finally` running, or what such an exception was raised in the handling of."""
+    seen: BaseException | None = sys.exc_info()[1]
+    for _ in range(64):  # a chain of contexts is short; a cycle is possible, so bounded
+        if seen is None:
+            return False
+        if seen is error:
+            return True
+        seen = seen.__context__
+    return False
+
+
+_dropped_signal: list[int | None] = [None]  # a signal whose exception Python dropped, to raise again
+
+
+def _dropped(unraisable: Any) -> None:
+    """`sys.unraisablehook` while signals are handled: a signal's exception raised where Python
+    could only report it (a `__del__`, a weakref callback such as an import lock's) is not
+    printed but kept, for the run's next wait to raise (`raise_dropped`): raised again from
+    here it would be dropped again. Anything else is reported as Python would."""
+    error = unraisable.exc_value
+    if error is not None and error is _raised[0]:
+        _raised[0] = None
+        _dropped_signal[0] = signal.SIGINT if isinstance(error, KeyboardInterrupt) else signal.SIGTERM
+        return
+    sys.__unraisablehook__(unraisable)
+
+
+def raise_dropped() -> None:
+    """Raise the exception of a signal that Python dropped (`_dropped`), if one was: a command
+    line's waits call this before each, so that the signal still ends the run."""
+    signum = _dropped_signal[0]
+    if signum is not None:
+        _dropped_signal[0] = None
+        _on_signal(signum, None)
+
+
+class _Handlers:
+    """What `_install_signal_handlers` replaced, for `_restore_handlers` to put back."""
+
+    __slots__ = ("signals", "unraisable")
+
+    def __init__(self, signals: dict[int, Any], unraisable: Any) -> None:
+        self.signals = signals
+        self.unraisable = unraisable
+
+
+def _install_signal_handlers() -> _Handlers:
     _shutting_down[0] = False
+    _raised[0] = _dropped_signal[0] = None
     previous: dict[int, Any] = {}
     for signum in (signal.SIGINT, signal.SIGTERM):
         try:
             previous[signum] = signal.signal(signum, _on_signal)
         except ValueError:  # not the main thread: leave the handlers alone
-            pass
-    return previous
+            return _Handlers({}, sys.unraisablehook)
+    hook = sys.unraisablehook
+    sys.unraisablehook = _dropped
+    return _Handlers(previous, hook)
 
 
 def command_line(run: Callable[[], int]) -> int:
@@ -3156,9 +3219,9 @@ def command_line(run: Callable[[], int]) -> int:
         mask = _unblock_signals()  # a signal held back is handled here, as KeyboardInterrupt or _Terminated
         status = run()
     except KeyboardInterrupt:
-        status = EXIT_SIGINT
+        status = _shutting_down_with(EXIT_SIGINT)  # marked here, where a later signal is still ignored
     except _Terminated:
-        status = EXIT_SIGTERM
+        status = _shutting_down_with(EXIT_SIGTERM)
     finally:
         status = _shutting_down_with(status)  # a signal from here on is too late to end it: it is ignored
         if not _restore_handlers(previous, status) and mask is not None:
@@ -3168,7 +3231,9 @@ def command_line(run: Callable[[], int]) -> int:
 
 def _shutting_down_with(status: int) -> int:
     """Mark the shutdown begun, so that later signals are ignored, and the status to end with: a
-    signal that lands before the mark is taken decides it (hence the loop)."""
+    signal that lands before the mark is taken decides it (hence the loop). The `except` that
+    catches a signal's exception marks it there, while a later signal is still ignored as
+    on its way; the `finally` after marks it for every other ending."""
     while not _shutting_down[0]:
         try:
             _shutting_down[0] = True
@@ -3179,12 +3244,14 @@ def _shutting_down_with(status: int) -> int:
     return status
 
 
-def _restore_handlers(previous: dict[int, Any], status: int) -> bool:
+def _restore_handlers(previous: _Handlers, status: int) -> bool:
     """The handlers found put back, unless a signal ended the run (then later ones are ignored to
     the exit); whether one did."""
     interrupted = status in (EXIT_SIGINT, EXIT_SIGTERM)
-    for signum, handler in previous.items():
+    for signum, handler in previous.signals.items():
         signal.signal(signum, signal.SIG_IGN if interrupted else handler)
+    if previous.signals:
+        sys.unraisablehook = previous.unraisable
     return interrupted
 
 
@@ -5603,6 +5670,7 @@ def run_command(args: argparse.Namespace, robot: Robot, prog: str, sim: Simulato
         if opened is not None:
             opened()
         for name, kind, values in calls:
+            raise_dropped()
             with ports_held(robot):
                 if session is not None:
                     session.call(kind, name, values)
@@ -5622,9 +5690,9 @@ def run_command(args: argparse.Namespace, robot: Robot, prog: str, sim: Simulato
         print(f"{prog}: {err}", file=sys.stderr)
         status = EXIT_USAGE
     except KeyboardInterrupt:
-        status = EXIT_SIGINT
+        status = _shutting_down_with(EXIT_SIGINT)  # marked here, where a later signal is still ignored
     except _Terminated:
-        status = EXIT_SIGTERM
+        status = _shutting_down_with(EXIT_SIGTERM)
     finally:
         status = _shutting_down_with(status)  # from here on a signal must not cut the terminate hooks short
         try:
@@ -5810,7 +5878,9 @@ def _print_io(elapsed: float, kind: str, connection: str, data: bytes) -> None:
 
 
 def _sleep(seconds: float | None) -> None:
-    """Sleep (forever if None or infinite); a signal ends it through its handler."""
+    """Sleep (forever if None or infinite); a signal ends it through its handler, and one whose
+    exception Python dropped before is raised first."""
+    raise_dropped()
     if seconds is None or seconds == math.inf:
         while True:
             time.sleep(3600)
