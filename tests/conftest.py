@@ -174,10 +174,12 @@ def fuzz_examples(n: int) -> int:
 
 
 def cli_env(**extra: str) -> dict[str, str]:
-    """The environment of an `rdisc` subprocess: no colour, UTF-8, nothing forced."""
+    """The environment of an `rdisc` subprocess: no colour, UTF-8, nothing forced, its stacks on SIGABRT."""
     env = {k: v for k, v in os.environ.items()
            if k not in ("FORCE_COLOR", "CLICOLOR_FORCE", "TTY_COMPATIBLE", "TTY_INTERACTIVE", "PYTHONHASHSEED")}
-    env.update({"NO_COLOR": "1", "TERM": "dumb", "PYTHONIOENCODING": "utf-8", "COLUMNS": "200"})
+    # PYTHONFAULTHANDLER: a process that hangs writes every thread's stack on SIGABRT (`stacks_of`)
+    env.update({"NO_COLOR": "1", "TERM": "dumb", "PYTHONIOENCODING": "utf-8", "COLUMNS": "200",
+                "PYTHONFAULTHANDLER": "1"})
     env.update(extra)
     return env
 

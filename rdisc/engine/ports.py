@@ -111,6 +111,10 @@ class _FairLock:
             raise
         return True
 
+    def _is_owned(self) -> bool:
+        """Held by this thread: the name of an RLock's own test (which `threading.Condition` uses)."""
+        return self._owner == threading.get_ident()
+
     def release(self) -> None:
         with self._guard:
             if self._owner != threading.get_ident():
@@ -146,6 +150,11 @@ class _Port:
         # Fair when a connection on it is `threading dual` or `multiple`: made so here, before any
         # write binds the lock.
         self.lock: _Lock = _FairLock() if fair else threading.RLock()
+
+    def held_here(self) -> bool:
+        """Whether this thread holds the port's lock."""
+        owned: Callable[[], bool] = getattr(self.lock, "_is_owned")  # noqa: B009 - not in RLock's stub
+        return owned()
 
     def lane(self) -> _Lane:
         return self.lock.acquire, self.lock.release, self.write

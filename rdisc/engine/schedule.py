@@ -147,9 +147,15 @@ class _Worker:
         without_signals(self._thread.start)
 
     def stop(self) -> None:
-        """Stop the thread; it finishes the interface it is running first."""
+        """Stop the thread; it finishes the interface it is running first. Not waited for when
+        this thread holds the connection's port: a signal that landed between a command's taking
+        of the port and its `try` left it held, and the thread's next tick waits for it for ever
+        (the port's lock and the robot's closed test keep the terminate hooks' stop last)."""
         self._stop.set()
         thread = self._thread
+        port = self.robot._ports.get(self.connection.name)
+        if port is not None and port.held_here():
+            return
         if thread is not None and thread is not threading.current_thread():
             try:
                 thread.join()

@@ -89,7 +89,11 @@ class CreateEmulator(PtyDevice):
             for signum in signals:
                 process.send_signal(signum)
                 time.sleep(gap)
-            stdout, stderr = process.communicate(timeout=30)
+            try:
+                stdout, stderr = process.communicate(timeout=30)
+            except subprocess.TimeoutExpired:
+                raise AssertionError(f"still running 30 s after {[s.name for s in signals]}:\n"
+                                     f"{stacks_of(process)}") from None
         finally:
             if process.poll() is None:
                 process.kill()
@@ -136,3 +140,16 @@ class CreateEmulator(PtyDevice):
             if self.mode == "short":
                 reply = reply[:-1]
             self.send(reply)
+
+
+def stacks_of(process: subprocess.Popen[str]) -> str:
+    """What a process that will not end is doing: every thread's Python stack, which it writes
+    on SIGABRT when started with PYTHONFAULTHANDLER=1 (`conftest.cli_env` sets it), and what it
+    printed before; it is gone after."""
+    process.send_signal(signal.SIGABRT)
+    try:
+        stdout, stderr = process.communicate(timeout=10)
+    except subprocess.TimeoutExpired:
+        process.kill()
+        stdout, stderr = process.communicate()
+    return f"stdout:\n{stdout}\nstderr:\n{stderr}"

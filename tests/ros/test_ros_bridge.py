@@ -81,7 +81,8 @@ def _stop(process: subprocess.Popen, sig: int = signal.SIGINT) -> str:
 def ros_env(tmp_path_factory: pytest.TempPathFactory) -> Iterator[dict[str, str]]:
     port = _free_port()
     env = dict(os.environ, ROS_MASTER_URI=f"http://127.0.0.1:{port}", ROS_HOSTNAME="127.0.0.1",
-               ROS_LOG_DIR=str(tmp_path_factory.mktemp("roslog")), PYTHONPATH="")
+               ROS_LOG_DIR=str(tmp_path_factory.mktemp("roslog")), PYTHONPATH="",
+               PYTHONFAULTHANDLER="1")  # a node that hangs writes its threads' stacks on SIGABRT (`stacks_of`)
     core = subprocess.Popen(["roscore", "-p", str(port)], env=env, stdout=subprocess.DEVNULL,
                             stderr=subprocess.DEVNULL, start_new_session=True)
     try:

@@ -13,6 +13,7 @@ import signal
 import subprocess
 import sys
 import threading
+import time
 from collections.abc import Callable
 
 import pytest
@@ -116,6 +117,33 @@ def test_a_command_cut_short_by_a_signal_does_not_keep_the_stop_from_being_writt
     worker = threading.Thread(target=interrupted_then_closed, daemon=True)
     worker.start()
     worker.join(timeout=30)  # deadlocked for ever if the lock were not re-entrant
+    assert done.is_set()
+    assert bytes(port.written).endswith(STOP)
+
+
+@pytest.mark.parametrize("kind", ["runtime", "driver"])
+def test_a_command_cut_short_by_a_signal_does_not_keep_the_connection_s_thread_from_stopping(kind, tmp_path) -> None:
+    """As above with the connection's thread polling: its next tick waits for the lock the
+    interrupted thread holds, and will until the process ends. Closing must not wait for that
+    thread (the lock and the closed test keep the stop last without it): the stop is written
+    and `close` returns."""
+    from engine.test_one_engine import ScriptedPort, implementation_of
+
+    text = FAST_CREATE.read_text(encoding="utf-8")
+    port = ScriptedPort()
+    robot = implementation_of(kind, text, tmp_path, "fast_create").connect(port)
+    done = threading.Event()
+
+    def interrupted_then_closed() -> None:
+        (link,) = robot._links.values()
+        link.port.lock.acquire()  # never released: as a KeyboardInterrupt before the `try` leaves it
+        time.sleep(0.2)  # the thread's next tick (20 Hz) waits for it
+        robot.close()
+        done.set()
+
+    worker = threading.Thread(target=interrupted_then_closed, daemon=True)
+    worker.start()
+    worker.join(timeout=30)  # for ever if closing joined the connection's thread
     assert done.is_set()
     assert bytes(port.written).endswith(STOP)
 

@@ -3035,6 +3035,10 @@ class _FairLock:
             raise
         return True
 
+    def _is_owned(self) -> bool:
+        """Held by this thread: the name of an RLock's own test (which `threading.Condition` uses)."""
+        return self._owner == threading.get_ident()
+
     def release(self) -> None:
         with self._guard:
             if self._owner != threading.get_ident():
@@ -3070,6 +3074,11 @@ class _Port:
         # Fair when a connection on it is `threading dual` or `multiple`: made so here, before any
         # write binds the lock.
         self.lock: _Lock = _FairLock() if fair else threading.RLock()
+
+    def held_here(self) -> bool:
+        """Whether this thread holds the port's lock."""
+        owned: Callable[[], bool] = getattr(self.lock, "_is_owned")  # noqa: B009 - not in RLock's stub
+        return owned()
 
     def lane(self) -> _Lane:
         return self.lock.acquire, self.lock.release, self.write
@@ -3405,9 +3414,15 @@ class _Worker:
         without_signals(self._thread.start)
 
     def stop(self) -> None:
-        """Stop the thread; it finishes the interface it is running first."""
+        """Stop the thread; it finishes the interface it is running first. Not waited for when
+        this thread holds the connection's port: a signal that landed between a command's taking
+        of the port and its `try` left it held, and the thread's next tick waits for it for ever
+        (the port's lock and the robot's closed test keep the terminate hooks' stop last)."""
         self._stop.set()
         thread = self._thread
+        port = self.robot._ports.get(self.connection.name)
+        if port is not None and port.held_here():
+            return
         if thread is not None and thread is not threading.current_thread():
             try:
                 thread.join()
