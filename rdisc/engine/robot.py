@@ -21,6 +21,7 @@ from rdisc.engine.ports import PortSpec, Simulator, _Link, _open_port, _Port, _w
 from rdisc.engine.running import Running
 from rdisc.engine.schedule import _connection_workers, _Worker
 from rdisc.engine.sensing import SensorCache, Sensors
+from rdisc.engine.signals import Flag
 from rdisc.engine.values import (
     Args,
     ErrorCallback,
@@ -168,7 +169,7 @@ class Robot(Running):
             for name, plan in device.inputs.items()}
         self._closed = False  # closing or closed: writes are refused (`_refuse`) but by the `_closer`
         self._closer: int | None = None
-        self._closing = threading.Event()  # set when closing begins: it ends the other threads' delays
+        self._closing = Flag()  # set when closing begins: it ends the other threads' delays
         self._sim: Simulator | None = None
         self._clock: Callable[[], float] = time.monotonic  # the schedule's time, and the delays'
         self._sleep: Callable[[float], None] = self._delay

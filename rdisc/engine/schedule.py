@@ -19,7 +19,7 @@ from typing import Protocol
 from rdisc.engine.errors import RdisConnectionError
 from rdisc.engine.plans import Connection, Hook, Interface
 from rdisc.engine.ports import _Port
-from rdisc.engine.signals import without_signals
+from rdisc.engine.signals import Flag, without_signals
 from rdisc.engine.values import Args
 
 
@@ -75,7 +75,7 @@ class _Worker:
         self.interval = connection.interval if keepalive and connection.keepalive is not None else 0.0
         self.whole = connection.threading == "single"  # a tick holds the port
         self._lock = threading.Lock()
-        self._stop = threading.Event()
+        self._stop = Flag()
         self._thread: threading.Thread | None = None
         self.restart_clock()
 

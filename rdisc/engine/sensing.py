@@ -15,6 +15,7 @@ import threading
 from collections.abc import Callable, Mapping
 
 from rdisc.engine.plans import Primitive, Sensor
+from rdisc.engine.signals import Flag
 from rdisc.engine.values import Value
 
 
@@ -24,7 +25,7 @@ class _Flight:
     __slots__ = ("done", "error")
 
     def __init__(self) -> None:
-        self.done = threading.Event()
+        self.done = Flag()
         self.error: BaseException | None = None
 
 

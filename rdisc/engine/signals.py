@@ -5,6 +5,7 @@ every verb needs from its first instant, apart from the rest of the command line
 
 from __future__ import annotations
 
+import _thread
 import signal
 import sys
 from collections.abc import Callable
@@ -154,6 +155,45 @@ def _restore_handlers(previous: _Handlers, status: int) -> bool:
     if previous.signals:
         sys.unraisablehook = previous.unraisable
     return interrupted
+
+
+class Flag:
+    """A `threading.Event` that a signal's exception can interrupt at any instant without breaking
+    it. Event's `wait` and `set` run Condition code written in Python: an exception raised by a
+    signal's handler there (after its lock is taken and before its `try`, or between a release
+    and the next) leaves the lock held, and the next `set` waits for ever, or releases it twice
+    ("release unlocked lock"); both were found by raising a SIGINT at each step of `rdisc run`'s
+    start-up delay. Here a wait is one C call of a lock held until the flag is set: interrupted,
+    it takes nothing; taken just before the exception, the flag stays set and later waits
+    return at once (a thread already waiting then waits out its timeout, no longer)."""
+
+    __slots__ = ("_gate", "_set")
+
+    def __init__(self) -> None:
+        self._gate = _thread.allocate_lock()
+        self._gate.acquire()  # held until `set`: a wait is a wait to take it
+        self._set = False
+
+    def is_set(self) -> bool:
+        return self._set
+
+    def set(self) -> None:
+        if self._set:
+            return
+        self._set = True
+        try:
+            self._gate.release()  # the first waiter takes it and hands it on
+        except RuntimeError:  # two threads set it at once: the other released it
+            pass
+
+    def wait(self, timeout: float | None = None) -> bool:
+        """Whether the flag is set, waiting up to `timeout` seconds (None: for ever) for it."""
+        if self._set:
+            return True
+        if self._gate.acquire(True, -1 if timeout is None else timeout):
+            self._gate.release()
+            return True
+        return self._set
 
 
 def without_signals(start: Callable[[], _Started]) -> _Started:

@@ -20,6 +20,7 @@ or as a program (`--help` for its options):
 # ---- the rdisc engine: the modules of rdisc/engine, each after its marker ------------------------
 from __future__ import annotations
 
+import _thread
 import argparse
 import copy
 import functools
@@ -3264,6 +3265,45 @@ def _restore_handlers(previous: _Handlers, status: int) -> bool:
     return interrupted
 
 
+class Flag:
+    """A `threading.Event` that a signal's exception can interrupt at any instant without breaking
+    it. Event's `wait` and `set` run Condition code written in Python: an exception raised by a
+    signal's handler there (after its lock is taken and before its `try`, or between a release
+    and the next) leaves the lock held, and the next `set` waits for ever, or releases it twice
+    ("release unlocked lock"); both were found by raising a SIGINT at each step of `rdisc run`'s
+    start-up delay. Here a wait is one C call of a lock held until the flag is set: interrupted,
+    it takes nothing; taken just before the exception, the flag stays set and later waits
+    return at once (a thread already waiting then waits out its timeout, no longer)."""
+
+    __slots__ = ("_gate", "_set")
+
+    def __init__(self) -> None:
+        self._gate = _thread.allocate_lock()
+        self._gate.acquire()  # held until `set`: a wait is a wait to take it
+        self._set = False
+
+    def is_set(self) -> bool:
+        return self._set
+
+    def set(self) -> None:
+        if self._set:
+            return
+        self._set = True
+        try:
+            self._gate.release()  # the first waiter takes it and hands it on
+        except RuntimeError:  # two threads set it at once: the other released it
+            pass
+
+    def wait(self, timeout: float | None = None) -> bool:
+        """Whether the flag is set, waiting up to `timeout` seconds (None: for ever) for it."""
+        if self._set:
+            return True
+        if self._gate.acquire(True, -1 if timeout is None else timeout):
+            self._gate.release()
+            return True
+        return self._set
+
+
 def without_signals(start: Callable[[], _Started]) -> _Started:
     """`start()` with SIGINT and SIGTERM blocked on this thread, so that every thread it starts
     (Python's, or a library's in C, as Cyclone DDS's) inherits the block and the kernel gives
@@ -3342,7 +3382,7 @@ class _Worker:
         self.interval = connection.interval if keepalive and connection.keepalive is not None else 0.0
         self.whole = connection.threading == "single"  # a tick holds the port
         self._lock = threading.Lock()
-        self._stop = threading.Event()
+        self._stop = Flag()
         self._thread: threading.Thread | None = None
         self.restart_clock()
 
@@ -4483,7 +4523,7 @@ class _Flight:
     __slots__ = ("done", "error")
 
     def __init__(self) -> None:
-        self.done = threading.Event()
+        self.done = Flag()
         self.error: BaseException | None = None
 
 
@@ -4888,7 +4928,7 @@ class Robot(Running):
             for name, plan in device.inputs.items()}
         self._closed = False  # closing or closed: writes are refused (`_refuse`) but by the `_closer`
         self._closer: int | None = None
-        self._closing = threading.Event()  # set when closing begins: it ends the other threads' delays
+        self._closing = Flag()  # set when closing begins: it ends the other threads' delays
         self._sim: Simulator | None = None
         self._clock: Callable[[], float] = time.monotonic  # the schedule's time, and the delays'
         self._sleep: Callable[[float], None] = self._delay
