@@ -8,6 +8,7 @@ lock"), when a SIGINT came during the start-up delay."""
 
 from __future__ import annotations
 
+import functools
 import sys
 import threading
 from collections.abc import Callable
@@ -38,6 +39,11 @@ def _interrupted_at(step: int, call: Callable[[], object]) -> bool:
     return False
 
 
+def _woken(flag: Flag, timeout: float, woke: threading.Event) -> None:
+    if flag.wait(timeout):
+        woke.set()
+
+
 def _set_elsewhere(flag: Flag) -> None:
     setter = threading.Thread(target=flag.set, daemon=True)
     setter.start()
@@ -49,7 +55,7 @@ def test_a_wait_cut_short_at_any_step_leaves_the_flag_working() -> None:
     steps = 0
     for step in range(1, 500):
         flag = Flag()
-        if not _interrupted_at(step, lambda: flag.wait(0.001)):
+        if not _interrupted_at(step, functools.partial(flag.wait, 0.001)):
             break
         steps += 1
         _set_elsewhere(flag)
@@ -64,7 +70,7 @@ def test_a_set_cut_short_at_any_step_leaves_the_flag_working() -> None:
         waiter_woke = threading.Event()
         # (a set cut short after the flag is set and before its lock is let go wakes a thread
         # already waiting only at that wait's timeout: short here)
-        waiter = threading.Thread(target=lambda: flag.wait(0.2) and waiter_woke.set(), daemon=True)
+        waiter = threading.Thread(target=_woken, args=(flag, 0.2, waiter_woke), daemon=True)
         waiter.start()
         if not _interrupted_at(step, flag.set):
             waiter.join(timeout=30)
