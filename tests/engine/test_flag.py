@@ -96,3 +96,12 @@ def test_a_set_wakes_every_waiter_and_later_waits_return_at_once() -> None:
         waiter.join(timeout=30)
     assert woke == [True] * 4
     assert flag.wait(0) is True and flag.wait() is True
+
+
+def test_a_wait_of_no_time_only_looks_and_one_of_infinite_time_waits_for_the_set() -> None:
+    flag = Flag()
+    assert flag.wait(0) is False and flag.wait(-1.0) is False  # as threading.Event's
+    setter = threading.Timer(0.05, flag.set)
+    setter.start()
+    assert flag.wait(float("inf")) is True  # (threading.Event's raises OverflowError)
+    setter.join()

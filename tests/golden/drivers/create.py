@@ -3295,10 +3295,14 @@ class Flag:
             pass
 
     def wait(self, timeout: float | None = None) -> bool:
-        """Whether the flag is set, waiting up to `timeout` seconds (None: for ever) for it."""
+        """Whether the flag is set, waiting up to `timeout` seconds for it: None or beyond what
+        a lock can wait (infinity), for ever; none at all, as Event's, for 0 or less."""
         if self._set:
             return True
-        if self._gate.acquire(True, -1 if timeout is None else timeout):
+        if timeout is not None and timeout <= 0:
+            return False
+        seconds = -1.0 if timeout is None or not timeout < _thread.TIMEOUT_MAX else timeout  # -1: for ever
+        if self._gate.acquire(True, seconds):
             self._gate.release()
             return True
         return self._set
