@@ -3,12 +3,16 @@ of runs, made deterministic. Figures to read, not a test (a whole sweep takes mi
 
     python benchmarks/signal_sweep.py                   # every 97th step of the start-up
     python benchmarks/signal_sweep.py --step 3 --first 20000 --last 22000
+    python benchmarks/signal_sweep.py --moment call     # from a --call of three commands
 
-Each run is `rdisc run tests/runtime/data/fast_create.rdis --watch` against an emulated Create on
-a pseudo-terminal, in a process of its own that traces its main thread: at the first bytecode
-step at or after N (counted from `Robot.open`'s call) where SIGINT is not blocked, the engine's
-signal handler is called there, as the interpreter calls it when a SIGINT lands at that step,
-and four real SIGINTs follow 2 ms apart. The run must end with 130, print no traceback and no
+Each run is `rdisc run tests/runtime/data/fast_create.rdis --watch` (or `--call dance`, an
+interface of three commands with delays) against an emulated Create on a pseudo-terminal, in a
+process of its own that traces its main thread: at the N-th place (counted from `Robot.open`'s
+call, or the call's) where the interpreter would run a signal's handler (after a call, at a
+function's start, at a loop's turn) and SIGINT is not blocked, the engine's handler is called,
+as the interpreter calls it when a SIGINT has landed just before,
+and four real SIGINTs follow 2 ms apart. The run must end with 130 (or as it would have, when
+the signal came after its shutdown began, which ignores it), print no traceback and no
 internal error, and leave the stop command as the last command the device got (if the port was
 opened). A run still going after 8 s writes its threads' stacks and is a hang. A step beyond the
 start-up's end sends no signal: the sweep ends there (or at --last). The exit code is 1 when a
@@ -26,6 +30,7 @@ import argparse
 import os
 import subprocess
 import sys
+import tempfile
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -37,7 +42,8 @@ import faulthandler, os, signal, sys, threading, time
 faulthandler.dump_traceback_later(8, exit=True)
 import rdisc.start  # holds the signals back, as the command's entry does
 from rdisc.engine import signals
-step, port, description = int(sys.argv[1]), sys.argv[2], sys.argv[3]
+from tests.support.interrupts import check_points
+step, port, description, start, extra = int(sys.argv[1]), sys.argv[2], sys.argv[3], sys.argv[4], sys.argv[5:]
 counting, count, sent = [False], [0], [False]
 
 def burst():
@@ -46,20 +52,22 @@ def burst():
         os.kill(os.getpid(), signal.SIGINT)
 
 def tracer(frame, event, arg):
-    if event == "call" and frame.f_code.co_name == "open" and frame.f_code.co_filename.endswith("robot.py"):
+    if event == "call" and frame.f_code.co_name == start and "rdisc" in frame.f_code.co_filename:
         counting[0] = True
     frame.f_trace_opcodes = True
-    if counting[0] and event in ("opcode", "line"):
+    if counting[0] and event == "opcode" and frame.f_lasti in check_points(frame.f_code):
         count[0] += 1
-        if (count[0] >= step and not sent[0]
+        if (count[0] >= step and not sent[0] and signal.getsignal(signal.SIGINT) is signals._on_signal
                 and signal.SIGINT not in signal.pthread_sigmask(signal.SIG_BLOCK, [])):
             sent[0] = True
-            print("sweep: signalled", file=sys.stderr, flush=True)
+            where = f"{frame.f_code.co_name} ({os.path.basename(frame.f_code.co_filename)}:{frame.f_lineno})"
+            late = " (late: the shutdown began)" if signals._shutting_down[0] else ""
+            print(f"sweep: signalled in {where}{late}", file=sys.stderr, flush=True)
             threading.Thread(target=burst, daemon=True).start()
             signals._on_signal(signal.SIGINT, None)
     return tracer
 
-sys.argv = ["rdisc", "run", description, "--watch", "--port", port]
+sys.argv = ["rdisc", "run", description, "--port", port, *extra]
 sys.settrace(tracer)
 status = rdisc.start.main()
 sys.settrace(None)
@@ -67,13 +75,31 @@ sys.exit(status)
 '''
 
 
-def run_once(step: int) -> tuple[str, str]:
+# What each sweep runs: the description's text, the function whose call starts the count, and
+# `rdisc run`'s options besides the description and port.
+DANCE = """
+interface dance() {
+    drive(100, 0) delay 20 ms
+    drive(200, 0) delay 20 ms
+    drive(300, 0)
+}
+"""
+MOMENTS = {
+    "start-up": ("", "open", ["--watch"]),  # the port opened, the start-up hook, the thread started
+    "call": (DANCE, "make_call", ["--call", "dance"]),  # a call of three commands with delays
+}
+
+
+def run_once(step: int, moment: str, folder: Path) -> tuple[str, str]:
     """One run with the signal at `step`: ("ok" | "no signal" | a failure's reason, stderr)."""
     from tests.devices import CreateEmulator
     from tests.devices.create import STOP
 
+    added, start, extra = MOMENTS[moment]
+    description = folder / f"{moment}.rdis"
+    description.write_text(DESCRIPTION.read_text(encoding="utf-8") + added, encoding="utf-8")
     with CreateEmulator() as device:
-        done = subprocess.run([sys.executable, "-c", CHILD, str(step), device.port, str(DESCRIPTION)],
+        done = subprocess.run([sys.executable, "-c", CHILD, str(step), device.port, str(description), start, *extra],
                               capture_output=True, text=True, timeout=60, check=False, cwd=ROOT,
                               env=dict(os.environ, NO_COLOR="1"))
         commands = [command for _, command in device.commands]
@@ -82,7 +108,7 @@ def run_once(step: int) -> tuple[str, str]:
         return "no signal", stderr
     if "Timeout (0:00:08)!" in stderr:
         return "hang", stderr
-    if done.returncode != 130:
+    if done.returncode != 130 and not (done.returncode == 0 and "(late: " in stderr):  # a late one is ignored
         return f"exit {done.returncode}", stderr
     if "Traceback" in stderr or "internal error" in stderr:
         return "printed a traceback", stderr
@@ -97,12 +123,15 @@ def main() -> int:
     parser.add_argument("--last", type=int, default=None,
                         help="the last step (default: until a step is past the start-up's end)")
     parser.add_argument("--step", type=int, default=97, help="steps between runs (default 97)")
+    parser.add_argument("--moment", choices=MOMENTS, default="start-up",
+                        help="start-up (default): from Robot.open; call: from a --call of three commands")
     args = parser.parse_args()
+    folder = Path(tempfile.mkdtemp())
     tally: dict[str, int] = {}
     failed = False
     step = args.first
     while args.last is None or step <= args.last:
-        outcome, stderr = run_once(step)
+        outcome, stderr = run_once(step, args.moment, folder)
         tally[outcome] = tally.get(outcome, 0) + 1
         step += args.step
         if outcome == "no signal" and args.last is None:

@@ -28,7 +28,7 @@ from rdisc.engine.signals import (
     EXIT_USAGE,
     _install_signal_handlers,
     _restore_handlers,
-    _shutting_down_with,
+    _shutting_down,
     _Terminated,
     raise_dropped,
 )
@@ -143,11 +143,13 @@ def run_command(args: argparse.Namespace, robot: Robot, prog: str, sim: Simulato
         print(f"{prog}: {err}", file=sys.stderr)
         status = EXIT_USAGE
     except KeyboardInterrupt:
-        status = _shutting_down_with(EXIT_SIGINT)  # marked here, where a later signal is still ignored
+        _shutting_down[0] = True  # marked here, where a later signal is still ignored as on its way
+        status = EXIT_SIGINT
     except _Terminated:
-        status = _shutting_down_with(EXIT_SIGTERM)
+        _shutting_down[0] = True
+        status = EXIT_SIGTERM
     finally:
-        status = _shutting_down_with(status)  # from here on a signal must not cut the terminate hooks short
+        _shutting_down[0] = True  # first, by no call (see `_shutting_down`): the terminate hooks run in peace
         try:
             robot.close()
             if recorder is not None:

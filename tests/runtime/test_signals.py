@@ -313,3 +313,55 @@ def test_rdisc_run_ends_on_a_signal_dropped_while_its_threads_start() -> None:
         assert [c for _, c in dev.commands][:2] == [bytes([128]), bytes([132])]  # start(), full()
     assert process.returncode == 130, stderr
     assert stderr == ""
+
+
+# `command_line` ended by a SIGINT at each place in turn where the interpreter can run its handler
+# (tests/support/interrupts.py): the status is 0 or 130, and nothing escapes it. Marking the
+# shutdown by a call from its `finally` let one raise at that call's start, out of the `finally`
+# (in `run_command`, before the robot was closed: found by benchmarks/signal_sweep.py).
+EVERYWHERE = '''
+import signal, sys
+from rdisc.engine import signals
+from tests.support.interrupts import check_points
+
+def once(step):
+    count = [0]
+
+    def tracer(frame, event, arg):
+        frame.f_trace_opcodes = True
+        if (event == "opcode" and frame.f_lasti in check_points(frame.f_code)
+                and signal.getsignal(signal.SIGINT) is signals._on_signal  # what a SIGINT would run
+                and signal.SIGINT not in signal.pthread_sigmask(signal.SIG_BLOCK, [])):
+            count[0] += 1
+            if count[0] == step:
+                signals._on_signal(signal.SIGINT, frame)
+        return tracer
+
+    signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT, signal.SIGTERM})  # as `rdisc`'s entry does
+    sys.settrace(tracer)
+    try:
+        status = signals.command_line(lambda: 0)
+    except BaseException as err:
+        status = f"{type(err).__name__} escaped"
+    finally:
+        sys.settrace(None)
+    return status, count[0] >= step
+
+outcomes, step = {}, 1
+while True:
+    status, signalled = once(step)
+    if not signalled:
+        break
+    outcomes.setdefault(status, []).append(step)
+    step += 1
+print(sorted((str(k), len(v)) for k, v in outcomes.items()), {k: v[:3] for k, v in outcomes.items() if k not in (0, 130)})
+'''
+
+
+def test_a_signal_at_any_place_of_command_line_ends_it_with_its_status() -> None:
+    done = subprocess.run([sys.executable, "-c", EVERYWHERE], check=False, cwd=REPO, env=cli_env(),
+                          capture_output=True, text=True, timeout=120)
+    assert done.returncode == 0, done.stderr
+    counts, failures = done.stdout.strip().split(" {", 1)
+    assert failures == "}", done.stdout
+    assert "('130', " in counts, done.stdout  # the places before the shutdown began were tried

@@ -3131,7 +3131,12 @@ class _Terminated(BaseException):
     """SIGTERM, turned into an exception so that the terminate hooks run on the way out."""
 
 
-_shutting_down = [False]  # the shutdown began: later signals are ignored
+# The shutdown began: later signals are ignored. Marked by a plain store as the first statement of
+# each `except` and `finally` that ends a run: the interpreter runs a signal's handler only at a
+# call, a function's start or a loop's turn, so none can come between the `finally` and the mark
+# (a call to mark it would let one raise at the callee's start, out of the `finally`, before the
+# robot is closed: found by benchmarks/signal_sweep.py).
+_shutting_down = [False]
 _raised: list[BaseException | None] = [None]  # the exception the last signal raised, until then
 
 
@@ -3229,28 +3234,15 @@ def command_line(run: Callable[[], int]) -> int:
         mask = _unblock_signals()  # a signal held back is handled here, as KeyboardInterrupt or _Terminated
         status = run()
     except KeyboardInterrupt:
-        status = _shutting_down_with(EXIT_SIGINT)  # marked here, where a later signal is still ignored
+        _shutting_down[0] = True  # marked here, where a later signal is still ignored as on its way
+        status = EXIT_SIGINT
     except _Terminated:
-        status = _shutting_down_with(EXIT_SIGTERM)
+        _shutting_down[0] = True
+        status = EXIT_SIGTERM
     finally:
-        status = _shutting_down_with(status)  # a signal from here on is too late to end it: it is ignored
+        _shutting_down[0] = True  # (see `_shutting_down`) a signal from here on is too late: it is ignored
         if not _restore_handlers(previous, status) and mask is not None:
             signal.pthread_sigmask(signal.SIG_SETMASK, mask)
-    return status
-
-
-def _shutting_down_with(status: int) -> int:
-    """Mark the shutdown begun, so that later signals are ignored, and the status to end with: a
-    signal that lands before the mark is taken decides it (hence the loop). The `except` that
-    catches a signal's exception marks it there, while a later signal is still ignored as
-    on its way; the `finally` after marks it for every other ending."""
-    while not _shutting_down[0]:
-        try:
-            _shutting_down[0] = True
-        except KeyboardInterrupt:
-            status = EXIT_SIGINT
-        except _Terminated:
-            status = EXIT_SIGTERM
     return status
 
 
@@ -5749,11 +5741,13 @@ def run_command(args: argparse.Namespace, robot: Robot, prog: str, sim: Simulato
         print(f"{prog}: {err}", file=sys.stderr)
         status = EXIT_USAGE
     except KeyboardInterrupt:
-        status = _shutting_down_with(EXIT_SIGINT)  # marked here, where a later signal is still ignored
+        _shutting_down[0] = True  # marked here, where a later signal is still ignored as on its way
+        status = EXIT_SIGINT
     except _Terminated:
-        status = _shutting_down_with(EXIT_SIGTERM)
+        _shutting_down[0] = True
+        status = EXIT_SIGTERM
     finally:
-        status = _shutting_down_with(status)  # from here on a signal must not cut the terminate hooks short
+        _shutting_down[0] = True  # first, by no call (see `_shutting_down`): the terminate hooks run in peace
         try:
             robot.close()
             if recorder is not None:
