@@ -1,8 +1,8 @@
 """A signal at every step of `rdisc run`'s start-up: what CI's busy machines hit once in hundreds
 of runs, made deterministic. Figures to read, not a test (a whole sweep takes minutes).
 
-    python benchmarks/signal_sweep.py                   # every 97th step of the start-up
-    python benchmarks/signal_sweep.py --step 3 --first 20000 --last 22000
+    python benchmarks/signal_sweep.py                   # every 97th place of the start-up
+    python benchmarks/signal_sweep.py --step 1 --first 1000 --last 1400
     python benchmarks/signal_sweep.py --moment call     # from a --call of three commands
 
 Each run is `rdisc run tests/runtime/data/fast_create.rdis --watch` (or `--call dance`, an
@@ -21,7 +21,8 @@ run failed.
 Found this way, and fixed (tests/runtime/test_signals.py, tests/engine/test_flag.py): a signal
 handled in importlib's weakref callback, whose exception Python dropped; threading.Event's
 Condition code left locked or released twice by the exception (closing then hung); a port's lock
-left held, on which closing joined the connection's thread for ever.
+left held, on which closing joined the connection's thread for ever; the shutdown marked by a
+call from a `finally`, at whose start a signal escaped before the robot was closed.
 """
 
 from __future__ import annotations
