@@ -120,8 +120,10 @@ __all__ = ["CALLS", "REPLIES", "Call", "Failed", "Reply", "capture", "frame", "p
 
 ADDRESS = 0x80
 _MARK = b"<end of capture>"
-#: serial read timeout given to both drivers: short, so failing reads give up quickly
-TIMEOUT = 0.2
+#: serial read timeout given to both drivers: short, so failing reads give up quickly, yet long
+#: enough for the emulator's thread to answer on a busy machine (at 0.2 s a fresh machine's run
+#: once read nothing of a whole reply in time: pyroboclaw's struct.error, not its CRCException)
+TIMEOUT = 0.5
 
 
 class Failed(Exception):
