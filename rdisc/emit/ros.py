@@ -88,7 +88,9 @@ class _Ros1(Bridge):
             with w.block("except ImportError as err:"):
                 w.line('raise _ros_refuse([f"ROS 1 does not load here: {err}"]) from None')
             w.blank()
-            w.line("rospy.init_node(ROBOT)")
+            w.line("# rospy's threads (the master's, the topics', the timers') block SIGINT and SIGTERM, as the")
+            w.line("# engine's do: a signal given to one of them would wait for rospy.spin's next turn, 0.5 s later")
+            w.line("without_signals(lambda: rospy.init_node(ROBOT))")
             reading = [  # each setting given as the private parameter of its name, `_BAUD:=1000000`
                 'given = (p.name for p in _DEVICE.settings if rospy.has_param(f"~{p.name}"))',
                 'settings = {name: rospy.get_param(f"~{name}") for name in given}',
@@ -193,16 +195,16 @@ class _Ros1(Bridge):
                         "        on_error(err)",
                     ])
                 w.blank()
-                w.line("rospy.Timer(rospy.Duration(1.0 / joint_states_rate), publish_joint_states)")
+                w.line("without_signals(lambda: rospy.Timer(rospy.Duration(1.0 / joint_states_rate), publish_joint_states))")
                 w.blank()
             self.subscriber(w)
             w.blank()
             if self.commanded:
-                w.line('rospy.Subscriber("joint_command", sensor_msgs_msg.JointState,')
-                w.line("                 lambda msg: _ros_joint_command(robot, msg, on_error), queue_size=10)")
+                w.line('without_signals(lambda: rospy.Subscriber("joint_command", sensor_msgs_msg.JointState,')
+                w.line("                 lambda msg: _ros_joint_command(robot, msg, on_error), queue_size=10))")
             for i, adapter in self.inputs:
-                w.line(f"rospy.Subscriber({quoted(i.name)}, {self.message(adapter)},")
-                w.line(f"                 subscriber({quoted(i.name)}, _ros_read_{bridge.name(i.name)}), queue_size=10)")
+                w.line(f"without_signals(lambda: rospy.Subscriber({quoted(i.name)}, {self.message(adapter)},")
+                w.line(f"                 subscriber({quoted(i.name)}, _ros_read_{bridge.name(i.name)}), queue_size=10))")
             w.lines([
                 "rospy.spin()",
                 "# Later signals are ignored to the exit; SIG_IGN set here, outside a handler, takes a",

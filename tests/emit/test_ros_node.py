@@ -155,7 +155,7 @@ def test_a_body_gives_the_node_its_urdf_and_joint_states() -> None:
     assert compilation.model is not None
     node = _node("arm")[0]
     assert _description_constant(node) == to_urdf(compilation.model, "arm.rdis")
-    assert ('    rospy.init_node(ROBOT)\n'
+    assert ('    without_signals(lambda: rospy.init_node(ROBOT))\n'
             '    if rospy.get_param("~publish_description", True):\n'
             '        rospy.set_param("robot_description", _ROS_DESCRIPTION)\n'
             '    joint_states_rate = rospy.get_param("~joint_states_rate", 20.0)\n') in node  # the bus's 20 Hz
@@ -165,7 +165,7 @@ def test_a_body_gives_the_node_its_urdf_and_joint_states() -> None:
     assert ("    return (\n        [\n" + "".join(f"            {conversion.format(i)}\n" for i in range(6))
             + "        ],\n        [],  # no velocity\n        [],  # no effort\n    )\n") in node
     assert '    joint_states = rospy.Publisher("joint_states", sensor_msgs_msg.JointState, queue_size=10)\n' in node
-    assert "    rospy.Timer(rospy.Duration(1.0 / joint_states_rate), publish_joint_states)\n" in node
+    assert "    without_signals(lambda: rospy.Timer(rospy.Duration(1.0 / joint_states_rate), publish_joint_states))\n" in node
 
 
 MIXED = """\
