@@ -221,14 +221,9 @@ class _Walk:
             op, av = item
             if op in (c.AT, c.ASSERT, c.ASSERT_NOT):
                 continue
-            if op in (c.MAX_REPEAT, c.MIN_REPEAT) or op is getattr(c, "POSSESSIVE_REPEAT", None):
-                out |= self.first(list(av[2]))
-            elif op is c.SUBPATTERN:
-                out |= self.first(list(av[-1]))
-            elif op is c.ATOMIC_GROUP:
-                out |= self.first(list(av))
-            elif op is c.BRANCH:
-                out = out.union(*(self.first(list(alternative)) for alternative in av[1]))
+            nested = _nested(op, av)
+            if nested is not None:
+                out = out.union(*(self.first(part) for part in nested))
             else:
                 out |= self.chars([item])
             if self.width([item])[0] > 0:
@@ -251,20 +246,28 @@ class _Walk:
                 out |= ALL
             elif op is c.IN:
                 out |= _in(av)
-            elif op in (c.MAX_REPEAT, c.MIN_REPEAT) or op is getattr(c, "POSSESSIVE_REPEAT", None):
-                out |= self.chars(list(av[2]))
-            elif op is c.SUBPATTERN:
-                out |= self.chars(list(av[-1]))
-            elif op is c.ATOMIC_GROUP:
-                out |= self.chars(list(av))
-            elif op is c.BRANCH:
-                for alternative in av[1]:
-                    out |= self.chars(list(alternative))
+            elif (nested := _nested(op, av)) is not None:
+                for part in nested:
+                    out |= self.chars(part)
             elif op is c.GROUPREF_EXISTS:
                 out |= self.chars(list(av[1])) | (self.chars(list(av[2])) if av[2] is not None else set())
             elif op not in (c.AT, c.ASSERT, c.ASSERT_NOT):
                 out |= ALL  # a back reference, or anything not known here: anything
         return frozenset(out)
+
+
+def _nested(op: Any, av: Any) -> list[list[Any]] | None:
+    """The parts a repeat, a group or a branch holds (each alternative a part of its own), which
+    a walk of what a pattern can match goes into; None for any other node."""
+    if op in (c.MAX_REPEAT, c.MIN_REPEAT) or op is getattr(c, "POSSESSIVE_REPEAT", None):
+        return [list(av[2])]
+    if op is c.SUBPATTERN:
+        return [list(av[-1])]
+    if op is c.ATOMIC_GROUP:
+        return [list(av)]
+    if op is c.BRANCH:
+        return [list(alternative) for alternative in av[1]]
+    return None
 
 
 # The parts that match one character, whatever it is (sre's own `getwidth` counts each as 1 to 1).
