@@ -4,10 +4,12 @@ of runs, made deterministic. Figures to read, not a test (a whole sweep takes mi
     python benchmarks/signal_sweep.py                   # every 97th place of the start-up
     python benchmarks/signal_sweep.py --step 1 --first 1000 --last 1400
     python benchmarks/signal_sweep.py --moment call     # from a --call of three commands
+    python benchmarks/signal_sweep.py --driver          # the generated driver's main(), not rdisc run
 
 Each run is `rdisc run tests/runtime/data/fast_create.rdis --watch` (or `--call dance`, an
 interface of three commands with delays) against an emulated Create on a pseudo-terminal, in a
-process of its own that traces its main thread: at the N-th place (counted from `Robot.open`'s
+process of its own that traces its main thread (with --driver: the driver `rdisc emit-python`
+writes of the description, run as `python driver.py`, whose engine is the same text, carried): at the N-th place (counted from `Robot.open`'s
 call, or the call's) where the interpreter would run a signal's handler (after a call, at a
 function's start, at a loop's turn) and SIGINT is not blocked, the engine's handler is called,
 as the interpreter calls it when a SIGINT has landed just before,
@@ -42,9 +44,20 @@ CHILD = '''
 import faulthandler, os, signal, sys, threading, time
 faulthandler.dump_traceback_later(8, exit=True)
 import rdisc.start  # holds the signals back, as the command's entry does
-from rdisc.engine import signals
 from tests.support.interrupts import check_points
-step, port, description, start, extra = int(sys.argv[1]), sys.argv[2], sys.argv[3], sys.argv[4], sys.argv[5:]
+step, port, description, start, driver, extra = (int(sys.argv[1]), sys.argv[2], sys.argv[3], sys.argv[4],
+                                                 sys.argv[5], sys.argv[6:])
+if driver:  # the generated driver: its own copy of the engine's signals, and its main()
+    import importlib.util
+    spec = importlib.util.spec_from_file_location("driver", driver)
+    signals = sys.modules["driver"] = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(signals)
+    sys.argv = [driver, "--port", port, *extra]
+    entry, inside = signals.main, driver
+else:
+    from rdisc.engine import signals
+    sys.argv = ["rdisc", "run", description, "--port", port, *extra]
+    entry, inside = rdisc.start.main, "rdisc"
 counting, count, sent = [False], [0], [False]
 
 def burst():
@@ -53,7 +66,7 @@ def burst():
         os.kill(os.getpid(), signal.SIGINT)
 
 def tracer(frame, event, arg):
-    if event == "call" and frame.f_code.co_name == start and "rdisc" in frame.f_code.co_filename:
+    if event == "call" and frame.f_code.co_name == start and inside in frame.f_code.co_filename:
         counting[0] = True
     frame.f_trace_opcodes = True
     if counting[0] and event == "opcode" and frame.f_lasti in check_points(frame.f_code):
@@ -68,9 +81,8 @@ def tracer(frame, event, arg):
             signals._on_signal(signal.SIGINT, None)
     return tracer
 
-sys.argv = ["rdisc", "run", description, "--port", port, *extra]
 sys.settrace(tracer)
-status = rdisc.start.main()
+status = entry()
 sys.settrace(None)
 sys.exit(status)
 '''
@@ -91,16 +103,22 @@ MOMENTS = {
 }
 
 
-def run_once(step: int, moment: str, folder: Path) -> tuple[str, str]:
-    """One run with the signal at `step`: ("ok" | "no signal" | a failure's reason, stderr)."""
+def run_once(step: int, moment: str, folder: Path, driver: bool) -> tuple[str, str]:
+    """One run with the signal at `step`: ("ok" | "no signal" | a failure's reason, stderr).
+    `driver`: the description's generated driver runs, not `rdisc run`."""
     from tests.devices import CreateEmulator
     from tests.devices.create import STOP
 
     added, start, extra = MOMENTS[moment]
     description = folder / f"{moment}.rdis"
-    description.write_text(DESCRIPTION.read_text(encoding="utf-8") + added, encoding="utf-8")
+    source = folder / f"{moment}_driver.py"
+    if not source.exists():  # the sweep's first run: the description and its driver, for every run
+        description.write_text(DESCRIPTION.read_text(encoding="utf-8") + added, encoding="utf-8")
+        subprocess.run([sys.executable, "-m", "rdisc", "emit-python", str(description), "-o", str(source)],
+                       check=True, cwd=ROOT)
     with CreateEmulator() as device:
-        done = subprocess.run([sys.executable, "-c", CHILD, str(step), device.port, str(description), start, *extra],
+        done = subprocess.run([sys.executable, "-c", CHILD, str(step), device.port, str(description), start,
+                               str(source) if driver else "", *extra],
                               capture_output=True, text=True, timeout=60, check=False, cwd=ROOT,
                               env=dict(os.environ, NO_COLOR="1"))
         commands = [command for _, command in device.commands]
@@ -126,13 +144,15 @@ def main() -> int:
     parser.add_argument("--step", type=int, default=97, help="steps between runs (default 97)")
     parser.add_argument("--moment", choices=MOMENTS, default="start-up",
                         help="start-up (default): from Robot.open; call: from a --call of three commands")
+    parser.add_argument("--driver", action="store_true",
+                        help="run the generated driver's main() (python driver.py), not rdisc run")
     args = parser.parse_args()
     folder = Path(tempfile.mkdtemp())
     tally: dict[str, int] = {}
     failed = False
     step = args.first
     while args.last is None or step <= args.last:
-        outcome, stderr = run_once(step, args.moment, folder)
+        outcome, stderr = run_once(step, args.moment, folder, args.driver)
         tally[outcome] = tally.get(outcome, 0) + 1
         step += args.step
         if outcome == "no signal" and args.last is None:

@@ -38,7 +38,7 @@ from rdisc.runtime import errors, load
 
 ROOT = Path(__file__).resolve().parents[2]
 DESCRIPTION = ROOT / "examples" / "ax12.rdis"
-TIMEOUT = 0.1  # reply timeout: short, the emulated servo answers at once
+TIMEOUT = 0.5  # reply timeout: the emulated servo answers at once, but a busy machine may hold its thread back
 
 # ---- CALLS: driver method and arguments -> ("primitive" | "interface", name, arguments) -------
 

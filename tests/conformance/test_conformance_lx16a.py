@@ -35,7 +35,7 @@ from rdisc.runtime import errors, load
 
 ROOT = Path(__file__).resolve().parents[2]
 DESCRIPTION = ROOT / "examples" / "lx16a.rdis"
-TIMEOUT = 0.1  # reply timeout: short, the emulated servo answers at once
+TIMEOUT = 0.5  # reply timeout: the emulated servo answers at once, but a busy machine may hold its thread back
 
 Call = tuple[str, str, tuple[Any, ...]]  # ("primitive" | "interface", name, arguments)
 

@@ -34,7 +34,7 @@ from rdisc.emit.python import import_driver
 from rdisc.runtime import errors, load
 
 DESCRIPTION = Path(__file__).resolve().parents[2] / "examples" / "nmea.rdis"
-TIMEOUT = 0.3  # rdisc's reply timeout here (seconds)
+TIMEOUT = 0.5  # rdisc's reply timeout here (seconds): room for a busy machine
 SEND_AFTER = 0.05  # the device sends a reply this long after the read began (as a receiver talks on its own)
 
 # Written after every call: its arrival ends the call's bytes.

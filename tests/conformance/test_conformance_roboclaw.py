@@ -46,7 +46,7 @@ from rdisc.runtime import errors, load
 
 REPO = Path(__file__).resolve().parents[2]
 DESCRIPTION = REPO / "examples" / "roboclaw.rdis"
-TIMEOUT = 0.2
+TIMEOUT = 0.3  # rdisc's reply timeout (seconds): room for a busy machine (a silent case waits it on each of 4 tries)
 _MARK = b"<end of capture>"
 
 #: CALLS the description does not cover, with the reason (none: every entry is covered)

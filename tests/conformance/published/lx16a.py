@@ -77,7 +77,7 @@ from pylx16a.lx16a import LX16A
 __all__ = ["CALLS", "REPLIES", "Call", "Rejected", "Reply", "published_decode", "published_request"]
 
 BROADCAST = 0xFE
-TIMEOUT = 0.25  # port timeout: a short or missing reply raises ServoTimeoutError after it
+TIMEOUT = 0.5  # port timeout: a short or missing reply raises ServoTimeoutError after it (room for a busy machine)
 # Written by the harness after the driver's bytes: once it arrives, everything before it has.
 SENTINEL = b"\x00\xa5\x5a\x00\xa5\x5a"
 

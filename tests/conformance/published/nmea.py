@@ -84,7 +84,7 @@ from devices import pty_device
 
 __all__ = ["CALLS", "REPLIES", "TIMEOUT", "Call", "Rejected", "Reply", "published_decode", "published_request"]
 
-TIMEOUT = 0.2  # the port timeout of the "stream" reads (seconds)
+TIMEOUT = 0.5  # the port timeout of the "stream" reads (seconds): room for a busy machine
 
 
 class Rejected(Exception):
