@@ -46,21 +46,17 @@ def _list(code: plans.Code) -> Any:
 
 
 def _dict(code: plans.Code) -> Any:
-    """A DICT code as a closure: its items' values by key, each coerced to its type if it has one
-    (all have or none has)."""
+    """A DICT code as a closure: its items' values by key, each bound to its type if it has one
+    (as `bound` binds a list's: made a float only where it may be an int when it runs)."""
     where = slots(code)
-    typed = [(key, prepare(e, where), type_) for key, e, type_ in code.items if type_ is not None]
-    if not typed:
-        plain = [(key, prepare(e, where)) for key, e, _ in code.items]
-        match code.takes:
-            case ("state", "args"):
-                return lambda s, loc: {key: f(s, loc, ()) for key, f in plain}
-    assert len(typed) == len(code.items), "all typed or none"
+    items = [(key, _prepared(bound(e, type_, where))) for key, e, type_ in code.items]
     match code.takes:
         case ("state", "args", "reply"):
-            return lambda s, loc, r: {key: coerce(f(s, loc, r), t) for key, f, t in typed}
+            return lambda s, loc, r: {key: f(s, loc, r) for key, f in items}
+        case ("state", "args"):
+            return lambda s, loc: {key: f(s, loc, ()) for key, f in items}
         case ("state",):
-            return lambda s: {key: coerce(f(s, _EMPTY, ()), t) for key, f, t in typed}
+            return lambda s: {key: f(s, _EMPTY, ()) for key, f in items}
     raise AssertionError(code.takes)
 
 
@@ -95,6 +91,11 @@ def bound(e: m.Expr, type_: m.AnyType | None, slots: dict[str, int]) -> Prepared
     return f
 
 
+def _prepared(f: Prepared | m.Const) -> Prepared:
+    """What `bound` gives, as a closure: a constant's too."""
+    return prepare(f) if isinstance(f, m.Const) else f
+
+
 def _widened(f: Prepared) -> Prepared:
     def widened(s: Mapping[str, m.Value], loc: Any, r: Any) -> m.Value:
         value = f(s, loc, r)
@@ -124,7 +125,7 @@ def listed(fs: Sequence[Prepared | m.Const]) -> Callable[[Mapping[str, m.Value],
     For speed, up to three are unrolled (a list comprehension costs more than
     the calls themselves), and a leading constant (an opcode) is put in as it is.
     """
-    prepared: list[Prepared] = [prepare(f) if isinstance(f, m.Const) else f for f in fs]
+    prepared = [_prepared(f) for f in fs]
     if fs and isinstance(fs[0], m.Const):
         c = fs[0].value
         match prepared:

@@ -304,6 +304,9 @@ def _applied(function: Callable[[Any], Any], arg: m.Expr, slots: Mapping[str, in
         ):
             binary, key = _operation(arg), _key(name, slots)
             return lambda s, loc, r: function(binary(loc[key], c))
+        case m.BinaryOp(left=m.ReplyValue(index=index), right=m.Const(value=c)) if arg.op not in ("and", "or"):
+            binary = _operation(arg)  # a reply's value with a constant: `bool(out[0] & 4)`, a bit of it
+            return lambda s, loc, r: function(binary(r[index], c))
     a = prepare(arg, slots)
     return lambda s, loc, r: function(a(s, loc, r))
 
@@ -346,6 +349,8 @@ def _binary(binary: Callable[[Any, Any], Any], left: m.Expr, right: m.Expr,
         ):  # two parameters or fields (`linear / angular`)
             j, k = _key(one, slots), _key(other, slots)
             return lambda s, loc, r: binary(loc[j], loc[k])
+        case m.ReplyValue(index=index), m.Const(value=constant):  # a reply's value: `out[3] * 0.1`
+            return lambda s, loc, r: binary(r[index], constant)
         case _, m.Const(value=constant):
             a = prepare(left, slots)
             return lambda s, loc, r: binary(a(s, loc, r), constant)
