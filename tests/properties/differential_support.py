@@ -24,13 +24,14 @@ from __future__ import annotations
 
 import difflib
 import hashlib
+import math
 import os
 import pprint
 import re
 import sys
 import time
 from collections import deque
-from collections.abc import Callable, Iterable, Iterator
+from collections.abc import Callable, Iterable, Iterator, Mapping
 from contextlib import contextmanager
 from dataclasses import dataclass, field
 from types import ModuleType
@@ -48,6 +49,7 @@ from descriptions import (
     Unknown,
     reply_for,
 )
+from renaming import Renamed
 
 from rdisc.emit.python import import_driver
 from rdisc.runtime import load
@@ -263,12 +265,15 @@ def _plainly(param: Any, value: Any) -> bool:
 
 
 def _refusing(description: Description, op: Operation) -> str:
-    """The element that must refuse this call for a value outside a range ("" if none must)."""
+    """The element that must refuse this call for a value outside a range ("" if none must), as
+    its error names it first."""
     if op.kind not in ("primitive", "interface"):
         return ""
     element = description.primitive(op.name) if op.kind == "primitive" else description.interface(op.name)
     if len(op.args) != len(element.params) or not all(_plainly(p, v) for p, v in zip(element.params, op.args)):
         return ""
+    if any(isinstance(v, float) and not math.isfinite(v) for v in op.args):  # refused as it is taken, before
+        return f"{op.kind} {element.name}"  # any range is tested: "primitive p0: parameter a0 is nan: ..."
     for p, v in zip(element.params, op.args):
         if p.low is not None and p.high is not None:
             size = len(v) if p.type == "bytes" else v
@@ -427,9 +432,12 @@ def _run(result: Run, connect: Connect, description: Description, script: Script
 class Pair:
     """The runtime and the generated driver of one description text (the driver imported once)."""
 
-    def __init__(self, description: Description, folder: str) -> None:
+    def __init__(self, description: Description, folder: str, renaming: Mapping[str, str] | None = None) -> None:
+        """`renaming`: the description's names as the text renames them (`renaming.renamed`); the
+        robots take calls by the names as drawn."""
         digest = hashlib.sha1(description.text.encode()).hexdigest()[:16]
         self.description = description
+        self.renaming = renaming
         self.module_name = f"generated_{digest}"
         path = os.path.join(folder, f"{self.module_name}.rdis")
         with open(path, "w", encoding="utf-8") as out:
@@ -449,10 +457,13 @@ class Pair:
         sys.modules.pop(self.module_name, None)
 
     def runtime_connect(self, port: Any, **kwargs: Any) -> Any:
-        return self.runtime.connect(port, **kwargs)
+        return self._named(self.runtime.connect(port, **kwargs))
 
     def driver_connect(self, port: Any, **kwargs: Any) -> Any:
-        return self.driver.connect(port, **kwargs)
+        return self._named(self.driver.connect(port, **kwargs))
+
+    def _named(self, robot: Any) -> Any:
+        return robot if self.renaming is None else Renamed(robot, self.renaming)
 
 
 @dataclass(frozen=True)

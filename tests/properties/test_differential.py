@@ -15,6 +15,9 @@ every byte read shown to on_io, a valid reply decoded, only the contract's error
 types raised. An open bug both share can be listed in `differential_support.KNOWN`
 (with an xfail test of its own) for the random tests to pass over it until it is fixed.
 
+A second test renames each description's names to the engine's (tests/properties/renaming.py):
+a driver must take none of them from its engine.
+
 Only the public API is used, so the tests hold across rewrites of the internals.
 The example count is modest; `python benchmarks/differential.py --descriptions
 2000` searches much longer and lists every problem it finds.
@@ -55,10 +58,11 @@ from descriptions import (
     looked_up,
     scripts,
 )
-from differential_support import Clock, Pairs, compare, normal
+from differential_support import Clock, Pair, Pairs, compare, normal
 from hypothesis import HealthCheck, Phase, find, given, settings
 from hypothesis import strategies as st
 from hypothesis.errors import NoSuchExample
+from renaming import engine_names, renamed, renamings
 
 from rdisc.compile import compile_path
 from rdisc.emit.python import import_driver
@@ -84,6 +88,36 @@ def test_runtime_and_generated_driver_agree_on_random_descriptions(pairs: Pairs,
         script = data.draw(scripts(description), label=f"session {session}")
         outcome = compare(pair, script)
         assert outcome.ok, outcome.report()
+
+
+@settings(max_examples=fuzz_examples(15), deadline=None, derandomize=True, database=None,
+          suppress_health_check=[HealthCheck.function_scoped_fixture, HealthCheck.too_slow,
+                                 HealthCheck.data_too_large])
+@given(data=st.data())
+def test_they_agree_where_the_names_are_the_engines(tmp_path: Path, data: st.DataObject) -> None:
+    """The same, with the description's names the engine's (`lookup`, `Robot`, `lane`, `open`):
+    a driver takes none of them from its engine, so it still does what the runtime does."""
+    drawn: Description = data.draw(descriptions(), label="description")
+    renaming = data.draw(renamings(drawn.text), label="renaming")
+    description = dataclasses.replace(drawn, text=renamed(drawn.text, renaming))
+    pair = Pair(description, str(tmp_path), renaming)
+    try:
+        for session in range(SESSIONS):
+            script = data.draw(scripts(drawn), label=f"session {session}")
+            outcome = compare(pair, script)
+            assert outcome.ok, outcome.report()
+    finally:
+        pair.forget()
+
+
+def test_the_engines_names_are_tried_as_every_kind_of_name() -> None:
+    """The pool holds the names that matter: the engine's classes, functions and modules, a typed
+    method's own, the robot's methods; and each can name anything (the checker took it)."""
+    assert {"Incoming", "Robot", "Frame", "Port", "lookup", "struct", "lane", "acquire", "request",
+            "open", "tick", "run_for", "call_primitive"} <= set(engine_names())
+    renaming = {"p0": "open", "a0": "struct", "s1": "lane"}
+    assert renamed('primitive p0(a0: int) on c0 format "p0 {}" (a0) { s1 = a0 } # s1', renaming) == \
+        'primitive open(struct: int) on c0 format "p0 {}" (struct) { lane = struct } # lane'
 
 
 @settings(max_examples=fuzz_examples(30), deadline=None, derandomize=True, database=None,
