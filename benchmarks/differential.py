@@ -4,6 +4,7 @@ descriptions, listing every problem found, each shrunk to a minimal example.
     python benchmarks/differential.py --descriptions 2000            # about 0.1 s a description
     python benchmarks/differential.py --descriptions 2000 --jobs 2   # one search per CPU
     python benchmarks/differential.py --descriptions 300 --no-shrink # first examples, unshrunk
+    python benchmarks/differential.py --descriptions 300 --renamed   # names the engine's (lookup, lane, open...)
 
 It uses the test suite's strategies and harness (tests/properties/descriptions.py and
 differential_support.py; tests/properties/test_differential.py runs a few dozen).
@@ -22,6 +23,7 @@ if anything was found. Leave rdisc alone while it runs (see `fingerprint`).
 from __future__ import annotations
 
 import argparse
+import dataclasses
 import hashlib
 import importlib.util
 import os
@@ -43,6 +45,7 @@ from descriptions import Description, Script, constructs, descriptions, scripts
 from differential_support import Outcome, Pairs, compare
 from hypothesis import HealthCheck, Phase, given, seed, settings
 from hypothesis import strategies as st
+from renaming import renamed, renamings
 
 
 @dataclass
@@ -87,8 +90,9 @@ def count(tally: Tally, script: Script, outcome: Outcome) -> None:
             tally.valid[results[op.label()]] += 1
 
 
-def search(budget: int, first_seed: int, sessions: int, shrink: bool) -> Tally:
-    """Up to `budget` generated descriptions; every new kind of problem, shrunk (known bugs: as first seen)."""
+def search(budget: int, first_seed: int, sessions: int, shrink: bool, renaming: bool = False) -> Tally:
+    """Up to `budget` generated descriptions; every new kind of problem, shrunk (known bugs: as first seen).
+    `renaming`: each description's names renamed to the engine's (tests/properties/renaming.py)."""
     tally = Tally()
     folder = tempfile.mkdtemp(prefix="rdisc-differential-")
     pairs = Pairs(folder)
@@ -110,7 +114,11 @@ def search(budget: int, first_seed: int, sessions: int, shrink: bool) -> Tally:
             else:
                 tally.descriptions += 1
                 tally.constructs.update(constructs(description))
-            pair = pairs(description)
+            if renaming:
+                names = data.draw(renamings(description.text))
+                pair = pairs(dataclasses.replace(description, text=renamed(description.text, names)), names)
+            else:
+                pair = pairs(description)
             for _ in range(sessions):
                 script = data.draw(scripts(description))
                 outcome = compare(pair, script)
@@ -173,16 +181,18 @@ def main() -> int:
     parser.add_argument("--seed", type=int, default=0, help="first seed (default 0; each job and round adds)")
     parser.add_argument("--jobs", type=int, default=1, help="parallel searches, one process each (default 1)")
     parser.add_argument("--no-shrink", action="store_true", help="report problems as found, unshrunk")
+    parser.add_argument("--renamed", action="store_true",
+                        help="rename each description's names to the engine's (lookup, lane, open, incoming...)")
     args = parser.parse_args()
     jobs = max(1, args.jobs)
     shares = [args.descriptions // jobs + (1 if i < args.descriptions % jobs else 0) for i in range(jobs)]
     started = time.perf_counter()
     sources = fingerprint()
     if jobs == 1:
-        tallies = [search(shares[0], args.seed, args.sessions, not args.no_shrink)]
+        tallies = [search(shares[0], args.seed, args.sessions, not args.no_shrink, args.renamed)]
     else:
         with ProcessPoolExecutor(jobs) as pool:
-            futures = [pool.submit(search, share, args.seed + 1000 * i, args.sessions, not args.no_shrink)
+            futures = [pool.submit(search, share, args.seed + 1000 * i, args.sessions, not args.no_shrink, args.renamed)
                        for i, share in enumerate(shares)]
             tallies = [f.result() for f in futures]
     total = merge(tallies)

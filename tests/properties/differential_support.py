@@ -575,8 +575,9 @@ class Pairs:
         self.size = size
         self.pairs: dict[str, Pair] = {}
 
-    def __call__(self, description: Description) -> Pair:
-        pair = self.pairs.pop(description.text, None) or Pair(description, self.folder)
+    def __call__(self, description: Description, renaming: Mapping[str, str] | None = None) -> Pair:
+        """`renaming`: as `Pair`'s (the description's text renamed by it)."""
+        pair = self.pairs.pop(description.text, None) or Pair(description, self.folder, renaming)
         self.pairs[description.text] = pair  # now the most recent
         while len(self.pairs) > self.size:
             oldest = next(iter(self.pairs))
