@@ -123,14 +123,8 @@ class Renamed:
         return {self._back.get(name, name): value for name, value in dict(self._robot.state).items()}
 
     @property
-    def sensors(self) -> Any:
-        sensors, to = self._robot.sensors, self._to
-
-        class ByDrawnName:
-            def __getattr__(self, name: str) -> Any:
-                return getattr(sensors, to.get(name, name))
-
-        return ByDrawnName()
+    def sensors(self) -> _Sensors:
+        return _Sensors(self._robot.sensors, self._to)
 
     def sensor_age(self, name: str) -> Any:
         return self._robot.sensor_age(self._to.get(name, name))
@@ -153,3 +147,14 @@ class Renamed:
             if colon and name in self._back and len(err.args) == 1:
                 err.args = (f"{kind} {self._back[name]}".lstrip() + colon + rest,)
             raise
+
+
+class _Sensors:
+    """A robot's sensors, by the names as drawn."""
+
+    def __init__(self, sensors: Any, renaming: Mapping[str, str]) -> None:
+        self._sensors = sensors
+        self._to = renaming
+
+    def __getattr__(self, name: str) -> Any:
+        return getattr(self._sensors, self._to.get(name, name))
