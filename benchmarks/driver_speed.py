@@ -161,6 +161,16 @@ def set_velocity(port: DiscardingPort, linear: float, angular: float) -> None:
     port.write(struct.pack(">Bhh", 137, round(velocity * 1000), round(radius * 1000)))
 
 
+def set_velocity_locked(port: DiscardingPort, lock: Any, linear: float, angular: float) -> None:
+    """set_velocity by hand, called under a lock as the engine writes (`lock`: a `threading.RLock`):
+    the baseline's own function, so one call more than it (not a target's baseline)."""
+    lock.acquire()
+    try:
+        set_velocity(port, linear, angular)
+    finally:
+        lock.release()
+
+
 def goto_all(port: DiscardingPort, goal: int) -> None:
     """goto_all by hand: FF FF, ID 254, LEN 5, WRITE_DATA (3), address 30, the goal
     little-endian, and ~(ID + LEN + instruction + parameters) & 0xFF, in one struct.pack."""
@@ -283,19 +293,25 @@ def create_bench(folder: Path) -> Bench:
     runtime = load(source).connect(runtime_port, threads=False)
     baseline = Way("baseline (hand-written struct.pack + write)",
                    lambda linear, angular: set_velocity(port, linear=linear, angular=angular), port, None)
+    locked_port, lock = DiscardingPort(), threading.RLock()
+    locked = "hand-written under an RLock, the baseline's call"
     return Bench(
         "set_velocity (Table 4.3 inputs in turn, zero delays)",
         TABLE_4_3,
         [
             baseline,
+            Way(locked, lambda linear, angular: set_velocity_locked(locked_port, lock, linear, angular), locked_port,
+                None),
             Way("generated driver, robot.set_velocity(...)",
-                lambda linear, angular: driver.set_velocity(linear=linear, angular=angular), driver_port, 1.2),
+                lambda linear, angular: driver.set_velocity(linear=linear, angular=angular), driver_port, 1.2,
+                shown_against=locked),
             engine_part(driver, driver_port, "drive", baseline, TABLE_4_3),
             Way("rdisc runtime, robot.call_input(...)",
                 lambda linear, angular: runtime.call_input("set_velocity", linear=linear, angular=angular),
                 runtime_port, 3.0),
         ],
-        "the baseline: the input's arithmetic, one struct.pack, the port's write (no type test, no lock); " + LOCKED,
+        "the baseline: the input's arithmetic, one struct.pack, the port's write (no type test, no lock); "
+        "the hand-written code under an RLock: the baseline's function called under the lock; " + LOCKED,
     )
 
 
