@@ -21,25 +21,20 @@ EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "sabertooth.rdis"
 BAUDS = {2400: 1, 9600: 2, 19200: 3, 38400: 4, 115200: 5}
 
 
-class Serial:
-    """What pysabertooth uses of pyserial's Serial: the writes are recorded."""
+class Serial(ScriptedPort):
+    """pyserial's Serial as pysabertooth makes it (no arguments, then `open()`): the one fake
+    port, silent, closed until opened; the writes are recorded."""
 
     def __init__(self) -> None:
-        self.written = bytearray()
+        super().__init__()
         self.is_open = False
 
     def open(self) -> None:
         self.is_open = True
 
     def close(self) -> None:
+        super().close()
         self.is_open = False
-
-    def flush(self) -> None:
-        pass
-
-    def write(self, data: bytes) -> int:
-        self.written += data
-        return len(data)
 
 
 @pytest.fixture

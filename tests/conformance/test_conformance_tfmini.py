@@ -36,32 +36,25 @@ def frame(centimetres: int, strength: int, mode: int = 2) -> bytes:
     return body + bytes([sum(body) & 0xFF])
 
 
-class Serial:
-    """What tfmini uses of pyserial's Serial: it records the writes and reads the bytes given."""
+class Serial(ScriptedPort):
+    """pyserial's Serial as tfmini makes it (then `open()`): the one fake port, reading the bytes
+    given (its script); the writes are recorded."""
 
     given = b""
 
     def __init__(self) -> None:
-        self.written = bytearray()
-        self.waiting = Serial.given
+        super().__init__(Serial.given)
         self.is_open = False
 
     def open(self) -> None:
         self.is_open = True
 
     def close(self) -> None:
+        super().close()
         self.is_open = False
 
     def flushInput(self) -> None:  # pyserial's old name, which tfmini calls
         pass
-
-    def write(self, data: bytes) -> int:
-        self.written += data
-        return len(data)
-
-    def read(self, size: int = 1) -> bytes:
-        data, self.waiting = self.waiting[:size], self.waiting[size:]
-        return data
 
 
 def tfmini(monkeypatch: pytest.MonkeyPatch, mode: int, given: bytes) -> Any:
@@ -83,7 +76,7 @@ def test_setting_the_output_format_writes_tfminis_commands(lidar: Any, monkeypat
                                                            interface: str, value: int) -> None:
     answers = answer(1, 2) + answer(value, 6) + answer(0, 2)
     sensor = tfmini(monkeypatch, mode, answers)
-    assert sensor.proto.serial.waiting == b""  # tfmini read every answer
+    assert sensor.proto.serial.script == b""  # tfmini read every answer
     port = ScriptedPort(answers)
     with lidar.connect(port, threads=False) as robot:
         robot.call_interface(interface)
@@ -92,7 +85,7 @@ def test_setting_the_output_format_writes_tfminis_commands(lidar: Any, monkeypat
 
 def test_a_refused_command_is_refused(lidar: Any, monkeypatch: pytest.MonkeyPatch) -> None:
     sensor = tfmini(monkeypatch, driver.TFmini.STD_MODE, answer(1, 2) + answer(1, 6) + answer(0, 2))
-    sensor.proto.serial.waiting = answer(1, 2, status=0xFF)  # tfmini's own reading of an answer: refused
+    sensor.proto.serial.script = answer(1, 2, status=0xFF)  # tfmini's own reading of an answer: refused
     assert sensor.proto._SerialBase__sendRespond(b"\x42\x57\x02\x00\x00\x00\x01\x02") is False
     port = ScriptedPort(answer(1, 2, status=0xFF))
     with lidar.connect(port, threads=False) as robot, pytest.raises(Exception) as caught:

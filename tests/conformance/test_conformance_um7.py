@@ -30,31 +30,10 @@ PARSER = svd.RslSvdParser(svd_file=str(Path(svd.__file__).with_name("um7.svd")))
 DEGREES, RATE = 91.02222, 16.0
 
 
-class Port:
-    """What um7py's UM7Serial uses of its pyserial port: it records the writes and answers a
-    read with the bytes given, then the next packet's preamble."""
-
-    def __init__(self, answer: bytes) -> None:
-        self.written = bytearray()
-        self.answer = answer + b"snp"
-        self.in_waiting = len(self.answer)
-
-    def write(self, data: bytes) -> int:
-        self.written += data
-        return len(data)
-
-    def flush(self) -> None:
-        pass
-
-    def read(self, size: int) -> bytes:
-        answer, self.answer = self.answer[:size], self.answer[size:]
-        return answer
-
-
 def um7py(answer: bytes) -> Any:
-    """um7py's UM7Serial on a port answering `answer`."""
+    """um7py's UM7Serial on a port answering `answer`, then the next packet's preamble."""
     driver = um7_serial.UM7Serial.__new__(um7_serial.UM7Serial)
-    driver.port, driver.buffer, driver.buffer_size, driver.svd_parser = Port(answer), b"", 125, PARSER
+    driver.port, driver.buffer, driver.buffer_size, driver.svd_parser = ScriptedPort(answer + b"snp"), b"", 125, PARSER
     return driver
 
 

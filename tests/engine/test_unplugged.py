@@ -11,6 +11,7 @@ import serial
 
 from rdisc.runtime import RdisConnectionError
 from tests.engine.test_one_engine import implementation_of
+from tests.support.ports import ScriptedPort
 
 DESCRIPTION = """\
 robot unplugged { author "tests" }
@@ -24,15 +25,16 @@ primitive query() on link frame packet() pack "B" (1) unpack "<HH" { value = out
 HALF = [b"\xaa", b"\x04"]  # the header and the length; then the device is gone
 
 
-class UnpluggedPort:
-    """Gives half a reply, then is unplugged: its reads and its timeout fail as pyserial's do."""
+class UnpluggedPort(ScriptedPort):
+    """Gives half a reply (its script), then is unplugged: its next read, and giving it a timeout
+    after that, fail as pyserial's do."""
 
     def __init__(self) -> None:
         self.unplugged = False
         self.reads = 0
-        self._timeout: float | None = 1.0
+        super().__init__(b"".join(HALF), timeout=1.0)
 
-    @property
+    @property  # a plain attribute of the port, which fails once it is unplugged
     def timeout(self) -> float | None:
         return self._timeout
 
@@ -42,25 +44,13 @@ class UnpluggedPort:
             raise serial.SerialException("[Errno 5] Input/output error")
         self._timeout = value
 
-    def write(self, data: bytes) -> int:
-        return len(data)
-
-    def read(self, size: int = 1) -> bytes:
+    def read(self, size: int = 1, /) -> bytes:
         self.reads += 1
-        if self.reads <= len(HALF):
-            return HALF[self.reads - 1][:size]
+        if self.script:
+            return super().read(size)
         self.unplugged = True
         raise serial.SerialException("device reports readiness to read but returned no data "
                                      "(device disconnected or multiple access on port?)")
-
-    def reset_input_buffer(self) -> None:
-        pass
-
-    def flush(self) -> None:
-        pass
-
-    def close(self) -> None:
-        pass
 
 
 @pytest.mark.parametrize("kind", ["runtime", "driver"])

@@ -124,6 +124,11 @@ class ScriptedPort:
             self.on_timeout(self.timeout or 0.0)
         return taken
 
+    @property
+    def in_waiting(self) -> int:
+        """pyserial's count of bytes waiting: the device's answers and the script."""
+        return len(self.input) + len(self.script)
+
     def read(self, size: int = 1, /) -> bytes:
         waiting = self._waiting()
         return self._take(size, len(waiting) >= size)
