@@ -5,6 +5,7 @@ of runs, made deterministic. Figures to read, not a test (a whole sweep takes mi
     python benchmarks/signal_sweep.py --step 1 --first 1000 --last 1400
     python benchmarks/signal_sweep.py --moment call     # from a --call of three commands
     python benchmarks/signal_sweep.py --driver          # the generated driver's main(), not rdisc run
+    python benchmarks/signal_sweep.py --ros2            # the ROS 2 node rdisc emit-ros2 writes
 
 Each run is `rdisc run tests/runtime/data/fast_create.rdis --watch` (or `--call dance`, an
 interface of three commands with delays) against an emulated Create on a pseudo-terminal, in a
@@ -45,15 +46,20 @@ import faulthandler, os, signal, sys, threading, time
 faulthandler.dump_traceback_later(8, exit=True)
 import rdisc.start  # holds the signals back, as the command's entry does
 from tests.support.interrupts import check_points
-step, port, description, start, driver, extra = (int(sys.argv[1]), sys.argv[2], sys.argv[3], sys.argv[4],
-                                                 sys.argv[5], sys.argv[6:])
-if driver:  # the generated driver: its own copy of the engine's signals, and its main()
+step, port, description, start, kind, driver, extra = (int(sys.argv[1]), sys.argv[2], sys.argv[3], sys.argv[4],
+                                                       sys.argv[5], sys.argv[6], sys.argv[7:])
+if driver:  # the generated driver or ROS 2 node: its own copy of the engine's signals, and its entry
     import importlib.util
     spec = importlib.util.spec_from_file_location("driver", driver)
     signals = sys.modules["driver"] = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(signals)
-    sys.argv = [driver, "--port", port, *extra]
-    entry, inside = signals.main, driver
+    if kind == "ros2":  # as `python node.py --ros-args -p port:=...` runs it
+        sys.argv = [driver, "--ros-args", "-p", f"port:={port}"]
+        entry = lambda: signals.command_line(signals.ros_main)
+    else:
+        sys.argv = [driver, "--port", port, *extra]
+        entry = signals.main
+    inside = driver
 else:
     from rdisc.engine import signals
     sys.argv = ["rdisc", "run", description, "--port", port, *extra]
@@ -103,22 +109,25 @@ MOMENTS = {
 }
 
 
-def run_once(step: int, moment: str, folder: Path, driver: bool) -> tuple[str, str]:
+def run_once(step: int, moment: str, folder: Path, kind: str) -> tuple[str, str]:
     """One run with the signal at `step`: ("ok" | "no signal" | a failure's reason, stderr).
-    `driver`: the description's generated driver runs, not `rdisc run`."""
+    `kind`: what runs, `rdisc run` ("rdisc"), the description's generated driver ("driver") or
+    its ROS 2 node ("ros2", which runs until the signal, as `rdisc run --watch` does)."""
     from tests.devices import CreateEmulator
     from tests.devices.create import STOP
 
     added, start, extra = MOMENTS[moment]
     description = folder / f"{moment}.rdis"
-    source = folder / f"{moment}_driver.py"
-    if not source.exists():  # the sweep's first run: the description and its driver, for every run
+    source = folder / f"{moment}_{kind}.py"
+    if kind != "rdisc" and not source.exists():  # the sweep's first run: the description and its program
         description.write_text(DESCRIPTION.read_text(encoding="utf-8") + added, encoding="utf-8")
-        subprocess.run([sys.executable, "-m", "rdisc", "emit-python", str(description), "-o", str(source)],
-                       check=True, cwd=ROOT)
+        emit = "emit-ros2" if kind == "ros2" else "emit-python"
+        subprocess.run([sys.executable, "-m", "rdisc", emit, str(description), "-o", str(source)], check=True, cwd=ROOT)
+    elif not description.exists():
+        description.write_text(DESCRIPTION.read_text(encoding="utf-8") + added, encoding="utf-8")
     with CreateEmulator() as device:
-        done = subprocess.run([sys.executable, "-c", CHILD, str(step), device.port, str(description), start,
-                               str(source) if driver else "", *extra],
+        done = subprocess.run([sys.executable, "-c", CHILD, str(step), device.port, str(description), start, kind,
+                               str(source) if kind != "rdisc" else "", *extra],
                               capture_output=True, text=True, timeout=60, check=False, cwd=ROOT,
                               env=dict(os.environ, NO_COLOR="1"))
         commands = [command for _, command in device.commands]
@@ -144,15 +153,21 @@ def main() -> int:
     parser.add_argument("--step", type=int, default=97, help="steps between runs (default 97)")
     parser.add_argument("--moment", choices=MOMENTS, default="start-up",
                         help="start-up (default): from Robot.open; call: from a --call of three commands")
-    parser.add_argument("--driver", action="store_true",
-                        help="run the generated driver's main() (python driver.py), not rdisc run")
+    runs = parser.add_mutually_exclusive_group()
+    runs.add_argument("--driver", action="store_true",
+                      help="run the generated driver's main() (python driver.py), not rdisc run")
+    runs.add_argument("--ros2", action="store_true",
+                      help="run the ROS 2 node `rdisc emit-ros2` writes (over Cyclone DDS; start-up only)")
     args = parser.parse_args()
+    if args.ros2 and args.moment != "start-up":
+        parser.error("--ros2 sweeps the start-up only: a node takes no --call")
+    kind = "ros2" if args.ros2 else "driver" if args.driver else "rdisc"
     folder = Path(tempfile.mkdtemp())
     tally: dict[str, int] = {}
     failed = False
     step = args.first
     while args.last is None or step <= args.last:
-        outcome, stderr = run_once(step, args.moment, folder, args.driver)
+        outcome, stderr = run_once(step, args.moment, folder, kind)
         tally[outcome] = tally.get(outcome, 0) + 1
         step += args.step
         if outcome == "no signal" and args.last is None:
