@@ -214,6 +214,8 @@ class FrameRules(ChecksumRules):
                 self.d.report("E507", either.span, f"alternative {n} of frame `{name}` starts with no `header`",
                               help="a reader knows which alternative came by its header: start each with its own")
                 return layouts
+            if any(ord(ch) > 0xFF for ch in first.data):  # not bytes, which E501 says (`constant_bytes`)
+                return layouts
             heads.append(first.data.encode("latin-1"))
         for i, a in enumerate(heads):
             for j in range(i + 1, len(heads)):
