@@ -176,6 +176,11 @@ class ChecksumRules:
             d.report("E502", part.algorithm.span, f"unknown checksum algorithm \"{abbreviate(name)}\"",
                      help=_algorithm_hint(key))
             algorithm = m.ChecksumAlgorithm("sum", 8, name=name)
+        mask = options.get("mask")
+        if mask is not None and values.get("mask", 0) >> algorithm.width:
+            d.report("E502", (mask.value or mask).span,
+                     f"`mask` {abbreviate(hex(values['mask']))} does not fit the checksum's {algorithm.width} bits",
+                     help=f"a mask keeps some of those bits: at most {(1 << algorithm.width) - 1:#x}")
         if size_bits is not None and part.format is not None and algorithm.width > size_bits:
             d.report("E502", part.format.span,
                      f"a {algorithm.width}-bit checksum does not fit \"{part.format.value}\" ({size_bits} bits)")
