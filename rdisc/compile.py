@@ -127,10 +127,9 @@ class _Tokens:
         return self.parser(path, text, diagnostics)
 
 
-# Tracked objects a full collection of ours left (`_without_collections`), and the least the heap
-# grows by before the next: below it, a collection is not worth its pass.
-_LONG_LIVED = [0]
-_LEAST_GROWTH = 100_000
+# Checks since the last full collection of ours, and how many make the next (`_without_collections`).
+_CHECKS = [0]
+CHECKS_PER_COLLECTION = 32
 
 
 @contextmanager
@@ -143,13 +142,11 @@ def _without_collections() -> Iterator[None]:
     are rare, not passed over at once by the first young collection after it (a third of an
     editor's check again, when most declarations moved).
 
-    Objects put there so are not counted by the collector's own rule for a full collection
-    (objects that outlived a young one), so a process that checks again and again (the editor,
-    the console) would keep every check's cycles for ever: 5,500 objects a check of arm.rdis,
-    a million after 200 checks. The rule is applied here instead, to all that is tracked: a full
-    collection once the tracked objects have doubled since the last (and grown by at least
-    `_LEAST_GROWTH`), so that memory stays within about twice what is alive and each object is
-    passed over about once."""
+    Freezing also resets the collector's counts, so in a process that checks again and again
+    (the editor, the console, a fuzzer's worker) its full collection never came, and every cycle
+    the process left, the check's or not, stayed for ever. A check leaves none
+    (tests/semantics/test_repeated_checks.py); the process's own are collected here, a full
+    collection every CHECKS_PER_COLLECTION checks."""
     enabled = gc.isenabled()
     gc.disable()
     try:
@@ -157,13 +154,11 @@ def _without_collections() -> Iterator[None]:
     finally:
         if enabled:
             gc.freeze()
-            tracked = gc.get_freeze_count()
             gc.unfreeze()
-            if tracked - _LONG_LIVED[0] > max(_LONG_LIVED[0], _LEAST_GROWTH):
+            _CHECKS[0] += 1
+            if _CHECKS[0] >= CHECKS_PER_COLLECTION:
+                _CHECKS[0] = 0
                 gc.collect()
-                gc.freeze()
-                _LONG_LIVED[0] = gc.get_freeze_count()
-                gc.unfreeze()
             gc.enable()
 
 

@@ -197,27 +197,30 @@ def exchange(model: m.Model, iface: m.Interface, connection: str) -> Exchange:
     """Bytes on `connection`, time on the wire and delays of one run of an interface, through
     the interfaces it calls (a call's delay counts after it, made or not). Each interface is
     costed once and its cost reused: loops call the same interface thousands of times."""
-    costs: dict[str, tuple[int, float, float]] = {}
+    return Exchange(iface.name, *_cost(model, connection, {}, iface))
 
-    def cost(called: m.Interface) -> tuple[int, float, float]:
-        if called.name not in costs:
-            count, wire, delays = 0, 0.0, 0.0
-            for call in called.calls:
-                if call.interface:
-                    inner = cost(model.interfaces[call.primitive])
-                else:
-                    prim = model.primitives[call.primitive]
-                    size = message_bytes(prim, model.frames)
-                    line = model.connections[prim.connection]
-                    held = sum(level.value.value for level in prim.lines  # a break: time, no byte (ms)
-                               if level.line == m.BREAK and isinstance(level.value, m.Const)
-                               and isinstance(level.value.value, float))
-                    inner = (size if prim.connection == connection else 0, size * line.bits_per_byte() * 1000.0 / line.baud, held)
-                count, wire, delays = count + inner[0], wire + inner[1], delays + inner[2] + call.delay_ms
-            costs[called.name] = (count, wire, delays)
-        return costs[called.name]
 
-    return Exchange(iface.name, *cost(iface))
+def _cost(model: m.Model, connection: str, costs: dict[str, tuple[int, float, float]],
+          called: m.Interface) -> tuple[int, float, float]:
+    """`exchange`'s bytes, wire time and delays of one run of `called`, each interface's kept in
+    `costs`. (A function of its own, not one nested in `exchange` that calls itself: that is a
+    cycle, which waits for the collector.)"""
+    if called.name not in costs:
+        count, wire, delays = 0, 0.0, 0.0
+        for call in called.calls:
+            if call.interface:
+                inner = _cost(model, connection, costs, model.interfaces[call.primitive])
+            else:
+                prim = model.primitives[call.primitive]
+                size = message_bytes(prim, model.frames)
+                line = model.connections[prim.connection]
+                held = sum(level.value.value for level in prim.lines  # a break: time, no byte (ms)
+                           if level.line == m.BREAK and isinstance(level.value, m.Const)
+                           and isinstance(level.value.value, float))
+                inner = (size if prim.connection == connection else 0, size * line.bits_per_byte() * 1000.0 / line.baud, held)
+            count, wire, delays = count + inner[0], wire + inner[1], delays + inner[2] + call.delay_ms
+        costs[called.name] = (count, wire, delays)
+    return costs[called.name]
 
 
 def message_bytes(prim: m.Primitive, frames: dict[str, m.Frame] | None = None, escaped: bool = True) -> int:

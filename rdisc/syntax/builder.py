@@ -164,40 +164,40 @@ class Builder:
         rdisc.syntax.precedence, the table the printers use. A token (Lark's, or the fast loop's)
         is a `str`; an operand never is.
         """
-        pos = 0
+        return self._climb(items, [0], OR, 0)
 
-        def climb(minimum: int, level: int) -> ast.Expr:
-            nonlocal pos
-            item = items[pos]
-            pos += 1
-            if level > MAX_EXPR_DEPTH:
-                raise TooDeep(self.token_span(item) if isinstance(item, str) else item.span)
-            if isinstance(item, str):
-                op = UNARY_OPERATORS[str(item)]
-                if op.level < minimum:
-                    self.misplaced(item, f"`{item}` cannot stand here without parentheses")
-                operand = climb(op.operands[0], level + 1)
-                left: ast.Expr = self.nested(
-                    ast.Unary(str(item), operand, self.token_span(item).to(operand.span)), operand
-                )
-            else:
-                left = item
-            compared = False
-            while pos < len(items):
-                token = items[pos]
-                assert isinstance(token, str)  # operands and operators alternate
-                op = BINARY[str(token)]
-                if op.level < minimum:
-                    break
-                if op.level == COMPARISON and compared:
-                    self.misplaced(token, "comparisons cannot be chained: write `a < b and b < c`")
-                pos += 1
-                right = climb(op.operands[1], level + 1)
-                left = self.nested(ast.BinOp(str(token), left, right, left.span.to(right.span)), left, right)
-                compared = op.level == COMPARISON
-            return left
-
-        return climb(OR, 0)
+    def _climb(self, items: list[ast.Expr | Token], at: list[int], minimum: int, level: int) -> ast.Expr:
+        """`resolve`'s climb from `items[at[0]]` over operators of `minimum` precedence or more,
+        `at` moved past what it took. (A method, not a function nested in `resolve` that calls
+        itself: that is a cycle, which kept what it read until the collector came.)"""
+        item = items[at[0]]
+        at[0] += 1
+        if level > MAX_EXPR_DEPTH:
+            raise TooDeep(self.token_span(item) if isinstance(item, str) else item.span)
+        if isinstance(item, str):
+            op = UNARY_OPERATORS[str(item)]
+            if op.level < minimum:
+                self.misplaced(item, f"`{item}` cannot stand here without parentheses")
+            operand = self._climb(items, at, op.operands[0], level + 1)
+            left: ast.Expr = self.nested(
+                ast.Unary(str(item), operand, self.token_span(item).to(operand.span)), operand
+            )
+        else:
+            left = item
+        compared = False
+        while at[0] < len(items):
+            token = items[at[0]]
+            assert isinstance(token, str)  # operands and operators alternate
+            op = BINARY[str(token)]
+            if op.level < minimum:
+                break
+            if op.level == COMPARISON and compared:
+                self.misplaced(token, "comparisons cannot be chained: write `a < b and b < c`")
+            at[0] += 1
+            right = self._climb(items, at, op.operands[1], level + 1)
+            left = self.nested(ast.BinOp(str(token), left, right, left.span.to(right.span)), left, right)
+            compared = op.level == COMPARISON
+        return left
 
     def misplaced(self, token: Token, message: str) -> None:
         self.diagnostics.report("E001", self.token_span(token), message)

@@ -187,26 +187,29 @@ class Interfaces(Layouts):
         """Calls between interfaces form no cycle, so every call ends and its cost is known:
         each cycle is reported once, at the call that closes it in the interface first declared."""
         done: set[str] = set()
-
-        def visit(name: str, path: list[tuple[str, m.PrimitiveCall]]) -> None:
-            if name in done:
-                return
-            for call in interfaces[name].calls:
-                if not call.interface or call.primitive not in interfaces:
-                    continue
-                on_path = [n for n, _ in path] + [name]
-                if call.primitive in on_path:
-                    ring = on_path[on_path.index(call.primitive):]
-                    through = " -> ".join(f"`{n}`" for n in [*ring, call.primitive])
-                    self.d.report("E210", call.span, f"interface `{name}` calls `{call.primitive}`, which leads "
-                                  f"back to it: {through}",
-                                  help="calls between interfaces must end: break the cycle")
-                    continue
-                visit(call.primitive, [*path, (name, call)])
-            done.add(name)
-
         for name in interfaces:
-            visit(name, [])
+            self._calls_visited(interfaces, done, name, [])
+
+    def _calls_visited(self, interfaces: dict[str, m.Interface], done: set[str], name: str,
+                       path: list[tuple[str, m.PrimitiveCall]]) -> None:
+        """`interface_cycles` from `name`, reached by `path`: each interface it calls visited in
+        turn (`done`: those whose calls were all visited). (A method, not a nested function that
+        calls itself: that is a cycle, which waits for the collector.)"""
+        if name in done:
+            return
+        for call in interfaces[name].calls:
+            if not call.interface or call.primitive not in interfaces:
+                continue
+            on_path = [n for n, _ in path] + [name]
+            if call.primitive in on_path:
+                ring = on_path[on_path.index(call.primitive):]
+                through = " -> ".join(f"`{n}`" for n in [*ring, call.primitive])
+                self.d.report("E210", call.span, f"interface `{name}` calls `{call.primitive}`, which leads "
+                              f"back to it: {through}",
+                              help="calls between interfaces must end: break the cycle")
+                continue
+            self._calls_visited(interfaces, done, call.primitive, [*path, (name, call)])
+        done.add(name)
 
     def periodic_rate(self, decl: ast.InterfaceDecl, rate: ast.Expr, connection: str | None) -> float | None:
         """A periodic interface's own rate (`periodic 10 Hz`): positive, bounded as a connection's
