@@ -389,9 +389,9 @@ in` or `reflect out` for one way only), or a catalogue CRC such as "crc8",
 "crc32", "crc64-xz". A sum, an XOR or an LRC is 1 to 32 bits
 wide, a CRC 1 to 64, and a CRC's `poly`, `init` and `xorout` fit its width (the
 polynomial without its top bit, as the CRC catalogue writes it: 0x864CFB, not
-0x1864CFB), as does a `mask` of any checksum (the bits of it that are kept). The
-width must fit the struct format, which holds one unsigned integer, or be written
-as `hex` digits. `over A .. B` names the parts it covers
+0x1864CFB). A `mask` (the bits of the checksum that are kept) is at most 64 bits.
+The width must fit the struct format, which holds one unsigned integer, or be
+written as `hex` digits. `over A .. B` names the parts it covers
 (`request` first covers the request as sent, in a reply); they come before the checksum."""),
     ("E503", "length-field", """
 A length field holds the payload's size plus a constant, in a struct format of

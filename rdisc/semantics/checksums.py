@@ -67,6 +67,7 @@ _ALIASES = {
     "twos-complement": "lrc",
 }
 # Checksums that are no CRC: their kind and fixed width (None: as wide as their format, 1 to 32 bits).
+MAX_MASK_BITS = 64  # the widest checksum's, a CRC-64's
 SUMS: dict[str, int | None] = {"sum": None, "xor": None, "lrc": None, "fletcher8": 16}
 ALGORITHMS = (*SUMS, "crc", *CATALOGUE)
 _PART_WORDS = frozenset(["header", "literal", "terminator", "length", "payload", "request"])
@@ -177,10 +178,10 @@ class ChecksumRules:
                      help=_algorithm_hint(key))
             algorithm = m.ChecksumAlgorithm("sum", 8, name=name)
         mask = options.get("mask")
-        if mask is not None and values.get("mask", 0) >> algorithm.width:
+        if mask is not None and values.get("mask", 0) >> MAX_MASK_BITS:  # (one wider than the checksum keeps it whole)
             d.report("E502", (mask.value or mask).span,
-                     f"`mask` {abbreviate(hex(values['mask']))} does not fit the checksum's {algorithm.width} bits",
-                     help=f"a mask keeps some of those bits: at most {(1 << algorithm.width) - 1:#x}")
+                     f"`mask` {abbreviate(hex(values['mask']))} is wider than any checksum's {MAX_MASK_BITS} bits",
+                     help=f"a mask keeps some of the checksum's bits: at most {(1 << MAX_MASK_BITS) - 1:#x}")
         if size_bits is not None and part.format is not None and algorithm.width > size_bits:
             d.report("E502", part.format.span,
                      f"a {algorithm.width}-bit checksum does not fit \"{part.format.value}\" ({size_bits} bits)")
