@@ -62,8 +62,17 @@ def engine_names() -> tuple[str, ...]:
     """The engine's names a description may also give (each tried as every kind of name)."""
     robot = [name for name in dir(Robot) if not name.startswith("__")]
     candidates = sorted({*carry.names(), *robot, *(name for names in OFTEN.values() for name in names)})
+    taken = _adapter_fields()
     return tuple(name for name in candidates
-                 if re.fullmatch(r"[A-Za-z_]\w*", name) and not _refused(PROBE.format(name=name)))
+                 if re.fullmatch(r"[A-Za-z_]\w*", name) and name not in taken and not _refused(PROBE.format(name=name)))
+
+
+def _adapter_fields() -> frozenset[str]:
+    """The standard adapters' field names (`name`, `position`, `linear`...): an input's arguments
+    read them before the description's own names, so a name renamed to one would mean the field."""
+    model = compile_text("probe.rdis", PROBE.format(name="probe")).model
+    assert model is not None
+    return frozenset(field.name for adapter in model.adapters.values() for field in adapter.fields)
 
 
 def _refused(text: str) -> bool:
