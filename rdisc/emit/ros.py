@@ -152,8 +152,8 @@ class _Ros1(Bridge):
                 with w.block("try:"):
                     w.line('errors.publish(std_msgs_msg.String(data=f"{type(error).__name__}: {error}"))')
                 with w.block("except rospy.ROSException:"):
-                    w.line("if not rospy.is_shutdown():  # a publisher closed by the shutdown is no error: logged above")
-                    w.line("    raise")
+                    w.line("if not rospy.core.is_shutdown_requested():  # closed by the shutdown, whose hooks close the")
+                    w.line("    raise  # topics before `rospy.is_shutdown()` is true: no error, logged above")
             w.blank()
             with w.block("def on_io(direction: str, connection: str, data: bytes) -> None:"):
                 w.line('shown = data.decode("ascii") if direction == "lines" else data.hex(" ")')
