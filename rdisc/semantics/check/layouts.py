@@ -277,7 +277,7 @@ class Layouts(Pieces):
                 self.d.report("E403", expr.span, f"{shown(value)} is {len(value)} characters; `{slot.code}` holds "
                               f"{room}, and struct would cut the rest")
         elif slot.code in FLOAT_LIMITS and isinstance(value, (int, float)) and not isinstance(value, bool) \
-                and math.isfinite(value) and abs(value) > FLOAT_LIMITS[slot.code]:
+                and (isinstance(value, int) or math.isfinite(value)) and abs(value) > FLOAT_LIMITS[slot.code]:
             self.d.report("E403", expr.span, f"{shown(value)} is too large for pack code `{slot.code}` "
                           f"(at most {FLOAT_LIMITS[slot.code]:g})")
 
