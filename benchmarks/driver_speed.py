@@ -57,8 +57,8 @@ Each figure is the best of --repeat runs of --calls calls, the ways interleaved 
 that drift hits them alike; a run is timed by this process's CPU time, so that other
 processes on a busy machine do not count. Many short runs (60 of 5,000 calls) rather
 than a few long ones: on a shared machine whose speed changes within a second, the
-set_velocity ratio moved by 0.01 over three runs so, and by 0.15 as 7 runs of 60,000. Every figure is printed with PASS or
-MISS against its target; the exit code is 0 either way (1 only when a way writes
+set_velocity ratio moved by 0.01 over three runs so, and by 0.15 as 7 runs of 60,000.
+Every figure is printed with PASS or MISS against its target; the exit code is 0 either way (1 only when a way writes
 other bytes than the baseline or stores other sensor values than it, or the AX-12 baseline
 other bytes than the manual's, which is a bug).
 """

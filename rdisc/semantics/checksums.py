@@ -67,9 +67,9 @@ _ALIASES = {
     "twos-complement": "lrc",
 }
 # Checksums that are no CRC: their kind and fixed width (None: as wide as their format, 1 to 32 bits).
-MAX_MASK_BITS = 64  # the widest checksum's, a CRC-64's
 SUMS: dict[str, int | None] = {"sum": None, "xor": None, "lrc": None, "fletcher8": 16}
 ALGORITHMS = (*SUMS, "crc", *CATALOGUE)
+MAX_MASK_BITS = 64  # a `mask`'s, the widest checksum's (a CRC-64's)
 _PART_WORDS = frozenset(["header", "literal", "terminator", "length", "payload", "request"])
 
 

@@ -18,6 +18,7 @@ from rdisc.semantics.frame_facts import length_part, length_range
 from rdisc.semantics.model import Scope, Type
 from rdisc.semantics.types import Env, Typer, describe
 from rdisc.syntax import ast
+from rdisc.syntax.precedence import octets
 
 MAX_BYTES = 64  # of one constant part
 
@@ -45,7 +46,7 @@ class FrameRules(ChecksumRules):
         if stuffs:
             escape, reserved = stuffs[0].escape, stuffs[0].reserved
             for lit in (escape, reserved):
-                if not 1 <= len(lit.value) <= MAX_BYTES or any(ord(ch) > 0xFF for ch in lit.value):
+                if not 1 <= len(lit.value) <= MAX_BYTES or not octets(lit.value):
                     self.d.report("E501", lit.span, f"stuffing bytes are 1 to {MAX_BYTES} bytes (characters up to \\xff)")
             stuffing = (reserved.value, escape.value)
         escapes = [i for i in decl.items if isinstance(i, ast.FrameEscape)]
@@ -98,7 +99,7 @@ class FrameRules(ChecksumRules):
                               f"not \"{abbreviate(lit.value)}\"")
                 wrong = True
         if item.escaped is not None:
-            if not 1 <= len(item.escaped.value) <= MAX_BYTES or any(ord(ch) > 0xFF for ch in item.escaped.value):
+            if not 1 <= len(item.escaped.value) <= MAX_BYTES or not octets(item.escaped.value):
                 self.d.report("E510", item.escaped.span, f"the escaped bytes are 1 to {MAX_BYTES} bytes "
                               "(characters up to \\xff)")
                 wrong = True
@@ -214,7 +215,7 @@ class FrameRules(ChecksumRules):
                 self.d.report("E507", either.span, f"alternative {n} of frame `{name}` starts with no `header`",
                               help="a reader knows which alternative came by its header: start each with its own")
                 return layouts
-            if any(ord(ch) > 0xFF for ch in first.data):  # not bytes, which E501 says (`constant_bytes`)
+            if not octets(first.data):  # not bytes, which E501 says (`constant_bytes`)
                 return layouts
             heads.append(first.data.encode("latin-1"))
         for i, a in enumerate(heads):
@@ -373,7 +374,7 @@ class FrameRules(ChecksumRules):
 
     def constant_bytes(self, part: ast.FrameBytes, i: int, count: int, d: Diagnostics) -> m.FrameBytes:
         text = part.value.value
-        if not 1 <= len(text) <= MAX_BYTES or any(ord(ch) > 0xFF for ch in text):
+        if not 1 <= len(text) <= MAX_BYTES or not octets(text):
             d.report("E501", part.value.span, f"constant bytes are 1 to {MAX_BYTES} bytes (characters up to \\xff)")
         if part.role == "header" and i != 0:
             d.report("E501", part.span, "a `header` comes first in its frame",

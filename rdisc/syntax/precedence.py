@@ -159,13 +159,19 @@ def quote(value: str) -> str:
     return "".join(out)
 
 
+def octets(value: str) -> bool:
+    """Whether a string literal stands for bytes on the wire: every character up to `\xff`
+    (the checker refuses any other in a header, a terminator, a marker)."""
+    return all(ord(ch) <= 0xFF for ch in value)
+
+
 def quote_octets(value: str) -> str:
     """A string literal of bytes on the wire (a header, a terminator, a marker) that reads back
     as `value`: text (printable ASCII and the usual escapes) as text, `"AT\\r\\n"`; any other
     bytes all as `\\xHH`, `"\\xff\\xff"` rather than `"ÿÿ"`, not a mixture that reads as neither."""
     if all(" " <= ch < "\x7f" or ch in "\n\r\t" for ch in value):
         return '"' + "".join(_ESCAPES.get(ch, ch) for ch in value) + '"'
-    if all(ord(ch) <= 0xFF for ch in value):
+    if octets(value):
         return '"' + "".join(f"\\x{ord(ch):02x}" for ch in value) + '"'
     return quote(value)  # past a byte: the checker's to refuse, printed as written
 

@@ -17,6 +17,7 @@ from rdisc.semantics.resolve import check_name
 from rdisc.semantics.types import Env, describe, unify
 from rdisc.source import Span
 from rdisc.syntax import ast
+from rdisc.syntax.precedence import octets
 
 MAX_BAUD = 100_000_000  # bit/s: no serial line is faster
 MAX_FREQUENCY_HZ = 10_000  # ticks a second of a connection's thread
@@ -279,7 +280,7 @@ class Declarations(Pieces):
         clause = self.once([a for a in decl.attrs if isinstance(a, ast.Terminator)], "`terminator`", name)
         if isinstance(clause, ast.Terminator):
             text = clause.value.value
-            if not 1 <= len(text) <= MAX_TERMINATOR or any(ord(ch) > 0xFF for ch in text):
+            if not 1 <= len(text) <= MAX_TERMINATOR or not octets(text):
                 self.d.report("E204", clause.value.span,
                               f"a terminator is 1 to {MAX_TERMINATOR} bytes (characters up to \\xff)")
             else:

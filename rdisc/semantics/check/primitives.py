@@ -15,6 +15,7 @@ from rdisc.semantics.model import Scope, Type
 from rdisc.semantics.operators import shown
 from rdisc.semantics.types import Env, Names, describe
 from rdisc.syntax import ast
+from rdisc.syntax.precedence import octets
 
 if TYPE_CHECKING:
     from typing import Any, TypeVar
@@ -196,7 +197,7 @@ class Primitives(Replies):
         marker = ""
         if clause.marker is not None:
             marker = clause.marker.value
-            if not 1 <= len(marker) <= MAX_TERMINATOR or any(ord(ch) > 0xFF for ch in marker):
+            if not 1 <= len(marker) <= MAX_TERMINATOR or not octets(marker):
                 self.d.report("E204", clause.marker.span,
                               f"an error's marker is 1 to {MAX_TERMINATOR} bytes (characters up to \\xff)")
                 return None

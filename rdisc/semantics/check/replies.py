@@ -19,6 +19,7 @@ from rdisc.semantics.resolve import suggest
 from rdisc.semantics.types import Env, Names, describe
 from rdisc.source import Span
 from rdisc.syntax import ast
+from rdisc.syntax.precedence import octets
 
 MAX_TABLE = 4096  # entries of a reply table
 
@@ -79,7 +80,7 @@ class Replies(Layouts):
         reply table, which read replies otherwise. The marker, or None where refused."""
         marker = clause.marker
         said = f"`{name.text}` reads its reply as records"
-        if not 1 <= len(marker.value) <= MAX_TERMINATOR or any(ord(ch) > 0xFF for ch in marker.value):
+        if not 1 <= len(marker.value) <= MAX_TERMINATOR or not octets(marker.value):
             self.d.report("E509", marker.span, f"a record's end marker is 1 to {MAX_TERMINATOR} bytes "
                           "(characters up to \\xff)")
             return None
@@ -375,7 +376,7 @@ class Replies(Layouts):
             self.d.report("E505", until.span, f"`until` is for a tagged reply read without a frame, and `{name.text}`"
                           " does not read one", help="a frame, or a reply table's key, already says where it ends")
             return None
-        if not 1 <= len(until.value) <= MAX_TERMINATOR or any(ord(ch) > 0xFF for ch in until.value):
+        if not 1 <= len(until.value) <= MAX_TERMINATOR or not octets(until.value):
             self.d.report("E505", until.span, f"`until` is 1 to {MAX_TERMINATOR} bytes (characters up to \\xff)")
             return None
         if not isinstance(decoding, m.Unpack):
